@@ -2,7 +2,7 @@
 //! profile's work offsets and the one in force are known, and as the span of the program's
 //! positions; the feed, the spindle speed and the tool numbers.
 
-use super::{round6, BlockView, Checker, Config, Facts, Span};
+use super::{round6, Before, BlockView, Checker, Config, Facts, Span};
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::modal::{axis_index, bit, AxesTaken, Units, AXES};
@@ -387,6 +387,116 @@ impl Checker {
         }
     }
 
+    /// The block's cancels of the frames in force, as the state after it has them
+    /// ([`Checker::take_back`]); read before the rules, which [`Checker::turn_frames`] is one
+    /// of.
+    pub(super) fn cancel_frames(&mut self, b: &BlockView<'_>, before: &Before) {
+        if !self.frame_codes() || self.frames.on == 0 {
+            return;
+        }
+        let (sinumerik, fanuc_lathe, haas) = (
+            self.config.family == Family::Sinumerik,
+            self.config.modal.fanuc_lathe,
+            self.config.haas,
+        );
+        let mut done = 0u8;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let (_, off) = frame_bits(v, sinumerik, fanuc_lathe, haas);
+            if off != 0 && self.frames.on & off & !done != 0 {
+                done |= off;
+                self.take_back(off, b, before, w.column);
+            }
+        }
+    }
+
+    /// At the cancel of a rotation or scaling, the tool stands where the frame put it: the
+    /// modal position (the frame's coordinates) becomes that point in the coordinates after
+    /// the cancel, taken back through the exact frame (the cancel block's own absolute words
+    /// stand as written, its increments add to the point); where the frame is not known here,
+    /// or the tool's place in its coordinates was not, the axes it moves are unknown until an
+    /// absolute position gives them, said once as a note. Haas "G68 Rotation" (Classic Mill
+    /// Operator's Manual): G68 affects the positional values of the blocks after it, none
+    /// after G69; Mitsubishi M700V, G68.1/G69.1 precautions: an absolute movement right after
+    /// the cancel. Without it an increment after G69 adds to the frame's coordinate: a missed
+    /// over-travel, a false TG403 on a correct arc (review 14, finding 1).
+    fn take_back(&mut self, off: u8, b: &BlockView<'_>, before: &Before, column: usize) {
+        if off & (2 | 4 | 8) == 0 {
+            return;
+        }
+        let factor = self.to_profile_units(false);
+        let old: [Option<f64>; 3] =
+            std::array::from_fn(|k| before.xyz[k].map(|p| p.to_f64() * factor));
+        let positions = matches!(self.machine.taken(), None | Some(AxesTaken::Positions));
+        let absolute =
+            |k: usize| positions && !self.machine.state.incremental && self.values.has(AXES[k]);
+        let mut lost = 0u16;
+        let mut now: [Option<Dec>; 3] = std::array::from_fn(|k| self.machine.state.position[k]);
+        match self.frames.map.as_ref().filter(|map| map.bit == off) {
+            Some(map) => {
+                for k in 0..3 {
+                    let made_of = (0..3)
+                        .filter(|&l| map.m[k][l] != 0.0)
+                        .fold(0u8, |all, l| all | 1 << l);
+                    // an axis the frame leaves as it is, or the block's absolute word
+                    if (made_of == 1 << k && map.m[k][k] == 1.0) || absolute(k) {
+                        continue;
+                    }
+                    let mut at = map.centre[k];
+                    for l in (0..3).filter(|&l| made_of & 1 << l != 0) {
+                        match old[l].filter(|_| map.fresh & 1 << l != 0) {
+                            Some(p) => at += map.m[k][l] * (p - map.centre[l]),
+                            None => at = f64::NAN,
+                        }
+                    }
+                    // the cancel block's increment, on top of the point
+                    let step = match (now[k], old[k]) {
+                        (Some(p), Some(o)) => p.to_f64() * factor - o,
+                        _ => f64::NAN,
+                    };
+                    now[k] = Some(at + step)
+                        .filter(|v| v.is_finite())
+                        .and_then(|v| Dec::parse(&format!("{:.6}", v / factor)));
+                    if now[k].is_none() {
+                        lost |= 1 << k;
+                    }
+                }
+            }
+            None => {
+                let place = off.trailing_zeros() as usize;
+                for k in (0..3).filter(|&k| self.frames.hidden[place] & 1 << k != 0) {
+                    if !absolute(k) {
+                        now[k] = None;
+                        lost |= 1 << k;
+                    }
+                }
+            }
+        }
+        for (k, p) in now.into_iter().enumerate() {
+            match p {
+                Some(p) => self.machine.state.position[k] = Some(p),
+                None if lost & 1 << k != 0 => self.machine.forget_axis(AXES[k]),
+                None => {}
+            }
+        }
+        if lost != 0 {
+            let token = b
+                .words
+                .iter()
+                .find(|w| w.column == column)
+                .map_or_else(|| "the cancel".to_string(), |w| w.token());
+            self.frame_note(
+                &token,
+                lost,
+                (b.line, column),
+                "until an absolute position gives them",
+                "where the frame left the tool in the coordinates after its cancel is not known here",
+            );
+        }
+    }
+
     fn frame_off(&mut self, off: u8) {
         self.frames.on &= !off;
         self.frames.hidden[off.trailing_zeros() as usize] = 0;
@@ -442,7 +552,8 @@ impl Checker {
     /// current position; R omitted, parameter 5410; under G91 the angle may add to the last,
     /// parameter 5400) and "Scaling" (the factor's unit and the axes scaled are parameters
     /// 5400 and 5401); Haas Mill Operator's Manual, G68 and G51 (centre omitted: the current
-    /// position; P omitted: Setting 71).
+    /// position; R omitted: Setting 72; under G91 with Setting 73 on, R adds to the angle;
+    /// P omitted: Setting 71).
     fn exact_frame(
         &self,
         rotation: bool,
@@ -452,7 +563,11 @@ impl Checker {
             return Err("the control's words for it are not known to the checker".into());
         }
         if self.machine.state.incremental {
-            return Err("under G91 its centre and angle may add to the ones before".into());
+            return Err(if self.config.haas {
+                "under G91 (with Setting 73 on) its angle adds to the one before".into()
+            } else {
+                "under G91 its centre and angle may add to the ones before".into()
+            });
         }
         let word = |letter: u8| {
             b.words
@@ -484,7 +599,9 @@ impl Checker {
             centre[k] = at.map_or(f64::NAN, |at| at.to_f64() * factor);
         }
         let mut m = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-        let (letter, missing) = if rotation {
+        let (letter, missing) = if rotation && self.config.haas {
+            ('R', "no R: the angle is Setting 72's")
+        } else if rotation {
             ('R', "no R: the angle is parameter 5410's")
         } else {
             ('P', "no P: the factor is a setting's or a parameter's")
@@ -1086,6 +1203,42 @@ mod tests {
             "{}",
             found[0].message
         );
+    }
+
+    #[test]
+    fn at_a_rotation_s_cancel_the_tool_stands_where_the_frame_put_it() {
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // X450. under R90 about X0 Y0 is Y450. before it; after G69 an increment of Y100.
+        // goes to Y550., 850 from Y-300., more than the 800 of Y's travel (not Y100.)
+        let rotated = |step: &str| {
+            format!("G00 Y-300.\nG68 X0 Y0 R90.\nG00 X0 Y0\nX450.\nG69\nG91 Y{step}\nG90")
+        };
+        assert_eq!(
+            at(fanuc.clone(), &rotated("100."), Rule::TravelExceeded),
+            [(7, 5)]
+        );
+        assert_eq!(at(fanuc.clone(), &rotated("40."), Rule::TravelExceeded), []);
+        // a correct arc after the cancel: it starts at X0 Y45., radius 45 at both ends
+        let arc = "G00 X0 Y0 F100.\nG68 X0 Y0 R90.\nG00 X45. Y0\nG69\nG03 X-45. Y0 I0 J-45.";
+        assert_eq!(at(fanuc.clone(), arc, Rule::ArcRadiusMismatch), []);
+        // the cancel block's own absolute word stands as written, its other axis taken back
+        let same = "G00 Y-300.\nG68 X0 Y0 R90.\nG00 X0 Y0\nX450.\nG69 X10.\nG91 Y100.\nG90";
+        assert_eq!(at(fanuc.clone(), same, Rule::TravelExceeded), [(7, 5)]);
+        // a rotation whose angle is a parameter's: the plane's axes unknown after the
+        // cancel until an absolute position: no span, no arc compared from a wrong start
+        let unknown = "G00 X0 Y0 F100.\nG68 X0 Y0\nG00 X45. Y0\nG69\nG03 X-45. Y0 I0 J-45.";
+        assert_eq!(at(fanuc.clone(), unknown, Rule::ArcRadiusMismatch), []);
+        let unknown = "G00 Y-300.\nG68 X0 Y0\nX450.\nG69\nG91 Y600.\nG90\nY400.";
+        assert_eq!(at(fanuc.clone(), unknown, Rule::TravelExceeded), []);
+        let unknown = "G00 Y-300.\nG68 X0 Y0\nX450.\nG69\nG90 Y600.";
+        assert_eq!(at(fanuc.clone(), unknown, Rule::TravelExceeded), [(6, 5)]);
+        // an exact rotation whose Y was never given under it: Y unknown after the cancel,
+        // said once
+        let unfresh = "G00 Y-300.\nG68 X0 Y0 R90.\nX450.\nG69\nG91 Y600.\nG90";
+        assert_eq!(at(fanuc.clone(), unfresh, Rule::TravelExceeded), []);
+        let notes = findings(fanuc, &program(unfresh), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
     }
 
     #[test]

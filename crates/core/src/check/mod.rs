@@ -1413,6 +1413,8 @@ impl Checker {
             taken
         };
         self.machine.apply_taken(&self.values, taken);
+        // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
+        self.cancel_frames(b, &before);
         self.programmed_forms(b, &before);
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
