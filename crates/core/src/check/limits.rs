@@ -48,6 +48,9 @@ pub(super) struct Frames {
     /// For each frame bit, the axes (bit `i` for `AXES[i]`) whose positions under it are
     /// left out of the spans: where a frame puts them is not known here.
     hidden: [u16; 6],
+    /// For each frame bit, whether an axis it hides moved under it: at its cancel those axes
+    /// are where the frame put them, not known here (none moved: where they stood before).
+    moved: [bool; 6],
     /// The spans from before a mirror image, taken back at its cancel: the positions under
     /// it stand apart (a mirror keeps the size of a span, not its place).
     saved: Option<[Option<Span>; 9]>,
@@ -74,6 +77,9 @@ struct Map {
     /// X, Y, Z (bits 0-2) given as absolute positions since the frame turned: before that
     /// an axis stands where the frame's coordinates do not say.
     fresh: u8,
+    /// X, Y, Z moved under the frame at all: an axis none of whose own axes moved stands
+    /// where it stood before the frame (its cancel takes nothing back).
+    touched: u8,
     /// "G68 of line 4", for the message.
     what: String,
 }
@@ -319,6 +325,7 @@ impl Checker {
 
     fn frame_on(&mut self, on: u8, b: &BlockView<'_>, token: String, column: usize) {
         let place = on.trailing_zeros() as usize;
+        self.frames.moved[place] = false;
         let others = self.frames.on & !on;
         self.frames.on |= on;
         let (a, c) = plane_axes(self.machine.state.plane);
@@ -326,8 +333,9 @@ impl Checker {
         match on {
             2 | 4 | 8 => {
                 let what = format!("{token} of line {}", b.line);
-                let exact = if others & (2 | 4 | 8) != 0 {
-                    Err("it turns inside another rotation or scaling".to_string())
+                let mirrored = self.frames.map.as_ref().is_some_and(|map| map.bit == 32);
+                let exact = if others & (2 | 4 | 8) != 0 || mirrored {
+                    Err("it turns inside another rotation, scaling or mirror image".to_string())
                 } else if on == 8 {
                     Err("a feature coordinate system the checker does not follow".into())
                 } else {
@@ -336,6 +344,7 @@ impl Checker {
                 // a frame in force that was exact is no longer the whole of it
                 if let Some(map) = self.frames.map.take() {
                     self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
+                    self.frames.moved[map.bit.trailing_zeros() as usize] |= map.touched != 0;
                 }
                 match exact {
                     Ok((centre, m)) => {
@@ -359,6 +368,7 @@ impl Checker {
                             centre,
                             m,
                             fresh,
+                            touched: 0,
                             what,
                         })
                     }
@@ -380,11 +390,51 @@ impl Checker {
             // polar coordinates: the plane's words are a radius and an angle
             1 => self.frames.hidden[place] = plane,
             _ => {
+                if on == 32 && others == 0 && self.frames.map.is_none() {
+                    if let Some((centre, m, fresh)) = self.exact_mirror(b) {
+                        let what = format!("{token} of line {}", b.line);
+                        self.frames.map = Some(Map {
+                            bit: on,
+                            centre,
+                            m,
+                            fresh,
+                            touched: 0,
+                            what,
+                        });
+                        return;
+                    }
+                }
                 if self.frames.saved.is_none() {
                     self.frames.saved = Some(std::mem::take(&mut self.spans));
                 }
             }
         }
+    }
+
+    /// A mirror image about the points its block writes (`G51.1 X10.`: X about 10), under
+    /// G90, of X Y Z alone: exact as a rotation is, each mirrored axis `2c - p` (review 14,
+    /// finding 4: its positions apart missed a span past the travel). FANUC 16/18 Operator's
+    /// Manual, "Programmable mirror image (G50.1, G51.1)": the axis words give the axis of
+    /// symmetry. None where it is not exact here (the positions then stand apart).
+    fn exact_mirror(&self, b: &BlockView<'_>) -> Option<([f64; 3], [[f64; 3]; 3], u8)> {
+        if !self.config.modal.centre_codes || self.machine.state.incremental {
+            return None;
+        }
+        let factor = self.to_profile_units(false);
+        let mut centre = [0.0; 3];
+        let mut m = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut fresh = 0b111u8;
+        for (i, w) in b.words.iter().enumerate() {
+            if w.letter == b'G' || w.letter == b'N' {
+                continue;
+            }
+            let k = AXES[..3].iter().position(|&a| a == w.letter)?;
+            let value = self.readable[i]?;
+            centre[k] = value.to_f64() * factor;
+            m[k][k] = -1.0;
+            fresh &= !(1 << k);
+        }
+        (fresh != 0b111).then_some((centre, m, fresh))
     }
 
     /// The block's cancels of the frames in force, as the state after it has them
@@ -423,7 +473,9 @@ impl Checker {
     /// the cancel. Without it an increment after G69 adds to the frame's coordinate: a missed
     /// over-travel, a false TG403 on a correct arc (review 14, finding 1).
     fn take_back(&mut self, off: u8, b: &BlockView<'_>, before: &Before, column: usize) {
-        if off & (2 | 4 | 8) == 0 {
+        // (a mirror image only where it was exact: its positions apart otherwise)
+        let exact_mirror = off == 32 && self.frames.map.as_ref().is_some_and(|map| map.bit == 32);
+        if off & (2 | 4 | 8) == 0 && !exact_mirror {
             return;
         }
         let factor = self.to_profile_units(false);
@@ -440,8 +492,12 @@ impl Checker {
                     let made_of = (0..3)
                         .filter(|&l| map.m[k][l] != 0.0)
                         .fold(0u8, |all, l| all | 1 << l);
-                    // an axis the frame leaves as it is, or the block's absolute word
-                    if (made_of == 1 << k && map.m[k][k] == 1.0) || absolute(k) {
+                    // an axis the frame leaves as it is, one whose axes never moved under
+                    // it (where it stood before the frame), or the block's absolute word
+                    if (made_of == 1 << k && map.m[k][k] == 1.0)
+                        || made_of & map.touched == 0
+                        || absolute(k)
+                    {
                         continue;
                     }
                     let mut at = map.centre[k];
@@ -466,7 +522,8 @@ impl Checker {
             }
             None => {
                 let place = off.trailing_zeros() as usize;
-                for k in (0..3).filter(|&k| self.frames.hidden[place] & 1 << k != 0) {
+                let moved = self.frames.moved[place];
+                for k in (0..3).filter(|&k| moved && self.frames.hidden[place] & 1 << k != 0) {
                     if !absolute(k) {
                         now[k] = None;
                         lost |= 1 << k;
@@ -481,7 +538,10 @@ impl Checker {
                 None => {}
             }
         }
-        if lost != 0 {
+        // (a G268 under the profile's work offsets has a note of its own, which says the
+        // positions after G269 are not compared either: Checker::work_offset)
+        let own = off == 8 && !self.config.work_offsets.is_empty();
+        if lost != 0 && !own {
             let token = b
                 .words
                 .iter()
@@ -677,6 +737,7 @@ impl Checker {
                 if axes {
                     if let Some(map) = self.frames.map.take() {
                         self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
+                        self.frames.moved[map.bit.trailing_zeros() as usize] |= map.touched != 0;
                         let why = format!("{} shifts the coordinates inside it", w.token());
                         self.frame_not_applied(&map.what, XYZ, (b.line, w.column), &why);
                     }
@@ -838,6 +899,9 @@ impl Checker {
             }
             // (under a frame: X Y Z taken back through it below, or left out)
             if framed & (1 << i) != 0 {
+                for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
+                    *moved |= hidden & (1 << i) != 0;
+                }
                 continue;
             }
             self.add_to_span(i, at, said_outside, line, col(axis), "");
@@ -991,9 +1055,22 @@ impl Checker {
                 now |= 1 << k;
             }
         }
+        // a Haas's scaling and a canned cycle's Z: "scaling does not affect canned cycle Z-axis
+        // movements such as clearance planes and incremental values" (Mill Operator's Manual,
+        // G51, programming notes); whether the cycle's Z depth is scaled it leaves open: Z
+        // left out of the spans, and where Z stands in the frame after it not known
+        let cycle_z = self.config.haas
+            && map.bit == 2
+            && self.machine.state.cycle.is_some()
+            && now & 0b100 != 0;
+        if cycle_z {
+            now &= !0b100;
+            map.fresh &= !0b100;
+        }
         if absolute {
             map.fresh |= now;
         }
+        map.touched |= now;
         let map = map.clone();
         let under = format!(
             " (its positions under the {} taken back to the coordinates before it)",
@@ -1035,6 +1112,17 @@ impl Checker {
                 .find(|&l| made_of & now & 1 << l != 0)
                 .map_or(0, |l| facts.col(AXES[l]));
             self.add_to_span(k, at, false, line, column, &under);
+        }
+        if cycle_z {
+            self.frame_note(
+                &map.what,
+                0b100,
+                (line, facts.col(b'Z')),
+                "in a canned cycle, nor after it until Z is given there as an absolute position",
+                "the Haas manual says scaling leaves a canned cycle's Z moves (its clearance \
+                 plane, its increments) as written, and leaves open whether the cycle's Z depth \
+                 is scaled",
+            );
         }
         if waiting != 0 {
             // (said at the block's first moved axis)
@@ -1239,6 +1327,77 @@ mod tests {
         assert_eq!(at(fanuc.clone(), unfresh, Rule::TravelExceeded), []);
         let notes = findings(fanuc, &program(unfresh), Rule::NotFollowed);
         assert_eq!(notes.len(), 1, "{notes:?}");
+    }
+
+    #[test]
+    fn a_mirror_about_a_written_point_is_taken_back_exactly() {
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // X-500. about X10. is X520.: 1020 from X-500., more than the 1000 of X's travel
+        let mirror = |x: &str| format!("G00 X-500. Y0\nG51.1 X10.\nG00 X{x}\nG50.1 X0\nX0");
+        assert_eq!(
+            at(fanuc.clone(), &mirror("-500."), Rule::TravelExceeded),
+            [(4, 5)]
+        );
+        let found = findings(
+            fanuc.clone(),
+            &program(&mirror("-500.")),
+            Rule::TravelExceeded,
+        );
+        assert!(
+            found[0].message.contains("G51.1 of line 3 taken back"),
+            "{}",
+            found[0].message
+        );
+        assert_eq!(
+            at(fanuc.clone(), &mirror("-400."), Rule::TravelExceeded),
+            []
+        );
+        // at the cancel the tool stands at X410.: an increment of X-30. after it is X380.
+        // (880 from X-500.), of X100. is X510. (1010); (the cancel's own Y0 is read as a
+        // move by the modal state, as G51.1's axis words are: not the point here)
+        let after = |x: &str| {
+            format!("G00 X-500. Y0\nG51.1 X10. Y0\nG00 X-400.\nX-390.\nG50.1 Y0\nG91 X{x}\nG90")
+        };
+        assert_eq!(at(fanuc.clone(), &after("-30."), Rule::TravelExceeded), []);
+        assert_eq!(
+            at(fanuc.clone(), &after("100."), Rule::TravelExceeded),
+            [(7, 5)]
+        );
+        // a mirror whose point is not exact here (an A axis) keeps its positions apart
+        let apart = "G00 X-500. Y0\nG51.1 X10. A0\nG00 X-500.\nG50.1 X0\nX0";
+        assert_eq!(at(fanuc, apart, Rule::TravelExceeded), []);
+    }
+
+    #[test]
+    fn a_haas_scaling_leaves_a_canned_cycle_s_z_out_with_a_note() {
+        let mut haas = of_family(Family::MacroB);
+        haas.modal.centre_codes = true;
+        haas.haas = true;
+        // Z-180. scaled by 2 about Z0 is Z-360., 410 from Z50. (Z's travel 400): a plain
+        // move is compared, a drilling cycle's Z is not (the manual leaves it open), said
+        let body =
+            |z: &str| format!("G00 X0 Y0 Z50.\nG51 X0 Y0 Z0 P2.\nG00 X0 Y0 Z20.\n{z}\nG80\nG50");
+        assert_eq!(
+            at(
+                haas.clone(),
+                &body("G01 Z-180. F100."),
+                Rule::TravelExceeded
+            ),
+            [(5, 5)]
+        );
+        let cycle = body("G81 X0 Y0 Z-180. R20. F100.");
+        assert_eq!(at(haas.clone(), &cycle, Rule::TravelExceeded), []);
+        let notes = findings(haas.clone(), &program(&cycle), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].message.contains("canned cycle"),
+            "{}",
+            notes[0].message
+        );
+        // a FANUC's scaling is left out whole (its factor's unit is a parameter)
+        haas.haas = false;
+        assert_eq!(at(haas, &cycle, Rule::TravelExceeded), []);
     }
 
     #[test]
