@@ -56,6 +56,9 @@ pub(super) struct Frames {
     saved: Option<[Option<Span>; 9]>,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
+    /// Whether the block in hand has a code that may turn a frame or shift the coordinates
+    /// ([`Checker::frame_codes`]), decided once a block by [`Checker::cancel_frames`].
+    codes: bool,
 }
 
 impl Frames {
@@ -301,7 +304,7 @@ impl Checker {
     /// its cancel).
     pub(super) fn turn_frames(&mut self, b: &BlockView<'_>) {
         // (only a G code turns a frame)
-        if !self.frame_codes() {
+        if !self.frames.codes {
             return;
         }
         let (sinumerik, fanuc_lathe, haas) = (
@@ -441,7 +444,8 @@ impl Checker {
     /// ([`Checker::take_back`]); read before the rules, which [`Checker::turn_frames`] is one
     /// of.
     pub(super) fn cancel_frames(&mut self, b: &BlockView<'_>, before: &Before) {
-        if !self.frame_codes() || self.frames.on == 0 {
+        self.frames.codes = self.frame_codes();
+        if self.frames.on == 0 || !self.frames.codes {
             return;
         }
         let (sinumerik, fanuc_lathe, haas) = (
@@ -702,7 +706,7 @@ impl Checker {
     /// back exactly, a shift leaves it unknown. Read after the block's own positions.
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
         // (only a G code shifts or turns the coordinates)
-        if !self.frame_codes() {
+        if !self.frames.codes {
             return;
         }
         let fanuc_lathe = self.config.modal.fanuc_lathe;
