@@ -189,6 +189,9 @@ pub struct BlockValues {
     /// The block selects a work system the modal state does not number (a decimal code of
     /// G54 or G59: FANUC's G54.1, LinuxCNC's G59.1-G59.3): the system in force is not known.
     pub other_work_system: bool,
+    /// The block has a G code with decimals (G51.1, G92.1): none of them is in `gs`, and the
+    /// frames ask for them only where this is set.
+    pub decimal_g: bool,
     /// The first value of each letter, meaningful where `given` has the letter's bit.
     values: [Dec; 26],
     given: u32,
@@ -203,6 +206,7 @@ impl Default for BlockValues {
             g_mask: 0,
             ms: Vec::new(),
             other_work_system: false,
+            decimal_g: false,
             values: [Dec::ZERO; 26],
             given: 0,
             unknown: 0,
@@ -216,6 +220,7 @@ impl BlockValues {
         self.g_mask = 0;
         self.ms.clear();
         self.other_work_system = false;
+        self.decimal_g = false;
         self.given = 0;
         self.unknown = 0;
     }

@@ -2,7 +2,7 @@
 //! profile's work offsets and the one in force are known, and as the span of the program's
 //! positions; the feed, the spindle speed and the tool numbers.
 
-use super::{round6, BlockView, Checker, Config, Facts, Span};
+use super::{round6, Before, BlockView, Checker, Config, Facts, Span};
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::modal::{axis_index, bit, AxesTaken, Units, AXES};
@@ -48,11 +48,17 @@ pub(super) struct Frames {
     /// For each frame bit, the axes (bit `i` for `AXES[i]`) whose positions under it are
     /// left out of the spans: where a frame puts them is not known here.
     hidden: [u16; 6],
+    /// For each frame bit, whether an axis it hides moved under it: at its cancel those axes
+    /// are where the frame put them, not known here (none moved: where they stood before).
+    moved: [bool; 6],
     /// The spans from before a mirror image, taken back at its cancel: the positions under
     /// it stand apart (a mirror keeps the size of a span, not its place).
     saved: Option<[Option<Span>; 9]>,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
+    /// Whether the block in hand has a code that may turn a frame or shift the coordinates
+    /// ([`Checker::frame_codes`]), decided once a block by [`Checker::cancel_frames`].
+    codes: bool,
 }
 
 impl Frames {
@@ -74,6 +80,9 @@ struct Map {
     /// X, Y, Z (bits 0-2) given as absolute positions since the frame turned: before that
     /// an axis stands where the frame's coordinates do not say.
     fresh: u8,
+    /// X, Y, Z moved under the frame at all: an axis none of whose own axes moved stands
+    /// where it stood before the frame (its cancel takes nothing back).
+    touched: u8,
     /// "G68 of line 4", for the message.
     what: String,
 }
@@ -107,6 +116,22 @@ fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool) -> (u8, u8
     }
 }
 
+/// The G codes below 128 whose whole part may turn a frame on or off or shift the
+/// coordinates ([`frame_bits`], [`Checker::shift_spans`]): G10, G15, G16, G50 (G50.1), G51
+/// (G51.1), G52, G68, G69, G92 (G92.1), G100, G101. A block with none of them (and no Haas
+/// G268/G269) leaves the frames as they are: most blocks, tested once by the block's G mask.
+const FRAME_CODES: u128 = 1 << 10
+    | 1 << 15
+    | 1 << 16
+    | 1 << 50
+    | 1 << 51
+    | 1 << 52
+    | 1 << 68
+    | 1 << 69
+    | 1 << 92
+    | 1 << 100
+    | 1 << 101;
+
 /// The two axes of a plane (G17 X Y, G18 Z X, G19 Y Z), as places in [`AXES`].
 fn plane_axes(plane: i64) -> (usize, usize) {
     match plane {
@@ -117,6 +142,18 @@ fn plane_axes(plane: i64) -> (usize, usize) {
 }
 
 impl Checker {
+    /// Whether the block has a G code that may turn a frame or shift the coordinates: the
+    /// mask of its codes against [`FRAME_CODES`], a decimal code (G51.1, G50.1, G92.1: not in
+    /// the mask), a Haas G268/G269 above it; a FANUC lathe's
+    /// G code system B or C (the mask is of system A's numbers) looks at every code.
+    fn frame_codes(&self) -> bool {
+        self.letters & bit(b'G') != 0
+            && (self.values.g_mask() & FRAME_CODES != 0
+                || self.values.decimal_g
+                || self.config.modal.g_system != crate::lex::GCodeSystem::A
+                || self.config.haas && self.values.gs().iter().any(|&g| g >= 128))
+    }
+
     /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
     /// limits are given.
     pub(super) fn to_profile_units(&self, feed: bool) -> f64 {
@@ -267,7 +304,7 @@ impl Checker {
     /// its cancel).
     pub(super) fn turn_frames(&mut self, b: &BlockView<'_>) {
         // (only a G code turns a frame)
-        if self.letters & bit(b'G') == 0 {
+        if !self.frames.codes {
             return;
         }
         let (sinumerik, fanuc_lathe, haas) = (
@@ -291,6 +328,7 @@ impl Checker {
 
     fn frame_on(&mut self, on: u8, b: &BlockView<'_>, token: String, column: usize) {
         let place = on.trailing_zeros() as usize;
+        self.frames.moved[place] = false;
         let others = self.frames.on & !on;
         self.frames.on |= on;
         let (a, c) = plane_axes(self.machine.state.plane);
@@ -298,8 +336,9 @@ impl Checker {
         match on {
             2 | 4 | 8 => {
                 let what = format!("{token} of line {}", b.line);
-                let exact = if others & (2 | 4 | 8) != 0 {
-                    Err("it turns inside another rotation or scaling".to_string())
+                let mirrored = self.frames.map.as_ref().is_some_and(|map| map.bit == 32);
+                let exact = if others & (2 | 4 | 8) != 0 || mirrored {
+                    Err("it turns inside another rotation, scaling or mirror image".to_string())
                 } else if on == 8 {
                     Err("a feature coordinate system the checker does not follow".into())
                 } else {
@@ -308,6 +347,7 @@ impl Checker {
                 // a frame in force that was exact is no longer the whole of it
                 if let Some(map) = self.frames.map.take() {
                     self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
+                    self.frames.moved[map.bit.trailing_zeros() as usize] |= map.touched != 0;
                 }
                 match exact {
                     Ok((centre, m)) => {
@@ -331,6 +371,7 @@ impl Checker {
                             centre,
                             m,
                             fresh,
+                            touched: 0,
                             what,
                         })
                     }
@@ -352,10 +393,171 @@ impl Checker {
             // polar coordinates: the plane's words are a radius and an angle
             1 => self.frames.hidden[place] = plane,
             _ => {
+                if on == 32 && others == 0 && self.frames.map.is_none() {
+                    if let Some((centre, m, fresh)) = self.exact_mirror(b) {
+                        let what = format!("{token} of line {}", b.line);
+                        self.frames.map = Some(Map {
+                            bit: on,
+                            centre,
+                            m,
+                            fresh,
+                            touched: 0,
+                            what,
+                        });
+                        return;
+                    }
+                }
                 if self.frames.saved.is_none() {
                     self.frames.saved = Some(std::mem::take(&mut self.spans));
                 }
             }
+        }
+    }
+
+    /// A mirror image about the points its block writes (`G51.1 X10.`: X about 10), under
+    /// G90, of X Y Z alone: exact as a rotation is, each mirrored axis `2c - p` (review 14,
+    /// finding 4: its positions apart missed a span past the travel). FANUC 16/18 Operator's
+    /// Manual, "Programmable mirror image (G50.1, G51.1)": the axis words give the axis of
+    /// symmetry. None where it is not exact here (the positions then stand apart).
+    fn exact_mirror(&self, b: &BlockView<'_>) -> Option<([f64; 3], [[f64; 3]; 3], u8)> {
+        if !self.config.modal.centre_codes || self.machine.state.incremental {
+            return None;
+        }
+        let factor = self.to_profile_units(false);
+        let mut centre = [0.0; 3];
+        let mut m = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut fresh = 0b111u8;
+        for (i, w) in b.words.iter().enumerate() {
+            if w.letter == b'G' || w.letter == b'N' {
+                continue;
+            }
+            let k = AXES[..3].iter().position(|&a| a == w.letter)?;
+            let value = self.readable[i]?;
+            centre[k] = value.to_f64() * factor;
+            m[k][k] = -1.0;
+            fresh &= !(1 << k);
+        }
+        (fresh != 0b111).then_some((centre, m, fresh))
+    }
+
+    /// The block's cancels of the frames in force, as the state after it has them
+    /// ([`Checker::take_back`]); read before the rules, which [`Checker::turn_frames`] is one
+    /// of.
+    pub(super) fn cancel_frames(&mut self, b: &BlockView<'_>, before: &Before) {
+        self.frames.codes = self.frame_codes();
+        if self.frames.on == 0 || !self.frames.codes {
+            return;
+        }
+        let (sinumerik, fanuc_lathe, haas) = (
+            self.config.family == Family::Sinumerik,
+            self.config.modal.fanuc_lathe,
+            self.config.haas,
+        );
+        let mut done = 0u8;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let (_, off) = frame_bits(v, sinumerik, fanuc_lathe, haas);
+            if off != 0 && self.frames.on & off & !done != 0 {
+                done |= off;
+                self.take_back(off, b, before, w.column);
+            }
+        }
+    }
+
+    /// At the cancel of a rotation or scaling, the tool stands where the frame put it: the
+    /// modal position (the frame's coordinates) becomes that point in the coordinates after
+    /// the cancel, taken back through the exact frame (the cancel block's own absolute words
+    /// stand as written, its increments add to the point); where the frame is not known here,
+    /// or the tool's place in its coordinates was not, the axes it moves are unknown until an
+    /// absolute position gives them, said once as a note. Haas "G68 Rotation" (Classic Mill
+    /// Operator's Manual): G68 affects the positional values of the blocks after it, none
+    /// after G69; Mitsubishi M700V, G68.1/G69.1 precautions: an absolute movement right after
+    /// the cancel. Without it an increment after G69 adds to the frame's coordinate: a missed
+    /// over-travel, a false TG403 on a correct arc (review 14, finding 1).
+    fn take_back(&mut self, off: u8, b: &BlockView<'_>, before: &Before, column: usize) {
+        // (a mirror image only where it was exact: its positions apart otherwise)
+        let exact_mirror = off == 32 && self.frames.map.as_ref().is_some_and(|map| map.bit == 32);
+        if off & (2 | 4 | 8) == 0 && !exact_mirror {
+            return;
+        }
+        let factor = self.to_profile_units(false);
+        let old: [Option<f64>; 3] =
+            std::array::from_fn(|k| before.xyz[k].map(|p| p.to_f64() * factor));
+        let positions = matches!(self.machine.taken(), None | Some(AxesTaken::Positions));
+        let absolute =
+            |k: usize| positions && !self.machine.state.incremental && self.values.has(AXES[k]);
+        let mut lost = 0u16;
+        let mut now: [Option<Dec>; 3] = std::array::from_fn(|k| self.machine.state.position[k]);
+        match self.frames.map.as_ref().filter(|map| map.bit == off) {
+            Some(map) => {
+                for k in 0..3 {
+                    let made_of = (0..3)
+                        .filter(|&l| map.m[k][l] != 0.0)
+                        .fold(0u8, |all, l| all | 1 << l);
+                    // an axis the frame leaves as it is, one whose axes never moved under
+                    // it (where it stood before the frame), or the block's absolute word
+                    if (made_of == 1 << k && map.m[k][k] == 1.0)
+                        || made_of & map.touched == 0
+                        || absolute(k)
+                    {
+                        continue;
+                    }
+                    let mut at = map.centre[k];
+                    for l in (0..3).filter(|&l| made_of & 1 << l != 0) {
+                        match old[l].filter(|_| map.fresh & 1 << l != 0) {
+                            Some(p) => at += map.m[k][l] * (p - map.centre[l]),
+                            None => at = f64::NAN,
+                        }
+                    }
+                    // the cancel block's increment, on top of the point
+                    let step = match (now[k], old[k]) {
+                        (Some(p), Some(o)) => p.to_f64() * factor - o,
+                        _ => f64::NAN,
+                    };
+                    now[k] = Some(at + step)
+                        .filter(|v| v.is_finite())
+                        .and_then(|v| Dec::parse(&format!("{:.6}", v / factor)));
+                    if now[k].is_none() {
+                        lost |= 1 << k;
+                    }
+                }
+            }
+            None => {
+                let place = off.trailing_zeros() as usize;
+                let moved = self.frames.moved[place];
+                for k in (0..3).filter(|&k| moved && self.frames.hidden[place] & 1 << k != 0) {
+                    if !absolute(k) {
+                        now[k] = None;
+                        lost |= 1 << k;
+                    }
+                }
+            }
+        }
+        for (k, p) in now.into_iter().enumerate() {
+            match p {
+                Some(p) => self.machine.state.position[k] = Some(p),
+                None if lost & 1 << k != 0 => self.machine.forget_axis(AXES[k]),
+                None => {}
+            }
+        }
+        // (a G268 under the profile's work offsets has a note of its own, which says the
+        // positions after G269 are not compared either: Checker::work_offset)
+        let own = off == 8 && !self.config.work_offsets.is_empty();
+        if lost != 0 && !own {
+            let token = b
+                .words
+                .iter()
+                .find(|w| w.column == column)
+                .map_or_else(|| "the cancel".to_string(), |w| w.token());
+            self.frame_note(
+                &token,
+                lost,
+                (b.line, column),
+                "until an absolute position gives them",
+                "where the frame left the tool in the coordinates after its cancel is not known here",
+            );
         }
     }
 
@@ -414,7 +616,8 @@ impl Checker {
     /// current position; R omitted, parameter 5410; under G91 the angle may add to the last,
     /// parameter 5400) and "Scaling" (the factor's unit and the axes scaled are parameters
     /// 5400 and 5401); Haas Mill Operator's Manual, G68 and G51 (centre omitted: the current
-    /// position; P omitted: Setting 71).
+    /// position; R omitted: Setting 72; under G91 with Setting 73 on, R adds to the angle;
+    /// P omitted: Setting 71).
     fn exact_frame(
         &self,
         rotation: bool,
@@ -424,7 +627,11 @@ impl Checker {
             return Err("the control's words for it are not known to the checker".into());
         }
         if self.machine.state.incremental {
-            return Err("under G91 its centre and angle may add to the ones before".into());
+            return Err(if self.config.haas {
+                "under G91 (with Setting 73 on) its angle adds to the one before".into()
+            } else {
+                "under G91 its centre and angle may add to the ones before".into()
+            });
         }
         let word = |letter: u8| {
             b.words
@@ -456,7 +663,9 @@ impl Checker {
             centre[k] = at.map_or(f64::NAN, |at| at.to_f64() * factor);
         }
         let mut m = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-        let (letter, missing) = if rotation {
+        let (letter, missing) = if rotation && self.config.haas {
+            ('R', "no R: the angle is Setting 72's")
+        } else if rotation {
             ('R', "no R: the angle is parameter 5410's")
         } else {
             ('P', "no P: the factor is a setting's or a parameter's")
@@ -497,7 +706,7 @@ impl Checker {
     /// back exactly, a shift leaves it unknown. Read after the block's own positions.
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
         // (only a G code shifts or turns the coordinates)
-        if self.letters & bit(b'G') == 0 {
+        if !self.frames.codes {
             return;
         }
         let fanuc_lathe = self.config.modal.fanuc_lathe;
@@ -532,6 +741,7 @@ impl Checker {
                 if axes {
                     if let Some(map) = self.frames.map.take() {
                         self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
+                        self.frames.moved[map.bit.trailing_zeros() as usize] |= map.touched != 0;
                         let why = format!("{} shifts the coordinates inside it", w.token());
                         self.frame_not_applied(&map.what, XYZ, (b.line, w.column), &why);
                     }
@@ -609,6 +819,13 @@ impl Checker {
         }
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
+        // the axes whose positions go to the spans below through a frame, or not at all
+        // (none where no frame is on: most programs)
+        let framed = if self.frames.on == 0 {
+            0
+        } else {
+            self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
+        };
         for &axis in moved {
             let Some((low, high)) = self.travel.of(axis) else {
                 continue;
@@ -685,7 +902,10 @@ impl Checker {
                 _ => {}
             }
             // (under a frame: X Y Z taken back through it below, or left out)
-            if self.frames.hidden() & (1 << i) != 0 || (i < 3 && self.frames.map.is_some()) {
+            if framed & (1 << i) != 0 {
+                for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
+                    *moved |= hidden & (1 << i) != 0;
+                }
                 continue;
             }
             self.add_to_span(i, at, said_outside, line, col(axis), "");
@@ -839,9 +1059,22 @@ impl Checker {
                 now |= 1 << k;
             }
         }
+        // a Haas's scaling and a canned cycle's Z: "scaling does not affect canned cycle Z-axis
+        // movements such as clearance planes and incremental values" (Mill Operator's Manual,
+        // G51, programming notes); whether the cycle's Z depth is scaled it leaves open: Z
+        // left out of the spans, and where Z stands in the frame after it not known
+        let cycle_z = self.config.haas
+            && map.bit == 2
+            && self.machine.state.cycle.is_some()
+            && now & 0b100 != 0;
+        if cycle_z {
+            now &= !0b100;
+            map.fresh &= !0b100;
+        }
         if absolute {
             map.fresh |= now;
         }
+        map.touched |= now;
         let map = map.clone();
         let under = format!(
             " (its positions under the {} taken back to the coordinates before it)",
@@ -883,6 +1116,17 @@ impl Checker {
                 .find(|&l| made_of & now & 1 << l != 0)
                 .map_or(0, |l| facts.col(AXES[l]));
             self.add_to_span(k, at, false, line, column, &under);
+        }
+        if cycle_z {
+            self.frame_note(
+                &map.what,
+                0b100,
+                (line, facts.col(b'Z')),
+                "in a canned cycle, nor after it until Z is given there as an absolute position",
+                "the Haas manual says scaling leaves a canned cycle's Z moves (its clearance \
+                 plane, its increments) as written, and leaves open whether the cycle's Z depth \
+                 is scaled",
+            );
         }
         if waiting != 0 {
             // (said at the block's first moved axis)
@@ -1051,6 +1295,113 @@ mod tests {
             "{}",
             found[0].message
         );
+    }
+
+    #[test]
+    fn at_a_rotation_s_cancel_the_tool_stands_where_the_frame_put_it() {
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // X450. under R90 about X0 Y0 is Y450. before it; after G69 an increment of Y100.
+        // goes to Y550., 850 from Y-300., more than the 800 of Y's travel (not Y100.)
+        let rotated = |step: &str| {
+            format!("G00 Y-300.\nG68 X0 Y0 R90.\nG00 X0 Y0\nX450.\nG69\nG91 Y{step}\nG90")
+        };
+        assert_eq!(
+            at(fanuc.clone(), &rotated("100."), Rule::TravelExceeded),
+            [(7, 5)]
+        );
+        assert_eq!(at(fanuc.clone(), &rotated("40."), Rule::TravelExceeded), []);
+        // a correct arc after the cancel: it starts at X0 Y45., radius 45 at both ends
+        let arc = "G00 X0 Y0 F100.\nG68 X0 Y0 R90.\nG00 X45. Y0\nG69\nG03 X-45. Y0 I0 J-45.";
+        assert_eq!(at(fanuc.clone(), arc, Rule::ArcRadiusMismatch), []);
+        // the cancel block's own absolute word stands as written, its other axis taken back
+        let same = "G00 Y-300.\nG68 X0 Y0 R90.\nG00 X0 Y0\nX450.\nG69 X10.\nG91 Y100.\nG90";
+        assert_eq!(at(fanuc.clone(), same, Rule::TravelExceeded), [(7, 5)]);
+        // a rotation whose angle is a parameter's: the plane's axes unknown after the
+        // cancel until an absolute position: no span, no arc compared from a wrong start
+        let unknown = "G00 X0 Y0 F100.\nG68 X0 Y0\nG00 X45. Y0\nG69\nG03 X-45. Y0 I0 J-45.";
+        assert_eq!(at(fanuc.clone(), unknown, Rule::ArcRadiusMismatch), []);
+        let unknown = "G00 Y-300.\nG68 X0 Y0\nX450.\nG69\nG91 Y600.\nG90\nY400.";
+        assert_eq!(at(fanuc.clone(), unknown, Rule::TravelExceeded), []);
+        let unknown = "G00 Y-300.\nG68 X0 Y0\nX450.\nG69\nG90 Y600.";
+        assert_eq!(at(fanuc.clone(), unknown, Rule::TravelExceeded), [(6, 5)]);
+        // an exact rotation whose Y was never given under it: Y unknown after the cancel,
+        // said once
+        let unfresh = "G00 Y-300.\nG68 X0 Y0 R90.\nX450.\nG69\nG91 Y600.\nG90";
+        assert_eq!(at(fanuc.clone(), unfresh, Rule::TravelExceeded), []);
+        let notes = findings(fanuc, &program(unfresh), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
+    }
+
+    #[test]
+    fn a_mirror_about_a_written_point_is_taken_back_exactly() {
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // X-500. about X10. is X520.: 1020 from X-500., more than the 1000 of X's travel
+        let mirror = |x: &str| format!("G00 X-500. Y0\nG51.1 X10.\nG00 X{x}\nG50.1 X0\nX0");
+        assert_eq!(
+            at(fanuc.clone(), &mirror("-500."), Rule::TravelExceeded),
+            [(4, 5)]
+        );
+        let found = findings(
+            fanuc.clone(),
+            &program(&mirror("-500.")),
+            Rule::TravelExceeded,
+        );
+        assert!(
+            found[0].message.contains("G51.1 of line 3 taken back"),
+            "{}",
+            found[0].message
+        );
+        assert_eq!(
+            at(fanuc.clone(), &mirror("-400."), Rule::TravelExceeded),
+            []
+        );
+        // at the cancel the tool stands at X410.: an increment of X-30. after it is X380.
+        // (880 from X-500.), of X100. is X510. (1010); (the cancel's own Y0 is read as a
+        // move by the modal state, as G51.1's axis words are: not the point here)
+        let after = |x: &str| {
+            format!("G00 X-500. Y0\nG51.1 X10. Y0\nG00 X-400.\nX-390.\nG50.1 Y0\nG91 X{x}\nG90")
+        };
+        assert_eq!(at(fanuc.clone(), &after("-30."), Rule::TravelExceeded), []);
+        assert_eq!(
+            at(fanuc.clone(), &after("100."), Rule::TravelExceeded),
+            [(7, 5)]
+        );
+        // a mirror whose point is not exact here (an A axis) keeps its positions apart
+        let apart = "G00 X-500. Y0\nG51.1 X10. A0\nG00 X-500.\nG50.1 X0\nX0";
+        assert_eq!(at(fanuc, apart, Rule::TravelExceeded), []);
+    }
+
+    #[test]
+    fn a_haas_scaling_leaves_a_canned_cycle_s_z_out_with_a_note() {
+        let mut haas = of_family(Family::MacroB);
+        haas.modal.centre_codes = true;
+        haas.haas = true;
+        // Z-180. scaled by 2 about Z0 is Z-360., 410 from Z50. (Z's travel 400): a plain
+        // move is compared, a drilling cycle's Z is not (the manual leaves it open), said
+        let body =
+            |z: &str| format!("G00 X0 Y0 Z50.\nG51 X0 Y0 Z0 P2.\nG00 X0 Y0 Z20.\n{z}\nG80\nG50");
+        assert_eq!(
+            at(
+                haas.clone(),
+                &body("G01 Z-180. F100."),
+                Rule::TravelExceeded
+            ),
+            [(5, 5)]
+        );
+        let cycle = body("G81 X0 Y0 Z-180. R20. F100.");
+        assert_eq!(at(haas.clone(), &cycle, Rule::TravelExceeded), []);
+        let notes = findings(haas.clone(), &program(&cycle), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].message.contains("canned cycle"),
+            "{}",
+            notes[0].message
+        );
+        // a FANUC's scaling is left out whole (its factor's unit is a parameter)
+        haas.haas = false;
+        assert_eq!(at(haas, &cycle, Rule::TravelExceeded), []);
     }
 
     #[test]

@@ -1124,21 +1124,24 @@ impl Checker {
         // values (G90/G91 and N beside them) and nothing else; any other block (a move, a
         // call, an O number, a G10 with a G00 or an M98 in it) is no saved offset, and is
         // read
-        let offset_line = b.statements.iter().all(|s| s.1 == Kind::Name)
-            && (b.words.is_empty()
-                || b.words
-                    .iter()
-                    .any(|w| w.letter == b'G' && w.number == b"10")
-                    && b.words.iter().all(|w| {
-                        w.expression.is_empty()
-                            && w.index.is_empty()
-                            && match w.letter {
-                                b'G' => matches!(w.number, b"10" | b"90" | b"91"),
-                                b'N' | b'L' | b'P' | b'Q' | b'R' => true,
-                                letter => AXES.contains(&letter),
-                            }
-                    }));
-        if self.offsets_section && !offset_line {
+        // (asked only inside that section)
+        let offset_line = || {
+            b.statements.iter().all(|s| s.1 == Kind::Name)
+                && (b.words.is_empty()
+                    || b.words
+                        .iter()
+                        .any(|w| w.letter == b'G' && w.number == b"10")
+                        && b.words.iter().all(|w| {
+                            w.expression.is_empty()
+                                && w.index.is_empty()
+                                && match w.letter {
+                                    b'G' => matches!(w.number, b"10" | b"90" | b"91"),
+                                    b'N' | b'L' | b'P' | b'Q' | b'R' => true,
+                                    letter => AXES.contains(&letter),
+                                }
+                        }))
+        };
+        if self.offsets_section && !offset_line() {
             self.offsets_section = false;
             if b.words.first().is_none_or(|w| w.letter != b'O') {
                 let column = b.words.first().map_or(1, |w| w.column);
@@ -1382,6 +1385,7 @@ impl Checker {
                 // modal state knows (the dialect's code table names what it does)
                 b'G' if !v.is_whole() => {
                     self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
+                    self.values.decimal_g = true;
                 }
                 b'G' => self.values.push_g(v.trunc()),
                 b'M' => self.values.ms.push(v.trunc()),
@@ -1415,6 +1419,8 @@ impl Checker {
             taken
         };
         self.machine.apply_taken(&self.values, taken);
+        // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
+        self.cancel_frames(b, &before);
         self.programmed_forms(b, &before);
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
