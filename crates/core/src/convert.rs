@@ -8305,14 +8305,7 @@ mod tests {
     fn the_cycle_tables_ask_of_points_only_for_the_cycles_g73_to_g89_and_g243() {
         // `meanings_by_codes` reads the words' points only for those codes: for any other, the
         // tables give the same roles whatever the points
-        let families = [
-            Family::Iso,
-            Family::MacroB,
-            Family::Sinumerik,
-            Family::Heidenhain,
-            Family::LinuxCnc,
-            Family::Okuma,
-        ];
+        let families = Family::ALL;
         let all = (1u32 << 26) - 1;
         for family in families {
             for (haas, lathe) in [(None, false), (Some(true), false), (Some(false), true)] {
@@ -8343,14 +8336,7 @@ mod tests {
             b"K4.", b"P1", b"P1.5", b"Q2", b"Q2.", b"R3", b"L5", b"H6", b"D4", b"E3", b"F100.",
             b"S1000", b"#1=2",
         ];
-        let families = [
-            Family::Iso,
-            Family::MacroB,
-            Family::Sinumerik,
-            Family::Heidenhain,
-            Family::LinuxCnc,
-            Family::Okuma,
-        ];
+        let families = Family::ALL;
         for (n, family) in families.into_iter().enumerate() {
             for (haas, lathe) in [(None, false), (Some(true), false), (Some(false), true)] {
                 // every run of 1 to 6 words, from every start

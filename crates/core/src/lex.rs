@@ -32,6 +32,17 @@ pub enum Family {
 }
 
 impl Family {
+    /// Every family, in declaration order: the tables built per family and the tests that
+    /// walk them all take this one list, so a new family is not missed in one of them.
+    pub const ALL: [Family; 6] = [
+        Family::Iso,
+        Family::MacroB,
+        Family::Sinumerik,
+        Family::Heidenhain,
+        Family::LinuxCnc,
+        Family::Okuma,
+    ];
+
     pub fn from_name(name: &str) -> Option<Family> {
         Some(match name {
             "iso" => Family::Iso,

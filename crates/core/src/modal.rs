@@ -1067,14 +1067,7 @@ mod tests {
     /// answer kept from the block before).
     #[test]
     fn what_a_block_does_with_its_axis_words_is_the_settings_answer_for_the_last_block() {
-        let families = [
-            Family::Iso,
-            Family::MacroB,
-            Family::Sinumerik,
-            Family::Heidenhain,
-            Family::LinuxCnc,
-            Family::Okuma,
-        ];
+        let families = Family::ALL;
         for family in families {
             for (fanuc_lathe, lap, centre_codes) in [
                 (false, false, false),

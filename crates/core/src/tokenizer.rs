@@ -775,14 +775,7 @@ const FIRST: u8 = 2;
 /// where the family's match and the letter's tests were about 15 instructions.
 const PLAIN_START: [[[u8; 256]; 2]; 6] = {
     let mut table = [[[NOT; 256]; 2]; 6];
-    let families = [
-        Family::Iso,
-        Family::MacroB,
-        Family::Sinumerik,
-        Family::Heidenhain,
-        Family::LinuxCnc,
-        Family::Okuma,
-    ];
+    let families = Family::ALL;
     let mut f = 0;
     while f < families.len() {
         let family = families[f];
@@ -1294,14 +1287,7 @@ mod tests {
             state ^= state << 17;
             state
         };
-        let families = [
-            Family::Iso,
-            Family::MacroB,
-            Family::Sinumerik,
-            Family::Heidenhain,
-            Family::LinuxCnc,
-            Family::Okuma,
-        ];
+        let families = Family::ALL;
         let mut dialects = Vec::new();
         for family in families {
             dialects.push(Dialect::permissive(family));

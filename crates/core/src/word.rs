@@ -480,14 +480,7 @@ mod tests {
             "G01 X[#1+2] Y#3 F#<feed> o100 sub",
             ":1234 G0 X0",
         ];
-        let families = [
-            Family::Iso,
-            Family::MacroB,
-            Family::LinuxCnc,
-            Family::Sinumerik,
-            Family::Heidenhain,
-            Family::Okuma,
-        ];
+        let families = Family::ALL;
         let mut plain = 0;
         for family in families {
             let dialect = Dialect::permissive(family);
