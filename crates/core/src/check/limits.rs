@@ -1275,6 +1275,19 @@ mod tests {
     }
 
     #[test]
+    fn a_frame_s_cancel_beside_a_dwell_takes_effect_in_its_block() {
+        // G04 P1. G69: the rotation ends in the dwell's block as in a block of its own (review
+        // 15, finding 1): Y-450. to Y450. spans 900, more than Y's 800; X450. after the
+        // cancel is no Y position
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        let missed = "G00 X0 Y-450.\nG68 X0 Y0 R90.\nG00 X0 Y0\nG04 P1. G69\nG00 X0 Y450.";
+        assert_eq!(at(fanuc.clone(), missed, Rule::TravelExceeded), [(6, 8)]);
+        let fits = "G00 X0 Y-300.\nG68 X0 Y0 R90.\nG00 X0 Y0\nG04 P1. G69\nG00 X450. Y0";
+        assert_eq!(at(fanuc, fits, Rule::TravelExceeded), []);
+    }
+
+    #[test]
     fn the_spans_run_on_across_a_frame_s_cancel() {
         let mut fanuc = of_family(Family::MacroB);
         fanuc.modal.centre_codes = true;

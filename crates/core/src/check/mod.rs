@@ -1649,6 +1649,12 @@ impl Checker {
                 if self.config.family == Family::LinuxCnc {
                     self.linuxcnc_refusals(b, &facts);
                 }
+                // a frame's or a shift's code beside the dwell (`G04 P1. G69`) takes effect in
+                // its block all the same: without this the position was taken back at G69 and
+                // the rotation left on (review 15, finding 1)
+                self.turn_frames(b);
+                self.work_offset(b);
+                self.shift_spans(b);
                 return;
             }
             // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force
