@@ -25,6 +25,7 @@ imported only when a record's fields are first asked for, or one is assigned to.
 
 from __future__ import annotations
 
+import _thread
 import sys
 from collections.abc import Callable
 
@@ -93,6 +94,12 @@ def _classvar(annotation: object) -> bool:
                                    or getattr(annotation, "__origin__", None) is typing.ClassVar)
 
 
+# One registration at a time: `convert DIR -j 2` asks two threads for a class's fields at once
+# (`dataclasses.replace` of a profile in each), and a thread that came while another was halfway
+# through the registration was told the record is no dataclass.
+_REGISTERING = _thread.RLock()
+
+
 class _Registered:
     """``__dataclass_fields__`` of a record class: registered with ``dataclasses`` on first use
     (the registration stores the class's own, which hides this one from then on). The record
@@ -101,6 +108,14 @@ class _Registered:
     def __get__(self, obj: object, owner: type) -> dict[str, dataclasses.Field[Any]]:
         if owner in (Record, FrozenRecord):
             raise AttributeError("__dataclass_fields__")
+        with _REGISTERING:
+            registered = owner.__dict__.get("__dataclass_fields__")
+            if registered is not None and not isinstance(registered, _Registered):
+                return registered  # type: ignore[no-any-return]  # another thread's
+            return self._register(owner)
+
+    @staticmethod
+    def _register(owner: type) -> dict[str, dataclasses.Field[Any]]:
         import dataclasses
 
         for name, value in list(owner.__dict__.items()):

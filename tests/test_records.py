@@ -5,6 +5,7 @@ import copy
 import dataclasses
 import inspect
 import pickle
+import sys
 from decimal import Decimal
 from typing import ClassVar
 
@@ -232,3 +233,52 @@ def test_positional_patterns_match_as_a_dataclass_s(cls):
     out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
                          check=True, timeout=60).stdout
     assert out.strip() == repr(tuple(f.name for f in dataclasses.fields(cls)))
+
+
+def test_a_record_s_fields_are_registered_once_when_threads_ask_at_once() -> None:
+    """``convert DIR -j 2``: two threads ``dataclasses.replace`` a profile at the same moment,
+    each the first to ask for its class's fields; each must be given them (a fresh clone's suite,
+    run under load, once saw a thread told that a profile is no dataclass)."""
+    switching = sys.getswitchinterval()
+    sys.setswitchinterval(1e-6)  # a thread switch every few bytecodes: the registration's window
+    try:
+        for _ in range(40):
+            _replace_at_once(threads=6)
+    finally:
+        sys.setswitchinterval(switching)
+
+
+def _replace_at_once(threads: int) -> None:
+    """A new record class, replaced by ``threads`` threads released together."""
+    import threading
+
+    from formats.records import FrozenRecord, init_fields, record
+
+    @record
+    class Point(FrozenRecord):
+        __slots__ = ("x", "y")
+        x: int
+        y: int
+
+        def __init__(self, x: int, y: int) -> None:
+            init_fields(self, x, y)
+
+    point = Point(1, 2)
+    start = threading.Barrier(threads)
+    failures: list[BaseException] = []
+    results: list[object] = []
+
+    def ask() -> None:
+        start.wait(timeout=10)
+        try:
+            results.append(dataclasses.replace(point, y=3))
+        except BaseException as e:  # noqa: BLE001 -- the failure under test, kept to assert
+            failures.append(e)
+
+    started = [threading.Thread(target=ask) for _ in range(threads)]
+    for t in started:
+        t.start()
+    for t in started:
+        t.join(timeout=10)
+    assert failures == []
+    assert results == [Point(1, 3)] * threads
