@@ -252,16 +252,18 @@ def _replace_at_once(threads: int) -> None:
     """A new record class, replaced by ``threads`` threads released together."""
     import threading
 
-    from formats.records import FrozenRecord, init_fields, record
+    from formats.records import FrozenRecord, field, init_fields, record
 
     @record
-    class Point(FrozenRecord):
-        __slots__ = ("x", "y")
+    class Point(FrozenRecord):  # as a profile: fields with a default factory, no slots
         x: int
         y: int
+        notes: list[str] = field(default_factory=list)
+        more: dict[str, int] = field(default_factory=dict)
 
-        def __init__(self, x: int, y: int) -> None:
-            init_fields(self, x, y)
+        def __init__(self, x: int, y: int, notes: list[str] | None = None,
+                     more: dict[str, int] | None = None) -> None:
+            init_fields(self, x, y, notes or [], more or {})
 
     point = Point(1, 2)
     start = threading.Barrier(threads)
