@@ -4,6 +4,7 @@ usage error a command finds itself (click's own usage errors are told the same w
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable
 from decimal import Decimal, InvalidOperation
 from typing import Any, TypeVar
@@ -33,10 +34,13 @@ class FiniteRange(click.FloatRange):
         return number
 
 
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+
+
 class Height(click.ParamType):  # type: ignore[type-arg]  # (generic in recent click, not 8.1)
     """A length the operator gives for the machine to move to, read exactly as a
     :class:`~decimal.Decimal` (``50.1`` stays 50.1, not the float nearest it): a finite
-    number. Whether its digits fit the word format is for the command to say, with the
+    number in the digits 0-9 (no ``1_0``, no other script's digits). Whether its digits fit the word format is for the command to say, with the
     profile in hand."""
 
     name = "height"
@@ -52,6 +56,10 @@ class Height(click.ParamType):  # type: ignore[type-arg]  # (generic in recent c
                 self.fail(f"{value!r} is not a number", param, ctx)
         if not number.is_finite():
             self.fail(f"{value!r} is not a finite number", param, ctx)
+        # Decimal also reads `1_0` and other scripts' digits (`５0`): a height is written as
+        # the program would write it, in ASCII digits (review 15, finding 7)
+        if not isinstance(value, Decimal) and not _PLAIN_NUMBER.fullmatch(str(value).strip()):
+            self.fail(f"{value!r} is not a number written in the digits 0-9", param, ctx)
         return number
 
 

@@ -944,6 +944,8 @@ def test_send_restart_at_the_cutting_depth_needs_a_safe_z(tmp_path: Path) -> Non
     ("1e999", "1E+999 has more digits before the decimal sign than the profile's Z format "
               "Z+053 holds (5 in metric)"),
     ("123456.789", "123456.789 has more digits"),
+    ("1_0", "'1_0' is not a number written in the digits 0-9"),
+    ("\uff15\uff10", "'\uff15\uff10' is not a number written in the digits 0-9"),
     ("99999.9999", "99999.9999 has more digits"),  # rounded up to 100000.000 as it is sent
 ])
 def test_send_clearance_that_is_no_height_is_a_usage_error(tmp_path: Path, given: str,
