@@ -40,8 +40,8 @@ _PLAIN_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+
 class Height(click.ParamType):  # type: ignore[type-arg]  # (generic in recent click, not 8.1)
     """A length the operator gives for the machine to move to, read exactly as a
     :class:`~decimal.Decimal` (``50.1`` stays 50.1, not the float nearest it): a finite
-    number in the digits 0-9 (no ``1_0``, no other script's digits). Whether its digits fit the word format is for the command to say, with the
-    profile in hand."""
+    number in the digits 0-9 (no ``1_0``, no other script's digits). Whether its digits fit
+    the word format is for the command to say, with the profile in hand."""
 
     name = "height"
 
