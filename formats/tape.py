@@ -150,15 +150,19 @@ class TapeEncoder:
     :class:`TapeError` (line and column in the whole text). :attr:`notes` counts what was
     written otherwise than as itself.
 
-    EIA has no CR: CRs next to LF (CR LF, and FANUC's punched LF CR CR) are dropped, the EOB
-    ending the block; a CR with no LF next to it -- a file whose lines end in CR alone -- ends
-    its block, written as EOB, so that no block runs into the next. EIA's ER, the rewind stop
-    a reader stops at, stands for ``%`` only where a line starts with it (FANUC reads the rest
-    of that line as its label); a ``%`` inside a block, as in ``(FEED 50%)``, would stop the
-    reader part-way through the program and is refused, as ``:`` is. A DOS end of file (Ctrl-Z,
-    0x1A), which DOS editors write after the closing ``%``, is no part of the program and has no
-    EIA character: where only blanks follow it, it and they are left off and counted (ISO code
-    carries it as it is, as the sender leaves it behind); with text after it, it is refused."""
+    EIA has no CR: CRs next to LF (CR LF, FANUC's punched LF CR CR, a CR before blanks and the
+    LF) are dropped, the EOB ending the block, and CRs at the very end of the text, ending its
+    last line, are written as EOB. A CR with text after it in its line (a CR inside a line, or
+    a file whose lines end in CR alone) is refused at the CR: tapegate's check splits blocks at
+    LF alone and read the text across it as one block, as a FANUC does, and EIA's only end of
+    block would split that block there (docs/formats.md; the sender refuses the same CR). EIA's
+    ER, the rewind stop a reader stops at, stands for ``%`` only where a line starts with it
+    (FANUC reads the rest of that line as its label); a ``%`` inside a block, as in ``(FEED
+    50%)``, would stop the reader part-way through the program and is refused, as ``:`` is. A
+    DOS end of file (Ctrl-Z, 0x1A), which DOS editors write after the closing ``%``, is no part
+    of the program and has no EIA character: where only blanks follow it, it and they are left
+    off and counted (ISO code carries it as it is, as the sender leaves it behind); with text
+    after it, it is refused."""
 
     def __init__(self, code: Code = "iso", *, file: str | None = None) -> None:
         self.code = code
@@ -166,47 +170,93 @@ class TapeEncoder:
         self.notes = EncodeNotes()
         self._line = 0  # lines before the text not yet encoded
         self._column = 0  # characters of its line before the text not yet encoded
-        # EIA: CRs at the end of a chunk, held (as a count) until the text after them tells
-        # whether an LF is next to them, and whether the run came right after an LF
-        self._held = 0
-        self._run_after_lf = False
-        self._after_lf = False
+        # EIA: a CR met after text in its line, and the CRs and blanks after it, held (as runs
+        # of one character, so that a long run takes no memory) until what follows says what
+        # they are: an LF (a line end, dropped), text (refused, at the first CR), the end of
+        # the text (the last line's end, written as EOB)
+        self._runs: list[tuple[str, int]] = []
+        self._held_at = (0, 0)  # line and column of the first CR held
+        self._bol = True  # nothing of the current line written yet: a CR here follows an LF
         # EIA: the refusal of the DOS end of file met, should text follow it
         self._eof: TapeError | None = None
 
     def feed(self, chunk: str) -> bytes:
         if self.code != "eia":
             return self._encode(chunk)
-        body = chunk.lstrip("\r")
-        lead = len(chunk) - len(body)
-        if lead and not self._held:
-            self._run_after_lf = self._after_lf
-        self._held += lead
-        if not body:
-            return b""
-        out = self._release(self._run_after_lf or body[0] == "\n") if self._held else b""
-        cut = len(body.rstrip("\r"))
-        self._held = len(body) - cut
-        self._run_after_lf = body[cut - 1] == "\n"
-        return out + self._encode(body[:cut])
+        out: list[bytes] = []
+        at, size = 0, len(chunk)
+        while at < size:
+            if self._eof is not None:  # only blanks may follow a DOS end of file
+                out.append(self._encode(chunk[at:]))
+                break
+            if self._runs:
+                end = _CR_OR_BLANK.match(chunk, at).end()  # type: ignore[union-attr]
+                self._hold(chunk[at:end])
+                at = end
+                if at == size:
+                    break
+                if chunk[at] == "\n":  # CR [blanks] LF: the CRs are the line end's
+                    out.append(self._release(False))
+                elif chunk[at] == DOS_EOF:  # the text's end: as at its end
+                    out.append(self._release(True))
+                else:
+                    raise self._inside_line()
+            if self._bol:  # CRs just after an LF (FANUC's LF CR CR) or at the text's start
+                end = _CRS.match(chunk, at).end()  # type: ignore[union-attr]
+                self.notes.cr_by_lf += end - at
+                at = end
+                if at == size:
+                    break
+            cr = chunk.find("\r", at)
+            out.append(self._encode(chunk[at:] if cr < 0 else chunk[at:cr]))
+            if cr < 0:
+                break
+            at = cr
+            if not self._bol:  # a CR after text: held until what follows it is known
+                self._held_at = (self._line + 1, self._column + 1)
+                self._runs = [("\r", 1)]
+                at += 1
+        return b"".join(out)
 
     def finish(self) -> bytes:
-        """The CRs held at the end of the text: line ends, unless an LF was just before."""
-        return self._release(self._run_after_lf) if self._held else b""
+        """The CRs held at the end of the text: its last line's end, written as EOB."""
+        return self._release(True) if self._runs else b""
 
-    def _release(self, by_lf: bool) -> bytes:
-        count, self._held = self._held, 0
-        if self._eof is not None:  # CRs after the DOS end of file
-            self.notes.dos_eof += count
-            return b""
-        if by_lf:
-            self.notes.cr_by_lf += count
-            return b""
-        self.notes.cr_eob += count
-        self._line += count
-        self._column = 0
-        self._after_lf = True
-        return bytes([EIA_EOB]) * count
+    def _hold(self, text: str) -> None:
+        runs = self._runs
+        for char in text:
+            if runs[-1][0] == char:
+                runs[-1] = (char, runs[-1][1] + 1)
+            else:
+                runs.append((char, 1))
+
+    def _release(self, at_end: bool) -> bytes:
+        """The held CRs and blanks: before an LF the CRs are dropped and the blanks kept; at
+        the end of the text every CR is written as EOB."""
+        runs, self._runs = self._runs, []
+        out = []
+        for char, count in runs:
+            if char != "\r":
+                out.append(self._encode(char * count))
+            elif at_end:
+                self.notes.cr_eob += count
+                self._line += count
+                self._column = 0
+                self._bol = True
+                out.append(bytes([EIA_EOB]) * count)
+            else:
+                self.notes.cr_by_lf += count
+        return b"".join(out)
+
+    def _inside_line(self) -> TapeError:
+        line, column = self._held_at
+        return TapeError(
+            "a CR with text after it in its line (a CR inside a line, or lines ending in CR "
+            "alone): tapegate's check splits blocks at LF alone and read the text across it as "
+            "one block, as a FANUC does (its end of block is LF, CR-LF or LF-CR-CR), while EIA "
+            "has no CR and its end of block would split that block here; write the program "
+            "with LF or CR-LF line ends", file=self.file, line=line, column=column, clause="4",
+            code="tape-character")
 
     def _encode(self, text: str) -> bytes:
         if not text:
@@ -224,18 +274,12 @@ class TapeEncoder:
             text = self._before_eof(text)
             if not text:
                 return b""
-        if "\r" in text:
-            before = len(text)
-            text = _CR_BY_LF.sub("\n", text)
-            notes.cr_by_lf += before - len(text)
-            notes.cr_eob += text.count("\r")
-            text = text.replace("\r", "\n")
         bad = _EIA_CANNOT.search(text)
         end = bad.start() if bad else len(text)
         # a '%' inside a block, before that: found by str.find (a program holds few)
         at = text.find("%", 0, end)
         while at >= 0:
-            if text[at - 1] != "\n" if at else self._column:
+            if text[at - 1] != "\n" if at else not self._bol:
                 end = at
                 break
             at = text.find("%", at + 1, end)
@@ -244,7 +288,7 @@ class TapeEncoder:
         body = text.encode("ascii")
         notes.fill += body.count(0) + body.count(0x7F)
         self._advance(text)
-        self._after_lf = text[-1] == "\n"
+        self._bol = text[-1] == "\n"
         return body.translate(_EIA_ENCODE)
 
     def _before_eof(self, text: str) -> str:
@@ -304,7 +348,8 @@ def encode_stream(chunks: Iterable[str], code: Code = "iso", *, leader: int = 0,
 _ISO_CANNOT = re.compile(r"[^\x00-\x7f]")
 DOS_EOF = "\x1a"  # Ctrl-Z, the end of file DOS editors write after the program
 _BLANK_AFTER_EOF = " \t\r\n\x00" + DOS_EOF
-_CR_BY_LF = re.compile(r"\r*\n\r*")
+_CRS = re.compile("\r*")
+_CR_OR_BLANK = re.compile("[\r \t]*")
 
 
 def _cannot(ch: str, code: str, file: str | None, line: int, column: int) -> TapeError:

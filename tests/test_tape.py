@@ -318,13 +318,13 @@ def test_eia_refuses_a_percent_inside_a_block_where_its_er_would_stop_the_reader
 
 
 def test_eia_writes_cr_line_ends_as_eob_and_counts_every_byte_it_does_not_carry():
-    """EIA has no CR: CR next to LF is dropped, a CR line end (no LF) becomes EOB, so that no
-    block of a CR-only file runs into the next; NUL and DEL go on the tape as fill. Each kind
-    is counted, and the same whatever the chunks."""
+    """EIA has no CR: CR next to LF (and before blanks and the LF) is dropped, the CRs ending
+    the text's last line become EOB; NUL and DEL go on the tape as fill. Each kind is counted,
+    and the same whatever the chunks."""
     from formats.tape import EncodeNotes
 
     cases = {
-        "%\rO1\rG0 X1.\r\r%\r": ("%\nO1\nG0 X1.\n\n%\n", EncodeNotes(0, 5, 0)),
+        "%\nO1\nG0 X1.\r \t\nM30\n%\r\r": ("%\nO1\nG0 X1. \t\nM30\n%\n\n", EncodeNotes(1, 2, 0)),
         "%\r\nO1\r\nG0\r\n%\r\n": ("%\nO1\nG0\n%\n", EncodeNotes(4, 0, 0)),
         "X1\n\r\rY2\n": ("X1\nY2\n", EncodeNotes(2, 0, 0)),  # FANUC's LF CR CR
         "G0 X1.\x00\x7f\nM30\r": ("G0 X1.\nM30\n", EncodeNotes(0, 1, 2)),
@@ -346,14 +346,39 @@ def test_eia_writes_cr_line_ends_as_eob_and_counts_every_byte_it_does_not_carry(
     assert notes == EncodeNotes(0, 0, 1)
 
 
+def test_eia_refuses_a_cr_with_text_after_it_in_its_line():
+    """The check splits blocks at LF alone, as a FANUC does, and reads a line across a CR as one
+    block; EIA's end of block, its only way to write a CR, would split that block (a comment
+    left open, then ``) F50.``): refused at the CR, whatever the chunks, as the sender refuses
+    it. A file whose lines end in CR alone is one block to the check, refused the same way."""
+    cases = {
+        "%\nO1\nG1 Z-5. (A B \r) F50.\nM30\n%\n": (3, 14),
+        "%\rO1\rG0 X1.\rM30\r%\r": (1, 2),  # CR-only line ends
+        "%\nG0 X1.\r \rY2.\n": (2, 7),  # blanks between CRs are no line end
+        "%\nM30\r%": (2, 4),  # the last line too: the check reads 'M30 CR %' as one line
+    }
+    for text, place in cases.items():
+        with pytest.raises(TapeError) as info:
+            encode(text, "eia")
+        assert (info.value.line, info.value.column) == place, text
+        assert "CR with text after it in its line" in info.value.message
+        for size in (1, 2, 5):
+            with pytest.raises(TapeError) as info:
+                b"".join(encode_stream([text[i:i + size] for i in range(0, len(text), size)],
+                                       "eia"))
+            assert (info.value.line, info.value.column) == place, (text, size)
+    assert decode(encode(next(iter(cases)), "iso"), "iso").text == next(iter(cases))  # ISO: kept
+
+
 def test_tape_commands_say_what_the_tape_does_not_carry(tmp_path):
     runner = CliRunner()
     source = tmp_path / "t.nc"
-    source.write_bytes(b"%\rO1000\rG00 X10. Y20.\rM30\r%\r")
+    source.write_bytes(b"%\r\nO1000\r\nG00 X10. Y20.\r\nM30\r\n%\r")
     result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(source), "-o",
                                   str(tmp_path / "t.tap")])
     assert result.exit_code == 0
-    assert "5 CR line ends written as EOB" in result.stderr
+    assert "4 CR next to LF not carried" in result.stderr
+    assert "1 CR line ends written as EOB" in result.stderr
     result = runner.invoke(main, ["tape", "decode", str(tmp_path / "t.tap"), "-o",
                                   str(tmp_path / "back.nc")])
     assert result.exit_code == 0 and "EIA code" in result.output
@@ -363,6 +388,11 @@ def test_tape_commands_say_what_the_tape_does_not_carry(tmp_path):
     result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(source), "-o",
                                   str(tmp_path / "t.tap")])
     assert result.exit_code != 0 and "t.nc:2:15:" in result.stderr
+    source.write_bytes(b"%\nO1000\nG1 Z-5. (A B \r) F50.\nM30\n%\n")
+    result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(source), "-o",
+                                  str(tmp_path / "cr.tap")])
+    assert result.exit_code != 0 and "t.nc:3:14: a CR with text after it" in result.stderr
+    assert "Traceback" not in result.stderr and not (tmp_path / "cr.tap").exists()
 
 
 def test_a_short_eia_tape_with_one_damaged_character_is_still_a_tape():
