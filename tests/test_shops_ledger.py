@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from .test_shops import shops_module
+from .test_shops import DOUBTFUL, GAPS, SHOPS, TRUE_ERRORS, needs_shops, shops_module
 
 PROGRAMS = {
     # family, file: the program
@@ -160,6 +160,40 @@ def test_a_ledger_row_it_cannot_read_is_refused(tmp_path, shops, capsys, row, me
 def test_a_program_named_twice_is_refused(tmp_path, shops):
     with pytest.raises(ValueError, match="letter_o.nc has a row already"):
         shops.read_ledger(ledger(tmp_path, [ROWS[1], ROWS[1]]))
+
+
+def test_the_project_s_ledger_reads_and_names_each_program_of_a_set_once(shops):
+    """benchmarks/unseen/ledger.tsv: every row of a set the tsv files list, a class, an
+    evidence; the held files are outside the project, so their counting is not tested here."""
+    unseen = Path(__file__).resolve().parents[1] / "benchmarks" / "unseen"
+    rows = shops.read_ledger(unseen / "ledger.tsv")
+    listed: dict[str, str] = {}
+    for tsv in unseen.glob("held*.tsv"):
+        for line in tsv.read_text(encoding="utf-8").splitlines():
+            if line.strip() and not line.startswith("#"):
+                listed[line.split("\t")[1]] = tsv.stem
+    for row in rows.values():
+        if row.set == "shops":
+            continue
+        assert listed.get(row.program) == row.set, row.program
+        assert row.profile in {p for pair in shops.FAMILY_PROFILES.values() for p in pair}
+
+
+@needs_shops
+def test_the_ledger_classes_every_shops_program_that_does_not_read(shops):
+    """The ledger's shops rows are tests/test_shops.py's lists: P its true errors, D its
+    doubtful ones; no program of the folder is unclassified, and no row is stale."""
+    unseen = Path(__file__).resolve().parents[1] / "benchmarks" / "unseen"
+    rows = shops.read_ledger(unseen / "ledger.tsv")
+    mine = {row.program: row.klass for row in rows.values() if row.set == "shops"}
+    assert {p for p, k in mine.items() if k == "P"} == TRUE_ERRORS
+    assert {p for p, k in mine.items() if k == "D"} == DOUBTFUL
+    assert {p for p, k in mine.items() if k == "T"} == GAPS
+    results = [shops.measure(SHOPS / name, family, profile)
+               for name, family, description in shops.entries(SHOPS)
+               if (profile := shops.profile_for(family, description))]
+    got = shops.ledger_report(results, rows)
+    assert got["unclassified"] == [] and got["stale"] == [] and got["moved"] == []
 
 
 @pytest.mark.parametrize("printed, line", [("a\nb\nX\n", 3), ("a\nb\n", 3), ("a\nX\nc\n", 2)])
