@@ -36,7 +36,7 @@ import os
 import re
 import sys
 from collections import Counter
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, astuple, dataclass, field
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -250,14 +250,28 @@ def percent(part: int, whole: int) -> str:
     return f"{part}/{whole} ({100 * part / whole:.1f} %)" if whole else f"{part}/0"
 
 
-def ledger_report(results: list[Result], ledger: dict[str, LedgerRow]) -> dict:
+@dataclass
+class LedgerReport:
+    tallies: dict[str, Tally]  # by family
+    total: Tally
+    stale: list[LedgerRow]  # rows of programs that read completely
+    unclassified: list[Result]  # programs that do not read and have no row
+    moved: list[tuple[LedgerRow, Result]]  # rows whose first error is no longer theirs
+    listed: list[LedgerRow]  # the D and T rows of programs measured
+    elsewhere: int  # rows of programs not measured in this run
+
+
+def ledger_report(results: list[Result], ledger: dict[str, LedgerRow]) -> LedgerReport:
     """The issue's figure against the ledger: read completely / all, and read completely /
     (all - P - F), by family and in total. A program that reads completely counts as
     complete whatever the ledger says (its row is stale); one that does not read and has no
     row is unclassified and stays in the denominator."""
     tallies: dict[str, Tally] = {}
     total = Tally()
-    stale, unclassified, moved, listed = [], [], [], []
+    stale: list[LedgerRow] = []
+    unclassified: list[Result] = []
+    moved: list[tuple[LedgerRow, Result]] = []
+    listed: list[LedgerRow] = []
     for r in results:
         row = ledger.get(r.name)
         for tally in (tallies.setdefault(r.family, Tally()), total):
@@ -280,44 +294,43 @@ def ledger_report(results: list[Result], ledger: dict[str, LedgerRow]) -> dict:
         if row.klass in ("D", "T"):
             listed.append(row)
     names = {r.name for r in results}
-    return {"tallies": dict(sorted(tallies.items())), "total": total, "stale": stale,
-            "unclassified": unclassified, "moved": moved, "listed": listed,
-            "elsewhere": sum(1 for name in ledger if name not in names)}
+    return LedgerReport(dict(sorted(tallies.items())), total, stale, unclassified, moved, listed,
+                        sum(1 for name in ledger if name not in names))
 
 
-def print_ledger(report: dict, path: Path) -> None:
-    print(f"\nagainst the ledger {path.name} ({report['elsewhere']} of its rows name programs "
+def print_ledger(report: LedgerReport, path: Path) -> None:
+    print(f"\nagainst the ledger {path.name} ({report.elsewhere} of its rows name programs "
           f"not measured here):")
     print(f"{'family':12} {'read completely / all':24} {'/ (all - P - F)':24} "
           f"{'P':>3} {'F':>3} {'D':>3} {'T':>3} {'unclassified':>12}")
-    for family, t in [*report["tallies"].items(), ("total", report["total"])]:
+    for family, t in [*report.tallies.items(), ("total", report.total)]:
         print(f"{family:12} {percent(t.complete, t.programs):24} "
               f"{percent(t.complete, t.counted):24} {t.classes['P']:3} {t.classes['F']:3} "
               f"{t.classes['D']:3} {t.classes['T']:3} {t.unclassified:12}")
-    for row in sorted(report["listed"], key=lambda row: (row.klass, row.set, row.program)):
+    for row in sorted(report.listed, key=lambda row: (row.klass, row.set, row.program)):
         print(f"{row.klass} {row.set:7} {row.program} {row.at} {row.code}\n"
               f"           {row.evidence}")
-    for r in report["unclassified"]:
+    for r in report.unclassified:
         print(f"unclassified: {r.name} ({r.profile}) {r.first_at} {r.first_code}")
-    for row in report["stale"]:
+    for row in report.stale:
         print(f"ledger row stale: {row.program} ({row.set}, {row.klass}) now reads completely")
-    for row, r in report["moved"]:
+    for row, r in report.moved:
         print(f"ledger row moved: {row.program}: the ledger has {row.profile} {row.at} "
               f"{row.code}, now {r.profile} {r.first_at} {r.first_code}")
 
 
-def ledger_json(report: dict) -> dict:
+def ledger_json(report: LedgerReport) -> dict:
     def tally(t: Tally) -> dict:
         return {"programs": t.programs, "complete": t.complete, "counted": t.counted,
                 "classes": dict(t.classes), "unclassified": t.unclassified}
     return {"ledger": {
-        "by_family": {f: tally(t) for f, t in report["tallies"].items()},
-        "total": tally(report["total"]),
-        "listed": [asdict(row) for row in report["listed"]],
-        "unclassified": [r.name for r in report["unclassified"]],
-        "stale": [row.program for row in report["stale"]],
-        "moved": [row.program for row, _ in report["moved"]],
-        "elsewhere": report["elsewhere"]}}
+        "by_family": {f: tally(t) for f, t in report.tallies.items()},
+        "total": tally(report.total),
+        "listed": [dict(zip(LEDGER_COLUMNS, astuple(row), strict=True)) for row in report.listed],
+        "unclassified": [r.name for r in report.unclassified],
+        "stale": [row.program for row in report.stale],
+        "moved": [row.program for row, _ in report.moved],
+        "elsewhere": report.elsewhere}}
 
 
 def main(argv: list[str] | None = None) -> int:

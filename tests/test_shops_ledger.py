@@ -95,7 +95,7 @@ def test_the_first_reading_error_is_named_by_place_and_rule(report):
 
 def test_each_family_is_counted_against_the_ledger(report):
     _, got = report
-    fanuc, haas, total = got["tallies"]["fanuc"], got["tallies"]["haas"], got["total"]
+    fanuc, haas, total = got.tallies["fanuc"], got.tallies["haas"], got.total
     # fanuc: good and stale read; letter_o and colon P; wh D; twopoints unclassified
     assert (fanuc.programs, fanuc.complete, fanuc.counted) == (6, 2, 4)
     assert dict(fanuc.classes) == {"P": 2, "D": 1} and fanuc.unclassified == 1
@@ -107,12 +107,12 @@ def test_each_family_is_counted_against_the_ledger(report):
 
 def test_stale_unclassified_moved_and_listed_rows_are_reported(report):
     _, got = report
-    assert [row.program for row in got["stale"]] == ["stale.nc"]
-    assert [r.name for r in got["unclassified"]] == ["twopoints.nc"]
-    assert [(row.program, r.first_at) for row, r in got["moved"]] == [("apart.nc", "4:2")]
-    assert sorted((row.klass, row.program) for row in got["listed"]) == [
+    assert [row.program for row in got.stale] == ["stale.nc"]
+    assert [r.name for r in got.unclassified] == ["twopoints.nc"]
+    assert [(row.program, r.first_at) for row, r in got.moved] == [("apart.nc", "4:2")]
+    assert sorted((row.klass, row.program) for row in got.listed) == [
         ("D", "wh.nc"), ("T", "apart.nc")]
-    assert got["elsewhere"] == 1
+    assert got.elsewhere == 1
 
 
 def test_the_command_prints_the_issue_s_figure(tmp_path, shops, capsys):
@@ -141,6 +141,9 @@ def test_several_folders_are_counted_as_one_and_json_carries_the_figure(tmp_path
     assert last["total"] == {"programs": 8, "complete": 2, "counted": 5,
                              "classes": {"T": 1, "P": 2, "D": 1, "F": 1}, "unclassified": 1}
     assert last["unclassified"] == ["twopoints.nc"] and last["stale"] == ["stale.nc"]
+    assert sorted((row["class"], row["program"], row["at"]) for row in last["listed"]) == [
+        ("D", "wh.nc", "5:1"), ("T", "apart.nc", "4:9")]
+    assert last["moved"] == ["apart.nc"] and last["elsewhere"] == 1
 
 
 @pytest.mark.parametrize("row, message", [
@@ -193,7 +196,7 @@ def test_the_ledger_classes_every_shops_program_that_does_not_read(shops):
                for name, family, description in shops.entries(SHOPS)
                if (profile := shops.profile_for(family, description))]
     got = shops.ledger_report(results, rows)
-    assert got["unclassified"] == [] and got["stale"] == [] and got["moved"] == []
+    assert got.unclassified == [] and got.stale == [] and got.moved == []
 
 
 @pytest.mark.parametrize("printed, line", [("a\nb\nX\n", 3), ("a\nb\n", 3), ("a\nX\nc\n", 2)])
