@@ -209,3 +209,22 @@ def test_a_reprint_that_differs_is_placed_at_its_first_differing_line(tmp_path, 
     path.write_bytes(b"a\nb\nc\n")
     monkeypatch.setattr(shops, "program_text", lambda read: printed)
     assert shops.first_difference([], path) == line
+
+
+def test_a_block_left_unread_that_no_finding_names_is_placed_at_its_line(tmp_path, shops,
+                                                                          monkeypatch):
+    """The checker names every block the reader left; were one left unnamed, the ledger's
+    place is still its line, with the code 'unread', not a program counted as reading."""
+    class Silent:
+        def __init__(self, *args, **kwargs):
+            pass
+
+        def run(self, blocks):
+            return iter(())
+
+    path = tmp_path / "p.nc"
+    path.write_text(PROGRAMS[("fanuc", "letter_o.nc")], encoding="ascii")
+    monkeypatch.setattr(shops, "Checker", Silent)
+    result = shops.measure(path, "fanuc", "fanuc-mill")
+    assert not result.complete and result.unread == 1
+    assert (result.first_at, result.first_code) == ("4:0", "unread")
