@@ -1,6 +1,7 @@
 """Do the shops' programs read completely on their family's built-in profile?
 
-    .venv/bin/python benchmarks/shops.py [--json] [--shops DIR] [--only NAME-PART]
+    .venv/bin/python benchmarks/shops.py [--json] [--shops DIR ...] [--only NAME-PART]
+                                         [--ledger benchmarks/unseen/ledger.tsv]
 
 Every program of ``shared/corpus/shops`` (beside the project, as for the tests; ``--shops`` or
 ``TAPEGATE_SHOPS`` elsewhere) is read on the built-in profile of the family ``families.tsv``
@@ -15,7 +16,16 @@ reading rule, ``READING``, from the checker as ``tapegate check`` runs it) -- an
 that fires, with its severity and count. The totals at the end are the measure of issue 32;
 docs/benchmarks.md keeps the figures.
 
-Exit code 0 always (a measurement); tests/test_shops.py asserts.
+``--ledger`` names the ledger of the programs that do not read (``benchmarks/unseen/ledger.tsv``:
+set, program, profile, line:column and code of the first reading error, class P/F/D/T, evidence)
+and adds the figure as the issue asks it: read completely / all, and read completely / (all -
+P - F), by family and in total, with the D and T programs listed. A program whose row the ledger
+has but which reads completely counts as complete ("ledger row stale"); one that does not read
+and has no row is "unclassified" and stays in the denominator; a row whose first error is no
+longer where the ledger puts it is "ledger row moved" (counted by its class still). ``--shops``
+given more than once measures every folder, so one run gives the figure over all of them.
+
+Exit code 0 (a measurement: tests/test_shops.py asserts), 2 where the ledger cannot be read.
 """
 
 from __future__ import annotations
@@ -26,7 +36,7 @@ import os
 import re
 import sys
 from collections import Counter
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, astuple, dataclass, field
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -91,6 +101,11 @@ class Result:
     first_reading_error: str = ""
     rules: dict[str, int] = field(default_factory=dict)
     failure: str = ""
+    # the first reading error by place, as the ledger names it: "line:column" and its rule
+    # (a block left unread carries the finding the reader gave it, whatever its severity;
+    # "reprint" where only the reprint differs)
+    first_at: str = ""
+    first_code: str = ""
 
     @property
     def complete(self) -> bool:
@@ -128,6 +143,7 @@ def measure(path: Path, family: str, profile_name: str) -> Result:
         profile = load_profile(profile_name)
     except Exception as exc:  # a profile not built yet: the program is not read
         result.failure = f"profile {profile_name}: {exc}"
+        result.first_at, result.first_code = "0:0", "profile"
         return result
     read = list(parse_stream(Source(str(path)).chunks(), profile.dialect, file=path.name,
                              errors="collect"))
@@ -141,61 +157,248 @@ def measure(path: Path, family: str, profile_name: str) -> Result:
     if bad:
         result.first_unread = f"line {bad[0].line}: {bad[0].error}"
     rules: Counter[str] = Counter()
+    unread_at = {b.line: str(b.error) for b in bad}
+    first: list[tuple[int, int, str]] = []
     for finding in found:
         rules[f"{finding.rule} {finding.severity}"] += 1
         if finding.rule in READING and finding.severity == "error":
             result.reading_errors += 1
+            first.append((finding.line, finding.column, finding.rule))
             if not result.first_reading_error:
                 result.first_reading_error = (f"line {finding.line}: {finding.rule} "
                                               f"{finding.message}")
+        elif finding.message and finding.message in unread_at.get(finding.line, ""):
+            first.append((finding.line, finding.column, finding.rule))
+    # a block left unread that no finding names still counts, at its line
+    named = {line for line, _, _ in first}
+    first += [(line, 0, "unread") for line in unread_at if line not in named]
     result.rules = dict(sorted(rules.items()))
+    if first:
+        line, column, code = min(first)
+        result.first_at, result.first_code = f"{line}:{column}", code
+    elif not result.reprint:
+        result.first_at, result.first_code = f"{first_difference(read, path)}:0", "reprint"
     return result
+
+
+def first_difference(read: list, path: Path) -> int:
+    """The first line where the reprint and the file differ."""
+    printed = program_text(read).encode("utf-8", "surrogateescape").splitlines()
+    written = path.read_bytes().splitlines()
+    for number, (a, b) in enumerate(zip(printed, written, strict=False), 1):
+        if a != b:
+            return number
+    return min(len(printed), len(written)) + 1
+
+
+# -- the ledger: every program that does not read, classed ---------------------------------------
+
+# P: the program's own error (the control alarms; the source in the evidence); F: a form of
+# another control or tool, read by no built-in profile; D: doubtful, no source at hand settles
+# it; T: tapegate's (the commit that fixed it, or "open"). P and F leave the issue's
+# denominator, as the shops folder's measure counts; D and T stay in it.
+CLASSES = ("P", "F", "D", "T")
+LEDGER_COLUMNS = ("set", "program", "profile", "at", "code", "class", "evidence")
+
+
+@dataclass
+class LedgerRow:
+    set: str
+    program: str
+    profile: str
+    at: str
+    code: str
+    klass: str
+    evidence: str
+
+
+def read_ledger(path: Path) -> dict[str, LedgerRow]:
+    """The ledger's rows by program; a malformed row, an unknown class or a program named
+    twice is an error (a ledger that silently loses a row would count its program wrongly)."""
+    rows: dict[str, LedgerRow] = {}
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        cells = line.split("\t")
+        if len(cells) != len(LEDGER_COLUMNS) or not all(c.strip() for c in cells):
+            raise ValueError(f"{path}:{number}: {len(LEDGER_COLUMNS)} cells, none empty, "
+                             f"expected ({', '.join(LEDGER_COLUMNS)})")
+        row = LedgerRow(*cells)
+        if row.klass not in CLASSES:
+            raise ValueError(f"{path}:{number}: class {row.klass!r} is none of {CLASSES}")
+        if row.program in rows:
+            raise ValueError(f"{path}:{number}: {row.program} has a row already")
+        rows[row.program] = row
+    return rows
+
+
+@dataclass
+class Tally:
+    """One family's (or the total's) counts against the ledger."""
+    programs: int = 0
+    complete: int = 0
+    classes: Counter[str] = field(default_factory=Counter)
+    unclassified: int = 0
+
+    @property
+    def counted(self) -> int:
+        """The issue's denominator: every program but the P and F ones."""
+        return self.programs - self.classes["P"] - self.classes["F"]
+
+
+def percent(part: int, whole: int) -> str:
+    return f"{part}/{whole} ({100 * part / whole:.1f} %)" if whole else f"{part}/0"
+
+
+@dataclass
+class LedgerReport:
+    tallies: dict[str, Tally]  # by family
+    total: Tally
+    stale: list[LedgerRow]  # rows of programs that read completely
+    unclassified: list[Result]  # programs that do not read and have no row
+    moved: list[tuple[LedgerRow, Result]]  # rows whose first error is no longer theirs
+    listed: list[LedgerRow]  # the D and T rows of programs measured
+    elsewhere: int  # rows of programs not measured in this run
+
+
+def ledger_report(results: list[Result], ledger: dict[str, LedgerRow]) -> LedgerReport:
+    """The issue's figure against the ledger: read completely / all, and read completely /
+    (all - P - F), by family and in total. A program that reads completely counts as
+    complete whatever the ledger says (its row is stale); one that does not read and has no
+    row is unclassified and stays in the denominator."""
+    tallies: dict[str, Tally] = {}
+    total = Tally()
+    stale: list[LedgerRow] = []
+    unclassified: list[Result] = []
+    moved: list[tuple[LedgerRow, Result]] = []
+    listed: list[LedgerRow] = []
+    for r in results:
+        row = ledger.get(r.name)
+        for tally in (tallies.setdefault(r.family, Tally()), total):
+            tally.programs += 1
+            if r.complete:
+                tally.complete += 1
+            elif row is None:
+                tally.unclassified += 1
+            else:
+                tally.classes[row.klass] += 1
+        if r.complete:
+            if row is not None:
+                stale.append(row)
+            continue
+        if row is None:
+            unclassified.append(r)
+            continue
+        if (row.at, row.code, row.profile) != (r.first_at, r.first_code, r.profile):
+            moved.append((row, r))
+        if row.klass in ("D", "T"):
+            listed.append(row)
+    names = {r.name for r in results}
+    return LedgerReport(dict(sorted(tallies.items())), total, stale, unclassified, moved, listed,
+                        sum(1 for name in ledger if name not in names))
+
+
+def print_ledger(report: LedgerReport, path: Path) -> None:
+    print(f"\nagainst the ledger {path.name} ({report.elsewhere} of its rows name programs "
+          f"not measured here):")
+    print(f"{'family':12} {'read completely / all':24} {'/ (all - P - F)':24} "
+          f"{'P':>3} {'F':>3} {'D':>3} {'T':>3} {'unclassified':>12}")
+    for family, t in [*report.tallies.items(), ("total", report.total)]:
+        print(f"{family:12} {percent(t.complete, t.programs):24} "
+              f"{percent(t.complete, t.counted):24} {t.classes['P']:3} {t.classes['F']:3} "
+              f"{t.classes['D']:3} {t.classes['T']:3} {t.unclassified:12}")
+    for row in sorted(report.listed, key=lambda row: (row.klass, row.set, row.program)):
+        print(f"{row.klass} {row.set:7} {row.program} {row.at} {row.code}\n"
+              f"           {row.evidence}")
+    for r in report.unclassified:
+        print(f"unclassified: {r.name} ({r.profile}) {r.first_at} {r.first_code}")
+    for row in report.stale:
+        print(f"ledger row stale: {row.program} ({row.set}, {row.klass}) now reads completely")
+    for row, r in report.moved:
+        print(f"ledger row moved: {row.program}: the ledger has {row.profile} {row.at} "
+              f"{row.code}, now {r.profile} {r.first_at} {r.first_code}")
+
+
+def ledger_json(report: LedgerReport) -> dict:
+    def tally(t: Tally) -> dict:
+        return {"programs": t.programs, "complete": t.complete, "counted": t.counted,
+                "classes": dict(t.classes), "unclassified": t.unclassified}
+    return {"ledger": {
+        "by_family": {f: tally(t) for f, t in report.tallies.items()},
+        "total": tally(report.total),
+        "listed": [dict(zip(LEDGER_COLUMNS, astuple(row), strict=True)) for row in report.listed],
+        "unclassified": [r.name for r in report.unclassified],
+        "stale": [row.program for row in report.stale],
+        "moved": [row.program for row, _ in report.moved],
+        "elsewhere": report.elsewhere}}
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--json", action="store_true", help="one JSON object per program")
-    parser.add_argument("--shops", type=Path, default=SHOPS)
+    parser.add_argument("--shops", type=Path, action="append",
+                        help="a folder with families.tsv (again for several; default the "
+                             "shops folder)")
     parser.add_argument("--only", help="only files whose name holds this")
+    parser.add_argument("--ledger", type=Path,
+                        help="benchmarks/unseen/ledger.tsv: the issue's figure against it")
     args = parser.parse_args(argv)
-    if not (args.shops / "families.tsv").is_file():
-        print(f"no families.tsv in {args.shops}", file=sys.stderr)
-        return 0
+    folders = args.shops or [SHOPS]
+    try:
+        ledger = read_ledger(args.ledger) if args.ledger else None
+    except (OSError, ValueError) as exc:
+        print(f"ledger: {exc}", file=sys.stderr)
+        return 2
     results, unknown = [], []
-    for name, family, description in entries(args.shops):
-        if args.only and args.only not in name:
-            continue
-        profile = profile_for(family, description)
-        if profile is None:
-            unknown.append(name)
-            continue
-        result = measure(args.shops / name, family, profile)
-        results.append(result)
-        if args.json:
-            print(json.dumps({**asdict(result), "complete": result.complete}))
-        else:
-            state = "complete" if result.complete else "INCOMPLETE"
-            print(f"{state:10} {profile:15} {name}")
-            if not result.reprint:
-                print("           reprint differs")
-            for text in (result.failure, result.first_unread, result.first_reading_error):
-                if text:
-                    print(f"           {text}")
-            errors = [f"{r.split()[0]}x{n}" for r, n in result.rules.items() if r.endswith("error")]
-            if errors:
-                print(f"           errors: {' '.join(errors)}")
+    for folder in folders:
+        if not (folder / "families.tsv").is_file():
+            print(f"no families.tsv in {folder}", file=sys.stderr)
+            return 0
+        for name, family, description in entries(folder):
+            if args.only and args.only not in name:
+                continue
+            profile = profile_for(family, description)
+            if profile is None:
+                unknown.append(name)
+                continue
+            result = measure(folder / name, family, profile)
+            results.append(result)
+            if args.json:
+                print(json.dumps({**asdict(result), "complete": result.complete}))
+            else:
+                print_result(result)
     complete = sum(r.complete for r in results)
     by_family = Counter(r.family for r in results)
     done = Counter(r.family for r in results if r.complete)
     summary = {f: f"{done[f]}/{n}" for f, n in sorted(by_family.items())}
+    report = ledger_report(results, ledger) if ledger is not None else None
     if args.json:
         print(json.dumps({"complete": complete, "programs": len(results),
                           "by_family": summary, "unknown_family": len(unknown)}))
+        if report is not None:
+            print(json.dumps(ledger_json(report)))
     else:
         print(f"\n{complete} of {len(results)} programs read completely "
               f"({', '.join(f'{f} {s}' for f, s in summary.items())}); "
               f"{len(unknown)} of unknown family not read")
+        if report is not None:
+            print_ledger(report, args.ledger)
     return 0
+
+
+def print_result(result: Result) -> None:
+    state = "complete" if result.complete else "INCOMPLETE"
+    print(f"{state:10} {result.profile:15} {result.name}")
+    if not result.reprint:
+        print("           reprint differs")
+    for text in (result.failure, result.first_unread, result.first_reading_error):
+        if text:
+            print(f"           {text}")
+    if not result.complete:
+        print(f"           first: {result.first_at} {result.first_code}")
+    errors = [f"{r.split()[0]}x{n}" for r, n in result.rules.items() if r.endswith("error")]
+    if errors:
+        print(f"           errors: {' '.join(errors)}")
 
 
 if __name__ == "__main__":

@@ -29,7 +29,8 @@ def test_every_row_names_a_commit_and_a_file_name_no_other_row_uses():
     """--union puts every set's files in one folder: a name used twice would lose a program."""
     module = assemble_module()
     names = []
-    for tsv in sorted(module.UNSEEN.glob("*.tsv")):
+    # every set's rows; ledger.tsv, beside them, classes programs and is no set
+    for tsv in sorted(t for t in module.UNSEEN.glob("*.tsv") if t.name != "ledger.tsv"):
         for row in module.rows(tsv.stem):
             assert len(row) == 6, (tsv.name, row[:2])
             family, file, repository, commit, path, _ = row
