@@ -1094,3 +1094,21 @@ def test_a_sequence_number_past_five_digits_follows_the_control_s_documents(
         assert "1 to 99999" in hits[0].message and "PS0003" in hits[0].message
     else:
         assert "B-63684EN" not in hits[0].message
+
+
+# -- Fanuc and Haas: IF [..] THEN over several blocks (issue 32, held3 O9100), not read ---------
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_the_block_form_of_if_then_is_refused_at_else_and_endif(profile):
+    """No Fanuc or Haas source at hand gives IF [..] THEN with its statements on the blocks
+    after it, closed by ELSE and ENDIF: refused at those words, saying so; the one-block form
+    IF [..] THEN statement reads."""
+    one = "%\nO0001\n#1 = 2.\nIF [#1 GT 0] THEN #2 = 1.\nM30\n%\n"
+    assert not errors(one, profile)
+    block = ("%\nO0001\n#1 = 2.\nIF [#1 GT 0] AND [#1 LT 5] THEN\n#2 = 1.\nELSE\n#2 = 0.\n"
+             "ENDIF\nM30\n%\n")
+    hits = [f for f in check_text(block, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 6, 1), ("TG100", 8, 1)]
+    assert hits[0].message.startswith("'ELSE' is not read: an IF [..] THEN over several blocks")
+    assert hits[1].message.startswith("'ENDIF' is not read")
