@@ -1112,3 +1112,18 @@ def test_the_block_form_of_if_then_is_refused_at_else_and_endif(profile):
     assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 6, 1), ("TG100", 8, 1)]
     assert hits[0].message.startswith("'ELSE' is not read: an IF [..] THEN over several blocks")
     assert hits[1].message.startswith("'ENDIF' is not read")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "haas-mill"])
+def test_go_before_an_address_is_the_letter_o_for_g0_s_zero(profile):
+    """`GO Y0.` (held3's hand-typed lathe program, 1003.NC): no block number follows, so it
+    is no GOTO, abbreviated or not; the letter O stands for G0's zero, the program's error as
+    `GOO` and `TO303` are. `GO10` is still refused as an abbreviation of GOTO."""
+    text = "%\nO0001\nG21 G00 X20. Z2.\nGO Z0.\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, 1)]
+    assert hits[0].message.startswith("'GO' is neither G0 nor GOTO")
+    jump = "%\nO0001\nGO10\nN10 G21 G00 X20. Z2.\nM30\n%\n"
+    hits = [f for f in check_text(jump, load_profile(profile)) if f.severity == "error"]
+    assert [(f.line, f.message.split(":")[0]) for f in hits] == [(3, "'GO' is not read as GOTO")]
+    assert not errors(text.replace("GO Z0.", "G0 Z0."), profile)

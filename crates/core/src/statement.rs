@@ -518,6 +518,25 @@ fn macro_b<'a>(
                 .iter()
                 .find(|w| w.len() > name.len() && w.starts_with(&name))
             {
+                // `GO Y0.` (a lathe program typed by hand): no block number follows, so no
+                // GOTO however written; a G with the letter O for its zero, the class of `GOO`
+                // and `TO303` (the word reader's "found 'O'"), said so
+                let next = line.get(skip_blanks(line, end));
+                if name == b"GO"
+                    && !next.is_some_and(|&c| c.is_ascii_digit() || c == b'#' || c == b'[')
+                {
+                    return Err(err(
+                        ErrorKind::Value,
+                        format!(
+                            "'{}' is neither G0 nor GOTO: G takes digits, and the letter O \
+                             stands where a zero belongs (G0), or a GOTO has no block number \
+                             after it",
+                            String::from_utf8_lossy(&line[pos..end])
+                        ),
+                        pos,
+                        "6.4.7",
+                    ));
+                }
                 return Err(err(
                     ErrorKind::Value,
                     format!(
@@ -2542,6 +2561,15 @@ mod tests {
         abbreviation("GO10", "GO", "GOTO");
         abbreviation("EN1", "EN", "END");
         abbreviation("DP[X#1]", "DP", "DPRNT");
+        abbreviation("GO #5", "GO", "GOTO");
+        // GO with no block number after it is no GOTO: the letter O for G0's zero
+        for text in ["GO Y0.", "GO X20. Z2.", "GO"] {
+            let e = read(text, m).unwrap_err();
+            assert!(
+                e.starts_with("'GO' is neither G0 nor GOTO") && e.ends_with("@0"),
+                "{text}: {e}"
+            );
+        }
         // the block form's closing words: refused at the word, saying why
         for (text, word) in [
             ("ENDIF", "ENDIF"),
