@@ -1043,3 +1043,87 @@ def test_the_haas_saved_offsets_after_m97_local_subroutines() -> None:
     said = [f for f in check_text(text, load_profile("haas-mill")) if f.severity != "info"]
     assert [(f.rule, f.line) for f in said] == [("TG205", 8)]
     assert "heads the offsets a Haas saves" in said[0].message
+
+
+# -- Fanuc and Haas: a macro function's argument in parentheses (issue 32, held3 O9998) -------
+
+
+ABS_PROGRAM = """%
+O0001
+#1 = 5.
+#2 = ABS{open}#1 - 7.{close}
+G21 G00 X#2 Z0
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe"])
+def test_a_macro_function_takes_its_argument_in_brackets(profile):
+    """Brackets enclose an expression and parentheses a comment (FANUC Series 16/18-C lathe
+    Operator's Manual, 16.3, p. 287; Haas 96-8000, "Expressions"): `ABS(#1 - 7.)` leaves ABS
+    with no argument, the program's error, named so; `ABS[#1 - 7.]` reads."""
+    assert not errors(ABS_PROGRAM.format(open="[", close="]"), profile)
+    text = ABS_PROGRAM.format(open="(", close=")")
+    hits = [f for f in check_text(text, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, 6)]
+    assert "function ABS takes its argument in brackets" in hits[0].message
+    # a '(' grouping an operand: the same reading
+    grouped = "%\nO0001\n#1 = 5.\n#2 = 2. * (#1 - 7.)\nM30\n%\n"
+    hits = [f for f in check_text(grouped, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, 11)]
+    assert "brackets group an expression" in hits[0].message
+
+
+# -- Fanuc: a sequence number past N99999 (issue 32 item 3, held11 SabirHusnain) --------------
+
+
+@pytest.mark.parametrize("profile, rule, severity", [
+    ("fanuc-mill", "TG205", "error"),     # N1 to N99999 (B-63684EN), PS0003 past it
+    ("haas-mill", "TG208", "warning"),    # no Haas alarm documented
+])
+def test_a_sequence_number_past_five_digits_follows_the_control_s_documents(
+        profile, rule, severity):
+    fine = "%\nO0001\nN99999 G21 G90 G00 X0 Y0\nM30\n%\n"
+    assert not [f for f in check_text(fine, load_profile(profile))
+                if f.rule in ("TG205", "TG208")]
+    long = fine.replace("N99999", "N100000")
+    hits = [f for f in check_text(long, load_profile(profile)) if f.rule in ("TG205", "TG208")]
+    assert [(f.rule, f.severity, f.line, f.column) for f in hits] == [(rule, severity, 3, 1)]
+    if profile.startswith("fanuc"):
+        assert "1 to 99999" in hits[0].message and "PS0003" in hits[0].message
+    else:
+        assert "B-63684EN" not in hits[0].message
+
+
+# -- Fanuc and Haas: IF [..] THEN over several blocks (issue 32, held3 O9100), not read ---------
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_the_block_form_of_if_then_is_refused_at_else_and_endif(profile):
+    """No Fanuc or Haas source at hand gives IF [..] THEN with its statements on the blocks
+    after it, closed by ELSE and ENDIF: refused at those words, saying so; the one-block form
+    IF [..] THEN statement reads."""
+    one = "%\nO0001\n#1 = 2.\nIF [#1 GT 0] THEN #2 = 1.\nM30\n%\n"
+    assert not errors(one, profile)
+    block = ("%\nO0001\n#1 = 2.\nIF [#1 GT 0] AND [#1 LT 5] THEN\n#2 = 1.\nELSE\n#2 = 0.\n"
+             "ENDIF\nM30\n%\n")
+    hits = [f for f in check_text(block, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 6, 1), ("TG100", 8, 1)]
+    assert hits[0].message.startswith("'ELSE' is not read: an IF [..] THEN over several blocks")
+    assert hits[1].message.startswith("'ENDIF' is not read")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "haas-mill"])
+def test_go_before_an_address_is_the_letter_o_for_g0_s_zero(profile):
+    """`GO Y0.` (held3's hand-typed lathe program, 1003.NC): no block number follows, so it
+    is no GOTO, abbreviated or not; the letter O stands for G0's zero, the program's error as
+    `GOO` and `TO303` are. `GO10` is still refused as an abbreviation of GOTO."""
+    text = "%\nO0001\nG21 G00 X20. Z2.\nGO Z0.\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, 1)]
+    assert hits[0].message.startswith("'GO' is neither G0 nor GOTO")
+    jump = "%\nO0001\nGO10\nN10 G21 G00 X20. Z2.\nM30\n%\n"
+    hits = [f for f in check_text(jump, load_profile(profile)) if f.severity == "error"]
+    assert [(f.line, f.message.split(":")[0]) for f in hits] == [(3, "'GO' is not read as GOTO")]
+    assert not errors(text.replace("GO Z0.", "G0 Z0."), profile)

@@ -412,8 +412,50 @@ impl Scanner<'_> {
                 }
                 return self.group(open, depth);
             }
+            if let Some(e) = self.function_with_parenthesis(p, end, open) {
+                return Err(Box::new(e));
+            }
+        }
+        if b == b'(' && self.syntax.macros && !self.syntax.named {
+            // `#104 = #103 - (#101 - 1) * 2`: the same source as the function's case
+            return Err(Box::new(error(
+                "'(' where an operand should stand: on a FANUC or Haas '(' opens a comment, \
+                 and brackets group an expression, [...] (FANUC Series 16/18-C lathe \
+                 Operator's Manual, 16.3, p. 287)"
+                    .into(),
+                p,
+            )));
         }
         Err(Box::new(found(line, p)))
+    }
+
+    /// Custom Macro B (FANUC, Haas): a function whose argument is written in parentheses,
+    /// `ABS(#26 - #13)`, as other languages write it. On these controls brackets enclose an
+    /// expression and a function's argument, and `(` opens a comment (FANUC Series
+    /// 16/18/160/180-Model C for Lathe Operator's Manual, 16.3 "Arithmetic and logic
+    /// operation", "Brackets", p. 287; Haas Mill Operator's Manual 96-8000, June 1999,
+    /// "Macros", "Expressions": square brackets), so the control meets the function with no
+    /// argument: the program's error, named as such rather than as an unknown operand. The
+    /// function's letters run from `p` to `end`, and `open` is the first byte after them and
+    /// any blanks.
+    fn function_with_parenthesis(&self, p: usize, end: usize, open: usize) -> Option<LexError> {
+        if !self.syntax.macros || self.syntax.named || self.line.get(open) != Some(&b'(') {
+            return None;
+        }
+        let name = &self.line[p..end];
+        if !self.function(name) {
+            return None;
+        }
+        let name = String::from_utf8_lossy(name).to_ascii_uppercase();
+        Some(error(
+            format!(
+                "function {name} takes its argument in brackets, {name}[...]: on a FANUC or \
+                 Haas '(' opens a comment, so the control reads {name} with no argument \
+                 (brackets enclose an expression, parentheses a comment: FANUC Series 16/18-C \
+                 lathe Operator's Manual, 16.3, p. 287)"
+            ),
+            p,
+        ))
     }
 
     /// `#[expr]` (a parameter chosen by number) and LinuxCNC's `#<name>`: its end, or None
@@ -2567,6 +2609,47 @@ mod tests {
         assert!(group("[#20NEFOO[#20]]", MACRO).is_err());
         assert!(group("[#20NEX]", MACRO).is_err());
         assert!(group("[#20NEFIX[#20]]", ALL).is_err()); // no word operators there
+    }
+
+    #[test]
+    fn a_macro_function_with_its_argument_in_parentheses_is_the_programs_error() {
+        // `ABS(#26 - #13)`: '(' opens a comment on a FANUC or Haas, so ABS has no argument
+        for text in ["ABS(#26 - #13)", "SQRT (#1)", "[1 + round(#2)]"] {
+            let e = if text.starts_with('[') {
+                group(
+                    text,
+                    Syntax {
+                        lowercase: true,
+                        ..MACRO
+                    },
+                )
+            } else {
+                end(text, MACRO)
+            }
+            .unwrap_err();
+            assert!(e.contains("takes its argument in brackets"), "{text}: {e}");
+            assert!(e.contains("16.3, p. 287"), "{text}: {e}");
+        }
+        let e = end("ABS(#1)", MACRO).unwrap_err();
+        assert!(e.starts_with("function ABS ") && e.ends_with("@0"), "{e}");
+        // the argument in brackets reads, as before
+        assert_eq!(end("ABS[#26 - #13]", MACRO), Ok(14));
+        // no function's name before '(': the error stays the general one
+        let e = end("FOO(#1)", MACRO).unwrap_err();
+        assert!(e.contains("expected a number or parameter"), "{e}");
+        // a '(' where an operand stands: the same reading, the grouping written wrong
+        let e = end("#103 - (#101 - 1) * 2", MACRO).unwrap_err();
+        assert!(
+            e.contains("brackets group an expression") && e.ends_with("@7"),
+            "{e}"
+        );
+        // LinuxCNC and the ISO-like dialects are not Macro B: unchanged
+        for syntax in [LINUXCNC, ALL] {
+            for text in ["ABS(#1)", "#1 - (#2)"] {
+                let e = end(text, syntax).unwrap_err();
+                assert!(e.contains("expected a number or parameter"), "{e}");
+            }
+        }
     }
 
     fn end(text: &str, syntax: Syntax) -> Result<usize, String> {

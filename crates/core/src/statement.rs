@@ -490,6 +490,25 @@ fn macro_b<'a>(
             }
         }
         b"POPEN" | b"PCLOS" => digits_end(line, end),
+        // IF [..] THEN on a block of its own, the statements on the blocks after it, then
+        // ELSE and ENDIF (a probing macro written for a FANUC): the macro chapters at hand
+        // give IF [..] GOTO n and IF [..] THEN with its one statement in the same block, and
+        // no block form; what a control does at ELSE or ENDIF (an alarm, or the branch run
+        // or skipped) none of them says (docs/dialects.md says what was searched). Refused at
+        // the word, and said so, where the word reader would only say that E wants a number.
+        b"ELSE" | b"ENDIF" => {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "'{}' is not read: an IF [..] THEN over several blocks closed by ELSE and \
+                     ENDIF is in no Fanuc or Haas source at hand, which give IF [..] GOTO n \
+                     and IF [..] THEN with its one statement in the block (docs/dialects.md)",
+                    String::from_utf8_lossy(&line[pos..end])
+                ),
+                pos,
+                "6.4.7",
+            ));
+        }
         _ => {
             // WH[..]DO1, GO10: the first letters of a macro word. A Fanuc 0i-MD macro writes
             // them, but none of the sources at hand documents that a control reads them
@@ -499,6 +518,25 @@ fn macro_b<'a>(
                 .iter()
                 .find(|w| w.len() > name.len() && w.starts_with(&name))
             {
+                // `GO Y0.` (a lathe program typed by hand): no block number follows, so no
+                // GOTO however written; a G with the letter O for its zero, the class of `GOO`
+                // and `TO303` (the word reader's "found 'O'"), said so
+                let next = line.get(skip_blanks(line, end));
+                if name == b"GO"
+                    && !next.is_some_and(|&c| c.is_ascii_digit() || c == b'#' || c == b'[')
+                {
+                    return Err(err(
+                        ErrorKind::Value,
+                        format!(
+                            "'{}' is neither G0 nor GOTO: G takes digits, and the letter O \
+                             stands where a zero belongs (G0), or a GOTO has no block number \
+                             after it",
+                            String::from_utf8_lossy(&line[pos..end])
+                        ),
+                        pos,
+                        "6.4.7",
+                    ));
+                }
                 return Err(err(
                     ErrorKind::Value,
                     format!(
@@ -2523,6 +2561,36 @@ mod tests {
         abbreviation("GO10", "GO", "GOTO");
         abbreviation("EN1", "EN", "END");
         abbreviation("DP[X#1]", "DP", "DPRNT");
+        abbreviation("GO #5", "GO", "GOTO");
+        // GO with no block number after it is no GOTO: the letter O for G0's zero
+        for text in ["GO Y0.", "GO X20. Z2.", "GO"] {
+            let e = read(text, m).unwrap_err();
+            assert!(
+                e.starts_with("'GO' is neither G0 nor GOTO") && e.ends_with("@0"),
+                "{text}: {e}"
+            );
+        }
+        // the block form's closing words: refused at the word, saying why
+        for (text, word) in [
+            ("ENDIF", "ENDIF"),
+            ("ELSE", "ELSE"),
+            ("  ENDIF (Q1)", "ENDIF"),
+        ] {
+            let e = read(text, m).unwrap_err();
+            let at = format!("@{}", text.find(word).unwrap());
+            assert!(
+                e.starts_with(&format!(
+                    "'{word}' is not read: an IF [..] THEN over several"
+                )) && e.ends_with(&at),
+                "{text}: {e}"
+            );
+        }
+        // END1 is still the loop's end, and IF [..] THEN one statement reads
+        assert_eq!(statements("END1", m), [("END1".to_string(), Kind::Flow)]);
+        assert_eq!(
+            statements("IF [#1 GT 0] THEN #2 = 1", m),
+            [("IF [#1 GT 0] THEN #2 = 1".to_string(), Kind::Flow)]
+        );
         // the words in full read; other letter pairs are left to the word reader
         assert_eq!(
             statements("WHILE[[#1GE#2]AND[#3GE#7]]DO1", m),

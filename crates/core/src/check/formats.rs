@@ -761,6 +761,19 @@ impl Checker {
                          the control gives the offsets it saves after a program's end \
                          (Setting 156; {source}), not a program's own number (docs/dialects.md)"
                     ));
+                } else if w.letter == b'N'
+                    && naming.is_none()
+                    && self.config.family == Family::MacroB
+                    && !self.config.haas
+                {
+                    // a CAM post numbering past N99999 (Fusion 360: 15,177 such blocks in one
+                    // program): the manual's range and the alarm, so the error is sourced
+                    message.push_str(
+                        ": a FANUC sequence number is N and at most five digits, 1 to 99999 \
+                         (Series 16i/18i/160i/180i-PB Operator's Manual, B-63684EN, 13 \
+                         \"Program configuration\", p. 129), and a word with more digits than its \
+                         address holds is alarm PS0003, too many digits",
+                    );
                 } else if w.letter == b'O' && self.config.haas {
                     message.push_str(
                         ": a Haas program number is O and five digits (Mill Operator's Manual, \
@@ -1110,6 +1123,17 @@ mod tests {
             "{}",
             found[0].message
         );
+        // N100000 itself on a FANUC: an error naming the manual's range and the alarm
+        let found = findings(alarm(), &program("N100000 G00 X1."), Rule::DigitOverflow);
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.contains("1 to 99999")
+                && found[0].message.contains("B-63684EN")
+                && found[0].message.ends_with("PS0003, too many digits"),
+            "{}",
+            found[0].message
+        );
+        assert!(findings(alarm(), &program("N99999 G00 X1."), Rule::DigitOverflow).is_empty());
         // where the control says nothing of a longer sequence number (a Haas), what N is
         let haas = || lathe(PastFormat::Unknown);
         assert_eq!(at(haas(), cycle, Rule::DigitOverflow), []);
