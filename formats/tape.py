@@ -120,7 +120,9 @@ class EncodeNotes(Record):
     """What an encoding changed without refusing, counted so that the command can say it: every
     byte of the text comes back from the tape, or is named here."""
 
-    cr_by_lf: int = 0  # CR next to LF dropped (EIA: its EOB alone ends the block)
+    # CR next to LF, and blanks after a line end's CR, dropped (EIA: its EOB alone ends the
+    # block; the blanks are no text, as the sender leaves them)
+    cr_by_lf: int = 0
     cr_eob: int = 0  # CR line ends (no LF next to them) written as EOB (EIA)
     fill: int = 0  # NUL and DEL written as tape fill, which decoding removes
     dos_eof: int = 0  # (EIA) a DOS end of file (Ctrl-Z) ending the text, and blanks after it
@@ -133,8 +135,8 @@ class EncodeNotes(Record):
         """One sentence per kind of change, for standard error."""
         out = []
         if self.cr_by_lf:
-            out.append(f"{self.cr_by_lf} CR next to LF not carried: EIA's EOB alone ends a "
-                       "block (decoding gives LF)")
+            out.append(f"{self.cr_by_lf} CR next to LF (or blank after a line end's CR) not "
+                       "carried: EIA's EOB alone ends a block (decoding gives LF)")
         if self.cr_eob:
             out.append(f"{self.cr_eob} CR line ends written as EOB (decoding gives LF)")
         if self.fill:
@@ -170,15 +172,18 @@ class TapeEncoder:
         self.notes = EncodeNotes()
         self._line = 0  # lines before the text not yet encoded
         self._column = 0  # characters of its line before the text not yet encoded
-        # EIA: a CR met after text in its line, and the CRs and blanks after it, held (as runs
-        # of one character, so that a long run takes no memory) until what follows says what
-        # they are: an LF (a line end, dropped), text (refused, at the first CR), the end of
-        # the text (the last line's end, written as EOB)
-        self._runs: list[tuple[str, int]] = []
+        # EIA: a CR met after text in its line, and the CRs and blanks after it, held (as
+        # counts: a run of any length takes no memory) until what follows says what they are:
+        # an LF (the line's end: dropped), text (refused, at the first CR), the end of the text
+        # or a DOS end of file (the last line's end: its CRs written as EOB)
+        self._held_cr = 0
+        self._held_blank = 0
         self._held_at = (0, 0)  # line and column of the first CR held
         self._bol = True  # nothing of the current line written yet: a CR here follows an LF
-        # EIA: the refusal of the DOS end of file met, should text follow it
+        # EIA: the refusal of the DOS end of file met, should text follow it; where held CRs
+        # came just before it, text after it makes them CRs inside a line, refused as such
         self._eof: TapeError | None = None
+        self._cr_before_eof: TapeError | None = None
 
     def feed(self, chunk: str) -> bytes:
         if self.code != "eia":
@@ -189,21 +194,25 @@ class TapeEncoder:
             if self._eof is not None:  # only blanks may follow a DOS end of file
                 out.append(self._encode(chunk[at:]))
                 break
-            if self._runs:
+            if self._held_cr:
                 end = _CR_OR_BLANK.match(chunk, at).end()  # type: ignore[union-attr]
-                self._hold(chunk[at:end])
+                crs = chunk.count("\r", at, end)
+                self._held_cr += crs
+                self._held_blank += end - at - crs
                 at = end
                 if at == size:
                     break
-                if chunk[at] == "\n":  # CR [blanks] LF: the CRs are the line end's
-                    out.append(self._release(False))
-                elif chunk[at] == DOS_EOF:  # the text's end: as at its end
+                if chunk[at] == "\n":  # CR [blanks] LF: the line's end, not carried
+                    self._release(False)
+                elif chunk[at] == DOS_EOF:  # the text's end, if only blanks follow it
+                    self._cr_before_eof = self._inside_line()
                     out.append(self._release(True))
                 else:
                     raise self._inside_line()
             if self._bol:  # CRs just after an LF (FANUC's LF CR CR) or at the text's start
                 end = _CRS.match(chunk, at).end()  # type: ignore[union-attr]
                 self.notes.cr_by_lf += end - at
+                self._column += end - at  # columns count them, as the check's and send's do
                 at = end
                 if at == size:
                     break
@@ -211,42 +220,35 @@ class TapeEncoder:
             out.append(self._encode(chunk[at:] if cr < 0 else chunk[at:cr]))
             if cr < 0:
                 break
+            if self._eof is not None:  # a DOS end of file before the CR: blanks after it
+                out.append(self._encode(chunk[cr:]))
+                break
             at = cr
             if not self._bol:  # a CR after text: held until what follows it is known
                 self._held_at = (self._line + 1, self._column + 1)
-                self._runs = [("\r", 1)]
+                self._held_cr = 1
                 at += 1
         return b"".join(out)
 
     def finish(self) -> bytes:
         """The CRs held at the end of the text: its last line's end, written as EOB."""
-        return self._release(True) if self._runs else b""
-
-    def _hold(self, text: str) -> None:
-        runs = self._runs
-        for char in text:
-            if runs[-1][0] == char:
-                runs[-1] = (char, runs[-1][1] + 1)
-            else:
-                runs.append((char, 1))
+        return self._release(True) if self._held_cr else b""
 
     def _release(self, at_end: bool) -> bytes:
-        """The held CRs and blanks: before an LF the CRs are dropped and the blanks kept; at
-        the end of the text every CR is written as EOB."""
-        runs, self._runs = self._runs, []
-        out = []
-        for char, count in runs:
-            if char != "\r":
-                out.append(self._encode(char * count))
-            elif at_end:
-                self.notes.cr_eob += count
-                self._line += count
-                self._column = 0
-                self._bol = True
-                out.append(bytes([EIA_EOB]) * count)
-            else:
-                self.notes.cr_by_lf += count
-        return b"".join(out)
+        """The held CRs and blanks, the line's end: no text, so the blanks are not carried
+        (as the sender leaves them); the CRs are dropped before an LF, and at the end of the
+        text each is written as EOB."""
+        crs, self._held_cr = self._held_cr, 0
+        self.notes.cr_by_lf += self._held_blank
+        self._held_blank = 0
+        if not at_end:
+            self.notes.cr_by_lf += crs
+            return b""
+        self.notes.cr_eob += crs
+        self._line += crs
+        self._column = 0
+        self._bol = True
+        return bytes([EIA_EOB]) * crs
 
     def _inside_line(self) -> TapeError:
         line, column = self._held_at
@@ -296,11 +298,13 @@ class TapeEncoder:
         DOS end of file with text after it is refused at the Ctrl-Z."""
         at = 0 if self._eof is not None else text.find(DOS_EOF)
         if text[at:].strip(_BLANK_AFTER_EOF):
+            if self._cr_before_eof is not None:
+                raise self._cr_before_eof
             if self._eof is not None:
                 raise self._eof
             return text  # refused at the Ctrl-Z as a character EIA has not
         if self._eof is None:
-            self._eof = self._cannot(text, at, "EIA RS-244 code")
+            self._eof = self._cr_before_eof or self._cannot(text, at, "EIA RS-244 code")
         self.notes.dos_eof += len(text) - at
         return text[:at]
 

@@ -318,13 +318,14 @@ def test_eia_refuses_a_percent_inside_a_block_where_its_er_would_stop_the_reader
 
 
 def test_eia_writes_cr_line_ends_as_eob_and_counts_every_byte_it_does_not_carry():
-    """EIA has no CR: CR next to LF (and before blanks and the LF) is dropped, the CRs ending
-    the text's last line become EOB; NUL and DEL go on the tape as fill. Each kind is counted,
-    and the same whatever the chunks."""
+    """EIA has no CR: CR next to LF is dropped (with the blanks between it and the LF, no
+    text, as the sender leaves them), the CRs ending the text's last line become EOB; NUL and
+    DEL go on the tape as fill. Each kind is counted, and the same whatever the chunks."""
     from formats.tape import EncodeNotes
 
     cases = {
-        "%\nO1\nG0 X1.\r \t\nM30\n%\r\r": ("%\nO1\nG0 X1. \t\nM30\n%\n\n", EncodeNotes(1, 2, 0)),
+        "%\nO1\nG0 X1.\r \t\nM30\n%\r\r": ("%\nO1\nG0 X1.\nM30\n%\n\n", EncodeNotes(3, 2, 0)),
+        "%\nO1\nM30\n%\r \r": ("%\nO1\nM30\n%\n\n", EncodeNotes(1, 2, 0)),
         "%\r\nO1\r\nG0\r\n%\r\n": ("%\nO1\nG0\n%\n", EncodeNotes(4, 0, 0)),
         "X1\n\r\rY2\n": ("X1\nY2\n", EncodeNotes(2, 0, 0)),  # FANUC's LF CR CR
         "G0 X1.\x00\x7f\nM30\r": ("G0 X1.\nM30\n", EncodeNotes(0, 1, 2)),
@@ -346,6 +347,34 @@ def test_eia_writes_cr_line_ends_as_eob_and_counts_every_byte_it_does_not_carry(
     assert notes == EncodeNotes(0, 0, 1)
 
 
+def test_eia_leaves_crs_after_a_dos_end_of_file_off_and_holds_long_runs_in_flat_memory():
+    """CRs after the Ctrl-Z that ends the text are no part of the program (review 16a: one had
+    become an EOB after the ER); a CR run of any length, blanks between, is held as counts."""
+    from formats.tape import EncodeNotes
+
+    text = "%\nO1\nM30\n%\x1a\r\n"
+    for size in (1, 2, 100):
+        notes = EncodeNotes()
+        tape = b"".join(encode_stream([text[i:i + size] for i in range(0, len(text), size)],
+                                      "eia", notes=notes))
+        assert tape == encode("%\nO1\nM30\n%\n", "eia")[:-1], size  # the ER ends it
+        assert notes == EncodeNotes(0, 0, 0, 3), size
+    import tracemalloc
+
+    def chunks():  # 4 MB of CR blank CR blank ... inside one line, 2 kB at a time
+        yield "X1."
+        for _ in range(2_000):
+            yield "\r " * 1_000
+        yield "\n"
+
+    tracemalloc.start()
+    notes = EncodeNotes()
+    tape = b"".join(encode_stream(chunks(), "eia", notes=notes))
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert peak < 1_000_000 and notes.cr_by_lf == 4_000_000 and decode(tape).text == "X1.\n"
+
+
 def test_eia_refuses_a_cr_with_text_after_it_in_its_line():
     """The check splits blocks at LF alone, as a FANUC does, and reads a line across a CR as one
     block; EIA's end of block, its only way to write a CR, would split that block (a comment
@@ -356,6 +385,8 @@ def test_eia_refuses_a_cr_with_text_after_it_in_its_line():
         "%\rO1\rG0 X1.\rM30\r%\r": (1, 2),  # CR-only line ends
         "%\nG0 X1.\r \rY2.\n": (2, 7),  # blanks between CRs are no line end
         "%\nM30\r%": (2, 4),  # the last line too: the check reads 'M30 CR %' as one line
+        "%\n\r\rG0 (A\r) F50.\n": (2, 8),  # the columns count LF CR CR's CRs, as send's do
+        "%\nM30\r\x1aX": (2, 4),  # text after the Ctrl-Z: no end of file, the CR inside
     }
     for text, place in cases.items():
         with pytest.raises(TapeError) as info:
@@ -377,7 +408,7 @@ def test_tape_commands_say_what_the_tape_does_not_carry(tmp_path):
     result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(source), "-o",
                                   str(tmp_path / "t.tap")])
     assert result.exit_code == 0
-    assert "4 CR next to LF not carried" in result.stderr
+    assert "4 CR next to LF (or blank after a line end's CR) not carried" in result.stderr
     assert "1 CR line ends written as EOB" in result.stderr
     result = runner.invoke(main, ["tape", "decode", str(tmp_path / "t.tap"), "-o",
                                   str(tmp_path / "back.nc")])
