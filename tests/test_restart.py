@@ -297,6 +297,26 @@ def test_the_profile_gives_the_clearance_in_its_units():
     assert "G00 G43 Z3.9371 H1" in plan(inch, 10, mine).preamble
 
 
+def test_a_clearance_past_the_machine_s_travel_is_refused():
+    """Review 15, 6: a clearance was checked against the Z word's digits alone. The approach
+    goes from it down to the start point (Z-1.5 at line 10) in one work offset: a drop longer
+    than the profile's Z travel (fanuc-mill: -508 to 10 mm, 518) fits no offset, so the
+    restart is refused, saying why; one within it is planned. In an inch program the drop is
+    in inches (the profile's 480 mm is 18.8976 in, 20.3976 above Z-1.5, past 518 mm's
+    20.3937 in)."""
+    inch = PART.replace("G21", "G20").replace("Z50.", "Z2.")
+    for text, clearance, refused in [(PART, "516.6", True), (PART, "516.5", False),
+                                     (inch, "480", True), (inch, "479", False)]:
+        mine = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal(clearance)))
+        if not refused:
+            assert plan(text, 10, mine).preamble[-1] == "G01 Z-1.5 F120."
+            continue
+        message = refusal(text, 10, mine)
+        assert "above the start point Z-1.5, more than the machine's Z travel (-508 to 10 mm)" \
+            in message, message
+        assert "no work offset puts both on the machine" in message
+
+
 def test_a_lathe_changes_tools_with_the_t_word_and_approaches_along_z():
     lathe = load_profile("fanuc-lathe")
     text = ("%\nO1\nN1 G21 G18 G40 G99\nN2 G50 S2500\nN3 T0101\nN4 G96 S200 M03\n"
@@ -1450,6 +1470,10 @@ def test_a_clearance_that_is_no_height_is_refused_never_a_traceback():
     wide = replace(inch, restart=replace(inch.restart, clearance=Decimal("9999")))
     assert "the clearance Z253974.6 (metric) has more digits than the profile's Z+053" in \
         refusal(AT_DEPTH, 6, wide)
-    # the largest that fits is planned, rounded up
-    top = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("99999.9985")))
+    # the largest that fits is planned, rounded up, on a profile that gives no Z travel (with
+    # fanuc-mill's, 518 mm, it is refused: review 15, 6)
+    free = replace(FANUC, limits=replace(FANUC.limits, axes={}))
+    top = replace(free, restart=replace(FANUC.restart, clearance=Decimal("99999.9985")))
     assert plan(AT_DEPTH, 6, top).preamble[-3] == "G00 Z99999.999"
+    travel = replace(top, limits=FANUC.limits)
+    assert "more than the machine's Z travel (-508 to 10 mm)" in refusal(AT_DEPTH, 6, travel)
