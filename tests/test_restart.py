@@ -1088,6 +1088,38 @@ def test_no_restart_under_a_mirror_image_nor_after_its_cancel_until_the_axes_are
     assert "(line 12: G100 ends the mirror image" in refusal(haas, 13, load_profile("haas-mill"))
 
 
+def test_a_mirror_stays_on_until_its_last_axis_ends():
+    """Review 15, 2 in the restart walk: G50.1 X0 ended the whole mirror, so a restart under
+    the Y mirror still in force was planned unmirrored. G50.1 ends the axes it names; the
+    restart is refused until none is mirrored."""
+    both = (MIRROR.replace("N80 G51.1 X0", "N80 G51.1 X0 Y0")
+            .replace("N120 X40.", "N120 G50.1 Y0\nN125 X40. Y10.\nN127 X50."))
+    for line in (13, 14):  # line 14 was planned to the unmirrored Y10. of line 13
+        assert refusal(both, line) == ("cannot restart here: G51.1 (programmable mirror image) "
+                                       "from line 10 is in force and the preamble cannot "
+                                       "restore it")
+    assert plan(both, 16).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
+
+
+def test_an_okuma_mill_s_frames_refuse_the_restart():
+    """Review 15, 3 in the restart walk: an Okuma mill's G11 (parallel and rotation shift) was
+    not known, so a restart under it was planned without it; its G16 (a work system for one
+    block) was taken for FANUC's polar coordinates and its G69 (3-D conversion on) for a
+    cancel. G11 until G10, G69 until G68 and G62 are frames the preamble cannot restore."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nG21 G17 G90 G15 H1\nG00 X0 Y0 Z50.\n{}\nN10 G00 X20. Y5.\n"
+            "N20 G01 Z-1. F100\nN30 X30.\n{}\nN40 G00 Z50.\nN50 X0 Y0\nN60 X5.\nM30\n%\n")
+    for frame, cancel, name in (("G11 X10. Y0 R90.", "G10", "G11 (parallel and rotation shift"),
+                                ("G69 X0 Y0 Z0", "G68", "G69 (3-D coordinate system conversion"),
+                                ("G62 X0", "", "G62 (programmable mirror image")):
+        program = text.format(frame, cancel)
+        assert refusal(program, 8, okuma).startswith(f"cannot restart here: {name}"), frame
+        if cancel:  # the block after an absolute X Y
+            assert "G00 X0 Y0" in plan(program, 12, okuma).preamble, frame
+    one_block = text.format("G16 H2", "")
+    assert plan(one_block, 8, okuma).preamble[-1] == "G01 Z-1. F100."
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from
