@@ -674,12 +674,37 @@ class _Planner:
                 raise self.refuse(f"the clearance {axis}{given} ({self.units}) has more digits "
                                   f"than the profile's {fmt.spec()} holds: it cannot be sent")
             given = max(rounded, start)
+            self.within_travel(axis, key, given, start)
             if self.own_units():
                 return given
             # the units are the control's: the profile's clearance may be read in the other
             # ones, the program's own highest point is the same number in either
             return max(given, self.highest(axis, start))
         return self.highest(axis, start)
+
+    def within_travel(self, axis: str, key: str, clear: Decimal, start: Decimal) -> None:
+        """Refuse a given clearance whose approach down to the start point is longer than the
+        machine's travel of ``axis`` in the profile (``[limits]``): both are the program's
+        coordinates, one work offset and one tool length apart from the machine's, so no
+        offset puts both on the machine (review 15, 6: `--clearance 500` on an inch Haas
+        whose Z travels 40 in, from Z-0.1, was sent as `G00 Z500.`). The fact TG601 checks a
+        program's span by; a lathe's X clearance is a diameter, not compared."""
+        travel = self.profile.limits.axes.get(axis)
+        if travel is None or key != "clearance" or clear <= start:
+            return
+        low, high = travel
+        length = high - low
+        units = self.profile.limit_units or self.profile.default_units
+        if units != self.units:
+            length = length / INCH if self.units == "inch" else length * INCH
+        if clear - start > length:
+            unit = {"metric": "mm", "inch": "in"}
+            raise self.refuse(
+                f"the clearance {self.word(axis, clear)} is {(clear - start).normalize():f} "
+                f"{unit[self.units]} above the start point {self.word(axis, start)}, more than "
+                f"the machine's {axis} travel ({low} to {high} {unit[units]}): no work offset "
+                f"puts both on the machine; give a clearance within it (send --clearance, or "
+                f"the profile's [restart] clearance)")
 
     def highest(self, axis: str, start: Decimal) -> Decimal:
         """The highest ``axis`` the program went to, in its units (at least ``start``)."""

@@ -23,6 +23,8 @@ MODES: dict[str, list[list[str]]] = {
     "fanuc-mill": [["G20", "G21"], ["G93", "G94", "G95"], ["G17", "G18", "G19"],
                    ["G65 P9001", "G66 P9001", "G67"], ["G10 L2 P1", "G10 L11 P1", "G11"],
                    ["G68 X0 Y0", "G69"], ["G51 X0 Y0", "G50"],
+                   # G51.1/G50.1 X: the mirror's axis, no move, where G51 X is a centre
+                   ["G51.1 X0", "G50.1 X0", "G51 X0 Y0 P2."],
                    ["G81 Z-1. R1.", "G83 Z-1. R1.", "G80"], ["G05.1", "G04", "G43 H1", "G28"],
                    ["M98 P100", "M99", "M3", "M6", "N10"],
                    ["#1 = 1.5", "IF [#1 GT 0] GOTO 10", "WHILE [#1 LT 3] DO1", "END1"]],
@@ -44,6 +46,7 @@ MODES: dict[str, list[list[str]]] = {
                        ["R1=5", "G1 X=R1+5", "G2 X1. Y1."]],
     "heidenhain-iso": [["G70", "G71"], ["G17", "G18", "G94"], ["%SUB"]],
     "okuma-mill": [["G20", "G21"], ["G94", "G95"], ["G17", "G18"], ["G81 Z-1. R1.", "G80"],
+                   ["G11 X0 Y0 R90.", "G10", "G62 X0", "G69", "G68"],
                    ["VC1 = 1.5", "CALL O100"]],
     "iso-mill": [["G70", "G71"], ["G93", "G94", "G95"], ["G17", "G18"],
                  ["G81 Z-1. R1.", "G80"]],

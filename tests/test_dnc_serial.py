@@ -962,11 +962,37 @@ def test_send_clearance_that_is_no_height_is_a_usage_error(tmp_path: Path, given
     assert result.exit_code == 2, result.output
     assert f"Invalid value for '--clearance': {said}" in result.output
     assert "Traceback" not in result.output and " bytes, " not in result.output
-    # the largest height the format holds is sent, read exactly (no float in between)
+    # a height the format holds is sent, read exactly (no float in between), within the
+    # machine's Z travel of 518 mm from the start point Z-1. (review 15, 6)
     sent = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
                "--baud", "115200", "--no-progress", "--restart-at", "N20", "-y",
-               "--clearance", " 99999.999 ")
-    assert sent.exit_code == 0 and "G00 Z99999.999\n" in sent.output, sent.output
+               "--clearance", " 516.999 ")
+    assert sent.exit_code == 0 and "G00 Z516.999\n" in sent.output, sent.output
+
+
+@pytest.mark.parametrize(("clearance", "refused"), [
+    ("500", True), ("39.95", True), ("39.9", False), ("2", False)])
+def test_send_clearance_past_the_z_travel_is_refused(tmp_path: Path, clearance: str,
+                                                     refused: bool) -> None:
+    """Review 15, 6: `--clearance 500` on haas-mill (Z -20 to 20 in) was sent as `G00 Z500.`
+    from a cut at Z-0.1: it was checked against the Z word's digits only. A clearance more
+    than the Z travel above the start point fits no work offset: the restart is refused (exit
+    1, nothing sent, no traceback) with the reason; Z39.9 is exactly 40 in above Z-0.1."""
+    src = tmp_path / "r1.nc"
+    src.write_text("%\nO1000\nG20 G90 G54 G00 X0 Y0\nG01 Z-0.1 F10.\nX1.\nN20 X2.\nM30\n%\n")
+    result = cli("send", str(src), "--port", "loop://", "-p", "haas-mill", "--flow", "none",
+                 "--baud", "115200", "--no-progress", "--restart-at", "N20", "-y",
+                 "--clearance", clearance)
+    assert "Traceback" not in result.output
+    if refused:
+        assert result.exit_code == 1, result.output
+        assert (f"r1.nc:6: cannot restart here: the clearance Z{clearance}" in result.output
+                and "more than the machine's Z travel (-20 to 20 in)" in result.output), \
+            result.output
+        assert " bytes, " not in result.output
+    else:
+        assert result.exit_code == 0, result.output
+        assert f"G00 Z{clearance}" in result.output, result.output
 
 
 @pytest.mark.parametrize("args", [

@@ -411,11 +411,11 @@ def test_blocks_that_set_or_shift_draw_nothing_and_the_picture_says_what_it_does
             "G68 X0 Y0 R30.\nG01 X50.\nG51.1 X0\nG01 X60.\nM30\n%\n")
     bp = backplot(text, load_profile("fanuc-mill"))
     drawn = [m for m in bp.moves if not m.lost and not m.adrift]
-    # the plunge, and the move under G68 (drawn unrotated: said); the one after G51.1 starts
-    # where the modal state put the mirror's X0, not where the last drawn move ended: its end
-    # point only (drawn unmirrored: said)
-    assert [m.line for m in drawn] == [5, 13]
-    assert [m.points for m in bp.moves if m.line == 15] == [[(60, 0, -1)]]
+    # the plunge, and the moves under G68 and G51.1 (drawn unrotated and unmirrored: said);
+    # G51.1's X0 is the mirror's axis, no move, as G68's X0 Y0 is its centre (review 15,
+    # finding 2): the move after it starts where the one under G68 ended
+    assert [m.line for m in drawn] == [5, 13, 15]
+    assert [m.points for m in bp.moves if m.line == 15] == [[(50, 0, -1), (60, 0, -1)]]
     assert all(m.line not in (6, 8, 10, 14) for m in bp.moves)  # the setting blocks
     assert [m.line for m in bp.moves if m.arc] == []  # both arcs start where nobody draws
     note = transforms_note(bp)

@@ -297,6 +297,26 @@ def test_the_profile_gives_the_clearance_in_its_units():
     assert "G00 G43 Z3.9371 H1" in plan(inch, 10, mine).preamble
 
 
+def test_a_clearance_past_the_machine_s_travel_is_refused():
+    """Review 15, 6: a clearance was checked against the Z word's digits alone. The approach
+    goes from it down to the start point (Z-1.5 at line 10) in one work offset: a drop longer
+    than the profile's Z travel (fanuc-mill: -508 to 10 mm, 518) fits no offset, so the
+    restart is refused, saying why; one within it is planned. In an inch program the drop is
+    in inches (the profile's 480 mm is 18.8976 in, 20.3976 above Z-1.5, past 518 mm's
+    20.3937 in)."""
+    inch = PART.replace("G21", "G20").replace("Z50.", "Z2.")
+    for text, clearance, refused in [(PART, "516.6", True), (PART, "516.5", False),
+                                     (inch, "480", True), (inch, "479", False)]:
+        mine = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal(clearance)))
+        if not refused:
+            assert plan(text, 10, mine).preamble[-1] == "G01 Z-1.5 F120."
+            continue
+        message = refusal(text, 10, mine)
+        assert "above the start point Z-1.5, more than the machine's Z travel (-508 to 10 mm)" \
+            in message, message
+        assert "no work offset puts both on the machine" in message
+
+
 def test_a_lathe_changes_tools_with_the_t_word_and_approaches_along_z():
     lathe = load_profile("fanuc-lathe")
     text = ("%\nO1\nN1 G21 G18 G40 G99\nN2 G50 S2500\nN3 T0101\nN4 G96 S200 M03\n"
@@ -1068,6 +1088,38 @@ def test_no_restart_under_a_mirror_image_nor_after_its_cancel_until_the_axes_are
     assert "(line 12: G100 ends the mirror image" in refusal(haas, 13, load_profile("haas-mill"))
 
 
+def test_a_mirror_stays_on_until_its_last_axis_ends():
+    """Review 15, 2 in the restart walk: G50.1 X0 ended the whole mirror, so a restart under
+    the Y mirror still in force was planned unmirrored. G50.1 ends the axes it names; the
+    restart is refused until none is mirrored."""
+    both = (MIRROR.replace("N80 G51.1 X0", "N80 G51.1 X0 Y0")
+            .replace("N120 X40.", "N120 G50.1 Y0\nN125 X40. Y10.\nN127 X50."))
+    for line in (13, 14):  # line 14 was planned to the unmirrored Y10. of line 13
+        assert refusal(both, line) == ("cannot restart here: G51.1 (programmable mirror image) "
+                                       "from line 10 is in force and the preamble cannot "
+                                       "restore it")
+    assert plan(both, 16).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
+
+
+def test_an_okuma_mill_s_frames_refuse_the_restart():
+    """Review 15, 3 in the restart walk: an Okuma mill's G11 (parallel and rotation shift) was
+    not known, so a restart under it was planned without it; its G16 (a work system for one
+    block) was taken for FANUC's polar coordinates and its G69 (3-D conversion on) for a
+    cancel. G11 until G10, G69 until G68 and G62 are frames the preamble cannot restore."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nG21 G17 G90 G15 H1\nG00 X0 Y0 Z50.\n{}\nN10 G00 X20. Y5.\n"
+            "N20 G01 Z-1. F100\nN30 X30.\n{}\nN40 G00 Z50.\nN50 X0 Y0\nN60 X5.\nM30\n%\n")
+    for frame, cancel, name in (("G11 X10. Y0 R90.", "G10", "G11 (parallel and rotation shift"),
+                                ("G69 X0 Y0 Z0", "G68", "G69 (3-D coordinate system conversion"),
+                                ("G62 X0", "", "G62 (programmable mirror image")):
+        program = text.format(frame, cancel)
+        assert refusal(program, 8, okuma).startswith(f"cannot restart here: {name}"), frame
+        if cancel:  # the block after an absolute X Y
+            assert "G00 X0 Y0" in plan(program, 12, okuma).preamble, frame
+    one_block = text.format("G16 H2", "")
+    assert plan(one_block, 8, okuma).preamble[-1] == "G01 Z-1. F100."
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from
@@ -1450,6 +1502,10 @@ def test_a_clearance_that_is_no_height_is_refused_never_a_traceback():
     wide = replace(inch, restart=replace(inch.restart, clearance=Decimal("9999")))
     assert "the clearance Z253974.6 (metric) has more digits than the profile's Z+053" in \
         refusal(AT_DEPTH, 6, wide)
-    # the largest that fits is planned, rounded up
-    top = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("99999.9985")))
+    # the largest that fits is planned, rounded up, on a profile that gives no Z travel (with
+    # fanuc-mill's, 518 mm, it is refused: review 15, 6)
+    free = replace(FANUC, limits=replace(FANUC.limits, axes={}))
+    top = replace(free, restart=replace(FANUC.restart, clearance=Decimal("99999.9985")))
     assert plan(AT_DEPTH, 6, top).preamble[-3] == "G00 Z99999.999"
+    travel = replace(top, limits=FANUC.limits)
+    assert "more than the machine's Z travel (-508 to 10 mm)" in refusal(AT_DEPTH, 6, travel)

@@ -336,3 +336,63 @@ def test_a_frame_not_known_exactly_is_said_and_its_positions_left_out(
     assert [(f.line, f.rule) for f in found] == [(5, "TG140"), (9, "TG601")], found
     assert why in found[0].message and "not compared with the travel" in found[0].message
     assert found[1].message.startswith("Y spans 35 (from -10 to 25)"), found[1].message
+
+
+@pytest.mark.parametrize(("body", "expected"), [
+    # review 15, 2a: G50.1 X0 ends X's mirror alone; Y17.5 is still Y-17.5, 32.5 from Y15.
+    ("G00 X0 Y15.\nG51.1 X0 Y0\nG00 X1. Y1.\nG50.1 X0\nG00 Y17.5",
+     [(8, "TG601", "Y spans 32.5 (from -17.5 to 15)")]),
+    ("G00 X0 Y15.\nG51.1 X0 Y0\nG00 X1. Y1.\nG50.1 X0 Y0\nG00 Y17.5", []),
+    # 2b: a second G51.1 adds Y about -5: Y12. is Y-22., 34 from Y12.
+    ("G00 X0 Y12.\nG51.1 X0\nG51.1 Y-5.\nG00 Y12.\nG50.1 X0 Y0",
+     [(7, "TG601", "Y spans 34 (from -22 to 12)")]),
+    # the mirror's words are no move: G51.1 X40. leaves the tool at X-25. (no span of 65),
+    # X75. under it is X5.
+    ("G00 X-25. Y0\nG51.1 X40.\nG00 X75.\nG50.1 X0", []),
+    # and G50.1 X0 leaves it at X-5. (X5. about X0): X-30. from there is X-35., 64 from X29.
+    ("G00 X29. Y0\nG51.1 X0\nG00 X5.\nG50.1 X0\nG91 G00 X-30.\nG90",
+     [(8, "TG601", "X spans 64 (from -35 to 29)")]),
+])
+def test_a_mirror_is_kept_axis_by_axis(body: str, expected: list[tuple[int, str, str]]) -> None:
+    """Review 15, 2: the exact mirror was all or nothing -- G50.1 X0 ended Y's too, a second
+    G51.1 was ignored -- and G51.1's and G50.1's axis words were read as moves (a false span
+    of 65, a missed one of 64)."""
+    found = haas_travel(body)
+    assert [(f.line, f.rule) for f in found] == [(line, rule) for line, rule, _ in expected]
+    for f, (_, _, text) in zip(found, expected, strict=True):
+        assert f.message.startswith(text), f.message
+
+
+def test_an_okuma_mill_s_frames_are_left_out_with_a_note() -> None:
+    """Review 15, 3: okuma-mill (Y -400 to 400) read G11 X0 Y0 R90. as a move and no frame:
+    X600. under it (Y600. if the rotation is as written) was compared as X, silently. Its
+    words are in no page at hand: X Y Z under G11 (until G10) and G62 are left out, said."""
+    profile = load_profile("okuma-mill")
+    for frame, cancel, until in (("G11 X0 Y0 R90.", "G10", "until its cancel"),
+                                 ("G62 X10.", "", "to the end of the file")):
+        text = (f"%\nO01000\nG21 G17 G90\nG00 X0 Y-300.\n{frame}\nG00 X600. Y0\nX-500.\n"
+                f"{cancel}\nM30\n%\n")
+        found = [f for f in Checker(profile).run_stream([text], profile.dialect)
+                 if f.rule in ("TG601", "TG140")]
+        assert [(f.line, f.rule) for f in found] == [(5, "TG140")], found
+        assert found[0].message.startswith(f"{frame.split()[0]}: the positions of X Y Z under "
+                                           "it are not compared"), found[0].message
+        assert until in found[0].message, found[0].message
+
+
+@pytest.mark.parametrize(("base", "setting", "none"), [
+    ("fanuc-lathe", "G50", "G92"), ("fanuc-lathe-b", "G92", "G50"),
+    ("fanuc-lathe-c", "G92", "G50")])
+def test_a_lathe_s_coordinate_setting_restarts_the_span_by_its_code_system(
+        base: str, setting: str, none: str) -> None:
+    """Review 15, 4: in G code systems B and C the coordinate setting is G92 (A's G50); the
+    written number was read, so B's G92 left X180. and X-60. in one span of 240 (a false
+    TG601) and a written G50, no code there, started the span again."""
+    profile = profile_from_text(f'base = "{base}"\n[limits]\nX = [-100, 100]\n'
+                                "Z = [-100, 100]\n")
+    text = "%\nO01000\nG21 G18\nG00 X180. Z0\n{} X0 Z0\nG00 X-60.\nM30\n%\n"
+    for code, spans in ((setting, []), (none, [6])):
+        found = [f.line for f in Checker(profile).run_stream([text.format(code)],
+                                                             profile.dialect)
+                 if f.rule == "TG601"]
+        assert found == spans, (base, code)

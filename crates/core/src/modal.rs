@@ -18,6 +18,13 @@ pub const AXES: &[u8; 9] = b"XYZUVWABC";
 /// The words a fixed cycle keeps for its later blocks.
 pub const CYCLE_WORDS: &[u8; 5] = b"RZQPF";
 
+/// Whether decimal G code `v` is a programmable mirror image's G50.1 or G51.1
+/// ([`BlockValues::mirror`]).
+pub fn mirror_code(v: Dec) -> bool {
+    let tenths = v.normalized();
+    tenths.scale == 1 && matches!(tenths.mantissa, 501 | 511)
+}
+
 /// The place of `letter` in [`AXES`] (asked for every axis of every block: no search).
 pub fn axis_index(letter: u8) -> Option<usize> {
     match letter {
@@ -192,6 +199,9 @@ pub struct BlockValues {
     /// The block has a G code with decimals (G51.1, G92.1): none of them is in `gs`, and the
     /// frames ask for them only where this is set.
     pub decimal_g: bool,
+    /// The block has a programmable mirror image's code (G50.1, G51.1): its axis words are
+    /// the mirror's axes and point, no move ([`ModalSettings::axes_taken`]).
+    pub mirror: bool,
     /// The first value of each letter, meaningful where `given` has the letter's bit.
     values: [Dec; 26],
     given: u32,
@@ -207,6 +217,7 @@ impl Default for BlockValues {
             ms: Vec::new(),
             other_work_system: false,
             decimal_g: false,
+            mirror: false,
             values: [Dec::ZERO; 26],
             given: 0,
             unknown: 0,
@@ -221,6 +232,7 @@ impl BlockValues {
         self.ms.clear();
         self.other_work_system = false;
         self.decimal_g = false;
+        self.mirror = false;
         self.given = 0;
         self.unknown = 0;
     }
@@ -445,6 +457,12 @@ impl ModalSettings {
     pub fn axes_taken(&self, v: &BlockValues) -> Option<AxesTaken> {
         use AxesTaken::{Data, Home, Positions, Set, Unknown};
         let lathe = self.fanuc_lathe || self.lap;
+        // G51.1 X10. mirrors X about 10, G50.1 X0 ends X's mirror: the axis words name the
+        // mirror's axes and point (FANUC 16/18, "Programmable mirror image"; SINUMERIK ISO
+        // dialect: `G50.1 X... Y... Z...`), no move
+        if v.mirror && self.family == Family::MacroB {
+            return Some(Data);
+        }
         v.gs().iter().find_map(|&g| match (self.family, g) {
             // (G10 L2/L20 may set the offsets of the coordinate system in force: where the
             // named axes stand in program coordinates is then not known)
@@ -474,6 +492,10 @@ impl ModalSettings {
             (Family::Okuma, 71..=74 | 84..=87) if self.lap => Some(Data),
             (Family::Okuma, 181..=189) if self.lap => Some(Unknown),
             (Family::Okuma, 30 | 31) => Some(Unknown),
+            // an Okuma mill's G11 (parallel and rotation shift of the coordinate system) and
+            // G62 (programmable mirror image): the list at hand names them, no page says what
+            // their axis words are; a move to them is not assumed, nor is the position kept
+            (Family::Okuma, 11 | 62) if !lathe => Some(Unknown),
             // (unless the profile makes it its units code: a lathe profile of its own)
             (Family::Okuma, 20 | 21 | 24 | 25) if lathe && self.units_code(g).is_none() => {
                 Some(Home)

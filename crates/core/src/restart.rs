@@ -68,6 +68,17 @@ const UNRESTORED: [(i64, i64, &str); 3] = [
 ];
 const MOTION_CODES: [i64; 9] = [0, 1, 2, 3, 6, 32, 33, 34, 35];
 const LATHE_CYCLES: [i64; 10] = [70, 71, 72, 73, 74, 75, 76, 90, 92, 94];
+/// An Okuma mill's frames (OSP List of G Codes, `okuma-mill.toml`): its G68 is the 3-D
+/// conversion's cancel, its G15/G16 select a work system.
+const OKUMA_UNRESTORED: [(i64, i64, &str); 3] = [
+    (
+        11,
+        10,
+        "parallel and rotation shift of the coordinate system",
+    ),
+    (51, 50, "scaling"),
+    (69, 68, "3-D coordinate system conversion"),
+];
 const DECIMAL_UNRESTORED: [&str; 5] = ["54.1", "68.2", "41.1", "42.1", "43.1"];
 
 fn machine_move(g: i64) -> Option<&'static str> {
@@ -237,6 +248,10 @@ pub struct Walk {
     transformed: u16,
     /// The axes a G92 in force shifted (bits of [`AXES`] indexes): lost at its cancel.
     shifted: u16,
+    /// The axes a FANUC G51.1 mirrors (bits of [`AXES`] indexes): G50.1 ends the mirror of
+    /// the axes it names, the mirror is in force until it has ended every one (review 15,
+    /// finding 2).
+    mirrored: u16,
     /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
     /// way the program reached its start point with this tool, for an approach that goes the
     /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
@@ -463,6 +478,7 @@ impl Walk {
             coolant: Vec::new(),
             transformed: 0,
             shifted: 0,
+            mirrored: 0,
             moves: Vec::new(),
             tool_change: None,
             tool_moved: true,
@@ -538,9 +554,12 @@ impl Walk {
 
     /// Whether a rotation, scaling or mirror image is in force.
     fn transforms_on(&self) -> bool {
-        self.unrestored
-            .iter()
-            .any(|(k, _, _)| matches!(k.as_str(), "68" | "51" | "51.1" | "101"))
+        self.unrestored.iter().any(|(k, _, _)| {
+            matches!(
+                k.as_str(),
+                "68" | "51" | "51.1" | "101" | "11" | "69" | "62"
+            )
+        })
     }
 
     /// `code` on `line` ends the transform `name`: the axes moved under it stand at the
@@ -915,13 +934,24 @@ impl Walk {
             .filter(|(l, _)| AXES.contains(l))
             .map(|&(_, t)| t)
             .collect();
+        let okuma_mill = self.control == Control::Okuma && !self.lathe;
+        let table: &[(i64, i64, &str)] = if okuma_mill {
+            &OKUMA_UNRESTORED
+        } else {
+            &UNRESTORED
+        };
         for &g in gs {
-            if let Some(&(_, _, name)) = UNRESTORED.iter().find(|(c, _, _)| *c == g) {
+            if let Some(&(_, _, name)) = table.iter().find(|(c, _, _)| *c == g) {
                 if !(g == 51 && self.lathe) {
                     self.set_unrestored(&g.to_string(), line, format!("G{g} ({name})"));
                 }
             }
-            for &(code, cancel, name) in &UNRESTORED {
+            if okuma_mill && g == 62 {
+                // no page at hand names its cancel: in force to the end of the walk
+                let what = "G62 (programmable mirror image)";
+                self.set_unrestored("62", line, what.into());
+            }
+            for &(code, cancel, name) in table {
                 if g == cancel && !(cancel == 50 && self.lathe) {
                     let was = self
                         .unrestored
@@ -1036,14 +1066,23 @@ impl Walk {
         for dec in gdec {
             let text = String::from_utf8_lossy(dec);
             let mirror_codes = self.control.family() == Family::MacroB;
+            let named = plain_words
+                .iter()
+                .filter_map(|&(letter, _)| axis_index(letter))
+                .fold(0u16, |all, i| all | bit(i));
             if mirror_codes && text == "51.1" && !axes.is_empty() {
                 // FANUC G51.1 X0: programmable mirror image about X0 (0i-MF, group 22)
                 let what = "G51.1 (programmable mirror image)";
                 self.set_unrestored("51.1", line, what.into());
+                self.mirrored |= named;
             }
             if mirror_codes && text == "50.1" {
                 let was = self.unrestored.iter().any(|(k, _, _)| k == "51.1");
-                self.drop_unrestored("51.1");
+                // G50.1 X0 ends X's mirror alone (a G50.1 naming none, all)
+                self.mirrored &= if named == 0 { 0 } else { !named };
+                if self.mirrored == 0 {
+                    self.drop_unrestored("51.1");
+                }
                 if was {
                     self.transform_cancel(line, "G50.1", "mirror image");
                 }

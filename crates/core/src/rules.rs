@@ -190,7 +190,7 @@ rules! {
     AddressNotClassified = "TG134", Warning, "Annex C", Words, false,
         "address not in the profile's detailed format classification";
     NotFollowed = "TG140", Info, "dialect", Words, false,
-        "jump, loop or call the checker does not follow: the position, feed and speed are unknown after it; a SINUMERIK procedure that couples, reconfigures or sets axes: the position (said once per file); a Haas G268 feature coordinate system: the machine positions, compared with the travel through the profile's work offsets no more; a rotation or scaling the checker cannot apply exactly (its angle or factor from parameters, a 3-D rotation, G268): the positions under it, left out of the travel's spans (said once per file)";
+        "jump, loop or call the checker does not follow: the position, feed and speed are unknown after it; a SINUMERIK procedure that couples, reconfigures or sets axes: the position (said once per file); a Haas G268 feature coordinate system: the machine positions, compared with the travel through the profile's work offsets no more; a rotation, scaling or mirror image the checker cannot apply exactly (its angle or factor from parameters, a 3-D rotation, G268, an Okuma's G11, G62 and G69): the positions under it, left out of the travel's spans, and after its cancel an axis moved under it until an absolute position gives it (said once per file)";
     NotEvaluated = "TG141", Info, "dialect", Words, false,
         "value the checker cannot evaluate (F[#101*2], X[#1+#2]; a variable set to a constant is known): set but unknown from there on (said once per file)";
     MixedDecimalStyles = "TG201", Warning, "6.1", Formats, false,

@@ -435,6 +435,7 @@ impl<'a> Numbers<'a> {
             match w.letter {
                 b'G' if !value.is_whole() => {
                     out.other_work_system |= matches!(value.trunc(), 54 | 59);
+                    out.mirror |= crate::modal::mirror_code(value);
                     out.decimal_g = true;
                 }
                 b'G' => out.push_g(value.trunc()),

@@ -40,7 +40,8 @@ impl Travel {
 pub(super) struct Frames {
     /// A bit each: polar G16 (1), scaling G51 (2), rotation G68 (4), Haas G268 (8), Haas
     /// mirror G101 (16), mirror G51.1 (32). A cancel (G15, G50, G69, G269, G100, G50.1) ends
-    /// its own frame only.
+    /// its own frame only, G50.1 the mirror of the axes it names ([`Checker::mirror_off`]).
+    /// An Okuma mill's codes set the same bits ([`frame_bits`]).
     on: u8,
     /// The one rotation or scaling in force whose words say exactly what it does: the
     /// positions under it are taken back to the coordinates before it.
@@ -54,6 +55,9 @@ pub(super) struct Frames {
     /// The spans from before a mirror image, taken back at its cancel: the positions under
     /// it stand apart (a mirror keeps the size of a span, not its place).
     saved: Option<[Option<Span>; 9]>,
+    /// The axes (bit `i` for `AXES[i]`) a mirror image G51.1 not known exactly here
+    /// mirrors: its positions stand apart until a G50.1 has ended every one of them.
+    apart: u16,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
     /// Whether the block in hand has a code that may turn a frame or shift the coordinates
@@ -88,11 +92,28 @@ struct Map {
 }
 
 /// The frame bits a G code turns on and off ([`Frames::on`]); none on a SINUMERIK, whose
-/// frames are statements ([`Checker::frames`]).
-fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool) -> (u8, u8) {
+/// frames are statements ([`Checker::frames`]). An Okuma mill numbers its frames otherwise
+/// (OSP List of G Codes, `okuma-mill.toml`): G11/G10 the parallel and rotation shift of the
+/// coordinate system and its cancel (a rotation's bit), G51/G50 the scaling, G69/G68 the
+/// three-dimensional coordinate system conversion and its cancel (G268's bit: a frame of
+/// words not followed), G62 the programmable mirror image; its G15/G16 select a work
+/// system, no polar coordinates.
+fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool, okuma: bool) -> (u8, u8) {
     let tenths = v.normalized();
     if sinumerik {
         (0, 0)
+    } else if okuma {
+        match v.trunc() {
+            _ if !v.is_whole() => (0, 0),
+            11 => (4, 0),
+            10 => (0, 4),
+            51 => (2, 0),
+            50 => (0, 2),
+            69 => (8, 0),
+            68 => (0, 8),
+            62 => (32, 0),
+            _ => (0, 0),
+        }
     } else if v.is_whole() {
         match v.trunc() {
             16 => (1, 0),
@@ -117,10 +138,13 @@ fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool) -> (u8, u8
 }
 
 /// The G codes below 128 whose whole part may turn a frame on or off or shift the
-/// coordinates ([`frame_bits`], [`Checker::shift_spans`]): G10, G15, G16, G50 (G50.1), G51
-/// (G51.1), G52, G68, G69, G92 (G92.1), G100, G101. A block with none of them (and no Haas
-/// G268/G269) leaves the frames as they are: most blocks, tested once by the block's G mask.
+/// coordinates ([`frame_bits`], [`Checker::shift_spans`]): G10, G11 and G62 (an Okuma's),
+/// G15, G16, G50 (G50.1), G51 (G51.1), G52, G68, G69, G92 (G92.1), G100, G101. A block with
+/// none of them (and no Haas G268/G269) leaves the frames as they are: most blocks, tested
+/// once by the block's G mask.
 const FRAME_CODES: u128 = 1 << 10
+    | 1 << 11
+    | 1 << 62
     | 1 << 15
     | 1 << 16
     | 1 << 50
@@ -152,6 +176,41 @@ impl Checker {
                 || self.values.decimal_g
                 || self.config.modal.g_system != crate::lex::GCodeSystem::A
                 || self.config.haas && self.values.gs().iter().any(|&g| g >= 128))
+    }
+
+    /// The frame bits G code `v` (as written) turns on and off ([`frame_bits`]), by the
+    /// number the profile's code table reads it by ([`Checker::g_read`]).
+    fn frame_bits_of(&self, v: Dec) -> (u8, u8) {
+        frame_bits(
+            self.g_read(v),
+            self.config.family == Family::Sinumerik,
+            self.config.modal.fanuc_lathe,
+            self.config.haas,
+            self.config.family == Family::Okuma,
+        )
+    }
+
+    /// G code `v` by the number the core reads it by: a FANUC lathe's code of G code system
+    /// B or C as system A's (`ModalSettings::read_g`, `GCodeSystem::tenths_to_a`), so that a
+    /// code's role comes from the profile's code table, not from its written number: in B and
+    /// C G92 is the coordinate setting (A's G50) and a written G50 is no code (FANUC 0i-TF,
+    /// "G code list"; review 15, finding 4).
+    fn g_read(&self, v: Dec) -> Dec {
+        let system = self.config.modal.g_system;
+        if system == crate::lex::GCodeSystem::A {
+            v
+        } else if v.is_whole() {
+            Dec::from_int(i128::from(self.config.modal.read_g(v.trunc())))
+        } else {
+            let tenths = v.normalized();
+            match i64::try_from(tenths.mantissa) {
+                Ok(m) if tenths.scale == 1 => Dec {
+                    mantissa: i128::from(system.tenths_to_a(m)),
+                    scale: 1,
+                },
+                _ => v,
+            }
+        }
     }
 
     /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
@@ -235,15 +294,25 @@ impl Checker {
                 }
                 54..=57 => self.work = Some(v.trunc()),
                 58 | 59 if !sinumerik => self.work = Some(v.trunc()),
-                // rotation, scaling, polar coordinates, Haas's mirror image: a work position
-                // is no longer the machine position plus the offset
-                16 | 51 | 68 | 101 if !sinumerik => self.lose_offsets(
+                // an Okuma mill's G11 (parallel and rotation shift), G51 (scaling), G62
+                // (mirror image), G69 (three-dimensional conversion): frame_bits
+                11 | 51 | 62 | 69 if self.config.family == Family::Okuma => self.lose_offsets(
                     line,
                     &format!(
-                        "{} rotates, scales or mirrors the coordinates, or makes them polar",
+                        "{} shifts, rotates, scales or mirrors the coordinates",
                         w.token()
                     ),
                 ),
+                // rotation, scaling, polar coordinates, Haas's mirror image: a work position
+                // is no longer the machine position plus the offset
+                16 | 51 | 68 | 101 if !sinumerik && self.config.family != Family::Okuma => self
+                    .lose_offsets(
+                        line,
+                        &format!(
+                            "{} rotates, scales or mirrors the coordinates, or makes them polar",
+                            w.token()
+                        ),
+                    ),
                 // a Haas mill's feature coordinate system (G268): moves the coordinates by
                 // words no stored page explains
                 268 if self.config.haas => {
@@ -307,17 +376,16 @@ impl Checker {
         if !self.frames.codes {
             return;
         }
-        let (sinumerik, fanuc_lathe, haas) = (
-            self.config.family == Family::Sinumerik,
-            self.config.modal.fanuc_lathe,
-            self.config.haas,
-        );
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
                 continue;
             };
-            let (on, off) = frame_bits(v, sinumerik, fanuc_lathe, haas);
-            if off != 0 && self.frames.on & off != 0 {
+            let (on, off) = self.frame_bits_of(v);
+            // (a G50.1 ends the mirror of the axes it names only: Checker::mirror_off)
+            let mirror_on = off == 32
+                && (self.frames.apart != 0
+                    || self.frames.map.as_ref().is_some_and(|map| map.bit == 32));
+            if off != 0 && self.frames.on & off != 0 && !mirror_on {
                 self.frame_off(off);
             }
             if on != 0 {
@@ -328,6 +396,7 @@ impl Checker {
 
     fn frame_on(&mut self, on: u8, b: &BlockView<'_>, token: String, column: usize) {
         let place = on.trailing_zeros() as usize;
+        let okuma = self.config.family == Family::Okuma;
         self.frames.moved[place] = false;
         let others = self.frames.on & !on;
         self.frames.on |= on;
@@ -339,6 +408,8 @@ impl Checker {
                 let mirrored = self.frames.map.as_ref().is_some_and(|map| map.bit == 32);
                 let exact = if others & (2 | 4 | 8) != 0 || mirrored {
                     Err("it turns inside another rotation, scaling or mirror image".to_string())
+                } else if on == 8 && okuma {
+                    Err("a 3-D coordinate system conversion the checker does not follow".into())
                 } else if on == 8 {
                     Err("a feature coordinate system the checker does not follow".into())
                 } else {
@@ -376,14 +447,19 @@ impl Checker {
                         })
                     }
                     Err(why) => {
-                        // a plane's rotation moves its two axes; scaling and G268 X Y Z
-                        let two = on == 4 && !b.words.iter().any(|w| b"IJK".contains(&w.letter));
+                        // a plane's rotation moves its two axes; scaling, G268 and an
+                        // Okuma's G11 (a parallel shift too) X Y Z
+                        let two = on == 4
+                            && !okuma
+                            && !b.words.iter().any(|w| b"IJK".contains(&w.letter));
                         let axes = if two { plane } else { XYZ };
                         self.frames.hidden[place] = axes;
                         // (a G268 under the profile's work offsets has a note of its own,
                         // which says this too: Checker::work_offset)
-                        let own =
-                            on == 8 && !self.config.work_offsets.is_empty() && !self.offsets_lost;
+                        let own = on == 8
+                            && self.config.haas
+                            && !self.config.work_offsets.is_empty()
+                            && !self.offsets_lost;
                         if !own {
                             self.frame_not_applied(&token, axes, (b.line, column), &why);
                         }
@@ -392,23 +468,69 @@ impl Checker {
             }
             // polar coordinates: the plane's words are a radius and an angle
             1 => self.frames.hidden[place] = plane,
+            // an Okuma's G62: neither its words nor its cancel are in a page at hand
+            32 if okuma => {
+                self.frames.hidden[place] = XYZ;
+                self.frame_note(
+                    &token,
+                    XYZ,
+                    (b.line, column),
+                    "from here to the end of the file",
+                    "an Okuma's programmable mirror image, whose words and cancel no page at hand \
+                     gives",
+                );
+            }
             _ => {
-                if on == 32 && others == 0 && self.frames.map.is_none() {
+                let exact_map = self.frames.map.as_ref().map(|map| map.bit == 32);
+                if on == 32 && others == 0 && exact_map != Some(false) && self.frames.apart == 0 {
                     if let Some((centre, m, fresh)) = self.exact_mirror(b) {
                         let what = format!("{token} of line {}", b.line);
-                        self.frames.map = Some(Map {
-                            bit: on,
-                            centre,
-                            m,
-                            fresh,
-                            touched: 0,
-                            what,
-                        });
+                        match self.frames.map.as_mut() {
+                            // a second G51.1 adds the axes it names, or moves their point
+                            Some(map) => {
+                                for k in (0..3).filter(|&k| m[k][k] == -1.0) {
+                                    // an axis mirrored already stands where the old point
+                                    // put it: unknown in the new mirror's coordinates until
+                                    // given there; one mirrored afresh where it stood
+                                    if map.m[k][k] == 1.0 {
+                                        map.touched &= !(1 << k);
+                                    }
+                                    map.m[k][k] = -1.0;
+                                    map.centre[k] = centre[k];
+                                    map.fresh &= !(1 << k);
+                                }
+                                map.what = what;
+                            }
+                            None => {
+                                self.frames.map = Some(Map {
+                                    bit: on,
+                                    centre,
+                                    m,
+                                    fresh,
+                                    touched: 0,
+                                    what,
+                                })
+                            }
+                        }
                         return;
                     }
                 }
-                if self.frames.saved.is_none() {
-                    self.frames.saved = Some(std::mem::take(&mut self.spans));
+                if on == 32 {
+                    // not exact here: the mirrored axes' positions stand apart, those of an
+                    // exact mirror in force with them
+                    if let Some(map) = self.frames.map.take_if(|map| map.bit == 32) {
+                        for k in (0..3).filter(|&k| map.m[k][k] == -1.0) {
+                            self.frames.apart |= 1 << k;
+                        }
+                    }
+                    let named = Self::mirror_axes(b);
+                    self.frames.apart |= if named == 0 { XYZ } else { named };
+                }
+                match self.frames.saved {
+                    None => self.frames.saved = Some(std::mem::take(&mut self.spans)),
+                    // the positions under the mirror before this block are mirrored otherwise
+                    // than those after it: apart from them too
+                    Some(_) => self.spans = Default::default(),
                 }
             }
         }
@@ -448,21 +570,64 @@ impl Checker {
         if self.frames.on == 0 || !self.frames.codes {
             return;
         }
-        let (sinumerik, fanuc_lathe, haas) = (
-            self.config.family == Family::Sinumerik,
-            self.config.modal.fanuc_lathe,
-            self.config.haas,
-        );
         let mut done = 0u8;
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
                 continue;
             };
-            let (_, off) = frame_bits(v, sinumerik, fanuc_lathe, haas);
+            let (_, off) = self.frame_bits_of(v);
             if off != 0 && self.frames.on & off & !done != 0 {
                 done |= off;
-                self.take_back(off, b, before, w.column);
+                if off == 32 {
+                    self.mirror_off(b, before, w.column);
+                } else {
+                    self.take_back(off, b, before, w.column, 0b111);
+                }
             }
+        }
+    }
+
+    /// The axes a mirror image's block names (bit `i` for `AXES[i]`): G51.1 mirrors them,
+    /// G50.1 ends their mirror.
+    fn mirror_axes(b: &BlockView<'_>) -> u16 {
+        b.words
+            .iter()
+            .filter_map(|w| axis_index(w.letter))
+            .fold(0, |all, i| all | 1 << i)
+    }
+
+    /// G50.1 ends the mirror of the axes it names, the others stay mirrored (FANUC 16/18,
+    /// "Programmable mirror image": `G50.1 IP_`, the axes whose mirror is cancelled; the
+    /// SINUMERIK ISO dialect's `G50.1 X... Y... Z...`; review 15, finding 2): each of them is
+    /// taken back as a rotation's axes are at its cancel ([`Checker::take_back`]), and the
+    /// mirror ends with the last. A G50.1 that names no axis is taken to end them all (no
+    /// page at hand says otherwise).
+    fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
+        let named = Self::mirror_axes(b);
+        let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
+            self.frames.apart &= if named == 0 { 0 } else { !named };
+            return;
+        };
+        let mirrored = (0..3)
+            .filter(|&k| map.m[k][k] == -1.0)
+            .fold(0u8, |all, k| all | 1 << k);
+        let ending = if named == 0 {
+            mirrored
+        } else {
+            mirrored & (named & XYZ) as u8
+        };
+        self.take_back(32, b, before, column, ending);
+        let Some(map) = self.frames.map.as_mut() else {
+            return;
+        };
+        for k in (0..3).filter(|&k| ending & 1 << k != 0) {
+            map.m[k][k] = 1.0;
+            map.centre[k] = 0.0;
+            map.fresh |= 1 << k;
+            map.touched &= !(1 << k);
+        }
+        if mirrored & !ending == 0 {
+            self.frames.map = None;
         }
     }
 
@@ -476,7 +641,9 @@ impl Checker {
     /// after G69; Mitsubishi M700V, G68.1/G69.1 precautions: an absolute movement right after
     /// the cancel. Without it an increment after G69 adds to the frame's coordinate: a missed
     /// over-travel, a false TG403 on a correct arc (review 14, finding 1).
-    fn take_back(&mut self, off: u8, b: &BlockView<'_>, before: &Before, column: usize) {
+    /// `only`: the axes of an exact mirror image that its cancel ends ([`Checker::mirror_off`];
+    /// all three for a rotation or scaling).
+    fn take_back(&mut self, off: u8, b: &BlockView<'_>, before: &Before, column: usize, only: u8) {
         // (a mirror image only where it was exact: its positions apart otherwise)
         let exact_mirror = off == 32 && self.frames.map.as_ref().is_some_and(|map| map.bit == 32);
         if off & (2 | 4 | 8) == 0 && !exact_mirror {
@@ -498,7 +665,8 @@ impl Checker {
                         .fold(0u8, |all, l| all | 1 << l);
                     // an axis the frame leaves as it is, one whose axes never moved under
                     // it (where it stood before the frame), or the block's absolute word
-                    if (made_of == 1 << k && map.m[k][k] == 1.0)
+                    if only & 1 << k == 0
+                        || (made_of == 1 << k && map.m[k][k] == 1.0)
                         || made_of & map.touched == 0
                         || absolute(k)
                     {
@@ -544,7 +712,7 @@ impl Checker {
         }
         // (a G268 under the profile's work offsets has a note of its own, which says the
         // positions after G269 are not compared either: Checker::work_offset)
-        let own = off == 8 && !self.config.work_offsets.is_empty();
+        let own = off == 8 && self.config.haas && !self.config.work_offsets.is_empty();
         if lost != 0 && !own {
             let token = b
                 .words
@@ -563,6 +731,9 @@ impl Checker {
 
     fn frame_off(&mut self, off: u8) {
         self.frames.on &= !off;
+        if off == 32 {
+            self.frames.apart = 0;
+        }
         self.frames.hidden[off.trailing_zeros() as usize] = 0;
         if self.frames.map.as_ref().is_some_and(|map| map.bit == off) {
             self.frames.map = None;
@@ -583,7 +754,11 @@ impl Checker {
         (line, column): (usize, usize),
         why: &str,
     ) {
-        self.frame_note(token, axes, (line, column), "until its cancel", why);
+        // (after the cancel an axis moved under the frame stands where the frame put it, not
+        // known here: Checker::take_back; the note is said once, so it says that too)
+        let until = "until its cancel, nor after the cancel an axis moved under it until an \
+                     absolute position gives it";
+        self.frame_note(token, axes, (line, column), until, why);
     }
 
     fn frame_note(
@@ -715,6 +890,7 @@ impl Checker {
             let Some(v) = (w.letter == b'G').then(|| self.readable[i]).flatten() else {
                 continue;
             };
+            let v = self.g_read(v);
             let code = v.trunc();
             // (a G10 for a work system not in force shifts none: ModalMachine::taken)
             let other_system = self.machine.taken() == Some(crate::modal::AxesTaken::Data);
@@ -726,13 +902,22 @@ impl Checker {
                     || (code == 50 && fanuc_lathe));
             let axes = crate::modal::axis_places(self.values.given()) != 0;
             if self.record_path {
-                let (on, _) = frame_bits(v, sinumerik, fanuc_lathe, self.config.haas);
-                // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
+                let (on, _) = frame_bits(
+                    v,
+                    sinumerik,
+                    fanuc_lathe,
+                    self.config.haas,
+                    self.config.family == Family::Okuma,
+                );
+                // G51.1 (mirror) and G92.1 (preset: the shift cancelled; B's and C's G92.1 is
+                // read as A's G50.3), in tenths
                 let tenths = v.normalized();
                 let decimal = !sinumerik
                     && !v.is_whole()
                     && tenths.scale == 1
-                    && matches!(tenths.mantissa, 511 | 921);
+                    && (matches!(tenths.mantissa, 511 | 921)
+                        || tenths.mantissa == 503
+                            && self.config.modal.g_system != crate::lex::GCodeSystem::A);
                 if (v.is_whole() && (on != 0 || shift && axes)) || decimal {
                     self.drawn.transform(b.line, w.token());
                 }
@@ -815,6 +1000,12 @@ impl Checker {
                 );
                 self.travel_not(why);
             }
+            moved = &[];
+        }
+        // a frame's block whose axis words are its data (G51.1 X0: the mirror's axis, no
+        // move) adds no position: where the tool stands may be a span's that the block
+        // started afresh
+        if self.frames.codes && self.machine.taken() == Some(AxesTaken::Data) {
             moved = &[];
         }
         let factor = self.to_profile_units(false);
@@ -1173,10 +1364,12 @@ fn frame_variable(text: &[u8]) -> Option<&[u8]> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{dialect, findings, fired, iso_mill, of_family, program, run};
+    use super::super::testing::{
+        dialect, fanuc_lathe, findings, fired, iso_mill, of_family, program, run,
+    };
     use super::super::{Config, ProfileFacts};
     use crate::decimal::Dec;
-    use crate::lex::Family;
+    use crate::lex::{Family, GCodeSystem};
     use crate::rules::Rule;
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
@@ -1371,10 +1564,10 @@ mod tests {
             []
         );
         // at the cancel the tool stands at X410.: an increment of X-30. after it is X380.
-        // (880 from X-500.), of X100. is X510. (1010); (the cancel's own Y0 is read as a
-        // move by the modal state, as G51.1's axis words are: not the point here)
+        // (880 from X-500.), of X100. is X510. (1010); (the cancel's X0 names the axis whose
+        // mirror ends, no move)
         let after = |x: &str| {
-            format!("G00 X-500. Y0\nG51.1 X10. Y0\nG00 X-400.\nX-390.\nG50.1 Y0\nG91 X{x}\nG90")
+            format!("G00 X-500. Y0\nG51.1 X10. Y0\nG00 X-400.\nX-390.\nG50.1 X0 Y0\nG91 X{x}\nG90")
         };
         assert_eq!(at(fanuc.clone(), &after("-30."), Rule::TravelExceeded), []);
         assert_eq!(
@@ -1384,6 +1577,122 @@ mod tests {
         // a mirror whose point is not exact here (an A axis) keeps its positions apart
         let apart = "G00 X-500. Y0\nG51.1 X10. A0\nG00 X-500.\nG50.1 X0\nX0";
         assert_eq!(at(fanuc, apart, Rule::TravelExceeded), []);
+    }
+
+    #[test]
+    fn a_mirror_is_set_and_ended_axis_by_axis() {
+        // review 15, finding 2: G50.1 X0 ends X's mirror alone, a second G51.1 adds its axis
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // Y450. mirrored about Y0 (G50.1 X0 leaves it) is Y-450.: 800.5 from Y350.5, more
+        // than Y's 800; with both ended Y450. is 99.5 from it
+        let one = |cancel: &str| {
+            format!("G00 X0 Y350.5\nG51.1 X0 Y0\nG00 X10. Y10.\n{cancel}\nG00 Y450.\nG50.1 Y0")
+        };
+        assert_eq!(
+            at(fanuc.clone(), &one("G50.1 X0"), Rule::TravelExceeded),
+            [(6, 5)]
+        );
+        assert_eq!(
+            at(fanuc.clone(), &one("G50.1 X0 Y0"), Rule::TravelExceeded),
+            []
+        );
+        // G51.1 X0 then G51.1 Y-50.: Y360. is Y-460., 820 from Y360.; G51.1 Y-50. alone the same
+        let two = |first: &str| format!("G00 X0 Y360.\n{first}G51.1 Y-50.\nG00 Y360.\nG50.1 X0 Y0");
+        assert_eq!(
+            at(fanuc.clone(), &two("G51.1 X0\n"), Rule::TravelExceeded),
+            [(5, 5)]
+        );
+        assert_eq!(at(fanuc.clone(), &two(""), Rule::TravelExceeded), [(4, 5)]);
+        // the mirror's words are its axes and point, no move (they were read as one: review
+        // 15): G51.1 X650. leaves the tool at X-400. (no span of 1050), and X1000. under it
+        // is X300.; G50.1 X0 leaves the tool at X-100. (X100. about X0), and X-550. from
+        // there is X-650., 1050 from X400.
+        let about = "G00 X-400. Y0\nG51.1 X650.\nG00 X1000.\nG50.1 X0";
+        assert_eq!(at(fanuc.clone(), about, Rule::TravelExceeded), []);
+        let ended = "G00 X400. Y0\nG51.1 X0\nG00 X100.\nG50.1 X0\nG91 X-550.\nG90";
+        assert_eq!(at(fanuc.clone(), ended, Rule::TravelExceeded), [(6, 5)]);
+        let state = run(
+            fanuc.clone(),
+            &dialect(Family::MacroB),
+            "%\nG00 X-300.\nG51.1 X450.\n",
+        );
+        assert_eq!(state.0.machine.state.axis(b'X'), Dec::parse("-300."));
+        // an axis mirrored again about another point stands where the first put it: not
+        // known in the new mirror's coordinates, so its cancel leaves it unknown (a note)
+        let again = "G00 X0 Y0\nG51.1 X0\nG00 X100.\nG51.1 X50.\nG50.1 X0\nG91 X10.\nG90";
+        assert_eq!(at(fanuc.clone(), again, Rule::TravelExceeded), []);
+        let notes = findings(fanuc, &program(again), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].message.contains("until an absolute position"),
+            "{}",
+            notes[0].message
+        );
+    }
+
+    #[test]
+    fn a_lathe_s_coordinate_setting_is_its_g_code_system_s() {
+        // review 15, finding 4: in G code systems B and C the coordinate setting is G92 (A's
+        // G50), and G50 is no code: X900. then X-300. spans 1200, more than X's 1000, unless
+        // a setting between them starts the span again
+        let body = |code: &str| format!("G00 X900. Z0\n{code} X0 Z0\nG00 X-300.");
+        for system in [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C] {
+            let mut lathe = fanuc_lathe();
+            lathe.modal.g_system = system;
+            let (setting, none) = if system == GCodeSystem::A {
+                ("G50", "G92")
+            } else {
+                ("G92", "G50")
+            };
+            assert_eq!(
+                at(lathe.clone(), &body(setting), Rule::TravelExceeded),
+                [],
+                "{system:?}"
+            );
+            assert_eq!(
+                at(lathe, &body(none), Rule::TravelExceeded),
+                [(4, 5)],
+                "{system:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn an_okuma_mill_s_frames_are_its_own_codes() {
+        // review 15, finding 3: G11 (parallel and rotation shift), G62 (mirror image) and
+        // G69 (three-dimensional conversion on; G68 is its cancel): where they put the axes
+        // is not known here, so X Y Z under them are left out, said once; Y-300. and X600.
+        // under G11 R90. would be Y600. as the checker cannot know
+        let okuma = of_family(Family::Okuma);
+        for (frame, cancel) in [
+            ("G11 X0 Y0 R90.", "G10"),
+            ("G62 X10.", ""),
+            ("G69 X0 Y0 Z0", "G68"),
+        ] {
+            let body = format!("G00 X0 Y-300. Z0\n{frame}\nG00 X450. Y350.\nX-450.\n{cancel}");
+            assert_eq!(
+                at(okuma.clone(), &body, Rule::TravelExceeded),
+                [],
+                "{frame}"
+            );
+            let notes = findings(okuma.clone(), &program(&body), Rule::NotFollowed);
+            assert_eq!(notes.len(), 1, "{frame}: {notes:?}");
+            assert!(notes[0].message.contains("X Y Z"), "{}", notes[0].message);
+        }
+        // after G10 the axes moved under G11 are unknown until given absolutely, then compared
+        let after = "G00 X0 Y-300.\nG11 X0 Y0 R90.\nG00 X100. Y0\nG10\nG91 Y700.\nG90\nY510.";
+        assert_eq!(at(okuma.clone(), after, Rule::TravelExceeded), [(8, 1)]);
+        // G16 selects a work system on an Okuma (no polar coordinates), G68 ends a frame:
+        // the positions after them are compared
+        for code in ["G16 H1", "G68"] {
+            let body = format!("G00 X0 Y-300.\n{code}\nG00 Y510.");
+            assert_eq!(
+                at(okuma.clone(), &body, Rule::TravelExceeded),
+                [(4, 5)],
+                "{code}"
+            );
+        }
     }
 
     #[test]

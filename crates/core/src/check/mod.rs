@@ -1385,6 +1385,7 @@ impl Checker {
                 // modal state knows (the dialect's code table names what it does)
                 b'G' if !v.is_whole() => {
                     self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
+                    self.values.mirror |= crate::modal::mirror_code(v);
                     self.values.decimal_g = true;
                 }
                 b'G' => self.values.push_g(v.trunc()),
