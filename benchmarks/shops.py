@@ -25,7 +25,16 @@ and has no row is "unclassified" and stays in the denominator; a row whose first
 longer where the ledger puts it is "ledger row moved" (counted by its class still). ``--shops``
 given more than once measures every folder, so one run gives the figure over all of them.
 
-Exit code 0 (a measurement: tests/test_shops.py asserts), 2 where the ledger cannot be read.
+Each program is counted once, by its name: a name met again (the same folder given twice, a
+union folder beside one of its sets) is dropped, and the run says how many were and which. The
+ledger's ``set`` column is checked against the set a program came from where the folders say it:
+a folder named as a set (``held3``, as ``held_assemble.py`` writes ``OUT/<SET>``; ``shops``)
+holds that set, and a union folder (``OUT/all``) holds, of each program a sibling set folder
+lists, that set. A row of another set is not applied ("ledger row of another set"): the program
+counts as unclassified, since a row judged for one file says nothing of another of its name.
+
+Exit code 0 (a measurement: tests/test_shops.py asserts), 2 where the ledger cannot be read or
+a folder has no ``families.tsv`` (nothing is measured then: a partial run has no figure).
 """
 
 from __future__ import annotations
@@ -50,6 +59,7 @@ from postproc.check import Checker  # noqa: E402
 from postproc.rules import rule_id  # noqa: E402
 
 SHOPS = Path(os.environ.get("TAPEGATE_SHOPS", HERE.parents[1] / "shared" / "corpus" / "shops"))
+UNSEEN = HERE / "unseen"
 
 # The rules a finding of which, as an error, means the program could not be read: characters,
 # statements, number format (the same set as tests/test_dialects.py).
@@ -94,6 +104,8 @@ class Result:
     name: str
     family: str
     profile: str
+    # the set of the folder the program came from, where the folders say it (``folder_sets``)
+    set: str = ""
     reprint: bool = False
     unread: int = 0
     first_unread: str = ""
@@ -137,8 +149,77 @@ def profile_for(family: str, description: str) -> str | None:
     return lathe if TURNING.search(description.lower()) else mill
 
 
-def measure(path: Path, family: str, profile_name: str) -> Result:
-    result = Result(path.name, family, profile_name)
+def set_names() -> frozenset[str]:
+    """The sets a ledger row can name: benchmarks/unseen's held and dev sets, and the shops
+    folder."""
+    return frozenset({p.stem for p in UNSEEN.glob("*.tsv") if p.stem != "ledger"} | {"shops"})
+
+
+def folder_sets(folder: Path) -> dict[str, str]:
+    """The set of each program of ``folder``, where the folders say it: all of them where the
+    folder is named as a set (``OUT/held3``, the shops folder); in a union folder, each
+    program a sibling folder named as a set lists in its families.tsv (``OUT/all`` beside
+    ``OUT/held`` ... ``OUT/held10``). A program not found so has no known set."""
+    sets = set_names()
+    if folder.name in sets:
+        return {name: folder.name for name, _, _ in entries(folder)}
+    known: dict[str, str] = {}
+    for sibling in sorted(folder.resolve().parent.iterdir()):
+        if sibling.name in sets and (sibling / "families.tsv").is_file():
+            for name, _, _ in entries(sibling):
+                known.setdefault(name, sibling.name)
+    return known
+
+
+@dataclass
+class Program:
+    """One program to measure: its folder, name, family, description and set ("" unknown)."""
+    folder: Path
+    name: str
+    family: str
+    description: str
+    set: str
+
+
+@dataclass
+class Dropped:
+    """A program name met again after its first folder: not measured, not counted."""
+    name: str
+    folder: Path
+    first: Path  # the folder whose program of that name is counted
+    same: bool  # whether the two files hold the same bytes
+
+
+def programs(folders: list[Path], only: str | None = None) -> tuple[list[Program],
+                                                                    list[Dropped]]:
+    """Each program of the folders once, by its name, in the order given; the names met again
+    are dropped and returned (a program counted twice would count its class twice). A folder
+    with no families.tsv is an error (ValueError): a run that measures only some folders has
+    no figure."""
+    missing = [folder for folder in folders if not (folder / "families.tsv").is_file()]
+    if missing:
+        raise ValueError(f"no families.tsv in {', '.join(map(str, missing))}: nothing measured")
+    kept: list[Program] = []
+    dropped: list[Dropped] = []
+    first: dict[str, Path] = {}
+    for folder in folders:
+        sets = folder_sets(folder)
+        for name, family, description in entries(folder):
+            if only and only not in name:
+                continue
+            if name in first:
+                here, there = folder / name, first[name] / name
+                same = here.is_file() and there.is_file() and \
+                    here.read_bytes() == there.read_bytes()
+                dropped.append(Dropped(name, folder, first[name], same))
+                continue
+            first[name] = folder
+            kept.append(Program(folder, name, family, description, sets.get(name, "")))
+    return kept, dropped
+
+
+def measure(path: Path, family: str, profile_name: str, set_name: str = "") -> Result:
+    result = Result(path.name, family, profile_name, set_name)
     try:
         profile = load_profile(profile_name)
     except Exception as exc:  # a profile not built yet: the program is not read
@@ -259,21 +340,28 @@ class LedgerReport:
     moved: list[tuple[LedgerRow, Result]]  # rows whose first error is no longer theirs
     listed: list[LedgerRow]  # the D and T rows of programs measured
     elsewhere: int  # rows of programs not measured in this run
+    # rows of a set other than the one the program came from: not applied
+    other_set: list[tuple[LedgerRow, Result]] = field(default_factory=list)
 
 
 def ledger_report(results: list[Result], ledger: dict[str, LedgerRow]) -> LedgerReport:
     """The issue's figure against the ledger: read completely / all, and read completely /
     (all - P - F), by family and in total. A program that reads completely counts as
     complete whatever the ledger says (its row is stale); one that does not read and has no
-    row is unclassified and stays in the denominator."""
+    row, or a row of another set than the one it came from, is unclassified and stays in the
+    denominator. ``results`` name each program once (``programs``)."""
     tallies: dict[str, Tally] = {}
     total = Tally()
     stale: list[LedgerRow] = []
     unclassified: list[Result] = []
     moved: list[tuple[LedgerRow, Result]] = []
     listed: list[LedgerRow] = []
+    other_set: list[tuple[LedgerRow, Result]] = []
     for r in results:
         row = ledger.get(r.name)
+        if row is not None and r.set and row.set != r.set:
+            other_set.append((row, r))
+            row = None
         for tally in (tallies.setdefault(r.family, Tally()), total):
             tally.programs += 1
             if r.complete:
@@ -295,7 +383,7 @@ def ledger_report(results: list[Result], ledger: dict[str, LedgerRow]) -> Ledger
             listed.append(row)
     names = {r.name for r in results}
     return LedgerReport(dict(sorted(tallies.items())), total, stale, unclassified, moved, listed,
-                        sum(1 for name in ledger if name not in names))
+                        sum(1 for name in ledger if name not in names), other_set)
 
 
 def print_ledger(report: LedgerReport, path: Path) -> None:
@@ -317,6 +405,9 @@ def print_ledger(report: LedgerReport, path: Path) -> None:
     for row, r in report.moved:
         print(f"ledger row moved: {row.program}: the ledger has {row.profile} {row.at} "
               f"{row.code}, now {r.profile} {r.first_at} {r.first_code}")
+    for row, r in report.other_set:
+        print(f"ledger row of another set: {row.program}: the ledger's row is {row.set}'s, "
+              f"the program came from {r.set}: not applied")
 
 
 def ledger_json(report: LedgerReport) -> dict:
@@ -330,6 +421,7 @@ def ledger_json(report: LedgerReport) -> dict:
         "unclassified": [r.name for r in report.unclassified],
         "stale": [row.program for row in report.stale],
         "moved": [row.program for row, _ in report.moved],
+        "other_set": [row.program for row, _ in report.other_set],
         "elsewhere": report.elsewhere}}
 
 
@@ -349,24 +441,23 @@ def main(argv: list[str] | None = None) -> int:
     except (OSError, ValueError) as exc:
         print(f"ledger: {exc}", file=sys.stderr)
         return 2
+    try:
+        todo, dropped = programs(folders, args.only)
+    except ValueError as exc:
+        print(exc, file=sys.stderr)
+        return 2
     results, unknown = [], []
-    for folder in folders:
-        if not (folder / "families.tsv").is_file():
-            print(f"no families.tsv in {folder}", file=sys.stderr)
-            return 0
-        for name, family, description in entries(folder):
-            if args.only and args.only not in name:
-                continue
-            profile = profile_for(family, description)
-            if profile is None:
-                unknown.append(name)
-                continue
-            result = measure(folder / name, family, profile)
-            results.append(result)
-            if args.json:
-                print(json.dumps({**asdict(result), "complete": result.complete}))
-            else:
-                print_result(result)
+    for program in todo:
+        profile = profile_for(program.family, program.description)
+        if profile is None:
+            unknown.append(program.name)
+            continue
+        result = measure(program.folder / program.name, program.family, profile, program.set)
+        results.append(result)
+        if args.json:
+            print(json.dumps({**asdict(result), "complete": result.complete}))
+        else:
+            print_result(result)
     complete = sum(r.complete for r in results)
     by_family = Counter(r.family for r in results)
     done = Counter(r.family for r in results if r.complete)
@@ -374,16 +465,28 @@ def main(argv: list[str] | None = None) -> int:
     report = ledger_report(results, ledger) if ledger is not None else None
     if args.json:
         print(json.dumps({"complete": complete, "programs": len(results),
-                          "by_family": summary, "unknown_family": len(unknown)}))
+                          "by_family": summary, "unknown_family": len(unknown),
+                          "dropped": [d.name for d in dropped]}))
         if report is not None:
             print(json.dumps(ledger_json(report)))
     else:
         print(f"\n{complete} of {len(results)} programs read completely "
               f"({', '.join(f'{f} {s}' for f, s in summary.items())}); "
               f"{len(unknown)} of unknown family not read")
+        print_dropped(dropped)
         if report is not None:
             print_ledger(report, args.ledger)
     return 0
+
+
+def print_dropped(dropped: list[Dropped]) -> None:
+    if not dropped:
+        return
+    print(f"{len(dropped)} program{'s were' if len(dropped) != 1 else ' was'} given again and "
+          f"dropped (each program is counted once, by its name):")
+    for d in dropped:
+        how = "the same bytes" if d.same else "OTHER BYTES"
+        print(f"  dropped: {d.name} in {d.folder} ({how} as the one counted, in {d.first})")
 
 
 def print_result(result: Result) -> None:

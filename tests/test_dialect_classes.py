@@ -1096,6 +1096,29 @@ def test_a_sequence_number_past_five_digits_follows_the_control_s_documents(
         assert "B-63684EN" not in hits[0].message
 
 
+# a FANUC profile narrowed to four-digit sequence numbers (a copied profile's own format)
+N04 = ('name = "fanuc-n04"\nbase = "fanuc-mill"\ndetailed = "%:/DS O04 N04 G031 X+053 Y+053 '
+       'Z+053 P08 Q+053 R+053 A+053 B+053 I+053 J+053 K+053 F052 S05 T08 D03 M03 H03 L04*"\n')
+
+
+@pytest.mark.parametrize("number, digits, manual", [
+    ("N12345", 5, False),   # within the manual's 1 to 99999: the profile's own N04 refuses it
+    ("N123456", 6, True),   # past both: the manual's range and PS0003 said too
+])
+def test_a_sequence_number_past_a_narrower_n_format_is_told_its_own_format(number, digits,
+                                                                            manual):
+    """N12345 on a profile whose N format is N04 is past that format, not past FANUC's
+    N99999: the message gives the format and leaves out the manual's five digits, which
+    would contradict it."""
+    text = f"%\nO0001\n{number} G21 G90 G00 X0 Y0\nM30\n%\n"
+    hits = [f for f in check_text(text, profile_from_text(N04)) if f.rule == "TG205"]
+    assert [(f.rule, f.severity, f.line, f.column) for f in hits] == [("TG205", "error", 3, 1)]
+    assert hits[0].message.startswith(
+        f"{number}: {digits} digits before the decimal sign; the format N04 holds 4")
+    assert ("1 to 99999" in hits[0].message) is manual
+    assert ("PS0003" in hits[0].message) is manual
+
+
 # -- Fanuc and Haas: IF [..] THEN over several blocks (issue 32, held3 O9100), not read ---------
 
 
@@ -1127,3 +1150,26 @@ def test_go_before_an_address_is_the_letter_o_for_g0_s_zero(profile):
     hits = [f for f in check_text(jump, load_profile(profile)) if f.severity == "error"]
     assert [(f.line, f.message.split(":")[0]) for f in hits] == [(3, "'GO' is not read as GOTO")]
     assert not errors(text.replace("GO Z0.", "G0 Z0."), profile)
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("block, column, message", [
+    # GOTO written with a blank inside: a block number does follow, after TO
+    ("GO TO 10", 1, "'GO TO' is not read as GOTO: the macro words are read written in full, "
+                    "with no blank inside"),
+    ("N5 GO TO10", 4, "'GO TO' is not read as GOTO"),
+    # GO, a number, then an address word: the letter O for G01's zero as much as GOTO 1
+    ("GO1 X1.", 1, "'GO1' is neither G01 nor GOTO 1: G takes digits, and the letter O stands "
+                   "where a zero belongs (G01, the address X after it as in a motion block), "
+                   "or GOTO is abbreviated"),
+    ("N7 GO2 X5. Y1. R3.", 4, "'GO2' is neither G02 nor GOTO 2"),
+])
+def test_go_is_told_what_is_true_of_its_block(profile, block, column, message):
+    """Each GO form is refused, as before, with a message that fits what follows it: `GO TO 10`
+    has its block number (after TO), so it is not told it has none; `GO1 X1.` is not only an
+    abbreviated GOTO."""
+    text = f"%\nO0001\nG21 G90 G00 X0 Y0\n{block}\nN10 G00 X1.\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, column)]
+    assert hits[0].message.startswith(message), hits[0].message
+    assert "no block number" not in hits[0].message

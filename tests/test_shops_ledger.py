@@ -228,3 +228,111 @@ def test_a_block_left_unread_that_no_finding_names_is_placed_at_its_line(tmp_pat
     result = shops.measure(path, "fanuc", "fanuc-mill")
     assert not result.complete and result.unread == 1
     assert (result.first_at, result.first_code) == ("4:0", "unread")
+
+
+# -- each program counted once; the ledger's set checked against the folder's -----------------
+
+
+def test_a_folder_given_twice_is_counted_once_and_the_dropped_are_said(tmp_path, shops, capsys):
+    root = folder(tmp_path, PROGRAMS)
+    path = ledger(tmp_path)
+    assert shops.main(["--shops", str(root), "--ledger", str(path)]) == 0
+    once = capsys.readouterr().out
+    assert shops.main(["--shops", str(root), "--shops", str(root), "--ledger", str(path)]) == 0
+    twice = capsys.readouterr().out
+    assert "2 of 8 programs read completely" in twice
+    total = [line for line in twice.splitlines() if line.startswith("total")]
+    assert total == [line for line in once.splitlines() if line.startswith("total")]
+    assert total[0].split()[1:9] == ["2/8", "(25.0", "%)", "2/5", "(40.0", "%)", "2", "1"]
+    assert "8 programs were given again and dropped (each program is counted once, by its " \
+           "name):" in twice
+    assert f"  dropped: wh.nc in {root} (the same bytes as the one counted, in {root})" in twice
+    assert twice.count("dropped: ") == 8 and "given again" not in once
+    # each program's line is printed once: the second copy is not measured
+    assert twice.count("INCOMPLETE fanuc-mill      wh.nc") == 1
+
+
+def test_a_union_folder_beside_its_set_counts_the_set_once_in_json(tmp_path, shops, capsys):
+    """A union folder already holds the four programs of the folder given after it: they are
+    dropped, and the JSON figure is the one of the eight programs."""
+    items = list(PROGRAMS.items())
+    union = folder(tmp_path, PROGRAMS, "all")
+    two = folder(tmp_path, dict(items[4:]), "two")
+    assert shops.main(["--json", "--shops", str(union), "--shops", str(two),
+                       "--ledger", str(ledger(tmp_path))]) == 0
+    lines = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    assert sorted(lines[-2]["dropped"]) == sorted(file for (_, file), _ in items[4:])
+    assert lines[-2]["programs"] == 8
+    assert lines[-1]["ledger"]["total"]["programs"] == 8
+
+
+def test_the_same_name_with_other_bytes_is_dropped_and_said_so(tmp_path, shops, capsys):
+    one = folder(tmp_path, {("fanuc", "p.nc"): PROGRAMS[("fanuc", "good.nc")]}, "one")
+    two = folder(tmp_path, {("fanuc", "p.nc"): PROGRAMS[("fanuc", "twopoints.nc")]}, "two")
+    assert shops.main(["--shops", str(one), "--shops", str(two)]) == 0
+    out = capsys.readouterr().out
+    # the first folder's program is the one counted: it reads
+    assert "1 of 1 programs read completely" in out
+    assert f"  dropped: p.nc in {two} (OTHER BYTES as the one counted, in {one})" in out
+
+
+SETS = {
+    # a folder named as a set holds that set's programs; the ledger puts them in these sets
+    "held3": {("fanuc", "letter_o.nc"): PROGRAMS[("fanuc", "letter_o.nc")]},
+    "held4": {("fanuc", "wh.nc"): PROGRAMS[("fanuc", "wh.nc")]},
+}
+SET_ROWS = [
+    ("held3", "letter_o.nc", "fanuc-mill", "4:2", "TG100", "P", "GOO: the letter O for a zero"),
+    # the ledger says held3, the program is held4's: the row is not applied
+    ("held3", "wh.nc", "fanuc-mill", "5:1", "TG100", "D", "WH: no source documents it"),
+]
+
+
+@pytest.mark.parametrize("union", [False, True])
+def test_a_ledger_row_of_another_set_is_not_applied(tmp_path, shops, capsys, union):
+    """The set a program came from is known from its folder's name (OUT/held4) or, in a union
+    folder (OUT/all), from the sibling set folder listing it; a row of another set names
+    another program of the same name: the program counts as unclassified, and the run says
+    why."""
+    out = tmp_path / "out"
+    out.mkdir()
+    folders = [folder(out, programs, name) for name, programs in SETS.items()]
+    if union:
+        folders = [folder(out, {k: v for p in SETS.values() for k, v in p.items()}, "all")]
+    assert {k: v for f in folders for k, v in shops.folder_sets(f).items()} == {
+        "letter_o.nc": "held3", "wh.nc": "held4"}
+    argv = [arg for f in folders for arg in ("--shops", str(f))]
+    assert shops.main([*argv, "--ledger", str(ledger(tmp_path, SET_ROWS))]) == 0
+    printed = capsys.readouterr().out
+    assert "ledger row of another set: wh.nc: the ledger's row is held3's, the program came " \
+           "from held4: not applied" in printed
+    assert "unclassified: wh.nc (fanuc-mill) 5:1 TG100" in printed
+    total = next(line for line in printed.splitlines() if line.startswith("total"))
+    # letter_o P (out of the denominator), wh unclassified (in it)
+    assert total.split()[1:] == ["0/2", "(0.0", "%)", "0/1", "(0.0", "%)", "1", "0", "0", "0",
+                                 "1"]
+
+
+def test_a_folder_of_no_set_checks_no_set(tmp_path, shops):
+    """A folder whose name is no set's, with no set folder beside it: the sets are not known,
+    and the ledger's rows apply by name."""
+    root = folder(tmp_path, SETS["held4"], "mine")
+    assert shops.folder_sets(root) == {}
+    result = shops.measure(root / "wh.nc", "fanuc", "fanuc-mill")
+    got = shops.ledger_report([result], {row[1]: shops.LedgerRow(*row) for row in SET_ROWS})
+    assert got.other_set == [] and [row.program for row in got.listed] == ["wh.nc"]
+
+
+def test_a_folder_without_families_tsv_among_several_is_an_error(tmp_path, shops, capsys):
+    """Nothing is measured and the exit is 2: a run over some folders only would print a
+    figure for fewer programs, or, as before, none with exit 0."""
+    root = folder(tmp_path, PROGRAMS)
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert shops.main(["--shops", str(root), "--shops", str(empty),
+                       "--ledger", str(ledger(tmp_path))]) == 2
+    got = capsys.readouterr()
+    assert got.err == f"no families.tsv in {empty}: nothing measured\n"
+    assert got.out == ""
+    with pytest.raises(ValueError, match="no families.tsv in"):
+        shops.programs([empty])

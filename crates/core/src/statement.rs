@@ -521,7 +521,51 @@ fn macro_b<'a>(
                 // `GO Y0.` (a lathe program typed by hand): no block number follows, so no
                 // GOTO however written; a G with the letter O for its zero, the class of `GOO`
                 // and `TO303` (the word reader's "found 'O'"), said so
-                let next = line.get(skip_blanks(line, end));
+                let at = skip_blanks(line, end);
+                let next = line.get(at);
+                // `GO TO 10`: GOTO with a blank inside it, its block number after TO
+                let to = at + 2;
+                if name == b"GO"
+                    && line
+                        .get(at..to)
+                        .is_some_and(|w| w.eq_ignore_ascii_case(b"TO"))
+                    && !line.get(to).is_some_and(|&c| letter(c, low))
+                {
+                    return Err(err(
+                        ErrorKind::Value,
+                        format!(
+                            "'{}' is not read as GOTO: the macro words are read written in \
+                             full, with no blank inside (no source at hand documents another \
+                             spelling)",
+                            String::from_utf8_lossy(&line[pos..to])
+                        ),
+                        pos,
+                        "6.4.7",
+                    ));
+                }
+                // `GO1 X1.`: digits, then an address word, as in a motion block: the letter O
+                // for the zero of G01 as likely as GOTO 1 abbreviated, and the message says both
+                let digits = digits_end(line, at);
+                if name == b"GO" && digits > at {
+                    let after = skip_blanks(line, digits);
+                    if let Some(&address) = line.get(after).filter(|&&c| letter(c, low)) {
+                        let number = String::from_utf8_lossy(&line[at..digits]);
+                        return Err(err(
+                            ErrorKind::Value,
+                            format!(
+                                "'{}' is neither G0{number} nor GOTO {number}: G takes \
+                                 digits, and the letter O stands where a zero belongs \
+                                 (G0{number}, the address {} after it as in a motion block), \
+                                 or GOTO is abbreviated, which no source at hand documents \
+                                 (the macro words are read written in full)",
+                                String::from_utf8_lossy(&line[pos..digits]),
+                                address as char
+                            ),
+                            pos,
+                            "6.4.7",
+                        ));
+                    }
+                }
                 if name == b"GO"
                     && !next.is_some_and(|&c| c.is_ascii_digit() || c == b'#' || c == b'[')
                 {
@@ -2569,6 +2613,23 @@ mod tests {
                 e.starts_with("'GO' is neither G0 nor GOTO") && e.ends_with("@0"),
                 "{text}: {e}"
             );
+        }
+        // GOTO with a blank inside: its block number follows TO, and the message says so
+        for (text, word) in [("GO TO 10", "'GO TO'"), ("GO TO#5", "'GO TO'")] {
+            let e = read(text, m).unwrap_err();
+            assert!(
+                e.starts_with(&format!("{word} is not read as GOTO")) && e.ends_with("@0"),
+                "{text}: {e}"
+            );
+        }
+        // GO, digits, then an address word: G01 with the letter O, or GOTO abbreviated
+        for (text, start) in [
+            ("GO1 X1.", "'GO1' is neither G01 nor GOTO 1"),
+            ("GO2X5.Y1.R3.", "'GO2' is neither G02 nor GOTO 2"),
+            ("GO 1 Z0.", "'GO 1' is neither G01 nor GOTO 1"),
+        ] {
+            let e = read(text, m).unwrap_err();
+            assert!(e.starts_with(start) && e.ends_with("@0"), "{text}: {e}");
         }
         // the block form's closing words: refused at the word, saying why
         for (text, word) in [

@@ -765,9 +765,13 @@ impl Checker {
                     && naming.is_none()
                     && self.config.family == Family::MacroB
                     && !self.config.haas
+                    && (fmt.before == 5 || digits() > 5)
                 {
                     // a CAM post numbering past N99999 (Fusion 360: 15,177 such blocks in one
-                    // program): the manual's range and the alarm, so the error is sourced
+                    // program): the manual's range and the alarm, so the error is sourced.
+                    // Only where the number is past the manual's five digits too: a profile
+                    // narrowed to N04 refuses N12345 by its own format, which the manual's
+                    // range would contradict
                     message.push_str(
                         ": a FANUC sequence number is N and at most five digits, 1 to 99999 \
                          (Series 16i/18i/160i/180i-PB Operator's Manual, B-63684EN, 13 \
