@@ -6,14 +6,17 @@ TV-check padding, closing ``%``, trailer, in the profile's tape code and parity 
   punched tape.
 * **EIA** RS-244: always software (odd parity on track 5), end of block 0x80, ``%`` sent as ER.
 
-The program start ``%`` and its identification (clause 4, up to the first end of block) are sent
-as the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays
-behind (it is reported, but for a DOS end of file, Ctrl-Z). A byte-order mark before the first
-block is not sent. CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are the file's line
-end and are not sent; a CR with text on both sides of it in a line is refused, located: the check
-read the line as one block across it, and the wire has no CR that ends no block. A block of odd
-length gets a space before its end of block when the profile enables the TV check, so that the
-control's alarm 002 cannot trip.
+The program start ``%`` and its identification (clause 4, up to the first end of block) are sent as
+the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays behind
+(it is reported, but for a DOS end of file, Ctrl-Z). A Ctrl-Z ends the program where only blanks
+follow it, as the check reads it (the text before it on its line is the last line; with no closing
+``%`` one is added); text after it is refused at it, in either code (neither has the character, and
+dropping it would send what the check did not read). A byte-order mark before the first block is
+not sent. CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are the file's line end and are
+not sent; a CR with text on both sides of it in a line is refused, located: the check read the line
+as one block across it, and the wire has no CR that ends no block. A block of odd length gets a
+space before its end of block when the profile enables the TV check, so that the control's alarm
+002 cannot trip.
 """
 
 from __future__ import annotations
@@ -92,6 +95,21 @@ class Framer:
                             clause="Annex A", code="tape-character") from None
         return raw.translate(_SOFTWARE) if self.software else raw
 
+    def _before_dos_eof(self, line: int, text: str, rest: Iterator[tuple[int, str]]) -> str:
+        """The text of ``line`` before its DOS end of file (Ctrl-Z), which ends the file as
+        the check reads it, where only blanks follow it to the end of the file (they are not
+        sent); text after it is refused at the Ctrl-Z, as the check refuses it: neither
+        sending it (ISO has no such character, EIA none at all) nor dropping it sends what was
+        checked."""
+        after = text.partition(DOS_EOF)[2]
+        if after.strip(_BLANK_AFTER_EOF) or any(r.strip(_BLANK_AFTER_EOF) for _, r in rest):
+            raise TapeError(
+                "text after a DOS end of file (Ctrl-Z, 0x1A): the file ends at it as the check "
+                "reads it, and the tape codes have no such character; take the Ctrl-Z out of "
+                "the program", file=self.file, line=line, column=text.index(DOS_EOF) + 1,
+                clause="Annex A", code="tape-character")
+        return text.partition(DOS_EOF)[0]
+
     def leader(self) -> bytes:
         return self.fill * self.settings.leader
 
@@ -127,10 +145,16 @@ class Framer:
         started = False
         raw = iter(lines)
         lines = _line_ends(raw, stats, self.file)
+        last = False
         for line, text in lines:
+            if DOS_EOF in text:  # a DOS end of file: the program's last line, or refused
+                text = self._before_dos_eof(line, text, raw)
+                last = True
             if not started:
                 text = text.removeprefix(BOM)  # an editor's byte-order mark is never sent
                 if not text.strip():
+                    if last:
+                        break
                     continue
                 started = True
                 if text.startswith("%"):
@@ -144,6 +168,8 @@ class Framer:
                     if rest.strip(" \t\r\x00\x7f" + DOS_EOF):  # a DOS end of file is no line
                         stats.left_after_end += 1
                 return
+            if last and not text.strip():
+                break
             if tv and len(text) % 2:
                 text += " "
                 stats.padded += 1
@@ -153,11 +179,16 @@ class Framer:
                 yield line, (data if software is None else data.translate(software)) + eob
             else:
                 yield line, self.encode(text, line) + eob
+            if last:
+                break
         stats.added_end = True
         if not started:
             stats.added_start = True
             yield 0, self.encode("%", 0) + eob
         yield 0, self.encode("%", 0)
+
+
+_BLANK_AFTER_EOF = " \t\r\x00\x7f" + DOS_EOF
 
 
 def _line_ends(lines: Iterable[tuple[int, str]], stats: FrameStats, file: str | None

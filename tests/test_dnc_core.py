@@ -732,6 +732,34 @@ def test_a_byte_order_mark_and_a_dos_end_of_file_are_never_sent():
     assert framer.stats.left_after_end == 0
 
 
+@pytest.mark.parametrize("code", ["iso", "eia"])
+def test_a_dos_end_of_file_ends_the_program_or_is_refused_in_both_codes(code) -> None:
+    """Review 16a: under EIA a Ctrl-Z inside the program was dropped unsaid, and under ISO a
+    file ending in a Ctrl-Z with no closing % was refused. The check reads a Ctrl-Z as the end
+    of the file where only blanks follow it: the text before it is the last line sent, the
+    rest stays behind; with text after it, it is refused at the Ctrl-Z in either code."""
+    from dnc.framing import Framer
+    from formats.errors import TapeError
+    from formats.profile import SerialSettings
+
+    def sent(lines):
+        framer = Framer(SerialSettings(code=code))
+        return b"".join(data for _, data in framer.frames(iter(enumerate(lines, 1)))), framer
+
+    plain, _ = sent(["%", "N1 X1.", "M30", "%"])
+    for ending in (["M30\x1a"], ["M30", "\x1a"], ["M30", "%\x1a", " "], ["M30", "%\x1a \r"]):
+        data, framer = sent(["%", "N1 X1.", *ending])
+        assert data == plain, ending
+        assert framer.stats.left_after_end == 0
+    for lines, place in ((["%", "N1 X1.\x1a", "M30", "%"], (2, 7)),
+                         (["%", "N1 X1.", "\x1aM30", "%"], (3, 1)),
+                         (["%", "N1 X1.", "M30\x1a", "", "X"], (3, 4))):
+        with pytest.raises(TapeError) as info:
+            sent(lines)
+        assert (info.value.line, info.value.column) == place, lines
+        assert "text after a DOS end of file" in info.value.message
+
+
 def test_a_cr_only_file_is_refused_by_send_with_its_own_reason(tmp_path) -> None:
     """Review 12: a file whose lines end in CR alone was stopped by the check as TG114 'no M02
     or M30' (the whole file one block): send now says what it is, at line 1, before checking."""
