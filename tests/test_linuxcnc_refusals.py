@@ -80,6 +80,42 @@ REFUSED = [
     ("M3 S100 M8.2", "TG412", 3, "Non integer value for integer"),
     # G33's lead is its K: TG511, every family's rule
     ("M3 S100\nG33 Z-1 K1 F1", "TG511", 4, "F must not be programmed"),
+    # rs274's feed rate, which a probe and a cycle read, is zeroed by G94 and G95 and set by
+    # an F under them alone: an F under G93 is its block's inverse time (review 15, 5)
+    ("G93\nG94\nG38.2 X5", "TG412", 5, "Cannot probe with zero feed rate"),
+    ("G94\nG93\nG38.2 X5 F10", "TG412", 5, "Cannot probe with zero feed rate"),
+    ("G94\nG93\nG81 X1 Y1 Z-1 R1 F10", "TG412", 5, "Cannot feed with zero feed rate"),
+    # with a feed rate, a cycle under G93 is refused for G93 (interp_cycles.cc convert_cycle)
+    ("G93\nG81 X1 Y1 Z-1 R1", "TG412", 4, "Cannot use inverse time feed with canned cycles"),
+    # a probe that must trip and ends where it starts (interp_convert.cc convert_probe)
+    ("G38.2 Z0 F10", "TG412", 3, "Start point too close to probe point"),
+    ("G0 X1\nG38.2 X1 Y0", "TG412", 4, "Start point too close to probe point"),
+    ("G91\nG38.4 X0 F10", "TG412", 4, "Start point too close to probe point"),
+    # a motion code with no axis word (interp_internal.cc enhance_block)
+    ("G38.2 F10", "TG412", 3, "All axes missing with motion code"),
+    ("M3 S100\nG33 K1", "TG412", 4, "All axes missing with motion code"),
+    ("G5 I1 J1 P1 Q1", "TG412", 3, "All axes missing with motion code"),
+    # an expression of numbers: an M code that is no whole number, a division by zero
+    ("M[3.5]", "TG412", 3, "Non integer value for integer"),
+    ("M[7/2]", "TG412", 3, "Non integer value for integer"),
+    ("G0 X[1/0]", "TG412", 3, "Attempt to divide by zero"),
+    ("G0 X[1/[2-2]] Y1", "TG412", 3, "Attempt to divide by zero"),
+    ("G0 X[SIN[1/0]]", "TG412", 3, "Attempt to divide by zero"),
+    # M66's words (interp_convert.cc convert_m)
+    ("M66 P0 E0 L0", "TG412", 3,
+     "Invalid to select both a digital and an analog input with M66"),
+    ("M66 P0 L1", "TG412", 3, "Zero timeout with wait type != immediate return"),
+    ("M66 E0 L1 Q1", "TG412", 3,
+     "Can't select analog input with wait type != immediate return"),
+    ("M66 L0", "TG412", 3, "Need to have either a valid P or a valid E word with M66"),
+    ("M66 P-1.5", "TG412", 3, "Need to have either a valid P or a valid E word with M66"),
+    # M70-M73 are in rs274's spindle group (interp_array.cc _ems)
+    ("M3 M70", "TG412", 3, "Two m codes used from same modal group"),
+    ("M73 M19", "TG412", 3, "Two m codes used from same modal group"),
+    # a cycle drills along the plane's axis: Y in G18, X in G19 (TG541, every family's rule)
+    ("G18\nG0 X0 Z5\nG81 X1 Z-1 R2\nG80", "TG541", 5,
+     "Y value unspecified in xz plane canned cycle"),
+    ("G19\nG81 Y1 Z1 R2\nG80", "TG541", 4, "X value unspecified in yz plane canned cycle"),
 ]
 
 
@@ -130,6 +166,26 @@ ACCEPTED = [
     # an M code written with a zero fraction is the M code
     "S100 M3.0\nM5.0",
     "M1.00001",
+    # G93 keeps rs274's feed rate, which the probe reads (review 15, 5)
+    "G93\nG38.2 X5",
+    "G93\nG94 F20\nG93\nG38.2 X5",
+    "G93\nG38.2 X5 F10",
+    # a probe that may not trip (G38.3, G38.5) may end where it starts; a probe after a code
+    # that moves the coordinates by an amount rs274 holds is not judged
+    "G38.3 Z0 F10",
+    "G91\nG38.5 X0 F10",
+    "G38.2 Z-1 F10\nG38.2 Z-1",
+    # G18's cycle needs no Z
+    "G18\nG81 X1 Y-1 R2\nG80",
+    "G19\nG81 Y1 X-1 R2\nG80",
+    "M66 P0 L0",
+    "M66 P0 L1 Q1",
+    "M66 E0 L0",
+    "M66 P-0.4 L0",
+    "M[1+2] S100\nM5",
+    "M[3.00001] S100\nM5",
+    "G0 X[1/0.5]",
+    "M3 S100\nM70\nM72",
 ]
 
 

@@ -149,6 +149,7 @@ impl Checker {
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
+        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
     }
