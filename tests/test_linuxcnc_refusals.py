@@ -68,6 +68,13 @@ REFUSED = [
     # a move in the block of the offset ends where it says in the new coordinates
     ("G55 G0 X1 Y0\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
     ("G43 H1 G0 X1 Y0 Z1\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    # a tool length offset moves Z (and X in G18, a lathe's plane): a G17 arc's X and Y stay
+    # known; G92 sets the axes it names to its values exactly (review 15, finding 8)
+    ("G43 H1\nG2 X0 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    ("G0 X1 Y0\nG43 H1 Z1\nG2 X1 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G0 X1 Y0\nG92 X0\nG2 X0 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G28\nG92 X0 Y0\nG2 X0 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G43.1 Z1\nG2 X0 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
     # an R word alone runs no arc: rs274 names the word, and nothing more (review 14, 9)
     ("G2 X2 Y0 R1\nR2", "TG412", 4, "R word with no g code that uses it"),
     # a probe feeds per minute (interp_convert.cc convert_probe)
@@ -231,7 +238,10 @@ def test_after_a_call_the_motion_is_unknown_and_the_words_are_not_refused():
     # start moved by the tool offset ("too small" to reach a different end).
     ("G18\nG0 X1 Z0\nG43 H1\nG2 X1 Z0 R5", "Arc radius too small to reach end point"),
     ("G0 X1 Y0\nG59.3\nG2 X1 Y0 R5", "Current point same as end point of arc"),
-    ("G0 X1 Y0\nG43 H1 Z1\nG2 X1 R5", "Current point same as end point of arc"),
+    # G92 sets only the axes it names: Y is the machine's after G28
+    ("G28\nG92 X0\nG2 X0 Y0 R5", "Current point same as end point of arc"),
+    # G43.1's words are the offsets
+    ("G0 X1 Y0\nG43.1 X1\nG2 X1 Y0 R5", "PROGRAM_END"),
     # G53's words are machine coordinates: the same point only where no offset is in force
     ("G0 X1 Y0\nG53 G0 X1 Y0\nG2 X1 Y0 R5", "Current point same as end point of arc"),
 ])

@@ -1030,7 +1030,17 @@ mod tests {
             ("G55\nG2 X1 Y0 R5 F100", vec![]),
             ("G28\nG2 X1 Y0 R5 F100", vec![]),
             ("G38.2 X5 F10\nG2 X1 Y0 R5 F100", vec![]),
-            ("G43 H1\nG2 X1 Y0 R5 F100", vec![]),
+            // a tool length offset moves Z, and X in G18 (a lathe's table): not a G17 arc's
+            ("G43 H1\nG2 X1 Y0 R5 F100", vec![(5, 1)]),
+            ("G18\nG43 H1\nG2 X1 Z0 R5 F100", vec![]),
+            ("G18\nG43 H1\nG2 Z0 R5 F100", vec![]),
+            ("G49\nG2 X1 Y0 R5 F100", vec![(5, 1)]),
+            // G92 sets the axes it names exactly, and leaves the others
+            ("G92 X0\nG2 X0 Y0 R5 F100", vec![(5, 1)]),
+            ("G28\nG92 X0\nG2 X0 Y0 R5 F100", vec![]),
+            ("G28\nG92 X0 Y0\nG2 X0 Y0 R5 F100", vec![(6, 1)]),
+            ("G92 X#1\nG2 X0 Y0 R5 F100", vec![]),
+            ("G92.1\nG2 X1 Y0 R5 F100", vec![]),
             ("G53 G0 Z0\nG2 X1 Y0 R5 F100", vec![]),
             ("G55 G2 X1 Y0 R5 F100", vec![]),
             ("G55 G0 X1 Y0\nG2 X1 Y0 R5 F100", vec![(5, 1)]),

@@ -556,9 +556,10 @@ fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(Str
     None
 }
 
-/// LinuxCNC: whether a G code (in tenths) leaves the current point, in the coordinates the
-/// program writes, unknown to the checker (every axis then unsure,
-/// `Checker::linuxcnc_point_unsure`, until an absolute move names it): a work offset chosen
+/// LinuxCNC: whether a G code (in tenths) may leave the current point, in the coordinates the
+/// program writes, unknown to the checker (the axes `Checker::linuxcnc_unsure_after` says
+/// then unsure, `Checker::linuxcnc_point_unsure`, until an absolute move names them; a probe
+/// beside such a code is not judged): a work offset chosen
 /// (G54-G59.3) or set (G10), G92 and G52 shifts, a tool length offset taken or dropped (G43,
 /// G43.1, G43.2, G49: its table's values are the machine's), a return home (G28, G30: the
 /// home position is the machine's), a probe (G38.2-G38.5 stops at contact), a move in
@@ -746,11 +747,12 @@ impl Checker {
             };
         }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
-            self.linuxcnc_point_unsure = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
+            self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
         }
         // a block whose axis words are data, or a home, or machine coordinates (G10, G28,
-        // G30, G52, G53, G92), or whose codes are unknown, ends at no point it names
-        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_takes_axes(c));
+        // G30, G52, G53, G92), or a tool's offsets (G43.1), or whose codes are unknown, ends
+        // at no point it names
+        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_takes_axes(c) || c == 431);
         // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
         // letters the checks below read whatever the motion (D E H L P Q T), I J K R only in
         // an arc, and no cycle, thread or lathe cycle running. Nothing below can refuse it or
@@ -908,6 +910,56 @@ impl Checker {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
         }
         unsettles
+    }
+
+    /// The axes (`modal::bit`) whose current point the block's codes leave not known exactly
+    /// ([`linuxcnc_unsettles`]), and G92's named axes known again: every axis after most such
+    /// codes (a work offset, a home, a probe, G52, G53, G92.1-G92.3, the units, the diameter
+    /// mode, a G code set by a parameter); after a tool length offset taken or dropped (G43,
+    /// G43.2, G49) the axes a tool table's offsets move -- Z, and X in G18, a lathe's plane
+    /// (LinuxCNC's lathe tool table holds X and Z offsets; a mill's, lengths: the X and Y of a
+    /// G17 arc after `G43 H1` are where the program put them, as `rs274 -g` finds them);
+    /// after G43.1 the axes it names (their offsets). G92 sets the point of each axis it names
+    /// (with a value read) to that value exactly, in the new coordinates: those axes are known
+    /// after it (`G92 X0`, then `G2 X0 Y0 R5` from Y0: rs274's "Current point same as end
+    /// point of arc"), and it leaves the others where they were.
+    fn linuxcnc_unsure_after(&mut self, codes: &[i64], g_unread: bool, first: &[u32; 26]) -> u32 {
+        let all = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
+        let named = |a: u8| first[usize::from(a - b'A')] != 0;
+        let mut unsure = 0;
+        for &c in codes {
+            unsure |= match c {
+                430 | 432 | 490 if !g_unread => {
+                    bit(b'Z')
+                        | if self.machine.state.plane == 18 {
+                            bit(b'X')
+                        } else {
+                            0
+                        }
+                }
+                431 if !g_unread => crate::modal::AXES
+                    .iter()
+                    .filter(|&&a| named(a))
+                    .fold(0, |m, &a| m | bit(a)),
+                920 if !g_unread => 0,
+                c if linuxcnc_unsettles(c) => all,
+                _ => 0,
+            };
+        }
+        if g_unread {
+            unsure = all;
+        }
+        if codes.contains(&920) && !g_unread {
+            let known = crate::modal::AXES
+                .iter()
+                .filter(|&&a| {
+                    named(a) && self.readable[first[usize::from(a - b'A')] as usize - 1].is_some()
+                })
+                .fold(0, |m, &a| m | bit(a));
+            self.linuxcnc_point_unsure &= !known;
+            unsure &= !known;
+        }
+        unsure
     }
 
     /// Whether a probe move ends exactly where it starts, as rs274ngc's `convert_probe` compares
