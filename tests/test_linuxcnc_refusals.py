@@ -119,6 +119,13 @@ REFUSED = [
     # M70-M73 are in rs274's spindle group (interp_array.cc _ems)
     ("M3 M70", "TG412", 3, "Two m codes used from same modal group"),
     ("M73 M19", "TG412", 3, "Two m codes used from same modal group"),
+    # NURBS (interp_convert.cc convert_nurbs): each point's weight, the order, G5.2 first
+    ("G5.2 X1 Y1 L3\nX2 Y2\nG5.3", "TG412", 4,
+     "Must specify positive weight P for every Control Point"),
+    ("G5.2 X1 Y1 P1\nG5.3", "TG412", 4,
+     "You must specify a number of control points at least equal to the order L = 3"),
+    ("G5.3", "TG412", 3, "Cannot use G5.3 without G5.2 first"),
+    ("G5.2 X1 P1", "TG412", 3, "You must specify both X and Y coordinates for Control Points"),
     # a cycle drills along the plane's axis: Y in G18, X in G19 (TG541, every family's rule)
     ("G18\nG0 X0 Z5\nG81 X1 Z-1 R2\nG80", "TG541", 5,
      "Y value unspecified in xz plane canned cycle"),
@@ -193,6 +200,8 @@ ACCEPTED = [
     "M[3.00001] S100\nM5",
     "G0 X[1/0.5]",
     "M3 S100\nM70\nM72",
+    "G5.2 X1 Y1 P1 L3\nX2 Y2 P1\nX3 Y0 P1\nG5.3",
+    "G5.2 P1\nX1 Y1 P1\nX2 Y0 P1\nG5.3\nG1 X0",
 ]
 
 

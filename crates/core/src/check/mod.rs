@@ -735,6 +735,8 @@ pub struct Checker {
     /// LinuxCNC: rs274ngc's feed rate, which its probe moves and canned cycles read
     /// ([`tooling::LinuxCncFeed`]).
     linuxcnc_feed_rate: tooling::LinuxCncFeed,
+    /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
+    linuxcnc_nurbs: tooling::Nurbs,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
     data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
@@ -886,6 +888,7 @@ impl Checker {
             linuxcnc_point_unsure: 0,
             linuxcnc_cycle_bottom: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
+            linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_dynamic_compensation: false,
             data_input,
             programs: 0,
@@ -1234,6 +1237,7 @@ impl Checker {
                 self.linuxcnc_spindle_unknown = true;
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
+                self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1470,6 +1474,7 @@ impl Checker {
             self.linuxcnc_spindle_unknown = true;
             self.linuxcnc_compensation_unknown = true;
             self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
+            self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every

@@ -150,6 +150,7 @@ impl Checker {
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+        self.linuxcnc_nurbs = super::tooling::Nurbs::default();
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
     }

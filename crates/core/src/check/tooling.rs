@@ -151,6 +151,40 @@ fn linuxcnc_m66(words: &Written<'_>) -> Option<&'static str> {
     None
 }
 
+/// The control points rs274ngc holds for a NURBS (G5.2 blocks, drawn by G5.3): a list kept
+/// from the first G5.2 block, whose first point is the current point, to the G5.3 that draws
+/// the curve and empties it (interp_convert.cc `convert_nurbs`, a static list: a G5.2 after
+/// another motion empties it only after its own checks).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Nurbs {
+    /// How many control points the list holds.
+    points: u32,
+    /// The curve's order: 3 from the first point, or the last G5.2 block's L above 3 (rs274's
+    /// `nurbs_order`).
+    order: u32,
+    /// After a call or jump the checker does not follow: not known until a G5.3 empties it.
+    unknown: bool,
+}
+
+impl Default for Nurbs {
+    fn default() -> Nurbs {
+        Nurbs {
+            points: 0,
+            order: 3,
+            unknown: false,
+        }
+    }
+}
+
+impl Nurbs {
+    pub(super) fn unknown() -> Nurbs {
+        Nurbs {
+            unknown: true,
+            ..Nurbs::default()
+        }
+    }
+}
+
 /// Why rs274ngc's feed rate is zero where a probe or a cycle reads it ([`LinuxCncFeed`]),
 /// under the feed mode `mode` after the block, with the block's F `f`.
 fn linuxcnc_no_feed(mode: i64, f: Option<Dec>) -> &'static str {
@@ -906,6 +940,37 @@ impl Checker {
             }
         }
 
+        // the NURBS control points: a G5.3 draws and empties the list, a G5.2 block adds its
+        // point (a new list where the motion before was another)
+        if codes.contains(&53) {
+            self.linuxcnc_nurbs = Nurbs::default();
+            if self.linuxcnc_motion == LinuxCncMotion::Known(Some(52)) && given != Some(52) {
+                self.linuxcnc_motion = LinuxCncMotion::Known(None);
+            }
+        }
+        if runs == Some(52) {
+            let nurbs = &mut self.linuxcnc_nurbs;
+            if before != LinuxCncMotion::Known(Some(52)) {
+                *nurbs = Nurbs {
+                    unknown: before == LinuxCncMotion::Unknown,
+                    ..Nurbs::default()
+                };
+            }
+            if nurbs.points == 0 {
+                nurbs.points = 1;
+                nurbs.order = 3;
+            }
+            match words.value(b'L') {
+                Some(l) if l.to_f64() > 3.0 => {
+                    nurbs.order = u32::try_from(l.trunc()).unwrap_or(u32::MAX);
+                }
+                None if words.has(b'L') => nurbs.unknown = true,
+                _ => {}
+            }
+            if words.has(b'X') && words.has(b'Y') {
+                nurbs.points = nurbs.points.saturating_add(1);
+            }
+        }
         if let Some((message, letter)) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
         }
@@ -960,6 +1025,52 @@ impl Checker {
             unsure &= !known;
         }
         unsure
+    }
+
+    /// rs274ngc's refusal of a G5.2 block, a NURBS control point, in `convert_nurbs`' order:
+    /// X without Y or Y without X; a P without X and Y but on the first point (a weight for
+    /// the start); no P above zero (the point's weight; rs274's value for no P is -1) where
+    /// the list holds points already; under G94 a feed rate of zero. The list is the one rs274
+    /// holds before the block (a G5.2 after another motion empties it after these checks).
+    fn linuxcnc_nurbs_point(
+        &self,
+        words: &Written<'_>,
+        before: LinuxCncMotion,
+    ) -> Option<&'static str> {
+        let (x, y) = (words.has(b'X'), words.has(b'Y'));
+        if x != y {
+            return Some(
+                "You must specify both X and Y coordinates for Control Points (rs274ngc): a \
+                 G5.2 block's point",
+            );
+        }
+        let nurbs = self.linuxcnc_nurbs;
+        let held = if before == LinuxCncMotion::Known(Some(52)) || !nurbs.unknown {
+            !nurbs.unknown && nurbs.points > 0
+        } else {
+            false
+        };
+        let p = words.value(b'P');
+        let p_unknown = words.has(b'P') && p.is_none();
+        let p_positive = p.is_some_and(|p| p > Dec::ZERO);
+        if held && !x && !y && p_positive {
+            return Some(
+                "Can specify P without X and Y only for the first control point (rs274ngc)",
+            );
+        }
+        if held && !p_unknown && !p_positive {
+            return Some(
+                "Must specify positive weight P for every Control Point (rs274ngc): P is the \
+                 point's weight",
+            );
+        }
+        if self.machine.state.feed_mode == 94 && self.linuxcnc_feed_rate == LinuxCncFeed::Zero {
+            return Some(
+                "Cannot make a NURBS with 0 feedrate (rs274ngc): no F since the start or the \
+                 last G94 or G95",
+            );
+        }
+        None
     }
 
     /// Whether a probe move ends exactly where it starts, as rs274ngc's `convert_probe` compares
@@ -1180,7 +1291,32 @@ impl Checker {
                 ));
             }
         }
+        // G5.3 draws the NURBS (a code of group 0, run before the motion: interp_convert.cc
+        // convert_nurbs)
+        if codes.contains(&53) && before != LinuxCncMotion::Unknown && !self.linuxcnc_nurbs.unknown
+        {
+            if before != LinuxCncMotion::Known(Some(52)) {
+                return Some(
+                    "Cannot use G5.3 without G5.2 first (rs274ngc): G5.3 draws the curve of \
+                     the G5.2 blocks before it"
+                        .into(),
+                );
+            }
+            let nurbs = self.linuxcnc_nurbs;
+            if nurbs.points < nurbs.order {
+                return Some(format!(
+                    "You must specify a number of control points at least equal to the order \
+                     L = {} (rs274ngc): the curve has {} (the start and the G5.2 blocks' X Y)",
+                    nurbs.order, nurbs.points
+                ));
+            }
+        }
         let motion = runs?;
+        if motion == 52 {
+            if let Some(message) = self.linuxcnc_nurbs_point(words, before) {
+                return Some(message.into());
+            }
+        }
         // interp_convert.cc convert_probe, in its order: a probe move stops at contact, so it
         // runs without cutter compensation, at a feed per minute that is not zero (rs274
         // starts at F0; a feed set by a parameter is not judged)
@@ -2587,6 +2723,54 @@ mod tests {
             // interp_array.cc _ems: M70-M73 are in the spindle's group 7
             ("M5 M71", &["4: Two m codes used from same modal group"]),
             ("M70\nM3 S10\nM72 M8", &[]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+    }
+
+    #[test]
+    fn linuxcnc_nurbs_as_rs274_holds_its_control_points() {
+        // interp_convert.cc convert_nurbs and convert_modal_0, each compared with rs274 -g
+        let cases: &[(&str, &[&str])] = &[
+            ("F100\nG5.2 X1 Y1 P1 L3\nX2 Y2 P1\nX3 Y0 P1\nG5.3", &[]),
+            // the start is the first point: two G5.2 points make the order 3
+            ("F100\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3", &[]),
+            ("F100\nG5.2 P1 L3\nX1 Y1 P1\nX2 Y0 P1\nG5.3", &[]),
+            (
+                "F100\nG5.2 X1 Y1\nX2 Y2\nG5.3",
+                &["6: Must specify positive weight P for every Control Point"],
+            ),
+            (
+                "F100\nG5.2 X1 Y1 P1\nG5.3",
+                &["6: You must specify a number of control points at least equal to the order L = 3"],
+            ),
+            (
+                "F100\nG5.2 X1 Y1 P1 L4\nX2 Y2 P1\nG5.3",
+                &["7: You must specify a number of control points at least equal to the order L = 4"],
+            ),
+            ("F100\nG5.3", &["5: Cannot use G5.3 without G5.2 first"]),
+            (
+                "F100\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG5.3",
+                &["8: Cannot use G5.3 without G5.2 first"],
+            ),
+            (
+                "F100\nG5.2 X1 P1",
+                &["5: You must specify both X and Y coordinates for Control Points"],
+            ),
+            (
+                "F100\nG5.2 X1 Y1 P1\nP2 G5.2",
+                &["6: Can specify P without X and Y only for the first control point"],
+            ),
+            // the list is static: a G5.2 after another motion checks the old list first
+            (
+                "F100\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG1 X0\nG5.2 X1 Y1\nX2 Y2 P1\nG5.3",
+                &["8: Must specify positive weight P for every Control Point"],
+            ),
+            ("G5.2 X1 Y1 P1", &["4: Cannot make a NURBS with 0 feedrate"]),
+            // a weight set by a parameter, or a call, is not judged
+            ("F100\nG5.2 X1 Y1 P1\nX2 Y2 P#1\nG5.3", &[]),
+            ("F100\nG5.2 X1 Y1 P1\no100 call\nG5.3", &[]),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
