@@ -119,6 +119,12 @@ REFUSED = [
     # M70-M73 are in rs274's spindle group (interp_array.cc _ems)
     ("M3 M70", "TG412", 3, "Two m codes used from same modal group"),
     ("M73 M19", "TG412", 3, "Two m codes used from same modal group"),
+    # a local named parameter read before any line sets it (interp_namedparams.cc)
+    ("G0 X#<nope>", "TG412", 3, "Named parameter #<nope> not defined"),
+    ("o1 if [#<nope> GT 0]\no1 endif", "TG412", 3, "Named parameter #<nope> not defined"),
+    ("G0 X#<x> #<x>=1", "TG412", 3, "Named parameter #<x> not defined"),
+    ("o<s> sub\n#<q> = 1\no<s> endsub\no<s> call\nG0 X#<q>", "TG412", 7,
+     "Named parameter #<q> not defined"),
     # NURBS (interp_convert.cc convert_nurbs): each point's weight, the order, G5.2 first
     ("G5.2 X1 Y1 L3\nX2 Y2\nG5.3", "TG412", 4,
      "Must specify positive weight P for every Control Point"),
@@ -202,6 +208,8 @@ ACCEPTED = [
     "M3 S100\nM70\nM72",
     "G5.2 X1 Y1 P1 L3\nX2 Y2 P1\nX3 Y0 P1\nG5.3",
     "G5.2 P1\nX1 Y1 P1\nX2 Y0 P1\nG5.3\nG1 X0",
+    "#<x> = [#<x> + 1]\n#<y>=1 G0 X#<y>\n#<z> = EXISTS[#<nope>]\nG0 X#< X >",
+    "o<s> sub\nG0 X#<inner>\no<s> endsub\nG0 X1",
 ]
 
 

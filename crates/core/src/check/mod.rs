@@ -757,6 +757,9 @@ pub struct Checker {
     /// LinuxCNC: the subroutines the main program has defined so far, and those it called
     /// before their definition (label, line of the first call).
     linuxcnc_defined: Vec<Vec<u8>>,
+    /// LinuxCNC: the local named parameters (`#<name>`, as `params::named_parameter` writes
+    /// them) the main program has assigned so far (`Checker::linuxcnc_named_reads`).
+    linuxcnc_named: HashSet<Vec<u8>>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
@@ -875,6 +878,7 @@ impl Checker {
             sub_label: Vec::new(),
             open_definition: None,
             linuxcnc_defined: Vec::new(),
+            linuxcnc_named: HashSet::new(),
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,
