@@ -194,7 +194,11 @@ impl Checker {
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
         self.definition_open(b, statement.as_ref());
-        if statement.is_none() && self.open_definition.is_none() && self.ended_line == 0 {
+        if statement.is_none()
+            && self.open_definition.is_none()
+            && self.ended_line == 0
+            && (!b.statements.is_empty() || b.words.iter().any(|w| !w.expression.is_empty()))
+        {
             self.linuxcnc_named_reads(b);
         }
         if self.sub_file == SubFile::No {
@@ -294,6 +298,7 @@ impl Checker {
     /// predefines many: `#<_x>`, `#<_metric>`, `#<_ini[..]>`), a read inside `EXISTS[..]`, a
     /// comment's (`(DEBUG, #<x>)`), and a subroutine's body, whose locals a remap's words or
     /// its own lines give.
+    #[inline(never)]
     fn linuxcnc_named_reads(&mut self, b: &BlockView<'_>) {
         let mut undefined: Option<(Vec<u8>, usize)> = None;
         for w in b.words {

@@ -42,6 +42,8 @@ pub(super) enum LinuxCncFeed {
 /// judged: an expression of parameters or functions (their values the checker does not
 /// follow) and one longer than 200 bytes (a chain of terms is a tree as deep, walked by
 /// recursion).
+#[cold]
+#[inline(never)]
 fn linuxcnc_read_expression(w: &crate::word::Word<'_>) -> Option<(String, u8)> {
     if w.expression.len() > 200 {
         return None;
@@ -714,7 +716,6 @@ impl Checker {
         // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
         let mut g_unread = false;
         let mut dollar = false;
-        let mut polar = false;
         let mut m_fraction = 0u32;
         // a refusal of a word's expression while rs274 reads it (`linuxcnc_read_expression`)
         let mut read_refusal = None;
@@ -749,7 +750,6 @@ impl Checker {
                 }
                 (b'G', None) => g_unread = true,
                 (b'$', _) => dollar = true,
-                (b'@' | b'^', _) => polar = true,
                 (b'M', _) => {
                     m_words += 1;
                     if m_fraction == 0
@@ -827,7 +827,7 @@ impl Checker {
                         first,
                         readable: &self.readable,
                         dollar: false,
-                        polar,
+                        polar: false,
                         m_fraction: 0,
                         read_refusal: None,
                     };
@@ -885,7 +885,7 @@ impl Checker {
             first,
             readable: &self.readable,
             dollar,
-            polar,
+            polar: b.words.iter().any(|w| matches!(w.letter, b'@' | b'^')),
             m_fraction,
             read_refusal,
         };
@@ -988,6 +988,7 @@ impl Checker {
     /// (with a value read) to that value exactly, in the new coordinates: those axes are known
     /// after it (`G92 X0`, then `G2 X0 Y0 R5` from Y0: rs274's "Current point same as end
     /// point of arc"), and it leaves the others where they were.
+    #[inline(never)]
     fn linuxcnc_unsure_after(&mut self, codes: &[i64], g_unread: bool, first: &[u32; 26]) -> u32 {
         let all = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
         let named = |a: u8| first[usize::from(a - b'A')] != 0;
