@@ -684,20 +684,23 @@ impl<'r> Written<'r> {
 }
 
 impl Checker {
-    /// TG412: the refusals of LinuxCNC's interpreter in its canned cycles (interp_cycles.cc
-    /// `convert_cycle` and the cycle functions), its G76 threading cycle
-    /// (interp_check.cc `check_other_codes`), its G70-G72 lathe cycles (interp_g7x.cc
-    /// `convert_g7x`) and its dynamic cutter compensation (interp_convert.cc
-    /// `convert_cutter_compensation_on`), each with rs274ngc's message. rs274 stops at its
-    /// first error: the first refusal of a block is said. A block runs the motion mode when
-    /// it gives its code or axis words for it; a repeated cycle keeps the P, Q, I J K of the
-    /// block that started it. After a jump or a call the motion mode is unknown: nothing that
-    /// depends on it is said.
-    /// Marks the current point unknown after a code that moves it ([`linuxcnc_unsettles`], or
-    /// a G word set by a parameter), and returns whether the block's axis words name no point
-    /// it ends at in the active coordinates (G10, G28, G30, G52, G53, G92 take them as data,
-    /// a home's intermediate point or machine coordinates): the caller does not take them as
-    /// known then. A G0-G3 move in the block of a G55 or a G43 ends where it says.
+    /// TG412: the refusals of LinuxCNC's interpreter while it reads a block (whole numbers,
+    /// expressions of numbers, M groups, motion codes without axes), checks its words against
+    /// its codes (interp_check.cc), and runs it: M66, probes, NURBS, threads, its canned
+    /// cycles (interp_cycles.cc `convert_cycle` and the cycle functions), its G70-G72 lathe
+    /// cycles (interp_g7x.cc `convert_g7x`) and its dynamic cutter compensation
+    /// (interp_convert.cc `convert_cutter_compensation_on`), each with rs274ngc's message.
+    /// rs274 stops at its first error: the first refusal of a block is said. A block runs the
+    /// motion mode when it gives its code or axis words for it; a repeated cycle keeps the P,
+    /// Q, I J K of the block that started it. After a jump or a call the motion mode is
+    /// unknown: nothing that depends on it is said. Follows rs274's own feed rate
+    /// ([`LinuxCncFeed`]) and NURBS control points ([`Nurbs`]).
+    /// Marks the current point unknown on the axes a code moves it by an amount the checker
+    /// does not follow ([`Checker::linuxcnc_unsure_after`]), and returns whether the block's
+    /// axis words name no point it ends at in the active coordinates (G10, G28, G30, G52, G53,
+    /// G92 take them as data, a home's intermediate point or machine coordinates, G43.1 as
+    /// offsets): the caller does not take them as known then. A G0-G3 move in the block of a
+    /// G55 or a G43 ends where it says.
     pub(super) fn linuxcnc_refusals(
         &mut self,
         b: &BlockView<'_>,
@@ -1033,11 +1036,7 @@ impl Checker {
     /// the start); no P above zero (the point's weight; rs274's value for no P is -1) where
     /// the list holds points already; under G94 a feed rate of zero. The list is the one rs274
     /// holds before the block (a G5.2 after another motion empties it after these checks).
-    fn linuxcnc_nurbs_point(
-        &self,
-        words: &Written<'_>,
-        before: LinuxCncMotion,
-    ) -> Option<&'static str> {
+    fn linuxcnc_nurbs_point(&self, words: &Written<'_>) -> Option<&'static str> {
         let (x, y) = (words.has(b'X'), words.has(b'Y'));
         if x != y {
             return Some(
@@ -1046,11 +1045,7 @@ impl Checker {
             );
         }
         let nurbs = self.linuxcnc_nurbs;
-        let held = if before == LinuxCncMotion::Known(Some(52)) || !nurbs.unknown {
-            !nurbs.unknown && nurbs.points > 0
-        } else {
-            false
-        };
+        let held = !nurbs.unknown && nurbs.points > 0;
         let p = words.value(b'P');
         let p_unknown = words.has(b'P') && p.is_none();
         let p_positive = p.is_some_and(|p| p > Dec::ZERO);
@@ -1314,7 +1309,7 @@ impl Checker {
         }
         let motion = runs?;
         if motion == 52 {
-            if let Some(message) = self.linuxcnc_nurbs_point(words, before) {
+            if let Some(message) = self.linuxcnc_nurbs_point(words) {
                 return Some(message.into());
             }
         }
