@@ -269,3 +269,27 @@ def test_an_r_arc_after_an_offset_the_machine_holds_is_not_judged(tmp_path, body
     text = program(body)
     assert [f for f in errors(text) if f[0] == "TG412"] == []
     assert rs274_says in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body", [
+    # a probe and a NURBS read rs274's feed rate, not an inverse time: no F under G93 where
+    # they run after a G1 (review 15's fuzzing against rs274)
+    "G93 G1 X1 F2\nG38.2 X5\nX6",
+    "G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3",
+    # G43.1's axis words are offsets: no probe or NURBS point runs them
+    "G38.2 X1 Y0\nF0\nG43.1 Z1",
+    "G5.2 X1 Y1 P1\nG43.1 Z1",
+    # an M code of unknown value may start the spindle
+    "M[1+2] S100\nG33 Z-1 K1",
+])
+def test_linuxcnc_programs_rs274_runs_have_no_error(tmp_path, body):
+    text = program(body)
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+def test_g93_still_asks_a_g1_for_its_f_after_a_nurbs(tmp_path):
+    text = program("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG1 X3")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG402", 7)]
+    assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)

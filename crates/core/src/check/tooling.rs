@@ -872,7 +872,8 @@ impl Checker {
         } else if g_unread {
             self.linuxcnc_motion = LinuxCncMotion::Unknown;
         }
-        let data = codes.iter().any(|&c| linuxcnc_takes_axes(c));
+        // (G43.1's axis words are the tool's offsets: no motion runs them, enhance_block)
+        let data = codes.iter().any(|&c| linuxcnc_takes_axes(c) || c == 431);
         let ijk = [b'I', b'J', b'K']
             .iter()
             .any(|&l| first[usize::from(l - b'A')] != 0);
@@ -903,6 +904,10 @@ impl Checker {
         let spindle_set = ms.iter().any(|&m| matches!(m, 3..=5));
         if spindle_set {
             self.linuxcnc_spindle_unknown = false;
+        } else if n_m < m_words.min(held_m.len()) {
+            // an M code of unknown value (`M[1+2]`, `M#1`) may start, stop or change the
+            // spindle's tool: its direction is unknown until M3, M4 or M5
+            self.linuxcnc_spindle_unknown = true;
         }
         // M6 stops the spindle; an M3, M4 or M5 of its block comes after it (rs274ngc's
         // order of execution: the tool change, then the spindle)
@@ -2719,6 +2724,15 @@ mod tests {
             // interp_array.cc _ems: M70-M73 are in the spindle's group 7
             ("M5 M71", &["4: Two m codes used from same modal group"]),
             ("M70\nM3 S10\nM72 M8", &[]),
+            // G43.1's axis words are offsets: no probe or NURBS point runs them
+            ("G38.2 X1 Y0 F10\nG94\nG43.1 Z1", &[]),
+            ("F10\nG5.2 X1 Y1 P1\nG43.1 Z1", &[]),
+            // an M code of unknown value may start the spindle: no thread refused after it
+            ("M[1+2] S100\nG33 Z-1 K1", &[]),
+            (
+                "M#1 S100\nM5\nG33 Z-1 K1",
+                &["6: Spindle not turning in G33"],
+            ),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
@@ -2771,6 +2785,32 @@ mod tests {
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_probes_and_nurbs_need_no_f_under_g93() {
+        // they read rs274's feed rate (convert_probe, convert_nurbs); a G1 after them needs
+        // its F again, as rs274 says ("F word missing with inverse time g1 move")
+        let inverse = |body: &str| {
+            let text = program(&format!("G21 G90 G17\nG0 X0 Y0 Z5\nF100\n{body}"));
+            fired(
+                of_family(Family::LinuxCnc),
+                &text,
+                Rule::InverseTimeWithoutFeed,
+            )
+        };
+        assert_eq!(inverse("G93 G1 X1 F2\nG38.2 X5\nX6"), []);
+        assert_eq!(inverse("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3"), []);
+        assert_eq!(
+            inverse("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG1 X3"),
+            [(9, 4)]
+        );
+        // another family's G93 asks every motion block for its F
+        let text = program("G21 G90 G17\nG0 X0 Y0 Z5\nG93 G1 X1 F2\nX6");
+        assert_eq!(
+            fired(iso_mill(), &text, Rule::InverseTimeWithoutFeed).len(),
+            1
+        );
     }
 
     #[test]
