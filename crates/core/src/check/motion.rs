@@ -118,12 +118,14 @@ impl Checker {
         // LinuxCNC's probes and NURBS points read rs274's feed rate, not the block's inverse
         // time (interp_convert.cc convert_probe, convert_nurbs): no F needed under G93 where
         // one of them runs, which the modal state, keeping the G1 before it, takes for a G1
-        let rs274_rate = self.config.family == Family::LinuxCnc
-            && matches!(
-                self.linuxcnc_motion,
-                super::tooling::LinuxCncMotion::Known(Some(52 | 382..=385))
-            );
-        if feed_motion && self.machine.state.feed_mode == 93 && !has_f && !rs274_rate {
+        let rs274_rate = || {
+            self.config.family == Family::LinuxCnc
+                && matches!(
+                    self.linuxcnc_motion,
+                    super::tooling::LinuxCncMotion::Known(Some(52 | 382..=385))
+                )
+        };
+        if feed_motion && self.machine.state.feed_mode == 93 && !has_f && !rs274_rate() {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
                 Rule::InverseTimeWithoutFeed,
