@@ -125,6 +125,8 @@ REFUSED = [
     ("G0 X#<x> #<x>=1", "TG412", 3, "Named parameter #<x> not defined"),
     ("o<s> sub\n#<q> = 1\no<s> endsub\no<s> call\nG0 X#<q>", "TG412", 7,
      "Named parameter #<q> not defined"),
+    # G43 takes no axis word without a motion mode (G43.1 and G43.2 do: enhance_block)
+    ("G80\nG43 H1 Z1", "TG411", 4, "Z with no motion mode in force"),
     # NURBS (interp_convert.cc convert_nurbs): each point's weight, the order, G5.2 first
     ("G5.2 X1 Y1 L3\nX2 Y2\nG5.3", "TG412", 4,
      "Must specify positive weight P for every Control Point"),
@@ -150,7 +152,8 @@ def test_linuxcnc_refuses_a_block_rs274_refuses(tmp_path, body, rule, line, mess
 
 
 # rs274's message where tapegate says it in its own words
-RS274_SAYS = {"TG511": "F word used with a g33/g33.1"}
+RS274_SAYS = {"TG511": "F word used with a g33/g33.1",
+              "TG411": "Cannot use axis values without a g code that uses them"}
 
 
 # Blocks rs274 runs: the same letters where a code of the block, or the motion it runs,
@@ -281,6 +284,8 @@ def test_an_r_arc_after_an_offset_the_machine_holds_is_not_judged(tmp_path, body
     "G5.2 X1 Y1 P1\nG43.1 Z1",
     # an M code of unknown value may start the spindle
     "M[1+2] S100\nG33 Z-1 K1",
+    # G43.1 takes its offsets without a motion mode in force (enhance_block)
+    "G1 X1\nG80\nG43.1 Z1",
 ])
 def test_linuxcnc_programs_rs274_runs_have_no_error(tmp_path, body):
     text = program(body)

@@ -544,6 +544,17 @@ impl Checker {
                 continue;
             }
             takes_axes |= v.is_whole() && matches!(n, 10 | 28 | 30 | 52 | 92);
+            // LinuxCNC's G43.1 and G43.2 take axis words without a motion mode in force
+            // (interp_internal.cc enhance_block: their offsets)
+            takes_axes |= self.config.family == Family::LinuxCnc
+                && n == 43
+                && matches!(
+                    v.normalized(),
+                    Dec {
+                        mantissa: 431 | 432,
+                        scale: 1
+                    }
+                );
             let group = if v.is_whole() {
                 group_of(&self.config, b'G', n)
             } else {
