@@ -452,6 +452,24 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "o100 call\nM2\no100 sub\nG0 X1\no100 endsub\n", 0, "accepted"),
     # rs274 reads no byte outside its language (interp_read.cc read_text)
     ("UTF-8 byte order mark", "\ufeff" + HEAD + "G1 X10 F100\nM2\n", 1, "error"),
+    # review 15, findings 5 and 8: rs274's feed rate, which G93 keeps (interp_convert.cc)
+    ("probe after G93 keeps the feed rate", HEAD + "F100\nG93\nG38.2 X5\nM2\n", 0, "accepted"),
+    ("probe after G94 without F", HEAD + "F100\nG93\nG94\nG38.2 X5\nM2\n", 6, "error"),
+    ("cycle under G93", HEAD + "F100\nG93\nG81 X1 Y1 Z-1 R1\nG80\nM2\n", 5, "error"),
+    ("probe ending where it starts", HEAD + "G38.2 Z5 F10\nM2\n", 3, "error"),
+    ("G18 cycle without Y", "G21 G18 G90 G94\nG0 X0 Z5\nG81 X1 Z-1 R2 F100\nG80\nM2\n", 3,
+     "error"),
+    ("M code from an expression", HEAD + "M[3.5]\nM2\n", 3, "error"),
+    ("division by zero", HEAD + "G0 X[1/0]\nM2\n", 3, "error"),
+    ("M66 with P and E", HEAD + "M66 P0 E0 L0\nM2\n", 3, "error"),
+    ("M3 beside M70", HEAD + "M3 M70 S100\nM2\n", 3, "error"),
+    ("NURBS point without its weight", HEAD + "F100\nG5.2 X1 Y1 L3\nX2 Y2\nG5.3\nM2\n", 5,
+     "error"),
+    ("named parameter read before it is set", HEAD + "G0 X#<nope>\nM2\n", 3, "error"),
+    ("R arc after G43 H1 ending where it starts", HEAD + "G43 H1\nG2 X0 Y0 R5 F100\nM2\n", 4,
+     "error"),
+    ("R arc after G92 ending where it starts",
+     HEAD + "G0 X1 Y0\nG92 X0\nG2 X0 Y0 R5 F100\nM2\n", 5, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

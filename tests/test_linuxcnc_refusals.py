@@ -68,6 +68,13 @@ REFUSED = [
     # a move in the block of the offset ends where it says in the new coordinates
     ("G55 G0 X1 Y0\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
     ("G43 H1 G0 X1 Y0 Z1\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    # a tool length offset moves Z (and X in G18, a lathe's plane): a G17 arc's X and Y stay
+    # known; G92 sets the axes it names to its values exactly (review 15, finding 8)
+    ("G43 H1\nG2 X0 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    ("G0 X1 Y0\nG43 H1 Z1\nG2 X1 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G0 X1 Y0\nG92 X0\nG2 X0 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G28\nG92 X0 Y0\nG2 X0 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G43.1 Z1\nG2 X0 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
     # an R word alone runs no arc: rs274 names the word, and nothing more (review 14, 9)
     ("G2 X2 Y0 R1\nR2", "TG412", 4, "R word with no g code that uses it"),
     # a probe feeds per minute (interp_convert.cc convert_probe)
@@ -80,6 +87,57 @@ REFUSED = [
     ("M3 S100 M8.2", "TG412", 3, "Non integer value for integer"),
     # G33's lead is its K: TG511, every family's rule
     ("M3 S100\nG33 Z-1 K1 F1", "TG511", 4, "F must not be programmed"),
+    # rs274's feed rate, which a probe and a cycle read, is zeroed by G94 and G95 and set by
+    # an F under them alone: an F under G93 is its block's inverse time (review 15, 5)
+    ("G93\nG94\nG38.2 X5", "TG412", 5, "Cannot probe with zero feed rate"),
+    ("G94\nG93\nG38.2 X5 F10", "TG412", 5, "Cannot probe with zero feed rate"),
+    ("G94\nG93\nG81 X1 Y1 Z-1 R1 F10", "TG412", 5, "Cannot feed with zero feed rate"),
+    # with a feed rate, a cycle under G93 is refused for G93 (interp_cycles.cc convert_cycle)
+    ("G93\nG81 X1 Y1 Z-1 R1", "TG412", 4, "Cannot use inverse time feed with canned cycles"),
+    # a probe that must trip and ends where it starts (interp_convert.cc convert_probe)
+    ("G38.2 Z0 F10", "TG412", 3, "Start point too close to probe point"),
+    ("G0 X1\nG38.2 X1 Y0", "TG412", 4, "Start point too close to probe point"),
+    ("G91\nG38.4 X0 F10", "TG412", 4, "Start point too close to probe point"),
+    # a motion code with no axis word (interp_internal.cc enhance_block)
+    ("G38.2 F10", "TG412", 3, "All axes missing with motion code"),
+    ("M3 S100\nG33 K1", "TG412", 4, "All axes missing with motion code"),
+    ("G5 I1 J1 P1 Q1", "TG412", 3, "All axes missing with motion code"),
+    # an expression of numbers: an M code that is no whole number, a division by zero
+    ("M[3.5]", "TG412", 3, "Non integer value for integer"),
+    ("M[7/2]", "TG412", 3, "Non integer value for integer"),
+    ("G0 X[1/0]", "TG412", 3, "Attempt to divide by zero"),
+    ("G0 X[1/[2-2]] Y1", "TG412", 3, "Attempt to divide by zero"),
+    ("G0 X[SIN[1/0]]", "TG412", 3, "Attempt to divide by zero"),
+    # M66's words (interp_convert.cc convert_m)
+    ("M66 P0 E0 L0", "TG412", 3,
+     "Invalid to select both a digital and an analog input with M66"),
+    ("M66 P0 L1", "TG412", 3, "Zero timeout with wait type != immediate return"),
+    ("M66 E0 L1 Q1", "TG412", 3,
+     "Can't select analog input with wait type != immediate return"),
+    ("M66 L0", "TG412", 3, "Need to have either a valid P or a valid E word with M66"),
+    ("M66 P-1.5", "TG412", 3, "Need to have either a valid P or a valid E word with M66"),
+    # M70-M73 are in rs274's spindle group (interp_array.cc _ems)
+    ("M3 M70", "TG412", 3, "Two m codes used from same modal group"),
+    ("M73 M19", "TG412", 3, "Two m codes used from same modal group"),
+    # a local named parameter read before any line sets it (interp_namedparams.cc)
+    ("G0 X#<nope>", "TG412", 3, "Named parameter #<nope> not defined"),
+    ("o1 if [#<nope> GT 0]\no1 endif", "TG412", 3, "Named parameter #<nope> not defined"),
+    ("G0 X#<x> #<x>=1", "TG412", 3, "Named parameter #<x> not defined"),
+    ("o<s> sub\n#<q> = 1\no<s> endsub\no<s> call\nG0 X#<q>", "TG412", 7,
+     "Named parameter #<q> not defined"),
+    # G43 takes no axis word without a motion mode (G43.1 and G43.2 do: enhance_block)
+    ("G80\nG43 H1 Z1", "TG411", 4, "Z with no motion mode in force"),
+    # NURBS (interp_convert.cc convert_nurbs): each point's weight, the order, G5.2 first
+    ("G5.2 X1 Y1 L3\nX2 Y2\nG5.3", "TG412", 4,
+     "Must specify positive weight P for every Control Point"),
+    ("G5.2 X1 Y1 P1\nG5.3", "TG412", 4,
+     "You must specify a number of control points at least equal to the order L = 3"),
+    ("G5.3", "TG412", 3, "Cannot use G5.3 without G5.2 first"),
+    ("G5.2 X1 P1", "TG412", 3, "You must specify both X and Y coordinates for Control Points"),
+    # a cycle drills along the plane's axis: Y in G18, X in G19 (TG541, every family's rule)
+    ("G18\nG0 X0 Z5\nG81 X1 Z-1 R2\nG80", "TG541", 5,
+     "Y value unspecified in xz plane canned cycle"),
+    ("G19\nG81 Y1 Z1 R2\nG80", "TG541", 4, "X value unspecified in yz plane canned cycle"),
 ]
 
 
@@ -94,7 +152,8 @@ def test_linuxcnc_refuses_a_block_rs274_refuses(tmp_path, body, rule, line, mess
 
 
 # rs274's message where tapegate says it in its own words
-RS274_SAYS = {"TG511": "F word used with a g33/g33.1"}
+RS274_SAYS = {"TG511": "F word used with a g33/g33.1",
+              "TG411": "Cannot use axis values without a g code that uses them"}
 
 
 # Blocks rs274 runs: the same letters where a code of the block, or the motion it runs,
@@ -130,6 +189,30 @@ ACCEPTED = [
     # an M code written with a zero fraction is the M code
     "S100 M3.0\nM5.0",
     "M1.00001",
+    # G93 keeps rs274's feed rate, which the probe reads (review 15, 5)
+    "G93\nG38.2 X5",
+    "G93\nG94 F20\nG93\nG38.2 X5",
+    "G93\nG38.2 X5 F10",
+    # a probe that may not trip (G38.3, G38.5) may end where it starts; a probe after a code
+    # that moves the coordinates by an amount rs274 holds is not judged
+    "G38.3 Z0 F10",
+    "G91\nG38.5 X0 F10",
+    "G38.2 Z-1 F10\nG38.2 Z-1",
+    # G18's cycle needs no Z
+    "G18\nG81 X1 Y-1 R2\nG80",
+    "G19\nG81 Y1 X-1 R2\nG80",
+    "M66 P0 L0",
+    "M66 P0 L1 Q1",
+    "M66 E0 L0",
+    "M66 P-0.4 L0",
+    "M[1+2] S100\nM5",
+    "M[3.00001] S100\nM5",
+    "G0 X[1/0.5]",
+    "M3 S100\nM70\nM72",
+    "G5.2 X1 Y1 P1 L3\nX2 Y2 P1\nX3 Y0 P1\nG5.3",
+    "G5.2 P1\nX1 Y1 P1\nX2 Y0 P1\nG5.3\nG1 X0",
+    "#<x> = [#<x> + 1]\n#<y>=1 G0 X#<y>\n#<z> = EXISTS[#<nope>]\nG0 X#< X >",
+    "o<s> sub\nG0 X#<inner>\no<s> endsub\nG0 X1",
 ]
 
 
@@ -175,7 +258,10 @@ def test_after_a_call_the_motion_is_unknown_and_the_words_are_not_refused():
     # start moved by the tool offset ("too small" to reach a different end).
     ("G18\nG0 X1 Z0\nG43 H1\nG2 X1 Z0 R5", "Arc radius too small to reach end point"),
     ("G0 X1 Y0\nG59.3\nG2 X1 Y0 R5", "Current point same as end point of arc"),
-    ("G0 X1 Y0\nG43 H1 Z1\nG2 X1 R5", "Current point same as end point of arc"),
+    # G92 sets only the axes it names: Y is the machine's after G28
+    ("G28\nG92 X0\nG2 X0 Y0 R5", "Current point same as end point of arc"),
+    # G43.1's words are the offsets
+    ("G0 X1 Y0\nG43.1 X1\nG2 X1 Y0 R5", "PROGRAM_END"),
     # G53's words are machine coordinates: the same point only where no offset is in force
     ("G0 X1 Y0\nG53 G0 X1 Y0\nG2 X1 Y0 R5", "Current point same as end point of arc"),
 ])
@@ -186,3 +272,29 @@ def test_an_r_arc_after_an_offset_the_machine_holds_is_not_judged(tmp_path, body
     text = program(body)
     assert [f for f in errors(text) if f[0] == "TG412"] == []
     assert rs274_says in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body", [
+    # a probe and a NURBS read rs274's feed rate, not an inverse time: no F under G93 where
+    # they run after a G1 (review 15's fuzzing against rs274)
+    "G93 G1 X1 F2\nG38.2 X5\nX6",
+    "G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3",
+    # G43.1's axis words are offsets: no probe or NURBS point runs them
+    "G38.2 X1 Y0\nF0\nG43.1 Z1",
+    "G5.2 X1 Y1 P1\nG43.1 Z1",
+    # an M code of unknown value may start the spindle
+    "M[1+2] S100\nG33 Z-1 K1",
+    # G43.1 takes its offsets without a motion mode in force (enhance_block)
+    "G1 X1\nG80\nG43.1 Z1",
+])
+def test_linuxcnc_programs_rs274_runs_have_no_error(tmp_path, body):
+    text = program(body)
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+def test_g93_still_asks_a_g1_for_its_f_after_a_nurbs(tmp_path):
+    text = program("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG1 X3")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG402", 7)]
+    assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)

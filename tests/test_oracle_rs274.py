@@ -59,6 +59,8 @@ BOTH = [
     "G1 after a G94 restated, without F",
     # TG412 too, but rs274's message names its file and line first (test below)
     "sub defined after its call",
+    # a cycle drills along the plane's axis (TG541, every family's rule)
+    "G18 cycle without Y",
     # TG412: rs274's own refusals
     "G53 under G2",
     "G83 without Q",
@@ -103,6 +105,18 @@ BOTH = [
     "G33 with the spindle stopped",
     "G33 after a tool change",
     "UTF-8 byte order mark",
+    # review 15, findings 5 and 8
+    "probe after G94 without F",
+    "cycle under G93",
+    "probe ending where it starts",
+    "M code from an expression",
+    "division by zero",
+    "M66 with P and E",
+    "M3 beside M70",
+    "NURBS point without its weight",
+    "named parameter read before it is set",
+    "R arc after G43 H1 ending where it starts",
+    "R arc after G92 ending where it starts",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -111,7 +125,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "cycle after a call that cancels the compensation",
        "E words with G33, G76 and M66-M68",
        # P and H words with the codes that use them; a definition after M2 is never reached
-       "P and H words their codes use", "sub defined after its call and M2"]
+       "P and H words their codes use", "sub defined after its call and M2",
+       # G93 keeps rs274's feed rate, which a probe reads (review 15, finding 5)
+       "probe after G93 keeps the feed rate"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 

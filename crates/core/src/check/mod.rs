@@ -732,6 +732,11 @@ pub struct Checker {
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
+    /// LinuxCNC: rs274ngc's feed rate, which its probe moves and canned cycles read
+    /// ([`tooling::LinuxCncFeed`]).
+    linuxcnc_feed_rate: tooling::LinuxCncFeed,
+    /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
+    linuxcnc_nurbs: tooling::Nurbs,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
     data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
@@ -752,6 +757,9 @@ pub struct Checker {
     /// LinuxCNC: the subroutines the main program has defined so far, and those it called
     /// before their definition (label, line of the first call).
     linuxcnc_defined: Vec<Vec<u8>>,
+    /// LinuxCNC: the local named parameters (`#<name>`, as `params::named_parameter` writes
+    /// them) the main program has assigned so far (`Checker::linuxcnc_named_reads`).
+    linuxcnc_named: HashSet<Vec<u8>>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
@@ -870,6 +878,7 @@ impl Checker {
             sub_label: Vec::new(),
             open_definition: None,
             linuxcnc_defined: Vec::new(),
+            linuxcnc_named: HashSet::new(),
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,
@@ -882,6 +891,8 @@ impl Checker {
             linuxcnc_tool_change_stopped: false,
             linuxcnc_point_unsure: 0,
             linuxcnc_cycle_bottom: None,
+            linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
+            linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_dynamic_compensation: false,
             data_input,
             programs: 0,
@@ -1229,6 +1240,8 @@ impl Checker {
                 self.polar = polar::Polar::default();
                 self.linuxcnc_spindle_unknown = true;
                 self.linuxcnc_compensation_unknown = true;
+                self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
+                self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1465,6 +1478,8 @@ impl Checker {
             self.polar = polar::Polar::default();
             self.linuxcnc_spindle_unknown = true;
             self.linuxcnc_compensation_unknown = true;
+            self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
+            self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
@@ -1648,7 +1663,7 @@ impl Checker {
             if facts.moved().is_empty() {
                 // a dwell's own refusals (G4 P-1), and the modes its block sets
                 if self.config.family == Family::LinuxCnc {
-                    self.linuxcnc_refusals(b, &facts);
+                    self.linuxcnc_refusals(b, &facts, before);
                 }
                 // a frame's or a shift's code beside the dwell (`G04 P1. G69`) takes effect in
                 // its block all the same: without this the position was taken back at G69 and
@@ -1667,7 +1682,8 @@ impl Checker {
         // (LinuxCNC: the refusals first, which take the current point as unknown after a
         // code that moves it by an amount the checker does not follow, the arc checks then,
         // and the point known again after an absolute move)
-        let unsettles = self.config.family == Family::LinuxCnc && self.linuxcnc_refusals(b, &facts);
+        let unsettles =
+            self.config.family == Family::LinuxCnc && self.linuxcnc_refusals(b, &facts, before);
         self.feeds(b, before, &facts);
         if self.config.family == Family::LinuxCnc && !unsettles {
             self.linuxcnc_settle();

@@ -115,7 +115,17 @@ impl Checker {
                 .into();
             self.report(Rule::LinuxCncRefuses, message, line, facts.col(moved[0]));
         }
-        if feed_motion && self.machine.state.feed_mode == 93 && !has_f {
+        // LinuxCNC's probes and NURBS points read rs274's feed rate, not the block's inverse
+        // time (interp_convert.cc convert_probe, convert_nurbs): no F needed under G93 where
+        // one of them runs, which the modal state, keeping the G1 before it, takes for a G1
+        let rs274_rate = || {
+            self.config.family == Family::LinuxCnc
+                && matches!(
+                    self.linuxcnc_motion,
+                    super::tooling::LinuxCncMotion::Known(Some(52 | 382..=385))
+                )
+        };
+        if feed_motion && self.machine.state.feed_mode == 93 && !has_f && !rs274_rate() {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
                 Rule::InverseTimeWithoutFeed,
@@ -534,6 +544,17 @@ impl Checker {
                 continue;
             }
             takes_axes |= v.is_whole() && matches!(n, 10 | 28 | 30 | 52 | 92);
+            // LinuxCNC's G43.1 and G43.2 take axis words without a motion mode in force
+            // (interp_internal.cc enhance_block: their offsets)
+            takes_axes |= self.config.family == Family::LinuxCnc
+                && n == 43
+                && matches!(
+                    v.normalized(),
+                    Dec {
+                        mantissa: 431 | 432,
+                        scale: 1
+                    }
+                );
             let group = if v.is_whole() {
                 group_of(&self.config, b'G', n)
             } else {
@@ -1030,7 +1051,17 @@ mod tests {
             ("G55\nG2 X1 Y0 R5 F100", vec![]),
             ("G28\nG2 X1 Y0 R5 F100", vec![]),
             ("G38.2 X5 F10\nG2 X1 Y0 R5 F100", vec![]),
-            ("G43 H1\nG2 X1 Y0 R5 F100", vec![]),
+            // a tool length offset moves Z, and X in G18 (a lathe's table): not a G17 arc's
+            ("G43 H1\nG2 X1 Y0 R5 F100", vec![(5, 1)]),
+            ("G18\nG43 H1\nG2 X1 Z0 R5 F100", vec![]),
+            ("G18\nG43 H1\nG2 Z0 R5 F100", vec![]),
+            ("G49\nG2 X1 Y0 R5 F100", vec![(5, 1)]),
+            // G92 sets the axes it names exactly, and leaves the others
+            ("G92 X0\nG2 X0 Y0 R5 F100", vec![(5, 1)]),
+            ("G28\nG92 X0\nG2 X0 Y0 R5 F100", vec![]),
+            ("G28\nG92 X0 Y0\nG2 X0 Y0 R5 F100", vec![(6, 1)]),
+            ("G92 X#1\nG2 X0 Y0 R5 F100", vec![]),
+            ("G92.1\nG2 X1 Y0 R5 F100", vec![]),
             ("G53 G0 Z0\nG2 X1 Y0 R5 F100", vec![]),
             ("G55 G2 X1 Y0 R5 F100", vec![]),
             ("G55 G0 X1 Y0\nG2 X1 Y0 R5 F100", vec![(5, 1)]),

@@ -4,7 +4,7 @@
 
 use super::{chars, BlockView, Checker, Colons, SubFile, Unreadable, Word};
 use crate::dialect;
-use crate::lex::Family;
+use crate::lex::{blank, Family};
 use crate::rules::Rule;
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
@@ -146,9 +146,12 @@ impl Checker {
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
         self.linuxcnc_defined.clear();
+        self.linuxcnc_named.clear();
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
+        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+        self.linuxcnc_nurbs = super::tooling::Nurbs::default();
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
     }
@@ -191,6 +194,13 @@ impl Checker {
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
         self.definition_open(b, statement.as_ref());
+        if statement.is_none()
+            && self.open_definition.is_none()
+            && self.ended_line == 0
+            && (!b.statements.is_empty() || b.words.iter().any(|w| !w.expression.is_empty()))
+        {
+            self.linuxcnc_named_reads(b);
+        }
         if self.sub_file == SubFile::No {
             return;
         }
@@ -276,6 +286,86 @@ impl Checker {
                 self.linuxcnc_called_ahead.push((label, b.line));
             }
         }
+    }
+
+    /// TG412: LinuxCNC's main program reads a local named parameter (`#<name>`) that no line
+    /// before it, nor a word before it in its line, assigns (interp_namedparams.cc: "Named
+    /// parameter #<nope> not defined"; rs274 adds an assignment's name when it reads it, so
+    /// `#<x> = [#<x> + 1]` runs and `G0 X#<x> #<x> = 1` does not). Followed in the main
+    /// program's lines in their order, not through its flow: an assignment in a branch that
+    /// does not run counts as made (rs274 refuses `o1 if [0]` / `#<v> = 1` / `o1 endif` /
+    /// `G0 X#<v>`, tapegate does not). Not judged: a global (`#<_name>`, of which rs274
+    /// predefines many: `#<_x>`, `#<_metric>`, `#<_ini[..]>`), a read inside `EXISTS[..]`, a
+    /// comment's (`(DEBUG, #<x>)`), and a subroutine's body, whose locals a remap's words or
+    /// its own lines give.
+    #[inline(never)]
+    fn linuxcnc_named_reads(&mut self, b: &BlockView<'_>) {
+        let mut undefined: Option<(Vec<u8>, usize)> = None;
+        for w in b.words {
+            if w.expression.is_empty() {
+                continue;
+            }
+            let mut reads = w.expression;
+            if w.letter == b'#' {
+                // `#<name> = ...`: the name is defined from here, its own value included
+                if let Some(close) = w.expression.iter().position(|&c| c == b'>') {
+                    if w.expression.first() == Some(&b'<') {
+                        let name = super::params::named_parameter(&w.expression[1..close]);
+                        reads = &w.expression[close + 1..];
+                        self.linuxcnc_named.insert(name);
+                        if undefined.is_none() {
+                            undefined = self.linuxcnc_undefined_read(reads, w.column);
+                        }
+                        continue;
+                    }
+                }
+            }
+            if undefined.is_none() {
+                undefined = self.linuxcnc_undefined_read(reads, w.column);
+            }
+        }
+        for &(column, kind, text) in b.statements {
+            if undefined.is_none() && matches!(kind, Kind::Flow | Kind::Call) {
+                undefined = self.linuxcnc_undefined_read(text, column);
+            }
+        }
+        if let Some((name, column)) = undefined {
+            let name = String::from_utf8_lossy(&name);
+            let message = format!(
+                "Named parameter {name}> not defined (rs274ngc): no line before it assigns it \
+                 (a local named parameter has no value until the program sets one)"
+            );
+            self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        }
+    }
+
+    /// The first local named parameter `text` reads that the main program has not assigned
+    /// ([`Checker::linuxcnc_named_reads`]), with the column given.
+    fn linuxcnc_undefined_read(&self, text: &[u8], column: usize) -> Option<(Vec<u8>, usize)> {
+        let mut at = 0;
+        while let Some(found) = text[at..].windows(2).position(|p| p == b"#<") {
+            let start = at + found;
+            let close = start + 2 + text[start + 2..].iter().position(|&c| c == b'>')?;
+            at = close + 1;
+            let name = super::params::named_parameter(&text[start + 2..close]);
+            if name.get(2) == Some(&b'_') || self.linuxcnc_named.contains(&name) {
+                continue;
+            }
+            // EXISTS[#<name>] asks whether it is defined: no read
+            let before: Vec<u8> = text[..start]
+                .iter()
+                .rev()
+                .copied()
+                .filter(|&c| !blank(c))
+                .skip_while(|&c| c == b'[')
+                .take(6)
+                .collect();
+            if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
+                continue;
+            }
+            return Some((name, column));
+        }
+        None
     }
 
     /// LinuxCNC: the definition a `o<name> sub` opens runs to its `o<name> endsub`; rs274
@@ -1007,6 +1097,50 @@ mod tests {
             fired(of_family(Family::MacroB), named, Rule::Unreadable),
             [(3, 10)]
         );
+    }
+
+    #[test]
+    fn linuxcnc_refuses_a_named_parameter_read_before_its_assignment() {
+        // interp_namedparams.cc, each compared with rs274 -g: the line refused, if any
+        let cases: &[(&str, Option<usize>)] = &[
+            ("G0 X#<nope>", Some(3)),
+            ("#<a> = #<nope>", Some(3)),
+            ("o1 if [#<nope> GT 0]\no1 endif", Some(3)),
+            ("o<s> call [#<arg>]", Some(3)),
+            // the name is defined when its assignment is read, its own value included
+            ("#<x> = [#<x> + 1]\nG0 X#<x>", None),
+            ("#<x> = 1 G0 X#<x>", None),
+            ("G0 X#<x> #<x> = 1", Some(3)),
+            ("#<x> = 1 #<y> = [#<x> + #<z>]", Some(3)),
+            // names as rs274 reads them: blanks left out, case ignored
+            ("#<A b> = 1\nG0 X#< a B >", None),
+            // EXISTS asks; globals and comments are not judged
+            ("#<y> = EXISTS[#<nope>]\n#<w> = exists [ # < nope > ]", None),
+            ("G0 X#<_x>\n(DEBUG, #<nope>)", None),
+            // a subroutine's body is not judged; its locals are not the caller's
+            ("o<s> sub\nG0 X#<inner>\no<s> endsub\nG0 X1", None),
+            (
+                "o<s> sub\n#<q> = 1\no<s> endsub\no<s> call\nG0 X#<q>",
+                Some(7),
+            ),
+            // a loop's first pass reads it before the line that sets it
+            ("o1 repeat [2]\nG0 X#<w>\n#<w> = 1\no1 endrepeat", Some(4)),
+            // the lines in their order: an assignment in a branch counts as made
+            ("o1 if [#1 GT 0]\n#<v> = 1\no1 endif\nG0 X#<v>", None),
+        ];
+        for &(body, line) in cases {
+            let text = format!("G21 G90\nG0 X0 Y0\n{body}\nM2\n");
+            let found: Vec<usize> =
+                findings(of_family(Family::LinuxCnc), &text, Rule::LinuxCncRefuses)
+                    .iter()
+                    .filter(|f| f.message.starts_with("Named parameter"))
+                    .map(|f| f.line)
+                    .collect();
+            assert_eq!(found, line.into_iter().collect::<Vec<_>>(), "{body}");
+        }
+        // another family's #<..> is no LinuxCNC name
+        let other = "G21 G90\nG0 X#<nope>\nM30\n";
+        assert!(findings(of_family(Family::MacroB), other, Rule::LinuxCncRefuses).is_empty());
     }
 
     #[test]

@@ -21,6 +21,184 @@ pub(super) enum LinuxCncMotion {
     Unknown,
 }
 
+/// rs274ngc's feed rate (its `settings->feed_rate`), which a probe move and a canned cycle
+/// read: zero at the start and after every G94 or G95 (interp_convert.cc `convert_feed_mode`),
+/// set by an F under G94 or G95 (`convert_feed_rate`), and left as it was by G93 and by an F
+/// under G93, which is the inverse time of its block's move alone (interp_execute.cc: "INVERSE_TIME
+/// is handled elsewhere"). The modal state's feed is the F in force, cleared at G93; this is
+/// rs274's other number, kept for its refusals (TG412).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum LinuxCncFeed {
+    Zero,
+    Set,
+    /// After a call or jump the checker does not follow, or an F set by a parameter.
+    Unknown,
+}
+
+/// rs274ngc's refusal of a word's expression while it reads the block, where the expression
+/// is written with numbers alone (`M[3.5]`, `X[1/0]`): a division by zero (interp_execute.cc
+/// `execute_binary1`, "Attempt to divide by zero"), anywhere in it, and an M word's value that
+/// is no whole number within 0.0001 (interp_read.cc `read_integer_value`, as `M3.5`). Not
+/// judged: an expression of parameters or functions (their values the checker does not
+/// follow) and one longer than 200 bytes (a chain of terms is a tree as deep, walked by
+/// recursion).
+#[cold]
+#[inline(never)]
+fn linuxcnc_read_expression(w: &crate::word::Word<'_>) -> Option<(String, u8)> {
+    if w.expression.len() > 200 {
+        return None;
+    }
+    let tree = crate::expr::tree(w.expression).ok()?;
+    let written = String::from_utf8_lossy(w.expression);
+    match linuxcnc_constant(&tree, w.expression) {
+        Err(()) => Some((
+            format!(
+                "Attempt to divide by zero (rs274ngc): {}{written} divides by a zero",
+                w.letter as char
+            ),
+            w.letter,
+        )),
+        Ok(Some(v)) if w.letter == b'M' => {
+            let value = Dec::parse(&format!("{v}"))?;
+            linuxcnc_not_integer(value, false).then(|| {
+                (
+                    format!(
+                        "Non integer value for integer (rs274ngc): M{written} is {}, no M code, \
+                         which are whole numbers",
+                        value.plain()
+                    ),
+                    b'M',
+                )
+            })
+        }
+        Ok(_) => None,
+    }
+}
+
+/// The value of a LinuxCNC expression's tree (from [`crate::expr::tree`]) written with numbers
+/// alone, computed in doubles as rs274ngc computes it: Err for a division by zero anywhere in
+/// it (the operands of a function, a power or `MOD` included), None where a parameter, a
+/// function or an operator other than `+ - * /` leaves the value to the machine.
+fn linuxcnc_constant(e: &crate::expr::Expr, text: &[u8]) -> Result<Option<f64>, ()> {
+    use crate::expr::Expr;
+    Ok(match e {
+        Expr::Number(a, b) => std::str::from_utf8(&text[*a..*b])
+            .ok()
+            .and_then(|t| t.replace([' ', '\t'], "").parse::<f64>().ok()),
+        Expr::Sign(sign, inner) => {
+            linuxcnc_constant(inner, text)?.map(|v| if *sign == b'-' { -v } else { v })
+        }
+        Expr::Binary(op, l, r) => {
+            let a = linuxcnc_constant(l, text)?;
+            let b = linuxcnc_constant(r, text)?;
+            if *op == b'/' && b == Some(0.0) {
+                return Err(());
+            }
+            match (op, a, b) {
+                (b'+', Some(a), Some(b)) => Some(a + b),
+                (b'-', Some(a), Some(b)) => Some(a - b),
+                (b'*', Some(a), Some(b)) => Some(a * b),
+                (b'/', Some(a), Some(b)) => Some(a / b),
+                _ => None,
+            }
+        }
+        Expr::Call(inner) => {
+            linuxcnc_constant(inner, text)?;
+            None
+        }
+        _ => None,
+    })
+}
+
+/// rs274ngc's refusal of an M66 (wait on an input) by its words, interp_convert.cc
+/// `convert_m` in its order: P (a digital input) and E (an analog one) together; L, the wait
+/// type, other than 0 (immediate) with no Q (the timeout) above zero; an analog input with a
+/// wait type other than immediate; neither P nor E, or one below zero. rs274 rounds L, P and E
+/// to the nearest whole number, a half to the even one (`round_to_int`, `nearbyint`); a word
+/// set by a parameter is not judged.
+fn linuxcnc_m66(words: &Written<'_>) -> Option<&'static str> {
+    let round = |l: u8| words.value(l).map(|v| v.to_f64().round_ties_even());
+    let unread = |l: u8| words.has(l) && words.value(l).is_none();
+    if words.has(b'P') && words.has(b'E') {
+        return Some(
+            "Invalid to select both a digital and an analog input with M66 (rs274ngc): P is a \
+             digital input, E an analog one",
+        );
+    }
+    if unread(b'L') || unread(b'Q') || unread(b'P') || unread(b'E') {
+        return None;
+    }
+    let wait = round(b'L');
+    // rs274's value for no Q is -1
+    let timeout = words.value(b'Q').map_or(-1.0, |q| q.to_f64());
+    if timeout <= 0.0 && wait.is_some_and(|l| l > 0.0) {
+        return Some(
+            "Zero timeout with wait type != immediate return (rs274ngc): an M66 with L above 0 \
+             waits for Q seconds, and gives no Q above zero",
+        );
+    }
+    if words.has(b'E') && wait.is_some_and(|l| l != 0.0) {
+        return Some(
+            "Can't select analog input with wait type != immediate return (rs274ngc): an M66 \
+             E reads its input at once (L0)",
+        );
+    }
+    let negative = |l: u8| round(l).is_some_and(|v| v < 0.0);
+    if negative(b'P') || negative(b'E') || !(words.has(b'P') || words.has(b'E')) {
+        return Some(
+            "Need to have either a valid P or a valid E word with M66 (rs274ngc): the input's \
+             number, 0 or above",
+        );
+    }
+    None
+}
+
+/// The control points rs274ngc holds for a NURBS (G5.2 blocks, drawn by G5.3): a list kept
+/// from the first G5.2 block, whose first point is the current point, to the G5.3 that draws
+/// the curve and empties it (interp_convert.cc `convert_nurbs`, a static list: a G5.2 after
+/// another motion empties it only after its own checks).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Nurbs {
+    /// How many control points the list holds.
+    points: u32,
+    /// The curve's order: 3 from the first point, or the last G5.2 block's L above 3 (rs274's
+    /// `nurbs_order`).
+    order: u32,
+    /// After a call or jump the checker does not follow: not known until a G5.3 empties it.
+    unknown: bool,
+}
+
+impl Default for Nurbs {
+    fn default() -> Nurbs {
+        Nurbs {
+            points: 0,
+            order: 3,
+            unknown: false,
+        }
+    }
+}
+
+impl Nurbs {
+    pub(super) fn unknown() -> Nurbs {
+        Nurbs {
+            unknown: true,
+            ..Nurbs::default()
+        }
+    }
+}
+
+/// Why rs274ngc's feed rate is zero where a probe or a cycle reads it ([`LinuxCncFeed`]),
+/// under the feed mode `mode` after the block, with the block's F `f`.
+fn linuxcnc_no_feed(mode: i64, f: Option<Dec>) -> &'static str {
+    if mode == 93 {
+        "an F under G93 is its block's inverse time, and no F was given under G94 before it"
+    } else if f.is_some_and(|f| f.is_zero()) {
+        "the block's F is zero"
+    } else {
+        "no F since the start or since the last G94 or G95, which set the feed rate to zero"
+    }
+}
+
 /// The cycle's axis (the one it drills along) and the plane's name in rs274ngc's messages.
 fn cycle_axis(plane: i64) -> (u8, &'static str) {
     match plane {
@@ -414,9 +592,10 @@ fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(Str
     None
 }
 
-/// LinuxCNC: whether a G code (in tenths) leaves the current point, in the coordinates the
-/// program writes, unknown to the checker (every axis then unsure,
-/// `Checker::linuxcnc_point_unsure`, until an absolute move names it): a work offset chosen
+/// LinuxCNC: whether a G code (in tenths) may leave the current point, in the coordinates the
+/// program writes, unknown to the checker (the axes `Checker::linuxcnc_unsure_after` says
+/// then unsure, `Checker::linuxcnc_point_unsure`, until an absolute move names them; a probe
+/// beside such a code is not judged): a work offset chosen
 /// (G54-G59.3) or set (G10), G92 and G52 shifts, a tool length offset taken or dropped (G43,
 /// G43.1, G43.2, G49: its table's values are the machine's), a return home (G28, G30: the
 /// home position is the machine's), a probe (G38.2-G38.5 stops at contact), a move in
@@ -480,9 +659,13 @@ pub(super) struct Written<'r> {
     readable: &'r [Option<Dec>],
     /// Whether the block has a `$` word (the spindle it addresses).
     dollar: bool,
+    /// Whether the block has a polar word (`@` the distance, `^` the angle).
+    polar: bool,
     /// The place (from 1; 0 for none) of the block's first M word whose value is no whole
     /// number to rs274 (`M1.5`): a place, not a value, kept small as `first`.
     m_fraction: u32,
+    /// rs274's refusal of a word's expression, with its letter (`linuxcnc_read_expression`).
+    read_refusal: Option<(String, u8)>,
 }
 
 impl<'r> Written<'r> {
@@ -501,21 +684,31 @@ impl<'r> Written<'r> {
 }
 
 impl Checker {
-    /// TG412: the refusals of LinuxCNC's interpreter in its canned cycles (interp_cycles.cc
-    /// `convert_cycle` and the cycle functions), its G76 threading cycle
-    /// (interp_check.cc `check_other_codes`), its G70-G72 lathe cycles (interp_g7x.cc
-    /// `convert_g7x`) and its dynamic cutter compensation (interp_convert.cc
-    /// `convert_cutter_compensation_on`), each with rs274ngc's message. rs274 stops at its
-    /// first error: the first refusal of a block is said. A block runs the motion mode when
-    /// it gives its code or axis words for it; a repeated cycle keeps the P, Q, I J K of the
-    /// block that started it. After a jump or a call the motion mode is unknown: nothing that
-    /// depends on it is said.
-    /// Marks the current point unknown after a code that moves it ([`linuxcnc_unsettles`], or
-    /// a G word set by a parameter), and returns whether the block's axis words name no point
-    /// it ends at in the active coordinates (G10, G28, G30, G52, G53, G92 take them as data,
-    /// a home's intermediate point or machine coordinates): the caller does not take them as
-    /// known then. A G0-G3 move in the block of a G55 or a G43 ends where it says.
-    pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) -> bool {
+    /// TG412: the refusals of LinuxCNC's interpreter while it reads a block (whole numbers,
+    /// expressions of numbers, M groups, motion codes without axes), checks its words against
+    /// its codes (interp_check.cc), and runs it: M66, probes, NURBS, threads, its canned
+    /// cycles (interp_cycles.cc `convert_cycle` and the cycle functions), its G70-G72 lathe
+    /// cycles (interp_g7x.cc `convert_g7x`) and its dynamic cutter compensation
+    /// (interp_convert.cc `convert_cutter_compensation_on`), each with rs274ngc's message.
+    /// rs274 stops at its first error: the first refusal of a block is said. A block runs the
+    /// motion mode when it gives its code or axis words for it; a repeated cycle keeps the P,
+    /// Q, I J K of the block that started it. After a jump or a call the motion mode is
+    /// unknown: nothing that depends on it is said. Follows rs274's own feed rate
+    /// ([`LinuxCncFeed`]) and NURBS control points ([`Nurbs`]).
+    /// Marks the current point unknown on the axes a code moves it by an amount the checker
+    /// does not follow ([`Checker::linuxcnc_unsure_after`]), and returns whether the block's
+    /// axis words name no point it ends at in the active coordinates (G10, G28, G30, G52, G53,
+    /// G92 take them as data, a home's intermediate point or machine coordinates, G43.1 as
+    /// offsets): the caller does not take them as known then. A G0-G3 move in the block of a
+    /// G55 or a G43 ends where it says.
+    pub(super) fn linuxcnc_refusals(
+        &mut self,
+        b: &BlockView<'_>,
+        facts: &Facts<'_>,
+        start: &Before,
+    ) -> bool {
+        // (the axes whose point was not known exactly before the block, before its own codes)
+        let unsure = self.linuxcnc_point_unsure;
         // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
         // dozen at most), in one pass, without an allocation per block
         let mut held = [0i64; 16];
@@ -527,6 +720,8 @@ impl Checker {
         let mut g_unread = false;
         let mut dollar = false;
         let mut m_fraction = 0u32;
+        // a refusal of a word's expression while rs274 reads it (`linuxcnc_read_expression`)
+        let mut read_refusal = None;
         // and the block's words by letter, as written (`Written`), in the same pass
         let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
@@ -537,6 +732,9 @@ impl Checker {
                 }
             }
             let value = self.readable[i];
+            if value.is_none() && !w.expression.is_empty() && read_refusal.is_none() {
+                read_refusal = linuxcnc_read_expression(w);
+            }
             match (w.letter, value) {
                 // (a whole number below 2^40 is exactly ten times itself in tenths, as the
                 // floating reading below gives it)
@@ -572,12 +770,26 @@ impl Checker {
         }
         let codes = &held[..n];
         let ms = &held_m[..n_m];
+        // rs274's feed rate: a G94 or G95 zeroes it, then the block's F sets it unless G93 is
+        // in force after the block (interp_execute.cc's order)
+        if codes.iter().any(|&c| c == 940 || c == 950) {
+            self.linuxcnc_feed_rate = LinuxCncFeed::Zero;
+        }
+        if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
+            let at = first[usize::from(b'F' - b'A')] as usize - 1;
+            self.linuxcnc_feed_rate = match self.readable[at] {
+                Some(f) if f.is_zero() => LinuxCncFeed::Zero,
+                Some(_) => LinuxCncFeed::Set,
+                None => LinuxCncFeed::Unknown,
+            };
+        }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
-            self.linuxcnc_point_unsure = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
+            self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
         }
         // a block whose axis words are data, or a home, or machine coordinates (G10, G28,
-        // G30, G52, G53, G92), or whose codes are unknown, ends at no point it names
-        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_takes_axes(c));
+        // G30, G52, G53, G92), or a tool's offsets (G43.1), or whose codes are unknown, ends
+        // at no point it names
+        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_takes_axes(c) || c == 431);
         // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
         // letters the checks below read whatever the motion (D E H L P Q T), I J K R only in
         // an arc, and no cycle, thread or lathe cycle running. Nothing below can refuse it or
@@ -589,6 +801,7 @@ impl Checker {
         if m_words == 0
             && !g_unread
             && !dollar
+            && read_refusal.is_none()
             && codes.iter().all(|&c| plain(c))
             && ![b'D', b'E', b'H', b'L', b'P', b'Q', b'T']
                 .iter()
@@ -617,7 +830,9 @@ impl Checker {
                         first,
                         readable: &self.readable,
                         dollar: false,
+                        polar: false,
                         m_fraction: 0,
+                        read_refusal: None,
                     };
                     let checked =
                         linuxcnc_word_checks(&words, codes, ms, full_runs, doubt, false, false);
@@ -625,9 +840,11 @@ impl Checker {
                         self.linuxcnc_refusal(
                             &words,
                             codes,
+                            ms,
                             self.linuxcnc_motion,
                             full_runs,
-                            checked
+                            checked,
+                            false
                         )
                         .is_none(),
                         "a plain LinuxCNC move refused on line {}",
@@ -655,7 +872,8 @@ impl Checker {
         } else if g_unread {
             self.linuxcnc_motion = LinuxCncMotion::Unknown;
         }
-        let data = codes.iter().any(|&c| linuxcnc_takes_axes(c));
+        // (G43.1's axis words are the tool's offsets: no motion runs them, enhance_block)
+        let data = codes.iter().any(|&c| linuxcnc_takes_axes(c) || c == 431);
         let ijk = [b'I', b'J', b'K']
             .iter()
             .any(|&l| first[usize::from(l - b'A')] != 0);
@@ -671,7 +889,9 @@ impl Checker {
             first,
             readable: &self.readable,
             dollar,
+            polar: b.words.iter().any(|w| matches!(w.letter, b'@' | b'^')),
             m_fraction,
+            read_refusal,
         };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
@@ -684,6 +904,10 @@ impl Checker {
         let spindle_set = ms.iter().any(|&m| matches!(m, 3..=5));
         if spindle_set {
             self.linuxcnc_spindle_unknown = false;
+        } else if n_m < m_words.min(held_m.len()) {
+            // an M code of unknown value (`M[1+2]`, `M#1`) may start, stop or change the
+            // spindle's tool: its direction is unknown until M3, M4 or M5
+            self.linuxcnc_spindle_unknown = true;
         }
         // M6 stops the spindle; an M3, M4 or M5 of its block comes after it (rs274ngc's
         // order of execution: the tool change, then the spindle)
@@ -707,7 +931,10 @@ impl Checker {
         let message = if codes.iter().all(|&c| self.linuxcnc_has_g(c)) {
             let checked =
                 linuxcnc_word_checks(&words, codes, ms, runs, motion_in_doubt, e_unused, remapped);
-            self.linuxcnc_refusal(&words, codes, before, runs, checked)
+            // a probe that must trip (G38.2, G38.4) and ends where it starts
+            let in_place = matches!(runs, Some(382 | 384))
+                && self.linuxcnc_probe_in_place(&words, codes, start, unsure);
+            self.linuxcnc_refusal(&words, codes, ms, before, runs, checked, in_place)
         } else {
             None
         };
@@ -721,10 +948,168 @@ impl Checker {
             }
         }
 
+        // the NURBS control points: a G5.3 draws and empties the list, a G5.2 block adds its
+        // point (a new list where the motion before was another)
+        if codes.contains(&53) {
+            self.linuxcnc_nurbs = Nurbs::default();
+            if self.linuxcnc_motion == LinuxCncMotion::Known(Some(52)) && given != Some(52) {
+                self.linuxcnc_motion = LinuxCncMotion::Known(None);
+            }
+        }
+        if runs == Some(52) {
+            let nurbs = &mut self.linuxcnc_nurbs;
+            if before != LinuxCncMotion::Known(Some(52)) {
+                *nurbs = Nurbs {
+                    unknown: before == LinuxCncMotion::Unknown,
+                    ..Nurbs::default()
+                };
+            }
+            if nurbs.points == 0 {
+                nurbs.points = 1;
+                nurbs.order = 3;
+            }
+            match words.value(b'L') {
+                Some(l) if l.to_f64() > 3.0 => {
+                    nurbs.order = u32::try_from(l.trunc()).unwrap_or(u32::MAX);
+                }
+                None if words.has(b'L') => nurbs.unknown = true,
+                _ => {}
+            }
+            if words.has(b'X') && words.has(b'Y') {
+                nurbs.points = nurbs.points.saturating_add(1);
+            }
+        }
         if let Some((message, letter)) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
         }
         unsettles
+    }
+
+    /// The axes (`modal::bit`) whose current point the block's codes leave not known exactly
+    /// ([`linuxcnc_unsettles`]), and G92's named axes known again: every axis after most such
+    /// codes (a work offset, a home, a probe, G52, G53, G92.1-G92.3, the units, the diameter
+    /// mode, a G code set by a parameter); after a tool length offset taken or dropped (G43,
+    /// G43.2, G49) the axes a tool table's offsets move -- Z, and X in G18, a lathe's plane
+    /// (LinuxCNC's lathe tool table holds X and Z offsets; a mill's, lengths: the X and Y of a
+    /// G17 arc after `G43 H1` are where the program put them, as `rs274 -g` finds them);
+    /// after G43.1 the axes it names (their offsets). G92 sets the point of each axis it names
+    /// (with a value read) to that value exactly, in the new coordinates: those axes are known
+    /// after it (`G92 X0`, then `G2 X0 Y0 R5` from Y0: rs274's "Current point same as end
+    /// point of arc"), and it leaves the others where they were.
+    #[inline(never)]
+    fn linuxcnc_unsure_after(&mut self, codes: &[i64], g_unread: bool, first: &[u32; 26]) -> u32 {
+        let all = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
+        let named = |a: u8| first[usize::from(a - b'A')] != 0;
+        let mut unsure = 0;
+        for &c in codes {
+            unsure |= match c {
+                430 | 432 | 490 if !g_unread => {
+                    bit(b'Z')
+                        | if self.machine.state.plane == 18 {
+                            bit(b'X')
+                        } else {
+                            0
+                        }
+                }
+                431 if !g_unread => crate::modal::AXES
+                    .iter()
+                    .filter(|&&a| named(a))
+                    .fold(0, |m, &a| m | bit(a)),
+                920 if !g_unread => 0,
+                c if linuxcnc_unsettles(c) => all,
+                _ => 0,
+            };
+        }
+        if g_unread {
+            unsure = all;
+        }
+        if codes.contains(&920) && !g_unread {
+            let known = crate::modal::AXES
+                .iter()
+                .filter(|&&a| {
+                    named(a) && self.readable[first[usize::from(a - b'A')] as usize - 1].is_some()
+                })
+                .fold(0, |m, &a| m | bit(a));
+            self.linuxcnc_point_unsure &= !known;
+            unsure &= !known;
+        }
+        unsure
+    }
+
+    /// rs274ngc's refusal of a G5.2 block, a NURBS control point, in `convert_nurbs`' order:
+    /// X without Y or Y without X; a P without X and Y but on the first point (a weight for
+    /// the start); no P above zero (the point's weight; rs274's value for no P is -1) where
+    /// the list holds points already; under G94 a feed rate of zero. The list is the one rs274
+    /// holds before the block (a G5.2 after another motion empties it after these checks).
+    fn linuxcnc_nurbs_point(&self, words: &Written<'_>) -> Option<&'static str> {
+        let (x, y) = (words.has(b'X'), words.has(b'Y'));
+        if x != y {
+            return Some(
+                "You must specify both X and Y coordinates for Control Points (rs274ngc): a \
+                 G5.2 block's point",
+            );
+        }
+        let nurbs = self.linuxcnc_nurbs;
+        let held = !nurbs.unknown && nurbs.points > 0;
+        let p = words.value(b'P');
+        let p_unknown = words.has(b'P') && p.is_none();
+        let p_positive = p.is_some_and(|p| p > Dec::ZERO);
+        if held && !x && !y && p_positive {
+            return Some(
+                "Can specify P without X and Y only for the first control point (rs274ngc)",
+            );
+        }
+        if held && !p_unknown && !p_positive {
+            return Some(
+                "Must specify positive weight P for every Control Point (rs274ngc): P is the \
+                 point's weight",
+            );
+        }
+        if self.machine.state.feed_mode == 94 && self.linuxcnc_feed_rate == LinuxCncFeed::Zero {
+            return Some(
+                "Cannot make a NURBS with 0 feedrate (rs274ngc): no F since the start or the \
+                 last G94 or G95",
+            );
+        }
+        None
+    }
+
+    /// Whether a probe move ends exactly where it starts, as rs274ngc's `convert_probe` compares
+    /// the two points (every axis equal, in the active coordinates): under G91 each axis word
+    /// is zero; under G90 each names the point the axis is at, known exactly (`unsure`, the
+    /// axes not known exactly before the block: after an offset, a home, a probe). A code of
+    /// the block that moves the point or its coordinates (G43, G92, G54, G20) leaves it unknown,
+    /// and an axis the checker does not keep (A B C U V W under G90) is not judged.
+    fn linuxcnc_probe_in_place(
+        &self,
+        words: &Written<'_>,
+        codes: &[i64],
+        start: &Before,
+        unsure: u32,
+    ) -> bool {
+        if codes
+            .iter()
+            .any(|&c| linuxcnc_unsettles(c) && !(382..=385).contains(&c))
+        {
+            return false;
+        }
+        let after = &self.machine.state;
+        // (a probe without an axis word is refused before it runs: "All axes missing")
+        let axes = crate::modal::AXES;
+        axes.iter().any(|&a| words.has(a))
+            && axes.iter().all(|&a| {
+                if !words.has(a) {
+                    return true;
+                }
+                if after.incremental {
+                    return words.value(a).is_some_and(|d| d.is_zero());
+                }
+                unsure & bit(a) == 0
+                    && start.unknown & bit(a) == 0
+                    && !after.is_unknown(a)
+                    && start.axis(a).is_some()
+                    && start.axis(a) == after.axis(a)
+            })
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -752,13 +1137,16 @@ impl Checker {
     /// The first refusal of rs274ngc for the block, with the letter of the word it points at
     /// (`codes` its G codes in tenths, `before` the motion mode before it, `runs` the motion
     /// it runs, `checked` the refusal of its words against its codes, `linuxcnc_word_checks`).
+    #[allow(clippy::too_many_arguments)]
     fn linuxcnc_refusal(
         &self,
         words: &Written<'_>,
         codes: &[i64],
+        ms: &[i64],
         before: LinuxCncMotion,
         runs: Option<i64>,
         checked: Option<(String, u8)>,
+        in_place: bool,
     ) -> Option<(String, u8)> {
         // rs274 reads T and H as integers (read_integer_value) while it reads the block,
         // before it runs any of it, and G41/G42 take a tool number in D
@@ -793,6 +1181,52 @@ impl Checker {
                 b'M',
             ));
         }
+        // interp_read.cc read_m: rs274ngc's modal groups of M codes (interp_array.cc `_ems`)
+        // put M70-M73 (the modal state's save and restore) in group 7 with M3, M4, M5 and
+        // M19; the profile keeps them apart (no restart or diff reads them as spindle codes)
+        let spindle = ms.iter().find(|&&m| matches!(m, 3..=5 | 19));
+        let state = ms.iter().find(|&&m| (70..=73).contains(&m));
+        if let (Some(a), Some(b)) = (spindle, state) {
+            return Some((
+                format!(
+                    "Two m codes used from same modal group (rs274ngc): M{a} and M{b} are both \
+                     in rs274ngc's group 7"
+                ),
+                b'M',
+            ));
+        }
+        // interp_internal.cc enhance_block: a motion code of the block other than G0-G3, G5.2
+        // and the lathe cycles moves along the axes it is given, and is given none (a canned
+        // cycle's missing bottom is TG541's; G10, G28, G30, G52 or G92 beside it are another
+        // refusal)
+        let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
+        if let Some(m) = motion
+            .filter(|&m| !matches!(m, 0 | 10 | 20 | 30 | 52 | 700..=722 | 730 | 740 | 800..=890))
+        {
+            let axes = crate::modal::AXES.iter().any(|&a| words.has(a)) || words.polar;
+            if !axes
+                && !codes
+                    .iter()
+                    .any(|&c| matches!(c, 100 | 280 | 300 | 520 | 920))
+            {
+                return Some((
+                    format!(
+                        "All axes missing with motion code (rs274ngc): G{}{} moves along the \
+                         axes its block names, and it names none",
+                        m / 10,
+                        if m % 10 == 0 {
+                            String::new()
+                        } else {
+                            format!(".{}", m % 10)
+                        }
+                    ),
+                    b'G',
+                ));
+            }
+        }
+        if words.read_refusal.is_some() {
+            return words.read_refusal.clone();
+        }
         // check_g_codes: G53 moves to machine coordinates, absolute ones only (G91 in the
         // block, or in force without a G90 in the block)
         if codes.contains(&530) && self.machine.state.incremental {
@@ -807,7 +1241,14 @@ impl Checker {
         if checked.is_some() {
             return checked;
         }
-        self.linuxcnc_run_refusal(words, codes, before, runs)
+        // and runs its M codes before its motion (interp_execute.cc): M66's words (not
+        // beside an M code rs274 lacks, a remap's, which may take the words)
+        if ms.contains(&66) && ms.iter().all(|&m| linuxcnc_builtin_m(m)) {
+            if let Some(message) = linuxcnc_m66(words) {
+                return Some((message.into(), b'M'));
+            }
+        }
+        self.linuxcnc_run_refusal(words, codes, before, runs, in_place)
             .map(|message| (message, b'G'))
     }
 
@@ -819,6 +1260,7 @@ impl Checker {
         codes: &[i64],
         before: LinuxCncMotion,
         runs: Option<i64>,
+        in_place: bool,
     ) -> Option<String> {
         let after = &self.machine.state;
         // a word set by a parameter is there, its value unknown
@@ -850,18 +1292,44 @@ impl Checker {
                 ));
             }
         }
+        // G5.3 draws the NURBS (a code of group 0, run before the motion: interp_convert.cc
+        // convert_nurbs)
+        if codes.contains(&53) && before != LinuxCncMotion::Unknown && !self.linuxcnc_nurbs.unknown
+        {
+            if before != LinuxCncMotion::Known(Some(52)) {
+                return Some(
+                    "Cannot use G5.3 without G5.2 first (rs274ngc): G5.3 draws the curve of \
+                     the G5.2 blocks before it"
+                        .into(),
+                );
+            }
+            let nurbs = self.linuxcnc_nurbs;
+            if nurbs.points < nurbs.order {
+                return Some(format!(
+                    "You must specify a number of control points at least equal to the order \
+                     L = {} (rs274ngc): the curve has {} (the start and the G5.2 blocks' X Y)",
+                    nurbs.order, nurbs.points
+                ));
+            }
+        }
         let motion = runs?;
+        if motion == 52 {
+            if let Some(message) = self.linuxcnc_nurbs_point(words) {
+                return Some(message.into());
+            }
+        }
         // interp_convert.cc convert_probe, in its order: a probe move stops at contact, so it
         // runs without cutter compensation, at a feed per minute that is not zero (rs274
         // starts at F0; a feed set by a parameter is not judged)
         if (382..=385).contains(&motion) {
-            let feed_zero =
-                after.feed.is_none_or(|f| f.is_zero()) && after.unknown & bit(b'F') == 0;
             if compensation {
                 return Some("Cannot probe with cutter radius comp on (rs274ngc)".into());
             }
-            if feed_zero {
-                return Some("Cannot probe with zero feed rate (rs274ngc)".into());
+            if self.linuxcnc_feed_rate == LinuxCncFeed::Zero {
+                return Some(format!(
+                    "Cannot probe with zero feed rate (rs274ngc): {}",
+                    linuxcnc_no_feed(after.feed_mode, value(b'F'))
+                ));
             }
             if after.feed_mode == 95 {
                 return Some(
@@ -869,6 +1337,14 @@ impl Checker {
                      minute (G94) or in inverse time (G93)"
                         .into(),
                 );
+            }
+            if in_place {
+                return Some(format!(
+                    "Start point too close to probe point (rs274ngc): G{}.{} ends where it \
+                     starts, and a probe that must trip has no way to go",
+                    motion / 10,
+                    motion % 10
+                ));
             }
         }
         // a threading move follows the spindle (interp_convert.cc convert_straight for G33
@@ -960,19 +1436,19 @@ impl Checker {
         }
         let g = motion / 10;
         let first = starts(motion);
-        let feed_known = after.feed.is_some_and(|f| !f.is_zero()) || after.unknown & bit(b'F') != 0;
-        if after.feed_mode == 93 || !feed_known {
-            return Some(if after.feed_mode == 93 {
-                "Cannot feed with zero feed rate (rs274ngc): under G93 a canned cycle has no \
-                 feed rate"
-                    .into()
-            } else if value(b'F').is_some_and(|f| f.is_zero()) {
-                "Cannot feed with zero feed rate (rs274ngc): the block's F is zero".into()
-            } else {
-                "Cannot feed with zero feed rate (rs274ngc): no F before the cycle (a G93, G94 \
-                 or G95 sets the feed rate to zero until the next F)"
-                    .into()
-            });
+        // interp_cycles.cc convert_cycle: the feed rate, then inverse time
+        if self.linuxcnc_feed_rate == LinuxCncFeed::Zero {
+            return Some(format!(
+                "Cannot feed with zero feed rate (rs274ngc): {}",
+                linuxcnc_no_feed(after.feed_mode, value(b'F'))
+            ));
+        }
+        if after.feed_mode == 93 {
+            return Some(
+                "Cannot use inverse time feed with canned cycles (rs274ngc): G94 before the \
+                 cycle"
+                    .into(),
+            );
         }
         if compensation {
             return Some("Cannot use canned cycles with cutter compensation on (rs274ngc)".into());
@@ -1309,8 +1785,13 @@ impl Checker {
         // X the hole's bottom, Z its place); a Haas lathe drills radially by its own
         // G241-G249 and reads its G8x along Z, and a mill's drill along the plane's axis, Z.
         let side = self.machine.settings.fanuc_lathe && !self.config.haas;
+        // LinuxCNC drills along the plane's axis: Y in G18, X in G19 (interp_cycles.cc
+        // convert_cycle_zx, convert_cycle_yz: "Y value unspecified in xz plane canned cycle")
+        let plane_axis = cycle_axis(self.machine.state.plane).0;
         let depth = |g: i64| {
-            if side && (87..=89).contains(&g) {
+            if linuxcnc {
+                plane_axis
+            } else if side && (87..=89).contains(&g) {
                 b'X'
             } else {
                 b'Z'
@@ -1327,7 +1808,11 @@ impl Checker {
                 .zip(cycle)
                 .is_some_and(|(was, now)| depth(was) == depth(now));
         if let Some(cycle) = cycle.filter(|_| cycle_words && !kept) {
-            let axis = if depth(cycle) == b'X' { "X" } else { "Z" };
+            let axis = match depth(cycle) {
+                b'X' => "X",
+                b'Y' => "Y",
+                _ => "Z",
+            };
             // (a lathe's depth may be its increment: `X(U)_ Z(W)_` in the manual's form)
             let increment = match depth(cycle) {
                 b'X' => b'U',
@@ -1342,7 +1827,19 @@ impl Checker {
                 .map(|(_, s)| *s)
                 .collect();
             if !missing.is_empty() {
-                let message = format!("G{cycle} without {}", missing.join(" and "));
+                let mut message = format!("G{cycle} without {}", missing.join(" and "));
+                // rs274ngc's own words, R first (interp_cycles.cc convert_cycle, then the
+                // plane's function)
+                if linuxcnc {
+                    let (_, plane) = cycle_axis(self.machine.state.plane);
+                    if missing.contains(&"R") {
+                        message.push_str(" (rs274ngc: R clearance plane unspecified in cycle)");
+                    } else {
+                        message.push_str(&format!(
+                            " (rs274ngc: {axis} value unspecified in {plane} plane canned cycle)"
+                        ));
+                    }
+                }
                 // the Haas NGC Mill Operator's Manual (2017, G73-G89) marks R and Z optional:
                 // no alarm, an R plane or depth the manual does not give (issue 32, held10)
                 if self.config.haas {
@@ -1664,7 +2161,8 @@ mod tests {
             ("G18 M3 S100\nG33 Z-1 K1\nZ-2 K1 E1", None),
             ("G18 M3 S100\nG33 Z-1 K1\nE1", Some(6)),
             ("G18 M3 S100\nG76 P1.5 Z-10 I-0.1 J0.1 K1 E0.5", None),
-            ("M66 P0 L0 E1", None),
+            // (P beside E is M66's own refusal: one input, digital or analog)
+            ("M66 L0 E1", None),
             ("M67 E1 Q1", None),
             ("M68 E2 Q1", None),
             ("M68 E#1 Q1", None),
@@ -2120,6 +2618,224 @@ mod tests {
             fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses),
             []
         );
+    }
+
+    #[test]
+    fn linuxcnc_probe_and_cycle_read_rs274s_feed_rate() {
+        // interp_convert.cc convert_feed_mode: G94 and G95 zero the feed rate, G93 keeps it,
+        // and an F under G93 does not set it (review 15, finding 5)
+        let cases: &[(&str, &[&str])] = &[
+            ("F100\nG93\nG38.2 X5", &[]),
+            (
+                "F100\nG93\nG94\nG38.2 X5",
+                &["7: Cannot probe with zero feed rate"],
+            ),
+            (
+                "G93\nG38.2 X5 F10",
+                &["5: Cannot probe with zero feed rate"],
+            ),
+            ("G93\nG94 F20\nG93\nG38.2 X5", &[]),
+            ("G94\nF100\nG38.2 X5", &[]),
+            (
+                "G95 F0.1\nG94\nG38.2 X5",
+                &["6: Cannot probe with zero feed rate"],
+            ),
+            // a feed set by a parameter is not judged, nor one after a call
+            ("F#1\nG38.2 X5", &[]),
+            ("o100 call\nG38.2 X5", &[]),
+            (
+                "o100 call\nG94\nG38.2 X5",
+                &["6: Cannot probe with zero feed rate"],
+            ),
+            // a cycle: the feed rate first, then inverse time (convert_cycle)
+            (
+                "G93\nG81 X1 Y1 Z-1 R1 F10",
+                &["5: Cannot feed with zero feed rate"],
+            ),
+            (
+                "F100\nG93\nG81 X1 Y1 Z-1 R1 F10",
+                &["6: Cannot use inverse time feed with canned cycles"],
+            ),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+    }
+
+    #[test]
+    fn linuxcnc_refuses_what_rs274_refuses_while_it_reads_a_block() {
+        // each compared with rs274 -g (tests/test_linuxcnc_refusals.py)
+        let cases: &[(&str, &[&str])] = &[
+            // convert_probe: a probe that must trip ends where it starts
+            ("G38.2 Z5 F10", &["4: Start point too close to probe point"]),
+            (
+                "G91 G38.4 X0 Y0 F10",
+                &["4: Start point too close to probe point"],
+            ),
+            ("G38.3 Z5 F10\nG91 G38.5 X0 F10", &[]),
+            ("G38.2 Z4 F10", &[]),
+            // a code that moves the point or the coordinates leaves it unknown
+            ("G43 H1 G38.2 Z5 F10", &[]),
+            ("G92 Z0\nG38.2 Z5 F10", &[]),
+            (
+                "G92 Z0\nG0 Z5\nG38.2 Z5 F10",
+                &["6: Start point too close to probe point"],
+            ),
+            // an axis the checker does not keep is not judged
+            ("G38.2 A0 F10", &[]),
+            // enhance_block: a motion code with no axis word
+            ("G38.2 F10", &["4: All axes missing with motion code"]),
+            ("G5.1 I1 J1", &["4: All axes missing with motion code"]),
+            ("G38.2 @1 ^0 F10", &[]),
+            ("G1 F10\nG2 X1 Y1 I1", &[]),
+            // an expression of numbers read as rs274 reads it
+            ("M[3.5]", &["4: Non integer value for integer"]),
+            ("M[1+2] S10\nM[5.00001]", &[]),
+            ("G0 X[1/0]", &["4: Attempt to divide by zero"]),
+            ("G0 X[ABS[2/[1-1]]]", &["4: Attempt to divide by zero"]),
+            ("G0 X[1/0.5] Y[#1/2]", &[]),
+            // M66's words, in convert_m's order
+            (
+                "M66 P0 E0 L0",
+                &["4: Invalid to select both a digital and an analog input with M66"],
+            ),
+            (
+                "M66 P0 L2",
+                &["4: Zero timeout with wait type != immediate return"],
+            ),
+            (
+                "M66 E0 L1 Q1",
+                &["4: Can't select analog input with wait type != immediate return"],
+            ),
+            (
+                "M66 Q1",
+                &["4: Need to have either a valid P or a valid E word with M66"],
+            ),
+            (
+                "M66 E-2",
+                &["4: Need to have either a valid P or a valid E word with M66"],
+            ),
+            // nearbyint: -0.5 is 0, -1.5 is -2
+            ("M66 P-0.5\nM66 P1 L3 Q2\nM66 P#1 L1", &[]),
+            (
+                "M66 P-1.5",
+                &["4: Need to have either a valid P or a valid E word with M66"],
+            ),
+            // interp_array.cc _ems: M70-M73 are in the spindle's group 7
+            ("M5 M71", &["4: Two m codes used from same modal group"]),
+            ("M70\nM3 S10\nM72 M8", &[]),
+            // G43.1's axis words are offsets: no probe or NURBS point runs them
+            ("G38.2 X1 Y0 F10\nG94\nG43.1 Z1", &[]),
+            ("F10\nG5.2 X1 Y1 P1\nG43.1 Z1", &[]),
+            // an M code of unknown value may start the spindle: no thread refused after it
+            ("M[1+2] S100\nG33 Z-1 K1", &[]),
+            (
+                "M#1 S100\nM5\nG33 Z-1 K1",
+                &["6: Spindle not turning in G33"],
+            ),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+    }
+
+    #[test]
+    fn linuxcnc_nurbs_as_rs274_holds_its_control_points() {
+        // interp_convert.cc convert_nurbs and convert_modal_0, each compared with rs274 -g
+        let cases: &[(&str, &[&str])] = &[
+            ("F100\nG5.2 X1 Y1 P1 L3\nX2 Y2 P1\nX3 Y0 P1\nG5.3", &[]),
+            // the start is the first point: two G5.2 points make the order 3
+            ("F100\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3", &[]),
+            ("F100\nG5.2 P1 L3\nX1 Y1 P1\nX2 Y0 P1\nG5.3", &[]),
+            (
+                "F100\nG5.2 X1 Y1\nX2 Y2\nG5.3",
+                &["6: Must specify positive weight P for every Control Point"],
+            ),
+            (
+                "F100\nG5.2 X1 Y1 P1\nG5.3",
+                &["6: You must specify a number of control points at least equal to the order L = 3"],
+            ),
+            (
+                "F100\nG5.2 X1 Y1 P1 L4\nX2 Y2 P1\nG5.3",
+                &["7: You must specify a number of control points at least equal to the order L = 4"],
+            ),
+            ("F100\nG5.3", &["5: Cannot use G5.3 without G5.2 first"]),
+            (
+                "F100\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG5.3",
+                &["8: Cannot use G5.3 without G5.2 first"],
+            ),
+            (
+                "F100\nG5.2 X1 P1",
+                &["5: You must specify both X and Y coordinates for Control Points"],
+            ),
+            (
+                "F100\nG5.2 X1 Y1 P1\nP2 G5.2",
+                &["6: Can specify P without X and Y only for the first control point"],
+            ),
+            // the list is static: a G5.2 after another motion checks the old list first
+            (
+                "F100\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG1 X0\nG5.2 X1 Y1\nX2 Y2 P1\nG5.3",
+                &["8: Must specify positive weight P for every Control Point"],
+            ),
+            ("G5.2 X1 Y1 P1", &["4: Cannot make a NURBS with 0 feedrate"]),
+            // a weight set by a parameter, or a call, is not judged
+            ("F100\nG5.2 X1 Y1 P1\nX2 Y2 P#1\nG5.3", &[]),
+            ("F100\nG5.2 X1 Y1 P1\no100 call\nG5.3", &[]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+    }
+
+    #[test]
+    fn linuxcnc_probes_and_nurbs_need_no_f_under_g93() {
+        // they read rs274's feed rate (convert_probe, convert_nurbs); a G1 after them needs
+        // its F again, as rs274 says ("F word missing with inverse time g1 move")
+        let inverse = |body: &str| {
+            let text = program(&format!("G21 G90 G17\nG0 X0 Y0 Z5\nF100\n{body}"));
+            fired(
+                of_family(Family::LinuxCnc),
+                &text,
+                Rule::InverseTimeWithoutFeed,
+            )
+        };
+        assert_eq!(inverse("G93 G1 X1 F2\nG38.2 X5\nX6"), []);
+        assert_eq!(inverse("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3"), []);
+        assert_eq!(
+            inverse("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG1 X3"),
+            [(9, 4)]
+        );
+        // another family's G93 asks every motion block for its F
+        let text = program("G21 G90 G17\nG0 X0 Y0 Z5\nG93 G1 X1 F2\nX6");
+        assert_eq!(
+            fired(iso_mill(), &text, Rule::InverseTimeWithoutFeed).len(),
+            1
+        );
+    }
+
+    #[test]
+    fn linuxcnc_cycle_depth_is_the_planes_axis() {
+        // interp_cycles.cc: Y in G18, X in G19, Z in G17 (TG541)
+        let fired_541 = |body: &str| {
+            let text = program(&format!("G21 G90 G17 F100\nG0 X0 Y0 Z5\n{body}\nG80"));
+            findings(of_family(Family::LinuxCnc), &text, Rule::CycleIncomplete)
+                .iter()
+                .map(|f| format!("{}: {}", f.line, f.message))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(
+            fired_541("G18\nG81 X1 Z1 R2"),
+            ["5: G81 without Y (rs274ngc: Y value unspecified in xz plane canned cycle)"]
+        );
+        assert_eq!(fired_541("G18\nG81 X1 Y-1 R2"), Vec::<String>::new());
+        assert_eq!(
+            fired_541("G19\nG83 Y1 Z1 Q1"),
+            ["5: G83 without X and R (rs274ngc: R clearance plane unspecified in cycle)"]
+        );
+        assert_eq!(fired_541("G19\nG81 Y1 X-1 R2"), Vec::<String>::new());
+        // another family's mill drills along Z whatever its plane
+        let text = program("G21 G90 G18 F100\nG0 X0 Y0 Z5\nG81 X1 Z-1 R2\nG80");
+        assert_eq!(fired(iso_mill(), &text, Rule::CycleIncomplete), []);
     }
 
     #[test]
