@@ -15,11 +15,22 @@ use std::fmt;
 /// The most significant digits a value may have.
 pub const MAX_DIGITS: usize = 38;
 
+/// A value as written: `mantissa × 10^-scale`.
+///
+/// Packed to 8 bytes' alignment: an `i128` is aligned to 16, which made a value 32 bytes
+/// (12 of them padding) and an `Option<Dec>` 48, and the checker copies dozens of them a
+/// block (the modal state's positions, feeds and cycle words, the block's values, the words'
+/// values). Packed, a value is 24 bytes and an `Option<Dec>` 32; the mantissa is read by value
+/// (`{ d.mantissa }` where a reference is wanted: a reference to it would be unaligned).
 #[derive(Debug, Clone, Copy)]
+#[repr(C, packed(8))]
 pub struct Dec {
     pub mantissa: i128,
     pub scale: u32,
 }
+
+// the sizes the layout above is for: a change that makes a value wider fails to build
+const _: () = assert!(std::mem::size_of::<Dec>() == 24 && std::mem::size_of::<Option<Dec>>() == 32);
 
 /// 10^0 to 10^38: every power of ten an `i128` holds.
 pub const POW10: [i128; 39] = {
@@ -315,7 +326,7 @@ impl Ord for Dec {
         // and the scales differ by a few digits. An i64 times 10^18 at most fits an i128, so
         // no overflow check (and no i128 multiplication by the library) is needed then.
         if self.scale == other.scale {
-            return self.mantissa.cmp(&other.mantissa);
+            return { self.mantissa }.cmp(&{ other.mantissa });
         }
         if let (Ok(a), Ok(b)) = (i64::try_from(self.mantissa), i64::try_from(other.mantissa)) {
             let (a, b) = (i128::from(a), i128::from(b));
