@@ -705,6 +705,80 @@ mod tests {
         }
     }
 
+    /// A value at the edges of its layout and of its 64-bit paths: the bounds of `i64` (read,
+    /// added past, compared at other scales, truncated), 18 and 19 digits (the switch from the
+    /// u64 reading to the i128 one), every scale 0 to 38 and none past it, 38 and 39 digits,
+    /// and a negative zero as written (`-0.`, `-0.000`: zero at the scale written, no sign).
+    /// Each read through `Option`s and a list, as the packed layout stores them.
+    #[test]
+    fn a_value_at_its_edges() {
+        let (max, min) = (i128::from(i64::MAX), i128::from(i64::MIN));
+        assert_eq!({ d("9223372036854775807").mantissa }, max);
+        assert_eq!({ d("-9223372036854775808").mantissa }, min);
+        assert_eq!({ d("9223372036854775808").mantissa }, max + 1);
+        assert_eq!({ d("-9223372036854775809").mantissa }, min - 1);
+        assert_eq!(d("922337203685477580.7").scale, 1);
+        let past = d("9223372036854775807").checked_add(d("1")).unwrap();
+        assert_eq!((past.mantissa, past.scale), (max + 1, 0));
+        let below = d("-9223372036854775808").checked_add(d("-0.5")).unwrap();
+        assert_eq!((below.mantissa, below.scale), (min * 10 - 5, 1));
+        // the order's 64-bit path and its exact one meet at the bounds
+        assert!(d("9223372036854775807") < d("9223372036854775807.1"));
+        assert!(d("-9223372036854775808") > d("-9223372036854775808.01"));
+        assert!(d("922337203685477580.7") < d("9223372036854775807"));
+        assert!(d("9223372036854775807.000") == d("9223372036854775807"));
+        assert_eq!(d("9223372036854775807.9").trunc(), i64::MAX);
+        assert_eq!(d("-9223372036854775809").trunc(), i64::MIN);
+        // 18 digits in a u64, 19 and more in an i128: the same value either way
+        for count in [17, 18, 19, 20, 37, 38] {
+            let digits = "9".repeat(count);
+            let all = Dec::from_digits(digits.as_bytes(), 0).unwrap();
+            assert_eq!({ all.mantissa }, 10i128.pow(count as u32) - 1, "{count}");
+            let split = Dec::from_runs(&digits.as_bytes()[..3], &digits.as_bytes()[3..], 5);
+            assert_eq!(
+                split.map(|v| (v.mantissa, v.scale)),
+                Some((all.mantissa, 5))
+            );
+            assert_eq!({ d(&format!("-{digits}")).mantissa }, -all.mantissa);
+        }
+        assert!(Dec::from_digits("9".repeat(39).as_bytes(), 0).is_none());
+        assert!(Dec::parse(&"9".repeat(39)).is_none());
+        // every scale an i128 holds, and none past it
+        for scale in 0..=38u32 {
+            let one = Dec::from_digits(b"1", scale).unwrap();
+            assert_eq!((one.mantissa, one.scale), (1, scale));
+            assert_eq!(Dec::from_u64(1, scale), one);
+            assert_eq!(d(&format!("1E-{scale}")), one);
+            let text = format!("0.{}1", "0".repeat(scale.saturating_sub(1) as usize));
+            if scale > 0 {
+                assert_eq!(d(&text).scale, scale, "{text}");
+            }
+        }
+        assert!(Dec::from_digits(b"1", 39).is_none());
+        assert!(Dec::parse(&format!("0.{}1", "0".repeat(38))).is_none());
+        // a negative zero as written: zero at the scale written, equal to zero, no sign
+        for (text, scale, shown) in [("-0.", 0, "0"), ("-0", 0, "0"), ("-0.000", 3, "0.000")] {
+            let z = d(text);
+            assert_eq!((z.mantissa, z.scale), (0, scale), "{text}");
+            assert!(z == Dec::ZERO && z >= Dec::ZERO && z.is_whole(), "{text}");
+            assert_eq!({ (-z).mantissa }, 0);
+            assert_eq!(z.to_string(), shown);
+        }
+        // read back through Options and a list, whatever the alignment of their places
+        let values = [
+            d("-9223372036854775809"),
+            d("1E-38"),
+            d("-0.000"),
+            d("12.5"),
+        ];
+        let kept: Vec<Option<Dec>> = values.iter().map(|&v| Some(v)).chain([None]).collect();
+        for (v, k) in values.iter().zip(&kept) {
+            let k = k.unwrap();
+            assert_eq!(({ k.mantissa }, k.scale), ({ v.mantissa }, v.scale));
+        }
+        assert!(kept[4].is_none());
+    }
+
     #[test]
     fn digits_read_in_place_as_when_joined() {
         // the 64-bit path (up to 18 significant digits, any zeros before) and the 128-bit one

@@ -556,6 +556,21 @@ mod tests {
         let w = Word::new(b"X=10", 1);
         assert_eq!((w.index, w.number), (&b""[..], &b"10"[..]));
         assert!(Word::new(b"X10", 1).number == b"10" && !Word::new(b"X10", 1).point);
+        // a negative zero keeps its sign as written in the word's parts; its value is zero at
+        // the scale written (a `Dec` has no negative zero)
+        for (token, number, scale) in [(&b"X-0."[..], &b"0."[..], 0), (b"X-0.000", b"0.000", 3)] {
+            let w = Word::new(token, 1);
+            assert_eq!(
+                (w.sign, w.number, w.point, w.value),
+                (&b"-"[..], number, true, Some(0))
+            );
+            let v = read_word(&fmt(4, 3), &w, || NoPoint {
+                whole: false,
+                increments: false,
+            })
+            .unwrap();
+            assert_eq!(({ v.mantissa }, v.scale), (0, scale));
+        }
     }
 
     #[test]
