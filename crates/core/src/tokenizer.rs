@@ -840,7 +840,7 @@ fn plain_word<'a, O: PlainOut<'a>>(
     }
     let n = line.len();
     if line.get(pos + 1) == Some(&b'[') {
-        return words.bracket(line, pos, dialect);
+        return bracket_word(line, pos, dialect, words);
     }
     let mut i = pos + 1;
     let signed = matches!(line.get(i), Some(b'+' | b'-'));
@@ -886,8 +886,8 @@ fn plain_word<'a, O: PlainOut<'a>>(
 trait PlainOut<'a> {
     /// The plain word `line[pos..end]`, its sign one byte long where `signed`.
     fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits);
-    /// A letter and a `[` at `pos`: [`bracket_word`]'s, or None (not a plain word).
-    fn bracket(&mut self, line: &'a [u8], pos: usize, dialect: &Dialect) -> Option<usize>;
+    /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number.
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize);
 }
 
 impl<'a> PlainOut<'a> for Vec<Token<'a>> {
@@ -903,8 +903,14 @@ impl<'a> PlainOut<'a> for Vec<Token<'a>> {
     }
 
     #[inline(always)]
-    fn bracket(&mut self, line: &'a [u8], pos: usize, dialect: &Dialect) -> Option<usize> {
-        bracket_word(line, pos, dialect, self)
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
+        self.push(Token {
+            offset: pos,
+            end,
+            text: Cow::Borrowed(&line[pos..end]),
+            plain: None,
+            digits: Digits::default(),
+        });
     }
 }
 
@@ -922,8 +928,8 @@ impl<'a, F: Fn(usize) -> usize> PlainOut<'a> for WordsOut<'_, 'a, F> {
     }
 
     #[inline(always)]
-    fn bracket(&mut self, _: &'a [u8], _: usize, _: &Dialect) -> Option<usize> {
-        None
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
+        self.words.push(Word::new(&line[pos..end], (self.at)(pos)));
     }
 }
 
@@ -932,7 +938,7 @@ impl<'a, F: Fn(usize) -> usize> PlainOut<'a> for WordsOut<'_, 'a, F> {
 /// column `at` gives its offset, with no token between: true, and `words` holds the words
 /// [`Word::extend_of`] makes of [`tokenize`]'s tokens of the line, which has no extras. False
 /// for any other line (a block skip, a `%`, a SUB, a byte-order mark, a comment, a statement,
-/// a bracketed word, anything the full reading reads): `words` then holds what it held and
+/// anything the full reading reads): `words` then holds what it held and
 /// some of the line's words, and the line is [`tokenize`]'s.
 pub fn plain_line_words<'a>(
     line: &'a [u8],
@@ -969,11 +975,11 @@ const BRACKET_DEPTH: u32 = 16;
 /// descent (`sum`, `product`, `unary`, `atom`, each a call), about 1,000 instructions of
 /// 3D_Chips' 2,180 a block.
 #[inline(never)]
-fn bracket_word<'a>(
+fn bracket_word<'a, O: PlainOut<'a>>(
     line: &'a [u8],
     pos: usize,
     dialect: &Dialect,
-    words: &mut Vec<Token<'a>>,
+    words: &mut O,
 ) -> Option<usize> {
     let linuxcnc = dialect.family == Family::LinuxCnc;
     if !(dialect.expressions && dialect.brackets && (linuxcnc || dialect.family == Family::Iso)) {
@@ -1048,13 +1054,7 @@ fn bracket_word<'a>(
                     depth -= 1;
                     if depth == 0 {
                         let after = skip_blanks(line, i);
-                        words.push(Token {
-                            offset: pos,
-                            end: i,
-                            text: Cow::Borrowed(&line[pos..i]),
-                            plain: None,
-                            digits: Digits::default(),
-                        });
+                        words.bracketed(line, pos, i);
                         return Some(after);
                     }
                 }
