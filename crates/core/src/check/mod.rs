@@ -1036,33 +1036,42 @@ impl Checker {
         words: Vec<Word<'t>>,
         extras: Option<&Extras<'t>>,
     ) {
+        let Some(e) = extras else {
+            // (a line without extras, nearly every one: no buffer of comments or statements
+            // taken and given back)
+            self.block(&BlockView {
+                line,
+                text,
+                words: &words,
+                skip: false,
+                skip_within: None,
+                comments: &[],
+                percent: false,
+                ident: b"",
+                statements: &[],
+            });
+            self.words_buffer = recycle(words);
+            return;
+        };
         let at = at_column(text, ascii);
         let mut comments: Vec<(usize, &[u8])> = recycle(std::mem::take(&mut self.comments_buffer));
         let mut statements: Vec<(usize, Kind, &[u8])> =
             recycle(std::mem::take(&mut self.statements_buffer));
-        let mut skip_within = None;
-        let (skip, percent, ident) = match extras {
-            Some(e) => {
-                skip_within = e.skip_within.map(|(offset, _)| at(offset));
-                comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
-                statements.extend(
-                    e.statements
-                        .iter()
-                        .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
-                );
-                (e.skip != 0, e.percent, e.ident)
-            }
-            None => (false, false, &b""[..]),
-        };
+        comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+        statements.extend(
+            e.statements
+                .iter()
+                .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
+        );
         self.block(&BlockView {
             line,
             text,
             words: &words,
-            skip,
-            skip_within,
+            skip: e.skip != 0,
+            skip_within: e.skip_within.map(|(offset, _)| at(offset)),
             comments: &comments,
-            percent,
-            ident,
+            percent: e.percent,
+            ident: e.ident,
             statements: &statements,
         });
         self.words_buffer = recycle(words);
