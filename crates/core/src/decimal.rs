@@ -15,11 +15,22 @@ use std::fmt;
 /// The most significant digits a value may have.
 pub const MAX_DIGITS: usize = 38;
 
+/// A value as written: `mantissa × 10^-scale`.
+///
+/// Packed to 8 bytes' alignment: an `i128` is aligned to 16, which made a value 32 bytes
+/// (12 of them padding) and an `Option<Dec>` 48, and the checker copies dozens of them a
+/// block (the modal state's positions, feeds and cycle words, the block's values, the words'
+/// values). Packed, a value is 24 bytes and an `Option<Dec>` 32; the mantissa is read by value
+/// (`{ d.mantissa }` where a reference is wanted: a reference to it would be unaligned).
 #[derive(Debug, Clone, Copy)]
+#[repr(C, packed(8))]
 pub struct Dec {
     pub mantissa: i128,
     pub scale: u32,
 }
+
+// the sizes the layout above is for: a change that makes a value wider fails to build
+const _: () = assert!(std::mem::size_of::<Dec>() == 24 && std::mem::size_of::<Option<Dec>>() == 32);
 
 /// 10^0 to 10^38: every power of ten an `i128` holds.
 pub const POW10: [i128; 39] = {
@@ -315,7 +326,7 @@ impl Ord for Dec {
         // and the scales differ by a few digits. An i64 times 10^18 at most fits an i128, so
         // no overflow check (and no i128 multiplication by the library) is needed then.
         if self.scale == other.scale {
-            return self.mantissa.cmp(&other.mantissa);
+            return { self.mantissa }.cmp(&{ other.mantissa });
         }
         if let (Ok(a), Ok(b)) = (i64::try_from(self.mantissa), i64::try_from(other.mantissa)) {
             let (a, b) = (i128::from(a), i128::from(b));
@@ -692,6 +703,80 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// A value at the edges of its layout and of its 64-bit paths: the bounds of `i64` (read,
+    /// added past, compared at other scales, truncated), 18 and 19 digits (the switch from the
+    /// u64 reading to the i128 one), every scale 0 to 38 and none past it, 38 and 39 digits,
+    /// and a negative zero as written (`-0.`, `-0.000`: zero at the scale written, no sign).
+    /// Each read through `Option`s and a list, as the packed layout stores them.
+    #[test]
+    fn a_value_at_its_edges() {
+        let (max, min) = (i128::from(i64::MAX), i128::from(i64::MIN));
+        assert_eq!({ d("9223372036854775807").mantissa }, max);
+        assert_eq!({ d("-9223372036854775808").mantissa }, min);
+        assert_eq!({ d("9223372036854775808").mantissa }, max + 1);
+        assert_eq!({ d("-9223372036854775809").mantissa }, min - 1);
+        assert_eq!(d("922337203685477580.7").scale, 1);
+        let past = d("9223372036854775807").checked_add(d("1")).unwrap();
+        assert_eq!((past.mantissa, past.scale), (max + 1, 0));
+        let below = d("-9223372036854775808").checked_add(d("-0.5")).unwrap();
+        assert_eq!((below.mantissa, below.scale), (min * 10 - 5, 1));
+        // the order's 64-bit path and its exact one meet at the bounds
+        assert!(d("9223372036854775807") < d("9223372036854775807.1"));
+        assert!(d("-9223372036854775808") > d("-9223372036854775808.01"));
+        assert!(d("922337203685477580.7") < d("9223372036854775807"));
+        assert!(d("9223372036854775807.000") == d("9223372036854775807"));
+        assert_eq!(d("9223372036854775807.9").trunc(), i64::MAX);
+        assert_eq!(d("-9223372036854775809").trunc(), i64::MIN);
+        // 18 digits in a u64, 19 and more in an i128: the same value either way
+        for count in [17, 18, 19, 20, 37, 38] {
+            let digits = "9".repeat(count);
+            let all = Dec::from_digits(digits.as_bytes(), 0).unwrap();
+            assert_eq!({ all.mantissa }, 10i128.pow(count as u32) - 1, "{count}");
+            let split = Dec::from_runs(&digits.as_bytes()[..3], &digits.as_bytes()[3..], 5);
+            assert_eq!(
+                split.map(|v| (v.mantissa, v.scale)),
+                Some((all.mantissa, 5))
+            );
+            assert_eq!({ d(&format!("-{digits}")).mantissa }, -all.mantissa);
+        }
+        assert!(Dec::from_digits("9".repeat(39).as_bytes(), 0).is_none());
+        assert!(Dec::parse(&"9".repeat(39)).is_none());
+        // every scale an i128 holds, and none past it
+        for scale in 0..=38u32 {
+            let one = Dec::from_digits(b"1", scale).unwrap();
+            assert_eq!((one.mantissa, one.scale), (1, scale));
+            assert_eq!(Dec::from_u64(1, scale), one);
+            assert_eq!(d(&format!("1E-{scale}")), one);
+            let text = format!("0.{}1", "0".repeat(scale.saturating_sub(1) as usize));
+            if scale > 0 {
+                assert_eq!(d(&text).scale, scale, "{text}");
+            }
+        }
+        assert!(Dec::from_digits(b"1", 39).is_none());
+        assert!(Dec::parse(&format!("0.{}1", "0".repeat(38))).is_none());
+        // a negative zero as written: zero at the scale written, equal to zero, no sign
+        for (text, scale, shown) in [("-0.", 0, "0"), ("-0", 0, "0"), ("-0.000", 3, "0.000")] {
+            let z = d(text);
+            assert_eq!((z.mantissa, z.scale), (0, scale), "{text}");
+            assert!(z == Dec::ZERO && z >= Dec::ZERO && z.is_whole(), "{text}");
+            assert_eq!({ (-z).mantissa }, 0);
+            assert_eq!(z.to_string(), shown);
+        }
+        // read back through Options and a list, whatever the alignment of their places
+        let values = [
+            d("-9223372036854775809"),
+            d("1E-38"),
+            d("-0.000"),
+            d("12.5"),
+        ];
+        let kept: Vec<Option<Dec>> = values.iter().map(|&v| Some(v)).chain([None]).collect();
+        for (v, k) in values.iter().zip(&kept) {
+            let k = k.unwrap();
+            assert_eq!(({ k.mantissa }, k.scale), ({ v.mantissa }, v.scale));
+        }
+        assert!(kept[4].is_none());
     }
 
     #[test]

@@ -19,6 +19,7 @@ use std::borrow::Cow;
 use crate::expr::{self, skip_blanks};
 use crate::statement::{self, Kind as StatementKind, Read, Statement};
 use crate::text::{column, Char};
+use crate::word::Word;
 
 use crate::lex::{
     apart, blank, compact, err, number_ahead, Dialect, Digits, ErrorKind, Family, LexError, Token,
@@ -744,12 +745,12 @@ fn mirrored_axis(
 /// its own, out of line, so that its loops keep the line and their counts in registers: inside
 /// [`tokenize`], among the full reading's values, the digit loops reloaded them from the stack.
 #[inline(never)]
-fn plain_words<'a>(
+fn plain_words<'a, O: PlainOut<'a>>(
     line: &'a [u8],
     mut pos: usize,
     head: usize,
     dialect: &Dialect,
-    words: &mut Vec<Token<'a>>,
+    words: &mut O,
 ) -> usize {
     while pos < line.len() {
         match plain_word(line, pos, head, dialect, words) {
@@ -824,12 +825,12 @@ const PLAIN_START: [[[u8; 256]; 2]; 6] = {
 /// (nearly every word of a CAM program is one; the full reading cost about 240 instructions a
 /// word on them).
 #[inline(always)]
-fn plain_word<'a>(
+fn plain_word<'a, O: PlainOut<'a>>(
     line: &'a [u8],
     pos: usize,
     head: usize,
     dialect: &Dialect,
-    words: &mut Vec<Token<'a>>,
+    words: &mut O,
 ) -> Option<usize> {
     let b = line[pos];
     match PLAIN_START[dialect.family as usize][usize::from(dialect.lowercase)][usize::from(b)] {
@@ -876,14 +877,84 @@ fn plain_word<'a>(
         Some(b'0'..=b'9' | b'.') if dialect.family == Family::LinuxCnc => return None,
         _ => {}
     }
-    words.push(Token {
-        offset: pos,
-        end: i,
-        text: Cow::Borrowed(&line[pos..i]),
-        plain: Some(u8::from(signed)),
-        digits: Digits::new(dot, count, value),
-    });
+    words.plain(line, pos, i, signed, Digits::new(dot, count, value));
     Some(after)
+}
+
+/// Where [`plain_word`] writes a plain word: a token ([`tokenize`]), or the checker's word
+/// ([`plain_line_words`]).
+trait PlainOut<'a> {
+    /// The plain word `line[pos..end]`, its sign one byte long where `signed`.
+    fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits);
+    /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number.
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize);
+}
+
+impl<'a> PlainOut<'a> for Vec<Token<'a>> {
+    #[inline(always)]
+    fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits) {
+        self.push(Token {
+            offset: pos,
+            end,
+            text: Cow::Borrowed(&line[pos..end]),
+            plain: Some(u8::from(signed)),
+            digits,
+        });
+    }
+
+    #[inline(always)]
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
+        self.push(Token {
+            offset: pos,
+            end,
+            text: Cow::Borrowed(&line[pos..end]),
+            plain: None,
+            digits: Digits::default(),
+        });
+    }
+}
+
+/// The checker's words of a line, each at the column its offset gives.
+struct WordsOut<'w, 'a, F: Fn(usize) -> usize> {
+    words: &'w mut Vec<Word<'a>>,
+    at: F,
+}
+
+impl<'a, F: Fn(usize) -> usize> PlainOut<'a> for WordsOut<'_, 'a, F> {
+    #[inline(always)]
+    fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits) {
+        self.words
+            .push(Word::plain(&line[pos..end], signed, digits, (self.at)(pos)));
+    }
+
+    #[inline(always)]
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
+        self.words.push(Word::new(&line[pos..end], (self.at)(pos)));
+    }
+}
+
+/// The words of a `line` made of plain words alone ([`plain_word`]: nearly every line of a
+/// CAM program), written as the checker's [`Word`]s where they are scanned, each at the
+/// column `at` gives its offset, with no token between: true, and `words` holds the words
+/// [`Word::extend_of`] makes of [`tokenize`]'s tokens of the line, which has no extras. False
+/// for any other line (a block skip, a `%`, a SUB, a byte-order mark, a comment, a statement,
+/// anything the full reading reads): `words` then holds what it held and
+/// some of the line's words, and the line is [`tokenize`]'s.
+pub fn plain_line_words<'a>(
+    line: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    at: impl Fn(usize) -> usize,
+) -> bool {
+    if line.len() > MAX_BLOCK {
+        return false;
+    }
+    let pos = skip_blanks(line, 0);
+    if matches!(line.get(pos), Some(&(SUB | b'%' | b'/'))) || line.starts_with(BOM) {
+        return false;
+    }
+    let mut out = WordsOut { words, at };
+    plain_words(line, pos, pos, dialect, &mut out) >= line.len()
 }
 
 /// The deepest brackets [`bracket_word`] reads; deeper ones (up to [`expr::MAX_DEPTH`]) are the
@@ -904,11 +975,11 @@ const BRACKET_DEPTH: u32 = 16;
 /// descent (`sum`, `product`, `unary`, `atom`, each a call), about 1,000 instructions of
 /// 3D_Chips' 2,180 a block.
 #[inline(never)]
-fn bracket_word<'a>(
+fn bracket_word<'a, O: PlainOut<'a>>(
     line: &'a [u8],
     pos: usize,
     dialect: &Dialect,
-    words: &mut Vec<Token<'a>>,
+    words: &mut O,
 ) -> Option<usize> {
     let linuxcnc = dialect.family == Family::LinuxCnc;
     if !(dialect.expressions && dialect.brackets && (linuxcnc || dialect.family == Family::Iso)) {
@@ -983,13 +1054,7 @@ fn bracket_word<'a>(
                     depth -= 1;
                     if depth == 0 {
                         let after = skip_blanks(line, i);
-                        words.push(Token {
-                            offset: pos,
-                            end: i,
-                            text: Cow::Borrowed(&line[pos..i]),
-                            plain: None,
-                            digits: Digits::default(),
-                        });
+                        words.bracketed(line, pos, i);
                         return Some(after);
                     }
                 }
@@ -1298,6 +1363,7 @@ mod tests {
                 ..Dialect::permissive(family)
             });
         }
+        let (plain_lines, other_lines) = (std::cell::Cell::new(0), std::cell::Cell::new(0));
         let same = |line: &[u8], dialect: &Dialect| {
             let (mut fast, mut full) = (Vec::new(), Vec::new());
             let a = tokenize_as::<true>(line, dialect, &mut fast);
@@ -1309,6 +1375,39 @@ mod tests {
                 "{:?} {dialect:?}",
                 String::from_utf8_lossy(line)
             );
+            // a line of plain words alone: its words written where they are scanned are the
+            // words of its tokens, at the same columns (a column an offset, or a count of
+            // characters: both ways of `at`)
+            let mut words = vec![Word::new(b"G1", 1)];
+            let at = |offset: usize| 3 * offset + 7;
+            if plain_line_words(line, dialect, &mut words, at) {
+                plain_lines.set(plain_lines.get() + 1);
+                assert_eq!(
+                    a,
+                    Ok(None),
+                    "{:?} {dialect:?}",
+                    String::from_utf8_lossy(line)
+                );
+                let mut read = vec![Word::new(b"G1", 1)];
+                Word::extend_of(&mut read, &fast, at);
+                assert_eq!(words.len(), read.len());
+                for (w, r) in words.iter().zip(&read) {
+                    #[allow(clippy::type_complexity)]
+                    fn parts<'w>(
+                        w: &Word<'w>,
+                    ) -> (u8, u8, [&'w [u8]; 5], usize, bool, usize, Option<u64>)
+                    {
+                        let texts = [w.index, w.sign, w.number, w.expression, w.token];
+                        (
+                            w.address, w.letter, texts, w.column, w.point, w.dot, w.value,
+                        )
+                    }
+                    assert_eq!(parts(w), parts(r), "{:?}", String::from_utf8_lossy(line));
+                }
+            } else {
+                // (the full reading's, always right: a fallback, never a difference)
+                other_lines.set(other_lines.get() + 1);
+            }
         };
         let plain = [
             "N1000 X2.756 Y78.188 I4.199 J-10.371",
@@ -1375,6 +1474,9 @@ mod tests {
                 same(&line, dialect);
             }
         }
+        // both ways are taken, many times
+        assert!(plain_lines.get() > 5_000, "{}", plain_lines.get());
+        assert!(other_lines.get() > 50_000, "{}", other_lines.get());
     }
 
     #[test]

@@ -188,7 +188,8 @@ impl<'a> Word<'a> {
     /// The word of a tokenizer's `token` at `column`: its parts as the tokenizer found them
     /// where it is a plain number after its address ([`Token::plain`], [`Token::digits`]),
     /// without a second reading; else as [`Word::new`] splits it. The same word either way.
-    /// (A block's list of words is [`Word::extend_of`]'s, which writes them in place.)
+    /// (A block's list of words is [`Word::extend_of`]'s, which writes them in place,
+    /// or, for a line of plain words alone, [`crate::tokenizer::plain_line_words`]'s.)
     #[inline]
     pub fn of(token: &'a Token<'_>, column: usize) -> Word<'a> {
         match token.plain {
@@ -231,11 +232,21 @@ impl<'a> Word<'a> {
     /// bytes, cost 20-40 instructions a block: the map was no longer written in place.)
     #[inline(always)]
     fn plain_of(token: &'a Token<'_>, sign: u8, column: usize) -> Word<'a> {
-        let text: &'a [u8] = &token.text;
+        Word::plain(&token.text, sign != 0, token.digits, column)
+    }
+
+    /// The word of a plain `text` (its address, a sign where `signed`, digits with an optional
+    /// point: [`crate::tokenizer`]'s plain word) at `column`, its number's `digits` as they were
+    /// scanned: the word of the token the tokenizer makes of it ([`Word::plain_of`]), or the
+    /// word the tokenizer writes where it scans a line of plain words alone
+    /// ([`crate::tokenizer::plain_line_words`]). (Of a token that is not plain, `signed` false
+    /// and no digits: a word to be split again, its text its address at least.)
+    #[inline(always)]
+    pub fn plain(text: &'a [u8], signed: bool, digits: Digits, column: usize) -> Word<'a> {
         let address = text[0];
-        let value = (1 + usize::from(sign)).min(text.len());
+        let value = 1 + usize::from(signed);
         let number = &text[value..];
-        let dot = token.digits.dot as usize;
+        let dot = digits.dot as usize;
         Word {
             address,
             letter: address.to_ascii_uppercase(),
@@ -247,7 +258,7 @@ impl<'a> Word<'a> {
             token: text,
             point: dot < number.len(),
             dot,
-            value: token.digits.value,
+            value: digits.value,
         }
     }
 
@@ -557,6 +568,21 @@ mod tests {
         let w = Word::new(b"X=10", 1);
         assert_eq!((w.index, w.number), (&b""[..], &b"10"[..]));
         assert!(Word::new(b"X10", 1).number == b"10" && !Word::new(b"X10", 1).point);
+        // a negative zero keeps its sign as written in the word's parts; its value is zero at
+        // the scale written (a `Dec` has no negative zero)
+        for (token, number, scale) in [(&b"X-0."[..], &b"0."[..], 0), (b"X-0.000", b"0.000", 3)] {
+            let w = Word::new(token, 1);
+            assert_eq!(
+                (w.sign, w.number, w.point, w.value),
+                (&b"-"[..], number, true, Some(0))
+            );
+            let v = read_word(&fmt(4, 3), &w, || NoPoint {
+                whole: false,
+                increments: false,
+            })
+            .unwrap();
+            assert_eq!(({ v.mantissa }, v.scale), (0, scale));
+        }
     }
 
     #[test]

@@ -25,7 +25,7 @@ use crate::modal::{bit, BlockValues, ModalMachine, ModalSettings, ModalState, Un
 use crate::rules::{Rule, Selection};
 use crate::statement::Kind;
 use crate::text::column;
-use crate::tokenizer::{tokenize, Extras};
+use crate::tokenizer::{plain_line_words, tokenize, Extras};
 use crate::word::{Numbers, ReadsBlocks};
 use crate::wordformat::WordFormat;
 use formats::FormatTable;
@@ -402,6 +402,31 @@ fn letters_of(words: &[Word<'_>]) -> u32 {
 const PARAMETER: u32 = 1 << 26;
 /// [`Checker::letters`]: the block has a word with an index (`#1=5`, `R1=5`, `M2=3`).
 const INDEXED: u32 = 1 << 27;
+
+/// The column of the byte at an offset of `text`: in an ASCII line, as nearly every one is,
+/// the offset and one.
+#[inline(always)]
+fn at_column(text: &[u8], ascii: bool) -> impl Fn(usize) -> usize + '_ {
+    move |offset: usize| {
+        if ascii {
+            offset + 1
+        } else {
+            column(text, offset)
+        }
+    }
+}
+
+/// Whether two lists of words have the same parts (a debug build's test of
+/// [`plain_line_words`]).
+fn same_words(a: &[Word<'_>], b: &[Word<'_>]) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(a, b)| {
+            (a.address, a.letter, a.index, a.sign, a.number)
+                == (b.address, b.letter, b.index, b.sign, b.number)
+                && (a.expression, a.column, a.token, a.point, a.dot, a.value)
+                    == (b.expression, b.column, b.token, b.point, b.dot, b.value)
+        })
+}
 
 /// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
 /// checker keeps one allocation for every block's words (and comments and statements), which
@@ -965,6 +990,27 @@ impl Checker {
         if self.not_read(line, text) {
             return;
         }
+        // a line of plain words alone has its words written where they are scanned, with no
+        // token between (a debug build reads it through the tokens as well, and asserts the
+        // same words); any other line is read in full
+        let mut words: Vec<Word<'a>> = recycle(std::mem::take(&mut self.words_buffer));
+        let ascii = text.is_ascii();
+        if plain_line_words(text, dialect, &mut words, at_column(text, ascii)) {
+            if cfg!(debug_assertions) {
+                let mut read = Vec::new();
+                assert!(matches!(tokenize(text, dialect, tokens), Ok(None)));
+                Word::extend_of(&mut read, tokens, at_column(text, ascii));
+                assert!(
+                    same_words(&read, &words),
+                    "line {line}: a plain line's words differ from its tokens'"
+                );
+                tokens.clear();
+            }
+            self.check_words(text, line, ascii, words, None);
+            return;
+        }
+        words.clear();
+        self.words_buffer = recycle(words);
         match tokenize(text, dialect, tokens) {
             Ok(extras) => self.check_read(text, line, tokens, extras.as_ref()),
             Err(error) => self.unreadable(&Unreadable {
@@ -985,43 +1031,58 @@ impl Checker {
         tokens: &[Token<'_>],
         extras: Option<&Extras<'_>>,
     ) {
-        // (in an ASCII line, as nearly every one is, a column is its offset)
         let ascii = text.is_ascii();
-        let at = |offset: usize| {
-            if ascii {
-                offset + 1
-            } else {
-                column(text, offset)
-            }
-        };
         let mut words: Vec<Word<'_>> = recycle(std::mem::take(&mut self.words_buffer));
-        Word::extend_of(&mut words, tokens, at);
+        Word::extend_of(&mut words, tokens, at_column(text, ascii));
+        self.check_words(text, line, ascii, words, extras);
+    }
+
+    /// Check one line's `words` and `extras` (its comments, statements, skip), and keep the
+    /// buffers for the next line. `ascii`: the line is ASCII.
+    fn check_words<'t>(
+        &mut self,
+        text: &'t [u8],
+        line: usize,
+        ascii: bool,
+        words: Vec<Word<'t>>,
+        extras: Option<&Extras<'t>>,
+    ) {
+        let Some(e) = extras else {
+            // (a line without extras, nearly every one: no buffer of comments or statements
+            // taken and given back)
+            self.block(&BlockView {
+                line,
+                text,
+                words: &words,
+                skip: false,
+                skip_within: None,
+                comments: &[],
+                percent: false,
+                ident: b"",
+                statements: &[],
+            });
+            self.words_buffer = recycle(words);
+            return;
+        };
+        let at = at_column(text, ascii);
         let mut comments: Vec<(usize, &[u8])> = recycle(std::mem::take(&mut self.comments_buffer));
         let mut statements: Vec<(usize, Kind, &[u8])> =
             recycle(std::mem::take(&mut self.statements_buffer));
-        let mut skip_within = None;
-        let (skip, percent, ident) = match extras {
-            Some(e) => {
-                skip_within = e.skip_within.map(|(offset, _)| at(offset));
-                comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
-                statements.extend(
-                    e.statements
-                        .iter()
-                        .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
-                );
-                (e.skip != 0, e.percent, e.ident)
-            }
-            None => (false, false, &b""[..]),
-        };
+        comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+        statements.extend(
+            e.statements
+                .iter()
+                .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
+        );
         self.block(&BlockView {
             line,
             text,
             words: &words,
-            skip,
-            skip_within,
+            skip: e.skip != 0,
+            skip_within: e.skip_within.map(|(offset, _)| at(offset)),
             comments: &comments,
-            percent,
-            ident,
+            percent: e.percent,
+            ident: e.ident,
             statements: &statements,
         });
         self.words_buffer = recycle(words);

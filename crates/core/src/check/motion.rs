@@ -182,7 +182,7 @@ impl Checker {
             w.letter == b'G'
                 && self.readable[i].is_some_and(|v| {
                     let v = v.normalized();
-                    v.scale == 1 && codes.contains(&v.mantissa)
+                    v.scale == 1 && codes.contains(&{ v.mantissa })
                 })
         })
     }
@@ -207,7 +207,7 @@ impl Checker {
                         w.letter == b'G'
                             && self.readable[i].is_some_and(|v| {
                                 let v = v.normalized();
-                                v.scale == 1 && SETS.contains(&v.mantissa)
+                                v.scale == 1 && SETS.contains(&{ v.mantissa })
                             })
                     });
                 !sets && !facts.has(10) && !facts.has(52)
