@@ -399,17 +399,24 @@ def load_profile(name_or_path: str) -> Profile:
             raise ProfileError(f"cannot read profile: not UTF-8 text ({exc.reason} at byte "
                                f"{exc.start})", file=str(path), code="profile-unreadable"
                                ) from None
-        return profile_from_text(text, source=str(path), default_name=path.stem)
+        return profile_from_text(text, source=str(path), default_name=path.stem,
+                                 cache_as=FILE_CACHE_NAME)
     raise ProfileError(
         f"no profile named {name_or_path!r}; built-in profiles: {', '.join(builtin_names())} "
         "(or give the path of a .toml file)", code="profile-not-found"
     )
 
 
+# The name a profile file's parsed TOML is kept under (formats.profile_cache): its text decides
+# whether an entry is used, whatever file held it.
+FILE_CACHE_NAME = "file"
+
+
 def profile_from_text(text: str, source: str = "<text>", default_name: str = "", *,
                       cache_as: str | None = None) -> Profile:
-    """The profile of a TOML ``text``. ``cache_as``: the name of the built-in profile this is
-    the text of, whose parsed TOML is kept between runs (:mod:`formats.profile_cache`)."""
+    """The profile of a TOML ``text``. ``cache_as``: the name its parsed TOML is kept under
+    between runs (:mod:`formats.profile_cache`): a built-in profile's name, or
+    :data:`FILE_CACHE_NAME` for a user's profile file."""
     data = _toml(text, source, cache_as)
     try:
         if "base" in data:

@@ -15,6 +15,7 @@ import pytest
 
 from formats import profile as profile_module
 from formats import profile_cache
+from formats.errors import ProfileError
 from formats.profile import builtin_text, load_profile, neutral, profile_from_text
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -81,6 +82,38 @@ def entry(text: str, data: dict) -> bytes:
     marshalled table, the table."""
     table = marshal.dumps(data)
     return marshal.dumps((profile_cache.KEY, text, zlib.crc32(table), table))
+
+
+def test_a_profile_files_parsed_toml_is_kept_by_its_text(cache, monkeypatch, tmp_path):
+    """A user's profile file (``--to machine.toml``) is parsed once, then read from the cache
+    (no tomllib: with typing, string and datetime, 40M instructions of a conversion's start-up);
+    the entry is the text's, whatever file holds it, and a changed file is parsed again."""
+    text = ('name = "implicit-inch"\n'
+            'detailed = "%:/ N07 G02 X+044 Y+044 Z+044 I+044 J+044 F042 S05 T02 M02*"\n'
+            'units_codes = "G20/G21"\nunits = "inch"\n')
+    first_file = tmp_path / "machine.toml"
+    first_file.write_text(text)
+    first = load_profile(str(first_file))
+    assert first == profile_from_text(text, source=str(first_file), default_name="machine")
+    files = sorted(p.name for p in cache.iterdir())
+    assert len(files) == 1 and files[0].startswith(f"profile-{profile_module.FILE_CACHE_NAME}-")
+    other_file = tmp_path / "other" / "copy.toml"  # the same text in another file
+    other_file.parent.mkdir()
+    other_file.write_text(text)
+    with monkeypatch.context() as refused:
+        no_toml(refused)
+        again = load_profile(str(first_file))
+        copy = load_profile(str(other_file))
+    assert again == first and again is not first
+    assert copy == profile_from_text(text, source=str(other_file), default_name="copy")
+    assert sorted(p.name for p in cache.iterdir()) == files  # nothing written again
+    first_file.write_text(text.replace("F042", "F052"))
+    changed = load_profile(str(first_file))  # parsed again: a new entry beside the old
+    assert changed != first and len(list(cache.iterdir())) == 2
+    first_file.write_text("name = [")
+    with pytest.raises(ProfileError, match="not valid TOML") as bad:  # (and nothing kept)
+        load_profile(str(first_file))
+    assert bad.value.file == str(first_file) and len(list(cache.iterdir())) == 2
 
 
 def test_an_entry_holding_another_text_under_the_same_name_is_not_used(cache):
