@@ -11,7 +11,8 @@ first asked for, so :func:`dataclasses.fields`, :func:`dataclasses.replace` and
 :func:`dataclasses.asdict` work as before. What a dataclass did, these do alike: the same
 ``repr`` (``Name(a=1, b='x')``), equality of two instances of the same class field by field
 (else ``NotImplemented``), the hash of the fields' tuple for a frozen class and none for a
-mutable one, and
+mutable one, a field declared ``field(repr=False)`` or ``field(compare=False)`` left out of
+``repr`` or of ``==`` and the hash, and
 :class:`dataclasses.FrozenInstanceError` on assignment to a frozen one
 (``tests/test_records.py`` holds each class to a dataclass of the same fields).
 
@@ -118,6 +119,8 @@ class _Registered:
     def _register(owner: type) -> dict[str, dataclasses.Field[Any]]:
         import dataclasses
 
+        # (the fields repr and == leave out, found before their declarations are replaced)
+        owner.__record_shown__, owner.__record_compared__  # type: ignore[attr-defined]  # noqa: B018
         for name, value in list(owner.__dict__.items()):
             if isinstance(value, _Field):
                 setattr(owner, name, dataclasses.field(**value.arguments))
@@ -128,25 +131,50 @@ class _Registered:
         return owner.__dict__["__dataclass_fields__"]  # type: ignore[no-any-return]
 
 
+class _Flagged:
+    """``__record_shown__`` and ``__record_compared__`` of a record class: its fields but those
+    declared ``field(repr=False)``, or ``field(compare=False)``, as a dataclass leaves them out
+    of ``repr``, or of ``==`` and the hash; found when first asked for and kept in the class
+    (which hides this one from then on), not at import."""
+
+    def __init__(self, flag: str) -> None:
+        self.flag = flag
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.name = name
+
+    def __get__(self, obj: object, owner: type) -> tuple[str, ...]:
+        found = tuple(name for name in owner.__record_fields__  # type: ignore[attr-defined]
+                      if not (isinstance(declared := owner.__dict__.get(name), _Field)
+                              and declared.arguments.get(self.flag) is False))
+        setattr(owner, self.name, found)
+        return found
+
+
 class Record:
     """A mutable record: ``repr`` and ``==`` over the fields, no hash (as ``@dataclass``)."""
 
     __slots__ = ()
     __record_fields__: ClassVar[tuple[str, ...]] = ()
+    __record_shown__: ClassVar[tuple[str, ...]] = _Flagged("repr")  # type: ignore[assignment]
+    __record_compared__: ClassVar[tuple[str, ...]] = _Flagged("compare")  # type: ignore[assignment]
     # what dataclasses.replace(), fields() and asdict() read: registered on first use
     __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]] = _Registered()  # type: ignore[assignment]
 
     def _values(self) -> tuple[Any, ...]:
         return tuple([getattr(self, name) for name in self.__record_fields__])
 
+    def _compared(self) -> tuple[Any, ...]:
+        return tuple([getattr(self, name) for name in self.__record_compared__])
+
     def __repr__(self) -> str:
         return (f"{type(self).__qualname__}("
-                + ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_fields__)
+                + ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_shown__)
                 + ")")
 
     def __eq__(self, other: object) -> bool:
         if other.__class__ is self.__class__:
-            return self._values() == other._values()
+            return self._compared() == other._compared()
         return NotImplemented
 
     __hash__: ClassVar[None] = None  # type: ignore[assignment]
@@ -161,7 +189,7 @@ class FrozenRecord(Record):
     __slots__ = ()
 
     def __hash__(self) -> int:  # type: ignore[override]
-        return hash(self._values())
+        return hash(self._compared())
 
     def __setattr__(self, name: str, value: object) -> None:
         from dataclasses import FrozenInstanceError
