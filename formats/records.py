@@ -59,10 +59,20 @@ class _Field:
         self.arguments = arguments
 
 
+# The fields declared with repr=False or compare=False whose class record() has not yet made:
+# a class body declares its fields just before record() makes the class, so only a class that
+# declares one pays for finding which (not every record class at import: 0.8M instructions of
+# a check's start-up when each class looked at each of its fields).
+_FLAGGED: list[_Field] = []
+
+
 def field(**arguments: Any) -> Any:
     """A record's field with ``dataclasses.field``'s arguments (``default_factory``,
     ``repr``, ``compare``...), as ``dataclasses.field`` declares it in a dataclass."""
-    return _Field(arguments)
+    declared = _Field(arguments)
+    if arguments.get("repr") is False or arguments.get("compare") is False:
+        _FLAGGED.append(declared)
+    return declared
 
 
 def init_fields(obj: Record, *values: object) -> None:
@@ -80,8 +90,20 @@ def record(cls: C) -> C:
     ``fields()``, ``replace()``, ``asdict()``, ``is_dataclass()`` -- not at import: the
     registration reads every annotation, 0.4M instructions a class."""
     annotations = cls.__dict__.get("__annotations__", {})
-    cls.__record_fields__ = tuple(  # type: ignore[attr-defined]
-        name for name, kind in annotations.items() if not _classvar(kind))
+    names = tuple(name for name, kind in annotations.items() if not _classvar(kind))
+    cls.__record_fields__ = names  # type: ignore[attr-defined]
+    if _FLAGGED:  # the fields repr shows, and those == and hash compare: a field(repr=False)
+        # or field(compare=False) of this class left out, as a dataclass leaves it out
+        declared = {name: cls.__dict__.get(name) for name in names}
+        flagged = {name: value.arguments for name, value in declared.items()
+                   if isinstance(value, _Field) and value in _FLAGGED}
+        _FLAGGED.clear()
+        cls.__record_shown__ = tuple(  # type: ignore[attr-defined]
+            n for n in names if flagged.get(n, {}).get("repr") is not False)
+        cls.__record_compared__ = tuple(  # type: ignore[attr-defined]
+            n for n in names if flagged.get(n, {}).get("compare") is not False)
+    elif getattr(cls, "__record_shown__", None) is not None:  # a base's, of other fields
+        cls.__record_shown__ = cls.__record_compared__ = None  # type: ignore[attr-defined]
     # positional patterns (`case WordFormat(letter, before, after)`), as a dataclass has them
     cls.__match_args__ = cls.__record_fields__  # type: ignore[attr-defined,misc]
     return cls
@@ -119,8 +141,6 @@ class _Registered:
     def _register(owner: type) -> dict[str, dataclasses.Field[Any]]:
         import dataclasses
 
-        # (the fields repr and == leave out, found before their declarations are replaced)
-        owner.__record_shown__, owner.__record_compared__  # type: ignore[attr-defined]  # noqa: B018
         for name, value in list(owner.__dict__.items()):
             if isinstance(value, _Field):
                 setattr(owner, name, dataclasses.field(**value.arguments))
@@ -131,33 +151,15 @@ class _Registered:
         return owner.__dict__["__dataclass_fields__"]  # type: ignore[no-any-return]
 
 
-class _Flagged:
-    """``__record_shown__`` and ``__record_compared__`` of a record class: its fields but those
-    declared ``field(repr=False)``, or ``field(compare=False)``, as a dataclass leaves them out
-    of ``repr``, or of ``==`` and the hash; found when first asked for and kept in the class
-    (which hides this one from then on), not at import."""
-
-    def __init__(self, flag: str) -> None:
-        self.flag = flag
-
-    def __set_name__(self, owner: type, name: str) -> None:
-        self.name = name
-
-    def __get__(self, obj: object, owner: type) -> tuple[str, ...]:
-        found = tuple(name for name in owner.__record_fields__  # type: ignore[attr-defined]
-                      if not (isinstance(declared := owner.__dict__.get(name), _Field)
-                              and declared.arguments.get(self.flag) is False))
-        setattr(owner, self.name, found)
-        return found
-
-
 class Record:
     """A mutable record: ``repr`` and ``==`` over the fields, no hash (as ``@dataclass``)."""
 
     __slots__ = ()
     __record_fields__: ClassVar[tuple[str, ...]] = ()
-    __record_shown__: ClassVar[tuple[str, ...]] = _Flagged("repr")  # type: ignore[assignment]
-    __record_compared__: ClassVar[tuple[str, ...]] = _Flagged("compare")  # type: ignore[assignment]
+    # (record(): repr's fields, and =='s and hash's, where a field(repr=False) or
+    # field(compare=False) leaves one out; None: every field)
+    __record_shown__: ClassVar[tuple[str, ...] | None] = None
+    __record_compared__: ClassVar[tuple[str, ...] | None] = None
     # what dataclasses.replace(), fields() and asdict() read: registered on first use
     __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]] = _Registered()  # type: ignore[assignment]
 
@@ -165,11 +167,15 @@ class Record:
         return tuple([getattr(self, name) for name in self.__record_fields__])
 
     def _compared(self) -> tuple[Any, ...]:
-        return tuple([getattr(self, name) for name in self.__record_compared__])
+        names = self.__record_compared__
+        return tuple([getattr(self, name) for name in
+                      (self.__record_fields__ if names is None else names)])
 
     def __repr__(self) -> str:
+        names = self.__record_shown__
         return (f"{type(self).__qualname__}("
-                + ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_shown__)
+                + ", ".join(f"{name}={getattr(self, name)!r}" for name in
+                            (self.__record_fields__ if names is None else names))
                 + ")")
 
     def __eq__(self, other: object) -> bool:

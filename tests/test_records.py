@@ -145,6 +145,15 @@ def test_a_field_left_out_of_repr_and_eq_as_a_dataclass_leaves_it():
             "leaves_it.<locals>.Kept(a=1)"
         assert Kept(1, [2]) == Kept(1, [3]) != Kept(2, [2])
 
+        @record
+        class Plain(Kept):  # (a record's fields are its own annotations: none left out)
+            c: int
+
+            def __init__(self, c: int) -> None:
+                init_fields(self, c)
+
+        assert repr(Plain(3)).endswith(".Plain(c=3)") and Plain(3) != Plain(4)
+
 
 @pytest.mark.parametrize("value", instances(), ids=lambda x: type(x).__name__)
 def test_frozen_records_refuse_assignment_and_every_record_pickles_and_copies(value):
