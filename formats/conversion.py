@@ -122,8 +122,8 @@ class ConvertOptions(FrozenRecord):
             if inch is not None:
                 inch = _replace(inch, explicit_decimal=explicit)
             increments = self.from_decimal == "increments"
-            numbers = _replace(
-                numbers, without_point="increments" if increments else "whole")
+            numbers = _replace(numbers,
+                               without_point="increments" if increments else "whole")
             notes.append({
                 "explicit": "source: decimal points as written, a word without one is a whole "
                             "number (--from-decimal explicit)",
@@ -153,8 +153,7 @@ class ConvertOptions(FrozenRecord):
         if not notes:
             return source, notes
         if self.from_decimal is not None or self.from_zeros is not None:
-            source = _replace(source, detailed=detailed, numbers=numbers,
-                                         detailed_inch=inch)
+            source = _replace(source, detailed=detailed, numbers=numbers, detailed_inch=inch)
         if self.from_units is not None:
             source = with_start_units(source, self.from_units)
         return source, notes

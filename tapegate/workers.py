@@ -220,8 +220,8 @@ class _Map:
 
         Woken for every item, as before, the main thread took a core from a working thread
         each time (2 threads on 2 cores): in a check of 200 copies, 980 context switches, 360
-        of them a thread put off its core, about 5 ms of CPU (docs/benchmarks.md, "the main
-        thread woken once for several files")."""
+        of them a thread put off its core; 280 now (docs/benchmarks.md, "the main thread woken
+        once for several files")."""
         slots, due = self.slots, self.due
         for n in range(RUN):
             slot = slots.get(due + n)
