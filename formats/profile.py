@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import os
-import re
 from decimal import Decimal
 from functools import cache
 
@@ -597,10 +596,10 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         extra_codes = _designate_units_codes(table, (inch, metric), extra_codes)
     reset = tuple(str(c) for c in top.get("reset", list, []))
     for code in reset:
-        m = re.fullmatch(r"G(\d{2,3})", code)
-        if not m:
+        number = _g_code(code)
+        if number is None:
             raise ProfileError(f"reset: {code!r} is not a G code such as \"G90\"", key="reset")
-        known = extra_codes.get(code) or table.lookup("G", int(m.group(1)))
+        known = extra_codes.get(code) or table.lookup("G", number)
         if known is None or not known.modal:
             raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
                                "or the profile's [codes]", key="reset")
@@ -699,6 +698,8 @@ def data_pattern_problem(pattern: Any) -> str | None:
     """Why ``pattern`` cannot be a data pattern (profile or gateway configuration), or None."""
     if not isinstance(pattern, str):
         return f"must be a string, not {pattern!r}"
+    import re  # (a profile with data patterns only: a check does not load it otherwise)
+
     try:
         compiled = re.compile(pattern)
     except re.error as exc:
@@ -798,15 +799,44 @@ def _code_words(keys: Keys, key: str) -> tuple[tuple[str, str], ...]:
     return tuple(result)
 
 
+# The keys and values below are read character by character, without regular expressions: a
+# check does not import `re` (docs/benchmarks.md, "a check without re"). A digit of \d is
+# any Unicode decimal digit (str.isdecimal), of [0-9] an ASCII one.
+
+
+def _g_code(code: str) -> int | None:
+    """``G(\\d{2,3})``: a G code of two or three digits (``reset``), its number."""
+    digits = code[1:]
+    if code[:1] == "G" and 2 <= len(digits) <= 3 and digits.isdecimal():
+        return int(digits)
+    return None
+
+
+def _decimal_code(key: str) -> tuple[int, str] | None:
+    """``G(\\d+)\\.(\\d)``: a decimal G code (``G91.1``), its whole number and its tenth."""
+    whole, point, tenth = key[1:].partition(".")
+    if key[:1] == "G" and point and whole.isdecimal() and len(tenth) == 1 and tenth.isdecimal():
+        return int(whole), tenth
+    return None
+
+
+_MEANING_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyz0123456789")
+
+
+def _is_meaning(text: str) -> bool:
+    """``[a-z0-9]+(?:-[a-z0-9]+)*``: lower case words (or digits) joined by hyphens."""
+    return all(word and _MEANING_CHARACTERS.issuperset(word) for word in text.split("-"))
+
+
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
     result = {}
     for key, spec in data.items():
-        decimal = re.fullmatch(r"G(\d+)\.(\d)", key)
-        if decimal:  # G91.1, G54.1: a code of its own
+        decimal = _decimal_code(key)
+        if decimal is not None:  # G91.1, G54.1: a code of its own
             keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
                         {"function", "duration", "words", "meaning"})
-            name = f"G{int(decimal.group(1))}.{decimal.group(2)}"
-            result[name] = Code("G", int(decimal.group(1)),
+            name = f"G{decimal[0]}.{decimal[1]}"
+            result[name] = Code("G", decimal[0],
                                 keys.get("function", str, "designated by the profile"),
                                 keys.get("duration", str, "TBO"), "assigned",
                                 words=_code_words(keys, key), meaning=_meaning(keys, key))
@@ -830,7 +860,6 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
     return result
 
 
-_MEANING = re.compile(r"[a-z0-9]+(?:-[a-z0-9]+)*")
 
 
 def _meaning(keys: Keys, key: str) -> str:
@@ -838,7 +867,7 @@ def _meaning(keys: Keys, key: str) -> str:
     (``"text-engraving"``), the same in every profile whose control gives the code that
     function (docs/profiles.md, "Code meanings"); "" where the profile gives none."""
     meaning: str = keys.get("meaning", str, "")
-    if meaning and not _MEANING.fullmatch(meaning):
+    if meaning and not _is_meaning(meaning):
         raise ProfileError(f"codes.{key}.meaning {meaning!r} must be lower case words joined by "
                            "hyphens, such as \"text-engraving\"", key=f"codes.{key}.meaning")
     return meaning
@@ -965,7 +994,14 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
     )
 
 
-_VARIABLES = re.compile(r"([0-9]{1,9})(?:-([0-9]{1,9}))?")
+def _variables(key: str) -> tuple[int, int] | None:
+    """A read-only entry's key: a variable number (``3020``) or a range of them
+    (``11000-11255``), each of 1 to 9 digits 0-9: (first, last), or None."""
+    first, dash, last = key.partition("-")
+    numbers = (first, last) if dash else (first,)
+    if not all(1 <= len(n) <= 9 and n.isascii() and n.isdigit() for n in numbers):
+        return None
+    return int(first), int(last if dash else first)
 
 
 def _read_only(table: dict[str, Any]) -> tuple[tuple[int, int, str], ...]:
@@ -973,9 +1009,8 @@ def _read_only(table: dict[str, Any]) -> tuple[tuple[int, int, str], ...]:
     input"`: the variables (one or a range) with what each holds, as the message names it."""
     entries = []
     for key, what in table.items():
-        match = _VARIABLES.fullmatch(key)
-        first = int(match.group(1)) if match else 0
-        last = int(match.group(2) or first) if match else 0
+        match = _variables(key)
+        first, last = match or (0, 0)
         if match is None or last < first:
             raise ProfileError(f"checks.read_only.{key}: a variable number or a range of them, "
                                "first-last (\"3020\", \"11000-11255\")",

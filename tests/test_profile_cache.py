@@ -290,7 +290,8 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
     start-up no thread shares: annotations only, behind ``TYPE_CHECKING = False``), contextlib
     (the cache's failed write only) or tempfile (the threads' spill files are made without it
     where the system offers O_TMPFILE) or signal (SIGTERM's handler is set by its C part),
-    once the profile's cache is written."""
+    or re (the classification strings and the profile's keys are read by hand), once the
+    profile's cache is written."""
     folder = tmp_path / "cam"
     folder.mkdir()
     for n in range(3):
@@ -308,7 +309,7 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
         assert "tapegate.workers" in loaded and "threading" in loaded
         assert loaded & {"tempfile", "click", "formats.source", "formats.tape"} == set()
         if warm:
-            assert loaded & {"typing", "contextlib", "tomllib", "signal"} == set()
+            assert loaded & {"typing", "contextlib", "tomllib", "signal", "re"} == set()
 
 
 def test_a_folder_converted_in_threads_imports_no_typing(tmp_path):
