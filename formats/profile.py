@@ -483,7 +483,7 @@ class Keys:
     """Typed access to one TOML table that names the key in every error (profiles, the gateway
     configuration)."""
 
-    def __init__(self, data: dict[str, Any], prefix: str, known: set[str],
+    def __init__(self, data: dict[str, Any], prefix: str, known: set[str] | frozenset[str],
                  error: type[TapegateError] = ProfileError):
         self.data = data
         self.prefix = prefix
@@ -828,6 +828,9 @@ def _is_meaning(text: str) -> bool:
     return all(word and _MEANING_CHARACTERS.issuperset(word) for word in text.split("-"))
 
 
+_CODE_KEYS = frozenset({"function", "duration", "status", "words", "meaning"})
+
+
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
     result = {}
     for key, spec in data.items():
@@ -847,16 +850,18 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words", "meaning"})
+        keys = Keys(spec, f"codes.{key}.", _CODE_KEYS)
         number = int(key[1:])
         # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
-        status: Status = ("unassigned" if keys.choice("status", ("assigned", "unassigned"),
-                                                      "assigned") == "unassigned"
-                          else "assigned")
+        status: Status = ("unassigned" if "status" in spec and keys.choice(
+            "status", ("assigned", "unassigned"), "assigned") == "unassigned" else "assigned")
+        # (the keys a code leaves out read as their defaults without a look: a profile's 200
+        # codes were half of its loading, which a check's threads wait for)
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
-            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key),
-            meaning=_meaning(keys, key))
+            keys.get("duration", str, "TBO"), status,
+            words=_code_words(keys, key) if "words" in spec else (),
+            meaning=_meaning(keys, key) if "meaning" in spec else "")
     return result
 
 

@@ -1,3 +1,4 @@
+import re
 from decimal import Decimal
 
 import pytest
@@ -308,3 +309,21 @@ def test_the_keys_read_by_hand_take_what_the_profiles_write():
     assert profile._is_meaning("text-engraving") and not profile._is_meaning("Text")
     assert profile._variables("11000-11255") == (11000, 11255)
     assert profile._variables("3020") == (3020, 3020) and profile._variables("1-") is None
+
+
+@pytest.mark.parametrize(("code", "message"), [
+    ('M10 = { function = "f", status = "gone" }', "codes.M10.status = 'gone': choose one of"),
+    ('M10 = { function = "f", status = 1 }', "codes.M10.status must be str, not 1"),
+    ('M98 = { function = "call", words = { P = "X" } }', 'codes.M98.words.P must be "N"'),
+    ('M98 = { function = "call", words = "P" }', "codes.M98.words must be dict"),
+    ('M10 = { function = "f", meaning = "Text" }', "codes.M10.meaning 'Text' must be lower"),
+    ('M10 = { function = "f", meaning = 3 }', "codes.M10.meaning must be str, not 3"),
+])
+def test_a_code_s_status_words_and_meaning_are_read_when_given(code, message):
+    """A code's keys left out read as their defaults without a look (half a profile's loading
+    was its 200 codes); given, each is read and its error told as before."""
+    base = 'name = "x"\ndetailed = "N04 G02 X+053 M02*"\n[codes]\n'
+    with pytest.raises(ProfileError, match=re.escape(message)):
+        profile_from_text(base + code + "\n")
+    plain = profile_from_text(base + 'M10 = { function = "f" }\n').extra_codes["M10"]
+    assert (plain.status, plain.words, plain.meaning) == ("assigned", (), "")
