@@ -6,7 +6,9 @@ building a parser was a third of a short command's start-up, so a small hand par
 (:func:`_hand_detailed`, :func:`_hand_general`) reads the strings in the shapes they are written
 in, with the same result; whatever it does not take (a bad string, or an unusual spacing) goes to
 the lark parser, which reads it or says where it is wrong. ``tests/test_classification.py`` holds
-the two equal under hypothesis.
+the two equal under hypothesis. The hand parser reads character by character, without ``re``,
+which a check does not import; the tests hold it to the regular expressions it was written
+with.
 
 * Annex B: ``PM 322`` -- letters for the kind of control and the units, then three digits;
 * Annex C: ``%:/DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*`` -- the program-start, alignment,
@@ -17,7 +19,6 @@ the two equal under hypothesis.
 
 from __future__ import annotations
 
-import re
 from functools import cache
 
 from formats.errors import FormatSpecError
@@ -57,14 +58,26 @@ def _general_parser() -> Lark:
     return Lark(_GENERAL_GRAMMAR, parser="lalr", cache=True)
 
 
-# Annex B as the hand parser takes it: the grammar's tokens, spaces and tabs between any two
-_GENERAL_HAND = re.compile(r"([PLDC])[ \t]*([MIN])[ \t]*([0-9])[ \t]*([0-9])[ \t]*([0-9])")
+# Annex B as the hand parser takes it: the grammar's tokens, spaces and tabs between any two.
+# The hand parsers read character by character, without regular expressions: `re` (7.6M
+# instructions to import) and the compiling of their patterns (11 of them, 0.85 ms) were a
+# tenth of what a check runs before its threads start (docs/benchmarks.md, "a check without
+# re").
+_GENERAL_TOKENS = ("PLDC", "MIN", "0123456789", "0123456789", "0123456789")
 
 
 def _hand_general(text: str) -> tuple[str, str, str, str, str] | None:
     """The five tokens of an Annex B string, or None for the lark parser to read."""
-    match = _GENERAL_HAND.fullmatch(text)
-    return match.groups() if match else None  # type: ignore[return-value]
+    tokens: list[str] = []
+    at, end = 0, len(text)
+    for allowed in _GENERAL_TOKENS:
+        while tokens and at < end and text[at] in " \t":
+            at += 1
+        if at == end or text[at] not in allowed:
+            return None
+        tokens.append(text[at])
+        at += 1
+    return tuple(tokens) if at == end else None  # type: ignore[return-value]
 
 
 @record
@@ -162,48 +175,126 @@ def _detailed_parser() -> Lark:
 
 # Annex C as the hand parser takes it: the grammar's tokens with spaces, tabs or newlines (the
 # grammar's %ignore) between them, and in a facility note at least one between two words.
-_W = "[ \t\n]*"
-_FLAGS = re.compile(f"{_W}(%?){_W}(:?){_W}(/?){_W}((?:DS)?)")
-_SPEC = re.compile(f"{_W}([A-Z]){_W}(\\+?){_W}([0-9]{{1,3}})(?![0-9])")
-_EOB = re.compile(f"{_W}\\*")
-_NOTE = re.compile(
-    f"{_W}\\({_W}with[ \t\n]+((?:[a-z][a-z-]*[ \t\n]+)+?)facility{_W},{_W}"
-    f"the[ \t\n]+([A-Z])[ \t\n]+word[ \t\n]+becomes[ \t\n]+"
-    f"([A-Z]){_W}(\\+?){_W}([0-9]{{1,3}}){_W}\\)")
-_END = re.compile(_W)
+_W = " \t\n"
 # lark's lexer reads a note's words by where they stand: among the facility's name, "with",
 # "the", "word" and "becomes" are names, and "facility" is the word that ends the name
 _NOTE_WORDS = frozenset({"facility"})
 _FLAG_NAMES = ("PERCENT", "COLON", "SLASH", "DS")
+_NAME_START = "abcdefghijklmnopqrstuvwxyz"
+_NAME = _NAME_START + "-"
+
+
+def _space(text: str, at: int) -> int:
+    """Past the spaces, tabs and newlines at ``at``."""
+    end = len(text)
+    while at < end and text[at] in _W:
+        at += 1
+    return at
+
+
+def _spaced(text: str, at: int, word: str) -> int:
+    """Past ``word`` at ``at`` and at least one space after it, or -1."""
+    if not text.startswith(word, at):
+        return -1
+    after = _space(text, at + len(word))
+    return after if after > at + len(word) else -1
+
+
+def _format_spec(text: str, at: int, lookahead: bool) -> tuple[str, str, str, int] | None:
+    """An address's format at ``at`` (spaces first): (letter, "+" or "", its 1-3 digits, where
+    it ends); with ``lookahead``, not followed by a fourth digit."""
+    end = len(text)
+    at = _space(text, at)
+    if at == end or not "A" <= text[at] <= "Z":
+        return None
+    letter = text[at]
+    at = _space(text, at + 1)
+    plus = ""
+    if at < end and text[at] == "+":
+        plus = "+"
+        at = _space(text, at + 1)
+    digits = at
+    while at < end and "0" <= text[at] <= "9" and at - digits < 3:
+        at += 1
+    if at == digits or lookahead and at < end and "0" <= text[at] <= "9":
+        return None
+    return letter, plus, text[digits:at], at
+
+
+def _note_rest(text: str, at: int) -> tuple[str, tuple[str, str, str], int] | None:
+    """After a note's "facility": ``, the A word becomes A+034)`` (the address, its format,
+    where the note ends), or None."""
+    at = _space(text, at)
+    if not text.startswith(",", at):
+        return None
+    at = _spaced(text, _space(text, at + 1), "the")
+    if at < 0 or at == len(text) or not "A" <= text[at] <= "Z":
+        return None
+    address = text[at]
+    at = _spaced(text, at + 1, "")  # (at least one space)
+    at = -1 if at < 0 else _spaced(text, at, "word")
+    at = -1 if at < 0 else _spaced(text, at, "becomes")
+    spec = None if at < 0 else _format_spec(text, at, False)
+    if spec is None:
+        return None
+    a, plus, digits, at = spec
+    at = _space(text, at)
+    if not text.startswith(")", at):
+        return None
+    return address, (a, plus, digits), at + 1
+
+
+def _note(text: str, at: int) -> tuple[list[str], str, tuple[str, str, str], int] | None:
+    """A facility note at ``at`` (spaces first): (the facility's words, the address, its
+    format, where the note ends), or None. Its words are the fewest before a "facility" that
+    the rest of the note follows, each a lower-case name followed by spaces."""
+    at = _space(text, at)
+    if not text.startswith("(", at):
+        return None
+    at = _spaced(text, _space(text, at + 1), "with")
+    words: list[str] = []
+    while at >= 0:
+        if words and text.startswith("facility", at):
+            rest = _note_rest(text, at + len("facility"))
+            if rest is not None:
+                return words, *rest
+        if at == len(text) or text[at] not in _NAME_START:
+            return None
+        start = at
+        while at < len(text) and text[at] in _NAME:
+            at += 1
+        words.append(text[start:at])
+        at = _spaced(text, at, "")
+    return None
 
 
 def _hand_detailed(text: str) -> DetailedClassification | None:
     """An Annex C string read by hand, or None for the lark parser to read (not an error:
     the string may only be spaced unusually). Raises what the grammar's builder raises for a
     string that reads but means nothing (a format without digits, an address named twice)."""
-    flags = _FLAGS.match(text)
-    assert flags is not None  # every part is optional
-    names = {name for name, found in zip(_FLAG_NAMES, flags.groups(), strict=True) if found}
+    names = set()
+    pos = 0
+    for name, flag in zip(_FLAG_NAMES, ("%", ":", "/", "DS"), strict=True):
+        pos = _space(text, pos)
+        if text.startswith(flag, pos):
+            names.add(name)
+            pos += len(flag)
     # the whole string is read before any of it is given a meaning, as the grammar does
     specs: list[tuple[str, str, str]] = []
     notes: list[tuple[str, str, tuple[str, str, str]]] = []
-    pos = flags.end()
-    while (spec := _SPEC.match(text, pos)) is not None:
-        specs.append((spec[1], spec[2], spec[3]))
-        pos = spec.end()
-    eob = _EOB.match(text, pos)
-    if not specs or eob is None:
+    while (spec := _format_spec(text, pos, True)) is not None:
+        specs.append(spec[:3])
+        pos = spec[3]
+    pos = _space(text, pos)
+    if not specs or not text.startswith("*", pos):
         return None
-    pos = eob.end()
-    while (note := _NOTE.match(text, pos)) is not None:
-        words = note[1].split()
+    pos += 1
+    while (note := _note(text, pos)) is not None:
+        words, address, becomes, pos = note
         if _NOTE_WORDS.intersection(words):
             return None
-        notes.append((" ".join(words), note[2], (note[3], note[4], note[5])))
-        pos = note.end()
-    end = _END.match(text, pos)
-    assert end is not None
-    if end.end() != len(text):
+        notes.append((" ".join(words), address, becomes))
+    if _space(text, pos) != len(text):
         return None
     children: list[object] = [names]
     children.extend(word_format_from_spec(a, plus == "+", digits) for a, plus, digits in specs)
@@ -364,8 +455,17 @@ def describe_format(fmt: WordFormat) -> str:
     return f"{sign}, up to {fmt.before} digits, {zeros}"
 
 
-# Annex B is two letters and three digits; whatever else is written is taken for Annex C
-_GENERAL_SHAPE = re.compile(r"\s*[A-Za-z]\s*[A-Za-z][\s0-9]*")
+def _general_shape(text: str) -> bool:
+    """Annex B's shape: two letters and three digits, whatever else is written being taken for
+    Annex C (two ASCII letters, then digits, each with any white space around)."""
+    at, end = 0, len(text)
+    for _ in range(2):
+        while at < end and text[at].isspace():
+            at += 1
+        if at == end or not ("A" <= text[at] <= "Z" or "a" <= text[at] <= "z"):
+            return False
+        at += 1
+    return all(c.isspace() or "0" <= c <= "9" for c in text[at:])
 
 
 def parse_classification(text: str) -> GeneralClassification | DetailedClassification:
@@ -373,7 +473,7 @@ def parse_classification(text: str) -> GeneralClassification | DetailedClassific
     its shape: two letters and digits are a general classification, anything else (flags, word
     formats, ``*``) a detailed one, so that an error says what is wrong with the one meant -- a
     detailed classification without its ``*`` is not a bad general one."""
-    if _GENERAL_SHAPE.fullmatch(text):
+    if _general_shape(text):
         return GeneralClassification.parse(text)
     return DetailedClassification.parse(text)
 

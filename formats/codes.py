@@ -17,6 +17,7 @@ mode, ``k`` feed mode, ``l`` spindle mode, ``m`` units).
 
 from __future__ import annotations
 
+import _thread
 from collections.abc import Iterator, Mapping
 
 from formats.records import FrozenRecord, init_fields, record
@@ -353,10 +354,37 @@ class CodeTable(FrozenRecord):
         return (self.g if letter == "G" else self.m).get(number)
 
 
-TABLES: dict[str, CodeTable] = {
-    "iso6983-1": CodeTable("iso6983-1", _iso6983_g(), _iso6983_m()),
-    "iso1056": CodeTable("iso1056", _iso1056_g(), _iso1056_m()),
-}
+class _Tables(Mapping[str, CodeTable]):
+    """The standards' code tables by name, each made when first asked for: a profile of a
+    control family lists its own codes (``code_table = "own"``, below), and making both
+    standards' tables at import was 0.2 ms (warm) of what a check of such a profile runs
+    before its threads start, for nothing (docs/benchmarks.md, "a check without re"). Made
+    once under a lock, so every profile of a table shares one."""
+
+    _MAKERS = {"iso6983-1": (_iso6983_g, _iso6983_m), "iso1056": (_iso1056_g, _iso1056_m)}
+
+    def __init__(self) -> None:
+        self._made: dict[str, CodeTable] = {}
+        self._lock = _thread.allocate_lock()
+
+    def __getitem__(self, name: str) -> CodeTable:
+        table = self._made.get(name)
+        if table is None:
+            g, m = self._MAKERS[name]  # (KeyError: no such table)
+            with self._lock:
+                table = self._made.get(name)
+                if table is None:
+                    table = self._made[name] = CodeTable(name, g(), m())
+        return table
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._MAKERS)
+
+    def __len__(self) -> int:
+        return len(self._MAKERS)
+
+
+TABLES: Mapping[str, CodeTable] = _Tables()
 
 # A control family's code table is the control's own list, its profile's `[codes]` (the
 # maker's G and M code lists, docs/dialects.md), not ISO 6983-1's with the profile's codes over

@@ -7,21 +7,22 @@ roundings the converter reported, so neither imports the other.
 
 from __future__ import annotations
 
-import dataclasses
 import os
-from dataclasses import dataclass, field
 from decimal import ROUND_UP, Decimal, localcontext
 from fractions import Fraction
 
 from formats.classification import DetailedClassification
 from formats.errors import ConversionError
 from formats.profile import Profile, with_start_units
+from formats.records import NEW, FrozenRecord, Record, field, init_fields, new, record
 from formats.wordformat import Rounding, Zeros
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     from collections.abc import Callable
-    from typing import IO
+    from typing import IO, Any, TypeVar
+
+    T = TypeVar("T")
 
 # The families whose control reads a number without a decimal point as a whole number, with no
 # setting for least increments (docs/dialects.md, "Numbers" of each): an implicit-decimal
@@ -39,8 +40,18 @@ def _article(name: str) -> str:
     return f"an {name}" if name[0] in "AEIOU" else f"a {name}"
 
 
-@dataclass(frozen=True)
-class ConvertOptions:
+def _replace(obj: T, **changes: Any) -> T:
+    """``dataclasses.replace``, importing ``dataclasses`` (with ``inspect``, ``ast`` and
+    ``dis``: 41M instructions) only where an override changes a record: a conversion without
+    ``--from-*``, ``--decimal`` or ``--zeros`` does not load it (docs/benchmarks.md, "a
+    conversion's start-up")."""
+    import dataclasses
+
+    return dataclasses.replace(obj, **changes)  # type: ignore[type-var]  # (a record)
+
+
+@record
+class ConvertOptions(FrozenRecord):
     """What to convert to. ``None`` for an override means "as the target profile says"."""
 
     target: Profile
@@ -62,7 +73,17 @@ class ConvertOptions:
     # which nothing in the program shows; elsewhere those before the program's first units code.
     from_units: str | None = None
 
-    def __post_init__(self) -> None:
+    def __init__(self, target: Profile, source: Profile | None = None,
+                 decimal: str | None = None, zeros: Zeros | None = None,
+                 units: str | None = None, eob: str | None = None,
+                 rounding: Rounding = Rounding.HALF_EVEN, spacing: str = "keep",
+                 allow_unconverted: bool = False, from_decimal: str | None = None,
+                 from_zeros: Zeros | None = None, from_units: str | None = None) -> None:
+        init_fields(self, target, source, decimal, zeros, units, eob, rounding, spacing,
+                    allow_unconverted, from_decimal, from_zeros, from_units)
+        self._refuse_misread()
+
+    def _refuse_misread(self) -> None:
         """Refuse an output its target control would misread: ``--decimal implicit`` for a
         control that reads a number written without a decimal point as a whole number, and a
         target of G code system B or C with no source given (the system it is written in)."""
@@ -97,12 +118,12 @@ class ConvertOptions:
         detailed, numbers, inch = source.detailed, source.numbers, source.detailed_inch
         if self.from_decimal is not None:
             explicit = self.from_decimal != "implicit"
-            detailed = dataclasses.replace(detailed, explicit_decimal=explicit)
+            detailed = _replace(detailed, explicit_decimal=explicit)
             if inch is not None:
-                inch = dataclasses.replace(inch, explicit_decimal=explicit)
+                inch = _replace(inch, explicit_decimal=explicit)
             increments = self.from_decimal == "increments"
-            numbers = dataclasses.replace(
-                numbers, without_point="increments" if increments else "whole")
+            numbers = _replace(numbers,
+                               without_point="increments" if increments else "whole")
             notes.append({
                 "explicit": "source: decimal points as written, a word without one is a whole "
                             "number (--from-decimal explicit)",
@@ -116,9 +137,9 @@ class ConvertOptions:
             zeros = self.from_zeros
 
             def rezero(d: DetailedClassification) -> DetailedClassification:
-                formats = {k: dataclasses.replace(f, zeros=zeros) if f.decimal else f
+                formats = {k: _replace(f, zeros=zeros) if f.decimal else f
                            for k, f in d.formats.items()}
-                return dataclasses.replace(d, formats=formats)
+                return _replace(d, formats=formats)
 
             detailed = rezero(detailed)
             inch = None if inch is None else rezero(inch)
@@ -132,8 +153,7 @@ class ConvertOptions:
         if not notes:
             return source, notes
         if self.from_decimal is not None or self.from_zeros is not None:
-            source = dataclasses.replace(source, detailed=detailed, numbers=numbers,
-                                         detailed_inch=inch)
+            source = _replace(source, detailed=detailed, numbers=numbers, detailed_inch=inch)
         if self.from_units is not None:
             source = with_start_units(source, self.from_units)
         return source, notes
@@ -146,24 +166,24 @@ class ConvertOptions:
         def overridden(detailed: DetailedClassification) -> DetailedClassification:
             formats = dict(detailed.formats)
             if self.zeros is not None:
-                formats = {k: dataclasses.replace(f, zeros=self.zeros) if f.decimal else f
+                formats = {k: _replace(f, zeros=self.zeros) if f.decimal else f
                            for k, f in formats.items()}
             if explicit == detailed.explicit_decimal and formats == detailed.formats:
                 return detailed
-            return dataclasses.replace(detailed, formats=formats, explicit_decimal=explicit)
+            return _replace(detailed, formats=formats, explicit_decimal=explicit)
 
         detailed = overridden(target.detailed)
         inch = None if target.detailed_inch is None else overridden(target.detailed_inch)
         if detailed is target.detailed and inch is target.detailed_inch:
             return target
-        return dataclasses.replace(target, detailed=detailed, detailed_inch=inch)
+        return _replace(target, detailed=detailed, detailed_inch=inch)
 
 
 NOTES_HELD = 1000  # notes a conversion keeps in memory before it spills the rest to a file
 
 
-@dataclass
-class ConvertStats:
+@record
+class ConvertStats(Record):
     """What one conversion did, for the summary table and the closing report.
 
     The notes are in :attr:`notes`, in the order made, unless a folder to spill them to is
@@ -223,6 +243,23 @@ class ConvertStats:
     _noted: set[str] = field(default_factory=set, repr=False, compare=False)
     _spill_dir: str | Callable[[], str] | None = field(default=None, repr=False, compare=False)
     _spill: IO[str] | None = field(default=None, repr=False, compare=False)
+
+    def __init__(self, file: str = "", output: str = "", blocks: int = 0, words: int = 0,
+                 changed: int = 0, rounding: dict[str, Fraction] = NEW,
+                 notes: list[str] = NEW, error: str = "", verified: bool = False,
+                 verified_assuming: str = "", not_compared: list[tuple[int, str]] = NEW,
+                 left_as_written: int = 0, left_at: tuple[int, int] | None = None,
+                 left_statements: int = 0, never_read: int = 0,
+                 never_read_at: tuple[int, int] | None = None,
+                 machine_units: str | None = None, proved: bool = False,
+                 body_units: list[tuple[str, str]] = NEW, notes_spill: str | None = None,
+                 _noted: set[str] = NEW, _spill_dir: str | Callable[[], str] | None = None,
+                 _spill: IO[str] | None = None) -> None:
+        init_fields(self, file, output, blocks, words, changed, new(rounding, dict),
+                    new(notes, list), error, verified, verified_assuming,
+                    new(not_compared, list), left_as_written, left_at, left_statements,
+                    never_read, never_read_at, machine_units, proved, new(body_units, list),
+                    notes_spill, new(_noted, set), _spill_dir, _spill)
 
     def note(self, text: str) -> None:
         if text not in self._noted:

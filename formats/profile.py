@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import os
-import re
 from decimal import Decimal
 from functools import cache
 
@@ -399,17 +398,24 @@ def load_profile(name_or_path: str) -> Profile:
             raise ProfileError(f"cannot read profile: not UTF-8 text ({exc.reason} at byte "
                                f"{exc.start})", file=str(path), code="profile-unreadable"
                                ) from None
-        return profile_from_text(text, source=str(path), default_name=path.stem)
+        return profile_from_text(text, source=str(path), default_name=path.stem,
+                                 cache_as=FILE_CACHE_NAME)
     raise ProfileError(
         f"no profile named {name_or_path!r}; built-in profiles: {', '.join(builtin_names())} "
         "(or give the path of a .toml file)", code="profile-not-found"
     )
 
 
+# The name a profile file's parsed TOML is kept under (formats.profile_cache): its text decides
+# whether an entry is used, whatever file held it.
+FILE_CACHE_NAME = "file"
+
+
 def profile_from_text(text: str, source: str = "<text>", default_name: str = "", *,
                       cache_as: str | None = None) -> Profile:
-    """The profile of a TOML ``text``. ``cache_as``: the name of the built-in profile this is
-    the text of, whose parsed TOML is kept between runs (:mod:`formats.profile_cache`)."""
+    """The profile of a TOML ``text``. ``cache_as``: the name its parsed TOML is kept under
+    between runs (:mod:`formats.profile_cache`): a built-in profile's name, or
+    :data:`FILE_CACHE_NAME` for a user's profile file."""
     data = _toml(text, source, cache_as)
     try:
         if "base" in data:
@@ -477,7 +483,7 @@ class Keys:
     """Typed access to one TOML table that names the key in every error (profiles, the gateway
     configuration)."""
 
-    def __init__(self, data: dict[str, Any], prefix: str, known: set[str],
+    def __init__(self, data: dict[str, Any], prefix: str, known: set[str] | frozenset[str],
                  error: type[TapegateError] = ProfileError):
         self.data = data
         self.prefix = prefix
@@ -590,10 +596,10 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         extra_codes = _designate_units_codes(table, (inch, metric), extra_codes)
     reset = tuple(str(c) for c in top.get("reset", list, []))
     for code in reset:
-        m = re.fullmatch(r"G(\d{2,3})", code)
-        if not m:
+        number = _g_code(code)
+        if number is None:
             raise ProfileError(f"reset: {code!r} is not a G code such as \"G90\"", key="reset")
-        known = extra_codes.get(code) or table.lookup("G", int(m.group(1)))
+        known = extra_codes.get(code) or table.lookup("G", number)
         if known is None or not known.modal:
             raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
                                "or the profile's [codes]", key="reset")
@@ -692,6 +698,8 @@ def data_pattern_problem(pattern: Any) -> str | None:
     """Why ``pattern`` cannot be a data pattern (profile or gateway configuration), or None."""
     if not isinstance(pattern, str):
         return f"must be a string, not {pattern!r}"
+    import re  # (a profile with data patterns only: a check does not load it otherwise)
+
     try:
         compiled = re.compile(pattern)
     except re.error as exc:
@@ -791,15 +799,47 @@ def _code_words(keys: Keys, key: str) -> tuple[tuple[str, str], ...]:
     return tuple(result)
 
 
+# The keys and values below are read character by character, without regular expressions: a
+# check does not import `re` (docs/benchmarks.md, "a check without re"). A digit of \d is
+# any Unicode decimal digit (str.isdecimal), of [0-9] an ASCII one.
+
+
+def _g_code(code: str) -> int | None:
+    """``G(\\d{2,3})``: a G code of two or three digits (``reset``), its number."""
+    digits = code[1:]
+    if code[:1] == "G" and 2 <= len(digits) <= 3 and digits.isdecimal():
+        return int(digits)
+    return None
+
+
+def _decimal_code(key: str) -> tuple[int, str] | None:
+    """``G(\\d+)\\.(\\d)``: a decimal G code (``G91.1``), its whole number and its tenth."""
+    whole, point, tenth = key[1:].partition(".")
+    if key[:1] == "G" and point and whole.isdecimal() and len(tenth) == 1 and tenth.isdecimal():
+        return int(whole), tenth
+    return None
+
+
+_MEANING_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyz0123456789")
+
+
+def _is_meaning(text: str) -> bool:
+    """``[a-z0-9]+(?:-[a-z0-9]+)*``: lower case words (or digits) joined by hyphens."""
+    return all(word and _MEANING_CHARACTERS.issuperset(word) for word in text.split("-"))
+
+
+_CODE_KEYS = frozenset({"function", "duration", "status", "words", "meaning"})
+
+
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
     result = {}
     for key, spec in data.items():
-        decimal = re.fullmatch(r"G(\d+)\.(\d)", key)
-        if decimal:  # G91.1, G54.1: a code of its own
+        decimal = _decimal_code(key)
+        if decimal is not None:  # G91.1, G54.1: a code of its own
             keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
                         {"function", "duration", "words", "meaning"})
-            name = f"G{int(decimal.group(1))}.{decimal.group(2)}"
-            result[name] = Code("G", int(decimal.group(1)),
+            name = f"G{decimal[0]}.{decimal[1]}"
+            result[name] = Code("G", decimal[0],
                                 keys.get("function", str, "designated by the profile"),
                                 keys.get("duration", str, "TBO"), "assigned",
                                 words=_code_words(keys, key), meaning=_meaning(keys, key))
@@ -810,20 +850,21 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words", "meaning"})
+        keys = Keys(spec, f"codes.{key}.", _CODE_KEYS)
         number = int(key[1:])
         # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
-        status: Status = ("unassigned" if keys.choice("status", ("assigned", "unassigned"),
-                                                      "assigned") == "unassigned"
-                          else "assigned")
+        status: Status = ("unassigned" if "status" in spec and keys.choice(
+            "status", ("assigned", "unassigned"), "assigned") == "unassigned" else "assigned")
+        # (the keys a code leaves out read as their defaults without a look: a profile's 200
+        # codes were half of its loading, which a check's threads wait for)
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
-            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key),
-            meaning=_meaning(keys, key))
+            keys.get("duration", str, "TBO"), status,
+            words=_code_words(keys, key) if "words" in spec else (),
+            meaning=_meaning(keys, key) if "meaning" in spec else "")
     return result
 
 
-_MEANING = re.compile(r"[a-z0-9]+(?:-[a-z0-9]+)*")
 
 
 def _meaning(keys: Keys, key: str) -> str:
@@ -831,7 +872,7 @@ def _meaning(keys: Keys, key: str) -> str:
     (``"text-engraving"``), the same in every profile whose control gives the code that
     function (docs/profiles.md, "Code meanings"); "" where the profile gives none."""
     meaning: str = keys.get("meaning", str, "")
-    if meaning and not _MEANING.fullmatch(meaning):
+    if meaning and not _is_meaning(meaning):
         raise ProfileError(f"codes.{key}.meaning {meaning!r} must be lower case words joined by "
                            "hyphens, such as \"text-engraving\"", key=f"codes.{key}.meaning")
     return meaning
@@ -958,7 +999,14 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
     )
 
 
-_VARIABLES = re.compile(r"([0-9]{1,9})(?:-([0-9]{1,9}))?")
+def _variables(key: str) -> tuple[int, int] | None:
+    """A read-only entry's key: a variable number (``3020``) or a range of them
+    (``11000-11255``), each of 1 to 9 digits 0-9: (first, last), or None."""
+    first, dash, last = key.partition("-")
+    numbers = (first, last) if dash else (first,)
+    if not all(1 <= len(n) <= 9 and n.isascii() and n.isdigit() for n in numbers):
+        return None
+    return int(first), int(last if dash else first)
 
 
 def _read_only(table: dict[str, Any]) -> tuple[tuple[int, int, str], ...]:
@@ -966,9 +1014,8 @@ def _read_only(table: dict[str, Any]) -> tuple[tuple[int, int, str], ...]:
     input"`: the variables (one or a range) with what each holds, as the message names it."""
     entries = []
     for key, what in table.items():
-        match = _VARIABLES.fullmatch(key)
-        first = int(match.group(1)) if match else 0
-        last = int(match.group(2) or first) if match else 0
+        match = _variables(key)
+        first, last = match or (0, 0)
         if match is None or last < first:
             raise ProfileError(f"checks.read_only.{key}: a variable number or a range of them, "
                                "first-last (\"3020\", \"11000-11255\")",

@@ -1,9 +1,14 @@
-"""The parsed TOML of each built-in profile, kept between runs in the user's cache folder.
+"""The parsed TOML of each built-in profile and of each profile file, kept between runs in the
+user's cache folder.
 
 Reading a built-in profile's TOML took about a tenth of a one-file ``tapegate check``: importing
 ``tomllib`` and parsing the text (33M instructions of 300M; docs/benchmarks.md, "Start-up,
-second pass"). The parsed table is a pure function of the text, so it is kept on disk with
-``marshal`` (built into Python, nothing to import) and read back next time:
+second pass"). A profile file (``--to machine.toml``) paid more: ``tomllib`` imports ``typing``,
+``string`` and ``datetime``, 40M instructions of the 225M ``convert DIR -j 2`` ran before its
+threads started (docs/benchmarks.md, "a conversion's start-up"). The
+parsed table is a pure function of the text, so it is kept on disk with ``marshal`` (built into
+Python, nothing to import) and read back next time; a profile file's entry is named ``file``
+(``formats.profile.FILE_CACHE_NAME``) and its CRC, whatever file held the text:
 
 - the file is ``$TAPEGATE_CACHE_DIR`` (an empty value: no cache), else
   ``$XDG_CACHE_HOME/tapegate``, else ``~/.cache/tapegate``, then ``profile-NAME-CRC.marshal``,
@@ -63,7 +68,7 @@ def _path(name: str, text: str) -> str | None:
 
 
 def load(name: str, text: str) -> dict[str, Any] | None:
-    """The parsed TOML kept for the built-in profile ``name`` whose text is ``text``, or None
+    """The parsed TOML kept for the profile ``name`` whose text is ``text``, or None
     (no entry, another text, an entry that cannot be read)."""
     path = _path(name, text)
     if path is None:
@@ -88,7 +93,7 @@ def load(name: str, text: str) -> dict[str, Any] | None:
 
 
 def store(name: str, text: str, data: dict[str, Any]) -> None:
-    """Keep ``data``, the parsed ``text`` of the built-in profile ``name``; quietly nothing
+    """Keep ``data``, the parsed ``text`` of the profile ``name``; quietly nothing
     where the folder cannot be written."""
     path = _path(name, text)
     if path is None:

@@ -11,7 +11,8 @@ first asked for, so :func:`dataclasses.fields`, :func:`dataclasses.replace` and
 :func:`dataclasses.asdict` work as before. What a dataclass did, these do alike: the same
 ``repr`` (``Name(a=1, b='x')``), equality of two instances of the same class field by field
 (else ``NotImplemented``), the hash of the fields' tuple for a frozen class and none for a
-mutable one, and
+mutable one, a field declared ``field(repr=False)`` or ``field(compare=False)`` left out of
+``repr`` or of ``==`` and the hash, and
 :class:`dataclasses.FrozenInstanceError` on assignment to a frozen one
 (``tests/test_records.py`` holds each class to a dataclass of the same fields).
 
@@ -58,10 +59,20 @@ class _Field:
         self.arguments = arguments
 
 
+# The fields declared with repr=False or compare=False whose class record() has not yet made:
+# a class body declares its fields just before record() makes the class, so only a class that
+# declares one pays for finding which (not every record class at import: 0.8M instructions of
+# a check's start-up when each class looked at each of its fields).
+_FLAGGED: list[_Field] = []
+
+
 def field(**arguments: Any) -> Any:
     """A record's field with ``dataclasses.field``'s arguments (``default_factory``,
     ``repr``, ``compare``...), as ``dataclasses.field`` declares it in a dataclass."""
-    return _Field(arguments)
+    declared = _Field(arguments)
+    if arguments.get("repr") is False or arguments.get("compare") is False:
+        _FLAGGED.append(declared)
+    return declared
 
 
 def init_fields(obj: Record, *values: object) -> None:
@@ -79,8 +90,20 @@ def record(cls: C) -> C:
     ``fields()``, ``replace()``, ``asdict()``, ``is_dataclass()`` -- not at import: the
     registration reads every annotation, 0.4M instructions a class."""
     annotations = cls.__dict__.get("__annotations__", {})
-    cls.__record_fields__ = tuple(  # type: ignore[attr-defined]
-        name for name, kind in annotations.items() if not _classvar(kind))
+    names = tuple(name for name, kind in annotations.items() if not _classvar(kind))
+    cls.__record_fields__ = names  # type: ignore[attr-defined]
+    if _FLAGGED:  # the fields repr shows, and those == and hash compare: a field(repr=False)
+        # or field(compare=False) of this class left out, as a dataclass leaves it out
+        declared = {name: cls.__dict__.get(name) for name in names}
+        flagged = {name: value.arguments for name, value in declared.items()
+                   if isinstance(value, _Field) and value in _FLAGGED}
+        _FLAGGED.clear()
+        cls.__record_shown__ = tuple(  # type: ignore[attr-defined]
+            n for n in names if flagged.get(n, {}).get("repr") is not False)
+        cls.__record_compared__ = tuple(  # type: ignore[attr-defined]
+            n for n in names if flagged.get(n, {}).get("compare") is not False)
+    elif getattr(cls, "__record_shown__", None) is not None:  # a base's, of other fields
+        cls.__record_shown__ = cls.__record_compared__ = None  # type: ignore[attr-defined]
     # positional patterns (`case WordFormat(letter, before, after)`), as a dataclass has them
     cls.__match_args__ = cls.__record_fields__  # type: ignore[attr-defined,misc]
     return cls
@@ -133,20 +156,31 @@ class Record:
 
     __slots__ = ()
     __record_fields__: ClassVar[tuple[str, ...]] = ()
+    # (record(): repr's fields, and =='s and hash's, where a field(repr=False) or
+    # field(compare=False) leaves one out; None: every field)
+    __record_shown__: ClassVar[tuple[str, ...] | None] = None
+    __record_compared__: ClassVar[tuple[str, ...] | None] = None
     # what dataclasses.replace(), fields() and asdict() read: registered on first use
     __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]] = _Registered()  # type: ignore[assignment]
 
     def _values(self) -> tuple[Any, ...]:
         return tuple([getattr(self, name) for name in self.__record_fields__])
 
+    def _compared(self) -> tuple[Any, ...]:
+        names = self.__record_compared__
+        return tuple([getattr(self, name) for name in
+                      (self.__record_fields__ if names is None else names)])
+
     def __repr__(self) -> str:
+        names = self.__record_shown__
         return (f"{type(self).__qualname__}("
-                + ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_fields__)
+                + ", ".join(f"{name}={getattr(self, name)!r}" for name in
+                            (self.__record_fields__ if names is None else names))
                 + ")")
 
     def __eq__(self, other: object) -> bool:
         if other.__class__ is self.__class__:
-            return self._values() == other._values()
+            return self._compared() == other._compared()
         return NotImplemented
 
     __hash__: ClassVar[None] = None  # type: ignore[assignment]
@@ -161,7 +195,7 @@ class FrozenRecord(Record):
     __slots__ = ()
 
     def __hash__(self) -> int:  # type: ignore[override]
-        return hash(self._values())
+        return hash(self._compared())
 
     def __setattr__(self, name: str, value: object) -> None:
         from dataclasses import FrozenInstanceError

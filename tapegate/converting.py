@@ -6,7 +6,6 @@ differently. A usage problem found here is click's :class:`tapegate.options.Usag
 
 from __future__ import annotations
 
-import glob
 import os
 import sys
 from collections.abc import Sequence
@@ -216,7 +215,9 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
         elif os.path.exists(name):
             path = pure(name)
             files.append((path, os.path.basename(path)))
-        else:
+        else:  # a pattern (a shell that does not expand them): glob only here
+            import glob
+
             matches = sorted(Path(m) for m in glob.glob(name, recursive=True))
             matches = [m for m in matches if m.is_file()]
             if not matches:

@@ -1,7 +1,7 @@
 import re
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from formats.classification import DetailedClassification, GeneralClassification
@@ -215,6 +215,99 @@ def test_hand_parser_reads_annex_b_as_the_grammar_does(text):
     hand = cl._hand_general(text.strip())
     if hand is not None:
         assert hand == cl._lark_general(text)
+
+
+# The hand parsers as they were written with regular expressions, before they read character
+# by character (a check's start-up without `re`): the reference they are held to.
+_W = "[ \t\n]*"
+_RE_FLAGS = re.compile(f"{_W}(%?){_W}(:?){_W}(/?){_W}((?:DS)?)")
+_RE_SPEC = re.compile(f"{_W}([A-Z]){_W}(\\+?){_W}([0-9]{{1,3}})(?![0-9])")
+_RE_EOB = re.compile(f"{_W}\\*")
+_RE_NOTE = re.compile(
+    f"{_W}\\({_W}with[ \t\n]+((?:[a-z][a-z-]*[ \t\n]+)+?)facility{_W},{_W}"
+    f"the[ \t\n]+([A-Z])[ \t\n]+word[ \t\n]+becomes[ \t\n]+"
+    f"([A-Z]){_W}(\\+?){_W}([0-9]{{1,3}}){_W}\\)")
+_RE_GENERAL = re.compile(r"([PLDC])[ \t]*([MIN])[ \t]*([0-9])[ \t]*([0-9])[ \t]*([0-9])")
+_RE_SHAPE = re.compile(r"\s*[A-Za-z]\s*[A-Za-z][\s0-9]*")
+
+
+def _regex_detailed(text):
+    flags = _RE_FLAGS.match(text)
+    names = {name for name, found in zip(cl._FLAG_NAMES, flags.groups(), strict=True) if found}
+    specs, notes, pos = [], [], flags.end()
+    while (spec := _RE_SPEC.match(text, pos)) is not None:
+        specs.append((spec[1], spec[2], spec[3]))
+        pos = spec.end()
+    eob = _RE_EOB.match(text, pos)
+    if not specs or eob is None:
+        return None
+    pos = eob.end()
+    while (note := _RE_NOTE.match(text, pos)) is not None:
+        words = note[1].split()
+        if cl._NOTE_WORDS.intersection(words):
+            return None
+        notes.append((" ".join(words), note[2], (note[3], note[4], note[5])))
+        pos = note.end()
+    if re.compile(_W).match(text, pos).end() != len(text):
+        return None
+    children = [names]
+    children.extend(cl.word_format_from_spec(a, plus == "+", d) for a, plus, d in specs)
+    for facility, address, (a, plus, d) in notes:
+        children.append(cl._facility_note(facility, address,
+                                          cl.word_format_from_spec(a, plus == "+", d)))
+    return cl._build_detailed(children)
+
+
+_TRICKY_NOTE = st.lists(st.sampled_from(["(", ")", " ", "\t", "\n", ",", "+", "0", "12", "1234",
+                                          "F", "X", "with", "the", "word", "becomes",
+                                          "facility", "facilityx", "dwell", "a-", "-b", "Q"]),
+                        max_size=30).map("".join)
+
+
+@st.composite
+def _cut_note(draw):
+    """A facility note whose parts may each be left out, doubled or misspelt, with 0-3 name
+    words among which "facility" and "facilityx"."""
+    space = draw(st.sampled_from(["", " ", "\t", "\n ", "  "]))
+    words = draw(st.lists(st.sampled_from(["dwell", "facility", "facilityx", "tool-length", "a-",
+                                           "-b", "Dwell", "with"]), max_size=3))
+    parts = ["(", "with", *words, "facility", ",", "the", "F", "word", "becomes",
+             draw(st.sampled_from(["F022", "F+022", "F 2", "F1234", "F", "X+1"])), ")"]
+    kept = [p for p in parts if draw(st.integers(0, 9))]  # each left out one time in ten
+    return draw(st.sampled_from(["N03 X+053*", "%N04 F031* ", "X1*"])) + "".join(
+        p + draw(st.sampled_from([space, " ", ""])) for p in kept)
+
+
+@settings(max_examples=3000)
+@given(st.one_of(_detailed_text(), _NOISE, _cut_note(),
+                 st.builds(lambda head, note: head + note,
+                           st.sampled_from(["N03 X+053*", "%N04 F031* ", "X1*"]),
+                           _TRICKY_NOTE)))
+def test_the_hand_parser_reads_as_its_regular_expressions_did(text):
+    """The hand parsers read character by character what their regular expressions read, the
+    same result or the same None (for lark), on the grammar's strings, noise, and facility
+    notes cut and mixed (a name word that starts with "facility", no word, a fourth digit)."""
+    assert _outcome(cl._hand_detailed, text) == _outcome(_regex_detailed, text)
+    general = _RE_GENERAL.fullmatch(text.strip())
+    assert cl._hand_general(text.strip()) == (general.groups() if general else None)
+    assert cl._general_shape(text) == bool(_RE_SHAPE.fullmatch(text))
+
+
+@given(st.text(alphabet="PLDCMIN0123456789 \t\nXa\u00a0\u2003\u0663", max_size=12))
+def test_annex_b_is_read_by_hand_as_its_regular_expressions_did(text):
+    general = _RE_GENERAL.fullmatch(text.strip())
+    assert cl._hand_general(text.strip()) == (general.groups() if general else None)
+    assert cl._general_shape(text) == bool(_RE_SHAPE.fullmatch(text))
+
+
+def test_a_facility_name_may_hold_a_word_that_starts_with_facility():
+    """The fewest words before a "facility" the rest of the note follows: "facilityx" is a
+    word of the name, and a name word "facility" sends the string to lark."""
+    text = "N03 F+053* (with dwell facilityx facility, the F word becomes F022)"
+    assert _outcome(cl._hand_detailed, text) == _outcome(_regex_detailed, text)
+    assert "dwell facilityx" in cl._hand_detailed(text).facilities
+    assert cl._hand_detailed("N03 F+053* (with dwell facility facility, the F word becomes "
+                             "F022)") is None
 
 
 def test_every_builtin_profile_is_read_without_lark():

@@ -15,6 +15,7 @@ import pytest
 
 from formats import profile as profile_module
 from formats import profile_cache
+from formats.errors import ProfileError
 from formats.profile import builtin_text, load_profile, neutral, profile_from_text
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -81,6 +82,38 @@ def entry(text: str, data: dict) -> bytes:
     marshalled table, the table."""
     table = marshal.dumps(data)
     return marshal.dumps((profile_cache.KEY, text, zlib.crc32(table), table))
+
+
+def test_a_profile_files_parsed_toml_is_kept_by_its_text(cache, monkeypatch, tmp_path):
+    """A user's profile file (``--to machine.toml``) is parsed once, then read from the cache
+    (no tomllib: with typing, string and datetime, 40M instructions of a conversion's start-up);
+    the entry is the text's, whatever file holds it, and a changed file is parsed again."""
+    text = ('name = "implicit-inch"\n'
+            'detailed = "%:/ N07 G02 X+044 Y+044 Z+044 I+044 J+044 F042 S05 T02 M02*"\n'
+            'units_codes = "G20/G21"\nunits = "inch"\n')
+    first_file = tmp_path / "machine.toml"
+    first_file.write_text(text)
+    first = load_profile(str(first_file))
+    assert first == profile_from_text(text, source=str(first_file), default_name="machine")
+    files = sorted(p.name for p in cache.iterdir())
+    assert len(files) == 1 and files[0].startswith(f"profile-{profile_module.FILE_CACHE_NAME}-")
+    other_file = tmp_path / "other" / "copy.toml"  # the same text in another file
+    other_file.parent.mkdir()
+    other_file.write_text(text)
+    with monkeypatch.context() as refused:
+        no_toml(refused)
+        again = load_profile(str(first_file))
+        copy = load_profile(str(other_file))
+    assert again == first and again is not first
+    assert copy == profile_from_text(text, source=str(other_file), default_name="copy")
+    assert sorted(p.name for p in cache.iterdir()) == files  # nothing written again
+    first_file.write_text(text.replace("F042", "F052"))
+    changed = load_profile(str(first_file))  # parsed again: a new entry beside the old
+    assert changed != first and len(list(cache.iterdir())) == 2
+    first_file.write_text("name = [")
+    with pytest.raises(ProfileError, match="not valid TOML") as bad:  # (and nothing kept)
+        load_profile(str(first_file))
+    assert bad.value.file == str(first_file) and len(list(cache.iterdir())) == 2
 
 
 def test_an_entry_holding_another_text_under_the_same_name_is_not_used(cache):
@@ -257,7 +290,8 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
     start-up no thread shares: annotations only, behind ``TYPE_CHECKING = False``), contextlib
     (the cache's failed write only) or tempfile (the threads' spill files are made without it
     where the system offers O_TMPFILE) or signal (SIGTERM's handler is set by its C part),
-    once the profile's cache is written."""
+    or re (the classification strings and the profile's keys are read by hand), once the
+    profile's cache is written."""
     folder = tmp_path / "cam"
     folder.mkdir()
     for n in range(3):
@@ -275,23 +309,25 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
         assert "tapegate.workers" in loaded and "threading" in loaded
         assert loaded & {"tempfile", "click", "formats.source", "formats.tape"} == set()
         if warm:
-            assert loaded & {"typing", "contextlib", "tomllib", "signal"} == set()
+            assert loaded & {"typing", "contextlib", "tomllib", "signal", "re"} == set()
 
 
 def test_a_folder_converted_in_threads_imports_no_typing(tmp_path):
-    """``tapegate convert FOLDER --out-dir OUT -j 2`` as the console script runs it: the
-    threads run, the files are written, and typing is not imported (once the profile's
-    cache is written)."""
+    """``tapegate convert FOLDER --out-dir OUT --to FILE.toml -j 2`` as the console script runs
+    it: the threads run, the files are written, and typing is not imported (once the
+    profiles' cache is written)."""
     folder = tmp_path / "cam"
     folder.mkdir()
     for n in range(3):
         (folder / f"p{n}.nc").write_text(f"%\nO{n + 1}\nN1 G21 G90\nN2 G0 X1{n}.5\nN3 M30\n%\n")
     listing = tmp_path / "modules.txt"
     env = {**os.environ, "PYTHONPATH": str(ROOT), "TAPEGATE_CACHE_DIR": str(tmp_path / "c")}
+    target = tmp_path / "fanuc.toml"  # a profile file, as a shop's own
+    target.write_text('base = "fanuc-mill"\nname = "shop-fanuc"\n')
     for _ in range(2):  # the cache written, then read
         done = subprocess.run([sys.executable, "-c", LAUNCH_PROBE, str(listing), "convert",
                                str(folder), "--out-dir", str(tmp_path / "out"), "--force",
-                               "--from", "fanuc-mill", "--to", "fanuc-mill", "--units", "inch",
+                               "--from", "fanuc-mill", "--to", str(target), "--units", "inch",
                                "-j", "2"], env=env, capture_output=True, timeout=60,
                               check=False)
         assert done.returncode == 0, done.stderr
@@ -299,4 +335,7 @@ def test_a_folder_converted_in_threads_imports_no_typing(tmp_path):
     assert "N2 G0 X0.4134\n" in (tmp_path / "out" / "p0.nc").read_text()  # 10.5 mm in inches
     loaded = set(listing.read_text().split())
     assert "tapegate.workers" in loaded and "formats.convert" in loaded
-    assert loaded & {"typing", "click"} == set()
+    # nor dataclasses (with inspect, ast, dis: 41M instructions; the conversion's records are
+    # formats.records'), nor glob (for a pattern only), nor, with the profile file's TOML
+    # kept, tomllib
+    assert loaded & {"typing", "click", "dataclasses", "inspect", "glob", "tomllib"} == set()

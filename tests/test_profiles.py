@@ -1,6 +1,9 @@
+import re
 from decimal import Decimal
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from formats.errors import ProfileError
 from formats.profile import builtin_names, load_profile, profile_from_text
@@ -270,3 +273,57 @@ def test_a_profile_without_units_codes_leaves_them_to_the_machine():
     with pytest.raises(ProfileError) as bad:
         profile_from_text('name = "x"\nunits_codes = "parameter"\n')
     assert "none" in str(bad.value)
+
+
+_NUMBERS = st.text(alphabet="0123456789\u0663\u00b2a", max_size=10)
+_DIGITS_AND_MORE = st.one_of(
+    st.text(alphabet="G0123456789.-abz-\u0663\u00b2 xA", max_size=12),
+    st.builds(lambda *parts: "".join(parts), st.sampled_from(["G", "", "M", "g"]), _NUMBERS,
+              st.sampled_from([".", "", "-", "..", "--"]), _NUMBERS))
+
+
+@settings(max_examples=2000)
+@given(_DIGITS_AND_MORE)
+def test_the_keys_are_read_as_their_regular_expressions_read_them(text):
+    """The profile's keys and values read character by character (a check loads no `re`),
+    held to the regular expressions they replaced: \\d any Unicode decimal digit, [0-9] an
+    ASCII one."""
+    import re
+
+    from formats import profile
+
+    g = re.fullmatch(r"G(\d{2,3})", text)
+    assert profile._g_code(text) == (int(g[1]) if g else None)
+    d = re.fullmatch(r"G(\d+)\.(\d)", text)
+    assert profile._decimal_code(text) == ((int(d[1]), d[2]) if d else None)
+    assert profile._is_meaning(text) == bool(re.fullmatch(r"[a-z0-9]+(?:-[a-z0-9]+)*", text))
+    v = re.fullmatch(r"([0-9]{1,9})(?:-([0-9]{1,9}))?", text)
+    assert profile._variables(text) == ((int(v[1]), int(v[2] or v[1])) if v else None)
+
+
+def test_the_keys_read_by_hand_take_what_the_profiles_write():
+    from formats import profile
+
+    assert profile._g_code("G90") == 90 and profile._g_code("G9") is None
+    assert profile._decimal_code("G91.1") == (91, "1") and profile._decimal_code("G91") is None
+    assert profile._is_meaning("text-engraving") and not profile._is_meaning("Text")
+    assert profile._variables("11000-11255") == (11000, 11255)
+    assert profile._variables("3020") == (3020, 3020) and profile._variables("1-") is None
+
+
+@pytest.mark.parametrize(("code", "message"), [
+    ('M10 = { function = "f", status = "gone" }', "codes.M10.status = 'gone': choose one of"),
+    ('M10 = { function = "f", status = 1 }', "codes.M10.status must be str, not 1"),
+    ('M98 = { function = "call", words = { P = "X" } }', 'codes.M98.words.P must be "N"'),
+    ('M98 = { function = "call", words = "P" }', "codes.M98.words must be dict"),
+    ('M10 = { function = "f", meaning = "Text" }', "codes.M10.meaning 'Text' must be lower"),
+    ('M10 = { function = "f", meaning = 3 }', "codes.M10.meaning must be str, not 3"),
+])
+def test_a_code_s_status_words_and_meaning_are_read_when_given(code, message):
+    """A code's keys left out read as their defaults without a look (half a profile's loading
+    was its 200 codes); given, each is read and its error told as before."""
+    base = 'name = "x"\ndetailed = "N04 G02 X+053 M02*"\n[codes]\n'
+    with pytest.raises(ProfileError, match=re.escape(message)):
+        profile_from_text(base + code + "\n")
+    plain = profile_from_text(base + 'M10 = { function = "f" }\n').extra_codes["M10"]
+    assert (plain.status, plain.words, plain.meaning) == ("assigned", (), "")

@@ -13,6 +13,7 @@ import pytest
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import TABLES, Code, CodeTable
+from formats.conversion import ConvertOptions, ConvertStats
 from formats.model import Word
 from formats.parser import PERMISSIVE, Dialect
 from formats.profile import (
@@ -24,7 +25,7 @@ from formats.profile import (
     SerialSettings,
     load_profile,
 )
-from formats.records import NEW, FrozenRecord, Record, init_fields, new
+from formats.records import NEW, FrozenRecord, Record, field, init_fields, new, record
 from formats.source import Source
 from formats.tape import Decoded, TapeIssue
 from formats.wordformat import WordFormat, Zeros
@@ -50,18 +51,33 @@ def instances() -> list[object]:
         Drawn({"metric"}, {3: {0, 1}}, {2}), stats,
         Limits(axes={"X": (Decimal(-1), Decimal(1))}, feed_max=Decimal(5000)),
         RestartSettings(clearance=Decimal(50)), GeneralClassification("C", "M", 3, 2, 1),
+        ConvertOptions(FANUC, source=FANUC, units="inch", from_zeros=Zeros.TRAILING),
+        converted_stats(),
     ]
+
+
+def converted_stats() -> ConvertStats:
+    """A conversion's statistics with its notes said, among them one Python made (kept in
+    ``_noted``, a field that neither repr nor == reads)."""
+    stats = ConvertStats(file="p.nc", output="out/p.nc", blocks=3, words=7, changed=2)
+    stats.note("source: detected as fanuc-mill")
+    stats.said(["N2: X rounded"])
+    stats.body_units.append(("o100", "inch"))
+    return stats
 
 
 CLASSES = (Profile, GeneralClassification, DetailedClassification, CodeTable, Code, WordFormat,
            Dialect, NumberReading, Limits, CheckSettings, SerialSettings, RestartSettings, Word,
-           TapeIssue, Decoded, Source, Rule, Segment, Drawn, CheckStats)
+           TapeIssue, Decoded, Source, Rule, Segment, Drawn, CheckStats, ConvertOptions,
+           ConvertStats)
 
 
 def twin(cls: type) -> type:
     """A real dataclass of ``cls``'s fields, frozen as ``cls`` is."""
-    made = dataclasses.make_dataclass(cls.__name__, [f.name for f in dataclasses.fields(cls)],
-                                      frozen=issubclass(cls, FrozenRecord))
+    made = dataclasses.make_dataclass(
+        cls.__name__, [(f.name, object, dataclasses.field(repr=f.repr, compare=f.compare))
+                       for f in dataclasses.fields(cls)],
+        frozen=issubclass(cls, FrozenRecord))
     made.__qualname__ = cls.__qualname__
     return made
 
@@ -94,10 +110,49 @@ def test_repr_eq_and_hash_as_a_dataclass_of_the_same_fields(value):
     else:
         with pytest.raises(TypeError, match="unhashable"):
             hash(value)
-    first = names[0]
-    other = dataclasses.replace(value, **{first: "changed" if values[0] != "changed" else "x"})
+    # (a conversion's target must be a profile: its __init__ reads it)
+    at = names.index("spacing") if cls is ConvertOptions else 0
+    other = dataclasses.replace(value, **{names[at]: "changed" if values[at] != "changed"
+                                          else "x"})
     assert other != value and type(other) is cls
-    assert [getattr(other, n) for n in names[1:]] == values[1:]
+    assert [getattr(other, n) for n in names if n != names[at]] == values[:at] + values[at + 1:]
+
+
+def test_a_field_left_out_of_repr_and_eq_as_a_dataclass_leaves_it():
+    """``field(repr=False, compare=False)``: a conversion's own bookkeeping (the notes said,
+    where they spill) is no part of what it did."""
+    stats, again = converted_stats(), converted_stats()
+    again._noted.add("another note said")
+    again.spill_to("somewhere")
+    assert stats == again
+    assert repr(stats).endswith(", notes_spill=None)") and "_noted=" not in repr(stats)
+    assert repr(stats) == repr(again)
+    again.changed += 1
+    assert stats != again
+    for registered_first in (False, True):  # (registering replaces the fields' declarations)
+
+        @record
+        class Kept(Record):
+            a: int
+            b: list[int] = field(default_factory=list, repr=False, compare=False)
+
+            def __init__(self, a: int, b: list[int] = NEW) -> None:
+                init_fields(self, a, new(b, list))
+
+        if registered_first:
+            assert [f.repr for f in dataclasses.fields(Kept)] == [True, False]
+        assert repr(Kept(1, [2])) == "test_a_field_left_out_of_repr_and_eq_as_a_dataclass_" \
+            "leaves_it.<locals>.Kept(a=1)"
+        assert Kept(1, [2]) == Kept(1, [3]) != Kept(2, [2])
+
+        @record
+        class Plain(Kept):  # (a record's fields are its own annotations: none left out)
+            c: int
+
+            def __init__(self, c: int) -> None:
+                init_fields(self, c)
+
+        assert repr(Plain(3)).endswith(".Plain(c=3)") and Plain(3) != Plain(4)
 
 
 @pytest.mark.parametrize("value", instances(), ids=lambda x: type(x).__name__)

@@ -19,6 +19,7 @@ from tapegate.workers import (
     BATCH,
     EARLY,
     PIECES,
+    RUN,
     WAITING,
     WINDOW,
     default_jobs,
@@ -306,6 +307,64 @@ def test_pieces_reach_receive_in_the_items_order_before_their_result():
     for result in ordered_map(_sends, [2, 1], 1, receive=one.append):
         one.append(result)
     assert one == [(2, 0), (2, 1), 2, (1, 0), 1]
+
+
+def test_the_main_thread_is_woken_once_for_a_run_of_items_done():
+    """An item done wakes the main thread only once the items done in a row from the one
+    whose turn it is are RUN, or every item is given out, or (the due one done) the waiting
+    items hold half their budget: not once an item, which took a core from a working thread
+    each time."""
+    import tapegate.workers as workers
+
+    state = workers._Map(lambda item: item, list(range(20)), 8, 8)
+    state.given = 10
+
+    def done(*indexes: int) -> None:
+        for index in indexes:
+            slot = state.slots[index] = workers._Slot(index)
+            slot.done = True
+
+    assert not state._ready()  # nothing done
+    done(1, 2, 3)
+    assert not state._ready()  # the item whose turn it is (0) still running
+    done(0)
+    assert RUN == 4 and state._ready()  # 0, 1, 2, 3
+    del state.slots[3]
+    assert not state._ready()  # 0, 1, 2: the threads go on without waking it
+    state.held = 4  # half the budget held by the items not yet due
+    assert state._ready()
+    state.held = 0
+    state.given = 20  # every item given: the batch's end, each item taken as it is done
+    assert state._ready()
+    state.slots.clear()
+    assert not state._ready()
+
+
+@pytest.mark.parametrize("window", [1, 2])
+def test_threads_waiting_for_the_window_wake_the_main_thread(monkeypatch, window):
+    """A window of fewer items a thread than a RUN: the items done are not enough to wake the
+    main thread, so a thread that must wait for the window to move wakes it before it waits;
+    every result comes, in order."""
+    import threading
+
+    import tapegate.workers as workers
+
+    monkeypatch.setattr(workers, "WINDOW", window)
+    assert 2 * window < 2 * RUN
+    results: list[object] = []
+
+    def consume() -> None:
+        results.extend(ordered_map(_sends, list(range(40)), 2, receive=results.append))
+
+    thread = threading.Thread(target=consume, daemon=True)
+    thread.start()
+    thread.join(timeout=60)
+    assert not thread.is_alive(), "the map waited for ever"
+    expected: list[object] = []
+    for item in range(40):
+        expected.extend((item, n) for n in range(item))
+        expected.append(item)
+    assert results == expected
 
 
 def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path):
