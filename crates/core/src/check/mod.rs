@@ -785,6 +785,18 @@ pub struct Checker {
     /// LinuxCNC: the local named parameters (`#<name>`, as `params::named_parameter` writes
     /// them) the main program has assigned so far (`Checker::linuxcnc_named_reads`).
     linuxcnc_named: HashSet<Vec<u8>>,
+    /// Up to eight names, as written, found among `linuxcnc_named` or global: a CAM program's
+    /// `Z[#<zscale>*..]` on every line compared by its bytes, not normalized and hashed.
+    linuxcnc_named_seen: Vec<Vec<u8>>,
+    /// LinuxCNC: an o-word condition or loop has been read. Which lines run after it depends
+    /// on values the checker does not follow, so what rs274 refuses only in a line it runs (a
+    /// named parameter not yet set, `M[3.5]`, `X[1/0]`) is no longer judged (review 16c).
+    linuxcnc_flow_seen: bool,
+    /// LinuxCNC: a condition, loop, call or subroutine definition (or M73) has been read: the
+    /// feed mode in force may be another than the lines in their order give (a definition's
+    /// G95 does not run where it is written; M73 restores the caller's modes), so the probe's
+    /// and cycles' feed mode refusals are no longer judged (review 16c).
+    linuxcnc_mode_unsure: bool,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
@@ -904,6 +916,9 @@ impl Checker {
             open_definition: None,
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),
+            linuxcnc_named_seen: Vec::new(),
+            linuxcnc_flow_seen: false,
+            linuxcnc_mode_unsure: false,
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,

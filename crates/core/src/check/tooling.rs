@@ -45,7 +45,12 @@ pub(super) enum LinuxCncFeed {
 #[cold]
 #[inline(never)]
 fn linuxcnc_read_expression(w: &crate::word::Word<'_>) -> Option<(String, u8)> {
-    if w.expression.len() > 200 {
+    // refused only for a `/` (a division by zero) or an M word's value, which a parameter
+    // anywhere in it leaves to the machine: most expressions (CAM's `Z[#<zscale>*-25.372]`)
+    // need no tree built
+    if w.expression.len() > 200
+        || !w.expression.contains(&b'/') && (w.letter != b'M' || w.expression.contains(&b'#'))
+    {
         return None;
     }
     let tree = crate::expr::tree(w.expression).ok()?;
@@ -732,7 +737,11 @@ impl Checker {
                 }
             }
             let value = self.readable[i];
-            if value.is_none() && !w.expression.is_empty() && read_refusal.is_none() {
+            if value.is_none()
+                && !w.expression.is_empty()
+                && read_refusal.is_none()
+                && !self.linuxcnc_flow_seen
+            {
                 read_refusal = linuxcnc_read_expression(w);
             }
             match (w.letter, value) {
@@ -1331,7 +1340,7 @@ impl Checker {
                     linuxcnc_no_feed(after.feed_mode, value(b'F'))
                 ));
             }
-            if after.feed_mode == 95 {
+            if after.feed_mode == 95 && !self.linuxcnc_mode_unsure {
                 return Some(
                     "Cannot probe with feed per rev mode (rs274ngc): a probe move feeds per \
                      minute (G94) or in inverse time (G93)"
@@ -1443,7 +1452,7 @@ impl Checker {
                 linuxcnc_no_feed(after.feed_mode, value(b'F'))
             ));
         }
-        if after.feed_mode == 93 {
+        if after.feed_mode == 93 && !self.linuxcnc_mode_unsure {
             return Some(
                 "Cannot use inverse time feed with canned cycles (rs274ngc): G94 before the \
                  cycle"
@@ -2656,6 +2665,16 @@ mod tests {
                 "F100\nG93\nG81 X1 Y1 Z-1 R1 F10",
                 &["6: Cannot use inverse time feed with canned cycles"],
             ),
+            // after a definition, condition, call or M73 the feed mode in force is not the
+            // lines' in their order (a definition's G95 does not run where it stands; M73
+            // restores the caller's modes): not judged (review 16c, rs274 runs these)
+            (
+                "o<tap> sub\nG95 F1 S100 M3\nG1 Z-1\no<tap> endsub\nF10\nG38.2 Z-5\n\
+                 o<tap> call",
+                &[],
+            ),
+            ("F100\no1 if [0]\nG93\no1 endif\nG81 X1 Y1 Z-1 R1 F10", &[]),
+            ("F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10", &[]),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
@@ -2694,6 +2713,8 @@ mod tests {
             ("G0 X[1/0]", &["4: Attempt to divide by zero"]),
             ("G0 X[ABS[2/[1-1]]]", &["4: Attempt to divide by zero"]),
             ("G0 X[1/0.5] Y[#1/2]", &[]),
+            // after a condition or loop the line may not run: not judged (review 16c)
+            ("o1 if [0]\nM[3.5]\nG0 X[1/0]\no1 endif", &[]),
             // M66's words, in convert_m's order
             (
                 "M66 P0 E0 L0",
