@@ -1120,6 +1120,28 @@ def test_an_okuma_mill_s_frames_refuse_the_restart():
     assert plan(one_block, 8, okuma).preamble[-1] == "G01 Z-1. F100."
 
 
+def test_an_okuma_mill_s_one_block_work_system_loses_the_axes_it_moves():
+    """Review 16b, 1: after `G16 H2 G00 X20. Y5.` (work system 2 for that block only) the
+    tool stands at X20 Y5 of system 2; the restart went to X20 Y5 of system 1 (`G15 H1`) and
+    plunged there. Refused until an absolute position gives the axis again; a restart at the
+    G16 block itself makes the program's own move and is planned."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G21 G17 G90 G15 H1\nN2 G00 X0 Y0 Z50.\nN3 T1 M06\nN4 S1000 M03\n"
+            "N5 G16 H2 G00 X20. Y5.\nN20 G01 Z-1. F100\nN30 X30.\nN40 G00 Z50.\n"
+            "N50 X0 Y0\nN60 X5.\nM30\n%\n")  # N5 is line 7
+    for line, axis in ((8, "X"), (9, "Y"), (10, "Y")):  # N30 X30. gives X; Y is of system 2
+        assert refusal(text, line, okuma) == (
+            f"cannot restart here: the work coordinate system changed after the last position "
+            f"of {axis} (G16 H2 (a work coordinate system for one block) on line 7) and the "
+            f"block does not give {axis} as an absolute number: the position in the new system "
+            f"is not known; restart at a block that gives every axis")
+    assert plan(text, 12, okuma).preamble[-2:] == ["G00 X0 Y0", "F100."]
+    assert plan(text, 7, okuma).preamble[-1] == "G00 X0 Y0"  # then N5 runs as written
+    # a G16 that moves no axis leaves every position as it was
+    no_move = text.replace("N5 G16 H2 G00 X20. Y5.", "N5 G16 H2")
+    assert plan(no_move, 8, okuma).preamble[-1] == "G00 X0 Y0"
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from

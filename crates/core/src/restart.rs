@@ -547,6 +547,36 @@ impl Walk {
         }
     }
 
+    /// An Okuma mill's `G16 H n` (a work system for its block only; OSP List of G Codes): an
+    /// axis the block moves stands at a place of that system, and from the next block on the
+    /// program's numbers are those of the `G15 H` system again, whose offset from the other
+    /// is not known. Lost as after a change of work system, until an absolute position.
+    fn one_block_work_system(&mut self, line: usize, tokens: &[&[u8]]) {
+        let h = tokens
+            .iter()
+            .find(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'H')))
+            .map(|t| String::from_utf8_lossy(t).into_owned());
+        let what = match h {
+            Some(h) => format!("G16 {h} (a work coordinate system for one block)"),
+            None => "G16 (a work coordinate system for one block)".to_string(),
+        };
+        for &token in tokens {
+            let Some(letter) = token.first().map(u8::to_ascii_uppercase) else {
+                continue;
+            };
+            if let Some(i) = AXES.contains(&letter).then(|| axis_index(letter)).flatten() {
+                self.lost[i] = Some(Lost {
+                    machine: false,
+                    frame: true,
+                    cycle: false,
+                    line,
+                    what: Why::Text(what.clone().into_bytes()),
+                    replay: (String::new(), Vec::new()),
+                });
+            }
+        }
+    }
+
     /// A Haas machining centre: G101 mirrors, G100 cancels it (Haas mill operator's manual).
     fn haas_mill(&self) -> bool {
         self.control == Control::Haas && !self.lathe
@@ -814,6 +844,9 @@ impl Walk {
             )
         }) || (self.haas_mill() && gs.iter().any(|&g| g == 100 || g == 101));
         self.positions(line, &gs, &plain_words, after, data);
+        if self.control == Control::Okuma && !self.lathe && gs.contains(&16) {
+            self.one_block_work_system(line, b.tokens);
+        }
         self.home_return(b, &gs);
         self.before = after.position;
     }
