@@ -1142,6 +1142,22 @@ def test_an_okuma_mill_s_one_block_work_system_loses_the_axes_it_moves():
     assert plan(no_move, 8, okuma).preamble[-1] == "G00 X0 Y0"
 
 
+def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis():
+    """Review 16b, 2 in the restart walk: `G100 X0` was read as a move to X0 (the restart
+    plunged 1 in from where the program cut), and ended the Y mirror too (planned at the
+    unmirrored Y2.). G100's words name the axes whose mirror ends (96-8000, G101)."""
+    haas = load_profile("haas-mill")
+    text = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y1.\n"
+            "N5 G43 H1 Z1.\nN6 G01 Z-0.1 F10.\nN7 G101 X0\nN8 G100 X0\nN20 Y2.\n"
+            "N30 G00 Z1.\nM30\n%\n")  # N20 is line 11
+    assert plan(text, 11, haas).preamble[-2:] == ["G00 X1. Y1.", "G01 Z-0.1 F10."]
+    both = text.replace("N7 G101 X0", "N7 G101 X0 Y0").replace("N20 Y2.", "N11 X3. Y2.\nN20 X4.")
+    assert refusal(both, 12, haas) == ("cannot restart here: G101 (mirror image) from line 9 "
+                                       "is in force and the preamble cannot restore it")
+    ended = both.replace("N8 G100 X0", "N8 G100 X0 Y0")
+    assert plan(ended, 12, haas).preamble[-2:] == ["G00 X3. Y2.", "G01 Z-0.1 F10."]
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from

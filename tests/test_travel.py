@@ -396,3 +396,28 @@ def test_a_lathe_s_coordinate_setting_restarts_the_span_by_its_code_system(
                                                              profile.dialect)
                  if f.rule == "TG601"]
         assert found == spans, (base, code)
+
+
+def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis() -> None:
+    """Review 16b, 2 (Haas VF Series manual 96-8000, G101: the mirror is selected axis by
+    axis, about the work zero): G100/G101's X is the axis named, no move to it (G100 X32. was
+    a false `X spans 61`), and G100 X0 ends X's mirror alone: a mirrored Y15. (at -15) was
+    compared with Y-15. as a span of 32.5 after it."""
+    haas = load_profile("haas-mill")  # X -30..30, Y -16..16 in
+    found, _ = check("G20 G54\nG00 X-29. Y0\nG101 X32.\nG00 X-29.\nG100 X32.", haas)
+    assert found == []
+    found, _ = check("G20 G54\nG00 X0 Y-15.\nG101 X0 Y0\nG00 X1. Y1.\nG100 X0\nG00 Y15.\n"
+                     "G100 Y0", haas)
+    assert found == []
+    # Y is still mirrored after G100 X0: Y18. is not compared with the Y-15. before it
+    found, _ = check("G20 G54\nG00 X0 Y-15.\nG101 X0 Y0\nG100 X0\nG00 Y18.\nG100 Y0", haas)
+    assert found == []
+    # after the last axis's cancel the positions are compared again
+    found, _ = check("G20 G54\nG00 X0 Y-15.\nG101 X0 Y0\nG100 X0\nG100 Y0\nG00 Y18.", haas)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (9, "Y spans 33 (from -15 to 18)")]
+    # a move to X32. is one, after the cancel as before
+    found, _ = check("G20 G54\nG00 X-29. Y0\nG101 X32.\nG00 X-29.\nG100 X32.\nG00 X32.",
+                     haas)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (9, "X spans 61 (from -29 to 32)")]

@@ -443,7 +443,7 @@ impl ModalSettings {
     /// control, does with them. Each family's codes are from its manuals' code lists (the
     /// profiles' `[codes]` name them): Fanuc and Haas G10, G27-G31, G52, G53, G65/G66, G92 on
     /// a mill and G50 on a lathe, the mills' G68/G51 centres, the measuring codes (G35-G37,
-    /// G136), Haas's patterns and pockets (G12, G13, G47, G70-G72, G150) and mirror (G101),
+    /// G136), Haas's patterns and pockets (G12, G13, G47, G70-G72, G150) and mirror (G101, and its cancel G100),
     /// a lathe's multiple repetitive cycles G70-G76 (they end at their start point); rs274ngc
     /// G10, G28, G30, G52, G92 and the 2.9 lathe cycles G70-G72 (G53 is no such code there:
     /// it runs the G0 or G1 in force, "Must use G0 or G1 with G53"); SINUMERIK G25/G26
@@ -467,8 +467,9 @@ impl ModalSettings {
             // (G10 L2/L20 may set the offsets of the coordinate system in force: where the
             // named axes stand in program coordinates is then not known)
             (Family::MacroB | Family::LinuxCnc, 10) => Some(Unknown),
-            // G22 I J K: the stored stroke check's limits
-            (Family::MacroB, 22 | 65 | 66 | 101 | 107) => Some(Data),
+            // G22 I J K: the stored stroke check's limits; Haas G101/G100 X: the axes whose
+            // mirror image starts or ends (96-8000, G101), no move
+            (Family::MacroB, 22 | 65 | 66 | 100 | 101 | 107) => Some(Data),
             (Family::MacroB, 51 | 68) if self.centre_codes => Some(Data),
             (Family::MacroB, 70..=76) if lathe => Some(Data),
             (Family::MacroB, 92) if !lathe => Some(Set),

@@ -252,6 +252,10 @@ pub struct Walk {
     /// the axes it names, the mirror is in force until it has ended every one (review 15,
     /// finding 2).
     mirrored: u16,
+    /// The axes a Haas mill's G101 mirrors: G100 ends the mirror of the axes it names, the
+    /// mirror is in force until it has ended every one (Haas VF Series manual 96-8000, G101:
+    /// the mirror selected per axis; review 16b, finding 2).
+    haas_mirrored: u16,
     /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
     /// way the program reached its start point with this tool, for an approach that goes the
     /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
@@ -479,6 +483,7 @@ impl Walk {
             transformed: 0,
             shifted: 0,
             mirrored: 0,
+            haas_mirrored: 0,
             moves: Vec::new(),
             tool_change: None,
             tool_moved: true,
@@ -996,13 +1001,22 @@ impl Walk {
                     }
                 }
             }
+            let named = plain_words
+                .iter()
+                .filter_map(|&(letter, _)| axis_index(letter))
+                .fold(0u16, |all, i| all | bit(i));
             if self.haas_mill() && g == 101 && !axes.is_empty() {
-                // Haas G101 X0: the mirror image about X0 (Haas mill operator's manual, G101)
+                // Haas G101 X0: the mirror image of X (Haas mill operator's manual, G101)
                 self.set_unrestored("101", line, "G101 (mirror image)".into());
+                self.haas_mirrored |= named;
             }
             if self.haas_mill() && g == 100 {
                 let was = self.unrestored.iter().any(|(k, _, _)| k == "101");
-                self.drop_unrestored("101");
+                // G100 X0 ends X's mirror alone (a G100 naming none, all)
+                self.haas_mirrored &= if named == 0 { 0 } else { !named };
+                if self.haas_mirrored == 0 {
+                    self.drop_unrestored("101");
+                }
                 if was {
                     self.transform_cancel(line, "G100", "mirror image");
                 }

@@ -58,6 +58,10 @@ pub(super) struct Frames {
     /// The axes (bit `i` for `AXES[i]`) a mirror image G51.1 not known exactly here
     /// mirrors: its positions stand apart until a G50.1 has ended every one of them.
     apart: u16,
+    /// The axes a Haas mill's G101 mirrors (Haas VF Series manual 96-8000, G101: the
+    /// mirror selected per axis): G100 ends the mirror of the axes it names, and the
+    /// positions under it stand apart until the last has ended (review 16b, finding 2).
+    haas_mirrored: u16,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
     /// Whether the block in hand has a code that may turn a frame or shift the coordinates
@@ -385,8 +389,18 @@ impl Checker {
             let mirror_on = off == 32
                 && (self.frames.apart != 0
                     || self.frames.map.as_ref().is_some_and(|map| map.bit == 32));
-            if off != 0 && self.frames.on & off != 0 && !mirror_on {
+            // (a Haas G100 X0 ends X's mirror alone, a G100 naming none all of them)
+            let haas_on = off == 16 && {
+                let named = Self::mirror_axes(b);
+                self.frames.haas_mirrored &= if named == 0 { 0 } else { !named };
+                self.frames.haas_mirrored != 0
+            };
+            if off != 0 && self.frames.on & off != 0 && !mirror_on && !haas_on {
                 self.frame_off(off);
+            }
+            if on == 16 {
+                let named = Self::mirror_axes(b);
+                self.frames.haas_mirrored |= if named == 0 { XYZ } else { named };
             }
             if on != 0 {
                 self.frame_on(on, b, w.token(), w.column);
