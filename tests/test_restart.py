@@ -1158,6 +1158,20 @@ def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis():
     assert plan(ended, 12, haas).preamble[-2:] == ["G00 X3. Y2.", "G01 Z-0.1 F10."]
 
 
+def test_an_okuma_mill_s_g69_words_are_not_known_rather_than_moves():
+    """Review 16b, 6: the words of an Okuma mill's G69 (3-D conversion; no page at hand gives
+    them) were read as moves under the conversion, and the refusal blamed the G68 cancel for
+    a Y the program never moved. They are unknown, as G11's and G62's are, and said so."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G21 G17 G90 G15 H1\nN2 T1 M06\nN3 S1000 M03\n"
+            "N4 G00 X10. Y10. Z50.\nN5 G69 X0 Y0 Z-5.\nN6 G68\nN7 G00 X20.\n"
+            "N20 G01 Z-1. F100\nN30 X30.\nN40 G00 Z50.\nN50 Y10.\nN60 X5.\nM30\n%\n")
+    assert refusal(text, 10, okuma) == (
+        "cannot restart here: the position of Y is not known here (line 7: Y0 in an Okuma "
+        "frame block, whose axis words no page at hand gives)")
+    assert plan(text, 15, okuma).preamble[-2:] == ["G00 X5. Y10.", "F100."]
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from

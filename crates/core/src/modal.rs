@@ -494,9 +494,10 @@ impl ModalSettings {
             (Family::Okuma, 181..=189) if self.lap => Some(Unknown),
             (Family::Okuma, 30 | 31) => Some(Unknown),
             // an Okuma mill's G11 (parallel and rotation shift of the coordinate system) and
-            // G62 (programmable mirror image): the list at hand names them, no page says what
-            // their axis words are; a move to them is not assumed, nor is the position kept
-            (Family::Okuma, 11 | 62) if !lathe => Some(Unknown),
+            // G62 (programmable mirror image), and G69 (three-dimensional coordinate system
+            // conversion): the list at hand names them, no page says what their axis words
+            // are; a move to them is not assumed, nor is the position kept
+            (Family::Okuma, 11 | 62 | 69) if !lathe => Some(Unknown),
             // (unless the profile makes it its units code: a lathe profile of its own)
             (Family::Okuma, 20 | 21 | 24 | 25) if lathe && self.units_code(g).is_none() => {
                 Some(Home)

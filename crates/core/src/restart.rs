@@ -1389,6 +1389,19 @@ impl Walk {
             return;
         }
         let has = |g: i64| gs.contains(&g);
+        if self.control == Control::Okuma && !self.lathe && (has(11) || has(62) || has(69)) {
+            // an Okuma mill's G11, G62 and G69 (OSP List of G Codes): no page at hand gives
+            // their axis words, so neither a move nor a position kept is assumed
+            // (`ModalSettings::axes_taken`)
+            for &(letter, token) in &letters {
+                let mut what = token.to_vec();
+                what.extend_from_slice(
+                    b" in an Okuma frame block, whose axis words no page at hand gives",
+                );
+                self.lose_unknown(self.axis(letter), line, what);
+            }
+            return;
+        }
         if has(10)
             || has(52)
             || (has(92) && !self.g50_lathe())
