@@ -1172,6 +1172,18 @@ def test_an_okuma_mill_s_g69_words_are_not_known_rather_than_moves():
     assert plan(text, 15, okuma).preamble[-2:] == ["G00 X5. Y10.", "F100."]
 
 
+def test_an_okuma_mill_s_g53_is_a_move_with_the_length_offset_cancelled():
+    """Review 16b, 4 in the restart walk: an OSP mill's G53 cancels the tool length offset
+    (OSP List of G Codes), no machine coordinates: `G53 G00 Z50.` leaves Z at 50 of the work
+    system, which the preamble goes to, not a machine position sent again."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G21 G17 G90 G15 H1\nN2 T1 M06\nN3 S1000 M03\n"
+            "N4 G00 X10. Y10.\nN5 G53 G00 Z50.\nN20 G01 X20. F100\nM30\n%\n")
+    preamble = plan(text, 8, okuma).preamble
+    assert preamble[-2:] == ["G00 Z50.", "G00 X10. Y10."], preamble
+    assert not any("G53" in block for block in preamble), preamble
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from

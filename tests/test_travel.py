@@ -421,3 +421,20 @@ def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis() -> None:
                      haas)
     assert [(f.line, f.message.split(",")[0]) for f in found] == [
         (9, "X spans 61 (from -29 to 32)")]
+
+
+def test_an_okuma_mill_s_g53_to_g59_are_length_offsets_not_coordinates() -> None:
+    """Review 16b, 4: on an OSP mill G53 cancels the tool length offset and G54-G59 select it
+    by axis (OSP List of G Codes; the work system is G15 H). G53's Y390. was taken for a
+    machine position and left out of the span (a missed TG601), its Y450. compared with the
+    travel as one (a false TG601), and G54 H1 applied the profile's G54 work offset."""
+    okuma = load_profile("okuma-mill")  # Y -400..400 mm
+    found, _ = check("G15 H1\nG00 X0 Y-450.\nG53 G00 Y390.\nG00 X0", okuma)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (6, "Y spans 840 (from -450 to 390)")]
+    found, _ = check("G15 H1\nG00 X0 Y0\nG53 G00 Y450.\nG00 X0", okuma)
+    assert found == []
+    offsets = with_offsets("okuma-mill",
+                           "\n[work_offsets]\nG54 = { X = -500.0, Y = 0.0, Z = 0.0 }\n")
+    found, _ = check("G15 H2\nG00 X0 Y0\nG54 H1 G00 Z50.\nG00 X-200.", offsets)
+    assert found == []

@@ -899,7 +899,9 @@ impl ModalMachine {
             s.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
             return;
         }
-        if taken == Some(AxesTaken::Unknown) || v.has_g(28) || v.has_g(30) || v.has_g(53) {
+        // (an Okuma mill's G53 cancels the tool length offset, OSP List of G Codes: a move)
+        let machine = v.has_g(53) && (self.settings.family != Family::Okuma || self.settings.lap);
+        if taken == Some(AxesTaken::Unknown) || v.has_g(28) || v.has_g(30) || machine {
             // to the reference point through the words' point, in machine coordinates, to
             // where a skip or a measurement stopped: where that is in the program's
             // coordinates depends on offsets and signals not in the program

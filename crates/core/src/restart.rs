@@ -1361,7 +1361,12 @@ impl Walk {
             .filter(|(l, _)| AXES.contains(l) && !dwell.contains(l))
             .copied()
             .collect();
-        if let Some(&g) = gs.iter().find(|&&g| machine_move(g).is_some()) {
+        // (an Okuma mill's G53 cancels the tool length offset: no machine coordinates)
+        let okuma_mill = self.control == Control::Okuma && !self.lathe;
+        if let Some(&g) = gs
+            .iter()
+            .find(|&&g| machine_move(g).is_some() && !(g == 53 && okuma_mill))
+        {
             let name = machine_move(g).unwrap_or("");
             if letters.is_empty() && g != 53 && self.control == Control::LinuxCnc {
                 // LinuxCNC's G28 alone: every axis home

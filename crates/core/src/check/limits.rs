@@ -296,6 +296,9 @@ impl Checker {
                 52 | 92 if axes => {
                     self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
                 }
+                // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
+                // List of G Codes): no machine coordinates, no work system (G15 H selects it)
+                53..=59 if self.config.family == Family::Okuma && !self.config.modal.lap => {}
                 54..=57 => self.work = Some(v.trunc()),
                 58 | 59 if !sinumerik => self.work = Some(v.trunc()),
                 // an Okuma mill's G11 (parallel and rotation shift), G51 (scaling), G62
@@ -1023,7 +1026,9 @@ impl Checker {
             moved = &[];
         }
         let factor = self.to_profile_units(false);
-        let machine = self.values.has_g(53);
+        // (an Okuma mill's G53 cancels the tool length offset: work_offset)
+        let machine =
+            self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
         // the axes whose positions go to the spans below through a frame, or not at all
         // (none where no frame is on: most programs)
         let framed = if self.frames.on == 0 {
