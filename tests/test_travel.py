@@ -438,3 +438,17 @@ def test_an_okuma_mill_s_g53_to_g59_are_length_offsets_not_coordinates() -> None
                            "\n[work_offsets]\nG54 = { X = -500.0, Y = 0.0, Z = 0.0 }\n")
     found, _ = check("G15 H2\nG00 X0 Y0\nG54 H1 G00 Z50.\nG00 X-200.", offsets)
     assert found == []
+
+
+def test_a_second_mirror_of_an_axis_already_mirrored_stands_apart_with_a_note() -> None:
+    """Review 16b, 5: `G51.1 X5.` on an X already mirrored about 0 was taken to move the
+    point (X-25. at 35: a TG601 `X spans 64`); no page at hand says whether it does that or
+    mirrors the mirror (X-25. at -35: 45). The positions stand apart, with a TG140 note."""
+    haas = load_profile("haas-mill")
+    body = "G20 G54\nG00 X-29. Y0\nG51.1 X0\nG00 X-10.\nG51.1 X5.\nG00 X-25.\nG50.1 X0"
+    checker = Checker(haas)
+    found = list(checker.run_stream([MILL.format(body)], haas.dialect))
+    assert [f for f in found if f.rule == "TG601"] == []
+    notes = [f for f in found if f.rule == "TG140"]
+    assert [(f.line, "a second mirror image of an axis already mirrored" in f.message)
+            for f in notes] == [(8, True)]

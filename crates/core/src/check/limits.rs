@@ -499,19 +499,49 @@ impl Checker {
             }
             _ => {
                 let exact_map = self.frames.map.as_ref().map(|map| map.bit == 32);
-                if on == 32 && others == 0 && exact_map != Some(false) && self.frames.apart == 0 {
+                // a G51.1 of an axis already mirrored: no page at hand says whether it moves
+                // the point or mirrors the mirror (review 16b, finding 5), so its positions
+                // stand apart, said
+                let mirrored =
+                    self.frames
+                        .map
+                        .as_ref()
+                        .filter(|map| map.bit == 32)
+                        .map_or(0, |map| {
+                            (0..3)
+                                .filter(|&k| map.m[k][k] == -1.0)
+                                .fold(0u16, |all, k| all | 1 << k)
+                        })
+                        | self.frames.apart;
+                let again = if on == 32 {
+                    Self::mirror_axes(b) & mirrored
+                } else {
+                    0
+                };
+                if again != 0 {
+                    self.frame_note(
+                        &token,
+                        again,
+                        (b.line, column),
+                        "as one span with those before it, until its cancel",
+                        "a second mirror image of an axis already mirrored, which no page at \
+                         hand describes (a new point, or a mirror of the mirror)",
+                    );
+                }
+                if on == 32
+                    && again == 0
+                    && others == 0
+                    && exact_map != Some(false)
+                    && self.frames.apart == 0
+                {
                     if let Some((centre, m, fresh)) = self.exact_mirror(b) {
                         let what = format!("{token} of line {}", b.line);
                         match self.frames.map.as_mut() {
-                            // a second G51.1 adds the axes it names, or moves their point
+                            // a second G51.1 adds the axes it names (none mirrored
+                            // already: `again`), each mirrored afresh where it stood
                             Some(map) => {
                                 for k in (0..3).filter(|&k| m[k][k] == -1.0) {
-                                    // an axis mirrored already stands where the old point
-                                    // put it: unknown in the new mirror's coordinates until
-                                    // given there; one mirrored afresh where it stood
-                                    if map.m[k][k] == 1.0 {
-                                        map.touched &= !(1 << k);
-                                    }
+                                    map.touched &= !(1 << k);
                                     map.m[k][k] = -1.0;
                                     map.centre[k] = centre[k];
                                     map.fresh &= !(1 << k);
@@ -1637,14 +1667,16 @@ mod tests {
             "%\nG00 X-300.\nG51.1 X450.\n",
         );
         assert_eq!(state.0.machine.state.axis(b'X'), Dec::parse("-300."));
-        // an axis mirrored again about another point stands where the first put it: not
-        // known in the new mirror's coordinates, so its cancel leaves it unknown (a note)
+        // an axis mirrored again: no page says what that does (review 16b, finding 5), so
+        // the positions stand apart, with a note
         let again = "G00 X0 Y0\nG51.1 X0\nG00 X100.\nG51.1 X50.\nG50.1 X0\nG91 X10.\nG90";
         assert_eq!(at(fanuc.clone(), again, Rule::TravelExceeded), []);
         let notes = findings(fanuc, &program(again), Rule::NotFollowed);
         assert_eq!(notes.len(), 1, "{notes:?}");
         assert!(
-            notes[0].message.contains("until an absolute position"),
+            notes[0]
+                .message
+                .contains("a second mirror image of an axis already mirrored"),
             "{}",
             notes[0].message
         );
