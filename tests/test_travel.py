@@ -452,3 +452,23 @@ def test_a_second_mirror_of_an_axis_already_mirrored_stands_apart_with_a_note() 
     notes = [f for f in found if f.rule == "TG140"]
     assert [(f.line, "a second mirror image of an axis already mirrored" in f.message)
             for f in notes] == [(8, True)]
+
+
+def test_a_partial_cancel_of_a_mirror_not_known_exactly_gives_the_axis_its_span_back() -> None:
+    """Review 16b, 3: after `G51.1 X#500 Y#500` (a point not known here) `G50.1 X0` left X's
+    positions in the mirrored span: X780. after the cancel was not compared with X-750.
+    before the mirror (a missed 1530), and X-770. was compared with the mirrored X760. (a
+    false 1530). The ended axis gets its span back; its position is unknown until an
+    absolute one."""
+    fanuc = load_profile("fanuc-mill")  # X -762..762 mm
+    found, _ = check("G54\nG00 X-750. Y0\nG51.1 X#500 Y#500\nG00 X750.\nG50.1 X0\n"
+                     "G00 X780.\nG50.1 Y0\nG00 Y0", fanuc)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (9, "X spans 1530 (from -750 to 780)")]
+    found, _ = check("G54\nG00 X0 Y0\nG51.1 X#500 Y#500\nG00 X760.\nG50.1 X0\nG00 X-770.\n"
+                     "G50.1 Y0", fanuc)
+    assert found == []
+    # an increment after the partial cancel is not compared: the point it adds to is unknown
+    found, _ = check("G54\nG00 X-750. Y0\nG51.1 X#500 Y#500\nG00 X750.\nG50.1 X0\n"
+                     "G91 G00 X30.\nG90\nG50.1 Y0", fanuc)
+    assert found == []

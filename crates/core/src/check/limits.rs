@@ -62,6 +62,9 @@ pub(super) struct Frames {
     /// mirror selected per axis): G100 ends the mirror of the axes it names, and the
     /// positions under it stand apart until the last has ended (review 16b, finding 2).
     haas_mirrored: u16,
+    /// The axes a G50.1 gave their spans from before a mirror not known exactly back to,
+    /// while other axes stayed mirrored ([`Checker::mirror_off`]).
+    given_back: u16,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
     /// Whether the block in hand has a code that may turn a frame or shift the coordinates
@@ -652,7 +655,26 @@ impl Checker {
     fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
         let named = Self::mirror_axes(b);
         let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
+            let ending = if named == 0 {
+                0
+            } else {
+                self.frames.apart & named
+            };
             self.frames.apart &= if named == 0 { 0 } else { !named };
+            if self.frames.apart != 0 && ending != 0 {
+                // (review 16b, finding 3) the axes whose mirror ends get their spans from
+                // before it back; where the mirror left the tool on them is not known here,
+                // so until an absolute position
+                if let Some(saved) = self.frames.saved.as_mut() {
+                    for k in (0..3).filter(|&k| ending & 1 << k != 0) {
+                        self.spans[k] = saved[k].take();
+                        self.frames.given_back |= 1 << k;
+                    }
+                }
+                for k in (0..3).filter(|&k| ending & 1 << k != 0) {
+                    self.machine.forget_axis(AXES[k]);
+                }
+            }
             return;
         };
         let mirrored = (0..3)
@@ -787,7 +809,13 @@ impl Checker {
         }
         if self.frames.on & (16 | 32) == 0 {
             if let Some(saved) = self.frames.saved.take() {
-                self.spans = saved;
+                // (an axis given its span back at a partial cancel keeps the one it has now)
+                for (k, span) in saved.into_iter().enumerate() {
+                    if self.frames.given_back & 1 << k == 0 {
+                        self.spans[k] = span;
+                    }
+                }
+                self.frames.given_back = 0;
             }
         }
     }
