@@ -1120,6 +1120,70 @@ def test_an_okuma_mill_s_frames_refuse_the_restart():
     assert plan(one_block, 8, okuma).preamble[-1] == "G01 Z-1. F100."
 
 
+def test_an_okuma_mill_s_one_block_work_system_loses_the_axes_it_moves():
+    """Review 16b, 1: after `G16 H2 G00 X20. Y5.` (work system 2 for that block only) the
+    tool stands at X20 Y5 of system 2; the restart went to X20 Y5 of system 1 (`G15 H1`) and
+    plunged there. Refused until an absolute position gives the axis again; a restart at the
+    G16 block itself makes the program's own move and is planned."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G21 G17 G90 G15 H1\nN2 G00 X0 Y0 Z50.\nN3 T1 M06\nN4 S1000 M03\n"
+            "N5 G16 H2 G00 X20. Y5.\nN20 G01 Z-1. F100\nN30 X30.\nN40 G00 Z50.\n"
+            "N50 X0 Y0\nN60 X5.\nM30\n%\n")  # N5 is line 7
+    for line, axis in ((8, "X"), (9, "Y"), (10, "Y")):  # N30 X30. gives X; Y is of system 2
+        assert refusal(text, line, okuma) == (
+            f"cannot restart here: the work coordinate system changed after the last position "
+            f"of {axis} (G16 H2 (a work coordinate system for one block) on line 7) and the "
+            f"block does not give {axis} as an absolute number: the position in the new system "
+            f"is not known; restart at a block that gives every axis")
+    assert plan(text, 12, okuma).preamble[-2:] == ["G00 X0 Y0", "F100."]
+    assert plan(text, 7, okuma).preamble[-1] == "G00 X0 Y0"  # then N5 runs as written
+    # a G16 that moves no axis leaves every position as it was
+    no_move = text.replace("N5 G16 H2 G00 X20. Y5.", "N5 G16 H2")
+    assert plan(no_move, 8, okuma).preamble[-1] == "G00 X0 Y0"
+
+
+def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis():
+    """Review 16b, 2 in the restart walk: `G100 X0` was read as a move to X0 (the restart
+    plunged 1 in from where the program cut), and ended the Y mirror too (planned at the
+    unmirrored Y2.). G100's words name the axes whose mirror ends (96-8000, G101)."""
+    haas = load_profile("haas-mill")
+    text = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y1.\n"
+            "N5 G43 H1 Z1.\nN6 G01 Z-0.1 F10.\nN7 G101 X0\nN8 G100 X0\nN20 Y2.\n"
+            "N30 G00 Z1.\nM30\n%\n")  # N20 is line 11
+    assert plan(text, 11, haas).preamble[-2:] == ["G00 X1. Y1.", "G01 Z-0.1 F10."]
+    both = text.replace("N7 G101 X0", "N7 G101 X0 Y0").replace("N20 Y2.", "N11 X3. Y2.\nN20 X4.")
+    assert refusal(both, 12, haas) == ("cannot restart here: G101 (mirror image) from line 9 "
+                                       "is in force and the preamble cannot restore it")
+    ended = both.replace("N8 G100 X0", "N8 G100 X0 Y0")
+    assert plan(ended, 12, haas).preamble[-2:] == ["G00 X3. Y2.", "G01 Z-0.1 F10."]
+
+
+def test_an_okuma_mill_s_g69_words_are_not_known_rather_than_moves():
+    """Review 16b, 6: the words of an Okuma mill's G69 (3-D conversion; no page at hand gives
+    them) were read as moves under the conversion, and the refusal blamed the G68 cancel for
+    a Y the program never moved. They are unknown, as G11's and G62's are, and said so."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G21 G17 G90 G15 H1\nN2 T1 M06\nN3 S1000 M03\n"
+            "N4 G00 X10. Y10. Z50.\nN5 G69 X0 Y0 Z-5.\nN6 G68\nN7 G00 X20.\n"
+            "N20 G01 Z-1. F100\nN30 X30.\nN40 G00 Z50.\nN50 Y10.\nN60 X5.\nM30\n%\n")
+    assert refusal(text, 10, okuma) == (
+        "cannot restart here: the position of Y is not known here (line 7: Y0 in an Okuma "
+        "frame block, whose axis words no page at hand gives)")
+    assert plan(text, 15, okuma).preamble[-2:] == ["G00 X5. Y10.", "F100."]
+
+
+def test_an_okuma_mill_s_g53_is_a_move_with_the_length_offset_cancelled():
+    """Review 16b, 4 in the restart walk: an OSP mill's G53 cancels the tool length offset
+    (OSP List of G Codes), no machine coordinates: `G53 G00 Z50.` leaves Z at 50 of the work
+    system, which the preamble goes to, not a machine position sent again."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G21 G17 G90 G15 H1\nN2 T1 M06\nN3 S1000 M03\n"
+            "N4 G00 X10. Y10.\nN5 G53 G00 Z50.\nN20 G01 X20. F100\nM30\n%\n")
+    preamble = plan(text, 8, okuma).preamble
+    assert preamble[-2:] == ["G00 Z50.", "G00 X10. Y10."], preamble
+    assert not any("G53" in block for block in preamble), preamble
+
+
 def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
     """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
     absolute, from there); after G50 at the scaled one. Refused at the block that moves from

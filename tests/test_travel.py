@@ -396,3 +396,79 @@ def test_a_lathe_s_coordinate_setting_restarts_the_span_by_its_code_system(
                                                              profile.dialect)
                  if f.rule == "TG601"]
         assert found == spans, (base, code)
+
+
+def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis() -> None:
+    """Review 16b, 2 (Haas VF Series manual 96-8000, G101: the mirror is selected axis by
+    axis, about the work zero): G100/G101's X is the axis named, no move to it (G100 X32. was
+    a false `X spans 61`), and G100 X0 ends X's mirror alone: a mirrored Y15. (at -15) was
+    compared with Y-15. as a span of 32.5 after it."""
+    haas = load_profile("haas-mill")  # X -30..30, Y -16..16 in
+    found, _ = check("G20 G54\nG00 X-29. Y0\nG101 X32.\nG00 X-29.\nG100 X32.", haas)
+    assert found == []
+    found, _ = check("G20 G54\nG00 X0 Y-15.\nG101 X0 Y0\nG00 X1. Y1.\nG100 X0\nG00 Y15.\n"
+                     "G100 Y0", haas)
+    assert found == []
+    # Y is still mirrored after G100 X0: Y18. is not compared with the Y-15. before it
+    found, _ = check("G20 G54\nG00 X0 Y-15.\nG101 X0 Y0\nG100 X0\nG00 Y18.\nG100 Y0", haas)
+    assert found == []
+    # after the last axis's cancel the positions are compared again
+    found, _ = check("G20 G54\nG00 X0 Y-15.\nG101 X0 Y0\nG100 X0\nG100 Y0\nG00 Y18.", haas)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (9, "Y spans 33 (from -15 to 18)")]
+    # a move to X32. is one, after the cancel as before
+    found, _ = check("G20 G54\nG00 X-29. Y0\nG101 X32.\nG00 X-29.\nG100 X32.\nG00 X32.",
+                     haas)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (9, "X spans 61 (from -29 to 32)")]
+
+
+def test_an_okuma_mill_s_g53_to_g59_are_length_offsets_not_coordinates() -> None:
+    """Review 16b, 4: on an OSP mill G53 cancels the tool length offset and G54-G59 select it
+    by axis (OSP List of G Codes; the work system is G15 H). G53's Y390. was taken for a
+    machine position and left out of the span (a missed TG601), its Y450. compared with the
+    travel as one (a false TG601), and G54 H1 applied the profile's G54 work offset."""
+    okuma = load_profile("okuma-mill")  # Y -400..400 mm
+    found, _ = check("G15 H1\nG00 X0 Y-450.\nG53 G00 Y390.\nG00 X0", okuma)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (6, "Y spans 840 (from -450 to 390)")]
+    found, _ = check("G15 H1\nG00 X0 Y0\nG53 G00 Y450.\nG00 X0", okuma)
+    assert found == []
+    offsets = with_offsets("okuma-mill",
+                           "\n[work_offsets]\nG54 = { X = -500.0, Y = 0.0, Z = 0.0 }\n")
+    found, _ = check("G15 H2\nG00 X0 Y0\nG54 H1 G00 Z50.\nG00 X-200.", offsets)
+    assert found == []
+
+
+def test_a_second_mirror_of_an_axis_already_mirrored_stands_apart_with_a_note() -> None:
+    """Review 16b, 5: `G51.1 X5.` on an X already mirrored about 0 was taken to move the
+    point (X-25. at 35: a TG601 `X spans 64`); no page at hand says whether it does that or
+    mirrors the mirror (X-25. at -35: 45). The positions stand apart, with a TG140 note."""
+    haas = load_profile("haas-mill")
+    body = "G20 G54\nG00 X-29. Y0\nG51.1 X0\nG00 X-10.\nG51.1 X5.\nG00 X-25.\nG50.1 X0"
+    checker = Checker(haas)
+    found = list(checker.run_stream([MILL.format(body)], haas.dialect))
+    assert [f for f in found if f.rule == "TG601"] == []
+    notes = [f for f in found if f.rule == "TG140"]
+    assert [(f.line, "a second mirror image of an axis already mirrored" in f.message)
+            for f in notes] == [(8, True)]
+
+
+def test_a_partial_cancel_of_a_mirror_not_known_exactly_gives_the_axis_its_span_back() -> None:
+    """Review 16b, 3: after `G51.1 X#500 Y#500` (a point not known here) `G50.1 X0` left X's
+    positions in the mirrored span: X780. after the cancel was not compared with X-750.
+    before the mirror (a missed 1530), and X-770. was compared with the mirrored X760. (a
+    false 1530). The ended axis gets its span back; its position is unknown until an
+    absolute one."""
+    fanuc = load_profile("fanuc-mill")  # X -762..762 mm
+    found, _ = check("G54\nG00 X-750. Y0\nG51.1 X#500 Y#500\nG00 X750.\nG50.1 X0\n"
+                     "G00 X780.\nG50.1 Y0\nG00 Y0", fanuc)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (9, "X spans 1530 (from -750 to 780)")]
+    found, _ = check("G54\nG00 X0 Y0\nG51.1 X#500 Y#500\nG00 X760.\nG50.1 X0\nG00 X-770.\n"
+                     "G50.1 Y0", fanuc)
+    assert found == []
+    # an increment after the partial cancel is not compared: the point it adds to is unknown
+    found, _ = check("G54\nG00 X-750. Y0\nG51.1 X#500 Y#500\nG00 X750.\nG50.1 X0\n"
+                     "G91 G00 X30.\nG90\nG50.1 Y0", fanuc)
+    assert found == []

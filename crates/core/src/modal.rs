@@ -443,7 +443,7 @@ impl ModalSettings {
     /// control, does with them. Each family's codes are from its manuals' code lists (the
     /// profiles' `[codes]` name them): Fanuc and Haas G10, G27-G31, G52, G53, G65/G66, G92 on
     /// a mill and G50 on a lathe, the mills' G68/G51 centres, the measuring codes (G35-G37,
-    /// G136), Haas's patterns and pockets (G12, G13, G47, G70-G72, G150) and mirror (G101),
+    /// G136), Haas's patterns and pockets (G12, G13, G47, G70-G72, G150) and mirror (G101, and its cancel G100),
     /// a lathe's multiple repetitive cycles G70-G76 (they end at their start point); rs274ngc
     /// G10, G28, G30, G52, G92 and the 2.9 lathe cycles G70-G72 (G53 is no such code there:
     /// it runs the G0 or G1 in force, "Must use G0 or G1 with G53"); SINUMERIK G25/G26
@@ -467,8 +467,9 @@ impl ModalSettings {
             // (G10 L2/L20 may set the offsets of the coordinate system in force: where the
             // named axes stand in program coordinates is then not known)
             (Family::MacroB | Family::LinuxCnc, 10) => Some(Unknown),
-            // G22 I J K: the stored stroke check's limits
-            (Family::MacroB, 22 | 65 | 66 | 101 | 107) => Some(Data),
+            // G22 I J K: the stored stroke check's limits; Haas G101/G100 X: the axes whose
+            // mirror image starts or ends (96-8000, G101), no move
+            (Family::MacroB, 22 | 65 | 66 | 100 | 101 | 107) => Some(Data),
             (Family::MacroB, 51 | 68) if self.centre_codes => Some(Data),
             (Family::MacroB, 70..=76) if lathe => Some(Data),
             (Family::MacroB, 92) if !lathe => Some(Set),
@@ -493,9 +494,10 @@ impl ModalSettings {
             (Family::Okuma, 181..=189) if self.lap => Some(Unknown),
             (Family::Okuma, 30 | 31) => Some(Unknown),
             // an Okuma mill's G11 (parallel and rotation shift of the coordinate system) and
-            // G62 (programmable mirror image): the list at hand names them, no page says what
-            // their axis words are; a move to them is not assumed, nor is the position kept
-            (Family::Okuma, 11 | 62) if !lathe => Some(Unknown),
+            // G62 (programmable mirror image), and G69 (three-dimensional coordinate system
+            // conversion): the list at hand names them, no page says what their axis words
+            // are; a move to them is not assumed, nor is the position kept
+            (Family::Okuma, 11 | 62 | 69) if !lathe => Some(Unknown),
             // (unless the profile makes it its units code: a lathe profile of its own)
             (Family::Okuma, 20 | 21 | 24 | 25) if lathe && self.units_code(g).is_none() => {
                 Some(Home)
@@ -897,7 +899,9 @@ impl ModalMachine {
             s.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
             return;
         }
-        if taken == Some(AxesTaken::Unknown) || v.has_g(28) || v.has_g(30) || v.has_g(53) {
+        // (an Okuma mill's G53 cancels the tool length offset, OSP List of G Codes: a move)
+        let machine = v.has_g(53) && (self.settings.family != Family::Okuma || self.settings.lap);
+        if taken == Some(AxesTaken::Unknown) || v.has_g(28) || v.has_g(30) || machine {
             // to the reference point through the words' point, in machine coordinates, to
             // where a skip or a measurement stopped: where that is in the program's
             // coordinates depends on offsets and signals not in the program

@@ -252,6 +252,10 @@ pub struct Walk {
     /// the axes it names, the mirror is in force until it has ended every one (review 15,
     /// finding 2).
     mirrored: u16,
+    /// The axes a Haas mill's G101 mirrors: G100 ends the mirror of the axes it names, the
+    /// mirror is in force until it has ended every one (Haas VF Series manual 96-8000, G101:
+    /// the mirror selected per axis; review 16b, finding 2).
+    haas_mirrored: u16,
     /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
     /// way the program reached its start point with this tool, for an approach that goes the
     /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
@@ -479,6 +483,7 @@ impl Walk {
             transformed: 0,
             shifted: 0,
             mirrored: 0,
+            haas_mirrored: 0,
             moves: Vec::new(),
             tool_change: None,
             tool_moved: true,
@@ -541,6 +546,36 @@ impl Walk {
                     cycle: false,
                     line,
                     what: Why::Text(code.clone().into_bytes()),
+                    replay: (String::new(), Vec::new()),
+                });
+            }
+        }
+    }
+
+    /// An Okuma mill's `G16 H n` (a work system for its block only; OSP List of G Codes): an
+    /// axis the block moves stands at a place of that system, and from the next block on the
+    /// program's numbers are those of the `G15 H` system again, whose offset from the other
+    /// is not known. Lost as after a change of work system, until an absolute position.
+    fn one_block_work_system(&mut self, line: usize, tokens: &[&[u8]]) {
+        let h = tokens
+            .iter()
+            .find(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'H')))
+            .map(|t| String::from_utf8_lossy(t).into_owned());
+        let what = match h {
+            Some(h) => format!("G16 {h} (a work coordinate system for one block)"),
+            None => "G16 (a work coordinate system for one block)".to_string(),
+        };
+        for &token in tokens {
+            let Some(letter) = token.first().map(u8::to_ascii_uppercase) else {
+                continue;
+            };
+            if let Some(i) = AXES.contains(&letter).then(|| axis_index(letter)).flatten() {
+                self.lost[i] = Some(Lost {
+                    machine: false,
+                    frame: true,
+                    cycle: false,
+                    line,
+                    what: Why::Text(what.clone().into_bytes()),
                     replay: (String::new(), Vec::new()),
                 });
             }
@@ -814,6 +849,9 @@ impl Walk {
             )
         }) || (self.haas_mill() && gs.iter().any(|&g| g == 100 || g == 101));
         self.positions(line, &gs, &plain_words, after, data);
+        if self.control == Control::Okuma && !self.lathe && gs.contains(&16) {
+            self.one_block_work_system(line, b.tokens);
+        }
         self.home_return(b, &gs);
         self.before = after.position;
     }
@@ -963,13 +1001,22 @@ impl Walk {
                     }
                 }
             }
+            let named = plain_words
+                .iter()
+                .filter_map(|&(letter, _)| axis_index(letter))
+                .fold(0u16, |all, i| all | bit(i));
             if self.haas_mill() && g == 101 && !axes.is_empty() {
-                // Haas G101 X0: the mirror image about X0 (Haas mill operator's manual, G101)
+                // Haas G101 X0: the mirror image of X (Haas mill operator's manual, G101)
                 self.set_unrestored("101", line, "G101 (mirror image)".into());
+                self.haas_mirrored |= named;
             }
             if self.haas_mill() && g == 100 {
                 let was = self.unrestored.iter().any(|(k, _, _)| k == "101");
-                self.drop_unrestored("101");
+                // G100 X0 ends X's mirror alone (a G100 naming none, all)
+                self.haas_mirrored &= if named == 0 { 0 } else { !named };
+                if self.haas_mirrored == 0 {
+                    self.drop_unrestored("101");
+                }
                 if was {
                     self.transform_cancel(line, "G100", "mirror image");
                 }
@@ -1314,7 +1361,12 @@ impl Walk {
             .filter(|(l, _)| AXES.contains(l) && !dwell.contains(l))
             .copied()
             .collect();
-        if let Some(&g) = gs.iter().find(|&&g| machine_move(g).is_some()) {
+        // (an Okuma mill's G53 cancels the tool length offset: no machine coordinates)
+        let okuma_mill = self.control == Control::Okuma && !self.lathe;
+        if let Some(&g) = gs
+            .iter()
+            .find(|&&g| machine_move(g).is_some() && !(g == 53 && okuma_mill))
+        {
             let name = machine_move(g).unwrap_or("");
             if letters.is_empty() && g != 53 && self.control == Control::LinuxCnc {
                 // LinuxCNC's G28 alone: every axis home
@@ -1342,6 +1394,19 @@ impl Walk {
             return;
         }
         let has = |g: i64| gs.contains(&g);
+        if self.control == Control::Okuma && !self.lathe && (has(11) || has(62) || has(69)) {
+            // an Okuma mill's G11, G62 and G69 (OSP List of G Codes): no page at hand gives
+            // their axis words, so neither a move nor a position kept is assumed
+            // (`ModalSettings::axes_taken`)
+            for &(letter, token) in &letters {
+                let mut what = token.to_vec();
+                what.extend_from_slice(
+                    b" in an Okuma frame block, whose axis words no page at hand gives",
+                );
+                self.lose_unknown(self.axis(letter), line, what);
+            }
+            return;
+        }
         if has(10)
             || has(52)
             || (has(92) && !self.g50_lathe())

@@ -58,6 +58,13 @@ pub(super) struct Frames {
     /// The axes (bit `i` for `AXES[i]`) a mirror image G51.1 not known exactly here
     /// mirrors: its positions stand apart until a G50.1 has ended every one of them.
     apart: u16,
+    /// The axes a Haas mill's G101 mirrors (Haas VF Series manual 96-8000, G101: the
+    /// mirror selected per axis): G100 ends the mirror of the axes it names, and the
+    /// positions under it stand apart until the last has ended (review 16b, finding 2).
+    haas_mirrored: u16,
+    /// The axes a G50.1 gave their spans from before a mirror not known exactly back to,
+    /// while other axes stayed mirrored ([`Checker::mirror_off`]).
+    given_back: u16,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
     /// Whether the block in hand has a code that may turn a frame or shift the coordinates
@@ -292,6 +299,9 @@ impl Checker {
                 52 | 92 if axes => {
                     self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
                 }
+                // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
+                // List of G Codes): no machine coordinates, no work system (G15 H selects it)
+                53..=59 if self.config.family == Family::Okuma && !self.config.modal.lap => {}
                 54..=57 => self.work = Some(v.trunc()),
                 58 | 59 if !sinumerik => self.work = Some(v.trunc()),
                 // an Okuma mill's G11 (parallel and rotation shift), G51 (scaling), G62
@@ -385,8 +395,18 @@ impl Checker {
             let mirror_on = off == 32
                 && (self.frames.apart != 0
                     || self.frames.map.as_ref().is_some_and(|map| map.bit == 32));
-            if off != 0 && self.frames.on & off != 0 && !mirror_on {
+            // (a Haas G100 X0 ends X's mirror alone, a G100 naming none all of them)
+            let haas_on = off == 16 && {
+                let named = Self::mirror_axes(b);
+                self.frames.haas_mirrored &= if named == 0 { 0 } else { !named };
+                self.frames.haas_mirrored != 0
+            };
+            if off != 0 && self.frames.on & off != 0 && !mirror_on && !haas_on {
                 self.frame_off(off);
+            }
+            if on == 16 {
+                let named = Self::mirror_axes(b);
+                self.frames.haas_mirrored |= if named == 0 { XYZ } else { named };
             }
             if on != 0 {
                 self.frame_on(on, b, w.token(), w.column);
@@ -482,19 +502,49 @@ impl Checker {
             }
             _ => {
                 let exact_map = self.frames.map.as_ref().map(|map| map.bit == 32);
-                if on == 32 && others == 0 && exact_map != Some(false) && self.frames.apart == 0 {
+                // a G51.1 of an axis already mirrored: no page at hand says whether it moves
+                // the point or mirrors the mirror (review 16b, finding 5), so its positions
+                // stand apart, said
+                let mirrored =
+                    self.frames
+                        .map
+                        .as_ref()
+                        .filter(|map| map.bit == 32)
+                        .map_or(0, |map| {
+                            (0..3)
+                                .filter(|&k| map.m[k][k] == -1.0)
+                                .fold(0u16, |all, k| all | 1 << k)
+                        })
+                        | self.frames.apart;
+                let again = if on == 32 {
+                    Self::mirror_axes(b) & mirrored
+                } else {
+                    0
+                };
+                if again != 0 {
+                    self.frame_note(
+                        &token,
+                        again,
+                        (b.line, column),
+                        "as one span with those before it, until its cancel",
+                        "a second mirror image of an axis already mirrored, which no page at \
+                         hand describes (a new point, or a mirror of the mirror)",
+                    );
+                }
+                if on == 32
+                    && again == 0
+                    && others == 0
+                    && exact_map != Some(false)
+                    && self.frames.apart == 0
+                {
                     if let Some((centre, m, fresh)) = self.exact_mirror(b) {
                         let what = format!("{token} of line {}", b.line);
                         match self.frames.map.as_mut() {
-                            // a second G51.1 adds the axes it names, or moves their point
+                            // a second G51.1 adds the axes it names (none mirrored
+                            // already: `again`), each mirrored afresh where it stood
                             Some(map) => {
                                 for k in (0..3).filter(|&k| m[k][k] == -1.0) {
-                                    // an axis mirrored already stands where the old point
-                                    // put it: unknown in the new mirror's coordinates until
-                                    // given there; one mirrored afresh where it stood
-                                    if map.m[k][k] == 1.0 {
-                                        map.touched &= !(1 << k);
-                                    }
+                                    map.touched &= !(1 << k);
                                     map.m[k][k] = -1.0;
                                     map.centre[k] = centre[k];
                                     map.fresh &= !(1 << k);
@@ -605,7 +655,26 @@ impl Checker {
     fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
         let named = Self::mirror_axes(b);
         let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
+            let ending = if named == 0 {
+                0
+            } else {
+                self.frames.apart & named
+            };
             self.frames.apart &= if named == 0 { 0 } else { !named };
+            if self.frames.apart != 0 && ending != 0 {
+                // (review 16b, finding 3) the axes whose mirror ends get their spans from
+                // before it back; where the mirror left the tool on them is not known here,
+                // so until an absolute position
+                if let Some(saved) = self.frames.saved.as_mut() {
+                    for k in (0..3).filter(|&k| ending & 1 << k != 0) {
+                        self.spans[k] = saved[k].take();
+                        self.frames.given_back |= 1 << k;
+                    }
+                }
+                for k in (0..3).filter(|&k| ending & 1 << k != 0) {
+                    self.machine.forget_axis(AXES[k]);
+                }
+            }
             return;
         };
         let mirrored = (0..3)
@@ -740,7 +809,13 @@ impl Checker {
         }
         if self.frames.on & (16 | 32) == 0 {
             if let Some(saved) = self.frames.saved.take() {
-                self.spans = saved;
+                // (an axis given its span back at a partial cancel keeps the one it has now)
+                for (k, span) in saved.into_iter().enumerate() {
+                    if self.frames.given_back & 1 << k == 0 {
+                        self.spans[k] = span;
+                    }
+                }
+                self.frames.given_back = 0;
             }
         }
     }
@@ -1009,7 +1084,9 @@ impl Checker {
             moved = &[];
         }
         let factor = self.to_profile_units(false);
-        let machine = self.values.has_g(53);
+        // (an Okuma mill's G53 cancels the tool length offset: work_offset)
+        let machine =
+            self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
         // the axes whose positions go to the spans below through a frame, or not at all
         // (none where no frame is on: most programs)
         let framed = if self.frames.on == 0 {
@@ -1618,14 +1695,16 @@ mod tests {
             "%\nG00 X-300.\nG51.1 X450.\n",
         );
         assert_eq!(state.0.machine.state.axis(b'X'), Dec::parse("-300."));
-        // an axis mirrored again about another point stands where the first put it: not
-        // known in the new mirror's coordinates, so its cancel leaves it unknown (a note)
+        // an axis mirrored again: no page says what that does (review 16b, finding 5), so
+        // the positions stand apart, with a note
         let again = "G00 X0 Y0\nG51.1 X0\nG00 X100.\nG51.1 X50.\nG50.1 X0\nG91 X10.\nG90";
         assert_eq!(at(fanuc.clone(), again, Rule::TravelExceeded), []);
         let notes = findings(fanuc, &program(again), Rule::NotFollowed);
         assert_eq!(notes.len(), 1, "{notes:?}");
         assert!(
-            notes[0].message.contains("until an absolute position"),
+            notes[0]
+                .message
+                .contains("a second mirror image of an axis already mirrored"),
             "{}",
             notes[0].message
         );
