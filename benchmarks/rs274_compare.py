@@ -34,8 +34,8 @@ rs274 stops at its first error, so a file is compared up to that line:
   lines before the stop: ``library`` (a file of ``o<name> sub`` definitions only: rs274 reads the
   definitions without running their bodies and then stops at the end of the file, which has no
   M2; nothing is compared), ``configuration`` (the program needs a configured machine: HAL pins
-  of ``#<_hal[...]>``, user M codes M100-M199, subroutines from the configuration's path, a probe
-  input, an axis the standalone interpreter does not have).
+  of ``#<_hal[...]>``, user M codes M100-M199, M200-M999 (a REMAP's), subroutines from the
+  configuration's path, a probe input, an axis the standalone interpreter does not have).
 - A file without M2/M30 that is not a library (a fragment) is a program fault: rs274 refuses it
   at the end of the file, and tapegate agrees when it reports TG114 anywhere.
 
@@ -173,6 +173,8 @@ SUB = re.compile(r"^\s*o\s*(<[^>]*>|\d+)\s*sub\b", re.I | re.M)
 CONFIGURATION = [
     (re.compile(r"Named parameter #<_hal\["), "HAL pins of a configured machine (#<_hal[...]>)"),
     (re.compile(r"Unknown m code used: M1\d\d"), "user M code M100-M199 of the configuration"),
+    (re.compile(r"M-code greater than 199: M[2-9]\d\d\b"),
+     "M200-M999, open to a REMAP of the configuration"),
     (re.compile(r"EOF in file.*seeking o-word|Unable to open file|not found in"),
      "subroutine from the configuration's subroutine path"),
     (re.compile(r"probe", re.I), "needs a probe input"),

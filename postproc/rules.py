@@ -387,8 +387,11 @@ SOURCES = {
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
              "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
              "decimal code such as G41.2); "
-             "checks.unknown_g = \"alarm\". M codes past M199 on LinuxCNC (rs274: \"M-code "
-             "greater than 199\"), which no configuration can remap. The SINUMERIK 840D in "
+             "checks.unknown_g = \"alarm\". M codes past M999 on LinuxCNC, which no "
+             "configuration can remap (M200-M999 are open to a REMAP: LinuxCNC Remap "
+             "manual, \"Currently unallocated M-codes\"; a TG307 warning, as rs274's "
+             "\"M-code greater than 199\" is for a machine whose configuration does not remap "
+             "it). The SINUMERIK 840D in "
              "Siemens mode has no G43/G44/G49 nor G80-G89 (Programming Manual Fundamentals, "
              "\"List of G functions\": ISO dialect mode's codes; it drills with CYCLE81-89).",
     "TG118": "FANUC/Haas: the block a word or GOTO names is searched by its sequence number "

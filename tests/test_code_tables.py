@@ -157,7 +157,7 @@ def test_the_linuxcnc_pairs_are_what_rs274_says(tmp_path: Path):
 # -- M code tables -----------------------------------------------------------------------------
 # Each family's M codes from its maker's list; an M code the list lacks is TG307, a warning
 # naming it and what that control does with it; an error only where the control refuses it
-# whatever its configuration (LinuxCNC past M199).
+# whatever its configuration (LinuxCNC past M999).
 
 
 def sinumerik(body: str) -> str:
@@ -237,12 +237,18 @@ def test_two_haas_m_codes_of_one_pair_are_tg304(block):
     assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
 
 
-def test_linuxcnc_refuses_m_codes_past_m199():
-    """rs274: "M-code greater than 199", whatever the configuration."""
-    hits = fired(linuxcnc("M200"), "linuxcnc", "TG306")
+def test_linuxcnc_refuses_m_codes_past_m999_and_leaves_m200_to_m999_to_a_remap():
+    """rs274 reads an M code past M199 where the configuration remaps it, and M200-M999 are
+    open to remapping (LinuxCNC Remap manual, "Currently unallocated M-codes"): a warning
+    naming REMAP, as for M10; past M999 no configuration makes it valid."""
+    hits = fired(linuxcnc("M1000"), "linuxcnc", "TG306")
     assert [(severity, line) for severity, line, _ in hits] == [("error", 2)]
-    assert "M199" in hits[0][2]
-    assert fired(linuxcnc("M199"), "linuxcnc", "TG306") == []
+    assert "M200-M999" in hits[0][2]
+    for code in ("M600", "M200", "M999", "M199"):
+        assert fired(linuxcnc(code), "linuxcnc", "TG306") == [], code
+        warned = fired(linuxcnc(code), "linuxcnc", "TG307")
+        assert [(severity, line) for severity, line, _ in warned] == [("warning", 2)], code
+        assert "REMAP" in warned[0][2]
 
 
 @pytest.mark.parametrize(("block", "refused"), [
@@ -254,8 +260,31 @@ def test_linuxcnc_m99_is_in_the_stopping_group(block, refused):
 
 
 @pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize(("code", "said"), [
+    ("M600", "remapped"),  # the remap's subroutine runs
+    ("M1000", "Unknown m code used: M1000"),  # a REMAP past M999 makes nothing valid
+])
+def test_rs274_reads_a_remapped_m_code_up_to_m999(tmp_path: Path, code, said):
+    """A configuration with ``REMAP=M600`` runs M600 (rs274 -i): it is the configuration's."""
+    name = code.lower()
+    (tmp_path / "subs").mkdir()
+    (tmp_path / "subs" / f"{name}.ngc").write_text(
+        f"o<{name}> sub\n(DEBUG, remapped)\no<{name}> endsub\nM2\n")
+    (tmp_path / "r.ini").write_text(
+        f"[RS274NGC]\nSUBROUTINE_PATH = {tmp_path / 'subs'}\n"
+        f"REMAP={code} modalgroup=10 ngc={name}\n[EMCIO]\n[TRAJ]\n")
+    (tmp_path / "prog.ngc").write_text(linuxcnc(f"{code}\nG0 X1"))
+    assert RS274 is not None
+    result = subprocess.run(env=rs274_env(), args=[RS274, "-i", "r.ini", "-g", "prog.ngc"],
+                            capture_output=True, text=True, timeout=30, cwd=tmp_path,
+                            stdin=subprocess.DEVNULL)
+    assert said in result.stdout + result.stderr
+    assert ("M-code greater than 199" in result.stdout + result.stderr) is False
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
 @pytest.mark.parametrize(("block", "said"), [
-    ("M200", "M-code greater than 199"),
+    ("M200", "M-code greater than 199"),  # no configuration remaps it here
     ("M100", "Unknown m code used"),
     ("M10", "Unknown m code used"),
     ("M99 M2", "Two m codes used from same modal group"),

@@ -286,12 +286,20 @@ def test_an_r_arc_after_an_offset_the_machine_holds_is_not_judged(tmp_path, body
     "M[1+2] S100\nG33 Z-1 K1",
     # G43.1 takes its offsets without a motion mode in force (enhance_block)
     "G1 X1\nG80\nG43.1 Z1",
+    # under G93 an F the checker cannot evaluate is the block's F (held12's thread subroutine)
+    "G93 G1 X1 F[75.0]\nX[1+1] Z-1 F[60/2]\nG94",
 ])
 def test_linuxcnc_programs_rs274_runs_have_no_error(tmp_path, body):
     text = program(body)
     assert errors(text) == []
     out = rs274_output(tmp_path, text)
     assert "PROGRAM_END" in out, out
+
+
+def test_g93_asks_the_block_after_an_expression_f_for_its_own(tmp_path):
+    text = program("G93 G1 X1 F[75.0]\nG1 X2\nG94")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG402", 4)]
+    assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)
 
 
 def test_g93_still_asks_a_g1_for_its_f_after_a_nurbs(tmp_path):

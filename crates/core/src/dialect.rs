@@ -1090,8 +1090,9 @@ pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
              any other M function to the PLC: the machine manufacturer's"
         }
         (Family::LinuxCnc, b'M') => {
-            "rs274 refuses it ('Unknown m code used') unless the configuration remaps it \
-             (REMAP) or, M100-M199, has a user M code program of that name in USER_M_PATH"
+            "rs274 refuses it ('Unknown m code used', past M199 'M-code greater than 199') \
+             unless the configuration remaps it (REMAP; M200-M999 are open to it) or, \
+             M100-M199, has a user M code program of that name in USER_M_PATH"
         }
         (Family::Okuma, b'M') => {
             "the profile's M code list holds only what the public sources name; the \
@@ -1101,11 +1102,17 @@ pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
     }
 }
 
-/// An M code the control refuses whatever its configuration: LinuxCNC's rs274 reads M codes
-/// up to M199 only ("M-code greater than 199"). The reason, or None.
+/// An M code the control refuses whatever its configuration. LinuxCNC's rs274 reads an M code
+/// past M199 only where the configuration remaps it (`read_m` looks the code up among the
+/// remaps before it refuses "M-code greater than 199"), and the codes open to remapping there
+/// are M200 to M999 (LinuxCNC Remap manual, "Currently unallocated M-codes", 2.7 to 2.9):
+/// M200-M999 are the configuration's, as M10 or M100-M199 are (TG307); rs274 2.9 refuses
+/// M1000 under a `REMAP=M1000` too. The reason, or None.
 pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
-    (family == Family::LinuxCnc && n > 199)
-        .then_some("rs274 reads M codes up to M199 only ('M-code greater than 199')")
+    (family == Family::LinuxCnc && n > 999).then_some(
+        "rs274 reads M codes up to M199, and M200-M999 where the configuration remaps them \
+         (REMAP), no others",
+    )
 }
 
 #[cfg(test)]

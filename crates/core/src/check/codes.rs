@@ -707,17 +707,29 @@ mod tests {
         assert!(plc[0].message.contains("to the PLC"), "{}", plc[0].message);
     }
 
-    /// LinuxCNC's rs274 reads M codes up to M199 only, whatever its configuration: TG306;
-    /// below, an M code its configuration may remap or provide is TG307.
+    /// LinuxCNC's rs274 reads no M code past M999, whatever its configuration: TG306; up to
+    /// M999, an M code its configuration may remap (M200-M999 too) or provide is TG307.
     #[test]
-    fn linuxcnc_m_codes_past_m199_alarm() {
+    fn linuxcnc_m_codes_past_m999_alarm() {
         let linuxcnc = || of_family(Family::LinuxCnc);
-        assert_eq!(at(linuxcnc(), "M200", Rule::CodeAlarms), [(2, 1)]);
-        assert_eq!(at(linuxcnc(), "M200", Rule::CodeNotInProfile), []);
-        assert_eq!(at(linuxcnc(), "M199", Rule::CodeAlarms), []);
-        assert_eq!(at(linuxcnc(), "M199", Rule::CodeNotInProfile), [(2, 1)]);
-        let found = findings(linuxcnc(), &program("M250"), Rule::CodeAlarms);
-        assert!(found[0].message.contains("M199"), "{}", found[0].message);
+        assert_eq!(at(linuxcnc(), "M1000", Rule::CodeAlarms), [(2, 1)]);
+        assert_eq!(at(linuxcnc(), "M1000", Rule::CodeNotInProfile), []);
+        for code in ["M999", "M600", "M200", "M199"] {
+            assert_eq!(at(linuxcnc(), code, Rule::CodeAlarms), [], "{code}");
+            assert_eq!(
+                at(linuxcnc(), code, Rule::CodeNotInProfile),
+                [(2, 1)],
+                "{code}"
+            );
+        }
+        let found = findings(linuxcnc(), &program("M1250"), Rule::CodeAlarms);
+        assert!(
+            found[0].message.contains("M200-M999"),
+            "{}",
+            found[0].message
+        );
+        let found = findings(linuxcnc(), &program("M600"), Rule::CodeNotInProfile);
+        assert!(found[0].message.contains("REMAP"), "{}", found[0].message);
         // another family's M200 is the machine builder's
         assert_eq!(at(of_family(Family::MacroB), "M200", Rule::CodeAlarms), []);
     }

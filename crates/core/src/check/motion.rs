@@ -125,7 +125,15 @@ impl Checker {
                     super::tooling::LinuxCncMotion::Known(Some(52 | 382..=385))
                 )
         };
-        if feed_motion && self.machine.state.feed_mode == 93 && !has_f && !rs274_rate() {
+        // an F the checker cannot evaluate (`F[75.0]`, `F#<rate>`) is the block's F all the
+        // same: rs274 runs `G93 G1 X1 F[75.0]` (held12's inverse-time thread subroutine)
+        let written_f = || facts.words.iter().any(|w| w.letter == b'F');
+        if feed_motion
+            && self.machine.state.feed_mode == 93
+            && !has_f
+            && !written_f()
+            && !rs274_rate()
+        {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
                 Rule::InverseTimeWithoutFeed,
