@@ -740,7 +740,7 @@ impl Checker {
             if value.is_none()
                 && !w.expression.is_empty()
                 && read_refusal.is_none()
-                && !self.linuxcnc_flow_seen
+                && self.linuxcnc_runs_surely()
             {
                 read_refusal = linuxcnc_read_expression(w);
             }
@@ -783,6 +783,11 @@ impl Checker {
         // in force after the block (interp_execute.cc's order)
         if codes.iter().any(|&c| c == 940 || c == 950) {
             self.linuxcnc_feed_rate = LinuxCncFeed::Zero;
+        }
+        // the feed mode known again where the main program sets it unconditionally; set in
+        // a condition or loop it may or may not be in force after it (review 16c, 17)
+        if self.open_definition.is_none() && codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
+            self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
         }
         if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
             let at = first[usize::from(b'F' - b'A')] as usize - 1;
@@ -1340,7 +1345,8 @@ impl Checker {
                     linuxcnc_no_feed(after.feed_mode, value(b'F'))
                 ));
             }
-            if after.feed_mode == 95 && !self.linuxcnc_mode_unsure {
+            if after.feed_mode == 95 && !self.linuxcnc_mode_unsure && self.open_definition.is_none()
+            {
                 return Some(
                     "Cannot probe with feed per rev mode (rs274ngc): a probe move feeds per \
                      minute (G94) or in inverse time (G93)"
@@ -1452,7 +1458,7 @@ impl Checker {
                 linuxcnc_no_feed(after.feed_mode, value(b'F'))
             ));
         }
-        if after.feed_mode == 93 && !self.linuxcnc_mode_unsure {
+        if after.feed_mode == 93 && !self.linuxcnc_mode_unsure && self.open_definition.is_none() {
             return Some(
                 "Cannot use inverse time feed with canned cycles (rs274ngc): G94 before the \
                  cycle"
@@ -2674,7 +2680,44 @@ mod tests {
                 &[],
             ),
             ("F100\no1 if [0]\nG93\no1 endif\nG81 X1 Y1 Z-1 R1 F10", &[]),
-            ("F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10", &[]),
+            (
+                "F10\no1 if [1]\nG1 X1\no1 else\nG95\no1 endif\nG38.2 Z-5",
+                &[],
+            ),
+            (
+                "o<tap> sub\nM73\nG95 F1 S100 M3\nG1 Z-1\no<tap> endsub\no<tap> call\n\
+                 F10\nG38.2 Z-5",
+                &[],
+            ),
+            // and judged again where the main program sets the mode unconditionally, after
+            // a definition, a call, a condition or M73 in the main program (rs274 refuses
+            // each: review 17)
+            (
+                "o<s> sub\nG1 X1\no<s> endsub\nG95 F0.1 S100 M3\nG38.2 Z-5",
+                &["8: Cannot probe with feed per rev mode"],
+            ),
+            (
+                "o<s> sub\nG1 X1\no<s> endsub\nG93\nG81 X1 Y1 Z-1 R1 F10",
+                &["8: Cannot use inverse time feed with canned cycles"],
+            ),
+            (
+                "o<s> sub\nG1 X1\no<s> endsub\no<s> call\nG95 F0.1 S100 M3\nG38.2 Z-5",
+                &["9: Cannot probe with feed per rev mode"],
+            ),
+            (
+                "F100\no1 if [0]\nG93\no1 endif\nG94\nG95 S100 M3 F1\nG38.2 Z-5",
+                &["10: Cannot probe with feed per rev mode"],
+            ),
+            (
+                "F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10",
+                &["7: Cannot use inverse time feed with canned cycles"],
+            ),
+            // a definition's G93 or G95 does not run where it stands: its endsub gives the
+            // mode before it back
+            (
+                "o<s> sub\nG95\no<s> endsub\nF10\nG81 X1 Y1 Z-1 R2\nG80",
+                &[],
+            ),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
@@ -2715,6 +2758,22 @@ mod tests {
             ("G0 X[1/0.5] Y[#1/2]", &[]),
             // after a condition or loop the line may not run: not judged (review 16c)
             ("o1 if [0]\nM[3.5]\nG0 X[1/0]\no1 endif", &[]),
+            // nor in a definition, which runs only if called (review 16c, 4)
+            ("o<s> sub\nM[3.5]\no<s> endsub", &[]),
+            // after the block's end the lines run unconditionally again: judged (review 17;
+            // an `if` in a definition opens nothing in the main program)
+            (
+                "o1 if [1]\nG1 X1\no1 endif\nM[3.5]",
+                &["7: Non integer value for integer"],
+            ),
+            (
+                "o1 repeat [2]\nG1 X1\no1 endrepeat\nX[1/0]",
+                &["7: Attempt to divide by zero"],
+            ),
+            (
+                "o<s> sub\no1 if [#1 GT 0]\nG1 X1\no1 endif\no<s> endsub\nM[3.5]",
+                &["9: Non integer value for integer"],
+            ),
             // M66's words, in convert_m's order
             (
                 "M66 P0 E0 L0",
