@@ -98,6 +98,17 @@ REFUSED = [
     ("G38.2 Z0 F10", "TG412", 3, "Start point too close to probe point"),
     ("G0 X1\nG38.2 X1 Y0", "TG412", 4, "Start point too close to probe point"),
     ("G91\nG38.4 X0 F10", "TG412", 4, "Start point too close to probe point"),
+    # rs274 holds doubles and compares them with ==: G91 sums that are the nearest double of
+    # the decimal sum end where the absolute word does (0.5 + 0.25), and an absolute move
+    # gives the nearest double again (review 16c, 3)
+    ("G91\nG0 Z0.5\nG0 Z0.25\nG90\nG38.2 Z0.75", "TG412", 7,
+     "Start point too close to probe point"),
+    ("G91\nG0 Z0.1\nG0 Z0.2\nG90\nG0 Z0.3\nG38.2 Z0.3", "TG412", 8,
+     "Start point too close to probe point"),
+    ("G91\nG0 Z0.1\nG0 Z0.2\nG92 Z0.3\nG90\nG38.2 Z0.3", "TG412", 8,
+     "Start point too close to probe point"),
+    ("G91\nG0 X0.5\nG0 X0.25\nG90\nG2 X0.75 Y0 R5", "TG412", 7,
+     "Current point same as end point of arc"),
     # a motion code with no axis word (interp_internal.cc enhance_block)
     ("G38.2 F10", "TG412", 3, "All axes missing with motion code"),
     ("M3 S100\nG33 K1", "TG412", 4, "All axes missing with motion code"),
@@ -245,6 +256,13 @@ ACCEPTED = [
     "#<i>=0\no1 while [#<i> LT 3]\no2 if [#<i> GT 0]\nG1 X#<prev>\no2 endif\n"
     "#<prev>=[#<i>*2]\n#<i>=[#<i>+1]\no1 endwhile",
     "M73\nG38.2 Z-1",
+    # 0.1 + 0.2 is 0.30000000000000004 to rs274, not the 0.3 of the word (review 16c, 3)
+    "G91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z0.3",
+    "G91\nG0 Z0.1\nG0 Z0.7\nG90\nG38.2 Z0.8",
+    "G91\nG0 Z0.1\nG0 Z0.2\nG0 Z-0.3\nG90\nG38.2 Z0",
+    "G20\nG0 X0 Y0 Z0\nG91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z0.3",
+    "G91\nG0 X0.1 Y0.1\nG0 X0.2 Y0.2\nG90\nG3 X0.3 Y0.3 R2",
+    "G91 G0 X0.1\nG0 X0.2\nG90 G2 X0.3 Y0 R5",
 ]
 
 

@@ -754,6 +754,9 @@ pub struct Checker {
     /// amount the checker does not follow (`tooling::linuxcnc_unsettles`); an absolute move
     /// on the axis knows it again. An R arc is not judged against such a start (TG412).
     linuxcnc_point_unsure: u32,
+    /// LinuxCNC: the doubles rs274 holds for X, Y and Z, where a G91 sum made them other
+    /// than the decimals' (`tooling::Double`, `Checker::linuxcnc_doubles`).
+    linuxcnc_double: [tooling::Double; 3],
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
@@ -938,6 +941,7 @@ impl Checker {
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
             linuxcnc_point_unsure: 0,
+            linuxcnc_double: Default::default(),
             linuxcnc_cycle_bottom: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_nurbs: tooling::Nurbs::default(),
@@ -1769,8 +1773,11 @@ impl Checker {
         let unsettles =
             self.config.family == Family::LinuxCnc && self.linuxcnc_refusals(b, &facts, before);
         self.feeds(b, before, &facts);
-        if self.config.family == Family::LinuxCnc && !unsettles {
-            self.linuxcnc_settle();
+        if self.config.family == Family::LinuxCnc {
+            self.linuxcnc_doubles(before);
+            if !unsettles {
+                self.linuxcnc_settle();
+            }
         }
         self.heidenhain_centre();
         self.turn_frames(b);

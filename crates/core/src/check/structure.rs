@@ -145,6 +145,7 @@ impl Checker {
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
+        self.linuxcnc_double = Default::default();
         self.linuxcnc_defined.clear();
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();

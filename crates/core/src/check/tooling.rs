@@ -21,6 +21,35 @@ pub(super) enum LinuxCncMotion {
     Unknown,
 }
 
+/// What rs274 holds, as a `double`, for X, Y or Z in the active coordinates, against the
+/// decimal the checker holds (`ModalState::position`): rs274 reads a word as the nearest double
+/// and adds a G91 word to the double it holds, so after `G91 Z0.1` / `Z0.2` it holds
+/// 0.30000000000000004, which `G90 G38.2 Z0.3` does not equal (interp_convert.cc
+/// `convert_probe` and interp_arc.cc `arc_data_r` compare with `==`; review 16c, finding 3).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(super) enum Double {
+    /// The double nearest the decimal: an absolute word's, and most sums.
+    #[default]
+    Nearest,
+    /// A sum of G91 words that the nearest double of the decimal is not.
+    Sum(f64),
+    /// Moved by a block whose arithmetic is not followed here (a cycle under G91): the two
+    /// refusals that compare it are not judged on this axis.
+    Unknown,
+}
+
+impl Double {
+    /// Whether rs274 finds the point it holds equal to the point `end` (a word's decimal, read
+    /// as the nearest double), the decimal held being `held`.
+    pub(super) fn equals(self, held: Dec, end: Dec) -> bool {
+        match self {
+            Double::Nearest => held.to_f64() == end.to_f64(),
+            Double::Sum(held) => held == end.to_f64(),
+            Double::Unknown => false,
+        }
+    }
+}
+
 /// rs274ngc's feed rate (its `settings->feed_rate`), which a probe move and a canned cycle
 /// read: zero at the start and after every G94 or G95 (interp_convert.cc `convert_feed_mode`),
 /// set by an F under G94 or G95 (`convert_feed_rate`), and left as it was by G93 and by an F
@@ -1050,6 +1079,60 @@ impl Checker {
         unsure
     }
 
+    /// LinuxCNC: after the block's rules, the double rs274 holds for X, Y and Z ([`Double`]):
+    /// an absolute word's is the nearest double; a G91 word of a straight move or an arc adds
+    /// to the double held before it, and where the sum is not the nearest double of the
+    /// decimal sum it is kept; an axis another block moves (a cycle under G91) is no longer
+    /// followed until an absolute word.
+    #[inline(never)]
+    pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
+        let state = &self.machine.state;
+        let plain = matches!(
+            self.linuxcnc_motion,
+            LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
+        ) && state.cycle.is_none();
+        for k in 0..3 {
+            let letter = crate::modal::AXES[k];
+            let (start, now) = (before.xyz[k], state.position[k]);
+            let Some(now) = now else {
+                self.linuxcnc_double[k] = Double::Nearest;
+                continue;
+            };
+            let taken = self.machine.taken();
+            let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
+            if !self.values.has(letter) || !moves && taken != Some(crate::modal::AxesTaken::Set) {
+                if start != Some(now) {
+                    self.linuxcnc_double[k] = Double::Unknown;
+                }
+                continue;
+            }
+            // (G92 X0.1 sets the point to the word's number, under G91 too)
+            if !state.incremental || !moves {
+                self.linuxcnc_double[k] = Double::Nearest;
+                continue;
+            }
+            let held = match (self.linuxcnc_double[k], start) {
+                (Double::Nearest, Some(start)) => start.to_f64(),
+                (Double::Sum(held), Some(_)) => held,
+                _ => {
+                    self.linuxcnc_double[k] = Double::Unknown;
+                    continue;
+                }
+            };
+            self.linuxcnc_double[k] = match self.values.get(letter) {
+                Some(step) if plain => {
+                    let sum = held + step.to_f64();
+                    if sum == now.to_f64() {
+                        Double::Nearest
+                    } else {
+                        Double::Sum(sum)
+                    }
+                }
+                _ => Double::Unknown,
+            };
+        }
+    }
+
     /// rs274ngc's refusal of a G5.2 block, a NURBS control point, in `convert_nurbs`' order:
     /// X without Y or Y without X; a P without X and Y but on the first point (a weight for
     /// the start); no P above zero (the point's weight; rs274's value for no P is -1) where
@@ -1110,20 +1193,22 @@ impl Checker {
         let after = &self.machine.state;
         // (a probe without an axis word is refused before it runs: "All axes missing")
         let axes = crate::modal::AXES;
-        axes.iter().any(|&a| words.has(a))
-            && axes.iter().all(|&a| {
-                if !words.has(a) {
-                    return true;
-                }
-                if after.incremental {
-                    return words.value(a).is_some_and(|d| d.is_zero());
-                }
-                unsure & bit(a) == 0
-                    && start.unknown & bit(a) == 0
-                    && !after.is_unknown(a)
-                    && start.axis(a).is_some()
-                    && start.axis(a) == after.axis(a)
-            })
+        axes.iter().any(|&a| words.has(a)) && axes.iter().all(|&a| {
+            if !words.has(a) {
+                return true;
+            }
+            if after.incremental {
+                return words.value(a).is_some_and(|d| d.is_zero());
+            }
+            let held = crate::modal::AXES[..3]
+                .iter()
+                .position(|&x| x == a)
+                .map_or(Double::Nearest, |k| self.linuxcnc_double[k]);
+            unsure & bit(a) == 0
+                && start.unknown & bit(a) == 0
+                && !after.is_unknown(a)
+                && matches!((start.axis(a), after.axis(a)), (Some(s), Some(e)) if held.equals(s, e))
+        })
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -2730,6 +2815,17 @@ mod tests {
         let cases: &[(&str, &[&str])] = &[
             // convert_probe: a probe that must trip ends where it starts
             ("G38.2 Z5 F10", &["4: Start point too close to probe point"]),
+            // rs274 holds doubles: 5 + 0.3 + 0.6 is not the double of 5.9, 5 + 0.1 + 0.2 is
+            // that of 5.3; an absolute word gives the nearest double again (review 16c, 3)
+            ("G91\nG0 Z0.3\nG0 Z0.6\nG90\nG38.2 Z5.9 F10", &[]),
+            (
+                "G91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z5.3 F10",
+                &["8: Start point too close to probe point"],
+            ),
+            (
+                "G91\nG0 Z0.3\nG0 Z0.6\nG90\nG0 Z5.9\nG38.2 Z5.9 F10",
+                &["9: Start point too close to probe point"],
+            ),
             (
                 "G91 G38.4 X0 Y0 F10",
                 &["4: Start point too close to probe point"],
