@@ -256,6 +256,9 @@ ACCEPTED = [
     "#<i>=0\no1 while [#<i> LT 3]\no2 if [#<i> GT 0]\nG1 X#<prev>\no2 endif\n"
     "#<prev>=[#<i>*2]\n#<i>=[#<i>+1]\no1 endwhile",
     "M73\nG38.2 Z-1",
+    # an M98 call of a FANUC-style subprogram (LinuxCNC 2.9) may set another feed mode
+    # (review 17: its G94 ran, the probe was refused for the caller's G95)
+    "G95 F0.1 S100 M3\nM98 P1000\nG38.2 Z-5\nM2\nO1000\nG94 F100\nM99",
     # 0.1 + 0.2 is 0.30000000000000004 to rs274, not the 0.3 of the word (review 16c, 3)
     "G91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z0.3",
     "G91\nG0 Z0.1\nG0 Z0.7\nG90\nG38.2 Z0.8",

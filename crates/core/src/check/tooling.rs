@@ -818,6 +818,10 @@ impl Checker {
         if self.open_definition.is_none() && codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
             self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
         }
+        // (LinuxCNC 2.9's M98 runs a FANUC-style subprogram, which may set another mode)
+        if ms.contains(&98) {
+            self.linuxcnc_mode_unsure = true;
+        }
         if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
             let at = first[usize::from(b'F' - b'A')] as usize - 1;
             self.linuxcnc_feed_rate = match self.readable[at] {
@@ -2796,6 +2800,12 @@ mod tests {
             (
                 "F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10",
                 &["7: Cannot use inverse time feed with canned cycles"],
+            ),
+            // nor after an M98 call of a FANUC-style subprogram (LinuxCNC 2.9), whose G94
+            // rs274 runs (review 17)
+            (
+                "G95 F0.1 S100 M3\nM98 P1000\nG38.2 Z-5\nM2\nO1000\nG94 F100\nM99",
+                &[],
             ),
             // a definition's G93 or G95 does not run where it stands: its endsub gives the
             // mode before it back
