@@ -256,6 +256,9 @@ ACCEPTED = [
     "#<i>=0\no1 while [#<i> LT 3]\no2 if [#<i> GT 0]\nG1 X#<prev>\no2 endif\n"
     "#<prev>=[#<i>*2]\n#<i>=[#<i>+1]\no1 endwhile",
     "M73\nG38.2 Z-1",
+    # a G1 under G93 sets rs274's feed rate to its length times F (interp_inverse.cc): the
+    # probe after it under G93 has one (review 17, found by rs274_random.py --flow, seed 5)
+    "G95\nG93 G1 X1 F2\nG91 G0 X0\nG38.2 X1 Y0",
     # an M98 call of a FANUC-style subprogram (LinuxCNC 2.9) may set another feed mode
     # (review 17: its G94 ran, the probe was refused for the caller's G95)
     "G95 F0.1 S100 M3\nM98 P1000\nG38.2 Z-5\nM2\nO1000\nG94 F100\nM99",

@@ -829,6 +829,23 @@ impl Checker {
                 Some(_) => LinuxCncFeed::Set,
                 None => LinuxCncFeed::Unknown,
             };
+        } else if first[usize::from(b'F' - b'A')] != 0 {
+            // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
+            // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
+            // runs `G95` / `G93 G1 X1 F2` / `G38.2 X1 Y0`)
+            let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c)).or(
+                match self.linuxcnc_motion {
+                    LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+                    _ => None,
+                },
+            );
+            if matches!(motion, Some(10 | 20 | 30)) {
+                let at = first[usize::from(b'F' - b'A')] as usize - 1;
+                self.linuxcnc_feed_rate = match self.readable[at] {
+                    Some(f) if !f.is_zero() => LinuxCncFeed::Set,
+                    _ => LinuxCncFeed::Unknown,
+                };
+            }
         }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
@@ -2801,6 +2818,8 @@ mod tests {
                 "F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10",
                 &["7: Cannot use inverse time feed with canned cycles"],
             ),
+            // a G1 under G93 sets rs274's feed rate to its length times F (review 17)
+            ("G95\nG93 G1 X1 F2\nG91 G0 X0\nG38.2 X1 Y0", &[]),
             // nor after an M98 call of a FANUC-style subprogram (LinuxCNC 2.9), whose G94
             // rs274 runs (review 17)
             (
