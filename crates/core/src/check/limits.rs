@@ -661,7 +661,8 @@ impl Checker {
     /// SINUMERIK ISO dialect's `G50.1 X... Y... Z...`; review 15, finding 2): each of them is
     /// taken back as a rotation's axes are at its cancel ([`Checker::take_back`]), and the
     /// mirror ends with the last. A G50.1 that names no axis is taken to end them all (no
-    /// page at hand says otherwise).
+    /// page at hand says otherwise). A Haas's G100 is read the same way (96-8000, G101: the
+    /// mirror selected per axis).
     fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
         let named = Self::mirror_axes(b);
         let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
