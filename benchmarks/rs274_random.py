@@ -1,6 +1,6 @@
 """Random short LinuxCNC programs, read by ``rs274 -g`` and ``tapegate check -p linuxcnc``.
 
-    .venv/bin/python benchmarks/rs274_random.py [--seed N] [--programs N] [--show]
+    .venv/bin/python benchmarks/rs274_random.py [--seed N] [--programs N] [--show] [--flow]
 
 Each program is the comparison's head (G21 G17 G90 F100, G0 X0 Y0 Z0), two to six blocks drawn
 at random from ``SNIPPETS`` (the forms of the LinuxCNC refusals that follow rs274's own state:
@@ -45,11 +45,27 @@ SNIPPETS = [
 ]
 
 
+# With ``--flow``, also these, each whole (a block, a definition or a sum of increments): the
+# lines that run only when called or when a condition holds, the feed mode set there, and the
+# doubles rs274 adds under G91 (review 16c, findings 1-4; review 17). The default draws are
+# unchanged, so that the counts of a seed stay comparable across stops.
+FLOW_SNIPPETS = [
+    "o2 if [0]\nG95\no2 endif", "o3 if [1]\nG93\no3 endif", "o4 if [0]\nM[3.5]\no4 endif",
+    "o5 repeat [2]\nG1 X1\no5 endrepeat", "o6 do\nG0 Z1\no6 while [0]",
+    "o<t> sub\nG95\no<t> endsub", "o<u> sub\nM73\nG93\no<u> endsub\no<u> call",
+    "o<v> sub\n#<d> = 1\no<v> endsub", "G0 X#<d>", "M73",
+    "G91 G0 Z0.1\nG0 Z0.2\nG90", "G91 G0 Z0.5\nG0 Z0.25\nG90", "G38.2 Z0.3", "G38.2 Z0.75",
+    "G91 G0 X0.1\nG0 X0.2\nG90", "G2 X0.3 Y0 R5", "G81 X1 Y1 Z-1 R2\nG80",
+]
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--programs", type=int, default=300)
     parser.add_argument("--show", action="store_true", help="list each disagreement")
+    parser.add_argument("--flow", action="store_true",
+                        help="draw from FLOW_SNIPPETS too (conditions, definitions, G91 sums)")
     args = parser.parse_args()
     if shutil.which("rs274") is None:
         print("rs274 is not installed")
@@ -60,7 +76,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as home:
         path = Path(home) / "program.ngc"
         for _ in range(args.programs):
-            body = [rng.choice(SNIPPETS) for _ in range(rng.randint(2, 6))]
+            pool = SNIPPETS + FLOW_SNIPPETS if args.flow else SNIPPETS
+            body = [rng.choice(pool) for _ in range(rng.randint(2, 6))]
             text = HEAD + "\n".join(body) + "\nM2\n"
             if "o<s> call" in text:
                 text += "o<s> sub\no<s> endsub\n"

@@ -179,6 +179,9 @@ class Converter:
             "parameters": parameters,
             "source_detected": options.source is None,
             "source_units_given": options.from_units is not None,
+            # a word the source reads in lower case, written for a target that reads only
+            # upper case (review 16c, finding 5)
+            "upper_case": self.source.dialect.lowercase and not self.target.dialect.lowercase,
             "read_units": self.read_units,
         }
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
+import sys
 
 import pytest
 
@@ -453,3 +454,43 @@ def test_a_haas_orientation_angle_is_refused_and_plain_m19_carried():
     e = refused(FANUC + "M19 R45.5\nM30\n", "haas-mill", "okuma-mill")
     assert e.message.startswith("R45.5: a Haas's spindle orientation angle")
     assert "M19\n" in convert(FANUC + "M19\nM30\n", "haas-mill", "fanuc-mill")
+
+
+# -- letter case: LinuxCNC and SINUMERIK read lower case, a FANUC or Haas does not -------------
+
+
+@pytest.mark.parametrize("source, head", [("linuxcnc", NGC), ("sinumerik-840d", SIN)])
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill"])
+def test_a_lower_case_word_is_written_in_upper_case_for_a_control_that_reads_none(
+        source, head, target):
+    """Review 16c, finding 5: `g1 x2.5 y-.5 f100` was carried as written to a FANUC, which
+    alarms on a lower-case address (TG101 on the output). The word is the upper-case one to
+    the source, and written so; a comment keeps its text, and the proof holds it the same
+    word."""
+    from postproc.check import check_text
+
+    text = f"{head}g0 x0 y0 z5. (move up)\ng1 x2.5 y-.5 f100\nm30\n"
+    out = convert(text, source, target)
+    assert "G0 X0 Y0 Z5. (move up)\nG1 X2.5 Y-.5 F100" in out and "\nM30" in out, out
+    lower = [f for f in check_text(out, load_profile(target)) if f.rule == "TG101"]
+    assert lower == []
+
+
+def test_a_lower_case_expression_is_written_in_upper_case_and_verified(tmp_path):
+    """`x[#1*2] y[sin[30]]`: the function's name too (a FANUC reads `SIN` alone); `--verify`
+    reads the output as the same words."""
+    source = tmp_path / "p.ngc"
+    source.write_text("G21 G90 G17\ng0 x0 y0 z5.\n#1=2\ng1 x[#1*2] y[sin[30]] f100\nm2\n")
+    target = tmp_path / "p.nc"
+    run = subprocess.run([sys.executable, "-m", "tapegate", "convert", str(source),
+                          "-o", str(target), "--from", "linuxcnc", "--to", "fanuc-mill",
+                          "--verify"],
+                         capture_output=True, text=True, timeout=120, env=os.environ.copy())
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "verified" in run.stdout
+    assert "G1 X[#1*2] Y[SIN[30]] F100" in target.read_text()
+
+
+def test_a_target_that_reads_lower_case_keeps_the_words_as_written():
+    text = f"{NGC}g0 x0 y0 z5.\ng1 x2.5 f100\nm2\n"
+    assert "g1 x2.5 f100" in convert(text, "linuxcnc", "linuxcnc")

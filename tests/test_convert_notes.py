@@ -64,6 +64,7 @@ def test_notes_without_a_line_are_said_once_per_conversion():
                            {"units": None, "rounding": "half-even", "spacing": "keep",
                             "allow_unconverted": False, "parameters": None,
                             "source_detected": False, "source_units_given": False,
+                            "upper_case": False,
                             "read_units": []}, None,
                            "p.ngc")
     core.convert_lines("G21\nG1 X1. Q1.\nG1 X2. Q2.", 0, LINUXCNC.dialect.flags)

@@ -98,6 +98,17 @@ REFUSED = [
     ("G38.2 Z0 F10", "TG412", 3, "Start point too close to probe point"),
     ("G0 X1\nG38.2 X1 Y0", "TG412", 4, "Start point too close to probe point"),
     ("G91\nG38.4 X0 F10", "TG412", 4, "Start point too close to probe point"),
+    # rs274 holds doubles and compares them with ==: G91 sums that are the nearest double of
+    # the decimal sum end where the absolute word does (0.5 + 0.25), and an absolute move
+    # gives the nearest double again (review 16c, 3)
+    ("G91\nG0 Z0.5\nG0 Z0.25\nG90\nG38.2 Z0.75", "TG412", 7,
+     "Start point too close to probe point"),
+    ("G91\nG0 Z0.1\nG0 Z0.2\nG90\nG0 Z0.3\nG38.2 Z0.3", "TG412", 8,
+     "Start point too close to probe point"),
+    ("G91\nG0 Z0.1\nG0 Z0.2\nG92 Z0.3\nG90\nG38.2 Z0.3", "TG412", 8,
+     "Start point too close to probe point"),
+    ("G91\nG0 X0.5\nG0 X0.25\nG90\nG2 X0.75 Y0 R5", "TG412", 7,
+     "Current point same as end point of arc"),
     # a motion code with no axis word (interp_internal.cc enhance_block)
     ("G38.2 F10", "TG412", 3, "All axes missing with motion code"),
     ("M3 S100\nG33 K1", "TG412", 4, "All axes missing with motion code"),
@@ -125,6 +136,25 @@ REFUSED = [
     ("G0 X#<x> #<x>=1", "TG412", 3, "Named parameter #<x> not defined"),
     ("o<s> sub\n#<q> = 1\no<s> endsub\no<s> call\nG0 X#<q>", "TG412", 7,
      "Named parameter #<q> not defined"),
+    # after a definition, a call, a closed condition or loop, or M73 in the main program,
+    # the lines run unconditionally again and are judged (review 17: one o-word had turned
+    # these refusals off for the rest of the file)
+    ("o<s> sub\nG1 X1\no<s> endsub\nG95 F0.1 S100 M3\nG38.2 Z-5", "TG412", 7,
+     "Cannot probe with feed per rev mode"),
+    ("o<s> sub\nG1 X1\no<s> endsub\nG93\nG81 X1 Y1 Z-1 R1 F10", "TG412", 7,
+     "Cannot use inverse time feed with canned cycles"),
+    ("o<s> sub\nG1 X1\no<s> endsub\no<s> call\nG95 F0.1 S100 M3\nG38.2 Z-5", "TG412", 8,
+     "Cannot probe with feed per rev mode"),
+    ("M73\nG93\nG81 X1 Y1 Z-1 R1 F10", "TG412", 5,
+     "Cannot use inverse time feed with canned cycles"),
+    ("o1 if [0]\nG93\no1 endif\nG94\nG95 S100 M3 F1\nG38.2 Z-5", "TG412", 8,
+     "Cannot probe with feed per rev mode"),
+    ("o<s> sub\no1 if [#1 GT 0]\nG1 X1\no1 endif\no<s> endsub\nM[3.5]", "TG412", 8,
+     "Non integer value for integer"),
+    ("o1 if [1]\nG1 X1\no1 endif\nM[3.5]", "TG412", 6, "Non integer value for integer"),
+    ("o1 repeat [2]\nG1 X1\no1 endrepeat\nG0 X[1/0]", "TG412", 6,
+     "Attempt to divide by zero"),
+    ("o1 do\nG1 X1\no1 while [0]\nG0 X#<u>", "TG412", 6, "Named parameter #<u> not defined"),
     # G43 takes no axis word without a motion mode (G43.1 and G43.2 do: enhance_block)
     ("G80\nG43 H1 Z1", "TG411", 4, "Z with no motion mode in force"),
     # NURBS (interp_convert.cc convert_nurbs): each point's weight, the order, G5.2 first
@@ -213,6 +243,32 @@ ACCEPTED = [
     "G5.2 P1\nX1 Y1 P1\nX2 Y0 P1\nG5.3\nG1 X0",
     "#<x> = [#<x> + 1]\n#<y>=1 G0 X#<y>\n#<z> = EXISTS[#<nope>]\nG0 X#< X >",
     "o<s> sub\nG0 X#<inner>\no<s> endsub\nG0 X1",
+    # lines that may not run, or run only when called, are not judged (review 16c, 1, 2, 4)
+    "o<tap> sub\nG95 F1 S100 M3\nG1 Z-1\no<tap> endsub\nG38.2 Z-5\no<tap> call",
+    "o<tap> sub\nM73\nG95 F1 S100 M3\nG1 Z-1\no<tap> endsub\no<tap> call\nG38.2 Z-5",
+    "o<c> sub\nG93 G1 X1 F1\no<c> endsub\nG81 X1 Y1 Z-1 R2\nG80\no<c> call",
+    "o<s> sub\nG95\no<s> endsub\nF10\nG81 X1 Y1 Z-1 R2\nG80",
+    "o1 if [0]\nG95\no1 endif\nG38.2 Z-5",
+    "o1 if [1]\nG1 X1\no1 else\nG95\no1 endif\nG38.2 Z-5",
+    "o1 if [0]\nG93\no1 endif\nG81 X1 Y1 Z-1 R2\nG80",
+    "o<s> sub\nM[3.5]\no<s> endsub",
+    "o1 if [0]\nM[3.5]\no1 endif",
+    "#<i>=0\no1 while [#<i> LT 3]\no2 if [#<i> GT 0]\nG1 X#<prev>\no2 endif\n"
+    "#<prev>=[#<i>*2]\n#<i>=[#<i>+1]\no1 endwhile",
+    "M73\nG38.2 Z-1",
+    # a G1 under G93 sets rs274's feed rate to its length times F (interp_inverse.cc): the
+    # probe after it under G93 has one (review 17, found by rs274_random.py --flow, seed 5)
+    "G95\nG93 G1 X1 F2\nG91 G0 X0\nG38.2 X1 Y0",
+    # an M98 call of a FANUC-style subprogram (LinuxCNC 2.9) may set another feed mode
+    # (review 17: its G94 ran, the probe was refused for the caller's G95)
+    "G95 F0.1 S100 M3\nM98 P1000\nG38.2 Z-5\nM2\nO1000\nG94 F100\nM99",
+    # 0.1 + 0.2 is 0.30000000000000004 to rs274, not the 0.3 of the word (review 16c, 3)
+    "G91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z0.3",
+    "G91\nG0 Z0.1\nG0 Z0.7\nG90\nG38.2 Z0.8",
+    "G91\nG0 Z0.1\nG0 Z0.2\nG0 Z-0.3\nG90\nG38.2 Z0",
+    "G20\nG0 X0 Y0 Z0\nG91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z0.3",
+    "G91\nG0 X0.1 Y0.1\nG0 X0.2 Y0.2\nG90\nG3 X0.3 Y0.3 R2",
+    "G91 G0 X0.1\nG0 X0.2\nG90 G2 X0.3 Y0 R5",
 ]
 
 

@@ -1158,6 +1158,24 @@ def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis():
     assert plan(ended, 12, haas).preamble[-2:] == ["G00 X3. Y2.", "G01 Z-0.1 F10."]
 
 
+def test_a_haas_g101_naming_no_axis_refuses_the_restart_until_g100():
+    """Review 17: `G101` with no axis word set nothing in the walk, and a restart after it was
+    planned as if no mirror were on; the check takes it as the mirror of X, Y and Z (no page at
+    hand says what it mirrors), and so does the walk now, until a G100 ends them."""
+    haas = load_profile("haas-mill")
+    text = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y1.\n"
+            "N5 G43 H1 Z1.\nN6 G101\nN7 G01 Z-0.1 F10.\nN8 X2.\nN20 Y3.\nN30 G00 Z1.\n"
+            "N40 G100\nM30\n%\n")  # N20 is line 11
+    assert refusal(text, 11, haas) == ("cannot restart here: G101 (mirror image) from line 8 "
+                                       "is in force and the preamble cannot restore it")
+    # a G100 naming no axis ends them all; Z, moved under the mirror, is lost until given
+    ended = text.replace("N8 X2.\n", "N8 X2.\nN9 G100\nN10 G00 X4. Y5.\n")
+    assert "the position of Z is not known here (line 11: G100 ends the mirror image" in \
+        refusal(ended, 13, haas)
+    given = ended.replace("N10 G00 X4. Y5.\n", "N10 G00 X4. Y5.\nN11 G01 Z-0.2\n")
+    assert plan(given, 14, haas).preamble[-2:] == ["G00 X4. Y5.", "G01 Z-0.2 F10."]
+
+
 def test_an_okuma_mill_s_g69_words_are_not_known_rather_than_moves():
     """Review 16b, 6: the words of an Okuma mill's G69 (3-D conversion; no page at hand gives
     them) were read as moves under the conversion, and the refusal blamed the G68 cancel for

@@ -423,6 +423,47 @@ def test_a_haas_mirror_s_words_are_no_move_and_its_cancel_is_per_axis() -> None:
         (9, "X spans 61 (from -29 to 32)")]
 
 
+@pytest.mark.parametrize(("body", "expected"), [
+    # review 16b, 2b: G100 X0 ends X's mirror alone; Y17.5 under the mirror of Y is Y-17.5,
+    # 32.5 from the Y15. before it (it stood apart from it, and the over-travel was missed)
+    ("G00 X0 Y15.\nG101 X0 Y0\nG00 X1. Y1.\nG100 X0\nG00 Y17.5\nG100 Y0",
+     [(9, "Y spans 32.5 (from -17.5 to 15)")]),
+    # about the work zero whatever the word's value, under G91 too: X31.5 is X-31.5
+    ("G00 X29. Y0\nG101 X5.\nG00 X31.5\nG100 X0", [(7, "X spans 60.5 (from -31.5 to 29)")]),
+    ("G00 X29. Y0\nG91 G101 X0\nG90 G00 X31.5\nG100 X0",
+     [(7, "X spans 60.5 (from -31.5 to 29)")]),
+    # a second G101 of X leaves it mirrored as it was (Settings 45-48: one setting an axis)
+    ("G00 X-29. Y0\nG101 X0\nG00 X-29.5\nG101 X0\nG00 X-31.5\nG100 X0",
+     [(9, "X spans 60.5 (from -29 to 31.5)")]),
+    # the true span under the mirror is no error: Y15. there is Y-15., 2.5 from Y-17.5
+    ("G00 X0 Y-15.\nG101 X0 Y0\nG00 X1. Y15.\nG100 X0\nG00 Y17.5\nG100 Y0", []),
+    # after a G52 the work zero is not known in the program's coordinates: apart, not
+    # compared
+    ("G52 X1.\nG00 X29. Y0\nG101 X0\nG00 X31.5\nG100 X0", []),
+])
+def test_a_haas_mirror_is_about_the_work_zero_axis_by_axis(
+        body: str, expected: list[tuple[int, str]]) -> None:
+    """Review 17 (16b, 2b left open): a Haas's G101 mirrors the axes it names about the work
+    coordinate zero point (96-8000, p. 201), exactly, as G51.1 X0 does: its positions are
+    taken back through it and compared with those before it, a partial G100 included."""
+    found, _ = check(f"G20 G54\n{body}", load_profile("haas-mill"))
+    assert [(f.line, f.message.split(",")[0]) for f in found] == expected, found
+
+
+def test_g100_and_g101_are_no_mirror_on_a_fanuc() -> None:
+    """Review 17: a FANUC's code list has no G100/G101 (the control alarms, or a parameter
+    makes it a macro call): `G101 X0` mirrored nothing, and X780. after it, 1530 from X-750.,
+    was left apart from it (a missed over-travel). Such a code is read as any code the table
+    lacks."""
+    fanuc = load_profile("fanuc-mill")  # X -762..762 mm
+    found, _ = check("G21 G54\nG00 X-750. Y0\nG101 X0\nG00 X780.", fanuc)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (7, "X spans 1530 (from -750 to 780)")]
+    found, _ = check("G21 G54\nG00 X-750. Y0\nG100 X0\nG00 X780.", fanuc)
+    assert [(f.line, f.message.split(",")[0]) for f in found] == [
+        (7, "X spans 1530 (from -750 to 780)")]
+
+
 def test_an_okuma_mill_s_g53_to_g59_are_length_offsets_not_coordinates() -> None:
     """Review 16b, 4: on an OSP mill G53 cancels the tool length offset and G54-G59 select it
     by axis (OSP List of G Codes; the work system is G15 H). G53's Y390. was taken for a

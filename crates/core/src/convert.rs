@@ -185,6 +185,10 @@ pub struct ConvertConfig {
     /// not taken from its profile: a control that selects them by a machine parameter (the OSP
     /// lathe) then reads the program in them with nothing left to say.
     pub src_units_given: bool,
+    /// The source reads lower case (LinuxCNC, SINUMERIK) and the target does not (a FANUC
+    /// alarms on `g1 x2.5`: TG101): a word written in lower case is written in upper case,
+    /// which both read as the same word (review 16c, finding 5).
+    pub upper_case: bool,
     /// The target control keeps the units a program selected through its M02/M30
     /// (`ModalSettings::units_kept_at_end`; the profile says, `Profile.units_kept_at_end`).
     pub target_units_kept: bool,
@@ -3077,6 +3081,9 @@ impl Converter {
             }
         }
         self.follow_units();
+        if self.c.upper_case {
+            self.upper_case(b, &mut new, &mut changed);
+        }
         if new.is_none()
             && insert.is_none()
             && self.c.spacing == Spacing::Keep
@@ -3133,6 +3140,38 @@ impl Converter {
         self.replacements = replacements;
         self.codes = (gs, ms);
         Ok(Some(line))
+    }
+
+    /// The block's words written in lower case (`g1 x[sin[30]]`), in upper case for a target
+    /// that reads no lower case ([`ConvertConfig::upper_case`]): a lower-case address or
+    /// function name is the upper-case one to the source (LinuxCNC reads a line in lower
+    /// case, SINUMERIK does not tell them apart), and a FANUC or Haas reads only upper case
+    /// (TG101). Comments are kept as written (any text there); statements are no matter here:
+    /// between control families they are refused.
+    fn upper_case(
+        &mut self,
+        b: &BlockIn<'_>,
+        new: &mut Option<Vec<Option<Vec<u8>>>>,
+        changed: &mut Vec<Option<Vec<u8>>>,
+    ) {
+        if !b
+            .words
+            .iter()
+            .any(|w| w.token.iter().any(u8::is_ascii_lowercase))
+        {
+            return;
+        }
+        let replacements = new.get_or_insert_with(|| {
+            let mut all = std::mem::take(changed);
+            all.resize(b.words.len(), None);
+            all
+        });
+        for (slot, w) in replacements.iter_mut().zip(b.words) {
+            let token = slot.as_deref().unwrap_or(w.token);
+            if token.iter().any(u8::is_ascii_lowercase) {
+                *slot = Some(token.to_ascii_uppercase());
+            }
+        }
     }
 
     /// A G code the target reads in another modal group than the source
@@ -7195,6 +7234,7 @@ mod tests {
             fanuc_haas: None,
             source_detected: false,
             src_units_given: false,
+            upper_case: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,

@@ -232,6 +232,9 @@ pub struct ConvertOptions {
     /// The units the source machine is set to were given (`--from-units`), not taken from
     /// its profile.
     pub source_units_given: bool,
+    /// [`crate::convert::ConvertConfig::upper_case`]: the source's dialect reads lower case,
+    /// the target's does not.
+    pub upper_case: bool,
 }
 
 impl Machine {
@@ -271,6 +274,7 @@ impl Machine {
             },
             source_detected: options.source_detected,
             src_units_given: options.source_units_given,
+            upper_case: options.upper_case,
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
             out_increment: target.increment_digits,
@@ -788,6 +792,7 @@ mod tests {
             read_units: Vec::new(),
             source_detected: false,
             source_units_given: false,
+            upper_case: false,
         }
     }
 

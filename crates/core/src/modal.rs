@@ -468,8 +468,12 @@ impl ModalSettings {
             // named axes stand in program coordinates is then not known)
             (Family::MacroB | Family::LinuxCnc, 10) => Some(Unknown),
             // G22 I J K: the stored stroke check's limits; Haas G101/G100 X: the axes whose
-            // mirror image starts or ends (96-8000, G101), no move
-            (Family::MacroB, 22 | 65 | 66 | 100 | 101 | 107) => Some(Data),
+            // mirror image starts or ends (96-8000, G101), no move; on a control whose table
+            // has no such code (a FANUC: an alarm, or a macro call by parameter) they are read
+            // as any code it lacks (review 17)
+            (Family::MacroB, 22 | 65 | 66 | 100 | 101 | 107) => {
+                (!(100..=101).contains(&g) || !self.lacks(g)).then_some(Data)
+            }
             (Family::MacroB, 51 | 68) if self.centre_codes => Some(Data),
             (Family::MacroB, 70..=76) if lathe => Some(Data),
             (Family::MacroB, 92) if !lathe => Some(Set),

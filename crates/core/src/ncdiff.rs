@@ -554,7 +554,7 @@ impl Comparer {
             (InStatement::Number, InStatement::Number)
                 if o.same_text
                     && wa.factor == wb.factor
-                    && wa.written != wb.written
+                    && !wa.written.eq_ignore_ascii_case(&wb.written)
                     && wa.written.contains(&b'.') =>
             {
                 return Some(change(ChangeKind::Written, None, None, None));
@@ -563,7 +563,11 @@ impl Comparer {
         }
         let (Some((mut va, inc_a, len_a)), Some((mut vb, inc_b, len_b))) = (view(wa), view(wb))
         else {
-            if wa.token == wb.token && wa.value.is_none() == wb.value.is_none() {
+            // (a letter's case is no difference: a control that reads lower case reads it as
+            // the upper-case letter, and `convert` writes a lower-case word in upper case for
+            // one that does not: review 16c, finding 5)
+            if wa.token.eq_ignore_ascii_case(&wb.token) && wa.value.is_none() == wb.value.is_none()
+            {
                 return None; // the same text; a number neither reads, written the same
             }
             return Some(change(ChangeKind::Changed, None, None, None));
@@ -572,7 +576,7 @@ impl Comparer {
             return None; // G20 and G21 alike: their meaning is in every value after them
         }
         if o.same_text
-            && wa.written != wb.written
+            && !wa.written.eq_ignore_ascii_case(&wb.written)
             && wa.value == wb.value
             && wa.factor == wb.factor
             && wa.form.is_some()

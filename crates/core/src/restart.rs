@@ -1005,10 +1005,16 @@ impl Walk {
                 .iter()
                 .filter_map(|&(letter, _)| axis_index(letter))
                 .fold(0u16, |all, i| all | bit(i));
-            if self.haas_mill() && g == 101 && !axes.is_empty() {
-                // Haas G101 X0: the mirror image of X (Haas mill operator's manual, G101)
+            if self.haas_mill() && g == 101 {
+                // Haas G101 X0: the mirror image of X (Haas mill operator's manual, G101); a
+                // G101 naming no axis is in no page at hand: taken to mirror them all, as the
+                // check takes it, until a G100 (review 17: the restart was planned under it)
                 self.set_unrestored("101", line, "G101 (mirror image)".into());
-                self.haas_mirrored |= named;
+                self.haas_mirrored |= if named == 0 {
+                    bit(0) | bit(1) | bit(2)
+                } else {
+                    named
+                };
             }
             if self.haas_mill() && g == 100 {
                 let was = self.unrestored.iter().any(|(k, _, _)| k == "101");

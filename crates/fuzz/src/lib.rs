@@ -423,6 +423,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_data_input: true,
         source_detected: false,
         src_units_given: false,
+        upper_case: false,
         target_units_kept: true,
         out_formats,
         dwell_formats: dwell,

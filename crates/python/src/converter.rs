@@ -42,6 +42,7 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
         parameters: parameters.map(|classes| Arc::clone(&classes.inner)),
         source_detected: item(c, "source_detected")?,
         source_units_given: item(c, "source_units_given")?,
+        upper_case: item(c, "upper_case")?,
         read_units: read_units
             .into_iter()
             .map(|(program, name, u)| (program, name, units(&u)))

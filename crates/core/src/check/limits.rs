@@ -38,10 +38,10 @@ impl Travel {
 /// The frames in force (TG601's spans under them, [`Checker::turn_frames`]).
 #[derive(Debug, Clone, Default)]
 pub(super) struct Frames {
-    /// A bit each: polar G16 (1), scaling G51 (2), rotation G68 (4), Haas G268 (8), Haas
-    /// mirror G101 (16), mirror G51.1 (32). A cancel (G15, G50, G69, G269, G100, G50.1) ends
-    /// its own frame only, G50.1 the mirror of the axes it names ([`Checker::mirror_off`]).
-    /// An Okuma mill's codes set the same bits ([`frame_bits`]).
+    /// A bit each: polar G16 (1), scaling G51 (2), rotation G68 (4), Haas G268 (8), (16 no
+    /// longer used), mirror G51.1 or a Haas's G101 (32). A cancel (G15, G50, G69, G269,
+    /// G50.1, G100) ends its own frame only, G50.1 and G100 the mirror of the axes they name
+    /// ([`Checker::mirror_off`]). An Okuma mill's codes set the same bits ([`frame_bits`]).
     on: u8,
     /// The one rotation or scaling in force whose words say exactly what it does: the
     /// positions under it are taken back to the coordinates before it.
@@ -58,10 +58,12 @@ pub(super) struct Frames {
     /// The axes (bit `i` for `AXES[i]`) a mirror image G51.1 not known exactly here
     /// mirrors: its positions stand apart until a G50.1 has ended every one of them.
     apart: u16,
-    /// The axes a Haas mill's G101 mirrors (Haas VF Series manual 96-8000, G101: the
-    /// mirror selected per axis): G100 ends the mirror of the axes it names, and the
-    /// positions under it stand apart until the last has ended (review 16b, finding 2).
-    haas_mirrored: u16,
+    /// A G52 or G92 with axis words has shifted the coordinates in this file: a Haas G101,
+    /// which mirrors about the work coordinate zero point, then mirrors about a point the
+    /// checker does not know in the program's coordinates ([`Checker::exact_mirror`]).
+    shifted: bool,
+    /// The mirror image turning on in the block in hand is a Haas's G101 (not a G51.1).
+    haas_mirror: bool,
     /// The axes a G50.1 gave their spans from before a mirror not known exactly back to,
     /// while other axes stayed mirrored ([`Checker::mirror_off`]).
     given_back: u16,
@@ -131,8 +133,10 @@ fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool, okuma: boo
             69 => (0, 4),
             268 if haas => (8, 0),
             269 if haas => (0, 8),
-            101 => (16, 0),
-            100 => (0, 16),
+            // a Haas's G101/G100: the mirror image of the axes they name, as G51.1/G50.1
+            // (Checker::exact_mirror: about the work zero point); no FANUC code (review 17)
+            101 if haas => (32, 0),
+            100 if haas => (0, 32),
             _ => (0, 0),
         }
     } else if tenths.scale == 1 && tenths.mantissa == 511 {
@@ -395,20 +399,11 @@ impl Checker {
             let mirror_on = off == 32
                 && (self.frames.apart != 0
                     || self.frames.map.as_ref().is_some_and(|map| map.bit == 32));
-            // (a Haas G100 X0 ends X's mirror alone, a G100 naming none all of them)
-            let haas_on = off == 16 && {
-                let named = Self::mirror_axes(b);
-                self.frames.haas_mirrored &= if named == 0 { 0 } else { !named };
-                self.frames.haas_mirrored != 0
-            };
-            if off != 0 && self.frames.on & off != 0 && !mirror_on && !haas_on {
+            if off != 0 && self.frames.on & off != 0 && !mirror_on {
                 self.frame_off(off);
             }
-            if on == 16 {
-                let named = Self::mirror_axes(b);
-                self.frames.haas_mirrored |= if named == 0 { XYZ } else { named };
-            }
             if on != 0 {
+                self.frames.haas_mirror = self.config.haas && v.is_whole() && v.trunc() == 101;
                 self.frame_on(on, b, w.token(), w.column);
             }
         }
@@ -516,7 +511,9 @@ impl Checker {
                                 .fold(0u16, |all, k| all | 1 << k)
                         })
                         | self.frames.apart;
-                let again = if on == 32 {
+                // (a Haas's mirror is a setting per axis about one point, the work zero: a
+                // second G101 of an axis leaves it mirrored as it was)
+                let again = if on == 32 && !self.frames.haas_mirror {
                     Self::mirror_axes(b) & mirrored
                 } else {
                     0
@@ -543,13 +540,19 @@ impl Checker {
                             // a second G51.1 adds the axes it names (none mirrored
                             // already: `again`), each mirrored afresh where it stood
                             Some(map) => {
-                                for k in (0..3).filter(|&k| m[k][k] == -1.0) {
+                                let already: [bool; 3] =
+                                    std::array::from_fn(|k| map.m[k][k] == -1.0);
+                                let mut added = false;
+                                for k in (0..3).filter(|&k| m[k][k] == -1.0 && !already[k]) {
                                     map.touched &= !(1 << k);
                                     map.m[k][k] = -1.0;
                                     map.centre[k] = centre[k];
                                     map.fresh &= !(1 << k);
+                                    added = true;
                                 }
-                                map.what = what;
+                                if added {
+                                    map.what = what;
+                                }
                             }
                             None => {
                                 self.frames.map = Some(Map {
@@ -592,7 +595,14 @@ impl Checker {
     /// Manual, "Programmable mirror image (G50.1, G51.1)": the axis words give the axis of
     /// symmetry. None where it is not exact here (the positions then stand apart).
     fn exact_mirror(&self, b: &BlockView<'_>) -> Option<([f64; 3], [[f64; 3]; 3], u8)> {
-        if !self.config.modal.centre_codes || self.machine.state.incremental {
+        // a Haas's G101 X0 mirrors X about the work coordinate zero point, whatever X's value
+        // and under G91 too (Haas VF Series manual 96-8000, p. 201, G101: "Mirror image will
+        // reflect programmed motion around your work coordinate zero point"; review 17): the
+        // program's zero, unless a G52 or G92 shifted the coordinates
+        let haas = self.frames.haas_mirror;
+        if haas && self.frames.shifted
+            || !haas && (!self.config.modal.centre_codes || self.machine.state.incremental)
+        {
             return None;
         }
         let factor = self.to_profile_units(false);
@@ -605,7 +615,7 @@ impl Checker {
             }
             let k = AXES[..3].iter().position(|&a| a == w.letter)?;
             let value = self.readable[i]?;
-            centre[k] = value.to_f64() * factor;
+            centre[k] = if haas { 0.0 } else { value.to_f64() * factor };
             m[k][k] = -1.0;
             fresh &= !(1 << k);
         }
@@ -651,7 +661,8 @@ impl Checker {
     /// SINUMERIK ISO dialect's `G50.1 X... Y... Z...`; review 15, finding 2): each of them is
     /// taken back as a rotation's axes are at its cancel ([`Checker::take_back`]), and the
     /// mirror ends with the last. A G50.1 that names no axis is taken to end them all (no
-    /// page at hand says otherwise).
+    /// page at hand says otherwise). A Haas's G100 is read the same way (96-8000, G101: the
+    /// mirror selected per axis).
     fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
         let named = Self::mirror_axes(b);
         let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
@@ -999,6 +1010,7 @@ impl Checker {
             }
             if shift {
                 if axes {
+                    self.frames.shifted = true;
                     if let Some(map) = self.frames.map.take() {
                         self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
                         self.frames.moved[map.bit.trailing_zeros() as usize] |= map.touched != 0;

@@ -754,6 +754,9 @@ pub struct Checker {
     /// amount the checker does not follow (`tooling::linuxcnc_unsettles`); an absolute move
     /// on the axis knows it again. An R arc is not judged against such a start (TG412).
     linuxcnc_point_unsure: u32,
+    /// LinuxCNC: the doubles rs274 holds for X, Y and Z, where a G91 sum made them other
+    /// than the decimals' (`tooling::Double`, `Checker::linuxcnc_doubles`).
+    linuxcnc_double: [tooling::Double; 3],
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
@@ -788,15 +791,22 @@ pub struct Checker {
     /// Up to eight names, as written, found among `linuxcnc_named` or global: a CAM program's
     /// `Z[#<zscale>*..]` on every line compared by its bytes, not normalized and hashed.
     linuxcnc_named_seen: Vec<Vec<u8>>,
-    /// LinuxCNC: an o-word condition or loop has been read. Which lines run after it depends
-    /// on values the checker does not follow, so what rs274 refuses only in a line it runs (a
-    /// named parameter not yet set, `M[3.5]`, `X[1/0]`) is no longer judged (review 16c).
-    linuxcnc_flow_seen: bool,
-    /// LinuxCNC: a condition, loop, call or subroutine definition (or M73) has been read: the
-    /// feed mode in force may be another than the lines in their order give (a definition's
-    /// G95 does not run where it is written; M73 restores the caller's modes), so the probe's
-    /// and cycles' feed mode refusals are no longer judged (review 16c).
+    /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
+    /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
+    /// inside one runs depends on values the checker does not follow, so what rs274 refuses
+    /// only in a line it runs (a named parameter not yet set, `M[3.5]`, `X[1/0]`) is judged
+    /// only where none is open and no definition is (review 16c; review 17: after the
+    /// `endif` the lines run again, unconditionally).
+    linuxcnc_open_flow: Vec<Vec<u8>>,
+    /// LinuxCNC: the feed mode in force may be another than the lines in their order give:
+    /// after a call (the subroutine may set it; with M73 it restores the caller's) or a
+    /// G93/G94/G95 inside a condition or loop, until a G93/G94/G95 the main program runs
+    /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
+    /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
+    /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
+    /// definition where it stands, so its `endsub` gives it back (review 17).
+    linuxcnc_definition_feed: Option<i64>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
@@ -917,8 +927,9 @@ impl Checker {
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
-            linuxcnc_flow_seen: false,
+            linuxcnc_open_flow: Vec::new(),
             linuxcnc_mode_unsure: false,
+            linuxcnc_definition_feed: None,
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,
@@ -930,6 +941,7 @@ impl Checker {
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
             linuxcnc_point_unsure: 0,
+            linuxcnc_double: Default::default(),
             linuxcnc_cycle_bottom: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_nurbs: tooling::Nurbs::default(),
@@ -1761,8 +1773,11 @@ impl Checker {
         let unsettles =
             self.config.family == Family::LinuxCnc && self.linuxcnc_refusals(b, &facts, before);
         self.feeds(b, before, &facts);
-        if self.config.family == Family::LinuxCnc && !unsettles {
-            self.linuxcnc_settle();
+        if self.config.family == Family::LinuxCnc {
+            self.linuxcnc_doubles(before);
+            if !unsettles {
+                self.linuxcnc_settle();
+            }
         }
         self.heidenhain_centre();
         self.turn_frames(b);

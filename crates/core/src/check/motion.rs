@@ -3,6 +3,7 @@
 //! and quadrants as the profile reads I J K (7.3).
 
 use super::codes::{self, group_of};
+use super::tooling::Double;
 use super::{round6, Before, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
@@ -765,7 +766,23 @@ impl Checker {
             .iter()
             .any(|&a| v.has(a) && self.linuxcnc_point_unsure & bit(a) != 0)
             && !self.machine.state.incremental;
-        if linuxcnc_r && !unsure && ex == sx && ey == sy {
+        // (under G90 as rs274 compares them: the doubles it holds, `Double`)
+        let same = if linuxcnc_r && !self.machine.state.incremental {
+            [(first, sx, ex), (second, sy, ey)]
+                .iter()
+                .all(|&(axis, s, e)| {
+                    // (a diameter's half: its decimals compared)
+                    if diameter && axis == b'X' {
+                        return s == e;
+                    }
+                    let k = crate::modal::AXES[..3].iter().position(|&x| x == axis);
+                    k.map_or(Double::Nearest, |k| self.linuxcnc_double[k])
+                        .equals(s, e)
+                })
+        } else {
+            ex == sx && ey == sy
+        };
+        if linuxcnc_r && !unsure && same {
             self.report_same_end(line, words[0].column);
             return;
         }

@@ -145,11 +145,13 @@ impl Checker {
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
+        self.linuxcnc_double = Default::default();
         self.linuxcnc_defined.clear();
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
-        self.linuxcnc_flow_seen = false;
+        self.linuxcnc_open_flow.clear();
         self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_definition_feed = None;
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
@@ -194,32 +196,30 @@ impl Checker {
         {
             return;
         }
-        let mut flow = false;
-        for &(_, kind, _) in b.statements {
-            flow |= kind == Kind::Flow;
-            if matches!(kind, Kind::Flow | Kind::Call | Kind::Definition) {
-                self.linuxcnc_mode_unsure = true;
-            }
-        }
-        if b.words
-            .iter()
-            .any(|w| w.letter == b'M' && w.number == b"73")
-        {
-            self.linuxcnc_mode_unsure = true;
-        }
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
+        self.definition_feed(statement.as_ref());
         self.definition_open(b, statement.as_ref());
         if statement.is_none()
             && self.open_definition.is_none()
             && self.ended_line == 0
-            && !self.linuxcnc_flow_seen
             && (!b.statements.is_empty() || b.words.iter().any(|w| !w.expression.is_empty()))
         {
-            self.linuxcnc_named_reads(b);
+            // (inside a condition or loop its assignments count as made, its reads are not
+            // judged)
+            self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty());
         }
-        // the condition's own reads run; the lines after it may not
-        self.linuxcnc_flow_seen |= flow;
+        // (the condition's own reads run, judged above; the lines inside it may not)
+        if self.open_definition.is_none() {
+            for &(_, kind, text) in b.statements {
+                match kind {
+                    Kind::Flow => self.linuxcnc_flow(text),
+                    // the subroutine may set another feed mode, or restore the caller's
+                    Kind::Call => self.linuxcnc_mode_unsure = true,
+                    _ => {}
+                }
+            }
+        }
         if self.sub_file == SubFile::No {
             return;
         }
@@ -315,10 +315,12 @@ impl Checker {
     /// does not run counts as made (rs274 refuses `o1 if [0]` / `#<v> = 1` / `o1 endif` /
     /// `G0 X#<v>`, tapegate does not). Not judged: a global (`#<_name>`, of which rs274
     /// predefines many: `#<_x>`, `#<_metric>`, `#<_ini[..]>`), a read inside `EXISTS[..]`, a
-    /// comment's (`(DEBUG, #<x>)`), and a subroutine's body, whose locals a remap's words or
-    /// its own lines give.
+    /// comment's (`(DEBUG, #<x>)`), a subroutine's body, whose locals a remap's words or
+    /// its own lines give, and a read inside an o-word condition or loop (`judge` false:
+    /// the line may not run, or a loop's earlier pass may have assigned it; its assignments
+    /// are taken all the same).
     #[inline(never)]
-    fn linuxcnc_named_reads(&mut self, b: &BlockView<'_>) {
+    fn linuxcnc_named_reads(&mut self, b: &BlockView<'_>, judge: bool) {
         let mut undefined: Option<(Vec<u8>, usize)> = None;
         for w in b.words {
             if w.expression.is_empty() {
@@ -348,13 +350,58 @@ impl Checker {
                 undefined = self.linuxcnc_undefined_read(text, column);
             }
         }
-        if let Some((name, column)) = undefined {
+        if let Some((name, column)) = undefined.filter(|_| judge) {
             let name = String::from_utf8_lossy(&name);
             let message = format!(
                 "Named parameter {name}> not defined (rs274ngc): no line before it assigns it \
                  (a local named parameter has no value until the program sets one)"
             );
             self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        }
+    }
+
+    /// LinuxCNC: whether the line in hand runs whenever the program runs to it: no o-word
+    /// condition or loop of the main program is open, nor a subroutine's definition (rs274
+    /// runs its body only when called). Only there are the refusals rs274 makes while it runs
+    /// a line judged ([`Checker::linuxcnc_open_flow`]).
+    pub(super) fn linuxcnc_runs_surely(&self) -> bool {
+        self.linuxcnc_open_flow.is_empty() && self.open_definition.is_none()
+    }
+
+    /// An o-word condition or loop of the main program opened or closed (as
+    /// `dialect::ReadingEnd` follows them): `o1 while` closes the `o1 do` it ends, or opens a
+    /// loop; an `endif`, `endwhile` or `endrepeat` closes its label's block (and any left open
+    /// inside it: rs274 refuses those).
+    fn linuxcnc_flow(&mut self, text: &[u8]) {
+        let Some(keyword) = crate::statement::o_keyword(text) else {
+            return;
+        };
+        let label = crate::statement::o_label(text);
+        let open = self.linuxcnc_open_flow.iter().rposition(|l| *l == label);
+        match (keyword.as_slice(), open) {
+            (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+                self.linuxcnc_open_flow.truncate(at)
+            }
+            (b"if" | b"do" | b"repeat" | b"while", _) => self.linuxcnc_open_flow.push(label),
+            _ => {}
+        }
+    }
+
+    /// LinuxCNC: rs274 reads an `o<name> sub` ... `o<name> endsub` without running it, so
+    /// the feed mode a G93/G95 in its body sets is not in force after the `endsub`: the one
+    /// where the definition began is given back (review 16c, finding 1: a definition's G95
+    /// refused the main program's probe).
+    fn definition_feed(&mut self, statement: Option<&(bool, Vec<u8>)>) {
+        match (statement, &self.open_definition) {
+            (Some((true, _)), None) => {
+                self.linuxcnc_definition_feed = Some(self.machine.state.feed_mode);
+            }
+            (Some((false, name)), Some((_, _, open))) if name == open => {
+                if let Some(mode) = self.linuxcnc_definition_feed.take() {
+                    self.machine.state.feed_mode = mode;
+                }
+            }
+            _ => {}
         }
     }
 
@@ -1189,6 +1236,10 @@ mod tests {
                 None,
             ),
             ("o1 if [0]\nG0 X#<never>\no1 endif", None),
+            // after the block's end (a `do` closed by its `while`) the read is judged again
+            // (rs274 refuses it: review 17)
+            ("o1 do\nG1 X1\no1 while [0]\nG0 X#<u>", Some(6)),
+            ("o1 if [1]\nG1 X1\no1 endif\nG0 X#<u>", Some(6)),
             // the lines in their order: an assignment in a branch counts as made
             ("o1 if [#1 GT 0]\n#<v> = 1\no1 endif\nG0 X#<v>", None),
         ];

@@ -21,6 +21,35 @@ pub(super) enum LinuxCncMotion {
     Unknown,
 }
 
+/// What rs274 holds, as a `double`, for X, Y or Z in the active coordinates, against the
+/// decimal the checker holds (`ModalState::position`): rs274 reads a word as the nearest double
+/// and adds a G91 word to the double it holds, so after `G91 Z0.1` / `Z0.2` it holds
+/// 0.30000000000000004, which `G90 G38.2 Z0.3` does not equal (interp_convert.cc
+/// `convert_probe` and interp_arc.cc `arc_data_r` compare with `==`; review 16c, finding 3).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(super) enum Double {
+    /// The double nearest the decimal: an absolute word's, and most sums.
+    #[default]
+    Nearest,
+    /// A sum of G91 words that the nearest double of the decimal is not.
+    Sum(f64),
+    /// Moved by a block whose arithmetic is not followed here (a cycle under G91): the two
+    /// refusals that compare it are not judged on this axis.
+    Unknown,
+}
+
+impl Double {
+    /// Whether rs274 finds the point it holds equal to the point `end` (a word's decimal, read
+    /// as the nearest double), the decimal held being `held`.
+    pub(super) fn equals(self, held: Dec, end: Dec) -> bool {
+        match self {
+            Double::Nearest => held.to_f64() == end.to_f64(),
+            Double::Sum(held) => held == end.to_f64(),
+            Double::Unknown => false,
+        }
+    }
+}
+
 /// rs274ngc's feed rate (its `settings->feed_rate`), which a probe move and a canned cycle
 /// read: zero at the start and after every G94 or G95 (interp_convert.cc `convert_feed_mode`),
 /// set by an F under G94 or G95 (`convert_feed_rate`), and left as it was by G93 and by an F
@@ -740,7 +769,7 @@ impl Checker {
             if value.is_none()
                 && !w.expression.is_empty()
                 && read_refusal.is_none()
-                && !self.linuxcnc_flow_seen
+                && self.linuxcnc_runs_surely()
             {
                 read_refusal = linuxcnc_read_expression(w);
             }
@@ -784,6 +813,15 @@ impl Checker {
         if codes.iter().any(|&c| c == 940 || c == 950) {
             self.linuxcnc_feed_rate = LinuxCncFeed::Zero;
         }
+        // the feed mode known again where the main program sets it unconditionally; set in
+        // a condition or loop it may or may not be in force after it (review 16c, 17)
+        if self.open_definition.is_none() && codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
+            self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
+        }
+        // (LinuxCNC 2.9's M98 runs a FANUC-style subprogram, which may set another mode)
+        if ms.contains(&98) {
+            self.linuxcnc_mode_unsure = true;
+        }
         if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
             let at = first[usize::from(b'F' - b'A')] as usize - 1;
             self.linuxcnc_feed_rate = match self.readable[at] {
@@ -791,6 +829,23 @@ impl Checker {
                 Some(_) => LinuxCncFeed::Set,
                 None => LinuxCncFeed::Unknown,
             };
+        } else if first[usize::from(b'F' - b'A')] != 0 {
+            // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
+            // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
+            // runs `G95` / `G93 G1 X1 F2` / `G38.2 X1 Y0`)
+            let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c)).or(
+                match self.linuxcnc_motion {
+                    LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+                    _ => None,
+                },
+            );
+            if matches!(motion, Some(10 | 20 | 30)) {
+                let at = first[usize::from(b'F' - b'A')] as usize - 1;
+                self.linuxcnc_feed_rate = match self.readable[at] {
+                    Some(f) if !f.is_zero() => LinuxCncFeed::Set,
+                    _ => LinuxCncFeed::Unknown,
+                };
+            }
         }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
@@ -1045,6 +1100,60 @@ impl Checker {
         unsure
     }
 
+    /// LinuxCNC: after the block's rules, the double rs274 holds for X, Y and Z ([`Double`]):
+    /// an absolute word's is the nearest double; a G91 word of a straight move or an arc adds
+    /// to the double held before it, and where the sum is not the nearest double of the
+    /// decimal sum it is kept; an axis another block moves (a cycle under G91) is no longer
+    /// followed until an absolute word.
+    #[inline(never)]
+    pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
+        let state = &self.machine.state;
+        let plain = matches!(
+            self.linuxcnc_motion,
+            LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
+        ) && state.cycle.is_none();
+        for k in 0..3 {
+            let letter = crate::modal::AXES[k];
+            let (start, now) = (before.xyz[k], state.position[k]);
+            let Some(now) = now else {
+                self.linuxcnc_double[k] = Double::Nearest;
+                continue;
+            };
+            let taken = self.machine.taken();
+            let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
+            if !self.values.has(letter) || !moves && taken != Some(crate::modal::AxesTaken::Set) {
+                if start != Some(now) {
+                    self.linuxcnc_double[k] = Double::Unknown;
+                }
+                continue;
+            }
+            // (G92 X0.1 sets the point to the word's number, under G91 too)
+            if !state.incremental || !moves {
+                self.linuxcnc_double[k] = Double::Nearest;
+                continue;
+            }
+            let held = match (self.linuxcnc_double[k], start) {
+                (Double::Nearest, Some(start)) => start.to_f64(),
+                (Double::Sum(held), Some(_)) => held,
+                _ => {
+                    self.linuxcnc_double[k] = Double::Unknown;
+                    continue;
+                }
+            };
+            self.linuxcnc_double[k] = match self.values.get(letter) {
+                Some(step) if plain => {
+                    let sum = held + step.to_f64();
+                    if sum == now.to_f64() {
+                        Double::Nearest
+                    } else {
+                        Double::Sum(sum)
+                    }
+                }
+                _ => Double::Unknown,
+            };
+        }
+    }
+
     /// rs274ngc's refusal of a G5.2 block, a NURBS control point, in `convert_nurbs`' order:
     /// X without Y or Y without X; a P without X and Y but on the first point (a weight for
     /// the start); no P above zero (the point's weight; rs274's value for no P is -1) where
@@ -1105,20 +1214,22 @@ impl Checker {
         let after = &self.machine.state;
         // (a probe without an axis word is refused before it runs: "All axes missing")
         let axes = crate::modal::AXES;
-        axes.iter().any(|&a| words.has(a))
-            && axes.iter().all(|&a| {
-                if !words.has(a) {
-                    return true;
-                }
-                if after.incremental {
-                    return words.value(a).is_some_and(|d| d.is_zero());
-                }
-                unsure & bit(a) == 0
-                    && start.unknown & bit(a) == 0
-                    && !after.is_unknown(a)
-                    && start.axis(a).is_some()
-                    && start.axis(a) == after.axis(a)
-            })
+        axes.iter().any(|&a| words.has(a)) && axes.iter().all(|&a| {
+            if !words.has(a) {
+                return true;
+            }
+            if after.incremental {
+                return words.value(a).is_some_and(|d| d.is_zero());
+            }
+            let held = crate::modal::AXES[..3]
+                .iter()
+                .position(|&x| x == a)
+                .map_or(Double::Nearest, |k| self.linuxcnc_double[k]);
+            unsure & bit(a) == 0
+                && start.unknown & bit(a) == 0
+                && !after.is_unknown(a)
+                && matches!((start.axis(a), after.axis(a)), (Some(s), Some(e)) if held.equals(s, e))
+        })
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -1340,7 +1451,8 @@ impl Checker {
                     linuxcnc_no_feed(after.feed_mode, value(b'F'))
                 ));
             }
-            if after.feed_mode == 95 && !self.linuxcnc_mode_unsure {
+            if after.feed_mode == 95 && !self.linuxcnc_mode_unsure && self.open_definition.is_none()
+            {
                 return Some(
                     "Cannot probe with feed per rev mode (rs274ngc): a probe move feeds per \
                      minute (G94) or in inverse time (G93)"
@@ -1452,7 +1564,7 @@ impl Checker {
                 linuxcnc_no_feed(after.feed_mode, value(b'F'))
             ));
         }
-        if after.feed_mode == 93 && !self.linuxcnc_mode_unsure {
+        if after.feed_mode == 93 && !self.linuxcnc_mode_unsure && self.open_definition.is_none() {
             return Some(
                 "Cannot use inverse time feed with canned cycles (rs274ngc): G94 before the \
                  cycle"
@@ -2674,7 +2786,52 @@ mod tests {
                 &[],
             ),
             ("F100\no1 if [0]\nG93\no1 endif\nG81 X1 Y1 Z-1 R1 F10", &[]),
-            ("F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10", &[]),
+            (
+                "F10\no1 if [1]\nG1 X1\no1 else\nG95\no1 endif\nG38.2 Z-5",
+                &[],
+            ),
+            (
+                "o<tap> sub\nM73\nG95 F1 S100 M3\nG1 Z-1\no<tap> endsub\no<tap> call\n\
+                 F10\nG38.2 Z-5",
+                &[],
+            ),
+            // and judged again where the main program sets the mode unconditionally, after
+            // a definition, a call, a condition or M73 in the main program (rs274 refuses
+            // each: review 17)
+            (
+                "o<s> sub\nG1 X1\no<s> endsub\nG95 F0.1 S100 M3\nG38.2 Z-5",
+                &["8: Cannot probe with feed per rev mode"],
+            ),
+            (
+                "o<s> sub\nG1 X1\no<s> endsub\nG93\nG81 X1 Y1 Z-1 R1 F10",
+                &["8: Cannot use inverse time feed with canned cycles"],
+            ),
+            (
+                "o<s> sub\nG1 X1\no<s> endsub\no<s> call\nG95 F0.1 S100 M3\nG38.2 Z-5",
+                &["9: Cannot probe with feed per rev mode"],
+            ),
+            (
+                "F100\no1 if [0]\nG93\no1 endif\nG94\nG95 S100 M3 F1\nG38.2 Z-5",
+                &["10: Cannot probe with feed per rev mode"],
+            ),
+            (
+                "F100\nM73\nG93\nG81 X1 Y1 Z-1 R1 F10",
+                &["7: Cannot use inverse time feed with canned cycles"],
+            ),
+            // a G1 under G93 sets rs274's feed rate to its length times F (review 17)
+            ("G95\nG93 G1 X1 F2\nG91 G0 X0\nG38.2 X1 Y0", &[]),
+            // nor after an M98 call of a FANUC-style subprogram (LinuxCNC 2.9), whose G94
+            // rs274 runs (review 17)
+            (
+                "G95 F0.1 S100 M3\nM98 P1000\nG38.2 Z-5\nM2\nO1000\nG94 F100\nM99",
+                &[],
+            ),
+            // a definition's G93 or G95 does not run where it stands: its endsub gives the
+            // mode before it back
+            (
+                "o<s> sub\nG95\no<s> endsub\nF10\nG81 X1 Y1 Z-1 R2\nG80",
+                &[],
+            ),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
@@ -2687,6 +2844,17 @@ mod tests {
         let cases: &[(&str, &[&str])] = &[
             // convert_probe: a probe that must trip ends where it starts
             ("G38.2 Z5 F10", &["4: Start point too close to probe point"]),
+            // rs274 holds doubles: 5 + 0.3 + 0.6 is not the double of 5.9, 5 + 0.1 + 0.2 is
+            // that of 5.3; an absolute word gives the nearest double again (review 16c, 3)
+            ("G91\nG0 Z0.3\nG0 Z0.6\nG90\nG38.2 Z5.9 F10", &[]),
+            (
+                "G91\nG0 Z0.1\nG0 Z0.2\nG90\nG38.2 Z5.3 F10",
+                &["8: Start point too close to probe point"],
+            ),
+            (
+                "G91\nG0 Z0.3\nG0 Z0.6\nG90\nG0 Z5.9\nG38.2 Z5.9 F10",
+                &["9: Start point too close to probe point"],
+            ),
             (
                 "G91 G38.4 X0 Y0 F10",
                 &["4: Start point too close to probe point"],
@@ -2715,6 +2883,22 @@ mod tests {
             ("G0 X[1/0.5] Y[#1/2]", &[]),
             // after a condition or loop the line may not run: not judged (review 16c)
             ("o1 if [0]\nM[3.5]\nG0 X[1/0]\no1 endif", &[]),
+            // nor in a definition, which runs only if called (review 16c, 4)
+            ("o<s> sub\nM[3.5]\no<s> endsub", &[]),
+            // after the block's end the lines run unconditionally again: judged (review 17;
+            // an `if` in a definition opens nothing in the main program)
+            (
+                "o1 if [1]\nG1 X1\no1 endif\nM[3.5]",
+                &["7: Non integer value for integer"],
+            ),
+            (
+                "o1 repeat [2]\nG1 X1\no1 endrepeat\nX[1/0]",
+                &["7: Attempt to divide by zero"],
+            ),
+            (
+                "o<s> sub\no1 if [#1 GT 0]\nG1 X1\no1 endif\no<s> endsub\nM[3.5]",
+                &["9: Non integer value for integer"],
+            ),
             // M66's words, in convert_m's order
             (
                 "M66 P0 E0 L0",
