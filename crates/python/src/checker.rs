@@ -709,6 +709,7 @@ pub(crate) fn feed_block<'py>(
     let view = BlockView {
         line: b.line,
         text: &text,
+        ascii: text.is_ascii(),
         words: &words,
         skip,
         skip_within,

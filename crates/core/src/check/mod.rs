@@ -350,6 +350,9 @@ pub struct Stats {
 pub struct BlockView<'a> {
     pub line: usize,
     pub text: &'a [u8],
+    /// `text` holds no byte above 0x7F (`text.is_ascii()`): found once a line by its reader,
+    /// and asked by the rules that count characters or look for bytes outside ASCII.
+    pub ascii: bool,
     pub words: &'a [Word<'a>],
     pub skip: bool,
     /// The 1-based column of a block skip `/` in the middle of the block (Fanuc, Haas): the
@@ -1068,6 +1071,7 @@ impl Checker {
             self.block(&BlockView {
                 line,
                 text,
+                ascii,
                 words: &words,
                 skip: false,
                 skip_within: None,
@@ -1092,6 +1096,7 @@ impl Checker {
         self.block(&BlockView {
             line,
             text,
+            ascii,
             words: &words,
             skip: e.skip != 0,
             skip_within: e.skip_within.map(|(offset, _)| at(offset)),
@@ -1119,6 +1124,12 @@ impl Checker {
     /// Check one block (after the tokenizer's reading), and keep the backplot's facts of it
     /// where the path is recorded.
     pub fn block(&mut self, b: &BlockView<'_>) {
+        debug_assert_eq!(
+            b.ascii,
+            b.text.is_ascii(),
+            "line {}: the view's ASCII",
+            b.line
+        );
         self.drawn_block(b);
     }
 
@@ -1163,7 +1174,13 @@ impl Checker {
                 text = rest;
             }
         }
-        if !self.outside_ascii_noted && !text.is_ascii() {
+        // (the line's own test, but for the text after a byte order mark)
+        let ascii = if text.len() == b.text.len() {
+            b.ascii
+        } else {
+            text.is_ascii()
+        };
+        if !self.outside_ascii_noted && !ascii {
             self.outside_ascii(b.line, b.text, b.text.len() - text.len());
         }
         self.last_line = b.line;
