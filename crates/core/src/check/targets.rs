@@ -381,13 +381,25 @@ impl Checker {
         if self.config.family != crate::lex::Family::MacroB {
             return;
         }
-        if let Some(n) = b
-            .words
-            .iter()
-            .find(|w| w.letter == b'N' && w.expression.is_empty())
-            .and_then(|w| crate::text::digits_value(w.number))
-        {
-            self.targets.label(n);
+        // (a block with no N word, as the letters say, is not walked for one; a plain N
+        // word's digits are the value its reader kept, `Word::value`, without a point)
+        if self.letters & crate::modal::bit(b'N') != 0 {
+            if let Some(n) = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'N' && w.expression.is_empty())
+                .and_then(|w| {
+                    debug_assert_eq!(
+                        w.value.filter(|_| !w.point),
+                        crate::text::digits_value(w.number),
+                        "line {}: an N word's kept digits",
+                        b.line
+                    );
+                    w.value.filter(|_| !w.point)
+                })
+            {
+                self.targets.label(n);
+            }
         }
         // the words the block's codes make name a block (`Checker::named_words`, read with
         // the block's words: a block of statements only names none)
