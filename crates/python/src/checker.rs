@@ -164,7 +164,7 @@ fn render(
     written: &mut Vec<u8>,
     counts: &mut [usize; 3],
 ) {
-    for f in inner.take() {
+    for f in inner.drain() {
         counts[f.rule.severity() as usize] += 1;
         writer.finding(written, &f);
     }

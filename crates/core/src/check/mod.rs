@@ -968,6 +968,13 @@ impl Checker {
         std::mem::take(&mut self.found)
     }
 
+    /// The findings made since the last call, handed over one by one with the list's
+    /// allocation kept for the next: a report written as the lines are checked asks after
+    /// every line, and [`Checker::take`] gave the list away each time one had a finding.
+    pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
+        self.found.drain(..)
+    }
+
     pub fn enabled(&self, rule: Rule) -> bool {
         self.selection.enabled(rule)
     }
