@@ -1140,15 +1140,16 @@ impl Checker {
         self.drawn_block(b);
     }
 
-    /// Asked before line `line` is read: whether the control never reads it
-    /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
-    /// holds program text.
     /// How the program in hand has ended so far: the line of its M02/M30 (0: none yet), and
     /// whether it returned as a subprogram (M99; a SINUMERIK's M17 or RET; an Okuma's RTS).
     pub fn part_end(&self) -> (usize, bool) {
         (self.ended_line, self.sub_ended)
     }
 
+    /// Asked before line `line` is read: whether the control never reads it
+    /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
+    /// holds program text.
+    #[inline]
     pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
         if !self.reading_end.skips(line, text) {
             return false;
