@@ -52,36 +52,46 @@ impl Checker {
     }
 }
 
-/// The CRs of a block's text, counted 8 bytes at a time with no branch on what they hold (the
-/// TV check asks it of every block, and nearly every block has none, or one at its end): a
-/// word's bytes that equal CR are the zero bytes of `word ^ CRs`, each marked by its high bit
-/// (exact: the low seven bits' sum cannot carry into the next byte), and counted. The last
-/// bytes past a multiple of 8 are the top bytes of the text's last 8, the ones before them
-/// shifted out; a text shorter than 8 is read byte by byte. (Whether the text is ASCII is the
-/// line reader's, [`BlockView::ascii`].)
+/// The CRs of a block's text. A CR that ends it (a CRLF file's) is counted on its own; whether
+/// the rest holds one is found 8 bytes at a time with no branch on what they hold (the TV
+/// check asks it of every block, and nearly every block has none): a word's bytes that equal
+/// CR are the zero bytes of `word ^ CRs`, each marked by its high bit (exact: the low seven
+/// bits' sum cannot carry into the next byte). The last bytes past a multiple of 8 are the
+/// top bytes of the last 8, the ones before them shifted out. Only a rest that holds one is
+/// counted byte by byte, as is a rest shorter than 8. (Whether the text is ASCII is the line
+/// reader's, [`BlockView::ascii`].)
 fn carriage_returns(text: &[u8]) -> usize {
     const ONES: u64 = u64::from_le_bytes([1; 8]);
     const LOW: u64 = ONES * 0x7f;
+    let (rest, last) = match text.split_last() {
+        Some((b'\r', rest)) => (rest, 1),
+        _ => (text, 0),
+    };
+    let count = || rest.iter().filter(|&&c| c == b'\r').count() + last;
     let crs = |raw: u64| {
         let x = raw ^ (ONES * u64::from(b'\r'));
         !(((x & LOW) + LOW) | x | LOW)
     };
-    let n = text.len();
+    let n = rest.len();
     if n < 8 {
-        return text.iter().filter(|&&c| c == b'\r').count();
+        return count();
     }
-    let word = |at: usize| u64::from_le_bytes(text[at..at + 8].try_into().expect("8 bytes"));
-    let mut count = 0;
+    let word = |at: usize| u64::from_le_bytes(rest[at..at + 8].try_into().expect("8 bytes"));
+    let mut found = 0;
     let mut at = 0;
     while at + 8 <= n {
-        count += crs(word(at)).count_ones() as usize;
+        found |= crs(word(at));
         at += 8;
     }
-    let rest = n - at;
-    if rest > 0 {
-        count += (crs(word(n - 8)) >> (8 * (8 - rest))).count_ones() as usize;
+    let tail = n - at;
+    if tail > 0 {
+        found |= crs(word(n - 8)) >> (8 * (8 - tail));
     }
-    count
+    if found == 0 {
+        last
+    } else {
+        count()
+    }
 }
 
 /// TG703's message.
