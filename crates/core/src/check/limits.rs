@@ -381,11 +381,18 @@ impl Checker {
     /// one); under polar coordinates the plane's axes hold no positions; under a mirror
     /// image the positions stand apart (a span of their own, the one before taken back at
     /// its cancel).
+    #[inline]
     pub(super) fn turn_frames(&mut self, b: &BlockView<'_>) {
-        // (only a G code turns a frame)
-        if !self.frames.codes {
-            return;
+        // (only a G code turns a frame: the test inlined where it is asked, once a
+        // block, the walk out of line)
+        if self.frames.codes {
+            self.turn_frames_walk(b);
         }
+    }
+
+    /// [`Checker::turn_frames`] of a block with such a code.
+    #[inline(never)]
+    fn turn_frames_walk(&mut self, b: &BlockView<'_>) {
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
                 continue;
@@ -954,11 +961,18 @@ impl Checker {
     /// there for those axes, in the new coordinates, rather than mix positions of two
     /// (`G52 X-700.` then `X990.` is 290 in the old ones); inside a rotation or scaling taken
     /// back exactly, a shift leaves it unknown. Read after the block's own positions.
+    #[inline]
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
-        // (only a G code shifts or turns the coordinates)
-        if !self.frames.codes {
-            return;
+        // (only a G code shifts or turns the coordinates: the test inlined where it is asked, once a
+        // block, the walk out of line)
+        if self.frames.codes {
+            self.shift_spans_walk(b);
         }
+    }
+
+    /// [`Checker::shift_spans`] of a block with such a code.
+    #[inline(never)]
+    fn shift_spans_walk(&mut self, b: &BlockView<'_>) {
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let sinumerik = self.config.family == Family::Sinumerik;
         for (i, w) in b.words.iter().enumerate() {
