@@ -890,7 +890,11 @@ impl Checker {
             self.report(Rule::ArcCrossesQuadrant, message, line, column);
         }
         if helix > 0 {
-            let message = format!("helical arc: {} moves with the arc", third as char);
+            // (said of every helical block of a 3D program: built without the formatter)
+            let mut message = String::with_capacity(33);
+            message.push_str("helical arc: ");
+            message.push(char::from(third));
+            message.push_str(" moves with the arc");
             self.report(Rule::HelicalArc, message, line, helix);
         }
     }
