@@ -319,6 +319,7 @@ pub(super) fn goto_words(upper: &[u8]) -> Option<(usize, &[u8], &[u8])> {
 
 impl Checker {
     /// A SINUMERIK block's label and block number, its declared names and its jump.
+    #[inline(never)]
     fn sinumerik_targets(&mut self, b: &super::BlockView<'_>) {
         if let Some(w) = b
             .words
@@ -373,14 +374,19 @@ impl Checker {
     }
 
     /// The block's sequence number, and the blocks its words and its GOTO name.
+    #[inline]
     pub(super) fn targets(&mut self, b: &super::BlockView<'_>) {
-        if self.config.family == crate::lex::Family::Sinumerik {
-            self.sinumerik_targets(b);
-            return;
+        // (the family's test inlined where it is asked, once a block; the reading out of line)
+        match self.config.family {
+            crate::lex::Family::Sinumerik => self.sinumerik_targets(b),
+            crate::lex::Family::MacroB => self.macro_b_targets(b),
+            _ => {}
         }
-        if self.config.family != crate::lex::Family::MacroB {
-            return;
-        }
+    }
+
+    /// [`Checker::targets`] on a Custom Macro B control (Fanuc, Haas).
+    #[inline(never)]
+    fn macro_b_targets(&mut self, b: &super::BlockView<'_>) {
         // (a block with no N word, as the letters say, is not walked for one; a plain N
         // word's digits are the value its reader kept, `Word::value`, without a point)
         if self.letters & crate::modal::bit(b'N') != 0 {
