@@ -1279,6 +1279,9 @@ impl Checker {
     /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
     /// span is wider than the travel. `under` ends the message: the frame the position was
     /// taken back through.
+    /// (Inlined where it is asked, for each moved axis of every block; the finding out of
+    /// line.)
+    #[inline]
     fn add_to_span(
         &mut self,
         i: usize,
@@ -1303,16 +1306,31 @@ impl Checker {
         let Span { least, most, said } = *span;
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
-            let message = format!(
-                "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
-                 offset fits the program on this machine{under}",
-                axis as char,
-                round6(most - least),
-                round6(least),
-                round6(most)
-            );
-            self.report(Rule::TravelExceeded, message, line, column);
+            self.span_exceeded(axis, (least, most), (low, high), (line, column), under);
         }
+    }
+
+    /// TG601 of [`Checker::add_to_span`]: `axis` spans `least` to `most`, wider than its
+    /// travel `low` to `high`.
+    #[cold]
+    #[inline(never)]
+    fn span_exceeded(
+        &mut self,
+        axis: u8,
+        (least, most): (f64, f64),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+        under: &str,
+    ) {
+        let message = format!(
+            "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
+             offset fits the program on this machine{under}",
+            axis as char,
+            round6(most - least),
+            round6(least),
+            round6(most)
+        );
+        self.report(Rule::TravelExceeded, message, line, column);
     }
 
     /// The block's X Y Z under an exact rotation or scaling, taken back to the coordinates
