@@ -914,6 +914,9 @@ impl Checker {
     /// The arc centre in the plane, as the profile reads I J K (7.3): incremental from the
     /// start point, absolute, or sign-less for a quadrant-limited control -- then the signs
     /// that put the centre where the radii agree and the arc stays in one quadrant.
+    /// (The two readings by a sum inlined where they are asked, once an arc; the quadrant
+    /// search out of line.)
+    #[inline]
     pub(super) fn centre(
         &self,
         start: (f64, f64),
@@ -925,10 +928,24 @@ impl Checker {
         let (sx, sy) = start;
         let (ci, cj) = ij;
         match self.config.ijk {
-            Ijk::Absolute => return (ci, cj),
-            Ijk::Incremental => return (sx + ci, sy + cj),
-            Ijk::Quadrant => {}
+            Ijk::Absolute => (ci, cj),
+            Ijk::Incremental => (sx + ci, sy + cj),
+            Ijk::Quadrant => self.quadrant_centre(start, end, ij, clockwise, scale),
         }
+    }
+
+    /// [`Checker::centre`] of a quadrant-limited control: the signs of I J that fit best.
+    #[inline(never)]
+    fn quadrant_centre(
+        &self,
+        start: (f64, f64),
+        end: (f64, f64),
+        ij: (f64, f64),
+        clockwise: bool,
+        scale: f64,
+    ) -> (f64, f64) {
+        let (sx, sy) = start;
+        let (ci, cj) = ij;
         let mut best = (sx, sy);
         let mut best_key: Option<(bool, bool, f64)> = None;
         for si in [1.0, -1.0] {
