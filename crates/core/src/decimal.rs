@@ -324,7 +324,7 @@ impl PartialOrd for Dec {
 impl Ord for Dec {
     /// Two values of one scale compared where they are asked (an arc's end against its
     /// start, a position against a limit: a call of about 28 instructions each); other scales
-    /// out of line ([`Dec::cmp_scales`]).
+    /// out of line (`Dec::cmp_scales`).
     #[inline]
     fn cmp(&self, other: &Self) -> Ordering {
         if self.scale == other.scale {
