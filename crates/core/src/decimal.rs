@@ -315,19 +315,32 @@ impl PartialEq for Dec {
 impl Eq for Dec {}
 
 impl PartialOrd for Dec {
+    #[inline]
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
     }
 }
 
 impl Ord for Dec {
+    /// Two values of one scale compared where they are asked (an arc's end against its
+    /// start, a position against a limit: a call of about 28 instructions each); other scales
+    /// out of line (`Dec::cmp_scales`).
+    #[inline]
     fn cmp(&self, other: &Self) -> Ordering {
-        // Nearly every value compared is a word's or a position's: its mantissa fits an i64
-        // and the scales differ by a few digits. An i64 times 10^18 at most fits an i128, so
-        // no overflow check (and no i128 multiplication by the library) is needed then.
         if self.scale == other.scale {
             return { self.mantissa }.cmp(&{ other.mantissa });
         }
+        self.cmp_scales(other)
+    }
+}
+
+impl Dec {
+    /// [`Dec::cmp`] of two values of different scales.
+    #[inline(never)]
+    fn cmp_scales(&self, other: &Self) -> Ordering {
+        // Nearly every value compared is a word's or a position's: its mantissa fits an i64
+        // and the scales differ by a few digits. An i64 times 10^18 at most fits an i128, so
+        // no overflow check (and no i128 multiplication by the library) is needed then.
         if let (Ok(a), Ok(b)) = (i64::try_from(self.mantissa), i64::try_from(other.mantissa)) {
             let (a, b) = (i128::from(a), i128::from(b));
             return match self.scale.abs_diff(other.scale) {

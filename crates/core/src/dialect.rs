@@ -398,7 +398,22 @@ pub struct ProgramSplit {
 impl ProgramSplit {
     /// Whether the block `opening` shows begins the next program of the file (asked before
     /// the block is read).
+    #[inline]
     pub fn begins(
+        &mut self,
+        family: Family,
+        program_number: Option<u8>,
+        opening: &Opening<'_>,
+    ) -> bool {
+        // (asked of every block: one that is no archive's header and follows no end begins
+        // nothing, the two tests below, made here before the call)
+        (opening.percent.is_some() || self.after_end)
+            && self.begins_after(family, program_number, opening)
+    }
+
+    /// [`ProgramSplit::begins`] of a block after an end, or of a `%` line.
+    #[inline(never)]
+    fn begins_after(
         &mut self,
         family: Family,
         program_number: Option<u8>,
@@ -591,11 +606,16 @@ impl ReadingEnd {
     }
 
     /// Asked before line `line` (its text `text`) is read: whether the control never reads
-    /// it as program, so that the reader passes over it (its bytes kept).
+    /// it as program, so that the reader passes over it (its bytes kept). (The family's test
+    /// inlined where it is asked, once a line; the reading out of line.)
+    #[inline]
     pub fn skips(&mut self, line: usize, text: &[u8]) -> bool {
-        if self.family != Family::LinuxCnc {
-            return false;
-        }
+        self.family == Family::LinuxCnc && self.linuxcnc_skips(line, text)
+    }
+
+    /// [`ReadingEnd::skips`] on LinuxCNC.
+    #[inline(never)]
+    fn linuxcnc_skips(&mut self, line: usize, text: &[u8]) -> bool {
         let bare_percent = |text: &[u8]| text.trim_ascii() == b"%";
         if self.percent_file.is_none() {
             if text.trim_ascii().is_empty() {

@@ -670,9 +670,6 @@ impl ModalMachine {
         self.end_of_block(&v.ms);
     }
 
-    /// What the block last given to [`ModalMachine::apply`] does with its axis words: the
-    /// same as [`ModalSettings::axes_taken`] of its values, without a second search of its G
-    /// codes (the checker asks it of every block two or three times).
     /// Whether a G10 block may move the zero of the work coordinate system in force, so that
     /// the named axes' positions in program coordinates are no longer known. Only G10 L2 and
     /// L20 set a work system's origin: FANUC 0i-MF ("Changing workpiece coordinate system (G10
@@ -704,6 +701,9 @@ impl ModalMachine {
         }
     }
 
+    /// What the block last given to [`ModalMachine::apply`] does with its axis words: the
+    /// same as [`ModalSettings::axes_taken`] of its values, without a second search of its G
+    /// codes (the checker asks it of every block two or three times).
     pub fn taken(&self) -> Option<AxesTaken> {
         self.taken
     }

@@ -164,7 +164,7 @@ fn render(
     written: &mut Vec<u8>,
     counts: &mut [usize; 3],
 ) {
-    for f in inner.take() {
+    for f in inner.drain() {
         counts[f.rule.severity() as usize] += 1;
         writer.finding(written, &f);
     }
@@ -709,6 +709,7 @@ pub(crate) fn feed_block<'py>(
     let view = BlockView {
         line: b.line,
         text: &text,
+        ascii: text.is_ascii(),
         words: &words,
         skip,
         skip_within,

@@ -102,6 +102,7 @@ impl Checker {
     }
 
     /// How the profile reads a number of `letter` written without a point.
+    #[inline]
     fn no_point(&self, letter: u8) -> NoPoint {
         if !letter.is_ascii_uppercase() {
             return self.config.numbers().no_point(letter);

@@ -385,11 +385,18 @@ impl Checker {
     /// one); under polar coordinates the plane's axes hold no positions; under a mirror
     /// image the positions stand apart (a span of their own, the one before taken back at
     /// its cancel).
+    #[inline]
     pub(super) fn turn_frames(&mut self, b: &BlockView<'_>) {
-        // (only a G code turns a frame)
-        if !self.frames.codes {
-            return;
+        // (only a G code turns a frame: the test inlined where it is asked, once a
+        // block, the walk out of line)
+        if self.frames.codes {
+            self.turn_frames_walk(b);
         }
+    }
+
+    /// [`Checker::turn_frames`] of a block with such a code.
+    #[inline(never)]
+    fn turn_frames_walk(&mut self, b: &BlockView<'_>) {
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
                 continue;
@@ -965,11 +972,18 @@ impl Checker {
     /// there for those axes, in the new coordinates, rather than mix positions of two
     /// (`G52 X-700.` then `X990.` is 290 in the old ones); inside a rotation or scaling taken
     /// back exactly, a shift leaves it unknown. Read after the block's own positions.
+    #[inline]
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
-        // (only a G code shifts or turns the coordinates)
-        if !self.frames.codes {
-            return;
+        // (only a G code shifts or turns the coordinates: the test inlined where it is asked, once a
+        // block, the walk out of line)
+        if self.frames.codes {
+            self.shift_spans_walk(b);
         }
+    }
+
+    /// [`Checker::shift_spans`] of a block with such a code.
+    #[inline(never)]
+    fn shift_spans_walk(&mut self, b: &BlockView<'_>) {
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let sinumerik = self.config.family == Family::Sinumerik;
         for (i, w) in b.words.iter().enumerate() {
@@ -1277,6 +1291,9 @@ impl Checker {
     /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
     /// span is wider than the travel. `under` ends the message: the frame the position was
     /// taken back through.
+    /// (Inlined where it is asked, for each moved axis of every block; the finding out of
+    /// line.)
+    #[inline]
     fn add_to_span(
         &mut self,
         i: usize,
@@ -1301,16 +1318,31 @@ impl Checker {
         let Span { least, most, said } = *span;
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
-            let message = format!(
-                "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
-                 offset fits the program on this machine{under}",
-                axis as char,
-                round6(most - least),
-                round6(least),
-                round6(most)
-            );
-            self.report(Rule::TravelExceeded, message, line, column);
+            self.span_exceeded(axis, (least, most), (low, high), (line, column), under);
         }
+    }
+
+    /// TG601 of [`Checker::add_to_span`]: `axis` spans `least` to `most`, wider than its
+    /// travel `low` to `high`.
+    #[cold]
+    #[inline(never)]
+    fn span_exceeded(
+        &mut self,
+        axis: u8,
+        (least, most): (f64, f64),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+        under: &str,
+    ) {
+        let message = format!(
+            "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
+             offset fits the program on this machine{under}",
+            axis as char,
+            round6(most - least),
+            round6(least),
+            round6(most)
+        );
+        self.report(Rule::TravelExceeded, message, line, column);
     }
 
     /// The block's X Y Z under an exact rotation or scaling, taken back to the coordinates

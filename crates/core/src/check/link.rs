@@ -29,17 +29,23 @@ impl Checker {
     }
 
     /// The TV check: count the blocks of an odd number of characters (CR not counted).
+    #[inline]
     pub(super) fn tv(&mut self, b: &BlockView<'_>) {
-        if !self.config.tv_check {
-            return;
+        // (the profile's test inlined where it is asked, once a block; the count out of line)
+        if self.config.tv_check {
+            self.tv_count(b);
         }
-        let (crs, ascii) = carriage_returns(b.text);
-        let characters = if ascii {
+    }
+
+    /// [`Checker::tv`] under a profile with the TV check.
+    #[inline(never)]
+    fn tv_count(&mut self, b: &BlockView<'_>) {
+        let characters = if b.ascii {
             b.text.len()
         } else {
             chars(b.text, b.text.len())
         };
-        let length = characters - crs;
+        let length = characters - carriage_returns(b.text);
         if length % 2 == 1 {
             if self.tv_odd.count == 0 {
                 self.tv_odd = OddBlocks {
@@ -53,27 +59,46 @@ impl Checker {
     }
 }
 
-/// The CRs of a block's text, read 8 bytes at a time: a word of 8 holds one where the borrow
-/// of `haszero(x ^ CR)` says so, and only such a word is counted byte by byte (the TV check
-/// asks it of every block, and nearly every block has none, or one at its end). And whether
-/// the text is ASCII (no byte with its high bit set), from the same words: then its length in
-/// characters is its length in bytes, with no second pass to count them.
-fn carriage_returns(text: &[u8]) -> (usize, bool) {
+/// The CRs of a block's text. A CR that ends it (a CRLF file's) is counted on its own; whether
+/// the rest holds one is found 8 bytes at a time with no branch on what they hold (the TV
+/// check asks it of every block, and nearly every block has none): a word's bytes that equal
+/// CR are the zero bytes of `word ^ CRs`, each marked by its high bit (exact: the low seven
+/// bits' sum cannot carry into the next byte). The last bytes past a multiple of 8 are the
+/// top bytes of the last 8, the ones before them shifted out. Only a rest that holds one is
+/// counted byte by byte, as is a rest shorter than 8. (Whether the text is ASCII is the line
+/// reader's, [`BlockView::ascii`].)
+fn carriage_returns(text: &[u8]) -> usize {
     const ONES: u64 = u64::from_le_bytes([1; 8]);
-    let count = |bytes: &[u8]| bytes.iter().filter(|&&c| c == b'\r').count();
-    let mut words = text.chunks_exact(8);
-    let (mut crs, mut high) = (0, 0);
-    for word in &mut words {
-        let raw = u64::from_le_bytes(word.try_into().expect("8 bytes"));
-        high |= raw;
+    const LOW: u64 = ONES * 0x7f;
+    let (rest, last) = match text.split_last() {
+        Some((b'\r', rest)) => (rest, 1),
+        _ => (text, 0),
+    };
+    let count = || rest.iter().filter(|&&c| c == b'\r').count() + last;
+    let crs = |raw: u64| {
         let x = raw ^ (ONES * u64::from(b'\r'));
-        if x.wrapping_sub(ONES) & !x & (ONES * 0x80) != 0 {
-            crs += count(word);
-        }
+        !(((x & LOW) + LOW) | x | LOW)
+    };
+    let n = rest.len();
+    if n < 8 {
+        return count();
     }
-    let rest = words.remainder();
-    let ascii = high & (ONES * 0x80) == 0 && rest.is_ascii();
-    (crs + count(rest), ascii)
+    let word = |at: usize| u64::from_le_bytes(rest[at..at + 8].try_into().expect("8 bytes"));
+    let mut found = 0;
+    let mut at = 0;
+    while at + 8 <= n {
+        found |= crs(word(at));
+        at += 8;
+    }
+    let tail = n - at;
+    if tail > 0 {
+        found |= crs(word(n - 8)) >> (8 * (8 - tail));
+    }
+    if found == 0 {
+        last
+    } else {
+        count()
+    }
 }
 
 /// TG703's message.
@@ -89,31 +114,38 @@ mod tests {
     use super::super::testing::{findings, iso_mill};
     use super::carriage_returns;
 
-    /// The CRs counted 8 bytes at a time as one at a time, and the text found ASCII as
-    /// `is_ascii` finds it: CRs at every place of texts of 0 to 24 bytes, none, one, several,
-    /// beside bytes one above and below a CR, 0x7F, 0x80, 0x8D and 0xFF.
+    /// The CRs counted 8 bytes at a time as one at a time: CRs at every place of texts of 0
+    /// to 24 bytes, none, one, several, beside bytes one above and below a CR, 0x7F, 0x80,
+    /// 0x8D and 0xFF.
     #[test]
     fn a_block_s_crs_are_counted_eight_bytes_at_a_time_as_one_at_a_time() {
         let exact = |t: &[u8]| t.iter().filter(|&&c| c == b'\r').count();
         for fill in [b'X', b'\x0c', b'\x0e', 0x7f, 0x80, 0x8d, 0xff, 0] {
             for len in 0..=24 {
-                for mask in [0u32, 1, 0b101, 0x00ff_ffff, 0x0080_0001, 0x0012_3456] {
+                for mask in [
+                    0u32,
+                    1,
+                    0b101,
+                    0x00ff_ffff,
+                    0x0080_0001,
+                    0x0012_3456,
+                    0x0080_0000,
+                ] {
                     let text: Vec<u8> = (0..len)
                         .map(|i| if mask >> i & 1 == 1 { b'\r' } else { fill })
                         .collect();
-                    let ascii = text.is_ascii();
-                    assert_eq!(carriage_returns(&text), (exact(&text), ascii), "{text:?}");
+                    assert_eq!(carriage_returns(&text), exact(&text), "{text:?}");
                 }
             }
         }
-        assert_eq!(carriage_returns(b"N10 G01 X1.5 Y2.25 F100.\r"), (1, true));
-        // one byte with its high bit set at each place of an ASCII text, in a word of 8 or in
-        // the rest: the text is not ASCII
+        assert_eq!(carriage_returns(b"N10 G01 X1.5 Y2.25 F100.\r"), 1);
+        // one CR at each place of texts of 1 to 24 bytes: counted once, in a word of 8 or in
+        // the last bytes read again
         for len in 1..=24 {
             for at in 0..len {
                 let mut text = vec![b'X'; len];
-                text[at] = 0xc3;
-                assert_eq!(carriage_returns(&text), (0, false), "{len} {at}");
+                text[at] = b'\r';
+                assert_eq!(carriage_returns(&text), 1, "{len} {at}");
             }
         }
     }

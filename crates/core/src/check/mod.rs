@@ -350,6 +350,9 @@ pub struct Stats {
 pub struct BlockView<'a> {
     pub line: usize,
     pub text: &'a [u8],
+    /// `text` holds no byte above 0x7F (`text.is_ascii()`): found once a line by its reader,
+    /// and asked by the rules that count characters or look for bytes outside ASCII.
+    pub ascii: bool,
     pub words: &'a [Word<'a>],
     pub skip: bool,
     /// The 1-based column of a block skip `/` in the middle of the block (Fanuc, Haas): the
@@ -977,6 +980,13 @@ impl Checker {
         std::mem::take(&mut self.found)
     }
 
+    /// The findings made since the last call, handed over one by one with the list's
+    /// allocation kept for the next: a report written as the lines are checked asks after
+    /// every line, and [`Checker::take`] gave the list away each time one had a finding.
+    pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
+        self.found.drain(..)
+    }
+
     pub fn enabled(&self, rule: Rule) -> bool {
         self.selection.enabled(rule)
     }
@@ -1080,6 +1090,7 @@ impl Checker {
             self.block(&BlockView {
                 line,
                 text,
+                ascii,
                 words: &words,
                 skip: false,
                 skip_within: None,
@@ -1104,6 +1115,7 @@ impl Checker {
         self.block(&BlockView {
             line,
             text,
+            ascii,
             words: &words,
             skip: e.skip != 0,
             skip_within: e.skip_within.map(|(offset, _)| at(offset)),
@@ -1131,18 +1143,25 @@ impl Checker {
     /// Check one block (after the tokenizer's reading), and keep the backplot's facts of it
     /// where the path is recorded.
     pub fn block(&mut self, b: &BlockView<'_>) {
+        debug_assert_eq!(
+            b.ascii,
+            b.text.is_ascii(),
+            "line {}: the view's ASCII",
+            b.line
+        );
         self.drawn_block(b);
     }
 
-    /// Asked before line `line` is read: whether the control never reads it
-    /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
-    /// holds program text.
     /// How the program in hand has ended so far: the line of its M02/M30 (0: none yet), and
     /// whether it returned as a subprogram (M99; a SINUMERIK's M17 or RET; an Okuma's RTS).
     pub fn part_end(&self) -> (usize, bool) {
         (self.ended_line, self.sub_ended)
     }
 
+    /// Asked before line `line` is read: whether the control never reads it
+    /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
+    /// holds program text.
+    #[inline]
     pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
         if !self.reading_end.skips(line, text) {
             return false;
@@ -1175,7 +1194,13 @@ impl Checker {
                 text = rest;
             }
         }
-        if !self.outside_ascii_noted && !text.is_ascii() {
+        // (the line's own test, but for the text after a byte order mark)
+        let ascii = if text.len() == b.text.len() {
+            b.ascii
+        } else {
+            text.is_ascii()
+        };
+        if !self.outside_ascii_noted && !ascii {
             self.outside_ascii(b.line, b.text, b.text.len() - text.len());
         }
         self.last_line = b.line;

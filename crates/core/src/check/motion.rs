@@ -725,16 +725,12 @@ impl Checker {
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
         // (the diameter asked first: the 128-bit product only where it is one)
         let diameter = self.x_diameter();
+        // (the test inlined, four times an arc; the halving out of line)
         let half = |axis: u8, d: Dec| {
-            if !(diameter && axis == b'X') {
-                return d;
-            }
-            match d.mantissa.checked_mul(5) {
-                Some(mantissa) if d.scale < 38 => Dec {
-                    mantissa,
-                    scale: d.scale + 1,
-                },
-                _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
+            if diameter && axis == b'X' {
+                half_of(d)
+            } else {
+                d
             }
         };
         // an end point not known (a value set by a parameter, a word the control refuses):
@@ -919,7 +915,11 @@ impl Checker {
             self.report(Rule::ArcCrossesQuadrant, message, line, column);
         }
         if helix > 0 {
-            let message = format!("helical arc: {} moves with the arc", third as char);
+            // (said of every helical block of a 3D program: built without the formatter)
+            let mut message = String::with_capacity(33);
+            message.push_str("helical arc: ");
+            message.push(char::from(third));
+            message.push_str(" moves with the arc");
             self.report(Rule::HelicalArc, message, line, helix);
         }
     }
@@ -939,6 +939,9 @@ impl Checker {
     /// The arc centre in the plane, as the profile reads I J K (7.3): incremental from the
     /// start point, absolute, or sign-less for a quadrant-limited control -- then the signs
     /// that put the centre where the radii agree and the arc stays in one quadrant.
+    /// (The two readings by a sum inlined where they are asked, once an arc; the quadrant
+    /// search out of line.)
+    #[inline]
     pub(super) fn centre(
         &self,
         start: (f64, f64),
@@ -950,10 +953,24 @@ impl Checker {
         let (sx, sy) = start;
         let (ci, cj) = ij;
         match self.config.ijk {
-            Ijk::Absolute => return (ci, cj),
-            Ijk::Incremental => return (sx + ci, sy + cj),
-            Ijk::Quadrant => {}
+            Ijk::Absolute => (ci, cj),
+            Ijk::Incremental => (sx + ci, sy + cj),
+            Ijk::Quadrant => self.quadrant_centre(start, end, ij, clockwise, scale),
         }
+    }
+
+    /// [`Checker::centre`] of a quadrant-limited control: the signs of I J that fit best.
+    #[inline(never)]
+    fn quadrant_centre(
+        &self,
+        start: (f64, f64),
+        end: (f64, f64),
+        ij: (f64, f64),
+        clockwise: bool,
+        scale: f64,
+    ) -> (f64, f64) {
+        let (sx, sy) = start;
+        let (ci, cj) = ij;
         let mut best = (sx, sy);
         let mut best_key: Option<(bool, bool, f64)> = None;
         for si in [1.0, -1.0] {
@@ -1021,6 +1038,19 @@ pub fn in_one_quadrant(
     } else {
         let bottom = ((a1 + eps) / 90.0).floor() * 90.0;
         a1 + sweep <= bottom + 90.0 + eps
+    }
+}
+
+/// Half a lathe's diameter `d` (exact: 5 tenths of it), or its float half where the mantissa
+/// or the scale would overflow.
+#[inline(never)]
+fn half_of(d: Dec) -> Dec {
+    match d.mantissa.checked_mul(5) {
+        Some(mantissa) if d.scale < 38 => Dec {
+            mantissa,
+            scale: d.scale + 1,
+        },
+        _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
     }
 }
 

@@ -255,10 +255,17 @@ impl Checker {
     ///
     /// A label (`G98 L1 *`) forgets them all: a jump (D09 to D12) or a repeat (`L1,3`) may come
     /// back to it with other values, and `Q1 = Q1 + 1` after it would be known wrongly.
+    #[inline]
     pub(super) fn formulas(&mut self, b: &BlockView<'_>) {
-        if self.config.family != Family::Heidenhain {
-            return;
+        // (the family's test inlined where it is asked, once a block)
+        if self.config.family == Family::Heidenhain {
+            self.heidenhain_formulas(b);
         }
+    }
+
+    /// [`Checker::formulas`] on a HEIDENHAIN.
+    #[inline(never)]
+    fn heidenhain_formulas(&mut self, b: &BlockView<'_>) {
         let label = b
             .words
             .iter()

@@ -68,19 +68,14 @@ fn polar_point(from: [f64; 2], radius: f64, angle: f64) -> [f64; 2] {
 impl Checker {
     /// What the block's forms make of the position the modal state gave it (`before`: the
     /// state before the block).
+    #[inline]
     pub(super) fn programmed_forms(&mut self, b: &BlockView<'_>, before: &Before) {
         self.polar_arc = false;
         self.opening_arc = false;
+        // (inlined where it is asked, once a block: the family's test, LinuxCNC's two codes;
+        // a SINUMERIK's forms out of line)
         match self.config.family {
-            Family::Sinumerik => {
-                self.sinumerik_diameter(b, before);
-                // (only a centre word, I J K, can be `I=AC(..)` or `I=IC(..)`)
-                if self.letters & (bit(b'I') | bit(b'J') | bit(b'K')) != 0 {
-                    self.sinumerik_centre(b, before);
-                }
-                self.sinumerik_polar(b, before);
-                self.opening_angle(b, before);
-            }
+            Family::Sinumerik => self.sinumerik_forms(b, before),
             Family::LinuxCnc => {
                 // G7 lathe diameter mode, G8 radius mode (LinuxCNC G-code reference, "G7
                 // Lathe Diameter Mode", "G8 Lathe Radius Mode"): X is a diameter, I K are not
@@ -94,6 +89,18 @@ impl Checker {
             Family::Heidenhain => self.heidenhain_distance(b, before),
             _ => {}
         }
+    }
+
+    /// [`Checker::programmed_forms`] on a SINUMERIK.
+    #[inline(never)]
+    fn sinumerik_forms(&mut self, b: &BlockView<'_>, before: &Before) {
+        self.sinumerik_diameter(b, before);
+        // (only a centre word, I J K, can be `I=AC(..)` or `I=IC(..)`)
+        if self.letters & (bit(b'I') | bit(b'J') | bit(b'K')) != 0 {
+            self.sinumerik_centre(b, before);
+        }
+        self.sinumerik_polar(b, before);
+        self.opening_angle(b, before);
     }
 
     /// The plane's two axes at `end` (a polar move's or an arc's end point), or unknown where
@@ -362,6 +369,7 @@ impl Checker {
     /// or G91 is read in the mode in force before it. A circle centre I J K under G91 is an
     /// increment from the last programmed point ("G29 ... incremental: relative to the last
     /// programmed position"), kept absolute as the CC; from an unknown point it is unknown.
+    #[inline(never)]
     fn heidenhain_distance(&mut self, b: &BlockView<'_>, before: &Before) {
         // a polar move, a new coordinate system or the blank form: the modal state follows no
         // axis word of it (ModalMachine::moved)

@@ -319,6 +319,7 @@ pub(super) fn goto_words(upper: &[u8]) -> Option<(usize, &[u8], &[u8])> {
 
 impl Checker {
     /// A SINUMERIK block's label and block number, its declared names and its jump.
+    #[inline(never)]
     fn sinumerik_targets(&mut self, b: &super::BlockView<'_>) {
         if let Some(w) = b
             .words
@@ -373,21 +374,38 @@ impl Checker {
     }
 
     /// The block's sequence number, and the blocks its words and its GOTO name.
+    #[inline]
     pub(super) fn targets(&mut self, b: &super::BlockView<'_>) {
-        if self.config.family == crate::lex::Family::Sinumerik {
-            self.sinumerik_targets(b);
-            return;
+        // (the family's test inlined where it is asked, once a block; the reading out of line)
+        match self.config.family {
+            crate::lex::Family::Sinumerik => self.sinumerik_targets(b),
+            crate::lex::Family::MacroB => self.macro_b_targets(b),
+            _ => {}
         }
-        if self.config.family != crate::lex::Family::MacroB {
-            return;
-        }
-        if let Some(n) = b
-            .words
-            .iter()
-            .find(|w| w.letter == b'N' && w.expression.is_empty())
-            .and_then(|w| crate::text::digits_value(w.number))
-        {
-            self.targets.label(n);
+    }
+
+    /// [`Checker::targets`] on a Custom Macro B control (Fanuc, Haas).
+    #[inline(never)]
+    fn macro_b_targets(&mut self, b: &super::BlockView<'_>) {
+        // (a block with no N word, as the letters say, is not walked for one; a plain N
+        // word's digits are the value its reader kept, `Word::value`, without a point)
+        if self.letters & crate::modal::bit(b'N') != 0 {
+            if let Some(n) = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'N' && w.expression.is_empty())
+                .and_then(|w| {
+                    debug_assert_eq!(
+                        w.value.filter(|_| !w.point),
+                        crate::text::digits_value(w.number),
+                        "line {}: an N word's kept digits",
+                        b.line
+                    );
+                    w.value.filter(|_| !w.point)
+                })
+            {
+                self.targets.label(n);
+            }
         }
         // the words the block's codes make name a block (`Checker::named_words`, read with
         // the block's words: a block of statements only names none)

@@ -475,6 +475,7 @@ mod tests {
             let b = BlockView {
                 line: 1,
                 text: text.as_bytes(),
+                ascii: text.is_ascii(),
                 words: &words,
                 skip: false,
                 skip_within: None,
