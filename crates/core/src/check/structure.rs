@@ -431,13 +431,14 @@ impl Checker {
     /// ([`Checker::linuxcnc_named_reads`]), with the column given.
     fn linuxcnc_undefined_read(&mut self, text: &[u8], column: usize) -> Option<(Vec<u8>, usize)> {
         let mut at = 0;
-        while let Some(found) = text[at..].iter().position(|&c| c == b'#') {
+        // memchr: a CAM program scaling its axes by parameters reads two names in every line
+        while let Some(found) = memchr::memchr(b'#', &text[at..]) {
             let start = at + found;
             if text.get(start + 1) != Some(&b'<') {
                 at = start + 1;
                 continue;
             }
-            let close = start + 2 + text[start + 2..].iter().position(|&c| c == b'>')?;
+            let close = start + 2 + memchr::memchr(b'>', &text[start + 2..])?;
             at = close + 1;
             let written = &text[start + 2..close];
             if self
