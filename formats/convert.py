@@ -180,8 +180,13 @@ class Converter:
             "source_detected": options.source is None,
             "source_units_given": options.from_units is not None,
             # a word the source reads in lower case, written for a target that reads only
-            # upper case (review 16c, finding 5)
-            "upper_case": self.source.dialect.lowercase and not self.target.dialect.lowercase,
+            # upper case (review 16c, finding 5); a Haas reads its program number's `o`
+            # (`o40001`, NGC manual 5.3.1) and no other lower-case address
+            "upper_case": not self.target.dialect.lowercase
+            and (
+                self.source.dialect.lowercase
+                or (self.source.dialect.family == "haas" and self.target.dialect.family != "haas")
+            ),
             "read_units": self.read_units,
         }
 

@@ -494,3 +494,17 @@ def test_a_lower_case_expression_is_written_in_upper_case_and_verified(tmp_path)
 def test_a_target_that_reads_lower_case_keeps_the_words_as_written():
     text = f"{NGC}g0 x0 y0 z5.\ng1 x2.5 f100\nm2\n"
     assert "g1 x2.5 f100" in convert(text, "linuxcnc", "linuxcnc")
+
+
+def test_a_haas_lower_case_program_number_is_written_upper_case_for_another_control():
+    """A Haas reads `o40001` as its program number (NGC manual 5.3.1: "The letter O, or o"),
+    a FANUC reads no lower-case address: the `o` was carried as written and the output drew
+    TG101 on its own profile. Written `O40001`; a Haas target keeps the `o`."""
+    from postproc.check import check_text
+
+    target = "fanuc-mill"
+    text = "o40001 (part)\nG21 G90 G17\nG0 X1. Y2.\nM30\n"
+    out = convert(text, "haas-mill", target)
+    assert "O40001 (part)" in out and "o40001" not in out, out
+    assert [f for f in check_text(out, load_profile(target)) if f.rule == "TG101"] == []
+    assert "o40001 (part)" in convert(text, "haas-mill", "haas-mill")
