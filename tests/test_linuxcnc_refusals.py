@@ -134,6 +134,11 @@ REFUSED = [
     ("G0 X#<nope>", "TG412", 3, "Named parameter #<nope> not defined"),
     ("o1 if [#<nope> GT 0]\no1 endif", "TG412", 3, "Named parameter #<nope> not defined"),
     ("G0 X#<x> #<x>=1", "TG412", 3, "Named parameter #<x> not defined"),
+    # a name read before is remembered as its bytes: one of the same length (packed into
+    # one integer up to 8 bytes) or the same first 8 bytes is another name
+    ("#<ab> = 1\nG0 X#<ab>\nG0 X#<ba>", "TG412", 5, "Named parameter #<ba> not defined"),
+    ("#<scale_xy_1> = 1\nG0 X[#<scale_xy_1>*2]\nG0 X[#<scale_xy_2>*2]", "TG412", 5,
+     "Named parameter #<scale_xy_2> not defined"),
     ("o<s> sub\n#<q> = 1\no<s> endsub\no<s> call\nG0 X#<q>", "TG412", 7,
      "Named parameter #<q> not defined"),
     # after a definition, a call, a closed condition or loop, or M73 in the main program,

@@ -792,8 +792,10 @@ pub struct Checker {
     /// them) the main program has assigned so far (`Checker::linuxcnc_named_reads`).
     linuxcnc_named: HashSet<Vec<u8>>,
     /// Up to eight names, as written, found among `linuxcnc_named` or global: a CAM program's
-    /// `Z[#<zscale>*..]` on every line compared by its bytes, not normalized and hashed.
-    linuxcnc_named_seen: Vec<Vec<u8>>,
+    /// `Z[#<zscale>*..]` on every line compared by its bytes, not normalized and hashed. Each
+    /// as its first 8 bytes packed in one integer and its length, so that a name of up to 8
+    /// bytes is compared as one integer, and a longer one's bytes.
+    linuxcnc_named_seen: Vec<(u64, usize, Vec<u8>)>,
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
     /// inside one runs depends on values the checker does not follow, so what rs274 refuses

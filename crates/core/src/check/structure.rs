@@ -9,6 +9,30 @@ use crate::rules::Rule;
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
 
+/// The first `#` of `text` from `from`: 8 bytes at a time (a zero-byte mask of the bytes
+/// XOR `#`), the last few one by one. A bracketed expression is a few dozen bytes, where
+/// memchr's dispatch and `position`'s byte loop both cost more; the lowest flagged byte of
+/// the mask is exact (a false flag is only ever above a true one).
+#[inline]
+fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGHS: u64 = 0x8080_8080_8080_8080;
+    while let Some(chunk) = text.get(from..from + 8) {
+        let mut bytes = [0u8; 8];
+        bytes.copy_from_slice(chunk);
+        let x = u64::from_le_bytes(bytes) ^ (ONES * u64::from(b'#'));
+        let found = x.wrapping_sub(ONES) & !x & HIGHS;
+        if found != 0 {
+            return Some(from + (found.trailing_zeros() / 8) as usize);
+        }
+        from += 8;
+    }
+    text.get(from..)?
+        .iter()
+        .position(|&c| c == b'#')
+        .map(|at| from + at)
+}
+
 impl Checker {
     pub fn unreadable(&mut self, block: &Unreadable<'_>) {
         self.stats.blocks += 1;
@@ -430,27 +454,43 @@ impl Checker {
     /// The first local named parameter `text` reads that the main program has not assigned
     /// ([`Checker::linuxcnc_named_reads`]), with the column given.
     fn linuxcnc_undefined_read(&mut self, text: &[u8], column: usize) -> Option<(Vec<u8>, usize)> {
-        let mut at = 0;
-        // memchr: a CAM program scaling its axes by parameters reads two names in every line
-        while let Some(found) = memchr::memchr(b'#', &text[at..]) {
-            let start = at + found;
+        // one pass over the bytes, without memchr, whose dispatch costs more than the few
+        // dozen bytes of a word's expression (`[#<yscale>*-56.12]`, two in every line of a
+        // CAM program scaling its axes by parameters): a `#` looked for 8 bytes at a time
+        // (`next_hash`), a name's first 8 bytes packed into one integer on the way to its
+        // `>`, to be compared with the names seen as one
+        let mut i = 0;
+        while let Some(start) = next_hash(text, i) {
             if text.get(start + 1) != Some(&b'<') {
-                at = start + 1;
+                i = start + 1;
                 continue;
             }
-            let close = start + 2 + memchr::memchr(b'>', &text[start + 2..])?;
-            at = close + 1;
+            let mut close = start + 2;
+            let mut key = 0u64;
+            while text.get(close).is_some_and(|&c| c != b'>') {
+                if close - start - 2 < 8 {
+                    key = key << 8 | u64::from(text[close]);
+                }
+                close += 1;
+            }
+            if close == text.len() {
+                return None;
+            }
+            i = close + 1;
             let written = &text[start + 2..close];
-            if self
-                .linuxcnc_named_seen
-                .iter()
-                .any(|seen| seen.as_slice() == written)
-            {
+            if self.linuxcnc_named_seen.iter().any(|(k, len, long)| {
+                *k == key && *len == written.len() && (*len <= 8 || long.as_slice() == written)
+            }) {
                 continue;
             }
             if self.linuxcnc_name_known(written) {
                 if self.linuxcnc_named_seen.len() < 8 {
-                    self.linuxcnc_named_seen.push(written.to_vec());
+                    let long = if written.len() > 8 {
+                        written.to_vec()
+                    } else {
+                        Vec::new()
+                    };
+                    self.linuxcnc_named_seen.push((key, written.len(), long));
                 }
                 continue;
             }
@@ -1027,6 +1067,23 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
+
+    #[test]
+    fn next_hash_finds_the_first_hash_in_and_after_the_chunks_of_eight() {
+        use super::next_hash;
+        let text = b"[#<yscale>*-56.12]";
+        assert_eq!(next_hash(text, 0), Some(1));
+        assert_eq!(next_hash(text, 2), None);
+        // in the second chunk, in the tail after the chunks, and the first of two in a chunk
+        assert_eq!(next_hash(b"abcdefgh#", 0), Some(8));
+        assert_eq!(next_hash(b"abcdefghijk#", 3), Some(11));
+        assert_eq!(next_hash(b"ab#cd#gh", 0), Some(2));
+        assert_eq!(next_hash(b"ab#cd#gh", 3), Some(5));
+        // a byte just below or above `#` in the chunk is not taken for one
+        assert_eq!(next_hash(b"\"$\"$\"$\"$#", 0), Some(8));
+        assert_eq!(next_hash(b"", 0), None);
+        assert_eq!(next_hash(b"abc", 3), None);
+    }
 
     fn without_percent() -> Config {
         Config {

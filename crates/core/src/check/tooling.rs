@@ -109,6 +109,16 @@ fn linuxcnc_read_expression(w: &crate::word::Word<'_>) -> Option<(String, u8)> {
     }
 }
 
+/// Whether an expression has a `/`: a plain loop over its bytes, which costs a CAM program's
+/// `Z[#<zscale>*-25.372]` (two in every line) about half what `contains` does, whose word-wise
+/// search pays its set-up on a slice of a few dozen bytes (callgrind: 3D_Chips about 50
+/// instructions a block fewer, with the call it saves).
+#[allow(clippy::manual_contains)]
+#[inline]
+fn has_slash(expression: &[u8]) -> bool {
+    expression.iter().any(|&c| c == b'/')
+}
+
 /// The value of a LinuxCNC expression's tree (from [`crate::expr::tree`]) written with numbers
 /// alone, computed in doubles as rs274ngc computes it: Err for a division by zero anywhere in
 /// it (the operands of a function, a power or `MOD` included), None where a parameter, a
@@ -766,9 +776,11 @@ impl Checker {
                 }
             }
             let value = self.readable[i];
+            // (only a `/` or an M word's expression can be refused: looked at here first)
             if value.is_none()
                 && !w.expression.is_empty()
                 && read_refusal.is_none()
+                && (w.letter == b'M' || has_slash(w.expression))
                 && self.linuxcnc_runs_surely()
             {
                 read_refusal = linuxcnc_read_expression(w);
