@@ -543,6 +543,39 @@ def test_sinumerik_expressions_of_constants_are_known():
     assert not [f for f in found if f.severity == "error" and f.rule != "TG602"], found
 
 
+SINUMERIK_JUMPS_IN_ONE_BLOCK = """PROC DRILL(REAL DP, REAL DPR)
+DEF REAL HH2
+HH2=DP-DPR
+IF DP==0 GOTOF _MM0 IF DP==HH2 GOTOF _MM1
+G0 X1
+_MM0: G0 X2
+_MM1: G0 X3
+if dpr>=1 gotof _MM2 IF DPR<0 GOTOF _MM9 ; two
+_MM2: G0 X4
+RET
+"""
+
+
+def test_sinumerik_reads_several_conditional_jumps_in_one_block():
+    """Siemens' own cycles (CYCLE81, CYCLE82, CYCLE84, HOLES1, HOLES2) write two or three
+    conditional jumps in one block, `IF DP==0 GOTOF _MM0 IF DP==HH2 GOTOF _MM1`: each IF is a
+    statement of its own, reprinted as written, and each destination is checked (TG118 where a
+    GOTOF finds none after it). Any other word after a jump's destination is still refused."""
+    read = blocks(SINUMERIK_JUMPS_IN_ONE_BLOCK, "sinumerik-840d")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == SINUMERIK_JUMPS_IN_ONE_BLOCK
+    assert [s[1:] for s in read[3].statements] == [
+        ("IF DP==0 GOTOF _MM0", "flow"), ("IF DP==HH2 GOTOF _MM1", "flow")]
+    found = findings(SINUMERIK_JUMPS_IN_ONE_BLOCK, "sinumerik-840d")
+    errors = [(f.rule, f.line, f.column) for f in found if f.severity == "error"]
+    assert errors == [("TG118", 8, 31)], found  # the GOTOF to _MM9, nowhere after line 8
+    for bad, column in [("IF DP==0 GOTOF _MM0 G0 X5", 21), ("IF DP==0 GOTOF _MM0 IF DP==1", 21)]:
+        text = SINUMERIK_JUMPS_IN_ONE_BLOCK.replace(
+            "IF DP==0 GOTOF _MM0 IF DP==HH2 GOTOF _MM1", bad)
+        assert ("TG100", 4, column) in [(f.rule, f.line, f.column) for f in findings(
+            text, "sinumerik-840d")], bad
+
+
 def test_sinumerik_variables_set_to_constants_are_known():
     """_FEED=R1*2 (a user variable, any case) is 40000 where F=_feed reads it: TG602; after a
     call (CYCLE832) it is unknown again, and an element or system variable is never known."""

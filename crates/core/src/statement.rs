@@ -1993,20 +1993,32 @@ const SINUMERIK_JUMPS: [&[u8]; 4] = [b"GOTOF", b"GOTOB", b"GOTO", b"GOTOC"];
 
 /// The end of an `IF`, `WHILE` or `UNTIL` statement whose keyword ends at `keyword_end`: its
 /// condition read into the expression tree, then (after `IF`) a jump and its target, and the
-/// end of the statement (a `;` comment may follow).
+/// end of the statement (a `;` comment may follow, or, after a jump's target, the next
+/// conditional jump's `IF`).
 fn siemens_condition(
     line: &[u8],
     keyword: &[u8],
     keyword_end: usize,
     dialect: &Dialect,
 ) -> Result<usize, LexError> {
+    siemens_condition_jump(line, keyword, keyword_end, dialect).map(|(end, _)| end)
+}
+
+/// [`siemens_condition`], and whether the statement is a conditional jump (`IF .. GOTOF L`).
+fn siemens_condition_jump(
+    line: &[u8],
+    keyword: &[u8],
+    keyword_end: usize,
+    dialect: &Dialect,
+) -> Result<(usize, bool), LexError> {
     let statement_end = rest_end(line, keyword_end, dialect, false);
     let text = &line[..statement_end];
     let mut end = siemens_expression(text, skip_blanks(text, keyword_end))?;
     let next = skip_blanks(text, end);
     let word = ident_end(text, next);
     let jump = text[next..word].to_ascii_uppercase();
-    if keyword == b"IF" && SINUMERIK_JUMPS.contains(&jump.as_slice()) {
+    let jumped = keyword == b"IF" && SINUMERIK_JUMPS.contains(&jump.as_slice());
+    if jumped {
         let target = skip_blanks(text, word);
         end = ident_end(text, target);
         if end == target {
@@ -2020,27 +2032,56 @@ fn siemens_condition(
                 "Sinumerik",
             ));
         }
+        // another conditional jump in the same block (`IF DP==0 GOTOF _MM0 IF DP==HH2 GOTOF
+        // _MM1`, Siemens' own CYCLE81/82/84, HOLES1/HOLES2): the control tests them in turn;
+        // the next `IF` is read as a statement of its own, and must be a jump too (an IF
+        // that opens an IF ... ENDIF after a jump is not a form the cycles show)
+        let next_if = skip_blanks(text, end);
+        let next_end = ident_end(text, next_if);
+        if text[next_if..next_end].eq_ignore_ascii_case(b"IF") {
+            let (_, also_jumps) = siemens_condition_jump(line, b"IF", next_end, dialect)?;
+            if !also_jumps {
+                return Err(err(
+                    ErrorKind::Expression,
+                    format!(
+                        "after {}'s destination an IF must be another conditional jump \
+                         (IF .. GOTOF/GOTOB/GOTO/GOTOC)",
+                        String::from_utf8_lossy(&jump)
+                    ),
+                    next_if,
+                    "Sinumerik",
+                ));
+            }
+            return Ok((end, true));
+        }
     }
     let after = skip_blanks(text, end);
     if after < statement_end {
-        let what = if keyword == b"IF" {
-            "an operator, GOTOF/GOTOB/GOTO/GOTOC or the end of the block"
+        let what = if jumped {
+            format!(
+                "after {}'s destination expected another conditional jump (IF) or the end of \
+                 the block",
+                String::from_utf8_lossy(&jump)
+            )
+        } else if keyword == b"IF" {
+            "after the IF condition expected an operator, GOTOF/GOTOB/GOTO/GOTOC or the end \
+             of the block"
+                .to_string()
         } else {
-            "an operator or the end of the block"
+            format!(
+                "after the {} condition expected an operator or the end of the block",
+                String::from_utf8_lossy(keyword)
+            )
         };
         let (c, _) = crate::text::Char::at(text, after);
         return Err(err(
             ErrorKind::Expression,
-            format!(
-                "after the {} condition expected {what}, found {}",
-                String::from_utf8_lossy(keyword),
-                c.repr()
-            ),
+            format!("{what}, found {}", c.repr()),
             after,
             "Sinumerik",
         ));
     }
-    Ok(end)
+    Ok((end, jumped))
 }
 
 // -- Heidenhain TNC, ISO mode -------------------------------------------------------------------
@@ -2911,6 +2952,26 @@ mod tests {
         assert!(read("N80 IF R1 > AND 2", s)
             .unwrap_err()
             .ends_with("found the operator AND@12"));
+        // several conditional jumps in one block (Siemens' CYCLE81: `IF DP==0 GOTOF _MM0 IF
+        // DP==HH2 GOTOF _MM1`): each IF one statement; any other word after a jump's
+        // destination is still refused
+        assert_eq!(
+            statements("N90 IF DP==0 GOTOF _MM0 if DP==HH2 gotob N10 ; two", s),
+            [
+                ("IF DP==0 GOTOF _MM0".to_string(), Kind::Flow),
+                ("if DP==HH2 gotob N10".to_string(), Kind::Flow)
+            ]
+        );
+        assert!(read("N91 IF R1==1 GOTOF L1 G0 X5", s)
+            .unwrap_err()
+            .contains("after GOTOF's destination expected another conditional jump (IF) or the end of the block, found 'G'@22"));
+        assert!(read("N92 IF R1==1 GOTOF L1 IF R2==2", s)
+            .unwrap_err()
+            .ends_with("an IF must be another conditional jump (IF .. GOTOF/GOTOB/GOTO/GOTOC)@22"));
+        assert!(read("N94 IF R1==1 GOTOF L1 IF R2==2 GOTOC L2 IF R3 GOTO N10", s).is_ok());
+        assert!(read("N93 IF R1==1 GOTOF L1 IFX", s)
+            .unwrap_err()
+            .ends_with("found 'I'@22"));
         // R0 is a SINUMERIK's first R parameter (machine data 28050)
         assert!(read("R0=1", s).is_ok());
         assert!(read("R0=R1*2", s).is_ok());
