@@ -777,7 +777,31 @@ impl ModalMachine {
         }
     }
 
+    /// The mode G code `g` sets. G00-G03, the motion codes of nearly every block that has a
+    /// G word, inlined where they are asked: the same as [`ModalMachine::g_other`] does with
+    /// them (a lathe's U W move again, no HEIDENHAIN or Okuma code among them, no code of the
+    /// lathes' own motions, [`ModalSettings::own_motion`]), without the call and its tests of
+    /// the family.
+    #[inline]
     fn g(&mut self, g: i64) {
+        if !matches!(g, 0..=3) {
+            return self.g_other(g);
+        }
+        if self.settings.g_system == GCodeSystem::A && self.settings.lacks(g) {
+            return;
+        }
+        if self.settings.fanuc_lathe || self.settings.lap {
+            self.uw_moves = true;
+        }
+        debug_assert!(!self.settings.own_motion(g));
+        self.state.motion = Some(g);
+        self.state.cycle = None;
+    }
+
+    /// [`ModalMachine::g`] of any code but G00-G03 (which it also takes, as it did before
+    /// their inlined reading).
+    #[inline(never)]
+    fn g_other(&mut self, g: i64) {
         // (in G code system B or C the codes come read by system A's numbers, the lacked ones
         // as NO_CODE: `BlockValues::in_system`)
         if self.settings.g_system == GCodeSystem::A && self.settings.lacks(g) {
@@ -1119,6 +1143,55 @@ mod tests {
                     let plain = block(&[], &[], &[(b'X', "1")]);
                     m.apply(&plain);
                     assert_eq!(m.taken(), None, "{family:?} after G{g}");
+                }
+            }
+        }
+    }
+
+    /// G00-G03 read inline (`ModalMachine::g`) set what the full reading (`g_other`) sets,
+    /// the modal state and whether a lathe's U W move, on every family and kind of machine,
+    /// G code system A and B, each code lacked or not, from a canned cycle, an arc, a lathe's
+    /// thread and a HEIDENHAIN polar move.
+    #[test]
+    fn the_motion_codes_read_inline_set_what_the_full_reading_sets() {
+        for family in Family::ALL {
+            for (fanuc_lathe, lap, centre_codes) in [
+                (false, false, false),
+                (true, false, false),
+                (false, true, false),
+                (false, false, true),
+            ] {
+                for g_system in [GCodeSystem::A, GCodeSystem::B] {
+                    for lacked in [None, Some(0), Some(1), Some(2), Some(3)] {
+                        for before in [81, 2, 32, 11, 0] {
+                            let mut m = machine();
+                            m.settings.family = family;
+                            m.settings.fanuc_lathe = fanuc_lathe;
+                            m.settings.lap = lap;
+                            m.settings.centre_codes = centre_codes;
+                            m.settings.heidenhain = family == Family::Heidenhain;
+                            m.settings.g_system = g_system;
+                            if let Some(n) = lacked {
+                                m.settings.lacks_g = vec![false; 200];
+                                m.settings.lacks_g[n] = true;
+                            }
+                            m.g_other(before);
+                            for g in 0..=3 {
+                                let (state, uw) = (m.state, m.uw_moves);
+                                m.g(g);
+                                let inline = (m.state, m.uw_moves);
+                                (m.state, m.uw_moves) = (state, uw);
+                                m.g_other(g);
+                                assert_eq!(
+                                    inline,
+                                    (m.state, m.uw_moves),
+                                    "{family:?} lathe {fanuc_lathe} lap {lap} {g_system:?} \
+                                     lacked {lacked:?} G{before} then G{g}"
+                                );
+                                (m.state, m.uw_moves) = (state, uw);
+                            }
+                        }
+                    }
                 }
             }
         }

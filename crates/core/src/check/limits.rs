@@ -263,10 +263,19 @@ impl Checker {
     /// (G54.1, G154, Sinumerik G505-G599) and Sinumerik frames make the profile's values
     /// unknown for good; a tool length offset by a decimal code is noted. Whether the
     /// block's positions can be compared as machine positions (not a G53/G153/SUPA block).
+    /// (The profile's test inlined where it is asked, once a block; the work out of line:
+    /// most profiles give no work offsets.)
+    #[inline]
     pub(super) fn work_offset(&mut self, b: &BlockView<'_>) -> bool {
         if self.config.work_offsets.is_empty() {
             return false;
         }
+        self.work_offset_given(b)
+    }
+
+    /// [`Checker::work_offset`] under a profile that gives work offsets.
+    #[inline(never)]
+    fn work_offset_given(&mut self, b: &BlockView<'_>) -> bool {
         let line = b.line;
         let sinumerik = self.config.family == Family::Sinumerik;
         let axes = crate::modal::axis_places(self.values.given()) != 0;

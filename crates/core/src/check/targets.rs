@@ -379,7 +379,15 @@ impl Checker {
         // (the family's test inlined where it is asked, once a block; the reading out of line)
         match self.config.family {
             crate::lex::Family::Sinumerik => self.sinumerik_targets(b),
-            crate::lex::Family::MacroB => self.macro_b_targets(b),
+            // (a block with no N word, no word its codes make name a block and no statement
+            // -- most blocks of a program not numbered -- has nothing for it: not called)
+            crate::lex::Family::MacroB
+                if self.letters & crate::modal::bit(b'N') != 0
+                    || !self.named.is_empty()
+                    || !b.statements.is_empty() =>
+            {
+                self.macro_b_targets(b)
+            }
             _ => {}
         }
     }
