@@ -367,3 +367,45 @@ def test_g93_still_asks_a_g1_for_its_f_after_a_nurbs(tmp_path):
     text = program("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG1 X3")
     assert [(r, n) for r, n, _ in errors(text)] == [("TG402", 7)]
     assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)
+
+
+# Review 19 (finding 3), each program compared with rs274 -g.
+RS274_RUNS_REVIEW19 = [
+    # the feed mode after a call, an M98 or a G93/G94/G95 in a condition is unsure: TG402 and
+    # the G95 spindle refusal are not judged until the main program sets it unconditionally
+    f"{HEAD}G93\no<s> call\nG1 X1\nM2\no<s> sub\nG94 F100\no<s> endsub\n",
+    f"{HEAD}G93\nM98 P100\nG1 X1\nM2\nO100\nG94 F100\nM99\n",
+    program("o1 if [0]\nG93\no1 endif\nG1 X1"),
+    program("o1 if [0]\nG95\no1 endif\nS0\nG1 X1 F100"),
+    # an F under an unsure mode may or may not set rs274's feed rate (not under G93)
+    program("G93 G1 X1 F1\no1 if [0]\nG94\no1 endif\nF0\nG38.2 X5"),
+    # a definition's body runs under its caller's mode, not the one before its sub
+    program("G93\no<s> sub\nG1 X1\no<s> endsub\nG94 F100\no<s> call"),
+]
+
+
+@pytest.mark.parametrize("text", RS274_RUNS_REVIEW19)
+def test_review19_programs_rs274_runs_have_no_error(tmp_path, text):
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+# (the program, tapegate's rule and line, tapegate's and rs274's words)
+RS274_REFUSES_REVIEW19 = [
+    # a G93 the main program runs unconditionally makes the mode sure again
+    (program("o1 if [0]\nG94\no1 endif\nG93\nG1 X1"), "TG402", 7,
+     "every motion block needs its F", "F word missing with inverse time g1 move"),
+    # a definition's own G93 is its body's mode
+    (program("o<s> sub\nG93\nG1 X1\no<s> endsub\no<s> call"), "TG402", 5,
+     "every motion block needs its F", "F word missing with inverse time g1 move"),
+]
+
+
+@pytest.mark.parametrize("text, rule, line, message, rs274_says", RS274_REFUSES_REVIEW19)
+def test_review19_programs_rs274_refuses(tmp_path, text, rule, line, message, rs274_says):
+    # (beside a TG402, TG401: the condition, call or definition left no feed rate known)
+    found = [f for f in errors(text) if (f[0], f[1]) != ("TG401", line) or rule != "TG402"]
+    assert [(r, n) for r, n, _ in found] == [(rule, line)], found
+    assert message in found[0][2], found
+    assert rs274_says in rs274_output(tmp_path, text)

@@ -809,6 +809,13 @@ pub struct Checker {
     /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
     /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
+    /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
+    /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
+    /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
+    /// in it (review 19). TG402 and the G95 spindle refusal are not judged meanwhile.
+    linuxcnc_definition_mode_unsure: bool,
+    /// LinuxCNC: the labels of the conditions and loops open in the open definition's body.
+    linuxcnc_definition_flow: Vec<Vec<u8>>,
     /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
     /// definition where it stands, so its `endsub` gives it back (review 17).
     linuxcnc_definition_feed: Option<i64>,
@@ -934,6 +941,8 @@ impl Checker {
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_mode_unsure: false,
+            linuxcnc_definition_mode_unsure: false,
+            linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),

@@ -175,6 +175,8 @@ impl Checker {
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_definition_mode_unsure = false;
+        self.linuxcnc_definition_flow.clear();
         self.linuxcnc_definition_feed = None;
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
@@ -234,14 +236,15 @@ impl Checker {
             self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty());
         }
         // (the condition's own reads run, judged above; the lines inside it may not)
-        if self.open_definition.is_none() {
-            for &(_, kind, text) in b.statements {
-                match kind {
-                    Kind::Flow => self.linuxcnc_flow(text),
-                    // the subroutine may set another feed mode, or restore the caller's
-                    Kind::Call => self.linuxcnc_mode_unsure = true,
-                    _ => {}
-                }
+        let main = self.open_definition.is_none();
+        for &(_, kind, text) in b.statements {
+            match (kind, main) {
+                (Kind::Flow, true) => linuxcnc_flow(&mut self.linuxcnc_open_flow, text),
+                (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
+                // the subroutine may set another feed mode, or restore the caller's
+                (Kind::Call, true) => self.linuxcnc_mode_unsure = true,
+                (Kind::Call, false) => self.linuxcnc_definition_mode_unsure = true,
+                _ => {}
             }
         }
         if self.sub_file == SubFile::No {
@@ -392,22 +395,14 @@ impl Checker {
         self.linuxcnc_open_flow.is_empty() && self.open_definition.is_none()
     }
 
-    /// An o-word condition or loop of the main program opened or closed (as
-    /// `dialect::ReadingEnd` follows them): `o1 while` closes the `o1 do` it ends, or opens a
-    /// loop; an `endif`, `endwhile` or `endrepeat` closes its label's block (and any left open
-    /// inside it: rs274 refuses those).
-    fn linuxcnc_flow(&mut self, text: &[u8]) {
-        let Some(keyword) = crate::statement::o_keyword(text) else {
-            return;
-        };
-        let label = crate::statement::o_label(text);
-        let open = self.linuxcnc_open_flow.iter().rposition(|l| *l == label);
-        match (keyword.as_slice(), open) {
-            (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
-                self.linuxcnc_open_flow.truncate(at)
-            }
-            (b"if" | b"do" | b"repeat" | b"while", _) => self.linuxcnc_open_flow.push(label),
-            _ => {}
+    /// LinuxCNC: whether the feed mode in force where the line runs may be another than the
+    /// lines in their order give (`linuxcnc_mode_unsure`, or in a definition's body
+    /// `linuxcnc_definition_mode_unsure`): the rules that read the mode are not judged then.
+    pub(super) fn linuxcnc_feed_mode_unsure(&self) -> bool {
+        if self.open_definition.is_some() {
+            self.linuxcnc_definition_mode_unsure
+        } else {
+            self.linuxcnc_mode_unsure
         }
     }
 
@@ -419,6 +414,9 @@ impl Checker {
         match (statement, &self.open_definition) {
             (Some((true, _)), None) => {
                 self.linuxcnc_definition_feed = Some(self.machine.state.feed_mode);
+                // (its body runs under its caller's mode)
+                self.linuxcnc_definition_mode_unsure = true;
+                self.linuxcnc_definition_flow.clear();
             }
             (Some((false, name)), Some((_, _, open))) if name == open => {
                 if let Some(mode) = self.linuxcnc_definition_feed.take() {
@@ -1057,6 +1055,25 @@ pub fn nested_comment(text: &[u8]) -> usize {
         }
     }
     0
+}
+
+/// An o-word condition or loop opened or closed (as `dialect::ReadingEnd` follows them), in
+/// `open`, the labels of those open (the main program's, or an open definition's body's):
+/// `o1 while` closes the `o1 do` it ends, or opens a loop; an `endif`, `endwhile` or
+/// `endrepeat` closes its label's block (and any left open inside it: rs274 refuses those).
+fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
+    let Some(keyword) = crate::statement::o_keyword(text) else {
+        return;
+    };
+    let label = crate::statement::o_label(text);
+    let at = open.iter().rposition(|l| *l == label);
+    match (keyword.as_slice(), at) {
+        (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+            open.truncate(at)
+        }
+        (b"if" | b"do" | b"repeat" | b"while", _) => open.push(label),
+        _ => {}
+    }
 }
 
 #[cfg(test)]

@@ -827,14 +827,25 @@ impl Checker {
         }
         // the feed mode known again where the main program sets it unconditionally; set in
         // a condition or loop it may or may not be in force after it (review 16c, 17)
-        if self.open_definition.is_none() && codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
-            self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
+        // (in a definition's body, where its own G93/G94/G95 outside its conditions and loops
+        // sets it: review 19)
+        if codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
+            if self.open_definition.is_none() {
+                self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
+            } else {
+                self.linuxcnc_definition_mode_unsure = !self.linuxcnc_definition_flow.is_empty();
+            }
         }
         // (LinuxCNC 2.9's M98 runs a FANUC-style subprogram, which may set another mode)
         if ms.contains(&98) {
             self.linuxcnc_mode_unsure = true;
+            self.linuxcnc_definition_mode_unsure = true;
         }
-        if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
+        if first[usize::from(b'F' - b'A')] != 0 && self.linuxcnc_feed_mode_unsure() {
+            // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
+            // does not know (review 19)
+            self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
+        } else if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
             let at = first[usize::from(b'F' - b'A')] as usize - 1;
             self.linuxcnc_feed_rate = match self.readable[at] {
                 Some(f) if f.is_zero() => LinuxCncFeed::Zero,
