@@ -369,7 +369,7 @@ def test_g93_still_asks_a_g1_for_its_f_after_a_nurbs(tmp_path):
     assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)
 
 
-# Review 19 (finding 3), each program compared with rs274 -g.
+# Review 19 (findings 3 and 4), each program compared with rs274 -g.
 RS274_RUNS_REVIEW19 = [
     # the feed mode after a call, an M98 or a G93/G94/G95 in a condition is unsure: TG402 and
     # the G95 spindle refusal are not judged until the main program sets it unconditionally
@@ -381,6 +381,10 @@ RS274_RUNS_REVIEW19 = [
     program("G93 G1 X1 F1\no1 if [0]\nG94\no1 endif\nF0\nG38.2 X5"),
     # a definition's body runs under its caller's mode, not the one before its sub
     program("G93\no<s> sub\nG1 X1\no<s> endsub\nG94 F100\no<s> call"),
+    # an M2 in a condition resets no mode: the lines after it run where it did not
+    program("G18\no1 if [#5420 GT 100]\nM2\no1 endif\nG0 X0 Z0\nG2 X2 Z0 I1 K0"),
+    # an M2 in a condition never closed: the definition after it is not reached again
+    f"{HEAD}o1 if [1]\no<s> call\nM2\no<s> sub\nG0 X1\no<s> endsub\n",
 ]
 
 
@@ -399,6 +403,16 @@ RS274_REFUSES_REVIEW19 = [
     # a definition's own G93 is its body's mode
     (program("o<s> sub\nG93\nG1 X1\no<s> endsub\no<s> call"), "TG402", 5,
      "every motion block needs its F", "F word missing with inverse time g1 move"),
+    # after an M2 in a condition the lines are judged: they run where it did not (the
+    # condition is false on rs274, #5420 being 0)
+    (program("o1 if [#5420 GT 100]\nM2\no1 endif\nG0 X1\nG0 X#<undefined>"), "TG412", 7,
+     "Named parameter #<undefined> not defined", "Named parameter #<undefined> not defined"),
+    (program("G93\no1 if [#5420 GT 100]\nM2\no1 endif\nG1 X1"), "TG402", 7,
+     "every motion block needs its F", "F word missing with inverse time g1 move"),
+    (program("o<s> sub\nM2\no<s> endsub\nG0 X#<undefined>"), "TG412", 6,
+     "Named parameter #<undefined> not defined", "Named parameter #<undefined> not defined"),
+    (f"{HEAD}o<s> call\no1 if [#5420 GT 100]\nM2\no1 endif\no<s> sub\nG0 X1\no<s> endsub\nM2\n",
+     "TG412", 7, "sub: o|s| found in illegal location", "sub: o|s| found in illegal location"),
 ]
 
 

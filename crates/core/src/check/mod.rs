@@ -631,6 +631,17 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
+    /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
+    /// condition or loop of the main program or inside a definition, which may not run
+    /// (rs274 reads on where it does not: review 19). The rules that judge the main program's
+    /// lines up to its end (a named parameter not yet set, a definition after its call) read
+    /// this, not `ended_line`.
+    surely_ended: bool,
+    /// LinuxCNC: the depth of the main program's open conditions and loops at an M02/M30
+    /// inside one: the lines after it in its block run only where it did not run, and never
+    /// in the rest of its branch; so they are taken as after the end until the block closes
+    /// below that depth (`Checker::main_ended`).
+    linuxcnc_end_depth: Option<usize>,
     after_end_reported: bool,
     closed: bool,
     styles_explicit: bool,
@@ -876,6 +887,8 @@ impl Checker {
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
+            surely_ended: false,
+            linuxcnc_end_depth: None,
             after_end_reported: false,
             closed: false,
             styles_explicit: false,
@@ -1556,6 +1569,10 @@ impl Checker {
             }
             taken
         };
+        // (LinuxCNC: an M2/M30 inside a condition, a loop or a definition may not run, and
+        // the lines after it run only where it did not: it resets no mode; review 19)
+        self.values.end_unsure =
+            self.config.family == Family::LinuxCnc && !self.linuxcnc_runs_surely();
         self.machine.apply_taken(&self.values, taken);
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
@@ -1620,6 +1637,13 @@ impl Checker {
         self.split.ended(ends || returns);
         if ends {
             self.ended_line = b.line;
+            if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {
+                self.surely_ended = true;
+            } else if self.open_definition.is_none() {
+                let depth = self.linuxcnc_open_flow.len();
+                self.linuxcnc_end_depth =
+                    Some(self.linuxcnc_end_depth.map_or(depth, |d| d.min(depth)));
+            }
         }
         if ends || returns {
             // a return the block skip can pass over (`/M99` before an `M30`: a bar feeder's

@@ -142,6 +142,8 @@ impl Checker {
         self.refused_at = None;
         self.programs += 1;
         self.ended_line = 0;
+        self.surely_ended = false;
+        self.linuxcnc_end_depth = None;
         self.sub_ended = false;
         self.after_end_reported = false;
         self.closed = false;
@@ -228,7 +230,7 @@ impl Checker {
         self.definition_open(b, statement.as_ref());
         if statement.is_none()
             && self.open_definition.is_none()
-            && self.ended_line == 0
+            && !self.main_ended()
             && (!b.statements.is_empty() || b.words.iter().any(|w| !w.expression.is_empty()))
         {
             // (inside a condition or loop its assignments count as made, its reads are not
@@ -246,6 +248,13 @@ impl Checker {
                 (Kind::Call, false) => self.linuxcnc_definition_mode_unsure = true,
                 _ => {}
             }
+        }
+        // (the block of a conditional M2/M30 closed: the lines after run where it did not)
+        if self
+            .linuxcnc_end_depth
+            .is_some_and(|d| self.linuxcnc_open_flow.len() < d)
+        {
+            self.linuxcnc_end_depth = None;
         }
         if self.sub_file == SubFile::No {
             return;
@@ -292,7 +301,7 @@ impl Checker {
     /// main program's own calls and definitions, before its M2/M30, are followed: a
     /// definition after the end is never reached.
     fn definition_after_call(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
-        if self.open_definition.is_some() || self.ended_line > 0 {
+        if self.open_definition.is_some() || self.main_ended() {
             return;
         }
         if let Some((true, name)) = statement {
@@ -393,6 +402,18 @@ impl Checker {
     /// a line judged ([`Checker::linuxcnc_open_flow`]).
     pub(super) fn linuxcnc_runs_surely(&self) -> bool {
         self.linuxcnc_open_flow.is_empty() && self.open_definition.is_none()
+    }
+
+    /// Whether the main program has ended where the line in hand stands, for the rules that
+    /// judge its lines up to its end: an M02/M30 that surely runs before it, or on LinuxCNC
+    /// one inside a condition or loop still open (the rest of its branch never runs after
+    /// it, and the lines after the block run only where it did not: judged again there;
+    /// review 19).
+    pub(super) fn main_ended(&self) -> bool {
+        self.surely_ended
+            || self
+                .linuxcnc_end_depth
+                .is_some_and(|d| self.linuxcnc_open_flow.len() >= d)
     }
 
     /// LinuxCNC: whether the feed mode in force where the line runs may be another than the
