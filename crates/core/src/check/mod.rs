@@ -779,6 +779,11 @@ pub struct Checker {
     linuxcnc_feed_rate: tooling::LinuxCncFeed,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
     linuxcnc_nurbs: tooling::Nurbs,
+    /// LinuxCNC: the X and Y of the NURBS list's last control point, where a G5.2 block of
+    /// the list named one (None: none yet, the list's only point is the current point), each
+    /// None where it is not known: where G5.3 leaves the current point
+    /// (`Checker::linuxcnc_nurbs_position`).
+    linuxcnc_nurbs_last: Option<[Option<Dec>; 2]>,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
     data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
@@ -972,6 +977,7 @@ impl Checker {
             linuxcnc_cycle_bottom: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_nurbs: tooling::Nurbs::default(),
+            linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
             data_input,
             programs: 0,
@@ -1379,6 +1385,8 @@ impl Checker {
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
+                self.linuxcnc_nurbs_last = None;
+                self.linuxcnc_nurbs_last = None;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1576,6 +1584,9 @@ impl Checker {
         self.machine.apply_taken(&self.values, taken);
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
+        if self.config.family == Family::LinuxCnc {
+            self.linuxcnc_nurbs_position(b, &before);
+        }
         self.programmed_forms(b, &before);
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
@@ -1621,6 +1632,7 @@ impl Checker {
             self.linuxcnc_compensation_unknown = true;
             self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
+            self.linuxcnc_nurbs_last = None;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every

@@ -185,6 +185,7 @@ impl Checker {
         self.linuxcnc_cycle_bottom = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
         self.linuxcnc_nurbs = super::tooling::Nurbs::default();
+        self.linuxcnc_nurbs_last = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
     }
