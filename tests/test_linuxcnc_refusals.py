@@ -367,3 +367,80 @@ def test_g93_still_asks_a_g1_for_its_f_after_a_nurbs(tmp_path):
     text = program("G93 G1 X1 F2\nG5.2 X1 Y1 P1\nX2 Y2 P1\nG5.3\nG1 X3")
     assert [(r, n) for r, n, _ in errors(text)] == [("TG402", 7)]
     assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)
+
+
+# Review 19 (findings 3, 4 and 6), each program compared with rs274 -g.
+RS274_RUNS_REVIEW19 = [
+    # the feed mode after a call, an M98 or a G93/G94/G95 in a condition is unsure: TG402 and
+    # the G95 spindle refusal are not judged until the main program sets it unconditionally
+    f"{HEAD}G93\no<s> call\nG1 X1\nM2\no<s> sub\nG94 F100\no<s> endsub\n",
+    f"{HEAD}G93\nM98 P100\nG1 X1\nM2\nO100\nG94 F100\nM99\n",
+    program("o1 if [0]\nG93\no1 endif\nG1 X1"),
+    program("o1 if [0]\nG95\no1 endif\nS0\nG1 X1 F100"),
+    # an F under an unsure mode may or may not set rs274's feed rate (not under G93)
+    program("G93 G1 X1 F1\no1 if [0]\nG94\no1 endif\nF0\nG38.2 X5"),
+    # a definition's body runs under its caller's mode, not the one before its sub
+    program("G93\no<s> sub\nG1 X1\no<s> endsub\nG94 F100\no<s> call"),
+    # an M2 in a condition resets no mode: the lines after it run where it did not
+    program("G18\no1 if [#5420 GT 100]\nM2\no1 endif\nG0 X0 Z0\nG2 X2 Z0 I1 K0"),
+    # an M2 in a condition never closed: the definition after it is not reached again
+    f"{HEAD}o1 if [1]\no<s> call\nM2\no<s> sub\nG0 X1\no<s> endsub\n",
+    # the G5.2 blocks leave the current point where it was (convert_nurbs)
+    program("G5.2 X1 Y1 P1\nG2 X0 Y0 I1 J0"),
+    program("G5.2 X1 Y1 P1\nX2 Y2 P1\nG1 X5\nG2 X0 Y0 I-2.5"),
+    # under G91 each point is from that point; G5.3 ends at the last one (X1 Y1)
+    program("G91\nG5.2 X1 Y1 P1\nX1 Y1 P1\nX1 Y1 P1\nG5.3\nG90\nG2 X0 Y0 I-0.5 J-0.5"),
+    # G5 and G5.1 keep the motion mode (convert_spline sets none): a point after a G5.1
+    # inside a G5.2 is a control point, a word after G1 / G5.1 a feed
+    program("G5.2 X1 Y1 P1\nG5.1 X1 Y1 I1 J1\nX1 Y1 P1"),
+    program("G5.2 X1 Y1 P1\nG5.1 X1 Y1 I1 J1\nX2 Y2 P1\nX3 Y0 P1\nG5.3\nG1 X0"),
+    program("G1 X0 F100\nG5.1 X1 Y1 I1 J1\nX2"),
+]
+
+
+@pytest.mark.parametrize("text", RS274_RUNS_REVIEW19)
+def test_review19_programs_rs274_runs_have_no_error(tmp_path, text):
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+# (the program, tapegate's rule and line, tapegate's and rs274's words)
+RS274_REFUSES_REVIEW19 = [
+    # a G93 the main program runs unconditionally makes the mode sure again
+    (program("o1 if [0]\nG94\no1 endif\nG93\nG1 X1"), "TG402", 7,
+     "every motion block needs its F", "F word missing with inverse time g1 move"),
+    # a definition's own G93 is its body's mode
+    (program("o<s> sub\nG93\nG1 X1\no<s> endsub\no<s> call"), "TG402", 5,
+     "every motion block needs its F", "F word missing with inverse time g1 move"),
+    # after an M2 in a condition the lines are judged: they run where it did not (the
+    # condition is false on rs274, #5420 being 0)
+    (program("o1 if [#5420 GT 100]\nM2\no1 endif\nG0 X1\nG0 X#<undefined>"), "TG412", 7,
+     "Named parameter #<undefined> not defined", "Named parameter #<undefined> not defined"),
+    (program("G93\no1 if [#5420 GT 100]\nM2\no1 endif\nG1 X1"), "TG402", 7,
+     "every motion block needs its F", "F word missing with inverse time g1 move"),
+    (program("o<s> sub\nM2\no<s> endsub\nG0 X#<undefined>"), "TG412", 6,
+     "Named parameter #<undefined> not defined", "Named parameter #<undefined> not defined"),
+    (f"{HEAD}o<s> call\no1 if [#5420 GT 100]\nM2\no1 endif\no<s> sub\nG0 X1\no<s> endsub\nM2\n",
+     "TG412", 7, "sub: o|s| found in illegal location", "sub: o|s| found in illegal location"),
+    # G5.3 puts the current point at the last control point: the arc starts at X2 Y0
+    (program("G5.2 X1 Y1 P1\nX2 Y0 P1\nG5.3\nG2 X0 Y0 I-1.5 J0"), "TG403", 6,
+     "start radius 1.5000 and end radius 0.5000",
+     "Radius to end of arc differs from radius to start"),
+    # a G5.1 empties the NURBS list: the next point starts a new one from the G5.1's end
+    (program("G5.2 X1 Y1 P1\nG5.1 X1 Y1 I1 J1\nX2 Y2 P1\nG5.3"), "TG412", 6,
+     "at least equal to the order L = 3",
+     "You must specify a number of control points at least equal to the order L = 3"),
+    # after G0 / G5.1 the mode is G0's, which takes no P
+    (program("G5.1 X1 Y1 I1 J1\nX2 Y1 P1"), "TG412", 4, "P word with no G2 G3 G4",
+     "P word with no G2 G3 G4"),
+]
+
+
+@pytest.mark.parametrize("text, rule, line, message, rs274_says", RS274_REFUSES_REVIEW19)
+def test_review19_programs_rs274_refuses(tmp_path, text, rule, line, message, rs274_says):
+    # (beside a TG402, TG401: the condition, call or definition left no feed rate known)
+    found = [f for f in errors(text) if (f[0], f[1]) != ("TG401", line) or rule != "TG402"]
+    assert [(r, n) for r, n, _ in found] == [(rule, line)], found
+    assert message in found[0][2], found
+    assert rs274_says in rs274_output(tmp_path, text)

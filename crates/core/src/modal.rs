@@ -207,6 +207,10 @@ pub struct BlockValues {
     given: u32,
     /// Letters given a value the checker cannot evaluate (`F#101`), by [`bit`].
     pub unknown: u32,
+    /// The block's M02/M30 may not run (LinuxCNC: one inside an o-word condition or loop, or
+    /// in a subroutine's definition): the lines after it run only where it did not, so it
+    /// resets nothing ([`ModalMachine::apply`]).
+    pub end_unsure: bool,
 }
 
 impl Default for BlockValues {
@@ -221,6 +225,7 @@ impl Default for BlockValues {
             values: [Dec::ZERO; 26],
             given: 0,
             unknown: 0,
+            end_unsure: false,
         }
     }
 }
@@ -235,6 +240,7 @@ impl BlockValues {
         self.mirror = false;
         self.given = 0;
         self.unknown = 0;
+        self.end_unsure = false;
     }
 
     /// Note that the block gives `letter` a value that cannot be evaluated.
@@ -667,7 +673,7 @@ impl ModalMachine {
             }
         }
         self.moved(v);
-        self.end_of_block(&v.ms);
+        self.m_codes(&v.ms, !v.end_unsure);
     }
 
     /// Whether a G10 block may move the zero of the work coordinate system in force, so that
@@ -758,6 +764,12 @@ impl ModalMachine {
     /// What a block's M codes do once its words are done: spindle, coolant, and after M02 or
     /// M30 the reset state of clause 14 (the next program of the file starts from it).
     pub fn end_of_block(&mut self, ms: &[i64]) {
+        self.m_codes(ms, true);
+    }
+
+    /// [`ModalMachine::end_of_block`], where `ends` says whether an M02/M30 among `ms` ends
+    /// the program (resets the state).
+    fn m_codes(&mut self, ms: &[i64], ends: bool) {
         let s = &mut self.state;
         for &m in ms {
             match m {
@@ -767,7 +779,7 @@ impl ModalMachine {
                 _ => {}
             }
         }
-        if ms.iter().any(|&m| m == 2 || m == 30) {
+        if ends && ms.iter().any(|&m| m == 2 || m == 30) {
             let units = (self.state.units, self.state.feed_units);
             self.reset();
             if self.settings.units_kept_at_end {

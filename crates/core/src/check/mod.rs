@@ -631,6 +631,17 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
+    /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
+    /// condition or loop of the main program or inside a definition, which may not run
+    /// (rs274 reads on where it does not: review 19). The rules that judge the main program's
+    /// lines up to its end (a named parameter not yet set, a definition after its call) read
+    /// this, not `ended_line`.
+    surely_ended: bool,
+    /// LinuxCNC: the depth of the main program's open conditions and loops at an M02/M30
+    /// inside one: the lines after it in its block run only where it did not run, and never
+    /// in the rest of its branch; so they are taken as after the end until the block closes
+    /// below that depth (`Checker::main_ended`).
+    linuxcnc_end_depth: Option<usize>,
     after_end_reported: bool,
     closed: bool,
     styles_explicit: bool,
@@ -768,6 +779,11 @@ pub struct Checker {
     linuxcnc_feed_rate: tooling::LinuxCncFeed,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
     linuxcnc_nurbs: tooling::Nurbs,
+    /// LinuxCNC: the X and Y of the NURBS list's last control point, where a G5.2 block of
+    /// the list named one (None: none yet, the list's only point is the current point), each
+    /// None where it is not known: where G5.3 leaves the current point
+    /// (`Checker::linuxcnc_nurbs_position`).
+    linuxcnc_nurbs_last: Option<[Option<Dec>; 2]>,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
     data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
@@ -809,6 +825,13 @@ pub struct Checker {
     /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
     /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
+    /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
+    /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
+    /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
+    /// in it (review 19). TG402 and the G95 spindle refusal are not judged meanwhile.
+    linuxcnc_definition_mode_unsure: bool,
+    /// LinuxCNC: the labels of the conditions and loops open in the open definition's body.
+    linuxcnc_definition_flow: Vec<Vec<u8>>,
     /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
     /// definition where it stands, so its `endsub` gives it back (review 17).
     linuxcnc_definition_feed: Option<i64>,
@@ -869,6 +892,8 @@ impl Checker {
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
+            surely_ended: false,
+            linuxcnc_end_depth: None,
             after_end_reported: false,
             closed: false,
             styles_explicit: false,
@@ -934,6 +959,8 @@ impl Checker {
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_mode_unsure: false,
+            linuxcnc_definition_mode_unsure: false,
+            linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
@@ -950,6 +977,7 @@ impl Checker {
             linuxcnc_cycle_bottom: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_nurbs: tooling::Nurbs::default(),
+            linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
             data_input,
             programs: 0,
@@ -1357,6 +1385,8 @@ impl Checker {
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
+                self.linuxcnc_nurbs_last = None;
+                self.linuxcnc_nurbs_last = None;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1547,9 +1577,16 @@ impl Checker {
             }
             taken
         };
+        // (LinuxCNC: an M2/M30 inside a condition, a loop or a definition may not run, and
+        // the lines after it run only where it did not: it resets no mode; review 19)
+        self.values.end_unsure =
+            self.config.family == Family::LinuxCnc && !self.linuxcnc_runs_surely();
         self.machine.apply_taken(&self.values, taken);
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
+        if self.config.family == Family::LinuxCnc {
+            self.linuxcnc_nurbs_position(b, &before);
+        }
         self.programmed_forms(b, &before);
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
@@ -1595,6 +1632,7 @@ impl Checker {
             self.linuxcnc_compensation_unknown = true;
             self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
+            self.linuxcnc_nurbs_last = None;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
@@ -1611,6 +1649,13 @@ impl Checker {
         self.split.ended(ends || returns);
         if ends {
             self.ended_line = b.line;
+            if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {
+                self.surely_ended = true;
+            } else if self.open_definition.is_none() {
+                let depth = self.linuxcnc_open_flow.len();
+                self.linuxcnc_end_depth =
+                    Some(self.linuxcnc_end_depth.map_or(depth, |d| d.min(depth)));
+            }
         }
         if ends || returns {
             // a return the block skip can pass over (`/M99` before an `M30`: a bar feeder's

@@ -142,6 +142,8 @@ impl Checker {
         self.refused_at = None;
         self.programs += 1;
         self.ended_line = 0;
+        self.surely_ended = false;
+        self.linuxcnc_end_depth = None;
         self.sub_ended = false;
         self.after_end_reported = false;
         self.closed = false;
@@ -175,12 +177,15 @@ impl Checker {
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_definition_mode_unsure = false;
+        self.linuxcnc_definition_flow.clear();
         self.linuxcnc_definition_feed = None;
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
         self.linuxcnc_nurbs = super::tooling::Nurbs::default();
+        self.linuxcnc_nurbs_last = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
     }
@@ -226,7 +231,7 @@ impl Checker {
         self.definition_open(b, statement.as_ref());
         if statement.is_none()
             && self.open_definition.is_none()
-            && self.ended_line == 0
+            && !self.main_ended()
             && (!b.statements.is_empty() || b.words.iter().any(|w| !w.expression.is_empty()))
         {
             // (inside a condition or loop its assignments count as made, its reads are not
@@ -234,15 +239,23 @@ impl Checker {
             self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty());
         }
         // (the condition's own reads run, judged above; the lines inside it may not)
-        if self.open_definition.is_none() {
-            for &(_, kind, text) in b.statements {
-                match kind {
-                    Kind::Flow => self.linuxcnc_flow(text),
-                    // the subroutine may set another feed mode, or restore the caller's
-                    Kind::Call => self.linuxcnc_mode_unsure = true,
-                    _ => {}
-                }
+        let main = self.open_definition.is_none();
+        for &(_, kind, text) in b.statements {
+            match (kind, main) {
+                (Kind::Flow, true) => linuxcnc_flow(&mut self.linuxcnc_open_flow, text),
+                (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
+                // the subroutine may set another feed mode, or restore the caller's
+                (Kind::Call, true) => self.linuxcnc_mode_unsure = true,
+                (Kind::Call, false) => self.linuxcnc_definition_mode_unsure = true,
+                _ => {}
             }
+        }
+        // (the block of a conditional M2/M30 closed: the lines after run where it did not)
+        if self
+            .linuxcnc_end_depth
+            .is_some_and(|d| self.linuxcnc_open_flow.len() < d)
+        {
+            self.linuxcnc_end_depth = None;
         }
         if self.sub_file == SubFile::No {
             return;
@@ -289,7 +302,7 @@ impl Checker {
     /// main program's own calls and definitions, before its M2/M30, are followed: a
     /// definition after the end is never reached.
     fn definition_after_call(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
-        if self.open_definition.is_some() || self.ended_line > 0 {
+        if self.open_definition.is_some() || self.main_ended() {
             return;
         }
         if let Some((true, name)) = statement {
@@ -392,22 +405,26 @@ impl Checker {
         self.linuxcnc_open_flow.is_empty() && self.open_definition.is_none()
     }
 
-    /// An o-word condition or loop of the main program opened or closed (as
-    /// `dialect::ReadingEnd` follows them): `o1 while` closes the `o1 do` it ends, or opens a
-    /// loop; an `endif`, `endwhile` or `endrepeat` closes its label's block (and any left open
-    /// inside it: rs274 refuses those).
-    fn linuxcnc_flow(&mut self, text: &[u8]) {
-        let Some(keyword) = crate::statement::o_keyword(text) else {
-            return;
-        };
-        let label = crate::statement::o_label(text);
-        let open = self.linuxcnc_open_flow.iter().rposition(|l| *l == label);
-        match (keyword.as_slice(), open) {
-            (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
-                self.linuxcnc_open_flow.truncate(at)
-            }
-            (b"if" | b"do" | b"repeat" | b"while", _) => self.linuxcnc_open_flow.push(label),
-            _ => {}
+    /// Whether the main program has ended where the line in hand stands, for the rules that
+    /// judge its lines up to its end: an M02/M30 that surely runs before it, or on LinuxCNC
+    /// one inside a condition or loop still open (the rest of its branch never runs after
+    /// it, and the lines after the block run only where it did not: judged again there;
+    /// review 19).
+    pub(super) fn main_ended(&self) -> bool {
+        self.surely_ended
+            || self
+                .linuxcnc_end_depth
+                .is_some_and(|d| self.linuxcnc_open_flow.len() >= d)
+    }
+
+    /// LinuxCNC: whether the feed mode in force where the line runs may be another than the
+    /// lines in their order give (`linuxcnc_mode_unsure`, or in a definition's body
+    /// `linuxcnc_definition_mode_unsure`): the rules that read the mode are not judged then.
+    pub(super) fn linuxcnc_feed_mode_unsure(&self) -> bool {
+        if self.open_definition.is_some() {
+            self.linuxcnc_definition_mode_unsure
+        } else {
+            self.linuxcnc_mode_unsure
         }
     }
 
@@ -419,6 +436,9 @@ impl Checker {
         match (statement, &self.open_definition) {
             (Some((true, _)), None) => {
                 self.linuxcnc_definition_feed = Some(self.machine.state.feed_mode);
+                // (its body runs under its caller's mode)
+                self.linuxcnc_definition_mode_unsure = true;
+                self.linuxcnc_definition_flow.clear();
             }
             (Some((false, name)), Some((_, _, open))) if name == open => {
                 if let Some(mode) = self.linuxcnc_definition_feed.take() {
@@ -1057,6 +1077,25 @@ pub fn nested_comment(text: &[u8]) -> usize {
         }
     }
     0
+}
+
+/// An o-word condition or loop opened or closed (as `dialect::ReadingEnd` follows them), in
+/// `open`, the labels of those open (the main program's, or an open definition's body's):
+/// `o1 while` closes the `o1 do` it ends, or opens a loop; an `endif`, `endwhile` or
+/// `endrepeat` closes its label's block (and any left open inside it: rs274 refuses those).
+fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
+    let Some(keyword) = crate::statement::o_keyword(text) else {
+        return;
+    };
+    let label = crate::statement::o_label(text);
+    let at = open.iter().rposition(|l| *l == label);
+    match (keyword.as_slice(), at) {
+        (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+            open.truncate(at)
+        }
+        (b"if" | b"do" | b"repeat" | b"while", _) => open.push(label),
+        _ => {}
+    }
 }
 
 #[cfg(test)]

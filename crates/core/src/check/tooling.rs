@@ -827,14 +827,25 @@ impl Checker {
         }
         // the feed mode known again where the main program sets it unconditionally; set in
         // a condition or loop it may or may not be in force after it (review 16c, 17)
-        if self.open_definition.is_none() && codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
-            self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
+        // (in a definition's body, where its own G93/G94/G95 outside its conditions and loops
+        // sets it: review 19)
+        if codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
+            if self.open_definition.is_none() {
+                self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
+            } else {
+                self.linuxcnc_definition_mode_unsure = !self.linuxcnc_definition_flow.is_empty();
+            }
         }
         // (LinuxCNC 2.9's M98 runs a FANUC-style subprogram, which may set another mode)
         if ms.contains(&98) {
             self.linuxcnc_mode_unsure = true;
+            self.linuxcnc_definition_mode_unsure = true;
         }
-        if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
+        if first[usize::from(b'F' - b'A')] != 0 && self.linuxcnc_feed_mode_unsure() {
+            // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
+            // does not know (review 19)
+            self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
+        } else if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
             let at = first[usize::from(b'F' - b'A')] as usize - 1;
             self.linuxcnc_feed_rate = match self.readable[at] {
                 Some(f) if f.is_zero() => LinuxCncFeed::Zero,
@@ -943,7 +954,11 @@ impl Checker {
         }
         let before = self.linuxcnc_motion;
         let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
-        if let Some(code) = given {
+        // (G5 and G5.1 draw their spline and leave rs274's motion mode as it was:
+        // interp_convert.cc convert_spline sets no motion_mode; `G1` / `G5.1 X1 Y1 I1 J1` /
+        // `X2` feeds to X2, and after a G5.2 a point without G5.2 is a control point still:
+        // review 19)
+        if let Some(code) = given.filter(|&c| !matches!(c, 50 | 51)) {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
         } else if g_unread {
             self.linuxcnc_motion = LinuxCncMotion::Unknown;
@@ -1032,6 +1047,11 @@ impl Checker {
                 self.linuxcnc_motion = LinuxCncMotion::Known(None);
             }
         }
+        // (a spline of G5 or G5.1 puts its points in the same list, draws and empties it:
+        // convert_spline)
+        if matches!(runs, Some(50 | 51)) {
+            self.linuxcnc_nurbs = Nurbs::default();
+        }
         if runs == Some(52) {
             let nurbs = &mut self.linuxcnc_nurbs;
             if before != LinuxCncMotion::Known(Some(52)) {
@@ -1112,6 +1132,62 @@ impl Checker {
         unsure
     }
 
+    /// LinuxCNC: rs274 keeps its current point through the G5.2 blocks, whose X and Y (from
+    /// that point, under G91) are the NURBS control points, and puts it at the last control
+    /// point's X and Y at the G5.3 that draws the curve (interp_convert.cc `convert_nurbs`:
+    /// `G5.2 X1 Y1 P1` / `G2 X0 Y0 I1 J0` runs an arc from where the G5.2 started; review
+    /// 19). The modal state moved to each block's point as a move: set back after it, before
+    /// the rules read the state. `before` is the state before the block.
+    pub(super) fn linuxcnc_nurbs_position(&mut self, b: &BlockView<'_>, before: &Before) {
+        let in_nurbs = self.linuxcnc_motion == LinuxCncMotion::Known(Some(52));
+        // (most blocks: no NURBS in force, and no code with decimals to start or end one)
+        if !in_nurbs && !self.values.decimal_g {
+            return;
+        }
+        let (mut given, mut draws) = (None, false);
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let tenths = v.to_f64() * 10.0;
+            if (tenths - tenths.round()).abs() > 1e-6 {
+                continue;
+            }
+            match tenths.round() as i64 {
+                53 => draws = true,
+                c if linuxcnc_motion_code(c) => given = Some(c),
+                _ => {}
+            }
+        }
+        // (G5.3 runs before the motion, in group 0: a block of it alone adds no point)
+        let point = given == Some(52) || (given.is_none() && in_nurbs && !draws);
+        // (a code that takes the axis words for its own: G10, G28, G92 ... the modal state's)
+        if point && self.machine.taken().is_none() {
+            if !in_nurbs || self.linuxcnc_nurbs.points == 0 {
+                self.linuxcnc_nurbs_last = None;
+            }
+            let state = &mut self.machine.state;
+            let named = |l: u8| self.values.has(l) || self.values.unknown & bit(l) != 0;
+            if named(b'X') && named(b'Y') {
+                self.linuxcnc_nurbs_last = Some([state.position[0], state.position[1]]);
+            }
+            for (k, &letter) in crate::modal::AXES[..3].iter().enumerate() {
+                state.position[k] = before.xyz[k];
+                state.unknown = state.unknown & !bit(letter) | before.unknown & bit(letter);
+            }
+        } else if draws && in_nurbs && given.is_none() {
+            if let Some(last) = self.linuxcnc_nurbs_last.take() {
+                let state = &mut self.machine.state;
+                for (k, &letter) in [b'X', b'Y'].iter().enumerate() {
+                    state.position[k] = last[k];
+                    if last[k].is_none() {
+                        state.unknown |= bit(letter);
+                    }
+                }
+            }
+        }
+    }
+
     /// LinuxCNC: after the block's rules, the double rs274 holds for X, Y and Z ([`Double`]):
     /// an absolute word's is the nearest double; a G91 word of a straight move or an arc adds
     /// to the double held before it, and where the sum is not the nearest double of the
@@ -1131,6 +1207,10 @@ impl Checker {
                 self.linuxcnc_double[k] = Double::Nearest;
                 continue;
             };
+            // (a NURBS control point keeps the point and the double rs274 holds)
+            if self.linuxcnc_motion == LinuxCncMotion::Known(Some(52)) && start == Some(now) {
+                continue;
+            }
             let taken = self.machine.taken();
             let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
             if !self.values.has(letter) || !moves && taken != Some(crate::modal::AxesTaken::Set) {
