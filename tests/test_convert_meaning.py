@@ -670,3 +670,20 @@ def test_a_later_block_under_the_lacked_code_has_its_role_words_refused() -> Non
              "M30\n%\n")
     out = convert(after, "haas-lathe", units="metric")
     assert "G2 X25.4 Z-25.4 R5.08" in out
+
+
+def test_a_lower_case_word_is_upper_cased_with_its_blanks_kept():
+    """Review 19, 5: a lower-case word converted for a target that reads only upper case was
+    written from its token, its blanks dropped (`x [1 + 2]` became `X[1+2]`). Spacing "keep"
+    keeps them: only the letters outside comments are upper-cased; a word written anew (a
+    value converted) is written as before."""
+    text = "g21 g90\ng0 x [1 + 2] y 1.5 (keep me)\n#1 = [sin[30] * 2]\nm2\n"
+    assert convert(text, "linuxcnc", "fanuc-mill") == (
+        "G21 G90\nG0 X [1 + 2] Y 1.5 (keep me)\n#1 = [SIN[30] * 2]\nM2\n")
+    # the same program written in upper case converts to the same text
+    upper = "G21 G90\nG0 X [1 + 2] Y 1.5 (keep me)\n#1 = [SIN[30] * 2]\nM2\n"
+    assert convert(upper, "linuxcnc", "fanuc-mill") == upper
+    # a value the conversion rewrites (mm to inch) is written anew, in upper case
+    out = convert("g21 g90\ng0 x 25.4 y 2 (a note)\nm2\n", "linuxcnc", "fanuc-mill",
+                  units="inch")
+    assert out.splitlines()[1] == "G0 X1. Y0.0787 (a note)"
