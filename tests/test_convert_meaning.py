@@ -756,3 +756,19 @@ def test_a_bracketed_expression_is_refused_for_a_sinumerik():
         convert("G21 G90\nG0 X[1+2] Y1.\nM2\n", "linuxcnc", "sinumerik-840d")
     assert str(e.value).startswith("<input>:2:4: X[1+2]: an expression in [ ], which a "
                                    "SINUMERIK reads as an array's index")
+
+
+def test_an_okuma_expression_is_refused_between_families_both_ways():
+    """An Okuma OSP sets an address by an expression written `X=..`; another family reads no
+    `=` in an address, and no page at hand compares the OSP's functions with theirs: `X=SIN[30]`
+    for a FANUC and `X[ATAN[1]/[1]]` for an OSP were carried as written (review 19, 2)."""
+    with pytest.raises(ConversionError) as e:
+        convert("G21 G90\nG0 X=SIN[30]*2\nM30\n", "okuma-mill", "fanuc-mill")
+    assert str(e.value).startswith("<input>:2:4: X=SIN[30]*2: an Okuma OSP's expression")
+    with pytest.raises(ConversionError) as e:
+        convert("O1\nG21 G90\nG0 X[ATAN[1]/[1]]\nM30\n", "fanuc-mill", "okuma-mill")
+    assert str(e.value).startswith("<input>:3:4: X[ATAN[1]/[1]]: an expression in [ ] after "
+                                   "an address, which an Okuma OSP writes X=..")
+    # a program without expressions converts as before
+    assert convert("O1\nG21 G90\nG0 X1. Y2.\nM30\n", "fanuc-mill", "okuma-mill").splitlines()[
+        -2] == "G0 X1. Y2."

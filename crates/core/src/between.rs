@@ -791,10 +791,45 @@ fn expression_names(token: &[u8], mut differs: impl FnMut(&str) -> bool) -> Opti
 /// refused whole.
 fn expressions(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     let bracket = |f: Family| matches!(f, Family::Iso | Family::MacroB | Family::LinuxCnc);
+    if from == Family::Okuma {
+        // an OSP sets an address by an expression written `X=..` (docs/dialects.md, Okuma):
+        // another family reads no `=` in an address, nor the OSP's functions as no page at
+        // hand sets beside theirs
+        let written = |w: &&Word<'_>| {
+            w.token[0].is_ascii_alphabetic() && w.token.iter().any(|&c| c == b'=' || c == b'[')
+        };
+        if let Some(w) = k.words.iter().find(written) {
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: an Okuma OSP's expression (an address set by `=`), which {} control \
+                     does not read in that form, and whose functions no page at hand compares \
+                     with its: tapegate does not translate expressions between families",
+                    text(w.token),
+                    article(k.name, to)
+                ),
+                "meaning",
+            ));
+        }
+        return Ok(());
+    }
     if !bracket(from) {
         return Ok(());
     }
     for w in k.words.iter().filter(|w| w.token.contains(&b'[')) {
+        if to == Family::Okuma {
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: an expression in [ ] after an address, which an Okuma OSP writes \
+                     X=.. (docs/dialects.md, Okuma), and whose functions no page at hand \
+                     compares with the OSP's: tapegate does not translate expressions between \
+                     families",
+                    text(w.token)
+                ),
+                "meaning",
+            ));
+        }
         if to == Family::Sinumerik {
             return Err(refuse(
                 w,
