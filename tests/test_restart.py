@@ -1631,3 +1631,24 @@ def test_a_mirror_cancel_with_an_axis_word_not_known_leaves_the_mirror_not_known
     assert refusal(g51, 12, fanuc) == ("cannot restart here: G51.1 (programmable mirror image) "
                                        "from line 10 is in force and the preamble cannot "
                                        "restore it")
+
+
+def test_the_check_reads_a_cancel_s_axis_word_not_known_as_naming_its_axis_as_the_restart():
+    """Review 19, 1: the check reads `G100 X#1` as `G100 X0` (X named, Y still mirrored: a Y18.
+    under the Y mirror stands 33 from the Y15. before it, TG601), and the restart now names X
+    too (its mirror not known, Y's in force), where it had read the word as naming no axis."""
+    from postproc.check import Checker
+    haas = load_profile("haas-mill")  # Y -16..16 in
+    body = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y15.\n"
+            "N7 G101 X0 Y0\nN8 {}\nN9 X3. Y18.\nN20 X4.\nN30 G00 Z1.\nM30\n%\n")
+
+    def spans(cancel: str) -> list[str]:
+        found = Checker(haas).run_stream([body.format(cancel)], haas.dialect)
+        return [f.message.split(",")[0] for f in found if f.rule == "TG601"]
+
+    for cancel in ("G100 X#1", "G100 X0"):
+        assert spans(cancel) == ["Y spans 33 (from -18 to 15)"]
+    assert spans("G100") == []
+    assert refusal(body.format("G100 X#1"), 10, haas) == (
+        "cannot restart here: G101 (mirror image) from line 7 is in force and the preamble "
+        "cannot restore it")
