@@ -670,3 +670,105 @@ def test_a_later_block_under_the_lacked_code_has_its_role_words_refused() -> Non
              "M30\n%\n")
     out = convert(after, "haas-lathe", units="metric")
     assert "G2 X25.4 Z-25.4 R5.08" in out
+
+
+def test_a_lower_case_word_is_upper_cased_with_its_blanks_kept():
+    """Review 19, 5: a lower-case word converted for a target that reads only upper case was
+    written from its token, its blanks dropped (`x [1 + 2]` became `X[1+2]`). Spacing "keep"
+    keeps them: only the letters outside comments are upper-cased; a word written anew (a
+    value converted) is written as before."""
+    text = "g21 g90\ng0 x [1 + 2] y 1.5 (keep me)\n#1 = [sin[30] * 2]\nm2\n"
+    assert convert(text, "linuxcnc", "fanuc-mill") == (
+        "G21 G90\nG0 X [1 + 2] Y 1.5 (keep me)\n#1 = [SIN[30] * 2]\nM2\n")
+    # the same program written in upper case converts to the same text
+    upper = "G21 G90\nG0 X [1 + 2] Y 1.5 (keep me)\n#1 = [SIN[30] * 2]\nM2\n"
+    assert convert(upper, "linuxcnc", "fanuc-mill") == upper
+    # a value the conversion rewrites (mm to inch) is written anew, in upper case
+    out = convert("g21 g90\ng0 x 25.4 y 2 (a note)\nm2\n", "linuxcnc", "fanuc-mill",
+                  units="inch")
+    assert out.splitlines()[1] == "G0 X1. Y0.0787 (a note)"
+
+
+@pytest.mark.parametrize("source, target, text, column, name, meanings", [
+    # rs274 2.9: [2 OR 4] is 1, ATAN[-1]/[1] -45, ASIN[-0.5] -30, ROUND[1.4] 1, FIX[-1.2] -2
+    ("linuxcnc", "fanuc-mill", "G21 G90\nG0 X[2 OR 4]\nM2\n", 4, "OR",
+     ("a logical OR, 1 or 0", "a bitwise OR of the integer parts")),
+    ("linuxcnc", "haas-mill", "g21 g90\n#1 = [2 and 1]\ng0 x#1\nm2\n", 1, "AND",
+     ("a logical AND, 1 or 0", "a bitwise AND of the integer parts")),
+    ("linuxcnc", "fanuc-mill", "G21 G90\nG0 X1. Y[ATAN[-1]/[1]]\nM2\n", 8, "ATAN",
+     ("in degrees, -180 to 180", "in degrees, 0 to 360")),
+    ("linuxcnc", "fanuc-mill", "G21 G90\nG0 Z[ASIN[-0.5]]\nM2\n", 4, "ASIN",
+     ("-90 to 90", "270 to 90")),
+    ("linuxcnc", "fanuc-mill", "G21 G90\nG0 X[ROUND[1.4]]\nM2\n", 4, "ROUND",
+     ("rounding to the nearest integer on", "to the address's least input increment")),
+    # the other way: a FANUC's or Haas's bitwise XOR and truncating FIX are not LinuxCNC's
+    ("fanuc-mill", "linuxcnc", "O1\nG21 G90\n#1=[2 XOR 3]\nG0 X[FIX[#1]]\nM30\n", 1, "XOR",
+     ("a bitwise exclusive OR", "a logical exclusive OR")),
+    ("haas-mill", "linuxcnc", "O1\nG21 G90\nG0 X[FIX[-1.2]]\nM30\n", 4, "FIX",
+     ("discarding the fraction (FIX[-1.2] is -1)", "rounding down (FIX[-1.2] is -2)")),
+    # a name one family has and the other does not
+    ("fanuc-mill", "linuxcnc", "O1\nG21 G90\n#1=BCD[12]\nM30\n", 1, "BCD",
+     ("a conversion between BCD and binary", "no operator or function of that name")),
+    ("linuxcnc", "fanuc-mill", "G21 G90\nG0 X[2**3]\nM2\n", 4, "**",
+     ("a power", "no operator or function of that name")),
+    # a name run on into the next is split as the controls read it (MOD, then FIX)
+    ("linuxcnc", "fanuc-mill", "G21 G90\nG0 X[2 MODFIX[3]]\nM2\n", 4, "MOD",
+     ("the remainder made positive", "the remainder (of a negative operand")),
+    # ISO 6983-1 leaves every operation to the control's manual
+    ("linuxcnc", "iso-mill", "G21 G90\nG0 X[SIN[30]]\nM2\n", 4, "SIN",
+     ("the sine of an angle in degrees", "leaves to the control's manual")),
+])
+def test_an_expression_whose_operation_differs_between_families_is_refused(
+        source, target, text, column, name, meanings):
+    """Review 19, 2: between families an expression was carried as written, and `[2 OR 4]`,
+    `ATAN[-1]/[1]`, `ASIN[-0.5]`, `ROUND[1.4]` compute otherwise on a FANUC or Haas (Custom
+    Macro B: bitwise AND OR XOR, ATAN 0-360, ASIN 270-90, ROUND in an address to its
+    increment) than on LinuxCNC (rs274). Refused at the word, naming the operation and both
+    meanings."""
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, target)
+    message = str(e.value)
+    assert e.value.code == "conversion-meaning"
+    line = next(i for i, t in enumerate(text.splitlines(), 1) if name.lower() in t.lower()
+                or (name == "**" and "**" in t))
+    assert message.startswith(f"<input>:{line}:{column}: ")
+    source_says, target_says = message.split(f": {name} is ", 1)[1].split(" control and ", 1)
+    assert meanings[0] in source_says and meanings[1] in target_says
+    assert "computes the same on both" in message
+
+
+def test_an_expression_of_operations_read_alike_is_carried_between_families():
+    """+ - * / and SIN COS TAN ACOS SQRT ABS LN EXP compute the same on a LinuxCNC and on a
+    FANUC or Haas (rs274; 0i-MF, 96-8000): such an expression is carried, both ways."""
+    text = ("G21 G90\n#1 = [SQRT[16] + ABS[-2] * COS[60]]\nG0 X[#1 / 2] Y[SIN[30] - TAN[45]]\n"
+            "G0 Z[ACOS[0.5] + LN[EXP[1]]]\nM2\n")
+    assert convert(text, "linuxcnc", "fanuc-mill").splitlines()[1:] == text.splitlines()[1:]
+    assert convert(text, "linuxcnc", "haas-mill").splitlines()[1:] == text.splitlines()[1:]
+    fanuc = "O1\n" + text.replace("M2", "M30")
+    assert convert(fanuc, "fanuc-mill", "linuxcnc").splitlines()[2:] == \
+        fanuc.splitlines()[2:]
+
+
+def test_a_bracketed_expression_is_refused_for_a_sinumerik():
+    """A SINUMERIK reads [ ] as an array's index and writes an expression X=(..): a
+    bracketed expression carried to it was written as it stood (review 19, 2)."""
+    with pytest.raises(ConversionError) as e:
+        convert("G21 G90\nG0 X[1+2] Y1.\nM2\n", "linuxcnc", "sinumerik-840d")
+    assert str(e.value).startswith("<input>:2:4: X[1+2]: an expression in [ ], which a "
+                                   "SINUMERIK reads as an array's index")
+
+
+def test_an_okuma_expression_is_refused_between_families_both_ways():
+    """An Okuma OSP sets an address by an expression written `X=..`; another family reads no
+    `=` in an address, and no page at hand compares the OSP's functions with theirs: `X=SIN[30]`
+    for a FANUC and `X[ATAN[1]/[1]]` for an OSP were carried as written (review 19, 2)."""
+    with pytest.raises(ConversionError) as e:
+        convert("G21 G90\nG0 X=SIN[30]*2\nM30\n", "okuma-mill", "fanuc-mill")
+    assert str(e.value).startswith("<input>:2:4: X=SIN[30]*2: an Okuma OSP's expression")
+    with pytest.raises(ConversionError) as e:
+        convert("O1\nG21 G90\nG0 X[ATAN[1]/[1]]\nM30\n", "fanuc-mill", "okuma-mill")
+    assert str(e.value).startswith("<input>:3:4: X[ATAN[1]/[1]]: an expression in [ ] after "
+                                   "an address, which an Okuma OSP writes X=..")
+    # a program without expressions converts as before
+    assert convert("O1\nG21 G90\nG0 X1. Y2.\nM30\n", "fanuc-mill", "okuma-mill").splitlines()[
+        -2] == "G0 X1. Y2."

@@ -1591,3 +1591,64 @@ def test_a_clearance_that_is_no_height_is_refused_never_a_traceback():
     assert plan(AT_DEPTH, 6, top).preamble[-3] == "G00 Z99999.999"
     travel = replace(top, limits=FANUC.limits)
     assert "more than the machine's Z travel (-508 to 10 mm)" in refusal(AT_DEPTH, 6, travel)
+
+
+def test_a_mirror_cancel_with_an_axis_word_not_known_leaves_the_mirror_not_known():
+    """Review 19, 1: `G100 X#1` (or `G100 X[0]`, FANUC `G50.1 X#1`) was read as a cancel naming
+    no axis, so as ending every mirror, and a restart after it was planned on the unmirrored
+    side. An axis word whose value the restart does not know leaves that axis's mirror not
+    known: the restart is refused, naming the cancel, until a cancel names the axis plainly."""
+    haas, fanuc = load_profile("haas-mill"), load_profile("fanuc-mill")
+    text = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y1.\n"
+            "N5 G43 H1 Z1.\nN6 G01 Z-0.1 F10.\nN7 G101 X0 Y0\nN8 G100 X#1\nN9 X3. Y2.\n"
+            "N20 X4.\nN30 G00 Z1.\nM30\n%\n")  # N20 is line 12
+    # Y is mirrored for certain: the G101 is named
+    assert refusal(text, 12, haas) == ("cannot restart here: G101 (mirror image) from line 9 "
+                                       "is in force and the preamble cannot restore it")
+    doubt = ("cannot restart here: the mirror image of X, which {} may or may not have ended "
+             "(an axis word whose value the restart does not know), from line 10 is in force "
+             "and the preamble cannot restore it")
+    x_only = text.replace("G101 X0 Y0", "G101 X0")
+    assert refusal(x_only, 12, haas) == doubt.format("G100 X#1")
+    assert refusal(x_only.replace("X#1", "X[0]"), 12, haas) == doubt.format("G100 X[0]")
+    # a plain cancel of another axis leaves X not known; one of X, or of all, ends it
+    y_ended = x_only.replace("N9 X3. Y2.", "N9 G100 Y0\nN10 X3. Y2.")
+    assert refusal(y_ended, 13, haas) == doubt.format("G100 X#1")
+    for cancel in ("G100 X0", "G100"):
+        ended = x_only.replace("N9 X3. Y2.", f"N9 {cancel}\nN10 X3. Y2.")
+        assert plan(ended, 13, haas).preamble[-2:] == ["G00 X3. Y2.", "G01 Z-0.1 F10."]
+    # an axis not mirrored stays so whatever the word's value
+    y_word = x_only.replace("G101 X0", "G101 Y0").replace("G100 X#1", "G100 Y#1")
+    assert refusal(y_word, 12, haas) == doubt.replace("of X", "of Y").format("G100 Y#1")
+    assert plan(x_only.replace("G100 X#1", "G100 X0 Y#1"), 12, haas).preamble[-2:] == [
+        "G00 X3. Y2.", "G01 Z-0.1 F10."]
+    # FANUC G50.1 the same; G51.1 X#1 mirrors X (about a point set by a parameter)
+    f = x_only.replace("G101 X0", "G51.1 X0").replace("G100 X#1", "G50.1 X#1")
+    assert refusal(f, 12, fanuc) == doubt.format("G50.1 X#1")
+    assert plan(f.replace("N9 X3.", "N9 G50.1 X0\nN10 X3."), 13, fanuc).preamble[-2:] == [
+        "G00 X3. Y2.", "G01 Z-0.1 F10."]
+    g51 = f.replace("N7 G51.1 X0", "N7 #1=0\nG51.1 X#1").replace("N8 G50.1 X#1\n", "")
+    assert refusal(g51, 12, fanuc) == ("cannot restart here: G51.1 (programmable mirror image) "
+                                       "from line 10 is in force and the preamble cannot "
+                                       "restore it")
+
+
+def test_the_check_reads_a_cancel_s_axis_word_not_known_as_naming_its_axis_as_the_restart():
+    """Review 19, 1: the check reads `G100 X#1` as `G100 X0` (X named, Y still mirrored: a Y18.
+    under the Y mirror stands 33 from the Y15. before it, TG601), and the restart now names X
+    too (its mirror not known, Y's in force), where it had read the word as naming no axis."""
+    from postproc.check import Checker
+    haas = load_profile("haas-mill")  # Y -16..16 in
+    body = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y15.\n"
+            "N7 G101 X0 Y0\nN8 {}\nN9 X3. Y18.\nN20 X4.\nN30 G00 Z1.\nM30\n%\n")
+
+    def spans(cancel: str) -> list[str]:
+        found = Checker(haas).run_stream([body.format(cancel)], haas.dialect)
+        return [f.message.split(",")[0] for f in found if f.rule == "TG601"]
+
+    for cancel in ("G100 X#1", "G100 X0"):
+        assert spans(cancel) == ["Y spans 33 (from -18 to 15)"]
+    assert spans("G100") == []
+    assert refusal(body.format("G100 X#1"), 10, haas) == (
+        "cannot restart here: G101 (mirror image) from line 7 is in force and the preamble "
+        "cannot restore it")

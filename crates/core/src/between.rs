@@ -76,6 +76,7 @@ pub fn block(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     length_offset_without_h(from, to, k)?;
     offset_data(from, to, k)?;
     variables(from, to, k)?;
+    expressions(from, to, k)?;
     thread_lead(from, to, k)?;
     helix_turns(from, to, k)?;
     spindle_limit(from, to, k)?;
@@ -649,6 +650,232 @@ fn variables(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     Ok(())
 }
 
+/// The names an expression in `[ ]` may hold on a family that reads them: the operators and
+/// functions of Custom Macro B and of LinuxCNC (the longest first, so that a name run on into
+/// the next, `NEFIX`, is split as the controls read it).
+const EXPRESSION_NAMES: [&str; 30] = [
+    "EXISTS", "ROUND", "ACOS", "ASIN", "ATAN", "SQRT", "AND", "XOR", "MOD", "ABS", "COS", "EXP",
+    "FIX", "FUP", "SIN", "TAN", "BIN", "BCD", "ADP", "POW", "ATN", "SQR", "OR", "LN", "EQ", "NE",
+    "GT", "GE", "LT", "LE",
+];
+
+/// What an operator or function of an expression computes on a control of `family`, None
+/// where the family has no such name (the control alarms). Two families carry an expression
+/// only where every name in it has the same text here. LinuxCNC: G-code reference, "Binary
+/// Operators" and "Functions" (AND OR XOR logical, 1 or 0; ATAN[y]/[x] -180 to 180; ASIN -90
+/// to 90; FIX rounds down, FUP up; ROUND to the nearest integer), as rs274 2.9 computes them
+/// (`FIX[-1.2]` -2, `FUP[-1.2]` -1, `-7 MOD 3` 2, `[2 OR 4]` 1, `[2 XOR 3]` 0). Custom Macro
+/// B: FANUC 0i-MF operator's manual, "Arithmetic and logic operation" (OR XOR AND bitwise;
+/// ATAN 0 to 360 and ASIN 270 to 90 with parameter NAT (No. 6004#0) 0, -180 to 180 and -90 to
+/// 90 with NAT 1; FIX discards the fraction, FUP raises it to a unit, both on the absolute
+/// value; ROUND within an address rounds to the address's least input increment); the Haas
+/// mill operator's manual (96-8000, "Macros": OR XOR AND on the integer part's bits, ROUND in
+/// an address to its precision). ISO 6983-1 6.4.7 leaves every operation to the control's
+/// manual: no name has a meaning there that another family's could be compared with.
+fn expression_name(family: Family, name: &str) -> Option<&'static str> {
+    let shared = match name {
+        "SIN" => Some("the sine of an angle in degrees"),
+        "COS" => Some("the cosine of an angle in degrees"),
+        "TAN" => Some("the tangent of an angle in degrees"),
+        "ACOS" => Some("the arc cosine in degrees, 0 to 180"),
+        "SQRT" => Some("the square root"),
+        "ABS" => Some("the absolute value"),
+        "LN" => Some("the natural logarithm"),
+        "EXP" => Some("e to the power of the argument"),
+        _ => None,
+    };
+    match family {
+        Family::LinuxCnc => shared.or(match name {
+            "ASIN" => Some("the arc sine in degrees, -90 to 90"),
+            "ATAN" => Some("the arc tangent ATAN[y]/[x] in degrees, -180 to 180"),
+            "ROUND" => Some("rounding to the nearest integer"),
+            "FIX" => Some("rounding down (FIX[-1.2] is -2)"),
+            "FUP" => Some("rounding up (FUP[-1.2] is -1)"),
+            "AND" => Some("a logical AND, 1 or 0 (`[2 AND 1]` is 1)"),
+            "OR" => Some("a logical OR, 1 or 0 (`[2 OR 4]` is 1)"),
+            "XOR" => Some("a logical exclusive OR, 1 or 0 (`[2 XOR 3]` is 0)"),
+            "MOD" => Some("the remainder made positive (`[-7 MOD 3]` is 2)"),
+            "EQ" | "NE" | "GT" | "GE" | "LT" | "LE" => Some("a comparison whose value is 1 or 0"),
+            "**" => Some("a power"),
+            "EXISTS" => Some("whether a named parameter exists"),
+            _ => None,
+        }),
+        Family::MacroB => shared.or(match name {
+            "ASIN" => {
+                Some("the arc sine in degrees, 270 to 90 (-90 to 90 only with parameter NAT 1)")
+            }
+            "ATAN" => Some(
+                "the arc tangent ATAN[y]/[x] in degrees, 0 to 360 (-180 to 180 only with \
+                 parameter NAT 1)",
+            ),
+            "ROUND" => Some(
+                "rounding to the nearest integer, but within an address's expression to the \
+                 address's least input increment",
+            ),
+            "FIX" => Some("discarding the fraction (FIX[-1.2] is -1)"),
+            "FUP" => Some("raising the fraction to a unit (FUP[-1.2] is -2)"),
+            "AND" => Some("a bitwise AND of the integer parts (`[2 AND 1]` is 0)"),
+            "OR" => Some("a bitwise OR of the integer parts (`[2 OR 4]` is 6)"),
+            "XOR" => Some("a bitwise exclusive OR of the integer parts (`[2 XOR 3]` is 1)"),
+            "MOD" => Some("the remainder (of a negative operand, in no page at hand)"),
+            "EQ" | "NE" | "GT" | "GE" | "LT" | "LE" => {
+                Some("a comparison of a condition (IF, WHILE)")
+            }
+            "BIN" | "BCD" => Some("a conversion between BCD and binary"),
+            "ADP" => Some("a decimal point added to the argument"),
+            "POW" => Some("a power"),
+            "ATN" | "SQR" => Some("the abbreviated ATAN or SQRT"),
+            _ => None,
+        }),
+        _ => None,
+    }
+}
+
+/// The first operator or function name (upper case) in an expression word's `token` whose
+/// meaning `differs` says is not the same on both families: the name, None when every one is.
+fn expression_names(token: &[u8], mut differs: impl FnMut(&str) -> bool) -> Option<String> {
+    // the word's address letter first (`X[..]`, `Xsin[30]`): from there on the value
+    let mut i = usize::from(token.first().is_some_and(u8::is_ascii_alphabetic));
+    while i < token.len() {
+        let c = token[i];
+        if c == b'<' {
+            // a LinuxCNC named parameter `#<name>`: refused by the variables' rule
+            i += token[i..]
+                .iter()
+                .position(|&c| c == b'>')
+                .map_or(token.len(), |p| p + 1);
+            continue;
+        }
+        if c == b'*' && token.get(i + 1) == Some(&b'*') {
+            if differs("**") {
+                return Some("**".into());
+            }
+            i += 2;
+            continue;
+        }
+        if !c.is_ascii_alphabetic() {
+            i += 1;
+            continue;
+        }
+        let run = token[i..]
+            .iter()
+            .take_while(|c| c.is_ascii_alphabetic())
+            .count();
+        let upper = token[i..i + run].to_ascii_uppercase();
+        let mut at = 0;
+        while at < run {
+            let name = EXPRESSION_NAMES
+                .iter()
+                .find(|n| upper[at..].starts_with(n.as_bytes()));
+            match name {
+                Some(n) => {
+                    if differs(n) {
+                        return Some((*n).to_string());
+                    }
+                    at += n.len();
+                }
+                None => return Some(String::from_utf8_lossy(&upper[at..]).into_owned()),
+            }
+        }
+        i += run;
+    }
+    None
+}
+
+/// Expressions between the families that read `[ ]` expressions (Custom Macro B, LinuxCNC,
+/// ISO 6983-1 as tapegate reads it): an expression is carried only where every operator and
+/// function in it computes the same on both ([`expression_name`]); `X[2 OR 4]` is 1 on a
+/// LinuxCNC and 6 on a FANUC, `ATAN[-1]/[1]` -45 and 315 (review 19, finding 2). The word is
+/// refused naming the first that differs, with both meanings. A SINUMERIK reads `[ ]` as an
+/// array's index and writes an expression `X=(..)`: a bracketed expression carried to it is
+/// refused whole.
+fn expressions(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    let bracket = |f: Family| matches!(f, Family::Iso | Family::MacroB | Family::LinuxCnc);
+    if from == Family::Okuma {
+        // an OSP sets an address by an expression written `X=..` (docs/dialects.md, Okuma):
+        // another family reads no `=` in an address, nor the OSP's functions as no page at
+        // hand sets beside theirs
+        let written = |w: &&Word<'_>| {
+            w.token[0].is_ascii_alphabetic() && w.token.iter().any(|&c| c == b'=' || c == b'[')
+        };
+        if let Some(w) = k.words.iter().find(written) {
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: an Okuma OSP's expression (an address set by `=`), which {} control \
+                     does not read in that form, and whose functions no page at hand compares \
+                     with its: tapegate does not translate expressions between families",
+                    text(w.token),
+                    article(k.name, to)
+                ),
+                "meaning",
+            ));
+        }
+        return Ok(());
+    }
+    if !bracket(from) {
+        return Ok(());
+    }
+    for w in k.words.iter().filter(|w| w.token.contains(&b'[')) {
+        if to == Family::Okuma {
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: an expression in [ ] after an address, which an Okuma OSP writes \
+                     X=.. (docs/dialects.md, Okuma), and whose functions no page at hand \
+                     compares with the OSP's: tapegate does not translate expressions between \
+                     families",
+                    text(w.token)
+                ),
+                "meaning",
+            ));
+        }
+        if to == Family::Sinumerik {
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: an expression in [ ], which a SINUMERIK reads as an array's index (its \
+                     expressions are written X=(..), Programming Manual Fundamentals): \
+                     tapegate does not translate expressions between families",
+                    text(w.token)
+                ),
+                "meaning",
+            ));
+        }
+        if !bracket(to) {
+            continue;
+        }
+        let differs = |n: &str| {
+            let (a, b) = (expression_name(from, n), expression_name(to, n));
+            a.is_none() || a != b
+        };
+        if let Some(name) = expression_names(w.token, differs) {
+            let meaning = |f: Family| match expression_name(f, &name) {
+                Some(m) => m.to_string(),
+                None if f == Family::Iso => {
+                    "an operation ISO 6983-1 (6.4.7) leaves to the control's manual".to_string()
+                }
+                None => "no operator or function of that name".to_string(),
+            };
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: {name} is {} on {} control and {} on {} control; tapegate carries an \
+                     expression between families only where every operator and function in it \
+                     computes the same on both: write the target's own expression",
+                    text(w.token),
+                    meaning(from),
+                    article(k.name, from),
+                    meaning(to),
+                    article(k.name, to)
+                ),
+                "meaning",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The letters a family reads a G33 thread's lead from: F on a FANUC or Haas (0i-MF "Thread
 /// cutting (G33)": F the lead), K on LinuxCNC (G-code reference, G33: "K - distance per
 /// revolution" along the move), I J K on a SINUMERIK and by ISO 6983-1 (the lead parallel to
@@ -973,6 +1200,55 @@ mod tests {
         assert!(frame(Family::Heidenhain, Family::Heidenhain, |_| "").is_none());
         assert!(frame(Family::Heidenhain, Family::MacroB, |_| "").is_none());
         assert!(frame(Family::MacroB, Family::LinuxCnc, |_| "").is_none());
+    }
+
+    #[test]
+    fn an_expression_s_names_are_read_as_the_controls_read_them() {
+        let differs = |from: Family, to: Family| {
+            move |n: &str| {
+                let a = expression_name(from, n);
+                a.is_none() || a != expression_name(to, n)
+            }
+        };
+        let lc_fanuc = || differs(Family::LinuxCnc, Family::MacroB);
+        // the address letter is no name; SIN, COS and + - * / compute alike
+        assert_eq!(expression_names(b"X[SIN[30]*COS[60]-1]", lc_fanuc()), None);
+        assert_eq!(
+            expression_names(b"x[2or4]", lc_fanuc()).as_deref(),
+            Some("OR")
+        );
+        // names run on into each other are split, the longest first
+        assert_eq!(
+            expression_names(b"X[#1NEFIX[#2]]", lc_fanuc()).as_deref(),
+            Some("NE")
+        );
+        assert_eq!(
+            expression_names(b"#1=[SQRT[4]XOR1]", lc_fanuc()).as_deref(),
+            Some("XOR")
+        );
+        assert_eq!(
+            expression_names(b"X[2**3]", lc_fanuc()).as_deref(),
+            Some("**")
+        );
+        // a name neither family has is refused as written; a named parameter is skipped
+        assert_eq!(
+            expression_names(b"X[FOO[1]]", lc_fanuc()).as_deref(),
+            Some("FOO")
+        );
+        assert_eq!(expression_names(b"X[#<depth>+1]", lc_fanuc()), None);
+        // FANUC to LinuxCNC: BCD is FANUC's alone
+        let fanuc_lc = differs(Family::MacroB, Family::LinuxCnc);
+        assert_eq!(
+            expression_names(b"#1=BCD[12]", fanuc_lc).as_deref(),
+            Some("BCD")
+        );
+        // ISO 6983-1 gives no operation a meaning
+        let iso = differs(Family::LinuxCnc, Family::Iso);
+        assert_eq!(expression_names(b"X[ABS[-1]]", iso).as_deref(), Some("ABS"));
+        assert_eq!(
+            expression_names(b"X[1+2]", differs(Family::LinuxCnc, Family::Iso)),
+            None
+        );
     }
 
     #[test]

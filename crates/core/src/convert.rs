@@ -448,6 +448,28 @@ pub(crate) fn okuma_home_number(statement: &[u8]) -> bool {
     !number.is_empty() && number.iter().all(u8::is_ascii_digit)
 }
 
+/// `text` (starting at byte `start` of its block) in upper case but inside the block's
+/// `comments` (byte offsets in the block) and inside double quotes (a SINUMERIK string):
+/// those are kept as written.
+fn upper_outside(text: &[u8], start: usize, comments: &[(usize, &[u8])]) -> Vec<u8> {
+    let mut quoted = false;
+    text.iter()
+        .enumerate()
+        .map(|(i, &c)| {
+            let at = start + i;
+            let commented = comments.iter().any(|&(o, t)| o <= at && at < o + t.len());
+            if c == b'"' && !commented {
+                quoted = !quoted;
+            }
+            if quoted || commented {
+                c
+            } else {
+                c.to_ascii_uppercase()
+            }
+        })
+        .collect()
+}
+
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
@@ -3167,10 +3189,27 @@ impl Converter {
             all
         });
         for (slot, w) in replacements.iter_mut().zip(b.words) {
-            let token = slot.as_deref().unwrap_or(w.token);
-            if token.iter().any(u8::is_ascii_lowercase) {
-                *slot = Some(token.to_ascii_uppercase());
+            if let Some(token) = slot.as_mut() {
+                token.make_ascii_uppercase(); // a word written anew: no blanks of its own
+                continue;
             }
+            if !w.token.iter().any(u8::is_ascii_lowercase) {
+                continue;
+            }
+            // the word as written, its blanks kept (review 19, finding 5: `x [1 + 2]` was
+            // written `X[1+2]`, the token's text), when its span lies in the block's text
+            let written = b.text.get(w.start..w.end).filter(|t| {
+                let squeezed: Vec<u8> = t
+                    .iter()
+                    .copied()
+                    .filter(|c| *c != b' ' && *c != b'\t')
+                    .collect();
+                squeezed.eq_ignore_ascii_case(w.token)
+            });
+            *slot = Some(match written {
+                Some(text) => upper_outside(text, w.start, b.comments),
+                None => w.token.to_ascii_uppercase(),
+            });
         }
     }
 
@@ -7047,6 +7086,19 @@ fn integer(digits: &[u8]) -> Option<i64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_word_is_upper_cased_outside_its_comments_and_strings() {
+        // review 19, finding 5: the written text, blanks kept
+        assert_eq!(upper_outside(b"x [1 + 2]", 3, &[]), b"X [1 + 2]");
+        // a comment inside the span (block bytes 7..13) and a string are kept as written
+        let comments: [(usize, &[u8]); 1] = [(7, b"(abc)")];
+        assert_eq!(
+            upper_outside(b"x [1 (abc) + 2]", 3, &comments),
+            b"X [1 (abc) + 2]"
+        );
+        assert_eq!(upper_outside(b"t=\"mill\" x", 0, &[]), b"T=\"mill\" X");
+    }
 
     /// A drilling cycle in force ends at every motion-group code (a lathe's threading and
     /// single cycles too), at G80 and M02/M30, and is kept through a block that names none.

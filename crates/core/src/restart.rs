@@ -256,6 +256,10 @@ pub struct Walk {
     /// mirror is in force until it has ended every one (Haas VF Series manual 96-8000, G101:
     /// the mirror selected per axis; review 16b, finding 2).
     haas_mirrored: u16,
+    /// The axes of `mirrored` and `haas_mirrored` whose mirror a cancel with an axis word the
+    /// walk does not know (`G50.1 X#1`, `G100 X[0]`) may have ended ([`Walk::mirror_off`]).
+    mirror_doubt: u16,
+    haas_mirror_doubt: u16,
     /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
     /// way the program reached its start point with this tool, for an approach that goes the
     /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
@@ -484,6 +488,8 @@ impl Walk {
             shifted: 0,
             mirrored: 0,
             haas_mirrored: 0,
+            mirror_doubt: 0,
+            haas_mirror_doubt: 0,
             moves: Vec::new(),
             tool_change: None,
             tool_moved: true,
@@ -592,7 +598,7 @@ impl Walk {
         self.unrestored.iter().any(|(k, _, _)| {
             matches!(
                 k.as_str(),
-                "68" | "51" | "51.1" | "101" | "11" | "69" | "62"
+                "68" | "51" | "51.1" | "51.1?" | "101" | "101?" | "11" | "69" | "62"
             )
         })
     }
@@ -613,6 +619,53 @@ impl Walk {
         if !self.transforms_on() {
             self.transformed = 0;
         }
+    }
+
+    /// A mirror cancel `code` (FANUC G50.1, Haas G100) on `line`, given the axes (bits of
+    /// [`AXES`] indexes) `mirrored` before it and those of them whose mirror is not known
+    /// (`doubt`): the same two after it. It ends the mirror of the axes its plain words name
+    /// (`named`), of all of them when it has no axis word at all. An axis word whose value the
+    /// walk does not know (`param_axes`: X#1, X[0]) leaves a mirrored axis's mirror not known
+    /// (review 19, finding 1: `G100 X#1` was read as a cancel naming no axis, so as ending every
+    /// mirror): an unrestored mode under `keys.1` (the restart is refused) until a cancel names
+    /// the axis plainly or ends them all. `keys.0` is the mirror's own unrestored mode, kept
+    /// while an axis is mirrored for certain.
+    fn mirror_off(
+        &mut self,
+        line: usize,
+        code: &str,
+        keys: (&str, &str),
+        (mirrored, doubt): (u16, u16),
+        named: u16,
+        param_axes: (u16, Option<&[u8]>),
+    ) -> (u16, u16) {
+        let (unknown, token) = param_axes;
+        if named == 0 && unknown == 0 {
+            self.drop_unrestored(keys.0);
+            self.drop_unrestored(keys.1);
+            return (0, 0);
+        }
+        let left = mirrored & !named;
+        let fresh = left & unknown & !doubt;
+        let doubt = (doubt & !named) | (left & unknown);
+        if left & !doubt == 0 {
+            self.drop_unrestored(keys.0);
+        }
+        if doubt == 0 {
+            self.drop_unrestored(keys.1);
+        } else if fresh != 0 {
+            let axes: String = (0..AXES.len())
+                .filter(|&i| doubt & bit(i) != 0)
+                .map(|i| char::from(AXES[i]))
+                .collect();
+            let what = format!(
+                "the mirror image of {axes}, which {code} {} may or may not have ended (an \
+                 axis word whose value the restart does not know),",
+                String::from_utf8_lossy(token.unwrap_or_default())
+            );
+            self.set_unrestored(keys.1, line, what);
+        }
+        (left, doubt)
     }
 
     fn set_unrestored(&mut self, key: &str, line: usize, what: String) {
@@ -672,6 +725,9 @@ impl Walk {
         let mut ms: Vec<i64> = Vec::new();
         // letter -> its first plain word, in the order the letters first appear
         let mut plain_words: Vec<(u8, &[u8])> = Vec::new();
+        // the axes (bits of [`AXES`] indexes) whose words are not plain (X#1, X[0]), and the
+        // first such word: a mirror code's axes whose value the walk does not know
+        let mut param_axes: (u16, Option<&[u8]>) = (0, None);
         for &token in b.tokens {
             let Some(&first) = token.first() else {
                 continue;
@@ -693,6 +749,10 @@ impl Walk {
                     // F#101, X[#1+2], X=R1+5: a value set by a parameter
                     let mut why = token.to_vec();
                     if AXES.contains(&letter) {
+                        if let Some(i) = axis_index(letter) {
+                            param_axes.0 |= bit(i);
+                            param_axes.1.get_or_insert(token);
+                        }
                         why.extend_from_slice(b", set by a parameter");
                         let axis = self.axis(letter);
                         self.lose_unknown(axis, line, why);
@@ -834,7 +894,7 @@ impl Walk {
                 self.cycle_data.push((data, line));
             }
         }
-        self.modes(line, &gs, &gdec, &plain_words, after.cycle);
+        self.modes(line, &gs, &gdec, &plain_words, param_axes, after.cycle);
         // any T word, plain or not (T#1 changes the tool as well)
         let tool_word = b
             .tokens
@@ -965,6 +1025,7 @@ impl Walk {
         gs: &[i64],
         gdec: &[Vec<u8>],
         plain_words: &[(u8, &[u8])],
+        param_axes: (u16, Option<&[u8]>),
         core_cycle: Option<i64>,
     ) {
         let axes: Vec<&[u8]> = plain_words
@@ -1008,21 +1069,32 @@ impl Walk {
             if self.haas_mill() && g == 101 {
                 // Haas G101 X0: the mirror image of X (Haas mill operator's manual, G101); a
                 // G101 naming no axis is in no page at hand: taken to mirror them all, as the
-                // check takes it, until a G100 (review 17: the restart was planned under it)
+                // check takes it, until a G100 (review 17: the restart was planned under it).
+                // G101 X#1 names X as well (review 19, finding 1)
                 self.set_unrestored("101", line, "G101 (mirror image)".into());
-                self.haas_mirrored |= if named == 0 {
+                let all = named | param_axes.0;
+                self.haas_mirror_doubt &= if all == 0 { 0 } else { !all };
+                self.haas_mirrored |= if all == 0 {
                     bit(0) | bit(1) | bit(2)
                 } else {
-                    named
+                    all
                 };
             }
             if self.haas_mill() && g == 100 {
-                let was = self.unrestored.iter().any(|(k, _, _)| k == "101");
-                // G100 X0 ends X's mirror alone (a G100 naming none, all)
-                self.haas_mirrored &= if named == 0 { 0 } else { !named };
-                if self.haas_mirrored == 0 {
-                    self.drop_unrestored("101");
-                }
+                let was = self
+                    .unrestored
+                    .iter()
+                    .any(|(k, _, _)| k == "101" || k == "101?");
+                // G100 X0 ends X's mirror alone (a G100 naming none, all); G100 X#1 leaves
+                // X's mirror not known (review 19, finding 1: it was read as naming none)
+                (self.haas_mirrored, self.haas_mirror_doubt) = self.mirror_off(
+                    line,
+                    "G100",
+                    ("101", "101?"),
+                    (self.haas_mirrored, self.haas_mirror_doubt),
+                    named,
+                    param_axes,
+                );
                 if was {
                     self.transform_cancel(line, "G100", "mirror image");
                 }
@@ -1123,19 +1195,29 @@ impl Walk {
                 .iter()
                 .filter_map(|&(letter, _)| axis_index(letter))
                 .fold(0u16, |all, i| all | bit(i));
-            if mirror_codes && text == "51.1" && !axes.is_empty() {
-                // FANUC G51.1 X0: programmable mirror image about X0 (0i-MF, group 22)
+            if mirror_codes && text == "51.1" && (named | param_axes.0) != 0 {
+                // FANUC G51.1 X0: programmable mirror image about X0 (0i-MF, group 22);
+                // G51.1 X#1 mirrors X as well, about a point set by a parameter (review 19)
                 let what = "G51.1 (programmable mirror image)";
                 self.set_unrestored("51.1", line, what.into());
-                self.mirrored |= named;
+                self.mirrored |= named | param_axes.0;
+                self.mirror_doubt &= !(named | param_axes.0);
             }
             if mirror_codes && text == "50.1" {
-                let was = self.unrestored.iter().any(|(k, _, _)| k == "51.1");
-                // G50.1 X0 ends X's mirror alone (a G50.1 naming none, all)
-                self.mirrored &= if named == 0 { 0 } else { !named };
-                if self.mirrored == 0 {
-                    self.drop_unrestored("51.1");
-                }
+                let was = self
+                    .unrestored
+                    .iter()
+                    .any(|(k, _, _)| k == "51.1" || k == "51.1?");
+                // G50.1 X0 ends X's mirror alone (a G50.1 naming none, all); G50.1 X#1
+                // leaves X's mirror not known (review 19, finding 1)
+                (self.mirrored, self.mirror_doubt) = self.mirror_off(
+                    line,
+                    "G50.1",
+                    ("51.1", "51.1?"),
+                    (self.mirrored, self.mirror_doubt),
+                    named,
+                    param_axes,
+                );
                 if was {
                     self.transform_cancel(line, "G50.1", "mirror image");
                 }
@@ -1790,6 +1872,29 @@ mod tests {
         }); // the modal state counted from 0
         step_text(&mut walk, 2, b"X10.", &s);
         assert_eq!(walk.lost[0].as_ref().map(|l| l.line), Some(2));
+    }
+
+    #[test]
+    fn a_mirror_cancel_with_a_word_not_known_leaves_that_axis_s_mirror_not_known() {
+        // review 19, finding 1: G50.1 X#1 was read as naming no axis, so ending every mirror
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        let s = state();
+        step_text(&mut walk, 1, b"G51.1 X0 Y0", &s);
+        step_text(&mut walk, 2, b"G50.1 X#1", &s);
+        let keys: Vec<&str> = walk.unrestored.iter().map(|(k, _, _)| k.as_str()).collect();
+        assert_eq!(keys, ["51.1", "51.1?"]); // Y for certain, X not known
+        step_text(&mut walk, 3, b"G50.1 Y0", &s);
+        assert_eq!(walk.unrestored.len(), 1);
+        assert_eq!(walk.unrestored[0].0, "51.1?");
+        assert!(walk.unrestored[0]
+            .2
+            .contains("of X, which G50.1 X#1 may or may not"));
+        step_text(&mut walk, 4, b"G50.1 X0", &s);
+        assert!(walk.unrestored.is_empty());
+        // an axis not mirrored is not made doubtful
+        step_text(&mut walk, 5, b"G51.1 Y0", &s);
+        step_text(&mut walk, 6, b"G50.1 X[1] Y0", &s);
+        assert!(walk.unrestored.is_empty());
     }
 
     #[test]
