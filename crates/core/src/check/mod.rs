@@ -690,6 +690,9 @@ pub struct Checker {
     /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
     /// (most blocks write no M, no L, no parameter, and a G in some of them only).
     letters: u32,
+    /// The block's codes are G00-G03 alone ([`motion_codes_only`]), set once a block in
+    /// [`Checker::read_block`] before its words are read.
+    motion_only: bool,
     /// The words of the block in hand that name a block or a program by its code
     /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
     named: Vec<(u8, u8, String)>,
@@ -920,6 +923,7 @@ impl Checker {
             seen: Vec::new(),
             clean_blocks: words::CleanBlocks::default(),
             letters: 0,
+            motion_only: false,
             named: Vec::new(),
             words_buffer: Vec::new(),
             comments_buffer: Vec::new(),
@@ -1480,6 +1484,7 @@ impl Checker {
         let motion_only = self.letters & (bit(b'G') | bit(b'M')) == bit(b'G')
             && !self.shapes.afresh
             && motion_codes_only(b.words);
+        self.motion_only = motion_only;
         (self.block_units, self.block_feed_units, self.block_feed_rev) =
             self.block_modes(b, motion_only);
         // a jump arrives only where a GOTO named a label (or computed one), and only a
