@@ -690,6 +690,9 @@ pub struct Checker {
     /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
     /// (most blocks write no M, no L, no parameter, and a G in some of them only).
     letters: u32,
+    /// The block's codes are G00-G03 alone ([`motion_codes_only`]), set once a block in
+    /// [`Checker::read_block`] before its words are read.
+    motion_only: bool,
     /// The words of the block in hand that name a block or a program by its code
     /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
     named: Vec<(u8, u8, String)>,
@@ -920,6 +923,7 @@ impl Checker {
             seen: Vec::new(),
             clean_blocks: words::CleanBlocks::default(),
             letters: 0,
+            motion_only: false,
             named: Vec::new(),
             words_buffer: Vec::new(),
             comments_buffer: Vec::new(),
@@ -1473,14 +1477,23 @@ impl Checker {
             self.program_name(b, first_words);
         }
         self.tv(b);
-        (self.block_units, self.block_feed_units, self.block_feed_rev) = self.block_modes(b);
+        // the block's codes are G00-G03 alone, as a CAM program's `G1 X Y` and `G2 X Y I J`
+        // are: they set no units or feed mode and give no word a meaning, and the rules that
+        // read those of the block's codes are not asked (a debug build asks them anyway and
+        // holds them to the same)
+        let motion_only = self.letters & (bit(b'G') | bit(b'M')) == bit(b'G')
+            && !self.shapes.afresh
+            && motion_codes_only(b.words);
+        self.motion_only = motion_only;
+        (self.block_units, self.block_feed_units, self.block_feed_rev) =
+            self.block_modes(b, motion_only);
         // a jump arrives only where a GOTO named a label (or computed one), and only a
         // statement names one
         if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
             self.jump_arrival(b);
         }
         let modal = &self.config.modal;
-        self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
+        self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap, motion_only);
         self.words(b);
         self.targets(b);
         // (the rules that read only a block's statements are not called for a block with
@@ -1696,7 +1709,26 @@ impl Checker {
     /// ([`crate::convert::code_meanings`]: the cycle tables and [`crate::meaning`]), from the
     /// whole G and M codes written in it. A shape met in the last few blocks ([`shapes::Shape`]: the codes, the letters, the
     /// cycle in force) has the meanings worked out for it then.
-    fn code_meanings(&mut self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
+    ///
+    /// `motion_only`: the block's codes are G00-G03 alone ([`motion_codes_only`]), which no
+    /// table gives a word a meaning by (`convert::cycle_table`, [`crate::meaning::block`]),
+    /// and a cycle in force is not read in a block that writes a G code: no meaning, no shape
+    /// worked out (a debug build works the meanings out and holds them to none).
+    fn code_meanings(
+        &mut self,
+        b: &BlockView<'_>,
+        lathe: bool,
+        motion_only: bool,
+    ) -> crate::meaning::Meanings {
+        if motion_only {
+            debug_assert_eq!(
+                self.meanings_afresh(b, lathe),
+                crate::meaning::Meanings::default(),
+                "line {}: G00-G03 gave a word a meaning",
+                b.line
+            );
+            return crate::meaning::Meanings::default();
+        }
         let codes = self.letters & (bit(b'G') | bit(b'M')) != 0;
         // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
         // G81): its words mean what the cycle's do
@@ -1756,14 +1788,19 @@ impl Checker {
     /// revolution: the modes in force, or the block's own units code and G93, G94, G95 (a
     /// Fanuc or Haas lathe's G98, G99), which its words are read in. One pass over its G
     /// words, each number read once, for both.
-    fn block_modes(&self, b: &BlockView<'_>) -> (Units, Units, bool) {
+    ///
+    /// `motion_only`: the block's codes are G00-G03 alone ([`motion_codes_only`]), none of
+    /// them a units or feed mode code: the modes in force (a debug build reads the codes
+    /// anyway and holds the two equal).
+    fn block_modes(&self, b: &BlockView<'_>, motion_only: bool) -> (Units, Units, bool) {
         let settings = &self.machine.settings;
         let lathe = settings.fanuc_lathe;
         let mut units = (self.machine.state.units, self.machine.state.feed_units);
         let mut mode = self.machine.state.feed_mode;
-        if self.letters & bit(b'G') == 0 {
+        if self.letters & bit(b'G') == 0 || motion_only && !cfg!(debug_assertions) {
             return (units.0, units.1, mode == 95);
         }
+        let in_force = (units.0, units.1, mode == 95);
         for w in b
             .words
             .iter()
@@ -1783,6 +1820,11 @@ impl Checker {
                 _ => {}
             }
         }
+        debug_assert!(
+            !motion_only || (units.0, units.1, mode == 95) == in_force,
+            "line {}: G00-G03 set a units or feed mode",
+            b.line
+        );
         (units.0, units.1, mode == 95)
     }
 
@@ -1876,6 +1918,23 @@ enum SubFile {
     Closed,
     /// Not a subroutine file.
     No,
+}
+
+/// Whether every G word of `words` is G00, G01, G02 or G03 written plainly -- one to three
+/// digits, no point, sign, expression or index (`G1`, `G02`, `G003`) -- as nearly every G word of a
+/// CAM program's moves is: such a block's codes set no units or feed mode and give no word a
+/// meaning ([`Checker::block_modes`], [`Checker::code_meanings`]). Asked of a block with a G
+/// word and no M word.
+fn motion_codes_only(words: &[Word<'_>]) -> bool {
+    words.iter().all(|w| {
+        w.letter != b'G'
+            || matches!(
+                w.number,
+                [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+            ) && w.sign.is_empty()
+                && w.expression.is_empty()
+                && w.index.is_empty()
+    })
 }
 
 /// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
@@ -2067,6 +2126,102 @@ mod buffer_tests {
         assert!(runs[0].1 > 0 && runs[0].2.is_some());
         assert_eq!((runs[1].1, runs[1].2), (0, None));
         assert_eq!(runs[0].3, runs[1].3);
+    }
+
+    /// The blocks whose codes are G00-G03 alone, whose units, feed mode and meanings are
+    /// taken without their codes read (`motion_codes_only`): the forms it takes and those it
+    /// leaves to the full reading.
+    #[test]
+    fn motion_codes_only_takes_g00_to_g03_written_plainly() {
+        let only = |line: &'static str| {
+            let words: Vec<Word<'static>> = line
+                .split(' ')
+                .scan(1, |column, t| {
+                    let w = Word::new(t.as_bytes(), *column);
+                    *column += t.len() + 1;
+                    Some(w)
+                })
+                .collect();
+            super::motion_codes_only(&words)
+        };
+        for line in [
+            "G1 X1.",
+            "G00 Z5.",
+            "G02 X1. Y1. I1. J0",
+            "G003 X1.",
+            "X1. Y2.",
+            "G1 G0 X1.",
+        ] {
+            assert!(only(line), "{line}");
+        }
+        for line in [
+            "G4 P1.",
+            "G1 G20 X1.",
+            "G1. X1.",
+            "G0004 X1.",
+            "G10 L2 P1",
+            "G90 G1 X1.",
+            "G33 Z-1. K1.",
+            "G1.1 X1.",
+        ] {
+            assert!(!only(line), "{line}");
+        }
+    }
+
+    /// A block whose codes are G00-G03 alone, on each family, mill and lathe, each G code
+    /// system, in a canned cycle, in inch and per revolution, with every letter beside its
+    /// code: the same findings as the rules asked of every block (`keep_verdicts(false)`),
+    /// and (a debug build's assertions) no units, feed mode or meaning that the codes' full
+    /// reading finds.
+    #[test]
+    fn a_block_of_motion_codes_alone_reads_as_its_codes_read() {
+        use super::testing::{dialect, fanuc_lathe, of_family, okuma_lathe};
+        use crate::lex::{Family, GCodeSystem};
+        let body = "G20 G95\nG1 X1. Y2. F0.1\nG81 X1. Y1. Z-1. R1. F1.\nG1 X2. Y2.\nX3.\n\
+                    G2 X1. Y1. I1. J0 K2. P2 Q1. R3.\nG03 X0 Y0 R1. L2 D1 E1. H1 S100 T1\n\
+                    G80\nG21 G94\nG0 X0 Y0 Z0 A1. B1. C1. U1. V1. W1.\n\
+                    G01 X1. F100.\nG1 X2. F100.\nG02 X3. Y3. I1. J1.\nG00 G01 X5.\nM30\n";
+        let mut configs = Vec::new();
+        for family in [
+            Family::Iso,
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::LinuxCnc,
+            Family::Okuma,
+        ] {
+            configs.push(of_family(family));
+        }
+        for system in [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C] {
+            let mut lathe = fanuc_lathe();
+            lathe.modal.g_system = system;
+            configs.push(lathe);
+        }
+        configs.push(okuma_lathe());
+        for config in configs {
+            let family = config.family;
+            let dialect = dialect(family);
+            let mut runs = Vec::new();
+            for keep in [true, false] {
+                let mut checker = Checker::new(Arc::new(config.clone()), Selection::all(), false);
+                checker.keep_verdicts(keep);
+                let mut tokens = Vec::new();
+                let mut found = Vec::new();
+                for (i, line) in body.lines().enumerate() {
+                    checker.check_line(line.as_bytes(), i + 1, &dialect, &mut tokens);
+                    found.extend(checker.take());
+                }
+                checker.finish();
+                found.extend(checker.take());
+                let found: Vec<_> = found
+                    .into_iter()
+                    .map(|f| (f.rule, f.line, f.column, f.message))
+                    .collect();
+                runs.push(found);
+            }
+            assert!(!runs[0].is_empty(), "{family:?}");
+            assert_eq!(runs[0], runs[1], "{family:?} {:?}", config.modal.g_system);
+        }
     }
 
     #[test]
