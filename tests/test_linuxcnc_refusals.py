@@ -444,3 +444,25 @@ def test_review19_programs_rs274_refuses(tmp_path, text, rule, line, message, rs
     assert [(r, n) for r, n, _ in found] == [(rule, line)], found
     assert message in found[0][2], found
     assert rs274_says in rs274_output(tmp_path, text)
+
+
+# Review 20, finding 3: an M2 in an `if` branch ends nothing for the `else`/`elseif` branch,
+# which runs where it did not; each compared with rs274 -g
+RS274_REFUSES_REVIEW20_BRANCH = [
+    (f"{HEAD}o1 if [#1 GT 0]\nM2\no1 else\no<s> call\no1 endif\n"
+     "o<s> sub\nG0 X1\no<s> endsub\nM2\n", 8),
+    (f"{HEAD}o1 if [#1 GT 0]\nM2\no1 elseif [#1 EQ 0]\no<s> call\no1 endif\n"
+     "o<s> sub\nG0 X1\no<s> endsub\nM2\n", 8),
+    # the M2 in a condition nested in the `if` branch
+    (f"{HEAD}o1 if [#1 GT 0]\no2 if [1]\nM2\no2 endif\no1 else\no<s> call\no1 endif\n"
+     "o<s> sub\nG0 X1\no<s> endsub\nM2\n", 10),
+]
+
+
+@pytest.mark.parametrize("text, line", RS274_REFUSES_REVIEW20_BRANCH)
+def test_review20_an_end_in_an_if_branch_leaves_its_else_branch_read(tmp_path, text, line):
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [("TG412", line)], found
+    assert "sub: o|s| found in illegal location" in found[0][2]
+    assert "sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
+
