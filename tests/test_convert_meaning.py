@@ -772,3 +772,47 @@ def test_an_okuma_expression_is_refused_between_families_both_ways():
     # a program without expressions converts as before
     assert convert("O1\nG21 G90\nG0 X1. Y2.\nM30\n", "fanuc-mill", "okuma-mill").splitlines()[
         -2] == "G0 X1. Y2."
+
+
+PROFILES = ["cm332-quadrant", "fanuc-lathe", "fanuc-lathe-b", "fanuc-lathe-c", "fanuc-mill",
+            "haas-lathe", "haas-mill", "heidenhain-iso", "iso-lathe", "iso-mill", "linuxcnc",
+            "okuma-lathe", "okuma-mill", "pm322-eia", "sinumerik-7e2", "sinumerik-840d"]
+
+
+@pytest.mark.parametrize("target", PROFILES)
+@pytest.mark.parametrize("text", [
+    "g0 x 1.5 y2\nm2\n", "G0 X 1.5 Y2\nM2\n", "G0 X- 1.5\nM2\n",
+    # LinuxCNC reads a number through blanks: X1 2.5 is X12.5, G1 8 is G18
+    "G0 X1 2.5\nM2\n", "g1 8\ng0 x 1 2\nm2\n",
+])
+def test_a_word_written_with_blanks_converts_to_what_the_target_reads(text, target):
+    """Review 20, 2: a word's blanks carried to a target that reads them otherwise (`X 1.5`
+    for a Haas, which alarms: TG100; `X1 2.5`, LinuxCNC's X12.5, for any other control). The
+    output of each conversion that succeeds has no TG100 on its target's own check, and reads
+    the LinuxCNC source's values."""
+    from postproc.check import check_text
+
+    try:
+        out = convert(text, "linuxcnc", target)
+    except ConversionError:
+        return  # (refused with a reason: nothing written)
+    found = [f for f in check_text(out, load_profile(target)) if f.rule == "TG100"]
+    assert found == [], (out, found)
+    if target != "linuxcnc":
+        # (a target with an implicit decimal writes X12.5 as X00125)
+        assert "G1 8" not in out and "X1 2" not in out.upper(), out
+    if "2.5" in text and target in ("fanuc-mill", "haas-mill", "sinumerik-840d"):
+        assert "X12.5" in out, out
+
+
+def test_a_word_s_blank_is_dropped_only_for_a_target_that_reads_it_otherwise():
+    # a Haas alarms on the blank after the address: dropped, upper and lower case alike
+    assert convert("g0 x 1.5 y2\nm2\n", "linuxcnc", "haas-mill") == "G21 G0 X1.5 Y2.\nM2\n"
+    assert convert("G0 X 1.5 Y2\nM2\n", "linuxcnc", "haas-mill") == "G21 G0 X1.5 Y2.\nM2\n"
+    assert convert("O1\nG0 X 1.5 Y2.\nM30\n", "fanuc-mill", "haas-mill") == (
+        "O1\nG21 G0 X1.5 Y2.\nM30\n")
+    # a FANUC skips it (ISO 6983-1 4-08): kept, as an expression's blanks are on a Haas
+    assert convert("G0 X 1.5 Y2\nM2\n", "linuxcnc", "fanuc-mill") == "G0 X 1.5 Y2.\nM2\n"
+    assert convert("g0 x [1 + 2]\nm2\n", "linuxcnc", "haas-mill") == "G21 G0 X [1 + 2]\nM2\n"
+    # LinuxCNC to LinuxCNC: as written
+    assert convert("G0 X1 2.5\nM2\n", "linuxcnc") == "G0 X1 2.5\nM2\n"
