@@ -816,3 +816,31 @@ def test_a_word_s_blank_is_dropped_only_for_a_target_that_reads_it_otherwise():
     assert convert("g0 x [1 + 2]\nm2\n", "linuxcnc", "haas-mill") == "G21 G0 X [1 + 2]\nM2\n"
     # LinuxCNC to LinuxCNC: as written
     assert convert("G0 X1 2.5\nM2\n", "linuxcnc") == "G0 X1 2.5\nM2\n"
+
+
+@pytest.mark.parametrize("text, column, message", [
+    # a FANUC reads #1=#2*#3 as an expression; rs274 stops at the '*' ("Bad character")
+    ("O1\n#2=2\n#3=4\n#1=#2*#3\nG0 X#1\nM30\n", 1, "'*' after a value outside [ ]"),
+    ("O1\n#4=SIN[30]*2\nG0 X#4\nM30\n", 1, "'*' after a value outside [ ]"),
+    ("O1\n#2=2\n#1=[#2+2]*3\nG0 X#1\nM30\n", 1, "'*' after a value outside [ ]"),
+    # an operator of another meaning is refused for that first (bitwise OR on a FANUC)
+    ("O1\n#2=2\n#3=4\n#1=#2OR#3\nG0 X#1\nM30\n", 1, "OR is a bitwise OR"),
+    ("O1\n#2=2\n#3=4\n#4=#2 AND #3\nG0 Y#4\nM30\n", 1, "AND is a bitwise AND"),
+])
+def test_an_expression_outside_brackets_is_refused_for_linuxcnc(text, column, message):
+    """Review 20, 1: a Custom Macro B expression written without [ ] (`#1=#2*#3`) was carried
+    to LinuxCNC as written, where rs274 refuses it; the bracketed test alone looked at it."""
+    with pytest.raises(ConversionError) as e:
+        convert(text, "fanuc-mill", "linuxcnc")
+    assert e.value.code == "conversion-meaning"
+    line = next(i for i, t in enumerate(text.splitlines(), 1)
+                if t.startswith("#") and not t[3:].lstrip("=").replace(".", "").isdigit())
+    assert str(e.value).startswith(f"<input>:{line}:{column}: "), str(e.value)
+    assert message in str(e.value)
+    # the same value in [ ] is carried
+    if "OR" not in text and "AND" not in text:
+        lines = text.splitlines()
+        name, value = lines[line - 1].split("=", 1)
+        lines[line - 1] = f"{name}=[{value}]"
+        bracketed = "\n".join(lines) + "\n"
+        assert convert(bracketed, "fanuc-mill", "linuxcnc") == bracketed
