@@ -216,6 +216,55 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: a binary operation outside `[ ]` after a value, in an assignment or a word's
+    /// value (`#1=#2*3`, `X#2+1`): rs274ngc reads one only inside `[ ]`, and its read_items
+    /// stops at the operator, "Bad character '*' used" (compared with rs274 -g; review 20,
+    /// finding 1). Judged where the line surely runs: rs274 does not read a line of a branch
+    /// it skips, nor a definition's body until a call runs it.
+    fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>) {
+        if !self.linuxcnc_runs_surely() || self.main_ended() {
+            return;
+        }
+        for w in b.words.iter().filter(|w| !w.expression.is_empty()) {
+            let Some(at) = crate::between::bare_operator(w.token) else {
+                continue;
+            };
+            let op = w.token[at];
+            if !matches!(op, b'*' | b'/' | b'+' | b'-') {
+                continue; // (a name after a value: the tokenizer's TG100)
+            }
+            // the operator's column: the token's bytes are the line's without its blanks
+            let start = w.column.saturating_sub(1);
+            let mut left = at;
+            let mut offset = start;
+            for (i, c) in b.text.iter().enumerate().skip(start) {
+                offset = i;
+                if *c == b' ' || *c == b'\t' {
+                    continue;
+                }
+                if left == 0 {
+                    break;
+                }
+                left -= 1;
+            }
+            let message = format!(
+                "Bad character '{}' used (rs274ngc): {} has '{}' after a value outside [ ]; \
+                 LinuxCNC reads a binary operation only inside [ ] (write {}[...])",
+                op as char,
+                String::from_utf8_lossy(w.token),
+                op as char,
+                String::from_utf8_lossy(&w.token[..w.token.len() - w.expression.len()]),
+            );
+            self.report(
+                Rule::LinuxCncRefuses,
+                message,
+                b.line,
+                column(b.text, offset),
+            );
+            return; // (rs274 stops at the first)
+        }
+    }
+
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>
     /// endsub`, optionally followed by M2 (LinuxCNC's O codes, "Calling Files": `o<name>
     /// call` runs the file of that name, which holds the definition), returns to its caller
@@ -225,6 +274,7 @@ impl Checker {
         {
             return;
         }
+        self.linuxcnc_bare_operator(b);
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
         self.definition_feed(statement.as_ref());
