@@ -208,8 +208,13 @@ def test_a_named_or_indirect_variable_is_refused_between_families(source, target
 
 
 def test_user_variables_are_carried_between_macro_b_linuxcnc_and_iso():
-    text = FANUC + "#1=5.\n#100=#1+2.\n#500=[#100*2.]\nG0 X#100 Y#500 Z#33\nM30\n"
+    text = FANUC + "#1=5.\n#100=[#1+2.]\n#500=[#100*2.]\nG0 X#100 Y#500 Z#33\nM30\n"
     assert convert(text, "fanuc-mill", "linuxcnc").splitlines()[2:5] == text.splitlines()[2:5]
+    # (`#100=#1+2.`, the operation outside [ ], rs274 refuses: "Bad character '+' used";
+    # review 20, finding 1)
+    e = refused(text.replace("[#1+2.]", "#1+2."), "fanuc-mill", "linuxcnc")
+    assert (e.code, e.line) == ("conversion-meaning", 4)
+    assert "'+' after a value outside [ ]" in e.message
     ngc = NGC + "#1=5\n#31=[#1*2]\n#999=#31\nG0 X#999\nM2\n"
     assert convert(ngc, "linuxcnc", "fanuc-mill").splitlines()[1:4] == ngc.splitlines()[1:4]
 

@@ -772,3 +772,75 @@ def test_an_okuma_expression_is_refused_between_families_both_ways():
     # a program without expressions converts as before
     assert convert("O1\nG21 G90\nG0 X1. Y2.\nM30\n", "fanuc-mill", "okuma-mill").splitlines()[
         -2] == "G0 X1. Y2."
+
+
+PROFILES = ["cm332-quadrant", "fanuc-lathe", "fanuc-lathe-b", "fanuc-lathe-c", "fanuc-mill",
+            "haas-lathe", "haas-mill", "heidenhain-iso", "iso-lathe", "iso-mill", "linuxcnc",
+            "okuma-lathe", "okuma-mill", "pm322-eia", "sinumerik-7e2", "sinumerik-840d"]
+
+
+@pytest.mark.parametrize("target", PROFILES)
+@pytest.mark.parametrize("text", [
+    "g0 x 1.5 y2\nm2\n", "G0 X 1.5 Y2\nM2\n", "G0 X- 1.5\nM2\n",
+    # LinuxCNC reads a number through blanks: X1 2.5 is X12.5, G1 8 is G18
+    "G0 X1 2.5\nM2\n", "g1 8\ng0 x 1 2\nm2\n",
+])
+def test_a_word_written_with_blanks_converts_to_what_the_target_reads(text, target):
+    """Review 20, 2: a word's blanks carried to a target that reads them otherwise (`X 1.5`
+    for a Haas, which alarms: TG100; `X1 2.5`, LinuxCNC's X12.5, for any other control). The
+    output of each conversion that succeeds has no TG100 on its target's own check, and reads
+    the LinuxCNC source's values."""
+    from postproc.check import check_text
+
+    try:
+        out = convert(text, "linuxcnc", target)
+    except ConversionError:
+        return  # (refused with a reason: nothing written)
+    found = [f for f in check_text(out, load_profile(target)) if f.rule == "TG100"]
+    assert found == [], (out, found)
+    if target != "linuxcnc":
+        # (a target with an implicit decimal writes X12.5 as X00125)
+        assert "G1 8" not in out and "X1 2" not in out.upper(), out
+    if "2.5" in text and target in ("fanuc-mill", "haas-mill", "sinumerik-840d"):
+        assert "X12.5" in out, out
+
+
+def test_a_word_s_blank_is_dropped_only_for_a_target_that_reads_it_otherwise():
+    # a Haas alarms on the blank after the address: dropped, upper and lower case alike
+    assert convert("g0 x 1.5 y2\nm2\n", "linuxcnc", "haas-mill") == "G21 G0 X1.5 Y2.\nM2\n"
+    assert convert("G0 X 1.5 Y2\nM2\n", "linuxcnc", "haas-mill") == "G21 G0 X1.5 Y2.\nM2\n"
+    assert convert("O1\nG0 X 1.5 Y2.\nM30\n", "fanuc-mill", "haas-mill") == (
+        "O1\nG21 G0 X1.5 Y2.\nM30\n")
+    # a FANUC skips it (ISO 6983-1 4-08): kept, as an expression's blanks are on a Haas
+    assert convert("G0 X 1.5 Y2\nM2\n", "linuxcnc", "fanuc-mill") == "G0 X 1.5 Y2.\nM2\n"
+    assert convert("g0 x [1 + 2]\nm2\n", "linuxcnc", "haas-mill") == "G21 G0 X [1 + 2]\nM2\n"
+    # LinuxCNC to LinuxCNC: as written
+    assert convert("G0 X1 2.5\nM2\n", "linuxcnc") == "G0 X1 2.5\nM2\n"
+
+
+@pytest.mark.parametrize("text, column, message", [
+    # a FANUC reads #1=#2*#3 as an expression; rs274 stops at the '*' ("Bad character")
+    ("O1\n#2=2\n#3=4\n#1=#2*#3\nG0 X#1\nM30\n", 1, "'*' after a value outside [ ]"),
+    ("O1\n#4=SIN[30]*2\nG0 X#4\nM30\n", 1, "'*' after a value outside [ ]"),
+    ("O1\n#2=2\n#1=[#2+2]*3\nG0 X#1\nM30\n", 1, "'*' after a value outside [ ]"),
+    # an operator of another meaning is refused for that first (bitwise OR on a FANUC)
+    ("O1\n#2=2\n#3=4\n#1=#2OR#3\nG0 X#1\nM30\n", 1, "OR is a bitwise OR"),
+    ("O1\n#2=2\n#3=4\n#4=#2 AND #3\nG0 Y#4\nM30\n", 1, "AND is a bitwise AND"),
+])
+def test_an_expression_outside_brackets_is_refused_for_linuxcnc(text, column, message):
+    """Review 20, 1: a Custom Macro B expression written without [ ] (`#1=#2*#3`) was carried
+    to LinuxCNC as written, where rs274 refuses it; the bracketed test alone looked at it."""
+    with pytest.raises(ConversionError) as e:
+        convert(text, "fanuc-mill", "linuxcnc")
+    assert e.value.code == "conversion-meaning"
+    line = next(i for i, t in enumerate(text.splitlines(), 1)
+                if t.startswith("#") and not t[3:].lstrip("=").replace(".", "").isdigit())
+    assert str(e.value).startswith(f"<input>:{line}:{column}: "), str(e.value)
+    assert message in str(e.value)
+    # the same value in [ ] is carried
+    if "OR" not in text and "AND" not in text:
+        lines = text.splitlines()
+        name, value = lines[line - 1].split("=", 1)
+        lines[line - 1] = f"{name}=[{value}]"
+        bracketed = "\n".join(lines) + "\n"
+        assert convert(bracketed, "fanuc-mill", "linuxcnc") == bracketed

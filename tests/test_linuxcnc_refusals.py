@@ -444,3 +444,59 @@ def test_review19_programs_rs274_refuses(tmp_path, text, rule, line, message, rs
     assert [(r, n) for r, n, _ in found] == [(rule, line)], found
     assert message in found[0][2], found
     assert rs274_says in rs274_output(tmp_path, text)
+
+
+# Review 20, finding 3: an M2 in an `if` branch ends nothing for the `else`/`elseif` branch,
+# which runs where it did not; each compared with rs274 -g
+RS274_REFUSES_REVIEW20_BRANCH = [
+    (f"{HEAD}o1 if [#1 GT 0]\nM2\no1 else\no<s> call\no1 endif\n"
+     "o<s> sub\nG0 X1\no<s> endsub\nM2\n", 8),
+    (f"{HEAD}o1 if [#1 GT 0]\nM2\no1 elseif [#1 EQ 0]\no<s> call\no1 endif\n"
+     "o<s> sub\nG0 X1\no<s> endsub\nM2\n", 8),
+    # the M2 in a condition nested in the `if` branch
+    (f"{HEAD}o1 if [#1 GT 0]\no2 if [1]\nM2\no2 endif\no1 else\no<s> call\no1 endif\n"
+     "o<s> sub\nG0 X1\no<s> endsub\nM2\n", 10),
+]
+
+
+@pytest.mark.parametrize("text, line", RS274_REFUSES_REVIEW20_BRANCH)
+def test_review20_an_end_in_an_if_branch_leaves_its_else_branch_read(tmp_path, text, line):
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [("TG412", line)], found
+    assert "sub: o|s| found in illegal location" in found[0][2]
+    assert "sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
+
+
+
+# Review 20, finding 1: a binary operation outside [ ] after a value (rs274ngc reads one only
+# inside [ ]; read_items stops at the operator); (the block after HEAD, the operator's column)
+RS274_REFUSES_BARE_OPERATOR = [
+    ("#2=1\n#1=#2*3", 6, "*"),
+    ("#1 = [1] * 2", 10, "*"),
+    ("#<a>=4\n#4=#<a>/2", 8, "/"),
+    ("#5=sin[30]*2", 11, "*"),
+    ("#2=1\n#4=#2 + 1", 7, "+"),
+    ("#2=1\n#4=#2-1", 6, "-"),
+]
+
+
+@pytest.mark.parametrize("body, column, op", RS274_REFUSES_BARE_OPERATOR)
+def test_review20_an_operation_outside_brackets_is_refused(tmp_path, body, column, op):
+    text = program(body)
+    line = text.count("\n", 0, text.index(body.splitlines()[-1])) + 1
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert found[0].message.startswith(f"Bad character '{op}' used (rs274ngc)")
+    assert f"Bad character '{op}' used" in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body", [
+    # a sign, a bracketed expression, ATAN's two arguments; a line of a branch rs274 skips
+    "#2=1\n#3=-#2\nG0 X-[#2]", "#1=ATAN[1]/[2]", "#1=[2*3]",
+    "o1 if [0]\n#1=#2*3\no1 endif",
+])
+def test_review20_a_value_rs274_reads_is_not_refused(tmp_path, body):
+    text = program(body)
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out

@@ -731,6 +731,81 @@ fn expression_name(family: Family, name: &str) -> Option<&'static str> {
     }
 }
 
+/// The first operation written outside `[ ]` after a value in a word's `token` (`#1=#2*3`,
+/// `X#2+1`, `#4=SIN[30]*2`, `#5=#2OR#3`): its byte offset in the token. A Custom Macro B
+/// control reads such a value as an expression; LinuxCNC reads a binary operation only inside
+/// `[ ]` (rs274ngc read_real_expression; outside them read_items stops: "Bad character '*'
+/// used", "Bad character 'o' used"). A sign before the value (`#3=-#2`, `X-1.`) is no
+/// operation. None for a plain number, a parameter, and a bracketed expression.
+pub(crate) fn bare_operator(token: &[u8]) -> Option<usize> {
+    // the address: `#n=` / `#<name>=` of an assignment, else the letter (and an index `=`)
+    let value = if token.first() == Some(&b'#') {
+        token.iter().position(|&c| c == b'=')? + 1
+    } else {
+        let letter = usize::from(token.first().is_some_and(u8::is_ascii_alphabetic));
+        letter + usize::from(token.get(letter) == Some(&b'='))
+    };
+    let (mut depth, mut seen) = (0usize, false);
+    // ATAN's two arguments, `ATAN[y]/[x]`: its `/` is no operation (`atan` the depth of its
+    // first argument's bracket while it is open, then `divide` for the `/` after it)
+    let (mut atan, mut divide) = (None, false);
+    let mut i = value;
+    while i < token.len() {
+        let c = token[i];
+        if divide && c != b' ' && c != b'\t' {
+            divide = false;
+            if c == b'/' {
+                seen = false;
+                i += 1;
+                continue;
+            }
+        }
+        match c {
+            b'[' => {
+                if atan == Some(usize::MAX) {
+                    atan = Some(depth);
+                }
+                depth += 1;
+            }
+            b']' => {
+                depth = depth.saturating_sub(1);
+                if atan == Some(depth) {
+                    atan = None;
+                    divide = true;
+                }
+                seen = depth == 0;
+            }
+            _ if depth > 0 => {}
+            b'A' | b'a'
+                if token[i..].len() >= 4 && token[i..i + 4].eq_ignore_ascii_case(b"ATAN") =>
+            {
+                if seen {
+                    return Some(i);
+                }
+                atan = Some(usize::MAX);
+                i += 4;
+                continue;
+            }
+            _ if depth > 0 => {}
+            b'<' => {
+                // a LinuxCNC named parameter `#<name>`: its name may hold any character
+                i += token[i..]
+                    .iter()
+                    .position(|&c| c == b'>')
+                    .unwrap_or(token.len() - i);
+                seen = true;
+            }
+            b'*' | b'/' | b'+' | b'-' if seen => return Some(i),
+            b'*' | b'/' | b'+' | b'-' | b'#' | b' ' | b'\t' => {}
+            b'0'..=b'9' | b'.' => seen = true,
+            _ if c.is_ascii_alphabetic() && seen => return Some(i),
+            _ => seen = false,
+        }
+        i += 1;
+    }
+    None
+}
+
 /// The first operator or function name (upper case) in an expression word's `token` whose
 /// meaning `differs` says is not the same on both families: the name, None when every one is.
 fn expression_names(token: &[u8], mut differs: impl FnMut(&str) -> bool) -> Option<String> {
@@ -816,8 +891,11 @@ fn expressions(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     if !bracket(from) {
         return Ok(());
     }
-    for w in k.words.iter().filter(|w| w.token.contains(&b'[')) {
-        if to == Family::Okuma {
+    // (a value with an operation outside `[ ]`, `#1=#2*#3`, is an expression too: review 20,
+    // finding 1)
+    let expression = |w: &&Word<'_>| w.token.contains(&b'[') || bare_operator(w.token).is_some();
+    for w in k.words.iter().filter(expression) {
+        if to == Family::Okuma && w.token.contains(&b'[') {
             return Err(refuse(
                 w,
                 format!(
@@ -830,7 +908,7 @@ fn expressions(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
                 "meaning",
             ));
         }
-        if to == Family::Sinumerik {
+        if to == Family::Sinumerik && w.token.contains(&b'[') {
             return Err(refuse(
                 w,
                 format!(
@@ -868,6 +946,23 @@ fn expressions(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
                     article(k.name, from),
                     meaning(to),
                     article(k.name, to)
+                ),
+                "meaning",
+            ));
+        }
+        // every operation means the same: LinuxCNC still reads one only inside `[ ]`
+        if let Some(at) = bare_operator(w.token).filter(|_| to == Family::LinuxCnc) {
+            let op = w.token[at] as char;
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: '{op}' after a value outside [ ], which {} control reads as an \
+                     expression and LinuxCNC refuses (rs274ngc reads a binary operation only \
+                     inside [ ]: \"Bad character '{}' used\"); tapegate does not rewrite \
+                     expressions between families: write the value in [ ]",
+                    text(w.token),
+                    article(k.name, from),
+                    op.to_ascii_lowercase()
                 ),
                 "meaning",
             ));
@@ -1099,6 +1194,34 @@ fn subprogram_calls(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refus
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_operation_outside_brackets_after_a_value_is_found() {
+        // review 20, finding 1 (each compared with rs274 -g: "Bad character '*' used")
+        assert_eq!(bare_operator(b"#1=#2*#3"), Some(5));
+        assert_eq!(bare_operator(b"#4=SIN[30]*2"), Some(10));
+        assert_eq!(bare_operator(b"#1=[#2+2]*3"), Some(9));
+        assert_eq!(bare_operator(b"#4=#<a>/2"), Some(7));
+        assert_eq!(bare_operator(b"X#2+1"), Some(3));
+        assert_eq!(bare_operator(b"#5=#2OR#3"), Some(5));
+        assert_eq!(bare_operator(b"#1=2-1"), Some(4));
+        // a sign, a bracketed expression, ATAN's two arguments: no operation outside [ ]
+        for plain in [
+            &b"#3=-#2"[..],
+            b"X-1.5",
+            b"Y-[#1]",
+            b"X[#1+2]",
+            b"#1=ATAN[#2]/[1]",
+            b"#1=[ATAN[1]/[2]*[1]]",
+            b"G01",
+            b"#1=#2",
+            b"#<a-b>=#<c-d>",
+        ] {
+            assert_eq!(bare_operator(plain), None, "{}", text(plain));
+        }
+        // ... but an operation after ATAN's second argument is one
+        assert_eq!(bare_operator(b"#1=ATAN[1]/[2]*3"), Some(14));
+    }
 
     fn words(line: &str) -> Vec<Word<'_>> {
         let mut at = 0;

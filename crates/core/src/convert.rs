@@ -189,6 +189,9 @@ pub struct ConvertConfig {
     /// alarms on `g1 x2.5`: TG101): a word written in lower case is written in upper case,
     /// which both read as the same word (review 16c, finding 5).
     pub upper_case: bool,
+    /// The target is a Haas NGC: it alarms on a blank between an address and its number
+    /// (`X 1.5`, TG100), where the other controls skip it ([`crate::lex::apart`]).
+    pub target_ngc: bool,
     /// The target control keeps the units a program selected through its M02/M30
     /// (`ModalSettings::units_kept_at_end`; the profile says, `Profile.units_kept_at_end`).
     pub target_units_kept: bool,
@@ -446,6 +449,21 @@ pub(crate) fn okuma_home_number(statement: &[u8]) -> bool {
         return false;
     };
     !number.is_empty() && number.iter().all(u8::is_ascii_digit)
+}
+
+/// A word of an address and a plain number (`X-1.5`, `G01`, `x.5`): no index, parameter or
+/// expression.
+fn bare_number_word(token: &[u8]) -> bool {
+    let Some((letter, rest)) = token.split_first() else {
+        return false;
+    };
+    let rest = rest
+        .strip_prefix(b"+")
+        .or(rest.strip_prefix(b"-"))
+        .unwrap_or(rest);
+    letter.is_ascii_alphabetic()
+        && !rest.is_empty()
+        && rest.iter().all(|c| c.is_ascii_digit() || *c == b'.')
 }
 
 /// `text` (starting at byte `start` of its block) in upper case but inside the block's
@@ -3103,6 +3121,7 @@ impl Converter {
             }
         }
         self.follow_units();
+        self.close_blanks(b, &mut new, &mut changed);
         if self.c.upper_case {
             self.upper_case(b, &mut new, &mut changed);
         }
@@ -3162,6 +3181,54 @@ impl Converter {
         self.replacements = replacements;
         self.codes = (gs, ms);
         Ok(Some(line))
+    }
+
+    /// A plain word (an address and a number) written with blanks in it that the target reads
+    /// otherwise (review 20, finding 2): a Haas NGC alarms on `X 1.5` and `X- 1.5` (TG100), and
+    /// `X1 2.5`, LinuxCNC's X12.5 (it reads a number through blanks), is on any other control
+    /// a word X1 and a number without an address. Such a word is written as its token, the
+    /// blanks dropped, in upper and lower case alike; elsewhere the word's blanks are kept.
+    fn close_blanks(
+        &mut self,
+        b: &BlockIn<'_>,
+        new: &mut Option<Vec<Option<Vec<u8>>>>,
+        changed: &mut Vec<Option<Vec<u8>>>,
+    ) {
+        let through = self.c.family == Family::LinuxCnc && self.c.target_family != Family::LinuxCnc;
+        if !(self.c.target_ngc || through) {
+            return;
+        }
+        let closed = |w: &WordSpan<'_>| -> bool {
+            let Some(text) = b.text.get(w.start..w.end) else {
+                return false;
+            };
+            let blank = |c: &u8| *c == b' ' || *c == b'\t';
+            if !text.iter().any(blank) || !bare_number_word(w.token) {
+                return false;
+            }
+            // (the span holds the token's bytes and blanks only: no comment inside it)
+            let squeezed: Vec<u8> = text.iter().copied().filter(|c| !blank(c)).collect();
+            if !squeezed.eq_ignore_ascii_case(w.token) {
+                return false;
+            }
+            // a blank after the number's first digit or point is LinuxCNC's alone; on a Haas
+            // any blank in the word alarms
+            let first_digit = text.iter().position(|c| c.is_ascii_digit() || *c == b'.');
+            self.c.target_ngc || first_digit.is_some_and(|at| text[at..].iter().any(blank))
+        };
+        if !b.words.iter().any(closed) {
+            return;
+        }
+        let replacements = new.get_or_insert_with(|| {
+            let mut all = std::mem::take(changed);
+            all.resize(b.words.len(), None);
+            all
+        });
+        for (slot, w) in replacements.iter_mut().zip(b.words) {
+            if slot.is_none() && closed(w) {
+                *slot = Some(w.token.to_vec());
+            }
+        }
     }
 
     /// The block's words written in lower case (`g1 x[sin[30]]`), in upper case for a target
@@ -7287,6 +7354,7 @@ mod tests {
             source_detected: false,
             src_units_given: false,
             upper_case: false,
+            target_ngc: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,

@@ -275,6 +275,7 @@ impl Machine {
             source_detected: options.source_detected,
             src_units_given: options.source_units_given,
             upper_case: options.upper_case,
+            target_ngc: target.control == Control::Haas,
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
             out_increment: target.increment_digits,

@@ -424,6 +424,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         source_detected: false,
         src_units_given: false,
         upper_case: false,
+        target_ngc: false,
         target_units_kept: true,
         out_formats,
         dwell_formats: dwell,

@@ -216,6 +216,55 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: a binary operation outside `[ ]` after a value, in an assignment or a word's
+    /// value (`#1=#2*3`, `X#2+1`): rs274ngc reads one only inside `[ ]`, and its read_items
+    /// stops at the operator, "Bad character '*' used" (compared with rs274 -g; review 20,
+    /// finding 1). Judged where the line surely runs: rs274 does not read a line of a branch
+    /// it skips, nor a definition's body until a call runs it.
+    fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>) {
+        if !self.linuxcnc_runs_surely() || self.main_ended() {
+            return;
+        }
+        for w in b.words.iter().filter(|w| !w.expression.is_empty()) {
+            let Some(at) = crate::between::bare_operator(w.token) else {
+                continue;
+            };
+            let op = w.token[at];
+            if !matches!(op, b'*' | b'/' | b'+' | b'-') {
+                continue; // (a name after a value: the tokenizer's TG100)
+            }
+            // the operator's column: the token's bytes are the line's without its blanks
+            let start = w.column.saturating_sub(1);
+            let mut left = at;
+            let mut offset = start;
+            for (i, c) in b.text.iter().enumerate().skip(start) {
+                offset = i;
+                if *c == b' ' || *c == b'\t' {
+                    continue;
+                }
+                if left == 0 {
+                    break;
+                }
+                left -= 1;
+            }
+            let message = format!(
+                "Bad character '{}' used (rs274ngc): {} has '{}' after a value outside [ ]; \
+                 LinuxCNC reads a binary operation only inside [ ] (write {}[...])",
+                op as char,
+                String::from_utf8_lossy(w.token),
+                op as char,
+                String::from_utf8_lossy(&w.token[..w.token.len() - w.expression.len()]),
+            );
+            self.report(
+                Rule::LinuxCncRefuses,
+                message,
+                b.line,
+                column(b.text, offset),
+            );
+            return; // (rs274 stops at the first)
+        }
+    }
+
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>
     /// endsub`, optionally followed by M2 (LinuxCNC's O codes, "Calling Files": `o<name>
     /// call` runs the file of that name, which holds the definition), returns to its caller
@@ -225,6 +274,7 @@ impl Checker {
         {
             return;
         }
+        self.linuxcnc_bare_operator(b);
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
         self.definition_feed(statement.as_ref());
@@ -242,7 +292,16 @@ impl Checker {
         let main = self.open_definition.is_none();
         for &(_, kind, text) in b.statements {
             match (kind, main) {
-                (Kind::Flow, true) => linuxcnc_flow(&mut self.linuxcnc_open_flow, text),
+                (Kind::Flow, true) => {
+                    // an `else`/`elseif` runs where its `if` branch did not: an M2/M30 in that
+                    // branch (at the label's depth or deeper) no longer ends the lines (review 20)
+                    if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
+                        if self.linuxcnc_end_depth.is_some_and(|d| d > at) {
+                            self.linuxcnc_end_depth = None;
+                        }
+                    }
+                    linuxcnc_flow(&mut self.linuxcnc_open_flow, text)
+                }
                 (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
                 // the subroutine may set another feed mode, or restore the caller's
                 (Kind::Call, true) => self.linuxcnc_mode_unsure = true,
@@ -1098,6 +1157,16 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
     }
 }
 
+/// An `else` or `elseif` of a condition open in `open`: the index of its `if` there.
+fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8]) -> Option<usize> {
+    let keyword = crate::statement::o_keyword(text)?;
+    if !matches!(keyword.as_slice(), b"else" | b"elseif") {
+        return None;
+    }
+    let label = crate::statement::o_label(text);
+    open.iter().rposition(|l| *l == label)
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::testing::{
@@ -1390,6 +1459,35 @@ mod tests {
             assert_eq!(refused(&before), []);
             let after_end = format!("G21\n{name} call\nM2\n{name} sub\nG0 X1\n{name} endsub\n");
             assert_eq!(refused(&after_end), []);
+            // an M2 in the `if` branch ends nothing for its `else`/`elseif` branch, which
+            // runs where it did not (review 20; rs274 -g refuses the definition on line 7)
+            for other in ["else", "elseif [1]"] {
+                let text = format!(
+                    "G21\no1 if [#1 GT 0]\nM2\no1 {other}\n{name} call\no1 endif\n\
+                     {name} sub\nG0 X1\n{name} endsub\nM2\n"
+                );
+                let found = refused(&text);
+                assert_eq!(
+                    found.iter().map(|f| f.0).collect::<Vec<_>>(),
+                    [7],
+                    "{found:?}"
+                );
+            }
+            // an M2 before the condition still ends the program: nothing after it is read
+            let ended = format!(
+                "G21\nM2\no1 if [#1 GT 0]\nM2\no1 else\n{name} call\no1 endif\n\
+                 {name} sub\nG0 X1\n{name} endsub\n"
+            );
+            assert_eq!(refused(&ended), []);
+            // the M2 in a nested condition of the `if` branch is cleared by the outer `else`
+            let nested = format!(
+                "G21\no1 if [#1 GT 0]\no2 if [1]\nM2\no2 endif\no1 else\n{name} call\n\
+                 o1 endif\n{name} sub\nG0 X1\n{name} endsub\nM2\n"
+            );
+            assert_eq!(
+                refused(&nested).iter().map(|f| f.0).collect::<Vec<_>>(),
+                [9]
+            );
         }
         // another profile's o-words are no LinuxCNC subroutines
         let fanuc = of_family(Family::MacroB);
