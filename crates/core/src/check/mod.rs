@@ -2181,17 +2181,7 @@ mod buffer_tests {
                     G2 X1. Y1. I1. J0 K2. P2 Q1. R3.\nG03 X0 Y0 R1. L2 D1 E1. H1 S100 T1\n\
                     G80\nG21 G94\nG0 X0 Y0 Z0 A1. B1. C1. U1. V1. W1.\n\
                     G01 X1. F100.\nG1 X2. F100.\nG02 X3. Y3. I1. J1.\nG00 G01 X5.\nM30\n";
-        let mut configs = Vec::new();
-        for family in [
-            Family::Iso,
-            Family::MacroB,
-            Family::Sinumerik,
-            Family::Heidenhain,
-            Family::LinuxCnc,
-            Family::Okuma,
-        ] {
-            configs.push(of_family(family));
-        }
+        let mut configs: Vec<_> = Family::ALL.into_iter().map(of_family).collect();
         for system in [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C] {
             let mut lathe = fanuc_lathe();
             lathe.modal.g_system = system;
