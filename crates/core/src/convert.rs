@@ -466,6 +466,30 @@ fn bare_number_word(token: &[u8]) -> bool {
         && rest.iter().all(|c| c.is_ascii_digit() || *c == b'.')
 }
 
+/// The replacement of each word of a block, made on first need from the replacements
+/// `changed` holds so far (one slot a word): the pass that writes a word anew fills its slot.
+fn replacements<'n>(
+    new: &'n mut Option<Vec<Option<Vec<u8>>>>,
+    changed: &mut Vec<Option<Vec<u8>>>,
+    words: usize,
+) -> &'n mut Vec<Option<Vec<u8>>> {
+    new.get_or_insert_with(|| {
+        let mut all = std::mem::take(changed);
+        all.resize(words, None);
+        all
+    })
+}
+
+/// Whether a word's written span is its token's bytes (in either case) with blanks between
+/// them and nothing else: no comment inside it.
+fn spells(span: &[u8], token: &[u8]) -> bool {
+    let mut letters = span.iter().filter(|c| **c != b' ' && **c != b'\t');
+    token
+        .iter()
+        .all(|t| letters.next().is_some_and(|c| c.eq_ignore_ascii_case(t)))
+        && letters.next().is_none()
+}
+
 /// `text` (starting at byte `start` of its block) in upper case but inside the block's
 /// `comments` (byte offsets in the block) and inside double quotes (a SINUMERIK string):
 /// those are kept as written.
@@ -3207,8 +3231,7 @@ impl Converter {
                 return false;
             }
             // (the span holds the token's bytes and blanks only: no comment inside it)
-            let squeezed: Vec<u8> = text.iter().copied().filter(|c| !blank(c)).collect();
-            if !squeezed.eq_ignore_ascii_case(w.token) {
+            if !spells(text, w.token) {
                 return false;
             }
             // a blank after the number's first digit or point is LinuxCNC's alone; on a Haas
@@ -3219,11 +3242,7 @@ impl Converter {
         if !b.words.iter().any(closed) {
             return;
         }
-        let replacements = new.get_or_insert_with(|| {
-            let mut all = std::mem::take(changed);
-            all.resize(b.words.len(), None);
-            all
-        });
+        let replacements = replacements(new, changed, b.words.len());
         for (slot, w) in replacements.iter_mut().zip(b.words) {
             if slot.is_none() && closed(w) {
                 *slot = Some(w.token.to_vec());
@@ -3250,11 +3269,7 @@ impl Converter {
         {
             return;
         }
-        let replacements = new.get_or_insert_with(|| {
-            let mut all = std::mem::take(changed);
-            all.resize(b.words.len(), None);
-            all
-        });
+        let replacements = replacements(new, changed, b.words.len());
         for (slot, w) in replacements.iter_mut().zip(b.words) {
             if let Some(token) = slot.as_mut() {
                 token.make_ascii_uppercase(); // a word written anew: no blanks of its own
@@ -3265,14 +3280,7 @@ impl Converter {
             }
             // the word as written, its blanks kept (review 19, finding 5: `x [1 + 2]` was
             // written `X[1+2]`, the token's text), when its span lies in the block's text
-            let written = b.text.get(w.start..w.end).filter(|t| {
-                let squeezed: Vec<u8> = t
-                    .iter()
-                    .copied()
-                    .filter(|c| *c != b' ' && *c != b'\t')
-                    .collect();
-                squeezed.eq_ignore_ascii_case(w.token)
-            });
+            let written = b.text.get(w.start..w.end).filter(|t| spells(t, w.token));
             *slot = Some(match written {
                 Some(text) => upper_outside(text, w.start, b.comments),
                 None => w.token.to_ascii_uppercase(),
