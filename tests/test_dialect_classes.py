@@ -592,6 +592,23 @@ def test_a_blank_no_source_reads_is_refused_saying_so(tmp_path, profile, block, 
     assert says in hits[0]["message"] and "no Fanuc or Haas source" in hits[0]["message"]
 
 
+@pytest.mark.parametrize("profile, block, column, number", [
+    ("haas-lathe", "N20 T1 01", 8, "'01'"),      # held12/held13's form: T101 written T1 01
+    ("haas-mill", "G00 X1 00. Y2.", 8, "'00.'"),
+    ("fanuc-mill", "G00 X1. -2.5", 9, "'-2.5'"),
+])
+def test_the_stray_number_is_named_whole(tmp_path, profile, block, column, number):
+    """The refusal names the number as written after the blank (one sign, its digits and point),
+    not its first character: `T1 01` says '01', which is the word's rest if a control read it."""
+    path = tmp_path / "O1000.nc"
+    path.write_text(f"%\nO1000\nG21 G90 G00 X0 Z0\n{block}\nM30\n%\n")
+    code, lines = jsonl(str(path), "-p", profile)
+    assert code == 1
+    hits = [f for f in lines if f.get("rule") == "TG100"]
+    assert [(f["line"], f["column"]) for f in hits] == [(4, column)]
+    assert hits[0]["message"].startswith(f"number {number} without an address letter")
+
+
 def test_linuxcnc_reads_a_blank_inside_a_word_as_rs274_does(tmp_path):
     """rs274 drops every blank outside comments before it reads a line: `G1 8` is G18 and
     `X1 00` is X100 there, which the arc in the XZ plane after it shows (rs274 -g)."""

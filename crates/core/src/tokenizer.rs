@@ -305,7 +305,15 @@ fn tokenize_as<'a, const PLAIN: bool>(
                 return Err(err(ErrorKind::Skip, message.into(), pos, "4"));
             }
             b'0'..=b'9' | b'.' | b'+' | b'-' => {
-                let mut message = format!("number '{}' without an address letter", b as char);
+                // the number as written: one sign, then its digits and point (`01` of `T1 01`,
+                // not its first digit alone)
+                let start = pos + usize::from(matches!(b, b'+' | b'-'));
+                let len = line[start..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit() || **c == b'.')
+                    .count();
+                let number = String::from_utf8_lossy(&line[pos..start + len]);
+                let mut message = format!("number '{number}' without an address letter");
                 if dialect.family == Family::MacroB && split_word(line, pos) {
                     message.push_str(
                         "; if it is the rest of the word before it (G1 8 for G18), no Fanuc or \
@@ -1661,6 +1669,21 @@ mod tests {
         assert!(!message.contains("the rest of the word"), "{message}");
         let (message, _) = read("G1 8", &STRICT).unwrap_err();
         assert_eq!(message, "number '8' without an address letter");
+        // the number is named whole, as written: one sign, its digits and point
+        for (text, number, at) in [
+            ("N20 T1 01", "'01'", 7),
+            ("G0 X1 00. Y2.", "'00.'", 6),
+            ("G0 X1. -2.5", "'-2.5'", 7),
+            ("N10 ---", "'-'", 4),
+            ("N10 .5", "'.5'", 4),
+        ] {
+            let (message, offset) = read(text, &fanuc).unwrap_err();
+            assert!(
+                message.starts_with(&format!("number {number} without an address letter")),
+                "{text:?}: {message}"
+            );
+            assert_eq!(offset, at, "{text:?}");
+        }
     }
 
     #[test]
