@@ -401,6 +401,39 @@ fn letters_of(words: &[Word<'_>]) -> u32 {
     })
 }
 
+/// What [`letters_of`] gives a word by its letter: its bit for A-Z, [`PARAMETER`] for `#`,
+/// nothing for any other byte (one look a word, where the tests were about ten instructions).
+const LETTER_BITS: [u32; 256] = {
+    let mut table = [0u32; 256];
+    let mut c = b'A';
+    while c <= b'Z' {
+        table[c as usize] = bit(c);
+        c += 1;
+    }
+    table[b'#' as usize] = PARAMETER;
+    table
+};
+
+/// [`letters_of`] `words`, and whether their codes are G00-G03 alone as [`motion_codes_only`]
+/// reads them, in one walk of the words (each was a walk of its own, asked of every block; a
+/// debug build walks both and holds them equal).
+fn letters_and_motion(words: &[Word<'_>]) -> (u32, bool) {
+    let mut letters = 0;
+    let mut motion = true;
+    for w in words {
+        letters |= LETTER_BITS[usize::from(w.letter)];
+        if !w.index.is_empty() {
+            letters |= INDEXED;
+        }
+        if w.letter == b'G' {
+            motion &= plain_motion_code(w);
+        }
+    }
+    debug_assert_eq!(letters, letters_of(words));
+    debug_assert_eq!(motion, motion_codes_only(words));
+    (letters, motion)
+}
+
 /// [`Checker::letters`]: the block has a `#` word (a parameter set, or a value read from one).
 const PARAMETER: u32 = 1 << 26;
 /// [`Checker::letters`]: the block has a word with an index (`#1=5`, `R1=5`, `M2=3`).
@@ -1208,7 +1241,8 @@ impl Checker {
 
     fn read_block(&mut self, b: &BlockView<'_>) {
         // (the letters first: every rule after may ask them, not walk the words)
-        self.letters = letters_of(b.words);
+        let motion_words;
+        (self.letters, motion_words) = letters_and_motion(b.words);
         self.reading_end.read(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
@@ -1483,7 +1517,7 @@ impl Checker {
         // holds them to the same)
         let motion_only = self.letters & (bit(b'G') | bit(b'M')) == bit(b'G')
             && !self.shapes.afresh
-            && motion_codes_only(b.words);
+            && motion_words;
         self.motion_only = motion_only;
         (self.block_units, self.block_feed_units, self.block_feed_rev) =
             self.block_modes(b, motion_only);
@@ -1926,15 +1960,20 @@ enum SubFile {
 /// meaning ([`Checker::block_modes`], [`Checker::code_meanings`]). Asked of a block with a G
 /// word and no M word.
 fn motion_codes_only(words: &[Word<'_>]) -> bool {
-    words.iter().all(|w| {
-        w.letter != b'G'
-            || matches!(
-                w.number,
-                [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
-            ) && w.sign.is_empty()
-                && w.expression.is_empty()
-                && w.index.is_empty()
-    })
+    words
+        .iter()
+        .all(|w| w.letter != b'G' || plain_motion_code(w))
+}
+
+/// Whether G word `w` is G00, G01, G02 or G03 written plainly ([`motion_codes_only`]).
+#[inline(always)]
+fn plain_motion_code(w: &Word<'_>) -> bool {
+    matches!(
+        w.number,
+        [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+    ) && w.sign.is_empty()
+        && w.expression.is_empty()
+        && w.index.is_empty()
 }
 
 /// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
