@@ -1538,8 +1538,13 @@ impl Checker {
         let before = Before::of(&self.machine.state);
         self.values.clear();
         let mut first_unknown = None;
+        // (the key of the block's codes, built code by code in this walk)
+        let mut code_key = codes::KeyBuilder::new();
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else {
+                if matches!(w.letter, b'G' | b'M') {
+                    code_key.refuse();
+                }
                 // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here; and
                 // S2=30000, X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension
                 // (a number or an expression), whose limits the profile's are not: not
@@ -1589,12 +1594,25 @@ impl Checker {
                 // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
                 // modal state knows (the dialect's code table names what it does)
                 b'G' if !v.is_whole() => {
+                    code_key.refuse();
                     self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
                     self.values.mirror |= crate::modal::mirror_code(v);
                     self.values.decimal_g = true;
                 }
-                b'G' => self.values.push_g(v.trunc()),
-                b'M' => self.values.ms.push(v.trunc()),
+                b'G' => {
+                    let g = v.trunc();
+                    code_key.code(w, g);
+                    self.values.push_g(g);
+                }
+                b'M' => {
+                    let m = v.trunc();
+                    if v.is_whole() {
+                        code_key.code(w, m);
+                    } else {
+                        code_key.refuse();
+                    }
+                    self.values.ms.push(m);
+                }
                 // G68 R45 (an angle), G05.1 Q1 (a selector), G68.2 X Y Z (a tilted plane's
                 // origin): no position, radius or cycle value
                 letter
@@ -1605,12 +1623,18 @@ impl Checker {
         }
         self.values.in_system(&self.config.modal);
         // (no key where verdicts are not kept: Checker::keep_verdicts, the tests' oracle)
-        self.code_key = if self.letters & (bit(b'G') | bit(b'M')) != 0 && !self.format_table.afresh
-        {
-            codes::code_key(b.words, &self.readable)
-        } else {
+        // (a debug build holds the key built in the walk to the one read from the words)
+        self.code_key = if self.format_table.afresh {
             None
+        } else {
+            code_key.key()
         };
+        debug_assert_eq!(
+            self.code_key,
+            codes::code_key(b.words, &self.readable).filter(|_| !self.format_table.afresh),
+            "line {}: the codes' key",
+            b.line
+        );
         // what the codes do with the axis words: kept by the set of codes (a debug build, the
         // tests', works it out anyway and holds the two equal)
         let kept = self.code_key.map_or(0, |k| self.verdicts.get(k));
