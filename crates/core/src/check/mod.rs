@@ -2231,6 +2231,50 @@ mod buffer_tests {
         }
     }
 
+    /// The one walk of a block's words ([`super::letters_and_motion`]) finds the letters
+    /// [`super::letters_of`] finds and says G00-G03 alone where [`super::motion_codes_only`]
+    /// says it: lower case, `#` and `:` words, indexes, expressions, signed and decimal G
+    /// words.
+    #[test]
+    fn letters_and_motion_codes_are_found_in_one_walk_as_in_two() {
+        let words = |line: &'static str| -> Vec<Word<'static>> {
+            line.split(' ')
+                .map(|t| Word::new(t.as_bytes(), 1))
+                .collect()
+        };
+        let lines = [
+            "G1 X1. Y2.",
+            "g1 x1.",
+            "N10 G02 X1. Y1. I1. J0 F100.",
+            "#1=5",
+            "G1 X#1",
+            "X[#1+2] G0",
+            ":100",
+            "R1=5 G1 X1.",
+            "M2=3",
+            "G-1 X1.",
+            "G1. X1.",
+            "G0004 X1.",
+            "G90 G1 X1. M3",
+            "G1=2 X1.",
+            "X1.",
+        ];
+        for line in lines {
+            let w = words(line);
+            let (letters, motion) = super::letters_and_motion(&w);
+            assert_eq!(letters, super::letters_of(&w), "{line}");
+            assert_eq!(motion, super::motion_codes_only(&w), "{line}");
+        }
+        assert_eq!(
+            super::letters_and_motion(&words("G1 X#1")),
+            (super::bit(b'G') | super::bit(b'X'), true)
+        );
+        assert_eq!(
+            super::letters_and_motion(&words("#1=5 G4")),
+            (super::PARAMETER | super::INDEXED | super::bit(b'G'), false)
+        );
+    }
+
     /// A block whose codes are G00-G03 alone, on each family, mill and lathe, each G code
     /// system, in a canned cycle, in inch and per revolution, with every letter beside its
     /// code: the same findings as the rules asked of every block (`keep_verdicts(false)`),
