@@ -364,6 +364,54 @@ pub(super) fn code_key(words: &[Word<'_>], readable: &[Option<Dec>]) -> Option<C
     (n > 0).then_some(key)
 }
 
+/// [`code_key`] built code by code, in the walk of a block's words that reads their values
+/// (`Checker::read_block`: one walk for both, where the key was a walk of its own): the same
+/// key, or None, for the same words and values.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct KeyBuilder {
+    key: u64,
+    n: u32,
+    ok: bool,
+}
+
+impl KeyBuilder {
+    pub(super) const fn new() -> KeyBuilder {
+        KeyBuilder {
+            key: 0,
+            n: 0,
+            ok: true,
+        }
+    }
+
+    /// A G or M word whose value is no whole number read: no key.
+    #[inline(always)]
+    pub(super) fn refuse(&mut self) {
+        self.ok = false;
+    }
+
+    /// G or M word `w`, whose value is the whole number `number`: its code in the key, or no
+    /// key where the word has an index or an expression, the number is not below 1,024 or
+    /// five codes came before.
+    #[inline(always)]
+    pub(super) fn code(&mut self, w: &Word<'_>, number: i64) {
+        if !w.index.is_empty() || !w.expression.is_empty() || !(0..1024).contains(&number) {
+            self.ok = false;
+            return;
+        }
+        if self.n == 5 {
+            self.ok = false;
+            return;
+        }
+        self.key = self.key << 12 | 1 << 11 | u64::from(w.letter == b'M') << 10 | number as u64;
+        self.n += 1;
+    }
+
+    /// The key: None where a word refused one or there was no code.
+    pub(super) fn key(self) -> Option<CodeKey> {
+        (self.ok && self.n > 0).then_some(self.key)
+    }
+}
+
 /// [`CodeVerdicts`]: TG301-TG307 said nothing of the codes.
 pub(super) const SILENT: u16 = 1;
 /// [`CodeVerdicts`]: the motion group's reading of the codes is kept, in the bits below.

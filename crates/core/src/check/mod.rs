@@ -401,6 +401,39 @@ fn letters_of(words: &[Word<'_>]) -> u32 {
     })
 }
 
+/// What [`letters_of`] gives a word by its letter: its bit for A-Z, [`PARAMETER`] for `#`,
+/// nothing for any other byte (one look a word, where the tests were about ten instructions).
+const LETTER_BITS: [u32; 256] = {
+    let mut table = [0u32; 256];
+    let mut c = b'A';
+    while c <= b'Z' {
+        table[c as usize] = bit(c);
+        c += 1;
+    }
+    table[b'#' as usize] = PARAMETER;
+    table
+};
+
+/// [`letters_of`] `words`, and whether their codes are G00-G03 alone as [`motion_codes_only`]
+/// reads them, in one walk of the words (each was a walk of its own, asked of every block; a
+/// debug build walks both and holds them equal).
+fn letters_and_motion(words: &[Word<'_>]) -> (u32, bool) {
+    let mut letters = 0;
+    let mut motion = true;
+    for w in words {
+        letters |= LETTER_BITS[usize::from(w.letter)];
+        if !w.index.is_empty() {
+            letters |= INDEXED;
+        }
+        if w.letter == b'G' {
+            motion &= plain_motion_code(w);
+        }
+    }
+    debug_assert_eq!(letters, letters_of(words));
+    debug_assert_eq!(motion, motion_codes_only(words));
+    (letters, motion)
+}
+
 /// [`Checker::letters`]: the block has a `#` word (a parameter set, or a value read from one).
 const PARAMETER: u32 = 1 << 26;
 /// [`Checker::letters`]: the block has a word with an index (`#1=5`, `R1=5`, `M2=3`).
@@ -1208,7 +1241,8 @@ impl Checker {
 
     fn read_block(&mut self, b: &BlockView<'_>) {
         // (the letters first: every rule after may ask them, not walk the words)
-        self.letters = letters_of(b.words);
+        let motion_words;
+        (self.letters, motion_words) = letters_and_motion(b.words);
         self.reading_end.read(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
@@ -1483,7 +1517,7 @@ impl Checker {
         // holds them to the same)
         let motion_only = self.letters & (bit(b'G') | bit(b'M')) == bit(b'G')
             && !self.shapes.afresh
-            && motion_codes_only(b.words);
+            && motion_words;
         self.motion_only = motion_only;
         (self.block_units, self.block_feed_units, self.block_feed_rev) =
             self.block_modes(b, motion_only);
@@ -1504,8 +1538,13 @@ impl Checker {
         let before = Before::of(&self.machine.state);
         self.values.clear();
         let mut first_unknown = None;
+        // (the key of the block's codes, built code by code in this walk)
+        let mut code_key = codes::KeyBuilder::new();
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else {
+                if matches!(w.letter, b'G' | b'M') {
+                    code_key.refuse();
+                }
                 // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here; and
                 // S2=30000, X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension
                 // (a number or an expression), whose limits the profile's are not: not
@@ -1555,12 +1594,25 @@ impl Checker {
                 // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
                 // modal state knows (the dialect's code table names what it does)
                 b'G' if !v.is_whole() => {
+                    code_key.refuse();
                     self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
                     self.values.mirror |= crate::modal::mirror_code(v);
                     self.values.decimal_g = true;
                 }
-                b'G' => self.values.push_g(v.trunc()),
-                b'M' => self.values.ms.push(v.trunc()),
+                b'G' => {
+                    let g = v.trunc();
+                    code_key.code(w, g);
+                    self.values.push_g(g);
+                }
+                b'M' => {
+                    let m = v.trunc();
+                    if v.is_whole() {
+                        code_key.code(w, m);
+                    } else {
+                        code_key.refuse();
+                    }
+                    self.values.ms.push(m);
+                }
                 // G68 R45 (an angle), G05.1 Q1 (a selector), G68.2 X Y Z (a tilted plane's
                 // origin): no position, radius or cycle value
                 letter
@@ -1571,12 +1623,18 @@ impl Checker {
         }
         self.values.in_system(&self.config.modal);
         // (no key where verdicts are not kept: Checker::keep_verdicts, the tests' oracle)
-        self.code_key = if self.letters & (bit(b'G') | bit(b'M')) != 0 && !self.format_table.afresh
-        {
-            codes::code_key(b.words, &self.readable)
-        } else {
+        // (a debug build holds the key built in the walk to the one read from the words)
+        self.code_key = if self.format_table.afresh {
             None
+        } else {
+            code_key.key()
         };
+        debug_assert_eq!(
+            self.code_key,
+            codes::code_key(b.words, &self.readable).filter(|_| !self.format_table.afresh),
+            "line {}: the codes' key",
+            b.line
+        );
         // what the codes do with the axis words: kept by the set of codes (a debug build, the
         // tests', works it out anyway and holds the two equal)
         let kept = self.code_key.map_or(0, |k| self.verdicts.get(k));
@@ -1926,15 +1984,20 @@ enum SubFile {
 /// meaning ([`Checker::block_modes`], [`Checker::code_meanings`]). Asked of a block with a G
 /// word and no M word.
 fn motion_codes_only(words: &[Word<'_>]) -> bool {
-    words.iter().all(|w| {
-        w.letter != b'G'
-            || matches!(
-                w.number,
-                [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
-            ) && w.sign.is_empty()
-                && w.expression.is_empty()
-                && w.index.is_empty()
-    })
+    words
+        .iter()
+        .all(|w| w.letter != b'G' || plain_motion_code(w))
+}
+
+/// Whether G word `w` is G00, G01, G02 or G03 written plainly ([`motion_codes_only`]).
+#[inline(always)]
+fn plain_motion_code(w: &Word<'_>) -> bool {
+    matches!(
+        w.number,
+        [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+    ) && w.sign.is_empty()
+        && w.expression.is_empty()
+        && w.index.is_empty()
 }
 
 /// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
@@ -2166,6 +2229,50 @@ mod buffer_tests {
         ] {
             assert!(!only(line), "{line}");
         }
+    }
+
+    /// The one walk of a block's words ([`super::letters_and_motion`]) finds the letters
+    /// [`super::letters_of`] finds and says G00-G03 alone where [`super::motion_codes_only`]
+    /// says it: lower case, `#` and `:` words, indexes, expressions, signed and decimal G
+    /// words.
+    #[test]
+    fn letters_and_motion_codes_are_found_in_one_walk_as_in_two() {
+        let words = |line: &'static str| -> Vec<Word<'static>> {
+            line.split(' ')
+                .map(|t| Word::new(t.as_bytes(), 1))
+                .collect()
+        };
+        let lines = [
+            "G1 X1. Y2.",
+            "g1 x1.",
+            "N10 G02 X1. Y1. I1. J0 F100.",
+            "#1=5",
+            "G1 X#1",
+            "X[#1+2] G0",
+            ":100",
+            "R1=5 G1 X1.",
+            "M2=3",
+            "G-1 X1.",
+            "G1. X1.",
+            "G0004 X1.",
+            "G90 G1 X1. M3",
+            "G1=2 X1.",
+            "X1.",
+        ];
+        for line in lines {
+            let w = words(line);
+            let (letters, motion) = super::letters_and_motion(&w);
+            assert_eq!(letters, super::letters_of(&w), "{line}");
+            assert_eq!(motion, super::motion_codes_only(&w), "{line}");
+        }
+        assert_eq!(
+            super::letters_and_motion(&words("G1 X#1")),
+            (super::bit(b'G') | super::bit(b'X'), true)
+        );
+        assert_eq!(
+            super::letters_and_motion(&words("#1=5 G4")),
+            (super::PARAMETER | super::INDEXED | super::bit(b'G'), false)
+        );
     }
 
     /// A block whose codes are G00-G03 alone, on each family, mill and lathe, each G code

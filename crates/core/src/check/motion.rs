@@ -431,17 +431,13 @@ impl Checker {
         // lacks (a debug build, the tests', reads them anyway and holds the two equal)
         let key = self.code_key;
         let kept = key.map_or(0, |k| self.verdicts.get(k));
-        let read = if kept & codes::MOTION != 0 && !cfg!(debug_assertions) {
-            MotionCodes {
-                modelled: kept & codes::MODELLED != 0,
-                unmodelled: kept & codes::UNMODELLED != 0,
-                takes_axes: kept & codes::TAKES_AXES != 0,
-                cycle: None,
-                lacked: Vec::new(),
-            }
-        } else {
-            self.read_motion_codes(b)
-        };
+        if kept & codes::MOTION != 0 && !cfg!(debug_assertions) {
+            // (what the reading below does with a kept reading, which names no cycle and no
+            // code the list lacks, without the reading's value built and dropped)
+            self.motion_read(kept & codes::MODELLED != 0, kept & codes::UNMODELLED != 0);
+            return kept & codes::TAKES_AXES != 0;
+        }
+        let read = self.read_motion_codes(b);
         let flags = codes::MOTION
             | if read.modelled { codes::MODELLED } else { 0 }
             | if read.unmodelled {
@@ -468,19 +464,7 @@ impl Checker {
             cycle,
             lacked,
         } = read;
-        if unmodelled {
-            // the code replaces the G2 or G3 the modal state still holds: the block and the
-            // ones after it are no arcs (LinuxCNC's G5 spline and G5.2 NURBS after a G2 run as
-            // such in rs274 -g); a motion the state models itself (HEIDENHAIN's polar G11)
-            // stays
-            self.motion_unknown = true;
-            if matches!(self.machine.state.motion, Some(2 | 3)) {
-                self.machine.state.motion = None;
-            }
-        } else if modelled {
-            self.motion_unknown = false;
-            self.cycle_unmodelled = false;
-        }
+        self.motion_read(modelled, unmodelled);
         if let Some(code) = cycle {
             self.cycle_unmodelled = true;
             let said = format!(": {code} is ");
@@ -521,6 +505,25 @@ impl Checker {
             }
         }
         takes_axes
+    }
+
+    /// The motion state after a block whose G codes hold a motion code the modal state does
+    /// not model (`unmodelled`) or one it does (`modelled`) ([`Checker::motion_codes`]).
+    #[inline(always)]
+    fn motion_read(&mut self, modelled: bool, unmodelled: bool) {
+        if unmodelled {
+            // the code replaces the G2 or G3 the modal state still holds: the block and the
+            // ones after it are no arcs (LinuxCNC's G5 spline and G5.2 NURBS after a G2 run as
+            // such in rs274 -g); a motion the state models itself (HEIDENHAIN's polar G11)
+            // stays
+            self.motion_unknown = true;
+            if matches!(self.machine.state.motion, Some(2 | 3)) {
+                self.machine.state.motion = None;
+            }
+        } else if modelled {
+            self.motion_unknown = false;
+            self.cycle_unmodelled = false;
+        }
     }
 
     /// What the block's G codes are to the motion group ([`Checker::motion_codes`]): read

@@ -381,15 +381,40 @@ impl Checker {
             crate::lex::Family::Sinumerik => self.sinumerik_targets(b),
             // (a block with no N word, no word its codes make name a block and no statement
             // -- most blocks of a program not numbered -- has nothing for it: not called)
-            crate::lex::Family::MacroB
-                if self.letters & crate::modal::bit(b'N') != 0
-                    || !self.named.is_empty()
-                    || !b.statements.is_empty() =>
-            {
-                self.macro_b_targets(b)
+            // (a block whose one target is its plain N word first: taken inline)
+            crate::lex::Family::MacroB => {
+                let names_more = !self.named.is_empty() || !b.statements.is_empty();
+                if names_more
+                    || (self.letters & crate::modal::bit(b'N') != 0 && !self.plain_label(b))
+                {
+                    self.macro_b_targets(b)
+                }
             }
             _ => {}
         }
+    }
+
+    /// The sequence number of a block that names nothing else (no word its codes make name a
+    /// block, no statement: asked only of such a block), taken inline where it is the plain,
+    /// whole N word first in the block, below [`NARROW`], no jump waits for a label and the
+    /// narrow labels are laid out: what [`Checker::macro_b_targets`] does with such a block,
+    /// without its call (true). False, nothing done, for any other block.
+    #[inline(always)]
+    fn plain_label(&mut self, b: &super::BlockView<'_>) -> bool {
+        let Some(w) = b.words.first() else {
+            return false;
+        };
+        let t = &mut self.targets;
+        let n = match w.value {
+            Some(n) if w.letter == b'N' && w.expression.is_empty() && !w.point => n,
+            _ => return false,
+        };
+        if (n as usize) >= NARROW || !t.pending.is_empty() || t.narrow.is_empty() {
+            return false;
+        }
+        debug_assert_eq!(Some(n), crate::text::digits_value(w.number));
+        t.narrow[n as usize / 64] |= 1 << (n % 64);
+        true
     }
 
     /// [`Checker::targets`] on a Custom Macro B control (Fanuc, Haas).
