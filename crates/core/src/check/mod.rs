@@ -822,6 +822,11 @@ pub struct Checker {
     /// only where none is open and no definition is (review 16c; review 17: after the
     /// `endif` the lines run again, unconditionally).
     linuxcnc_open_flow: Vec<Vec<u8>>,
+    /// LinuxCNC: for each `if` of `linuxcnc_open_flow` (its index there), whether every branch
+    /// read so far ended in an M02/M30 of its own, and whether an `else` was read: at its
+    /// `endif`, an `if` with an `else` all of whose branches ended ends the main program
+    /// there (issue 32: a definition after such an `endif` is never reached; rs274 agrees).
+    linuxcnc_if_ends: Vec<(usize, bool, bool)>,
     /// LinuxCNC: the feed mode in force may be another than the lines in their order give:
     /// after a call (the subroutine may set it; with M73 it restores the caller's) or a
     /// G93/G94/G95 inside a condition or loop, until a G93/G94/G95 the main program runs
@@ -962,6 +967,7 @@ impl Checker {
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_open_flow: Vec::new(),
+            linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),

@@ -176,6 +176,7 @@ impl Checker {
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_open_flow.clear();
+        self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
@@ -292,16 +293,7 @@ impl Checker {
         let main = self.open_definition.is_none();
         for &(_, kind, text) in b.statements {
             match (kind, main) {
-                (Kind::Flow, true) => {
-                    // an `else`/`elseif` runs where its `if` branch did not: an M2/M30 in that
-                    // branch (at the label's depth or deeper) no longer ends the lines (review 20)
-                    if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
-                        if self.linuxcnc_end_depth.is_some_and(|d| d > at) {
-                            self.linuxcnc_end_depth = None;
-                        }
-                    }
-                    linuxcnc_flow(&mut self.linuxcnc_open_flow, text)
-                }
+                (Kind::Flow, true) => self.linuxcnc_main_flow(text),
                 (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
                 // the subroutine may set another feed mode, or restore the caller's
                 (Kind::Call, true) => self.linuxcnc_mode_unsure = true,
@@ -474,6 +466,50 @@ impl Checker {
             || self
                 .linuxcnc_end_depth
                 .is_some_and(|d| self.linuxcnc_open_flow.len() >= d)
+    }
+
+    /// LinuxCNC: an o-word condition or loop of the main program, outside a definition
+    /// ([`Checker::linuxcnc_open_flow`]). An `else`/`elseif` runs where its `if` branch did
+    /// not: an M2/M30 in that branch (at the label's depth or deeper) no longer ends the lines
+    /// (review 20). An `endif` whose `if` has an `else` and whose every branch ended in an
+    /// M2/M30 ends the main program where the `if` stands: rs274 reads no line after it
+    /// (issue 32; interp_o_word.cc runs one branch, and each ends the program).
+    fn linuxcnc_main_flow(&mut self, text: &[u8]) {
+        let keyword = crate::statement::o_keyword(text);
+        let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
+        let mut all_ended = None;
+        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
+            let ended = branch_ended(at);
+            let is_else = keyword.as_deref() == Some(b"else".as_slice());
+            if let Some(entry) = self.linuxcnc_if_ends.iter_mut().rfind(|e| e.0 == at) {
+                entry.1 &= ended;
+                entry.2 |= is_else;
+            }
+            if ended {
+                self.linuxcnc_end_depth = None;
+            }
+        } else if keyword.as_deref() == Some(b"endif".as_slice()) {
+            let label = crate::statement::o_label(text);
+            if let Some(at) = self.linuxcnc_open_flow.iter().rposition(|l| *l == label) {
+                let ended = branch_ended(at);
+                all_ended = self
+                    .linuxcnc_if_ends
+                    .iter()
+                    .rfind(|e| e.0 == at)
+                    .filter(|e| e.1 && e.2 && ended)
+                    .map(|e| e.0);
+            }
+        }
+        let depth = self.linuxcnc_open_flow.len();
+        linuxcnc_flow(&mut self.linuxcnc_open_flow, text);
+        let open = self.linuxcnc_open_flow.len();
+        self.linuxcnc_if_ends.retain(|e| e.0 < open);
+        if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
+            self.linuxcnc_if_ends.push((depth, true, false));
+        }
+        if let Some(at) = all_ended {
+            self.linuxcnc_end_depth = Some(self.linuxcnc_end_depth.map_or(at, |d| d.min(at)));
+        }
     }
 
     /// LinuxCNC: whether the feed mode in force where the line runs may be another than the
@@ -1175,6 +1211,31 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
+
+    #[test]
+    fn an_if_all_of_whose_branches_end_ends_the_main_program_at_its_endif() {
+        // issue 32: o<s> is defined after an if/else whose branches both end; the program
+        // never comes to the definition again after the call (rs274 runs to its end)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let text = |branch: &str| {
+            format!(
+                "G21 G17 G90\no<s> call\no1 if [#1 GT 0]\nM2\no1 else\n{branch}\no1 endif\n\
+                 o<s> sub\nG0 X3\no<s> endsub\nM2\n"
+            )
+        };
+        let check = |t: &str| fired(linuxcnc(), t, Rule::LinuxCncRefuses);
+        assert_eq!(check(&text("M2")), []);
+        assert_eq!(check(&text("M30")), []);
+        // a nested if whose branches both end ends the branch it stands in
+        assert_eq!(check(&text("o2 if [#2]\nM2\no2 else\nM2\no2 endif")), []);
+        // a branch that runs on: the definition is read after the call
+        assert_eq!(check(&text("G0 X2")), [(8, 1)]);
+        assert_eq!(check(&text("o2 if [#2]\nM2\no2 endif")), [(10, 1)]);
+        // no else: the condition may be false
+        let no_else = "G21 G17 G90\no<s> call\no1 if [#1 GT 0]\nM2\no1 endif\n\
+                       o<s> sub\nG0 X3\no<s> endsub\nM2\n";
+        assert_eq!(check(no_else), [(6, 1)]);
+    }
 
     #[test]
     fn next_hash_finds_the_first_hash_in_and_after_the_chunks_of_eight() {
