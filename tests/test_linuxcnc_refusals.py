@@ -511,6 +511,46 @@ def test_an_if_with_a_branch_that_runs_on_leaves_the_lines_after_it_read(tmp_pat
     assert "sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
 
 
+# Issue 32, item 4: after `o<s> call` of a subroutine defined before it in the file whose body
+# (and the bodies it calls, each defined before the call) sets no feed mode and ends nothing,
+# the mode is the one before the call: a G1 without F under G93 after it is TG402, as rs274
+# refuses it
+SUBS = ("o<t> sub\nG0 Y1\no<t> endsub\n"
+        "o<s> sub\nG1 X1 F10\no<t> call\no<s> endsub\n")
+
+
+def test_a_call_of_a_subroutine_that_sets_no_feed_mode_keeps_the_mode(tmp_path):
+    text = f"{HEAD}{SUBS}G93\no<s> call\nG1 X2\nM2\n"
+    found = [f for f in errors(text) if f[0] != "TG401"]
+    assert [(r, n) for r, n, _ in found] == [("TG402", 12)], found
+    assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)
+
+
+T_SUB = "o<t> sub\nG0 Y1\no<t> endsub\n"
+S_SUB = "o<s> sub\nG1 X1 F10\no<t> call\no<s> endsub\n"
+
+
+@pytest.mark.parametrize("before, after, sets", [
+    # the called body, or one it calls, sets the mode: G94 after the call, rs274 runs on
+    (SUBS.replace("G0 Y1", "G94 G0 Y1"), "", True),
+    (SUBS.replace("G1 X1 F10", "G94 G1 X1 F10"), "", True),
+    # the sub it calls is defined after the call (rs274 reads ahead to it): not followed
+    (S_SUB, T_SUB, False),
+    # the called sub is defined after the call: not followed
+    ("", S_SUB + T_SUB, False),
+])
+def test_a_call_that_may_set_the_feed_mode_leaves_it_not_known(tmp_path, before, after, sets):
+    text = f"{HEAD}{before}G93\no<s> call\nG1 X2 F1\nG1 X3\nM2\n{after}"
+    assert [f for f in errors(text) if f[0] == "TG402"] == [], errors(text)
+    out = rs274_output(tmp_path, text)
+    if sets:
+        assert "PROGRAM_END" in out and "F word missing" not in out, out
+    else:
+        # (G93 is still in force: rs274 refuses the G1 without F, which the check, not
+        # following a body defined after the call, leaves unjudged)
+        assert "F word missing with inverse time g1 move" in out, out
+
+
 # Review 20, finding 1: a binary operation outside [ ] after a value (rs274ngc reads one only
 # inside [ ]; read_items stops at the operator); (the block after HEAD, the operator's column)
 RS274_REFUSES_BARE_OPERATOR = [
