@@ -700,7 +700,13 @@ def test_a_lower_case_word_is_upper_cased_with_its_blanks_kept():
     ("linuxcnc", "fanuc-mill", "G21 G90\nG0 Z[ASIN[-0.5]]\nM2\n", 4, "ASIN",
      ("-90 to 90", "270 to 90")),
     ("linuxcnc", "fanuc-mill", "G21 G90\nG0 X[ROUND[1.4]]\nM2\n", 4, "ROUND",
-     ("rounding to the nearest integer on", "to the address's least input increment")),
+     ("a half away from zero (ROUND[-2.5] is -3)", "to the address's least input increment")),
+    # in a plain assignment too: rs274 rounds a negative half away from zero, which no FANUC
+    # or Haas page at hand settles (issue 32, item 3)
+    ("linuxcnc", "fanuc-mill", "G21 G90\n#1 = [ROUND[#2]]\nG0 X#1\nM2\n", 1, "ROUND",
+     ("a half away from zero", "a negative half, ROUND[-2.5], in no page at hand")),
+    ("haas-mill", "linuxcnc", "O1\nG21 G90\n#1=ROUND[#2]\nM30\n", 1, "ROUND",
+     ("a negative half, ROUND[-2.5], in no page at hand", "a half away from zero")),
     # the other way: a FANUC's or Haas's bitwise XOR and truncating FIX are not LinuxCNC's
     ("fanuc-mill", "linuxcnc", "O1\nG21 G90\n#1=[2 XOR 3]\nG0 X[FIX[#1]]\nM30\n", 1, "XOR",
      ("a bitwise exclusive OR", "a logical exclusive OR")),
@@ -735,6 +741,18 @@ def test_an_expression_whose_operation_differs_between_families_is_refused(
     source_says, target_says = message.split(f": {name} is ", 1)[1].split(" control and ", 1)
     assert meanings[0] in source_says and meanings[1] in target_says
     assert "computes the same on both" in message
+
+
+def test_rs274_rounds_a_half_away_from_zero(tmp_path):
+    """The meaning the refusal gives LinuxCNC's ROUND, asked of rs274 -g (issue 32, item 3):
+    -1.5 is -2, -2.5 is -3, 2.5 is 3, -1.4 is -1."""
+    from .conftest import rs274_output
+    cases = {"-1.5": "-2", "-2.5": "-3", "2.5": "3", "1.5": "2", "-1.4": "-1", "-0.5": "-1"}
+    text = "G21\n" + "".join(f"#1=[ROUND[{v}]]\n(debug,r{i}=#1)\n"
+                               for i, v in enumerate(cases)) + "M2\n"
+    out = rs274_output(tmp_path, text)
+    for i, want in enumerate(cases.values()):
+        assert f'MESSAGE("r{i}={want}.000000")' in out, out
 
 
 def test_an_expression_of_operations_read_alike_is_carried_between_families():

@@ -468,6 +468,89 @@ def test_review20_an_end_in_an_if_branch_leaves_its_else_branch_read(tmp_path, t
 
 
 
+# Issue 32, item 2: an `if` with an `else` whose every branch ends in M2 ends the program at
+# its `endif`: a definition after it is never reached again (no "found in illegal location");
+# rs274 -g runs each to its PROGRAM_END, with the condition true and false
+BOTH_BRANCHES_END = [
+    "o<s> call\no1 if [#1 GT 0]\nG0 X1\nM2\no1 else\nG0 X2\nM2\no1 endif\n"
+    "o<s> sub\nG0 X3\no<s> endsub\nM2\n",
+    # an `elseif` between, and an M2 in an `if` nested in the last branch whose own branches
+    # both end
+    "o<s> call\no1 if [#1 GT 1]\nM2\no1 elseif [#1 GT 0]\nM30\no1 else\no2 if [#2 GT 0]\n"
+    "M2\no2 else\nM2\no2 endif\no1 endif\no<s> sub\nG0 X3\no<s> endsub\nM2\n",
+]
+
+
+@pytest.mark.parametrize("body", BOTH_BRANCHES_END)
+@pytest.mark.parametrize("value", ["0", "1", "2"])
+def test_an_if_all_of_whose_branches_end_ends_the_program(tmp_path, body, value):
+    text = f"{HEAD}#1={value}\n#2={value}\n{body}"
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out and "illegal location" not in out, out
+
+
+# ... and a branch that does not end, or no `else` (the condition may be false), leaves the
+# definition read after the call: rs274 refuses it where that branch runs (#1 = 0)
+ONE_BRANCH_RUNS_ON = [
+    ("o<s> call\no1 if [#1 GT 0]\nM2\no1 else\nG0 X2\no1 endif\n"
+     "o<s> sub\nG0 X3\no<s> endsub\nM2\n", 10),
+    ("o<s> call\no1 if [#1 GT 0]\nM2\no1 elseif [#1 LT 0]\nM2\no1 endif\n"
+     "o<s> sub\nG0 X3\no<s> endsub\nM2\n", 10),
+    ("o<s> call\no1 if [#1 GT 0]\nM2\no1 else\no2 if [#1 LT 0]\nM2\no2 endif\no1 endif\n"
+     "o<s> sub\nG0 X3\no<s> endsub\nM2\n", 12),
+]
+
+
+@pytest.mark.parametrize("body, line", ONE_BRANCH_RUNS_ON)
+def test_an_if_with_a_branch_that_runs_on_leaves_the_lines_after_it_read(tmp_path, body, line):
+    text = f"{HEAD}#1=0\n{body}"
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [("TG412", line)], found
+    assert "sub: o|s| found in illegal location" in found[0][2]
+    assert "sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
+
+
+# Issue 32, item 4: after `o<s> call` of a subroutine defined before it in the file whose body
+# (and the bodies it calls, each defined before the call) sets no feed mode and ends nothing,
+# the mode is the one before the call: a G1 without F under G93 after it is TG402, as rs274
+# refuses it
+SUBS = ("o<t> sub\nG0 Y1\no<t> endsub\n"
+        "o<s> sub\nG1 X1 F10\no<t> call\no<s> endsub\n")
+
+
+def test_a_call_of_a_subroutine_that_sets_no_feed_mode_keeps_the_mode(tmp_path):
+    text = f"{HEAD}{SUBS}G93\no<s> call\nG1 X2\nM2\n"
+    found = [f for f in errors(text) if f[0] != "TG401"]
+    assert [(r, n) for r, n, _ in found] == [("TG402", 12)], found
+    assert "F word missing with inverse time g1 move" in rs274_output(tmp_path, text)
+
+
+T_SUB = "o<t> sub\nG0 Y1\no<t> endsub\n"
+S_SUB = "o<s> sub\nG1 X1 F10\no<t> call\no<s> endsub\n"
+
+
+@pytest.mark.parametrize("before, after, sets", [
+    # the called body, or one it calls, sets the mode: G94 after the call, rs274 runs on
+    (SUBS.replace("G0 Y1", "G94 G0 Y1"), "", True),
+    (SUBS.replace("G1 X1 F10", "G94 G1 X1 F10"), "", True),
+    # the sub it calls is defined after the call (rs274 reads ahead to it): not followed
+    (S_SUB, T_SUB, False),
+    # the called sub is defined after the call: not followed
+    ("", S_SUB + T_SUB, False),
+])
+def test_a_call_that_may_set_the_feed_mode_leaves_it_not_known(tmp_path, before, after, sets):
+    text = f"{HEAD}{before}G93\no<s> call\nG1 X2 F1\nG1 X3\nM2\n{after}"
+    assert [f for f in errors(text) if f[0] == "TG402"] == [], errors(text)
+    out = rs274_output(tmp_path, text)
+    if sets:
+        assert "PROGRAM_END" in out and "F word missing" not in out, out
+    else:
+        # (G93 is still in force: rs274 refuses the G1 without F, which the check, not
+        # following a body defined after the call, leaves unjudged)
+        assert "F word missing with inverse time g1 move" in out, out
+
+
 # Review 20, finding 1: a binary operation outside [ ] after a value (rs274ngc reads one only
 # inside [ ]; read_items stops at the operator); (the block after HEAD, the operator's column)
 RS274_REFUSES_BARE_OPERATOR = [

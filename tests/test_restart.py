@@ -1652,3 +1652,30 @@ def test_the_check_reads_a_cancel_s_axis_word_not_known_as_naming_its_axis_as_th
     assert refusal(body.format("G100 X#1"), 10, haas) == (
         "cannot restart here: G101 (mirror image) from line 7 is in force and the preamble "
         "cannot restore it")
+
+
+def test_the_check_and_the_restart_both_call_a_mirror_not_known_after_a_cancel_word_not_known():
+    """Issue 32 (review 19, 1): after `G100 X#1` X's mirror may or may not have ended. The
+    restart refuses there; the check, which read the word as ending X's mirror, now leaves X's
+    positions uncompared (TG140 at the cancel) until a cancel names X plainly or names none:
+    X-29. under the mirror about X0 is X29.; X31. after the cancel spans 61 from X-30. if the
+    mirror ended (past the travel's 60), and 60 (X-31. to X29.: fits) if it did not."""
+    from postproc.check import Checker
+    haas = load_profile("haas-mill")  # X -30..30 in
+    body = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G43 H1 Z1.\nN4 G00 X-30. Y1.\n"
+            "N7 G101 X0\nN8 X-29.\nN9 {}\nN10 X31.\n{}N20 X31.\nN30 G00 Z1.\nM30\n%\n")
+
+    def found(cancel: str, then: str = "") -> list[tuple[str, int]]:
+        out = Checker(haas).run_stream([body.format(cancel, then)], haas.dialect)
+        return [(f.rule, f.line) for f in out if f.rule in ("TG601", "TG140")]
+
+    # a plain cancel: X31. spans 61 from X-30., past the travel, at once (line 10)
+    assert found("G100 X0") == [("TG601", 10)]
+    # the word not known: not judged, said; the restart refuses at the same place
+    assert found("G100 X#1") == [("TG140", 9)]
+    assert "the mirror image of X, which G100 X#1 may or may not have ended" in refusal(
+        body.format("G100 X#1", ""), 11, haas)
+    # a known state again: the check judges, the restart plans
+    for cancel in ("G100 X0", "G100"):
+        assert found("G100 X#1", f"N11 {cancel}\n") == [("TG140", 9), ("TG601", 12)]
+        assert plan(body.format("G100 X#1", f"N11 {cancel}\n"), 13, haas).preamble

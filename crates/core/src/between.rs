@@ -664,13 +664,20 @@ const EXPRESSION_NAMES: [&str; 30] = [
 /// only where every name in it has the same text here. LinuxCNC: G-code reference, "Binary
 /// Operators" and "Functions" (AND OR XOR logical, 1 or 0; ATAN[y]/[x] -180 to 180; ASIN -90
 /// to 90; FIX rounds down, FUP up; ROUND to the nearest integer), as rs274 2.9 computes them
-/// (`FIX[-1.2]` -2, `FUP[-1.2]` -1, `-7 MOD 3` 2, `[2 OR 4]` 1, `[2 XOR 3]` 0). Custom Macro
+/// (`FIX[-1.2]` -2, `FUP[-1.2]` -1, `-7 MOD 3` 2, `[2 OR 4]` 1, `[2 XOR 3]` 0; ROUND a half
+/// away from zero, `ROUND[-1.5]` -2, `ROUND[-2.5]` -3, `ROUND[2.5]` 3: interp_execute.cc
+/// `execute_unary`, `(int)(x + (x < 0 ? -0.5 : 0.5))`; issue 32). Custom Macro
 /// B: FANUC 0i-MF operator's manual, "Arithmetic and logic operation" (OR XOR AND bitwise;
 /// ATAN 0 to 360 and ASIN 270 to 90 with parameter NAT (No. 6004#0) 0, -180 to 180 and -90 to
 /// 90 with NAT 1; FIX discards the fraction, FUP raises it to a unit, both on the absolute
-/// value; ROUND within an address rounds to the address's least input increment); the Haas
-/// mill operator's manual (96-8000, "Macros": OR XOR AND on the integer part's bits, ROUND in
-/// an address to its precision). ISO 6983-1 6.4.7 leaves every operation to the control's
+/// value; ROUND within an address rounds to the address's least input increment; how ROUND
+/// rounds a negative half no FANUC page at hand says); the Haas mill operator's manual
+/// (96-8000, "Macros": OR XOR AND on the integer part's bits, ROUND in an address to its
+/// precision; in an arithmetic expression "a fractional part greater than or equal to .5 is
+/// rounded up to the next whole integer; otherwise, the fractional part is truncated", which
+/// leaves a negative half open: -2 or -3 for -2.5). So ROUND stays refused between LinuxCNC
+/// and Custom Macro B even in a plain assignment: the two agree except on a negative half,
+/// which no page at hand settles on the FANUC or Haas side (issue 32, item 3). ISO 6983-1 6.4.7 leaves every operation to the control's
 /// manual: no name has a meaning there that another family's could be compared with.
 fn expression_name(family: Family, name: &str) -> Option<&'static str> {
     let shared = match name {
@@ -688,7 +695,9 @@ fn expression_name(family: Family, name: &str) -> Option<&'static str> {
         Family::LinuxCnc => shared.or(match name {
             "ASIN" => Some("the arc sine in degrees, -90 to 90"),
             "ATAN" => Some("the arc tangent ATAN[y]/[x] in degrees, -180 to 180"),
-            "ROUND" => Some("rounding to the nearest integer"),
+            "ROUND" => {
+                Some("rounding to the nearest integer, a half away from zero (ROUND[-2.5] is -3)")
+            }
             "FIX" => Some("rounding down (FIX[-1.2] is -2)"),
             "FUP" => Some("rounding up (FUP[-1.2] is -1)"),
             "AND" => Some("a logical AND, 1 or 0 (`[2 AND 1]` is 1)"),
@@ -709,8 +718,9 @@ fn expression_name(family: Family, name: &str) -> Option<&'static str> {
                  parameter NAT 1)",
             ),
             "ROUND" => Some(
-                "rounding to the nearest integer, but within an address's expression to the \
-                 address's least input increment",
+                "rounding to the nearest integer (a negative half, ROUND[-2.5], in no page at \
+                 hand), but within an address's expression to the address's least input \
+                 increment",
             ),
             "FIX" => Some("discarding the fraction (FIX[-1.2] is -1)"),
             "FUP" => Some("raising the fraction to a unit (FUP[-1.2] is -2)"),

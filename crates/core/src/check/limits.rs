@@ -67,6 +67,11 @@ pub(super) struct Frames {
     /// The axes a G50.1 gave their spans from before a mirror not known exactly back to,
     /// while other axes stayed mirrored ([`Checker::mirror_off`]).
     given_back: u16,
+    /// The mirrored axes whose mirror a cancel with an axis word not known here (`G100 X#1`,
+    /// `G50.1 X#1`) may or may not have ended: their positions are not compared with the
+    /// travel until a cancel names the axis plainly, or names none and ends them all
+    /// ([`Checker::mirror_off`]; `send --restart-at` refuses there too).
+    doubt: u16,
     /// Whether the note of a frame not applied (TG140) was said (once per file).
     noted: bool,
     /// Whether the block in hand has a code that may turn a frame or shift the coordinates
@@ -76,7 +81,7 @@ pub(super) struct Frames {
 
 impl Frames {
     fn hidden(&self) -> u16 {
-        self.hidden.iter().fold(0, |all, &h| all | h)
+        self.hidden.iter().fold(self.doubt, |all, &h| all | h)
     }
 }
 
@@ -414,6 +419,7 @@ impl Checker {
             // (a G50.1 ends the mirror of the axes it names only: Checker::mirror_off)
             let mirror_on = off == 32
                 && (self.frames.apart != 0
+                    || self.frames.doubt != 0
                     || self.frames.map.as_ref().is_some_and(|map| map.bit == 32));
             if off != 0 && self.frames.on & off != 0 && !mirror_on {
                 self.frame_off(off);
@@ -526,7 +532,8 @@ impl Checker {
                                 .filter(|&k| map.m[k][k] == -1.0)
                                 .fold(0u16, |all, k| all | 1 << k)
                         })
-                        | self.frames.apart;
+                        | self.frames.apart
+                        | self.frames.doubt;
                 // (a Haas's mirror is a setting per axis about one point, the work zero: a
                 // second G101 of an axis leaves it mirrored as it was)
                 let again = if on == 32 && !self.frames.haas_mirror {
@@ -534,6 +541,10 @@ impl Checker {
                 } else {
                     0
                 };
+                // (a Haas's G101 naming a doubtful axis plainly: mirrored for certain again)
+                if self.frames.haas_mirror {
+                    self.frames.doubt &= !self.mirror_words(b).0;
+                }
                 if again != 0 {
                     self.frame_note(
                         &token,
@@ -672,6 +683,19 @@ impl Checker {
             .fold(0, |all, i| all | 1 << i)
     }
 
+    /// The axes a mirror image's block names with a value known here (plain) and with one
+    /// not known (`X#1`: a parameter the checker does not follow), as bits of `AXES`.
+    fn mirror_words(&self, b: &BlockView<'_>) -> (u16, u16) {
+        b.words
+            .iter()
+            .enumerate()
+            .filter_map(|(i, w)| axis_index(w.letter).map(|k| (i, k)))
+            .fold((0, 0), |(plain, unknown), (i, k)| match self.readable[i] {
+                Some(_) => (plain | 1 << k, unknown),
+                None => (plain, unknown | 1 << k),
+            })
+    }
+
     /// G50.1 ends the mirror of the axes it names, the others stay mirrored (FANUC 16/18,
     /// "Programmable mirror image": `G50.1 IP_`, the axes whose mirror is cancelled; the
     /// SINUMERIK ISO dialect's `G50.1 X... Y... Z...`; review 15, finding 2): each of them is
@@ -679,15 +703,33 @@ impl Checker {
     /// mirror ends with the last. A G50.1 that names no axis is taken to end them all (no
     /// page at hand says otherwise). A Haas's G100 is read the same way (96-8000, G101: the
     /// mirror selected per axis).
+    /// An axis word whose value is not known here (`G100 X#1`) leaves that axis's mirror not
+    /// known (issue 32, review 19 finding 1: it was read as ending X's mirror, while the
+    /// restart calls it not known): the axis stands where the check does not know, and its
+    /// positions are not compared with the travel ([`Frames::doubt`]) until a cancel names it
+    /// plainly or names no axis at all.
     fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
-        let named = Self::mirror_axes(b);
+        let (named, unknown) = self.mirror_words(b);
+        let all = named == 0 && unknown == 0;
+        self.frames.doubt &= if all { 0 } else { !named };
+        // the mirrored axes the block may or may not end
+        let exact_mirrored =
+            self.frames
+                .map
+                .as_ref()
+                .filter(|map| map.bit == 32)
+                .map_or(0u16, |map| {
+                    (0..3)
+                        .filter(|&k| map.m[k][k] == -1.0)
+                        .fold(0u16, |all, k| all | 1 << k)
+                });
+        let doubtful = (exact_mirrored | self.frames.apart) & unknown & !named;
+        if doubtful != 0 {
+            self.mirror_doubt(b, doubtful, column);
+        }
         let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
-            let ending = if named == 0 {
-                0
-            } else {
-                self.frames.apart & named
-            };
-            self.frames.apart &= if named == 0 { 0 } else { !named };
+            let ending = if all { 0 } else { self.frames.apart & named };
+            self.frames.apart &= if all { 0 } else { !named };
             if self.frames.apart != 0 && ending != 0 {
                 // (review 16b, finding 3) the axes whose mirror ends get their spans from
                 // before it back; where the mirror left the tool on them is not known here,
@@ -707,7 +749,7 @@ impl Checker {
         let mirrored = (0..3)
             .filter(|&k| map.m[k][k] == -1.0)
             .fold(0u8, |all, k| all | 1 << k);
-        let ending = if named == 0 {
+        let ending = if all {
             mirrored
         } else {
             mirrored & (named & XYZ) as u8
@@ -823,6 +865,42 @@ impl Checker {
                 "where the frame left the tool in the coordinates after its cancel is not known here",
             );
         }
+    }
+
+    /// The mirrored `axes` a cancel with a word not known here may or may not have ended
+    /// ([`Checker::mirror_off`]): out of the mirror in force (exact or apart), into
+    /// [`Frames::doubt`]; where the tool stands on them is not known (the mirror's point, or
+    /// the position as written), said once.
+    fn mirror_doubt(&mut self, b: &BlockView<'_>, axes: u16, column: usize) {
+        self.frames.doubt |= axes;
+        self.frames.apart &= !axes;
+        if let Some(map) = self.frames.map.as_mut().filter(|map| map.bit == 32) {
+            for k in (0..3).filter(|&k| axes & 1 << k != 0) {
+                map.m[k][k] = 1.0;
+                map.centre[k] = 0.0;
+                map.fresh |= 1 << k;
+                map.touched &= !(1 << k);
+            }
+            if (0..3).all(|k| map.m[k][k] == 1.0) {
+                self.frames.map = None;
+            }
+        }
+        for k in (0..AXES.len()).filter(|&k| axes & 1 << k != 0) {
+            self.machine.forget_axis(AXES[k]);
+        }
+        let token = b
+            .words
+            .iter()
+            .find(|w| w.column == column)
+            .map_or_else(|| "the cancel".to_string(), |w| w.token());
+        self.frame_note(
+            &token,
+            axes,
+            (b.line, column),
+            "until a cancel names the axis with a plain value or names none",
+            "an axis word whose value the checker does not know may or may not have ended the \
+             axis's mirror image",
+        );
     }
 
     fn frame_off(&mut self, off: u8) {
@@ -1823,6 +1901,60 @@ mod tests {
                 at(okuma.clone(), &body, Rule::TravelExceeded),
                 [(4, 5)],
                 "{code}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_mirror_cancel_with_a_word_not_known_leaves_the_axis_not_judged_until_a_known_state() {
+        // issue 32 (review 19, finding 1): `G100 X#1` / `G50.1 X#1` was read as ending X's
+        // mirror, while the restart calls it not known. X-400. under the mirror about X0 is
+        // X400.; after the cancel X600. is X600. (spans 1100 from X-500., past the travel's
+        // 1000) or, still mirrored, X-600. (spans 1000, fits): not judged until a known state
+        let mut haas = of_family(Family::MacroB);
+        haas.modal.centre_codes = true;
+        haas.haas = true;
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        for (config, on, off) in [(haas, "G101", "G100"), (fanuc, "G51.1", "G50.1")] {
+            let body = |unknown: &str, known: &str| {
+                format!(
+                    "G00 X-500. Y0\n{on} X0 Y0\nG00 X-400. Y100.\n{off} {unknown}\n\
+                     G00 X600. Y100.\n{off} {known}\nG00 X600.\n"
+                )
+            };
+            // the known cancel after it: judged again there (X600. unmirrored)
+            for known in ["X0", ""] {
+                let text = body("X#1", known);
+                let found = at(config.clone(), &text, Rule::TravelExceeded);
+                assert_eq!(found, [(8, 5)], "{on} {known:?}");
+                let notes = findings(config.clone(), &program(&text), Rule::NotFollowed);
+                assert!(
+                    notes
+                        .iter()
+                        .any(|n| n.line == 5 && n.message.contains("may or may not have ended")),
+                    "{notes:?}"
+                );
+            }
+            // a plain cancel judges at once, as before
+            let plain = body("X0", "X0");
+            assert_eq!(
+                at(config.clone(), &plain, Rule::TravelExceeded),
+                [(6, 5)],
+                "{on}"
+            );
+            // another plain word leaves the doubt: Y's cancel says nothing of X
+            let other = body("X#1", "Y0");
+            assert_eq!(at(config.clone(), &other, Rule::TravelExceeded), [], "{on}");
+            // Y stays mirrored for certain beside the doubtful X: Y-450. is Y450., 450
+            // from Y0 (the test travel is 800 wide), then Y-450. unmirrored spans 900
+            let y = format!(
+                "G00 X0 Y0\n{on} X0 Y0\nG00 Y-400.\n{off} X#1\nG00 Y-450.\n{off} Y0\nG00 Y-450.\n"
+            );
+            assert_eq!(
+                at(config.clone(), &y, Rule::TravelExceeded),
+                [(8, 5)],
+                "{on}"
             );
         }
     }

@@ -855,12 +855,23 @@ pub struct Checker {
     /// only where none is open and no definition is (review 16c; review 17: after the
     /// `endif` the lines run again, unconditionally).
     linuxcnc_open_flow: Vec<Vec<u8>>,
+    /// LinuxCNC: for each `if` of `linuxcnc_open_flow` (its index there), whether every branch
+    /// read so far ended in an M02/M30 of its own, and whether an `else` was read: at its
+    /// `endif`, an `if` with an `else` all of whose branches ended ends the main program
+    /// there (issue 32: a definition after such an `endif` is never reached; rs274 agrees).
+    linuxcnc_if_ends: Vec<(usize, bool, bool)>,
     /// LinuxCNC: the feed mode in force may be another than the lines in their order give:
     /// after a call (the subroutine may set it; with M73 it restores the caller's) or a
     /// G93/G94/G95 inside a condition or loop, until a G93/G94/G95 the main program runs
     /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
     /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
+    /// LinuxCNC: the subroutines defined so far in this file (their `o_label`), each with
+    /// whether its body may set the feed mode or end the program (a G93/G94/G95, an M2/M30,
+    /// M72, M98/M99, or a G or M code whose value is not known here) and the subroutines it
+    /// calls: a call of one none of whose bodies, transitively, may leaves the feed mode as
+    /// it was before the call (issue 32, item 4; `Checker::linuxcnc_call_keeps_mode`).
+    linuxcnc_bodies: Vec<(Vec<u8>, bool, Vec<Vec<u8>>)>,
     /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
     /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
     /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
@@ -995,7 +1006,9 @@ impl Checker {
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_open_flow: Vec::new(),
+            linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
+            linuxcnc_bodies: Vec::new(),
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,

@@ -176,7 +176,9 @@ impl Checker {
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_open_flow.clear();
+        self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_bodies.clear();
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
         self.linuxcnc_definition_feed = None;
@@ -279,6 +281,7 @@ impl Checker {
         self.definition_after_call(b, statement.as_ref());
         self.definition_feed(statement.as_ref());
         self.definition_open(b, statement.as_ref());
+        self.linuxcnc_body(b, statement.as_ref());
         if statement.is_none()
             && self.open_definition.is_none()
             && !self.main_ended()
@@ -292,19 +295,12 @@ impl Checker {
         let main = self.open_definition.is_none();
         for &(_, kind, text) in b.statements {
             match (kind, main) {
-                (Kind::Flow, true) => {
-                    // an `else`/`elseif` runs where its `if` branch did not: an M2/M30 in that
-                    // branch (at the label's depth or deeper) no longer ends the lines (review 20)
-                    if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
-                        if self.linuxcnc_end_depth.is_some_and(|d| d > at) {
-                            self.linuxcnc_end_depth = None;
-                        }
-                    }
-                    linuxcnc_flow(&mut self.linuxcnc_open_flow, text)
-                }
+                (Kind::Flow, true) => self.linuxcnc_main_flow(text),
                 (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
                 // the subroutine may set another feed mode, or restore the caller's
-                (Kind::Call, true) => self.linuxcnc_mode_unsure = true,
+                (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
+                    self.linuxcnc_mode_unsure = true
+                }
                 (Kind::Call, false) => self.linuxcnc_definition_mode_unsure = true,
                 _ => {}
             }
@@ -476,6 +472,50 @@ impl Checker {
                 .is_some_and(|d| self.linuxcnc_open_flow.len() >= d)
     }
 
+    /// LinuxCNC: an o-word condition or loop of the main program, outside a definition
+    /// ([`Checker::linuxcnc_open_flow`]). An `else`/`elseif` runs where its `if` branch did
+    /// not: an M2/M30 in that branch (at the label's depth or deeper) no longer ends the lines
+    /// (review 20). An `endif` whose `if` has an `else` and whose every branch ended in an
+    /// M2/M30 ends the main program where the `if` stands: rs274 reads no line after it
+    /// (issue 32; interp_o_word.cc runs one branch, and each ends the program).
+    fn linuxcnc_main_flow(&mut self, text: &[u8]) {
+        let keyword = crate::statement::o_keyword(text);
+        let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
+        let mut all_ended = None;
+        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
+            let ended = branch_ended(at);
+            let is_else = keyword.as_deref() == Some(b"else".as_slice());
+            if let Some(entry) = self.linuxcnc_if_ends.iter_mut().rfind(|e| e.0 == at) {
+                entry.1 &= ended;
+                entry.2 |= is_else;
+            }
+            if ended {
+                self.linuxcnc_end_depth = None;
+            }
+        } else if keyword.as_deref() == Some(b"endif".as_slice()) {
+            let label = crate::statement::o_label(text);
+            if let Some(at) = self.linuxcnc_open_flow.iter().rposition(|l| *l == label) {
+                let ended = branch_ended(at);
+                all_ended = self
+                    .linuxcnc_if_ends
+                    .iter()
+                    .rfind(|e| e.0 == at)
+                    .filter(|e| e.1 && e.2 && ended)
+                    .map(|e| e.0);
+            }
+        }
+        let depth = self.linuxcnc_open_flow.len();
+        linuxcnc_flow(&mut self.linuxcnc_open_flow, text);
+        let open = self.linuxcnc_open_flow.len();
+        self.linuxcnc_if_ends.retain(|e| e.0 < open);
+        if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
+            self.linuxcnc_if_ends.push((depth, true, false));
+        }
+        if let Some(at) = all_ended {
+            self.linuxcnc_end_depth = Some(self.linuxcnc_end_depth.map_or(at, |d| d.min(at)));
+        }
+    }
+
     /// LinuxCNC: whether the feed mode in force where the line runs may be another than the
     /// lines in their order give (`linuxcnc_mode_unsure`, or in a definition's body
     /// `linuxcnc_definition_mode_unsure`): the rules that read the mode are not judged then.
@@ -485,6 +525,77 @@ impl Checker {
         } else {
             self.linuxcnc_mode_unsure
         }
+    }
+
+    /// LinuxCNC: what a definition's body does to the feed mode ([`Checker::linuxcnc_bodies`]):
+    /// its `sub` line opens an entry, each line of its body adds to it.
+    fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        if let Some((true, name)) = statement {
+            if self.open_definition.is_some() {
+                self.linuxcnc_bodies.push((name.clone(), false, Vec::new()));
+            }
+            return;
+        }
+        if self.open_definition.is_none() || statement.is_some() {
+            return;
+        }
+        let Some(body) = self.linuxcnc_bodies.last_mut() else {
+            return;
+        };
+        // (read before the block's words are: the number as written, an expression not known)
+        for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
+            let value = std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|n| n.parse::<f64>().ok())
+                .filter(|_| w.expression.is_empty());
+            let codes: &[f64] = if w.letter == b'G' {
+                &[93.0, 94.0, 95.0]
+            } else {
+                &[2.0, 30.0, 72.0, 98.0, 99.0]
+            };
+            body.1 |= value.is_none_or(|v| codes.contains(&v));
+        }
+        for &(_, kind, text) in b.statements {
+            if kind == Kind::Call {
+                match crate::statement::o_keyword(text).as_deref() {
+                    Some(b"call") => body.2.push(crate::statement::o_label(text)),
+                    Some(b"return") => {}
+                    _ => body.1 = true,
+                }
+            }
+        }
+    }
+
+    /// LinuxCNC: whether the main program's call statement `text` leaves the feed mode as it
+    /// was before it: an `o<name> call` of a subroutine defined in this file before the call
+    /// whose body, and the bodies of the subroutines it calls (transitively, each defined
+    /// before the call too), set no feed mode and end nothing ([`Checker::linuxcnc_bodies`]).
+    /// rs274 runs the body under the caller's mode, and a body that writes no G93/G94/G95
+    /// returns under it (issue 32, item 4: TG402 was not judged after any call). Anything
+    /// else: not known here.
+    fn linuxcnc_call_keeps_mode(&self, text: &[u8]) -> bool {
+        if crate::statement::o_keyword(text).as_deref() != Some(b"call".as_slice()) {
+            return false;
+        }
+        let mut todo = vec![crate::statement::o_label(text)];
+        let mut seen: Vec<Vec<u8>> = Vec::new();
+        while let Some(label) = todo.pop() {
+            if label.len() < 2 {
+                return false; // (`o[#1] call`: which one is not known here)
+            }
+            if seen.contains(&label) {
+                continue;
+            }
+            let Some((_, sets, calls)) = self.linuxcnc_bodies.iter().rfind(|e| e.0 == label) else {
+                return false;
+            };
+            if *sets {
+                return false;
+            }
+            todo.extend(calls.iter().cloned());
+            seen.push(label);
+        }
+        true
     }
 
     /// LinuxCNC: rs274 reads an `o<name> sub` ... `o<name> endsub` without running it, so
@@ -1175,6 +1286,61 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
+
+    #[test]
+    fn a_call_of_a_sub_that_sets_no_feed_mode_keeps_the_mode_before_it() {
+        // issue 32, item 4: G93, then a call of a sub defined before it that only moves, then
+        // a G1 without F: TG402 (rs274: "F word missing with inverse time g1 move")
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let t = "o<t> sub\nG0 Y1\no<t> endsub\n";
+        let s = "o<s> sub\nG1 X1 F10\no<t> call\no<s> endsub\n";
+        let text = |before: &str, after: &str| {
+            format!("G21 G17 G90 F100\n{before}G93\no<s> call\nG1 X2\nM2\n{after}")
+        };
+        let check = |t: &str| fired(linuxcnc(), t, Rule::InverseTimeWithoutFeed);
+        assert_eq!(check(&text(&format!("{t}{s}"), "")), [(11, 4)]);
+        // a body that writes a feed mode, an end, or a code not known: not judged
+        for code in ["G94", "G95", "M2", "M72", "G#1", "M98 P1"] {
+            let before = format!(
+                "{t}{}",
+                s.replace("G1 X1 F10", &format!("{code}\nG1 X1 F10"))
+            );
+            assert_eq!(check(&text(&before, "")), [], "{code}");
+            let nested = format!("{}{s}", t.replace("G0 Y1", code));
+            assert_eq!(check(&text(&nested, "")), [], "{code} in the sub it calls");
+        }
+        // defined after the call, or calling one defined after it: not judged
+        assert_eq!(check(&text("", &format!("{s}{t}"))), []);
+        assert_eq!(check(&text(s, t)), []);
+        // a sub calling itself: each body is visited once
+        let own = "o<s> sub\nG1 X1 F10\no<s> call\no<s> endsub\n";
+        assert_eq!(check(&text(own, "")), [(8, 4)]);
+    }
+
+    #[test]
+    fn an_if_all_of_whose_branches_end_ends_the_main_program_at_its_endif() {
+        // issue 32: o<s> is defined after an if/else whose branches both end; the program
+        // never comes to the definition again after the call (rs274 runs to its end)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let text = |branch: &str| {
+            format!(
+                "G21 G17 G90\no<s> call\no1 if [#1 GT 0]\nM2\no1 else\n{branch}\no1 endif\n\
+                 o<s> sub\nG0 X3\no<s> endsub\nM2\n"
+            )
+        };
+        let check = |t: &str| fired(linuxcnc(), t, Rule::LinuxCncRefuses);
+        assert_eq!(check(&text("M2")), []);
+        assert_eq!(check(&text("M30")), []);
+        // a nested if whose branches both end ends the branch it stands in
+        assert_eq!(check(&text("o2 if [#2]\nM2\no2 else\nM2\no2 endif")), []);
+        // a branch that runs on: the definition is read after the call
+        assert_eq!(check(&text("G0 X2")), [(8, 1)]);
+        assert_eq!(check(&text("o2 if [#2]\nM2\no2 endif")), [(10, 1)]);
+        // no else: the condition may be false
+        let no_else = "G21 G17 G90\no<s> call\no1 if [#1 GT 0]\nM2\no1 endif\n\
+                       o<s> sub\nG0 X3\no<s> endsub\nM2\n";
+        assert_eq!(check(no_else), [(6, 1)]);
+    }
 
     #[test]
     fn next_hash_finds_the_first_hash_in_and_after_the_chunks_of_eight() {
