@@ -848,6 +848,10 @@ pub struct Checker {
     /// as its first 8 bytes packed in one integer and its length, so that a name of up to 8
     /// bytes is compared as one integer, and a longer one's bytes.
     linuxcnc_named_seen: Vec<(u64, usize, Vec<u8>)>,
+    /// LinuxCNC: which of a block's first eight words `structure::walk_expression` found a
+    /// plain bracketed expression (which holds no `/`), and the block's count
+    /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
+    linuxcnc_plain_words: (usize, u8),
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
     /// inside one runs depends on values the checker does not follow, so what rs274 refuses
@@ -1005,6 +1009,7 @@ impl Checker {
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
+            linuxcnc_plain_words: (0, 0),
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,

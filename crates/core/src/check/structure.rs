@@ -33,6 +33,148 @@ fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
         .map(|at| from + at)
 }
 
+/// The words of a block walked by [`walk_expression`] (a word after them is read by each
+/// rule's own walk).
+pub(super) const WALKED: usize = 8;
+
+/// What one walk of a LinuxCNC word's expression finds for the three rules that read its
+/// bytes: the bare-operator refusal (`between::bare_operator`), the named parameters' reads
+/// (`linuxcnc_undefined_read`) and the read-refusal's test for a `/` (`linuxcnc_refusals`).
+/// A CAM program's `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]` was walked three times a word.
+#[derive(Clone, Copy, Default)]
+pub(super) struct ExpressionWalk {
+    /// The expression is one pair of brackets with no other bracket, no `/` and no letter
+    /// outside a named parameter's name (`[#<yscale>*-3.608]`, `[#1+2.5]`): its first `[`
+    /// closes at its last byte, and it has no `/`. False: each rule walks it itself.
+    pub plain: bool,
+    /// How many of `names` are found.
+    pub count: u8,
+    /// Each named parameter's `#` and its `>`, as `linuxcnc_undefined_read` finds them in
+    /// their order.
+    pub names: [(u16, u16); 4],
+}
+
+/// No word walked: each rule reads a word's expression itself.
+const NOT_WALKED: [ExpressionWalk; WALKED] = [ExpressionWalk {
+    plain: false,
+    count: 0,
+    names: [(0, 0); 4],
+}; WALKED];
+
+/// The bytes a plain bracketed expression holds between its brackets outside a named
+/// parameter ([`walk_expression`]): digits, `.`, `*`, `+`, `-` and blanks (`#` apart).
+const PLAIN_BYTES: [bool; 256] = {
+    let mut table = [false; 256];
+    let mut c = b'0';
+    while c <= b'9' {
+        table[c as usize] = true;
+        c += 1;
+    }
+    table[b'.' as usize] = true;
+    table[b'*' as usize] = true;
+    table[b'+' as usize] = true;
+    table[b'-' as usize] = true;
+    table[b' ' as usize] = true;
+    table[b'\t' as usize] = true;
+    table
+};
+
+/// The bytes of a chunk of eight equal to `byte`, each as its high bit: exact (no false
+/// flag: the low seven bits are added apart from the high one, and carry nothing on).
+#[inline]
+fn equal_bytes(chunk: u64, byte: u8) -> u64 {
+    const LOWS: u64 = 0x7F7F_7F7F_7F7F_7F7F;
+    let x = chunk ^ (0x0101_0101_0101_0101 * u64::from(byte));
+    !(((x & LOWS) + LOWS) | x | LOWS)
+}
+
+/// One walk of a LinuxCNC word's `expression` ([`ExpressionWalk`]): whether it is a plain
+/// bracketed one, and its named parameters. It stops at the first byte of another kind (a
+/// function, a comparison, a `/`, a bracket inside): such an expression is read by each rule
+/// as before.
+pub(super) fn walk_expression(expression: &[u8]) -> ExpressionWalk {
+    let mut walk = ExpressionWalk::default();
+    let n = expression.len();
+    if n < 2 || n > usize::from(u16::MAX) || expression[0] != b'[' || expression[n - 1] != b']' {
+        return walk;
+    }
+    let inside = &expression[..n - 1];
+    let mut i = 1;
+    while i < inside.len() {
+        let c = inside[i];
+        if PLAIN_BYTES[usize::from(c)] {
+            i += 1;
+            continue;
+        }
+        if c != b'#' {
+            return walk;
+        }
+        if inside.get(i + 1) != Some(&b'<') {
+            i += 1; // a numbered parameter's `#`
+            continue;
+        }
+        // a named parameter: to its `>`, with no bracket or `/` in its name; a name of up
+        // to 7 bytes found in the 8 after the `#<` at once
+        let start = i;
+        i += 2;
+        let chunk = inside.get(i..i + 8).map(|c| {
+            let mut bytes = [0u8; 8];
+            bytes.copy_from_slice(c);
+            u64::from_le_bytes(bytes)
+        });
+        match chunk.map(|c| (c, equal_bytes(c, b'>'))) {
+            Some((c, close)) if close != 0 => {
+                let len = (close.trailing_zeros() / 8) as usize;
+                let name = (1u64 << (8 * len)) - 1;
+                if (equal_bytes(c, b'[') | equal_bytes(c, b']') | equal_bytes(c, b'/')) & name != 0
+                {
+                    return walk;
+                }
+                i += len;
+            }
+            _ => loop {
+                match inside.get(i) {
+                    Some(b'>') => break,
+                    Some(b'[' | b']' | b'/') | None => return walk,
+                    Some(_) => i += 1,
+                }
+            },
+        }
+        if usize::from(walk.count) == walk.names.len() {
+            return walk;
+        }
+        // (both below 65,536: the expression's length is)
+        walk.names[usize::from(walk.count)] = (start as u16, i as u16);
+        walk.count += 1;
+        i += 1;
+    }
+    walk.plain = true;
+    walk
+}
+
+/// A named parameter's name `text[from..from + len]` as one integer, for the names seen
+/// ([`Checker::linuxcnc_unknown_name`]): its first 8 bytes (fewer: zeros after them),
+/// loaded at once where 8 bytes follow `from` in `text`.
+#[inline]
+fn name_key(text: &[u8], from: usize, len: usize) -> u64 {
+    if let Some(chunk) = text.get(from..from + 8) {
+        let mut bytes = [0u8; 8];
+        bytes.copy_from_slice(chunk);
+        let all = u64::from_le_bytes(bytes);
+        if len >= 8 {
+            all
+        } else {
+            all & ((1u64 << (8 * len)) - 1)
+        }
+    } else {
+        let mut key = 0u64;
+        for (k, &c) in text[from..from + len.min(8)].iter().enumerate() {
+            key |= u64::from(c) << (8 * k);
+        }
+        key
+    }
+}
+
 impl Checker {
     pub fn unreadable(&mut self, block: &Unreadable<'_>) {
         self.stats.blocks += 1;
@@ -223,11 +365,26 @@ impl Checker {
     /// stops at the operator, "Bad character '*' used" (compared with rs274 -g; review 20,
     /// finding 1). Judged where the line surely runs: rs274 does not read a line of a branch
     /// it skips, nor a definition's body until a call runs it.
-    fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>) {
+    fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>, walks: &[ExpressionWalk; WALKED]) {
         if !self.linuxcnc_runs_surely() || self.main_ended() {
             return;
         }
-        for w in b.words.iter().filter(|w| !w.expression.is_empty()) {
+        for (i, w) in b.words.iter().enumerate() {
+            if w.expression.is_empty() {
+                continue;
+            }
+            // a letter and one plain pair of brackets (`Y[#<yscale>*-3.608]`) has no
+            // operation outside them: `bare_operator` goes from the letter to the matching `]`, the
+            // token's last byte (the expression is the token's tail: one byte shorter, the
+            // same end)
+            if walks.get(i).is_some_and(|k| k.plain)
+                && w.token.len() == w.expression.len() + 1
+                && w.token.as_ptr_range().end == w.expression.as_ptr_range().end
+                && w.token[0].is_ascii_alphabetic()
+            {
+                debug_assert_eq!(crate::between::bare_operator(w.token), None);
+                continue;
+            }
             let Some(at) = crate::between::bare_operator(w.token) else {
                 continue;
             };
@@ -276,7 +433,16 @@ impl Checker {
         {
             return;
         }
-        self.linuxcnc_bare_operator(b);
+        // (a block of plain words, as most of a CAM program's are, has nothing to walk)
+        let expressions = b.words.iter().any(|w| !w.expression.is_empty());
+        let walked;
+        let walks = if expressions {
+            walked = self.linuxcnc_walk_words(b);
+            self.linuxcnc_bare_operator(b, &walked);
+            &walked
+        } else {
+            &NOT_WALKED
+        };
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
         self.definition_feed(statement.as_ref());
@@ -285,11 +451,11 @@ impl Checker {
         if statement.is_none()
             && self.open_definition.is_none()
             && !self.main_ended()
-            && (!b.statements.is_empty() || b.words.iter().any(|w| !w.expression.is_empty()))
+            && (!b.statements.is_empty() || expressions)
         {
             // (inside a condition or loop its assignments count as made, its reads are not
             // judged)
-            self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty());
+            self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty(), walks);
         }
         // (the condition's own reads run, judged above; the lines inside it may not)
         let main = self.open_definition.is_none();
@@ -412,9 +578,14 @@ impl Checker {
     /// the line may not run, or a loop's earlier pass may have assigned it; its assignments
     /// are taken all the same).
     #[inline(never)]
-    fn linuxcnc_named_reads(&mut self, b: &BlockView<'_>, judge: bool) {
+    fn linuxcnc_named_reads(
+        &mut self,
+        b: &BlockView<'_>,
+        judge: bool,
+        walks: &[ExpressionWalk; WALKED],
+    ) {
         let mut undefined: Option<(Vec<u8>, usize)> = None;
-        for w in b.words {
+        for (i, w) in b.words.iter().enumerate() {
             if w.expression.is_empty() {
                 continue;
             }
@@ -434,7 +605,24 @@ impl Checker {
                 }
             }
             if undefined.is_none() {
-                undefined = self.linuxcnc_undefined_read(reads, w.column);
+                // (the word's whole expression: its names as the walk found them)
+                undefined = match walks.get(i) {
+                    Some(k) if k.plain => {
+                        let found = k.names[..usize::from(k.count)].iter().find_map(|&(s, c)| {
+                            self.linuxcnc_unknown_name(reads, usize::from(s), usize::from(c))
+                        });
+                        let found = found.map(|name| (name, w.column));
+                        #[cfg(debug_assertions)]
+                        {
+                            let seen = self.linuxcnc_named_seen.clone();
+                            let full = self.linuxcnc_undefined_read(reads, w.column);
+                            self.linuxcnc_named_seen = seen;
+                            debug_assert_eq!(found, full, "line {}", b.line);
+                        }
+                        found
+                    }
+                    _ => self.linuxcnc_undefined_read(reads, w.column),
+                };
             }
         }
         for &(column, kind, text) in b.statements {
@@ -647,59 +835,99 @@ impl Checker {
         // one pass over the bytes, without memchr, whose dispatch costs more than the few
         // dozen bytes of a word's expression (`[#<yscale>*-56.12]`, two in every line of a
         // CAM program scaling its axes by parameters): a `#` looked for 8 bytes at a time
-        // (`next_hash`), a name's first 8 bytes packed into one integer on the way to its
-        // `>`, to be compared with the names seen as one
+        // (`next_hash`), then its name's `>` (a word's expression is walked once for its
+        // names by `walk_expression` instead: this reads a statement's, an assignment's,
+        // and a word's past the walked ones)
         let mut i = 0;
         while let Some(start) = next_hash(text, i) {
             if text.get(start + 1) != Some(&b'<') {
                 i = start + 1;
                 continue;
             }
-            let mut close = start + 2;
-            let mut key = 0u64;
-            while text.get(close).is_some_and(|&c| c != b'>') {
-                if close - start - 2 < 8 {
-                    key = key << 8 | u64::from(text[close]);
-                }
-                close += 1;
-            }
-            if close == text.len() {
-                return None;
-            }
+            let close = start + 2 + text[start + 2..].iter().position(|&c| c == b'>')?;
             i = close + 1;
-            let written = &text[start + 2..close];
-            if self.linuxcnc_named_seen.iter().any(|(k, len, long)| {
-                *k == key && *len == written.len() && (*len <= 8 || long.as_slice() == written)
-            }) {
-                continue;
+            if let Some(name) = self.linuxcnc_unknown_name(text, start, close) {
+                return Some((name, column));
             }
-            if self.linuxcnc_name_known(written) {
-                if self.linuxcnc_named_seen.len() < 8 {
-                    let long = if written.len() > 8 {
-                        written.to_vec()
-                    } else {
-                        Vec::new()
-                    };
-                    self.linuxcnc_named_seen.push((key, written.len(), long));
-                }
-                continue;
-            }
-            let name = super::params::named_parameter(&text[start + 2..close]);
-            // EXISTS[#<name>] asks whether it is defined: no read
-            let before: Vec<u8> = text[..start]
-                .iter()
-                .rev()
-                .copied()
-                .filter(|&c| !blank(c))
-                .skip_while(|&c| c == b'[')
-                .take(6)
-                .collect();
-            if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
-                continue;
-            }
-            return Some((name, column));
         }
         None
+    }
+
+    /// The named parameter `text[start..=close]` (`#<name>`, its `#` at `start` and its `>`
+    /// at `close`) if it is a local one the main program has not assigned, read outside
+    /// `EXISTS[..]` ([`Checker::linuxcnc_undefined_read`]): its name as
+    /// `params::named_parameter` writes it. A name found known is kept among the names seen
+    /// (its first 8 bytes packed into one integer, and its length), compared with them first.
+    #[inline]
+    fn linuxcnc_unknown_name(
+        &mut self,
+        text: &[u8],
+        start: usize,
+        close: usize,
+    ) -> Option<Vec<u8>> {
+        let written = &text[start + 2..close];
+        let key = name_key(text, start + 2, written.len());
+        if self.linuxcnc_named_seen.iter().any(|(k, len, long)| {
+            *k == key && *len == written.len() && (*len <= 8 || long.as_slice() == written)
+        }) {
+            return None;
+        }
+        self.linuxcnc_name_unseen(text, start, close, key)
+    }
+
+    /// [`Checker::linuxcnc_unknown_name`] of a name not among the names seen: looked up,
+    /// kept among them if known (out of line: a CAM program's few names are soon all seen).
+    #[inline(never)]
+    fn linuxcnc_name_unseen(
+        &mut self,
+        text: &[u8],
+        start: usize,
+        close: usize,
+        key: u64,
+    ) -> Option<Vec<u8>> {
+        let written = &text[start + 2..close];
+        if self.linuxcnc_name_known(written) {
+            if self.linuxcnc_named_seen.len() < 8 {
+                let long = if written.len() > 8 {
+                    written.to_vec()
+                } else {
+                    Vec::new()
+                };
+                self.linuxcnc_named_seen.push((key, written.len(), long));
+            }
+            return None;
+        }
+        let name = super::params::named_parameter(written);
+        // EXISTS[#<name>] asks whether it is defined: no read
+        let before: Vec<u8> = text[..start]
+            .iter()
+            .rev()
+            .copied()
+            .filter(|&c| !blank(c))
+            .skip_while(|&c| c == b'[')
+            .take(6)
+            .collect();
+        if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
+            return None;
+        }
+        Some(name)
+    }
+
+    /// LinuxCNC: the block's words' expressions walked once ([`walk_expression`]) for the
+    /// rules that read their bytes; which of them are plain (and so hold no `/`) kept for the
+    /// read-refusal's test of this block (`linuxcnc_plain_words`, by the block's count).
+    #[inline(never)]
+    fn linuxcnc_walk_words(&mut self, b: &BlockView<'_>) -> [ExpressionWalk; WALKED] {
+        let mut walks = [ExpressionWalk::default(); WALKED];
+        let mut plain = 0u8;
+        for (i, w) in b.words.iter().take(WALKED).enumerate() {
+            if !w.expression.is_empty() {
+                walks[i] = walk_expression(w.expression);
+                plain |= u8::from(walks[i].plain) << i;
+            }
+        }
+        self.linuxcnc_plain_words = (self.stats.blocks, plain);
+        walks
     }
 
     /// LinuxCNC: the definition a `o<name> sub` opens runs to its `o<name> endsub`; rs274
@@ -1357,6 +1585,144 @@ mod tests {
         assert_eq!(next_hash(b"\"$\"$\"$\"$#", 0), Some(8));
         assert_eq!(next_hash(b"", 0), None);
         assert_eq!(next_hash(b"abc", 3), None);
+    }
+
+    /// Expressions drawn from the bytes that matter to the three LinuxCNC rules that read a
+    /// word's expression (brackets, `/`, `#<`, `>`, names' letters, a global's `_`, EXISTS's),
+    /// by a fixed xorshift, each wrapped in brackets or not.
+    fn drawn_expressions(count: usize) -> Vec<Vec<u8>> {
+        let alphabet = b"[]]#<<>>>/*+-.1 aAb_x";
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        // pieces of a CAM program's expressions, and a few that end the walk's plain ones
+        let pieces: [&[u8]; 20] = [
+            b"#<ab>",
+            b"#<x>",
+            b"#<Ab>",
+            b"#<a b>",
+            b"#<_a>",
+            b"#<abcdefgh>",
+            b"#<abcdefghi>",
+            b"#1",
+            b"2.5",
+            b"*",
+            b"-",
+            b"+",
+            b" ",
+            b"#<",
+            b"/",
+            b"[",
+            b"]",
+            b"a",
+            b">",
+            b"#<a/b>",
+        ];
+        (0..count)
+            .map(|_| {
+                let len = (next() % 25) as usize;
+                let mut e: Vec<u8> = if next() % 2 == 0 {
+                    (0..len)
+                        .map(|_| alphabet[(next() % alphabet.len() as u64) as usize])
+                        .collect()
+                } else {
+                    (0..len / 3)
+                        .flat_map(|_| {
+                            let k = next() % 64;
+                            // (the last seven, which end a plain one, one draw in eight)
+                            let k = if k < 8 { 13 + k % 7 } else { k % 13 };
+                            pieces[k as usize].iter().copied()
+                        })
+                        .collect()
+                };
+                match next() % 4 {
+                    0 => {}
+                    1 => e = [b"[#<".as_slice(), &e, b"]"].concat(),
+                    2 => e = [b"[EXISTS[#<".as_slice(), &e, b"]"].concat(),
+                    _ => e = [b"[".as_slice(), &e, b"]"].concat(),
+                }
+                e
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_walk_of_an_expression_finds_what_each_rule_s_own_walk_finds() {
+        use super::{walk_expression, Checker};
+        use crate::check::testing::run;
+        // a checker with names assigned (`#<ab>`, `#<x>`): names known, unknown and global
+        let (mut checker, _) = run(
+            of_family(Family::LinuxCnc),
+            &dialect(Family::LinuxCnc),
+            "#<ab> = 1\n#<x> = 2\nG0 X1\n",
+        );
+        let names = checker.linuxcnc_named.clone();
+        let mut plain = 0;
+        let mut read = 0;
+        for e in drawn_expressions(200_000) {
+            let walk = walk_expression(&e);
+            if !walk.plain {
+                continue;
+            }
+            plain += 1;
+            // the bare-operator refusal's own walk: nothing outside the brackets
+            let token = [b"Y".as_slice(), &e].concat();
+            assert_eq!(crate::between::bare_operator(&token), None, "{e:?}");
+            // the read-refusal's test: no `/`
+            assert!(!e.contains(&b'/'), "{e:?}");
+            // the named reads: the first unknown name the walk's names give, as the
+            // expression's own walk finds it, from the same names seen
+            checker.linuxcnc_named.clone_from(&names);
+            checker.linuxcnc_named_seen.clear();
+            let fast = walk.names[..usize::from(walk.count)]
+                .iter()
+                .find_map(|&(s, c)| checker.linuxcnc_unknown_name(&e, s.into(), c.into()));
+            let seen = checker.linuxcnc_named_seen.clone();
+            checker.linuxcnc_named_seen.clear();
+            let full = Checker::linuxcnc_undefined_read(&mut checker, &e, 7).map(|(n, _)| n);
+            assert_eq!(fast, full, "{}", String::from_utf8_lossy(&e));
+            read += usize::from(full.is_some());
+            // (and the names seen kept alike: each compared by its key)
+            if fast.is_none() {
+                assert_eq!(seen, checker.linuxcnc_named_seen, "{e:?}");
+            }
+        }
+        // the draw reaches the walk's plain expressions and their unknown names
+        assert!(
+            plain > 20_000 && read > 2_000,
+            "{plain} plain, {read} unknown reads"
+        );
+    }
+
+    #[test]
+    fn a_name_s_key_is_its_bytes_whether_loaded_at_once_or_one_by_one() {
+        use super::name_key;
+        // a name followed by 8 bytes or more (loaded at once) and at the text's end (one by
+        // one): the same key; names of one length that differ in their first 8: keys differ
+        for len in 0..12 {
+            let name: Vec<u8> = (0..len).map(|k| b'a' + k as u8).collect();
+            let mut followed = name.clone();
+            followed.extend_from_slice(b">*-3.608]");
+            let at_end = [b"[#<".as_slice(), &name].concat();
+            assert_eq!(
+                name_key(&followed, 0, len),
+                name_key(&at_end, 3, len),
+                "{len}"
+            );
+            if len > 0 {
+                let mut other = name.clone();
+                other[len.min(8) - 1] = b'Z';
+                let other_followed = [other.as_slice(), b">*-3.608]"].concat();
+                assert_ne!(
+                    name_key(&followed, 0, len),
+                    name_key(&other_followed, 0, len)
+                );
+            }
+        }
     }
 
     fn without_percent() -> Config {

@@ -119,6 +119,21 @@ fn has_slash(expression: &[u8]) -> bool {
     expression.iter().any(|&c| c == b'/')
 }
 
+impl Checker {
+    /// Whether the expression of the block's word `i` has a `/`: none where the block's walk
+    /// found it plain (`linuxcnc_plain_words`, kept for this block's count), else by
+    /// [`has_slash`].
+    #[inline]
+    fn linuxcnc_has_slash(&self, i: usize, expression: &[u8]) -> bool {
+        let (block, plain) = self.linuxcnc_plain_words;
+        if block == self.stats.blocks && i < super::structure::WALKED && plain >> i & 1 != 0 {
+            debug_assert!(!has_slash(expression));
+            return false;
+        }
+        has_slash(expression)
+    }
+}
+
 /// The value of a LinuxCNC expression's tree (from [`crate::expr::tree`]) written with numbers
 /// alone, computed in doubles as rs274ngc computes it: Err for a division by zero anywhere in
 /// it (the operands of a function, a power or `MOD` included), None where a parameter, a
@@ -780,7 +795,7 @@ impl Checker {
             if value.is_none()
                 && !w.expression.is_empty()
                 && read_refusal.is_none()
-                && (w.letter == b'M' || has_slash(w.expression))
+                && (w.letter == b'M' || self.linuxcnc_has_slash(i, w.expression))
                 && self.linuxcnc_runs_surely()
             {
                 read_refusal = linuxcnc_read_expression(w);
