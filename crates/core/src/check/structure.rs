@@ -219,10 +219,16 @@ impl Checker {
     /// LinuxCNC: a binary operation outside `[ ]` after a value, in an assignment or a word's
     /// value (`#1=#2*3`, `X#2+1`): rs274ngc reads one only inside `[ ]`, and its read_items
     /// stops at the operator, "Bad character '*' used" (compared with rs274 -g; review 20,
-    /// finding 1). Judged where the line surely runs: rs274 does not read a line of a branch
-    /// it skips, nor a definition's body until a call runs it.
+    /// finding 1).
+    ///
+    /// The line's form is refused whenever rs274 runs the line, as the other forms it refuses
+    /// (G10 L50, an E word no code uses): judged wherever the line may run, in a condition, a
+    /// loop or a definition's body too (review 21, finding 1; the check does not evaluate an
+    /// o-word condition, so the line of an `o1 if [0]` branch is judged as well), its message
+    /// then saying it is refused when it runs. The main program's lines after its end are
+    /// never read (TG117).
     fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>) {
-        if !self.linuxcnc_runs_surely() || self.main_ended() {
+        if self.open_definition.is_none() && self.main_ended() {
             return;
         }
         for w in b.words.iter().filter(|w| !w.expression.is_empty()) {
@@ -233,7 +239,8 @@ impl Checker {
             if !matches!(op, b'*' | b'/' | b'+' | b'-') {
                 continue; // (a name after a value: the tokenizer's TG100)
             }
-            // the operator's column: the token's bytes are the line's without its blanks
+            // the column of the token's byte `at`: the token's bytes are the line's without
+            // its blanks
             let start = w.column.saturating_sub(1);
             let mut left = at;
             let mut offset = start;
@@ -247,14 +254,20 @@ impl Checker {
                 }
                 left -= 1;
             }
-            let message = format!(
-                "Bad character '{}' used (rs274ngc): {} has '{}' after a value outside [ ]; \
-                 LinuxCNC reads a binary operation only inside [ ] (write {}[...])",
+            let token = String::from_utf8_lossy(w.token);
+            let mut message = format!(
+                "Bad character '{}' used (rs274ngc): {token} has '{}' after a value outside \
+                 [ ]; LinuxCNC reads a binary operation only inside [ ] (write {}[...])",
                 op as char,
-                String::from_utf8_lossy(w.token),
                 op as char,
                 String::from_utf8_lossy(&w.token[..w.token.len() - w.expression.len()]),
             );
+            if !self.linuxcnc_runs_surely() {
+                message.push_str(
+                    "; the line stands in an o-word condition, loop or subroutine body, and \
+                     rs274 refuses it when it runs it",
+                );
+            }
             self.report(
                 Rule::LinuxCncRefuses,
                 message,
