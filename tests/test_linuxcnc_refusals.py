@@ -553,3 +553,53 @@ def test_review21_the_lines_after_the_end_are_not_judged_but_a_definition_there_
     found = [f for f in check_text(called, load_profile("linuxcnc")) if f.severity == "error"]
     assert [(f.rule, f.line, f.column) for f in found] == [("TG412", 6, 6)], found
     assert "Bad character '+' used" in rs274_output(tmp_path, called)
+
+
+# Review 21, finding 3: the fix the message names keeps the parameter assigned (`#<b>=[...]`,
+# not `#[...]`, LinuxCNC's indexed parameter), and an indexed word of a letter is refused at its
+# `=`, where rs274 stops; (the block after HEAD, the column, rs274's message, the fix or None)
+RS274_REFUSES_REVIEW21_ASSIGNMENT = [
+    ("#<a>=2\n#<b>=#<a>*2", 10, "Bad character '*' used", "(write #<b>=[...])"),
+    ("#<_g>=2\n#<_g>=#<_g>-1", 12, "Bad character '-' used", "(write #<_g>=[...])"),
+    ("#1=2\n#12=#1+1", 7, "Bad character '+' used", "(write #12=[...])"),
+    ("R7=R5-R4", 3, "Bad character '=' used", None),
+    ("R7 = R5 * 2", 4, "Bad character '=' used", None),
+]
+
+
+@pytest.mark.parametrize("body, column, says, fix", RS274_REFUSES_REVIEW21_ASSIGNMENT)
+def test_review21_the_refusal_names_what_rs274_says_and_a_fix_it_reads(
+        tmp_path, body, column, says, fix):
+    text = program(body)
+    line = text.count("\n", 0, text.index(body.splitlines()[-1])) + 1
+    found = [f for f in check_text(text, load_profile("linuxcnc"))
+             if f.severity == "error" and f.message.startswith("Bad character")]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert found[0].message.startswith(f"{says} (rs274ngc)"), found
+    out = rs274_output(tmp_path, text)
+    assert says in out, out
+    if fix is None:
+        assert "(write" not in found[0].message
+        return
+    assert found[0].message.endswith(fix), found
+    # the fix written: rs274 runs it to its end, and the parameter it sets is the one named
+    fixed = text.replace(body.splitlines()[-1], fix[7:-6] + "[" + body.splitlines()[-1].split(
+        "=", 1)[1] + "]")
+    assert errors(fixed) == []
+    out = rs274_output(tmp_path, fixed)
+    assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("body, column, rule", [
+    # in an address's value the reading refuses the operator first, at the same column
+    ("#2=1\nG0 X#2+1", 7, "TG100"), ("#1=1\nG0 X-#1*2", 8, "TG101"),
+    ("#1=1\nG0 X#1/2", 7, "TG123"),
+])
+def test_review21_an_operation_in_an_address_value_is_the_readings_refusal(
+        tmp_path, body, column, rule):
+    text = program(body)
+    line = text.count("\n", 0, text.index(body.splitlines()[-1])) + 1
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
+    op = body[-2]
+    assert f"Bad character '{op}' used" in rs274_output(tmp_path, text)

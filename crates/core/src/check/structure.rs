@@ -216,10 +216,12 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC: a binary operation outside `[ ]` after a value, in an assignment or a word's
-    /// value (`#1=#2*3`, `X#2+1`): rs274ngc reads one only inside `[ ]`, and its read_items
-    /// stops at the operator, "Bad character '*' used" (compared with rs274 -g; review 20,
-    /// finding 1).
+    /// LinuxCNC: a binary operation outside `[ ]` after a value in an assignment (`#1=#2*3`,
+    /// `#<b>=#<a>*2`): rs274ngc reads one only inside `[ ]`, and its read_items stops at the
+    /// operator, "Bad character '*' used" (compared with rs274 -g; review 20, finding 1). In an
+    /// address's value (`X#2+1`, `X#1*2`) the line's reading refuses the operator first, at the
+    /// same column (TG100, TG101, TG123; review 21, finding 3), and no second finding is made. An indexed word of another letter (SINUMERIK's `R7=R5-R4`) stops it
+    /// earlier, at its `=`: "Bad character '=' used" (a LinuxCNC word has no index).
     ///
     /// The line's form is refused whenever rs274 runs the line, as the other forms it refuses
     /// (G10 L50, an E word no code uses): judged wherever the line may run, in a condition, a
@@ -239,6 +241,11 @@ impl Checker {
             if !matches!(op, b'*' | b'/' | b'+' | b'-') {
                 continue; // (a name after a value: the tokenizer's TG100)
             }
+            // an indexed word of a letter (`R7=`): rs274 reads R7, then stops at the `=`
+            let index_equals = (w.letter != b'#' && !w.index.is_empty())
+                .then(|| 1 + w.index.len())
+                .filter(|&i| w.token.get(i) == Some(&b'='));
+            let at = index_equals.unwrap_or(at);
             // the column of the token's byte `at`: the token's bytes are the line's without
             // its blanks
             let start = w.column.saturating_sub(1);
@@ -255,13 +262,31 @@ impl Checker {
                 left -= 1;
             }
             let token = String::from_utf8_lossy(w.token);
-            let mut message = format!(
-                "Bad character '{}' used (rs274ngc): {token} has '{}' after a value outside \
-                 [ ]; LinuxCNC reads a binary operation only inside [ ] (write {}[...])",
-                op as char,
-                op as char,
-                String::from_utf8_lossy(&w.token[..w.token.len() - w.expression.len()]),
-            );
+            let mut message = if index_equals.is_some() {
+                format!(
+                    "Bad character '=' used (rs274ngc): {token} is no LinuxCNC word; rs274 \
+                     reads {} and stops at the '=' (LinuxCNC assigns a value to a parameter \
+                     alone, #n= or #<name>=, and reads a binary operation only inside [ ])",
+                    String::from_utf8_lossy(&w.token[..at]),
+                )
+            } else {
+                // what stands before the value: `#1=`, `#<b>=` (an assignment's parameter,
+                // to its `=`), or the word's letter
+                let head = if w.letter == b'#' {
+                    let equals = w.token.iter().position(|&c| c == b'=');
+                    &w.token[..equals.map_or(0, |e| e + 1)]
+                } else {
+                    &w.token[..w.token.len() - w.expression.len()]
+                };
+                format!(
+                    "Bad character '{}' used (rs274ngc): {token} has '{}' after a value \
+                     outside [ ]; LinuxCNC reads a binary operation only inside [ ] (write \
+                     {}[...])",
+                    op as char,
+                    op as char,
+                    String::from_utf8_lossy(head),
+                )
+            };
             if !self.linuxcnc_runs_surely() {
                 message.push_str(
                     "; the line stands in an o-word condition, loop or subroutine body, and \
