@@ -847,3 +847,32 @@ def test_g10_l20_and_the_systems_beyond_g59(profile, head, select, g10):
         text = _G10_ARC.format(head=head + system + "\n", g10=g10, tail=tail)
         found = {f.rule for f in check_text(text, profile)}
         assert ("TG403" in found) == measured, (system, g10, sorted(found))
+
+
+@pytest.mark.parametrize("name", ["part #2 100%.nc", "my part?.nc", "p\u00e9 a:b.nc", "plain.nc"])
+def test_sarif_uris_are_uri_references_that_give_the_file_names_back(tmp_path, monkeypatch,
+                                                                     name):
+    # review 21, finding 4: SARIF 2.1.0's artifactLocation.uri is a URI reference (RFC 3986);
+    # a relative path is a relative reference, an absolute one a file: URI, each percent-encoded
+    from urllib.parse import unquote, urlsplit
+    from urllib.request import url2pathname
+
+    (tmp_path / "sub dir").mkdir()
+    (tmp_path / "sub dir" / name).write_text(BAD)
+    monkeypatch.chdir(tmp_path)
+    relative = Path("sub dir") / name
+    absolute = tmp_path / "sub dir" / name
+    r = run("check", str(relative), str(absolute), "-p", "iso-mill", "--format", "sarif")
+    uris = {res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+            for res in json.loads(r.output)["runs"][0]["results"]}
+    assert len(uris) == 2, uris
+    for uri in uris:
+        parts = urlsplit(uri)
+        assert parts.query == "" and parts.fragment == "" and "#" not in uri, uri
+        assert " " not in uri and all(ord(c) < 128 for c in uri), uri
+        if parts.scheme:
+            assert parts.scheme == "file" and parts.netloc == "", uri
+            assert Path(url2pathname(parts.path)) == absolute
+        else:
+            assert not parts.netloc and not uri.startswith("/"), uri
+            assert Path(unquote(parts.path)) == relative

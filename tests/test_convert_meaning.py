@@ -819,8 +819,39 @@ def test_a_word_written_with_blanks_converts_to_what_the_target_reads(text, targ
     if target != "linuxcnc":
         # (a target with an implicit decimal writes X12.5 as X00125)
         assert "G1 8" not in out and "X1 2" not in out.upper(), out
+        assert not any(s in out for s in ("#1 0", "[1 0]", "#2 0", "# 3", "1 . 5")), out
     if "2.5" in text and target in ("fanuc-mill", "haas-mill", "sinumerik-840d"):
         assert "X12.5" in out, out
+
+
+@pytest.mark.parametrize("target", PROFILES)
+@pytest.mark.parametrize("text, joined", [
+    # review 21, 2: through a parameter's or an expression's number, X#1 0 is X#10, X[1 0] is
+    # X[10], #2 0=3 is #20=3 (rs274 drops every blank outside comments)
+    ("G21 G90\n#10=5\n#1=1\nG0 X#1 0\nM2\n", "G21 G90\n#10=5\n#1=1\nG0 X#10\nM2\n"),
+    ("G21 G90\nG0 X[1 0]\nM2\n", "G21 G90\nG0 X[10]\nM2\n"),
+    ("G21 G90\n#2 0=3\nG0 Z#20\nM2\n", "G21 G90\n#20=3\nG0 Z#20\nM2\n"),
+    ("G21 G90\n# 3=1\nG0 X[#3 + 1 . 5]\nM2\n", "G21 G90\n#3=1\nG0 X[#3+1.5]\nM2\n"),
+])
+def test_blanks_inside_a_number_convert_as_the_number_written_whole(text, joined, target):
+    """Review 21, 2: the conversion of a word with blanks inside its numbers is the conversion
+    of the word written without them, which the target reads as LinuxCNC does, on each of the
+    16 profiles; so its output has no TG100 the blank-free program's output has not (a
+    target with no parameters refuses `#` either way)."""
+    from postproc.check import check_text
+
+    def outcome(program: str) -> tuple[str, list[tuple[str, int, str]]]:
+        try:
+            out = convert(program, "linuxcnc", target)
+        except ConversionError as e:
+            return f"refused: {str(e).split(': ', 2)[-1]}", []
+        return out, [(f.rule, f.line, f.message)
+                     for f in check_text(out, load_profile(target)) if f.rule == "TG100"]
+
+    if target == "linuxcnc":
+        assert convert(text, "linuxcnc", target) == text  # as written
+        return
+    assert outcome(text) == outcome(joined)
 
 
 def test_a_word_s_blank_is_dropped_only_for_a_target_that_reads_it_otherwise():
@@ -862,3 +893,41 @@ def test_an_expression_outside_brackets_is_refused_for_linuxcnc(text, column, me
         lines[line - 1] = f"{name}=[{value}]"
         bracketed = "\n".join(lines) + "\n"
         assert convert(bracketed, "fanuc-mill", "linuxcnc") == bracketed
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill"])
+def test_blanks_inside_a_parameter_or_expression_number_are_dropped(target, tmp_path):
+    """Review 21, 2: rs274 drops every blank outside comments, so `X#1 0` is X#10 (compared
+    with rs274 -g where installed); a FANUC or Haas reads `X#1` and a number without an
+    address. A word with a blank inside a number is written whole, its blanks dropped."""
+    from postproc.check import check_text
+
+    from .conftest import rs274_output
+
+    cases = [("G0 X#1 0", "G0 X#10"), ("G0 X[1 0]", "G0 X[10]"), ("#2 0=3", "#20=3"),
+             ("G0 X[#10 + 1 0]", "G0 X[#10+10]"), ("G0 X- [1 0 + 2]", "G0 X-[10+2]"),
+             ("G0 X[#10 + 1]", "G0 X[#10 + 1]")]
+    for written, read in cases:
+        text = f"G21 G90\n#10=5\n#1=1\n{written}\nM2\n"
+        out = convert(text, "linuxcnc", target)
+        assert out.splitlines()[-2] == read, out
+        assert [f for f in check_text(out, load_profile(target)) if f.severity == "error"] == []
+    # the source's own reading: rs274 reads X#1 0 as X#10 (5), X[1 0] as X10
+    out = rs274_output(tmp_path, "G21 G90\n#10=5\n#1=1\nG0 X#1 0\nG0 X[1 0]\nM2\n")
+    assert "STRAIGHT_TRAVERSE(5.0000," in out and "STRAIGHT_TRAVERSE(10.0000," in out, out
+    # LinuxCNC to LinuxCNC: as written
+    assert convert("G21\nG0 X[1 0]\nM2\n", "linuxcnc") == "G21\nG0 X[1 0]\nM2\n"
+
+
+def test_a_value_after_a_value_in_brackets_is_named_so():
+    # review 21, 2: the `]` is there; the reading stops at the second value
+    from postproc.check import check_text
+
+    found = [f for f in check_text("O1\nG21 G90\nG0 X[1 0]\nM30\n", load_profile("fanuc-mill"))
+             if f.rule == "TG100"]
+    assert [(f.line, f.column) for f in found] == [(3, 8)], found
+    assert found[0].message.startswith("'0' after a value inside [ ], where an operation or the "
+                                       "closing ']' must follow it"), found
+    unclosed = [f for f in check_text("O1\nG21 G90\nG0 X[1\nM30\n", load_profile("fanuc-mill"))
+                if f.rule == "TG100"]
+    assert [f.message for f in unclosed] == ["'[' without a closing ']' in the expression"]

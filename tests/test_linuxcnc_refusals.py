@@ -574,12 +574,115 @@ def test_review20_an_operation_outside_brackets_is_refused(tmp_path, body, colum
 
 
 @pytest.mark.parametrize("body", [
-    # a sign, a bracketed expression, ATAN's two arguments; a line of a branch rs274 skips
+    # a sign, a bracketed expression, ATAN's two arguments
     "#2=1\n#3=-#2\nG0 X-[#2]", "#1=ATAN[1]/[2]", "#1=[2*3]",
-    "o1 if [0]\n#1=#2*3\no1 endif",
 ])
 def test_review20_a_value_rs274_reads_is_not_refused(tmp_path, body):
     text = program(body)
     assert errors(text) == []
     out = rs274_output(tmp_path, text)
     assert "PROGRAM_END" in out, out
+
+
+# Review 21, finding 1: the operation in a line that may run -- a loop's counter, an `if`
+# branch, a subroutine's body -- is refused where it stands, as rs274 refuses it when it runs
+# the line; (the blocks after HEAD, the line, the column, the operator)
+RS274_REFUSES_BARE_OPERATOR_MAY_RUN = [
+    ("#1=0\no1 while [#1 LT 2]\n#1=#1+1\no1 endwhile", 5, 6, "+"),
+    ("#1=2\no1 if [1]\n#2=#1*3\no1 endif", 5, 6, "*"),
+    ("#1=2\no1 if [#1 GT 5]\nG0 X1\no1 else\n#2=#1/3\no1 endif", 7, 6, "/"),
+    ("o1 do\n#3=#3-1\no1 while [#3 GT 0]", 4, 6, "-"),
+    ("o100 sub\n#<n>=#1*2\nG0 X#<n>\no100 endsub\no100 call [3]", 4, 8, "*"),
+]
+
+
+@pytest.mark.parametrize("body, line, column, op", RS274_REFUSES_BARE_OPERATOR_MAY_RUN)
+def test_review21_an_operation_outside_brackets_is_refused_where_it_may_run(
+        tmp_path, body, line, column, op):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert found[0].message.startswith(f"Bad character '{op}' used (rs274ngc)")
+    assert "rs274 refuses it when it runs it" in found[0].message
+    out = rs274_output(tmp_path, text)
+    assert f"Bad character '{op}' used" in out and "PROGRAM_END" not in out, out
+
+
+@pytest.mark.parametrize("body", [
+    "o1 if [0]\n{}\no1 endif",
+    "o1 while [0]\n{}\no1 endwhile",
+    "o100 sub\n{}\no100 endsub",
+])
+def test_review21_a_line_rs274_never_runs_is_judged_as_g10_l50_is(tmp_path, body):
+    # the check does not evaluate an o-word condition, nor follow the calls: a line of a
+    # branch or a definition that rs274 never runs is judged as one that may run, the same
+    # for the operation as for the other forms rs274 refuses (G10 L50) -- an error that
+    # rs274, running the program to its end, does not make
+    for line, rule_message in [("#1=#2*3", "Bad character '*' used"),
+                               ("G10 L50", "Line with G10 does not have L0")]:
+        text = program(body.format(line))
+        found = errors(text)
+        assert [(r, n) for r, n, _ in found] == [("TG412", 4)], found
+        assert rule_message in found[0][2]
+        out = rs274_output(tmp_path, text)
+        assert "PROGRAM_END" in out, out
+
+
+def test_review21_the_lines_after_the_end_are_not_judged_but_a_definition_there_is(tmp_path):
+    # (TG117: rs274 stops at the M2; a call finds a definition after it)
+    after_end = f"{HEAD}M2\n#1=#1+1\n"
+    assert errors(after_end) == []
+    called = f"{HEAD}o100 call\nM2\no100 sub\n#1=#1+1\no100 endsub\n"
+    found = [f for f in check_text(called, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", 6, 6)], found
+    assert "Bad character '+' used" in rs274_output(tmp_path, called)
+
+
+# Review 21, finding 3: the fix the message names keeps the parameter assigned (`#<b>=[...]`,
+# not `#[...]`, LinuxCNC's indexed parameter), and an indexed word of a letter is refused at its
+# `=`, where rs274 stops; (the block after HEAD, the column, rs274's message, the fix or None)
+RS274_REFUSES_REVIEW21_ASSIGNMENT = [
+    ("#<a>=2\n#<b>=#<a>*2", 10, "Bad character '*' used", "(write #<b>=[...])"),
+    ("#<_g>=2\n#<_g>=#<_g>-1", 12, "Bad character '-' used", "(write #<_g>=[...])"),
+    ("#1=2\n#12=#1+1", 7, "Bad character '+' used", "(write #12=[...])"),
+    ("R7=R5-R4", 3, "Bad character '=' used", None),
+    ("R7 = R5 * 2", 4, "Bad character '=' used", None),
+]
+
+
+@pytest.mark.parametrize("body, column, says, fix", RS274_REFUSES_REVIEW21_ASSIGNMENT)
+def test_review21_the_refusal_names_what_rs274_says_and_a_fix_it_reads(
+        tmp_path, body, column, says, fix):
+    text = program(body)
+    line = text.count("\n", 0, text.index(body.splitlines()[-1])) + 1
+    found = [f for f in check_text(text, load_profile("linuxcnc"))
+             if f.severity == "error" and f.message.startswith("Bad character")]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert found[0].message.startswith(f"{says} (rs274ngc)"), found
+    out = rs274_output(tmp_path, text)
+    assert says in out, out
+    if fix is None:
+        assert "(write" not in found[0].message
+        return
+    assert found[0].message.endswith(fix), found
+    # the fix written: rs274 runs it to its end, and the parameter it sets is the one named
+    fixed = text.replace(body.splitlines()[-1], fix[7:-6] + "[" + body.splitlines()[-1].split(
+        "=", 1)[1] + "]")
+    assert errors(fixed) == []
+    out = rs274_output(tmp_path, fixed)
+    assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("body, column, rule", [
+    # in an address's value the reading refuses the operator first, at the same column
+    ("#2=1\nG0 X#2+1", 7, "TG100"), ("#1=1\nG0 X-#1*2", 8, "TG101"),
+    ("#1=1\nG0 X#1/2", 7, "TG123"),
+])
+def test_review21_an_operation_in_an_address_value_is_the_readings_refusal(
+        tmp_path, body, column, rule):
+    text = program(body)
+    line = text.count("\n", 0, text.index(body.splitlines()[-1])) + 1
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
+    op = body[-2]
+    assert f"Bad character '{op}' used" in rs274_output(tmp_path, text)

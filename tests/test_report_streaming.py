@@ -47,6 +47,15 @@ def old_as_json(findings: Sequence[Finding], stats: dict[str, CheckStats] | None
     return json.dumps(data, indent=2) + "\n"
 
 
+def uri_reference(name: str) -> str:
+    """SARIF 2.1.0's artifactLocation.uri for a file name (review 21, finding 4): a file: URI
+    for an absolute path, a percent-encoded relative reference for a relative one."""
+    from urllib.parse import quote
+
+    path = Path(name)
+    return path.as_uri() if path.is_absolute() else quote(path.as_posix(), safe="/")
+
+
 def old_sarif(findings: Sequence[Finding]) -> str:
     used = sorted({f.rule for f in findings})
     index = {rule: i for i, rule in enumerate(used)}
@@ -65,7 +74,7 @@ def old_sarif(findings: Sequence[Finding]) -> str:
         "level": level[f.severity],
         "message": {"text": f"{f.message} [{f.clause}]"},
         "locations": [{"physicalLocation": {
-            "artifactLocation": {"uri": Path(f.file).as_posix()},
+            "artifactLocation": {"uri": uri_reference(f.file)},
             "region": {"startLine": f.line, "startColumn": f.column},
         }}],
     } for f in findings]

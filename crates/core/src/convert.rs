@@ -466,6 +466,29 @@ fn bare_number_word(token: &[u8]) -> bool {
         && rest.iter().all(|c| c.is_ascii_digit() || *c == b'.')
 }
 
+/// A run of blanks in a word's `text` between two characters of a number (a digit or a
+/// point), or after a `#` (`#1 0`, `[1 0]`, `# 1`): LinuxCNC reads through it, another
+/// control reads two values or none.
+fn blank_inside_number(text: &[u8]) -> bool {
+    let number = |c: u8| c.is_ascii_digit() || c == b'.';
+    let mut before = None;
+    let mut gap = false;
+    for &c in text {
+        if c == b' ' || c == b'\t' {
+            gap = before.is_some();
+            continue;
+        }
+        match before {
+            Some(b'#') if gap => return true,
+            Some(b) if gap && number(b) && number(c) => return true,
+            _ => {}
+        }
+        gap = false;
+        before = Some(c);
+    }
+    false
+}
+
 /// The replacement of each word of a block, made on first need from the replacements
 /// `changed` holds so far (one slot a word): the pass that writes a word anew fills its slot.
 fn replacements<'n>(
@@ -3227,12 +3250,20 @@ impl Converter {
                 return false;
             };
             let blank = |c: &u8| *c == b' ' || *c == b'\t';
-            if !text.iter().any(blank) || !bare_number_word(w.token) {
+            if !text.iter().any(blank) {
                 return false;
             }
             // (the span holds the token's bytes and blanks only: no comment inside it)
             if !spells(text, w.token) {
                 return false;
+            }
+            if !bare_number_word(w.token) {
+                // a parameter's or an expression's word (review 21, finding 2): rs274 drops
+                // the blanks inside its numbers too (`X#1 0` is X#10, `X[1 0]` X[10], `#2 0=3`
+                // #20=3), which the target reads as two values: such a word is written as its
+                // token, all its blanks dropped; one whose blanks stand only beside an
+                // operator, a bracket or the address is read alike by both and kept
+                return through && blank_inside_number(text);
             }
             // a blank after the number's first digit or point is LinuxCNC's alone; on a Haas
             // any blank in the word alarms
@@ -3244,8 +3275,14 @@ impl Converter {
         }
         let replacements = replacements(new, changed, b.words.len());
         for (slot, w) in replacements.iter_mut().zip(b.words) {
-            if slot.is_none() && closed(w) {
-                *slot = Some(w.token.to_vec());
+            if !closed(w) {
+                continue;
+            }
+            match slot {
+                None => *slot = Some(w.token.to_vec()),
+                // a word written anew from its text (`#2 0=3` given a point, `#2 0=3.`): its
+                // blanks dropped as well
+                Some(written) => written.retain(|c| *c != b' ' && *c != b'\t'),
             }
         }
     }

@@ -538,11 +538,26 @@ impl Scanner<'_> {
         if self.line.get(close) == Some(&b']') {
             Ok(close + 1)
         } else {
-            Err(Box::new(error(
-                "'[' without a closing ']' in the expression".into(),
-                close,
-            )))
+            Err(Box::new(error(unclosed(self.line, close), close)))
         }
+    }
+}
+
+/// Why a `[`'s contents end at `at` without its `]`: the line has none after it, or
+/// something else stands first (`X[1 0]`: a value after the value, with no operation between
+/// them; review 21, finding 2).
+fn unclosed(line: &[u8], at: usize) -> String {
+    match line.get(at) {
+        Some(&c) if line[at..].contains(&b']') => format!(
+            "'{}' after a value inside [ ], where an operation or the closing ']' must \
+             follow it, in the expression",
+            if c.is_ascii_graphic() {
+                char::from(c).to_string()
+            } else {
+                format!("\\x{c:02x}")
+            }
+        ),
+        _ => "'[' without a closing ']' in the expression".into(),
     }
 }
 
@@ -1737,10 +1752,8 @@ impl<B: Build> TreeReader<'_, B> {
         self.pos += 1;
         let inner = self.sum(depth + 1)?;
         if self.peek() != Some(b']') {
-            return Err(error(
-                "'[' without a closing ']' in the expression".into(),
-                self.pos,
-            ));
+            let at = skip_blanks(line, self.pos);
+            return Err(error(unclosed(line, at), at));
         }
         self.pos += 1;
         Ok(if call { self.build.call(inner) } else { inner })

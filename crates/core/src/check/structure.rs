@@ -360,13 +360,22 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC: a binary operation outside `[ ]` after a value, in an assignment or a word's
-    /// value (`#1=#2*3`, `X#2+1`): rs274ngc reads one only inside `[ ]`, and its read_items
-    /// stops at the operator, "Bad character '*' used" (compared with rs274 -g; review 20,
-    /// finding 1). Judged where the line surely runs: rs274 does not read a line of a branch
-    /// it skips, nor a definition's body until a call runs it.
+    /// LinuxCNC: a binary operation outside `[ ]` after a value in an assignment (`#1=#2*3`,
+    /// `#<b>=#<a>*2`): rs274ngc reads one only inside `[ ]`, and its read_items stops at the
+    /// operator, "Bad character '*' used" (compared with rs274 -g; review 20, finding 1). In an
+    /// address's value (`X#2+1`, `X#1*2`) the line's reading refuses the operator first, at the
+    /// same column (TG100, TG101, TG123; review 21, finding 3), and no second finding is made.
+    /// An indexed word of another letter (SINUMERIK's `R7=R5-R4`) stops it earlier, at its
+    /// `=`: "Bad character '=' used" (a LinuxCNC word has no index).
+    ///
+    /// The line's form is refused whenever rs274 runs the line, as the other forms it refuses
+    /// (G10 L50, an E word no code uses): judged wherever the line may run, in a condition, a
+    /// loop or a definition's body too (review 21, finding 1; the check does not evaluate an
+    /// o-word condition, so the line of an `o1 if [0]` branch is judged as well), its message
+    /// then saying it is refused when it runs. The main program's lines after its end are
+    /// never read (TG117).
     fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>, walks: &[ExpressionWalk; WALKED]) {
-        if !self.linuxcnc_runs_surely() || self.main_ended() {
+        if self.open_definition.is_none() && self.main_ended() {
             return;
         }
         for (i, w) in b.words.iter().enumerate() {
@@ -392,7 +401,13 @@ impl Checker {
             if !matches!(op, b'*' | b'/' | b'+' | b'-') {
                 continue; // (a name after a value: the tokenizer's TG100)
             }
-            // the operator's column: the token's bytes are the line's without its blanks
+            // an indexed word of a letter (`R7=`): rs274 reads R7, then stops at the `=`
+            let index_equals = (w.letter != b'#' && !w.index.is_empty())
+                .then(|| 1 + w.index.len())
+                .filter(|&i| w.token.get(i) == Some(&b'='));
+            let at = index_equals.unwrap_or(at);
+            // the column of the token's byte `at`: the token's bytes are the line's without
+            // its blanks
             let start = w.column.saturating_sub(1);
             let mut left = at;
             let mut offset = start;
@@ -406,14 +421,38 @@ impl Checker {
                 }
                 left -= 1;
             }
-            let message = format!(
-                "Bad character '{}' used (rs274ngc): {} has '{}' after a value outside [ ]; \
-                 LinuxCNC reads a binary operation only inside [ ] (write {}[...])",
-                op as char,
-                String::from_utf8_lossy(w.token),
-                op as char,
-                String::from_utf8_lossy(&w.token[..w.token.len() - w.expression.len()]),
-            );
+            let token = String::from_utf8_lossy(w.token);
+            let mut message = if index_equals.is_some() {
+                format!(
+                    "Bad character '=' used (rs274ngc): {token} is no LinuxCNC word; rs274 \
+                     reads {} and stops at the '=' (LinuxCNC assigns a value to a parameter \
+                     alone, #n= or #<name>=, and reads a binary operation only inside [ ])",
+                    String::from_utf8_lossy(&w.token[..at]),
+                )
+            } else {
+                // what stands before the value: `#1=`, `#<b>=` (an assignment's parameter,
+                // to its `=`), or the word's letter
+                let head = if w.letter == b'#' {
+                    let equals = w.token.iter().position(|&c| c == b'=');
+                    &w.token[..equals.map_or(0, |e| e + 1)]
+                } else {
+                    &w.token[..w.token.len() - w.expression.len()]
+                };
+                format!(
+                    "Bad character '{}' used (rs274ngc): {token} has '{}' after a value \
+                     outside [ ]; LinuxCNC reads a binary operation only inside [ ] (write \
+                     {}[...])",
+                    op as char,
+                    op as char,
+                    String::from_utf8_lossy(head),
+                )
+            };
+            if !self.linuxcnc_runs_surely() {
+                message.push_str(
+                    "; the line stands in an o-word condition, loop or subroutine body, and \
+                     rs274 refuses it when it runs it",
+                );
+            }
             self.report(
                 Rule::LinuxCncRefuses,
                 message,
