@@ -513,3 +513,75 @@ def test_a_haas_lower_case_program_number_is_written_upper_case_for_another_cont
     assert "O40001 (part)" in out and "o40001" not in out, out
     assert [f for f in check_text(out, load_profile(target)) if f.rule == "TG101"] == []
     assert "o40001 (part)" in convert(text, "haas-mill", "haas-mill")
+
+
+# -- a letter the source reads that LinuxCNC reads otherwise or refuses: E, a lathe's U W -------
+
+
+@pytest.mark.parametrize("source, text, line, column, word", [
+    # a FANUC mill's E (not in its profile's classification, TG134) beside a G1
+    ("fanuc-mill", FANUC + "G0 X0 Y0\nG1 X1. E2. F100.\nM30\n", 4, 8, "E2."),
+    # after a variable, `X#1E2` is X#1 and E2 (the word the source's reader splits it into)
+    ("fanuc-mill", FANUC + "#1=2.\nG0 X#1E2\nM30\n", 4, 7, "E2"),
+    ("haas-mill", FANUC + "G0 X0 Y0\nG1 X1. E2. F100.\nM30\n", 4, 8, "E2."),
+    ("okuma-lathe", "G0 X20 Z5\nG1 X10 E1 F0.1\nM02\n", 2, 8, "E1"),
+])
+def test_an_e_word_no_linuxcnc_code_uses_is_refused(source, text, line, column, word):
+    e = refused(text, source, "linuxcnc")
+    assert (e.line, e.column) == (line, column), e
+    assert e.message.startswith(f"{word}: E word with no G70, G76, M66, M67 or M68 to use it"), e
+    assert "no LinuxCNC word that carries it" in e.message
+
+
+@pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
+@pytest.mark.parametrize("block, column, word", [
+    ("G1 U2. F0.2", 4, "U2."),
+    ("G1 X12. W-1. F0.2", 9, "W-1."),
+])
+def test_a_lathe_s_incremental_u_w_is_refused_for_linuxcnc(source, block, column, word):
+    e = refused(f"O1\nG21 G18\nG0 X10. Z0.\n{block}\nM30\n", source, "linuxcnc")
+    assert (e.line, e.column) == (4, column), e
+    assert e.message.startswith(f"{word}: the source lathe reads U and W as increments of X and Z")
+
+
+def test_a_lathe_s_dwell_u_still_converts_for_linuxcnc():
+    out = convert("O1\nG21 G18\nG0 X10. Z0.\nG4 U1.5\nM30\n", "fanuc-lathe", "linuxcnc")
+    assert "G4 P1.5" in out and "U" not in out.split("O1", 1)[1]
+
+
+@pytest.mark.parametrize("text", [
+    FANUC + "G0 X0 Y0\nG1 X1. E2. F100.\nM30\n",
+    FANUC + "#1=2.\nG0 X#1E2\nM30\n",
+    "O1\nG21 G18\nG0 X10. Z0.\nG1 U2. F0.2\nM30\n",
+    FANUC + "G0 X0 Y0\nG1 X1. D1 F100.\nM30\n",
+    FANUC + "G0 X0 Y0\nG0 Z50. H1\nM30\n",
+])
+def test_rs274_refuses_the_words_carried_as_written(tmp_path, text):
+    from tests.conftest import rs274_output
+    out = rs274_output(tmp_path, text)
+    assert any(said in out for said in (
+        "E word with no G70, G76, M66, M67 or M68 to use it", "Bad character 'u' used",
+        "D word with no G41", "H word with no G43 or G76 to use it")), out
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("block, column, word, why", [
+    # a FANUC or Haas keeps the offset number for a later G41/G42 or G43
+    ("G1 X1. D1 F100.", 8, "D1", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2"),
+    ("G0 Z50. H1", 9, "H1", "H word with no G43 or G76 to use it"),
+    ("G49 H0", 5, "H0", "H word with no G43 or G76 to use it"),
+])
+def test_a_d_or_h_word_without_its_code_is_refused_for_linuxcnc(source, block, column, word,
+                                                                why):
+    e = refused(f"{FANUC}G0 X0 Y0\n{block}\nM30\n", source, "linuxcnc")
+    assert (e.code, e.line, e.column) == ("conversion-meaning", 4, column), e
+    assert e.message.startswith(f"{word}: {why}"), e
+
+
+def test_d_and_h_beside_their_codes_still_convert_for_linuxcnc(tmp_path):
+    from tests.conftest import rs274_output
+    text = FANUC + "G0 X0 Y0\nG43 Z50. H1\nG41 X50. D1\nG1 Y50. F100.\nG40 X0\nG49\nM30\n"
+    out = convert(text, "fanuc-mill", "linuxcnc")
+    assert "G43 Z50. H1" in out and "G41 X50. D1" in out
+    said = rs274_output(tmp_path, out)
+    assert "PROGRAM_END" in said and "word with no" not in said, said

@@ -686,3 +686,44 @@ def test_review21_an_operation_in_an_address_value_is_the_readings_refusal(
     assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
     op = body[-2]
     assert f"Bad character '{op}' used" in rs274_output(tmp_path, text)
+
+
+# Review 21: the G95 refusal with no spindle speed after an `o.. if/endif` whose branches
+# provably set no S (no S word, call, loop, M2/M30/M98/M99 inside): the speed after the endif
+# is the speed before the if, judged there. Each compared with rs274 -g.
+G95_NO_SPEED = "Cannot feed with zero spindle speed in feed per rev mode"
+RS274_REFUSES_REVIEW21_SPEED = [
+    (program("#1=1\no1 if [#1 GT 0]\nG0 X1\no1 endif\nG0 X1 Y1 G95\nG1 X5 F1"), 8),
+    # both branches, and a nested condition, set no S
+    (program("#1=1\no1 if [#1 GT 0]\nG0 X1\no1 else\no2 if [1]\nG0 Y1\no2 endif\no1 endif\n"
+             "G95\nG1 X5 F1"), 12),
+    # S0 before the condition is the speed after it
+    (program("S0\no1 if [1]\nG0 X1\no1 endif\nG95\nG1 X5 F1"), 8),
+]
+
+
+@pytest.mark.parametrize("text, line", RS274_REFUSES_REVIEW21_SPEED)
+def test_review21_the_speed_before_a_condition_that_sets_none_is_judged_after_it(
+        tmp_path, text, line):
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [("TG412", line)], found
+    assert G95_NO_SPEED in found[0][2]
+    assert G95_NO_SPEED in rs274_output(tmp_path, text)
+
+
+RS274_RUNS_REVIEW21_SPEED = [
+    # an S in the branch that runs, or a call there: the speed after the endif is not known
+    # from the lines (unsure, not judged); rs274 runs them
+    program("o1 if [1]\nS100\no1 endif\nG95\nG1 X5 F1"),
+    program("o1 if [1]\no<s> call\no1 endif\nG95\nG1 X5 F1\nM2\no<s> sub\nS100\no<s> endsub"),
+    program("#1=0\no1 if [#1 GT 0]\nG0 X1\no1 else\nS200\no1 endif\nG95\nG1 X5 F1"),
+    # a speed before the condition is the speed after it
+    program("S500\no1 if [1]\nG0 X1\no1 endif\nG95\nG1 X5 F1"),
+]
+
+
+@pytest.mark.parametrize("text", RS274_RUNS_REVIEW21_SPEED)
+def test_review21_a_condition_that_may_set_the_speed_leaves_it_unsure(tmp_path, text):
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out

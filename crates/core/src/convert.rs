@@ -2707,8 +2707,15 @@ impl Converter {
             self.between_g_systems(b, &gs)?;
         }
         self.motion_mode(b, &gs)?;
-        // (only a change of units refuses an E: without one nothing needs the motion followed)
-        if self.c.family == Family::LinuxCnc && self.c.units.is_some() {
+        // (between two LinuxCNC profiles only a change of units refuses an E: without one
+        // nothing needs the motion followed; from another family's program the target reads
+        // an E the source wrote for a meaning of its own)
+        let other = self.c.family != Family::LinuxCnc;
+        if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
+            if other {
+                self.lathe_uw_for_linuxcnc(b, &gs)?;
+                self.linuxcnc_d_h_words(b, &gs)?;
+            }
             self.linuxcnc_e_word(b, &ms)?;
         }
         // a block under a canned cycle in force repeats it at a new position, with the words it
@@ -3705,19 +3712,125 @@ impl Converter {
             None => None,
         };
         let analog = ms.iter().any(|&m| (66..=68).contains(&m));
-        if self.length == ONE || crate::meaning::linuxcnc_e_used(runs, analog) {
+        let other = self.c.family != Family::LinuxCnc;
+        if (self.length == ONE && !other) || crate::meaning::linuxcnc_e_used(runs, analog) {
             return Ok(());
         }
+        let why = if other {
+            "LinuxCNC refuses this block: the source control's E (a word of its own cycles, \
+             such as an Okuma thread cycle's start shift; one the FANUC profiles do not \
+             classify, TG134) has no LinuxCNC word that carries it; tapegate does not rewrite \
+             it: remove it, or give the LinuxCNC code that uses it"
+        } else {
+            "LinuxCNC refuses this block, so E has no meaning the change of units could convert \
+             it by (G70's end distance and G76's taper are lengths, M66-M68's E a channel \
+             number); remove it, or give the code that uses it"
+        };
         Err(ConvertError {
             message: format!(
-                "{}: {} (rs274ngc): LinuxCNC refuses this block, so E has no meaning the \
-                 change of units could convert it by (G70's end distance and G76's taper are \
-                 lengths, M66-M68's E a channel number); remove it, or give the code that uses it",
+                "{}: {} (rs274ngc): {why}",
                 text(e.token),
                 crate::meaning::LINUXCNC_E_UNUSED
             ),
-            clause: "6.4.7",
+            clause: if other { "meaning" } else { "6.4.7" },
             column: crate::text::column(b.text, e.start),
+            line: None,
+        })
+    }
+
+    /// A FANUC, Haas or Okuma lathe's U and W (increments of X and Z, or a cycle's
+    /// allowances) converted for LinuxCNC, whose U and W are axes of their own, moved to an
+    /// absolute position under G90 (rs274 of a machine without them: "Bad character 'u'
+    /// used"): refused at the word. A dwell's U (seconds) is converted as a dwell.
+    fn lathe_uw_for_linuxcnc(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !self.c.lathe || gs.contains(&4) {
+            return Ok(());
+        }
+        let Some(w) = b.words.iter().find(|w| {
+            matches!(w.token[0].to_ascii_uppercase(), b'U' | b'W') && !w.token.contains(&b'=')
+        }) else {
+            return Ok(());
+        };
+        let on = if w.token[0].eq_ignore_ascii_case(&b'U') {
+            "X"
+        } else {
+            "Z"
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: the source lathe reads U and W as increments of X and Z (or a cycle's \
+                 allowances); LinuxCNC reads them as axes of their own, moved to an absolute \
+                 position (rs274 of a machine without them: \"Bad character '{}' used\"); \
+                 tapegate does not rewrite U W as G91 {on}: write the move in absolute X Z",
+                text(w.token),
+                (w.token[0].to_ascii_lowercase()) as char
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// Another family's D or H word in a block whose codes LinuxCNC does not read it with:
+    /// rs274 refuses the block ("D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or
+    /// G96 to use it", "H word with no G43 or G76 to use it", interp_check.cc
+    /// `check_other_codes`), where a FANUC or Haas keeps the offset number for a later
+    /// G41/G42 or G43 (or cancels with G49 H0): refused at the word (FANUC and Haas sources). A G65/G66 macro call's
+    /// D and H are its arguments, left to the call's own conversion.
+    fn linuxcnc_d_h_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        // (a SINUMERIK's D, its tool edge, is refused by its own meaning: between.rs)
+        if self.c.family != Family::MacroB || gs.iter().any(|&g| matches!(g, 65 | 66)) {
+            return Ok(());
+        }
+        let tenths: Vec<i64> = b
+            .words
+            .iter()
+            .filter(|w| w.token[0].eq_ignore_ascii_case(&b'G'))
+            .filter_map(|w| {
+                let t = std::str::from_utf8(&w.token[1..]).ok()?;
+                let t = Dec::parse(t.trim())?.to_f64() * 10.0;
+                ((t - t.round()).abs() < 1e-6).then(|| t.round() as i64)
+            })
+            .collect();
+        let has = |c: i64| tenths.contains(&c);
+        let lathe_cycle = |m: Option<i64>| matches!(m, Some(700 | 710 | 711 | 712 | 720..=722));
+        let runs = tenths
+            .iter()
+            .copied()
+            .find(|&t| crate::meaning::linuxcnc_motion_code(t))
+            .or(self.linuxcnc_motion);
+        let word = |letter: u8| {
+            b.words
+                .iter()
+                .find(|w| w.token[0].eq_ignore_ascii_case(&letter) && !w.token.contains(&b'='))
+        };
+        let (w, message, holds) = if let Some(w) = word(b'D')
+            .filter(|_| ![410, 411, 420, 421, 960].iter().any(|&c| has(c)) && !lathe_cycle(runs))
+        {
+            (
+                w,
+                "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it",
+                "D as the cutter radius offset number, kept for a later G41/G42",
+            )
+        } else if let Some(w) = word(b'H').filter(|_| !has(430) && !has(432) && runs != Some(760)) {
+            (
+                w,
+                "H word with no G43 or G76 to use it",
+                "H as an offset number of its own (a tool length one kept for a later G43, G49 \
+                 H0's cancel, or beside G41/G42 the radius one a parameter may give it)",
+            )
+        } else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: {message} (rs274ngc): LinuxCNC refuses this block, where the source \
+                 control reads {holds}; tapegate does not move the word: write it in the \
+                 block of the code that uses it",
+                text(w.token)
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
             line: None,
         })
     }

@@ -886,6 +886,12 @@ pub struct Checker {
     /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
     /// definition where it stands, so its `endsub` gives it back (review 17).
     linuxcnc_definition_feed: Option<i64>,
+    /// LinuxCNC: the main program's open `o.. if` conditions, each with the spindle speed
+    /// where it began (the speed, and whether it was unknown) and whether its branches may
+    /// set another (an S word, a call, a loop, M2/M30/M98/M99, a line the checker cannot
+    /// read); and the speed a clean `endif` gives back to the next line (review 21).
+    linuxcnc_if_speed: Vec<(Vec<u8>, Option<Dec>, bool, bool)>,
+    linuxcnc_speed_back: Option<(Option<Dec>, bool)>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
@@ -1017,6 +1023,8 @@ impl Checker {
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,
+            linuxcnc_if_speed: Vec::new(),
+            linuxcnc_speed_back: None,
             linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,

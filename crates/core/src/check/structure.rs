@@ -220,6 +220,10 @@ impl Checker {
     /// mode, and everything the checker follows is forgotten, as after a call it cannot follow.
     fn unread_effects(&mut self, text: &[u8], line: usize) {
         self.refused_at.get_or_insert(line);
+        // (what it sets may be the spindle speed: an `endif` after it gives none back)
+        for open in &mut self.linuxcnc_if_speed {
+            open.3 = false;
+        }
         let mut depth = 0usize;
         let mut previous = b' ';
         let mut everything = false;
@@ -324,6 +328,8 @@ impl Checker {
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
         self.linuxcnc_definition_feed = None;
+        self.linuxcnc_if_speed.clear();
+        self.linuxcnc_speed_back = None;
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
@@ -482,6 +488,7 @@ impl Checker {
         } else {
             &NOT_WALKED
         };
+        self.linuxcnc_if_speed(b);
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
         self.definition_feed(statement.as_ref());
@@ -676,6 +683,69 @@ impl Checker {
                  (a local named parameter has no value until the program sets one)"
             );
             self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        }
+    }
+
+    /// LinuxCNC: the spindle speed after an `o.. endif` whose branches provably set none is
+    /// the speed before its `if` (review 21: the G95 refusal with no spindle speed was lost
+    /// after any condition, as after a call). Provably: no line inside has an S word, an M2,
+    /// M30, M98 or M99 (or an M code written by an expression), a call, a loop or another
+    /// o-word than a nested `if`/`elseif`/`else`/`endif`, nor is one a line the checker
+    /// cannot read; otherwise the speed stays unknown after the `endif`, as before. The
+    /// speed is given back to the next line (the flow's forgetting of the `endif` line comes
+    /// after this), in the main program only (a definition's body runs under its caller's).
+    fn linuxcnc_if_speed(&mut self, b: &BlockView<'_>) {
+        if let Some((speed, unknown)) = self.linuxcnc_speed_back.take() {
+            let state = &mut self.machine.state;
+            state.speed = speed;
+            if unknown {
+                state.unknown |= crate::modal::bit(b'S');
+            } else {
+                state.unknown &= !crate::modal::bit(b'S');
+            }
+        }
+        if self.open_definition.is_some() {
+            return;
+        }
+        let ends_or_calls = |w: &Word<'_>| {
+            let m = std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|t| t.trim().parse::<f64>().ok());
+            !w.expression.is_empty() || m.is_none_or(|m| [2.0, 30.0, 98.0, 99.0].contains(&m))
+        };
+        let sets = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'S' || w.letter == b'M' && ends_or_calls(w));
+        let mut dirty = sets;
+        for &(_, kind, text) in b.statements {
+            let keyword = crate::statement::o_keyword(text);
+            match (kind, keyword.as_deref()) {
+                (Kind::Flow, Some(b"if")) => {
+                    let state = &self.machine.state;
+                    let label = crate::statement::o_label(text);
+                    let entry = (label, state.speed, state.is_unknown(b'S'), true);
+                    self.linuxcnc_if_speed.push(entry);
+                }
+                (Kind::Flow, Some(b"else" | b"elseif")) => {}
+                (Kind::Flow, Some(b"endif")) => {
+                    let label = crate::statement::o_label(text);
+                    match self.linuxcnc_if_speed.pop() {
+                        Some((open, speed, unknown, true)) if open == label => {
+                            self.linuxcnc_speed_back = Some((speed, unknown));
+                        }
+                        // (an endif of another label: rs274 refuses the nesting; nothing given)
+                        Some((open, ..)) if open != label => self.linuxcnc_if_speed.clear(),
+                        _ => {}
+                    }
+                }
+                _ => dirty = true,
+            }
+        }
+        if dirty {
+            for open in &mut self.linuxcnc_if_speed {
+                open.3 = false;
+            }
         }
     }
 
