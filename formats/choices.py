@@ -3,15 +3,16 @@
 A word format's zero suppression and a conversion's rounding (:class:`formats.wordformat.Zeros`,
 :class:`~formats.wordformat.Rounding`) were the only enums a ``tapegate check`` imported:
 ``import enum`` was 5.7M instructions and the two classes 1.4M more, 7.1M of the 98M that
-``check DIR -j 2`` runs before its first thread, the serial part its threads cannot share
-(docs/benchmarks.md, "the serial start-up without enum"). A class of this module is a ``str``
-subclass whose members are its instances, made once when the class is defined, with what the
-code and the tests use of a ``StrEnum``: each member equal to its value and written as it
-(``str``, ``format``, the core's extraction of a string), ``.value`` and ``.name``, the same
-``repr`` (``<Zeros.LEADING: 'leading'>``), the class called with a value or a member giving the
-member (a ValueError for anything else, worded as ``enum``'s), iteration and ``len`` in the
-order of definition, and a member kept itself through ``copy``, ``deepcopy`` and ``pickle``.
-``tests/test_choices.py`` holds each class to a ``StrEnum`` of the same members.
+``check DIR -j 2`` ran before its first thread, the serial part its threads cannot share; 6.0M
+less with this module in its place (docs/benchmarks.md, "the serial start-up without enum"). A
+class of this module is a ``str`` subclass whose members are its instances, made once when the
+class is defined, with what the code and the tests use of a ``StrEnum``: each member equal to
+its value and written as it (``str``, ``format``, the core's extraction of a string), ``.value``
+and ``.name``, the same ``repr`` (``<Zeros.LEADING: 'leading'>``), the class called with a value
+or a member giving the member (a ValueError for anything else, worded as ``enum``'s), iteration
+and ``len`` in the order of definition, and a member kept itself through ``copy``, ``deepcopy``
+and ``pickle``. Unlike a ``StrEnum``'s, a member's hash is its text's, so a dict keyed by the
+text finds it. ``tests/test_choices.py`` holds each class to a ``StrEnum`` of the same members.
 
 A member is declared in the class body as ``NAME = "value"``; the class replaces each such
 string by the member (:meth:`_Choices.__init__`)."""
