@@ -77,11 +77,9 @@ class StrChoice(str, metaclass=_Choices):
     def name(self) -> str:
         return type(self)._names_[self]
 
-    def __str__(self) -> str:
-        return str.__str__(self)
-
-    def __format__(self, spec: str) -> str:
-        return str.__format__(str.__str__(self), spec)
+    # written as the text, by str's own methods (a StrEnum's are str's too)
+    __str__ = str.__str__
+    __format__ = str.__format__
 
     def __repr__(self) -> str:
         return f"<{type(self).__name__}.{self.name}: {str.__repr__(self)}>"

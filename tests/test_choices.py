@@ -31,6 +31,10 @@ def test_a_choice_behaves_as_its_str_enum(cls):
         assert repr(member) == repr(other)
         assert str(member) == str(other) and type(str(member)) is str
         assert f"{member}" == f"{other}" and f"{member:>12}" == f"{other:>12}"
+        assert type(f"{member}") is str
+        for spec in ("", "<9", ">12", "^3"):  # a member where the spec changes nothing, as theirs
+            assert format(member, spec) == format(other, spec)
+            assert isinstance(format(member, spec), cls) == isinstance(format(other, spec), twin)
         assert "{}".format(member) == "{}".format(other)  # noqa: UP032
         assert member == other.value and member == str(other)
         assert cls(member.value) is member and cls(member) is member
