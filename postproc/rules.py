@@ -279,7 +279,7 @@ _example("TG703", "%\nN1 G21\nN2 X1\nN3 M30\n%\n", "%\nN1 G21\nN2 X10\nN3 M30\n%
 # RULES: each rule's record, by ID, in the catalogue's order; READING_RULES: the rules whose
 # findings mean the input could not be read (characters, statements, indexes, tape codes):
 # `tapegate plot` says a file of only these is no program to draw. Both are made when first
-# asked for (the module's __getattr__): their 230 records were 2.2M instructions of the 92M a
+# asked for (the module's __getattr__): their 84 records were 2.2M instructions of the 92M a
 # `check DIR -j 2` runs before its first thread, and a check asks for a rule's record only for
 # --select and --ignore, SARIF and a tape image (docs/benchmarks.md, "the serial start-up
 # without enum").
