@@ -22,14 +22,19 @@ implementation of Annex C that the checker, the converter and the diff use too.
 from __future__ import annotations
 
 from decimal import Decimal
-from enum import StrEnum
 
 from formats import _core
 from formats.errors import ConversionError
 from formats.records import FrozenRecord, init_fields, record
 
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:  # the type checker reads the classes below as the enums they stand for
+    from enum import StrEnum as StrChoice
+else:  # without enum's import (formats.choices)
+    from formats.choices import StrChoice
 
-class Zeros(StrEnum):
+
+class Zeros(StrChoice):
     """Which zeros an implicit-decimal word may omit (Annex C)."""
 
     LEADING = "leading"  # the recommended style: digits right-aligned
@@ -37,7 +42,7 @@ class Zeros(StrEnum):
     NONE = "none"  # every digit position written
 
 
-class Rounding(StrEnum):
+class Rounding(StrChoice):
     """What to do with a value finer than the target resolution."""
 
     HALF_EVEN = "half-even"

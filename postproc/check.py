@@ -31,8 +31,9 @@ from formats.parser import (
 )
 from formats.profile import Profile
 from formats.records import NEW, Record, field, new, record
+from postproc import rules
 from postproc.findings import Finding, make_finding
-from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
+from postproc.rules import TAPE_CHARACTER, TAPE_PARITY
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -261,7 +262,7 @@ class Checker:
         for issue in issues:
             rule = TAPE_PARITY if issue.kind == "parity" else TAPE_CHARACTER
             if self.enabled(rule):
-                r = RULES[rule]
+                r = rules.RULES[rule]
                 yield Finding(rule, r.severity, f"{issue.message()} at byte {issue.offset}",
                               self.file, issue.line, issue.column, r.clause)
 

@@ -26,8 +26,8 @@ from io import StringIO
 from itertools import islice
 
 from formats import _core
+from postproc import rules
 from postproc.check import CheckStats, Finding
-from postproc.rules import RULES
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -240,7 +240,7 @@ class SarifReport:
     def add(self, f: Finding) -> None:
         index = self._index.get(f.rule)
         if index is None:
-            RULES[f.rule]  # a rule the registry cannot describe fails here, not at the end
+            rules.RULES[f.rule]  # a rule the registry cannot describe fails here, not at the end
             index = self._index[f.rule] = len(self._index)
         if f.file != self._file:  # one Path per file, not per finding
             self._file, self._uri = f.file, self._str(artifact_uri(f.file))
@@ -292,7 +292,7 @@ def _tool_version() -> str:
 
 def rule_descriptor(rule: str) -> dict[str, Any]:
     """SARIF's reportingDescriptor of a rule, from the registry."""
-    r = RULES[rule]
+    r = rules.RULES[rule]
     return {
         "id": rule,
         "name": rule,

@@ -276,14 +276,46 @@ _example("TG702", "", "")
 _example("TG703", "%\nN1 G21\nN2 X1\nN3 M30\n%\n", "%\nN1 G21\nN2 X10\nN3 M30\n%\n", "fanuc-mill")
 
 
-RULES: dict[str, Rule] = {
-    id: Rule(id, _SEVERITIES[severity], clause, title, *EXAMPLES.get(id, ("", "", "")),
-             family=family, name=name, reading=reading)
-    for name, id, severity, clause, title, family, reading in CORE_RULES
-}
-# The rules whose findings mean the input could not be read (characters, statements, indexes,
-# tape codes): `tapegate plot` says a file of only these is no program to draw.
-READING_RULES = frozenset(r.id for r in RULES.values() if r.reading)
+# RULES: each rule's record, by ID, in the catalogue's order; READING_RULES: the rules whose
+# findings mean the input could not be read (characters, statements, indexes, tape codes):
+# `tapegate plot` says a file of only these is no program to draw. Both are made when first
+# asked for (the module's __getattr__): their 84 records were 2.2M instructions of the 92M a
+# `check DIR -j 2` runs before its first thread, and a check asks for a rule's record only for
+# --select and --ignore, SARIF and a tape image (docs/benchmarks.md, "the serial start-up
+# without enum").
+if TYPE_CHECKING:
+    RULES: dict[str, Rule]
+    READING_RULES: frozenset[str]
+
+
+def _registry() -> dict[str, Rule]:
+    """RULES and READING_RULES, made and kept in the module (two threads asking at once both
+    make the same, and either is kept)."""
+    rules = {
+        id: Rule(id, _SEVERITIES[severity], clause, title, *EXAMPLES.get(id, ("", "", "")),
+                 family=family, name=name, reading=reading)
+        for name, id, severity, clause, title, family, reading in CORE_RULES
+    }
+    globals().update(RULES=rules,
+                     READING_RULES=frozenset(r.id for r in rules.values() if r.reading))
+    return rules
+
+
+def _known() -> dict[str, Rule]:
+    """RULES, made if not yet (for this module's own functions: a name of the module read
+    inside it does not go through its __getattr__)."""
+    rules: dict[str, Rule] | None = globals().get("RULES")
+    return rules if rules is not None else _registry()
+
+
+def __getattr__(name: str) -> object:
+    """RULES and READING_RULES, made at the first ask (PEP 562)."""
+    if name in ("RULES", "READING_RULES"):
+        _registry()
+        return globals()[name]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
 TAPE_PARITY = rule_id("TapeParity")
 TAPE_CHARACTER = rule_id("TapeCharacter")
 
@@ -626,11 +658,12 @@ SOURCES = {
              "code the reader does not have; FANUC alarm list). Haas, SINUMERIK, Okuma: no alarm "
              "number at hand. LinuxCNC: not used (no tape).",
 }
-assert set(SOURCES) <= set(RULES), set(SOURCES) - set(RULES)
+assert set(SOURCES) <= {r[1] for r in CORE_RULES}, set(SOURCES) - {r[1] for r in CORE_RULES}
 
 
 def markdown() -> str:
     """docs/rules.md, generated from the registry."""
+    registry = _known()
     lines = [
         "# Check rules",
         "",
@@ -646,7 +679,7 @@ def markdown() -> str:
         "| ID | severity | clause | rule |",
         "|---|---|---|---|",
     ]
-    for r in RULES.values():
+    for r in registry.values():
         lines.append(f"| {r.id} | {r.severity} | {r.clause} | {r.title} |")
     lines.append("")
     lines += ["## Where the errors come from", "",
@@ -657,11 +690,11 @@ def markdown() -> str:
               "rule; \"no source at hand\" marks a family for which none was found, where the "
               "rule stays an error only as ISO 6983-1's ([dialects.md](dialects.md) names the "
               "manuals and alarm lists).", ""]
-    for r in RULES.values():
+    for r in registry.values():
         if r.id in SOURCES:
             lines.append(f"- **{r.id}** ({r.title}): {SOURCES[r.id]}")
     lines.append("")
-    for r in RULES.values():
+    for r in registry.values():
         lines += [f"## {r.id}: {r.title}", "",
                   f"Severity {r.severity}; clause {r.clause}; example profile `{r.profile}`.", ""]
         if r.id in SOURCES:

@@ -12,7 +12,8 @@ from collections.abc import Callable, Iterator
 
 from formats.errors import TapegateError
 from formats.profile import load_profile
-from postproc.rules import RULES, SEVERITY_RANK
+from postproc import rules
+from postproc.rules import SEVERITY_RANK
 from tapegate.common import (
     echo,
     error_exit,
@@ -39,7 +40,7 @@ if TYPE_CHECKING:
 def _ids(values: tuple[str, ...]) -> list[str]:
     ids = [v.strip().upper() for item in values for v in item.split(",") if v.strip()]
     for rule in ids:
-        if not any(r.startswith(rule) for r in RULES):
+        if not any(r.startswith(rule) for r in rules.RULES):
             raise usage(f"no rule {rule}; see docs/rules.md")
     return ids
 

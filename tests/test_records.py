@@ -339,3 +339,19 @@ def _replace_at_once(threads: int) -> None:
         t.join(timeout=10)
     assert failures == []
     assert results == [Point(1, 3)] * threads
+
+
+def test_a_code_sets_each_argument_to_its_own_field():
+    """Code's __init__ sets its fields itself (without init_fields' loop): each argument,
+    given by position and by name, lands in the field of its name."""
+    names = Code.__record_fields__
+    values = [f"value of {name}" for name in names]
+    by_position = Code(*values)
+    by_name = Code(**dict(zip(names, values, strict=True)))
+    for name, value in zip(names, values, strict=True):
+        assert getattr(by_position, name) == value
+        assert getattr(by_name, name) == value
+    assert [f.name for f in dataclasses.fields(Code)] == list(names)
+    default = Code("G", 1, "f", "a")
+    assert (default.status, default.timing, default.words, default.meaning) == (
+        "assigned", "", (), "")
