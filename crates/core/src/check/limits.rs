@@ -873,6 +873,17 @@ impl Checker {
     /// the position as written), said once.
     fn mirror_doubt(&mut self, b: &BlockView<'_>, axes: u16, column: usize) {
         self.frames.doubt |= axes;
+        // (review 22, finding 1) an axis whose positions stood apart gets its span from
+        // before the mirror back, as at a plain cancel of it: its positions under the mirror
+        // are mirrored about a point not known here, and those after a plain cancel are
+        // compared with the ones before the mirror
+        let apart = self.frames.apart & axes;
+        if let Some(saved) = self.frames.saved.as_mut() {
+            for k in (0..AXES.len()).filter(|&k| apart & 1 << k != 0) {
+                self.spans[k] = saved[k].take();
+                self.frames.given_back |= 1 << k;
+            }
+        }
         self.frames.apart &= !axes;
         if let Some(map) = self.frames.map.as_mut().filter(|map| map.bit == 32) {
             for k in (0..3).filter(|&k| axes & 1 << k != 0) {
@@ -1956,6 +1967,43 @@ mod tests {
                 [(8, 5)],
                 "{on}"
             );
+        }
+    }
+
+    #[test]
+    fn an_axis_mirrored_apart_gets_its_span_from_before_the_mirror_back_at_a_doubt() {
+        // review 22, finding 1: a mirror not known exactly here (its point from a parameter,
+        // or a Haas's G101 after a G52) keeps its positions apart; a cancel word not known
+        // made X doubtful but kept X's span under the mirror, so after a plain cancel of X
+        // (Y still mirrored) X's plain positions were compared with the mirrored X450.: a
+        // false TG601 (X-560. spans 1010 from X450.) and a missed one (X710. is 1010 from the
+        // X-300. before the mirror). With the doubt line or without it, the same verdicts.
+        let mut haas = of_family(Family::MacroB);
+        haas.modal.centre_codes = true;
+        haas.haas = true;
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        for (config, shift, on, off) in [
+            (haas, "G52 X10. Y0\n", "G101 X0 Y0", "G100"),
+            (fanuc, "", "G51.1 X#5 Y#5", "G50.1"),
+        ] {
+            let body = |doubt: &str, last: &str| {
+                format!(
+                    "{shift}G00 X-300. Y0\n{on}\nG00 X450. Y100.\n{doubt}\n{off} X0\n\
+                     G00 {last}\n"
+                )
+            };
+            for doubt in [format!("{off} X#1"), "(none)".to_string()] {
+                let lines = usize::from(!shift.is_empty());
+                let found = at(
+                    config.clone(),
+                    &body(&doubt, "X-560."),
+                    Rule::TravelExceeded,
+                );
+                assert_eq!(found, [], "{on} {doubt}");
+                let found = at(config.clone(), &body(&doubt, "X710."), Rule::TravelExceeded);
+                assert_eq!(found, [(7 + lines, 5)], "{on} {doubt}");
+            }
         }
     }
 
