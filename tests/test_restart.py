@@ -1602,12 +1602,15 @@ def test_a_mirror_cancel_with_an_axis_word_not_known_leaves_the_mirror_not_known
     text = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y1.\n"
             "N5 G43 H1 Z1.\nN6 G01 Z-0.1 F10.\nN7 G101 X0 Y0\nN8 G100 X#1\nN9 X3. Y2.\n"
             "N20 X4.\nN30 G00 Z1.\nM30\n%\n")  # N20 is line 12
-    # Y is mirrored for certain: the G101 is named
-    assert refusal(text, 12, haas) == ("cannot restart here: G101 (mirror image) from line 9 "
-                                       "is in force and the preamble cannot restore it")
     doubt = ("cannot restart here: the mirror image of X, which {} may or may not have ended "
              "(an axis word whose value the restart does not know), from line 10 is in force "
              "and the preamble cannot restore it")
+    # review 22, 2: with #1 vacant the G100 names no axis and ends Y's mirror too: Y is not
+    # mirrored for certain either
+    assert refusal(text, 12, haas) == doubt.replace("of X", "of XY").format("G100 X#1")
+    # a plain word beside it names Y: its mirror ends, X's is not known
+    assert refusal(text.replace("G100 X#1", "G100 X#1 Y0"), 12, haas) == doubt.format(
+        "G100 X#1")
     x_only = text.replace("G101 X0 Y0", "G101 X0")
     assert refusal(x_only, 12, haas) == doubt.format("G100 X#1")
     assert refusal(x_only.replace("X#1", "X[0]"), 12, haas) == doubt.format("G100 X[0]")
@@ -1633,10 +1636,13 @@ def test_a_mirror_cancel_with_an_axis_word_not_known_leaves_the_mirror_not_known
                                        "restore it")
 
 
-def test_the_check_reads_a_cancel_s_axis_word_not_known_as_naming_its_axis_as_the_restart():
-    """Review 19, 1: the check reads `G100 X#1` as `G100 X0` (X named, Y still mirrored: a Y18.
-    under the Y mirror stands 33 from the Y15. before it, TG601), and the restart now names X
-    too (its mirror not known, Y's in force), where it had read the word as naming no axis."""
+def test_the_check_reads_a_cancel_whose_only_axis_word_is_not_known_as_the_restart():
+    """Review 19, 1: `G100 X#1` names X (its mirror not known). Review 22, 2: with #1 vacant
+    the block is a bare G100 (Haas "Address Substitution": a vacant variable drops its
+    address), which ends Y's mirror too, so Y is not mirrored for certain: the Y18. after it
+    (under the Y mirror 33 from the Y15. before it, TG601; without it 3) is not judged, and
+    the restart names X and Y, where both read Y as still mirrored. `G100 X0` keeps Y
+    mirrored (TG601), a bare `G100` ends it."""
     from postproc.check import Checker
     haas = load_profile("haas-mill")  # Y -16..16 in
     body = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03\nN4 G00 X1. Y15.\n"
@@ -1646,12 +1652,19 @@ def test_the_check_reads_a_cancel_s_axis_word_not_known_as_naming_its_axis_as_th
         found = Checker(haas).run_stream([body.format(cancel)], haas.dialect)
         return [f.message.split(",")[0] for f in found if f.rule == "TG601"]
 
-    for cancel in ("G100 X#1", "G100 X0"):
-        assert spans(cancel) == ["Y spans 33 (from -18 to 15)"]
+    assert spans("G100 X0") == ["Y spans 33 (from -18 to 15)"]
     assert spans("G100") == []
-    assert refusal(body.format("G100 X#1"), 10, haas) == (
+    assert spans("G100 X#1") == []
+    # beside a plain word the block names Y whatever #1 holds: Y's mirror ended, Y18. is 3
+    assert spans("G100 X#1 Y0") == []
+    assert spans("G100 X0 Y#1") == []
+    assert refusal(body.format("G100 X0"), 10, haas) == (
         "cannot restart here: G101 (mirror image) from line 7 is in force and the preamble "
         "cannot restore it")
+    assert refusal(body.format("G100 X#1"), 10, haas) == (
+        "cannot restart here: the mirror image of XY, which G100 X#1 may or may not have ended "
+        "(an axis word whose value the restart does not know), from line 8 is in force and "
+        "the preamble cannot restore it")
 
 
 def test_the_check_and_the_restart_both_call_a_mirror_not_known_after_a_cancel_word_not_known():
@@ -1679,3 +1692,41 @@ def test_the_check_and_the_restart_both_call_a_mirror_not_known_after_a_cancel_w
     for cancel in ("G100 X0", "G100"):
         assert found("G100 X#1", f"N11 {cancel}\n") == [("TG140", 9), ("TG601", 12)]
         assert plan(body.format("G100 X#1", f"N11 {cancel}\n"), 13, haas).preamble
+
+
+@pytest.mark.parametrize(("name", "on", "off", "units", "scale"),
+                         [("haas-mill", "G101", "G100", "G20", 1.0),
+                          ("fanuc-mill", "G51.1", "G50.1", "G21", 25.4)])
+def test_the_check_and_the_restart_both_call_every_mirror_not_known_after_a_lone_word_not_known(
+        name: str, on: str, off: str, units: str, scale: float) -> None:
+    """Review 22, 2: a cancel whose only axis word is not known (`G100 X#1`, `G50.1 X#1`) may be a
+    bare cancel (a vacant #1 drops its address: Haas "Address Substitution"; Mitsubishi M700V
+    user macro manual 13.5), which ends every mirror. Y was kept mirrored for certain: Y-14.
+    under the Y mirror is Y14., and Y-18. after the cancel was taken as Y18. (3 from Y15.),
+    where a bare cancel makes it 33 from there, past the travel. Now neither the check judges
+    Y nor the restart plans until a cancel names it plainly (and X) or names none."""
+    from postproc.check import Checker
+    profile = load_profile(name)  # Haas Y -16..16 in, FANUC -406..406 mm
+    y = [f"{v * scale:.1f}" for v in (15, -14, -18)]
+    body = (f"%\nO1000\nN1 {units} G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G43 H1 Z1.\n"
+            f"N4 G00 X1. Y{y[0]}\nN7 {on} X0 Y0\nN8 X3. Y{y[1]}\nN9 {{}}\n{{}}"
+            f"N10 Y{y[2]}\nN20 X4.\nN30 G00 Z1.\nM30\n%\n")
+
+    def found(cancel: str, then: str = "") -> list[tuple[str, int]]:
+        out = Checker(profile).run_stream([body.format(cancel, then)], profile.dialect)
+        return [(f.rule, f.line) for f in out if f.rule in ("TG601", "TG140")]
+
+    assert found(off) == [("TG601", 10)]
+    assert found(f"{off} X0") == []  # Y still mirrored: Y18., 3 from Y15.
+    assert found(f"{off} X#1") == [("TG140", 9)]
+    assert f"the mirror image of XY, which {off} X#1 may or may not have ended" in refusal(
+        body.format(f"{off} X#1", ""), 11, profile)
+    # Y named plainly: judged again (X not known still: the restart refuses)
+    assert found(f"{off} X#1", f"N11 {off} Y0\n") == [("TG140", 9), ("TG601", 11)]
+    assert "the mirror image of XY" in refusal(
+        body.format(f"{off} X#1", f"N11 {off} Y0\n"), 12, profile)
+    # a known state again: the check judges, the restart plans
+    for cancel in (f"{off} X0 Y0", off):
+        then = f"N11 {cancel}\n"
+        assert found(f"{off} X#1", then) == [("TG140", 9), ("TG601", 11)]
+        assert plan(body.format(f"{off} X#1", then), 13, profile).preamble

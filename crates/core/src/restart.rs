@@ -628,8 +628,10 @@ impl Walk {
     /// walk does not know (`param_axes`: X#1, X[0]) leaves a mirrored axis's mirror not known
     /// (review 19, finding 1: `G100 X#1` was read as a cancel naming no axis, so as ending every
     /// mirror): an unrestored mode under `keys.1` (the restart is refused) until a cancel names
-    /// the axis plainly or ends them all. `keys.0` is the mirror's own unrestored mode, kept
-    /// while an axis is mirrored for certain.
+    /// the axis plainly or ends them all; with no plain axis word beside it, every mirrored
+    /// axis (a vacant variable drops its address: the block may name none, ending them all).
+    /// `keys.0` is the mirror's own unrestored mode, kept while an axis is mirrored for
+    /// certain.
     fn mirror_off(
         &mut self,
         line: usize,
@@ -646,8 +648,12 @@ impl Walk {
             return (0, 0);
         }
         let left = mirrored & !named;
-        let fresh = left & unknown & !doubt;
-        let doubt = (doubt & !named) | (left & unknown);
+        // (review 22, finding 2) a block whose only axis words are not known here may be a
+        // bare cancel (a vacant variable drops its address on Custom Macro B), which ends
+        // every mirror: none is then mirrored for certain
+        let maybe = if named == 0 { left } else { left & unknown };
+        let fresh = maybe & !doubt;
+        let doubt = (doubt & !named) | maybe;
         if left & !doubt == 0 {
             self.drop_unrestored(keys.0);
         }
@@ -1881,15 +1887,27 @@ mod tests {
         let s = state();
         step_text(&mut walk, 1, b"G51.1 X0 Y0", &s);
         step_text(&mut walk, 2, b"G50.1 X#1", &s);
+        // (review 22, finding 2) a vacant #1 makes it a bare G50.1, which ends them all: Y is
+        // not mirrored for certain either
         let keys: Vec<&str> = walk.unrestored.iter().map(|(k, _, _)| k.as_str()).collect();
-        assert_eq!(keys, ["51.1", "51.1?"]); // Y for certain, X not known
+        assert_eq!(keys, ["51.1?"]);
+        assert!(walk.unrestored[0]
+            .2
+            .contains("of XY, which G50.1 X#1 may or may not"));
         step_text(&mut walk, 3, b"G50.1 Y0", &s);
         assert_eq!(walk.unrestored.len(), 1);
         assert_eq!(walk.unrestored[0].0, "51.1?");
+        step_text(&mut walk, 4, b"G50.1 X0", &s);
+        assert!(walk.unrestored.is_empty());
+        // a plain word beside it: Y's mirror ends (X#1 dropped or not), X not known
+        step_text(&mut walk, 5, b"G51.1 X0 Y0", &s);
+        step_text(&mut walk, 6, b"G50.1 X#1 Y0", &s);
+        let keys: Vec<&str> = walk.unrestored.iter().map(|(k, _, _)| k.as_str()).collect();
+        assert_eq!(keys, ["51.1?"]);
         assert!(walk.unrestored[0]
             .2
             .contains("of X, which G50.1 X#1 may or may not"));
-        step_text(&mut walk, 4, b"G50.1 X0", &s);
+        step_text(&mut walk, 7, b"G50.1", &s);
         assert!(walk.unrestored.is_empty());
         // an axis not mirrored is not made doubtful
         step_text(&mut walk, 5, b"G51.1 Y0", &s);

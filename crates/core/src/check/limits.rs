@@ -707,7 +707,8 @@ impl Checker {
     /// known (issue 32, review 19 finding 1: it was read as ending X's mirror, while the
     /// restart calls it not known): the axis stands where the check does not know, and its
     /// positions are not compared with the travel ([`Frames::doubt`]) until a cancel names it
-    /// plainly or names no axis at all.
+    /// plainly or names no axis at all. A block whose only axis words are such may be a cancel
+    /// naming none (a vacant variable drops its address), so it leaves every mirrored axis so.
     fn mirror_off(&mut self, b: &BlockView<'_>, before: &Before, column: usize) {
         let (named, unknown) = self.mirror_words(b);
         let all = named == 0 && unknown == 0;
@@ -723,7 +724,16 @@ impl Checker {
                         .filter(|&k| map.m[k][k] == -1.0)
                         .fold(0u16, |all, k| all | 1 << k)
                 });
-        let doubtful = (exact_mirrored | self.frames.apart) & unknown & !named;
+        // (review 22, finding 2) a block whose only axis words are not known here may be a
+        // bare cancel: on Custom Macro B a vacant variable drops its address (Haas "Address
+        // Substitution": `G00 X1.0 Z#1` with #1 undefined moves no Z; Mitsubishi M700V
+        // user macro manual, 13.5), and a cancel naming no axis ends every mirror
+        let maybe = if named == 0 && unknown != 0 {
+            !0
+        } else {
+            unknown
+        };
+        let doubtful = (exact_mirrored | self.frames.apart) & maybe & !named;
         if doubtful != 0 {
             self.mirror_doubt(b, doubtful, column);
         }
@@ -873,6 +883,17 @@ impl Checker {
     /// the position as written), said once.
     fn mirror_doubt(&mut self, b: &BlockView<'_>, axes: u16, column: usize) {
         self.frames.doubt |= axes;
+        // (review 22, finding 1) an axis whose positions stood apart gets its span from
+        // before the mirror back, as at a plain cancel of it: its positions under the mirror
+        // are mirrored about a point not known here, and those after a plain cancel are
+        // compared with the ones before the mirror
+        let apart = self.frames.apart & axes;
+        if let Some(saved) = self.frames.saved.as_mut() {
+            for k in (0..AXES.len()).filter(|&k| apart & 1 << k != 0) {
+                self.spans[k] = saved[k].take();
+                self.frames.given_back |= 1 << k;
+            }
+        }
         self.frames.apart &= !axes;
         if let Some(map) = self.frames.map.as_mut().filter(|map| map.bit == 32) {
             for k in (0..3).filter(|&k| axes & 1 << k != 0) {
@@ -1946,8 +1967,9 @@ mod tests {
             // another plain word leaves the doubt: Y's cancel says nothing of X
             let other = body("X#1", "Y0");
             assert_eq!(at(config.clone(), &other, Rule::TravelExceeded), [], "{on}");
-            // Y stays mirrored for certain beside the doubtful X: Y-450. is Y450., 450
-            // from Y0 (the test travel is 800 wide), then Y-450. unmirrored spans 900
+            // Y beside the doubtful X: a vacant #1 makes the block a bare cancel (review 22,
+            // finding 2), so Y is doubtful too: Y-450. not judged; after a plain cancel of Y,
+            // Y-450. spans 850 from the Y400. (Y-400. mirrored) of line 4
             let y = format!(
                 "G00 X0 Y0\n{on} X0 Y0\nG00 Y-400.\n{off} X#1\nG00 Y-450.\n{off} Y0\nG00 Y-450.\n"
             );
@@ -1956,6 +1978,101 @@ mod tests {
                 [(8, 5)],
                 "{on}"
             );
+        }
+    }
+
+    #[test]
+    fn a_mirror_cancel_whose_only_axis_words_are_not_known_leaves_every_mirror_not_known() {
+        // review 22, finding 2: on Custom Macro B a vacant variable drops its address (Haas
+        // "Address Substitution"; Mitsubishi M700V user macro manual 13.5), so `G50.1 X#1`
+        // may be a bare `G50.1`, which ends every mirror. Y was kept mirrored for certain:
+        // Y-420. taken as Y420., 20 from the Y400. before it, where a bare cancel makes it
+        // 820 from there (the test travel is 800 wide): a possible over-travel passed
+        let mut haas = of_family(Family::MacroB);
+        haas.modal.centre_codes = true;
+        haas.haas = true;
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        for (config, on, off) in [(haas, "G101", "G100"), (fanuc, "G51.1", "G50.1")] {
+            let body = |cancel: &str, then: &str| {
+                format!("G00 X0 Y400.\n{on} X0 Y0\nG00 X10. Y-300.\n{cancel}\n{then}G00 Y-420.\n")
+            };
+            // a bare cancel: Y-420. spans 820 from Y400.
+            let bare = body(off, "");
+            assert_eq!(
+                at(config.clone(), &bare, Rule::TravelExceeded),
+                [(6, 5)],
+                "{on}"
+            );
+            // the word not known: Y not judged (it may be Y420. or Y-420.), said at the cancel
+            let vacant = body(&format!("{off} X#1"), "");
+            assert_eq!(
+                at(config.clone(), &vacant, Rule::TravelExceeded),
+                [],
+                "{on}"
+            );
+            let notes = findings(config.clone(), &program(&vacant), Rule::NotFollowed);
+            assert!(
+                notes.iter().any(|n| n.line == 5
+                    && n.message.contains("the positions of X Y under it")
+                    && n.message.contains("may or may not have ended")),
+                "{notes:?}"
+            );
+            // a plain cancel of Y after it: judged again
+            let known = body(&format!("{off} X#1"), &format!("{off} Y0\n"));
+            assert_eq!(
+                at(config.clone(), &known, Rule::TravelExceeded),
+                [(7, 5)],
+                "{on}"
+            );
+            // a plain word beside it names Y: dropping X#1 leaves `{off} Y0`, which ends Y's
+            // mirror alone; X is doubtful, Y judged (820)
+            let beside = body(&format!("{off} X#1 Y0"), "");
+            assert_eq!(
+                at(config.clone(), &beside, Rule::TravelExceeded),
+                [(6, 5)],
+                "{on}"
+            );
+            // `{off} X0 Y#1`: X ended, Y doubtful, not judged
+            let other = body(&format!("{off} X0 Y#1"), "");
+            assert_eq!(at(config.clone(), &other, Rule::TravelExceeded), [], "{on}");
+        }
+    }
+
+    #[test]
+    fn an_axis_mirrored_apart_gets_its_span_from_before_the_mirror_back_at_a_doubt() {
+        // review 22, finding 1: a mirror not known exactly here (its point from a parameter,
+        // or a Haas's G101 after a G52) keeps its positions apart; a cancel word not known
+        // made X doubtful but kept X's span under the mirror, so after a plain cancel of X
+        // (Y still mirrored) X's plain positions were compared with the mirrored X450.: a
+        // false TG601 (X-560. spans 1010 from X450.) and a missed one (X710. is 1010 from the
+        // X-300. before the mirror). With the doubt line or without it, the same verdicts.
+        let mut haas = of_family(Family::MacroB);
+        haas.modal.centre_codes = true;
+        haas.haas = true;
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        for (config, shift, on, off) in [
+            (haas, "G52 X10. Y0\n", "G101 X0 Y0", "G100"),
+            (fanuc, "", "G51.1 X#5 Y#5", "G50.1"),
+        ] {
+            let body = |doubt: &str, last: &str| {
+                format!(
+                    "{shift}G00 X-300. Y0\n{on}\nG00 X450. Y100.\n{doubt}\n{off} X0\n\
+                     G00 {last}\n"
+                )
+            };
+            for doubt in [format!("{off} X#1"), "(none)".to_string()] {
+                let lines = usize::from(!shift.is_empty());
+                let found = at(
+                    config.clone(),
+                    &body(&doubt, "X-560."),
+                    Rule::TravelExceeded,
+                );
+                assert_eq!(found, [], "{on} {doubt}");
+                let found = at(config.clone(), &body(&doubt, "X710."), Rule::TravelExceeded);
+                assert_eq!(found, [(7 + lines, 5)], "{on} {doubt}");
+            }
         }
     }
 
