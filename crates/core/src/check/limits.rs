@@ -1620,6 +1620,29 @@ mod tests {
     /// The travel table holds what the profile's list gives each letter (the first entry of
     /// a letter listed twice), and nothing for a letter it does not list or a byte that is no
     /// capital letter.
+    /// A FANUC with G code system A's centre codes (G51.1, G68 and the like take a centre)
+    fn fanuc_centres() -> Config {
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        fanuc
+    }
+
+    /// A Haas: centre codes, and its own mirror codes (G101/G100)
+    fn haas_centres() -> Config {
+        let mut haas = fanuc_centres();
+        haas.haas = true;
+        haas
+    }
+
+    /// The two mirror images with a cancel naming axes: a Haas's G101/G100, a FANUC's
+    /// G51.1/G50.1 (the control, its mirror code, its cancel)
+    fn mirror_controls() -> [(Config, &'static str, &'static str); 2] {
+        [
+            (haas_centres(), "G101", "G100"),
+            (fanuc_centres(), "G51.1", "G50.1"),
+        ]
+    }
+
     #[test]
     fn the_travel_table_finds_what_the_list_finds() {
         let dec = |text: &str| Dec::parse(text).unwrap();
@@ -1701,8 +1724,7 @@ mod tests {
         // G04 P1. G69: the rotation ends in the dwell's block as in a block of its own (review
         // 15, finding 1): Y-450. to Y450. spans 900, more than Y's 800; X450. after the
         // cancel is no Y position
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let fanuc = fanuc_centres();
         let missed = "G00 X0 Y-450.\nG68 X0 Y0 R90.\nG00 X0 Y0\nG04 P1. G69\nG00 X0 Y450.";
         assert_eq!(at(fanuc.clone(), missed, Rule::TravelExceeded), [(6, 8)]);
         let fits = "G00 X0 Y-300.\nG68 X0 Y0 R90.\nG00 X0 Y0\nG04 P1. G69\nG00 X450. Y0";
@@ -1711,8 +1733,7 @@ mod tests {
 
     #[test]
     fn the_spans_run_on_across_a_frame_s_cancel() {
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let fanuc = fanuc_centres();
         // under a mirror image the positions stand apart; at its cancel the span from before
         // it runs on: Y-450. and Y450. span 900, more than the 800 of Y's travel
         let mirror = "G00 Y-450.\nG51.1 Y0\nY400.\nG50.1 Y0\nY450.";
@@ -1734,8 +1755,7 @@ mod tests {
 
     #[test]
     fn at_a_rotation_s_cancel_the_tool_stands_where_the_frame_put_it() {
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let fanuc = fanuc_centres();
         // X450. under R90 about X0 Y0 is Y450. before it; after G69 an increment of Y100.
         // goes to Y550., 850 from Y-300., more than the 800 of Y's travel (not Y100.)
         let rotated = |step: &str| {
@@ -1770,8 +1790,7 @@ mod tests {
 
     #[test]
     fn a_mirror_about_a_written_point_is_taken_back_exactly() {
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let fanuc = fanuc_centres();
         // X-500. about X10. is X520.: 1020 from X-500., more than the 1000 of X's travel
         let mirror = |x: &str| format!("G00 X-500. Y0\nG51.1 X10.\nG00 X{x}\nG50.1 X0\nX0");
         assert_eq!(
@@ -1811,8 +1830,7 @@ mod tests {
     #[test]
     fn a_mirror_is_set_and_ended_axis_by_axis() {
         // review 15, finding 2: G50.1 X0 ends X's mirror alone, a second G51.1 adds its axis
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let fanuc = fanuc_centres();
         // Y450. mirrored about Y0 (G50.1 X0 leaves it) is Y-450.: 800.5 from Y350.5, more
         // than Y's 800; with both ended Y450. is 99.5 from it
         let one = |cancel: &str| {
@@ -1932,12 +1950,7 @@ mod tests {
         // mirror, while the restart calls it not known. X-400. under the mirror about X0 is
         // X400.; after the cancel X600. is X600. (spans 1100 from X-500., past the travel's
         // 1000) or, still mirrored, X-600. (spans 1000, fits): not judged until a known state
-        let mut haas = of_family(Family::MacroB);
-        haas.modal.centre_codes = true;
-        haas.haas = true;
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
-        for (config, on, off) in [(haas, "G101", "G100"), (fanuc, "G51.1", "G50.1")] {
+        for (config, on, off) in mirror_controls() {
             let body = |unknown: &str, known: &str| {
                 format!(
                     "G00 X-500. Y0\n{on} X0 Y0\nG00 X-400. Y100.\n{off} {unknown}\n\
@@ -1988,12 +2001,7 @@ mod tests {
         // may be a bare `G50.1`, which ends every mirror. Y was kept mirrored for certain:
         // Y-420. taken as Y420., 20 from the Y400. before it, where a bare cancel makes it
         // 820 from there (the test travel is 800 wide): a possible over-travel passed
-        let mut haas = of_family(Family::MacroB);
-        haas.modal.centre_codes = true;
-        haas.haas = true;
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
-        for (config, on, off) in [(haas, "G101", "G100"), (fanuc, "G51.1", "G50.1")] {
+        for (config, on, off) in mirror_controls() {
             let body = |cancel: &str, then: &str| {
                 format!("G00 X0 Y400.\n{on} X0 Y0\nG00 X10. Y-300.\n{cancel}\n{then}G00 Y-420.\n")
             };
@@ -2047,11 +2055,8 @@ mod tests {
         // (Y still mirrored) X's plain positions were compared with the mirrored X450.: a
         // false TG601 (X-560. spans 1010 from X450.) and a missed one (X710. is 1010 from the
         // X-300. before the mirror). With the doubt line or without it, the same verdicts.
-        let mut haas = of_family(Family::MacroB);
-        haas.modal.centre_codes = true;
-        haas.haas = true;
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let haas = haas_centres();
+        let fanuc = fanuc_centres();
         for (config, shift, on, off) in [
             (haas, "G52 X10. Y0\n", "G101 X0 Y0", "G100"),
             (fanuc, "", "G51.1 X#5 Y#5", "G50.1"),
@@ -2078,9 +2083,7 @@ mod tests {
 
     #[test]
     fn a_haas_scaling_leaves_a_canned_cycle_s_z_out_with_a_note() {
-        let mut haas = of_family(Family::MacroB);
-        haas.modal.centre_codes = true;
-        haas.haas = true;
+        let haas = haas_centres();
         // Z-180. scaled by 2 about Z0 is Z-360., 410 from Z50. (Z's travel 400): a plain
         // move is compared, a drilling cycle's Z is not (the manual leaves it open), said
         let body =
@@ -2103,8 +2106,7 @@ mod tests {
             notes[0].message
         );
         // a FANUC's scaling is left out whole (its factor's unit is a parameter)
-        haas.haas = false;
-        assert_eq!(at(haas, &cycle, Rule::TravelExceeded), []);
+        assert_eq!(at(fanuc_centres(), &cycle, Rule::TravelExceeded), []);
     }
 
     #[test]
@@ -2120,8 +2122,7 @@ mod tests {
     #[test]
     fn a_polar_angle_and_a_tilted_plane_s_origin_are_no_positions() {
         // a FANUC mill: G16 makes the plane's axis words a radius and an angle (meaning.rs)
-        let mut fanuc = of_family(Family::MacroB);
-        fanuc.modal.centre_codes = true;
+        let fanuc = fanuc_centres();
         // the span of Y is 900, more than the travel's 800
         let cartesian = "G00 X10. Y-450.\nX10. Y450.";
         assert_eq!(at(fanuc.clone(), cartesian, Rule::TravelExceeded), [(3, 6)]);
