@@ -1304,21 +1304,15 @@ mod tests {
         // tokens drawn from the bytes that matter (brackets, ATAN's letters, operators, names,
         // digits, '=' and '#'), 200,000 of them, up to 14 bytes, by a fixed xorshift
         let alphabet = b"[[]]ATNatn*/+-#<>=1.2XOR ";
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
         for _ in 0..200_000 {
             let len = (next() % 15) as usize;
             let mut token: Vec<u8> = (0..len)
                 .map(|_| alphabet[(next() % alphabet.len() as u64) as usize])
                 .collect();
-            if next() % 2 == 0 {
+            if next().is_multiple_of(2) {
                 token.splice(0..0, b"#1=".iter().copied());
-            } else if next() % 2 == 0 {
+            } else if next().is_multiple_of(2) {
                 token.splice(0..0, b"XATAN[".iter().copied());
             }
             assert_eq!(

@@ -3673,13 +3673,7 @@ impl Converter {
             if !w.token[0].eq_ignore_ascii_case(&b'G') {
                 continue;
             }
-            let tenths = std::str::from_utf8(&w.token[1..])
-                .ok()
-                .and_then(|t| Dec::parse(t.trim()))
-                .map(|v| v.to_f64() * 10.0)
-                .filter(|t| (t - t.round()).abs() < 1e-6)
-                .map(|t| t.round() as i64);
-            match tenths {
+            match g_tenths(w.token) {
                 Some(t) if crate::meaning::linuxcnc_motion_code(t) => given = given.or(Some(t)),
                 Some(t) => data |= crate::meaning::linuxcnc_takes_axes(t),
                 // a code written otherwise (`G#1`): the motion from here on is not known
@@ -3786,14 +3780,8 @@ impl Converter {
             .words
             .iter()
             .filter(|w| w.token[0].eq_ignore_ascii_case(&b'G'))
-            .filter_map(|w| {
-                let t = std::str::from_utf8(&w.token[1..]).ok()?;
-                let t = Dec::parse(t.trim())?.to_f64() * 10.0;
-                ((t - t.round()).abs() < 1e-6).then(|| t.round() as i64)
-            })
+            .filter_map(|w| g_tenths(w.token))
             .collect();
-        let has = |c: i64| tenths.contains(&c);
-        let lathe_cycle = |m: Option<i64>| matches!(m, Some(700 | 710 | 711 | 712 | 720..=722));
         let runs = tenths
             .iter()
             .copied()
@@ -3804,18 +3792,20 @@ impl Converter {
                 .iter()
                 .find(|w| w.token[0].eq_ignore_ascii_case(&letter) && !w.token.contains(&b'='))
         };
-        let (w, message, holds) = if let Some(w) = word(b'D')
-            .filter(|_| ![410, 411, 420, 421, 960].iter().any(|&c| has(c)) && !lathe_cycle(runs))
+        let (w, message, holds) = if let Some(w) =
+            word(b'D').filter(|_| !crate::meaning::linuxcnc_d_used(&tenths, runs))
         {
             (
                 w,
-                "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it",
+                crate::meaning::LINUXCNC_D_UNUSED,
                 "D as the cutter radius offset number, kept for a later G41/G42",
             )
-        } else if let Some(w) = word(b'H').filter(|_| !has(430) && !has(432) && runs != Some(760)) {
+        } else if let Some(w) =
+            word(b'H').filter(|_| !crate::meaning::linuxcnc_h_used(&tenths, runs))
+        {
             (
                 w,
-                "H word with no G43 or G76 to use it",
+                crate::meaning::LINUXCNC_H_UNUSED,
                 "H as an offset number of its own (a tool length one kept for a later G43, G49 \
                  H0's cancel, or beside G41/G42 the radius one a parameter may give it)",
             )
@@ -7096,6 +7086,17 @@ fn family_name(family: Family) -> &'static str {
 /// Whether a family's controls read `#` parameters (`#1=5.`, `X#1`): ISO 6983-1's 6.4.7,
 /// Custom Macro B, LinuxCNC; a SINUMERIK (R parameters), a HEIDENHAIN (Q) and an Okuma OSP (V
 /// variables) do not.
+/// A G word's code in tenths (`G41.1` 411, `G1` 10), from the token's number after its
+/// letter; None for a code written otherwise (`G#1`) or finer than tenths.
+fn g_tenths(token: &[u8]) -> Option<i64> {
+    std::str::from_utf8(&token[1..])
+        .ok()
+        .and_then(|t| Dec::parse(t.trim()))
+        .map(|v| v.to_f64() * 10.0)
+        .filter(|t| (t - t.round()).abs() < 1e-6)
+        .map(|t| t.round() as i64)
+}
+
 fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
 }

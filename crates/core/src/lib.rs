@@ -43,6 +43,8 @@ pub mod check;
 pub mod convert;
 pub mod decimal;
 pub mod dialect;
+#[cfg(test)]
+mod drawn;
 pub mod expr;
 pub mod geometry;
 pub mod hash;

@@ -398,6 +398,31 @@ pub fn linuxcnc_e_used(motion: Option<i64>, analog: bool) -> bool {
     analog || matches!(motion, Some(330 | 331 | 700 | 760))
 }
 
+/// rs274ngc's refusal of a D word no code of its block uses (interp_check.cc
+/// `check_other_codes`).
+pub const LINUXCNC_D_UNUSED: &str =
+    "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it";
+
+/// rs274ngc's refusal of an H word no code of its block uses (interp_check.cc
+/// `check_other_codes`).
+pub const LINUXCNC_H_UNUSED: &str = "H word with no G43 or G76 to use it";
+
+/// Whether rs274ngc lets a block have a D word: its codes (`codes`, in tenths) hold G41,
+/// G41.1, G42, G42.1 or G96 (cutter compensation's tool or diameter, G96's speed limit), or
+/// its motion (`motion`, in tenths) is a lathe cycle G70-G72 (its depth).
+pub fn linuxcnc_d_used(codes: &[i64], motion: Option<i64>) -> bool {
+    codes
+        .iter()
+        .any(|c| matches!(c, 410 | 411 | 420 | 421 | 960))
+        || matches!(motion, Some(700 | 710 | 711 | 712 | 720..=722))
+}
+
+/// Whether rs274ngc lets a block have an H word: its codes (in tenths) hold G43 or G43.2 (the
+/// tool length offset), or its motion is G76 (the spring passes).
+pub fn linuxcnc_h_used(codes: &[i64], motion: Option<i64>) -> bool {
+    codes.iter().any(|c| matches!(c, 430 | 432)) || motion == Some(760)
+}
+
 /// A FANUC lathe's polar coordinate interpolation (FANUC 0i-TF / 30i-TB lathe manuals, "Polar
 /// coordinate interpolation (G12.1, G13.1)", in system A also G112/G113): Some(true) for the
 /// code that turns it on, Some(false) for the one that turns it off, None for any other. While

@@ -1353,13 +1353,7 @@ mod tests {
     #[test]
     fn plain_words_are_read_in_one_pass_as_the_full_reading_reads_them() {
         const BYTES: &[u8] = b"XGNROoxnr#=+-.0123456789 \t[]()*/;:,IFEQ<>";
-        let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
         let families = Family::ALL;
         let mut dialects = Vec::new();
         for family in families {
@@ -1460,12 +1454,16 @@ mod tests {
         let mut line = Vec::new();
         for _ in 0..300_000 / dialects.len() {
             line.clear();
-            line.extend_from_slice(if next() % 4 == 0 { b"n[" } else { b"X[" });
+            line.extend_from_slice(if next().is_multiple_of(4) {
+                b"n["
+            } else {
+                b"X["
+            });
             let len = (next() % 12) as usize;
             for _ in 0..len {
                 line.extend_from_slice(EXPR[(next() % EXPR.len() as u64) as usize]);
             }
-            if next() % 2 == 0 {
+            if next().is_multiple_of(2) {
                 line.extend_from_slice(b"]Y1");
             }
             for dialect in &dialects {

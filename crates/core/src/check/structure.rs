@@ -1701,13 +1701,7 @@ mod tests {
     /// by a fixed xorshift, each wrapped in brackets or not.
     fn drawn_expressions(count: usize) -> Vec<Vec<u8>> {
         let alphabet = b"[]]#<<>>>/*+-.1 aAb_x";
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
         // pieces of a CAM program's expressions, and a few that end the walk's plain ones
         let pieces: [&[u8]; 20] = [
             b"#<ab>",
@@ -1734,7 +1728,7 @@ mod tests {
         (0..count)
             .map(|_| {
                 let len = (next() % 25) as usize;
-                let mut e: Vec<u8> = if next() % 2 == 0 {
+                let mut e: Vec<u8> = if next().is_multiple_of(2) {
                     (0..len)
                         .map(|_| alphabet[(next() % alphabet.len() as u64) as usize])
                         .collect()

@@ -455,17 +455,13 @@ fn linuxcnc_word_checks(
             ));
         }
     }
-    let compensation_code = codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421));
-    if words.has(b'D')
-        && !compensation_code
-        && !g(960)
-        && !runs_one_of(&[700, 710, 711, 712, 720, 721, 722])
-    {
+    if words.has(b'D') && !doubt && !crate::meaning::linuxcnc_d_used(codes, runs) {
         return Some((
-            "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it \
-             (rs274ngc): D is cutter compensation's tool or diameter, a lathe cycle's depth, \
-             G96's speed limit"
-                .into(),
+            format!(
+                "{} (rs274ngc): D is cutter compensation's tool or diameter, a lathe cycle's \
+                 depth, G96's speed limit",
+                crate::meaning::LINUXCNC_D_UNUSED
+            ),
             b'D',
         ));
     }
@@ -491,11 +487,13 @@ fn linuxcnc_word_checks(
             b'E',
         ));
     }
-    if words.has(b'H') && !g(430) && !g(432) && runs != Some(760) && !doubt {
+    if words.has(b'H') && !doubt && !crate::meaning::linuxcnc_h_used(codes, runs) {
         return Some((
-            "H word with no G43 or G76 to use it (rs274ngc): H is G43's or G43.2's tool length \
-             offset, in that block, or G76's spring passes"
-                .into(),
+            format!(
+                "{} (rs274ngc): H is G43's or G43.2's tool length offset, in that block, or \
+                 G76's spring passes",
+                crate::meaning::LINUXCNC_H_UNUSED
+            ),
             b'H',
         ));
     }
@@ -530,6 +528,7 @@ fn linuxcnc_word_checks(
     }
     // rs274 takes L-1 and Q-1 for no L and no Q (its value for a word not given)
     let given = |l: u8| words.has(l) && words.value(l) != Some(Dec::from_int(-1));
+    let compensation_code = codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421));
     if given(b'L')
         && !g(100)
         && !compensation_code
