@@ -619,12 +619,38 @@ def test_the_proof_tells_a_dwell_parameter_in_milliseconds_from_one_in_seconds(t
                       ConvertOptions(target=haas, source=source), stats, file="p.nc")
 
 
+# Two time words in one G04 (review 23, finding 2): LinuxCNC reads one P and refuses two; a
+# W beside a dwell's U is refused as any W is.
+@pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
+@pytest.mark.parametrize("block, column, word, why", [
+    ("G04 X1. U1.", 9, "U1.", "a second time word in the dwell's block (beside X1.)"),
+    ("G04 P1000 U1.", 11, "U1.", "a second time word in the dwell's block (beside P1000)"),
+    ("G04 X1. P500", 9, "P500", "a second time word in the dwell's block (beside X1.)"),
+    ("G04 X1. W1.", 9, "W1.", "the source lathe reads U and W as increments of X and Z"),
+])
+def test_a_lathe_dwell_with_two_time_words_or_a_w_is_refused_for_linuxcnc(source, block,
+                                                                          column, word, why):
+    with pytest.raises(ConversionError) as info:
+        convert(f"O1\nG21 G18\nG0 X10. Z0.\n{block}\nM30\n", source, "linuxcnc")
+    e = info.value
+    assert (e.line, e.column) == (4, column), e
+    assert e.message.startswith(f"{word}: {why}"), e
+
+
+def test_a_mill_dwell_with_two_time_words_is_refused_for_linuxcnc():
+    with pytest.raises(ConversionError) as info:
+        convert(FANUC + "G04 X1. P500\nM30\n", "fanuc-mill", "linuxcnc")
+    assert (info.value.line, info.value.column) == (3, 9), info.value
+    assert "Multiple p words on one line" in info.value.message
+
+
 @pytest.mark.parametrize("text, said", [
     # what the refused forms would do carried as written: 1500 s, and rs274's refusals
     ("G21\n#1=1500\nG4 P#1\nM2\n", "DWELL(1500.0000)"),
     ("G21\nG4 P[1500]\nM2\n", "DWELL(1500.0000)"),
     ("G21\n#1=1.5\nG4 U#1\nM2\n", "Bad character 'u' used"),
     ("G21\nG0 X0\n#1=1.5\nG4 X#1\nM2\n", "Dwell time missing with g4"),
+    ("G21\nG4 P1. P1.\nM2\n", "Multiple p words on one line"),
 ])
 def test_rs274_reads_the_refused_dwells_otherwise(tmp_path, text, said):
     from tests.conftest import rs274_output

@@ -2714,6 +2714,7 @@ impl Converter {
         if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
             if other {
                 self.lathe_uw_for_linuxcnc(b, &gs)?;
+                self.linuxcnc_dwell_words(b, &gs)?;
                 self.linuxcnc_d_h_words(b, &gs)?;
             }
             self.linuxcnc_e_word(b, &ms)?;
@@ -3735,13 +3736,18 @@ impl Converter {
     /// A FANUC, Haas or Okuma lathe's U and W (increments of X and Z, or a cycle's
     /// allowances) converted for LinuxCNC, whose U and W are axes of their own, moved to an
     /// absolute position under G90 (rs274 of a machine without them: "Bad character 'u'
-    /// used"): refused at the word. A dwell's U (seconds) is converted as a dwell.
+    /// used"): refused at the word. A dwell's U (seconds, a time word of the source's G04)
+    /// is converted as a dwell; a W beside it is refused as any W is.
     fn lathe_uw_for_linuxcnc(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
-        if !self.c.lathe || gs.contains(&4) {
+        if !self.c.lathe {
             return Ok(());
         }
+        let dwell = gs.contains(&4);
         let Some(w) = b.words.iter().find(|w| {
-            matches!(w.token[0].to_ascii_uppercase(), b'U' | b'W') && !w.token.contains(&b'=')
+            let letter = w.token[0].to_ascii_uppercase();
+            matches!(letter, b'U' | b'W')
+                && !w.token.contains(&b'=')
+                && !(dwell && self.c.src_modal.dwell.contains(&letter))
         }) else {
             return Ok(());
         };
@@ -3761,6 +3767,40 @@ impl Converter {
             ),
             clause: "meaning",
             column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A G04 of another family with two time words (a FANUC or Haas lathe's `G04 X1. U1.`,
+    /// `G04 P1000 U1.`, a mill's `G04 X1. P500`): LinuxCNC reads the time in one P, and two
+    /// are refused by rs274 ("Multiple p words on one line"); which one the source control
+    /// uses, or whether it alarms, the manuals tapegate has do not say. Refused at the
+    /// second time word.
+    fn linuxcnc_dwell_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !gs.contains(&4) {
+            return Ok(());
+        }
+        let mut times = b.words.iter().filter(|w| {
+            self.c
+                .src_modal
+                .dwell
+                .contains(&w.token[0].to_ascii_uppercase())
+                && !w.token.contains(&b'=')
+        });
+        let (Some(first), Some(second)) = (times.next(), times.next()) else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: a second time word in the dwell's block (beside {}); LinuxCNC reads a \
+                 dwell's time in one P word and refuses two (rs274: \"Multiple p words on one \
+                 line\"), and which of the two the source control dwells by, tapegate's manuals \
+                 do not say: write one time word",
+                text(second.token),
+                text(first.token)
+            ),
+            clause: "dwell",
+            column: crate::text::column(b.text, second.start),
             line: None,
         })
     }
