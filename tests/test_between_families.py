@@ -544,6 +544,19 @@ def test_a_lathe_s_incremental_u_w_is_refused_for_linuxcnc(source, block, column
     assert e.message.startswith(f"{word}: the source lathe reads U and W as increments of X and Z")
 
 
+@pytest.mark.parametrize("block, column, word", [("G1 U5. F0.2", 4, "U5."),
+                                                 ("G1 X12. W-1. F0.2", 9, "W-1.")])
+def test_an_iso_lathe_s_u_w_is_refused_for_linuxcnc_as_axes_of_their_own(block, column, word):
+    # ISO 6983-1, Annex A: U and W are secondary dimensions parallel to X and Z, not
+    # increments (review 23: the refusal said increments)
+    e = refused(f"%\nN1 G21 G90 G18\nN2 G00 X20. Z2.\nN3 {block}\nN4 M30\n", "iso-lathe",
+                "linuxcnc")
+    assert (e.line, e.column) == (4, column + 3), e
+    assert e.message.startswith(f"{word}: the source (ISO 6983-1, Annex A) reads U and W as "
+                                "secondary axes of their own, parallel to X and Z"), e
+    assert "increments" not in e.message
+
+
 def test_a_lathe_s_dwell_u_still_converts_for_linuxcnc():
     out = convert("O1\nG21 G18\nG0 X10. Z0.\nG4 U1.5\nM30\n", "fanuc-lathe", "linuxcnc")
     assert "G4 P1.5" in out and "U" not in out.split("O1", 1)[1]

@@ -3734,7 +3734,8 @@ impl Converter {
     }
 
     /// A FANUC, Haas or Okuma lathe's U and W (increments of X and Z, or a cycle's
-    /// allowances) converted for LinuxCNC, whose U and W are axes of their own, moved to an
+    /// allowances; an ISO 6983-1 lathe's secondary axes parallel to X and Z) converted for
+    /// LinuxCNC, whose U and W are axes of their own, moved to an
     /// absolute position under G90 (rs274 of a machine without them: "Bad character 'u'
     /// used"): refused at the word. A dwell's U (seconds, a time word of the source's G04)
     /// is converted as a dwell; a W beside it is refused as any W is.
@@ -3756,15 +3757,30 @@ impl Converter {
         } else {
             "Z"
         };
-        Err(ConvertError {
-            message: format!(
+        let lower = (w.token[0].to_ascii_lowercase()) as char;
+        let message = if self.c.family == Family::Iso {
+            // ISO 6983-1, Annex A: U, W "secondary dimension parallel to X, Z" -- axes of
+            // their own, not increments (review 23: the message said increments)
+            format!(
+                "{}: the source (ISO 6983-1, Annex A) reads U and W as secondary axes of their \
+                 own, parallel to X and Z (a second slide); LinuxCNC reads U and W only on a \
+                 machine configured with those axes (rs274 of a machine without them: \"Bad \
+                 character '{lower}' used\"), and whether the target machine has them as the \
+                 same slides the profiles do not say: tapegate does not carry them; write the \
+                 move without U and W",
+                text(w.token)
+            )
+        } else {
+            format!(
                 "{}: the source lathe reads U and W as increments of X and Z (or a cycle's \
                  allowances); LinuxCNC reads them as axes of their own, moved to an absolute \
-                 position (rs274 of a machine without them: \"Bad character '{}' used\"); \
+                 position (rs274 of a machine without them: \"Bad character '{lower}' used\"); \
                  tapegate does not rewrite U W as G91 {on}: write the move in absolute X Z",
-                text(w.token),
-                (w.token[0].to_ascii_lowercase()) as char
-            ),
+                text(w.token)
+            )
+        };
+        Err(ConvertError {
+            message,
             clause: "meaning",
             column: crate::text::column(b.text, w.start),
             line: None,
