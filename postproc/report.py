@@ -209,14 +209,18 @@ def artifact_uri(name: str) -> str:
     relative reference with ``/`` between its segments. Every byte a path may hold and a URI
     gives a meaning to -- a blank, ``#``, ``%``, ``?``, a ``:`` that would read as a scheme, a
     byte beyond ASCII (UTF-8) -- is percent-encoded (review 21, finding 4: ``part #2 100%.nc``
-    was written as it stands, a path ``part `` and a fragment)."""
+    was written as it stands, a path ``part `` and a fragment). A name that is not UTF-8 (a
+    byte ``\\xff`` Python holds as the surrogate ``\\udcff``) is quoted by the bytes the file
+    system holds (``os.fsencode``), as ``Path.as_uri`` quotes an absolute one: ``p%FF.ngc``
+    (review 23, finding 3: a traceback)."""
+    import os
     from pathlib import Path
     from urllib.parse import quote
 
     path = Path(name)
     if path.is_absolute():
         return path.as_uri()
-    return quote(path.as_posix(), safe="/")
+    return quote(os.fsencode(path.as_posix()), safe="/")
 
 
 class SarifReport:

@@ -544,9 +544,130 @@ def test_a_lathe_s_incremental_u_w_is_refused_for_linuxcnc(source, block, column
     assert e.message.startswith(f"{word}: the source lathe reads U and W as increments of X and Z")
 
 
+@pytest.mark.parametrize("block, column, word", [("G1 U5. F0.2", 4, "U5."),
+                                                 ("G1 X12. W-1. F0.2", 9, "W-1.")])
+def test_an_iso_lathe_s_u_w_is_refused_for_linuxcnc_as_axes_of_their_own(block, column, word):
+    # ISO 6983-1, Annex A: U and W are secondary dimensions parallel to X and Z, not
+    # increments (review 23: the refusal said increments)
+    e = refused(f"%\nN1 G21 G90 G18\nN2 G00 X20. Z2.\nN3 {block}\nN4 M30\n", "iso-lathe",
+                "linuxcnc")
+    assert (e.line, e.column) == (4, column + 3), e
+    assert e.message.startswith(f"{word}: the source (ISO 6983-1, Annex A) reads U and W as "
+                                "secondary axes of their own, parallel to X and Z"), e
+    assert "increments" not in e.message
+
+
 def test_a_lathe_s_dwell_u_still_converts_for_linuxcnc():
     out = convert("O1\nG21 G18\nG0 X10. Z0.\nG4 U1.5\nM30\n", "fanuc-lathe", "linuxcnc")
     assert "G4 P1.5" in out and "U" not in out.split("O1", 1)[1]
+
+
+# A dwell's time by a parameter or an expression between controls that read the time in
+# other units (a FANUC or Haas G04 P and a cycle's P: milliseconds; LinuxCNC's P: seconds):
+# carried as written, 1500 ms would be 1500 s (review 23, finding 1). Refused at the word.
+@pytest.mark.parametrize("source, target, text, line, column, word", [
+    ("fanuc-mill", "linuxcnc", FANUC + "#1=1500\nG04 P#1\nM30\n", 4, 5, "P#1"),
+    ("haas-mill", "linuxcnc", FANUC + "#1=1500\nG04 P#1\nM30\n", 4, 5, "P#1"),
+    ("fanuc-mill", "linuxcnc", FANUC + "G04 P[1500]\nM30\n", 3, 5, "P[1500]"),
+    ("fanuc-mill", "linuxcnc",
+     FANUC + "#1=500\nG0 X0 Y0 Z5.\nG98 G82 X1. Y1. Z-1. R1. P#1 F100.\nG80\nM30\n", 5, 26,
+     "P#1"),
+    ("fanuc-lathe", "linuxcnc", "O1\nG21 G18\n#1=1500\nG04 P#1\nM30\n", 4, 5, "P#1"),
+    # a lathe's seconds in X or U (review 23, finding 2: U#1 reached rs274 as a U axis)
+    ("fanuc-lathe", "linuxcnc", "O1\nG21 G18\n#1=1.5\nG04 U#1\nM30\n", 4, 5, "U#1"),
+    ("fanuc-lathe", "linuxcnc", "O1\nG21 G18\nG04 U[1.5]\nM30\n", 3, 5, "U[1.5]"),
+    ("haas-lathe", "linuxcnc", "O1\nG21 G18\n#1=1.5\nG04 X#1\nM30\n", 4, 5, "X#1"),
+    # LinuxCNC's seconds for a FANUC's milliseconds
+    ("linuxcnc", "fanuc-mill", "G21 G90\n#1=2\ng4 p#1\nm2\n", 3, 4, "p#1"),
+    ("linuxcnc", "haas-mill", "G21 G90\ng4 p[2]\nm2\n", 2, 4, "p[2]"),
+    ("linuxcnc", "fanuc-mill",
+     "G21 G90\n#1=2\ng0 x0 y0 z5\ng82 x1 y1 z-1 r1 p#1 f100\ng80\nm2\n", 4, 18, "p#1"),
+])
+def test_a_dwell_time_by_a_parameter_is_refused_between_time_units(source, target, text, line,
+                                                                   column, word):
+    with pytest.raises(ConversionError) as info:
+        convert(text, source, target)
+    e = info.value
+    assert (e.line, e.column) == (line, column), e
+    assert e.message.startswith(f"{word}: a dwell's time given by a parameter or an "
+                                "expression, where the controls write the time differently"), e
+    # the same time as a plain number converts
+    plain = text.replace(word, "P1500" if target == "linuxcnc" else "p2", 1)
+    if word[0] in "UX":
+        plain = text.replace(word, f"{word[0]}1.5", 1)
+    convert(plain, source, target)
+
+
+@pytest.mark.parametrize("text", [
+    FANUC + "#1=1500\nG04 P#1\nM30\n",
+    "O1\nG21 G18\nG04 P[1500]\nM30\n",
+])
+def test_a_dwell_time_by_a_parameter_stays_as_written_within_a_family(text):
+    # FANUC to Haas: both read the time in the same unit, the word is carried
+    out = convert(text, "fanuc-mill", "haas-mill")
+    assert out == text
+
+
+def test_the_proof_tells_a_dwell_parameter_in_milliseconds_from_one_in_seconds(tmp_path):
+    """`--verify` reads a parameter's value in neither program, but a FANUC P#1 in G04 is
+    milliseconds and a LinuxCNC P#1 seconds: the same text is another time."""
+    from formats.convert import convert_file
+    from formats.verify import verify_conversion
+
+    source, target = load_profile("fanuc-mill"), load_profile("linuxcnc")
+    options = ConvertOptions(target=target, source=source)
+    plain = tmp_path / "plain.nc"
+    plain.write_text(FANUC + "#1=1500\nG04 P1500\nM30\n")
+    stats = convert_file(str(plain), str(tmp_path / "plain.ngc"), options, verify=True)
+    assert stats.verified
+    (tmp_path / "p.nc").write_text(FANUC + "#1=1500\nG04 P#1\nM30\n")
+    (tmp_path / "p.ngc").write_text(FANUC + "#1=1500\nG04 P#1\nM30\n")
+    with pytest.raises(ConversionError) as info:
+        verify_conversion(str(tmp_path / "p.nc"), str(tmp_path / "p.ngc"), source, options,
+                          stats, file="p.nc")
+    assert (info.value.code, info.value.line) == ("conversion-verify", 4)
+    # a Haas reads it as the FANUC does: the same text proves
+    haas = load_profile("haas-mill")
+    verify_conversion(str(tmp_path / "p.nc"), str(tmp_path / "p.nc"), source,
+                      ConvertOptions(target=haas, source=source), stats, file="p.nc")
+
+
+# Two time words in one G04 (review 23, finding 2): LinuxCNC reads one P and refuses two; a
+# W beside a dwell's U is refused as any W is.
+@pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
+@pytest.mark.parametrize("block, column, word, why", [
+    ("G04 X1. U1.", 9, "U1.", "a second time word in the dwell's block (beside X1.)"),
+    ("G04 P1000 U1.", 11, "U1.", "a second time word in the dwell's block (beside P1000)"),
+    ("G04 X1. P500", 9, "P500", "a second time word in the dwell's block (beside X1.)"),
+    ("G04 X1. W1.", 9, "W1.", "the source lathe reads U and W as increments of X and Z"),
+])
+def test_a_lathe_dwell_with_two_time_words_or_a_w_is_refused_for_linuxcnc(source, block,
+                                                                          column, word, why):
+    with pytest.raises(ConversionError) as info:
+        convert(f"O1\nG21 G18\nG0 X10. Z0.\n{block}\nM30\n", source, "linuxcnc")
+    e = info.value
+    assert (e.line, e.column) == (4, column), e
+    assert e.message.startswith(f"{word}: {why}"), e
+
+
+def test_a_mill_dwell_with_two_time_words_is_refused_for_linuxcnc():
+    with pytest.raises(ConversionError) as info:
+        convert(FANUC + "G04 X1. P500\nM30\n", "fanuc-mill", "linuxcnc")
+    assert (info.value.line, info.value.column) == (3, 9), info.value
+    assert "Multiple p words on one line" in info.value.message
+
+
+@pytest.mark.parametrize("text, said", [
+    # what the refused forms would do carried as written: 1500 s, and rs274's refusals
+    ("G21\n#1=1500\nG4 P#1\nM2\n", "DWELL(1500.0000)"),
+    ("G21\nG4 P[1500]\nM2\n", "DWELL(1500.0000)"),
+    ("G21\n#1=1.5\nG4 U#1\nM2\n", "Bad character 'u' used"),
+    ("G21\nG0 X0\n#1=1.5\nG4 X#1\nM2\n", "Dwell time missing with g4"),
+    ("G21\nG4 P1. P1.\nM2\n", "Multiple p words on one line"),
+])
+def test_rs274_reads_the_refused_dwells_otherwise(tmp_path, text, said):
+    from tests.conftest import rs274_output
+    assert said in rs274_output(tmp_path, text)
 
 
 @pytest.mark.parametrize("text", [

@@ -849,6 +849,28 @@ def test_g10_l20_and_the_systems_beyond_g59(profile, head, select, g10):
         assert ("TG403" in found) == measured, (system, g10, sorted(found))
 
 
+def test_sarif_quotes_a_file_name_that_is_not_utf8_by_its_bytes(tmp_path, monkeypatch):
+    # review 23, finding 3: a relative name holding the byte 0xFF (Python's surrogate \udcff)
+    # raised UnicodeEncodeError in the URI's quoting; the absolute one was p%FF.ngc already
+    import os
+    from urllib.parse import unquote_to_bytes
+
+    name = os.fsdecode(b"p\xff.ngc")
+    try:
+        (tmp_path / name).write_text(BAD)
+    except (OSError, UnicodeEncodeError):
+        pytest.skip("the file system takes no name that is not UTF-8")
+    monkeypatch.chdir(tmp_path)
+    for where, expected in [(".", "p%FF.ngc"), (str(tmp_path), (tmp_path / name).as_uri())]:
+        r = run("check", where, "-p", "iso-mill", "--format", "sarif")
+        assert r.exception is None or isinstance(r.exception, SystemExit), r.exception
+        results = json.loads(r.output)["runs"][0]["results"]
+        uris = {res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+                for res in results}
+        assert uris == {expected}, uris
+    assert unquote_to_bytes("p%FF.ngc") == os.fsencode(name)
+
+
 @pytest.mark.parametrize("name", ["part #2 100%.nc", "my part?.nc", "p\u00e9 a:b.nc", "plain.nc"])
 def test_sarif_uris_are_uri_references_that_give_the_file_names_back(tmp_path, monkeypatch,
                                                                      name):

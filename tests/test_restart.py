@@ -1721,10 +1721,14 @@ def test_the_check_and_the_restart_both_call_every_mirror_not_known_after_a_lone
     assert found(f"{off} X#1") == [("TG140", 9)]
     assert f"the mirror image of XY, which {off} X#1 may or may not have ended" in refusal(
         body.format(f"{off} X#1", ""), 11, profile)
-    # Y named plainly: judged again (X not known still: the restart refuses)
+    # Y named plainly: judged again (X not known still: the restart refuses, naming X alone:
+    # review 23, the refusal named XY still)
     assert found(f"{off} X#1", f"N11 {off} Y0\n") == [("TG140", 9), ("TG601", 11)]
-    assert "the mirror image of XY" in refusal(
-        body.format(f"{off} X#1", f"N11 {off} Y0\n"), 12, profile)
+    said = refusal(body.format(f"{off} X#1", f"N11 {off} Y0\n"), 12, profile)
+    assert f"the mirror image of X, which {off} X#1 may or may not have ended" in said, said
+    # X named plainly: Y alone is in doubt
+    said = refusal(body.format(f"{off} X#1", f"N11 {off} X0\n"), 12, profile)
+    assert f"the mirror image of Y, which {off} X#1 may or may not have ended" in said, said
     # a known state again: the check judges, the restart plans
     for cancel in (f"{off} X0 Y0", off):
         then = f"N11 {cancel}\n"

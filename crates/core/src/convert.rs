@@ -2714,6 +2714,7 @@ impl Converter {
         if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
             if other {
                 self.lathe_uw_for_linuxcnc(b, &gs)?;
+                self.linuxcnc_dwell_words(b, &gs)?;
                 self.linuxcnc_d_h_words(b, &gs)?;
             }
             self.linuxcnc_e_word(b, &ms)?;
@@ -3733,15 +3734,21 @@ impl Converter {
     }
 
     /// A FANUC, Haas or Okuma lathe's U and W (increments of X and Z, or a cycle's
-    /// allowances) converted for LinuxCNC, whose U and W are axes of their own, moved to an
+    /// allowances; an ISO 6983-1 lathe's secondary axes parallel to X and Z) converted for
+    /// LinuxCNC, whose U and W are axes of their own, moved to an
     /// absolute position under G90 (rs274 of a machine without them: "Bad character 'u'
-    /// used"): refused at the word. A dwell's U (seconds) is converted as a dwell.
+    /// used"): refused at the word. A dwell's U (seconds, a time word of the source's G04)
+    /// is converted as a dwell; a W beside it is refused as any W is.
     fn lathe_uw_for_linuxcnc(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
-        if !self.c.lathe || gs.contains(&4) {
+        if !self.c.lathe {
             return Ok(());
         }
+        let dwell = gs.contains(&4);
         let Some(w) = b.words.iter().find(|w| {
-            matches!(w.token[0].to_ascii_uppercase(), b'U' | b'W') && !w.token.contains(&b'=')
+            let letter = w.token[0].to_ascii_uppercase();
+            matches!(letter, b'U' | b'W')
+                && !w.token.contains(&b'=')
+                && !(dwell && self.c.src_modal.dwell.contains(&letter))
         }) else {
             return Ok(());
         };
@@ -3750,17 +3757,66 @@ impl Converter {
         } else {
             "Z"
         };
-        Err(ConvertError {
-            message: format!(
+        let lower = (w.token[0].to_ascii_lowercase()) as char;
+        let message = if self.c.family == Family::Iso {
+            // ISO 6983-1, Annex A: U, W "secondary dimension parallel to X, Z" -- axes of
+            // their own, not increments (review 23: the message said increments)
+            format!(
+                "{}: the source (ISO 6983-1, Annex A) reads U and W as secondary axes of their \
+                 own, parallel to X and Z (a second slide); LinuxCNC reads U and W only on a \
+                 machine configured with those axes (rs274 of a machine without them: \"Bad \
+                 character '{lower}' used\"), and whether the target machine has them as the \
+                 same slides the profiles do not say: tapegate does not carry them; write the \
+                 move without U and W",
+                text(w.token)
+            )
+        } else {
+            format!(
                 "{}: the source lathe reads U and W as increments of X and Z (or a cycle's \
                  allowances); LinuxCNC reads them as axes of their own, moved to an absolute \
-                 position (rs274 of a machine without them: \"Bad character '{}' used\"); \
+                 position (rs274 of a machine without them: \"Bad character '{lower}' used\"); \
                  tapegate does not rewrite U W as G91 {on}: write the move in absolute X Z",
-                text(w.token),
-                (w.token[0].to_ascii_lowercase()) as char
-            ),
+                text(w.token)
+            )
+        };
+        Err(ConvertError {
+            message,
             clause: "meaning",
             column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A G04 of another family with two time words (a FANUC or Haas lathe's `G04 X1. U1.`,
+    /// `G04 P1000 U1.`, a mill's `G04 X1. P500`): LinuxCNC reads the time in one P, and two
+    /// are refused by rs274 ("Multiple p words on one line"); which one the source control
+    /// uses, or whether it alarms, the manuals tapegate has do not say. Refused at the
+    /// second time word.
+    fn linuxcnc_dwell_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !gs.contains(&4) {
+            return Ok(());
+        }
+        let mut times = b.words.iter().filter(|w| {
+            self.c
+                .src_modal
+                .dwell
+                .contains(&w.token[0].to_ascii_uppercase())
+                && !w.token.contains(&b'=')
+        });
+        let (Some(first), Some(second)) = (times.next(), times.next()) else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: a second time word in the dwell's block (beside {}); LinuxCNC reads a \
+                 dwell's time in one P word and refuses two (rs274: \"Multiple p words on one \
+                 line\"), and which of the two the source control dwells by, tapegate's manuals \
+                 do not say: write one time word",
+                text(second.token),
+                text(first.token)
+            ),
+            clause: "dwell",
+            column: crate::text::column(b.text, second.start),
             line: None,
         })
     }
@@ -5194,6 +5250,7 @@ impl Converter {
             let modifier = (self.c.family == Family::Sinumerik && k == Kind::Axis)
                 .then(|| expr::dimension_modifier(token))
                 .flatten();
+            self.dwell_expression(token, dwell_word)?;
             self.rounded = false;
             self.left_word = left;
             let out = self.expression(b, i, factor);
@@ -5544,14 +5601,7 @@ impl Converter {
     ) -> Result<Option<Vec<u8>>, ConvertError> {
         let (from, to) = (self.c.family, self.c.target_family);
         let letter = token[0].to_ascii_uppercase();
-        let lathe = self.c.lathe;
-        let cycle_dwell = letter == b'P'
-            && (self
-                .modal
-                .state
-                .cycle
-                .is_some_and(|g| dwell_cycle(lathe, g))
-                || self.cycle_code.is_some_and(|g| dwell_cycle(lathe, g)));
+        let cycle_dwell = self.cycle_dwell(letter);
         let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
         // seconds (a point) as whole milliseconds: P1.5 is P1500
         let milliseconds = || {
@@ -5586,7 +5636,7 @@ impl Converter {
                 )),
             };
         }
-        if from == to || !(dwell_word || cycle_dwell) {
+        if !dwell_differs(from, to) || !(dwell_word || cycle_dwell) {
             return Ok(None);
         }
         let refuse = |why: &str| {
@@ -5634,13 +5684,53 @@ impl Converter {
                     ),
                 }
             }
-            (Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik, _)
-            | (_, Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik) => refuse(
+            _ => refuse(
                 "tapegate does not translate it between these controls; write the dwell in \
                  the target's form",
             ),
-            _ => Ok(None),
         }
+    }
+
+    /// A drilling cycle's P in force or named in the block (`G82 ... P500`): the dwell at
+    /// the bottom, a time as G04's is.
+    fn cycle_dwell(&self, letter: u8) -> bool {
+        let lathe = self.c.lathe;
+        letter == b'P'
+            && (self
+                .modal
+                .state
+                .cycle
+                .is_some_and(|g| dwell_cycle(lathe, g))
+                || self.cycle_code.is_some_and(|g| dwell_cycle(lathe, g)))
+    }
+
+    /// A dwell's time (G04's, a drilling cycle's P) written as a parameter or an expression
+    /// (`G04 P#1`, `P[1500]`, a lathe's `U#1`), between controls that write the time
+    /// differently ([`Converter::dwell_time`]: a FANUC or Haas P without a point is
+    /// milliseconds, LinuxCNC's P seconds): the value the control computes is read in the
+    /// source's unit, and carried as written it would be read in the target's (1500 ms as
+    /// 1500 s). The manuals tapegate has do not say how a FANUC or Haas control rounds a
+    /// computed dwell (to whole milliseconds or not), so it is not rewritten as an expression
+    /// (`P[#1/1000]`): refused at the word.
+    fn dwell_expression(&self, token: &[u8], dwell_word: bool) -> Result<(), ConvertError> {
+        let (from, to) = (self.c.family, self.c.target_family);
+        let letter = token[0].to_ascii_uppercase();
+        if !dwell_differs(from, to) || !(dwell_word || self.cycle_dwell(letter)) {
+            return Ok(());
+        }
+        Err(error(
+            format!(
+                "{}: a dwell's time given by a parameter or an expression, where the controls \
+                 write the time differently ({} to {}: a FANUC or Haas G04 P and a cycle's P \
+                 are milliseconds, a FANUC or Haas X or U seconds, LinuxCNC's P seconds); the \
+                 value would be read in another unit on the target, and tapegate does not \
+                 rewrite the expression: write the time as a plain number",
+                text(token),
+                family_name(from),
+                family_name(to)
+            ),
+            "dwell",
+        ))
     }
 
     /// A length the cycle writes as a count of least input increments, with no decimal point
@@ -6707,6 +6797,15 @@ pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
 /// manual), a lathe's G83-G89 (FANUC 0i-TF "Canned cycle for drilling") and the Haas lathe's
 /// radial live-tool cycles G241-G249 (their P the dwell, haas-lathe.toml). A lathe's G73, G74
 /// and G76 are multiple repetitive cycles, whose P is no time.
+/// Whether two control families write a dwell's time differently (units, or words), so that
+/// a conversion between them converts it or refuses it ([`Converter::dwell_time`]): between
+/// FANUC/Haas Macro B and LinuxCNC, and between any two families where one is LinuxCNC,
+/// HEIDENHAIN or SINUMERIK (an ISO or Okuma G04 X to a Macro B control is the same word).
+fn dwell_differs(from: Family, to: Family) -> bool {
+    const OWN: [Family; 3] = [Family::LinuxCnc, Family::Heidenhain, Family::Sinumerik];
+    from != to && (OWN.contains(&from) || OWN.contains(&to))
+}
+
 pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
     match g {
         82..=89 => true,

@@ -532,7 +532,10 @@ impl Comparer {
             difference,
         };
         if wa.parameter && wb.parameter && o.parameters_address {
-            return None;
+            // (a dwell's time by a parameter, in milliseconds on one side and seconds on the
+            // other: the same text is another time)
+            return (wa.milliseconds != wb.milliseconds)
+                .then(|| change(ChangeKind::Changed, None, None, None));
         }
         match (wa.statement, wb.statement) {
             (InStatement::Text { values, arguments }, InStatement::Text { .. }) => {

@@ -116,6 +116,10 @@ pub struct ReadWord {
     pub moves: Option<u8>,
     /// A parameter assignment or an expression (6.4.7).
     pub parameter: bool,
+    /// A dwell's time given by a parameter or an expression in milliseconds (a FANUC or Haas
+    /// G04 P, a drilling cycle's P): its value is not read, but it is not the same time as
+    /// the same text in seconds (a LinuxCNC P).
+    pub milliseconds: bool,
     /// A P, Q or R of no stated role: the factor were it a length.
     pub as_length: Option<Factor>,
     /// Why its number could not be read (the word is then compared as written).
@@ -161,6 +165,7 @@ impl ReadWord {
             incremental: false,
             moves: None,
             parameter: false,
+            milliseconds: false,
             as_length: None,
             error: None,
             per_revolution: false,
@@ -1072,6 +1077,15 @@ impl Reader {
         })
     }
 
+    /// A FANUC or Haas dwell's P (G04's, a drilling cycle's) written without a point, or given
+    /// by a parameter or an expression: a time in milliseconds.
+    fn milliseconds(&self, letter: u8, flags: BlockFlags, number: &[u8]) -> bool {
+        letter == b'P'
+            && self.settings.family == Family::MacroB
+            && !number.contains(&b'.')
+            && ((flags.dwell && self.settings.modal.dwell.contains(&letter)) || self.dwell_cycle)
+    }
+
     fn word(
         &self,
         w: &Word<'_>,
@@ -1095,6 +1109,7 @@ impl Reader {
         {
             let mut word = ReadWord::text(&key, w.token);
             word.parameter = true;
+            word.milliseconds = self.milliseconds(letter, flags, w.number);
             return word;
         }
         let role = letter
@@ -1231,11 +1246,7 @@ impl Reader {
         };
         // a FANUC or Haas dwell's P without a point (G04 P1000, G82 ... P500) is milliseconds:
         // read in seconds, as a LinuxCNC P and a Haas P with a point are
-        if letter == b'P'
-            && self.settings.family == Family::MacroB
-            && !w.number.contains(&b'.')
-            && (dwell || self.dwell_cycle)
-        {
+        if self.milliseconds(letter, flags, w.number) {
             let ms = |d: Dec| Dec {
                 mantissa: d.mantissa,
                 scale: d.scale + 3,
@@ -1302,6 +1313,7 @@ impl Reader {
             incremental,
             moves,
             parameter: false,
+            milliseconds: false,
             as_length,
             error: None,
             per_revolution: kind == Kind::Feed && self.feed_mode == 95,

@@ -653,23 +653,38 @@ impl Walk {
         // every mirror: none is then mirrored for certain
         let maybe = if named == 0 { left } else { left & unknown };
         let fresh = maybe & !doubt;
+        let was = doubt;
         let doubt = (doubt & !named) | maybe;
         if left & !doubt == 0 {
             self.drop_unrestored(keys.0);
         }
+        let axes = |bits: u16| -> String {
+            (0..AXES.len())
+                .filter(|&i| bits & bit(i) != 0)
+                .map(|i| char::from(AXES[i]))
+                .collect()
+        };
         if doubt == 0 {
             self.drop_unrestored(keys.1);
         } else if fresh != 0 {
-            let axes: String = (0..AXES.len())
-                .filter(|&i| doubt & bit(i) != 0)
-                .map(|i| char::from(AXES[i]))
-                .collect();
             let what = format!(
-                "the mirror image of {axes}, which {code} {} may or may not have ended (an \
+                "the mirror image of {}, which {code} {} may or may not have ended (an \
                  axis word whose value the restart does not know),",
+                axes(doubt),
                 String::from_utf8_lossy(token.unwrap_or_default())
             );
             self.set_unrestored(keys.1, line, what);
+        } else if doubt != was {
+            // (review 23) a plain cancel of some of the doubtful axes: the refusal names
+            // those still in doubt, of the cancel that made the doubt
+            let (old, new) = (axes(was), axes(doubt));
+            if let Some(entry) = self.unrestored.iter_mut().find(|(k, _, _)| k == keys.1) {
+                entry.2 = entry.2.replacen(
+                    &format!("the mirror image of {old},"),
+                    &format!("the mirror image of {new},"),
+                    1,
+                );
+            }
         }
         (left, doubt)
     }

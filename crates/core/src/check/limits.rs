@@ -605,6 +605,14 @@ impl Checker {
                     }
                     let named = Self::mirror_axes(b);
                     self.frames.apart |= if named == 0 { XYZ } else { named };
+                    // (review 23) a FANUC G51.1 naming plainly an axis a doubtful cancel left
+                    // in doubt: mirrored again (the cancel ended its mirror) or mirrored a
+                    // second time (it did not), its positions from here are the ones written
+                    // mirrored about one point whichever, each the same way (slope -1 or +1):
+                    // a span of their own, as `again`'s, whose size both readings give alike
+                    if !self.frames.haas_mirror {
+                        self.frames.doubt &= !(self.mirror_words(b).0 & self.frames.apart);
+                    }
                 }
                 match self.frames.saved {
                     None => self.frames.saved = Some(std::mem::take(&mut self.spans)),
@@ -918,7 +926,8 @@ impl Checker {
             &token,
             axes,
             (b.line, column),
-            "until a cancel names the axis with a plain value or names none",
+            "until a cancel names the axis with a plain value or names none, or a mirror \
+             names it plainly again",
             "an axis word whose value the checker does not know may or may not have ended the \
              axis's mirror image",
         );
@@ -2079,6 +2088,42 @@ mod tests {
                 assert_eq!(found, [(7 + lines, 5)], "{on} {doubt}");
             }
         }
+    }
+
+    #[test]
+    fn a_fanuc_mirror_named_again_after_a_doubtful_cancel_is_judged_as_a_span_of_its_own() {
+        // review 23: after `G50.1 X#1` (XY in doubt) a new `G51.1 X0 Y0` left Y unjudged,
+        // where both readings of the doubtful line flag it (the line removed: a second
+        // mirror, its positions apart; a bare G50.1: a fresh exact mirror): Y-420. and Y420.
+        // under one mirror stand 840 apart whatever its point (travel Y -400..400)
+        let body = |doubt: &str, on: &str, y: &str| {
+            format!(
+                "G00 X0 Y400.\nG51.1 X0 Y0\nG00 X10. Y-300.\n{doubt}\n{on}\nG00 Y-{y}\n\
+                 G00 Y{y}\nG50.1"
+            )
+        };
+        for doubt in ["G50.1 X#1", "(none)", "G50.1"] {
+            let found =
+                |on: &str, y: &str| at(fanuc_centres(), &body(doubt, on, y), Rule::TravelExceeded);
+            assert_eq!(found("G51.1 X0 Y0", "420."), [(8, 5)], "{doubt}");
+            assert_eq!(found("G51.1 X0 Y0", "390."), [], "{doubt}");
+            // Y not named again: after the doubtful line Y stays unjudged (the other two
+            // readings flag it, Y mirrored for certain, or plain: Y-420. is 820 from Y400.)
+            let y_unnamed = found("G51.1 X0", "420.");
+            let expected: &[(usize, usize)] = match doubt {
+                "G50.1 X#1" => &[],
+                "(none)" => &[(8, 5)],
+                _ => &[(7, 5)],
+            };
+            assert_eq!(y_unnamed, expected, "{doubt}");
+        }
+        // named by a value not known here: still in doubt
+        let found = at(
+            fanuc_centres(),
+            &body("G50.1 X#1", "G51.1 X0 Y#2", "420."),
+            Rule::TravelExceeded,
+        );
+        assert_eq!(found, []);
     }
 
     #[test]
