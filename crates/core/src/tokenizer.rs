@@ -950,7 +950,8 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
     fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
         // (LinuxCNC's `#<name>` may hold any byte but a blank and `>`)
         self.ascii &= line[pos..end].is_ascii();
-        self.words.push(Word::new(&line[pos..end], (self.at)(pos)));
+        self.words
+            .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
     }
 
     #[inline(always)]
