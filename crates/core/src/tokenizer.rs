@@ -903,6 +903,11 @@ trait PlainOut<'a> {
     fn skip_blanks(&mut self, line: &[u8], pos: usize) -> usize {
         skip_blanks(line, pos)
     }
+    /// A byte outside ASCII was read: in a LinuxCNC parameter's name in a bracketed word
+    /// ([`bracket_word`]), every other byte a plain word or a bracketed one is made of being
+    /// ASCII.
+    #[inline(always)]
+    fn not_ascii(&mut self) {}
 }
 
 impl<'a> PlainOut<'a> for Vec<Token<'a>> {
@@ -929,9 +934,9 @@ impl<'a> PlainOut<'a> for Vec<Token<'a>> {
     }
 }
 
-/// The checker's words of a line, each at the column its offset gives; whether the bracketed
-/// words are ASCII (every other byte of a line of plain words is); with `CRS`, the CRs among
-/// the blanks counted.
+/// The checker's words of a line, each at the column its offset gives; whether the names in
+/// its bracketed words are ASCII (every other byte of a line of plain words is); with `CRS`,
+/// the CRs among the blanks counted.
 struct WordsOut<'w, 'a, F: Fn(usize) -> usize, const CRS: bool> {
     words: &'w mut Vec<Word<'a>>,
     at: F,
@@ -948,10 +953,13 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
 
     #[inline(always)]
     fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
-        // (LinuxCNC's `#<name>` may hold any byte but a blank and `>`)
-        self.ascii &= line[pos..end].is_ascii();
         self.words
             .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
+    }
+
+    #[inline(always)]
+    fn not_ascii(&mut self) {
+        self.ascii = false;
     }
 
     #[inline(always)]
@@ -971,7 +979,8 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PlainLine {
     /// The line is ASCII (`line.is_ascii()`): every byte of a line of plain words is, but
-    /// for a LinuxCNC parameter's name in a bracketed word, which is asked alone.
+    /// for a LinuxCNC parameter's name in a bracketed word, whose bytes are or'ed as it is
+    /// scanned.
     pub ascii: bool,
     /// The line's CRs (a CR is a blank: one of the blanks between its words, or the last
     /// byte of a CRLF file's line), where they were asked for; else None.
@@ -1103,14 +1112,21 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                 b'<' if linuxcnc => {
                     let name = i + 2;
                     i = name;
+                    // (the name's bytes or'ed: the one part of the word that may be outside
+                    // ASCII)
+                    let mut bytes = 0u8;
                     while i < n && line[i] != b'>' {
                         if blank(line[i]) {
                             return None;
                         }
+                        bytes |= line[i];
                         i += 1;
                     }
                     if i == n || i == name {
                         return None;
+                    }
+                    if !bytes.is_ascii() {
+                        words.not_ascii();
                     }
                     i += 1;
                 }
