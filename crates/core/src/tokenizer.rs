@@ -877,7 +877,7 @@ fn plain_word<'a, O: PlainOut<'a>>(
     if count == 0 {
         return None;
     }
-    let after = skip_blanks(line, i);
+    let after = words.skip_blanks(line, i);
     match line.get(after) {
         // an index (`X1=`; after a sign or a point, the error the full reading words)
         Some(b'=') => return None,
@@ -896,6 +896,18 @@ trait PlainOut<'a> {
     fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits);
     /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number.
     fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize);
+    /// The offset of what follows the blanks from `pos` ([`skip_blanks`]): the blanks before
+    /// a line's first word and after each word, the only bytes of a line of plain words that
+    /// are not a word's.
+    #[inline(always)]
+    fn skip_blanks(&mut self, line: &[u8], pos: usize) -> usize {
+        skip_blanks(line, pos)
+    }
+    /// A byte outside ASCII was read: in a LinuxCNC parameter's name in a bracketed word
+    /// ([`bracket_word`]), every other byte a plain word or a bracketed one is made of being
+    /// ASCII.
+    #[inline(always)]
+    fn not_ascii(&mut self) {}
 }
 
 impl<'a> PlainOut<'a> for Vec<Token<'a>> {
@@ -922,13 +934,17 @@ impl<'a> PlainOut<'a> for Vec<Token<'a>> {
     }
 }
 
-/// The checker's words of a line, each at the column its offset gives.
-struct WordsOut<'w, 'a, F: Fn(usize) -> usize> {
+/// The checker's words of a line, each at the column its offset gives; whether the names in
+/// its bracketed words are ASCII (every other byte of a line of plain words is); with `CRS`,
+/// the CRs among the blanks counted.
+struct WordsOut<'w, 'a, F: Fn(usize) -> usize, const CRS: bool> {
     words: &'w mut Vec<Word<'a>>,
     at: F,
+    ascii: bool,
+    crs: usize,
 }
 
-impl<'a, F: Fn(usize) -> usize> PlainOut<'a> for WordsOut<'_, 'a, F> {
+impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, 'a, F, CRS> {
     #[inline(always)]
     fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits) {
         self.words
@@ -937,8 +953,38 @@ impl<'a, F: Fn(usize) -> usize> PlainOut<'a> for WordsOut<'_, 'a, F> {
 
     #[inline(always)]
     fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
-        self.words.push(Word::new(&line[pos..end], (self.at)(pos)));
+        self.words
+            .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
     }
+
+    #[inline(always)]
+    fn not_ascii(&mut self) {
+        self.ascii = false;
+    }
+
+    #[inline(always)]
+    fn skip_blanks(&mut self, line: &[u8], mut pos: usize) -> usize {
+        if !CRS {
+            return skip_blanks(line, pos);
+        }
+        while pos < line.len() && blank(line[pos]) {
+            self.crs += usize::from(line[pos] == b'\r');
+            pos += 1;
+        }
+        pos
+    }
+}
+
+/// What [`plain_line_words`] found of a line of plain words besides its words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlainLine {
+    /// The line is ASCII (`line.is_ascii()`): every byte of a line of plain words is, but
+    /// for a LinuxCNC parameter's name in a bracketed word, whose bytes are or'ed as it is
+    /// scanned.
+    pub ascii: bool,
+    /// The line's CRs (a CR is a blank: one of the blanks between its words, or the last
+    /// byte of a CRLF file's line), where they were asked for; else None.
+    pub crs: Option<usize>,
 }
 
 /// The words of a `line` made of plain words alone ([`plain_word`]: nearly every line of a
@@ -947,22 +993,49 @@ impl<'a, F: Fn(usize) -> usize> PlainOut<'a> for WordsOut<'_, 'a, F> {
 /// [`Word::extend_of`] makes of [`tokenize`]'s tokens of the line, which has no extras. False
 /// for any other line (a block skip, a `%`, a SUB, a byte-order mark, a comment, a statement,
 /// anything the full reading reads): `words` then holds what it held and
-/// some of the line's words, and the line is [`tokenize`]'s.
+/// some of the line's words, and the line is [`tokenize`]'s. Of a line of plain words, whether
+/// it is ASCII and, where `crs`, its CRs ([`PlainLine`]), found on the way: a scan of the
+/// line's bytes each saved (the columns given by `at` are the caller's to make right for a
+/// line that is not ASCII).
 pub fn plain_line_words<'a>(
     line: &'a [u8],
     dialect: &Dialect,
     words: &mut Vec<Word<'a>>,
     at: impl Fn(usize) -> usize,
-) -> bool {
+    crs: bool,
+) -> Option<PlainLine> {
+    if crs {
+        plain_line_words_as::<true>(line, dialect, words, at)
+    } else {
+        plain_line_words_as::<false>(line, dialect, words, at)
+    }
+}
+
+/// [`plain_line_words`], the CRs counted where `CRS`.
+#[inline(always)]
+fn plain_line_words_as<'a, const CRS: bool>(
+    line: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    at: impl Fn(usize) -> usize,
+) -> Option<PlainLine> {
     if line.len() > MAX_BLOCK {
-        return false;
+        return None;
     }
-    let pos = skip_blanks(line, 0);
+    let mut out = WordsOut::<_, CRS> {
+        words,
+        at,
+        ascii: true,
+        crs: 0,
+    };
+    let pos = out.skip_blanks(line, 0);
     if matches!(line.get(pos), Some(&(SUB | b'%' | b'/'))) || line.starts_with(BOM) {
-        return false;
+        return None;
     }
-    let mut out = WordsOut { words, at };
-    plain_words(line, pos, pos, dialect, &mut out) >= line.len()
+    (plain_words(line, pos, pos, dialect, &mut out) >= line.len()).then_some(PlainLine {
+        ascii: out.ascii,
+        crs: CRS.then_some(out.crs),
+    })
 }
 
 /// The deepest brackets [`bracket_word`] reads; deeper ones (up to [`expr::MAX_DEPTH`]) are the
@@ -1039,14 +1112,21 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                 b'<' if linuxcnc => {
                     let name = i + 2;
                     i = name;
+                    // (the name's bytes or'ed: the one part of the word that may be outside
+                    // ASCII)
+                    let mut bytes = 0u8;
                     while i < n && line[i] != b'>' {
                         if blank(line[i]) {
                             return None;
                         }
+                        bytes |= line[i];
                         i += 1;
                     }
                     if i == n || i == name {
                         return None;
+                    }
+                    if !bytes.is_ascii() {
+                        words.not_ascii();
                     }
                     i += 1;
                 }
@@ -1061,7 +1141,7 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                     i += 1;
                     depth -= 1;
                     if depth == 0 {
-                        let after = skip_blanks(line, i);
+                        let after = words.skip_blanks(line, i);
                         words.bracketed(line, pos, i);
                         return Some(after);
                     }
@@ -1352,7 +1432,7 @@ mod tests {
     /// and bracketed words of CAM programs with what may follow them.
     #[test]
     fn plain_words_are_read_in_one_pass_as_the_full_reading_reads_them() {
-        const BYTES: &[u8] = b"XGNROoxnr#=+-.0123456789 \t[]()*/;:,IFEQ<>";
+        const BYTES: &[u8] = b"XGNROoxnr#=+-.0123456789 \t\r[]()*/;:,IFEQ<>\xc3\xa9";
         let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
         let families = Family::ALL;
         let mut dialects = Vec::new();
@@ -1382,8 +1462,20 @@ mod tests {
             // characters: both ways of `at`)
             let mut words = vec![Word::new(b"G1", 1)];
             let at = |offset: usize| 3 * offset + 7;
-            if plain_line_words(line, dialect, &mut words, at) {
+            // (with the CRs counted or not: the same words, the CRs all the line's)
+            let crs = line.len().is_multiple_of(2);
+            if let Some(found) = plain_line_words(line, dialect, &mut words, at, crs) {
                 plain_lines.set(plain_lines.get() + 1);
+                let counted = line.iter().filter(|&&c| c == b'\r').count();
+                assert_eq!(
+                    found,
+                    PlainLine {
+                        ascii: line.is_ascii(),
+                        crs: crs.then_some(counted)
+                    },
+                    "{:?} {dialect:?}",
+                    String::from_utf8_lossy(line)
+                );
                 assert_eq!(
                     a,
                     Ok(None),
@@ -1438,6 +1530,9 @@ mod tests {
             "X[#<a",
             "X[1",
             "X[",
+            "G1 X1.\r",
+            " \r X1 \rY2\t\r",
+            "N10 X[#<\u{e9}t\u{e9}>*2] Y1.5\r",
         ];
         for dialect in &dialects {
             for text in plain {
@@ -1448,8 +1543,8 @@ mod tests {
         // bracketed words: a letter and `[`, then the tokens of an expression and its mistakes
         const EXPR: &[&[u8]] = &[
             b"[", b"[", b"]", b"]", b"]", b"1", b"25.", b".5", b"3.75", b".", b"#1", b"#<a>",
-            b"#<", b"#<>", b"#<a b>", b"#", b">", b"+", b"-", b"*", b"**", b"/", b" ", b",", b"P1",
-            b"sin", b"AND", b"x", b"=", b"0",
+            b"#<", b"#<>", b"#<a b>", b"#<\xe9>", b"#<a\r>", b"#", b">", b"+", b"-", b"*", b"**",
+            b"/", b" ", b",", b"P1", b"sin", b"AND", b"x", b"=", b"0",
         ];
         let mut line = Vec::new();
         for _ in 0..300_000 / dialects.len() {

@@ -262,6 +262,40 @@ impl<'a> Word<'a> {
         }
     }
 
+    /// The word of a bracketed `text` (its address, then `[`, an expression and its `]`:
+    /// [`crate::tokenizer`]'s bracketed word, `Y[#<yscale>*-32.725]`) at `column`: no index,
+    /// sign or number, the expression all after the address -- what [`Word::new`] splits it
+    /// into, written without its walk (about 100 instructions a word; a debug build splits it
+    /// too and asserts the same parts).
+    #[inline(always)]
+    pub(crate) fn bracketed(text: &'a [u8], column: usize) -> Word<'a> {
+        let address = text[0];
+        let word = Word {
+            address,
+            letter: address.to_ascii_uppercase(),
+            index: b"",
+            sign: b"",
+            number: b"",
+            expression: &text[1..],
+            column,
+            token: text,
+            point: false,
+            dot: 0,
+            value: None,
+        };
+        if cfg!(debug_assertions) {
+            let split = Word::new(text, column);
+            assert_eq!(text.get(1), Some(&b'['), "{text:?}: not bracketed");
+            assert!(
+                (split.index, split.sign, split.number, split.expression)
+                    == (word.index, word.sign, word.number, word.expression)
+                    && (split.point, split.dot, split.value) == (word.point, word.dot, word.value),
+                "{text:?}: a bracketed word's parts"
+            );
+        }
+        word
+    }
+
     /// The digits of the number before its point and after it (all of them before, and none
     /// after, without a point).
     pub fn whole_and_fraction(&self) -> (&'a [u8], &'a [u8]) {

@@ -710,6 +710,7 @@ pub(crate) fn feed_block<'py>(
         line: b.line,
         text: &text,
         ascii: text.is_ascii(),
+        crs: None,
         words: &words,
         skip,
         skip_within,

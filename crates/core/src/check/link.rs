@@ -45,7 +45,10 @@ impl Checker {
         } else {
             chars(b.text, b.text.len())
         };
-        let length = characters - carriage_returns(b.text);
+        // (counted by the line's reader where it read a line of plain words)
+        let crs = b.crs.unwrap_or_else(|| carriage_returns(b.text));
+        debug_assert_eq!(crs, carriage_returns(b.text), "line {}: its CRs", b.line);
+        let length = characters - crs;
         if length % 2 == 1 {
             if self.tv_odd.count == 0 {
                 self.tv_odd = OddBlocks {
@@ -69,7 +72,7 @@ impl Checker {
 /// top bytes of the last 8, the ones before them shifted out. Only a rest that holds one is
 /// counted byte by byte, as is a rest shorter than 8. (Whether the text is ASCII is the line
 /// reader's, [`BlockView::ascii`].)
-fn carriage_returns(text: &[u8]) -> usize {
+pub(super) fn carriage_returns(text: &[u8]) -> usize {
     const ONES: u64 = u64::from_le_bytes([1; 8]);
     const LOW: u64 = ONES * 0x7f;
     let (rest, last) = match text.split_last() {

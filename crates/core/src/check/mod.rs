@@ -353,6 +353,10 @@ pub struct BlockView<'a> {
     /// `text` holds no byte above 0x7F (`text.is_ascii()`): found once a line by its reader,
     /// and asked by the rules that count characters or look for bytes outside ASCII.
     pub ascii: bool,
+    /// The CRs of `text` where its reader counted them (the checker's, in a line of plain
+    /// words under the TV check: [`crate::tokenizer::PlainLine::crs`]); None where the TV
+    /// check counts them itself.
+    pub crs: Option<usize>,
     pub words: &'a [Word<'a>],
     pub skip: bool,
     /// The 1-based column of a block skip `/` in the middle of the block (Fanuc, Haas): the
@@ -1123,10 +1127,26 @@ impl Checker {
         // a line of plain words alone has its words written where they are scanned, with no
         // token between (a debug build reads it through the tokens as well, and asserts the
         // same words); any other line is read in full
+        // (whether the line is ASCII, and its CRs where the TV check counts them, are found
+        // while its plain words are scanned: the columns are an ASCII line's, made right after
+        // for one that is not -- a LinuxCNC parameter's name outside ASCII)
         let mut words: Vec<Word<'a>> = recycle(std::mem::take(&mut self.words_buffer));
-        let ascii = text.is_ascii();
-        if plain_line_words(text, dialect, &mut words, at_column(text, ascii)) {
+        let tv = self.config.tv_check;
+        if let Some(plain) = plain_line_words(text, dialect, &mut words, |o| o + 1, tv) {
+            let ascii = plain.ascii;
+            if !ascii {
+                for w in &mut words {
+                    w.column = column(text, w.token.as_ptr() as usize - text.as_ptr() as usize);
+                }
+            }
             if cfg!(debug_assertions) {
+                assert_eq!(ascii, text.is_ascii(), "line {line}: a plain line's ASCII");
+                assert!(
+                    plain
+                        .crs
+                        .is_none_or(|crs| crs == link::carriage_returns(text)),
+                    "line {line}: a plain line's CRs"
+                );
                 let mut read = Vec::new();
                 assert!(matches!(tokenize(text, dialect, tokens), Ok(None)));
                 Word::extend_of(&mut read, tokens, at_column(text, ascii));
@@ -1136,7 +1156,7 @@ impl Checker {
                 );
                 tokens.clear();
             }
-            self.check_words(text, line, ascii, words, None);
+            self.check_words(text, line, ascii, plain.crs, words, None);
             return;
         }
         words.clear();
@@ -1164,16 +1184,18 @@ impl Checker {
         let ascii = text.is_ascii();
         let mut words: Vec<Word<'_>> = recycle(std::mem::take(&mut self.words_buffer));
         Word::extend_of(&mut words, tokens, at_column(text, ascii));
-        self.check_words(text, line, ascii, words, extras);
+        self.check_words(text, line, ascii, None, words, extras);
     }
 
     /// Check one line's `words` and `extras` (its comments, statements, skip), and keep the
-    /// buffers for the next line. `ascii`: the line is ASCII.
+    /// buffers for the next line. `ascii`: the line is ASCII; `crs`: its CRs, where counted
+    /// ([`BlockView::crs`]).
     fn check_words<'t>(
         &mut self,
         text: &'t [u8],
         line: usize,
         ascii: bool,
+        crs: Option<usize>,
         words: Vec<Word<'t>>,
         extras: Option<&Extras<'t>>,
     ) {
@@ -1184,6 +1206,7 @@ impl Checker {
                 line,
                 text,
                 ascii,
+                crs,
                 words: &words,
                 skip: false,
                 skip_within: None,
@@ -1209,6 +1232,7 @@ impl Checker {
             line,
             text,
             ascii,
+            crs,
             words: &words,
             skip: e.skip != 0,
             skip_within: e.skip_within.map(|(offset, _)| at(offset)),

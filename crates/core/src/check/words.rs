@@ -484,6 +484,7 @@ mod tests {
                 line: 1,
                 text: text.as_bytes(),
                 ascii: text.is_ascii(),
+                crs: None,
                 words: &words,
                 skip: false,
                 skip_within: None,
