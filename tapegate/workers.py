@@ -37,13 +37,13 @@ started first, the largest first, their reports spilled and written at their tur
 
 from __future__ import annotations
 
+import _thread
 import os
-import threading
-from collections import deque
-from collections.abc import Callable, Generator, Iterable, Sequence
+from _collections import deque
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable, Generator, Iterable, Sequence
     from typing import Any, TypeVar
 
     T = TypeVar("T")
@@ -86,7 +86,54 @@ class _Stopped(BaseException):
     own ``except Exception`` lets it through)."""
 
 
-_local = threading.local()
+_local = _thread._local()
+
+
+class _Condition:
+    """A condition over a lock shared with others: ``threading.Condition``'s ``wait`` (without
+    a timeout), ``notify`` and ``notify_all``, on the interpreter's own locks (``_thread``),
+    so that a check's start-up does not import ``threading`` (3.1M instructions before the
+    first thread, with ``_weakrefset``; docs/benchmarks.md, "the workers on _thread"). A
+    waiter is a lock of its own, held, that ``notify`` releases; the waiting thread takes the
+    shared lock back before it returns, as ``threading.Condition.wait`` does."""
+
+    __slots__ = ("_lock", "_waiters")
+
+    def __init__(self, lock: Any) -> None:
+        self._lock = lock
+        self._waiters: deque[Any] = deque()
+
+    def __enter__(self) -> bool:
+        return bool(self._lock.acquire())
+
+    def __exit__(self, *exc: object) -> None:
+        self._lock.release()
+
+    def wait(self) -> None:
+        """Release the shared lock (held by the caller), wait for a ``notify``, take it back."""
+        waiter = _thread.allocate_lock()
+        waiter.acquire()
+        self._waiters.append(waiter)
+        self._lock.release()
+        woken = False
+        try:
+            woken = waiter.acquire()
+        finally:
+            self._lock.acquire()
+            # interrupted (a KeyboardInterrupt), and not notified meanwhile: not left among
+            # the waiters
+            if not woken and waiter in self._waiters:
+                self._waiters.remove(waiter)
+
+    def notify(self, n: int = 1) -> None:
+        """Wake up to ``n`` of the threads waiting (the shared lock held)."""
+        waiters = self._waiters
+        while waiters and n > 0:
+            waiters.popleft().release()
+            n -= 1
+
+    def notify_all(self) -> None:
+        self.notify(len(self._waiters))
 
 
 def send(piece: Any) -> None:
@@ -171,9 +218,9 @@ class _Map:
         # threads (``space``) for the window moving on or room for a piece. (One condition
         # for both woke every thread at every piece of any item: 1,800-2,600 context switches
         # for the shops folder and 200 copies, 600 now, and 4-8 % of their CPU.)
-        lock = threading.Lock()
-        self.cond = threading.Condition(lock)
-        self.space = threading.Condition(lock)
+        lock = _thread.allocate_lock()
+        self.cond = _Condition(lock)
+        self.space = _Condition(lock)
         self.slots: dict[int, _Slot] = {}
         skipped = set(early)
         self.order = [*early, *(i for i in range(len(items)) if i not in skipped)]
@@ -314,6 +361,16 @@ class _Map:
             slot.close()
 
 
+def _run(state: _Map, ended: Any) -> None:
+    """A worker thread: :meth:`_Map.work`, then ``ended`` released (its join). An error
+    outside an item's function (which :meth:`_Map.work` hands to the main thread) is printed
+    as an uncaught one in a thread is (``_thread``'s hook), as ``threading``'s did."""
+    try:
+        state.work()
+    finally:
+        ended.release()
+
+
 def _spill_file() -> int:
     """A temporary file with no name (nothing to remove, whatever ends the process), in the
     folder ``tempfile`` would take first (``$TMPDIR``, ``$TEMP``, ``$TMP``, else ``/tmp``),
@@ -368,19 +425,27 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     count = min(jobs, len(items))
     state = _Map(func, items, WINDOW * jobs, WAITING * count,
                  first(sizes, jobs) if sizes is not None else ())
-    threads = [threading.Thread(target=state.work, name=f"tapegate-{n}", daemon=True)
-               for n in range(count)]
+    # each thread holds its lock until it has ended its work (its join); the threads are
+    # the interpreter's own (_thread), as daemon threads: nothing waits for them at the exit
+    ended = [_thread.allocate_lock() for _ in range(count)]
     handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
+    started: list[Any] = []
     try:
-        for thread in threads:
-            thread.start()
-        if threading.current_thread() is threading.main_thread():
-            # by signal's C part, which the interpreter loaded at its start: the signal
-            # module's import (its enums, 0.7 ms of the main thread's CPU) only turns the
-            # handler handed back into an enum, and this one is only put back
-            import _signal
+        for lock in ended:
+            lock.acquire()
+            _thread.start_new_thread(_run, (state, lock))
+            started.append(lock)
+        # by signal's C part, which the interpreter loaded at its start: the signal
+        # module's import (its enums, 0.7 ms of the main thread's CPU) only turns the
+        # handler handed back into an enum, and this one is only put back
+        import _signal
 
-            handler.append(_signal.signal(_signal.SIGTERM, _terminated))
+        try:
+            before = _signal.signal(_signal.SIGTERM, _terminated)
+        except ValueError:  # not the main thread (of the main interpreter): no handler
+            before = None
+        else:
+            handler.append(before)
         for index in range(len(items)):
             while True:
                 pieces, got = state.take(index)
@@ -395,9 +460,8 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     finally:
         # stopped or done: a thread sending stops at once, one in the core at its chunk's end
         state.stop()
-        for thread in threads:
-            if thread.is_alive():
-                thread.join()
+        for lock in started:
+            lock.acquire()  # the thread's join
         state.close()
         if handler:
             import _signal

@@ -1,7 +1,8 @@
 """What a check of a folder with two workers has done when it starts its first thread: the
 serial part of ``check -j`` that its threads cannot share (docs/benchmarks.md, "the serial
 start-up without enum"). Neither ``enum`` (formats.choices) nor the rules' records
-(postproc.rules.RULES, made when first asked for) are among it; the output is the same."""
+(postproc.rules.RULES, made when first asked for) nor ``threading`` (the workers run on
+``_thread``) are among it; the output is the same."""
 
 from __future__ import annotations
 
@@ -16,17 +17,18 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = "%\nN1 G21 G90\nN2 G00 X1.\nN3 M30\n%\n"
 
-# Run as the tapegate command with the given arguments; at its first thread's start, print the
-# modules loaded and whether postproc.rules has made its RULES yet, and end (printed by repr:
-# json would import re, and re enum).
+# Run as the tapegate command with the given arguments; at its first thread's start (the
+# workers' threads are _thread's: tapegate.workers), print the modules loaded and whether
+# postproc.rules has made its RULES yet, and end (printed by repr: json would import re, and
+# re enum).
 PROBE = """\
-import os, sys, threading
-def stop(self):
+import _thread, os, sys
+def stop(*args):
     rules = sys.modules.get("postproc.rules")
     made = rules is not None and "RULES" in vars(rules)
     print(repr({"modules": sorted(sys.modules), "rules_made": made}), flush=True)
     os._exit(0)
-threading.Thread.start = stop
+_thread.start_new_thread = stop
 sys.argv = ["tapegate", *sys.argv[1:]]
 from tapegate.launch import main
 main()
@@ -59,6 +61,7 @@ def test_a_check_starts_its_threads_without_enum_or_the_rules_records(folder, fm
     assert "tapegate.workers" in modules and "formats.wordformat" in modules
     assert "postproc.rules" in modules
     assert "enum" not in modules
+    assert "threading" not in modules  # the workers on _thread's locks and threads
     assert found["rules_made"] is False
 
 
