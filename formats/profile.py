@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 import os
 from decimal import Decimal
-from functools import cache
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import OWN_TABLE, TABLES, Code, CodeTable
@@ -1099,10 +1098,14 @@ NEUTRAL_TOML = ("name = \"neutral\"\n"
                 "E054 S06 T08 D03 M03 H03*\"\n")
 
 
-@cache
+_NEUTRAL: list[Profile] = []  # (kept here, not by functools.cache: a check does not import it)
+
+
 def neutral() -> Profile:
     """The neutral profile (``NEUTRAL``), made when first used: one object for the process."""
-    return profile_from_text(NEUTRAL_TOML, source="built-in", cache_as="neutral")
+    if not _NEUTRAL:
+        _NEUTRAL.append(profile_from_text(NEUTRAL_TOML, source="built-in", cache_as="neutral"))
+    return _NEUTRAL[0]
 
 
 if TYPE_CHECKING:
