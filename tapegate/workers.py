@@ -518,14 +518,26 @@ def _scan(folder: str, below: tuple[str, ...], found: list[tuple[str, ...]]) -> 
             listed = list(entries)
     except OSError:
         return
+    # (the tests written out, not by _is and _listed: 16K instructions a file were the
+    # listing's before a batch's threads; docs/benchmarks.md, "the listing")
     for entry in listed:
-        if entry.name.startswith("."):
+        name = entry.name
+        if name[:1] == ".":
             continue
-        if _is(entry.is_dir):
+        try:
+            a_folder = entry.is_dir()
+        except OSError:
+            a_folder = False
+        if a_folder:
             if not _is(entry.is_symlink):
-                _scan(entry.path, (*below, entry.name), found)
-        elif _listed(entry):
-            found.append((*below, entry.name))
+                _scan(entry.path, (*below, name), found)
+            continue
+        try:
+            listed_file = entry.is_file()
+        except OSError:
+            listed_file = False
+        if listed_file or _listed(entry):
+            found.append((*below, name))
 
 
 def _is(test: Callable[[], bool]) -> bool:
@@ -545,8 +557,11 @@ def _listed(entry: os.DirEntry[str]) -> bool:
 
 def joined(folder: str, below: str) -> str:
     """``str(Path(folder) / below)`` for a ``folder`` written as :func:`pure` writes it and a
-    relative ``below`` without empty or ``.`` parts."""
-    return below if folder == "." else os.path.join(folder, below)
+    relative ``below`` without empty or ``.`` parts: ``os.path.join``'s, written out (only
+    ``/`` and ``//`` end in a slash)."""
+    if folder == ".":
+        return below
+    return folder + below if folder[-1:] == "/" else folder + "/" + below
 
 
 def pure(name: str) -> str:

@@ -1041,3 +1041,15 @@ def test_the_workers_condition_wakes_its_waiters_and_leaves_an_interrupted_one()
     finally:
         timer.cancel()
         signal.signal(signal.SIGINT, before)
+
+
+@pytest.mark.parametrize("folder", [".", "/", "//", "a", "/a/b", "//a", "..", "../x"])
+def test_a_path_below_a_folder_is_joined_as_os_path_joins_it(folder):
+    """tapegate.workers.joined, written out: os.path.join's path for a folder as pure() writes
+    it (the root "/" and "//" the only ones ending in a slash) and a relative path below it."""
+    import tapegate.workers as workers
+
+    assert workers.pure(folder) == folder
+    for below in ("p.nc", "d/p.nc", "..nc"):
+        assert workers.joined(folder, below) == (below if folder == "." else
+                                                 os.path.join(folder, below))
