@@ -9,7 +9,8 @@ threads run side by side on the cores, and take the GIL only for what Python doe
 (the checker, the statistics, the report's slices handed over) and, in a conversion, per 1 MiB
 chunk (reading, decoding). Nothing is forked or pickled, nothing
 of ``multiprocessing`` or ``concurrent.futures`` is imported, and a temporary file is made only
-for a report that must wait (below).
+for a report that must wait (below). The threads, their locks and conditions are the
+interpreter's own (``_thread``): a check's start-up before them does not import ``threading``.
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
@@ -93,9 +94,10 @@ class _Condition:
     """A condition over a lock shared with others: ``threading.Condition``'s ``wait`` (without
     a timeout), ``notify`` and ``notify_all``, on the interpreter's own locks (``_thread``),
     so that a check's start-up does not import ``threading`` (3.1M instructions before the
-    first thread, with ``_weakrefset``; docs/benchmarks.md, "the workers on _thread"). A
-    waiter is a lock of its own, held, that ``notify`` releases; the waiting thread takes the
-    shared lock back before it returns, as ``threading.Condition.wait`` does."""
+    first thread, with ``_weakrefset``; docs/benchmarks.md, "the serial start-up without
+    threading and functools"). A waiter is a lock of its own, held, that ``notify`` releases;
+    the waiting thread takes the shared lock back before it returns, as
+    ``threading.Condition.wait`` does."""
 
     __slots__ = ("_lock", "_waiters")
 
