@@ -19,8 +19,6 @@ with.
 
 from __future__ import annotations
 
-from functools import cache
-
 from formats.errors import FormatSpecError
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, Zeros
@@ -50,12 +48,19 @@ KINDS = {
 }
 UNITS = {"M": "metric", "I": "inch", "N": "metric and inch"}
 
-@cache
+# the grammars' parsers, made once, when first used (kept here, not by functools.cache: a
+# check's start-up does not import functools, docs/benchmarks.md, "functools")
+_PARSERS: dict[str, Lark] = {}
+
+
 def _general_parser() -> Lark:
     # built on first use and its analysis cached on disk by lark: `tapegate --help` does not pay
-    from lark import Lark
+    parser = _PARSERS.get("general")
+    if parser is None:
+        from lark import Lark
 
-    return Lark(_GENERAL_GRAMMAR, parser="lalr", cache=True)
+        parser = _PARSERS["general"] = Lark(_GENERAL_GRAMMAR, parser="lalr", cache=True)
+    return parser
 
 
 # Annex B as the hand parser takes it: the grammar's tokens, spaces and tabs between any two.
@@ -166,11 +171,13 @@ NAME: /[a-z][a-z-]*/
 %ignore /[ \t\n]+/
 """
 
-@cache
 def _detailed_parser() -> Lark:
-    from lark import Lark
+    parser = _PARSERS.get("detailed")
+    if parser is None:
+        from lark import Lark
 
-    return Lark(_DETAILED_GRAMMAR, parser="lalr", cache=True)
+        parser = _PARSERS["detailed"] = Lark(_DETAILED_GRAMMAR, parser="lalr", cache=True)
+    return parser
 
 
 # Annex C as the hand parser takes it: the grammar's tokens with spaces, tabs or newlines (the

@@ -14,7 +14,7 @@ profile object and shared across files, threads and gateway ports.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+import _thread
 
 from formats import _core
 from formats.codes import OWN_TABLE, Code
@@ -32,6 +32,7 @@ FormatEntry = tuple[str, int, int, bool, str, bool]
 # dict: a TypedDict of 45 keys cost 4.5M instructions of every command's start-up to build.
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Iterable, Iterator
     from typing import TypedDict
 
     class MachineSpec(TypedDict):
@@ -206,11 +207,22 @@ def machine_spec(profile: Profile) -> MachineSpec:
     }
 
 
+# Held while a machine is built: `-j`'s threads ask for it at their first files at once, and
+# one built it while the others waited for it (under callgrind, whose slowness lets the
+# interpreter's switch interval pass while it is built, each thread built its own:
+# docs/benchmarks.md, "what -j 2 adds")
+_BUILDING = _thread.allocate_lock()
+
+
 def machine(profile: Profile) -> _core.Machine:
     """The core's compiled machine of ``profile``: built on first use and kept with the profile
-    object (a profile is immutable), so every file, thread and port of it shares one."""
+    object (a profile is immutable), so every file, thread and port of it shares one, built
+    once."""
     compiled = profile.__dict__.get("_machine")
     if compiled is None:
-        compiled = _core.Machine(machine_spec(profile))
-        object.__setattr__(profile, "_machine", compiled)
+        with _BUILDING:
+            compiled = profile.__dict__.get("_machine")
+            if compiled is None:
+                compiled = _core.Machine(machine_spec(profile))
+                object.__setattr__(profile, "_machine", compiled)
     return compiled

@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 import os
 from decimal import Decimal
-from functools import cache
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import OWN_TABLE, TABLES, Code, CodeTable
@@ -831,10 +830,16 @@ def _is_meaning(text: str) -> bool:
 _CODE_KEYS = frozenset({"function", "duration", "status", "words", "meaning"})
 
 
+# The keys of the codes most profiles list (``G01 = { function = "...", duration = "...",
+# meaning = "..." }``), read without Keys when each is a string: its checks give nothing to
+# tell there, and they were a third of making a code (docs/benchmarks.md, "the codes")
+_PLAIN_CODE_KEYS = frozenset({"function", "duration", "meaning"})
+
+
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
     result = {}
     for key, spec in data.items():
-        decimal = _decimal_code(key)
+        decimal = _decimal_code(key) if "." in key else None
         if decimal is not None:  # G91.1, G54.1: a code of its own
             keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
                         {"function", "duration", "words", "meaning"})
@@ -850,8 +855,19 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", _CODE_KEYS)
         number = int(key[1:])
+        function = spec.get("function", "designated by the profile")
+        duration = spec.get("duration", "TBO")
+        meaning = spec.get("meaning", "")
+        if (type(function) is str and type(duration) is str and type(meaning) is str
+                and _PLAIN_CODE_KEYS.issuperset(spec)
+                and (not meaning or _is_meaning(meaning))):
+            # what Keys reads from such a table, the same values (any other key, value or
+            # meaning: Keys below, which reads it or names what is wrong)
+            result[f"{key[0]}{number:02d}"] = Code(key[0], number, function, duration,
+                                                   "assigned", meaning=meaning)
+            continue
+        keys = Keys(spec, f"codes.{key}.", _CODE_KEYS)
         # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
         status: Status = ("unassigned" if "status" in spec and keys.choice(
             "status", ("assigned", "unassigned"), "assigned") == "unassigned" else "assigned")
@@ -1099,10 +1115,14 @@ NEUTRAL_TOML = ("name = \"neutral\"\n"
                 "E054 S06 T08 D03 M03 H03*\"\n")
 
 
-@cache
+_NEUTRAL: list[Profile] = []  # (kept here, not by functools.cache: a check does not import it)
+
+
 def neutral() -> Profile:
     """The neutral profile (``NEUTRAL``), made when first used: one object for the process."""
-    return profile_from_text(NEUTRAL_TOML, source="built-in", cache_as="neutral")
+    if not _NEUTRAL:
+        _NEUTRAL.append(profile_from_text(NEUTRAL_TOML, source="built-in", cache_as="neutral"))
+    return _NEUTRAL[0]
 
 
 if TYPE_CHECKING:

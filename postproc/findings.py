@@ -7,13 +7,12 @@ Python as the seven fields of this tuple, made in C by :data:`make_finding`.
 from __future__ import annotations
 
 from collections import namedtuple
-from functools import partial
 
 from formats import _core
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
-    from typing import NamedTuple
+    from typing import Any, NamedTuple
 
     from postproc.rules import Severity
 
@@ -42,6 +41,14 @@ class Finding(_Fields):
         return _core.render_findings("text", (self,))[:-1]
 
 
-make_finding = partial(tuple.__new__, Finding)
+class _Bound:
+    def method(self) -> None:
+        """(a function bound to an object: its type, as ``types.MethodType`` takes it)"""
+
+
+_METHOD: Any = type(_Bound().method)
+make_finding = _METHOD(tuple.__new__, Finding)
 """A Finding from its 7 fields in one tuple, without a call to ``Finding`` (the core makes
-millions)."""
+millions): ``tuple.__new__`` bound to the class, ``tuple.__new__(Finding, fields)``, called in
+C as ``functools.partial(tuple.__new__, Finding)`` was, without importing functools (and
+``types``) before a check's threads (docs/benchmarks.md, "functools")."""

@@ -9,7 +9,8 @@ threads run side by side on the cores, and take the GIL only for what Python doe
 (the checker, the statistics, the report's slices handed over) and, in a conversion, per 1 MiB
 chunk (reading, decoding). Nothing is forked or pickled, nothing
 of ``multiprocessing`` or ``concurrent.futures`` is imported, and a temporary file is made only
-for a report that must wait (below).
+for a report that must wait (below). The threads, their locks and conditions are the
+interpreter's own (``_thread``): a check's start-up before them does not import ``threading``.
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
@@ -37,13 +38,13 @@ started first, the largest first, their reports spilled and written at their tur
 
 from __future__ import annotations
 
+import _thread
 import os
-import threading
-from collections import deque
-from collections.abc import Callable, Generator, Iterable, Sequence
+from _collections import deque
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable, Generator, Iterable, Sequence
     from typing import Any, TypeVar
 
     T = TypeVar("T")
@@ -86,7 +87,55 @@ class _Stopped(BaseException):
     own ``except Exception`` lets it through)."""
 
 
-_local = threading.local()
+_local = _thread._local()
+
+
+class _Condition:
+    """A condition over a lock shared with others: ``threading.Condition``'s ``wait`` (without
+    a timeout), ``notify`` and ``notify_all``, on the interpreter's own locks (``_thread``),
+    so that a check's start-up does not import ``threading`` (3.1M instructions before the
+    first thread, with ``_weakrefset``; docs/benchmarks.md, "the serial start-up without
+    threading and functools"). A waiter is a lock of its own, held, that ``notify`` releases;
+    the waiting thread takes the shared lock back before it returns, as
+    ``threading.Condition.wait`` does."""
+
+    __slots__ = ("_lock", "_waiters")
+
+    def __init__(self, lock: Any) -> None:
+        self._lock = lock
+        self._waiters: deque[Any] = deque()
+
+    def __enter__(self) -> bool:
+        return bool(self._lock.acquire())
+
+    def __exit__(self, *exc: object) -> None:
+        self._lock.release()
+
+    def wait(self) -> None:
+        """Release the shared lock (held by the caller), wait for a ``notify``, take it back."""
+        waiter = _thread.allocate_lock()
+        waiter.acquire()
+        self._waiters.append(waiter)
+        self._lock.release()
+        woken = False
+        try:
+            woken = waiter.acquire()
+        finally:
+            self._lock.acquire()
+            # interrupted (a KeyboardInterrupt), and not notified meanwhile: not left among
+            # the waiters
+            if not woken and waiter in self._waiters:
+                self._waiters.remove(waiter)
+
+    def notify(self, n: int = 1) -> None:
+        """Wake up to ``n`` of the threads waiting (the shared lock held)."""
+        waiters = self._waiters
+        while waiters and n > 0:
+            waiters.popleft().release()
+            n -= 1
+
+    def notify_all(self) -> None:
+        self.notify(len(self._waiters))
 
 
 def send(piece: Any) -> None:
@@ -171,9 +220,9 @@ class _Map:
         # threads (``space``) for the window moving on or room for a piece. (One condition
         # for both woke every thread at every piece of any item: 1,800-2,600 context switches
         # for the shops folder and 200 copies, 600 now, and 4-8 % of their CPU.)
-        lock = threading.Lock()
-        self.cond = threading.Condition(lock)
-        self.space = threading.Condition(lock)
+        lock = _thread.allocate_lock()
+        self.cond = _Condition(lock)
+        self.space = _Condition(lock)
         self.slots: dict[int, _Slot] = {}
         skipped = set(early)
         self.order = [*early, *(i for i in range(len(items)) if i not in skipped)]
@@ -314,6 +363,16 @@ class _Map:
             slot.close()
 
 
+def _run(state: _Map, ended: Any) -> None:
+    """A worker thread: :meth:`_Map.work`, then ``ended`` released (its join). An error
+    outside an item's function (which :meth:`_Map.work` hands to the main thread) is printed
+    as an uncaught one in a thread is (``_thread``'s hook), as ``threading``'s did."""
+    try:
+        state.work()
+    finally:
+        ended.release()
+
+
 def _spill_file() -> int:
     """A temporary file with no name (nothing to remove, whatever ends the process), in the
     folder ``tempfile`` would take first (``$TMPDIR``, ``$TEMP``, ``$TMP``, else ``/tmp``),
@@ -368,19 +427,27 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     count = min(jobs, len(items))
     state = _Map(func, items, WINDOW * jobs, WAITING * count,
                  first(sizes, jobs) if sizes is not None else ())
-    threads = [threading.Thread(target=state.work, name=f"tapegate-{n}", daemon=True)
-               for n in range(count)]
+    # each thread holds its lock until it has ended its work (its join); the threads are
+    # the interpreter's own (_thread), as daemon threads: nothing waits for them at the exit
+    ended = [_thread.allocate_lock() for _ in range(count)]
     handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
+    started: list[Any] = []
     try:
-        for thread in threads:
-            thread.start()
-        if threading.current_thread() is threading.main_thread():
-            # by signal's C part, which the interpreter loaded at its start: the signal
-            # module's import (its enums, 0.7 ms of the main thread's CPU) only turns the
-            # handler handed back into an enum, and this one is only put back
-            import _signal
+        for lock in ended:
+            lock.acquire()
+            _thread.start_new_thread(_run, (state, lock))
+            started.append(lock)
+        # by signal's C part, which the interpreter loaded at its start: the signal
+        # module's import (its enums, 0.7 ms of the main thread's CPU) only turns the
+        # handler handed back into an enum, and this one is only put back
+        import _signal
 
-            handler.append(_signal.signal(_signal.SIGTERM, _terminated))
+        try:
+            before = _signal.signal(_signal.SIGTERM, _terminated)
+        except ValueError:  # not the main thread (of the main interpreter): no handler
+            before = None
+        else:
+            handler.append(before)
         for index in range(len(items)):
             while True:
                 pieces, got = state.take(index)
@@ -395,9 +462,8 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     finally:
         # stopped or done: a thread sending stops at once, one in the core at its chunk's end
         state.stop()
-        for thread in threads:
-            if thread.is_alive():
-                thread.join()
+        for lock in started:
+            lock.acquire()  # the thread's join
         state.close()
         if handler:
             import _signal
@@ -454,14 +520,26 @@ def _scan(folder: str, below: tuple[str, ...], found: list[tuple[str, ...]]) -> 
             listed = list(entries)
     except OSError:
         return
+    # (the tests written out, not by _is and _listed: 16K instructions a file were the
+    # listing's before a batch's threads; docs/benchmarks.md, "the listing")
     for entry in listed:
-        if entry.name.startswith("."):
+        name = entry.name
+        if name[:1] == ".":
             continue
-        if _is(entry.is_dir):
+        try:
+            a_folder = entry.is_dir()
+        except OSError:
+            a_folder = False
+        if a_folder:
             if not _is(entry.is_symlink):
-                _scan(entry.path, (*below, entry.name), found)
-        elif _listed(entry):
-            found.append((*below, entry.name))
+                _scan(entry.path, (*below, name), found)
+            continue
+        try:
+            listed_file = entry.is_file()
+        except OSError:
+            listed_file = False
+        if listed_file or _listed(entry):
+            found.append((*below, name))
 
 
 def _is(test: Callable[[], bool]) -> bool:
@@ -481,8 +559,11 @@ def _listed(entry: os.DirEntry[str]) -> bool:
 
 def joined(folder: str, below: str) -> str:
     """``str(Path(folder) / below)`` for a ``folder`` written as :func:`pure` writes it and a
-    relative ``below`` without empty or ``.`` parts."""
-    return below if folder == "." else os.path.join(folder, below)
+    relative ``below`` without empty or ``.`` parts: ``os.path.join``'s, written out (only
+    ``/`` and ``//`` end in a slash)."""
+    if folder == ".":
+        return below
+    return folder + below if folder[-1:] == "/" else folder + "/" + below
 
 
 def pure(name: str) -> str:

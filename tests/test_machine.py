@@ -16,6 +16,45 @@ def test_a_profile_is_compiled_once_and_shared() -> None:
     assert machine(load_profile("fanuc-mill")) is not machine(profile)  # another profile object
 
 
+def test_threads_asking_at_once_share_one_machine_built_once(monkeypatch) -> None:
+    """-j's threads ask for the machine at their first files at once: one builds it, the
+    others wait for it (the interpreter switching threads every 10 us meanwhile)."""
+    import sys
+    import threading
+
+    import formats.machine as machines
+
+    built: list[int] = []
+    real = machines.machine_spec
+
+    def counted(profile):  # type: ignore[no-untyped-def]
+        built.append(threading.get_ident())
+        return real(profile)
+
+    monkeypatch.setattr(machines, "machine_spec", counted)
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-5)
+    try:
+        for _ in range(5):
+            profile = load_profile("haas-mill")  # a new object each time
+            got: list[object] = []
+            start = threading.Barrier(4)
+
+            def ask(profile=profile, got=got, start=start) -> None:  # type: ignore[no-untyped-def]
+                start.wait()
+                got.append(machines.machine(profile))
+
+            threads = [threading.Thread(target=ask) for _ in range(4)]
+            for thread in threads:
+                thread.start()
+            for thread in threads:
+                thread.join(timeout=60)
+            assert len(got) == 4 and all(m is got[0] for m in got)
+    finally:
+        sys.setswitchinterval(interval)
+    assert len(built) == 5  # once a profile
+
+
 @pytest.mark.parametrize("name", builtin_names())
 def test_every_built_in_profile_compiles(name: str) -> None:
     profile = load_profile(name)

@@ -327,3 +327,43 @@ def test_a_code_s_status_words_and_meaning_are_read_when_given(code, message):
         profile_from_text(base + code + "\n")
     plain = profile_from_text(base + 'M10 = { function = "f" }\n').extra_codes["M10"]
     assert (plain.status, plain.words, plain.meaning) == ("assigned", (), "")
+
+
+_CODE_SPECS = [
+    '{ function = "f", duration = "motion", meaning = "rapid-positioning" }',
+    '{ function = "f", duration = "motion", meaning = "Bad" }',
+    '{ function = "f", duration = "motion", meaning = "a--b" }',
+    '{ function = "f", duration = "motion", meaning = 3 }',
+    '{ function = 1, duration = "motion" }', '{ function = "f", duration = true }',
+    '{ function = "f", duration = "motion", meanin = "x" }', '{ function = "f" }', "{ }",
+    '{ duration = "x", meaning = "a-1" }',
+    '{ function = "f", duration = "motion", status = "unassigned" }',
+    '{ function = "f", duration = "TBO", words = { P = "N" } }',
+]
+
+
+def test_a_plain_code_is_read_as_keys_reads_it(monkeypatch):
+    """A code of function, duration and meaning as strings is read without Keys
+    (formats.profile._PLAIN_CODE_KEYS): every built-in profile's codes, and each code table
+    below (good, or wrong in its key, type or meaning), the same with the short way off: the
+    same codes, or the same error naming the same key."""
+    import formats.profile as profile
+
+    head = ('name = "x"\ndetailed = "%:/ N04 G02 X+043 Y+043 Z+043 F042 S04 T02 M02*"\n'
+            "[codes]\n")
+
+    def read() -> list[object]:
+        found: list[object] = [load_profile(name).extra_codes for name in builtin_names()]
+        for letter in ("G01", "M07"):
+            for spec in _CODE_SPECS:
+                try:
+                    found.append(profile_from_text(f"{head}{letter} = {spec}\n",
+                                                   source="t").extra_codes)
+                except ProfileError as exc:
+                    found.append((str(exc), exc.key))
+        return found
+
+    short = read()
+    assert sum(isinstance(x, tuple) for x in short) == 12  # 6 refusals, for G01 and M07
+    monkeypatch.setattr(profile, "_PLAIN_CODE_KEYS", frozenset())
+    assert read() == short

@@ -1,7 +1,8 @@
 """What a check of a folder with two workers has done when it starts its first thread: the
 serial part of ``check -j`` that its threads cannot share (docs/benchmarks.md, "the serial
 start-up without enum"). Neither ``enum`` (formats.choices) nor the rules' records
-(postproc.rules.RULES, made when first asked for) are among it; the output is the same."""
+(postproc.rules.RULES, made when first asked for) nor ``threading`` (the workers run on
+``_thread``) nor ``functools`` are among it; the output is the same."""
 
 from __future__ import annotations
 
@@ -16,17 +17,18 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = "%\nN1 G21 G90\nN2 G00 X1.\nN3 M30\n%\n"
 
-# Run as the tapegate command with the given arguments; at its first thread's start, print the
-# modules loaded and whether postproc.rules has made its RULES yet, and end (printed by repr:
-# json would import re, and re enum).
+# Run as the tapegate command with the given arguments; at its first thread's start (the
+# workers' threads are _thread's: tapegate.workers), print the modules loaded and whether
+# postproc.rules has made its RULES yet, and end (printed by repr: json would import re, and
+# re enum).
 PROBE = """\
-import os, sys, threading
-def stop(self):
+import _thread, os, sys
+def stop(*args):
     rules = sys.modules.get("postproc.rules")
     made = rules is not None and "RULES" in vars(rules)
     print(repr({"modules": sorted(sys.modules), "rules_made": made}), flush=True)
     os._exit(0)
-threading.Thread.start = stop
+_thread.start_new_thread = stop
 sys.argv = ["tapegate", *sys.argv[1:]]
 from tapegate.launch import main
 main()
@@ -59,6 +61,8 @@ def test_a_check_starts_its_threads_without_enum_or_the_rules_records(folder, fm
     assert "tapegate.workers" in modules and "formats.wordformat" in modules
     assert "postproc.rules" in modules
     assert "enum" not in modules
+    assert "threading" not in modules  # the workers on _thread's locks and threads
+    assert "functools" not in modules and "types" not in modules
     assert found["rules_made"] is False
 
 
@@ -98,3 +102,31 @@ print("ok")
                           text=True, timeout=60)
     assert done.returncode == 0, done.stderr
     assert done.stdout == "ok\n"
+
+
+def test_a_commands_wrapper_reads_as_functools_wraps_leaves_it():
+    """tapegate.common's error wrapper (without functools): the command's name, docstring,
+    annotations, module, the attributes click set on it, and __wrapped__, as wraps gives."""
+    import functools
+
+    import click
+
+    from tapegate.common import user_errors
+
+    @click.option("--n", type=int, default=1)
+    def command(n: int) -> int:
+        """What it does."""
+        return n
+
+    ours = user_errors(command)
+
+    def theirs() -> None:
+        pass
+
+    functools.update_wrapper(theirs, command)
+    for name in ("__module__", "__name__", "__qualname__", "__doc__", "__annotations__",
+                 "__wrapped__"):
+        assert getattr(ours, name) == getattr(theirs, name), name
+    assert ours.__dict__ == theirs.__dict__ and "__click_params__" in ours.__dict__
+    assert ours(n=3) == 3
+    assert click.command()(ours).params[0].name == "n"

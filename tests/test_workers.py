@@ -986,3 +986,70 @@ def test_an_item_started_early_spills_past_early_pieces_and_leaves_the_budget_to
     assert seen == [(1, False, short, False), (2, True, EARLY, True)]
     assert pieces == [f"1:{k}" for k in range(short)] + [f"2:{k}" for k in range(5 * PIECES)]
     assert maps[0].held == 0
+
+
+def test_the_workers_condition_wakes_its_waiters_and_leaves_an_interrupted_one():
+    """The workers' condition (on _thread's locks, as threading.Condition): a waiter holds the
+    shared lock again when it returns; notify wakes one waiter, notify_all the rest; a wait
+    ended by KeyboardInterrupt (^C in the main thread) holds the lock again and leaves no
+    waiter behind, so a later notify wakes a real one."""
+    import _thread
+    import signal
+    import threading
+
+    import tapegate.workers as workers
+
+    lock = _thread.allocate_lock()
+    cond = workers._Condition(lock)
+    woken: list[int] = []
+
+    def waiter(n: int) -> None:
+        with cond:
+            cond.wait()
+            assert lock.locked()
+            woken.append(n)
+
+    threads = [threading.Thread(target=waiter, args=(n,), daemon=True) for n in range(3)]
+    for thread in threads:
+        thread.start()
+    while True:
+        with cond:
+            if len(cond._waiters) == 3:
+                cond.notify()
+                break
+    deadline = time.monotonic() + 30
+    while not woken and time.monotonic() < deadline:
+        time.sleep(0.01)
+    assert len(woken) == 1
+    with cond:
+        assert len(cond._waiters) == 2
+        cond.notify_all()
+    for thread in threads:
+        thread.join(timeout=30)
+    assert sorted(woken) == [0, 1, 2]
+
+    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        timer.start()
+        with pytest.raises(KeyboardInterrupt), cond:
+            try:
+                cond.wait()
+            finally:
+                assert lock.locked()  # taken back before the interrupt goes on
+        assert not lock.locked() and not cond._waiters
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, before)
+
+
+@pytest.mark.parametrize("folder", [".", "/", "//", "a", "/a/b", "//a", "..", "../x"])
+def test_a_path_below_a_folder_is_joined_as_os_path_joins_it(folder):
+    """tapegate.workers.joined, written out: os.path.join's path for a folder as pure() writes
+    it (the root "/" and "//" the only ones ending in a slash) and a relative path below it."""
+    import tapegate.workers as workers
+
+    assert workers.pure(folder) == folder
+    for below in ("p.nc", "d/p.nc", "..nc"):
+        assert workers.joined(folder, below) == (below if folder == "." else
+                                                 os.path.join(folder, below))

@@ -155,6 +155,14 @@ fn severity_index(name: &str) -> Option<usize> {
 /// never held whole (a chunk of a program with findings on every word writes megabytes).
 const SLICE: usize = 1 << 16;
 
+/// The room a checker with a report format makes for its report at once: a slice and a
+/// quarter, as a slice is handed over once a line's findings fill it. Grown from nothing, the
+/// report's buffer was moved by `realloc` about 9 times a file, and in a `-j` thread's own
+/// malloc arena each move was a copy (5M instructions of 200 files' check with `-j 2`, none
+/// with `-j 1`: docs/benchmarks.md, "what -j 2 adds"). Below glibc's mmap threshold (128
+/// KiB), so it is the arena's memory, used again by the next file.
+const WRITTEN: usize = SLICE + SLICE / 4;
+
 /// The findings `inner` made since the last call written by `writer` at the end of `written`,
 /// and counted: the part of [`Checker::write_found`] that needs no Python (run with the GIL
 /// released).
@@ -295,8 +303,12 @@ impl Checker {
             file: file.clone().into_any().unbind(),
             rules,
             make,
+            written: if writer.is_some() {
+                Vec::with_capacity(WRITTEN)
+            } else {
+                Vec::new()
+            },
             writer,
-            written: Vec::new(),
             counts: [0; 3],
             line: 0,
         })
