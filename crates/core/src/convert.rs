@@ -6499,19 +6499,26 @@ impl Converter {
                 [code.as_bytes(), b" ", first.as_slice()].concat()
             });
         }
-        // the words alone, one blank between each (compared in place, without joining them)
-        let joined_as_written = b.plain && {
-            let mut pos = 0;
-            b.words.iter().enumerate().all(|(i, w)| {
-                let blank = usize::from(i > 0);
-                let end = pos + blank + w.token.len();
-                let same = end <= b.text.len()
-                    && (blank == 0 || b.text[pos] == b' ')
-                    && &b.text[pos + blank..end] == w.token;
-                pos = end;
-                same
-            }) && pos == b.text.len()
-        };
+        // the words alone, one blank between each (compared in place, without joining them):
+        // the two ways of writing the line differ only where a word is replaced by nothing
+        // (the join drops the blank before it, the copy the blanks after it), so the
+        // comparison is made only then
+        let joined_as_written = b.plain
+            && replacements
+                .iter()
+                .any(|r| r.as_ref().is_some_and(Vec::is_empty))
+            && {
+                let mut pos = 0;
+                b.words.iter().enumerate().all(|(i, w)| {
+                    let blank = usize::from(i > 0);
+                    let end = pos + blank + w.token.len();
+                    let same = end <= b.text.len()
+                        && (blank == 0 || b.text[pos] == b' ')
+                        && &b.text[pos + blank..end] == w.token;
+                    pos = end;
+                    same
+                }) && pos == b.text.len()
+            };
         // (into a buffer of the spare ones: the caller may give each line's back, `give_back`)
         let mut out = self.spare.pop().unwrap_or_default();
         out.reserve(b.text.len() + 8);
@@ -8004,6 +8011,120 @@ mod tests {
                 .is_ok());
         }
         assert_eq!(converter.left_as_written, Left::default());
+    }
+
+    /// [`Converter::text`] compares the words with the line only where a word is replaced by
+    /// nothing: on 100,000 drawn lines (words of letters and digits, one or more blanks or none
+    /// between them, blanks before and after, plain or not, each word replaced by nothing, by
+    /// another text or not at all) it writes what the reference writes, which compares on
+    /// every line (the join where the line is its words one blank apart, else the copy).
+    #[test]
+    fn a_line_is_written_as_the_reference_writes_it_on_drawn_lines() {
+        fn reference(b: &BlockIn<'_>, replacements: &[Option<Vec<u8>>]) -> Vec<u8> {
+            let mut pos = 0;
+            let joined = b.plain
+                && b.words.iter().enumerate().all(|(i, w)| {
+                    let blank = usize::from(i > 0);
+                    let end = pos + blank + w.token.len();
+                    let same = end <= b.text.len()
+                        && (blank == 0 || b.text[pos] == b' ')
+                        && &b.text[pos + blank..end] == w.token;
+                    pos = end;
+                    same
+                })
+                && pos == b.text.len();
+            let mut out = Vec::new();
+            if joined {
+                let words = replacements.iter().zip(b.words);
+                let kept = words.map(|(r, w)| r.as_deref().unwrap_or(w.token));
+                let kept: Vec<&[u8]> = kept.filter(|w| !w.is_empty()).collect();
+                return kept.join(&b' ');
+            }
+            let mut pos = 0;
+            for (r, w) in replacements.iter().zip(b.words) {
+                if let Some(new) = r {
+                    out.extend_from_slice(&b.text[pos..w.start]);
+                    out.extend_from_slice(new);
+                    pos = w.end;
+                    if new.is_empty() {
+                        pos += b.text[pos..].iter().take_while(|&&c| c == b' ').count();
+                    }
+                }
+            }
+            out.extend_from_slice(&b.text[pos..]);
+            out
+        }
+        let mut converter = Converter::new(fanuc(false));
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        for _ in 0..100_000 {
+            let count = 1 + (next() % 6) as usize;
+            let mut text = Vec::new();
+            let mut places = Vec::new();
+            text.extend(std::iter::repeat_n(
+                b' ',
+                usize::from(next().is_multiple_of(8)),
+            ));
+            for i in 0..count {
+                if i > 0 {
+                    // one blank mostly, none or three now and then
+                    let blanks = match next() % 10 {
+                        0 => 3,
+                        1 => 0,
+                        _ => 1,
+                    };
+                    text.extend(std::iter::repeat_n(b' ', blanks));
+                }
+                let start = text.len();
+                text.push(b"XYZGNF"[(next() % 6) as usize]);
+                let digits = 1 + next() % 5;
+                for _ in 0..digits {
+                    text.push(b'0' + (next() % 10) as u8);
+                }
+                places.push((start, text.len()));
+            }
+            text.extend(std::iter::repeat_n(
+                b' ',
+                usize::from(next().is_multiple_of(8)),
+            ));
+            let words: Vec<WordSpan<'_>> = places
+                .iter()
+                .map(|&(start, end)| WordSpan {
+                    token: &text[start..end],
+                    start,
+                    end,
+                    plain: None,
+                    digits: Default::default(),
+                })
+                .collect();
+            let replacements: Vec<Option<Vec<u8>>> = (0..count)
+                .map(|_| match next() % 4 {
+                    0 => Some(Vec::new()),
+                    1 => Some(b"X1.5".to_vec()),
+                    _ => None,
+                })
+                .collect();
+            let b = BlockIn {
+                line: 1,
+                text: &text,
+                words: &words,
+                plain: !next().is_multiple_of(4),
+                percent: false,
+                skip: b"",
+                skip_within: None,
+                comments: &[],
+                statements: &[],
+            };
+            let expected = reference(&b, &replacements);
+            let mut given = replacements.clone();
+            let written = converter.text(&b, &mut given, None);
+            assert_eq!(
+                written,
+                expected,
+                "{:?} {:?}",
+                String::from_utf8_lossy(&text),
+                replacements
+            );
+        }
     }
 
     fn spans(words: &[&'static str]) -> Vec<WordSpan<'static>> {
