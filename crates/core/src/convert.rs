@@ -2074,6 +2074,17 @@ impl Converter {
         if self.length == ONE {
             return Ok(());
         }
+        // every read of the flag begins with `#` or (SINUMERIK) `$`, and a word's token and a
+        // statement's text are bytes of the line (the token without its blanks at most): a
+        // line without the marker holds none, and its words are not looked at one by one
+        let marker = if self.c.family == Family::Sinumerik {
+            b'$'
+        } else {
+            b'#'
+        };
+        if memchr::memchr(marker, b.text).is_none() {
+            return Ok(());
+        }
         let pieces = b
             .words
             .iter()
@@ -3253,6 +3264,12 @@ impl Converter {
             return;
         }
         let closed = |w: &WordSpan<'_>| -> bool {
+            // a span as long as its token holds no blank beside it (a span with a blank that
+            // spells the token is longer), so most words are passed over without a look at
+            // their bytes
+            if w.end.checked_sub(w.start) == Some(w.token.len()) {
+                return false;
+            }
             let Some(text) = b.text.get(w.start..w.end) else {
                 return false;
             };
@@ -8125,6 +8142,112 @@ mod tests {
                 replacements
             );
         }
+    }
+
+    /// [`Converter::close_blanks`] passes over a word whose span is as long as its token:
+    /// such a span never both holds a blank and spells the token, which is what the full look
+    /// asks first. Drawn spans and tokens of letters, digits, signs, points, blanks and tabs,
+    /// the token the span without its blanks (in either case), or another text of its length.
+    #[test]
+    fn a_span_as_long_as_its_token_has_no_blank_to_close() {
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let bytes = b"XxYz019.-+#[] \t";
+        let (mut spelled, mut blanks) = (0, 0);
+        for _ in 0..200_000 {
+            let len = 1 + (next() % 8) as usize;
+            let span: Vec<u8> = (0..len)
+                .map(|_| bytes[(next() % bytes.len() as u64) as usize])
+                .collect();
+            let token: Vec<u8> = match next() % 3 {
+                0 => span
+                    .iter()
+                    .copied()
+                    .filter(|c| !matches!(c, b' ' | b'\t'))
+                    .collect(),
+                1 => span.to_ascii_uppercase(),
+                _ => (0..len)
+                    .map(|_| bytes[(next() % bytes.len() as u64) as usize])
+                    .collect(),
+            };
+            let blank = span.iter().any(|c| matches!(c, b' ' | b'\t'));
+            let spells_it = spells(&span, &token);
+            spelled += usize::from(spells_it);
+            blanks += usize::from(spells_it && blank);
+            if span.len() == token.len() {
+                assert!(!(blank && spells_it), "{span:?} {token:?}");
+            }
+        }
+        // (the draw reaches both: spans that spell their token, with blanks among them)
+        assert!(spelled > 10_000 && blanks > 10_000, "{spelled} {blanks}");
+    }
+
+    /// [`Converter::units_flag`] looks at a line's words only where the line holds the
+    /// marker (`#`, `$`): on 300,000 drawn lines under every family's dialect, every word's
+    /// token and every statement's text that holds a marker comes from a line that holds it
+    /// (the tokens are the line's bytes, without their blanks at most).
+    #[test]
+    fn a_word_or_statement_holds_a_marker_only_where_its_line_does() {
+        const BYTES: &[u8] = b"XGNRPo#$=+-.019 \t[]()<>*;:_AMLS";
+        const PIECES: [&str; 16] = [
+            "X1.5 ",
+            "#1=2 ",
+            "X#1 ",
+            "#<a> ",
+            "$P_GG[13] ",
+            "G1 ",
+            "R1=#2 ",
+            " ",
+            "N10 ",
+            "X[#1+2] ",
+            "$AA_IW[X] ",
+            "(c#) ",
+            ";c$",
+            "IF #1 ",
+            "X=$A ",
+            "TURN=0 ",
+        ];
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
+        let mut marked = 0;
+        for _ in 0..300_000 {
+            // (half of them of a program's pieces, which read more often than bytes do)
+            let len = 1 + (next() % 24) as usize;
+            let line: Vec<u8> = if next().is_multiple_of(2) {
+                (0..len)
+                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
+                    .collect()
+            } else {
+                (0..len / 3 + 1)
+                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                    .collect()
+            };
+            let dialect = &dialects[(next() % dialects.len() as u64) as usize];
+            let mut tokens = Vec::new();
+            let Ok(extras) = tokenize(&line, dialect, &mut tokens) else {
+                continue;
+            };
+            let statements = extras
+                .as_ref()
+                .map(|e| e.statement_texts(&line))
+                .unwrap_or_default();
+            let pieces = tokens
+                .iter()
+                .map(|t| &*t.text)
+                .chain(statements.iter().map(|s| s.2));
+            for piece in pieces {
+                for marker in [b'#', b'$'] {
+                    if piece.contains(&marker) {
+                        marked += 1;
+                        assert!(
+                            line.contains(&marker),
+                            "{:?} {dialect:?}",
+                            String::from_utf8_lossy(&line)
+                        );
+                    }
+                }
+            }
+        }
+        assert!(marked > 10_000, "{marked}");
     }
 
     fn spans(words: &[&'static str]) -> Vec<WordSpan<'static>> {
