@@ -5397,12 +5397,13 @@ impl Converter {
         if k == Kind::Code && out.last() == Some(&b'.') {
             out.pop(); // a whole code is written whole: G55, not G55.
         }
-        if out != token
-            && explicit_out
+        // (the texts compared last: a word scaled by a change of units passes on its factor)
+        if explicit_out
             && factor == ONE
             && (dot || (self.explicit_in(letter) && !src_increments))
             && (dot || !self.dst_letters.increments(letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
+            && out != token
         {
             out.clear();
             out.extend_from_slice(token);
@@ -6558,7 +6559,12 @@ impl Converter {
         let mut pos = 0;
         for (r, w) in replacements.iter().zip(b.words) {
             if let Some(new) = r {
-                out.extend_from_slice(&b.text[pos..w.start]);
+                // (the text between two words is mostly one blank: pushed, not copied by a
+                // call of memcpy)
+                match &b.text[pos..w.start] {
+                    [c] => out.push(*c),
+                    between => out.extend_from_slice(between),
+                }
                 out.extend_from_slice(new);
                 pos = w.end;
                 if new.is_empty() {
