@@ -910,11 +910,12 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
         b'#'
     };
     memchr::memchr(marker, piece)?;
-    let upper = piece.to_ascii_uppercase();
     match family {
         Family::LinuxCnc => {
-            for (at, _) in upper.iter().enumerate().filter(|&(_, &c)| c == b'#') {
-                let rest = &upper[at + 1..];
+            // (the word as written, its name compared in either case: no upper-case copy of
+            // every word that reads a parameter, and no copy of each name)
+            for at in memchr::memchr_iter(b'#', piece) {
+                let rest = &piece[at + 1..];
                 let Some(open) = rest.iter().position(|&c| !crate::lex::blank(c)) else {
                     continue;
                 };
@@ -924,12 +925,16 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
                 let Some(close) = rest[open..].iter().position(|&c| c == b'>') else {
                     continue;
                 };
-                let name: Vec<u8> = rest[open + 1..open + close]
+                let name = rest[open + 1..open + close]
                     .iter()
-                    .copied()
-                    .filter(|&c| !crate::lex::blank(c))
-                    .collect();
-                if name == b"_METRIC" || name == b"_IMPERIAL" {
+                    .filter(|&&c| !crate::lex::blank(c));
+                let is = |flag: &[u8]| {
+                    let mut name = name.clone();
+                    flag.iter()
+                        .all(|f| name.next().is_some_and(|c| c.eq_ignore_ascii_case(f)))
+                        && name.next().is_none()
+                };
+                if is(b"_METRIC") || is(b"_IMPERIAL") {
                     return Some((at, text(&piece[at..at + 1 + open + close + 1])));
                 }
             }
@@ -944,6 +949,7 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
             })
             .or_else(|| macro_b_indirect_flag(piece)),
         Family::Sinumerik => {
+            let upper = piece.to_ascii_uppercase();
             let at = memchr::memmem::find(&upper, b"$P_GG")?;
             let rest: Vec<u8> = upper[at + 5..]
                 .iter()
@@ -8254,6 +8260,72 @@ mod tests {
             }
         }
         assert!(marked > 10_000, "{marked}");
+    }
+
+    /// [`units_flag_read`] of a LinuxCNC word, which compares the names in either case in
+    /// place, finds what the upper-case copy it replaces found: 300,000 drawn pieces of `#`,
+    /// `<`, `>`, blanks, tabs and the flags' letters in either case (and whole flag names among
+    /// them), against that reading.
+    #[test]
+    fn the_linuxcnc_units_flag_is_found_as_the_upper_case_copy_found_it() {
+        fn reference(piece: &[u8]) -> Option<(usize, String)> {
+            memchr::memchr(b'#', piece)?;
+            let upper = piece.to_ascii_uppercase();
+            for (at, _) in upper.iter().enumerate().filter(|&(_, &c)| c == b'#') {
+                let rest = &upper[at + 1..];
+                let Some(open) = rest.iter().position(|&c| !crate::lex::blank(c)) else {
+                    continue;
+                };
+                if rest[open] != b'<' {
+                    continue;
+                }
+                let Some(close) = rest[open..].iter().position(|&c| c == b'>') else {
+                    continue;
+                };
+                let name: Vec<u8> = rest[open + 1..open + close]
+                    .iter()
+                    .copied()
+                    .filter(|&c| !crate::lex::blank(c))
+                    .collect();
+                if name == b"_METRIC" || name == b"_IMPERIAL" {
+                    return Some((at, text(&piece[at..at + 1 + open + close + 1])));
+                }
+            }
+            None
+        }
+        const PIECES: [&str; 14] = [
+            "#",
+            "<",
+            ">",
+            " ",
+            "\t",
+            "_metric",
+            "_IMPERIAL",
+            "_Metri",
+            "c",
+            "l",
+            "x",
+            "1",
+            "#<_metric>",
+            "#< _imp erial >",
+        ];
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        let mut found = 0;
+        for _ in 0..300_000 {
+            let count = 1 + (next() % 10) as usize;
+            let piece: Vec<u8> = (0..count)
+                .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                .collect();
+            let expected = reference(&piece);
+            found += usize::from(expected.is_some());
+            assert_eq!(
+                units_flag_read(&piece, Family::LinuxCnc),
+                expected,
+                "{:?}",
+                String::from_utf8_lossy(&piece)
+            );
+        }
+        assert!(found > 10_000, "{found}");
     }
 
     fn spans(words: &[&'static str]) -> Vec<WordSpan<'static>> {
