@@ -910,11 +910,12 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
         b'#'
     };
     memchr::memchr(marker, piece)?;
-    let upper = piece.to_ascii_uppercase();
     match family {
         Family::LinuxCnc => {
-            for (at, _) in upper.iter().enumerate().filter(|&(_, &c)| c == b'#') {
-                let rest = &upper[at + 1..];
+            // (the word as written, its name compared in either case: no upper-case copy of
+            // every word that reads a parameter, and no copy of each name)
+            for at in memchr::memchr_iter(b'#', piece) {
+                let rest = &piece[at + 1..];
                 let Some(open) = rest.iter().position(|&c| !crate::lex::blank(c)) else {
                     continue;
                 };
@@ -924,12 +925,16 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
                 let Some(close) = rest[open..].iter().position(|&c| c == b'>') else {
                     continue;
                 };
-                let name: Vec<u8> = rest[open + 1..open + close]
+                let name = rest[open + 1..open + close]
                     .iter()
-                    .copied()
-                    .filter(|&c| !crate::lex::blank(c))
-                    .collect();
-                if name == b"_METRIC" || name == b"_IMPERIAL" {
+                    .filter(|&&c| !crate::lex::blank(c));
+                let is = |flag: &[u8]| {
+                    let mut name = name.clone();
+                    flag.iter()
+                        .all(|f| name.next().is_some_and(|c| c.eq_ignore_ascii_case(f)))
+                        && name.next().is_none()
+                };
+                if is(b"_METRIC") || is(b"_IMPERIAL") {
                     return Some((at, text(&piece[at..at + 1 + open + close + 1])));
                 }
             }
@@ -944,6 +949,7 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
             })
             .or_else(|| macro_b_indirect_flag(piece)),
         Family::Sinumerik => {
+            let upper = piece.to_ascii_uppercase();
             let at = memchr::memmem::find(&upper, b"$P_GG")?;
             let rest: Vec<u8> = upper[at + 5..]
                 .iter()
@@ -2072,6 +2078,17 @@ impl Converter {
     /// G700 G710: Lists, "G functions" group 13) or a `$P_GG` whose group is a value.
     fn units_flag(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if self.length == ONE {
+            return Ok(());
+        }
+        // every read of the flag begins with `#` or (SINUMERIK) `$`, and a word's token and a
+        // statement's text are bytes of the line (the token without its blanks at most): a
+        // line without the marker holds none, and its words are not looked at one by one
+        let marker = if self.c.family == Family::Sinumerik {
+            b'$'
+        } else {
+            b'#'
+        };
+        if memchr::memchr(marker, b.text).is_none() {
             return Ok(());
         }
         let pieces = b
@@ -3254,6 +3271,12 @@ impl Converter {
             return;
         }
         let closed = |w: &WordSpan<'_>| -> bool {
+            // a span as long as its token holds no blank beside it (a span with a blank that
+            // spells the token is longer), so most words are passed over without a look at
+            // their bytes
+            if w.end.checked_sub(w.start) == Some(w.token.len()) {
+                return false;
+            }
             let Some(text) = b.text.get(w.start..w.end) else {
                 return false;
             };
@@ -5437,12 +5460,13 @@ impl Converter {
         if k == Kind::Code && out.last() == Some(&b'.') {
             out.pop(); // a whole code is written whole: G55, not G55.
         }
-        if out != token
-            && explicit_out
+        // (the texts compared last: a word scaled by a change of units passes on its factor)
+        if explicit_out
             && factor == ONE
             && (dot || (self.explicit_in(letter) && !src_increments))
             && (dot || !self.dst_letters.increments(letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
+            && out != token
         {
             out.clear();
             out.extend_from_slice(token);
@@ -6589,19 +6613,26 @@ impl Converter {
                 [code.as_bytes(), b" ", first.as_slice()].concat()
             });
         }
-        // the words alone, one blank between each (compared in place, without joining them)
-        let joined_as_written = b.plain && {
-            let mut pos = 0;
-            b.words.iter().enumerate().all(|(i, w)| {
-                let blank = usize::from(i > 0);
-                let end = pos + blank + w.token.len();
-                let same = end <= b.text.len()
-                    && (blank == 0 || b.text[pos] == b' ')
-                    && &b.text[pos + blank..end] == w.token;
-                pos = end;
-                same
-            }) && pos == b.text.len()
-        };
+        // the words alone, one blank between each (compared in place, without joining them):
+        // the two ways of writing the line differ only where a word is replaced by nothing
+        // (the join drops the blank before it, the copy the blanks after it), so the
+        // comparison is made only then
+        let joined_as_written = b.plain
+            && replacements
+                .iter()
+                .any(|r| r.as_ref().is_some_and(Vec::is_empty))
+            && {
+                let mut pos = 0;
+                b.words.iter().enumerate().all(|(i, w)| {
+                    let blank = usize::from(i > 0);
+                    let end = pos + blank + w.token.len();
+                    let same = end <= b.text.len()
+                        && (blank == 0 || b.text[pos] == b' ')
+                        && &b.text[pos + blank..end] == w.token;
+                    pos = end;
+                    same
+                }) && pos == b.text.len()
+            };
         // (into a buffer of the spare ones: the caller may give each line's back, `give_back`)
         let mut out = self.spare.pop().unwrap_or_default();
         out.reserve(b.text.len() + 8);
@@ -6624,7 +6655,12 @@ impl Converter {
         let mut pos = 0;
         for (r, w) in replacements.iter().zip(b.words) {
             if let Some(new) = r {
-                out.extend_from_slice(&b.text[pos..w.start]);
+                // (the text between two words is mostly one blank: pushed, not copied by a
+                // call of memcpy)
+                match &b.text[pos..w.start] {
+                    [c] => out.push(*c),
+                    between => out.extend_from_slice(between),
+                }
                 out.extend_from_slice(new);
                 pos = w.end;
                 if new.is_empty() {
@@ -8103,6 +8139,292 @@ mod tests {
                 .is_ok());
         }
         assert_eq!(converter.left_as_written, Left::default());
+    }
+
+    /// [`Converter::text`] compares the words with the line only where a word is replaced by
+    /// nothing: on 100,000 drawn lines (words of letters and digits, one or more blanks or none
+    /// between them, blanks before and after, plain or not, each word replaced by nothing, by
+    /// another text or not at all) it writes what the reference writes, which compares on
+    /// every line (the join where the line is its words one blank apart, else the copy).
+    #[test]
+    fn a_line_is_written_as_the_reference_writes_it_on_drawn_lines() {
+        fn reference(b: &BlockIn<'_>, replacements: &[Option<Vec<u8>>]) -> Vec<u8> {
+            let mut pos = 0;
+            let joined = b.plain
+                && b.words.iter().enumerate().all(|(i, w)| {
+                    let blank = usize::from(i > 0);
+                    let end = pos + blank + w.token.len();
+                    let same = end <= b.text.len()
+                        && (blank == 0 || b.text[pos] == b' ')
+                        && &b.text[pos + blank..end] == w.token;
+                    pos = end;
+                    same
+                })
+                && pos == b.text.len();
+            let mut out = Vec::new();
+            if joined {
+                let words = replacements.iter().zip(b.words);
+                let kept = words.map(|(r, w)| r.as_deref().unwrap_or(w.token));
+                let kept: Vec<&[u8]> = kept.filter(|w| !w.is_empty()).collect();
+                return kept.join(&b' ');
+            }
+            let mut pos = 0;
+            for (r, w) in replacements.iter().zip(b.words) {
+                if let Some(new) = r {
+                    out.extend_from_slice(&b.text[pos..w.start]);
+                    out.extend_from_slice(new);
+                    pos = w.end;
+                    if new.is_empty() {
+                        pos += b.text[pos..].iter().take_while(|&&c| c == b' ').count();
+                    }
+                }
+            }
+            out.extend_from_slice(&b.text[pos..]);
+            out
+        }
+        let mut converter = Converter::new(fanuc(false));
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        for _ in 0..100_000 {
+            let count = 1 + (next() % 6) as usize;
+            let mut text = Vec::new();
+            let mut places = Vec::new();
+            text.extend(std::iter::repeat_n(
+                b' ',
+                usize::from(next().is_multiple_of(8)),
+            ));
+            for i in 0..count {
+                if i > 0 {
+                    // one blank mostly, none or three now and then
+                    let blanks = match next() % 10 {
+                        0 => 3,
+                        1 => 0,
+                        _ => 1,
+                    };
+                    text.extend(std::iter::repeat_n(b' ', blanks));
+                }
+                let start = text.len();
+                text.push(b"XYZGNF"[(next() % 6) as usize]);
+                let digits = 1 + next() % 5;
+                for _ in 0..digits {
+                    text.push(b'0' + (next() % 10) as u8);
+                }
+                places.push((start, text.len()));
+            }
+            text.extend(std::iter::repeat_n(
+                b' ',
+                usize::from(next().is_multiple_of(8)),
+            ));
+            let words: Vec<WordSpan<'_>> = places
+                .iter()
+                .map(|&(start, end)| WordSpan {
+                    token: &text[start..end],
+                    start,
+                    end,
+                    plain: None,
+                    digits: Default::default(),
+                })
+                .collect();
+            let replacements: Vec<Option<Vec<u8>>> = (0..count)
+                .map(|_| match next() % 4 {
+                    0 => Some(Vec::new()),
+                    1 => Some(b"X1.5".to_vec()),
+                    _ => None,
+                })
+                .collect();
+            let b = BlockIn {
+                line: 1,
+                text: &text,
+                words: &words,
+                plain: !next().is_multiple_of(4),
+                percent: false,
+                skip: b"",
+                skip_within: None,
+                comments: &[],
+                statements: &[],
+            };
+            let expected = reference(&b, &replacements);
+            let mut given = replacements.clone();
+            let written = converter.text(&b, &mut given, None);
+            assert_eq!(
+                written,
+                expected,
+                "{:?} {:?}",
+                String::from_utf8_lossy(&text),
+                replacements
+            );
+        }
+    }
+
+    /// [`Converter::close_blanks`] passes over a word whose span is as long as its token:
+    /// such a span never both holds a blank and spells the token, which is what the full look
+    /// asks first. Drawn spans and tokens of letters, digits, signs, points, blanks and tabs,
+    /// the token the span without its blanks (in either case), or another text of its length.
+    #[test]
+    fn a_span_as_long_as_its_token_has_no_blank_to_close() {
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let bytes = b"XxYz019.-+#[] \t";
+        let (mut spelled, mut blanks) = (0, 0);
+        for _ in 0..200_000 {
+            let len = 1 + (next() % 8) as usize;
+            let span: Vec<u8> = (0..len)
+                .map(|_| bytes[(next() % bytes.len() as u64) as usize])
+                .collect();
+            let token: Vec<u8> = match next() % 3 {
+                0 => span
+                    .iter()
+                    .copied()
+                    .filter(|c| !matches!(c, b' ' | b'\t'))
+                    .collect(),
+                1 => span.to_ascii_uppercase(),
+                _ => (0..len)
+                    .map(|_| bytes[(next() % bytes.len() as u64) as usize])
+                    .collect(),
+            };
+            let blank = span.iter().any(|c| matches!(c, b' ' | b'\t'));
+            let spells_it = spells(&span, &token);
+            spelled += usize::from(spells_it);
+            blanks += usize::from(spells_it && blank);
+            if span.len() == token.len() {
+                assert!(!(blank && spells_it), "{span:?} {token:?}");
+            }
+        }
+        // (the draw reaches both: spans that spell their token, with blanks among them)
+        assert!(spelled > 10_000 && blanks > 10_000, "{spelled} {blanks}");
+    }
+
+    /// [`Converter::units_flag`] looks at a line's words only where the line holds the
+    /// marker (`#`, `$`): on 300,000 drawn lines under every family's dialect, every word's
+    /// token and every statement's text that holds a marker comes from a line that holds it
+    /// (the tokens are the line's bytes, without their blanks at most).
+    #[test]
+    fn a_word_or_statement_holds_a_marker_only_where_its_line_does() {
+        const BYTES: &[u8] = b"XGNRPo#$=+-.019 \t[]()<>*;:_AMLS";
+        const PIECES: [&str; 16] = [
+            "X1.5 ",
+            "#1=2 ",
+            "X#1 ",
+            "#<a> ",
+            "$P_GG[13] ",
+            "G1 ",
+            "R1=#2 ",
+            " ",
+            "N10 ",
+            "X[#1+2] ",
+            "$AA_IW[X] ",
+            "(c#) ",
+            ";c$",
+            "IF #1 ",
+            "X=$A ",
+            "TURN=0 ",
+        ];
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
+        let mut marked = 0;
+        for _ in 0..300_000 {
+            // (half of them of a program's pieces, which read more often than bytes do)
+            let len = 1 + (next() % 24) as usize;
+            let line: Vec<u8> = if next().is_multiple_of(2) {
+                (0..len)
+                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
+                    .collect()
+            } else {
+                (0..len / 3 + 1)
+                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                    .collect()
+            };
+            let dialect = &dialects[(next() % dialects.len() as u64) as usize];
+            let mut tokens = Vec::new();
+            let Ok(extras) = tokenize(&line, dialect, &mut tokens) else {
+                continue;
+            };
+            let statements = extras
+                .as_ref()
+                .map(|e| e.statement_texts(&line))
+                .unwrap_or_default();
+            let pieces = tokens
+                .iter()
+                .map(|t| &*t.text)
+                .chain(statements.iter().map(|s| s.2));
+            for piece in pieces {
+                for marker in [b'#', b'$'] {
+                    if piece.contains(&marker) {
+                        marked += 1;
+                        assert!(
+                            line.contains(&marker),
+                            "{:?} {dialect:?}",
+                            String::from_utf8_lossy(&line)
+                        );
+                    }
+                }
+            }
+        }
+        assert!(marked > 10_000, "{marked}");
+    }
+
+    /// [`units_flag_read`] of a LinuxCNC word, which compares the names in either case in
+    /// place, finds what the upper-case copy it replaces found: 300,000 drawn pieces of `#`,
+    /// `<`, `>`, blanks, tabs and the flags' letters in either case (and whole flag names among
+    /// them), against that reading.
+    #[test]
+    fn the_linuxcnc_units_flag_is_found_as_the_upper_case_copy_found_it() {
+        fn reference(piece: &[u8]) -> Option<(usize, String)> {
+            memchr::memchr(b'#', piece)?;
+            let upper = piece.to_ascii_uppercase();
+            for (at, _) in upper.iter().enumerate().filter(|&(_, &c)| c == b'#') {
+                let rest = &upper[at + 1..];
+                let Some(open) = rest.iter().position(|&c| !crate::lex::blank(c)) else {
+                    continue;
+                };
+                if rest[open] != b'<' {
+                    continue;
+                }
+                let Some(close) = rest[open..].iter().position(|&c| c == b'>') else {
+                    continue;
+                };
+                let name: Vec<u8> = rest[open + 1..open + close]
+                    .iter()
+                    .copied()
+                    .filter(|&c| !crate::lex::blank(c))
+                    .collect();
+                if name == b"_METRIC" || name == b"_IMPERIAL" {
+                    return Some((at, text(&piece[at..at + 1 + open + close + 1])));
+                }
+            }
+            None
+        }
+        const PIECES: [&str; 14] = [
+            "#",
+            "<",
+            ">",
+            " ",
+            "\t",
+            "_metric",
+            "_IMPERIAL",
+            "_Metri",
+            "c",
+            "l",
+            "x",
+            "1",
+            "#<_metric>",
+            "#< _imp erial >",
+        ];
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        let mut found = 0;
+        for _ in 0..300_000 {
+            let count = 1 + (next() % 10) as usize;
+            let piece: Vec<u8> = (0..count)
+                .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                .collect();
+            let expected = reference(&piece);
+            found += usize::from(expected.is_some());
+            assert_eq!(
+                units_flag_read(&piece, Family::LinuxCnc),
+                expected,
+                "{:?}",
+                String::from_utf8_lossy(&piece)
+            );
+        }
+        assert!(found > 10_000, "{found}");
     }
 
     fn spans(words: &[&'static str]) -> Vec<WordSpan<'static>> {
