@@ -164,6 +164,11 @@ pub struct ConvertConfig {
     /// The target's control family: on Sinumerik its units codes G70/G71 leave the feed in the
     /// basic system (the target's units) and G700/G710 set it too.
     pub target_family: Family,
+    /// What the target profile's dialect reads (its `#` parameters, `[ ]` expressions, `*`):
+    /// a word holding one it does not read is refused ([`Converter::statements`]), whatever
+    /// the target's family reads elsewhere (an ISO 6983-1 profile reads `#` only where its
+    /// characters allow it).
+    pub target_dialect: crate::lex::Dialect,
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
@@ -4524,12 +4529,39 @@ impl Converter {
             // could not be read there, or would do something else
             return Err(self.foreign(b, offset, statement, "a statement of", "statements"));
         }
-        if !reads_hash_parameters(self.c.target_family) && reads_hash_parameters(self.c.family) {
-            // a `#` parameter (`#1=5.`, `X#1`) carried as written would be a character the
-            // target control does not read: refused as a statement of another family is
-            if let Some(w) = b.words.iter().find(|w| w.token.contains(&b'#')) {
+        // a `#` parameter (`#1=5.`, `X#1`), an expression in `[ ]` or its `*` carried as
+        // written would be a character the target's dialect does not read (an ISO 6983-1
+        // profile's characters are Annex A's and those it adds): its control refuses the word,
+        // as tapegate's check on the target profile does (TG101, TG100)
+        let reads = &self.c.target_dialect;
+        if let Some((w, at)) = b
+            .words
+            .iter()
+            .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
+        {
+            if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
+                // the target's family reads no `#` at all: refused as a statement of another
+                // family is
                 return Err(self.foreign(b, w.start, w.token, "a parameter of", "parameters"));
             }
+            let (c, what) = match w.token[at] {
+                b'#' => ('#', "a `#` parameter"),
+                b'*' => ('*', "an expression's '*'"),
+                c => (c as char, "an expression in [ ]"),
+            };
+            return Err(ConvertError {
+                message: format!(
+                    "{:?}: {what}, which the target profile's dialect does not read ('{c}' is \
+                     not among the characters it allows: its control refuses the word, as \
+                     tapegate's check on that profile does); tapegate does not work out \
+                     parameters or expressions into numbers: convert for a profile that reads \
+                     them, or write the values",
+                    text(w.token)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, w.start + at),
+                line: None,
+            });
         }
         if self.c.family == Family::Sinumerik && self.c.target_family != Family::Sinumerik {
             // a SINUMERIK's word with '=' (X=R1+5, R1=5, an extended address S1=470, X4=20,
@@ -7083,9 +7115,6 @@ fn family_name(family: Family) -> &'static str {
     }
 }
 
-/// Whether a family's controls read `#` parameters (`#1=5.`, `X#1`): ISO 6983-1's 6.4.7,
-/// Custom Macro B, LinuxCNC; a SINUMERIK (R parameters), a HEIDENHAIN (Q) and an Okuma OSP (V
-/// variables) do not.
 /// A G word's code in tenths (`G41.1` 411, `G1` 10), from the token's number after its
 /// letter; None for a code written otherwise (`G#1`) or finer than tenths.
 fn g_tenths(token: &[u8]) -> Option<i64> {
@@ -7097,8 +7126,23 @@ fn g_tenths(token: &[u8]) -> Option<i64> {
         .map(|t| t.round() as i64)
 }
 
+/// Whether a family's controls read `#` parameters (`#1=5.`, `X#1`): ISO 6983-1's 6.4.7,
+/// Custom Macro B, LinuxCNC; a SINUMERIK (R parameters), a HEIDENHAIN (Q) and an Okuma OSP (V
+/// variables) do not. (Whether a profile of the family does is its dialect's:
+/// [`ConvertConfig::target_dialect`].)
 fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
+}
+
+/// The offset in a word's `token` of its first character that `reads` does not read: a `#`
+/// (a parameter), `[` or `]` (an expression), `*` (an expression's multiplication).
+fn unread_character(token: &[u8], reads: &crate::lex::Dialect) -> Option<usize> {
+    token.iter().position(|&c| match c {
+        b'#' => !reads.hash,
+        b'[' | b']' => !reads.brackets,
+        b'*' => !reads.star,
+        _ => false,
+    })
 }
 
 /// Whether a statement holds lengths by the roles of its words, with no `=` or brackets to
@@ -7506,6 +7550,7 @@ mod tests {
             src_increment: [3, 4],
             out_increment: [3, 4],
             target_family: Family::MacroB,
+            target_dialect: crate::lex::Dialect::permissive(Family::MacroB),
             same_cycle_table: true,
             target_g_system: None,
             target_data_input: true,

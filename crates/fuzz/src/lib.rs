@@ -418,6 +418,18 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         } else {
             Family::Iso
         },
+        // the target reads every form the source may write (`#`, `[ ]`, `*`)
+        target_dialect: Dialect {
+            family: if variant >= 2 {
+                Family::MacroB
+            } else {
+                Family::Iso
+            },
+            hash: true,
+            brackets: true,
+            star: true,
+            ..Dialect::default()
+        },
         same_cycle_table: true,
         target_g_system: None,
         target_data_input: true,
