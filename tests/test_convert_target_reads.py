@@ -7,6 +7,9 @@ nothing the conversion carried.
    iso-lathe, cm332-quadrant, pm322-eia, sinumerik-7e2) reads none of `#[]`: a FANUC
    `#1=2.5`, `X#1`, `X[#1*2]` converted for one said ok and its check refused the output
    (TG101, TG100). Refused at the source word now (docs/convert.md, "What the target reads").
+2. A FANUC word rs274 refuses with the motion in force (`G1 X1 R5`, `G0 X1 P2`, `L`, `Q`, I J K
+   outside arcs): refused at the word with rs274's message (docs/convert.md, "A letter
+   LinuxCNC reads otherwise").
 """
 
 from __future__ import annotations
@@ -110,3 +113,88 @@ def test_a_user_iso_profile_that_allows_hash_is_given_the_parameter(tmp_path):
     blocks = parse_text(out, profile.dialect, file="out.nc", errors="collect")
     assert not [f for f in Checker(profile, file="out.nc").run(iter(blocks))
                 if f.severity == "error" and f.rule[:3] in ("TG1", "TG2")]
+
+
+# -- 2. words LinuxCNC refuses with the motion in force ---------------------------------------
+
+LETTERS_REFUSED = [
+    # (the FANUC block after `G0 X0 Y0 Z5.`, the refused word, the motion LinuxCNC runs)
+    ("G1 X1. R5. F100.", "R5.", "G1"),
+    ("G0 X1. P2", "P2", "G0"),
+    ("G1 X1. L2 F100.", "L2", "G1"),
+    ("G1 X1. Q2. F100.", "Q2.", "G1"),
+    ("G1 X1. I1. F100.", "I1.", "G1"),
+    ("G0 X1. J1.", "J1.", "G0"),
+    ("G1 X1. K1. F100.", "K1.", "G1"),
+    ("G2 X1. Y1. R1. L2 F100.", "L2", "G2"),
+    ("G2 X1. Y1. R1. Q2. F100.", "Q2.", "G2"),
+    ("G81 X1. Y1. Z-1. R1. P1000 F100.", "P1000", "G81"),  # G81 has no dwell on LinuxCNC
+    ("G81 X1. Y1. Z-1. R1. Q1. F100.", "Q1.", "G81"),
+    ("G81 X1. Y1. Z-1. R1. K2 F100.", "K2", "G81"),  # FANUC's repeat count: LinuxCNC's is L
+    ("G1 X2. F100.\nX3. R1.", "R1.", "G1"),  # the motion in force
+    ("G1 X2. F100.\nR1.", "R1.", None),  # no axis word: no motion runs the block
+    ("M99 P10", "P10", None),  # FANUC's return to N10
+]
+
+LETTERS_CARRIED = [
+    "G2 X1. Y1. R1. F100.",
+    "G2 X1. Y1. I0 J1. F100.",
+    "G1 X2. F100.\nG2 X3. Y1. I.5 J.5",
+    "G81 X1. Y1. Z-1. R1. F100.\nX2. R2.",  # the cycle in force reads R
+    "G82 X1. Y1. Z-1. R1. P1000 F100.",
+    "G83 X1. Y1. Z-1. R1. Q.5 F100.",
+    "G73 X1. Y1. Z-1. R1. Q.5 F100.",
+    "G4 P1000",
+    "G10 L2 P1 X1.",
+    "G43 H1 Z10.",
+]
+
+
+def linuxcnc_program(block: str) -> str:
+    return f"{FANUC}G0 X0 Y0 Z5.\n{block}\nM30\n"
+
+
+@pytest.mark.parametrize("block, word, runs", LETTERS_REFUSED)
+def test_a_word_linuxcnc_refuses_with_the_motion_in_force_is_refused_at_the_word(
+        tmp_path, block, word, runs):
+    text = linuxcnc_program(block)
+    with pytest.raises(ConversionError) as err:
+        convert(text, "fanuc-mill", "linuxcnc")
+    e = err.value
+    lines = text.splitlines()
+    line = max(i for i, t in enumerate(lines, 1) if word in t.split())
+    column = lines[line - 1].split().index(word)
+    column = len(" ".join(lines[line - 1].split()[:column])) + (2 if column else 1)
+    assert (e.code, e.line, e.column) == ("conversion-meaning", line, column)
+    letter = word[0]
+    said = e.message.split(" (rs274ngc)")[0]
+    assert said.startswith(f"{word}: {letter} word with no ")
+    assert (f"which runs {runs} there" if runs else "which runs no motion there") in e.message
+    # the oracle: rs274 refuses the block written as it stands, with the message the
+    # conversion gives
+    from tests.conftest import rs274_output
+    ngc = text.replace("O1000\n", "").replace("M30", "M2")
+    assert said.split(": ", 1)[1] in rs274_output(tmp_path, ngc)
+
+
+@pytest.mark.parametrize("block", LETTERS_CARRIED)
+def test_a_word_a_code_of_its_block_uses_is_carried_and_rs274_reads_it(tmp_path, block):
+    from tests.conftest import rs274_output
+    out = convert(linuxcnc_program(block), "fanuc-mill", "linuxcnc")
+    said = rs274_output(tmp_path, out)
+    assert " word with no " not in said, said
+    # and the target's own check reads it as rs274 does
+    assert not [e for e in target_errors(out, "linuxcnc") if " word with no " in e]
+
+
+def test_the_check_refuses_what_the_conversion_refuses():
+    """One predicate (meaning::linuxcnc_word_used) for both readers: each block the conversion
+    refuses, written as it stands for LinuxCNC, is refused by the check's TG412 with the
+    same rs274 message, on the same line; each block it carries is not."""
+    for block, word, _ in LETTERS_REFUSED:
+        ngc = f"G21 G90 G17\nG0 X0 Y0 Z5.\n{block}\nM2\n"
+        found = [e for e in target_errors(ngc, "linuxcnc") if f"{word[0]} word with no " in e]
+        assert found and found[0].split()[0].endswith(":TG412"), (block, found)
+    for block in LETTERS_CARRIED:
+        ngc = f"G21 G90 G17\nG0 X0 Y0 Z5.\n{block}\nM2\n"
+        assert not [e for e in target_errors(ngc, "linuxcnc") if " word with no " in e], block

@@ -2717,11 +2717,19 @@ impl Converter {
         // an E the source wrote for a meaning of its own)
         let other = self.c.family != Family::LinuxCnc;
         if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
+            let motion = self.linuxcnc_block_motion(b);
             if other {
                 self.lathe_uw_for_linuxcnc(b, &gs)?;
                 self.linuxcnc_d_h_words(b, &gs)?;
             }
-            self.linuxcnc_e_word(b, &ms)?;
+            self.linuxcnc_e_word(b, &ms, motion)?;
+            if other {
+                self.linuxcnc_data_words(b, &gs, &ms, motion)?;
+            }
+            // M98 calls a subprogram, which may leave another motion mode in force
+            if ms.contains(&98) {
+                self.linuxcnc_motion = None;
+            }
         }
         // a block under a canned cycle in force repeats it at a new position, with the words it
         // changes: they have the cycle's roles (`cycle_in_force`, which `--verify` reads by too)
@@ -3667,11 +3675,14 @@ impl Converter {
         })
     }
 
-    /// LinuxCNC: an E word no code of its block uses (`meaning::linuxcnc_e_used`) is refused
-    /// under a change of units: rs274ngc refuses the block, so the E has no meaning to
-    /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
-    /// mode a moving block runs is unknown, the E is converted as before (a G76's taper).
-    fn linuxcnc_e_word(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+    /// LinuxCNC: the motion rs274ngc runs a block by (`motion_to_be`, interp_internal.cc
+    /// `enhance_block`, as the check's `linuxcnc_runs` reads it), in tenths: the block's own
+    /// motion code; else the mode in force where the block moves axes and has no code that
+    /// takes them as data (G10, G28, G30, G52, G53, G92), or where it gives only I, J or K
+    /// under G2/G3; else none. None where it depends on a mode in force that is not known
+    /// (at the start, after o-word flow, a call, a `G#1`). Follows the mode in force: G5 and
+    /// G5.1 leave it as it was (interp_convert.cc `convert_spline`).
+    fn linuxcnc_block_motion(&mut self, b: &BlockIn<'_>) -> Option<Option<i64>> {
         let mut given = None;
         let mut data = false;
         for w in b.words {
@@ -3686,9 +3697,44 @@ impl Converter {
             }
         }
         let before = self.linuxcnc_motion;
-        if given.is_some() {
-            self.linuxcnc_motion = given;
+        if let Some(g) = given.filter(|&g| g != 50 && g != 51) {
+            self.linuxcnc_motion = Some(g);
         }
+        if given.is_some() {
+            return Some(given);
+        }
+        let moves = b.words.iter().any(|w| {
+            matches!(
+                kind(w.token[0].to_ascii_uppercase()),
+                Some(Kind::Axis | Kind::Angle)
+            )
+        });
+        let ijk = b
+            .words
+            .iter()
+            .any(|w| matches!(w.token[0].to_ascii_uppercase(), b'I' | b'J' | b'K'));
+        if data || !(moves || ijk) {
+            return Some(None);
+        }
+        match before {
+            None => None,
+            Some(m) if moves => Some(Some(m)),
+            Some(m @ (20 | 30)) => Some(Some(m)),
+            Some(_) => Some(None),
+        }
+    }
+
+    /// LinuxCNC: an E word no code of its block uses (`meaning::linuxcnc_e_used`) is refused
+    /// under a change of units: rs274ngc refuses the block, so the E has no meaning to
+    /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
+    /// mode a moving block runs is unknown (`motion` None), the E is converted as before (a
+    /// G76's taper).
+    fn linuxcnc_e_word(
+        &self,
+        b: &BlockIn<'_>,
+        ms: &[i64],
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
         let Some(e) = b
             .words
             .iter()
@@ -3696,19 +3742,8 @@ impl Converter {
         else {
             return Ok(());
         };
-        let moves = b.words.iter().any(|w| {
-            matches!(
-                kind(w.token[0].to_ascii_uppercase()),
-                Some(Kind::Axis | Kind::Angle)
-            )
-        });
-        let runs = match given {
-            Some(g) => Some(g),
-            None if moves && !data => match before {
-                Some(m) => Some(m),
-                None => return Ok(()), // the motion in force is not known
-            },
-            None => None,
+        let Some(runs) = motion else {
+            return Ok(()); // the motion in force is not known
         };
         let analog = ms.iter().any(|&m| (66..=68).contains(&m));
         let other = self.c.family != Family::LinuxCnc;
@@ -3823,6 +3858,61 @@ impl Converter {
                  control reads {holds}; tapegate does not move the word: write it in the \
                  block of the code that uses it",
                 text(w.token)
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// Another family's I, J, K, L, P, Q or R word in a block where no code LinuxCNC runs it
+    /// by uses it (`meaning::linuxcnc_word_used`, which the check's TG412 reads too): rs274
+    /// refuses the block with its message ("R word with no g code that uses it", interp_check.cc
+    /// `check_other_codes`), where the source control read the word with its own meaning (a
+    /// FANUC `G01 X1 R5` its corner, `G00 X1 P2`, a `K` repeat count of a drilling cycle):
+    /// refused at the word. Nothing is said where the motion the block runs is not known
+    /// (`motion` None), nor of a G65/G66 macro call's arguments (the call's own conversion).
+    fn linuxcnc_data_words(
+        &self,
+        b: &BlockIn<'_>,
+        gs: &[i64],
+        ms: &[i64],
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
+        let Some(runs) = motion else {
+            return Ok(());
+        };
+        if gs.iter().any(|&g| matches!(g, 65 | 66)) {
+            return Ok(());
+        }
+        let tenths: Vec<i64> = b
+            .words
+            .iter()
+            .filter(|w| w.token[0].eq_ignore_ascii_case(&b'G'))
+            .filter_map(|w| g_tenths(w.token))
+            .collect();
+        let Some((w, letter)) = b.words.iter().find_map(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            (crate::meaning::LINUXCNC_DATA_LETTERS.contains(&letter)
+                && !w.token.contains(&b'=')
+                && !crate::meaning::linuxcnc_word_used(letter, &tenths, ms, runs))
+            .then_some((w, letter))
+        }) else {
+            return Ok(());
+        };
+        let motion = match runs {
+            Some(t) if t % 10 == 0 => format!("runs G{} there", t / 10),
+            Some(t) => format!("runs G{}.{} there", t / 10, t % 10),
+            None => "runs no motion there".to_string(),
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: {} (rs274ngc): LinuxCNC refuses this block, which {motion}, where the \
+                 source control read {} as a word of its own; tapegate does not rewrite or move \
+                 the word: remove it, or write it in the block of the code that uses it",
+                text(w.token),
+                crate::meaning::linuxcnc_unused(letter),
+                letter as char
             ),
             clause: "meaning",
             column: crate::text::column(b.text, w.start),
