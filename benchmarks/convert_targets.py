@@ -16,7 +16,9 @@ checked on the target profile as ``tapegate check`` does, and is
 - ``REFUSED``  where it reports an error of a rule the source's check does not: the output the
                conversion called "ok" is one the target (or tapegate's check of it) refuses.
                Each is listed with its first such error; ``reading`` marks a reading rule
-               (TG1xx, TG2xx), ``rs274`` LinuxCNC's interpreter's refusals (TG412).
+               (benchmarks/shops.py's READING: a block the reader cannot read, a character
+               outside the set, a digit overflow ...), ``rs274`` LinuxCNC's interpreter's
+               refusals (rule LinuxCncRefuses).
 
 The principle (docs/convert.md): a conversion never reports success for output the target control
 refuses; it refuses at the source word, or carries the meaning exactly. The count of REFUSED is
@@ -43,6 +45,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
 from benchmarks.convert_sweep import CORPUS, programs  # noqa: E402
+from benchmarks.shops import READING  # noqa: E402
 from formats.conversion import ConvertOptions  # noqa: E402
 from formats.convert import convert_file  # noqa: E402
 from formats.errors import TapegateError  # noqa: E402
@@ -50,9 +53,10 @@ from formats.parser import parse_stream  # noqa: E402
 from formats.profile import builtin_names, load_profile  # noqa: E402
 from formats.source import Source  # noqa: E402
 from postproc.check import Checker  # noqa: E402
+from postproc.rules import rule_id  # noqa: E402
 
 # LinuxCNC's interpreter's refusals (rs274 as the checker reads it)
-RS274 = "TG412"
+RS274 = rule_id("LinuxCncRefuses")
 
 
 @dataclass
@@ -75,7 +79,7 @@ def errors(path: Path, profile_name: str, name: str) -> list[tuple[str, int, str
 
 
 def kind(rule: str) -> str:
-    if rule[:3] in ("TG1", "TG2"):
+    if rule in READING:
         return "reading"
     return "rs274" if rule == RS274 else "other"
 
