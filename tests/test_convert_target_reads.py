@@ -198,3 +198,45 @@ def test_the_check_refuses_what_the_conversion_refuses():
     for block in LETTERS_CARRIED:
         ngc = f"G21 G90 G17\nG0 X0 Y0 Z5.\n{block}\nM2\n"
         assert not [e for e in target_errors(ngc, "linuxcnc") if " word with no " in e], block
+
+
+# -- 3. what the sweep (benchmarks/convert_targets.py) found besides ---------------------------
+
+
+@pytest.mark.parametrize("target", ["iso-mill", "iso-lathe", "sinumerik-7e2", "cm332-quadrant",
+                                    "pm322-eia"])
+def test_an_arc_by_its_radius_is_refused_for_a_profile_whose_r_is_a_parameter(target):
+    """iso-mill's checks.pqr makes R a parameter: its check finds no centre for `G2 X.. R..`
+    (TG404 "arc without I J (or R)"), which the conversion carried and called ok."""
+    profile = load_profile(target)
+    assert profile.checks.pqr.get("R") != "length"
+    text = FANUC + "G0 X0 Y0\nG2 X20. Y0 R10. F100.\nM30\n"
+    assert any(":TG404 " in e for e in target_errors(text, target))
+    with pytest.raises(ConversionError) as err:
+        convert(text, "fanuc-mill", target)
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion", 4, 12)
+    assert "the target profile reads no radius (its R is a parameter" in e.message
+    # by its centre the arc converts, and the target's check reads it
+    by_centre = text.replace("R10.", "I10. J0")
+    if target not in ("cm332-quadrant",):  # (its I J are sign-less quadrant values: refused)
+        out = convert(by_centre, "fanuc-mill", target)
+        assert not [x for x in target_errors(out, target) if ":TG40" in x]
+
+
+@pytest.mark.parametrize("target", [p for p in PROFILES if p in (
+    "iso-mill", "iso-lathe", "sinumerik-7e2")])
+def test_a_colon_in_a_comment_is_refused_for_a_tape_reader_that_stops_there(target):
+    """ISO 6983-1 5.1: ':' is the alignment function (the rewind stop); the ISO profiles' check
+    refuses it in a comment (TG122). A FANUC `(T1: 10 MM DRILL)` was carried and called ok."""
+    text = FANUC + "(T1: 10 MM DRILL)\nG0 X0 Y0\nM30\n"
+    assert any(":TG122 " in e for e in target_errors(text, target))
+    with pytest.raises(ConversionError) as err:
+        convert(text, "fanuc-mill", target)
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion-dialect", 3, 4)
+    assert "a ':' in a comment, which the target's tape reader takes for the alignment" in (
+        e.message)
+    # without the ':' it converts, and to a control that does not stop there it is carried
+    assert "(T1 10 MM DRILL)" in convert(text.replace(":", ""), "fanuc-mill", target)
+    assert "(T1: 10 MM DRILL)" in convert(text, "fanuc-mill", "haas-mill")

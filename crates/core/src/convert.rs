@@ -212,9 +212,14 @@ pub struct ConvertConfig {
     /// The target control has no motion mode at its reset and after G80 (LinuxCNC), where
     /// the source's keeps one (`ModalSettings::g80_clears_motion`).
     pub target_g80_clears_motion: bool,
-    /// The letter the target control reads an arc's radius from (`word::arc_radius`): where
-    /// it is not the source's, an arc given by its radius is refused.
+    /// The letter the target control reads an arc's radius from (`word::arc_radius`), 0 where
+    /// it reads none (an ISO 6983-1 profile whose `checks.pqr` makes R a parameter): where it
+    /// is not the source's, an arc given by its radius is refused.
     pub target_arc_radius: u8,
+    /// The target's tape reader takes a ':' for the alignment (rewind) stop, in a comment too
+    /// (ISO 6983-1 5.1, `colon_stop`; TG122 of its check), where the source's does not: a
+    /// comment holding one is refused ([`colon_in_comment`]).
+    pub colon_stops: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -299,6 +304,27 @@ fn nested_comment_to(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError
                 ),
                 clause: "4",
                 column: crate::text::column(b.text, at + inner),
+                line: None,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A comment holding a ':' for a target whose tape reader stops there (ISO 6983-1 5.1: ':' is
+/// the alignment function, the rewind stop; TG122 of the target's check), where the source's
+/// does not: written as it stands the target stops in the middle of the program, so it is
+/// refused at the ':' (tapegate changes no comment it was not asked to).
+fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    for &(at, comment) in b.comments {
+        if let Some(colon) = comment.iter().position(|&c| c == b':') {
+            return Err(ConvertError {
+                message: "a ':' in a comment, which the target's tape reader takes for the \
+                          alignment (rewind) stop (ISO 6983-1 5.1; its check: TG122) and the \
+                          source's does not: write the comment without the ':'"
+                    .into(),
+                clause: "dialect",
+                column: crate::text::column(b.text, at + colon),
                 line: None,
             });
         }
@@ -2232,6 +2258,9 @@ impl Converter {
         if self.c.family == Family::MacroB && self.c.target_family != Family::MacroB {
             nested_comment_to(b, self.c.target_family)?;
         }
+        if self.c.colon_stops && !b.comments.is_empty() {
+            colon_in_comment(b)?;
+        }
         let opening = if b.percent {
             Opening::percent_line(b.text)
         } else {
@@ -3660,15 +3689,27 @@ impl Converter {
         }) else {
             return Ok(());
         };
-        Err(ConvertError {
-            message: format!(
+        let message = if target == 0 {
+            format!(
+                "{}: the source control reads an arc's radius from {}, the target profile reads \
+                 no radius (its R is a parameter: checks.pqr), so its control finds no centre \
+                 for the arc; tapegate does not work out the centre: give the arc by its centre \
+                 (I J K)",
+                text(w.token),
+                source as char
+            )
+        } else {
+            format!(
                 "{}: the source control reads an arc's radius from {}, the target control from \
                  {}; tapegate does not rename words: convert for a profile of the program's own \
                  family, or give the arc by its centre",
                 text(w.token),
                 source as char,
                 target as char
-            ),
+            )
+        };
+        Err(ConvertError {
+            message,
             clause: "7.3",
             column: crate::text::column(b.text, w.start),
             line: None,
@@ -7653,6 +7694,7 @@ mod tests {
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
+            colon_stops: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

@@ -289,7 +289,14 @@ impl Machine {
             program_number: source.program_number,
             target_past_sequence: out.past_sequence,
             target_g80_clears_motion: out.modal.g80_clears_motion,
-            target_arc_radius: out.modal.arc_radius,
+            // 0 where the target reads no radius: its R a parameter (`checks.pqr`, an ISO
+            // 6983-1 profile's), as its check reads an arc
+            colon_stops: out.facts.colon_stop && !source.facts.colon_stop,
+            target_arc_radius: if out.modal.arc_radius == b'R' && out.pqr[2] != Role::Length {
+                0
+            } else {
+                out.modal.arc_radius
+            },
             differing_codes: if self.control == target.control && self.lathe == target.lathe {
                 Vec::new()
             } else {

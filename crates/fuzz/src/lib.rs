@@ -467,6 +467,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_past_sequence: PastFormat::Alarm,
         target_g80_clears_motion: false,
         target_arc_radius: b'R',
+        colon_stops: false,
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,
