@@ -3923,7 +3923,11 @@ impl Converter {
         let Some(runs) = motion else {
             return Ok(());
         };
-        if gs.iter().any(|&g| matches!(g, 65 | 66)) {
+        // (most blocks, plain moves, hold none of the letters: no codes read for them)
+        let data = |w: &WordSpan<'_>| {
+            crate::meaning::LINUXCNC_DATA_LETTERS.contains(&w.token[0].to_ascii_uppercase())
+        };
+        if !b.words.iter().any(data) || gs.iter().any(|&g| matches!(g, 65 | 66)) {
             return Ok(());
         }
         let tenths: Vec<i64> = b
@@ -4664,10 +4668,13 @@ impl Converter {
         // written would be a character the target's dialect does not read (an ISO 6983-1
         // profile's characters are Annex A's and those it adds): its control refuses the word,
         // as tapegate's check on the target profile does (TG101, TG100)
+        // (a target that reads all three, most conversions, looks at no word's characters)
         let reads = &self.c.target_dialect;
+        let all = reads.hash && reads.brackets && reads.star;
         if let Some((w, at)) = b
             .words
             .iter()
+            .filter(|_| !all)
             .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
         {
             if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
