@@ -90,6 +90,9 @@ if TYPE_CHECKING:
         units_kept_at_end: bool
         increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
         g_code_system: str  # a FANUC lathe's G code system: "A", "B", "C"; "" elsewhere
+        # what the dialect reads (formats.parser.Dialect.flags): the converter writes no `#`,
+        # `[ ]` or `*` for a target whose dialect does not read it
+        dialect: tuple[bool, bool, bool, bool, bool, bool, str]
 else:
     MachineSpec = dict
 
@@ -204,6 +207,7 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "limit_units": profile.limit_units or profile.default_units,
         "units_kept_at_end": profile.units_kept_at_end,
         "increment_digits": _increment_digits(profile),
+        "dialect": profile.dialect.flags,
     }
 
 

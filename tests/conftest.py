@@ -55,6 +55,22 @@ def corpus_files() -> list[Path]:
 
 needs_corpus = pytest.mark.skipif(not corpus_files(), reason="shared/corpus is not present")
 
+# A user's ISO 6983-1 mill whose characters add `#[]*` to iso-mill's (the built-in one reads
+# none of them): the rules between families that read `#` parameters and `[ ]` expressions,
+# with an ISO 6983-1 target, are reached only through such a profile.
+ISO_MACROS = "iso-mill-macros"
+
+
+def profile(name: str):  # type: ignore[no-untyped-def]
+    """A built-in profile by name, or :data:`ISO_MACROS`."""
+    from formats.profile import builtin_text, load_profile, profile_from_text
+
+    if name != ISO_MACROS:
+        return load_profile(name)
+    text = builtin_text("iso-mill").replace(
+        'name = "iso-mill"', f'name = "{ISO_MACROS}"\nextra_characters = "#[]*"', 1)
+    return profile_from_text(text, ISO_MACROS)
+
 
 @pytest.fixture
 def sample_program() -> str:

@@ -468,10 +468,18 @@ def test_verify_across_controls_compares_the_program_not_the_reset_states(tmp_pa
     profile = load_profile(target)
     options = ConvertOptions(profile, FANUC, units="inch")
     text = "%\nN10 G21 G90\nN20 G01 X25.4 Y-12.7 F254.\nN30 G02 X50.8 R25.4\nN40 M30\n%\n"
+    if profile.checks.pqr["R"] != "length":
+        # an ISO 6983-1 profile's R is a parameter: its check finds no centre in an arc by R
+        # (TG404), so the conversion refuses it (docs/convert.md, "What the target reads"),
+        # and the arc is given by its centre
+        with pytest.raises(ConversionError) as refused:
+            _converted(tmp_path, text, options)
+        assert (refused.value.line, refused.value.column) == (4, 15)
+        text = text.replace("R25.4", "I12.7 J12.7")
     src, out, stats = _converted(tmp_path, text, options)
     verify_conversion(src, out, FANUC, options, stats, file="src.nc")
     good = Path(out).read_text()
-    assert "R1" in good  # R25.4 -> 1 in
+    assert "R1" in good or profile.checks.pqr["R"] != "length"  # R25.4 -> 1 in
     Path(out).write_text(good.replace("Y-", "Y-1"))
     with pytest.raises(ConversionError) as err:
         verify_conversion(src, out, FANUC, options, stats, file="src.nc")

@@ -590,11 +590,13 @@ fn variable(family: Family, n: u64) -> (&'static str, bool) {
     }
 }
 
-/// Numbered variables between the families that read `#`: a variable the two
-/// families both leave to the program (Custom Macro B #1-#33 and #100-#999, LinuxCNC #1-#5000,
-/// ISO any) is carried; any other is refused naming both meanings, as is a variable chosen by
-/// a value (`#[#1]`: which one, the text does not show) and a LinuxCNC named parameter
-/// (`#<x>`, `#<_metric>`), which the other families do not read.
+/// Numbered variables between the families that read `#`: a variable the two families both
+/// leave to the program (Custom Macro B #1-#33 and #100-#999, LinuxCNC #1-#5000, ISO any) is
+/// carried; any other is refused naming both meanings, as is a variable chosen by a value
+/// (`#[#1]`: which one, the text does not show) and a LinuxCNC named parameter (`#<x>`,
+/// `#<_metric>`), which the other families do not read. (An ISO 6983-1 profile reads `#` only
+/// where its dialect allows it; the converter refuses `#` for a target whose dialect does not
+/// before these rules: `ConvertConfig::target_dialect`.)
 fn variables(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     let hash = |f: Family| matches!(f, Family::Iso | Family::MacroB | Family::LinuxCnc);
     if !hash(from) || !hash(to) {

@@ -164,6 +164,11 @@ pub struct ConvertConfig {
     /// The target's control family: on Sinumerik its units codes G70/G71 leave the feed in the
     /// basic system (the target's units) and G700/G710 set it too.
     pub target_family: Family,
+    /// What the target profile's dialect reads (its `#` parameters, `[ ]` expressions, `*`):
+    /// a word holding one it does not read is refused ([`Converter::statements`]), whatever
+    /// the target's family reads elsewhere (an ISO 6983-1 profile reads `#` only where its
+    /// characters allow it).
+    pub target_dialect: crate::lex::Dialect,
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
@@ -207,9 +212,14 @@ pub struct ConvertConfig {
     /// The target control has no motion mode at its reset and after G80 (LinuxCNC), where
     /// the source's keeps one (`ModalSettings::g80_clears_motion`).
     pub target_g80_clears_motion: bool,
-    /// The letter the target control reads an arc's radius from (`word::arc_radius`): where
-    /// it is not the source's, an arc given by its radius is refused.
+    /// The letter the target control reads an arc's radius from (`word::arc_radius`), 0 where
+    /// it reads none (an ISO 6983-1 profile whose `checks.pqr` makes R a parameter): where it
+    /// is not the source's, an arc given by its radius is refused.
     pub target_arc_radius: u8,
+    /// The target's tape reader takes a ':' for the alignment (rewind) stop, in a comment too
+    /// (ISO 6983-1 5.1, `colon_stop`; TG122 of its check), where the source's does not: a
+    /// comment holding one is refused ([`colon_in_comment`]).
+    pub colon_stops: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -294,6 +304,27 @@ fn nested_comment_to(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError
                 ),
                 clause: "4",
                 column: crate::text::column(b.text, at + inner),
+                line: None,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A comment holding a ':' for a target whose tape reader stops there (ISO 6983-1 5.1: ':' is
+/// the alignment function, the rewind stop; TG122 of the target's check), where the source's
+/// does not: written as it stands the target stops in the middle of the program, so it is
+/// refused at the ':' (tapegate changes no comment it was not asked to).
+fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    for &(at, comment) in b.comments {
+        if let Some(colon) = comment.iter().position(|&c| c == b':') {
+            return Err(ConvertError {
+                message: "a ':' in a comment, which the target's tape reader takes for the \
+                          alignment (rewind) stop (ISO 6983-1 5.1; its check: TG122) and the \
+                          source's does not: write the comment without the ':'"
+                    .into(),
+                clause: "dialect",
+                column: crate::text::column(b.text, at + colon),
                 line: None,
             });
         }
@@ -2244,6 +2275,9 @@ impl Converter {
         if self.c.family == Family::MacroB && self.c.target_family != Family::MacroB {
             nested_comment_to(b, self.c.target_family)?;
         }
+        if self.c.colon_stops && !b.comments.is_empty() {
+            colon_in_comment(b)?;
+        }
         let opening = if b.percent {
             Opening::percent_line(b.text)
         } else {
@@ -2729,12 +2763,20 @@ impl Converter {
         // an E the source wrote for a meaning of its own)
         let other = self.c.family != Family::LinuxCnc;
         if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
+            let motion = self.linuxcnc_block_motion(b);
             if other {
                 self.lathe_uw_for_linuxcnc(b, &gs)?;
                 self.linuxcnc_dwell_words(b, &gs)?;
                 self.linuxcnc_d_h_words(b, &gs)?;
             }
-            self.linuxcnc_e_word(b, &ms)?;
+            self.linuxcnc_e_word(b, &ms, motion)?;
+            if other {
+                self.linuxcnc_data_words(b, &gs, &ms, motion)?;
+            }
+            // M98 calls a subprogram, which may leave another motion mode in force
+            if ms.contains(&98) {
+                self.linuxcnc_motion = None;
+            }
         }
         // a block under a canned cycle in force repeats it at a new position, with the words it
         // changes: they have the cycle's roles (`cycle_in_force`, which `--verify` reads by too)
@@ -3671,26 +3713,41 @@ impl Converter {
         }) else {
             return Ok(());
         };
-        Err(ConvertError {
-            message: format!(
+        let message = if target == 0 {
+            format!(
+                "{}: the source control reads an arc's radius from {}, the target profile reads \
+                 no radius (its R is a parameter: checks.pqr), so its control finds no centre \
+                 for the arc; tapegate does not work out the centre: give the arc by its centre \
+                 (I J K)",
+                text(w.token),
+                source as char
+            )
+        } else {
+            format!(
                 "{}: the source control reads an arc's radius from {}, the target control from \
                  {}; tapegate does not rename words: convert for a profile of the program's own \
                  family, or give the arc by its centre",
                 text(w.token),
                 source as char,
                 target as char
-            ),
+            )
+        };
+        Err(ConvertError {
+            message,
             clause: "7.3",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
     }
 
-    /// LinuxCNC: an E word no code of its block uses (`meaning::linuxcnc_e_used`) is refused
-    /// under a change of units: rs274ngc refuses the block, so the E has no meaning to
-    /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
-    /// mode a moving block runs is unknown, the E is converted as before (a G76's taper).
-    fn linuxcnc_e_word(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+    /// LinuxCNC: the motion rs274ngc runs a block by (`motion_to_be`, interp_internal.cc
+    /// `enhance_block`, as the check's `linuxcnc_runs` reads it), in tenths: the block's own
+    /// motion code; else the mode in force where the block moves axes and has no code that
+    /// takes them as data (G10, G28, G30, G52, G53, G92), or where it gives only I, J or K
+    /// under G2/G3; else none. None where it depends on a mode in force that is not known
+    /// (at the start, after o-word flow, a call, a `G#1`). Follows the mode in force: G5 and
+    /// G5.1 leave it as it was (interp_convert.cc `convert_spline`).
+    fn linuxcnc_block_motion(&mut self, b: &BlockIn<'_>) -> Option<Option<i64>> {
         let mut given = None;
         let mut data = false;
         for w in b.words {
@@ -3705,9 +3762,44 @@ impl Converter {
             }
         }
         let before = self.linuxcnc_motion;
-        if given.is_some() {
-            self.linuxcnc_motion = given;
+        if let Some(g) = given.filter(|&g| g != 50 && g != 51) {
+            self.linuxcnc_motion = Some(g);
         }
+        if given.is_some() {
+            return Some(given);
+        }
+        let moves = b.words.iter().any(|w| {
+            matches!(
+                kind(w.token[0].to_ascii_uppercase()),
+                Some(Kind::Axis | Kind::Angle)
+            )
+        });
+        let ijk = b
+            .words
+            .iter()
+            .any(|w| matches!(w.token[0].to_ascii_uppercase(), b'I' | b'J' | b'K'));
+        if data || !(moves || ijk) {
+            return Some(None);
+        }
+        match before {
+            None => None,
+            Some(m) if moves => Some(Some(m)),
+            Some(m @ (20 | 30)) => Some(Some(m)),
+            Some(_) => Some(None),
+        }
+    }
+
+    /// LinuxCNC: an E word no code of its block uses (`meaning::linuxcnc_e_used`) is refused
+    /// under a change of units: rs274ngc refuses the block, so the E has no meaning to
+    /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
+    /// mode a moving block runs is unknown (`motion` None), the E is converted as before (a
+    /// G76's taper).
+    fn linuxcnc_e_word(
+        &self,
+        b: &BlockIn<'_>,
+        ms: &[i64],
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
         let Some(e) = b
             .words
             .iter()
@@ -3715,19 +3807,8 @@ impl Converter {
         else {
             return Ok(());
         };
-        let moves = b.words.iter().any(|w| {
-            matches!(
-                kind(w.token[0].to_ascii_uppercase()),
-                Some(Kind::Axis | Kind::Angle)
-            )
-        });
-        let runs = match given {
-            Some(g) => Some(g),
-            None if moves && !data => match before {
-                Some(m) => Some(m),
-                None => return Ok(()), // the motion in force is not known
-            },
-            None => None,
+        let Some(runs) = motion else {
+            return Ok(()); // the motion in force is not known
         };
         let analog = ms.iter().any(|&m| (66..=68).contains(&m));
         let other = self.c.family != Family::LinuxCnc;
@@ -3897,6 +3978,65 @@ impl Converter {
                  control reads {holds}; tapegate does not move the word: write it in the \
                  block of the code that uses it",
                 text(w.token)
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// Another family's I, J, K, L, P, Q or R word in a block where no code LinuxCNC runs it
+    /// by uses it (`meaning::linuxcnc_word_used`, which the check's TG412 reads too): rs274
+    /// refuses the block with its message ("R word with no g code that uses it", interp_check.cc
+    /// `check_other_codes`), where the source control read the word with its own meaning (a
+    /// FANUC `G01 X1 R5` its corner, `G00 X1 P2`, a `K` repeat count of a drilling cycle):
+    /// refused at the word. Nothing is said where the motion the block runs is not known
+    /// (`motion` None), nor of a G65/G66 macro call's arguments (the call's own conversion).
+    fn linuxcnc_data_words(
+        &self,
+        b: &BlockIn<'_>,
+        gs: &[i64],
+        ms: &[i64],
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
+        let Some(runs) = motion else {
+            return Ok(());
+        };
+        // (most blocks, plain moves, hold none of the letters: no codes read for them)
+        let data = |w: &WordSpan<'_>| {
+            crate::meaning::LINUXCNC_DATA_LETTERS.contains(&w.token[0].to_ascii_uppercase())
+        };
+        if !b.words.iter().any(data) || gs.iter().any(|&g| matches!(g, 65 | 66)) {
+            return Ok(());
+        }
+        let tenths: Vec<i64> = b
+            .words
+            .iter()
+            .filter(|w| w.token[0].eq_ignore_ascii_case(&b'G'))
+            .filter_map(|w| g_tenths(w.token))
+            .collect();
+        let Some((w, letter)) = b.words.iter().find_map(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            (crate::meaning::LINUXCNC_DATA_LETTERS.contains(&letter)
+                && !w.token.contains(&b'=')
+                && !crate::meaning::linuxcnc_word_used(letter, &tenths, ms, runs))
+            .then_some((w, letter))
+        }) else {
+            return Ok(());
+        };
+        let motion = match runs {
+            Some(t) if t % 10 == 0 => format!("runs G{} there", t / 10),
+            Some(t) => format!("runs G{}.{} there", t / 10, t % 10),
+            None => "runs no motion there".to_string(),
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: {} (rs274ngc): LinuxCNC refuses this block, which {motion}, where the \
+                 source control read {} as a word of its own; tapegate does not rewrite or move \
+                 the word: remove it, or write it in the block of the code that uses it",
+                text(w.token),
+                crate::meaning::linuxcnc_unused(letter),
+                letter as char
             ),
             clause: "meaning",
             column: crate::text::column(b.text, w.start),
@@ -4603,12 +4743,42 @@ impl Converter {
             // could not be read there, or would do something else
             return Err(self.foreign(b, offset, statement, "a statement of", "statements"));
         }
-        if !reads_hash_parameters(self.c.target_family) && reads_hash_parameters(self.c.family) {
-            // a `#` parameter (`#1=5.`, `X#1`) carried as written would be a character the
-            // target control does not read: refused as a statement of another family is
-            if let Some(w) = b.words.iter().find(|w| w.token.contains(&b'#')) {
+        // a `#` parameter (`#1=5.`, `X#1`), an expression in `[ ]` or its `*` carried as
+        // written would be a character the target's dialect does not read (an ISO 6983-1
+        // profile's characters are Annex A's and those it adds): its control refuses the word,
+        // as tapegate's check on the target profile does (TG101, TG100)
+        // (a target that reads all three, most conversions, looks at no word's characters)
+        let reads = &self.c.target_dialect;
+        let all = reads.hash && reads.brackets && reads.star;
+        if let Some((w, at)) = b
+            .words
+            .iter()
+            .filter(|_| !all)
+            .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
+        {
+            if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
+                // the target's family reads no `#` at all: refused as a statement of another
+                // family is
                 return Err(self.foreign(b, w.start, w.token, "a parameter of", "parameters"));
             }
+            let (c, what) = match w.token[at] {
+                b'#' => ('#', "a `#` parameter"),
+                b'*' => ('*', "an expression's '*'"),
+                c => (c as char, "an expression in [ ]"),
+            };
+            return Err(ConvertError {
+                message: format!(
+                    "{:?}: {what}, which the target profile's dialect does not read ('{c}' is \
+                     not among the characters it allows: its control refuses the word, as \
+                     tapegate's check on that profile does); tapegate does not work out \
+                     parameters or expressions into numbers: convert for a profile that reads \
+                     them, or write the values",
+                    text(w.token)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, w.start + at),
+                line: None,
+            });
         }
         if self.c.family == Family::Sinumerik && self.c.target_family != Family::Sinumerik {
             // a SINUMERIK's word with '=' (X=R1+5, R1=5, an extended address S1=470, X4=20,
@@ -7218,9 +7388,6 @@ fn family_name(family: Family) -> &'static str {
     }
 }
 
-/// Whether a family's controls read `#` parameters (`#1=5.`, `X#1`): ISO 6983-1's 6.4.7,
-/// Custom Macro B, LinuxCNC; a SINUMERIK (R parameters), a HEIDENHAIN (Q) and an Okuma OSP (V
-/// variables) do not.
 /// A G word's code in tenths (`G41.1` 411, `G1` 10), from the token's number after its
 /// letter; None for a code written otherwise (`G#1`) or finer than tenths.
 fn g_tenths(token: &[u8]) -> Option<i64> {
@@ -7232,8 +7399,23 @@ fn g_tenths(token: &[u8]) -> Option<i64> {
         .map(|t| t.round() as i64)
 }
 
+/// Whether a family's controls read `#` parameters (`#1=5.`, `X#1`): ISO 6983-1's 6.4.7,
+/// Custom Macro B, LinuxCNC; a SINUMERIK (R parameters), a HEIDENHAIN (Q) and an Okuma OSP (V
+/// variables) do not. (Whether a profile of the family does is its dialect's:
+/// [`ConvertConfig::target_dialect`].)
 fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
+}
+
+/// The offset in a word's `token` of its first character that `reads` does not read: a `#`
+/// (a parameter), `[` or `]` (an expression), `*` (an expression's multiplication).
+fn unread_character(token: &[u8], reads: &crate::lex::Dialect) -> Option<usize> {
+    token.iter().position(|&c| match c {
+        b'#' => !reads.hash,
+        b'[' | b']' => !reads.brackets,
+        b'*' => !reads.star,
+        _ => false,
+    })
 }
 
 /// Whether a statement holds lengths by the roles of its words, with no `=` or brackets to
@@ -7641,6 +7823,7 @@ mod tests {
             src_increment: [3, 4],
             out_increment: [3, 4],
             target_family: Family::MacroB,
+            target_dialect: crate::lex::Dialect::permissive(Family::MacroB),
             same_cycle_table: true,
             target_g_system: None,
             target_data_input: true,
@@ -7653,6 +7836,7 @@ mod tests {
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
+            colon_stops: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

@@ -58,6 +58,9 @@ pub struct MachineSpec {
     pub meanings: Vec<(String, String, String)>,
     /// A FANUC lathe's G code system (`g_code_system`: "A", "B", "C"; "" for other controls).
     pub g_code_system: String,
+    /// What the profile's dialect reads beyond ISO 6983-1 Annex A (`formats.parser.Dialect`):
+    /// the converter writes no `#`, `[ ]` or `*` for a target whose dialect does not read it.
+    pub dialect: crate::lex::Dialect,
 }
 
 /// One profile, compiled: shared by every reader of programs for that machine.
@@ -84,6 +87,8 @@ pub struct Machine {
     /// [`differing_codes`] names them, with its group ("" for one of its own list), sorted by
     /// code: made once per profile, for the comparisons between families.
     listed: CodeList,
+    /// What the profile's dialect reads ([`MachineSpec::dialect`]).
+    pub dialect: crate::lex::Dialect,
 }
 
 impl Machine {
@@ -167,6 +172,7 @@ impl Machine {
             metric_code: spec.metric_code,
             increment_digits: spec.increment_digits,
             meanings: spec.meanings,
+            dialect: spec.dialect,
         }
     }
 
@@ -254,6 +260,7 @@ impl Machine {
             family: self.family,
             lathe: self.lathe,
             target_family: target.family,
+            target_dialect: target.dialect,
             // the roles of a cycle's words come from the source's cycle table: the target reads
             // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
             // the same kind of machine
@@ -282,7 +289,14 @@ impl Machine {
             program_number: source.program_number,
             target_past_sequence: out.past_sequence,
             target_g80_clears_motion: out.modal.g80_clears_motion,
-            target_arc_radius: out.modal.arc_radius,
+            // 0 where the target reads no radius: its R a parameter (`checks.pqr`, an ISO
+            // 6983-1 profile's), as its check reads an arc
+            colon_stops: out.facts.colon_stop && !source.facts.colon_stop,
+            target_arc_radius: if out.modal.arc_radius == b'R' && out.pqr[2] != Role::Length {
+                0
+            } else {
+                out.modal.arc_radius
+            },
             differing_codes: if self.control == target.control && self.lathe == target.lathe {
                 Vec::new()
             } else {
@@ -775,6 +789,10 @@ mod tests {
             increment_digits: [3, 4],
             meanings: Vec::new(),
             g_code_system: String::new(),
+            dialect: crate::lex::Dialect {
+                family: control.family(),
+                ..Default::default()
+            },
         }
     }
 

@@ -423,6 +423,93 @@ pub fn linuxcnc_h_used(codes: &[i64], motion: Option<i64>) -> bool {
     codes.iter().any(|c| matches!(c, 430 | 432)) || motion == Some(760)
 }
 
+/// The letters whose word rs274ngc refuses in a block where no code uses it, beside D, E and
+/// H ([`linuxcnc_word_used`]): an arc's or cycle's data that a straight move, or a block
+/// without motion, does not take.
+pub const LINUXCNC_DATA_LETTERS: [u8; 7] = *b"IJKLPQR";
+
+/// rs274ngc's refusal of an I, J, K, L, P, Q or R word no code of its block uses
+/// (interp_check.cc `check_other_codes`, as rs274 2.9 words it); "" for another letter.
+pub fn linuxcnc_unused(letter: u8) -> &'static str {
+    match letter {
+        b'I' => "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it",
+        b'J' => "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it",
+        b'K' => "K word with no G2, G3, G33, G33.1, G76, or G87 to use it",
+        b'L' => {
+            "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 \
+             or NURBS code"
+        }
+        b'P' => {
+            "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 \
+             M62 M63 M64 M65 M66 M98 or user M code to use it"
+        }
+        b'Q' => {
+            "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code \
+             that uses it"
+        }
+        b'R' => "R word with no g code that uses it",
+        _ => "",
+    }
+}
+
+/// Whether rs274ngc lets a block have an I, J, K, L, P, Q or R word (interp_check.cc
+/// `check_other_codes`): its G codes (`codes`, in tenths) or M codes (`ms`) use it, or the
+/// motion it runs (`motion`, in tenths: its own motion code, or the mode in force where it
+/// moves axes; None: no motion) does. I J K: an arc's centre (G2, G3), a spline's (G5, G5.1),
+/// G33.1's, G76's and G87's data, G10's tool data; L: G10's data type, cutter compensation's,
+/// a canned cycle's repeats, M66's wait type, M98's repeats, NURBS; P: G4's time, an arc's
+/// turns, G10's number, G64's tolerance, a cycle's dwell, the M codes'; Q: a peck, a spline's
+/// point, G64's, the M codes' data; R: an arc's radius, a cycle's retract plane, G10's and
+/// dynamic compensation's, M19's angle. The caller says nothing where the motion is in doubt
+/// (after a call or jump it does not follow).
+pub fn linuxcnc_word_used(letter: u8, codes: &[i64], ms: &[i64], motion: Option<i64>) -> bool {
+    let g = |c: i64| codes.contains(&c);
+    let m = |c: i64| ms.contains(&c);
+    let runs = |set: &[i64]| motion.is_some_and(|r| set.contains(&r));
+    let cycle = motion.is_some_and(|r| matches!(r, 730 | 740 | 810..=890));
+    match letter {
+        b'I' => g(100) || runs(&[20, 30, 50, 51, 331, 710, 711, 712, 720, 721, 722, 760, 870]),
+        b'J' => g(100) || runs(&[20, 30, 50, 51, 760, 870]),
+        b'K' => runs(&[20, 30, 330, 331, 760, 870]),
+        b'L' => {
+            g(100)
+                || codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421))
+                || m(66)
+                || m(98)
+                || cycle
+                || runs(&[52, 760])
+        }
+        b'P' => {
+            g(40)
+                || g(100)
+                || g(640)
+                || ms
+                    .iter()
+                    .any(|&c| matches!(c, 19 | 50..=53 | 62..=66 | 98 | 100..=199))
+                || runs(&[
+                    20, 30, 50, 52, 60, 62, 700, 740, 760, 820, 840, 860, 880, 890,
+                ])
+        }
+        b'Q' => {
+            g(100)
+                || g(640)
+                || ms
+                    .iter()
+                    .any(|&c| matches!(c, 19 | 61 | 66..=68 | 100..=199))
+                || runs(&[50, 700, 710, 711, 712, 720, 721, 722, 730, 760, 830])
+        }
+        b'R' => {
+            g(100)
+                || g(411)
+                || g(421)
+                || m(19)
+                || cycle
+                || runs(&[20, 30, 710, 711, 712, 720, 721, 722, 760])
+        }
+        _ => true,
+    }
+}
+
 /// A FANUC lathe's polar coordinate interpolation (FANUC 0i-TF / 30i-TB lathe manuals, "Polar
 /// coordinate interpolation (G12.1, G13.1)", in system A also G112/G113): Some(true) for the
 /// code that turns it on, Some(false) for the one that turns it off, None for any other. While

@@ -418,6 +418,18 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         } else {
             Family::Iso
         },
+        // the target reads every form the source may write (`#`, `[ ]`, `*`)
+        target_dialect: Dialect {
+            family: if variant >= 2 {
+                Family::MacroB
+            } else {
+                Family::Iso
+            },
+            hash: true,
+            brackets: true,
+            star: true,
+            ..Dialect::default()
+        },
         same_cycle_table: true,
         target_g_system: None,
         target_data_input: true,
@@ -455,6 +467,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_past_sequence: PastFormat::Alarm,
         target_g80_clears_motion: false,
         target_arc_radius: b'R',
+        colon_stops: false,
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,

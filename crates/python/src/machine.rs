@@ -171,6 +171,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
         increment_digits: item::<(u32, u32)>(c, "increment_digits")?.into(),
         meanings: item(c, "meanings")?,
         g_code_system: item(c, "g_code_system")?,
+        dialect: crate::dialect(item(c, "dialect")?),
     })
 }
 

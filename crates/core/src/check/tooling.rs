@@ -5,7 +5,8 @@ use super::{Before, BlockView, Checker, Facts, Status};
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::meaning::{
-    linuxcnc_e_used, linuxcnc_motion_code, linuxcnc_takes_axes, LINUXCNC_E_UNUSED,
+    linuxcnc_e_used, linuxcnc_motion_code, linuxcnc_takes_axes, linuxcnc_unused,
+    linuxcnc_word_used, LINUXCNC_E_UNUSED,
 };
 use crate::modal::bit;
 use crate::rules::Rule;
@@ -498,98 +499,59 @@ fn linuxcnc_word_checks(
         ));
     }
     // I, J, K: an arc's or spline's centre or control point, G87's offsets, G76's and
-    // G33.1's data, G10's tool data; a straight move has none
-    if words.has(b'I')
-        && !g(100)
-        && !runs_one_of(&[20, 30, 50, 51, 331, 710, 711, 712, 720, 721, 722, 760, 870])
-    {
-        return Some((
-            "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it (rs274ngc): \
-             I is an arc's centre, and a straight move or a drilling cycle has none"
-                .into(),
+    // G33.1's data, G10's tool data; a straight move has none (`meaning::linuxcnc_word_used`,
+    // which the conversion to LinuxCNC reads too)
+    let unused = |letter: u8| !doubt && !linuxcnc_word_used(letter, codes, ms, runs);
+    let refusal = |letter: u8, why: &str| {
+        Some((
+            format!("{} (rs274ngc){why}", linuxcnc_unused(letter)),
+            letter,
+        ))
+    };
+    if words.has(b'I') && unused(b'I') {
+        return refusal(
             b'I',
-        ));
+            ": I is an arc's centre, and a straight move or a drilling cycle has none",
+        );
     }
-    if words.has(b'J') && !g(100) && !runs_one_of(&[20, 30, 50, 51, 760, 870]) {
-        return Some((
-            "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it (rs274ngc): J is an \
-             arc's centre, and a straight move or a drilling cycle has none"
-                .into(),
+    if words.has(b'J') && unused(b'J') {
+        return refusal(
             b'J',
-        ));
+            ": J is an arc's centre, and a straight move or a drilling cycle has none",
+        );
     }
-    if words.has(b'K') && !runs_one_of(&[20, 30, 330, 331, 760, 870]) {
-        return Some((
-            "K word with no G2, G3, G33, G33.1, G76, or G87 to use it (rs274ngc): K is an \
-             arc's centre or a thread's pitch, and a straight move or a drilling cycle has none"
-                .into(),
+    if words.has(b'K') && unused(b'K') {
+        return refusal(
             b'K',
-        ));
+            ": K is an arc's centre or a thread's pitch, and a straight move or a drilling \
+             cycle has none",
+        );
     }
     // rs274 takes L-1 and Q-1 for no L and no Q (its value for a word not given)
     let given = |l: u8| words.has(l) && words.value(l) != Some(Dec::from_int(-1));
-    let compensation_code = codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421));
-    if given(b'L')
-        && !g(100)
-        && !compensation_code
-        && !m(66)
-        && !m(98)
-        && !cycle
-        && !runs_one_of(&[52, 760])
-    {
-        return Some((
-            "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 \
-             or NURBS code (rs274ngc)"
-                .into(),
-            b'L',
-        ));
+    if given(b'L') && unused(b'L') {
+        return refusal(b'L', "");
     }
     if p_given {
-        let p_codes = g(40) || g(100) || g(640);
-        let p_m = ms
-            .iter()
-            .any(|&c| matches!(c, 19 | 50..=53 | 62..=66 | 98 | 100..=199));
-        if !(p_codes
-            || p_m
-            || runs_one_of(&[
-                20, 30, 50, 52, 60, 62, 700, 740, 760, 820, 840, 860, 880, 890,
-            ]))
-        {
-            return Some((
-                "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 \
-                 M62 M63 M64 M65 M66 M98 or user M code to use it (rs274ngc)"
-                    .into(),
-                b'P',
-            ));
+        if unused(b'P') {
+            return refusal(b'P', "");
         }
         if let Some(found) = linuxcnc_p_value(p, runs, m(19)) {
             return Some(found);
         }
     }
-    let user_m = ms.iter().any(|&c| (100..=199).contains(&c));
-    let q_used = g(100)
-        || g(640)
-        || user_m
-        || ms.iter().any(|&c| matches!(c, 19 | 61 | 66..=68))
-        || runs_one_of(&[50, 700, 710, 711, 712, 720, 721, 722, 730, 760, 830]);
-    if given(b'Q') && !q_used {
-        return Some((
-            "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that \
-             uses it (rs274ngc): Q is a peck depth, a spline's control point, a wait's time or \
-             an M code's data"
-                .into(),
+    if given(b'Q') && unused(b'Q') {
+        return refusal(
             b'Q',
-        ));
+            ": Q is a peck depth, a spline's control point, a wait's time or an M code's data",
+        );
     }
     if words.has(b'R') {
-        let r_codes = g(100) || g(411) || g(421) || m(19);
-        if !r_codes && !cycle && !runs_one_of(&[20, 30, 710, 711, 712, 720, 721, 722, 760]) {
-            return Some((
-                "R word with no g code that uses it (rs274ngc): R is an arc's radius or a \
-                 cycle's retract plane, and a straight move has none"
-                    .into(),
+        if unused(b'R') {
+            return refusal(
                 b'R',
-            ));
+                ": R is an arc's radius or a cycle's retract plane, and a straight move has none",
+            );
         }
         if let Some(r) = words
             .value(b'R')
