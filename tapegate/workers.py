@@ -230,6 +230,9 @@ class _Map:
         self.given = 0  # items given out: the first ``given`` of ``order``
         self.due = 0  # the item whose turn it is
         self.stopped = False
+        # an error a thread met outside an item's function (in the map's own work), raised
+        # in the main thread where it would otherwise wait for an item that thread had taken
+        self.failure: BaseException | None = None
 
     def work(self) -> None:
         """A thread: the next item of ``order``: an early one, or one within ``window`` of
@@ -349,7 +352,20 @@ class _Map:
                             self.held -= len(coming.pieces)  # the due item's now
                         self.space.notify_all()  # the window moved; the next item has room
                         return pieces, slot
+                if self.failure is not None:
+                    raise self.failure
                 self.cond.wait()
+
+    def fail(self, error: BaseException) -> None:
+        """A thread's error outside an item's function: the map stops (the other threads end
+        at their next item or piece) and the main thread raises ``error`` when it would wait
+        for an item, after the items done before it, which it still hands on in order."""
+        with self.cond:
+            if self.failure is None:
+                self.failure = error
+            self.stopped = True
+            self.cond.notify_all()
+            self.space.notify_all()
 
     def stop(self) -> None:
         with self.cond:
@@ -364,11 +380,14 @@ class _Map:
 
 
 def _run(state: _Map, ended: Any) -> None:
-    """A worker thread: :meth:`_Map.work`, then ``ended`` released (its join). An error
-    outside an item's function (which :meth:`_Map.work` hands to the main thread) is printed
-    as an uncaught one in a thread is (``_thread``'s hook), as ``threading``'s did."""
+    """A worker thread: :meth:`_Map.work`, then ``ended`` released (its join). An error in
+    an item's function is handed to the main thread by :meth:`_Map.work`; one outside it (the
+    map's own work: a MemoryError, say) by :meth:`_Map.fail`, so that the main thread raises
+    it rather than waiting for ever for the item this thread had taken."""
     try:
         state.work()
+    except BaseException as error:
+        state.fail(error)
     finally:
         ended.release()
 

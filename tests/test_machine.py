@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pickle
+import time
 
 import pytest
 
@@ -38,17 +39,22 @@ def test_threads_asking_at_once_share_one_machine_built_once(monkeypatch) -> Non
         for _ in range(5):
             profile = load_profile("haas-mill")  # a new object each time
             got: list[object] = []
-            start = threading.Barrier(4)
+            start = threading.Barrier(4, timeout=30)
 
             def ask(profile=profile, got=got, start=start) -> None:  # type: ignore[no-untyped-def]
                 start.wait()
                 got.append(machines.machine(profile))
 
-            threads = [threading.Thread(target=ask) for _ in range(4)]
+            # daemon threads, joined with one deadline for all: a thread stuck on the machine's
+            # lock fails the test and does not keep pytest from exiting
+            threads = [threading.Thread(target=ask, daemon=True) for _ in range(4)]
             for thread in threads:
                 thread.start()
+            deadline = time.monotonic() + 60
             for thread in threads:
-                thread.join(timeout=60)
+                thread.join(timeout=max(0.0, deadline - time.monotonic()))
+            stuck = [thread for thread in threads if thread.is_alive()]
+            assert not stuck, "a thread never got its machine"
             assert len(got) == 4 and all(m is got[0] for m in got)
     finally:
         sys.setswitchinterval(interval)

@@ -1012,11 +1012,14 @@ def test_the_workers_condition_wakes_its_waiters_and_leaves_an_interrupted_one()
     threads = [threading.Thread(target=waiter, args=(n,), daemon=True) for n in range(3)]
     for thread in threads:
         thread.start()
+    deadline = time.monotonic() + 30
     while True:
         with cond:
             if len(cond._waiters) == 3:
                 cond.notify()
                 break
+        assert time.monotonic() < deadline, "the three waiters never waited"
+        time.sleep(0.001)
     deadline = time.monotonic() + 30
     while not woken and time.monotonic() < deadline:
         time.sleep(0.01)
@@ -1028,18 +1031,39 @@ def test_the_workers_condition_wakes_its_waiters_and_leaves_an_interrupted_one()
         thread.join(timeout=30)
     assert sorted(woken) == [0, 1, 2]
 
-    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    # ^C once the main thread waits (its waiter seen in the queue), never before it; if the
+    # wait is not ended by it, a notify after 30 s ends the test with a failure, not a hang
+    stop = threading.Event()
+    sent: list[bool] = []
+
+    def interrupt() -> None:
+        deadline = time.monotonic() + 30
+        while not stop.is_set() and time.monotonic() < deadline:
+            if cond._waiters:
+                time.sleep(0.05)  # the waiter is queued just before the wait's acquire
+                sent.append(True)
+                os.kill(os.getpid(), signal.SIGINT)
+                break
+            time.sleep(0.001)
+        if stop.wait(30):
+            return
+        with cond:
+            cond.notify_all()
+
     before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    sender = threading.Thread(target=interrupt, daemon=True)
     try:
-        timer.start()
+        sender.start()
         with pytest.raises(KeyboardInterrupt), cond:
             try:
                 cond.wait()
             finally:
                 assert lock.locked()  # taken back before the interrupt goes on
+        assert sent == [True]
         assert not lock.locked() and not cond._waiters
     finally:
-        timer.cancel()
+        stop.set()
+        sender.join(timeout=30)
         signal.signal(signal.SIGINT, before)
 
 
@@ -1053,3 +1077,43 @@ def test_a_path_below_a_folder_is_joined_as_os_path_joins_it(folder):
     for below in ("p.nc", "d/p.nc", "..nc"):
         assert workers.joined(folder, below) == (below if folder == "." else
                                                  os.path.join(folder, below))
+
+
+def test_a_thread_failing_outside_an_items_function_is_raised_not_waited_for(monkeypatch):
+    """An error a worker meets in the map's own work (not in ``func``), after it has taken an
+    item: the main thread raises it where it would wait for that item, after handing on the
+    items done before it, and does not wait for ever (review 25)."""
+    import tapegate.workers as workers
+
+    real = workers._Map.work
+    calls: list[int] = []
+
+    def work(self):  # type: ignore[no-untyped-def]
+        calls.append(1)
+        if len(calls) == 1:  # the first thread: one item taken, then the error
+            with self.cond:
+                self.slots[self.order[self.given]] = workers._Slot(self.order[self.given], False)
+                self.given += 1
+            raise MemoryError("outside the item's function")
+        real(self)
+
+    monkeypatch.setattr(workers._Map, "work", work)
+    got: list[object] = []
+    error: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            for result in workers.ordered_map(lambda x: x * 10, [1, 2, 3, 4], 2):
+                got.append(result)
+        except BaseException as exc:  # noqa: BLE001 - the test reads it below
+            error.append(exc)
+
+    import threading
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    thread.join(timeout=60)
+    assert not thread.is_alive(), "the main thread waited for ever for the failed thread's item"
+    assert len(error) == 1 and isinstance(error[0], MemoryError)
+    assert str(error[0]) == "outside the item's function"
+    assert got == []  # item 0 was the failed thread's: nothing after it is handed on
