@@ -165,6 +165,9 @@ class NcWord:
     error: DiffError | None = None  # why its number could not be read (compared as written)
     per_revolution: bool = False  # a feed in G95 (G99 on a Fanuc or Haas lathe)
     written: str = ""  # the token exactly as written (``token`` is upper case)
+    # a dwell's time by a parameter or an expression that the control reads in milliseconds
+    # (a FANUC or Haas G04 P, a drilling cycle's P; LinuxCNC's P is seconds)
+    milliseconds: bool = False
 
     @property
     def unit(self) -> str:
@@ -221,6 +224,10 @@ class WordChange:
         elif (self.a.token == self.b.token and self.a.value is not None
               and self.b.value is not None):  # one word, read otherwise under each profile
             text += f" (read as {_plain(self.a.value)} and as {_plain(self.b.value)})"
+        elif self.a.milliseconds != self.b.milliseconds:  # the same text, another time
+            units = ["seconds", "milliseconds"]
+            text += (f" (a dwell read in {units[self.a.milliseconds]} and in "
+                     f"{units[self.b.milliseconds]})")
         return text
 
     def as_json(self) -> dict[str, Any]:
@@ -458,13 +465,14 @@ def nc_block(read: _core.DiffBlock) -> NcBlock:
     """A block of the core as an :class:`NcBlock` (a block that differs: to describe it)."""
     errors = read.errors or {}
     words = []
-    for i, (key, token, kind, value, factor, step, (incremental, parameter, per_revolution),
+    for i, (key, token, kind, value, factor, step,
+            (incremental, parameter, per_revolution, milliseconds),
             as_length, _, written) in enumerate(read.words()):
         words.append(NcWord(
             key, token, kind, None if value is None else Decimal(value),  # type: ignore[arg-type]
             _FACTORS[factor], Decimal(step), incremental=incremental, parameter=parameter,
             as_length=None if as_length is None else _FACTORS[as_length], error=errors.get(i),
-            per_revolution=per_revolution, written=written))
+            per_revolution=per_revolution, written=written, milliseconds=milliseconds))
     number = read.number
     state = read.state()
     if state is not None:  # the factor of the word that set each value, as a Decimal

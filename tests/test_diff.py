@@ -637,6 +637,38 @@ def test_a_dwell_s_x_is_no_step_for_the_position_before_it(tmp_path):
     assert out.splitlines()[1:3] == ["G01 X-0.0016 F157.4803", "G04 X0.001"]
 
 
+@pytest.mark.parametrize(("source", "fanuc", "lcnc", "line"), [
+    ("fanuc-mill", "G21\n#1=2000\nG04 P#1\nM30\n", "g21\n#1=2000\ng4 p#1\nm30\n", 3),
+    ("haas-mill", "G21\nG04 P[2000]\nM30\n", "g21\ng4 p[2000]\nm30\n", 2),
+    ("fanuc-mill", "G21\n#1=2\nG0 X0 Y0 Z5.\nG98 G82 X1. Y1. Z-1. R1. P#1 F100.\nG80\nM30\n",
+     "g21\n#1=2\ng0 x0 y0 z5\ng98 g82 x1 y1 z-1 r1 p#1 f100\ng80\nm30\n", 4),
+])
+def test_a_dwell_by_a_parameter_in_milliseconds_is_not_the_same_as_one_in_seconds(
+        tmp_path, source, fanuc, lcnc, line):
+    """Review 24, 2: `diff` compares parameters and expressions as written, and called a
+    FANUC's `G04 P#1` (milliseconds) and LinuxCNC's `g4 p#1` (seconds), 1000 times apart,
+    "the same program", exit 0, where `--verify` tells them apart. The block differs now,
+    either way round; within a family of one time unit the same text is the same."""
+    a, b = write(tmp_path, "a.nc", fanuc), write(tmp_path, "b.ngc", lcnc)
+    linuxcnc, src = load_profile("linuxcnc"), load_profile(source)
+    for (x, px), (y, py) in [((a, src), (b, linuxcnc)), ((b, linuxcnc), (a, src))]:
+        found, summary = differences(x, y, px, py)
+        assert not summary.same
+        assert [(d.a.line, d.b.line) for d in found] == [(line, line)]
+        [change] = found[0].words
+        assert (change.kind, change.key) == ("changed", "P")
+        first, second = ("milliseconds", "seconds") if px is src else ("seconds", "milliseconds")
+        assert change.describe().endswith(f"(a dwell read in {first} and in {second})")
+    result = run("diff", a, b, "--from", source, "-p", "linuxcnc")
+    assert result.exit_code == 1, result.output
+    assert "(a dwell read in milliseconds and in seconds)" in result.output
+    assert "differ: 1 block changed" in result.output
+    # the same control family on both sides: the same time
+    other = "haas-mill" if source == "fanuc-mill" else "fanuc-mill"
+    result = run("diff", a, a, "--from", source, "-p", other)
+    assert result.exit_code == 0 and "the same program" in result.output, result.output
+
+
 def test_a_position_one_program_never_set_is_none_without_a_unit(tmp_path):
     """'position Y none mm' read as if none were a length."""
     a = write(tmp_path, "a.nc", "G21 G90\nG01 X1. F100.\nX2.\nM30\n")

@@ -1734,3 +1734,26 @@ def test_the_check_and_the_restart_both_call_every_mirror_not_known_after_a_lone
         then = f"N11 {cancel}\n"
         assert found(f"{off} X#1", then) == [("TG140", 9), ("TG601", 11)]
         assert plan(body.format(f"{off} X#1", then), 13, profile).preamble
+
+
+@pytest.mark.parametrize("second", ["G51.1 X0", "(none)"])
+def test_the_check_judges_an_axis_given_back_by_its_cancel_and_the_restart_waits_for_it(
+        second: str) -> None:
+    """Review 24, 1: after `G91 G51.1 X0 Y0` (not known exactly: its positions apart) and
+    `G50.1 Y0`, a second `G51.1 X0` reset Y's span too, and Y-420. after it, plain as the Y400.
+    before the mirror (820 apart on a travel of 812), was passed. Now the check flags it with
+    the second mirror as without it; the restart refuses under the mirror of X and after its
+    cancel until X and Y are given again, and plans there."""
+    from postproc.check import Checker
+    body = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G43 H1 Z1.\nN4 G00 X0 Y400.\n"
+            "N5 G91 G51.1 X0 Y0\nN6 G90 G00 X10. Y-300.\nN7 G50.1 Y0\nN8 {}\nN9 G00 Y-{}\n"
+            "N10 G50.1\nN11 G00 X0 Y0\nN12 G00 Z1.\nM30\n%\n")
+    for y, expected in [("420.", [11]), ("390.", [])]:
+        found = Checker(FANUC).run_stream([body.format(second, y)], FANUC.dialect)
+        assert [f.line for f in found if f.rule == "TG601"] == expected, (second, y)
+    text = body.format(second, "420.")
+    mirror_from = 10 if second.startswith("G51.1") else 7
+    assert f"G51.1 (programmable mirror image) from line {mirror_from} is in force" in refusal(
+        text, 11)
+    assert "the position of X is not known here" in refusal(text, 13)
+    assert plan(text, 14).preamble

@@ -6998,11 +6998,6 @@ pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
     }
 }
 
-/// Whether canned cycle `g` (its system A number) takes P as the dwell at the hole's bottom on a
-/// FANUC or Haas control: a mill's G73, G74, G76 and G82-G89 (FANUC 0i-MF, Haas NGC mill
-/// manual), a lathe's G83-G89 (FANUC 0i-TF "Canned cycle for drilling") and the Haas lathe's
-/// radial live-tool cycles G241-G249 (their P the dwell, haas-lathe.toml). A lathe's G73, G74
-/// and G76 are multiple repetitive cycles, whose P is no time.
 /// Whether two control families write a dwell's time differently (units, or words), so that
 /// a conversion between them converts it or refuses it ([`Converter::dwell_time`]): between
 /// FANUC/Haas Macro B and LinuxCNC, and between any two families where one is LinuxCNC,
@@ -7012,6 +7007,11 @@ fn dwell_differs(from: Family, to: Family) -> bool {
     from != to && (OWN.contains(&from) || OWN.contains(&to))
 }
 
+/// Whether canned cycle `g` (its system A number) takes P as the dwell at the hole's bottom on a
+/// FANUC or Haas control: a mill's G73, G74, G76 and G82-G89 (FANUC 0i-MF, Haas NGC mill
+/// manual), a lathe's G83-G89 (FANUC 0i-TF "Canned cycle for drilling") and the Haas lathe's
+/// radial live-tool cycles G241-G249 (their P the dwell, haas-lathe.toml). A lathe's G73, G74
+/// and G76 are multiple repetitive cycles, whose P is no time.
 pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
     match g {
         82..=89 => true,

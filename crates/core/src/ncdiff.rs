@@ -531,11 +531,15 @@ impl Comparer {
             b: Some(Side { index: ib, view: b }),
             difference,
         };
+        // (a dwell's time by a parameter or an expression, in milliseconds on one side and
+        // seconds on the other: the same text is another time, in `diff`'s comparison as
+        // written too -- review 24, finding 2: `G04 P#1` of a FANUC and `g4 p#1` of LinuxCNC,
+        // 1000 times apart, were "the same program")
+        if wa.parameter && wb.parameter && wa.milliseconds != wb.milliseconds {
+            return Some(change(ChangeKind::Changed, None, None, None));
+        }
         if wa.parameter && wb.parameter && o.parameters_address {
-            // (a dwell's time by a parameter, in milliseconds on one side and seconds on the
-            // other: the same text is another time)
-            return (wa.milliseconds != wb.milliseconds)
-                .then(|| change(ChangeKind::Changed, None, None, None));
+            return None;
         }
         match (wa.statement, wb.statement) {
             (InStatement::Text { values, arguments }, InStatement::Text { .. }) => {
@@ -1162,6 +1166,36 @@ mod tests {
             value: d("0"),
             factor,
             step: d(step),
+        }
+    }
+
+    #[test]
+    fn a_dwell_by_a_parameter_in_milliseconds_differs_from_one_in_seconds_in_both_modes() {
+        // review 24, finding 2: `G04 P#1` of a FANUC (milliseconds) and `g4 p#1` of LinuxCNC
+        // (seconds) were the same in `diff`'s comparison as written (`--verify`'s by address
+        // told them apart)
+        let param = |token: &[u8], milliseconds: bool| {
+            let mut w = crate::ncread::ReadWord::text(b"P", token);
+            w.parameter = true;
+            w.milliseconds = milliseconds;
+            w
+        };
+        for address in [false, true] {
+            let mut c = comparer(("0", "1"), None);
+            c.options.parameters_address = address;
+            let mut carry = [None; 9];
+            let mut kind = |a: &crate::ncread::ReadWord, b: &crate::ncread::ReadWord| {
+                c.word(a, 0, b, 0, &mut carry).map(|change| change.kind)
+            };
+            let (fanuc, lcnc) = (param(b"P#1", true), param(b"p#1", false));
+            assert_eq!(kind(&fanuc, &lcnc), Some(ChangeKind::Changed), "{address}");
+            assert_eq!(kind(&lcnc, &fanuc), Some(ChangeKind::Changed), "{address}");
+            // one time unit on both sides: the same text is the same, another one differs
+            // as written (by address alone: the same)
+            assert_eq!(kind(&fanuc, &param(b"P#1", true)), None, "{address}");
+            let other = kind(&fanuc, &param(b"P#2", true));
+            let expected = (!address).then_some(ChangeKind::Changed);
+            assert_eq!(other, expected, "{address}");
         }
     }
 

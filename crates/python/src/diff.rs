@@ -417,7 +417,7 @@ type WordTuple<'py> = (
     Option<String>,
     u8,
     String,
-    (bool, bool, bool),
+    (bool, bool, bool, bool),
     Option<u8>,
     Option<String>,
     Bound<'py, PyString>,
@@ -464,7 +464,8 @@ impl DiffBlock {
     }
 
     /// Its words: `(key, token, kind, value, factor, step, (incremental, parameter,
-    /// per_revolution), as_length, error, written)`, factors 0 (one), 1 (25.4), 2 (0.3048).
+    /// per_revolution, milliseconds), as_length, error, written)`, factors 0 (one), 1 (25.4),
+    /// 2 (0.3048).
     fn words<'py>(&self, py: Python<'py>) -> PyResult<Vec<WordTuple<'py>>> {
         self.inner
             .words
@@ -477,7 +478,7 @@ impl DiffBlock {
                     w.value.map(|v| v.to_string()),
                     factor(w.factor),
                     w.step.to_string(),
-                    (w.incremental, w.parameter, w.per_revolution),
+                    (w.incremental, w.parameter, w.per_revolution, w.milliseconds),
                     w.as_length.map(factor),
                     w.error.clone(),
                     py_text(py, &w.written)?,

@@ -52,9 +52,15 @@ pub(super) struct Frames {
     /// For each frame bit, whether an axis it hides moved under it: at its cancel those axes
     /// are where the frame put them, not known here (none moved: where they stood before).
     moved: [bool; 6],
-    /// The spans from before a mirror image, taken back at its cancel: the positions under
-    /// it stand apart (a mirror keeps the size of a span, not its place).
-    saved: Option<[Option<Span>; 9]>,
+    /// The spans from before a mirror image, each axis's taken back at the cancel of its
+    /// mirror: the positions under it stand apart (a mirror keeps the size of a span, not its
+    /// place). Held for the axes of `saving` only.
+    saved: [Option<Span>; 9],
+    /// The axes (bit `i` for `AXES[i]`) whose span from before a mirror not known exactly is
+    /// in `saved`: those the mirrors in force mirror, and no other (review 24, finding 1: a
+    /// second G51.1 of X dropped Y's span, given back at Y's cancel, and passed an
+    /// over-travel of Y).
+    saving: u16,
     /// The axes (bit `i` for `AXES[i]`) a mirror image G51.1 not known exactly here
     /// mirrors: its positions stand apart until a G50.1 has ended every one of them.
     apart: u16,
@@ -64,9 +70,6 @@ pub(super) struct Frames {
     shifted: bool,
     /// The mirror image turning on in the block in hand is a Haas's G101 (not a G51.1).
     haas_mirror: bool,
-    /// The axes a G50.1 gave their spans from before a mirror not known exactly back to,
-    /// while other axes stayed mirrored ([`Checker::mirror_off`]).
-    given_back: u16,
     /// The mirrored axes whose mirror a cancel with an axis word not known here (`G100 X#1`,
     /// `G50.1 X#1`) may or may not have ended: their positions are not compared with the
     /// travel until a cancel names the axis plainly, or names none and ends them all
@@ -595,16 +598,26 @@ impl Checker {
                         return;
                     }
                 }
+                // the axes whose mirror the block changes
+                let mut changed = 0u16;
                 if on == 32 {
                     // not exact here: the mirrored axes' positions stand apart, those of an
                     // exact mirror in force with them
                     if let Some(map) = self.frames.map.take_if(|map| map.bit == 32) {
                         for k in (0..3).filter(|&k| map.m[k][k] == -1.0) {
-                            self.frames.apart |= 1 << k;
+                            changed |= 1 << k;
                         }
                     }
                     let named = Self::mirror_axes(b);
-                    self.frames.apart |= if named == 0 { XYZ } else { named };
+                    let mirrors = if named == 0 { XYZ } else { named };
+                    // (a Haas's second G101 of an axis apart leaves it mirrored as it was,
+                    // about the same point: one span with the positions before it)
+                    changed |= if self.frames.haas_mirror {
+                        mirrors & !self.frames.apart
+                    } else {
+                        mirrors
+                    };
+                    self.frames.apart |= changed;
                     // (review 23) a FANUC G51.1 naming plainly an axis a doubtful cancel left
                     // in doubt: mirrored again (the cancel ended its mirror) or mirrored a
                     // second time (it did not), its positions from here are the ones written
@@ -614,11 +627,18 @@ impl Checker {
                         self.frames.doubt &= !(self.mirror_words(b).0 & self.frames.apart);
                     }
                 }
-                match self.frames.saved {
-                    None => self.frames.saved = Some(std::mem::take(&mut self.spans)),
-                    // the positions under the mirror before this block are mirrored otherwise
-                    // than those after it: apart from them too
-                    Some(_) => self.spans = Default::default(),
+                // each axis the block mirrors anew keeps its span from before its mirror;
+                // one mirrored already before this block (its span from before the mirror
+                // kept) has its positions under the mirror before this block mirrored
+                // otherwise than those after it: apart from them too. The other axes' spans
+                // go on as they were (review 24, finding 1).
+                for k in (0..AXES.len()).filter(|&k| changed & 1 << k != 0) {
+                    if self.frames.saving & 1 << k == 0 {
+                        self.frames.saved[k] = self.spans[k].take();
+                        self.frames.saving |= 1 << k;
+                    } else {
+                        self.spans[k] = None;
+                    }
                 }
             }
         }
@@ -748,16 +768,12 @@ impl Checker {
         let Some(map) = self.frames.map.as_ref().filter(|map| map.bit == 32) else {
             let ending = if all { 0 } else { self.frames.apart & named };
             self.frames.apart &= if all { 0 } else { !named };
-            if self.frames.apart != 0 && ending != 0 {
+            // (the mirror stays in force while a doubtful axis's may: review 24)
+            if (self.frames.apart != 0 || self.frames.doubt != 0) && ending != 0 {
                 // (review 16b, finding 3) the axes whose mirror ends get their spans from
                 // before it back; where the mirror left the tool on them is not known here,
                 // so until an absolute position
-                if let Some(saved) = self.frames.saved.as_mut() {
-                    for k in (0..3).filter(|&k| ending & 1 << k != 0) {
-                        self.spans[k] = saved[k].take();
-                        self.frames.given_back |= 1 << k;
-                    }
-                }
+                self.give_back(ending);
                 for k in (0..3).filter(|&k| ending & 1 << k != 0) {
                     self.machine.forget_axis(AXES[k]);
                 }
@@ -895,13 +911,7 @@ impl Checker {
         // before the mirror back, as at a plain cancel of it: its positions under the mirror
         // are mirrored about a point not known here, and those after a plain cancel are
         // compared with the ones before the mirror
-        let apart = self.frames.apart & axes;
-        if let Some(saved) = self.frames.saved.as_mut() {
-            for k in (0..AXES.len()).filter(|&k| apart & 1 << k != 0) {
-                self.spans[k] = saved[k].take();
-                self.frames.given_back |= 1 << k;
-            }
-        }
+        self.give_back(self.frames.apart & axes);
         self.frames.apart &= !axes;
         if let Some(map) = self.frames.map.as_mut().filter(|map| map.bit == 32) {
             for k in (0..3).filter(|&k| axes & 1 << k != 0) {
@@ -943,16 +953,19 @@ impl Checker {
             self.frames.map = None;
         }
         if self.frames.on & (16 | 32) == 0 {
-            if let Some(saved) = self.frames.saved.take() {
-                // (an axis given its span back at a partial cancel keeps the one it has now)
-                for (k, span) in saved.into_iter().enumerate() {
-                    if self.frames.given_back & 1 << k == 0 {
-                        self.spans[k] = span;
-                    }
-                }
-                self.frames.given_back = 0;
-            }
+            // (an axis given its span back at a partial cancel keeps the one it has now)
+            self.give_back(self.frames.saving);
         }
+    }
+
+    /// The `axes` whose mirror not known exactly ends get their spans from before it back
+    /// (those of them whose span is kept, [`Frames::saving`]): their positions under it
+    /// stood apart.
+    fn give_back(&mut self, axes: u16) {
+        for k in (0..AXES.len()).filter(|&k| axes & self.frames.saving & 1 << k != 0) {
+            self.spans[k] = self.frames.saved[k].take();
+        }
+        self.frames.saving &= !axes;
     }
 
     /// TG140 once per file: the positions under a frame the checker cannot apply are not
@@ -2124,6 +2137,54 @@ mod tests {
             Rule::TravelExceeded,
         );
         assert_eq!(found, []);
+    }
+
+    #[test]
+    fn a_mirror_resets_the_span_of_the_axes_it_mirrors_only() {
+        // review 24, finding 1: a G51.1 not known exactly here (under G91, or with an axis
+        // apart) while a mirror's spans were kept reset every axis's span, those of axes it
+        // does not mirror too: Y given its span back by `G50.1 Y0` lost it at a `G51.1 X0`,
+        // and Y400. and Y-420., both plain, 820 apart (travel Y -400..400), passed
+        let found = |body: &str| at(fanuc_centres(), body, Rule::TravelExceeded);
+        let ended = |second: &str, y: &str| {
+            format!(
+                "G00 X0 Y400.\nG91 G51.1 X0 Y0\nG90 G00 X10. Y-300.\nG50.1 Y0\n{second}\n\
+                 G00 Y-{y}\nG50.1"
+            )
+        };
+        for second in ["G51.1 X0", "(none)"] {
+            assert_eq!(found(&ended(second, "420.")), [(7, 5)], "{second}");
+            assert_eq!(found(&ended(second, "390.")), [], "{second}");
+        }
+        // Y mirrored again: its positions from there stand apart
+        assert_eq!(found(&ended("G51.1 Y0", "420.")), []);
+        // an axis no mirror names keeps one span across the mirror
+        let beside =
+            |mirror: &str| format!("G00 X0 Y400.\nG91 {mirror}\nG90 G00 X10. Y-420.\nG50.1");
+        assert_eq!(found(&beside("G51.1 X0")), [(4, 14)]);
+        assert_eq!(found(&beside("G51.1 Y0")), []);
+        // review 23's case with a first mirror not known exactly: the doubtful line read
+        // either way, or gone, Y400. before the mirrors and Y-420. after them are 820 apart
+        let again = |doubt: &str, y: &str| {
+            format!(
+                "G00 X0 Y400.\nG91 G51.1 X0 Y0\nG90 G00 X10. Y-300.\n{doubt}\nG51.1 X0 Y0\n\
+                 G00 Y-10.\nG50.1\nG00 Y-{y}"
+            )
+        };
+        for doubt in ["G50.1 X#1", "G50.1", "(none)"] {
+            assert_eq!(found(&again(doubt, "420.")), [(9, 5)], "{doubt}");
+            assert_eq!(found(&again(doubt, "390.")), [], "{doubt}");
+        }
+        // an axis whose mirror ends plainly while another's is in doubt gets its span back
+        // (X in doubt after `G50.1 X#1 Z0`; `G50.1 Y0` ends Y's mirror for certain)
+        let doubt = |y: &str| {
+            format!(
+                "G00 X0 Y400.\nG91 G51.1 X0 Y0\nG90 G00 X10. Y-300.\nG50.1 X#1 Z0\nG50.1 Y0\n\
+                 G00 Y-{y}\nG50.1"
+            )
+        };
+        assert_eq!(found(&doubt("420.")), [(7, 5)]);
+        assert_eq!(found(&doubt("390.")), []);
     }
 
     #[test]
