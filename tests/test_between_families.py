@@ -708,3 +708,68 @@ def test_d_and_h_beside_their_codes_still_convert_for_linuxcnc(tmp_path):
     assert "G43 Z50. H1" in out and "G41 X50. D1" in out
     said = rs274_output(tmp_path, out)
     assert "PROGRAM_END" in said and "word with no" not in said, said
+
+
+# A dwell's F (fix24): ISO 6983-1 (clause 13), an Okuma or a HEIDENHAIN dwells by G04 F; a
+# FANUC or Haas mill by X or P only (the FANUC machining-center manuals, "G04 X_ ; or G04 P_ ;"),
+# its F in a G04 block being the feed. Neither form is carried to the other as written.
+ISO_DWELL = "%\nN1 G21 G90 G17\nN2 G00 X0 Y0 Z10.\nN3 G04 F2.\nN4 M30\n"
+
+
+def dwell_refused(text: str, source: str, target: str) -> ConversionError:
+    with pytest.raises(ConversionError) as info:
+        convert(text, source, target)
+    return info.value
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill"])
+def test_an_iso_dwell_by_f_is_refused_for_a_fanuc_or_haas_mill(target):
+    e = dwell_refused(ISO_DWELL, "iso-mill", target)
+    assert (e.code, e.line, e.column) == ("conversion", 4, 8), e
+    assert e.message.startswith("F2.: the dwell's time by F, which the target control reads "
+                                "as a feed"), e
+    assert '"G04 X_ ; or G04 P_ ;"' in e.message
+    # a FANUC lathe's G04 takes X, U or P: no F either
+    lathe = "%\nN1 G21 G90 G18\nN2 G00 X10. Z10.\nN3 G04 F2.\nN4 M30\n"
+    e = dwell_refused(lathe, "iso-lathe", "fanuc-lathe")
+    assert (e.line, e.column) == (4, 8) and "F2.: the dwell's time by F" in e.message, e
+
+
+def test_an_iso_dwell_by_x_or_p_is_carried_to_a_fanuc_mill_and_an_f_dwell_within_iso():
+    for block in ("G04 X2.", "G04 P2000"):
+        text = ISO_DWELL.replace("G04 F2.", block)
+        assert block in convert(text, "iso-mill", "fanuc-mill")
+    assert "N3 G04 F2.\n" in convert(ISO_DWELL, "iso-mill", "iso-mill")
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+def test_a_feed_in_a_fanuc_dwell_block_is_refused_where_f_is_the_dwell_and_kept_elsewhere(
+        source):
+    text = FANUC + "G00 X0 Y0 Z10.\nG04 X1. F200.\nG01 Z-2.\nM30\n"
+    e = dwell_refused(text, source, "iso-mill")
+    assert (e.code, e.line, e.column) == ("conversion", 4, 9), e
+    assert e.message.startswith("F200.: a feed in the dwell's block, which the target control "
+                                "reads as the dwell's time (ISO 6983-1, clause 13"), e
+    # LinuxCNC reads G4 P1 F200 as a dwell of 1 s and a feed (rs274, the dwell section above)
+    assert "G04 P1. F200.\n" in convert(text, source, "linuxcnc")
+    other = "haas-mill" if source == "fanuc-mill" else "fanuc-mill"
+    assert "G04 X1. F200.\n" in convert(text, source, other)
+
+
+@pytest.mark.parametrize("name", ["fanuc-mill", "haas-mill"])
+def test_the_check_reads_an_f_in_a_fanuc_mill_dwell_block_as_the_feed(name):
+    """`G04 X1. F200.`: X is the dwell's time, F the feed in force after it (no TG401 at the
+    G01 that follows); `G04 F2.` has no time word there (TG532). On ISO, F is the time."""
+    from postproc.check import Checker
+
+    def rules(text: str, profile_name: str) -> list[tuple[str, int]]:
+        p = load_profile(profile_name)
+        return [(f.rule, f.line) for f in Checker(p).run_stream([text], p.dialect)
+                if f.rule in ("TG401", "TG531", "TG532")]
+
+    text = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 G00 X0 Y0 Z10.\nN3 G04 X1. F200.\nN4 G01 Z-2.\n"
+            "M30\n%\n")
+    assert rules(text, name) == [("TG531", 5)]
+    assert rules(text, "iso-mill") == [("TG401", 6)]  # F200. a dwell's time there
+    assert rules(ISO_DWELL + "%\n", name) == [("TG532", 4), ("TG531", 4)]
+    assert rules(ISO_DWELL + "%\n", "iso-mill") == []

@@ -1755,5 +1755,12 @@ def test_the_check_judges_an_axis_given_back_by_its_cancel_and_the_restart_waits
     mirror_from = 10 if second.startswith("G51.1") else 7
     assert f"G51.1 (programmable mirror image) from line {mirror_from} is in force" in refusal(
         text, 11)
-    assert "the position of X is not known here" in refusal(text, 13)
+    # the line named is the cancel that ended X's mirror (line 12), not `G50.1 Y0` (line 9),
+    # which left it in force (fix23's doubt: the refusal named line 9)
+    said = refusal(text, 13)
+    assert "the position of X is not known here (line 12: G50.1 ends the mirror image" in said
     assert plan(text, 14).preamble
+    # an axis whose mirror ends at the partial cancel is named with that line
+    y_off = body.replace("N7 G50.1 Y0", "N7 G50.1 X0").replace("N11 G00 X0 Y0", "N11 G00 Y0")
+    said = refusal(y_off.format(second, "420."), 13)
+    assert "the position of X is not known here (line 9: G50.1 ends the mirror image" in said

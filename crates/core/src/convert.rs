@@ -2758,6 +2758,7 @@ impl Converter {
             self.between_g_systems(b, &gs)?;
         }
         self.motion_mode(b, &gs)?;
+        self.dwell_feed_words(b, &gs)?;
         // (between two LinuxCNC profiles only a change of units refuses an E: without one
         // nothing needs the motion followed; from another family's program the target reads
         // an E the source wrote for a meaning of its own)
@@ -3921,6 +3922,57 @@ impl Converter {
             ),
             clause: "dwell",
             column: crate::text::column(b.text, second.start),
+            line: None,
+        })
+    }
+
+    /// An F in a G04 block that is a dwell's time on one control and a feed on the other: ISO
+    /// 6983-1 (clause 13), an Okuma or a HEIDENHAIN reads `G04 F2.` as the dwell's time, a
+    /// FANUC or Haas control reads G04's time in X or P only (the FANUC machining-center
+    /// manuals, "Dwell": "G04 X_ ; or G04 P_ ;"; the lathe's adds U), F there being the feed.
+    /// Carried as written, the time would become a feed (and the block a dwell without its time)
+    /// or the feed a second time; the unit the ISO and Okuma sources read a dwell's F in is not
+    /// in tapegate's sources, so it is not rewritten as X or P: refused at the F. Between two
+    /// families that both dwell by F (SINUMERIK's G4 F, HEIDENHAIN's G04 F) `dwell_time` judges
+    /// it.
+    fn dwell_feed_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !gs.contains(&4) || self.c.family == self.c.target_family {
+            return Ok(());
+        }
+        let source = self.c.src_modal.dwell.contains(&b'F');
+        let target = crate::word::dwell_words(self.c.target_family, self.c.lathe).contains(&b'F');
+        if source == target || (source && self.c.target_family != Family::MacroB) {
+            return Ok(()); // (to LinuxCNC: `dwell_time` refuses a dwell's F with its reason)
+        }
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'F') && !w.token.contains(&b'='))
+        else {
+            return Ok(());
+        };
+        let message = if source {
+            format!(
+                "{}: the dwell's time by F, which the target control reads as a feed, not as a \
+                 dwell (a FANUC or Haas G04 takes its time in X or P: the FANUC \
+                 machining-center manuals, \"G04 X_ ; or G04 P_ ;\", the lathe's adds U); the \
+                 unit the source reads a dwell's F in, tapegate's sources do not say: write the \
+                 dwell's time as the target's (G04 X in seconds with its point, or P in \
+                 milliseconds)",
+                text(w.token)
+            )
+        } else {
+            format!(
+                "{}: a feed in the dwell's block, which the target control reads as the \
+                 dwell's time (ISO 6983-1, clause 13: G04's time by F; SINUMERIK: \"Dwell time \
+                 (G4)\", G4 F in seconds), not as a feed: write the feed in a block of its own",
+                text(w.token)
+            )
+        };
+        Err(ConvertError {
+            message,
+            clause: "dwell",
+            column: crate::text::column(b.text, w.start),
             line: None,
         })
     }

@@ -605,10 +605,13 @@ impl Walk {
 
     /// `code` on `line` ends the transform `name`: the axes moved under it stand at the
     /// transformed point (the control moves from there: FANUC's first move after G69 is
-    /// absolute), which the modal state's number is not; unknown until an absolute move.
-    fn transform_cancel(&mut self, line: usize, code: &str, name: &str) {
+    /// absolute), which the modal state's number is not; unknown until an absolute move. The
+    /// axes of `kept` stay under the transform (a mirror cancel naming other axes only): they
+    /// are lost at the cancel that ends it, and that line is the one a refusal names (fix23:
+    /// `G50.1 Y0` was named for X, whose mirror it left in force).
+    fn transform_cancel(&mut self, line: usize, code: &str, name: &str, kept: u16) {
         for (i, &axis) in AXES.iter().enumerate() {
-            if self.transformed & bit(i) != 0 && self.lost[i].is_none() {
+            if self.transformed & bit(i) & !kept != 0 && self.lost[i].is_none() {
                 let what = format!(
                     "{code} ends the {name}: the tool stands where the transformed moves left \
                      it, not at the number the program wrote"
@@ -1079,7 +1082,7 @@ impl Walk {
                         .any(|(k, _, _)| *k == code.to_string());
                     self.drop_unrestored(&code.to_string());
                     if was && code != 16 {
-                        self.transform_cancel(line, &format!("G{g}"), name);
+                        self.transform_cancel(line, &format!("G{g}"), name, 0);
                     }
                 }
             }
@@ -1117,7 +1120,9 @@ impl Walk {
                     param_axes,
                 );
                 if was {
-                    self.transform_cancel(line, "G100", "mirror image");
+                    // an axis still mirrored for certain is not ended here
+                    let kept = self.haas_mirrored & !self.haas_mirror_doubt;
+                    self.transform_cancel(line, "G100", "mirror image", kept);
                 }
             }
             if (54..=59).contains(&g) {
@@ -1240,7 +1245,9 @@ impl Walk {
                     param_axes,
                 );
                 if was {
-                    self.transform_cancel(line, "G50.1", "mirror image");
+                    // an axis still mirrored for certain is not ended here
+                    let kept = self.mirrored & !self.mirror_doubt;
+                    self.transform_cancel(line, "G50.1", "mirror image", kept);
                 }
             }
             if (text == "92.1" || text == "92.2")

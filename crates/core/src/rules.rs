@@ -270,7 +270,7 @@ rules! {
     DwellNotAlone = "TG531", Warning, "13", Tooling, false,
         "G04 dwell not alone in its block";
     DwellWithoutTime = "TG532", Error, "13", Tooling, false,
-        "G04 dwell without the control's time word (LinuxCNC: P; SINUMERIK: F or S; Fanuc and Haas lathes: X, U or P; elsewhere X, P or F)";
+        "G04 dwell without the control's time word (LinuxCNC: P; SINUMERIK: F or S; Fanuc and Haas lathes: X, U or P; Fanuc and Haas mills: X or P; elsewhere X, P or F)";
     CycleIncomplete = "TG541", Error, "Annex E", Tooling, false,
         "fixed cycle without its depth (Z; X or U in a FANUC lathe's side cycles G87-G89) or retract (R) word (FANUC and Haas: kept from the cycle in force if it drills along the same axis; LinuxCNC: G73 and G74 too, and only in the block that starts the cycle: a block repeating it keeps them; Haas: TG543, a warning)";
     CycleWordsOptional = "TG543", Warning, "Annex E", Tooling, false,

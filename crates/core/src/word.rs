@@ -26,13 +26,17 @@ use crate::wordformat::WordFormat;
 ///   Fundamentals, "Dwell time (G4)"; the F and S programmed before stay in force.
 /// - A Fanuc or Haas lathe: X, U or P ("G04 X_ ; or G04 U_ ; or G04 P_ ;", the FANUC lathe
 ///   operator's manuals, "Dwell (G04)"); U there is that time, not an increment of X.
-/// - Elsewhere X or P (the Fanuc machining-center manuals' "G04 X_ ; or G04 P_ ;"), and
-///   ISO 6983-1's F (clause 13).
+/// - A Fanuc or Haas mill: X or P (the Fanuc machining-center manuals' "G04 X_ ; or
+///   G04 P_ ;"); F is no dwell word there but the feed, as in any other block (`G04 X1. F100.`
+///   is a dwell of 1 s and a feed of 100). No Haas page at hand lists the letters otherwise.
+/// - Elsewhere (ISO, Okuma, HEIDENHAIN) X or P, and ISO 6983-1's F (clause 13): no source at
+///   hand for Okuma's or HEIDENHAIN's letters says otherwise.
 pub fn dwell_words(family: Family, fanuc_lathe: bool) -> &'static [u8] {
     match family {
         Family::LinuxCnc => b"P",
         Family::Sinumerik => b"FS",
         Family::MacroB if fanuc_lathe => b"XUP",
+        Family::MacroB => b"XP",
         _ => b"XPF",
     }
 }
