@@ -359,7 +359,29 @@ pub fn differing_codes(
     // letter (a, j): another vocabulary, not another meaning
     let differ = |a: &str, b: &str| a.len() != 1 && b.len() != 1 && group(a) != group(b);
     let mut out = Vec::new();
+    // (a code the source's table lacks: a SINUMERIK's G28, which its check names TG307)
+    let source_group = |codes: &[Option<crate::check::Code>], n: usize| match codes
+        .get(n)
+        .and_then(Option::as_ref)
+    {
+        Some(a) => group_name(&a.duration),
+        None => "no code of its profile's table".to_string(),
+    };
+    for n in 0..target.g_codes.len() {
+        if let Some(why) = target_refuses(target, b'G', n) {
+            out.push((n.to_string(), source_group(&source.g_codes, n), why));
+        }
+    }
+    for n in 0..target.m_codes.len() {
+        if let Some(why) = target_refuses(target, b'M', n) {
+            out.push((format!("M{n}"), source_group(&source.m_codes, n), why));
+        }
+    }
+    let refused = |letter: u8, n: usize| target_refuses(target, letter, n).is_some();
     for (n, (a, b)) in source.g_codes.iter().zip(&target.g_codes).enumerate() {
+        if refused(b'G', n) {
+            continue;
+        }
         if let (Some(a), Some(b)) = (a, b) {
             // a code the table leaves unassigned (ISO 6983's spare numbers) is no meaning
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
@@ -383,6 +405,9 @@ pub fn differing_codes(
         .zip(&target.m_codes)
         .take(if m_codes { 100 } else { 0 });
     for (n, (a, b)) in m_pairs.enumerate() {
+        if refused(b'M', n) {
+            continue;
+        }
         if let (Some(a), Some(b)) = (a, b) {
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
@@ -413,6 +438,25 @@ pub fn differing_codes(
         }
     }
     out
+}
+
+/// Why the target's check refuses code `n` of `letter` (as `check::codes` reads a code: TG303
+/// where an ISO 6983-1 table leaves it permanently unassigned, TG306 where the control alarms
+/// on a code its table lacks), or None where the target reads it. Whatever the source's table
+/// says of the code (a SINUMERIK's `G28`, which its own table lacks), the target refuses the
+/// block, so the conversion does. ISO
+/// 6983-1 Annex E: a permanently unassigned code (G28 of the standard's table) is no code of
+/// the standard, whatever a FANUC or a SINUMERIK does with its number.
+fn target_refuses(target: &Config, letter: u8, n: usize) -> Option<String> {
+    let codes = if letter == b'G' {
+        &target.g_codes
+    } else {
+        &target.m_codes
+    };
+    let code = codes.get(n).and_then(Option::as_ref)?;
+    (target.family == Family::Iso && code.status == crate::check::Status::Permanent).then(|| {
+        "a code the target's ISO 6983-1 table leaves permanently unassigned (Annex E)".to_string()
+    })
 }
 
 /// A modal group as a refusal names it: `group "motion"`, or no modal group.

@@ -1,0 +1,75 @@
+"""The classes benchmarks/convert_targets.py --all left "ok but refused" (docs/benchmarks.md, "The
+65 left"): each conversion now refuses at the source word, located, where the target's own check
+would refuse the output; or carries the meaning exactly.
+
+1. A code the target's ISO 6983-1 table leaves permanently unassigned (Annex E; `G28`, a FANUC's
+   reference return): refused at the code (TG303 on the target).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.convert import ConvertOptions, convert_text
+from formats.errors import ConversionError
+from formats.parser import parse_text
+from formats.profile import builtin_names, load_profile
+from postproc.check import Checker
+
+PROFILES = builtin_names()
+FANUC = "O1000\nG21 G90 G17\n"
+
+
+def convert(text: str, source: str, target: str) -> str:
+    out, _ = convert_text(text, ConvertOptions(target=load_profile(target),
+                                               source=load_profile(source)))
+    return out
+
+
+def target_errors(text: str, target: str) -> list[str]:
+    """The errors of the target profile's check of ``text``: each as ``line:rule message``."""
+    profile = load_profile(target)
+    blocks = parse_text(text, profile.dialect, file="out.nc", errors="collect")
+    return [f"{f.line}:{f.rule} {f.message}" for f in Checker(profile, file="out.nc").run(
+        iter(blocks)) if f.severity == "error"]
+
+
+def refusal(text: str, source: str, target: str) -> ConversionError:
+    with pytest.raises(ConversionError) as err:
+        convert(text, source, target)
+    return err.value
+
+
+# -- 1. a code the ISO 6983-1 target's table leaves permanently unassigned ----------------------
+
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("target", ["iso-mill", "iso-lathe", "sinumerik-7e2"])
+def test_a_code_the_iso_table_leaves_permanently_unassigned_is_refused_at_the_code(
+        source, target):
+    text = FANUC + "G0 X0 Y0\nG91 G28 Z0.\nM30\n"
+    # the target's check refuses the code as written (TG303)
+    assert any(e.startswith("4:TG303 G28") for e in target_errors(text, target))
+    e = refusal(text, source, target)
+    assert (e.code, e.line, e.column) == ("conversion", 4, 5)
+    assert "G28:" in e.message
+    assert "permanently unassigned (Annex E)" in e.message
+    # without it the program converts, and the target's check reads the output
+    out = convert(text.replace("G91 G28 Z0.\n", ""), source, target)
+    assert not target_errors(out, target)
+
+
+def test_the_same_code_is_carried_where_the_target_table_assigns_it():
+    text = FANUC + "G0 X0 Y0\nG91 G28 Z0.\nM30\n"
+    out = convert(text, "fanuc-mill", "haas-mill")
+    assert "G28" in out and not target_errors(out, "haas-mill")
+
+
+def test_a_code_the_source_table_lacks_is_refused_where_the_iso_table_leaves_it_unassigned():
+    """A SINUMERIK's table has no G28 (its check names it, TG307); the ISO target refuses it."""
+    text = "N10 G17 G90 G71\nN20 G91 G28 Z0.0\nN30 M30\n"
+    assert any(e.startswith("2:TG303 G28") for e in target_errors(text, "iso-lathe"))
+    e = refusal(text, "sinumerik-840d", "iso-lathe")
+    assert (e.code, e.line, e.column) == ("conversion", 2, 9)
+    assert "no code of its profile's table on the source" in e.message
