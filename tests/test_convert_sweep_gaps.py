@@ -73,3 +73,32 @@ def test_a_code_the_source_table_lacks_is_refused_where_the_iso_table_leaves_it_
     e = refusal(text, "sinumerik-840d", "iso-lathe")
     assert (e.code, e.line, e.column) == ("conversion", 2, 9)
     assert "no code of its profile's table on the source" in e.message
+
+
+# -- 4. a FANUC lathe's T word (tool and offset) for a target that reads one tool number ---------
+
+LATHE = "O0001\nG21\nT0101\nG00 X20. Z2.\nM30\n"
+
+
+@pytest.mark.parametrize("target", ["iso-lathe", "iso-mill", "fanuc-mill", "haas-mill",
+                                    "linuxcnc"])
+def test_a_lathe_tool_and_offset_word_is_refused_for_a_target_that_reads_one_number(target):
+    e = refusal(LATHE, "fanuc-lathe", target)
+    assert (e.code, e.line, e.column) == ("conversion", 3, 1)
+    assert e.message.startswith("T0101: a FANUC or Haas lathe's T word is the tool number")
+    assert "has no place in it for the offset" in e.message
+
+
+@pytest.mark.parametrize("source, target", [("fanuc-lathe", "haas-lathe"),
+                                            ("haas-lathe", "fanuc-lathe"),
+                                            ("fanuc-lathe", "fanuc-lathe-b")])
+def test_a_lathe_tool_and_offset_word_is_carried_between_lathes_that_read_it_alike(
+        source, target):
+    out = convert(LATHE, source, target)
+    assert "T0101" in out
+    assert not [e for e in target_errors(out, target) if ":TG604 " in e]
+
+
+def test_a_macro_calls_t_argument_is_no_tool_word():
+    text = "O0001\nG21\nG65 P9010 T3.\nM30\n"
+    assert "G65 P9010 T3." in convert(text, "fanuc-lathe", "fanuc-mill")

@@ -220,6 +220,11 @@ pub struct ConvertConfig {
     /// (ISO 6983-1 5.1, `colon_stop`; TG122 of its check), where the source's does not: a
     /// comment holding one is refused ([`colon_in_comment`]).
     pub colon_stops: bool,
+    /// The source is a FANUC or Haas lathe, whose T word is the tool number followed by the
+    /// offset number (`T0101`: tool 1, offset 1; dialect::LATHE_OFFSET_DIGITS), and the target
+    /// reads its T as one number (a mill, an ISO 6983-1 or another family's control): a T word
+    /// is refused ([`Converter::same_tool_word`]).
+    pub lathe_tool_offset: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -2898,6 +2903,7 @@ impl Converter {
         self.lacked_code_words(b, g_word)?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
+        self.same_tool_word(b)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -3691,6 +3697,44 @@ impl Converter {
                 text(w.token)
             ),
             clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A FANUC or Haas lathe's T word (`T0101`: tool 1 with offset 1, the last two digits the
+    /// offset number; FANUC 0i-TF B-64604EN "Tool offset", Haas lathe operator's manual "T
+    /// Tool Function") for a target that reads T as one tool number (`ConvertConfig::
+    /// lathe_tool_offset`): carried, `T0101` is tool 101 there (its check: TG604 above the
+    /// largest tool number) and the offset is not applied. tapegate does not split the word
+    /// into a tool and an offset word (the target's offset letter and its reading are its
+    /// own), so the conversion stops at the T word.
+    fn same_tool_word(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if !self.c.lathe_tool_offset {
+            return Ok(());
+        }
+        // (a macro call's T is its argument #20, no tool)
+        let call = b.words.iter().any(|w| {
+            w.token[0].eq_ignore_ascii_case(&b'G')
+                && code_number(&w.token[1..])
+                    .is_some_and(|n| n.is_whole() && matches!(n.trunc(), 65 | 66))
+        });
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| !call && w.token[0].eq_ignore_ascii_case(&b'T'))
+        else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: a FANUC or Haas lathe's T word is the tool number followed by the offset \
+                 number (T0101: tool 1, offset 1), the target reads its T as one tool number \
+                 (T0101 tool 101) and has no place in it for the offset; tapegate does not \
+                 split the word: write the target's tool and offset words",
+                text(w.token)
+            ),
+            clause: "profile",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
@@ -7837,6 +7881,7 @@ mod tests {
             target_g80_clears_motion: false,
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             colon_stops: false,
+            lathe_tool_offset: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

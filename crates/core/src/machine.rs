@@ -292,6 +292,7 @@ impl Machine {
             // 0 where the target reads no radius: its R a parameter (`checks.pqr`, an ISO
             // 6983-1 profile's), as its check reads an arc
             colon_stops: out.facts.colon_stop && !source.facts.colon_stop,
+            lathe_tool_offset: source.modal.fanuc_lathe && !out.modal.fanuc_lathe,
             target_arc_radius: if out.modal.arc_radius == b'R' && out.pqr[2] != Role::Length {
                 0
             } else {
