@@ -102,3 +102,33 @@ def test_a_lathe_tool_and_offset_word_is_carried_between_lathes_that_read_it_ali
 def test_a_macro_calls_t_argument_is_no_tool_word():
     text = "O0001\nG21\nG65 P9010 T3.\nM30\n"
     assert "G65 P9010 T3." in convert(text, "fanuc-lathe", "fanuc-mill")
+
+
+# -- 5. a FANUC's text after '%' for a target that reads it as words -----------------------------
+
+PERCENT = "%O0003(ABC)\nG0 X0 Y0\nM30\n%\n"
+
+
+@pytest.mark.parametrize("target", ["haas-mill", "iso-mill", "linuxcnc"])
+def test_words_after_the_percent_the_fanuc_skips_are_refused_for_a_target_that_reads_them(
+        target):
+    assert any(e.startswith("1:TG111 ") or e.startswith("1:TG412 ")
+               for e in target_errors(PERCENT, target))
+    e = refusal(PERCENT, "fanuc-mill", target)
+    assert (e.code, e.line, e.column) == ("conversion", 1, 2)
+    assert e.message.startswith('"O0003(ABC)": text after the first \'%\', which the source')
+    # on a line of its own the number converts, and the target's check reads the '%' line
+    split = PERCENT.replace("%O0003", "%\nO0003")
+    out = convert(split, "fanuc-mill", target)
+    assert not [x for x in target_errors(out, target) if x.startswith("1:")]
+
+
+@pytest.mark.parametrize("source, target, line", [
+    ("fanuc-mill", "fanuc-mill", "%O0003(ABC)"),    # one control: carried as it is
+    ("fanuc-mill", "sinumerik-840d", "%O0003(ABC)"),  # the % line names the program there
+    ("haas-mill", "iso-mill", "%(ABC)"),            # a comment, no word
+])
+def test_a_percent_line_is_carried_where_the_target_reads_it_as_the_source_does(
+        source, target, line):
+    text = PERCENT.replace("%O0003(ABC)", line)
+    assert convert(text, source, target).splitlines()[0] == line

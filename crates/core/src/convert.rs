@@ -225,6 +225,10 @@ pub struct ConvertConfig {
     /// reads its T as one number (a mill, an ISO 6983-1 or another family's control): a T word
     /// is refused ([`Converter::same_tool_word`]).
     pub lathe_tool_offset: bool,
+    /// The source's control skips the text after the first `%` (a FANUC), the target's reader
+    /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
+    /// ([`percent_words`]).
+    pub percent_words_read: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -335,6 +339,46 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
         }
     }
     Ok(())
+}
+
+/// The `%` line of a source whose control skips the text after its first `%` (a FANUC:
+/// `dialect::skips_leader`, TG129 of its check), for a target whose reader takes a word there
+/// for the program's first block (Haas, ISO 6983-1 clause 4, LinuxCNC: TG111 or TG412 of its
+/// check): `%O0003(TITLE)`, whose O number the FANUC loses, would be read as words before the
+/// first end of block. tapegate does not move the text to a line of its own (the source never
+/// ran it), so the line is refused at the first character after the `%` (as the target's
+/// check reads it: a letter followed by a digit or a sign and a digit).
+fn percent_words(b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    let Some(percent) = b.text.iter().position(|&c| c == b'%') else {
+        return Ok(());
+    };
+    let rest = &b.text[percent + 1..];
+    let start = rest.iter().position(|c| !c.is_ascii_whitespace());
+    let Some(start) = start else {
+        return Ok(());
+    };
+    let bytes = &rest[start..];
+    let digits = match bytes.get(1) {
+        Some(b'+' | b'-') => bytes.get(2..).unwrap_or_default(),
+        _ => bytes.get(1..).unwrap_or_default(),
+    };
+    let wordlike = bytes[0].is_ascii_alphabetic() && digits.first().is_some_and(u8::is_ascii_digit);
+    if !wordlike {
+        return Ok(());
+    }
+    Err(ConvertError {
+        message: format!(
+            "{:?}: text after the first '%', which the source control skips (FANUC B-63524EN/01, \
+             8, memory card file format; its check: TG129) and the target's reader takes for \
+             words before the first end of block (ISO 6983-1 clause 4; its check: TG111, rs274's \
+             TG412): write the '%' on a line of its own, the program number (if it is to be \
+             read) on the next",
+            String::from_utf8_lossy(bytes.trim_ascii_end())
+        ),
+        clause: "4",
+        column: crate::text::column(b.text, percent + 1 + start),
+        line: None,
+    })
 }
 
 fn error(message: String, clause: &'static str) -> ConvertError {
@@ -2331,6 +2375,9 @@ impl Converter {
             });
         }
         if b.percent {
+            if self.c.percent_words_read {
+                percent_words(b)?;
+            }
             return Ok(None);
         }
         if self.data_block(b)? {
@@ -7882,6 +7929,7 @@ mod tests {
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             colon_stops: false,
             lathe_tool_offset: false,
+            percent_words_read: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

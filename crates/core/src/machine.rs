@@ -293,6 +293,10 @@ impl Machine {
             // 6983-1 profile's), as its check reads an arc
             colon_stops: out.facts.colon_stop && !source.facts.colon_stop,
             lathe_tool_offset: source.modal.fanuc_lathe && !out.modal.fanuc_lathe,
+            // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
+            percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
+                && !crate::dialect::skips_leader(out.family, out.haas)
+                && !matches!(out.family, Family::Sinumerik | Family::Heidenhain),
             target_arc_radius: if out.modal.arc_radius == b'R' && out.pqr[2] != Role::Length {
                 0
             } else {

@@ -469,6 +469,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_arc_radius: b'R',
         colon_stops: false,
         lathe_tool_offset: false,
+        percent_words_read: false,
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,
