@@ -132,3 +132,34 @@ def test_a_percent_line_is_carried_where_the_target_reads_it_as_the_source_does(
         source, target, line):
     text = PERCENT.replace("%O0003(ABC)", line)
     assert convert(text, source, target).splitlines()[0] == line
+
+
+# -- 2. two codes of one modal group in the target's table ---------------------------------------
+
+ONE_GROUP = "O1000\nG21 G90 G17\nG49 G40 G80\nG0 X0 Y0\nM30\n"
+
+
+def test_two_codes_the_target_puts_in_one_modal_group_are_refused_at_the_second():
+    assert any(e.startswith("3:TG304 G40 and G49") for e in target_errors(ONE_GROUP, "pm322-eia"))
+    e = refusal(ONE_GROUP, "haas-mill", "pm322-eia")
+    assert (e.code, e.line, e.column) == ("conversion", 3, 5)
+    assert e.message.startswith("G40: the target's code table puts this code and G49 of the "
+                                "same block in one modal group (d), the source's in two")
+    # in two blocks they convert (the block's other codes are the conversion's to judge)
+    two = ONE_GROUP.replace("G49 G40 G80", "G49\nG40")
+    assert not [x for x in target_errors(convert(two, "haas-mill", "pm322-eia"), "pm322-eia")
+                if ":TG304 " in x]
+
+
+@pytest.mark.parametrize("target", ["iso-mill", "fanuc-mill"])
+def test_two_codes_of_two_groups_on_both_tables_are_carried(target):
+    out = convert(ONE_GROUP, "haas-mill", target)
+    assert "G49 G40 G80" in out
+    assert not [x for x in target_errors(out, target) if ":TG304 " in x]
+
+
+def test_a_units_code_beside_a_motion_code_is_the_converters_to_write():
+    """System C's G20 is a turning cycle (A's G90), in the motion group with G00; a mill's
+    `G20 G00` is written with the lathe's own inch code, so the two are no pair."""
+    out = convert("O1000\nG20 G00 X1. Z1.\nM30\n", "fanuc-mill", "fanuc-lathe-c")
+    assert "G20" not in out and "G70 G00" in out

@@ -225,6 +225,10 @@ pub struct ConvertConfig {
     /// reads its T as one number (a mill, an ISO 6983-1 or another family's control): a T word
     /// is refused ([`Converter::same_tool_word`]).
     pub lathe_tool_offset: bool,
+    /// Pairs of G codes (the lower first) the target's table puts in one modal group and the
+    /// source's in two, with the target's group (`machine::one_group_codes`): both in one
+    /// block are refused at the second ([`Converter::same_meaning`]).
+    pub one_group_codes: Vec<(i64, i64, String)>,
     /// The source's control skips the text after the first `%` (a FANUC), the target's reader
     /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
     /// ([`percent_words`]).
@@ -3692,6 +3696,47 @@ impl Converter {
                     text(w.token)
                 );
                 self.note(note);
+            }
+        }
+        if letter == b'G' && !self.c.one_group_codes.is_empty() {
+            // (a units code is the converter's to write: the target's own, as above)
+            let modal = &self.c.src_modal;
+            let units = [modal.inch, modal.metric].map(|n| modal.g_system.from_a(n).unwrap_or(n));
+            let mut seen: Vec<i64> = Vec::new();
+            for w in b.words.iter() {
+                let Some(n) = w.token[0]
+                    .eq_ignore_ascii_case(&b'G')
+                    .then(|| code_number(&w.token[1..]))
+                    .flatten()
+                    .filter(|n| n.is_whole())
+                    .map(|n| n.trunc())
+                    .filter(|n| !units.contains(n))
+                else {
+                    continue;
+                };
+                let pair = seen.iter().find_map(|&m| {
+                    let (lo, hi) = (m.min(n), m.max(n));
+                    self.c
+                        .one_group_codes
+                        .iter()
+                        .find(|c| c.0 == lo && c.1 == hi)
+                        .map(|c| (m, c.2.clone()))
+                });
+                if let Some((m, group)) = pair {
+                    return Err(ConvertError {
+                        message: format!(
+                            "{}: the target's code table puts this code and G{m:02} of the \
+                             same block in one modal group ({group}), the source's in two; \
+                             the target refuses two codes of one group in a block (ISO \
+                             6983-1 Annex E; its check: TG304): write them in two blocks",
+                            text(w.token)
+                        ),
+                        clause: "codes",
+                        column: crate::text::column(b.text, w.start),
+                        line: None,
+                    });
+                }
+                seen.push(n);
             }
         }
         let arc = letter == b'G'
@@ -7930,6 +7975,7 @@ mod tests {
             colon_stops: false,
             lathe_tool_offset: false,
             percent_words_read: false,
+            one_group_codes: Vec::new(),
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

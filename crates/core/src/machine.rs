@@ -320,6 +320,11 @@ impl Machine {
                 codes.extend(others);
                 codes
             },
+            one_group_codes: if self.control == target.control && self.lathe == target.lathe {
+                Vec::new()
+            } else {
+                one_group_codes(source, out)
+            },
             listed_codes: either_lists(self, target),
             src_listed: (self.family != Family::Iso).then(|| self.listed.clone()),
             src_decimal_g: (self.family != Family::Iso)
@@ -462,6 +467,41 @@ fn target_refuses(target: &Config, letter: u8, n: usize) -> Option<String> {
     (target.family == Family::Iso && code.status == crate::check::Status::Permanent).then(|| {
         "a code the target's ISO 6983-1 table leaves permanently unassigned (Annex E)".to_string()
     })
+}
+
+/// The pairs of G codes (the lower number first) that the target's table puts in one modal
+/// group and the source's in two (both modal there), with the target's group: written in one
+/// block, the source runs both, the target refuses the block (TG304 of its check; ISO 6983-1
+/// Annex E, "two codes of one modal group"). A Haas's `G49 G40` (tool length offset cancel,
+/// cutter compensation cancel) is one group (d) of ISO 1056's table (pm322-eia).
+fn one_group_codes(source: &Config, target: &Config) -> Vec<(i64, i64, String)> {
+    fn modal(c: &Option<crate::check::Code>) -> Option<&str> {
+        c.as_ref()
+            .filter(|c| {
+                !matches!(c.duration.as_str(), "" | "TBO" | "non-modal")
+                    && !matches!(
+                        c.status,
+                        crate::check::Status::Permanent | crate::check::Status::Unassigned
+                    )
+            })
+            .map(|c| c.duration.as_str())
+    }
+    let both: Vec<(usize, &str, &str)> = source
+        .g_codes
+        .iter()
+        .zip(&target.g_codes)
+        .enumerate()
+        .filter_map(|(n, (a, b))| Some((n, modal(a)?, modal(b)?)))
+        .collect();
+    let mut out = Vec::new();
+    for (i, &(n, a, b)) in both.iter().enumerate() {
+        for &(m, other_a, other_b) in &both[i + 1..] {
+            if b == other_b && a != other_a {
+                out.push((n as i64, m as i64, b.to_string()));
+            }
+        }
+    }
+    out
 }
 
 /// A modal group as a refusal names it: `group "motion"`, or no modal group.

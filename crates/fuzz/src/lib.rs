@@ -470,6 +470,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         colon_stops: false,
         lathe_tool_offset: false,
         percent_words_read: false,
+        one_group_codes: Vec::new(),
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,
