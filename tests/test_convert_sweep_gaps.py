@@ -161,5 +161,39 @@ def test_two_codes_of_two_groups_on_both_tables_are_carried(target):
 def test_a_units_code_beside_a_motion_code_is_the_converters_to_write():
     """System C's G20 is a turning cycle (A's G90), in the motion group with G00; a mill's
     `G20 G00` is written with the lathe's own inch code, so the two are no pair."""
-    out = convert("O1000\nG20 G00 X1. Z1.\nM30\n", "fanuc-mill", "fanuc-lathe-c")
+    out = convert("O1000\nG20 G00 Z1.\nM30\n", "fanuc-mill", "fanuc-lathe-c")
     assert "G20" not in out and "G70 G00" in out
+
+
+# -- 3. a mill's program for a lathe that reads X as a diameter ----------------------------------
+
+MILL = "O1000\nG21 G17\nG00 X0. Y0.\nG01 X10. Y0. F100.\nG02 X20. Y10. I5. J5.\nM30\n"
+AFTER_G80 = "O1000\nG21\nG00 Z1.\nG81 Z-1. R1. F100.\nG80\nX5. Z5.\nM30\n"
+
+
+@pytest.mark.parametrize("target", ["fanuc-lathe", "fanuc-lathe-b", "fanuc-lathe-c",
+                                    "haas-lathe"])
+def test_a_mill_programs_x_is_refused_for_a_lathe_that_reads_x_as_a_diameter(target):
+    # carried, the target's check reads the arc with X a diameter (TG403): another arc
+    assert any(":TG403 " in e for e in target_errors(MILL, target))
+    e = refusal(MILL, "fanuc-mill", target)
+    assert (e.code, e.line, e.column) == ("conversion", 3, 5)
+    assert e.message.startswith("X0.: the source reads X as a length from the origin (a mill), "
+                                "the target lathe as a diameter")
+    # a move after G80 with no motion mode (TG411 on a FANUC lathe) is refused at its X too
+    assert any(e.startswith("6:TG411 ") for e in target_errors(AFTER_G80, target)) == (
+        target != "haas-lathe")
+    e = refusal(AFTER_G80, "fanuc-mill", target)
+    assert (e.line, e.column) == (6, 1)
+
+
+@pytest.mark.parametrize("text", ["O1000\nG21\nG04 X1.5\nG00 Z1.\nM30\n",
+                                  "O1000\nG21\nG65 P9010 X1.5\nM30\n"])
+def test_a_dwell_or_macro_calls_x_is_no_position(text):
+    out = convert(text, "fanuc-mill", "fanuc-lathe-b")
+    assert "X1.5" in out
+
+
+def test_a_lathe_program_between_lathes_keeps_its_x():
+    text = "O0001\nG21\nG00 X20. Z2.\nM30\n"
+    assert "X20." in convert(text, "fanuc-lathe", "fanuc-lathe-b")

@@ -229,6 +229,10 @@ pub struct ConvertConfig {
     /// source's in two, with the target's group (`machine::one_group_codes`): both in one
     /// block are refused at the second ([`Converter::same_meaning`]).
     pub one_group_codes: Vec<(i64, i64, String)>,
+    /// The source reads X as a length from the origin (a mill), the target as a diameter (a
+    /// FANUC, Haas or Okuma lathe: `check::Config::diameter`): an X word is refused
+    /// ([`Converter::same_x_reading`]).
+    pub x_diameter: bool,
     /// The source's control skips the text after the first `%` (a FANUC), the target's reader
     /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
     /// ([`percent_words`]).
@@ -2955,6 +2959,7 @@ impl Converter {
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
         self.same_tool_word(b)?;
+        self.same_x_reading(b)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -3789,6 +3794,44 @@ impl Converter {
                 text(w.token)
             ),
             clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A mill's X word for a lathe that reads X as a diameter (`ConvertConfig::x_diameter`;
+    /// FANUC 0i-TF B-64604EN "Diameter and radius programming", the Haas lathe and Okuma
+    /// OSP-P200L manuals likewise): carried, `X10.` is 5 from the axis there, an arc's end and
+    /// centre no longer agree (the target's check: TG403, TG405), and the mill's XY plane
+    /// (G17, its reset) is not the lathe's (G18). tapegate does not double X, so the
+    /// conversion stops at the first X word; a dwell's (G04 X) and a macro call's (G65/G66)
+    /// X is no position. (The system A lathe profile refused most mill programs at their G90
+    /// or G94 by its code table; systems B and C number those codes as a mill does.)
+    fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if !self.c.x_diameter {
+            return Ok(());
+        }
+        let no_position = b.words.iter().any(|w| {
+            w.token[0].eq_ignore_ascii_case(&b'G')
+                && code_number(&w.token[1..])
+                    .is_some_and(|n| n.is_whole() && matches!(n.trunc(), 4 | 65 | 66))
+        });
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| !no_position && w.token[0].eq_ignore_ascii_case(&b'X'))
+        else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: the source reads X as a length from the origin (a mill), the target lathe \
+                 as a diameter (X10. is 5. from the spindle axis there), so every position and \
+                 arc in X would be another; tapegate does not convert a mill's program for a \
+                 lathe: write it for the lathe",
+                text(w.token)
+            ),
+            clause: "profile",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
@@ -7976,6 +8019,7 @@ mod tests {
             lathe_tool_offset: false,
             percent_words_read: false,
             one_group_codes: Vec::new(),
+            x_diameter: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

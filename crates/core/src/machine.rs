@@ -293,6 +293,12 @@ impl Machine {
             // 6983-1 profile's), as its check reads an arc
             colon_stops: out.facts.colon_stop && !source.facts.colon_stop,
             lathe_tool_offset: source.modal.fanuc_lathe && !out.modal.fanuc_lathe,
+            // (an ISO 6983-1 source, the profile a conversion takes without --from too, says
+            // nothing of how its machine reads X)
+            x_diameter: !self.lathe
+                && self.control != Control::Iso
+                && !source.diameter
+                && out.diameter,
             // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
             percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
                 && !crate::dialect::skips_leader(out.family, out.haas)

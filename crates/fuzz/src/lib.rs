@@ -471,6 +471,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         lathe_tool_offset: false,
         percent_words_read: false,
         one_group_codes: Vec::new(),
+        x_diameter: false,
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,
