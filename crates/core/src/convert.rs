@@ -220,6 +220,23 @@ pub struct ConvertConfig {
     /// (ISO 6983-1 5.1, `colon_stop`; TG122 of its check), where the source's does not: a
     /// comment holding one is refused ([`colon_in_comment`]).
     pub colon_stops: bool,
+    /// The source is a FANUC or Haas lathe, whose T word is the tool number followed by the
+    /// offset number (`T0101`: tool 1, offset 1; dialect::LATHE_OFFSET_DIGITS), and the target
+    /// reads its T as one number (a mill, an ISO 6983-1 or another family's control): a T word
+    /// is refused ([`Converter::same_tool_word`]).
+    pub lathe_tool_offset: bool,
+    /// Pairs of G codes (the lower first) the target's table puts in one modal group and the
+    /// source's in two, with the target's group (`machine::one_group_codes`): both in one
+    /// block are refused at the second ([`Converter::same_meaning`]).
+    pub one_group_codes: Vec<(i64, i64, String)>,
+    /// The source reads X as a length from the origin (a mill), the target as a diameter (a
+    /// FANUC, Haas or Okuma lathe: `check::Config::diameter`): an X word is refused
+    /// ([`Converter::same_x_reading`]).
+    pub x_diameter: bool,
+    /// The source's control skips the text after the first `%` (a FANUC), the target's reader
+    /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
+    /// ([`percent_words`]).
+    pub percent_words_read: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -330,6 +347,46 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
         }
     }
     Ok(())
+}
+
+/// The `%` line of a source whose control skips the text after its first `%` (a FANUC:
+/// `dialect::skips_leader`, TG129 of its check), for a target whose reader takes a word there
+/// for the program's first block (Haas, ISO 6983-1 clause 4, LinuxCNC: TG111 or TG412 of its
+/// check): `%O0003(TITLE)`, whose O number the FANUC loses, would be read as words before the
+/// first end of block. tapegate does not move the text to a line of its own (the source never
+/// ran it), so the line is refused at the first character after the `%` (as the target's
+/// check reads it: a letter followed by a digit or a sign and a digit).
+fn percent_words(b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    let Some(percent) = b.text.iter().position(|&c| c == b'%') else {
+        return Ok(());
+    };
+    let rest = &b.text[percent + 1..];
+    let start = rest.iter().position(|c| !c.is_ascii_whitespace());
+    let Some(start) = start else {
+        return Ok(());
+    };
+    let bytes = &rest[start..];
+    let digits = match bytes.get(1) {
+        Some(b'+' | b'-') => bytes.get(2..).unwrap_or_default(),
+        _ => bytes.get(1..).unwrap_or_default(),
+    };
+    let wordlike = bytes[0].is_ascii_alphabetic() && digits.first().is_some_and(u8::is_ascii_digit);
+    if !wordlike {
+        return Ok(());
+    }
+    Err(ConvertError {
+        message: format!(
+            "{:?}: text after the first '%', which the source control skips (FANUC B-63524EN/01, \
+             8, memory card file format; its check: TG129) and the target's reader takes for \
+             words before the first end of block (ISO 6983-1 clause 4; its check: TG111, rs274's \
+             TG412): write the '%' on a line of its own, the program number (if it is to be \
+             read) on the next",
+            String::from_utf8_lossy(bytes.trim_ascii_end())
+        ),
+        clause: "4",
+        column: crate::text::column(b.text, percent + 1 + start),
+        line: None,
+    })
 }
 
 fn error(message: String, clause: &'static str) -> ConvertError {
@@ -2326,6 +2383,9 @@ impl Converter {
             });
         }
         if b.percent {
+            if self.c.percent_words_read {
+                percent_words(b)?;
+            }
             return Ok(None);
         }
         if self.data_block(b)? {
@@ -2899,6 +2959,8 @@ impl Converter {
         self.lacked_code_words(b, g_word)?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
+        self.same_tool_word(b)?;
+        self.same_x_reading(b)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -3642,6 +3704,47 @@ impl Converter {
                 self.note(note);
             }
         }
+        if letter == b'G' && !self.c.one_group_codes.is_empty() {
+            // (a units code is the converter's to write: the target's own, as above)
+            let modal = &self.c.src_modal;
+            let units = [modal.inch, modal.metric].map(|n| modal.g_system.from_a(n).unwrap_or(n));
+            let mut seen: Vec<i64> = Vec::new();
+            for w in b.words.iter() {
+                let Some(n) = w.token[0]
+                    .eq_ignore_ascii_case(&b'G')
+                    .then(|| code_number(&w.token[1..]))
+                    .flatten()
+                    .filter(|n| n.is_whole())
+                    .map(|n| n.trunc())
+                    .filter(|n| !units.contains(n))
+                else {
+                    continue;
+                };
+                let pair = seen.iter().find_map(|&m| {
+                    let (lo, hi) = (m.min(n), m.max(n));
+                    self.c
+                        .one_group_codes
+                        .iter()
+                        .find(|c| c.0 == lo && c.1 == hi)
+                        .map(|c| (m, c.2.clone()))
+                });
+                if let Some((m, group)) = pair {
+                    return Err(ConvertError {
+                        message: format!(
+                            "{}: the target's code table puts this code and G{m:02} of the \
+                             same block in one modal group ({group}), the source's in two; \
+                             the target refuses two codes of one group in a block (ISO \
+                             6983-1 Annex E; its check: TG304): write them in two blocks",
+                            text(w.token)
+                        ),
+                        clause: "codes",
+                        column: crate::text::column(b.text, w.start),
+                        line: None,
+                    });
+                }
+                seen.push(n);
+            }
+        }
         let arc = letter == b'G'
             && matches!(self.modal.state.motion, Some(2 | 3))
             && self.modal.state.cycle.is_none();
@@ -3692,6 +3795,82 @@ impl Converter {
                 text(w.token)
             ),
             clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A mill's X word for a lathe that reads X as a diameter (`ConvertConfig::x_diameter`;
+    /// FANUC 0i-TF B-64604EN "Diameter and radius programming", the Haas lathe and Okuma
+    /// OSP-P200L manuals likewise): carried, `X10.` is 5 from the axis there, an arc's end and
+    /// centre no longer agree (the target's check: TG403, TG405), and the mill's XY plane
+    /// (G17, its reset) is not the lathe's (G18). tapegate does not double X, so the
+    /// conversion stops at the first X word; a dwell's (G04 X) and a macro call's (G65/G66)
+    /// X is no position. (The system A lathe profile refused most mill programs at their G90
+    /// or G94 by its code table; systems B and C number those codes as a mill does.)
+    fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if !self.c.x_diameter {
+            return Ok(());
+        }
+        let no_position = b.words.iter().any(|w| {
+            w.token[0].eq_ignore_ascii_case(&b'G')
+                && code_number(&w.token[1..])
+                    .is_some_and(|n| n.is_whole() && matches!(n.trunc(), 4 | 65 | 66))
+        });
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| !no_position && w.token[0].eq_ignore_ascii_case(&b'X'))
+        else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: the source reads X as a length from the origin (a mill), the target lathe \
+                 as a diameter (X10. is 5. from the spindle axis there), so every position and \
+                 arc in X would be another; tapegate does not convert a mill's program for a \
+                 lathe: write it for the lathe",
+                text(w.token)
+            ),
+            clause: "profile",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A FANUC or Haas lathe's T word (`T0101`: tool 1 with offset 1, the last two digits the
+    /// offset number; FANUC 0i-TF B-64604EN "Tool offset", Haas lathe operator's manual "T
+    /// Tool Function") for a target that reads T as one tool number (`ConvertConfig::
+    /// lathe_tool_offset`): carried, `T0101` is tool 101 there (its check: TG604 above the
+    /// largest tool number) and the offset is not applied. tapegate does not split the word
+    /// into a tool and an offset word (the target's offset letter and its reading are its
+    /// own), so the conversion stops at the T word.
+    fn same_tool_word(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if !self.c.lathe_tool_offset {
+            return Ok(());
+        }
+        // (a macro call's T is its argument #20, no tool)
+        let call = b.words.iter().any(|w| {
+            w.token[0].eq_ignore_ascii_case(&b'G')
+                && code_number(&w.token[1..])
+                    .is_some_and(|n| n.is_whole() && matches!(n.trunc(), 65 | 66))
+        });
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| !call && w.token[0].eq_ignore_ascii_case(&b'T'))
+        else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: a FANUC or Haas lathe's T word is the tool number followed by the offset \
+                 number (T0101: tool 1, offset 1), the target reads its T as one tool number \
+                 (T0101 tool 101) and has no place in it for the offset; tapegate does not \
+                 split the word: write the target's tool and offset words",
+                text(w.token)
+            ),
+            clause: "profile",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
@@ -7889,6 +8068,10 @@ mod tests {
             target_g80_clears_motion: false,
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             colon_stops: false,
+            lathe_tool_offset: false,
+            percent_words_read: false,
+            one_group_codes: Vec::new(),
+            x_diameter: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

@@ -292,6 +292,17 @@ impl Machine {
             // 0 where the target reads no radius: its R a parameter (`checks.pqr`, an ISO
             // 6983-1 profile's), as its check reads an arc
             colon_stops: out.facts.colon_stop && !source.facts.colon_stop,
+            lathe_tool_offset: source.modal.fanuc_lathe && !out.modal.fanuc_lathe,
+            // (an ISO 6983-1 source, the profile a conversion takes without --from too, says
+            // nothing of how its machine reads X)
+            x_diameter: !self.lathe
+                && self.control != Control::Iso
+                && !source.diameter
+                && out.diameter,
+            // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
+            percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
+                && !crate::dialect::skips_leader(out.family, out.haas)
+                && !matches!(out.family, Family::Sinumerik | Family::Heidenhain),
             target_arc_radius: if out.modal.arc_radius == b'R' && out.pqr[2] != Role::Length {
                 0
             } else {
@@ -314,6 +325,11 @@ impl Machine {
                     .collect::<Vec<_>>();
                 codes.extend(others);
                 codes
+            },
+            one_group_codes: if self.control == target.control && self.lathe == target.lathe {
+                Vec::new()
+            } else {
+                one_group_codes(source, out)
             },
             listed_codes: either_lists(self, target),
             src_listed: (self.family != Family::Iso).then(|| self.listed.clone()),
@@ -359,7 +375,29 @@ pub fn differing_codes(
     // letter (a, j): another vocabulary, not another meaning
     let differ = |a: &str, b: &str| a.len() != 1 && b.len() != 1 && group(a) != group(b);
     let mut out = Vec::new();
+    // (a code the source's table lacks: a SINUMERIK's G28, which its check names TG307)
+    let source_group = |codes: &[Option<crate::check::Code>], n: usize| match codes
+        .get(n)
+        .and_then(Option::as_ref)
+    {
+        Some(a) => group_name(&a.duration),
+        None => "no code of its profile's table".to_string(),
+    };
+    for n in 0..target.g_codes.len() {
+        if let Some(why) = target_refuses(target, b'G', n) {
+            out.push((n.to_string(), source_group(&source.g_codes, n), why));
+        }
+    }
+    for n in 0..target.m_codes.len() {
+        if let Some(why) = target_refuses(target, b'M', n) {
+            out.push((format!("M{n}"), source_group(&source.m_codes, n), why));
+        }
+    }
+    let refused = |letter: u8, n: usize| target_refuses(target, letter, n).is_some();
     for (n, (a, b)) in source.g_codes.iter().zip(&target.g_codes).enumerate() {
+        if refused(b'G', n) {
+            continue;
+        }
         if let (Some(a), Some(b)) = (a, b) {
             // a code the table leaves unassigned (ISO 6983's spare numbers) is no meaning
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
@@ -383,6 +421,9 @@ pub fn differing_codes(
         .zip(&target.m_codes)
         .take(if m_codes { 100 } else { 0 });
     for (n, (a, b)) in m_pairs.enumerate() {
+        if refused(b'M', n) {
+            continue;
+        }
         if let (Some(a), Some(b)) = (a, b) {
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
@@ -410,6 +451,60 @@ pub fn differing_codes(
                 group_name(&a.duration),
                 "no such code (its profile's code list has none)".to_string(),
             )),
+        }
+    }
+    out
+}
+
+/// Why the target's check refuses code `n` of `letter` (as `check::codes` reads a code: TG303
+/// where an ISO 6983-1 table leaves it permanently unassigned, TG306 where the control alarms
+/// on a code its table lacks), or None where the target reads it. Whatever the source's table
+/// says of the code (a SINUMERIK's `G28`, which its own table lacks), the target refuses the
+/// block, so the conversion does. ISO
+/// 6983-1 Annex E: a permanently unassigned code (G28 of the standard's table) is no code of
+/// the standard, whatever a FANUC or a SINUMERIK does with its number.
+fn target_refuses(target: &Config, letter: u8, n: usize) -> Option<String> {
+    let codes = if letter == b'G' {
+        &target.g_codes
+    } else {
+        &target.m_codes
+    };
+    let code = codes.get(n).and_then(Option::as_ref)?;
+    (target.family == Family::Iso && code.status == crate::check::Status::Permanent).then(|| {
+        "a code the target's ISO 6983-1 table leaves permanently unassigned (Annex E)".to_string()
+    })
+}
+
+/// The pairs of G codes (the lower number first) that the target's table puts in one modal
+/// group and the source's in two (both modal there), with the target's group: written in one
+/// block, the source runs both, the target refuses the block (TG304 of its check; ISO 6983-1
+/// Annex E, "two codes of one modal group"). A Haas's `G49 G40` (tool length offset cancel,
+/// cutter compensation cancel) is one group (d) of ISO 1056's table (pm322-eia).
+fn one_group_codes(source: &Config, target: &Config) -> Vec<(i64, i64, String)> {
+    fn modal(c: &Option<crate::check::Code>) -> Option<&str> {
+        c.as_ref()
+            .filter(|c| {
+                !matches!(c.duration.as_str(), "" | "TBO" | "non-modal")
+                    && !matches!(
+                        c.status,
+                        crate::check::Status::Permanent | crate::check::Status::Unassigned
+                    )
+            })
+            .map(|c| c.duration.as_str())
+    }
+    let both: Vec<(usize, &str, &str)> = source
+        .g_codes
+        .iter()
+        .zip(&target.g_codes)
+        .enumerate()
+        .filter_map(|(n, (a, b))| Some((n, modal(a)?, modal(b)?)))
+        .collect();
+    let mut out = Vec::new();
+    for (i, &(n, a, b)) in both.iter().enumerate() {
+        for &(m, other_a, other_b) in &both[i + 1..] {
+            if b == other_b && a != other_a {
+                out.push((n as i64, m as i64, b.to_string()));
+            }
         }
     }
     out
