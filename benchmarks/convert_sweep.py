@@ -44,6 +44,7 @@ from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import TypeVar
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
@@ -193,6 +194,21 @@ def programs(corpus: Path, only: str | None) -> list[tuple[Path, str]]:
     return [(p, prof) for p, prof in out if p.is_file() and (not only or only in p.name)]
 
 
+T = TypeVar("T")
+R = TypeVar("R")
+
+
+def run_all(sweep_one: Callable[[T], list[R]], todo: list[T], jobs: int) -> list[R]:
+    """Every item's runs, in the items' order: in ``jobs`` processes (each its own core
+    module) where ``jobs`` > 1. The temporary folder is fixed first, so that the processes
+    write their outputs where the parent does."""
+    os.environ.setdefault("TMPDIR", tempfile.gettempdir())
+    if jobs > 1:
+        with ProcessPoolExecutor(jobs) as pool:
+            return [run for runs in pool.map(sweep_one, todo) for run in runs]
+    return [run for item in todo for run in sweep_one(item)]
+
+
 def _sweep(args: tuple[Path, str]) -> list[Run]:
     return sweep(*args)
 
@@ -209,12 +225,7 @@ def main(argv: list[str] | None = None) -> int:
     if not todo:
         print(f"no programs in {args.corpus}", file=sys.stderr)
         return 0
-    os.environ.setdefault("TMPDIR", tempfile.gettempdir())
-    if args.jobs > 1:
-        with ProcessPoolExecutor(args.jobs) as pool:
-            results = [run for runs in pool.map(_sweep, todo) for run in runs]
-    else:
-        results = [run for item in todo for run in _sweep(item)]
+    results = run_all(_sweep, todo, args.jobs)
     totals: dict[str, Counter[str]] = {}
     for run in results:
         job = run.job.split()[0] if not run.job.startswith("to ") else run.job

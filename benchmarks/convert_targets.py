@@ -33,18 +33,16 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 import tempfile
 from collections import Counter
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
-from benchmarks.convert_sweep import CORPUS, programs  # noqa: E402
+from benchmarks.convert_sweep import CORPUS, programs, run_all  # noqa: E402
 from benchmarks.shops import READING  # noqa: E402
 from formats.conversion import ConvertOptions  # noqa: E402
 from formats.convert import convert_file  # noqa: E402
@@ -135,12 +133,7 @@ def main(argv: list[str] | None = None) -> int:
     if not todo:
         print(f"no programs in {args.corpus}", file=sys.stderr)
         return 0
-    os.environ.setdefault("TMPDIR", tempfile.gettempdir())
-    if args.jobs > 1:
-        with ProcessPoolExecutor(args.jobs) as pool:
-            results = [run for runs in pool.map(_sweep, todo) for run in runs]
-    else:
-        results = [run for item in todo for run in _sweep(item)]
+    results = run_all(_sweep, todo, args.jobs)
     by_target: dict[str, Counter[str]] = {}
     kinds: Counter[str] = Counter()
     for run in results:

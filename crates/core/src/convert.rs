@@ -3812,16 +3812,11 @@ impl Converter {
         if !self.c.x_diameter {
             return Ok(());
         }
-        let no_position = b.words.iter().any(|w| {
-            w.token[0].eq_ignore_ascii_case(&b'G')
-                && code_number(&w.token[1..])
-                    .is_some_and(|n| n.is_whole() && matches!(n.trunc(), 4 | 65 | 66))
-        });
-        let Some(w) = b
-            .words
-            .iter()
-            .find(|w| !no_position && w.token[0].eq_ignore_ascii_case(&b'X'))
-        else {
+        // (a dwell's X is its time, a macro call's X its argument #24: no position)
+        if whole_g_code(b, &[4, 65, 66]) {
+            return Ok(());
+        }
+        let Some(w) = first_word(b, b'X') else {
             return Ok(());
         };
         Err(ConvertError {
@@ -3850,16 +3845,10 @@ impl Converter {
             return Ok(());
         }
         // (a macro call's T is its argument #20, no tool)
-        let call = b.words.iter().any(|w| {
-            w.token[0].eq_ignore_ascii_case(&b'G')
-                && code_number(&w.token[1..])
-                    .is_some_and(|n| n.is_whole() && matches!(n.trunc(), 65 | 66))
-        });
-        let Some(w) = b
-            .words
-            .iter()
-            .find(|w| !call && w.token[0].eq_ignore_ascii_case(&b'T'))
-        else {
+        if whole_g_code(b, &[65, 66]) {
+            return Ok(());
+        }
+        let Some(w) = first_word(b, b'T') else {
             return Ok(());
         };
         Err(ConvertError {
@@ -7831,6 +7820,22 @@ impl ProgramStarts {
 
 /// The number of a G code's digits as [`Dec::parse`] reads it (`33.1`, `1E2`), a whole one
 /// read by [`integer`] without its text made a `str` first.
+/// Whether a block holds a G word of one of these whole numbers (`G65`, `g04`; not `G65.1`).
+fn whole_g_code(b: &BlockIn<'_>, codes: &[i64]) -> bool {
+    b.words.iter().any(|w| {
+        w.token[0].eq_ignore_ascii_case(&b'G')
+            && code_number(&w.token[1..])
+                .is_some_and(|n| n.is_whole() && codes.contains(&n.trunc()))
+    })
+}
+
+/// A block's first word of this address letter (either case).
+fn first_word<'a>(b: &BlockIn<'a>, letter: u8) -> Option<&'a WordSpan<'a>> {
+    b.words
+        .iter()
+        .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+}
+
 fn code_number(digits: &[u8]) -> Option<Dec> {
     match integer(digits) {
         Some(n) => Some(Dec {
