@@ -773,3 +773,34 @@ def test_the_check_reads_an_f_in_a_fanuc_mill_dwell_block_as_the_feed(name):
     assert rules(text, "iso-mill") == [("TG401", 6)]  # F200. a dwell's time there
     assert rules(ISO_DWELL + "%\n", name) == [("TG532", 4), ("TG531", 4)]
     assert rules(ISO_DWELL + "%\n", "iso-mill") == []
+
+
+# -- an arc with R and I J K: a FANUC or Haas reads it by R, rs274 refuses it ----------------------
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("block, column, word", [
+    ("G2 X2. Y0 R0.5 I0.5", 16, "I0.5"),
+    ("G3 X2. Y0 J0 R0.5", 11, "J0"),
+    # the arc mode in force runs it
+    ("X2. Y0 R0.5 I0.5", 13, "I0.5"),
+])
+def test_an_arc_with_r_and_i_j_k_is_refused_for_linuxcnc(tmp_path, source, block, column,
+                                                         word):
+    """FANUC Series 16/18-C Lathe Operator's Manual, "Circular interpolation": "If I, J, K, and
+    R addresses are specified simultaneously, the arc specified by address R takes precedence
+    and the other are ignored"; rs274: "Mixed radius ijk format for arc"."""
+    head = f"{FANUC}G0 X0 Y0 Z5.\nS500 M3\nG1 X1. F100.\n"
+    lead = "G2 X1.5 Y0.5 R0.5\n" if block.startswith("X") else ""
+    text = f"{head}{lead}{block}\nM30\n"
+    e = refused(text, source, "linuxcnc")
+    line = 6 + bool(lead)
+    assert (e.code, e.line, e.column) == ("conversion-meaning", line, column), e
+    assert e.message.startswith(f"{word}: Mixed radius ijk format for arc"), e.message
+    assert "reads the arc by its R and ignores I J K" in e.message, e.message
+    # without the I J K word the arc converts, and rs274 runs it
+    out = convert(text.replace(f" {word}", ""), source, "linuxcnc")
+    from tests.conftest import rs274_output
+    assert "PROGRAM_END" in rs274_output(tmp_path, out.replace("M30", "M2"))
+    # carried as written, rs274 refuses it
+    assert "Mixed radius ijk format for arc" in rs274_output(tmp_path, text.replace("O1\n", ""))

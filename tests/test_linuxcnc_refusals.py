@@ -727,3 +727,36 @@ def test_review21_a_condition_that_may_set_the_speed_leaves_it_unsure(tmp_path, 
     assert errors(text) == []
     out = rs274_output(tmp_path, text)
     assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("block, column, letter", [
+    ("G2 X2 Y0 R0.5 I0.5", 15, "I"),
+    # any of I J K, on the plane or not: rs274 asks before it looks at the plane
+    ("G2 X2 Y0 R0.5 K0.5", 15, "K"),
+    ("G18 G2 X2 Z0 R0.5 I0.5", 19, "I"),
+    # an I of zero is an I word all the same
+    ("G3 X2 Y0 I0 R0.5", 10, "I"),
+])
+def test_an_arc_with_r_and_i_j_k_is_refused(tmp_path, block, column, letter):
+    """interp_convert.cc convert_arc: "Mixed radius ijk format for arc", at the first I J K."""
+    text = program(f"G1 X1\n{block}")
+    found = [(f.rule, f.line, f.column, f.message)
+             for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(r, n, c) for r, n, c, _ in found] == [("TG412", 4, column)], found
+    assert "Mixed radius ijk format for arc" in found[0][3], found
+    assert f"gives R and {letter}" in found[0][3], found
+    assert "Mixed radius ijk format for arc" in rs274_output(tmp_path, text)
+
+
+def test_an_arc_by_r_alone_or_by_i_j_alone_is_not_mixed(tmp_path):
+    text = program("G1 X1\nG2 X2 Y0 R0.5\nG2 X3 Y0 I0.5 J0")
+    assert errors(text) == []
+    assert "PROGRAM_END" in rs274_output(tmp_path, text)
+
+
+def test_a_fanuc_arc_with_r_and_i_j_k_passes_the_fanuc_check():
+    """A FANUC reads the arc by R and ignores I J K (16/18-C Lathe Operator's Manual)."""
+    text = ("%\nO1000\nG21 G17 G90\nG0 X0 Y0 Z5.\nS500 M3\nG1 X1. F100.\n"
+            "G2 X2. Y0 R0.5 I0.5\nM30\n%\n")
+    found = [f for f in check_text(text, load_profile("fanuc-mill")) if f.severity == "error"]
+    assert found == [], found

@@ -218,3 +218,37 @@ def test_where_the_control_alarms_on_a_code_it_lacks_no_macro_is_named() -> None
         "motion is not known until the next motion code the list holds; the moves in between "
         "are not in the path, its lengths, the cycle time or the plot"]
     assert s.feed_length == pytest.approx(5)
+
+
+# -- a dwell's time by the profile's dwell letters and units (word::dwell_words) ----------------
+
+DWELL = "%\nO1\nG21 G17 G90 G94\nG00 X0 Y0 Z0\n{}\nM30\n%\n"
+
+
+@pytest.mark.parametrize("profile, block, seconds", [
+    # a FANUC or Haas P is milliseconds, X seconds; an F in the block is the feed
+    ("fanuc-mill", "G04 P500", 0.5),
+    ("fanuc-mill", "G04 X1.", 1.0),
+    ("fanuc-mill", "G04 X1. F100.", 1.0),
+    ("fanuc-mill", "G04 P500 F100.", 0.5),
+    ("haas-mill", "G04 P500", 0.5),
+    # a Haas P with a point is seconds
+    ("haas-mill", "G04 P0.5", 0.5),
+    # a lathe's U is its time, not an increment of X
+    ("fanuc-lathe", "G04 U1.5", 1.5),
+    ("fanuc-lathe", "G04 P1500", 1.5),
+    # LinuxCNC's P is seconds
+    ("linuxcnc", "G4 P1.5", 1.5),
+    # SINUMERIK: F seconds; S revolutions, no time without the spindle's speed
+    ("sinumerik-840d", "G4 F2", 2.0),
+    ("sinumerik-840d", "G4 S30", 0.0),
+])
+def test_a_dwell_counts_its_time_in_the_profiles_units(profile, block, seconds) -> None:
+    text = DWELL.format(block)
+    if profile.startswith("sinumerik"):
+        text = f"G17 G90 G0 X0 Y0 Z0\n{block}\nM30\n"
+    elif profile == "linuxcnc":
+        text = f"G21 G17 G90\nG0 X0 Y0 Z0\n{block}\nM2\n"
+    base = stats(text.replace(f"{block}\n", ""), profile).seconds
+    s = stats(text, profile)
+    assert s.seconds - base == pytest.approx(seconds, abs=1e-9), s.seconds

@@ -2833,6 +2833,7 @@ impl Converter {
             self.linuxcnc_e_word(b, &ms, motion)?;
             if other {
                 self.linuxcnc_data_words(b, &gs, &ms, motion)?;
+                self.linuxcnc_mixed_arc(b, motion)?;
             }
             // M98 calls a subprogram, which may leave another motion mode in force
             if ms.contains(&98) {
@@ -4257,6 +4258,52 @@ impl Converter {
                 text(w.token),
                 crate::meaning::linuxcnc_unused(letter),
                 letter as char
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// Another family's arc with R and any of I J K: rs274 refuses it ("Mixed radius ijk
+    /// format for arc", interp_convert.cc convert_arc, which the check's TG412 reads too),
+    /// where a FANUC or Haas reads the arc by its R and ignores I J K (FANUC Series 16/18-C
+    /// Lathe Operator's Manual, "Circular interpolation": "If I, J, K, and R addresses are
+    /// specified simultaneously, the arc specified by address R takes precedence and the
+    /// other are ignored"). Refused at the first I, J or K word, not dropped.
+    fn linuxcnc_mixed_arc(
+        &self,
+        b: &BlockIn<'_>,
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
+        if !matches!(motion, Some(Some(20 | 30))) {
+            return Ok(());
+        }
+        let letter = |w: &&WordSpan<'_>| w.token[0].to_ascii_uppercase();
+        if !b
+            .words
+            .iter()
+            .any(|w| letter(&w) == b'R' && !w.token.contains(&b'='))
+        {
+            return Ok(());
+        }
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| matches!(letter(w), b'I' | b'J' | b'K') && !w.token.contains(&b'='))
+        else {
+            return Ok(());
+        };
+        let source = match self.c.family {
+            Family::MacroB => "the source control reads the arc by its R and ignores I J K",
+            _ => "the source control reads the arc by one of them",
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: Mixed radius ijk format for arc (rs274ngc): LinuxCNC refuses an arc with \
+                 R and I J K, where {source}; tapegate does not drop the word: remove the \
+                 I J K words (or the R)",
+                text(w.token)
             ),
             clause: "meaning",
             column: crate::text::column(b.text, w.start),

@@ -1969,7 +1969,7 @@ impl Checker {
         self.reference_return(b.line, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
-            self.dwell_time();
+            self.dwell_time(b);
             if facts.moved().is_empty() {
                 // a dwell's own refusals (G4 P-1), and the modes its block sets
                 if self.config.family == Family::LinuxCnc {

@@ -621,6 +621,22 @@ impl Checker {
         let (first, second, third) = plane_axes(self.machine.state.plane);
         let centres = [centre_of(first), centre_of(second)];
         let v = &self.values;
+        // interp_convert.cc convert_arc refuses R beside any of I J K before it looks at the
+        // plane (NCE_MIXED_RADIUS_IJK_FORMAT_FOR_ARC); a FANUC reads such an arc by its R
+        if self.config.family == Family::LinuxCnc && runs && v.has(b'R') {
+            if let Some(w) = words
+                .iter()
+                .find(|w| matches!(w.letter, b'I' | b'J' | b'K'))
+            {
+                let message = format!(
+                    "Mixed radius ijk format for arc (rs274ngc): an arc takes R or I J K, \
+                     and the block gives R and {}",
+                    w.letter as char
+                );
+                self.report(Rule::LinuxCncRefuses, message, line, w.column);
+                return;
+            }
+        }
         // about a SINUMERIK's pole, by its opening angle (polar.rs), or about a centre given by
         // a value the checker does not follow: no centre or radius to check
         let unknown = |letter: u8| v.unknown & crate::modal::bit(letter) != 0;

@@ -4,24 +4,44 @@
 use std::f64::consts::PI;
 
 use super::motion::{centre_of, plane_axes};
-use super::{Before, Checker, Segment};
+use super::{Before, BlockView, Checker, Segment};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
+use crate::lex::Family;
 use crate::modal::{axis_index, Units};
 
 impl Checker {
-    pub(super) fn dwell_time(&mut self) {
-        for letter in [b'F', b'P', b'X'] {
-            if let Some(value) = self.values.get(letter) {
-                let mut seconds = value.to_f64();
-                if let Some(speed) = self.machine.state.speed.filter(|s| !s.is_zero()) {
-                    if self.machine.state.feed_mode == 95 {
-                        seconds = seconds * 60.0 / speed.to_f64();
+    /// A dwell's time in seconds, by the profile's dwell letters (`word::dwell_words`), the
+    /// first of them the block gives: a FANUC or Haas P in milliseconds (a Haas P with a point
+    /// in seconds, as convert reads it), X and a lathe's U in seconds (the FANUC operator's
+    /// manuals, "Dwell (G04)"); LinuxCNC's P in seconds (G-code reference, G4); SINUMERIK's F
+    /// in seconds, its S revolutions of the spindle, not counted (no time without the
+    /// spindle's speed at the dwell); ISO 6983-1's, Okuma's and HEIDENHAIN's X, P, F in
+    /// seconds. A time, never revolutions under G95 (FANUC's dwell by revolutions is a
+    /// parameter's choice, not the default).
+    pub(super) fn dwell_time(&mut self, b: &BlockView<'_>) {
+        for &letter in self.machine.settings.dwell {
+            let Some(value) = self.values.get(letter) else {
+                continue;
+            };
+            let seconds = match (self.config.family, letter) {
+                (Family::Sinumerik, b'S') => return,
+                (Family::MacroB, b'P') => {
+                    let point = b
+                        .words
+                        .iter()
+                        .find(|w| w.letter == b'P')
+                        .is_some_and(|w| w.number.contains(&b'.'));
+                    if point {
+                        value.to_f64()
+                    } else {
+                        value.to_f64() / 1000.0
                     }
                 }
-                self.stats.seconds += seconds;
-                return;
-            }
+                _ => value.to_f64(),
+            };
+            self.stats.seconds += seconds;
+            return;
         }
     }
 
