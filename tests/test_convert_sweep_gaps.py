@@ -10,28 +10,9 @@ from __future__ import annotations
 
 import pytest
 
-from formats.convert import ConvertOptions, convert_text
 from formats.errors import ConversionError
-from formats.parser import parse_text
-from formats.profile import builtin_names, load_profile
-from postproc.check import Checker
 
-PROFILES = builtin_names()
-FANUC = "O1000\nG21 G90 G17\n"
-
-
-def convert(text: str, source: str, target: str) -> str:
-    out, _ = convert_text(text, ConvertOptions(target=load_profile(target),
-                                               source=load_profile(source)))
-    return out
-
-
-def target_errors(text: str, target: str) -> list[str]:
-    """The errors of the target profile's check of ``text``: each as ``line:rule message``."""
-    profile = load_profile(target)
-    blocks = parse_text(text, profile.dialect, file="out.nc", errors="collect")
-    return [f"{f.line}:{f.rule} {f.message}" for f in Checker(profile, file="out.nc").run(
-        iter(blocks)) if f.severity == "error"]
+from .test_convert_target_reads import FANUC, convert, target_errors
 
 
 def refusal(text: str, source: str, target: str) -> ConversionError:

@@ -33,7 +33,7 @@ def convert(text: str, source: str, target: str) -> str:
 
 
 def target_errors(text: str, target: str) -> list[str]:
-    """The errors of the target profile's check of ``text``: each as ``line:rule``."""
+    """The errors of the target profile's check of ``text``: each as ``line:rule message``."""
     profile = load_profile(target)
     blocks = parse_text(text, profile.dialect, file="out.nc", errors="collect")
     return [f"{f.line}:{f.rule} {f.message}" for f in Checker(profile, file="out.nc").run(
