@@ -135,7 +135,8 @@ def test_a_g10_whose_data_differs_is_refused_naming_both(source, target, block, 
                                                          meanings):
     # (a FANUC lathe's G90 is a turning cycle, its plane ZX)
     head = {"linuxcnc": NGC, "fanuc-lathe": "O1\nG21\n"}.get(source, "O1\nG21 G90\n")
-    move = "G0 X50. Z10." if source == "fanuc-lathe" else "G0 X50. Y40. Z10."
+    # (a lathe's X, a diameter, is refused for a target that reads X as a length: Z alone)
+    move = "G0 Z10." if source == "fanuc-lathe" else "G0 X50. Y40. Z10."
     e = refused(f"{head}{move}\n{block}\nG0 X10. Z10.\nM30\n", source, target)
     line = 3 if source == "linuxcnc" else 4
     assert (e.code, e.line, e.column) == ("conversion-meaning", line, column)
@@ -526,7 +527,8 @@ def test_a_haas_lower_case_program_number_is_written_upper_case_for_another_cont
     # after a variable, `X#1E2` is X#1 and E2 (the word the source's reader splits it into)
     ("fanuc-mill", FANUC + "#1=2.\nG0 X#1E2\nM30\n", 4, 7, "E2"),
     ("haas-mill", FANUC + "G0 X0 Y0\nG1 X1. E2. F100.\nM30\n", 4, 8, "E2."),
-    ("okuma-lathe", "G0 X20 Z5\nG1 X10 E1 F0.1\nM02\n", 2, 8, "E1"),
+    # (Z alone: a lathe's X, a diameter, is refused for LinuxCNC at the first X)
+    ("okuma-lathe", "G0 Z20\nG1 Z10 E1 F0.1\nM02\n", 2, 8, "E1"),
 ])
 def test_an_e_word_no_linuxcnc_code_uses_is_refused(source, text, line, column, word):
     e = refused(text, source, "linuxcnc")
@@ -538,10 +540,11 @@ def test_an_e_word_no_linuxcnc_code_uses_is_refused(source, text, line, column, 
 @pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
 @pytest.mark.parametrize("block, column, word", [
     ("G1 U2. F0.2", 4, "U2."),
-    ("G1 X12. W-1. F0.2", 9, "W-1."),
+    ("G1 W-1. F0.2", 4, "W-1."),
 ])
 def test_a_lathe_s_incremental_u_w_is_refused_for_linuxcnc(source, block, column, word):
-    e = refused(f"O1\nG21 G18\nG0 X10. Z0.\n{block}\nM30\n", source, "linuxcnc")
+    # (no X before: a lathe's X, a diameter, is refused for LinuxCNC at the first X word)
+    e = refused(f"O1\nG21 G18\nG0 Z0.\n{block}\nM30\n", source, "linuxcnc")
     assert (e.line, e.column) == (4, column), e
     assert e.message.startswith(f"{word}: the source lathe reads U and W as increments of X and Z")
 
@@ -560,7 +563,7 @@ def test_an_iso_lathe_s_u_w_is_refused_for_linuxcnc_as_axes_of_their_own(block, 
 
 
 def test_a_lathe_s_dwell_u_still_converts_for_linuxcnc():
-    out = convert("O1\nG21 G18\nG0 X10. Z0.\nG4 U1.5\nM30\n", "fanuc-lathe", "linuxcnc")
+    out = convert("O1\nG21 G18\nG0 Z0.\nG4 U1.5\nM30\n", "fanuc-lathe", "linuxcnc")
     assert "G4 P1.5" in out and "U" not in out.split("O1", 1)[1]
 
 
@@ -646,7 +649,7 @@ def test_the_proof_tells_a_dwell_parameter_in_milliseconds_from_one_in_seconds(t
 def test_a_lathe_dwell_with_two_time_words_or_a_w_is_refused_for_linuxcnc(source, block,
                                                                           column, word, why):
     with pytest.raises(ConversionError) as info:
-        convert(f"O1\nG21 G18\nG0 X10. Z0.\n{block}\nM30\n", source, "linuxcnc")
+        convert(f"O1\nG21 G18\nG0 Z0.\n{block}\nM30\n", source, "linuxcnc")
     e = info.value
     assert (e.line, e.column) == (4, column), e
     assert e.message.startswith(f"{word}: {why}"), e

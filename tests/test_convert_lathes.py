@@ -191,9 +191,12 @@ FANUC_SUBPROGRAM = "%\nO1\nG21 G90\nG00 X0 Y0\nM98 P1000\nM30\n%\n"
      "the ISO 6983-1 table's code of that number"),
     (OSP_THREAD, "okuma-lathe", "iso-lathe", "3:1: G33",
      "a longitudinal thread cutting cycle", "a single thread cutting move"),
-    (OSP_THREAD, "okuma-lathe", "linuxcnc", "3:1: G33",
+    # (Z alone before: a lathe's X, a diameter, is refused for a target that reads X as a
+    # length, at the first X word)
+    (OSP_THREAD.replace("G00 X30. Z5.", "G00 Z5."), "okuma-lathe", "linuxcnc", "3:1: G33",
      "a longitudinal thread cutting cycle", "a single thread cutting move"),
-    (OSP_THREAD, "okuma-lathe", "sinumerik-840d", "3:1: G33",
+    (OSP_THREAD.replace("G00 X30. Z5.", "G00 Z5."), "okuma-lathe", "sinumerik-840d",
+     "3:1: G33",
      "a longitudinal thread cutting cycle", "a single thread cutting move"),
 ])
 def test_a_code_of_another_function_in_the_same_group_is_refused(
@@ -259,7 +262,8 @@ def test_the_finishing_cycle_is_one_form_on_a_fanuc_and_a_haas():
         out, _ = convert_text(text, ConvertOptions(load_profile(target), load_profile(source)))
         assert "G70 P10 Q20\n" in out
     with pytest.raises(ConversionError) as refused:
-        convert_text(text.replace("G18 G99", "G18"),
+        # (Z alone before the cycle: a lathe's X is refused for LinuxCNC at the first X word)
+        convert_text(text.replace("G18 G99", "G18").replace("G00 X50. Z2.", "G00 Z2."),
                      ConvertOptions(load_profile("linuxcnc"), load_profile("haas-lathe")))
     assert (refused.value.line, refused.value.column) == (3, 1), refused.value.message
     assert "with its words in LinuxCNC's form" in refused.value.message

@@ -178,3 +178,54 @@ def test_a_dwell_or_macro_calls_x_is_no_position(text):
 def test_a_lathe_program_between_lathes_keeps_its_x():
     text = "O0001\nG21\nG00 X20. Z2.\nM30\n"
     assert "X20." in convert(text, "fanuc-lathe", "fanuc-lathe-b")
+
+
+# -- the mirror: a lathe's program (X a diameter, the reset feed per revolution) for a target
+# -- that reads X as a length and feeds per minute at reset (review 26, finding 5)
+
+LATHE_X = ("O1000\nG21 G18 G40 G97\nG0 X20. Z5.\nS500 M3\nG1 X10. Z-5. F0.2\n"
+           "G2 X20. Z-10. R5.\nM30\n")
+
+
+@pytest.mark.parametrize("source", ["fanuc-lathe", "fanuc-lathe-b", "haas-lathe"])
+@pytest.mark.parametrize("target", ["linuxcnc", "fanuc-mill", "iso-mill"])
+def test_a_lathe_programs_x_is_refused_for_a_target_that_reads_x_as_a_length(source, target):
+    text = LATHE_X
+    e = refusal(text, source, target)
+    assert (e.line, e.column) == (3, 4), e
+    assert e.message.startswith("X20.: the source lathe reads X as a diameter, the target as a "
+                                "length from the origin"), e.message
+
+
+def test_a_lathe_program_with_x_for_linuxcnc_is_what_rs274_refuses(tmp_path):
+    """Carried as written: LinuxCNC reads X as a radius (G8), the arc's end 20 from its start
+    while its R is 5."""
+    from tests.conftest import rs274_output
+    out = rs274_output(tmp_path, LATHE_X.replace("O1000\n", "").replace("M30", "M2"))
+    assert "Arc radius too small to reach end point" in out
+
+
+@pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
+@pytest.mark.parametrize("target", ["linuxcnc", "fanuc-mill"])
+def test_a_feed_per_revolution_by_the_reset_state_is_refused_at_its_f(source, target):
+    text = "O1000\nG21 G18\nG0 Z5.\nS500 M3\nG1 Z-5. F0.2\nM30\n"
+    e = refusal(text, source, target)
+    assert (e.line, e.column) == (5, 9), e
+    assert e.message.startswith("F0.2: a feed per revolution by the source control's reset "
+                                "state"), e.message
+
+
+def test_a_feed_mode_written_before_the_f_is_read_by_its_code():
+    # system A's G98 (per minute) is a return level on a mill: refused at the code itself,
+    # not at the F that follows it
+    text = "O1000\nG21 G18\nG98\nG0 Z5.\nG1 Z-5. F100.\nM30\n"
+    e = refusal(text, "fanuc-lathe", "linuxcnc")
+    assert (e.line, e.column) == (3, 1), e
+    # system B's G94 is LinuxCNC's G94: carried, and its F with it
+    text = "O1000\nG21 G18\nG94\nG0 Z5.\nG1 Z-5. F100.\nM30\n"
+    assert "F100." in convert(text, "fanuc-lathe-b", "linuxcnc")
+
+
+def test_a_lathe_program_between_lathes_keeps_its_feed():
+    text = "O0001\nG21\nG00 Z2.\nG01 Z-5. F0.2\nM30\n"
+    assert "F0.2" in convert(text, "fanuc-lathe", "haas-lathe")

@@ -233,6 +233,15 @@ pub struct ConvertConfig {
     /// FANUC, Haas or Okuma lathe: `check::Config::diameter`): an X word is refused
     /// ([`Converter::same_x_reading`]).
     pub x_diameter: bool,
+    /// The mirror of `x_diameter`: the source reads X as a diameter (a FANUC, Haas or Okuma
+    /// lathe), the target, not a lathe, as a length from the origin (a mill, LinuxCNC's
+    /// mill profile in G8's radius reading, an ISO 6983-1 mill): an X word is refused
+    /// ([`Converter::same_x_reading`]).
+    pub x_radius: bool,
+    /// The source's reset state feeds per revolution (a FANUC or Haas lathe's G99), the
+    /// target's per minute (G94): an F word with no feed mode code written before it is
+    /// refused ([`Converter::reset_feed_mode`]).
+    pub reset_feed_per_rev: bool,
     /// The source's control skips the text after the first `%` (a FANUC), the target's reader
     /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
     /// ([`percent_words`]).
@@ -699,6 +708,9 @@ pub struct Converter {
     /// words are while the motion in force is G00-G03 (not in a turning or threading cycle,
     /// whose U W are the cycle's and whose tool returns to its start point).
     uw_moves: bool,
+    /// The source program has written a feed mode code (G93-G95; a FANUC lathe's G98/G99 by
+    /// system A's numbers): its F no longer reads by the reset state's feed mode.
+    feed_mode_written: bool,
     /// A lathe's polar coordinate interpolation (G12.1 ... G13.1) is on: its C words are
     /// lengths ([`crate::meaning::polar_interpolation`]).
     polar_interpolation: bool,
@@ -1250,6 +1262,7 @@ impl Converter {
             out_at: [None; 26],
             out_mm: [None; 26],
             uw_moves: true,
+            feed_mode_written: false,
             polar_interpolation: false,
             c_axis: false,
             rounded: false,
@@ -2962,6 +2975,7 @@ impl Converter {
         self.same_radius_letter(b)?;
         self.same_tool_word(b)?;
         self.same_x_reading(b)?;
+        self.reset_feed_mode(b, &gs)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -3809,23 +3823,82 @@ impl Converter {
     /// conversion stops at the first X word; a dwell's (G04 X) and a macro call's (G65/G66)
     /// X is no position. (The system A lathe profile refused most mill programs at their G90
     /// or G94 by its code table; systems B and C number those codes as a mill does.)
+    ///
+    /// The mirror (`ConvertConfig::x_radius`): a lathe's X, a diameter, for a target that
+    /// reads X as a length from the origin (LinuxCNC starts in G8, X a radius: rs274 then
+    /// refuses the lathe's R arcs, "Arc radius too small to reach end point", and moves every
+    /// other X to twice its radius): refused at the first X word too.
     fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
-        if !self.c.x_diameter {
+        if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
         }
-        // (a dwell's X is its time, a macro call's X its argument #24: no position)
-        if whole_g_code(b, &[4, 65, 66]) {
+        // (a dwell's X is its time, a macro call's X its argument #24, G10's X an offset's
+        // value, refused or carried by the G10 rules: no position)
+        if whole_g_code(b, &[4, 10, 65, 66]) {
             return Ok(());
         }
         let Some(w) = first_word(b, b'X') else {
             return Ok(());
         };
+        if self.c.x_radius {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source lathe reads X as a diameter, the target as a length from \
+                     the origin (X20. is 10. from the spindle axis on the lathe, 20. on the \
+                     target), so every position and arc in X would be another; tapegate does \
+                     not halve X: write the program for the target (on LinuxCNC, G7 reads X \
+                     as a diameter)",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
         Err(ConvertError {
             message: format!(
                 "{}: the source reads X as a length from the origin (a mill), the target lathe \
                  as a diameter (X10. is 5. from the spindle axis there), so every position and \
                  arc in X would be another; tapegate does not convert a mill's program for a \
                  lathe: write it for the lathe",
+                text(w.token)
+            ),
+            clause: "profile",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// An F word read by the source's reset feed mode, per revolution (a FANUC or Haas
+    /// lathe's G99: fanuc-lathe's and haas-lathe's `reset`; FANUC 0i-TF B-64604EN "Feed per
+    /// revolution"), for a target whose reset feeds per minute (G94): carried, `F0.2` is 0.2
+    /// mm/min there. An explicit G99 is refused by the codes' meanings, a G95 both read alike
+    /// is carried; with neither written before it, the conversion stops at the first F word
+    /// (a G65/G66 macro call's F is its argument #9).
+    fn reset_feed_mode(&mut self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !self.c.reset_feed_per_rev || self.feed_mode_written {
+            return Ok(());
+        }
+        let lathe = self.c.src_modal.fanuc_lathe;
+        if gs
+            .iter()
+            .any(|&g| matches!(g, 93..=95) && !lathe || matches!(g, 98 | 99) && lathe)
+        {
+            self.feed_mode_written = true;
+            return Ok(());
+        }
+        if whole_g_code(b, &[65, 66]) {
+            return Ok(());
+        }
+        let Some(w) = first_word(b, b'F') else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: a feed per revolution by the source control's reset state (no feed mode \
+                 code written before it), where the target's reset feeds per minute, so the \
+                 feed would be another; tapegate does not write the feed mode: write G99 (or \
+                 G95) in the source, or the feed per minute",
                 text(w.token)
             ),
             clause: "profile",
@@ -8124,6 +8197,8 @@ mod tests {
             percent_words_read: false,
             one_group_codes: Vec::new(),
             x_diameter: false,
+            x_radius: false,
+            reset_feed_per_rev: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

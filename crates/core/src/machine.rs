@@ -299,6 +299,9 @@ impl Machine {
                 && self.control != Control::Iso
                 && !source.diameter
                 && out.diameter,
+            // (an ISO 6983-1 lathe target says nothing of how its machine reads X)
+            x_radius: source.diameter && !out.diameter && !target.lathe,
+            reset_feed_per_rev: per_rev(&source.modal) && !per_rev(&out.modal),
             // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
             percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
                 && !crate::dialect::skips_leader(out.family, out.haas)
@@ -351,6 +354,15 @@ impl Machine {
             read_units: options.read_units,
         }
     }
+}
+
+/// Whether a control's reset state feeds per revolution: G95 (system A's numbers), or a
+/// FANUC or Haas lathe's G99.
+fn per_rev(modal: &crate::modal::ModalSettings) -> bool {
+    modal
+        .reset
+        .iter()
+        .any(|&g| g == 95 || (modal.fanuc_lathe && g == 99))
 }
 
 /// The G and M codes two profiles both list in modal groups that differ, as the profiles' `codes`

@@ -472,6 +472,8 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         percent_words_read: false,
         one_group_codes: Vec::new(),
         x_diameter: false,
+        x_radius: false,
+        reset_feed_per_rev: false,
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,
