@@ -1623,8 +1623,9 @@ def test_an_okuma_lathe_program_converts_its_units_by_the_machine_parameter(tmp_
     assert "G00 X3.937 Z3.937" in out and "G20" not in out and "G21" not in out
     # an Okuma lathe's G20 is not an Okuma machining centre's inch code
     with pytest.raises(ConversionError) as other:
-        convert_text(tmp_path, OKUMA_HOME.replace("G50 S2000\n", ""), source="okuma-lathe",
-                     target="okuma-mill")
+        # (Z alone on line 2: a lathe's X, a diameter, is refused for a mill at the first X)
+        convert_text(tmp_path, OKUMA_HOME.replace("G50 S2000\n", "").replace(
+            "G00 X100 Z100\n", "G00 Z100\n"), source="okuma-lathe", target="okuma-mill")
     assert other.value.line == 3 and other.value.message.startswith(
         'G20: the source and target controls give this code different meanings (no modal group '
         'on the source, group "units" on the target')
@@ -1667,7 +1668,8 @@ def test_g20_hp_is_no_units_code_when_the_source_is_detected():
 
 
 @pytest.mark.parametrize("source, target, text, word", [
-    ("okuma-lathe", "okuma-mill", OKUMA_ARCS, "L3."),
+    # (no X: a lathe's X, a diameter, is refused for a mill at the first X word)
+    ("okuma-lathe", "okuma-mill", "$ARC.MIN%\nG0 Z5.\nG3 Z-3. L3.\nM02\n", "L3."),
     ("okuma-lathe", "fanuc-lathe", OKUMA_ARCS.replace("$ARC.MIN%\n", ""), "L3."),
     ("fanuc-lathe", "okuma-lathe", "%\nO1\nG0 X20. Z5.\nG1 Z0 F.2\nG3 X26. Z-3. R3.\nM30\n%\n",
      "R3."),
