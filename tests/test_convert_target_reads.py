@@ -115,6 +115,66 @@ def test_a_user_iso_profile_that_allows_hash_is_given_the_parameter(tmp_path):
                 if f.severity == "error" and f.rule[:3] in ("TG1", "TG2")]
 
 
+
+def nomacro(tmp_path):
+    """A FANUC without Custom Macro B (docs/profiles.md, ``extra_characters``): the built-in
+    fanuc-mill profile with ``;`` its only character beyond the ISO set."""
+    text = builtin_text("fanuc-mill").replace('name = "fanuc-mill"', 'name = "fanuc-nomacro"')
+    assert 'extra_characters = "#[]*;"' in text
+    path = tmp_path / "fanuc-nomacro.toml"
+    path.write_text(text.replace('extra_characters = "#[]*;"', 'extra_characters = ";"'))
+    profile = load_profile(str(path))
+    assert not profile.dialect.hash_parameters and profile.dialect.family == "fanuc"
+    return profile
+
+
+# (a statement of the source's family after FANUC's head and `G0 X0 Y0 Z5.`, line, column, the
+# character refused)  review 26, finding 4: these were carried "ok" and the target's check
+# refused the `#` (TG100)
+STATEMENTS = [
+    ("IF[#1EQ0]GOTO10\nG1 X1. F100.\nN10 M30\n", 4, 3, "["),
+    ("WHILE[#1LT10]DO1\nG1 X1. F100.\nEND1\nM30\n", 4, 6, "["),
+    ("G1 X1. F100.\nGOTO#2\nM30\n", 5, 5, "#"),
+]
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("body, line, column, character", STATEMENTS)
+def test_a_macro_statement_is_refused_for_a_same_family_profile_whose_dialect_lacks_it(
+        tmp_path, source, body, line, column, character):
+    target = nomacro(tmp_path)
+    text = FANUC + "G0 X0 Y0 Z5.\n" + body
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, ConvertOptions(target=target, source=load_profile(source)))
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion-dialect", line, column)
+    assert "a statement with" in e.message
+    assert f"'{character}' is not among the characters it allows" in e.message
+    # the same program to the source's own profile is carried as written
+    assert body.split("\n")[0] in convert(text, source, source)
+
+
+def test_a_statement_is_refused_at_the_first_character_of_the_block(tmp_path):
+    """A word before the statement with `#` is refused first, where the block reads it."""
+    target = nomacro(tmp_path)
+    text = FANUC + "#1=0\nWHILE[#1LT10]DO1\nEND1\nM30\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, ConvertOptions(target=target, source=load_profile("fanuc-mill")))
+    assert (err.value.line, err.value.column) == (3, 1)
+    assert "a `#` parameter, which" in err.value.message
+
+
+def test_a_statement_without_those_characters_is_carried(tmp_path):
+    """A FANUC GOTO with a plain number has no `#` or `[ ]`: carried, and read by the target."""
+    target = nomacro(tmp_path)
+    text = FANUC + "G0 X0 Y0 Z5.\nGOTO10\nG1 X1. F100.\nN10 M30\n"
+    out, _ = convert_text(text, ConvertOptions(target=target, source=load_profile("fanuc-mill")))
+    assert "GOTO10" in out
+    blocks = parse_text(out, target.dialect, file="out.nc", errors="collect")
+    assert not [f for f in Checker(target, file="out.nc").run(iter(blocks))
+                if f.severity == "error"]
+
+
 # -- 2. words LinuxCNC refuses with the motion in force ---------------------------------------
 
 LETTERS_REFUSED = [

@@ -5090,6 +5090,43 @@ impl Converter {
         // (a target that reads all three, most conversions, looks at no word's characters)
         let reads = &self.c.target_dialect;
         let all = reads.hash && reads.brackets && reads.star;
+        // a statement of the same family (a Fanuc's IF[#1EQ0]GOTO10, WHILE[#1LT10]DO1) with
+        // such a character is a macro statement the target control does not read: refused at
+        // that character, where no word before it in the block is (review 26, finding 4)
+        let first_word = b
+            .words
+            .iter()
+            .filter(|_| !all)
+            .find_map(|w| unread_character(w.token, reads).map(|at| w.start + at));
+        if let Some((offset, statement, at)) = b
+            .statements
+            .iter()
+            .filter(|_| !all)
+            .find_map(|&(offset, _, statement)| {
+                unread_character(statement, reads).map(|at| (offset, statement, at))
+            })
+            .filter(|&(offset, _, at)| first_word.is_none_or(|w| offset + at < w))
+        {
+            let c = statement[at] as char;
+            let what = match c {
+                '#' => "a `#` parameter",
+                '*' => "an expression's '*'",
+                _ => "an expression in [ ]",
+            };
+            return Err(ConvertError {
+                message: format!(
+                    "{:?}: a statement with {what}, which the target profile's dialect does not \
+                     read ('{c}' is not among the characters it allows: a control without them \
+                     has no such macro statement and refuses the block); tapegate does not \
+                     work out statements, parameters or expressions: convert for a profile that \
+                     reads them, or write the program without them",
+                    text(statement)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, offset + at),
+                line: None,
+            });
+        }
         if let Some((w, at)) = b
             .words
             .iter()
