@@ -237,6 +237,23 @@ def test_a_word_linuxcnc_refuses_with_the_motion_in_force_is_refused_at_the_word
     assert said.split(": ", 1)[1] in rs274_output(tmp_path, ngc)
 
 
+@pytest.mark.parametrize("block", ["G05.1 Q1", "G05.1 Q1 R5", "G05.1 Q0"])
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+def test_a_code_of_another_meaning_is_refused_as_such_before_linuxcnc_reads_its_words(
+        source, block):
+    """Review 26 (doubtful list): a FANUC `G05.1 Q1` (AI contour control) was refused at the
+    Q with a reason of LinuxCNC's G5.1 (a quadratic spline), which is not what the block
+    means on the source. The code is refused first, as the two controls' profiles give it
+    different meanings."""
+    with pytest.raises(ConversionError) as err:
+        convert(linuxcnc_program(block), source, "linuxcnc")
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion", 4, 1)
+    assert e.message.startswith("G05.1: the source and target controls give this code "
+                                "different meanings")
+    assert "G5.1" not in e.message and "Q word" not in e.message
+
+
 @pytest.mark.parametrize("block", LETTERS_CARRIED)
 def test_a_word_a_code_of_its_block_uses_is_carried_and_rs274_reads_it(tmp_path, block):
     from tests.conftest import rs274_output

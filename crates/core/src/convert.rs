@@ -2839,6 +2839,11 @@ impl Converter {
         if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
             let motion = self.linuxcnc_block_motion(b);
             if other {
+                // a G code the two controls give different meanings (a FANUC G05.1 Q1, AI
+                // contour control, is LinuxCNC's quadratic spline) is refused as such, before
+                // its words are read by LinuxCNC's code (review 26: the Q was refused, with a
+                // reason of LinuxCNC's G5.1)
+                self.same_meaning(b, b'G')?;
                 self.lathe_uw_for_linuxcnc(b, &gs)?;
                 self.linuxcnc_dwell_words(b, &gs)?;
                 self.linuxcnc_d_h_words(b, &gs)?;
