@@ -254,6 +254,39 @@ def test_a_code_of_another_meaning_is_refused_as_such_before_linuxcnc_reads_its_
     assert "G5.1" not in e.message and "Q word" not in e.message
 
 
+@pytest.mark.parametrize("block, column", [
+    ("G2 X1. Y1. R1. P1 F100.", 16),
+    ("G1 X2. F100.\nG3 X3. Y1. I.5 J.5 Z-1. P2", 25),
+    ("G2 X1. Y1. R1. F100.\nX0 Y0 R1. P3", 11),  # the arc in force
+])
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+def test_an_arc_s_p_is_refused_where_linuxcnc_reads_it_as_the_helix_s_turns(
+        tmp_path, source, block, column):
+    """Review 26 (doubtful list): a FANUC or Haas `G2 ... P1` was carried as written, and
+    rs274 runs it, P the number of turns of the helix (LinuxCNC G-code reference, G2/G3);
+    neither the FANUC tape format list nor the Haas G02/G03 page gives P a meaning in an arc,
+    so the output would cut another path. Refused at the P."""
+    from tests.conftest import rs274_output
+    text = linuxcnc_program(block)
+    with pytest.raises(ConversionError) as err:
+        convert(text, source, "linuxcnc")
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion-meaning", text.count("\n") - 1, column)
+    assert "P in an arc is the number of the helix's turns on LinuxCNC" in e.message
+    # rs274 runs the block as written (no refusal of its own): the meaning differs, not the
+    # reading
+    said = rs274_output(tmp_path, text.replace("O1000\n", "").replace("M30", "M2"))
+    assert " word with no " not in said and "ERROR" not in said.upper(), said
+
+
+def test_an_arc_s_p_is_carried_between_linuxcnc_profiles_and_a_dwell_s_p_beside_none():
+    out = convert("G21 G90 G17\nG0 X0 Y0 Z5.\nG2 X1. Y1. R1. P2 F100.\nM2\n", "linuxcnc",
+                  "linuxcnc")
+    assert "P2" in out
+    out = convert(linuxcnc_program("G1 X1. F100.\nG04 P1000"), "fanuc-mill", "linuxcnc")
+    assert "P1." in out
+
+
 @pytest.mark.parametrize("block", LETTERS_CARRIED)
 def test_a_word_a_code_of_its_block_uses_is_carried_and_rs274_reads_it(tmp_path, block):
     from tests.conftest import rs274_output

@@ -2851,6 +2851,7 @@ impl Converter {
             self.linuxcnc_e_word(b, &ms, motion)?;
             if other {
                 self.linuxcnc_data_words(b, &gs, &ms, motion)?;
+                self.linuxcnc_arc_turns(b, &ms, motion)?;
                 self.linuxcnc_mixed_arc(b, motion)?;
             }
             // M98 calls a subprogram, which may leave another motion mode in force
@@ -4336,6 +4337,52 @@ impl Converter {
                 text(w.token),
                 crate::meaning::linuxcnc_unused(letter),
                 letter as char
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// A FANUC or Haas arc's P (`G02 X2. Y0 R0.5 P1`), where no other code of the block
+    /// uses P: LinuxCNC runs it as the number of the helix's turns (G-code reference, G2/G3:
+    /// "P - number of turns"), a meaning no FANUC or Haas page at hand gives P in an arc (the
+    /// FANUC Series 15i-MA tape format list, "Helical interpolation (G02, G03)": X Y R or I J,
+    /// an axis, F; the Haas mill operator's manual, G02/G03: F I J K R X Y Z A and ,C ,R).
+    /// Carried as written, the arc would be another path (P2: a full turn more). Refused at the
+    /// P (review 26, doubtful: `G2 ... P1` was carried, rs274 ran it).
+    fn linuxcnc_arc_turns(
+        &self,
+        b: &BlockIn<'_>,
+        ms: &[i64],
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
+        if self.c.family != Family::MacroB || !matches!(motion, Some(Some(20 | 30))) {
+            return Ok(());
+        }
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'P') && !w.token.contains(&b'='))
+        else {
+            return Ok(());
+        };
+        let tenths: Vec<i64> = b
+            .words
+            .iter()
+            .filter(|w| w.token[0].eq_ignore_ascii_case(&b'G'))
+            .filter_map(|w| g_tenths(w.token))
+            .collect();
+        if crate::meaning::linuxcnc_word_used(b'P', &tenths, ms, None) {
+            return Ok(()); // a dwell's, G10's, G64's or an M code's P
+        }
+        Err(ConvertError {
+            message: format!(
+                "{}: P in an arc is the number of the helix's turns on LinuxCNC (G2/G3 \
+                 P), which the FANUC and Haas manuals at hand give no meaning in G02/G03: \
+                 carried as written the arc would run another path; tapegate does not \
+                 rewrite it: remove the P, or write the arc for LinuxCNC",
+                text(w.token)
             ),
             clause: "meaning",
             column: crate::text::column(b.text, w.start),
