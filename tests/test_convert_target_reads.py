@@ -115,6 +115,66 @@ def test_a_user_iso_profile_that_allows_hash_is_given_the_parameter(tmp_path):
                 if f.severity == "error" and f.rule[:3] in ("TG1", "TG2")]
 
 
+
+def nomacro(tmp_path):
+    """A FANUC without Custom Macro B (docs/profiles.md, ``extra_characters``): the built-in
+    fanuc-mill profile with ``;`` its only character beyond the ISO set."""
+    text = builtin_text("fanuc-mill").replace('name = "fanuc-mill"', 'name = "fanuc-nomacro"')
+    assert 'extra_characters = "#[]*;"' in text
+    path = tmp_path / "fanuc-nomacro.toml"
+    path.write_text(text.replace('extra_characters = "#[]*;"', 'extra_characters = ";"'))
+    profile = load_profile(str(path))
+    assert not profile.dialect.hash_parameters and profile.dialect.family == "fanuc"
+    return profile
+
+
+# (a statement of the source's family after FANUC's head and `G0 X0 Y0 Z5.`, line, column, the
+# character refused)  review 26, finding 4: these were carried "ok" and the target's check
+# refused the `#` (TG100)
+STATEMENTS = [
+    ("IF[#1EQ0]GOTO10\nG1 X1. F100.\nN10 M30\n", 4, 3, "["),
+    ("WHILE[#1LT10]DO1\nG1 X1. F100.\nEND1\nM30\n", 4, 6, "["),
+    ("G1 X1. F100.\nGOTO#2\nM30\n", 5, 5, "#"),
+]
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("body, line, column, character", STATEMENTS)
+def test_a_macro_statement_is_refused_for_a_same_family_profile_whose_dialect_lacks_it(
+        tmp_path, source, body, line, column, character):
+    target = nomacro(tmp_path)
+    text = FANUC + "G0 X0 Y0 Z5.\n" + body
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, ConvertOptions(target=target, source=load_profile(source)))
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion-dialect", line, column)
+    assert "a statement with" in e.message
+    assert f"'{character}' is not among the characters it allows" in e.message
+    # the same program to the source's own profile is carried as written
+    assert body.split("\n")[0] in convert(text, source, source)
+
+
+def test_a_statement_is_refused_at_the_first_character_of_the_block(tmp_path):
+    """A word before the statement with `#` is refused first, where the block reads it."""
+    target = nomacro(tmp_path)
+    text = FANUC + "#1=0\nWHILE[#1LT10]DO1\nEND1\nM30\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, ConvertOptions(target=target, source=load_profile("fanuc-mill")))
+    assert (err.value.line, err.value.column) == (3, 1)
+    assert "a `#` parameter, which" in err.value.message
+
+
+def test_a_statement_without_those_characters_is_carried(tmp_path):
+    """A FANUC GOTO with a plain number has no `#` or `[ ]`: carried, and read by the target."""
+    target = nomacro(tmp_path)
+    text = FANUC + "G0 X0 Y0 Z5.\nGOTO10\nG1 X1. F100.\nN10 M30\n"
+    out, _ = convert_text(text, ConvertOptions(target=target, source=load_profile("fanuc-mill")))
+    assert "GOTO10" in out
+    blocks = parse_text(out, target.dialect, file="out.nc", errors="collect")
+    assert not [f for f in Checker(target, file="out.nc").run(iter(blocks))
+                if f.severity == "error"]
+
+
 # -- 2. words LinuxCNC refuses with the motion in force ---------------------------------------
 
 LETTERS_REFUSED = [
@@ -175,6 +235,56 @@ def test_a_word_linuxcnc_refuses_with_the_motion_in_force_is_refused_at_the_word
     from tests.conftest import rs274_output
     ngc = text.replace("O1000\n", "").replace("M30", "M2")
     assert said.split(": ", 1)[1] in rs274_output(tmp_path, ngc)
+
+
+@pytest.mark.parametrize("block", ["G05.1 Q1", "G05.1 Q1 R5", "G05.1 Q0"])
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+def test_a_code_of_another_meaning_is_refused_as_such_before_linuxcnc_reads_its_words(
+        source, block):
+    """Review 26 (doubtful list): a FANUC `G05.1 Q1` (AI contour control) was refused at the
+    Q with a reason of LinuxCNC's G5.1 (a quadratic spline), which is not what the block
+    means on the source. The code is refused first, as the two controls' profiles give it
+    different meanings."""
+    with pytest.raises(ConversionError) as err:
+        convert(linuxcnc_program(block), source, "linuxcnc")
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion", 4, 1)
+    assert e.message.startswith("G05.1: the source and target controls give this code "
+                                "different meanings")
+    assert "G5.1" not in e.message and "Q word" not in e.message
+
+
+@pytest.mark.parametrize("block, column", [
+    ("G2 X1. Y1. R1. P1 F100.", 16),
+    ("G1 X2. F100.\nG3 X3. Y1. I.5 J.5 Z-1. P2", 25),
+    ("G2 X1. Y1. R1. F100.\nX0 Y0 R1. P3", 11),  # the arc in force
+])
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+def test_an_arc_s_p_is_refused_where_linuxcnc_reads_it_as_the_helix_s_turns(
+        tmp_path, source, block, column):
+    """Review 26 (doubtful list): a FANUC or Haas `G2 ... P1` was carried as written, and
+    rs274 runs it, P the number of turns of the helix (LinuxCNC G-code reference, G2/G3);
+    neither the FANUC tape format list nor the Haas G02/G03 page gives P a meaning in an arc,
+    so the output would cut another path. Refused at the P."""
+    from tests.conftest import rs274_output
+    text = linuxcnc_program(block)
+    with pytest.raises(ConversionError) as err:
+        convert(text, source, "linuxcnc")
+    e = err.value
+    assert (e.code, e.line, e.column) == ("conversion-meaning", text.count("\n") - 1, column)
+    assert "P in an arc is the number of the helix's turns on LinuxCNC" in e.message
+    # rs274 runs the block as written (no refusal of its own): the meaning differs, not the
+    # reading
+    said = rs274_output(tmp_path, text.replace("O1000\n", "").replace("M30", "M2"))
+    assert " word with no " not in said and "ERROR" not in said.upper(), said
+
+
+def test_an_arc_s_p_is_carried_between_linuxcnc_profiles_and_a_dwell_s_p_beside_none():
+    out = convert("G21 G90 G17\nG0 X0 Y0 Z5.\nG2 X1. Y1. R1. P2 F100.\nM2\n", "linuxcnc",
+                  "linuxcnc")
+    assert "P2" in out
+    out = convert(linuxcnc_program("G1 X1. F100.\nG04 P1000"), "fanuc-mill", "linuxcnc")
+    assert "P1." in out
 
 
 @pytest.mark.parametrize("block", LETTERS_CARRIED)

@@ -669,6 +669,58 @@ def test_a_dwell_by_a_parameter_in_milliseconds_is_not_the_same_as_one_in_second
     assert result.exit_code == 0 and "the same program" in result.output, result.output
 
 
+@pytest.mark.parametrize(("source", "dwell"), [
+    ("fanuc-mill", "G04 X1.5"), ("fanuc-mill", "G04 P1500"), ("haas-mill", "G04 P1.5"),
+    ("fanuc-lathe", "G04 U1.5"), ("fanuc-lathe", "G04 X1.5"),
+])
+def test_a_dwell_is_compared_by_its_time_whichever_letter_gives_it(tmp_path, source, dwell):
+    """Review 26 (doubtful list): `G04 X1.5` and tapegate's own conversion `G4 P1.5` were
+    "changed" (X removed, P added) while `G04 P1000` and `G4 P1` were the same: a dwell's
+    time letters (`word::dwell_words`) are one word, read in seconds (a FANUC or Haas P
+    without a point in milliseconds)."""
+    head = "G21 G18\nG0 Z5.\n" if "lathe" in source else "G21 G17\nG0 X0 Y0 Z5.\n"
+    a = write(tmp_path, "a.nc", f"{head}{dwell}\nM30\n")
+    b = write(tmp_path, "b.ngc", f"{head.lower()}g4 p1.5\nm30\n")
+    result = run("diff", a, b, "--from", source, "-p", "linuxcnc")
+    assert result.exit_code == 0 and "the same program" in result.output, result.output
+    # and the conversion's own output is the same program as its source
+    c = str(tmp_path / "c.ngc")
+    convert_file(a, c, ConvertOptions(target=load_profile("linuxcnc"),
+                                      source=load_profile(source)))
+    assert "P1.5" in Path(c).read_text()
+    result = run("diff", a, c, "--from", source, "-p", "linuxcnc")
+    assert result.exit_code == 0, result.output
+
+
+@pytest.mark.parametrize(("dwell", "other", "said"), [
+    ("G04 X1.5", "g4 p2", "X1.5 -> P2 (+0.5"),  # another time
+    ("G04 P1500", "g4 p1500", "P1500 -> P1500 (+1498.5"),  # milliseconds against seconds
+    ("G04 X1.5", "g4 p1500", "X1.5 -> P1500 (+1498.5"),
+])
+def test_a_dwell_of_another_time_is_still_a_difference(tmp_path, dwell, other, said):
+    head = "G21 G17\nG0 X0 Y0 Z5.\n"
+    a = write(tmp_path, "a.nc", f"{head}{dwell}\nM30\n")
+    b = write(tmp_path, "b.ngc", f"{head.lower()}{other}\nm30\n")
+    result = run("diff", a, b, "--from", "fanuc-mill", "-p", "linuxcnc")
+    assert result.exit_code == 1, result.output
+    assert said in result.output and "differ: 1 block changed" in result.output, result.output
+    found, _ = differences(a, b, FANUC, load_profile("linuxcnc"))
+    [change] = found[0].words
+    assert (change.kind, change.key) == ("changed", "P")
+
+
+def test_a_sinumerik_dwell_in_revolutions_is_not_one_in_seconds(tmp_path):
+    """SINUMERIK's G4 S is revolutions of the spindle, its F seconds: S2 and F2 differ."""
+    sin = load_profile("sinumerik-840d")
+    a = write(tmp_path, "a.mpf", "G71\nG4 F2\nM30\n")
+    b = write(tmp_path, "b.mpf", "G71\nG4 S2\nM30\n")
+    found, summary = differences(a, b, sin, sin)
+    assert not summary.same
+    assert sorted(c.kind for c in found[0].words) == ["added", "removed"]
+    same, summary = differences(a, a, sin, sin)
+    assert same == [] and summary.same
+
+
 def test_a_position_one_program_never_set_is_none_without_a_unit(tmp_path):
     """'position Y none mm' read as if none were a length."""
     a = write(tmp_path, "a.nc", "G21 G90\nG01 X1. F100.\nX2.\nM30\n")

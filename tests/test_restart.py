@@ -1101,6 +1101,55 @@ def test_a_mirror_stays_on_until_its_last_axis_ends():
     assert plan(both, 16).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
 
 
+
+AXIS_GIVEN_AFTER_ITS_CANCEL = (
+    "%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G43 H1 Z1.\nN4 G00 X0 Y400.\n"
+    "N5 G51.1 X0 Y0\nN6 G00 X10. Y-300.\nN7 G50.1 Y0\nN8 G00 Y-10.\nN9 G50.1 X0\n"
+    "N10 G00 X5.\nN11 G00 Z2.\nN12 G00 Z3.\nM30\n%\n")  # N11 is line 13
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_an_axis_given_after_its_own_mirror_ended_is_known_at_a_later_cancel(profile):
+    """Review 26, 2: Y, given plainly (N8) after `G50.1 Y0` ended its mirror, was called "not
+    known" at `G50.1 X0` (N9), which ends X's mirror only; every axis moved while any mirror
+    was on was taken as transformed. A mirror moves the axes it mirrors (FANUC G51.1, Haas
+    G101 name them): N11 is restartable at X5. Y-10.; X is lost at N9 until N10 gives it."""
+    haas = profile == "haas-mill"
+    text = AXIS_GIVEN_AFTER_ITS_CANCEL
+    if haas:
+        text = (text.replace("G21", "G20").replace("G51.1", "G101").replace("G50.1", "G100")
+                .replace("Y400.", "Y4.").replace("X10. Y-300.", "X1. Y-3.")
+                .replace("Y-10.", "Y-1."))
+    p = load_profile(profile)
+    code = "G100" if haas else "G50.1"
+    assert refusal(text, 12, p) == (
+        f"cannot restart here: the position of X is not known here (line 11: {code} ends the "
+        "mirror image: the tool stands where the transformed moves left it, not at the number "
+        "the program wrote)")
+    y = "Y-1." if haas else "Y-10."
+    assert f"G00 X5. {y}" in plan(text, 13, p).preamble
+    # Y not given after its cancel: lost there, and named with its own cancel (line 9)
+    kept = text.replace(f"N8 G00 {y}\n", "")
+    assert refusal(kept, 12, p) == (
+        f"cannot restart here: the position of Y is not known here (line 9: {code} ends the "
+        "mirror image: the tool stands where the transformed moves left it, not at the number "
+        "the program wrote)")
+    # Y given by an increment after its cancel: still not known
+    step = text.replace(f"N8 G00 {y}", f"N8 G91 G00 {y}\nN85 G90")
+    assert "the position of Y is not known here (line 9:" in refusal(step, 14, p)
+
+
+def test_an_axis_never_mirrored_is_not_lost_at_the_mirror_s_cancel_but_under_a_rotation_it_is():
+    """A move of Y under the mirror of X alone leaves Y at its number: planned after the
+    cancel once X is given. Under a rotation (G68) too, every axis moved is lost at G69."""
+    text = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G43 H1 Z1.\n"
+            "N4 G00 X0 Y0\nN5 G51.1 X0\nN6 G00 X10. Y20.\nN7 G50.1 X0\nN8 G00 X5.\n"
+            "N9 G00 Z2.\nM30\n%\n")  # N9 is line 11
+    assert "G00 X5. Y20." in plan(text, 11).preamble
+    rotated = text.replace("N5 G51.1 X0", "N5 G68 X0 Y0 R90.").replace("N7 G50.1 X0", "N7 G69")
+    assert "the position of Y is not known here (line 9: G69 ends" in refusal(rotated, 11)
+
+
 def test_an_okuma_mill_s_frames_refuse_the_restart():
     """Review 15, 3 in the restart walk: an Okuma mill's G11 (parallel and rotation shift) was
     not known, so a restart under it was planned without it; its G16 (a work system for one

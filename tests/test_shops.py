@@ -417,6 +417,30 @@ def test_a_string_may_hold_text_outside_ascii_on_a_sinumerik():
     assert ("TG127", "warning") in got and not errors(text, "sinumerik-840d")
 
 
+
+@pytest.mark.parametrize(("profile", "text", "column", "place"), [
+    # review 24 (doubtful list): a LinuxCNC parameter's name was said to be "in a comment or
+    # string"; rs274 reads the name as text (it runs `#<été>=2`)
+    ("linuxcnc", "g21\n#<été>=2\ng0 x#<été>\nm2\n", 3, "in a parameter's name"),
+    ("linuxcnc", "g21\no<été> sub\no<été> endsub\nm2\n", 3, "in a subroutine's name"),
+    ("linuxcnc", "g21\n(été #<a>)\nm2\n", 2, "in a comment"),
+    ("linuxcnc", "g21\n#<a>=1 ;été\nm2\n", 9, "in a comment"),
+    ("fanuc-mill", "%\nO1000\nG21 (2° DRAFT)\nM30\n%\n", 7, "in a comment"),
+    # a SINUMERIK's ( ) are a call's: the string inside it, and its ; comment
+    ("sinumerik-840d", 'N10 MSG("été")\nN20 M30\n', 10, "in a string"),
+    ("sinumerik-840d", 'N10 MSG("a") ;été\nN20 M30\n', 15, "in a comment"),
+])
+def test_text_outside_ascii_is_named_with_its_column_and_what_it_stands_in(
+        profile, text, column, place):
+    [(line, col, message)] = [(f.line, f.column, f.message)
+                              for f in check_text(text, load_profile(profile))
+                              if f.rule == "TG127"]
+    assert (line, col) == (text.split("\n").index(next(
+        t for t in text.split("\n") if not t.isascii())) + 1, column)
+    character = "'°' (U+00B0, UTF-8)" if "°" in text else "'é' (U+00E9, UTF-8)"
+    assert message.startswith(f"{character} {place}: read as text"), message
+
+
 # -- SINUMERIK ----------------------------------------------------------------------------------
 
 

@@ -2839,6 +2839,11 @@ impl Converter {
         if self.c.target_family == Family::LinuxCnc && (other || self.c.units.is_some()) {
             let motion = self.linuxcnc_block_motion(b);
             if other {
+                // a G code the two controls give different meanings (a FANUC G05.1 Q1, AI
+                // contour control, is LinuxCNC's quadratic spline) is refused as such, before
+                // its words are read by LinuxCNC's code (review 26: the Q was refused, with a
+                // reason of LinuxCNC's G5.1)
+                self.same_meaning(b, b'G')?;
                 self.lathe_uw_for_linuxcnc(b, &gs)?;
                 self.linuxcnc_dwell_words(b, &gs)?;
                 self.linuxcnc_d_h_words(b, &gs)?;
@@ -2846,6 +2851,7 @@ impl Converter {
             self.linuxcnc_e_word(b, &ms, motion)?;
             if other {
                 self.linuxcnc_data_words(b, &gs, &ms, motion)?;
+                self.linuxcnc_arc_turns(b, &ms, motion)?;
                 self.linuxcnc_mixed_arc(b, motion)?;
             }
             // M98 calls a subprogram, which may leave another motion mode in force
@@ -4338,6 +4344,52 @@ impl Converter {
         })
     }
 
+    /// A FANUC or Haas arc's P (`G02 X2. Y0 R0.5 P1`), where no other code of the block
+    /// uses P: LinuxCNC runs it as the number of the helix's turns (G-code reference, G2/G3:
+    /// "P - number of turns"), a meaning no FANUC or Haas page at hand gives P in an arc (the
+    /// FANUC Series 15i-MA tape format list, "Helical interpolation (G02, G03)": X Y R or I J,
+    /// an axis, F; the Haas mill operator's manual, G02/G03: F I J K R X Y Z A and ,C ,R).
+    /// Carried as written, the arc would be another path (P2: a full turn more). Refused at the
+    /// P (review 26, doubtful: `G2 ... P1` was carried, rs274 ran it).
+    fn linuxcnc_arc_turns(
+        &self,
+        b: &BlockIn<'_>,
+        ms: &[i64],
+        motion: Option<Option<i64>>,
+    ) -> Result<(), ConvertError> {
+        if self.c.family != Family::MacroB || !matches!(motion, Some(Some(20 | 30))) {
+            return Ok(());
+        }
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'P') && !w.token.contains(&b'='))
+        else {
+            return Ok(());
+        };
+        let tenths: Vec<i64> = b
+            .words
+            .iter()
+            .filter(|w| w.token[0].eq_ignore_ascii_case(&b'G'))
+            .filter_map(|w| g_tenths(w.token))
+            .collect();
+        if crate::meaning::linuxcnc_word_used(b'P', &tenths, ms, None) {
+            return Ok(()); // a dwell's, G10's, G64's or an M code's P
+        }
+        Err(ConvertError {
+            message: format!(
+                "{}: P in an arc is the number of the helix's turns on LinuxCNC (G2/G3 \
+                 P), which the FANUC and Haas manuals at hand give no meaning in G02/G03: \
+                 carried as written the arc would run another path; tapegate does not \
+                 rewrite it: remove the P, or write the arc for LinuxCNC",
+                text(w.token)
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
     /// Another family's arc with R and any of I J K: rs274 refuses it ("Mixed radius ijk
     /// format for arc", interp_convert.cc convert_arc, which the check's TG412 reads too),
     /// where a FANUC or Haas reads the arc by its R and ignores I J K (FANUC Series 16/18-C
@@ -5090,6 +5142,43 @@ impl Converter {
         // (a target that reads all three, most conversions, looks at no word's characters)
         let reads = &self.c.target_dialect;
         let all = reads.hash && reads.brackets && reads.star;
+        // a statement of the same family (a Fanuc's IF[#1EQ0]GOTO10, WHILE[#1LT10]DO1) with
+        // such a character is a macro statement the target control does not read: refused at
+        // that character, where no word before it in the block is (review 26, finding 4)
+        let first_word = b
+            .words
+            .iter()
+            .filter(|_| !all)
+            .find_map(|w| unread_character(w.token, reads).map(|at| w.start + at));
+        if let Some((offset, statement, at)) = b
+            .statements
+            .iter()
+            .filter(|_| !all)
+            .find_map(|&(offset, _, statement)| {
+                unread_character(statement, reads).map(|at| (offset, statement, at))
+            })
+            .filter(|&(offset, _, at)| first_word.is_none_or(|w| offset + at < w))
+        {
+            let c = statement[at] as char;
+            let what = match c {
+                '#' => "a `#` parameter",
+                '*' => "an expression's '*'",
+                _ => "an expression in [ ]",
+            };
+            return Err(ConvertError {
+                message: format!(
+                    "{:?}: a statement with {what}, which the target profile's dialect does not \
+                     read ('{c}' is not among the characters it allows: a control without them \
+                     has no such macro statement and refuses the block); tapegate does not \
+                     work out statements, parameters or expressions: convert for a profile that \
+                     reads them, or write the program without them",
+                    text(statement)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, offset + at),
+                line: None,
+            });
+        }
         if let Some((w, at)) = b
             .words
             .iter()

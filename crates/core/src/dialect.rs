@@ -58,6 +58,52 @@ pub fn first_outside_ascii(text: &[u8]) -> Option<(usize, String)> {
     Some((offset, describe(&text[offset..])))
 }
 
+/// Where the character at `offset` of a line of a `family` program stands, as TG127 names it:
+/// in a comment (`( )` but on a SINUMERIK, whose `( )` are calls, or after `;`), in a string
+/// (`" "`), or on LinuxCNC in a named parameter's name (`#<été>`) or a subroutine's
+/// (`o<été>`), which rs274 reads as text too; "in a comment or string" where the line does not
+/// show which (review 24: a parameter's name was called a comment or string).
+pub fn outside_ascii_place(text: &[u8], offset: usize, family: Family) -> &'static str {
+    let linuxcnc = family == Family::LinuxCnc;
+    let parens = family != Family::Sinumerik;
+    let (mut comment, mut string) = (0usize, false);
+    let mut name: Option<&'static str> = None;
+    let mut before = 0u8; // the last byte outside blanks, outside comments
+    for &c in &text[..offset.min(text.len())] {
+        if string {
+            string = c != b'"';
+        } else if comment > 0 {
+            match c {
+                b'(' => comment += 1,
+                b')' => comment -= 1,
+                _ => {}
+            }
+        } else if name.is_some() {
+            if c == b'>' {
+                name = None;
+            }
+        } else {
+            match c {
+                b'(' if parens => comment = 1,
+                b'"' => string = true,
+                b';' => return "in a comment",
+                b'<' if linuxcnc && before == b'#' => name = Some("in a parameter's name"),
+                b'<' if linuxcnc && before.eq_ignore_ascii_case(&b'o') => {
+                    name = Some("in a subroutine's name")
+                }
+                b' ' | b'\t' => {}
+                _ => before = c,
+            }
+        }
+    }
+    match (comment > 0, string, name) {
+        (true, _, _) => "in a comment",
+        (_, true, _) => "in a string",
+        (_, _, Some(place)) => place,
+        _ => "in a comment or string",
+    }
+}
+
 fn describe(rest: &[u8]) -> String {
     let len = match rest[0] {
         0xC2..=0xDF => 2,

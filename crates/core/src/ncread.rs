@@ -1297,6 +1297,17 @@ impl Reader {
             && !absolute)
             .then_some(if letter == b'U' { b'X' } else { b'Z' });
         let incremental = incremental || moves.is_some();
+        // a dwell's time is compared by its time, whichever of the control's time letters
+        // gives it (`word::dwell_words`; the check's statistics read it so): a FANUC `G04
+        // X1.5` and its conversion `G4 P1.5`, both 1.5 s, are one word of the key P, as `G04
+        // P1500` (milliseconds, read in seconds above) is. SINUMERIK's S is revolutions of
+        // the spindle, no time: its own key
+        if dwell
+            && w.index.is_empty()
+            && !(self.settings.family == Family::Sinumerik && letter == b'S')
+        {
+            key = vec![b'P'];
+        }
         let as_length =
             (pqr.is_some_and(|i| self.settings.pqr_unstated[i]) && kind == Kind::Number && !dwell)
                 .then_some(if inch { Factor::Inch } else { Factor::One });

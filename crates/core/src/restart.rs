@@ -619,9 +619,28 @@ impl Walk {
                 self.lose_unknown(axis, line, what.into_bytes());
             }
         }
+        // the axes lost here are no longer under a transform: a later move of one is plain
+        // unless a transform still in force moves it (review 26, finding 2: a Y given again
+        // after its own mirror ended was lost at a later cancel of X's mirror)
+        self.transformed &= kept;
         if !self.transforms_on() {
             self.transformed = 0;
         }
+    }
+
+    /// The axes a move of `bits` moves under a transform: all of them under a rotation,
+    /// scaling or other transform, those mirrored (for certain or in doubt) where mirror
+    /// images are the only transforms in force (a mirror of X leaves Y's numbers as written:
+    /// FANUC G51.1, Haas G101 mirror the axes they name).
+    fn under_transform(&self, bits: u16) -> u16 {
+        let other = self
+            .unrestored
+            .iter()
+            .any(|(k, _, _)| matches!(k.as_str(), "68" | "51" | "11" | "69" | "62"));
+        if other {
+            return bits;
+        }
+        bits & (self.mirrored | self.mirror_doubt | self.haas_mirrored | self.haas_mirror_doubt)
     }
 
     /// A mirror cancel `code` (FANUC G50.1, Haas G100) on `line`, given the axes (bits of
@@ -1687,7 +1706,7 @@ impl Walk {
             if self.unrestored.iter().any(|(k, _, _)| k == "68") && bits & pair != 0 {
                 bits |= pair; // a rotation moves both axes of its plane
             }
-            self.transformed |= bits;
+            self.transformed |= self.under_transform(bits);
         }
         if self.lathe && !letters.is_empty() {
             let pick = |p: &[Option<Dec>; 9], axis: u8| axis_index(axis).and_then(|i| p[i]);

@@ -170,7 +170,7 @@ rules! {
     ColonInComment = "TG126", Info, "4", Structure, false,
         "':' in comments where the control reads a comment as text (checks.comment_colon = \"text\"): harmless, said once per file with a count";
     OutsideAscii = "TG127", Warning, "Annex A", Structure, false,
-        "text outside ASCII in a comment or string (a Latin-1 degree sign, GBK or UTF-8 text): read, and said once per file with the character and its place, since a 7-bit tape code cannot carry it";
+        "text outside ASCII in a comment, a string or a LinuxCNC name (`#<name>`, `o<name>`; a Latin-1 degree sign, GBK or UTF-8 text): read, and said once per file with the character, its column and what it stands in, since a 7-bit tape code cannot carry it";
     SkipWithinBlock = "TG128", Warning, "dialect", Structure, false,
         "'/' block skip in the middle of a block (Fanuc, Haas): with the block-skip switch on, the control ignores the block from the slash to its end; checked as written, the switch off; and a '/' after a macro variable outside brackets (X#146/2), read as a division, which may be the block skip: a doubtful reading";
     LeaderSkipped = "TG129", Warning, "dialect", Structure, false,

@@ -1056,16 +1056,18 @@ impl Checker {
         }
     }
 
-    /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
-    /// it, a tape code of 7 bits cannot carry it.
+    /// Text outside ASCII in a comment, a string or a LinuxCNC name (TG127, once per file):
+    /// the control reads it, a tape code of 7 bits cannot carry it. The message names the
+    /// character, its column and what it stands in ([`dialect::outside_ascii_place`]).
     /// `skip`: the bytes of a byte order mark before it (TG135's).
     pub(super) fn outside_ascii(&mut self, line: usize, text: &[u8], skip: usize) {
         if let Some((offset, what)) = dialect::first_outside_ascii(&text[skip..]) {
             let offset = offset + skip;
             self.outside_ascii_noted = true;
+            let place = dialect::outside_ascii_place(text, offset, self.config.family);
             let message = format!(
-                "{what} in a comment or string: read as text, but ISO and EIA tape codes \
-                 cannot carry it (said once per file)"
+                "{what} {place}: read as text, but ISO and EIA tape codes cannot carry it \
+                 (said once per file)"
             );
             self.report(Rule::OutsideAscii, message, line, column(text, offset));
         }
