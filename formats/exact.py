@@ -109,7 +109,7 @@ def plain_text(value: str) -> str | None:
 def _text(value: Any) -> Any:
     if type(value) is Text:
         found = plain_text(value)
-        return found if found is not None else str(_made(value))
+        return str(found) if found is not None else str(_made(value))  # (a plain str)
     if isinstance(value, tuple):
         return tuple(_text(v) for v in value)
     if isinstance(value, dict):

@@ -229,6 +229,27 @@ def machine(profile: Profile) -> _core.Machine:
         with _BUILDING:
             compiled = profile.__dict__.get("_machine")
             if compiled is None:
-                compiled = _core.Machine(machine_spec(profile))
+                compiled = _core.Machine(_spec(profile))
                 object.__setattr__(profile, "_machine", compiled)
     return compiled
+
+
+def _spec(profile: Profile) -> MachineSpec:
+    """:func:`machine_spec` of ``profile``, kept between runs in the user's cache folder for a
+    profile read from a text (a built-in profile, a profile file: the key
+    :func:`formats.profile.profile_from_text` gave it), and read back from there: the spec
+    was most of the machine's build (1.1 of 1.3 ms), which the first file of each command
+    waits for, and ``-j``'s other workers with it (docs/benchmarks.md, "the machine spec kept
+    between runs"). A profile made otherwise (``with_start_units``, ``dataclasses.replace``)
+    has no key: its spec is made each time."""
+    key = profile.__dict__.get("_spec_key")
+    if key is None:
+        return machine_spec(profile)
+    from formats import profile_cache
+
+    kept = profile_cache.load_spec(key)
+    if kept is not None:
+        return kept  # type: ignore[return-value]
+    spec = machine_spec(profile)
+    profile_cache.store_spec(key, spec)  # type: ignore[arg-type]
+    return spec

@@ -443,9 +443,16 @@ def profile_from_text(text: str, source: str = "<text>", default_name: str = "",
     try:
         if "base" in data:
             data = _on_base(data, source)
-        return _build(data, source, default_name)
+        profile = _build(data, source, default_name)
     except ProfileError as exc:
         raise exc.located(file=source) from None
+    if cache_as is not None:  # the core's machine spec kept between runs too, by what made it
+        from formats import profile_cache
+
+        key = profile_cache.spec_key(data, source, default_name)
+        if key is not None:
+            object.__setattr__(profile, "_spec_key", key)
+    return profile
 
 
 def _toml(text: str, source: str, cache_as: str | None) -> dict[str, Any]:
