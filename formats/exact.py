@@ -80,7 +80,10 @@ class Exact:
                 return dataclasses.field(default_factory=default)
             return _made(Text(default)) if default is not None else None
         held = obj.__dict__
-        value = held[self.name]
+        try:
+            value = held[self.name]
+        except KeyError:  # (not set yet: as a missing attribute)
+            raise AttributeError(self.name) from None
         if type(value) is Text or type(value) is Texts:
             value = held[self.name] = _made(value)
         return value

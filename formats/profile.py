@@ -284,8 +284,8 @@ class Profile(FrozenRecord):
     def __getstate__(self) -> dict[str, Any]:
         """A profile pickles as its settings: the core's compiled machine kept with it
         (``formats.machine.machine``) is not pickled, the process that loads it compiles its
-        own."""
-        return {k: v for k, v in self.__dict__.items() if k != "_machine"}
+        own (nor the key of its kept spec: that process makes the spec)."""
+        return {k: v for k, v in self.__dict__.items() if k not in ("_machine", "_spec_key")}
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         self.__dict__.update(state)

@@ -162,6 +162,8 @@ def test_a_value_given_to_a_record_is_kept_as_it_is():
     assert dataclasses.asdict(fresh)["feed_max"] == Decimal(10)
     with pytest.raises(dataclasses.FrozenInstanceError):
         fresh.feed_max = Decimal(1)  # type: ignore[misc]
+    unset = Limits.__new__(Limits)  # (no field set yet: a missing attribute, not a KeyError)
+    assert not hasattr(unset, "feed_max") and getattr(unset, "axes", None) is None
 
 
 def test_the_fields_stay_exact_after_dataclasses_registers_the_class():

@@ -140,3 +140,14 @@ def test_a_folder_that_cannot_be_made_is_no_error(tmp_path, monkeypatch):
     assert machine_module._spec(profile) == machine_spec(profile)
     assert machine(profile) is machine(profile)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["file"]
+
+
+def test_a_pickled_profile_carries_neither_its_machine_nor_its_specs_key(cache):
+    import pickle
+
+    profile = load_profile("fanuc-mill")
+    machine(profile)
+    assert {"_machine", "_spec_key"} <= set(profile.__dict__)
+    again = pickle.loads(pickle.dumps(profile))
+    assert again == profile and not {"_machine", "_spec_key"} & set(again.__dict__)
+    assert machine_module._spec(again) == machine_spec(again)  # made, not read back
