@@ -18,7 +18,7 @@ mode, ``k`` feed mode, ``l`` spindle mode, ``m`` units).
 from __future__ import annotations
 
 import _thread
-from collections.abc import Iterator, Mapping
+from _collections_abc import Iterator, Mapping  # (collections.abc's, without collections)
 
 from formats.records import FrozenRecord, init_fields, record
 

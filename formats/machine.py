@@ -18,6 +18,7 @@ import _thread
 
 from formats import _core
 from formats.codes import OWN_TABLE, Code
+from formats.exact import text
 from formats.profile import Profile
 from formats.wordformat import WordFormat
 
@@ -108,9 +109,9 @@ def _formats(formats: Iterable[WordFormat]) -> list[FormatEntry]:
 
 
 def _increment_digits(profile: Profile) -> tuple[int, int]:
-    """The decimals of one least input increment of ``profile``, metric and inch."""
-    return (-int(profile.least_increment("metric").as_tuple().exponent),
-            -int(profile.least_increment("inch").as_tuple().exponent))
+    """The decimals of one least input increment of ``profile``, metric and inch: those of
+    its X format (:meth:`~formats.profile.Profile.least_increment`, without its ``Decimal``)."""
+    return profile.word_format("X", "metric").after, profile.word_format("X", "inch").after
 
 
 def _numbered(codes: dict[str, Code]) -> Iterator[tuple[str, Code]]:
@@ -166,8 +167,9 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "unknown_g": checks.unknown_g,
         "unknown_m": checks.unknown_m,
         "tv_check": profile.serial.tv_check,
-        "arc_tolerance": float(checks.arc_tolerance),
-        "arc_tolerance_relative": float(checks.arc_tolerance_relative),
+        # the profile's exact numbers by their texts (formats.exact: no Decimal made)
+        "arc_tolerance": float(text(checks, "arc_tolerance")),
+        "arc_tolerance_relative": float(text(checks, "arc_tolerance_relative")),
         "ijk": checks.ijk,
         "repeatable": "".join(sorted(checks.repeatable)),
         "m_classes": sorted(checks.m_classes),
@@ -189,14 +191,14 @@ def machine_spec(profile: Profile) -> MachineSpec:
                        for letter, address in c.words],
         "index_g": checks.index_g,
         "pqr": (checks.pqr.get("P"), checks.pqr.get("Q"), checks.pqr.get("R")),
-        "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
-        "work_offsets": [(int(g[1:]), axis, str(value))
-                         for g, axes in profile.work_offsets.items()
+        "travel": [(axis, low, high) for axis, (low, high) in text(limits, "axes").items()],
+        "work_offsets": [(int(g[1:]), axis, value)
+                         for g, axes in text(profile, "work_offsets").items()
                          for axis, value in axes.items()],
-        "feed_max": None if limits.feed_max is None else str(limits.feed_max),
-        "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
+        "feed_max": text(limits, "feed_max"),
+        "spindle_max": text(limits, "spindle_max"),
         "tool_max": limits.tool_max,
-        "rapid_rate": float(limits.rapid_rate),
+        "rapid_rate": float(text(limits, "rapid_rate")),
         "reset": [int(c[1:]) for c in profile.reset_state()],
         # -1: no G code selects the units (units_codes = "none"), the machine's parameter does
         "inch": int(profile.inch_code[1:]) if profile.units_by_code else -1,
@@ -227,6 +229,27 @@ def machine(profile: Profile) -> _core.Machine:
         with _BUILDING:
             compiled = profile.__dict__.get("_machine")
             if compiled is None:
-                compiled = _core.Machine(machine_spec(profile))
+                compiled = _core.Machine(_spec(profile))
                 object.__setattr__(profile, "_machine", compiled)
     return compiled
+
+
+def _spec(profile: Profile) -> MachineSpec:
+    """:func:`machine_spec` of ``profile``, kept between runs in the user's cache folder for a
+    profile read from a text (a built-in profile, a profile file: the key
+    :func:`formats.profile.profile_from_text` gave it), and read back from there: the spec
+    was most of the machine's build (1.1 of 1.3 ms), which the first file of each command
+    waits for, and ``-j``'s other workers with it (docs/benchmarks.md, "the machine spec kept
+    between runs"). A profile made otherwise (``with_start_units``, ``dataclasses.replace``)
+    has no key: its spec is made each time."""
+    key = profile.__dict__.get("_spec_key")
+    if key is None:
+        return machine_spec(profile)
+    from formats import profile_cache
+
+    kept = profile_cache.load_spec(key)
+    if kept is not None:
+        return kept  # type: ignore[return-value]
+    spec = machine_spec(profile)
+    profile_cache.store_spec(key, spec)  # type: ignore[arg-type]
+    return spec

@@ -14,7 +14,6 @@ Input is consumed in chunks, so memory does not grow with the program (streaming
 from __future__ import annotations
 
 import codecs
-from collections.abc import Iterable, Iterator
 from itertools import chain
 
 from formats import _core
@@ -25,6 +24,7 @@ from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Iterable, Iterator
     from typing import Literal
 
     Errors = Literal["raise", "collect"]

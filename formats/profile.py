@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import math
 import os
-from decimal import Decimal
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import OWN_TABLE, TABLES, Code, CodeTable
 from formats.errors import FormatSpecError, ProfileError, TapegateError
+from formats.exact import Text, Texts, exact_fields, shown
 from formats.parser import Dialect
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, count_format
@@ -23,9 +23,20 @@ from formats.wordformat import WordFormat, count_format
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from decimal import Decimal
     from typing import Any
 
     from formats.codes import Status
+
+    def _exact(text: str) -> Decimal:
+        """A default of an exact field: its text, made a ``Decimal`` when read."""
+else:
+    _exact = Text  # (formats.exact: the field's text until it is read)
+
+# the defaults of exact fields, as their texts
+_RAPID_RATE = _exact("5000")
+_ARC_TOLERANCE = _exact("0.0282843")
+_ARC_RELATIVE = _exact("0.001")
 
 CONTROL_TYPES = ("positioning", "line", "contouring", "lathe")
 RESET_STATES = {
@@ -110,12 +121,16 @@ class Limits(FrozenRecord):
     feed_max: Decimal | None = None
     spindle_max: Decimal | None = None
     tool_max: int | None = None
-    rapid_rate: Decimal = Decimal(5000)  # for cycle-time estimates, in program units per minute
+    rapid_rate: Decimal = _RAPID_RATE  # for cycle-time estimates, in program units a minute
 
     def __init__(self, axes: dict[str, tuple[Decimal, Decimal]] = NEW,
                  feed_max: Decimal | None = None, spindle_max: Decimal | None = None,
-                 tool_max: int | None = None, rapid_rate: Decimal = Decimal(5000)) -> None:
+                 tool_max: int | None = None, rapid_rate: Decimal = _RAPID_RATE) -> None:
         init_fields(self, new(axes, dict), feed_max, spindle_max, tool_max, rapid_rate)
+
+
+# kept as their texts until read (formats.exact): no decimal before a batch's threads
+exact_fields(Limits, {"axes": dict, "feed_max": None, "spindle_max": None, "rapid_rate": "5000"})
 
 
 @record
@@ -125,8 +140,8 @@ class CheckSettings(FrozenRecord):
     # LinuxCNC's figures: an arc's start and end radii may differ by max(0.0282843 mm, 0.1 % of
     # the radius), capped at 100 times the absolute part (2.8284 mm); in inch 0.0028284 in (a
     # tenth of the mm figure, as LinuxCNC has it), capped at 0.28284 in
-    arc_tolerance: Decimal = Decimal("0.0282843")
-    arc_tolerance_relative: Decimal = Decimal("0.001")
+    arc_tolerance: Decimal = _ARC_TOLERANCE
+    arc_tolerance_relative: Decimal = _ARC_RELATIVE
     ijk: str = "incremental"  # incremental (7.3 recommended) | absolute | quadrant (sign-less)
     repeatable: frozenset[str] = frozenset()  # non-dimensional words allowed twice in a block
     m_classes: frozenset[int] = frozenset({0, 1})
@@ -154,8 +169,8 @@ class CheckSettings(FrozenRecord):
     # Macro B's, LinuxCNC's, the core's); None: none stated. An assignment to one is TG209.
     read_only: tuple[tuple[int, int, str], ...] | None = None
 
-    def __init__(self, arc_tolerance: Decimal = Decimal("0.0282843"),
-                 arc_tolerance_relative: Decimal = Decimal("0.001"), ijk: str = "incremental",
+    def __init__(self, arc_tolerance: Decimal = _ARC_TOLERANCE,
+                 arc_tolerance_relative: Decimal = _ARC_RELATIVE, ijk: str = "incremental",
                  repeatable: frozenset[str] = frozenset(),
                  m_classes: frozenset[int] = frozenset({0, 1}), max_index: int = 9,
                  max_parameter: int = 999, index_g: bool = False, pqr: dict[str, str] = NEW,
@@ -166,6 +181,9 @@ class CheckSettings(FrozenRecord):
         init_fields(self, arc_tolerance, arc_tolerance_relative, ijk, repeatable, m_classes,
                     max_index, max_parameter, index_g, new(pqr, _default_pqr), unknown_g,
                     unknown_m, past_decimals, past_sequence, comment_colon, read_only)
+
+
+exact_fields(CheckSettings, {"arc_tolerance": "0.0282843", "arc_tolerance_relative": "0.001"})
 
 
 @record
@@ -180,6 +198,9 @@ class RestartSettings(FrozenRecord):
     def __init__(self, clearance: Decimal | None = None,
                  clearance_x: Decimal | None = None) -> None:
         init_fields(self, clearance, clearance_x)
+
+
+exact_fields(RestartSettings, {"clearance": None, "clearance_x": None})
 
 
 _NUMBERS = NumberReading()  # the defaults a profile shares
@@ -263,8 +284,8 @@ class Profile(FrozenRecord):
     def __getstate__(self) -> dict[str, Any]:
         """A profile pickles as its settings: the core's compiled machine kept with it
         (``formats.machine.machine``) is not pickled, the process that loads it compiles its
-        own."""
-        return {k: v for k, v in self.__dict__.items() if k != "_machine"}
+        own (nor the key of its kept spec: that process makes the spec)."""
+        return {k: v for k, v in self.__dict__.items() if k not in ("_machine", "_spec_key")}
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         self.__dict__.update(state)
@@ -343,6 +364,9 @@ class Profile(FrozenRecord):
         return codes
 
 
+exact_fields(Profile, {"work_offsets": dict})
+
+
 _FALLBACK = {
     letter: WordFormat(letter, 5, 4, signed=True) for letter in "XYZUVWPQRABCIJKE"
 } | {"F": WordFormat("F", 5, 4), "S": WordFormat("S", 5, 3)}
@@ -419,9 +443,16 @@ def profile_from_text(text: str, source: str = "<text>", default_name: str = "",
     try:
         if "base" in data:
             data = _on_base(data, source)
-        return _build(data, source, default_name)
+        profile = _build(data, source, default_name)
     except ProfileError as exc:
         raise exc.located(file=source) from None
+    if cache_as is not None:  # the core's machine spec kept between runs too, by what made it
+        from formats import profile_cache
+
+        key = profile_cache.spec_key(data, source, default_name)
+        if key is not None:
+            object.__setattr__(profile, "_spec_key", key)
+    return profile
 
 
 def _toml(text: str, source: str, cache_as: str | None) -> dict[str, Any]:
@@ -514,26 +545,37 @@ class Keys:
                 key=self.prefix + key)
         return str(value)
 
-    def number(self, key: str, default: Decimal | None, minimum: Decimal | None = None
+    def number(self, key: str, default: Decimal | None, minimum: float | Decimal | None = None
                ) -> Decimal | None:
+        """The number under ``key`` (``default`` where it is not given), at least ``minimum``:
+        a TOML integer or float as its text (``str(value)``), which an exact field makes the
+        ``Decimal`` ``Decimal(str(value))`` when it is read (:mod:`formats.exact`: no
+        ``decimal`` at a profile's load); a number written as a TOML string, read by
+        ``Decimal`` as before. The type checker reads either as a ``Decimal``."""
         value = self.data.get(key)
         if value is None:
             return default
         if isinstance(value, bool) or not isinstance(value, int | float | str):
             raise self.error(f"{self.prefix}{key} must be a number, not {value!r}",
                              key=self.prefix + key)
-        try:
-            result = Decimal(str(value))
-        except ArithmeticError:
-            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}",
-                             key=self.prefix + key) from None
-        if not result.is_finite():
+        if isinstance(value, str):
+            from decimal import Decimal
+
+            try:
+                result = Decimal(value)
+            except ArithmeticError:
+                raise self.error(f"{self.prefix}{key} must be a number, not {value!r}",
+                                 key=self.prefix + key) from None
+            finite = result.is_finite()
+        else:  # (an int or a float compares with the minimum as its exact Decimal does)
+            finite = math.isfinite(value)
+        if not finite:
             raise self.error(f"{self.prefix}{key} must be a finite number, not {value!r}",
                              key=self.prefix + key)
-        if minimum is not None and result < minimum:
+        if minimum is not None and (result if isinstance(value, str) else value) < minimum:
             raise self.error(f"{self.prefix}{key} must be at least {minimum}, not {value}",
                              key=self.prefix + key)
-        return result
+        return result if isinstance(value, str) else _exact(str(value))
 
 
 _TOP = {"base", "name", "description", "general", "detailed", "code_table", "units_codes", "units",
@@ -762,7 +804,7 @@ def _restart(data: dict[str, Any]) -> RestartSettings:
                                f"units, such as 50.), not {data[key]!r}",
                                key=f"restart.{key}")
     return RestartSettings(clearance=keys.number("clearance", None),
-                           clearance_x=keys.number("clearance_x", None, Decimal(0)))
+                           clearance_x=keys.number("clearance_x", None, 0))
 
 
 def _numbers(data: dict[str, Any]) -> NumberReading:
@@ -905,16 +947,25 @@ def _limits(data: dict[str, Any]) -> Limits:
                     or not all(_is_number(v) for v in pair)):
                 raise ProfileError(f"limits.{axis} must be [minimum, maximum]",
                                    key=f"limits.{axis}")
-            low, high = (Decimal(str(v)) for v in pair)
-            if low > high:
-                raise ProfileError(f"limits.{axis}: minimum {low} is above maximum {high}",
-                                   key=f"limits.{axis}")
+            low, high = (Text(v) for v in pair)  # (their Decimals made when read)
+            if pair[0] > pair[1]:
+                raise ProfileError(f"limits.{axis}: minimum {shown(low)} is above maximum "
+                                   f"{shown(high)}", key=f"limits.{axis}")
             axes[axis] = (low, high)
     tool_max = keys.get("tool_max", (int, type(None)), None)
-    return Limits(axes=axes, feed_max=keys.number("feed_max", None, Decimal(0)),
-                  spindle_max=keys.number("spindle_max", None, Decimal(0)),
+    return Limits(axes=Texts(axes) if axes else {},
+                  feed_max=keys.number("feed_max", None, 0),
+                  spindle_max=keys.number("spindle_max", None, 0),
                   tool_max=tool_max,
-                  rapid_rate=keys.number("rapid_rate", Decimal(5000), Decimal(1)) or Decimal(5000))
+                  rapid_rate=keys.number("rapid_rate", _RAPID_RATE, 1) or _RAPID_RATE)
+
+
+def _or_zero(value: Decimal | Text | None) -> Decimal:
+    """``value or Decimal(0)`` of :meth:`Keys.number`'s value: a zero, as a text too
+    (``0.0``), made ``0``."""
+    if isinstance(value, Text):
+        return _exact("0" if shown(value).strip("-0.") == "" else value)
+    return value or _exact("0")
 
 
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
@@ -959,9 +1010,9 @@ def _work_offsets(data: dict[str, Any], limits: Limits, control_type: str,
                 raise ProfileError(f"work_offsets.{code}.{axis} must be a number (the machine "
                                    f"position of the work zero, in the profile's units), not "
                                    f"{value!r}", key=f"work_offsets.{code}.{axis}")
-            values[axis] = Decimal(str(value))
+            values[axis] = _exact(str(value))  # (made a Decimal when read)
         offsets[code] = values
-    return offsets
+    return Texts(offsets)
 
 
 def _is_number(value: object) -> bool:
@@ -990,10 +1041,9 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
                                f"{', '.join(PQR_ROLES)}", key=f"checks.pqr.{letter}")
         pqr[letter] = role
     return CheckSettings(
-        arc_tolerance=keys.number("arc_tolerance", Decimal("0.0282843"), Decimal(0))
-        or Decimal(0),
-        arc_tolerance_relative=keys.number("arc_tolerance_relative", Decimal("0.001"),
-                                           Decimal(0)) or Decimal(0),
+        arc_tolerance=_or_zero(keys.number("arc_tolerance", _ARC_TOLERANCE, 0)),
+        arc_tolerance_relative=_or_zero(keys.number("arc_tolerance_relative", _ARC_RELATIVE,
+                                                    0)),
         ijk=keys.choice("ijk", ("incremental", "absolute", "quadrant"), "incremental"),
         repeatable=frozenset(str(r) for r in repeatable),
         m_classes=frozenset(classes),
@@ -1091,14 +1141,20 @@ def _serial(data: dict[str, Any], prefix: str = "serial.",
         trailer=keys.get("trailer", int, d.trailer),
         tv_check=keys.get("tv_check", bool, d.tv_check),
         overrun_allowance=keys.get("overrun_allowance", int, d.overrun_allowance),
-        dc3_reaction=_optional_float(keys.number("dc3_reaction", None, Decimal(0)),
-                                     d.dc3_reaction),
+        dc3_reaction=_optional_float(keys.number("dc3_reaction", None, 0), d.dc3_reaction),
         wait_for_dc1=keys.get("wait_for_dc1", bool, d.wait_for_dc1),
-        xon_timeout=float(keys.number("xon_timeout", Decimal("30"), Decimal("0.01")) or 30),
-        char_delay=float(keys.number("char_delay", Decimal(0), Decimal(0)) or 0),
-        line_delay=float(keys.number("line_delay", Decimal(0), Decimal(0)) or 0),
+        xon_timeout=_float(keys.number("xon_timeout", None, 0.01), 30),
+        char_delay=_float(keys.number("char_delay", None, 0), 0),
+        line_delay=_float(keys.number("line_delay", None, 0), 0),
         dc_codes=keys.get("dc_codes", bool, d.dc_codes),
     )
+
+
+def _float(value: Decimal | None, default: float) -> float:
+    """``float(value or default)`` of :meth:`Keys.number`'s value (a text or a ``Decimal``):
+    a zero, or none, is ``default``."""
+    number = 0.0 if value is None else float(value)
+    return number or float(default)
 
 
 def _optional_float(value: Decimal | None, default: float | None) -> float | None:

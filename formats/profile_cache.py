@@ -22,13 +22,20 @@ Python, nothing to import) and read back next time; a profile file's entry is na
   profile is parsed as without a cache. The entry is written to a temporary file and renamed,
   so a reader never sees half of one.
 
-Only what ``tomllib.loads`` returns is kept, never the validated profile or the core's machine:
-those are made from it as before, by this version of tapegate, so an update of tapegate cannot
-meet a stale machine.
+The validated profile is not kept: it is made from the table each time. What the core's
+machine is compiled from, its spec (:func:`formats.machine.machine_spec`: plain values), is
+kept too, as ``machine-CRC.marshal`` (:func:`load_spec`, :func:`store_spec`), keyed by all that
+made it: the profile's table after its ``base`` was merged, its source and default name (the
+profile's own inputs, :func:`spec_key`), and the code that turned them into the spec -- the
+size and modification time of each module the profile and the spec are made by, and of the
+core (:func:`_code`), as Python keys its ``.pyc`` files. An entry
+of another key, of other code (an update of tapegate, a module edited), damaged or cut short
+is ignored and written again; written as the tables are (a temporary file renamed).
 """
 
 from __future__ import annotations
 
+import _thread
 import marshal
 import os
 import sys
@@ -37,7 +44,7 @@ TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.m
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["directory", "load", "store"]
+__all__ = ["directory", "load", "load_spec", "spec_key", "store", "store_spec"]
 
 # What an entry is, and for which Python it was written: another one is ignored
 KEY = ("tapegate-profile-toml", 2, sys.version_info[:2], marshal.version)
@@ -106,6 +113,110 @@ def store(name: str, text: str, data: dict[str, Any]) -> None:
         return
     blob = marshal.dumps((KEY, text, crc32(table), table))
     temporary = f"{path}.{os.getpid()}.tmp"
+    try:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(temporary, "wb") as f:
+            f.write(blob)
+        os.replace(temporary, path)
+    except OSError:
+        import contextlib  # (here only: the cache folder could not be written)
+
+        with contextlib.suppress(OSError):
+            os.unlink(temporary)
+
+
+# What a machine spec entry is, and for which Python it was written
+SPEC_KEY = ("tapegate-machine-spec", 1, sys.version_info[:2], marshal.version)
+# The modules the profile and its machine spec are made by (their code is in the key)
+_SPEC_MODULES = ("formats.machine", "formats.profile", "formats.codes", "formats.classification",
+                 "formats.wordformat", "formats.parser", "formats.exact", "formats.records",
+                 "formats.choices", "formats.errors", "formats.profile_cache", "formats._core")
+
+
+def _code() -> tuple[tuple[str, int, int], ...] | None:
+    """The code that made a spec: (path, size, modification time in ns) of each module of
+    :data:`_SPEC_MODULES`, the core's build among them; None where one cannot be read. An
+    update of tapegate writes them anew (tapegate's version is read only from its installed
+    metadata, ``importlib.metadata``: more than the spec costs to make); an edited module has
+    another size or time."""
+    found: list[tuple[str, int, int]] = []
+    for name in _SPEC_MODULES:
+        module = sys.modules.get(name)
+        path = getattr(module, "__file__", None)
+        if path is None:
+            return None
+        try:
+            info = os.stat(path)
+        except OSError:
+            return None
+        found.append((path, info.st_size, info.st_mtime_ns))
+    return tuple(found)
+
+
+def spec_key(data: dict[str, Any], source: str, default_name: str) -> bytes | None:
+    """What a profile made from ``data`` (its table, ``base`` merged), ``source`` and
+    ``default_name`` keeps its spec under, or None (the cache off, a value marshal cannot
+    hold)."""
+    if directory() is None:
+        return None
+    try:
+        return marshal.dumps((data, source, default_name))
+    except ValueError:
+        return None
+
+
+def _spec_path(key: bytes) -> str | None:
+    folder = directory()
+    if folder is None:
+        return None
+    from zlib import crc32
+
+    return os.path.join(folder, f"machine-{crc32(key):08x}.marshal")
+
+
+def load_spec(key: bytes) -> dict[str, Any] | None:
+    """The machine spec kept under ``key`` by this code (:func:`_code`), or None."""
+    path = _spec_path(key)
+    code = _code()
+    if path is None or code is None:
+        return None
+    try:
+        with open(path, "rb") as f:
+            entry = marshal.loads(f.read())
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    if not (type(entry) is tuple and len(entry) == 5 and entry[0] == SPEC_KEY
+            and entry[1] == code and entry[2] == key and type(entry[4]) is bytes):
+        return None
+    from zlib import crc32
+
+    if crc32(entry[4]) != entry[3]:  # damaged on disk: made again, and rewritten
+        return None
+    try:
+        spec = marshal.loads(entry[4])
+    except (EOFError, ValueError, TypeError):
+        return None
+    return spec if type(spec) is dict else None
+
+
+def store_spec(key: bytes, spec: dict[str, Any]) -> None:
+    """Keep ``spec`` under ``key``; quietly nothing where the folder cannot be written."""
+    path = _spec_path(key)
+    code = _code()
+    if path is None or code is None:
+        return
+    from zlib import crc32
+
+    try:
+        table = marshal.dumps(spec)
+    except ValueError:
+        return
+    _write(path, marshal.dumps((SPEC_KEY, code, key, crc32(table), table)))
+
+
+def _write(path: str, blob: bytes) -> None:
+    """``blob`` as the file ``path``: written to a temporary file and renamed."""
+    temporary = f"{path}.{os.getpid()}.{_thread.get_ident()}.tmp"
     try:
         os.makedirs(os.path.dirname(path), exist_ok=True)
         with open(temporary, "wb") as f:

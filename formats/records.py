@@ -28,11 +28,11 @@ from __future__ import annotations
 
 import _thread
 import sys
-from collections.abc import Callable
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     import dataclasses
+    from collections.abc import Callable
     from typing import Any, ClassVar, TypeVar
 
     C = TypeVar("C", bound=type)
@@ -144,7 +144,12 @@ class _Registered:
         for name, value in list(owner.__dict__.items()):
             if isinstance(value, _Field):
                 setattr(owner, name, dataclasses.field(**value.arguments))
+        # a field kept as text until read (formats.exact): its descriptor, which dataclass
+        # takes away where the default is a factory, put back
+        exact = {name: owner.__dict__[name] for name in owner.__dict__.get("__record_exact__", ())}
         dataclasses.dataclass(init=False, repr=False, eq=False)(owner)
+        for name, declared in exact.items():
+            setattr(owner, name, declared)
         names = tuple(f.name for f in dataclasses.fields(owner))
         if names != owner.__record_fields__:  # type: ignore[attr-defined]
             raise TypeError(f"{owner.__qualname__}: fields {names} are not its annotations")

@@ -21,14 +21,13 @@ implementation of Annex C that the checker, the converter and the diff use too.
 
 from __future__ import annotations
 
-from decimal import Decimal
-
 from formats import _core
 from formats.errors import ConversionError
 from formats.records import FrozenRecord, init_fields, record
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:  # the type checker reads the classes below as the enums they stand for
+    from decimal import Decimal
     from enum import StrEnum as StrChoice
 else:  # without enum's import (formats.choices)
     from formats.choices import StrChoice
@@ -72,6 +71,8 @@ class WordFormat(FrozenRecord):
 
     @property
     def resolution(self) -> Decimal:
+        from decimal import Decimal  # (when first needed: not before a check's threads)
+
         return Decimal(1).scaleb(-self.after)
 
     @property
@@ -105,6 +106,8 @@ class WordFormat(FrozenRecord):
         a count of the format's least increment, as a Fanuc reads ``X10000`` at 0.001 mm
         (10.000 mm). A number the format cannot hold is a :class:`ConversionError`.
         """
+        from decimal import Decimal
+
         try:
             value = Decimal(_core.read_number(self.entry, number, explicit_program, increments))
         except ValueError as exc:  # the core's reason: too many digits for the format

@@ -14,8 +14,6 @@ format (``text``, ``json``, ``jsonl``) has the core write its findings as that r
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
-from decimal import Decimal
 from itertools import chain
 
 from formats import _core
@@ -37,6 +35,8 @@ from postproc.rules import TAPE_CHARACTER, TAPE_PARITY
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterable, Iterator
+    from decimal import Decimal
     from typing import Any
 
     from formats.source import Source

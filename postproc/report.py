@@ -21,7 +21,6 @@ whatever is only known at the end comes last:
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator, Mapping
 from io import StringIO
 from itertools import islice
 
@@ -31,6 +30,7 @@ from postproc.check import CheckStats, Finding
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterable, Iterator, Mapping
     from typing import Any, TextIO
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"

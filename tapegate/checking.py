@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Callable, Iterator
 
 from formats.errors import TapegateError
 from formats.profile import load_profile
@@ -28,6 +27,7 @@ from tapegate.launch import resume_collector
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterator
     from typing import Any
 
     from formats.profile import Profile

@@ -33,6 +33,7 @@ def test_threads_asking_at_once_share_one_machine_built_once(monkeypatch) -> Non
         return real(profile)
 
     monkeypatch.setattr(machines, "machine_spec", counted)
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", "")  # each profile's spec made, not read back
     interval = sys.getswitchinterval()
     sys.setswitchinterval(1e-5)
     try:

@@ -14,6 +14,7 @@ import pytest
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import TABLES, Code, CodeTable
 from formats.conversion import ConvertOptions, ConvertStats
+from formats.exact import Text
 from formats.model import Word
 from formats.parser import PERMISSIVE, Dialect
 from formats.profile import (
@@ -182,6 +183,12 @@ def test_init_takes_the_fields_with_their_declared_defaults(cls):
     for param, f in zip(params, fields, strict=True):
         if f.default_factory is not dataclasses.MISSING:
             assert param.default is NEW
+        elif f.name in cls.__dict__.get("__record_exact__", ()) and f.default is not None:
+            # an exact field (formats.exact): the default is the text of the field's Decimal,
+            # made that Decimal when the field is read
+            assert type(param.default) is Text and Decimal(param.default) == f.default
+            assert repr(cls(**{f.name: param.default}).__getattribute__(f.name)) == repr(
+                f.default)
         elif f.default is not dataclasses.MISSING:
             assert param.default == f.default and type(param.default) is type(f.default)
         elif "__slots__" not in cls.__dict__:  # a slot class declares its defaults in __init__

@@ -63,6 +63,10 @@ def test_a_check_starts_its_threads_without_enum_or_the_rules_records(folder, fm
     assert "enum" not in modules
     assert "threading" not in modules  # the workers on _thread's locks and threads
     assert "functools" not in modules and "types" not in modules
+    assert "decimal" not in modules  # the profile's numbers kept as texts (formats.exact)
+    # nor collections (postproc.findings' tuple written out, collections.abc's names taken
+    # from _collections_abc, loaded with os)
+    assert "collections" not in modules and "collections.abc" not in modules
     assert found["rules_made"] is False
 
 
