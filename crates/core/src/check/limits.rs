@@ -1332,7 +1332,7 @@ impl Checker {
                 }
                 continue;
             }
-            self.add_to_span(i, at, said_outside, line, col(axis), "");
+            self.add_to_span(i, at, said_outside, line, || col(axis), "");
         }
         if self.frames.map.is_some() && !moved.is_empty() {
             self.mapped_spans(moved, line, facts);
@@ -1430,7 +1430,7 @@ impl Checker {
         at: f64,
         said_outside: bool,
         line: usize,
-        column: usize,
+        column: impl FnOnce() -> usize,
         under: &str,
     ) {
         let axis = AXES[i];
@@ -1448,7 +1448,7 @@ impl Checker {
         let Span { least, most, said } = *span;
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
-            self.span_exceeded(axis, (least, most), (low, high), (line, column), under);
+            self.span_exceeded(axis, (least, most), (low, high), (line, column()), under);
         }
     }
 
@@ -1538,7 +1538,7 @@ impl Checker {
             if map.fresh & 1 << k != 0 && made_of == 1 << k && map.m[k][k] == 1.0 {
                 // an axis the frame leaves as it is
                 if let Some(p) = position[k].filter(|_| self.frames.hidden() & (1 << k) == 0) {
-                    self.add_to_span(k, p, false, line, facts.col(AXES[k]), "");
+                    self.add_to_span(k, p, false, line, || facts.col(AXES[k]), "");
                 }
                 continue;
             }
@@ -1554,9 +1554,11 @@ impl Checker {
                 continue;
             }
             // said at the first word of the block that moved it
-            let column = (0..3)
-                .find(|&l| made_of & now & 1 << l != 0)
-                .map_or(0, |l| facts.col(AXES[l]));
+            let column = || {
+                (0..3)
+                    .find(|&l| made_of & now & 1 << l != 0)
+                    .map_or(0, |l| facts.col(AXES[l]))
+            };
             self.add_to_span(k, at, false, line, column, &under);
         }
         if cycle_z {
