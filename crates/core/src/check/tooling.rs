@@ -1182,6 +1182,42 @@ impl Checker {
     #[inline(never)]
     pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
         let state = &self.machine.state;
+        let taken = self.machine.taken();
+        let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
+        // (absolute positions of a move outside a NURBS list, most of a CAM program's blocks:
+        // an axis the block names, or whose point is not known, holds the nearest double; one
+        // it leaves, its double unless its point changed -- the loop below's answers for them)
+        if !state.incremental && moves && self.linuxcnc_motion != LinuxCncMotion::Known(Some(52)) {
+            #[cfg(debug_assertions)]
+            let double = self.linuxcnc_double;
+            for k in 0..3 {
+                let now = state.position[k];
+                if now.is_none() || self.values.has(crate::modal::AXES[k]) {
+                    self.linuxcnc_double[k] = Double::Nearest;
+                } else if before.xyz[k] != now {
+                    self.linuxcnc_double[k] = Double::Unknown;
+                }
+            }
+            #[cfg(debug_assertions)]
+            {
+                let fast = self.linuxcnc_double;
+                self.linuxcnc_double = double;
+                self.linuxcnc_doubles_read(before);
+                // (as their bits: a double held as NaN is the same double)
+                debug_assert_eq!(
+                    format!("{fast:?}"),
+                    format!("{:?}", self.linuxcnc_double),
+                    "the doubles' fast path"
+                );
+            }
+            return;
+        }
+        self.linuxcnc_doubles_read(before);
+    }
+
+    /// [`Checker::linuxcnc_doubles`] of any block, axis by axis.
+    fn linuxcnc_doubles_read(&mut self, before: &Before) {
+        let state = &self.machine.state;
         let plain = matches!(
             self.linuxcnc_motion,
             LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
