@@ -263,7 +263,7 @@ pub(crate) fn err(
 
 /// The blanks a word may hold (space, tab, CR, NUL, DEL), as a table: the tokenizer asks for
 /// every byte.
-const BLANKS: [bool; 256] = {
+pub(crate) const BLANKS: [bool; 256] = {
     let mut table = [false; 256];
     table[b' ' as usize] = true;
     table[b'\t' as usize] = true;

@@ -889,13 +889,73 @@ fn plain_word<'a, O: PlainOut<'a>>(
     Some(after)
 }
 
+/// The bracketed words of a line [`bracket_word`] walks for the LinuxCNC rules: the first
+/// eight of a block (a word after them is read by each rule's own walk).
+pub const WALKED: usize = 8;
+
+/// What one walk of a LinuxCNC word's bracketed expression finds for the three rules that
+/// read its bytes: the bare-operator refusal (`between::bare_operator`), the named
+/// parameters' reads and the read-refusal's test for a `/` (the check's `walk_expression`;
+/// [`bracket_word`] finds the same of a plain line's bracketed word as it scans it,
+/// [`LineWalks`]). A CAM program's `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]` was walked three
+/// times a word.
+#[derive(Clone, Copy, Default, Debug, PartialEq, Eq)]
+pub struct ExpressionWalk {
+    /// The expression is one pair of brackets with no other bracket, no `/` and no letter
+    /// outside a named parameter's name (`[#<yscale>*-3.608]`, `[#1+2.5]`) and at most four
+    /// named parameters: its first `[` closes at its last byte, and it has no `/`. False:
+    /// each rule walks it itself.
+    pub plain: bool,
+    /// How many of `names` are found.
+    pub count: u8,
+    /// Each named parameter's `#` and its `>` in the expression, in their order.
+    pub names: [(u16, u16); 4],
+}
+
+/// The walks [`bracket_word`] made of a line of plain words' bracketed words
+/// ([`plain_line_words`]): the plain ones among the first [`WALKED`] words, by place. A word
+/// whose bit is not in `set` (its expression not plain, or no bracketed word) is walked by
+/// the check itself.
+#[derive(Clone, Copy, Default, Debug)]
+pub struct LineWalks {
+    /// The words (bit `i` for the line's word `i`) whose walk is in `walks`.
+    pub set: u8,
+    pub walks: [ExpressionWalk; WALKED],
+}
+
+/// [`bracket_word`]'s look at a byte of a LinuxCNC parameter's name: a blank ends the
+/// reading (the full reading's), and a bracket or a `/` makes the expression not plain
+/// ([`ExpressionWalk`]).
+const NAME_BLANK: u8 = 1;
+/// See [`NAME_BLANK`].
+const NAME_NOT_PLAIN: u8 = 2;
+/// [`NAME_BLANK`], [`NAME_NOT_PLAIN`] by byte.
+const NAME_BYTES: [u8; 256] = {
+    let mut table = [0u8; 256];
+    let mut b = 0;
+    while b < 256 {
+        if crate::lex::BLANKS[b] {
+            table[b] = NAME_BLANK;
+        }
+        b += 1;
+    }
+    table[b'[' as usize] = NAME_NOT_PLAIN;
+    table[b']' as usize] = NAME_NOT_PLAIN;
+    table[b'/' as usize] = NAME_NOT_PLAIN;
+    table
+};
+
 /// Where [`plain_word`] writes a plain word: a token ([`tokenize`]), or the checker's word
 /// ([`plain_line_words`]).
 trait PlainOut<'a> {
     /// The plain word `line[pos..end]`, its sign one byte long where `signed`.
     fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits);
-    /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number.
-    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize);
+    /// Whether [`bracket_word`] walks a bracketed word for the LinuxCNC rules
+    /// ([`ExpressionWalk`]): the checker's words only.
+    const WALKS: bool = false;
+    /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number. `walk`: its
+    /// expression's walk where [`PlainOut::WALKS`] and it is plain, else None.
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walk: Option<ExpressionWalk>);
     /// The offset of what follows the blanks from `pos` ([`skip_blanks`]): the blanks before
     /// a line's first word and after each word, the only bytes of a line of plain words that
     /// are not a word's.
@@ -923,7 +983,7 @@ impl<'a> PlainOut<'a> for Vec<Token<'a>> {
     }
 
     #[inline(always)]
-    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, _: Option<ExpressionWalk>) {
         self.push(Token {
             offset: pos,
             end,
@@ -939,6 +999,7 @@ impl<'a> PlainOut<'a> for Vec<Token<'a>> {
 /// the CRs among the blanks counted.
 struct WordsOut<'w, 'a, F: Fn(usize) -> usize, const CRS: bool> {
     words: &'w mut Vec<Word<'a>>,
+    walks: &'w mut LineWalks,
     at: F,
     ascii: bool,
     crs: usize,
@@ -951,8 +1012,15 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
             .push(Word::plain(&line[pos..end], signed, digits, (self.at)(pos)));
     }
 
+    const WALKS: bool = true;
+
     #[inline(always)]
-    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize) {
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walk: Option<ExpressionWalk>) {
+        let i = self.words.len();
+        if let Some(walk) = walk.filter(|_| i < WALKED) {
+            self.walks.walks[i] = walk;
+            self.walks.set |= 1 << i;
+        }
         self.words
             .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
     }
@@ -996,18 +1064,21 @@ pub struct PlainLine {
 /// some of the line's words, and the line is [`tokenize`]'s. Of a line of plain words, whether
 /// it is ASCII and, where `crs`, its CRs ([`PlainLine`]), found on the way: a scan of the
 /// line's bytes each saved (the columns given by `at` are the caller's to make right for a
-/// line that is not ASCII).
+/// line that is not ASCII). `walks`: the walks of its plain bracketed words for the LinuxCNC
+/// rules ([`LineWalks`]; its `set` emptied first).
 pub fn plain_line_words<'a>(
     line: &'a [u8],
     dialect: &Dialect,
     words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
     at: impl Fn(usize) -> usize,
     crs: bool,
 ) -> Option<PlainLine> {
+    walks.set = 0;
     if crs {
-        plain_line_words_as::<true>(line, dialect, words, at)
+        plain_line_words_as::<true>(line, dialect, words, walks, at)
     } else {
-        plain_line_words_as::<false>(line, dialect, words, at)
+        plain_line_words_as::<false>(line, dialect, words, walks, at)
     }
 }
 
@@ -1017,6 +1088,7 @@ fn plain_line_words_as<'a, const CRS: bool>(
     line: &'a [u8],
     dialect: &Dialect,
     words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
     at: impl Fn(usize) -> usize,
 ) -> Option<PlainLine> {
     if line.len() > MAX_BLOCK {
@@ -1024,6 +1096,7 @@ fn plain_line_words_as<'a, const CRS: bool>(
     }
     let mut out = WordsOut::<_, CRS> {
         words,
+        walks,
         at,
         ascii: true,
         crs: 0,
@@ -1069,6 +1142,11 @@ fn bracket_word<'a, O: PlainOut<'a>>(
     let n = line.len();
     let mut i = pos + 2;
     let mut depth: u32 = 1;
+    // the walk for the LinuxCNC rules (`O::WALKS`): whether the expression is plain (no
+    // inner bracket, no `/`, no bracket or `/` in a name, at most four names), and its names'
+    // `#` and `>` from the expression's `[` (`pos + 1`)
+    let mut plain = O::WALKS && linuxcnc;
+    let mut walk = ExpressionWalk::default();
     loop {
         // an operand, after its signs
         while i < n && matches!(line[i], b'+' | b'-') {
@@ -1080,6 +1158,7 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                 if depth > BRACKET_DEPTH {
                     return None;
                 }
+                plain = false;
                 i += 1;
                 continue;
             }
@@ -1110,23 +1189,34 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                     }
                 }
                 b'<' if linuxcnc => {
+                    let hash = i;
                     let name = i + 2;
                     i = name;
                     // (the name's bytes or'ed: the one part of the word that may be outside
-                    // ASCII)
+                    // ASCII; their kinds or'ed: a blank, or what makes the walk not plain)
                     let mut bytes = 0u8;
+                    let mut kinds = 0u8;
                     while i < n && line[i] != b'>' {
-                        if blank(line[i]) {
-                            return None;
-                        }
+                        kinds |= NAME_BYTES[usize::from(line[i])];
                         bytes |= line[i];
                         i += 1;
                     }
-                    if i == n || i == name {
+                    if i == n || i == name || kinds & NAME_BLANK != 0 {
                         return None;
                     }
                     if !bytes.is_ascii() {
                         words.not_ascii();
+                    }
+                    if plain {
+                        if kinds != 0 || usize::from(walk.count) == walk.names.len() {
+                            plain = false;
+                        } else {
+                            // (below 65,536: a line is at most MAX_BLOCK bytes, the `[` at
+                            // `pos + 1` at least)
+                            walk.names[usize::from(walk.count)] =
+                                ((hash - pos - 1) as u16, (i - pos - 1) as u16);
+                            walk.count += 1;
+                        }
                     }
                     i += 1;
                 }
@@ -1142,11 +1232,17 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                     depth -= 1;
                     if depth == 0 {
                         let after = words.skip_blanks(line, i);
-                        words.bracketed(line, pos, i);
+                        walk.plain = true;
+                        words.bracketed(line, pos, i, plain.then_some(walk));
                         return Some(after);
                     }
                 }
-                Some(b'+' | b'-' | b'/') => {
+                Some(b'+' | b'-') => {
+                    i += 1;
+                    break;
+                }
+                Some(b'/') => {
+                    plain = false;
                     i += 1;
                     break;
                 }
@@ -1446,6 +1542,7 @@ mod tests {
             });
         }
         let (plain_lines, other_lines) = (std::cell::Cell::new(0), std::cell::Cell::new(0));
+        let walked = std::cell::Cell::new(0);
         let same = |line: &[u8], dialect: &Dialect| {
             let (mut fast, mut full) = (Vec::new(), Vec::new());
             let a = tokenize_as::<true>(line, dialect, &mut fast);
@@ -1464,8 +1561,28 @@ mod tests {
             let at = |offset: usize| 3 * offset + 7;
             // (with the CRs counted or not: the same words, the CRs all the line's)
             let crs = line.len().is_multiple_of(2);
-            if let Some(found) = plain_line_words(line, dialect, &mut words, at, crs) {
+            let mut walks = LineWalks {
+                set: 0xFF,
+                ..LineWalks::default()
+            };
+            if let Some(found) = plain_line_words(line, dialect, &mut words, &mut walks, at, crs) {
                 plain_lines.set(plain_lines.get() + 1);
+                // the walk written of a bracketed word is the check's own walk of its
+                // expression, and a plain one's is written (the other words' bits not set)
+                for (i, w) in words.iter().enumerate().take(WALKED) {
+                    let own = crate::check::walk_expression(w.expression);
+                    let written = walks.set >> i & 1 != 0;
+                    if written {
+                        assert_eq!(walks.walks[i], own, "{:?}", String::from_utf8_lossy(line));
+                        walked.set(walked.get() + 1);
+                    } else {
+                        assert!(
+                            !own.plain || dialect.family != Family::LinuxCnc,
+                            "{:?}: a plain expression not walked",
+                            String::from_utf8_lossy(line)
+                        );
+                    }
+                }
                 let counted = line.iter().filter(|&&c| c == b'\r').count();
                 assert_eq!(
                     found,
@@ -1542,9 +1659,46 @@ mod tests {
         // bracketed words: a letter and `[`, then the characters of an expression
         // bracketed words: a letter and `[`, then the tokens of an expression and its mistakes
         const EXPR: &[&[u8]] = &[
-            b"[", b"[", b"]", b"]", b"]", b"1", b"25.", b".5", b"3.75", b".", b"#1", b"#<a>",
-            b"#<", b"#<>", b"#<a b>", b"#<\xe9>", b"#<a\r>", b"#", b">", b"+", b"-", b"*", b"**",
-            b"/", b" ", b",", b"P1", b"sin", b"AND", b"x", b"=", b"0",
+            b"[",
+            b"[",
+            b"]",
+            b"]",
+            b"]",
+            b"1",
+            b"25.",
+            b".5",
+            b"3.75",
+            b".",
+            b"#1",
+            b"#<a>",
+            b"#<",
+            b"#<>",
+            b"#<a b>",
+            b"#<\xe9>",
+            b"#<a\r>",
+            b"#",
+            b">",
+            b"+",
+            b"-",
+            b"*",
+            b"**",
+            b"/",
+            b" ",
+            b",",
+            b"P1",
+            b"sin",
+            b"AND",
+            b"x",
+            b"=",
+            b"0",
+            b"#<yscale>",
+            b"#<long_name_1>",
+            b"#<a/b>",
+            b"#<a[b>",
+            b"#<a]b>",
+            b"#<_x>",
+            b"#<A>",
+            b"#<a#<b>",
         ];
         let mut line = Vec::new();
         for _ in 0..300_000 / dialects.len() {
@@ -1561,9 +1715,56 @@ mod tests {
             if next().is_multiple_of(2) {
                 line.extend_from_slice(b"]Y1");
             }
+            // (more bracketed words after it: the walks are by the word's place)
+            if next().is_multiple_of(3) {
+                line.extend_from_slice(b" Z[#<zscale>*-27.725]A[#1+#<a>-#<b>*#<c>**#<d>]");
+            }
             for dialect in &dialects {
                 same(&line, dialect);
             }
+        }
+        // well-formed expressions (an operand, then operators and operands), most of them
+        // read by the one pass, so that the walks are asserted on many: named parameters
+        // (short, long, upper case, with a bracket or `/` in the name, more than four),
+        // numbered ones, signs, inner groups, `/` and `**`
+        const OPERANDS: &[&[u8]] = &[
+            b"#<yscale>",
+            b"#<a>",
+            b"#<_x>",
+            b"#<Long_Name_12>",
+            b"#<a/b>",
+            b"#<a[b>",
+            b"#<a]b>",
+            b"#1",
+            b"#31",
+            b"-56.128",
+            b"1.",
+            b".5",
+            b"+2",
+            b"--3",
+            b"[1+#<z>]",
+            b"[#<a>]",
+        ];
+        const OPERATORS: &[&[u8]] = &[b"*", b"*", b"+", b"-", b"/", b"**"];
+        let linuxcnc: Vec<&Dialect> = dialects
+            .iter()
+            .filter(|d| d.family == Family::LinuxCnc)
+            .collect();
+        for _ in 0..60_000 {
+            line.clear();
+            if next().is_multiple_of(3) {
+                line.extend_from_slice(b"G1 ");
+            }
+            for word in 0..1 + next() % 3 {
+                line.extend_from_slice(if word % 2 == 0 { b"Y[" } else { b"z[" });
+                line.extend_from_slice(OPERANDS[(next() % OPERANDS.len() as u64) as usize]);
+                for _ in 0..next() % 6 {
+                    line.extend_from_slice(OPERATORS[(next() % OPERATORS.len() as u64) as usize]);
+                    line.extend_from_slice(OPERANDS[(next() % OPERANDS.len() as u64) as usize]);
+                }
+                line.push(b']');
+            }
+            same(&line, linuxcnc[(next() % linuxcnc.len() as u64) as usize]);
         }
         for _ in 0..1_000_000 / dialects.len() {
             line.clear();
@@ -1577,6 +1778,7 @@ mod tests {
         }
         // both ways are taken, many times
         assert!(plain_lines.get() > 5_000, "{}", plain_lines.get());
+        assert!(walked.get() > 10_000, "{}", walked.get());
         assert!(other_lines.get() > 50_000, "{}", other_lines.get());
     }
 

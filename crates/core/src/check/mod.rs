@@ -47,6 +47,8 @@ mod reach;
 mod reference;
 mod shapes;
 mod structure;
+#[cfg(test)]
+pub(crate) use structure::walk_expression;
 mod targets;
 mod tooling;
 mod words;
@@ -856,6 +858,12 @@ pub struct Checker {
     /// plain bracketed expression (which holds no `/`), and the block's count
     /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
     linuxcnc_plain_words: (usize, u8),
+    /// The walks the tokenizer made of the last line of plain words' bracketed words
+    /// (`tokenizer::LineWalks`), for the LinuxCNC rules of its block, and that line's text
+    /// (its address and length), set while that block is checked (else (0, 0)): a block of
+    /// another text, or one given by other means, walks its words itself.
+    line_walks: crate::tokenizer::LineWalks,
+    line_walks_of: (usize, usize),
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
     /// inside one runs depends on values the checker does not follow, so what rs274 refuses
@@ -1020,6 +1028,8 @@ impl Checker {
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_plain_words: (0, 0),
+            line_walks: crate::tokenizer::LineWalks::default(),
+            line_walks_of: (0, 0),
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
@@ -1132,7 +1142,9 @@ impl Checker {
         // for one that is not -- a LinuxCNC parameter's name outside ASCII)
         let mut words: Vec<Word<'a>> = recycle(std::mem::take(&mut self.words_buffer));
         let tv = self.config.tv_check;
-        if let Some(plain) = plain_line_words(text, dialect, &mut words, |o| o + 1, tv) {
+        let walks = &mut self.line_walks;
+        if let Some(plain) = plain_line_words(text, dialect, &mut words, walks, |o| o + 1, tv) {
+            self.line_walks_of = (text.as_ptr() as usize, text.len());
             let ascii = plain.ascii;
             if !ascii {
                 for w in &mut words {
@@ -1157,6 +1169,8 @@ impl Checker {
                 tokens.clear();
             }
             self.check_words(text, line, ascii, plain.crs, words, None);
+            // (read by this line's block alone: a block given by other means walks its own)
+            self.line_walks_of = (0, 0);
             return;
         }
         words.clear();

@@ -17,6 +17,19 @@ impl Checker {
         if self.config.family == Family::Sinumerik {
             return self.sinumerik_constant(expression);
         }
+        // a named parameter with more after it in brackets (`[#<yscale>*-3.608]`, two in
+        // every line of a CAM program scaling its axes by parameters): no parameter alone,
+        // without the readings below
+        if let [b'[', b'#', b'<', .., last, b']'] = expression {
+            if *last != b'>' {
+                return None;
+            }
+        }
+        self.constant_read(expression)
+    }
+
+    /// [`Checker::constant`] but a SINUMERIK's, read in full.
+    fn constant_read(&self, expression: &[u8]) -> Option<Dec> {
         let (negative, rest) = match expression.first() {
             Some(b'-') => (true, &expression[1..]),
             Some(b'+') => (false, &expression[1..]),
@@ -442,6 +455,72 @@ mod tests {
     use super::super::testing::{fired, of_family, program};
     use crate::lex::Family;
     use crate::rules::Rule;
+
+    /// `constant`'s first look (a named parameter with more after it in brackets is no
+    /// parameter alone) against its full reading, on every family but SINUMERIK's (whose
+    /// reading is its own) and on drawn expressions of the pieces a value is written with:
+    /// brackets, signs, named and numbered parameters (known ones among them: `#<a>`, `#1`),
+    /// numbers, operators, `>` and blanks.
+    #[test]
+    fn a_bracketed_expression_is_no_constant_as_its_full_reading_finds() {
+        use super::super::Checker;
+        use crate::decimal::Dec;
+        const PIECES: &[&[u8]] = &[
+            b"[",
+            b"]",
+            b"#<",
+            b">",
+            b"#<a>",
+            b"#<A>",
+            b"#<yscale>",
+            b"#1",
+            b"#",
+            b"-",
+            b"+",
+            b"*",
+            b"2",
+            b".5",
+            b" ",
+            b"a",
+            b"Q1",
+            b"R2",
+            b"P3",
+        ];
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let mut some = 0;
+        for family in Family::ALL {
+            if family == Family::Sinumerik {
+                continue;
+            }
+            let config = std::sync::Arc::new(of_family(family));
+            let mut checker = Checker::new(config, crate::rules::Selection::all(), false);
+            for name in [&b"#<a>"[..], b"#1", b"Q1", b"R2", b"P3"] {
+                checker.params.insert(name.to_vec(), Dec::from_int(25));
+            }
+            let mut text = Vec::new();
+            for _ in 0..40_000 {
+                text.clear();
+                if next().is_multiple_of(2) {
+                    text.extend_from_slice(b"[#<");
+                }
+                for _ in 0..next() % 6 {
+                    text.extend_from_slice(PIECES[(next() % PIECES.len() as u64) as usize]);
+                }
+                if next().is_multiple_of(2) {
+                    text.push(b']');
+                }
+                let fast = checker.constant(&text);
+                assert_eq!(
+                    fast,
+                    checker.constant_read(&text),
+                    "{family:?} {:?}",
+                    String::from_utf8_lossy(&text)
+                );
+                some += usize::from(fast.is_some());
+            }
+        }
+        assert!(some > 100, "{some}");
+    }
 
     /// Where the feed of the last block is found too high (TG602, or TG605 where a FANUC
     /// clamps it: 999.9 at most) and where it is a value the checker cannot evaluate (TG141).

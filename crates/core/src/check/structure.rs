@@ -34,25 +34,10 @@ fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
 }
 
 /// The words of a block walked by [`walk_expression`] (a word after them is read by each
-/// rule's own walk).
-pub(super) const WALKED: usize = 8;
-
-/// What one walk of a LinuxCNC word's expression finds for the three rules that read its
-/// bytes: the bare-operator refusal (`between::bare_operator`), the named parameters' reads
-/// (`linuxcnc_undefined_read`) and the read-refusal's test for a `/` (`linuxcnc_refusals`).
-/// A CAM program's `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]` was walked three times a word.
-#[derive(Clone, Copy, Default)]
-pub(super) struct ExpressionWalk {
-    /// The expression is one pair of brackets with no other bracket, no `/` and no letter
-    /// outside a named parameter's name (`[#<yscale>*-3.608]`, `[#1+2.5]`): its first `[`
-    /// closes at its last byte, and it has no `/`. False: each rule walks it itself.
-    pub plain: bool,
-    /// How many of `names` are found.
-    pub count: u8,
-    /// Each named parameter's `#` and its `>`, as `linuxcnc_undefined_read` finds them in
-    /// their order.
-    pub names: [(u16, u16); 4],
-}
+/// rule's own walk), and what one walk finds: the tokenizer's ([`crate::tokenizer::WALKED`],
+/// [`ExpressionWalk`]), which writes the same walk of a plain line's bracketed words as it
+/// scans them.
+pub(super) use crate::tokenizer::{ExpressionWalk, WALKED};
 
 /// No word walked: each rule reads a word's expression itself.
 const NOT_WALKED: [ExpressionWalk; WALKED] = [ExpressionWalk {
@@ -92,7 +77,7 @@ fn equal_bytes(chunk: u64, byte: u8) -> u64 {
 /// bracketed one, and its named parameters. It stops at the first byte of another kind (a
 /// function, a comparison, a `/`, a bracket inside): such an expression is read by each rule
 /// as before.
-pub(super) fn walk_expression(expression: &[u8]) -> ExpressionWalk {
+pub(crate) fn walk_expression(expression: &[u8]) -> ExpressionWalk {
     let mut walk = ExpressionWalk::default();
     let n = expression.len();
     if n < 2 || n > usize::from(u16::MAX) || expression[0] != b'[' || expression[n - 1] != b']' {
@@ -1029,8 +1014,19 @@ impl Checker {
     fn linuxcnc_walk_words(&mut self, b: &BlockView<'_>) -> [ExpressionWalk; WALKED] {
         let mut walks = [ExpressionWalk::default(); WALKED];
         let mut plain = 0u8;
+        // (the tokenizer's walks of the words of this block's line, where it was a line of
+        // plain words: a debug build walks them again and asserts the same)
+        let written = if self.line_walks_of == (b.text.as_ptr() as usize, b.text.len()) {
+            self.line_walks.set
+        } else {
+            0
+        };
         for (i, w) in b.words.iter().take(WALKED).enumerate() {
-            if !w.expression.is_empty() {
+            if written >> i & 1 != 0 {
+                walks[i] = self.line_walks.walks[i];
+                debug_assert_eq!(walks[i], walk_expression(w.expression), "line {}", b.line);
+                plain |= 1 << i;
+            } else if !w.expression.is_empty() {
                 walks[i] = walk_expression(w.expression);
                 plain |= u8::from(walks[i].plain) << i;
             }

@@ -861,14 +861,24 @@ impl Checker {
         // checks for it and asserts they agree.
         let plain = |m: i64| matches!(m, 0 | 10 | 20 | 30);
         let has = |l: u8| first[usize::from(l - b'A')] != 0;
+        // (the letters from the block's own mask, `Checker::letters`: one test, not a look
+        // at `first` for each)
+        let letters = |ls: &[u8]| ls.iter().fold(0u32, |m, &l| m | 1 << (l - b'A'));
+        let dehlpqt = letters(b"DEHLPQT");
+        debug_assert_eq!(
+            self.letters & dehlpqt != 0,
+            b"DEHLPQT".iter().any(|&l| has(l))
+        );
+        debug_assert_eq!(
+            self.letters & letters(b"IJKR") != 0,
+            b"IJKR".iter().any(|&l| has(l))
+        );
         if m_words == 0
             && !g_unread
             && !dollar
             && read_refusal.is_none()
             && codes.iter().all(|&c| plain(c))
-            && ![b'D', b'E', b'H', b'L', b'P', b'Q', b'T']
-                .iter()
-                .any(|&l| has(l))
+            && self.letters & dehlpqt == 0
         {
             let given = codes.first().copied();
             let runs = given.or(match self.linuxcnc_motion {
@@ -878,7 +888,7 @@ impl Checker {
             // an arc's centre and radius words with a straight move, or with none, are
             // refused (check_other_codes): the full path says so
             let arc_words_used =
-                matches!(runs, Some(20 | 30)) || ![b'I', b'J', b'K', b'R'].iter().any(|&l| has(l));
+                matches!(runs, Some(20 | 30)) || self.letters & letters(b"IJKR") == 0;
             if runs.is_none_or(plain) && arc_words_used {
                 #[cfg(debug_assertions)]
                 {
@@ -1171,6 +1181,42 @@ impl Checker {
     /// followed until an absolute word.
     #[inline(never)]
     pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
+        let state = &self.machine.state;
+        let taken = self.machine.taken();
+        let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
+        // (absolute positions of a move outside a NURBS list, most of a CAM program's blocks:
+        // an axis the block names, or whose point is not known, holds the nearest double; one
+        // it leaves, its double unless its point changed -- the loop below's answers for them)
+        if !state.incremental && moves && self.linuxcnc_motion != LinuxCncMotion::Known(Some(52)) {
+            #[cfg(debug_assertions)]
+            let double = self.linuxcnc_double;
+            for k in 0..3 {
+                let now = state.position[k];
+                if now.is_none() || self.values.has(crate::modal::AXES[k]) {
+                    self.linuxcnc_double[k] = Double::Nearest;
+                } else if before.xyz[k] != now {
+                    self.linuxcnc_double[k] = Double::Unknown;
+                }
+            }
+            #[cfg(debug_assertions)]
+            {
+                let fast = self.linuxcnc_double;
+                self.linuxcnc_double = double;
+                self.linuxcnc_doubles_read(before);
+                // (as their bits: a double held as NaN is the same double)
+                debug_assert_eq!(
+                    format!("{fast:?}"),
+                    format!("{:?}", self.linuxcnc_double),
+                    "the doubles' fast path"
+                );
+            }
+            return;
+        }
+        self.linuxcnc_doubles_read(before);
+    }
+
+    /// [`Checker::linuxcnc_doubles`] of any block, axis by axis.
+    fn linuxcnc_doubles_read(&mut self, before: &Before) {
         let state = &self.machine.state;
         let plain = matches!(
             self.linuxcnc_motion,
