@@ -5088,12 +5088,15 @@ impl Converter {
         // profile's characters are Annex A's and those it adds): its control refuses the word,
         // as tapegate's check on the target profile does (TG101, TG100)
         // (a target that reads all three, most conversions, looks at no word's characters)
+        // (a token is bytes of the line, as written or without its blanks: a line that holds
+        // none of the characters the target does not read has no word that does, found by one
+        // search of the line instead of a look at every word's bytes)
         let reads = &self.c.target_dialect;
-        let all = reads.hash && reads.brackets && reads.star;
+        let look = !(reads.hash && reads.brackets && reads.star) && unread_in_line(b.text, reads);
         if let Some((w, at)) = b
             .words
             .iter()
-            .filter(|_| !all)
+            .filter(|_| look)
             .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
         {
             if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
@@ -7758,6 +7761,14 @@ fn unread_character(token: &[u8], reads: &crate::lex::Dialect) -> Option<usize> 
     })
 }
 
+/// Whether `line` holds a character `reads` does not read (a `#`, `[`, `]` or `*`: see
+/// [`unread_character`]), by a search of the line for each kind the dialect lacks.
+fn unread_in_line(line: &[u8], reads: &crate::lex::Dialect) -> bool {
+    (!reads.hash && memchr::memchr(b'#', line).is_some())
+        || (!reads.brackets && memchr::memchr2(b'[', b']', line).is_some())
+        || (!reads.star && memchr::memchr(b'*', line).is_some())
+}
+
 /// Whether a statement holds lengths by the roles of its words, with no `=` or brackets to
 /// show them: a FANUC or Haas corner (`,C2.`), an Okuma OSP hole pattern (`BHC X100 ...`).
 /// The units flow refuses one read where the units are not known, as it does a length word.
@@ -8905,6 +8916,78 @@ mod tests {
             }
         }
         assert!(marked > 10_000, "{marked}");
+    }
+
+    /// The target dialect's look at a block's words for a character it does not read
+    /// ([`Converter::statements`]) is made only where the line holds one
+    /// ([`unread_in_line`]): on 300,000 drawn lines under every family's dialect, each of the
+    /// eight targets that lack some of `#`, `[ ]`, `*`, no word of a line the search passes
+    /// over holds such a character, and the first word found is the one the look at every
+    /// word finds.
+    #[test]
+    fn a_word_holds_a_character_the_target_does_not_read_only_where_its_line_does() {
+        const BYTES: &[u8] = b"XGNRPo#$=+-.019 \t[]()<>*/;:_AMLS";
+        const PIECES: [&str; 14] = [
+            "X1.5 ",
+            "#1=2 ",
+            "X#1 ",
+            "#<a> ",
+            "G1 ",
+            "R1=#2 ",
+            " ",
+            "N10 ",
+            "X[#1+2] ",
+            "X[2*3] ",
+            "(c#*) ",
+            ";c[",
+            "IF [#1 GT 2] ",
+            "Y2*3 ",
+        ];
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
+        let (mut found, mut passed) = (0, 0);
+        for _ in 0..300_000 {
+            let len = 1 + (next() % 24) as usize;
+            let line: Vec<u8> = if next().is_multiple_of(2) {
+                (0..len)
+                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
+                    .collect()
+            } else {
+                (0..len / 3 + 1)
+                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                    .collect()
+            };
+            let dialect = &dialects[(next() % dialects.len() as u64) as usize];
+            let mut tokens = Vec::new();
+            if tokenize(&line, dialect, &mut tokens).is_err() {
+                continue;
+            }
+            let lacks = 1 + next() % 7; // which of the three the target does not read
+            let mut reads = dialects[(next() % dialects.len() as u64) as usize];
+            reads.hash = lacks & 1 == 0;
+            reads.brackets = lacks & 2 == 0;
+            reads.star = lacks & 4 == 0;
+            let every = tokens
+                .iter()
+                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+            let look = unread_in_line(&line, &reads);
+            let searched = tokens
+                .iter()
+                .filter(|_| look)
+                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+            assert_eq!(
+                searched,
+                every,
+                "{:?} {reads:?}",
+                String::from_utf8_lossy(&line)
+            );
+            if every.is_some() {
+                found += 1;
+            } else if !look {
+                passed += 1;
+            }
+        }
+        assert!(found > 10_000 && passed > 10_000, "{found} {passed}");
     }
 
     /// [`units_flag_read`] of a LinuxCNC word, which compares the names in either case in
