@@ -9015,10 +9015,10 @@ mod tests {
 
     /// The target dialect's look at a block's words for a character it does not read
     /// ([`Converter::statements`]) is made only where the line holds one
-    /// ([`unread_in_line`]): on 300,000 drawn lines under every family's dialect, each of the
-    /// eight targets that lack some of `#`, `[ ]`, `*`, no word of a line the search passes
-    /// over holds such a character, and the first word found is the one the look at every
-    /// word finds.
+    /// ([`unread_in_line`]): on 300,000 drawn lines under every family's dialect, for targets
+    /// lacking each of the seven choices of `#`, `[ ]`, `*`, no word of a line the search
+    /// passes over holds such a character, and the first word found is the one the look at
+    /// every word finds.
     #[test]
     fn a_word_holds_a_character_the_target_does_not_read_only_where_its_line_does() {
         const BYTES: &[u8] = b"XGNRPo#$=+-.019 \t[]()<>*/;:_AMLS";
