@@ -837,6 +837,9 @@ pub struct Converter {
     spans: Vec<WordSpan<'static>>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
+    /// Each address's place in [`Converter::worst`], plus one (0: none yet): every rounded
+    /// word looks its address up, a lookup instead of a walk of the list.
+    worst_at: [u16; 256],
     pub blocks: usize,
     pub words: usize,
     pub changed: usize,
@@ -1276,6 +1279,7 @@ impl Converter {
             spare: Vec::new(),
             replacements: Vec::new(),
             worst: Vec::new(),
+            worst_at: [0; 256],
             blocks: 0,
             words: 0,
             changed: 0,
@@ -5081,13 +5085,7 @@ impl Converter {
                     Some(false) => ends = Some(text(statement)),
                     None => {}
                 },
-                Family::Sinumerik
-                    if statement
-                        .split(|&c| crate::lex::blank(c))
-                        .filter(|w| !w.is_empty())
-                        .map(<[u8]>::to_ascii_lowercase)
-                        .eq([b"ret".to_vec()]) =>
-                {
+                Family::Sinumerik if sinumerik_ret(statement) => {
                     ends = Some("RET".to_string());
                 }
                 _ => {}
@@ -5140,20 +5138,23 @@ impl Converter {
         // profile's characters are Annex A's and those it adds): its control refuses the word,
         // as tapegate's check on the target profile does (TG101, TG100)
         // (a target that reads all three, most conversions, looks at no word's characters)
+        // (a token is bytes of the line, as written or without its blanks: a line that holds
+        // none of the characters the target does not read has no word that does, found by one
+        // search of the line instead of a look at every word's bytes)
         let reads = &self.c.target_dialect;
-        let all = reads.hash && reads.brackets && reads.star;
+        let look = !(reads.hash && reads.brackets && reads.star) && unread_in_line(b.text, reads);
         // a statement of the same family (a Fanuc's IF[#1EQ0]GOTO10, WHILE[#1LT10]DO1) with
         // such a character is a macro statement the target control does not read: refused at
         // that character, where no word before it in the block is (review 26, finding 4)
         let first_word = b
             .words
             .iter()
-            .filter(|_| !all)
+            .filter(|_| look)
             .find_map(|w| unread_character(w.token, reads).map(|at| w.start + at));
         if let Some((offset, statement, at)) = b
             .statements
             .iter()
-            .filter(|_| !all)
+            .filter(|_| look)
             .find_map(|&(offset, _, statement)| {
                 unread_character(statement, reads).map(|at| (offset, statement, at))
             })
@@ -5182,7 +5183,7 @@ impl Converter {
         if let Some((w, at)) = b
             .words
             .iter()
-            .filter(|_| !all)
+            .filter(|_| look)
             .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
         {
             if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
@@ -5995,7 +5996,10 @@ impl Converter {
         )?;
         let fmt = self.out_format(format_letter, dwell_word);
         let after = fmt.after;
-        let limit = pow10(fmt.width())?;
+        let limit = match SMALL_POW10.get(fmt.width() as usize) {
+            Some(&p) => i128::from(p),
+            None => pow10(fmt.width())?,
+        };
         let uw = self.c.lathe
             && matches!(self.c.family, Family::MacroB | Family::Okuma)
             && matches!(letter, b'U' | b'W')
@@ -6015,7 +6019,7 @@ impl Converter {
             let u = self.tracked(letter, on, negative, m, scale, factor, after, set_position)?;
             if self.rounded && on != letter {
                 // the position of X Z is as far off as the U W that moved it
-                if let Some(&(_, e, d)) = self.worst.iter().find(|w| w.0 == letter) {
+                if let Some((_, e, d)) = self.worst_entry(letter) {
                     self.record(on, e, d, 0);
                 }
             }
@@ -6587,8 +6591,8 @@ impl Converter {
         match small.or_else(|| pow10(after).ok().and_then(|p| d.checked_mul(p))) {
             Some(whole) => {
                 // most roundings are no larger than the worst one kept: no reduction for those
-                let kept = self.worst.iter().find(|(l, _, _)| *l == letter);
-                if let Some(&(_, we, wd)) = kept {
+                let kept = self.worst_entry(letter);
+                if let Some((_, we, wd)) = kept {
                     if no_larger(e, whole, we, wd) == Some(true) {
                         return;
                     }
@@ -6616,13 +6620,26 @@ impl Converter {
             (Some(a), Some(b)) => a > b,
             _ => (e as f64 / d as f64) > (we as f64 / wd as f64),
         };
-        match self.worst.iter_mut().find(|(l, _, _)| *l == letter) {
-            Some(entry) => {
+        match self.worst_at[usize::from(letter)] {
+            0 => {
+                self.worst.push((letter, e, d));
+                // (a place of at most 256, one an address)
+                self.worst_at[usize::from(letter)] = self.worst.len() as u16;
+            }
+            at => {
+                let entry = &mut self.worst[usize::from(at) - 1];
                 if bigger((entry.1, entry.2)) {
                     *entry = (letter, e, d);
                 }
             }
-            None => self.worst.push((letter, e, d)),
+        }
+    }
+
+    /// The largest rounding kept for `letter` ([`Converter::worst`]).
+    fn worst_entry(&self, letter: u8) -> Option<(u8, i128, i128)> {
+        match self.worst_at[usize::from(letter)] {
+            0 => None,
+            at => self.worst.get(usize::from(at) - 1).copied(),
         }
     }
 
@@ -7847,6 +7864,26 @@ fn unread_character(token: &[u8], reads: &crate::lex::Dialect) -> Option<usize> 
     })
 }
 
+/// Whether a SINUMERIK statement is `RET` alone (in either case, blanks around it): compared
+/// in place, no lower-case copy of each piece made (a statement a block on some programs).
+fn sinumerik_ret(statement: &[u8]) -> bool {
+    let mut pieces = statement
+        .split(|&c| crate::lex::blank(c))
+        .filter(|w| !w.is_empty());
+    pieces
+        .next()
+        .is_some_and(|w| w.eq_ignore_ascii_case(b"ret"))
+        && pieces.next().is_none()
+}
+
+/// Whether `line` holds a character `reads` does not read (a `#`, `[`, `]` or `*`: see
+/// [`unread_character`]), by a search of the line for each kind the dialect lacks.
+fn unread_in_line(line: &[u8], reads: &crate::lex::Dialect) -> bool {
+    (!reads.hash && memchr::memchr(b'#', line).is_some())
+        || (!reads.brackets && memchr::memchr2(b'[', b']', line).is_some())
+        || (!reads.star && memchr::memchr(b'*', line).is_some())
+}
+
 /// Whether a statement holds lengths by the roles of its words, with no `=` or brackets to
 /// show them: a FANUC or Haas corner (`,C2.`), an Okuma OSP hole pattern (`BHC X100 ...`).
 /// The units flow refuses one read where the units are not known, as it does a length word.
@@ -8994,6 +9031,192 @@ mod tests {
             }
         }
         assert!(marked > 10_000, "{marked}");
+    }
+
+    /// [`sinumerik_ret`] finds the `RET` statements the lower-case copy of each piece found:
+    /// 200,000 drawn statements of `R`, `E`, `T`, `r`, `e`, `t`, blanks, tabs and other bytes
+    /// (and whole `RET`s among them), against that reading.
+    #[test]
+    fn a_sinumerik_ret_is_found_as_the_lower_case_copies_found_it() {
+        fn reference(statement: &[u8]) -> bool {
+            statement
+                .split(|&c| crate::lex::blank(c))
+                .filter(|w| !w.is_empty())
+                .map(<[u8]>::to_ascii_lowercase)
+                .eq([b"ret".to_vec()])
+        }
+        const BYTES: &[u8] = b"RETret \t=1X;";
+        const PIECES: [&str; 5] = ["RET", " ret ", "Ret\t", "RETX", " "];
+        let mut next = crate::drawn::xorshift(0x0DDB_1A5E_5BAD_5EED);
+        let mut found = 0;
+        for _ in 0..200_000 {
+            let len = (next() % 9) as usize;
+            let statement: Vec<u8> = if next().is_multiple_of(2) {
+                (0..len)
+                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
+                    .collect()
+            } else {
+                (0..len / 3 + 1)
+                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                    .collect()
+            };
+            let ret = reference(&statement);
+            assert_eq!(
+                sinumerik_ret(&statement),
+                ret,
+                "{:?}",
+                String::from_utf8_lossy(&statement)
+            );
+            found += usize::from(ret);
+        }
+        assert!(found > 10_000, "{found}");
+    }
+
+    /// [`Converter::record`]'s lookup of an address's largest rounding by its place
+    /// ([`Converter::worst_at`]) keeps the list the walk of it kept: 200,000 drawn roundings
+    /// (any byte as the address, errors and denominators of up to 90 bits, 0-30 decimals)
+    /// against the list by the old walk, the same in order, entries and values.
+    #[test]
+    fn the_largest_rounding_per_address_is_kept_as_the_walk_of_the_list_kept_it() {
+        fn reference(worst: &mut Vec<(u8, i128, i128)>, letter: u8, e: i128, d: i128, after: u32) {
+            let (mut e, mut d) = (e, d);
+            let small = u64::try_from(d)
+                .ok()
+                .zip(SMALL_POW10.get(after as usize))
+                .and_then(|(d, &p)| d.checked_mul(p))
+                .map(i128::from);
+            match small.or_else(|| pow10(after).ok().and_then(|p| d.checked_mul(p))) {
+                Some(whole) => {
+                    if let Some(&(_, we, wd)) = worst.iter().find(|w| w.0 == letter) {
+                        if no_larger(e, whole, we, wd) == Some(true) {
+                            return;
+                        }
+                    }
+                    let g = gcd(e, whole);
+                    (e, d) = (e / g, whole / g);
+                }
+                None => {
+                    let mut after = after;
+                    while after > 0 {
+                        match d.checked_mul(10) {
+                            Some(next) => {
+                                d = next;
+                                after -= 1;
+                            }
+                            None => break,
+                        }
+                        let g = gcd(e, d);
+                        (e, d) = (e / g, d / g);
+                    }
+                }
+            }
+            let bigger = |(we, wd): (i128, i128)| match (e.checked_mul(wd), we.checked_mul(d)) {
+                (Some(a), Some(b)) => a > b,
+                _ => (e as f64 / d as f64) > (we as f64 / wd as f64),
+            };
+            match worst.iter_mut().find(|w| w.0 == letter) {
+                Some(entry) => {
+                    if bigger((entry.1, entry.2)) {
+                        *entry = (letter, e, d);
+                    }
+                }
+                None => worst.push((letter, e, d)),
+            }
+        }
+        let mut next = crate::drawn::xorshift(0x1234_5678_9ABC_DEF1);
+        for round in 0..20 {
+            let mut converter = Converter::new(fanuc(false));
+            let mut kept = Vec::new();
+            // (a few addresses in most rounds, as a program has; any byte in some)
+            let addresses = if round % 4 == 0 {
+                256
+            } else {
+                1 + round as u64
+            };
+            for _ in 0..10_000 {
+                let letter = (next() % addresses) as u8 ^ if round % 4 == 0 { 0 } else { b'A' };
+                let bits = 1 + next() % 90;
+                let d =
+                    (1 + i128::from(next()) % (1i128 << bits.min(62))) << bits.saturating_sub(62);
+                let e = i128::from(next()) % d;
+                let after = (next() % 31) as u32;
+                converter.record(letter, e, d, after);
+                reference(&mut kept, letter, e, d, after);
+            }
+            assert_eq!(converter.worst, kept, "round {round}");
+        }
+    }
+
+    /// The target dialect's look at a block's words for a character it does not read
+    /// ([`Converter::statements`]) is made only where the line holds one
+    /// ([`unread_in_line`]): on 300,000 drawn lines under every family's dialect, for targets
+    /// lacking each of the seven choices of `#`, `[ ]`, `*`, no word of a line the search
+    /// passes over holds such a character, and the first word found is the one the look at
+    /// every word finds.
+    #[test]
+    fn a_word_holds_a_character_the_target_does_not_read_only_where_its_line_does() {
+        const BYTES: &[u8] = b"XGNRPo#$=+-.019 \t[]()<>*/;:_AMLS";
+        const PIECES: [&str; 14] = [
+            "X1.5 ",
+            "#1=2 ",
+            "X#1 ",
+            "#<a> ",
+            "G1 ",
+            "R1=#2 ",
+            " ",
+            "N10 ",
+            "X[#1+2] ",
+            "X[2*3] ",
+            "(c#*) ",
+            ";c[",
+            "IF [#1 GT 2] ",
+            "Y2*3 ",
+        ];
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
+        let (mut found, mut passed) = (0, 0);
+        for _ in 0..300_000 {
+            let len = 1 + (next() % 24) as usize;
+            let line: Vec<u8> = if next().is_multiple_of(2) {
+                (0..len)
+                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
+                    .collect()
+            } else {
+                (0..len / 3 + 1)
+                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                    .collect()
+            };
+            let dialect = &dialects[(next() % dialects.len() as u64) as usize];
+            let mut tokens = Vec::new();
+            if tokenize(&line, dialect, &mut tokens).is_err() {
+                continue;
+            }
+            let lacks = 1 + next() % 7; // which of the three the target does not read
+            let mut reads = dialects[(next() % dialects.len() as u64) as usize];
+            reads.hash = lacks & 1 == 0;
+            reads.brackets = lacks & 2 == 0;
+            reads.star = lacks & 4 == 0;
+            let every = tokens
+                .iter()
+                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+            let look = unread_in_line(&line, &reads);
+            let searched = tokens
+                .iter()
+                .filter(|_| look)
+                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+            assert_eq!(
+                searched,
+                every,
+                "{:?} {reads:?}",
+                String::from_utf8_lossy(&line)
+            );
+            if every.is_some() {
+                found += 1;
+            } else if !look {
+                passed += 1;
+            }
+        }
+        assert!(found > 10_000 && passed > 10_000, "{found} {passed}");
     }
 
     /// [`units_flag_read`] of a LinuxCNC word, which compares the names in either case in
