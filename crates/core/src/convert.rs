@@ -238,10 +238,11 @@ pub struct ConvertConfig {
     /// mill profile in G8's radius reading, an ISO 6983-1 mill): an X word is refused
     /// ([`Converter::same_x_reading`]).
     pub x_radius: bool,
-    /// The source's reset state feeds per revolution (a FANUC or Haas lathe's G99), the
-    /// target's per minute (G94): an F word with no feed mode code written before it is
-    /// refused ([`Converter::reset_feed_mode`]).
-    pub reset_feed_per_rev: bool,
+    /// The feed modes of the source's and the target's reset states where they differ
+    /// (`machine::reset_feed`: 94 per minute, 95 per revolution): a FANUC or Haas lathe's G99
+    /// for a mill or LinuxCNC (G94), and the other way. An F word with no feed mode code both
+    /// read alike written before it is refused ([`Converter::reset_feed_mode`]).
+    pub reset_feed: Option<[i64; 2]>,
     /// The source's control skips the text after the first `%` (a FANUC), the target's reader
     /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
     /// ([`percent_words`]).
@@ -3869,23 +3870,62 @@ impl Converter {
         })
     }
 
-    /// An F word read by the source's reset feed mode, per revolution (a FANUC or Haas
-    /// lathe's G99: fanuc-lathe's and haas-lathe's `reset`; FANUC 0i-TF B-64604EN "Feed per
-    /// revolution"), for a target whose reset feeds per minute (G94): carried, `F0.2` is 0.2
-    /// mm/min there. An explicit G99 is refused by the codes' meanings, a G95 both read alike
-    /// is carried; with neither written before it, the conversion stops at the first F word
-    /// (a G65/G66 macro call's F is its argument #9).
+    /// An F word read by the source's reset feed mode where the target's reset feeds by
+    /// another (`ConvertConfig::reset_feed`): per revolution on a FANUC or Haas lathe (its
+    /// G99; FANUC 0i-TF B-64604EN "Feed per revolution"), per minute on a mill or LinuxCNC
+    /// (G94), on an ISO 6983-1 control by clause 14 (G94, a lathe too: 14.4). Carried, `F0.2`
+    /// mm/rev is 0.2 mm/min on the target, a mill's `F20.` in/min 20 in/rev on the lathe. A
+    /// feed mode code written before the F is carried where the target reads its number as
+    /// the same mode (a system B lathe's G95 for LinuxCNC), and refused at the code where it
+    /// does not (a system A lathe's G99 is unassigned in ISO 6983-1's table; the codes'
+    /// meanings refuse it for a mill first); with none written, the conversion stops at the
+    /// first F word (a G65/G66 macro call's F is its argument #9).
     fn reset_feed_mode(&mut self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
-        if !self.c.reset_feed_per_rev || self.feed_mode_written {
+        let Some([source, target]) = self.c.reset_feed else {
+            return Ok(());
+        };
+        if self.feed_mode_written {
             return Ok(());
         }
         let lathe = self.c.src_modal.fanuc_lathe;
-        if gs
-            .iter()
-            .any(|&g| matches!(g, 93..=95) && !lathe || matches!(g, 98 | 99) && lathe)
-        {
-            self.feed_mode_written = true;
-            return Ok(());
+        let name = |mode: i64| match mode {
+            95 => "per revolution",
+            93 => "by inverse time",
+            _ => "per minute",
+        };
+        for &g in gs {
+            let Some(mode) = crate::machine::feed_mode_code(lathe, g) else {
+                continue;
+            };
+            if self.target_feed_mode(g) == Some(mode) {
+                self.feed_mode_written = true;
+                return Ok(());
+            }
+            let w = b
+                .words
+                .iter()
+                .find(|w| {
+                    w.token[0].eq_ignore_ascii_case(&b'G')
+                        && self
+                            .code_of(w.token)
+                            .is_some_and(|n| self.c.src_modal.read_g(n) == g)
+                })
+                .or_else(|| first_word(b, b'G'));
+            let at = w.map_or(1, |w| crate::text::column(b.text, w.start));
+            let code = w.map_or_else(|| format!("G{g}"), |w| text(w.token));
+            return Err(ConvertError {
+                message: format!(
+                    "{code}: the source's code of feed {}, whose number the target reads as \
+                     another code or none (its reset feeds {}), so the F words after it would \
+                     be read otherwise; tapegate does not write the feed mode, so the program \
+                     cannot be converted to this target as it stands: write it for the target",
+                    name(mode),
+                    name(target)
+                ),
+                clause: "profile",
+                column: at,
+                line: None,
+            });
         }
         if whole_g_code(b, &[65, 66]) {
             return Ok(());
@@ -3893,18 +3933,57 @@ impl Converter {
         let Some(w) = first_word(b, b'F') else {
             return Ok(());
         };
+        // the code the source writes for its reset mode, where the target reads it alike
+        let code = if lathe {
+            let a = if source == 95 { 99 } else { 98 };
+            self.c.src_modal.g_system.from_a(a)
+        } else {
+            Some(source)
+        };
+        let advice = match code
+            .filter(|&c| self.target_feed_mode(self.c.src_modal.read_g(c)) == Some(source))
+        {
+            Some(c) => {
+                format!("write G{c} before the first F in the source (both controls read it so)")
+            }
+            None => "the source's code of that mode is another code (or none) on the target, so \
+                     the program cannot be converted to this target as it stands: write it for \
+                     the target"
+                .to_string(),
+        };
         Err(ConvertError {
             message: format!(
-                "{}: a feed per revolution by the source control's reset state (no feed mode \
-                 code written before it), where the target's reset feeds per minute, so the \
-                 feed would be another; tapegate does not write the feed mode: write G99 (or \
-                 G95) in the source, or the feed per minute",
-                text(w.token)
+                "{}: a feed {} by the source control's reset state (no feed mode code written \
+                 before it), where the target's reset feeds {}, so the feed would be another; \
+                 tapegate does not write the feed mode: {advice}",
+                text(w.token),
+                name(source),
+                name(target)
             ),
             clause: "profile",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
+    }
+
+    /// The feed mode (`machine::feed_mode_code`) the target reads the source's code `g` (by
+    /// the source's system A number) as, written as the conversion writes it: between two
+    /// FANUC lathes of different G code systems by the target's number of the function, else
+    /// by the number written.
+    fn target_feed_mode(&self, g: i64) -> Option<i64> {
+        let lathe = self.c.src_modal.fanuc_lathe;
+        if self.renumbers() {
+            return crate::machine::feed_mode_code(true, g);
+        }
+        let written = if lathe {
+            self.c.src_modal.g_system.from_a(g)?
+        } else {
+            g
+        };
+        match self.c.target_g_system {
+            Some(system) => crate::machine::feed_mode_code(true, system.to_a(written)),
+            None => crate::machine::feed_mode_code(false, written),
+        }
     }
 
     /// A FANUC or Haas lathe's T word (`T0101`: tool 1 with offset 1, the last two digits the
@@ -8198,7 +8277,7 @@ mod tests {
             one_group_codes: Vec::new(),
             x_diameter: false,
             x_radius: false,
-            reset_feed_per_rev: false,
+            reset_feed: None,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,

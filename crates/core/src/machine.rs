@@ -301,7 +301,10 @@ impl Machine {
                 && out.diameter,
             // (an ISO 6983-1 lathe target says nothing of how its machine reads X)
             x_radius: source.diameter && !out.diameter && !target.lathe,
-            reset_feed_per_rev: per_rev(&source.modal) && !per_rev(&out.modal),
+            // (an ISO 6983-1 profile without a `reset` list resets to clause 14's G94, a lathe
+            // too: 14.4)
+            reset_feed: (reset_feed(&source.modal) != reset_feed(&out.modal))
+                .then(|| [reset_feed(&source.modal), reset_feed(&out.modal)]),
             // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
             percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
                 && !crate::dialect::skips_leader(out.family, out.haas)
@@ -356,13 +359,29 @@ impl Machine {
     }
 }
 
-/// Whether a control's reset state feeds per revolution: G95 (system A's numbers), or a
-/// FANUC or Haas lathe's G99.
-fn per_rev(modal: &crate::modal::ModalSettings) -> bool {
+/// The feed mode a G code selects on a control, by ISO 6983-1's numbers (93 inverse time, 94
+/// per minute, 95 per revolution): a FANUC or Haas lathe's G98/G99 (system A's numbers: `a`
+/// is the code as `ModalSettings::read_g` reads it), every other control's G93-G95. None for
+/// a code that selects no feed mode there (a system A lathe's G95, a mill's G99).
+pub fn feed_mode_code(fanuc_lathe: bool, a: i64) -> Option<i64> {
+    match (fanuc_lathe, a) {
+        (true, 98) => Some(94),
+        (true, 99) => Some(95),
+        (false, 93..=95) => Some(a),
+        _ => None,
+    }
+}
+
+/// The feed mode of a control's reset state ([`feed_mode_code`]'s numbers): the last feed
+/// mode code of its reset list (a FANUC lathe's G99, an Okuma lathe's G95, clause 14's G94),
+/// per minute (94) where the list has none (HEIDENHAIN's).
+pub fn reset_feed(modal: &crate::modal::ModalSettings) -> i64 {
     modal
         .reset
         .iter()
-        .any(|&g| g == 95 || (modal.fanuc_lathe && g == 99))
+        .filter_map(|&g| feed_mode_code(modal.fanuc_lathe, g))
+        .next_back()
+        .unwrap_or(94)
 }
 
 /// The G and M codes two profiles both list in modal groups that differ, as the profiles' `codes`

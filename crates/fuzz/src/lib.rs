@@ -473,7 +473,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         one_group_codes: Vec::new(),
         x_diameter: false,
         x_radius: false,
-        reset_feed_per_rev: false,
+        reset_feed: None,
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,

@@ -1,0 +1,107 @@
+"""Review 27's findings, each a conversion that said "ok" for output the target reads otherwise
+(or refused one it reads alike): the reset feed mode both ways, the text after a FANUC's `%`,
+a lathe's X0, a code the target's table lacks, and G10's X between a lathe and a mill
+(docs/convert.md)."""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.errors import ConversionError
+
+from .test_convert_target_reads import convert, target_errors
+
+
+def refusal(text: str, source: str, target: str) -> ConversionError:
+    with pytest.raises(ConversionError) as err:
+        convert(text, source, target)
+    return err.value
+
+
+# -- 1. the reset feed mode, both ways (findings 1, 3 and 5) ----------------------------------
+
+MILL_Z = "O1000\nG40\nG0 Z0.2\nG1 Z-0.5 F20.\nG0 Z1.\nM30\n"
+
+
+@pytest.mark.parametrize("source", ["haas-mill", "fanuc-mill", "linuxcnc"])
+@pytest.mark.parametrize("target", ["haas-lathe", "fanuc-lathe", "fanuc-lathe-b",
+                                    "okuma-lathe"])
+def test_a_feed_per_minute_by_the_reset_state_is_refused_for_a_lathe_that_feeds_per_rev(
+        source, target):
+    """A mill's F20. (in/min at its reset G94) read by the lathe's reset G99/G95 is 20 in a
+    revolution: refused at the F, as the other direction is."""
+    text = MILL_Z if source != "linuxcnc" else MILL_Z.replace("O1000\n", "")
+    e = refusal(text, source, target)
+    line = 4 if source != "linuxcnc" else 3
+    assert (e.line, e.column) == (line, 10), e
+    assert e.message.startswith("F20.: a feed per minute by the source control's reset state "
+                                "(no feed mode code written before it), where the target's "
+                                "reset feeds per revolution"), e.message
+
+
+def test_the_advice_names_a_code_both_read_alike_or_says_the_program_cannot_be_converted():
+    text = "G21 G17 G40\nG0 Z5.\nG1 Z-5. F100.\nM30\n"
+    # system B's G94 is LinuxCNC's: the advice names it, and following it converts
+    e = refusal(text, "linuxcnc", "fanuc-lathe-b")
+    assert e.message.endswith("write G94 before the first F in the source (both controls read "
+                              "it so)"), e.message
+    out = convert(text.replace("G0 Z5.", "G94\nG0 Z5."), "linuxcnc", "fanuc-lathe-b")
+    assert "G94" in out and "F100." in out
+    # a system A lathe's per-minute code is G98, a mill's return level: no code converts
+    e = refusal(text, "linuxcnc", "fanuc-lathe")
+    assert "the program cannot be converted to this target as it stands" in e.message
+    # the other way: system B's G95 is carried to LinuxCNC, system A's G99 is not
+    lathe = "O1000\nG21 G18 G40 G97\nG0 Z5.\nG1 Z-5. F0.2\nM30\n"
+    e = refusal(lathe, "fanuc-lathe-b", "linuxcnc")
+    assert e.message.endswith("write G95 before the first F in the source (both controls read "
+                              "it so)"), e.message
+    assert "F0.2" in convert(lathe.replace("G0 Z5.", "G95\nG0 Z5."), "fanuc-lathe-b",
+                             "linuxcnc")
+    e = refusal(lathe, "fanuc-lathe", "linuxcnc")
+    assert "cannot be converted to this target" in e.message
+    assert "write G99" not in e.message
+
+
+def test_iso_lathe_resets_to_feed_per_minute_by_clause_14_4():
+    """iso-lathe lists no reset: ISO 6983-1 14.4 (contouring on lathes) gives G94, so a FANUC
+    lathe's reset feed per revolution is refused there and an Okuma lathe's (G95) too, and a
+    LinuxCNC program (G94) is carried."""
+    lathe = "O1000\nG18 G40 G97\nG0 Z5.\nG1 Z-5. F0.2\nM30\n"
+    e = refusal(lathe, "fanuc-lathe", "iso-lathe")
+    assert (e.line, e.column) == (4, 9), e
+    assert "where the target's reset feeds per minute" in e.message
+    assert "F0.2" in convert(lathe, "fanuc-lathe", "okuma-lathe")
+    out = convert("G7 G18 G21\nG0 X20. Z5.\nG1 X10. Z-5. F100.\nM30\n", "linuxcnc", "iso-lathe")
+    assert "F100." in out
+
+
+def test_a_feed_mode_code_the_target_does_not_read_so_is_refused_at_the_code():
+    """A system A lathe's G99 written as the refusal used to advise: ISO 6983-1's table leaves
+    G99 unassigned (iso-lathe's check: TG302), so the F after it would be per minute there."""
+    text = "O1000\nG18 G40 G97 G99\nG0 Z5.\nG1 Z-5. F0.2\nM30\n"
+    assert any("G99" in w for w in _warnings(text, "iso-lathe"))
+    e = refusal(text, "fanuc-lathe", "iso-lathe")
+    assert (e.line, e.column) == (2, 13), e
+    assert e.message.startswith("G99: the source's code of feed per revolution, whose number "
+                                "the target reads as another code or none"), e.message
+    # system B's G95 is ISO 6983-1's G95: carried
+    out = convert(text.replace("G99", "G95"), "fanuc-lathe-b", "iso-lathe")
+    assert "G95" in out and "F0.2" in out
+
+
+def test_a_lathe_program_with_the_same_reset_feed_mode_keeps_its_f():
+    text = "O0001\nG21\nG00 Z2.\nG01 Z-5. F0.2\nM30\n"
+    assert "F0.2" in convert(text, "fanuc-lathe", "fanuc-lathe-b")
+    assert "F0.2" in convert(text.replace("G21\n", ""), "haas-lathe", "okuma-lathe")
+    mill = "O0001\nG21 G17\nG00 Z2.\nG01 Z-5. F100.\nM30\n"
+    assert "F100." in convert(mill, "fanuc-mill", "haas-mill")
+
+
+def _warnings(text: str, target: str) -> list[str]:
+    from formats.parser import parse_text
+    from formats.profile import load_profile
+    from postproc.check import Checker
+    profile = load_profile(target)
+    blocks = parse_text(text, profile.dialect, file="out.nc", errors="collect")
+    return [f"{f.line}:{f.rule} {f.message}" for f in Checker(profile, file="out.nc").run(
+        iter(blocks)) if f.severity == "warning"]
