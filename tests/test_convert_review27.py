@@ -105,3 +105,56 @@ def _warnings(text: str, target: str) -> list[str]:
     blocks = parse_text(text, profile.dialect, file="out.nc", errors="collect")
     return [f"{f.line}:{f.rule} {f.message}" for f in Checker(profile, file="out.nc").run(
         iter(blocks)) if f.severity == "warning"]
+
+
+# -- 2. the text after a FANUC's leader `%`, as the target reads it (findings 2 and 6) --------
+
+BODY = "O0003\nG21 G17 G40 G80 G90\nG0 X0 Y0\nM30\n%\n"
+
+
+@pytest.mark.parametrize("leader", ["%(TITLE)", "%:0003", "%;", "%TITLE", "%O0003",
+                                    "%(A)(B)"])
+def test_any_text_after_the_leader_is_refused_for_linuxcnc(leader, tmp_path):
+    from tests.conftest import rs274_output
+    text = leader + "\n" + BODY
+    # LinuxCNC refuses the line as written (rs274, and its check's TG412)
+    assert "Bad character '%' used" in rs274_output(tmp_path, text.replace("M30", "M2"))
+    assert any(e.startswith("1:TG412 ") for e in target_errors(text, "linuxcnc"))
+    e = refusal(text, "fanuc-mill", "linuxcnc")
+    assert (e.line, e.column) == (1, 2), e
+    assert e.message.startswith(f"\"{leader[1:]}\": text after the first '%'"), e.message
+    assert "LinuxCNC reads no text after it (rs274: \"Bad character '%' used\"" in e.message
+
+
+@pytest.mark.parametrize("target", ["haas-mill", "iso-mill", "pm322-eia"])
+@pytest.mark.parametrize("leader, rule", [("%TITLE", "TG112"), ("%;X1", "TG112"),
+                                          ("%O0003", "TG111"), ("% X-1", "TG111")])
+def test_a_leader_the_iso_reader_takes_for_words_or_letters_is_refused(target, leader, rule):
+    text = leader + "\n" + BODY
+    assert any(e.startswith(f"1:{rule} ") for e in target_errors(text, target))
+    e = refusal(text, "fanuc-mill", target)
+    assert e.line == 1 and e.column == leader.index(leader[1:].strip()) + 1, e
+    assert "text after the first '%'" in e.message
+    assert f"its check: {rule})" in e.message
+
+
+@pytest.mark.parametrize("target", ["haas-mill", "iso-mill"])
+@pytest.mark.parametrize("leader", ["%(TITLE)", "%:0003", "%;", "%  "])
+def test_a_leader_the_iso_reader_takes_for_its_identification_is_carried(target, leader):
+    text = leader + "\n" + BODY
+    out = convert(text, "fanuc-mill", target)
+    assert out.splitlines()[0] == leader.rstrip() or out.splitlines()[0] == leader
+    assert not target_errors(out, target)
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "haas-mill", "iso-mill"])
+def test_text_after_the_closing_percent_is_carried(target, tmp_path):
+    """Only the leader is the skipped text: the closing `%` ends the program on every target
+    (rs274 stops there), so what follows it is read by none."""
+    text = "%\nO1000\nG21\nG0 X0\nM30\n%O1000\n"
+    out = convert(text, "fanuc-mill", target)
+    assert out.splitlines()[-1] == "%O1000"
+    assert not target_errors(out, target)
+    if target == "linuxcnc":
+        from tests.conftest import rs274_output
+        assert "error" not in rs274_output(tmp_path, out).lower()

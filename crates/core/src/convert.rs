@@ -244,8 +244,8 @@ pub struct ConvertConfig {
     /// read alike written before it is refused ([`Converter::reset_feed_mode`]).
     pub reset_feed: Option<[i64; 2]>,
     /// The source's control skips the text after the first `%` (a FANUC), the target's reader
-    /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
-    /// ([`percent_words`]).
+    /// reads it (Haas, Okuma, ISO 6983-1 as the identification, LinuxCNC not at all): a leader
+    /// line whose text the target does not take is refused ([`percent_words`]).
     pub percent_words_read: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
@@ -359,38 +359,46 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
     Ok(())
 }
 
-/// The `%` line of a source whose control skips the text after its first `%` (a FANUC:
-/// `dialect::skips_leader`, TG129 of its check), for a target whose reader takes a word there
-/// for the program's first block (Haas, ISO 6983-1 clause 4, LinuxCNC: TG111 or TG412 of its
-/// check): `%O0003(TITLE)`, whose O number the FANUC loses, would be read as words before the
-/// first end of block. tapegate does not move the text to a line of its own (the source never
-/// ran it), so the line is refused at the first character after the `%` (as the target's
-/// check reads it: a letter followed by a digit or a sign and a digit).
-fn percent_words(b: &BlockIn<'_>) -> Result<(), ConvertError> {
+/// The leader `%` line (the file's first, before any block) of a source whose control skips
+/// the text after it (a FANUC: `dialect::skips_leader`, TG129 of its check), for a target
+/// whose reader takes that text: `%O0003(TITLE)`, whose O number the FANUC loses, would be
+/// read as words before the first end of block. What counts is what the target reads there:
+/// LinuxCNC no text at all (rs274: "Bad character '%' used", TG412 of its check: `%(TITLE)`,
+/// `%;` too), a Haas, an Okuma or an ISO 6983-1 reader an identification, which may not begin
+/// like a word (TG111) nor hold letters outside parentheses (`%TITLE`: TG112;
+/// `dialect::leader_text`, the target's check's own test); `%(TITLE)` and `%:0003` are its
+/// identification. tapegate does not move the text to a line of its own (the source never
+/// ran it), so the line is refused at its first character after the `%`. The closing `%` is
+/// the end of the program on every target: text after it is read by none.
+fn percent_words(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
     let Some(percent) = b.text.iter().position(|&c| c == b'%') else {
         return Ok(());
     };
     let rest = &b.text[percent + 1..];
-    let start = rest.iter().position(|c| !c.is_ascii_whitespace());
-    let Some(start) = start else {
+    let Some(start) = rest.iter().position(|c| !c.is_ascii_whitespace()) else {
         return Ok(());
     };
     let bytes = &rest[start..];
-    let digits = match bytes.get(1) {
-        Some(b'+' | b'-') => bytes.get(2..).unwrap_or_default(),
-        _ => bytes.get(1..).unwrap_or_default(),
+    let how = if target == Family::LinuxCnc {
+        "LinuxCNC reads no text after it (rs274: \"Bad character '%' used\"; its check: TG412)"
+    } else {
+        match crate::dialect::leader_text(bytes) {
+            None => return Ok(()),
+            Some(crate::dialect::LeaderText::Words) => {
+                "the target's reader takes it for words before the first end of block (ISO \
+                 6983-1 clause 4; its check: TG111)"
+            }
+            Some(crate::dialect::LeaderText::Letters) => {
+                "the target's reader takes it for the program's identification, which may hold \
+                 letters only in parentheses (ISO 6983-1 clause 4; its check: TG112)"
+            }
+        }
     };
-    let wordlike = bytes[0].is_ascii_alphabetic() && digits.first().is_some_and(u8::is_ascii_digit);
-    if !wordlike {
-        return Ok(());
-    }
     Err(ConvertError {
         message: format!(
             "{:?}: text after the first '%', which the source control skips (FANUC B-63524EN/01, \
-             8, memory card file format; its check: TG129) and the target's reader takes for \
-             words before the first end of block (ISO 6983-1 clause 4; its check: TG111, rs274's \
-             TG412): write the '%' on a line of its own, the program number (if it is to be \
-             read) on the next",
+             8, memory card file format; its check: TG129) and {how}: write the '%' on a line \
+             of its own, the program number (if it is to be read) on the next",
             String::from_utf8_lossy(bytes.trim_ascii_end())
         ),
         clause: "4",
@@ -712,6 +720,8 @@ pub struct Converter {
     /// The source program has written a feed mode code (G93-G95; a FANUC lathe's G98/G99 by
     /// system A's numbers): its F no longer reads by the reset state's feed mode.
     feed_mode_written: bool,
+    /// A `%` line or a block with words has been read: a `%` line now is no leader.
+    leader_passed: bool,
     /// A lathe's polar coordinate interpolation (G12.1 ... G13.1) is on: its C words are
     /// lengths ([`crate::meaning::polar_interpolation`]).
     polar_interpolation: bool,
@@ -1264,6 +1274,7 @@ impl Converter {
             out_mm: [None; 26],
             uw_moves: true,
             feed_mode_written: false,
+            leader_passed: false,
             polar_interpolation: false,
             c_axis: false,
             rounded: false,
@@ -2397,11 +2408,14 @@ impl Converter {
             });
         }
         if b.percent {
-            if self.c.percent_words_read {
-                percent_words(b)?;
+            // (only the leader: the closing `%` ends the program on every target)
+            if self.c.percent_words_read && !self.leader_passed {
+                percent_words(b, self.c.target_family)?;
             }
+            self.leader_passed = true;
             return Ok(None);
         }
+        self.leader_passed |= !b.words.is_empty();
         if self.data_block(b)? {
             return Ok(None);
         }
