@@ -158,3 +158,49 @@ def test_text_after_the_closing_percent_is_carried(target, tmp_path):
     if target == "linuxcnc":
         from tests.conftest import rs274_output
         assert "error" not in rs274_output(tmp_path, out).lower()
+
+
+# -- 4. a lathe's X0: the spindle axis as a diameter and as a radius (finding 4) ---------------
+
+LATHE_B = "O1000\nG21 G40 G97 S500 M3\nG95\nG0 Z5.\n{}\nG1 Z-10. F0.1\nG0 Z5.\nM30\n"
+
+
+@pytest.mark.parametrize("block", ["G0 X0 Z5.", "G0 X-0. Z5.", "G0 X0.000", "G28 X0",
+                                   "G53 X0", "M3 S500 X0", "G0 U0 Z5."])
+@pytest.mark.parametrize("target", ["linuxcnc", "fanuc-mill", "iso-mill"])
+def test_a_lathes_x0_is_carried_where_the_readings_agree(block, target, tmp_path):
+    if target == "linuxcnc" and "U0" in block:
+        pytest.skip("LinuxCNC's U is an axis of its own: the U/W rule refuses any U")
+    if target == "iso-mill" and block.startswith(("G28", "G53")):
+        pytest.skip("G28 and G53 are other codes of ISO 6983-1's table: refused at the code")
+    out = convert(LATHE_B.format(block), "fanuc-lathe-b", target)
+    assert block.split()[-1] in out or block.split()[-2] in out
+    if target == "linuxcnc":
+        from tests.conftest import rs274_output
+        ran = rs274_output(tmp_path, out.replace("O1000\n", "").replace("M30", "M2"))
+        assert "error" not in ran.lower() and "PROGRAM_END" in ran
+
+
+@pytest.mark.parametrize("block, word", [("G0 X0.001 Z5.", "X0.001"), ("G0 X#1 Z5.", "X#1"),
+                                         ("G0 X[0] Z5.", "X[0]"), ("G28 X2.", "X2."),
+                                         ("G0 U5. Z1.", "U5.")])
+@pytest.mark.parametrize("target", ["linuxcnc", "fanuc-mill"])
+def test_a_lathes_x_of_another_or_an_unknown_value_stays_refused(block, word, target):
+    e = refusal(LATHE_B.format(block), "fanuc-lathe-b", target)
+    assert (e.line, e.column) == (5, block.index(word) + 1), e
+    assert e.message.startswith(f"{word}: the source lathe reads "), e.message
+
+
+def test_a_lathes_u_that_moves_is_refused_for_a_mill_and_a_dwells_u_is_no_move():
+    e = refusal(LATHE_B.format("G0 U5. Z1."), "fanuc-lathe", "fanuc-mill")
+    assert e.message.startswith("U5.: the source lathe reads U as an increment of X, a "
+                                "diameter"), e.message
+    # a dwell's U is its time
+    assert "U1.5" in convert(LATHE_B.format("G04 U1.5"), "fanuc-lathe-b", "fanuc-mill")
+
+
+def test_a_mills_x0_is_carried_for_a_lathe_and_its_next_x_refused():
+    text = "O1000\nG21 G17\nG00 X0. Z5.\nG01 X10. Z0.\nM30\n"
+    e = refusal(text, "fanuc-mill", "fanuc-lathe-b")
+    assert (e.line, e.column) == (4, 5), e
+    assert e.message.startswith("X10.: the source reads X as a length from the origin")

@@ -159,8 +159,9 @@ def test_a_mill_programs_x_is_refused_for_a_lathe_that_reads_x_as_a_diameter(tar
     # carried, the target's check reads the arc with X a diameter (TG403): another arc
     assert any(":TG403 " in e for e in target_errors(MILL, target))
     e = refusal(MILL, "fanuc-mill", target)
-    assert (e.code, e.line, e.column) == ("conversion", 3, 5)
-    assert e.message.startswith("X0.: the source reads X as a length from the origin (a mill), "
+    # (X0. is the spindle axis under both readings: the first X of another value is refused)
+    assert (e.code, e.line, e.column) == ("conversion", 4, 5)
+    assert e.message.startswith("X10.: the source reads X as a length from the origin (a mill), "
                                 "the target lathe as a diameter")
     # a move after G80 with no motion mode (TG411 on a FANUC lathe) is refused at its X too
     assert any(e.startswith("6:TG411 ") for e in target_errors(AFTER_G80, target)) == (

@@ -3843,6 +3843,12 @@ impl Converter {
     /// reads X as a length from the origin (LinuxCNC starts in G8, X a radius: rs274 then
     /// refuses the lathe's R arcs, "Arc radius too small to reach end point", and moves every
     /// other X to twice its radius): refused at the first X word too.
+    ///
+    /// Both ways an X written as zero (`X0`, `X-0.`) passes: the spindle axis as a diameter
+    /// and as a radius, and no increment under G91 (`G28 X0`, `G53 X0`, a lathe's drilling
+    /// on the axis); the first X of another value (or a parameter's) is refused. For a target
+    /// that is no lathe, a FANUC, Haas or Okuma lathe's U that moves the tool (an increment of
+    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused.
     fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
@@ -3852,9 +3858,35 @@ impl Converter {
         if whole_g_code(b, &[4, 10, 65, 66]) {
             return Ok(());
         }
-        let Some(w) = first_word(b, b'X') else {
+        // a FANUC, Haas or Okuma lathe's U moving the tool is an increment of X, a diameter
+        // too (a cycle's U is its allowance or depth: `uw_moves`)
+        let u = self.c.x_radius
+            && self.c.lathe
+            && matches!(self.c.family, Family::MacroB | Family::Okuma)
+            && self.uw_moves;
+        // X0 (U0) is the spindle axis read as a diameter and as a radius alike (and no
+        // increment under G91): the same place on both machines; a parameter's or an
+        // expression's value is not known here, so refused with any other number
+        let Some(w) = b.words.iter().find(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            (letter == b'X' || u && letter == b'U') && !literal_zero(&w.token[1..])
+        }) else {
             return Ok(());
         };
+        if self.c.x_radius && w.token[0].eq_ignore_ascii_case(&b'U') {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source lathe reads U as an increment of X, a diameter (U20. moves \
+                     10. from the spindle axis), the target as a length or an axis of its own, \
+                     so the move would be another; tapegate does not halve nor rename it: write \
+                     the program for the target",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
         if self.c.x_radius {
             return Err(ConvertError {
                 message: format!(
@@ -8040,6 +8072,22 @@ fn whole_g_code(b: &BlockIn<'_>, codes: &[i64]) -> bool {
             && code_number(&w.token[1..])
                 .is_some_and(|n| n.is_whole() && codes.contains(&n.trunc()))
     })
+}
+
+/// A word's value written as a number that is zero (`0`, `-0.`, `0.000`, `+0`): no parameter,
+/// no expression.
+fn literal_zero(value: &[u8]) -> bool {
+    let digits = value.iter().filter(|c| !c.is_ascii_whitespace());
+    let mut zero = false;
+    for (i, &c) in digits.enumerate() {
+        match c {
+            b'0' => zero = true,
+            b'.' => {}
+            b'+' | b'-' if i == 0 => {}
+            _ => return false,
+        }
+    }
+    zero
 }
 
 /// A block's first word of this address letter (either case).
