@@ -204,3 +204,32 @@ def test_a_mills_x0_is_carried_for_a_lathe_and_its_next_x_refused():
     e = refusal(text, "fanuc-mill", "fanuc-lathe-b")
     assert (e.line, e.column) == (4, 5), e
     assert e.message.startswith("X10.: the source reads X as a length from the origin")
+
+
+# -- 5. a G code neither profile lists, for a target that alarms on a code it lacks -----------
+
+HAAS = "%\nO1000\nG21 G17 G40\n{}\nG0 X0 Y0\nM30\n%\n"
+
+
+@pytest.mark.parametrize("code", ["G15", "G16", "G45", "G46", "G11", "G39"])
+def test_a_code_neither_table_lists_is_refused_for_linuxcnc(code, tmp_path):
+    from tests.conftest import rs274_output
+    # LinuxCNC refuses it as written (rs274, and its check's TG306)
+    ran = rs274_output(tmp_path, f"G21 G17 G40\n{code}\nG0 X0 Y0\nM2\n")
+    assert "Unknown g code used" in ran
+    assert any(e.startswith(f"2:TG306 {code}") for e in target_errors(
+        f"G21 G17 G40\n{code}\nG0 X0 Y0\nM2\n", "linuxcnc"))
+    e = refusal(HAAS.format(code), "haas-mill", "linuxcnc")
+    assert (e.line, e.column) == (4, 1), e
+    assert e.message.startswith(f"{code}: neither the source's nor the target's profile lists "
+                                "this code, and the target control alarms on a G code its "
+                                "table lacks (its check: TG306"), e.message
+
+
+def test_a_code_neither_table_lists_is_refused_for_sinumerik_and_carried_for_iso():
+    e = refusal(HAAS.format("G15"), "haas-mill", "sinumerik-840d")
+    assert (e.line, e.column) == (4, 1), e
+    assert any(":TG306 G15" in x for x in target_errors("N10 G15\nN20 M30\n", "sinumerik-840d"))
+    # ISO 6983-1 leaves such a code to individual use (a warning, no alarm): carried
+    out = convert(HAAS.format("G15"), "haas-mill", "iso-mill")
+    assert "G15" in out and not target_errors(out, "iso-mill")

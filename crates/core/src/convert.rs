@@ -266,6 +266,10 @@ pub struct ConvertConfig {
     /// with a note. None on one family, where the code tables are compared by group
     /// ([`crate::machine::differing_codes`]).
     pub listed_codes: Option<[CodeList; 2]>,
+    /// The target control alarms on a G code its table lacks (`check::Config::alarm_g`:
+    /// LinuxCNC, rs274 "Unknown g code used"; a SINUMERIK; HEIDENHAIN; its check: TG306): a G
+    /// code outside both tables (`listed_codes`) is refused there, not carried with a note.
+    pub target_alarm_g: bool,
     /// The decimal G codes the source family's own list holds (`54.1`; a FANUC 0i-MF mill's
     /// has no `71.7`), as [`Dec`] writes them; None on an ISO 6983-1 profile, whose table
     /// lends every code the standard's meaning. With [`ModalSettings::lacks`] for the whole
@@ -3717,6 +3721,21 @@ impl Converter {
                     // (a code with letters or signs in its number is the words' to refuse)
                     && number.trim_start_matches('M').bytes().all(|c| c.is_ascii_digit() || c == b'.')
             });
+            if unlisted && !m && self.c.target_alarm_g {
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: neither the source's nor the target's profile lists this code, and \
+                         the target control alarms on a G code its table lacks (its check: \
+                         TG306; LinuxCNC's rs274: \"Unknown g code used\"); on the source it is \
+                         an option or a macro call by parameter: write the target's code for its \
+                         function",
+                        text(w.token)
+                    ),
+                    clause: "codes",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
             if unlisted && !self.unlisted_noted.contains(&number) {
                 self.unlisted_noted.push(number.clone());
                 let whose = if m {
@@ -8342,6 +8361,7 @@ mod tests {
             reset_feed: None,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
+            target_alarm_g: false,
             listed_codes: None,
             src_decimal_g: None,
             src_listed: None,

@@ -338,6 +338,7 @@ impl Machine {
                 one_group_codes(source, out)
             },
             listed_codes: either_lists(self, target),
+            target_alarm_g: out.alarm_g,
             src_listed: (self.family != Family::Iso).then(|| self.listed.clone()),
             src_decimal_g: (self.family != Family::Iso)
                 .then(|| source.g_decimal.iter().map(|(c, _)| c.clone()).collect()),
@@ -487,13 +488,15 @@ pub fn differing_codes(
     out
 }
 
-/// Why the target's check refuses code `n` of `letter` (as `check::codes` reads a code: TG303
-/// where an ISO 6983-1 table leaves it permanently unassigned, TG306 where the control alarms
-/// on a code its table lacks), or None where the target reads it. Whatever the source's table
-/// says of the code (a SINUMERIK's `G28`, which its own table lacks), the target refuses the
-/// block, so the conversion does. ISO
-/// 6983-1 Annex E: a permanently unassigned code (G28 of the standard's table) is no code of
-/// the standard, whatever a FANUC or a SINUMERIK does with its number.
+/// Why the target's check refuses code `n` of `letter` that its table holds: TG303 where an
+/// ISO 6983-1 table leaves it permanently unassigned (ISO 6983-1 Annex E: G28 of the
+/// standard's table is no code of the standard, whatever a FANUC or a SINUMERIK does with its
+/// number). Whatever the source's table says of the code (a SINUMERIK's `G28`, which its own
+/// table lacks), the target refuses the block, so the conversion does. None for every other
+/// code, and for one the target's table lacks: a code the source lists and the target does
+/// not is refused by [`target_only`]'s and `differing_codes`' lists ("no such code"), one
+/// neither lists by the converter where the target alarms on it (TG306:
+/// `ConvertConfig::target_alarm_g`), and carried with a note where it does not.
 fn target_refuses(target: &Config, letter: u8, n: usize) -> Option<String> {
     let codes = if letter == b'G' {
         &target.g_codes

@@ -476,6 +476,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         reset_feed: None,
         differing_codes: Vec::new(),
         listed_codes: None,
+        target_alarm_g: false,
         src_decimal_g: None,
         src_listed: None,
         ijk: None,
