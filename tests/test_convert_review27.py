@@ -233,3 +233,34 @@ def test_a_code_neither_table_lists_is_refused_for_sinumerik_and_carried_for_iso
     # ISO 6983-1 leaves such a code to individual use (a warning, no alarm): carried
     out = convert(HAAS.format("G15"), "haas-mill", "iso-mill")
     assert "G15" in out and not target_errors(out, "iso-mill")
+
+
+# -- 6. G10's X across the diameter/length change (doubtful item) ------------------------------
+
+@pytest.mark.parametrize("source, target", [("fanuc-mill", "fanuc-lathe"),
+                                            ("haas-mill", "haas-lathe"),
+                                            ("fanuc-mill", "fanuc-lathe-b")])
+def test_a_mills_g10_x_is_refused_for_a_lathe(source, target):
+    text = "%\nO1000\nG21\nG10 L2 P1 X100. Z-50.\nG0 Z5.\nM30\n%\n"
+    e = refusal(text, source, target)
+    assert (e.line, e.column) == (4, 11), e
+    assert e.message.startswith("X100.: G10's offset value on the X axis"), e.message
+    assert "parameter No. 5004#1" in e.message
+    # its X0 is the same offset either way: carried
+    out = convert(text.replace("X100.", "X0"), source, target)
+    assert "G10 L2 P1 X0 Z-50." in out
+
+
+@pytest.mark.parametrize("block, word, target", [("G10 L10 P1 X20.", "X20.", "linuxcnc"),
+                                                 ("G10 L10 P1 X20.", "X20.", "fanuc-mill"),
+                                                 ("G10 P1 U0.2", "U0.2", "fanuc-mill")])
+def test_a_lathes_g10_x_is_refused_for_a_target_that_reads_x_as_a_length(block, word, target):
+    text = f"O1000\nG21 G40 G97 S500 M3\nG95\nG0 Z5.\n{block}\nM30\n"
+    e = refusal(text, "fanuc-lathe-b", target)
+    assert (e.line, e.column) == (5, block.index(word) + 1), e
+    assert e.message.startswith(f"{word}: G10's offset value on the X axis"), e.message
+
+
+def test_g10_between_two_mills_keeps_its_x():
+    text = "%\nO1000\nG21\nG10 L2 P1 X100. Z-50.\nG0 Z5.\nM30\n%\n"
+    assert "X100." in convert(text, "fanuc-mill", "haas-mill")

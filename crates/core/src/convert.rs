@@ -3872,10 +3872,12 @@ impl Converter {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
         }
-        // (a dwell's X is its time, a macro call's X its argument #24, G10's X an offset's
-        // value, refused or carried by the G10 rules: no position)
-        if whole_g_code(b, &[4, 10, 65, 66]) {
+        // (a dwell's X is its time, a macro call's X its argument #24: no position)
+        if whole_g_code(b, &[4, 65, 66]) {
             return Ok(());
+        }
+        if whole_g_code(b, &[10]) {
+            return self.g10_x_reading(b);
         }
         // a FANUC, Haas or Okuma lathe's U moving the tool is an increment of X, a diameter
         // too (a cycle's U is its allowance or depth: `uw_moves`)
@@ -3927,6 +3929,41 @@ impl Converter {
                  as a diameter (X10. is 5. from the spindle axis there), so every position and \
                  arc in X would be another; tapegate does not convert a mill's program for a \
                  lathe: write it for the lathe",
+                text(w.token)
+            ),
+            clause: "profile",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// G10's X (and a lathe's U, its increment) between a lathe that reads X as a diameter and
+    /// a target that reads it as a length, either way ([`Converter::same_x_reading`]): an
+    /// offset's value on the X axis, which a FANUC lathe reads as a diameter or a radius by
+    /// its parameters (B-63444EN/01, 8.4 "Diameter and radius programming": the tool offset's
+    /// component by parameter No. 5004#1; the manual's table says nothing of the work
+    /// offset's), so what the value is on the lathe is not known from the program: refused at
+    /// the word, the safe side. A value written as zero is the same offset either way.
+    fn g10_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let lathe_source = self.c.x_radius;
+        let Some(w) = b.words.iter().find(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            (letter == b'X' || lathe_source && letter == b'U') && !literal_zero(&w.token[1..])
+        }) else {
+            return Ok(());
+        };
+        let (source, target) = if lathe_source {
+            ("the source lathe", "the target as a length from the origin")
+        } else {
+            ("the source (a mill) as a length", "the target lathe")
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: G10's offset value on the X axis, read by {source} and by {target}; a \
+                 FANUC lathe reads an offset's X as a diameter or a radius by its parameters \
+                 (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1), which the \
+                 program does not show, so the offset may be another by a factor of two; \
+                 tapegate does not halve nor double it: set the offset for the target",
                 text(w.token)
             ),
             clause: "profile",
