@@ -3996,7 +3996,7 @@ impl Converter {
             _ => "per minute",
         };
         for &g in gs {
-            let Some(mode) = crate::machine::feed_mode_code(lathe, g) else {
+            let Some(mode) = crate::modal::feed_mode_code(lathe, g) else {
                 continue;
             };
             if self.target_feed_mode(g) == Some(mode) {
@@ -4068,14 +4068,14 @@ impl Converter {
         })
     }
 
-    /// The feed mode (`machine::feed_mode_code`) the target reads the source's code `g` (by
+    /// The feed mode (`modal::feed_mode_code`) the target reads the source's code `g` (by
     /// the source's system A number) as, written as the conversion writes it: between two
     /// FANUC lathes of different G code systems by the target's number of the function, else
     /// by the number written.
     fn target_feed_mode(&self, g: i64) -> Option<i64> {
         let lathe = self.c.src_modal.fanuc_lathe;
         if self.renumbers() {
-            return crate::machine::feed_mode_code(true, g);
+            return crate::modal::feed_mode_code(true, g);
         }
         let written = if lathe {
             self.c.src_modal.g_system.from_a(g)?
@@ -4083,8 +4083,8 @@ impl Converter {
             g
         };
         match self.c.target_g_system {
-            Some(system) => crate::machine::feed_mode_code(true, system.to_a(written)),
-            None => crate::machine::feed_mode_code(false, written),
+            Some(system) => crate::modal::feed_mode_code(true, system.to_a(written)),
+            None => crate::modal::feed_mode_code(false, written),
         }
     }
 

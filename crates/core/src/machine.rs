@@ -360,27 +360,14 @@ impl Machine {
     }
 }
 
-/// The feed mode a G code selects on a control, by ISO 6983-1's numbers (93 inverse time, 94
-/// per minute, 95 per revolution): a FANUC or Haas lathe's G98/G99 (system A's numbers: `a`
-/// is the code as `ModalSettings::read_g` reads it), every other control's G93-G95. None for
-/// a code that selects no feed mode there (a system A lathe's G95, a mill's G99).
-pub fn feed_mode_code(fanuc_lathe: bool, a: i64) -> Option<i64> {
-    match (fanuc_lathe, a) {
-        (true, 98) => Some(94),
-        (true, 99) => Some(95),
-        (false, 93..=95) => Some(a),
-        _ => None,
-    }
-}
-
-/// The feed mode of a control's reset state ([`feed_mode_code`]'s numbers): the last feed
+/// The feed mode of a control's reset state ([`crate::modal::feed_mode_code`]'s numbers): the last feed
 /// mode code of its reset list (a FANUC lathe's G99, an Okuma lathe's G95, clause 14's G94),
 /// per minute (94) where the list has none (HEIDENHAIN's).
 pub fn reset_feed(modal: &crate::modal::ModalSettings) -> i64 {
     modal
         .reset
         .iter()
-        .filter_map(|&g| feed_mode_code(modal.fanuc_lathe, g))
+        .filter_map(|&g| crate::modal::feed_mode_code(modal.fanuc_lathe, g))
         .next_back()
         .unwrap_or(94)
 }
