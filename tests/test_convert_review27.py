@@ -251,7 +251,9 @@ def test_a_mills_g10_x_is_refused_for_a_lathe(source, target):
     assert "G10 L2 P1 X0 Z-50." in out
 
 
-@pytest.mark.parametrize("block, word, target", [("G10 L10 P1 X20.", "X20.", "linuxcnc"),
+# (G10 L10, a tool offset's, is refused for LinuxCNC by the G10 rules first: its L10 sets the
+# tool table from the current position)
+@pytest.mark.parametrize("block, word, target", [("G10 L2 P1 X20. Z0", "X20.", "linuxcnc"),
                                                  ("G10 L10 P1 X20.", "X20.", "fanuc-mill"),
                                                  ("G10 P1 U0.2", "U0.2", "fanuc-mill")])
 def test_a_lathes_g10_x_is_refused_for_a_target_that_reads_x_as_a_length(block, word, target):

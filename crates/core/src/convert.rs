@@ -3038,6 +3038,9 @@ impl Converter {
                 }
             })?;
         }
+        if (self.c.x_radius || self.c.x_diameter) && whole_g_code(b, &[10]) {
+            self.g10_x_reading(b)?;
+        }
         self.same_meaning(b, b'M')?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
@@ -3876,8 +3879,9 @@ impl Converter {
         if whole_g_code(b, &[4, 65, 66]) {
             return Ok(());
         }
+        // (G10's X: after the G10 rules, which name a form the target lacks first)
         if whole_g_code(b, &[10]) {
-            return self.g10_x_reading(b);
+            return Ok(());
         }
         // a FANUC, Haas or Okuma lathe's U moving the tool is an increment of X, a diameter
         // too (a cycle's U is its allowance or depth: `uw_moves`)
