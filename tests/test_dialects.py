@@ -1082,9 +1082,15 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
     """P1200 is 1.2 mm only for a control whose cycle table reads it so: for an ISO lathe (or a
     mill) it is another number, so the conversion stops at the word, with or without a change of
     units. The program's own family converts it."""
+    # (without the G99: ISO 6983-1's table leaves G99 unassigned, so the FANUC lathe's feed per
+    # revolution code is refused for iso-lathe at the code, before the cycle)
+    with pytest.raises(ConversionError) as info:
+        convert_text(tmp_path, THREADING, source="fanuc-lathe", target="iso-lathe", units=None)
+    assert (info.value.clause, info.value.line, info.value.column) == ("profile", 3, 5)
+    reset_feed = THREADING.replace("G21 G99", "G21")
     for target, units in (("iso-lathe", "inch"), ("iso-lathe", None)):
         with pytest.raises(ConversionError) as info:
-            convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
+            convert_text(tmp_path, reset_feed, source="fanuc-lathe", target=target, units=units)
         assert (info.value.code, info.value.clause) == ("conversion-cycle", "cycle")
         assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
     # Haas writes G76 in one block with K D, its P Q differ: the cycle itself is refused, at

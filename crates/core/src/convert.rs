@@ -238,13 +238,14 @@ pub struct ConvertConfig {
     /// mill profile in G8's radius reading, an ISO 6983-1 mill): an X word is refused
     /// ([`Converter::same_x_reading`]).
     pub x_radius: bool,
-    /// The source's reset state feeds per revolution (a FANUC or Haas lathe's G99), the
-    /// target's per minute (G94): an F word with no feed mode code written before it is
-    /// refused ([`Converter::reset_feed_mode`]).
-    pub reset_feed_per_rev: bool,
+    /// The feed modes of the source's and the target's reset states where they differ
+    /// (`machine::reset_feed`: 94 per minute, 95 per revolution): a FANUC or Haas lathe's G99
+    /// for a mill or LinuxCNC (G94), and the other way. An F word with no feed mode code both
+    /// read alike written before it is refused ([`Converter::reset_feed_mode`]).
+    pub reset_feed: Option<[i64; 2]>,
     /// The source's control skips the text after the first `%` (a FANUC), the target's reader
-    /// takes a word there for a block (Haas, ISO 6983-1, LinuxCNC): such a `%` line is refused
-    /// ([`percent_words`]).
+    /// reads it (Haas, Okuma, ISO 6983-1 as the identification, LinuxCNC not at all): a leader
+    /// line whose text the target does not take is refused ([`percent_words`]).
     pub percent_words_read: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
@@ -265,6 +266,10 @@ pub struct ConvertConfig {
     /// with a note. None on one family, where the code tables are compared by group
     /// ([`crate::machine::differing_codes`]).
     pub listed_codes: Option<[CodeList; 2]>,
+    /// The target control alarms on a G code its table lacks (`check::Config::alarm_g`:
+    /// LinuxCNC, rs274 "Unknown g code used"; a SINUMERIK; HEIDENHAIN; its check: TG306): a G
+    /// code outside both tables (`listed_codes`) is refused there, not carried with a note.
+    pub target_alarm_g: bool,
     /// The decimal G codes the source family's own list holds (`54.1`; a FANUC 0i-MF mill's
     /// has no `71.7`), as [`Dec`] writes them; None on an ISO 6983-1 profile, whose table
     /// lends every code the standard's meaning. With [`ModalSettings::lacks`] for the whole
@@ -358,38 +363,46 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
     Ok(())
 }
 
-/// The `%` line of a source whose control skips the text after its first `%` (a FANUC:
-/// `dialect::skips_leader`, TG129 of its check), for a target whose reader takes a word there
-/// for the program's first block (Haas, ISO 6983-1 clause 4, LinuxCNC: TG111 or TG412 of its
-/// check): `%O0003(TITLE)`, whose O number the FANUC loses, would be read as words before the
-/// first end of block. tapegate does not move the text to a line of its own (the source never
-/// ran it), so the line is refused at the first character after the `%` (as the target's
-/// check reads it: a letter followed by a digit or a sign and a digit).
-fn percent_words(b: &BlockIn<'_>) -> Result<(), ConvertError> {
+/// The leader `%` line (the file's first, before any block) of a source whose control skips
+/// the text after it (a FANUC: `dialect::skips_leader`, TG129 of its check), for a target
+/// whose reader takes that text: `%O0003(TITLE)`, whose O number the FANUC loses, would be
+/// read as words before the first end of block. What counts is what the target reads there:
+/// LinuxCNC no text at all (rs274: "Bad character '%' used", TG412 of its check: `%(TITLE)`,
+/// `%;` too), a Haas, an Okuma or an ISO 6983-1 reader an identification, which may not begin
+/// like a word (TG111) nor hold letters outside parentheses (`%TITLE`: TG112;
+/// `dialect::leader_text`, the target's check's own test); `%(TITLE)` and `%:0003` are its
+/// identification. tapegate does not move the text to a line of its own (the source never
+/// ran it), so the line is refused at its first character after the `%`. The closing `%` is
+/// the end of the program on every target: text after it is read by none.
+fn percent_words(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
     let Some(percent) = b.text.iter().position(|&c| c == b'%') else {
         return Ok(());
     };
     let rest = &b.text[percent + 1..];
-    let start = rest.iter().position(|c| !c.is_ascii_whitespace());
-    let Some(start) = start else {
+    let Some(start) = rest.iter().position(|c| !c.is_ascii_whitespace()) else {
         return Ok(());
     };
     let bytes = &rest[start..];
-    let digits = match bytes.get(1) {
-        Some(b'+' | b'-') => bytes.get(2..).unwrap_or_default(),
-        _ => bytes.get(1..).unwrap_or_default(),
+    let how = if target == Family::LinuxCnc {
+        "LinuxCNC reads no text after it (rs274: \"Bad character '%' used\"; its check: TG412)"
+    } else {
+        match crate::dialect::leader_text(bytes) {
+            None => return Ok(()),
+            Some(crate::dialect::LeaderText::Words) => {
+                "the target's reader takes it for words before the first end of block (ISO \
+                 6983-1 clause 4; its check: TG111)"
+            }
+            Some(crate::dialect::LeaderText::Letters) => {
+                "the target's reader takes it for the program's identification, which may hold \
+                 letters only in parentheses (ISO 6983-1 clause 4; its check: TG112)"
+            }
+        }
     };
-    let wordlike = bytes[0].is_ascii_alphabetic() && digits.first().is_some_and(u8::is_ascii_digit);
-    if !wordlike {
-        return Ok(());
-    }
     Err(ConvertError {
         message: format!(
             "{:?}: text after the first '%', which the source control skips (FANUC B-63524EN/01, \
-             8, memory card file format; its check: TG129) and the target's reader takes for \
-             words before the first end of block (ISO 6983-1 clause 4; its check: TG111, rs274's \
-             TG412): write the '%' on a line of its own, the program number (if it is to be \
-             read) on the next",
+             8, memory card file format; its check: TG129) and {how}: write the '%' on a line \
+             of its own, the program number (if it is to be read) on the next",
             String::from_utf8_lossy(bytes.trim_ascii_end())
         ),
         clause: "4",
@@ -711,6 +724,8 @@ pub struct Converter {
     /// The source program has written a feed mode code (G93-G95; a FANUC lathe's G98/G99 by
     /// system A's numbers): its F no longer reads by the reset state's feed mode.
     feed_mode_written: bool,
+    /// A `%` line or a block with words has been read: a `%` line now is no leader.
+    leader_passed: bool,
     /// A lathe's polar coordinate interpolation (G12.1 ... G13.1) is on: its C words are
     /// lengths ([`crate::meaning::polar_interpolation`]).
     polar_interpolation: bool,
@@ -1266,6 +1281,7 @@ impl Converter {
             out_mm: [None; 26],
             uw_moves: true,
             feed_mode_written: false,
+            leader_passed: false,
             polar_interpolation: false,
             c_axis: false,
             rounded: false,
@@ -2400,11 +2416,14 @@ impl Converter {
             });
         }
         if b.percent {
-            if self.c.percent_words_read {
-                percent_words(b)?;
+            // (only the leader: the closing `%` ends the program on every target)
+            if self.c.percent_words_read && !self.leader_passed {
+                percent_words(b, self.c.target_family)?;
             }
+            self.leader_passed = true;
             return Ok(None);
         }
+        self.leader_passed |= !b.words.is_empty();
         if self.data_block(b)? {
             return Ok(None);
         }
@@ -3028,6 +3047,9 @@ impl Converter {
                     line: None,
                 }
             })?;
+        }
+        if (self.c.x_radius || self.c.x_diameter) && whole_g_code(b, &[10]) {
+            self.g10_x_reading(b)?;
         }
         self.same_meaning(b, b'M')?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
@@ -3712,6 +3734,21 @@ impl Converter {
                     // (a code with letters or signs in its number is the words' to refuse)
                     && number.trim_start_matches('M').bytes().all(|c| c.is_ascii_digit() || c == b'.')
             });
+            if unlisted && !m && self.c.target_alarm_g {
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: neither the source's nor the target's profile lists this code, and \
+                         the target control alarms on a G code its table lacks (its check: \
+                         TG306; LinuxCNC's rs274: \"Unknown g code used\"); on the source it is \
+                         an option or a macro call by parameter: write the target's code for its \
+                         function",
+                        text(w.token)
+                    ),
+                    clause: "codes",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
             if unlisted && !self.unlisted_noted.contains(&number) {
                 self.unlisted_noted.push(number.clone());
                 let whose = if m {
@@ -3838,18 +3875,53 @@ impl Converter {
     /// reads X as a length from the origin (LinuxCNC starts in G8, X a radius: rs274 then
     /// refuses the lathe's R arcs, "Arc radius too small to reach end point", and moves every
     /// other X to twice its radius): refused at the first X word too.
+    ///
+    /// Both ways an X written as zero (`X0`, `X-0.`) passes: the spindle axis as a diameter
+    /// and as a radius, and no increment under G91 (`G28 X0`, `G53 X0`, a lathe's drilling
+    /// on the axis); the first X of another value (or a parameter's) is refused. For a target
+    /// that is no lathe, a FANUC, Haas or Okuma lathe's U that moves the tool (an increment of
+    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused.
     fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
         }
-        // (a dwell's X is its time, a macro call's X its argument #24, G10's X an offset's
-        // value, refused or carried by the G10 rules: no position)
-        if whole_g_code(b, &[4, 10, 65, 66]) {
+        // (a dwell's X is its time, a macro call's X its argument #24: no position)
+        if whole_g_code(b, &[4, 65, 66]) {
             return Ok(());
         }
-        let Some(w) = first_word(b, b'X') else {
+        // (G10's X: after the G10 rules, which name a form the target lacks first)
+        if whole_g_code(b, &[10]) {
+            return Ok(());
+        }
+        // a FANUC, Haas or Okuma lathe's U moving the tool is an increment of X, a diameter
+        // too (a cycle's U is its allowance or depth: `uw_moves`)
+        let u = self.c.x_radius
+            && self.c.lathe
+            && matches!(self.c.family, Family::MacroB | Family::Okuma)
+            && self.uw_moves;
+        // X0 (U0) is the spindle axis read as a diameter and as a radius alike (and no
+        // increment under G91): the same place on both machines; a parameter's or an
+        // expression's value is not known here, so refused with any other number
+        let Some(w) = b.words.iter().find(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            (letter == b'X' || u && letter == b'U') && !literal_zero(&w.token[1..])
+        }) else {
             return Ok(());
         };
+        if self.c.x_radius && w.token[0].eq_ignore_ascii_case(&b'U') {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source lathe reads U as an increment of X, a diameter (U20. moves \
+                     10. from the spindle axis), the target as a length or an axis of its own, \
+                     so the move would be another; tapegate does not halve nor rename it: write \
+                     the program for the target",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
         if self.c.x_radius {
             return Err(ConvertError {
                 message: format!(
@@ -3879,23 +3951,97 @@ impl Converter {
         })
     }
 
-    /// An F word read by the source's reset feed mode, per revolution (a FANUC or Haas
-    /// lathe's G99: fanuc-lathe's and haas-lathe's `reset`; FANUC 0i-TF B-64604EN "Feed per
-    /// revolution"), for a target whose reset feeds per minute (G94): carried, `F0.2` is 0.2
-    /// mm/min there. An explicit G99 is refused by the codes' meanings, a G95 both read alike
-    /// is carried; with neither written before it, the conversion stops at the first F word
-    /// (a G65/G66 macro call's F is its argument #9).
+    /// G10's X (and a lathe's U, its increment) between a lathe that reads X as a diameter and
+    /// a target that reads it as a length, either way ([`Converter::same_x_reading`]): an
+    /// offset's value on the X axis, which a FANUC lathe reads as a diameter or a radius by
+    /// its parameters (B-63444EN/01, 8.4 "Diameter and radius programming": the tool offset's
+    /// component by parameter No. 5004#1; the manual's table says nothing of the work
+    /// offset's), so what the value is on the lathe is not known from the program: refused at
+    /// the word, the safe side. A value written as zero is the same offset either way.
+    fn g10_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let lathe_source = self.c.x_radius;
+        let Some(w) = b.words.iter().find(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            (letter == b'X' || lathe_source && letter == b'U') && !literal_zero(&w.token[1..])
+        }) else {
+            return Ok(());
+        };
+        let (source, target) = if lathe_source {
+            ("the source lathe", "the target as a length from the origin")
+        } else {
+            ("the source (a mill) as a length", "the target lathe")
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: G10's offset value on the X axis, read by {source} and by {target}; a \
+                 FANUC lathe reads an offset's X as a diameter or a radius by its parameters \
+                 (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1), which the \
+                 program does not show, so the offset may be another by a factor of two; \
+                 tapegate does not halve nor double it: set the offset for the target",
+                text(w.token)
+            ),
+            clause: "profile",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// An F word read by the source's reset feed mode where the target's reset feeds by
+    /// another (`ConvertConfig::reset_feed`): per revolution on a FANUC or Haas lathe (its
+    /// G99; FANUC 0i-TF B-64604EN "Feed per revolution"), per minute on a mill or LinuxCNC
+    /// (G94), on an ISO 6983-1 control by clause 14 (G94, a lathe too: 14.4). Carried, `F0.2`
+    /// mm/rev is 0.2 mm/min on the target, a mill's `F20.` in/min 20 in/rev on the lathe. A
+    /// feed mode code written before the F is carried where the target reads its number as
+    /// the same mode (a system B lathe's G95 for LinuxCNC), and refused at the code where it
+    /// does not (a system A lathe's G99 is unassigned in ISO 6983-1's table; the codes'
+    /// meanings refuse it for a mill first); with none written, the conversion stops at the
+    /// first F word (a G65/G66 macro call's F is its argument #9).
     fn reset_feed_mode(&mut self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
-        if !self.c.reset_feed_per_rev || self.feed_mode_written {
+        let Some([source, target]) = self.c.reset_feed else {
+            return Ok(());
+        };
+        if self.feed_mode_written {
             return Ok(());
         }
         let lathe = self.c.src_modal.fanuc_lathe;
-        if gs
-            .iter()
-            .any(|&g| matches!(g, 93..=95) && !lathe || matches!(g, 98 | 99) && lathe)
-        {
-            self.feed_mode_written = true;
-            return Ok(());
+        let name = |mode: i64| match mode {
+            95 => "per revolution",
+            93 => "by inverse time",
+            _ => "per minute",
+        };
+        for &g in gs {
+            let Some(mode) = crate::modal::feed_mode_code(lathe, g) else {
+                continue;
+            };
+            if self.target_feed_mode(g) == Some(mode) {
+                self.feed_mode_written = true;
+                return Ok(());
+            }
+            let w = b
+                .words
+                .iter()
+                .find(|w| {
+                    w.token[0].eq_ignore_ascii_case(&b'G')
+                        && self
+                            .code_of(w.token)
+                            .is_some_and(|n| self.c.src_modal.read_g(n) == g)
+                })
+                .or_else(|| first_word(b, b'G'));
+            let at = w.map_or(1, |w| crate::text::column(b.text, w.start));
+            let code = w.map_or_else(|| format!("G{g}"), |w| text(w.token));
+            return Err(ConvertError {
+                message: format!(
+                    "{code}: the source's code of feed {}, whose number the target reads as \
+                     another code or none (its reset feeds {}), so the F words after it would \
+                     be read otherwise; tapegate does not write the feed mode, so the program \
+                     cannot be converted to this target as it stands: write it for the target",
+                    name(mode),
+                    name(target)
+                ),
+                clause: "profile",
+                column: at,
+                line: None,
+            });
         }
         if whole_g_code(b, &[65, 66]) {
             return Ok(());
@@ -3903,18 +4049,57 @@ impl Converter {
         let Some(w) = first_word(b, b'F') else {
             return Ok(());
         };
+        // the code the source writes for its reset mode, where the target reads it alike
+        let code = if lathe {
+            let a = if source == 95 { 99 } else { 98 };
+            self.c.src_modal.g_system.from_a(a)
+        } else {
+            Some(source)
+        };
+        let advice = match code
+            .filter(|&c| self.target_feed_mode(self.c.src_modal.read_g(c)) == Some(source))
+        {
+            Some(c) => {
+                format!("write G{c} before the first F in the source (both controls read it so)")
+            }
+            None => "the source's code of that mode is another code (or none) on the target, so \
+                     the program cannot be converted to this target as it stands: write it for \
+                     the target"
+                .to_string(),
+        };
         Err(ConvertError {
             message: format!(
-                "{}: a feed per revolution by the source control's reset state (no feed mode \
-                 code written before it), where the target's reset feeds per minute, so the \
-                 feed would be another; tapegate does not write the feed mode: write G99 (or \
-                 G95) in the source, or the feed per minute",
-                text(w.token)
+                "{}: a feed {} by the source control's reset state (no feed mode code written \
+                 before it), where the target's reset feeds {}, so the feed would be another; \
+                 tapegate does not write the feed mode: {advice}",
+                text(w.token),
+                name(source),
+                name(target)
             ),
             clause: "profile",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
+    }
+
+    /// The feed mode (`modal::feed_mode_code`) the target reads the source's code `g` (by
+    /// the source's system A number) as, written as the conversion writes it: between two
+    /// FANUC lathes of different G code systems by the target's number of the function, else
+    /// by the number written.
+    fn target_feed_mode(&self, g: i64) -> Option<i64> {
+        let lathe = self.c.src_modal.fanuc_lathe;
+        if self.renumbers() {
+            return crate::modal::feed_mode_code(true, g);
+        }
+        let written = if lathe {
+            self.c.src_modal.g_system.from_a(g)?
+        } else {
+            g
+        };
+        match self.c.target_g_system {
+            Some(system) => crate::modal::feed_mode_code(true, system.to_a(written)),
+            None => crate::modal::feed_mode_code(false, written),
+        }
     }
 
     /// A FANUC or Haas lathe's T word (`T0101`: tool 1 with offset 1, the last two digits the
@@ -8075,6 +8260,22 @@ fn whole_g_code(b: &BlockIn<'_>, codes: &[i64]) -> bool {
     })
 }
 
+/// A word's value written as a number that is zero (`0`, `-0.`, `0.000`, `+0`): no parameter,
+/// no expression.
+fn literal_zero(value: &[u8]) -> bool {
+    let digits = value.iter().filter(|c| !c.is_ascii_whitespace());
+    let mut zero = false;
+    for (i, &c) in digits.enumerate() {
+        match c {
+            b'0' => zero = true,
+            b'.' => {}
+            b'+' | b'-' if i == 0 => {}
+            _ => return false,
+        }
+    }
+    zero
+}
+
 /// A block's first word of this address letter (either case).
 fn first_word<'a>(b: &BlockIn<'a>, letter: u8) -> Option<&'a WordSpan<'a>> {
     b.words
@@ -8324,9 +8525,10 @@ mod tests {
             one_group_codes: Vec::new(),
             x_diameter: false,
             x_radius: false,
-            reset_feed_per_rev: false,
+            reset_feed: None,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
+            target_alarm_g: false,
             listed_codes: None,
             src_decimal_g: None,
             src_listed: None,

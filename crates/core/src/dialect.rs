@@ -368,6 +368,46 @@ pub fn skips_leader(family: Family, haas: bool) -> bool {
     family == Family::MacroB && !haas
 }
 
+/// How a control that reads the text after a program's first `%` (ISO 6983-1 clause 4: the
+/// program start, then an identification before the first end of block; a Haas, an Okuma)
+/// takes `ident`, that text: None where it reads it as the identification (blank, a comment
+/// `(TITLE)`, digits and signs such as `:0003`), [`LeaderText::Words`] where it begins like a
+/// word (`O0003`, `X-1`: TG111 of its check, words before the first end of block),
+/// [`LeaderText::Letters`] where it holds letters outside a leading `(` (`TITLE`: TG112).
+/// LinuxCNC reads no text there at all (rs274: "Bad character '%' used").
+pub fn leader_text(ident: &[u8]) -> Option<LeaderText> {
+    let bytes = ident.trim_ascii_start();
+    if bytes.trim_ascii_end().is_empty() {
+        return None;
+    }
+    let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
+        let rest = match bytes.get(1) {
+            Some(b'+' | b'-') => &bytes[2..],
+            _ => &bytes[1..],
+        };
+        rest.first().is_some_and(u8::is_ascii_digit)
+    };
+    if wordlike {
+        Some(LeaderText::Words)
+    } else if String::from_utf8_lossy(bytes)
+        .chars()
+        .any(char::is_alphabetic)
+        && bytes.first() != Some(&b'(')
+    {
+        Some(LeaderText::Letters)
+    } else {
+        None
+    }
+}
+
+/// What [`leader_text`] finds after a `%` that a reading control does not take for its
+/// identification.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LeaderText {
+    Words,
+    Letters,
+}
+
 /// The program number (`O0001`, `O7997A`) or name (`<PART_A>`) that a skipped leader
 /// ([`skips_leader`]) begins with, after blanks, and so loses: `letter` is the profile's
 /// program number address.

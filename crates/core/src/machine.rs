@@ -301,7 +301,10 @@ impl Machine {
                 && out.diameter,
             // (an ISO 6983-1 lathe target says nothing of how its machine reads X)
             x_radius: source.diameter && !out.diameter && !target.lathe,
-            reset_feed_per_rev: per_rev(&source.modal) && !per_rev(&out.modal),
+            // (an ISO 6983-1 profile without a `reset` list resets to clause 14's G94, a lathe
+            // too: 14.4)
+            reset_feed: (reset_feed(&source.modal) != reset_feed(&out.modal))
+                .then(|| [reset_feed(&source.modal), reset_feed(&out.modal)]),
             // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
             percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
                 && !crate::dialect::skips_leader(out.family, out.haas)
@@ -335,6 +338,7 @@ impl Machine {
                 one_group_codes(source, out)
             },
             listed_codes: either_lists(self, target),
+            target_alarm_g: out.alarm_g,
             src_listed: (self.family != Family::Iso).then(|| self.listed.clone()),
             src_decimal_g: (self.family != Family::Iso)
                 .then(|| source.g_decimal.iter().map(|(c, _)| c.clone()).collect()),
@@ -356,13 +360,16 @@ impl Machine {
     }
 }
 
-/// Whether a control's reset state feeds per revolution: G95 (system A's numbers), or a
-/// FANUC or Haas lathe's G99.
-fn per_rev(modal: &crate::modal::ModalSettings) -> bool {
+/// The feed mode of a control's reset state ([`crate::modal::feed_mode_code`]'s numbers): the last feed
+/// mode code of its reset list (a FANUC lathe's G99, an Okuma lathe's G95, clause 14's G94),
+/// per minute (94) where the list has none (HEIDENHAIN's).
+pub fn reset_feed(modal: &crate::modal::ModalSettings) -> i64 {
     modal
         .reset
         .iter()
-        .any(|&g| g == 95 || (modal.fanuc_lathe && g == 99))
+        .filter_map(|&g| crate::modal::feed_mode_code(modal.fanuc_lathe, g))
+        .next_back()
+        .unwrap_or(94)
 }
 
 /// The G and M codes two profiles both list in modal groups that differ, as the profiles' `codes`
@@ -468,13 +475,15 @@ pub fn differing_codes(
     out
 }
 
-/// Why the target's check refuses code `n` of `letter` (as `check::codes` reads a code: TG303
-/// where an ISO 6983-1 table leaves it permanently unassigned, TG306 where the control alarms
-/// on a code its table lacks), or None where the target reads it. Whatever the source's table
-/// says of the code (a SINUMERIK's `G28`, which its own table lacks), the target refuses the
-/// block, so the conversion does. ISO
-/// 6983-1 Annex E: a permanently unassigned code (G28 of the standard's table) is no code of
-/// the standard, whatever a FANUC or a SINUMERIK does with its number.
+/// Why the target's check refuses code `n` of `letter` that its table holds: TG303 where an
+/// ISO 6983-1 table leaves it permanently unassigned (ISO 6983-1 Annex E: G28 of the
+/// standard's table is no code of the standard, whatever a FANUC or a SINUMERIK does with its
+/// number). Whatever the source's table says of the code (a SINUMERIK's `G28`, which its own
+/// table lacks), the target refuses the block, so the conversion does. None for every other
+/// code, and for one the target's table lacks: a code the source lists and the target does
+/// not is refused by [`target_only`]'s and `differing_codes`' lists ("no such code"), one
+/// neither lists by the converter where the target alarms on it (TG306:
+/// `ConvertConfig::target_alarm_g`), and carried with a note where it does not.
 fn target_refuses(target: &Config, letter: u8, n: usize) -> Option<String> {
     let codes = if letter == b'G' {
         &target.g_codes

@@ -1063,6 +1063,19 @@ fn in_units(length: Dec, to: Units) -> Option<Dec> {
     }
 }
 
+/// The feed mode a G code selects on a control, by ISO 6983-1's numbers (93 inverse time, 94
+/// per minute, 95 per revolution): a FANUC or Haas lathe's G98/G99 (system A's numbers: `a`
+/// is the code as `ModalSettings::read_g` reads it), every other control's G93-G95. None for
+/// a code that selects no feed mode there (a system A lathe's G95, a mill's G99).
+pub fn feed_mode_code(fanuc_lathe: bool, a: i64) -> Option<i64> {
+    match (fanuc_lathe, a) {
+        (true, 98) => Some(94),
+        (true, 99) => Some(95),
+        (false, 93..=95) => Some(a),
+        _ => None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

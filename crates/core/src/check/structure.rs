@@ -1365,14 +1365,6 @@ impl Checker {
         if stripped.is_empty() {
             return;
         }
-        let bytes = ident.trim_start().as_bytes();
-        let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
-            let rest = match bytes.get(1) {
-                Some(b'+' | b'-') => &bytes[2..],
-                _ => &bytes[1..],
-            };
-            rest.first().is_some_and(u8::is_ascii_digit)
-        };
         if matches!(self.config.family, Family::Sinumerik | Family::Heidenhain) {
             return;
         }
@@ -1380,18 +1372,22 @@ impl Checker {
             self.leader_skipped(b.line, stripped);
             return;
         }
-        if wordlike {
-            let message = format!(
-                "words after % ({}): the first block must follow an end of block",
-                py_repr(stripped)
-            );
-            self.report(Rule::WordsOnPercentLine, message, b.line, 2);
-        } else if ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(') {
-            let message = format!(
-                "identification {} contains letters and must be enclosed in parentheses",
-                py_repr(stripped)
-            );
-            self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
+        match dialect::leader_text(b.ident) {
+            Some(dialect::LeaderText::Words) => {
+                let message = format!(
+                    "words after % ({}): the first block must follow an end of block",
+                    py_repr(stripped)
+                );
+                self.report(Rule::WordsOnPercentLine, message, b.line, 2);
+            }
+            Some(dialect::LeaderText::Letters) => {
+                let message = format!(
+                    "identification {} contains letters and must be enclosed in parentheses",
+                    py_repr(stripped)
+                );
+                self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
+            }
+            None => {}
         }
     }
 
