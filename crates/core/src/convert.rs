@@ -2873,6 +2873,7 @@ impl Converter {
             }
             self.linuxcnc_e_word(b, &ms, motion)?;
             if other {
+                self.linuxcnc_m98_alone(b, &ms)?;
                 self.linuxcnc_data_words(b, &gs, &ms, motion)?;
                 self.linuxcnc_arc_turns(b, &ms, motion)?;
                 self.linuxcnc_mixed_arc(b, motion)?;
@@ -4232,6 +4233,67 @@ impl Converter {
     /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
     /// mode a moving block runs is unknown (`motion` None), the E is converted as before (a
     /// G76's taper).
+    /// A FANUC or Haas M98 sharing its block with other words (`G1 X10. F100. M98 P100`: the
+    /// move, then the call), which LinuxCNC reads only as its block's first word with its P
+    /// and L alone ([`crate::meaning::linuxcnc_m98_stray`]; review 28, finding 3: converted
+    /// "ok", and rs274 refused it, "Unknown m code used: M98"). Refused, naming the word.
+    fn linuxcnc_m98_alone(&self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+        if !ms.contains(&98) {
+            return Ok(());
+        }
+        let is_m98 = |t: &[u8]| {
+            t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
+                && t.len() > 1
+                && t[1..].iter().all(u8::is_ascii_digit)
+                && t[1..].iter().skip_while(|&&c| c == b'0').eq(b"98".iter())
+        };
+        let Some(m98) = b.words.iter().position(|w| is_m98(w.token)) else {
+            return Ok(());
+        };
+        let at = b.words[m98].start;
+        let mut letters: Vec<u8> = b
+            .words
+            .iter()
+            .map(|w| w.token[0].to_ascii_uppercase())
+            .collect();
+        let before_it =
+            b.comments.iter().any(|&(c, _)| c < at) || b.statements.iter().any(|&(c, _, _)| c < at);
+        if before_it {
+            letters.insert(0, b'(');
+        }
+        let shift = usize::from(before_it);
+        let Some((i, before)) = crate::meaning::linuxcnc_m98_stray(&letters, m98 + shift) else {
+            return Ok(());
+        };
+        let (word, start) = if before {
+            (b.words[m98].token, at)
+        } else {
+            (b.words[i - shift].token, b.words[i - shift].start)
+        };
+        let why = if before {
+            "LinuxCNC reads M98 only as its block's first word, after the N (rs274ngc \
+             interp_read.cc read_o: \"Unknown m code used: M98\")"
+        } else {
+            "LinuxCNC reads M98 as a call with its P and L alone (rs274ngc interp_read.cc \
+             read_o) and refuses the block's other words or does not run them"
+        };
+        Err(ConvertError {
+            message: format!(
+                "{} {}: {why}; tapegate does not split the block: put the other words in a \
+                 block of their own before the M98",
+                text(word),
+                if before {
+                    "after other words or a comment of its block"
+                } else {
+                    "after M98"
+                }
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, start),
+            line: None,
+        })
+    }
+
     fn linuxcnc_e_word(
         &self,
         b: &BlockIn<'_>,
