@@ -3881,7 +3881,9 @@ impl Converter {
     /// and as a radius, and no increment under G91 (`G28 X0`, `G53 X0`, a lathe's drilling
     /// on the axis); the first X of another value (or a parameter's) is refused. For a target
     /// that is no lathe, a FANUC, Haas or Okuma lathe's U that moves the tool (an increment of
-    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused.
+    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused;
+    /// so is its W in a move (an increment of Z, an axis of its own on a FANUC or ISO mill:
+    /// `W0` too), and for a lathe a mill's Y other than `Y0` (review 28).
     fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
@@ -3903,13 +3905,48 @@ impl Converter {
         // X0 (U0) is the spindle axis read as a diameter and as a radius alike (and no
         // increment under G91): the same place on both machines; a parameter's or an
         // expression's value is not known here, so refused with any other number
+        // its W moving the tool, an increment of Z, is on a FANUC or ISO mill an axis of its
+        // own moved to an absolute place (LinuxCNC's: `lathe_uw_for_linuxcnc`); a mill's Y
+        // has no axis on a lathe (review 28, from fix27's report: both were carried "ok")
+        let w_axis = u && self.c.target_family != Family::LinuxCnc;
+        let y_axis = self.c.x_diameter;
         let Some(w) = b.words.iter().find(|w| {
             let letter = w.token[0].to_ascii_uppercase();
-            (letter == b'X' || u && letter == b'U') && !literal_zero(&w.token[1..])
+            // (W0 too: no move on the lathe, a move to W0 on the mill)
+            w_axis && letter == b'W'
+                || (letter == b'X' || u && letter == b'U' || y_axis && letter == b'Y')
+                    && !literal_zero(&w.token[1..])
         }) else {
             return Ok(());
         };
-        if self.c.x_radius && w.token[0].eq_ignore_ascii_case(&b'U') {
+        let letter = w.token[0].to_ascii_uppercase();
+        if letter == b'W' {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source lathe reads W as an increment of Z, the target as an axis \
+                     of its own moved to that place, so the move would be another; tapegate \
+                     does not rename it: write the program for the target",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
+        if letter == b'Y' {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source mill moves Y, an axis the target lathe's plane (G18, X and \
+                     Z) does not hold; tapegate does not convert a mill's program for a lathe: \
+                     write it for the lathe",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
+        if self.c.x_radius && letter == b'U' {
             return Err(ConvertError {
                 message: format!(
                     "{}: the source lathe reads U as an increment of X, a diameter (U20. moves \
