@@ -932,3 +932,25 @@ def test_a_value_after_a_value_in_brackets_is_named_so():
     unclosed = [f for f in check_text("O1\nG21 G90\nG0 X[1\nM30\n", load_profile("fanuc-mill"))
                 if f.rule == "TG100"]
     assert [f.message for f in unclosed] == ["'[' without a closing ']' in the expression"]
+
+
+@pytest.mark.parametrize("block, word", [
+    ("G1 X10. F100. M98 P100", "<input>:4:15: M98 after other words or a comment of its block"),
+    ("G2 X10. Y0 R5. F100. M98 P100", "<input>:4:22: M98 after other words"),
+    ("M98 P100 M08", "<input>:4:10: M08 after M98"),
+    ("(CALL) M98 P100", "<input>:4:8: M98 after other words or a comment"),
+])
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+def test_m98_beside_other_words_is_refused_for_linuxcnc(source, block, word):
+    """Review 28, finding 3: a FANUC/Haas block that moves and then calls (`G1 X10. F100.
+    M98 P100`) was converted "ok" to LinuxCNC, which refuses M98 after other words ("Unknown
+    m code used: M98", rs274ngc interp_read.cc read_o) and runs none of the words after its
+    P and L. Refused, naming the word; the block as LinuxCNC reads it converts."""
+    text = f"O1000\nG21 G17 G90\nG0 X0 Y0 Z5.\n{block}\nM30\n"
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, "linuxcnc")
+    assert word in str(e.value)
+    assert "tapegate does not split the block" in str(e.value)
+    split = text.replace(block, "G1 X10. F100.\nM98 P100 L2")
+    assert convert(split, source, "linuxcnc").splitlines()[3:5] == ["G1 X10. F100.",
+                                                                    "M98 P100 L2"]

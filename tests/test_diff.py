@@ -833,3 +833,36 @@ def test_without_a_profile_a_g20_program_keeps_its_units_through_m30(tmp_path: P
                          "heidenhain-iso")}
     assert kept == {"fanuc-mill": True, "haas-lathe": True, "linuxcnc": True,
                     "iso-mill": False, "sinumerik-840d": False, "heidenhain-iso": False}
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("other, target", [
+    ("G20\nG04 P150\nM30\n", None),  # 0.15 s, the inch length format's reading of X1500
+    ("G20\nG04 P1500\nM30\n", None),  # 1.5 s, the increment system's reading
+    ("G21\nG04 X1500\nM30\n", None),
+    ("g20\ng4 p0.15\nm30\n", "linuxcnc"),
+])
+def test_a_dwell_s_x_without_a_point_under_g20_is_never_the_same(tmp_path, source, other,
+                                                                  target):
+    """Review 28, finding 2: `G20 G04 X1500` was read with X's inch length format, 0.15 s,
+    and called "the same program" as `G04 P150` and LinuxCNC's `G4 P0.15`; the
+    FANUC-compatible ISO mode's table gives X's time unit by the increment system alone
+    (0.001 s at IS-B: 1.5 s), and no source at hand settles whether G20 changes it. Such a
+    dwell keeps its own word: a difference against any other form, the same against its
+    own text."""
+    a = write(tmp_path, "a.nc", "G20\nG04 X1500\nM30\n")
+    b = write(tmp_path, "b.ngc" if target else "b.nc", other)
+    args = ["diff", a, b, "-p", target or source] + (["--from", source] if target else [])
+    result = run(*args)
+    assert result.exit_code == 1, result.output
+    assert "differ: 1 block changed" in result.output, result.output
+    assert "X1500 removed" in result.output or "X1500 -> X1500" in result.output
+    result = run("diff", a, a, "-p", source)
+    assert result.exit_code == 0 and "the same program" in result.output, result.output
+    # with a point, or under G21, the dwell is still compared by its time
+    pointed = write(tmp_path, "c.nc", "G20\nG04 X1.5\nM30\n")
+    ms = write(tmp_path, "d.nc", "G20\nG04 P1500\nM30\n")
+    assert run("diff", pointed, ms, "-p", source).exit_code == 0
+    metric = write(tmp_path, "e.nc", "G21\nG04 X1500\nM30\n")
+    metric_ms = write(tmp_path, "f.nc", "G21\nG04 P1500\nM30\n")
+    assert run("diff", metric, metric_ms, "-p", source).exit_code == 0

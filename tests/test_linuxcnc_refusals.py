@@ -760,3 +760,48 @@ def test_a_fanuc_arc_with_r_and_i_j_k_passes_the_fanuc_check():
             "G2 X2. Y0 R0.5 I0.5\nM30\n%\n")
     found = [f for f in check_text(text, load_profile("fanuc-mill")) if f.severity == "error"]
     assert found == [], found
+
+
+M98_SUB = "\nO100\nG0 Z1.\nM99\n"  # a FANUC-style subprogram, which M98 calls
+
+
+@pytest.mark.parametrize("block, column, message", [
+    ("G1 X10. F100. M98 P100", 15, "Unknown m code used: M98 (rs274ngc)"),
+    ("M8 M98 P100", 4, "Unknown m code used: M98 (rs274ngc)"),
+    ("(call) M98 P100", 8, "Unknown m code used: M98 (rs274ngc)"),
+    ("#1=2 M98 P100", 6, "Unknown m code used: M98 (rs274ngc)"),
+    ("M98 P100 X5.", 10, "X5. beside M98: LinuxCNC reads M98 as a call with its P and L alone"),
+    ("M98 P100 G1 X10. F100.", 10, "G1 beside M98"),
+    ("M98 P100 M8", 10, "M8 beside M98"),
+])
+def test_m98_beside_other_words_is_refused_as_rs274_reads_it(tmp_path, block, column, message):
+    """Review 28, finding 3: LinuxCNC reads M98 where an O word stands, as the block's first
+    word after its N (rs274ngc interp_read.cc read_o), then the call's P and L: a word before
+    it is refused ("Unknown m code used: M98"), a word after it refused or not run at all
+    (`M98 P100 G1 X10. F100. M8` calls and neither moves nor turns the coolant on). The check
+    had no error for either."""
+    text = program(block).replace("M2\n", "M2" + M98_SUB)
+    found = [(f.rule, f.line, f.column, f.message)
+             for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert len(found) == 1, found
+    assert found[0][:3] == ("TG412", 3, column)
+    assert message in found[0][3]
+    out = rs274_output(tmp_path, text)
+    if message.startswith("Unknown"):
+        assert "Unknown m code used: M98" in out
+    else:
+        # the call runs, the block's other words do not (no move to X5 or X10, no feed move,
+        # no coolant), under the G0 in force too
+        assert "STRAIGHT_TRAVERSE(0.0000, 0.0000, 1.0000" in out
+        assert "STRAIGHT_TRAVERSE(5.0000" not in out and "STRAIGHT_FEED" not in out
+        assert "FLOOD_ON" not in out
+
+
+@pytest.mark.parametrize("block", ["M98 P100", "N5 M98 P100 L2", "M98 P100 (call)",
+                                   "/M98 P100"])
+def test_m98_first_with_its_p_and_l_is_clean(tmp_path, block):
+    text = program(block).replace("M2\n", "M2" + M98_SUB)
+    assert errors(text) == []
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(0.0000, 0.0000, 1.0000" in out  # the subprogram ran
+    assert "PROGRAM_END" in out

@@ -1813,3 +1813,63 @@ def test_the_check_judges_an_axis_given_back_by_its_cancel_and_the_restart_waits
     y_off = body.replace("N7 G50.1 Y0", "N7 G50.1 X0").replace("N11 G00 X0 Y0", "N11 G00 Y0")
     said = refusal(y_off.format(second, "420."), 13)
     assert "the position of X is not known here (line 9: G50.1 ends the mirror image" in said
+
+
+TILT = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G00 G43 H1 Z1.\n"
+        "N4 G01 X0 Y0 F100.\nN5 {on}\nN7 G00 X10. Y20. Z5.\nN9 G69\nN10 G00 X5.\nN11 G00 Z2.\n"
+        "N12 G01 X50.\nM30\n%\n")  # N5 is line 7, N9 line 9, N10 line 10, N11 line 11
+
+
+@pytest.mark.parametrize("on", ["G68.2 X0 Y0 Z0 I0 J30. K0", "G68.3 X0 Y0 Z0 R30.",
+                                "G68.4 X0 Y0 Z0 I0 J30. K0"])
+def test_a_fanuc_tilted_working_plane_in_force_refuses_and_its_moves_are_lost_at_g69(on):
+    """Review 28, finding 1: FANUC's tilted working plane (G68.2, G68.3, G68.4, all ended by
+    G69, fanuc-mill.toml) in force is a frame the preamble cannot restore: refused, naming it
+    (G68.3/G68.4 were planned without it). The axes moved under it stand at the tilted point
+    after G69, as a G68 rotation's do: unknown until given again (they were planned as known).
+    A move of one axis in a tilted plane moves all three."""
+    code = on.split()[0]
+    in_force = TILT.format(on=on).replace("N9 G69\n", "")
+    assert refusal(in_force, 10) == (
+        f"cannot restart here: {code} (tilted working plane) from line 7 is in force and the "
+        "preamble cannot restore it")
+    text = TILT.format(on=on)
+    assert refusal(text, 11) == (
+        "cannot restart here: the position of Y is not known here (line 9: G69 ends the tilted "
+        "working plane: the tool stands where the transformed moves left it, not at the number "
+        "the program wrote)")
+    # X alone moved under it: Y and Z, which it moved too, are lost as well
+    one = text.replace("N7 G00 X10. Y20. Z5.", "N7 G00 X10.")
+    assert "the position of Y is not known here (line 9: G69 ends the tilted" in refusal(one, 11)
+    # once every axis is given absolutely after G69, the restart is planned from there
+    given = text.replace("N10 G00 X5.", "N10 G00 X5. Y6. Z7.")
+    assert plan(given, 11).preamble[-3:] == ["G00 G43 Z7. H1", "G00 X5. Y6.", "F100."]
+    # set and cancelled with no move under it: the position is as it was
+    idle = text.replace("N7 G00 X10. Y20. Z5.\n", "")
+    assert plan(idle, 10).preamble[-3:] == ["G00 G43 Z1. H1", "G00 X5. Y0", "F100."]
+
+
+def test_a_mirror_cancel_under_a_tilted_plane_loses_every_axis_moved():
+    """Review 28, finding 1 (third case): under G68.2 and G51.1 X0, a move of Y and Z is under
+    the tilted plane too: lost at the mirror's cancel (fix26's per-axis narrowing kept only X,
+    so the restart was planned at Y20.)."""
+    text = TILT.format(on="G68.2 X0 Y0 Z0 I0 J30. K0\nN6 G51.1 X0").replace(
+        "N9 G69", "N8 G50.1 X0\nN9 G69")  # N8 is line 10, N11 line 13
+    assert refusal(text, 13) == (
+        "cannot restart here: the position of Y is not known here (line 10: G50.1 ends the "
+        "mirror image: the tool stands where the transformed moves left it, not at the number "
+        "the program wrote)")
+
+
+def test_a_send_restart_under_a_tilted_plane_is_refused_by_the_cli(tmp_path):
+    """The same through `send --restart-at`: refused, nothing sent, the cause named."""
+    path = tmp_path / "tilt.nc"
+    path.write_text(TILT.format(on="G68.4 X0 Y0 Z0 I0 J30. K0").replace("N9 G69\n", ""))
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    result = CliRunner().invoke(main, ["send", "-p", "fanuc-mill", "--port", "loop://",
+                                       "--restart-at", "N11", "-y", "--xon-timeout", "1",
+                                       str(path)])
+    assert result.exit_code == 1
+    assert "G68.4 (tilted working plane) from line 7 is in force" in result.output

@@ -2873,6 +2873,7 @@ impl Converter {
             }
             self.linuxcnc_e_word(b, &ms, motion)?;
             if other {
+                self.linuxcnc_m98_alone(b, &ms)?;
                 self.linuxcnc_data_words(b, &gs, &ms, motion)?;
                 self.linuxcnc_arc_turns(b, &ms, motion)?;
                 self.linuxcnc_mixed_arc(b, motion)?;
@@ -3880,7 +3881,9 @@ impl Converter {
     /// and as a radius, and no increment under G91 (`G28 X0`, `G53 X0`, a lathe's drilling
     /// on the axis); the first X of another value (or a parameter's) is refused. For a target
     /// that is no lathe, a FANUC, Haas or Okuma lathe's U that moves the tool (an increment of
-    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused.
+    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused;
+    /// so is its W in a move (an increment of Z, an axis of its own on a FANUC or ISO mill:
+    /// `W0` too), and for a lathe a mill's Y other than `Y0` (review 28).
     fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
@@ -3902,13 +3905,48 @@ impl Converter {
         // X0 (U0) is the spindle axis read as a diameter and as a radius alike (and no
         // increment under G91): the same place on both machines; a parameter's or an
         // expression's value is not known here, so refused with any other number
+        // its W moving the tool, an increment of Z, is on a FANUC or ISO mill an axis of its
+        // own moved to an absolute place (LinuxCNC's: `lathe_uw_for_linuxcnc`); a mill's Y
+        // has no axis on a lathe (review 28, from fix27's report: both were carried "ok")
+        let w_axis = u && self.c.target_family != Family::LinuxCnc;
+        let y_axis = self.c.x_diameter;
         let Some(w) = b.words.iter().find(|w| {
             let letter = w.token[0].to_ascii_uppercase();
-            (letter == b'X' || u && letter == b'U') && !literal_zero(&w.token[1..])
+            // (W0 too: no move on the lathe, a move to W0 on the mill)
+            w_axis && letter == b'W'
+                || (letter == b'X' || u && letter == b'U' || y_axis && letter == b'Y')
+                    && !literal_zero(&w.token[1..])
         }) else {
             return Ok(());
         };
-        if self.c.x_radius && w.token[0].eq_ignore_ascii_case(&b'U') {
+        let letter = w.token[0].to_ascii_uppercase();
+        if letter == b'W' {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source lathe reads W as an increment of Z, the target as an axis \
+                     of its own moved to that place, so the move would be another; tapegate \
+                     does not rename it: write the program for the target",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
+        if letter == b'Y' {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the source mill moves Y, an axis the target lathe's plane (G18, X and \
+                     Z) does not hold; tapegate does not convert a mill's program for a lathe: \
+                     write it for the lathe",
+                    text(w.token)
+                ),
+                clause: "profile",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
+        if self.c.x_radius && letter == b'U' {
             return Err(ConvertError {
                 message: format!(
                     "{}: the source lathe reads U as an increment of X, a diameter (U20. moves \
@@ -4232,6 +4270,67 @@ impl Converter {
     /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
     /// mode a moving block runs is unknown (`motion` None), the E is converted as before (a
     /// G76's taper).
+    /// A FANUC or Haas M98 sharing its block with other words (`G1 X10. F100. M98 P100`: the
+    /// move, then the call), which LinuxCNC reads only as its block's first word with its P
+    /// and L alone ([`crate::meaning::linuxcnc_m98_stray`]; review 28, finding 3: converted
+    /// "ok", and rs274 refused it, "Unknown m code used: M98"). Refused, naming the word.
+    fn linuxcnc_m98_alone(&self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+        if !ms.contains(&98) {
+            return Ok(());
+        }
+        let is_m98 = |t: &[u8]| {
+            t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
+                && t.len() > 1
+                && t[1..].iter().all(u8::is_ascii_digit)
+                && t[1..].iter().skip_while(|&&c| c == b'0').eq(b"98".iter())
+        };
+        let Some(m98) = b.words.iter().position(|w| is_m98(w.token)) else {
+            return Ok(());
+        };
+        let at = b.words[m98].start;
+        let mut letters: Vec<u8> = b
+            .words
+            .iter()
+            .map(|w| w.token[0].to_ascii_uppercase())
+            .collect();
+        let before_it =
+            b.comments.iter().any(|&(c, _)| c < at) || b.statements.iter().any(|&(c, _, _)| c < at);
+        if before_it {
+            letters.insert(0, b'(');
+        }
+        let shift = usize::from(before_it);
+        let Some((i, before)) = crate::meaning::linuxcnc_m98_stray(&letters, m98 + shift) else {
+            return Ok(());
+        };
+        let (word, start) = if before {
+            (b.words[m98].token, at)
+        } else {
+            (b.words[i - shift].token, b.words[i - shift].start)
+        };
+        let why = if before {
+            "LinuxCNC reads M98 only as its block's first word, after the N (rs274ngc \
+             interp_read.cc read_o: \"Unknown m code used: M98\")"
+        } else {
+            "LinuxCNC reads M98 as a call with its P and L alone (rs274ngc interp_read.cc \
+             read_o) and refuses the block's other words or does not run them"
+        };
+        Err(ConvertError {
+            message: format!(
+                "{} {}: {why}; tapegate does not split the block: put the other words in a \
+                 block of their own before the M98",
+                text(word),
+                if before {
+                    "after other words or a comment of its block"
+                } else {
+                    "after M98"
+                }
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, start),
+            line: None,
+        })
+    }
+
     fn linuxcnc_e_word(
         &self,
         b: &BlockIn<'_>,

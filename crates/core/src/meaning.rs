@@ -452,6 +452,26 @@ pub fn linuxcnc_unused(letter: u8) -> &'static str {
     }
 }
 
+/// LinuxCNC's M98 (the FANUC-style call, LinuxCNC 2.8 on) is read where an O word stands:
+/// as the block's first word, after its N alone (rs274ngc interp_read.cc `read_o`, which then
+/// reads the rest of the line for the call's P and L). Given the block's letters in order
+/// (comments and statements before the M98 as a letter other than N), the M98 word's index
+/// `m98`: the first word out of place and whether it stands before M98 (rs274 refuses the
+/// block, "Unknown m code used: M98": `G1 X10. M98 P100`, `M8 M98 P100`) or after it (a word
+/// other than P and L: rs274 refuses it -- "Cannot use axis values without a g code that uses
+/// them" for `M98 P100 X5` -- or runs the call alone and not the word: `M98 P100 G1 X10. M8`
+/// moves nowhere and turns no coolant on, as `rs274 -g` shows). Review 28, finding 3.
+pub fn linuxcnc_m98_stray(letters: &[u8], m98: usize) -> Option<(usize, bool)> {
+    if let Some(i) = letters[..m98].iter().position(|&l| l != b'N') {
+        return Some((i, true));
+    }
+    letters
+        .get(m98 + 1..)?
+        .iter()
+        .position(|&l| !matches!(l, b'P' | b'L'))
+        .map(|i| (m98 + 1 + i, false))
+}
+
 /// Whether rs274ngc lets a block have an I, J, K, L, P, Q or R word (interp_check.cc
 /// `check_other_codes`): its G codes (`codes`, in tenths) or M codes (`ms`) use it, or the
 /// motion it runs (`motion`, in tenths: its own motion code, or the mode in force where it
@@ -1112,5 +1132,14 @@ mod tests {
         assert_eq!(roles("BHC X=XPOS Y50 I50 J0 K6"), Some(Err(4)));
         assert_eq!(roles("BHC X1 Y1 I5 J0 K6 R2"), Some(Err(19)));
         assert_eq!(roles("CALL OSUB"), None);
+    }
+    #[test]
+    fn linuxcnc_reads_m98_first_with_its_p_and_l_alone() {
+        assert_eq!(linuxcnc_m98_stray(b"MP", 0), None);
+        assert_eq!(linuxcnc_m98_stray(b"NMPL", 1), None);
+        assert_eq!(linuxcnc_m98_stray(b"GXFMP", 3), Some((0, true)));
+        assert_eq!(linuxcnc_m98_stray(b"NMMP", 2), Some((1, true)));
+        assert_eq!(linuxcnc_m98_stray(b"MPGX", 0), Some((2, false)));
+        assert_eq!(linuxcnc_m98_stray(b"MPLM", 0), Some((3, false)));
     }
 }

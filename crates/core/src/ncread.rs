@@ -1302,9 +1302,19 @@ impl Reader {
         // X1.5` and its conversion `G4 P1.5`, both 1.5 s, are one word of the key P, as `G04
         // P1500` (milliseconds, read in seconds above) is. SINUMERIK's S is revolutions of
         // the spindle, no time: its own key
+        // A FANUC or Haas dwell's X or U without a point under G20 is left out: read with the
+        // inch length format it is a tenth of the time the same number is under G21 (`G20
+        // G04 X1500`, 0.15 s), and no source at hand says whether the control's time unit
+        // follows G20 (the FANUC-compatible ISO mode's table gives X's unit by the increment
+        // system alone: SINUMERIK 840D ISO Milling, 3.3.1 "Dwell (G04)", by which it is 1.5
+        // s). It keeps its own key, so it is never "the same" as a P or a time with a point
+        // (review 28, finding 2: it was the same as `G04 P150` and as LinuxCNC's `G4 P0.15`)
+        let inch_in_doubt =
+            dwell && inch && letter != b'P' && !w.point && self.settings.family == Family::MacroB;
         if dwell
             && w.index.is_empty()
             && !(self.settings.family == Family::Sinumerik && letter == b'S')
+            && !inch_in_doubt
         {
             key = vec![b'P'];
         }

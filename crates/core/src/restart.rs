@@ -79,7 +79,13 @@ const OKUMA_UNRESTORED: [(i64, i64, &str); 3] = [
     (51, 50, "scaling"),
     (69, 68, "3-D coordinate system conversion"),
 ];
-const DECIMAL_UNRESTORED: [&str; 5] = ["54.1", "68.2", "41.1", "42.1", "43.1"];
+const DECIMAL_UNRESTORED: [&str; 4] = ["54.1", "41.1", "42.1", "43.1"];
+/// FANUC's tilted working plane (0i-MF/30i, `fanuc-mill.toml`: G68.2 indexing, G68.3 by the
+/// tool axis direction, G68.4 incremental multi-command), each ended by G69: a 3-D frame the
+/// preamble cannot restore, under which a move of one axis is a move of all three (review 28,
+/// finding 1: G68.3/G68.4 were planned without it, the axes moved under any of the three
+/// counted as known after G69).
+const TILTED_PLANES: [&str; 3] = ["68.2", "68.3", "68.4"];
 
 fn machine_move(g: i64) -> Option<&'static str> {
     match g {
@@ -599,7 +605,7 @@ impl Walk {
             matches!(
                 k.as_str(),
                 "68" | "51" | "51.1" | "51.1?" | "101" | "101?" | "11" | "69" | "62"
-            )
+            ) || TILTED_PLANES.contains(&k.as_str())
         })
     }
 
@@ -633,10 +639,10 @@ impl Walk {
     /// images are the only transforms in force (a mirror of X leaves Y's numbers as written:
     /// FANUC G51.1, Haas G101 mirror the axes they name).
     fn under_transform(&self, bits: u16) -> u16 {
-        let other = self
-            .unrestored
-            .iter()
-            .any(|(k, _, _)| matches!(k.as_str(), "68" | "51" | "11" | "69" | "62"));
+        let other = self.unrestored.iter().any(|(k, _, _)| {
+            matches!(k.as_str(), "68" | "51" | "11" | "69" | "62")
+                || TILTED_PLANES.contains(&k.as_str())
+        });
         if other {
             return bits;
         }
@@ -944,11 +950,12 @@ impl Walk {
             .iter()
             .any(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'T')));
         self.tool(line, &gs, &ms, &plain_words, tool_word, after.length_offset);
-        // a mirror's axes, and a G92 shift's cancel or restore: data, no move
+        // a mirror's axes, a G92 shift's cancel or restore, a tilted plane's origin: data,
+        // no move
         let data = gdec.iter().any(|d| {
             matches!(
                 d.as_slice(),
-                b"51.1" | b"50.1" | b"92.1" | b"92.2" | b"92.3"
+                b"51.1" | b"50.1" | b"92.1" | b"92.2" | b"92.3" | b"68.2" | b"68.3" | b"68.4"
             )
         }) || (self.haas_mill() && gs.iter().any(|&g| g == 100 || g == 101));
         self.positions(line, &gs, &plain_words, after, data);
@@ -1288,6 +1295,13 @@ impl Walk {
             if DECIMAL_UNRESTORED.contains(&text.as_ref()) {
                 self.set_unrestored(&text, line, format!("G{text}"));
             }
+            if TILTED_PLANES.contains(&text.as_ref()) {
+                // one tilted plane replaces another (the same G code group)
+                for key in TILTED_PLANES {
+                    self.drop_unrestored(key);
+                }
+                self.set_unrestored(&text, line, format!("G{text} (tilted working plane)"));
+            }
             if text == "90.1" {
                 self.arc_absolute = true;
             }
@@ -1295,8 +1309,18 @@ impl Walk {
                 self.arc_absolute = false;
             }
         }
-        if gs.contains(&69) {
-            self.drop_unrestored("68.2");
+        // (an Okuma mill's G69 is its 3-D conversion on, no cancel)
+        if gs.contains(&69) && (self.control != Control::Okuma || self.lathe) {
+            let was = self
+                .unrestored
+                .iter()
+                .any(|(k, _, _)| TILTED_PLANES.contains(&k.as_str()));
+            for key in TILTED_PLANES {
+                self.drop_unrestored(key);
+            }
+            if was {
+                self.transform_cancel(line, "G69", "tilted working plane", 0);
+            }
         }
         if gs.contains(&40) {
             self.drop_unrestored("41.1");
@@ -1705,6 +1729,17 @@ impl Walk {
                 .fold(0, |m, i| m | bit(i));
             if self.unrestored.iter().any(|(k, _, _)| k == "68") && bits & pair != 0 {
                 bits |= pair; // a rotation moves both axes of its plane
+            }
+            let tilted = self
+                .unrestored
+                .iter()
+                .any(|(k, _, _)| TILTED_PLANES.contains(&k.as_str()));
+            let space = [b'X', b'Y', b'Z']
+                .iter()
+                .filter_map(|&l| axis_index(l))
+                .fold(0, |m, i| m | bit(i));
+            if tilted && bits & space != 0 {
+                bits |= space; // a tilted plane's move of one axis moves all three
             }
             self.transformed |= self.under_transform(bits);
         }

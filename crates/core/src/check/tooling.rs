@@ -1063,8 +1063,45 @@ impl Checker {
         }
         if let Some((message, letter)) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
+        } else if ms.contains(&98) {
+            if let Some((message, column)) = self.linuxcnc_m98_refusal(b) {
+                self.report(Rule::LinuxCncRefuses, message, b.line, column);
+            }
         }
         unsettles
+    }
+
+    /// An M98 with a word before it, or a word other than P and L after it
+    /// ([`crate::meaning::linuxcnc_m98_stray`]): the message and the column of the word.
+    fn linuxcnc_m98_refusal(&self, b: &BlockView<'_>) -> Option<(String, usize)> {
+        let m98 = b.words.iter().enumerate().position(|(i, w)| {
+            w.letter == b'M' && self.readable[i].is_some_and(|v| v.is_whole() && v.trunc() == 98)
+        })?;
+        let at = b.words[m98].column;
+        let mut letters: Vec<u8> = b.words.iter().map(|w| w.letter).collect();
+        // a comment or statement before the M98 stands before it as well (`(CALL) M98 P100`)
+        let before_it =
+            b.comments.iter().any(|&(c, _)| c < at) || b.statements.iter().any(|&(c, _, _)| c < at);
+        if before_it {
+            letters.insert(0, b'(');
+        }
+        let shift = usize::from(before_it);
+        let (i, before) = crate::meaning::linuxcnc_m98_stray(&letters, m98 + shift)?;
+        if before {
+            let message = "Unknown m code used: M98 (rs274ngc): LinuxCNC reads M98 only as \
+                           its block's first word, after the N (interp_read.cc read_o); put \
+                           the block's other words in a block before it"
+                .to_string();
+            return Some((message, at));
+        }
+        let w = &b.words[i - shift];
+        let message = format!(
+            "{} beside M98: LinuxCNC reads M98 as a call with its P and L alone \
+             (interp_read.cc read_o) and refuses the block's other words or does not run \
+             them (rs274ngc); put them in a block of their own",
+            String::from_utf8_lossy(w.token)
+        );
+        Some((message, w.column))
     }
 
     /// The axes (`modal::bit`) whose current point the block's codes leave not known exactly

@@ -1,0 +1,59 @@
+"""Review 28 (from fix27's report): a lathe's W, an increment of Z, carried "ok" to a mill
+where W is an axis of its own, and a mill's Y carried "ok" to a lathe. Refused by the rule
+that refuses a lathe's X and U across the diameter/length change (`same_x_reading`)."""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.errors import ConversionError
+
+from .test_convert_target_reads import convert
+
+LATHE = "O1000\nG21 G40\nG0 X0 Z5.\n{}\nG0 Z5.\nM30\n"  # the block is line 4
+
+
+def refusal(text: str, source: str, target: str) -> ConversionError:
+    with pytest.raises(ConversionError) as err:
+        convert(text, source, target)
+    return err.value
+
+
+@pytest.mark.parametrize("source", ["fanuc-lathe", "fanuc-lathe-b", "haas-lathe"])
+@pytest.mark.parametrize("target", ["fanuc-mill", "iso-mill"])
+@pytest.mark.parametrize("block, word", [("G0 W-10.", "W-10."), ("G0 Z1. W2.", "W2."),
+                                         ("G0 W0", "W0")])
+def test_a_lathes_moving_w_is_refused_for_a_mill(source, target, block, word):
+    e = refusal(LATHE.format(block), source, target)
+    assert (e.line, e.column) == (4, block.index(word) + 1), e
+    assert e.message.startswith(f"{word}: the source lathe reads W as an increment of Z, the "
+                                "target as an axis of its own"), e.message
+
+
+def test_a_lathes_w_for_linuxcnc_keeps_its_own_refusal_and_a_cycles_w_is_no_move():
+    e = refusal(LATHE.format("G0 W-10."), "fanuc-lathe", "linuxcnc")
+    assert "LinuxCNC reads them as axes of their own" in e.message
+    # W0 moves nothing on the lathe and moves the mill's W axis to 0: refused too
+    e = refusal(LATHE.format("G0 W0"), "fanuc-lathe", "fanuc-mill")
+    assert e.message.startswith("W0: the source lathe reads W as an increment of Z")
+
+
+MILL = "O1000\nG21\nG0 Z5.\n{}\nM30\n"
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("target", ["fanuc-lathe", "fanuc-lathe-b", "haas-lathe"])
+def test_a_mills_y_is_refused_for_a_lathe(source, target):
+    e = refusal(MILL.format("G0 Y10."), source, target)
+    assert (e.line, e.column) == (4, 4), e
+    assert e.message.startswith("Y10.: the source mill moves Y, an axis the target lathe's "
+                                "plane (G18, X and Z) does not hold"), e.message
+    # Y0 (the origin, as X0 the spindle axis) is carried, and a mill program without X or Y
+    # still converts
+    assert "G0 Y0" in convert(MILL.format("G0 Y0"), source, target)
+    assert "G0 Z1." in convert(MILL.format("G0 Z1."), source, target)
+
+
+def test_two_mills_and_two_lathes_keep_their_y_and_w():
+    assert "G0 Y10." in convert(MILL.format("G0 Y10."), "fanuc-mill", "haas-mill")
+    assert "G0 W-10." in convert(LATHE.format("G0 W-10."), "fanuc-lathe-b", "fanuc-lathe")
