@@ -166,11 +166,9 @@ LATHE_B = "O1000\nG21 G40 G97 S500 M3\nG95\nG0 Z5.\n{}\nG1 Z-10. F0.1\nG0 Z5.\nM
 
 
 @pytest.mark.parametrize("block", ["G0 X0 Z5.", "G0 X-0. Z5.", "G0 X0.000", "G28 X0",
-                                   "G53 X0", "M3 S500 X0", "G0 U0 Z5."])
+                                   "G53 X0", "M3 S500 X0"])
 @pytest.mark.parametrize("target", ["linuxcnc", "fanuc-mill", "iso-mill"])
 def test_a_lathes_x0_is_carried_where_the_readings_agree(block, target, tmp_path):
-    if target == "linuxcnc" and "U0" in block:
-        pytest.skip("LinuxCNC's U is an axis of its own: the U/W rule refuses any U")
     if target == "iso-mill" and block.startswith(("G28", "G53")):
         pytest.skip("G28 and G53 are other codes of ISO 6983-1's table: refused at the code")
     out = convert(LATHE_B.format(block), "fanuc-lathe-b", target)
@@ -183,7 +181,7 @@ def test_a_lathes_x0_is_carried_where_the_readings_agree(block, target, tmp_path
 
 @pytest.mark.parametrize("block, word", [("G0 X0.001 Z5.", "X0.001"), ("G0 X#1 Z5.", "X#1"),
                                          ("G0 X[0] Z5.", "X[0]"), ("G28 X2.", "X2."),
-                                         ("G0 U5. Z1.", "U5.")])
+                                         ("G0 U5. Z1.", "U5."), ("G0 U0 Z1.", "U0")])
 @pytest.mark.parametrize("target", ["linuxcnc", "fanuc-mill"])
 def test_a_lathes_x_of_another_or_an_unknown_value_stays_refused(block, word, target):
     e = refusal(LATHE_B.format(block), "fanuc-lathe-b", target)

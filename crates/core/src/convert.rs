@@ -3880,10 +3880,10 @@ impl Converter {
     /// Both ways an X written as zero (`X0`, `X-0.`) passes: the spindle axis as a diameter
     /// and as a radius, and no increment under G91 (`G28 X0`, `G53 X0`, a lathe's drilling
     /// on the axis); the first X of another value (or a parameter's) is refused. For a target
-    /// that is no lathe, a FANUC, Haas or Okuma lathe's U that moves the tool (an increment of
-    /// X, a diameter; on a mill another axis) is read alike: `U0` passes, `U5.` is refused;
-    /// so is its W in a move (an increment of Z, an axis of its own on a FANUC or ISO mill:
-    /// `W0` too), and for a lathe a mill's Y other than `Y0` (review 28).
+    /// that is no lathe, a FANUC, Haas or Okuma lathe's U or W that moves the tool (an
+    /// increment of X, a diameter, or of Z; on a FANUC or ISO mill an axis of its own moved to
+    /// an absolute place, so `U0` and `W0` too) is refused, and for a lathe a mill's Y other
+    /// than `Y0` (review 28).
     fn same_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
@@ -3912,8 +3912,8 @@ impl Converter {
         let y_axis = self.c.x_diameter;
         let Some(w) = b.words.iter().find(|w| {
             let letter = w.token[0].to_ascii_uppercase();
-            // (W0 too: no move on the lathe, a move to W0 on the mill)
-            w_axis && letter == b'W'
+            // (W0 and U0 too: no move on the lathe, a move to W0 or U0 on the mill)
+            w_axis && (letter == b'W' || letter == b'U')
                 || (letter == b'X' || u && letter == b'U' || y_axis && letter == b'Y')
                     && !literal_zero(&w.token[1..])
         }) else {
