@@ -1873,3 +1873,37 @@ def test_a_send_restart_under_a_tilted_plane_is_refused_by_the_cli(tmp_path):
                                        str(path)])
     assert result.exit_code == 1
     assert "G68.4 (tilted working plane) from line 7 is in force" in result.output
+
+
+TCP = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 G00 B0 C0\n"
+       "N4 S1000 M03 G00 {on} H1 Z100.\nN5 G00 X0 Y0\nN6 G00 B30. C10.\n"
+       "N7 G01 X10. Y5. Z20. F100.\n{off}N8 G01 X50.\nM30\n%\n")  # N4 is line 6
+
+
+@pytest.mark.parametrize("on", ["G43.4", "G43.5"])
+def test_a_fanuc_tool_centre_point_control_in_force_refuses(on):
+    """Review 29, finding 1: FANUC's tool centre point control (G43.4 type 1, G43.5 type 2)
+    is a length offset the preamble cannot restore with G43 H: refused where in force, naming
+    it (the plan was G49 ... G00 Z100. with no offset: the tool tip a tool length below the
+    programmed Z). Ended by G49 (or G43), the restart is planned again."""
+    assert refusal(TCP.format(on=on, off=""), 10) == (
+        f"cannot restart here: {on} from line 6 is in force and the preamble cannot restore it")
+    cancelled = TCP.format(on=on, off="N9 G49\n")  # N8 is line 11
+    assert plan(cancelled, 11).preamble
+    # one length offset code replaces another: G43.5 after G43.4 is the one named
+    both = TCP.format(on="G43.4", off="").replace("N7 ", "N7 G43.5 ")
+    assert "G43.5 from line 9 is in force" in refusal(both, 10)
+
+
+def test_g53_1_loses_the_rotary_axes():
+    """Review 29, finding 2: G53.1 (tool axis direction control) turns the rotary axes to the
+    tilted working plane by the control's own sums, and they stay there after G69: unknown
+    until given again (the preamble sent B and C back to their places before the tilt)."""
+    text = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 G00 B0 C0\n"
+            "N4 S1000 M03 G00 G43 H1 Z100.\nN5 G00 X0 Y0\nN6 G68.2 X0 Y0 Z0 I0 J30. K0\n"
+            "N7 G53.1\nN10 G69\nN12 G00 X5. Y5.\nN13 G01 Z2. F100.\nN14 G01 X50.\nM30\n%\n")
+    said = refusal(text, 13)
+    assert said.startswith("cannot restart here: the position of A is not known here (line 9: "
+                           "G53.1 (the tool axis direction control"), said
+    given = text.replace("N12 G00 X5. Y5.", "N12 G00 X5. Y5. A0 B0 C0")
+    assert plan(given, 14).preamble

@@ -79,7 +79,14 @@ const OKUMA_UNRESTORED: [(i64, i64, &str); 3] = [
     (51, 50, "scaling"),
     (69, 68, "3-D coordinate system conversion"),
 ];
-const DECIMAL_UNRESTORED: [&str; 4] = ["54.1", "41.1", "42.1", "43.1"];
+/// Decimal codes whose state the preamble does not write: G54.1 (an extra work system), G41.1 /
+/// G42.1 (normal direction control), and the length offsets it cannot restore with the tool's
+/// H: G43.1 (in the tool axis direction), G43.4 / G43.5 (tool centre point control, types 1
+/// and 2; review 29, finding 1: a restart under them dropped the length offset, the tool tip
+/// one tool length below the programmed Z), each ended by G49 or another length offset code.
+const DECIMAL_UNRESTORED: [&str; 6] = ["54.1", "41.1", "42.1", "43.1", "43.4", "43.5"];
+/// The length offsets among [`DECIMAL_UNRESTORED`], ended by G49 or G43.
+const DECIMAL_LENGTH_OFFSETS: [&str; 3] = ["43.1", "43.4", "43.5"];
 /// FANUC's tilted working plane (0i-MF/30i, `fanuc-mill.toml`: G68.2 indexing, G68.3 by the
 /// tool axis direction, G68.4 incremental multi-command), each ended by G69: a 3-D frame the
 /// preamble cannot restore, under which a move of one axis is a move of all three (review 28,
@@ -1293,7 +1300,24 @@ impl Walk {
                 self.set_unrestored("92", line, what.into());
             }
             if DECIMAL_UNRESTORED.contains(&text.as_ref()) {
+                if DECIMAL_LENGTH_OFFSETS.contains(&text.as_ref()) {
+                    // (one length offset code replaces another: the same group)
+                    for key in DECIMAL_LENGTH_OFFSETS {
+                        self.drop_unrestored(key);
+                    }
+                }
                 self.set_unrestored(&text, line, format!("G{text}"));
+            }
+            if text == "53.1" {
+                // FANUC's tool axis direction control turns the rotary axes to the tilted
+                // working plane's direction by the control's own sums: their places are not
+                // followed, and they stay there after G69 (review 29, finding 2: the preamble
+                // sent B and C back to their places before the tilt)
+                for axis in [b'A', b'B', b'C'] {
+                    let what = "G53.1 (the tool axis direction control turns the rotary axes \
+                                to the tilted working plane; their places are not followed)";
+                    self.lose_unknown(axis, line, what.as_bytes().to_vec());
+                }
             }
             if TILTED_PLANES.contains(&text.as_ref()) {
                 // one tilted plane replaces another (the same G code group)
@@ -1327,7 +1351,9 @@ impl Walk {
             self.drop_unrestored("42.1");
         }
         if gs.contains(&49) || gs.contains(&43) {
-            self.drop_unrestored("43.1");
+            for key in DECIMAL_LENGTH_OFFSETS {
+                self.drop_unrestored(key);
+            }
         }
         if core_cycle.is_none() && self.cycle.is_some_and(|(c, _)| (81..90).contains(&c)) {
             self.cycle = None; // the core ended it (a motion code)
