@@ -193,8 +193,18 @@ def test_a_lathes_u_that_moves_is_refused_for_a_mill_and_a_dwells_u_is_no_move()
     e = refusal(LATHE_B.format("G0 U5. Z1."), "fanuc-lathe", "fanuc-mill")
     assert e.message.startswith("U5.: the source lathe reads U as an increment of X, a "
                                 "diameter"), e.message
-    # a dwell's U is its time
-    assert "U1.5" in convert(LATHE_B.format("G04 U1.5"), "fanuc-lathe-b", "fanuc-mill")
+    # a dwell's U is its time, no move; a mill reads U as an axis, so its G04 would have no
+    # time (the target's check: TG532): refused at the U (review 29, finding 4: carried "ok")
+    plain = "O1000\nG21\nS500 M3\nG0 X0 Z2.\nG04 U1.5\nG0 Z5.\nM30\n"
+    for target in ("fanuc-mill", "haas-mill", "iso-mill", "okuma-mill"):
+        e = refusal(plain, "fanuc-lathe", target)
+        assert (e.line, e.column) == (5, 5), e
+        assert e.message.startswith("U1.5: the source lathe's dwell time by U, which the "
+                                    "target reads as an axis"), e.message
+    # a dwell by X is carried to a FANUC mill, which reads G04 X as the time too
+    assert "G04 X1.5" in convert(LATHE_B.format("G04 X1.5"), "fanuc-lathe-b", "fanuc-mill")
+    # LinuxCNC's dwell conversion writes the time as P (rs274 runs it)
+    assert "G04 P1.5" in convert(LATHE_B.format("G04 U1.5"), "fanuc-lathe-b", "linuxcnc")
 
 
 def test_a_mills_x0_is_carried_for_a_lathe_and_its_next_x_refused():

@@ -3888,6 +3888,33 @@ impl Converter {
         if !self.c.x_diameter && !self.c.x_radius {
             return Ok(());
         }
+        // a FANUC, Haas or Okuma lathe's dwell by U (its time, as X) for a target that is no
+        // lathe: there U is an axis, and its G04 has no time (the target's check: TG532; review
+        // 29, finding 4: carried "ok")
+        if self.c.x_radius
+            && self.c.lathe
+            && matches!(self.c.family, Family::MacroB | Family::Okuma)
+            && self.c.target_family != Family::LinuxCnc
+            && whole_g_code(b, &[4])
+        {
+            if let Some(w) = b
+                .words
+                .iter()
+                .find(|w| w.token[0].eq_ignore_ascii_case(&b'U'))
+            {
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the source lathe's dwell time by U, which the target reads as an \
+                         axis, not a time (its G04 would have none); tapegate does not rename \
+                         it: write the dwell with the target's time word",
+                        text(w.token)
+                    ),
+                    clause: "profile",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
         // (a dwell's X is its time, a macro call's X its argument #24: no position)
         if whole_g_code(b, &[4, 65, 66]) {
             return Ok(());
