@@ -57,3 +57,30 @@ def test_a_mills_y_is_refused_for_a_lathe(source, target):
 def test_two_mills_and_two_lathes_keep_their_y_and_w():
     assert "G0 Y10." in convert(MILL.format("G0 Y10."), "fanuc-mill", "haas-mill")
     assert "G0 W-10." in convert(LATHE.format("G0 W-10."), "fanuc-lathe-b", "fanuc-lathe")
+
+
+REPEATED_CALL = ("O1000\nG21 G90 G17 G94\nG0 X0 Y0\n{call}\nM30\n")
+
+
+@pytest.mark.parametrize("call, word", [("M98 P20100", "P20100"), ("M98 P51002", "P51002")])
+def test_a_fanucs_m98_with_its_repetitions_in_p_is_refused_for_linuxcnc(call, word):
+    """Review 29, finding 3: on a FANUC the digits of M98's P before the last four are the
+    number of repetitions (0i-MB Operator's Manual B-64124EN/01, 12.3: `M98 P51002` calls
+    O1002 five times); LinuxCNC reads the whole P as the program number ("Failed to find sub
+    'O20100'"). Refused at the P, with the target's form named."""
+    e = refusal(REPEATED_CALL.format(call=call), "fanuc-mill", "linuxcnc")
+    assert (e.line, e.column) == (4, 5), e
+    assert e.message.startswith(f"{word}: on a FANUC the digits before the last four are the "
+                                "number of repetitions"), e.message
+    assert "(M98 P1002 L5)" in e.message
+
+
+def test_a_fanucs_m98_with_four_digits_and_l_is_carried_and_runs_on_rs274(tmp_path):
+    """The program number alone (four digits or fewer, leading zeros not counted) and the
+    repetitions by L are read alike: carried, and rs274 calls the subprogram twice."""
+    from tests.conftest import rs274_output
+    text = REPEATED_CALL.format(call="M98 P0100 L2") + "O0100\nG91 G0 X1.\nG90\nM99\n"
+    out = convert(text, "fanuc-mill", "linuxcnc")
+    assert "M98 P0100 L2" in out
+    ran = rs274_output(tmp_path, out.replace("O1000\n", "").replace("M30", "M2"))
+    assert "error" not in ran.lower(), ran

@@ -4315,6 +4315,39 @@ impl Converter {
             return Ok(());
         };
         let at = b.words[m98].start;
+        // a FANUC's P of more than four digits is the repetitions and the program number (0i-MB
+        // Operator's Manual B-64124EN/01, 12.3: "M98 P51002 ... Call the subprogram (number
+        // 1002) five times"); LinuxCNC reads the whole P as the program number, its repetitions
+        // by L (review 29, finding 3: converted "ok", rs274 "Failed to find sub 'O20100'"). A
+        // Haas's P is the program number alone (its repetitions by L), so refused on the safe
+        // side where the source may be either control
+        if self.c.family == Family::MacroB {
+            if let Some(p) = b.words[m98 + 1..]
+                .iter()
+                .find(|w| w.token[0].eq_ignore_ascii_case(&b'P'))
+            {
+                let digits = &p.token[1..];
+                let value = digits
+                    .iter()
+                    .all(u8::is_ascii_digit)
+                    .then(|| digits.iter().skip_while(|&&c| c == b'0').count());
+                if value.is_some_and(|n| n > 4) {
+                    return Err(ConvertError {
+                        message: format!(
+                            "{}: on a FANUC the digits before the last four are the number of \
+                             repetitions (M98 P51002 calls O1002 five times), on a Haas the \
+                             program number; LinuxCNC reads P as the program number and its \
+                             repetitions by L: tapegate does not split it, write the call with \
+                             L (M98 P1002 L5)",
+                            text(p.token)
+                        ),
+                        clause: "meaning",
+                        column: crate::text::column(b.text, p.start),
+                        line: None,
+                    });
+                }
+            }
+        }
         let mut letters: Vec<u8> = b
             .words
             .iter()
