@@ -84,3 +84,17 @@ def test_a_fanucs_m98_with_four_digits_and_l_is_carried_and_runs_on_rs274(tmp_pa
     assert "M98 P0100 L2" in out
     ran = rs274_output(tmp_path, out.replace("O1000\n", "").replace("M30", "M2"))
     assert "error" not in ran.lower(), ran
+
+
+@pytest.mark.parametrize("source, target", [("fanuc-mill", "haas-mill"),
+                                            ("haas-mill", "fanuc-mill")])
+def test_an_m98_p_of_more_than_four_digits_is_refused_between_fanuc_and_haas(source, target):
+    """FANUC's P51002 is O1002 five times (B-64124EN/01, 12.3), a Haas's P51002 the program
+    51002, its repetitions by L (96-8000, "M98 Sub Program Call"): refused both ways at the P;
+    the same control's profiles, and a P of four digits with L, carry it."""
+    e = refusal(REPEATED_CALL.format(call="M98 P51002"), source, target)
+    assert (e.line, e.column) == (4, 5), e
+    assert e.message.startswith("P51002: M98's P of more than four digits is the number of "
+                                "repetitions and the program number on a FANUC"), e.message
+    assert "M98 P1002 L5" in convert(REPEATED_CALL.format(call="M98 P1002 L5"), source, target)
+    assert "M98 P51002" in convert(REPEATED_CALL.format(call="M98 P51002"), source, source)
