@@ -1313,7 +1313,20 @@ impl Walk {
                 // working plane's direction by the control's own sums: their places are not
                 // followed, and they stay there after G69 (review 29, finding 2: the preamble
                 // sent B and C back to their places before the tilt)
-                for axis in [b'A', b'B', b'C'] {
+                // (the rotary axes the program has moved; where it has moved none, all three:
+                // which of them the machine has is not in the program -- review 30, finding 2:
+                // an A never written was refused on a B-C machine)
+                let rotary = [b'A', b'B', b'C'];
+                let seen: Vec<u8> = rotary
+                    .into_iter()
+                    .filter(|&a| axis_index(a).is_some_and(|i| self.seen & bit(i) != 0))
+                    .collect();
+                let lost = if seen.is_empty() {
+                    rotary.to_vec()
+                } else {
+                    seen
+                };
+                for axis in lost {
                     let what = "G53.1 (the tool axis direction control turns the rotary axes \
                                 to the tilted working plane; their places are not followed)";
                     self.lose_unknown(axis, line, what.as_bytes().to_vec());
