@@ -70,8 +70,10 @@ def test_a_fanucs_m98_with_its_repetitions_in_p_is_refused_for_linuxcnc(call, wo
     'O20100'"). Refused at the P, with the target's form named."""
     e = refusal(REPEATED_CALL.format(call=call), "fanuc-mill", "linuxcnc")
     assert (e.line, e.column) == (4, 5), e
-    assert e.message.startswith(f"{word}: on a FANUC the digits before the last four are the "
-                                "number of repetitions"), e.message
+    assert e.message.startswith(
+        f"{word}: M98's P of more than four digits reads as the number of repetitions and the "
+        "program number (a FANUC: M98 P51002 calls O1002 five times) on the source and as the "
+        "program number, the repetitions by L on the target"), e.message
     assert "(M98 P1002 L5)" in e.message
 
 
@@ -94,7 +96,32 @@ def test_an_m98_p_of_more_than_four_digits_is_refused_between_fanuc_and_haas(sou
     the same control's profiles, and a P of four digits with L, carry it."""
     e = refusal(REPEATED_CALL.format(call="M98 P51002"), source, target)
     assert (e.line, e.column) == (4, 5), e
-    assert e.message.startswith("P51002: M98's P of more than four digits is the number of "
-                                "repetitions and the program number on a FANUC"), e.message
+    assert e.message.startswith("P51002: M98's P of more than four digits reads as "), e.message
+    advice = "(M98 P1002 L5)" if source == "fanuc-mill" else "a number of four digits"
+    assert advice in e.message, e.message
     assert "M98 P1002 L5" in convert(REPEATED_CALL.format(call="M98 P1002 L5"), source, target)
     assert "M98 P51002" in convert(REPEATED_CALL.format(call="M98 P51002"), source, source)
+
+
+@pytest.mark.parametrize("source, target, call, refused", [
+    ("linuxcnc", "fanuc-mill", "M98 P12345", "P12345"),      # O12345 on LinuxCNC, O2345 once
+    ("linuxcnc", "fanuc-mill", "M98 P12345 L2", "P12345"),
+    ("fanuc-mill", "haas-mill", "P51002 M98", "P51002"),      # the P before the M98
+    ("fanuc-mill", "linuxcnc", "M98 P+51002", "P+51002"),     # a sign
+    ("haas-mill", "linuxcnc", "M98 P51002", None),            # both the program 51002
+    ("linuxcnc", "haas-mill", "M98 P51002 L2", None),
+    ("fanuc-mill", "fanuc-mill", "M98 P51002", None),
+])
+def test_m98s_long_p_is_refused_where_the_two_controls_read_it_apart(source, target, call,
+                                                                     refused):
+    """Review 30, findings 1, 3, 4: one predicate by how each control reads the P (FANUC:
+    repetitions and program; Haas, LinuxCNC: the program, repetitions by L), the P found
+    wherever it stands in the block."""
+    text = REPEATED_CALL.format(call=call)
+    if refused is None:
+        assert call.split()[1] in convert(text, source, target) or call in convert(
+            text, source, target)
+        return
+    e = refusal(text, source, target)
+    assert (e.line, e.column) == (4, call.index(refused) + 1), e
+    assert e.message.startswith(f"{refused}: M98's P of more than four digits reads "), e.message

@@ -333,35 +333,6 @@ pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Resu
             .iter()
             .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
     };
-    // M98's P of more than four digits (leading zeros not counted): on a FANUC the digits
-    // before the last four are the repetitions (0i-MB Operator's Manual B-64124EN/01, 12.3:
-    // "M98 P51002 ... Call the subprogram (number 1002) five times"), on a Haas the program
-    // number, its repetitions by L (Haas 96-8000 Mill Operator's Manual, "M98 Sub Program
-    // Call": "M98 Pnnnn (Pnnnn is the number of the program being called) ... An Lnn count")
-    let m98 = |w: &Word<'_>| w.token[0].eq_ignore_ascii_case(&b'M') && whole(w) == Some(98);
-    if let Some(at) = words.iter().position(m98) {
-        let long = words[at + 1..]
-            .iter()
-            .find(|w| w.token[0].eq_ignore_ascii_case(&b'P'))
-            .filter(|p| {
-                let digits = &p.token[1..];
-                digits.iter().all(u8::is_ascii_digit)
-                    && digits.iter().skip_while(|&&c| c == b'0').count() > 4
-            });
-        if let Some(p) = long {
-            return Err(refuse(
-                p,
-                format!(
-                    "{}: M98's P of more than four digits is the number of repetitions and \
-                     the program number on a FANUC (M98 P51002 calls O1002 five times) and the \
-                     program number on a Haas (its repetitions by L); tapegate does not split \
-                     it: write the call with L (M98 P1002 L5)",
-                    text(p.token)
-                ),
-                "meaning",
-            ));
-        }
-    }
     if !gs.contains(&10) {
         return Ok(());
     }

@@ -183,6 +183,10 @@ pub struct ConvertConfig {
     /// the Haas, Some(false) where it is the FANUC; None otherwise. Their G10 gives some data
     /// types other data ([`crate::between::fanuc_haas_words`]).
     pub fanuc_haas: Option<bool>,
+    /// How the source and the target read an M98 P of more than four digits, where both are
+    /// known: true the repetitions and the program number (a FANUC), false the program number
+    /// alone, the repetitions by L (a Haas, LinuxCNC) ([`Converter::m98_long_p`]).
+    pub m98_repeats: Option<(bool, bool)>,
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
@@ -3006,6 +3010,7 @@ impl Converter {
         self.same_tool_word(b)?;
         self.same_x_reading(b)?;
         self.reset_feed_mode(b, &gs)?;
+        self.m98_long_p(b, &ms)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -4297,6 +4302,65 @@ impl Converter {
     /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
     /// mode a moving block runs is unknown (`motion` None), the E is converted as before (a
     /// G76's taper).
+    /// An M98 P of more than four digits (leading zeros not counted, a sign or a point
+    /// allowed) between controls that read it apart: on a FANUC the digits before the last
+    /// four are the number of repetitions (0i-MB Operator's Manual B-64124EN/01, 12.3: "M98
+    /// P51002 ... Call the subprogram (number 1002) five times"); on a Haas the program number,
+    /// the repetitions by L (96-8000 Mill Operator's Manual, "M98 Sub Program Call": "M98 Pnnnn
+    /// (Pnnnn is the number of the program being called) ... An Lnn count"), and on LinuxCNC
+    /// the program number, the repetitions by L (rs274: `M98 P12345` runs O12345). Refused at
+    /// the P wherever it stands in the block (review 29, finding 3; review 30, findings 1, 3,
+    /// 4: LinuxCNC's P12345 to a FANUC was carried, a Haas's to LinuxCNC refused).
+    fn m98_long_p(&self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+        let Some((from, to)) = self.c.m98_repeats else {
+            return Ok(());
+        };
+        if from == to || !ms.contains(&98) {
+            return Ok(());
+        }
+        let long = |digits: &[u8]| {
+            let digits = digits
+                .strip_prefix(b"+")
+                .or_else(|| digits.strip_prefix(b"-"))
+                .unwrap_or(digits);
+            let whole = digits.split(|&c| c == b'.').next().unwrap_or(digits);
+            whole.iter().all(u8::is_ascii_digit)
+                && whole.iter().skip_while(|&&c| c == b'0').count() > 4
+        };
+        let Some(p) = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'P') && long(&w.token[1..]))
+        else {
+            return Ok(());
+        };
+        let reading = |repeats: bool| {
+            if repeats {
+                "as the number of repetitions and the program number (a FANUC: M98 P51002 calls \
+                 O1002 five times)"
+            } else {
+                "as the program number, the repetitions by L"
+            }
+        };
+        let advice = if from {
+            "write the call with L (M98 P1002 L5)"
+        } else {
+            "give the subprogram a number of four digits"
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: M98's P of more than four digits reads {} on the source and {} on the \
+                 target; tapegate does not split it: {advice}",
+                text(p.token),
+                reading(from),
+                reading(to)
+            ),
+            clause: "meaning",
+            column: crate::text::column(b.text, p.start),
+            line: None,
+        })
+    }
+
     /// A FANUC or Haas M98 sharing its block with other words (`G1 X10. F100. M98 P100`: the
     /// move, then the call), which LinuxCNC reads only as its block's first word with its P
     /// and L alone ([`crate::meaning::linuxcnc_m98_stray`]; review 28, finding 3: converted
@@ -4315,39 +4379,6 @@ impl Converter {
             return Ok(());
         };
         let at = b.words[m98].start;
-        // a FANUC's P of more than four digits is the repetitions and the program number (0i-MB
-        // Operator's Manual B-64124EN/01, 12.3: "M98 P51002 ... Call the subprogram (number
-        // 1002) five times"); LinuxCNC reads the whole P as the program number, its repetitions
-        // by L (review 29, finding 3: converted "ok", rs274 "Failed to find sub 'O20100'"). A
-        // Haas's P is the program number alone (its repetitions by L), so refused on the safe
-        // side where the source may be either control
-        if self.c.family == Family::MacroB {
-            if let Some(p) = b.words[m98 + 1..]
-                .iter()
-                .find(|w| w.token[0].eq_ignore_ascii_case(&b'P'))
-            {
-                let digits = &p.token[1..];
-                let value = digits
-                    .iter()
-                    .all(u8::is_ascii_digit)
-                    .then(|| digits.iter().skip_while(|&&c| c == b'0').count());
-                if value.is_some_and(|n| n > 4) {
-                    return Err(ConvertError {
-                        message: format!(
-                            "{}: on a FANUC the digits before the last four are the number of \
-                             repetitions (M98 P51002 calls O1002 five times), on a Haas the \
-                             program number; LinuxCNC reads P as the program number and its \
-                             repetitions by L: tapegate does not split it, write the call with \
-                             L (M98 P1002 L5)",
-                            text(p.token)
-                        ),
-                        clause: "meaning",
-                        column: crate::text::column(b.text, p.start),
-                        line: None,
-                    });
-                }
-            }
-        }
         let mut letters: Vec<u8> = b
             .words
             .iter()
@@ -8670,6 +8701,7 @@ mod tests {
             target_g_system: None,
             target_data_input: true,
             fanuc_haas: None,
+            m98_repeats: None,
             source_detected: false,
             src_units_given: false,
             upper_case: false,

@@ -279,6 +279,14 @@ impl Machine {
                 (Control::Fanuc, Control::Haas) => Some(false),
                 _ => None,
             },
+            m98_repeats: {
+                let repeats = |c: Control| match c {
+                    Control::Fanuc => Some(true),
+                    Control::Haas | Control::LinuxCnc => Some(false),
+                    _ => None,
+                };
+                repeats(self.control).zip(repeats(target.control))
+            },
             source_detected: options.source_detected,
             src_units_given: options.source_units_given,
             upper_case: options.upper_case,
