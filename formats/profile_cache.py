@@ -111,18 +111,7 @@ def store(name: str, text: str, data: dict[str, Any]) -> None:
         table = marshal.dumps(data)
     except ValueError:  # a value marshal cannot hold (a TOML date): parsed each time
         return
-    blob = marshal.dumps((KEY, text, crc32(table), table))
-    temporary = f"{path}.{os.getpid()}.tmp"
-    try:
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with open(temporary, "wb") as f:
-            f.write(blob)
-        os.replace(temporary, path)
-    except OSError:
-        import contextlib  # (here only: the cache folder could not be written)
-
-        with contextlib.suppress(OSError):
-            os.unlink(temporary)
+    _write(path, marshal.dumps((KEY, text, crc32(table), table)))
 
 
 # What a machine spec entry is, and for which Python it was written
