@@ -375,11 +375,33 @@ pub fn skips_leader(family: Family, haas: bool) -> bool {
 /// word (`O0003`, `X-1`: TG111 of its check, words before the first end of block),
 /// [`LeaderText::Letters`] where it holds letters outside a leading `(` (`TITLE`: TG112).
 /// LinuxCNC reads no text there at all (rs274: "Bad character '%' used").
+/// A leading comment is the identification's and the text after it is judged as if it stood
+/// first (review 29, finding 5: `% (TITLE) O1000` passed where `%O1000` is TG111); letters
+/// inside a comment are the comment's.
 pub fn leader_text(ident: &[u8]) -> Option<LeaderText> {
-    let bytes = ident.trim_ascii_start();
+    let mut bytes = ident.trim_ascii_start();
+    while bytes.first() == Some(&b'(') {
+        match bytes.iter().position(|&c| c == b')') {
+            Some(close) => bytes = bytes[close + 1..].trim_ascii_start(),
+            None => return None, // (a comment to the end of the line)
+        }
+    }
     if bytes.trim_ascii_end().is_empty() {
         return None;
     }
+    let mut depth = 0usize;
+    let outside: Vec<u8> = bytes
+        .iter()
+        .copied()
+        .filter(|&c| {
+            match c {
+                b'(' => depth += 1,
+                b')' => depth = depth.saturating_sub(1),
+                _ => return depth == 0,
+            }
+            false
+        })
+        .collect();
     let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
         let rest = match bytes.get(1) {
             Some(b'+' | b'-') => &bytes[2..],
@@ -389,10 +411,9 @@ pub fn leader_text(ident: &[u8]) -> Option<LeaderText> {
     };
     if wordlike {
         Some(LeaderText::Words)
-    } else if String::from_utf8_lossy(bytes)
+    } else if String::from_utf8_lossy(&outside)
         .chars()
         .any(char::is_alphabetic)
-        && bytes.first() != Some(&b'(')
     {
         Some(LeaderText::Letters)
     } else {
@@ -1224,6 +1245,38 @@ pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// What follows a program's first `%`, by [`leader_text`]: a leading comment is the
+    /// identification's, and what comes after it is judged as if it stood first (review 29,
+    /// finding 5); letters inside a comment are the comment's.
+    #[test]
+    fn leader_text_reads_past_a_leading_comment() {
+        let words = Some(LeaderText::Words);
+        let letters = Some(LeaderText::Letters);
+        for (ident, expected) in [
+            (&b""[..], None),
+            (b"  ", None),
+            (b"(TITLE)", None),
+            (b"(TITLE", None),
+            (b":0003", None),
+            (b":0003 (TITLE)", None),
+            (b"O1000", words),
+            (b"X-1.", words),
+            (b" (TITLE) O1000", words),
+            (b"(T)X1", words),
+            (b"(A)(B) O1", words),
+            (b"TITLE", letters),
+            (b"(A) TITLE", letters),
+            (b":0003 TITLE", letters),
+        ] {
+            assert_eq!(
+                leader_text(ident),
+                expected,
+                "{:?}",
+                String::from_utf8_lossy(ident)
+            );
+        }
+    }
 
     /// A G word's number is a macro call's code where a float reads it as 65, 66 or 66.1,
     /// as it was read before the digits were compared: every number of up to five of the
