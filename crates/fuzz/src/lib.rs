@@ -442,6 +442,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         dwell_formats: dwell,
         feed_rev_formats: [None, None],
         fanuc_haas: None,
+        m98_repeats: None,
         explicit_out: !to_inch,
         inch_code: "G20".into(),
         metric_code: "G21".into(),
