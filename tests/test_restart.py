@@ -1912,3 +1912,19 @@ def test_g53_1_loses_the_rotary_axes():
     # a program that moved no rotary axis loses all three: which the machine has is unknown
     none = text.replace("N3 G00 B0 C0\n", "")
     assert "the position of A is not known here" in refusal(none, 12)
+
+
+def test_a_fanuc_3d_coordinate_conversion_loses_all_three_axes_at_g69():
+    """FANUC's G68 with I J K is the 3-D coordinate conversion (a rotation about the vector I
+    J K): a move of one of X, Y, Z under it moves all three, so all three are lost at G69, as a
+    tilted plane's are (review 28's doubt: it was restarted as a plane rotation, its two
+    axes lost and Z kept). A G68 without I J K rotates its plane's two axes alone."""
+    space = TILT.format(on="G68 X0 Y0 Z0 I1 J0 K0 R30.").replace(
+        "N7 G00 X10. Y20. Z5.", "N7 G00 X10.")
+    assert refusal(space.replace("N9 G69\n", ""), 10) == (
+        "cannot restart here: G68 (3-D coordinate conversion) from line 7 is in force and the "
+        "preamble cannot restore it")
+    said = refusal(space.replace("N10 G00 X5.", "N10 G00 X5. Y6."), 11)
+    assert "the position of Z is not known here (line 9: G69 ends the coordinate rotation" in said
+    plane = TILT.format(on="G68 X0 Y0 R30.").replace("N7 G00 X10. Y20. Z5.", "N7 G00 X10.")
+    assert plan(plane.replace("N10 G00 X5.", "N10 G00 X5. Y6."), 11).preamble

@@ -273,6 +273,9 @@ pub struct Walk {
     /// walk does not know (`G50.1 X#1`, `G100 X[0]`) may have ended ([`Walk::mirror_off`]).
     mirror_doubt: u16,
     haas_mirror_doubt: u16,
+    /// A FANUC's or Haas's G68 with I, J or K in force: the 3-D coordinate conversion (a
+    /// rotation about the vector I J K), under which a move of one of X, Y, Z moves all three.
+    rotation_3d: bool,
     /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
     /// way the program reached its start point with this tool, for an approach that goes the
     /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
@@ -503,6 +506,7 @@ impl Walk {
             haas_mirrored: 0,
             mirror_doubt: 0,
             haas_mirror_doubt: 0,
+            rotation_3d: false,
             moves: Vec::new(),
             tool_change: None,
             tool_moved: true,
@@ -1099,6 +1103,21 @@ impl Walk {
         for &g in gs {
             if let Some(&(_, _, name)) = table.iter().find(|(c, _, _)| *c == g) {
                 if !(g == 51 && self.lathe) {
+                    // FANUC's G68 X Y Z I J K R: the 3-D coordinate conversion, a rotation
+                    // about the vector I J K, whose moves of one axis move all three (the
+                    // plane's rotation moves its two)
+                    let space = g == 68
+                        && plain_words
+                            .iter()
+                            .any(|&(l, _)| matches!(l, b'I' | b'J' | b'K'));
+                    if g == 68 {
+                        self.rotation_3d = space;
+                    }
+                    let name = if space {
+                        "3-D coordinate conversion"
+                    } else {
+                        name
+                    };
                     self.set_unrestored(&g.to_string(), line, format!("G{g} ({name})"));
                 }
             }
@@ -1114,6 +1133,9 @@ impl Walk {
                         .iter()
                         .any(|(k, _, _)| *k == code.to_string());
                     self.drop_unrestored(&code.to_string());
+                    if code == 68 {
+                        self.rotation_3d = false;
+                    }
                     if was && code != 16 {
                         self.transform_cancel(line, &format!("G{g}"), name, 0);
                     }
@@ -1777,8 +1799,9 @@ impl Walk {
                 .iter()
                 .filter_map(|&l| axis_index(l))
                 .fold(0, |m, i| m | bit(i));
-            if tilted && bits & space != 0 {
-                bits |= space; // a tilted plane's move of one axis moves all three
+            if (tilted || self.rotation_3d) && bits & space != 0 {
+                // a tilted plane's or a 3-D conversion's move of one axis moves all three
+                bits |= space;
             }
             self.transformed |= self.under_transform(bits);
         }
