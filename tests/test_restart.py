@@ -1928,3 +1928,43 @@ def test_a_fanuc_3d_coordinate_conversion_loses_all_three_axes_at_g69():
     assert "the position of Z is not known here (line 9: G69 ends the coordinate rotation" in said
     plane = TILT.format(on="G68 X0 Y0 R30.").replace("N7 G00 X10. Y20. Z5.", "N7 G00 X10.")
     assert plan(plane.replace("N10 G00 X5.", "N10 G00 X5. Y6."), 11).preamble
+    # a plane's G68 given under the 3-D conversion leaves it in force to G69: whether the
+    # control nests the two or replaces one is not in the sources, so Z stays lost (review 31)
+    nested = space.replace("N7 G00 X10.", "N6 G68 X0 Y0 R10.\nN7 G00 X10.")
+    said = refusal(nested.replace("N10 G00 X5.", "N10 G00 X5. Y6."), 12)
+    assert "the position of Z is not known here" in said, said
+
+
+@pytest.mark.parametrize("move", ["G91 G28 B0\nN3 G90", "G91 G30 B0\nN3 G90", "G53 G00 B0"])
+def test_g53_1_loses_a_rotary_axis_moved_only_by_a_reference_or_machine_move(move):
+    """Review 31, finding 1: a rotary axis the program moved only by G28, G30 or G53 (lost
+    with a replay, not given plainly) is turned by G53.1 as well: lost, not sent back by the
+    preamble to its place before the tilt."""
+    text = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 G00 C0\nN3 " + move + "\n"
+            "N4 S1000 M03 G00 G43 H1 Z100.\nN5 G00 X0 Y0\nN6 G68.2 X0 Y0 Z0 I0 J30. K0\n"
+            "N7 G53.1\nN10 G69\nN12 G00 X5. Y5. C0\nN13 G01 Z2. F100.\nN14 G01 X50.\nM30\n%\n")
+    line = text.splitlines().index("N13 G01 Z2. F100.") + 1
+    said = refusal(text, line)
+    assert said.startswith("cannot restart here: the position of B is not known here"), said
+    assert "G53.1 (the tool axis direction control" in said
+    # given again, planned
+    assert plan(text.replace("X5. Y5. C0", "X5. Y5. B0 C0"), line).preamble
+
+
+@pytest.mark.parametrize(("profile", "code", "held"), [("fanuc-mill", "G43.9", "G04.1"),
+                                                       ("fanuc-mill", "G53.6", "G04.1"),
+                                                       ("haas-mill", "G68.2", "G90")])
+def test_a_decimal_g_code_the_profiles_list_lacks_refuses_as_a_whole_one_does(profile, code,
+                                                                              held):
+    """Review 31, finding 2: a decimal G code the profile's list does not hold (the check's
+    TG307: the control alarms, or its parameters make it a macro call) leaves what ran after it
+    unknown, as an unlisted whole code does; it was planned past as if it had run (Haas's
+    G68.2, whose tilted plane is G268; FANUC's G43.9). A code the list holds (FANUC's G04.1,
+    where the Haas list has no decimal code) is planned as before."""
+    machine = load_profile(profile)
+    text = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN4 S1000 M03 G00 G43 H1 Z100.\n"
+            f"N5 G00 X0 Y0\nN6 {code}\nN7 G00 X5. Y5.\nN8 G01 Z2. F100.\nN9 G01 X50.\nM30\n%\n")
+    said = refusal(text, 10, machine)
+    assert said.startswith(f"cannot restart here: after 'N6 {code}' on line 7 (a G code the "
+                           "control's list does not hold"), said
+    assert plan(text.replace(code, held), 10, machine).preamble

@@ -244,6 +244,11 @@ pub struct Walk {
     /// The profile's units codes (set by the binding from the checker's settings): which G
     /// codes select the units, for [`Walk::units_line`].
     pub units_settings: Option<crate::modal::ModalSettings>,
+    /// The decimal G codes the profile's list holds (`54.1`), set by the binding where the
+    /// profile has its control's own list: a decimal code outside it is one the control alarms
+    /// on or runs as a macro call, as an unlisted whole code is (review 31, finding 2: Haas's
+    /// `G68.2` and `G53.1`, or FANUC's `G43.9`, were planned past as if they had run).
+    pub decimal_codes: Option<Vec<Vec<u8>>>,
     /// The line of the program's own last units code (G20/G21, a SINUMERIK's G70/G71/G700/
     /// G710): without one the units are the control's setting, which the preamble must not
     /// choose for it.
@@ -496,6 +501,7 @@ impl Walk {
             written: [None; 26],
             z_reached: None,
             units_settings: None,
+            decimal_codes: None,
             units_line: None,
             program_name: None,
             m6_line: 0,
@@ -921,7 +927,11 @@ impl Walk {
         let lacked = self
             .units_settings
             .as_ref()
-            .is_some_and(|settings| gs.iter().any(|&g| settings.lacks(g)));
+            .is_some_and(|settings| gs.iter().any(|&g| settings.lacks(g)))
+            || self
+                .decimal_codes
+                .as_ref()
+                .is_some_and(|held| gdec.iter().any(|d| !held.contains(d)));
         if self.flow.is_none() && lacked {
             self.flow = Some(Flow {
                 line,
@@ -1111,7 +1121,10 @@ impl Walk {
                             .iter()
                             .any(|&(l, _)| matches!(l, b'I' | b'J' | b'K'));
                     if g == 68 {
-                        self.rotation_3d = space;
+                        // a plane's G68 inside the 3-D conversion leaves it in force until
+                        // G69: whether the control nests the two or replaces one is not in
+                        // the sources, and either way X Y Z stay lost (review 31, doubtful)
+                        self.rotation_3d |= space;
                     }
                     let name = if space {
                         "3-D coordinate conversion"
@@ -1339,9 +1352,14 @@ impl Walk {
                 // which of them the machine has is not in the program -- review 30, finding 2:
                 // an A never written was refused on a B-C machine)
                 let rotary = [b'A', b'B', b'C'];
+                // (moved: given plainly, or lost already -- a G28, G30 or G53 move leaves its
+                // axis lost with a replay, not seen: review 31, finding 1)
                 let seen: Vec<u8> = rotary
                     .into_iter()
-                    .filter(|&a| axis_index(a).is_some_and(|i| self.seen & bit(i) != 0))
+                    .filter(|&a| {
+                        axis_index(a)
+                            .is_some_and(|i| self.seen & bit(i) != 0 || self.lost[i].is_some())
+                    })
                     .collect();
                 let lost = if seen.is_empty() {
                     rotary.to_vec()

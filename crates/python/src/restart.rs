@@ -107,6 +107,11 @@ impl RestartWalk {
         checker.keep_stats(false); // the walk reads the modal state, never the statistics
         let mut walk = Walk::new(m.control, m.lathe, m.fanuc_lathe);
         walk.units_settings = Some(checker.machine.settings.clone());
+        // (a profile with its control's own list: ISO 6983-1's table reports its own codes)
+        if !checker.machine.settings.lacks_g.is_empty() {
+            let held = m.check.g_decimal.iter().map(|(c, _)| c.as_bytes().to_vec());
+            walk.decimal_codes = Some(held.collect());
+        }
         Ok(RestartWalk {
             checker,
             fresh: walk.clone(),
