@@ -372,7 +372,8 @@ pub fn skips_leader(family: Family, haas: bool) -> bool {
 /// program start, then an identification before the first end of block; a Haas, an Okuma)
 /// takes `ident`, that text: None where it reads it as the identification (blank, a comment
 /// `(TITLE)`, digits and signs such as `:0003`), [`LeaderText::Words`] where it begins like a
-/// word (`O0003`, `X-1`: TG111 of its check, words before the first end of block),
+/// word (`O0003`, `X-1`, a macro statement `#1=1`: TG111 of its check, words before the
+/// first end of block),
 /// [`LeaderText::Letters`] where it holds letters outside a leading `(` (`TITLE`: TG112).
 /// LinuxCNC reads no text there at all (rs274: "Bad character '%' used").
 /// A leading comment is the identification's and the text after it is judged as if it stood
@@ -402,13 +403,15 @@ pub fn leader_text(ident: &[u8]) -> Option<LeaderText> {
             false
         })
         .collect();
-    let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
-        let rest = match bytes.get(1) {
-            Some(b'+' | b'-') => &bytes[2..],
-            _ => &bytes[1..],
+    // (a macro statement, `#1=1`, is read as a block's words would be: review 31, doubtful)
+    let wordlike = bytes.first() == Some(&b'#')
+        || bytes.first().is_some_and(u8::is_ascii_uppercase) && {
+            let rest = match bytes.get(1) {
+                Some(b'+' | b'-') => &bytes[2..],
+                _ => &bytes[1..],
+            };
+            rest.first().is_some_and(u8::is_ascii_digit)
         };
-        rest.first().is_some_and(u8::is_ascii_digit)
-    };
     if wordlike {
         Some(LeaderText::Words)
     } else if String::from_utf8_lossy(&outside)
@@ -1265,6 +1268,8 @@ mod tests {
             (b" (TITLE) O1000", words),
             (b"(T)X1", words),
             (b"(A)(B) O1", words),
+            (b"#1=1", words),
+            (b"(A)#1=1", words),
             (b"TITLE", letters),
             (b"(A) TITLE", letters),
             (b":0003 TITLE", letters),
