@@ -438,7 +438,9 @@ class _Planner:
                     "definition": "a subprogram definition",
                     "command": "a control instruction",
                     "code": "a G code the control's list does not hold: an alarm, or a macro "
-                            "call its parameters name"}.get(kind, kind)
+                            "call its parameters name",
+                    "parameter code": "a G or M code set by a parameter: which code ran is not "
+                                      "known"}.get(kind, kind)
             raise self.refuse(f"after {text!r} on line {at} ({what}) the modal state is not "
                               "known: tapegate reads the program in file order and does not "
                               "follow jumps, loops, calls or control instructions")

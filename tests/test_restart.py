@@ -1968,3 +1968,82 @@ def test_a_decimal_g_code_the_profiles_list_lacks_refuses_as_a_whole_one_does(pr
     assert said.startswith(f"cannot restart here: after 'N6 {code}' on line 7 (a G code the "
                            "control's list does not hold"), said
     assert plan(text.replace(code, held), 10, machine).preamble
+
+
+@pytest.mark.parametrize("code", ["G#1", "G[68.2] X0 Y0 Z0 I0 J30. K0", "G[68] X0 Y0 R30.",
+                                  "M#500"])
+def test_a_code_set_by_a_parameter_stops_the_restart(code):
+    """Review 32, finding 1: a G or M code set by a parameter (`#1=68` then `G#1 X0 Y0 R30.`)
+    runs a code the walk cannot name, so what ran after it is not known; it was skipped, and
+    the rotation or tilted plane it set left out of the plan."""
+    text = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\n#1=68\nN4 S1000 M03 G00 G43 H1 Z100.\n"
+            f"N5 {code}\nN7 G00 X5. Y5.\nN8 G01 Z2. F100.\nN9 G01 X50.\nM30\n%\n")
+    said = refusal(text, 10)
+    assert said.startswith(f"cannot restart here: after 'N5 {code}' on line 7 (a G or M code "
+                           "set by a parameter: which code ran is not known)"), said
+
+
+POLAR = ("%\nO1000\nN1 G21 G17 G90 G94 G40 G49 G80 G54\nN2 T1 M06\nN3 G97 S1000 M03\n"
+         "N4 G00 G43 Z100. H1\nN5 G00 X50. Y0 C0\nN6 G01 Z-2. F100.\nN7 {on}\n"
+         "N8 G01 X20. C10.\nN9 G01 X10. C5.\n{off}N11 G00 Z100.\nN12 G00 X50.\nM30\n%\n")
+
+
+@pytest.mark.parametrize(("profile", "on", "off"), [
+    ("fanuc-mill", "G12.1", "G13.1"), ("fanuc-lathe", "G12.1", "G13.1"),
+    ("fanuc-mill", "G07.1 C25.", "G07.1 C0")])
+def test_polar_and_cylindrical_interpolation_refuse_in_force_and_lose_their_axes(profile, on,
+                                                                                 off):
+    """Review 32, finding 2: FANUC's polar coordinate interpolation (G12.1, cancel G13.1) and
+    cylindrical interpolation (G07.1 with the radius, cancel G07.1 C0) turn the program's
+    plane into the axes' own: refused where in force (the plan rapid to `X10. C5.` as a
+    straight move), and after the cancel X and C are not known until given again."""
+    machine = load_profile(profile)
+    code = on.split()[0]
+    template = POLAR
+    if "lathe" in profile:
+        template = POLAR.replace("G17 G90 G94 G40 G49 G80 G54", "G40 G80").replace(
+            "T1 M06", "T0101").replace("G00 G43 Z100. H1", "G00 Z100.").replace(" Y0 ", " ")
+    assert refusal(template.format(on=on, off=""), 11, machine) == (
+        f"cannot restart here: {code} ({'cylindrical' if '7.1' in on else 'polar coordinate'} "
+        "interpolation) from line 9 is in force and the preamble cannot restore it")
+    cancelled = template.format(on=on, off=f"N10 {off}\n")
+    said = refusal(cancelled, 14, machine)
+    assert "is not known here (line 12: " in said and "interpolation" in said, said
+    given = cancelled.replace("N11 G00 Z100.", "N11 G00 Z100. X50. C0")
+    assert plan(given, 14, machine).preamble
+
+
+def test_linuxcnc_work_systems_7_to_9_and_fanuc_g54_2_refuse_in_force():
+    """Review 32, finding 3: LinuxCNC's G59.1-G59.3 (work systems 7-9) were planned with the
+    preamble's G54, and FANUC's G54.2 P1 (rotary table dynamic fixture offset) was dropped.
+    Both are refused where in force; G54.2 P0 and a G54-G59 end them, losing the axes seen."""
+    lcnc = load_profile("linuxcnc")
+    text = ("%\nG21 G17 G90 G54\nT1 M06\nS1000 M03 G00 G43 H1 Z100.\nG00 X0 Y0\nG59.1\n"
+            "G00 X5. Y5.\nG01 Z2. F100.\nG01 X50.\nM30\n%\n")
+    assert refusal(text, 9, lcnc) == ("cannot restart here: G59.1 (work coordinate system 7) "
+                                      "from line 6 is in force and the preamble cannot restore "
+                                      "it")
+    back = text.replace("G01 Z2. F100.", "G54\nG00 X5. Y5. Z100.\nG01 Z2. F100.")
+    assert plan(back, 11, lcnc).preamble
+    fanuc = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G00 G43 H1 Z100.\n"
+             "N4 G00 X0 Y0\nN5 G54.2 P1\nN6 G00 X5. Y5.\nN7 G01 Z2. F100.\nN8 G01 X50.\nM30\n%\n")
+    assert refusal(fanuc, 10) == ("cannot restart here: G54.2 (rotary table dynamic fixture "
+                                  "offset) from line 7 is in force and the preamble cannot "
+                                  "restore it")
+    ended = fanuc.replace("N6 G00 X5. Y5.", "N5 G54.2 P0\nN6 G00 X5. Y5. Z100.")
+    assert plan(ended, 11).preamble
+
+
+def test_a_haas_lathe_g112_is_its_xc_interpolation_not_a_work_offset():
+    """Review 32, doubtful: a Haas lathe's G112 (XY to XC interpolation, cancel G113; its list
+    has no G110-G129 work offsets) was refused as "an extended work offset", and still after
+    G113. It is refused where in force, by its name, and planned after G113 once X and C are
+    given again."""
+    haas = load_profile("haas-lathe")
+    text = ("%\nO1000\nN1 G21 G40 G80\nN2 T101\nN3 G97 S1000 M03\nN4 G00 Z100.\n"
+            "N5 G00 X50. C0\nN6 G01 Z-2. F100.\nN7 G112\nN8 G01 X20. C10.\nN9 G01 X10. C5.\n"
+            "{off}N11 G00 Z100. X50. C0\nN12 G00 X60.\nM30\n%\n")
+    assert refusal(text.format(off=""), 12, haas) == (
+        "cannot restart here: G112 (polar coordinate interpolation) from line 9 is in force "
+        "and the preamble cannot restore it")
+    assert plan(text.format(off="N10 G113\n"), 14, haas).preamble

@@ -93,6 +93,18 @@ const DECIMAL_LENGTH_OFFSETS: [&str; 3] = ["43.1", "43.4", "43.5"];
 /// finding 1: G68.3/G68.4 were planned without it, the axes moved under any of the three
 /// counted as known after G69).
 const TILTED_PLANES: [&str; 3] = ["68.2", "68.3", "68.4"];
+/// FANUC's polar coordinate interpolation (G12.1, a lathe's G112 in G code system A; cancel
+/// G13.1 / G113) and cylindrical interpolation (G07.1 / G107 with the cylinder's radius; cancel
+/// the same code with C0), also a Haas lathe's G112/G113 and G107 (Haas lathe operator's
+/// manual): the program's X and C (or Z and C) are a plane's coordinates the control turns into
+/// the axes' own, so a move under them leaves the axes at places the program did not write, and
+/// the preamble cannot restore the mode (review 32, finding 2: `G00 X10. Y0 C5.` was planned as
+/// a straight move of X and 5 degrees of C). Keyed by the decimal code, whichever was written.
+const INTERPOLATED_PLANES: [&str; 2] = ["12.1", "7.1"];
+/// LinuxCNC's work systems 7-9 (G59.1-G59.3, the G54-G59.3 group): the preamble writes a
+/// G54-G59 alone, so one of these in force is refused, and a change to or from one loses the
+/// axes seen, as any change of work system does (review 32, finding 3: G54 was planned).
+const LINUXCNC_WORK_SYSTEMS: [&str; 3] = ["59.1", "59.2", "59.3"];
 
 fn machine_move(g: i64) -> Option<&'static str> {
     match g {
@@ -623,7 +635,42 @@ impl Walk {
                 k.as_str(),
                 "68" | "51" | "51.1" | "51.1?" | "101" | "101?" | "11" | "69" | "62"
             ) || TILTED_PLANES.contains(&k.as_str())
+                || INTERPOLATED_PLANES.contains(&k.as_str())
         })
+    }
+
+    /// `code` on `line` ends the interpolation in force under `key` ([`INTERPOLATED_PLANES`]),
+    /// if any: the axes moved under it are lost as at a transform's cancel.
+    fn interpolation_cancel(&mut self, key: &str, line: usize, code: &str) {
+        let was = self.unrestored.iter().any(|(k, _, _)| k == key);
+        self.drop_unrestored(key);
+        if was {
+            let name = if key == "7.1" {
+                "cylindrical interpolation"
+            } else {
+                "polar coordinate interpolation"
+            };
+            self.transform_cancel(line, code, name, 0);
+        }
+    }
+
+    /// FANUC's G07.1 (a lathe's G107) with the rotary axis's cylinder radius starts the
+    /// cylindrical interpolation; with the radius 0, or no rotary or R word, it ends it.
+    /// A radius set by a parameter (`C#1`, bits of `param_axes`) counts as given.
+    fn cylindrical(&mut self, line: usize, code: &str, plain_words: &[(u8, &[u8])], params: u16) {
+        // (a Haas lathe's G107 gives the radius as R: Haas lathe operator's manual)
+        let rotary = [b'A', b'B', b'C'];
+        let radius = plain_words.iter().any(|&(l, t)| {
+            (rotary.contains(&l) || l == b'R') && t[1..].iter().any(|c| !b"+-0.".contains(c))
+        }) || rotary
+            .iter()
+            .any(|&a| axis_index(a).is_some_and(|i| params & bit(i) != 0));
+        if radius {
+            let what = format!("{code} (cylindrical interpolation)");
+            self.set_unrestored("7.1", line, what);
+        } else {
+            self.interpolation_cancel("7.1", line, code);
+        }
     }
 
     /// `code` on `line` ends the transform `name`: the axes moved under it stand at the
@@ -659,6 +706,7 @@ impl Walk {
         let other = self.unrestored.iter().any(|(k, _, _)| {
             matches!(k.as_str(), "68" | "51" | "11" | "69" | "62")
                 || TILTED_PLANES.contains(&k.as_str())
+                || INTERPOLATED_PLANES.contains(&k.as_str())
         });
         if other {
             return bits;
@@ -794,6 +842,7 @@ impl Walk {
         // the axes (bits of [`AXES`] indexes) whose words are not plain (X#1, X[0]), and the
         // first such word: a mirror code's axes whose value the walk does not know
         let mut param_axes: (u16, Option<&[u8]>) = (0, None);
+        let mut param_code = false;
         for &token in b.tokens {
             let Some(&first) = token.first() else {
                 continue;
@@ -811,6 +860,11 @@ impl Walk {
                 continue;
             }
             if !plain(token) {
+                if matches!(letter, b'G' | b'M') && matches!(token.get(1), Some(b'#' | b'[')) {
+                    // G#1, G[68.2], M#500: a code set by a parameter, so which code ran is not
+                    // known (review 32, finding 1: the rotation or tilt it sets was left out)
+                    param_code = true;
+                }
                 if !indexed(token) && !b"GMNO".contains(&letter) {
                     // F#101, X[#1+2], X=R1+5: a value set by a parameter
                     let mut why = token.to_vec();
@@ -937,6 +991,14 @@ impl Walk {
                 line,
                 text: b.text.to_vec(),
                 kind: "code",
+                block: true,
+            });
+        }
+        if self.flow.is_none() && param_code {
+            self.flow = Some(Flow {
+                line,
+                text: b.text.to_vec(),
+                kind: "parameter code",
                 block: true,
             });
         }
@@ -1134,6 +1196,18 @@ impl Walk {
                     self.set_unrestored(&g.to_string(), line, format!("G{g} ({name})"));
                 }
             }
+            if self.lathe && self.control.family() == Family::MacroB {
+                match g {
+                    112 => self.set_unrestored(
+                        "12.1",
+                        line,
+                        "G112 (polar coordinate interpolation)".into(),
+                    ),
+                    113 => self.interpolation_cancel("12.1", line, "G113"),
+                    107 => self.cylindrical(line, "G107", plain_words, param_axes.0),
+                    _ => {}
+                }
+            }
             if okuma_mill && g == 62 {
                 // no page at hand names its cancel: in force to the end of the walk
                 let what = "G62 (programmable mirror image)";
@@ -1196,8 +1270,14 @@ impl Walk {
             if (54..=59).contains(&g) {
                 // (an Okuma mill's G54-G59 are length offsets; G54 is in force at reset)
                 let okuma_mill = self.control == Control::Okuma && !self.lathe;
-                if self.work.unwrap_or(54) != g && !okuma_mill {
+                let extra = LINUXCNC_WORK_SYSTEMS
+                    .iter()
+                    .any(|k| self.unrestored.iter().any(|(u, _, _)| u == k));
+                if (self.work.unwrap_or(54) != g || extra) && !okuma_mill {
                     self.frame_change(line, format!("G{g}"));
+                }
+                for key in LINUXCNC_WORK_SYSTEMS {
+                    self.drop_unrestored(key);
                 }
                 self.work = Some(g);
                 self.drop_unrestored("54.1");
@@ -1206,7 +1286,8 @@ impl Walk {
                     self.drop_unrestored(&extended.to_string());
                 }
             }
-            if g == 154 || ((110..=129).contains(&g) && self.control == Control::Haas) {
+            // (a Haas lathe's list has no G110-G129; its G112/G113 are the XC interpolation)
+            if g == 154 || ((110..=129).contains(&g) && self.haas_mill()) {
                 let what = format!("G{g} (an extended work offset)");
                 self.set_unrestored(&g.to_string(), line, what);
             }
@@ -1284,6 +1365,44 @@ impl Walk {
         }
         for dec in gdec {
             let text = String::from_utf8_lossy(dec);
+            if self.control == Control::LinuxCnc && LINUXCNC_WORK_SYSTEMS.contains(&text.as_ref()) {
+                let was = self.unrestored.iter().any(|(k, _, _)| *k == text);
+                if !was {
+                    self.frame_change(line, format!("G{text}"));
+                }
+                for key in LINUXCNC_WORK_SYSTEMS {
+                    self.drop_unrestored(key);
+                }
+                let n = 6 + text.as_bytes()[3] - b'0';
+                let what = format!("G{text} (work coordinate system {n})");
+                self.set_unrestored(&text, line, what);
+            }
+            if self.control == Control::Fanuc && text == "54.2" {
+                // FANUC's rotary table dynamic fixture offset (30i-B: G54.2 Pn, P0 cancels):
+                // a frame the preamble does not write; its change moves the axes' numbers
+                let cancel = plain_words
+                    .iter()
+                    .any(|&(l, t)| l == b'P' && t[1..].iter().all(|c| b"+-0.".contains(c)));
+                self.frame_change(line, format!("G{text}"));
+                if cancel {
+                    self.drop_unrestored("54.2");
+                } else {
+                    let what = "G54.2 (rotary table dynamic fixture offset)".to_string();
+                    self.set_unrestored("54.2", line, what);
+                }
+            }
+            if self.control.family() == Family::MacroB {
+                match text.as_ref() {
+                    "12.1" => self.set_unrestored(
+                        "12.1",
+                        line,
+                        "G12.1 (polar coordinate interpolation)".into(),
+                    ),
+                    "13.1" => self.interpolation_cancel("12.1", line, "G13.1"),
+                    "7.1" => self.cylindrical(line, "G07.1", plain_words, param_axes.0),
+                    _ => {}
+                }
+            }
             let mirror_codes = self.control.family() == Family::MacroB;
             let named = plain_words
                 .iter()
