@@ -125,24 +125,56 @@ def test_a_fanuc_file_of_programs_between_percent_signs_splits_only_at_an_o_numb
 
 
 def test_a_haas_program_number_keeps_five_digits():
-    assert not errors("%\nO01001\nG20 G00 X0\nM30\n%\n", "haas-mill")
-    assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
+    assert not found("%\nO01001\nG20 G00 X0\nM30\n%\n", "haas-mill")
+    assert ("TG208", "warning", 2) in found("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
 
 
 @pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
 @pytest.mark.parametrize("number, digits", [("O03082011", 7), ("O2142011", 7), ("O120209", 6)])
 def test_a_haas_program_number_past_five_digits_says_what_no_source_gives(profile, number, digits):
-    """A date or a student's number after O (6-7 digits) stays refused: the NGC manual gives
-    the format Onnnnn, and no Haas source at hand says what the control does with more (an
-    alarm, or the file loaded under its name); the message says both."""
-    text = f"%\n{number} (PART)\nG20 G00 X0\nM30\n%\n"
-    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG205"]
-    assert [(f.severity, f.line, f.column) for f in hits] == [("error", 2, 1)]
+    """A date or a student's number after O (6-7 digits): the NGC manual gives the format
+    Onnnnn, and no Haas source at hand says what the control does with more (an alarm, or the
+    file loaded under its name). The number names the program and moves nothing, so under
+    either answer the blocks are read as written: a warning (issue 32, severity by evidence)
+    that says both, and the program is checked on (its move past the travel still found)."""
+    text = f"%\n{number} (PART)\nG20 G00 X0\nG01 X1. Y1.\nM30\n%\n"
+    said = check_text(text, load_profile(profile))
+    hits = [f for f in said if f.rule in ("TG205", "TG208")]
+    assert [(f.rule, f.severity, f.line, f.column) for f in hits] == [("TG208", "warning", 2, 1)]
     assert hits[0].message.startswith(f"{number}: {digits} digits before the decimal sign")
     assert "NGC, 2017, 4.3.3 and 5.2.2" in hits[0].message
     assert "no Haas source at hand says" in hits[0].message
+    assert "the program is read as written" in hits[0].message
+    # read on: the G01 without a feed after it is still found, at its line
+    assert ("TG401", 4) in errors(text, profile)
     # a Fanuc reads it (the 8-digit program number option) and says nothing
-    assert not errors(text, "fanuc-mill")
+    assert not errors(text.replace("G01 X1. Y1.", "G01 X1. Y1. F10."), "fanuc-mill")
+
+
+def test_a_haas_program_number_past_five_digits_checks_clean_and_sends(tmp_path):
+    """check exits 0 with the warning at its place; send sends it without --force; convert
+    to a target whose O format holds five digits still refuses it (a digit overflow in the
+    target's format: it cannot carry the number), and to a Fanuc (O of eight digits) carries
+    it as written."""
+    path = tmp_path / "maze.nc"
+    path.write_text("%\nO03082011 (MAZE)\nG20 G90 G54 G00 X0 Y0\nG01 X1. F10.\nM30\n%\n")
+    run = CliRunner().invoke(main, ["check", "-p", "haas-mill", str(path)])
+    assert run.exit_code == 0, run.output
+    assert f"{path}:2:1: warning TG208 O03082011: 7 digits" in run.output
+    sent = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                     "haas-mill", "-y", str(path)])
+    assert sent.exit_code == 0, sent.output
+    out = tmp_path / "out.nc"
+    refused = CliRunner().invoke(main, ["convert", "--from", "haas-mill", "--to", "haas-mill",
+                                        "--units", "metric", "-o", str(out), str(path)])
+    assert refused.exit_code != 0
+    assert "O03082011 needs 7 digits; the target format O05 holds 5" in refused.output
+    assert not out.exists()
+    carried = CliRunner().invoke(main, ["convert", "--from", "haas-mill", "--to", "fanuc-mill",
+                                        "--units", "metric", "-o", str(out), str(path)])
+    assert carried.exit_code == 0, carried.output
+    assert out.read_text().splitlines()[1:4] == ["O03082011 (MAZE)", "G21 G90 G54 G00 X0 Y0",
+                                                 "G01 X25.4 F254."]
 
 
 def test_a_haas_o999999_is_named_as_the_offsets_saved_with_a_program():
@@ -1190,3 +1222,4 @@ def test_go_is_told_what_is_true_of_its_block(profile, block, column, message):
     assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, column)]
     assert hits[0].message.startswith(message), hits[0].message
     assert "no block number" not in hits[0].message
+

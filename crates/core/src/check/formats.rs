@@ -780,12 +780,19 @@ impl Checker {
                          address holds is alarm PS0003, too many digits",
                     );
                 } else if w.letter == b'O' && self.config.haas {
+                    // issue 32, severity by evidence: the number names the program and moves
+                    // nothing; under either answer (an alarm at loading, or the file loaded
+                    // under its name) the blocks after it are read as written, so what is not
+                    // known is said, and the program is read on (docs/dialects.md)
                     message.push_str(
                         ": a Haas program number is O and five digits (Mill Operator's Manual, \
                          NGC, 2017, 4.3.3 and 5.2.2); whether the control alarms on a file \
                          whose O has more, or loads it under its file name, no Haas source at \
-                         hand says (docs/dialects.md)",
+                         hand says; no motion depends on it, and the program is read as written \
+                         (docs/dialects.md)",
                     );
+                    self.report(Rule::PastFormat, message, line, w.column);
+                    return Some(value);
                 }
                 self.report(Rule::DigitOverflow, message, line, w.column);
                 refused = true;
@@ -1149,8 +1156,10 @@ mod tests {
         );
     }
 
-    /// A Haas program number past its five digits stays TG205, and says which of it is the
-    /// manual's (the format) and which no source gives (what the control does with it).
+    /// A Haas program number past its five digits is TG208, a warning (issue 32, severity by
+    /// evidence: the number moves nothing), and says which of it is the manual's (the format)
+    /// and which no source gives (what the control does with it); the program is read on. On
+    /// a Fanuc profile whose O format is five digits it stays TG205.
     #[test]
     fn a_haas_program_number_past_five_digits_says_what_is_not_known() {
         let with_o = |haas: bool| {
@@ -1177,16 +1186,19 @@ mod tests {
             }
         };
         let body = "O03082011\nG00 X1.";
-        assert_eq!(at(with_o(true), body, Rule::DigitOverflow), [(2, 1)]);
-        assert_eq!(at(with_o(true), "O12345\nG00 X1.", Rule::DigitOverflow), []);
-        let haas = findings(with_o(true), &program(body), Rule::DigitOverflow);
+        assert_eq!(at(with_o(true), body, Rule::DigitOverflow), []);
+        assert_eq!(at(with_o(true), body, Rule::PastFormat), [(2, 1)]);
+        assert_eq!(at(with_o(true), "O12345\nG00 X1.", Rule::PastFormat), []);
+        let haas = findings(with_o(true), &program(body), Rule::PastFormat);
         assert!(
             haas[0].message.starts_with("O03082011: 7 digits")
-                && haas[0].message.contains("no Haas source at hand says"),
+                && haas[0].message.contains("no Haas source at hand says")
+                && haas[0].message.contains("the program is read as written"),
             "{}",
             haas[0].message
         );
-        // a Fanuc's (not a Haas) says the format alone
+        // a Fanuc's (not a Haas) says the format alone, and stays an error
+        assert_eq!(at(with_o(false), body, Rule::PastFormat), []);
         let fanuc = findings(with_o(false), &program(body), Rule::DigitOverflow);
         assert!(!fanuc[0].message.contains("Haas"), "{}", fanuc[0].message);
     }
