@@ -167,6 +167,10 @@ _example("TG211",
          "%\nO1\nG20 G90 G00 X0\n#5021 = 1.\nM30\n%\n",
          "%\nO1\nG20 G90 G00 X0\n#100 = #5021\nM30\n%\n",
          "haas-mill")
+_example("TG212",
+         "%\nO1\nG20 G90 G00 X0\n#100 = #30003.078\nM30\n%\n",
+         "%\nO1\nG20 G90 G00 X0\n#100 = #30003\nM30\n%\n",
+         "haas-mill")
 _example("TG210",
          "%\nO1\nG21 G90 G00 X0\n#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\n"
          "N10 #[#1] = 10.\nM30\n%\n",
@@ -408,6 +412,17 @@ SOURCES = {
              "assignment. A program counting on the write is doubtful on a Haas, so named. The "
              "variables the NGC's table marks read only (the profile's checks.read_only) stay "
              "TG209.",
+    "TG212": "Not an error (issue 32, severity by evidence: what tapegate merely does not "
+             "know is a warning). The Haas Mill Operator's Manual, NGC (2017), 6.14.7 Macro "
+             "Variables Table, gives #30000-#39999 as the parameters; Renishaw's Inspection "
+             "Plus macros for the NGC read them with a decimal part (#30003.078, #30057.21), "
+             "which no Haas source at hand documents (whether the decimals select an element "
+             "of the parameter or one of its bits: docs/dialects.md). Either way the program "
+             "reads a value tapegate does not know, as it does an unknown system variable: the "
+             "block is read, and what depends on the value is unknown (TG141), so no geometry "
+             "rule fires on it and a restart past it is refused. Setting such a variable "
+             "(#30003.078 = 5) stays TG100: what it would change on the machine is not known. "
+             "On a Fanuc a variable is numbered with a whole number (\"Custom macro\"): TG100.",
     "TG210": "As TG209, for a variable chosen by a value (#[#1] = ...): the value the checker "
              "knows comes from the blocks above, and a GOTO read before names the sequence "
              "number of this block or one above it, so the jump may arrive with another value "

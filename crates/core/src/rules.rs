@@ -211,6 +211,8 @@ rules! {
         "assignment to a read-only system variable (Custom Macro B: an input, the date, modal information, a position, alarm PS0116; LinuxCNC: tool data, the position, predefined #<_names>; SINUMERIK: the actual values $AA_IM...; a profile's checks.read_only: a Haas NGC's inputs, timers...)";
     ReadOnlyVariableUndocumented = "TG211", Warning, "profile", Formats, false,
         "assignment to a variable Custom Macro B holds read only (the positions, the previous block's codes, the date) on a Haas, whose documentation does not mark it so nor say what the control does";
+    ParameterElementRead = "TG212", Warning, "profile", Formats, false,
+        "a Haas parameter variable read with a decimal part (#30003.078, #30057.21, as Renishaw's Inspection Plus macros for the NGC write them): the NGC manual gives #30000-#39999 as the parameters, no Haas source at hand says what the decimal part selects, so its value is unknown to tapegate, as an unknown system variable's is: read on, and no rule checks what depends on it (said once per variable and file); set with one, it stays TG100";
     ReadOnlyVariableUncertain = "TG210", Warning, "profile", Formats, false,
         "assignment to a variable chosen by a value (#[#1] = ...) that is read only for the value the checker knows, where a jump may arrive with another value (the block follows the sequence number a GOTO names)";
     IndexedG = "TG207", Warning, "6.2.2", Formats, false,

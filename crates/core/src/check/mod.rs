@@ -689,6 +689,8 @@ pub struct Checker {
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
+    /// TG212 is said once per Haas NGC parameter element (`#30003.078`) and file.
+    elements_noted: HashSet<Vec<u8>>,
     /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
     /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
     params: HashMap<Vec<u8>, Dec>,
@@ -970,6 +972,7 @@ impl Checker {
             mixed_reported: false,
             unfollowed_noted: false,
             unknown_noted: false,
+            elements_noted: HashSet::new(),
             params: HashMap::new(),
             goto_targets: HashSet::new(),
             goto_computed: false,
@@ -1473,6 +1476,9 @@ impl Checker {
             self.speed_limit_statement(b);
             self.formulas(b);
             self.variables(b);
+            if self.config.haas {
+                self.parameter_elements(b);
+            }
             if !b.statements.is_empty() {
                 self.system_variables(b);
             }
@@ -1752,6 +1758,9 @@ impl Checker {
         );
         self.assignments(b);
         self.formulas(b);
+        if self.config.haas {
+            self.parameter_elements(b);
+        }
         if !b.statements.is_empty() {
             self.variables(b);
             self.system_variables(b);
