@@ -468,7 +468,13 @@ SOURCES = {
              "the rest go to the machine builder's PMC ladder (0i-F/30i-B Operator's Manuals, "
              "\"Auxiliary function\"); SINUMERIK hands M functions it does not decode to the "
              "PLC (Programming Manual Fundamentals, \"M functions\"); LinuxCNC runs M codes its "
-             "configuration remaps or provides (M100-M199 in USER_M_PATH).",
+             "configuration remaps or provides (M100-M199 in USER_M_PATH). A decimal point in "
+             "S or T beside such an M code on a FANUC (M165 P9811 Z0 S2.): alarm PS0007 where "
+             "the M code is the builder's, while parameters 6080-6089 may make it a custom "
+             "macro call (O9020-O9029; 0i-F/30i-B Operator's Manuals, \"Custom macro\"), whose "
+             "arguments are real numbers; which it is, the machine's parameters say: a warning "
+             "at the word, its value unknown (issue 32, severity by evidence; an M code of the "
+             "table keeps TG202).",
     "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
              "the move just after G40 (\"the move just after exiting cutter compensation mode "
              "must be straight\") and accepts one as the entry move.",
@@ -569,7 +575,8 @@ SOURCES = {
              "Sinha's summary of Custom Macro B calls M3.0 S1000 and M03 S1000.0 illegal "
              "statements, M[3.0] being rounded, and names parameter 3451#2 by which a mill "
              "reads one decimal of S and rounds it. A macro call's arguments (G65 P9732 S1.) "
-             "are real numbers: not judged. P, H and D (whose meaning P takes from its code) "
+             "are real numbers: not judged; beside an M code the table lacks, which parameters "
+             "6080-6089 may make a macro call, TG307 instead (a warning). P, H and D (whose meaning P takes from its code) "
              "and a Haas (no Haas source at hand) keep TG208.",
     "TG204": "ISO 6983-1 Annex C (the format's sign). FANUC: alarm PS0006, illegal use of minus "
              "sign (FANUC alarm list). LinuxCNC: rs274 \"Negative f word used\", \"Negative tool "

@@ -1308,3 +1308,55 @@ def test_a_haas_parameter_element_checks_sends_and_refuses_what_it_cannot_carry(
     assert same.exit_code == 0, same.output
     assert "#10100=#30003.078" in out.read_text()
 
+
+# -- Fanuc: a decimal point in S beside an M code the table lacks (issue 32) ------------------
+
+DOOSAN_PROBE = ("%\nO0030 (PROBE)\nG21 G90 G54 G00 X0 Y0\nG43 H1 Z50. S3000 M03\n"
+                "M165P9811Z0S2.\nG00 X10.\nM30\n%\n")
+
+
+def test_a_point_in_s_beside_an_m_code_parameters_may_make_a_macro_call_is_a_warning(tmp_path):
+    """FANUC parameters 6080-6089 make an M code a custom macro call, whose arguments are real
+    numbers; where M165 is the builder's code instead, S2. is PS0007. An alarm moves nothing,
+    and which it is the machine's parameters say: TG307 at S2., the block read on."""
+    said = [f for f in check_text(DOOSAN_PROBE, load_profile("fanuc-mill"))
+            if f.rule not in ("TG130", "TG133", "TG703")]
+    assert [f for f in said if f.severity == "error"] == []
+    hits = [(f.rule, f.severity, f.line, f.column) for f in said if f.line == 5]
+    assert hits == [("TG307", "warning", 5, 12), ("TG307", "warning", 5, 1)]
+    s = next(f for f in said if f.line == 5 and f.column == 12)
+    assert s.message.startswith("S2.: a decimal point in a spindle speed, alarm PS0007 where "
+                                "M165 is a machine builder's M code; parameters 6080-6089 may "
+                                "make M165 a custom macro call (O9020-O9029")
+    # an M code of the table keeps the alarm (TG202, an error), as does a lathe's
+    assert ("TG202", 5) in errors(DOOSAN_PROBE.replace("M165P9811Z0S2.", "M05 S2."),
+                                  "fanuc-mill")
+    assert ("TG202", 5) in errors(DOOSAN_PROBE.replace("M165P9811Z0S2.", "M165.0 S2."),
+                                  "fanuc-mill")
+    run = CliRunner().invoke(main, ["check", "-p", "fanuc-mill", "-"], input=DOOSAN_PROBE)
+    assert run.exit_code == 0, run.output
+
+
+def test_the_m165_block_sends_and_no_restart_after_it_guesses_the_speed(tmp_path):
+    """send sends it without --force; a restart after it is refused where the speed it would
+    restore is the unknown S (an argument, or the alarm's)."""
+    from dnc import workflow
+    from postproc.restart import RestartRefused
+
+    path = tmp_path / "O0030.nc"
+    path.write_text(DOOSAN_PROBE.replace("G00 X10.", "N60 G00 X10."))
+    sent = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                     "fanuc-mill", "-y", str(path)])
+    assert sent.exit_code == 0, sent.output
+    fanuc = load_profile("fanuc-mill")
+    with pytest.raises(RestartRefused) as refused:
+        workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
+    assert refused.value.line == 6
+    assert "the spindle speed in force is not known: S2. on line 5, a value the check takes as " \
+        "unknown" in refused.value.message, refused.value.message
+    # the same with D and no Z (O0050's form): the speed still stops the restart
+    path.write_text(DOOSAN_PROBE.replace("G00 X10.", "N60 G00 X10.").replace(
+        "M165P9811Z0S2.", "M165P9814D.453S2."))
+    with pytest.raises(RestartRefused) as refused:
+        workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
+    assert "S2. on line 5" in refused.value.message, refused.value.message

@@ -228,7 +228,7 @@ rules! {
     CodeAlarms = "TG306", Error, "profile", Codes, false,
         "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
     CodeNotInProfile = "TG307", Warning, "profile", Codes, false,
-        "G or M code not in the profile's code table, on a control family that may run it (a Fanuc or Haas G code its parameters make a macro call, a machine builder's M code): named, not refused";
+        "G or M code not in the profile's code table, on a control family that may run it (a Fanuc or Haas G code its parameters make a macro call, a machine builder's M code): named, not refused; and a decimal point in S or T beside such an M code on a FANUC, PS0007 unless parameters 6080-6089 make the M code a macro call (real arguments)";
     MClassMissing = "TG305", Warning, "Annex E", Codes, false,
         "M code of a class the profile does not have";
     NoFeedRate = "TG401", Error, "7", Motion, false,

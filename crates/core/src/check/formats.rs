@@ -525,6 +525,26 @@ impl Checker {
         let whole = (explicit && profile_explicit && !self.macro_arguments)
             .then(|| dialect::whole_address(self.config.family, self.config.haas, w.letter))
             .flatten();
+        let call = self.m_call_possible.as_ref().filter(|_| w.letter != b'M');
+        if let (Some((what, _)), Some(m)) = (whole, call) {
+            // issue 32, severity by evidence: an M code the table lacks may be a custom macro
+            // call by the machine's parameters, whose arguments are real numbers; where it is
+            // not one, the control alarms (nothing moves). Which it is, the parameters say, not
+            // the program: a warning, and the word's value unknown (an argument, or no value)
+            let message = format!(
+                "{}: a decimal point in {what}, alarm PS0007 where {m} is a machine builder's M \
+                 code; parameters 6080-6089 may make {m} a custom macro call (O9020-O9029; \
+                 FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\"), whose arguments are \
+                 real numbers ({}: the argument {}), and which this machine has its parameters \
+                 say, not the program: {} is taken as unknown here",
+                w.token(),
+                w.token(),
+                w.letter as char,
+                w.letter as char
+            );
+            self.report(Rule::CodeNotInProfile, message, line, w.column);
+            return None;
+        }
         if let Some((what, note)) = whole {
             let message = format!(
                 "{}: a decimal point in {what}, which the control reads as a whole number: it \
@@ -1244,6 +1264,40 @@ mod tests {
             "{}",
             f.message
         );
+        // issue 32, severity by evidence: beside an M code the table lacks, which parameters
+        // 6080-6089 may make a custom macro call (real arguments), S2. is a warning (TG307),
+        // at its column, and its value unknown; an M code of the table, or the M word's own
+        // point, keeps PS0007
+        let text = "M165P9811Z0S2.";
+        assert_eq!(at(macro_b(), text, Rule::UnexpectedDecimalPoint), []);
+        assert_eq!(
+            at(macro_b(), text, Rule::CodeNotInProfile),
+            [(2, 12), (2, 1)]
+        );
+        let found = super::super::testing::check(macro_b(), &program(text));
+        let s = found
+            .iter()
+            .find(|f| f.rule == Rule::CodeNotInProfile && f.column == 12)
+            .expect("S2. said");
+        assert!(
+            s.message.starts_with(
+                "S2.: a decimal point in a spindle speed, alarm PS0007 where \
+                 M165 is a machine builder's M code; parameters 6080-6089 may make M165 a \
+                 custom macro call"
+            ),
+            "{}",
+            s.message
+        );
+        assert_eq!(
+            at(macro_b(), "M165 T1.0", Rule::CodeNotInProfile),
+            [(2, 6), (2, 1)]
+        );
+        for (text, column) in [("M03 S2.", 5), ("M165.0 S2.", 1), ("M165 M3.0", 6)] {
+            assert!(
+                at(macro_b(), text, Rule::UnexpectedDecimalPoint).contains(&(2, column)),
+                "{text}"
+            );
+        }
         // a Haas: no source says; the ISO profiles: their own rules
         let haas = || Config {
             haas: true,

@@ -654,6 +654,11 @@ pub struct Checker {
     /// arguments, any of them a real number (`G65 P9732 S1. W2.`). Worked out only for a
     /// FANUC block with an M, S or T word, whose point is all it is asked for.
     macro_arguments: bool,
+    /// The block in hand has an M code the profile's table lacks, on a FANUC: its parameters
+    /// 6080-6089 may make it a custom macro call, whose arguments are real numbers, so a
+    /// decimal point in S or T there is PS0007 only where it is not one (TG307, a warning).
+    /// Worked out only for a block with S or T and M: the M word as written.
+    m_call_possible: Option<String>,
     /// A SINUMERIK program's first block of its program section (its line), after which a
     /// `DEF` is out of place (TG109); None in the definition section.
     program_section: Option<usize>,
@@ -1063,6 +1068,7 @@ impl Checker {
             programs: 0,
             split: dialect::ProgramSplit::default(),
             macro_arguments: false,
+            m_call_possible: None,
             program_section: None,
             reading_end: dialect::ReadingEnd::new(family),
         }
