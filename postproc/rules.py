@@ -167,6 +167,10 @@ _example("TG211",
          "%\nO1\nG20 G90 G00 X0\n#5021 = 1.\nM30\n%\n",
          "%\nO1\nG20 G90 G00 X0\n#100 = #5021\nM30\n%\n",
          "haas-mill")
+_example("TG212",
+         "%\nO1\nG20 G90 G00 X0\n#100 = #30003.078\nM30\n%\n",
+         "%\nO1\nG20 G90 G00 X0\n#100 = #30003\nM30\n%\n",
+         "haas-mill")
 _example("TG210",
          "%\nO1\nG21 G90 G00 X0\n#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\n"
          "N10 #[#1] = 10.\nM30\n%\n",
@@ -361,14 +365,25 @@ SOURCES = {
     "TG203": "ISO 6983-1 Annex C, and a profile whose control alarms on decimals past its "
              "resolution (checks.past_decimals = \"alarm\", the strict ISO profiles). Where the "
              "control rounds (SINUMERIK, MD 10200) or no source says, TG208 instead.",
-    "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
-             "number past N99999 and an Okuma sequence name past N04 are TG208 (no alarm "
-             "documented). A Fanuc O number takes eight digits (the 0i-F/30i-B 8-digit program "
-             "number option; the profiles are the machine with its options). A word that "
-             "names a block or a program in its code's block (G70-G73 P Q, M99 P, Haas M97 P: "
-             "a sequence number; G65/G66 P, Haas M98 P: a program) has N's or O's format there "
-             "(the profile's codes.*.words; FANUC \"Multiple repetitive cycle\", "
-             "\"Subprogram\", \"Custom macro\").",
+    "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence number "
+             "past N99999 and an Okuma sequence name past N04 are TG208 (no alarm documented), "
+             "and so is a Haas program number past O99999 (the NGC manual's format is Onnnnn, "
+             "Mill Operator's Manual, NGC, 2017, 4.3.3 and 5.2.2; no Haas source says whether a "
+             "longer one alarms, and the number moves nothing: issue 32, severity by evidence). A "
+             "Fanuc O number takes eight digits (the 0i-F/30i-B 8-digit program number option; "
+             "the profiles are the machine with its options). A word that names a block or a "
+             "program in its code's block (G70-G73 P Q, M99 P, Haas M97 P: a sequence number; "
+             "G65/G66 P, Haas M98 P: a program) has N's or O's format there (the profile's "
+             "codes.*.words; FANUC \"Multiple repetitive cycle\", \"Subprogram\", \"Custom "
+             "macro\").",
+    "TG208": "A profile's checks.past_decimals and checks.past_sequence (what its control "
+             "does with digits past the format: SINUMERIK rounds, MD 10200; a Haas sequence "
+             "number past N99999 has no alarm in its manuals). A Haas program number past "
+             "O99999: the NGC manual gives Onnnnn (Mill Operator's Manual, NGC, 2017, 4.3.3 and "
+             "5.2.2) and no Haas source says what a longer one does; the number names the "
+             "program and moves nothing, so the doubt is said and the program read on (issue "
+             "32, severity by evidence; docs/dialects.md). convert still refuses a number its "
+             "target's O format cannot hold (a digit overflow).",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
              "LinuxCNC #1-#5601 (rs274: \"Parameter number out of range\" for #5602), "
              "SINUMERIK R0-R99 by default (MD 28050, raised in the profile). FANUC: no "
@@ -397,6 +412,17 @@ SOURCES = {
              "assignment. A program counting on the write is doubtful on a Haas, so named. The "
              "variables the NGC's table marks read only (the profile's checks.read_only) stay "
              "TG209.",
+    "TG212": "Not an error (issue 32, severity by evidence: what tapegate merely does not "
+             "know is a warning). The Haas Mill Operator's Manual, NGC (2017), 6.14.7 Macro "
+             "Variables Table, gives #30000-#39999 as the parameters; Renishaw's Inspection "
+             "Plus macros for the NGC read them with a decimal part (#30003.078, #30057.21), "
+             "which no Haas source at hand documents (whether the decimals select an element "
+             "of the parameter or one of its bits: docs/dialects.md). Either way the program "
+             "reads a value tapegate does not know, as it does an unknown system variable: the "
+             "block is read, and what depends on the value is unknown (TG141), so no geometry "
+             "rule fires on it and a restart past it is refused. Setting such a variable "
+             "(#30003.078 = 5) stays TG100: what it would change on the machine is not known. "
+             "On a Fanuc a variable is numbered with a whole number (\"Custom macro\"): TG100.",
     "TG210": "As TG209, for a variable chosen by a value (#[#1] = ...): the value the checker "
              "knows comes from the blocks above, and a GOTO read before names the sequence "
              "number of this block or one above it, so the jump may arrive with another value "
@@ -442,7 +468,13 @@ SOURCES = {
              "the rest go to the machine builder's PMC ladder (0i-F/30i-B Operator's Manuals, "
              "\"Auxiliary function\"); SINUMERIK hands M functions it does not decode to the "
              "PLC (Programming Manual Fundamentals, \"M functions\"); LinuxCNC runs M codes its "
-             "configuration remaps or provides (M100-M199 in USER_M_PATH).",
+             "configuration remaps or provides (M100-M199 in USER_M_PATH). A decimal point in "
+             "S or T beside such an M code on a FANUC (M165 P9811 Z0 S2.): alarm PS0007 where "
+             "the M code is the builder's, while parameters 6080-6089 may make it a custom "
+             "macro call (O9020-O9029; 0i-F/30i-B Operator's Manuals, \"Custom macro\"), whose "
+             "arguments are real numbers; which it is, the machine's parameters say: a warning "
+             "at the word, its value unknown (issue 32, severity by evidence; an M code of the "
+             "table keeps TG202).",
     "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
              "the move just after G40 (\"the move just after exiting cutter compensation mode "
              "must be straight\") and accepts one as the entry move.",
@@ -543,8 +575,9 @@ SOURCES = {
              "Sinha's summary of Custom Macro B calls M3.0 S1000 and M03 S1000.0 illegal "
              "statements, M[3.0] being rounded, and names parameter 3451#2 by which a mill "
              "reads one decimal of S and rounds it. A macro call's arguments (G65 P9732 S1.) "
-             "are real numbers: not judged. P, H and D (whose meaning P takes from its code) "
-             "and a Haas (no Haas source at hand) keep TG208.",
+             "are real numbers: not judged; beside an M code the table lacks, which parameters "
+             "6080-6089 may make a macro call, TG307 instead (a warning). P, H and D (whose "
+             "meaning P takes from its code) and a Haas (no Haas source at hand) keep TG208.",
     "TG204": "ISO 6983-1 Annex C (the format's sign). FANUC: alarm PS0006, illegal use of minus "
              "sign (FANUC alarm list). LinuxCNC: rs274 \"Negative f word used\", \"Negative tool "
              "id\", \"Negative h word used\", \"Negative d word tool radius index used\" "

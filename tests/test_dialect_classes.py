@@ -125,24 +125,56 @@ def test_a_fanuc_file_of_programs_between_percent_signs_splits_only_at_an_o_numb
 
 
 def test_a_haas_program_number_keeps_five_digits():
-    assert not errors("%\nO01001\nG20 G00 X0\nM30\n%\n", "haas-mill")
-    assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
+    assert not found("%\nO01001\nG20 G00 X0\nM30\n%\n", "haas-mill")
+    assert ("TG208", "warning", 2) in found("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
 
 
 @pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
 @pytest.mark.parametrize("number, digits", [("O03082011", 7), ("O2142011", 7), ("O120209", 6)])
 def test_a_haas_program_number_past_five_digits_says_what_no_source_gives(profile, number, digits):
-    """A date or a student's number after O (6-7 digits) stays refused: the NGC manual gives
-    the format Onnnnn, and no Haas source at hand says what the control does with more (an
-    alarm, or the file loaded under its name); the message says both."""
-    text = f"%\n{number} (PART)\nG20 G00 X0\nM30\n%\n"
-    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG205"]
-    assert [(f.severity, f.line, f.column) for f in hits] == [("error", 2, 1)]
+    """A date or a student's number after O (6-7 digits): the NGC manual gives the format
+    Onnnnn, and no Haas source at hand says what the control does with more (an alarm, or the
+    file loaded under its name). The number names the program and moves nothing, so under
+    either answer the blocks are read as written: a warning (issue 32, severity by evidence)
+    that says both, and the program is checked on (its move past the travel still found)."""
+    text = f"%\n{number} (PART)\nG20 G00 X0\nG01 X1. Y1.\nM30\n%\n"
+    said = check_text(text, load_profile(profile))
+    hits = [f for f in said if f.rule in ("TG205", "TG208")]
+    assert [(f.rule, f.severity, f.line, f.column) for f in hits] == [("TG208", "warning", 2, 1)]
     assert hits[0].message.startswith(f"{number}: {digits} digits before the decimal sign")
     assert "NGC, 2017, 4.3.3 and 5.2.2" in hits[0].message
     assert "no Haas source at hand says" in hits[0].message
+    assert "the program is read as written" in hits[0].message
+    # read on: the G01 without a feed after it is still found, at its line
+    assert ("TG401", 4) in errors(text, profile)
     # a Fanuc reads it (the 8-digit program number option) and says nothing
-    assert not errors(text, "fanuc-mill")
+    assert not errors(text.replace("G01 X1. Y1.", "G01 X1. Y1. F10."), "fanuc-mill")
+
+
+def test_a_haas_program_number_past_five_digits_checks_clean_and_sends(tmp_path):
+    """check exits 0 with the warning at its place; send sends it without --force; convert
+    to a target whose O format holds five digits still refuses it (a digit overflow in the
+    target's format: it cannot carry the number), and to a Fanuc (O of eight digits) carries
+    it as written."""
+    path = tmp_path / "maze.nc"
+    path.write_text("%\nO03082011 (MAZE)\nG20 G90 G54 G00 X0 Y0\nG01 X1. F10.\nM30\n%\n")
+    run = CliRunner().invoke(main, ["check", "-p", "haas-mill", str(path)])
+    assert run.exit_code == 0, run.output
+    assert f"{path}:2:1: warning TG208 O03082011: 7 digits" in run.output
+    sent = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                     "haas-mill", "-y", str(path)])
+    assert sent.exit_code == 0, sent.output
+    out = tmp_path / "out.nc"
+    refused = CliRunner().invoke(main, ["convert", "--from", "haas-mill", "--to", "haas-mill",
+                                        "--units", "metric", "-o", str(out), str(path)])
+    assert refused.exit_code != 0
+    assert "O03082011 needs 7 digits; the target format O05 holds 5" in refused.output
+    assert not out.exists()
+    carried = CliRunner().invoke(main, ["convert", "--from", "haas-mill", "--to", "fanuc-mill",
+                                        "--units", "metric", "-o", str(out), str(path)])
+    assert carried.exit_code == 0, carried.output
+    assert out.read_text().splitlines()[1:4] == ["O03082011 (MAZE)", "G21 G90 G54 G00 X0 Y0",
+                                                 "G01 X25.4 F254."]
 
 
 def test_a_haas_o999999_is_named_as_the_offsets_saved_with_a_program():
@@ -444,8 +476,10 @@ M99
 """
 
 
-@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe", "fanuc-mill", "fanuc-lathe"])
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe"])
 def test_a_variable_number_with_a_decimal_part_is_refused_by_name(tmp_path, profile):
+    """On a Fanuc a variable is numbered with a whole number: refused by name. (A Haas reads
+    the NGC program as an unknown value since issue 32's severity by evidence, below.)"""
     path = tmp_path / "O09810.nc"
     path.write_text(NGC_PROBE)
     code, lines = jsonl(str(path), "-p", profile)
@@ -1190,3 +1224,139 @@ def test_go_is_told_what_is_true_of_its_block(profile, block, column, message):
     assert [(f.rule, f.line, f.column) for f in hits] == [("TG100", 4, column)]
     assert hits[0].message.startswith(message), hits[0].message
     assert "no block number" not in hits[0].message
+
+
+# -- Haas: a parameter variable read with a decimal part (issue 32, severity by evidence) -----
+
+HAAS_ELEMENT = ("%\nO09023 (PROBE)\nG20 G00 X0\nG00 Z1.\n#10100=#30003.078\n"
+                "IF [ #30057.21 ] GOTO22\nG01 Z[#30003.036 - 12.7] F10.\nN30 G01 X1.\nG01 Z2.\n"
+                "N22 #101=#30003.078\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
+def test_a_haas_parameter_variable_with_a_decimal_part_is_read_as_an_unknown_value(profile):
+    """Renishaw's Inspection Plus macros for the NGC read `#30003.078`, `#30057.21`: the NGC
+    manual gives #30000-#39999 as the parameters, and no Haas source says what the decimals
+    select, so the value is unknown to tapegate: a warning once per variable (TG212, at its
+    '#'), the program read on, and what depends on it unknown (TG141), as for an unknown
+    system variable."""
+    said = [f for f in check_text(HAAS_ELEMENT, load_profile(profile))
+            if f.rule not in ("TG130", "TG133", "TG703")]
+    assert [f for f in said if f.severity == "error"] == []
+    elements = [(f.severity, f.line, f.column, f.message.split(":")[0]) for f in said
+                if f.rule == "TG212"]
+    assert elements == [("warning", 5, 8, "#30003.078"), ("warning", 6, 6, "#30057.21"),
+                        ("warning", 7, 7, "#30003.036")]
+    assert "6.14.7, gives #30000-#39999 as the parameters" in said[0].message or any(
+        "6.14.7, gives #30000-#39999 as the parameters" in f.message for f in said)
+    # the Z the element sets is unknown, said as any unknown value is
+    assert any(f.rule == "TG141" and f.line == 7 for f in said)
+
+
+def test_an_unknown_parameter_element_fires_no_geometry_rule():
+    """A position set through the unknown value is no position: a travel limit that a plain
+    Z-100. breaks is not judged on Z[#30003.036 - 100.], nor on the blocks after it until a
+    plain value sets Z again."""
+    plain = "%\nO1\nG20 G90 G54 G00 X0 Y0 Z1.\nG01 Z-100. F10.\nM30\n%\n"
+    assert ("TG601", 4) in errors(plain, "haas-mill")
+    unknown = plain.replace("G01 Z-100. F10.", "G01 Z[#30003.036 - 100.] F10.\nG01 X1.")
+    assert [e for e in errors(unknown, "haas-mill")] == []
+
+
+def test_setting_a_haas_parameter_variable_with_a_decimal_part_stays_refused():
+    """What the assignment would change on the machine is not known: still TG100, saying so."""
+    said = [f for f in check_text("%\nO1\nG20 G00 X0\n#30003.078 = 5\nM30\n%\n",
+                                  load_profile("haas-mill")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in said] == [("TG100", 4, 1)]
+    assert "a Haas NGC parameter element such as #30003.078 is read as a value tapegate " \
+        "does not know, but set here" in said[0].message
+
+
+def test_a_fanuc_still_refuses_a_variable_with_a_decimal_part():
+    """Custom Macro B numbers its variables with whole numbers; the Haas reading is the NGC's."""
+    said = [f for f in check_text(HAAS_ELEMENT.replace("G20", "G21"), load_profile("fanuc-mill"))
+            if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in said][:1] == [("TG100", 5, 8)]
+    assert "has a decimal part" in said[0].message
+
+
+def test_a_haas_parameter_element_checks_sends_and_refuses_what_it_cannot_carry(tmp_path):
+    """check exits 0 (warnings only); a restart past the unknown Z is refused (its position is
+    not known); convert to another unit system refuses the expression it cannot scale, as for
+    any variable; convert within inch carries the line as written."""
+    from dnc import workflow
+    from postproc.restart import RestartRefused
+
+    path = tmp_path / "probe.nc"
+    path.write_text(HAAS_ELEMENT)
+    run = CliRunner().invoke(main, ["check", "-p", "haas-mill", str(path)])
+    assert run.exit_code == 0, run.output
+    assert f"{path}:5:8: warning TG212 #30003.078" in run.output
+    haas = load_profile("haas-mill")
+    straight = tmp_path / "straight.nc"  # no IF: the unknown Z alone stops the restart
+    straight.write_text(HAAS_ELEMENT.replace("IF [ #30057.21 ] GOTO22\n", ""))
+    with pytest.raises(RestartRefused) as refused:
+        workflow.prepare(str(straight), haas, haas.serial, name="probe.nc", restart_at="N30")
+    assert refused.value.code == "restart-refused" and refused.value.line == 7
+    assert "the position of Z is not known" in refused.value.message, refused.value.message
+    out = tmp_path / "out.nc"
+    metric = CliRunner().invoke(main, ["convert", "--from", "haas-mill", "--to", "haas-mill",
+                                       "--units", "metric", "-o", str(out), str(path)])
+    assert metric.exit_code != 0 and not out.exists()
+    same = CliRunner().invoke(main, ["convert", "--from", "haas-mill", "--to", "haas-mill",
+                                     "-o", str(out), str(path)])
+    assert same.exit_code == 0, same.output
+    assert "#10100=#30003.078" in out.read_text()
+
+
+# -- Fanuc: a decimal point in S beside an M code the table lacks (issue 32) ------------------
+
+DOOSAN_PROBE = ("%\nO0030 (PROBE)\nG21 G90 G54 G00 X0 Y0\nG43 H1 Z50. S3000 M03\n"
+                "M165P9811Z0S2.\nG00 X10.\nM30\n%\n")
+
+
+def test_a_point_in_s_beside_an_m_code_parameters_may_make_a_macro_call_is_a_warning(tmp_path):
+    """FANUC parameters 6080-6089 make an M code a custom macro call, whose arguments are real
+    numbers; where M165 is the builder's code instead, S2. is PS0007. An alarm moves nothing,
+    and which it is the machine's parameters say: TG307 at S2., the block read on."""
+    said = [f for f in check_text(DOOSAN_PROBE, load_profile("fanuc-mill"))
+            if f.rule not in ("TG130", "TG133", "TG703")]
+    assert [f for f in said if f.severity == "error"] == []
+    hits = [(f.rule, f.severity, f.line, f.column) for f in said if f.line == 5]
+    assert hits == [("TG307", "warning", 5, 12), ("TG307", "warning", 5, 1)]
+    s = next(f for f in said if f.line == 5 and f.column == 12)
+    assert s.message.startswith("S2.: a decimal point in a spindle speed, alarm PS0007 where "
+                                "M165 is a machine builder's M code; parameters 6080-6089 may "
+                                "make M165 a custom macro call (O9020-O9029")
+    # an M code of the table keeps the alarm (TG202, an error), as does a lathe's
+    assert ("TG202", 5) in errors(DOOSAN_PROBE.replace("M165P9811Z0S2.", "M05 S2."),
+                                  "fanuc-mill")
+    assert ("TG202", 5) in errors(DOOSAN_PROBE.replace("M165P9811Z0S2.", "M165.0 S2."),
+                                  "fanuc-mill")
+    run = CliRunner().invoke(main, ["check", "-p", "fanuc-mill", "-"], input=DOOSAN_PROBE)
+    assert run.exit_code == 0, run.output
+
+
+def test_the_m165_block_sends_and_no_restart_after_it_guesses_the_speed(tmp_path):
+    """send sends it without --force; a restart after it is refused where the speed it would
+    restore is the unknown S (an argument, or the alarm's)."""
+    from dnc import workflow
+    from postproc.restart import RestartRefused
+
+    path = tmp_path / "O0030.nc"
+    path.write_text(DOOSAN_PROBE.replace("G00 X10.", "N60 G00 X10."))
+    sent = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                     "fanuc-mill", "-y", str(path)])
+    assert sent.exit_code == 0, sent.output
+    fanuc = load_profile("fanuc-mill")
+    with pytest.raises(RestartRefused) as refused:
+        workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
+    assert refused.value.line == 6
+    assert "the spindle speed in force is not known: S2. on line 5, a value the check takes as " \
+        "unknown" in refused.value.message, refused.value.message
+    # the same with D and no Z (O0050's form): the speed still stops the restart
+    path.write_text(DOOSAN_PROBE.replace("G00 X10.", "N60 G00 X10.").replace(
+        "M165P9811Z0S2.", "M165P9814D.453S2."))
+    with pytest.raises(RestartRefused) as refused:
+        workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
+    assert "S2. on line 5" in refused.value.message, refused.value.message

@@ -176,7 +176,9 @@ fn found(line: &[u8], pos: usize) -> LexError {
 /// follow the digits. A variable is numbered with a whole number in the Fanuc and Haas macro
 /// manuals at hand; the Haas NGC's `#30000`-range parameter variables with a decimal part, as
 /// Renishaw's probing macros for the NGC write them, are documented by none of the sources at
-/// hand (docs/dialects.md says what was searched), so they are refused, and said so.
+/// hand (docs/dialects.md says what was searched). On a Haas a read of one is one variable
+/// whose value is unknown (`Syntax::parameter_elements`, TG212: issue 32, severity by
+/// evidence); elsewhere, and as the target of an assignment, it is refused, and said so.
 pub fn variable_with_decimals(line: &[u8], hash: usize, digits: usize) -> Option<LexError> {
     if line.get(digits) != Some(&b'.') || !line.get(digits + 1).is_some_and(u8::is_ascii_digit) {
         return None;
@@ -372,6 +374,11 @@ impl Scanner<'_> {
             };
             if b == b'#' && self.syntax.macros && !self.syntax.named {
                 if let Some(e) = variable_with_decimals(line, p, end) {
+                    // a Haas NGC's parameter element (`#30003.078`): one variable, its value
+                    // unknown (the checker says so, TG212)
+                    if self.syntax.parameter_elements {
+                        return Ok(digits_end(line, end + 1));
+                    }
                     return Err(Box::new(e));
                 }
             }
@@ -1710,6 +1717,12 @@ impl<B: Build> TreeReader<'_, B> {
         if matches!(b, b'P' | b'Q' | b'R' | b'#') && line.get(p + 1).is_some_and(u8::is_ascii_digit)
         {
             self.pos = digits_end(line, p + 1);
+            // `#30003.078`, a Haas NGC parameter element, which only a Haas dialect's reader
+            // lets through (`Syntax::parameter_elements`): one parameter, whose value no
+            // constant gives
+            if b == b'#' && variable_with_decimals(line, p, self.pos).is_some() {
+                self.pos = digits_end(line, self.pos + 1);
+            }
             return Ok(self.build.param(p, self.pos));
         }
         if b == b'#' {
@@ -2538,6 +2551,7 @@ mod tests {
         named: false,
         names: false,
         lowercase: false,
+        parameter_elements: false,
     };
     const ISO: Syntax = Syntax {
         brackets: false,
@@ -2547,6 +2561,7 @@ mod tests {
         named: false,
         names: false,
         lowercase: false,
+        parameter_elements: false,
     };
     const MACRO: Syntax = Syntax {
         macros: true,

@@ -110,6 +110,7 @@ impl Dialect {
             named: self.family == Family::LinuxCnc,
             names: self.family == Family::Okuma,
             lowercase: self.lowercase,
+            parameter_elements: self.ngc,
         }
     }
 }
@@ -327,6 +328,10 @@ pub struct Syntax {
     pub names: bool,
     /// Lower-case letters read as upper case (function and operator names).
     pub lowercase: bool,
+    /// A Haas NGC: a variable read with a decimal part (`#30003.078`, a parameter element as
+    /// Renishaw's macros for the NGC write it) is read as one variable whose value is unknown
+    /// (TG212); elsewhere a variable is numbered with a whole number and it is refused.
+    pub parameter_elements: bool,
 }
 
 /// A FANUC lathe's G code system (parameter No. 3401, bits 6 GSB and 7 GSC, on the 0i-F and

@@ -928,6 +928,19 @@ impl Walk {
             }
             self.unknown[letter_index(letter)] = None;
         }
+        // a plain F or S whose value the checker could not take (`S2.` beside an M code that
+        // may be a macro call: an argument, or the control's alarm): not known in force
+        for letter in [b'F', b'S'] {
+            if after.is_unknown(letter) && self.unknown[letter_index(letter)].is_none() {
+                if let Some(&(_, token)) = plain_words.iter().find(|&&(l, _)| l == letter) {
+                    let mut why = token.to_vec();
+                    why.extend_from_slice(
+                        format!(" on line {line}, a value the check takes as unknown").as_bytes(),
+                    );
+                    self.unknown[letter_index(letter)] = Some(Why::Text(why));
+                }
+            }
+        }
         if self.program_name.is_none() {
             let text = b.text.trim_ascii();
             if text.starts_with(b"%_N_") {

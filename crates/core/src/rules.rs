@@ -206,11 +206,13 @@ rules! {
     IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
         "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
     PastFormat = "TG208", Warning, "profile", Formats, false,
-        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence), a lathe thread's start angle Q written with a decimal point (the manuals give it in 0.001 deg without one: Haas lathe G32/G76, FANUC 0i-TF G32)";
+        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence), a lathe thread's start angle Q written with a decimal point (the manuals give it in 0.001 deg without one: Haas lathe G32/G76, FANUC 0i-TF G32), a Haas program number past O's five digits (no Haas source says whether the NGC alarms; the number moves nothing, and the program is read as written)";
     ReadOnlyVariable = "TG209", Error, "profile", Formats, false,
         "assignment to a read-only system variable (Custom Macro B: an input, the date, modal information, a position, alarm PS0116; LinuxCNC: tool data, the position, predefined #<_names>; SINUMERIK: the actual values $AA_IM...; a profile's checks.read_only: a Haas NGC's inputs, timers...)";
     ReadOnlyVariableUndocumented = "TG211", Warning, "profile", Formats, false,
         "assignment to a variable Custom Macro B holds read only (the positions, the previous block's codes, the date) on a Haas, whose documentation does not mark it so nor say what the control does";
+    ParameterElementRead = "TG212", Warning, "profile", Formats, false,
+        "a Haas parameter variable read with a decimal part (#30003.078, #30057.21, as Renishaw's Inspection Plus macros for the NGC write them): the NGC manual gives #30000-#39999 as the parameters, no Haas source at hand says what the decimal part selects, so its value is unknown to tapegate, as an unknown system variable's is: read on, and no rule checks what depends on it (said once per variable and file); set with one, it stays TG100";
     ReadOnlyVariableUncertain = "TG210", Warning, "profile", Formats, false,
         "assignment to a variable chosen by a value (#[#1] = ...) that is read only for the value the checker knows, where a jump may arrive with another value (the block follows the sequence number a GOTO names)";
     IndexedG = "TG207", Warning, "6.2.2", Formats, false,
@@ -226,7 +228,7 @@ rules! {
     CodeAlarms = "TG306", Error, "profile", Codes, false,
         "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
     CodeNotInProfile = "TG307", Warning, "profile", Codes, false,
-        "G or M code not in the profile's code table, on a control family that may run it (a Fanuc or Haas G code its parameters make a macro call, a machine builder's M code): named, not refused";
+        "G or M code not in the profile's code table, on a control family that may run it (a Fanuc or Haas G code its parameters make a macro call, a machine builder's M code): named, not refused; and a decimal point in S or T beside such an M code on a FANUC, PS0007 unless parameters 6080-6089 make the M code a macro call (real arguments)";
     MClassMissing = "TG305", Warning, "Annex E", Codes, false,
         "M code of a class the profile does not have";
     NoFeedRate = "TG401", Error, "7", Motion, false,

@@ -2517,6 +2517,65 @@ mod tests {
         assert!(e.message.contains("outside ISO 6983-1"), "{}", e.message);
     }
 
+    /// Issue 32, severity by evidence: on a Haas a parameter variable read with a decimal part
+    /// (`#30003.078`) is one variable whose value is unknown (the checker says so, TG212), in
+    /// an assignment's value, a condition and a word's expression alike; set with one, it stays
+    /// refused at its `#`, saying so. A Fanuc's reading is unchanged (refused by name).
+    #[test]
+    fn a_haas_reads_a_parameter_variable_with_a_decimal_part() {
+        let haas = Dialect {
+            ngc: true,
+            ..dialect(Family::MacroB)
+        };
+        let tokens = |text: &'static str| {
+            let mut words = Vec::new();
+            let extras = tokenize(text.as_bytes(), &haas, &mut words).map_err(|e| e.message)?;
+            let words: Vec<String> = words
+                .iter()
+                .map(|w| String::from_utf8_lossy(&w.text).into_owned())
+                .collect();
+            let statements: Vec<String> = extras
+                .map(|e| e.statements)
+                .unwrap_or_default()
+                .iter()
+                .map(|s| text[s.offset..s.end].to_string())
+                .collect();
+            Ok::<_, String>((words, statements))
+        };
+        assert_eq!(
+            tokens("#10100=#30003.078").unwrap().0,
+            ["#10100=#30003.078"]
+        );
+        assert_eq!(
+            tokens("IF [ #30057.21 ] GOTO22").unwrap().1,
+            ["IF [ #30057.21 ] GOTO22"]
+        );
+        assert_eq!(
+            tokens("M79 G31 Z [ - [ [ #30003.036 - 12.7 ] * #179 ] - #31 ] F [ 2032. * #179 ]")
+                .unwrap()
+                .0,
+            [
+                "M79",
+                "G31",
+                "Z[-[[#30003.036-12.7]*#179]-#31]",
+                "F[2032.*#179]"
+            ]
+        );
+        let e = tokens("#30003.078 = 5").unwrap_err();
+        assert!(
+            e.starts_with("variable #30003.078 has a decimal part: a Haas NGC parameter")
+                && e.contains("set here"),
+            "{e}"
+        );
+        // a point with no digit after it is no such variable: refused as before
+        assert!(tokens("#10100=#30003.").is_err());
+        // the tree reads the variable whole, its value no constant
+        let tree = crate::expr::tree(b"[#30003.036 - 12.7]").unwrap();
+        let mut read = Vec::new();
+        crate::expr::parameters(&tree, &mut read);
+        assert_eq!(read, [(1, 11)]);
+    }
+
     #[test]
     fn macro_b_control_flow() {
         let m = Family::MacroB;

@@ -1310,7 +1310,17 @@ fn word<'a>(
     }
     if address == b'#' && !indexed {
         if dialect.family == Family::MacroB && digits_end > pos {
-            if let Some(e) = expr::variable_with_decimals(line, start, digits_end) {
+            if let Some(mut e) = expr::variable_with_decimals(line, start, digits_end) {
+                if dialect.ngc {
+                    // a Haas reads one (TG212); what setting one does, no source says
+                    let text = e.message.split(' ').nth(1).unwrap_or("").to_owned();
+                    e.message = format!(
+                        "variable {text} has a decimal part: a Haas NGC parameter element such \
+                         as {text} is read as a value tapegate does not know, but set here, \
+                         which no Haas source at hand documents (what the assignment changes on \
+                         the machine is not known)"
+                    );
+                }
                 return Err(e);
             }
         }

@@ -29,6 +29,8 @@ const ALL: Syntax = Syntax {
     // (an Okuma OSP value is kept as text: the tree does not read OSP names)
     names: false,
     lowercase: true,
+    // (a Haas NGC's #30003.078: the tree reads it as one parameter)
+    parameter_elements: true,
 };
 
 fn blank(b: u8) -> bool {
@@ -142,6 +144,8 @@ fuzz_target!(|data: &[u8]| {
             named: bits & 16 != 0,
             lowercase: bits & 32 != 0,
             names: bits & 64 != 0,
+            // a Haas: Custom Macro B, no LinuxCNC names
+            parameter_elements: bits & 8 != 0 && bits & 16 == 0,
         };
         for result in [
             expr::scan(data, 0, syntax),

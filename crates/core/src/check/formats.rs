@@ -525,6 +525,26 @@ impl Checker {
         let whole = (explicit && profile_explicit && !self.macro_arguments)
             .then(|| dialect::whole_address(self.config.family, self.config.haas, w.letter))
             .flatten();
+        let call = self.m_call_possible.as_ref().filter(|_| w.letter != b'M');
+        if let (Some((what, _)), Some(m)) = (whole, call) {
+            // issue 32, severity by evidence: an M code the table lacks may be a custom macro
+            // call by the machine's parameters, whose arguments are real numbers; where it is
+            // not one, the control alarms (nothing moves). Which it is, the parameters say, not
+            // the program: a warning, and the word's value unknown (an argument, or no value)
+            let message = format!(
+                "{}: a decimal point in {what}, alarm PS0007 where {m} is a machine builder's M \
+                 code; parameters 6080-6089 may make {m} a custom macro call (O9020-O9029; \
+                 FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\"), whose arguments are \
+                 real numbers ({}: the argument {}), and which this machine has its parameters \
+                 say, not the program: {} is taken as unknown here",
+                w.token(),
+                w.token(),
+                w.letter as char,
+                w.letter as char
+            );
+            self.report(Rule::CodeNotInProfile, message, line, w.column);
+            return None;
+        }
         if let Some((what, note)) = whole {
             let message = format!(
                 "{}: a decimal point in {what}, which the control reads as a whole number: it \
@@ -780,12 +800,19 @@ impl Checker {
                          address holds is alarm PS0003, too many digits",
                     );
                 } else if w.letter == b'O' && self.config.haas {
+                    // issue 32, severity by evidence: the number names the program and moves
+                    // nothing; under either answer (an alarm at loading, or the file loaded
+                    // under its name) the blocks after it are read as written, so what is not
+                    // known is said, and the program is read on (docs/dialects.md)
                     message.push_str(
                         ": a Haas program number is O and five digits (Mill Operator's Manual, \
                          NGC, 2017, 4.3.3 and 5.2.2); whether the control alarms on a file \
                          whose O has more, or loads it under its file name, no Haas source at \
-                         hand says (docs/dialects.md)",
+                         hand says; no motion depends on it, and the program is read as written \
+                         (docs/dialects.md)",
                     );
+                    self.report(Rule::PastFormat, message, line, w.column);
+                    return Some(value);
                 }
                 self.report(Rule::DigitOverflow, message, line, w.column);
                 refused = true;
@@ -1149,8 +1176,10 @@ mod tests {
         );
     }
 
-    /// A Haas program number past its five digits stays TG205, and says which of it is the
-    /// manual's (the format) and which no source gives (what the control does with it).
+    /// A Haas program number past its five digits is TG208, a warning (issue 32, severity by
+    /// evidence: the number moves nothing), and says which of it is the manual's (the format)
+    /// and which no source gives (what the control does with it); the program is read on. On
+    /// a Fanuc profile whose O format is five digits it stays TG205.
     #[test]
     fn a_haas_program_number_past_five_digits_says_what_is_not_known() {
         let with_o = |haas: bool| {
@@ -1177,16 +1206,19 @@ mod tests {
             }
         };
         let body = "O03082011\nG00 X1.";
-        assert_eq!(at(with_o(true), body, Rule::DigitOverflow), [(2, 1)]);
-        assert_eq!(at(with_o(true), "O12345\nG00 X1.", Rule::DigitOverflow), []);
-        let haas = findings(with_o(true), &program(body), Rule::DigitOverflow);
+        assert_eq!(at(with_o(true), body, Rule::DigitOverflow), []);
+        assert_eq!(at(with_o(true), body, Rule::PastFormat), [(2, 1)]);
+        assert_eq!(at(with_o(true), "O12345\nG00 X1.", Rule::PastFormat), []);
+        let haas = findings(with_o(true), &program(body), Rule::PastFormat);
         assert!(
             haas[0].message.starts_with("O03082011: 7 digits")
-                && haas[0].message.contains("no Haas source at hand says"),
+                && haas[0].message.contains("no Haas source at hand says")
+                && haas[0].message.contains("the program is read as written"),
             "{}",
             haas[0].message
         );
-        // a Fanuc's (not a Haas) says the format alone
+        // a Fanuc's (not a Haas) says the format alone, and stays an error
+        assert_eq!(at(with_o(false), body, Rule::PastFormat), []);
         let fanuc = findings(with_o(false), &program(body), Rule::DigitOverflow);
         assert!(!fanuc[0].message.contains("Haas"), "{}", fanuc[0].message);
     }
@@ -1232,6 +1264,40 @@ mod tests {
             "{}",
             f.message
         );
+        // issue 32, severity by evidence: beside an M code the table lacks, which parameters
+        // 6080-6089 may make a custom macro call (real arguments), S2. is a warning (TG307),
+        // at its column, and its value unknown; an M code of the table, or the M word's own
+        // point, keeps PS0007
+        let text = "M165P9811Z0S2.";
+        assert_eq!(at(macro_b(), text, Rule::UnexpectedDecimalPoint), []);
+        assert_eq!(
+            at(macro_b(), text, Rule::CodeNotInProfile),
+            [(2, 12), (2, 1)]
+        );
+        let found = super::super::testing::check(macro_b(), &program(text));
+        let s = found
+            .iter()
+            .find(|f| f.rule == Rule::CodeNotInProfile && f.column == 12)
+            .expect("S2. said");
+        assert!(
+            s.message.starts_with(
+                "S2.: a decimal point in a spindle speed, alarm PS0007 where \
+                 M165 is a machine builder's M code; parameters 6080-6089 may make M165 a \
+                 custom macro call"
+            ),
+            "{}",
+            s.message
+        );
+        assert_eq!(
+            at(macro_b(), "M165 T1.0", Rule::CodeNotInProfile),
+            [(2, 6), (2, 1)]
+        );
+        for (text, column) in [("M03 S2.", 5), ("M165.0 S2.", 1), ("M165 M3.0", 6)] {
+            assert!(
+                at(macro_b(), text, Rule::UnexpectedDecimalPoint).contains(&(2, column)),
+                "{text}"
+            );
+        }
         // a Haas: no source says; the ISO profiles: their own rules
         let haas = || Config {
             haas: true,

@@ -654,6 +654,11 @@ pub struct Checker {
     /// arguments, any of them a real number (`G65 P9732 S1. W2.`). Worked out only for a
     /// FANUC block with an M, S or T word, whose point is all it is asked for.
     macro_arguments: bool,
+    /// The block in hand has an M code the profile's table lacks, on a FANUC: its parameters
+    /// 6080-6089 may make it a custom macro call, whose arguments are real numbers, so a
+    /// decimal point in S or T there is PS0007 only where it is not one (TG307, a warning).
+    /// Worked out only for a block with S or T and M: the M word as written.
+    m_call_possible: Option<String>,
     /// A SINUMERIK program's first block of its program section (its line), after which a
     /// `DEF` is out of place (TG109); None in the definition section.
     program_section: Option<usize>,
@@ -689,6 +694,8 @@ pub struct Checker {
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
+    /// TG212 is said once per Haas NGC parameter element (`#30003.078`) and file.
+    elements_noted: HashSet<Vec<u8>>,
     /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
     /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
     params: HashMap<Vec<u8>, Dec>,
@@ -970,6 +977,7 @@ impl Checker {
             mixed_reported: false,
             unfollowed_noted: false,
             unknown_noted: false,
+            elements_noted: HashSet::new(),
             params: HashMap::new(),
             goto_targets: HashSet::new(),
             goto_computed: false,
@@ -1060,6 +1068,7 @@ impl Checker {
             programs: 0,
             split: dialect::ProgramSplit::default(),
             macro_arguments: false,
+            m_call_possible: None,
             program_section: None,
             reading_end: dialect::ReadingEnd::new(family),
         }
@@ -1473,6 +1482,9 @@ impl Checker {
             self.speed_limit_statement(b);
             self.formulas(b);
             self.variables(b);
+            if self.config.haas {
+                self.parameter_elements(b);
+            }
             if !b.statements.is_empty() {
                 self.system_variables(b);
             }
@@ -1752,6 +1764,9 @@ impl Checker {
         );
         self.assignments(b);
         self.formulas(b);
+        if self.config.haas {
+            self.parameter_elements(b);
+        }
         if !b.statements.is_empty() {
             self.variables(b);
             self.system_variables(b);

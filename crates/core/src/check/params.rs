@@ -8,6 +8,7 @@ use super::{BlockView, Checker};
 use crate::decimal::Dec;
 use crate::expr;
 use crate::lex::{blank, Family};
+use crate::rules::Rule;
 use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 
 impl Checker {
@@ -53,6 +54,63 @@ impl Checker {
         };
         let value = *self.params.get(&name)?;
         Some(if negative { -value } else { value })
+    }
+
+    /// TG212: a Haas NGC parameter element read in the block (`#30003.078`, outside its
+    /// comments), once per element and file, at its `#`. The reader reads it as one variable
+    /// (`Syntax::parameter_elements`) and no constant gives its value ([`Checker::constant`]
+    /// reads whole-numbered variables only), so what depends on it is unknown (TG141), as
+    /// for a system variable the checker cannot read.
+    pub(super) fn parameter_elements(&mut self, b: &BlockView<'_>) {
+        let text = b.text;
+        let mut i = 0;
+        while let Some(at) = text[i..].iter().position(|&c| c == b'#' || c == b'(') {
+            let at = i + at;
+            if text[at] == b'(' {
+                // a comment, to its ')' (a '(' inside it read as the comment rules read it)
+                match text[at..].iter().position(|&c| c == b')') {
+                    Some(close) => i = at + close + 1,
+                    None => return,
+                }
+                continue;
+            }
+            let digits = at
+                + 1
+                + text[at + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit())
+                    .count();
+            i = digits.max(at + 1);
+            if digits == at + 1 || text.get(digits) != Some(&b'.') {
+                continue;
+            }
+            let end = digits
+                + 1
+                + text[digits + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit())
+                    .count();
+            if end == digits + 1 {
+                continue;
+            }
+            i = end;
+            let element = &text[at..end];
+            if self.elements_noted.contains(element) {
+                continue;
+            }
+            self.elements_noted.insert(element.to_vec());
+            let shown = String::from_utf8_lossy(element);
+            let message = format!(
+                "{shown}: a parameter variable with a decimal part, as Renishaw's Inspection \
+                 Plus macros for the Haas NGC read parameters; the Mill Operator's Manual, NGC, \
+                 2017, 6.14.7, gives #30000-#39999 as the parameters, and no Haas source at hand \
+                 says what a decimal part selects (an element of the parameter or one of its \
+                 bits), so its value is unknown: read on, and no rule checks what depends on it \
+                 (docs/dialects.md)"
+            );
+            let column = crate::text::column(text, at);
+            self.report(Rule::ParameterElementRead, message, b.line, column);
+        }
     }
 
     /// Custom Macro B: where a block carries a sequence number that a `GOTO` read before it

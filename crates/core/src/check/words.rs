@@ -105,6 +105,29 @@ impl Checker {
             && self.letters & bit(b'G') != 0
             && self.letters & (bit(b'M') | bit(b'S') | bit(b'T')) != 0
             && dialect::macro_call(b.words);
+        self.m_call_possible = None;
+        if self.config.family == Family::MacroB
+            && !self.config.haas
+            && self.letters & bit(b'M') != 0
+            && self.letters & (bit(b'S') | bit(b'T')) != 0
+        {
+            self.m_call_possible = b
+                .words
+                .iter()
+                .find(|w| {
+                    w.letter == b'M'
+                        && w.index.is_empty()
+                        && w.expression.is_empty()
+                        && !w.point
+                        && w.value
+                            .and_then(|n| i64::try_from(n).ok())
+                            .is_some_and(|n| {
+                                dialect::m_code_alarms(self.config.family, n).is_none()
+                                    && self.config.code(b'M', n).is_none()
+                            })
+                })
+                .map(|w| w.token());
+        }
         let mut context = self.format_context();
         // the rules of each word's place, letter and address below are a function of the
         // block's addresses alone where it has a key: asked once a key (a debug build asks
