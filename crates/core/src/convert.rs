@@ -3229,6 +3229,9 @@ impl Converter {
                 self.loop_parameter(b, w.token, &out)?;
             }
             let differs = out != w.token;
+            if differs && dwell {
+                self.inch_dwell(b, i, letter)?;
+            }
             if distance_unknown && differs {
                 let column = crate::text::column(b.text, w.start);
                 self.inherited = Some((text(w.token), b.line, column));
@@ -6691,6 +6694,38 @@ impl Converter {
                  the target's form",
             ),
         }
+    }
+
+    /// A FANUC or Haas dwell's X or U written as digits without a point under G20
+    /// (`G20 G04 X1500`), written anew: read with the inch format it is 0.15 s, by the
+    /// increment system alone 1.5 s (SINUMERIK 840D ISO Milling, 3.3.1 "Dwell (G04)"), and no
+    /// source at hand says which the control does. `diff` never calls it the same as another
+    /// dwell and the check's statistics leave it out of the cycle time, so the conversion does
+    /// not write either reading: refused at the word. Carried where its text is kept.
+    fn inch_dwell(&self, b: &BlockIn<'_>, i: usize, letter: u8) -> Result<(), ConvertError> {
+        let w = &b.words[i];
+        if self.c.family != Family::MacroB
+            || self.src_units != Units::Inch
+            || letter == b'P'
+            || !self.c.src_modal.dwell.contains(&letter)
+            || plain_word(w).is_none_or(|(_, _, _, dot, _)| dot)
+        {
+            return Ok(());
+        }
+        Err(ConvertError {
+            message: format!(
+                "{}: a dwell's {} without a decimal point under G20: read with the inch format \
+                 it is a tenth of the time the same digits give by the increment system alone \
+                 (SINUMERIK 840D ISO Milling, 3.3.1 \"Dwell (G04)\"), and no source at hand \
+                 says which a FANUC or Haas control takes; write the time in seconds with its \
+                 point",
+                text(w.token),
+                letter as char
+            ),
+            clause: "dwell",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
     }
 
     /// A drilling cycle's P in force or named in the block (`G82 ... P500`): the dwell at

@@ -346,6 +346,10 @@ pub struct Stats {
     /// is not known, and the moves after it are left out of the path, its lengths, the cycle
     /// time and the backplot until a motion code the list holds.
     pub moves_not_known: Vec<String>,
+    /// Dwells whose time is not known ([`Checker::dwell_time`]), left out of `seconds`: how
+    /// many, and why, each kind once at its first line.
+    pub dwells_not_counted: usize,
+    pub dwells_not_known: Vec<String>,
 }
 
 /// A block as the checker sees it.
