@@ -5528,13 +5528,15 @@ impl Converter {
             .words
             .iter()
             .filter(|_| look)
-            .find_map(|w| unread_character(w.token, reads).map(|at| w.start + at));
+            .find_map(|w| reads.unread_character(w.token).map(|at| w.start + at));
         if let Some((offset, statement, at)) = b
             .statements
             .iter()
             .filter(|_| look)
             .find_map(|&(offset, _, statement)| {
-                unread_character(statement, reads).map(|at| (offset, statement, at))
+                reads
+                    .unread_in_statement(statement)
+                    .map(|at| (offset, statement, at))
             })
             .filter(|&(offset, _, at)| first_word.is_none_or(|w| offset + at < w))
         {
@@ -5562,7 +5564,7 @@ impl Converter {
             .words
             .iter()
             .filter(|_| look)
-            .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
+            .find_map(|w| reads.unread_character(w.token).map(|at| (w, at)))
         {
             if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
                 // the target's family reads no `#` at all: refused as a statement of another
@@ -8263,17 +8265,6 @@ fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
 }
 
-/// The offset in a word's `token` of its first character that `reads` does not read: a `#`
-/// (a parameter), `[` or `]` (an expression), `*` (an expression's multiplication).
-fn unread_character(token: &[u8], reads: &crate::lex::Dialect) -> Option<usize> {
-    token.iter().position(|&c| match c {
-        b'#' => !reads.hash,
-        b'[' | b']' => !reads.brackets,
-        b'*' => !reads.star,
-        _ => false,
-    })
-}
-
 /// Whether a SINUMERIK statement is `RET` alone (in either case, blanks around it): compared
 /// in place, no lower-case copy of each piece made (a statement a block on some programs).
 fn sinumerik_ret(statement: &[u8]) -> bool {
@@ -8287,7 +8278,8 @@ fn sinumerik_ret(statement: &[u8]) -> bool {
 }
 
 /// Whether `line` holds a character `reads` does not read (a `#`, `[`, `]` or `*`: see
-/// [`unread_character`]), by a search of the line for each kind the dialect lacks.
+/// [`crate::lex::Dialect::unread_character`]), by a search of the line for each kind the
+/// dialect lacks.
 fn unread_in_line(line: &[u8], reads: &crate::lex::Dialect) -> bool {
     (!reads.hash && memchr::memchr(b'#', line).is_some())
         || (!reads.brackets && memchr::memchr2(b'[', b']', line).is_some())
@@ -9626,12 +9618,12 @@ mod tests {
             reads.star = lacks & 4 == 0;
             let every = tokens
                 .iter()
-                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+                .find_map(|t| reads.unread_character(&t.text).map(|at| (t.offset, at)));
             let look = unread_in_line(&line, &reads);
             let searched = tokens
                 .iter()
                 .filter(|_| look)
-                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+                .find_map(|t| reads.unread_character(&t.text).map(|at| (t.offset, at)));
             assert_eq!(
                 searched,
                 every,
