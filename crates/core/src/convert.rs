@@ -242,6 +242,10 @@ pub struct ConvertConfig {
     /// mill profile in G8's radius reading, an ISO 6983-1 mill): an X word is refused
     /// ([`Converter::same_x_reading`]).
     pub x_radius: bool,
+    /// The lathe of `x_diameter` or `x_radius` (the target, or the source) is a FANUC, whose
+    /// manual says how G10 reads a tool offset's X ([`Converter::g10_x_reading`]); a Haas or
+    /// Okuma lathe's is in no source at hand.
+    pub x_lathe_fanuc: bool,
     /// The feed modes of the source's and the target's reset states where they differ
     /// (`machine::reset_feed`: 94 per minute, 95 per revolution): a FANUC or Haas lathe's G99
     /// for a mill or LinuxCNC (G94), and the other way. An F word with no feed mode code both
@@ -370,6 +374,7 @@ impl ConvertConfig {
             one_group_codes: Vec::new(),
             x_diameter: false,
             x_radius: false,
+            x_lathe_fanuc: false,
             reset_feed: None,
             percent_words_read: false,
             program_number: Some(b'O'),
@@ -4117,11 +4122,14 @@ impl Converter {
 
     /// G10's X (and a lathe's U, its increment) between a lathe that reads X as a diameter and
     /// a target that reads it as a length, either way ([`Converter::same_x_reading`]): an
-    /// offset's value on the X axis, which a FANUC lathe reads as a diameter or a radius by
-    /// its parameters (B-63444EN/01, 8.4 "Diameter and radius programming": the tool offset's
+    /// offset's value on the X axis. A FANUC lathe reads it as a diameter or a radius by its
+    /// parameters (B-63444EN/01, 8.4 "Diameter and radius programming": the tool offset's
     /// component by parameter No. 5004#1; the manual's table says nothing of the work
-    /// offset's), so what the value is on the lathe is not known from the program: refused at
-    /// the word, the safe side. A value written as zero is the same offset either way.
+    /// offset's), so what the value is on the lathe is not known from the program. For a Haas
+    /// or an Okuma lathe no source at hand says how its G10 reads X (the Haas G10 pages at hand
+    /// are the mill's: L2, L10-L13, L20, R the value), so it is not known either. Refused at
+    /// the word, the safe side, the message naming which of the two it follows. A value
+    /// written as zero is the same offset either way.
     fn g10_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         let lathe_source = self.c.x_radius;
         let Some(w) = b.words.iter().find(|w| {
@@ -4135,13 +4143,39 @@ impl Converter {
         } else {
             ("the source (a mill) as a length", "the target lathe")
         };
+        let lathe_family = if lathe_source {
+            self.c.family
+        } else {
+            self.c.target_family
+        };
+        let (why, safe) = if self.c.x_lathe_fanuc {
+            (
+                "a FANUC lathe reads an offset's X as a diameter or a radius by its parameters \
+                 (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1), which the \
+                 program does not show"
+                    .to_string(),
+                "",
+            )
+        } else {
+            (
+                format!(
+                    "no source at hand says whether a{} lathe's G10 reads an offset's X as a \
+                     diameter or a radius (the Haas G10 pages at hand are the mill's; FANUC's \
+                     B-63444EN/01, 8.4, makes it a parameter's choice on a FANUC)",
+                    if lathe_family == Family::Okuma {
+                        "n Okuma"
+                    } else {
+                        " Haas"
+                    }
+                ),
+                ", and it is refused on the safe side",
+            )
+        };
         Err(ConvertError {
             message: format!(
-                "{}: G10's offset value on the X axis, read by {source} and by {target}; a \
-                 FANUC lathe reads an offset's X as a diameter or a radius by its parameters \
-                 (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1), which the \
-                 program does not show, so the offset may be another by a factor of two; \
-                 tapegate does not halve nor double it: set the offset for the target",
+                "{}: G10's offset value on the X axis, read by {source} and by {target}; \
+                 {why}, so the offset may be another by a factor of two; tapegate does not \
+                 halve nor double it{safe}: set the offset for the target",
                 text(w.token)
             ),
             clause: "profile",
