@@ -72,8 +72,11 @@ def test_a_fanucs_m98_with_its_repetitions_in_p_is_refused_for_linuxcnc(call, wo
     assert (e.line, e.column) == (4, 5), e
     assert e.message.startswith(
         f"{word}: M98's P of more than four digits reads as the number of repetitions and the "
-        "program number (a FANUC: M98 P51002 calls O1002 five times) on the source and as the "
-        "program number, the repetitions by L on the target"), e.message
+        "program number on a FANUC without the 8-digit program number option (M98 P51002 calls "
+        "O1002 five times: B-64124EN/01, 12.3), or as the program number, the repetitions by "
+        "L, on one with it (0i-F, 30i: O51002 once; the FANUC profiles' O08) on the source and "
+        "as the program number, the repetitions by L on the target; which of the two readings "
+        "a FANUC takes, the program does not show"), e.message
     assert "(M98 P1002 L5)" in e.message
 
 
@@ -125,6 +128,9 @@ def test_m98s_long_p_is_refused_where_the_two_controls_read_it_apart(source, tar
     e = refusal(text, source, target)
     assert (e.line, e.column) == (4, call.index(refused) + 1), e
     assert e.message.startswith(f"{refused}: M98's P of more than four digits reads "), e.message
+    # both FANUC readings are said, whichever side the FANUC is on
+    assert "without the 8-digit program number option" in e.message, e.message
+    assert "as the program number, the repetitions by L, on one with it" in e.message
 
 
 INCH_DWELL = "O1000\nG20\nG0 Z1.\n{}\nM30\n"

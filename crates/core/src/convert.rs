@@ -4462,23 +4462,28 @@ impl Converter {
         else {
             return Ok(());
         };
+        // (a FANUC with the 8-digit program number option reads it as a Haas does: which
+        // of the two a FANUC has, the program does not show, so both are said)
         let reading = |repeats: bool| {
             if repeats {
-                "as the number of repetitions and the program number (a FANUC: M98 P51002 calls \
-                 O1002 five times)"
+                "as the number of repetitions and the program number on a FANUC without the \
+                 8-digit program number option (M98 P51002 calls O1002 five times: \
+                 B-64124EN/01, 12.3), or as the program number, the repetitions by L, on one \
+                 with it (0i-F, 30i: O51002 once; the FANUC profiles' O08)"
             } else {
                 "as the program number, the repetitions by L"
             }
         };
         let advice = if from {
-            "write the call with L (M98 P1002 L5)"
+            "write the call with L (M98 P1002 L5), which both read alike"
         } else {
             "give the subprogram a number of four digits"
         };
         Err(ConvertError {
             message: format!(
                 "{}: M98's P of more than four digits reads {} on the source and {} on the \
-                 target; tapegate does not split it: {advice}",
+                 target; which of the two readings a FANUC takes, the program does not show, \
+                 and tapegate does not split the P: {advice}",
                 text(p.token),
                 reading(from),
                 reading(to)
