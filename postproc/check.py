@@ -127,13 +127,18 @@ class CheckStats(Record):
     work_offsets: bool = False  # the profile gives work offsets
     # From which line the moves are not known and why (a G code the family's list lacks)
     moves_not_known: list[str] = field(default_factory=list)
+    # Dwells whose time is not known, left out of ``seconds``: how many, and why (each kind
+    # once, at its first line): SINUMERIK's G4 S, a FANUC or Haas X or U without a point under G20
+    dwells_not_counted: int = 0
+    dwells_not_known: list[str] = field(default_factory=list)
 
     def __init__(self, blocks: int = 0, arcs: int = 0, low: dict[str, Decimal] = NEW,
                  high: dict[str, Decimal] = NEW, rapid_length: float = 0.0,
                  feed_length: float = 0.0, seconds: float = 0.0, tools: list[int] = NEW,
                  units: str = "metric", travel_moves: int = 0, travel_absolute: int = 0,
                  travel_not: list[str] = NEW, work_offsets: bool = False,
-                 moves_not_known: list[str] = NEW) -> None:
+                 moves_not_known: list[str] = NEW, dwells_not_counted: int = 0,
+                 dwells_not_known: list[str] = NEW) -> None:
         self.blocks = blocks
         self.arcs = arcs
         self.low = new(low, dict)
@@ -148,6 +153,8 @@ class CheckStats(Record):
         self.travel_not = new(travel_not, list)
         self.work_offsets = work_offsets
         self.moves_not_known = new(moves_not_known, list)
+        self.dwells_not_counted = dwells_not_counted
+        self.dwells_not_known = new(dwells_not_known, list)
 
 
 class Checker:
@@ -283,7 +290,9 @@ class Checker:
                           travel_moves=s["travel_moves"], travel_absolute=s["travel_absolute"],
                           travel_not=s["travel_not"],
                           work_offsets=bool(self.profile.work_offsets),
-                          moves_not_known=s["moves_not_known"])
+                          moves_not_known=s["moves_not_known"],
+                          dwells_not_counted=s["dwells_not_counted"],
+                          dwells_not_known=s["dwells_not_known"])
 
     @property
     def drawn(self) -> Drawn | None:

@@ -368,6 +368,7 @@ def stats_dict(s: CheckStats) -> dict[str, Any]:
                    "moves": s.travel_moves, "compared": s.travel_absolute,
                    "not_compared": s.travel_not},
         "moves_not_known": s.moves_not_known,
+        "dwells_not_counted": {"count": s.dwells_not_counted, "why": s.dwells_not_known},
     }
 
 
@@ -394,6 +395,11 @@ def stats_text(name: str, s: CheckStats) -> str:
     lines.append(f"  estimated cycle time {minutes} min {seconds:02d} s "
                  "(feeds, the profile's rapid rate, dwells)")
     lines.extend(f"  moves not known {why}" for why in s.moves_not_known)
+    if s.dwells_not_counted:
+        n = s.dwells_not_counted
+        lines.append(f"  {n} dwell{'s' if n > 1 else ''} not in the cycle time, "
+                     f"{'their' if n > 1 else 'its'} time not known:")
+        lines.extend(f"    {why}" for why in s.dwells_not_known)
     lines.append(f"  tools: {', '.join(f'T{t}' for t in s.tools) or 'none'}")
     lines.extend(_travel_text(s))
     return "\n".join(lines) + "\n"

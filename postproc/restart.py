@@ -188,6 +188,8 @@ class _Facts:
     high: dict[str, Decimal]  # the highest value of the retract axes, in mm
     too_long: int | None  # a height too long to compare in mm: the highest point unknown
     refused: int | None  # the first line with a word the control refuses: it alarms there
+    # the first block with two codes of one modal group (TG304) and the check's message
+    conflict: tuple[int, str] | None
     # the units each axis's position and the feed were last written in, and where: a value
     # in force from before a change of units is the same place or speed in other units
     written: dict[str, tuple[str, int]]
@@ -232,7 +234,8 @@ class _Facts:
             h=facts["h"], g43_line=facts["g43_line"], d_token=facts["d_token"],
             work=facts["work"], arc_absolute=facts["arc_absolute"],
             comp_line=facts["comp_line"], cycle=facts["cycle"], high=facts["high"],
-            too_long=facts["too_long"], refused=facts["refused"], written=facts["written"],
+            too_long=facts["too_long"], refused=facts["refused"],
+            conflict=facts["conflict"], written=facts["written"],
             z_reached=facts["z_reached"],
             held=facts["held"],
             contour_next=facts["contour_next"], thread=facts["thread"],
@@ -450,6 +453,13 @@ class _Planner:
                               "run, TG108: see tapegate check): the control alarms there, no "
                               "block after it has run, and what the word sets (a position, the "
                               "highest point the tool went to) is not known")
+        if walk.conflict is not None:
+            at, message = walk.conflict
+            raise self.refuse(f"line {at} holds two codes of one modal group ({message}, TG304: "
+                              "see tapegate check): which of them the control takes, or "
+                              "whether it alarms there, tapegate does not know, so the modal "
+                              "state after that block is not known either; write one code of "
+                              "the group in the block")
         if walk.too_long is not None:
             raise self.refuse(f"the height written on line {walk.too_long} has too many digits "
                               "to be compared in mm: the highest point the tool went to is not "

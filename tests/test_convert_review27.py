@@ -253,7 +253,17 @@ def test_a_mills_g10_x_is_refused_for_a_lathe(source, target):
     e = refusal(text, source, target)
     assert (e.line, e.column) == (4, 11), e
     assert e.message.startswith("X100.: G10's offset value on the X axis"), e.message
-    assert "parameter No. 5004#1" in e.message
+    if target.startswith("fanuc"):
+        # the FANUC page says so of a FANUC lathe
+        assert "a FANUC lathe reads an offset's X as a diameter or a radius by its " \
+            "parameters (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1)" \
+            in e.message, e.message
+    else:
+        # no page at hand says it of a Haas lathe: refused on the safe side, and said so
+        assert "no source at hand says whether a Haas lathe's G10 reads an offset's X as a " \
+            "diameter or a radius" in e.message, e.message
+        assert "tapegate does not halve nor double it, and it is refused on the safe side" \
+            in e.message
     # its X0 is the same offset either way: carried
     out = convert(text.replace("X100.", "X0"), source, target)
     assert "G10 L2 P1 X0 Z-50." in out
@@ -269,6 +279,26 @@ def test_a_lathes_g10_x_is_refused_for_a_target_that_reads_x_as_a_length(block, 
     e = refusal(text, "fanuc-lathe-b", target)
     assert (e.line, e.column) == (5, block.index(word) + 1), e
     assert e.message.startswith(f"{word}: G10's offset value on the X axis"), e.message
+
+
+@pytest.mark.parametrize("source, target, says", [
+    ("haas-lathe", "haas-mill", "no source at hand says whether a Haas lathe's G10"),
+    ("haas-lathe", "linuxcnc", "no source at hand says whether a Haas lathe's G10"),
+    ("fanuc-lathe", "haas-mill", "a FANUC lathe reads an offset's X as a diameter or a radius"),
+    ("okuma-lathe", "okuma-mill", "no source at hand says whether an Okuma lathe's G10"),
+])
+def test_the_g10_x_refusal_names_the_source_it_follows_for_the_lathe(source, target, says):
+    """fix28's doubt: the refusal applied a FANUC page (B-63444EN 8.4) to the Haas lathe too.
+    No Haas page at hand says how a Haas lathe's G10 reads X (the Haas G10 pages found are the
+    mill's), so a Haas or Okuma lathe's G10 X is still refused, on the safe side, and the
+    message says it follows no source there; a FANUC lathe's names the FANUC page."""
+    text = "O1000\nG21 G40\nG0 Z5.\nG10 L2 P1 X20. Z0\nM30\n"
+    if source.startswith("okuma"):
+        text = "G0 Z5.\nG10 L2 P1 X20. Z0\nM02\n"
+    e = refusal(text, source, target)
+    assert e.line == text.split("\n").index("G10 L2 P1 X20. Z0") + 1, e
+    assert says in e.message, e.message
+    assert ("B-63444EN" in e.message) == source.startswith("fanuc") or "FANUC's" in e.message
 
 
 def test_g10_between_two_mills_keeps_its_x():

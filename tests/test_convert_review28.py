@@ -72,8 +72,11 @@ def test_a_fanucs_m98_with_its_repetitions_in_p_is_refused_for_linuxcnc(call, wo
     assert (e.line, e.column) == (4, 5), e
     assert e.message.startswith(
         f"{word}: M98's P of more than four digits reads as the number of repetitions and the "
-        "program number (a FANUC: M98 P51002 calls O1002 five times) on the source and as the "
-        "program number, the repetitions by L on the target"), e.message
+        "program number on a FANUC without the 8-digit program number option (M98 P51002 calls "
+        "O1002 five times: B-64124EN/01, 12.3), or as the program number, the repetitions by "
+        "L, on one with it (0i-F, 30i: O51002 once; the FANUC profiles' O08) on the source and "
+        "as the program number, the repetitions by L on the target; which of the two readings "
+        "a FANUC takes, the program does not show"), e.message
     assert "(M98 P1002 L5)" in e.message
 
 
@@ -125,3 +128,30 @@ def test_m98s_long_p_is_refused_where_the_two_controls_read_it_apart(source, tar
     e = refusal(text, source, target)
     assert (e.line, e.column) == (4, call.index(refused) + 1), e
     assert e.message.startswith(f"{refused}: M98's P of more than four digits reads "), e.message
+    # both FANUC readings are said, whichever side the FANUC is on
+    assert "without the 8-digit program number option" in e.message, e.message
+    assert "as the program number, the repetitions by L, on one with it" in e.message
+
+
+INCH_DWELL = "O1000\nG20\nG0 Z1.\n{}\nM30\n"
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill", "iso-mill", "okuma-mill"])
+def test_an_inch_dwells_x_without_a_point_is_refused_where_written_anew(source, target):
+    """`G20 G04 X1500` is 0.15 s by X's inch length format and 1.5 s by the increment system
+    alone, and no source says which a FANUC or Haas control takes; `diff` never calls it the
+    same and the statistics leave it out. It was written `G04 X0.15` for a Haas (the inch
+    reading stated as fact): refused at the word wherever its text would change."""
+    e = refusal(INCH_DWELL.format("G04 X1500"), source, target)
+    assert (e.line, e.column) == (4, 5), e
+    assert e.message.startswith("X1500: a dwell's X without a decimal point under G20"), e
+    # with its point, or under G21, the time is known and converted
+    assert "G04 X1.5" in convert(INCH_DWELL.format("G04 X1.5"), source, target)
+    assert "X1.5" in convert(INCH_DWELL.replace("G20", "G21").format("G04 X1500"), source,
+                             "haas-mill")
+
+
+def test_an_inch_lathe_dwells_u_without_a_point_is_refused_too():
+    e = refusal("O1000\nG20\nG0 Z1.\nG04 U1500\nM30\n", "fanuc-lathe", "haas-lathe")
+    assert e.message.startswith("U1500: a dwell's U without a decimal point under G20"), e

@@ -154,6 +154,36 @@ def test_a_macro_statement_is_refused_for_a_same_family_profile_whose_dialect_la
     assert body.split("\n")[0] in convert(text, source, source)
 
 
+@pytest.mark.parametrize("body, line, column, character", STATEMENTS + [
+    # no `#` in it: the `[` alone (the check passed it, the converter refused it)
+    ("WHILE[1LT10]DO1\nG1 X1. F100.\nEND1\nM30\n", 4, 6, "["),
+    ("IF[1EQ0]GOTO10\nG1 X1. F100.\nN10 M30\n", 4, 3, "["),
+    ("G1 X1. F100.\nGOTO[2*5]\nN10 M30\n", 5, 5, "["),
+])
+def test_the_check_reports_the_statement_where_the_converter_refuses_it(
+        tmp_path, body, line, column, character):
+    """One predicate (`Dialect::unread_character`): the check on a profile whose dialect
+    lacks `#` / `[ ]` reports the macro statement at the character the conversion for that
+    profile refuses, TG101 with file:line:col."""
+    target = nomacro(tmp_path)
+    text = FANUC + "G0 X0 Y0 Z5.\n" + body
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, ConvertOptions(target=target, source=load_profile("fanuc-mill")))
+    assert (err.value.line, err.value.column) == (line, column)
+    blocks = parse_text(text, target.dialect, file="in.nc", errors="collect")
+    found = [(f.rule, f.file, f.line, f.column, f.message)
+             for f in Checker(target, file="in.nc").run(iter(blocks)) if f.severity == "error"]
+    assert found == [("TG101", "in.nc", line, column,
+                      f"character {character} of a macro statement is not among the characters "
+                      "the profile allows: a control without it has no such statement and "
+                      "refuses the block")], found
+    # the source's own profile reads the statement
+    fanuc = load_profile("fanuc-mill")
+    blocks = parse_text(text, fanuc.dialect, file="in.nc", errors="collect")
+    assert not [f for f in Checker(fanuc, file="in.nc").run(iter(blocks))
+                if f.rule in ("TG100", "TG101")]
+
+
 def test_a_statement_is_refused_at_the_first_character_of_the_block(tmp_path):
     """A word before the statement with `#` is refused first, where the block reads it."""
     target = nomacro(tmp_path)

@@ -36,6 +36,22 @@ def test_reset_states_of_clause_14():
     assert load_profile("pm322-eia").reset_state()[0] == "G00"
 
 
+@pytest.mark.parametrize("name", builtin_names())
+def test_a_profiles_description_says_the_feed_mode_of_its_reset(name):
+    """iso-lathe's description said "feed per revolution" while its reset (ISO 6983-1 clause
+    14.4, contouring on lathes) is G94: a description that names a feed mode names the one
+    the modal state starts in."""
+    from postproc.state import ModalMachine
+    profile = load_profile(name)
+    mode = ModalMachine(profile).state.feed_mode
+    text = profile.description.lower()
+    if "feed per revolution" in text or "feed per minute" in text:
+        said = 95 if "feed per revolution" in text else 94
+        assert mode == said, (name, profile.description, mode)
+    if name == "iso-lathe":
+        assert mode == 94 and "feed per minute at reset (G94, clause 14.4)" in profile.description
+
+
 def test_a_profile_states_its_own_reset_state():
     profile = profile_from_text('name = "x"\nreset = ["G00", "G17", "G40", "G71", "G80", "G90"]\n')
     assert profile.reset_state() == ("G00", "G17", "G40", "G71", "G80", "G90")

@@ -2047,3 +2047,56 @@ def test_a_haas_lathe_g112_is_its_xc_interpolation_not_a_work_offset():
         "cannot restart here: G112 (polar coordinate interpolation) from line 9 is in force "
         "and the preamble cannot restore it")
     assert plan(text.format(off="N10 G113\n"), 14, haas).preamble
+
+
+# -- two codes of one modal group before the restart point (TG304) ------------------------------
+
+CONFLICT = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G00 Z150.\n"
+            "N4 {block} Z100.\nN5 G00 X10. Y5.\nN6 G01 Z2. F100.\nN7 G01 X50.\nM30\n%\n")
+# N4 is line 6, N7 line 9
+
+
+@pytest.mark.parametrize("block, first, second", [
+    ("G49 G43.4 H1", "G43.4", "G49"),
+    ("G43 G49 H1", "G49", "G43"),
+    ("G43.4 G43 H1", "G43", "G43.4"),
+    ("G00 G01 G43 H1", "G01", "G00"),
+])
+def test_no_restart_after_a_block_with_two_codes_of_one_modal_group(block, first, second):
+    """fix28's doubt: `G49 G43.4 H1` (or `G43 G49 H1`) was planned by the restart as its first
+    code, where the check reports the block (TG304) and no source at hand says which code
+    the control takes. Refused, naming the block and the check's message."""
+    text = CONFLICT.format(block=block)
+    said = refusal(text, 9)
+    assert said.startswith(
+        f"cannot restart here: line 6 holds two codes of one modal group ({first} and "
+        f"{second} are both in modal group"), said
+    assert "TG304: see tapegate check" in said
+    # the check says the same of that block
+    blocks = parse_text(text, FANUC.dialect, file="p.nc")
+    from postproc.check import Checker
+    found = [(f.rule, f.line) for f in Checker(FANUC, file="p.nc").run(iter(blocks))
+             if f.rule == "TG304"]
+    assert found == [("TG304", 6)]
+    # a restart at the block itself and before it is planned (nothing of it ran yet)
+    assert plan(text, 6).preamble is not None
+    # one code of the group: planned
+    one = CONFLICT.format(block="G43 H1")
+    assert plan(one, 9).preamble
+
+
+def test_two_program_stops_in_a_block_refuse_a_restart_after_it_too():
+    text = CONFLICT.replace("N5 G00 X10. Y5.", "N5 G00 X10. Y5. M00 M01").format(block="G43 H1")
+    said = refusal(text, 9)
+    assert said.startswith("cannot restart here: line 7 holds two codes of one modal group "
+                           "(M00 and M01 are both in the group of program stops"), said
+
+
+def test_a_modal_group_conflict_in_another_program_of_the_file_does_not_refuse():
+    """Each program of a file is walked from its own start: a conflict in the first does not
+    refuse a restart in the second."""
+    second = CONFLICT.format(block="G43 H1").replace("O1000", "O2000")
+    text = CONFLICT.format(block="G49 G43.4 H1").replace("M30\n%\n", "M30\n") + second[2:]
+    lines = text.split("\n")
+    at = lines.index("N7 G01 X50.", 10) + 1
+    assert plan(text, at).preamble

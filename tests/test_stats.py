@@ -252,3 +252,68 @@ def test_a_dwell_counts_its_time_in_the_profiles_units(profile, block, seconds) 
     base = stats(text.replace(f"{block}\n", ""), profile).seconds
     s = stats(text, profile)
     assert s.seconds - base == pytest.approx(seconds, abs=1e-9), s.seconds
+
+
+# -- a dwell whose time is not known is counted apart, consistently with diff and convert -------
+
+INCH_DWELL = "%\nO1\nG20 G17 G90 G94\nG00 X0 Y0 Z0\n{}\nM30\n%\n"
+
+
+@pytest.mark.parametrize("profile, block", [
+    ("fanuc-mill", "G04 X1500"),
+    ("haas-mill", "G04 X1500"),
+    ("fanuc-lathe", "G04 U1500"),
+    ("fanuc-lathe", "G04 X1500"),
+])
+def test_a_fanuc_or_haas_inch_dwell_without_a_point_is_no_time_of_the_program(profile, block):
+    """`G20 G04 X1500` is 0.15 s by the inch length format and 1.5 s by the increment system
+    alone; no source says which the control takes. `diff` never calls it the same and convert
+    refuses it: the statistics state no time for it either, and say why, once, with the
+    count of such dwells."""
+    text = INCH_DWELL.format(f"{block}\n{block}\nG04 X1.5")
+    s = stats(text, profile)
+    base = stats(INCH_DWELL.format(""), profile).seconds
+    assert s.seconds - base == pytest.approx(1.5, abs=1e-9)  # the X1.5 alone
+    assert s.dwells_not_counted == 2
+    letter = block.split()[1][0]
+    assert s.dwells_not_known == [
+        f"from line 5: a dwell's {letter} without a decimal point under G20 ({block.split()[1]}):"
+        " read with the inch format it is 0.15 s, with the metric one ten times that; no source "
+        "says whether the control's dwell follows G20's increment (diff keeps such a dwell "
+        "apart, convert refuses it)"]
+
+
+@pytest.mark.parametrize("profile, block, seconds", [
+    ("fanuc-mill", "G21\nG04 X1500", 1.5),  # metric: the increment 0.001 either way
+    ("fanuc-mill", "G04 X1.5", 1.5),  # the point says seconds
+    ("fanuc-mill", "G04 P1500", 1.5),  # P is milliseconds in either units
+    ("haas-mill", "G04 P1.5", 1.5),
+    ("fanuc-mill", "#1=1.5\nG04 X#1", 1.5),  # the value the control computes
+])
+def test_an_inch_dwell_whose_time_is_known_still_counts(profile, block, seconds):
+    s = stats(INCH_DWELL.format(block), profile)
+    base = stats(INCH_DWELL.format(block.rsplit("\n", 1)[0] if "\n" in block else ""),
+                 profile).seconds
+    assert s.seconds - base == pytest.approx(seconds, abs=1e-9)
+    assert s.dwells_not_counted == 0 and s.dwells_not_known == []
+
+
+def test_a_sinumerik_dwell_by_revolutions_is_said_not_counted():
+    s = stats("G17 G90 G0 X0 Y0 Z0\nG4 S30\nG4 S10\nM30\n", "sinumerik-840d")
+    assert s.seconds == 0 and s.dwells_not_counted == 2
+    assert s.dwells_not_known == [
+        "from line 2: SINUMERIK's G4 S is revolutions of the spindle, no time without the "
+        "spindle's speed at the dwell"]
+
+
+def test_check_stats_reports_the_dwells_not_counted_in_text_and_json(tmp_path):
+    path = tmp_path / "inch.nc"
+    path.write_text(INCH_DWELL.format("G04 X1500"))
+    result = CliRunner().invoke(main, ["check", "--stats", "-p", "fanuc-mill", str(path)])
+    assert "1 dwell not in the cycle time, its time not known:\n    from line 5: a dwell's X " \
+        "without a decimal point under G20 (X1500)" in result.output, result.output
+    result = CliRunner().invoke(main, ["check", "--stats", "--format", "json", "-p",
+                                       "fanuc-mill", str(path)])
+    stats_of = json.loads(result.output)["stats"][str(path)]
+    assert stats_of["dwells_not_counted"]["count"] == 1
+    assert stats_of["dwells_not_counted"]["why"][0].startswith("from line 5: a dwell's X")

@@ -242,6 +242,10 @@ pub struct ConvertConfig {
     /// mill profile in G8's radius reading, an ISO 6983-1 mill): an X word is refused
     /// ([`Converter::same_x_reading`]).
     pub x_radius: bool,
+    /// The lathe of `x_diameter` or `x_radius` (the target, or the source) is a FANUC, whose
+    /// manual says how G10 reads a tool offset's X ([`Converter::g10_x_reading`]); a Haas or
+    /// Okuma lathe's is in no source at hand.
+    pub x_lathe_fanuc: bool,
     /// The feed modes of the source's and the target's reset states where they differ
     /// (`machine::reset_feed`: 94 per minute, 95 per revolution): a FANUC or Haas lathe's G99
     /// for a mill or LinuxCNC (G94), and the other way. An F word with no feed mode code both
@@ -290,6 +294,98 @@ pub struct ConvertConfig {
     /// with I J K is refused.
     /// (How the source reads them, how the target does: `machine::ijk_reading`.)
     pub ijk: Option<(&'static str, &'static str)>,
+}
+
+impl ConvertConfig {
+    /// The baseline of a conversion from a `from` control to a `to` control, for the tests
+    /// and the fuzz crate: no word formats, IS-B increments (0.001 mm, 0.0001 in) on both
+    /// sides, metric by ISO 6983-1 clause 14.3's reset, the target reading every form the
+    /// source may write (`#`, `[ ]`, `*`), nothing refused between the two beyond what the
+    /// formats say. Each user sets what it tests by struct update (`ConvertConfig { ..,
+    /// ..ConvertConfig::between(from, to) }`), so a new field is written here once. A real
+    /// conversion's config comes from the two compiled machines (`Machine::convert_to`).
+    pub fn between(from: Family, to: Family) -> ConvertConfig {
+        ConvertConfig {
+            src_formats: Vec::new(),
+            src_formats_inch: None,
+            out_formats_inch: None,
+            explicit_in: true,
+            src_increments: None,
+            dst_increments: None,
+            src_modal: ModalSettings {
+                reset: vec![1, 17, 40, 21, 80, 90, 94],
+                inch: 20,
+                metric: 21,
+                default_units: Units::Metric,
+                family: from,
+                fanuc_lathe: false,
+                g80_clears_motion: false,
+                centre_codes: false,
+                heidenhain: from == Family::Heidenhain,
+                lap: false,
+                sinumerik_units: false,
+                units_kept_at_end: true,
+                dwell: crate::word::dwell_words(from, false),
+                arc_radius: crate::word::arc_radius(from, false),
+                lacks_g: Vec::new(),
+                g_system: Default::default(),
+            },
+            pqr: [Role::Other, Role::Other, Role::Length],
+            out_formats: Vec::new(),
+            dwell_formats: Vec::new(),
+            feed_rev_formats: [None, None],
+            explicit_out: true,
+            inch_code: "G20".into(),
+            metric_code: "G21".into(),
+            target_units: Units::Metric,
+            units: None,
+            rounding: Rounding::HalfEven,
+            spacing: Spacing::Keep,
+            allow_unconverted: false,
+            parameters: None,
+            read_units: Vec::new(),
+            family: from,
+            lathe: false,
+            target_family: to,
+            target_dialect: Dialect {
+                family: to,
+                hash: true,
+                brackets: true,
+                star: true,
+                ..Dialect::default()
+            },
+            same_cycle_table: true,
+            target_g_system: None,
+            target_data_input: true,
+            fanuc_haas: None,
+            m98_repeats: None,
+            source_detected: false,
+            src_units_given: false,
+            upper_case: false,
+            target_ngc: false,
+            target_units_kept: true,
+            src_increment: [3, 4],
+            out_increment: [3, 4],
+            target_past_sequence: PastFormat::Alarm,
+            target_g80_clears_motion: false,
+            target_arc_radius: crate::word::arc_radius(to, false),
+            colon_stops: false,
+            lathe_tool_offset: false,
+            one_group_codes: Vec::new(),
+            x_diameter: false,
+            x_radius: false,
+            x_lathe_fanuc: false,
+            reset_feed: None,
+            percent_words_read: false,
+            program_number: Some(b'O'),
+            differing_codes: Vec::new(),
+            listed_codes: None,
+            target_alarm_g: false,
+            src_decimal_g: None,
+            src_listed: None,
+            ijk: None,
+        }
+    }
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -3229,6 +3325,9 @@ impl Converter {
                 self.loop_parameter(b, w.token, &out)?;
             }
             let differs = out != w.token;
+            if differs && dwell {
+                self.inch_dwell(b, i, letter)?;
+            }
             if distance_unknown && differs {
                 let column = crate::text::column(b.text, w.start);
                 self.inherited = Some((text(w.token), b.line, column));
@@ -4023,11 +4122,14 @@ impl Converter {
 
     /// G10's X (and a lathe's U, its increment) between a lathe that reads X as a diameter and
     /// a target that reads it as a length, either way ([`Converter::same_x_reading`]): an
-    /// offset's value on the X axis, which a FANUC lathe reads as a diameter or a radius by
-    /// its parameters (B-63444EN/01, 8.4 "Diameter and radius programming": the tool offset's
+    /// offset's value on the X axis. A FANUC lathe reads it as a diameter or a radius by its
+    /// parameters (B-63444EN/01, 8.4 "Diameter and radius programming": the tool offset's
     /// component by parameter No. 5004#1; the manual's table says nothing of the work
-    /// offset's), so what the value is on the lathe is not known from the program: refused at
-    /// the word, the safe side. A value written as zero is the same offset either way.
+    /// offset's), so what the value is on the lathe is not known from the program. For a Haas
+    /// or an Okuma lathe no source at hand says how its G10 reads X (the Haas G10 pages at hand
+    /// are the mill's: L2, L10-L13, L20, R the value), so it is not known either. Refused at
+    /// the word, the safe side, the message naming which of the two it follows. A value
+    /// written as zero is the same offset either way.
     fn g10_x_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         let lathe_source = self.c.x_radius;
         let Some(w) = b.words.iter().find(|w| {
@@ -4041,13 +4143,39 @@ impl Converter {
         } else {
             ("the source (a mill) as a length", "the target lathe")
         };
+        let lathe_family = if lathe_source {
+            self.c.family
+        } else {
+            self.c.target_family
+        };
+        let (why, safe) = if self.c.x_lathe_fanuc {
+            (
+                "a FANUC lathe reads an offset's X as a diameter or a radius by its parameters \
+                 (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1), which the \
+                 program does not show"
+                    .to_string(),
+                "",
+            )
+        } else {
+            (
+                format!(
+                    "no source at hand says whether a{} lathe's G10 reads an offset's X as a \
+                     diameter or a radius (the Haas G10 pages at hand are the mill's; FANUC's \
+                     B-63444EN/01, 8.4, makes it a parameter's choice on a FANUC)",
+                    if lathe_family == Family::Okuma {
+                        "n Okuma"
+                    } else {
+                        " Haas"
+                    }
+                ),
+                ", and it is refused on the safe side",
+            )
+        };
         Err(ConvertError {
             message: format!(
-                "{}: G10's offset value on the X axis, read by {source} and by {target}; a \
-                 FANUC lathe reads an offset's X as a diameter or a radius by its parameters \
-                 (B-63444EN/01, 8.4: the tool offset's by parameter No. 5004#1), which the \
-                 program does not show, so the offset may be another by a factor of two; \
-                 tapegate does not halve nor double it: set the offset for the target",
+                "{}: G10's offset value on the X axis, read by {source} and by {target}; \
+                 {why}, so the offset may be another by a factor of two; tapegate does not \
+                 halve nor double it{safe}: set the offset for the target",
                 text(w.token)
             ),
             clause: "profile",
@@ -4334,23 +4462,28 @@ impl Converter {
         else {
             return Ok(());
         };
+        // (a FANUC with the 8-digit program number option reads it as a Haas does: which
+        // of the two a FANUC has, the program does not show, so both are said)
         let reading = |repeats: bool| {
             if repeats {
-                "as the number of repetitions and the program number (a FANUC: M98 P51002 calls \
-                 O1002 five times)"
+                "as the number of repetitions and the program number on a FANUC without the \
+                 8-digit program number option (M98 P51002 calls O1002 five times: \
+                 B-64124EN/01, 12.3), or as the program number, the repetitions by L, on one \
+                 with it (0i-F, 30i: O51002 once; the FANUC profiles' O08)"
             } else {
                 "as the program number, the repetitions by L"
             }
         };
         let advice = if from {
-            "write the call with L (M98 P1002 L5)"
+            "write the call with L (M98 P1002 L5), which both read alike"
         } else {
             "give the subprogram a number of four digits"
         };
         Err(ConvertError {
             message: format!(
                 "{}: M98's P of more than four digits reads {} on the source and {} on the \
-                 target; tapegate does not split it: {advice}",
+                 target; which of the two readings a FANUC takes, the program does not show, \
+                 and tapegate does not split the P: {advice}",
                 text(p.token),
                 reading(from),
                 reading(to)
@@ -5525,13 +5658,15 @@ impl Converter {
             .words
             .iter()
             .filter(|_| look)
-            .find_map(|w| unread_character(w.token, reads).map(|at| w.start + at));
+            .find_map(|w| reads.unread_character(w.token).map(|at| w.start + at));
         if let Some((offset, statement, at)) = b
             .statements
             .iter()
             .filter(|_| look)
             .find_map(|&(offset, _, statement)| {
-                unread_character(statement, reads).map(|at| (offset, statement, at))
+                reads
+                    .unread_in_statement(statement)
+                    .map(|at| (offset, statement, at))
             })
             .filter(|&(offset, _, at)| first_word.is_none_or(|w| offset + at < w))
         {
@@ -5559,7 +5694,7 @@ impl Converter {
             .words
             .iter()
             .filter(|_| look)
-            .find_map(|w| unread_character(w.token, reads).map(|at| (w, at)))
+            .find_map(|w| reads.unread_character(w.token).map(|at| (w, at)))
         {
             if w.token[at] == b'#' && !reads_hash_parameters(self.c.target_family) {
                 // the target's family reads no `#` at all: refused as a statement of another
@@ -6691,6 +6826,38 @@ impl Converter {
                  the target's form",
             ),
         }
+    }
+
+    /// A FANUC or Haas dwell's X or U written as digits without a point under G20
+    /// (`G20 G04 X1500`), written anew: read with the inch format it is 0.15 s, by the
+    /// increment system alone 1.5 s (SINUMERIK 840D ISO Milling, 3.3.1 "Dwell (G04)"), and no
+    /// source at hand says which the control does. `diff` never calls it the same as another
+    /// dwell and the check's statistics leave it out of the cycle time, so the conversion does
+    /// not write either reading: refused at the word. Carried where its text is kept.
+    fn inch_dwell(&self, b: &BlockIn<'_>, i: usize, letter: u8) -> Result<(), ConvertError> {
+        let w = &b.words[i];
+        if self.c.family != Family::MacroB
+            || self.src_units != Units::Inch
+            || letter == b'P'
+            || !self.c.src_modal.dwell.contains(&letter)
+            || plain_word(w).is_none_or(|(_, _, _, dot, _)| dot)
+        {
+            return Ok(());
+        }
+        Err(ConvertError {
+            message: format!(
+                "{}: a dwell's {} without a decimal point under G20: read with the inch format \
+                 it is a tenth of the time the same digits give by the increment system alone \
+                 (SINUMERIK 840D ISO Milling, 3.3.1 \"Dwell (G04)\"), and no source at hand \
+                 says which a FANUC or Haas control takes; write the time in seconds with its \
+                 point",
+                text(w.token),
+                letter as char
+            ),
+            clause: "dwell",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
     }
 
     /// A drilling cycle's P in force or named in the block (`G82 ... P500`): the dwell at
@@ -8228,17 +8395,6 @@ fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
 }
 
-/// The offset in a word's `token` of its first character that `reads` does not read: a `#`
-/// (a parameter), `[` or `]` (an expression), `*` (an expression's multiplication).
-fn unread_character(token: &[u8], reads: &crate::lex::Dialect) -> Option<usize> {
-    token.iter().position(|&c| match c {
-        b'#' => !reads.hash,
-        b'[' | b']' => !reads.brackets,
-        b'*' => !reads.star,
-        _ => false,
-    })
-}
-
 /// Whether a SINUMERIK statement is `RET` alone (in either case, blanks around it): compared
 /// in place, no lower-case copy of each piece made (a statement a block on some programs).
 fn sinumerik_ret(statement: &[u8]) -> bool {
@@ -8252,7 +8408,8 @@ fn sinumerik_ret(statement: &[u8]) -> bool {
 }
 
 /// Whether `line` holds a character `reads` does not read (a `#`, `[`, `]` or `*`: see
-/// [`unread_character`]), by a search of the line for each kind the dialect lacks.
+/// [`crate::lex::Dialect::unread_character`]), by a search of the line for each kind the
+/// dialect lacks.
 fn unread_in_line(line: &[u8], reads: &crate::lex::Dialect) -> bool {
     (!reads.hash && memchr::memchr(b'#', line).is_some())
         || (!reads.brackets && memchr::memchr2(b'[', b']', line).is_some())
@@ -8656,74 +8813,23 @@ mod tests {
             src_formats: metric.clone(),
             src_formats_inch: Some(inch.clone()),
             out_formats_inch: Some(inch),
-            explicit_in: true,
             src_increments: Some(b"FGPQL".to_vec()),
             dst_increments: Some(b"FGPQL".to_vec()),
             src_modal: ModalSettings {
                 reset: vec![0, 18, 21, 40, 80, 97, 99],
-                inch: 20,
-                metric: 21,
-                default_units: Units::Metric,
                 family: Family::MacroB,
                 fanuc_lathe: lathe,
-                g80_clears_motion: false,
-                sinumerik_units: false,
                 centre_codes: !lathe,
-                heidenhain: false,
-                lap: false,
-                units_kept_at_end: true,
                 dwell: crate::word::dwell_words(Family::MacroB, lathe),
                 arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
-                lacks_g: Vec::new(),
-                g_system: Default::default(),
+                ..ConvertConfig::between(Family::MacroB, Family::MacroB).src_modal
             },
-            pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,
-            dwell_formats: Vec::new(),
-            feed_rev_formats: [None, None],
-            explicit_out: true,
-            inch_code: "G20".into(),
-            metric_code: "G21".into(),
-            target_units: Units::Metric,
             units: Some(Units::Inch),
-            rounding: Rounding::HalfEven,
-            spacing: Spacing::Keep,
-            allow_unconverted: false,
-            parameters: None,
-            read_units: Vec::new(),
-            family: Family::MacroB,
             lathe,
-            src_increment: [3, 4],
-            out_increment: [3, 4],
-            target_family: Family::MacroB,
             target_dialect: crate::lex::Dialect::permissive(Family::MacroB),
-            same_cycle_table: true,
-            target_g_system: None,
-            target_data_input: true,
-            fanuc_haas: None,
-            m98_repeats: None,
-            source_detected: false,
-            src_units_given: false,
-            upper_case: false,
-            target_ngc: false,
-            target_units_kept: true,
-            target_past_sequence: PastFormat::Alarm,
-            target_g80_clears_motion: false,
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
-            colon_stops: false,
-            lathe_tool_offset: false,
-            percent_words_read: false,
-            one_group_codes: Vec::new(),
-            x_diameter: false,
-            x_radius: false,
-            reset_feed: None,
-            program_number: Some(b'O'),
-            differing_codes: Vec::new(),
-            target_alarm_g: false,
-            listed_codes: None,
-            src_decimal_g: None,
-            src_listed: None,
-            ijk: None,
+            ..ConvertConfig::between(Family::MacroB, Family::MacroB)
         }
     }
 
@@ -9591,12 +9697,12 @@ mod tests {
             reads.star = lacks & 4 == 0;
             let every = tokens
                 .iter()
-                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+                .find_map(|t| reads.unread_character(&t.text).map(|at| (t.offset, at)));
             let look = unread_in_line(&line, &reads);
             let searched = tokens
                 .iter()
                 .filter(|_| look)
-                .find_map(|t| unread_character(&t.text, &reads).map(|at| (t.offset, at)));
+                .find_map(|t| reads.unread_character(&t.text).map(|at| (t.offset, at)));
             assert_eq!(
                 searched,
                 every,

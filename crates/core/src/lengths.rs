@@ -1440,6 +1440,7 @@ mod tests {
     fn sinumerik_conditions_tie_and_an_index_proves_nothing() {
         let sinumerik = Dialect {
             family: Family::Sinumerik,
+            brackets: true,
             star: true,
             expressions: true,
             ..Dialect::default()

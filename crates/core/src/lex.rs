@@ -100,6 +100,50 @@ impl Dialect {
         }
     }
 
+    /// Where `text` first holds a macro character this dialect does not read: a `#`, a `[`
+    /// or `]`, a `*`. One predicate for the checker's reading of a statement
+    /// (`tokenizer`: TG101 at that character) and the conversion's refusal of a statement or
+    /// a word for a target profile (`convert`, `conversion-dialect`): a control without them
+    /// has no such macro statement and refuses the block. A quoted string's text (an OSP
+    /// `VUACM[1]='... #1.'`, a SINUMERIK `MSG("...")`) is text, not the statement's
+    /// characters.
+    pub fn unread_character(&self, text: &[u8]) -> Option<usize> {
+        self.unread(text, true)
+    }
+
+    /// [`Dialect::unread_character`] of a statement of the dialect's own family: an Okuma
+    /// OSP statement's `#` is its own form of a value (`VFST=#80H`, `expr::Parser::name`),
+    /// no parameter, read whatever the profile's characters. The checker's reading of a
+    /// statement (TG101) and the conversion's refusal of a statement of the target's family
+    /// both ask this.
+    pub fn unread_in_statement(&self, text: &[u8]) -> Option<usize> {
+        self.unread(text, self.family != Family::Okuma)
+    }
+
+    fn unread(&self, text: &[u8], hash_parameter: bool) -> Option<usize> {
+        let hash = self.hash || !hash_parameter;
+        if hash && self.brackets && self.star {
+            return None;
+        }
+        let mut quote = None;
+        text.iter().position(|&c| match (quote, c) {
+            (Some(q), _) => {
+                if c == q {
+                    quote = None;
+                }
+                false
+            }
+            (None, b'\'' | b'"') => {
+                quote = Some(c);
+                false
+            }
+            (None, b'#') => !hash,
+            (None, b'[' | b']') => !self.brackets,
+            (None, b'*') => !self.star,
+            _ => false,
+        })
+    }
+
     /// What an expression may hold under this dialect.
     pub(crate) fn syntax(&self) -> Syntax {
         Syntax {

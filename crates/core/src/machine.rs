@@ -309,6 +309,11 @@ impl Machine {
                 && out.diameter,
             // (an ISO 6983-1 lathe target says nothing of how its machine reads X)
             x_radius: source.diameter && !out.diameter && !target.lathe,
+            x_lathe_fanuc: if self.lathe {
+                self.control == Control::Fanuc
+            } else {
+                target.control == Control::Fanuc
+            },
             // (an ISO 6983-1 profile without a `reset` list resets to clause 14's G94, a lathe
             // too: 14.4)
             reset_feed: (reset_feed(&source.modal) != reset_feed(&out.modal))

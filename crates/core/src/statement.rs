@@ -2422,7 +2422,12 @@ mod tests {
             family,
             lowercase: matches!(family, Family::LinuxCnc | Family::Sinumerik),
             hash: matches!(family, Family::MacroB | Family::LinuxCnc),
-            brackets: matches!(family, Family::MacroB | Family::LinuxCnc),
+            // (as the built-in profiles' characters: sinumerik-840d's and the OSP profiles'
+            // `[ ]`)
+            brackets: matches!(
+                family,
+                Family::MacroB | Family::LinuxCnc | Family::Sinumerik | Family::Okuma
+            ),
             semicolon: !matches!(family, Family::MacroB),
             star: true,
             expressions: true,

@@ -188,7 +188,20 @@ fn tokenize_as<'a, const PLAIN: bool>(
             _ => false,
         };
         if dialect.family != Family::Iso && !word_ahead {
-            match statement::read(line, pos, dialect, words)? {
+            let read = statement::read(line, pos, dialect, words);
+            // a statement with a macro character the dialect does not read (`WHILE[1LT10]DO1`
+            // on a FANUC without Custom Macro B): TG101 at that character, as the conversion
+            // refuses it for such a target (`Dialect::unread_character`, one predicate);
+            // where the statement cannot be read, up to the place its reading stopped
+            let end = match &read {
+                Ok(Some(Read::Statement(s))) => Some(s.end),
+                Err(e) => Some((e.offset + 1).min(n)),
+                _ => None,
+            };
+            if let Some(at) = end.and_then(|end| dialect.unread_in_statement(&line[pos..end])) {
+                return Err(unread_statement_character(line, pos + at));
+            }
+            match read? {
                 Some(Read::Statement(s)) => {
                     pos = s.end;
                     extras
@@ -649,6 +662,21 @@ fn character_error(line: &[u8], pos: usize, dialect: &Dialect) -> LexError {
         ),
     };
     err(ErrorKind::Character, message, pos, "Annex A")
+}
+
+/// A macro statement's `#`, `[`, `]` or `*` that the dialect does not read
+/// ([`Dialect::unread_character`]).
+fn unread_statement_character(line: &[u8], at: usize) -> LexError {
+    err(
+        ErrorKind::Character,
+        format!(
+            "character {} of a macro statement is not among the characters the profile \
+             allows: a control without it has no such statement and refuses the block",
+            line[at] as char
+        ),
+        at,
+        "Annex A",
+    )
 }
 
 /// Comments and the program identification may hold any printable character, tab and CR; the
@@ -2176,6 +2204,65 @@ mod tests {
         }
         // ISO 6983-1 reads N anywhere (TG130 says the order)
         assert_eq!(words("G0 X1 N10", &STRICT), ["G0", "X1", "N10"]);
+    }
+
+    /// A macro statement on a dialect without `#`, `[ ]` or `*` (a FANUC without Custom Macro
+    /// B): TG101 at its first such character, the one the conversion refuses for such a
+    /// target (`Dialect::unread_character`); the statement without them is read.
+    #[test]
+    fn a_statement_with_a_character_the_dialect_lacks_is_refused_there() {
+        let fanuc = Dialect::permissive(Family::MacroB);
+        let bare = Dialect {
+            hash: false,
+            brackets: false,
+            star: false,
+            ..fanuc
+        };
+        for (text, at) in [
+            ("WHILE[1LT10]DO1", 5),
+            ("WHILE[#1LT10]DO1", 5),
+            ("N5 IF[1EQ0]GOTO10", 5),
+            ("GOTO#2", 4),
+            ("GOTO[2*5]", 4),
+        ] {
+            let mut words = Vec::new();
+            let e = tokenize(text.as_bytes(), &bare, &mut words).unwrap_err();
+            assert_eq!(
+                e.kind.rule(),
+                Rule::CharacterOutsideSet,
+                "{text}: {}",
+                e.message
+            );
+            assert_eq!(e.offset, at, "{text}");
+            assert_eq!(bare.unread_character(text.as_bytes()), Some(at), "{text}");
+            assert!(
+                tokenize(text.as_bytes(), &fanuc, &mut words).is_ok(),
+                "{text}"
+            );
+            assert_eq!(fanuc.unread_character(text.as_bytes()), None);
+        }
+        let mut words = Vec::new();
+        assert!(tokenize(b"GOTO10", &bare, &mut words).is_ok());
+        // a `*` alone is read where the dialect has it
+        let star = Dialect { star: true, ..bare };
+        assert_eq!(star.unread_character(b"GOTO[2*5]"), Some(4));
+        assert_eq!(star.unread_character(b"A*B"), None);
+        // a quoted string's text is no statement character
+        assert_eq!(bare.unread_character(b"VUACM[1]='#1.'"), Some(5));
+        let okuma = Dialect {
+            hash: false,
+            ..Dialect::permissive(Family::Okuma)
+        };
+        assert_eq!(
+            okuma.unread_character(b"VUACM[1]='PSRT = 0 (MISSING) #1.'"),
+            None
+        );
+        assert_eq!(okuma.unread_character(b"VUACM[1]=#1"), Some(9));
+        // an OSP statement's `#` is its value form (`#80H`), no parameter
+        assert_eq!(okuma.unread_in_statement(b"VFST=#80H"), None);
+        assert_eq!(bare.unread_in_statement(b"GOTO#2"), Some(4));
+        let mut words = Vec::new();
+        assert!(tokenize(b"VFST=#80H", &okuma, &mut words).is_ok());
     }
 
     #[test]

@@ -11,7 +11,6 @@ use std::sync::Arc;
 use tapegate_core::check::{Code, Config, Ijk, ProfileFacts, Role, Status};
 use tapegate_core::convert::{ConvertConfig, ParameterClass, ParameterClasses, Rounding, Spacing};
 use tapegate_core::decimal::Dec;
-use tapegate_core::dialect::PastFormat;
 use tapegate_core::modal::{ModalSettings, Units};
 use tapegate_core::rules::Selection;
 use tapegate_core::wordformat::{WordFormat, Zeros};
@@ -369,6 +368,12 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
     } else {
         (inch_formats(source_zeros), metric_formats(Zeros::Leading))
     };
+    let (source, target) = if variant >= 2 {
+        (Family::MacroB, Family::MacroB)
+    } else {
+        (Family::Iso, Family::Iso)
+    };
+    // the baseline (`ConvertConfig::between`), and what each variant sets
     ConvertConfig {
         src_formats,
         explicit_in: to_inch,
@@ -386,66 +391,21 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             } else {
                 vec![1, 17, 40, 20, 80, 90, 94]
             },
-            inch: 20,
-            metric: 21,
             default_units: if to_inch { Units::Metric } else { Units::Inch },
             family: Family::Iso,
-            fanuc_lathe: false,
-            g80_clears_motion: false,
-            sinumerik_units: false,
             centre_codes: variant == 2,
-            heidenhain: false,
-            lap: false,
-            units_kept_at_end: true,
             dwell: b"XPF",
             arc_radius: b'R',
-            lacks_g: Vec::new(),
-            g_system: Default::default(),
+            ..ConvertConfig::between(Family::Iso, Family::Iso).src_modal
         },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]
         } else {
             [Role::Other, Role::Length, Role::Length]
         },
-        family: if variant >= 2 {
-            Family::MacroB
-        } else {
-            Family::Iso
-        },
-        lathe: variant == 3,
-        target_family: if variant >= 2 {
-            Family::MacroB
-        } else {
-            Family::Iso
-        },
-        // the target reads every form the source may write (`#`, `[ ]`, `*`)
-        target_dialect: Dialect {
-            family: if variant >= 2 {
-                Family::MacroB
-            } else {
-                Family::Iso
-            },
-            hash: true,
-            brackets: true,
-            star: true,
-            ..Dialect::default()
-        },
-        same_cycle_table: true,
-        target_g_system: None,
-        target_data_input: true,
-        source_detected: false,
-        src_units_given: false,
-        upper_case: false,
-        target_ngc: false,
-        target_units_kept: true,
         out_formats,
         dwell_formats: dwell,
-        feed_rev_formats: [None, None],
-        fanuc_haas: None,
-        m98_repeats: None,
         explicit_out: !to_inch,
-        inch_code: "G20".into(),
-        metric_code: "G21".into(),
         target_units: if to_inch { Units::Inch } else { Units::Metric },
         units: Some(if to_inch { Units::Inch } else { Units::Metric }),
         rounding: match variant {
@@ -460,27 +420,11 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         },
         allow_unconverted: variant == 2,
         parameters,
-        read_units: Vec::new(),
-        // IS-B: 0.001 mm, 0.0001 in, on both sides
-        src_increment: [3, 4],
-        out_increment: [3, 4],
-        // a Fanuc-like target alarms on a sequence number past its N format
-        target_past_sequence: PastFormat::Alarm,
-        target_g80_clears_motion: false,
+        lathe: variant == 3,
+        // (the target reads every form the source may write, `#`, `[ ]`, `*`; IS-B on both
+        // sides; a Fanuc-like target alarms on a sequence number past its N format: the
+        // baseline's)
         target_arc_radius: b'R',
-        colon_stops: false,
-        lathe_tool_offset: false,
-        percent_words_read: false,
-        one_group_codes: Vec::new(),
-        x_diameter: false,
-        x_radius: false,
-        reset_feed: None,
-        differing_codes: Vec::new(),
-        listed_codes: None,
-        target_alarm_g: false,
-        src_decimal_g: None,
-        src_listed: None,
-        ijk: None,
-        program_number: Some(b'O'),
+        ..ConvertConfig::between(source, target)
     }
 }

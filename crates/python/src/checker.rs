@@ -572,6 +572,8 @@ impl Checker {
         d.set_item("travel_absolute", s.travel_absolute)?;
         d.set_item("travel_not", s.travel_not.clone())?;
         d.set_item("moves_not_known", s.moves_not_known.clone())?;
+        d.set_item("dwells_not_counted", s.dwells_not_counted)?;
+        d.set_item("dwells_not_known", s.dwells_not_known.clone())?;
         d.set_item("units", self.inner.units().name())?;
         Ok(d)
     }

@@ -358,6 +358,7 @@ impl RestartWalk {
         d.set_item("high", high)?;
         d.set_item("too_long", w.too_long)?;
         d.set_item("refused", self.checker.refused_at())?;
+        d.set_item("conflict", self.checker.conflict_at())?;
         let written = PyDict::new(py);
         for (i, entry) in w.written.iter().enumerate() {
             if let Some((units, line)) = entry {

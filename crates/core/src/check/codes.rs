@@ -297,6 +297,8 @@ impl Checker {
                     words[i].token(),
                     words[j].token(),
                 );
+                self.conflict_at
+                    .get_or_insert_with(|| (line, message.clone()));
                 self.report(Rule::ModalGroupConflict, message, line, words[i].column);
             }
             Some(_) => {}
@@ -329,6 +331,8 @@ impl Checker {
                 "M{:02} and M{:02} are both in the group of program stops: one per block",
                 stops[0], stops[1]
             );
+            self.conflict_at
+                .get_or_insert_with(|| (b.line, message.clone()));
             self.report(Rule::ModalGroupConflict, message, b.line, column);
         }
     }

@@ -346,6 +346,10 @@ pub struct Stats {
     /// is not known, and the moves after it are left out of the path, its lengths, the cycle
     /// time and the backplot until a motion code the list holds.
     pub moves_not_known: Vec<String>,
+    /// Dwells whose time is not known ([`Checker::dwell_time`]), left out of `seconds`: how
+    /// many, and why, each kind once at its first line.
+    pub dwells_not_counted: usize,
+    pub dwells_not_known: Vec<String>,
 }
 
 /// A block as the checker sees it.
@@ -799,6 +803,9 @@ pub struct Checker {
     /// The first line of this program with a word or block the control refuses (a reading
     /// error): it alarms there ([`Checker::refused_at`]).
     refused_at: Option<usize>,
+    /// The first block of this program with two codes of one modal group (TG304, whether or
+    /// not the rule is selected), and the check's message ([`Checker::conflict_at`]).
+    conflict_at: Option<(usize, String)>,
     /// LinuxCNC's motion mode as rs274ngc keeps it, for its canned-cycle refusals (TG412).
     linuxcnc_motion: tooling::LinuxCncMotion,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
@@ -1053,6 +1060,7 @@ impl Checker {
             motion_unknown: false,
             cycle_unmodelled: false,
             refused_at: None,
+            conflict_at: None,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
@@ -1113,6 +1121,15 @@ impl Checker {
     /// restart refuses after it.
     pub fn refused_at(&self) -> Option<usize> {
         self.refused_at
+    }
+
+    /// The first block of the program being read with two codes of one modal group (TG304),
+    /// with the check's message: which of them the control takes, or whether it alarms, is
+    /// not known, so the modal state after it is not either. The restart refuses after it.
+    pub fn conflict_at(&self) -> Option<(usize, &str)> {
+        self.conflict_at
+            .as_ref()
+            .map(|(line, m)| (*line, m.as_str()))
     }
 
     pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {

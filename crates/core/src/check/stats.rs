@@ -19,29 +19,78 @@ impl Checker {
     /// spindle's speed at the dwell); ISO 6983-1's, Okuma's and HEIDENHAIN's X, P, F in
     /// seconds. A time, never revolutions under G95 (FANUC's dwell by revolutions is a
     /// parameter's choice, not the default).
+    ///
+    /// A time not known is left out of the cycle time and said in `dwells_not_known` (each
+    /// kind once, at its first line, with a count): SINUMERIK's S, and a FANUC or Haas X or U
+    /// without a point under G20. Read with the inch format that word is a tenth of the time
+    /// the same digits give under G21 (`G20 G04 X1500`, 0.15 s or 1.5 s), and no source at
+    /// hand says whether the control's dwell follows G20's increment; `diff` keeps such a
+    /// dwell apart (`ncread`, its `inch_in_doubt`) and convert refuses it, so the statistics
+    /// do not state a time for it either.
     pub(super) fn dwell_time(&mut self, b: &BlockView<'_>) {
         for &letter in self.machine.settings.dwell {
             let Some(value) = self.values.get(letter) else {
                 continue;
             };
+            let word = b
+                .words
+                .iter()
+                .find(|w| w.letter == letter && w.index.is_empty());
+            let point = word.is_some_and(|w| w.point);
+            // (a time by a parameter or an expression is the value the control computes, no
+            // count of increments)
+            let digits = word.is_some_and(|w| !w.point && w.expression.is_empty());
             let seconds = match (self.config.family, letter) {
-                (Family::Sinumerik, b'S') => return,
+                (Family::Sinumerik, b'S') => {
+                    self.dwell_not_known(
+                        b.line,
+                        "SINUMERIK's G4 S",
+                        "SINUMERIK's G4 S is revolutions of the spindle, no time without the \
+                         spindle's speed at the dwell",
+                    );
+                    return;
+                }
                 (Family::MacroB, b'P') => {
-                    let point = b
-                        .words
-                        .iter()
-                        .find(|w| w.letter == b'P')
-                        .is_some_and(|w| w.number.contains(&b'.'));
                     if point {
                         value.to_f64()
                     } else {
                         value.to_f64() / 1000.0
                     }
                 }
+                (Family::MacroB, _) if digits && self.machine.state.units == Units::Inch => {
+                    let token = word.map_or(&b""[..], |w| w.token);
+                    let kind = format!("a dwell's {} ", letter as char);
+                    let said = format!(
+                        "{kind}without a decimal point under G20 ({}): read with the inch \
+                         format it is {} s, with the metric one ten times that; no source says \
+                         whether the control's dwell follows G20's increment (diff keeps such \
+                         a dwell apart, convert refuses it)",
+                        String::from_utf8_lossy(token),
+                        value.to_f64()
+                    );
+                    self.dwell_not_known(b.line, &kind, &said);
+                    return;
+                }
                 _ => value.to_f64(),
             };
             self.stats.seconds += seconds;
             return;
+        }
+    }
+
+    /// A dwell whose time is not known: counted apart, its kind said once (`kind` starts
+    /// the reason and tells one kind from another).
+    fn dwell_not_known(&mut self, line: usize, kind: &str, why: &str) {
+        self.stats.dwells_not_counted += 1;
+        let known = self
+            .stats
+            .dwells_not_known
+            .iter()
+            .any(|m| m.split_once(": ").is_some_and(|(_, r)| r.starts_with(kind)));
+        if !known {
+            self.stats
+                .dwells_not_known
+                .push(format!("from line {line}: {why}"));
         }
     }
 

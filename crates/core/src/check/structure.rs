@@ -271,6 +271,7 @@ impl Checker {
         self.targets_ended();
         self.reach_reset();
         self.refused_at = None;
+        self.conflict_at = None;
         self.programs += 1;
         self.ended_line = 0;
         self.surely_ended = false;

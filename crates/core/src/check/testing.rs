@@ -201,9 +201,15 @@ pub(super) fn dialect(family: Family) -> Dialect {
         family,
         lowercase: matches!(family, Family::LinuxCnc | Family::Sinumerik),
         hash: macros,
-        brackets: macros || family == Family::Sinumerik,
+        // (as the built-in profiles' characters: sinumerik-840d's and the OSP profiles' `[ ]`
+        // and `*`, heidenhain-iso's `*`)
+        brackets: macros || matches!(family, Family::Sinumerik | Family::Okuma),
         semicolon: matches!(family, Family::LinuxCnc | Family::Sinumerik),
-        star: macros || family == Family::Sinumerik,
+        star: macros
+            || matches!(
+                family,
+                Family::Sinumerik | Family::Okuma | Family::Heidenhain
+            ),
         expressions: true,
         ngc: false,
     }
