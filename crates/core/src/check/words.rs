@@ -106,6 +106,13 @@ impl Checker {
             && self.letters & (bit(b'M') | bit(b'S') | bit(b'T')) != 0
             && dialect::macro_call(b.words);
         let mut context = self.format_context();
+        // (the words' keys are their own where nothing of the block gives a word another
+        // reading: Checker::plain_format_key; a cycle's table gives roles that
+        // `Meanings::any` does not count, so the roles themselves are looked at)
+        let plain_keys = !self.format_table.afresh
+            && self.named.is_empty()
+            && self.meanings.roles == [None; 26]
+            && !self.meanings.start_angle;
         // the rules of each word's place, letter and address below are a function of the
         // block's addresses alone where it has a key: asked once a key (a debug build asks
         // them of a kept block too, and asserts they find nothing)
@@ -198,7 +205,7 @@ impl Checker {
                 self.readable.push(known);
                 continue;
             }
-            let value = self.format_or_kept(w, line, &mut context);
+            let value = self.format_or_kept(w, line, &mut context, plain_keys);
             self.readable.push(value);
         }
         self.seen = seen;
