@@ -3,7 +3,7 @@
 
 use super::params;
 use super::{is_dimension, BlockView, Checker, Config, Implicit, Word};
-use crate::decimal::{Dec, POW10};
+use crate::decimal::{Dec, MAX_DIGITS, POW10};
 use crate::dialect::{self, PastFormat};
 use crate::lex::{blank, Family};
 use crate::modal::Units;
@@ -35,7 +35,11 @@ pub(super) struct FormatTable {
     /// nothing and changed nothing, by a multiplicative hash of the key ([`KEPT`] places, 0
     /// for none), with the format they were read by (the key holds all it depends on): a
     /// word of a key kept here is only read ([`Checker::format_or_kept`]).
-    clean: Box<[(u64, WordFormat)]>,
+    /// With each, where the key's word has the digits' value of its scan ([`Word::value`]) and
+    /// no point, the scale the format gives its digits ([`WordFormat::scale_of_digits`], a
+    /// function of the key's length of the number, letter and units): a kept word's value is
+    /// that value at that scale, with no reading through the format ([`NO_SCALE`]: read it).
+    clean: Box<[(u64, WordFormat, u8)]>,
     /// No verdict is kept, of a word's format or of a block's addresses: every rule is asked
     /// of every word and block ([`Checker::keep_verdicts`], the tests' oracle).
     pub(super) afresh: bool,
@@ -48,6 +52,9 @@ pub(super) struct FormatTable {
 /// The places of [`FormatTable::clean`].
 const KEPT: usize = 1024;
 
+/// [`FormatTable::clean`]: no scale kept, the word's value is read through its format.
+const NO_SCALE: u8 = u8::MAX;
+
 impl FormatTable {
     pub(super) fn new(config: &Config) -> FormatTable {
         let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
@@ -55,7 +62,7 @@ impl FormatTable {
         FormatTable {
             formats: [of(Units::Metric), of(Units::Inch)],
             no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
-            clean: vec![(0, WordFormat::fallback(b'A')); KEPT].into_boxed_slice(),
+            clean: vec![(0, WordFormat::fallback(b'A'), NO_SCALE); KEPT].into_boxed_slice(),
             afresh: false,
             named_codes: named_codes(&config.facts.code_words),
         }
@@ -452,33 +459,109 @@ impl Checker {
         (self.found.len(), self.refused_at, styles)
     }
 
+    /// [`Checker::format_key`] of a word of a block whose words' keys are their own
+    /// (`plain_keys` of [`Checker::format_or_kept`]: no word names a block, no code or cycle
+    /// table gives a word a role or makes Q a start angle, verdicts kept), worked out from what the scan
+    /// found of its digits: the shape of its number from the value of its digits
+    /// ([`Word::value`]) and its point's place, with no walk of its bytes (the walks for the
+    /// leading and the trailing zeros, and the letter's role and table bit looked up, were
+    /// about half of the 130 instructions a kept word cost). None where the scan gave no value
+    /// (more than 18 digits) or the word has an index: [`Checker::format_key`] is asked. The
+    /// same key (a debug build asks `format_key` too and asserts it).
+    #[inline]
+    fn plain_format_key(w: &Word<'_>, context: u64) -> Option<u64> {
+        let letter = w.letter;
+        if !letter.is_ascii_uppercase() || !w.index.is_empty() {
+            return None;
+        }
+        let m = w.value?;
+        let n = w.number.len();
+        // the significant digits: the number's digits less its leading zeros
+        let significant = decimal_digits(m);
+        let leading = n - usize::from(w.point) - significant;
+        let shape = if w.point {
+            // the leading zeros, and the point among them where every whole digit is one:
+            // `format_key`'s count of leading '0' and '.' taken from the whole part
+            let fraction = n - w.dot - 1;
+            let zeros = if m == 0 {
+                fraction
+            } else {
+                decimal_trailing_zeros(m).min(fraction)
+            };
+            w.dot.saturating_sub(leading) | (fraction - zeros) << 7
+        } else {
+            n | significant << 7
+        };
+        let sign: u64 = match (w.sign.len(), w.sign.first()) {
+            (0, _) => 0,
+            (1, Some(b'-')) => 2,
+            _ => 1,
+        };
+        // (role and table bit 0: no code or cycle table of the block gives a role)
+        Some(
+            context
+                | u64::from(letter - b'A')
+                | sign << 9
+                | u64::from(w.point) << 11
+                | (shape as u64) << 12,
+        )
+    }
+
     /// [`Checker::format`] of a plain word: where a word of the same key
     /// ([`Checker::format_key`]) was found clean -- no finding, no refusal, nothing changed,
     /// a value read -- this one is too, and is only read; else its rules are asked and a
     /// clean verdict kept. (The rules of a CAM program's words find nothing nearly always:
-    /// asking them was about 170 instructions a word.) A debug build asks them of a kept
-    /// word as well and asserts the verdict clean and the value the same.
+    /// asking them was about 170 instructions a word.) A kept word's value is the value of
+    /// its digits as scanned, at the scale of its point or the one kept with the key, as
+    /// [`read_word`] reads it. `plain_keys`: the block's words' keys are their own
+    /// ([`Checker::plain_format_key`]). A debug build asks the rules of a kept word as well
+    /// and asserts the verdict clean and the value the same, to the scale.
     pub(super) fn format_or_kept(
         &mut self,
         w: &Word<'_>,
         line: usize,
         context: &mut u64,
+        plain_keys: bool,
     ) -> Option<Dec> {
-        let Some(key) = self.format_key(w, *context) else {
+        let plain = if plain_keys {
+            Checker::plain_format_key(w, *context)
+        } else {
+            None
+        };
+        debug_assert!(
+            plain.is_none() || plain == self.format_key(w, *context),
+            "{} at line {line}: the plain key differs: {:x?} {:x?}",
+            w.token(),
+            plain,
+            self.format_key(w, *context)
+        );
+        let Some(key) = plain.or_else(|| self.format_key(w, *context)) else {
             let value = self.format(w, line);
             *context = self.format_context();
             return value;
         };
         let place = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 54) as usize % KEPT;
-        let (kept, fmt) = &self.format_table.clean[place];
+        let (kept, fmt, scale) = &self.format_table.clean[place];
         if *kept == key {
-            if let Ok(value) = read_word(fmt, w, || self.no_point(w.letter)) {
+            let read = match (w.value, w.point) {
+                (Some(m), true) => Some(Dec::from_u64(m, (w.number.len() - w.dot - 1) as u32)),
+                (Some(m), false) if *scale != NO_SCALE => Some(Dec::from_u64(m, u32::from(*scale))),
+                _ => None,
+            };
+            let value = match read {
+                Some(value) if w.sign == b"-" => Ok(-value),
+                Some(value) => Ok(value),
+                None => read_word(fmt, w, || self.no_point(w.letter)),
+            };
+            if let Ok(value) = value {
                 if cfg!(debug_assertions) {
                     let before = self.format_state();
                     let checked = self.format(w, line);
                     assert!(
-                        checked == Some(value) && self.format_state() == before,
-                        "{} at line {line}: kept as clean, but {checked:?}",
+                        checked.is_some_and(|c| { (c.mantissa, c.scale) } == {
+                            (value.mantissa, value.scale)
+                        }) && self.format_state() == before,
+                        "{} at line {line}: kept as clean, but {checked:?} (kept {value:?})",
                         w.token()
                     );
                 }
@@ -492,7 +575,15 @@ impl Checker {
         } else if value.is_some() {
             // (a word of a key has no naming: its address is its letter)
             let (fmt, ..) = self.word_format(w, w.letter, false);
-            self.format_table.clean[place] = (key, fmt);
+            let scale = if w.point || w.value.is_none() {
+                NO_SCALE
+            } else {
+                let no_point = self.no_point(w.letter);
+                fmt.scale_of_digits(w.number.len(), no_point.whole, no_point.increments)
+                    .filter(|&s| s as usize <= MAX_DIGITS)
+                    .map_or(NO_SCALE, |s| s as u8)
+            };
+            self.format_table.clean[place] = (key, fmt, scale);
         }
         value
     }
@@ -830,6 +921,42 @@ impl Checker {
     }
 }
 
+/// 10^i for i = 0 to 19, the powers a u64 holds ([`decimal_digits`]).
+const POW10_U64: [u64; 20] = {
+    let mut table = [1u64; 20];
+    let mut i = 1;
+    while i < 20 {
+        table[i] = table[i - 1] * 10;
+        i += 1;
+    }
+    table
+};
+
+/// The number of decimal digits of `m` (0 for 0), as `m.checked_ilog10() + 1` counts them:
+/// the binary length's estimate (log10(2) is about 1233 / 4096) corrected by one comparison
+/// with a power of ten, where `ilog10` took about 20 instructions.
+#[inline]
+fn decimal_digits(m: u64) -> usize {
+    if m == 0 {
+        return 0;
+    }
+    let bits = 64 - m.leading_zeros() as usize;
+    let estimate = (bits * 1233) >> 12;
+    estimate + usize::from(m >= POW10_U64[estimate])
+}
+
+/// The zeros `m` (not zero) ends with in decimal: a number's trailing zeros, its digits'
+/// value read by the scan ([`Checker::plain_format_key`]).
+#[inline]
+fn decimal_trailing_zeros(m: u64) -> usize {
+    let (mut m, mut zeros) = (m, 0);
+    while m % 10 == 0 && m != 0 {
+        m /= 10;
+        zeros += 1;
+    }
+    zeros
+}
+
 /// Whether `value` has more whole digits than `before` (`value.integer_digits() > before`):
 /// |mantissa| >= 10^(before + scale), a comparison, where the count itself is wanted only
 /// for a message (asked for every word of a format).
@@ -902,6 +1029,35 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// The digits counted by the binary length as `ilog10` counts them, and the trailing
+    /// zeros as a division counts them, about every power of ten and on drawn values.
+    #[test]
+    fn decimal_digits_and_trailing_zeros_are_counted_as_the_division_counts() {
+        let mut values = vec![0u64, 1, 9, u64::MAX];
+        for p in super::POW10_U64 {
+            values.extend([p.saturating_sub(1), p, p + 1, p.saturating_mul(7)]);
+        }
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..20_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            values.push(x >> (x % 64));
+        }
+        for m in values {
+            assert_eq!(
+                super::decimal_digits(m),
+                m.checked_ilog10().map_or(0, |l| l as usize + 1),
+                "{m}"
+            );
+            if m != 0 {
+                let text = m.to_string();
+                let zeros = text.len() - text.trim_end_matches('0').len();
+                assert_eq!(super::decimal_trailing_zeros(m), zeros, "{m}");
+            }
+        }
     }
 
     #[test]
@@ -1500,6 +1656,132 @@ mod tests {
     /// word's format, no block's addresses, no block's meanings -- and finds what the kept
     /// verdicts find: here words and blocks that come back in another units code, feed mode
     /// and canned cycle, where the kept run meets them again.
+    /// Drawn lines -- upper and lower case, signs, leading and trailing zeros, a point
+    /// anywhere or none, numbers past 18 and past 38 digits, blanks, comments with text
+    /// outside ASCII, brackets, indexes, cycles and calls among plain moves -- checked with
+    /// the verdicts kept and afresh on an explicit, an implicit, a Macro B (a Haas's too) and
+    /// a LinuxCNC profile: the same findings. A debug build (the tests') also holds every word
+    /// with a plain key ([`super::Checker::plain_format_key`]) to `format_key`'s key, and
+    /// every kept word's value to the one its format's rules read, to the scale.
+    #[test]
+    fn drawn_words_kept_by_their_plain_keys_read_as_afresh() {
+        use super::super::testing::dialect;
+        use super::super::Checker;
+        use crate::rules::Selection;
+        use std::sync::Arc;
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut draw = move |n: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x % n
+        };
+        let number = |draw: &mut dyn FnMut(u64) -> u64| {
+            let mut t = String::new();
+            match draw(6) {
+                0 => t.push('-'),
+                1 => t.push('+'),
+                _ => {}
+            }
+            let digits = match draw(20) {
+                0 => 19 + draw(25) as usize,
+                _ => 1 + draw(8) as usize,
+            };
+            let point = match draw(4) {
+                0 => None,
+                _ => Some(draw(digits as u64 + 1) as usize),
+            };
+            for i in 0..digits {
+                if point == Some(i) {
+                    t.push('.');
+                }
+                let d = match draw(4) {
+                    0 => 0,
+                    _ => draw(10),
+                };
+                t.push(char::from(b'0' + d as u8));
+            }
+            if point == Some(digits) {
+                t.push('.');
+            }
+            t
+        };
+        let letters = b"XYZIJKFSTNRPQABCUVWDHLEGMxyzfn";
+        let extras = [
+            "(comment \u{e9}t\u{e9})",
+            "G81 R1. Z-2.",
+            "G80",
+            "G91",
+            "G90",
+            "G20",
+            "G21",
+            "M98 P100",
+            "G65 P9010 A1. B2.",
+            "G4 P500",
+            "G95",
+            "G94",
+            "X[1+2]",
+            "#1=5",
+            "G71 P10 Q20 U1. W1.",
+        ];
+        let mut lines = String::from("%\nO1000\nG21 G90 G17\n");
+        for _ in 0..3000 {
+            if draw(6) == 0 {
+                lines.push_str(extras[draw(extras.len() as u64) as usize]);
+                lines.push(' ');
+            }
+            for _ in 0..1 + draw(5) {
+                let letter = letters[draw(letters.len() as u64) as usize];
+                lines.push(char::from(letter));
+                if letter.eq_ignore_ascii_case(&b'G') {
+                    lines.push_str(["1", "01", "0", "2", "3", "00", "1.", "17"][draw(8) as usize]);
+                } else {
+                    lines.push_str(&number(&mut draw));
+                }
+                lines.push_str(["", " ", "  ", "\t"][draw(4) as usize]);
+            }
+            lines.push('\n');
+        }
+        lines.push_str("M30\n%\n");
+        let configs = [
+            (iso_mill(), Family::Iso),
+            (implicit(), Family::Iso),
+            (of_family(Family::MacroB), Family::MacroB),
+            (
+                Config {
+                    haas: true,
+                    ..of_family(Family::MacroB)
+                },
+                Family::MacroB,
+            ),
+            (of_family(Family::LinuxCnc), Family::LinuxCnc),
+        ];
+        for (config, family) in configs {
+            let config = Arc::new(config);
+            let run = |keep: bool| {
+                let mut checker = Checker::new(config.clone(), Selection::all(), false);
+                checker.keep_verdicts(keep);
+                let (d, mut tokens) = (dialect(family), Vec::new());
+                for (i, line) in lines.lines().enumerate() {
+                    checker.check_line(line.as_bytes(), i + 1, &d, &mut tokens);
+                }
+                checker.finish();
+                let kept = checker
+                    .format_table
+                    .clean
+                    .iter()
+                    .filter(|c| c.0 != 0)
+                    .count();
+                (checker.take(), kept)
+            };
+            let (kept_run, kept) = run(true);
+            let (afresh_run, _) = run(false);
+            assert!(kept > 0, "{family:?}: nothing kept");
+            assert!(!kept_run.is_empty(), "{family:?}: nothing found");
+            assert_eq!(kept_run, afresh_run, "{family:?}");
+        }
+    }
+
     #[test]
     fn verdicts_not_kept_find_the_same() {
         use super::super::testing::dialect;

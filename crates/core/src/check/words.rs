@@ -129,12 +129,31 @@ impl Checker {
                 .map(|w| w.token());
         }
         let mut context = self.format_context();
+        // (the words' keys are their own where nothing of the block gives a word another
+        // reading: Checker::plain_format_key; a cycle's table gives roles that
+        // `Meanings::any` does not count, so the roles themselves are looked at)
+        let plain_keys = !self.format_table.afresh
+            && self.named.is_empty()
+            && self.meanings.roles == [None; 26]
+            && !self.meanings.start_angle;
         // the rules of each word's place, letter and address below are a function of the
         // block's addresses alone where it has a key: asked once a key (a debug build asks
         // them of a kept block too, and asserts they find nothing)
         let key = self.addresses_key(b, plane);
         let place = key.map_or(0, CleanBlocks::place);
         let kept = key.is_some_and(|key| self.clean_blocks.0[place] == key);
+        if kept && !cfg!(debug_assertions) {
+            // a kept block's words are letters A-Z without index or expression (its addresses
+            // key): each is only read (a debug build walks the loop below, which asks the
+            // rules of a kept block as well)
+            self.seen = seen;
+            self.readable.reserve(b.words.len());
+            for w in b.words {
+                let value = self.format_or_kept(w, line, &mut context, plain_keys);
+                self.readable.push(value);
+            }
+            return;
+        }
         let mut clean = true;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
@@ -221,7 +240,7 @@ impl Checker {
                 self.readable.push(known);
                 continue;
             }
-            let value = self.format_or_kept(w, line, &mut context);
+            let value = self.format_or_kept(w, line, &mut context, plain_keys);
             self.readable.push(value);
         }
         self.seen = seen;
