@@ -689,7 +689,11 @@ impl Checker {
                 state.unknown &= !crate::modal::bit(b'S');
             }
         }
-        if self.open_definition.is_some() {
+        // (no condition open and no o-word: a block's words have nothing to mark, as most of
+        // a program's blocks)
+        if self.open_definition.is_some()
+            || (self.linuxcnc_if_speed.is_empty() && b.statements.is_empty())
+        {
             return;
         }
         let ends_or_calls = |w: &Word<'_>| {
