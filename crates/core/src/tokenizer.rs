@@ -920,6 +920,10 @@ pub struct ExpressionWalk {
 pub struct LineWalks {
     /// The words (bit `i` for the line's word `i`) whose walk is in `walks`.
     pub set: u8,
+    /// Every bracketed word of the line is among `set` (none is past the first [`WALKED`]
+    /// words, none is not plain): the LinuxCNC rules need read no word's expression of their
+    /// own.
+    pub all: bool,
     pub walks: [ExpressionWalk; WALKED],
 }
 
@@ -1020,6 +1024,8 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         if let Some(walk) = walk.filter(|_| i < WALKED) {
             self.walks.walks[i] = walk;
             self.walks.set |= 1 << i;
+        } else {
+            self.walks.all = false;
         }
         self.words
             .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
@@ -1065,7 +1071,7 @@ pub struct PlainLine {
 /// it is ASCII and, where `crs`, its CRs ([`PlainLine`]), found on the way: a scan of the
 /// line's bytes each saved (the columns given by `at` are the caller's to make right for a
 /// line that is not ASCII). `walks`: the walks of its plain bracketed words for the LinuxCNC
-/// rules ([`LineWalks`]; its `set` emptied first).
+/// rules ([`LineWalks`]; its `set` emptied and its `all` set first).
 pub fn plain_line_words<'a>(
     line: &'a [u8],
     dialect: &Dialect,
@@ -1075,6 +1081,7 @@ pub fn plain_line_words<'a>(
     crs: bool,
 ) -> Option<PlainLine> {
     walks.set = 0;
+    walks.all = true;
     if crs {
         plain_line_words_as::<true>(line, dialect, words, walks, at)
     } else {
@@ -1583,6 +1590,16 @@ mod tests {
                         );
                     }
                 }
+                // `all`: every bracketed word's walk written, and only then
+                let unwritten = words.iter().enumerate().any(|(i, w)| {
+                    !w.expression.is_empty() && (i >= WALKED || walks.set >> i & 1 == 0)
+                });
+                assert_eq!(
+                    walks.all,
+                    !unwritten,
+                    "{:?} {dialect:?}",
+                    String::from_utf8_lossy(line)
+                );
                 let counted = line.iter().filter(|&&c| c == b'\r').count();
                 assert_eq!(
                     found,
