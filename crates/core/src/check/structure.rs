@@ -33,6 +33,7 @@ fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
         .map(|at| from + at)
 }
 
+use crate::tokenizer::{equal_bytes, name_key};
 /// The words of a block walked by [`walk_expression`] (a word after them is read by each
 /// rule's own walk), and what one walk finds: the tokenizer's ([`crate::tokenizer::WALKED`],
 /// [`ExpressionWalk`]), which writes the same walk of a plain line's bracketed words as it
@@ -44,6 +45,7 @@ const NOT_WALKED: [ExpressionWalk; WALKED] = [ExpressionWalk {
     plain: false,
     count: 0,
     names: [(0, 0); 4],
+    keys: [0; 4],
 }; WALKED];
 
 /// The bytes a plain bracketed expression holds between its brackets outside a named
@@ -63,15 +65,6 @@ const PLAIN_BYTES: [bool; 256] = {
     table[b'\t' as usize] = true;
     table
 };
-
-/// The bytes of a chunk of eight equal to `byte`, each as its high bit: exact (no false
-/// flag: the low seven bits are added apart from the high one, and carry nothing on).
-#[inline]
-fn equal_bytes(chunk: u64, byte: u8) -> u64 {
-    const LOWS: u64 = 0x7F7F_7F7F_7F7F_7F7F;
-    let x = chunk ^ (0x0101_0101_0101_0101 * u64::from(byte));
-    !(((x & LOWS) + LOWS) | x | LOWS)
-}
 
 /// One walk of a LinuxCNC word's `expression` ([`ExpressionWalk`]): whether it is a plain
 /// bracketed one, and its named parameters. It stops at the first byte of another kind (a
@@ -130,34 +123,12 @@ pub(crate) fn walk_expression(expression: &[u8]) -> ExpressionWalk {
         }
         // (both below 65,536: the expression's length is)
         walk.names[usize::from(walk.count)] = (start as u16, i as u16);
+        walk.keys[usize::from(walk.count)] = name_key(inside, start + 2, i - start - 2);
         walk.count += 1;
         i += 1;
     }
     walk.plain = true;
     walk
-}
-
-/// A named parameter's name `text[from..from + len]` as one integer, for the names seen
-/// ([`Checker::linuxcnc_unknown_name`]): its first 8 bytes (fewer: zeros after them),
-/// loaded at once where 8 bytes follow `from` in `text`.
-#[inline]
-fn name_key(text: &[u8], from: usize, len: usize) -> u64 {
-    if let Some(chunk) = text.get(from..from + 8) {
-        let mut bytes = [0u8; 8];
-        bytes.copy_from_slice(chunk);
-        let all = u64::from_le_bytes(bytes);
-        if len >= 8 {
-            all
-        } else {
-            all & ((1u64 << (8 * len)) - 1)
-        }
-    } else {
-        let mut key = 0u64;
-        for (k, &c) in text[from..from + len.min(8)].iter().enumerate() {
-            key |= u64::from(c) << (8 * k);
-        }
-        key
-    }
 }
 
 impl Checker {
@@ -306,6 +277,7 @@ impl Checker {
         self.linuxcnc_defined.clear();
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
+        self.linuxcnc_short_seen = [0; 8];
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
@@ -658,8 +630,10 @@ impl Checker {
                         #[cfg(debug_assertions)]
                         {
                             let seen = self.linuxcnc_named_seen.clone();
+                            let short = self.linuxcnc_short_seen;
                             let full = self.linuxcnc_undefined_read(reads, w.column);
                             self.linuxcnc_named_seen = seen;
+                            self.linuxcnc_short_seen = short;
                             debug_assert_eq!(found, full, "line {}", b.line);
                         }
                         found
@@ -998,6 +972,10 @@ impl Checker {
         let written = &text[start + 2..close];
         if self.linuxcnc_name_known(written) {
             if self.linuxcnc_named_seen.len() < 8 {
+                // (a name with a zero byte, a blank, has no key of its own among the short)
+                if written.len() <= 8 && !written.contains(&0) {
+                    self.linuxcnc_short_seen[self.linuxcnc_named_seen.len()] = key;
+                }
                 let long = if written.len() > 8 {
                     written.to_vec()
                 } else {
@@ -1066,31 +1044,38 @@ impl Checker {
     fn linuxcnc_names_all_seen(&mut self, b: &BlockView<'_>) -> bool {
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;
+        let short = &self.linuxcnc_short_seen;
         let mut set = walks.set;
         while set != 0 {
             let i = set.trailing_zeros() as usize;
             set &= set - 1;
             let walk = &walks.walks[i];
-            let text = b.words[i].expression;
-            for &(start, close) in &walk.names[..usize::from(walk.count)] {
+            for (n, &(start, close)) in walk.names[..usize::from(walk.count)].iter().enumerate() {
                 let (name, close) = (usize::from(start) + 2, usize::from(close));
                 let len = close - name;
-                let key = name_key(text, name, len);
-                if !seen.iter().any(|(k, l, long)| {
-                    *k == key && *l == len && (len <= 8 || long.as_slice() == &text[name..close])
-                }) {
+                let key = walk.keys[n];
+                // (a name of up to 8 bytes is its key: no byte of a walked name is zero, a
+                // blank; a longer one is compared by its bytes too)
+                let found = if len <= 8 {
+                    short.contains(&key)
+                } else {
+                    let text = &b.words[i].expression[name..close];
+                    seen.iter()
+                        .any(|(k, l, long)| *k == key && *l == len && long == text)
+                };
+                if !found {
                     return false;
                 }
             }
         }
         #[cfg(debug_assertions)]
         {
-            let kept = self.linuxcnc_named_seen.clone();
+            let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
             for w in b.words {
                 let full = self.linuxcnc_undefined_read(w.expression, w.column);
                 assert_eq!(full, None, "line {}", b.line);
             }
-            self.linuxcnc_named_seen = kept;
+            (self.linuxcnc_named_seen, self.linuxcnc_short_seen) = kept;
         }
         true
     }
@@ -1981,7 +1966,7 @@ mod tests {
 
     #[test]
     fn a_name_s_key_is_its_bytes_whether_loaded_at_once_or_one_by_one() {
-        use super::name_key;
+        use crate::tokenizer::name_key;
         // a name followed by 8 bytes or more (loaded at once) and at the text's end (one by
         // one): the same key; names of one length that differ in their first 8: keys differ
         for len in 0..12 {
