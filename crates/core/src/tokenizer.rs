@@ -917,6 +917,38 @@ fn plain_word<'a, O: PlainOut<'a>>(
     Some(after)
 }
 
+/// The bytes of a chunk of eight equal to `byte`, each as its high bit: exact (no false
+/// flag: the low seven bits are added apart from the high one, and carry nothing on).
+#[inline]
+pub(crate) fn equal_bytes(chunk: u64, byte: u8) -> u64 {
+    const LOWS: u64 = 0x7F7F_7F7F_7F7F_7F7F;
+    let x = chunk ^ (0x0101_0101_0101_0101 * u64::from(byte));
+    !(((x & LOWS) + LOWS) | x | LOWS)
+}
+
+/// A named parameter's name `text[from..from + len]` as one integer, for the names seen
+/// (the check's `linuxcnc_unknown_name`; [`ExpressionWalk::keys`]): its first 8 bytes (fewer: zeros after them),
+/// loaded at once where 8 bytes follow `from` in `text`.
+#[inline]
+pub(crate) fn name_key(text: &[u8], from: usize, len: usize) -> u64 {
+    if let Some(chunk) = text.get(from..from + 8) {
+        let mut bytes = [0u8; 8];
+        bytes.copy_from_slice(chunk);
+        let all = u64::from_le_bytes(bytes);
+        if len >= 8 {
+            all
+        } else {
+            all & ((1u64 << (8 * len)) - 1)
+        }
+    } else {
+        let mut key = 0u64;
+        for (k, &c) in text[from..from + len.min(8)].iter().enumerate() {
+            key |= u64::from(c) << (8 * k);
+        }
+        key
+    }
+}
+
 /// The bracketed words of a line [`bracket_word`] walks for the LinuxCNC rules: the first
 /// eight of a block (a word after them is read by each rule's own walk).
 pub const WALKED: usize = 8;
@@ -938,6 +970,8 @@ pub struct ExpressionWalk {
     pub count: u8,
     /// Each named parameter's `#` and its `>` in the expression, in their order.
     pub names: [(u16, u16); 4],
+    /// Each name's key ([`name_key`]: its first 8 bytes as one integer), as `names`.
+    pub keys: [u64; 4],
 }
 
 /// The walks [`bracket_word`] made of a line of plain words' bracketed words
@@ -948,6 +982,10 @@ pub struct ExpressionWalk {
 pub struct LineWalks {
     /// The words (bit `i` for the line's word `i`) whose walk is in `walks`.
     pub set: u8,
+    /// Every bracketed word of the line is among `set` (none is past the first [`WALKED`]
+    /// words, none is not plain): the LinuxCNC rules need read no word's expression of their
+    /// own.
+    pub all: bool,
     pub walks: [ExpressionWalk; WALKED],
 }
 
@@ -1048,6 +1086,8 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         if let Some(walk) = walk.filter(|_| i < WALKED) {
             self.walks.walks[i] = walk;
             self.walks.set |= 1 << i;
+        } else {
+            self.walks.all = false;
         }
         self.words
             .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
@@ -1093,7 +1133,7 @@ pub struct PlainLine {
 /// it is ASCII and, where `crs`, its CRs ([`PlainLine`]), found on the way: a scan of the
 /// line's bytes each saved (the columns given by `at` are the caller's to make right for a
 /// line that is not ASCII). `walks`: the walks of its plain bracketed words for the LinuxCNC
-/// rules ([`LineWalks`]; its `set` emptied first).
+/// rules ([`LineWalks`]; its `set` emptied and its `all` set first).
 pub fn plain_line_words<'a>(
     line: &'a [u8],
     dialect: &Dialect,
@@ -1103,6 +1143,7 @@ pub fn plain_line_words<'a>(
     crs: bool,
 ) -> Option<PlainLine> {
     walks.set = 0;
+    walks.all = true;
     if crs {
         plain_line_words_as::<true>(line, dialect, words, walks, at)
     } else {
@@ -1137,6 +1178,40 @@ fn plain_line_words_as<'a, const CRS: bool>(
         ascii: out.ascii,
         crs: CRS.then_some(out.crs),
     })
+}
+
+/// A LinuxCNC parameter's name at `line[name..]` whose `>` is among its 8 bytes from `name`
+/// and after 1 to 7 bytes, none of them a blank ([`crate::lex::BLANKS`]: below `0x21`
+/// tested, so a byte below it that is no blank is read by the byte loop), `[`, `]`, `/`,
+/// DEL or outside ASCII: its length and key ([`name_key`]: those bytes). None for any other,
+/// which [`bracket_word`]'s byte loop reads: of a name this takes, that loop finds the same
+/// `>`, no blank, nothing that makes the walk not plain and nothing outside ASCII. About 25
+/// instructions, where the byte loop took about 10 a byte (`yscale`: 65).
+#[inline(always)]
+fn short_name(line: &[u8], name: usize) -> Option<(usize, u64)> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGHS: u64 = 0x8080_8080_8080_8080;
+    let chunk = line.get(name..name + 8)?;
+    let mut bytes = [0u8; 8];
+    bytes.copy_from_slice(chunk);
+    let c = u64::from_le_bytes(bytes);
+    let close = equal_bytes(c, b'>');
+    // (the first `>`: the lowest flag, exact; the name's bytes below it)
+    let len = (close.trailing_zeros() / 8) as usize;
+    if len == 0 || len == 8 {
+        return None;
+    }
+    let mask = (1u64 << (8 * len)) - 1;
+    // a byte below 0x21 (`hasless`: the lowest such byte is flagged, and none below it, a
+    // borrow running upward only: a flag among the name's bytes says one is there), DEL, a
+    // bracket, a `/`, or a high bit
+    let low = c.wrapping_sub(ONES * 0x21) & !c & HIGHS;
+    let odd = equal_bytes(c, 0x7F)
+        | equal_bytes(c, b'[')
+        | equal_bytes(c, b']')
+        | equal_bytes(c, b'/')
+        | (c & HIGHS);
+    ((low | odd) & mask == 0).then_some((len, c & mask))
 }
 
 /// The deepest brackets [`bracket_word`] reads; deeper ones (up to [`expr::MAX_DEPTH`]) are the
@@ -1219,22 +1294,32 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                 b'<' if linuxcnc => {
                     let hash = i;
                     let name = i + 2;
-                    i = name;
-                    // (the name's bytes or'ed: the one part of the word that may be outside
-                    // ASCII; their kinds or'ed: a blank, or what makes the walk not plain)
-                    let mut bytes = 0u8;
-                    let mut kinds = 0u8;
-                    while i < n && line[i] != b'>' {
-                        kinds |= NAME_BYTES[usize::from(line[i])];
-                        bytes |= line[i];
-                        i += 1;
-                    }
-                    if i == n || i == name || kinds & NAME_BLANK != 0 {
-                        return None;
-                    }
-                    if !bytes.is_ascii() {
-                        words.not_ascii();
-                    }
+                    // a name of 1 to 7 bytes of ASCII that are no blank, bracket or `/`
+                    // (`yscale`), its `>` among the 8 bytes after the `#<`: read at once, its
+                    // key those bytes ([`short_name`]); any other the byte loop reads
+                    let (key, kinds) = if let Some((len, key)) = short_name(line, name) {
+                        i = name + len;
+                        (key, 0)
+                    } else {
+                        i = name;
+                        // (the name's bytes or'ed: the one part of the word that may be
+                        // outside ASCII; their kinds or'ed: a blank, or what makes the walk
+                        // not plain)
+                        let mut bytes = 0u8;
+                        let mut kinds = 0u8;
+                        while i < n && line[i] != b'>' {
+                            kinds |= NAME_BYTES[usize::from(line[i])];
+                            bytes |= line[i];
+                            i += 1;
+                        }
+                        if i == n || i == name || kinds & NAME_BLANK != 0 {
+                            return None;
+                        }
+                        if !bytes.is_ascii() {
+                            words.not_ascii();
+                        }
+                        (name_key(line, name, i - name), kinds)
+                    };
                     if plain {
                         if kinds != 0 || usize::from(walk.count) == walk.names.len() {
                             plain = false;
@@ -1243,6 +1328,7 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                             // `pos + 1` at least)
                             walk.names[usize::from(walk.count)] =
                                 ((hash - pos - 1) as u16, (i - pos - 1) as u16);
+                            walk.keys[usize::from(walk.count)] = key;
                             walk.count += 1;
                         }
                     }
@@ -1507,6 +1593,41 @@ mod tests {
     use super::*;
     use crate::rules::Rule;
 
+    #[test]
+    fn a_short_name_is_read_at_once_as_the_byte_loop_reads_it() {
+        // drawn bytes after `#<`: letters, `>`, blanks, bytes below 0x21 that are no blank,
+        // DEL, brackets, `/`, bytes outside ASCII; `short_name` takes a name only where the
+        // byte loop finds its `>` after 1 to 7 bytes, none a blank, a bracket, a `/` or outside
+        // ASCII (and DEL, a blank), and then the same length and the key `name_key` gives;
+        // it takes every such name with 8 bytes after the `#<`
+        let alphabet = b"abyZ_09>>> \t\r\x00\x0c\x1f\x7f[]/\xc3\x80!~";
+        let mut next = crate::drawn::xorshift(0x51_7CC1_B727_220A);
+        let mut taken = 0;
+        for _ in 0..200_000 {
+            let len = (next() % 12) as usize;
+            let line: Vec<u8> = (0..len)
+                .map(|_| alphabet[(next() % alphabet.len() as u64) as usize])
+                .collect();
+            let close = line.iter().position(|&c| c == b'>');
+            let clean = close.is_some_and(|close| {
+                (1..8).contains(&close)
+                    && line[..close]
+                        .iter()
+                        .all(|&c| NAME_BYTES[usize::from(c)] == 0 && c.is_ascii() && c >= 0x21)
+            });
+            let found = short_name(&line, 0);
+            if let Some((n, key)) = found {
+                taken += 1;
+                assert_eq!(Some(n), close, "{line:?}");
+                assert!(clean, "{line:?}");
+                assert_eq!(key, name_key(&line, 0, n), "{line:?}");
+            } else {
+                assert!(!clean || line.len() < 8, "{line:?}");
+            }
+        }
+        assert!(taken > 5_000, "{taken}");
+    }
+
     const STRICT: Dialect = Dialect {
         family: Family::Iso,
         lowercase: false,
@@ -1621,6 +1742,16 @@ mod tests {
                         );
                     }
                 }
+                // `all`: every bracketed word's walk written, and only then
+                let unwritten = words.iter().enumerate().any(|(i, w)| {
+                    !w.expression.is_empty() && (i >= WALKED || walks.set >> i & 1 == 0)
+                });
+                assert_eq!(
+                    walks.all,
+                    !unwritten,
+                    "{:?} {dialect:?}",
+                    String::from_utf8_lossy(line)
+                );
                 let counted = line.iter().filter(|&&c| c == b'\r').count();
                 assert_eq!(
                     found,

@@ -868,6 +868,10 @@ pub struct Checker {
     /// as its first 8 bytes packed in one integer and its length, so that a name of up to 8
     /// bytes is compared as one integer, and a longer one's bytes.
     linuxcnc_named_seen: Vec<(u64, usize, Vec<u8>)>,
+    /// The keys of the names seen of up to 8 bytes (their first 8 bytes, zeros after them),
+    /// each at its place in `linuxcnc_named_seen` (0 elsewhere: no name's key), for the
+    /// walked lines' names (`Checker::linuxcnc_names_all_seen`).
+    linuxcnc_short_seen: [u64; 8],
     /// LinuxCNC: which of a block's first eight words `structure::walk_expression` found a
     /// plain bracketed expression (which holds no `/`), and the block's count
     /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
@@ -1042,6 +1046,7 @@ impl Checker {
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
+            linuxcnc_short_seen: [0; 8],
             linuxcnc_plain_words: (0, 0),
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),

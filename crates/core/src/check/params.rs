@@ -14,17 +14,26 @@ use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 impl Checker {
     /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
     /// where the parameter holds a known constant.
+    /// Inline: its first look, which answers a CAM program's `[#<yscale>*-3.608]` (two in
+    /// every line of one scaling its axes by parameters) where the word is read, the rest
+    /// out of line ([`Checker::constant_of`]).
+    #[inline]
     pub(super) fn constant(&self, expression: &[u8]) -> Option<Dec> {
-        if self.config.family == Family::Sinumerik {
-            return self.sinumerik_constant(expression);
-        }
-        // a named parameter with more after it in brackets (`[#<yscale>*-3.608]`, two in
-        // every line of a CAM program scaling its axes by parameters): no parameter alone,
-        // without the readings below
+        // a named parameter with more after it in brackets: no parameter alone, without the
+        // readings (every family but a SINUMERIK's, read in full)
         if let [b'[', b'#', b'<', .., last, b']'] = expression {
-            if *last != b'>' {
+            if *last != b'>' && self.config.family != Family::Sinumerik {
                 return None;
             }
+        }
+        self.constant_of(expression)
+    }
+
+    /// [`Checker::constant`] read in full.
+    #[inline(never)]
+    fn constant_of(&self, expression: &[u8]) -> Option<Dec> {
+        if self.config.family == Family::Sinumerik {
+            return self.sinumerik_constant(expression);
         }
         self.constant_read(expression)
     }

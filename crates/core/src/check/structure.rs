@@ -33,6 +33,7 @@ fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
         .map(|at| from + at)
 }
 
+use crate::tokenizer::{equal_bytes, name_key};
 /// The words of a block walked by [`walk_expression`] (a word after them is read by each
 /// rule's own walk), and what one walk finds: the tokenizer's ([`crate::tokenizer::WALKED`],
 /// [`ExpressionWalk`]), which writes the same walk of a plain line's bracketed words as it
@@ -44,6 +45,7 @@ const NOT_WALKED: [ExpressionWalk; WALKED] = [ExpressionWalk {
     plain: false,
     count: 0,
     names: [(0, 0); 4],
+    keys: [0; 4],
 }; WALKED];
 
 /// The bytes a plain bracketed expression holds between its brackets outside a named
@@ -63,15 +65,6 @@ const PLAIN_BYTES: [bool; 256] = {
     table[b'\t' as usize] = true;
     table
 };
-
-/// The bytes of a chunk of eight equal to `byte`, each as its high bit: exact (no false
-/// flag: the low seven bits are added apart from the high one, and carry nothing on).
-#[inline]
-fn equal_bytes(chunk: u64, byte: u8) -> u64 {
-    const LOWS: u64 = 0x7F7F_7F7F_7F7F_7F7F;
-    let x = chunk ^ (0x0101_0101_0101_0101 * u64::from(byte));
-    !(((x & LOWS) + LOWS) | x | LOWS)
-}
 
 /// One walk of a LinuxCNC word's `expression` ([`ExpressionWalk`]): whether it is a plain
 /// bracketed one, and its named parameters. It stops at the first byte of another kind (a
@@ -130,34 +123,12 @@ pub(crate) fn walk_expression(expression: &[u8]) -> ExpressionWalk {
         }
         // (both below 65,536: the expression's length is)
         walk.names[usize::from(walk.count)] = (start as u16, i as u16);
+        walk.keys[usize::from(walk.count)] = name_key(inside, start + 2, i - start - 2);
         walk.count += 1;
         i += 1;
     }
     walk.plain = true;
     walk
-}
-
-/// A named parameter's name `text[from..from + len]` as one integer, for the names seen
-/// ([`Checker::linuxcnc_unknown_name`]): its first 8 bytes (fewer: zeros after them),
-/// loaded at once where 8 bytes follow `from` in `text`.
-#[inline]
-fn name_key(text: &[u8], from: usize, len: usize) -> u64 {
-    if let Some(chunk) = text.get(from..from + 8) {
-        let mut bytes = [0u8; 8];
-        bytes.copy_from_slice(chunk);
-        let all = u64::from_le_bytes(bytes);
-        if len >= 8 {
-            all
-        } else {
-            all & ((1u64 << (8 * len)) - 1)
-        }
-    } else {
-        let mut key = 0u64;
-        for (k, &c) in text[from..from + len.min(8)].iter().enumerate() {
-            key |= u64::from(c) << (8 * k);
-        }
-        key
-    }
 }
 
 impl Checker {
@@ -307,6 +278,7 @@ impl Checker {
         self.linuxcnc_defined.clear();
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
+        self.linuxcnc_short_seen = [0; 8];
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
@@ -466,14 +438,15 @@ impl Checker {
         }
         // (a block of plain words, as most of a CAM program's are, has nothing to walk)
         let expressions = b.words.iter().any(|w| !w.expression.is_empty());
-        let walked;
-        let walks = if expressions {
-            walked = self.linuxcnc_walk_words(b);
+        // a line whose every bracketed word the tokenizer walked plain (a CAM program's
+        // `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]`): its walks read where they are, no
+        // operation outside a bracket to look for, and its names asked of the names seen
+        let whole = expressions && self.linuxcnc_line_walked(b);
+        let walked = (expressions && !whole).then(|| {
+            let walked = self.linuxcnc_walk_words(b);
             self.linuxcnc_bare_operator(b, &walked);
-            &walked
-        } else {
-            &NOT_WALKED
-        };
+            walked
+        });
         self.linuxcnc_if_speed(b);
         let statement = dialect::subroutine_statement(b.statements);
         self.definition_after_call(b, statement.as_ref());
@@ -487,7 +460,18 @@ impl Checker {
         {
             // (inside a condition or loop its assignments count as made, its reads are not
             // judged)
-            self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty(), walks);
+            if !whole || !self.linuxcnc_names_all_seen(b) {
+                let again;
+                let walks = match &walked {
+                    Some(walked) => walked,
+                    None if whole => {
+                        again = self.linuxcnc_walk_words(b);
+                        &again
+                    }
+                    None => &NOT_WALKED,
+                };
+                self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty(), walks);
+            }
         }
         // (the condition's own reads run, judged above; the lines inside it may not)
         let main = self.open_definition.is_none();
@@ -647,8 +631,10 @@ impl Checker {
                         #[cfg(debug_assertions)]
                         {
                             let seen = self.linuxcnc_named_seen.clone();
+                            let short = self.linuxcnc_short_seen;
                             let full = self.linuxcnc_undefined_read(reads, w.column);
                             self.linuxcnc_named_seen = seen;
+                            self.linuxcnc_short_seen = short;
                             debug_assert_eq!(found, full, "line {}", b.line);
                         }
                         found
@@ -690,7 +676,11 @@ impl Checker {
                 state.unknown &= !crate::modal::bit(b'S');
             }
         }
-        if self.open_definition.is_some() {
+        // (no condition open and no o-word: a block's words have nothing to mark, as most of
+        // a program's blocks)
+        if self.open_definition.is_some()
+            || (self.linuxcnc_if_speed.is_empty() && b.statements.is_empty())
+        {
             return;
         }
         let ends_or_calls = |w: &Word<'_>| {
@@ -983,6 +973,10 @@ impl Checker {
         let written = &text[start + 2..close];
         if self.linuxcnc_name_known(written) {
             if self.linuxcnc_named_seen.len() < 8 {
+                // (a name with a zero byte, a blank, has no key of its own among the short)
+                if written.len() <= 8 && !written.contains(&0) {
+                    self.linuxcnc_short_seen[self.linuxcnc_named_seen.len()] = key;
+                }
                 let long = if written.len() > 8 {
                     written.to_vec()
                 } else {
@@ -1006,6 +1000,85 @@ impl Checker {
             return None;
         }
         Some(name)
+    }
+
+    /// LinuxCNC: whether the block is the line of plain words just read and the tokenizer
+    /// walked every bracketed word of it plain (`LineWalks::all`): then no word has an
+    /// operation outside its brackets (`linuxcnc_bare_operator` has nothing to say: each is
+    /// a letter and one plain pair of brackets), none has a `/` (kept for the read-refusal's
+    /// test, `linuxcnc_plain_words`, as `linuxcnc_walk_words` keeps it) and no statement
+    /// reads a name. A debug build walks the words again and asserts the same.
+    #[inline]
+    fn linuxcnc_line_walked(&mut self, b: &BlockView<'_>) -> bool {
+        if self.line_walks_of != (b.text.as_ptr() as usize, b.text.len()) || !self.line_walks.all {
+            return false;
+        }
+        let set = self.line_walks.set;
+        if cfg!(debug_assertions) {
+            assert!(b.statements.is_empty(), "line {}", b.line);
+            for (i, w) in b.words.iter().enumerate() {
+                let written = i < WALKED && set >> i & 1 != 0;
+                assert_eq!(written, !w.expression.is_empty(), "line {}", b.line);
+                if written {
+                    assert_eq!(self.line_walks.walks[i], walk_expression(w.expression));
+                    assert!(self.line_walks.walks[i].plain && w.letter.is_ascii_uppercase());
+                }
+                assert_eq!(
+                    crate::between::bare_operator(w.token),
+                    None,
+                    "line {}",
+                    b.line
+                );
+            }
+        }
+        self.linuxcnc_plain_words = (self.stats.blocks, set);
+        true
+    }
+
+    /// LinuxCNC: whether every named parameter of the walked line's bracketed words
+    /// ([`Checker::linuxcnc_line_walked`]) is among the names seen (`linuxcnc_named_seen`:
+    /// each a global or one the main program assigned, and a name once assigned stays so
+    /// until the next program): then no word reads a name not defined, and
+    /// `linuxcnc_named_reads` has nothing to say (a debug build reads them in full and
+    /// asserts it). False where one is not: the full reading decides.
+    #[inline]
+    fn linuxcnc_names_all_seen(&mut self, b: &BlockView<'_>) -> bool {
+        let walks = &self.line_walks;
+        let seen = &self.linuxcnc_named_seen;
+        let short = &self.linuxcnc_short_seen;
+        let mut set = walks.set;
+        while set != 0 {
+            let i = set.trailing_zeros() as usize;
+            set &= set - 1;
+            let walk = &walks.walks[i];
+            for (n, &(start, close)) in walk.names[..usize::from(walk.count)].iter().enumerate() {
+                let (name, close) = (usize::from(start) + 2, usize::from(close));
+                let len = close - name;
+                let key = walk.keys[n];
+                // (a name of up to 8 bytes is its key: no byte of a walked name is zero, a
+                // blank; a longer one is compared by its bytes too)
+                let found = if len <= 8 {
+                    short.contains(&key)
+                } else {
+                    let text = &b.words[i].expression[name..close];
+                    seen.iter()
+                        .any(|(k, l, long)| *k == key && *l == len && long == text)
+                };
+                if !found {
+                    return false;
+                }
+            }
+        }
+        #[cfg(debug_assertions)]
+        {
+            let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
+            for w in b.words {
+                let full = self.linuxcnc_undefined_read(w.expression, w.column);
+                assert_eq!(full, None, "line {}", b.line);
+            }
+            (self.linuxcnc_named_seen, self.linuxcnc_short_seen) = kept;
+        }
+        true
     }
 
     /// LinuxCNC: the block's words' expressions walked once ([`walk_expression`]) for the
@@ -1797,8 +1870,104 @@ mod tests {
     }
 
     #[test]
+    fn a_walked_line_s_rules_find_what_the_full_reading_finds() {
+        // drawn LinuxCNC programs: assignments of names, lines of plain and bracketed words
+        // (a CAM program's `Y[#<yscale>*-3.6]`, names assigned or not, global, long, in
+        // other case or with blanks; numbered parameters, signs, inner groups, functions,
+        // `/`, `**`; drawn bytes), comments and o-words between. Each is checked as written,
+        // where a line of plain words has its bracketed words walked by the tokenizer
+        // (`linuxcnc_line_walked`, `linuxcnc_names_all_seen`: a debug build asserts them
+        // against the full reading), and with a blank after each bracketed word's letter,
+        // which rs274 reads alike and which sends the line to the full reading: the same
+        // findings.
+        let mut next = crate::drawn::xorshift(0x9E37_79B9_7F4A_7C15);
+        let names = [
+            "ab",
+            "x",
+            "Ab",
+            "a b",
+            "_a",
+            "abcdefgh",
+            "abcdefghi",
+            "ABCDEFGHI",
+            "yscale",
+        ];
+        let drawn = drawn_expressions(6_000);
+        let mut pick = 0;
+        let (mut lines, mut walked) = (0, 0);
+        for _ in 0..400 {
+            let mut fast = String::from("G21 G90 G94\nG0 X0 Y0 Z0\n");
+            let mut full = fast.clone();
+            for n in 0..(next() % 24 + 4) {
+                let line = match next() % 10 {
+                    0 | 1 => format!(
+                        "#<{}> = {}\n",
+                        names[(next() % names.len() as u64) as usize],
+                        next() % 5
+                    ),
+                    2 => ["(c)\n", "o1 if [1]\n", "o1 endif\n", "G1 X1 F100\n", "M2\n"]
+                        [(next() % 5) as usize]
+                        .to_string(),
+                    _ => {
+                        let mut line = format!("N{}", n * 10);
+                        let mut spaced = line.clone();
+                        for letter in ["X", "y", "Z", "F", "S"]
+                            .iter()
+                            .take((next() % 4 + 1) as usize)
+                        {
+                            let expression = match next() % 6 {
+                                0 => format!("{}", next() % 100),
+                                1 => {
+                                    pick += 1;
+                                    String::from_utf8_lossy(&drawn[pick % drawn.len()]).into_owned()
+                                }
+                                k => {
+                                    let a = names[(next() % names.len() as u64) as usize];
+                                    let b = names[(next() % names.len() as u64) as usize];
+                                    match k {
+                                        2 => format!("[#<{a}>*-{}.5]", next() % 90),
+                                        3 => format!("[-#<{a}>+#1*2-#<{b}>]"),
+                                        4 => format!("[#<{a}>*[#<{b}>-1]]"),
+                                        _ => format!("[SIN[#<{a}>]**2/#<{b}>]"),
+                                    }
+                                }
+                            };
+                            let blank = if expression.starts_with('[') { " " } else { "" };
+                            line.push_str(&format!("{letter}{expression}"));
+                            spaced.push_str(&format!("{letter}{blank}{expression}"));
+                        }
+                        lines += 1;
+                        walked += usize::from(line != spaced);
+                        fast.push_str(&line);
+                        fast.push('\n');
+                        full.push_str(&spaced);
+                        full.push('\n');
+                        continue;
+                    }
+                };
+                fast.push_str(&line);
+                full.push_str(&line);
+            }
+            fast.push_str("M2\n");
+            full.push_str("M2\n");
+            let config = of_family(Family::LinuxCnc);
+            let said = |program: &str| -> Vec<(Rule, usize, String)> {
+                check(config.clone(), program)
+                    .into_iter()
+                    .map(|f| (f.rule, f.line, f.message))
+                    .collect()
+            };
+            assert_eq!(said(&fast), said(&full), "{fast}");
+        }
+        assert!(
+            lines > 3_000 && walked > 2_000,
+            "{lines} lines, {walked} bracketed"
+        );
+    }
+
+    #[test]
     fn a_name_s_key_is_its_bytes_whether_loaded_at_once_or_one_by_one() {
-        use super::name_key;
+        use crate::tokenizer::name_key;
         // a name followed by 8 bytes or more (loaded at once) and at the text's end (one by
         // one): the same key; names of one length that differ in their first 8: keys differ
         for len in 0..12 {
