@@ -2537,15 +2537,27 @@ impl Converter {
         // searches for particular G codes, for Z and for the codes' meanings below look only
         // where there is one (most CAM blocks have no G word)
         let (mut g_word, mut m_word, mut z_word) = (false, false, false);
+        // and, in the same pass, the first N word (the units flow's label), whether a G word
+        // reads as no whole code (`G33.1` is one: looked for below only then), and whether a
+        // G word's number is 65 or 66 as written (a macro call's arguments, below)
+        let mut n_word = None;
+        let (mut g_unread, mut g_macro) = (false, false);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             z_word |= letter == b'Z';
+            if letter == b'N' && n_word.is_none() {
+                n_word = Some(i);
+            }
             if letter != b'G' && letter != b'M' {
                 continue;
             }
             g_word |= letter == b'G';
             m_word |= letter == b'M';
+            if letter == b'G' {
+                g_macro |= matches!(integer(&w.token[1..]), Some(65 | 66));
+            }
             let Some(n) = self.code_of(w.token) else {
+                g_unread |= letter == b'G';
                 continue;
             };
             if letter == b'M' {
@@ -2578,11 +2590,7 @@ impl Converter {
         let mut units_before = self.modal.state.units;
         let mut feed_before = self.modal.state.feed_units;
         if self.c.units.is_some() {
-            let number = b
-                .words
-                .iter()
-                .find(|w| w.token[0].eq_ignore_ascii_case(&b'N'))
-                .map(|w| w.token);
+            let number = n_word.map(|i| b.words[i].token);
             self.flow.block_labels(
                 self.c.family,
                 number,
@@ -3062,7 +3070,7 @@ impl Converter {
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
         let mut arguments_kept = false;
-        if self.length != ONE && self.c.family != Family::Iso && g_word {
+        if self.length != ONE && self.c.family != Family::Iso && g_macro {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
                 g && matches!(integer(&w.token[1..]), Some(65 | 66))
@@ -3255,7 +3263,7 @@ impl Converter {
         let returns = gs
             .iter()
             .any(|&g| (70..=89).contains(&g) || (g == 92 && self.c.lathe))
-            || g_word
+            || g_unread
                 && b.words.iter().any(|w| {
                     w.token[0].eq_ignore_ascii_case(&b'G')
                         && crate::meaning::code(&w.token[1..]) == Some((33, 1))
