@@ -2591,17 +2591,24 @@ impl Converter {
         let mut feed_before = self.modal.state.feed_units;
         if self.c.units.is_some() {
             let number = n_word.map(|i| b.words[i].token);
-            self.flow.block_labels(
+            // (its value as the tokenizer read it, not read again)
+            let key = n_word.and_then(|i| {
+                let w = &b.words[i];
+                crate::units_flow::number_key(w.token, w.plain, w.digits)
+            });
+            self.flow.block_labels_keyed(
                 self.c.family,
                 number,
+                key,
                 b.statements,
                 units_before,
                 units_at.is_some(),
             );
             if let Some(feed_flow) = &mut self.feed_flow {
-                feed_flow.block_labels(
+                feed_flow.block_labels_keyed(
                     self.c.family,
                     number,
+                    key,
                     b.statements,
                     feed_before,
                     units_at.is_some(),
