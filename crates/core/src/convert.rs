@@ -603,20 +603,6 @@ fn blank_inside_number(text: &[u8]) -> bool {
     false
 }
 
-/// The replacement of each word of a block, made on first need from the replacements
-/// `changed` holds so far (one slot a word): the pass that writes a word anew fills its slot.
-fn replacements<'n>(
-    new: &'n mut Option<Vec<Option<Vec<u8>>>>,
-    changed: &mut Vec<Option<Vec<u8>>>,
-    words: usize,
-) -> &'n mut Vec<Option<Vec<u8>>> {
-    new.get_or_insert_with(|| {
-        let mut all = std::mem::take(changed);
-        all.resize(words, None);
-        all
-    })
-}
-
 /// Whether a word's written span is its token's bytes (in either case) with blanks between
 /// them and nothing else: no comment inside it.
 fn spells(span: &[u8], token: &[u8]) -> bool {
@@ -3120,9 +3106,14 @@ impl Converter {
                 scale,
             })
         });
+        // (a slot a word, kept from block to block with every slot None and as long as the
+        // longest block's: neither cleared nor filled anew each block; `new`: a slot was set)
         let mut changed = std::mem::take(&mut self.replacements);
-        changed.clear();
-        let mut new: Option<Vec<Option<Vec<u8>>>> = None;
+        let count = b.words.len();
+        if changed.len() < count {
+            changed.resize(count, None);
+        }
+        let mut new = false;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
@@ -3250,13 +3241,8 @@ impl Converter {
             }
             if differs {
                 self.changed += 1;
-                if new.is_none() {
-                    changed.resize(b.words.len(), None);
-                    new = Some(std::mem::take(&mut changed));
-                }
-                if let Some(new) = new.as_mut() {
-                    new[i] = Some(out);
-                }
+                new = true;
+                changed[i] = Some(out);
             } else {
                 self.recycle(out);
             }
@@ -3366,25 +3352,18 @@ impl Converter {
             }
         }
         self.follow_units();
-        self.close_blanks(b, &mut new, &mut changed);
+        self.close_blanks(b, &mut new, &mut changed[..count]);
         if self.c.upper_case {
-            self.upper_case(b, &mut new, &mut changed);
+            self.upper_case(b, &mut new, &mut changed[..count]);
         }
-        if new.is_none()
-            && insert.is_none()
-            && self.c.spacing == Spacing::Keep
-            && statements.is_empty()
-        {
+        if !new && insert.is_none() && self.c.spacing == Spacing::Keep && statements.is_empty() {
             self.replacements = changed;
             self.codes = (gs, ms);
             return Ok(None);
         }
-        let mut replacements = new.unwrap_or_else(|| {
-            changed.resize(b.words.len(), None);
-            changed
-        });
+        let replacements = &mut changed[..count];
         let line = if statements.is_empty() {
-            self.text(b, &mut replacements, insert.as_deref())
+            self.text(b, replacements, insert.as_deref())
         } else {
             // the statements' new texts in place, the words written around them as always
             let text = splice(b.text, &statements);
@@ -3418,12 +3397,12 @@ impl Converter {
                 skip_within: b.skip_within.map(|(o, t)| (at(o), t)),
                 ..*b
             };
-            self.text(&moved, &mut replacements, insert.as_deref())
+            self.text(&moved, replacements, insert.as_deref())
         };
-        for buffer in replacements.iter_mut().filter_map(Option::take) {
+        for buffer in changed[..count].iter_mut().filter_map(Option::take) {
             self.recycle(buffer);
         }
-        self.replacements = replacements;
+        self.replacements = changed;
         self.codes = (gs, ms);
         Ok(Some(line))
     }
@@ -3436,8 +3415,8 @@ impl Converter {
     fn close_blanks(
         &mut self,
         b: &BlockIn<'_>,
-        new: &mut Option<Vec<Option<Vec<u8>>>>,
-        changed: &mut Vec<Option<Vec<u8>>>,
+        new: &mut bool,
+        replacements: &mut [Option<Vec<u8>>],
     ) {
         let through = self.c.family == Family::LinuxCnc && self.c.target_family != Family::LinuxCnc;
         if !(self.c.target_ngc || through) {
@@ -3477,7 +3456,7 @@ impl Converter {
         if !b.words.iter().any(closed) {
             return;
         }
-        let replacements = replacements(new, changed, b.words.len());
+        *new = true;
         for (slot, w) in replacements.iter_mut().zip(b.words) {
             if !closed(w) {
                 continue;
@@ -3500,8 +3479,8 @@ impl Converter {
     fn upper_case(
         &mut self,
         b: &BlockIn<'_>,
-        new: &mut Option<Vec<Option<Vec<u8>>>>,
-        changed: &mut Vec<Option<Vec<u8>>>,
+        new: &mut bool,
+        replacements: &mut [Option<Vec<u8>>],
     ) {
         if !b
             .words
@@ -3510,7 +3489,7 @@ impl Converter {
         {
             return;
         }
-        let replacements = replacements(new, changed, b.words.len());
+        *new = true;
         for (slot, w) in replacements.iter_mut().zip(b.words) {
             if let Some(token) = slot.as_mut() {
                 token.make_ascii_uppercase(); // a word written anew: no blanks of its own
