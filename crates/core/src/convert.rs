@@ -6256,8 +6256,12 @@ impl Converter {
             }
             return Ok(out);
         };
-        if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
-            return Ok(out);
+        // (a dwell's time is a dwell word's or a P's: `dwell_time` answers None for any other
+        // word, asked only of those)
+        if dwell_word || letter == b'P' {
+            if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
+                return Ok(out);
+            }
         }
         if in_increments {
             return self.increments(token, negative, plus, whole, dot, fraction);
@@ -10487,6 +10491,61 @@ mod tests {
         // chosen by a value: no name
         assert_eq!(names("IF [#[#1+1] GT ##2] GOTO10"), ["#1", "#2"]);
         assert_eq!(names("#1+#30*2"), ["#1", "#30"]);
+    }
+
+    /// `value` asks [`Converter::dwell_time`] only of a dwell word or a P: for every other
+    /// word it answers None, between any two families, on a mill or a lathe, under any cycle
+    /// in force or repeated (on 200,000 drawn words of every other letter).
+    #[test]
+    fn a_dwells_time_is_none_but_for_a_dwell_word_or_a_p() {
+        const BYTES: &[u8] = b"0123456789.-+";
+        let mut next = crate::drawn::xorshift(0x3C6E_F372_FE94_F82B);
+        let mut converters = Vec::new();
+        for lathe in [false, true] {
+            for from in Family::ALL {
+                for to in Family::ALL {
+                    let mut c = fanuc(lathe);
+                    (c.family, c.target_family, c.lathe) = (from, to, lathe);
+                    converters.push(Converter::new(c));
+                }
+            }
+        }
+        for _ in 0..200_000 {
+            let k = (next() % converters.len() as u64) as usize;
+            let converter = &mut converters[k];
+            let cycle = [
+                None,
+                Some(82),
+                Some(83),
+                Some(73),
+                Some(76),
+                Some(89),
+                Some(243),
+            ];
+            converter.modal.state.cycle = cycle[(next() % cycle.len() as u64) as usize];
+            converter.cycle_code = cycle[(next() % cycle.len() as u64) as usize];
+            let letter = loop {
+                let l =
+                    b"ABCDEFGHIJKLMNOQRSTUVWXYZabcdefghijklmnoqrstuvwxyz@#"[(next() % 52) as usize];
+                if l != b'p' && l != b'P' {
+                    break l;
+                }
+            };
+            let len = (next() % 8) as usize;
+            let mut token = vec![letter];
+            token.extend((0..len).map(|_| BYTES[(next() % BYTES.len() as u64) as usize]));
+            let number = &token[1..];
+            let (whole, dot, fraction) = match number.iter().position(|&c| c == b'.') {
+                Some(p) => (&number[..p], true, &number[p + 1..]),
+                None => (number, false, &b""[..]),
+            };
+            assert_eq!(
+                converter.dwell_time(&token, false, whole, dot, fraction),
+                Ok(None),
+                "{:?}",
+                String::from_utf8_lossy(&token)
+            );
+        }
     }
 
     #[test]
