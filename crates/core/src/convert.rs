@@ -3211,7 +3211,9 @@ impl Converter {
                     } else if self.decimal_count(letter) && role != Some(Role::Selector) {
                         // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
-                    } else if self.length != ONE && plain_word(w).is_none() {
+                    } else if self.length != ONE && w.plain.is_none() && plain(w.token).is_none() {
+                        // (`plain_word(w).is_none()`, which is Some wherever the tokenizer
+                        // found the word plain: its parts are not split for the question)
                         // a count or selector given by a parameter (`G05.1 Q#1`, `T#1`):
                         // kept, and refused where the parameter is one the conversion
                         // scales as a length (the word would read its new value)
@@ -7555,6 +7557,7 @@ impl Converter {
         out
     }
 
+    #[inline]
     fn recycle(&mut self, mut buffer: Vec<u8>) {
         if self.spare.len() < 64 {
             buffer.clear();
