@@ -699,20 +699,6 @@ fn blank_inside_number(text: &[u8]) -> bool {
     false
 }
 
-/// The replacement of each word of a block, made on first need from the replacements
-/// `changed` holds so far (one slot a word): the pass that writes a word anew fills its slot.
-fn replacements<'n>(
-    new: &'n mut Option<Vec<Option<Vec<u8>>>>,
-    changed: &mut Vec<Option<Vec<u8>>>,
-    words: usize,
-) -> &'n mut Vec<Option<Vec<u8>>> {
-    new.get_or_insert_with(|| {
-        let mut all = std::mem::take(changed);
-        all.resize(words, None);
-        all
-    })
-}
-
 /// Whether a word's written span is its token's bytes (in either case) with blanks between
 /// them and nothing else: no comment inside it.
 fn spells(span: &[u8], token: &[u8]) -> bool {
@@ -2633,15 +2619,27 @@ impl Converter {
         // searches for particular G codes, for Z and for the codes' meanings below look only
         // where there is one (most CAM blocks have no G word)
         let (mut g_word, mut m_word, mut z_word) = (false, false, false);
+        // and, in the same pass, the first N word (the units flow's label), whether a G word
+        // reads as no whole code (`G33.1` is one: looked for below only then), and whether a
+        // G word's number is 65 or 66 as written (a macro call's arguments, below)
+        let mut n_word = None;
+        let (mut g_unread, mut g_macro) = (false, false);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             z_word |= letter == b'Z';
+            if letter == b'N' && n_word.is_none() {
+                n_word = Some(i);
+            }
             if letter != b'G' && letter != b'M' {
                 continue;
             }
             g_word |= letter == b'G';
             m_word |= letter == b'M';
+            if letter == b'G' {
+                g_macro |= matches!(integer(&w.token[1..]), Some(65 | 66));
+            }
             let Some(n) = self.code_of(w.token) else {
+                g_unread |= letter == b'G';
                 continue;
             };
             if letter == b'M' {
@@ -2674,22 +2672,25 @@ impl Converter {
         let mut units_before = self.modal.state.units;
         let mut feed_before = self.modal.state.feed_units;
         if self.c.units.is_some() {
-            let number = b
-                .words
-                .iter()
-                .find(|w| w.token[0].eq_ignore_ascii_case(&b'N'))
-                .map(|w| w.token);
-            self.flow.block_labels(
+            let number = n_word.map(|i| b.words[i].token);
+            // (its value as the tokenizer read it, not read again)
+            let key = n_word.and_then(|i| {
+                let w = &b.words[i];
+                crate::units_flow::number_key(w.token, w.plain, w.digits)
+            });
+            self.flow.block_labels_keyed(
                 self.c.family,
                 number,
+                key,
                 b.statements,
                 units_before,
                 units_at.is_some(),
             );
             if let Some(feed_flow) = &mut self.feed_flow {
-                feed_flow.block_labels(
+                feed_flow.block_labels_keyed(
                     self.c.family,
                     number,
+                    key,
                     b.statements,
                     feed_before,
                     units_at.is_some(),
@@ -3158,7 +3159,7 @@ impl Converter {
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
         let mut arguments_kept = false;
-        if self.length != ONE && self.c.family != Family::Iso && g_word {
+        if self.length != ONE && self.c.family != Family::Iso && g_macro {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
                 g && matches!(integer(&w.token[1..]), Some(65 | 66))
@@ -3201,9 +3202,14 @@ impl Converter {
                 scale,
             })
         });
+        // (a slot a word, kept from block to block with every slot None and as long as the
+        // longest block's: neither cleared nor filled anew each block; `new`: a slot was set)
         let mut changed = std::mem::take(&mut self.replacements);
-        changed.clear();
-        let mut new: Option<Vec<Option<Vec<u8>>>> = None;
+        let count = b.words.len();
+        if changed.len() < count {
+            changed.resize(count, None);
+        }
+        let mut new = false;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
@@ -3301,7 +3307,9 @@ impl Converter {
                     } else if self.decimal_count(letter) && role != Some(Role::Selector) {
                         // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
-                    } else if self.length != ONE && plain_word(w).is_none() {
+                    } else if self.length != ONE && w.plain.is_none() && plain(w.token).is_none() {
+                        // (`plain_word(w).is_none()`, which is Some wherever the tokenizer
+                        // found the word plain: its parts are not split for the question)
                         // a count or selector given by a parameter (`G05.1 Q#1`, `T#1`):
                         // kept, and refused where the parameter is one the conversion
                         // scales as a length (the word would read its new value)
@@ -3334,13 +3342,8 @@ impl Converter {
             }
             if differs {
                 self.changed += 1;
-                if new.is_none() {
-                    changed.resize(b.words.len(), None);
-                    new = Some(std::mem::take(&mut changed));
-                }
-                if let Some(new) = new.as_mut() {
-                    new[i] = Some(out);
-                }
+                new = true;
+                changed[i] = Some(out);
             } else {
                 self.recycle(out);
             }
@@ -3354,7 +3357,7 @@ impl Converter {
         let returns = gs
             .iter()
             .any(|&g| (70..=89).contains(&g) || (g == 92 && self.c.lathe))
-            || g_word
+            || g_unread
                 && b.words.iter().any(|w| {
                     w.token[0].eq_ignore_ascii_case(&b'G')
                         && crate::meaning::code(&w.token[1..]) == Some((33, 1))
@@ -3450,25 +3453,18 @@ impl Converter {
             }
         }
         self.follow_units();
-        self.close_blanks(b, &mut new, &mut changed);
+        self.close_blanks(b, &mut new, &mut changed[..count]);
         if self.c.upper_case {
-            self.upper_case(b, &mut new, &mut changed);
+            self.upper_case(b, &mut new, &mut changed[..count]);
         }
-        if new.is_none()
-            && insert.is_none()
-            && self.c.spacing == Spacing::Keep
-            && statements.is_empty()
-        {
+        if !new && insert.is_none() && self.c.spacing == Spacing::Keep && statements.is_empty() {
             self.replacements = changed;
             self.codes = (gs, ms);
             return Ok(None);
         }
-        let mut replacements = new.unwrap_or_else(|| {
-            changed.resize(b.words.len(), None);
-            changed
-        });
+        let replacements = &mut changed[..count];
         let line = if statements.is_empty() {
-            self.text(b, &mut replacements, insert.as_deref())
+            self.text(b, replacements, insert.as_deref())
         } else {
             // the statements' new texts in place, the words written around them as always
             let text = splice(b.text, &statements);
@@ -3502,12 +3498,12 @@ impl Converter {
                 skip_within: b.skip_within.map(|(o, t)| (at(o), t)),
                 ..*b
             };
-            self.text(&moved, &mut replacements, insert.as_deref())
+            self.text(&moved, replacements, insert.as_deref())
         };
-        for buffer in replacements.iter_mut().filter_map(Option::take) {
+        for buffer in changed[..count].iter_mut().filter_map(Option::take) {
             self.recycle(buffer);
         }
-        self.replacements = replacements;
+        self.replacements = changed;
         self.codes = (gs, ms);
         Ok(Some(line))
     }
@@ -3520,8 +3516,8 @@ impl Converter {
     fn close_blanks(
         &mut self,
         b: &BlockIn<'_>,
-        new: &mut Option<Vec<Option<Vec<u8>>>>,
-        changed: &mut Vec<Option<Vec<u8>>>,
+        new: &mut bool,
+        replacements: &mut [Option<Vec<u8>>],
     ) {
         let through = self.c.family == Family::LinuxCnc && self.c.target_family != Family::LinuxCnc;
         if !(self.c.target_ngc || through) {
@@ -3561,7 +3557,7 @@ impl Converter {
         if !b.words.iter().any(closed) {
             return;
         }
-        let replacements = replacements(new, changed, b.words.len());
+        *new = true;
         for (slot, w) in replacements.iter_mut().zip(b.words) {
             if !closed(w) {
                 continue;
@@ -3584,8 +3580,8 @@ impl Converter {
     fn upper_case(
         &mut self,
         b: &BlockIn<'_>,
-        new: &mut Option<Vec<Option<Vec<u8>>>>,
-        changed: &mut Vec<Option<Vec<u8>>>,
+        new: &mut bool,
+        replacements: &mut [Option<Vec<u8>>],
     ) {
         if !b
             .words
@@ -3594,7 +3590,7 @@ impl Converter {
         {
             return;
         }
-        let replacements = replacements(new, changed, b.words.len());
+        *new = true;
         for (slot, w) in replacements.iter_mut().zip(b.words) {
             if let Some(token) = slot.as_mut() {
                 token.make_ascii_uppercase(); // a word written anew: no blanks of its own
@@ -6397,8 +6393,12 @@ impl Converter {
             }
             return Ok(out);
         };
-        if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
-            return Ok(out);
+        // (a dwell's time is a dwell word's or a P's: `dwell_time` answers None for any other
+        // word, asked only of those)
+        if dwell_word || letter == b'P' {
+            if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
+                return Ok(out);
+            }
         }
         if in_increments {
             return self.increments(token, negative, plus, whole, dot, fraction);
@@ -7724,6 +7724,7 @@ impl Converter {
         out
     }
 
+    #[inline]
     fn recycle(&mut self, mut buffer: Vec<u8>) {
         if self.spare.len() < 64 {
             buffer.clear();
@@ -10599,6 +10600,61 @@ mod tests {
         // chosen by a value: no name
         assert_eq!(names("IF [#[#1+1] GT ##2] GOTO10"), ["#1", "#2"]);
         assert_eq!(names("#1+#30*2"), ["#1", "#30"]);
+    }
+
+    /// `value` asks [`Converter::dwell_time`] only of a dwell word or a P: for every other
+    /// word it answers None, between any two families, on a mill or a lathe, under any cycle
+    /// in force or repeated (on 200,000 drawn words of every other letter).
+    #[test]
+    fn a_dwells_time_is_none_but_for_a_dwell_word_or_a_p() {
+        const BYTES: &[u8] = b"0123456789.-+";
+        let mut next = crate::drawn::xorshift(0x3C6E_F372_FE94_F82B);
+        let mut converters = Vec::new();
+        for lathe in [false, true] {
+            for from in Family::ALL {
+                for to in Family::ALL {
+                    let mut c = fanuc(lathe);
+                    (c.family, c.target_family, c.lathe) = (from, to, lathe);
+                    converters.push(Converter::new(c));
+                }
+            }
+        }
+        for _ in 0..200_000 {
+            let k = (next() % converters.len() as u64) as usize;
+            let converter = &mut converters[k];
+            let cycle = [
+                None,
+                Some(82),
+                Some(83),
+                Some(73),
+                Some(76),
+                Some(89),
+                Some(243),
+            ];
+            converter.modal.state.cycle = cycle[(next() % cycle.len() as u64) as usize];
+            converter.cycle_code = cycle[(next() % cycle.len() as u64) as usize];
+            let letter = loop {
+                let l =
+                    b"ABCDEFGHIJKLMNOQRSTUVWXYZabcdefghijklmnoqrstuvwxyz@#"[(next() % 52) as usize];
+                if l != b'p' && l != b'P' {
+                    break l;
+                }
+            };
+            let len = (next() % 8) as usize;
+            let mut token = vec![letter];
+            token.extend((0..len).map(|_| BYTES[(next() % BYTES.len() as u64) as usize]));
+            let number = &token[1..];
+            let (whole, dot, fraction) = match number.iter().position(|&c| c == b'.') {
+                Some(p) => (&number[..p], true, &number[p + 1..]),
+                None => (number, false, &b""[..]),
+            };
+            assert_eq!(
+                converter.dwell_time(&token, false, whole, dot, fraction),
+                Ok(None),
+                "{:?}",
+                String::from_utf8_lossy(&token)
+            );
+        }
     }
 
     #[test]

@@ -180,6 +180,17 @@ pub fn target(text: &[u8]) -> Option<Vec<u8>> {
 
 /// A sequence number's value, from a block's `N0010` or a label's name `N10`: 1 to 18 digits
 /// after the N (None for any other name, which keys [`UnitsFlow::labels`] by its text).
+/// [`sequence_key`] of an N word's `token` from what the tokenizer read of it
+/// ([`crate::lex::Token::plain`], [`crate::lex::Token::digits`]): a plain number without
+/// a sign or a point has the value of its digits, where they are 1 to 18. None where the
+/// tokenizer did not give it (the caller reads the token then).
+pub fn number_key(token: &[u8], plain: Option<u8>, digits: crate::lex::Digits) -> Option<u64> {
+    let unsigned = plain == Some(0) && matches!(token.first(), Some(b'N' | b'n'));
+    digits
+        .value
+        .filter(|_| unsigned && digits.dot as usize == token.len() - 1)
+}
+
 fn sequence_key(name: &[u8]) -> Option<u64> {
     let digits = name
         .strip_prefix(b"N")
@@ -655,6 +666,22 @@ impl UnitsFlow {
         units: Units,
         sets_units: bool,
     ) {
+        self.block_labels_keyed(family, number, None, statements, units, sets_units);
+    }
+
+    /// [`UnitsFlow::block_labels`], given the number's key where the caller has it: `key`,
+    /// where Some, is the sequence number's value as [`sequence_key`] reads `number` (the
+    /// tokenizer's value of a plain word's digits: [`number_key`]), so that the number is not
+    /// read again.
+    pub fn block_labels_keyed(
+        &mut self,
+        family: Family,
+        number: Option<&[u8]>,
+        key: Option<u64>,
+        statements: &[(usize, StatementKind, &[u8])],
+        units: Units,
+        sets_units: bool,
+    ) {
         let mut names = Vec::new();
         if matches!(
             family,
@@ -662,7 +689,7 @@ impl UnitsFlow {
         ) {
             // a plain sequence number with no jump waiting for a label: kept by its number,
             // no name made (the per-block case)
-            match number.and_then(sequence_key) {
+            match key.or_else(|| number.and_then(sequence_key)) {
                 Some(n) if self.pending.is_empty() => {
                     self.numbers
                         .insert(n, (units, self.doubt.is_none(), sets_units));
@@ -1615,5 +1642,62 @@ mod tests {
             let back = f.event(Event::Jump(Some(b"LAB1".to_vec())), 6, 0, IN);
             assert_eq!(back.is_err(), length_first, "{back:?}");
         }
+    }
+
+    /// [`number_key`], the tokenizer's value of an N word's digits, against
+    /// [`sequence_key`]'s reading of the token: on 300,000 drawn lines under every family's
+    /// dialect, each N word's key, where given, is the one the token reads to, and where the
+    /// token reads to one the key is given for most (the caller's reading is the fallback).
+    #[test]
+    fn an_n_words_key_from_the_tokenizer_is_its_reading() {
+        use crate::lex::Dialect;
+        const BYTES: &[u8] = b"NnXG0123456789.+- \t#[]=;(";
+        const PIECES: [&str; 12] = [
+            "N10 ",
+            "n0070 ",
+            "N1234567890123456789 ",
+            "N123456789012345678 ",
+            "N-5 ",
+            "N+5 ",
+            "N1.5 ",
+            "N.5 ",
+            "N 12 ",
+            "N#1 ",
+            "X1.5 ",
+            "N",
+        ];
+        let mut next = crate::drawn::xorshift(0x5DEE_CE66_D1CE_4E5B);
+        let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
+        let (mut given, mut read) = (0, 0);
+        for _ in 0..300_000 {
+            let len = 1 + (next() % 24) as usize;
+            let line: Vec<u8> = if next().is_multiple_of(2) {
+                (0..len)
+                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
+                    .collect()
+            } else {
+                (0..len / 4 + 1)
+                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
+                    .collect()
+            };
+            let dialect = &dialects[(next() % dialects.len() as u64) as usize];
+            let mut tokens = Vec::new();
+            if crate::tokenizer::tokenize(&line, dialect, &mut tokens).is_err() {
+                continue;
+            }
+            for t in tokens
+                .iter()
+                .filter(|t| t.text[0].eq_ignore_ascii_case(&b'N'))
+            {
+                let reading = sequence_key(&t.text);
+                let key = number_key(&t.text, t.plain, t.digits);
+                if key.is_some() {
+                    given += 1;
+                    assert_eq!(key, reading, "{:?}", String::from_utf8_lossy(&line));
+                }
+                read += usize::from(reading.is_some());
+            }
+        }
+        assert!(given > 20_000 && given * 10 > read * 9, "{given} {read}");
     }
 }
