@@ -801,8 +801,14 @@ class _Planner:
             out.append(f"{length} {h}" if h else length)
         way = self.lathe_way(known, clear) if self.walker.lathe else None
         if way is not None:
+            # the other axes (a lathe's C, Y or B) at the clearance, before the way in
+            # (review 33, finding 2: they were left where the operator had them)
+            others = [a for a in AXES if a in known and a not in ("X", "Z")]
+            if others:
+                words = [self.word(a, known[a]) for a in others]
+                out.append("G00 " + " ".join(words))
             out += way
-            restored.update(a for a in ("X", "Z") if a in known)
+            restored.update(a for a in ("X", "Z", *others) if a in known)
             self.clearance_value = clear.get(last)
             return restored
         # over the start point

@@ -2049,6 +2049,81 @@ def test_a_haas_lathe_g112_is_its_xc_interpolation_not_a_work_offset():
     assert plan(text.format(off="N10 G113\n"), 14, haas).preamble
 
 
+@pytest.mark.parametrize(("profile", "on", "off"), [
+    ("fanuc-mill", "G112", "G113"), ("fanuc-mill", "G107 C25.", "G107 C0"),
+    ("haas-mill", "G107 C25.", "G107 C0")])
+def test_polar_and_cylindrical_g_code_system_b_codes_refuse_on_a_mill_too(profile, on, off):
+    """Review 33, finding 1: a FANUC mill's G112/G113 (polar coordinate interpolation in G code
+    system B/C) and G107 (cylindrical), and a Haas mill's G107, were planned past as if the
+    moves under them were straight ones; only lathes were read. A Haas mill's G112/G113 are
+    its work systems 9 and 10 (refused as an extended work offset, as before)."""
+    machine = load_profile(profile)
+    code = on.split()[0]
+    kind = "cylindrical" if code == "G107" else "polar coordinate"
+    mill = POLAR.replace("N3 G97 S1000", "N3 S1000")  # (G97 is a lathe's code)
+    assert refusal(mill.format(on=on, off=""), 11, machine) == (
+        f"cannot restart here: {code} ({kind} interpolation) from line 9 is in force and the "
+        "preamble cannot restore it")
+    said = refusal(mill.format(on=on, off=f"N10 {off}\n"), 14, machine)
+    assert "is not known here (line 12: " in said and "interpolation" in said, said
+    haas = refusal(mill.format(on="G112", off=""), 11, load_profile("haas-mill"))
+    assert "G112 (an extended work offset)" in haas, haas
+
+
+CYLINDER = ("%\nO1000\nN1 G21 G18 G40 G99\nN2 T0101\nN3 G97 S600 M03\nN4 G00 X60. Z5. C0\n"
+            "N5 {on}\nN6 G01 Z-10. C30. F0.1\nN7 {off}\nN8 G01 X50.\nN9 G01 Z-12.\nM30\n%\n")
+
+
+def test_a_fanuc_lathe_g07_1_gives_its_radius_by_h_and_loses_the_axes_beside_it():
+    """Review 33, findings 3 and 4: a FANUC lathe's `G07.1 H57299` (the radius by C's
+    incremental address in G code system A, as the lathe manual writes it) was read as the
+    cancel, and the moves under it planned as straight ones; `G07.1 C0 G00 X60.` left X at the
+    block before's, where the control may move it in the cancel's block."""
+    lathe = load_profile("fanuc-lathe")
+    assert refusal(CYLINDER.format(on="G07.1 H57299", off="G07.1 H0"), 8, lathe) == (
+        "cannot restart here: G07.1 (cylindrical interpolation) from line 7 is in force and "
+        "the preamble cannot restore it")
+    said = refusal(CYLINDER.format(on="G07.1 H57299", off="G07.1 H0"), 11, lathe)
+    assert "the position of Z is not known here (line 9: G07.1 ends the cylindrical" in said
+    beside = CYLINDER.format(on="G07.1 C0 G00 X70.", off="G00 Z5.")
+    assert refusal(beside, 10, lathe) == ("cannot restart here: the position of X is not known "
+                                          "here (line 7: X70. in a G07.1 block)")
+    # given again, the restart is planned
+    assert plan(beside.replace("N8 G01 X50.", "N8 G01 X50. C0"), 11, lathe).preamble
+
+
+MACRO_M = ("%\nO1000\nN1 G21 G17 G90 G40 G80 G54\nN2 T1 M06\nN3 S1000 M03\n"
+           "N4 G00 G43 H1 X10. Y0 Z5.\nN5 {block}\nN6 G01 Z-1. F100.\nN7 G01 X20.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_the_words_beside_an_unlisted_m_code_with_arguments_are_not_known(profile):
+    """Review 33, finding 5: an M code the profile's list lacks may be a macro call (FANUC
+    parameters 6080-6089, a Haas's M code aliases), its other words arguments: `M165 P9811 Z0
+    S2` was planned as `S2 M03` at Z0. Where the block carries a word only an argument is (a P
+    or Q, a point in S or T) its S and axes are not known; a builder's M code beside a plain
+    speed or tool (`S300 M45`, `T0101 M16`) is the control's own function and planned."""
+    machine = load_profile(profile)
+    said = refusal(MACRO_M.format(block="M165 P9811 Z0 S2"), 9, machine)
+    assert said.startswith("cannot restart here: the spindle speed in force is not known: S2 "
+                           "beside M165, an M code the profile's list lacks"), said
+    assert "FANUC parameters 6080-6089" in said
+    point = refusal(MACRO_M.format(block="M165 S2.5 X30."), 9, machine)
+    assert "S2.5 beside M165" in point, point
+    plain = plan(MACRO_M.format(block="S300 M45"), 9, machine)
+    assert "S300 M03" in " ".join(plain.preamble), plain.preamble
+
+
+def test_a_lathe_restart_the_program_way_in_sets_its_c_axis_first():
+    """Review 33, finding 2: a lathe's approach the program's own way in (a groove's) set X
+    and Z but left C where the operator had it; the other axes go to their place at the
+    clearance, before the way in."""
+    lathe = load_profile("fanuc-lathe")
+    text = GROOVE.replace("N50 M08\n", "N50 M08\nN55 G00 C30.\n")
+    restart = plan(text, 11, lathe)
+    assert restart.preamble[-3:] == ["G00 C30.", "G00 X52. Z-20.", "G01 X40. F0.05"]
+
+
 # -- two codes of one modal group before the restart point (TG304) ------------------------------
 
 CONFLICT = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G00 Z150.\n"

@@ -261,6 +261,13 @@ pub struct Walk {
     /// on or runs as a macro call, as an unlisted whole code is (review 31, finding 2: Haas's
     /// `G68.2` and `G53.1`, or FANUC's `G43.9`, were planned past as if they had run).
     pub decimal_codes: Option<Vec<Vec<u8>>>,
+    /// The M codes the profile's list lacks (index: the code), set by the binding for a FANUC
+    /// or Haas profile: there an M code parameters 6080-6089 name (a Haas: its M code aliases)
+    /// is a custom macro call, whose other words are its arguments, so a plain S, F, T, D, H or
+    /// axis word beside an unlisted M code with a word only an argument is (a P or Q, a point
+    /// in S, T, D or H) is not known to be a speed, feed, tool or position (review 33,
+    /// finding 5: `M165 P9811 Z0 S2` was planned as `S2 M03`).
+    pub lacks_m: Option<Vec<bool>>,
     /// The line of the program's own last units code (G20/G21, a SINUMERIK's G70/G71/G700/
     /// G710): without one the units are the control's setting, which the preamble must not
     /// choose for it.
@@ -514,6 +521,7 @@ impl Walk {
             z_reached: None,
             units_settings: None,
             decimal_codes: None,
+            lacks_m: None,
             units_line: None,
             program_name: None,
             m6_line: 0,
@@ -658,13 +666,27 @@ impl Walk {
     /// cylindrical interpolation; with the radius 0, or no rotary or R word, it ends it.
     /// A radius set by a parameter (`C#1`, bits of `param_axes`) counts as given.
     fn cylindrical(&mut self, line: usize, code: &str, plain_words: &[(u8, &[u8])], params: u16) {
-        // (a Haas lathe's G107 gives the radius as R: Haas lathe operator's manual)
+        // (a Haas lathe's G107 gives the radius as R: Haas lathe operator's manual; a FANUC
+        // lathe's G07.1 H the radius by C's incremental address in G code system A, the lathe
+        // manual's `G07.1 H57299`: review 33, finding 3, it was read as a cancel)
         let rotary = [b'A', b'B', b'C'];
         let radius = plain_words.iter().any(|&(l, t)| {
-            (rotary.contains(&l) || l == b'R') && t[1..].iter().any(|c| !b"+-0.".contains(c))
+            (rotary.contains(&l) || matches!(l, b'R' | b'H'))
+                && t[1..].iter().any(|c| !b"+-0.".contains(c))
         }) || rotary
             .iter()
             .any(|&a| axis_index(a).is_some_and(|i| params & bit(i) != 0));
+        // the block's other axis words are read as the code's data by the modal state, where
+        // the control may move them: not known (review 33, finding 4: `G07.1 C0 G00 X60. Z5.`
+        // left the tool at the block before's X Z)
+        for &(letter, token) in plain_words {
+            if AXES.contains(&letter) && !rotary.contains(&letter) {
+                let mut why = token.to_vec();
+                why.extend_from_slice(format!(" in a {code} block").as_bytes());
+                let axis = self.axis(letter);
+                self.lose_unknown(axis, line, why);
+            }
+        }
         if radius {
             let what = format!("{code} (cylindrical interpolation)");
             self.set_unrestored("7.1", line, what);
@@ -1015,6 +1037,44 @@ impl Walk {
                 block: true,
             });
         }
+        // An unlisted M code is read as a macro call only where the block carries a word no
+        // plain M code's block does: a P or Q, or a point in S, T, D or H (none of them a
+        // value those take). A builder's M code beside a plain speed or tool (`S300 M45`,
+        // `T0101 M16`) is the control's own function, as the check reads it (TG307).
+        let arguments = plain_words.iter().any(|&(l, t)| {
+            matches!(l, b'P' | b'Q')
+                || (matches!(l, b'S' | b'T' | b'D' | b'H') && t.contains(&b'.'))
+        });
+        let unlisted_m = self
+            .lacks_m
+            .as_ref()
+            .filter(|_| arguments)
+            .and_then(|lacks| {
+                ms.iter().copied().find(|&m| {
+                    usize::try_from(m)
+                        .ok()
+                        .is_none_or(|n| lacks.get(n).copied().unwrap_or(true))
+                })
+            });
+        if let Some(m) = unlisted_m {
+            for &(letter, token) in &plain_words {
+                let mut why = token.to_vec();
+                why.extend_from_slice(
+                    format!(
+                        " beside M{m}, an M code the profile's list lacks: an argument of a \
+                         macro call where the control's parameters make M{m} one (FANUC \
+                         parameters 6080-6089, a Haas's M code aliases)"
+                    )
+                    .as_bytes(),
+                );
+                if AXES.contains(&letter) {
+                    let axis = self.axis(letter);
+                    self.lose_unknown(axis, line, why);
+                } else if matches!(letter, b'S' | b'F' | b'T' | b'D' | b'H') {
+                    self.unknown[letter_index(letter)] = Some(Why::Text(why));
+                }
+            }
+        }
         let dwell: &[u8] = if gs.contains(&4) { self.dwell } else { &[] };
         for &(letter, _) in plain_words.iter().filter(|(l, _)| !dwell.contains(l)) {
             if letter == b'F' {
@@ -1053,7 +1113,13 @@ impl Walk {
                 d.as_slice(),
                 b"51.1" | b"50.1" | b"92.1" | b"92.2" | b"92.3" | b"68.2" | b"68.3" | b"68.4"
             )
-        }) || (self.haas_mill() && gs.iter().any(|&g| g == 100 || g == 101));
+        }) || (self.haas_mill() && gs.iter().any(|&g| g == 100 || g == 101))
+            // (a cylindrical interpolation's block: its rotary word is the radius, its other
+            // axes lost in `cylindrical`, not set here -- review 33, finding 4)
+            || (self.control.family() == Family::MacroB
+                && (gs.contains(&107) || gdec.iter().any(|d| d.as_slice() == b"7.1")))
+            // (a macro call's arguments, where the unlisted M code is one: lost above)
+            || unlisted_m.is_some();
         self.positions(line, &gs, &plain_words, after, data);
         if self.control == Control::Okuma && !self.lathe && gs.contains(&16) {
             self.one_block_work_system(line, b.tokens);
@@ -1209,7 +1275,9 @@ impl Walk {
                     self.set_unrestored(&g.to_string(), line, format!("G{g} ({name})"));
                 }
             }
-            if self.lathe && self.control.family() == Family::MacroB {
+            // (a Haas mill's G112/G113 are work systems 9 and 10: review 33, finding 1 -- a
+            // FANUC mill's G112/G113/G107 and a Haas mill's G107 were planned past)
+            if self.control.family() == Family::MacroB && !(self.haas_mill() && g != 107) {
                 match g {
                     112 => self.set_unrestored(
                         "12.1",

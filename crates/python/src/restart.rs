@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check;
 use tapegate_core::modal::AXES;
-use tapegate_core::restart::{Step, Walk, Why};
+use tapegate_core::restart::{Control, Step, Walk, Why};
 use tapegate_core::rules::Selection;
 use tapegate_core::statement::Kind;
 use tapegate_core::tokenize;
@@ -111,6 +111,17 @@ impl RestartWalk {
         if !checker.machine.settings.lacks_g.is_empty() {
             let held = m.check.g_decimal.iter().map(|(c, _)| c.as_bytes().to_vec());
             walk.decimal_codes = Some(held.collect());
+        }
+        if matches!(m.control, Control::Fanuc | Control::Haas) {
+            let lacks = m.check.m_codes.iter().map(|c| {
+                c.as_ref().is_none_or(|c| {
+                    matches!(
+                        c.status,
+                        check::Status::Unassigned | check::Status::Permanent
+                    )
+                })
+            });
+            walk.lacks_m = Some(lacks.collect());
         }
         Ok(RestartWalk {
             checker,
