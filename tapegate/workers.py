@@ -16,14 +16,15 @@ The thread that calls :func:`ordered_map` (the main thread) is one of the ``jobs
 when the function sends text or nothing (``sizes`` given: ``check`` but SARIF, ``convert``):
 ``-j 2`` starts one thread, and the main thread does an item itself wherever it would
 otherwise wait for the one whose turn it is (:meth:`_Map.take`, :meth:`_Map.here`), handing
-on the reports of the items done between its own. So no third thread shares two cores, and
-no working thread is put off its core to hand the reports on; an item the main thread is
-given at its turn hands its pieces to ``receive`` at once, as with one job, and one given
-before its turn keeps them as a thread's (past the budget, spilled: nothing here may wait
-for room, which only the main thread makes). An ``Exception`` of its function is raised at
-its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core hands a slice over or
-ends a file) and SIGTERM's exit leave at once, the threads stopped (docs/benchmarks.md, "the
-main thread as a worker").
+on the reports of the items done between its own (not the items started early, long ones
+during which the window would not move for the threads: :func:`first`). So no third thread
+shares two cores, and no working thread is put off its core to hand the reports on; an item
+the main thread is given at its turn hands its pieces to ``receive`` at once, as with one
+job, and one given before its turn keeps them as a thread's (past the budget, spilled:
+nothing here may wait for room, which only the main thread makes). An ``Exception`` of its
+function is raised at its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core
+hands a slice over or ends a file) and SIGTERM's exit leave at once, the threads stopped
+(docs/benchmarks.md, "the main thread as a worker").
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
@@ -260,6 +261,8 @@ class _Map:
                 if self.stopped or self.given >= len(self.items):
                     return
                 slot = self._give()
+                if self.given == self.early:  # the last started early: the main thread,
+                    cond.notify()  # which leaves them to the threads, may take the next
             index = slot.index
             _local.send = lambda piece, slot=slot: self.put(slot, piece)
             try:
@@ -402,8 +405,10 @@ class _Map:
                         return pieces, slot, None
                 if self.failure is not None:
                     raise self.failure
-                if (here and not self.stopped and self.given < len(self.items)
-                        and self._open()):
+                # (not an item started early: a long one, during which nothing would be
+                # handed on and the window would not move for the threads)
+                if (here and not self.stopped and self.early <= self.given < len(self.items)
+                        and self.order[self.given] < self.due + self.window):
                     return [], None, self._give()
                 self.cond.wait()
 

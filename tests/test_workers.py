@@ -1317,3 +1317,41 @@ def test_ctrl_c_while_the_main_thread_checks_ends_the_check_cleanly(tmp_path):
         if proc.poll() is None:
             proc.kill()
     assert list(scratch.iterdir()) == []
+
+
+def test_the_main_thread_leaves_the_items_started_early_to_the_threads():
+    """The items started early (first()) are long: the main thread, which hands the reports
+    on, does not take one (the window would not move meanwhile); it waits until a thread has
+    taken the last of them, is woken by that thread, and takes the first of the others."""
+    import threading
+
+    import tapegate.workers as workers
+
+    state = workers._Map(lambda item: item, list(range(10)), 16, 32, [9])
+    got: list[Any] = []
+    main = threading.Thread(target=lambda: got.append(state.take(0, True)), daemon=True)
+    main.start()
+    main.join(timeout=0.3)
+    assert main.is_alive() and not got  # waiting: the one item it may be given is early
+    given: list[Any] = []
+    # a thread's work: it takes item 9, then item 0 is taken by the main thread; the thread
+    # then waits in vain for the window (16 items from 0, all given): stopped below
+    worker = threading.Thread(target=lambda: given.append(state.work()), daemon=True)
+
+    def func(item: int) -> int:
+        given.append(item)
+        deadline = time.monotonic() + 20.0
+        while item == 9 and not got and time.monotonic() < deadline:
+            time.sleep(0.001)  # (the early item runs until the main thread has its own)
+        return item
+
+    state.func = func
+    worker.start()
+    main.join(timeout=20)
+    assert got, "the main thread was not woken once the early item was taken"
+    pieces, slot, own = got[0]
+    assert pieces == [] and slot is None and own.index == 0 and not own.early
+    state.stop()
+    worker.join(timeout=20)
+    assert not worker.is_alive()
+    assert given[0] == 9  # the thread's first item: the early one
