@@ -1191,31 +1191,40 @@ def test_the_main_thread_does_items_while_the_due_one_runs_and_keeps_their_order
 
 
 def test_the_due_item_done_by_the_main_thread_is_received_at_once():
-    """An item given to the main thread at its turn hands its pieces to receive as it sends
-    them (as with one job), not through the map."""
-    import _thread
+    """An item given to the main thread at its turn (every item before it taken) hands its
+    pieces to receive as it sends them, as with one job; one given before its turn keeps
+    them in its slot, for its turn (the map's own take)."""
+    import tapegate.workers as workers
 
-    main_thread = _thread.get_ident()
     events: list[object] = []
 
     def func(item: int) -> int:
-        here = _thread.get_ident() == main_thread
         send((item, "sent"))
-        events.append((item, "after send", here))
+        events.append((item, "after send"))
         return item
 
-    results = []
-    for result in ordered_map(func, list(range(30)), 2,
-                              receive=lambda piece: events.append(piece),
+    state = workers._Map(func, [0, 1, 2], 16, 32)
+    with state.cond:
+        due, later = state._give(), state._give()
+    assert (due.index, later.index, state.due) == (0, 1, 0)
+    state.here(later, events.append)  # not due: kept
+    assert events == [(1, "after send")] and list(later.pieces) == [(1, "sent")]
+    assert later.done and later.result == 1
+    state.here(due, events.append)  # due: received at once
+    assert events[1:] == [(0, "sent"), (0, "after send")] and not due.pieces
+    assert due.done and due.result == 0
+    assert state.take(0) == ([], due, None)  # its turn: nothing more to hand on
+    assert state.take(1) == ([(1, "sent")], later, None)
+    # and in a whole map, every piece in order before its item's result
+    got: list[object] = []
+    for result in ordered_map(_sends, list(range(30)), 2, receive=got.append,
                               sizes=[1] * 30):
-        results.append(result)
-    assert results == list(range(30))
-    # a main-thread item whose turn had come: its piece received before the send returned
-    direct = [i for i, event in enumerate(events) if isinstance(event, tuple)
-              and len(event) == 3 and event[2] and events[i - 1] == (event[0], "sent")]
-    assert direct  # (at least one: the main thread takes item 0 or the next one due)
-    pieces = [event for event in events if len(event) == 2]  # type: ignore[arg-type]
-    assert pieces == [(item, "sent") for item in range(30)]
+        got.append(result)
+    expected: list[object] = []
+    for item in range(30):
+        expected.extend((item, n) for n in range(item))
+        expected.append(item)
+    assert got == expected
 
 
 def test_an_exception_in_the_main_threads_item_is_raised_at_its_turn(monkeypatch):
