@@ -12,6 +12,20 @@ of ``multiprocessing`` or ``concurrent.futures`` is imported, and a temporary fi
 for a report that must wait (below). The threads, their locks and conditions are the
 interpreter's own (``_thread``): a check's start-up before them does not import ``threading``.
 
+The thread that calls :func:`ordered_map` (the main thread) is one of the ``jobs`` workers
+when the function sends text or nothing (``sizes`` given: ``check`` but SARIF, ``convert``):
+``-j 2`` starts one thread, and the main thread does an item itself wherever it would
+otherwise wait for the one whose turn it is (:meth:`_Map.take`, :meth:`_Map.here`), handing
+on the reports of the items done between its own (not the items started early, long ones
+during which the window would not move for the threads: :func:`first`). So no third thread
+shares two cores, and no working thread is put off its core to hand the reports on; an item
+the main thread is given at its turn hands its pieces to ``receive`` at once, as with one
+job, and one given before its turn keeps them as a thread's (past the budget, spilled:
+nothing here may wait for room, which only the main thread makes). An ``Exception`` of its
+function is raised at its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core
+hands a slice over or ends a file) and SIGTERM's exit leave at once, the threads stopped
+(docs/benchmarks.md, "the main thread as a worker").
+
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
 before its result, so the output is what one thread writes, in the same calls; the main
@@ -241,15 +255,15 @@ class _Map:
         while True:
             with cond:
                 while (not self.stopped and self.given < len(self.items)
-                       and self.given >= self.early
-                       and self.order[self.given] >= self.due + self.window):
+                       and not self._open()):
                     cond.notify()  # (the main thread moves the window: woken for it)
                     self.space.wait()
                 if self.stopped or self.given >= len(self.items):
                     return
-                index = self.order[self.given]
-                slot = self.slots[index] = _Slot(index, self.given < self.early)
-                self.given += 1
+                slot = self._give()
+                if self.given == self.early:  # the last started early: the main thread,
+                    cond.notify()  # which leaves them to the threads, may take the next
+            index = slot.index
             _local.send = lambda piece, slot=slot: self.put(slot, piece)
             try:
                 slot.result = self.func(self.items[index])
@@ -261,6 +275,40 @@ class _Map:
                 slot.done = True
                 if self._ready():
                     cond.notify()
+
+    def _open(self) -> bool:
+        """Whether the next item of ``order`` may be given out now (the lock held; not
+        stopped, not every item given): an early one, or one within ``window`` of the one
+        whose turn it is."""
+        return (self.given < self.early
+                or self.order[self.given] < self.due + self.window)
+
+    def _give(self) -> _Slot:
+        """The next item of ``order``, given out (the lock held; :meth:`_open` true)."""
+        index = self.order[self.given]
+        slot = self.slots[index] = _Slot(index, self.given < self.early)
+        self.given += 1
+        return slot
+
+    def here(self, slot: _Slot, receive: Callable[[Any], object] | None) -> None:
+        """The main thread's own item (:meth:`take`'s third value), done here: its pieces
+        handed to ``receive`` at once if its turn had come when it was given (every item
+        before it taken), else kept as a thread's are (:meth:`put`; text only: past the
+        budget they spill, and nothing here waits for room, which only this thread makes).
+        An ``Exception`` of the function is raised at the item's turn, as a thread's; a
+        ``BaseException`` (^C's ``KeyboardInterrupt``, SIGTERM's ``SystemExit``) at once."""
+        if slot.index == self.due:  # (``due`` moves in this thread only)
+            _local.send = receive
+        else:
+            _local.send = lambda piece: self.put(slot, piece)
+        try:
+            slot.result = self.func(self.items[slot.index])
+        except _Stopped:  # the map stopped by a thread's failure: raised by take
+            return
+        except Exception as exc:
+            slot.error = exc
+        with self.cond:
+            slot.done = True
 
     def _ready(self) -> bool:
         """Whether the main thread is to be woken now that an item is done (the lock held):
@@ -318,11 +366,13 @@ class _Map:
             if slot.index == self.due:
                 self.cond.notify()
 
-    def take(self, index: int) -> tuple[list[Any], _Slot | None]:
+    def take(self, index: int, here: bool = False
+             ) -> tuple[list[Any], _Slot | None, _Slot | None]:
         """(the pieces of item ``index`` held in memory, or one spilled piece; its slot once it
-        is done and every piece has been taken, else None). Waits until the item is done or
-        has :data:`BATCH` pieces or a spilled one: the main thread wakes once for a file's
-        report of a few slices, not once a slice."""
+        is done and every piece has been taken, else None; None, or with ``here``, an item
+        given out to the main thread to do itself (:meth:`here`) where it would wait). Waits
+        until the item is done or has :data:`BATCH` pieces or a spilled one: the main thread
+        wakes once for a file's report of a few slices, not once a slice."""
         with self.cond:
             while True:
                 slot = self.slots.get(index)
@@ -336,13 +386,14 @@ class _Map:
                         if len(pieces) >= PIECES:  # its thread may wait for room
                             self.space.notify_all()
                         if not slot.done or slot.spilled:
-                            return pieces, None
+                            return pieces, None, None
                     elif slot.spilled:
                         size, text = slot.spilled.popleft()
                         assert slot.spill is not None
                         data = _read(slot.spill, size, slot.read_at)
                         slot.read_at += size
-                        return [data.decode("utf-8", "surrogatepass") if text else data], None
+                        return ([data.decode("utf-8", "surrogatepass") if text else data],
+                                None, None)
                     if slot.done:
                         slot.close()
                         del self.slots[index]
@@ -351,9 +402,14 @@ class _Map:
                         if coming is not None and not coming.early:
                             self.held -= len(coming.pieces)  # the due item's now
                         self.space.notify_all()  # the window moved; the next item has room
-                        return pieces, slot
+                        return pieces, slot, None
                 if self.failure is not None:
                     raise self.failure
+                # (not an item started early: a long one, during which nothing would be
+                # handed on and the window would not move for the threads)
+                if (here and not self.stopped and self.early <= self.given < len(self.items)
+                        and self.order[self.given] < self.due + self.window):
+                    return [], None, self._give()
                 self.cond.wait()
 
     def fail(self, error: BaseException) -> None:
@@ -437,7 +493,8 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     are abandoned. ``sizes``: each item's work (its file's bytes), from which the items that
     would end the batch alone are started first (:func:`first`); only for a ``func`` that
     sends text or nothing (a thread with other pieces of an item not due waits for its turn,
-    and threads all waiting so, each on an item started early, would wait for ever)."""
+    and threads all waiting so, each on an item started early, would wait for ever); with
+    ``sizes`` the calling thread is one of the ``jobs`` (the module's docstring)."""
     if jobs <= 1 or len(items) <= 1:
         _local.send = receive
         for item in items:
@@ -446,9 +503,14 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     count = min(jobs, len(items))
     state = _Map(func, items, WINDOW * jobs, WAITING * count,
                  first(sizes, jobs) if sizes is not None else ())
+    # Text or nothing sent (``sizes`` given): this thread is one of the ``count`` workers,
+    # doing an item wherever it would wait for the one whose turn it is, so one thread fewer
+    # is started and no working thread is put off its core to hand the reports on. (Other
+    # pieces may make a thread wait for room that only this thread makes: it only takes.)
+    here = sizes is not None
     # each thread holds its lock until it has ended its work (its join); the threads are
     # the interpreter's own (_thread), as daemon threads: nothing waits for them at the exit
-    ended = [_thread.allocate_lock() for _ in range(count)]
+    ended = [_thread.allocate_lock() for _ in range(count - here)]
     handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
     started: list[Any] = []
     try:
@@ -469,7 +531,10 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
             handler.append(before)
         for index in range(len(items)):
             while True:
-                pieces, got = state.take(index)
+                pieces, got, own = state.take(index, here)
+                if own is not None:
+                    state.here(own, receive)
+                    continue
                 if receive is not None:
                     for piece in pieces:
                         receive(piece)

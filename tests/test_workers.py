@@ -646,7 +646,8 @@ def test_sigterm_stops_the_threads_and_leaves_nothing_behind(tmp_path):
     try:
         assert proc.stdout is not None
         proc.stdout.readline()  # findings are coming: the threads run
-        assert _threads(proc.pid) >= 3  # the main thread and two that check
+        # the main thread, which checks files too, and one more: no third thread waiting
+        assert _threads(proc.pid) == 2
         tasks = list(Path(f"/proc/{proc.pid}/task").iterdir())
         assert all(not (task / "children").read_text().split() for task in tasks
                    if (task / "children").exists())  # no worker process
@@ -1117,3 +1118,249 @@ def test_a_thread_failing_outside_an_items_function_is_raised_not_waited_for(mon
     assert len(error) == 1 and isinstance(error[0], MemoryError)
     assert str(error[0]) == "outside the item's function"
     assert got == []  # item 0 was the failed thread's: nothing after it is handed on
+
+
+# -- the main thread as a worker (sizes given: a function that sends text or nothing) --------
+
+
+def _worker_takes_item_zero(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The main thread's first look for item 0 waits (20 s at most) until the thread it
+    started has been given item 0, so that the main thread's own items are not yet due."""
+    import tapegate.workers as workers
+
+    take = workers._Map.take
+
+    def later(self: workers._Map, index: int, here: bool = False) -> Any:
+        if index == 0 and here:
+            deadline = time.monotonic() + 20.0
+            while 0 not in self.slots and time.monotonic() < deadline:
+                time.sleep(0.001)
+        return take(self, index, here)
+
+    monkeypatch.setattr(workers._Map, "take", later)
+
+
+def test_the_main_thread_does_items_while_the_due_one_runs_and_keeps_their_order(
+        monkeypatch):
+    """With sizes given, `-j 2` starts one thread and the main thread works too: while the
+    other thread's item 0 runs, the main thread does items 1-3 itself; their text pieces wait
+    (past the budget in a temporary file), and every piece reaches receive in the items'
+    order, before its item's result."""
+    import _thread
+    import threading
+
+    import tapegate.workers as workers
+
+    _worker_takes_item_zero(monkeypatch)
+    spills: list[int] = []
+    spill_file = workers._spill_file
+
+    def counted() -> int:
+        spills.append(1)
+        return spill_file()
+
+    monkeypatch.setattr(workers, "_spill_file", counted)
+    main_thread = _thread.get_ident()
+    by: dict[int, int] = {}
+    done_here = threading.Event()
+
+    def func(item: int) -> int:
+        by[item] = _thread.get_ident()
+        if item == 0 and not done_here.wait(timeout=30):
+            raise AssertionError("the main thread did not do items 1-3 while item 0 ran")
+        for n in range(2 * PIECES):  # past the budget of the items not due (2 * WAITING)
+            piece = f"{item}:{n}:" + "é" * n
+            send(piece.encode() if n % 2 else piece)
+        if item == 3 and by.get(1) == by.get(2) == by.get(3) == main_thread:
+            done_here.set()
+        return item
+
+    got: list[object] = []
+    items = list(range(8))
+    for result in ordered_map(func, items, 2, receive=got.append, sizes=[1] * len(items)):
+        got.append(result)
+    expected: list[object] = []
+    for item in items:
+        expected.extend((f"{item}:{n}:" + "é" * n).encode() if n % 2 else f"{item}:{n}:" + "é" * n
+                        for n in range(2 * PIECES))
+        expected.append(item)
+    assert got == expected
+    assert by[0] != main_thread
+    assert by[1] == by[2] == by[3] == main_thread
+    assert 3 * 2 * PIECES > 2 * WAITING and spills  # (the main thread's items spilled)
+
+
+def test_the_due_item_done_by_the_main_thread_is_received_at_once():
+    """An item given to the main thread at its turn (every item before it taken) hands its
+    pieces to receive as it sends them, as with one job; one given before its turn keeps
+    them in its slot, for its turn (the map's own take)."""
+    import tapegate.workers as workers
+
+    events: list[object] = []
+
+    def func(item: int) -> int:
+        send((item, "sent"))
+        events.append((item, "after send"))
+        return item
+
+    state = workers._Map(func, [0, 1, 2], 16, 32)
+    with state.cond:
+        due, later = state._give(), state._give()
+    assert (due.index, later.index, state.due) == (0, 1, 0)
+    state.here(later, events.append)  # not due: kept
+    assert events == [(1, "after send")] and list(later.pieces) == [(1, "sent")]
+    assert later.done and later.result == 1
+    state.here(due, events.append)  # due: received at once
+    assert events[1:] == [(0, "sent"), (0, "after send")] and not due.pieces
+    assert due.done and due.result == 0
+    assert state.take(0) == ([], due, None)  # its turn: nothing more to hand on
+    assert state.take(1) == ([(1, "sent")], later, None)
+    # and in a whole map, every piece in order before its item's result
+    got: list[object] = []
+    for result in ordered_map(_sends, list(range(30)), 2, receive=got.append,
+                              sizes=[1] * 30):
+        got.append(result)
+    expected: list[object] = []
+    for item in range(30):
+        expected.extend((item, n) for n in range(item))
+        expected.append(item)
+    assert got == expected
+
+
+def test_an_exception_in_the_main_threads_item_is_raised_at_its_turn(monkeypatch):
+    """The main thread's own item 1 raises while the other thread's item 0 runs: it is raised
+    at item 1's turn, after item 0's pieces and result and item 1's own piece."""
+    import _thread
+    import threading
+
+    _worker_takes_item_zero(monkeypatch)
+    main_thread = _thread.get_ident()
+    raised = threading.Event()
+
+    def func(item: int) -> int:
+        if item == 0 and not raised.wait(timeout=30):
+            raise AssertionError("item 1 was not done while item 0 ran")
+        send(f"piece of {item}")
+        if item == 1:
+            assert _thread.get_ident() == main_thread
+            raised.set()
+            raise OSError("item 1 is bad")
+        return item
+
+    got: list[object] = []
+    with pytest.raises(OSError, match="item 1 is bad"):
+        for result in ordered_map(func, list(range(20)), 2, receive=got.append,
+                                  sizes=[1] * 20):
+            got.append(result)
+    assert got == ["piece of 0", 0, "piece of 1"]
+
+
+def test_an_interrupt_in_the_main_threads_item_stops_the_map_at_once(monkeypatch):
+    """^C (KeyboardInterrupt) in an item the main thread does is not kept for its turn: it
+    leaves the map at once, and the other thread, sending, stops before the map returns."""
+    import _thread
+    import threading
+
+    _worker_takes_item_zero(monkeypatch)
+    main_thread = _thread.get_ident()
+    interrupted = threading.Event()
+    stopped: list[str] = []
+
+    def func(item: int) -> int:
+        if item == 0:
+            try:
+                if not interrupted.wait(timeout=30):
+                    raise AssertionError("item 1 was not done in the main thread")
+                deadline = time.monotonic() + 30.0
+                while time.monotonic() < deadline:  # sends until the map stops it
+                    send("more of 0")
+                    time.sleep(0.001)
+            except BaseException as exc:
+                stopped.append(type(exc).__name__)
+                raise
+            return 0
+        if _thread.get_ident() == main_thread:
+            interrupted.set()
+            raise KeyboardInterrupt
+        return item
+
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        list(ordered_map(func, list(range(20)), 2, receive=lambda piece: None,
+                         sizes=[1] * 20))
+    assert time.monotonic() - started < 20
+    assert stopped == ["_Stopped"]  # the other thread ended before the map returned
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="needs /proc")
+def test_ctrl_c_while_the_main_thread_checks_ends_the_check_cleanly(tmp_path):
+    """^C (SIGINT) of `check -j 2` while both threads check, the main thread among them,
+    most of its time in the core: "Aborted!" and exit 1 as with one job, at once, without a
+    traceback or a temporary file left."""
+    import signal
+
+    program = (Path(__file__).resolve().parents[1] / "tapegate" / "examples" / "bracket.nc")
+    folder = tmp_path / "cam"
+    folder.mkdir()
+    body = program.read_text()
+    for i in range(400):
+        (folder / f"p{i}.nc").write_text(body * 20)
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    exe = Path(sys.executable).with_name("tapegate")
+    proc = subprocess.Popen([str(exe), "check", str(folder), str(folder), "-p", "fanuc-mill",
+                             "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env={**os.environ, "TMPDIR": str(scratch)})
+    try:
+        assert proc.stdout is not None
+        proc.stdout.readline()  # findings are coming: the threads run
+        assert _threads(proc.pid) == 2
+        started = time.monotonic()
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=30)
+        assert proc.returncode == 1, err
+        assert err.endswith(b"Aborted!\n")
+        assert time.monotonic() - started < 10
+        assert b"Traceback" not in err
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert list(scratch.iterdir()) == []
+
+
+def test_the_main_thread_leaves_the_items_started_early_to_the_threads():
+    """The items started early (first()) are long: the main thread, which hands the reports
+    on, does not take one (the window would not move meanwhile); it waits until a thread has
+    taken the last of them, is woken by that thread, and takes the first of the others."""
+    import threading
+
+    import tapegate.workers as workers
+
+    state = workers._Map(lambda item: item, list(range(10)), 16, 32, [9])
+    got: list[Any] = []
+    main = threading.Thread(target=lambda: got.append(state.take(0, True)), daemon=True)
+    main.start()
+    main.join(timeout=0.3)
+    assert main.is_alive() and not got  # waiting: the one item it may be given is early
+    given: list[Any] = []
+    # a thread's work: it takes item 9, then item 0 is taken by the main thread; the thread
+    # then waits in vain for the window (16 items from 0, all given): stopped below
+    worker = threading.Thread(target=lambda: given.append(state.work()), daemon=True)
+
+    def func(item: int) -> int:
+        given.append(item)
+        deadline = time.monotonic() + 20.0
+        while item == 9 and not got and time.monotonic() < deadline:
+            time.sleep(0.001)  # (the early item runs until the main thread has its own)
+        return item
+
+    state.func = func
+    worker.start()
+    main.join(timeout=20)
+    assert got, "the main thread was not woken once the early item was taken"
+    pieces, slot, own = got[0]
+    assert pieces == [] and slot is None and own.index == 0 and not own.early
+    state.stop()
+    worker.join(timeout=20)
+    assert not worker.is_alive()
+    assert given[0] == 9  # the thread's first item: the early one
