@@ -805,7 +805,7 @@ class _Planner:
             # (review 33, finding 2: they were left where the operator had them)
             others = [a for a in AXES if a in known and a not in ("X", "Z")]
             if others:
-                words = [self.word(a, known[a]) for a in others]
+                words = [self.word(a, known[a]) for a in others]  # type: ignore[arg-type]
                 out.append("G00 " + " ".join(words))
             out += way
             restored.update(a for a in ("X", "Z", *others) if a in known)
