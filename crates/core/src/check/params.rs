@@ -72,7 +72,13 @@ impl Checker {
     /// for a system variable the checker cannot read.
     pub(super) fn parameter_elements(&mut self, b: &BlockView<'_>) {
         let text = b.text;
-        let mut i = 0;
+        // (most blocks hold no `#`: one search of the line, not a walk of its comments)
+        let Some(first) = memchr::memchr(b'#', text) else {
+            return;
+        };
+        // the walk of the comments starts at the last `(` before it (a comment open there
+        // ends where one opened before it would: at the first `)` after it)
+        let mut i = memchr::memrchr(b'(', &text[..first]).unwrap_or(first);
         while let Some(at) = text[i..].iter().position(|&c| c == b'#' || c == b'(') {
             let at = i + at;
             if text[at] == b'(' {
