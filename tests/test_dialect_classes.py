@@ -1352,8 +1352,8 @@ def test_the_m165_block_sends_and_no_restart_after_it_guesses_the_speed(tmp_path
     with pytest.raises(RestartRefused) as refused:
         workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
     assert refused.value.line == 6
-    assert "the spindle speed in force is not known: S2. on line 5, a value the check takes as " \
-        "unknown" in refused.value.message, refused.value.message
+    assert "the spindle speed in force is not known: S2. on line 5, beside M165, an M code the " \
+        "profile's list lacks" in refused.value.message, refused.value.message
     # the same with D and no Z (O0050's form): the speed still stops the restart
     path.write_text(DOOSAN_PROBE.replace("G00 X10.", "N60 G00 X10.").replace(
         "M165P9811Z0S2.", "M165P9814D.453S2."))

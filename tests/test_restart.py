@@ -2106,10 +2106,10 @@ def test_the_words_beside_an_unlisted_m_code_with_arguments_are_not_known(profil
     machine = load_profile(profile)
     said = refusal(MACRO_M.format(block="M165 P9811 Z0 S2"), 9, machine)
     assert said.startswith("cannot restart here: the spindle speed in force is not known: S2 "
-                           "beside M165, an M code the profile's list lacks"), said
+                           "on line 7, beside M165, an M code the profile's list lacks"), said
     assert "FANUC parameters 6080-6089" in said
     point = refusal(MACRO_M.format(block="M165 S2.5 X30."), 9, machine)
-    assert "S2.5 beside M165" in point, point
+    assert "S2.5 on line 7, beside M165" in point, point
     plain = plan(MACRO_M.format(block="S300 M45"), 9, machine)
     assert "S300 M03" in " ".join(plain.preamble), plain.preamble
 

@@ -635,12 +635,14 @@ def test_sigterm_stops_the_threads_and_leaves_nothing_behind(tmp_path):
     folder = tmp_path / "cam"
     folder.mkdir()
     body = program.read_text()
+    # (some seconds of work: 800 files of 20 copies were checked in 0.12 s, and under the
+    # suite's load the whole check could end before the signal reached it)
     for i in range(400):
-        (folder / f"p{i}.nc").write_text(body * 20)
+        (folder / f"p{i}.nc").write_text(body * 400)
     scratch = tmp_path / "tmp"
     scratch.mkdir()
     exe = Path(sys.executable).with_name("tapegate")
-    proc = subprocess.Popen([str(exe), "check", str(folder), str(folder), "-p", "fanuc-mill",
+    proc = subprocess.Popen([str(exe), "check", *[str(folder)] * 4, "-p", "fanuc-mill",
                              "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env={**os.environ, "TMPDIR": str(scratch)})
     try:
@@ -1303,12 +1305,14 @@ def test_ctrl_c_while_the_main_thread_checks_ends_the_check_cleanly(tmp_path):
     folder = tmp_path / "cam"
     folder.mkdir()
     body = program.read_text()
+    # (some seconds of work: 800 files of 20 copies were checked in 0.12 s, and under the
+    # suite's load the whole check could end before the signal reached it)
     for i in range(400):
-        (folder / f"p{i}.nc").write_text(body * 20)
+        (folder / f"p{i}.nc").write_text(body * 400)
     scratch = tmp_path / "tmp"
     scratch.mkdir()
     exe = Path(sys.executable).with_name("tapegate")
-    proc = subprocess.Popen([str(exe), "check", str(folder), str(folder), "-p", "fanuc-mill",
+    proc = subprocess.Popen([str(exe), "check", *[str(folder)] * 4, "-p", "fanuc-mill",
                              "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env={**os.environ, "TMPDIR": str(scratch)})
     try:
@@ -1319,7 +1323,7 @@ def test_ctrl_c_while_the_main_thread_checks_ends_the_check_cleanly(tmp_path):
         proc.send_signal(signal.SIGINT)
         _, err = proc.communicate(timeout=30)
         assert proc.returncode == 1, err
-        assert err.endswith(b"Aborted!\n")
+        assert err.endswith(b"Aborted!\n"), err
         assert time.monotonic() - started < 10
         assert b"Traceback" not in err
     finally:

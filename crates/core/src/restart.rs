@@ -1061,7 +1061,7 @@ impl Walk {
                 let mut why = token.to_vec();
                 why.extend_from_slice(
                     format!(
-                        " beside M{m}, an M code the profile's list lacks: an argument of a \
+                        " on line {line}, beside M{m}, an M code the profile's list lacks: an argument of a \
                          macro call where the control's parameters make M{m} one (FANUC \
                          parameters 6080-6089, a Haas's M code aliases)"
                     )
