@@ -807,3 +807,40 @@ def test_an_arc_with_r_and_i_j_k_is_refused_for_linuxcnc(tmp_path, source, block
     assert "PROGRAM_END" in rs274_output(tmp_path, out.replace("M30", "M2"))
     # carried as written, rs274 refuses it
     assert "Mixed radius ijk format for arc" in rs274_output(tmp_path, text.replace("O1\n", ""))
+
+
+@pytest.mark.parametrize("source, target, block, meanings", [
+    ("haas-mill", "fanuc-mill", "#1=#30003.078", ("a Haas NGC parameter element",)),
+    ("haas-mill", "fanuc-mill", "#1=#3026", ("the tool in the spindle on a Haas",)),
+    ("haas-mill", "fanuc-mill", "#101=#5201", ("the G52 work offset on a Haas",
+                                               "external, G54-G59) on a FANUC")),
+    ("fanuc-mill", "haas-mill", "#1=#2001", ("a tool offset value on a FANUC",
+                                             "a tool length or diameter offset")),
+    ("fanuc-mill", "haas-mill", "#750=1.", ("a common variable on a FANUC",
+                                            "no general purpose variable")),
+    ("haas-mill", "fanuc-mill", "#10100=1.", ("its NGC number",)),
+    ("fanuc-mill", "haas-mill", "#3901=#3901+1", ("the parts count on a FANUC",
+                                                  "an M30 part counter on a Haas")),
+    ("fanuc-mill", "haas-mill", "#[#1]=2.", ("a variable chosen by a value",)),
+])
+def test_a_variable_a_fanuc_and_a_haas_read_apart_is_refused_naming_both(source, target, block,
+                                                                         meanings):
+    """Review 33, doubtful: a FANUC and a Haas both write Custom Macro B, so the conversion
+    carried every variable; but the NGC's Macro Variables Table (Mill Operator's Manual, NGC,
+    2017, 6.14.7) gives many numbers other uses (`#30003.078`, a parameter element, which the
+    FANUC profile's own check refuses, converted "ok"). A variable both leave to the program
+    or read alike is carried; any other is refused at its word, naming both uses."""
+    e = refused(f"O1\nG21 G90\n#1=1.\n{block}\nG0 X10. Y10.\nM30\n", source, target)
+    assert (e.code, e.line, e.column) == ("conversion-meaning", 4, 1)
+    for meaning in meanings:
+        assert meaning in e.message, e.message
+
+
+@pytest.mark.parametrize("block", ["#101=#5221+#5021", "#1=#3000", "#500=#4001",
+                                   "#1=#5061", "#102=#7001", "#103=#14001", "#1=#3011"])
+def test_the_variables_a_fanuc_and_a_haas_read_alike_are_carried(block):
+    """The work offsets G54-G59 and the additional ones laid out alike, the positions, the
+    previous block's codes, the alarm and the clocks: carried both ways as written."""
+    text = f"O1\nG21 G90\n{block}\nG0 X10. Y10.\nM30\n"
+    for source, target in (("fanuc-mill", "haas-mill"), ("haas-mill", "fanuc-mill")):
+        assert block in convert(text, source, target)

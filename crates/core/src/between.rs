@@ -328,6 +328,7 @@ pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Resu
     if from_haas && words.iter().any(m19) {
         orient_angle(words, |_| "FANUC", Family::MacroB)?;
     }
+    fanuc_haas_variables(from_haas, words)?;
     let find = |letter: u8| {
         words
             .iter()
@@ -402,6 +403,116 @@ pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Resu
         ),
         "meaning",
     ))
+}
+
+/// What a numbered variable is on a Haas, where the NGC's Macro Variables Table (Mill
+/// Operator's Manual, NGC, 2017, 6.14.7; docs/dialects.md, "Variables") gives it a use of its
+/// own; None where it gives it none here (the number is then judged by FANUC's reading alone).
+fn haas_variable(n: u64) -> Option<&'static str> {
+    Some(match n {
+        1..=33 => "a local variable",
+        100..=199 | 500..=699 | 800..=999 => "a general purpose variable",
+        700..=799 => "no general purpose variable (the table keeps #700-#799 for the control)",
+        1000..=1999 => "a discrete or analog input or output of the machine",
+        2001..=2800 => "a tool length or diameter offset (geometry or wear)",
+        3020..=3025 => "a timer (power-on, cycle, feed or part time)",
+        3026 => "the tool in the spindle",
+        3027 => "the spindle speed",
+        3901 | 3902 => "an M30 part counter",
+        5201..=5206 => "the G52 work offset",
+        6001..=6999 => "a setting or parameter (the control's own numbering)",
+        8500..=8599 => "advanced tool management or tool data",
+        10000..=10999 => "a general purpose variable under its NGC number (#100 is #10100)",
+        11000..=11255 => "a discrete input",
+        12000..=12255 => "a discrete output",
+        13000..=13063 => "an analog input",
+        20000..=29999 => "a setting (setting number + 20000)",
+        30000..=39999 => "a parameter (parameter number + 30000)",
+        50001..=52800 => "tool data",
+        _ => return None,
+    })
+}
+
+/// The numbered variables a FANUC and a Haas read alike, beside the ones both leave to the
+/// program: the null variable, the alarm, the clocks, the stop with a message, the date and
+/// time, the previous block's codes and addresses, the positions, the G54-G59 work offsets
+/// and the additional work offsets laid out alike (FANUC G54.1 P1-P48 #7001-#7960 and P1-P300
+/// #14001-#19988, 20 a set; Haas G110-G129 #7001-#7386 and G154 P1-P99 #14001-#15966, the
+/// same sets): FANUC 0i-MF operator's manual, "System variables"; the NGC table (6.14.7).
+fn fanuc_haas_alike(n: u64) -> bool {
+    matches!(
+        n,
+        0 | 3000..=3002 | 3006 | 3011 | 3012 | 4001..=4021 | 4101..=4126 | 5001..=5006
+            | 5021..=5026 | 5041..=5046 | 5061..=5066 | 5081..=5086 | 5221..=5326
+            | 7001..=7386 | 14001..=15966
+    )
+}
+
+/// Numbered variables between a FANUC and a Haas, which both write Custom Macro B: a variable
+/// both leave to the program (#1-#33, #100-#199, #500-#699, #800-#999) or both read alike
+/// ([`fanuc_haas_alike`]) is carried; one the Haas's table gives another use (the G52 offset
+/// at #5201, the tool offsets at #2001-#2800 in another order, the M30 counters at #3901, the
+/// settings and parameters at #20000-#39999, the NGC's #10000 numbers of the general purpose
+/// variables, which a FANUC reads as tool offsets) or that neither names alike is refused,
+/// naming both uses; so is a Haas NGC parameter element (`#30003.078`), which a FANUC does
+/// not read (a variable is numbered with a whole number), and a variable chosen by a value.
+fn fanuc_haas_variables(from_haas: bool, words: &[Word<'_>]) -> Result<(), Refusal> {
+    let (source, target) = if from_haas {
+        ("Haas", "FANUC")
+    } else {
+        ("FANUC", "Haas")
+    };
+    for w in words.iter().filter(|w| w.token.contains(&b'#')) {
+        let t = w.token;
+        let mut at = 0;
+        while let Some(p) = t[at..].iter().position(|&c| c == b'#').map(|p| p + at) {
+            at = p + 1;
+            let rest = &t[at..];
+            let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+            let fail = |what: String| Err(refuse(w, format!("{}: {what}", text(t)), "meaning"));
+            if digits == 0 {
+                return fail(format!(
+                    "a variable chosen by a value: which one the text does not show, so not \
+                     that a {target} reads it as a {source} does; tapegate carries only the \
+                     variables both controls read alike"
+                ));
+            }
+            let element = rest.get(digits) == Some(&b'.')
+                && rest.get(digits + 1).is_some_and(u8::is_ascii_digit);
+            let n = std::str::from_utf8(&rest[..digits])
+                .ok()
+                .and_then(|d| d.parse::<u64>().ok())
+                .unwrap_or(u64::MAX);
+            if element {
+                return fail(format!(
+                    "#{n} with a decimal part, a Haas NGC parameter element (docs/dialects.md): \
+                     a FANUC numbers a variable with a whole number and does not read it; \
+                     read the target's own data for it"
+                ));
+            }
+            let fanuc = variable(Family::MacroB, n);
+            let haas = haas_variable(n);
+            let user = fanuc.1
+                && haas
+                    .is_none_or(|h| h == "a local variable" || h == "a general purpose variable");
+            if user || fanuc_haas_alike(n) {
+                continue;
+            }
+            let haas = haas.unwrap_or("a variable not known here to be read alike");
+            let (a, b) = if from_haas {
+                (haas, fanuc.0)
+            } else {
+                (fanuc.0, haas)
+            };
+            return fail(format!(
+                "#{n} is {a} on a {source} and {b} on a {target}; tapegate carries only the \
+                 variables both controls leave to the program or read alike (FANUC 0i-MF \
+                 operator's manual, \"System variables\"; Haas Mill Operator's Manual, NGC, \
+                 6.14.7): read or write the target's own variable for it"
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// What G10 with the data type `l` (None: no L, a FANUC lathe's `G10 P X Z R Q`) sets on a
@@ -1377,6 +1488,46 @@ mod tests {
         assert_eq!(g50("G50 S2000 W-1."), Some(10));
         // no G10 or G50 in the block
         assert_eq!(refused(false, "G01 X1. L12", &[1]), None);
+    }
+
+    #[test]
+    fn fanuc_and_haas_carry_only_the_variables_they_read_alike() {
+        let refused = |from_haas, line: &str| {
+            fanuc_haas_variables(from_haas, &words(line))
+                .err()
+                .map(|r| r.message)
+        };
+        for line in [
+            "#1=#5221",
+            "#101=[#5021+#4001]",
+            "#500=#14001",
+            "#1=#3000",
+            "#1=#0",
+        ] {
+            assert_eq!(refused(true, line), None, "{line}");
+            assert_eq!(refused(false, line), None, "{line}");
+        }
+        // another use on the Haas (the G52 offset, the NGC's numbers, an element), or not
+        // known alike (#3004), or chosen by a value
+        for line in [
+            "#1=#5201",
+            "#10100=1.",
+            "#1=#30003.078",
+            "#1=#3004",
+            "#[#1]=1.",
+        ] {
+            assert!(refused(true, line).is_some(), "{line}");
+            assert!(refused(false, line).is_some(), "{line}");
+        }
+        let m = refused(false, "#1=#2001").unwrap();
+        assert!(
+            m.contains("a tool offset value on a FANUC") && m.contains("length or diameter"),
+            "{m}"
+        );
+        // #700-#799: FANUC common variables, kept by the Haas control
+        assert!(refused(false, "#750=1.")
+            .unwrap()
+            .contains("no general purpose"));
     }
 
     #[test]
