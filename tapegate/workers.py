@@ -16,8 +16,9 @@ The thread that calls :func:`ordered_map` (the main thread) is one of the ``jobs
 when the function sends text or nothing (``sizes`` given: ``check`` but SARIF, ``convert``):
 ``-j 2`` starts one thread, and the main thread does an item itself wherever it would
 otherwise wait for the one whose turn it is (:meth:`_Map.take`, :meth:`_Map.here`), handing
-on the reports of the items done between its own (not the items started early, long ones
-during which the window would not move for the threads: :func:`first`). So no third thread
+on the reports of the items done between its own (an item started early, a long one
+during which the window does not move for the threads, only once every thread has one:
+:func:`first`). So no third thread
 shares two cores, and no working thread is put off its core to hand the reports on; an item
 the main thread is given at its turn hands its pieces to ``receive`` at once, as with one
 job, and one given before its turn keeps them as a thread's (past the budget, spilled:
@@ -241,6 +242,9 @@ class _Map:
         skipped = set(early)
         self.order = [*early, *(i for i in range(len(items)) if i not in skipped)]
         self.early = len(early)
+        # the threads started (the main thread not among them): where every one has been
+        # given an early item, the main thread takes the next early one itself
+        self.threads = 1 << 30
         self.given = 0  # items given out: the first ``given`` of ``order``
         self.due = 0  # the item whose turn it is
         self.stopped = False
@@ -261,8 +265,8 @@ class _Map:
                 if self.stopped or self.given >= len(self.items):
                     return
                 slot = self._give()
-                if self.given == self.early:  # the last started early: the main thread,
-                    cond.notify()  # which leaves them to the threads, may take the next
+                if self.given in (self.early, self.threads):  # the last started early, or
+                    cond.notify()  # every thread has one: the main thread may take the next
             index = slot.index
             _local.send = lambda piece, slot=slot: self.put(slot, piece)
             try:
@@ -405,10 +409,14 @@ class _Map:
                         return pieces, slot, None
                 if self.failure is not None:
                     raise self.failure
-                # (not an item started early: a long one, during which nothing would be
-                # handed on and the window would not move for the threads)
-                if (here and not self.stopped and self.early <= self.given < len(self.items)
-                        and self.order[self.given] < self.due + self.window):
+                # (an item started early only once every thread has one: a long one, during
+                # which nothing is handed on and the window does not move for the threads,
+                # but which would otherwise wait for a thread; review 34, finding 3: at -j 2
+                # the one thread ran two long files one after the other)
+                if here and not self.stopped and self.given < len(self.items) and (
+                        self.threads <= self.given < self.early
+                        or (self.given >= self.early
+                            and self.order[self.given] < self.due + self.window)):
                     return [], None, self._give()
                 self.cond.wait()
 
@@ -511,6 +519,7 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     # each thread holds its lock until it has ended its work (its join); the threads are
     # the interpreter's own (_thread), as daemon threads: nothing waits for them at the exit
     ended = [_thread.allocate_lock() for _ in range(count - here)]
+    state.threads = len(ended)
     handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
     started: list[Any] = []
     try:

@@ -1341,6 +1341,7 @@ def test_the_main_thread_leaves_the_items_started_early_to_the_threads():
     import tapegate.workers as workers
 
     state = workers._Map(lambda item: item, list(range(10)), 16, 32, [9])
+    state.threads = 1  # (-j 2: one thread beside the main thread)
     got: list[Any] = []
     main = threading.Thread(target=lambda: got.append(state.take(0, True)), daemon=True)
     main.start()
@@ -1368,3 +1369,62 @@ def test_the_main_thread_leaves_the_items_started_early_to_the_threads():
     worker.join(timeout=20)
     assert not worker.is_alive()
     assert given[0] == 9  # the thread's first item: the early one
+
+
+def test_the_main_thread_takes_an_early_item_once_every_thread_has_one():
+    """Review 34, finding 3: at -j 2 (one thread) with two long files started early, the
+    main thread left both to the thread, which ran them one after the other (a model with
+    sleeps: 0.90 s against 0.55 s). Once every thread has an early item, the main thread is
+    woken and takes the next early one itself."""
+    import threading
+
+    import tapegate.workers as workers
+
+    state = workers._Map(lambda item: item, list(range(10)), 16, 32, [8, 9])
+    state.threads = 1
+    got: list[Any] = []
+    main = threading.Thread(target=lambda: got.append(state.take(0, True)), daemon=True)
+    main.start()
+    main.join(timeout=0.3)
+    assert main.is_alive() and not got  # no thread has an early item yet
+    given: list[Any] = []
+
+    def func(item: int) -> int:
+        given.append(item)
+        deadline = time.monotonic() + 20.0
+        while item == 8 and not got and time.monotonic() < deadline:
+            time.sleep(0.001)  # (the thread's early item runs until the main thread has one)
+        return item
+
+    state.func = func
+    worker = threading.Thread(target=lambda: state.work(), daemon=True)
+    worker.start()
+    main.join(timeout=20)
+    assert got, "the main thread was not woken once the thread had its early item"
+    pieces, slot, own = got[0]
+    assert pieces == [] and slot is None and own.index == 9 and own.early
+    assert given[0] == 8
+    state.stop()
+    worker.join(timeout=20)
+    assert not worker.is_alive()
+
+
+def test_two_long_files_at_the_end_run_side_by_side_at_j_2():
+    """The whole map at -j 2 with two long items started early (20 short ones, then 50 and
+    40 units): the main thread does one of the long ones, so both are in hand at once --
+    each is started before the other ends -- and every result comes in input order."""
+    import tapegate.workers as workers
+
+    sizes = [1] * 20 + [50, 40]
+    spans: dict[int, tuple[float, float]] = {}
+
+    def func(item: int) -> int:
+        start = time.monotonic()
+        time.sleep(sizes[item] * 0.002)
+        spans[item] = (start, time.monotonic())
+        return item
+
+    out = list(workers.ordered_map(func, list(range(len(sizes))), 2, sizes=sizes))
+    assert out == list(range(len(sizes)))
+    (a0, a1), (b0, b1) = spans[20], spans[21]
+    assert a0 < b1 and b0 < a1  # the two long ones overlapped
