@@ -733,8 +733,13 @@ class _Planner:
         return max(high, start)
 
     def approach(self, out: list[str]) -> set[str]:
-        # on a Fanuc or Haas lathe U and W are X and Z incremental, not axes of their own
-        axes = [a for a in AXES if not (self.walker.g50_lathe and a in "UW")]
+        # on a Fanuc or Haas lathe U and W are X and Z incremental, not axes of their own;
+        # a lathe's C is the main spindle in position mode, which has no place while the
+        # spindle turns (M03/M04): not positioned then (review 34, finding 2: the approach
+        # sent `G00 C30.` after `M03`, a C move with the spindle turning)
+        turning = self.walker.lathe and self.state.spindle in ("cw", "ccw")
+        axes = [a for a in AXES if not (self.walker.g50_lathe and a in "UW")
+                and not (turning and a == "C")]
         places = {axis: self.where(axis) for axis in axes}
         for axis, (kind, info) in places.items():
             if kind == "frame":

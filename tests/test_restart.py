@@ -2051,12 +2051,15 @@ def test_a_haas_lathe_g112_is_its_xc_interpolation_not_a_work_offset():
 
 @pytest.mark.parametrize(("profile", "on", "off"), [
     ("fanuc-mill", "G112", "G113"), ("fanuc-mill", "G107 C25.", "G107 C0"),
-    ("haas-mill", "G107 C25.", "G107 C0")])
+    ("haas-mill", "G107 C25.", "G107"), ("haas-mill", "G107 Y0 A0 Q2.", "G107"),
+    ("haas-mill", "G107 Y0 A0", "G107")])
 def test_polar_and_cylindrical_g_code_system_b_codes_refuse_on_a_mill_too(profile, on, off):
     """Review 33, finding 1: a FANUC mill's G112/G113 (polar coordinate interpolation in G code
     system B/C) and G107 (cylindrical), and a Haas mill's G107, were planned past as if the
     moves under them were straight ones; only lathes were read. A Haas mill's G112/G113 are
     its work systems 9 and 10 (refused as an extended work offset, as before)."""
+    # (a Haas's G107 is on when it names an axis, Q or R, whatever the values, off only
+    # with no address: 96-8000, "G107 Cylindrical Mapping"; review 34, finding 1)
     machine = load_profile(profile)
     code = on.split()[0]
     kind = "cylindrical" if code == "G107" else "polar coordinate"
@@ -2110,18 +2113,43 @@ def test_the_words_beside_an_unlisted_m_code_with_arguments_are_not_known(profil
     assert "FANUC parameters 6080-6089" in said
     point = refusal(MACRO_M.format(block="M165 S2.5 X30."), 9, machine)
     assert "S2.5 on line 7, beside M165" in point, point
+    # an I, J, K, R or E where no arc or cycle is in force: an argument too (review 34, 4)
+    argument = refusal(MACRO_M.format(block="M165 I1. Z-3. S2"), 9, machine)
+    assert "S2 on line 7, beside M165" in argument, argument
     plain = plan(MACRO_M.format(block="S300 M45"), 9, machine)
     assert "S300 M03" in " ".join(plain.preamble), plain.preamble
 
 
 def test_a_lathe_restart_the_program_way_in_sets_its_c_axis_first():
-    """Review 33, finding 2: a lathe's approach the program's own way in (a groove's) set X
-    and Z but left C where the operator had it; the other axes go to their place at the
-    clearance, before the way in."""
+    """Review 33, finding 2: a lathe's approach the program's own way in (a cross slot's,
+    the main spindle stopped) set X and Z but left C where the operator had it; the other
+    axes go to their place at the clearance, before the way in. Review 34, finding 2: with
+    the main spindle turning (M03) C is the spindle, in no position: it is not sent."""
     lathe = load_profile("fanuc-lathe")
     text = GROOVE.replace("N50 M08\n", "N50 M08\nN55 G00 C30.\n")
-    restart = plan(text, 11, lathe)
-    assert restart.preamble[-3:] == ["G00 C30.", "G00 X52. Z-20.", "G01 X40. F0.05"]
+    stopped = plan(text.replace("N30 G97 S600 M03", "N30 M05"), 11, lathe)
+    assert stopped.preamble[-3:] == ["G00 C30.", "G00 X52. Z-20.", "G01 X40. F0.05"]
+    turning = plan(text, 11, lathe)
+    assert turning.preamble[-2:] == ["G00 X52. Z-20.", "G01 X40. F0.05"]
+    assert not any("C30." in block for block in turning.preamble)
+
+
+def test_a_haas_lathe_live_tool_or_c_axis_in_force_refuses_the_restart():
+    """Review 34, finding 2: a Haas lathe's M154 (C axis engage) and M133 P2000 (live tool
+    drive forward), as Autodesk's HAAS Lathe post writes them, were planned past: the
+    preamble had neither, and a radial drill fed in with the live tool stopped. Refused
+    while one is on; planned again after M135 and M155."""
+    haas = load_profile("haas-lathe")
+    text = ("%\nO1000\nG20 G18 G40 G80 G99\nT0202\nM154\nG00 C0\nG98 M133 P2000\n"
+            "G00 X2.4 Z-0.4\nG01 X1.2 F5.\nG00 X2.4\nG00 C90.\nG01 X1.2 F5.\n{off}"
+            "G00 X2.4 Z1.\nG99 G97 S600 M03\nG00 X2.2 Z0.1\nG01 Z-0.5 F0.01\nM30\n%\n")
+    said = refusal(text.format(off=""), 14, haas)
+    assert said.startswith("cannot restart here: M1"), said
+    assert "from line" in said and "is in force" in said
+    assert refusal(text.format(off="M135\n"), 15, haas).startswith(
+        "cannot restart here: M154 (C axis engage) from line 5 is in force")
+    ended = text.format(off="M135\nM155\n")
+    assert plan(ended, 18, haas).preamble
 
 
 # -- two codes of one modal group before the restart point (TG304) ------------------------------

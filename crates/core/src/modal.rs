@@ -863,8 +863,19 @@ impl ModalMachine {
             53 => s.zero_shift = None,
             54..=59 => s.zero_shift = Some(g),
             // Haas's additional work systems (G154 P1-P99, G110-G129: mill operator's manual,
-            // "G154 Select Work Coordinates P1-P99")
-            110..=129 | 154 if self.settings.family == Family::MacroB => s.zero_shift = None,
+            // "G154 Select Work Coordinates P1-P99"); G110-G129 only where the profile's list
+            // holds G110 (a Haas mill): a FANUC mill's and a lathe's G112/G113 are polar
+            // coordinate interpolation, no work system (review 34: a Haas lathe's preamble
+            // lost its G54 after them)
+            154 if self.settings.family == Family::MacroB => s.zero_shift = None,
+            110..=129
+                if self.settings.family == Family::MacroB
+                    && !self.settings.fanuc_lathe
+                    && !self.settings.lacks_g.is_empty()
+                    && !self.settings.lacks(110) =>
+            {
+                s.zero_shift = None
+            }
             80 => {
                 s.cycle = None;
                 s.cycle_words = [None; 5];

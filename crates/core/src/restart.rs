@@ -268,6 +268,13 @@ pub struct Walk {
     /// in S, T, D or H) is not known to be a speed, feed, tool or position (review 33,
     /// finding 5: `M165 P9811 Z0 S2` was planned as `S2 M03`).
     pub lacks_m: Option<Vec<bool>>,
+    /// The M codes that switch a machine mode the preamble does not restore, set by the
+    /// binding from the profile's meanings (a lathe's live tool drive, `live-tool-cw`/`-ccw`
+    /// on and `live-tool-stop` off; its C axis, `c-axis-engage` and `-disengage`): (code, the
+    /// mode's name, on, the profile's function). Refused while one is on (review 34, finding
+    /// 2: a Haas lathe's `M154` and `M133 P2000` were planned past, the radial drill fed in
+    /// with the live tool stopped).
+    pub m_modes: Vec<(i64, &'static str, bool, String)>,
     /// The line of the program's own last units code (G20/G21, a SINUMERIK's G70/G71/G700/
     /// G710): without one the units are the control's setting, which the preamble must not
     /// choose for it.
@@ -522,6 +529,7 @@ impl Walk {
             units_settings: None,
             decimal_codes: None,
             lacks_m: None,
+            m_modes: Vec::new(),
             units_line: None,
             program_name: None,
             m6_line: 0,
@@ -663,8 +671,9 @@ impl Walk {
     }
 
     /// FANUC's G07.1 (a lathe's G107) with the rotary axis's cylinder radius starts the
-    /// cylindrical interpolation; with the radius 0, or no rotary or R word, it ends it.
-    /// A radius set by a parameter (`C#1`, bits of `param_axes`) counts as given.
+    /// cylindrical interpolation; with the radius 0, or no rotary or R word, it ends it; a
+    /// Haas's G107 with any axis, Q or R word starts it, and with none ends it. A radius set
+    /// by a parameter (`C#1`, bits of `param_axes`) counts as given.
     fn cylindrical(&mut self, line: usize, code: &str, plain_words: &[(u8, &[u8])], params: u16) {
         // (a Haas lathe's G107 gives the radius as R: Haas lathe operator's manual; a FANUC
         // lathe's G07.1 H the radius by C's incremental address in G code system A, the lathe
@@ -687,7 +696,21 @@ impl Walk {
                 self.lose_unknown(axis, line, why);
             }
         }
-        if radius {
+        // A Haas's G107 (mill 96-8000, "G107 Cylindrical Mapping"; the lathe's alike) turns the
+        // mapping on when it names an axis, whatever its value (the values only name the
+        // axes; Q the diameter, R the radius, else the last or the setting's), and off only
+        // with no address: any axis, Q or R word is taken as on (review 34, finding 1:
+        // `G107 Y0 A0 Q2.` was read as the cancel; `G107 A0 R2.`, which only sets the
+        // diameter, is refused so too, the safe side)
+        let on = if self.control == Control::Haas {
+            params != 0
+                || plain_words
+                    .iter()
+                    .any(|&(l, _)| AXES.contains(&l) || matches!(l, b'Q' | b'R'))
+        } else {
+            radius
+        };
+        if on {
             let what = format!("{code} (cylindrical interpolation)");
             self.set_unrestored("7.1", line, what);
         } else {
@@ -1037,14 +1060,31 @@ impl Walk {
                 block: true,
             });
         }
-        // An unlisted M code is read as a macro call only where the block carries a word no
-        // plain M code's block does: a P or Q, or a point in S, T, D or H (none of them a
-        // value those take). A builder's M code beside a plain speed or tool (`S300 M45`,
-        // `T0101 M16`) is the control's own function, as the check reads it (TG307).
+        // An unlisted M code is read as a macro call only where the block carries a word its
+        // block cannot use otherwise: a P or Q (a subprogram call by M code, or the builder's
+        // own data), an I, J, K, R or E where no arc or cycle is in force (argument
+        // specification I or II: review 34, finding 4, `M165 I1. Z-3. S2`), or a point in
+        // S, T, D or H (none of them a value those take). A builder's M code beside a plain
+        // speed or tool (`S300 M45`, `T0101 M16`) is the control's own function, as the
+        // check reads it (TG307).
+        let arcs = matches!(after.motion, Some(2 | 3)) || after.cycle.is_some();
         let arguments = plain_words.iter().any(|&(l, t)| {
             matches!(l, b'P' | b'Q')
+                || (!arcs && matches!(l, b'I' | b'J' | b'K' | b'R' | b'E'))
                 || (matches!(l, b'S' | b'T' | b'D' | b'H') && t.contains(&b'.'))
         });
+        for &m in &ms {
+            let Some((_, mode, on, function)) =
+                self.m_modes.iter().find(|(code, ..)| *code == m).cloned()
+            else {
+                continue;
+            };
+            if on {
+                self.set_unrestored(mode, line, format!("M{m} ({function})"));
+            } else {
+                self.drop_unrestored(mode);
+            }
+        }
         let unlisted_m = self
             .lacks_m
             .as_ref()

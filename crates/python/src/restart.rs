@@ -123,6 +123,19 @@ impl RestartWalk {
             });
             walk.lacks_m = Some(lacks.collect());
         }
+        for (code, key, function) in &m.meanings {
+            let mode = match key.as_str() {
+                "live-tool-cw" | "live-tool-ccw" => Some(("live tool", true)),
+                "live-tool-stop" => Some(("live tool", false)),
+                "c-axis-engage" => Some(("C axis", true)),
+                "c-axis-disengage" => Some(("C axis", false)),
+                _ => None,
+            };
+            let number = code.strip_prefix('M').and_then(|n| n.parse::<i64>().ok());
+            if let (Some((name, on)), Some(n)) = (mode, number) {
+                walk.m_modes.push((n, name, on, function.clone()));
+            }
+        }
         Ok(RestartWalk {
             checker,
             fresh: walk.clone(),
