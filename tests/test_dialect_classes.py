@@ -1251,6 +1251,12 @@ def test_a_haas_parameter_variable_with_a_decimal_part_is_read_as_an_unknown_val
         "6.14.7, gives #30000-#39999 as the parameters" in f.message for f in said)
     # the Z the element sets is unknown, said as any unknown value is
     assert any(f.rule == "TG141" and f.line == 7 for f in said)
+    # a decimal part outside the parameters is not named a parameter element (review 33)
+    other = [f for f in check_text("%\nO1\n#1=#101.5\nM30\n%\n", load_profile(profile))
+             if f.rule == "TG212"]
+    assert len(other) == 1 and other[0].severity == "warning"
+    assert other[0].message.startswith("#101.5: a variable with a decimal part outside the "
+                                       "parameters"), other[0].message
 
 
 def test_an_unknown_parameter_element_fires_no_geometry_rule():

@@ -115,14 +115,31 @@ impl Checker {
             }
             self.elements_noted.insert(element.to_vec());
             let shown = String::from_utf8_lossy(element);
-            let message = format!(
-                "{shown}: a parameter variable with a decimal part, as Renishaw's Inspection \
-                 Plus macros for the Haas NGC read parameters; the Mill Operator's Manual, NGC, \
-                 2017, 6.14.7, gives #30000-#39999 as the parameters, and no Haas source at hand \
-                 says what a decimal part selects (an element of the parameter or one of its \
-                 bits), so its value is unknown: read on, and no rule checks what depends on it \
-                 (docs/dialects.md)"
-            );
+            let parameter = std::str::from_utf8(&text[at + 1..digits])
+                .ok()
+                .and_then(|n| n.parse::<u64>().ok())
+                .is_some_and(|n| (30000..=39999).contains(&n));
+            let message = if parameter {
+                format!(
+                    "{shown}: a parameter variable with a decimal part, as Renishaw's \
+                     Inspection Plus macros for the Haas NGC read parameters; the Mill \
+                     Operator's Manual, NGC, 2017, 6.14.7, gives #30000-#39999 as the \
+                     parameters, and no Haas source at hand says what a decimal part selects \
+                     (an element of the parameter or one of its bits), so its value is \
+                     unknown: read on, and no rule checks what depends on it \
+                     (docs/dialects.md)"
+                )
+            } else {
+                // (review 33, doubtful: any `#N.M` was named a parameter element)
+                format!(
+                    "{shown}: a variable with a decimal part outside the parameters \
+                     (#30000-#39999, whose elements Renishaw's Inspection Plus macros for the \
+                     Haas NGC read); the Mill Operator's Manual, NGC, 2017, 6.14.7, numbers \
+                     variables with whole numbers and no Haas source at hand says what the \
+                     control reads here, so its value is unknown: read on, and no rule checks \
+                     what depends on it (docs/dialects.md)"
+                )
+            };
             let column = crate::text::column(text, at);
             self.report(Rule::ParameterElementRead, message, b.line, column);
         }
