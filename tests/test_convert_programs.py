@@ -381,12 +381,21 @@ def test_a_real_memory_backup_converts_program_by_program(tmp_path, name, option
 @pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")
 def test_a_real_memory_backup_of_builder_m_codes_is_refused_for_a_haas():
     """The grinder's builder M codes (M21, M35, M39: its PLC's) are a Haas mill's own functions
-    (M21 a user M-fin relay, M39 the turret's rotation): converted to haas-mill, the backup
-    stops at the first, naming the Haas's function (it converted `ok` before review 6)."""
+    (M21 a user M-fin relay, M39 the turret's rotation): converted to haas-mill, the backup's
+    `N5M21` (line 217) is refused naming the Haas's function (it converted `ok` before review
+    6). The backup now stops before it, at line 133's `#753=#5121`: #753 is no general
+    purpose variable on a Haas (the NGC's Macro Variables Table keeps #700-#799)."""
     path = SHOPS / "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__ALL-PROG.TXT"
     with pytest.raises(ConversionError) as info:
         convert_file(str(path), None, ConvertOptions(HAAS, FANUC))
-    assert (info.value.code, info.value.line, info.value.column) == ("conversion", 217, 3)
+    assert (info.value.code, info.value.line, info.value.column) == ("conversion-meaning", 133,
+                                                                     4)
+    assert "#753 is a common variable on a FANUC" in info.value.message
+    block = path.read_text("latin-1").splitlines()[216]
+    assert block.strip() == "N5M21"
+    with pytest.raises(ConversionError) as info:
+        convert_text(f"O1\n{block}\nM30\n", ConvertOptions(HAAS, FANUC))
+    assert (info.value.code, info.value.column) == ("conversion", 3)
     assert info.value.message.startswith(
         "M21: the source and target controls give this code different meanings (the machine "
         "builder's M function, handed to its PLC (its profile lists no such code) on the source, "

@@ -1312,9 +1312,13 @@ def test_ctrl_c_while_the_main_thread_checks_ends_the_check_cleanly(tmp_path):
     scratch = tmp_path / "tmp"
     scratch.mkdir()
     exe = Path(sys.executable).with_name("tapegate")
+    # (SIGINT set back to its default in the child: a suite run in the background of a
+    # shell without job control ignores SIGINT, the child inherits that, and Python then
+    # installs no KeyboardInterrupt: the check ran to its end)
     proc = subprocess.Popen([str(exe), "check", *[str(folder)] * 4, "-p", "fanuc-mill",
                              "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            env={**os.environ, "TMPDIR": str(scratch)})
+                            env={**os.environ, "TMPDIR": str(scratch)},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         assert proc.stdout is not None
         proc.stdout.readline()  # findings are coming: the threads run
