@@ -405,6 +405,38 @@ pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Resu
     ))
 }
 
+/// A variable a word names by its `#`: a number (`#5221`; `element`: a decimal part follows,
+/// a Haas NGC parameter element `#30003.078`), or none where a value chooses it (`#[#1]`) or
+/// it has a name (`#<x>`: `named`).
+enum HashVariable {
+    Number { n: u64, element: bool },
+    Chosen { named: bool },
+}
+
+/// The variables of a word's text, in order: one walk of its `#` signs, shared by the
+/// conversions between families and between a FANUC and a Haas.
+fn hash_variables(t: &[u8]) -> impl Iterator<Item = HashVariable> + '_ {
+    let mut at = 0;
+    std::iter::from_fn(move || {
+        let p = t[at..].iter().position(|&c| c == b'#')? + at;
+        at = p + 1;
+        let rest = &t[at..];
+        let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+        if digits == 0 {
+            return Some(HashVariable::Chosen {
+                named: rest.first() == Some(&b'<'),
+            });
+        }
+        let n = std::str::from_utf8(&rest[..digits])
+            .ok()
+            .and_then(|d| d.parse::<u64>().ok())
+            .unwrap_or(u64::MAX);
+        let element =
+            rest.get(digits) == Some(&b'.') && rest.get(digits + 1).is_some_and(u8::is_ascii_digit);
+        Some(HashVariable::Number { n, element })
+    })
+}
+
 /// What a numbered variable is on a Haas, where the NGC's Macro Variables Table (Mill
 /// Operator's Manual, NGC, 2017, 6.14.7; docs/dialects.md, "Variables") gives it a use of its
 /// own; None where it gives it none here (the number is then judged by FANUC's reading alone).
@@ -464,32 +496,25 @@ fn fanuc_haas_variables(from_haas: bool, words: &[Word<'_>]) -> Result<(), Refus
     };
     for w in words.iter().filter(|w| w.token.contains(&b'#')) {
         let t = w.token;
-        let mut at = 0;
-        while let Some(p) = t[at..].iter().position(|&c| c == b'#').map(|p| p + at) {
-            at = p + 1;
-            let rest = &t[at..];
-            let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
-            let fail = |what: String| Err(refuse(w, format!("{}: {what}", text(t)), "meaning"));
-            if digits == 0 {
-                return fail(format!(
-                    "a variable chosen by a value: which one the text does not show, so not \
-                     that a {target} reads it as a {source} does; tapegate carries only the \
-                     variables both controls read alike"
-                ));
-            }
-            let element = rest.get(digits) == Some(&b'.')
-                && rest.get(digits + 1).is_some_and(u8::is_ascii_digit);
-            let n = std::str::from_utf8(&rest[..digits])
-                .ok()
-                .and_then(|d| d.parse::<u64>().ok())
-                .unwrap_or(u64::MAX);
-            if element {
-                return fail(format!(
-                    "#{n} with a decimal part, a Haas NGC parameter element (docs/dialects.md): \
-                     a FANUC numbers a variable with a whole number and does not read it; \
-                     read the target's own data for it"
-                ));
-            }
+        let fail = |what: String| Err(refuse(w, format!("{}: {what}", text(t)), "meaning"));
+        for variable_named in hash_variables(t) {
+            let n = match variable_named {
+                HashVariable::Chosen { .. } => {
+                    return fail(format!(
+                        "a variable chosen by a value: which one the text does not show, so \
+                         not that a {target} reads it as a {source} does; tapegate carries only \
+                         the variables both controls read alike"
+                    ));
+                }
+                HashVariable::Number { n, element: true } => {
+                    return fail(format!(
+                        "#{n} with a decimal part, a Haas NGC parameter element \
+                         (docs/dialects.md): a FANUC numbers a variable with a whole number and \
+                         does not read it; read the target's own data for it"
+                    ));
+                }
+                HashVariable::Number { n, .. } => n,
+            };
             let fanuc = variable(Family::MacroB, n);
             let haas = haas_variable(n);
             let user = fanuc.1
@@ -715,31 +740,27 @@ fn variables(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     }
     for w in k.words.iter().filter(|w| w.token.contains(&b'#')) {
         let t = w.token;
-        let mut at = 0;
-        while let Some(p) = t[at..].iter().position(|&c| c == b'#').map(|p| p + at) {
-            at = p + 1;
-            let rest = &t[at..];
-            let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
-            if digits == 0 {
-                let what = match rest.first() {
-                    Some(b'<') => "a named parameter, which only a LinuxCNC control reads",
-                    _ => "a variable chosen by a value: which one the text does not show",
-                };
-                return Err(refuse(
-                    w,
-                    format!(
-                        "{}: {what}, so not that it means the same on {} control; tapegate \
-                         carries only variables both families leave to the program",
-                        text(t),
-                        article(k.name, to)
-                    ),
-                    "meaning",
-                ));
-            }
-            let n = std::str::from_utf8(&rest[..digits])
-                .ok()
-                .and_then(|d| d.parse::<u64>().ok())
-                .unwrap_or(u64::MAX);
+        for variable_named in hash_variables(t) {
+            let n = match variable_named {
+                HashVariable::Chosen { named } => {
+                    let what = if named {
+                        "a named parameter, which only a LinuxCNC control reads"
+                    } else {
+                        "a variable chosen by a value: which one the text does not show"
+                    };
+                    return Err(refuse(
+                        w,
+                        format!(
+                            "{}: {what}, so not that it means the same on {} control; tapegate \
+                             carries only variables both families leave to the program",
+                            text(t),
+                            article(k.name, to)
+                        ),
+                        "meaning",
+                    ));
+                }
+                HashVariable::Number { n, .. } => n,
+            };
             let (a, user_a) = variable(from, n);
             let (b, user_b) = variable(to, n);
             if user_a && user_b {
