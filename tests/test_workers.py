@@ -626,22 +626,28 @@ def _threads(pid: int) -> int:
     return len(list(Path(f"/proc/{pid}/task").iterdir()))
 
 
+def _long_check(tmp_path: Path) -> tuple[Path, Path, Path]:
+    """A folder of 400 copies of a short program, each repeated 400 times, some seconds of a
+    `check -j 2` given it four times (800 files of 20 copies were checked in 0.12 s, and
+    under the suite's load the whole check could end before a signal reached it); an empty
+    TMPDIR for the check; the `tapegate` command."""
+    program = (Path(__file__).resolve().parents[1] / "tapegate" / "examples" / "bracket.nc")
+    folder = tmp_path / "cam"
+    folder.mkdir()
+    body = program.read_text()
+    for i in range(400):
+        (folder / f"p{i}.nc").write_text(body * 400)
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    return folder, scratch, Path(sys.executable).with_name("tapegate")
+
+
 @pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="needs /proc")
 def test_sigterm_stops_the_threads_and_leaves_nothing_behind(tmp_path):
     """A CI job's timeout sends SIGTERM: `check -j 2` exits 143 at once (a thread sending
     findings stops, one in the core at its chunk's end), starts no process, and leaves no
     temporary file."""
-    program = (Path(__file__).resolve().parents[1] / "tapegate" / "examples" / "bracket.nc")
-    folder = tmp_path / "cam"
-    folder.mkdir()
-    body = program.read_text()
-    # (some seconds of work: 800 files of 20 copies were checked in 0.12 s, and under the
-    # suite's load the whole check could end before the signal reached it)
-    for i in range(400):
-        (folder / f"p{i}.nc").write_text(body * 400)
-    scratch = tmp_path / "tmp"
-    scratch.mkdir()
-    exe = Path(sys.executable).with_name("tapegate")
+    folder, scratch, exe = _long_check(tmp_path)
     proc = subprocess.Popen([str(exe), "check", *[str(folder)] * 4, "-p", "fanuc-mill",
                              "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env={**os.environ, "TMPDIR": str(scratch)})
@@ -1301,17 +1307,7 @@ def test_ctrl_c_while_the_main_thread_checks_ends_the_check_cleanly(tmp_path):
     traceback or a temporary file left."""
     import signal
 
-    program = (Path(__file__).resolve().parents[1] / "tapegate" / "examples" / "bracket.nc")
-    folder = tmp_path / "cam"
-    folder.mkdir()
-    body = program.read_text()
-    # (some seconds of work: 800 files of 20 copies were checked in 0.12 s, and under the
-    # suite's load the whole check could end before the signal reached it)
-    for i in range(400):
-        (folder / f"p{i}.nc").write_text(body * 400)
-    scratch = tmp_path / "tmp"
-    scratch.mkdir()
-    exe = Path(sys.executable).with_name("tapegate")
+    folder, scratch, exe = _long_check(tmp_path)
     # (SIGINT set back to its default in the child: a suite run in the background of a
     # shell without job control ignores SIGINT, the child inherits that, and Python then
     # installs no KeyboardInterrupt: the check ran to its end)
