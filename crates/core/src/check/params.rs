@@ -70,6 +70,8 @@ impl Checker {
     /// (`Syntax::parameter_elements`) and no constant gives its value ([`Checker::constant`]
     /// reads whole-numbered variables only), so what depends on it is unknown (TG141), as
     /// for a system variable the checker cannot read.
+    /// (The test of a plain line inline where it is asked, the search out of line.)
+    #[inline]
     pub(super) fn parameter_elements(&mut self, b: &BlockView<'_>) {
         let text = b.text;
         // a line of plain words without a bracketed word (nearly every line of a CAM
@@ -82,6 +84,13 @@ impl Checker {
             debug_assert!(memchr::memchr(b'#', text).is_none(), "a plain line's `#`");
             return;
         }
+        self.parameter_elements_found(b);
+    }
+
+    /// [`Checker::parameter_elements`] of a line that may hold one.
+    #[inline(never)]
+    fn parameter_elements_found(&mut self, b: &BlockView<'_>) {
+        let text = b.text;
         // (most blocks hold no `#`: one search of the line, not a walk of its comments)
         let Some(first) = memchr::memchr(b'#', text) else {
             return;
