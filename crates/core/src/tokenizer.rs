@@ -1069,11 +1069,24 @@ struct WordsOut<'w, 'a, F: Fn(usize) -> usize, const CRS: bool> {
     at: F,
     ascii: bool,
     crs: usize,
+    letters: u32,
+    motion_codes_only: bool,
 }
 
 impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, 'a, F, CRS> {
     #[inline(always)]
     fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits) {
+        // (a plain word's address is a letter: `PLAIN_START`)
+        let letter = line[pos].to_ascii_uppercase();
+        self.letters |= 1 << (letter - b'A');
+        if letter == b'G' {
+            // G0-G3, G00-G03, G000-G003: no sign, no point, at most three digits
+            let length = end - pos - 1 - usize::from(signed);
+            self.motion_codes_only &= !signed
+                && length <= 3
+                && digits.dot as usize == length
+                && digits.value.is_some_and(|v| v <= 3);
+        }
         self.words
             .push(Word::plain(&line[pos..end], signed, digits, (self.at)(pos)));
     }
@@ -1089,6 +1102,9 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         } else {
             self.walks.all = false;
         }
+        let letter = line[pos].to_ascii_uppercase();
+        self.letters |= 1 << (letter - b'A');
+        self.motion_codes_only &= letter != b'G';
         self.words
             .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
     }
@@ -1121,6 +1137,12 @@ pub struct PlainLine {
     /// The line's CRs (a CR is a blank: one of the blanks between its words, or the last
     /// byte of a CRLF file's line), where they were asked for; else None.
     pub crs: Option<usize>,
+    /// The letters of the line's words, bit `letter - 'A'` each (a lower case address as its
+    /// capital): the check's `Checker::letters` of the block, found as the words are written.
+    pub letters: u32,
+    /// Every G word of the line is G0-G3 written plainly (`G1`, `G01`, `G001`: no sign, point,
+    /// index or expression), as the check's `motion_codes_only` reads a block's codes.
+    pub motion_codes_only: bool,
 }
 
 /// The words of a `line` made of plain words alone ([`plain_word`]: nearly every line of a
@@ -1169,6 +1191,8 @@ fn plain_line_words_as<'a, const CRS: bool>(
         at,
         ascii: true,
         crs: 0,
+        letters: 0,
+        motion_codes_only: true,
     };
     let pos = out.skip_blanks(line, 0);
     if matches!(line.get(pos), Some(&(SUB | b'%' | b'/'))) || line.starts_with(BOM) {
@@ -1177,6 +1201,8 @@ fn plain_line_words_as<'a, const CRS: bool>(
     (plain_words(line, pos, pos, dialect, &mut out) >= line.len()).then_some(PlainLine {
         ascii: out.ascii,
         crs: CRS.then_some(out.crs),
+        letters: out.letters,
+        motion_codes_only: out.motion_codes_only,
     })
 }
 
@@ -1753,11 +1779,27 @@ mod tests {
                     String::from_utf8_lossy(line)
                 );
                 let counted = line.iter().filter(|&&c| c == b'\r').count();
+                // the letters and the plain motion codes of the words written (the first
+                // word was there before)
+                let letters = words[1..]
+                    .iter()
+                    .fold(0, |l, w| l | crate::modal::bit(w.letter));
+                let motion_codes_only = words[1..].iter().all(|w| {
+                    w.letter != b'G'
+                        || matches!(
+                            w.number,
+                            [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+                        ) && w.sign.is_empty()
+                            && w.expression.is_empty()
+                            && w.index.is_empty()
+                });
                 assert_eq!(
                     found,
                     PlainLine {
                         ascii: line.is_ascii(),
-                        crs: crs.then_some(counted)
+                        crs: crs.then_some(counted),
+                        letters,
+                        motion_codes_only,
                     },
                     "{:?} {dialect:?}",
                     String::from_utf8_lossy(line)

@@ -1437,6 +1437,17 @@ impl Checker {
         let Some((low, high)) = self.travel.of(axis) else {
             return;
         };
+        // a position strictly inside the span so far, nothing said of the machine position:
+        // the span stays as it is, and so does its test below, made (and said, if it failed)
+        // when the span last grew (the travel is the profile's); most of a CAM program's
+        // moves. (A position at a bound takes the walk below: 0.0 and -0.0 are equal, and
+        // which of them `min` keeps is not the comparison's.)
+        if let Some(span) = &self.spans[i] {
+            if !said_outside && span.least < at && at < span.most {
+                debug_assert!(span.said || span.most - span.least <= (high - low) + 1e-9);
+                return;
+            }
+        }
         let span = self.spans[i].get_or_insert(Span {
             least: at,
             most: at,

@@ -31,13 +31,22 @@ impl Checker {
     /// The TV check: count the blocks of an odd number of characters (CR not counted).
     #[inline]
     pub(super) fn tv(&mut self, b: &BlockView<'_>) {
-        // (the profile's test inlined where it is asked, once a block; the count out of line)
+        // (the profile's test inlined where it is asked, once a block; a count out of line)
         if self.config.tv_check {
-            self.tv_count(b);
+            match b.crs {
+                // (an ASCII line whose CRs its reader counted, a line of plain words: its
+                // length inline, no call)
+                Some(crs) if b.ascii => {
+                    debug_assert_eq!(crs, carriage_returns(b.text), "line {}: its CRs", b.line);
+                    self.tv_length(b.line, b.text.len() - crs);
+                }
+                _ => self.tv_count(b),
+            }
         }
     }
 
-    /// [`Checker::tv`] under a profile with the TV check.
+    /// [`Checker::tv`] under a profile with the TV check, of a line whose length is counted
+    /// here.
     #[inline(never)]
     fn tv_count(&mut self, b: &BlockView<'_>) {
         let characters = if b.ascii {
@@ -48,12 +57,17 @@ impl Checker {
         // (counted by the line's reader where it read a line of plain words)
         let crs = b.crs.unwrap_or_else(|| carriage_returns(b.text));
         debug_assert_eq!(crs, carriage_returns(b.text), "line {}: its CRs", b.line);
-        let length = characters - crs;
+        self.tv_length(b.line, characters - crs);
+    }
+
+    /// The TV check of a block of `length` characters (its CRs left out) on `line`.
+    #[inline(always)]
+    fn tv_length(&mut self, line: usize, length: usize) {
         if length % 2 == 1 {
             if self.tv_odd.count == 0 {
                 self.tv_odd = OddBlocks {
                     count: 0,
-                    line: b.line,
+                    line,
                     length,
                 };
             }

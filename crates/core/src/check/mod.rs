@@ -882,6 +882,9 @@ pub struct Checker {
     /// another text, or one given by other means, walks its words itself.
     line_walks: crate::tokenizer::LineWalks,
     line_walks_of: (usize, usize),
+    /// The letters and whether the codes are G00-G03 alone of the line of plain words
+    /// `line_walks_of` names, found by its reader ([`letters_and_motion`] of its words).
+    line_letters: (u32, bool),
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
     /// inside one runs depends on values the checker does not follow, so what rs274 refuses
@@ -1050,6 +1053,7 @@ impl Checker {
             linuxcnc_plain_words: (0, 0),
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
+            line_letters: (0, false),
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
@@ -1176,6 +1180,7 @@ impl Checker {
         let walks = &mut self.line_walks;
         if let Some(plain) = plain_line_words(text, dialect, &mut words, walks, |o| o + 1, tv) {
             self.line_walks_of = (text.as_ptr() as usize, text.len());
+            self.line_letters = (plain.letters, plain.motion_codes_only);
             let ascii = plain.ascii;
             if !ascii {
                 for w in &mut words {
@@ -1336,8 +1341,20 @@ impl Checker {
 
     fn read_block(&mut self, b: &BlockView<'_>) {
         // (the letters first: every rule after may ask them, not walk the words)
+        // (a line of plain words has them from its reader: no walk of its words)
         let motion_words;
-        (self.letters, motion_words) = letters_and_motion(b.words);
+        (self.letters, motion_words) =
+            if self.line_walks_of == (b.text.as_ptr() as usize, b.text.len()) {
+                debug_assert_eq!(
+                    self.line_letters,
+                    letters_and_motion(b.words),
+                    "line {}: a plain line's letters",
+                    b.line
+                );
+                self.line_letters
+            } else {
+                letters_and_motion(b.words)
+            };
         self.reading_end.read(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
