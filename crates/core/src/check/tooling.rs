@@ -727,6 +727,17 @@ impl Checker {
         facts: &Facts<'_>,
         start: &Before,
     ) -> bool {
+        // a plain move found by a slim walk of the words: the full path's verdict without its
+        // word loop (a debug build takes the full path and holds the two equal)
+        let fast = self.linuxcnc_plain_move(b, facts);
+        if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
+            let codes = given.as_slice();
+            self.linuxcnc_feed_word(f_at, codes, facts);
+            if let Some(code) = given {
+                self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
+            }
+            return false;
+        }
         // (the axes whose point was not known exactly before the block, before its own codes)
         let unsure = self.linuxcnc_point_unsure;
         // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
@@ -817,35 +828,8 @@ impl Checker {
             self.linuxcnc_mode_unsure = true;
             self.linuxcnc_definition_mode_unsure = true;
         }
-        if first[usize::from(b'F' - b'A')] != 0 && self.linuxcnc_feed_mode_unsure() {
-            // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
-            // does not know (review 19)
-            self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
-        } else if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
-            let at = first[usize::from(b'F' - b'A')] as usize - 1;
-            self.linuxcnc_feed_rate = match self.readable[at] {
-                Some(f) if f.is_zero() => LinuxCncFeed::Zero,
-                Some(_) => LinuxCncFeed::Set,
-                None => LinuxCncFeed::Unknown,
-            };
-        } else if first[usize::from(b'F' - b'A')] != 0 {
-            // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
-            // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
-            // runs `G95` / `G93 G1 X1 F2` / `G38.2 X1 Y0`)
-            let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c)).or(
-                match self.linuxcnc_motion {
-                    LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
-                    _ => None,
-                },
-            );
-            if matches!(motion, Some(10 | 20 | 30)) {
-                let at = first[usize::from(b'F' - b'A')] as usize - 1;
-                self.linuxcnc_feed_rate = match self.readable[at] {
-                    Some(f) if !f.is_zero() => LinuxCncFeed::Set,
-                    _ => LinuxCncFeed::Unknown,
-                };
-            }
-        }
+        let f_at = first[usize::from(b'F' - b'A')] as usize;
+        self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts);
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
         }
@@ -924,12 +908,18 @@ impl Checker {
                         b.line
                     );
                 }
+                debug_assert!(
+                    fast.is_none() || fast == Some((given, f_at.checked_sub(1))),
+                    "line {}: the plain move's slim walk",
+                    b.line
+                );
                 if let Some(code) = given {
                     self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
                 }
                 return unsettles;
             }
         }
+        debug_assert!(fast.is_none(), "line {}: no plain move", b.line);
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
@@ -1069,6 +1059,100 @@ impl Checker {
             }
         }
         unsettles
+    }
+
+    /// A plain move of [`Checker::linuxcnc_refusals`] found without its word loop: no M, D, E,
+    /// H, L, P, Q or T word (the block's letter mask), no `$` word, every G word read as G0,
+    /// G1, G2 or G3 (scale 0; at most 16 of them, as the full path holds), no word whose
+    /// expression the checker could not read holds a `/` (no read-refusal), and the motion it
+    /// runs plain, I J K R only in an arc. Then nothing refuses the block, it leaves the point
+    /// settled, and only its F word and motion code change the state: its motion code in
+    /// tenths (the first G word's) and the place of its first F word. None: the full path
+    /// decides.
+    #[inline]
+    fn linuxcnc_plain_move(
+        &self,
+        b: &BlockView<'_>,
+        facts: &Facts<'_>,
+    ) -> Option<(Option<i64>, Option<usize>)> {
+        const NOT_PLAIN: u32 = bit(b'M')
+            | bit(b'D')
+            | bit(b'E')
+            | bit(b'H')
+            | bit(b'L')
+            | bit(b'P')
+            | bit(b'Q')
+            | bit(b'T');
+        if self.letters & NOT_PLAIN != 0 {
+            return None;
+        }
+        let mut given = None;
+        let mut f_at = None;
+        let mut gs = 0;
+        for (i, w) in b.words.iter().enumerate() {
+            match w.letter {
+                b'G' => match self.readable[i] {
+                    Some(v) if v.scale == 0 && { v.mantissa } as u128 <= 3 && gs < 16 => {
+                        gs += 1;
+                        given.get_or_insert(v.mantissa as i64 * 10);
+                    }
+                    _ => return None,
+                },
+                b'$' => return None,
+                b'F' if f_at.is_none() => f_at = Some(i),
+                _ => {}
+            }
+            if !w.expression.is_empty()
+                && self.readable[i].is_none()
+                && self.linuxcnc_has_slash(i, w.expression)
+            {
+                return None;
+            }
+        }
+        let runs = given.or(match self.linuxcnc_motion {
+            LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+            _ => None,
+        });
+        let arcs = bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R');
+        let arc_words_used = matches!(runs, Some(20 | 30)) || self.letters & arcs == 0;
+        (runs.is_none_or(|m| matches!(m, 0 | 10 | 20 | 30)) && arc_words_used)
+            .then_some((given, f_at))
+    }
+
+    /// rs274's feed rate after the block's first F word (`at`, its place; None for a block
+    /// without one), its G codes in tenths `codes`.
+    #[inline]
+    fn linuxcnc_feed_word(&mut self, at: Option<usize>, codes: &[i64], facts: &Facts<'_>) {
+        let Some(at) = at else {
+            return;
+        };
+        if self.linuxcnc_feed_mode_unsure() {
+            // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
+            // does not know (review 19)
+            self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
+        } else if self.machine.state.feed_mode != 93 {
+            self.linuxcnc_feed_rate = match self.readable[at] {
+                Some(f) if f.is_zero() => LinuxCncFeed::Zero,
+                Some(_) => LinuxCncFeed::Set,
+                None => LinuxCncFeed::Unknown,
+            };
+        } else {
+            // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
+            // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
+            // runs `G95` / `G93 G1 X1 F2` / `G38.2 X1 Y0`)
+            let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c)).or(
+                match self.linuxcnc_motion {
+                    LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+                    _ => None,
+                },
+            );
+            if matches!(motion, Some(10 | 20 | 30)) {
+                self.linuxcnc_feed_rate = match self.readable[at] {
+                    Some(f) if !f.is_zero() => LinuxCncFeed::Set,
+                    _ => LinuxCncFeed::Unknown,
+                };
+            }
+        }
     }
 
     /// An M98 with a word before it, or a word other than P and L after it
