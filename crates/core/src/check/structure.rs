@@ -442,6 +442,9 @@ impl Checker {
         // `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]`): its walks read where they are, no
         // operation outside a bracket to look for, and its names asked of the names seen
         let whole = expressions && self.linuxcnc_line_walked(b);
+        if !expressions || whole {
+            self.linuxcnc_no_slash = self.stats.blocks;
+        }
         let walked = (expressions && !whole).then(|| {
             let walked = self.linuxcnc_walk_words(b);
             self.linuxcnc_bare_operator(b, &walked);

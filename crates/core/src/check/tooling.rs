@@ -721,14 +721,15 @@ impl Checker {
     /// G92 take them as data, a home's intermediate point or machine coordinates, G43.1 as
     /// offsets): the caller does not take them as known then. A G0-G3 move in the block of a
     /// G55 or a G43 ends where it says.
+    #[inline]
     pub(super) fn linuxcnc_refusals(
         &mut self,
         b: &BlockView<'_>,
         facts: &Facts<'_>,
         start: &Before,
     ) -> bool {
-        // a plain move found by a slim walk of the words: the full path's verdict without its
-        // word loop (a debug build takes the full path and holds the two equal)
+        // a plain move found from the block's letters and codes: the full path's verdict
+        // without its word loop (a debug build takes the full path and holds the two equal)
         let fast = self.linuxcnc_plain_move(b, facts);
         if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
             let codes = given.as_slice();
@@ -738,6 +739,19 @@ impl Checker {
             }
             return false;
         }
+        self.linuxcnc_refusals_read(b, facts, start, fast)
+    }
+
+    /// [`Checker::linuxcnc_refusals`] of any block, its words read one by one (`fast`: the
+    /// plain move's verdict, which a debug build holds to this one's).
+    #[inline(never)]
+    fn linuxcnc_refusals_read(
+        &mut self,
+        b: &BlockView<'_>,
+        facts: &Facts<'_>,
+        start: &Before,
+        fast: Option<(Option<i64>, Option<usize>)>,
+    ) -> bool {
         // (the axes whose point was not known exactly before the block, before its own codes)
         let unsure = self.linuxcnc_point_unsure;
         // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
@@ -1061,14 +1075,15 @@ impl Checker {
         unsettles
     }
 
-    /// A plain move of [`Checker::linuxcnc_refusals`] found without its word loop: no M, D, E,
-    /// H, L, P, Q or T word (the block's letter mask), no `$` word, every G word read as G0,
-    /// G1, G2 or G3 (scale 0; at most 16 of them, as the full path holds), no word whose
-    /// expression the checker could not read holds a `/` (no read-refusal), and the motion it
-    /// runs plain, I J K R only in an arc. Then nothing refuses the block, it leaves the point
-    /// settled, and only its F word and motion code change the state: its motion code in
-    /// tenths (the first G word's) and the place of its first F word. None: the full path
-    /// decides.
+    /// A plain move of [`Checker::linuxcnc_refusals`] found without its word loop, from the
+    /// block's letter mask (`Checker::letters`) and values: no M, D, E, H, L, P, Q or T word,
+    /// no `$` (nor `@`, `^`) word; its G words' key made (`Checker::code_key`: each read as a
+    /// whole number, at most five) and each of G0-G3, or no G word; no expression, or each
+    /// walked plain by the tokenizer (`Checker::linuxcnc_no_slash`: no `/`, no read-refusal);
+    /// and the motion it runs plain, I J K R only in an arc. Then nothing refuses the block,
+    /// it leaves the point settled, and only its F word and motion code change the state: its
+    /// motion code in tenths (its first G code's) and the place of its first F word. None:
+    /// the full path decides.
     #[inline]
     fn linuxcnc_plain_move(
         &self,
@@ -1082,39 +1097,35 @@ impl Checker {
             | bit(b'L')
             | bit(b'P')
             | bit(b'Q')
-            | bit(b'T');
-        if self.letters & NOT_PLAIN != 0 {
+            | bit(b'T')
+            | super::SELECTOR;
+        let letters = self.letters;
+        if letters & NOT_PLAIN != 0 || self.linuxcnc_no_slash != self.stats.blocks {
             return None;
         }
-        let mut given = None;
-        let mut f_at = None;
-        let mut gs = 0;
-        for (i, w) in b.words.iter().enumerate() {
-            match w.letter {
-                b'G' => match self.readable[i] {
-                    Some(v) if v.scale == 0 && { v.mantissa } as u128 <= 3 && gs < 16 => {
-                        gs += 1;
-                        given.get_or_insert(v.mantissa as i64 * 10);
-                    }
-                    _ => return None,
-                },
-                b'$' => return None,
-                b'F' if f_at.is_none() => f_at = Some(i),
-                _ => {}
-            }
-            if !w.expression.is_empty()
-                && self.readable[i].is_none()
-                && self.linuxcnc_has_slash(i, w.expression)
-            {
+        let given = if letters & bit(b'G') == 0 {
+            None
+        } else {
+            // (a key, so every G word read whole, none after the fifth code; the block's
+            // G codes are `values.gs()`, in order)
+            self.code_key?;
+            let gs = self.values.gs();
+            if !gs.iter().all(|&g| (0..=3).contains(&g)) {
                 return None;
             }
-        }
+            Some(gs.first()? * 10)
+        };
+        let f_at = if letters & bit(b'F') == 0 {
+            None
+        } else {
+            b.words.iter().position(|w| w.letter == b'F')
+        };
         let runs = given.or(match self.linuxcnc_motion {
             LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
             _ => None,
         });
         let arcs = bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R');
-        let arc_words_used = matches!(runs, Some(20 | 30)) || self.letters & arcs == 0;
+        let arc_words_used = matches!(runs, Some(20 | 30)) || letters & arcs == 0;
         (runs.is_none_or(|m| matches!(m, 0 | 10 | 20 | 30)) && arc_words_used)
             .then_some((given, f_at))
     }
