@@ -732,8 +732,9 @@ impl Checker {
         // without its word loop (a debug build takes the full path and holds the two equal)
         let fast = self.linuxcnc_plain_move(b, facts);
         if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
-            let codes = given.as_slice();
-            self.linuxcnc_feed_word(f_at, codes, facts);
+            if f_at.is_some() {
+                self.linuxcnc_feed_word(f_at, given.as_slice(), facts);
+            }
             if let Some(code) = given {
                 self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
             }
