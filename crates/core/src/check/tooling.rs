@@ -731,6 +731,10 @@ impl Checker {
         // a plain move found from the block's letters and codes: the full path's verdict
         // without its word loop (a debug build takes the full path and holds the two equal)
         let fast = self.linuxcnc_plain_move(b, facts);
+        #[cfg(test)]
+        if tests::FULL_ONLY.with(std::cell::Cell::get) {
+            return self.linuxcnc_refusals_read(b, facts, start, None);
+        }
         if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
             if f_at.is_some() {
                 self.linuxcnc_feed_word(f_at, given.as_slice(), facts);
@@ -2241,6 +2245,126 @@ mod tests {
     use super::super::Config;
     use crate::lex::Family;
     use crate::rules::Rule;
+
+    thread_local! {
+        /// Set by a test: `linuxcnc_refusals` reads every block word by word, its plain
+        /// move's test not asked.
+        pub(super) static FULL_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    }
+
+    /// Drawn LinuxCNC programs of moves and of blocks near them (G0-G3 written many ways,
+    /// G1.0, G93-G95 and F words, M and `$` words, polar words, I J K R in and out of arcs,
+    /// D E H L P Q T words, G91, G4, G38.2, expressions with and without a `/`, o-word
+    /// conditions, comments): the findings with the plain move's test
+    /// (`Checker::linuxcnc_plain_move`) and with every block read word by word, the same. (A
+    /// debug build also holds the test's verdict to the full path's on every block.)
+    #[test]
+    fn linuxcnc_a_plain_move_s_test_finds_what_the_full_reading_finds() {
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let pieces = [
+            "G0",
+            "G1",
+            "G01",
+            "G001",
+            "G2",
+            "G3",
+            "G03",
+            "G1.0",
+            "G0.",
+            "G-1",
+            "G4",
+            "G38.2",
+            "G91",
+            "G90",
+            "G93",
+            "G94",
+            "G95",
+            "G17",
+            "G20",
+            "G21",
+            "G41",
+            "G40",
+            "G81",
+            "G80",
+            "X1",
+            "X-2.5",
+            "Y3",
+            "Y0",
+            "Z-1",
+            "Z0.25",
+            "X[#1/2]",
+            "Y[#1+1]",
+            "Z[#<a>*2]",
+            "X#1",
+            "X[1/0]",
+            "Y[#1/[#2-3]]",
+            "F0",
+            "F100",
+            "F[#1]",
+            "F#2",
+            "S1000",
+            "M3",
+            "M5",
+            "M6",
+            "M2.5",
+            "$1",
+            "@5",
+            "^30",
+            "I1",
+            "J-1",
+            "K1",
+            "R2",
+            "D1",
+            "E1",
+            "H1",
+            "L2",
+            "P1",
+            "Q1",
+            "T1",
+            "A1",
+            "B2",
+        ];
+        let mut lines = 0;
+        for _ in 0..400 {
+            let mut text = String::from("G21 G90 G94 G17\n#1 = 2\n#<a> = 1\nG0 X0 Y0 Z0\n");
+            for _ in 0..(next() % 30 + 5) {
+                let line = match next() % 12 {
+                    0 => ["(c)", "o1 if [#1 GT 1]", "o1 endif", "#2 = 3"][(next() % 4) as usize]
+                        .to_string(),
+                    _ => {
+                        let mut line = String::new();
+                        for _ in 0..(next() % 4 + 1) {
+                            // (moves mostly: the plain words most blocks are made of)
+                            let piece = if next().is_multiple_of(3) {
+                                pieces[(next() % pieces.len() as u64) as usize]
+                            } else {
+                                ["G1", "X1.5", "Y-2", "Z0.5", "G2", "G0", "I1", "F50"]
+                                    [(next() % 8) as usize]
+                            };
+                            line.push_str(piece);
+                            line.push(' ');
+                        }
+                        lines += 1;
+                        line
+                    }
+                };
+                text.push_str(&line);
+                text.push('\n');
+            }
+            text.push_str("M2\n");
+            let said = |full: bool| -> Vec<(Rule, usize, usize, String)> {
+                FULL_ONLY.with(|c| c.set(full));
+                let found = super::super::testing::check(of_family(Family::LinuxCnc), &text)
+                    .into_iter()
+                    .map(|f| (f.rule, f.line, f.column, f.message))
+                    .collect();
+                FULL_ONLY.with(|c| c.set(false));
+                found
+            };
+            assert_eq!(said(false), said(true), "{text}");
+        }
+        assert!(lines > 5_000, "{lines} lines");
+    }
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
