@@ -1070,7 +1070,7 @@ impl Checker {
     /// until the next program): then no word reads a name not defined, and
     /// `linuxcnc_named_reads` has nothing to say (a debug build reads them in full and
     /// asserts it). False where one is not: the full reading decides.
-    #[inline]
+    #[inline(always)]
     fn linuxcnc_names_all_seen(&mut self, b: &BlockView<'_>) -> bool {
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;
