@@ -721,7 +721,7 @@ impl Checker {
     /// G92 take them as data, a home's intermediate point or machine coordinates, G43.1 as
     /// offsets): the caller does not take them as known then. A G0-G3 move in the block of a
     /// G55 or a G43 ends where it says.
-    #[inline]
+    #[inline(always)]
     pub(super) fn linuxcnc_refusals(
         &mut self,
         b: &BlockView<'_>,
@@ -1089,7 +1089,7 @@ impl Checker {
     /// it leaves the point settled, and only its F word and motion code change the state: its
     /// motion code in tenths (its first G code's) and the place of its first F word. None:
     /// the full path decides.
-    #[inline]
+    #[inline(always)]
     fn linuxcnc_plain_move(
         &self,
         b: &BlockView<'_>,
