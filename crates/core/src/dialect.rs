@@ -720,7 +720,11 @@ impl ReadingEnd {
     /// inlined where it is asked, once a line; the reading out of line.)
     #[inline]
     pub fn skips(&mut self, line: usize, text: &[u8]) -> bool {
-        self.family == Family::LinuxCnc && self.linuxcnc_skips(line, text)
+        // (a file not opened by `%`, neither closed nor ended: every line is read, as in
+        // most of a program)
+        self.family == Family::LinuxCnc
+            && !(self.percent_file == Some(false) && self.closed.is_none() && self.ended.is_none())
+            && self.linuxcnc_skips(line, text)
     }
 
     /// [`ReadingEnd::skips`] on LinuxCNC.

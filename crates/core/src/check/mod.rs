@@ -396,13 +396,16 @@ fn is_dimension(letter: u8) -> bool {
 }
 
 /// The letters A-Z of `words`, a bit each ([`bit`]); `:` and the other addresses have none,
-/// a `#` word sets [`PARAMETER`] and a word with an index (`#1=`, `R1=`, `M2=3`) [`INDEXED`].
+/// a `#` word sets [`PARAMETER`], a `$`, `@` or `^` word [`SELECTOR`] and a word with an index
+/// (`#1=`, `R1=`, `M2=3`) [`INDEXED`].
 fn letters_of(words: &[Word<'_>]) -> u32 {
     words.iter().fold(0, |letters, w| {
         let letter = if w.letter.is_ascii_uppercase() {
             bit(w.letter)
         } else if w.letter == b'#' {
             PARAMETER
+        } else if matches!(w.letter, b'$' | b'@' | b'^') {
+            SELECTOR
         } else {
             0
         };
@@ -412,7 +415,7 @@ fn letters_of(words: &[Word<'_>]) -> u32 {
 }
 
 /// What [`letters_of`] gives a word by its letter: its bit for A-Z, [`PARAMETER`] for `#`,
-/// nothing for any other byte (one look a word, where the tests were about ten instructions).
+/// [`SELECTOR`] for `$`, `@` and `^`, nothing for any other byte (one look a word, where the tests were about ten instructions).
 const LETTER_BITS: [u32; 256] = {
     let mut table = [0u32; 256];
     let mut c = b'A';
@@ -421,6 +424,9 @@ const LETTER_BITS: [u32; 256] = {
         c += 1;
     }
     table[b'#' as usize] = PARAMETER;
+    table[b'$' as usize] = SELECTOR;
+    table[b'@' as usize] = SELECTOR;
+    table[b'^' as usize] = SELECTOR;
     table
 };
 
@@ -448,6 +454,9 @@ fn letters_and_motion(words: &[Word<'_>]) -> (u32, bool) {
 const PARAMETER: u32 = 1 << 26;
 /// [`Checker::letters`]: the block has a word with an index (`#1=5`, `R1=5`, `M2=3`).
 const INDEXED: u32 = 1 << 27;
+/// [`Checker::letters`]: the block has a `$`, `@` or `^` word (LinuxCNC's spindle selector,
+/// a polar distance or angle: `tokenizer`'s words of LinuxCNC and SINUMERIK).
+const SELECTOR: u32 = 1 << 28;
 
 /// The column of the byte at an offset of `text`: in an ASCII line, as nearly every one is,
 /// the offset and one.
@@ -876,6 +885,10 @@ pub struct Checker {
     /// plain bracketed expression (which holds no `/`), and the block's count
     /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
     linuxcnc_plain_words: (usize, u8),
+    /// LinuxCNC: the count (`stats.blocks`) of the block in hand where no word has an
+    /// expression, or the tokenizer walked each plain (`Checker::linuxcnc_line_walked`): no
+    /// `/` in any, for the plain move's test (`Checker::linuxcnc_plain_move`); 0 before.
+    linuxcnc_no_slash: usize,
     /// The walks the tokenizer made of the last line of plain words' bracketed words
     /// (`tokenizer::LineWalks`), for the LinuxCNC rules of its block, and that line's text
     /// (its address and length), set while that block is checked (else (0, 0)): a block of
@@ -1051,6 +1064,7 @@ impl Checker {
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_short_seen: [0; 8],
             linuxcnc_plain_words: (0, 0),
+            linuxcnc_no_slash: 0,
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),
@@ -2157,7 +2171,9 @@ fn round6(x: f64) -> String {
 
 #[cfg(test)]
 mod before_tests {
-    use super::{bit, letters_of, Before, Dec, ModalState, Units, Word, AXES, INDEXED, PARAMETER};
+    use super::{
+        bit, letters_of, Before, Dec, ModalState, Units, Word, AXES, INDEXED, PARAMETER, SELECTOR,
+    };
 
     /// The letters mask: a bit for each letter written, one for a `#` word and one for a word
     /// with an index, whatever its letter.
@@ -2176,6 +2192,8 @@ mod before_tests {
         assert_eq!(of("M2=3"), bit(b'M') | INDEXED);
         assert_eq!(of("X#1"), bit(b'X'));
         assert_eq!(of("M30"), bit(b'M'));
+        assert_eq!(of("M3 $1 S100"), bit(b'M') | SELECTOR | bit(b'S'));
+        assert_eq!(of("G1 @5 ^30"), bit(b'G') | SELECTOR);
     }
 
     /// The state before a block as the rules read it is the whole state's: X Y Z (known and

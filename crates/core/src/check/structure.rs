@@ -442,17 +442,30 @@ impl Checker {
         // `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]`): its walks read where they are, no
         // operation outside a bracket to look for, and its names asked of the names seen
         let whole = expressions && self.linuxcnc_line_walked(b);
+        if !expressions || whole {
+            self.linuxcnc_no_slash = self.stats.blocks;
+        }
         let walked = (expressions && !whole).then(|| {
             let walked = self.linuxcnc_walk_words(b);
             self.linuxcnc_bare_operator(b, &walked);
             walked
         });
         self.linuxcnc_if_speed(b);
-        let statement = dialect::subroutine_statement(b.statements);
-        self.definition_after_call(b, statement.as_ref());
-        self.definition_feed(statement.as_ref());
-        self.definition_open(b, statement.as_ref());
-        self.linuxcnc_body(b, statement.as_ref());
+        // (a block without a statement, most of a program's, opens, closes and calls no
+        // definition: only a definition's body has its words to mark)
+        let statement = if b.statements.is_empty() {
+            if self.open_definition.is_some() {
+                self.linuxcnc_body(b, None);
+            }
+            None
+        } else {
+            let statement = dialect::subroutine_statement(b.statements);
+            self.definition_after_call(b, statement.as_ref());
+            self.definition_feed(statement.as_ref());
+            self.definition_open(b, statement.as_ref());
+            self.linuxcnc_body(b, statement.as_ref());
+            statement
+        };
         if statement.is_none()
             && self.open_definition.is_none()
             && !self.main_ended()
@@ -666,7 +679,23 @@ impl Checker {
     /// cannot read; otherwise the speed stays unknown after the `endif`, as before. The
     /// speed is given back to the next line (the flow's forgetting of the `endif` line comes
     /// after this), in the main program only (a definition's body runs under its caller's).
+    #[inline]
     fn linuxcnc_if_speed(&mut self, b: &BlockView<'_>) {
+        // (no speed to give back, no condition open and no o-word: as most of a program's
+        // blocks)
+        if self.linuxcnc_speed_back.is_none()
+            && self.linuxcnc_if_speed.is_empty()
+            && b.statements.is_empty()
+        {
+            return;
+        }
+        self.linuxcnc_if_speed_read(b);
+    }
+
+    /// [`Checker::linuxcnc_if_speed`] of a block after an `endif`, inside a condition or with
+    /// an o-word.
+    #[inline(never)]
+    fn linuxcnc_if_speed_read(&mut self, b: &BlockView<'_>) {
         if let Some((speed, unknown)) = self.linuxcnc_speed_back.take() {
             let state = &mut self.machine.state;
             state.speed = speed;
@@ -1041,7 +1070,7 @@ impl Checker {
     /// until the next program): then no word reads a name not defined, and
     /// `linuxcnc_named_reads` has nothing to say (a debug build reads them in full and
     /// asserts it). False where one is not: the full reading decides.
-    #[inline]
+    #[inline(always)]
     fn linuxcnc_names_all_seen(&mut self, b: &BlockView<'_>) -> bool {
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;

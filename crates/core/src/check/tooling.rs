@@ -721,11 +721,41 @@ impl Checker {
     /// G92 take them as data, a home's intermediate point or machine coordinates, G43.1 as
     /// offsets): the caller does not take them as known then. A G0-G3 move in the block of a
     /// G55 or a G43 ends where it says.
+    #[inline(always)]
     pub(super) fn linuxcnc_refusals(
         &mut self,
         b: &BlockView<'_>,
         facts: &Facts<'_>,
         start: &Before,
+    ) -> bool {
+        // a plain move found from the block's letters and codes: the full path's verdict
+        // without its word loop (a debug build takes the full path and holds the two equal)
+        let fast = self.linuxcnc_plain_move(b, facts);
+        #[cfg(test)]
+        if tests::FULL_ONLY.with(std::cell::Cell::get) {
+            return self.linuxcnc_refusals_read(b, facts, start, None);
+        }
+        if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
+            if f_at.is_some() {
+                self.linuxcnc_feed_word(f_at, given.as_slice(), facts);
+            }
+            if let Some(code) = given {
+                self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
+            }
+            return false;
+        }
+        self.linuxcnc_refusals_read(b, facts, start, fast)
+    }
+
+    /// [`Checker::linuxcnc_refusals`] of any block, its words read one by one (`fast`: the
+    /// plain move's verdict, which a debug build holds to this one's).
+    #[inline(never)]
+    fn linuxcnc_refusals_read(
+        &mut self,
+        b: &BlockView<'_>,
+        facts: &Facts<'_>,
+        start: &Before,
+        fast: Option<(Option<i64>, Option<usize>)>,
     ) -> bool {
         // (the axes whose point was not known exactly before the block, before its own codes)
         let unsure = self.linuxcnc_point_unsure;
@@ -817,35 +847,8 @@ impl Checker {
             self.linuxcnc_mode_unsure = true;
             self.linuxcnc_definition_mode_unsure = true;
         }
-        if first[usize::from(b'F' - b'A')] != 0 && self.linuxcnc_feed_mode_unsure() {
-            // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
-            // does not know (review 19)
-            self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
-        } else if first[usize::from(b'F' - b'A')] != 0 && self.machine.state.feed_mode != 93 {
-            let at = first[usize::from(b'F' - b'A')] as usize - 1;
-            self.linuxcnc_feed_rate = match self.readable[at] {
-                Some(f) if f.is_zero() => LinuxCncFeed::Zero,
-                Some(_) => LinuxCncFeed::Set,
-                None => LinuxCncFeed::Unknown,
-            };
-        } else if first[usize::from(b'F' - b'A')] != 0 {
-            // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
-            // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
-            // runs `G95` / `G93 G1 X1 F2` / `G38.2 X1 Y0`)
-            let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c)).or(
-                match self.linuxcnc_motion {
-                    LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
-                    _ => None,
-                },
-            );
-            if matches!(motion, Some(10 | 20 | 30)) {
-                let at = first[usize::from(b'F' - b'A')] as usize - 1;
-                self.linuxcnc_feed_rate = match self.readable[at] {
-                    Some(f) if !f.is_zero() => LinuxCncFeed::Set,
-                    _ => LinuxCncFeed::Unknown,
-                };
-            }
-        }
+        let f_at = first[usize::from(b'F' - b'A')] as usize;
+        self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts);
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
         }
@@ -924,12 +927,18 @@ impl Checker {
                         b.line
                     );
                 }
+                debug_assert!(
+                    fast.is_none() || fast == Some((given, f_at.checked_sub(1))),
+                    "line {}: the plain move's slim walk",
+                    b.line
+                );
                 if let Some(code) = given {
                     self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
                 }
                 return unsettles;
             }
         }
+        debug_assert!(fast.is_none(), "line {}: no plain move", b.line);
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
@@ -1069,6 +1078,97 @@ impl Checker {
             }
         }
         unsettles
+    }
+
+    /// A plain move of [`Checker::linuxcnc_refusals`] found without its word loop, from the
+    /// block's letter mask (`Checker::letters`) and values: no M, D, E, H, L, P, Q or T word,
+    /// no `$` (nor `@`, `^`) word; its G words' key made (`Checker::code_key`: each read as a
+    /// whole number, at most five) and each of G0-G3, or no G word; no expression, or each
+    /// walked plain by the tokenizer (`Checker::linuxcnc_no_slash`: no `/`, no read-refusal);
+    /// and the motion it runs plain, I J K R only in an arc. Then nothing refuses the block,
+    /// it leaves the point settled, and only its F word and motion code change the state: its
+    /// motion code in tenths (its first G code's) and the place of its first F word. None:
+    /// the full path decides.
+    #[inline(always)]
+    fn linuxcnc_plain_move(
+        &self,
+        b: &BlockView<'_>,
+        facts: &Facts<'_>,
+    ) -> Option<(Option<i64>, Option<usize>)> {
+        const NOT_PLAIN: u32 = bit(b'M')
+            | bit(b'D')
+            | bit(b'E')
+            | bit(b'H')
+            | bit(b'L')
+            | bit(b'P')
+            | bit(b'Q')
+            | bit(b'T')
+            | super::SELECTOR;
+        let letters = self.letters;
+        if letters & NOT_PLAIN != 0 || self.linuxcnc_no_slash != self.stats.blocks {
+            return None;
+        }
+        let given = if letters & bit(b'G') == 0 {
+            None
+        } else {
+            // (a key, so every G word read whole, none after the fifth code; the block's
+            // G codes are `values.gs()`, in order)
+            self.code_key?;
+            let gs = self.values.gs();
+            if !gs.iter().all(|&g| (0..=3).contains(&g)) {
+                return None;
+            }
+            Some(gs.first()? * 10)
+        };
+        let f_at = if letters & bit(b'F') == 0 {
+            None
+        } else {
+            b.words.iter().position(|w| w.letter == b'F')
+        };
+        let runs = given.or(match self.linuxcnc_motion {
+            LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+            _ => None,
+        });
+        let arcs = bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R');
+        let arc_words_used = matches!(runs, Some(20 | 30)) || letters & arcs == 0;
+        (runs.is_none_or(|m| matches!(m, 0 | 10 | 20 | 30)) && arc_words_used)
+            .then_some((given, f_at))
+    }
+
+    /// rs274's feed rate after the block's first F word (`at`, its place; None for a block
+    /// without one), its G codes in tenths `codes`.
+    #[inline]
+    fn linuxcnc_feed_word(&mut self, at: Option<usize>, codes: &[i64], facts: &Facts<'_>) {
+        let Some(at) = at else {
+            return;
+        };
+        if self.linuxcnc_feed_mode_unsure() {
+            // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
+            // does not know (review 19)
+            self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
+        } else if self.machine.state.feed_mode != 93 {
+            self.linuxcnc_feed_rate = match self.readable[at] {
+                Some(f) if f.is_zero() => LinuxCncFeed::Zero,
+                Some(_) => LinuxCncFeed::Set,
+                None => LinuxCncFeed::Unknown,
+            };
+        } else {
+            // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
+            // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
+            // runs `G95` / `G93 G1 X1 F2` / `G38.2 X1 Y0`)
+            let motion = codes.iter().copied().find(|&c| linuxcnc_motion_code(c)).or(
+                match self.linuxcnc_motion {
+                    LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+                    _ => None,
+                },
+            );
+            if matches!(motion, Some(10 | 20 | 30)) {
+                self.linuxcnc_feed_rate = match self.readable[at] {
+                    Some(f) if !f.is_zero() => LinuxCncFeed::Set,
+                    _ => LinuxCncFeed::Unknown,
+                };
+            }
+        }
     }
 
     /// An M98 with a word before it, or a word other than P and L after it
@@ -2145,6 +2245,126 @@ mod tests {
     use super::super::Config;
     use crate::lex::Family;
     use crate::rules::Rule;
+
+    thread_local! {
+        /// Set by a test: `linuxcnc_refusals` reads every block word by word, its plain
+        /// move's test not asked.
+        pub(super) static FULL_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    }
+
+    /// Drawn LinuxCNC programs of moves and of blocks near them (G0-G3 written many ways,
+    /// G1.0, G93-G95 and F words, M and `$` words, polar words, I J K R in and out of arcs,
+    /// D E H L P Q T words, G91, G4, G38.2, expressions with and without a `/`, o-word
+    /// conditions, comments): the findings with the plain move's test
+    /// (`Checker::linuxcnc_plain_move`) and with every block read word by word, the same. (A
+    /// debug build also holds the test's verdict to the full path's on every block.)
+    #[test]
+    fn linuxcnc_a_plain_move_s_test_finds_what_the_full_reading_finds() {
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let pieces = [
+            "G0",
+            "G1",
+            "G01",
+            "G001",
+            "G2",
+            "G3",
+            "G03",
+            "G1.0",
+            "G0.",
+            "G-1",
+            "G4",
+            "G38.2",
+            "G91",
+            "G90",
+            "G93",
+            "G94",
+            "G95",
+            "G17",
+            "G20",
+            "G21",
+            "G41",
+            "G40",
+            "G81",
+            "G80",
+            "X1",
+            "X-2.5",
+            "Y3",
+            "Y0",
+            "Z-1",
+            "Z0.25",
+            "X[#1/2]",
+            "Y[#1+1]",
+            "Z[#<a>*2]",
+            "X#1",
+            "X[1/0]",
+            "Y[#1/[#2-3]]",
+            "F0",
+            "F100",
+            "F[#1]",
+            "F#2",
+            "S1000",
+            "M3",
+            "M5",
+            "M6",
+            "M2.5",
+            "$1",
+            "@5",
+            "^30",
+            "I1",
+            "J-1",
+            "K1",
+            "R2",
+            "D1",
+            "E1",
+            "H1",
+            "L2",
+            "P1",
+            "Q1",
+            "T1",
+            "A1",
+            "B2",
+        ];
+        let mut lines = 0;
+        for _ in 0..400 {
+            let mut text = String::from("G21 G90 G94 G17\n#1 = 2\n#<a> = 1\nG0 X0 Y0 Z0\n");
+            for _ in 0..(next() % 30 + 5) {
+                let line = match next() % 12 {
+                    0 => ["(c)", "o1 if [#1 GT 1]", "o1 endif", "#2 = 3"][(next() % 4) as usize]
+                        .to_string(),
+                    _ => {
+                        let mut line = String::new();
+                        for _ in 0..(next() % 4 + 1) {
+                            // (moves mostly: the plain words most blocks are made of)
+                            let piece = if next().is_multiple_of(3) {
+                                pieces[(next() % pieces.len() as u64) as usize]
+                            } else {
+                                ["G1", "X1.5", "Y-2", "Z0.5", "G2", "G0", "I1", "F50"]
+                                    [(next() % 8) as usize]
+                            };
+                            line.push_str(piece);
+                            line.push(' ');
+                        }
+                        lines += 1;
+                        line
+                    }
+                };
+                text.push_str(&line);
+                text.push('\n');
+            }
+            text.push_str("M2\n");
+            let said = |full: bool| -> Vec<(Rule, usize, usize, String)> {
+                FULL_ONLY.with(|c| c.set(full));
+                let found = super::super::testing::check(of_family(Family::LinuxCnc), &text)
+                    .into_iter()
+                    .map(|f| (f.rule, f.line, f.column, f.message))
+                    .collect();
+                FULL_ONLY.with(|c| c.set(false));
+                found
+            };
+            assert_eq!(said(false), said(true), "{text}");
+        }
+        assert!(lines > 5_000, "{lines} lines");
+    }
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
