@@ -6,7 +6,9 @@ reads the four arithmetic operations, unary signs, brackets ``[ ]`` (where a pro
 as ``(`` is the comment character), functions written ``NAME[...]`` and parameters ``P``/``Q``/
 ``R`` with their index, or ``#n``. The macro dialects add, and this grammar reads as the core's
 expression tree does: the power ``**``, inside brackets the word operators ``EQ ... MOD`` and ``,``
-between arguments, ``#<name>`` parameters and parameters chosen by a value (``#[..]``, ``##n``).
+between arguments, ``#<name>`` parameters and parameters chosen by a value (``#[..]``, ``##n``),
+and a numbered parameter with a decimal part (``#30003.078``, a Haas NGC parameter element: one
+parameter, as the core's tree reads it; a dialect's reader lets it through only on a Haas).
 HEIDENHAIN's Q-parameter formulas have a grammar of their own, :data:`FORMULA_GRAMMAR`, and so
 have Siemens SINUMERIK expressions, :data:`SINUMERIK_GRAMMAR`.
 
@@ -47,7 +49,7 @@ COMMA: ","
 WORDOP: /(?i:EQ|NE|GT|GE|LT|LE|AND|OR|XOR|MOD)(?![A-Za-z])/
 NUMBER: /[0-9]+\.?[0-9]*|\.[0-9]+/
 PARAM: /[PQR][0-9]+/
-NUMBERED: /#[0-9]+/
+NUMBERED: /#[0-9]+(\.[0-9]+)?/
 NAMED: /#[ \t\r\x00\x7f]*<[^>]*>/
 FUNCTION: /[A-Za-z]{2,6}(?![A-Za-z])/
 %ignore /[ \t\r\x00\x7f]+/

@@ -1,6 +1,6 @@
 """The fast tokenizer and the lark reference grammar agree on every generated block."""
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from formats.errors import ParseError
@@ -90,6 +90,8 @@ expression_token = st.sampled_from(["1", "2.5", ".5", "7.", "R1", "P12", "#3", "
 
 @settings(max_examples=600, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(expression_token, max_size=12).map("".join))
+@example("#2.5")  # a Haas NGC parameter element's form: one parameter in both
+@example("#30003.078+#2.")
 def test_the_core_reads_expressions_as_the_reference_grammar_does(text):
     """The core's expression trees (conversion, parameter analysis) accept what the lark
     expression grammar accepts, and find the same parameters in it."""
