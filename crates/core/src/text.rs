@@ -266,7 +266,7 @@ mod tests {
             let lf_every = 1 + (next() % if round % 3 == 0 { 90 } else { 12 }) as usize;
             let text: Vec<u8> = (0..len)
                 .map(|_| {
-                    if (next() as usize) % lf_every == 0 {
+                    if (next() as usize).is_multiple_of(lf_every) {
                         b'\n'
                     } else {
                         b'a' + (next() % 26) as u8
