@@ -9494,16 +9494,7 @@ mod tests {
         let mut marked = 0;
         for _ in 0..300_000 {
             // (half of them of a program's pieces, which read more often than bytes do)
-            let len = 1 + (next() % 24) as usize;
-            let line: Vec<u8> = if next().is_multiple_of(2) {
-                (0..len)
-                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
-                    .collect()
-            } else {
-                (0..len / 3 + 1)
-                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
-                    .collect()
-            };
+            let line = crate::drawn::line(&mut next, BYTES, &PIECES, 3);
             let dialect = &dialects[(next() % dialects.len() as u64) as usize];
             let mut tokens = Vec::new();
             let Ok(extras) = tokenize(&line, dialect, &mut tokens) else {
@@ -9676,16 +9667,7 @@ mod tests {
         let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
         let (mut found, mut passed) = (0, 0);
         for _ in 0..300_000 {
-            let len = 1 + (next() % 24) as usize;
-            let line: Vec<u8> = if next().is_multiple_of(2) {
-                (0..len)
-                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
-                    .collect()
-            } else {
-                (0..len / 3 + 1)
-                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
-                    .collect()
-            };
+            let line = crate::drawn::line(&mut next, BYTES, &PIECES, 3);
             let dialect = &dialects[(next() % dialects.len() as u64) as usize];
             let mut tokens = Vec::new();
             if tokenize(&line, dialect, &mut tokens).is_err() {

@@ -1670,16 +1670,7 @@ mod tests {
         let dialects: Vec<Dialect> = Family::ALL.into_iter().map(Dialect::permissive).collect();
         let (mut given, mut read) = (0, 0);
         for _ in 0..300_000 {
-            let len = 1 + (next() % 24) as usize;
-            let line: Vec<u8> = if next().is_multiple_of(2) {
-                (0..len)
-                    .map(|_| BYTES[(next() % BYTES.len() as u64) as usize])
-                    .collect()
-            } else {
-                (0..len / 4 + 1)
-                    .flat_map(|_| PIECES[(next() % PIECES.len() as u64) as usize].bytes())
-                    .collect()
-            };
+            let line = crate::drawn::line(&mut next, BYTES, &PIECES, 4);
             let dialect = &dialects[(next() % dialects.len() as u64) as usize];
             let mut tokens = Vec::new();
             if crate::tokenizer::tokenize(&line, dialect, &mut tokens).is_err() {
