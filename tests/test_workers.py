@@ -294,15 +294,21 @@ def _sends(item: int) -> int:
     return item
 
 
+def _sent_in_order(items: int | list[int]) -> list[object]:
+    """What ``receive`` and the results give for :func:`_sends` over ``items`` (a count:
+    0, 1, ...): each item's pieces, then its result, in the items' order."""
+    expected: list[object] = []
+    for item in (range(items) if isinstance(items, int) else items):
+        expected.extend((item, n) for n in range(item))
+        expected.append(item)
+    return expected
+
+
 def test_pieces_reach_receive_in_the_items_order_before_their_result():
     got: list[object] = []
     for result in ordered_map(_sends, [3, 0, 5, 1, 2, 4], 2, receive=got.append):
         got.append(result)
-    expected: list[object] = []
-    for item in [3, 0, 5, 1, 2, 4]:
-        expected.extend((item, n) for n in range(item))
-        expected.append(item)
-    assert got == expected
+    assert got == _sent_in_order([3, 0, 5, 1, 2, 4])
     one: list[object] = []  # one job: at once, in this thread
     for result in ordered_map(_sends, [2, 1], 1, receive=one.append):
         one.append(result)
@@ -360,11 +366,7 @@ def test_threads_waiting_for_the_window_wake_the_main_thread(monkeypatch, window
     thread.start()
     thread.join(timeout=60)
     assert not thread.is_alive(), "the map waited for ever"
-    expected: list[object] = []
-    for item in range(40):
-        expected.extend((item, n) for n in range(item))
-        expected.append(item)
-    assert results == expected
+    assert results == _sent_in_order(40)
 
 
 def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path):
@@ -1228,11 +1230,7 @@ def test_the_due_item_done_by_the_main_thread_is_received_at_once():
     for result in ordered_map(_sends, list(range(30)), 2, receive=got.append,
                               sizes=[1] * 30):
         got.append(result)
-    expected: list[object] = []
-    for item in range(30):
-        expected.extend((item, n) for n in range(item))
-        expected.append(item)
-    assert got == expected
+    assert got == _sent_in_order(30)
 
 
 def test_an_exception_in_the_main_threads_item_is_raised_at_its_turn(monkeypatch):

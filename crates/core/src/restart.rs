@@ -1067,12 +1067,14 @@ impl Walk {
         // S, T, D or H (none of them a value those take). A builder's M code beside a plain
         // speed or tool (`S300 M45`, `T0101 M16`) is the control's own function, as the
         // check reads it (TG307).
-        let arcs = matches!(after.motion, Some(2 | 3)) || after.cycle.is_some();
-        let arguments = plain_words.iter().any(|&(l, t)| {
-            matches!(l, b'P' | b'Q')
-                || (!arcs && matches!(l, b'I' | b'J' | b'K' | b'R' | b'E'))
-                || (matches!(l, b'S' | b'T' | b'D' | b'H') && t.contains(&b'.'))
-        });
+        let arguments = || {
+            let arcs = matches!(after.motion, Some(2 | 3)) || after.cycle.is_some();
+            plain_words.iter().any(|&(l, t)| {
+                matches!(l, b'P' | b'Q')
+                    || (!arcs && matches!(l, b'I' | b'J' | b'K' | b'R' | b'E'))
+                    || (matches!(l, b'S' | b'T' | b'D' | b'H') && t.contains(&b'.'))
+            })
+        };
         for &m in &ms {
             let Some((_, mode, on, function)) =
                 self.m_modes.iter().find(|(code, ..)| *code == m).cloned()
@@ -1088,14 +1090,14 @@ impl Walk {
         let unlisted_m = self
             .lacks_m
             .as_ref()
-            .filter(|_| arguments)
             .and_then(|lacks| {
                 ms.iter().copied().find(|&m| {
                     usize::try_from(m)
                         .ok()
                         .is_none_or(|n| lacks.get(n).copied().unwrap_or(true))
                 })
-            });
+            })
+            .filter(|_| arguments());
         if let Some(m) = unlisted_m {
             for &(letter, token) in &plain_words {
                 let mut why = token.to_vec();

@@ -9,7 +9,7 @@ use crate::decimal::Dec;
 use crate::expr;
 use crate::lex::{blank, Family};
 use crate::rules::Rule;
-use crate::statement::{formula_right_hand_side, q_parameter, Kind};
+use crate::statement::{digits_end, formula_right_hand_side, q_parameter, Kind};
 
 impl Checker {
     /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
@@ -108,22 +108,12 @@ impl Checker {
                 }
                 continue;
             }
-            let digits = at
-                + 1
-                + text[at + 1..]
-                    .iter()
-                    .take_while(|c| c.is_ascii_digit())
-                    .count();
+            let digits = digits_end(text, at + 1);
             i = digits.max(at + 1);
             if digits == at + 1 || text.get(digits) != Some(&b'.') {
                 continue;
             }
-            let end = digits
-                + 1
-                + text[digits + 1..]
-                    .iter()
-                    .take_while(|c| c.is_ascii_digit())
-                    .count();
+            let end = digits_end(text, digits + 1);
             if end == digits + 1 {
                 continue;
             }
