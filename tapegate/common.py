@@ -70,7 +70,8 @@ def _transfer_refused(exc: TapegateError) -> str:
 
 # How each error is told and what it exits with, first match by code, then by class (the
 # classes of the DNC layer are named, not imported: parse, check and convert do not load it).
-# "located": the error's own located line; "prefixed": the same after "tapegate: "; "message":
+# "located": the error's own located line; "prefixed": the same after "tapegate: " (the message
+# alone where the error has no file: a profile named that does not exist); "message":
 # "tapegate: " and the message alone (its text names what failed). ``None`` for the exit code:
 # the command's for bad input (1; diff's 2, where 1 means "different").
 _BY_CODE: dict[str, tuple[str, int | None]] = {
@@ -101,7 +102,7 @@ def error_exit(exc: TapegateError, input_exit: int = 1) -> tuple[str, int]:
     how, code = found
     text = (how(exc) if callable(how) else
             f"tapegate: {exc.message}" if how == "message" else
-            f"tapegate: {exc}" if how == "prefixed" else str(exc))
+            f"tapegate: {exc if exc.file else exc.message}" if how == "prefixed" else str(exc))
     return text, input_exit if code is None else code
 
 

@@ -215,11 +215,14 @@ def test_a_sequence_number_past_n99999_follows_the_target_s_past_sequence():
     checker says so (TG208, checks.past_sequence): the converter carries it as written, with a
     note, where it refused it as a digit overflow. A Fanuc alarms (PS0003): refused there."""
     haas = load_profile("haas-mill")
-    src = "O1\nN99999 G0 X1.\nN100000 X2.\nM30\n"
+    src = "O1\nN99999 G0 X1.\nN100000 X2.\nN100010 X3.\nN100020 X4.\nM30\n"
     out, stats = convert_text(src, ConvertOptions(haas, haas, units="metric"))
-    assert out.splitlines()[1:3] == ["N99999 G21 G0 X25.4", "N100000 X50.8"]
-    assert any(n.startswith("sequence numbers longer than the target format N05 carried as "
-                            "written (the first, N100000)") for n in stats.notes), stats.notes
+    assert out.splitlines()[1:5] == ["N99999 G21 G0 X25.4", "N100000 X50.8", "N100010 X76.2",
+                                     "N100020 X101.6"]
+    said = [n for n in stats.notes if n.startswith("sequence numbers longer than the target")]
+    assert said == ["sequence numbers longer than the target format N05 carried as written (the "
+                    "first, N100000): the control's manuals do not say whether it rounds, cuts "
+                    "or alarms"], stats.notes  # once a file, not once a block
     with pytest.raises(ConversionError) as err:
         convert_text(src, ConvertOptions(FANUC, haas))
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-format", 3, 1)

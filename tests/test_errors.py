@@ -219,7 +219,9 @@ def test_the_command_line_maps_each_error_in_one_place() -> None:
     assert error_exit(ConversionError("X9 overflows", **where)) == ("p.nc:3:4: X9 overflows", 1)
     assert error_exit(ConversionError("X9 overflows", **where), input_exit=2)[1] == 2  # diff
     assert error_exit(ProfileError("no profile named 'x'")) == (
-        "tapegate: <input>: no profile named 'x'", 2)
+        "tapegate: no profile named 'x'", 2)
+    assert error_exit(ProfileError("no such table", file="m.toml", line=2)) == (
+        "tapegate: m.toml:2: no such table", 2)
     assert error_exit(Config("port[0].url is missing", file="g.toml", line=7)) == (
         "tapegate: g.toml:7: port[0].url is missing", 2)
     assert error_exit(OutputError("cannot write o/x.nc: no such folder", file="x")) == (

@@ -863,6 +863,8 @@ pub struct Converter {
     reading_end: ReadingEnd,
     /// The lines not read have been said (once a file) under a change of units.
     unread_noted: bool,
+    /// A sequence number past the target's N format has been said (once a file: the first).
+    long_sequence_noted: bool,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
     /// parameter and tool life data, written as they are.
     data_input: DataInput,
@@ -1394,6 +1396,7 @@ impl Converter {
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             unread_noted: false,
+            long_sequence_noted: false,
             data_input: DataInput::default(),
             lead_watch: None,
             lead_rounded: None,
@@ -6181,7 +6184,11 @@ impl Converter {
             && self.c.target_past_sequence != PastFormat::Alarm
         {
             // a Haas numbers past N99999 (Fusion 360's post): the control's manuals name no
-            // alarm, and the checker says so on the target (TG208); the number stays
+            // alarm, and the checker says so on the target (TG208); the number stays, said
+            // once a file with the first such number
+            if std::mem::replace(&mut self.long_sequence_noted, true) {
+                return Ok(None);
+            }
             self.note(format!(
                 "sequence numbers longer than the target format {} carried as written (the \
                  first, {}): {}",
