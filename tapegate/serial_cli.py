@@ -216,15 +216,27 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None,
             with workflow.prepare(file, prof, settings, name=file, force=force,
                                   restart_at=restart_at, convert=do_convert, source=source,
                                   on_event=_prepared) as program:
-                if (program.restart and not yes and sys.stdin.isatty()
-                        and not click.confirm("send?", err=True)):
-                    sys.exit(1)
+                if program.restart and not yes:
+                    _confirm_restart()
                 _framed(program)
                 _send(program, port, workflow.Passes(repeat, passes, xon_timeout=xon_timeout),
                       record, show, signals)
         except KeyboardInterrupt:  # before the transfer began: nothing was sent
             click.echo(f"tapegate: {signals.name}: interrupted before sending", err=True)
             sys.exit(signals.exit_code)
+
+
+def _confirm_restart() -> None:
+    """A restart moves the machine from the middle of a program: it is sent only once the
+    operator has read the preamble and said so, on a terminal by the question, elsewhere (a
+    script, a pipe) by ``--yes``. Without either nothing is sent (exit 1)."""
+    if not sys.stdin.isatty():
+        click.echo("tapegate: not sent: a restart is sent only when confirmed, and there is no "
+                   "terminal to ask on; read the preamble above and pass --yes (-y) to send it",
+                   err=True)
+        sys.exit(1)
+    if not click.confirm("send?", err=True):
+        sys.exit(1)
 
 
 def _prepared(event: workflow.Event) -> None:

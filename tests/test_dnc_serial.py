@@ -340,7 +340,7 @@ def test_restart_at_sends_the_preamble_then_the_rest(tmp_path: Path) -> None:
     emu = Emulator(control)
     try:
         result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
-                     "115200", "--restart-at", "N9", "--xon-timeout", "5")
+                     "115200", "--restart-at", "N9", "--xon-timeout", "5", "--yes")
         assert result.exit_code == 0, result.output
         emu.wait(5)
     finally:
@@ -353,6 +353,46 @@ def test_restart_at_sends_the_preamble_then_the_rest(tmp_path: Path) -> None:
     first_program_line = next(i for i, line in enumerate(lines) if line.startswith("N"))
     assert lines[first_program_line].startswith("N9 ")
     assert "N5 " not in control.programs[0]
+
+
+def test_a_restart_off_a_terminal_is_sent_only_with_yes(tmp_path: Path) -> None:
+    """A restart is confirmed by the operator: with no terminal to ask on (a script, a pipe)
+    and no --yes, the preamble is shown and nothing is sent (exit 1); the port stays unopened."""
+    src = tmp_path / "p.nc"
+    src.write_text(program(10))
+    control = control_for("fanuc-mill", baud=115200)
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                     "115200", "--restart-at", "N9", "--xon-timeout", "1")
+    finally:
+        emu.stop()
+    assert result.exit_code == 1, result.output
+    assert "restart at N9" in result.output and "G21 G17 G90 G94" in result.output
+    assert ("tapegate: not sent: a restart is sent only when confirmed, and there is no terminal "
+            "to ask on; read the preamble above and pass --yes (-y) to send it") in result.output
+    assert control.programs == [] and control.stats.chars == 0
+
+
+def test_a_restart_on_a_terminal_is_sent_only_when_the_operator_says_so(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from tapegate import serial_cli
+
+    asked: list[str] = []
+
+    def answer(reply: bool):
+        def confirm(text: str, err: bool = False) -> bool:
+            asked.append(text)
+            return reply
+        return confirm
+
+    monkeypatch.setattr(serial_cli.sys.stdin, "isatty", lambda: True, raising=False)
+    monkeypatch.setattr(serial_cli.click, "confirm", answer(True))
+    serial_cli._confirm_restart()  # yes: returns, the send goes on
+    monkeypatch.setattr(serial_cli.click, "confirm", answer(False))
+    with pytest.raises(SystemExit) as stop:
+        serial_cli._confirm_restart()
+    assert stop.value.code == 1 and asked == ["send?", "send?"]
 
 
 def test_repeat_sends_again_on_the_next_dc1(tmp_path: Path) -> None:
@@ -695,7 +735,7 @@ def test_restart_at_an_alignment_label_and_the_hint_for_a_sequence_number(
         emu = Emulator(control)
         try:
             result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
-                         "115200", "--restart-at", target, "--xon-timeout", "5")
+                         "115200", "--restart-at", target, "--xon-timeout", "5", "--yes")
             emu.wait(5)
         finally:
             emu.stop()
@@ -883,7 +923,8 @@ def test_restart_at_shows_only_the_warnings_of_lines_it_sends(tmp_path: Path) ->
                    "N4 S1000 M03\nN5 G1 Z-1. F100.\nN6 X10. (C (D))\nN7 X20.\nN8 M30\n%\n")
     for target, said in (("N7", []), ("N6", ["r.nc:8:"]), ("N5", ["r.nc:8:"])):
         result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow",
-                     "none", "--baud", "115200", "--no-progress", "--restart-at", target)
+                     "none", "--baud", "115200", "--no-progress", "--restart-at", target,
+                     "--yes")
         assert result.exit_code == 0, result.output
         shown = [line for line in result.output.splitlines() if "warning TG136" in line]
         assert [where for line in shown for where in ("r.nc:5:", "r.nc:8:") if where in line] \
@@ -904,7 +945,8 @@ def test_a_refused_restart_shows_the_warnings_it_held(tmp_path: Path) -> None:
                    "N5 G1 Z-1. F100.\nN6 X10.\nN8 M30\n%\n")
     for target, why in (("N99", "no block N99"), ("N6", "cannot restart here")):
         result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow",
-                     "none", "--baud", "115200", "--no-progress", "--restart-at", target)
+                     "none", "--baud", "115200", "--no-progress", "--restart-at", target,
+                     "--yes")
         assert result.exit_code != 0, result.output
         lines = result.output.splitlines()
         warned = [i for i, line in enumerate(lines) if "r.nc:4:" in line
