@@ -140,7 +140,8 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
             sys.exit(1)
         return
     if len(rows) > 1 or failed or not sys.stdout.isatty():
-        rows.append((f"total: {len(results)} files", str(total_blocks), str(total_changed), "",
+        files = f"{len(results)} file{'' if len(results) == 1 else 's'}"
+        rows.append((f"total: {files}", str(total_blocks), str(total_changed), "",
                      f"{failed} failed"))
     echo(table(("file", "blocks", "words changed", "largest rounding", "result"), rows),
                err=to_stdout)

@@ -304,7 +304,7 @@ def test_the_options_are_read_as_click_reads_them(place: Path, command: click.Co
     (["check", "bad.nc", "-p", "iso-mill", "--format", "json"],
      ("click", "dataclasses", "inspect"), '"rule": "TG'),
     (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--units", "inch"],
-     ("click",), "total: 1 files"),
+     ("click",), "total: 1 file "),
 ], ids=["check", "convert"])
 def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
                                                unused: tuple[str, ...], shown: str) -> None:
