@@ -817,7 +817,17 @@ def test_an_arc_with_r_and_i_j_k_is_refused_for_linuxcnc(tmp_path, source, block
     ("fanuc-mill", "haas-mill", "#1=#2001", ("a tool offset value on a FANUC",
                                              "a tool length or diameter offset")),
     ("fanuc-mill", "haas-mill", "#750=1.", ("a common variable on a FANUC",
-                                            "no general purpose variable")),
+                                            "a number its table does not list on a Haas")),
+    ("fanuc-mill", "haas-mill", "#720=1.", ("a hidden variable for the control's internal use",)),
+    # review 35: the Haas's probe calibration, the groups numbered apart, FANUC's #3003 bit 1
+    ("fanuc-mill", "haas-mill", "#550=1.", ("the probe's calibration data",)),
+    ("haas-mill", "fanuc-mill", "#1=#580", ("the probe's calibration data",)),
+    ("fanuc-mill", "haas-mill", "#31=#4014", ("its work coordinate system is group 12",)),
+    ("haas-mill", "fanuc-mill", "#31=#4012", ("its work coordinate system is group 12",)),
+    ("fanuc-mill", "haas-mill", "#3003=2", ("values 2 and 3",)),
+    ("fanuc-mill", "haas-mill", "#1=#5227", ("X Y Z A B C on a mill",)),
+    ("fanuc-lathe", "haas-lathe", "#1=#5041", ("a lathe's order is in no table at hand",)),
+    ("haas-mill", "fanuc-mill", "#1=#101.5", ("outside the Haas NGC parameters",)),
     ("haas-mill", "fanuc-mill", "#10100=1.", ("its NGC number",)),
     ("fanuc-mill", "haas-mill", "#3901=#3901+1", ("the parts count on a FANUC",
                                                   "an M30 part counter on a Haas")),
@@ -837,10 +847,13 @@ def test_a_variable_a_fanuc_and_a_haas_read_apart_is_refused_naming_both(source,
 
 
 @pytest.mark.parametrize("block", ["#101=#5221+#5021", "#1=#3000", "#500=#4001",
-                                   "#1=#5061", "#102=#7001", "#103=#14001", "#1=#3011"])
+                                   "#1=#5061", "#102=#7001", "#103=#14001", "#1=#3011",
+                                   "#3004=2", "#3003=1", "#3003 = 0", "#1=#4003+#4120"])
 def test_the_variables_a_fanuc_and_a_haas_read_alike_are_carried(block):
     """The work offsets G54-G59 and the additional ones laid out alike, the positions, the
-    previous block's codes, the alarm and the clocks: carried both ways as written."""
+    previous block's codes of the groups both number alike and its B D F H M S T, the alarm,
+    the clocks, the feed hold bits of #3004 and single block suppression set 0 or 1 (the NGC
+    table gives both FANUC's meaning: review 35): carried both ways as written."""
     text = f"O1\nG21 G90\n{block}\nG0 X10. Y10.\nM30\n"
     for source, target in (("fanuc-mill", "haas-mill"), ("haas-mill", "fanuc-mill")):
         assert block in convert(text, source, target)

@@ -323,12 +323,17 @@ pub fn lathe_g50_axes(words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
 /// written, a FANUC's `G10 L12 P1 R5.` sets a Haas's cutter a diameter of 5 (half the radius
 /// compensation meant), and a Haas's L12 a FANUC's radius twice as large: refused at the L
 /// (or the P) word. L10, L11, L20 and L2 P1-P6 are one datum on both: carried.
-pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
+pub fn fanuc_haas_words(
+    from_haas: bool,
+    lathe: bool,
+    words: &[Word<'_>],
+    gs: &[i64],
+) -> Result<(), Refusal> {
     let m19 = |w: &Word<'_>| w.token[0].eq_ignore_ascii_case(&b'M') && whole(w) == Some(19);
     if from_haas && words.iter().any(m19) {
         orient_angle(words, |_| "FANUC", Family::MacroB)?;
     }
-    fanuc_haas_variables(from_haas, words)?;
+    fanuc_haas_variables(from_haas, lathe, words)?;
     let find = |letter: u8| {
         words
             .iter()
@@ -443,14 +448,25 @@ fn hash_variables(t: &[u8]) -> impl Iterator<Item = HashVariable> + '_ {
 fn haas_variable(n: u64) -> Option<&'static str> {
     Some(match n {
         1..=33 => "a local variable",
+        550..=580 => "the probe's calibration data (where a probe is installed)",
         100..=199 | 500..=699 | 800..=999 => "a general purpose variable",
-        700..=799 => "no general purpose variable (the table keeps #700-#799 for the control)",
+        700..=749 => "a hidden variable for the control's internal use",
+        750..=799 => "a number its table does not list",
         1000..=1999 => "a discrete or analog input or output of the machine",
         2001..=2800 => "a tool length or diameter offset (geometry or wear)",
         3020..=3025 => "a timer (power-on, cycle, feed or part time)",
         3026 => "the tool in the spindle",
         3027 => "the spindle speed",
         3901 | 3902 => "an M30 part counter",
+        4001..=4021 => {
+            "the G code of a modal group as the Haas numbers its groups (its work coordinate \
+             system is group 12, a FANUC's 14; it has no group 4, 13, 14 or 17-21)"
+        }
+        4101..=4126 => "the previous block's address by the macro arguments' letters (#4124 X)",
+        5001..=5006 | 5021..=5026 | 5041..=5046 | 5061..=5069 | 5081..=5086 | 5221..=5326 => {
+            "a position or offset of an axis (X Y Z A B C on a mill; a lathe's order is in no \
+             table at hand)"
+        }
         5201..=5206 => "the G52 work offset",
         6001..=6999 => "a setting or parameter (the control's own numbering)",
         8500..=8599 => "advanced tool management or tool data",
@@ -466,29 +482,70 @@ fn haas_variable(n: u64) -> Option<&'static str> {
 }
 
 /// The numbered variables a FANUC and a Haas read alike, beside the ones both leave to the
-/// program: the null variable, the alarm, the clocks, the stop with a message, the date and
-/// time, the previous block's codes and addresses, the positions, the G54-G59 work offsets
-/// and the additional work offsets laid out alike (FANUC G54.1 P1-P48 #7001-#7960 and P1-P300
-/// #14001-#19988, 20 a set; Haas G110-G129 #7001-#7386 and G154 P1-P99 #14001-#15966, the
-/// same sets): FANUC 0i-MF operator's manual, "System variables"; the NGC table (6.14.7).
-fn fanuc_haas_alike(n: u64) -> bool {
-    matches!(
-        n,
-        0 | 3000..=3002 | 3006 | 3011 | 3012 | 4001..=4021 | 4101..=4126 | 5001..=5006
-            | 5021..=5026 | 5041..=5046 | 5061..=5066 | 5081..=5086 | 5221..=5326
-            | 7001..=7386 | 14001..=15966
-    )
+/// program (FANUC 0i-MF operator's manual, "System variables"; the NGC table, 6.14.7, and its
+/// pages on #3004 and #4001-#4021):
+/// - on every pair: the null variable, the alarm, the clocks, the stop with a message, the
+///   date and time, the feed hold, override and exact stop bits of #3004 (the same 0-7 table),
+///   the motion group's code (#4001), and the previous block's B D F H M S T (#4102 ... #4120:
+///   FANUC's modal information, the Haas's letters mapped as the macro arguments'
+///   alphabetic addressing (the table's note 1); the other #4101-#4126 are letters a FANUC does not keep there, or its
+///   sequence and program numbers);
+/// - between mills only (the tables are the mill's; no Haas lathe table was at hand, and the
+///   lathes' group numbers and axis orders are not known to agree): the G codes of the groups
+///   both number alike (02 plane, 03 distance, 05 feed mode, 06 units, 07 cutter, 08 length,
+///   09 cycle, 10 cycle return, 11 scaling, 15 exact stop, 16 rotation; FANUC's 04, 12-14 and
+///   17-21 are other groups or none on a Haas: its work system is group 12, FANUC's 14), the
+///   X Y Z A B C positions, and the G54-G59 and additional work offsets laid out alike (FANUC
+///   G54.1 P1-P48 #7001-#7960 and P1-P300 #14001-#19988, 20 a set; Haas G110-G129
+///   #7001-#7386 and G154 P1-P99 #14001-#15966: X to C, the first six of each set of 20).
+fn fanuc_haas_alike(n: u64, lathe: bool) -> bool {
+    let six_of_twenty = |first: u64| (n - first) % 20 < 6;
+    match n {
+        0 | 3000..=3002 | 3004 | 3006 | 3011 | 3012 | 4001 => true,
+        4102 | 4107 | 4109 | 4111 | 4113 | 4119 | 4120 => true,
+        _ if lathe => false,
+        4002 | 4003 | 4005..=4011 | 4015 | 4016 => true,
+        5001..=5006 | 5021..=5026 | 5041..=5046 | 5061..=5066 | 5081..=5086 => true,
+        5221..=5326 => six_of_twenty(5221),
+        7001..=7386 => six_of_twenty(7001),
+        14001..=15966 => six_of_twenty(14001),
+        _ => false,
+    }
+}
+
+/// `#3003 = 0` or `#3003 = 1` (a whole literal, spaces anywhere): single block suppression off
+/// or on, FANUC's bit 0 and the Haas's whole value (NGC table, "#3003 Single Block
+/// Suppression"). FANUC's bit 1 (2 and 3: the completion of an auxiliary function not
+/// awaited) has no Haas meaning, and a value the text does not show may be 2 or 3.
+fn single_block_literal(token: &[u8]) -> bool {
+    let bare: Vec<u8> = token.iter().copied().filter(|&c| c != b' ').collect();
+    let Some(value) = bare.strip_prefix(b"#3003=") else {
+        return false;
+    };
+    let (whole, fraction) = match value.iter().position(|&c| c == b'.') {
+        Some(p) => (&value[..p], &value[p + 1..]),
+        None => (value, &value[..0]),
+    };
+    let whole_ok = !whole.is_empty() || !fraction.is_empty();
+    let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+    let whole_value = whole.iter().skip_while(|&&c| c == b'0').collect::<Vec<_>>();
+    whole_ok
+        && digits(whole)
+        && digits(fraction)
+        && fraction.iter().all(|&c| c == b'0')
+        && (whole_value.is_empty() || whole_value == [&b'1'])
 }
 
 /// Numbered variables between a FANUC and a Haas, which both write Custom Macro B: a variable
-/// both leave to the program (#1-#33, #100-#199, #500-#699, #800-#999) or both read alike
+/// both leave to the program (#1-#33, #100-#199, #500-#699 but the Haas probe's #550-#580, #800-#999) or both read alike
 /// ([`fanuc_haas_alike`]) is carried; one the Haas's table gives another use (the G52 offset
 /// at #5201, the tool offsets at #2001-#2800 in another order, the M30 counters at #3901, the
 /// settings and parameters at #20000-#39999, the NGC's #10000 numbers of the general purpose
 /// variables, which a FANUC reads as tool offsets) or that neither names alike is refused,
 /// naming both uses; so is a Haas NGC parameter element (`#30003.078`), which a FANUC does
 /// not read (a variable is numbered with a whole number), and a variable chosen by a value.
-fn fanuc_haas_variables(from_haas: bool, words: &[Word<'_>]) -> Result<(), Refusal> {
+/// `lathe`: the pair is two lathes ([`fanuc_haas_alike`]).
+fn fanuc_haas_variables(from_haas: bool, lathe: bool, words: &[Word<'_>]) -> Result<(), Refusal> {
     let (source, target) = if from_haas {
         ("Haas", "FANUC")
     } else {
@@ -507,11 +564,25 @@ fn fanuc_haas_variables(from_haas: bool, words: &[Word<'_>]) -> Result<(), Refus
                     ));
                 }
                 HashVariable::Number { n, element: true } => {
+                    let what = if (30000..=39999).contains(&n) {
+                        "a Haas NGC parameter element (docs/dialects.md)"
+                    } else {
+                        "a variable with a decimal part outside the Haas NGC parameters"
+                    };
                     return fail(format!(
-                        "#{n} with a decimal part, a Haas NGC parameter element \
-                         (docs/dialects.md): a FANUC numbers a variable with a whole number and \
-                         does not read it; read the target's own data for it"
+                        "#{n} with a decimal part, {what}: a FANUC numbers a variable with a \
+                         whole number and does not read it; read the target's own data for it"
                     ));
+                }
+                HashVariable::Number { n: 3003, .. } if single_block_literal(t) => continue,
+                HashVariable::Number { n: 3003, .. } => {
+                    return fail(
+                        "#3003 is single block suppression on both, but a FANUC's values 2 and \
+                         3 (the completion of an auxiliary function not awaited) have no Haas \
+                         meaning (NGC table, \"#3003 Single Block Suppression\": 1 or 0): \
+                         tapegate carries only #3003 = 0 or #3003 = 1"
+                            .to_string(),
+                    );
                 }
                 HashVariable::Number { n, .. } => n,
             };
@@ -520,7 +591,7 @@ fn fanuc_haas_variables(from_haas: bool, words: &[Word<'_>]) -> Result<(), Refus
             let user = fanuc.1
                 && haas
                     .is_none_or(|h| h == "a local variable" || h == "a general purpose variable");
-            if user || fanuc_haas_alike(n) {
+            if user || fanuc_haas_alike(n, lathe) {
                 continue;
             }
             let haas = haas.unwrap_or("a variable not known here to be read alike");
@@ -1475,13 +1546,13 @@ mod tests {
     #[test]
     fn fanuc_and_haas_read_some_g10_data_and_lathes_their_g50_axes_apart() {
         let refused = |from_haas, line: &str, gs: &[i64]| {
-            fanuc_haas_words(from_haas, &words(line), gs)
+            fanuc_haas_words(from_haas, false, &words(line), gs)
                 .err()
                 .map(|r| r.at)
         };
         // L12 (radius on a FANUC, diameter on a Haas), L13, L1: refused at the L word
         assert_eq!(refused(false, "G10 L12 P1 R5.", &[10]), Some(4));
-        let message = fanuc_haas_words(false, &words("G10 L12 P1 R5."), &[10])
+        let message = fanuc_haas_words(false, false, &words("G10 L12 P1 R5."), &[10])
             .unwrap_err()
             .message;
         assert!(
@@ -1513,28 +1584,49 @@ mod tests {
 
     #[test]
     fn fanuc_and_haas_carry_only_the_variables_they_read_alike() {
-        let refused = |from_haas, line: &str| {
-            fanuc_haas_variables(from_haas, &words(line))
+        let refused_on = |from_haas, lathe, line: &str| {
+            fanuc_haas_variables(from_haas, lathe, &words(line))
                 .err()
                 .map(|r| r.message)
         };
+        let refused = |from_haas, line: &str| refused_on(from_haas, false, line);
         for line in [
             "#1=#5221",
             "#101=[#5021+#4001]",
             "#500=#14001",
             "#1=#3000",
             "#1=#0",
+            "#3004=2",
+            "#3003=1",
+            "#3003=0.",
+            "#1=#4003+#4016+#4120",
+            "#1=#7006+#14386",
         ] {
             assert_eq!(refused(true, line), None, "{line}");
             assert_eq!(refused(false, line), None, "{line}");
         }
-        // another use on the Haas (the G52 offset, the NGC's numbers, an element), or not
-        // known alike (#3004), or chosen by a value
+        // another use on the Haas (the G52 offset, the NGC's numbers, an element, the probe's
+        // calibration), a group numbered apart (FANUC's 14 is the work system, the Haas's 12),
+        // FANUC's #3003 bit 1, an axis past C of a work offset, or chosen by a value
         for line in [
             "#1=#5201",
             "#10100=1.",
             "#1=#30003.078",
-            "#1=#3004",
+            "#1=#101.5",
+            "#550=1.",
+            "#1=#580",
+            "#1=#4014",
+            "#1=#4012",
+            "#1=#4004",
+            "#1=#4124",
+            "#1=#4114",
+            "#3003=2",
+            "#3003=#1",
+            "#1=#3003",
+            "#1=#5227",
+            "#1=#7007",
+            "#1=#14021+#14027",
+            "#750=1.",
             "#[#1]=1.",
         ] {
             assert!(refused(true, line).is_some(), "{line}");
@@ -1545,10 +1637,58 @@ mod tests {
             m.contains("a tool offset value on a FANUC") && m.contains("length or diameter"),
             "{m}"
         );
-        // #700-#799: FANUC common variables, kept by the Haas control
-        assert!(refused(false, "#750=1.")
+        assert!(refused(false, "#555=1.")
             .unwrap()
-            .contains("no general purpose"));
+            .contains("probe's calibration"));
+        assert!(refused(false, "#720=1.")
+            .unwrap()
+            .contains("hidden variable"));
+        assert!(refused(false, "#750=1.").unwrap().contains("does not list"));
+        assert!(refused(false, "#3003=3")
+            .unwrap()
+            .contains("values 2 and 3"));
+        let element = refused(true, "#1=#101.5").unwrap();
+        assert!(
+            element.contains("outside the Haas NGC parameters") && !element.contains("element ("),
+            "{element}"
+        );
+        assert!(refused(true, "#1=#30003.078")
+            .unwrap()
+            .contains("a Haas NGC parameter element"));
+        // between lathes only the motion group, the letters, the alarm and the clocks: the
+        // lathes' group numbers and axis orders are not in a table at hand
+        for line in ["#1=#4001", "#1=#4120", "#3000=1", "#3004=1"] {
+            assert_eq!(refused_on(false, true, line), None, "{line}");
+        }
+        for line in ["#1=#4005", "#1=#5001", "#1=#5041", "#1=#5221", "#1=#7001"] {
+            assert!(refused_on(false, true, line).is_some(), "{line}");
+            assert_eq!(refused_on(false, false, line), None, "{line}");
+        }
+    }
+
+    #[test]
+    fn single_block_suppression_is_carried_as_a_literal_0_or_1() {
+        for t in [
+            "#3003=1",
+            "#3003=0",
+            "#3003 = 1.",
+            "#3003=1.0",
+            "#3003=01",
+            "#3003=.0",
+        ] {
+            assert!(single_block_literal(t.as_bytes()), "{t}");
+        }
+        for t in [
+            "#3003=2",
+            "#3003=1.5",
+            "#3003=#1",
+            "#3003=",
+            "#3003=.",
+            "#1=#3003",
+            "#3003=10",
+        ] {
+            assert!(!single_block_literal(t.as_bytes()), "{t}");
+        }
     }
 
     #[test]

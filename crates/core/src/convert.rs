@@ -3123,7 +3123,9 @@ impl Converter {
             };
             found
                 .and_then(|()| match self.c.fanuc_haas {
-                    Some(from_haas) => crate::between::fanuc_haas_words(from_haas, &words, &gs),
+                    Some(from_haas) => {
+                        crate::between::fanuc_haas_words(from_haas, self.c.lathe, &words, &gs)
+                    }
                     None => Ok(()),
                 })
                 .map_err(|r| ConvertError {
