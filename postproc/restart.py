@@ -575,7 +575,10 @@ class _Planner:
                 "codes (TG307), which the preamble cannot restore (only haas-lathe's are "
                 "known); restart at a block before the program switches them on, or after the "
                 "M03 or M04 that starts the main spindle again")
-        if walk.builder_m is not None and s.spindle == "stop":
+        starts = any(w.letter == "M" and w.number and w.number.isdigit()
+                     and int(w.number) in (3, 4) for w in self.block.word_objects())
+        if walk.builder_m is not None and s.spindle == "stop" and not starts:
+            # (a restart block that starts the main spindle itself turns, as the program does)
             at, code = walk.builder_m
             since = f"the tool change on line {change}" if change is not None else "the start"
             where = f"the tool change (line {change})" if change is not None else f"line {at}"

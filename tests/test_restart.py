@@ -2244,6 +2244,8 @@ def test_a_fanuc_lathe_live_tool_by_the_builders_m_codes_refuses_the_restart():
         "the C axis (Cs) mode, which this control switches by the machine builder's M codes "
         "(TG307), the preamble cannot restore; restart at or before the tool change (line 10), "
         "or after the M03 or M04 that starts the main spindle"), said
+    # at the block that starts the main spindle itself (N13, line 16): planned
+    assert plan(CROSS_HOLE.format(c=""), 16, lathe).preamble
     # turning again after M03: planned, C not positioned
     turning = plan(at_c, 19, lathe)
     assert not any("C45." in block for block in turning.preamble), turning.preamble
