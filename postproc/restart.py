@@ -37,7 +37,9 @@ its caller's), in a later program of a file that selects no units, after a lathe
 whose way in is not known, on a lathe whose tool came from where the previous tool stopped
 below the clearance plane, after a G7/G8 switch that leaves X in the other mode (until X is
 written again in the new mode), at the second block of a FANUC lathe's two-block cycle (its
-first block's data left out), and on
+first block's data left out), from a spindle orientation (M19) to the next M03/M04/M05, inside a
+Haas lathe's live tool or C axis mode, on any other lathe after a move of C or Y until the main
+spindle starts again (or with it stopped after a builder's M code since the tool change), and on
 families whose codes tapegate does not restore. The units
 code is written only where the program wrote one (:attr:`RestartPlan.notes` says so).
 The preamble is checked before it is offered: run through the core's modal state machine from
@@ -219,6 +221,16 @@ class _Facts:
     diameter_mode: tuple[int, int] | None  # LinuxCNC's G7/G8 as the program selected it, line
     diameter_switch: int | None  # a G7/G8 that changed the mode after X had a position
     diameter_rewritten: tuple[int, int] | None  # that switch, and the line X was written again
+    # per machine mode switched on (a Haas lathe's live tool, C axis): where to restart instead
+    mode_hints: dict[str, str]
+    live_modes: bool  # the profile names its live tool and C axis codes (haas-lathe)
+    oriented: tuple[int, int] | None  # the spindle orientation in force (M19): (line, code)
+    # a lathe's last C or Y move since the main spindle last started: (line, axis)
+    side_move: tuple[int, str] | None
+    # a lathe's last M code the profile's list lacks since the tool change: (line, code)
+    builder_m: tuple[int, int] | None
+    spin_line: int  # the last M03/M04's line (0: none)
+    unset: set[str]  # the axes whose number is no place to go to (a Haas lathe's Y after G113)
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -249,6 +261,10 @@ class _Facts:
             lane=(facts["lane"][0], list(facts["lane"][1])) if facts["lane"] else None,
             diameter_mode=facts["diameter_mode"], diameter_switch=facts["diameter_switch"],
             diameter_rewritten=facts["diameter_rewritten"],
+            mode_hints=dict(facts["mode_hints"]), live_modes=facts["live_modes"],
+            oriented=facts["oriented"], side_move=facts["side_move"],
+            builder_m=facts["builder_m"], spin_line=facts["spin_line"],
+            unset=set(facts["unset"]),
         )
 
 
@@ -465,9 +481,21 @@ class _Planner:
                               "to be compared in mm: the highest point the tool went to is not "
                               "known")
         if walk.unrestored:
-            at, what = min(walk.unrestored.values())
+            key, (at, what) = min(walk.unrestored.items(), key=lambda item: item[1])
+            hint = walk.mode_hints.get(key)
             raise self.refuse(f"{what} from line {at} is in force and the preamble cannot "
-                              "restore it")
+                              "restore it" + (f"; {hint}" if hint else ""))
+        if walk.oriented is not None:
+            # M19 "adjusts the spindle to a fixed position" (Haas mill manual, "M19 Orient
+            # Spindle"): stopped, at an angle, until M03/M04/M05 (review 35, finding 1)
+            at, code = walk.oriented
+            raise self.refuse(f"M{code:02d} on line {at} oriented the spindle (stopped at a fixed "
+                              "angle) and no M03, M04 or M05 has come since: the preamble "
+                              "would start it with the spindle mode of before, or leave it at "
+                              "another angle (a bar shifted through a bore, a static tool "
+                              f"fed); restart at or before line {at}, or after the M03 or M04 "
+                              "that starts the spindle again")
+        self.check_live_tool()
         if s.compensation in (41, 42):
             raise self.refuse(f"inside cutter compensation G{s.compensation} (from line "
                               f"{walk.comp_line}); restart at a block after the G40 that "
@@ -529,6 +557,37 @@ class _Planner:
                 "program before it may have set; tapegate cannot tell them (convert calls them "
                 f"ambiguous); restart at a block after the program's own "
                 f"{self.profile.inch_code}/{self.profile.metric_code}")
+
+    def check_live_tool(self) -> None:
+        """A lathe whose profile names no live tool or C axis codes (every one but haas-lathe):
+        on a FANUC lathe those modes are the machine builder's M codes (TG307), which the walk
+        cannot name and the preamble cannot restore (review 35, finding 2)."""
+        walk, s = self.walk, self.state
+        if not self.walker.lathe or walk.live_modes:
+            return
+        change = walk.tool_change
+        if walk.side_move is not None:
+            at, axis = walk.side_move
+            raise self.refuse(
+                f"the program moved {axis} on line {at} and has not started the main spindle "
+                "(M03, M04) since: the work of a live tool at an angle of C (or at a Y), whose "
+                "drive and C axis (Cs) mode this control switches by the machine builder's M "
+                "codes (TG307), which the preamble cannot restore (only haas-lathe's are "
+                "known); restart at a block before the program switches them on, or after the "
+                "M03 or M04 that starts the main spindle again")
+        starts = any(w.letter == "M" and w.number and w.number.isdigit()
+                     and int(w.number) in (3, 4) for w in self.block.word_objects())
+        if walk.builder_m is not None and s.spindle == "stop" and not starts:
+            # (a restart block that starts the main spindle itself turns, as the program does)
+            at, code = walk.builder_m
+            since = f"the tool change on line {change}" if change is not None else "the start"
+            where = f"the tool change (line {change})" if change is not None else f"line {at}"
+            raise self.refuse(
+                f"the main spindle is stopped and M{code:02d} on line {at}, an M code the "
+                f"profile's list lacks, came after {since}: a live tool's drive or the C axis "
+                "(Cs) mode, which this control switches by the machine builder's M codes "
+                "(TG307), the preamble cannot restore; restart at or before "
+                f"{where}, or after the M03 or M04 that starts the main spindle")
 
     def loaded_tool_length(self) -> bool:
         """LinuxCNC's G43 without H applies the length of the tool in the spindle (rs274ngc
@@ -662,6 +721,8 @@ class _Planner:
         lost = self.walk.lost.get(axis)
         if lost is not None:
             return lost.kind, lost
+        if axis in self.walk.unset:  # no place to go to: not positioned
+            return "unset", None
         value = self.state.position.get(axis)
         if value is None and axis in self.walk.seen:
             return "unknown", _Lost("unknown", self.block.line, "the modal state has lost it")

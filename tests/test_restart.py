@@ -2000,17 +2000,26 @@ def test_polar_and_cylindrical_interpolation_refuse_in_force_and_lose_their_axes
     machine = load_profile(profile)
     code = on.split()[0]
     template = POLAR
+    after = 14
+    spin = ""
     if "lathe" in profile:
         template = POLAR.replace("G17 G90 G94 G40 G49 G80 G54", "G40 G80").replace(
             "T1 M06", "T0101").replace("G00 G43 Z100. H1", "G00 Z100.").replace(" Y0 ", " ")
+        # (review 35, finding 2: after C moved, a FANUC lathe's restart waits for the main
+        # spindle's M03, the live tool's modes being the builder's M codes)
+        after, spin = 15, "N10 M03\n"
     assert refusal(template.format(on=on, off=""), 11, machine) == (
         f"cannot restart here: {code} ({'cylindrical' if '7.1' in on else 'polar coordinate'} "
         "interpolation) from line 9 is in force and the preamble cannot restore it")
-    cancelled = template.format(on=on, off=f"N10 {off}\n")
-    said = refusal(cancelled, 14, machine)
+    cancelled = template.format(on=on, off=f"N10 {off}\n{spin}")
+    said = refusal(cancelled, after, machine)
     assert "is not known here (line 12: " in said and "interpolation" in said, said
-    given = cancelled.replace("N11 G00 Z100.", "N11 G00 Z100. X50. C0")
-    assert plan(given, 14, machine).preamble
+    # (a lathe's C, the main spindle turning again, is not positioned: X alone)
+    given = cancelled.replace("N11 G00 Z100.", "N11 G00 Z100. X50." + ("" if spin else " C0"))
+    assert plan(given, after, machine).preamble
+    if spin:
+        said = refusal(template.format(on=on, off=f"N10 {off}\n"), 14, machine)
+        assert said.startswith("cannot restart here: the program moved C on line 11"), said
 
 
 def test_linuxcnc_work_systems_7_to_9_and_fanuc_g54_2_refuse_in_force():
@@ -2086,13 +2095,15 @@ def test_a_fanuc_lathe_g07_1_gives_its_radius_by_h_and_loses_the_axes_beside_it(
     assert refusal(CYLINDER.format(on="G07.1 H57299", off="G07.1 H0"), 8, lathe) == (
         "cannot restart here: G07.1 (cylindrical interpolation) from line 7 is in force and "
         "the preamble cannot restore it")
-    said = refusal(CYLINDER.format(on="G07.1 H57299", off="G07.1 H0"), 11, lathe)
+    # (the main spindle started again after the cancel: review 35, finding 2 refuses a
+    # restart after C moved until then)
+    said = refusal(CYLINDER.format(on="G07.1 H57299", off="G07.1 H0\nN75 M03"), 11, lathe)
     assert "the position of Z is not known here (line 9: G07.1 ends the cylindrical" in said
-    beside = CYLINDER.format(on="G07.1 C0 G00 X70.", off="G00 Z5.")
-    assert refusal(beside, 10, lathe) == ("cannot restart here: the position of X is not known "
+    beside = CYLINDER.format(on="G07.1 C0 G00 X70.", off="G00 Z5.\nN75 M03")
+    assert refusal(beside, 11, lathe) == ("cannot restart here: the position of X is not known "
                                           "here (line 7: X70. in a G07.1 block)")
     # given again, the restart is planned
-    assert plan(beside.replace("N8 G01 X50.", "N8 G01 X50. C0"), 11, lathe).preamble
+    assert plan(beside, 12, lathe).preamble
 
 
 MACRO_M = ("%\nO1000\nN1 G21 G17 G90 G40 G80 G54\nN2 T1 M06\nN3 S1000 M03\n"
@@ -2125,13 +2136,20 @@ def test_a_lathe_restart_the_program_way_in_sets_its_c_axis_first():
     the main spindle stopped) set X and Z but left C where the operator had it; the other
     axes go to their place at the clearance, before the way in. Review 34, finding 2: with
     the main spindle turning (M03) C is the spindle, in no position: it is not sent."""
-    lathe = load_profile("fanuc-lathe")
+    lathe = load_profile("haas-lathe")
     text = GROOVE.replace("N50 M08\n", "N50 M08\nN55 G00 C30.\n")
     stopped = plan(text.replace("N30 G97 S600 M03", "N30 M05"), 11, lathe)
     assert stopped.preamble[-3:] == ["G00 C30.", "G00 X52. Z-20.", "G01 X40. F0.05"]
     turning = plan(text, 11, lathe)
     assert turning.preamble[-2:] == ["G00 X52. Z-20.", "G01 X40. F0.05"]
     assert not any("C30." in block for block in turning.preamble)
+    # (review 35, finding 2) a FANUC lathe, whose live tool and C axis modes are the
+    # builder's M codes: refused after C moved, until the main spindle starts again
+    fanuc = load_profile("fanuc-lathe")
+    for program in (text, text.replace("N30 G97 S600 M03", "N30 M05")):
+        assert refusal(program, 11, fanuc).startswith(
+            "cannot restart here: the program moved C on line 8 and has not started the main "
+            "spindle (M03, M04) since")
 
 
 def test_a_haas_lathe_live_tool_or_c_axis_in_force_refuses_the_restart():
@@ -2150,6 +2168,171 @@ def test_a_haas_lathe_live_tool_or_c_axis_in_force_refuses_the_restart():
         "cannot restart here: M154 (C axis engage) from line 5 is in force")
     ended = text.format(off="M135\nM155\n")
     assert plan(ended, 18, haas).preamble
+
+
+# -- review 35: the restart's safety faults ---------------------------------------------------
+
+# A fine boring bar's way out (N6-N9: oriented, shifted off the wall, out through the bore),
+# then the spindle started again. N8 is line 10, N10 line 12.
+ORIENTED = ("%\nO1000\nN1 G21 G17 G90 G40 G80 G54\nN2 T3 M06\nN3 S600 M03\n"
+            "N4 G00 G43 H3 X20. Y10. Z5.\nN5 G01 Z-30. F50.\nN6 M19\nN7 G00 X19.8\n"
+            "N8 G00 Z5.\nN9 G00 X20.\nN10 M03\nN11 G00 X40.\nM30\n%\n")
+# A Haas lathe's keyway: a static tool fed along Z with the spindle oriented (N9 is line 11).
+KEYWAY = ("%\nO1000\nN1 G20 G18 G40 G99\nN2 T0101\nN3 G97 S500 M03\nN4 G00 X2. Z0.1\n"
+          "N5 T0909\nN6 M19 R45.\nN7 G98\nN8 G00 X1.1 Z0.1\nN9 G01 Z-0.8 F10.\n"
+          "N10 G00 X1.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_an_oriented_spindle_refuses_a_restart_until_it_turns_again(profile):
+    """Review 35, finding 1: M19 (`spindle-orient`: "adjusts the spindle to a fixed position",
+    Haas mill manual, "M19 Orient Spindle") left the modal state's M03 in force, so the
+    preamble started the spindle with the boring bar shifted off-centre in the bore. Refused
+    from the M19 to the next M03, M04 or M05, naming both places to restart."""
+    machine = load_profile(profile)
+    said = refusal(ORIENTED, 10, machine)
+    assert said == (
+        "cannot restart here: M19 on line 8 oriented the spindle (stopped at a fixed angle) "
+        "and no M03, M04 or M05 has come since: the preamble would start it with the spindle "
+        "mode of before, or leave it at another angle (a bar shifted through a bore, a static "
+        "tool fed); restart at or before line 8, or after the M03 or M04 that starts the "
+        "spindle again"), said
+    assert refusal(ORIENTED, 12, machine).startswith("cannot restart here: M19 on line 8")
+    # at the M19 itself, and after the M03 that starts the spindle again: planned
+    assert any("S600 M03" in block for block in plan(ORIENTED, 8, machine).preamble)
+    assert any("S600 M03" in block for block in plan(ORIENTED, 13, machine).preamble)
+    # an M05 after it: the spindle stopped, as with no M19
+    stopped = ORIENTED.replace("N9 G00 X20.", "N9 G00 X20. M05")
+    assert not any("M03" in block for block in plan(stopped, 12, machine).preamble)
+
+
+def test_a_haas_lathe_oriented_spindle_refuses_a_restart_of_its_static_tool():
+    """Review 35, finding 1, on a Haas lathe: the keyway's static tool fed along Z with the
+    spindle oriented (M19 R45.) was planned with `G97 S500 M03`."""
+    haas = load_profile("haas-lathe")
+    assert refusal(KEYWAY, 11, haas).startswith(
+        "cannot restart here: M19 on line 8 oriented the spindle")
+
+
+# A FANUC lathe's cross hole by the builder's codes (M45 C axis on, M13 live tool; neither in
+# fanuc-lathe's list): T0606 is line 10, M13 line 12, N95 line 13.
+CROSS_HOLE = ("%\nO1000\nN1 G20 G18 G40 G99\nN2 T0101\nN3 G97 S800 M03\n"
+              "N4 G00 X3. Z0.1\nN5 G01 Z-1. F0.01\nN6 G00 X3.2\nN6 M05\nN7 T0606\n"
+              "N8 M45\nN9 G98 M13 S1500\n{c}N10 G00 X3.2 Z-0.5\nN11 G01 X1.5 F4.\n"
+              "N12 G00 X3.2 Z0.1\nN13 T0101 G99 G97 S800 M03\nN14 G00 X3.4 Z0.1\n"
+              "N15 G01 Z-0.2 F0.01\nM30\n%\n")
+
+
+def test_a_fanuc_lathe_live_tool_by_the_builders_m_codes_refuses_the_restart():
+    """Review 35, finding 2: a FANUC lathe's live tool and C axis (Cs) mode are the builder's M
+    codes (TG307), which fanuc-lathe's list does not name: the radial drill was planned with
+    the live tool stopped (or the main spindle turning) and C where the operator left it.
+    After a C (or Y) move, refused until the main spindle's M03/M04; with the main spindle
+    stopped, refused after an M code the list lacks since the tool change. A turning pass
+    after M03 is planned."""
+    lathe = load_profile("fanuc-lathe")
+    at_c = CROSS_HOLE.format(c="N95 G00 C45.\n")
+    said = refusal(at_c, 15, lathe)
+    assert said.startswith("cannot restart here: the program moved C on line 13 and has not "
+                           "started the main spindle (M03, M04) since"), said
+    assert "the machine builder's M codes (TG307)" in said
+    # no C word (a hole on the centre line, C left as it is): the live tool's code named
+    said = refusal(CROSS_HOLE.format(c=""), 13, lathe)
+    assert said == (
+        "cannot restart here: the main spindle is stopped and M13 on line 12, an M code the "
+        "profile's list lacks, came after the tool change on line 10: a live tool's drive or "
+        "the C axis (Cs) mode, which this control switches by the machine builder's M codes "
+        "(TG307), the preamble cannot restore; restart at or before the tool change (line 10), "
+        "or after the M03 or M04 that starts the main spindle"), said
+    # at the block that starts the main spindle itself (N13, line 16): planned
+    assert plan(CROSS_HOLE.format(c=""), 16, lathe).preamble
+    # turning again after M03: planned, C not positioned
+    turning = plan(at_c, 19, lathe)
+    assert not any("C45." in block for block in turning.preamble), turning.preamble
+    # a builder's code with the main spindle turning (a turning pass) is planned as before
+    assert plan(CROSS_HOLE.format(c="").replace("N6 M05", "N6 M23"), 7, lathe).preamble
+
+
+def test_a_lathe_way_in_stops_at_a_move_of_c():
+    """Review 35, finding 3: a lathe's way in replayed X and Z moves made at another C: the
+    hole at C0 drilled to X0.8 was replayed after the preamble set C90., where the program
+    drills to X1.2 only. A move of C (or Y, B) ends the way: the moves before it are not
+    replayed."""
+    haas = load_profile("haas-lathe")
+    text = ("%\nO1000\nN1 G20 G18 G40 G99\nN2 T0505\nN3 M05\nN4 G98\n"
+            "N5 G00 X3. Z0.1 C0.\nN6 G00 X2.4 Z-0.4\nN7 G01 X0.8 F5.\nN8 G00 X2.4\n"
+            "N9 G00 C90.\nN10 G01 X1.2 F5.\nN11 G00 X2.4\nM30\n%\n")
+    planned = plan(text, 12, haas)  # at N10
+    assert any("C90." in block for block in planned.preamble), planned.preamble
+    assert not any("X0.8" in block for block in planned.preamble), planned.preamble
+
+
+def test_a_haas_g107_loses_its_rotary_axis_at_the_cancel():
+    """Review 35, finding 4: a Haas G107 turns the rotary axis for the moves of the linear one
+    ("translates all programmed motion occurring in a specified linear axis into the
+    equivalent motion along the surface of a cylinder", Haas mill manual, G107); the A0 of its
+    block only names the axis. After the cancel A was planned at 0, where the moves had left
+    it at 43 degrees."""
+    haas = load_profile("haas-mill")
+    text = ("%\nO1000\nN1 G20 G17 G40 G80 G90 G54\nN2 T2 M06\nN3 G00 X0 Y0 A0\n"
+            "N4 S2000 M03\nN5 G43 H2 Z0.5\nN6 G107 A0 Y0 R2.\nN7 G01 Z-0.02 F8.\n"
+            "N8 G01 Y1.5\nN9 G00 Z0.5\nN10 G107\nN11 G00 X2. Y0 Z0.5\nN12 G01 Z-0.05 F8.\n"
+            "M30\n%\n")
+    said = refusal(text, 14, haas)
+    assert said.startswith("cannot restart here: the position of A is not known here (line "
+                           "12: G107 ends the cylindrical interpolation"), said
+    # A given again: planned
+    assert plan(text.replace("N11 G00 X2. Y0", "N11 G00 X2. Y0 A0"), 14, haas).preamble
+    # a G107 naming no rotary axis loses the one the program moved
+    bare = text.replace("G107 A0 Y0 R2.", "G107 Y0 R2.")
+    assert "position of A is not known" in refusal(bare, 14, haas)
+
+
+# A Haas lathe's XC interpolation (G112: X Y to X C, Y the virtual axis) with a live tool, then
+# turning again: N14 G113 is line 15, N21 line 22.
+POLAR_HAAS = ("%\nO1000\nN1 G20 G18 G40 G99 G54\nN2 T0606\nN3 M154\nN4 G98\n"
+              "N5 P1500 M133\nN6 G00 X3. Z0.1 C0.\nN7 G112\nN8 G17\nN9 G01 Z-0.05 F6.\n"
+              "N10 G01 X0.6 Y0.3\nN11 G01 X-0.6\nN12 G00 Z0.1\n{y}N14 G113\nN15 M135\n"
+              "N16 M155\nN17 G18 G99\nN18 G97 S700 M03\nN19 G00 X2.5 Z0.1\n"
+              "N20 G01 Z-0.6 F0.008\nN21 G00 X2.7\nM30\n%\n")
+
+
+def test_a_haas_lathe_y_after_g112_is_no_place_and_c_is_lost():
+    """Review 35, finding 8: after a Haas lathe's G112/G113 every restart was refused on Y,
+    the virtual axis of the XC plane (Autodesk's HAAS Lathe post writes Y only under G112),
+    which turning programs never write again. After G113 Y has no place (not positioned) and
+    C, which the control turned, is lost; a Y the program had before G112 (a Y-axis lathe's)
+    stays not known."""
+    haas = load_profile("haas-lathe")
+    planned = plan(POLAR_HAAS.format(y=""), 22, haas)
+    assert not any("Y" in block or "C" in block for block in planned.preamble[1:]), \
+        planned.preamble
+    # a real Y before the G112: its place after the G113 is not known
+    real = POLAR_HAAS.format(y="").replace("N6 G00 X3. Z0.1 C0.", "N6 G00 X3. Y0 Z0.1 C0.")
+    assert "the position of Y is not known here" in refusal(real, 22, haas)
+
+
+def test_a_haas_lathe_c_axis_disengaged_is_not_positioned():
+    """Review 35, finding 9: after M155 (C axis disengage) the approach positioned C at the
+    live tool's last angle before the turning tool's own M03; a C word is no position then.
+    Not positioned, until the program writes C again."""
+    haas = load_profile("haas-lathe")
+    text = POLAR_HAAS.format(y="").replace("N7 G112\nN8 G17\n", "N7 G00 C30.\nN8 G18\n")
+    text = text.replace("N10 G01 X0.6 Y0.3\nN11 G01 X-0.6\n", "N10 G01 X1.5\nN11 G00 X3.\n")
+    # N17 (line 18): after M155, the main spindle not yet started
+    planned = plan(text, 18, haas)
+    assert not any("C30." in block for block in planned.preamble), planned.preamble
+
+
+def test_a_refusal_inside_a_live_tool_section_says_where_to_restart():
+    """Review 35, finding 10: a refusal inside a Haas lathe's live tool section named no place
+    to restart: it names the tool change before it and the codes that end the modes."""
+    haas = load_profile("haas-lathe")
+    said = refusal(POLAR_HAAS.format(y=""), 13, haas)
+    assert said == (
+        "cannot restart here: M154 (C axis engage) from line 5 is in force and the preamble "
+        "cannot restore it; restart at or before the tool change (line 4), or after the M135 "
+        "and M155 that end the modes"), said
 
 
 # -- two codes of one modal group before the restart point (TG304) ------------------------------

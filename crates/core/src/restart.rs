@@ -275,6 +275,33 @@ pub struct Walk {
     /// 2: a Haas lathe's `M154` and `M133 P2000` were planned past, the radial drill fed in
     /// with the live tool stopped).
     pub m_modes: Vec<(i64, &'static str, bool, String)>,
+    /// Per mode of [`Walk::m_modes`] switched on: where a restart can be made instead, for the
+    /// refusal (the tool change before it, or the mode's own code, and the codes that end it).
+    pub mode_hints: Vec<(&'static str, String)>,
+    /// The M codes of the profile's `spindle-orient` meaning (M19), set by the binding.
+    pub orient_codes: Vec<i64>,
+    /// The last spindle orientation in force (M19 on FANUC, Haas, OSP, SINUMERIK: "adjusts
+    /// the spindle to a fixed position", Haas mill manual, "M19 Orient Spindle"): its line and
+    /// code. The spindle stands oriented, not turning, until an M03, M04 or M05 (review 35,
+    /// finding 1: the preamble started it with the modal state's M03 of before the M19).
+    pub oriented: Option<(usize, i64)>,
+    /// A lathe's last move of C or Y (line, axis) since the main spindle last started (M03,
+    /// M04): C positioned, a live tool's milling or drilling at an angle (review 35, finding 2).
+    pub side_move: Option<(usize, u8)>,
+    /// A lathe's last M code the profile's list lacks since the last tool change (line, code):
+    /// on a FANUC lathe the live tool drive and the C-axis (Cs) mode are the builder's M codes
+    /// (TG307), which the walk cannot name.
+    pub builder_m: Option<(usize, i64)>,
+    /// The line of the last M03/M04 (0: none yet).
+    pub spin_line: usize,
+    /// The axes whose number in the modal state is no place the preamble goes to (bits of
+    /// [`AXES`] indexes): a Haas lathe's Y after G112/G113, the virtual axis of the XC plane
+    /// (Autodesk's HAAS Lathe post writes Y only under G112), and C after its disengage (a C
+    /// word then is no position). Not positioned, until the program writes the axis again.
+    pub unset: u16,
+    /// Whether Y had a position before the lathe's G112 in force: then its number after G113
+    /// is not known (the real Y of a Y-axis lathe), else the virtual axis, unset.
+    polar_y: bool,
     /// The line of the program's own last units code (G20/G21, a SINUMERIK's G70/G71/G700/
     /// G710): without one the units are the control's setting, which the preamble must not
     /// choose for it.
@@ -530,6 +557,14 @@ impl Walk {
             decimal_codes: None,
             lacks_m: None,
             m_modes: Vec::new(),
+            mode_hints: Vec::new(),
+            orient_codes: Vec::new(),
+            oriented: None,
+            side_move: None,
+            builder_m: None,
+            spin_line: 0,
+            unset: 0,
+            polar_y: false,
             units_line: None,
             program_name: None,
             m6_line: 0,
@@ -667,6 +702,24 @@ impl Walk {
                 "polar coordinate interpolation"
             };
             self.transform_cancel(line, code, name, 0);
+            if key == "12.1" && self.lathe {
+                // (review 35, finding 8) the polar interpolation turns the program's plane into
+                // X and C moves: C stands where the control turned it. A Haas lathe's Y under
+                // G112 is the plane's virtual axis (Autodesk's HAAS Lathe post writes Y only
+                // under G112, "required for G112"): no place after G113, unless Y had one
+                // before (a Y-axis lathe's real Y, whose number the modal state no longer has)
+                let what =
+                    format!("{code} ends the {name}: the control turned C for the moves under it");
+                if axis_index(b'C').is_some_and(|i| self.lost[i].is_none()) {
+                    self.lose_unknown(b'C', line, what.into_bytes());
+                }
+                if self.control == Control::Haas && !self.polar_y {
+                    if let Some(i) = axis_index(b'Y') {
+                        self.lost[i] = None;
+                        self.unset |= bit(i);
+                    }
+                }
+            }
         }
     }
 
@@ -711,6 +764,33 @@ impl Walk {
             radius
         };
         if on {
+            if self.control == Control::Haas {
+                // (review 35, finding 4) the mapping turns the rotary axis for the moves of the
+                // linear one ("translates all programmed motion occurring in a specified linear
+                // axis into the equivalent motion along the surface of a cylinder", Haas mill
+                // manual, G107): its word here names the axis, no position, and it is lost at
+                // the cancel. With none named, every rotary axis the program has moved (or all)
+                let mut named = rotary
+                    .iter()
+                    .filter(|&&a| {
+                        plain_words.iter().any(|&(l, _)| l == a)
+                            || axis_index(a).is_some_and(|i| params & bit(i) != 0)
+                    })
+                    .filter_map(|&a| axis_index(a))
+                    .fold(0u16, |m, i| m | bit(i));
+                if named == 0 {
+                    let all = rotary
+                        .iter()
+                        .filter_map(|&a| axis_index(a))
+                        .fold(0u16, |m, i| m | bit(i));
+                    named = if self.seen & all != 0 {
+                        self.seen & all
+                    } else {
+                        all
+                    };
+                }
+                self.transformed |= named;
+            }
             let what = format!("{code} (cylindrical interpolation)");
             self.set_unrestored("7.1", line, what);
         } else {
@@ -1082,9 +1162,53 @@ impl Walk {
                 continue;
             };
             if on {
+                if !self.unrestored.iter().any(|(k, _, _)| k == mode) {
+                    // (review 35, finding 10) where a restart can be made instead: at or before
+                    // the tool change before it (or the code itself), or after the codes
+                    // that end the modes
+                    let before = match self.tool_change {
+                        Some(t) => format!("the tool change (line {t})"),
+                        None => format!("line {line}"),
+                    };
+                    let ends: Vec<String> = self
+                        .m_modes
+                        .iter()
+                        .filter(|(_, _, on, _)| !on)
+                        .map(|(code, _, _, _)| format!("M{code}"))
+                        .collect();
+                    let hint = format!(
+                        "restart at or before {before}, or after the {} that end{}",
+                        ends.join(" and "),
+                        if ends.len() == 1 {
+                            "s it"
+                        } else {
+                            " the modes"
+                        }
+                    );
+                    self.mode_hints.retain(|(k, _)| *k != mode);
+                    self.mode_hints.push((mode, hint));
+                }
                 self.set_unrestored(mode, line, format!("M{m} ({function})"));
             } else {
                 self.drop_unrestored(mode);
+                if mode == "C axis" {
+                    // (review 35, finding 9) C disengaged: no place of C to go to
+                    if let Some(i) = axis_index(b'C') {
+                        self.lost[i] = None;
+                        self.unset |= bit(i);
+                    }
+                }
+            }
+        }
+        for &m in &ms {
+            if self.orient_codes.contains(&m) {
+                self.oriented = Some((line, m));
+            } else if matches!(m, 3..=5) {
+                self.oriented = None;
+            }
+            if matches!(m, 3 | 4) {
+                self.side_move = None;
+                self.spin_line = line;
             }
         }
         let unlisted_m = self
@@ -1148,6 +1272,19 @@ impl Walk {
             .iter()
             .any(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'T')));
         self.tool(line, &gs, &ms, &plain_words, tool_word, after.length_offset);
+        if self.lathe && self.m_modes.is_empty() {
+            if let Some(lacks) = &self.lacks_m {
+                let builder = ms.iter().copied().rfind(|&m| {
+                    usize::try_from(m)
+                        .ok()
+                        .is_none_or(|n| lacks.get(n).copied().unwrap_or(true))
+                        && !self.orient_codes.contains(&m)
+                });
+                if let Some(m) = builder {
+                    self.builder_m = Some((line, m));
+                }
+            }
+        }
         // a mirror's axes, a G92 shift's cancel or restore, a tilted plane's origin: data,
         // no move
         let data = gdec.iter().any(|d| {
@@ -1321,11 +1458,17 @@ impl Walk {
             // FANUC mill's G112/G113/G107 and a Haas mill's G107 were planned past)
             if self.control.family() == Family::MacroB && !(self.haas_mill() && g != 107) {
                 match g {
-                    112 => self.set_unrestored(
-                        "12.1",
-                        line,
-                        "G112 (polar coordinate interpolation)".into(),
-                    ),
+                    112 => {
+                        if !self.unrestored.iter().any(|(k, _, _)| k == "12.1") {
+                            self.polar_y = axis_index(b'Y')
+                                .is_some_and(|i| self.seen & bit(i) != 0 || self.lost[i].is_some());
+                        }
+                        self.set_unrestored(
+                            "12.1",
+                            line,
+                            "G112 (polar coordinate interpolation)".into(),
+                        );
+                    }
                     113 => self.interpolation_cancel("12.1", line, "G113"),
                     107 => self.cylindrical(line, "G107", plain_words, param_axes.0),
                     _ => {}
@@ -1675,6 +1818,7 @@ impl Walk {
             self.t_token = Some(t);
         }
         if self.lathe && (tool_word || ms.contains(&6)) {
+            self.builder_m = None;
             self.moves.clear();
             self.tool_change = Some(line);
             self.tool_moved = false;
@@ -2032,6 +2176,31 @@ impl Walk {
                 }
             }
         }
+        for &(letter, _) in &letters {
+            // the axis written again: a place of the program's (a U/W increment is lost above)
+            if let Some(i) = axis_index(self.axis(letter)) {
+                self.unset &= !bit(i);
+            }
+        }
+        // (review 35, finding 3) a lathe's move of another axis (C, Y, B) is no way in along
+        // X and Z: the moves before it were made at another angle or Y, and a replay of them
+        // after the preamble has set C or Y would go where the program did not (a hole's depth
+        // at C0 drilled again at C90); it breaks the chain and the lane
+        let side = letters
+            .iter()
+            .map(|&(l, _)| self.axis(l))
+            .find(|&a| a != b'X' && a != b'Z');
+        if self.lathe && side.is_some() {
+            self.moves.clear();
+            self.lane = None;
+            let yc = letters
+                .iter()
+                .map(|&(l, _)| self.axis(l))
+                .find(|&a| a == b'C' || a == b'Y');
+            if let Some(axis) = yc {
+                self.side_move = Some((line, axis));
+            }
+        }
         if !letters.is_empty() && self.transforms_on() {
             let mut bits = 0;
             for &(letter, _) in &letters {
@@ -2076,14 +2245,21 @@ impl Walk {
                 let one = Move {
                     from,
                     to,
-                    motion: if lost { None } else { after.motion },
+                    // (a move of X or Z with C or Y: its path is not along X and Z alone)
+                    motion: if lost || side.is_some() {
+                        None
+                    } else {
+                        after.motion
+                    },
                     line,
                     first,
                 };
                 self.tool_moved = true;
                 self.moves.insert(0, one);
                 self.moves.truncate(MOVES_KEPT);
-                self.widen_lane(from, to, !lost, after.units);
+                if side.is_none() {
+                    self.widen_lane(from, to, !lost, after.units);
+                }
             }
         }
         if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {
@@ -2579,5 +2755,88 @@ mod tests {
         step_text(&mut linuxcnc, 1, b"G71 U2. R0.5", &lathe_state(52, 2, 0));
         assert!(linuxcnc.cycle_data.is_empty());
         assert_eq!(linuxcnc.cycle_first_block(&second), None);
+    }
+
+    #[test]
+    fn a_lathe_move_of_c_ends_the_way_in_and_is_noted_until_the_spindle_starts() {
+        // review 35, findings 2 and 3
+        let mut walk = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut walk, 1, b"T0505", &state());
+        step_text(&mut walk, 2, b"G00 X60. Z2.", &lathe_state(60, 2, 0));
+        step_text(&mut walk, 3, b"G00 X50. Z-10.", &lathe_state(50, -10, 0));
+        assert_eq!(walk.moves.len(), 2);
+        assert!(walk.lane.is_some());
+        step_text(&mut walk, 4, b"G00 C90.", &lathe_state(50, -10, 0));
+        assert!(walk.moves.is_empty() && walk.lane.is_none());
+        assert_eq!(walk.side_move, Some((4, b'C')));
+        // a move of X with C: kept, but as no way (its path is not along X and Z alone)
+        step_text(&mut walk, 5, b"G00 X40. C0.", &lathe_state(40, -10, 0));
+        assert_eq!(walk.moves.len(), 1);
+        assert_eq!(walk.moves[0].motion, None);
+        step_text(&mut walk, 6, b"M03", &lathe_state(40, -10, 0));
+        assert_eq!((walk.side_move, walk.spin_line), (None, 6));
+    }
+
+    #[test]
+    fn the_spindle_orientation_holds_until_m03_m04_or_m05() {
+        // review 35, finding 1
+        let mut walk = Walk::new(Control::Haas, false, false);
+        walk.orient_codes = vec![19];
+        step_text(&mut walk, 1, b"S800 M03", &state());
+        step_text(&mut walk, 2, b"M19 P0", &state());
+        assert_eq!(walk.oriented, Some((2, 19)));
+        step_text(&mut walk, 3, b"G00 X1.", &state());
+        assert_eq!(walk.oriented, Some((2, 19)));
+        step_text(&mut walk, 4, b"M05", &state());
+        assert_eq!(walk.oriented, None);
+    }
+
+    #[test]
+    fn a_haas_g107_loses_its_rotary_axis_at_the_cancel() {
+        // review 35, finding 4
+        let mut walk = Walk::new(Control::Haas, false, false);
+        let a = axis_index(b'A').unwrap_or(0);
+        step_text(&mut walk, 1, b"G00 X0 Y0 A0", &state());
+        step_text(&mut walk, 2, b"G107 A0 Y0 R1.", &state());
+        step_text(&mut walk, 3, b"G01 Y2.", &state());
+        assert!(walk.lost[a].is_none());
+        step_text(&mut walk, 4, b"G107", &state());
+        assert_eq!(walk.lost[a].as_ref().map(|l| l.line), Some(4));
+    }
+
+    #[test]
+    fn a_haas_lathe_g113_loses_c_and_leaves_the_virtual_y_unset() {
+        // review 35, findings 8 and 9
+        let (c, y) = (axis_index(b'C').unwrap_or(0), axis_index(b'Y').unwrap_or(0));
+        let mut walk = Walk::new(Control::Haas, true, true);
+        walk.m_modes = vec![
+            (154, "C axis", true, "C axis engage".into()),
+            (155, "C axis", false, "C axis disengage".into()),
+        ];
+        step_text(&mut walk, 1, b"T0505", &state());
+        step_text(&mut walk, 2, b"M154", &state());
+        assert!(walk.mode_hints.iter().any(|(k, h)| {
+            *k == "C axis"
+            && h == "restart at or before the tool change (line 1), or after the M155 that ends it"
+        }));
+        step_text(&mut walk, 3, b"G00 X2. Z0.1 C0.", &lathe_state(2, 0, 0));
+        step_text(&mut walk, 4, b"G112", &state());
+        step_text(&mut walk, 5, b"G01 X0.5 Y0.5", &state());
+        step_text(&mut walk, 6, b"G113", &state());
+        assert_eq!(walk.lost[c].as_ref().map(|l| l.line), Some(6));
+        assert!(walk.lost[y].is_none() && walk.unset & bit(y) != 0);
+        step_text(&mut walk, 7, b"M155", &state());
+        assert!(walk.lost[c].is_none() && walk.unset & bit(c) != 0);
+        step_text(&mut walk, 8, b"G00 C10.", &state());
+        assert_eq!(walk.unset & bit(c), 0);
+        // a Y the program had before G112: not known after G113
+        let mut real = Walk::new(Control::Haas, true, true);
+        step_text(&mut real, 1, b"G00 X2. Y0 Z0.1", &lathe_state(2, 0, 0));
+        real.seen |= bit(y);
+        step_text(&mut real, 2, b"G112", &state());
+        step_text(&mut real, 3, b"G01 X0.5 Y0.5", &state());
+        step_text(&mut real, 4, b"G113", &state());
+        assert_eq!(real.lost[y].as_ref().map(|l| l.line), Some(4));
+        assert_eq!(real.unset & bit(y), 0);
     }
 }

@@ -132,6 +132,9 @@ impl RestartWalk {
                 _ => None,
             };
             let number = code.strip_prefix('M').and_then(|n| n.parse::<i64>().ok());
+            if let (Some(n), "spindle-orient") = (number, key.as_str()) {
+                walk.orient_codes.push(n);
+            }
             if let (Some((name, on)), Some(n)) = (mode, number) {
                 walk.m_modes.push((n, name, on, function.clone()));
             }
@@ -409,6 +412,27 @@ impl RestartWalk {
         d.set_item("program_name", optional_text(py, &w.program_name)?)?;
         d.set_item("m6_line", w.m6_line)?;
         d.set_item("coolant", w.coolant.clone())?;
+        let hints = PyDict::new(py);
+        for (mode, hint) in &w.mode_hints {
+            hints.set_item(*mode, hint.as_str())?;
+        }
+        d.set_item("mode_hints", hints)?;
+        d.set_item("live_modes", !w.m_modes.is_empty())?;
+        d.set_item("oriented", w.oriented)?;
+        d.set_item(
+            "side_move",
+            w.side_move
+                .map(|(line, axis)| (line, (axis as char).to_string())),
+        )?;
+        d.set_item("builder_m", w.builder_m)?;
+        d.set_item("spin_line", w.spin_line)?;
+        let unset: String = AXES
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| w.unset & (1 << i) != 0)
+            .map(|(_, &a)| a as char)
+            .collect();
+        d.set_item("unset", unset)?;
         let moves = PyList::empty(py);
         for m in &w.moves {
             let mut ends = Vec::new();
