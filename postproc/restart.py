@@ -577,6 +577,20 @@ class _Planner:
                 "M03 or M04 that starts the main spindle again")
         starts = any(w.letter == "M" and w.number and w.number.isdigit()
                      and int(w.number) in (3, 4) for w in self.block.word_objects())
+        carried = (s.spindle in ("cw", "ccw") and change is not None
+                   and walk.spin_line < change)
+        if walk.builder_m is not None and carried and not starts:
+            # the spindle turns as a tool before this one started it, and a code the list
+            # lacks came after the change (a FANUC lathe's builder M19 orients it for a
+            # static tool, review 35): the preamble's M03 would turn what the program holds
+            at, code = walk.builder_m
+            raise self.refuse(
+                f"M{code:02d} on line {at}, an M code the profile's list lacks, came after the "
+                f"tool change on line {change}, and the main spindle has not been started "
+                f"since (its M03/M04 is on line {walk.spin_line}): the builder's code may have "
+                "stopped or oriented it (a spindle orientation, a live tool), which the "
+                "preamble cannot know; restart at or before the tool change (line "
+                f"{change}), or after the M03 or M04 that starts the main spindle again")
         if walk.builder_m is not None and s.spindle == "stop" and not starts:
             # (a restart block that starts the main spindle itself turns, as the program does)
             at, code = walk.builder_m

@@ -2253,6 +2253,29 @@ def test_a_fanuc_lathe_live_tool_by_the_builders_m_codes_refuses_the_restart():
     assert plan(CROSS_HOLE.format(c="").replace("N6 M05", "N6 M23"), 7, lathe).preamble
 
 
+def test_a_fanuc_lathe_builder_code_after_a_tool_change_with_the_spindle_carried_refuses():
+    """Review 35, finding 1 left open by fix35r: fanuc-lathe's list has no M19 (on a FANUC every
+    M code but the CNC's own is the builder's), so a keyway tool's `M19 R90.` after T0707 was
+    planned with `G97 S500 M03`: the spindle the program holds still turned by the preamble.
+    An M code the list lacks after a tool change that started no spindle (the M03 before it
+    carried) refuses, naming both lines; where the tool starts the spindle itself, the
+    builder's code after it is planned as before."""
+    lathe = load_profile("fanuc-lathe")
+    text = ("%\nO1003\nG20 G18 G40 G80 G99\nT0101\nG97 S500 M03\nG00 X2. Z0.1\n"
+            "G01 Z-0.5 F0.01\nG00 X2.2 Z0.1\nT0707\nM19 R90.\nG98\nG00 X0.9 Z0.1\n"
+            "G01 X1.0 F20.\nG01 Z-1. F20.\nG00 X0.9\nM30\n%\n")
+    said = refusal(text, 15, lathe)  # the stroke along Z
+    assert said == (
+        "cannot restart here: M19 on line 10, an M code the profile's list lacks, came after "
+        "the tool change on line 9, and the main spindle has not been started since (its "
+        "M03/M04 is on line 5): the builder's code may have stopped or oriented it (a spindle "
+        "orientation, a live tool), which the preamble cannot know; restart at or before the "
+        "tool change (line 9), or after the M03 or M04 that starts the main spindle again"), said
+    assert plan(text, 9, lathe).preamble  # at the tool change itself
+    turning = text.replace("T0707\nM19 R90.\nG98", "T0707\nG97 S500 M03\nM23\nG99")
+    assert plan(turning, 15, lathe).preamble  # the tool's own M03, then the builder's M23
+
+
 def test_a_lathe_way_in_stops_at_a_move_of_c():
     """Review 35, finding 3: a lathe's way in replayed X and Z moves made at another C: the
     hole at C0 drilled to X0.8 was replayed after the preamble set C90., where the program
