@@ -49,7 +49,7 @@ reset it must reach the state in force before the restart block.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from decimal import ROUND_CEILING, Decimal, InvalidOperation
 from functools import partial
 from itertools import chain
@@ -230,6 +230,7 @@ class _Facts:
     # a lathe's last M code the profile's list lacks since the tool change: (line, code)
     builder_m: tuple[int, int] | None
     spin_line: int  # the last M03/M04's line (0: none)
+    coolant_line: int  # the last M07/M08's line (0: none)
     unset: set[str]  # the axes whose number is no place to go to (a Haas lathe's Y after G113)
 
     @classmethod
@@ -264,6 +265,7 @@ class _Facts:
             mode_hints=dict(facts["mode_hints"]), live_modes=facts["live_modes"],
             oriented=facts["oriented"], side_move=facts["side_move"],
             builder_m=facts["builder_m"], spin_line=facts["spin_line"],
+            coolant_line=facts["coolant_line"],
             unset=set(facts["unset"]),
         )
 
@@ -395,6 +397,15 @@ class _Planner:
         self.block = block
         self.file = file
         self.state = walker.state
+        if walker.family in ("fanuc", "haas") and not walker.lathe and facts.m6_line:
+            # a mill's M06 stops the spindle and the coolant (Haas mill manual, NGC, "M06 Tool
+            # Change"; a FANUC's is the builder's macro, which does so on the machines at
+            # hand): off until the program's own M03/M04, M07/M08 after it (review 36,
+            # finding 1: a probe loaded by T20 M06 was spun at the last tool's S8000)
+            if facts.spin_line < facts.m6_line:
+                self.state = replace(self.state, spindle="stop")
+            if facts.coolant_line < facts.m6_line:
+                self.state = replace(self.state, coolant="off")
         # a lathe's cycle returns to its start point: that is where the tool is
         self.state.position.update(facts.held)
         self.units = self.state.units
@@ -846,7 +857,9 @@ class _Planner:
         restored: set[str] = set()
         last = "Z"
         lifts = ("X", "Z") if self.walker.lathe else ("Z",)
-        if places[last][0] == "unset" and any(a in known for a in AXES if a != last):
+        own_length = self.tool_change_length(places)
+        if (places[last][0] == "unset" and any(a in known for a in AXES if a != last)
+                and not own_length):
             moved = ", ".join(a for a in AXES if a in known)
             raise self.refuse(f"the program moves {moved} before it sets {last}: the height "
                               f"to approach from is not known; restart at an earlier block")
@@ -1112,6 +1125,35 @@ class _Planner:
                               "system is not known; restart at a block that gives every axis")
         self.state.position[axis] = value
         return value
+
+    def tool_change_length(self, places: dict[str, tuple[str, Any]]) -> bool:
+        """After a FANUC or Haas mill's M06 (Z at the tool change height, no place of the
+        program's: the walk leaves X Y Z unset until written): True where the restart block
+        itself sets the new tool's length offset and Z (`G43 H02 Z25.`), which then runs from
+        the height the preamble's own M06 leaves, X and Y placed there first as the program
+        placed them; the length offset of before the change is left out (the block sets its
+        own). Refused where the length offset in force was set before the M06 and the block
+        sets none: the old tool's H with the new tool, at a height the program never gave
+        (review 36, finding 1: T2 went down to Z25. with H01)."""
+        walk, s = self.walk, self.state
+        if (self.walker.lathe or self.walker.family not in ("fanuc", "haas")
+                or not walk.m6_line or places.get("Z", ("",))[0] != "unset"):
+            return False
+        gs = {w.number for w in self.block.word_objects() if w.letter == "G" and w.number}
+        sets_length = bool(gs & {"43", "44", "49"}) or any(
+            g.lstrip("0") in ("43", "44", "49") for g in gs)
+        if sets_length and self.block_target("Z") is not None:
+            self.state = replace(self.state, length_offset=49)
+            return True
+        if s.length_offset in (43, 44) and walk.g43_line < walk.m6_line and not sets_length:
+            h = f" {walk.h}" if walk.h else ""
+            raise self.refuse(
+                f"the length offset G{s.length_offset}{h} in force was set on line "
+                f"{walk.g43_line}, before the tool change on line {walk.m6_line}, and the "
+                "program has not moved Z since: the new tool is at the tool change height "
+                "with the old tool's length; restart at the block that sets the new tool's "
+                "length offset and Z (G43 H.. Z..), or at the tool change")
+        return False
 
     def block_target(self, axis: str) -> Decimal | None:
         """The restart block's own absolute target of ``axis``, if it gives one plainly."""

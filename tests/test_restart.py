@@ -82,12 +82,15 @@ def words(line: str) -> dict[str, Decimal]:
 
 def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, after: ModalState,
                     block_words: list[str], lathe: bool, work: int | None,
-                    cycle: bool = False) -> None:
+                    cycle: bool = False, unplaced: frozenset[str] = frozenset(),
+                    tool_change_mill: bool = False) -> None:
     """The preamble (and the restart block as sent) reach what a run from the start reached.
     ``work`` is the last G54-G59 before the block: on these controls G53 acts in its block only,
     where the modal state machine takes it for ISO's zero shift cancel. ``cycle``: a lathe
     cycle ran before the block, which returns to its start point where the modal state reads
-    its words as the place reached (the plan's state says where the tool is then)."""
+    its words as the place reached (the plan's state says where the tool is then).
+    ``unplaced``: the axes a FANUC or Haas mill's M06 left at the tool change height and the
+    program has not written since (no place of the program's; not positioned)."""
     moved = {a for a, v in plan.state.position.items() if before.position.get(a) != v}
     # where the position before the block is not known (lost to a change of work system, or
     # at a cycle's return level), the approach goes to the block's own target of the axis
@@ -120,6 +123,8 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
     for axis in before.position:
         if lathe and axis in "UW" and profile.dialect.family in ("fanuc", "haas"):
             continue  # X and Z incremental there, not axes of their own
+        if axis in unplaced and axis not in plan.restored:
+            continue
         if axis in plan.restored:
             assert state.position.get(axis) == plan.state.position[axis], (axis, plan.preamble)
         else:
@@ -130,6 +135,10 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
                        profile.dialect)
     sent.apply(block[0])
     final = sent.state
+    ms = {int(w[1:]) for w in block_words if w[:1] == "M" and w[1:].isdigit()}
+    if tool_change_mill and 6 in ms:  # the block's own M06, as walk_program reads it
+        final = replace(final, spindle=final.spindle if ms & {3, 4} else "stop",
+                        coolant=final.coolant if ms & {7, 8} else "off")
     for name in (*modes, "motion"):
         if name == "zero_shift" and one_shot:
             continue
@@ -197,11 +206,28 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
     cycle = False
     rapids: set[tuple[Point, Point]] = set()
     widest: Decimal | None = None
+    # a FANUC or Haas mill's M06 stops the spindle and the coolant and leaves Z at the tool
+    # change height (Haas mill manual, NGC, "M06 Tool Change"), which the checker's modal
+    # state does not hold: the run from the start is read so here (review 36, finding 1)
+    tool_change_mill = profile.dialect.family in ("fanuc", "haas") and not lathe
+    stopped = cooled = False
+    unplaced: frozenset[str] = frozenset()
+
+    def as_run(state: ModalState, block_words: list[str] | None = None) -> ModalState:
+        changed = replace(state, spindle="stop" if stopped else state.spindle,
+                          coolant="off" if cooled else state.coolant)
+        if block_words is not None and "Z" in unplaced and any(
+                w in ("G43", "G44", "G49") for w in block_words) and any(
+                w[0] == "Z" for w in block_words):
+            changed = replace(changed, length_offset=49)  # the block sets its own
+        return changed
+
     for block in blocks:
         came = (reference.state.position.get("X"), reference.state.position.get("Z"))
         restart = None
         if block.line in sampled:
-            before = reference.state
+            before = as_run(reference.state, list(block.words))
+            was_unplaced = unplaced
             try:
                 restart = walk.plan(block)
             except RestartRefused as exc:
@@ -209,10 +235,16 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
                 assert "cannot restart here: " in exc.message  # the refusal's wording starts so
         walk.step(block)
         reference.apply(block)
+        ms = {int(w[1:]) for w in block.words if w[:1] == "M" and w[1:].isdigit()}
+        if tool_change_mill and 6 in ms:
+            stopped, cooled, unplaced = True, True, frozenset("XYZ")
+        stopped = stopped and not ms & {3, 4, 5}
+        cooled = cooled and not ms & {7, 8, 9}
+        unplaced = unplaced - {w[0] for w in block.words}
         if restart is not None:
             allowed += 1
-            assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
-                            work, cycle)
+            assert_restores(profile, restart, before, as_run(reference.state), list(block.words),
+                            lathe, work, cycle, was_unplaced, tool_change_mill)
             assert_safe_approach(restart, lathe, rapids, widest)
         x = reference.state.position.get("X")
         widest = x if x is not None and (widest is None or x > widest) else widest
@@ -2274,6 +2306,41 @@ def test_a_fanuc_lathe_builder_code_after_a_tool_change_with_the_spindle_carried
     assert plan(text, 9, lathe).preamble  # at the tool change itself
     turning = text.replace("T0707\nM19 R90.\nG98", "T0707\nG97 S500 M03\nM23\nG99")
     assert plan(turning, 15, lathe).preamble  # the tool's own M03, then the builder's M23
+
+
+# Two tools on a mill: T2's M06 is line 10; its first move (line 11) and its G43 (line 12).
+TWO_TOOLS = ("%\nO2002\nG21 G17 G40 G49 G80 G90\nT1 M06\nG00 G54 X0. Y0. S1000 M03\n"
+             "G43 H01 Z25. M08\nG01 Z-5. F100.\nG00 Z25.\nM19\nT2 M06\nG00 X10. Y10.\n"
+             "G43 H02 Z25.\nS2000 M03\nG01 Z-5. F100.\nG00 Z25.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("name", ["fanuc-mill", "haas-mill"])
+def test_a_mill_restart_after_a_tool_change_does_not_carry_the_old_tool_s_state(name):
+    """Review 36, finding 1: between an M06 and the new tool's own G43 and M03 the restart
+    started the spindle at the old tool's speed and sent the new tool down with the old tool's
+    length offset (a probe loaded by T20 M06 spun at S8000; T2 to Z25. with H01). The M06
+    "stops the spindle, stops coolant, moves the Z Axis to the tool change position" (Haas mill
+    manual, NGC, "M06 Tool Change"): after it the spindle and coolant are off until the
+    program's own codes, Z is at no height of the program's, and the old H is refused."""
+    profile = load_profile(name)
+    said = refusal(TWO_TOOLS, 11, profile)  # X Y under T2 with H01 in force
+    assert said == (
+        "cannot restart here: the length offset G43 H01 in force was set on line 6, before the "
+        "tool change on line 10, and the program has not moved Z since: the new tool is at the "
+        "tool change height with the old tool's length; restart at the block that sets the new "
+        "tool's length offset and Z (G43 H.. Z..), or at the tool change"), said
+    # at the new tool's G43 H02 Z25.: X Y placed at the tool change height as the program
+    # placed them, no spindle, no coolant, no old H (review 36, finding 2: the M19 before the
+    # M06 no longer refuses it)
+    at_g43 = plan(TWO_TOOLS, 12, profile)
+    assert at_g43.preamble[1] == "T2 M06", at_g43.preamble
+    assert at_g43.preamble[-2:] == ["G00 X10. Y10.", "F100."], at_g43.preamble
+    assert not any("M03" in b or "M08" in b or "H01" in b for b in at_g43.preamble)
+    # after the new tool's M03 and G43: its own speed and offset
+    cutting = plan(TWO_TOOLS, 14, profile)
+    assert any(b.endswith("S2000 M03") for b in cutting.preamble), cutting.preamble
+    assert "G00 G43 Z25. H02" in cutting.preamble
+    assert not any("M08" in b for b in cutting.preamble)  # the coolant the M06 stopped
 
 
 def test_a_lathe_way_in_stops_at_a_move_of_c():

@@ -294,6 +294,9 @@ pub struct Walk {
     pub builder_m: Option<(usize, i64)>,
     /// The line of the last M03/M04 (0: none yet).
     pub spin_line: usize,
+    /// The line of the last M07/M08 (0: none yet): a FANUC or Haas mill's M06 after it has
+    /// stopped the coolant ([`RestartWalk::tool`]).
+    pub coolant_line: usize,
     /// The axes whose number in the modal state is no place the preamble goes to (bits of
     /// [`AXES`] indexes): a Haas lathe's Y after G112/G113, the virtual axis of the XC plane
     /// (Autodesk's HAAS Lathe post writes Y only under G112), and C after its disengage (a C
@@ -563,6 +566,7 @@ impl Walk {
             side_move: None,
             builder_m: None,
             spin_line: 0,
+            coolant_line: 0,
             unset: 0,
             polar_y: false,
             units_line: None,
@@ -1022,6 +1026,7 @@ impl Walk {
                         7 | 8 => {
                             self.coolant.retain(|&m| m != whole);
                             self.coolant.push(whole);
+                            self.coolant_line = line;
                         }
                         9 => self.coolant.clear(),
                         _ => {}
@@ -1823,6 +1828,27 @@ impl Walk {
             self.tool_change = Some(line);
             self.tool_moved = false;
             self.lane = None;
+        }
+        if ms.contains(&6) && !self.lathe && matches!(self.control, Control::Fanuc | Control::Haas)
+        {
+            // (review 36, finding 1) a mill's M06 "stops the spindle, stops coolant, moves the
+            // Z Axis to the tool change position, and orients the spindle" (Haas mill manual,
+            // NGC, "M06 Tool Change"; a FANUC's M06 is the builder's macro, which does the same
+            // on the machines at hand): Z is at no height the program wrote, and X and Y are
+            // reached from it, so until the program writes them they are no place the
+            // preamble goes to, as at the program's start (the new tool went down to Z25. with
+            // the old tool's H01); the spindle and coolant are left off until the program's
+            // own M03/M04 and M07/M08 after it (the preamble's postproc side)
+            for letter in [b'X', b'Y', b'Z'] {
+                if let Some(i) = axis_index(letter) {
+                    self.lost[i] = None;
+                    self.unset |= bit(i);
+                }
+            }
+            // the tool change ends an orientation before it: the spindle is stopped after it
+            // either way (review 36, finding 2: an M19 before the M06 refused every restart
+            // up to the new tool's M03)
+            self.oriented = None;
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {

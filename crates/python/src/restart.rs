@@ -426,6 +426,7 @@ impl RestartWalk {
         )?;
         d.set_item("builder_m", w.builder_m)?;
         d.set_item("spin_line", w.spin_line)?;
+        d.set_item("coolant_line", w.coolant_line)?;
         let unset: String = AXES
             .iter()
             .enumerate()
