@@ -607,6 +607,12 @@ class _Planner:
             at, code = walk.builder_m
             since = f"the tool change on line {change}" if change is not None else "the start"
             where = f"the tool change (line {change})" if change is not None else f"line {at}"
+            if change is not None and at < change:
+                # given before the T word with the spindle stopped, or by a live tool before
+                # this one: the mode stays in force over the change (review 36, finding 2)
+                since = (f"the main spindle stopped, and stays in force over the tool change "
+                         f"on line {change}")
+                where = f"line {at}"
             raise self.refuse(
                 f"the main spindle is stopped and M{code:02d} on line {at}, an M code the "
                 f"profile's list lacks, came after {since}: a live tool's drive or the C axis "

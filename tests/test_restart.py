@@ -2286,26 +2286,48 @@ def test_a_fanuc_lathe_live_tool_by_the_builders_m_codes_refuses_the_restart():
 
 
 def test_a_fanuc_lathe_builder_code_after_a_tool_change_with_the_spindle_carried_refuses():
-    """Review 35, finding 1 left open by fix35r: fanuc-lathe's list has no M19 (on a FANUC every
-    M code but the CNC's own is the builder's), so a keyway tool's `M19 R90.` after T0707 was
-    planned with `G97 S500 M03`: the spindle the program holds still turned by the preamble.
-    An M code the list lacks after a tool change that started no spindle (the M03 before it
-    carried) refuses, naming both lines; where the tool starts the spindle itself, the
-    builder's code after it is planned as before."""
+    """Review 35, finding 1 left open by fix35r: a keyway tool's `M19 R90.` after T0707 was
+    planned with `G97 S500 M03` on fanuc-lathe, whose list had no M19: the spindle the program
+    holds still turned by the preamble. fanuc-lathe now lists M19 as the builders' usual
+    orientation (review 36), and any M code the list lacks after a tool change that started no
+    spindle (the M03 before it carried) refuses, naming both lines; where the tool starts the
+    spindle itself, the builder's code after it is planned as before."""
     lathe = load_profile("fanuc-lathe")
     text = ("%\nO1003\nG20 G18 G40 G80 G99\nT0101\nG97 S500 M03\nG00 X2. Z0.1\n"
             "G01 Z-0.5 F0.01\nG00 X2.2 Z0.1\nT0707\nM19 R90.\nG98\nG00 X0.9 Z0.1\n"
             "G01 X1.0 F20.\nG01 Z-1. F20.\nG00 X0.9\nM30\n%\n")
-    said = refusal(text, 15, lathe)  # the stroke along Z
+    assert refusal(text, 15, lathe).startswith(  # the stroke along Z
+        "cannot restart here: M19 on line 10 oriented the spindle")
+    builder = text.replace("M19 R90.", "M20")  # a builder's code the list lacks
+    said = refusal(builder, 15, lathe)
     assert said == (
-        "cannot restart here: M19 on line 10, an M code the profile's list lacks, came after "
+        "cannot restart here: M20 on line 10, an M code the profile's list lacks, came after "
         "the tool change on line 9, and the main spindle has not been started since (its "
         "M03/M04 is on line 5): the builder's code may have stopped or oriented it (a spindle "
         "orientation, a live tool), which the preamble cannot know; restart at or before the "
         "tool change (line 9), or after the M03 or M04 that starts the main spindle again"), said
-    assert plan(text, 9, lathe).preamble  # at the tool change itself
-    turning = text.replace("T0707\nM19 R90.\nG98", "T0707\nG97 S500 M03\nM23\nG99")
+    assert plan(builder, 9, lathe).preamble  # at the tool change itself
+    turning = builder.replace("T0707\nM20\nG98", "T0707\nG97 S500 M03\nM23\nG99")
     assert plan(turning, 15, lathe).preamble  # the tool's own M03, then the builder's M23
+
+
+def test_a_fanuc_lathe_builder_code_with_the_spindle_stopped_holds_over_a_tool_change():
+    """Review 36, finding 2: the builder's C axis code given before the T word (`M05 / M76 /
+    T0505`), or a live tool's drive carried to the next live tool, was forgotten at the tool
+    change and the radial drill planned with nothing turning. With the main spindle stopped
+    the code holds until the next M03/M04; the refusal says it came before the change."""
+    lathe = load_profile("fanuc-lathe")
+    text = ("%\nO3001\nG20 G18 G40 G80 G99\nT0101\nG97 S500 M03\nG00 X2.2 Z0.1\n"
+            "G01 Z-1. F0.005\nG00 X2.4 Z0.2\nM05\nM76\nT0505\nG98\nG00 X2.4 Z-0.4\n"
+            "G01 X1.2 F5.\nG00 X2.4\nG00 Z0.2\nT0101\nG99 G97 S500 M03\nG00 X2.2 Z0.1\n"
+            "G01 Z-1. F0.005\nM30\n%\n")
+    said = refusal(text, 14, lathe)  # the drill's stroke under T0505
+    assert said.startswith(
+        "cannot restart here: the main spindle is stopped and M76 on line 10, an M code the "
+        "profile's list lacks, came after the main spindle stopped, and stays in force over "
+        "the tool change on line 11"), said
+    assert "restart at or before line 10" in said
+    assert plan(text, 20, lathe).preamble  # turning again after the M03
 
 
 # Two tools on a mill: T2's M06 is line 10; its first move (line 11) and its G43 (line 12).

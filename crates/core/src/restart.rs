@@ -1214,6 +1214,7 @@ impl Walk {
             if matches!(m, 3 | 4) {
                 self.side_move = None;
                 self.spin_line = line;
+                self.builder_m = None; // (the main spindle turns: no live tool's mode)
             }
         }
         let unlisted_m = self
@@ -1276,7 +1277,14 @@ impl Walk {
             .tokens
             .iter()
             .any(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'T')));
-        self.tool(line, &gs, &ms, &plain_words, tool_word, after.length_offset);
+        self.tool(
+            line,
+            &gs,
+            &ms,
+            &plain_words,
+            (tool_word, matches!(after.spindle, 3 | 4)),
+            after.length_offset,
+        );
         if self.lathe && self.m_modes.is_empty() {
             if let Some(lacks) = &self.lacks_m {
                 let builder = ms.iter().copied().rfind(|&m| {
@@ -1810,7 +1818,7 @@ impl Walk {
         gs: &[i64],
         ms: &[i64],
         plain_words: &[(u8, &[u8])],
-        tool_word: bool,
+        (tool_word, turning): (bool, bool),
         length_offset: i64,
     ) {
         let word = |letter: u8| {
@@ -1823,7 +1831,12 @@ impl Walk {
             self.t_token = Some(t);
         }
         if self.lathe && (tool_word || ms.contains(&6)) {
-            self.builder_m = None;
+            if turning {
+                // with the main spindle stopped a builder's code before the T word, or that a
+                // live tool before this one switched on, stays in force across the change
+                // (review 36, finding 2: `M76 / T0505` and a second live tool were planned)
+                self.builder_m = None;
+            }
             self.moves.clear();
             self.tool_change = Some(line);
             self.tool_moved = false;
