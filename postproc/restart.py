@@ -452,6 +452,11 @@ class _Planner:
 
     def check(self) -> None:
         walk, s = self.walk, self.state
+        if s.ended and (self.block.text.strip() == "%" or "\x1a" in self.block.text):
+            # the end of tape after M02/M30 (review 36: "would not restore tool (please report
+            # this program)" at the closing %): nothing of the program comes after it
+            raise self.refuse("the program has ended before this line (M02 or M30): there is "
+                              "nothing after it to run; restart at a block before the end")
         if self.walker.family == "heidenhain":
             raise self.refuse("tapegate writes no restart preamble for a HEIDENHAIN control "
                               "(its G codes differ: G28 is a mirror image, G53 a datum shift); "

@@ -2365,6 +2365,17 @@ def test_a_mill_restart_after_a_tool_change_does_not_carry_the_old_tool_s_state(
     assert not any("M08" in b for b in cutting.preamble)  # the coolant the M06 stopped
 
 
+def test_a_restart_at_the_end_of_tape_after_m30_says_the_program_ended():
+    """Review 36, finding 6: the closing % after M30 (or a DOS end-of-file mark) was refused
+    with "the preamble would not restore tool (please report this program)"."""
+    text = "%\nO1\nG21 G90 G17\nT1 M06\nG00 G54 X0. Y0. S1000 M03\nG43 H1 Z10.\nM30\n%\n"
+    assert refusal(text, 8, FANUC) == (
+        "cannot restart here: the program has ended before this line (M02 or M30): there is "
+        "nothing after it to run; restart at a block before the end")
+    assert refusal(text + "\x1a", 9, FANUC).startswith(
+        "cannot restart here: the program has ended before this line")
+
+
 def test_a_lathe_way_in_stops_at_a_move_of_c():
     """Review 35, finding 3: a lathe's way in replayed X and Z moves made at another C: the
     hole at C0 drilled to X0.8 was replayed after the preamble set C90., where the program
