@@ -834,9 +834,12 @@ impl ReadingEnd {
             return;
         }
         if self.open.is_empty() && !skip {
-            let ends = tokens.into_iter().any(|t| {
-                t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
-                    && whole_number(&t[1..]).is_some_and(|n| n == 2 || n == 30)
+            // (a token's first byte `M` or `m` by its case bit; the number read only then)
+            let ends = tokens.into_iter().any(|t| match t {
+                [m, digits @ ..] if m | 0x20 == b'm' => {
+                    whole_number(digits).is_some_and(|n| n == 2 || n == 30)
+                }
+                _ => false,
             });
             if ends {
                 self.ended = Some(line);
