@@ -431,11 +431,58 @@ impl Checker {
     /// endsub`, optionally followed by M2 (LinuxCNC's O codes, "Calling Files": `o<name>
     /// call` runs the file of that name, which holds the definition), returns to its caller
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
+    #[inline(always)]
     pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
         if self.config.family != Family::LinuxCnc || (b.words.is_empty() && b.statements.is_empty())
         {
             return;
         }
+        // a block without a statement, outside any definition, in a file that is no
+        // subroutine file, after no M2/M30 inside a condition and with no spindle speed
+        // followed through a condition (most of a CAM program's blocks): what the full
+        // reading below does with such a block, and no more
+        if b.statements.is_empty()
+            && self.sub_file == SubFile::No
+            && self.open_definition.is_none()
+            && self.linuxcnc_end_depth.is_none()
+            && self.linuxcnc_speed_back.is_none()
+            && self.linuxcnc_if_speed.is_empty()
+        {
+            // (a line of plain words: it has an expression where the tokenizer walked a
+            // bracketed word, all of them or not)
+            let walks = &self.line_walks;
+            let line = self.line_walks_of == (b.text.as_ptr() as usize, b.text.len());
+            let expressions = if line && walks.all {
+                walks.set != 0
+            } else {
+                b.words.iter().any(|w| !w.expression.is_empty())
+            };
+            debug_assert_eq!(
+                expressions,
+                b.words.iter().any(|w| !w.expression.is_empty()),
+                "line {}",
+                b.line
+            );
+            if !expressions {
+                self.linuxcnc_no_slash = self.stats.blocks;
+                return;
+            }
+            if self.linuxcnc_line_walked(b) {
+                self.linuxcnc_no_slash = self.stats.blocks;
+                if self.surely_ended || self.linuxcnc_names_all_seen(b) {
+                    return;
+                }
+                let walks = self.linuxcnc_walk_words(b);
+                self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty(), &walks);
+                return;
+            }
+        }
+        self.subroutine_file_read(b);
+    }
+
+    /// [`Checker::subroutine_file`] of any LinuxCNC block.
+    #[inline(never)]
+    fn subroutine_file_read(&mut self, b: &BlockView<'_>) {
         // (a block of plain words, as most of a CAM program's are, has nothing to walk)
         let expressions = b.words.iter().any(|w| !w.expression.is_empty());
         // a line whose every bracketed word the tokenizer walked plain (a CAM program's
