@@ -279,6 +279,7 @@ impl Checker {
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_short_seen = [0; 8];
+        self.linuxcnc_seen_hot = [0; 2];
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
@@ -1122,6 +1123,7 @@ impl Checker {
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;
         let short = &self.linuxcnc_short_seen;
+        let mut hot = self.linuxcnc_seen_hot;
         let mut set = walks.set;
         while set != 0 {
             let i = set.trailing_zeros() as usize;
@@ -1132,9 +1134,16 @@ impl Checker {
                 let len = close - name;
                 let key = walk.keys[n];
                 // (a name of up to 8 bytes is its key: no byte of a walked name is zero, a
-                // blank; a longer one is compared by its bytes too)
+                // blank, so no key is 0; the last two keys found compared first. A longer
+                // one is compared by its bytes too)
                 let found = if len <= 8 {
-                    short.contains(&key)
+                    debug_assert_ne!(key, 0);
+                    key == hot[0]
+                        || key == hot[1]
+                        || short.contains(&key) && {
+                            hot = [key, hot[0]];
+                            true
+                        }
                 } else {
                     let text = &b.words[i].expression[name..close];
                     seen.iter()
@@ -1145,8 +1154,10 @@ impl Checker {
                 }
             }
         }
+        self.linuxcnc_seen_hot = hot;
         #[cfg(debug_assertions)]
         {
+            assert!(hot.iter().all(|&k| k == 0 || self.linuxcnc_short_seen.contains(&k)));
             let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
             for w in b.words {
                 let full = self.linuxcnc_undefined_read(w.expression, w.column);
