@@ -1110,6 +1110,11 @@ impl Checker {
         }
         let given = if letters & bit(b'G') == 0 {
             None
+        } else if self.motion_only {
+            // (the block's G words each G0-G3 as written, no M word: its G codes those)
+            self.code_key?;
+            debug_assert!(self.values.gs().iter().all(|&g| (0..=3).contains(&g)));
+            Some(self.values.gs().first()? * 10)
         } else {
             // (a key, so every G word read whole, none after the fifth code; the block's
             // G codes are `values.gs()`, in order)
@@ -1125,7 +1130,7 @@ impl Checker {
         } else {
             b.words.iter().position(|w| w.letter == b'F')
         };
-        let runs = given.or(match self.linuxcnc_motion {
+        let runs = given.or_else(|| match self.linuxcnc_motion {
             LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
             _ => None,
         });
@@ -1316,7 +1321,7 @@ impl Checker {
     /// to the double held before it, and where the sum is not the nearest double of the
     /// decimal sum it is kept; an axis another block moves (a cycle under G91) is no longer
     /// followed until an absolute word.
-    #[inline(never)]
+    #[inline(always)]
     pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
         let state = &self.machine.state;
         let taken = self.machine.taken();
@@ -1327,12 +1332,20 @@ impl Checker {
         if !state.incremental && moves && self.linuxcnc_motion != LinuxCncMotion::Known(Some(52)) {
             #[cfg(debug_assertions)]
             let double = self.linuxcnc_double;
+            // (an axis the block names by the block's letters, its point not read)
+            let given = self.values.given();
             for k in 0..3 {
-                let now = state.position[k];
-                if now.is_none() || self.values.has(crate::modal::AXES[k]) {
+                if given & bit(crate::modal::AXES[k]) != 0 {
                     self.linuxcnc_double[k] = Double::Nearest;
-                } else if before.xyz[k] != now {
-                    self.linuxcnc_double[k] = Double::Unknown;
+                    continue;
+                }
+                match (before.xyz[k], state.position[k]) {
+                    (_, None) => self.linuxcnc_double[k] = Double::Nearest,
+                    // (a point the block left: the same value, its mantissa and scale)
+                    (Some(start), Some(now))
+                        if start.scale == now.scale && { start.mantissa } == { now.mantissa } => {}
+                    (start, now) if start != now => self.linuxcnc_double[k] = Double::Unknown,
+                    _ => {}
                 }
             }
             #[cfg(debug_assertions)]
@@ -1353,6 +1366,7 @@ impl Checker {
     }
 
     /// [`Checker::linuxcnc_doubles`] of any block, axis by axis.
+    #[inline(never)]
     fn linuxcnc_doubles_read(&mut self, before: &Before) {
         let state = &self.machine.state;
         let plain = matches!(
