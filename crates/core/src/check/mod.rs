@@ -893,6 +893,10 @@ pub struct Checker {
     /// expression, or the tokenizer walked each plain (`Checker::linuxcnc_line_walked`): no
     /// `/` in any, for the plain move's test (`Checker::linuxcnc_plain_move`); 0 before.
     linuxcnc_no_slash: usize,
+    /// LinuxCNC: the count (`stats.blocks`) of the block in hand where it is a plain move
+    /// (`Checker::linuxcnc_plain_move`), for the doubles (`Checker::linuxcnc_doubles`); 0
+    /// before.
+    linuxcnc_plain_block: usize,
     /// The walks the tokenizer made of the last line of plain words' bracketed words
     /// (`tokenizer::LineWalks`), for the LinuxCNC rules of its block, and that line's text
     /// (its address and length), set while that block is checked (else (0, 0)): a block of
@@ -1070,6 +1074,7 @@ impl Checker {
             linuxcnc_seen_hot: [0; 2],
             linuxcnc_plain_words: (0, 0),
             linuxcnc_no_slash: 0,
+            linuxcnc_plain_block: 0,
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),

@@ -731,6 +731,10 @@ impl Checker {
         // a plain move found from the block's letters and codes: the full path's verdict
         // without its word loop (a debug build takes the full path and holds the two equal)
         let fast = self.linuxcnc_plain_move(b, facts);
+        if fast.is_some() {
+            // (for the doubles: a debug build holds the full path to the same verdict)
+            self.linuxcnc_plain_block = self.stats.blocks;
+        }
         #[cfg(test)]
         if tests::FULL_ONLY.with(std::cell::Cell::get) {
             return self.linuxcnc_refusals_read(b, facts, start, None);
@@ -1332,8 +1336,11 @@ impl Checker {
         if !state.incremental && moves && self.linuxcnc_motion != LinuxCncMotion::Known(Some(52)) {
             #[cfg(debug_assertions)]
             let double = self.linuxcnc_double;
-            // (an axis the block names by the block's letters, its point not read)
+            // (an axis the block names by the block's letters, its point not read; one a plain
+            // move leaves (`linuxcnc_plain_move`: G0-G3 alone, no other code) keeps its point
+            // or is not known after it, and its point is not compared)
             let given = self.values.given();
+            let plain = self.linuxcnc_plain_block == self.stats.blocks;
             for k in 0..3 {
                 if given & bit(crate::modal::AXES[k]) != 0 {
                     self.linuxcnc_double[k] = Double::Nearest;
@@ -1341,6 +1348,7 @@ impl Checker {
                 }
                 match (before.xyz[k], state.position[k]) {
                     (_, None) => self.linuxcnc_double[k] = Double::Nearest,
+                    _ if plain => {}
                     // (a point the block left: the same value, its mantissa and scale)
                     (Some(start), Some(now))
                         if start.scale == now.scale && { start.mantissa } == { now.mantissa } => {}
