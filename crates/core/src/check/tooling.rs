@@ -1115,10 +1115,20 @@ impl Checker {
         let given = if letters & bit(b'G') == 0 {
             None
         } else if self.motion_only {
-            // (the block's G words each G0-G3 as written, no M word: its G codes those)
+            // (the block's G words each G0-G3 as written, no M word: its G codes those, the
+            // motion it runs its first, I J K R used in G2 and G3 only)
             self.code_key?;
             debug_assert!(self.values.gs().iter().all(|&g| (0..=3).contains(&g)));
-            Some(self.values.gs().first()? * 10)
+            let first = *self.values.gs().first()?;
+            if first < 2 && letters & (bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R')) != 0 {
+                return None;
+            }
+            let f_at = if letters & bit(b'F') == 0 {
+                None
+            } else {
+                b.words.iter().position(|w| w.letter == b'F')
+            };
+            return Some((Some(first * 10), f_at));
         } else {
             // (a key, so every G word read whole, none after the fifth code; the block's
             // G codes are `values.gs()`, in order)
@@ -1341,6 +1351,16 @@ impl Checker {
             // or is not known after it, and its point is not compared)
             let given = self.values.given();
             let plain = self.linuxcnc_plain_block == self.stats.blocks;
+            // (each axis's double the nearest before a plain move: so after it, by the three
+            // answers below)
+            let nearest = matches!(
+                self.linuxcnc_double,
+                [Double::Nearest, Double::Nearest, Double::Nearest]
+            );
+            #[cfg(not(debug_assertions))]
+            if plain && nearest {
+                return;
+            }
             for k in 0..3 {
                 if given & bit(crate::modal::AXES[k]) != 0 {
                     self.linuxcnc_double[k] = Double::Nearest;
@@ -1358,6 +1378,14 @@ impl Checker {
             }
             #[cfg(debug_assertions)]
             {
+                // (the plain move's return above, not taken here: the same doubles)
+                assert!(
+                    !(plain && nearest)
+                        || matches!(
+                            self.linuxcnc_double,
+                            [Double::Nearest, Double::Nearest, Double::Nearest]
+                        )
+                );
                 let fast = self.linuxcnc_double;
                 self.linuxcnc_double = double;
                 self.linuxcnc_doubles_read(before);
