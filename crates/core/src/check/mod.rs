@@ -897,6 +897,9 @@ pub struct Checker {
     /// (`Checker::linuxcnc_plain_move`), for the doubles (`Checker::linuxcnc_doubles`); 0
     /// before.
     linuxcnc_plain_block: usize,
+    /// LinuxCNC: `Checker::linuxcnc_quiet_now` after the last block `Checker::subroutine_file`
+    /// read in full (false before the first).
+    linuxcnc_quiet: bool,
     /// The walks the tokenizer made of the last line of plain words' bracketed words
     /// (`tokenizer::LineWalks`), for the LinuxCNC rules of its block, and that line's text
     /// (its address and length), set while that block is checked (else (0, 0)): a block of
@@ -1075,6 +1078,7 @@ impl Checker {
             linuxcnc_plain_words: (0, 0),
             linuxcnc_no_slash: 0,
             linuxcnc_plain_block: 0,
+            linuxcnc_quiet: false,
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),

@@ -434,21 +434,17 @@ impl Checker {
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
     #[inline(always)]
     pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
-        if self.config.family != Family::LinuxCnc || (b.words.is_empty() && b.statements.is_empty())
-        {
+        if self.config.family != Family::LinuxCnc {
             return;
         }
         // a block without a statement, outside any definition, in a file that is no
         // subroutine file, after no M2/M30 inside a condition and with no spindle speed
         // followed through a condition (most of a CAM program's blocks): what the full
         // reading below does with such a block, and no more
-        if b.statements.is_empty()
-            && self.sub_file == SubFile::No
-            && self.open_definition.is_none()
-            && self.linuxcnc_end_depth.is_none()
-            && self.linuxcnc_speed_back.is_none()
-            && self.linuxcnc_if_speed.is_empty()
-        {
+        // (`linuxcnc_quiet`: the full reading below is the one place that changes those, the
+        // end's depth aside)
+        debug_assert!(!self.linuxcnc_quiet || self.linuxcnc_quiet_now());
+        if b.statements.is_empty() && self.linuxcnc_quiet && self.linuxcnc_end_depth.is_none() {
             // (a line of plain words: it has an expression where the tokenizer walked a
             // bracketed word, all of them or not)
             let walks = &self.line_walks;
@@ -464,6 +460,8 @@ impl Checker {
                 "line {}",
                 b.line
             );
+            // (and a block of neither words nor statements, which the full reading passes
+            // over: the count kept is no other block's)
             if !expressions {
                 self.linuxcnc_no_slash = self.stats.blocks;
                 return;
@@ -478,12 +476,32 @@ impl Checker {
                 return;
             }
         }
+        if b.words.is_empty() && b.statements.is_empty() {
+            return;
+        }
         self.subroutine_file_read(b);
     }
 
-    /// [`Checker::subroutine_file`] of any LinuxCNC block.
+    /// The file is no subroutine file, no definition is open, and no spindle speed is
+    /// followed through a condition ([`Checker::linuxcnc_if_speed`]): the short path of
+    /// [`Checker::subroutine_file`] may be taken (where no M2/M30 inside a condition came
+    /// before, too).
+    fn linuxcnc_quiet_now(&self) -> bool {
+        self.sub_file == SubFile::No
+            && self.open_definition.is_none()
+            && self.linuxcnc_speed_back.is_none()
+            && self.linuxcnc_if_speed.is_empty()
+    }
+
+    /// [`Checker::subroutine_file`] of any LinuxCNC block, and `linuxcnc_quiet` after it.
     #[inline(never)]
     fn subroutine_file_read(&mut self, b: &BlockView<'_>) {
+        self.subroutine_file_body(b);
+        self.linuxcnc_quiet = self.linuxcnc_quiet_now();
+    }
+
+    /// [`Checker::subroutine_file_read`].
+    fn subroutine_file_body(&mut self, b: &BlockView<'_>) {
         // (a block of plain words, as most of a CAM program's are, has nothing to walk)
         let expressions = b.words.iter().any(|w| !w.expression.is_empty());
         // a line whose every bracketed word the tokenizer walked plain (a CAM program's
