@@ -1338,6 +1338,28 @@ impl Checker {
     #[inline(always)]
     pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
         let state = &self.machine.state;
+        // a plain move (`linuxcnc_plain_move`: G0-G3 alone, no other code) in absolute
+        // coordinates, each double the nearest before it: so after it (an axis it names takes
+        // the nearest double; one it does not keeps its point, or is not known after it),
+        // whatever the motion in force (a debug build reads the block in full and asserts it)
+        let plain = self.linuxcnc_plain_block == self.stats.blocks;
+        if plain
+            && !state.incremental
+            && matches!(
+                self.linuxcnc_double,
+                [Double::Nearest, Double::Nearest, Double::Nearest]
+            )
+        {
+            #[cfg(debug_assertions)]
+            {
+                self.linuxcnc_doubles_read(before);
+                assert!(matches!(
+                    self.linuxcnc_double,
+                    [Double::Nearest, Double::Nearest, Double::Nearest]
+                ));
+            }
+            return;
+        }
         let taken = self.machine.taken();
         let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
         // (absolute positions of a move outside a NURBS list, most of a CAM program's blocks:
@@ -1350,17 +1372,6 @@ impl Checker {
             // move leaves (`linuxcnc_plain_move`: G0-G3 alone, no other code) keeps its point
             // or is not known after it, and its point is not compared)
             let given = self.values.given();
-            let plain = self.linuxcnc_plain_block == self.stats.blocks;
-            // (each axis's double the nearest before a plain move: so after it, by the three
-            // answers below)
-            let nearest = matches!(
-                self.linuxcnc_double,
-                [Double::Nearest, Double::Nearest, Double::Nearest]
-            );
-            #[cfg(not(debug_assertions))]
-            if plain && nearest {
-                return;
-            }
             for k in 0..3 {
                 if given & bit(crate::modal::AXES[k]) != 0 {
                     self.linuxcnc_double[k] = Double::Nearest;
@@ -1378,14 +1389,6 @@ impl Checker {
             }
             #[cfg(debug_assertions)]
             {
-                // (the plain move's return above, not taken here: the same doubles)
-                assert!(
-                    !(plain && nearest)
-                        || matches!(
-                            self.linuxcnc_double,
-                            [Double::Nearest, Double::Nearest, Double::Nearest]
-                        )
-                );
                 let fast = self.linuxcnc_double;
                 self.linuxcnc_double = double;
                 self.linuxcnc_doubles_read(before);
