@@ -1175,7 +1175,9 @@ impl Checker {
         self.linuxcnc_seen_hot = hot;
         #[cfg(debug_assertions)]
         {
-            assert!(hot.iter().all(|&k| k == 0 || self.linuxcnc_short_seen.contains(&k)));
+            assert!(hot
+                .iter()
+                .all(|&k| k == 0 || self.linuxcnc_short_seen.contains(&k)));
             let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
             for w in b.words {
                 let full = self.linuxcnc_undefined_read(w.expression, w.column);
