@@ -705,14 +705,26 @@ pub struct ReadingEnd {
     /// The first line not read that holds more than blanks and comments, once.
     first_unread: Option<Unread>,
     noted: bool,
+    /// LinuxCNC, where the file is opened by `%` (or its first line not yet read), closed or
+    /// ended: [`ReadingEnd::skips`] looks at the line. False on any other family, and on a
+    /// LinuxCNC file not opened by `%`, neither closed nor ended (every line is read, as in
+    /// most of a program): set where those change ([`ReadingEnd::unsettled_now`]).
+    unsettled: bool,
 }
 
 impl ReadingEnd {
     pub fn new(family: Family) -> ReadingEnd {
         ReadingEnd {
             family,
+            unsettled: family == Family::LinuxCnc,
             ..ReadingEnd::default()
         }
+    }
+
+    /// [`ReadingEnd::unsettled`] from the fields it stands for.
+    fn unsettled_now(&self) -> bool {
+        self.family == Family::LinuxCnc
+            && !(self.percent_file == Some(false) && self.closed.is_none() && self.ended.is_none())
     }
 
     /// Asked before line `line` (its text `text`) is read: whether the control never reads
@@ -722,9 +734,8 @@ impl ReadingEnd {
     pub fn skips(&mut self, line: usize, text: &[u8]) -> bool {
         // (a file not opened by `%`, neither closed nor ended: every line is read, as in
         // most of a program)
-        self.family == Family::LinuxCnc
-            && !(self.percent_file == Some(false) && self.closed.is_none() && self.ended.is_none())
-            && self.linuxcnc_skips(line, text)
+        debug_assert_eq!(self.unsettled, self.unsettled_now());
+        self.unsettled && self.linuxcnc_skips(line, text)
     }
 
     /// [`ReadingEnd::skips`] on LinuxCNC.
@@ -737,6 +748,7 @@ impl ReadingEnd {
             }
             self.percent_file = Some(bare_percent(text));
             self.opening = bare_percent(text).then_some(line);
+            self.unsettled = self.unsettled_now();
             return false;
         }
         if let Some(end) = self.closed {
@@ -746,6 +758,7 @@ impl ReadingEnd {
         if self.percent_file == Some(true) && bare_percent(text) {
             // the closing %: read, and nothing after it
             self.closed = Some(line);
+            self.unsettled = self.unsettled_now();
             return false;
         }
         let Some(end) = self.ended else {
@@ -834,12 +847,16 @@ impl ReadingEnd {
             return;
         }
         if self.open.is_empty() && !skip {
-            let ends = tokens.into_iter().any(|t| {
-                t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
-                    && whole_number(&t[1..]).is_some_and(|n| n == 2 || n == 30)
+            // (a token's first byte `M` or `m` by its case bit; the number read only then)
+            let ends = tokens.into_iter().any(|t| match t {
+                [m, digits @ ..] if m | 0x20 == b'm' => {
+                    whole_number(digits).is_some_and(|n| n == 2 || n == 30)
+                }
+                _ => false,
             });
             if ends {
                 self.ended = Some(line);
+                self.unsettled = self.unsettled_now();
             }
         }
     }

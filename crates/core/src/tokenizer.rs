@@ -958,8 +958,9 @@ pub const WALKED: usize = 8;
 /// parameters' reads and the read-refusal's test for a `/` (the check's `walk_expression`;
 /// [`bracket_word`] finds the same of a plain line's bracketed word as it scans it,
 /// [`LineWalks`]). A CAM program's `Y[#<yscale>*-3.608]Z[#<zscale>*-8.942]` was walked three
-/// times a word.
-#[derive(Clone, Copy, Default, Debug, PartialEq, Eq)]
+/// times a word. Two walks are equal by their first `count` names and keys (a walk written
+/// in place may hold a word's before it past them).
+#[derive(Clone, Copy, Default, Debug)]
 pub struct ExpressionWalk {
     /// The expression is one pair of brackets with no other bracket, no `/` and no letter
     /// outside a named parameter's name (`[#<yscale>*-3.608]`, `[#1+2.5]`) and at most four
@@ -973,6 +974,18 @@ pub struct ExpressionWalk {
     /// Each name's key ([`name_key`]: its first 8 bytes as one integer), as `names`.
     pub keys: [u64; 4],
 }
+
+impl PartialEq for ExpressionWalk {
+    fn eq(&self, other: &Self) -> bool {
+        let n = usize::from(self.count).min(self.names.len());
+        self.plain == other.plain
+            && self.count == other.count
+            && self.names[..n] == other.names[..n]
+            && self.keys[..n] == other.keys[..n]
+    }
+}
+
+impl Eq for ExpressionWalk {}
 
 /// The walks [`bracket_word`] made of a line of plain words' bracketed words
 /// ([`plain_line_words`]): the plain ones among the first [`WALKED`] words, by place. A word
@@ -1019,9 +1032,17 @@ trait PlainOut<'a> {
     /// Whether [`bracket_word`] walks a bracketed word for the LinuxCNC rules
     /// ([`ExpressionWalk`]): the checker's words only.
     const WALKS: bool = false;
-    /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number. `walk`: its
-    /// expression's walk where [`PlainOut::WALKS`] and it is plain, else None.
-    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walk: Option<ExpressionWalk>);
+    /// The bracketed word `line[pos..end]` ([`bracket_word`]): no plain number. `walked`: the
+    /// count of its expression's names, given by [`PlainOut::walk_name`], where
+    /// [`PlainOut::WALKS`] and it is plain, else None.
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walked: Option<u8>);
+    /// The next bracketed word's name `n` (below 4): its `#` and `>` in the expression and its
+    /// key, written where its walk is kept. False where none is (not [`PlainOut::WALKS`], or
+    /// the word past the first [`WALKED`]): the word's walk is not kept.
+    #[inline(always)]
+    fn walk_name(&mut self, _n: usize, _place: (u16, u16), _key: u64) -> bool {
+        false
+    }
     /// The offset of what follows the blanks from `pos` ([`skip_blanks`]): the blanks before
     /// a line's first word and after each word, the only bytes of a line of plain words that
     /// are not a word's.
@@ -1049,7 +1070,7 @@ impl<'a> PlainOut<'a> for Vec<Token<'a>> {
     }
 
     #[inline(always)]
-    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, _: Option<ExpressionWalk>) {
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, _: Option<u8>) {
         self.push(Token {
             offset: pos,
             end,
@@ -1094,10 +1115,13 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
     const WALKS: bool = true;
 
     #[inline(always)]
-    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walk: Option<ExpressionWalk>) {
+    fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walked: Option<u8>) {
         let i = self.words.len();
-        if let Some(walk) = walk.filter(|_| i < WALKED) {
-            self.walks.walks[i] = walk;
+        // (its names and keys written in place by `walk_name`)
+        if let Some(count) = walked.filter(|_| i < WALKED) {
+            let walk = &mut self.walks.walks[i];
+            walk.plain = true;
+            walk.count = count;
             self.walks.set |= 1 << i;
         } else {
             self.walks.all = false;
@@ -1107,6 +1131,18 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         self.motion_codes_only &= letter != b'G';
         self.words
             .push(Word::bracketed(&line[pos..end], (self.at)(pos)));
+    }
+
+    #[inline(always)]
+    fn walk_name(&mut self, n: usize, place: (u16, u16), key: u64) -> bool {
+        let i = self.words.len();
+        if i >= WALKED {
+            return false;
+        }
+        let walk = &mut self.walks.walks[i];
+        walk.names[n] = place;
+        walk.keys[n] = key;
+        true
     }
 
     #[inline(always)]
@@ -1273,9 +1309,10 @@ fn bracket_word<'a, O: PlainOut<'a>>(
     let mut depth: u32 = 1;
     // the walk for the LinuxCNC rules (`O::WALKS`): whether the expression is plain (no
     // inner bracket, no `/`, no bracket or `/` in a name, at most four names), and its names'
-    // `#` and `>` from the expression's `[` (`pos + 1`)
+    // `#` and `>` from the expression's `[` (`pos + 1`), written where the walk is kept
+    // (`PlainOut::walk_name`), `count` of them
     let mut plain = O::WALKS && linuxcnc;
-    let mut walk = ExpressionWalk::default();
+    let mut count = 0usize;
     loop {
         // an operand, after its signs
         while i < n && matches!(line[i], b'+' | b'-') {
@@ -1347,15 +1384,13 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                         (name_key(line, name, i - name), kinds)
                     };
                     if plain {
-                        if kinds != 0 || usize::from(walk.count) == walk.names.len() {
+                        // (below 65,536: a line is at most MAX_BLOCK bytes, the `[` at
+                        // `pos + 1` at least)
+                        let place = ((hash - pos - 1) as u16, (i - pos - 1) as u16);
+                        if kinds != 0 || count == 4 || !words.walk_name(count, place, key) {
                             plain = false;
                         } else {
-                            // (below 65,536: a line is at most MAX_BLOCK bytes, the `[` at
-                            // `pos + 1` at least)
-                            walk.names[usize::from(walk.count)] =
-                                ((hash - pos - 1) as u16, (i - pos - 1) as u16);
-                            walk.keys[usize::from(walk.count)] = key;
-                            walk.count += 1;
+                            count += 1;
                         }
                     }
                     i += 1;
@@ -1372,8 +1407,7 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                     depth -= 1;
                     if depth == 0 {
                         let after = words.skip_blanks(line, i);
-                        walk.plain = true;
-                        words.bracketed(line, pos, i, plain.then_some(walk));
+                        words.bracketed(line, pos, i, plain.then_some(count as u8));
                         return Some(after);
                     }
                 }

@@ -881,6 +881,10 @@ pub struct Checker {
     /// each at its place in `linuxcnc_named_seen` (0 elsewhere: no name's key), for the
     /// walked lines' names (`Checker::linuxcnc_names_all_seen`).
     linuxcnc_short_seen: [u64; 8],
+    /// The last two keys of `linuxcnc_short_seen` a walked line's name was found by (0: none;
+    /// a name seen stays seen until the next program): a CAM program's `#<yscale>` and
+    /// `#<zscale>` of every line compared with these first.
+    linuxcnc_seen_hot: [u64; 2],
     /// LinuxCNC: which of a block's first eight words `structure::walk_expression` found a
     /// plain bracketed expression (which holds no `/`), and the block's count
     /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
@@ -889,6 +893,13 @@ pub struct Checker {
     /// expression, or the tokenizer walked each plain (`Checker::linuxcnc_line_walked`): no
     /// `/` in any, for the plain move's test (`Checker::linuxcnc_plain_move`); 0 before.
     linuxcnc_no_slash: usize,
+    /// LinuxCNC: the count (`stats.blocks`) of the block in hand where it is a plain move
+    /// (`Checker::linuxcnc_plain_move`), for the doubles (`Checker::linuxcnc_doubles`); 0
+    /// before.
+    linuxcnc_plain_block: usize,
+    /// LinuxCNC: `Checker::linuxcnc_quiet_now` after the last block `Checker::subroutine_file`
+    /// read in full (false before the first).
+    linuxcnc_quiet: bool,
     /// The walks the tokenizer made of the last line of plain words' bracketed words
     /// (`tokenizer::LineWalks`), for the LinuxCNC rules of its block, and that line's text
     /// (its address and length), set while that block is checked (else (0, 0)): a block of
@@ -1063,8 +1074,11 @@ impl Checker {
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_short_seen: [0; 8],
+            linuxcnc_seen_hot: [0; 2],
             linuxcnc_plain_words: (0, 0),
             linuxcnc_no_slash: 0,
+            linuxcnc_plain_block: 0,
+            linuxcnc_quiet: false,
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),

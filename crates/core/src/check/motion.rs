@@ -104,14 +104,15 @@ impl Checker {
         // spindle speed (S0, or none since the start: rs274 starts at S0), after its check of
         // the feed rate (interp_convert.cc convert_straight, convert_arc)
         // (not judged where the mode in force is unsure: after a call, or a G93/G94/G95 in a
-        // condition or loop; review 19)
+        // condition or loop; review 19; asked only under G93 or G95, most blocks' mode being
+        // G94)
         let mode_unsure =
-            self.config.family == Family::LinuxCnc && self.linuxcnc_feed_mode_unsure();
+            |c: &Checker| c.config.family == Family::LinuxCnc && c.linuxcnc_feed_mode_unsure();
         let state = &self.machine.state;
         if feed_motion
-            && self.config.family == Family::LinuxCnc
-            && !mode_unsure
             && state.feed_mode == 95
+            && self.config.family == Family::LinuxCnc
+            && !mode_unsure(self)
             && state.feed.is_some_and(|f| !f.is_zero())
             && state.speed.is_none_or(|s| s.is_zero())
             && !state.is_unknown(b'S')
@@ -136,7 +137,7 @@ impl Checker {
         let written_f = || facts.words.iter().any(|w| w.letter == b'F');
         if feed_motion
             && self.machine.state.feed_mode == 93
-            && !mode_unsure
+            && !mode_unsure(self)
             && !has_f
             && !written_f()
             && !rs274_rate()

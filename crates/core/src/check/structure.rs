@@ -279,6 +279,7 @@ impl Checker {
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_short_seen = [0; 8];
+        self.linuxcnc_seen_hot = [0; 2];
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
@@ -431,11 +432,76 @@ impl Checker {
     /// endsub`, optionally followed by M2 (LinuxCNC's O codes, "Calling Files": `o<name>
     /// call` runs the file of that name, which holds the definition), returns to its caller
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
+    #[inline(always)]
     pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
-        if self.config.family != Family::LinuxCnc || (b.words.is_empty() && b.statements.is_empty())
-        {
+        if self.config.family != Family::LinuxCnc {
             return;
         }
+        // a block without a statement, outside any definition, in a file that is no
+        // subroutine file, after no M2/M30 inside a condition and with no spindle speed
+        // followed through a condition (most of a CAM program's blocks): what the full
+        // reading below does with such a block, and no more
+        // (`linuxcnc_quiet`: the full reading below is the one place that changes those, the
+        // end's depth aside)
+        debug_assert!(!self.linuxcnc_quiet || self.linuxcnc_quiet_now());
+        if b.statements.is_empty() && self.linuxcnc_quiet && self.linuxcnc_end_depth.is_none() {
+            // (a line of plain words: it has an expression where the tokenizer walked a
+            // bracketed word, all of them or not)
+            let walks = &self.line_walks;
+            let line = self.line_walks_of == (b.text.as_ptr() as usize, b.text.len());
+            let expressions = if line && walks.all {
+                walks.set != 0
+            } else {
+                b.words.iter().any(|w| !w.expression.is_empty())
+            };
+            debug_assert_eq!(
+                expressions,
+                b.words.iter().any(|w| !w.expression.is_empty()),
+                "line {}",
+                b.line
+            );
+            // (and a block of neither words nor statements, which the full reading passes
+            // over: the count kept is no other block's)
+            if !expressions {
+                self.linuxcnc_no_slash = self.stats.blocks;
+                return;
+            }
+            if self.linuxcnc_line_walked(b) {
+                self.linuxcnc_no_slash = self.stats.blocks;
+                if self.surely_ended || self.linuxcnc_names_all_seen(b) {
+                    return;
+                }
+                let walks = self.linuxcnc_walk_words(b);
+                self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty(), &walks);
+                return;
+            }
+        }
+        if b.words.is_empty() && b.statements.is_empty() {
+            return;
+        }
+        self.subroutine_file_read(b);
+    }
+
+    /// The file is no subroutine file, no definition is open, and no spindle speed is
+    /// followed through a condition ([`Checker::linuxcnc_if_speed`]): the short path of
+    /// [`Checker::subroutine_file`] may be taken (where no M2/M30 inside a condition came
+    /// before, too).
+    fn linuxcnc_quiet_now(&self) -> bool {
+        self.sub_file == SubFile::No
+            && self.open_definition.is_none()
+            && self.linuxcnc_speed_back.is_none()
+            && self.linuxcnc_if_speed.is_empty()
+    }
+
+    /// [`Checker::subroutine_file`] of any LinuxCNC block, and `linuxcnc_quiet` after it.
+    #[inline(never)]
+    fn subroutine_file_read(&mut self, b: &BlockView<'_>) {
+        self.subroutine_file_body(b);
+        self.linuxcnc_quiet = self.linuxcnc_quiet_now();
+    }
+
+    /// [`Checker::subroutine_file_read`].
+    fn subroutine_file_body(&mut self, b: &BlockView<'_>) {
         // (a block of plain words, as most of a CAM program's are, has nothing to walk)
         let expressions = b.words.iter().any(|w| !w.expression.is_empty());
         // a line whose every bracketed word the tokenizer walked plain (a CAM program's
@@ -1075,6 +1141,7 @@ impl Checker {
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;
         let short = &self.linuxcnc_short_seen;
+        let mut hot = self.linuxcnc_seen_hot;
         let mut set = walks.set;
         while set != 0 {
             let i = set.trailing_zeros() as usize;
@@ -1085,9 +1152,16 @@ impl Checker {
                 let len = close - name;
                 let key = walk.keys[n];
                 // (a name of up to 8 bytes is its key: no byte of a walked name is zero, a
-                // blank; a longer one is compared by its bytes too)
+                // blank, so no key is 0; the last two keys found compared first. A longer
+                // one is compared by its bytes too)
                 let found = if len <= 8 {
-                    short.contains(&key)
+                    debug_assert_ne!(key, 0);
+                    key == hot[0]
+                        || key == hot[1]
+                        || short.contains(&key) && {
+                            hot = [key, hot[0]];
+                            true
+                        }
                 } else {
                     let text = &b.words[i].expression[name..close];
                     seen.iter()
@@ -1098,8 +1172,12 @@ impl Checker {
                 }
             }
         }
+        self.linuxcnc_seen_hot = hot;
         #[cfg(debug_assertions)]
         {
+            assert!(hot
+                .iter()
+                .all(|&k| k == 0 || self.linuxcnc_short_seen.contains(&k)));
             let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
             for w in b.words {
                 let full = self.linuxcnc_undefined_read(w.expression, w.column);

@@ -731,6 +731,10 @@ impl Checker {
         // a plain move found from the block's letters and codes: the full path's verdict
         // without its word loop (a debug build takes the full path and holds the two equal)
         let fast = self.linuxcnc_plain_move(b, facts);
+        if fast.is_some() {
+            // (for the doubles: a debug build holds the full path to the same verdict)
+            self.linuxcnc_plain_block = self.stats.blocks;
+        }
         #[cfg(test)]
         if tests::FULL_ONLY.with(std::cell::Cell::get) {
             return self.linuxcnc_refusals_read(b, facts, start, None);
@@ -1110,6 +1114,21 @@ impl Checker {
         }
         let given = if letters & bit(b'G') == 0 {
             None
+        } else if self.motion_only {
+            // (the block's G words each G0-G3 as written, no M word: its G codes those, the
+            // motion it runs its first, I J K R used in G2 and G3 only)
+            self.code_key?;
+            debug_assert!(self.values.gs().iter().all(|&g| (0..=3).contains(&g)));
+            let first = *self.values.gs().first()?;
+            if first < 2 && letters & (bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R')) != 0 {
+                return None;
+            }
+            let f_at = if letters & bit(b'F') == 0 {
+                None
+            } else {
+                b.words.iter().position(|w| w.letter == b'F')
+            };
+            return Some((Some(first * 10), f_at));
         } else {
             // (a key, so every G word read whole, none after the fifth code; the block's
             // G codes are `values.gs()`, in order)
@@ -1125,7 +1144,7 @@ impl Checker {
         } else {
             b.words.iter().position(|w| w.letter == b'F')
         };
-        let runs = given.or(match self.linuxcnc_motion {
+        let runs = given.or_else(|| match self.linuxcnc_motion {
             LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
             _ => None,
         });
@@ -1316,9 +1335,31 @@ impl Checker {
     /// to the double held before it, and where the sum is not the nearest double of the
     /// decimal sum it is kept; an axis another block moves (a cycle under G91) is no longer
     /// followed until an absolute word.
-    #[inline(never)]
+    #[inline(always)]
     pub(super) fn linuxcnc_doubles(&mut self, before: &Before) {
         let state = &self.machine.state;
+        // a plain move (`linuxcnc_plain_move`: G0-G3 alone, no other code) in absolute
+        // coordinates, each double the nearest before it: so after it (an axis it names takes
+        // the nearest double; one it does not keeps its point, or is not known after it),
+        // whatever the motion in force (a debug build reads the block in full and asserts it)
+        let plain = self.linuxcnc_plain_block == self.stats.blocks;
+        if plain
+            && !state.incremental
+            && matches!(
+                self.linuxcnc_double,
+                [Double::Nearest, Double::Nearest, Double::Nearest]
+            )
+        {
+            #[cfg(debug_assertions)]
+            {
+                self.linuxcnc_doubles_read(before);
+                assert!(matches!(
+                    self.linuxcnc_double,
+                    [Double::Nearest, Double::Nearest, Double::Nearest]
+                ));
+            }
+            return;
+        }
         let taken = self.machine.taken();
         let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
         // (absolute positions of a move outside a NURBS list, most of a CAM program's blocks:
@@ -1327,12 +1368,23 @@ impl Checker {
         if !state.incremental && moves && self.linuxcnc_motion != LinuxCncMotion::Known(Some(52)) {
             #[cfg(debug_assertions)]
             let double = self.linuxcnc_double;
+            // (an axis the block names by the block's letters, its point not read; one a plain
+            // move leaves (`linuxcnc_plain_move`: G0-G3 alone, no other code) keeps its point
+            // or is not known after it, and its point is not compared)
+            let given = self.values.given();
             for k in 0..3 {
-                let now = state.position[k];
-                if now.is_none() || self.values.has(crate::modal::AXES[k]) {
+                if given & bit(crate::modal::AXES[k]) != 0 {
                     self.linuxcnc_double[k] = Double::Nearest;
-                } else if before.xyz[k] != now {
-                    self.linuxcnc_double[k] = Double::Unknown;
+                    continue;
+                }
+                match (before.xyz[k], state.position[k]) {
+                    (_, None) => self.linuxcnc_double[k] = Double::Nearest,
+                    _ if plain => {}
+                    // (a point the block left: the same value, its mantissa and scale)
+                    (Some(start), Some(now))
+                        if start.scale == now.scale && { start.mantissa } == { now.mantissa } => {}
+                    (start, now) if start != now => self.linuxcnc_double[k] = Double::Unknown,
+                    _ => {}
                 }
             }
             #[cfg(debug_assertions)]
@@ -1353,6 +1405,7 @@ impl Checker {
     }
 
     /// [`Checker::linuxcnc_doubles`] of any block, axis by axis.
+    #[inline(never)]
     fn linuxcnc_doubles_read(&mut self, before: &Before) {
         let state = &self.machine.state;
         let plain = matches!(
