@@ -2376,6 +2376,19 @@ def test_a_restart_at_the_end_of_tape_after_m30_says_the_program_ended():
         "cannot restart here: the program has ended before this line")
 
 
+def test_a_fanuc_lathe_h_word_is_an_increment_of_c():
+    """Review 36, finding 3 (doubtful safety): in G code system A a FANUC lathe writes C's
+    increment as H (as U and W of X and Z), which fanuc-lathe's classification does not hold
+    (TG134): `H90.` turned C and the restart after it was planned as if C had not moved. It
+    is a C move now: C lost, the way in ended, refused until the main spindle's M03/M04."""
+    lathe = load_profile("fanuc-lathe")
+    text = ("%\nO3003\nG20 G18 G40 G80 G99\nT0101\nG97 S1000 M03\nG00 X2.2 Z0.1\n"
+            "G01 Z-1. F0.005\nG00 X2.4\nG00 Z0.2\nM05\nT0202\nG00 X2.2 Z0.1\nH90.\n"
+            "G01 X2.0 F0.005\nG00 X2.4\nM30\n%\n")
+    assert refusal(text, 15, lathe).startswith(
+        "cannot restart here: the program moved C on line 13")
+
+
 def test_a_lathe_way_in_stops_at_a_move_of_c():
     """Review 35, finding 3: a lathe's way in replayed X and Z moves made at another C: the
     hole at C0 drilled to X0.8 was replayed after the preamble set C90., where the program

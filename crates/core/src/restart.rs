@@ -2229,6 +2229,28 @@ impl Walk {
             .iter()
             .map(|&(l, _)| self.axis(l))
             .find(|&a| a != b'X' && a != b'Z');
+        // (review 36, finding 3) a FANUC lathe's H and V in G code system A are the increments
+        // of C and Y, as U and W are of X and Z (the profile's classification does not hold
+        // them, TG134): a move of C or Y from where the walk cannot say, so C or Y is lost
+        let increment = if self.fanuc_lathe {
+            plain_words.iter().find_map(|&(l, t)| match l {
+                b'H' => Some((b'C', t)),
+                b'V' => Some((b'Y', t)),
+                _ => None,
+            })
+        } else {
+            None
+        };
+        if let Some((axis, token)) = increment {
+            self.moves.clear();
+            self.lane = None;
+            self.side_move = Some((line, axis));
+            let mut what = token.to_vec();
+            what.extend_from_slice(b", an increment of ");
+            what.push(axis);
+            what.extend_from_slice(b" (G code system A) the walk does not follow");
+            self.lose_unknown(axis, line, what);
+        }
         if self.lathe && side.is_some() {
             self.moves.clear();
             self.lane = None;
