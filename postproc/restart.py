@@ -582,7 +582,11 @@ class _Planner:
         if not self.walker.lathe or walk.live_modes:
             return
         change = walk.tool_change
-        if walk.side_move is not None:
+        starts = any(w.letter == "M" and w.number and w.number.isdigit()
+                     and int(w.number) in (3, 4) for w in self.block.word_objects())
+        if walk.side_move is not None and not starts:
+            # (a restart block that starts the main spindle itself is where the message sends
+            # the operator: review 36, finding 5)
             at, axis = walk.side_move
             raise self.refuse(
                 f"the program moved {axis} on line {at} and has not started the main spindle "
@@ -591,8 +595,6 @@ class _Planner:
                 "codes (TG307), which the preamble cannot restore (only haas-lathe's are "
                 "known); restart at a block before the program switches them on, or after the "
                 "M03 or M04 that starts the main spindle again")
-        starts = any(w.letter == "M" and w.number and w.number.isdigit()
-                     and int(w.number) in (3, 4) for w in self.block.word_objects())
         carried = (s.spindle in ("cw", "ccw") and change is not None
                    and walk.spin_line < change)
         if walk.builder_m is not None and carried and not starts:
@@ -834,7 +836,9 @@ class _Planner:
         # a lathe's C is the main spindle in position mode, which has no place while the
         # spindle turns (M03/M04): not positioned then (review 34, finding 2: the approach
         # sent `G00 C30.` after `M03`, a C move with the spindle turning)
-        turning = self.walker.lathe and self.state.spindle in ("cw", "ccw")
+        turning = self.walker.lathe and (self.state.spindle in ("cw", "ccw") or any(
+            w.letter == "M" and w.number and w.number.isdigit() and int(w.number) in (3, 4)
+            for w in self.block.word_objects()))  # (or the restart block starts it itself)
         axes = [a for a in AXES if not (self.walker.g50_lathe and a in "UW")
                 and not (turning and a == "C")]
         places = {axis: self.where(axis) for axis in axes}

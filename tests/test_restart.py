@@ -2278,6 +2278,11 @@ def test_a_fanuc_lathe_live_tool_by_the_builders_m_codes_refuses_the_restart():
         "or after the M03 or M04 that starts the main spindle"), said
     # at the block that starts the main spindle itself (N13, line 16): planned
     assert plan(CROSS_HOLE.format(c=""), 16, lathe).preamble
+    # at the block that starts the main spindle itself after the C move (review 36, finding
+    # 5: the message sent the operator to this very block, which it refused): planned, C not
+    # positioned (the block turns the spindle)
+    own_start = plan(at_c, 17, lathe)
+    assert not any("C45." in block for block in own_start.preamble), own_start.preamble
     # turning again after M03: planned, C not positioned
     turning = plan(at_c, 19, lathe)
     assert not any("C45." in block for block in turning.preamble), turning.preamble
