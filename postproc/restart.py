@@ -582,8 +582,7 @@ class _Planner:
         if not self.walker.lathe or walk.live_modes:
             return
         change = walk.tool_change
-        starts = any(w.letter == "M" and w.number and w.number.isdigit()
-                     and int(w.number) in (3, 4) for w in self.block.word_objects())
+        starts = self.block_starts_spindle()
         if walk.side_move is not None and not starts:
             # (a restart block that starts the main spindle itself is where the message sends
             # the operator: review 36, finding 5)
@@ -836,9 +835,8 @@ class _Planner:
         # a lathe's C is the main spindle in position mode, which has no place while the
         # spindle turns (M03/M04): not positioned then (review 34, finding 2: the approach
         # sent `G00 C30.` after `M03`, a C move with the spindle turning)
-        turning = self.walker.lathe and (self.state.spindle in ("cw", "ccw") or any(
-            w.letter == "M" and w.number and w.number.isdigit() and int(w.number) in (3, 4)
-            for w in self.block.word_objects()))  # (or the restart block starts it itself)
+        turning = self.walker.lathe and (self.state.spindle in ("cw", "ccw")
+                                         or self.block_starts_spindle())
         axes = [a for a in AXES if not (self.walker.g50_lathe and a in "UW")
                 and not (turning and a == "C")]
         places = {axis: self.where(axis) for axis in axes}
@@ -1169,6 +1167,11 @@ class _Planner:
                 "with the old tool's length; restart at the block that sets the new tool's "
                 "length offset and Z (G43 H.. Z..), or at the tool change")
         return False
+
+    def block_starts_spindle(self) -> bool:
+        """Whether the restart block starts the (main) spindle itself: an M03 or M04."""
+        return any(w.letter == "M" and w.number and w.number.isdigit()
+                   and int(w.number) in (3, 4) for w in self.block.word_objects())
 
     def block_target(self, axis: str) -> Decimal | None:
         """The restart block's own absolute target of ``axis``, if it gives one plainly."""
