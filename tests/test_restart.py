@@ -2109,7 +2109,12 @@ def test_polar_and_cylindrical_g_code_system_b_codes_refuse_on_a_mill_too(profil
         f"cannot restart here: {code} ({kind} interpolation) from line 9 is in force and the "
         "preamble cannot restore it")
     said = refusal(mill.format(on=on, off=f"N10 {off}\n"), 14, machine)
-    assert "is not known here (line 12: " in said and "interpolation" in said, said
+    if " Y0" in on:
+        # a Haas G107 naming Y maps Y alone (review 36, finding 8): X and C moved under it as
+        # written, Y lost at its own block's word
+        assert "the position of Y is not known here (line 9: Y0 in a G107 block)" in said, said
+    else:
+        assert "is not known here (line 12: " in said and "interpolation" in said, said
     haas = refusal(mill.format(on="G112", off=""), 11, load_profile("haas-mill"))
     assert "G112 (an extended work offset)" in haas, haas
 
@@ -2392,6 +2397,23 @@ def test_a_fanuc_lathe_h_word_is_an_increment_of_c():
             "G01 X2.0 F0.005\nG00 X2.4\nM30\n%\n")
     assert refusal(text, 15, lathe).startswith(
         "cannot restart here: the program moved C on line 13")
+
+
+def test_a_haas_g107_cancel_loses_the_mapped_axes_only():
+    """Review 36, finding 8: after a Haas G107's cancel Z was lost, though the mapping turns
+    only its named linear axis onto the cylinder (Haas mill manual, G107: "all programmed
+    motion occurring in a specified linear axis"): Z written under it is where it was written.
+    The rotary axis (A, which the program had moved) is lost, so the restart stays refused
+    until A is written; once it is, Z is no obstacle."""
+    haas = load_profile("haas-mill")
+    text = ("%\nO2004\nG20 G17 G40 G49 G80 G90\nT1 M06\nG00 G54 X0. Y0. A0. S3000 M03\n"
+            "G43 H01 Z1.\nG107 Y0 R1.\nG01 Z-0.05 F10.\nG01 Y2.\nG00 Z1.\nG107\n"
+            "G00 X1. Y0.\nG01 Z-0.1 F10.\nM30\n%\n")
+    assert "the position of A is not known here (line 11" in refusal(text, 13, haas)
+    # A written again after the cancel: the Z1. written under G107 is where the tool is
+    again = text.replace("G00 X1. Y0.\n", "G00 X1. Y0. A0.\n")
+    restart = plan(again, 13, haas)
+    assert "G00 G43 Z1. H01" in restart.preamble, restart.preamble
 
 
 def test_a_lathe_way_in_stops_at_a_move_of_c():

@@ -320,6 +320,9 @@ pub struct Walk {
     /// at its cancel the tool stands at the transformed point, which the modal state's
     /// number is not.
     transformed: u16,
+    /// A Haas G107's mapped linear axis (bits of [`AXES`] indexes; every linear axis where its
+    /// block names none): the only linear axis its moves transform (review 36, finding 8).
+    haas_cylinder: u16,
     /// The axes a G92 in force shifted (bits of [`AXES`] indexes): lost at its cancel.
     shifted: u16,
     /// The axes a FANUC G51.1 mirrors (bits of [`AXES`] indexes): G50.1 ends the mirror of
@@ -574,6 +577,7 @@ impl Walk {
             m6_line: 0,
             coolant: Vec::new(),
             transformed: 0,
+            haas_cylinder: 0,
             shifted: 0,
             mirrored: 0,
             haas_mirrored: 0,
@@ -794,6 +798,19 @@ impl Walk {
                     };
                 }
                 self.transformed |= named;
+                let linear = [b'X', b'Y', b'Z'];
+                let mask = |pick: &dyn Fn(u8) -> bool| {
+                    linear
+                        .iter()
+                        .filter(|&&a| pick(a))
+                        .filter_map(|&a| axis_index(a))
+                        .fold(0u16, |m, i| m | bit(i))
+                };
+                let given = mask(&|a| {
+                    plain_words.iter().any(|&(l, _)| l == a)
+                        || axis_index(a).is_some_and(|i| params & bit(i) != 0)
+                });
+                self.haas_cylinder = if given != 0 { given } else { mask(&|_| true) };
             }
             let what = format!("{code} (cylindrical interpolation)");
             self.set_unrestored("7.1", line, what);
@@ -832,15 +849,29 @@ impl Walk {
     /// images are the only transforms in force (a mirror of X leaves Y's numbers as written:
     /// FANUC G51.1, Haas G101 mirror the axes they name).
     fn under_transform(&self, bits: u16) -> u16 {
+        // a Haas G107 maps its one linear axis onto the cylinder, the others move as written
+        // (Haas mill manual, G107: "all programmed motion occurring in a specified linear
+        // axis"; review 36, finding 8: a Z written under it was lost at the cancel)
+        let haas = self.control == Control::Haas;
         let other = self.unrestored.iter().any(|(k, _, _)| {
-            matches!(k.as_str(), "68" | "51" | "11" | "69" | "62")
-                || TILTED_PLANES.contains(&k.as_str())
-                || INTERPOLATED_PLANES.contains(&k.as_str())
+            !(haas && k == "7.1")
+                && (matches!(k.as_str(), "68" | "51" | "11" | "69" | "62")
+                    || TILTED_PLANES.contains(&k.as_str())
+                    || INTERPOLATED_PLANES.contains(&k.as_str()))
         });
         if other {
             return bits;
         }
-        bits & (self.mirrored | self.mirror_doubt | self.haas_mirrored | self.haas_mirror_doubt)
+        let cylinder = if haas && self.unrestored.iter().any(|(k, _, _)| k == "7.1") {
+            self.haas_cylinder
+        } else {
+            0
+        };
+        bits & (self.mirrored
+            | self.mirror_doubt
+            | self.haas_mirrored
+            | self.haas_mirror_doubt
+            | cylinder)
     }
 
     /// A mirror cancel `code` (FANUC G50.1, Haas G100) on `line`, given the axes (bits of
