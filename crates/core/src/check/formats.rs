@@ -47,6 +47,9 @@ pub(super) struct FormatTable {
     /// ([`super::CodeWord`]) are of, a bit each: a G or M word of another whole number below
     /// 128 names nothing, and is not looked for in the list ([`Checker::named_words`]).
     pub(super) named_codes: [u128; 2],
+    /// The letters the profile's classification lacks where it has one (`format_in` in mm
+    /// None), a bit each ([`crate::modal::bit`]): 0 for a profile without formats.
+    pub(super) unformatted: u32,
 }
 
 /// The places of [`FormatTable::clean`].
@@ -59,12 +62,21 @@ impl FormatTable {
     pub(super) fn new(config: &Config) -> FormatTable {
         let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
         let numbers = config.numbers();
+        let formats: [[Option<WordFormat>; 26]; 2] = [of(Units::Metric), of(Units::Inch)];
+        let unformatted = if config.formats.is_empty() {
+            0
+        } else {
+            (0..26)
+                .filter(|&i| formats[0][i].is_none())
+                .fold(0, |bits, i| bits | 1 << i)
+        };
         FormatTable {
-            formats: [of(Units::Metric), of(Units::Inch)],
+            formats,
             no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
             clean: vec![(0, WordFormat::fallback(b'A'), NO_SCALE); KEPT].into_boxed_slice(),
             afresh: false,
             named_codes: named_codes(&config.facts.code_words),
+            unformatted,
         }
     }
 }

@@ -898,6 +898,14 @@ pub struct Checker {
     /// The letters and whether the codes are G00-G03 alone of the line of plain words
     /// `line_walks_of` names, found by its reader ([`letters_and_motion`] of its words).
     line_letters: (u32, bool),
+    /// Of that line, where it has no bracketed word (every word plain: a letter, a sign, a
+    /// number), the addresses of its first eight words and whether a letter repeats
+    /// ([`crate::tokenizer::PlainLine`]'s `addresses` and `repeated`); else None.
+    line_addresses: Option<(u64, bool)>,
+    /// The block in hand is a line of plain words without a bracketed word
+    /// (`line_addresses` is its): no word has an index or an expression, and it has no block
+    /// skip (set by `read_block`).
+    plain_block: bool,
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
     /// inside one runs depends on values the checker does not follow, so what rs274 refuses
@@ -1068,6 +1076,8 @@ impl Checker {
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),
+            line_addresses: None,
+            plain_block: false,
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
@@ -1195,6 +1205,8 @@ impl Checker {
         if let Some(plain) = plain_line_words(text, dialect, &mut words, walks, |o| o + 1, tv) {
             self.line_walks_of = (text.as_ptr() as usize, text.len());
             self.line_letters = (plain.letters, plain.motion_codes_only);
+            self.line_addresses = (self.line_walks.set == 0 && self.line_walks.all)
+                .then_some((plain.addresses, plain.repeated));
             let ascii = plain.ascii;
             if !ascii {
                 for w in &mut words {
@@ -1357,18 +1369,29 @@ impl Checker {
         // (the letters first: every rule after may ask them, not walk the words)
         // (a line of plain words has them from its reader: no walk of its words)
         let motion_words;
-        (self.letters, motion_words) =
-            if self.line_walks_of == (b.text.as_ptr() as usize, b.text.len()) {
-                debug_assert_eq!(
-                    self.line_letters,
-                    letters_and_motion(b.words),
-                    "line {}: a plain line's letters",
-                    b.line
-                );
-                self.line_letters
-            } else {
-                letters_and_motion(b.words)
-            };
+        let plain_line = self.line_walks_of == (b.text.as_ptr() as usize, b.text.len());
+        (self.letters, motion_words) = if plain_line {
+            debug_assert_eq!(
+                self.line_letters,
+                letters_and_motion(b.words),
+                "line {}: a plain line's letters",
+                b.line
+            );
+            self.line_letters
+        } else {
+            letters_and_motion(b.words)
+        };
+        self.plain_block = plain_line && self.line_addresses.is_some();
+        debug_assert!(
+            !self.plain_block
+                || !b.skip
+                    && b.skip_within.is_none()
+                    && b.words
+                        .iter()
+                        .all(|w| w.index.is_empty() && w.expression.is_empty()),
+            "line {}: a plain block's words",
+            b.line
+        );
         self.reading_end.read(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),

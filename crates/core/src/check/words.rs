@@ -95,7 +95,17 @@ impl Checker {
         for &(column, comment) in b.comments {
             self.comment(comment, line, column);
         }
-        self.block_skip(b);
+        // (a line of plain words without a bracketed word has no block skip, at its start or
+        // within, and no expression for a '/' to follow: nothing of the block skip's rules to
+        // ask; a debug build asks them, and asserts they find nothing)
+        if !self.plain_block || cfg!(debug_assertions) {
+            let before = self.found.len();
+            self.block_skip(b);
+            debug_assert!(
+                !self.plain_block || self.found.len() == before,
+                "line {line}: a plain block's skip found"
+            );
+        }
         self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
         // (its one reader is the decimal point of an M, S or T word on a FANUC,
@@ -272,6 +282,12 @@ impl Checker {
         if b.words.len() > 7 || self.format_table.afresh {
             return None;
         }
+        // a line of plain words without a bracketed word: its letters, whether one repeats
+        // and its addresses from its reader, with no walk of its words (its words are letters
+        // without index or expression; a debug build walks them too, and asserts the same key)
+        if self.plain_block && !cfg!(debug_assertions) {
+            return self.plain_addresses_key(b.words.len(), plane);
+        }
         let has_formats = !self.config.formats.is_empty();
         let mut key = 0u64;
         let mut letters = 0u32;
@@ -289,7 +305,27 @@ impl Checker {
             key |= u64::from(w.address) << (8 * i);
         }
         let side = u64::from(plane == 18 || plane == 19);
-        Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56)
+        let key = Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56);
+        debug_assert!(
+            !self.plain_block || self.plain_addresses_key(b.words.len(), plane) == key,
+            "line {}: a plain block's addresses key",
+            b.line
+        );
+        key
+    }
+
+    /// [`Checker::addresses_key`] of a block of `words` (at most seven) that is a line of
+    /// plain words without a bracketed word (`plain_block`), from what its reader found: None
+    /// where a letter repeats or the classification lacks one, else its addresses as
+    /// written, a byte each, and its length and plane.
+    #[inline(always)]
+    fn plain_addresses_key(&self, words: usize, plane: i64) -> Option<u64> {
+        let (addresses, repeated) = self.line_addresses?;
+        if repeated || self.letters & self.format_table.unformatted != 0 {
+            return None;
+        }
+        let side = u64::from(plane == 18 || plane == 19);
+        Some(addresses | (0x80 | side << 3 | words as u64) << 56)
     }
     /// A FANUC lathe's G71 or G72 block (not a Haas's): its D, the depth of cut of the
     /// one-block form `G71 P Q U W D F`, is no word of the control's standard format, which
