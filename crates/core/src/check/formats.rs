@@ -528,7 +528,46 @@ impl Checker {
     /// [`read_word`] reads it. `plain_keys`: the block's words' keys are their own
     /// ([`Checker::plain_format_key`]). A debug build asks the rules of a kept word as well
     /// and asserts the verdict clean and the value the same, to the scale.
+    ///
+    /// A plain key kept with its word's value from its scan (nearly every word of a CAM
+    /// program) is read here, inline where the words are walked; anything else is
+    /// [`Checker::format_or_kept_out`]'s, out of line (a debug build asks it of every word).
+    #[inline(always)]
     pub(super) fn format_or_kept(
+        &mut self,
+        w: &Word<'_>,
+        line: usize,
+        context: &mut u64,
+        plain_keys: bool,
+    ) -> Option<Dec> {
+        if plain_keys && !cfg!(debug_assertions) {
+            if let Some(key) = Checker::plain_format_key(w, *context) {
+                let place = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 54) as usize % KEPT;
+                let (kept, _, scale) = &self.format_table.clean[place];
+                if *kept == key {
+                    let read = match (w.value, w.point) {
+                        (Some(m), true) => {
+                            Some(Dec::from_u64(m, (w.number.len() - w.dot - 1) as u32))
+                        }
+                        (Some(m), false) if *scale != NO_SCALE => {
+                            Some(Dec::from_u64(m, u32::from(*scale)))
+                        }
+                        _ => None,
+                    };
+                    match read {
+                        Some(value) if w.sign == b"-" => return Some(-value),
+                        Some(value) => return Some(value),
+                        None => {}
+                    }
+                }
+            }
+        }
+        self.format_or_kept_out(w, line, context, plain_keys)
+    }
+
+    /// [`Checker::format_or_kept`] in full: the key, the kept verdict or the rules.
+    #[inline(never)]
+    fn format_or_kept_out(
         &mut self,
         w: &Word<'_>,
         line: usize,
