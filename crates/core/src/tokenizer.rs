@@ -1071,10 +1071,8 @@ struct WordsOut<'w, 'a, F: Fn(usize) -> usize, const CRS: bool> {
     crs: usize,
     letters: u32,
     motion_codes_only: bool,
-    /// [`PlainLine::addresses`], [`PlainLine::repeated`] so far, and the plain words so far.
+    /// [`PlainLine::addresses`] so far.
     addresses: u64,
-    repeated: bool,
-    plain_words: u32,
 }
 
 impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, 'a, F, CRS> {
@@ -1082,13 +1080,8 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
     fn plain(&mut self, line: &'a [u8], pos: usize, end: usize, signed: bool, digits: Digits) {
         // (a plain word's address is a letter: `PLAIN_START`)
         let letter = line[pos].to_ascii_uppercase();
-        let bit = 1 << (letter - b'A');
-        self.repeated |= self.letters & bit != 0;
-        self.letters |= bit;
-        if self.plain_words < 8 {
-            self.addresses |= u64::from(line[pos]) << (8 * self.plain_words);
-        }
-        self.plain_words += 1;
+        self.letters |= 1 << (letter - b'A');
+        self.addresses = self.addresses << 8 | u64::from(line[pos]);
         if letter == b'G' {
             // G0-G3, G00-G03, G000-G003: no sign, no point, at most three digits
             let length = end - pos - 1 - usize::from(signed);
@@ -1153,12 +1146,11 @@ pub struct PlainLine {
     /// Every G word of the line is G0-G3 written plainly (`G1`, `G01`, `G001`: no sign, point,
     /// index or expression), as the check's `motion_codes_only` reads a block's codes.
     pub motion_codes_only: bool,
-    /// The addresses as written of the line's first eight plain words, byte `i` the `i`th's
-    /// (0 past the last): of a line without a bracketed word, the check's key of its words'
-    /// addresses (`Checker::addresses_key`) without a walk of its words.
+    /// The addresses as written of the line's last eight plain words, the last word's in the
+    /// lowest byte (0 before the first): of a line of at most eight words without a bracketed
+    /// word, the check's key of its words' addresses (`Checker::addresses_key`) without a walk
+    /// of its words.
     pub addresses: u64,
-    /// A plain word's letter is an earlier word's (a lower case address as its capital).
-    pub repeated: bool,
 }
 
 /// The words of a `line` made of plain words alone ([`plain_word`]: nearly every line of a
@@ -1210,8 +1202,6 @@ fn plain_line_words_as<'a, const CRS: bool>(
         letters: 0,
         motion_codes_only: true,
         addresses: 0,
-        repeated: false,
-        plain_words: 0,
     };
     let pos = out.skip_blanks(line, 0);
     if matches!(line.get(pos), Some(&(SUB | b'%' | b'/'))) || line.starts_with(BOM) {
@@ -1223,7 +1213,6 @@ fn plain_line_words_as<'a, const CRS: bool>(
         letters: out.letters,
         motion_codes_only: out.motion_codes_only,
         addresses: out.addresses,
-        repeated: out.repeated,
     })
 }
 
@@ -1814,17 +1803,14 @@ mod tests {
                             && w.expression.is_empty()
                             && w.index.is_empty()
                 });
-                // the addresses of the first eight plain words, and whether a plain word's
-                // letter is an earlier word's
+                // the addresses of the last eight plain words, the last in the lowest byte
                 let addresses = words[1..]
                     .iter()
                     .filter(|w| w.expression.is_empty())
+                    .rev()
                     .take(8)
                     .enumerate()
                     .fold(0, |a, (i, w)| a | u64::from(w.address) << (8 * i));
-                let repeated = words[1..].iter().enumerate().any(|(i, w)| {
-                    w.expression.is_empty() && words[1..=i].iter().any(|e| e.letter == w.letter)
-                });
                 assert_eq!(
                     found,
                     PlainLine {
@@ -1833,7 +1819,6 @@ mod tests {
                         letters,
                         motion_codes_only,
                         addresses,
-                        repeated,
                     },
                     "{:?} {dialect:?}",
                     String::from_utf8_lossy(line)

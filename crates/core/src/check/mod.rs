@@ -928,9 +928,9 @@ pub struct Checker {
     /// `line_walks_of` names, found by its reader ([`letters_and_motion`] of its words).
     line_letters: (u32, bool),
     /// Of that line, where it has no bracketed word (every word plain: a letter, a sign, a
-    /// number), the addresses of its first eight words and whether a letter repeats
-    /// ([`crate::tokenizer::PlainLine`]'s `addresses` and `repeated`); else None.
-    line_addresses: Option<(u64, bool)>,
+    /// number), the addresses of its last eight words ([`crate::tokenizer::PlainLine`]'s
+    /// `addresses`); else None.
+    line_addresses: Option<u64>,
     /// The block in hand is a line of plain words without a bracketed word
     /// (`line_addresses` is its): no word has an index or an expression, and it has no block
     /// skip (set by `read_block`).
@@ -1234,8 +1234,8 @@ impl Checker {
         if let Some(plain) = plain_line_words(text, dialect, &mut words, walks, |o| o + 1, tv) {
             self.line_walks_of = (text.as_ptr() as usize, text.len());
             self.line_letters = (plain.letters, plain.motion_codes_only);
-            self.line_addresses = (self.line_walks.set == 0 && self.line_walks.all)
-                .then_some((plain.addresses, plain.repeated));
+            self.line_addresses =
+                (self.line_walks.set == 0 && self.line_walks.all).then_some(plain.addresses);
             let ascii = plain.ascii;
             if !ascii {
                 for w in &mut words {

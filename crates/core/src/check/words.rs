@@ -271,7 +271,7 @@ impl Checker {
     /// The key of the rules of a block's words that read only their places, letters and
     /// addresses as written (TG102, TG124, TG125, TG130-TG133, TG137: case, alignment, order,
     /// repeats, several G words, addresses outside the classification; TG206's index, none
-    /// here): the addresses of its words as written, one byte each, and whether the plane is
+    /// here): the addresses of its words as written, one byte each (the last lowest), and whether the plane is
     /// G18 or G19 (the order of I J K). None -- its rules asked -- for a block of more than
     /// seven words, or with a word that has an index or an expression, an address other than
     /// a letter, a letter written twice (whether that repeat is a macro call's arguments reads
@@ -291,7 +291,7 @@ impl Checker {
         let has_formats = !self.config.formats.is_empty();
         let mut key = 0u64;
         let mut letters = 0u32;
-        for (i, w) in b.words.iter().enumerate() {
+        for w in b.words {
             let letter = w.letter;
             if !letter.is_ascii_uppercase()
                 || !w.index.is_empty()
@@ -302,7 +302,7 @@ impl Checker {
                 return None;
             }
             letters |= bit(letter);
-            key |= u64::from(w.address) << (8 * i);
+            key = key << 8 | u64::from(w.address);
         }
         let side = u64::from(plane == 18 || plane == 19);
         let key = Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56);
@@ -316,12 +316,14 @@ impl Checker {
 
     /// [`Checker::addresses_key`] of a block of `words` (at most seven) that is a line of
     /// plain words without a bracketed word (`plain_block`), from what its reader found: None
-    /// where a letter repeats or the classification lacks one, else its addresses as
-    /// written, a byte each, and its length and plane.
+    /// where a letter repeats (fewer letters than words) or the classification lacks one,
+    /// else its addresses as written, a byte each, and its length and plane.
     #[inline(always)]
     fn plain_addresses_key(&self, words: usize, plane: i64) -> Option<u64> {
-        let (addresses, repeated) = self.line_addresses?;
-        if repeated || self.letters & self.format_table.unformatted != 0 {
+        let addresses = self.line_addresses?;
+        if self.letters.count_ones() as usize != words
+            || self.letters & self.format_table.unformatted != 0
+        {
             return None;
         }
         let side = u64::from(plane == 18 || plane == 19);
