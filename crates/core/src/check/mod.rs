@@ -991,6 +991,9 @@ pub struct Checker {
     /// a selector is no position, radius or word read in increments; a tilted plane's origin
     /// and a cylinder's radius are no move.
     meanings: crate::meaning::Meanings,
+    /// `meanings` is [`crate::meaning::Meanings::default`], as no code gave it otherwise
+    /// (false: it may be or not).
+    meanings_none: bool,
     /// The meanings of the last block shapes met ([`shapes`]).
     shapes: shapes::Shapes,
     /// The key of the block in hand's codes ([`codes::code_key`]), and what the rules found
@@ -1086,6 +1089,7 @@ impl Checker {
             length_decimal: false,
             outside: [0; 9],
             meanings: crate::meaning::Meanings::default(),
+            meanings_none: true,
             shapes: shapes::Shapes::default(),
             code_key: None,
             verdicts: codes::CodeVerdicts::default(),
@@ -1708,7 +1712,20 @@ impl Checker {
             self.jump_arrival(b);
         }
         let modal = &self.config.modal;
-        self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap, motion_only);
+        // (no meaning, as most blocks': the meanings left as they are where they are none
+        // already)
+        match self.code_meanings(b, modal.fanuc_lathe || modal.lap, motion_only) {
+            None if self.meanings_none => {}
+            None => {
+                self.meanings = crate::meaning::Meanings::default();
+                self.meanings_none = true;
+            }
+            Some(meanings) => {
+                self.meanings = meanings;
+                self.meanings_none = false;
+            }
+        }
+        debug_assert!(!self.meanings_none || self.meanings == crate::meaning::Meanings::default());
         self.words(b);
         self.targets(b);
         // (the rules that read only a block's statements are not called for a block with
@@ -1956,12 +1973,15 @@ impl Checker {
     /// table gives a word a meaning by (`convert::cycle_table`, [`crate::meaning::block`]),
     /// and a cycle in force is not read in a block that writes a G code: no meaning, no shape
     /// worked out (a debug build works the meanings out and holds them to none).
+    ///
+    /// None for a block no code gives a word a meaning without a look at its words (G00-G03
+    /// alone, or no code and no mill's cycle in force): [`crate::meaning::Meanings::default`].
     fn code_meanings(
         &mut self,
         b: &BlockView<'_>,
         lathe: bool,
         motion_only: bool,
-    ) -> crate::meaning::Meanings {
+    ) -> Option<crate::meaning::Meanings> {
         if motion_only {
             debug_assert_eq!(
                 self.meanings_afresh(b, lathe),
@@ -1969,25 +1989,25 @@ impl Checker {
                 "line {}: G00-G03 gave a word a meaning",
                 b.line
             );
-            return crate::meaning::Meanings::default();
+            return None;
         }
         let codes = self.letters & (bit(b'G') | bit(b'M')) != 0;
         // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
         // G81): its words mean what the cycle's do
         let cycle = self.machine.state.cycle.filter(|_| !lathe);
         if !codes && cycle.is_none() {
-            return crate::meaning::Meanings::default(); // no code gives a word a meaning
+            return None; // no code gives a word a meaning
         }
         let Some(shape) = shapes::Shape::of(b.words, cycle) else {
-            return self.meanings_afresh(b, lathe);
+            return Some(self.meanings_afresh(b, lathe));
         };
         if let Some(kept) = self.shapes.get(&shape) {
             debug_assert_eq!(kept, self.meanings_afresh(b, lathe), "line {}", b.line);
-            return kept;
+            return Some(kept);
         }
         let meanings = self.meanings_afresh(b, lathe);
         self.shapes.keep(shape, meanings);
-        meanings
+        Some(meanings)
     }
 
     /// [`Checker::code_meanings`] worked out from the tables.

@@ -144,8 +144,8 @@ impl Checker {
         // `Meanings::any` does not count, so the roles themselves are looked at)
         let plain_keys = !self.format_table.afresh
             && self.named.is_empty()
-            && self.meanings.roles == [None; 26]
-            && !self.meanings.start_angle;
+            && (self.meanings_none
+                || self.meanings.roles == [None; 26] && !self.meanings.start_angle);
         // the rules of each word's place, letter and address below are a function of the
         // block's addresses alone where it has a key: asked once a key (a debug build asks
         // them of a kept block too, and asserts they find nothing)
