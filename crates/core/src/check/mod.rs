@@ -1813,9 +1813,11 @@ impl Checker {
                 }
                 // G68 R45 (an angle), G05.1 Q1 (a selector), G68.2 X Y Z (a tilted plane's
                 // origin): no position, radius or cycle value
+                // (no code of the block gives a meaning, as most blocks': none of these)
                 letter
-                    if self.meanings.not_length(letter)
-                        || (self.meanings.data && AXES.contains(&letter)) => {}
+                    if !self.meanings_none
+                        && (self.meanings.not_length(letter)
+                            || (self.meanings.data && AXES.contains(&letter))) => {}
                 letter => self.values.set_default(letter, v),
             }
         }
