@@ -1216,6 +1216,81 @@ fn plain_line_words_as<'a, const CRS: bool>(
     })
 }
 
+/// Whether every plain word of `dialect` is a letter, a sign, digits and a point
+/// ([`plain_word`]), none a bracketed word (`bracket_word` reads those on ISO and LinuxCNC
+/// where the dialect has expressions in brackets): a plain word then holds no LF, nor do the
+/// blanks after it, and its line can be scanned before it is split from the lines after it
+/// ([`plain_line_words_to_lf`]).
+pub fn plain_words_without_brackets(dialect: &Dialect) -> bool {
+    !(dialect.expressions
+        && dialect.brackets
+        && matches!(dialect.family, Family::LinuxCnc | Family::Iso))
+}
+
+/// [`plain_line_words`] of the line `rest` begins with (up to its first LF, or all of it)
+/// where [`plain_words_without_brackets`] holds: the line's words scanned with no search for
+/// its LF first (the scan stops at the LF, which no plain word or blank is), and the line's
+/// length (the LF's place). None where the line is not one of plain words alone, as
+/// [`plain_line_words`] finds of it (`words` then holds what it held and some of its words):
+/// the same words and [`PlainLine`] where it is (a debug build reads the line split first as
+/// well, and asserts them).
+pub fn plain_line_words_to_lf<'a>(
+    rest: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
+    at: impl Fn(usize) -> usize,
+    crs: bool,
+) -> Option<(PlainLine, usize)> {
+    debug_assert!(plain_words_without_brackets(dialect));
+    walks.set = 0;
+    walks.all = true;
+    if crs {
+        plain_line_words_to_lf_as::<true>(rest, dialect, words, walks, at)
+    } else {
+        plain_line_words_to_lf_as::<false>(rest, dialect, words, walks, at)
+    }
+}
+
+/// [`plain_line_words_to_lf`], the CRs counted where `CRS`.
+#[inline(always)]
+fn plain_line_words_to_lf_as<'a, const CRS: bool>(
+    rest: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
+    at: impl Fn(usize) -> usize,
+) -> Option<(PlainLine, usize)> {
+    let mut out = WordsOut::<_, CRS> {
+        words,
+        walks,
+        at,
+        ascii: true,
+        crs: 0,
+        letters: 0,
+        motion_codes_only: true,
+        addresses: 0,
+    };
+    let pos = out.skip_blanks(rest, 0);
+    if matches!(rest.get(pos), Some(&(SUB | b'%' | b'/'))) || rest.starts_with(BOM) {
+        return None;
+    }
+    let end = plain_words(rest, pos, pos, dialect, &mut out);
+    if end > MAX_BLOCK || rest.get(end).is_some_and(|&c| c != b'\n') {
+        return None;
+    }
+    Some((
+        PlainLine {
+            ascii: out.ascii,
+            crs: CRS.then_some(out.crs),
+            letters: out.letters,
+            motion_codes_only: out.motion_codes_only,
+            addresses: out.addresses,
+        },
+        end,
+    ))
+}
+
 /// A LinuxCNC parameter's name at `line[name..]` whose `>` is among its 8 bytes from `name`
 /// and after 1 to 7 bytes, none of them a blank ([`crate::lex::BLANKS`]: below `0x21`
 /// tested, so a byte below it that is no blank is read by the byte loop), `[`, `]`, `/`,

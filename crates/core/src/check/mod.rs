@@ -25,7 +25,9 @@ use crate::modal::{bit, BlockValues, ModalMachine, ModalSettings, ModalState, Un
 use crate::rules::{Rule, Selection};
 use crate::statement::Kind;
 use crate::text::column;
-use crate::tokenizer::{plain_line_words, tokenize, Extras};
+use crate::tokenizer::{
+    plain_line_words, plain_line_words_to_lf, plain_words_without_brackets, tokenize, Extras,
+};
 use crate::word::{Numbers, ReadsBlocks};
 use crate::wordformat::WordFormat;
 use formats::FormatTable;
@@ -1236,40 +1238,137 @@ impl Checker {
         let tv = self.config.tv_check;
         let walks = &mut self.line_walks;
         if let Some(plain) = plain_line_words(text, dialect, &mut words, walks, |o| o + 1, tv) {
-            self.line_walks_of = (text.as_ptr() as usize, text.len());
-            self.line_letters = (plain.letters, plain.motion_codes_only);
-            self.line_addresses =
-                (self.line_walks.set == 0 && self.line_walks.all).then_some(plain.addresses);
-            let ascii = plain.ascii;
-            if !ascii {
-                for w in &mut words {
-                    w.column = column(text, w.token.as_ptr() as usize - text.as_ptr() as usize);
-                }
-            }
-            if cfg!(debug_assertions) {
-                assert_eq!(ascii, text.is_ascii(), "line {line}: a plain line's ASCII");
-                assert!(
-                    plain
-                        .crs
-                        .is_none_or(|crs| crs == link::carriage_returns(text)),
-                    "line {line}: a plain line's CRs"
-                );
-                let mut read = Vec::new();
-                assert!(matches!(tokenize(text, dialect, tokens), Ok(None)));
-                Word::extend_of(&mut read, tokens, at_column(text, ascii));
-                assert!(
-                    same_words(&read, &words),
-                    "line {line}: a plain line's words differ from its tokens'"
-                );
-                tokens.clear();
-            }
-            self.check_words(text, line, ascii, plain.crs, words, None);
-            // (read by this line's block alone: a block given by other means walks its own)
-            self.line_walks_of = (0, 0);
+            self.check_plain(text, line, dialect, tokens, words, plain);
             return;
         }
         words.clear();
         self.words_buffer = recycle(words);
+        self.check_tokens(text, line, dialect, tokens);
+    }
+
+    /// Check the line `rest` begins with (up to its first LF, or all of it: [`text::lines`]'
+    /// next line), as [`Checker::check_line`] checks it, and give its length. Under a dialect
+    /// whose plain words have no bracketed word
+    /// ([`crate::tokenizer::plain_words_without_brackets`]) its words are scanned before the
+    /// line is split from the rest, the scan stopping at its LF: a line of plain words alone
+    /// (nearly every line of a CAM program) is found with no search of its own for the LF,
+    /// about 50 instructions a line; any other line is split at its LF and read in full.
+    /// The same findings as [`Checker::check_line`] of each line of [`text::lines`].
+    ///
+    /// [`text::lines`]: crate::text::lines
+    pub fn check_next_line<'a>(
+        &mut self,
+        rest: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) -> usize {
+        if !plain_words_without_brackets(dialect) {
+            let end = crate::text::line_end(rest);
+            self.check_line(&rest[..end], line, dialect, tokens);
+            return end;
+        }
+        // (the tokens are cleared where they are read: a line of plain words reads none)
+        let mut words: Vec<Word<'a>> = recycle(std::mem::take(&mut self.words_buffer));
+        let tv = self.config.tv_check;
+        let walks = &mut self.line_walks;
+        if let Some((plain, end)) =
+            plain_line_words_to_lf(rest, dialect, &mut words, walks, |o| o + 1, tv)
+        {
+            let text = &rest[..end];
+            if cfg!(debug_assertions) {
+                assert_eq!(end, crate::text::line_end(rest), "line {line}: its end");
+                let (mut split, mut walks) = (Vec::new(), crate::tokenizer::LineWalks::default());
+                let found = plain_line_words(text, dialect, &mut split, &mut walks, |o| o + 1, tv);
+                assert_eq!(
+                    found,
+                    Some(plain),
+                    "line {line}: a plain line read to its LF"
+                );
+                assert!(
+                    same_words(&split, &words),
+                    "line {line}: its words read to its LF"
+                );
+            }
+            if self.not_read(line, text) {
+                words.clear();
+                self.words_buffer = recycle(words);
+            } else {
+                self.check_plain(text, line, dialect, tokens, words, plain);
+            }
+            return end;
+        }
+        words.clear();
+        self.words_buffer = recycle(words);
+        let end = crate::text::line_end(rest);
+        let text = &rest[..end];
+        if cfg!(debug_assertions) {
+            let (mut split, mut walks) = (Vec::new(), crate::tokenizer::LineWalks::default());
+            assert!(
+                plain_line_words(text, dialect, &mut split, &mut walks, |o| o + 1, tv).is_none(),
+                "line {line}: a plain line not read to its LF"
+            );
+        }
+        if !self.not_read(line, text) {
+            tokens.clear();
+            self.check_tokens(text, line, dialect, tokens);
+        }
+        end
+    }
+
+    /// [`Checker::check_line`] of a line of plain words alone (`plain`: what its reader found
+    /// of it), its `words` written where they were scanned.
+    #[inline(always)]
+    fn check_plain<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+        mut words: Vec<Word<'a>>,
+        plain: crate::tokenizer::PlainLine,
+    ) {
+        self.line_walks_of = (text.as_ptr() as usize, text.len());
+        self.line_letters = (plain.letters, plain.motion_codes_only);
+        self.line_addresses =
+            (self.line_walks.set == 0 && self.line_walks.all).then_some(plain.addresses);
+        let ascii = plain.ascii;
+        if !ascii {
+            for w in &mut words {
+                w.column = column(text, w.token.as_ptr() as usize - text.as_ptr() as usize);
+            }
+        }
+        if cfg!(debug_assertions) {
+            assert_eq!(ascii, text.is_ascii(), "line {line}: a plain line's ASCII");
+            assert!(
+                plain
+                    .crs
+                    .is_none_or(|crs| crs == link::carriage_returns(text)),
+                "line {line}: a plain line's CRs"
+            );
+            let mut read = Vec::new();
+            tokens.clear();
+            assert!(matches!(tokenize(text, dialect, tokens), Ok(None)));
+            Word::extend_of(&mut read, tokens, at_column(text, ascii));
+            assert!(
+                same_words(&read, &words),
+                "line {line}: a plain line's words differ from its tokens'"
+            );
+            tokens.clear();
+        }
+        self.check_words(text, line, ascii, plain.crs, words, None);
+        // (read by this line's block alone: a block given by other means walks its own)
+        self.line_walks_of = (0, 0);
+    }
+
+    /// [`Checker::check_line`] of a line that is not of plain words alone: read in full.
+    fn check_tokens<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) {
         match tokenize(text, dialect, tokens) {
             Ok(extras) => self.check_read(text, line, tokens, extras.as_ref()),
             Err(error) => self.unreadable(&Unreadable {
