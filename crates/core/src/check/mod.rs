@@ -1486,7 +1486,7 @@ impl Checker {
     /// Asked before line `line` is read: whether the control never reads it
     /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
     /// holds program text.
-    #[inline]
+    #[inline(always)]
     pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
         if !self.reading_end.skips(line, text) {
             return false;
