@@ -1071,8 +1071,6 @@ struct WordsOut<'w, 'a, F: Fn(usize) -> usize, const CRS: bool> {
     crs: usize,
     letters: u32,
     motion_codes_only: bool,
-    /// [`PlainLine::addresses`] so far.
-    addresses: u64,
 }
 
 impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, 'a, F, CRS> {
@@ -1081,7 +1079,6 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         // (a plain word's address is a letter: `PLAIN_START`)
         let letter = line[pos].to_ascii_uppercase();
         self.letters |= 1 << (letter - b'A');
-        self.addresses = self.addresses << 8 | u64::from(line[pos]);
         if letter == b'G' {
             // G0-G3, G00-G03, G000-G003: no sign, no point, at most three digits
             let length = end - pos - 1 - usize::from(signed);
@@ -1146,11 +1143,6 @@ pub struct PlainLine {
     /// Every G word of the line is G0-G3 written plainly (`G1`, `G01`, `G001`: no sign, point,
     /// index or expression), as the check's `motion_codes_only` reads a block's codes.
     pub motion_codes_only: bool,
-    /// The addresses as written of the line's last eight plain words, the last word's in the
-    /// lowest byte (0 before the first): of a line of at most eight words without a bracketed
-    /// word, the check's key of its words' addresses (`Checker::addresses_key`) without a walk
-    /// of its words.
-    pub addresses: u64,
 }
 
 /// The words of a `line` made of plain words alone ([`plain_word`]: nearly every line of a
@@ -1201,7 +1193,6 @@ fn plain_line_words_as<'a, const CRS: bool>(
         crs: 0,
         letters: 0,
         motion_codes_only: true,
-        addresses: 0,
     };
     let pos = out.skip_blanks(line, 0);
     if matches!(line.get(pos), Some(&(SUB | b'%' | b'/'))) || line.starts_with(BOM) {
@@ -1212,7 +1203,6 @@ fn plain_line_words_as<'a, const CRS: bool>(
         crs: CRS.then_some(out.crs),
         letters: out.letters,
         motion_codes_only: out.motion_codes_only,
-        addresses: out.addresses,
     })
 }
 
@@ -1269,7 +1259,6 @@ fn plain_line_words_to_lf_as<'a, const CRS: bool>(
         crs: 0,
         letters: 0,
         motion_codes_only: true,
-        addresses: 0,
     };
     let pos = out.skip_blanks(rest, 0);
     if matches!(rest.get(pos), Some(&(SUB | b'%' | b'/'))) || rest.starts_with(BOM) {
@@ -1285,7 +1274,6 @@ fn plain_line_words_to_lf_as<'a, const CRS: bool>(
             crs: CRS.then_some(out.crs),
             letters: out.letters,
             motion_codes_only: out.motion_codes_only,
-            addresses: out.addresses,
         },
         end,
     ))
@@ -1878,14 +1866,6 @@ mod tests {
                             && w.expression.is_empty()
                             && w.index.is_empty()
                 });
-                // the addresses of the last eight plain words, the last in the lowest byte
-                let addresses = words[1..]
-                    .iter()
-                    .filter(|w| w.expression.is_empty())
-                    .rev()
-                    .take(8)
-                    .enumerate()
-                    .fold(0, |a, (i, w)| a | u64::from(w.address) << (8 * i));
                 assert_eq!(
                     found,
                     PlainLine {
@@ -1893,7 +1873,6 @@ mod tests {
                         crs: crs.then_some(counted),
                         letters,
                         motion_codes_only,
-                        addresses,
                     },
                     "{:?} {dialect:?}",
                     String::from_utf8_lossy(line)

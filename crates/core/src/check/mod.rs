@@ -929,13 +929,10 @@ pub struct Checker {
     /// The letters and whether the codes are G00-G03 alone of the line of plain words
     /// `line_walks_of` names, found by its reader ([`letters_and_motion`] of its words).
     line_letters: (u32, bool),
-    /// Of that line, where it has no bracketed word (every word plain: a letter, a sign, a
-    /// number), the addresses of its last eight words ([`crate::tokenizer::PlainLine`]'s
-    /// `addresses`); else None.
-    line_addresses: Option<u64>,
-    /// The block in hand is a line of plain words without a bracketed word
-    /// (`line_addresses` is its): no word has an index or an expression, and it has no block
-    /// skip (set by `read_block`).
+    /// That line has no bracketed word (every word plain: a letter, a sign, a number).
+    line_unbracketed: bool,
+    /// The block in hand is a line of plain words without a bracketed word: no word has an
+    /// index or an expression, and it has no block skip (set by `read_block`).
     plain_block: bool,
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
@@ -1111,7 +1108,7 @@ impl Checker {
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),
-            line_addresses: None,
+            line_unbracketed: false,
             plain_block: false,
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
@@ -1330,8 +1327,7 @@ impl Checker {
     ) {
         self.line_walks_of = (text.as_ptr() as usize, text.len());
         self.line_letters = (plain.letters, plain.motion_codes_only);
-        self.line_addresses =
-            (self.line_walks.set == 0 && self.line_walks.all).then_some(plain.addresses);
+        self.line_unbracketed = self.line_walks.set == 0 && self.line_walks.all;
         let ascii = plain.ascii;
         if !ascii {
             for w in &mut words {
@@ -1513,7 +1509,7 @@ impl Checker {
         } else {
             letters_and_motion(b.words)
         };
-        self.plain_block = plain_line && self.line_addresses.is_some();
+        self.plain_block = plain_line && self.line_unbracketed;
         debug_assert!(
             !self.plain_block
                 || !b.skip

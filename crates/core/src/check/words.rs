@@ -282,11 +282,12 @@ impl Checker {
         if b.words.len() > 7 || self.format_table.afresh {
             return None;
         }
-        // a line of plain words without a bracketed word: its letters, whether one repeats
-        // and its addresses from its reader, with no walk of its words (its words are letters
-        // without index or expression; a debug build walks them too, and asserts the same key)
+        // a line of plain words without a bracketed word: whether a letter repeats and the
+        // classification lacks one from its letters, with no test of each word (its words are
+        // letters without index or expression; a debug build tests them too, and asserts the
+        // same key)
         if self.plain_block && !cfg!(debug_assertions) {
-            return self.plain_addresses_key(b.words.len(), plane);
+            return self.plain_addresses_key(b.words, plane);
         }
         let has_formats = !self.config.formats.is_empty();
         let mut key = 0u64;
@@ -307,7 +308,7 @@ impl Checker {
         let side = u64::from(plane == 18 || plane == 19);
         let key = Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56);
         debug_assert!(
-            !self.plain_block || self.plain_addresses_key(b.words.len(), plane) == key,
+            !self.plain_block || self.plain_addresses_key(b.words, plane) == key,
             "line {}: a plain block's addresses key",
             b.line
         );
@@ -315,19 +316,22 @@ impl Checker {
     }
 
     /// [`Checker::addresses_key`] of a block of `words` (at most seven) that is a line of
-    /// plain words without a bracketed word (`plain_block`), from what its reader found: None
-    /// where a letter repeats (fewer letters than words) or the classification lacks one,
-    /// else its addresses as written, a byte each, and its length and plane.
+    /// plain words without a bracketed word (`plain_block`: its words are letters A-Z
+    /// without an index or an expression): None where a letter repeats (fewer letters than
+    /// words, from the letters its reader found) or the classification lacks one, else its
+    /// addresses as written, a byte each, and its length and plane; no test of each word.
     #[inline(always)]
-    fn plain_addresses_key(&self, words: usize, plane: i64) -> Option<u64> {
-        let addresses = self.line_addresses?;
-        if self.letters.count_ones() as usize != words
+    fn plain_addresses_key(&self, words: &[Word<'_>], plane: i64) -> Option<u64> {
+        if self.letters.count_ones() as usize != words.len()
             || self.letters & self.format_table.unformatted != 0
         {
             return None;
         }
+        let addresses = words
+            .iter()
+            .fold(0u64, |key, w| key << 8 | u64::from(w.address));
         let side = u64::from(plane == 18 || plane == 19);
-        Some(addresses | (0x80 | side << 3 | words as u64) << 56)
+        Some(addresses | (0x80 | side << 3 | words.len() as u64) << 56)
     }
     /// A FANUC lathe's G71 or G72 block (not a Haas's): its D, the depth of cut of the
     /// one-block form `G71 P Q U W D F`, is no word of the control's standard format, which
