@@ -1183,3 +1183,68 @@ mod tests {
         );
     }
 }
+
+#[cfg(test)]
+mod kept_tests {
+    use super::super::testing::{dialect, iso_mill, of_family};
+    use super::super::{Checker, Config};
+    use crate::lex::{Dialect, Family};
+    use crate::rules::Selection;
+    use std::sync::Arc;
+
+    /// The findings of `program` checked line by line as the binding checks a run
+    /// (`Checker::check_next_line`), with the verdicts kept or asked afresh of every block.
+    fn findings(config: &Config, program: &str, keep: bool) -> Vec<(String, usize, usize)> {
+        // (lower case read as plain words)
+        let d = Dialect {
+            lowercase: true,
+            ..dialect(config.family)
+        };
+        let mut checker = Checker::new(Arc::new(config.clone()), Selection::all(), false);
+        checker.keep_verdicts(keep);
+        let mut tokens = Vec::new();
+        let mut found = Vec::new();
+        let (text, mut start) = (program.as_bytes(), 0);
+        for line in 1.. {
+            let length = checker.check_next_line(&text[start..], line, &d, &mut tokens);
+            found.extend(checker.take());
+            if start + length >= text.len() {
+                break;
+            }
+            start += length + 1;
+        }
+        checker.finish();
+        found.extend(checker.take());
+        found
+            .into_iter()
+            .map(|f| (format!("{:?} {}", f.rule, f.message), f.line, f.column))
+            .collect()
+    }
+
+    /// A line of plain words has its addresses' key from its letters and its words' addresses
+    /// (`Checker::plain_addresses_key`): a block whose words' verdicts would differ from a
+    /// kept block's if that key missed a part -- a repeated letter (a macro call's argument
+    /// sets, `G65 I1. I2.`, are clean; `G01 I1. I2.` repeats I), a letter the classification
+    /// lacks (a macro call's argument, `G65 X1. E1.`, is clean; `G01 X1. E1.` names an
+    /// address outside it), an address in lower case (`x1. y2.` after `X1. Y2.`) --
+    /// gets its own verdict: the same findings with the verdicts kept as asked afresh, and
+    /// the findings the later block has.
+    #[test]
+    fn a_plain_blocks_addresses_key_holds_what_its_verdict_reads() {
+        let program = "%\nG65 I1. I2.\nG01 I1. I2.\nG65 X1. E1.\nG01 X1. E1.\nX1. Y2.\n\
+                       x1. y2.\nG02 X1. Y1. I1.\nG18\nG02 X1. Y1. I1.\nM30\n%";
+        for config in [of_family(Family::MacroB), iso_mill()] {
+            let kept = findings(&config, program, true);
+            let afresh = findings(&config, program, false);
+            assert_eq!(kept, afresh, "{:?}", config.family);
+            if config.family == Family::MacroB {
+                for line in [3, 5, 7] {
+                    assert!(
+                        kept.iter().any(|(_, l, _)| *l == line),
+                        "{kept:?}: line {line}"
+                    );
+                }
+            }
+        }
+    }
+}
