@@ -1080,12 +1080,15 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         let letter = line[pos].to_ascii_uppercase();
         self.letters |= 1 << (letter - b'A');
         if letter == b'G' {
-            // G0-G3, G00-G03, G000-G003: no sign, no point, at most three digits
+            // G0-G3, G00-G03, G000-G003, and the planes' G17-G19, G017-G019: no sign, no
+            // point, at most three digits
             let length = end - pos - 1 - usize::from(signed);
             self.motion_codes_only &= !signed
                 && length <= 3
                 && digits.dot as usize == length
-                && digits.value.is_some_and(|v| v <= 3);
+                && digits
+                    .value
+                    .is_some_and(|v| v <= 3 || (17..=19).contains(&v));
         }
         self.words
             .push(Word::plain(&line[pos..end], signed, digits, (self.at)(pos)));
@@ -1140,7 +1143,8 @@ pub struct PlainLine {
     /// The letters of the line's words, bit `letter - 'A'` each (a lower case address as its
     /// capital): the check's `Checker::letters` of the block, found as the words are written.
     pub letters: u32,
-    /// Every G word of the line is G0-G3 written plainly (`G1`, `G01`, `G001`: no sign, point,
+    /// Every G word of the line is G0-G3 or a plane's G17-G19 written plainly (`G1`, `G01`,
+    /// `G001`, `G17`: no sign, point,
     /// index or expression), as the check's `motion_codes_only` reads a block's codes.
     pub motion_codes_only: bool,
 }
@@ -1861,7 +1865,11 @@ mod tests {
                     w.letter != b'G'
                         || matches!(
                             w.number,
-                            [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+                            [b'0'..=b'3']
+                                | [b'0', b'0'..=b'3']
+                                | [b'0', b'0', b'0'..=b'3']
+                                | [b'1', b'7'..=b'9']
+                                | [b'0', b'1', b'7'..=b'9']
                         ) && w.sign.is_empty()
                             && w.expression.is_empty()
                             && w.index.is_empty()

@@ -2279,23 +2279,28 @@ enum SubFile {
     No,
 }
 
-/// Whether every G word of `words` is G00, G01, G02 or G03 written plainly -- one to three
-/// digits, no point, sign, expression or index (`G1`, `G02`, `G003`) -- as nearly every G word of a
-/// CAM program's moves is: such a block's codes set no units or feed mode and give no word a
-/// meaning ([`Checker::block_modes`], [`Checker::code_meanings`]). Asked of a block with a G
-/// word and no M word.
+/// Whether every G word of `words` is G00, G01, G02 or G03, or a plane's G17, G18 or G19,
+/// written plainly -- one to three digits, no point, sign, expression or index (`G1`, `G02`,
+/// `G003`, `G17`, `G018`) -- as nearly every G word of a CAM program's moves is (a ramp's
+/// `G18 G2`): such a block's codes set no units or feed mode and give no word a meaning
+/// ([`Checker::block_modes`], [`Checker::code_meanings`]; a debug build works them out and
+/// asserts it). Asked of a block with a G word and no M word.
 fn motion_codes_only(words: &[Word<'_>]) -> bool {
     words
         .iter()
         .all(|w| w.letter != b'G' || plain_motion_code(w))
 }
 
-/// Whether G word `w` is G00, G01, G02 or G03 written plainly ([`motion_codes_only`]).
+/// Whether G word `w` is G00-G03 or G17-G19 written plainly ([`motion_codes_only`]).
 #[inline(always)]
 fn plain_motion_code(w: &Word<'_>) -> bool {
     matches!(
         w.number,
-        [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+        [b'0'..=b'3']
+            | [b'0', b'0'..=b'3']
+            | [b'0', b'0', b'0'..=b'3']
+            | [b'1', b'7'..=b'9']
+            | [b'0', b'1', b'7'..=b'9']
     ) && w.sign.is_empty()
         && w.expression.is_empty()
         && w.index.is_empty()
@@ -2532,6 +2537,8 @@ mod buffer_tests {
             "G003 X1.",
             "X1. Y2.",
             "G1 G0 X1.",
+            "G17 G02 X1. Y1. I1.",
+            "G018 G3 X1. Z1. K1.",
         ] {
             assert!(only(line), "{line}");
         }
@@ -2544,6 +2551,9 @@ mod buffer_tests {
             "G90 G1 X1.",
             "G33 Z-1. K1.",
             "G1.1 X1.",
+            "G16 X1.",
+            "G20 G17 X1.",
+            "G0017 X1.",
         ] {
             assert!(!only(line), "{line}");
         }
@@ -2605,7 +2615,9 @@ mod buffer_tests {
         let body = "G20 G95\nG1 X1. Y2. F0.1\nG81 X1. Y1. Z-1. R1. F1.\nG1 X2. Y2.\nX3.\n\
                     G2 X1. Y1. I1. J0 K2. P2 Q1. R3.\nG03 X0 Y0 R1. L2 D1 E1. H1 S100 T1\n\
                     G80\nG21 G94\nG0 X0 Y0 Z0 A1. B1. C1. U1. V1. W1.\n\
-                    G01 X1. F100.\nG1 X2. F100.\nG02 X3. Y3. I1. J1.\nG00 G01 X5.\nM30\n";
+                    G01 X1. F100.\nG1 X2. F100.\nG02 X3. Y3. I1. J1.\nG00 G01 X5.\n\
+                    G18 G02 X1. Z1. I1. K0 P1 Q1.\nG019 G3 Y1. Z1. J1. K0\nG17 G1 X1. R1.\nG17\n\
+                    M30\n";
         let mut configs: Vec<_> = Family::ALL.into_iter().map(of_family).collect();
         for system in [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C] {
             let mut lathe = fanuc_lathe();

@@ -355,10 +355,10 @@ impl Checker {
         if self.config.code_words.is_empty() || self.letters & (bit(b'G') | bit(b'M')) == 0 {
             return;
         }
-        // (a block whose codes are G00-G03 alone, where no code word is of one of them, has
+        // (a block whose codes are G00-G03 and G17-G19 alone, where no code word is of one of them, has
         // none of them: its words are not walked; a debug build walks them)
         if self.motion_only
-            && self.format_table.named_codes[0] & 0b1111 == 0
+            && self.format_table.named_codes[0] & (0b1111 | 0b111 << 17) == 0
             && !cfg!(debug_assertions)
         {
             return;
