@@ -154,6 +154,12 @@ pub fn lines(text: &[u8]) -> impl Iterator<Item = &[u8]> {
     })
 }
 
+/// The length of the line `rest` begins with: the place of its first LF, else its length
+/// ([`lines`]' next line).
+pub fn line_end(rest: &[u8]) -> usize {
+    Lf::new().find(rest).unwrap_or(rest.len())
+}
+
 /// [`lines`]' search for an LF.
 #[cfg(target_arch = "x86_64")]
 struct Lf(memchr::arch::x86_64::sse2::memchr::One);

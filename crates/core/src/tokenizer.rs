@@ -1101,12 +1101,15 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         let letter = line[pos].to_ascii_uppercase();
         self.letters |= 1 << (letter - b'A');
         if letter == b'G' {
-            // G0-G3, G00-G03, G000-G003: no sign, no point, at most three digits
+            // G0-G3, G00-G03, G000-G003, and the planes' G17-G19, G017-G019: no sign, no
+            // point, at most three digits
             let length = end - pos - 1 - usize::from(signed);
             self.motion_codes_only &= !signed
                 && length <= 3
                 && digits.dot as usize == length
-                && digits.value.is_some_and(|v| v <= 3);
+                && digits
+                    .value
+                    .is_some_and(|v| v <= 3 || (17..=19).contains(&v));
         }
         self.words
             .push(Word::plain(&line[pos..end], signed, digits, (self.at)(pos)));
@@ -1176,7 +1179,8 @@ pub struct PlainLine {
     /// The letters of the line's words, bit `letter - 'A'` each (a lower case address as its
     /// capital): the check's `Checker::letters` of the block, found as the words are written.
     pub letters: u32,
-    /// Every G word of the line is G0-G3 written plainly (`G1`, `G01`, `G001`: no sign, point,
+    /// Every G word of the line is G0-G3 or a plane's G17-G19 written plainly (`G1`, `G01`,
+    /// `G001`, `G17`: no sign, point,
     /// index or expression), as the check's `motion_codes_only` reads a block's codes.
     pub motion_codes_only: bool,
 }
@@ -1240,6 +1244,79 @@ fn plain_line_words_as<'a, const CRS: bool>(
         letters: out.letters,
         motion_codes_only: out.motion_codes_only,
     })
+}
+
+/// Whether every plain word of `dialect` is a letter, a sign, digits and a point
+/// ([`plain_word`]), none a bracketed word (`bracket_word` reads those on ISO and LinuxCNC
+/// where the dialect has expressions in brackets): a plain word then holds no LF, nor do the
+/// blanks after it, and its line can be scanned before it is split from the lines after it
+/// ([`plain_line_words_to_lf`]).
+pub fn plain_words_without_brackets(dialect: &Dialect) -> bool {
+    !(dialect.expressions
+        && dialect.brackets
+        && matches!(dialect.family, Family::LinuxCnc | Family::Iso))
+}
+
+/// [`plain_line_words`] of the line `rest` begins with (up to its first LF, or all of it)
+/// where [`plain_words_without_brackets`] holds: the line's words scanned with no search for
+/// its LF first (the scan stops at the LF, which no plain word or blank is), and the line's
+/// length (the LF's place). None where the line is not one of plain words alone, as
+/// [`plain_line_words`] finds of it (`words` then holds what it held and some of its words):
+/// the same words and [`PlainLine`] where it is (a debug build reads the line split first as
+/// well, and asserts them).
+pub fn plain_line_words_to_lf<'a>(
+    rest: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
+    at: impl Fn(usize) -> usize,
+    crs: bool,
+) -> Option<(PlainLine, usize)> {
+    debug_assert!(plain_words_without_brackets(dialect));
+    walks.set = 0;
+    walks.all = true;
+    if crs {
+        plain_line_words_to_lf_as::<true>(rest, dialect, words, walks, at)
+    } else {
+        plain_line_words_to_lf_as::<false>(rest, dialect, words, walks, at)
+    }
+}
+
+/// [`plain_line_words_to_lf`], the CRs counted where `CRS`.
+#[inline(always)]
+fn plain_line_words_to_lf_as<'a, const CRS: bool>(
+    rest: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
+    at: impl Fn(usize) -> usize,
+) -> Option<(PlainLine, usize)> {
+    let mut out = WordsOut::<_, CRS> {
+        words,
+        walks,
+        at,
+        ascii: true,
+        crs: 0,
+        letters: 0,
+        motion_codes_only: true,
+    };
+    let pos = out.skip_blanks(rest, 0);
+    if matches!(rest.get(pos), Some(&(SUB | b'%' | b'/'))) || rest.starts_with(BOM) {
+        return None;
+    }
+    let end = plain_words(rest, pos, pos, dialect, &mut out);
+    if end > MAX_BLOCK || rest.get(end).is_some_and(|&c| c != b'\n') {
+        return None;
+    }
+    Some((
+        PlainLine {
+            ascii: out.ascii,
+            crs: CRS.then_some(out.crs),
+            letters: out.letters,
+            motion_codes_only: out.motion_codes_only,
+        },
+        end,
+    ))
 }
 
 /// A LinuxCNC parameter's name at `line[name..]` whose `>` is among its 8 bytes from `name`
@@ -1822,7 +1899,11 @@ mod tests {
                     w.letter != b'G'
                         || matches!(
                             w.number,
-                            [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+                            [b'0'..=b'3']
+                                | [b'0', b'0'..=b'3']
+                                | [b'0', b'0', b'0'..=b'3']
+                                | [b'1', b'7'..=b'9']
+                                | [b'0', b'1', b'7'..=b'9']
                         ) && w.sign.is_empty()
                             && w.expression.is_empty()
                             && w.index.is_empty()

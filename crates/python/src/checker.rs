@@ -461,15 +461,24 @@ impl Checker {
                         let base = text.buffer().as_ptr() as usize;
                         let run = &text.buffer()[at..end];
                         let mut tokens = Vec::with_capacity(16);
-                        for (number, line) in (*last + 1..).zip(tapegate_core::text::lines(run)) {
+                        // the run's lines as `text::lines` splits them, each found by its
+                        // check (a line of plain words where its scan stops, at its LF)
+                        let mut start = 0;
+                        loop {
+                            let number = *last + 1;
                             *last = number;
-                            inner.check_line(line, number, &dialect, &mut tokens);
+                            let rest = &run[start..];
+                            let length = inner.check_next_line(rest, number, &dialect, &mut tokens);
                             render(inner, writer, written, counts);
                             // where the next line begins, past this one's LF
-                            at = line.as_ptr() as usize - base + line.len() + 1;
+                            at = rest.as_ptr() as usize - base + length + 1;
                             if written.len() >= SLICE && at <= end {
                                 return Ok(Step::Full);
                             }
+                            if length == rest.len() {
+                                break; // the run's last line: no LF after it
+                            }
+                            start += length + 1;
                         }
                         at = end + 1;
                         // the chunk's findings handed over at its end, as check_lines hands

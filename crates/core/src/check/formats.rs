@@ -47,6 +47,9 @@ pub(super) struct FormatTable {
     /// ([`super::CodeWord`]) are of, a bit each: a G or M word of another whole number below
     /// 128 names nothing, and is not looked for in the list ([`Checker::named_words`]).
     pub(super) named_codes: [u128; 2],
+    /// The letters the profile's classification lacks where it has one (`format_in` in mm
+    /// None), a bit each ([`crate::modal::bit`]): 0 for a profile without formats.
+    pub(super) unformatted: u32,
 }
 
 /// The places of [`FormatTable::clean`].
@@ -59,12 +62,21 @@ impl FormatTable {
     pub(super) fn new(config: &Config) -> FormatTable {
         let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
         let numbers = config.numbers();
+        let formats: [[Option<WordFormat>; 26]; 2] = [of(Units::Metric), of(Units::Inch)];
+        let unformatted = if config.formats.is_empty() {
+            0
+        } else {
+            (0..26)
+                .filter(|&i| formats[0][i].is_none())
+                .fold(0, |bits, i| bits | 1 << i)
+        };
         FormatTable {
-            formats: [of(Units::Metric), of(Units::Inch)],
+            formats,
             no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
             clean: vec![(0, WordFormat::fallback(b'A'), NO_SCALE); KEPT].into_boxed_slice(),
             afresh: false,
             named_codes: named_codes(&config.facts.code_words),
+            unformatted,
         }
     }
 }
@@ -516,7 +528,46 @@ impl Checker {
     /// [`read_word`] reads it. `plain_keys`: the block's words' keys are their own
     /// ([`Checker::plain_format_key`]). A debug build asks the rules of a kept word as well
     /// and asserts the verdict clean and the value the same, to the scale.
+    ///
+    /// A plain key kept with its word's value from its scan (nearly every word of a CAM
+    /// program) is read here, inline where the words are walked; anything else is
+    /// [`Checker::format_or_kept_out`]'s, out of line (a debug build asks it of every word).
+    #[inline(always)]
     pub(super) fn format_or_kept(
+        &mut self,
+        w: &Word<'_>,
+        line: usize,
+        context: &mut u64,
+        plain_keys: bool,
+    ) -> Option<Dec> {
+        if plain_keys && !cfg!(debug_assertions) {
+            if let Some(key) = Checker::plain_format_key(w, *context) {
+                let place = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 54) as usize % KEPT;
+                let (kept, _, scale) = &self.format_table.clean[place];
+                if *kept == key {
+                    let read = match (w.value, w.point) {
+                        (Some(m), true) => {
+                            Some(Dec::from_u64(m, (w.number.len() - w.dot - 1) as u32))
+                        }
+                        (Some(m), false) if *scale != NO_SCALE => {
+                            Some(Dec::from_u64(m, u32::from(*scale)))
+                        }
+                        _ => None,
+                    };
+                    match read {
+                        Some(value) if w.sign == b"-" => return Some(-value),
+                        Some(value) => return Some(value),
+                        None => {}
+                    }
+                }
+            }
+        }
+        self.format_or_kept_out(w, line, context, plain_keys)
+    }
+
+    /// [`Checker::format_or_kept`] in full: the key, the kept verdict or the rules.
+    #[inline(never)]
+    fn format_or_kept_out(
         &mut self,
         w: &Word<'_>,
         line: usize,

@@ -25,7 +25,9 @@ use crate::modal::{bit, BlockValues, ModalMachine, ModalSettings, ModalState, Un
 use crate::rules::{Rule, Selection};
 use crate::statement::Kind;
 use crate::text::column;
-use crate::tokenizer::{plain_line_words, tokenize, Extras};
+use crate::tokenizer::{
+    plain_line_words, plain_line_words_to_lf, plain_words_without_brackets, tokenize, Extras,
+};
 use crate::word::{Numbers, ReadsBlocks};
 use crate::wordformat::WordFormat;
 use formats::FormatTable;
@@ -562,20 +564,49 @@ struct Transformed {
     noted: bool,
 }
 
+/// The axes of each set of places ([`crate::modal::axis_places`], 9 bits), in the order of
+/// [`AXES`], and how many: [`Facts::moved`] of a block without G04, one look where a walk of
+/// the places cost about 35 instructions a block.
+const MOVED: [([u8; 9], u8); 512] = {
+    let mut table = [([0u8; 9], 0u8); 512];
+    let mut places = 0;
+    while places < 512 {
+        let mut n = 0;
+        let mut i = 0;
+        while i < 9 {
+            if places >> i & 1 != 0 {
+                table[places].0[n] = AXES[i];
+                n += 1;
+            }
+            i += 1;
+        }
+        table[places].1 = n as u8;
+        places += 1;
+    }
+    table
+};
+
 impl<'b> Facts<'b> {
     /// `dwell`: the control's dwell words, no move in a G04 block.
     fn new(words: &'b [Word<'b>], values: &BlockValues, dwell: &[u8]) -> Facts<'b> {
-        let mut moved = [0u8; 9];
-        let mut n_moved = 0;
-        let dwell = if values.has_g(4) { dwell } else { &[] };
-        // (the axes in the block's letters alone: most blocks write two or three of nine)
-        for i in crate::modal::places(crate::modal::axis_places(values.given())) {
-            let a = AXES[i];
-            if !dwell.contains(&a) {
-                moved[n_moved] = a;
-                n_moved += 1;
+        let places = crate::modal::axis_places(values.given());
+        // (a block without G04: the axes of its letters, looked up by their places)
+        let (moved, n_moved) = if values.has_g(4) {
+            let mut moved = [0u8; 9];
+            let mut n_moved = 0;
+            // (the axes in the block's letters alone: most blocks write two or three of nine)
+            for i in crate::modal::places(places) {
+                let a = AXES[i];
+                if !dwell.contains(&a) {
+                    moved[n_moved] = a;
+                    n_moved += 1;
+                }
             }
-        }
+            (moved, n_moved)
+        } else {
+            let (moved, n_moved) = MOVED[places as usize];
+            (moved, usize::from(n_moved))
+        };
         Facts {
             words,
             mask: values.g_mask(),
@@ -909,6 +940,11 @@ pub struct Checker {
     /// The letters and whether the codes are G00-G03 alone of the line of plain words
     /// `line_walks_of` names, found by its reader ([`letters_and_motion`] of its words).
     line_letters: (u32, bool),
+    /// That line has no bracketed word (every word plain: a letter, a sign, a number).
+    line_unbracketed: bool,
+    /// The block in hand is a line of plain words without a bracketed word: no word has an
+    /// index or an expression, and it has no block skip (set by `read_block`).
+    plain_block: bool,
     /// LinuxCNC: the labels (`o_label`) of the main program's o-word conditions and loops
     /// (`if`, `while`, `do`, `repeat`) open at this line, outside a definition. Whether a line
     /// inside one runs depends on values the checker does not follow, so what rs274 refuses
@@ -965,6 +1001,9 @@ pub struct Checker {
     /// a selector is no position, radius or word read in increments; a tilted plane's origin
     /// and a cylinder's radius are no move.
     meanings: crate::meaning::Meanings,
+    /// `meanings` is [`crate::meaning::Meanings::default`], as no code gave it otherwise
+    /// (false: it may be or not).
+    meanings_none: bool,
     /// The meanings of the last block shapes met ([`shapes`]).
     shapes: shapes::Shapes,
     /// The key of the block in hand's codes ([`codes::code_key`]), and what the rules found
@@ -1060,6 +1099,7 @@ impl Checker {
             length_decimal: false,
             outside: [0; 9],
             meanings: crate::meaning::Meanings::default(),
+            meanings_none: true,
             shapes: shapes::Shapes::default(),
             code_key: None,
             verdicts: codes::CodeVerdicts::default(),
@@ -1082,6 +1122,8 @@ impl Checker {
             line_walks: crate::tokenizer::LineWalks::default(),
             line_walks_of: (0, 0),
             line_letters: (0, false),
+            line_unbracketed: false,
+            plain_block: false,
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
@@ -1207,38 +1249,136 @@ impl Checker {
         let tv = self.config.tv_check;
         let walks = &mut self.line_walks;
         if let Some(plain) = plain_line_words(text, dialect, &mut words, walks, |o| o + 1, tv) {
-            self.line_walks_of = (text.as_ptr() as usize, text.len());
-            self.line_letters = (plain.letters, plain.motion_codes_only);
-            let ascii = plain.ascii;
-            if !ascii {
-                for w in &mut words {
-                    w.column = column(text, w.token.as_ptr() as usize - text.as_ptr() as usize);
-                }
-            }
-            if cfg!(debug_assertions) {
-                assert_eq!(ascii, text.is_ascii(), "line {line}: a plain line's ASCII");
-                assert!(
-                    plain
-                        .crs
-                        .is_none_or(|crs| crs == link::carriage_returns(text)),
-                    "line {line}: a plain line's CRs"
-                );
-                let mut read = Vec::new();
-                assert!(matches!(tokenize(text, dialect, tokens), Ok(None)));
-                Word::extend_of(&mut read, tokens, at_column(text, ascii));
-                assert!(
-                    same_words(&read, &words),
-                    "line {line}: a plain line's words differ from its tokens'"
-                );
-                tokens.clear();
-            }
-            self.check_words(text, line, ascii, plain.crs, words, None);
-            // (read by this line's block alone: a block given by other means walks its own)
-            self.line_walks_of = (0, 0);
+            self.check_plain(text, line, dialect, tokens, words, plain);
             return;
         }
         words.clear();
         self.words_buffer = recycle(words);
+        self.check_tokens(text, line, dialect, tokens);
+    }
+
+    /// Check the line `rest` begins with (up to its first LF, or all of it: [`text::lines`]'
+    /// next line), as [`Checker::check_line`] checks it, and give its length. Under a dialect
+    /// whose plain words have no bracketed word
+    /// ([`crate::tokenizer::plain_words_without_brackets`]) its words are scanned before the
+    /// line is split from the rest, the scan stopping at its LF: a line of plain words alone
+    /// (nearly every line of a CAM program) is found with no search of its own for the LF,
+    /// about 50 instructions a line; any other line is split at its LF and read in full.
+    /// The same findings as [`Checker::check_line`] of each line of [`text::lines`].
+    ///
+    /// [`text::lines`]: crate::text::lines
+    pub fn check_next_line<'a>(
+        &mut self,
+        rest: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) -> usize {
+        if !plain_words_without_brackets(dialect) {
+            let end = crate::text::line_end(rest);
+            self.check_line(&rest[..end], line, dialect, tokens);
+            return end;
+        }
+        // (the tokens are cleared where they are read: a line of plain words reads none)
+        let mut words: Vec<Word<'a>> = recycle(std::mem::take(&mut self.words_buffer));
+        let tv = self.config.tv_check;
+        let walks = &mut self.line_walks;
+        if let Some((plain, end)) =
+            plain_line_words_to_lf(rest, dialect, &mut words, walks, |o| o + 1, tv)
+        {
+            let text = &rest[..end];
+            if cfg!(debug_assertions) {
+                assert_eq!(end, crate::text::line_end(rest), "line {line}: its end");
+                let (mut split, mut walks) = (Vec::new(), crate::tokenizer::LineWalks::default());
+                let found = plain_line_words(text, dialect, &mut split, &mut walks, |o| o + 1, tv);
+                assert_eq!(
+                    found,
+                    Some(plain),
+                    "line {line}: a plain line read to its LF"
+                );
+                assert!(
+                    same_words(&split, &words),
+                    "line {line}: its words read to its LF"
+                );
+            }
+            if self.not_read(line, text) {
+                words.clear();
+                self.words_buffer = recycle(words);
+            } else {
+                self.check_plain(text, line, dialect, tokens, words, plain);
+            }
+            return end;
+        }
+        words.clear();
+        self.words_buffer = recycle(words);
+        let end = crate::text::line_end(rest);
+        let text = &rest[..end];
+        if cfg!(debug_assertions) {
+            let (mut split, mut walks) = (Vec::new(), crate::tokenizer::LineWalks::default());
+            assert!(
+                plain_line_words(text, dialect, &mut split, &mut walks, |o| o + 1, tv).is_none(),
+                "line {line}: a plain line not read to its LF"
+            );
+        }
+        if !self.not_read(line, text) {
+            tokens.clear();
+            self.check_tokens(text, line, dialect, tokens);
+        }
+        end
+    }
+
+    /// [`Checker::check_line`] of a line of plain words alone (`plain`: what its reader found
+    /// of it), its `words` written where they were scanned.
+    #[inline(always)]
+    fn check_plain<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+        mut words: Vec<Word<'a>>,
+        plain: crate::tokenizer::PlainLine,
+    ) {
+        self.line_walks_of = (text.as_ptr() as usize, text.len());
+        self.line_letters = (plain.letters, plain.motion_codes_only);
+        self.line_unbracketed = self.line_walks.set == 0 && self.line_walks.all;
+        let ascii = plain.ascii;
+        if !ascii {
+            for w in &mut words {
+                w.column = column(text, w.token.as_ptr() as usize - text.as_ptr() as usize);
+            }
+        }
+        if cfg!(debug_assertions) {
+            assert_eq!(ascii, text.is_ascii(), "line {line}: a plain line's ASCII");
+            assert!(
+                plain
+                    .crs
+                    .is_none_or(|crs| crs == link::carriage_returns(text)),
+                "line {line}: a plain line's CRs"
+            );
+            let mut read = Vec::new();
+            tokens.clear();
+            assert!(matches!(tokenize(text, dialect, tokens), Ok(None)));
+            Word::extend_of(&mut read, tokens, at_column(text, ascii));
+            assert!(
+                same_words(&read, &words),
+                "line {line}: a plain line's words differ from its tokens'"
+            );
+            tokens.clear();
+        }
+        self.check_words(text, line, ascii, plain.crs, words, None);
+        // (read by this line's block alone: a block given by other means walks its own)
+        self.line_walks_of = (0, 0);
+    }
+
+    /// [`Checker::check_line`] of a line that is not of plain words alone: read in full.
+    fn check_tokens<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) {
         match tokenize(text, dialect, tokens) {
             Ok(extras) => self.check_read(text, line, tokens, extras.as_ref()),
             Err(error) => self.unreadable(&Unreadable {
@@ -1356,7 +1496,7 @@ impl Checker {
     /// Asked before line `line` is read: whether the control never reads it
     /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
     /// holds program text.
-    #[inline]
+    #[inline(always)]
     pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
         if !self.reading_end.skips(line, text) {
             return false;
@@ -1371,18 +1511,29 @@ impl Checker {
         // (the letters first: every rule after may ask them, not walk the words)
         // (a line of plain words has them from its reader: no walk of its words)
         let motion_words;
-        (self.letters, motion_words) =
-            if self.line_walks_of == (b.text.as_ptr() as usize, b.text.len()) {
-                debug_assert_eq!(
-                    self.line_letters,
-                    letters_and_motion(b.words),
-                    "line {}: a plain line's letters",
-                    b.line
-                );
-                self.line_letters
-            } else {
-                letters_and_motion(b.words)
-            };
+        let plain_line = self.line_walks_of == (b.text.as_ptr() as usize, b.text.len());
+        (self.letters, motion_words) = if plain_line {
+            debug_assert_eq!(
+                self.line_letters,
+                letters_and_motion(b.words),
+                "line {}: a plain line's letters",
+                b.line
+            );
+            self.line_letters
+        } else {
+            letters_and_motion(b.words)
+        };
+        self.plain_block = plain_line && self.line_unbracketed;
+        debug_assert!(
+            !self.plain_block
+                || !b.skip
+                    && b.skip_within.is_none()
+                    && b.words
+                        .iter()
+                        .all(|w| w.index.is_empty() && w.expression.is_empty()),
+            "line {}: a plain block's words",
+            b.line
+        );
         self.reading_end.read(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
@@ -1670,7 +1821,20 @@ impl Checker {
             self.jump_arrival(b);
         }
         let modal = &self.config.modal;
-        self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap, motion_only);
+        // (no meaning, as most blocks': the meanings left as they are where they are none
+        // already)
+        match self.code_meanings(b, modal.fanuc_lathe || modal.lap, motion_only) {
+            None if self.meanings_none => {}
+            None => {
+                self.meanings = crate::meaning::Meanings::default();
+                self.meanings_none = true;
+            }
+            Some(meanings) => {
+                self.meanings = meanings;
+                self.meanings_none = false;
+            }
+        }
+        debug_assert!(!self.meanings_none || self.meanings == crate::meaning::Meanings::default());
         self.words(b);
         self.targets(b);
         // (the rules that read only a block's statements are not called for a block with
@@ -1758,9 +1922,11 @@ impl Checker {
                 }
                 // G68 R45 (an angle), G05.1 Q1 (a selector), G68.2 X Y Z (a tilted plane's
                 // origin): no position, radius or cycle value
+                // (no code of the block gives a meaning, as most blocks': none of these)
                 letter
-                    if self.meanings.not_length(letter)
-                        || (self.meanings.data && AXES.contains(&letter)) => {}
+                    if !self.meanings_none
+                        && (self.meanings.not_length(letter)
+                            || (self.meanings.data && AXES.contains(&letter))) => {}
                 letter => self.values.set_default(letter, v),
             }
         }
@@ -1918,12 +2084,15 @@ impl Checker {
     /// table gives a word a meaning by (`convert::cycle_table`, [`crate::meaning::block`]),
     /// and a cycle in force is not read in a block that writes a G code: no meaning, no shape
     /// worked out (a debug build works the meanings out and holds them to none).
+    ///
+    /// None for a block no code gives a word a meaning without a look at its words (G00-G03
+    /// alone, or no code and no mill's cycle in force): [`crate::meaning::Meanings::default`].
     fn code_meanings(
         &mut self,
         b: &BlockView<'_>,
         lathe: bool,
         motion_only: bool,
-    ) -> crate::meaning::Meanings {
+    ) -> Option<crate::meaning::Meanings> {
         if motion_only {
             debug_assert_eq!(
                 self.meanings_afresh(b, lathe),
@@ -1931,25 +2100,25 @@ impl Checker {
                 "line {}: G00-G03 gave a word a meaning",
                 b.line
             );
-            return crate::meaning::Meanings::default();
+            return None;
         }
         let codes = self.letters & (bit(b'G') | bit(b'M')) != 0;
         // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
         // G81): its words mean what the cycle's do
         let cycle = self.machine.state.cycle.filter(|_| !lathe);
         if !codes && cycle.is_none() {
-            return crate::meaning::Meanings::default(); // no code gives a word a meaning
+            return None; // no code gives a word a meaning
         }
         let Some(shape) = shapes::Shape::of(b.words, cycle) else {
-            return self.meanings_afresh(b, lathe);
+            return Some(self.meanings_afresh(b, lathe));
         };
         if let Some(kept) = self.shapes.get(&shape) {
             debug_assert_eq!(kept, self.meanings_afresh(b, lathe), "line {}", b.line);
-            return kept;
+            return Some(kept);
         }
         let meanings = self.meanings_afresh(b, lathe);
         self.shapes.keep(shape, meanings);
-        meanings
+        Some(meanings)
     }
 
     /// [`Checker::code_meanings`] worked out from the tables.
@@ -2124,23 +2293,28 @@ enum SubFile {
     No,
 }
 
-/// Whether every G word of `words` is G00, G01, G02 or G03 written plainly -- one to three
-/// digits, no point, sign, expression or index (`G1`, `G02`, `G003`) -- as nearly every G word of a
-/// CAM program's moves is: such a block's codes set no units or feed mode and give no word a
-/// meaning ([`Checker::block_modes`], [`Checker::code_meanings`]). Asked of a block with a G
-/// word and no M word.
+/// Whether every G word of `words` is G00, G01, G02 or G03, or a plane's G17, G18 or G19,
+/// written plainly -- one to three digits, no point, sign, expression or index (`G1`, `G02`,
+/// `G003`, `G17`, `G018`) -- as nearly every G word of a CAM program's moves is (a ramp's
+/// `G18 G2`): such a block's codes set no units or feed mode and give no word a meaning
+/// ([`Checker::block_modes`], [`Checker::code_meanings`]; a debug build works them out and
+/// asserts it). Asked of a block with a G word and no M word.
 fn motion_codes_only(words: &[Word<'_>]) -> bool {
     words
         .iter()
         .all(|w| w.letter != b'G' || plain_motion_code(w))
 }
 
-/// Whether G word `w` is G00, G01, G02 or G03 written plainly ([`motion_codes_only`]).
+/// Whether G word `w` is G00-G03 or G17-G19 written plainly ([`motion_codes_only`]).
 #[inline(always)]
 fn plain_motion_code(w: &Word<'_>) -> bool {
     matches!(
         w.number,
-        [b'0'..=b'3'] | [b'0', b'0'..=b'3'] | [b'0', b'0', b'0'..=b'3']
+        [b'0'..=b'3']
+            | [b'0', b'0'..=b'3']
+            | [b'0', b'0', b'0'..=b'3']
+            | [b'1', b'7'..=b'9']
+            | [b'0', b'1', b'7'..=b'9']
     ) && w.sign.is_empty()
         && w.expression.is_empty()
         && w.index.is_empty()
@@ -2344,6 +2518,19 @@ mod buffer_tests {
     /// The blocks whose codes are G00-G03 alone, whose units, feed mode and meanings are
     /// taken without their codes read (`motion_codes_only`): the forms it takes and those it
     /// leaves to the full reading.
+    /// The moved axes' table is the walk of the places, for every set of them.
+    #[test]
+    fn the_moved_axes_by_their_places_are_the_walk_of_them() {
+        for places in 0..512u32 {
+            let walked: Vec<u8> = crate::modal::places(places)
+                .map(|i| super::AXES[i])
+                .collect();
+            let (moved, n) = super::MOVED[places as usize];
+            assert_eq!(&moved[..usize::from(n)], &walked[..], "{places:b}");
+            assert!(moved[usize::from(n)..].iter().all(|&a| a == 0));
+        }
+    }
+
     #[test]
     fn motion_codes_only_takes_g00_to_g03_written_plainly() {
         let only = |line: &'static str| {
@@ -2364,6 +2551,8 @@ mod buffer_tests {
             "G003 X1.",
             "X1. Y2.",
             "G1 G0 X1.",
+            "G17 G02 X1. Y1. I1.",
+            "G018 G3 X1. Z1. K1.",
         ] {
             assert!(only(line), "{line}");
         }
@@ -2376,6 +2565,9 @@ mod buffer_tests {
             "G90 G1 X1.",
             "G33 Z-1. K1.",
             "G1.1 X1.",
+            "G16 X1.",
+            "G20 G17 X1.",
+            "G0017 X1.",
         ] {
             assert!(!only(line), "{line}");
         }
@@ -2437,7 +2629,9 @@ mod buffer_tests {
         let body = "G20 G95\nG1 X1. Y2. F0.1\nG81 X1. Y1. Z-1. R1. F1.\nG1 X2. Y2.\nX3.\n\
                     G2 X1. Y1. I1. J0 K2. P2 Q1. R3.\nG03 X0 Y0 R1. L2 D1 E1. H1 S100 T1\n\
                     G80\nG21 G94\nG0 X0 Y0 Z0 A1. B1. C1. U1. V1. W1.\n\
-                    G01 X1. F100.\nG1 X2. F100.\nG02 X3. Y3. I1. J1.\nG00 G01 X5.\nM30\n";
+                    G01 X1. F100.\nG1 X2. F100.\nG02 X3. Y3. I1. J1.\nG00 G01 X5.\n\
+                    G18 G02 X1. Z1. I1. K0 P1 Q1.\nG019 G3 Y1. Z1. J1. K0\nG17 G1 X1. R1.\nG17\n\
+                    M30\n";
         let mut configs: Vec<_> = Family::ALL.into_iter().map(of_family).collect();
         for system in [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C] {
             let mut lathe = fanuc_lathe();

@@ -238,8 +238,15 @@ pub(super) fn run_recording(
     let mut checker = Checker::new(Arc::new(config), Selection::all(), record_path);
     let mut tokens = Vec::new();
     let mut found = Vec::new();
+    // (the lines joined by LF and each checked as the binding checks a run of lines,
+    // `Checker::check_next_line`: it finds each line's end as `str::lines` split them)
+    let joined = program.lines().collect::<Vec<_>>().join("\n");
+    let mut start = 0;
     for (i, line) in program.lines().enumerate() {
-        checker.check_line(line.as_bytes(), i + 1, dialect, &mut tokens);
+        let rest = &joined.as_bytes()[start..];
+        let length = checker.check_next_line(rest, i + 1, dialect, &mut tokens);
+        assert_eq!(&rest[..length], line.as_bytes(), "line {}", i + 1);
+        start += length + 1;
         found.extend(checker.take());
     }
     checker.finish();

@@ -95,7 +95,17 @@ impl Checker {
         for &(column, comment) in b.comments {
             self.comment(comment, line, column);
         }
-        self.block_skip(b);
+        // (a line of plain words without a bracketed word has no block skip, at its start or
+        // within, and no expression for a '/' to follow: nothing of the block skip's rules to
+        // ask; a debug build asks them, and asserts they find nothing)
+        if !self.plain_block || cfg!(debug_assertions) {
+            let before = self.found.len();
+            self.block_skip(b);
+            debug_assert!(
+                !self.plain_block || self.found.len() == before,
+                "line {line}: a plain block's skip found"
+            );
+        }
         self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
         // (its one reader is the decimal point of an M, S or T word on a FANUC,
@@ -134,8 +144,8 @@ impl Checker {
         // `Meanings::any` does not count, so the roles themselves are looked at)
         let plain_keys = !self.format_table.afresh
             && self.named.is_empty()
-            && self.meanings.roles == [None; 26]
-            && !self.meanings.start_angle;
+            && (self.meanings_none
+                || self.meanings.roles == [None; 26] && !self.meanings.start_angle);
         // the rules of each word's place, letter and address below are a function of the
         // block's addresses alone where it has a key: asked once a key (a debug build asks
         // them of a kept block too, and asserts they find nothing)
@@ -261,7 +271,7 @@ impl Checker {
     /// The key of the rules of a block's words that read only their places, letters and
     /// addresses as written (TG102, TG124, TG125, TG130-TG133, TG137: case, alignment, order,
     /// repeats, several G words, addresses outside the classification; TG206's index, none
-    /// here): the addresses of its words as written, one byte each, and whether the plane is
+    /// here): the addresses of its words as written, one byte each (the last lowest), and whether the plane is
     /// G18 or G19 (the order of I J K). None -- its rules asked -- for a block of more than
     /// seven words, or with a word that has an index or an expression, an address other than
     /// a letter, a letter written twice (whether that repeat is a macro call's arguments reads
@@ -272,10 +282,17 @@ impl Checker {
         if b.words.len() > 7 || self.format_table.afresh {
             return None;
         }
+        // a line of plain words without a bracketed word: whether a letter repeats and the
+        // classification lacks one from its letters, with no test of each word (its words are
+        // letters without index or expression; a debug build tests them too, and asserts the
+        // same key)
+        if self.plain_block && !cfg!(debug_assertions) {
+            return self.plain_addresses_key(b.words, plane);
+        }
         let has_formats = !self.config.formats.is_empty();
         let mut key = 0u64;
         let mut letters = 0u32;
-        for (i, w) in b.words.iter().enumerate() {
+        for w in b.words {
             let letter = w.letter;
             if !letter.is_ascii_uppercase()
                 || !w.index.is_empty()
@@ -286,10 +303,35 @@ impl Checker {
                 return None;
             }
             letters |= bit(letter);
-            key |= u64::from(w.address) << (8 * i);
+            key = key << 8 | u64::from(w.address);
         }
         let side = u64::from(plane == 18 || plane == 19);
-        Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56)
+        let key = Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56);
+        debug_assert!(
+            !self.plain_block || self.plain_addresses_key(b.words, plane) == key,
+            "line {}: a plain block's addresses key",
+            b.line
+        );
+        key
+    }
+
+    /// [`Checker::addresses_key`] of a block of `words` (at most seven) that is a line of
+    /// plain words without a bracketed word (`plain_block`: its words are letters A-Z
+    /// without an index or an expression): None where a letter repeats (fewer letters than
+    /// words, from the letters its reader found) or the classification lacks one, else its
+    /// addresses as written, a byte each, and its length and plane; no test of each word.
+    #[inline(always)]
+    fn plain_addresses_key(&self, words: &[Word<'_>], plane: i64) -> Option<u64> {
+        if self.letters.count_ones() as usize != words.len()
+            || self.letters & self.format_table.unformatted != 0
+        {
+            return None;
+        }
+        let addresses = words
+            .iter()
+            .fold(0u64, |key, w| key << 8 | u64::from(w.address));
+        let side = u64::from(plane == 18 || plane == 19);
+        Some(addresses | (0x80 | side << 3 | words.len() as u64) << 56)
     }
     /// A FANUC lathe's G71 or G72 block (not a Haas's): its D, the depth of cut of the
     /// one-block form `G71 P Q U W D F`, is no word of the control's standard format, which
@@ -313,10 +355,10 @@ impl Checker {
         if self.config.code_words.is_empty() || self.letters & (bit(b'G') | bit(b'M')) == 0 {
             return;
         }
-        // (a block whose codes are G00-G03 alone, where no code word is of one of them, has
+        // (a block whose codes are G00-G03 and G17-G19 alone, where no code word is of one of them, has
         // none of them: its words are not walked; a debug build walks them)
         if self.motion_only
-            && self.format_table.named_codes[0] & 0b1111 == 0
+            && self.format_table.named_codes[0] & (0b1111 | 0b111 << 17) == 0
             && !cfg!(debug_assertions)
         {
             return;
@@ -1139,5 +1181,70 @@ mod tests {
             fired(macro_b(), &program("G01 X1. F100."), Rule::NotEvaluated),
             []
         );
+    }
+}
+
+#[cfg(test)]
+mod kept_tests {
+    use super::super::testing::{dialect, iso_mill, of_family};
+    use super::super::{Checker, Config};
+    use crate::lex::{Dialect, Family};
+    use crate::rules::Selection;
+    use std::sync::Arc;
+
+    /// The findings of `program` checked line by line as the binding checks a run
+    /// (`Checker::check_next_line`), with the verdicts kept or asked afresh of every block.
+    fn findings(config: &Config, program: &str, keep: bool) -> Vec<(String, usize, usize)> {
+        // (lower case read as plain words)
+        let d = Dialect {
+            lowercase: true,
+            ..dialect(config.family)
+        };
+        let mut checker = Checker::new(Arc::new(config.clone()), Selection::all(), false);
+        checker.keep_verdicts(keep);
+        let mut tokens = Vec::new();
+        let mut found = Vec::new();
+        let (text, mut start) = (program.as_bytes(), 0);
+        for line in 1.. {
+            let length = checker.check_next_line(&text[start..], line, &d, &mut tokens);
+            found.extend(checker.take());
+            if start + length >= text.len() {
+                break;
+            }
+            start += length + 1;
+        }
+        checker.finish();
+        found.extend(checker.take());
+        found
+            .into_iter()
+            .map(|f| (format!("{:?} {}", f.rule, f.message), f.line, f.column))
+            .collect()
+    }
+
+    /// A line of plain words has its addresses' key from its letters and its words' addresses
+    /// (`Checker::plain_addresses_key`): a block whose words' verdicts would differ from a
+    /// kept block's if that key missed a part -- a repeated letter (a macro call's argument
+    /// sets, `G65 I1. I2.`, are clean; `G01 I1. I2.` repeats I), a letter the classification
+    /// lacks (a macro call's argument, `G65 X1. E1.`, is clean; `G01 X1. E1.` names an
+    /// address outside it), an address in lower case (`x1. y2.` after `X1. Y2.`) --
+    /// gets its own verdict: the same findings with the verdicts kept as asked afresh, and
+    /// the findings the later block has.
+    #[test]
+    fn a_plain_blocks_addresses_key_holds_what_its_verdict_reads() {
+        let program = "%\nG65 I1. I2.\nG01 I1. I2.\nG65 X1. E1.\nG01 X1. E1.\nX1. Y2.\n\
+                       x1. y2.\nG02 X1. Y1. I1.\nG18\nG02 X1. Y1. I1.\nM30\n%";
+        for config in [of_family(Family::MacroB), iso_mill()] {
+            let kept = findings(&config, program, true);
+            let afresh = findings(&config, program, false);
+            assert_eq!(kept, afresh, "{:?}", config.family);
+            if config.family == Family::MacroB {
+                for line in [3, 5, 7] {
+                    assert!(
+                        kept.iter().any(|(_, l, _)| *l == line),
+                        "{kept:?}: line {line}"
+                    );
+                }
+            }
+        }
     }
 }
