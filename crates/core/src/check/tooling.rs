@@ -1115,21 +1115,15 @@ impl Checker {
         let given = if letters & bit(b'G') == 0 {
             None
         } else if self.motion_only {
-            // (the block's G words each G0-G3 or a plane's G17-G19 as written, no M word: the
-            // motion it runs its first of G0-G3, I J K R used in G2 and G3 only; a block of
-            // plane codes alone by the full reading)
+            // (the block's G words each G0-G3 as written, no M word: the motion it runs its
+            // first, I J K R used in G2 and G3 only; a plane's G17-G19 beside them, which a
+            // motion-only block may hold, by the full reading, as the full path reads it)
             self.code_key?;
-            debug_assert!(self
-                .values
-                .gs()
-                .iter()
-                .all(|&g| (0..=3).contains(&g) || (17..=19).contains(&g)));
-            let first = self
-                .values
-                .gs()
-                .iter()
-                .copied()
-                .find(|g| (0..=3).contains(g))?;
+            let gs = self.values.gs();
+            if !gs.iter().all(|g| (0..=3).contains(g)) {
+                return None;
+            }
+            let first = *gs.first()?;
             if first < 2 && letters & (bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R')) != 0 {
                 return None;
             }
