@@ -1225,6 +1225,23 @@ fn plain_line_words_as<'a, const CRS: bool>(
     if line.len() > MAX_BLOCK {
         return None;
     }
+    let (plain, end) = plain_words_from_start::<_, CRS>(line, dialect, words, walks, at)?;
+    (end >= line.len()).then_some(plain)
+}
+
+/// The plain words `text` begins with, after its blanks, scanned to where they stop (the
+/// end of `text`, an LF, or a byte no plain word or blank is): that place and the words'
+/// [`PlainLine`]; None where `text` begins as no line of plain words does (`%`, `/`, a DOS
+/// end-of-file mark, a byte order mark). The one scan of [`plain_line_words`] and
+/// [`plain_line_words_to_lf`].
+#[inline(always)]
+fn plain_words_from_start<'a, F: Fn(usize) -> usize, const CRS: bool>(
+    text: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Word<'a>>,
+    walks: &mut LineWalks,
+    at: F,
+) -> Option<(PlainLine, usize)> {
     let mut out = WordsOut::<_, CRS> {
         words,
         walks,
@@ -1234,16 +1251,18 @@ fn plain_line_words_as<'a, const CRS: bool>(
         letters: 0,
         motion_codes_only: true,
     };
-    let pos = out.skip_blanks(line, 0);
-    if matches!(line.get(pos), Some(&(SUB | b'%' | b'/'))) || line.starts_with(BOM) {
+    let pos = out.skip_blanks(text, 0);
+    if matches!(text.get(pos), Some(&(SUB | b'%' | b'/'))) || text.starts_with(BOM) {
         return None;
     }
-    (plain_words(line, pos, pos, dialect, &mut out) >= line.len()).then_some(PlainLine {
+    let end = plain_words(text, pos, pos, dialect, &mut out);
+    let plain = PlainLine {
         ascii: out.ascii,
         crs: CRS.then_some(out.crs),
         letters: out.letters,
         motion_codes_only: out.motion_codes_only,
-    })
+    };
+    Some((plain, end))
 }
 
 /// Whether every plain word of `dialect` is a letter, a sign, digits and a point
@@ -1291,32 +1310,11 @@ fn plain_line_words_to_lf_as<'a, const CRS: bool>(
     walks: &mut LineWalks,
     at: impl Fn(usize) -> usize,
 ) -> Option<(PlainLine, usize)> {
-    let mut out = WordsOut::<_, CRS> {
-        words,
-        walks,
-        at,
-        ascii: true,
-        crs: 0,
-        letters: 0,
-        motion_codes_only: true,
-    };
-    let pos = out.skip_blanks(rest, 0);
-    if matches!(rest.get(pos), Some(&(SUB | b'%' | b'/'))) || rest.starts_with(BOM) {
-        return None;
-    }
-    let end = plain_words(rest, pos, pos, dialect, &mut out);
+    let (plain, end) = plain_words_from_start::<_, CRS>(rest, dialect, words, walks, at)?;
     if end > MAX_BLOCK || rest.get(end).is_some_and(|&c| c != b'\n') {
         return None;
     }
-    Some((
-        PlainLine {
-            ascii: out.ascii,
-            crs: CRS.then_some(out.crs),
-            letters: out.letters,
-            motion_codes_only: out.motion_codes_only,
-        },
-        end,
-    ))
+    Some((plain, end))
 }
 
 /// A LinuxCNC parameter's name at `line[name..]` whose `>` is among its 8 bytes from `name`
