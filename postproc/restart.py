@@ -1153,8 +1153,7 @@ class _Planner:
                 or not walk.m6_line or places.get("Z", ("",))[0] != "unset"):
             return False
         gs = {w.number for w in self.block.word_objects() if w.letter == "G" and w.number}
-        sets_length = bool(gs & {"43", "44", "49"}) or any(
-            g.lstrip("0") in ("43", "44", "49") for g in gs)
+        sets_length = any(g.lstrip("0") in ("43", "44", "49") for g in gs)
         if sets_length and self.block_target("Z") is not None:
             self.state = replace(self.state, length_offset=49)
             return True

@@ -526,19 +526,16 @@ fn single_block_literal(token: &[u8]) -> bool {
         Some(p) => (&value[..p], &value[p + 1..]),
         None => (value, &value[..0]),
     };
-    let whole_ok = !whole.is_empty() || !fraction.is_empty();
-    let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
-    let whole_value = whole.iter().skip_while(|&&c| c == b'0').collect::<Vec<_>>();
-    whole_ok
-        && digits(whole)
-        && digits(fraction)
+    let significant = &whole[whole.iter().take_while(|&&c| c == b'0').count()..];
+    (!whole.is_empty() || !fraction.is_empty())
+        && whole.iter().all(u8::is_ascii_digit)
         && fraction.iter().all(|&c| c == b'0')
-        && (whole_value.is_empty() || whole_value == [&b'1'])
+        && matches!(significant, b"" | b"1")
 }
 
 /// Numbered variables between a FANUC and a Haas, which both write Custom Macro B: a variable
-/// both leave to the program (#1-#33, #100-#199, #500-#699 but the Haas probe's #550-#580, #800-#999) or both read alike
-/// ([`fanuc_haas_alike`]) is carried; one the Haas's table gives another use (the G52 offset
+/// both leave to the program (#1-#33, #100-#199, #500-#699 but the Haas probe's #550-#580,
+/// #800-#999) or both read alike ([`fanuc_haas_alike`]) is carried; one the Haas's table gives another use (the G52 offset
 /// at #5201, the tool offsets at #2001-#2800 in another order, the M30 counters at #3901, the
 /// settings and parameters at #20000-#39999, the NGC's #10000 numbers of the general purpose
 /// variables, which a FANUC reads as tool offsets) or that neither names alike is refused,

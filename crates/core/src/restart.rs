@@ -1313,7 +1313,8 @@ impl Walk {
             &gs,
             &ms,
             &plain_words,
-            (tool_word, matches!(after.spindle, 3 | 4)),
+            tool_word,
+            matches!(after.spindle, 3 | 4),
             after.length_offset,
         );
         if self.lathe && self.m_modes.is_empty() {
@@ -1849,7 +1850,8 @@ impl Walk {
         gs: &[i64],
         ms: &[i64],
         plain_words: &[(u8, &[u8])],
-        (tool_word, turning): (bool, bool),
+        tool_word: bool,
+        turning: bool,
         length_offset: i64,
     ) {
         let word = |letter: u8| {

@@ -1893,19 +1893,7 @@ mod tests {
                 let letters = words[1..]
                     .iter()
                     .fold(0, |l, w| l | crate::modal::bit(w.letter));
-                let motion_codes_only = words[1..].iter().all(|w| {
-                    w.letter != b'G'
-                        || matches!(
-                            w.number,
-                            [b'0'..=b'3']
-                                | [b'0', b'0'..=b'3']
-                                | [b'0', b'0', b'0'..=b'3']
-                                | [b'1', b'7'..=b'9']
-                                | [b'0', b'1', b'7'..=b'9']
-                        ) && w.sign.is_empty()
-                            && w.expression.is_empty()
-                            && w.index.is_empty()
-                });
+                let motion_codes_only = crate::check::motion_codes_only(&words[1..]);
                 assert_eq!(
                     found,
                     PlainLine {

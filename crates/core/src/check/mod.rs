@@ -2299,7 +2299,7 @@ enum SubFile {
 /// `G18 G2`): such a block's codes set no units or feed mode and give no word a meaning
 /// ([`Checker::block_modes`], [`Checker::code_meanings`]; a debug build works them out and
 /// asserts it). Asked of a block with a G word and no M word.
-fn motion_codes_only(words: &[Word<'_>]) -> bool {
+pub(crate) fn motion_codes_only(words: &[Word<'_>]) -> bool {
     words
         .iter()
         .all(|w| w.letter != b'G' || plain_motion_code(w))
