@@ -2489,13 +2489,31 @@ def test_a_haas_lathe_c_axis_disengaged_is_not_positioned():
 
 def test_a_refusal_inside_a_live_tool_section_says_where_to_restart():
     """Review 35, finding 10: a refusal inside a Haas lathe's live tool section named no place
-    to restart: it names the tool change before it and the codes that end the modes."""
+    to restart: it names the block of the first mode code in force and the codes that end the
+    modes. Review 36, finding 7: it named the tool change before the code, which, where M154
+    comes before the live tool's T word, is the tool before; the code's own block is the
+    nearest place, and a restart there is planned."""
     haas = load_profile("haas-lathe")
     said = refusal(POLAR_HAAS.format(y=""), 13, haas)
     assert said == (
         "cannot restart here: M154 (C axis engage) from line 5 is in force and the preamble "
-        "cannot restore it; restart at or before the tool change (line 4), or after the M135 "
-        "and M155 that end the modes"), said
+        "cannot restore it; restart at or before line 5, or after the M135 and M155 that end "
+        "the modes"), said
+    # the second mode code (M133, line 7) names the first's line: a restart at line 7 is
+    # refused on M154
+    assert "restart at or before line 5," in refusal(POLAR_HAAS.format(y=""), 9, haas)
+    assert "M154 (C axis engage) from line 5" in refusal(POLAR_HAAS.format(y=""), 7, haas)
+    assert plan(POLAR_HAAS.format(y=""), 5, haas).preamble
+    # M154 before the live tool's T word, after a turning tool (line 5's T0101)
+    before_t = ("%\nO1010\nG20 G18 G40 G80 G99\nG54\nT0101\nG97 S500 M03\nG00 X2. Z0.1\n"
+                "G01 Z-0.5 F0.01\nG00 X2.2\nG00 Z0.1\nM05\nM154\nT0505\nG98\nP2000 M133\n"
+                "G00 X2.4 C0. Z-0.4\nG01 X1.2 F5.\nG00 X2.4\nM135\nM155\nM30\n%\n")
+    said = refusal(before_t, 16, haas)
+    assert said.endswith("restart at or before line 12, or after the M135 and M155 that end "
+                         "the modes"), said
+    planned = plan(before_t, 12, haas)
+    assert "T0101" in planned.preamble and not any("M03" in b for b in planned.preamble), \
+        planned.preamble
 
 
 # -- two codes of one modal group before the restart point (TG304) ------------------------------

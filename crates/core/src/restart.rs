@@ -1200,12 +1200,18 @@ impl Walk {
             if on {
                 if !self.unrestored.iter().any(|(k, _, _)| k == mode) {
                     // (review 35, finding 10) where a restart can be made instead: at or before
-                    // the tool change before it (or the code itself), or after the codes
-                    // that end the modes
-                    let before = match self.tool_change {
-                        Some(t) => format!("the tool change (line {t})"),
-                        None => format!("line {line}"),
-                    };
+                    // the block of the first of these codes still in force (it is sent as
+                    // written, the tool and the moves before it restored), or after the codes
+                    // that end the modes. Not the tool change before it: the code may come
+                    // before the live tool's T word, and that change is the tool before
+                    // (review 36, finding 7)
+                    let first = self
+                        .unrestored
+                        .iter()
+                        .filter(|(k, _, _)| self.m_modes.iter().any(|(_, m, _, _)| m == k))
+                        .map(|&(_, l, _)| l)
+                        .fold(line, usize::min);
+                    let before = format!("line {first}");
                     let ends: Vec<String> = self
                         .m_modes
                         .iter()
@@ -2910,8 +2916,7 @@ mod tests {
         step_text(&mut walk, 1, b"T0505", &state());
         step_text(&mut walk, 2, b"M154", &state());
         assert!(walk.mode_hints.iter().any(|(k, h)| {
-            *k == "C axis"
-            && h == "restart at or before the tool change (line 1), or after the M155 that ends it"
+            *k == "C axis" && h == "restart at or before line 2, or after the M155 that ends it"
         }));
         step_text(&mut walk, 3, b"G00 X2. Z0.1 C0.", &lathe_state(2, 0, 0));
         step_text(&mut walk, 4, b"G112", &state());
