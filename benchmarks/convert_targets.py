@@ -68,12 +68,21 @@ class Run:
     kind: str = ""  # of a REFUSED output's first new error: reading | rs274 | other
 
 
+# A machine's limit that a control family's profile says as a warning (the control clamps or
+# limits it, or no source says it alarms) and a strict profile as an error: the same limit, so
+# a source that passed it already passes it on any target (docs/rules.md, TG605, TG606).
+SAME_LIMIT = {rule_id("FeedClamped"): rule_id("FeedTooHigh"),
+              rule_id("SpeedLimited"): rule_id("SpeedTooHigh")}
+
+
 def errors(path: Path, profile_name: str, name: str) -> list[tuple[str, int, str]]:
-    """The check's errors of ``path`` on ``profile_name``: (rule, line, message)."""
+    """The check's errors of ``path`` on ``profile_name``: (rule, line, message); a limit said
+    as a warning (SAME_LIMIT) counts as the error of the same limit."""
     profile = load_profile(profile_name)
     read = parse_stream(Source(str(path)).chunks(), profile.dialect, file=name, errors="collect")
-    return [(f.rule, f.line or 0, f.message) for f in Checker(profile, file=name).run(read)
-            if f.severity == "error"]
+    return [(SAME_LIMIT.get(f.rule, f.rule), f.line or 0, f.message)
+            for f in Checker(profile, file=name).run(read)
+            if f.severity == "error" or f.rule in SAME_LIMIT]
 
 
 def kind(rule: str) -> str:

@@ -90,6 +90,9 @@ _example("TG113",
 _example("TG114", P + "N2 X1\n%\n", P + "N2 X1\n" + E)
 _example("TG115", P + "N2 M30\n", P + "N2 M30\n%\n")
 _example("TG116", P + "N2 M30\nN3 X1\n%\n", P + "N2 M30\n%\n")
+# a control family's: the control ends the program at M30 and never runs what follows
+_example("TG106", "%\nO1\nG21 G90 G00 X0 Y0\nM30\n(ENABLE LOOKAHEAD)\nG05.1 Q1\n%\n",
+         "%\nO1\nG21 G90 G00 X0 Y0\nG05.1 Q1\nM30\n%\n", "fanuc-mill")
 # LinuxCNC never reads past its M2/M30 (rs274's driver stops there): the line is passed over
 _example("TG117", "G21 G0 X1\nM2\nprint[done]\n", "G21 G0 X1\nM2\n(done)\n", "linuxcnc")
 # a macro branch to a sequence number the program does not hold (FANUC alarm PS0128)
@@ -273,6 +276,12 @@ _example("TG604", P + "N2 T120\n" + E, P + "N2 T12\n" + E)
 _example("TG605",
          "%\nO1\nG21 G90 G01 X1. F20000.\nM30\n%\n",
          "%\nO1\nG21 G90 G01 X1. F9000.\nM30\n%\n",
+         "fanuc-mill")
+# a family's profile: the control limits the speed, or no source says it alarms
+# (fanuc-mill's spindle_max is 10000); a clamp (G92 S15000) turns nothing
+_example("TG606",
+         "%\nO1\nG21 G90 G97 S12000 M03\nM30\n%\n",
+         "%\nO1\nG21 G90 G92 S15000\nG97 S8000 M03\nM30\n%\n",
          "fanuc-mill")
 # -- tape ---------------------------------------------------------------------------------------
 _example("TG701", "", "")
@@ -527,8 +536,15 @@ SOURCES = {
              "Fanuc, Haas, SINUMERIK or Okuma alarms on words after M02/M30: the control ends "
              "the program there and never runs them (a program that follows with its own O "
              "number is read as its own program, issue 32 item 4). LinuxCNC reads nothing after "
-             "its M2/M30 (TG117, a warning, there instead). Reported as a rule with no alarm "
-             "source.",
+             "its M2/M30 (TG117, a warning, there instead). On the strict ISO profiles only: "
+             "on a control family's profile TG106, a warning, instead.",
+    "TG106": "No control source at hand says a Fanuc, Haas, SINUMERIK, Okuma or Heidenhain "
+             "control alarms on words after M02/M30: it ends the program there, and never runs "
+             "the words unless a jump (GOTO, M99 P, M97 P) reaches them; a program that follows "
+             "with its own O number is read as its own program (issue 32, item 4). What the "
+             "control does is not an alarm, and the words are kept as written: a warning (issue "
+             "32, item 3; audit of held-out programs: a FANUC post's `(Enable lookahead)` and "
+             "`G5.1 Q1` after M30, which never run).",
     "TG119": "FANUC 0i-F/30i-B Operator's Manuals, \"Programmable parameter input (G10 L50)\" "
              "and tool life data input (G10 L3): the mode's blocks hold only the data words "
              "until G11; the alarm's number was not at hand. Haas: its G10 takes L2, L10-L13 and "
@@ -631,7 +647,11 @@ SOURCES = {
              "takes it (no alarm source for a bare T: reported). Haas: a new D under "
              "compensation takes effect at the end of the move (Mill Operator's Manual, NGC, "
              "2017, Cutter Compensation): documented, no alarm (reported; left an error, since "
-             "it decides the tool path). FANUC, SINUMERIK, Okuma: no alarm number at hand.",
+             "it decides the tool path). SINUMERIK: the offset number D can be changed in "
+             "compensation mode, the new radius in effect from its block (840Di sl Programming "
+             "Manual Fundamentals, 11/2006, 8.8, \"Changing the offset number D\"): a D alone "
+             "is no finding there (a T still is: no Siemens page read for it). FANUC, Okuma: no "
+             "alarm number at hand.",
     "TG511": "ISO 6983-1 clause 11 (G33: the lead in I/J/K, so no F). LinuxCNC: rs274 \"F word "
              "used with a g33/g33.1\". FANUC, Haas, SINUMERIK: no alarm number at hand for a "
              "lead word and F in one threading block (their threading words were not read for "
@@ -673,9 +693,19 @@ SOURCES = {
              "B-64120EN, parameter 1422, the maximum cutting feedrate), a documented effect, so "
              "on the FANUC profiles it is TG605, a warning. SINUMERIK: no source at hand (left "
              "an error, reported). Okuma, LinuxCNC: their profiles set no feed_max.",
-    "TG603": "The profile's machine (spindle_max). No source at hand says a Fanuc, Haas, "
-             "SINUMERIK or Okuma alarms on an S above the machine's maximum rather than limiting "
-             "it to the maximum (reported as a rule with no alarm source); `linuxcnc` sets none.",
+    "TG603": "The profile's machine (spindle_max), on the strict ISO profiles only. The S of "
+             "the spindle speed clamp's code (G50 S on a lathe, G92 S elsewhere) is a limit, "
+             "not a speed: never judged. On a control family's profile, TG606 (a warning) "
+             "instead; `linuxcnc` sets no spindle_max.",
+    "TG606": "The profile's machine (spindle_max). SINUMERIK: the control limits an excessive "
+             "spindle speed setpoint to the maximum in MD35100 SPIND_VELO_LIMIT (808D Function "
+             "Manual, 01/2017, \"Maximum spindle speed\"; 840D Function Manual S1, 06/2019, "
+             "18.8.4: setpoints limited to the gear stage's maximum): a documented effect, no "
+             "alarm. FANUC, Haas, Okuma, Heidenhain: no source at hand says the control alarms "
+             "on an S above the machine's maximum rather than limiting it, and the family "
+             "profiles' maxima are a sample machine's (audit of held-out programs: a Robodrill's "
+             "S24000 against fanuc-mill's 10000): what tapegate does not know is a warning "
+             "(issue 32, item 3).",
     "TG604": "The profile's machine (tool_max). FANUC: alarm PS0043, illegal T-code command (a T "
              "code beyond the allowable range; FANUC alarm list). Haas: tool numbers run from 1 "
              "to 200 (Mill Operator's Manual, NGC, 2017, Advanced Tool Management), and a value "

@@ -147,6 +147,77 @@ def test_a_constant_assignment_is_known_until_a_jump():
     assert "TG605" not in [f.rule for f in findings(reassigned, "fanuc-mill")]
 
 
+def test_a_spindle_speed_clamp_is_no_speed_and_a_speed_above_the_maximum_is_a_warning():
+    """Audit 37 of the held-out programs: `G50 S8000` (a lathe's spindle speed clamp, Haas and
+    FANUC lathe manuals; G92 S on a mill) was TG603 against the profile's maximum, though it
+    turns nothing. And no source says a FANUC, Haas or Okuma alarms on an S above the
+    machine's maximum rather than limiting it (a SINUMERIK limits it, MD35100): on a family
+    profile TG606, a warning naming the profile's machine; the strict ISO profiles keep
+    TG603."""
+    lathe = ("%\nO0001\nG21 G99 G18\nG50 S8000\nG96 S200 M03\nG00 X50. Z2.\n"
+             "G01 Z-10. F0.2\nG97 S{s} M03\nG00 X60.\nM30\n%\n")
+    for profile in ("haas-lathe", "fanuc-lathe"):
+        assert not [f for f in findings(lathe.format(s=1000), profile)
+                    if f.rule in ("TG603", "TG606")], profile
+        over = [f for f in findings(lathe.format(s=9000), profile)
+                if f.rule in ("TG603", "TG606")]
+        assert [(f.rule, f.line, f.severity) for f in over] == [("TG606", 8, "warning")]
+        assert "set the profile's spindle_max" in over[0].message
+    mill = "%\nO1\nG21 G90\nG92 S15000\nG97 S{s} M03\nM30\n%\n"
+    for profile in ("fanuc-mill", "haas-mill"):
+        assert not [f for f in findings(mill.format(s=8000), profile)
+                    if f.rule in ("TG603", "TG606")], profile
+        assert [f.rule for f in findings(mill.format(s=16000), profile)
+                if f.rule in ("TG603", "TG606")] == ["TG606"]
+    sinumerik = findings("N10 G0 X0 Y0\nN20 S30000 M3\nN30 M30\n", "sinumerik-840d")
+    limited = [f for f in sinumerik if f.rule == "TG606"]
+    assert len(limited) == 1 and "MD35100" in limited[0].message
+    iso = findings("%\nN1 G71\nN2 S7000 M03\nN99 M30\n%\n", "iso-mill")
+    assert [(f.rule, f.severity) for f in iso if f.rule in ("TG603", "TG606")] == [
+        ("TG603", "error")]
+
+
+def test_a_limit_passed_by_a_program_that_writes_no_units_code_says_so():
+    """Audit 37: 28 held-out Haas programs of metric shops write no G21; a Haas reads them in
+    the units of its Setting 9, which haas-mill takes as inches, so `Z150.` spans 140 in and
+    F1500. is 1500 in/min. Still errors (on a machine set to inches the program does go
+    there), but the message says the numbers were read in the assumed units, that in mm they
+    fit, and how to check it for a machine set to mm; with G21 written, or where mm would not
+    fit either, it does not."""
+    text = ("%\nO00001\nG00 G17 G90 G54\nT1 M06\nG43 H1 Z150.\nS1000 M03\n"
+            "G01 Z10. F1500.\nG00 Z150.\nM30\n%\n")
+    found = [f for f in findings(text, "haas-mill") if f.rule in ("TG601", "TG602")]
+    assert [f.rule for f in found] == ["TG601", "TG602"]
+    for f in found:
+        assert f.severity == "error"
+        assert "writes no units code" in f.message and "Setting 9" in f.message, f.message
+        assert "--units metric" in f.message
+    assert not [f for f in findings(text.replace("G17 G90", "G17 G21 G90"), "haas-mill")
+                if f.rule in ("TG601", "TG602")]
+    # beyond the travel in mm too: no hint
+    far = text.replace("Z150.", "Z1500.")
+    spans = [f for f in findings(far, "haas-mill") if f.rule == "TG601"]
+    assert spans and "units code" not in spans[0].message
+    # with G20 written the inches are the program's own: no hint
+    inch = [f for f in findings(text.replace("G17 G90", "G17 G20 G90"), "haas-mill")
+            if f.rule == "TG601"]
+    assert inch and "units code" not in inch[0].message
+
+
+def test_a_sinumerik_changes_d_under_cutter_compensation():
+    """Audit 37: `D1 X=XD+unut` under G42 in three held-out SINUMERIK programs was TG502. The
+    840Di sl Programming Manual Fundamentals (8.8, "Changing the offset number D") says the
+    offset number can be changed in compensation mode, the new radius in effect from its
+    block. A T under compensation is still said; elsewhere a D is too."""
+    text = ("N10 T1 D1\nN20 G17 G90 G0 X0 Y0 Z5 S1000 M3\nN30 G1 Z-1 F200\n"
+            "N40 G1 G41 X10 Y0\nN50 G1 X20\nN60 {word} X30\nN70 G1 G40 X40\nN80 M30\n")
+    assert "TG502" not in [f.rule for f in findings(text.format(word="D2"), "sinumerik-840d")]
+    assert [(f.rule, f.line) for f in findings(text.format(word="T2"), "sinumerik-840d")
+            if f.rule == "TG502"] == [("TG502", 6)]
+    fanuc = "%\nO1\n" + text.format(word="D2").replace("N80 M30\n", "N80 M30\n%\n")
+    assert "TG502" in [f.rule for f in findings(fanuc, "fanuc-mill")]
+
+
 def test_a_feed_above_the_maximum_is_clamped_on_a_fanuc_and_alarms_on_a_haas():
     """Issue 32's severity by evidence: a FANUC clamps a cutting feed above its maximum
     (B-63172EN 4.2.2), a warning; a Haas alarms ("max feedrate exceeded", NGC manual, G01)."""
@@ -331,8 +402,11 @@ def test_linuxcnc_never_reads_the_lines_after_its_end(tmp_path):
     # parse's counts read it so too (one block, no word), the last line without its LF too
     assert count_blocks([AFTER_END], load_profile("linuxcnc").dialect) == (7, 7, 0)
     assert count_blocks([AFTER_END + "bad"], load_profile("linuxcnc").dialect) == (8, 7, 0)
-    # a Fanuc reads on: the words after its M30 are read (and said, TG116)
-    assert "TG116" in rules("%\nO1\nG0 X1\nM30\nG0 X2\n%\n", "fanuc-mill")
+    # a Fanuc reads on: the words after its M30 are read (and said, TG106: never run, a
+    # warning; TG116, the error, on the strict ISO profiles)
+    after = rules("%\nO1\nG0 X1\nM30\nG0 X2\n%\n", "fanuc-mill")
+    assert "TG106" in after and "TG116" not in after
+    assert "TG116" in rules("%\nN1 G71\nN2 G0 X1\nN3 M30\nN4 G0 X2\n%\n", "iso-mill")
 
 
 def test_a_conversion_keeps_the_lines_after_a_linuxcnc_end(tmp_path):
@@ -681,12 +755,13 @@ def test_a_plain_number_after_an_extension_is_another_spindle_s_or_axis_s():
     """S2=30000 is spindle 2's speed, X4=100 axis X4's position, M1=3 M2=4 two spindles' codes:
     none is the profile's one spindle or X ("Extended addresses"). Taken as set but unknown
     (TG141, said once), where they were TG603 above its 24000, a TG403 arc from X=100 and
-    TG304 for one modal group. The profile's own S30000 is still TG603."""
+    TG304 for one modal group. The profile's own S30000 is still judged: TG606, a warning (a
+    SINUMERIK limits the speed to its maximum, MD35100)."""
     text = ("N10 G0 X0 Y0 F100\nN20 S2=30000 M3\nN30 X4=100\nN40 G2 X10 Y0 I5 J0\n"
             "N50 M1=3 M2=4\nN60 S30000\nN70 M30\n")
     found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
-             if f.rule in ("TG141", "TG304", "TG403", "TG603")]
-    assert found == [("TG141", 2, 5), ("TG603", 6, 5)]
+             if f.rule in ("TG141", "TG304", "TG403", "TG603", "TG606")]
+    assert found == [("TG141", 2, 5), ("TG606", 6, 5)]
     note = [f for f in findings(text, "sinumerik-840d") if f.rule == "TG141"][0]
     assert "another axis or spindle (an extended address)" in note.message
 

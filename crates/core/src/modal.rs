@@ -83,6 +83,10 @@ pub struct ModalState {
     /// The units of the feed F: the units of lengths, but on Sinumerik, whose G70/G71 leave F
     /// in the basic system (the profile's units) and whose G700/G710 set both.
     pub feed_units: Units,
+    /// Whether the program has written a units code: until it does, its numbers are in the
+    /// units the machine is set to at power-on (a Haas's Setting 9), which the profile's
+    /// `units` only assumes (the limits' messages say so).
+    pub units_given: bool,
     pub incremental: bool,
     pub feed_mode: i64,
     pub feed: Option<Dec>,
@@ -147,6 +151,7 @@ impl ModalState {
             plane: 17,
             units,
             feed_units: units,
+            units_given: false,
             incremental: false,
             feed_mode: 94,
             feed: None,
@@ -598,6 +603,8 @@ impl ModalMachine {
         for g in reset {
             self.g(g);
         }
+        // (the reset's own units code is the machine's setting, not the program's)
+        self.state.units_given = false;
     }
 
     /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).
@@ -912,6 +919,7 @@ impl ModalMachine {
                     }
                     s.units = units;
                     s.feed_units = feed_units;
+                    s.units_given = true;
                 }
             }
         }

@@ -147,6 +147,8 @@ rules! {
         "M02/M30 not followed by the closing %";
     WordsAfterEnd = "TG116", Error, "Annex E", Structure, false,
         "words after the end of program (M02/M30)";
+    WordsAfterEndNotRun = "TG106", Warning, "dialect", Structure, false,
+        "words after the end of program (M02/M30) on a control family's profile (Fanuc, Haas, SINUMERIK, Okuma, Heidenhain): the control ends the program there and never runs them unless a jump reaches them, and no source at hand says it alarms; kept as written, said once";
     NotRead = "TG117", Warning, "dialect", Structure, false,
         "lines the control never reads: LinuxCNC stops at an M2/M30 it runs (only O-word lines, a subroutine's definition, are read after it) and at the closing % of a file begun with %; passed over, kept as written, said once";
     TargetNotFound = "TG118", Error, "dialect", Structure, false,
@@ -289,6 +291,8 @@ rules! {
         "tool number outside the machine's range";
     FeedClamped = "TG605", Warning, "profile", Limits, false,
         "feed rate above the machine's maximum on a FANUC, which clamps a cutting feed to the maximum its parameters set rather than alarming: the cut runs slower than programmed";
+    SpeedLimited = "TG606", Warning, "profile", Limits, false,
+        "spindle speed above the machine's maximum on a control family's profile (Fanuc, Haas, SINUMERIK, Okuma, Heidenhain): a SINUMERIK limits the speed to its maximum, and no source at hand says the others alarm rather than limiting it: the spindle turns slower than programmed, or the profile's sample machine is not the user's";
     TapeParity = "TG701", Error, "Annex A", Link, true,
         "tape parity error (character with the wrong parity)";
     TapeCharacter = "TG702", Error, "Annex A", Link, true,

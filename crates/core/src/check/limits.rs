@@ -1346,6 +1346,9 @@ impl Checker {
         // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
         let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
         let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
+        // the S of the spindle speed clamp's code (G50 on a lathe, G92 elsewhere: the modal
+        // state's speed limit) turns nothing: a clamp above the maximum never bites (audit 37)
+        let s = s.filter(|_| !v.has_g(self.machine.settings.clamp_code()));
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
@@ -1368,6 +1371,10 @@ impl Checker {
                         round6(feed.to_f64() * factor)
                     )
                 };
+                let message = format!(
+                    "{message}{}",
+                    self.units_not_written(feed.to_f64() * factor / 25.4 <= top.to_f64() + 1e-9)
+                );
                 // a FANUC clamps a cutting feed above its parameter's maximum (Power Mate i-D
                 // B-63172EN 4.2.2, "Cutting feed rate clamp"; parameter 1422): no alarm, so a
                 // warning (issue 32); a Haas alarms (NGC Mill Operator's Manual, G01)
@@ -1385,7 +1392,25 @@ impl Checker {
         if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
             if self.machine.state.spindle_mode == 97 && speed > top {
                 let message = format!("spindle speed {speed} above the maximum {top}");
-                self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
+                // a control family's: a SINUMERIK limits an excessive speed to its maximum
+                // (808D Function Manual, MD35100 SPIND_VELO_LIMIT; 840D Function Manual, S1,
+                // 18.8.4), and no source at hand says a FANUC, Haas, Okuma or Heidenhain
+                // alarms rather than limiting it: a warning (issue 32, item 3); the strict ISO
+                // profiles keep TG603
+                if self.config.family == Family::Iso {
+                    self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
+                } else {
+                    let effect = if self.config.family == Family::Sinumerik {
+                        "a SINUMERIK limits it to its maximum (MD35100), no alarm"
+                    } else {
+                        "no source says the control alarms rather than limiting it"
+                    };
+                    let message = format!(
+                        "{message} of the profile's machine: {effect}; set the profile's \
+                         spindle_max to your machine's"
+                    );
+                    self.report(Rule::SpeedLimited, message, line, col(b'S'));
+                }
             }
         }
         if let Some(t) = t {
@@ -1475,15 +1500,42 @@ impl Checker {
         (line, column): (usize, usize),
         under: &str,
     ) {
+        let units = self.units_not_written((most - least) / 25.4 <= high - low + 1e-9);
         let message = format!(
             "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
-             offset fits the program on this machine{under}",
+             offset fits the program on this machine{under}{units}",
             axis as char,
             round6(most - least),
             round6(least),
             round6(most)
         );
         self.report(Rule::TravelExceeded, message, line, column);
+    }
+
+    /// What a limit's message adds where the program has written no units code and the
+    /// profile's units are inches: the numbers are read in the units the machine is set to at
+    /// power-on, which the profile assumes, and read in millimetres they would fit (`fits`):
+    /// a metric shop's program that writes no G21, on a Haas set to mm by Setting 9 (audit 37:
+    /// `Z150.` taken for 150 in). Empty otherwise.
+    #[cold]
+    fn units_not_written(&self, fits: bool) -> String {
+        if self.machine.state.units_given
+            || self.config.limit_units != Units::Inch
+            || self.machine.state.units != Units::Inch
+            || !fits
+        {
+            return String::new();
+        }
+        let setting = if self.config.haas {
+            " (a Haas's Setting 9)"
+        } else {
+            ""
+        };
+        format!(
+            "; the program writes no units code, so its numbers are read in inches, the \
+             units the profile takes the machine to be set to{setting}: read in millimetres \
+             they fit (`check --units metric` for a machine set to mm)"
+        )
     }
 
     /// The block's X Y Z under an exact rotation or scaling, taken back to the coordinates
@@ -2329,6 +2381,23 @@ mod tests {
         );
         assert_eq!(at(iso_mill(), "S7000 M03", Rule::SpeedTooHigh), [(2, 1)]);
         assert_eq!(at(iso_mill(), "S5000 M03", Rule::SpeedTooHigh), []);
+        // the spindle speed clamp's S (G92 on a mill) turns nothing: not judged (audit 37)
+        assert_eq!(at(iso_mill(), "G92 S7000", Rule::SpeedTooHigh), []);
+        assert_eq!(
+            at(iso_mill(), "G92 S7000\nS7000 M03", Rule::SpeedTooHigh),
+            [(3, 1)]
+        );
+        // on a control family's profile: a warning (no source says the control alarms)
+        let family = Config {
+            family: Family::MacroB,
+            ..iso_mill()
+        };
+        assert_eq!(
+            at(family.clone(), "S7000 M03", Rule::SpeedLimited),
+            [(2, 1)]
+        );
+        assert_eq!(at(family.clone(), "S7000 M03", Rule::SpeedTooHigh), []);
+        assert_eq!(at(family, "G92 S7000", Rule::SpeedLimited), []);
         assert_eq!(at(iso_mill(), "T100", Rule::ToolOutOfRange), [(2, 1)]);
         assert_eq!(at(iso_mill(), "T12", Rule::ToolOutOfRange), []);
     }

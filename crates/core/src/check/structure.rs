@@ -1324,8 +1324,22 @@ impl Checker {
             && !self.reading_end.inside_block()
         {
             self.after_end_reported = true;
-            let message = format!("words after the end of program on line {}", self.ended_line);
-            self.report(Rule::WordsAfterEnd, message, line, 1);
+            // a control family's: ended there, the words are never run, and no source says
+            // the control alarms (audit 37: `M30 / (Enable lookahead) / G5.1 Q1`): a
+            // warning; the strict ISO profiles (Annex E) and LinuxCNC keep TG116
+            let (rule, why) = match self.config.family {
+                Family::Iso | Family::LinuxCnc => (Rule::WordsAfterEnd, ""),
+                _ => (
+                    Rule::WordsAfterEndNotRun,
+                    ": the control ends the program there and never runs them unless a jump \
+                     reaches them",
+                ),
+            };
+            let message = format!(
+                "words after the end of program on line {}{why}",
+                self.ended_line
+            );
+            self.report(rule, message, line, 1);
         }
     }
 
@@ -2517,13 +2531,16 @@ mod tests {
                        %_N_SUB1_SPF\n;$PATH=/_N_SPF_DIR\nG1 X5 Y5\nRET\n\
                        %_N_MAIN2_MPF\n;$PATH=/_N_MPF_DIR\nG90 G1 X20\nM30\n";
         assert_eq!(run(archive, Rule::WordsAfterEnd), []);
+        assert_eq!(run(archive, Rule::WordsAfterEndNotRun), []);
         // the subprogram runs under its caller's feed; the second main program starts from
         // the reset state, with none
         assert_eq!(run(archive, Rule::NoFeedRate), [(11, 8)]);
         assert_eq!(run(archive, Rule::NoProgramEnd), []);
-        // words after the end and before the next file's header stay TG116
+        // words after the end and before the next file's header stay words after the end
+        // (never run: TG106, a warning, on a control family's profile)
         let glued = "%_N_MAIN_MPF\nG1 X10 F100\nM30\nG1 X5\n%_N_SUB1_SPF\nG1 X1\nM17\n";
-        assert_eq!(run(glued, Rule::WordsAfterEnd), [(4, 1)]);
+        assert_eq!(run(glued, Rule::WordsAfterEndNotRun), [(4, 1)]);
+        assert_eq!(run(glued, Rule::WordsAfterEnd), []);
         // a file that ends by M99 (no code of the SINUMERIK's program flow) or by nothing is
         // no less a file of its own: the next header begins the next program, from the
         // reset state, with no feed

@@ -2127,7 +2127,16 @@ impl Checker {
                 }
             }
         }
-        if matches!(before.compensation, 41 | 42) && !facts.has(40) && (has_t || has_d) {
+        // a SINUMERIK changes the offset number in compensation mode, the new radius in
+        // effect from its block (840Di sl Programming Manual Fundamentals, 11/2006, 8.8 tool
+        // radius compensation, "Changing the offset number D"): a D alone is no finding there
+        // (audit 37: `D1 X=XD+unut` under G42 in three held-out programs)
+        let d_changes = self.config.family == Family::Sinumerik && !has_t;
+        if matches!(before.compensation, 41 | 42)
+            && !facts.has(40)
+            && (has_t || has_d)
+            && !d_changes
+        {
             let letter = if has_t { b'T' } else { b'D' };
             let message = format!(
                 "{} word while G{} is active; program G40 first",
@@ -2777,6 +2786,21 @@ mod tests {
         assert_eq!(
             at(iso_mill(), cancelled, Rule::ToolChangeInCompensation),
             []
+        );
+        // a SINUMERIK changes D in compensation mode (a T is still said); elsewhere a D is
+        let d_change = "G41 G01 X1. F100.\nD2 X2.";
+        let sinumerik = of_family(Family::Sinumerik);
+        assert_eq!(
+            at(sinumerik.clone(), d_change, Rule::ToolChangeInCompensation),
+            []
+        );
+        assert_eq!(
+            at(sinumerik, change, Rule::ToolChangeInCompensation),
+            [(3, 1)]
+        );
+        assert_eq!(
+            at(iso_mill(), d_change, Rule::ToolChangeInCompensation),
+            [(3, 1)]
         );
     }
 

@@ -1153,7 +1153,7 @@ mod tests {
             .collect();
         assert_eq!(rules, [(Rule::NotEvaluated, 4, 1)]);
         // a plain number after an extension is another spindle's or axis's too: not the
-        // profile's spindle speed (TG603), not X's start of an arc (TG403), and M1=3 M2=4
+        // profile's spindle speed (TG606), not X's start of an arc (TG403), and M1=3 M2=4
         // are two spindles' codes, not one modal group's (TG304)
         let plain =
             program("G0 X0 Y0 F100\nS2=30000 M3\nX4=100\nG2 X10 Y0 I5 J0\nM1=3 M2=4\nS9000");
@@ -1163,10 +1163,10 @@ mod tests {
             .collect();
         assert_eq!(
             found,
-            [(Rule::NotEvaluated, 3, 1), (Rule::SpeedTooHigh, 7, 1)]
+            [(Rule::NotEvaluated, 3, 1), (Rule::SpeedLimited, 7, 1)]
         );
         let master = program("G0 X0 Y0\n_SPEED=6000\nS=_SPEED*2 M3");
-        assert_eq!(fired(sinumerik(), &master, Rule::SpeedTooHigh), [(4, 1)]);
+        assert_eq!(fired(sinumerik(), &master, Rule::SpeedLimited), [(4, 1)]);
         // elsewhere an index sets a parameter, not the address (ISO 6983-1 6.4.7)
         let iso = program("G0 X0 Y0\nS1=R1+2");
         assert_eq!(fired(of_family(Family::Iso), &iso, Rule::NotEvaluated), []);
