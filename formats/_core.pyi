@@ -69,10 +69,12 @@ class Checker:
     """The core's checker (crates/core/src/check.rs), configured by postproc.check. With a
     ``report`` format (text, json, jsonl) check_lines, check_block and finish write the
     findings as that report prints them through ``write`` (about 64 KiB at a time), count
-    them, and return None; without one they return a list of findings."""
+    them, and return None; without one they return a list of findings. ``fold``: a text
+    report writes each rule's first five warnings and notes of the file, and ``end`` a line
+    for the rest of each (crates/core/src/report.rs, ``Writer::folded``)."""
     def __init__(self, machine: Machine, select: list[str], ignore: list[str],
                  record_path: bool, file: str, make: Callable[[tuple[Any, ...]], Any],
-                 report: str | None = None, stats: bool = True) -> None: ...
+                 report: str | None = None, stats: bool = True, fold: bool = False) -> None: ...
     def enabled(self, rule: str) -> bool: ...
     def check_lines(self, data: str, line: int | None, flags: _Flags,
                     write: Callable[[str], object] | None = None) -> list[Any] | None: ...
@@ -82,6 +84,9 @@ class Checker:
                     write: Callable[[str], object] | None = None) -> list[Any] | None: ...
     def finish(self, write: Callable[[str], object] | None = None) -> list[Any] | None: ...
     def render(self, findings: Iterable[tuple[Any, ...]]) -> str: ...
+    def end(self, write: Callable[[Any], object], raw: bool = False) -> None:
+        """The end of the file's report: a folded text report's line for each rule with
+        findings left out, and what is left of the report, handed to ``write``."""
     def keep_verdicts(self, keep: bool) -> None:
         """False: every rule asked afresh of every word and block, nothing kept by key (the
         tests' oracle for the kept verdicts)."""

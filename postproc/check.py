@@ -163,12 +163,16 @@ class Checker:
     them, by :meth:`report_file` and :meth:`report_stream`, and counted (:attr:`counts`), not
     made into tuples. ``stats=False``: no :attr:`stats` (asking raises ValueError), and the
     moves' extents, lengths and time are not worked out, a cost on every move that only a
-    report of them (``check --stats``) reads; the findings are the same."""
+    report of them (``check --stats``) reads; the findings are the same. ``fold`` (a ``text``
+    report, as ``check`` writes it without ``--all``): of each rule's warnings and notes in
+    the file the first five are written, and at the end of :meth:`report_file` one line for
+    the rest, at the first one left out, with their number and lines; every error is written
+    (the core's ``report::Writer::folded``); the counts are of every finding."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),
                  record_path: bool = False, report: str | None = None,
-                 stats: bool = True) -> None:
+                 stats: bool = True, fold: bool = False) -> None:
         self.profile = profile
         self.file = file
         self.select = tuple(select)
@@ -176,7 +180,7 @@ class Checker:
         self.record_path = record_path
         self.report = report
         self._core = _core.Checker(machine(profile), list(self.select), list(self.ignore),
-                                   record_path, file, make_finding, report, stats)
+                                   record_path, file, make_finding, report, stats, fold)
 
     # -- findings ------------------------------------------------------------------------------
 
@@ -207,7 +211,8 @@ class Checker:
     def report_file(self, path: str, write: Callable[[Any], object], raw: bool = False
                     ) -> None:
         """Check a text file or tape image as :func:`iter_check_file` does, the findings
-        written as :meth:`report_stream` writes them; the tape's findings last. A text file is
+        written as :meth:`report_stream` writes them; the tape's findings last, then a folded
+        report's lines for the findings it left out (``fold``). A text file is
         read, and checked, by the core with the GIL released (``Checker.check_file``: the
         threads of ``check -j`` take it only to hand over the report's slices); a tape image,
         and the text after the last LF where the core leaves it (a last line without its LF,
@@ -231,6 +236,7 @@ class Checker:
                     chain([rest], unread), dialect, file=self.file, errors="collect",
                     first_line=self._core.line), write):
                 pass
+        self._core.end(write, raw)
 
     @property
     def counts(self) -> dict[str, int]:

@@ -33,14 +33,19 @@ from tapegate.options import UsageProblem, profile_option
               show_default=True, help="Exit 1 on findings of this severity or worse.")
 @click.option("--stats", "show_stats", is_flag=True,
               help="Bounding box, path lengths, cycle time, tools.")
+@click.option("--all", "show_all", is_flag=True,
+              help="Text: print every finding. Without it, past the first 5 warnings or "
+              "notes of one rule in a file the rest are one line, at the first left out, "
+              "with their number and lines; errors are always all printed.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=None,
               help="Files checked in parallel (default: the CPU count).")
 def check(files: tuple[str, ...], profile: str | None, units: str | None, fmt: str,
           select: tuple[str, ...], ignore: tuple[str, ...], fail_on: str, show_stats: bool,
-          jobs: int | None) -> None:
+          show_all: bool, jobs: int | None) -> None:
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
-    run_check(files, profile, fmt, select, ignore, fail_on, show_stats, jobs, units=units)
+    run_check(files, profile, fmt, select, ignore, fail_on, show_stats, jobs, units=units,
+              show_all=show_all)
 
 
 @click.command(short_help="Draw the tool path, with the findings marked.")

@@ -48,10 +48,13 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 @user_errors_exiting(2)
 def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
               select: tuple[str, ...], ignore: tuple[str, ...], fail_on: str,
-              show_stats: bool, jobs: int | None, units: str | None = None) -> None:
+              show_stats: bool, jobs: int | None, units: str | None = None,
+              show_all: bool = False) -> None:
     """The body of ``tapegate check``: click's command (:mod:`tapegate.check_cli`) and the
     one-file path that reads its arguments without click (:mod:`tapegate.launch`) both call
-    it, with the same arguments click would pass. Exits (``sys.exit``) with the check's code."""
+    it, with the same arguments click would pass. Exits (``sys.exit``) with the check's code.
+    The text report folds each rule's warnings and notes past the first five of a file into
+    one line (the core's ``report::Writer::folded``) unless ``show_all`` (``--all``)."""
     from postproc import report
 
     given = files
@@ -84,6 +87,7 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
                                         else writer.write)
     items = [(paths[name], shown(name)) for name in files]
     raw = writer.raw  # the core's slices as bytes, for a report written to a binary buffer
+    fold = fmt == "text" and not show_all  # a rule repeated in a file told once past five
     resume_collector()  # (the entry point's start-up without the collector ends here)
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
         from tapegate.workers import file_sizes, ordered_map, send
@@ -91,11 +95,12 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
         # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
         sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
-            lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats, raw),
+            lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats, raw,
+                                    fold),
             items,
             jobs or _default_jobs(), receive=receive, sizes=sizes)
     else:
-        done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats, raw)
+        done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats, raw, fold)
                 for item in items)
     for name, (found, file_stats, error) in zip(files, done, strict=True):
         for severity, n in found.items():
@@ -124,14 +129,17 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
 
 def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str],
                ignore: list[str], send: Callable[[Any], object], show_stats: bool,
-               raw: bool = False) -> tuple[dict[str, int], CheckStats | None, str | None]:
+               raw: bool = False, fold: bool = False
+               ) -> tuple[dict[str, int], CheckStats | None, str | None]:
     """Check one file (path, name as reported), its findings handed to ``send`` as the
     report's ``write`` takes them (text, JSON, JSON Lines: the core's slices) or, for SARIF,
     in lists of findings for the report's ``add``: (the findings by severity, the statistics,
     the message of the error that stopped it). The same for one file and for ``-j``'s
     threads, which hand ``send``'s pieces to the main thread; ``raw``: the core's pieces as
-    bytes (the report's :attr:`~postproc.report.JsonReport.raw`). The statistics are kept only
-    for ``show_stats`` (``--stats``; else None): working them out costs every move."""
+    bytes (the report's :attr:`~postproc.report.JsonReport.raw`); ``fold``: the text report's
+    repeated warnings and notes folded (:class:`postproc.check.Checker`). The statistics are
+    kept only for ``show_stats`` (``--stats``; else None): working them out costs every
+    move."""
     from postproc.check import Checker, iter_check_file
 
     path, name = item
@@ -153,7 +161,7 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
                     send(batch)
         else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
             checker = Checker(prof, name, select=select, ignore=ignore, report=fmt,
-                              stats=show_stats)
+                              stats=show_stats, fold=fold)
             try:
                 checker.report_file(path, send, raw)
             finally:  # what was written before an error is counted too

@@ -46,12 +46,13 @@ CHECK_OPTIONS: dict[str, tuple[str, Kind]] = {
     "--ignore": ("ignore", "many"),
     "--fail-on": ("fail_on", ("error", "warning")),
     "--stats": ("show_stats", "flag"),
+    "--all": ("show_all", "flag"),
     "-j": ("jobs", "positive"),
     "--jobs": ("jobs", "positive"),
 }
 CHECK_DEFAULTS: dict[str, Any] = {
     "profile": None, "units": None, "fmt": "text", "select": (), "ignore": (), "fail_on": "error",
-    "show_stats": False, "jobs": None,
+    "show_stats": False, "show_all": False, "jobs": None,
 }
 ZEROS = ("leading", "trailing", "none")
 CONVERT_OPTIONS: dict[str, tuple[str, Kind]] = {

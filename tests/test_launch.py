@@ -26,6 +26,8 @@ BAD = "%\nN1 G71\nN2 X10. G01 F100.\nN3 G77 X20.\nN4 G02 X20 Y0 K5 F100\nN5 M03 
 GOOD = "%\nN1 G21 G90 G94\nN2 G01 X25.4 Y12.7 F254.\nN3 G02 X30. Y20. I5. J0\nN4 M30\n%\n"
 # a comment outside ASCII and one holding an escape sequence (click strips it from a pipe)
 ODD = "%\nN1 G21 (Fräser \x1b[31mrot\x1b[0m)\nN2 G01 X1. F100.\nN3 M30\n%\n"
+# 12 sequence numbers past haas-mill's N05 (TG208): the text report folds 7 of them
+REPEATED = "%\nO1000\n" + "".join(f"N{100000 + 10 * n} G0 X{n}.\n" for n in range(12)) + "M30\n%\n"
 
 
 @pytest.fixture
@@ -33,6 +35,7 @@ def place(tmp_path: Path) -> Path:
     (tmp_path / "bad.nc").write_text(BAD)
     (tmp_path / "good.nc").write_text(GOOD)
     (tmp_path / "odd.nc").write_text(ODD, encoding="utf-8")
+    (tmp_path / "repeated.nc").write_text(REPEATED)
     (tmp_path / "binary.nc").write_bytes(b"\x00\xff\xfe\x81" * 64)
     (tmp_path / "many").mkdir()
     for n in range(3):
@@ -62,6 +65,10 @@ FORMS: list[tuple[list[str], bool]] = [
     (["check", "good.nc", "-p", "iso-mill", "--fail-on=warning"], True),
     (["check", "bad.nc", "-p", "iso-mill", "--stats"], True),
     (["check", "bad.nc", "-p", "iso-mill", "--stats", "--format", "json"], True),
+    (["check", "bad.nc", "-p", "iso-mill", "--all"], True),
+    (["check", "repeated.nc", "-p", "haas-mill"], True),
+    (["check", "repeated.nc", "-p", "haas-mill", "--all"], True),
+    (["check", "many", "good.nc", "-p", "iso-mill", "--all", "-j", "2"], True),
     (["check", "bad.nc", "-p", "iso-mill", "--select", "TG4", "--ignore=TG401"], True),
     (["check", "bad.nc", "-p", "iso-mill", "--select", "TG1,TG4", "--select", "TG6"], True),
     (["check", "bad.nc", "good.nc", "-p", "iso-mill", "-j", "2"], True),
@@ -80,6 +87,7 @@ FORMS: list[tuple[list[str], bool]] = [
     (["check", "bad.nc", "-p", "iso-mill", "-j", "0"], False),
     (["check", "bad.nc", "-p", "iso-mill", "-j", "+2"], False),
     (["check", "bad.nc", "-p", "iso-mill", "--stats=yes"], False),
+    (["check", "bad.nc", "-p", "iso-mill", "--all=yes"], False),
     (["check", "bad.nc", "-p", "iso-mill", "--bogus"], False),
     (["check", "bad.nc", "-p"], False),
     (["check", "bad.nc", "-p", "--format", "json"], False),
@@ -271,8 +279,8 @@ def test_every_option_read_without_click_is_clicks_own(command: click.Command,
         [], ["-p", "x"], ["-px"], ["--profile", "x"], ["--profile=x"],
         ["-p", "a", "--profile", "b"], ["--format", "sarif"], ["--format=jsonl"],
         ["--select", "TG1", "--select=TG2,TG3"], ["--ignore", "TG4"], ["--fail-on", "warning"],
-        ["--stats"], ["-j", "3"], ["-j3"], ["--jobs", "12"], ["--jobs=1"],
-        ["--stats", "--format", "json", "-p", "q", "-j2"]]),
+        ["--stats"], ["--all"], ["-j", "3"], ["-j3"], ["--jobs", "12"], ["--jobs=1"],
+        ["--stats", "--format", "json", "-p", "q", "-j2"], ["--all", "--stats", "-j1"]]),
     *((convert, ["--to", "t", *o]) for o in [
         [], ["--to=u"], ["-o", "x.nc"], ["-ox.nc"], ["--output", "x.nc"], ["--output=x.nc"],
         ["-o", "good.nc"], ["--out-dir", "out"], ["--out-dir=many"], ["--from", "f"],

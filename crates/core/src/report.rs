@@ -11,6 +11,13 @@
 //!   it from the one before; the report drops it before the document's first;
 //! - JSON Lines: the finding's object on one line, as `json.dumps(finding)` prints it.
 //!
+//! A writer made [`Writer::folded`] (the text report of `tapegate check` without `--all`) folds
+//! a file's repeated findings: of each rule's warnings or notes it writes the first [`SHOWN`],
+//! and at the file's end ([`Writer::end`]) one line for the rest, at the place of the first it
+//! left out: `file:line:column: severity rule N more like this on lines A-B (--all shows
+//! each)`. Errors are all written. A rule's fold is three counts, so the report's memory stays
+//! flat; JSON and JSON Lines, for programs, are never folded.
+//!
 //! Strings are written as `json.dumps` writes them by default (`ensure_ascii`): `"` and `\`
 //! escaped, `\b \f \n \r \t` by their short escapes, every other character outside the
 //! printable ASCII range as `\u` and four lowercase hex digits of its UTF-16 code units (a
@@ -19,7 +26,7 @@
 //! are written as Python writes them.
 
 use crate::check::Finding;
-use crate::rules::Rule;
+use crate::rules::{Rule, Severity};
 
 /// Which report.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -252,6 +259,24 @@ pub fn write(
     }
 }
 
+/// How many warnings or notes of one rule a folded text report ([`Writer::folded`]) writes of
+/// a file, one by one: enough to show what the rule finds, where, and that it repeats (clang's
+/// `-ferror-limit` is 20 in all; this is per rule, so one rule does not hide the others).
+pub const SHOWN: usize = 5;
+
+/// One rule's findings in a file, as a folded report counts them.
+#[derive(Debug, Clone, Copy, Default)]
+struct Folded {
+    /// The findings of the rule so far.
+    seen: usize,
+    /// The line and column of the first not written.
+    line: usize,
+    column: usize,
+    /// The lowest and highest line of those not written.
+    low: usize,
+    high: usize,
+}
+
 /// The report of one file's findings: the file's name and every rule's ID, severity and clause
 /// written once, as the format writes them, and laid out as [`write`] lays them out around a
 /// finding's message, line and column -- a finding is then those pieces, its message and its
@@ -269,6 +294,9 @@ pub struct Writer {
     before_line: Vec<u8>,
     /// The bytes between the line number and the column number.
     between: Vec<u8>,
+    /// A folded report's counts, by [`Rule::index`] ([`Writer::folded`]); empty when every
+    /// finding is written.
+    fold: Vec<Folded>,
 }
 
 impl Writer {
@@ -326,7 +354,18 @@ impl Writer {
             rules,
             before_line,
             between,
+            fold: Vec::new(),
         }
+    }
+
+    /// This writer folding each rule's warnings and notes past the first [`SHOWN`] of the file
+    /// into one line, written by [`Writer::end`]: a text report's (`check` without `--all`);
+    /// a JSON or JSON Lines writer is returned as it is, writing every finding.
+    pub fn folded(mut self) -> Writer {
+        if self.format == Format::Text {
+            self.fold = vec![Folded::default(); Rule::ALL.len()];
+        }
+        self
     }
 
     pub fn format(&self) -> Format {
@@ -338,8 +377,75 @@ impl Writer {
         &self.file
     }
 
-    /// Append `finding` to `out`: the bytes [`write`] appends (a test holds the two equal).
-    pub fn finding(&self, out: &mut Vec<u8>, finding: &Finding) {
+    /// Whether a finding of `rule` at `line` and `column` is written: always, but by a folded
+    /// writer a warning or note past the first [`SHOWN`] of its rule, which is counted for
+    /// [`Writer::end`] instead. Errors are always written: each is a reason the program is
+    /// refused.
+    pub fn shown(&mut self, rule: Rule, line: usize, column: usize) -> bool {
+        let Some(folded) = self.fold.get_mut(rule.index()) else {
+            return true;
+        };
+        if rule.severity() == Severity::Error {
+            return true;
+        }
+        folded.seen += 1;
+        if folded.seen <= SHOWN {
+            return true;
+        }
+        if folded.seen == SHOWN + 1 {
+            (folded.line, folded.column, folded.low, folded.high) = (line, column, line, line);
+        } else {
+            folded.low = folded.low.min(line);
+            folded.high = folded.high.max(line);
+        }
+        false
+    }
+
+    /// The end of the file's findings: for a folded writer, a line for each rule with findings
+    /// not written, in the order of their places (the first one's line and column), appended
+    /// to `out`, and the counts begun again (a finding after this is folded anew).
+    pub fn end(&mut self, out: &mut Vec<u8>) {
+        let mut folds: Vec<(usize, usize, usize)> = (self.fold.iter().enumerate())
+            .filter(|(_, f)| f.seen > SHOWN)
+            .map(|(i, f)| (f.line, f.column, i))
+            .collect();
+        folds.sort_unstable();
+        for (line, column, i) in folds {
+            let Folded {
+                seen, low, high, ..
+            } = self.fold[i];
+            out.extend_from_slice(&self.before_line);
+            number(out, line);
+            out.extend_from_slice(&self.between);
+            number(out, column);
+            out.extend_from_slice(&self.rules[i][0]);
+            let more = seen - SHOWN;
+            number(out, more);
+            out.extend_from_slice(b" more like this on line");
+            if high > low {
+                out.extend_from_slice(b"s ");
+                number(out, low);
+                out.push(b'-');
+                number(out, high);
+            } else {
+                out.push(b' ');
+                number(out, low);
+            }
+            out.extend_from_slice(if more == 1 {
+                b" (--all shows it)\n"
+            } else {
+                b" (--all shows each)\n"
+            });
+        }
+        self.fold.fill(Folded::default());
+    }
+
+    /// Append `finding` to `out`: the bytes [`write`] appends (a test holds the two equal),
+    /// unless a folded writer leaves it out ([`Writer::shown`]).
+    pub fn finding(&mut self, out: &mut Vec<u8>, finding: &Finding) {
+        if !self.fold.is_empty() && !self.shown(finding.rule, finding.line, finding.column) {
+            return;
+        }
         let [head, tail] = &self.rules[finding.rule.index()];
         let numbers = |out: &mut Vec<u8>| {
             out.extend_from_slice(&self.before_line);
@@ -388,7 +494,7 @@ mod tests {
         let messages = ["a plain message", "\"quoted\" \\ tab\t é \u{1f600}", ""];
         for format in [Format::Text, Format::Json, Format::JsonLines] {
             for name in &names {
-                let writer = Writer::new(format, name);
+                let mut writer = Writer::new(format, name);
                 let mut file = Vec::new();
                 format.field_units(&mut file, name);
                 assert_eq!(writer.file(), &file[..]);
@@ -435,6 +541,85 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// A folded text writer writes the first `SHOWN` warnings and notes of each rule and
+    /// every error; at the end, one line a rule for the rest, at the first left out, in the
+    /// order of those places; a JSON writer, or one not folded, writes them all.
+    #[test]
+    fn a_folded_text_writer_writes_five_of_a_rule_and_the_rest_in_one_line() {
+        let file: Vec<u16> = "p.nc".encode_utf16().collect();
+        let finding = |rule, line, column| Finding {
+            rule,
+            message: format!("m{line}"),
+            line,
+            column,
+        };
+        let mut found = Vec::new();
+        for line in 1..=12 {
+            found.push(finding(Rule::PastFormat, line * 10, 1));
+            found.push(finding(Rule::NoFeedRate, line * 10, 4));
+            if line <= 7 {
+                // a note whose seventh comes before the sixth: the range is from the lowest
+                found.push(finding(
+                    Rule::HelicalArc,
+                    if line == 7 { 3 } else { line },
+                    2,
+                ));
+            }
+        }
+        found.push(finding(Rule::SeveralGWords, 5, 1));
+        let write = |mut writer: Writer| {
+            let mut out = Vec::new();
+            for f in &found {
+                writer.finding(&mut out, f);
+            }
+            writer.end(&mut out);
+            String::from_utf8(out).unwrap()
+        };
+        let text = write(Writer::new(Format::Text, &file).folded());
+        let lines: Vec<&str> = text.lines().collect();
+        let of = |id: &str| lines.iter().filter(|l| l.contains(id)).count();
+        assert_eq!(of("warning TG208 m"), SHOWN);
+        assert_eq!(of("info TG406 m"), SHOWN);
+        assert_eq!(of("error TG401 m"), 12, "every error is written");
+        assert_eq!(of("info TG133 m5"), 1);
+        assert_eq!(
+            lines[lines.len() - 2..],
+            [
+                "p.nc:6:2: info TG406 2 more like this on lines 3-6 (--all shows each)",
+                "p.nc:60:1: warning TG208 7 more like this on lines 60-120 (--all shows each)",
+            ]
+        );
+        assert_eq!(lines.len(), SHOWN + SHOWN + 12 + 1 + 2);
+        // the shown ones are the first of each rule, in their order among the others
+        assert!(text.contains("p.nc:50:1: warning TG208 m50 [profile]\np.nc:50:4: error"));
+        assert!(!text.contains("warning TG208 m60"));
+        // one more is said as one
+        let mut writer = Writer::new(Format::Text, &file).folded();
+        let mut out = Vec::new();
+        for line in 1..=SHOWN + 1 {
+            writer.finding(&mut out, &finding(Rule::PastFormat, line, 1));
+        }
+        out.clear();
+        writer.end(&mut out);
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "p.nc:6:1: warning TG208 1 more like this on line 6 (--all shows it)\n"
+        );
+        // the counts begin again after the end: a second end writes nothing
+        let mut out = Vec::new();
+        writer.end(&mut out);
+        assert!(out.is_empty());
+        // not folded, and JSON (folded or not): every finding, nothing at the end
+        let all = write(Writer::new(Format::Text, &file));
+        assert_eq!(all.lines().count(), found.len());
+        for format in [Format::Json, Format::JsonLines] {
+            assert_eq!(
+                write(Writer::new(format, &file).folded()),
+                write(Writer::new(format, &file))
+            );
         }
     }
 

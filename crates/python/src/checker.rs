@@ -7,7 +7,9 @@
 //! checker made with a `report` format, written by the core (`tapegate_core::report`) as the
 //! text, JSON or JSON Lines report prints them, handed to the caller's `write` about 64 KiB at
 //! a time (drained after every line: memory holds a slice, not a chunk's findings), and only
-//! counted.
+//! counted. Made with `fold`, a text report folds each rule's warnings and notes past the
+//! first five of the file into one line, written by `end` (`tapegate_core::report::Writer::
+//! folded`).
 
 use std::sync::Arc;
 
@@ -163,12 +165,12 @@ const SLICE: usize = 1 << 16;
 /// KiB), so it is the arena's memory, used again by the next file.
 const WRITTEN: usize = SLICE + SLICE / 4;
 
-/// The findings `inner` made since the last call written by `writer` at the end of `written`,
-/// and counted: the part of [`Checker::write_found`] that needs no Python (run with the GIL
-/// released).
+/// The findings `inner` made since the last call written by `writer` at the end of `written`
+/// (a folded writer's past the first of their rule only counted by it), and counted: the part
+/// of [`Checker::write_found`] that needs no Python (run with the GIL released).
 fn render(
     inner: &mut check::Checker,
-    writer: &Writer,
+    writer: &mut Writer,
     written: &mut Vec<u8>,
     counts: &mut [usize; 3],
 ) {
@@ -187,7 +189,7 @@ impl Checker {
         write: &Bound<'_, PyAny>,
         flush: bool,
     ) -> PyResult<()> {
-        let Some(writer) = &self.writer else {
+        let Some(writer) = &mut self.writer else {
             return Ok(());
         };
         render(&mut self.inner, writer, &mut self.written, &mut self.counts);
@@ -268,7 +270,8 @@ impl Checker {
 #[pymethods]
 impl Checker {
     #[new]
-    #[pyo3(signature = (machine, select, ignore, record_path, file, make, report=None, stats=true))]
+    #[pyo3(signature = (machine, select, ignore, record_path, file, make, report=None, stats=true,
+                        fold=false))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -280,12 +283,14 @@ impl Checker {
         make: PyObject,
         report: Option<&str>,
         stats: bool,
+        fold: bool,
     ) -> PyResult<Self> {
         let writer = match report {
-            Some(name) => Some(Writer::new(
-                crate::report::format(name)?,
-                &crate::report::units(&file)?,
-            )),
+            Some(name) => {
+                let writer =
+                    Writer::new(crate::report::format(name)?, &crate::report::units(&file)?);
+                Some(if fold { writer.folded() } else { writer })
+            }
             None => None,
         };
         let rules = rule_strings(py);
@@ -315,25 +320,42 @@ impl Checker {
     }
 
     /// `findings` (`Finding` tuples made in Python: a tape's) written as this checker's report
-    /// writes its own, and counted with them.
+    /// writes its own (folded with them), and counted with them.
     fn render<'py>(
         &mut self,
         py: Python<'py>,
         findings: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyString>> {
-        let Some(writer) = &self.writer else {
+        let Some(writer) = &mut self.writer else {
             return Err(PyValueError::new_err(
                 "the checker was made without a report format",
             ));
         };
         let mut out = Vec::new();
         let counts = &mut self.counts;
-        crate::report::append_tuples(writer.format(), &mut out, findings, |severity| {
+        let format = writer.format();
+        crate::report::append_tuples(format, &mut out, findings, |id, severity, line, column| {
             if let Some(i) = severity_index(severity) {
                 counts[i] += 1;
             }
+            Rule::from_id(id).is_none_or(|rule| writer.shown(rule, line, column))
         })?;
-        crate::report::string(py, writer.format(), &out)
+        crate::report::string(py, format, &out)
+    }
+
+    /// The end of the file's report, after its last findings: a folded text report's line for
+    /// each rule with findings it left out (`report::Writer::end`), handed to `write` with
+    /// what is left of the report (a `str`, or with `raw` bytes). Nothing for a report not
+    /// folded, or JSON.
+    #[pyo3(signature = (write, raw=false))]
+    fn end(&mut self, py: Python<'_>, write: &Bound<'_, PyAny>, raw: bool) -> PyResult<()> {
+        let Some(writer) = &mut self.writer else {
+            return Err(PyValueError::new_err(
+                "the checker was made without a report format",
+            ));
+        };
+        writer.end(&mut self.written);
+        self.hand_over(py, write, true, raw)
     }
 
     /// Whether verdicts are kept by key (the default); False asks every rule afresh of every
@@ -389,12 +411,12 @@ impl Checker {
         loop {
             let (inner, written, counts) = (&mut self.inner, &mut self.written, &mut self.counts);
             let last = &mut self.line;
-            let writer = self.writer.as_ref().filter(|_| streamed.is_some());
+            let mut writer = self.writer.as_mut().filter(|_| streamed.is_some());
             let full = py.allow_threads(|| {
                 for (number, text) in lines.by_ref() {
                     *last = number;
                     inner.check_line(text, number, &dialect, &mut tokens);
-                    if let Some(writer) = writer {
+                    if let Some(writer) = writer.as_deref_mut() {
                         render(inner, writer, written, counts);
                         if written.len() >= SLICE {
                             return true;
@@ -446,7 +468,7 @@ impl Checker {
         loop {
             let (inner, written, counts) = (&mut self.inner, &mut self.written, &mut self.counts);
             let last = &mut self.line;
-            let writer = self.writer.as_ref().expect("checked above");
+            let writer = self.writer.as_mut().expect("checked above");
             let slot = &mut file;
             let step = py.allow_threads(|| -> std::io::Result<Step> {
                 if slot.is_none() {

@@ -61,12 +61,13 @@ pub(crate) fn string<'py>(
 }
 
 /// Append `findings`, `postproc.findings.Finding` tuples, to `out` in `format`; each one's
-/// severity is handed to `counted`.
+/// rule ID, severity, line and column are handed to `shown`, and it is written if it answers
+/// true.
 pub(crate) fn append_tuples(
     format: Format,
     out: &mut Vec<u8>,
     findings: &Bound<'_, PyAny>,
-    mut counted: impl FnMut(&str),
+    mut shown: impl FnMut(&str, &str, usize, usize) -> bool,
 ) -> PyResult<()> {
     let mut fields: [Vec<u8>; 5] = Default::default();
     for finding in findings.try_iter()? {
@@ -79,15 +80,22 @@ pub(crate) fn append_tuples(
             slot.clear();
             field(format, slot, &finding.get_item(at)?)?;
         }
-        let severity = finding.get_item(1)?;
-        counted(severity.downcast::<PyString>()?.to_str()?);
+        let (line, column) = (
+            finding.get_item(4)?.extract()?,
+            finding.get_item(5)?.extract()?,
+        );
+        let (id, severity) = (finding.get_item(0)?, finding.get_item(1)?);
+        let (id, severity) = (id.downcast::<PyString>()?, severity.downcast::<PyString>()?);
+        if !shown(id.to_str()?, severity.to_str()?, line, column) {
+            continue;
+        }
         let [rule, severity, file, clause, message] = &fields;
         let row = Fields {
             rule,
             severity,
             file,
-            line: finding.get_item(4)?.extract()?,
-            column: finding.get_item(5)?.extract()?,
+            line,
+            column,
             clause,
         };
         report::write(format, out, &row, |out| out.extend_from_slice(message));
@@ -105,6 +113,6 @@ pub(crate) fn render_findings<'py>(
 ) -> PyResult<Bound<'py, PyString>> {
     let format = self::format(format)?;
     let mut out = Vec::new();
-    append_tuples(format, &mut out, findings, |_| ())?;
+    append_tuples(format, &mut out, findings, |_, _, _, _| true)?;
     string(py, format, &out)
 }
