@@ -204,6 +204,23 @@ def test_a_limit_passed_by_a_program_that_writes_no_units_code_says_so():
     assert inch and "units code" not in inch[0].message
 
 
+def test_the_first_arc_error_after_mixed_decimal_styles_names_the_likely_cause():
+    """Audit 37: ten Grbl-style programs in the FANUC family write `Y10` beside `X10.`; a
+    FANUC reads Y10 as 0.010 mm (TG201 says so once), and the arcs after it gave 530 TG403
+    errors that did not say why. The file's first arc error names TG201's word as the likely
+    cause; the later ones do not repeat it, and an arc error in a program of decimal points
+    alone does not say it."""
+    text = ("%\nO1\nG21 G90 G17\nG00 X10. Y0.\nG01 Z-1. F100.\nG03 X0 Y10 I-10. J0.\n"
+            "G01 X10. Y0.\nG03 X0 Y10 I-10. J0.\nM30\n%\n")
+    arcs = [f for f in findings(text, "fanuc-mill") if f.rule == "TG403"]
+    assert [f.line for f in arcs] == [6, 8]
+    assert "TG201: Y10 on line 6, read as 0.01" in arcs[0].message, arcs[0].message
+    assert "TG201" not in arcs[1].message
+    decimal = text.replace("Y10 ", "Y1. ")
+    arcs = [f for f in findings(decimal, "fanuc-mill") if f.rule == "TG403"]
+    assert arcs and not any("TG201" in f.message for f in arcs)
+
+
 def test_a_sinumerik_changes_d_under_cutter_compensation():
     """Audit 37: `D1 X=XD+unut` under G42 in three held-out SINUMERIK programs was TG502. The
     840Di sl Programming Manual Fundamentals (8.8, "Changing the offset number D") says the

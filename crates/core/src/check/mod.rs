@@ -735,6 +735,9 @@ pub struct Checker {
     styles_explicit: bool,
     styles_implicit: bool,
     mixed_reported: bool,
+    /// The first arc error (TG403, TG405) after TG201 said that whole numbers without a point
+    /// are read in least increments names that as a likely cause, once per file.
+    arc_cause_said: bool,
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
@@ -1052,6 +1055,7 @@ impl Checker {
             styles_explicit: false,
             styles_implicit: false,
             mixed_reported: false,
+            arc_cause_said: false,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),

@@ -901,6 +901,27 @@ impl Checker {
         self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
+    /// What the file's first arc error adds where TG201 said the program mixes whole numbers
+    /// without a point, which this control reads in least increments, with decimal points: a
+    /// likely cause (audit 37: ten Grbl-style programs' `X67`, read as 0.067 on a FANUC, gave
+    /// 530 TG403 errors that did not say why). Empty otherwise, and after the first.
+    #[cold]
+    fn arc_cause(&mut self) -> String {
+        let Some(first) = self.first_implicit.as_ref().filter(|f| f.increments) else {
+            return String::new();
+        };
+        if !self.mixed_reported || self.arc_cause_said {
+            return String::new();
+        }
+        self.arc_cause_said = true;
+        format!(
+            "; the program mixes whole numbers without a decimal point with decimal ones \
+             (TG201: {} on line {}, read as {}): if its post meant them as whole millimetres \
+             or inches, the arc's points are not where it meant them",
+            first.token, first.line, first.reading
+        )
+    }
+
     #[allow(clippy::too_many_arguments)]
     pub(super) fn arc_geometry(
         &mut self,
@@ -920,7 +941,10 @@ impl Checker {
         // LinuxCNC's threshold: a radius under 0.00127 mm (0.00005 in) is no radius
         let zero = 0.00127 * scale;
         if r1 < zero || r2 < zero {
-            let message = "arc of zero radius (the centre is on the start or end point)".into();
+            let message = format!(
+                "arc of zero radius (the centre is on the start or end point){}",
+                self.arc_cause()
+            );
             self.report(Rule::ArcZeroRadius, message, line, column);
             return;
         }
@@ -928,8 +952,9 @@ impl Checker {
         if (r1 - r2).abs() > tolerance {
             let message = format!(
                 "start radius {r1:.4} and end radius {r2:.4} differ by {:.4} (tolerance \
-                 {tolerance:.4})",
-                (r1 - r2).abs()
+                 {tolerance:.4}){}",
+                (r1 - r2).abs(),
+                self.arc_cause()
             );
             self.report(Rule::ArcRadiusMismatch, message, line, column);
         } else if self.config.ijk == Ijk::Quadrant
