@@ -602,8 +602,14 @@ impl Checker {
         // condition or loop of the body returns early and closes nothing, one of another
         // label outside them is the file's return if nothing but M2/M30 follows (TG138)
         let inside = self.sub_file == SubFile::Open && !self.linuxcnc_definition_flow.is_empty();
+        // (the endsub of a definition nested in the body, `o1000 sub` ... `o1000 endsub`, is
+        // left as it was: rs274 2.9 runs such a body inline when called and returns at its
+        // endsub, master refuses it, "Nested subroutine definition")
+        let nested = |name: &[u8]| self.linuxcnc_bodies.iter().any(|e| e.0 == name);
         let definition = match statement {
-            Some((false, name)) if self.sub_file == SubFile::Open && name != self.sub_label => {
+            Some((false, name))
+                if self.sub_file == SubFile::Open && name != self.sub_label && !nested(&name) =>
+            {
                 self.endsub_named_otherwise(b, &name);
                 self.sub_returns.2 = if inside { 0 } else { b.line };
                 None
@@ -1462,12 +1468,19 @@ impl Checker {
         }
         if let Some((at, column, name)) = self.open_definition.take().filter(|_| !sub_return) {
             let name = String::from_utf8_lossy(&name);
-            let message = format!(
+            let mut message = format!(
                 "{name} sub is not closed by {name} endsub: rs274 reads the rest of the file, \
                  its M2/M30 and closing % included, as the definition, so the program never \
                  ends (rs274: 'File ended with no percent sign or program end', or 'Failed to \
                  find sub ... before EOF' where a % closes the file)"
             );
+            if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
+                message.push_str(&format!(
+                    "; the endsub on line {} stands inside an o-word condition or loop still \
+                     open (an early return when called), and none closes the body after it",
+                    self.sub_returns.0
+                ));
+            }
             self.report(Rule::NoProgramEnd, message, at, column);
         } else if self.ended_line == 0 && self.sub_ended || sub_return {
             // a subprogram or macro: it returns to its caller, no M02/M30 needed (a LinuxCNC
@@ -2555,6 +2568,17 @@ mod tests {
         assert_eq!(
             rules(program),
             [(Rule::EndsubNamedOtherwise, 3), (Rule::NoProgramEnd, 1)]
+        );
+        // the endsub of a definition nested in the body is no TG138 (left as it was)
+        let nested = "o<ns> sub\no1000 sub\nG0 Y2\no1000 endsub\no1000 call\no<ns> endsub\n";
+        assert_eq!(rules(nested), []);
+        // an endsub inside a condition never closed: the body never ends, said at the sub
+        let open = "o<tc> sub\no103 if [#5399 LT 0]\nG0 X1\no<tc> endsub [1]\nM2\n";
+        assert_eq!(rules(open), [(Rule::NoProgramEnd, 1)]);
+        let message = &findings(linuxcnc(), open, Rule::NoProgramEnd)[0].message;
+        assert!(
+            message.contains("the endsub on line 4 stands inside"),
+            "{message}"
         );
         // 3. lines before the sub: never run when called (TG117 at the first), no TG114
         let before = "(a library sub)\n#<_t3> = 0\nO<t3> SUB\n#<_t3> = [#1 + 1]\nO<t3> ENDSUB\n";
