@@ -124,6 +124,9 @@ _example("TG136",
          "%\nO1\nG21 G90\nG00 X1. (VNMG 332(1))\nM30\n%\n",
          "%\nO1\nG21 G90\nG00 X1. (VNMG 332-1)\nM30\n%\n",
          "fanuc-mill")
+# a LinuxCNC subroutine file whose endsub names another label: called, rs274 returns there
+_example("TG138", "o<t-4> sub\nG0 X3\no<t_4> endsub\n", "o<t-4> sub\nG0 X3\no<t-4> endsub\n",
+         "linuxcnc")
 _example("TG128",
          "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
          "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",
@@ -354,7 +357,12 @@ SOURCES = {
              "(o<name> sub ... o<name> endsub, optionally M2: LinuxCNC O codes, \"Calling "
              "Files\"). A LinuxCNC o<name> sub never closed by its endsub holds the rest of "
              "the file, its M2 too: said at the sub (rs274 2.9: \"File ended with no percent "
-             "sign or program end\").",
+             "sign or program end\"). A subroutine file is read as a call runs it (rs274 -i "
+             "with SUBROUTINE_PATH, issue 32, audit 37): an endsub inside a condition or loop "
+             "of its body returns and does not end the definition, an endsub of another label "
+             "returns too (TG138, a warning; interp_read.cc read_o compares the label only "
+             "while it skips a definition), and lines before its sub are skipped by the call "
+             "(TG117; interp_o_word.cc control_back_to): none of these is a TG114.",
     "TG123": "ISO 6983-1 clause 4 (the block skip character before the sequence number). "
              "LinuxCNC's rs274 refuses a '/' anywhere but at the start of the line (\"Bad "
              "character '/' used\"); SINUMERIK writes the skip levels /0-/9 in front of the "
@@ -640,8 +648,8 @@ SOURCES = {
              "(no motion mode at the start and after G80). The other families keep G00/G01 from "
              "reset and through G80, and the rule does not fire there.",
     "TG412": "LinuxCNC only: each case is the message of LinuxCNC 2.9's rs274 (interp_cycles.cc, "
-             "interp_check.cc, interp_convert.cc; rs274ngc_return.hh), quoted in the rule's "
-             "finding.",
+             "interp_check.cc, interp_convert.cc, interp_o_word.cc; rs274ngc_return.hh), "
+             "quoted in the rule's finding.",
     "TG502": "ISO 6983-1 clause 10. LinuxCNC: rs274 \"Cannot change tools with cutter radius "
              "compensation on\" at M6; a T word alone only selects the next tool there and rs274 "
              "takes it (no alarm source for a bare T: reported). Haas: a new D under "

@@ -394,11 +394,63 @@ def test_a_linuxcnc_subroutine_file_needs_no_m2(after):
 
 @pytest.mark.parametrize("text", [
     SUB_FILE + "o<z_touch> call\n",           # a program that calls it: ends with M2
-    "G0 X0\n" + SUB_FILE,                     # words before the definition
+    "G0 X0\no<b> call\n" + SUB_FILE,          # a call before the definition
     "o<a> sub\nG0 X1\no<a> endsub\no<b> sub\nG0 X2\no<b> endsub\n",  # two definitions
 ])
 def test_a_file_that_is_more_than_one_subroutine_still_needs_m2(text):
     assert "TG114" in [rule for rule, _ in errors(text, "linuxcnc")]
+
+
+# Issue 32, audit 37 I: a subroutine file read as `o<name> call` runs it (rs274 -i with a
+# SUBROUTINE_PATH): (1) an endsub inside a condition of the body is an early return, (2) an
+# endsub of another label returns too, (3) the lines before the sub are skipped by the call.
+CALLED = {
+    "early": ("o<t2> sub\n#<r> = 5\no100 if [#1 EQ 1]\n  o<t2> endsub [1]\no100 endif\n"
+              "G0 X#<r>\no<t2> endsub [2]\n",
+              "o<t2> call [0]\nG0 X0\no<t2> call [1]\nG0 Y1\nM2\n",
+              [], [(5, 0), (0, 0), (0, 1)]),
+    "other": ("o<t-4> sub\nG0 X3\no<t_4> endsub\n\nm2\n",
+              "o<t-4> call\nG0 X0\nM2\n",
+              [("TG138", "warning", 3)], [(3, 0), (0, 0)]),
+    "before": ("(a library sub)\n#<_t3> = 0\nG0 Z9\nO<t3> SUB\n#<_t3> = [#1 + 1]\nO<t3> ENDSUB\n",
+               "o<t3> call [4]\nG0 X#<_t3>\nM2\n",
+               [("TG117", "warning", 2)], [(5, 0)]),
+}
+
+
+@pytest.mark.parametrize("form", CALLED)
+def test_a_linuxcnc_subroutine_file_is_checked_as_a_call_runs_it(form, tmp_path):
+    """tapegate's findings on the subroutine file, beside what rs274 does when a caller
+    calls it (where rs274 is installed): it runs without an error, and its moves are these."""
+    import re
+    import shutil
+    import subprocess
+
+    from .conftest import rs274_env
+
+    sub, caller, expected, moves = CALLED[form]
+    assert [f for f in found(sub, "linuxcnc") if f[1] != "info"] == expected
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+    name = re.search(r"o<([^>]+)>", sub, re.IGNORECASE)[1]  # type: ignore[index]
+    subs = tmp_path / "subs"
+    subs.mkdir()
+    (subs / f"{name}.ngc").write_text(sub)
+    (tmp_path / "caller.ngc").write_text(caller)
+    (tmp_path / "t.ini").write_text(f"[RS274NGC]\nSUBROUTINE_PATH = {subs}\n"
+                                     f"PARAMETER_FILE = {tmp_path / 'rs274.var'}\n")
+    (tmp_path / "rs274.var").write_text("")
+    run = subprocess.run(["rs274", "-i", str(tmp_path / "t.ini"), "-g",
+                          str(tmp_path / "caller.ngc")], capture_output=True, text=True,
+                         timeout=30, input="", env=rs274_env(), cwd=tmp_path)
+    out = run.stdout + run.stderr
+    assert "PROGRAM_END()" in out, out
+    traverses = [tuple(round(float(v)) for v in m.groups()) for m in
+                 re.finditer(r"STRAIGHT_TRAVERSE\(([-\d.]+), ([-\d.]+), ([-\d.]+)", out)]
+    assert [(x, y) for x, y, _ in traverses] == moves, out
+    if form == "before":
+        # the G0 Z9 before the sub never ran
+        assert all(z == 0 for _, _, z in traverses), out
 
 
 # -- the feed a subprogram starts with --------------------------------------------------------
@@ -863,9 +915,13 @@ def test_a_return_the_block_skip_passes_over_keeps_the_main_program_s_findings()
 
 
 def test_an_endsub_naming_another_subroutine_does_not_close_the_file_s_definition():
-    """rs274 reads `o<j> sub` ... `o<k> endsub` as a definition never closed: the file is no
-    subroutine file, and it never ends: TG114, said at the definition left open."""
-    assert ("TG114", 1) in errors("o<j> sub\nG1 X1 F100\no<k> endsub\n", "linuxcnc")
+    """rs274 reads `o<j> sub` ... `o<k> endsub` as a definition never closed where it reads the
+    file from its top, as a program: TG114, said at the definition left open. A subroutine file
+    that a call runs returns at it (issue 32, audit 37 I, 2): a warning, TG138, no TG114."""
+    assert ("TG114", 1) in errors("o<j> sub\nG1 X1 F100\no<k> endsub\no<j> call\nM2\n",
+                                  "linuxcnc")
+    sub_file = found("o<j> sub\nG1 X1 F100\no<k> endsub\n", "linuxcnc")
+    assert [f for f in sub_file if f[1] != "info"] == [("TG138", "warning", 3)]
     assert not errors("o<j> sub\nG1 X1 F100\nO<J> endsub\n", "linuxcnc")
 
 

@@ -484,11 +484,13 @@ def test_linuxcnc_a_read_only_parameter_chosen_by_an_expression(tmp_path, body, 
 @pytest.mark.parametrize("body, line, column", [
     ("o<a> sub\nG0 X1\nM2\n", 1, 1),
     ("G0 X0\n  o<a> sub\nG1 X1 F100\nM2\n", 2, 3),
-    ("o<a> sub\nG0 X1\no<b> endsub\nM2\n", 1, 1),
+    ("o<a> sub\nG0 X1\no<b> endsub\no<a> call\nM2\n", 1, 1),
 ])
 def test_linuxcnc_a_definition_never_closed_swallows_the_end(tmp_path, body, line, column):
     """rs274 reads everything after an ``o<a> sub`` without its ``o<a> endsub`` as the
-    definition, the M2 too: the program never ends, said at the sub (TG114)."""
+    definition, the M2 too: the program never ends, said at the sub (TG114). (A file of only
+    ``o<a> sub`` ... ``o<b> endsub`` and M2 is a subroutine file, which a call runs and leaves
+    at that endsub: TG138, tests/test_dialect_classes.py.)"""
     assert rs274_refuses(tmp_path, body) == "File ended with no percent sign or program end"
     found = [f for f in findings(body, "linuxcnc") if f.rule == "TG114"]
     assert [(f.line, f.column, f.severity) for f in found] == [(line, column, "error")]

@@ -897,6 +897,14 @@ pub struct Checker {
     sub_file: SubFile,
     /// The label of the definition a LinuxCNC subroutine file opened (`o<name>`).
     sub_label: Vec<u8>,
+    /// LinuxCNC: lines before the file's first statement, which is an `o<name> sub`: the
+    /// first such line and the sub's (0, 0: none). A call skips them ([`SubFile`]).
+    sub_preamble: (usize, usize),
+    /// LinuxCNC: in a subroutine file, the line and column of the first endsub inside a
+    /// condition or loop of the body (a return when called), and the line of an endsub naming
+    /// another label outside them with nothing but M2/M30 after it (the return that ends the
+    /// file); 0: none.
+    sub_returns: (usize, usize, usize),
     /// LinuxCNC: the definition open at this point of the file (`o<name> sub` not yet closed
     /// by its endsub): its line, column and label.
     open_definition: Option<(usize, usize, Vec<u8>)>,
@@ -1113,6 +1121,8 @@ impl Checker {
             sub_ended: false,
             sub_file: SubFile::Unknown,
             sub_label: Vec::new(),
+            sub_preamble: (0, 0),
+            sub_returns: (0, 0, 0),
             open_definition: None,
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),

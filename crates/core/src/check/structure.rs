@@ -574,11 +574,53 @@ impl Checker {
             self.linuxcnc_end_depth = None;
         }
         if self.sub_file == SubFile::No {
-            return;
+            // lines before the file's first statement, and that an `o<name> sub` (issue 32,
+            // audit 37 I, 3): a subroutine file all the same, whose lines before the sub a
+            // call never runs (rs274ngc `control_back_to` skips to the sub; TG117 said at the
+            // file's end, where it is still one)
+            match statement {
+                Some((true, _))
+                    if self.sub_preamble.0 != 0
+                        && self.sub_preamble.1 == 0
+                        && self.ended_line == 0 =>
+                {
+                    self.sub_preamble.1 = b.line;
+                    self.sub_file = SubFile::Unknown;
+                }
+                _ => {
+                    if !b.statements.is_empty() {
+                        self.sub_preamble = (0, 0);
+                    }
+                    return;
+                }
+            }
         }
         // an endsub closes the definition only if it names it (rs274 reads `o<j> sub` ...
-        // `o<k> endsub` as a definition never closed)
+        // `o<k> endsub` as a definition never closed); in a subroutine file, called, rs274
+        // returns at any endsub it runs, whatever its label (interp_read.cc `read_o` compares
+        // the label only while it skips; issue 32, audit 37 I, 1 and 2): one inside a
+        // condition or loop of the body returns early and closes nothing, one of another
+        // label outside them is the file's return if nothing but M2/M30 follows (TG138)
+        let inside = self.sub_file == SubFile::Open && !self.linuxcnc_definition_flow.is_empty();
+        // (the endsub of a definition nested in the body, `o1000 sub` ... `o1000 endsub`, is
+        // left as it was: rs274 2.9 runs such a body inline when called and returns at its
+        // endsub, master refuses it, "Nested subroutine definition")
+        let nested = |name: &[u8]| self.linuxcnc_bodies.iter().any(|e| e.0 == name);
         let definition = match statement {
+            Some((false, name))
+                if self.sub_file == SubFile::Open && name != self.sub_label && !nested(&name) =>
+            {
+                self.endsub_named_otherwise(b, &name);
+                self.sub_returns.2 = if inside { 0 } else { b.line };
+                None
+            }
+            Some((false, _)) if inside => {
+                if self.sub_returns.0 == 0 {
+                    self.sub_returns.0 = b.line;
+                    self.sub_returns.1 = b.statements.first().map_or(1, |s| s.0);
+                }
+                None
+            }
             Some((false, name)) if name != self.sub_label => None,
             Some((opens, name)) => {
                 if opens && self.sub_file == SubFile::Unknown {
@@ -599,6 +641,11 @@ impl Checker {
                         Some(2 | 30)
                     )
             });
+        // (the return that ends the file: nothing after it but M2/M30)
+        if !program_end && self.sub_returns.2 != b.line {
+            self.sub_returns.2 = 0;
+        }
+        let before = self.sub_file;
         self.sub_file = match (self.sub_file, definition) {
             (SubFile::Unknown, Some(true)) => SubFile::Open,
             (SubFile::Open, Some(false)) => SubFile::Closed,
@@ -607,6 +654,48 @@ impl Checker {
             _ => SubFile::No,
         };
         self.sub_ended = self.sub_file == SubFile::Closed;
+        if self.sub_file == SubFile::No {
+            if before == SubFile::Unknown && b.statements.is_empty() {
+                self.sub_preamble = (b.line, 0);
+            }
+            if self.sub_returns.0 != 0 {
+                self.early_endsub_in_program();
+            }
+        }
+    }
+
+    /// TG138: an endsub of a LinuxCNC subroutine file that names another label than its sub.
+    fn endsub_named_otherwise(&mut self, b: &BlockView<'_>, name: &[u8]) {
+        let (sub, end) = (
+            String::from_utf8_lossy(&self.sub_label),
+            String::from_utf8_lossy(name),
+        );
+        let message = format!(
+            "{end} endsub names another label than the file's {sub} sub: called, rs274 returns \
+             here all the same (it compares an endsub's label only while it skips a \
+             definition, interp_read.cc read_o), while a program that defines {sub} reads on \
+             past it to {sub} endsub; name it {sub}"
+        );
+        let column = b.statements.first().map_or(1, |s| s.0);
+        self.report(Rule::EndsubNamedOtherwise, message, b.line, column);
+    }
+
+    /// TG412: the file opened as a subroutine file, taking an endsub inside a condition or
+    /// loop of its body as a return, and is a program after all (its lines go on past the
+    /// definition): rs274, reading the file from its top, ends the definition at the first
+    /// endsub of its label and refuses the o-word line that closes the condition or loop
+    /// after it (`o<t> sub` / `o100 if [#1 EQ 1]` / `o<t> endsub [1]` / `o100 endif` ...:
+    /// "undefined O-word label: 'o100 endif'").
+    fn early_endsub_in_program(&mut self) {
+        let (line, column) = (self.sub_returns.0, self.sub_returns.1);
+        self.sub_returns.0 = 0;
+        let message = "undefined O-word label (rs274ngc): this endsub inside a condition or \
+                       loop ends the definition where the file runs as a program (rs274 reads \
+                       a definition to the first endsub of its label), and the o-word line \
+                       that closes the condition or loop after it has no label open; only a \
+                       subroutine file, which a call runs from its sub, returns here"
+            .to_string();
+        self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
     /// TG412: LinuxCNC's main program reaches the definition of a subroutine it has called
@@ -978,7 +1067,7 @@ impl Checker {
                 self.linuxcnc_definition_mode_unsure = true;
                 self.linuxcnc_definition_flow.clear();
             }
-            (Some((false, name)), Some((_, _, open))) if name == open => {
+            (Some((false, name)), Some((_, _, open))) if self.definition_closes(name, open) => {
                 if let Some(mode) = self.linuxcnc_definition_feed.take() {
                     self.machine.state.feed_mode = mode;
                 }
@@ -1226,11 +1315,19 @@ impl Checker {
                 let column = b.statements.first().map_or(1, |s| s.0);
                 self.open_definition = Some((b.line, column, name.clone()));
             }
-            (Some((false, name)), Some((_, _, open))) if name == open => {
+            (Some((false, name)), Some((_, _, open))) if self.definition_closes(name, open) => {
                 self.open_definition = None;
             }
             _ => {}
         }
+    }
+
+    /// Whether an endsub naming `name` closes the open definition labelled `open`: one of its
+    /// label, but in a subroutine file not one inside a condition or loop of the body, which
+    /// returns when the file is called (a remap body's early `o<name> endsub [1]`) and leaves
+    /// the body's lines after it its own ([`Checker::subroutine_file_body`]).
+    fn definition_closes(&self, name: &[u8], open: &[u8]) -> bool {
+        name == open && (self.sub_file != SubFile::Open || self.linuxcnc_definition_flow.is_empty())
     }
 
     /// Text outside ASCII in a comment, a string or a LinuxCNC name (TG127, once per file):
@@ -1370,17 +1467,38 @@ impl Checker {
         let line = self.last_line.max(1);
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
-        if let Some((at, column, name)) = self.open_definition.take() {
-            let name = String::from_utf8_lossy(&name);
+        // LinuxCNC: a subroutine file with lines before its sub, which a call skips
+        let sub_return = self.sub_file == SubFile::Open && self.sub_returns.2 != 0;
+        if self.sub_preamble.1 != 0 && (self.sub_file == SubFile::Closed || sub_return) {
+            let (first, sub) = self.sub_preamble;
+            let label = String::from_utf8_lossy(&self.sub_label);
             let message = format!(
+                "line {first} and the lines after it before the {label} sub on line {sub} \
+                 never run when the file is called: {label} call opens it and skips to its \
+                 sub (rs274ngc control_back_to; read_items reads only O-word lines while it \
+                 skips), so what they set is not set (run on its own, the file has no M2)"
+            );
+            self.report(Rule::NotRead, message, first, 1);
+        }
+        if let Some((at, column, name)) = self.open_definition.take().filter(|_| !sub_return) {
+            let name = String::from_utf8_lossy(&name);
+            let mut message = format!(
                 "{name} sub is not closed by {name} endsub: rs274 reads the rest of the file, \
                  its M2/M30 and closing % included, as the definition, so the program never \
                  ends (rs274: 'File ended with no percent sign or program end', or 'Failed to \
                  find sub ... before EOF' where a % closes the file)"
             );
+            if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
+                message.push_str(&format!(
+                    "; the endsub on line {} stands inside an o-word condition or loop still \
+                     open (an early return when called), and none closes the body after it",
+                    self.sub_returns.0
+                ));
+            }
             self.report(Rule::NoProgramEnd, message, at, column);
-        } else if self.ended_line == 0 && self.sub_ended {
-            // a subprogram or macro: it returns to its caller, no M02/M30 needed
+        } else if self.ended_line == 0 && self.sub_ended || sub_return {
+            // a subprogram or macro: it returns to its caller, no M02/M30 needed (a LinuxCNC
+            // subroutine file returning at an endsub of another label: TG138 there)
         } else if self.empty_folder || self.offsets_section {
             // a memory backup's last folder marker with no program after it (the Robodrill
             // ALL-FLDR punch-out's `&F=/USER/PATH2/` before the closing %), or a Haas's saved
@@ -2415,6 +2533,83 @@ mod tests {
     }
 
     #[test]
+    fn a_linuxcnc_subroutine_file_is_read_as_a_call_runs_it() {
+        // issue 32, audit 37 I: rs274 -i (SUBROUTINE_PATH) runs `o<t> call` from the file
+        // from its sub: an endsub in a condition returns early, one of another label returns,
+        // the lines before the sub are skipped
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let rules = |text: &str| -> Vec<(Rule, usize)> {
+            check(linuxcnc(), text)
+                .iter()
+                .filter(|f| {
+                    !matches!(
+                        f.rule,
+                        Rule::NotFollowed | Rule::NotEvaluated | Rule::NoProgramStart
+                    )
+                })
+                .map(|f| (f.rule, f.line))
+                .collect()
+        };
+        // 1. the local set before the early return is still the body's after it
+        let early = "o<t> sub\n#<r> = 5\no100 if [#1 EQ 1]\n  o<t> endsub [1]\no100 endif\n\
+                     G0 X#<r>\no<t> endsub [2]\n";
+        assert_eq!(rules(early), []);
+        let looped = early
+            .replace("if [#1 EQ 1]", "while [#1 LT 3]")
+            .replace("endif", "endwhile");
+        assert_eq!(rules(&looped), []);
+        // the same file run as a program (it calls the sub after it): rs274 ends the
+        // definition at the first endsub and refuses `o100 endif`
+        assert_eq!(
+            fired(
+                linuxcnc(),
+                &format!("{early}o<t> call [0]\nM2\n"),
+                Rule::LinuxCncRefuses
+            ),
+            [(4, 3)]
+        );
+        // no condition open: the first endsub closes it, and the file goes on as a program
+        let plain = "o<t> sub\n#<r> = 5\no<t> endsub\nG0 X#<r>\no<t> endsub\n";
+        assert!(rules(plain).contains(&(Rule::LinuxCncRefuses, 4)));
+        // 2. an endsub of another label: a warning, no TG114; M2 after it too
+        let other = "o<t-4> sub\nG0 X3\no<t_4> endsub\n\nm2\n";
+        assert_eq!(rules(other), [(Rule::EndsubNamedOtherwise, 3)]);
+        // in a condition it is a return as well, and the definition runs on to its endsub
+        let inside = "o<mi> sub\no1 if [#1 GT 0]\no<x> endsub\no1 endif\nG0 Z7\no<mi> endsub\n";
+        assert_eq!(rules(inside), [(Rule::EndsubNamedOtherwise, 3)]);
+        // a program after it: the definition stays open, as rs274 reads it from the top
+        let program = "o<j> sub\nG1 X1 F100\no<k> endsub\no<j> call\nM2\n";
+        assert_eq!(
+            rules(program),
+            [(Rule::EndsubNamedOtherwise, 3), (Rule::NoProgramEnd, 1)]
+        );
+        // the endsub of a definition nested in the body is no TG138 (left as it was)
+        let nested = "o<ns> sub\no1000 sub\nG0 Y2\no1000 endsub\no1000 call\no<ns> endsub\n";
+        assert_eq!(rules(nested), []);
+        // an endsub inside a condition never closed: the body never ends, said at the sub
+        let open = "o<tc> sub\no103 if [#5399 LT 0]\nG0 X1\no<tc> endsub [1]\nM2\n";
+        assert_eq!(rules(open), [(Rule::NoProgramEnd, 1)]);
+        let message = &findings(linuxcnc(), open, Rule::NoProgramEnd)[0].message;
+        assert!(
+            message.contains("the endsub on line 4 stands inside"),
+            "{message}"
+        );
+        // 3. lines before the sub: never run when called (TG117 at the first), no TG114
+        let before = "(a library sub)\n#<_t3> = 0\nO<t3> SUB\n#<_t3> = [#1 + 1]\nO<t3> ENDSUB\n";
+        assert_eq!(rules(before), [(Rule::NotRead, 2)]);
+        let message = &findings(linuxcnc(), before, Rule::NotRead)[0].message;
+        assert!(message.starts_with("line 2 and the lines after it before the o<t3> sub on line 3"));
+        // ... but a file that goes on after the endsub, or calls before the sub, is a program
+        assert_eq!(
+            rules(&format!("{before}G0 X1\n")),
+            [(Rule::NoProgramEnd, 6)]
+        );
+        let called = "#<_t3> = 0\no<u> call\nO<t3> SUB\nG0 X1\nO<t3> ENDSUB\n";
+        assert!(rules(called).contains(&(Rule::NoProgramEnd, 5)));
+        assert!(!rules(called).iter().any(|f| f.0 == Rule::NotRead));
+    }
+
+    #[test]
     fn a_byte_order_mark_is_said_as_what_it_is() {
         let bom = "\u{feff}G21 G90\n(25\u{b0}C)\nG0 X1\nM2\n";
         // LinuxCNC refuses it (rs274 -g: "Bad character '\\357' used")
@@ -2471,8 +2666,10 @@ mod tests {
         // anything else after the endsub is a program, which ends with M2
         assert_eq!(run(&format!("{sub}o<z_touch> call\n")), [(5, 1)]);
         assert_eq!(run(&format!("{sub}G0 X0\n")), [(5, 1)]);
-        // and so is a program that does not start with the definition
-        assert_eq!(run(&format!("G0 X0\n{sub}")), [(5, 1)]);
+        // lines before the definition: a call skips them (TG117), no M2 needed (issue 32,
+        // audit 37 I, 3); a statement before it (a call) makes it a program
+        assert_eq!(run(&format!("G0 X0\n{sub}")), []);
+        assert_eq!(run(&format!("G0 X0\no<b> call\n{sub}")), [(6, 1)]);
         // an unclosed definition is no subroutine file, and holds the rest of the file: its
         // M2 too, as rs274 2.9 reads it ("File ended with no percent sign or program end"),
         // said at the sub
@@ -2480,8 +2677,11 @@ mod tests {
         assert_eq!(run("o<a> sub\nG0 X1\nM2\n"), [(1, 1)]);
         assert_eq!(run("%\no<a> sub\nG0 X1\nM2\n%\n"), [(2, 1)]);
         assert_eq!(run("G0 X0\n  O<A> SUB\nG1 X1 F100\nM2\n"), [(2, 3)]);
-        // an endsub that names another definition closes nothing
-        assert_eq!(run("o<a> sub\nG0 X1\no<b> endsub\nM2\n"), [(1, 1)]);
+        // an endsub that names another definition closes nothing where rs274 reads the file
+        // as a program; in a subroutine file, called, it returns (TG138: issue 32, audit 37
+        // I, 2)
+        assert_eq!(run("o<a> sub\nG0 X1\no<b> endsub\nM2\n"), []);
+        assert_eq!(run("o<a> sub\nG0 X1\no<b> endsub\nG0 X2\nM2\n"), [(1, 1)]);
         // closed, then the main program and its M2: a program like any other
         assert_eq!(run("o<a> sub\nG0 X1\no<a> endsub\no<a> call\nM2\n"), []);
         let found = findings(
