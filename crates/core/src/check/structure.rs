@@ -33,7 +33,7 @@ fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
         .map(|at| from + at)
 }
 
-use crate::tokenizer::{equal_bytes, name_key};
+use crate::tokenizer::{equal_bytes, name_key, HotName};
 /// The words of a block walked by [`walk_expression`] (a word after them is read by each
 /// rule's own walk), and what one walk finds: the tokenizer's ([`crate::tokenizer::WALKED`],
 /// [`ExpressionWalk`]), which writes the same walk of a plain line's bracketed words as it
@@ -280,6 +280,10 @@ impl Checker {
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_short_seen = [0; 8];
         self.linuxcnc_seen_hot = [0; 2];
+        // (and the tokenizer's, which are made of them; a line it read with them is read
+        // again as if it had none)
+        self.line_walks.hot = [HotName::NONE; 2];
+        self.line_walks.all_hot = false;
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
@@ -1138,6 +1142,13 @@ impl Checker {
     /// asserts it). False where one is not: the full reading decides.
     #[inline(always)]
     fn linuxcnc_names_all_seen(&mut self, b: &BlockView<'_>) -> bool {
+        // (every name of the line read by the tokenizer as one of the hot names, each a name
+        // seen: `LineWalks::hot` is made of `linuxcnc_seen_hot` alone. A debug build looks
+        // them up as well, and asserts they are found)
+        let all_hot = self.line_walks.all_hot;
+        if all_hot && !cfg!(debug_assertions) {
+            return true;
+        }
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;
         let short = &self.linuxcnc_short_seen;
@@ -1168,16 +1179,25 @@ impl Checker {
                         .any(|(k, l, long)| *k == key && *l == len && long == text)
                 };
                 if !found {
+                    debug_assert!(!all_hot, "line {}: a hot name not seen", b.line);
                     return false;
                 }
             }
         }
-        self.linuxcnc_seen_hot = hot;
+        if hot != self.linuxcnc_seen_hot {
+            self.linuxcnc_seen_hot = hot;
+            self.line_walks.hot = hot.map(|k| HotName::of_key(k).unwrap_or(HotName::NONE));
+        }
         #[cfg(debug_assertions)]
         {
             assert!(hot
                 .iter()
                 .all(|&k| k == 0 || self.linuxcnc_short_seen.contains(&k)));
+            assert!(self
+                .line_walks
+                .hot
+                .iter()
+                .all(|h| *h == HotName::NONE || hot.contains(&h.key())));
             let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
             for w in b.words {
                 let full = self.linuxcnc_undefined_read(w.expression, w.column);
