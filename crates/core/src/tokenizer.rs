@@ -1000,14 +1000,18 @@ pub struct LineWalks {
     /// own.
     pub all: bool,
     pub walks: [ExpressionWalk; WALKED],
-    /// Two names the check found among the names seen (`Checker::linuxcnc_names_all_seen`;
-    /// [`HotName::NONE`]: none), kept from line to line: a bracketed word's name that is one
-    /// of them is read at once, by a compare of its bytes ([`bracket_word`]).
-    pub hot: [HotName; 2],
+    /// Names the check found among the names seen (`Checker::linuxcnc_names_all_seen`, the
+    /// newest first; [`HotName::NONE`]: none), kept from line to line: a bracketed word's name
+    /// that is one of them is read at once, by a compare of its bytes ([`bracket_word`]).
+    pub hot: [HotName; HOT],
     /// Every name of the walks in `set` is one of `hot` (set where `set` is emptied, cleared
     /// by a name read otherwise): the check need look none of them up.
     pub all_hot: bool,
 }
+
+/// How many names [`LineWalks::hot`] keeps: a CAM program's `X[#<xscale>*..]`,
+/// `Y[#<yscale>*..]`, `Z[#<zscale>*..]` and `F[#<fscale>*..]`.
+pub const HOT: usize = 4;
 
 /// A LinuxCNC parameter's name [`short_name_of`] takes, as [`LineWalks::hot`] keeps it: its
 /// bytes and its `>` (`pattern`, the bytes `mask` covers), its length and key. A name's
@@ -1046,7 +1050,7 @@ impl HotName {
         let pattern = key | u64::from(b'>') << (8 * len);
         (short_name_of(pattern) == Some((len, key))).then_some(HotName {
             pattern,
-            mask: (1u64 << (8 * (len + 1))) - 1,
+            mask: u64::MAX >> (8 * (7 - len)),
             len,
             key,
         })
@@ -1220,14 +1224,8 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
 
     #[inline(always)]
     fn hot_name(&self, chunk: u64) -> Option<(usize, u64)> {
-        let [a, b] = &self.walks.hot;
-        if a.is(chunk) {
-            Some((a.len, a.key))
-        } else if b.is(chunk) {
-            Some((b.len, b.key))
-        } else {
-            None
-        }
+        let hot = self.walks.hot.iter().find(|h| h.is(chunk))?;
+        Some((hot.len, hot.key))
     }
 
     #[inline(always)]
@@ -1898,6 +1896,8 @@ mod tests {
         ];
         let hot = [
             HotName::of_key(key(b"yscale")).unwrap(),
+            HotName::NONE,
+            HotName::of_key(key(b"abcdefg")).unwrap(),
             HotName::of_key(key(b"z")).unwrap(),
         ];
         let dialect = Dialect::permissive(Family::LinuxCnc);
@@ -1921,7 +1921,7 @@ mod tests {
                         // (half of them hot)
                         let n = next();
                         line.extend_from_slice(if n % 2 == 0 {
-                            [&b"yscale"[..], b"z"][(n / 2 % 2) as usize]
+                            [&b"yscale"[..], b"z", b"abcdefg"][(n / 2 % 3) as usize]
                         } else {
                             names[(n / 2 % names.len() as u64) as usize]
                         });
@@ -1933,7 +1933,7 @@ mod tests {
                     line.push(b' ');
                 }
             }
-            let read = |hot: [HotName; 2]| {
+            let read = |hot: [HotName; HOT]| {
                 let mut words = Vec::new();
                 let mut walks = LineWalks {
                     hot,
@@ -1947,7 +1947,7 @@ mod tests {
                 (found, words, walks)
             };
             let (found, words, walks) = read(hot);
-            let (cold_found, cold_words, cold_walks) = read([HotName::NONE; 2]);
+            let (cold_found, cold_words, cold_walks) = read([HotName::NONE; HOT]);
             let shown = String::from_utf8_lossy(&line);
             assert_eq!((found, &words), (cold_found, &cold_words), "{shown}");
             assert_eq!(

@@ -912,10 +912,6 @@ pub struct Checker {
     /// each at its place in `linuxcnc_named_seen` (0 elsewhere: no name's key), for the
     /// walked lines' names (`Checker::linuxcnc_names_all_seen`).
     linuxcnc_short_seen: [u64; 8],
-    /// The last two keys of `linuxcnc_short_seen` a walked line's name was found by (0: none;
-    /// a name seen stays seen until the next program): a CAM program's `#<yscale>` and
-    /// `#<zscale>` of every line compared with these first.
-    linuxcnc_seen_hot: [u64; 2],
     /// LinuxCNC: which of a block's first eight words `structure::walk_expression` found a
     /// plain bracketed expression (which holds no `/`), and the block's count
     /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
@@ -1114,7 +1110,6 @@ impl Checker {
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_short_seen: [0; 8],
-            linuxcnc_seen_hot: [0; 2],
             linuxcnc_plain_words: (0, 0),
             linuxcnc_no_slash: 0,
             linuxcnc_plain_block: 0,
