@@ -1439,6 +1439,35 @@ fn short_name_of(c: u64) -> Option<(usize, u64)> {
     ((low | odd) & mask == 0).then_some((len, c & mask))
 }
 
+/// [`bracket_word`]'s reading of a LinuxCNC parameter's name at `line[name..]` (after its
+/// `#<`) that is none of the hot ones: the offset of its `>`, its key ([`name_key`]), the
+/// kinds of its bytes ([`NAME_BYTES`] or'ed) and whether they are ASCII; None where the full
+/// reading reads it (no `>`, an empty name, a blank in it). A name of 1 to 7 bytes of ASCII
+/// that are no blank, bracket or `/` (`yscale`), its `>` among the 8 bytes after the `#<`, is
+/// read at once, its key those bytes ([`short_name_of`]); any other by the byte loop. Out of
+/// line: most names of a CAM program's lines are hot.
+#[inline(never)]
+fn cold_name(line: &[u8], name: usize) -> Option<(usize, u64, u8, bool)> {
+    if let Some((len, key)) = chunk_at(line, name).and_then(short_name_of) {
+        return Some((name + len, key, 0, true));
+    }
+    let n = line.len();
+    let mut i = name;
+    // (the name's bytes or'ed: the one part of the word that may be outside ASCII; their
+    // kinds or'ed: a blank, or what makes the walk not plain)
+    let mut bytes = 0u8;
+    let mut kinds = 0u8;
+    while i < n && line[i] != b'>' {
+        kinds |= NAME_BYTES[usize::from(line[i])];
+        bytes |= line[i];
+        i += 1;
+    }
+    if i == n || i == name || kinds & NAME_BLANK != 0 {
+        return None;
+    }
+    Some((i, name_key(line, name, i - name), kinds, bytes.is_ascii()))
+}
+
 /// The deepest brackets [`bracket_word`] reads; deeper ones (up to [`expr::MAX_DEPTH`]) are the
 /// full reading's.
 const BRACKET_DEPTH: u32 = 16;
@@ -1520,39 +1549,23 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                 b'<' if linuxcnc => {
                     let hash = i;
                     let name = i + 2;
-                    // a name of 1 to 7 bytes of ASCII that are no blank, bracket or `/`
-                    // (`yscale`), its `>` among the 8 bytes after the `#<`: read at once, its
-                    // key those bytes ([`short_name_of`]), by a compare of them where it is one
-                    // of the hot names (`PlainOut::hot_name`); any other the byte loop reads
-                    let short = chunk_at(line, name).and_then(|c| match words.hot_name(c) {
-                        Some(found) => {
-                            debug_assert_eq!(short_name_of(c), Some(found));
-                            Some((found, true))
-                        }
-                        None => short_name_of(c).map(|found| (found, false)),
+                    // a hot name (`PlainOut::hot_name`) read by a compare of its 8 bytes;
+                    // any other by `cold_name`
+                    let hot = chunk_at(line, name).and_then(|c| {
+                        let found = words.hot_name(c);
+                        debug_assert!(found.is_none() || short_name_of(c) == found);
+                        found
                     });
-                    let (key, kinds, hot) = if let Some(((len, key), hot)) = short {
+                    let (key, kinds, hot) = if let Some((len, key)) = hot {
                         i = name + len;
-                        (key, 0, hot)
+                        (key, 0, true)
                     } else {
-                        i = name;
-                        // (the name's bytes or'ed: the one part of the word that may be
-                        // outside ASCII; their kinds or'ed: a blank, or what makes the walk
-                        // not plain)
-                        let mut bytes = 0u8;
-                        let mut kinds = 0u8;
-                        while i < n && line[i] != b'>' {
-                            kinds |= NAME_BYTES[usize::from(line[i])];
-                            bytes |= line[i];
-                            i += 1;
-                        }
-                        if i == n || i == name || kinds & NAME_BLANK != 0 {
-                            return None;
-                        }
-                        if !bytes.is_ascii() {
+                        let (close, key, kinds, ascii) = cold_name(line, name)?;
+                        if !ascii {
                             words.not_ascii();
                         }
-                        (name_key(line, name, i - name), kinds, false)
+                        i = close;
+                        (key, kinds, false)
                     };
                     if plain {
                         // (below 65,536: a line is at most MAX_BLOCK bytes, the `[` at
