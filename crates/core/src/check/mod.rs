@@ -1529,11 +1529,23 @@ impl Checker {
             "line {}: a plain block's words",
             b.line
         );
-        self.reading_end.read(
+        // (a word's token begins with its address, whose capital is its letter: the block's
+        // letters say whether one is an M word)
+        let m_words = self.letters & bit(b'M') != 0;
+        debug_assert_eq!(
+            m_words,
+            b.words
+                .iter()
+                .any(|w| w.token.first().is_some_and(|&c| c | 0x20 == b'm')),
+            "line {}",
+            b.line
+        );
+        self.reading_end.read_with_m(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
             b.skip,
             b.line,
+            m_words,
         );
         self.reach_block(b);
         if b.percent && self.reading_end.refuses_percent(b.line, b.text) {
