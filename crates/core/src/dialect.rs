@@ -813,12 +813,27 @@ impl ReadingEnd {
 
     /// After a block is read: its word tokens (`M30`, `m2`), its statements and whether it
     /// begins with a block skip `/` (the switch may pass over its M2).
+    #[inline]
     pub fn read<'a>(
         &mut self,
         tokens: impl IntoIterator<Item = &'a [u8]>,
         statements: impl IntoIterator<Item = (Kind, &'a [u8])>,
         skip: bool,
         line: usize,
+    ) {
+        self.read_with_m(tokens, statements, skip, line, true);
+    }
+
+    /// [`ReadingEnd::read`] where the caller knows whether a token is an M word (its first
+    /// byte `M` or `m`): false, and the tokens are not searched for an M2 or M30 (most blocks
+    /// have no M word).
+    pub fn read_with_m<'a>(
+        &mut self,
+        tokens: impl IntoIterator<Item = &'a [u8]>,
+        statements: impl IntoIterator<Item = (Kind, &'a [u8])>,
+        skip: bool,
+        line: usize,
+        m_words: bool,
     ) {
         if self.family != Family::LinuxCnc {
             return;
@@ -846,7 +861,7 @@ impl ReadingEnd {
             }
             return;
         }
-        if self.open.is_empty() && !skip {
+        if self.open.is_empty() && !skip && m_words {
             // (a token's first byte `M` or `m` by its case bit; the number read only then)
             let ends = tokens.into_iter().any(|t| match t {
                 [m, digits @ ..] if m | 0x20 == b'm' => {

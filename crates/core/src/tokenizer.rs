@@ -1000,6 +1000,72 @@ pub struct LineWalks {
     /// own.
     pub all: bool,
     pub walks: [ExpressionWalk; WALKED],
+    /// Names the check found among the names seen (`Checker::linuxcnc_names_all_seen`, the
+    /// newest first; [`HotName::NONE`]: none), kept from line to line: a bracketed word's name
+    /// that is one of them is read at once, by a compare of its bytes ([`bracket_word`]).
+    pub hot: [HotName; HOT],
+    /// Every name of the walks in `set` is one of `hot` (set where `set` is emptied, cleared
+    /// by a name read otherwise): the check need look none of them up.
+    pub all_hot: bool,
+}
+
+/// How many names [`LineWalks::hot`] keeps: a CAM program's `X[#<xscale>*..]`,
+/// `Y[#<yscale>*..]`, `Z[#<zscale>*..]` and `F[#<fscale>*..]`.
+pub const HOT: usize = 4;
+
+/// A LinuxCNC parameter's name [`short_name_of`] takes, as [`LineWalks::hot`] keeps it: its
+/// bytes and its `>` (`pattern`, the bytes `mask` covers), its length and key. A name's
+/// 8 bytes after its `#<` that hold these bytes first are a name [`short_name_of`] reads as
+/// this one (it reads no byte after the `>`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HotName {
+    pattern: u64,
+    mask: u64,
+    len: usize,
+    key: u64,
+}
+
+impl Default for HotName {
+    fn default() -> Self {
+        Self::NONE
+    }
+}
+
+impl HotName {
+    /// No name: a bit of its pattern is outside its mask, so no bytes are it.
+    pub const NONE: HotName = HotName {
+        pattern: 1,
+        mask: 0,
+        len: 0,
+        key: 0,
+    };
+
+    /// The name whose key is `key` ([`name_key`]: its bytes, none of them zero, so that its
+    /// length is its key's bytes), where [`short_name_of`] takes that name; else None.
+    pub fn of_key(key: u64) -> Option<HotName> {
+        let len = (64 - key.leading_zeros() as usize).div_ceil(8);
+        if !(1..8).contains(&len) {
+            return None;
+        }
+        let pattern = key | u64::from(b'>') << (8 * len);
+        (short_name_of(pattern) == Some((len, key))).then_some(HotName {
+            pattern,
+            mask: u64::MAX >> (8 * (7 - len)),
+            len,
+            key,
+        })
+    }
+
+    /// The name's key ([`name_key`]; 0 for [`HotName::NONE`]).
+    pub fn key(&self) -> u64 {
+        self.key
+    }
+
+    /// Whether the 8 bytes `chunk` after a `#<` begin with this name and its `>`.
+    #[inline(always)]
+    fn is(&self, chunk: u64) -> bool {
+        chunk & self.mask == self.pattern
+    }
 }
 
 /// [`bracket_word`]'s look at a byte of a LinuxCNC parameter's name: a blank ends the
@@ -1037,11 +1103,18 @@ trait PlainOut<'a> {
     /// [`PlainOut::WALKS`] and it is plain, else None.
     fn bracketed(&mut self, line: &'a [u8], pos: usize, end: usize, walked: Option<u8>);
     /// The next bracketed word's name `n` (below 4): its `#` and `>` in the expression and its
-    /// key, written where its walk is kept. False where none is (not [`PlainOut::WALKS`], or
+    /// key, written where its walk is kept; `hot`: it was read as one of the hot names
+    /// ([`PlainOut::hot_name`]). False where none is (not [`PlainOut::WALKS`], or
     /// the word past the first [`WALKED`]): the word's walk is not kept.
     #[inline(always)]
-    fn walk_name(&mut self, _n: usize, _place: (u16, u16), _key: u64) -> bool {
+    fn walk_name(&mut self, _n: usize, _place: (u16, u16), _key: u64, _hot: bool) -> bool {
         false
+    }
+    /// The name the 8 bytes `chunk` after a `#<` begin with, where it is one of the hot names
+    /// ([`LineWalks::hot`]): its length and key, as [`short_name_of`] reads them.
+    #[inline(always)]
+    fn hot_name(&self, _chunk: u64) -> Option<(usize, u64)> {
+        None
     }
     /// The offset of what follows the blanks from `pos` ([`skip_blanks`]): the blanks before
     /// a line's first word and after each word, the only bytes of a line of plain words that
@@ -1137,7 +1210,7 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
     }
 
     #[inline(always)]
-    fn walk_name(&mut self, n: usize, place: (u16, u16), key: u64) -> bool {
+    fn walk_name(&mut self, n: usize, place: (u16, u16), key: u64, hot: bool) -> bool {
         let i = self.words.len();
         if i >= WALKED {
             return false;
@@ -1145,7 +1218,14 @@ impl<'a, F: Fn(usize) -> usize, const CRS: bool> PlainOut<'a> for WordsOut<'_, '
         let walk = &mut self.walks.walks[i];
         walk.names[n] = place;
         walk.keys[n] = key;
+        self.walks.all_hot &= hot;
         true
+    }
+
+    #[inline(always)]
+    fn hot_name(&self, chunk: u64) -> Option<(usize, u64)> {
+        let hot = self.walks.hot.iter().find(|h| h.is(chunk))?;
+        Some((hot.len, hot.key))
     }
 
     #[inline(always)]
@@ -1206,6 +1286,7 @@ pub fn plain_line_words<'a>(
 ) -> Option<PlainLine> {
     walks.set = 0;
     walks.all = true;
+    walks.all_hot = true;
     if crs {
         plain_line_words_as::<true>(line, dialect, words, walks, at)
     } else {
@@ -1294,6 +1375,7 @@ pub fn plain_line_words_to_lf<'a>(
     debug_assert!(plain_words_without_brackets(dialect));
     walks.set = 0;
     walks.all = true;
+    walks.all_hot = true;
     if crs {
         plain_line_words_to_lf_as::<true>(rest, dialect, words, walks, at)
     } else {
@@ -1317,21 +1399,27 @@ fn plain_line_words_to_lf_as<'a, const CRS: bool>(
     Some((plain, end))
 }
 
-/// A LinuxCNC parameter's name at `line[name..]` whose `>` is among its 8 bytes from `name`
-/// and after 1 to 7 bytes, none of them a blank ([`crate::lex::BLANKS`]: below `0x21`
-/// tested, so a byte below it that is no blank is read by the byte loop), `[`, `]`, `/`,
-/// DEL or outside ASCII: its length and key ([`name_key`]: those bytes). None for any other,
-/// which [`bracket_word`]'s byte loop reads: of a name this takes, that loop finds the same
-/// `>`, no blank, nothing that makes the walk not plain and nothing outside ASCII. About 25
-/// instructions, where the byte loop took about 10 a byte (`yscale`: 65).
+/// The 8 bytes of `line` from `at`, as one integer (the first the lowest), where there are 8.
 #[inline(always)]
-fn short_name(line: &[u8], name: usize) -> Option<(usize, u64)> {
-    const ONES: u64 = 0x0101_0101_0101_0101;
-    const HIGHS: u64 = 0x8080_8080_8080_8080;
-    let chunk = line.get(name..name + 8)?;
+fn chunk_at(line: &[u8], at: usize) -> Option<u64> {
+    let chunk = line.get(at..at + 8)?;
     let mut bytes = [0u8; 8];
     bytes.copy_from_slice(chunk);
-    let c = u64::from_le_bytes(bytes);
+    Some(u64::from_le_bytes(bytes))
+}
+
+/// A LinuxCNC parameter's name whose 8 bytes after its `#<` are `c` (the first the lowest;
+/// [`chunk_at`]), whose `>` is among them and after 1 to 7 bytes, none of them a blank
+/// ([`crate::lex::BLANKS`]: below `0x21` tested, so a byte below it that is no blank is read
+/// by the byte loop), `[`, `]`, `/`, DEL or outside ASCII: its length and key ([`name_key`]:
+/// those bytes). None for any other, which [`bracket_word`]'s byte loop reads: of a name this
+/// takes, that loop finds the same `>`, no blank, nothing that makes the walk not plain and
+/// nothing outside ASCII. About 25 instructions, where the byte loop took about 10 a byte
+/// (`yscale`: 65). It reads no byte after the `>`.
+#[inline(always)]
+fn short_name_of(c: u64) -> Option<(usize, u64)> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGHS: u64 = 0x8080_8080_8080_8080;
     let close = equal_bytes(c, b'>');
     // (the first `>`: the lowest flag, exact; the name's bytes below it)
     let len = (close.trailing_zeros() / 8) as usize;
@@ -1349,6 +1437,35 @@ fn short_name(line: &[u8], name: usize) -> Option<(usize, u64)> {
         | equal_bytes(c, b'/')
         | (c & HIGHS);
     ((low | odd) & mask == 0).then_some((len, c & mask))
+}
+
+/// [`bracket_word`]'s reading of a LinuxCNC parameter's name at `line[name..]` (after its
+/// `#<`) that is none of the hot ones: the offset of its `>`, its key ([`name_key`]), the
+/// kinds of its bytes ([`NAME_BYTES`] or'ed) and whether they are ASCII; None where the full
+/// reading reads it (no `>`, an empty name, a blank in it). A name of 1 to 7 bytes of ASCII
+/// that are no blank, bracket or `/` (`yscale`), its `>` among the 8 bytes after the `#<`, is
+/// read at once, its key those bytes ([`short_name_of`]); any other by the byte loop. Out of
+/// line: most names of a CAM program's lines are hot.
+#[inline(never)]
+fn cold_name(line: &[u8], name: usize) -> Option<(usize, u64, u8, bool)> {
+    if let Some((len, key)) = chunk_at(line, name).and_then(short_name_of) {
+        return Some((name + len, key, 0, true));
+    }
+    let n = line.len();
+    let mut i = name;
+    // (the name's bytes or'ed: the one part of the word that may be outside ASCII; their
+    // kinds or'ed: a blank, or what makes the walk not plain)
+    let mut bytes = 0u8;
+    let mut kinds = 0u8;
+    while i < n && line[i] != b'>' {
+        kinds |= NAME_BYTES[usize::from(line[i])];
+        bytes |= line[i];
+        i += 1;
+    }
+    if i == n || i == name || kinds & NAME_BLANK != 0 {
+        return None;
+    }
+    Some((i, name_key(line, name, i - name), kinds, bytes.is_ascii()))
 }
 
 /// The deepest brackets [`bracket_word`] reads; deeper ones (up to [`expr::MAX_DEPTH`]) are the
@@ -1432,37 +1549,29 @@ fn bracket_word<'a, O: PlainOut<'a>>(
                 b'<' if linuxcnc => {
                     let hash = i;
                     let name = i + 2;
-                    // a name of 1 to 7 bytes of ASCII that are no blank, bracket or `/`
-                    // (`yscale`), its `>` among the 8 bytes after the `#<`: read at once, its
-                    // key those bytes ([`short_name`]); any other the byte loop reads
-                    let (key, kinds) = if let Some((len, key)) = short_name(line, name) {
+                    // a hot name (`PlainOut::hot_name`) read by a compare of its 8 bytes;
+                    // any other by `cold_name`
+                    let hot = chunk_at(line, name).and_then(|c| {
+                        let found = words.hot_name(c);
+                        debug_assert!(found.is_none() || short_name_of(c) == found);
+                        found
+                    });
+                    let (key, kinds, hot) = if let Some((len, key)) = hot {
                         i = name + len;
-                        (key, 0)
+                        (key, 0, true)
                     } else {
-                        i = name;
-                        // (the name's bytes or'ed: the one part of the word that may be
-                        // outside ASCII; their kinds or'ed: a blank, or what makes the walk
-                        // not plain)
-                        let mut bytes = 0u8;
-                        let mut kinds = 0u8;
-                        while i < n && line[i] != b'>' {
-                            kinds |= NAME_BYTES[usize::from(line[i])];
-                            bytes |= line[i];
-                            i += 1;
-                        }
-                        if i == n || i == name || kinds & NAME_BLANK != 0 {
-                            return None;
-                        }
-                        if !bytes.is_ascii() {
+                        let (close, key, kinds, ascii) = cold_name(line, name)?;
+                        if !ascii {
                             words.not_ascii();
                         }
-                        (name_key(line, name, i - name), kinds)
+                        i = close;
+                        (key, kinds, false)
                     };
                     if plain {
                         // (below 65,536: a line is at most MAX_BLOCK bytes, the `[` at
                         // `pos + 1` at least)
                         let place = ((hash - pos - 1) as u16, (i - pos - 1) as u16);
-                        if kinds != 0 || count == 4 || !words.walk_name(count, place, key) {
+                        if kinds != 0 || count == 4 || !words.walk_name(count, place, key, hot) {
                             plain = false;
                         } else {
                             count += 1;
@@ -1731,7 +1840,7 @@ mod tests {
     #[test]
     fn a_short_name_is_read_at_once_as_the_byte_loop_reads_it() {
         // drawn bytes after `#<`: letters, `>`, blanks, bytes below 0x21 that are no blank,
-        // DEL, brackets, `/`, bytes outside ASCII; `short_name` takes a name only where the
+        // DEL, brackets, `/`, bytes outside ASCII; `short_name_of` takes a name only where the
         // byte loop finds its `>` after 1 to 7 bytes, none a blank, a bracket, a `/` or outside
         // ASCII (and DEL, a blank), and then the same length and the key `name_key` gives;
         // it takes every such name with 8 bytes after the `#<`
@@ -1750,7 +1859,7 @@ mod tests {
                         .iter()
                         .all(|&c| NAME_BYTES[usize::from(c)] == 0 && c.is_ascii() && c >= 0x21)
             });
-            let found = short_name(&line, 0);
+            let found = chunk_at(&line, 0).and_then(short_name_of);
             if let Some((n, key)) = found {
                 taken += 1;
                 assert_eq!(Some(n), close, "{line:?}");
@@ -1761,6 +1870,139 @@ mod tests {
             }
         }
         assert!(taken > 5_000, "{taken}");
+    }
+
+    #[test]
+    fn a_hot_name_is_read_as_the_short_name_reading_reads_it() {
+        // a hot name is one `short_name_of` takes, and only such a name
+        let key = |name: &[u8]| name_key(name, 0, name.len());
+        for name in [&b"yscale"[..], b"a", b"Z_0~!", b"abcdefg"] {
+            let hot = HotName::of_key(key(name)).expect("a short name");
+            assert_eq!((hot.len, hot.key()), (name.len(), key(name)));
+        }
+        for name in [
+            &b"abcdefgh"[..],
+            b"",
+            b"y\x7fs",
+            b"a/b",
+            b"a[",
+            b"\xc3\xa9",
+            b"a b",
+        ] {
+            assert_eq!(HotName::of_key(key(name)), None, "{name:?}");
+        }
+        // LinuxCNC lines of bracketed words whose names are drawn from names a hot one is,
+        // begins or ends, and names the short reading does not take; read with hot names and
+        // with none: the same words and walks, and `all_hot` where each walked name is one
+        // of the hot names and has its 8 bytes after the `#<` in the line
+        let names: [&[u8]; 10] = [
+            b"yscale",
+            b"zscale",
+            b"yscal",
+            b"yscalex",
+            b"Yscale",
+            b"abcdefg",
+            b"abcdefgh",
+            b"y\x7fs",
+            b"\xc3\xa9",
+            b"z",
+        ];
+        let hot = [
+            HotName::of_key(key(b"yscale")).unwrap(),
+            HotName::NONE,
+            HotName::of_key(key(b"abcdefg")).unwrap(),
+            HotName::of_key(key(b"z")).unwrap(),
+        ];
+        let dialect = Dialect::permissive(Family::LinuxCnc);
+        let mut next = crate::drawn::xorshift(0x2545_F491_4F6C_DD1D);
+        let (mut all_hot, mut not) = (0, 0);
+        for _ in 0..20_000 {
+            let mut line = Vec::new();
+            for _ in 0..1 + next() % 3 {
+                line.push(b"XYZF"[(next() % 4) as usize]);
+                line.push(b'[');
+                for k in 0..1 + next() % 3 {
+                    if k > 0 {
+                        line.extend_from_slice(
+                            [&b"*"[..], b"+", b"/", b"**"][(next() % 4) as usize],
+                        );
+                    }
+                    if next() % 4 == 0 {
+                        line.extend_from_slice(b"-1.5");
+                    } else {
+                        line.extend_from_slice(b"#<");
+                        // (half of them hot)
+                        let n = next();
+                        line.extend_from_slice(if n % 2 == 0 {
+                            [&b"yscale"[..], b"z", b"abcdefg"][(n / 2 % 3) as usize]
+                        } else {
+                            names[(n / 2 % names.len() as u64) as usize]
+                        });
+                        line.push(b'>');
+                    }
+                }
+                line.push(b']');
+                if next() % 3 == 0 {
+                    line.push(b' ');
+                }
+            }
+            let read = |hot: [HotName; HOT]| {
+                let mut words = Vec::new();
+                let mut walks = LineWalks {
+                    hot,
+                    ..LineWalks::default()
+                };
+                let found = plain_line_words(&line, &dialect, &mut words, &mut walks, |o| o, false);
+                let words: Vec<_> = words
+                    .iter()
+                    .map(|w| (w.token, w.column, w.expression))
+                    .collect();
+                (found, words, walks)
+            };
+            let (found, words, walks) = read(hot);
+            let (cold_found, cold_words, cold_walks) = read([HotName::NONE; HOT]);
+            let shown = String::from_utf8_lossy(&line);
+            assert_eq!((found, &words), (cold_found, &cold_words), "{shown}");
+            assert_eq!(
+                (walks.set, walks.all),
+                (cold_walks.set, cold_walks.all),
+                "{shown}"
+            );
+            assert_eq!(walks.walks, cold_walks.walks, "{shown}");
+            if found.is_none() {
+                continue;
+            }
+            // each walked name: its `#` and `>` from the `[`, the `[` at the word's column + 1
+            // (`all_hot` is kept for a line whose every bracketed word is walked: of another,
+            // a name read before its word's walk was given up may have cleared it)
+            let (mut expected, mut named) = (true, false);
+            for (i, walk) in walks.walks.iter().enumerate().take(words.len()) {
+                if walks.set >> i & 1 == 0 {
+                    continue;
+                }
+                for &(hash, close) in &walk.names[..usize::from(walk.count)] {
+                    let from = words[i].1 + 1 + usize::from(hash) + 2;
+                    let name = &line[from..words[i].1 + 1 + usize::from(close)];
+                    named = true;
+                    expected &= from + 8 <= line.len()
+                        && hot
+                            .iter()
+                            .any(|h| h.len == name.len() && h.key() == key(name));
+                }
+            }
+            if walks.all {
+                assert_eq!(walks.all_hot, expected, "{shown}");
+                assert_eq!(cold_walks.all_hot, !named, "{shown}");
+                if named && expected {
+                    all_hot += 1;
+                } else if named {
+                    not += 1;
+                }
+            } else {
+                assert!(!walks.all_hot || expected, "{shown}");
+            }
+        }
+        assert!(all_hot > 2_000 && not > 2_000, "{all_hot} {not}");
     }
 
     const STRICT: Dialect = Dialect {

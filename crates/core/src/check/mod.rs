@@ -923,10 +923,6 @@ pub struct Checker {
     /// each at its place in `linuxcnc_named_seen` (0 elsewhere: no name's key), for the
     /// walked lines' names (`Checker::linuxcnc_names_all_seen`).
     linuxcnc_short_seen: [u64; 8],
-    /// The last two keys of `linuxcnc_short_seen` a walked line's name was found by (0: none;
-    /// a name seen stays seen until the next program): a CAM program's `#<yscale>` and
-    /// `#<zscale>` of every line compared with these first.
-    linuxcnc_seen_hot: [u64; 2],
     /// LinuxCNC: which of a block's first eight words `structure::walk_expression` found a
     /// plain bracketed expression (which holds no `/`), and the block's count
     /// (`stats.blocks`) they are of: the read-refusal's test reads them, not the bytes again.
@@ -1128,7 +1124,6 @@ impl Checker {
             linuxcnc_named: HashSet::new(),
             linuxcnc_named_seen: Vec::new(),
             linuxcnc_short_seen: [0; 8],
-            linuxcnc_seen_hot: [0; 2],
             linuxcnc_plain_words: (0, 0),
             linuxcnc_no_slash: 0,
             linuxcnc_plain_block: 0,
@@ -1548,11 +1543,23 @@ impl Checker {
             "line {}: a plain block's words",
             b.line
         );
-        self.reading_end.read(
+        // (a word's token begins with its address, whose capital is its letter: the block's
+        // letters say whether one is an M word)
+        let m_words = self.letters & bit(b'M') != 0;
+        debug_assert_eq!(
+            m_words,
+            b.words
+                .iter()
+                .any(|w| w.token.first().is_some_and(|&c| c | 0x20 == b'm')),
+            "line {}",
+            b.line
+        );
+        self.reading_end.read_with_m(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
             b.skip,
             b.line,
+            m_words,
         );
         self.reach_block(b);
         if b.percent && self.reading_end.refuses_percent(b.line, b.text) {

@@ -33,7 +33,7 @@ fn next_hash(text: &[u8], mut from: usize) -> Option<usize> {
         .map(|at| from + at)
 }
 
-use crate::tokenizer::{equal_bytes, name_key};
+use crate::tokenizer::{equal_bytes, name_key, HotName, HOT};
 /// The words of a block walked by [`walk_expression`] (a word after them is read by each
 /// rule's own walk), and what one walk finds: the tokenizer's ([`crate::tokenizer::WALKED`],
 /// [`ExpressionWalk`]), which writes the same walk of a plain line's bracketed words as it
@@ -279,7 +279,10 @@ impl Checker {
         self.linuxcnc_named.clear();
         self.linuxcnc_named_seen.clear();
         self.linuxcnc_short_seen = [0; 8];
-        self.linuxcnc_seen_hot = [0; 2];
+        // (and the tokenizer's hot names, which are names seen; a line it read with them is
+        // looked up as if it had none)
+        self.line_walks.hot = [HotName::NONE; HOT];
+        self.line_walks.all_hot = false;
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_mode_unsure = false;
@@ -1227,10 +1230,28 @@ impl Checker {
     /// asserts it). False where one is not: the full reading decides.
     #[inline(always)]
     fn linuxcnc_names_all_seen(&mut self, b: &BlockView<'_>) -> bool {
+        // (every name of the line read by the tokenizer as one of the hot names, each a name
+        // seen: `LineWalks::hot` holds names of `linuxcnc_short_seen` alone. A debug build
+        // looks them up as well, and asserts they are found)
+        if self.line_walks.all_hot && !cfg!(debug_assertions) {
+            return true;
+        }
+        self.linuxcnc_names_looked_up(b)
+    }
+
+    /// [`Checker::linuxcnc_names_all_seen`] with each name looked up: a name of up to 8
+    /// bytes by its key among the hot names' and `linuxcnc_short_seen`, a longer one by its
+    /// bytes too. Where all are seen, each short one not hot is made hot (the newest first:
+    /// the oldest leave).
+    #[inline(never)]
+    fn linuxcnc_names_looked_up(&mut self, b: &BlockView<'_>) -> bool {
+        let all_hot = self.line_walks.all_hot;
         let walks = &self.line_walks;
         let seen = &self.linuxcnc_named_seen;
         let short = &self.linuxcnc_short_seen;
-        let mut hot = self.linuxcnc_seen_hot;
+        let hot = walks.hot.map(|h| h.key());
+        // (the keys found that are not hot, the first four)
+        let mut fresh = [0u64; 4];
         let mut set = walks.set;
         while set != 0 {
             let i = set.trailing_zeros() as usize;
@@ -1241,14 +1262,15 @@ impl Checker {
                 let len = close - name;
                 let key = walk.keys[n];
                 // (a name of up to 8 bytes is its key: no byte of a walked name is zero, a
-                // blank, so no key is 0; the last two keys found compared first. A longer
+                // blank, so no key is 0, and no hot key is 0 but `HotName::NONE`'s. A longer
                 // one is compared by its bytes too)
                 let found = if len <= 8 {
                     debug_assert_ne!(key, 0);
-                    key == hot[0]
-                        || key == hot[1]
+                    hot.contains(&key)
                         || short.contains(&key) && {
-                            hot = [key, hot[0]];
+                            if let Some(free) = fresh.iter_mut().find(|k| **k == 0 || **k == key) {
+                                *free = key;
+                            }
                             true
                         }
                 } else {
@@ -1257,16 +1279,24 @@ impl Checker {
                         .any(|(k, l, long)| *k == key && *l == len && long == text)
                 };
                 if !found {
+                    debug_assert!(!all_hot, "line {}: a hot name not seen", b.line);
                     return false;
                 }
             }
         }
-        self.linuxcnc_seen_hot = hot;
+        for key in fresh.into_iter().take_while(|&k| k != 0) {
+            if let Some(name) = HotName::of_key(key) {
+                self.line_walks.hot.rotate_right(1);
+                self.line_walks.hot[0] = name;
+            }
+        }
         #[cfg(debug_assertions)]
         {
-            assert!(hot
+            assert!(self
+                .line_walks
+                .hot
                 .iter()
-                .all(|&k| k == 0 || self.linuxcnc_short_seen.contains(&k)));
+                .all(|h| *h == HotName::NONE || self.linuxcnc_short_seen.contains(&h.key())));
             let kept = (self.linuxcnc_named_seen.clone(), self.linuxcnc_short_seen);
             for w in b.words {
                 let full = self.linuxcnc_undefined_read(w.expression, w.column);
@@ -2460,6 +2490,33 @@ mod tests {
         // another family's #<..> is no LinuxCNC name
         let other = "G21 G90\nG0 X#<nope>\nM30\n";
         assert!(findings(of_family(Family::MacroB), other, Rule::LinuxCncRefuses).is_empty());
+    }
+
+    #[test]
+    fn linuxcnc_names_read_on_every_line_are_judged_as_each_first_read_is() {
+        // a CAM program's scaled words: five names, more than the tokenizer keeps hot
+        // (`tokenizer::HOT`), read in turns on lines of plain words, then a name not yet
+        // assigned among them (interp_namedparams.cc: refused, as the first read of any is)
+        let names = ["xs", "ys", "zs", "fs", "r"];
+        let mut text = String::from("G21 G90\nG0 X0 Y0\n");
+        for n in names {
+            text += &format!("#<{n}> = 1\n");
+        }
+        for i in 0..40 {
+            let [a, b, c] = [names[i % 5], names[(i + 1) % 5], names[(i * 3 + 2) % 5]];
+            text += &format!("G1 X[#<{a}>*1.5]Y[#<{b}>*-2.25]Z[#<{c}>*3] F[#<fs>*100]\n");
+        }
+        // (line 48)
+        text += "G1 X[#<xs>*1.5]Y[#<late>*2]Z[#<zs>*3]\n#<late> = 2\nG1 X[#<late>*1]\nM2\n";
+        let found: Vec<usize> = findings(of_family(Family::LinuxCnc), &text, Rule::LinuxCncRefuses)
+            .iter()
+            .filter(|f| f.message.starts_with("Named parameter"))
+            .map(|f| f.line)
+            .collect();
+        assert_eq!(found, [48]);
+        // and none where it is assigned first
+        let text = text.replace("#<xs> = 1\n", "#<xs> = 1\n#<late> = 0\n");
+        assert!(findings(of_family(Family::LinuxCnc), &text, Rule::LinuxCncRefuses).is_empty());
     }
 
     #[test]
