@@ -79,6 +79,7 @@ if TYPE_CHECKING:
         work_offsets: list[tuple[int, str, str]]
         feed_max: str | None
         spindle_max: str | None
+        limits_builtin: bool  # a built-in profile's sample machine, not the user's own
         tool_max: int | None
         rapid_rate: float
         reset: list[int]
@@ -197,6 +198,7 @@ def machine_spec(profile: Profile) -> MachineSpec:
                          for axis, value in axes.items()],
         "feed_max": text(limits, "feed_max"),
         "spindle_max": text(limits, "spindle_max"),
+        "limits_builtin": profile.source == "built-in",
         "tool_max": limits.tool_max,
         "rapid_rate": float(text(limits, "rapid_rate")),
         "reset": [int(c[1:]) for c in profile.reset_state()],

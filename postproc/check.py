@@ -165,8 +165,8 @@ class Checker:
     moves' extents, lengths and time are not worked out, a cost on every move that only a
     report of them (``check --stats``) reads; the findings are the same. ``fold`` (a ``text``
     report, as ``check`` writes it without ``--all``): of each rule's warnings and notes in
-    the file the first five are written, and at the end of :meth:`report_file` one line for
-    the rest, at the first one left out, with their number and lines; every error is written
+    the file the first five are written, and at the end of :meth:`report_file` (and of
+    :meth:`report_stream`) one line for the rest, at the first one left out, with their number and lines; every error is written
     (the core's ``report::Writer::folded``); the counts are of every finding."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
@@ -204,9 +204,11 @@ class Checker:
                       write: Callable[[str], object]) -> None:
         """Check a program arriving as text chunks, its findings written as the checker's
         ``report`` prints them, by the core, through ``write`` about 64 KiB at a time (a
-        chunk's findings are never held whole); what ``write`` raises stops the check."""
+        chunk's findings are never held whole), then a folded report's lines for the findings
+        it left out (``fold``); what ``write`` raises stops the check."""
         for _ in self._batches(chunks, dialect, write):
             pass
+        self._core.end(write, False)
 
     def report_file(self, path: str, write: Callable[[Any], object], raw: bool = False
                     ) -> None:
@@ -225,7 +227,8 @@ class Checker:
             from formats.source import Source  # (with the tape's module: only here)
 
             source = Source(path)
-            self.report_stream(source.chunks(), dialect, write)
+            for _ in self._batches(source.chunks(), dialect, write):
+                pass
             tape = self.report_tape(source.issues)
             if tape:
                 write(tape)

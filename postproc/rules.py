@@ -701,10 +701,13 @@ SOURCES = {
              "B-64120EN, parameter 1422, the maximum cutting feedrate), a documented effect, so "
              "on the FANUC profiles it is TG605, a warning. SINUMERIK: no source at hand (left "
              "an error, reported). Okuma, LinuxCNC: their profiles set no feed_max.",
-    "TG603": "The profile's machine (spindle_max), on the strict ISO profiles only. The S of "
-             "the spindle speed clamp's code (G50 S on a lathe, G92 S elsewhere) is a limit, "
-             "not a speed: never judged. On a control family's profile, TG606 (a warning) "
-             "instead; `linuxcnc` sets no spindle_max.",
+    "TG603": "The profile's machine (spindle_max), on the strict ISO profiles and on a user's "
+             "profile (a file, with or without a base: its maximum is the user's machine, a "
+             "chuck's rating perhaps). The S of the spindle speed clamp's code (G50 S on a "
+             "lathe; G92 S on a FANUC mill and the ISO profiles, not on a Haas, Okuma or "
+             "LinuxCNC mill, whose G92 only sets coordinates; a SINUMERIK's G26 S) is a limit, "
+             "not a speed: never judged. On a built-in control family's profile, TG606 (a "
+             "warning) instead; `linuxcnc` sets no spindle_max.",
     "TG606": "The profile's machine (spindle_max). SINUMERIK: the control limits an excessive "
              "spindle speed setpoint to the maximum in MD35100 SPIND_VELO_LIMIT (808D Function "
              "Manual, 01/2017, \"Maximum spindle speed\"; 840D Function Manual S1, 06/2019, "

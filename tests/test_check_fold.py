@@ -156,3 +156,22 @@ def test_the_help_says_what_all_does() -> None:
     assert ("--all Text: print every finding. Without it, past the first 5 warnings or notes "
             "of one rule in a file the rest are one line") in text
     assert "errors are always all printed" in text
+
+
+def test_a_report_of_a_stream_ends_with_its_fold_lines_too() -> None:
+    """Review 37, finding 8: ``Checker.report_stream`` (the API's checker of text chunks) never
+    wrote the "more like this" line; it ends its report as ``report_file`` does."""
+    from formats.profile import load_profile
+    from postproc.check import Checker
+
+    profile = load_profile("haas-mill")
+    text = "%\nO1\nG20 G90 G00 X0 Y0\n" + "".join(
+        f"N{100000 + 10 * i} X{i}.\n" for i in range(12)) + "M30\n%\n"
+    out: list[str] = []
+    checker = Checker(profile, "p.nc", report="text", fold=True)
+    checker.report_stream([text], profile.dialect, out.append)
+    lines = "".join(out).splitlines()
+    assert sum(" TG208 N" in line for line in lines) == 5, lines
+    assert [line for line in lines if "more like this" in line] == [
+        "p.nc:9:1: warning TG208 7 more like this on lines 9-15 (--all shows each)"], lines
+    assert checker.counts["warning"] == 12

@@ -97,12 +97,12 @@ def test_a_named_program_is_read_as_a_numbered_one(profile):
 
 
 def test_each_named_program_of_a_backup_is_checked_from_its_reset_state():
-    """No TG116 (words after the end) at the named programs, no '<' refused; the third
+    """No TG106/TG116 (words after the end) at the named programs, no '<' refused; the third
     program's G90 X10. measured from no position (the second ended incremental)."""
     assert [f for f in found(NAMED) if f[1] == "error"] == []
     # a name after no end begins no program: as an O number there, TG113, a warning
     glued = NAMED.replace("M30\n<101>", "<101>")
-    assert [f for f in found(glued) if f[0] in ("TG101", "TG113", "TG116")] == [
+    assert [f for f in found(glued) if f[0] in ("TG101", "TG113", "TG106", "TG116")] == [
         ("TG113", "warning", 12, 1)]
     assert [f for f in found(glued.replace("<101>", "O0101 ")) if f[0] == "TG113"] == [
         ("TG113", "warning", 12, 1)]

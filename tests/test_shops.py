@@ -153,16 +153,20 @@ M99
 
 
 def test_each_program_of_a_file_is_checked_as_its_own():
-    """The second program starts with its O number (no TG113, no TG116 'words after the end'),
+    """The second program starts with its O number (no TG113, no TG106/TG116 'words after the
+    end'),
     at a position the checker cannot know: its first R arc is not measured from X100. Y0, and
     its feed is its caller's (no TG401)."""
     got = rules(BACKUP, "fanuc-mill")
-    assert not got & {"TG113", "TG116", "TG410", "TG401", "TG114"}, got
+    assert not got & {"TG113", "TG106", "TG116", "TG410", "TG401", "TG114"}, got
 
 
 def test_words_after_m30_that_start_no_program_are_still_found():
+    """Said as TG106, a warning on a family profile (the control never runs them, and no
+    source says it alarms)."""
     text = "%\nO0001\nG21 G90 G00 X0\nM30\nG01 X10. F100.\n%\n"
-    assert "TG116" in errors(text, "fanuc-mill")
+    assert ("TG106", "warning") in found(text, "fanuc-mill")
+    assert "TG116" not in errors(text, "fanuc-mill")
 
 
 # -- lines no run reaches (TG108) ----------------------------------------------------------------

@@ -898,6 +898,7 @@ mod tests {
                 work_offsets: Vec::new(),
                 feed_max: None,
                 spindle_max: None,
+                limits_builtin: true,
                 tool_max: None,
                 rapid_rate: 5000.0,
                 limit_units: Units::Metric,

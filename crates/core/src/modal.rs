@@ -596,6 +596,7 @@ impl ModalMachine {
     pub fn reset(&mut self) {
         let position = self.state.position;
         let unknown = self.state.unknown & FORGOTTEN & !(bit(b'F') | bit(b'S'));
+        let units_given = self.state.units_given;
         self.state = ModalState::new(self.settings.default_units);
         self.state.position = position;
         self.state.unknown = unknown;
@@ -603,8 +604,10 @@ impl ModalMachine {
         for g in reset {
             self.g(g);
         }
-        // (the reset's own units code is the machine's setting, not the program's)
-        self.state.units_given = false;
+        // (the reset's own units code is the machine's setting, not the program's; one the
+        // file wrote before stays said: a subprogram after M30 runs under its caller's units,
+        // review 37, finding 2)
+        self.state.units_given = units_given;
     }
 
     /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).

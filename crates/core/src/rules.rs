@@ -294,7 +294,7 @@ rules! {
     FeedClamped = "TG605", Warning, "profile", Limits, false,
         "feed rate above the machine's maximum on a FANUC, which clamps a cutting feed to the maximum its parameters set rather than alarming: the cut runs slower than programmed";
     SpeedLimited = "TG606", Warning, "profile", Limits, false,
-        "spindle speed above the machine's maximum on a control family's profile (Fanuc, Haas, SINUMERIK, Okuma, Heidenhain): a SINUMERIK limits the speed to its maximum, and no source at hand says the others alarm rather than limiting it: the spindle turns slower than programmed, or the profile's sample machine is not the user's";
+        "spindle speed above the machine's maximum on a built-in control family's profile (Fanuc, Haas, SINUMERIK, Okuma, Heidenhain), a sample machine of the family: a SINUMERIK limits the speed to its maximum, and no source at hand says the others alarm rather than limiting it: the spindle turns slower than programmed, or the profile's sample machine is not the user's";
     TapeParity = "TG701", Error, "Annex A", Link, true,
         "tape parity error (character with the wrong parity)";
     TapeCharacter = "TG702", Error, "Annex A", Link, true,

@@ -1347,8 +1347,17 @@ impl Checker {
         let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
         let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
         // the S of the spindle speed clamp's code (G50 on a lathe, G92 elsewhere: the modal
-        // state's speed limit) turns nothing: a clamp above the maximum never bites (audit 37)
-        let s = s.filter(|_| !v.has_g(self.machine.settings.clamp_code()));
+        // state's speed limit) turns nothing: a clamp above the maximum never bites (audit 37);
+        // but a Haas, Okuma or LinuxCNC mill's G92 sets coordinates only (their profiles'
+        // code tables), and an S beside it is a speed (review 37, finding 4)
+        let clamp = self.machine.settings.clamp_code();
+        let clamps = clamp == 50
+            || !(self.config.haas
+                || matches!(self.config.family, Family::Okuma | Family::LinuxCnc));
+        // (a SINUMERIK's G26 S is its programmable upper spindle speed limit: the profile's
+        // G26, review 37, finding 5)
+        let sinumerik_limit = self.config.family == Family::Sinumerik && v.has_g(26);
+        let s = s.filter(|_| !(clamps && v.has_g(clamp) || sinumerik_limit));
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
@@ -1395,9 +1404,11 @@ impl Checker {
                 // a control family's: a SINUMERIK limits an excessive speed to its maximum
                 // (808D Function Manual, MD35100 SPIND_VELO_LIMIT; 840D Function Manual, S1,
                 // 18.8.4), and no source at hand says a FANUC, Haas, Okuma or Heidenhain
-                // alarms rather than limiting it: a warning (issue 32, item 3); the strict ISO
-                // profiles keep TG603
-                if self.config.family == Family::Iso {
+                // alarms rather than limiting it: a warning (issue 32, item 3), where the
+                // maximum is a built-in profile's sample machine; the strict ISO profiles, and
+                // a user's profile, whose maximum is the user's machine (a chuck's rating),
+                // keep TG603 (review 37, finding 6)
+                if self.config.family == Family::Iso || !self.config.limits_builtin {
                     self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
                 } else {
                     let effect = if self.config.family == Family::Sinumerik {
@@ -1532,7 +1543,8 @@ impl Checker {
             ""
         };
         format!(
-            "; the program writes no units code, so its numbers are read in inches, the \
+            "; the program has written no units code by here, so its numbers are read in \
+             inches, the \
              units the profile takes the machine to be set to{setting}: read in millimetres \
              they fit (`check --units metric` for a machine set to mm)"
         )

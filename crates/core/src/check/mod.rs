@@ -184,6 +184,10 @@ pub struct ProfileFacts {
     pub work_offsets: Vec<(i64, u8, Dec)>,
     pub feed_max: Option<Dec>,
     pub spindle_max: Option<Dec>,
+    /// The limits are a built-in profile's, a sample machine of the family (not the user's
+    /// own: a profile file's, with or without a `base`): a spindle speed above its maximum is
+    /// TG606, a warning, there, and TG603, the error, on the user's machine.
+    pub limits_builtin: bool,
     pub tool_max: Option<i64>,
     pub rapid_rate: f64,
     /// The units of the limits, the work offsets, the rapid rate and the statistics: the

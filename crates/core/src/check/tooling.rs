@@ -2131,7 +2131,11 @@ impl Checker {
         // effect from its block (840Di sl Programming Manual Fundamentals, 11/2006, 8.8 tool
         // radius compensation, "Changing the offset number D"): a D alone is no finding there
         // (audit 37: `D1 X=XD+unut` under G42 in three held-out programs)
-        let d_changes = self.config.family == Family::Sinumerik && !has_t;
+        // (D0 switches the offset off: the tool then cuts a radius into the part; still said,
+        // review 37, finding 3)
+        let d_changes = self.config.family == Family::Sinumerik
+            && !has_t
+            && self.values.get(b'D').is_some_and(|d| d.to_f64() != 0.0);
         if matches!(before.compensation, 41 | 42)
             && !facts.has(40)
             && (has_t || has_d)
@@ -2800,6 +2804,15 @@ mod tests {
         );
         assert_eq!(
             at(iso_mill(), d_change, Rule::ToolChangeInCompensation),
+            [(3, 1)]
+        );
+        let d_off = "G41 G01 X1. F100.\nD0 X2.";
+        assert_eq!(
+            at(
+                of_family(Family::Sinumerik),
+                d_off,
+                Rule::ToolChangeInCompensation
+            ),
             [(3, 1)]
         );
     }
