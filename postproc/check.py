@@ -166,8 +166,9 @@ class Checker:
     report of them (``check --stats``) reads; the findings are the same. ``fold`` (a ``text``
     report, as ``check`` writes it without ``--all``): of each rule's warnings and notes in
     the file the first five are written, and at the end of :meth:`report_file` (and of
-    :meth:`report_stream`) one line for the rest, at the first one left out, with their number and lines; every error is written
-    (the core's ``report::Writer::folded``); the counts are of every finding."""
+    :meth:`report_stream`) one line for the rest, at the first one left out, with their number
+    and lines; every error is written (the core's ``report::Writer::folded``); the counts are
+    of every finding."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),

@@ -1927,13 +1927,13 @@ mod tests {
                             [&b"*"[..], b"+", b"/", b"**"][(next() % 4) as usize],
                         );
                     }
-                    if next() % 4 == 0 {
+                    if next().is_multiple_of(4) {
                         line.extend_from_slice(b"-1.5");
                     } else {
                         line.extend_from_slice(b"#<");
                         // (half of them hot)
                         let n = next();
-                        line.extend_from_slice(if n % 2 == 0 {
+                        line.extend_from_slice(if n.is_multiple_of(2) {
                             [&b"yscale"[..], b"z", b"abcdefg"][(n / 2 % 3) as usize]
                         } else {
                             names[(n / 2 % names.len() as u64) as usize]
@@ -1942,7 +1942,7 @@ mod tests {
                     }
                 }
                 line.push(b']');
-                if next() % 3 == 0 {
+                if next().is_multiple_of(3) {
                     line.push(b' ');
                 }
             }
