@@ -4,6 +4,7 @@ clearance in rapid; and every restart that cannot be made safely is refused, wit
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from decimal import Decimal
 from importlib import resources
@@ -2514,6 +2515,15 @@ def test_a_refusal_inside_a_live_tool_section_says_where_to_restart():
     planned = plan(before_t, 12, haas)
     assert "T0101" in planned.preamble and not any("M03" in b for b in planned.preamble), \
         planned.preamble
+    # review 37, finding 7: the line named is planned itself, also with an M19 before the
+    # M154 (the M19's line) and in a second C axis section after a C move of the first (the
+    # first section's M154: the way in from the second is not known)
+    oriented = before_t.replace("M05\nM154\n", "M05\nM19\nM154\n")
+    twice = before_t.replace("M30\n", "M154\nG00 C90.\nM155\nM30\n")
+    for text, at in ((before_t, 16), (oriented, 17), (twice, 22)):
+        said = refusal(text, at, haas)
+        named = int(re.search(r"restart at or before line (\d+)", said).group(1))
+        assert plan(text, named, haas).preamble, (at, named, said)
 
 
 # -- two codes of one modal group before the restart point (TG304) ------------------------------

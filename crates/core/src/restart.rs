@@ -288,6 +288,10 @@ pub struct Walk {
     /// A lathe's last move of C or Y (line, axis) since the main spindle last started (M03,
     /// M04): C positioned, a live tool's milling or drilling at an angle (review 35, finding 2).
     pub side_move: Option<(usize, u8)>,
+    /// The first line a mode code of `m_modes` switched on since the main spindle last
+    /// started (M03, M04): where a restart hint points after a C or Y move, whose way in is
+    /// not known (review 37, finding 7).
+    pub mode_since_spin: Option<usize>,
     /// A lathe's last M code the profile's list lacks since the last tool change (line, code):
     /// on a FANUC lathe the live tool drive and the C-axis (Cs) mode are the builder's M codes
     /// (TG307), which the walk cannot name.
@@ -567,6 +571,7 @@ impl Walk {
             orient_codes: Vec::new(),
             oriented: None,
             side_move: None,
+            mode_since_spin: None,
             builder_m: None,
             spin_line: 0,
             coolant_line: 0,
@@ -1205,12 +1210,22 @@ impl Walk {
                     // that end the modes. Not the tool change before it: the code may come
                     // before the live tool's T word, and that change is the tool before
                     // (review 36, finding 7)
-                    let first = self
+                    // (review 37, finding 7) nor where that block is refused itself: before
+                    // an M19 still in force, and, after a C or Y move of this tool (the way
+                    // in is not known from there), at its tool change
+                    let mut first = self
                         .unrestored
                         .iter()
                         .filter(|(k, _, _)| self.m_modes.iter().any(|(_, m, _, _)| m == k))
                         .map(|&(_, l, _)| l)
                         .fold(line, usize::min);
+                    if let Some((at, _)) = self.oriented {
+                        first = first.min(at);
+                    }
+                    if self.side_move.is_some() {
+                        let since = self.mode_since_spin.unwrap_or(line);
+                        first = first.min(self.tool_change.map_or(since, |t| t.min(since)));
+                    }
                     let before = format!("line {first}");
                     let ends: Vec<String> = self
                         .m_modes
@@ -1230,6 +1245,7 @@ impl Walk {
                     self.mode_hints.retain(|(k, _)| *k != mode);
                     self.mode_hints.push((mode, hint));
                 }
+                self.mode_since_spin.get_or_insert(line);
                 self.set_unrestored(mode, line, format!("M{m} ({function})"));
             } else {
                 self.drop_unrestored(mode);
@@ -1250,6 +1266,7 @@ impl Walk {
             }
             if matches!(m, 3 | 4) {
                 self.side_move = None;
+                self.mode_since_spin = None;
                 self.spin_line = line;
                 self.builder_m = None; // (the main spindle turns: no live tool's mode)
             }
