@@ -75,14 +75,16 @@ SAME_LIMIT = {rule_id("FeedClamped"): rule_id("FeedTooHigh"),
               rule_id("SpeedLimited"): rule_id("SpeedTooHigh")}
 
 
-def errors(path: Path, profile_name: str, name: str) -> list[tuple[str, int, str]]:
-    """The check's errors of ``path`` on ``profile_name``: (rule, line, message); a limit said
-    as a warning (SAME_LIMIT) counts as the error of the same limit."""
+def errors(path: Path, profile_name: str, name: str, source: bool = False
+           ) -> list[tuple[str, int, str]]:
+    """The check's errors of ``path`` on ``profile_name``: (rule, line, message); of the
+    ``source`` program, a limit said as a warning (SAME_LIMIT) counts as the error of the same
+    limit too (the program's, not the conversion's); of a target, only errors count."""
     profile = load_profile(profile_name)
     read = parse_stream(Source(str(path)).chunks(), profile.dialect, file=name, errors="collect")
     return [(SAME_LIMIT.get(f.rule, f.rule), f.line or 0, f.message)
             for f in Checker(profile, file=name).run(read)
-            if f.severity == "error" or f.rule in SAME_LIMIT]
+            if f.severity == "error" or source and f.rule in SAME_LIMIT]
 
 
 def kind(rule: str) -> str:
@@ -93,7 +95,7 @@ def kind(rule: str) -> str:
 
 def sweep(path: Path, source: str, targets: list[str], keep: Path | None = None) -> list[Run]:
     name = path.name
-    own = {rule for rule, _, _ in errors(path, source, name)}
+    own = {rule for rule, _, _ in errors(path, source, name, source=True)}
     runs = []
     with tempfile.TemporaryDirectory(prefix="tapegate-targets-") as tmp:
         for target in targets:
