@@ -10,20 +10,28 @@ use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
 /// The profile's travel of each axis A-Z as floating-point numbers, as [`Config::travel`]
-/// gives it (its first entry of a letter), found once for the checker: every move asks it of
-/// each axis it moves.
-pub(super) struct Travel([Option<(f64, f64)>; 26]);
+/// gives it (its first entry of a letter), and of each axis of [`AXES`] by its place there,
+/// found once for the checker: every move asks it of each axis it moves.
+pub(super) struct Travel([Option<(f64, f64)>; 26], [Option<(f64, f64)>; 9]);
 
 impl Travel {
     pub(super) fn new(config: &Config) -> Travel {
-        Travel(std::array::from_fn(|i| {
+        let letters: [Option<(f64, f64)>; 26] = std::array::from_fn(|i| {
             let letter = b'A' + i as u8;
             config
                 .travel
                 .iter()
                 .find(|(a, _, _)| *a == letter)
                 .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
-        }))
+        });
+        let places = std::array::from_fn(|i| letters[usize::from(AXES[i] - b'A')]);
+        Travel(letters, places)
+    }
+
+    /// [`Travel::of`] the axis at place `i` of [`AXES`].
+    #[inline(always)]
+    fn of_place(&self, i: usize) -> Option<(f64, f64)> {
+        self.1[i]
     }
 
     /// The travel of `axis` (low, high), if the profile gives one.
@@ -1219,6 +1227,7 @@ impl Checker {
     /// kinematic transformation neither: its axes are not the machine's.
     pub(super) fn limits(&mut self, line: usize, facts: &Facts<'_>, absolute: bool) {
         let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        let mut places = facts.moved_places();
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
             // for made a program of many transformations quadratic)
@@ -1232,12 +1241,14 @@ impl Checker {
                 self.travel_not(why);
             }
             moved = &[];
+            places = 0;
         }
         // a frame's block whose axis words are its data (G51.1 X0: the mirror's axis, no
         // move) adds no position: where the tool stands may be a span's that the block
         // started afresh
         if self.frames.codes && self.machine.taken() == Some(AxesTaken::Data) {
             moved = &[];
+            places = 0;
         }
         let factor = self.to_profile_units(false);
         // (an Okuma mill's G53 cancels the tool length offset: work_offset)
@@ -1250,6 +1261,33 @@ impl Checker {
         } else {
             self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
         };
+        // no machine coordinates, no offset compared, no frame: each axis's position only goes
+        // to its span (a CAM program's moves under a profile without work offsets), walked by
+        // the axes' places, where the walk below looked each axis up by its letter and passed
+        // the offsets' tests (about 60 instructions an axis)
+        if !machine && !absolute && framed == 0 {
+            debug_assert_eq!(
+                moved,
+                crate::modal::places(places)
+                    .map(|i| AXES[i])
+                    .collect::<Vec<_>>(),
+                "line {line}: the moved axes' places"
+            );
+            let count = !self.config.work_offsets.is_empty();
+            for i in crate::modal::places(places) {
+                let (Some(_), Some(position)) =
+                    (self.travel.of_place(i), self.machine.state.position[i])
+                else {
+                    continue;
+                };
+                let at = position.to_f64() * factor;
+                if count {
+                    self.stats.travel_moves += 1;
+                }
+                self.add_to_span(i, at, false, line, || col(AXES[i]), "");
+            }
+            moved = &[];
+        }
         for &axis in moved {
             let Some((low, high)) = self.travel.of(axis) else {
                 continue;
@@ -1434,7 +1472,7 @@ impl Checker {
         under: &str,
     ) {
         let axis = AXES[i];
-        let Some((low, high)) = self.travel.of(axis) else {
+        let Some((low, high)) = self.travel.of_place(i) else {
             return;
         };
         // a position strictly inside the span so far, nothing said of the machine position:
