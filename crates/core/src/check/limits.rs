@@ -1742,6 +1742,25 @@ mod tests {
         }
         assert_eq!(travel.of(b'X'), Some((-500.0, 0.125)));
         assert_eq!(travel.of(b'Y'), None);
+        // by the places of AXES (the spans' walk)
+        for (i, &axis) in crate::modal::AXES.iter().enumerate() {
+            assert_eq!(travel.of_place(i), travel.of(axis), "{}", axis as char);
+        }
+    }
+
+    #[test]
+    fn the_spans_of_a_block_s_axes_each_against_its_travel() {
+        // iso_mill: X -500 to 500, Y -400 to 400, Z -300 to 100, no travel of B, no work
+        // offsets (each axis's position only goes to its span): Y spans 850 and Z 450 at the
+        // second block, each said at its word; X 1050 at the third
+        let moves = "G00 X-400. Y-300. Z-100.\nX300. Y550. Z350. B10.\nX650.";
+        assert_eq!(
+            at(iso_mill(), moves, Rule::TravelExceeded),
+            [(3, 7), (3, 13), (4, 1)]
+        );
+        // at a bound of the span so far, and back inside: nothing more
+        let bounds = "G00 X-400. Y-300.\nX400. Y300.\nX-400. Y0\nX0 Y-300.";
+        assert_eq!(at(iso_mill(), bounds, Rule::TravelExceeded), []);
     }
 
     #[test]
