@@ -12,7 +12,7 @@ use crate::statement::{self, Effect, Kind};
 /// The profile's travel of each axis A-Z as floating-point numbers, as [`Config::travel`]
 /// gives it (its first entry of a letter), and of each axis of [`AXES`] by its place there,
 /// found once for the checker: every move asks it of each axis it moves.
-pub(super) struct Travel([Option<(f64, f64)>; 26], [Option<(f64, f64)>; 9]);
+pub(super) struct Travel([Option<(f64, f64)>; 26], [Option<(f64, f64)>; 9], u32);
 
 impl Travel {
     pub(super) fn new(config: &Config) -> Travel {
@@ -24,8 +24,18 @@ impl Travel {
                 .find(|(a, _, _)| *a == letter)
                 .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
         });
-        let places = std::array::from_fn(|i| letters[usize::from(AXES[i] - b'A')]);
-        Travel(letters, places)
+        let places: [Option<(f64, f64)>; 9] =
+            std::array::from_fn(|i| letters[usize::from(AXES[i] - b'A')]);
+        let given = (0..9)
+            .filter(|&i| places[i].is_some())
+            .fold(0, |m, i| m | 1 << i);
+        Travel(letters, places, given)
+    }
+
+    /// The places in [`AXES`] of the axes with a travel, a bit each.
+    #[inline(always)]
+    fn places(&self) -> u32 {
+        self.2
     }
 
     /// [`Travel::of`] the axis at place `i` of [`AXES`].
@@ -1263,8 +1273,9 @@ impl Checker {
         };
         // no machine coordinates, no offset compared, no frame: each axis's position only goes
         // to its span (a CAM program's moves under a profile without work offsets), walked by
-        // the axes' places, where the walk below looked each axis up by its letter and passed
-        // the offsets' tests (about 60 instructions an axis)
+        // the places of the axes that have a travel (none under a profile without travels),
+        // where the walk below looked each axis up by its letter and passed the offsets' tests
+        // (about 60 instructions an axis)
         if !machine && !absolute && framed == 0 {
             debug_assert_eq!(
                 moved,
@@ -1274,7 +1285,7 @@ impl Checker {
                 "line {line}: the moved axes' places"
             );
             let count = !self.config.work_offsets.is_empty();
-            for i in crate::modal::places(places) {
+            for i in crate::modal::places(places & self.travel.places()) {
                 let (Some(_), Some(position)) =
                     (self.travel.of_place(i), self.machine.state.position[i])
                 else {
@@ -1745,6 +1756,12 @@ mod tests {
         // by the places of AXES (the spans' walk)
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
             assert_eq!(travel.of_place(i), travel.of(axis), "{}", axis as char);
+            assert_eq!(
+                travel.places() >> i & 1 == 1,
+                travel.of(axis).is_some(),
+                "{}",
+                axis as char
+            );
         }
     }
 
