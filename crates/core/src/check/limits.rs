@@ -1276,7 +1276,8 @@ impl Checker {
         // the places of the axes that have a travel (none under a profile without travels),
         // where the walk below looked each axis up by its letter and passed the offsets' tests
         // (about 60 instructions an axis)
-        if !machine && !absolute && framed == 0 {
+        // (and no frame's map, which reads the moved axes below)
+        if !machine && !absolute && framed == 0 && self.frames.map.is_none() {
             debug_assert_eq!(
                 moved,
                 crate::modal::places(places)
