@@ -1260,132 +1260,139 @@ impl Checker {
             moved = &[];
             places = 0;
         }
-        let factor = self.to_profile_units(false);
-        // (an Okuma mill's G53 cancels the tool length offset: work_offset)
-        let machine =
-            self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
-        // the axes whose positions go to the spans below through a frame, or not at all
-        // (none where no frame is on: most programs)
-        let framed = if self.frames.on == 0 {
-            0
-        } else {
-            self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
-        };
-        // no machine coordinates, no offset compared, no frame: each axis's position only goes
-        // to its span (a CAM program's moves under a profile without work offsets), walked by
-        // the places of the axes that have a travel (none under a profile without travels),
-        // where the walk below looked each axis up by its letter and passed the offsets' tests
-        // (about 60 instructions an axis)
-        // (and no frame's map, which reads the moved axes below)
-        if !machine && !absolute && framed == 0 && self.frames.map.is_none() {
-            debug_assert_eq!(
-                moved,
-                crate::modal::places(places)
-                    .map(|i| AXES[i])
-                    .collect::<Vec<_>>(),
-                "line {line}: the moved axes' places"
-            );
-            let count = !self.config.work_offsets.is_empty();
-            for i in crate::modal::places(places & self.travel.places()) {
-                let (Some(_), Some(position)) =
-                    (self.travel.of_place(i), self.machine.state.position[i])
+        // (no moved axis with a travel -- a profile without travels, as LinuxCNC's -- and no
+        // frame's map: the walks below find nothing, and are not set up)
+        'axes: {
+            if places & self.travel.places() == 0 && self.frames.map.is_none() {
+                break 'axes;
+            }
+            let factor = self.to_profile_units(false);
+            // (an Okuma mill's G53 cancels the tool length offset: work_offset)
+            let machine = self.values.has_g(53)
+                && (self.config.family != Family::Okuma || self.config.modal.lap);
+            // the axes whose positions go to the spans below through a frame, or not at all
+            // (none where no frame is on: most programs)
+            let framed = if self.frames.on == 0 {
+                0
+            } else {
+                self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
+            };
+            // no machine coordinates, no offset compared, no frame: each axis's position only goes
+            // to its span (a CAM program's moves under a profile without work offsets), walked by
+            // the places of the axes that have a travel (none under a profile without travels),
+            // where the walk below looked each axis up by its letter and passed the offsets' tests
+            // (about 60 instructions an axis)
+            // (and no frame's map, which reads the moved axes below)
+            if !machine && !absolute && framed == 0 && self.frames.map.is_none() {
+                debug_assert_eq!(
+                    moved,
+                    crate::modal::places(places)
+                        .map(|i| AXES[i])
+                        .collect::<Vec<_>>(),
+                    "line {line}: the moved axes' places"
+                );
+                let count = !self.config.work_offsets.is_empty();
+                for i in crate::modal::places(places & self.travel.places()) {
+                    let (Some(_), Some(position)) =
+                        (self.travel.of_place(i), self.machine.state.position[i])
+                    else {
+                        continue;
+                    };
+                    let at = position.to_f64() * factor;
+                    if count {
+                        self.stats.travel_moves += 1;
+                    }
+                    self.add_to_span(i, at, false, line, || col(AXES[i]), "");
+                }
+                moved = &[];
+            }
+            for &axis in moved {
+                let Some((low, high)) = self.travel.of(axis) else {
+                    continue;
+                };
+                if machine {
+                    let Some(value) = self.values.get(axis) else {
+                        continue;
+                    };
+                    let at = value.to_f64() * factor;
+                    if !(low..=high).contains(&at) {
+                        let message = format!(
+                            "{} goes to {value} in machine coordinates (G53), outside the travel \
+                             {low} to {high}",
+                            axis as char
+                        );
+                        self.report(Rule::TravelExceeded, message, line, col(axis));
+                    }
+                    continue;
+                }
+                let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
                 else {
                     continue;
                 };
                 let at = position.to_f64() * factor;
-                if count {
+                if !self.config.work_offsets.is_empty() {
                     self.stats.travel_moves += 1;
                 }
-                self.add_to_span(i, at, false, line, || col(AXES[i]), "");
-            }
-            moved = &[];
-        }
-        for &axis in moved {
-            let Some((low, high)) = self.travel.of(axis) else {
-                continue;
-            };
-            if machine {
-                let Some(value) = self.values.get(axis) else {
-                    continue;
-                };
-                let at = value.to_f64() * factor;
-                if !(low..=high).contains(&at) {
-                    let message = format!(
-                        "{} goes to {value} in machine coordinates (G53), outside the travel \
-                         {low} to {high}",
-                        axis as char
-                    );
-                    self.report(Rule::TravelExceeded, message, line, col(axis));
-                }
-                continue;
-            }
-            let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
-            else {
-                continue;
-            };
-            let at = position.to_f64() * factor;
-            if !self.config.work_offsets.is_empty() {
-                self.stats.travel_moves += 1;
-            }
-            let offset = self.work.and_then(|work| {
-                self.config
-                    .work_offsets
-                    .iter()
-                    .find(|&&(g, a, _)| g == work && a == axis)
-                    .map(|&(_, _, value)| value)
-            });
-            let length =
-                axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
-            let mut said_outside = false;
-            match (absolute, self.work, offset) {
-                (true, Some(_), Some(_)) if length => self.travel_not(
-                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
-                        .into(),
-                ),
-                (true, Some(work), Some(offset)) => {
-                    self.stats.travel_absolute += 1;
-                    let machine_at = at + offset.to_f64();
-                    // which side of the travel the axis is outside (0 inside): a move from
-                    // one side to the other crosses the travel, another excursion
-                    let out = if machine_at < low - 1e-9 {
-                        -1
-                    } else if machine_at > high + 1e-9 {
-                        1
-                    } else {
-                        0
-                    };
-                    if out != 0 && out != self.outside[i] {
-                        let message = format!(
-                            "{} goes to {} in machine coordinates (work {} + G{work} offset \
-                             {offset}), outside the travel {low} to {high}",
-                            axis as char,
-                            round6(machine_at),
-                            round6(at)
-                        );
-                        self.report(Rule::TravelExceeded, message, line, col(axis));
-                        said_outside = true;
+                let offset = self.work.and_then(|work| {
+                    self.config
+                        .work_offsets
+                        .iter()
+                        .find(|&&(g, a, _)| g == work && a == axis)
+                        .map(|&(_, _, value)| value)
+                });
+                let length =
+                    axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
+                let mut said_outside = false;
+                match (absolute, self.work, offset) {
+                    (true, Some(_), Some(_)) if length => self.travel_not(
+                        "Z while a tool length offset was in force (the profile gives no tool lengths)"
+                            .into(),
+                    ),
+                    (true, Some(work), Some(offset)) => {
+                        self.stats.travel_absolute += 1;
+                        let machine_at = at + offset.to_f64();
+                        // which side of the travel the axis is outside (0 inside): a move from
+                        // one side to the other crosses the travel, another excursion
+                        let out = if machine_at < low - 1e-9 {
+                            -1
+                        } else if machine_at > high + 1e-9 {
+                            1
+                        } else {
+                            0
+                        };
+                        if out != 0 && out != self.outside[i] {
+                            let message = format!(
+                                "{} goes to {} in machine coordinates (work {} + G{work} offset \
+                                 {offset}), outside the travel {low} to {high}",
+                                axis as char,
+                                round6(machine_at),
+                                round6(at)
+                            );
+                            self.report(Rule::TravelExceeded, message, line, col(axis));
+                            said_outside = true;
+                        }
+                        self.outside[i] = out;
                     }
-                    self.outside[i] = out;
+                    (true, Some(work), None) => self.travel_not(format!(
+                        "{} under G{work}: the profile gives no G{work} {}",
+                        axis as char, axis as char
+                    )),
+                    (true, None, _) => self
+                        .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                    _ => {}
                 }
-                (true, Some(work), None) => self.travel_not(format!(
-                    "{} under G{work}: the profile gives no G{work} {}",
-                    axis as char, axis as char
-                )),
-                (true, None, _) => self
-                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
-                _ => {}
-            }
-            // (under a frame: X Y Z taken back through it below, or left out)
-            if framed & (1 << i) != 0 {
-                for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
-                    *moved |= hidden & (1 << i) != 0;
+                // (under a frame: X Y Z taken back through it below, or left out)
+                if framed & (1 << i) != 0 {
+                    for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
+                        *moved |= hidden & (1 << i) != 0;
+                    }
+                    continue;
                 }
-                continue;
+                self.add_to_span(i, at, said_outside, line, || col(axis), "");
             }
-            self.add_to_span(i, at, said_outside, line, || col(axis), "");
-        }
-        if self.frames.map.is_some() && !moved.is_empty() {
-            self.mapped_spans(moved, line, facts);
+            if self.frames.map.is_some() && !moved.is_empty() {
+                self.mapped_spans(moved, line, facts);
+            }
         }
         let v = &self.values;
         // (the feed, speed and tool limits below read the block's F, S and T alone: most
