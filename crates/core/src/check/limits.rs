@@ -10,20 +10,38 @@ use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
 /// The profile's travel of each axis A-Z as floating-point numbers, as [`Config::travel`]
-/// gives it (its first entry of a letter), found once for the checker: every move asks it of
-/// each axis it moves.
-pub(super) struct Travel([Option<(f64, f64)>; 26]);
+/// gives it (its first entry of a letter), and of each axis of [`AXES`] by its place there,
+/// found once for the checker: every move asks it of each axis it moves.
+pub(super) struct Travel([Option<(f64, f64)>; 26], [Option<(f64, f64)>; 9], u32);
 
 impl Travel {
     pub(super) fn new(config: &Config) -> Travel {
-        Travel(std::array::from_fn(|i| {
+        let letters: [Option<(f64, f64)>; 26] = std::array::from_fn(|i| {
             let letter = b'A' + i as u8;
             config
                 .travel
                 .iter()
                 .find(|(a, _, _)| *a == letter)
                 .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
-        }))
+        });
+        let places: [Option<(f64, f64)>; 9] =
+            std::array::from_fn(|i| letters[usize::from(AXES[i] - b'A')]);
+        let given = (0..9)
+            .filter(|&i| places[i].is_some())
+            .fold(0, |m, i| m | 1 << i);
+        Travel(letters, places, given)
+    }
+
+    /// The places in [`AXES`] of the axes with a travel, a bit each.
+    #[inline(always)]
+    fn places(&self) -> u32 {
+        self.2
+    }
+
+    /// [`Travel::of`] the axis at place `i` of [`AXES`].
+    #[inline(always)]
+    fn of_place(&self, i: usize) -> Option<(f64, f64)> {
+        self.1[i]
     }
 
     /// The travel of `axis` (low, high), if the profile gives one.
@@ -1219,6 +1237,7 @@ impl Checker {
     /// kinematic transformation neither: its axes are not the machine's.
     pub(super) fn limits(&mut self, line: usize, facts: &Facts<'_>, absolute: bool) {
         let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        let mut places = facts.moved_places();
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
             // for made a program of many transformations quadratic)
@@ -1232,110 +1251,148 @@ impl Checker {
                 self.travel_not(why);
             }
             moved = &[];
+            places = 0;
         }
         // a frame's block whose axis words are its data (G51.1 X0: the mirror's axis, no
         // move) adds no position: where the tool stands may be a span's that the block
         // started afresh
         if self.frames.codes && self.machine.taken() == Some(AxesTaken::Data) {
             moved = &[];
+            places = 0;
         }
-        let factor = self.to_profile_units(false);
-        // (an Okuma mill's G53 cancels the tool length offset: work_offset)
-        let machine =
-            self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
-        // the axes whose positions go to the spans below through a frame, or not at all
-        // (none where no frame is on: most programs)
-        let framed = if self.frames.on == 0 {
-            0
-        } else {
-            self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
-        };
-        for &axis in moved {
-            let Some((low, high)) = self.travel.of(axis) else {
-                continue;
+        // (no moved axis with a travel -- a profile without travels, as LinuxCNC's -- and no
+        // frame's map: the walks below find nothing, and are not set up)
+        'axes: {
+            if places & self.travel.places() == 0 && self.frames.map.is_none() {
+                break 'axes;
+            }
+            let factor = self.to_profile_units(false);
+            // (an Okuma mill's G53 cancels the tool length offset: work_offset)
+            let machine = self.values.has_g(53)
+                && (self.config.family != Family::Okuma || self.config.modal.lap);
+            // the axes whose positions go to the spans below through a frame, or not at all
+            // (none where no frame is on: most programs)
+            let framed = if self.frames.on == 0 {
+                0
+            } else {
+                self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
             };
-            if machine {
-                let Some(value) = self.values.get(axis) else {
+            // no machine coordinates, no offset compared, no frame: each axis's position only goes
+            // to its span (a CAM program's moves under a profile without work offsets), walked by
+            // the places of the axes that have a travel (none under a profile without travels),
+            // where the walk below looked each axis up by its letter and passed the offsets' tests
+            // (about 60 instructions an axis)
+            // (and no frame's map, which reads the moved axes below)
+            if !machine && !absolute && framed == 0 && self.frames.map.is_none() {
+                debug_assert_eq!(
+                    moved,
+                    crate::modal::places(places)
+                        .map(|i| AXES[i])
+                        .collect::<Vec<_>>(),
+                    "line {line}: the moved axes' places"
+                );
+                let count = !self.config.work_offsets.is_empty();
+                for i in crate::modal::places(places & self.travel.places()) {
+                    let (Some(_), Some(position)) =
+                        (self.travel.of_place(i), self.machine.state.position[i])
+                    else {
+                        continue;
+                    };
+                    let at = position.to_f64() * factor;
+                    if count {
+                        self.stats.travel_moves += 1;
+                    }
+                    self.add_to_span(i, at, false, line, || col(AXES[i]), "");
+                }
+                moved = &[];
+            }
+            for &axis in moved {
+                let Some((low, high)) = self.travel.of(axis) else {
                     continue;
                 };
-                let at = value.to_f64() * factor;
-                if !(low..=high).contains(&at) {
-                    let message = format!(
-                        "{} goes to {value} in machine coordinates (G53), outside the travel \
-                         {low} to {high}",
-                        axis as char
-                    );
-                    self.report(Rule::TravelExceeded, message, line, col(axis));
-                }
-                continue;
-            }
-            let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
-            else {
-                continue;
-            };
-            let at = position.to_f64() * factor;
-            if !self.config.work_offsets.is_empty() {
-                self.stats.travel_moves += 1;
-            }
-            let offset = self.work.and_then(|work| {
-                self.config
-                    .work_offsets
-                    .iter()
-                    .find(|&&(g, a, _)| g == work && a == axis)
-                    .map(|&(_, _, value)| value)
-            });
-            let length =
-                axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
-            let mut said_outside = false;
-            match (absolute, self.work, offset) {
-                (true, Some(_), Some(_)) if length => self.travel_not(
-                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
-                        .into(),
-                ),
-                (true, Some(work), Some(offset)) => {
-                    self.stats.travel_absolute += 1;
-                    let machine_at = at + offset.to_f64();
-                    // which side of the travel the axis is outside (0 inside): a move from
-                    // one side to the other crosses the travel, another excursion
-                    let out = if machine_at < low - 1e-9 {
-                        -1
-                    } else if machine_at > high + 1e-9 {
-                        1
-                    } else {
-                        0
+                if machine {
+                    let Some(value) = self.values.get(axis) else {
+                        continue;
                     };
-                    if out != 0 && out != self.outside[i] {
+                    let at = value.to_f64() * factor;
+                    if !(low..=high).contains(&at) {
                         let message = format!(
-                            "{} goes to {} in machine coordinates (work {} + G{work} offset \
-                             {offset}), outside the travel {low} to {high}",
-                            axis as char,
-                            round6(machine_at),
-                            round6(at)
+                            "{} goes to {value} in machine coordinates (G53), outside the travel \
+                             {low} to {high}",
+                            axis as char
                         );
                         self.report(Rule::TravelExceeded, message, line, col(axis));
-                        said_outside = true;
                     }
-                    self.outside[i] = out;
+                    continue;
                 }
-                (true, Some(work), None) => self.travel_not(format!(
-                    "{} under G{work}: the profile gives no G{work} {}",
-                    axis as char, axis as char
-                )),
-                (true, None, _) => self
-                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
-                _ => {}
-            }
-            // (under a frame: X Y Z taken back through it below, or left out)
-            if framed & (1 << i) != 0 {
-                for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
-                    *moved |= hidden & (1 << i) != 0;
+                let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
+                else {
+                    continue;
+                };
+                let at = position.to_f64() * factor;
+                if !self.config.work_offsets.is_empty() {
+                    self.stats.travel_moves += 1;
                 }
-                continue;
+                let offset = self.work.and_then(|work| {
+                    self.config
+                        .work_offsets
+                        .iter()
+                        .find(|&&(g, a, _)| g == work && a == axis)
+                        .map(|&(_, _, value)| value)
+                });
+                let length =
+                    axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
+                let mut said_outside = false;
+                match (absolute, self.work, offset) {
+                    (true, Some(_), Some(_)) if length => self.travel_not(
+                        "Z while a tool length offset was in force (the profile gives no tool lengths)"
+                            .into(),
+                    ),
+                    (true, Some(work), Some(offset)) => {
+                        self.stats.travel_absolute += 1;
+                        let machine_at = at + offset.to_f64();
+                        // which side of the travel the axis is outside (0 inside): a move from
+                        // one side to the other crosses the travel, another excursion
+                        let out = if machine_at < low - 1e-9 {
+                            -1
+                        } else if machine_at > high + 1e-9 {
+                            1
+                        } else {
+                            0
+                        };
+                        if out != 0 && out != self.outside[i] {
+                            let message = format!(
+                                "{} goes to {} in machine coordinates (work {} + G{work} offset \
+                                 {offset}), outside the travel {low} to {high}",
+                                axis as char,
+                                round6(machine_at),
+                                round6(at)
+                            );
+                            self.report(Rule::TravelExceeded, message, line, col(axis));
+                            said_outside = true;
+                        }
+                        self.outside[i] = out;
+                    }
+                    (true, Some(work), None) => self.travel_not(format!(
+                        "{} under G{work}: the profile gives no G{work} {}",
+                        axis as char, axis as char
+                    )),
+                    (true, None, _) => self
+                        .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                    _ => {}
+                }
+                // (under a frame: X Y Z taken back through it below, or left out)
+                if framed & (1 << i) != 0 {
+                    for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
+                        *moved |= hidden & (1 << i) != 0;
+                    }
+                    continue;
+                }
+                self.add_to_span(i, at, said_outside, line, || col(axis), "");
             }
-            self.add_to_span(i, at, said_outside, line, || col(axis), "");
-        }
-        if self.frames.map.is_some() && !moved.is_empty() {
-            self.mapped_spans(moved, line, facts);
+            if self.frames.map.is_some() && !moved.is_empty() {
+                self.mapped_spans(moved, line, facts);
+            }
         }
         let v = &self.values;
         // (the feed, speed and tool limits below read the block's F, S and T alone: most
@@ -1470,7 +1527,7 @@ impl Checker {
         under: &str,
     ) {
         let axis = AXES[i];
-        let Some((low, high)) = self.travel.of(axis) else {
+        let Some((low, high)) = self.travel.of_place(i) else {
             return;
         };
         // a position strictly inside the span so far, nothing said of the machine position:
@@ -1768,6 +1825,31 @@ mod tests {
         }
         assert_eq!(travel.of(b'X'), Some((-500.0, 0.125)));
         assert_eq!(travel.of(b'Y'), None);
+        // by the places of AXES (the spans' walk)
+        for (i, &axis) in crate::modal::AXES.iter().enumerate() {
+            assert_eq!(travel.of_place(i), travel.of(axis), "{}", axis as char);
+            assert_eq!(
+                travel.places() >> i & 1 == 1,
+                travel.of(axis).is_some(),
+                "{}",
+                axis as char
+            );
+        }
+    }
+
+    #[test]
+    fn the_spans_of_a_block_s_axes_each_against_its_travel() {
+        // iso_mill: X -500 to 500, Y -400 to 400, Z -300 to 100, no travel of B, no work
+        // offsets (each axis's position only goes to its span): Y spans 850 and Z 450 at the
+        // second block, each said at its word; X 1050 at the third
+        let moves = "G00 X-400. Y-300. Z-100.\nX300. Y550. Z350. B10.\nX650.";
+        assert_eq!(
+            at(iso_mill(), moves, Rule::TravelExceeded),
+            [(3, 7), (3, 13), (4, 1)]
+        );
+        // at a bound of the span so far, and back inside: nothing more
+        let bounds = "G00 X-400. Y-300.\nX400. Y300.\nX-400. Y0\nX0 Y-300.";
+        assert_eq!(at(iso_mill(), bounds, Rule::TravelExceeded), []);
     }
 
     #[test]

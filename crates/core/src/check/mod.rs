@@ -514,6 +514,8 @@ struct Facts<'b> {
     g_count: usize,
     moved: [u8; 9],
     n_moved: usize,
+    /// The places in [`AXES`] of `moved` ([`crate::modal::axis_places`]), a bit each.
+    places: u32,
 }
 
 /// What the rules read of the modal state before a block (the arc's start point, the length
@@ -595,21 +597,23 @@ impl<'b> Facts<'b> {
     fn new(words: &'b [Word<'b>], values: &BlockValues, dwell: &[u8]) -> Facts<'b> {
         let places = crate::modal::axis_places(values.given());
         // (a block without G04: the axes of its letters, looked up by their places)
-        let (moved, n_moved) = if values.has_g(4) {
+        let (moved, n_moved, places) = if values.has_g(4) {
             let mut moved = [0u8; 9];
             let mut n_moved = 0;
+            let mut kept = 0;
             // (the axes in the block's letters alone: most blocks write two or three of nine)
             for i in crate::modal::places(places) {
                 let a = AXES[i];
                 if !dwell.contains(&a) {
                     moved[n_moved] = a;
                     n_moved += 1;
+                    kept |= 1 << i;
                 }
             }
-            (moved, n_moved)
+            (moved, n_moved, kept)
         } else {
             let (moved, n_moved) = MOVED[places as usize];
-            (moved, usize::from(n_moved))
+            (moved, usize::from(n_moved), places)
         };
         Facts {
             words,
@@ -617,6 +621,7 @@ impl<'b> Facts<'b> {
             g_count: values.gs().len(),
             moved,
             n_moved,
+            places,
         }
     }
 
@@ -636,6 +641,11 @@ impl<'b> Facts<'b> {
     /// The axes the block moves, in the order of [`AXES`].
     fn moved(&self) -> &[u8] {
         &self.moved[..self.n_moved]
+    }
+
+    /// The places in [`AXES`] of the axes the block moves ([`Facts::moved`]), a bit each.
+    fn moved_places(&self) -> u32 {
+        self.places
     }
 }
 
