@@ -372,8 +372,14 @@ def test_a_lathe_tool_past_the_largest_is_said_with_its_offset_split_off():
     # digits, so its tool part never passes it)
     far = "%\nO1\nG21 G99 G00 X1. Z1.\nT1000001\nM30\n%\n"
     got = [m for r, m in messages(far, "fanuc-lathe") if r == "TG604"]
+    # (the file's first finding against the built-in profile's machine says it is a sample's)
     assert got == ["tool 10000 (T1000001: tool 10000, offset 01) above the largest tool number "
-                   "9999"]
+                   "9999 (the built-in profile's limits are a typical machine of the family: a "
+                   "profile of your machine, `base` and its [limits], checks against yours; said "
+                   "once)"]
+    second = far.replace("M30", "T1000002\nM30")
+    got = [m for r, m in messages(second, "fanuc-lathe") if r == "TG604"]
+    assert len(got) == 2 and got[1].endswith("number 9999"), got
 
 
 # -- values past the word format (TG208) ---------------------------------------------------------

@@ -1321,7 +1321,7 @@ impl Checker {
                              {low} to {high}",
                             axis as char
                         );
-                        self.report(Rule::TravelExceeded, message, line, col(axis));
+                        self.report_limit(Rule::TravelExceeded, message, line, col(axis));
                     }
                     continue;
                 }
@@ -1368,7 +1368,7 @@ impl Checker {
                                 round6(machine_at),
                                 round6(at)
                             );
-                            self.report(Rule::TravelExceeded, message, line, col(axis));
+                            self.report_limit(Rule::TravelExceeded, message, line, col(axis));
                             said_outside = true;
                         }
                         self.outside[i] = out;
@@ -1449,9 +1449,9 @@ impl Checker {
                         "{message}: a FANUC clamps a cutting feed to its maximum (no alarm), so \
                          the cut runs slower than programmed"
                     );
-                    self.report(Rule::FeedClamped, message, line, col(b'F'));
+                    self.report_limit(Rule::FeedClamped, message, line, col(b'F'));
                 } else {
-                    self.report(Rule::FeedTooHigh, message, line, col(b'F'));
+                    self.report_limit(Rule::FeedTooHigh, message, line, col(b'F'));
                 }
             }
         }
@@ -1503,7 +1503,7 @@ impl Checker {
                         ),
                         None => format!("tool {tool} above the largest tool number {top}"),
                     };
-                    self.report(Rule::ToolOutOfRange, message, line, col(b'T'));
+                    self.report_limit(Rule::ToolOutOfRange, message, line, col(b'T'));
                 }
             }
         }
@@ -1577,7 +1577,26 @@ impl Checker {
             round6(least),
             round6(most)
         );
-        self.report(Rule::TravelExceeded, message, line, column);
+        self.report_limit(Rule::TravelExceeded, message, line, column);
+    }
+
+    /// A finding against the profile's machine (TG601, TG602, TG604, TG605): the file's first
+    /// on a built-in profile says that the travel and maxima are the profile's sample machine
+    /// of the family, not the user's (audit 37: a VF-6 class table, a 30-tool changer and a
+    /// Robodrill checked against the built-in profiles' typical machines).
+    #[cold]
+    fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+        let message = if self.config.limits_builtin && !self.limits_hint_said {
+            self.limits_hint_said = true;
+            format!(
+                "{message} (the built-in profile's limits are a typical machine of the family: \
+                 a profile of your machine, `base` and its [limits], checks against yours; \
+                 said once)"
+            )
+        } else {
+            message
+        };
+        self.report(rule, message, line, column);
     }
 
     /// What a limit's message adds where the program has written no units code and the

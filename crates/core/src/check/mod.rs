@@ -752,6 +752,8 @@ pub struct Checker {
     /// The first arc error (TG403, TG405) after TG201 said that whole numbers without a point
     /// are read in least increments names that as a likely cause, once per file.
     arc_cause_said: bool,
+    /// The first finding against a built-in profile's machine says its limits are a sample's.
+    limits_hint_said: bool,
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
@@ -1074,6 +1076,7 @@ impl Checker {
             styles_implicit: false,
             mixed_reported: false,
             arc_cause_said: false,
+            limits_hint_said: false,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),
