@@ -721,7 +721,10 @@ class _Planner:
             out.append(" ".join(selected))
         # 3. spindle and coolant
         if s.speed_limit is not None:
-            clamp = "G50" if self.walker.g50_lathe else "G92"
+            # the code the modal state read it from (ModalSettings::s_limit): a SINUMERIK's
+            # G26 S in its own language (review 38, finding 1)
+            clamp = ("G50" if self.walker.g50_lathe
+                     else "G26" if self.profile.dialect.family == "sinumerik" else "G92")
             out.append(f"{clamp} {self.word('S', s.speed_limit)}")
         spindle = []
         if s.speed is not None:

@@ -2577,3 +2577,31 @@ def test_a_modal_group_conflict_in_another_program_of_the_file_does_not_refuse()
     lines = text.split("\n")
     at = lines.index("N7 G01 X50.", 10) + 1
     assert plan(text, at).preamble
+
+
+def test_a_spindle_speed_limit_is_restored_as_a_limit_and_a_speed_as_a_speed():
+    """Review 38, finding 1: the restart's modal state and the check read a block's S by one
+    rule (ModalSettings::s_limit). A SINUMERIK's `G26 S3000` is the upper limit: the preamble
+    started the spindle at 3000 (three times the cutting speed); a Haas's or LinuxCNC's
+    `G92 S8000 M03` is a speed (their G92 only sets coordinates): the preamble started it at
+    the speed before, S1000, and wrote `G92 S8000`, which LinuxCNC refuses."""
+    sinumerik = load_profile("sinumerik-840d")
+    text = ("G71 G90 G17 G54 G0 X0 Y0 Z100\nT1 D1\nM6\nS1000 M3\nG0 Z50\nG26 S3000\n"
+            "G1 X10 F100\nG1 X20\nG1 X30\nM30\n")
+    pre = plan(text, 8, sinumerik).preamble
+    assert "G26 S3000" in pre and any("S1000 M03" in b for b in pre), pre
+    assert not any("S3000 M03" in b or "G92" in b for b in pre), pre
+    lower = plan(text.replace("G26 S3000", "G25 S50"), 8, sinumerik).preamble
+    assert any("S1000 M03" in b for b in lower) and not any("S50" in b for b in lower), lower
+    haas = ("%\nO1\nG20 G90 G54 G0 X0 Y0 Z1.\nS1000 M03\nG1 Z-0.1 F10.\nG92 S8000 M03\n"
+            "G1 X1.\nG1 X2.\nG1 X3.\nM30\n%\n")
+    pre = plan(haas, 8, load_profile("haas-mill")).preamble
+    assert any("S8000 M03" in b for b in pre) and not any("G92" in b for b in pre), pre
+    lcnc = ("G21 G90 G17 G54\nG0 X0 Y0 Z10\nS1000 M3\nG1 Z-1 F100\nG1 X5\nG92 S8000 M3\n"
+            "G1 X10\nG1 X20\nG1 X30\nM2\n")
+    pre = plan(lcnc, 8, load_profile("linuxcnc")).preamble
+    assert any("S8000" in b and "M03" in b for b in pre) and not any("G92" in b for b in pre), pre
+    # a FANUC mill's G92 S is the clamp: restored as one, the speed as before
+    fanuc = haas.replace("G92 S8000 M03", "G92 S8000")
+    pre = plan(fanuc, 8, load_profile("fanuc-mill")).preamble
+    assert "G92 S8000" in pre and any("S1000 M03" in b for b in pre), pre

@@ -323,6 +323,7 @@ impl ConvertConfig {
                 centre_codes: false,
                 heidenhain: from == Family::Heidenhain,
                 lap: false,
+                g92_clamps: true,
                 sinumerik_units: false,
                 units_kept_at_end: true,
                 dwell: crate::word::dwell_words(from, false),

@@ -119,6 +119,8 @@ impl Machine {
             heidenhain: family == Family::Heidenhain,
             // an Okuma lathe's G80-G89 are the LAP's contours and cycle calls
             lap: family == Family::Okuma && spec.lathe,
+            g92_clamps: !(spec.control == Control::Haas
+                || matches!(family, Family::Okuma | Family::LinuxCnc)),
             units_kept_at_end: spec.units_kept_at_end,
             dwell: crate::word::dwell_words(family, fanuc_lathe),
             arc_radius: crate::word::arc_radius(family, spec.lathe),

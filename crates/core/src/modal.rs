@@ -368,6 +368,11 @@ pub struct ModalSettings {
     /// An Okuma lathe: G80-G87 define contours and call the LAP cycles (Lathe
     /// Auto-Programming), no drilling cycles; the contour's blocks are the cycle's data.
     pub lap: bool,
+    /// A mill's G92 S is the spindle speed clamp (a FANUC mill, ISO 6983-1, a SINUMERIK's ISO
+    /// mode); a Haas, Okuma or LinuxCNC mill's G92 only sets coordinates, and an S beside it
+    /// is a speed (their code tables; review 38, finding 1: the restart's preamble took a
+    /// Haas's `G92 S8000 M03` for a clamp and started the spindle at the speed before).
+    pub g92_clamps: bool,
     /// Sinumerik: the units codes G70/G71 set the units of lengths only (the feed stays in the
     /// basic system, `default_units`), and G700/G710 set both (Programming Manual
     /// Fundamentals, "Inch or metric dimensions").
@@ -441,13 +446,27 @@ impl ModalSettings {
     }
 
     /// The code whose S is the spindle speed clamp under G96: G50 on a Fanuc, Haas or Okuma
-    /// lathe (OSP-P200L 5238-E: G50 S "maximum spindle speed"), G92 elsewhere (ISO 6983-1).
-    pub fn clamp_code(&self) -> i64 {
+    /// lathe (OSP-P200L 5238-E: G50 S "maximum spindle speed"), G92 elsewhere (ISO 6983-1),
+    /// none on a mill whose G92 only sets coordinates ([`Self::g92_clamps`]).
+    pub fn clamp_code(&self) -> Option<i64> {
         if self.fanuc_lathe || self.lap {
-            50
+            Some(50)
+        } else if self.g92_clamps {
+            Some(92)
         } else {
-            92
+            None
         }
+    }
+
+    /// Whether the block's S is a limit of the spindle's speed, not its speed: the clamp
+    /// code's ([`Self::clamp_code`]), or a SINUMERIK's G26 S (upper) or G25 S (lower limit;
+    /// Programming Manual Fundamentals, "Programmable spindle speed limitation": review 38,
+    /// finding 1, a restart after `G26 S3000` started the spindle at 3000). The upper one is
+    /// the state's `speed_limit`.
+    pub fn s_limit(&self, v: &BlockValues) -> (bool, bool) {
+        let sinumerik = self.family == Family::Sinumerik;
+        let upper = self.clamp_code().is_some_and(|c| v.has_g(c)) || sinumerik && v.has_g(26);
+        (upper, upper || sinumerik && v.has_g(25))
     }
 
     /// What the block's non-modal code, if it has one that takes the axis words on this
@@ -651,15 +670,15 @@ impl ModalMachine {
                 s.feed = None;
                 s.unknown |= bit(b'F');
             }
-            let clamp = self.settings.clamp_code();
+            let (upper, limit) = self.settings.s_limit(v);
             if let Some(speed) = v.get(b'S').filter(|_| !dwell(b'S')) {
-                if v.has_g(clamp) {
+                if upper {
                     s.speed_limit = Some(speed);
-                } else {
+                } else if !limit {
                     s.speed = Some(speed);
                     s.unknown &= !bit(b'S');
                 }
-            } else if unknown(b'S') && !v.has_g(clamp) && !dwell(b'S') {
+            } else if unknown(b'S') && !limit && !dwell(b'S') {
                 s.speed = None;
                 s.unknown |= bit(b'S');
             }
@@ -1141,6 +1160,7 @@ mod tests {
             centre_codes: false,
             heidenhain: false,
             lap: false,
+            g92_clamps: true,
             units_kept_at_end: false,
             dwell: crate::word::dwell_words(crate::lex::Family::Iso, false),
             arc_radius: b'R',

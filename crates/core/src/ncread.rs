@@ -1437,6 +1437,7 @@ mod tests {
             centre_codes: false,
             heidenhain: false,
             lap: false,
+            g92_clamps: true,
             sinumerik_units: false,
             units_kept_at_end: true,
             dwell: crate::word::dwell_words(Family::MacroB, fanuc_lathe),

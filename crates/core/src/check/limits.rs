@@ -1407,14 +1407,9 @@ impl Checker {
         // state's speed limit) turns nothing: a clamp above the maximum never bites (audit 37);
         // but a Haas, Okuma or LinuxCNC mill's G92 sets coordinates only (their profiles'
         // code tables), and an S beside it is a speed (review 37, finding 4)
-        let clamp = self.machine.settings.clamp_code();
-        let clamps = clamp == 50
-            || !(self.config.haas
-                || matches!(self.config.family, Family::Okuma | Family::LinuxCnc));
-        // (a SINUMERIK's G26 S is its programmable upper spindle speed limit: the profile's
-        // G26, review 37, finding 5)
-        let sinumerik_limit = self.config.family == Family::Sinumerik && v.has_g(26);
-        let s = s.filter(|_| !(clamps && v.has_g(clamp) || sinumerik_limit));
+        // (a SINUMERIK's G25/G26 S are its programmable spindle speed limits: review 37,
+        // finding 5; the modal state reads them so too, one rule: ModalSettings::s_limit)
+        let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {

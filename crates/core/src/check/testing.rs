@@ -185,6 +185,7 @@ pub(super) fn iso_mill() -> Config {
             centre_codes: false,
             heidenhain: false,
             lap: false,
+            g92_clamps: true,
             sinumerik_units: false,
             units_kept_at_end: false,
             dwell: crate::word::dwell_words(Family::Iso, false),
