@@ -923,6 +923,13 @@ def test_an_endsub_naming_another_subroutine_does_not_close_the_file_s_definitio
     sub_file = found("o<j> sub\nG1 X1 F100\no<k> endsub\n", "linuxcnc")
     assert [f for f in sub_file if f[1] != "info"] == [("TG138", "warning", 3)]
     assert not errors("o<j> sub\nG1 X1 F100\nO<J> endsub\n", "linuxcnc")
+    # (review 38, finding 2) the file's end after it may carry a sequence number or other M
+    # codes: M2 among them still ends it
+    for end in ("M2", "M5 M2", "N5 M2", "M2.0", "M30"):
+        file = found(f"o<j> sub\nG1 X1 F100\no<k> endsub\n{end}\n", "linuxcnc")
+        assert [f for f in file if f[1] != "info"] == [("TG138", "warning", 3)], end
+    assert ("TG114", 1) in errors("o<j> sub\nG1 X1 F100\no<k> endsub\nG0 X2\nM2\n",
+                                  "linuxcnc")
 
 
 def test_a_macro_b_parameter_is_refused_for_a_family_that_does_not_read_it():

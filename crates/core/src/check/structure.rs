@@ -633,17 +633,19 @@ impl Checker {
             }
             None => None,
         };
-        let program_end = b.statements.is_empty()
-            && b.words.iter().all(|w| {
-                w.letter == b'M'
-                    && w.expression.is_empty()
-                    && matches!(
-                        std::str::from_utf8(w.number)
-                            .ok()
-                            .and_then(|n| n.parse::<u32>().ok()),
-                        Some(2 | 30)
-                    )
+        // (an M2 or M30 among the block's M codes, beside a sequence number and other M codes:
+        // `M5 M2`, `N5 M2`, `M2.0`, review 38, finding 2)
+        let program_end = b.statements.is_empty() && {
+            let mut ends = false;
+            let plain = b.words.iter().all(|w| {
+                let number = std::str::from_utf8(w.number)
+                    .ok()
+                    .and_then(|n| n.parse::<f64>().ok());
+                ends |= w.letter == b'M' && matches!(number, Some(n) if n == 2.0 || n == 30.0);
+                w.expression.is_empty() && matches!(w.letter, b'M' | b'N') && number.is_some()
             });
+            plain && ends
+        };
         // (the return that ends the file: nothing after it but M2/M30)
         if !program_end && self.sub_returns.2 != b.line {
             self.sub_returns.2 = 0;
