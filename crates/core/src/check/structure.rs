@@ -1508,7 +1508,7 @@ impl Checker {
                 "line {first} and the lines after it before the {label} sub on line {sub} \
                  never run when the file is called: {label} call opens it and skips to its \
                  sub (rs274ngc control_back_to; read_items reads only O-word lines while it \
-                 skips), so what they set is not set (run on its own, the file has no M2)"
+                 skips), so what they set is not set"
             );
             self.report(Rule::NotRead, message, first, 1);
         }
