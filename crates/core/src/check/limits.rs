@@ -1403,12 +1403,9 @@ impl Checker {
         // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
         let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
         let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
-        // the S of the spindle speed clamp's code (G50 on a lathe, G92 elsewhere: the modal
-        // state's speed limit) turns nothing: a clamp above the maximum never bites (audit 37);
-        // but a Haas, Okuma or LinuxCNC mill's G92 sets coordinates only (their profiles'
-        // code tables), and an S beside it is a speed (review 37, finding 4)
-        // (a SINUMERIK's G25/G26 S are its programmable spindle speed limits: review 37,
-        // finding 5; the modal state reads them so too, one rule: ModalSettings::s_limit)
+        // a spindle speed limit's S (the clamp code's, a SINUMERIK's G25/G26 S) turns nothing:
+        // a limit above the maximum never bites (audit 37); the modal state reads a block's S
+        // by the same rule, ModalSettings::s_limit
         let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
