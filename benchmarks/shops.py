@@ -98,6 +98,25 @@ RELABELLED = {
     "JonahTsai__F16__carriage-slot.nc": "?",
 }
 
+# Programs whose set's description calls them mill programs, while their own words are a
+# lathe's (audit 37, finding G): the family stays, the lathe profile is taken. The reason is
+# added to the description (``entries``), where ``profile_for`` reads "turning".
+# - eight mark-brannan Haas programs: ``G50 S2000`` (the lathe's spindle speed clamp),
+#   ``G96`` and ``T0100``/``T0101`` (a lathe's tool and offset, read as tool 100 on a mill);
+# - two wolkolak FANUC programs: ``G18 G99``, ``G71 U.. R..`` (the lathe's stock removal
+#   cycle) and ``T2002``, whose X is a diameter.
+_HAAS_LATHE = "G50 S, G96 and T0100/T0101 are a Haas lathe's"
+_FANUC_LATHE = "G18 G99, G71 U R (stock removal) and T2002 are a FANUC lathe's"
+TURNED = {
+    **{f"mark-brannan__mfgt_haas_cnc_class_assignments__SB_{name}.nc": _HAAS_LATHE
+       for name in ("SC_spacer12_Op2_v11_09a", "SC_spacer25_Op2_v11_15",
+                    "SClampDriveClevisOp2_v11_15", "SClampEndClevisOp1_v11_15",
+                    "SClampEndClevisOp2_v11_15", "SClampSpacer625Op1_v11_15",
+                    "SClampSpacer880Op1_v11_15", "SClampSpacer890Op1_v11_15")},
+    "wolkolak__EZ_machining__examples__O1151.MPF": _FANUC_LATHE,
+    "wolkolak__EZ_machining__examples__O6233_musor.MPF": _FANUC_LATHE,
+}
+
 
 @dataclass
 class Result:
@@ -125,12 +144,15 @@ class Result:
 
 
 def entries(shops: Path) -> list[tuple[str, str, str]]:
-    """(file, family, description) of families.tsv, the family corrected by RELABELLED."""
+    """(file, family, description) of families.tsv, the family corrected by RELABELLED and
+    the description by TURNED."""
     out = []
     for line in (shops / "families.tsv").read_text(encoding="utf-8").splitlines():
         if not line.strip():
             continue
         family, name, description = (line.split("\t") + ["", ""])[:3]
+        if name in TURNED:
+            description = f"{description}; turning: {TURNED[name]}"
         out.append((name, RELABELLED.get(name, family), description))
     return out
 
