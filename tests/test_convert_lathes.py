@@ -559,3 +559,25 @@ def test_a_fanuc_mill_feed_per_revolution_has_its_own_format(tmp_path, src, unit
         assert [line for line, _ in found] == [6, 7]
         assert "the format F034 holds 4" in found[0][1]
         assert "the format F052 holds 2" in found[1][1]
+
+
+@pytest.mark.parametrize("profile, name, text, limit, speed", [
+    # OSP-P200L 5238-E: G50 S is the maximum spindle speed (it was converted as a surface
+    # speed: G50 S2500 became S8202 rpm)
+    ("okuma-lathe", "o.min", "$O1.MIN%\nG50 S2000\nG96 S150 M03\nG50 S2500\nG00 X50. Z2.\nM02\n",
+     "G50 S2500", "G96 S492 M03"),
+    # FANUC lathe: G50 S is the clamp
+    ("fanuc-lathe", "f.nc", "%\nO1\nG21 G99\nG50 S2000\nG96 S150 M03\nG50 S2500\nM30\n%\n",
+     "G50 S2500", "G96 S492 M03"),
+    # LinuxCNC: G92 only offsets the coordinates; an S beside it is the speed in force, here
+    # a surface speed (rs274ngc: S under G96 is feet or metres a minute)
+    ("linuxcnc", "l.ngc", "G21 G90\nG96 D2000 S150 M03\nG92 X0 S200\nG0 X25.\nM2\n",
+     "G92 X0 S656.167979", "G96 D2000 S492.125984 M03"),
+])
+def test_a_spindle_speed_limit_stays_in_rpm_and_a_speed_beside_a_g92_converts(
+        tmp_path, profile, name, text, limit, speed):
+    """An S that limits the spindle's speed is revolutions a minute in either units; the
+    converter takes it by the check's and the restart's rule (``ModalSettings::s_limit``),
+    where it once had its own: every G92 S was a clamp and an Okuma lathe's G50 S none."""
+    out = convert(tmp_path, text, profile, "inch", name=name).splitlines()
+    assert limit in out and speed in out

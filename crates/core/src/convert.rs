@@ -6,7 +6,7 @@
 //!
 //! Units follow the modal state of each block (see `docs/convert.md`): X Y Z U V W and I J K
 //! are lengths except in a G04 dwell; F is one under G94/G95, never G93; S under G96 but not
-//! G92 S; P Q R where the source profile says so; parameters where the analysis of the
+//! an S that limits the spindle's speed (`ModalSettings::s_limit`); P Q R where the source profile says so; parameters where the analysis of the
 //! program ([`crate::lengths`]) proved them lengths. Arithmetic is on integers: a value
 //! `m * 10^-k` times the factor `num/den` is rounded to the target resolution `10^-after` with
 //! one division, under the rounding policy, and the largest rounding per address is kept. In
@@ -857,6 +857,10 @@ pub struct Converter {
     /// subprogram's is a surface speed or a spindle speed by its caller's mode, which the text
     /// does not show ([`Converter::inherited_speed`]).
     inherited_speed: Option<(String, usize, usize)>,
+    /// The block's S limits the spindle's speed (G50 S on a lathe, G92 S on a mill whose G92
+    /// clamps, a SINUMERIK's G25/G26 S: `ModalSettings::s_limit`, the check's and the
+    /// restart's rule): revolutions per minute in either units, never a surface speed.
+    s_limit: bool,
     /// Where the file's next program begins (the checker's split of a file into programs).
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
@@ -1362,6 +1366,7 @@ impl Converter {
             inherited: None,
             own_spindle: false,
             inherited_speed: None,
+            s_limit: false,
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
@@ -2673,6 +2678,7 @@ impl Converter {
                 _ => {}
             }
         }
+        self.s_limit = self.c.src_modal.s_limit_with(|g| gs.contains(&g)).1;
         let mut units_before = self.modal.state.units;
         let mut feed_before = self.modal.state.feed_units;
         if self.c.units.is_some() {
@@ -3283,7 +3289,7 @@ impl Converter {
                 && self.length != ONE
                 && !self.own_spindle
                 && self.inherited_speed.is_none()
-                && !set_position
+                && !self.s_limit
                 && !(dwell && self.c.src_modal.dwell.contains(&letter))
             {
                 let column = crate::text::column(b.text, w.start);
@@ -6282,7 +6288,7 @@ impl Converter {
                 Kind::Feed if self.modal.state.feed_mode == 93 => factor = ONE,
                 Kind::Feed => factor = self.feed,
                 Kind::Speed => {
-                    factor = if self.modal.state.spindle_mode == 96 && !set_position {
+                    factor = if self.modal.state.spindle_mode == 96 && !self.s_limit {
                         self.cutting_rate_factor()?
                     } else {
                         ONE

@@ -464,9 +464,16 @@ impl ModalSettings {
     /// finding 1, a restart after `G26 S3000` started the spindle at 3000). The upper one is
     /// the state's `speed_limit`.
     pub fn s_limit(&self, v: &BlockValues) -> (bool, bool) {
+        self.s_limit_with(|g| v.has_g(g))
+    }
+
+    /// [`Self::s_limit`] of a block whose G codes `has_g` answers for: the converter's reader
+    /// (`ncread`) asks it too, so that an S it leaves unconverted under G96 is the one the
+    /// check and the restart take for a limit.
+    pub fn s_limit_with(&self, has_g: impl Fn(i64) -> bool) -> (bool, bool) {
         let sinumerik = self.family == Family::Sinumerik;
-        let upper = self.clamp_code().is_some_and(|c| v.has_g(c)) || sinumerik && v.has_g(26);
-        (upper, upper || sinumerik && v.has_g(25))
+        let upper = self.clamp_code().is_some_and(&has_g) || sinumerik && has_g(26);
+        (upper, upper || sinumerik && has_g(25))
     }
 
     /// What the block's non-modal code, if it has one that takes the axis words on this

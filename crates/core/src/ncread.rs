@@ -535,16 +535,17 @@ impl Reader {
                 }
             }
         }
-        // G50 S on a Fanuc, Haas or Okuma lathe (5238-E), G92 S elsewhere
+        // an S that limits the spindle's speed, not the speed itself: the one rule of the
+        // check and the restart (ModalSettings::s_limit): G50 S on a Fanuc, Haas or Okuma
+        // lathe, G92 S on a mill whose G92 clamps, a SINUMERIK's G25/G26 S. (The reader's
+        // settings leave the LAP out of its modal rules, machine::read_settings, so an Okuma
+        // lathe's G50 is asked here.)
         let okuma_lathe = self.settings.lathe && self.settings.family == Family::Okuma;
-        let clamp_code = if self.settings.fanuc_lathe || okuma_lathe {
-            50
-        } else {
-            92
-        };
+        let clamp = okuma_lathe && gs.contains(&50)
+            || !okuma_lathe && self.settings.modal.s_limit_with(|g| gs.contains(&g)).1;
         let flags = BlockFlags {
             dwell: gs.contains(&4),
-            clamp: gs.contains(&clamp_code),
+            clamp,
             units_code: gs.iter().any(|&g| self.is_units_code(g)),
             ended: ms.contains(&2) || ms.contains(&30),
             resets: false,
@@ -1543,6 +1544,19 @@ mod tests {
         assert!(flags.dwell && words[1].kind == Kind::Number);
         let (words, flags) = read(&mut r, "G50 S2000");
         assert!(flags.clamp && flags.resets && words[1].kind == Kind::Number);
+        // a mill whose G92 clamps (a FANUC's): G92 S is the clamp; on a Haas, Okuma or
+        // LinuxCNC mill G92 only sets coordinates, and its S is a speed (ModalSettings::s_limit)
+        let mut mill = reader(false);
+        assert!(read(&mut mill, "G92 S3000").1.clamp);
+        let mut haas = reader(false);
+        haas.settings.modal.g92_clamps = false;
+        assert!(!read(&mut haas, "G92 S3000").1.clamp);
+        // a SINUMERIK's G26 S and G25 S are the upper and lower limits
+        let mut sinumerik = reader(false);
+        sinumerik.settings.modal.family = Family::Sinumerik;
+        assert!(read(&mut sinumerik, "G26 S3000").1.clamp);
+        assert!(read(&mut sinumerik, "G25 S100").1.clamp);
+        assert!(!read(&mut sinumerik, "G97 S100").1.clamp);
         let (words, _) = read(&mut r, "G99 F0.2");
         assert!(words[1].per_revolution && r.feed_mode == 95);
         let (words, _) = read(&mut r, "R1. P2. Q#1 X1=2");
