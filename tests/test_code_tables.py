@@ -476,6 +476,14 @@ def test_g91_on_a_fanuc_lathe_of_code_system_a_warns_and_moves_stay_absolute():
     # Okuma OSP: the lathe's units are a parameter (G70 none), the mill has no G96
     ("okuma-lathe", "O1\nG00 X50. Z2.\nG70\nM02\n", 3, "G70"),
     ("okuma-mill", "O1\nG00 X0 Y0\nG96 S100\nM02\n", 3, "G96"),
+    # LinuxCNC: G06, G44, G60 and G68.2 are none of rs274's codes ("Unknown g code used"), but
+    # its Remap manual opens every G code of G0-G99.9 its tables leave blank to a
+    # configuration's REMAP ("Currently unallocated G-codes"; rs274 2.9 runs a remapped G6,
+    # G44, G60 and G68.2): the check cannot see the INI file
+    ("linuxcnc", linuxcnc("G6 X1 Y1 F100"), 2, "G6"),
+    ("linuxcnc", linuxcnc("G44 H1"), 2, "G44"),
+    ("linuxcnc", linuxcnc("G60"), 2, "G60"),
+    ("linuxcnc", linuxcnc("G68.2 X0 Y0 Z0 I0 J45 K0"), 2, "G68.2"),
 ])
 def test_a_code_the_family_list_lacks_is_a_warning_naming_it(profile, program, line, code):
     hits = fired(program, profile, "TG307")
@@ -485,10 +493,10 @@ def test_a_code_the_family_list_lacks_is_a_warning_naming_it(profile, program, l
 
 
 @pytest.mark.parametrize(("profile", "program", "line", "code"), [
-    # LinuxCNC's rs274: "Unknown g code used" (G06, G44, G60 are none of its codes)
-    ("linuxcnc", linuxcnc("G6 X1 Y1 F100"), 2, "G6"),
-    ("linuxcnc", linuxcnc("G44 H1"), 2, "G44"),
-    ("linuxcnc", linuxcnc("G60"), 2, "G60"),
+    # LinuxCNC's rs274 reads no G code from G100 on, nor one with two decimals, even where a
+    # REMAP names it ("G-code out of range"; the Remap manual's tables end at G99.9)
+    ("linuxcnc", linuxcnc("G100"), 2, "G100"),
+    ("linuxcnc", linuxcnc("G68.25 X0"), 2, "G68.25"),
     # SINUMERIK in Siemens mode: no G6 (ISO parabola) nor G92 (ISO preset) in its G list
     ("sinumerik-840d", "N10 G0 X0 Y0\nN20 G6 X1 Y1\nN30 M30\n", 2, "G6"),
     # HEIDENHAIN ISO: no G94/G95 (F is mm/min), no G64
@@ -735,3 +743,27 @@ def test_after_g268_the_operator_is_told_over_travel_is_not_checked_by_the_offse
     # without G268 the move is over-travel
     plain = haas_mill("G00 X1. Y0.\nG00 X55. Y0.")
     assert [f.rule for f in check_text(plain, wo) if f.rule == "TG601"] == ["TG601"]
+
+
+@pytest.mark.parametrize("profile, program", [
+    # a FANUC's G117 is a macro call where parameters 6050-6059 make it one: X900. is its
+    # argument (#24), not a position, and where X stands after it is not known
+    ("fanuc-mill", "%\nO1\nG21 G90 G54 G17\nG0 X0 Y0 Z5.\nG117 X900. Y0\nG1 X-700. F100.\n"
+     "M30\n%\n"),
+    # a LinuxCNC configuration's REMAP of G68.2 takes X Y Z I J K as its words
+    ("linuxcnc", "G21 G90 G54 G17\nG0 X0 Y0 Z5.\nG68.2 X900. Y0 Z0 I0 J45 K0\n"
+     "G1 X-700. F100.\nM2\n"),
+])
+def test_the_axis_words_of_a_code_the_list_lacks_are_no_positions(profile, program):
+    """Issue 32, item 4: where a part of the program starts at a position the checker cannot
+    know (a macro, a remap), no geometry rule judges it. The code is TG307; the X900 beside
+    it spans no travel with the X-700 after it (X travel -762 to 762 on fanuc-mill)."""
+    found = check_text(program, load_profile(profile))
+    assert [f.rule for f in found if f.severity == "warning"] == ["TG307"], found
+    assert [f for f in found if f.rule == "TG601"] == [], found
+    # a move the program makes itself is judged: X-700 then X900 in one program still spans
+    # (the linuxcnc profile has no travel to judge it against)
+    if profile == "fanuc-mill":
+        moved = program.replace("G1 X-700. F100.", "G1 X-700. F100.\nX900.")
+        assert [f.rule for f in check_text(moved, load_profile(profile))
+                if f.rule == "TG601"] == ["TG601"]

@@ -8,6 +8,8 @@ from __future__ import annotations
 import pytest
 
 from formats.errors import ConversionError
+from formats.profile import load_profile
+from postproc.check import check_text
 
 from .test_convert_target_reads import convert, target_errors
 
@@ -222,16 +224,19 @@ HAAS = "%\nO1000\nG21 G17 G40\n{}\nG0 X0 Y0\nM30\n%\n"
 @pytest.mark.parametrize("code", ["G15", "G16", "G45", "G46", "G11", "G39"])
 def test_a_code_neither_table_lists_is_refused_for_linuxcnc(code, tmp_path):
     from tests.conftest import rs274_output
-    # LinuxCNC refuses it as written (rs274, and its check's TG306)
-    ran = rs274_output(tmp_path, f"G21 G17 G40\n{code}\nG0 X0 Y0\nM2\n")
-    assert "Unknown g code used" in ran
-    assert any(e.startswith(f"2:TG306 {code}") for e in target_errors(
-        f"G21 G17 G40\n{code}\nG0 X0 Y0\nM2\n", "linuxcnc"))
+    # LinuxCNC refuses it as written (rs274), unless a configuration remaps it (its check's
+    # TG307, a warning naming REMAP): a remap would be the configuration's own function, no
+    # reason to take it for the source's
+    text = f"G21 G17 G40\n{code}\nG0 X0 Y0\nM2\n"
+    assert "Unknown g code used" in rs274_output(tmp_path, text)
+    assert not target_errors(text, "linuxcnc")
+    warned = [f for f in check_text(text, load_profile("linuxcnc")) if f.rule == "TG307"]
+    assert len(warned) == 1 and "REMAP" in warned[0].message, warned
     e = refusal(HAAS.format(code), "haas-mill", "linuxcnc")
     assert (e.line, e.column) == (4, 1), e
     assert e.message.startswith(f"{code}: neither the source's nor the target's profile lists "
                                 "this code, and the target control alarms on a G code its "
-                                "table lacks (its check: TG306"), e.message
+                                "table lacks unless its configuration remaps it"), e.message
 
 
 def test_a_code_neither_table_lists_is_refused_for_sinumerik_and_carried_for_iso():

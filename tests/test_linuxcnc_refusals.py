@@ -285,10 +285,18 @@ def test_linuxcnc_runs_the_same_words_where_a_code_uses_them(tmp_path, body):
     assert "PROGRAM_END" in out, out
 
 
-def test_a_block_with_a_code_rs274_lacks_is_refused_for_the_code_alone():
-    """rs274 stops at `G41.2` while it reads the block ("Unknown g code used"), before it checks
-    the block's words: the D beside it (a Tormach post's) is not refused a second time."""
-    found = errors(program("G1 G41.2 X1 Y1 D4"))
+def test_a_block_with_a_code_rs274_lacks_is_told_for_the_code_alone():
+    """Stock rs274 stops at `G41.2` while it reads the block ("Unknown g code used"), before it
+    checks the block's words; a configuration may REMAP it (G0-G99.9, the Remap manual's
+    "Currently unallocated G-codes"), and the remap takes the block's words: either way the D
+    beside it (a Tormach post's) is not refused. The code is TG307, the warning naming REMAP;
+    G100 and two decimals, which no REMAP reaches, are TG306."""
+    text = program("G1 G41.2 X1 Y1 D4")
+    assert errors(text) == []
+    warned = [(f.rule, f.line) for f in check_text(text, load_profile("linuxcnc"))
+              if f.severity == "warning"]
+    assert warned == [("TG307", 3)], warned
+    found = errors(program("G1 G41.25 X1 Y1 D4"))
     assert [(r, n) for r, n, _ in found] == [("TG306", 3)], found
 
 

@@ -164,9 +164,11 @@ def test_a_thread_by_a_code_the_list_lacks_is_no_rapid_and_is_said_to_be_unknown
     as anything else, and the statistics say from which line and why; the G00 after it is a
     known move again."""
     s = stats(SYSTEM_B_THREAD, "fanuc-lathe")
-    # G0 X15.405 Z-0.672 from the start (X0 Z0, radius 7.7025) and G0 X18. Z-18. from the
-    # G33's end: the two rapids alone
-    rapids = math.hypot(15.405 / 2, 0.672) + math.hypot((18 - 15.405) / 2, 18 - 17.328)
+    # G0 X15.405 Z-0.672 from the start (X0 Z0, radius 7.7025) and G0 X18. Z-18. after the
+    # G33, whose Z is a macro's argument where the parameters make it a call: where Z stands
+    # after it is not known, and is taken as at the program's start (0); X, not written in
+    # the G33 block, is where it was. The two rapids alone
+    rapids = math.hypot(15.405 / 2, 0.672) + math.hypot((18 - 15.405) / 2, 18)
     assert s.rapid_length == pytest.approx(rapids, abs=1e-3)
     assert s.feed_length == 0
     assert len(s.moves_not_known) == 1
@@ -209,12 +211,19 @@ def test_the_text_and_json_stats_name_the_line_the_moves_are_unknown_from(tmp_pa
     assert "from line 6: G33 is not in the family's code list" in found
 
 
-def test_where_the_control_alarms_on_a_code_it_lacks_no_macro_is_named() -> None:
-    """LinuxCNC's rs274 stops at a code it does not have (TG306): the note says it alarms,
-    not that a macro may run, and the feed move after it is not counted."""
-    s = stats("G21 G90 G94\nG0 X0 Y0 Z5\nG1 Z0 F100\nG44.1 X5\nM2\n", "linuxcnc")
+@pytest.mark.parametrize("code, does", [
+    # rs274 reads no G code from G100 on, even where a REMAP names it (TG306)
+    ("G100", "the control alarms"),
+    # G0-G99.9 that LinuxCNC's tables leave blank are open to a configuration's REMAP (TG307)
+    ("G44.1", "the control alarms, or runs the REMAP its configuration names"),
+])
+def test_where_the_control_alarms_on_a_code_it_lacks_no_macro_is_named(code, does) -> None:
+    """LinuxCNC's rs274 stops at a code it does not have, or runs the REMAP a configuration
+    gives it: the note says so, not that a macro may run, and the move after it is not
+    counted."""
+    s = stats(f"G21 G90 G94\nG0 X0 Y0 Z5\nG1 Z0 F100\n{code} X5\nM2\n", "linuxcnc")
     assert s.moves_not_known == [
-        "from line 4: G44.1 is not in the family's code list (the control alarms), so the "
+        f"from line 4: {code} is not in the family's code list ({does}), so the "
         "motion is not known until the next motion code the list holds; the moves in between "
         "are not in the path, its lengths, the cycle time or the plot"]
     assert s.feed_length == pytest.approx(5)

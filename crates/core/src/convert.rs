@@ -275,8 +275,9 @@ pub struct ConvertConfig {
     /// ([`crate::machine::differing_codes`]).
     pub listed_codes: Option<[CodeList; 2]>,
     /// The target control alarms on a G code its table lacks (`check::Config::alarm_g`:
-    /// LinuxCNC, rs274 "Unknown g code used"; a SINUMERIK; HEIDENHAIN; its check: TG306): a G
-    /// code outside both tables (`listed_codes`) is refused there, not carried with a note.
+    /// LinuxCNC, rs274 "Unknown g code used" unless a REMAP defines it; a SINUMERIK;
+    /// HEIDENHAIN): a G code outside both tables (`listed_codes`) is refused there, not
+    /// carried with a note.
     pub target_alarm_g: bool,
     /// The decimal G codes the source family's own list holds (`54.1`; a FANUC 0i-MF mill's
     /// has no `71.7`), as [`Dec`] writes them; None on an ISO 6983-1 profile, whose table
@@ -3848,13 +3849,20 @@ impl Converter {
                     && number.trim_start_matches('M').bytes().all(|c| c.is_ascii_digit() || c == b'.')
             });
             if unlisted && !m && self.c.target_alarm_g {
+                // (a LinuxCNC configuration may REMAP a G code of G0-G99.9 its tables leave
+                // blank, to a function of its own: no reason to take it for the source's)
+                let alarms = if self.c.target_family == Family::LinuxCnc {
+                    "alarms on a G code its table lacks unless its configuration remaps it \
+                     (LinuxCNC's rs274: \"Unknown g code used\"; its check: TG307 naming \
+                     REMAP, or TG306 past G99.9)"
+                } else {
+                    "alarms on a G code its table lacks (its check: TG306)"
+                };
                 return Err(ConvertError {
                     message: format!(
                         "{}: neither the source's nor the target's profile lists this code, and \
-                         the target control alarms on a G code its table lacks (its check: \
-                         TG306; LinuxCNC's rs274: \"Unknown g code used\"); on the source it is \
-                         an option or a macro call by parameter: write the target's code for its \
-                         function",
+                         the target control {alarms}; on the source it is an option or a macro \
+                         call by parameter: write the target's code for its function",
                         text(w.token)
                     ),
                     clause: "codes",

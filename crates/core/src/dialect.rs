@@ -1255,6 +1255,10 @@ pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
             "the NC decodes M0 M1 M2 M17 M30, M3 M4 M5 M6 M19 M40-M45 M70 itself and hands \
              any other M function to the PLC: the machine manufacturer's"
         }
+        (Family::LinuxCnc, b'G') => {
+            "rs274 refuses it ('Unknown g code used') unless the configuration remaps it \
+             (REMAP: the codes G0-G99.9 that LinuxCNC's tables leave blank are open to it)"
+        }
         (Family::LinuxCnc, b'M') => {
             "rs274 refuses it ('Unknown m code used', past M199 'M-code greater than 199') \
              unless the configuration remaps it (REMAP; M200-M999 are open to it) or, \
@@ -1266,6 +1270,16 @@ pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
         }
         _ => "the profile does not know it; the machine's configuration may",
     }
+}
+
+/// A G code the control's configuration may define (LinuxCNC: a REMAP). LinuxCNC's Remap
+/// manual, "Currently unallocated G-codes": a code of G0-G99.9 (one decimal at most) that its
+/// tables leave blank may be remapped; rs274 2.9 refuses G100 and above, and two decimals
+/// (G68.25), under a REMAP too ("G-code out of range"). A code its tables hold is no such
+/// code: the caller asks only of a code the profile lacks.
+pub fn g_code_remappable(family: Family, value: Dec) -> bool {
+    let v = value.normalized();
+    family == Family::LinuxCnc && v.scale <= 1 && v.mantissa >= 0 && v.trunc() < 100
 }
 
 /// An M code the control refuses whatever its configuration. LinuxCNC's rs274 reads an M code

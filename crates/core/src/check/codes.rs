@@ -157,11 +157,15 @@ impl Checker {
     }
 
     /// A decimal G code (`G91.1`) is a code of its own: TG306 where the profile has none and
-    /// the control alarms (LinuxCNC's `G41.2`: "Unknown g code used"), else TG301 (TG307).
+    /// the control alarms whatever its configuration (LinuxCNC's `G41.25`: two decimals), else
+    /// TG301 (TG307: LinuxCNC's `G41.2`, "Unknown g code used" unless a REMAP defines it).
     /// The code, where it is modal and so has a group to check.
     fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) -> Option<CodeRef> {
         match self.config.decimal_code(value) {
-            None if self.config.alarm_g => {
+            // (a LinuxCNC configuration may remap G68.2: TG307, naming REMAP)
+            None if self.config.alarm_g
+                && !dialect::g_code_remappable(self.config.family, value) =>
+            {
                 let message = format!(
                     "{}: the control has no such code and alarms on it",
                     w.token()
@@ -225,6 +229,7 @@ impl Checker {
         });
         let alarm = if w.letter == b'G' {
             self.config.alarm_g
+                && !dialect::g_code_remappable(self.config.family, Dec::from_int(n.into()))
         } else {
             self.config.alarm_m
         };

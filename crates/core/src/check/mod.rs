@@ -1883,6 +1883,10 @@ impl Checker {
         let before = Before::of(&self.machine.state);
         self.values.clear();
         let mut first_unknown = None;
+        // a G code the family's list lacks: a macro call by parameter (FANUC, Haas) or a REMAP
+        // (LinuxCNC) takes the block's axis words as its arguments, and where the axes stand
+        // after it is not known (issue 32, item 4); where the control alarms, TG306 says so
+        let mut lacked_code = false;
         // (the key of the block's codes, built code by code in this walk)
         let mut code_key = codes::KeyBuilder::new();
         for (i, w) in b.words.iter().enumerate() {
@@ -1943,11 +1947,14 @@ impl Checker {
                     self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
                     self.values.mirror |= crate::modal::mirror_code(v);
                     self.values.decimal_g = true;
+                    lacked_code |= !self.machine.settings.lacks_g.is_empty()
+                        && self.config.decimal_code(v).is_none();
                 }
                 b'G' => {
                     let g = v.trunc();
                     code_key.code(w, g);
                     self.values.push_g(g);
+                    lacked_code |= self.machine.settings.lacks(g);
                 }
                 b'M' => {
                     let m = v.trunc();
@@ -1994,6 +2001,10 @@ impl Checker {
                 self.verdicts.add(k, codes::taken_flags(taken));
             }
             taken
+        };
+        let taken = match taken {
+            None if lacked_code => Some(crate::modal::AxesTaken::Unknown),
+            taken => taken,
         };
         // (LinuxCNC: an M2/M30 inside a condition, a loop or a definition may not run, and
         // the lines after it run only where it did not: it resets no mode; review 19)

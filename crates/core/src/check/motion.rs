@@ -6,6 +6,7 @@ use super::codes::{self, group_of};
 use super::tooling::Double;
 use super::{round6, Before, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
+use crate::dialect;
 use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
 use crate::modal::{bit, Units};
@@ -29,8 +30,9 @@ struct MotionCodes {
     takes_axes: bool,
     /// The token of such a canned cycle.
     cycle: Option<String>,
-    /// The tokens of the codes the family's list lacks.
-    lacked: Vec<String>,
+    /// The G codes the family's list lacks, each with whether a configuration may define it
+    /// (`dialect::g_code_remappable`).
+    lacked: Vec<(String, bool)>,
 }
 
 impl Checker {
@@ -486,13 +488,15 @@ impl Checker {
             self.motion_unknown = true;
             self.machine.state.motion = None;
             self.machine.state.cycle = None;
-            for code in lacked {
+            for (code, remappable) in lacked {
                 let said = format!(": {code} is not in ");
                 if self.stats.moves_not_known.iter().any(|m| m.contains(&said)) {
                     continue;
                 }
                 // (where the control alarms whatever its parameters, TG306, no macro runs)
-                let does = if self.config.alarm_g {
+                let does = if remappable {
+                    "the control alarms, or runs the REMAP its configuration names"
+                } else if self.config.alarm_g {
                     "the control alarms"
                 } else {
                     "the control alarms, or runs a macro its parameters name"
@@ -552,7 +556,10 @@ impl Checker {
                 !self.machine.settings.lacks_g.is_empty() && self.config.decimal_code(v).is_none()
             };
             if not_held {
-                lacked.push(w.token().to_string());
+                lacked.push((
+                    w.token().to_string(),
+                    dialect::g_code_remappable(self.config.family, v),
+                ));
                 continue;
             }
             if v.is_whole()

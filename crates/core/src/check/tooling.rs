@@ -772,6 +772,8 @@ impl Checker {
         let mut m_words = 0;
         // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
         let mut g_unread = false;
+        // a G code with two decimals or more, which rs274 reads as none of its codes
+        let mut g_beyond = false;
         let mut dollar = false;
         let mut m_fraction = 0u32;
         // a refusal of a word's expression while rs274 reads it (`linuxcnc_read_expression`)
@@ -809,6 +811,9 @@ impl Checker {
                     if (tenths - tenths.round()).abs() < 1e-6 {
                         held[n] = tenths.round() as i64;
                         n += 1;
+                    } else {
+                        // G68.25: no code of rs274's, with or without a REMAP
+                        g_beyond = true;
                     }
                 }
                 (b'G', None) => g_unread = true,
@@ -1017,8 +1022,9 @@ impl Checker {
         let remapped =
             n_m < m_words.min(held_m.len()) || ms.iter().any(|&c| !linuxcnc_builtin_m(c));
         // a G code rs274 does not have stops it while it reads the block ("Unknown g code
-        // used", TG306), before it checks the block's words or runs any of it
-        let message = if codes.iter().all(|&c| self.linuxcnc_has_g(c)) {
+        // used"), before it checks the block's words or runs any of it, or is a REMAP's
+        // (G0-G99.9, TG307), which takes the block's words as its own: no word is checked
+        let message = if !g_beyond && codes.iter().all(|&c| self.linuxcnc_has_g(c)) {
             let checked =
                 linuxcnc_word_checks(&words, codes, ms, runs, motion_in_doubt, e_unused, remapped);
             // a probe that must trip (G38.2, G38.4) and ends where it starts
