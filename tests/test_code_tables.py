@@ -283,6 +283,33 @@ def test_rs274_reads_a_remapped_m_code_up_to_m999(tmp_path: Path, code, said):
 
 
 @pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize(("code", "said", "rule"), [
+    ("G68.2", "remapped", "TG307"),  # a blank of the Remap manual's G0-G99.9 tables
+    ("G100", "out of range", "TG306"),  # past G99.9 a REMAP makes nothing valid
+])
+def test_rs274_reads_a_remapped_g_code_up_to_g99_9(tmp_path: Path, code, said, rule):
+    """A configuration with ``REMAP=G68.2`` runs G68.2 (rs274 -i), as held20's
+    tilted-work-plane demos' INI files do: the check's TG307 names REMAP; G100 and G68.25
+    rs274 refuses under a REMAP too, and there the check's TG306 stands."""
+    name = "g" + code[1:].replace(".", "")
+    (tmp_path / "subs").mkdir()
+    (tmp_path / "subs" / f"{name}.ngc").write_text(
+        f"o<{name}> sub\n(DEBUG, remapped)\no<{name}> endsub\nM2\n")
+    (tmp_path / "r.ini").write_text(
+        f"[RS274NGC]\nSUBROUTINE_PATH = {tmp_path / 'subs'}\n"
+        f"REMAP={code} modalgroup=1 ngc={name}\n[EMCIO]\n[TRAJ]\n")
+    text = linuxcnc(f"{code}\nG0 X1")
+    (tmp_path / "prog.ngc").write_text(text)
+    assert RS274 is not None
+    result = subprocess.run(env=rs274_env(), args=[RS274, "-i", "r.ini", "-g", "prog.ngc"],
+                            capture_output=True, text=True, timeout=30, cwd=tmp_path,
+                            stdin=subprocess.DEVNULL)
+    assert said in result.stdout + result.stderr, result.stdout + result.stderr
+    assert [f.rule for f in check_text(text, load_profile("linuxcnc"))
+            if f.rule in ("TG306", "TG307")] == [rule]
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
 @pytest.mark.parametrize(("block", "said"), [
     ("M200", "M-code greater than 199"),  # no configuration remaps it here
     ("M100", "Unknown m code used"),
