@@ -513,3 +513,22 @@ def test_a_partial_cancel_of_a_mirror_not_known_exactly_gives_the_axis_its_span_
     found, _ = check("G54\nG00 X-750. Y0\nG51.1 X#500 Y#500\nG00 X750.\nG50.1 X0\n"
                      "G91 G00 X30.\nG90\nG50.1 Y0", fanuc)
     assert found == []
+
+
+def cli_check(tmp_path: Path, text: str, profile: str, *extra: str) -> str:
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    return CliRunner().invoke(main, ["check", str(path), "-p", profile, *extra]).output
+
+
+@pytest.mark.parametrize("limit", ["G26 S3000", "G25 S100", "G26 X500 Y500 Z200"])
+def test_a_sinumerik_working_area_or_speed_limit_is_no_canned_cycle(tmp_path: Path,
+                                                                     limit: str) -> None:
+    """Review 38, finding 12: G25/G26 were read as a canned cycle of the control's list (the
+    table holds G81 as not a SINUMERIK code, in the one-block group), and the moves after them
+    left out of --stats and the plot."""
+    text = f"G71 G90 G17 G54 G0 X0 Y0 Z100\nG1 X-700 F100\n{limit}\nX750\nM30\n"
+    out = cli_check(tmp_path, text, "sinumerik-840d", "--stats")
+    assert "  X: -700 to 750 mm" in out
+    assert "feed path 2150.0 mm" in out
+    assert "canned cycle" not in out
