@@ -521,6 +521,14 @@ def cli_check(tmp_path: Path, text: str, profile: str, *extra: str) -> str:
     return CliRunner().invoke(main, ["check", str(path), "-p", profile, *extra]).output
 
 
+def test_a_g53_position_in_the_other_units_names_both(tmp_path: Path) -> None:
+    """Review 38, finding 11: 800 mm on a Haas (travel in inches) is 31.496063 in."""
+    text = MILL.format("G00 X0 Y0 Z5.\nG53 G00 X800.")
+    out = cli_check(tmp_path, text, "haas-mill", "--select", "TG601")
+    assert ("error TG601 X goes to 800 mm (31.496063 in) in machine coordinates (G53), outside "
+            "the travel -30 to 30 in") in out
+
+
 @pytest.mark.parametrize("limit", ["G26 S3000", "G25 S100", "G26 X500 Y500 Z200"])
 def test_a_sinumerik_working_area_or_speed_limit_is_no_canned_cycle(tmp_path: Path,
                                                                      limit: str) -> None:

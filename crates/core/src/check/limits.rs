@@ -1316,12 +1316,7 @@ impl Checker {
                     };
                     let at = value.to_f64() * factor;
                     if !(low..=high).contains(&at) {
-                        let message = format!(
-                            "{} goes to {value} in machine coordinates (G53), outside the travel \
-                             {low} to {high}",
-                            axis as char
-                        );
-                        self.report_limit(Rule::TravelExceeded, message, line, col(axis));
+                        self.machine_outside(axis, value, at, (low, high), (line, col(axis)));
                     }
                     continue;
                 }
@@ -1569,6 +1564,42 @@ impl Checker {
             round6(least),
             round6(most)
         );
+        self.report_limit(Rule::TravelExceeded, message, line, column);
+    }
+
+    /// TG601 of a position in machine coordinates (G53): `value` as written, `at` in the
+    /// profile's units. Written in the other unit system, the message says it in both and
+    /// names them, as the feed's does (review 38, finding 11: `G21` ... `G53 X800.` on an
+    /// inch profile said "X goes to 800 ..., outside the travel -30 to 30").
+    #[cold]
+    #[inline(never)]
+    fn machine_outside(
+        &mut self,
+        axis: u8,
+        value: Dec,
+        at: f64,
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) {
+        let axis = axis as char;
+        let message = if self.to_profile_units(false) == 1.0 {
+            format!(
+                "{axis} goes to {value} in machine coordinates (G53), outside the travel {low} \
+                 to {high}"
+            )
+        } else {
+            let (written, profile) = match self.config.limit_units {
+                Units::Metric => ("in", "mm"),
+                Units::Inch => ("mm", "in"),
+            };
+            format!(
+                "{axis} goes to {value} {written} ({} {profile}) in machine coordinates (G53), \
+                 outside the travel {low} to {high} {profile}",
+                round6(at)
+            )
+        };
+        let fits = (low..=high).contains(&(at / 25.4));
+        let message = format!("{message}{}", self.units_not_written(fits));
         self.report_limit(Rule::TravelExceeded, message, line, column);
     }
 
@@ -1891,6 +1922,44 @@ mod tests {
         // a shift of Y leaves X's span as it was
         let body = "G00 X-400.\nG52 Y10.\nX700.\n";
         assert_eq!(at(iso_mill(), body, Rule::TravelExceeded), [(4, 1)]);
+    }
+
+    /// Review 38, finding 11: a G53 position written in the other unit system is said in
+    /// both units, with the profile's named, as the span's and the feed's messages do.
+    #[test]
+    fn a_machine_position_in_the_other_units_is_said_in_both() {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        let inch = Config {
+            facts: ProfileFacts {
+                travel: vec![(b'X', dec("-30"), dec("30"))],
+                limit_units: crate::modal::Units::Inch,
+                ..iso_mill().facts
+            },
+            ..iso_mill()
+        };
+        let found = findings(
+            inch.clone(),
+            &program("G71 G00 X0\nG53 X800."),
+            Rule::TravelExceeded,
+        );
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.starts_with(
+                "X goes to 800 mm (31.496063 in) in machine coordinates (G53), outside the \
+                 travel -30 to 30 in"
+            ),
+            "{}",
+            found[0].message
+        );
+        // in the profile's units: as before, the number as written
+        let found = findings(inch, &program("G70 G00 X0\nG53 X31."), Rule::TravelExceeded);
+        assert!(
+            found[0].message.starts_with(
+                "X goes to 31 in machine coordinates (G53), outside the travel -30 to 30"
+            ),
+            "{}",
+            found[0].message
+        );
     }
 
     #[test]
