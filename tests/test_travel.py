@@ -387,7 +387,8 @@ def test_a_lathe_s_coordinate_setting_restarts_the_span_by_its_code_system(
         base: str, setting: str, none: str) -> None:
     """Review 15, 4: in G code systems B and C the coordinate setting is G92 (A's G50); the
     written number was read, so B's G92 left X180. and X-60. in one span of 240 (a false
-    TG601) and a written G50, no code there, started the span again."""
+    TG601) and a written G50, no code there, started the span again. (The setting at X180.
+    is followed since review 38: X-60. is 120 in the coordinates before it, a span of 60.)"""
     profile = profile_from_text(f'base = "{base}"\n[limits]\nX = [-100, 100]\n'
                                 "Z = [-100, 100]\n")
     text = "%\nO01000\nG21 G18\nG00 X180. Z0\n{} X0 Z0\nG00 X-60.\nM30\n%\n"
@@ -513,3 +514,68 @@ def test_a_partial_cancel_of_a_mirror_not_known_exactly_gives_the_axis_its_span_
     found, _ = check("G54\nG00 X-750. Y0\nG51.1 X#500 Y#500\nG00 X750.\nG50.1 X0\n"
                      "G91 G00 X30.\nG90\nG50.1 Y0", fanuc)
     assert found == []
+
+
+def cli_check(tmp_path: Path, text: str, profile: str, *extra: str) -> str:
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    return CliRunner().invoke(main, ["check", str(path), "-p", profile, *extra]).output
+
+
+@pytest.mark.parametrize("shift", ["G52 X900.", "G92 X-900."])
+def test_an_over_travel_across_a_known_shift_is_found(tmp_path: Path, shift: str) -> None:
+    """Review 38, finding 6: X-700., then X0 and X300. of a zero at X900. of the coordinates
+    before (G52 X900.; G92 X-900. where the tool stands at X0) reach 900 and 1200, wider than
+    the travel of 1524 from 900 on. The span started again at the shift, silently."""
+    start = "G00 X-700. Y0 Z5.\n" + ("G01 X0 F500.\n" if shift.startswith("G92") else "")
+    zero = "G92 X-900." if shift.startswith("G92") else shift
+    text = MILL.format(f"{start}{zero}\nG01 X0 F500.\nG01 X300.")
+    out = cli_check(tmp_path, text, "fanuc-mill", "--select", "TG601,TG140")
+    assert "error TG601 X spans 1600 (from -700 to 900), more than the travel -762 to 762" in out
+    assert "TG140" not in out
+
+
+def test_a_program_inside_the_travel_only_through_a_shift_is_not_flagged(tmp_path: Path) -> None:
+    """X700., then a local zero at X1400.: X-700. and X-1300. are 700 and 100 in the work
+    system, a span of 600 (the numbers as written span 2000); under G91 after a G92 at X700.
+    the increments are followed from there."""
+    text = MILL.format("G00 X700. Y0 Z5.\nG52 X1400.\nG01 X-700. F500.\nX-1300.\nG52 X0")
+    assert "TG601" not in cli_check(tmp_path, text, "fanuc-mill")
+    # 700, then 100, -500 and -800: a span of 1500; a last X-400. instead ends at -900, 1600
+    text = MILL.format("G00 X700. Y0 Z5.\nG92 X0\nG91 G01 X-600. F500.\nX-600.\nX-300.")
+    assert "TG601" not in cli_check(tmp_path, text, "fanuc-mill")
+    out = cli_check(tmp_path, text.replace("X-300.", "X-400."), "fanuc-mill", "--select", "TG601")
+    assert "X spans 1600 (from -900 to 700)" in out
+
+
+def test_a_shift_not_known_is_said_once_as_a_note(tmp_path: Path) -> None:
+    """A G92 where X stood is not known (after G28): the span starts again, said."""
+    text = MILL.format("G00 X-700. Y0 Z5.\nG91 G28 X0\nG90 G92 X0\nG01 X900. F500.\n"
+                       "G91 G28 X0\nG90 G92 X0\nX-100.")
+    out = cli_check(tmp_path, text, "fanuc-mill", "--select", "TG601,TG140")
+    assert "error TG601" not in out
+    assert out.count("info TG140") == 1
+    assert ("info TG140 G92: the span of X (TG601) starts again here, in the coordinates after "
+            "it, since the shift's amount is not known: where X stood before it is not known")\
+        in out
+
+
+def test_a_g53_position_in_the_other_units_names_both(tmp_path: Path) -> None:
+    """Review 38, finding 11: 800 mm on a Haas (travel in inches) is 31.496063 in."""
+    text = MILL.format("G00 X0 Y0 Z5.\nG53 G00 X800.")
+    out = cli_check(tmp_path, text, "haas-mill", "--select", "TG601")
+    assert ("error TG601 X goes to 800 mm (31.496063 in) in machine coordinates (G53), outside "
+            "the travel -30 to 30 in") in out
+
+
+@pytest.mark.parametrize("limit", ["G26 S3000", "G25 S100", "G26 X500 Y500 Z200"])
+def test_a_sinumerik_working_area_or_speed_limit_is_no_canned_cycle(tmp_path: Path,
+                                                                     limit: str) -> None:
+    """Review 38, finding 12: G25/G26 were read as a canned cycle of the control's list (the
+    table holds G81 as not a SINUMERIK code, in the one-block group), and the moves after them
+    left out of --stats and the plot."""
+    text = f"G71 G90 G17 G54 G0 X0 Y0 Z100\nG1 X-700 F100\n{limit}\nX750\nM30\n"
+    out = cli_check(tmp_path, text, "sinumerik-840d", "--stats")
+    assert "  X: -700 to 750 mm" in out
+    assert "feed path 2150.0 mm" in out
+    assert "canned cycle" not in out

@@ -109,6 +109,48 @@ impl Frames {
 /// X, Y and Z (bits 0-2 of [`Frames::hidden`]).
 const XYZ: u16 = 0b111;
 
+/// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
+/// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
+/// (the work system, with no shift of the program's own), where a position of the program's
+/// coordinates stands at itself plus its axis's `total`. Where a shift's amount is not known,
+/// the axis's span starts again there, in the new coordinates (its `total` back to 0).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Shifts {
+    /// Some axis has a shift in force, or a local shift not known: the spans take the walk
+    /// that adds it ([`Checker::limits`]), and the end of the program is looked at.
+    on: bool,
+    /// For each axis of [`AXES`], in the profile's units: the program's coordinates' zero in
+    /// the coordinates of the axis's span.
+    total: [f64; 9],
+    /// The part of `total` that is a FANUC or Haas mill's local coordinate system (G52): its
+    /// zero in the work system. A G52 replaces it; a G92 keeps the rest.
+    local: [f64; 9],
+    /// The axes (bit `i` for `AXES[i]`) whose local shift is not known: a G52 of theirs shifts
+    /// by an amount not known here.
+    local_unknown: u16,
+    /// Whether the note of a shift not followed (TG140) was said (once per file).
+    noted: bool,
+    /// The note of an end of the program that started spans again ([`Checker::shift_end`]):
+    /// its code, line and column, and the axes whose spans it dropped. Said where a position
+    /// after it goes to one of those spans: most programs end there, and lose nothing.
+    end_note: Option<(String, usize, usize, u16)>,
+}
+
+impl Shifts {
+    fn settle(&mut self) {
+        self.on = self.local_unknown != 0
+            || self.end_note.is_some()
+            || self
+                .total
+                .iter()
+                .chain(&self.local)
+                .any(|&shift| shift != 0.0);
+    }
+}
+
+/// Why a shift of an axis is not followed ([`Checker::shift_of`]).
+type NotKnown = String;
+
 /// An exact rotation or scaling: a position's X Y Z before the frame is
 /// `centre + m (p - centre)`, in the profile's units.
 #[derive(Debug, Clone)]
@@ -1115,23 +1157,28 @@ impl Checker {
     }
 
     /// A shift of the coordinates (G52, G92, a Fanuc or Haas lathe's G50 X Z, G10 setting an
-    /// offset that may be the one in force) moves the named axes' zero by an amount the
-    /// checker does not follow: the span of the program's positions (TG601) starts again
-    /// there for those axes, in the new coordinates, rather than mix positions of two
-    /// (`G52 X-700.` then `X990.` is 290 in the old ones); inside a rotation or scaling taken
-    /// back exactly, a shift leaves it unknown. Read after the block's own positions.
+    /// offset that may be the one in force) moves the named axes' zero. Where the amount is
+    /// known, the spans of TG601 follow it ([`Shifts`], [`Checker::shift_of`]); where it is
+    /// not, the named axes' spans start again there, in the new coordinates, rather than mix
+    /// positions of two (`G52 X-700.` then `X990.` is 290 in the old ones), and a TG140 note
+    /// says so once per file. Inside a rotation or scaling taken back exactly, a shift leaves
+    /// it unknown. At the end of the program the shifts in force end or stay as the control's
+    /// parameters say ([`Checker::shift_end`]). Read after the block's own positions.
     #[inline]
-    pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
+    pub(super) fn shift_spans(&mut self, b: &BlockView<'_>, before: &Before) {
         // (only a G code shifts or turns the coordinates: the test inlined where it is asked, once a
-        // block, the walk out of line)
+        // block, the walk out of line; an end of the program matters only under a shift)
         if self.frames.codes {
-            self.shift_spans_walk(b);
+            self.shift_spans_walk(b, before);
+        }
+        if self.shifts.on {
+            self.shift_end(b);
         }
     }
 
     /// [`Checker::shift_spans`] of a block with such a code.
     #[inline(never)]
-    fn shift_spans_walk(&mut self, b: &BlockView<'_>) {
+    fn shift_spans_walk(&mut self, b: &BlockView<'_>, before: &Before) {
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let sinumerik = self.config.family == Family::Sinumerik;
         for (i, w) in b.words.iter().enumerate() {
@@ -1170,6 +1217,18 @@ impl Checker {
                     self.drawn.transform(b.line, w.token());
                 }
             }
+            // a preset of the work system (FANUC G92.1, a Fanuc lathe's G50.3, read as A's),
+            // LinuxCNC's G92.1-G92.3 (G92's offsets ended, or restored from its parameters):
+            // the coordinates go back to, or away from, a zero the file did not set
+            let tenths = v.normalized();
+            let preset = !sinumerik
+                && !whole
+                && tenths.scale == 1
+                && (matches!(tenths.mantissa, 921..=923) && !fanuc_lathe
+                    || tenths.mantissa == 503 && fanuc_lathe);
+            if preset {
+                self.preset(b, w);
+            }
             if shift {
                 if axes {
                     self.frames.shifted = true;
@@ -1180,12 +1239,236 @@ impl Checker {
                         self.frame_not_applied(&map.what, XYZ, (b.line, w.column), &why);
                     }
                 }
-                for (a, &axis) in AXES.iter().enumerate() {
-                    if self.values.has(axis) {
-                        self.spans[a] = None;
+                // each axis the code names, by a value known or not (`G52 X#1`)
+                let named = self.values.given() | self.values.unknown;
+                let (mut lost, mut why) = (0u16, None);
+                for a in crate::modal::places(crate::modal::axis_places(named)) {
+                    if let Err(not_known) = self.shift_of(code, a, before) {
+                        // (a G10 leaves the local coordinate system as it was; any other
+                        // shift not followed may have ended or set it)
+                        let local_lost = code == 52 || code != 10 && self.shifts.local[a] != 0.0;
+                        if self.restart_span(a, local_lost) {
+                            lost |= 1 << a;
+                            why.get_or_insert(not_known);
+                        }
                     }
                 }
+                self.shifts.settle();
+                if let Some(why) = why {
+                    self.shift_note(&w.token(), lost, (b.line, w.column), &why);
+                }
             }
+        }
+    }
+
+    /// A preset of the work system or a cancel of G92's offsets (`w`): the named axes' spans,
+    /// every axis's where it names none (LinuxCNC's G92.1-G92.3 take no axis words), start
+    /// again, with the note: where the coordinates go is the offsets' from before the file.
+    #[cold]
+    #[inline(never)]
+    fn preset(&mut self, b: &BlockView<'_>, w: &crate::word::Word<'_>) {
+        let named = crate::modal::axis_places(self.values.given() | self.values.unknown);
+        let axes = if named == 0 {
+            (1 << AXES.len()) - 1
+        } else {
+            named
+        };
+        let mut lost = 0u16;
+        for a in crate::modal::places(axes) {
+            if self.restart_span(a, true) {
+                lost |= 1 << a;
+            }
+        }
+        self.shifts.settle();
+        if lost != 0 {
+            let why = "it sets the coordinates by the offsets in force before the file's own \
+                       shifts, which the checker does not know";
+            self.shift_note(&w.token(), lost, (b.line, w.column), why);
+        }
+    }
+
+    /// Follow the shift of `AXES[i]` by the block's shift code `code` (as the profile reads
+    /// it), or say why its amount is not known here (the sources: docs/dialects.md, "The
+    /// shifts under TG601's spans"):
+    /// - a FANUC or Haas mill's `G52 X_` under G90 sets the local coordinate system, whose zero
+    ///   is X_ in the work system; `G52 X0` cancels it, and an axis it does not name keeps its
+    ///   shift. Under G91 no FANUC or Haas page at hand says whether it adds to the local
+    ///   shift: it is followed only where no local shift of the axis is in force, where both
+    ///   readings agree;
+    /// - a G92 (a Fanuc or Haas lathe's G50), where the checker reads its words as the
+    ///   coordinates set (`AxesTaken::Set`), makes the position before it the words' values:
+    ///   a shift of (position - value) where that position is known. Whether it also ends a
+    ///   G52's local shift of the axis the pages at hand do not agree on (the FANUC-compatible
+    ///   NCT 99M says it does), so after one the axis's local shift is not known;
+    /// - G10 (the offset of the work system in force set), LinuxCNC's G52 (it sets the offset
+    ///   G92 shares, which rs274 keeps from an earlier run by default), a lathe's G52, any other
+    ///   control's code: not known.
+    fn shift_of(&mut self, code: i64, i: usize, before: &Before) -> Result<(), NotKnown> {
+        let axis = AXES[i] as char;
+        let Some(value) = self.values.get(AXES[i]) else {
+            return Err(format!("its {axis} is not known here"));
+        };
+        if self.frames.on != 0 {
+            return Err(
+                "a rotation, scaling, mirror image or polar coordinates are in force".into(),
+            );
+        }
+        let settings = &self.machine.settings;
+        if self
+            .values
+            .gs()
+            .iter()
+            .any(|&g| settings.units_code(g).is_some())
+        {
+            return Err("its block changes the units".into());
+        }
+        let factor = self.to_profile_units(false);
+        let value = value.to_f64() * factor;
+        let fanuc_lathe = self.config.modal.fanuc_lathe;
+        let mill = self.config.family == Family::MacroB && !fanuc_lathe;
+        match code {
+            52 if mill => {
+                // (under G91 the two readings, the zero at X_ or X_ from the local zero before,
+                // agree where there is none before)
+                if self.machine.state.incremental && self.shifts.local[i] != 0.0 {
+                    return Err(
+                        "under G91 no page at hand says whether it adds to the local \
+                                shift"
+                            .into(),
+                    );
+                }
+                if self.shifts.local_unknown & 1 << i != 0 {
+                    return Err(format!(
+                        "the local shift of {axis} before it is not known (an earlier shift not \
+                         followed, or a G92 that may have ended it)"
+                    ));
+                }
+                self.shifts.total[i] += value - self.shifts.local[i];
+                self.shifts.local[i] = value;
+                Ok(())
+            }
+            92 | 50 if self.machine.taken() == Some(AxesTaken::Set) => {
+                if fanuc_lathe && matches!(AXES[i], b'U' | b'W') {
+                    return Err(format!("no page at hand says what its {axis} does"));
+                }
+                let Some(at) = before.axis(AXES[i]).filter(|_| !before.is_unknown(AXES[i])) else {
+                    return Err(format!("where {axis} stood before it is not known"));
+                };
+                self.shifts.total[i] += at.to_f64() * factor - value;
+                if self.shifts.local[i] != 0.0 {
+                    self.shifts.local[i] = 0.0;
+                    self.shifts.local_unknown |= 1 << i;
+                }
+                Ok(())
+            }
+            10 => Err("it may set the offset of the work system in force".into()),
+            52 if self.config.family == Family::LinuxCnc => Err("LinuxCNC's G52 sets the offset \
+                 G92 shares, which rs274 keeps from an earlier run unless the machine's INI \
+                 file says otherwise"
+                .into()),
+            _ => Err("what it does to the coordinates is not followed here".into()),
+        }
+    }
+
+    /// The span of `AXES[i]` starts again in the coordinates after a shift not known here;
+    /// `local_lost`: the shift may have set or ended a G52's local shift of the axis. Whether
+    /// a span of an axis with a travel was dropped (what the note says).
+    fn restart_span(&mut self, i: usize, local_lost: bool) -> bool {
+        let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
+        self.spans[i] = None;
+        self.shifts.total[i] = 0.0;
+        if local_lost {
+            self.shifts.local[i] = 0.0;
+            self.shifts.local_unknown |= 1 << i;
+        }
+        lost
+    }
+
+    /// At the end of the program (M2, M30) a shift in force ends or stays as the control's
+    /// parameters say (FANUC: the local coordinate system is cancelled at a reset where a
+    /// parameter says so): the spans of the shifted axes start again, with the note. A Haas
+    /// removes a G52 at M30 (Haas operator's manual, "Effective coordinate system": "Any G52 set
+    /// during the program is removed once the program finishes at an M30"): an axis whose only
+    /// shift is its G52 is back in the work system.
+    #[cold]
+    #[inline(never)]
+    fn shift_end(&mut self, b: &BlockView<'_>) {
+        let ends = !self.values.end_unsure && self.values.ms.iter().any(|&m| m == 2 || m == 30);
+        if !ends {
+            return;
+        }
+        let mut lost = 0u16;
+        for i in 0..AXES.len() {
+            let local_known = self.shifts.local_unknown & 1 << i == 0;
+            let (total, local) = (self.shifts.total[i], self.shifts.local[i]);
+            if total == 0.0 && local == 0.0 && local_known {
+                continue;
+            }
+            if self.config.haas && local_known && total == local {
+                self.shifts.total[i] = 0.0;
+                self.shifts.local[i] = 0.0;
+                continue;
+            }
+            if self.restart_span(i, local != 0.0 || !local_known) {
+                lost |= 1 << i;
+            }
+        }
+        if lost != 0 && !self.shifts.noted {
+            let (token, column) = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'M')
+                .map_or(("M30".to_string(), 1), |w| (w.token(), w.column));
+            self.shifts.end_note = Some((token, b.line, column, lost));
+        }
+        self.shifts.settle();
+    }
+
+    /// The note of [`Shifts::end_note`], at the first position after the end that goes to
+    /// a span it dropped.
+    #[cold]
+    #[inline(never)]
+    fn end_noted(&mut self) {
+        let Some((token, line, column, lost)) = self.shifts.end_note.take() else {
+            return;
+        };
+        let why = "the end of the program may end the shift in force or keep it, as the \
+                   control's parameters say";
+        self.shift_note(&token, lost, (line, column), why);
+        self.shifts.settle();
+    }
+
+    /// TG140 once per file: a shift whose amount is not known here starts the spans of
+    /// `axes` again.
+    #[cold]
+    fn shift_note(&mut self, token: &str, axes: u16, (line, column): (usize, usize), why: &str) {
+        if self.shifts.noted {
+            return;
+        }
+        self.shifts.noted = true;
+        let names: Vec<String> = (0..AXES.len())
+            .filter(|&k| axes & 1 << k != 0)
+            .map(|k| (AXES[k] as char).to_string())
+            .collect();
+        let message = format!(
+            "{token}: the span of {} (TG601) starts again here, in the coordinates after it, \
+             since the shift's amount is not known: {why}; the positions before and after it \
+             are not compared with each other (said once: the same for any later shift of \
+             this file). The check follows a G52 written with its values under G90 and a G92 \
+             where the position before it is known (an absolute move)",
+            names.join(" ")
+        );
+        self.report(Rule::NotFollowed, message, line, column);
+    }
+
+    /// `at`, a position of the program's coordinates on `AXES[i]` (in the profile's units), in
+    /// the coordinates of its span: plus the shift followed ([`Shifts`]).
+    #[inline]
+    fn shifted(&self, i: usize, at: f64) -> f64 {
+        if self.shifts.on {
+            at + self.shifts.total[i]
+        } else {
+            at
         }
     }
 
@@ -1256,7 +1539,12 @@ impl Checker {
         // a frame's block whose axis words are its data (G51.1 X0: the mirror's axis, no
         // move) adds no position: where the tool stands may be a span's that the block
         // started afresh
-        if self.frames.codes && self.machine.taken() == Some(AxesTaken::Data) {
+        // (nor does a G92's or a lathe's G50's: the tool stays where it was, which its new
+        // coordinates name, Checker::shift_spans; taken as a position of the coordinates
+        // before it, `G0 X700.` / `G92 X-900.` spanned 1600)
+        if self.frames.codes
+            && matches!(self.machine.taken(), Some(AxesTaken::Data | AxesTaken::Set))
+        {
             moved = &[];
             places = 0;
         }
@@ -1283,7 +1571,9 @@ impl Checker {
             // where the walk below looked each axis up by its letter and passed the offsets' tests
             // (about 60 instructions an axis)
             // (and no frame's map, which reads the moved axes below)
-            if !machine && !absolute && framed == 0 && self.frames.map.is_none() {
+            // (and no shift followed, which the walk below adds)
+            if !machine && !absolute && framed == 0 && self.frames.map.is_none() && !self.shifts.on
+            {
                 debug_assert_eq!(
                     moved,
                     crate::modal::places(places)
@@ -1316,12 +1606,7 @@ impl Checker {
                     };
                     let at = value.to_f64() * factor;
                     if !(low..=high).contains(&at) {
-                        let message = format!(
-                            "{} goes to {value} in machine coordinates (G53), outside the travel \
-                             {low} to {high}",
-                            axis as char
-                        );
-                        self.report_limit(Rule::TravelExceeded, message, line, col(axis));
+                        self.machine_outside(axis, value, at, (low, high), (line, col(axis)));
                     }
                     continue;
                 }
@@ -1387,6 +1672,15 @@ impl Checker {
                         *moved |= hidden & (1 << i) != 0;
                     }
                     continue;
+                }
+                let at = self.shifted(i, at);
+                if self
+                    .shifts
+                    .end_note
+                    .as_ref()
+                    .is_some_and(|n| n.3 & 1 << i != 0)
+                {
+                    self.end_noted();
                 }
                 self.add_to_span(i, at, said_outside, line, || col(axis), "");
             }
@@ -1572,6 +1866,42 @@ impl Checker {
         self.report_limit(Rule::TravelExceeded, message, line, column);
     }
 
+    /// TG601 of a position in machine coordinates (G53): `value` as written, `at` in the
+    /// profile's units. Written in the other unit system, the message says it in both and
+    /// names them, as the feed's does (review 38, finding 11: `G21` ... `G53 X800.` on an
+    /// inch profile said "X goes to 800 ..., outside the travel -30 to 30").
+    #[cold]
+    #[inline(never)]
+    fn machine_outside(
+        &mut self,
+        axis: u8,
+        value: Dec,
+        at: f64,
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) {
+        let axis = axis as char;
+        let message = if self.to_profile_units(false) == 1.0 {
+            format!(
+                "{axis} goes to {value} in machine coordinates (G53), outside the travel {low} \
+                 to {high}"
+            )
+        } else {
+            let (written, profile) = match self.config.limit_units {
+                Units::Metric => ("in", "mm"),
+                Units::Inch => ("mm", "in"),
+            };
+            format!(
+                "{axis} goes to {value} {written} ({} {profile}) in machine coordinates (G53), \
+                 outside the travel {low} to {high} {profile}",
+                round6(at)
+            )
+        };
+        let fits = (low..=high).contains(&(at / 25.4));
+        let message = format!("{message}{}", self.units_not_written(fits));
+        self.report_limit(Rule::TravelExceeded, message, line, column);
+    }
+
     /// A finding against the profile's machine (TG601, TG602, TG604, TG605): the file's first
     /// on a built-in profile says that the travel and maxima are the profile's sample machine
     /// of the family, not the user's (audit 37: a VF-6 class table, a 30-tool changer and a
@@ -1681,6 +2011,7 @@ impl Checker {
             if map.fresh & 1 << k != 0 && made_of == 1 << k && map.m[k][k] == 1.0 {
                 // an axis the frame leaves as it is
                 if let Some(p) = position[k].filter(|_| self.frames.hidden() & (1 << k) == 0) {
+                    let p = self.shifted(k, p);
                     self.add_to_span(k, p, false, line, || facts.col(AXES[k]), "");
                 }
                 continue;
@@ -1702,6 +2033,7 @@ impl Checker {
                     .find(|&l| made_of & now & 1 << l != 0)
                     .map_or(0, |l| facts.col(AXES[l]))
             };
+            let at = self.shifted(k, at);
             self.add_to_span(k, at, false, line, column, &under);
         }
         if cycle_z {
@@ -1891,6 +2223,168 @@ mod tests {
         // a shift of Y leaves X's span as it was
         let body = "G00 X-400.\nG52 Y10.\nX700.\n";
         assert_eq!(at(iso_mill(), body, Rule::TravelExceeded), [(4, 1)]);
+    }
+
+    /// Review 38, finding 6: a FANUC or Haas mill's G52 written with its value under G90, and
+    /// a G92 where the position before it is known, are followed: each span is kept in the
+    /// coordinates of the file's start, so an over-travel across the shift is found (it was
+    /// missed: the span started again), and a program that stays in the travel only through
+    /// the shift is not flagged. Travel X -500 to 500.
+    #[test]
+    fn a_shift_whose_amount_is_known_is_followed_by_the_spans() {
+        let fanuc = of_family(Family::MacroB);
+        let mut haas = of_family(Family::MacroB);
+        haas.haas = true;
+        for config in [fanuc.clone(), haas.clone()] {
+            // X-400., then X0 and X300. of a local zero at X500.: 500 and 800, a span of 1200
+            let over = "G90 G00 X-400.\nG52 X500.\nG01 X0 F100.\nX300.\nG52 X0\nX0\n";
+            assert_eq!(at(config.clone(), over, Rule::TravelExceeded), [(5, 1)]);
+            // the same through G92 at X-400. (its zero is then X500. of the old coordinates)
+            let over = "G90 G00 X-400.\nG92 X-900.\nG01 X0 F100.\nX300.\n";
+            assert_eq!(at(config.clone(), over, Rule::TravelExceeded), [(5, 1)]);
+            // X400., then a local zero at X800.: X-300. and X-700. are 500 and 100, a span of
+            // 400 (the numbers as written span 1100)
+            let inside = "G90 G00 X400.\nG52 X800.\nG01 X-300. F100.\nX-700.\n";
+            assert_eq!(at(config.clone(), inside, Rule::TravelExceeded), []);
+            // a G92's words are no position of the coordinates before it (X-600. beside X450.
+            // spanned 1050); the tool stays at X450.
+            let inside = "G90 G00 X450.\nG92 X-600.\nG01 X-1000. F100.\n";
+            assert_eq!(at(config.clone(), inside, Rule::TravelExceeded), []);
+            // an axis the G52 does not name keeps its shift: Y's G52 leaves X's local zero at
+            // X500.
+            let kept = "G90 G00 X-400.\nG52 X500.\nG52 Y10.\nX300.\n";
+            assert_eq!(at(config.clone(), kept, Rule::TravelExceeded), [(5, 1)]);
+            // G52 X0 cancels it: X300. is X300. again
+            let cancelled = "G90 G00 X-400.\nG52 X500.\nX0\nG52 X0\nX50.\n";
+            assert_eq!(at(config.clone(), cancelled, Rule::TravelExceeded), []);
+            // no note where every shift is followed
+            assert_eq!(at(config, over, Rule::NotFollowed), []);
+        }
+        // G91 across a shift: after G92 X0 at X-400. the increments are followed from X0
+        // (X-400. in the span's coordinates): X500. X500. X100. end at 700, a span of 1100
+        let increments = "G90 G00 X-400.\nG92 X0\nG91 G01 X500. F100.\nX500.\nX100.\n";
+        assert_eq!(
+            at(fanuc.clone(), increments, Rule::TravelExceeded),
+            [(6, 1)]
+        );
+        // after a G52 where X stands in the new coordinates is not known until an absolute X
+        let increments = "G90 G00 X-400.\nG52 X500.\nG91 X100.\nG90 X300.\n";
+        assert_eq!(
+            at(fanuc.clone(), increments, Rule::TravelExceeded),
+            [(5, 5)]
+        );
+        // a G52 under G91 where no local shift is in force: the zero at X500. by either
+        // reading (from the work zero, or from the local zero, which is it)
+        let g91 = "G90 G00 X-400.\nG91 G52 X500.\nG90 X300.\n";
+        assert_eq!(at(fanuc.clone(), g91, Rule::TravelExceeded), [(4, 5)]);
+        // a Haas removes its G52 at M30: X-550. after it is in the work system, 1050 from the
+        // X500. before; a FANUC's end keeps it or not by a parameter: the span starts again,
+        // said when a position after the end comes to it
+        let end = "G90 G00 X-400.\nG52 X100.\nX400.\nM30\nX-550.\n";
+        assert_eq!(at(haas.clone(), end, Rule::TravelExceeded), [(6, 1)]);
+        assert_eq!(at(haas, end, Rule::NotFollowed), []);
+        assert_eq!(at(fanuc.clone(), end, Rule::TravelExceeded), []);
+        let noted = findings(fanuc.clone(), &program(end), Rule::NotFollowed);
+        assert_eq!(noted.len(), 1);
+        assert_eq!((noted[0].line, noted[0].column), (5, 1));
+        assert!(noted[0]
+            .message
+            .starts_with("M30: the span of X (TG601) starts again here"));
+        // an end with no position after it says nothing
+        let ended = "G90 G00 X-400.\nG52 X100.\nX400.\nM30\n";
+        assert_eq!(at(fanuc, ended, Rule::NotFollowed), []);
+    }
+
+    /// Where a shift's amount is not known the span starts again, said once per file as a
+    /// note (TG140) that names the reason and what the check follows; nothing is said where
+    /// no span was dropped (a G92 before any move).
+    #[test]
+    fn a_shift_whose_amount_is_not_known_starts_the_span_again_with_a_note() {
+        let fanuc = of_family(Family::MacroB);
+        for (body, why) in [
+            // G28 leaves X where the program's coordinates do not say
+            (
+                "G90 G00 X-400.\nG91 G28 X0\nG90 G92 X0\nX900.\n",
+                "where X stood before it",
+            ),
+            (
+                "G90 G00 X-400.\nG52 X100.\nG91 G52 X500.\nG90 X900.\n",
+                "under G91",
+            ),
+            (
+                "G54 G90 G00 X-400.\nG10 L2 P1 X100.\nX900.\n",
+                "it may set the offset of the work system in force",
+            ),
+            // a G92 of X while a local shift of X is in force may have ended it
+            (
+                "G90 G00 X-400.\nG52 X100.\nX0\nG92 X0\nG52 X0\nX900.\n",
+                "the local shift of X before it is not known",
+            ),
+            // a preset of the work system
+            (
+                "G90 G00 X-400.\nG92 X0\nG92.1 X0\nX900.\n",
+                "the offsets in force before",
+            ),
+        ] {
+            assert_eq!(at(fanuc.clone(), body, Rule::TravelExceeded), [], "{body}");
+            let noted = findings(fanuc.clone(), &program(body), Rule::NotFollowed);
+            assert_eq!(noted.len(), 1, "{body}");
+            assert!(
+                noted[0].message.contains(why),
+                "{body}: {}",
+                noted[0].message
+            );
+        }
+        // a G92 before any move drops no span: nothing to say
+        let first = "G90 G91 G28 X0\nG90 G92 X0\nX900.\n";
+        assert_eq!(at(fanuc.clone(), first, Rule::NotFollowed), []);
+        // LinuxCNC's G52 (the offset it shares with G92) and a SINUMERIK's G92: not followed
+        let linuxcnc = of_family(Family::LinuxCnc);
+        let body = "G90 G00 X-400.\nG52 X500.\nX900.\n";
+        assert_eq!(at(linuxcnc.clone(), body, Rule::TravelExceeded), []);
+        assert_eq!(at(linuxcnc.clone(), body, Rule::NotFollowed).len(), 1);
+        // its G92 at a known position is: G92 X0 at X-400., X900. is 500, a span of 900;
+        // X1100. is 700, 1100
+        let body = "G90 G00 X-400.\nG92 X0\nX900.\nX1100.\n";
+        assert_eq!(at(linuxcnc, body, Rule::TravelExceeded), [(5, 1)]);
+    }
+
+    /// Review 38, finding 11: a G53 position written in the other unit system is said in
+    /// both units, with the profile's named, as the span's and the feed's messages do.
+    #[test]
+    fn a_machine_position_in_the_other_units_is_said_in_both() {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        let inch = Config {
+            facts: ProfileFacts {
+                travel: vec![(b'X', dec("-30"), dec("30"))],
+                limit_units: crate::modal::Units::Inch,
+                ..iso_mill().facts
+            },
+            ..iso_mill()
+        };
+        let found = findings(
+            inch.clone(),
+            &program("G71 G00 X0\nG53 X800."),
+            Rule::TravelExceeded,
+        );
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.starts_with(
+                "X goes to 800 mm (31.496063 in) in machine coordinates (G53), outside the \
+                 travel -30 to 30 in"
+            ),
+            "{}",
+            found[0].message
+        );
+        // in the profile's units: as before, the number as written
+        let found = findings(inch, &program("G70 G00 X0\nG53 X31."), Rule::TravelExceeded);
+        assert!(
+            found[0].message.starts_with(
+                "X goes to 31 in machine coordinates (G53), outside the travel -30 to 30"
+            ),
+            "{}",
+            found[0].message
+        );
     }
 
     #[test]

@@ -846,6 +846,9 @@ pub struct Checker {
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
+    /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
+    /// ([`Checker::shift_spans`]).
+    shifts: limits::Shifts,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
     transformed: Option<Transformed>,
@@ -1120,6 +1123,7 @@ impl Checker {
             work: None,
             offsets_lost: false,
             frames: limits::Frames::default(),
+            shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
@@ -2294,7 +2298,7 @@ impl Checker {
                 // the rotation left on (review 15, finding 1)
                 self.turn_frames(b);
                 self.work_offset(b);
-                self.shift_spans(b);
+                self.shift_spans(b, before);
                 return;
             }
             // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force
@@ -2319,7 +2323,7 @@ impl Checker {
         self.turn_frames(b);
         let absolute = self.work_offset(b);
         self.limits(b.line, &facts, absolute);
-        self.shift_spans(b);
+        self.shift_spans(b, before);
         // the statistics and the path, where either is kept (no rule reads them)
         if (self.keep_stats || self.record_path) && !self.cycle_unmodelled {
             let draws = self.draws(b, &facts);

@@ -538,8 +538,17 @@ impl Checker {
         // the canned cycles' group (Fanuc and Haas group 09, G81's): a cycle of the control's
         // list the modal state does not model (a Haas lathe's radial G241-G249, live tool
         // tapping G195/G196) drills at its own feeds and returns where its words say, so its
-        // block and the positions after it are no moves of the G00-G03 in force
-        let cycle_group = group_of(&self.config, b'G', 81);
+        // block and the positions after it are no moves of the G00-G03 in force. None where
+        // G81 is no code of the control: a SINUMERIK drills with CYCLE81 and the like, and its
+        // table holds G81 as not its code, in the one-block codes' group (TBO), whose G4, G9,
+        // G25/G26 (working area and spindle speed limits), G53 or G110 is no cycle and leaves
+        // the moves after it as they are (review 38, finding 12: `G26 S3000` dropped the moves
+        // after it from --stats and the plot)
+        let cycle_group = self
+            .config
+            .code(b'G', 81)
+            .filter(|c| c.status != super::Status::Unassigned)
+            .map_or("", |c| c.duration.as_str());
         let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
         let mut cycle = None;
         let mut lacked = Vec::new();
