@@ -702,8 +702,11 @@ SOURCES = {
              "on the FANUC profiles it is TG605, a warning. SINUMERIK: no source at hand (left "
              "an error, reported). Okuma, LinuxCNC: their profiles set no feed_max.",
     "TG603": "The profile's machine (spindle_max), on the strict ISO profiles and on a user's "
-             "profile (a file, with or without a base: its maximum is the user's machine, a "
-             "chuck's rating perhaps). The S of the spindle speed clamp's code (G50 S on a "
+             "profile file that sets spindle_max itself (its [limits]: its maximum is the "
+             "user's machine, a chuck's rating perhaps; a file with no base sets all its "
+             "limits). A file on a base whose own [limits] do not set spindle_max has the "
+             "built-in base's sample maximum: TG606, as on the base. The S of the spindle "
+             "speed clamp's code (G50 S on a "
              "lathe; G92 S on a FANUC mill and the ISO profiles, not on a Haas, Okuma or "
              "LinuxCNC mill, whose G92 only sets coordinates; a SINUMERIK's G26 S) is a limit, "
              "not a speed: never judged. On a built-in control family's profile, TG606 (a "

@@ -184,10 +184,13 @@ pub struct ProfileFacts {
     pub work_offsets: Vec<(i64, u8, Dec)>,
     pub feed_max: Option<Dec>,
     pub spindle_max: Option<Dec>,
-    /// The limits are a built-in profile's, a sample machine of the family (not the user's
-    /// own: a profile file's, with or without a `base`): a spindle speed above its maximum is
-    /// TG606, a warning, there, and TG603, the error, on the user's machine.
-    pub limits_builtin: bool,
+    /// The limits that are a built-in profile's, a sample machine of the family, not the
+    /// user's own ([`SAMPLE_TRAVEL`], [`SAMPLE_FEED`], [`SAMPLE_SPINDLE`], [`SAMPLE_TOOLS`]):
+    /// every one on a built-in profile, none on a profile file without a `base`, and on a file
+    /// with one those its own `[limits]` do not set. A spindle speed above a sample maximum is
+    /// TG606, a warning, and TG603, the error, above the user's; the first finding against a
+    /// sample limit says it is one.
+    pub sample_limits: u8,
     pub tool_max: Option<i64>,
     pub rapid_rate: f64,
     /// The units of the limits, the work offsets, the rapid rate and the statistics: the
@@ -195,6 +198,17 @@ pub struct ProfileFacts {
     /// otherwise (`check --units`, `convert --from-units`: the modal settings' start units).
     pub limit_units: Units,
 }
+
+/// [`ProfileFacts::sample_limits`]: the travel is a sample machine's.
+pub const SAMPLE_TRAVEL: u8 = 1;
+/// [`ProfileFacts::sample_limits`]: the feed maximum is a sample machine's.
+pub const SAMPLE_FEED: u8 = 2;
+/// [`ProfileFacts::sample_limits`]: the spindle speed maximum is a sample machine's.
+pub const SAMPLE_SPINDLE: u8 = 4;
+/// [`ProfileFacts::sample_limits`]: the tool number maximum is a sample machine's.
+pub const SAMPLE_TOOLS: u8 = 8;
+/// [`ProfileFacts::sample_limits`] of a built-in profile: every limit a sample machine's.
+pub const SAMPLE_ALL: u8 = SAMPLE_TRAVEL | SAMPLE_FEED | SAMPLE_SPINDLE | SAMPLE_TOOLS;
 
 /// Everything the checker needs from a profile, resolved once (the checker's part of a
 /// [`crate::machine::Machine`], shared by every checker of that machine): the profile's facts,
