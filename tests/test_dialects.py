@@ -314,6 +314,27 @@ def test_a_sinumerik_changes_d_under_cutter_compensation():
     assert "TG502" in [f.rule for f in findings(fanuc, "fanuc-mill")]
 
 
+def test_a_sinumerik_d_of_an_r_parameter_under_compensation_is_judged_by_its_value(tmp_path):
+    """Review 38, finding 7: `D=R1` under G41 was TG502, the error, whatever R1 held. The
+    checker evaluates R parameters set before (`R1=2`): a D of 2 is a D change (840Di sl
+    Fundamentals 8.8), quiet; one of 0 is D0, the offset off (TG502); one it cannot know
+    (`R1=$P_TOOLNO`, the control's own) is TG503, a warning naming D0. Through the CLI."""
+    text = ("N10 G71 G90 G17 G0 X0 Y0 T1 D1\nN20 M6\nN30 R1={value}\nN40 G41 G1 X10 Y0 F100\n"
+            "N50 D=R1 X20\nN60 G40 X60\nN70 M30\n")
+    path = tmp_path / "d.mpf"
+    said = {}
+    for value in ("2", "0", "$P_TOOLNO"):
+        path.write_text(text.format(value=value))
+        result = CliRunner().invoke(main, ["check", str(path), "-p", "sinumerik-840d",
+                                           "--select", "TG502,TG503"])
+        said[value] = re.findall(r"d\.mpf:(\d+):\d+: (\w+) (TG\d+) (.*)", result.output)
+    assert said["2"] == []
+    assert [(line, rule) for line, _, rule, _ in said["0"]] == [("5", "TG502")]
+    [(line, severity, rule, message)] = said["$P_TOOLNO"]
+    assert (line, severity, rule) == ("5", "warning", "TG503")
+    assert "not known" in message and "D0 switches the offset off under G41" in message
+
+
 def test_a_feed_above_the_maximum_is_clamped_on_a_fanuc_and_alarms_on_a_haas():
     """Issue 32's severity by evidence: a FANUC clamps a cutting feed above its maximum
     (B-63172EN 4.2.2), a warning; a Haas alarms ("max feedrate exceeded", NGC manual, G01)."""

@@ -265,6 +265,8 @@ rules! {
         "cutter compensation introduced or removed in a circular block";
     ToolChangeInCompensation = "TG502", Error, "10", Tooling, false,
         "new T or D while cutter compensation is active (G40 first)";
+    UnknownDInCompensation = "TG503", Warning, "10", Tooling, false,
+        "SINUMERIK: a D whose value the checker does not know (`D=R1`, R1 not known there) while G41/G42 is active: a D change is allowed there, but D0 would switch the offset off under compensation (TG502 where the value is known to be 0)";
     LeadAndFeed = "TG511", Error, "11", Tooling, false,
         "G33 constant lead with both a lead word and F";
     SignedLead = "TG512", Error, "11", Tooling, false,
