@@ -1431,3 +1431,44 @@ def test_the_m165_block_sends_and_no_restart_after_it_guesses_the_speed(tmp_path
     with pytest.raises(RestartRefused) as refused:
         workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
     assert "S2. on line 5" in refused.value.message, refused.value.message
+
+
+# -- LinuxCNC: an end of program written by a parameter or expression, or block-deleted -------
+
+# (review 38, finding 8) the end's line, the fourth: each form rs274 reads as M2 (read_m,
+# read_integer_value), and the block-deleted one, which ends only with the switch off
+LINUXCNC_END = "#<two> = 2\nG21 G90\nG0 X0 Y0 Z1\n{end}\nG0 X1\nM2\n"
+
+
+@pytest.mark.parametrize("end", ["M2", "M#<two>", "M[2]", "M[1+1]", "M[#<two>*15]", "/M2"])
+def test_linuxcnc_ends_where_rs274_ends(end, tmp_path):
+    """`tapegate check` of a program whose fourth line ends it, beside what rs274 does with
+    it (where rs274 is installed): an M2 written by a parameter or an expression is the end
+    (TG117 for the lines after it, as for `M2`; it was TG116, or nothing); a block-deleted
+    `/M2` is passed over with the block delete switch on (`rs274 -b`), so the lines after it
+    run then: no TG116 or TG117 for them."""
+    import re
+    import shutil
+    import subprocess
+
+    from .conftest import rs274_env
+
+    path = tmp_path / "end.ngc"
+    path.write_text(LINUXCNC_END.format(end=end))
+    _, lines = jsonl("-p", "linuxcnc", str(path))
+    said = [(f["rule"], f["line"]) for f in lines if f["rule"] in ("TG116", "TG117", "TG114")]
+    deleted = end.startswith("/")
+    assert said == ([] if deleted else [("TG117", 5)]), lines
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+
+    def traverses(*flags: str) -> list[float]:
+        run = subprocess.run(["rs274", *flags, "-g", str(path)], capture_output=True, text=True,
+                             timeout=30, input="", env=rs274_env(), cwd=tmp_path)
+        out = run.stdout + run.stderr
+        assert "PROGRAM_END()" in out, out
+        return [float(m[1]) for m in re.finditer(r"STRAIGHT_TRAVERSE\(([-\d.]+),", out)]
+
+    # the G0 X1 after the end never runs; with the switch on, a deleted end's does
+    assert traverses() == [0.0]
+    assert traverses("-b") == ([0.0, 1.0] if deleted else [0.0])

@@ -747,6 +747,9 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
+    /// LinuxCNC: a block delete's `/M2` (or `/M30`) came, which ends the program only with
+    /// the switch off: no end for the lines after it, but an end for TG114.
+    skipped_end: bool,
     /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
     /// condition or loop of the main program or inside a definition, which may not run
     /// (rs274 reads on where it does not: review 19). The rules that judge the main program's
@@ -1082,6 +1085,7 @@ impl Checker {
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
+            skipped_end: false,
             surely_ended: false,
             linuxcnc_end_depth: None,
             after_end_reported: false,
@@ -2011,8 +2015,9 @@ impl Checker {
         };
         // (LinuxCNC: an M2/M30 inside a condition, a loop or a definition may not run, and
         // the lines after it run only where it did not: it resets no mode; review 19)
+        // (and one after a block delete `/`, which the switch may pass over)
         self.values.end_unsure =
-            self.config.family == Family::LinuxCnc && !self.linuxcnc_runs_surely();
+            self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
         self.machine.apply_taken(&self.values, taken);
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
@@ -2074,10 +2079,13 @@ impl Checker {
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
         // to look at (RET, RTS)
         let m_read = !self.values.ms.is_empty();
-        let ends = m_read
+        let mut ends = m_read
             && b.words.iter().enumerate().any(|(i, w)| {
                 w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
             });
+        if self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 {
+            ends = self.linuxcnc_end(b, ends);
+        }
         let returns = (m_read || !b.statements.is_empty())
             && dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         self.sub_ended |= returns;

@@ -245,6 +245,7 @@ impl Checker {
         self.conflict_at = None;
         self.programs += 1;
         self.ended_line = 0;
+        self.skipped_end = false;
         self.surely_ended = false;
         self.linuxcnc_end_depth = None;
         self.sub_ended = false;
@@ -635,14 +636,18 @@ impl Checker {
         };
         // (an M2 or M30 among the block's M codes, beside a sequence number and other M codes:
         // `M5 M2`, `N5 M2`, `M2.0`, review 38, finding 2)
+        // (an M value of a parameter or expression the checker evaluates, `M#<two>`, is one
+        // too: rs274 reads it so, review 38, finding 8)
         let program_end = b.statements.is_empty() && {
             let mut ends = false;
-            let plain = b.words.iter().all(|w| {
-                let number = std::str::from_utf8(w.number)
-                    .ok()
-                    .and_then(|n| n.parse::<f64>().ok());
-                ends |= w.letter == b'M' && matches!(number, Some(n) if n == 2.0 || n == 30.0);
-                w.expression.is_empty() && matches!(w.letter, b'M' | b'N') && number.is_some()
+            let plain = b.words.iter().all(|w| match w.letter {
+                b'M' => {
+                    let number = self.linuxcnc_m_number(w);
+                    ends |= matches!(number, Some(2 | 30));
+                    number.is_some()
+                }
+                b'N' => w.expression.is_empty(),
+                _ => false,
             });
             plain && ends
         };
@@ -752,6 +757,54 @@ impl Checker {
                 self.linuxcnc_called_ahead.push((label, b.line));
             }
         }
+    }
+
+    /// LinuxCNC: whether the block with an M word ends the program (`ends`: by the values the
+    /// checker read for its M words). rs274 reads an M value as a number, a parameter or an
+    /// expression, so `M#<two>` and `M[1+1]` end it as `M2` does: said to the reading's end
+    /// ([`dialect::ReadingEnd::ended_at`]), whose lines after it are TG117's, as after `M2`.
+    /// A block delete's `/M2` ends it only with the switch off; with it on rs274 reads on and
+    /// runs the lines after it (`rs274 -b`): no end here, the lines after it checked as run,
+    /// and it counts as the program's end for TG114 alone (review 38, finding 8).
+    #[inline(never)]
+    pub(super) fn linuxcnc_end(&mut self, b: &BlockView<'_>, ends: bool) -> bool {
+        let ends = ends
+            || b.words.iter().any(|w| {
+                w.letter == b'M' && !w.expression.is_empty() && {
+                    matches!(self.linuxcnc_m_number(w), Some(2 | 30))
+                }
+            });
+        if !ends {
+            return false;
+        }
+        if b.skip {
+            self.skipped_end = true;
+            return false;
+        }
+        self.reading_end.ended_at(b.line);
+        true
+    }
+
+    /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
+    /// expression (interp_read.cc `read_m`, `read_integer_value`: `M#<two>` and `M[1+1]` are
+    /// M2) -- where the checker knows its value: the whole number within 0.0001 of it, rs274's
+    /// tolerance. None for a value it does not know or that is no whole number.
+    pub(super) fn linuxcnc_m_number(&self, w: &Word<'_>) -> Option<i64> {
+        let value = if w.expression.is_empty() {
+            std::str::from_utf8(w.number)
+                .ok()?
+                .trim()
+                .parse::<f64>()
+                .ok()?
+        } else if w.expression.len() > 200 {
+            return None; // (a chain of terms is a tree as deep, walked by recursion)
+        } else {
+            let tree = crate::expr::tree(w.expression).ok()?;
+            let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
+            super::tooling::linuxcnc_value(&tree, w.expression, &param).ok()??
+        };
+        let whole = value.round();
+        ((value - whole).abs() <= 0.0001).then_some(whole as i64)
     }
 
     /// TG412: LinuxCNC's main program reads a local named parameter (`#<name>`) that no line
@@ -1535,7 +1588,7 @@ impl Checker {
             // a memory backup's last folder marker with no program after it (the Robodrill
             // ALL-FLDR punch-out's `&F=/USER/PATH2/` before the closing %), or a Haas's saved
             // offsets after the program's end (O999999): no program
-        } else if self.ended_line == 0 && !percent_ended {
+        } else if self.ended_line == 0 && !percent_ended && !self.skipped_end {
             self.report(
                 Rule::NoProgramEnd,
                 "the program has no M02 or M30".into(),
@@ -2436,6 +2489,63 @@ mod tests {
             fired(of_family(Family::MacroB), named, Rule::Unreadable),
             [(3, 10)]
         );
+    }
+
+    #[test]
+    fn linuxcnc_ends_at_an_m2_written_by_a_parameter_or_expression_not_at_a_deleted_one() {
+        // rs274 reads an M value as a parameter or an expression (read_integer_value): each
+        // of these is the end as `M2` is, the lines after it never read (review 38, 8)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let text = |end: &str| format!("#<two> = 2\nG21 G90\nG0 X0 Y0 Z1\n{end}\nG0 X1\nM2\n");
+        for end in [
+            "M2",
+            "M#<two>",
+            "M[2]",
+            "M[1+1]",
+            "M[#<two>*15]",
+            "M[2.00001]",
+            "N5 M#<two>",
+        ] {
+            let found = check(linuxcnc(), &text(end));
+            let rules: Vec<_> = found
+                .iter()
+                .filter(|f| matches!(f.rule, Rule::NotRead | Rule::WordsAfterEnd))
+                .map(|f| (f.rule, f.line))
+                .collect();
+            assert_eq!(rules, [(Rule::NotRead, 5)], "{end}");
+            assert!(
+                found[0..].iter().any(|f| f.message.contains("on line 4")),
+                "{end}"
+            );
+        }
+        // a value not known, or no end: read on
+        for end in ["M#<nope>", "M[1+2]", "M#1", "M0"] {
+            let text = text(end);
+            assert_eq!(fired(linuxcnc(), &text, Rule::NotRead), [], "{end}");
+            assert_eq!(fired(linuxcnc(), &text, Rule::WordsAfterEnd), [], "{end}");
+        }
+        // a block delete's `/M2` ends the program only with the switch off: with it on rs274
+        // runs the lines after it (`rs274 -b`), so they are read and checked, no TG116/TG117
+        let deleted = text("/M2");
+        assert_eq!(fired(linuxcnc(), &deleted, Rule::NotRead), []);
+        assert_eq!(fired(linuxcnc(), &deleted, Rule::WordsAfterEnd), []);
+        assert_eq!(
+            fired(linuxcnc(), &text("/M2\nG0 X"), Rule::Unreadable),
+            [(5, 4)]
+        );
+        // ... and it is the program's end for TG114 (with the switch off it ends there)
+        let last = "G21 G90\nG0 X0 Y0 Z1\n/M2\n";
+        assert_eq!(fired(linuxcnc(), last, Rule::NoProgramEnd), []);
+        // a subroutine file's end after its endsub by an expression: the file's end as M2
+        for end in ["M2", "M[1+1]"] {
+            let sub = format!("#<k> = 3\no<sx> sub\nG1 X#<k> F100\no<sx> endsub\n{end}\n");
+            let found = check(linuxcnc(), &sub);
+            assert!(
+                found.iter().all(|f| f.rule != Rule::NoProgramEnd),
+                "{end}: {found:?}"
+            );
+            assert_eq!(fired(linuxcnc(), &sub, Rule::NotRead), [(1, 1)], "{end}");
+        }
     }
 
     #[test]

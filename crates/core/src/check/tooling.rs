@@ -140,17 +140,28 @@ impl Checker {
 /// it (the operands of a function, a power or `MOD` included), None where a parameter, a
 /// function or an operator other than `+ - * /` leaves the value to the machine.
 fn linuxcnc_constant(e: &crate::expr::Expr, text: &[u8]) -> Result<Option<f64>, ()> {
+    linuxcnc_value(e, text, &|_| None)
+}
+
+/// [`linuxcnc_constant`] where a parameter (`#<two>`, `#5`, its text) has the value `param`
+/// gives it, if any.
+pub(super) fn linuxcnc_value(
+    e: &crate::expr::Expr,
+    text: &[u8],
+    param: &dyn Fn(&[u8]) -> Option<f64>,
+) -> Result<Option<f64>, ()> {
     use crate::expr::Expr;
     Ok(match e {
         Expr::Number(a, b) => std::str::from_utf8(&text[*a..*b])
             .ok()
             .and_then(|t| t.replace([' ', '\t'], "").parse::<f64>().ok()),
+        Expr::Param(a, b) => param(&text[*a..*b]),
         Expr::Sign(sign, inner) => {
-            linuxcnc_constant(inner, text)?.map(|v| if *sign == b'-' { -v } else { v })
+            linuxcnc_value(inner, text, param)?.map(|v| if *sign == b'-' { -v } else { v })
         }
         Expr::Binary(op, l, r) => {
-            let a = linuxcnc_constant(l, text)?;
-            let b = linuxcnc_constant(r, text)?;
+            let a = linuxcnc_value(l, text, param)?;
+            let b = linuxcnc_value(r, text, param)?;
             if *op == b'/' && b == Some(0.0) {
                 return Err(());
             }
@@ -163,7 +174,7 @@ fn linuxcnc_constant(e: &crate::expr::Expr, text: &[u8]) -> Result<Option<f64>, 
             }
         }
         Expr::Call(inner) => {
-            linuxcnc_constant(inner, text)?;
+            linuxcnc_value(inner, text, param)?;
             None
         }
         _ => None,
