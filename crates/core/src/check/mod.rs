@@ -1009,6 +1009,14 @@ pub struct Checker {
     /// calls: a call of one none of whose bodies, transitively, may leaves the feed mode as
     /// it was before the call (issue 32, item 4; `Checker::linuxcnc_call_keeps_mode`).
     linuxcnc_bodies: Vec<(Vec<u8>, bool, Vec<Vec<u8>>)>,
+    /// LinuxCNC: the local named parameters the open definition's body has assigned so far
+    /// (`Checker::linuxcnc_body_locals`).
+    linuxcnc_body_named: HashSet<Vec<u8>>,
+    /// LinuxCNC: each definition's first read of a local named parameter its body did not
+    /// assign before (label, line, column, name), said where an `o<label> call` of the file
+    /// calls it; and the labels the file's calls name.
+    linuxcnc_body_unassigned: Vec<(Vec<u8>, usize, usize, Vec<u8>)>,
+    linuxcnc_calls: HashSet<Vec<u8>>,
     /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
     /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
     /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
@@ -1172,6 +1180,9 @@ impl Checker {
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_bodies: Vec::new(),
+            linuxcnc_body_named: HashSet::new(),
+            linuxcnc_body_unassigned: Vec::new(),
+            linuxcnc_calls: HashSet::new(),
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,
@@ -2275,6 +2286,7 @@ impl Checker {
         self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();
+        self.linuxcnc_locals_ended();
         self.program_end();
     }
 

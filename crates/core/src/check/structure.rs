@@ -8,6 +8,7 @@ use crate::lex::{blank, Family};
 use crate::rules::Rule;
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
+use std::collections::HashSet;
 
 /// The first `#` of `text` from `from`: 8 bytes at a time (a zero-byte mask of the bytes
 /// XOR `#`), the last few one by one. A bracketed expression is a few dozen bytes, where
@@ -240,6 +241,7 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.targets_ended();
+        self.linuxcnc_locals_ended();
         self.reach_reset();
         self.refused_at = None;
         self.conflict_at = None;
@@ -526,10 +528,12 @@ impl Checker {
         let statement = if b.statements.is_empty() {
             if self.open_definition.is_some() {
                 self.linuxcnc_body(b, None);
+                self.linuxcnc_body_locals(b, None);
             }
             None
         } else {
             let statement = dialect::subroutine_statement(b.statements);
+            self.linuxcnc_body_locals(b, statement.as_ref());
             self.definition_after_call(b, statement.as_ref());
             self.definition_feed(statement.as_ref());
             self.definition_open(b, statement.as_ref());
@@ -757,6 +761,100 @@ impl Checker {
                 self.linuxcnc_called_ahead.push((label, b.line));
             }
         }
+    }
+
+    /// LinuxCNC: a definition's body reads a local named parameter (`#<zz>`, not a global
+    /// `#<_zz>`) that no line of the body, nor a word before it in its line, assigns: rs274
+    /// keeps local named parameters per call level (interp_namedparams.cc; LinuxCNC O-codes,
+    /// "named parameters are local to the scope"), so the caller's `#<zz>` is not visible
+    /// in the body and the call fails, "Named parameter #<zz> not defined" (`rs274 -g`; review
+    /// 38, finding 9). Kept at the body's first such read, said by
+    /// [`Checker::linuxcnc_locals_ended`] where the file calls the definition (a remap's body,
+    /// whose locals the remapped block's words give, is called by no `o<name> call`). A read
+    /// inside a condition or loop of the body is not judged (it may not run), its assignments
+    /// are taken as made; the calls of the file's lines, body or not, are noted here.
+    fn linuxcnc_body_locals(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        for &(_, kind, text) in b.statements {
+            if kind == Kind::Call
+                && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+            {
+                self.linuxcnc_calls.insert(crate::statement::o_label(text));
+            }
+        }
+        if let Some((true, _)) = statement {
+            if self.open_definition.is_none() {
+                self.linuxcnc_body_named.clear();
+            }
+            return;
+        }
+        let Some((_, _, label)) = &self.open_definition else {
+            return;
+        };
+        let label = label.clone();
+        let judge = self.linuxcnc_definition_flow.is_empty();
+        let said = self.linuxcnc_body_unassigned.iter().any(|e| e.0 == label);
+        let mut first: Option<(usize, Vec<u8>)> = None;
+        for w in b.words {
+            if w.expression.is_empty() {
+                continue;
+            }
+            let mut reads = w.expression;
+            let mut assigns = None;
+            if w.letter == b'#' && w.expression.first() == Some(&b'<') {
+                if let Some(close) = w.expression.iter().position(|&c| c == b'>') {
+                    assigns = Some(super::params::named_parameter(&w.expression[1..close]));
+                    reads = &w.expression[close + 1..];
+                }
+            }
+            if first.is_none() {
+                first = body_unassigned(reads, &self.linuxcnc_body_named).map(|n| (w.column, n));
+            }
+            if let Some(name) = assigns {
+                self.linuxcnc_body_named.insert(name);
+            }
+        }
+        for &(column, kind, text) in b.statements {
+            if first.is_none() && matches!(kind, Kind::Flow | Kind::Call | Kind::Definition) {
+                // (an `o<name> endsub [#<v>]`'s value, a condition's, a call's arguments)
+                // (past a label `o<name>`, whose name is no read; `o1` has no `#<`)
+                let text = match text.get(1..) {
+                    Some(t) if t.first() == Some(&b'<') => t
+                        .iter()
+                        .position(|&c| c == b'>')
+                        .map_or(t, |at| &t[at + 1..]),
+                    _ => text,
+                };
+                first = body_unassigned(text, &self.linuxcnc_body_named).map(|n| (column, n));
+            }
+        }
+        if let Some((column, name)) = first.filter(|_| judge && !said) {
+            self.linuxcnc_body_unassigned
+                .push((label, b.line, column, name));
+        }
+    }
+
+    /// The reads [`Checker::linuxcnc_body_locals`] kept, said (TG412) for each definition an
+    /// `o<name> call` of the file calls; then forgotten, with the calls.
+    pub(super) fn linuxcnc_locals_ended(&mut self) {
+        let kept = std::mem::take(&mut self.linuxcnc_body_unassigned);
+        for (label, line, column, name) in kept {
+            if !self.linuxcnc_calls.contains(&label) {
+                continue;
+            }
+            let (name, label) = (
+                String::from_utf8_lossy(&name),
+                String::from_utf8_lossy(&label),
+            );
+            let message = format!(
+                "Named parameter {name}> not defined (rs274ngc) when {label} is called: no \
+                 line of its body assigns it before, and a local named parameter is local to \
+                 its call level, so the caller's {name}> is not visible in the body (a global, \
+                 #<_name>, is)"
+            );
+            self.report(Rule::LinuxCncRefuses, message, line, column);
+        }
+        self.linuxcnc_calls.clear();
+        self.linuxcnc_body_named.clear();
     }
 
     /// LinuxCNC: whether the block with an M word ends the program (`ends`: by the values the
@@ -2007,6 +2105,35 @@ fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8]) -> Option<usize> {
     open.iter().rposition(|l| *l == label)
 }
 
+/// The first local named parameter `text` reads (`#<zz>`, as `params::named_parameter`
+/// writes it) that is not a global (`#<_zz>`), not among `assigned`, and not read inside
+/// `EXISTS[..]` ([`Checker::linuxcnc_body_locals`]).
+fn body_unassigned(text: &[u8], assigned: &HashSet<Vec<u8>>) -> Option<Vec<u8>> {
+    let mut i = 0;
+    while let Some(at) = text[i..].windows(2).position(|p| p == b"#<") {
+        let start = i + at;
+        let close = start + 2 + text[start + 2..].iter().position(|&c| c == b'>')?;
+        i = close + 1;
+        let name = super::params::named_parameter(&text[start + 2..close]);
+        if name.get(2) == Some(&b'_') || assigned.contains(&name) {
+            continue;
+        }
+        let before: Vec<u8> = text[..start]
+            .iter()
+            .rev()
+            .copied()
+            .filter(|&c| !blank(c))
+            .skip_while(|&c| c == b'[')
+            .take(6)
+            .collect();
+        if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
+            continue;
+        }
+        return Some(name);
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::testing::{
@@ -2489,6 +2616,63 @@ mod tests {
             fired(of_family(Family::MacroB), named, Rule::Unreadable),
             [(3, 10)]
         );
+    }
+
+    #[test]
+    fn a_linuxcnc_sub_body_reading_a_local_it_never_assigns_fails_when_called() {
+        // rs274 keeps local named parameters per call level: the caller's #<zz> is not seen
+        // in the body ("Named parameter #<zz> not defined", review 38, finding 9)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let text = |before: &str, body: &str, call: &str| {
+            format!("G21 G90\nG0 X0 Y0 Z1\n{before}o<s> sub\n{body}o<s> endsub\n{call}M2\n")
+        };
+        let refused = |t: &str| fired(linuxcnc(), t, Rule::LinuxCncRefuses);
+        let read = "G1 X#<zz> F100\n";
+        assert_eq!(refused(&text("", read, "o<s> call\n")), [(4, 4)]);
+        // the caller's own: still not visible
+        assert_eq!(refused(&text("#<zz> = 1\n", read, "o<s> call\n")), [(5, 4)]);
+        let found = findings(
+            linuxcnc(),
+            &text("", read, "o<s> call\n"),
+            Rule::LinuxCncRefuses,
+        );
+        assert!(
+            found[0]
+                .message
+                .contains("#<zz> not defined (rs274ngc) when o<s> is called"),
+            "{}",
+            found[0].message
+        );
+        // a condition of the body runs: its read is judged; an endsub's value too
+        let cond = "o1 if [#<zz> GT 0]\nG1 X1 F100\no1 endif\n";
+        assert_eq!(refused(&text("", cond, "o<s> call\n")), [(4, 1)]);
+        let ret = "#<zz> = 1\nG0 X0 Y0 Z1\no<s> sub\no<s> endsub [#<zz>]\no<s> call\nM2\n";
+        assert_eq!(fired(linuxcnc(), ret, Rule::LinuxCncRefuses), [(4, 1)]);
+        // what rs274 accepts: a global, a name the body assigns before (or earlier in the
+        // line), a read inside a condition of the body (it may not run), EXISTS, a
+        // definition the file never calls (a remap's body, whose locals its words give)
+        for (before, body, call) in [
+            ("#<_zz> = 1\n", "G1 X#<_zz> F100\n", "o<s> call\n"),
+            ("", "#<zz> = 3\nG1 X#<zz> F100\n", "o<s> call\n"),
+            ("", "#<zz> = 3 G1 X#<zz> F100\n", "o<s> call\n"),
+            (
+                "",
+                "o1 if [#1 GT 0]\nG1 X#<zz> F100\no1 endif\n",
+                "o<s> call [0]\n",
+            ),
+            (
+                "",
+                "o1 if [EXISTS[#<zz>]]\nG1 X1 F100\no1 endif\n",
+                "o<s> call\n",
+            ),
+            ("#<zz> = 1\n", read, ""),
+        ] {
+            let t = text(before, body, call);
+            assert_eq!(refused(&t), [], "{t}");
+        }
+        // a read after the assignment's word in its line is one; before it is not
+        let late = "G1 X#<zz> F100 #<zz> = 3\n";
+        assert_eq!(refused(&text("", late, "o<s> call\n")), [(4, 4)]);
     }
 
     #[test]
