@@ -79,7 +79,9 @@ if TYPE_CHECKING:
         work_offsets: list[tuple[int, str, str]]
         feed_max: str | None
         spindle_max: str | None
-        limits_builtin: bool  # a built-in profile's sample machine, not the user's own
+        # the limits that are a built-in profile's sample machine, not the user's own: bits 1
+        # travel, 2 feed_max, 4 spindle_max, 8 tool_max (Profile.sample_limits)
+        sample_limits: int
         tool_max: int | None
         rapid_rate: float
         reset: list[int]
@@ -121,6 +123,10 @@ def _numbered(codes: dict[str, Code]) -> Iterator[tuple[str, Code]]:
     for key, code in codes.items():
         number, dot, rest = key[1:].partition(".")
         yield f"{key[0]}{int(number)}{dot}{rest}", code
+
+
+# Profile.sample_limits as the core's bits (check::SAMPLE_TRAVEL ...)
+_SAMPLE_BITS = {"travel": 1, "feed_max": 2, "spindle_max": 4, "tool_max": 8}
 
 
 def machine_spec(profile: Profile) -> MachineSpec:
@@ -198,7 +204,8 @@ def machine_spec(profile: Profile) -> MachineSpec:
                          for axis, value in axes.items()],
         "feed_max": text(limits, "feed_max"),
         "spindle_max": text(limits, "spindle_max"),
-        "limits_builtin": profile.source == "built-in",
+        "sample_limits": sum(bit for key, bit in _SAMPLE_BITS.items()
+                             if key in profile.sample_limits),
         "tool_max": limits.tool_max,
         "rapid_rate": float(text(limits, "rapid_rate")),
         "reset": [int(c[1:]) for c in profile.reset_state()],

@@ -248,6 +248,12 @@ class Profile(FrozenRecord):
     # A FANUC lathe's G code system (parameter No. 3401 GSB/GSC): "A", "B" or "C"; "" for every
     # other control. B and C number the lathe's codes otherwise (docs/dialects.md).
     g_code_system: str = ""
+    # The limits that are a built-in profile's sample machine of the family, not the user's:
+    # of "travel", "feed_max", "spindle_max" and "tool_max", every one on a built-in profile,
+    # none on a user's file without a base, and on a file with a base those its own [limits]
+    # do not set (the travel: unless it sets every axis the profile has a travel for)
+    # (:func:`sample_limits`). A limit passed on the sample machine is said so.
+    sample_limits: frozenset[str] = frozenset()
 
     def __init__(self, name: str, description: str, general: GeneralClassification,
                  detailed: DetailedClassification, table: CodeTable,
@@ -259,11 +265,12 @@ class Profile(FrozenRecord):
                  restart: RestartSettings = _RESTART,
                  work_offsets: dict[str, dict[str, Decimal]] = NEW,
                  data_patterns: tuple[str, ...] | None = None,
-                 limit_units: str | None = None, g_code_system: str = "") -> None:
+                 limit_units: str | None = None, g_code_system: str = "",
+                 sample_limits: frozenset[str] = frozenset()) -> None:
         init_fields(self, name, description, general, detailed, table, units_codes, default_units,
                     control_type, dialect, program_number, extra_codes, limits, checks, serial,
                     source, reset, numbers, detailed_inch, restart, new(work_offsets, dict),
-                    data_patterns, limit_units, g_code_system)
+                    data_patterns, limit_units, g_code_system, sample_limits)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -440,19 +447,46 @@ def profile_from_text(text: str, source: str = "<text>", default_name: str = "",
     between runs (:mod:`formats.profile_cache`): a built-in profile's name, or
     :data:`FILE_CACHE_NAME` for a user's profile file."""
     data = _toml(text, source, cache_as)
+    on_base = "base" in data
+    own = data.get("limits") if on_base else None
     try:
-        if "base" in data:
+        if on_base:
             data = _on_base(data, source)
         profile = _build(data, source, default_name)
     except ProfileError as exc:
         raise exc.located(file=source) from None
+    sample = sample_limits(source == "built-in", on_base, own if isinstance(own, dict) else {},
+                           profile.limits)
+    if sample:
+        object.__setattr__(profile, "sample_limits", sample)
     if cache_as is not None:  # the core's machine spec kept between runs too, by what made it
         from formats import profile_cache
 
-        key = profile_cache.spec_key(data, source, default_name)
+        # (the file's own limits decide the spec too: the merged data alone does not say them)
+        key = profile_cache.spec_key(data, source, default_name, sorted(sample))
         if key is not None:
             object.__setattr__(profile, "_spec_key", key)
     return profile
+
+
+SAMPLE_LIMITS = frozenset({"travel", "feed_max", "spindle_max", "tool_max"})
+
+
+def sample_limits(builtin: bool, on_base: bool, own: dict[str, Any],
+                  limits: Limits) -> frozenset[str]:
+    """The limits of a profile that are a built-in profile's sample machine
+    (:attr:`Profile.sample_limits`): every one of a built-in profile (``builtin``); of a
+    user's file written on a base (``on_base``), each its own ``[limits]`` table (``own``, read
+    before the merge) does not set -- the travel where it does not set every axis the profile
+    has a travel for; none of a user's file without a base, whose limits are all its own."""
+    if builtin:
+        return SAMPLE_LIMITS
+    if not on_base:
+        return frozenset()
+    sample = {key for key in ("feed_max", "spindle_max", "tool_max") if key not in own}
+    if any(axis not in own for axis in limits.axes):
+        sample.add("travel")
+    return frozenset(sample)
 
 
 def _toml(text: str, source: str, cache_as: str | None) -> dict[str, Any]:

@@ -142,14 +142,16 @@ def _code() -> tuple[tuple[str, int, int], ...] | None:
     return tuple(found)
 
 
-def spec_key(data: dict[str, Any], source: str, default_name: str) -> bytes | None:
-    """What a profile made from ``data`` (its table, ``base`` merged), ``source`` and
-    ``default_name`` keeps its spec under, or None (the cache off, a value marshal cannot
-    hold)."""
+def spec_key(data: dict[str, Any], source: str, default_name: str,
+             sample: list[str] | None = None) -> bytes | None:
+    """What a profile made from ``data`` (its table, ``base`` merged), ``source``,
+    ``default_name`` and its sample limits (``sample``: the limits its own file did not set,
+    ``Profile.sample_limits``) keeps its spec under, or None (the cache off, a value marshal
+    cannot hold)."""
     if directory() is None:
         return None
     try:
-        return marshal.dumps((data, source, default_name))
+        return marshal.dumps((data, source, default_name, sample or []))
     except ValueError:
         return None
 

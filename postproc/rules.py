@@ -245,6 +245,14 @@ _example("TG501",
 _example("TG502",
          P + "N2 G41 G01 X0 F100 D1\nN3 D2\n" + E,
          P + "N2 G41 G01 X0 F100 D1\nN3 G40 G01 X5\nN4 D2\n" + E)
+# (a SINUMERIK's D of an R parameter the checker does not know: $P_TOOLNO, the active tool's
+# number, is the control's; known to be 2, it is a D change, allowed under compensation)
+_example("TG503",
+         "G71 G90 G17 G0 X0 Y0 T1 D1\nM6\nR1=$P_TOOLNO\nG41 G1 X10 Y0 F100\nD=R1 X20\n"
+         "G40 X60\nM30\n",
+         "G71 G90 G17 G0 X0 Y0 T1 D1\nM6\nR1=2\nG41 G1 X10 Y0 F100\nD=R1 X20\n"
+         "G40 X60\nM30\n",
+         "sinumerik-840d")
 _example("TG511", P + "N2 G33 Z-20 K1.5 F100\n" + E, P + "N2 G33 Z-20 K1.5\n" + E, "iso-lathe")
 _example("TG512", P + "N2 G33 Z-20 K-1.5\n" + E, P + "N2 G33 Z-20 K1.5\n" + E, "iso-lathe")
 _example("TG513", P + "N2 G34 Z-20 K1.5\n" + E, P + "N2 G34 Z-20 K1.5 F0.1\n" + E, "iso-lathe")
@@ -669,6 +677,14 @@ SOURCES = {
              "Manual Fundamentals, 11/2006, 8.8, \"Changing the offset number D\"): a D alone "
              "is no finding there (a T still is: no Siemens page read for it). FANUC, Okuma: no "
              "alarm number at hand.",
+    "TG503": "SINUMERIK: the offset number D can be changed in compensation mode, the new "
+             "radius in effect from its block (840Di sl Programming Manual Fundamentals, "
+             "11/2006, 8.8, \"Changing the offset number D\"); D0 is no offset, so under "
+             "G41/G42 it switches the offset off (TG502, review 37). A D written by an R "
+             "parameter or expression the checker evaluates (`R1=2` before `D=R1`) is judged "
+             "by its value: no finding, or TG502 for 0. One it cannot evaluate (R1 set from "
+             "a system variable, after a jump or call) may be either: a warning, no alarm "
+             "source either way.",
     "TG511": "ISO 6983-1 clause 11 (G33: the lead in I/J/K, so no F). LinuxCNC: rs274 \"F word "
              "used with a g33/g33.1\". FANUC, Haas, SINUMERIK: no alarm number at hand for a "
              "lead word and F in one threading block (their threading words were not read for "
@@ -711,8 +727,11 @@ SOURCES = {
              "on the FANUC profiles it is TG605, a warning. SINUMERIK: no source at hand (left "
              "an error, reported). Okuma, LinuxCNC: their profiles set no feed_max.",
     "TG603": "The profile's machine (spindle_max), on the strict ISO profiles and on a user's "
-             "profile (a file, with or without a base: its maximum is the user's machine, a "
-             "chuck's rating perhaps). The S of the spindle speed clamp's code (G50 S on a "
+             "profile file that sets spindle_max itself (its [limits]: its maximum is the "
+             "user's machine, a chuck's rating perhaps; a file with no base sets all its "
+             "limits). A file on a base whose own [limits] do not set spindle_max has the "
+             "built-in base's sample maximum: TG606, as on the base. The S of the spindle "
+             "speed clamp's code (G50 S on a "
              "lathe; G92 S on a FANUC mill and the ISO profiles, not on a Haas, Okuma or "
              "LinuxCNC mill, whose G92 only sets coordinates; a SINUMERIK's G26 S) is a limit, "
              "not a speed: never judged. On a built-in control family's profile, TG606 (a "

@@ -1431,3 +1431,89 @@ def test_the_m165_block_sends_and_no_restart_after_it_guesses_the_speed(tmp_path
     with pytest.raises(RestartRefused) as refused:
         workflow.prepare(str(path), fanuc, fanuc.serial, name="O0030.nc", restart_at="N60")
     assert "S2. on line 5" in refused.value.message, refused.value.message
+
+
+# -- LinuxCNC: an end of program written by a parameter or expression, or block-deleted -------
+
+# (review 38, finding 8) the end's line, the fourth: each form rs274 reads as M2 (read_m,
+# read_integer_value), and the block-deleted one, which ends only with the switch off
+LINUXCNC_END = "#<two> = 2\nG21 G90\nG0 X0 Y0 Z1\n{end}\nG0 X1\nM2\n"
+
+
+@pytest.mark.parametrize("end", ["M2", "M#<two>", "M[2]", "M[1+1]", "M[#<two>*15]", "/M2"])
+def test_linuxcnc_ends_where_rs274_ends(end, tmp_path):
+    """`tapegate check` of a program whose fourth line ends it, beside what rs274 does with
+    it (where rs274 is installed): an M2 written by a parameter or an expression is the end
+    (TG117 for the lines after it, as for `M2`; it was TG116, or nothing); a block-deleted
+    `/M2` is passed over with the block delete switch on (`rs274 -b`), so the lines after it
+    run then: no TG116 or TG117 for them."""
+    import re
+    import shutil
+    import subprocess
+
+    from .conftest import rs274_env
+
+    path = tmp_path / "end.ngc"
+    path.write_text(LINUXCNC_END.format(end=end))
+    _, lines = jsonl("-p", "linuxcnc", str(path))
+    said = [(f["rule"], f["line"]) for f in lines if f["rule"] in ("TG116", "TG117", "TG114")]
+    deleted = end.startswith("/")
+    assert said == ([] if deleted else [("TG117", 5)]), lines
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+
+    def traverses(*flags: str) -> list[float]:
+        run = subprocess.run(["rs274", *flags, "-g", str(path)], capture_output=True, text=True,
+                             timeout=30, input="", env=rs274_env(), cwd=tmp_path)
+        out = run.stdout + run.stderr
+        assert "PROGRAM_END()" in out, out
+        return [float(m[1]) for m in re.finditer(r"STRAIGHT_TRAVERSE\(([-\d.]+),", out)]
+
+    # the G0 X1 after the end never runs; with the switch on, a deleted end's does
+    assert traverses() == [0.0]
+    assert traverses("-b") == ([0.0, 1.0] if deleted else [0.0])
+
+
+# -- LinuxCNC: a subroutine's body reading a local named parameter it never assigns -----------
+
+# (review 38, finding 9) rs274 keeps local named parameters per call level; each program's
+# line of the read, or None where rs274 runs it
+LOCALS = {
+    "the caller's local": ("#<zz> = 1\no<s> sub\nG1 X#<zz> F100\no<s> endsub\no<s> call\n", 5),
+    "never assigned": ("o<s> sub\nG1 X#<zz> F100\no<s> endsub\no<s> call\n", 4),
+    "in the body's condition": ("#<zz> = 1\no<s> sub\no1 if [#<zz> GT 0]\nG1 X1 F100\n"
+                                "o1 endif\no<s> endsub\no<s> call\n", 5),
+    "a global": ("#<_zz> = 1\no<s> sub\nG1 X#<_zz> F100\no<s> endsub\no<s> call\n", None),
+    "assigned in the body": ("o<s> sub\n#<zz> = 3\nG1 X#<zz> F100\no<s> endsub\no<s> call\n",
+                             None),
+    "not called": ("#<zz> = 1\no<s> sub\nG1 X#<zz> F100\no<s> endsub\n", None),
+    "inside a branch not run": ("o<s> sub\no1 if [#1 GT 0]\nG1 X#<zz> F100\no1 endif\n"
+                                "o<s> endsub\no<s> call [0]\n", None),
+}
+
+
+@pytest.mark.parametrize("case", LOCALS)
+def test_a_linuxcnc_sub_body_reads_only_its_own_locals(case, tmp_path):
+    """`tapegate check` says TG412 ("Named parameter #<zz> not defined") at the body's first
+    read of a local it does not assign where the file calls the sub, and nothing where rs274
+    runs the program: beside rs274 -g where it is installed."""
+    import shutil
+    import subprocess
+
+    from .conftest import rs274_env
+
+    body, line = LOCALS[case]
+    path = tmp_path / "locals.ngc"
+    path.write_text("G21 G90\nG0 X0 Y0 Z1\n" + body + "M2\n")
+    _, lines = jsonl("-p", "linuxcnc", str(path))
+    refused = [(f["line"], f["message"]) for f in lines if f["rule"] == "TG412"]
+    assert [at for at, _ in refused] == ([] if line is None else [line]), lines
+    if refused:
+        assert "#<zz> not defined (rs274ngc) when o<s> is called" in refused[0][1]
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
+                         timeout=30, input="", env=rs274_env(), cwd=tmp_path)
+    out = run.stdout + run.stderr
+    assert ("Named parameter #<zz> not defined" in out) == (line is not None), out
+    assert ("PROGRAM_END()" in out) == (line is None), out

@@ -24,7 +24,7 @@ from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
 from formats.parser import BadBlock, count_blocks, parse_stream, parse_text
 from formats.printer import program_text
-from formats.profile import NEUTRAL, load_profile, profile_from_text
+from formats.profile import NEUTRAL, builtin_text, load_profile, profile_from_text
 from formats.source import Source
 from formats.verify import verify_conversion
 from formats.wordformat import Rounding
@@ -194,6 +194,62 @@ def test_a_spindle_speed_clamp_is_no_speed_and_a_speed_above_the_maximum_is_a_wa
     assert mine == [("TG603", "error")]
 
 
+def test_a_users_profile_counts_as_the_users_machine_only_for_the_limits_it_sets(tmp_path):
+    """Review 38, finding 4: a user's file on a base that sets no spindle_max of its own (its
+    [serial] alone) has the built-in's sample maximum, so an S above it stays TG606, the
+    warning, with the sample machine's wording; one that sets spindle_max gets TG603. The same
+    for the other limits: the first finding against a limit the file leaves to its base says
+    it is the base's sample, not one against a limit the file sets."""
+    @dataclasses.dataclass
+    class Said:
+        rule: str
+        severity: str
+        message: str
+
+    def found(toml: str, text: str) -> list[Said]:
+        """`tapegate check` of `text` with the profile file `toml`: its findings."""
+        (tmp_path / "my-mill.toml").write_text(toml)
+        (tmp_path / "p.nc").write_text(text)
+        result = CliRunner().invoke(main, ["check", str(tmp_path / "p.nc"), "-p",
+                                           str(tmp_path / "my-mill.toml")])
+        lines = re.findall(r"p\.nc:\d+:\d+: (\w+) (TG\d+) (.*)", result.output)
+        return [Said(rule, severity, message) for severity, rule, message in lines]
+
+    speed = "%\nO1\nG20 G90 G54 G0 X0 Y0\nS15000 M03\nG1 X1. F10.\nM30\n%\n"
+    serial_only = 'name = "mymill"\nbase = "haas-mill"\n[serial]\nbaud = 9600\n'
+    sample = [f for f in found(serial_only, speed) if f.rule in ("TG603", "TG606")]
+    assert [(f.rule, f.severity) for f in sample] == [("TG606", "warning")]
+    assert "set the profile's spindle_max to your machine's" in sample[0].message
+    # (a [limits] table of other keys leaves the spindle's to the base too)
+    feed_only = 'base = "haas-mill"\n[limits]\nfeed_max = 500\n'
+    assert [f.rule for f in found(feed_only, speed) if f.rule in ("TG603", "TG606")] == [
+        "TG606"]
+    own = 'base = "haas-mill"\n[limits]\nspindle_max = 12000\n'
+    assert [(f.rule, f.severity) for f in found(own, speed)
+            if f.rule in ("TG603", "TG606")] == [("TG603", "error")]
+    # no base: every limit is the file's own
+    whole = builtin_text("haas-mill").replace('name = "haas-mill"', 'name = "mine"', 1)
+    assert [f.rule for f in found(whole, speed) if f.rule in ("TG603", "TG606")] == ["TG603"]
+    # the travel and the feed: the hint names the base's sample only where the file leaves
+    # the limit to it
+    far = "%\nO1\nG20 G90 G54 G0 X0 Y0\nG1 X100. F1000.\nM30\n%\n"
+    hint = "a typical machine of the family"
+    base_only = {f.rule: f.message for f in found(serial_only, far)}
+    assert hint in base_only["TG601"] and "built-in profile's limits" in base_only["TG601"]
+    travel = found(feed_only, far)
+    assert [f.rule for f in travel if f.rule in ("TG601", "TG602")] == ["TG601", "TG602"]
+    said = {f.rule: f.message for f in travel}
+    assert "this limit is the base profile's" in said["TG601"]
+    assert hint not in said["TG602"]
+    axes = 'base = "haas-mill"\n[limits]\nX = [-30, 30]\nY = [-16, 16]\nZ = [-20, 0]\n'
+    assert not [f for f in found(axes, far) if hint in f.message]
+    # (an axis left to the base keeps the travel the sample's)
+    assert [f for f in found(axes.replace("Z = [-20, 0]\n", ""), far) if hint in f.message]
+    assert load_profile("haas-mill").sample_limits == {"travel", "feed_max", "spindle_max",
+                                                       "tool_max"}
+    assert profile_from_text(whole, source="mine.toml").sample_limits == frozenset()
+
+
 def test_a_limit_passed_by_a_program_that_writes_no_units_code_says_so():
     """Audit 37: 28 held-out Haas programs of metric shops write no G21; a Haas reads them in
     the units of its Setting 9, which haas-mill takes as inches, so `Z150.` spans 140 in and
@@ -256,6 +312,27 @@ def test_a_sinumerik_changes_d_under_cutter_compensation():
             if f.rule == "TG502"] == [("TG502", 6)]
     fanuc = "%\nO1\n" + text.format(word="D2").replace("N80 M30\n", "N80 M30\n%\n")
     assert "TG502" in [f.rule for f in findings(fanuc, "fanuc-mill")]
+
+
+def test_a_sinumerik_d_of_an_r_parameter_under_compensation_is_judged_by_its_value(tmp_path):
+    """Review 38, finding 7: `D=R1` under G41 was TG502, the error, whatever R1 held. The
+    checker evaluates R parameters set before (`R1=2`): a D of 2 is a D change (840Di sl
+    Fundamentals 8.8), quiet; one of 0 is D0, the offset off (TG502); one it cannot know
+    (`R1=$P_TOOLNO`, the control's own) is TG503, a warning naming D0. Through the CLI."""
+    text = ("N10 G71 G90 G17 G0 X0 Y0 T1 D1\nN20 M6\nN30 R1={value}\nN40 G41 G1 X10 Y0 F100\n"
+            "N50 D=R1 X20\nN60 G40 X60\nN70 M30\n")
+    path = tmp_path / "d.mpf"
+    said = {}
+    for value in ("2", "0", "$P_TOOLNO"):
+        path.write_text(text.format(value=value))
+        result = CliRunner().invoke(main, ["check", str(path), "-p", "sinumerik-840d",
+                                           "--select", "TG502,TG503"])
+        said[value] = re.findall(r"d\.mpf:(\d+):\d+: (\w+) (TG\d+) (.*)", result.output)
+    assert said["2"] == []
+    assert [(line, rule) for line, _, rule, _ in said["0"]] == [("5", "TG502")]
+    [(line, severity, rule, message)] = said["$P_TOOLNO"]
+    assert (line, severity, rule) == ("5", "warning", "TG503")
+    assert "not known" in message and "D0 switches the offset off under G41" in message
 
 
 def test_a_feed_above_the_maximum_is_clamped_on_a_fanuc_and_alarms_on_a_haas():

@@ -876,6 +876,16 @@ impl ReadingEnd {
         }
     }
 
+    /// The block on line `line` ends the program by an M2/M30 its words do not show as
+    /// written (`M#<two>`, `M[1+1]`: the checker evaluated it): as one read by
+    /// [`ReadingEnd::read`], outside any `o` block (no block skip: the caller's test).
+    pub fn ended_at(&mut self, line: usize) {
+        if self.family == Family::LinuxCnc && self.ended.is_none() && self.open.is_empty() {
+            self.ended = Some(line);
+            self.unsettled = self.unsettled_now();
+        }
+    }
+
     /// An `o` statement: the block it opens or closes.
     fn o_word(&mut self, text: &[u8]) {
         let label = crate::statement::o_label(text);

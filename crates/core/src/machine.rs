@@ -900,7 +900,7 @@ mod tests {
                 work_offsets: Vec::new(),
                 feed_max: None,
                 spindle_max: None,
-                limits_builtin: true,
+                sample_limits: crate::check::SAMPLE_ALL,
                 tool_max: None,
                 rapid_rate: 5000.0,
                 limit_units: Units::Metric,

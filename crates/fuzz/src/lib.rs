@@ -244,7 +244,7 @@ fn make_check_config(variant: u8) -> Config {
             ],
             feed_max: Some(dec("10000")),
             spindle_max: Some(dec("10000")),
-            limits_builtin: true,
+            sample_limits: tapegate_core::check::SAMPLE_ALL,
             tool_max: Some(24),
             rapid_rate: 24000.0,
             limit_units: Units::Metric,

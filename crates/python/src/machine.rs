@@ -151,7 +151,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
             work_offsets,
             feed_max: dec(item(c, "feed_max")?)?,
             spindle_max: dec(item(c, "spindle_max")?)?,
-            limits_builtin: item(c, "limits_builtin")?,
+            sample_limits: item(c, "sample_limits")?,
             tool_max: item(c, "tool_max")?,
             rapid_rate: item(c, "rapid_rate")?,
             limit_units: units(&item::<String>(c, "limit_units")?),

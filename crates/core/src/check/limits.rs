@@ -1748,10 +1748,12 @@ impl Checker {
                 // (808D Function Manual, MD35100 SPIND_VELO_LIMIT; 840D Function Manual, S1,
                 // 18.8.4), and no source at hand says a FANUC, Haas, Okuma or Heidenhain
                 // alarms rather than limiting it: a warning (issue 32, item 3), where the
-                // maximum is a built-in profile's sample machine; the strict ISO profiles, and
-                // a user's profile, whose maximum is the user's machine (a chuck's rating),
-                // keep TG603 (review 37, finding 6)
-                if self.config.family == Family::Iso || !self.config.limits_builtin {
+                // maximum is a built-in profile's sample machine -- a user's file on a base
+                // that sets no spindle_max of its own included (review 38, finding 4); the
+                // strict ISO profiles, and a user's file that sets it, whose maximum is the
+                // user's machine (a chuck's rating), keep TG603 (review 37, finding 6)
+                let sample = self.config.sample_limits & super::SAMPLE_SPINDLE != 0;
+                if self.config.family == Family::Iso || !sample {
                     self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
                 } else {
                     let effect = if self.config.family == Family::Sinumerik {
@@ -1906,15 +1908,31 @@ impl Checker {
     /// on a built-in profile says that the travel and maxima are the profile's sample machine
     /// of the family, not the user's (audit 37: a VF-6 class table, a 30-tool changer and a
     /// Robodrill checked against the built-in profiles' typical machines).
+    /// The limit's own: a user's file on a base that sets it (the travel: every axis's) is the
+    /// user's machine, no hint; one it leaves to the base is the sample's (review 38, 4).
     #[cold]
     fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
-        let message = if self.config.limits_builtin && !self.limits_hint_said {
+        let limit = match rule {
+            Rule::TravelExceeded => super::SAMPLE_TRAVEL,
+            Rule::FeedTooHigh | Rule::FeedClamped => super::SAMPLE_FEED,
+            Rule::ToolOutOfRange => super::SAMPLE_TOOLS,
+            _ => super::SAMPLE_ALL,
+        };
+        let message = if self.config.sample_limits & limit != 0 && !self.limits_hint_said {
             self.limits_hint_said = true;
-            format!(
-                "{message} (the built-in profile's limits are a typical machine of the family: \
-                 a profile of your machine, `base` and its [limits], checks against yours; \
-                 said once)"
-            )
+            if self.config.sample_limits == super::SAMPLE_ALL {
+                format!(
+                    "{message} (the built-in profile's limits are a typical machine of the \
+                     family: a profile of your machine, `base` and its [limits], checks \
+                     against yours; said once)"
+                )
+            } else {
+                // a user's file on a base that leaves this limit to it
+                format!(
+                    "{message} (this limit is the base profile's, a typical machine of the \
+                     family: the profile's own [limits] do not set it; said once)"
+                )
+            }
         } else {
             message
         };
@@ -2996,7 +3014,26 @@ mod tests {
             [(2, 1)]
         );
         assert_eq!(at(family.clone(), "S7000 M03", Rule::SpeedTooHigh), []);
-        assert_eq!(at(family, "G92 S7000", Rule::SpeedLimited), []);
+        assert_eq!(at(family.clone(), "G92 S7000", Rule::SpeedLimited), []);
+        // a user's file that sets its spindle_max: the user's machine, the error; one on a
+        // base that leaves it to the base keeps the sample's warning (review 38, finding 4)
+        let mut own = family.clone();
+        own.facts.sample_limits = super::super::SAMPLE_ALL & !super::super::SAMPLE_SPINDLE;
+        own.facts.feed_max = Dec::parse("500");
+        assert_eq!(at(own.clone(), "S7000 M03", Rule::SpeedTooHigh), [(2, 1)]);
+        assert_eq!(at(own.clone(), "S7000 M03", Rule::SpeedLimited), []);
+        // ... and its feed, left to the base, is said to be the sample's (a FANUC clamps it)
+        let fast = findings(own, &program("G01 X1. F600."), Rule::FeedClamped);
+        assert!(
+            fast[0].message.contains("this limit is the base profile's"),
+            "{}",
+            fast[0].message
+        );
+        let mut feed_own = family;
+        feed_own.facts.sample_limits = super::super::SAMPLE_SPINDLE;
+        feed_own.facts.feed_max = Dec::parse("500");
+        let fast = findings(feed_own, &program("G01 X1. F600."), Rule::FeedClamped);
+        assert!(!fast[0].message.contains("typical"), "{}", fast[0].message);
         assert_eq!(at(iso_mill(), "T100", Rule::ToolOutOfRange), [(2, 1)]);
         assert_eq!(at(iso_mill(), "T12", Rule::ToolOutOfRange), []);
     }

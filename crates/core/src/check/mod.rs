@@ -184,10 +184,13 @@ pub struct ProfileFacts {
     pub work_offsets: Vec<(i64, u8, Dec)>,
     pub feed_max: Option<Dec>,
     pub spindle_max: Option<Dec>,
-    /// The limits are a built-in profile's, a sample machine of the family (not the user's
-    /// own: a profile file's, with or without a `base`): a spindle speed above its maximum is
-    /// TG606, a warning, there, and TG603, the error, on the user's machine.
-    pub limits_builtin: bool,
+    /// The limits that are a built-in profile's, a sample machine of the family, not the
+    /// user's own ([`SAMPLE_TRAVEL`], [`SAMPLE_FEED`], [`SAMPLE_SPINDLE`], [`SAMPLE_TOOLS`]):
+    /// every one on a built-in profile, none on a profile file without a `base`, and on a file
+    /// with one those its own `[limits]` do not set. A spindle speed above a sample maximum is
+    /// TG606, a warning, and TG603, the error, above the user's; the first finding against a
+    /// sample limit says it is one.
+    pub sample_limits: u8,
     pub tool_max: Option<i64>,
     pub rapid_rate: f64,
     /// The units of the limits, the work offsets, the rapid rate and the statistics: the
@@ -195,6 +198,17 @@ pub struct ProfileFacts {
     /// otherwise (`check --units`, `convert --from-units`: the modal settings' start units).
     pub limit_units: Units,
 }
+
+/// [`ProfileFacts::sample_limits`]: the travel is a sample machine's.
+pub const SAMPLE_TRAVEL: u8 = 1;
+/// [`ProfileFacts::sample_limits`]: the feed maximum is a sample machine's.
+pub const SAMPLE_FEED: u8 = 2;
+/// [`ProfileFacts::sample_limits`]: the spindle speed maximum is a sample machine's.
+pub const SAMPLE_SPINDLE: u8 = 4;
+/// [`ProfileFacts::sample_limits`]: the tool number maximum is a sample machine's.
+pub const SAMPLE_TOOLS: u8 = 8;
+/// [`ProfileFacts::sample_limits`] of a built-in profile: every limit a sample machine's.
+pub const SAMPLE_ALL: u8 = SAMPLE_TRAVEL | SAMPLE_FEED | SAMPLE_SPINDLE | SAMPLE_TOOLS;
 
 /// Everything the checker needs from a profile, resolved once (the checker's part of a
 /// [`crate::machine::Machine`], shared by every checker of that machine): the profile's facts,
@@ -733,6 +747,9 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
+    /// LinuxCNC: a block delete's `/M2` (or `/M30`) came, which ends the program only with
+    /// the switch off: no end for the lines after it, but an end for TG114.
+    skipped_end: bool,
     /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
     /// condition or loop of the main program or inside a definition, which may not run
     /// (rs274 reads on where it does not: review 19). The rules that judge the main program's
@@ -995,6 +1012,14 @@ pub struct Checker {
     /// calls: a call of one none of whose bodies, transitively, may leaves the feed mode as
     /// it was before the call (issue 32, item 4; `Checker::linuxcnc_call_keeps_mode`).
     linuxcnc_bodies: Vec<(Vec<u8>, bool, Vec<Vec<u8>>)>,
+    /// LinuxCNC: the local named parameters the open definition's body has assigned so far
+    /// (`Checker::linuxcnc_body_locals`).
+    linuxcnc_body_named: HashSet<Vec<u8>>,
+    /// LinuxCNC: each definition's first read of a local named parameter its body did not
+    /// assign before (label, line, column, name), said where an `o<label> call` of the file
+    /// calls it; and the labels the file's calls name.
+    linuxcnc_body_unassigned: Vec<(Vec<u8>, usize, usize, Vec<u8>)>,
+    linuxcnc_calls: HashSet<Vec<u8>>,
     /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
     /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
     /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
@@ -1071,6 +1096,7 @@ impl Checker {
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
+            skipped_end: false,
             surely_ended: false,
             linuxcnc_end_depth: None,
             after_end_reported: false,
@@ -1158,6 +1184,9 @@ impl Checker {
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_bodies: Vec::new(),
+            linuxcnc_body_named: HashSet::new(),
+            linuxcnc_body_unassigned: Vec::new(),
+            linuxcnc_calls: HashSet::new(),
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,
@@ -2012,8 +2041,9 @@ impl Checker {
         };
         // (LinuxCNC: an M2/M30 inside a condition, a loop or a definition may not run, and
         // the lines after it run only where it did not: it resets no mode; review 19)
+        // (and one after a block delete `/`, which the switch may pass over)
         self.values.end_unsure =
-            self.config.family == Family::LinuxCnc && !self.linuxcnc_runs_surely();
+            self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
         self.machine.apply_taken(&self.values, taken);
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
@@ -2075,10 +2105,13 @@ impl Checker {
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
         // to look at (RET, RTS)
         let m_read = !self.values.ms.is_empty();
-        let ends = m_read
+        let mut ends = m_read
             && b.words.iter().enumerate().any(|(i, w)| {
                 w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
             });
+        if self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 {
+            ends = self.linuxcnc_end(b, ends);
+        }
         let returns = (m_read || !b.statements.is_empty())
             && dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         self.sub_ended |= returns;
@@ -2268,6 +2301,7 @@ impl Checker {
         self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();
+        self.linuxcnc_locals_ended();
         self.program_end();
     }
 

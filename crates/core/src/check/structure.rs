@@ -8,6 +8,7 @@ use crate::lex::{blank, Family};
 use crate::rules::Rule;
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
+use std::collections::HashSet;
 
 /// The first `#` of `text` from `from`: 8 bytes at a time (a zero-byte mask of the bytes
 /// XOR `#`), the last few one by one. A bracketed expression is a few dozen bytes, where
@@ -240,11 +241,13 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.targets_ended();
+        self.linuxcnc_locals_ended();
         self.reach_reset();
         self.refused_at = None;
         self.conflict_at = None;
         self.programs += 1;
         self.ended_line = 0;
+        self.skipped_end = false;
         self.surely_ended = false;
         self.linuxcnc_end_depth = None;
         self.sub_ended = false;
@@ -525,10 +528,12 @@ impl Checker {
         let statement = if b.statements.is_empty() {
             if self.open_definition.is_some() {
                 self.linuxcnc_body(b, None);
+                self.linuxcnc_body_locals(b, None);
             }
             None
         } else {
             let statement = dialect::subroutine_statement(b.statements);
+            self.linuxcnc_body_locals(b, statement.as_ref());
             self.definition_after_call(b, statement.as_ref());
             self.definition_feed(statement.as_ref());
             self.definition_open(b, statement.as_ref());
@@ -635,14 +640,18 @@ impl Checker {
         };
         // (an M2 or M30 among the block's M codes, beside a sequence number and other M codes:
         // `M5 M2`, `N5 M2`, `M2.0`, review 38, finding 2)
+        // (an M value of a parameter or expression the checker evaluates, `M#<two>`, is one
+        // too: rs274 reads it so, review 38, finding 8)
         let program_end = b.statements.is_empty() && {
             let mut ends = false;
-            let plain = b.words.iter().all(|w| {
-                let number = std::str::from_utf8(w.number)
-                    .ok()
-                    .and_then(|n| n.parse::<f64>().ok());
-                ends |= w.letter == b'M' && matches!(number, Some(n) if n == 2.0 || n == 30.0);
-                w.expression.is_empty() && matches!(w.letter, b'M' | b'N') && number.is_some()
+            let plain = b.words.iter().all(|w| match w.letter {
+                b'M' => {
+                    let number = self.linuxcnc_m_number(w);
+                    ends |= matches!(number, Some(2 | 30));
+                    number.is_some()
+                }
+                b'N' => w.expression.is_empty(),
+                _ => false,
             });
             plain && ends
         };
@@ -752,6 +761,148 @@ impl Checker {
                 self.linuxcnc_called_ahead.push((label, b.line));
             }
         }
+    }
+
+    /// LinuxCNC: a definition's body reads a local named parameter (`#<zz>`, not a global
+    /// `#<_zz>`) that no line of the body, nor a word before it in its line, assigns: rs274
+    /// keeps local named parameters per call level (interp_namedparams.cc; LinuxCNC O-codes,
+    /// "named parameters are local to the scope"), so the caller's `#<zz>` is not visible
+    /// in the body and the call fails, "Named parameter #<zz> not defined" (`rs274 -g`; review
+    /// 38, finding 9). Kept at the body's first such read, said by
+    /// [`Checker::linuxcnc_locals_ended`] where the file calls the definition (a remap's body,
+    /// whose locals the remapped block's words give, is called by no `o<name> call`). A read
+    /// inside a condition or loop of the body is not judged (it may not run), its assignments
+    /// are taken as made; the calls of the file's lines, body or not, are noted here.
+    fn linuxcnc_body_locals(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        for &(_, kind, text) in b.statements {
+            if kind == Kind::Call
+                && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+            {
+                self.linuxcnc_calls.insert(crate::statement::o_label(text));
+            }
+        }
+        if let Some((true, _)) = statement {
+            if self.open_definition.is_none() {
+                self.linuxcnc_body_named.clear();
+            }
+            return;
+        }
+        let Some((_, _, label)) = &self.open_definition else {
+            return;
+        };
+        let label = label.clone();
+        let judge = self.linuxcnc_definition_flow.is_empty();
+        let said = self.linuxcnc_body_unassigned.iter().any(|e| e.0 == label);
+        let mut first: Option<(usize, Vec<u8>)> = None;
+        for w in b.words {
+            if w.expression.is_empty() {
+                continue;
+            }
+            let mut reads = w.expression;
+            let mut assigns = None;
+            if w.letter == b'#' && w.expression.first() == Some(&b'<') {
+                if let Some(close) = w.expression.iter().position(|&c| c == b'>') {
+                    assigns = Some(super::params::named_parameter(&w.expression[1..close]));
+                    reads = &w.expression[close + 1..];
+                }
+            }
+            if first.is_none() {
+                first = body_unassigned(reads, &self.linuxcnc_body_named).map(|n| (w.column, n));
+            }
+            if let Some(name) = assigns {
+                self.linuxcnc_body_named.insert(name);
+            }
+        }
+        for &(column, kind, text) in b.statements {
+            if first.is_none() && matches!(kind, Kind::Flow | Kind::Call | Kind::Definition) {
+                // (an `o<name> endsub [#<v>]`'s value, a condition's, a call's arguments)
+                // (past a label `o<name>`, whose name is no read; `o1` has no `#<`)
+                let text = match text.get(1..) {
+                    Some(t) if t.first() == Some(&b'<') => t
+                        .iter()
+                        .position(|&c| c == b'>')
+                        .map_or(t, |at| &t[at + 1..]),
+                    _ => text,
+                };
+                first = body_unassigned(text, &self.linuxcnc_body_named).map(|n| (column, n));
+            }
+        }
+        if let Some((column, name)) = first.filter(|_| judge && !said) {
+            self.linuxcnc_body_unassigned
+                .push((label, b.line, column, name));
+        }
+    }
+
+    /// The reads [`Checker::linuxcnc_body_locals`] kept, said (TG412) for each definition an
+    /// `o<name> call` of the file calls; then forgotten, with the calls.
+    pub(super) fn linuxcnc_locals_ended(&mut self) {
+        let kept = std::mem::take(&mut self.linuxcnc_body_unassigned);
+        for (label, line, column, name) in kept {
+            if !self.linuxcnc_calls.contains(&label) {
+                continue;
+            }
+            let (name, label) = (
+                String::from_utf8_lossy(&name),
+                String::from_utf8_lossy(&label),
+            );
+            let message = format!(
+                "Named parameter {name}> not defined (rs274ngc) when {label} is called: no \
+                 line of its body assigns it before, and a local named parameter is local to \
+                 its call level, so the caller's {name}> is not visible in the body (a global, \
+                 #<_name>, is)"
+            );
+            self.report(Rule::LinuxCncRefuses, message, line, column);
+        }
+        self.linuxcnc_calls.clear();
+        self.linuxcnc_body_named.clear();
+    }
+
+    /// LinuxCNC: whether the block with an M word ends the program (`ends`: by the values the
+    /// checker read for its M words). rs274 reads an M value as a number, a parameter or an
+    /// expression, so `M#<two>` and `M[1+1]` end it as `M2` does: said to the reading's end
+    /// ([`dialect::ReadingEnd::ended_at`]), whose lines after it are TG117's, as after `M2`.
+    /// A block delete's `/M2` ends it only with the switch off; with it on rs274 reads on and
+    /// runs the lines after it (`rs274 -b`): no end here, the lines after it checked as run,
+    /// and it counts as the program's end for TG114 alone (review 38, finding 8).
+    #[inline(never)]
+    pub(super) fn linuxcnc_end(&mut self, b: &BlockView<'_>, ends: bool) -> bool {
+        let ends = ends
+            || b.words.iter().any(|w| {
+                w.letter == b'M' && !w.expression.is_empty() && {
+                    matches!(self.linuxcnc_m_number(w), Some(2 | 30))
+                }
+            });
+        if !ends {
+            return false;
+        }
+        if b.skip {
+            self.skipped_end = true;
+            return false;
+        }
+        self.reading_end.ended_at(b.line);
+        true
+    }
+
+    /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
+    /// expression (interp_read.cc `read_m`, `read_integer_value`: `M#<two>` and `M[1+1]` are
+    /// M2) -- where the checker knows its value: the whole number within 0.0001 of it, rs274's
+    /// tolerance. None for a value it does not know or that is no whole number.
+    pub(super) fn linuxcnc_m_number(&self, w: &Word<'_>) -> Option<i64> {
+        let value = if w.expression.is_empty() {
+            std::str::from_utf8(w.number)
+                .ok()?
+                .trim()
+                .parse::<f64>()
+                .ok()?
+        } else if w.expression.len() > 200 {
+            return None; // (a chain of terms is a tree as deep, walked by recursion)
+        } else {
+            let tree = crate::expr::tree(w.expression).ok()?;
+            let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
+            super::tooling::linuxcnc_value(&tree, w.expression, &param).ok()??
+        };
+        let whole = value.round();
+        ((value - whole).abs() <= 0.0001).then_some(whole as i64)
     }
 
     /// TG412: LinuxCNC's main program reads a local named parameter (`#<name>`) that no line
@@ -1535,7 +1686,7 @@ impl Checker {
             // a memory backup's last folder marker with no program after it (the Robodrill
             // ALL-FLDR punch-out's `&F=/USER/PATH2/` before the closing %), or a Haas's saved
             // offsets after the program's end (O999999): no program
-        } else if self.ended_line == 0 && !percent_ended {
+        } else if self.ended_line == 0 && !percent_ended && !self.skipped_end {
             self.report(
                 Rule::NoProgramEnd,
                 "the program has no M02 or M30".into(),
@@ -1952,6 +2103,35 @@ fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8]) -> Option<usize> {
     }
     let label = crate::statement::o_label(text);
     open.iter().rposition(|l| *l == label)
+}
+
+/// The first local named parameter `text` reads (`#<zz>`, as `params::named_parameter`
+/// writes it) that is not a global (`#<_zz>`), not among `assigned`, and not read inside
+/// `EXISTS[..]` ([`Checker::linuxcnc_body_locals`]).
+fn body_unassigned(text: &[u8], assigned: &HashSet<Vec<u8>>) -> Option<Vec<u8>> {
+    let mut i = 0;
+    while let Some(at) = text[i..].windows(2).position(|p| p == b"#<") {
+        let start = i + at;
+        let close = start + 2 + text[start + 2..].iter().position(|&c| c == b'>')?;
+        i = close + 1;
+        let name = super::params::named_parameter(&text[start + 2..close]);
+        if name.get(2) == Some(&b'_') || assigned.contains(&name) {
+            continue;
+        }
+        let before: Vec<u8> = text[..start]
+            .iter()
+            .rev()
+            .copied()
+            .filter(|&c| !blank(c))
+            .skip_while(|&c| c == b'[')
+            .take(6)
+            .collect();
+        if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
+            continue;
+        }
+        return Some(name);
+    }
+    None
 }
 
 #[cfg(test)]
@@ -2436,6 +2616,120 @@ mod tests {
             fired(of_family(Family::MacroB), named, Rule::Unreadable),
             [(3, 10)]
         );
+    }
+
+    #[test]
+    fn a_linuxcnc_sub_body_reading_a_local_it_never_assigns_fails_when_called() {
+        // rs274 keeps local named parameters per call level: the caller's #<zz> is not seen
+        // in the body ("Named parameter #<zz> not defined", review 38, finding 9)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let text = |before: &str, body: &str, call: &str| {
+            format!("G21 G90\nG0 X0 Y0 Z1\n{before}o<s> sub\n{body}o<s> endsub\n{call}M2\n")
+        };
+        let refused = |t: &str| fired(linuxcnc(), t, Rule::LinuxCncRefuses);
+        let read = "G1 X#<zz> F100\n";
+        assert_eq!(refused(&text("", read, "o<s> call\n")), [(4, 4)]);
+        // the caller's own: still not visible
+        assert_eq!(refused(&text("#<zz> = 1\n", read, "o<s> call\n")), [(5, 4)]);
+        let found = findings(
+            linuxcnc(),
+            &text("", read, "o<s> call\n"),
+            Rule::LinuxCncRefuses,
+        );
+        assert!(
+            found[0]
+                .message
+                .contains("#<zz> not defined (rs274ngc) when o<s> is called"),
+            "{}",
+            found[0].message
+        );
+        // a condition of the body runs: its read is judged; an endsub's value too
+        let cond = "o1 if [#<zz> GT 0]\nG1 X1 F100\no1 endif\n";
+        assert_eq!(refused(&text("", cond, "o<s> call\n")), [(4, 1)]);
+        let ret = "#<zz> = 1\nG0 X0 Y0 Z1\no<s> sub\no<s> endsub [#<zz>]\no<s> call\nM2\n";
+        assert_eq!(fired(linuxcnc(), ret, Rule::LinuxCncRefuses), [(4, 1)]);
+        // what rs274 accepts: a global, a name the body assigns before (or earlier in the
+        // line), a read inside a condition of the body (it may not run), EXISTS, a
+        // definition the file never calls (a remap's body, whose locals its words give)
+        for (before, body, call) in [
+            ("#<_zz> = 1\n", "G1 X#<_zz> F100\n", "o<s> call\n"),
+            ("", "#<zz> = 3\nG1 X#<zz> F100\n", "o<s> call\n"),
+            ("", "#<zz> = 3 G1 X#<zz> F100\n", "o<s> call\n"),
+            (
+                "",
+                "o1 if [#1 GT 0]\nG1 X#<zz> F100\no1 endif\n",
+                "o<s> call [0]\n",
+            ),
+            (
+                "",
+                "o1 if [EXISTS[#<zz>]]\nG1 X1 F100\no1 endif\n",
+                "o<s> call\n",
+            ),
+            ("#<zz> = 1\n", read, ""),
+        ] {
+            let t = text(before, body, call);
+            assert_eq!(refused(&t), [], "{t}");
+        }
+        // a read after the assignment's word in its line is one; before it is not
+        let late = "G1 X#<zz> F100 #<zz> = 3\n";
+        assert_eq!(refused(&text("", late, "o<s> call\n")), [(4, 4)]);
+    }
+
+    #[test]
+    fn linuxcnc_ends_at_an_m2_written_by_a_parameter_or_expression_not_at_a_deleted_one() {
+        // rs274 reads an M value as a parameter or an expression (read_integer_value): each
+        // of these is the end as `M2` is, the lines after it never read (review 38, 8)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let text = |end: &str| format!("#<two> = 2\nG21 G90\nG0 X0 Y0 Z1\n{end}\nG0 X1\nM2\n");
+        for end in [
+            "M2",
+            "M#<two>",
+            "M[2]",
+            "M[1+1]",
+            "M[#<two>*15]",
+            "M[2.00001]",
+            "N5 M#<two>",
+        ] {
+            let found = check(linuxcnc(), &text(end));
+            let rules: Vec<_> = found
+                .iter()
+                .filter(|f| matches!(f.rule, Rule::NotRead | Rule::WordsAfterEnd))
+                .map(|f| (f.rule, f.line))
+                .collect();
+            assert_eq!(rules, [(Rule::NotRead, 5)], "{end}");
+            assert!(
+                found[0..].iter().any(|f| f.message.contains("on line 4")),
+                "{end}"
+            );
+        }
+        // a value not known, or no end: read on
+        for end in ["M#<nope>", "M[1+2]", "M#1", "M0"] {
+            let text = text(end);
+            assert_eq!(fired(linuxcnc(), &text, Rule::NotRead), [], "{end}");
+            assert_eq!(fired(linuxcnc(), &text, Rule::WordsAfterEnd), [], "{end}");
+        }
+        // a block delete's `/M2` ends the program only with the switch off: with it on rs274
+        // runs the lines after it (`rs274 -b`), so they are read and checked, no TG116/TG117
+        let deleted = text("/M2");
+        assert_eq!(fired(linuxcnc(), &deleted, Rule::NotRead), []);
+        assert_eq!(fired(linuxcnc(), &deleted, Rule::WordsAfterEnd), []);
+        assert_eq!(
+            fired(linuxcnc(), &text("/M2\nG0 X"), Rule::Unreadable),
+            [(5, 4)]
+        );
+        // ... and it is the program's end for TG114 (with the switch off it ends there)
+        let last = "G21 G90\nG0 X0 Y0 Z1\n/M2\n";
+        assert_eq!(fired(linuxcnc(), last, Rule::NoProgramEnd), []);
+        // a subroutine file's end after its endsub by an expression: the file's end as M2
+        for end in ["M2", "M[1+1]"] {
+            let sub = format!("#<k> = 3\no<sx> sub\nG1 X#<k> F100\no<sx> endsub\n{end}\n");
+            let found = check(linuxcnc(), &sub);
+            assert!(
+                found.iter().all(|f| f.rule != Rule::NoProgramEnd),
+                "{end}: {found:?}"
+            );
+            assert_eq!(fired(linuxcnc(), &sub, Rule::NotRead), [(1, 1)], "{end}");
+        }
     }
 
     #[test]

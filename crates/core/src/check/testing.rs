@@ -162,7 +162,7 @@ pub(super) fn iso_mill() -> Config {
             work_offsets: Vec::new(),
             feed_max: Some(dec("999.9")),
             spindle_max: Some(dec("6000")),
-            limits_builtin: true,
+            sample_limits: crate::check::SAMPLE_ALL,
             tool_max: Some(99),
             rapid_rate: 10000.0,
             limit_units: Units::Metric,

@@ -140,17 +140,28 @@ impl Checker {
 /// it (the operands of a function, a power or `MOD` included), None where a parameter, a
 /// function or an operator other than `+ - * /` leaves the value to the machine.
 fn linuxcnc_constant(e: &crate::expr::Expr, text: &[u8]) -> Result<Option<f64>, ()> {
+    linuxcnc_value(e, text, &|_| None)
+}
+
+/// [`linuxcnc_constant`] where a parameter (`#<two>`, `#5`, its text) has the value `param`
+/// gives it, if any.
+pub(super) fn linuxcnc_value(
+    e: &crate::expr::Expr,
+    text: &[u8],
+    param: &dyn Fn(&[u8]) -> Option<f64>,
+) -> Result<Option<f64>, ()> {
     use crate::expr::Expr;
     Ok(match e {
         Expr::Number(a, b) => std::str::from_utf8(&text[*a..*b])
             .ok()
             .and_then(|t| t.replace([' ', '\t'], "").parse::<f64>().ok()),
+        Expr::Param(a, b) => param(&text[*a..*b]),
         Expr::Sign(sign, inner) => {
-            linuxcnc_constant(inner, text)?.map(|v| if *sign == b'-' { -v } else { v })
+            linuxcnc_value(inner, text, param)?.map(|v| if *sign == b'-' { -v } else { v })
         }
         Expr::Binary(op, l, r) => {
-            let a = linuxcnc_constant(l, text)?;
-            let b = linuxcnc_constant(r, text)?;
+            let a = linuxcnc_value(l, text, param)?;
+            let b = linuxcnc_value(r, text, param)?;
             if *op == b'/' && b == Some(0.0) {
                 return Err(());
             }
@@ -163,7 +174,7 @@ fn linuxcnc_constant(e: &crate::expr::Expr, text: &[u8]) -> Result<Option<f64>, 
             }
         }
         Expr::Call(inner) => {
-            linuxcnc_constant(inner, text)?;
+            linuxcnc_value(inner, text, param)?;
             None
         }
         _ => None,
@@ -2142,6 +2153,26 @@ impl Checker {
         let d_changes = self.config.family == Family::Sinumerik
             && !has_t
             && self.values.get(b'D').is_some_and(|d| d.to_f64() != 0.0);
+        // a D whose value is not known here (`D=R1`, R1 set by what the checker does not
+        // follow): allowed if it is not 0, the offset switched off if it is (review 38,
+        // finding 7); one whose R parameter is known is judged above by its value
+        let d_unknown = self.config.family == Family::Sinumerik
+            && !has_t
+            && self.values.unknown & crate::modal::bit(b'D') != 0;
+        if d_unknown && matches!(before.compensation, 41 | 42) && !facts.has(40) {
+            let written = facts
+                .words
+                .iter()
+                .find(|w| w.letter == b'D')
+                .map_or_else(|| "D".to_string(), |w| w.token());
+            let message = format!(
+                "{written} while G{} is active: the D's value is not known here; a D change is \
+                 allowed under compensation (840Di sl Fundamentals 8.8), but if it is 0, D0 \
+                 switches the offset off under G{} and the tool cuts a radius into the part",
+                before.compensation, before.compensation
+            );
+            self.report(Rule::UnknownDInCompensation, message, line, facts.col(b'D'));
+        }
         if matches!(before.compensation, 41 | 42)
             && !facts.has(40)
             && (has_t || has_d)
@@ -2821,6 +2852,43 @@ mod tests {
             ),
             [(3, 1)]
         );
+        // a D of an R parameter (review 38, finding 7): judged by its value where the
+        // checker knows it, a warning where it does not (D0 would switch the offset off)
+        let by_r = |set: &str| format!("{set}\nG41 G01 X1. F100.\nD=R1 X2.\nG40 X5.");
+        for (set, error, warning) in [
+            ("R1=2", vec![], vec![]),
+            ("R1=0", vec![(4, 1)], vec![]),
+            ("R1=$P_TOOLNO", vec![], vec![(4, 1)]),
+            ("R2=1", vec![], vec![(4, 1)]),
+        ] {
+            let sinumerik = of_family(Family::Sinumerik);
+            let text = by_r(set);
+            assert_eq!(
+                at(sinumerik.clone(), &text, Rule::ToolChangeInCompensation),
+                error,
+                "{set}"
+            );
+            assert_eq!(
+                at(sinumerik, &text, Rule::UnknownDInCompensation),
+                warning,
+                "{set}"
+            );
+        }
+        let found = findings(
+            of_family(Family::Sinumerik),
+            &program(&by_r("R2=1")),
+            Rule::UnknownDInCompensation,
+        );
+        assert!(
+            found[0].message.contains("D=R1 while G41"),
+            "{}",
+            found[0].message
+        );
+        assert!(found[0].message.contains("D0 switches the offset off"));
+        // not under compensation, or with G40 in the block: nothing
+        let off = "R1=$P_TOOLNO\nG01 X1. F100.\nD=R1 X2.\nG41 X3.\nG40 D=R1 X5.";
+        let sinumerik = of_family(Family::Sinumerik);
+        assert_eq!(at(sinumerik, off, Rule::UnknownDInCompensation), []);
     }
 
     #[test]
