@@ -99,6 +99,26 @@ class PendingFile:
             self.discard()
             raise
 
+    def hand_over(self) -> int:
+        """The data written flushed, and the temporary file's descriptor given away for a
+        commit made elsewhere (``formats._core.Commits``: :meth:`commit`'s steps for a regular
+        file, the data fsync'd before the name is given, the temporary file removed if a step
+        fails): a duplicate, which the taker closes; this object's own is closed here. On an
+        error the temporary file is removed, as by :meth:`commit`."""
+        try:
+            self.file.flush()
+            fd = os.dup(self.file.fileno())
+        except BaseException:
+            self.discard()
+            raise
+        try:
+            self.file.close()
+        except BaseException:
+            os.close(fd)
+            self.discard()
+            raise
+        return fd
+
     def discard(self) -> None:
         """Remove the temporary file, whatever closing it says (a full disk fails the close
         again: the file must still go)."""
