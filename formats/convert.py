@@ -41,12 +41,11 @@ import re
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from itertools import chain
-from pathlib import Path
 
 from formats import _core
 from formats.conversion import ConvertOptions, ConvertStats
 from formats.errors import ConversionError
-from formats.files import PendingFile, is_special
+from formats.files import PendingFile, is_special, parent, pure
 from formats.machine import machine
 from formats.model import Block
 from formats.parser import (
@@ -396,13 +395,15 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats,
                           read_units=read_units)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
+    given = output  # (as the caller wrote it, in a message)
     if output:
-        folder = Path(output).parent
+        output = pure(os.fspath(output))
+        folder = parent(output)
     else:
         import tempfile  # (a dry run only: the rest of a conversion does not load it)
 
-        folder = Path(tempfile.gettempdir())
-    pending = PendingFile(folder, Path(output).name if output else "tapegate",
+        folder = tempfile.gettempdir()
+    pending = PendingFile(folder, os.path.basename(output) if output else "tapegate",
                           create=make_folder)
     try:
         converter.convert_file(path, source.dialect, pending)
@@ -430,16 +431,17 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
         pending.discard()
         return stats
 
-    target = Path(output)
+    target = output
 
     def refused() -> ConversionError:
         """The output's name taken while it was converted (no --force)."""
-        return ConversionError(f"{output} exists; use --force to overwrite it", file=name,
+        return ConversionError(f"{given} exists; use --force to overwrite it", file=name,
                                code="output-exists")
 
     def finish() -> None:
         try:
-            pending.commit(target, overwrite=overwrite, version=False, sync_folder=sync_folder)
+            pending.name_as(target, overwrite=overwrite, version=False,
+                            sync_folder=sync_folder)
         except FileExistsError:  # it appeared while converting
             raise refused() from None
         finally:  # (a failed fsync leaves the file open; commit removes it otherwise)
@@ -463,7 +465,7 @@ class Handover:
 
     __slots__ = ("pending", "target", "overwrite", "finish", "refused")
 
-    def __init__(self, pending: PendingFile, target: Path, overwrite: bool,
+    def __init__(self, pending: PendingFile, target: str, overwrite: bool,
                  finish: Callable[[], None], refused: Callable[[], ConversionError]) -> None:
         self.pending, self.target, self.overwrite = pending, target, overwrite
         self.finish, self.refused = finish, refused
@@ -475,7 +477,7 @@ def sync_folders(outputs: Iterable[str]) -> None:
     from formats.files import sync_folder
 
     for folder in sorted({os.path.dirname(os.path.abspath(o)) for o in outputs}):
-        sync_folder(Path(folder))
+        sync_folder(folder)
 
 
 def convert_text(text: str, options: ConvertOptions, *, file: str | None = None

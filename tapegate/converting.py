@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Sequence
-from pathlib import Path
 
 from formats.errors import OutputError, TapegateError
 from formats.files import is_special
@@ -19,7 +17,7 @@ from tapegate.common import echo, readable, table, usage, user_errors, write_str
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Sequence
     from typing import Any
 
     from formats.convert import ConvertOptions, ConvertStats, Handover
@@ -48,10 +46,10 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
     if to_stdout:
         import tempfile
 
-        output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
+        output = os.path.join(tempfile.mkdtemp(prefix="tapegate-"), "out.nc")
     if out_dir and not dry_run:  # a file where the folder (or one above it) would be
-        there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
-        if there is not None and not there.is_dir():
+        there = _existing(out_dir)
+        if there is not None and not os.path.isdir(there):
             raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
     jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
     options = ConvertOptions(
@@ -75,6 +73,20 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         spill.remove()
 
 
+def _existing(name: str) -> str | None:
+    """The first of ``name`` and the folders above it that exists (``Path(name)`` and its
+    ``parents``), written as pathlib writes it; None if none does."""
+    from formats.files import parent, pure
+
+    path = pure(name)
+    while not os.path.exists(path):
+        up = parent(path)
+        if up == path:
+            return None
+        path = up
+    return path
+
+
 class SpillFolder:
     """The temporary folder where the notes of a file beyond its first thousand wait until the
     summary prints them (formats.conversion.ConvertStats), made when a file first needs it:
@@ -84,10 +96,10 @@ class SpillFolder:
     threads of ``-j``: made once, under a lock."""
 
     def __init__(self) -> None:
-        import threading
+        import _thread  # (threading's import, 4M instructions, is for nothing here)
 
         self.path: str | None = None
-        self._lock = threading.Lock()
+        self._lock = _thread.allocate_lock()
 
     def __call__(self) -> str:
         with self._lock:
@@ -111,13 +123,12 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
     """The converted program on stdout (``-o -``), each file's error and notes, the summary
     (a table, or with ``fmt`` "json" one JSON document); exit 1 if a file failed."""
     if to_stdout and output is not None:
-        done = Path(output)
-        if done.exists():
+        if os.path.exists(output):
             from formats.parser import read_chunks
 
-            write_stream("-", read_chunks(str(done)))
-            done.unlink()
-        done.parent.rmdir()
+            write_stream("-", read_chunks(output))
+            os.unlink(output)
+        os.rmdir(os.path.dirname(output))
     rows = []
     failed = 0
     for stats in results:
@@ -220,6 +231,7 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
             files.append((path, os.path.basename(path)))
         else:  # a pattern (a shell that does not expand them): glob only here
             import glob
+            from pathlib import Path
 
             matches = sorted(Path(m) for m in glob.glob(name, recursive=True))
             matches = [m for m in matches if m.is_file()]

@@ -313,13 +313,19 @@ def test_the_options_are_read_as_click_reads_them(place: Path, command: click.Co
      ("click", "dataclasses", "inspect"), '"rule": "TG'),
     (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--units", "inch"],
      ("click",), "total: 1 file "),
-], ids=["check", "convert"])
+    # a batch to a profile file: no pathlib (with urllib.parse and ipaddress) and no
+    # threading, 22M instructions of its start-up (docs/benchmarks.md, "the commits without
+    # the GIL")
+    (["convert", "many", "--out-dir", "out", "--force", "--to", "target.toml", "-j", "2"],
+     ("click", "pathlib", "threading", "urllib", "ipaddress"), "total: 3 files "),
+], ids=["check", "convert", "convert-batch"])
 def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
                                                unused: tuple[str, ...], shown: str) -> None:
     """The point of the entry point's own reading: click's import is half the start-up of a
     one-file check or conversion; for the check, ``dataclasses`` (with ``inspect``) waits
     until a record's fields are asked for (formats.records; the converter's own classes are
     dataclasses)."""
+    (place / "target.toml").write_text('base = "fanuc-mill"\nname = "target"\n')
     code = ("import sys\nfrom tapegate.launch import main\n"
             f"sys.argv = ['tapegate', *{argv!r}]\n"
             "try:\n    main(clean_exit=True)\nexcept SystemExit as exc:\n    code = exc.code\n"
