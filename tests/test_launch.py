@@ -388,6 +388,30 @@ def test_a_plain_command_ends_without_the_interpreters_finalization(
         assert sorted(p.name for p in (place / "out").iterdir()) == ["p0.nc", "p1.nc", "p2.nc"]
 
 
+@pytest.mark.parametrize(("argv", "code"), [
+    (["check", "many", "-p", "iso-mill", "--format", "json", "-j", "2"], 1),
+    (["convert", "many", "--out-dir", "out", "--force", "--to", "fanuc-mill", "-j", "2"], 0),
+], ids=["check-j2", "convert-j2"])
+def test_a_thread_not_a_daemon_still_running_gets_the_interpreters_exit(
+        place: Path, argv: list[str], code: int) -> None:
+    """A caller's thread that is no daemon, still running when the command is done: the
+    interpreter's own exit, which waits for it (its output is there, after the command's) and
+    finalizes, with the command's exit code (tapegate.launch.leave returns)."""
+    (place / "out").mkdir()
+    marker = place / "finalized.txt"
+    register = ("import threading, time\n"
+                "threading.Thread(target=lambda: (time.sleep(1), print('thread done')),"
+                " daemon=False).start()")
+    script = FINALIZED.format(marker=str(marker), register=register, argv=argv, clean=False)
+    done = subprocess.run([sys.executable, "-c", script], cwd=place, capture_output=True,
+                          text=True, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                          check=False, timeout=120)
+    assert done.returncode == code, done.stderr
+    assert done.stdout.endswith("thread done\n") and marker.exists()
+    if "--format" in argv:
+        assert json.loads(done.stdout.removesuffix("thread done\n"))["findings"]
+
+
 def test_a_closed_pipe_ends_as_the_interpreter_ends_it(place: Path) -> None:
     """A flush that fails at the end (the reader gone) is left to the interpreter's exit, which
     tells it as before (tapegate.launch.leave returns): the same exit code and message as with
