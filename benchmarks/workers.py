@@ -2,7 +2,7 @@
 
     .venv/bin/python benchmarks/workers.py [--jobs 1,2] [--copies 200] [--repeat 3]
                                            [--tapegate PATH] [--only TEXT,...] [--callgrind]
-                                           [--large NAME]
+                                           [--large NAME] [--build LABEL=CHECKOUT ...]
 
 Three batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
 whole command by ``time.perf_counter``; its CPU, context switches and the peak resident set of
@@ -47,6 +47,12 @@ among them, last, and with ``-j 1`` its main thread's count up to the first of t
 "before"). The **ideal speed-up** is the ``-j 1`` count over what N idle cores would run
 one after the other: the main thread up to the spreading, then everything after it shared
 evenly, ``I(before) + (I(after) + I(workers)) / N``.
+
+``--build LABEL=CHECKOUT`` (repeated) measures several checkouts, each with its built
+extension, put first on ``PYTHONPATH`` for the same ``--tapegate`` command (a console script
+of the environment, which imports the checkout first): their runs interleaved with the worker
+counts' (build A -j 1, -j 2, build B -j 1, -j 2, A again...), so that the machine's load falls
+on each alike, each build's speed-up against its own 1 worker.
 
 Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
@@ -111,7 +117,16 @@ SPIN = ("import subprocess, sys\n"
         "sys.exit(max(job.wait() for job in jobs))\n")
 
 
-def instructions(argv: list[str], work: Path) -> tuple[int, int, int, list[int]]:
+def build_env(checkout: str | None) -> dict[str, str]:
+    """:func:`user_env`, with ``checkout`` first on ``PYTHONPATH`` (None: as it is)."""
+    env = user_env()
+    if checkout is not None:
+        env["PYTHONPATH"] = checkout
+    return env
+
+
+def instructions(argv: list[str], work: Path,
+                 env: dict[str, str] | None = None) -> tuple[int, int, int, list[int]]:
     """(instructions of the main thread of the main process, of it before the work is
     spread, after it, each worker's own: a worker thread's, or a forked process's) of one
     command under callgrind (see the module's docstring)."""
@@ -122,7 +137,7 @@ def instructions(argv: list[str], work: Path) -> tuple[int, int, int, list[int]]
                     "--separate-threads=yes", "--dump-before=PyOS_AfterFork_Child",
                     "--dump-before=PyThread_start_new_thread",
                     f"--callgrind-out-file={out}/cg.%p", *argv], stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL, env=user_env(), check=False, cwd=ROOT)
+                   stderr=subprocess.DEVNULL, env=env or user_env(), check=False, cwd=ROOT)
     # cg.PID[.PART]-THREAD: PART n is a process's counts up to its n-th dump (a fork, for a
     # child its parent's counts at that moment; or a thread started), no PART the rest of it.
     counts: dict[int, dict[tuple[int, int], int]] = {}
@@ -162,8 +177,13 @@ def main() -> int:
                         help="the long program of the third batch, in the corpus")
     parser.add_argument("--callgrind", action="store_true",
                         help="count instructions (valgrind) instead of timing")
+    parser.add_argument("--build", action="append", default=[], metavar="LABEL=CHECKOUT",
+                        help="a checkout put first on PYTHONPATH (repeated: interleaved)")
     args = parser.parse_args()
     only = args.only.split(",")
+    builds: list[tuple[str, str | None]] = [
+        (b.split("=", 1)[0], str(Path(b.split("=", 1)[1]).resolve())) for b in args.build
+    ] or [("", None)]
 
     def chosen(name: str) -> bool:
         return any(text in name for text in only)
@@ -201,43 +221,58 @@ def main() -> int:
             "the machine's ceiling": [sys.executable, "-c", SPIN],
         }
         jobs = [int(j) for j in args.jobs.split(",")]
+        width = max(len(label) for label, _ in builds)
         if args.callgrind:
-            print(f"{'batch':<34} {'-j':>3} {'main G':>7} {'before':>7} {'after':>7} "
-                  f"{'workers G':>18} {'ideal':>6}")
+            print(f"{'batch':<34} {'':{width}} {'-j':>3} {'main G':>7} {'before':>7} "
+                  f"{'after':>7} {'workers G':>18} {'ideal':>6}")
         else:
-            print(f"{'batch':<34} {'-j':>3} {'median s':>8} {'min s':>6} {'CPU s':>6} "
-                  f"{'switches':>8} {'peak MB':>8} {'speed-up':>8} {'load':>9} rc")
+            print(f"{'batch':<34} {'':{width}} {'-j':>3} {'median s':>8} {'min s':>6} "
+                  f"{'CPU s':>6} {'switches':>8} {'peak MB':>8} {'speed-up':>8} {'load':>9} rc")
         for name, argv in batches.items():
             if not chosen(name):
                 continue
             if args.callgrind:
                 if "ceiling" in name:
                     continue
-                first = 0
-                for j in jobs:
-                    whole, before, after, workers = instructions([*argv, "-j", str(j)], work)
-                    first = first or whole
-                    ideal = first / (before + (after + sum(workers)) / j) if workers else 1.0
-                    shown = " + ".join(f"{w / 1e9:.3f}" for w in workers) or "-"
-                    print(f"{name:<34} {j:>3} {whole / 1e9:>7.3f} {before / 1e9:>7.3f} "
-                          f"{after / 1e9:>7.3f} {shown:>18} {ideal:>6.2f}", flush=True)
+                for label, checkout in builds:
+                    first = 0
+                    for j in jobs:
+                        whole, before, after, workers = instructions(
+                            [*argv, "-j", str(j)], work, build_env(checkout))
+                        first = first or whole
+                        ideal = first / (before + (after + sum(workers)) / j) if workers else 1.0
+                        shown = " + ".join(f"{w / 1e9:.3f}" for w in workers) or "-"
+                        print(f"{name:<34} {label:{width}} {j:>3} {whole / 1e9:>7.3f} "
+                              f"{before / 1e9:>7.3f} {after / 1e9:>7.3f} {shown:>18} "
+                              f"{ideal:>6.2f}", flush=True)
                 continue
             load = os.getloadavg()[0]
-            runs: dict[int, list[tuple[float, float, int, float, int]]] = {j: [] for j in jobs}
-            for _ in range(args.repeat):  # interleaved: 1, 2, 1, 2...
-                for j in jobs:
-                    runs[j].append(timed([*argv, "-j", str(j)], env=user_env()))
+            runs: dict[tuple[str, int], list[tuple[float, float, int, float, int]]] = {
+                (label, j): [] for label, _ in builds for j in jobs}
+            for _ in range(args.repeat):  # interleaved: 1, 2, 1, 2... (each build in turn)
+                for label, checkout in builds:
+                    if "ceiling" in name and label != builds[0][0]:
+                        continue
+                    for j in jobs:
+                        runs[label, j].append(timed([*argv, "-j", str(j)],
+                                                    env=build_env(checkout)))
             load_after = os.getloadavg()[0]
-            first_median = statistics.median(r[0] for r in runs[jobs[0]])
-            for j in jobs:
-                median = statistics.median(r[0] for r in runs[j])
-                times = j if "ceiling" in name else 1  # (N processes: N times the work)
-                print(f"{name:<34} {j:>3} {median:>8.3f} {min(r[0] for r in runs[j]):>6.3f} "
-                      f"{statistics.median(r[3] for r in runs[j]):>6.3f} "
-                      f"{statistics.median(r[4] for r in runs[j]):>8.0f} "
-                      f"{max(r[1] for r in runs[j]):>8.1f} {times * first_median / median:>8.2f} "
-                      f"{load:>4.1f}-{load_after:<4.1f} {max(r[2] for r in runs[j])}",
-                      flush=True)
+            for label, _ in builds:
+                if "ceiling" in name and label != builds[0][0]:
+                    continue
+                first_median = statistics.median(r[0] for r in runs[label, jobs[0]])
+                for j in jobs:
+                    own = runs[label, j]
+                    median = statistics.median(r[0] for r in own)
+                    times = j if "ceiling" in name else 1  # (N processes: N times the work)
+                    print(f"{name:<34} {label:{width}} {j:>3} {median:>8.3f} "
+                          f"{min(r[0] for r in own):>6.3f} "
+                          f"{statistics.median(r[3] for r in own):>6.3f} "
+                          f"{statistics.median(r[4] for r in own):>8.0f} "
+                          f"{max(r[1] for r in own):>8.1f} "
+                          f"{times * first_median / median:>8.2f} "
+                          f"{load:>4.1f}-{load_after:<4.1f} {max(r[2] for r in own)}",
+                          flush=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return 0

@@ -41,12 +41,11 @@ import re
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from itertools import chain
-from pathlib import Path
 
 from formats import _core
 from formats.conversion import ConvertOptions, ConvertStats
 from formats.errors import ConversionError
-from formats.files import PendingFile, is_special
+from formats.files import PendingFile, is_special, parent, pure
 from formats.machine import machine
 from formats.model import Block
 from formats.parser import (
@@ -71,7 +70,7 @@ if TYPE_CHECKING:
 
 __all__ = ["ConvertOptions", "ConvertStats", "Converter", "ParameterClasses",
            "analyse_file_parameters", "analyse_parameters", "convert_file", "convert_text",
-           "detect_source", "sync_folders"]
+           "Handover", "detect_source", "sync_folders"]
 
 # The parameter analysis's outcome: held in the core, the file's classes once (not a list per
 # program of a memory backup), and handed to the converter as it is; ``programs()`` lists them.
@@ -332,7 +331,7 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                  overwrite: bool = False, verify: bool = False, display: str | None = None,
                  make_folder: bool = True, sync_folder: bool = True,
                  notes_spill: str | Callable[[], str] | None = None,
-                 commit: Callable[[Callable[[], None]], None] | None = None) -> ConvertStats:
+                 commit: Callable[[Handover], None] | None = None) -> ConvertStats:
     """Convert one file; ``output`` None is a dry run (everything but the write).
 
     The output is written through a temporary file in its folder, fsync'd, and renamed into
@@ -345,12 +344,12 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     the notes beyond the first thousand go, or a function that gives it
     (:meth:`ConvertStats.spill_to`).
 
-    ``commit``: the fsync and the rename are not done here but handed to it, as a function
-    that does them (and removes the temporary file if they fail, raising what
-    :func:`convert_file` would raise), once the file is converted and verified: a batch runs
-    them in threads of their own, so that a worker's core computes the next file while the
-    disk writes this one (``tapegate.converting``; an fsync is 2-4 ms here, a conversion of a
-    3,000-block file 3 ms of CPU). Until the function has run, nothing has the output's name.
+    ``commit``: the fsync and the rename are not done here but handed to it (a
+    :class:`Handover`: the output, and a function that commits it here), once the file is
+    converted and verified: a batch runs them in threads of their own, so that a worker's core
+    computes the next file while the disk writes this one (``tapegate.converting``; an fsync
+    is 2-4 ms here, a conversion of a 3,000-block file 3 ms of CPU). Until it is committed,
+    nothing has the output's name.
     """
     name = display or path
 
@@ -375,7 +374,7 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
 def _convert_file(path: str, output: str | None, options: ConvertOptions, stats: ConvertStats,
                   *, overwrite: bool, verify: bool, make_folder: bool,
                   sync_folder: bool, read_units: list[tuple[int, str, str]],
-                  commit: Callable[[Callable[[], None]], None] | None = None) -> ConvertStats:
+                  commit: Callable[[Handover], None] | None = None) -> ConvertStats:
     name = stats.file
     if (output is not None and not overwrite and os.path.exists(output)
             and not is_special(output)):  # (a device or a FIFO is written into, not replaced)
@@ -396,13 +395,15 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats,
                           read_units=read_units)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
+    given = output  # (as the caller wrote it, in a message)
     if output:
-        folder = Path(output).parent
+        output = pure(os.fspath(output))
+        folder = parent(output)
     else:
         import tempfile  # (a dry run only: the rest of a conversion does not load it)
 
-        folder = Path(tempfile.gettempdir())
-    pending = PendingFile(folder, Path(output).name if output else "tapegate",
+        folder = tempfile.gettempdir()
+    pending = PendingFile(folder, os.path.basename(output) if output else "tapegate",
                           create=make_folder)
     try:
         converter.convert_file(path, source.dialect, pending)
@@ -430,14 +431,19 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
         pending.discard()
         return stats
 
-    target = Path(output)
+    target = output
+
+    def refused() -> ConversionError:
+        """The output's name taken while it was converted (no --force)."""
+        return ConversionError(f"{given} exists; use --force to overwrite it", file=name,
+                               code="output-exists")
 
     def finish() -> None:
         try:
-            pending.commit(target, overwrite=overwrite, version=False, sync_folder=sync_folder)
+            pending.name_as(target, overwrite=overwrite, version=False,
+                            sync_folder=sync_folder)
         except FileExistsError:  # it appeared while converting
-            raise ConversionError(f"{output} exists; use --force to overwrite it",
-                                  file=name, code="output-exists") from None
+            raise refused() from None
         finally:  # (a failed fsync leaves the file open; commit removes it otherwise)
             if not pending.file.closed:
                 pending.discard()
@@ -445,8 +451,24 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     if commit is None:
         finish()
     else:
-        commit(finish)
+        commit(Handover(pending, target, overwrite, finish, refused))
     return stats
+
+
+class Handover:
+    """An output converted, handed to ``convert_file``'s ``commit``: its data in ``pending``,
+    its name ``target`` (replaced when ``overwrite``); ``finish`` does the commit here
+    (:meth:`PendingFile.commit`: the fsync, the rename or link, the temporary file removed on
+    a failure; a device or a FIFO written into) and raises what :func:`convert_file` would
+    raise; ``refused`` makes the error of a name taken meanwhile (a commit's
+    FileExistsError)."""
+
+    __slots__ = ("pending", "target", "overwrite", "finish", "refused")
+
+    def __init__(self, pending: PendingFile, target: str, overwrite: bool,
+                 finish: Callable[[], None], refused: Callable[[], ConversionError]) -> None:
+        self.pending, self.target, self.overwrite = pending, target, overwrite
+        self.finish, self.refused = finish, refused
 
 
 def sync_folders(outputs: Iterable[str]) -> None:
@@ -455,7 +477,7 @@ def sync_folders(outputs: Iterable[str]) -> None:
     from formats.files import sync_folder
 
     for folder in sorted({os.path.dirname(os.path.abspath(o)) for o in outputs}):
-        sync_folder(Path(folder))
+        sync_folder(folder)
 
 
 def convert_text(text: str, options: ConvertOptions, *, file: str | None = None

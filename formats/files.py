@@ -15,9 +15,17 @@ from __future__ import annotations
 
 import os
 import stat
-from pathlib import Path
 
 from formats.errors import OutputError
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from pathlib import Path
+
+# (paths are strings here, written as pathlib writes them (:func:`pure`), and a Path is made
+# only for a caller that is given one: pathlib's import, with fnmatch, ntpath and
+# urllib.parse, was 18M instructions of a conversion's start-up, which its threads cannot
+# share; docs/benchmarks.md, "the commits without the GIL")
 
 
 class PendingFile:
@@ -29,25 +37,26 @@ class PendingFile:
     big for memory.
     """
 
-    def __init__(self, folder: Path, hint: str = "tapegate", *, create: bool = False):
+    def __init__(self, folder: str | os.PathLike[str], hint: str = "tapegate", *,
+                 create: bool = False):
         """``create`` makes a missing ``folder`` (a receive folder, a layout under --out-dir);
         otherwise a missing folder is an error, as for any file a user names."""
-        self.folder = Path(folder)
+        self.folder = pure(os.fspath(folder))
         if create:
-            self.folder.mkdir(parents=True, exist_ok=True)
+            os.makedirs(self.folder, exist_ok=True)
         while True:
             # (secrets.token_hex(4), without importing secrets, hashlib and base64: a
             # conversion's start-up, which its threads cannot share)
-            self.tmp = str(self.folder / f".{hint}.{os.urandom(4).hex()}.part")
+            self.tmp = joined(self.folder, f".{hint}.{os.urandom(4).hex()}.part")
             try:
                 fd = os.open(self.tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
                 break
             except FileExistsError:
                 continue
             except OSError as exc:
-                where = self.folder / hint if hint != "tapegate" else self.folder
+                where = joined(self.folder, hint) if hint != "tapegate" else self.folder
                 reason = ("no such folder" if isinstance(exc, FileNotFoundError)
-                          and not self.folder.is_dir() else exc.strerror or str(exc))
+                          and not os.path.isdir(self.folder) else exc.strerror or str(exc))
                 raise OutputError(f"cannot write {where}: {reason}") from None
         self.file = os.fdopen(fd, "wb")
         self.size = 0
@@ -56,15 +65,23 @@ class PendingFile:
         self.file.write(data)
         self.size += len(data)
 
-    def commit(self, path: Path, *, overwrite: bool = False, version: bool = True,
-               sync_folder: bool = True) -> Path:
+    def commit(self, path: str | os.PathLike[str], *, overwrite: bool = False,
+               version: bool = True, sync_folder: bool = True) -> Path:
+        """:meth:`name_as`, the path written as a ``Path``."""
+        from pathlib import Path
+
+        return Path(self.name_as(path, overwrite=overwrite, version=version,
+                                 sync_folder=sync_folder))
+
+    def name_as(self, path: str | os.PathLike[str], *, overwrite: bool = False,
+                version: bool = True, sync_folder: bool = True) -> str:
         """fsync and give the file its name; with ``overwrite`` False an existing file is kept
         and a new version name is used (``NAME.1.EXT``...), or with ``version`` False the commit
         fails (:class:`FileExistsError`). Returns the path written. ``sync_folder`` False leaves
         the folder's fsync (the name on disk) to the caller, who syncs it once for many files
         (:func:`sync_folder`); the data is fsync'd before the rename either way, so the name
         never stands for a part of the file."""
-        path = Path(path)
+        path = pure(os.fspath(path))
         self.file.flush()
         os.fsync(self.file.fileno())
         self.file.close()
@@ -79,7 +96,7 @@ class PendingFile:
             if overwrite:
                 os.replace(self.tmp, path)
                 if sync_folder:
-                    _sync_folder(path.parent)
+                    _sync_folder(parent(path))
                 return path
             while True:
                 if version:
@@ -93,11 +110,31 @@ class PendingFile:
                     continue
             os.unlink(self.tmp)
             if sync_folder:
-                _sync_folder(path.parent)
+                _sync_folder(parent(path))
             return path
         except BaseException:
             self.discard()
             raise
+
+    def hand_over(self) -> int:
+        """The data written flushed, and the temporary file's descriptor given away for a
+        commit made elsewhere (``formats._core.Commits``: :meth:`commit`'s steps for a regular
+        file, the data fsync'd before the name is given, the temporary file removed if a step
+        fails): a duplicate, which the taker closes; this object's own is closed here. On an
+        error the temporary file is removed, as by :meth:`commit`."""
+        try:
+            self.file.flush()
+            fd = os.dup(self.file.fileno())
+        except BaseException:
+            self.discard()
+            raise
+        try:
+            self.file.close()
+        except BaseException:
+            os.close(fd)
+            self.discard()
+            raise
+        return fd
 
     def discard(self) -> None:
         """Remove the temporary file, whatever closing it says (a full disk fails the close
@@ -129,19 +166,19 @@ def is_special(path: str | os.PathLike[str]) -> bool:
     return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
 
 
-def write_atomic(path: Path, data: bytes, *, overwrite: bool = True) -> Path:
+def write_atomic(path: str | os.PathLike[str], data: bytes, *, overwrite: bool = True) -> Path:
     """Write ``data`` to ``path`` through a temporary file, fsync and rename.
 
     With ``overwrite`` False an existing file is kept and the data goes to a new version name
     (``NAME.1.EXT``, ``NAME.2.EXT``...); the path actually written is returned.
     """
-    path = Path(path)
-    with PendingFile(path.parent, path.name) as pending:
+    path = pure(os.fspath(path))
+    with PendingFile(parent(path), os.path.basename(path)) as pending:
         pending.write(data)
         return pending.commit(path, overwrite=overwrite)
 
 
-def _sync_folder(folder: Path) -> None:
+def _sync_folder(folder: str | os.PathLike[str]) -> None:
     """fsync a folder, so that a rename in it is on disk (where the system allows it)."""
     try:
         fd = os.open(folder, os.O_RDONLY)
@@ -158,19 +195,52 @@ def _sync_folder(folder: Path) -> None:
 sync_folder = _sync_folder  # (PendingFile.commit's argument of that name hides it there)
 
 
-def next_free_name(path: Path) -> Path:
-    if not path.exists():
+def next_free_name(path: str) -> str:
+    """``path``, or where a file is there the first of ``STEM.1.EXT``, ``STEM.2.EXT``... that
+    is free (the stem and the extension as pathlib reads them)."""
+    if not os.path.exists(path):
         return path
-    stem, suffix = path.stem, path.suffix
+    from pathlib import Path
+
+    name = Path(path)
+    stem, suffix = name.stem, name.suffix
     n = 1
     while True:
-        candidate = path.with_name(f"{stem}.{n}{suffix}")
+        candidate = name.with_name(f"{stem}.{n}{suffix}")
         if not candidate.exists():
-            return candidate
+            return str(candidate)
         n += 1
 
 
-def sha256_of(path: Path) -> str:
+def pure(name: str) -> str:
+    """``str(pathlib.PurePosixPath(name))``: empty and ``.`` parts dropped, ``..`` kept, two
+    leading slashes kept as two (POSIX leaves their meaning to the system), more as one."""
+    root = "//" if name.startswith("//") and not name.startswith("///") else (
+        "/" if name.startswith("/") else "")
+    parts = [p for p in name.split("/") if p not in ("", ".")]
+    return root + "/".join(parts) or "."
+
+
+def joined(folder: str, below: str) -> str:
+    """``str(Path(folder) / below)`` for a ``folder`` written as :func:`pure` writes it and a
+    relative ``below`` without empty or ``.`` parts: ``os.path.join``'s, written out (only
+    ``/`` and ``//`` end in a slash)."""
+    if folder == ".":
+        return below
+    return folder + below if folder[-1:] == "/" else folder + "/" + below
+
+
+def parent(path: str) -> str:
+    """``str(PurePosixPath(path).parent)`` of a path written as :func:`pure` writes it."""
+    if path in ("/", "//", "."):
+        return path
+    folder = path.rpartition("/")[0]
+    if not folder:
+        return "/" if path.startswith("/") else "."
+    return folder + "/" if folder == "/" else folder
+
+
+def sha256_of(path: str | os.PathLike[str]) -> str:
     """The SHA-256 of a file, read in chunks (for the transfer journal)."""
     import hashlib
 
@@ -181,7 +251,7 @@ def sha256_of(path: Path) -> str:
     return digest.hexdigest()
 
 
-def count_lines(path: Path) -> int:
+def count_lines(path: str | os.PathLike[str]) -> int:
     """Line ends in a file, read in chunks."""
     with open(path, "rb") as f:
         return sum(chunk.count(b"\n") for chunk in iter(lambda: f.read(1 << 16), b""))

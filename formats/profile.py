@@ -411,24 +411,27 @@ def load_profile(name_or_path: str) -> Profile:
     if name_or_path in builtin_names():
         return profile_from_text(builtin_text(name_or_path), source="built-in",
                                  default_name=name_or_path, cache_as=name_or_path)
-    from pathlib import Path  # a user's file: its name as pathlib reads and shows it
+    # a user's file: its name as pathlib reads and shows it, without pathlib (its import is
+    # 18M instructions of a conversion's start-up; docs/benchmarks.md, "the commits without
+    # the GIL")
+    from formats.files import pure
 
-    path = Path(name_or_path)
-    try:
-        exists = path.exists()
-    except (OSError, ValueError):  # a name too long for the system, a NUL in it
-        exists = False
-    if path.suffix == ".toml" or exists:
+    path = pure(name_or_path)
+    name = os.path.basename(path)
+    dot = name.rfind(".")  # (PurePath.suffix and .stem)
+    suffix, stem = (name[dot:], name[:dot]) if 0 < dot < len(name) - 1 else ("", name)
+    if suffix == ".toml" or os.path.exists(path):  # (False for a name too long, or a NUL)
         try:
-            text = path.read_text("utf-8")
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
         except OSError as exc:
-            raise ProfileError(f"cannot read profile: {exc.strerror}", file=str(path),
+            raise ProfileError(f"cannot read profile: {exc.strerror}", file=path,
                                code="profile-unreadable") from None
         except UnicodeDecodeError as exc:  # a binary file
             raise ProfileError(f"cannot read profile: not UTF-8 text ({exc.reason} at byte "
-                               f"{exc.start})", file=str(path), code="profile-unreadable"
+                               f"{exc.start})", file=path, code="profile-unreadable"
                                ) from None
-        return profile_from_text(text, source=str(path), default_name=path.stem,
+        return profile_from_text(text, source=path, default_name=stem,
                                  cache_as=FILE_CACHE_NAME)
     raise ProfileError(
         f"no profile named {name_or_path!r}; built-in profiles: {', '.join(builtin_names())} "

@@ -8,19 +8,19 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Sequence
-from pathlib import Path
 
 from formats.errors import OutputError, TapegateError
+from formats.files import is_special
 from formats.profile import load_profile
 from formats.wordformat import Rounding, Zeros
 from tapegate.common import echo, readable, table, usage, user_errors, write_stream
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Sequence
+    from typing import Any
 
-    from formats.convert import ConvertOptions, ConvertStats
+    from formats.convert import ConvertOptions, ConvertStats, Handover
 
 
 
@@ -46,10 +46,10 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
     if to_stdout:
         import tempfile
 
-        output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
+        output = os.path.join(tempfile.mkdtemp(prefix="tapegate-"), "out.nc")
     if out_dir and not dry_run:  # a file where the folder (or one above it) would be
-        there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
-        if there is not None and not there.is_dir():
+        there = _existing(out_dir)
+        if there is not None and not os.path.isdir(there):
             raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
     jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
     options = ConvertOptions(
@@ -73,6 +73,20 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         spill.remove()
 
 
+def _existing(name: str) -> str | None:
+    """The first of ``name`` and the folders above it that exists (``Path(name)`` and its
+    ``parents``), written as pathlib writes it; None if none does."""
+    from formats.files import parent, pure
+
+    path = pure(name)
+    while not os.path.exists(path):
+        up = parent(path)
+        if up == path:
+            return None
+        path = up
+    return path
+
+
 class SpillFolder:
     """The temporary folder where the notes of a file beyond its first thousand wait until the
     summary prints them (formats.conversion.ConvertStats), made when a file first needs it:
@@ -82,10 +96,10 @@ class SpillFolder:
     threads of ``-j``: made once, under a lock."""
 
     def __init__(self) -> None:
-        import threading
+        import _thread  # (threading's import, 4M instructions, is for nothing here)
 
         self.path: str | None = None
-        self._lock = threading.Lock()
+        self._lock = _thread.allocate_lock()
 
     def __call__(self) -> str:
         with self._lock:
@@ -109,13 +123,12 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
     """The converted program on stdout (``-o -``), each file's error and notes, the summary
     (a table, or with ``fmt`` "json" one JSON document); exit 1 if a file failed."""
     if to_stdout and output is not None:
-        done = Path(output)
-        if done.exists():
+        if os.path.exists(output):
             from formats.parser import read_chunks
 
-            write_stream("-", read_chunks(str(done)))
-            done.unlink()
-        done.parent.rmdir()
+            write_stream("-", read_chunks(output))
+            os.unlink(output)
+        os.rmdir(os.path.dirname(output))
     rows = []
     failed = 0
     for stats in results:
@@ -218,6 +231,7 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
             files.append((path, os.path.basename(path)))
         else:  # a pattern (a shell that does not expand them): glob only here
             import glob
+            from pathlib import Path
 
             matches = sorted(Path(m) for m in glob.glob(name, recursive=True))
             matches = [m for m in matches if m.is_file()]
@@ -275,7 +289,7 @@ def _convert_one(job: tuple[str, str | None, str], options: ConvertOptions, over
                              display=name, make_folder=make_folder, sync_folder=False,
                              notes_spill=spill,
                              commit=None if commits is None else
-                             lambda finish: handed.append(commits.submit(finish)))
+                             lambda handover: handed.append(commits.submit(handover)))
     except (TapegateError, OSError) as exc:
         return _failed(name, output, exc), None
     return stats, handed[0] if handed else None
@@ -295,93 +309,71 @@ def _failed(name: str, output: str | None, exc: BaseException) -> ConvertStats:
 
 
 class Commit:
-    """One output's fsync and rename (``finish``), run by a thread of :class:`Commits`:
-    :meth:`wait` gives what it raised, None once the output has its name."""
+    """One output's commit (its fsync and its name), handed to :class:`Commits`: :meth:`wait`
+    gives what it raised, None once the output has its name."""
 
-    __slots__ = ("finish", "error", "_running")
+    __slots__ = ("_commits", "_ticket", "_refused", "error")
 
-    def __init__(self, finish: Callable[[], None]) -> None:
-        import threading
-
-        self.finish = finish
-        self.error: BaseException | None = None
-        self._running = threading.Lock()  # held until finish has run
-        self._running.acquire()
-
-    def run(self) -> None:
-        try:
-            self.finish()
-        except BaseException as exc:  # told at the file's turn (run_batch)
-            self.error = exc
-        finally:
-            self._running.release()
+    def __init__(self, commits: Any, ticket: int, refused: Callable[[], BaseException],
+                 error: BaseException | None = None) -> None:
+        self._commits = commits  # the core's Commits, None once waited for (or done here)
+        self._ticket = ticket
+        self._refused = refused
+        self.error = error
 
     def done(self) -> bool:
-        return not self._running.locked()
+        return self._commits is None or bool(self._commits.done(self._ticket))
 
     def wait(self) -> BaseException | None:
-        with self._running:
-            return self.error
+        commits, self._commits = self._commits, None
+        if commits is not None:
+            try:
+                commits.wait(self._ticket)
+            except FileExistsError:  # the name taken meanwhile (no --force)
+                self.error = self._refused()
+            except OSError as exc:
+                self.error = exc
+        return self.error
 
 
 class Commits:
-    """The fsync and rename of a batch's outputs, each a :class:`Commit`, run by up to
-    ``threads`` threads of their own in the order they were handed over. A worker that did
-    its own fsync left its core idle for the disk's 2-4 ms a file, a third of a short file's
-    time with one worker (docs/benchmarks.md, "the conversion's fsync"); here the next file is
-    converted meanwhile, and several outputs' fsyncs in flight at once are written by the
-    file system in one journal commit. The threads are started as the commits come, and
-    :meth:`close` runs every commit handed over before it returns (a file converted is
-    written, as when each worker wrote its own)."""
+    """The commits of a batch's outputs, run by up to ``threads`` threads of the core
+    (``formats._core.Commits``) in the order they are handed over, with the GIL released: the
+    fsync of the temporary file's data, then its name by a rename (``--force``) or a link
+    that never replaces a file, the temporary file removed if a step fails -- the steps of
+    ``formats.files.PendingFile.commit`` for a regular file. A worker that did its own fsync
+    left its core idle for the disk's 2-4 ms a file, a third of a short file's time with one
+    worker (docs/benchmarks.md, "the conversion's fsync"); here the next file is converted
+    meanwhile, and several outputs' fsyncs in flight at once are written by the file system
+    together. The threads never take the GIL: Python threads did, five times a commit, woken
+    by the disk while the workers wanted it (docs/benchmarks.md, "the commits without the
+    GIL"). A target that is not a regular file (a device, a FIFO) is written into by the
+    worker (:meth:`PendingFile.commit`). :meth:`close` runs every commit handed over before
+    it returns (a file converted is written, as when each worker wrote its own)."""
 
     def __init__(self, threads: int) -> None:
-        import threading
-        from collections import deque
+        from formats import _core
 
         self.threads = max(1, threads)
-        self._cond = threading.Condition()
-        self._queue: deque[Commit] = deque()
-        self._threads: list[threading.Thread] = []
-        self._idle = 0
-        self._closed = False
+        self._core = _core.Commits(self.threads)
 
-    def submit(self, finish: Callable[[], None]) -> Commit:
-        import threading
-
-        job = Commit(finish)
-        with self._cond:
-            if self._closed:  # (no worker is left by then; run where it is handed over)
-                job.run()
-                return job
-            self._queue.append(job)
-            if self._idle:
-                self._cond.notify()
-            elif len(self._threads) < self.threads:
-                thread = threading.Thread(target=self._run, name="tapegate-commit",
-                                          daemon=True)
-                self._threads.append(thread)
-                thread.start()
-        return job
-
-    def _run(self) -> None:
-        while True:
-            with self._cond:
-                while not self._queue and not self._closed:
-                    self._idle += 1
-                    self._cond.wait()
-                    self._idle -= 1
-                if not self._queue:
-                    return
-                job = self._queue.popleft()
-            job.run()
+    def submit(self, handover: Handover) -> Commit:
+        """``handover``'s output committed by the threads; a device or a FIFO written into
+        here, by ``handover.finish``."""
+        if is_special(handover.target):
+            try:
+                handover.finish()
+            except (TapegateError, OSError) as exc:
+                return Commit(None, 0, handover.refused, exc)
+            return Commit(None, 0, handover.refused)
+        pending = handover.pending
+        ticket = self._core.submit(pending.hand_over(), pending.tmp, str(handover.target),
+                                   handover.overwrite)
+        return Commit(self._core, ticket, handover.refused)
 
     def close(self) -> None:
         """Every commit handed over run, the threads ended."""
-        with self._cond:
-            self._closed = True
-            self._cond.notify_all()
-        for thread in self._threads:
-            thread.join()
+        self._core.close()
 
 
 # The outputs converted whose commit has not been waited for, at most, before the main thread

@@ -43,6 +43,34 @@ def test_no_name_is_replaced_unless_asked(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["O1234.1.nc", "O1234.nc"]
 
 
+def test_a_file_handed_over_is_committed_by_the_core_as_commit_would(tmp_path: Path) -> None:
+    """PendingFile.hand_over gives a descriptor of the taker's own, the data flushed (written
+    in pieces the file object still buffered), and closes its file; the core's Commits
+    (formats._core) then names it as PendingFile.commit does: a link that refuses a name taken
+    (the temporary file removed), a rename where it may replace."""
+    from formats import _core
+
+    target = tmp_path / "O1.nc"
+    target.write_bytes(b"there\n")
+    commits = _core.Commits(1)
+    tickets = []
+    for overwrite in (False, True):
+        pending = PendingFile(tmp_path, "O1.nc")
+        pending.write(b"N1 X1.\n")
+        pending.write(b"N2 X2.\n")
+        fd = pending.hand_over()
+        assert pending.file.closed and os.fstat(fd).st_size == 14
+        tickets.append(commits.submit(fd, pending.tmp, str(target), overwrite))
+    with pytest.raises(FileExistsError):
+        commits.wait(tickets[0])
+    assert commits.wait(tickets[1]) is None
+    commits.close()
+    assert target.read_bytes() == b"N1 X1.\nN2 X2.\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["O1.nc"]
+    with pytest.raises(ValueError):  # (each ticket is waited for once)
+        commits.wait(tickets[1])
+
+
 def test_the_mode_follows_the_umask_without_changing_it(tmp_path: Path) -> None:
     old = os.umask(0o027)
     try:

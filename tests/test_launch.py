@@ -313,13 +313,19 @@ def test_the_options_are_read_as_click_reads_them(place: Path, command: click.Co
      ("click", "dataclasses", "inspect"), '"rule": "TG'),
     (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--units", "inch"],
      ("click",), "total: 1 file "),
-], ids=["check", "convert"])
+    # a batch to a profile file: no pathlib (with urllib.parse and ipaddress) and no
+    # threading, 22M instructions of its start-up (docs/benchmarks.md, "the commits without
+    # the GIL")
+    (["convert", "many", "--out-dir", "out", "--force", "--to", "target.toml", "-j", "2"],
+     ("click", "pathlib", "threading", "urllib", "ipaddress"), "total: 3 files "),
+], ids=["check", "convert", "convert-batch"])
 def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
                                                unused: tuple[str, ...], shown: str) -> None:
     """The point of the entry point's own reading: click's import is half the start-up of a
     one-file check or conversion; for the check, ``dataclasses`` (with ``inspect``) waits
     until a record's fields are asked for (formats.records; the converter's own classes are
     dataclasses)."""
+    (place / "target.toml").write_text('base = "fanuc-mill"\nname = "target"\n')
     code = ("import sys\nfrom tapegate.launch import main\n"
             f"sys.argv = ['tapegate', *{argv!r}]\n"
             "try:\n    main(clean_exit=True)\nexcept SystemExit as exc:\n    code = exc.code\n"
@@ -380,6 +386,30 @@ def test_a_plain_command_ends_without_the_interpreters_finalization(
     assert answers[0] == answers[1] == answers[2]
     if argv[0] == "convert":
         assert sorted(p.name for p in (place / "out").iterdir()) == ["p0.nc", "p1.nc", "p2.nc"]
+
+
+@pytest.mark.parametrize(("argv", "code"), [
+    (["check", "many", "-p", "iso-mill", "--format", "json", "-j", "2"], 1),
+    (["convert", "many", "--out-dir", "out", "--force", "--to", "fanuc-mill", "-j", "2"], 0),
+], ids=["check-j2", "convert-j2"])
+def test_a_thread_not_a_daemon_still_running_gets_the_interpreters_exit(
+        place: Path, argv: list[str], code: int) -> None:
+    """A caller's thread that is no daemon, still running when the command is done: the
+    interpreter's own exit, which waits for it (its output is there, after the command's) and
+    finalizes, with the command's exit code (tapegate.launch.leave returns)."""
+    (place / "out").mkdir()
+    marker = place / "finalized.txt"
+    register = ("import threading, time\n"
+                "threading.Thread(target=lambda: (time.sleep(1), print('thread done')),"
+                " daemon=False).start()")
+    script = FINALIZED.format(marker=str(marker), register=register, argv=argv, clean=False)
+    done = subprocess.run([sys.executable, "-c", script], cwd=place, capture_output=True,
+                          text=True, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                          check=False, timeout=120)
+    assert done.returncode == code, done.stderr
+    assert done.stdout.endswith("thread done\n") and marker.exists()
+    if "--format" in argv:
+        assert json.loads(done.stdout.removesuffix("thread done\n"))["findings"]
 
 
 def test_a_closed_pipe_ends_as_the_interpreter_ends_it(place: Path) -> None:

@@ -493,8 +493,7 @@ def test_a_report_appended_to_a_file_keeps_what_the_file_held(tmp_path):
 # -- convert: the folders fsync'd once for the batch ----------------------------------------------
 
 
-def test_a_batch_syncs_each_output_folder_once_and_every_file_before_its_rename(tmp_path,
-                                                                              monkeypatch):
+def test_a_batch_syncs_each_output_folder_once(tmp_path, monkeypatch):
     import formats.files
 
     cam = tmp_path / "cam"
@@ -502,18 +501,76 @@ def test_a_batch_syncs_each_output_folder_once_and_every_file_before_its_rename(
     for n in range(4):
         (cam / ("sub" if n > 1 else "") / f"p{n}.nc").write_text(PROGRAM)
     folders: list[str] = []
-    files: list[int] = []
-    real_fsync = os.fsync
     monkeypatch.setattr(formats.files, "_sync_folder", lambda f: folders.append(str(f)))
     monkeypatch.setattr(formats.files, "sync_folder", lambda f: folders.append(str(f)))
-    monkeypatch.setattr(os, "fsync", lambda fd: (files.append(fd), real_fsync(fd))[1])
     out = tmp_path / "out"
     result = _run("convert", str(cam), "--out-dir", str(out), "--to", "iso-mill", "--units",
                   "inch", "-j", "1")
     assert result.exit_code == 0, result.output
     assert sorted(folders) == [str(out), str(out / "sub")]  # once each, at the end
-    assert len(files) == 4  # each file's data, before its rename
     assert sorted(p.name for p in out.rglob("*.nc")) == [f"p{n}.nc" for n in range(4)]
+
+
+def _traced(tmp_path: Path, *args: str) -> tuple[int, list[tuple[int, str]]]:
+    """(the process's ID, its threads' calls of fsync, rename, link and unlink and its opens,
+    as ``strace -f -y`` tells them: (thread, call)) of ``python -m tapegate ARGS``; the test
+    is skipped where strace is missing or may not trace."""
+    import shutil
+
+    if shutil.which("strace") is None:
+        pytest.skip("strace is not installed")
+    log = tmp_path / "strace.log"
+    done = subprocess.run(["strace", "-f", "-y", "-qq", "-o", str(log), "-e",
+                           "trace=fsync,rename,renameat,renameat2,link,linkat,unlink,unlinkat,"
+                           "openat", sys.executable, "-m", "tapegate", *args],
+                          capture_output=True, text=True, cwd=ROOT, timeout=300, check=False,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    if not log.exists() or "ptrace" in done.stderr:
+        pytest.skip(f"strace may not trace here: {done.stderr[-300:]}")
+    assert done.returncode == 0, done.stderr
+    calls = []
+    for line in log.read_text().splitlines():
+        thread, _, call = line.partition(" ")
+        calls.append((int(thread), call.strip()))
+    return min(t for t, _ in calls), calls
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_every_output_is_synced_before_its_name_and_not_by_a_converting_thread(tmp_path, jobs):
+    """The commits of a batch (tapegate.converting.Commits, the core's Commits): each output's
+    temporary file is fsync'd before it is given its name (a link, or with --force a rename),
+    its temporary name then removed, by a thread of the commits: not the main thread, which
+    converts (with -j 1, the next file while the disk writes the last output) -- read from
+    the system calls themselves (strace)."""
+    import re
+
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for n in range(4):
+        (cam / f"p{n}.nc").write_text(PROGRAM.replace("X25.4", f"X25.{n}"))
+    out = tmp_path / "out"
+    out.mkdir()
+    force = ["--force"] if jobs == "2" else []  # (-j 2: a rename, -j 1: a link)
+    if force:
+        (out / "p3.nc").write_text("old\n")  # replaced
+    main_thread, calls = _traced(tmp_path, "convert", str(cam), "--out-dir", str(out),
+                                 *force, "--to", "iso-mill", "-j", jobs)
+    for n in range(4):
+        target = str(out / f"p{n}.nc")
+        part = re.compile(rf'{re.escape(str(out))}/\.p{n}\.nc\.[0-9a-f]{{8}}\.part')
+        synced = [i for i, (_, call) in enumerate(calls)
+                  if call.startswith("fsync(") and part.search(call)]
+        named = [i for i, (_, call) in enumerate(calls)
+                 if re.match(r"(rename|link)", call) and target in call]
+        removed = [i for i, (_, call) in enumerate(calls)
+                   if call.startswith("unlink") and part.search(call)]
+        assert len(synced) == 1 and len(named) == 1 and synced[0] < named[0], (n, calls)
+        assert calls[named[0]][1].startswith("rename" if jobs == "2" else "link")
+        assert jobs == "2" or len(removed) == 1 and named[0] < removed[0]
+        assert calls[synced[0]][0] != main_thread and calls[named[0]][0] != main_thread
+        assert (out / f"p{n}.nc").read_text() == PROGRAM.replace("X25.4", f"X25.{n}").replace(
+            "G21", "G71")
+    assert not list(out.glob(".*"))
 
 
 @pytest.mark.parametrize("jobs", ["1", "2"])
@@ -545,69 +602,39 @@ def test_an_output_whose_commit_fails_is_that_files_error_and_leaves_nothing(tmp
     assert (out / "p1.nc").is_dir() and not list(out.glob(".*"))
 
 
-def test_a_file_converts_while_the_output_before_it_is_synced(tmp_path, monkeypatch):
-    """With one worker the next file is converted while the disk writes the last output: the
-    first fsync waits (up to 20 s) for the second file's conversion to start, which it could
-    not if the worker made its own fsync."""
-    import threading
-
-    import formats.convert
-
-    cam = tmp_path / "cam"
-    cam.mkdir()
-    for n in range(3):
-        (cam / f"p{n}.nc").write_text(PROGRAM)
-    started: list[str] = []
-    second = threading.Event()
-    waited: list[bool] = []
-    real_convert, real_fsync = formats.convert.convert_file, os.fsync
-
-    def convert_file(path: str, *args: Any, **kwargs: Any) -> Any:
-        started.append(Path(path).name)
-        if len(started) == 2:
-            second.set()
-        return real_convert(path, *args, **kwargs)
-
-    def fsync(fd: int) -> None:
-        if not waited:
-            waited.append(second.wait(20))
-        real_fsync(fd)
-
-    monkeypatch.setattr(formats.convert, "convert_file", convert_file)
-    monkeypatch.setattr(os, "fsync", fsync)
-    out = tmp_path / "out"
-    result = _run("convert", str(cam), "--out-dir", str(out), "--to", "iso-mill", "-j", "1")
-    assert result.exit_code == 0, result.output
-    assert waited == [True]
-    assert started == ["p0.nc", "p1.nc", "p2.nc"]
-    assert [(out / f"p{n}.nc").read_text() for n in range(3)] == [
-        PROGRAM.replace("G21", "G71")] * 3
-
-
-def test_commits_run_in_order_given_and_close_runs_every_one():
-    """Commits: each commit's error is given by its wait, a commit handed over is run before
-    close returns, and one handed over after close runs at once."""
+def test_commits_run_in_order_given_and_close_runs_every_one(tmp_path):
+    """Commits: each output handed over gets its name, or its commit's error from its wait
+    (its temporary file removed: a folder where the output would be; a name taken without
+    --force, told as the conversion tells it); close runs every one handed over, and one
+    handed over after close runs at once."""
+    from formats.convert import Handover
+    from formats.files import PendingFile
     from tapegate.converting import Commits
 
-    done: list[int] = []
+    out = tmp_path / "out"
+    (out / "p3.nc" / "x").mkdir(parents=True)  # a folder, not empty: no rename replaces it
+    (out / "p4.nc").write_text("kept\n")
 
-    def commit(n: int) -> Any:
-        def run() -> None:
-            if n == 3:
-                raise OSError(28, "No space left on device")
-            done.append(n)
-        return run
+    def output(n: int) -> Handover:
+        pending = PendingFile(out, f"p{n}.nc")
+        pending.write(f"program {n}\n".encode())
+        target = out / f"p{n}.nc"
+        return Handover(pending, target, n != 4, lambda: None,
+                        lambda: OSError(f"{target} exists"))
 
     commits = Commits(1)
-    handed = [commits.submit(commit(n)) for n in range(6)]
+    handed = [commits.submit(output(n)) for n in range(6)]
     commits.close()
-    assert done == [0, 1, 2, 4, 5]
     assert all(c.done() for c in handed)
     errors = [c.wait() for c in handed]
-    assert [str(e) for e in errors if e] == ["[Errno 28] No space left on device"]
-    assert errors[3] is not None and errors[:3] == [None] * 3
-    late = commits.submit(commit(7))
-    assert late.done() and done[-1] == 7
+    assert [str(e) for e in errors if e] == ["[Errno 21] Is a directory", f"{out}/p4.nc exists"]
+    assert errors[3] is not None and errors[:3] == [None] * 3 and errors[5] is None
+    assert [(out / f"p{n}.nc").read_text() for n in (0, 1, 2, 4, 5)] == [
+        "program 0\n", "program 1\n", "program 2\n", "kept\n", "program 5\n"]
+    late = commits.submit(output(7))
+    assert late.done() and late.wait() is None
+    assert (out / "p7.nc").read_text() == "program 7\n"
+    assert sorted(p.name for p in out.iterdir()) == [f"p{n}.nc" for n in (0, 1, 2, 3, 4, 5, 7)]
 
 
 def test_a_batch_not_on_a_terminal_does_not_import_the_progress_bar(tmp_path):

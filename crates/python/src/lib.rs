@@ -9,6 +9,7 @@ use std::borrow::Cow;
 use std::ffi::c_char;
 
 mod checker;
+mod commits;
 mod converter;
 mod diff;
 mod files;
@@ -814,6 +815,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<machine::Machine>()?;
     m.add_class::<restart::RestartWalk>()?;
     m.add_class::<converter::Converter>()?;
+    m.add_class::<commits::Commits>()?;
     m.add_class::<converter::ParameterAnalysis>()?;
     m.add_class::<converter::ParameterClasses>()?;
     m.add_class::<diff::DiffReader>()?;
