@@ -509,13 +509,14 @@ class _Planner:
             # (review 38, finding 5) a second M19 does not end the first's orientation: the
             # hint is the first's line, where a restart is not refused for either
             at, code = walk.oriented
-            since = walk.oriented_since or at
-            first = f" (the spindle oriented since line {since})" if since != at else ""
+            first_m19 = walk.oriented_since or at
+            earlier = (f" (the spindle oriented since line {first_m19})" if first_m19 != at
+                       else "")
             raise self.refuse(f"M{code:02d} on line {at} oriented the spindle (stopped at a fixed "
-                              f"angle){first} and no M03, M04 or M05 has come since: the "
+                              f"angle){earlier} and no M03, M04 or M05 has come since: the "
                               "preamble would start it with the spindle mode of before, or "
                               "leave it at another angle (a bar shifted through a bore, a "
-                              f"static tool fed); restart at or before line {since}, or after "
+                              f"static tool fed); restart at or before line {first_m19}, or after "
                               "the M03 or M04 that starts the spindle again")
         self.check_live_tool()
         if s.compensation in (41, 42):
