@@ -278,6 +278,9 @@ struct Folded {
     /// The lowest and highest line of those not written.
     low: usize,
     high: usize,
+    /// The rule is about a code ([`Rule::about_a_code`]): its counts are
+    /// `subjects`' (by the code each finding names), these stay 0.
+    by_code: bool,
 }
 
 /// The report of one file's findings: the file's name and every rule's ID, severity and clause
@@ -301,10 +304,10 @@ pub struct Writer {
     /// finding is written.
     fold: Vec<Folded>,
     /// The counts of a rule about a code ([`Rule::about_a_code`]), by rule and the code its
-    /// finding names ([`crate::rules::subject`]): (rule, code) in the order met, and where
-    /// each is in it.
+    /// finding names ([`crate::rules::subject`]), in the order met: a file names a few codes,
+    /// so they are looked up one by one, with no allocation a finding (a hash map's key
+    /// cost about 1,000 instructions a finding).
     subjects: Vec<(Rule, String, Folded)>,
-    subject_at: std::collections::HashMap<(usize, String), usize>,
 }
 
 impl Writer {
@@ -364,7 +367,6 @@ impl Writer {
             between,
             fold: Vec::new(),
             subjects: Vec::new(),
-            subject_at: std::collections::HashMap::new(),
         }
     }
 
@@ -373,7 +375,12 @@ impl Writer {
     /// a JSON or JSON Lines writer is returned as it is, writing every finding.
     pub fn folded(mut self) -> Writer {
         if self.format == Format::Text {
-            self.fold = vec![Folded::default(); Rule::ALL.len()];
+            self.fold = (Rule::ALL.iter())
+                .map(|rule| Folded {
+                    by_code: rule.about_a_code(),
+                    ..Folded::default()
+                })
+                .collect();
         }
         self
     }
@@ -392,23 +399,16 @@ impl Writer {
     /// rule and the code it names, for a rule about a code ([`Rule::about_a_code`]: each code
     /// is shown) --, which is counted for [`Writer::end`] instead. Errors are always written:
     /// each is a reason the program is refused.
+    #[inline]
     pub fn shown(&mut self, rule: Rule, line: usize, column: usize, message: &str) -> bool {
-        if self.fold.is_empty() || rule.severity() == Severity::Error {
+        let Some(&Folded { by_code, .. }) = self.fold.get(rule.index()) else {
+            return true;
+        };
+        if rule.severity() == Severity::Error {
             return true;
         }
-        let folded = if rule.about_a_code() {
-            let subject = crate::rules::subject(message);
-            let key = (rule.index(), subject.to_string());
-            let at = match self.subject_at.get(&key) {
-                Some(&at) => at,
-                None => {
-                    self.subjects
-                        .push((rule, subject.to_string(), Folded::default()));
-                    self.subject_at.insert(key, self.subjects.len() - 1);
-                    self.subjects.len() - 1
-                }
-            };
-            &mut self.subjects[at].2
+        let folded = if by_code {
+            self.code_folded(rule, message)
         } else {
             &mut self.fold[rule.index()]
         };
@@ -423,6 +423,18 @@ impl Writer {
             folded.high = folded.high.max(line);
         }
         false
+    }
+
+    /// The counts of `rule`'s findings that name what `message` names (a rule about a code).
+    #[inline(never)]
+    fn code_folded(&mut self, rule: Rule, message: &str) -> &mut Folded {
+        let subject = crate::rules::subject(message);
+        let known = (self.subjects.iter()).position(|(r, s, _)| *r == rule && s == subject);
+        let at = known.unwrap_or_else(|| {
+            (self.subjects).push((rule, subject.to_string(), Folded::default()));
+            self.subjects.len() - 1
+        });
+        &mut self.subjects[at].2
     }
 
     /// The end of the file's findings: for a folded writer, a line for each rule with findings
@@ -480,9 +492,13 @@ impl Writer {
                 b" (--all shows each)\n"
             });
         }
-        self.fold.fill(Folded::default());
+        for folded in &mut self.fold {
+            *folded = Folded {
+                by_code: folded.by_code,
+                ..Folded::default()
+            };
+        }
         self.subjects.clear();
-        self.subject_at.clear();
     }
 
     /// Append `finding` to `out`: the bytes [`write`] appends (a test holds the two equal),

@@ -328,9 +328,13 @@ impl Rule {
 /// What a finding of a rule [`Rule::about_a_code`] names: its message up to the first `:` or
 /// ` is ` (`M160`, `G12.1`, `address U`), the whole message where it has neither.
 pub fn subject(message: &str) -> &str {
-    let colon = message.find(':').unwrap_or(message.len());
-    let is = message.find(" is ").unwrap_or(message.len());
-    &message[..colon.min(is)]
+    // (one walk of the head's bytes: the two searches each walked to their end where the
+    // message has no `:` or no ` is `)
+    let bytes = message.as_bytes();
+    let end = (0..bytes.len())
+        .find(|&i| bytes[i] == b':' || bytes[i..].starts_with(b" is "))
+        .unwrap_or(bytes.len());
+    &message[..end]
 }
 
 /// Which rules a run reports: `--select` and `--ignore` (IDs or prefixes such as `TG4`),
