@@ -740,10 +740,10 @@ mod tests {
         let text = String::from_utf8(out).unwrap();
         let lines: Vec<&str> = text.lines().collect();
         let of = |what: &str| lines.iter().filter(|l| l.contains(what)).count();
-        assert_eq!(of("TG307 M160 is"), SHOWN);
-        assert_eq!(of("TG307 M161 is"), SHOWN);
-        assert_eq!((of("TG307 M162 is"), of("TG307 S1.5: a")), (1, 1));
-        assert_eq!(of("TG134 address U is"), SHOWN);
+        assert_eq!(of("warning TG307 M160 is"), SHOWN);
+        assert_eq!(of("warning TG307 M161 is"), SHOWN);
+        assert_eq!((of("warning TG307 M162 is"), of("warning TG307 S1.5: a")), (1, 1));
+        assert_eq!(of("warning TG134 address U is"), SHOWN);
         assert_eq!(of("error TG306 G12:"), 7);
         assert_eq!(
             lines[lines.len() - 3..],
