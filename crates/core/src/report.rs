@@ -742,7 +742,10 @@ mod tests {
         let of = |what: &str| lines.iter().filter(|l| l.contains(what)).count();
         assert_eq!(of("warning TG307 M160 is"), SHOWN);
         assert_eq!(of("warning TG307 M161 is"), SHOWN);
-        assert_eq!((of("warning TG307 M162 is"), of("warning TG307 S1.5: a")), (1, 1));
+        assert_eq!(
+            (of("warning TG307 M162 is"), of("warning TG307 S1.5: a")),
+            (1, 1)
+        );
         assert_eq!(of("warning TG134 address U is"), SHOWN);
         assert_eq!(of("error TG306 G12:"), 7);
         assert_eq!(
