@@ -225,6 +225,7 @@ class _Facts:
     mode_hints: dict[str, str]
     live_modes: bool  # the profile names its live tool and C axis codes (haas-lathe)
     oriented: tuple[int, int] | None  # the spindle orientation in force (M19): (line, code)
+    oriented_since: int | None  # the first M19 of that orientation (a second one ends none)
     # a lathe's last C or Y move since the main spindle last started: (line, axis)
     side_move: tuple[int, str] | None
     # a lathe's last M code the profile's list lacks since the tool change: (line, code)
@@ -263,7 +264,8 @@ class _Facts:
             diameter_mode=facts["diameter_mode"], diameter_switch=facts["diameter_switch"],
             diameter_rewritten=facts["diameter_rewritten"],
             mode_hints=dict(facts["mode_hints"]), live_modes=facts["live_modes"],
-            oriented=facts["oriented"], side_move=facts["side_move"],
+            oriented=facts["oriented"], oriented_since=facts["oriented_since"],
+            side_move=facts["side_move"],
             builder_m=facts["builder_m"], spin_line=facts["spin_line"],
             coolant_line=facts["coolant_line"],
             unset=set(facts["unset"]),
@@ -504,13 +506,18 @@ class _Planner:
         if walk.oriented is not None:
             # M19 "adjusts the spindle to a fixed position" (Haas mill manual, "M19 Orient
             # Spindle"): stopped, at an angle, until M03/M04/M05 (review 35, finding 1)
+            # (review 38, finding 5) a second M19 does not end the first's orientation: the
+            # hint is the first's line, where a restart is not refused for either
             at, code = walk.oriented
+            first_m19 = walk.oriented_since or at
+            earlier = (f" (the spindle oriented since line {first_m19})" if first_m19 != at
+                       else "")
             raise self.refuse(f"M{code:02d} on line {at} oriented the spindle (stopped at a fixed "
-                              "angle) and no M03, M04 or M05 has come since: the preamble "
-                              "would start it with the spindle mode of before, or leave it at "
-                              "another angle (a bar shifted through a bore, a static tool "
-                              f"fed); restart at or before line {at}, or after the M03 or M04 "
-                              "that starts the spindle again")
+                              f"angle){earlier} and no M03, M04 or M05 has come since: the "
+                              "preamble would start it with the spindle mode of before, or "
+                              "leave it at another angle (a bar shifted through a bore, a "
+                              f"static tool fed); restart at or before line {first_m19}, or after "
+                              "the M03 or M04 that starts the spindle again")
         self.check_live_tool()
         if s.compensation in (41, 42):
             raise self.refuse(f"inside cutter compensation G{s.compensation} (from line "

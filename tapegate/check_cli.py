@@ -35,8 +35,9 @@ from tapegate.options import UsageProblem, profile_option
               help="Bounding box, path lengths, cycle time, tools.")
 @click.option("--all", "show_all", is_flag=True,
               help="Text: print every finding. Without it, past the first 5 warnings or "
-              "notes of one rule in a file the rest are one line, at the first left out, "
-              "with their number and lines; errors are always all printed.")
+              "notes of one rule in a file (of one code, for a rule about a code) the rest "
+              "are one line, at the first left out, with their number and lines; errors are "
+              "always all printed.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=None,
               help="Files checked in parallel (default: the CPU count).")
 def check(files: tuple[str, ...], profile: str | None, units: str | None, fmt: str,

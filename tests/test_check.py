@@ -165,6 +165,41 @@ def test_units_after_m30_are_kept_where_the_control_keeps_them():
         assert state_at(parse_text(text, profile.dialect), profile, 6).units == "metric", name
 
 
+def test_a_subprogram_after_m30_is_read_in_the_units_of_its_calls(tmp_path: Path) -> None:
+    """Review 38, finding 10: O1000 after M30, called by M98 under G21, runs in millimetres
+    (a Haas's M98 keeps the caller's modes): X900. and F3000. fit the VF-2 in mm, where the
+    reset state's G20 made them 900 inches and 3000 in/min (TG601, TG602). Called under G20
+    they are inches, as before; its own G21 counts; an over-travel in the caller's mm is still
+    found; calls in different units leave the units unknown until the subprogram writes them;
+    a program no call names is read from the reset state as the file's first is, and says
+    which units it assumed."""
+    def limits(program: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / "p.nc"
+        path.write_text(program)
+        out = run("check", str(path), "-p", "haas-mill", "--select", "TG601,TG602",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())]
+
+    def sub(caller: str, body: str) -> str:
+        return f"%\nO1\n{caller}\nG0 G90 G54 X0 Y0\nM98 P1000\nM30\nO1000\n{body}\nM99\n%\n"
+
+    assert limits(sub("G21", "G1 X900. F3000.")) == []
+    assert [f[:2] for f in limits(sub("G20", "G1 X900. F3000."))] == [(8, "TG601"), (8, "TG602")]
+    assert limits(sub("G20", "G21\nG1 X900. F3000.")) == []
+    over = limits(sub("G21", "G1 X2000. F30000."))
+    assert [f[:2] for f in over] == [(8, "TG601"), (8, "TG602")]
+    assert "30000 mm/min" in over[1][2]
+    # called under G21 and under G20: not judged until its own G21
+    both = ("%\nO1\nG21\nG0 G90 G54 X0 Y0\nM98 P1000\nG20\nM98 P1000\nM30\nO1000\n"
+            "G1 X900. F3000.\nG21\nG1 X2000. F30000.\nM99\n%\n")
+    assert [f[:2] for f in limits(both)] == [(12, "TG601"), (12, "TG602")]
+    # no call names it: a program of its own, from the reset state, its assumed units said
+    alone = "%\nO1\nG21\nG0 G90 G54 X0 Y0\nM30\nO1000\nG1 X900. F3000.\nM99\n%\n"
+    found = limits(alone)
+    assert [f[:2] for f in found] == [(7, "TG601"), (7, "TG602")]
+    assert all("no units code by here" in f[2] for f in found)
+
+
 def test_a_units_change_keeps_where_the_machine_is():
     """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
     at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the

@@ -1,6 +1,7 @@
 """The text report of ``tapegate check`` folds a rule repeated in a file: of each rule's warnings
 and notes it prints the first five, then one line for the rest at the first one left out, with
-their number and lines (crates/core/src/report.rs, ``Writer::folded``). Errors are all printed;
+their number and lines (crates/core/src/report.rs, ``Writer::folded``); a rule about a code
+(TG307's M160, M161) per rule and code. Errors are all printed;
 ``--all`` prints everything; JSON, JSON Lines and SARIF are never folded; the summary's counts
 and the exit code are of every finding."""
 
@@ -151,10 +152,40 @@ def test_the_entry_point_without_click_folds_too(folder: Path) -> None:
         assert done.stderr == "1 file checked: 0 errors, 12 warnings, 0 notes\n"
 
 
+def test_a_rule_about_a_code_is_folded_per_code(tmp_path: Path) -> None:
+    """Stop 58: TG307 for M160 and M161 was folded into one line past the first five of the
+    file, and M161 was never named. A rule about a code folds per the code each finding names:
+    five of each are printed, and each code has its own fold line naming it; a third code met
+    once is printed; the summary counts every finding; JSON is unfolded; a tape image, whose
+    findings Python renders, folds the same."""
+    text = "%\nO1000\nG21 G90 G54\n" + "M160\nM161\n" * 7 + "M162\nM30\n%\n"
+    path = tmp_path / "m.nc"
+    path.write_text(text)
+    name = str(path)
+    result = run(name, "-p", "haas-mill", "--select", "TG307")
+    lines = result.stdout.splitlines()
+    for code, rows in (("M160", range(4, 13, 2)), ("M161", range(5, 14, 2)), ("M162", [18])):
+        assert [line.split(":")[1] for line in lines
+                if f"warning TG307 {code} is not" in line] == [str(n) for n in rows]
+    assert lines[-2:] == [
+        f"{name}:14:1: warning TG307 2 more like this (M160) on lines 14-16 (--all shows each)",
+        f"{name}:15:1: warning TG307 2 more like this (M161) on lines 15-17 (--all shows each)"]
+    assert len(lines) == 13
+    assert result.stderr == "1 file checked: 0 errors, 15 warnings, 0 notes\n"
+    found = json.loads(run(name, "-p", "haas-mill", "--select", "TG307",
+                           "--format", "json").stdout)["findings"]
+    assert len(found) == 15
+    tape = tmp_path / "m.tap"
+    tape.write_bytes(encode(text, "iso"))
+    taped = run(str(tape), "-p", "haas-mill", "--select", "TG307").stdout
+    assert taped == result.stdout.replace(name, str(tape))
+
+
 def test_the_help_says_what_all_does() -> None:
     text = " ".join(CliRunner().invoke(main, ["check", "--help"]).stdout.split())
     assert ("--all Text: print every finding. Without it, past the first 5 warnings or notes "
-            "of one rule in a file the rest are one line") in text
+            "of one rule in a file (of one code, for a rule about a code) the rest are one line") \
+        in text
     assert "errors are always all printed" in text
 
 

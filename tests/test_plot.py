@@ -429,11 +429,14 @@ def test_blocks_that_set_or_shift_draw_nothing_and_the_picture_says_what_it_does
 
 
 def test_the_units_are_those_the_moves_run_in_program_by_program() -> None:
-    """A main program in inch, then a subprogram with no units code, read in the reset units
-    (metric, as convert reads it): the picture is in both, not "inch"."""
+    """A main program in inch, then a program with no units code that no call names, read in
+    the reset units (metric, as convert reads it): the picture is in both, not "inch". The
+    same program called by the main program's M98 runs in its caller's inches (review 38,
+    finding 10: the check reads a subprogram after M30 in the units of its calls)."""
     text = ("%\nO1000\nG20 G90\nG00 X1. Y1. Z1.\nM98 P2000\nM30\n%\n"
             "%\nO2000\nG00 X10. Y10. Z1.\nG01 X20. F100.\nM99\n%\n")
-    assert backplot(text, load_profile("fanuc-mill")).units == "mixed"
+    assert backplot(text.replace("P2000", "P3000"), load_profile("fanuc-mill")).units == "mixed"
+    assert backplot(text, load_profile("fanuc-mill")).units == "inch"
     assert backplot("G20 G90\nG00 X1. Y1. Z1.\nG21\nM30\n",
                     load_profile("fanuc-mill")).units == "inch"  # no move after the G21
 

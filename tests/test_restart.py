@@ -2526,6 +2526,43 @@ def test_a_refusal_inside_a_live_tool_section_says_where_to_restart():
         assert plan(text, named, haas).preamble, (at, named, said)
 
 
+def test_a_second_m19_sends_a_restart_hint_to_the_first():
+    """Review 38, finding 5: a second live tool section with an M19 before each, the spindle
+    not started between them. The orientation of the first M19 (line 12) is in force up to
+    the end, a second M19 (line 22) ends none: a hint that named line 13 (the first section's
+    M154) or 22 (the second M19) sent the user to a restart refused for line 12's M19. Every
+    line a refusal names is planned itself."""
+    haas = load_profile("haas-lathe")
+    text = ("%\nO1010\nG20 G18 G40 G80 G99\nG54\nT0101\nG97 S500 M03\nG00 X2. Z0.1\n"
+            "G01 Z-0.5 F0.01\nG00 X2.2\nG00 Z0.1\nM05\nM19\nM154\nT0505\nG98\nP2000 M133\n"
+            "G00 X2.4 C0. Z-0.4\nG01 X1.2 F5.\nG00 X2.4\nM135\nM155\nM19\nT0606\nM154\nG98\n"
+            "P1500 M133\nG00 X2.4 C45. Z-0.6\nG01 X1.2 F5.\nM135\nM155\nM30\n%\n")
+    said = refusal(text, 25, haas)
+    assert "restart at or before line 12, or after the M135 and M155" in said, said
+    said = refusal(text, 23, haas)
+    assert said.startswith("cannot restart here: M19 on line 22 oriented the spindle (stopped "
+                           "at a fixed angle) (the spindle oriented since line 12) and no "
+                           "M03, M04 or M05"), said
+    assert "restart at or before line 12, or after the M03" in said, said
+    named = set()
+    for at in range(2, len(text.split("\n"))):
+        try:
+            plan(text, at, haas)
+        except RestartRefused as refused:
+            found = re.search(r"restart at or before line (\d+)", refused.message)
+            if found:
+                named.add(int(found.group(1)))
+    assert named == {12}
+    for line in named:
+        assert plan(text, line, haas).preamble
+    # an M05 between the two M19: each orientation its own, the second's hint its own line
+    # (the tool taken up to Z0.1 first, out of the bore: line 19's radial move is no way in)
+    apart = text.replace("M155\nM19\nT0606", "M155\nG00 Z0.1\nS300 M03\nM05\nM19\nT0606")
+    said = refusal(apart, 28, haas)
+    assert "restart at or before line 25," in said, said
+    assert plan(apart, 25, haas).preamble
+
+
 # -- two codes of one modal group before the restart point (TG304) ------------------------------
 
 CONFLICT = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G00 Z150.\n"

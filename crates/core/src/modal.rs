@@ -631,8 +631,9 @@ impl ModalMachine {
             self.g(g);
         }
         // (the reset's own units code is the machine's setting, not the program's; one the
-        // file wrote before stays said: a subprogram after M30 runs under its caller's units,
-        // review 37, finding 2)
+        // file wrote before stays said: what follows an M30 in the program -- a Haas's M97
+        // subprogram -- runs under its caller's units. The checker sets it again for the next
+        // program of the file, by its calls: Checker::called_units)
         self.state.units_given = units_given;
     }
 

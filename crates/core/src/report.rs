@@ -15,7 +15,10 @@
 //! a file's repeated findings: of each rule's warnings or notes it writes the first [`SHOWN`],
 //! and at the file's end ([`Writer::end`]) one line for the rest, at the place of the first it
 //! left out: `file:line:column: severity rule N more like this on lines A-B (--all shows
-//! each)`. Errors are all written. A rule's fold is three counts, so the report's memory stays
+//! each)`. A rule about a code ([`Rule::about_a_code`]: `M160 is not in the profile's M code
+//! list`) is folded per rule and per the code each finding names, its fold line naming it
+//! (`N more like this (M160) on lines ...`), so that every code is shown. Errors are all
+//! written. A rule's fold is three counts (and a code's name), so the report's memory stays
 //! flat; JSON and JSON Lines, for programs, are never folded.
 //!
 //! Strings are written as `json.dumps` writes them by default (`ensure_ascii`): `"` and `\`
@@ -275,6 +278,9 @@ struct Folded {
     /// The lowest and highest line of those not written.
     low: usize,
     high: usize,
+    /// The rule is about a code ([`Rule::about_a_code`]): its counts are
+    /// `subjects`' (by the code each finding names), these stay 0.
+    by_code: bool,
 }
 
 /// The report of one file's findings: the file's name and every rule's ID, severity and clause
@@ -297,6 +303,11 @@ pub struct Writer {
     /// A folded report's counts, by [`Rule::index`] ([`Writer::folded`]); empty when every
     /// finding is written.
     fold: Vec<Folded>,
+    /// The counts of a rule about a code ([`Rule::about_a_code`]), by rule and the code its
+    /// finding names ([`crate::rules::subject`]), in the order met: a file names a few codes,
+    /// so they are looked up one by one, with no allocation a finding (a hash map's key
+    /// cost about 1,000 instructions a finding).
+    subjects: Vec<(Rule, String, Folded)>,
 }
 
 impl Writer {
@@ -355,6 +366,7 @@ impl Writer {
             before_line,
             between,
             fold: Vec::new(),
+            subjects: Vec::new(),
         }
     }
 
@@ -363,7 +375,12 @@ impl Writer {
     /// a JSON or JSON Lines writer is returned as it is, writing every finding.
     pub fn folded(mut self) -> Writer {
         if self.format == Format::Text {
-            self.fold = vec![Folded::default(); Rule::ALL.len()];
+            self.fold = (Rule::ALL.iter())
+                .map(|rule| Folded {
+                    by_code: rule.about_a_code(),
+                    ..Folded::default()
+                })
+                .collect();
         }
         self
     }
@@ -377,17 +394,24 @@ impl Writer {
         &self.file
     }
 
-    /// Whether a finding of `rule` at `line` and `column` is written: always, but by a folded
-    /// writer a warning or note past the first [`SHOWN`] of its rule, which is counted for
-    /// [`Writer::end`] instead. Errors are always written: each is a reason the program is
-    /// refused.
-    pub fn shown(&mut self, rule: Rule, line: usize, column: usize) -> bool {
-        let Some(folded) = self.fold.get_mut(rule.index()) else {
+    /// Whether a finding of `rule` at `line` and `column` with `message` is written: always,
+    /// but by a folded writer a warning or note past the first [`SHOWN`] of its rule -- of its
+    /// rule and the code it names, for a rule about a code ([`Rule::about_a_code`]: each code
+    /// is shown) --, which is counted for [`Writer::end`] instead. Errors are always written:
+    /// each is a reason the program is refused.
+    #[inline]
+    pub fn shown(&mut self, rule: Rule, line: usize, column: usize, message: &str) -> bool {
+        let Some(&Folded { by_code, .. }) = self.fold.get(rule.index()) else {
             return true;
         };
         if rule.severity() == Severity::Error {
             return true;
         }
+        let folded = if by_code {
+            self.code_folded(rule, message)
+        } else {
+            &mut self.fold[rule.index()]
+        };
         folded.seen += 1;
         if folded.seen <= SHOWN {
             return true;
@@ -401,19 +425,43 @@ impl Writer {
         false
     }
 
+    /// The counts of `rule`'s findings that name what `message` names (a rule about a code).
+    #[inline(never)]
+    fn code_folded(&mut self, rule: Rule, message: &str) -> &mut Folded {
+        let subject = crate::rules::subject(message);
+        let known = (self.subjects.iter()).position(|(r, s, _)| *r == rule && s == subject);
+        let at = known.unwrap_or_else(|| {
+            (self.subjects).push((rule, subject.to_string(), Folded::default()));
+            self.subjects.len() - 1
+        });
+        &mut self.subjects[at].2
+    }
+
     /// The end of the file's findings: for a folded writer, a line for each rule with findings
     /// not written, in the order of their places (the first one's line and column), appended
     /// to `out`, and the counts begun again (a finding after this is folded anew).
     pub fn end(&mut self, out: &mut Vec<u8>) {
-        let mut folds: Vec<(usize, usize, usize)> = (self.fold.iter().enumerate())
+        // (rule, then the code's place among the rule's about a code: usize::MAX for none)
+        let mut folds: Vec<(usize, usize, usize, usize)> = (self.fold.iter().enumerate())
             .filter(|(_, f)| f.seen > SHOWN)
-            .map(|(i, f)| (f.line, f.column, i))
+            .map(|(i, f)| (f.line, f.column, i, usize::MAX))
+            .chain(
+                (self.subjects.iter().enumerate())
+                    .filter(|(_, (_, _, f))| f.seen > SHOWN)
+                    .map(|(k, (rule, _, f))| (f.line, f.column, rule.index(), k)),
+            )
             .collect();
         folds.sort_unstable();
-        for (line, column, i) in folds {
-            let Folded {
-                seen, low, high, ..
-            } = self.fold[i];
+        for (line, column, i, k) in folds {
+            let (
+                Folded {
+                    seen, low, high, ..
+                },
+                subject,
+            ) = match self.subjects.get(k) {
+                Some((_, subject, folded)) => (*folded, Some(subject.as_str())),
+                None => (self.fold[i], None),
+            };
             out.extend_from_slice(&self.before_line);
             number(out, line);
             out.extend_from_slice(&self.between);
@@ -421,7 +469,14 @@ impl Writer {
             out.extend_from_slice(&self.rules[i][0]);
             let more = seen - SHOWN;
             number(out, more);
-            out.extend_from_slice(b" more like this on line");
+            out.extend_from_slice(b" more like this");
+            if let Some(subject) = subject {
+                // (the code each of them names: the text report's own bytes, as the message's)
+                out.extend_from_slice(b" (");
+                out.extend_from_slice(subject.as_bytes());
+                out.push(b')');
+            }
+            out.extend_from_slice(b" on line");
             if high > low {
                 out.extend_from_slice(b"s ");
                 number(out, low);
@@ -437,13 +492,21 @@ impl Writer {
                 b" (--all shows each)\n"
             });
         }
-        self.fold.fill(Folded::default());
+        for folded in &mut self.fold {
+            *folded = Folded {
+                by_code: folded.by_code,
+                ..Folded::default()
+            };
+        }
+        self.subjects.clear();
     }
 
     /// Append `finding` to `out`: the bytes [`write`] appends (a test holds the two equal),
     /// unless a folded writer leaves it out ([`Writer::shown`]).
     pub fn finding(&mut self, out: &mut Vec<u8>, finding: &Finding) {
-        if !self.fold.is_empty() && !self.shown(finding.rule, finding.line, finding.column) {
+        if !self.fold.is_empty()
+            && !self.shown(finding.rule, finding.line, finding.column, &finding.message)
+        {
             return;
         }
         let [head, tail] = &self.rules[finding.rule.index()];
@@ -621,6 +684,84 @@ mod tests {
                 write(Writer::new(format, &file))
             );
         }
+    }
+
+    /// A rule about a code is folded per the code its findings name: each code's first
+    /// `SHOWN` are written and each has its fold line, naming it; a rule about none keeps one
+    /// fold; errors about a code are all written.
+    #[test]
+    fn a_rule_about_a_code_is_folded_per_code() {
+        let file: Vec<u16> = "p.nc".encode_utf16().collect();
+        let finding = |rule, message: &str, line| Finding {
+            rule,
+            message: message.to_string(),
+            line,
+            column: 1,
+        };
+        let mut found = Vec::new();
+        for line in 1..=7 {
+            found.push(finding(
+                Rule::CodeNotInProfile,
+                "M160 is not in the list",
+                2 * line,
+            ));
+            found.push(finding(
+                Rule::CodeNotInProfile,
+                "M161 is not in the list",
+                2 * line + 1,
+            ));
+            found.push(finding(
+                Rule::AddressNotClassified,
+                "address U is not in",
+                100 + line,
+            ));
+            found.push(finding(
+                Rule::CodeAlarms,
+                "G12: the control has none",
+                200 + line,
+            ));
+        }
+        found.push(finding(
+            Rule::CodeNotInProfile,
+            "M162 is not in the list",
+            300,
+        ));
+        found.push(finding(
+            Rule::CodeNotInProfile,
+            "S1.5: a decimal point in S",
+            301,
+        ));
+        let mut writer = Writer::new(Format::Text, &file).folded();
+        let mut out = Vec::new();
+        for f in &found {
+            writer.finding(&mut out, f);
+        }
+        writer.end(&mut out);
+        let text = String::from_utf8(out).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        let of = |what: &str| lines.iter().filter(|l| l.contains(what)).count();
+        assert_eq!(of("warning TG307 M160 is"), SHOWN);
+        assert_eq!(of("warning TG307 M161 is"), SHOWN);
+        assert_eq!(
+            (of("warning TG307 M162 is"), of("warning TG307 S1.5: a")),
+            (1, 1)
+        );
+        assert_eq!(of("warning TG134 address U is"), SHOWN);
+        assert_eq!(of("error TG306 G12:"), 7);
+        assert_eq!(
+            lines[lines.len() - 3..],
+            [
+                "p.nc:12:1: warning TG307 2 more like this (M160) on lines 12-14 (--all shows each)",
+                "p.nc:13:1: warning TG307 2 more like this (M161) on lines 13-15 (--all shows each)",
+                "p.nc:106:1: warning TG134 2 more like this (address U) on lines 106-107 (--all \
+                 shows each)",
+            ]
+        );
+        // begun again after the end
+        let mut out = Vec::new();
+        writer.end(&mut out);
+        assert!(out.is_empty());
+        assert!(writer.shown(Rule::CodeNotInProfile, 1, 1, "M160 is not in the list"));
     }
 
     #[test]

@@ -285,6 +285,11 @@ pub struct Walk {
     /// code. The spindle stands oriented, not turning, until an M03, M04 or M05 (review 35,
     /// finding 1: the preamble started it with the modal state's M03 of before the M19).
     pub oriented: Option<(usize, i64)>,
+    /// Each orientation of the spindle so far: the line of its first M19 and that of the
+    /// M03, M04, M05 or tool change that ended it (None: in force). A second M19 does not end
+    /// one, so a restart after it is refused for the first (review 38, finding 5): a hint
+    /// goes back to its first M19 ([`Walk::before_orientation`]).
+    pub orientations: Vec<(usize, Option<usize>)>,
     /// A lathe's last move of C or Y (line, axis) since the main spindle last started (M03,
     /// M04): C positioned, a live tool's milling or drilling at an angle (review 35, finding 2).
     pub side_move: Option<(usize, u8)>,
@@ -570,6 +575,7 @@ impl Walk {
             mode_hints: Vec::new(),
             orient_codes: Vec::new(),
             oriented: None,
+            orientations: Vec::new(),
             side_move: None,
             mode_since_spin: None,
             builder_m: None,
@@ -600,6 +606,42 @@ impl Walk {
             diameter_kept: false,
             diameter_rewritten: None,
         }
+    }
+
+    /// The line of the first M19 of the orientation in force (a second M19 does not end
+    /// one), or None.
+    pub fn oriented_since(&self) -> Option<usize> {
+        match self.orientations.last() {
+            Some(&(at, None)) => Some(at),
+            _ => None,
+        }
+    }
+
+    /// An M03, M04, M05 or a tool change on `line` ends the orientation in force.
+    fn orientation_ended(&mut self, line: usize) {
+        self.oriented = None;
+        if let Some(last) = self
+            .orientations
+            .last_mut()
+            .filter(|(_, end)| end.is_none())
+        {
+            last.1 = Some(line);
+        }
+    }
+
+    /// `line`, or where an orientation in force at it began: a restart at `line` walks the
+    /// lines before it, so one whose first M19 is before it and that no line before it ended
+    /// refuses it; the first M19's own line is no such restart (review 38, finding 5).
+    pub fn before_orientation(&self, mut line: usize) -> usize {
+        while let Some(&(at, _)) = self
+            .orientations
+            .iter()
+            .rev()
+            .find(|&&(at, end)| at < line && end.is_none_or(|end| end >= line))
+        {
+            line = at;
+        }
+        line
     }
 
     /// A lathe whose G50 S is the spindle clamp, G50 X Z a coordinate setting, and U W the
@@ -1219,13 +1261,13 @@ impl Walk {
                         .filter(|(k, _, _)| self.m_modes.iter().any(|(_, m, _, _)| m == k))
                         .map(|&(_, l, _)| l)
                         .fold(line, usize::min);
-                    if let Some((at, _)) = self.oriented {
-                        first = first.min(at);
-                    }
                     if self.side_move.is_some() {
                         let since = self.mode_since_spin.unwrap_or(line);
                         first = first.min(self.tool_change.map_or(since, |t| t.min(since)));
                     }
+                    // (review 38, finding 5) and not under an orientation in force there:
+                    // at or before its first M19, whichever line the min above came to
+                    let first = self.before_orientation(first);
                     let before = format!("line {first}");
                     let ends: Vec<String> = self
                         .m_modes
@@ -1261,8 +1303,11 @@ impl Walk {
         for &m in &ms {
             if self.orient_codes.contains(&m) {
                 self.oriented = Some((line, m));
+                if self.oriented_since().is_none() {
+                    self.orientations.push((line, None));
+                }
             } else if matches!(m, 3..=5) {
-                self.oriented = None;
+                self.orientation_ended(line);
             }
             if matches!(m, 3 | 4) {
                 self.side_move = None;
@@ -1917,7 +1962,7 @@ impl Walk {
             // the tool change ends an orientation before it: the spindle is stopped after it
             // either way (review 36, finding 2: an M19 before the M06 refused every restart
             // up to the new tool's M03)
-            self.oriented = None;
+            self.orientation_ended(line);
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
@@ -2906,6 +2951,34 @@ mod tests {
         assert_eq!(walk.oriented, Some((2, 19)));
         step_text(&mut walk, 4, b"M05", &state());
         assert_eq!(walk.oriented, None);
+    }
+
+    #[test]
+    fn a_second_m19_ends_no_orientation_and_a_hint_goes_back_to_the_first() {
+        // review 38, finding 5
+        let mut walk = Walk::new(Control::Haas, true, true);
+        walk.orient_codes = vec![19];
+        step_text(&mut walk, 1, b"M05", &state());
+        step_text(&mut walk, 2, b"M19", &state());
+        step_text(&mut walk, 3, b"G00 X1.", &state());
+        step_text(&mut walk, 4, b"M19", &state());
+        assert_eq!(walk.oriented, Some((4, 19)));
+        assert_eq!(walk.oriented_since(), Some(2));
+        // in force from line 3 on (a restart at line 2 walks nothing of it)
+        assert_eq!(walk.before_orientation(2), 2);
+        assert_eq!(walk.before_orientation(3), 2);
+        assert_eq!(walk.before_orientation(5), 2);
+        step_text(&mut walk, 5, b"S300 M03", &state());
+        assert_eq!((walk.oriented, walk.oriented_since()), (None, None));
+        // ended by line 5's M03: a restart at line 5 still walks it, at 6 not
+        assert_eq!(walk.before_orientation(5), 2);
+        assert_eq!(walk.before_orientation(6), 6);
+        step_text(&mut walk, 6, b"M05", &state());
+        step_text(&mut walk, 7, b"M19", &state());
+        assert_eq!(walk.orientations, [(2, Some(5)), (7, None)]);
+        assert_eq!(walk.before_orientation(9), 7);
+        assert_eq!(walk.before_orientation(4), 2);
+        assert_eq!(walk.before_orientation(1), 1);
     }
 
     #[test]

@@ -315,6 +315,28 @@ impl Rule {
     pub fn index(self) -> usize {
         self as usize
     }
+
+    /// Whether each finding of the rule is about one code or address, which its message names
+    /// at its head ([`subject`]): the G and M code rules (`M160 is not in the profile's M code
+    /// list`), an indexed G word and an address outside the classification (`address U is
+    /// not ...`). A folded text report folds these per rule and per that name, so that each
+    /// code is shown (stop 58: a second unknown M code was folded into the first's line).
+    pub const fn about_a_code(self) -> bool {
+        matches!(self.family(), Family::Codes)
+            || matches!(self, Rule::AddressNotClassified | Rule::IndexedG)
+    }
+}
+
+/// What a finding of a rule [`Rule::about_a_code`] names: its message up to the first `:` or
+/// ` is ` (`M160`, `G12.1`, `address U`), the whole message where it has neither.
+pub fn subject(message: &str) -> &str {
+    // (one walk of the head's bytes: the two searches each walked to their end where the
+    // message has no `:` or no ` is `)
+    let bytes = message.as_bytes();
+    let end = (0..bytes.len())
+        .find(|&i| bytes[i] == b':' || bytes[i..].starts_with(b" is "))
+        .unwrap_or(bytes.len());
+    &message[..end]
 }
 
 /// Which rules a run reports: `--select` and `--ignore` (IDs or prefixes such as `TG4`),

@@ -334,12 +334,17 @@ impl Checker {
         let mut out = Vec::new();
         let counts = &mut self.counts;
         let format = writer.format();
-        crate::report::append_tuples(format, &mut out, findings, |id, severity, line, column| {
-            if let Some(i) = severity_index(severity) {
-                counts[i] += 1;
-            }
-            Rule::from_id(id).is_none_or(|rule| writer.shown(rule, line, column))
-        })?;
+        crate::report::append_tuples(
+            format,
+            &mut out,
+            findings,
+            |id, severity, line, column, message| {
+                if let Some(i) = severity_index(severity) {
+                    counts[i] += 1;
+                }
+                Rule::from_id(id).is_none_or(|rule| writer.shown(rule, line, column, message))
+            },
+        )?;
         crate::report::string(py, format, &out)
     }
 

@@ -61,13 +61,13 @@ pub(crate) fn string<'py>(
 }
 
 /// Append `findings`, `postproc.findings.Finding` tuples, to `out` in `format`; each one's
-/// rule ID, severity, line and column are handed to `shown`, and it is written if it answers
-/// true.
+/// rule ID, severity, line, column and message are handed to `shown`, and it is written if it
+/// answers true.
 pub(crate) fn append_tuples(
     format: Format,
     out: &mut Vec<u8>,
     findings: &Bound<'_, PyAny>,
-    mut shown: impl FnMut(&str, &str, usize, usize) -> bool,
+    mut shown: impl FnMut(&str, &str, usize, usize, &str) -> bool,
 ) -> PyResult<()> {
     let mut fields: [Vec<u8>; 5] = Default::default();
     for finding in findings.try_iter()? {
@@ -86,7 +86,9 @@ pub(crate) fn append_tuples(
         );
         let (id, severity) = (finding.get_item(0)?, finding.get_item(1)?);
         let (id, severity) = (id.downcast::<PyString>()?, severity.downcast::<PyString>()?);
-        if !shown(id.to_str()?, severity.to_str()?, line, column) {
+        let message = finding.get_item(2)?;
+        let message = message.downcast::<PyString>()?.to_string_lossy();
+        if !shown(id.to_str()?, severity.to_str()?, line, column, &message) {
             continue;
         }
         let [rule, severity, file, clause, message] = &fields;
@@ -113,6 +115,6 @@ pub(crate) fn render_findings<'py>(
 ) -> PyResult<Bound<'py, PyString>> {
     let format = self::format(format)?;
     let mut out = Vec::new();
-    append_tuples(format, &mut out, findings, |_, _, _, _| true)?;
+    append_tuples(format, &mut out, findings, |_, _, _, _, _| true)?;
     string(py, format, &out)
 }

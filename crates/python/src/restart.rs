@@ -419,6 +419,7 @@ impl RestartWalk {
         d.set_item("mode_hints", hints)?;
         d.set_item("live_modes", !w.m_modes.is_empty())?;
         d.set_item("oriented", w.oriented)?;
+        d.set_item("oriented_since", w.oriented_since())?;
         d.set_item(
             "side_move",
             w.side_move

@@ -1550,8 +1550,13 @@ impl Checker {
         }
         // (no moved axis with a travel -- a profile without travels, as LinuxCNC's -- and no
         // frame's map: the walks below find nothing, and are not set up)
+        // (a subprogram whose calls leave its units unknown: its lengths and feeds are not
+        // judged against the machine's until it writes a units code, Checker::called_units;
+        // a speed or a tool number still is)
         'axes: {
-            if places & self.travel.places() == 0 && self.frames.map.is_none() {
+            if (places & self.travel.places() == 0 && self.frames.map.is_none())
+                || self.units_unknown
+            {
                 break 'axes;
             }
             let factor = self.to_profile_units(false);
@@ -1702,6 +1707,7 @@ impl Checker {
         // by the same rule, ModalSettings::s_limit
         let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
         let factor = self.to_profile_units(true);
+        let f = f.filter(|_| !self.units_unknown);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
                 let message = if factor == 1.0 {
@@ -2116,6 +2122,7 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::decimal::Dec;
     use crate::lex::{Family, GCodeSystem};
+    use crate::modal::Units;
     use crate::rules::Rule;
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
@@ -2228,6 +2235,78 @@ mod tests {
         assert_eq!(set("$P_UIFRNUM"), None);
         assert_eq!(set("$P_TOOLNO=3"), None);
         assert_eq!(set("MYFRAME=CTRANS(X,10)"), None);
+    }
+
+    /// A Haas-like mill: reset in inches (G20), travel X -30..30 in, feed to 30 in/min.
+    fn inch_mill() -> Config {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        let mut config = of_family(Family::MacroB);
+        config.haas = true;
+        config.facts.program_number = Some(b'O');
+        config.modal.inch = 20;
+        config.modal.metric = 21;
+        config.modal.default_units = Units::Inch;
+        config.modal.reset = vec![0, 17, 20, 40, 80, 90, 94];
+        config.modal.units_kept_at_end = true;
+        config.facts.travel = vec![(b'X', dec("-30"), dec("30"))];
+        config.facts.feed_max = Some(dec("30"));
+        config.facts.limit_units = Units::Inch;
+        config
+    }
+
+    #[test]
+    fn a_subprogram_after_the_end_is_read_in_the_units_of_its_calls() {
+        // (review 38, finding 10) O1000 after M30, called under G21: X900. is 900 mm, inside
+        // 60 inches of travel, and F700. is 700 mm/min (27.6 in/min); read in the reset G20 it was 900 in
+        let sub = |units: &str, body: &str| {
+            format!("%\nO1\n{units}\nG0 G90 X0 Y0\nM98 P1000\nM30\nO1000\n{body}\nM99\n%\n")
+        };
+        let limits = |text: &str| {
+            let mut found = fired(inch_mill(), text, Rule::TravelExceeded);
+            found.extend(fired(inch_mill(), text, Rule::FeedTooHigh));
+            found
+        };
+        assert_eq!(limits(&sub("G21", "G1 X900. F700.")), []);
+        // called under G20: inches, as before
+        assert_eq!(limits(&sub("G20", "G1 X900. F700.")), [(8, 4), (8, 10)]);
+        // its own G21 under a G20 caller
+        assert_eq!(limits(&sub("G20", "G21\nG1 X900. F700.")), []);
+        // too far and too fast in the caller's millimetres too: still said
+        assert_eq!(limits(&sub("G21", "G1 X2000. F999.")), [(8, 4), (8, 11)]);
+        // the program after the end that no call names is a program of its own, read from the
+        // reset state (G20) as the file's first is
+        let alone = "%\nO1\nG21\nG0 G90 X0 Y0\nM30\nO1000\nG1 X900. F700.\nM99\n%\n";
+        assert_eq!(limits(alone), [(7, 4), (7, 10)]);
+        // a number the call does not name: the same
+        assert_eq!(
+            limits(&sub("G21", "G1 X900. F700.").replace("P1000", "P2000")),
+            [(8, 4), (8, 10)]
+        );
+    }
+
+    #[test]
+    fn a_subprogram_whose_calls_disagree_on_the_units_is_not_judged_until_it_writes_them() {
+        // called under G21 and under G20: its lengths are in units not known
+        let text = |body: &str| {
+            format!(
+                "%\nO1\nG21\nG0 G90 X0 Y0\nM98 P1000\nG20\nM98 P1000\nM30\nO1000\n{body}\nM99\n%\n"
+            )
+        };
+        let limits = |text: &str| {
+            let mut found = fired(inch_mill(), text, Rule::TravelExceeded);
+            found.extend(fired(inch_mill(), text, Rule::FeedTooHigh));
+            found
+        };
+        assert_eq!(limits(&text("G1 X900. F700.")), []);
+        // its own G21: known from there, and 2000 mm past the travel found
+        assert_eq!(
+            limits(&text("G1 X900. F700.\nG21\nG1 X2000. F999.")),
+            [(12, 4), (12, 11)]
+        );
+        // a subprogram it calls in those unknown units is read in unknown units too
+        let nested = "%\nO1\nG21\nM98 P1000\nG20\nM98 P1000\nM30\nO1000\nM98 P2000\nM99\n\
+                      O2000\nG1 X900. F700.\nM99\n%\n";
+        assert_eq!(limits(nested), []);
     }
 
     #[test]

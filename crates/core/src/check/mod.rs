@@ -1037,6 +1037,16 @@ pub struct Checker {
     linuxcnc_if_speed: Vec<(Vec<u8>, Option<Dec>, bool, bool)>,
     linuxcnc_speed_back: Option<(Option<Dec>, bool)>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
+    /// The units in force at the calls so far of each program number (`M98 P1000`, `G65
+    /// P9010`): the lengths, the feed's units and whether the caller had written a units code;
+    /// None where the calls disagree or a call was made in units not known. A program after
+    /// an end that a call names runs in its caller's units, not in the reset state's
+    /// ([`Checker::called_units`]; review 38, finding 10).
+    call_units: HashMap<i64, Option<(Units, Units, bool)>>,
+    /// The program in hand is a subprogram whose calls leave its units unknown (they
+    /// disagree, or one was made in units not known): no limit that reads a length or a feed
+    /// (TG601, TG602) is judged until it writes a units code of its own.
+    units_unknown: bool,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -1193,6 +1203,8 @@ impl Checker {
             linuxcnc_if_speed: Vec::new(),
             linuxcnc_speed_back: None,
             linuxcnc_called_ahead: Vec::new(),
+            call_units: HashMap::new(),
+            units_unknown: false,
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
@@ -1721,6 +1733,7 @@ impl Checker {
             // M99 before the saved offsets)
             let main_ended = self.ended_line != 0;
             self.next_program();
+            self.called_units(b);
             self.empty_folder = folder;
             self.offsets_section = self.config.haas
                 && main_ended
@@ -2045,6 +2058,9 @@ impl Checker {
         self.values.end_unsure =
             self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
         self.machine.apply_taken(&self.values, taken);
+        if self.units_unknown && self.machine.state.units_given {
+            self.units_known_again();
+        }
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
         if self.config.family == Family::LinuxCnc {
@@ -2088,6 +2104,9 @@ impl Checker {
             self.system_variables(b);
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
+        if calls {
+            self.call_made(b);
+        }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();

@@ -305,6 +305,89 @@ impl Checker {
         self.program_section = None;
     }
 
+    /// A call (`M98 P1000`, `G65 P9010`) in a FANUC's or a Haas's file: the units in force
+    /// where it is made, kept for the program of that number, which runs in them
+    /// ([`Checker::called_units`]). A second call in other units, or one made where the units
+    /// are not known, leaves them unknown there. (M97 calls a sequence number of the program
+    /// in hand, and a SINUMERIK's L a subprogram of another file: no program of this file.)
+    pub(super) fn call_made(&mut self, b: &BlockView<'_>) {
+        // (only a FANUC's or a Haas's file is split into programs by their O numbers,
+        // dialect::ProgramSplit)
+        if !dialect::splits(self.config.family, self.config.program_number)
+            || self.config.family != Family::MacroB
+        {
+            return;
+        }
+        let by_number =
+            self.values.ms.contains(&98) || self.values.gs().iter().any(|&g| g == 65 || g == 66);
+        if !by_number {
+            return;
+        }
+        let Some(number) = b
+            .words
+            .iter()
+            .enumerate()
+            .find(|(_, w)| w.letter == b'P' && w.index.is_empty())
+            .and_then(|(i, _)| self.readable[i])
+            .filter(|v| v.is_whole())
+            .map(|v| v.trunc())
+        else {
+            return;
+        };
+        let s = &self.machine.state;
+        let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
+        self.call_units
+            .entry(number)
+            .and_modify(|known| {
+                if *known != units {
+                    *known = None;
+                }
+            })
+            .or_insert(units);
+    }
+
+    /// The next program of the file begins with `b`'s O number: where a call before it in
+    /// the file names that number, it is a subprogram and runs in the units of its calls, not
+    /// in the reset state's (a FANUC's or a Haas's M98 runs the subprogram in the caller's
+    /// modal state; G20/G21 are modal and the call changes none: Haas Mill Operator's Manual,
+    /// M98 and G20/G21; review 38, finding 10). Calls in different units, or one in units
+    /// not known, leave them unknown: no TG601/TG602 until the subprogram writes a units code
+    /// of its own. A program no call before it names is read from the reset state, as the
+    /// file's first is (a program of its own, whose units until it writes one are the
+    /// control's start units the profile assumes).
+    pub(super) fn called_units(&mut self, b: &BlockView<'_>) {
+        self.units_unknown = false;
+        let number = b
+            .words
+            .first()
+            .filter(|w| w.letter == b'O' && w.index.is_empty() && w.expression.is_empty())
+            .and_then(|w| std::str::from_utf8(w.number).ok())
+            .and_then(|n| n.parse::<i64>().ok());
+        match number.and_then(|n| self.call_units.get(&n)) {
+            Some(&Some((units, feed_units, given))) => {
+                let s = &mut self.machine.state;
+                (s.units, s.feed_units, s.units_given) = (units, feed_units, given);
+            }
+            Some(None) => {
+                self.units_unknown = true;
+                self.machine.state.units_given = false;
+            }
+            None => self.machine.state.units_given = false,
+        }
+    }
+
+    /// A subprogram whose units were not known has written a units code: its lengths are
+    /// known from here. The axes the block does not write stand where lengths in unknown
+    /// units put them: not known.
+    pub(super) fn units_known_again(&mut self) {
+        self.units_unknown = false;
+        for &axis in crate::modal::AXES {
+            if !self.values.has(axis) {
+                self.machine.forget_axis(axis);
+            }
+        }
+    }
+
     /// TG109: a SINUMERIK `DEF` after the first block of its program's program section
     /// (`dialect::sinumerik_section`); a `PROC` opens a subprogram's definition section.
     pub(super) fn definition_section(&mut self, b: &BlockView<'_>) {
