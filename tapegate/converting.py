@@ -218,9 +218,10 @@ def summary_json(results: list[ConvertStats], dry_run: bool) -> str:
 def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
                dry_run: bool) -> list[tuple[str, str | None]]:
     """(input file, output file or None) for every file named by the inputs. The paths are
-    written as ``pathlib`` writes them (:func:`tapegate.workers.pure`), without its objects
+    written as ``pathlib`` writes them (:func:`formats.files.pure`), without its objects
     (a tenth of a 200-file batch's serial start-up went to them)."""
-    from tapegate.workers import folder_files, joined, pure
+    from formats.files import joined, pure
+    from tapegate.workers import folder_files
 
     files: list[tuple[str, str]] = []  # (file, path relative to the output folder)
     for name in inputs:

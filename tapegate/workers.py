@@ -592,13 +592,15 @@ def folder_files(name: str) -> list[tuple[str, str]]:
     """Every file below the folder ``name`` (symbolic links to files among them, and links that
     lead nowhere, reported when read; folders linked to not entered), sorted by their paths'
     parts, hidden ones (a name starting with ``.``) left out: (its path, its path below the
-    folder). The paths are written as ``pathlib`` writes them (:func:`pure`; ``Path.rglob``,
+    folder). The paths are written as ``pathlib`` writes them (:func:`formats.files.pure`; ``Path.rglob``,
     ``relative_to``), without its objects: 17M instructions of a check's listing of 200 files, a
     tenth of what ran before the threads started, and for ``convert`` 0.1 s of 200 files'
     ``Path`` work. A folder is read as ``os.walk`` reads it (one that cannot be read is left
     out), by ``os.scandir``: whether an entry is a file comes with its name, without a
     ``stat`` of each file as ``os.path.isfile`` made (docs/benchmarks.md, "the serial ends of
     `-j 2`")."""
+    from formats.files import joined, pure
+
     root = pure(name)
     found: list[tuple[str, ...]] = []
     _scan(root, (), found)
@@ -649,20 +651,3 @@ def _listed(entry: os.DirEntry[str]) -> bool:
     in silence; folders, pipes and devices are not."""
     return _is(entry.is_file) or (_is(entry.is_symlink) and not os.path.exists(entry.path))
 
-
-def joined(folder: str, below: str) -> str:
-    """``str(Path(folder) / below)`` for a ``folder`` written as :func:`pure` writes it and a
-    relative ``below`` without empty or ``.`` parts: ``os.path.join``'s, written out (only
-    ``/`` and ``//`` end in a slash)."""
-    if folder == ".":
-        return below
-    return folder + below if folder[-1:] == "/" else folder + "/" + below
-
-
-def pure(name: str) -> str:
-    """``str(pathlib.PurePosixPath(name))``: empty and ``.`` parts dropped, ``..`` kept, two
-    leading slashes kept as two (POSIX leaves their meaning to the system), more as one."""
-    root = "//" if name.startswith("//") and not name.startswith("///") else (
-        "/" if name.startswith("/") else "")
-    parts = [p for p in name.split("/") if p not in ("", ".")]
-    return root + "/".join(parts) or "."

@@ -1113,14 +1113,14 @@ def test_the_workers_condition_wakes_its_waiters_and_leaves_an_interrupted_one()
 
 @pytest.mark.parametrize("folder", [".", "/", "//", "a", "/a/b", "//a", "..", "../x"])
 def test_a_path_below_a_folder_is_joined_as_os_path_joins_it(folder):
-    """tapegate.workers.joined, written out: os.path.join's path for a folder as pure() writes
+    """formats.files.joined, written out: os.path.join's path for a folder as pure() writes
     it (the root "/" and "//" the only ones ending in a slash) and a relative path below it."""
-    import tapegate.workers as workers
+    import formats.files as files
 
-    assert workers.pure(folder) == folder
+    assert files.pure(folder) == folder
     for below in ("p.nc", "d/p.nc", "..nc"):
-        assert workers.joined(folder, below) == (below if folder == "." else
-                                                 os.path.join(folder, below))
+        assert files.joined(folder, below) == (below if folder == "." else
+                                               os.path.join(folder, below))
 
 
 def test_a_thread_failing_outside_an_items_function_is_raised_not_waited_for(monkeypatch):
