@@ -589,16 +589,15 @@ def input_files(names: Iterable[str]) -> list[str]:
 
 
 def folder_files(name: str) -> list[tuple[str, str]]:
-    """Every file below the folder ``name`` (symbolic links to files among them, and links that
-    lead nowhere, reported when read; folders linked to not entered), sorted by their paths'
-    parts, hidden ones (a name starting with ``.``) left out: (its path, its path below the
-    folder). The paths are written as ``pathlib`` writes them (:func:`formats.files.pure`; ``Path.rglob``,
+    """Every file below the folder ``name`` (symbolic links to files among them, and links that lead
+    nowhere, reported when read; folders linked to not entered), sorted by their paths' parts,
+    hidden ones (a name starting with ``.``) left out: (its path, its path below the folder). The
+    paths are written as ``pathlib`` writes them (:func:`formats.files.pure`; ``Path.rglob``,
     ``relative_to``), without its objects: 17M instructions of a check's listing of 200 files, a
-    tenth of what ran before the threads started, and for ``convert`` 0.1 s of 200 files'
-    ``Path`` work. A folder is read as ``os.walk`` reads it (one that cannot be read is left
-    out), by ``os.scandir``: whether an entry is a file comes with its name, without a
-    ``stat`` of each file as ``os.path.isfile`` made (docs/benchmarks.md, "the serial ends of
-    `-j 2`")."""
+    tenth of what ran before the threads started, and for ``convert`` 0.1 s of 200 files' ``Path``
+    work. A folder is read as ``os.walk`` reads it (one that cannot be read is left out), by
+    ``os.scandir``: whether an entry is a file comes with its name, without a ``stat`` of each file
+    as ``os.path.isfile`` made (docs/benchmarks.md, "the serial ends of `-j 2`")."""
     from formats.files import joined, pure
 
     root = pure(name)
