@@ -269,6 +269,7 @@ impl Checker {
         // here (Fanuc's GOTOn searches the sequence number in the program it runs)
         self.goto_targets.clear();
         self.goto_computed = false;
+        self.goto_names.clear();
         self.arrival = None;
         self.motion_unknown = false;
         self.cycle_unmodelled = false;
