@@ -1489,6 +1489,18 @@ LOCALS = {
     "not called": ("#<zz> = 1\no<s> sub\nG1 X#<zz> F100\no<s> endsub\n", None),
     "inside a branch not run": ("o<s> sub\no1 if [#1 GT 0]\nG1 X#<zz> F100\no1 endif\n"
                                 "o<s> endsub\no<s> call [0]\n", None),
+    # (review 39, finding 6) rs274 creates an assignment's target when it reads it, before
+    # the value: its own value's read finds it (0), as a later setting's of the line does
+    "its own assignment's value": ("o<s> sub\n#<zz> = [#<zz> + 1]\nG1 X#<zz> F100\n"
+                                   "o<s> endsub\no<s> call\n", None),
+    "its own assignment, alone": ("o<s> sub\n#<zz> = #<zz>\nG1 X#<zz> F100\n"
+                                  "o<s> endsub\no<s> call\n", None),
+    "a later setting of the line": ("o<s> sub\n#<zz> = 1 #<yy> = #<zz>\nG1 X#<yy> F100\n"
+                                    "o<s> endsub\no<s> call\n", None),
+    "another name's value": ("o<s> sub\n#<yy> = #<zz>\nG1 X#<yy> F100\n"
+                             "o<s> endsub\no<s> call\n", 4),
+    "an earlier setting of the line": ("o<s> sub\n#<yy> = #<zz> #<zz> = 1\nG1 X#<yy> F100\n"
+                                       "o<s> endsub\no<s> call\n", 4),
 }
 
 

@@ -191,7 +191,12 @@ impl Checker {
         let Ok(tree) = crate::expr::tree(inner) else {
             return;
         };
-        let known = |p: &[u8]| self.constant(p);
+        // (a parameter a jump arrival forgot is read with its value in file order, and the
+        // finding is TG210's doubt: a jump may arrive with another value)
+        let known = |p: &[u8]| {
+            self.constant(p)
+                .or_else(|| self.uncertain(p).map(|(value, _, _)| value))
+        };
         let Some(value) = crate::expr::formula_value(&tree, inner, &known) else {
             return;
         };
@@ -200,7 +205,7 @@ impl Checker {
         crate::expr::parameters(&tree, &mut read);
         let doubt = read.iter().find_map(|&(a, z)| {
             self.uncertain(&inner[a..z])
-                .map(|(n, at)| (String::from_utf8_lossy(&inner[a..z]).into_owned(), n, at))
+                .map(|(_, n, at)| (String::from_utf8_lossy(&inner[a..z]).into_owned(), n, at))
         });
         if value < Dec::ZERO {
             // no control numbers a variable below zero: out of range whatever its fraction

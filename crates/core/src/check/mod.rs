@@ -783,6 +783,8 @@ pub struct Checker {
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
     goto_targets: HashSet<u64>,
     goto_computed: bool,
+    /// SINUMERIK: the block numbers (`N100`, in capitals) a jump already read names.
+    goto_names: HashSet<Vec<u8>>,
     /// The program's sequence numbers and the blocks its words name (TG118).
     targets: targets::Targets,
     /// Whether the lines read now are reached (TG108).
@@ -1122,6 +1124,7 @@ impl Checker {
             params: HashMap::new(),
             goto_targets: HashSet::new(),
             goto_computed: false,
+            goto_names: HashSet::new(),
             targets: targets::Targets::default(),
             reach: reach::Reach::default(),
             arrival: None,
@@ -1901,7 +1904,11 @@ impl Checker {
             self.block_modes(b, motion_only);
         // a jump arrives only where a GOTO named a label (or computed one), and only a
         // statement names one
-        if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
+        if self.goto_computed
+            || !self.goto_targets.is_empty()
+            || !self.goto_names.is_empty()
+            || !b.statements.is_empty()
+        {
             self.jump_arrival(b);
         }
         let modal = &self.config.modal;

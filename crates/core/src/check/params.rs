@@ -154,14 +154,56 @@ impl Checker {
         }
     }
 
-    /// Custom Macro B: where a block carries a sequence number that a `GOTO` read before it
-    /// names (or any, after a `GOTO #1`), a jump may arrive there with other values than the
-    /// ones known from the blocks above: the values known now are kept, and noted as such
-    /// ([`Checker::uncertain`]). Then the block's own jump targets are noted.
+    /// A block a jump may arrive at forgets the parameters known there (issue 32, review 39
+    /// finding 3): every jump forgets them where it is read ([`Checker::statements`]), so the
+    /// values known at the block are the ones assigned since, between a jump that may reach it
+    /// and it, which the jump passes over. Such a block is
+    /// - Custom Macro B: one whose sequence number a `GOTO` read before it names (or any, after
+    ///   a `GOTO #1`). The values it forgets are kept aside for TG210 ([`Checker::uncertain`]);
+    /// - SINUMERIK: a label (`LBL:`), whether a jump to it was read or not (a `GOTOB`, a
+    ///   `GOTO` or a `REPEAT` below may come back to it), and a block number (`N100`) that a
+    ///   jump read before names;
+    /// - Okuma: a label (`NLBL1`), as a SINUMERIK's.
+    ///
+    /// Then the block's own jump targets are noted.
     pub(super) fn jump_arrival(&mut self, b: &BlockView<'_>) {
-        if self.config.family != Family::MacroB {
-            return;
+        match self.config.family {
+            Family::MacroB => self.macro_b_arrival(b),
+            Family::Sinumerik => self.sinumerik_arrival(b),
+            Family::Okuma if b.statements.iter().any(|s| s.1 == Kind::Label) => {
+                self.params.clear();
+            }
+            _ => {}
         }
+    }
+
+    /// [`Checker::jump_arrival`] on a SINUMERIK.
+    fn sinumerik_arrival(&mut self, b: &BlockView<'_>) {
+        let label = b.statements.iter().any(|s| s.1 == Kind::Label)
+            || (!self.goto_names.is_empty()
+                && b.words
+                    .iter()
+                    .find(|w| w.letter == b'N' && w.expression.is_empty() && w.index.is_empty())
+                    .is_some_and(|w| self.goto_names.contains(&w.token.to_ascii_uppercase()[..])));
+        if label {
+            self.params.clear();
+        }
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Flow {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            if let Some((_, _, name)) = super::targets::sinumerik_jump(&upper) {
+                // (a label's name is forgotten at any label: only a block number is kept)
+                if name.first() == Some(&b'N') && name[1..].iter().all(u8::is_ascii_digit) {
+                    self.goto_names.insert(name.to_vec());
+                }
+            }
+        }
+    }
+
+    /// [`Checker::jump_arrival`] on a Custom Macro B control.
+    fn macro_b_arrival(&mut self, b: &BlockView<'_>) {
         // (a block's N is read as a label only where a GOTO has named one, or computed one:
         // no number parsed and hashed a block in a program without GOTO)
         if self.goto_computed || !self.goto_targets.is_empty() {
@@ -172,7 +214,8 @@ impl Checker {
                 .and_then(|w| std::str::from_utf8(w.number).ok()?.parse::<u64>().ok());
             if let Some(n) = label {
                 if self.goto_computed || self.goto_targets.contains(&n) {
-                    self.arrival = Some((n, b.line, self.params.clone()));
+                    let known = std::mem::take(&mut self.params);
+                    self.arrival = Some((n, b.line, known));
                 }
             }
         }
@@ -196,12 +239,12 @@ impl Checker {
         }
     }
 
-    /// Where a jump may arrive with another value of the parameter `name` (`#1`) than the
-    /// one known: its sequence number and line, when the parameter still holds the value it
-    /// held at that sequence number.
-    pub(super) fn uncertain(&self, expression: &[u8]) -> Option<(u64, usize)> {
+    /// Where a jump may arrive with another value of the parameter `expression` (`#1`) than
+    /// the one the blocks above give it: its value in file order, the sequence number the jump
+    /// arrives at and its line, when the parameter was known there (and forgotten,
+    /// [`Checker::jump_arrival`]) and no block has set it since.
+    pub(super) fn uncertain(&self, expression: &[u8]) -> Option<(Dec, u64, usize)> {
         let (n, line, then) = self.arrival.as_ref()?;
-        let now = self.constant(expression)?;
         let key = match expression {
             [b'#', b'<', named @ .., b'>'] => named_parameter(named),
             [letter, digits @ ..] if digits.iter().all(u8::is_ascii_digit) => {
@@ -209,7 +252,17 @@ impl Checker {
             }
             _ => return None,
         };
-        (then.get(&key) == Some(&now)).then_some((*n, *line))
+        if self.params.contains_key(&key) {
+            return None;
+        }
+        then.get(&key).map(|&value| (value, *n, *line))
+    }
+
+    /// A parameter set since the last jump arrival: its value there no longer matters.
+    fn set_since_arrival(&mut self, key: &[u8]) {
+        if let Some((_, _, then)) = &mut self.arrival {
+            then.remove(key);
+        }
     }
 
     /// The value of a Sinumerik expression (`R1+5`, `R2*SIN(30)`) where it reads only numbers
@@ -237,7 +290,9 @@ impl Checker {
                     .then(|| crate::statement::conditional_assignment(text))
                     .flatten()
                 {
-                    self.params.remove(&parameter_name(b'#', &target[1..]));
+                    let key = parameter_name(b'#', &target[1..]);
+                    self.set_since_arrival(&key);
+                    self.params.remove(&key);
                 }
             }
             return;
@@ -350,6 +405,9 @@ impl Checker {
                 }
                 _ => continue,
             };
+            if self.arrival.is_some() {
+                self.set_since_arrival(&name);
+            }
             match value {
                 Some(value) => {
                     self.params.insert(name, value);

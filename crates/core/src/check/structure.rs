@@ -269,6 +269,7 @@ impl Checker {
         // here (Fanuc's GOTOn searches the sequence number in the program it runs)
         self.goto_targets.clear();
         self.goto_computed = false;
+        self.goto_names.clear();
         self.arrival = None;
         self.motion_unknown = false;
         self.cycle_unmodelled = false;
@@ -889,11 +890,16 @@ impl Checker {
                     reads = &w.expression[close + 1..];
                 }
             }
-            if first.is_none() {
-                first = body_unassigned(reads, &self.linuxcnc_body_named).map(|n| (w.column, n));
-            }
+            // rs274 creates an assignment's target when it reads it, before the value
+            // (interp_read.cc `read_named_parameter_setting` -> `add_named_param`): the
+            // value's own read of it finds it (`#<x> = [#<x> + 1]`, 0 + 1), as a later
+            // setting's of the line does; one before it on the line does not (issue 32,
+            // review 39 finding 6; rs274 -g in tests/test_linuxcnc_locals.py)
             if let Some(name) = assigns {
                 self.linuxcnc_body_named.insert(name);
+            }
+            if first.is_none() {
+                first = body_unassigned(reads, &self.linuxcnc_body_named).map(|n| (w.column, n));
             }
         }
         for &(column, kind, text) in b.statements {

@@ -176,7 +176,7 @@ fn digits_key(digits: &[u8]) -> Option<u64> {
 /// Planning, "Program jumps to jump markers (GOTOB, GOTOF, GOTO, GOTOC)"): GOTOF toward the
 /// program's end, GOTOB toward its start, GOTO forward then backward.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Direction {
+pub(super) enum Direction {
     Forward,
     Backward,
     Both,
@@ -196,7 +196,7 @@ struct Jump {
 /// its GOTO word, the way it searches and the destination (a label or a block number `N100`).
 /// `GOTOC` (no alarm where the destination is missing) and `GOTOS` (the program's start) name
 /// none to check; nor does a destination in an expression or a string.
-fn sinumerik_jump(upper: &[u8]) -> Option<(usize, Direction, &[u8])> {
+pub(super) fn sinumerik_jump(upper: &[u8]) -> Option<(usize, Direction, &[u8])> {
     let at = upper
         .windows(4)
         .enumerate()

@@ -1,0 +1,102 @@
+"""A parameter's value where a jump may arrive (issue 32, review 39 finding 3).
+
+The checker reads a program in file order and forgets every parameter at a jump it reads
+(TG140). A block a jump may reach -- a Custom Macro B sequence number a GOTO read before it
+names, a SINUMERIK label (any: a GOTOB below may come back to it) or a block number a jump
+read before names, an Okuma label -- forgets the parameters assigned since, which the jump
+passes over: the control may arrive there with the values from before the jump.
+"""
+
+from __future__ import annotations
+
+from formats.parser import parse_text
+from formats.profile import load_profile
+from postproc.check import Checker
+
+
+def findings(text: str, profile: str) -> list[tuple[str, int]]:
+    prof = load_profile(profile)
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    return [(f.rule, f.line) for f in found]
+
+
+SINUMERIK_HEAD = "G71 G90 G17\nT1 D1\nM6\nS1000 M3\n"
+# lines 5-: a cut under G41 whose D is R1's value; {} is the flow before it
+SINUMERIK_CUT = "G0 X0 Y0 Z5\nG1 G41 X10 Y0 F100\nD=R1 X20\nG1 X50\nG40 G0 X60\n"
+
+
+def d_findings(flow: str, tail: str = "M30\n") -> list[tuple[str, int]]:
+    text = SINUMERIK_HEAD + flow + SINUMERIK_CUT + tail
+    d_line = text.splitlines().index("D=R1 X20") + 1
+    return [r for r, line in findings(text, "sinumerik-840d")
+            if r in ("TG502", "TG503") and line == d_line]
+
+
+def test_sinumerik_a_forward_jump_over_an_assignment():
+    """Review 39's repro: with R2 = 1 the control reaches the label with R1 = 0 (D0 under
+    G41). R1=5 between the jump and the label is not R1's value there: TG503, not quiet."""
+    assert d_findings("R1=0\nIF R2==1 GOTOF LBL\nR1=5\nLBL:\n") == ["TG503"]
+
+
+def test_sinumerik_a_jump_that_skips_nothing():
+    """Nothing assigned between the jump and its label: the value before the jump is the
+    value on both paths, but the checker forgets every parameter at the jump it reads
+    (TG140's 'from here on ... unknown'), so R1 is unknown at the D: TG503 as before."""
+    assert d_findings("R1=5\nIF R2==1 GOTOF LBL\nLBL:\n") == ["TG503"]
+    # and with no jump at all the value is known (5: quiet; 0: TG502)
+    assert d_findings("R1=5\n") == []
+    assert d_findings("R1=0\n") == ["TG502"]
+
+
+def test_sinumerik_a_backward_jump_to_a_label():
+    """A loop: the second pass reaches BACK with R1 = 0, set below it. The label forgets R1
+    though no jump to it was read yet: TG503 (R1=5 alone, before it, was quiet)."""
+    flow = "R1=5\nBACK:\n"
+    assert d_findings(flow, "R1=0\nIF R2==1 GOTOB BACK\nM30\n") == ["TG503"]
+    assert d_findings("R1=5\n", "R1=0\nM30\n") == []
+
+
+def test_sinumerik_a_jump_to_a_block_number():
+    """GOTOF N100: the block numbered N100 forgets R1=5 set between the jump and it."""
+    flow = "R1=0\nIF R2==1 GOTOF N100\nR1=5\nN100 G0 Z10\n"
+    assert d_findings(flow) == ["TG503"]
+    # a block number no jump names keeps the values: the jump passes over the cut to N100
+    # below it, and the cut runs only with R1=5 (quiet)
+    flow = "R1=0\nIF R2==1 GOTOF N100\nN90 G0 Z10\nR1=5\n"
+    assert d_findings(flow, "N100 G0 Z10\nM30\n") == []
+
+
+FANUC = "%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#1=-900.\nIF[#2EQ1]GOTO10\n{}N10 G0 X#1\nM30\n%\n"
+
+
+def test_fanuc_a_goto_over_an_assignment():
+    """Review 39's repro: with #2 = 1 the machine goes X700 -> X-900 (1600 mm, more than
+    fanuc-mill's 1524). #1=0 between the GOTO and N10 is not #1's value at N10: X#1 is
+    unknown there (TG141), not the X0 that spans 700."""
+    found = findings(FANUC.format("#1=0\n"), "fanuc-mill")
+    assert ("TG141", 8) in found, found
+    # the jump itself forgets #1 (TG141 as well); a sequence number no GOTO names keeps a
+    # value set after the jump
+    text = "%\nO1000\nG21 G90 G54\nIF[#2EQ1]GOTO20\n#1=-900.\nN10 G0 X#1\nG0 X700.\nN20 M30\n%\n"
+    found = findings(text, "fanuc-mill")
+    assert ("TG141", 6) not in found, found
+    assert ("TG601", 7) in found, found
+
+
+def test_fanuc_a_backward_goto_target_is_read_before_the_goto():
+    """A GOTO back to a sequence number read before it: the block was read with the values
+    above it (the checker reads in file order and cannot know then that a jump comes back);
+    after the GOTO every value is unknown. Recorded as the checker's limit: #1=0 set in the
+    loop's body is not #1's value on the first pass, and the loop's first pass is what is
+    read."""
+    text = "%\nO1000\nG21 G90 G54\n#1=700.\nN10 G0 X#1\n#1=-900.\nIF[#2EQ1]GOTO10\nG0 X#1\nM30\n%\n"
+    found = findings(text, "fanuc-mill")
+    assert ("TG141", 8) in found, found
+
+
+def test_okuma_a_jump_to_a_label():
+    """An Okuma's variables (VC1) are not evaluated at all: X=VC1 is unknown wherever it is
+    read, so a jump over VC1=0 to NLB1 leaves nothing known to forget (TG141)."""
+    for jump in ("GOTO NLB1", "IF[VC2 EQ 1] NLB1"):
+        text = f"G90\nVC1=-900.\n{jump}\nVC1=0\nNLB1 G0 X=VC1\nM02\n"
+        assert ("TG141", 5) in findings(text, "okuma-mill")
