@@ -36,10 +36,10 @@ converter calls and which does not call it.
 
 from __future__ import annotations
 
+import math
 import os
 import re
 from collections.abc import Callable, Iterable, Iterator
-from fractions import Fraction
 from itertools import chain
 
 from formats import _core
@@ -260,18 +260,28 @@ class Converter:
         self.finish()
 
     def finish(self) -> ConvertStats:
-        """The statistics, with the largest rounding per address as exact fractions."""
+        """The statistics, with the largest rounding per address exact: (numerator,
+        denominator) in lowest terms (:attr:`ConvertStats.rounding`)."""
         core = self._core.stats
         stats = self.stats
         stats.blocks, stats.words, stats.changed = core["blocks"], core["words"], core["changed"]
         stats.said(self._core.take_notes())
-        stats.rounding = {letter: Fraction(e, d) for letter, e, d in core["rounding"]}
+        stats.rounding = {letter: _lowest(e, d) for letter, e, d in core["rounding"]}
         stats.body_units = self._core.body_units()
         stats.left_as_written, stats.left_at = _left(core["left_as_written"])
         stats.left_statements = core["left_statements"]
         stats.never_read, stats.never_read_at = _left(core["never_read"])
         stats.machine_units = core["machine_units"]
         return stats
+
+
+def _lowest(num: int, den: int) -> tuple[int, int]:
+    """``num / den`` as ``Fraction(num, den)`` holds it: in lowest terms, the denominator
+    positive (without importing fractions: docs/benchmarks.md, perf40)."""
+    if den < 0:
+        num, den = -num, -den
+    common = math.gcd(num, den)
+    return num // common, den // common
 
 
 def _left(count: tuple[int, int, int]) -> tuple[int, tuple[int, int] | None]:

@@ -132,7 +132,7 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
     rows = []
     failed = 0
     for stats in results:
-        letter, worst = stats.largest_rounding()
+        letter, worst = stats.largest_rounding_text()
         if stats.error:
             failed += 1
             echo(stats.error, err=True)
@@ -194,7 +194,7 @@ def summary_json(results: list[ConvertStats], dry_run: bool) -> str:
 
     files = []
     for stats in results:
-        letter, worst = stats.largest_rounding()
+        letter, worst = stats.largest_rounding_text()
         files.append({
             "file": stats.file, "output": stats.output or None, "blocks": stats.blocks,
             "words_changed": stats.changed,
