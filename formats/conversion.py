@@ -8,8 +8,6 @@ roundings the converter reported, so neither imports the other.
 from __future__ import annotations
 
 import os
-from decimal import ROUND_UP, Decimal, localcontext
-from fractions import Fraction
 
 from formats.classification import DetailedClassification
 from formats.errors import ConversionError
@@ -20,6 +18,7 @@ from formats.wordformat import Rounding, Zeros
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from decimal import Decimal
     from typing import IO, Any, TypeVar
 
     T = TypeVar("T")
@@ -197,7 +196,12 @@ class ConvertStats(Record):
     blocks: int = 0
     words: int = 0
     changed: int = 0
-    rounding: dict[str, Fraction] = field(default_factory=dict)  # address -> largest |error|
+    # address -> the largest |error| of its roundings, exact, as (numerator, denominator) in
+    # lowest terms with a positive denominator: ``Fraction(*pair)`` is the value (integers,
+    # not a Fraction: a conversion imports neither fractions nor decimal unless its proof or a
+    # caller needs them; docs/benchmarks.md, perf40). The summary's text of the largest:
+    # :meth:`largest_rounding_text`.
+    rounding: dict[str, tuple[int, int]] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     error: str = ""
     verified: bool = False
@@ -245,7 +249,7 @@ class ConvertStats(Record):
     _spill: IO[str] | None = field(default=None, repr=False, compare=False)
 
     def __init__(self, file: str = "", output: str = "", blocks: int = 0, words: int = 0,
-                 changed: int = 0, rounding: dict[str, Fraction] = NEW,
+                 changed: int = 0, rounding: dict[str, tuple[int, int]] = NEW,
                  notes: list[str] = NEW, error: str = "", verified: bool = False,
                  verified_assuming: str = "", not_compared: list[tuple[int, str]] = NEW,
                  left_as_written: int = 0, left_at: tuple[int, int] | None = None,
@@ -305,16 +309,64 @@ class ConvertStats(Record):
             os.unlink(self.notes_spill)
         self.notes, self.notes_spill = [], None
 
+    def largest_rounding_pair(self) -> tuple[str, tuple[int, int]]:
+        """The address of the largest rounding (the first such, in :attr:`rounding`'s order)
+        and its (numerator, denominator); ``("", (0, 1))`` without any."""
+        letter, best = "", (0, 1)
+        for address, (num, den) in self.rounding.items():
+            if not letter or num * best[1] > best[0] * den:
+                letter, best = address, (num, den)
+        return letter, best
+
+    def largest_rounding_text(self) -> tuple[str, str]:
+        """The address of the largest rounding and its error as the summary writes it
+        (:func:`rounding_text`); ``("", "0")`` without any."""
+        letter, (num, den) = self.largest_rounding_pair()
+        return letter, rounding_text(num, den)
+
     def largest_rounding(self) -> tuple[str, Decimal]:
-        if not self.rounding:
-            return "", Decimal(0)
-        letter, value = max(self.rounding.items(), key=lambda kv: kv[1])
-        return letter, _fraction_decimal(value)
+        """:meth:`largest_rounding_text`'s error as a :class:`~decimal.Decimal` (the same
+        digits and exponent)."""
+        from decimal import Decimal
+
+        letter, text = self.largest_rounding_text()
+        return letter, Decimal(text)
 
 
-def _fraction_decimal(value: Fraction) -> Decimal:
-    """A rounding error for people: three significant digits, rounded up (never understated)."""
-    with localcontext() as ctx:
-        ctx.prec = 3
-        ctx.rounding = ROUND_UP
-        return (Decimal(value.numerator) / Decimal(value.denominator)).normalize()
+def rounding_text(num: int, den: int) -> str:
+    """A rounding error ``num / den`` for people: three significant digits, rounded up (never
+    understated), trailing zeros dropped, written as ``str`` writes the
+    :class:`~decimal.Decimal` that a context of precision 3 and ``ROUND_UP`` gives for
+    ``Decimal(num) / Decimal(den)``, normalized (``0.00347``, ``0.5``, ``1.27E-7``, ``1E+1``).
+    Made from the integers, exactly, without importing :mod:`decimal` (which the conversion's
+    start-up does not need; ``tests/test_convert_stats.py`` holds it to Decimal's text)."""
+    if den <= 0:
+        raise ValueError(f"a rounding's denominator must be positive, not {den}")
+    if num == 0:
+        return "0"
+    sign, num = ("-", -num) if num < 0 else ("", num)
+    # the adjusted exponent k: 10**k <= num/den < 10**(k+1), k one of two by the digit counts
+    k = len(str(num)) - len(str(den))
+    if (num * 10 ** -k if k < 0 else num) < (den if k < 0 else den * 10 ** k):
+        k -= 1
+    # three significant digits, rounded away from zero: ceil(num/den * 10**(2-k))
+    top, bottom = (num * 10 ** (2 - k), den) if k <= 2 else (num, den * 10 ** (k - 2))
+    digits = -(-top // bottom)
+    exp = k - 2
+    if digits == 1000:  # (999.5 and more rounded up to the next power of ten)
+        digits, exp = 100, exp + 1
+    while digits % 10 == 0:  # normalized: no trailing zero
+        digits, exp = digits // 10, exp + 1
+    coefficient = str(digits)
+    # Decimal's to-scientific-string: plain for exponents <= 0 down to 1E-6, else E notation
+    left = exp + len(coefficient)
+    dot = left if exp <= 0 and left > -6 else 1
+    if dot <= 0:
+        text = "0." + "0" * -dot + coefficient
+    elif dot >= len(coefficient):
+        text = coefficient + "0" * (dot - len(coefficient))
+    else:
+        text = coefficient[:dot] + "." + coefficient[dot:]
+    if left != dot:
+        text += f"E{left - dot:+d}"
+    return sign + text

@@ -36,10 +36,8 @@ converter calls and which does not call it.
 
 from __future__ import annotations
 
+import math
 import os
-import re
-from collections.abc import Callable, Iterable, Iterator
-from fractions import Fraction
 from itertools import chain
 
 from formats import _core
@@ -64,6 +62,7 @@ from formats.source import Source
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterable, Iterator
     from typing import Any, TypeVar
 
     T = TypeVar("T")
@@ -82,15 +81,19 @@ ParameterClasses = _core.ParameterClasses
 
 
 # (G20 HP=1 is an Okuma OSP lathe's home position return, no units code: okuma-lathe)
-_UNITS_CODE = re.compile(r"(?<![A-Z0-9.])G0*(20|21|70|71)(?![0-9.])(?![ \t]*HP[ \t]*=)")
-_DECIMAL_WORD = re.compile(r"[XYZIJKF][+-]?[0-9]*\.[0-9]*")
+# (patterns, compiled by re's own cache at the first detection: a conversion given --from
+# does not import re; docs/benchmarks.md, perf40)
+_UNITS_CODE = r"(?<![A-Z0-9.])G0*(20|21|70|71)(?![0-9.])(?![ \t]*HP[ \t]*=)"
+_DECIMAL_WORD = r"[XYZIJKF][+-]?[0-9]*\.[0-9]*"
 
 
 def detect_source(head: str) -> tuple[Profile, list[str]]:
     """A reading of a program whose format was not given, and what was assumed (``--from``)."""
+    import re
+
     notes = []
     text = re.sub(r"\([^)\n]*\)|;[^\n]*", "", head.upper())
-    units = _UNITS_CODE.search(text)
+    units = re.search(_UNITS_CODE, text)
     profile = NEUTRAL
     if units is None:
         notes.append("source: no units code (G70/G71, G20/G21) found, read as metric")
@@ -100,7 +103,7 @@ def detect_source(head: str) -> tuple[Profile, list[str]]:
             profile = with_units_codes(profile, "G20", "G21")
         notes.append(f"source: units codes G{code // 10 * 10}/G{code // 10 * 10 + 1} "
                      f"(G{code} found)")
-    if _DECIMAL_WORD.search(text):
+    if re.search(_DECIMAL_WORD, text):
         notes.append("source: explicit decimal sign (decimal points found)")
     else:
         notes.append("source: no decimal points found; read as explicit decimal (whole "
@@ -260,18 +263,28 @@ class Converter:
         self.finish()
 
     def finish(self) -> ConvertStats:
-        """The statistics, with the largest rounding per address as exact fractions."""
+        """The statistics, with the largest rounding per address exact: (numerator,
+        denominator) in lowest terms (:attr:`ConvertStats.rounding`)."""
         core = self._core.stats
         stats = self.stats
         stats.blocks, stats.words, stats.changed = core["blocks"], core["words"], core["changed"]
         stats.said(self._core.take_notes())
-        stats.rounding = {letter: Fraction(e, d) for letter, e, d in core["rounding"]}
+        stats.rounding = {letter: _lowest(e, d) for letter, e, d in core["rounding"]}
         stats.body_units = self._core.body_units()
         stats.left_as_written, stats.left_at = _left(core["left_as_written"])
         stats.left_statements = core["left_statements"]
         stats.never_read, stats.never_read_at = _left(core["never_read"])
         stats.machine_units = core["machine_units"]
         return stats
+
+
+def _lowest(num: int, den: int) -> tuple[int, int]:
+    """``num / den`` as ``Fraction(num, den)`` holds it: in lowest terms, the denominator
+    positive (without importing fractions: docs/benchmarks.md, perf40)."""
+    if den < 0:
+        num, den = -num, -den
+    common = math.gcd(num, den)
+    return num // common, den // common
 
 
 def _left(count: tuple[int, int, int]) -> tuple[int, tuple[int, int] | None]:

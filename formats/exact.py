@@ -24,7 +24,7 @@ TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.m
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["Exact", "Text", "Texts", "exact_fields", "plain_text", "text"]
+__all__ = ["Exact", "Text", "Texts", "exact_fields", "plain_text", "table_keys", "text"]
 
 
 class Text(str):
@@ -125,6 +125,12 @@ def text(obj: Any, name: str) -> Any:
     writes it (a pair of texts, a table of them), without making the ``Decimal`` where the
     text is plain digits; None for None."""
     return _text(obj.__dict__[name])
+
+
+def table_keys(obj: Any, name: str) -> list[Any]:
+    """The keys of the exact table field ``name`` of ``obj`` (a limits' axes), without making
+    its ``Decimal`` values."""
+    return list(obj.__dict__[name])
 
 
 def shown(value: Text) -> str:

@@ -15,7 +15,7 @@ import os
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import OWN_TABLE, TABLES, Code, CodeTable
 from formats.errors import FormatSpecError, ProfileError, TapegateError
-from formats.exact import Text, Texts, exact_fields, shown
+from formats.exact import Text, Texts, exact_fields, shown, table_keys
 from formats.parser import Dialect
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, count_format
@@ -487,7 +487,9 @@ def sample_limits(builtin: bool, on_base: bool, own: dict[str, Any],
     if not on_base:
         return frozenset()
     sample = {key for key in ("feed_max", "spindle_max", "tool_max") if key not in own}
-    if any(axis not in own for axis in limits.axes):
+    # (the axes' names, not their travels: no Decimal made, and no decimal imported, for a
+    # conversion to a user's profile on a base; docs/benchmarks.md, perf40)
+    if any(axis not in own for axis in table_keys(limits, "axes")):
         sample.add("travel")
     return frozenset(sample)
 

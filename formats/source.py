@@ -6,14 +6,14 @@ like text, so every command accepts both. Text is read in chunks: memory stays f
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 from formats.parser import CHUNK, decode_chunks, read_chunks
 from formats.records import NEW, Record, field, new, record
 from formats.tape import TapeDecoder, TapeIssue, detect, is_tape_image
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Iterator
+
     from formats.tape import Code
 
 

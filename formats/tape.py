@@ -14,18 +14,40 @@ removed on decoding (leader, trailer, and anywhere else) and counted.
 
 from __future__ import annotations
 
-import re
-from collections.abc import Iterable, Iterator
-
 from formats.errors import TapeError
 from formats.records import NEW, FrozenRecord, Record, field, init_fields, new, record
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    import re
+    from collections.abc import Callable, Iterable, Iterator
     from typing import Literal
 
     Code = Literal["iso", "eia"]
     Content = Literal["iso", "eia", "text", "binary"]
+
+
+class _Lazy:
+    """A regular expression compiled when first used (called): a conversion of text files
+    reads no tape, and ``re`` (with ``enum``, ``collections``, ``functools``) was 25M
+    instructions of its serial start-up (docs/benchmarks.md, perf40)."""
+
+    __slots__ = ("_source", "_compiled")
+
+    def __init__(self, source: str | Callable[[], str]) -> None:
+        self._source = source
+        self._compiled: re.Pattern[str] | None = None
+
+    def __call__(self) -> re.Pattern[str]:
+        compiled = self._compiled
+        if compiled is None:
+            import re
+
+            source = self._source
+            compiled = self._compiled = re.compile(source if isinstance(source, str)
+                                                   else source())
+        return compiled
+
 
 # ---------------------------------------------------------------------------------------------
 # ISO
@@ -70,7 +92,15 @@ EIA_DECODE: dict[int, str] = {byte: char for char, byte in EIA_TABLE.items()}
 # error names the first such character); then every character is ASCII, and bytes.translate
 # maps it to its tape byte, tape fill (NUL, DEL) to itself. CR is dealt with before (TapeEncoder).
 _EIA_ENCODE = bytes(EIA_TABLE.get(chr(c), EIA_DEL if c == 0x7F else 0) for c in range(256))
-_EIA_CANNOT = re.compile("[^" + re.escape("".join(EIA_TABLE) + "\x00\x7f") + "]")
+
+
+def _eia_cannot() -> str:
+    import re
+
+    return "[^" + re.escape("".join(EIA_TABLE) + "\x00\x7f") + "]"
+
+
+_EIA_CANNOT = _Lazy(_eia_cannot)
 
 
 @record
@@ -195,7 +225,7 @@ class TapeEncoder:
                 out.append(self._encode(chunk[at:]))
                 break
             if self._held_cr:
-                end = _CR_OR_BLANK.match(chunk, at).end()  # type: ignore[union-attr]
+                end = _CR_OR_BLANK().match(chunk, at).end()  # type: ignore[union-attr]
                 crs = chunk.count("\r", at, end)
                 self._held_cr += crs
                 self._held_blank += end - at - crs
@@ -210,7 +240,7 @@ class TapeEncoder:
                 else:
                     raise self._inside_line()
             if self._bol:  # CRs just after an LF (FANUC's LF CR CR) or at the text's start
-                end = _CRS.match(chunk, at).end()  # type: ignore[union-attr]
+                end = _CRS().match(chunk, at).end()  # type: ignore[union-attr]
                 self.notes.cr_by_lf += end - at
                 self._column += end - at  # columns count them, as the check's and send's do
                 at = end
@@ -265,7 +295,7 @@ class TapeEncoder:
             return b""
         notes = self.notes
         if self.code == "iso":
-            bad = _ISO_CANNOT.search(text)
+            bad = _ISO_CANNOT().search(text)
             if bad:
                 raise self._cannot(text, bad.start(), "ISO 7-bit code")
             body = text.encode("ascii")
@@ -276,7 +306,7 @@ class TapeEncoder:
             text = self._before_eof(text)
             if not text:
                 return b""
-        bad = _EIA_CANNOT.search(text)
+        bad = _EIA_CANNOT().search(text)
         end = bad.start() if bad else len(text)
         # a '%' inside a block, before that: found by str.find (a program holds few)
         at = text.find("%", 0, end)
@@ -349,11 +379,11 @@ def encode_stream(chunks: Iterable[str], code: Code = "iso", *, leader: int = 0,
     yield bytes(trailer)
 
 
-_ISO_CANNOT = re.compile(r"[^\x00-\x7f]")
+_ISO_CANNOT = _Lazy(r"[^\x00-\x7f]")
 DOS_EOF = "\x1a"  # Ctrl-Z, the end of file DOS editors write after the program
 _BLANK_AFTER_EOF = " \t\r\n\x00" + DOS_EOF
-_CRS = re.compile("\r*")
-_CR_OR_BLANK = re.compile("[\r \t]*")
+_CRS = _Lazy("\r*")
+_CR_OR_BLANK = _Lazy("[\r \t]*")
 
 
 def _cannot(ch: str, code: str, file: str | None, line: int, column: int) -> TapeError:
@@ -450,6 +480,8 @@ class _Table:
         # translate: every byte without an issue to its (ASCII) character
         self.translate = bytes(ord(c) if len(c) == 1 and c.isascii() else 0 for c in self.chars)
         flagged = bytes(b for b in range(256) if self.issues[b])
+        import re  # (a tape's decoding: not at the module's import)
+
         self.flagged = re.compile(b"[" + b"".join(re.escape(bytes([b])) for b in flagged) + b"]"
                                   if flagged else b"(?!)")
 
@@ -606,7 +638,7 @@ def decode(data: bytes, code: Code | None = None) -> Decoded:
 
 # The C0 controls a text NC file may hold: blank, TAB, LF, VT, FF, CR, the DC1-DC4 of a
 # punch or reader dump, DOS's end of file Ctrl-Z; DEL is erase.
-_TEXT_CONTROLS = re.compile("[\x01-\x08\x0e-\x10\x15-\x19\x1b-\x1f]")
+_TEXT_CONTROLS = _Lazy("[\x01-\x08\x0e-\x10\x15-\x19\x1b-\x1f]")
 # More foreign bytes than this share of the sample, and a file is no NC program in any code.
 _FOREIGN_SHARE = 0.02
 # A file found to be a tape by its first end of block (with the parity of its code) stays one
@@ -639,7 +671,7 @@ def identify(data: bytes) -> tuple[Content, int]:
                 # 0xA0-0xFF are text, its C1 controls 0x80-0x9F are not
                 text = core.decode("latin-1")
                 text = "".join("\ufffd" if "\x80" <= c <= "\x9f" else c for c in text)
-        foreign = (text.count("\ufffd") + len(_TEXT_CONTROLS.findall(text))
+        foreign = (text.count("\ufffd") + len(_TEXT_CONTROLS().findall(text))
                    + text.count("\x00"))
     else:
         foreign = len(decode(sample, found).issues)

@@ -45,7 +45,9 @@ def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -
     bodies = tuple(stats.body_units)
     units = options.units if options is not None else None
     return DiffOptions(tolerance=HALF_STEP, motion=True, pair="position", word_order=True,
-                       bounds=dict(stats.rounding), parameters="address",
+                       bounds={letter: Fraction(num, den)
+                               for letter, (num, den) in stats.rounding.items()},
+                       parameters="address",
                        unstated="written" if written else "adopt", same_text=True,
                        bodies_a=bodies,
                        bodies_b=tuple((label, units) for label, _ in bodies) if units else bodies)

@@ -132,7 +132,7 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
     rows = []
     failed = 0
     for stats in results:
-        letter, worst = stats.largest_rounding()
+        letter, worst = stats.largest_rounding_text()
         if stats.error:
             failed += 1
             echo(stats.error, err=True)
@@ -194,7 +194,7 @@ def summary_json(results: list[ConvertStats], dry_run: bool) -> str:
 
     files = []
     for stats in results:
-        letter, worst = stats.largest_rounding()
+        letter, worst = stats.largest_rounding_text()
         files.append({
             "file": stats.file, "output": stats.output or None, "blocks": stats.blocks,
             "words_changed": stats.changed,
@@ -394,8 +394,6 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     on disk). ``spill``: a folder where a file's notes beyond the first thousand wait, or a
     function that gives it (:class:`SpillFolder`; see ConvertStats)."""
     names = names or {}
-    from collections import deque
-
     from formats.convert import sync_folders
     from tapegate.workers import file_sizes, ordered_map
 
@@ -416,10 +414,12 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
 
             bar = tqdm(total=len(work), unit="file", file=sys.stderr)
         results = []
-        waiting: deque[tuple[ConvertStats, Commit | None]] = deque()
+        # (a list: it holds HELD * threads + 1 at most, and collections is not imported for
+        # a deque; docs/benchmarks.md, perf40)
+        waiting: list[tuple[ConvertStats, Commit | None]] = []
 
         def settle() -> None:
-            stats, commit = waiting.popleft()
+            stats, commit = waiting.pop(0)
             error = commit.wait() if commit is not None else None
             if error is not None:
                 stats.drop_notes()

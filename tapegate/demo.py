@@ -47,7 +47,7 @@ def main() -> None:
     click.secho("\n4. Convert it for an inch Fanuc-style control", bold=True)
     inch, stats = convert_text(sample, ConvertOptions(load_profile("fanuc-mill"), profile,
                                                       units="inch"))
-    letter, worst = stats.largest_rounding()
+    letter, worst = stats.largest_rounding_text()
     for before, after in list(zip(sample.splitlines(), inch.splitlines(), strict=True))[4:7]:
         click.echo(f"   {before:34} -> {after}")
     click.echo(f"   {stats.changed} words changed, largest rounding {letter} {worst} in")

@@ -6,10 +6,12 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from decimal import Decimal, InvalidOperation
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
+
+if TYPE_CHECKING:
+    from decimal import Decimal
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -47,6 +49,8 @@ class Height(click.ParamType):  # type: ignore[type-arg]  # (generic in recent c
 
     def convert(self, value: Any, param: click.Parameter | None,
                 ctx: click.Context | None) -> Decimal:
+        from decimal import Decimal, InvalidOperation  # (a conversion's start-up does without)
+
         if isinstance(value, Decimal):
             number = value
         else:

@@ -384,8 +384,11 @@ def test_the_size_of_a_string_is_no_value_to_convert():
 
 def test_largest_rounding_reported_per_address():
     _, stats = convert_text("N1 X1.2345 Y1.2\n", ConvertOptions(ISO, NEUTRAL))
-    assert stats.rounding == {"X": Fraction(5, 10000)}
+    # exact, as (numerator, denominator) in lowest terms: 0.0005 is 1/2000
+    assert stats.rounding == {"X": (1, 2000)}
+    assert Fraction(*stats.rounding["X"]) == Fraction(5, 10000)
     assert stats.largest_rounding() == ("X", Decimal("0.0005"))
+    assert stats.largest_rounding_text() == ("X", "0.0005")
 
 
 # -- properties ---------------------------------------------------------------------------------

@@ -318,7 +318,17 @@ def test_the_options_are_read_as_click_reads_them(place: Path, command: click.Co
     # the GIL")
     (["convert", "many", "--out-dir", "out", "--force", "--to", "target.toml", "-j", "2"],
      ("click", "pathlib", "threading", "urllib", "ipaddress"), "total: 3 files "),
-], ids=["check", "convert", "convert-batch"])
+    # a batch with a change of units, so with roundings, its source's format given: no
+    # fractions and no decimal (with numbers), no re (with enum, collections, functools),
+    # whose imports were most of what was left of its serial start-up; the largest rounding
+    # is written from the exact integers, a tape's patterns compiled when a tape is read
+    # (docs/benchmarks.md, perf40)
+    (["convert", "many", "--out-dir", "out", "--force", "--from", "fanuc-mill", "--to",
+      "target.toml", "--units", "inch", "-j", "2"],
+     ("click", "pathlib", "threading", "fractions", "decimal", "_decimal", "numbers", "re",
+      "enum", "collections", "functools"),
+     "I 0.0000497"),
+], ids=["check", "convert", "convert-batch", "convert-batch-units"])
 def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
                                                unused: tuple[str, ...], shown: str) -> None:
     """The point of the entry point's own reading: click's import is half the start-up of a
