@@ -1257,7 +1257,50 @@ impl Checker {
                 if let Some(why) = why {
                     self.shift_note(&w.token(), lost, (b.line, w.column), &why);
                 }
+                if matches!(code, 92 | 50) && self.machine.taken() == Some(AxesTaken::Set) {
+                    self.set_stands(b, named);
+                }
             }
+        }
+    }
+
+    /// A G92 (a lathe's G50) whose words set the coordinates (`named`): the tool stands at
+    /// each named axis's value in the new coordinates, which goes to its span (plus the
+    /// shift after it). Where the shift was followed that is where the tool stood before
+    /// it, already in the span; where it was not (`G92 X0 Y0 Z0` at a program's start, the
+    /// position before it not known) it starts the new span where the tool stands, so that
+    /// the next moves span from there (review 39, finding 1). Not under a frame, in units
+    /// not known, in a block that changes the units, or for a FANUC lathe's U and W.
+    #[cold]
+    #[inline(never)]
+    fn set_stands(&mut self, b: &BlockView<'_>, named: u32) {
+        let settings = &self.machine.settings;
+        if self.frames.on != 0
+            || self.units_unknown
+            || self
+                .values
+                .gs()
+                .iter()
+                .any(|&g| settings.units_code(g).is_some())
+        {
+            return;
+        }
+        let factor = self.to_profile_units(false);
+        let fanuc_lathe = self.config.modal.fanuc_lathe;
+        for a in crate::modal::places(crate::modal::axis_places(named)) {
+            if fanuc_lathe && matches!(AXES[a], b'U' | b'W') {
+                continue;
+            }
+            let Some(value) = self.values.get(AXES[a]) else {
+                continue;
+            };
+            let at = value.to_f64() * factor + self.shifts.total[a];
+            let column = b
+                .words
+                .iter()
+                .find(|w| w.letter == AXES[a])
+                .map_or(1, |w| w.column);
+            self.add_to_span(a, at, false, b.line, || column, "");
         }
     }
 
@@ -2444,6 +2487,32 @@ mod tests {
         // X1100. is 700, 1100
         let body = "G90 G00 X-400.\nG92 X0\nX900.\nX1100.\n";
         assert_eq!(at(linuxcnc, body, Rule::TravelExceeded), [(5, 1)]);
+    }
+
+    /// Review 39, finding 1: a G92 whose shift is not followed (the position before it not
+    /// known: `G92 X0 Y0 Z0` at a program's start, or after G91 moves from the unknown start)
+    /// starts the new span where the tool stands, at its words' values, so the next moves
+    /// span from there. Travel X -500 to 500.
+    #[test]
+    fn a_g92_puts_where_the_tool_stands_in_the_new_span() {
+        for family in [Family::MacroB, Family::LinuxCnc] {
+            let config = of_family(family);
+            // the tool at X0 of the new coordinates goes 1100: more than 1000 of travel
+            let start = "G21 G90\nG92 X0 Y0 Z0\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), start, Rule::TravelExceeded), [(4, 4)]);
+            // G91 from the unknown start: the tool at X-500. of the new ones goes to 600
+            let g91 = "G21 G91\nG0 X-200. Y0\nG92 X-500.\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), g91, Rule::TravelExceeded), [(5, 4)]);
+            // within the travel from there: nothing
+            let inside = "G21 G90\nG92 X0 Y0 Z0\nG0 X900.\nX-50.\n";
+            assert_eq!(at(config.clone(), inside, Rule::TravelExceeded), []);
+            // a shift followed: the point is where the tool stood, nothing changes (X450.
+            // then X-1000. of a zero at X1050.: 50, a span of 400; X1100. after G92 X0 at X-400. is 700)
+            let followed = "G90 G00 X450.\nG92 X-600.\nG01 X-1000. F100.\n";
+            assert_eq!(at(config.clone(), followed, Rule::TravelExceeded), []);
+            let followed = "G90 G00 X-400.\nG92 X0\nX1100.\n";
+            assert_eq!(at(config, followed, Rule::TravelExceeded), [(4, 1)]);
+        }
     }
 
     /// Review 38, finding 11: a G53 position written in the other unit system is said in
