@@ -1528,7 +1528,7 @@ impl Checker {
                 .enumerate()
                 .find(calling)
                 .map_or_else(|| "the call".to_string(), |(_, w)| w.token());
-            if let Some(p) = b.words.iter().find(|w| w.letter == b'P') {
+            if let Some(p) = b.words.iter().find(|w| matches!(w.letter, b'P' | b'Q')) {
                 token = format!("{token} {}", p.token());
             }
             self.shifts.call_at = Some((token, b.line));
