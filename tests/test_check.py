@@ -225,6 +225,10 @@ def test_a_g92_and_a_call_under_a_shift_keep_the_span_of_where_the_tool_goes(
     assert "from -500 to 150" in g91[0][2]
     fanuc = found("f.nc", "%\nO1\nG21 G90\nG92 X0 Y0 Z0\nG0 X1600.\nM30\n%\n", "fanuc-mill")
     assert [f[:2] for f in fanuc] == [(5, "TG601")]
+    # a FANUC lathe's G50 X Z (Z travel -800 to 300: 1100)
+    lathe = found("l.nc", "%\nO1\nG21 G18\nG50 X0 Z0\nG0 Z1200.\nM30\n%\n", "fanuc-lathe")
+    assert [f[:2] for f in lathe] == [(5, "TG601")]
+    assert "from 0 to 1200" in lathe[0][2]
     # a G92 at a known position: where the tool stood, nothing new
     known = "%\nO1\nG21 G90\nG0 X700.\nG92 X0\nG0 X-100.\nM30\n%\n"
     assert found("k.nc", known, "fanuc-mill") == []
