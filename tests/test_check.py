@@ -200,6 +200,45 @@ def test_a_subprogram_after_m30_is_read_in_the_units_of_its_calls(tmp_path: Path
     assert all("no units code by here" in f[2] for f in found)
 
 
+def test_a_g92_and_a_call_under_a_shift_keep_the_span_of_where_the_tool_goes(
+        tmp_path: Path) -> None:
+    """Review 39: `G92 X0 Y0` where the position before it is not known puts the tool at X0
+    of the new coordinates, which starts the new span (finding 1: `G0 X650` then passed a
+    600 mm travel on a LinuxCNC profile of the user's; `G0 X1600.` the fanuc-mill's 1524);
+    a subprogram after M30 runs under the G52 of its call, so its body is not read in the
+    work system the Haas's M30 gives back (finding 2): the span starts again, noted."""
+    def found(name: str, program: str, profile: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", profile, "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())]
+
+    lc = tmp_path / "lc.toml"
+    lc.write_text('name = "lc"\nbase = "linuxcnc"\n[limits]\nX = [-300, 300]\n'
+                  'Y = [-300, 300]\nZ = [-300, 300]\n')
+    g6 = found("g6.ngc", "G21 G90\nG92 X0 Y0\nG0 X650\nM2\n", str(lc))
+    assert [f[:2] for f in g6] == [(3, "TG601")]
+    assert "from 0 to 650" in g6[0][2]
+    g91 = found("g7.ngc", "G21 G91\nG0 X-200 Y0\nG92 X-500\nG0 X650\nM2\n", str(lc))
+    assert [f[:2] for f in g91] == [(4, "TG601")]
+    assert "from -500 to 150" in g91[0][2]
+    fanuc = found("f.nc", "%\nO1\nG21 G90\nG92 X0 Y0 Z0\nG0 X1600.\nM30\n%\n", "fanuc-mill")
+    assert [f[:2] for f in fanuc] == [(5, "TG601")]
+    # a FANUC lathe's G50 X Z (Z travel -800 to 300: 1100)
+    lathe = found("l.nc", "%\nO1\nG21 G18\nG50 X0 Z0\nG0 Z1200.\nM30\n%\n", "fanuc-lathe")
+    assert [f[:2] for f in lathe] == [(5, "TG601")]
+    assert "from 0 to 1200" in lathe[0][2]
+    # a G92 at a known position: where the tool stood, nothing new
+    known = "%\nO1\nG21 G90\nG0 X700.\nG92 X0\nG0 X-100.\nM30\n%\n"
+    assert found("k.nc", known, "fanuc-mill") == []
+    h5 = ("%\nO1000\nG20 G90 G54\nG0 X-25. Y0\nG52 X30.\nG0 X0 Y0\nM97 P100\nM30\n"
+          "N100 G0 X35.\nM99\n%\n")
+    notes = [f for f in found("h5.nc", h5, "haas-mill") if f[2].startswith("M30")]
+    assert [f[:2] for f in notes] == [(8, "TG140")]
+    assert "(M97 P100 of line 7)" in notes[0][2]
+
+
 def test_a_units_change_keeps_where_the_machine_is():
     """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
     at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the

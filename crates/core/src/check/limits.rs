@@ -118,7 +118,7 @@ const XYZ: u16 = 0b111;
 pub(super) struct Shifts {
     /// Some axis has a shift in force, or a local shift not known: the spans take the walk
     /// that adds it ([`Checker::limits`]), and the end of the program is looked at.
-    on: bool,
+    pub(super) on: bool,
     /// For each axis of [`AXES`], in the profile's units: the program's coordinates' zero in
     /// the coordinates of the axis's span.
     total: [f64; 9],
@@ -133,13 +133,20 @@ pub(super) struct Shifts {
     /// The note of an end of the program that started spans again ([`Checker::shift_end`]):
     /// its code, line and column, and the axes whose spans it dropped. Said where a position
     /// after it goes to one of those spans: most programs end there, and lose nothing.
-    end_note: Option<(String, usize, usize, u16)>,
+    end_note: Option<(String, usize, usize, u16, String)>,
+    /// The axes shifted (or with a local shift not known) where the program in hand made a
+    /// call (M97, M98, G65, G66), and the first such call's code and line
+    /// ([`Checker::shift_call`]): a subprogram after the end runs under that shift, not the
+    /// one at the end, so at the end their spans start again.
+    call: u16,
+    call_at: Option<(String, usize)>,
 }
 
 impl Shifts {
     fn settle(&mut self) {
         self.on = self.local_unknown != 0
             || self.end_note.is_some()
+            || self.call != 0
             || self
                 .total
                 .iter()
@@ -1257,7 +1264,50 @@ impl Checker {
                 if let Some(why) = why {
                     self.shift_note(&w.token(), lost, (b.line, w.column), &why);
                 }
+                if matches!(code, 92 | 50) && self.machine.taken() == Some(AxesTaken::Set) {
+                    self.set_stands(b, named);
+                }
             }
+        }
+    }
+
+    /// A G92 (a lathe's G50) whose words set the coordinates (`named`): the tool stands at
+    /// each named axis's value in the new coordinates, which goes to its span (plus the
+    /// shift after it). Where the shift was followed that is where the tool stood before
+    /// it, already in the span; where it was not (`G92 X0 Y0 Z0` at a program's start, the
+    /// position before it not known) it starts the new span where the tool stands, so that
+    /// the next moves span from there (review 39, finding 1). Not under a frame, in units
+    /// not known, in a block that changes the units, or for a FANUC lathe's U and W.
+    #[cold]
+    #[inline(never)]
+    fn set_stands(&mut self, b: &BlockView<'_>, named: u32) {
+        let settings = &self.machine.settings;
+        if self.frames.on != 0
+            || self.units_unknown
+            || self
+                .values
+                .gs()
+                .iter()
+                .any(|&g| settings.units_code(g).is_some())
+        {
+            return;
+        }
+        let factor = self.to_profile_units(false);
+        let fanuc_lathe = self.config.modal.fanuc_lathe;
+        for a in crate::modal::places(crate::modal::axis_places(named)) {
+            if fanuc_lathe && matches!(AXES[a], b'U' | b'W') {
+                continue;
+            }
+            let Some(value) = self.values.get(AXES[a]) else {
+                continue;
+            };
+            let at = value.to_f64() * factor + self.shifts.total[a];
+            let column = b
+                .words
+                .iter()
+                .find(|w| w.letter == AXES[a])
+                .map_or(1, |w| w.column);
+            self.add_to_span(a, at, false, b.line, || column, "");
         }
     }
 
@@ -1401,6 +1451,13 @@ impl Checker {
         for i in 0..AXES.len() {
             let local_known = self.shifts.local_unknown & 1 << i == 0;
             let (total, local) = (self.shifts.total[i], self.shifts.local[i]);
+            if self.shifts.call & 1 << i != 0 {
+                // (a subprogram after the end runs under its call's shift, whatever the end's)
+                if self.restart_span(i, true) {
+                    lost |= 1 << i;
+                }
+                continue;
+            }
             if total == 0.0 && local == 0.0 && local_known {
                 continue;
             }
@@ -1419,7 +1476,62 @@ impl Checker {
                 .iter()
                 .find(|w| w.letter == b'M')
                 .map_or(("M30".to_string(), 1), |w| (w.token(), w.column));
-            self.shifts.end_note = Some((token, b.line, column, lost));
+            let why = match self.shifts.call_at.take() {
+                Some((call, call_line)) if lost & self.shifts.call != 0 => format!(
+                    "a subprogram after the end runs under the shift in force where it is \
+                     called ({call} of line {call_line}), which the checker does not carry to \
+                     its body"
+                ),
+                _ => "the end of the program may end the shift in force or keep it, as the \
+                      control's parameters say"
+                    .to_string(),
+            };
+            self.shifts.end_note = Some((token, b.line, column, lost, why));
+        }
+        self.shifts.call = 0;
+        self.shifts.call_at = None;
+        self.shifts.settle();
+    }
+
+    /// A call (M97, M98, G65, G66) made under a shift: the axes shifted there, or whose local
+    /// shift is not known, are kept for the end of the program ([`Checker::shift_end`]). A
+    /// Haas's M97 and M98 run a subprogram written after M30 (a sequence number or an O
+    /// number of the file) when they are called, under the caller's G52 (review 39, finding
+    /// 2); read after the end, its body would be taken under the shift left there.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn shift_call(&mut self, b: &BlockView<'_>) {
+        let mut axes = self.shifts.local_unknown;
+        for i in 0..AXES.len() {
+            if self.shifts.total[i] != 0.0 || self.shifts.local[i] != 0.0 {
+                axes |= 1 << i;
+            }
+        }
+        if axes == 0 {
+            return;
+        }
+        self.shifts.call |= axes;
+        if self.shifts.call_at.is_none() {
+            let calling = |(i, w): &(usize, &crate::word::Word<'_>)| {
+                let code = self.readable[*i]
+                    .filter(|v| v.is_whole())
+                    .map(|v| v.trunc());
+                match w.letter {
+                    b'M' => matches!(code, Some(97 | 98)),
+                    b'G' => matches!(code, Some(65 | 66)),
+                    _ => false,
+                }
+            };
+            let mut token = b
+                .words
+                .iter()
+                .enumerate()
+                .find(calling)
+                .map_or_else(|| "the call".to_string(), |(_, w)| w.token());
+            if let Some(p) = b.words.iter().find(|w| matches!(w.letter, b'P' | b'Q')) {
+                token = format!("{token} {}", p.token());
+            }
+            self.shifts.call_at = Some((token, b.line));
         }
         self.shifts.settle();
     }
@@ -1429,12 +1541,10 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn end_noted(&mut self) {
-        let Some((token, line, column, lost)) = self.shifts.end_note.take() else {
+        let Some((token, line, column, lost, why)) = self.shifts.end_note.take() else {
             return;
         };
-        let why = "the end of the program may end the shift in force or keep it, as the \
-                   control's parameters say";
-        self.shift_note(&token, lost, (line, column), why);
+        self.shift_note(&token, lost, (line, column), &why);
         self.shifts.settle();
     }
 
@@ -2444,6 +2554,75 @@ mod tests {
         // X1100. is 700, 1100
         let body = "G90 G00 X-400.\nG92 X0\nX900.\nX1100.\n";
         assert_eq!(at(linuxcnc, body, Rule::TravelExceeded), [(5, 1)]);
+    }
+
+    /// Review 39, finding 1: a G92 whose shift is not followed (the position before it not
+    /// known: `G92 X0 Y0 Z0` at a program's start, or after G91 moves from the unknown start)
+    /// starts the new span where the tool stands, at its words' values, so the next moves
+    /// span from there. Travel X -500 to 500.
+    #[test]
+    fn a_g92_puts_where_the_tool_stands_in_the_new_span() {
+        for family in [Family::MacroB, Family::LinuxCnc] {
+            let config = of_family(family);
+            // the tool at X0 of the new coordinates goes 1100: more than 1000 of travel
+            let start = "G21 G90\nG92 X0 Y0 Z0\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), start, Rule::TravelExceeded), [(4, 4)]);
+            // G91 from the unknown start: the tool at X-500. of the new ones goes to 600
+            let g91 = "G21 G91\nG0 X-200. Y0\nG92 X-500.\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), g91, Rule::TravelExceeded), [(5, 4)]);
+            // within the travel from there: nothing
+            let inside = "G21 G90\nG92 X0 Y0 Z0\nG0 X900.\nX-50.\n";
+            assert_eq!(at(config.clone(), inside, Rule::TravelExceeded), []);
+            // a shift followed: the point is where the tool stood, nothing changes (X450.
+            // then X-1000. of a zero at X1050.: 50, a span of 400; X1100. after G92 X0 at X-400. is 700)
+            let followed = "G90 G00 X450.\nG92 X-600.\nG01 X-1000. F100.\n";
+            assert_eq!(at(config.clone(), followed, Rule::TravelExceeded), []);
+            let followed = "G90 G00 X-400.\nG92 X0\nX1100.\n";
+            assert_eq!(at(config, followed, Rule::TravelExceeded), [(4, 1)]);
+        }
+    }
+
+    /// Review 39, finding 2 (the conservative half): a subprogram after the end (a Haas's M97
+    /// sequence, an O number an M98 names) runs under the shift at its call, not the one at
+    /// the end: where a call was made under a shift, the shifted axes' spans start again at
+    /// the end, with the note naming the call. Travel X -500 to 500.
+    #[test]
+    fn a_subprogram_after_the_end_is_not_read_under_the_end_s_shift() {
+        let fanuc = of_family(Family::MacroB);
+        let mut haas = of_family(Family::MacroB);
+        haas.haas = true;
+        let m97 = "G90 G00 X-400. Y0\nG52 X300.\nX0 Y0\nM97 P100\nM30\nN100 X450.\nM99\n";
+        // the Haas took its G52 as removed at M30 and read X450. in the work system: 850
+        // from X-400., silently (the sub runs at X750.)
+        assert_eq!(at(haas.clone(), m97, Rule::TravelExceeded), []);
+        let noted = findings(haas.clone(), &program(m97), Rule::NotFollowed);
+        let end: Vec<_> = noted
+            .iter()
+            .filter(|f| f.message.starts_with("M30"))
+            .collect();
+        assert_eq!(end.len(), 1, "{noted:?}");
+        assert_eq!((end[0].line, end[0].column), (6, 1));
+        assert!(
+            end[0].message.contains("(M97 P100 of line 5)"),
+            "{}",
+            end[0].message
+        );
+        // the G52 cancelled before M30: the sub still runs under it
+        let m98 = "G90 G00 X-400. Y0\nG52 X300.\nX0 Y0\nM98 P2000\nG52 X0\nM30\n\
+                   O2000\nX450.\nM99\n";
+        for config in [fanuc.clone(), haas.clone()] {
+            let noted = findings(config, &program(m98), Rule::NotFollowed);
+            assert!(
+                noted
+                    .iter()
+                    .any(|f| f.message.contains("(M98 P2000 of line 5)")),
+                "{noted:?}"
+            );
+        }
+        // no shift at the call: the Haas's end removes the G52 as before (X-550. is 1050
+        // from X500.)
+        let before = "G90 G00 X-400.\nM98 P2000\nG52 X100.\nX400.\nM30\nX-550.\n";
+        assert_eq!(at(haas, before, Rule::TravelExceeded), [(7, 1)]);
     }
 
     /// Review 38, finding 11: a G53 position written in the other unit system is said in

@@ -2113,6 +2113,9 @@ impl Checker {
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
             self.call_made(b);
+            if self.shifts.on {
+                self.shift_call(b);
+            }
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.machine.forget();
