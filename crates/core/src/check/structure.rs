@@ -1417,15 +1417,7 @@ impl Checker {
         }
         let name = super::params::named_parameter(written);
         // EXISTS[#<name>] asks whether it is defined: no read
-        let before: Vec<u8> = text[..start]
-            .iter()
-            .rev()
-            .copied()
-            .filter(|&c| !blank(c))
-            .skip_while(|&c| c == b'[')
-            .take(6)
-            .collect();
-        if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
+        if in_exists(text, start) {
             return None;
         }
         Some(name)
@@ -2207,15 +2199,7 @@ fn body_unassigned(text: &[u8], assigned: &HashSet<Vec<u8>>) -> Option<Vec<u8>> 
         if name.get(2) == Some(&b'_') || assigned.contains(&name) {
             continue;
         }
-        let before: Vec<u8> = text[..start]
-            .iter()
-            .rev()
-            .copied()
-            .filter(|&c| !blank(c))
-            .skip_while(|&c| c == b'[')
-            .take(6)
-            .collect();
-        if before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe") {
+        if in_exists(text, start) {
             continue;
         }
         return Some(name);
@@ -2223,6 +2207,19 @@ fn body_unassigned(text: &[u8], assigned: &HashSet<Vec<u8>>) -> Option<Vec<u8>> 
     None
 }
 
+/// Whether the named parameter at `start` of `text` is the argument of LinuxCNC's
+/// `EXISTS[#<name>]`, which asks whether it is defined and reads no value.
+fn in_exists(text: &[u8], start: usize) -> bool {
+    let before: Vec<u8> = text[..start]
+        .iter()
+        .rev()
+        .copied()
+        .filter(|&c| !blank(c))
+        .skip_while(|&c| c == b'[')
+        .take(6)
+        .collect();
+    before.len() == 6 && before.eq_ignore_ascii_case(b"stsixe")
+}
 #[cfg(test)]
 mod tests {
     use super::super::testing::{
