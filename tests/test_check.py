@@ -200,6 +200,36 @@ def test_a_subprogram_after_m30_is_read_in_the_units_of_its_calls(tmp_path: Path
     assert all("no units code by here" in f[2] for f in found)
 
 
+def test_a_four_digit_fanuc_reads_m98_p_as_its_repeat_count_and_number(tmp_path: Path) -> None:
+    """Review 39, finding 5: a FANUC without the 8-digit program number option (a profile
+    whose O has four digits) reads `M98 P32000` as O2000 called three times (0i-F Operator's
+    Manual, "Subprogram call (M98)": the repeat count above the number's four digits), so
+    O2000 runs in the caller's inches: X -35 to 35 in is 1778 mm, more than the 1524 of X.
+    With the 8-digit option (fanuc-mill's O08) P32000 is O32000, which the file does not
+    hold: O2000 is a program of its own."""
+    import tomllib
+
+    import formats
+
+    with open(Path(formats.__file__).parent / "profiles" / "fanuc-mill.toml", "rb") as f:
+        fanuc = tomllib.load(f)
+    four = tmp_path / "fm4.toml"
+    four.write_text('name = "fm4"\nbase = "fanuc-mill"\n' + "".join(
+        f'{key} = "{fanuc[key].replace("O08", "O04")}"\n'
+        for key in ("detailed", "detailed_inch")))
+    path = tmp_path / "p.nc"
+    path.write_text("%\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P32000\nM30\nO2000\nG0 X35.\n"
+                    "M99\n%\n")
+
+    def spans(profile: str) -> list[tuple[int, str]]:
+        out = run("check", str(path), "-p", profile, "--select", "TG601",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"]) for f in map(json.loads, out.splitlines())]
+
+    assert spans(str(four)) == [(8, "TG601")]
+    assert spans("fanuc-mill") == []
+
+
 def test_a_g92_and_a_call_under_a_shift_keep_the_span_of_where_the_tool_goes(
         tmp_path: Path) -> None:
     """Review 39: `G92 X0 Y0` where the position before it is not known puts the tool at X0

@@ -335,6 +335,16 @@ impl Checker {
         else {
             return;
         };
+        // a FANUC whose program numbers have four digits (no 8-digit option: the profile's O
+        // format) reads M98's P as the repeat count above the number's four digits, `M98
+        // P32000` O2000 three times (0i-F Operator's Manual, "Subprogram call (M98)":
+        // P____ ____; review 39, finding 5); G65's P is the number alone
+        let number = match self.config.formats.iter().find(|(l, _)| *l == b'O') {
+            Some((_, f)) if f.before == 4 && self.values.ms.contains(&98) => {
+                number % 10_i64.pow(f.before)
+            }
+            _ => number,
+        };
         let s = &self.machine.state;
         let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
         self.call_units
