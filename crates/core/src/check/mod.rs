@@ -2000,13 +2000,13 @@ impl Checker {
                     self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
                     self.values.mirror |= crate::modal::mirror_code(v);
                     self.values.decimal_g = true;
-                    lacked_code |= !self.machine.settings.lacks_g.is_empty()
-                        && self.config.decimal_code(v).is_none();
+                    lacked_code |= self.code_lacked(v);
                 }
                 b'G' => {
                     let g = v.trunc();
                     code_key.code(w, g);
                     self.values.push_g(g);
+                    // (code_lacked's whole-number half, the value known whole here)
                     lacked_code |= self.machine.settings.lacks(g);
                 }
                 b'M' => {

@@ -531,6 +531,19 @@ impl Checker {
         }
     }
 
+    /// Whether G code `v` is one the family's list lacks: a whole number its list does not
+    /// hold, or a decimal code a profile with its control's own list does not hold (ISO
+    /// 6983-1's table reports its own: TG301). The motion it leaves (`read_motion_codes`) and
+    /// where its block's axes stand (the block's reading, `AxesTaken::Unknown`) both ask it.
+    #[inline]
+    pub(super) fn code_lacked(&self, v: Dec) -> bool {
+        if v.is_whole() {
+            self.machine.settings.lacks(v.trunc())
+        } else {
+            !self.machine.settings.lacks_g.is_empty() && self.config.decimal_code(v).is_none()
+        }
+    }
+
     /// What the block's G codes are to the motion group ([`Checker::motion_codes`]): read
     /// from the profile's code list and the family's, nothing else.
     fn read_motion_codes(&self, b: &BlockView<'_>) -> MotionCodes {
@@ -557,14 +570,7 @@ impl Checker {
                 continue;
             };
             let n = v.trunc();
-            // a whole number the family's list lacks, or a decimal code a profile with its
-            // control's own list does not hold (ISO 6983-1's table reports its own: TG301)
-            let not_held = if v.is_whole() {
-                self.machine.settings.lacks(n)
-            } else {
-                !self.machine.settings.lacks_g.is_empty() && self.config.decimal_code(v).is_none()
-            };
-            if not_held {
+            if self.code_lacked(v) {
                 lacked.push((
                     w.token().to_string(),
                     dialect::g_code_remappable(self.config.family, v),
