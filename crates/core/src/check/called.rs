@@ -218,6 +218,15 @@ impl Checker {
         Some((all.least, all.most))
     }
 
+    /// The largest feed so far of the program read apart (-inf before its first).
+    #[inline]
+    pub(super) fn early_feed_max(&self) -> f64 {
+        self.early
+            .as_ref()
+            .and_then(|e| e.feed.as_ref())
+            .map_or(f64::NEG_INFINITY, |f| f.value)
+    }
+
     /// A feed in a program read apart: the largest kept (`value` in the profile's units as
     /// read from the reset state).
     #[cold]

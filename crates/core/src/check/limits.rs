@@ -1893,8 +1893,12 @@ impl Checker {
         let factor = self.to_profile_units(true);
         let f = f.filter(|_| !self.units_unknown);
         if let Some(feed) = f.filter(|_| self.early_on) {
-            let column = col(b'F');
-            self.early_feed(feed, feed.to_f64() * factor, line, column);
+            // (a program read apart keeps its largest feed: a few blocks of it, where it grows)
+            let value = feed.to_f64() * factor;
+            if self.early_feed_max() < value {
+                let column = col(b'F');
+                self.early_feed(feed, value, line, column);
+            }
         }
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
