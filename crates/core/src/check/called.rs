@@ -80,6 +80,10 @@ pub(super) struct Pending {
     /// The calls so far: None, none; `Some(Ok(call))` all alike; `Some(Err(line))` one of
     /// them (its line) in other units or under another shift, or where they are not known.
     calls: Option<Result<(Call, String, usize), usize>>,
+    /// The programs read apart in which calls of it were made, and the line of the first:
+    /// where one of them turns out a subprogram, its units were its own caller's, not known
+    /// at those calls.
+    called_inside: Vec<(i64, usize)>,
 }
 
 /// A span's ends, put together with another's (`said` of either).
@@ -176,7 +180,15 @@ impl Checker {
             feed: early.feed,
             removed,
             calls: None,
+            called_inside: Vec::new(),
         });
+        // (a call made in it, in the units it was read in, was made in units not known)
+        let number = self.pending.last().expect("pushed").number;
+        for p in &mut self.pending {
+            if let Some(&(_, line)) = p.called_inside.iter().find(|(n, _)| *n == number) {
+                p.calls = Some(Err(line));
+            }
+        }
     }
 
     /// A limit's finding in a program read apart: held from the first, so that the findings
@@ -261,7 +273,11 @@ impl Checker {
             feed_factor: self.to_profile_units(true),
             shift: self.call_shift(),
         });
+        let inside = self.early.as_ref().map(|e| e.number);
         let pending = &mut self.pending[k];
+        if let Some(n) = inside {
+            pending.called_inside.push((n, line));
+        }
         pending.calls = match (pending.calls.take(), call) {
             (_, None) => Some(Err(line)),
             (None, Some(call)) => Some(Ok((call, token, line))),
@@ -456,6 +472,25 @@ mod tests {
             .map(|f| (f.line, f.column))
             .collect();
         assert_eq!(notes, [(2, 1)]);
+    }
+
+    /// A call made inside another subprogram written before its calls is made in units not
+    /// known there (that one's caller's): noted, not judged in the reset units.
+    #[test]
+    fn a_call_inside_a_subprogram_read_apart_is_in_units_not_known() {
+        let text = "%\nO0002\nG0 X35.\nM99\nO0003\nM98 P2\nM99\nO1000\nG20 G90 G54\n\
+                    G0 X-35. Y0\nM98 P3\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), text), []);
+        let notes: Vec<_> = findings(metric.clone(), text, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| f.message.starts_with("O0002"))
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(notes, [(2, 1)]);
+        // called from a main program read from the reset state: its units are that one's
+        let main = "%\nO0002\nG0 X35.\nM99\nO0003\nG20 G90\nG0 X-35. Y0\nM98 P2\nM30\n%\n";
+        assert_eq!(limits(metric, main), [(3, 4)]);
     }
 
     /// The subprogram's own G21, and a program that ends as a main program: read as before.
