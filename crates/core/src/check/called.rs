@@ -1,13 +1,13 @@
 //! A FANUC's or a Haas's subprogram placed before its caller in the file (a memory backup
 //! lists programs by their numbers, so `O0002` comes before the `O1000` that calls it; review
 //! 39, finding 4). The control runs a subprogram in the units and under the shift in force
-//! at its call (G20/G21 are modal and a call changes none; docs/dialects.md, "A subprogram's
-//! units"), which the checker knows only once it reads a call.
+//! at its call (G20/G21 are modal and a call changes none; docs/dialects.md, "Several
+//! programs in one file"), which the checker knows only once it reads a call.
 //!
-//! A program read from the reset state ([`Checker::called_units`]: no call before it names
-//! its number) is read as before, with its own positions kept apart from the spans of the
-//! programs before it ([`Early`]); its limits' findings (TG601, TG602) are held from the
-//! first. Where it ends as a main program does (M02/M30, the file's end, the next program),
+//! A program read from the reset state (the file's first with an O number, or one no call
+//! before it names, [`Checker::called_units`]) is read as before, with its own positions kept
+//! apart from the spans of the programs before it ([`Early`]); its limits' findings (TG601,
+//! TG602, TG605) are held from the first, and every finding after them with them. Where it ends as a main program does (M02/M30, the file's end, the next program),
 //! or writes a units code, or a shift or a mirror restarts a span in it, the two are put
 //! together and the held findings said, in the order they came: the same reading as before,
 //! byte for byte. Where it returns (M99) having written no units code, it is a subprogram
@@ -16,8 +16,9 @@
 //! it. At the file's end ([`Checker::early_finish`]), a subprogram whose calls agree on the
 //! units and the shift is judged in them (its span from its least to its most position,
 //! scaled and shifted; its largest feed); calls that disagree, or one in units or under a
-//! shift not known, leave it unjudged with one TG140; a program no call names is read as
-//! before (its findings said, its span added), at the end of the file.
+//! shift not known (a call inside another program read apart that turns out a subprogram),
+//! leave it unjudged with one TG140; a program no call names is read as before (its findings
+//! said, its span added), at the end of the file.
 
 use super::{Checker, Finding, Span};
 use crate::decimal::Dec;
@@ -296,7 +297,13 @@ impl Checker {
     #[inline(never)]
     pub(super) fn early_finish(&mut self) {
         for p in std::mem::take(&mut self.pending) {
+            // (one with no position on an axis with a travel and no feed has nothing to judge:
+            // no note of it)
+            let judged = p.feed.is_some() && self.config.feed_max.is_some()
+                || (0..AXES.len())
+                    .any(|i| p.spans[i].is_some() && self.travel.of_place(i).is_some());
             match p.calls.clone() {
+                Some(_) if !judged => {}
                 None => self.early_as_read(p),
                 Some(Ok((call, token, line))) => self.early_judged(&p, &call, &token, line),
                 Some(Err(line)) => {
