@@ -14,14 +14,14 @@ The temporary file's making, its commit (the fsync, the rename or link, the file
 step fails) and its removal are the core's (``formats._core``, crates/python/src/commits.rs),
 the same steps a batch's commit threads run (``tapegate.converting.Commits``): one
 implementation. The core keeps the list of the temporary files not yet named, entered in the
-native step that makes each, and removes what is left of it at the interpreter's exit: a ^C
-(or SIGTERM's exit) that lands between a file's making and its commit, in whichever thread,
-leaves no ``.part`` behind.
+native step that makes each, and removes what is left of it when the process ends (the C
+library's ``exit``, after the interpreter's; :func:`sweep` where it ends by ``os._exit``): a
+^C (or SIGTERM's exit) that lands between a file's making and its commit, in whichever
+thread, leaves no ``.part`` behind.
 """
 
 from __future__ import annotations
 
-import atexit
 import os
 import stat
 
@@ -41,21 +41,19 @@ if TYPE_CHECKING:
 
 def sweep() -> int:
     """Every temporary file this process made and has neither named nor removed (a run
-    interrupted between a file's making and its commit), removed: how many. Run at the
-    interpreter's exit, or by ``tapegate.launch.leave`` where it ends the process without one;
-    a child forked from this process removes only its own."""
+    interrupted between a file's making and its commit), removed: how many. The core runs it
+    at the process's exit (the C library's ``exit``); ``tapegate.launch.leave`` calls it
+    before the ``os._exit`` that skips that. A child forked from this process removes only
+    its own."""
     return _core.sweep_pending()
-
-
-atexit.register(sweep)
 
 
 class PendingFile:
     """A file written in pieces and named only at the end (:meth:`commit`).
 
     Until then the data lives in a hidden temporary file in the target folder; :meth:`discard`
-    (or an exception in a ``with`` block) leaves nothing behind, nor does the interpreter's
-    exit before the commit (a ^C). Used where the name depends on what arrives (a received
+    (or an exception in a ``with`` block) leaves nothing behind, nor does the process's exit
+    before the commit (a ^C). Used where the name depends on what arrives (a received
     program is named from its program number) and where the data is too big for memory.
     """
 
@@ -75,9 +73,12 @@ class PendingFile:
                       and not os.path.isdir(self.folder) else exc.strerror or str(exc))
             raise OutputError(f"cannot write {where}: {reason}") from None
         try:
-            self.file = os.fdopen(fd, "wb")
+            # (the built-in open, not os.fdopen: no Python step inside, so the descriptor is
+            # the file object's or closed by open's own failure, never closed twice -- an
+            # os.close here after a ^C inside os.fdopen closed it again: EBADF, which took
+            # the place of the KeyboardInterrupt)
+            self.file = open(fd, "wb")  # noqa: SIM115 (closed by commit or discard)
         except BaseException:
-            os.close(fd)
             _core.discard_file(self.tmp)
             raise
         self.size = 0

@@ -266,37 +266,27 @@ def leave(code: object) -> None:
     (``util.hard_exit``).
     Returns, for the interpreter's own exit, whenever that could do more than free memory: a
     code that is no integer (printed by the exit), a function registered with ``atexit``
-    (coverage, a test's probe; not ``formats.files.sweep``, run here before the end: the
-    temporary files a ^C left), a thread not a daemon still running, standard input copied
+    (coverage, a test's probe), a thread not a daemon still running, standard input copied
     to a temporary file (``tapegate.common.readable``, removed by its object's finalizer), or
     a flush that fails (a closed pipe: told as the exit tells it)."""
     import atexit
 
-    # the temporary files a ^C left (formats.files.sweep, an exit function): removed here
-    # before the process ends, or by the interpreter's exit where that is taken
-    files = sys.modules.get("formats.files")
-    swept = files.sweep if files is not None else None
-    if swept is not None:
-        atexit.unregister(swept)
+    if not (code is None or isinstance(code, int)) or atexit._ncallbacks():
+        return
+    threading = sys.modules.get("threading")
+    if threading is not None and any(
+            not t.daemon and t.is_alive() for t in threading.enumerate()
+            if t is not threading.main_thread()):
+        return
+    common = sys.modules.get("tapegate.common")
+    if common is not None and common._SPOOLED:
+        return
     try:
-        if not (code is None or isinstance(code, int)) or atexit._ncallbacks():
-            return
-        threading = sys.modules.get("threading")
-        if threading is not None and any(
-                not t.daemon and t.is_alive() for t in threading.enumerate()
-                if t is not threading.main_thread()):
-            return
-        common = sys.modules.get("tapegate.common")
-        if common is not None and common._SPOOLED:
-            return
-        try:
-            sys.stdout.flush()
-            sys.stderr.flush()
-        except BaseException:  # (BrokenPipeError, or another error of the streams)
-            return
-        if swept is not None:
-            swept()
-        os._exit(code or 0)
-    finally:  # (returned: the interpreter's exit ends the process, and sweeps)
-        if swept is not None:
-            atexit.register(swept)
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except BaseException:  # (BrokenPipeError, or another error of the streams)
+        return
+    files = sys.modules.get("formats.files")
+    if files is not None:  # the temporary files a ^C left, which the C library's exit (not
+        files.sweep()  # taken here) would remove: formats.files.sweep
+    os._exit(code or 0)

@@ -194,3 +194,21 @@ def test_the_temporary_files_left_are_removed_at_the_exit(tmp_path: Path) -> Non
     assert sorted(os.listdir(tmp_path)) == ["kept.nc"]
     assert sweep() == 0
     left.discard()  # (gone already: nothing to do, no error)
+
+
+def test_a_process_that_exits_with_a_file_not_named_leaves_nothing(tmp_path: Path) -> None:
+    """The interpreter's own exit (no tapegate.launch.leave: a script of the API, click's
+    commands) removes the temporary files it never named: the core's exit function, run by
+    the C library's exit after the interpreter's finalization."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom formats.files import PendingFile\n"
+            "p = PendingFile(sys.argv[1], 'O1.nc')\np.write(b'N1\\n')\np.file.flush()\n"
+            "print(p.tmp)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(tmp_path)], capture_output=True,
+                          text=True, timeout=60, check=False,
+                          env={**os.environ, "PYTHONPATH": str(Path(__file__).parents[1])})
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().endswith(".part")  # (it was there)
+    assert list(tmp_path.iterdir()) == []

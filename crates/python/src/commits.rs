@@ -8,8 +8,9 @@
 //! entered in the process's list of temporary files in the same native step, so that no
 //! moment exists (a `KeyboardInterrupt` is raised only between Python's steps) where the
 //! file is there and the list does not name it. It leaves the list when it is named or
-//! removed; [`sweep_pending`] removes what is left in it (`formats.files` calls it at the
-//! interpreter's exit: a file not named by then never will be).
+//! removed; [`sweep_pending`] removes what is left in it at the process's exit (the C
+//! library's `exit`, after the interpreter's finalization, or `tapegate.launch.leave` before
+//! its `os._exit`): a file not named by then never will be.
 //!
 //! The steps of one commit ([`commit`]), the same for one file and for a batch:
 //!
@@ -41,7 +42,7 @@ use std::os::fd::{FromRawFd, IntoRawFd, RawFd};
 use std::os::unix::ffi::{OsStrExt, OsStringExt};
 use std::os::unix::fs::OpenOptionsExt;
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard, Once, PoisonError, TryLockError};
 use std::thread::JoinHandle;
 
 use pyo3::exceptions::PyValueError;
@@ -99,6 +100,44 @@ fn pending() -> MutexGuard<'static, BTreeMap<PathBuf, u32>> {
     PENDING.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
+// The C library's exit functions (`atexit(3)`): run by `exit`, after the interpreter's
+// finalization; not by `_exit` (`os._exit`, whose caller sweeps first: `tapegate.launch`).
+// (Not Python's `atexit`: a function registered there, even unregistered, makes
+// `tapegate.launch.leave` take the interpreter's slow exit.)
+extern "C" {
+    fn atexit(function: extern "C" fn()) -> std::os::raw::c_int;
+}
+
+/// The sweep at the process's exit registered (once, at the first temporary file).
+static AT_EXIT: Once = Once::new();
+
+/// [`sweep_pending`] at the process's exit, unless a thread still holds the list (it is
+/// naming a file: the exit does not wait for it).
+extern "C" fn sweep_at_exit() {
+    let mut list = match PENDING.try_lock() {
+        Ok(list) => list,
+        Err(TryLockError::Poisoned(poisoned)) => poisoned.into_inner(),
+        Err(TryLockError::WouldBlock) => return,
+    };
+    sweep(&mut list);
+}
+
+/// The temporary files of `list` this process made, removed and out of it: how many.
+fn sweep(list: &mut BTreeMap<PathBuf, u32>) -> usize {
+    let me = std::process::id();
+    let mut removed = 0;
+    list.retain(|tmp, owner| {
+        if *owner != me {
+            return true;
+        }
+        if fs::remove_file(tmp).is_ok() {
+            removed += 1;
+        }
+        false
+    });
+    removed
+}
+
 /// `tmp` named or removed: out of the list.
 fn forget(tmp: &Path) {
     pending().remove(tmp);
@@ -124,6 +163,12 @@ fn joined(folder: &OsStr, below: &[u8]) -> PathBuf {
 /// process's umask, and entered in the list of temporary files in the same step: its
 /// descriptor (the caller's to close) and its path.
 fn make_pending(folder: &OsStr, hint: &OsStr) -> io::Result<(File, PathBuf)> {
+    AT_EXIT.call_once(|| {
+        // SAFETY: registers a function of this library, which the interpreter never unloads;
+        // it only takes the list's lock (without waiting) and removes files. (Refused when
+        // the C library's table is full: then only `formats.files.sweep` sweeps.)
+        unsafe { atexit(sweep_at_exit) };
+    });
     let keys = std::collections::hash_map::RandomState::new();
     let mut draw = 0u64;
     loop {
@@ -270,23 +315,12 @@ pub(crate) fn discard_file(py: Python<'_>, tmp: PathBuf) -> PyResult<()> {
 }
 
 /// Every temporary file this process made and has not named nor removed, removed: how many.
-/// For the interpreter's exit (a ^C between a file's making and its commit, in any thread),
-/// when nothing will name them.
+/// For the process's end (a ^C between a file's making and its commit, in any thread), when
+/// nothing will name them: run by the C library's `exit` ([`sweep_at_exit`]), and called by
+/// `formats.files.sweep` where the process ends by `os._exit`.
 #[pyfunction]
 pub(crate) fn sweep_pending() -> usize {
-    let me = std::process::id();
-    let mut list = pending();
-    let mut removed = 0;
-    list.retain(|tmp, owner| {
-        if *owner != me {
-            return true;
-        }
-        if fs::remove_file(tmp).is_ok() {
-            removed += 1;
-        }
-        false
-    });
-    removed
+    sweep(&mut pending())
 }
 
 /// A thread of the pool: the jobs in the order they were handed over, until it is closed and
