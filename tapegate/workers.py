@@ -25,7 +25,9 @@ job, and one given before its turn keeps them as a thread's (past the budget, sp
 nothing here may wait for room, which only the main thread makes). An ``Exception`` of its
 function is raised at its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core
 hands a slice over or ends a file) and SIGTERM's exit leave at once, the threads stopped
-(docs/benchmarks.md, "the main thread as a worker").
+(docs/benchmarks.md, "the main thread as a worker") -- raised in the main thread only where
+it waits, does its own item or runs the caller's code, else at its next such point, never
+inside the map's lock and condition code (:func:`_signalled`; review 39, finding 7).
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
