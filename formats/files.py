@@ -9,6 +9,15 @@ regular file where the device was (as root, /dev/null itself). The temporary fil
 with mode 0666 and the process's umask, as any file the user creates (a program is for sharing
 with the DNC service account); the umask is never changed, so threads writing at the same time
 are safe.
+
+The temporary file's making, its commit (the fsync, the rename or link, the file removed if a
+step fails) and its removal are the core's (``formats._core``, crates/python/src/commits.rs),
+the same steps a batch's commit threads run (``tapegate.converting.Commits``): one
+implementation. The core keeps the list of the temporary files not yet named, entered in the
+native step that makes each, and removes what is left of it when the process ends (the C
+library's ``exit``, after the interpreter's; :func:`sweep` where it ends by ``os._exit``): a
+^C (or SIGTERM's exit) that lands between a file's making and its commit, in whichever
+thread, leaves no ``.part`` behind.
 """
 
 from __future__ import annotations
@@ -16,6 +25,7 @@ from __future__ import annotations
 import os
 import stat
 
+from formats import _core
 from formats.errors import OutputError
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
@@ -28,13 +38,23 @@ if TYPE_CHECKING:
 # share; docs/benchmarks.md, "the commits without the GIL")
 
 
+
+def sweep() -> int:
+    """Every temporary file this process made and has neither named nor removed (a run
+    interrupted between a file's making and its commit), removed: how many. The core runs it
+    at the process's exit (the C library's ``exit``); ``tapegate.launch.leave`` calls it
+    before the ``os._exit`` that skips that. A child forked from this process removes only
+    its own."""
+    return _core.sweep_pending()
+
+
 class PendingFile:
     """A file written in pieces and named only at the end (:meth:`commit`).
 
     Until then the data lives in a hidden temporary file in the target folder; :meth:`discard`
-    (or an exception in a ``with`` block) leaves nothing behind. Used where the name depends on
-    what arrives (a received program is named from its program number) and where the data is too
-    big for memory.
+    (or an exception in a ``with`` block) leaves nothing behind, nor does the process's exit
+    before the commit (a ^C). Used where the name depends on what arrives (a received
+    program is named from its program number) and where the data is too big for memory.
     """
 
     def __init__(self, folder: str | os.PathLike[str], hint: str = "tapegate", *,
@@ -44,21 +64,23 @@ class PendingFile:
         self.folder = pure(os.fspath(folder))
         if create:
             os.makedirs(self.folder, exist_ok=True)
-        while True:
-            # (secrets.token_hex(4), without importing secrets, hashlib and base64: a
-            # conversion's start-up, which its threads cannot share)
-            self.tmp = joined(self.folder, f".{hint}.{os.urandom(4).hex()}.part")
-            try:
-                fd = os.open(self.tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-                break
-            except FileExistsError:
-                continue
-            except OSError as exc:
-                where = joined(self.folder, hint) if hint != "tapegate" else self.folder
-                reason = ("no such folder" if isinstance(exc, FileNotFoundError)
-                          and not os.path.isdir(self.folder) else exc.strerror or str(exc))
-                raise OutputError(f"cannot write {where}: {reason}") from None
-        self.file = os.fdopen(fd, "wb")
+        try:
+            # made and entered in the core's list of temporary files in one step
+            fd, self.tmp = _core.pending_file(self.folder, hint)
+        except OSError as exc:
+            where = joined(self.folder, hint) if hint != "tapegate" else self.folder
+            reason = ("no such folder" if isinstance(exc, FileNotFoundError)
+                      and not os.path.isdir(self.folder) else exc.strerror or str(exc))
+            raise OutputError(f"cannot write {where}: {reason}") from None
+        try:
+            # (the built-in open, not os.fdopen: no Python step inside, so the descriptor is
+            # the file object's or closed by open's own failure, never closed twice -- an
+            # os.close here after a ^C inside os.fdopen closed it again: EBADF, which took
+            # the place of the KeyboardInterrupt)
+            self.file = open(fd, "wb")  # noqa: SIM115 (closed by commit or discard)
+        except BaseException:
+            _core.discard_file(self.tmp)
+            raise
         self.size = 0
 
     def write(self, data: bytes) -> None:
@@ -80,48 +102,31 @@ class PendingFile:
         fails (:class:`FileExistsError`). Returns the path written. ``sync_folder`` False leaves
         the folder's fsync (the name on disk) to the caller, who syncs it once for many files
         (:func:`sync_folder`); the data is fsync'd before the rename either way, so the name
-        never stands for a part of the file."""
+        never stands for a part of the file. A regular file's commit is the core's
+        (``_core.commit_file``, on this thread: the steps a batch's commit threads run); a
+        device or a FIFO is written into here. Whatever fails, the temporary file is gone."""
         path = pure(os.fspath(path))
-        self.file.flush()
-        os.fsync(self.file.fileno())
-        self.file.close()
-        try:
-            if is_special(path):  # a device or a FIFO: written into, as a shell's `>` does
+        if is_special(path):  # a device or a FIFO: written into, as a shell's `>` does
+            try:
                 import shutil
 
+                self.file.close()
                 with open(self.tmp, "rb") as data, open(path, "wb") as out:
                     shutil.copyfileobj(data, out)
-                os.unlink(self.tmp)
                 return path
-            if overwrite:
-                os.replace(self.tmp, path)
-                if sync_folder:
-                    _sync_folder(parent(path))
-                return path
-            while True:
-                if version:
-                    path = next_free_name(path)
-                try:
-                    os.link(self.tmp, path)  # fails if the name was taken meanwhile
-                    break
-                except FileExistsError:
-                    if not version:
-                        raise
-                    continue
-            os.unlink(self.tmp)
-            if sync_folder:
-                _sync_folder(parent(path))
-            return path
-        except BaseException:
-            self.discard()
-            raise
+            finally:
+                self.discard()
+        named = _core.commit_file(self.hand_over(), self.tmp, path, overwrite, version)
+        if sync_folder:
+            _sync_folder(parent(named))
+        return named
 
     def hand_over(self) -> int:
         """The data written flushed, and the temporary file's descriptor given away for a
-        commit made elsewhere (``formats._core.Commits``: :meth:`commit`'s steps for a regular
-        file, the data fsync'd before the name is given, the temporary file removed if a step
-        fails): a duplicate, which the taker closes; this object's own is closed here. On an
-        error the temporary file is removed, as by :meth:`commit`."""
+        commit made in the core (``_core.commit_file``, ``_core.Commits``: the data fsync'd
+        before the name is given, the temporary file removed if a step fails): a duplicate,
+        which the taker closes; this object's own is closed here. On an error the temporary
+        file is removed, as by :meth:`commit`."""
         try:
             self.file.flush()
             fd = os.dup(self.file.fileno())
@@ -145,8 +150,7 @@ class PendingFile:
         except OSError:
             pass
         finally:
-            if os.path.exists(self.tmp):
-                os.unlink(self.tmp)
+            _core.discard_file(self.tmp)
 
     def __enter__(self) -> PendingFile:
         return self
@@ -193,23 +197,6 @@ def _sync_folder(folder: str | os.PathLike[str]) -> None:
 
 
 sync_folder = _sync_folder  # (PendingFile.commit's argument of that name hides it there)
-
-
-def next_free_name(path: str) -> str:
-    """``path``, or where a file is there the first of ``STEM.1.EXT``, ``STEM.2.EXT``... that
-    is free (the stem and the extension as pathlib reads them)."""
-    if not os.path.exists(path):
-        return path
-    from pathlib import Path
-
-    name = Path(path)
-    stem, suffix = name.stem, name.suffix
-    n = 1
-    while True:
-        candidate = name.with_name(f"{stem}.{n}{suffix}")
-        if not candidate.exists():
-            return str(candidate)
-        n += 1
 
 
 def pure(name: str) -> str:

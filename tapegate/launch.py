@@ -286,4 +286,7 @@ def leave(code: object) -> None:
         sys.stderr.flush()
     except BaseException:  # (BrokenPipeError, or another error of the streams)
         return
+    files = sys.modules.get("formats.files")
+    if files is not None:  # the temporary files a ^C left, which the C library's exit (not
+        files.sweep()  # taken here) would remove: formats.files.sweep
     os._exit(code or 0)

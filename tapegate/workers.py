@@ -25,7 +25,9 @@ job, and one given before its turn keeps them as a thread's (past the budget, sp
 nothing here may wait for room, which only the main thread makes). An ``Exception`` of its
 function is raised at its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core
 hands a slice over or ends a file) and SIGTERM's exit leave at once, the threads stopped
-(docs/benchmarks.md, "the main thread as a worker").
+(docs/benchmarks.md, "the main thread as a worker") -- raised in the main thread only where
+it waits, does its own item or runs the caller's code, else at its next such point, never
+inside the map's lock and condition code (:func:`_signalled`; review 39, finding 7).
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
@@ -126,16 +128,22 @@ class _Condition:
     def __exit__(self, *exc: object) -> None:
         self._lock.release()
 
-    def wait(self) -> None:
-        """Release the shared lock (held by the caller), wait for a ``notify``, take it back."""
+    def wait(self, guard: _Map | None = None) -> None:
+        """Release the shared lock (held by the caller), wait for a ``notify``, take it back.
+        With ``guard`` (the main thread's map): a signal may interrupt the wait itself, and
+        only it (:func:`_signalled`)."""
         waiter = _thread.allocate_lock()
         waiter.acquire()
         self._waiters.append(waiter)
         self._lock.release()
         woken = False
         try:
+            if guard is not None:
+                guard.interruptible()
             woken = waiter.acquire()
         finally:
+            if guard is not None:
+                guard.safe = False
             self._lock.acquire()
             # interrupted (a KeyboardInterrupt), and not notified meanwhile: not left among
             # the waiters
@@ -159,10 +167,25 @@ def send(piece: Any) -> None:
     _local.send(piece)
 
 
-def _terminated(signum: int, frame: object) -> None:
-    """SIGTERM in the main thread while threads run (a CI job's timeout, `kill`): an exit with
-    128 + the signal's number, through the ``finally`` clause that stops the threads."""
-    raise SystemExit(128 + signum)
+def _signalled(state: _Map, signum: int) -> None:
+    """SIGINT (^C) or SIGTERM (a CI job's timeout, `kill`) in the main thread while a map's
+    threads run: ``KeyboardInterrupt``, or an exit with 128 + the signal's number, through the
+    ``finally`` clause that stops the threads -- raised at once where the main thread is at a
+    point where an exception is safe (``state.safe``: waiting for a notify, doing its own
+    item, or running the caller's code), else held (``state.pending``) and raised at its next
+    such point, soon after. Raised anywhere, it could land between a lock's acquire and the
+    ``with`` that releases it, or between a waiter taken off a condition's list and its
+    release, and the threads' join then waited for ever (1 in 15 interrupted `convert -j 2`
+    batches hung so; review 39, finding 7)."""
+    error = KeyboardInterrupt() if signum == _SIGINT else SystemExit(128 + signum)
+    if state.safe:
+        state.safe = False  # (the code that handles it is not a safe point)
+        raise error
+    if state.pending is None:
+        state.pending = error
+
+
+_SIGINT = 2  # (signal.SIGINT, without importing signal)
 
 
 class _Slot:
@@ -248,6 +271,10 @@ class _Map:
         self.given = 0  # items given out: the first ``given`` of ``order``
         self.due = 0  # the item whose turn it is
         self.stopped = False
+        # the main thread at a point where a signal's exception is safe, and a signal's
+        # exception held until it is (_signalled)
+        self.safe = False
+        self.pending: BaseException | None = None
         # an error a thread met outside an item's function (in the map's own work), raised
         # in the main thread where it would otherwise wait for an item that thread had taken
         self.failure: BaseException | None = None
@@ -304,15 +331,34 @@ class _Map:
         if slot.index == self.due:  # (``due`` moves in this thread only)
             _local.send = receive
         else:
-            _local.send = lambda piece: self.put(slot, piece)
+            _local.send = lambda piece: self._put_here(slot, piece)
         try:
+            self.interruptible()  # (the function's own work: a signal's exception is safe)
             slot.result = self.func(self.items[slot.index])
         except _Stopped:  # the map stopped by a thread's failure: raised by take
             return
         except Exception as exc:
             slot.error = exc
+        finally:
+            self.safe = False
         with self.cond:
             slot.done = True
+
+    def interruptible(self) -> None:
+        """The main thread enters a point where a signal's exception is safe: raised now if
+        one is held (:func:`_signalled`)."""
+        self.safe = True
+        if self.pending is not None:
+            self.safe = False
+            raise self.pending
+
+    def _put_here(self, slot: _Slot, piece: Any) -> None:
+        """:meth:`put` for the main thread's own item: no signal's exception in its locks."""
+        self.safe = False
+        try:
+            self.put(slot, piece)
+        finally:
+            self.interruptible()
 
     def _ready(self) -> bool:
         """Whether the main thread is to be woken now that an item is done (the lock held):
@@ -418,7 +464,7 @@ class _Map:
                         or (self.given >= self.early
                             and self.order[self.given] < self.due + self.window)):
                     return [], None, self._give()
-                self.cond.wait()
+                self.cond.wait(self)
 
     def fail(self, error: BaseException) -> None:
         """A thread's error outside an item's function: the map stops (the other threads end
@@ -520,24 +566,31 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     # the interpreter's own (_thread), as daemon threads: nothing waits for them at the exit
     ended = [_thread.allocate_lock() for _ in range(count - here)]
     state.threads = len(ended)
-    handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
+    # SIGINT's and SIGTERM's handlers before ours (_signalled), once ours are set: set before
+    # the threads start, so that no signal's exception lands among the map's locks
+    handlers: list[tuple[int, Any]] = []
     started: list[Any] = []
+    done = False
+    # by signal's C part, which the interpreter loaded at its start: the signal module's
+    # import (its enums, 0.7 ms of the main thread's CPU) only turns the handler handed back
+    # into an enum, and these are only put back
+    import _signal
+
     try:
+        try:
+            handlers.append((_signal.SIGTERM, _signal.signal(
+                _signal.SIGTERM, lambda signum, frame: _signalled(state, signum))))
+            if _signal.getsignal(_signal.SIGINT) is _signal.default_int_handler:
+                # (^C's KeyboardInterrupt; a SIGINT ignored, or handled by the caller, is left
+                # so)
+                handlers.append((_signal.SIGINT, _signal.signal(
+                    _signal.SIGINT, lambda signum, frame: _signalled(state, signum))))
+        except ValueError:  # not the main thread (of the main interpreter): no handler
+            pass
         for lock in ended:
             lock.acquire()
             _thread.start_new_thread(_run, (state, lock))
             started.append(lock)
-        # by signal's C part, which the interpreter loaded at its start: the signal
-        # module's import (its enums, 0.7 ms of the main thread's CPU) only turns the
-        # handler handed back into an enum, and this one is only put back
-        import _signal
-
-        try:
-            before = _signal.signal(_signal.SIGTERM, _terminated)
-        except ValueError:  # not the main thread (of the main interpreter): no handler
-            before = None
-        else:
-            handler.append(before)
         for index in range(len(items)):
             while True:
                 pieces, got, own = state.take(index, here)
@@ -545,23 +598,33 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
                     state.here(own, receive)
                     continue
                 if receive is not None:
-                    for piece in pieces:
-                        receive(piece)
+                    state.interruptible()  # (the caller's code)
+                    try:
+                        for piece in pieces:
+                            receive(piece)
+                    finally:
+                        state.safe = False
                 if got is not None:
                     break
             if got.error is not None:
                 raise got.error
-            yield got.result
+            state.interruptible()  # (the caller's code, until it asks for the next)
+            try:
+                yield got.result
+            finally:
+                state.safe = False
+        done = True
     finally:
         # stopped or done: a thread sending stops at once, one in the core at its chunk's end
+        state.safe = False
         state.stop()
         for lock in started:
             lock.acquire()  # the thread's join
         state.close()
-        if handler:
-            import _signal
-
-            _signal.signal(_signal.SIGTERM, handler[0])
+        for signum, before in reversed(handlers):
+            _signal.signal(signum, before)
+    if state.pending is not None and done:  # (a signal held to the end: raised now)
+        raise state.pending
 
 
 def file_sizes(paths: Iterable[str]) -> list[int]:

@@ -290,3 +290,41 @@ def test_a_port_whose_open_fails_unexpectedly_is_retried_not_lost(
     told = [r for r in caplog.records if "the driver is not ready" in r.getMessage()]
     assert len(told) == 1  # one line per cause, with its traceback
     assert [(t.direction, t.result) for t in journal(tmp_path)] == [("send", "ok")]
+
+
+# -- a full disk on convert ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_conversion_onto_a_full_disk_names_the_files_that_did_not_fit_and_leaves_no_part(
+        tmp_path: Path, full_disk: Path, jobs: str) -> None:
+    """The core's commit (one file's and a batch's, the same steps): a file that does not fit
+    is that file's error, "No space left on device", its temporary file removed; the files
+    that fit are whole (the single conversion's bytes); nothing hidden stays."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    from tests.test_convert_interrupt import ARGS, _program
+
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    text = _program(0, 150)
+    for n in range(6):
+        (cam / f"p{n}.nc").write_text(text)
+    single = tmp_path / "single.nc"
+    assert CliRunner().invoke(main, ["convert", str(cam / "p0.nc"), "-o", str(single),
+                                     *ARGS]).exit_code == 0
+    expected = single.read_bytes()
+    assert 2500 < len(expected) < 4096  # (two fit in FREE, on 4 KiB pages)
+    out = full_disk / "out"
+    result = CliRunner().invoke(main, ["convert", str(cam), "--out-dir", str(out), *ARGS,
+                                       "-j", jobs])
+    assert result.exit_code == 1, result.output
+    written = leftovers(out)
+    assert [n for n in written if n.startswith(".")] == []
+    assert 1 <= len(written) < 6
+    for name in written:
+        assert (out / name).read_bytes() == expected
+    for n in range(6):
+        if f"p{n}.nc" not in written:
+            assert f"p{n}.nc: No space left on device" in result.output

@@ -132,3 +132,83 @@ def test_convert_writes_into_a_device_it_is_given(tmp_path: Path) -> None:
         convert_file(str(source), str(null), ConvertOptions(fanuc, fanuc), overwrite=overwrite)
         assert stat.S_ISCHR(os.stat(null).st_mode)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["null", "p.nc"]
+
+
+def test_a_version_name_is_the_first_free_one_and_a_broken_link_is_passed_over(
+        tmp_path: Path) -> None:
+    """The core names a file (formats._core.commit_file, the steps a batch's commit threads
+    run): with a version name wanted, the first of NAME, STEM.1.EXT, STEM.2.EXT... a link can
+    take, the stem and extension as pathlib reads them. A symbolic link that leads nowhere
+    takes its name (os.path.exists said free, the link said taken: the loop before went round
+    for ever)."""
+    (tmp_path / "O1234.nc").write_bytes(b"0\n")
+    (tmp_path / "O1234.1.nc").write_bytes(b"1\n")
+    (tmp_path / "O1").symlink_to(tmp_path / "nowhere")
+    (tmp_path / ".x").write_bytes(b"x\n")
+    (tmp_path / "a.b.nc").write_bytes(b"ab\n")
+    written = {name: write_atomic(tmp_path / name, name.encode(), overwrite=False).name
+               for name in ("O1234.nc", "O1", ".x", "a.b.nc", "new.nc")}
+    assert written == {"O1234.nc": "O1234.2.nc", "O1": "O1.1", ".x": ".x.1",
+                       "a.b.nc": "a.b.1.nc", "new.nc": "new.nc"}
+    assert (tmp_path / "O1234.2.nc").read_bytes() == b"O1234.nc"
+    assert (tmp_path / "O1234.nc").read_bytes() == b"0\n" and os.path.islink(tmp_path / "O1")
+    assert not [p for p in os.listdir(tmp_path) if p.endswith(".part")]
+    # --force: replaced, the link itself too (not the file it names)
+    assert write_atomic(tmp_path / "O1", b"forced\n").name == "O1"
+    assert not os.path.islink(tmp_path / "O1") and (tmp_path / "O1").read_bytes() == b"forced\n"
+
+
+def test_a_commit_that_cannot_name_the_file_says_why_and_leaves_nothing(tmp_path: Path) -> None:
+    """A step of the core's commit that fails is an OSError of its own kind (here the target
+    is a folder: a link to it is refused as the name is taken, a rename over it as a folder),
+    and the temporary file is gone."""
+    (tmp_path / "dir").mkdir()
+    for overwrite in (False, True):
+        pending = PendingFile(tmp_path, "dir")
+        pending.write(b"N1\n")
+        with pytest.raises(FileExistsError if not overwrite else IsADirectoryError):
+            pending.name_as(tmp_path / "dir", overwrite=overwrite, version=False)
+    assert sorted(os.listdir(tmp_path)) == ["dir"]
+
+
+def test_the_temporary_files_left_are_removed_at_the_exit(tmp_path: Path) -> None:
+    """A file made and never named nor discarded (a ^C between the two) is in the core's list
+    of temporary files from the step that made it: formats.files.sweep (run at the exit)
+    removes it, and no file named; a child forked from the process removes none of its
+    parent's."""
+    from formats.files import sweep
+
+    sweep()  # (whatever earlier tests left in this process)
+    kept = PendingFile(tmp_path, "kept.nc")
+    kept.write(b"N1\n")
+    kept.name_as(tmp_path / "kept.nc")
+    left = PendingFile(tmp_path, "left.nc")
+    left.write(b"N1\n")
+    left.file.flush()
+    child = os.fork()
+    if child == 0:  # pragma: no cover (the child)
+        os._exit(10 + sweep())
+    _, status = os.waitpid(child, 0)
+    assert os.WEXITSTATUS(status) == 10 and os.path.exists(left.tmp)
+    assert sweep() == 1
+    assert sorted(os.listdir(tmp_path)) == ["kept.nc"]
+    assert sweep() == 0
+    left.discard()  # (gone already: nothing to do, no error)
+
+
+def test_a_process_that_exits_with_a_file_not_named_leaves_nothing(tmp_path: Path) -> None:
+    """The interpreter's own exit (no tapegate.launch.leave: a script of the API, click's
+    commands) removes the temporary files it never named: the core's exit function, run by
+    the C library's exit after the interpreter's finalization."""
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom formats.files import PendingFile\n"
+            "p = PendingFile(sys.argv[1], 'O1.nc')\np.write(b'N1\\n')\np.file.flush()\n"
+            "print(p.tmp)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(tmp_path)], capture_output=True,
+                          text=True, timeout=60, check=False,
+                          env={**os.environ, "PYTHONPATH": str(Path(__file__).parents[1])})
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().endswith(".part")  # (it was there)
+    assert list(tmp_path.iterdir()) == []

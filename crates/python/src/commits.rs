@@ -1,29 +1,48 @@
-//! The fsync and naming of a batch's outputs (`tapegate convert` of several files), done by
-//! threads of the core that never take the GIL: `formats.files.PendingFile.commit`'s steps for
-//! an output that is a regular file, each output's in one native step.
+//! How an output file is written, one implementation for every caller: the temporary file
+//! made and named (`formats.files.PendingFile`, for one file on the caller's thread, and
+//! `Commits`, a batch's outputs named by threads of the core that never take the GIL), and
+//! the temporary files a run leaves (^C) removed at its end.
 //!
-//! Why here: the batch ran them in Python threads (`tapegate.converting.Commits`), each output's
-//! commit an fsync, a close, a stat and a rename or a link, each a system call that dropped
-//! and took back the GIL, in threads woken by the disk's completions while the converting
-//! threads wanted the GIL for their own files (docs/benchmarks.md, "the commits without the
-//! GIL"). A commit here takes the GIL once, to be handed over (`submit`), and once to be
-//! waited for (`wait`); what it does meanwhile is the same, in the same order:
+//! A temporary file is made by [`pending_file`]: a hidden `.HINT.XXXXXXXX.part` in the target
+//! folder, created (never opened if it exists) with mode 0666 and the process's umask, and
+//! entered in the process's list of temporary files in the same native step, so that no
+//! moment exists (a `KeyboardInterrupt` is raised only between Python's steps) where the
+//! file is there and the list does not name it. It leaves the list when it is named or
+//! removed; [`sweep_pending`] removes what is left in it at the process's exit (the C
+//! library's `exit`, after the interpreter's finalization, or `tapegate.launch.leave` before
+//! its `os._exit`): a file not named by then never will be.
+//!
+//! The steps of one commit ([`commit`]), the same for one file and for a batch:
 //!
 //! 1. the temporary file's data fsync'd (its descriptor, handed over: closed after);
-//! 2. its name given: a rename over the target when it may be replaced, else a hard link that
-//!    fails if the name is taken (a file that appeared meanwhile is never replaced), then the
-//!    temporary name removed;
+//! 2. its name given: a rename over the target when it may be replaced (`--force`), else a
+//!    hard link that fails if the name is taken (a file that appeared meanwhile is never
+//!    replaced) -- or, where a new version name is wanted, the first of `NAME`, `STEM.1.EXT`,
+//!    `STEM.2.EXT`... that is free -- then the temporary name removed;
 //! 3. on any failure, the temporary file removed: nothing is left but what was there before.
 //!
-//! The folder's fsync (the names on disk) stays the batch's, once per folder at its end, and a
-//! target that is not a regular file (a device, a FIFO) is written into by Python, never here.
+//! Why the batch's run here: it ran them in Python threads (`tapegate.converting.Commits`),
+//! each output's commit an fsync, a close, a stat and a rename or a link, each a system call
+//! that dropped and took back the GIL, in threads woken by the disk's completions while the
+//! converting threads wanted the GIL for their own files (docs/benchmarks.md, "the commits
+//! without the GIL"). A commit there takes the GIL once, to be handed over (`submit`), and
+//! once to be waited for (`wait`). One file's ([`commit_file`]) runs on the caller's thread,
+//! the GIL released.
+//!
+//! The folder's fsync (the names on disk) stays the caller's (a batch's once per folder at
+//! its end), and a target that is not a regular file (a device, a FIFO) is written into by
+//! Python, never here.
 
-use std::collections::{HashMap, HashSet, VecDeque};
-use std::fs::{self, File};
+use std::collections::{BTreeMap, HashMap, HashSet, VecDeque};
+use std::ffi::{OsStr, OsString};
+use std::fs::{self, File, OpenOptions};
+use std::hash::{BuildHasher, Hasher};
 use std::io;
-use std::os::fd::{FromRawFd, RawFd};
-use std::path::PathBuf;
-use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
+use std::os::fd::{FromRawFd, IntoRawFd, RawFd};
+use std::os::unix::ffi::{OsStrExt, OsStringExt};
+use std::os::unix::fs::OpenOptionsExt;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard, Once, PoisonError, TryLockError};
 use std::thread::JoinHandle;
 
 use pyo3::exceptions::PyValueError;
@@ -72,28 +91,236 @@ impl Shared {
     }
 }
 
-/// The steps of one commit (the module's list), the temporary file removed if one fails.
-fn commit(job: Job) -> io::Result<()> {
-    let Job {
-        file,
-        tmp,
-        target,
-        overwrite,
-        ..
-    } = job;
+/// The temporary files of this process not yet named nor removed, each with the process that
+/// made it (a child forked from this one inherits the list, not the files' ownership).
+static PENDING: Mutex<BTreeMap<PathBuf, u32>> = Mutex::new(BTreeMap::new());
+
+fn pending() -> MutexGuard<'static, BTreeMap<PathBuf, u32>> {
+    // (nothing panics with the lock held; a poisoned list is still whole)
+    PENDING.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+// The C library's exit functions (`atexit(3)`): run by `exit`, after the interpreter's
+// finalization; not by `_exit` (`os._exit`, whose caller sweeps first: `tapegate.launch`).
+// (Not Python's `atexit`: a function registered there, even unregistered, makes
+// `tapegate.launch.leave` take the interpreter's slow exit.)
+extern "C" {
+    fn atexit(function: extern "C" fn()) -> std::os::raw::c_int;
+}
+
+/// The sweep at the process's exit registered (once, at the first temporary file).
+static AT_EXIT: Once = Once::new();
+
+/// [`sweep_pending`] at the process's exit, unless a thread still holds the list (it is
+/// naming a file: the exit does not wait for it).
+extern "C" fn sweep_at_exit() {
+    let mut list = match PENDING.try_lock() {
+        Ok(list) => list,
+        Err(TryLockError::Poisoned(poisoned)) => poisoned.into_inner(),
+        Err(TryLockError::WouldBlock) => return,
+    };
+    sweep(&mut list);
+}
+
+/// The temporary files of `list` this process made, removed and out of it: how many.
+fn sweep(list: &mut BTreeMap<PathBuf, u32>) -> usize {
+    let me = std::process::id();
+    let mut removed = 0;
+    list.retain(|tmp, owner| {
+        if *owner != me {
+            return true;
+        }
+        if fs::remove_file(tmp).is_ok() {
+            removed += 1;
+        }
+        false
+    });
+    removed
+}
+
+/// `tmp` named or removed: out of the list.
+fn forget(tmp: &Path) {
+    pending().remove(tmp);
+}
+
+/// `formats.files.joined`: `below` in `folder`, written as pathlib writes it (`folder` as
+/// `formats.files.pure` writes it: only `/` and `//` end in a slash, `.` is left out).
+fn joined(folder: &OsStr, below: &[u8]) -> PathBuf {
+    let folder = folder.as_bytes();
+    let mut path = Vec::with_capacity(folder.len() + 1 + below.len());
+    if folder != b"." {
+        path.extend_from_slice(folder);
+        if !folder.ends_with(b"/") {
+            path.push(b'/');
+        }
+    }
+    path.extend_from_slice(below);
+    PathBuf::from(OsString::from_vec(path))
+}
+
+/// A new temporary file in `folder` (as `formats.files.pure` writes it), `.HINT.XXXXXXXX.part`
+/// (8 hex digits drawn afresh while the name is taken), created with mode 0666 and the
+/// process's umask, and entered in the list of temporary files in the same step: its
+/// descriptor (the caller's to close) and its path.
+fn make_pending(folder: &OsStr, hint: &OsStr) -> io::Result<(File, PathBuf)> {
+    AT_EXIT.call_once(|| {
+        // SAFETY: registers a function of this library, which the interpreter never unloads;
+        // it only takes the list's lock (without waiting) and removes files. (Refused when
+        // the C library's table is full: then only `formats.files.sweep` sweeps.)
+        unsafe { atexit(sweep_at_exit) };
+    });
+    let keys = std::collections::hash_map::RandomState::new();
+    let mut draw = 0u64;
+    loop {
+        // (std's RandomState is seeded from the system's random source once a thread, its
+        // keys moved on at each one made: a name no other process draws the same way; O_EXCL
+        // makes a name taken anyway only another draw)
+        let mut hasher = keys.build_hasher();
+        hasher.write_u64(draw);
+        hasher.write_u32(std::process::id());
+        let number = hasher.finish() as u32;
+        draw += 1;
+        let mut name = Vec::with_capacity(hint.len() + 16);
+        name.push(b'.');
+        name.extend_from_slice(hint.as_bytes());
+        name.extend_from_slice(format!(".{number:08x}.part").as_bytes());
+        let tmp = joined(folder, &name);
+        let mut list = pending();
+        match OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .mode(0o666)
+            .open(&tmp)
+        {
+            Ok(file) => {
+                list.insert(tmp.clone(), std::process::id());
+                return Ok((file, tmp));
+            }
+            Err(error) if error.kind() == io::ErrorKind::AlreadyExists => continue,
+            Err(error) => return Err(error),
+        }
+    }
+}
+
+/// `path` with its name's stem followed by `.N` (`STEM.N.EXT`; the stem and the extension as
+/// pathlib reads them: the extension is the name's last `.` and what follows, unless the
+/// name begins or ends there).
+fn version_name(path: &Path, n: u64) -> PathBuf {
+    let whole = path.as_os_str().as_bytes();
+    let start = whole.iter().rposition(|&b| b == b'/').map_or(0, |i| i + 1);
+    let name = &whole[start..];
+    let dot = match name.iter().rposition(|&b| b == b'.') {
+        Some(i) if i > 0 && i + 1 < name.len() => i,
+        _ => name.len(),
+    };
+    let mut out = Vec::with_capacity(whole.len() + 8);
+    out.extend_from_slice(&whole[..start + dot]);
+    out.extend_from_slice(format!(".{n}").as_bytes());
+    out.extend_from_slice(&name[dot..]);
+    PathBuf::from(OsString::from_vec(out))
+}
+
+/// The steps of one commit (the module's list), the temporary file removed if one fails:
+/// the path named. With `version` (and not `overwrite`) a name taken is passed over for the
+/// next free version name, else it fails with `AlreadyExists`.
+fn commit(
+    file: File,
+    tmp: &Path,
+    target: &Path,
+    overwrite: bool,
+    version: bool,
+) -> io::Result<PathBuf> {
     let synced = file.sync_all(); // fsync(2)
     drop(file);
     let named = synced.and_then(|()| {
         if overwrite {
-            fs::rename(&tmp, &target)
-        } else {
-            fs::hard_link(&tmp, &target).and_then(|()| fs::remove_file(&tmp))
+            return fs::rename(tmp, target).map(|()| target.to_path_buf());
+        }
+        let mut n = 0;
+        loop {
+            let name = if n == 0 {
+                target.to_path_buf()
+            } else {
+                version_name(target, n)
+            };
+            match fs::hard_link(tmp, &name) {
+                Ok(()) => return fs::remove_file(tmp).map(|()| name),
+                Err(error) if version && error.kind() == io::ErrorKind::AlreadyExists => n += 1,
+                Err(error) => return Err(error),
+            }
         }
     });
     if named.is_err() {
-        let _ = fs::remove_file(&tmp); // (gone already where the link and removal were done)
+        let _ = fs::remove_file(tmp); // (gone already where the link and removal were done)
     }
+    forget(tmp);
     named
+}
+
+/// A commit of the pool's.
+fn commit_job(job: Job) -> io::Result<()> {
+    commit(job.file, &job.tmp, &job.target, job.overwrite, false).map(drop)
+}
+
+/// `PendingFile`'s temporary file: `(descriptor, path)` of a new hidden file in `folder` (see
+/// [`make_pending`]), the descriptor the caller's. The `OSError` of the folder where it cannot
+/// be made.
+#[pyfunction]
+pub(crate) fn pending_file(
+    py: Python<'_>,
+    folder: OsString,
+    hint: OsString,
+) -> PyResult<(RawFd, OsString)> {
+    match py.allow_threads(|| make_pending(&folder, &hint)) {
+        Ok((file, tmp)) => Ok((file.into_raw_fd(), tmp.into_os_string())),
+        Err(error) => Err(os_error(py, error)),
+    }
+}
+
+/// One file's commit ([`commit`]) on the caller's thread, the GIL released: the data written
+/// to the open file `fd` (handed over: closed here, whatever happens) at `tmp` named `target`
+/// (replacing a file there when `overwrite`; else a name taken is passed over for the next
+/// version name with `version`, or refused with `FileExistsError`). The path named, or the
+/// `OSError` of the step that failed (the temporary file removed).
+#[pyfunction]
+pub(crate) fn commit_file(
+    py: Python<'_>,
+    fd: RawFd,
+    tmp: PathBuf,
+    target: PathBuf,
+    overwrite: bool,
+    version: bool,
+) -> PyResult<OsString> {
+    if fd < 0 {
+        return Err(PyValueError::new_err("a file descriptor is not negative"));
+    }
+    // SAFETY: as in `Commits::submit`: a descriptor of the caller's own, closed by this File.
+    let file = unsafe { File::from_raw_fd(fd) };
+    match py.allow_threads(|| commit(file, &tmp, &target, overwrite, version)) {
+        Ok(named) => Ok(named.into_os_string()),
+        Err(error) => Err(os_error(py, error)),
+    }
+}
+
+/// The temporary file `tmp` removed (if it is there) and out of the list.
+#[pyfunction]
+pub(crate) fn discard_file(py: Python<'_>, tmp: PathBuf) -> PyResult<()> {
+    match fs::remove_file(&tmp) {
+        Err(error) if error.kind() != io::ErrorKind::NotFound => Err(os_error(py, error)),
+        _ => {
+            forget(&tmp);
+            Ok(())
+        }
+    }
+}
+
+/// Every temporary file this process made and has not named nor removed, removed: how many.
+/// For the process's end (a ^C between a file's making and its commit, in any thread), when
+/// nothing will name them: run by the C library's `exit` ([`sweep_at_exit`]), and called by
+/// `formats.files.sweep` where the process ends by `os._exit`.
+#[pyfunction]
+pub(crate) fn sweep_pending() -> usize {
+    sweep(&mut pending())
 }
 
 /// A thread of the pool: the jobs in the order they were handed over, until it is closed and
@@ -104,7 +331,7 @@ fn serve(shared: Arc<Shared>) {
         if let Some(job) = state.queue.pop_front() {
             drop(state);
             let ticket = job.ticket;
-            let outcome = commit(job);
+            let outcome = commit_job(job);
             state = shared.lock();
             state.done.insert(ticket, outcome);
             shared.finished.notify_all();
@@ -272,7 +499,7 @@ impl Commits {
     /// A commit run by the caller's thread.
     fn run_here(&self, job: Job) -> u64 {
         let ticket = job.ticket;
-        let outcome = commit(job);
+        let outcome = commit_job(job);
         self.shared.lock().done.insert(ticket, outcome);
         ticket
     }

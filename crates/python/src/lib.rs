@@ -828,6 +828,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ReadingEnd>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
     m.add_function(wrap_pyfunction!(files::has_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(commits::pending_file, m)?)?;
+    m.add_function(wrap_pyfunction!(commits::commit_file, m)?)?;
+    m.add_function(wrap_pyfunction!(commits::discard_file, m)?)?;
+    m.add_function(wrap_pyfunction!(commits::sweep_pending, m)?)?;
     m.add_function(wrap_pyfunction!(report::render_findings, m)?)?;
     m.add_function(wrap_pyfunction!(rules, m)?)?;
     m.add_function(wrap_pyfunction!(rule_id, m)?)?;
