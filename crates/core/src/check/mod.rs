@@ -1794,7 +1794,11 @@ impl Checker {
             self.split.ended(returns);
             if returns {
                 // RET, RTS: as after M99, what follows starts where a caller left the machine
+                // (and no run falls through to it: Checker::jump_arrival)
                 self.sub_ended = true;
+                if !b.skip {
+                    self.cut_block = self.stats.blocks;
+                }
                 self.part_ended(true);
                 self.machine.forget();
             }
