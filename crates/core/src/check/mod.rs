@@ -781,14 +781,14 @@ pub struct Checker {
     params: HashMap<Vec<u8>, Dec>,
     /// Custom Macro B: the sequence numbers a `GOTO` already read names (a jump forward may
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
-    /// (Each with the line of the first jump naming it; `goto_computed_line`: the last
-    /// computed one's.)
-    goto_targets: HashMap<u64, usize>,
+    /// (Each with the line of the first jump naming it and whether another names it too;
+    /// `goto_computed_line`: the last computed one's.)
+    goto_targets: HashMap<u64, (usize, bool)>,
     goto_computed: bool,
     goto_computed_line: usize,
     /// SINUMERIK: the block numbers (`N100`, in capitals) a jump already read names, each
-    /// with the line of the first.
-    goto_names: HashMap<Vec<u8>, usize>,
+    /// with the line of the first and whether another names it too.
+    goto_names: HashMap<Vec<u8>, (usize, bool)>,
     /// The program's sequence numbers and the blocks its words name (TG118).
     targets: targets::Targets,
     /// Whether the lines read now are reached (TG108).

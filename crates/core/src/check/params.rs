@@ -13,6 +13,16 @@ use crate::lex::{blank, Family};
 use crate::rules::Rule;
 use crate::statement::{digits_end, formula_right_hand_side, q_parameter, Kind};
 
+/// Where an arrival's values hold: the words of its message, for the jump of line `line` read
+/// first to block `name` (`N10`), and whether another jump to it was read too.
+fn not_taken((line, more): (usize, bool), name: &str) -> String {
+    if more {
+        format!("where none of the jumps to {name} (the first on line {line}) is taken")
+    } else {
+        format!("where the jump of line {line} is not taken")
+    }
+}
+
 /// The most `D=R1` quieted by a known value kept for a jump back ([`Checker::quiet_d_noted`]).
 const QUIET_D: usize = 256;
 
@@ -269,11 +279,7 @@ impl Checker {
             self.arrive(b, 0, format!("where no jump arrives at the label {name}"));
         } else if let Some((name, jump)) = named {
             let name = String::from_utf8_lossy(&name).into_owned();
-            self.arrive(
-                b,
-                0,
-                format!("where the jump of line {jump} to {name} is not taken"),
-            );
+            self.arrive(b, 0, not_taken(jump, &name));
         }
         for &(_, kind, text) in b.statements {
             if kind != Kind::Flow {
@@ -287,8 +293,11 @@ impl Checker {
                 }
                 // (a label's name is forgotten at any label: only a block number is kept)
                 if name.first() == Some(&b'N') && name[1..].iter().all(u8::is_ascii_digit) {
-                    if !self.goto_names.contains_key(name) {
-                        self.goto_names.insert(name.to_vec(), b.line);
+                    match self.goto_names.get_mut(name) {
+                        Some(jump) => jump.1 = true,
+                        None => {
+                            self.goto_names.insert(name.to_vec(), (b.line, false));
+                        }
                     }
                     let back = match direction {
                         super::targets::Direction::Backward => true,
@@ -314,13 +323,11 @@ impl Checker {
                 .find(|w| w.letter == b'N' && !w.number.is_empty())
                 .and_then(|w| std::str::from_utf8(w.number).ok()?.parse::<u64>().ok());
             if let Some(n) = label {
-                let jump = self
-                    .goto_targets
-                    .get(&n)
-                    .copied()
-                    .or(self.goto_computed.then_some(self.goto_computed_line));
+                let jump = self.goto_targets.get(&n).copied().or(self
+                    .goto_computed
+                    .then_some((self.goto_computed_line, false)));
                 if let Some(jump) = jump {
-                    self.arrive(b, n, format!("where the jump of line {jump} is not taken"));
+                    self.arrive(b, n, not_taken(jump, &format!("N{n}")));
                 }
             }
         }
@@ -337,7 +344,10 @@ impl Checker {
                 .and_then(|d| d.parse().ok())
             {
                 Some(n) => {
-                    self.goto_targets.entry(n).or_insert(b.line);
+                    self.goto_targets
+                        .entry(n)
+                        .and_modify(|jump| jump.1 = true)
+                        .or_insert((b.line, false));
                 }
                 None => {
                     self.goto_computed = true;
@@ -1131,6 +1141,16 @@ mod tests {
                 "; X#1 is -700 where the jump of line 4 is not taken (the value the \
                             blocks above line 6 set; where a jump arrives there it is not known)"
             ),
+            "{}",
+            found[0].message
+        );
+        // two jumps to N10: the message names the first, and says there are more
+        let two = "G0 X400. Y0\nIF[#2EQ1]GOTO10\nIF[#3EQ1]GOTO10\n#1=-700.\nN10 G0 X#1";
+        let found = findings(config(), &program(two), Rule::TravelExceeded);
+        assert!(
+            found[0]
+                .message
+                .contains("X#1 is -700 where none of the jumps to N10 (the first on line 3)"),
             "{}",
             found[0].message
         );
