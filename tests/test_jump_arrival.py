@@ -9,9 +9,16 @@ passes over: the control may arrive there with the values from before the jump.
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
 from formats.parser import parse_text
 from formats.profile import load_profile
 from postproc.check import Checker
+from tapegate.cli import main
 
 
 def findings(text: str, profile: str) -> list[tuple[str, int]]:
@@ -100,3 +107,74 @@ def test_okuma_a_jump_to_a_label():
     for jump in ("GOTO NLB1", "IF[VC2 EQ 1] NLB1"):
         text = f"G90\nVC1=-900.\n{jump}\nVC1=0\nNLB1 G0 X=VC1\nM02\n"
         assert ("TG141", 5) in findings(text, "okuma-mill")
+
+
+# -- review 41: the value where the jump is not taken (through the CLI) -----------------------
+
+def cli_findings(tmp_path: Path, name: str, text: str, profile: str,
+                 select: str) -> list[dict[str, object]]:
+    """`tapegate check FILE --profile PROFILE --select SELECT --format json`'s findings."""
+    path = tmp_path / name
+    path.write_text(text)
+    result = CliRunner().invoke(
+        main, ["check", str(path), "--profile", profile, "--select", select, "--all",
+               "--format", "json"], catch_exceptions=False)
+    found: list[dict[str, object]] = json.loads(result.output)["findings"]
+    return found
+
+
+def rules_at(found: list[dict[str, object]]) -> list[tuple[object, object]]:
+    return [(f["rule"], f["line"]) for f in found]
+
+
+# review 41's programs r1, r3, r4 (fanuc-mill: X travel 1524, S 10000, F 10000)
+R1 = "%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#1=0\nIF[#2EQ1]GOTO10\n#1=-900.\nN10 G0 X#1\nM30\n%\n"
+R3 = ("%\nO1000\nG21 G90 G54\nT1 M6\n#1=1000\nIF[#2EQ1]GOTO10\n#1=20000\nN10 S#1 M3\n"
+      "G0 X0 Y0\nM30\n%\n")
+R4 = ("%\nO1000\nG21 G90 G54\nT1 M6\nS1000 M3\n#1=100.\nIF[#2EQ1]GOTO10\n#1=20000.\n"
+      "N10 G1 X10. Y0 F#1\nM30\n%\n")
+R5 = "%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#1=-900.\nIF[#2EQ1]GOTO10\nG0 X#1\nN10 G0 X#1\nM30\n%\n"
+R7 = ("%\nO1000\nN1 G21 G90 G54\nN2 G0 X700. Y0\nN3 IF[#3EQ1]GOTO#5\nN4 #1=-900.\n"
+      "N5 G0 X#1\nN6 M30\n%\n")
+
+
+@pytest.mark.parametrize(("name", "text", "rule", "line", "said"), [
+    ("r1.nc", R1, "TG601", 8, "X#1 is -900 where the jump of line 6 is not taken"),
+    ("r3.nc", R3, "TG606", 8, "S#1 is 20000 where the jump of line 6 is not taken"),
+    ("r4.nc", R4, "TG605", 9, "F#1 is 20000 where the jump of line 7 is not taken"),
+    ("r7.nc", R7, "TG601", 7, "X#1 is -900 where the jump of line 5 is not taken"),
+])
+def test_a_jump_target_keeps_the_value_where_the_jump_is_not_taken(
+        tmp_path: Path, name: str, text: str, rule: str, line: int, said: str) -> None:
+    """Review 41, finding 0: with the jump not taken the machine runs the block with the
+    value set just above it (r1: X700 -> X-900, 1600 mm); the finding says so, and the value
+    stays unknown after the block (TG141), as where the jump arrives."""
+    found = cli_findings(tmp_path, name, text, "fanuc-mill", "TG6,TG141")
+    assert rules_at(found) == [("TG141", line), (rule, line)], found
+    assert said in str(found[1]["message"]), found[1]
+
+
+def test_a_conditional_jump_forward_keeps_the_values_where_it_falls_through(
+        tmp_path: Path) -> None:
+    """Review 41, finding 0's older half (r5.nc): `IF[#2EQ1]GOTO10` not taken changes no
+    parameter, so `G0 X#1` after it goes to X-900; N10 reads it where the jump is not taken
+    (the span already said)."""
+    found = cli_findings(tmp_path, "r5.nc", R5, "fanuc-mill", "TG6,TG141")
+    assert rules_at(found) == [("TG601", 7), ("TG141", 8)], found
+    assert "not taken" not in str(found[0]["message"])
+
+
+def test_sinumerik_a_jump_back_to_a_block_number(tmp_path: Path) -> None:
+    """Review 41, finding 3 (s5.mpf): the second pass of `GOTOB N10` reads `D=R1` with R1 =
+    0, set after it: TG503 at the D, said at the jump. Without the R1=0 in the loop, and with
+    numbered blocks and no jump back, the D stays quiet (fix (a): an N-numbered program
+    without loops keeps its D=R1 quiet)."""
+    body = ("G71 G90 G17\nT1 D1\nM6\nS1000 M3\nR1=5\nR2=0\nG0 X0 Y0 Z5\nG1 G41 X10 Y0 F100\n"
+            "N10 D=R1 X20\nR1=0\nR2=R2+1\nIF R2<2 GOTOB N10\nG40 G0 X60\nM30\n")
+    found = cli_findings(tmp_path, "s5.mpf", body, "sinumerik-840d", "TG502,TG503")
+    assert rules_at(found) == [("TG503", 9)], found
+    assert "the jump of line 12 back to N10" in str(found[0]["message"])
+    quiet = body.replace("R1=0\n", "R2=R2\n")
+    assert cli_findings(tmp_path, "s5q.mpf", quiet, "sinumerik-840d", "TG502,TG503") == []
+    numbered = body.replace("IF R2<2 GOTOB N10\n", "N40 R3=1\n")
+    assert cli_findings(tmp_path, "s5n.mpf", numbered, "sinumerik-840d", "TG502,TG503") == []

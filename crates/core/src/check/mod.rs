@@ -782,18 +782,38 @@ pub struct Checker {
     params: HashMap<Vec<u8>, Dec>,
     /// Custom Macro B: the sequence numbers a `GOTO` already read names (a jump forward may
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
-    goto_targets: HashSet<u64>,
+    /// (Each with the line of the first jump naming it and whether another names it too;
+    /// `goto_computed_line`: the last computed one's.)
+    goto_targets: HashMap<u64, (usize, bool)>,
     goto_computed: bool,
-    /// SINUMERIK: the block numbers (`N100`, in capitals) a jump already read names.
-    goto_names: HashSet<Vec<u8>>,
+    goto_computed_line: usize,
+    /// SINUMERIK: the block numbers (`N100`, in capitals) a jump already read names, each
+    /// with the line of the first and whether another names it too.
+    goto_names: HashMap<Vec<u8>, (usize, bool)>,
     /// The program's sequence numbers and the blocks its words name (TG118).
     targets: targets::Targets,
     /// Whether the lines read now are reached (TG108).
     reach: reach::Reach,
-    /// The last sequence number a jump may arrive at (its number and line), with the values
-    /// known there: a parameter still holding its value from before it may hold another one
-    /// where the jump arrives.
-    arrival: Option<(u64, usize, HashMap<Vec<u8>, Dec>)>,
+    /// The last block a jump may arrive at, with the values known there in file order: the
+    /// values where no jump arrives, which a jump may not bring ([`params::Arrival`]).
+    arrival: Option<params::Arrival>,
+    /// The words of the block on line `arrival_line` read with a value of the arrival
+    /// (`X#1`, a position, feed, speed or tool number where the jump is not taken): their
+    /// letters, forgotten after the block, and each one's column, word and value, named in
+    /// a limit's finding at it ([`Checker::report`]).
+    arrival_line: usize,
+    arrival_letters: u32,
+    arrival_words: Vec<(usize, String, Dec)>,
+    /// The block count (`stats.blocks`) of the last block that leaves unconditionally (a
+    /// `GOTO` outside an IF, M02/M30, M99): a block a jump may arrive at right after it is
+    /// reached by no fall-through, and its values in file order are no values at all.
+    cut_block: usize,
+    /// SINUMERIK: each `D=R1` under G41/G42 quieted by a known value ([`params::QuietD`]),
+    /// and the line each R parameter or variable was last assigned on: a jump back to a
+    /// block number before the D that passes over an assignment of what it reads makes
+    /// its D unknown on the next pass (review 41, finding 3).
+    quiet_d: Vec<params::QuietD>,
+    assigned_at: HashMap<Vec<u8>, usize>,
     /// Odd-length blocks for the TV check (said once, at the end).
     tv_odd: OddBlocks,
     /// Comments holding a harmless ':' (said once, at the end).
@@ -1131,12 +1151,19 @@ impl Checker {
             unknown_noted: false,
             elements_noted: HashSet::new(),
             params: HashMap::new(),
-            goto_targets: HashSet::new(),
+            goto_targets: HashMap::new(),
             goto_computed: false,
-            goto_names: HashSet::new(),
+            goto_computed_line: 0,
+            goto_names: HashMap::new(),
             targets: targets::Targets::default(),
             reach: reach::Reach::default(),
             arrival: None,
+            arrival_line: 0,
+            arrival_letters: 0,
+            arrival_words: Vec::new(),
+            cut_block: 0,
+            quiet_d: Vec::new(),
+            assigned_at: HashMap::new(),
             tv_odd: OddBlocks::default(),
             colons: Colons::default(),
             percent_closed: false,
@@ -1315,6 +1342,14 @@ impl Checker {
 
     pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
         self.reports += 1;
+        // a limit's finding at a word read with a jump's arrival value says where it holds
+        let message = match (self.arrival_letters != 0)
+            .then(|| self.arrival_said(rule, line, column))
+            .flatten()
+        {
+            Some(more) => message + &more,
+            None => message,
+        };
         if self.selection.enabled(rule) {
             self.found.push(Finding {
                 rule,
@@ -1787,7 +1822,11 @@ impl Checker {
             self.split.ended(returns);
             if returns {
                 // RET, RTS: as after M99, what follows starts where a caller left the machine
+                // (and no run falls through to it: Checker::jump_arrival)
                 self.sub_ended = true;
+                if !b.skip {
+                    self.cut_block = self.stats.blocks;
+                }
                 self.part_ended(true);
                 self.machine.forget();
             }
@@ -1823,7 +1862,10 @@ impl Checker {
             }
             if self.statements(b, None) {
                 self.machine.forget();
-                self.params.clear();
+                // (a conditional jump forward changes no parameter where it is not taken)
+                if !self.jump_keeps_params(b) {
+                    self.params_forgotten();
+                }
                 self.motion_unknown = true;
                 self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
                 // a subprogram or the blocks jumped over may set another pole
@@ -2122,6 +2164,10 @@ impl Checker {
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
+        // (what a word read from a jump's arrival set is unknown after its block)
+        if self.arrival_letters != 0 {
+            self.arrival_forget(b.line);
+        }
         // L100 calls; L1=R2 is an indexed word, no call
         let l_word = self.letters & bit(b'L') != 0
             && b.words
@@ -2152,7 +2198,10 @@ impl Checker {
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.machine.forget();
-            self.params.clear();
+            // (a conditional jump forward changes no parameter where it is not taken)
+            if calls || !self.jump_keeps_params(b) {
+                self.params_forgotten();
+            }
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.polar = polar::Polar::default();
@@ -2202,6 +2251,11 @@ impl Checker {
                 });
             if !(returns && !ends && skippable) {
                 self.part_ended(returns);
+            }
+            // (no run falls through to the block after it: a jump's arrival there keeps no
+            // values in file order, Checker::jump_arrival)
+            if !skippable {
+                self.cut_block = self.stats.blocks;
             }
             // what follows an end or a return in the file (a local subprogram N100 called by
             // M97/M98, another program) is reached only by a call or a jump, and starts where

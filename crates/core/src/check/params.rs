@@ -5,11 +5,50 @@
 //! jump or call forgets it. A value read from an unknown one is TG141 ([`super::words`]).
 
 use super::{BlockView, Checker};
+use std::collections::HashMap;
+
 use crate::decimal::Dec;
 use crate::expr;
 use crate::lex::{blank, Family};
 use crate::rules::Rule;
 use crate::statement::{digits_end, formula_right_hand_side, q_parameter, Kind};
+
+/// Where an arrival's values hold: the words of its message, for the jump of line `line` read
+/// first to block `name` (`N10`), and whether another jump to it was read too.
+fn not_taken((line, more): (usize, bool), name: &str) -> String {
+    if more {
+        format!("where none of the jumps to {name} (the first on line {line}) is taken")
+    } else {
+        format!("where the jump of line {line} is not taken")
+    }
+}
+
+/// The most `D=R1` quieted by a known value kept for a jump back ([`Checker::quiet_d_noted`]).
+const QUIET_D: usize = 256;
+
+/// The values known at the last block a jump may arrive at ([`Checker::jump_arrival`]), in
+/// file order: the values where no jump arrives.
+#[derive(Debug, Clone)]
+pub(super) struct Arrival {
+    /// Its sequence number (Custom Macro B; 0 on a SINUMERIK) and line.
+    n: u64,
+    line: usize,
+    /// Where the values hold: "where the jump of line 6 is not taken".
+    not_taken: String,
+    /// The values, by parameter, that no block has set since.
+    then: HashMap<Vec<u8>, Dec>,
+}
+
+/// SINUMERIK: a `D=R1` under G41/G42 quieted by the known value of what it reads: its line,
+/// column, word, compensation and the keys of the parameters and variables it reads.
+#[derive(Debug, Clone)]
+pub(super) struct QuietD {
+    line: usize,
+    column: usize,
+    token: String,
+    compensation: i64,
+    reads: Vec<Vec<u8>>,
+}
 
 impl Checker {
     /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
@@ -40,6 +79,15 @@ impl Checker {
 
     /// [`Checker::constant`] but a SINUMERIK's, read in full.
     fn constant_read(&self, expression: &[u8]) -> Option<Dec> {
+        let (negative, name) = self.parameter_key(expression)?;
+        let value = *self.params.get(&name)?;
+        Some(if negative { -value } else { value })
+    }
+
+    /// The parameter an expression reads alone, signed or in brackets (`#1`, `-#1`, `[R1]`,
+    /// `#<name>`), by its key, and whether it is negated.
+    #[inline]
+    fn parameter_key(&self, expression: &[u8]) -> Option<(bool, Vec<u8>)> {
         let (negative, rest) = match expression.first() {
             Some(b'-') => (true, &expression[1..]),
             Some(b'+') => (false, &expression[1..]),
@@ -61,8 +109,7 @@ impl Checker {
             }
             _ => return None,
         };
-        let value = *self.params.get(&name)?;
-        Some(if negative { -value } else { value })
+        Some((negative, name))
     }
 
     /// TG212: a Haas NGC parameter element read in the block (`#30003.078`, outside its
@@ -155,15 +202,21 @@ impl Checker {
     }
 
     /// A block a jump may arrive at forgets the parameters known there (issue 32, review 39
-    /// finding 3): every jump forgets them where it is read ([`Checker::statements`]), so the
-    /// values known at the block are the ones assigned since, between a jump that may reach it
-    /// and it, which the jump passes over. Such a block is
+    /// finding 3): the values known at the block in file order were set between a jump that
+    /// may reach it and it, or before the jump, and a jump may arrive with others. Such a block
+    /// is
     /// - Custom Macro B: one whose sequence number a `GOTO` read before it names (or any, after
-    ///   a `GOTO #1`). The values it forgets are kept aside for TG210 ([`Checker::uncertain`]);
+    ///   a `GOTO #1`);
     /// - SINUMERIK: a label (`LBL:`), whether a jump to it was read or not (a `GOTOB`, a
     ///   `GOTO` or a `REPEAT` below may come back to it), and a block number (`N100`) that a
     ///   jump read before names;
     /// - Okuma: a label (`NLBL1`), as a SINUMERIK's.
+    ///
+    /// The values forgotten are kept aside ([`Arrival`]): where no jump arrives -- the block
+    /// reached by falling through -- they are the values the parameters hold, so a limit's
+    /// finding reads them (review 41, finding 0: [`Checker::arrival_value`]), and TG210 as
+    /// its doubt ([`Checker::uncertain`]). Right after a block that always leaves (a `GOTO`
+    /// outside an IF, M02/M30, M99) nothing falls through, and none is kept.
     ///
     /// Then the block's own jump targets are noted.
     pub(super) fn jump_arrival(&mut self, b: &BlockView<'_>) {
@@ -177,26 +230,83 @@ impl Checker {
         }
     }
 
+    /// The values known at block `b`, a jump's arrival (`n` its sequence number, 0 for a
+    /// SINUMERIK's; `not_taken` the words that say where they hold), set aside with those of
+    /// the last arrival that no block has set since.
+    fn arrive(&mut self, b: &BlockView<'_>, n: u64, not_taken: String) {
+        let known = std::mem::take(&mut self.params);
+        // (a Custom Macro B block that ends an unreached part, reach.rs; elsewhere the block
+        // right after one that always leaves: reached by jumps alone)
+        let falls = if self.config.family == Family::MacroB {
+            self.reach.resumed != b.line
+        } else {
+            self.cut_block == 0 || self.stats.blocks != self.cut_block + 1
+        };
+        let mut then = match self.arrival.take() {
+            Some(old) if falls => old.then,
+            _ => HashMap::new(),
+        };
+        if falls {
+            then.extend(known);
+        } else {
+            then.clear();
+        }
+        self.arrival = Some(Arrival {
+            n,
+            line: b.line,
+            not_taken,
+            then,
+        });
+    }
+
     /// [`Checker::jump_arrival`] on a SINUMERIK.
     fn sinumerik_arrival(&mut self, b: &BlockView<'_>) {
-        let label = b.statements.iter().any(|s| s.1 == Kind::Label)
-            || (!self.goto_names.is_empty()
-                && b.words
-                    .iter()
-                    .find(|w| w.letter == b'N' && w.expression.is_empty() && w.index.is_empty())
-                    .is_some_and(|w| self.goto_names.contains(&w.token.to_ascii_uppercase()[..])));
-        if label {
-            self.params.clear();
+        let label = b.statements.iter().find(|s| s.1 == Kind::Label);
+        let named = if label.is_none() && !self.goto_names.is_empty() {
+            b.words
+                .iter()
+                .find(|w| w.letter == b'N' && w.expression.is_empty() && w.index.is_empty())
+                .and_then(|w| {
+                    let name = w.token.to_ascii_uppercase();
+                    self.goto_names.get(&name[..]).map(|&j| (name, j))
+                })
+        } else {
+            None
+        };
+        if let Some(&(_, _, text)) = label {
+            let name = String::from_utf8_lossy(text);
+            let name = name.trim().trim_end_matches(':');
+            self.arrive(b, 0, format!("where no jump arrives at the label {name}"));
+        } else if let Some((name, jump)) = named {
+            let name = String::from_utf8_lossy(&name).into_owned();
+            self.arrive(b, 0, not_taken(jump, &name));
         }
         for &(_, kind, text) in b.statements {
             if kind != Kind::Flow {
                 continue;
             }
             let upper = text.to_ascii_uppercase();
-            if let Some((_, _, name)) = super::targets::sinumerik_jump(&upper) {
+            if let Some((_, direction, name)) = super::targets::sinumerik_jump(&upper) {
+                let conditional = upper.trim_ascii_start().starts_with(b"IF");
+                if !conditional && !b.skip && b.skip_within.is_none() {
+                    self.cut_block = self.stats.blocks;
+                }
                 // (a label's name is forgotten at any label: only a block number is kept)
                 if name.first() == Some(&b'N') && name[1..].iter().all(u8::is_ascii_digit) {
-                    self.goto_names.insert(name.to_vec());
+                    match self.goto_names.get_mut(name) {
+                        Some(jump) => jump.1 = true,
+                        None => {
+                            self.goto_names.insert(name.to_vec(), (b.line, false));
+                        }
+                    }
+                    let back = match direction {
+                        super::targets::Direction::Backward => true,
+                        super::targets::Direction::Forward => false,
+                        super::targets::Direction::Both => self.targets.sinumerik_read(name),
+                    };
+                    if back && !self.quiet_d.is_empty() {
+                        self.jump_back_to_number(b.line, name);
+                    }
                 }
             }
         }
@@ -213,9 +323,11 @@ impl Checker {
                 .find(|w| w.letter == b'N' && !w.number.is_empty())
                 .and_then(|w| std::str::from_utf8(w.number).ok()?.parse::<u64>().ok());
             if let Some(n) = label {
-                if self.goto_computed || self.goto_targets.contains(&n) {
-                    let known = std::mem::take(&mut self.params);
-                    self.arrival = Some((n, b.line, known));
+                let jump = self.goto_targets.get(&n).copied().or(self
+                    .goto_computed
+                    .then_some((self.goto_computed_line, false)));
+                if let Some(jump) = jump {
+                    self.arrive(b, n, not_taken(jump, &format!("N{n}")));
                 }
             }
         }
@@ -232,11 +344,174 @@ impl Checker {
                 .and_then(|d| d.parse().ok())
             {
                 Some(n) => {
-                    self.goto_targets.insert(n);
+                    self.goto_targets
+                        .entry(n)
+                        .and_modify(|jump| jump.1 = true)
+                        .or_insert((b.line, false));
                 }
-                None => self.goto_computed = true,
+                None => {
+                    self.goto_computed = true;
+                    self.goto_computed_line = b.line;
+                }
             }
         }
+    }
+
+    /// Whether a block of a jump or call the checker does not follow (TG140) leaves the
+    /// parameters as they were where the run falls through it: a conditional jump forward
+    /// (`IF [#2 EQ 1] GOTO 10` to a sequence number no block of the program has shown yet, a
+    /// SINUMERIK's `IF R2==1 GOTOF LBL`) changes none where it is not taken, and where it
+    /// is, its target forgets them ([`Checker::jump_arrival`]) (review 41, finding 0:
+    /// `#1=-900.` / `IF[#2EQ1]GOTO10` / `G0 X#1` goes to X-900). A call (the subprogram may
+    /// set them), a loop (its end comes back with the body's values), a jump back or one
+    /// whose target is not known (`GOTO #5`, `GOTOC`) forget them all.
+    pub(super) fn jump_keeps_params(&self, b: &BlockView<'_>) -> bool {
+        let family = self.config.family;
+        if !matches!(family, Family::MacroB | Family::Sinumerik) {
+            return false;
+        }
+        let mut jumps = false;
+        for &(_, kind, text) in b.statements {
+            if !kind.unfollowed() {
+                continue;
+            }
+            if kind != Kind::Flow {
+                return false;
+            }
+            if family == Family::MacroB && crate::statement::conditional_assignment(text).is_some()
+            {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            if !upper.trim_ascii_start().starts_with(b"IF") {
+                return false;
+            }
+            let forward = if family == Family::MacroB {
+                super::targets::goto_words(&upper).is_some_and(|(_, digits, tail)| {
+                    tail.iter().all(|&c| blank(c))
+                        && crate::text::digits_value(digits)
+                            .is_some_and(|n| self.targets.read_before(n) == Some(false))
+                })
+            } else {
+                super::targets::sinumerik_jump(&upper).is_some_and(|(_, direction, name)| {
+                    match direction {
+                        super::targets::Direction::Forward => true,
+                        super::targets::Direction::Backward => false,
+                        super::targets::Direction::Both => !self.targets.sinumerik_read(name),
+                    }
+                })
+            };
+            if !forward {
+                return false;
+            }
+            jumps = true;
+        }
+        jumps
+    }
+
+    /// The value of word `w` (`X#1`, `F#1`, `S=R1`) on `line` where no parameter it reads is
+    /// known but each holds a value of the last arrival ([`Checker::jump_arrival`]): the
+    /// value the word has where no jump arrives, a run that really occurs (review 41,
+    /// finding 0). Read for a position, a feed, a speed and a tool number, whose limits
+    /// (TG601-TG606) say it is out of range on that run; the word is taken as unknown after
+    /// its block ([`Checker::arrival_forget`]) and TG141 says so, as for any value not known.
+    /// (Asked only where an arrival keeps values, of a word with an expression.)
+    #[cold]
+    #[inline(never)]
+    pub(super) fn arrival_value(&mut self, w: &super::Word<'_>, line: usize) -> Option<Dec> {
+        let letter = w.letter;
+        if !(crate::modal::axis_index(letter).is_some() || matches!(letter, b'F' | b'S' | b'T')) {
+            return None;
+        }
+        let arrival = self.arrival.as_ref()?;
+        if arrival.then.is_empty() {
+            return None;
+        }
+        let value = if self.config.family == Family::Sinumerik {
+            let expression = w.expression;
+            let tree = expr::sinumerik_tree(expression).ok()?;
+            let known = |p: &[u8]| {
+                let key = sinumerik_key(p);
+                self.params
+                    .get(&key)
+                    .or_else(|| arrival.then.get(&key))
+                    .copied()
+            };
+            expr::sinumerik_value(&tree, expression, &known)?
+        } else {
+            let (negative, key) = self.parameter_key(w.expression)?;
+            if self.params.contains_key(&key) {
+                return None;
+            }
+            let value = *arrival.then.get(&key)?;
+            if negative {
+                -value
+            } else {
+                value
+            }
+        };
+        if self.arrival_line != line {
+            self.arrival_line = line;
+            self.arrival_letters = 0;
+            self.arrival_words.clear();
+        }
+        self.arrival_letters |= crate::modal::bit(letter);
+        self.arrival_words.push((w.column, w.token(), value));
+        self.not_evaluated(line, w);
+        Some(value)
+    }
+
+    /// After the block on `line`: what its words read from an arrival set is unknown again
+    /// ([`Checker::arrival_value`]): where the jump arrives, it is another value.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn arrival_forget(&mut self, line: usize) {
+        let letters = std::mem::take(&mut self.arrival_letters);
+        if self.arrival_line != line {
+            return;
+        }
+        for letter in b'A'..=b'Z' {
+            if letters & crate::modal::bit(letter) == 0 {
+                continue;
+            }
+            match letter {
+                b'F' => self.machine.forget_feed(),
+                b'S' => self.machine.forget_speed(),
+                b'T' => {
+                    self.machine.state.tool = None;
+                    self.machine.state.unknown |= crate::modal::bit(b'T');
+                }
+                _ => self.machine.forget_axis(letter),
+            }
+        }
+    }
+
+    /// What a limit's finding (TG601-TG606) at `column` of `line` adds where the word there
+    /// was read with the value of an arrival ([`Checker::arrival_value`]): the word, its
+    /// value and where it holds it.
+    #[cold]
+    pub(super) fn arrival_said(&self, rule: Rule, line: usize, column: usize) -> Option<String> {
+        if self.arrival_letters == 0 || self.arrival_line != line {
+            return None;
+        }
+        if !matches!(
+            rule,
+            Rule::TravelExceeded
+                | Rule::FeedTooHigh
+                | Rule::SpeedTooHigh
+                | Rule::ToolOutOfRange
+                | Rule::FeedClamped
+                | Rule::SpeedLimited
+        ) {
+            return None;
+        }
+        let (_, token, value) = self.arrival_words.iter().find(|w| w.0 == column)?;
+        let arrival = self.arrival.as_ref()?;
+        Some(format!(
+            "; {token} is {value} {} (the value the blocks above line {} set; where a \
+             jump arrives there it is not known)",
+            arrival.not_taken, arrival.line
+        ))
     }
 
     /// Where a jump may arrive with another value of the parameter `expression` (`#1`) than
@@ -244,7 +519,7 @@ impl Checker {
     /// arrives at and its line, when the parameter was known there (and forgotten,
     /// [`Checker::jump_arrival`]) and no block has set it since.
     pub(super) fn uncertain(&self, expression: &[u8]) -> Option<(Dec, u64, usize)> {
-        let (n, line, then) = self.arrival.as_ref()?;
+        let arrival = self.arrival.as_ref()?;
         let key = match expression {
             [b'#', b'<', named @ .., b'>'] => named_parameter(named),
             [letter, digits @ ..] if digits.iter().all(u8::is_ascii_digit) => {
@@ -255,14 +530,136 @@ impl Checker {
         if self.params.contains_key(&key) {
             return None;
         }
-        then.get(&key).map(|&value| (value, *n, *line))
+        arrival
+            .then
+            .get(&key)
+            .map(|&value| (value, arrival.n, arrival.line))
     }
 
     /// A parameter set since the last jump arrival: its value there no longer matters.
     fn set_since_arrival(&mut self, key: &[u8]) {
-        if let Some((_, _, then)) = &mut self.arrival {
-            then.remove(key);
+        if let Some(arrival) = &mut self.arrival {
+            arrival.then.remove(key);
         }
+    }
+
+    /// A jump or call that forgets every parameter: the values of an arrival are no longer
+    /// theirs either.
+    pub(super) fn params_forgotten(&mut self) {
+        self.params.clear();
+        self.arrival = None;
+    }
+
+    /// SINUMERIK: a `D=R1` (`w`) on `line` under G41/G42 (`compensation`) quieted by the
+    /// known value of what it reads: noted, for a jump back to a block number before it
+    /// ([`Checker::jump_back_to_number`]).
+    pub(super) fn quiet_d_noted(&mut self, w: &super::Word<'_>, line: usize, compensation: i64) {
+        if self.quiet_d.len() >= QUIET_D {
+            return;
+        }
+        let mut reads = Vec::new();
+        let text = w.expression;
+        let mut i = 0;
+        while i < text.len() {
+            let c = text[i];
+            if c.is_ascii_alphabetic() || c == b'_' {
+                let end = text[i..]
+                    .iter()
+                    .position(|&c| !(c.is_ascii_alphanumeric() || c == b'_'))
+                    .map_or(text.len(), |e| i + e);
+                reads.push(sinumerik_key(&text[i..end]));
+                i = end;
+            } else {
+                i += 1;
+            }
+        }
+        self.quiet_d.push(QuietD {
+            line,
+            column: w.column,
+            token: w.token(),
+            compensation,
+            reads,
+        });
+    }
+
+    /// SINUMERIK: a jump on `line` back to block number `name` (`GOTOB N10`): each `D=R1`
+    /// at or after that block that a known value quieted (TG503 not said) is TG503 now where
+    /// what it reads was assigned between that block and the jump: the next pass reads the D
+    /// with another value (review 41, finding 3; the block number's block was read before
+    /// the jump, with the values above it).
+    fn jump_back_to_number(&mut self, line: usize, name: &[u8]) {
+        let Some((_, from)) = self.targets.sinumerik_lines(name) else {
+            return;
+        };
+        let notes = std::mem::take(&mut self.quiet_d);
+        let mut kept = Vec::with_capacity(notes.len());
+        for note in notes {
+            let assigned = (note.line >= from)
+                .then(|| {
+                    note.reads.iter().find_map(|key| {
+                        self.assigned_at
+                            .get(key)
+                            .filter(|&&at| at >= from)
+                            .map(|&at| (key, at))
+                    })
+                })
+                .flatten();
+            let Some((key, at)) = assigned else {
+                kept.push(note);
+                continue;
+            };
+            let g = note.compensation;
+            let message = format!(
+                "{} while G{g} is active: the jump of line {line} back to {} comes to it again \
+                 with {} as assigned on line {at}, not the value read on the first pass: the \
+                 D's value is not known there; a D change is allowed under compensation \
+                 (840Di sl Fundamentals 8.8), but if it is 0, D0 switches the offset off under \
+                 G{g} and the tool cuts a radius into the part",
+                note.token,
+                String::from_utf8_lossy(name),
+                String::from_utf8_lossy(key),
+            );
+            self.report(
+                Rule::UnknownDInCompensation,
+                message,
+                note.line,
+                note.column,
+            );
+        }
+        self.quiet_d = kept;
+    }
+
+    /// SINUMERIK: a `D=R1` (`w`) whose value is not known, on `line` under G41/G42: where
+    /// what it reads holds 0 in file order at an arrival (the run where no jump arrives,
+    /// [`Checker::arrival_value`]), that D0 is TG502's finding (review 41, finding 0).
+    pub(super) fn arrival_d0(&mut self, w: &super::Word<'_>, line: usize, compensation: i64) {
+        let Some(arrival) = self.arrival.as_ref().filter(|a| !a.then.is_empty()) else {
+            return;
+        };
+        let Ok(tree) = expr::sinumerik_tree(w.expression) else {
+            return;
+        };
+        let known = |p: &[u8]| {
+            let key = sinumerik_key(p);
+            self.params
+                .get(&key)
+                .or_else(|| arrival.then.get(&key))
+                .copied()
+        };
+        let zero =
+            expr::sinumerik_value(&tree, w.expression, &known).is_some_and(|v| v.to_f64() == 0.0);
+        if !zero {
+            return;
+        }
+        let message = format!(
+            "{} while G{compensation} is active: D0 {} (the value the blocks above line {} \
+             set; where a jump arrives there it is not known), which switches the offset off \
+             under G{compensation}: the tool cuts a radius into the part; program G40 first",
+            w.token(),
+            arrival.not_taken,
+            arrival.line
+        );
+        self.report(Rule::ToolChangeInCompensation, message, line, w.column);
     }
 
     /// The value of a Sinumerik expression (`R1+5`, `R2*SIN(30)`) where it reads only numbers
@@ -302,7 +699,7 @@ impl Checker {
         }
         for &(_, kind, text) in b.statements {
             match kind {
-                Kind::Assignment => self.variable(text),
+                Kind::Assignment => self.variable(text, b.line),
                 // DEF REAL _A=2, _B: each declared name with its initial value, if any
                 Kind::Declaration => {
                     for piece in split_arguments(text) {
@@ -315,7 +712,7 @@ impl Checker {
                             continue;
                         };
                         let value = piece.get(name_end + 1..).unwrap_or(b"");
-                        self.variable(&[name, &b"="[..], value].concat());
+                        self.variable(&[name, &b"="[..], value].concat(), b.line);
                     }
                 }
                 _ => {}
@@ -323,8 +720,9 @@ impl Checker {
         }
     }
 
-    /// `NAME = expression`: the variable known, or unknown again (not a simple name: skipped).
-    pub(super) fn variable(&mut self, text: &[u8]) {
+    /// `NAME = expression` on `line`: the variable known, or unknown again (not a simple
+    /// name: skipped).
+    pub(super) fn variable(&mut self, text: &[u8], line: usize) {
         let Some(eq) = text.iter().position(|&c| c == b'=') else {
             return;
         };
@@ -343,6 +741,8 @@ impl Checker {
         } else {
             self.sinumerik_constant(rhs)
         };
+        self.set_since_arrival(&key);
+        self.assigned_at.insert(key.clone(), line);
         match value {
             Some(value) => {
                 self.params.insert(key, value);
@@ -407,6 +807,9 @@ impl Checker {
             };
             if self.arrival.is_some() {
                 self.set_since_arrival(&name);
+            }
+            if self.config.family == Family::Sinumerik {
+                self.assigned_at.insert(name.clone(), b.line);
             }
             match value {
                 Some(value) => {
@@ -718,6 +1121,176 @@ mod tests {
         assert_eq!(feed(Family::MacroB, expression), (vec![], vec![4]));
         let jump = "#101 = 1500.\nGOTO 10\nN10 G01 X1. F#101";
         assert_eq!(feed(Family::MacroB, jump), (vec![], vec![4]));
+    }
+
+    /// Review 41, finding 0: at a sequence number a GOTO read before names, the values set
+    /// since the jump are the values where it is not taken, a run that really occurs: the
+    /// limits read them (iso-mill's travel X -500..500, feed 999.9, speed 6000), and the
+    /// finding says where they hold.
+    #[test]
+    fn a_jump_target_keeps_the_value_where_the_jump_is_not_taken() {
+        use super::super::testing::findings;
+        let config = || of_family(Family::MacroB);
+        // line 2 X400, line 6 N10 X#1 = -700 where line 4's jump is not taken: 1100 > 1000
+        let travel = "G0 X400. Y0\n#1=0\nIF[#2EQ1]GOTO10\n#1=-700.\nN10 G0 X#1";
+        let found = findings(config(), &program(travel), Rule::TravelExceeded);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (6, 8));
+        assert!(
+            found[0].message.ends_with(
+                "; X#1 is -700 where the jump of line 4 is not taken (the value the \
+                            blocks above line 6 set; where a jump arrives there it is not known)"
+            ),
+            "{}",
+            found[0].message
+        );
+        // two jumps to N10: the message names the first, and says there are more
+        let two = "G0 X400. Y0\nIF[#2EQ1]GOTO10\nIF[#3EQ1]GOTO10\n#1=-700.\nN10 G0 X#1";
+        let found = findings(config(), &program(two), Rule::TravelExceeded);
+        assert!(
+            found[0]
+                .message
+                .contains("X#1 is -700 where none of the jumps to N10 (the first on line 3)"),
+            "{}",
+            found[0].message
+        );
+        // the value is unknown after its block (TG141), as where the jump arrives
+        let after = format!("{travel}\nG91 G0 X-400.");
+        assert_eq!(
+            fired(config(), &program(&after), Rule::TravelExceeded),
+            [(6, 8)]
+        );
+        assert_eq!(
+            fired(config(), &program(travel), Rule::NotEvaluated),
+            [(6, 8)]
+        );
+        // a computed GOTO (r7.nc): every numbered block after it may be its target
+        let computed = "N1 G0 X400. Y0\nN2 IF[#3EQ1]GOTO#5\nN3 #1=-700.\nN4 G0 X#1";
+        assert_eq!(
+            fired(config(), &program(computed), Rule::TravelExceeded),
+            [(5, 7)]
+        );
+        // right after a GOTO outside an IF no run falls through: the value set between the
+        // GOTO and N10 (unreached) is no value at all
+        let cut = "G0 X400. Y0\nIF[#2EQ1]GOTO10\nGOTO 20\n#1=-700.\nN20 M5\nN10 G0 X#1";
+        assert_eq!(fired(config(), &program(cut), Rule::TravelExceeded), []);
+        // a feed (FANUC: clamped, TG605) and a speed (6000) likewise
+        let feed = "#1=100.\nIF[#2EQ1]GOTO10\n#1=2000.\nN10 G1 X1. F#1";
+        assert_eq!(
+            fired(config(), &program(feed), Rule::FeedClamped),
+            [(5, 12)]
+        );
+        let speed = "#1=1000\nIF[#2EQ1]GOTO10\n#1=8000\nN10 S#1 M3";
+        assert_eq!(
+            fired(config(), &program(speed), Rule::SpeedLimited).len()
+                + fired(config(), &program(speed), Rule::SpeedTooHigh).len(),
+            1
+        );
+    }
+
+    /// Review 41, finding 0's older half: a conditional jump forward not taken changes no
+    /// parameter (r5.nc); a jump back and a computed one still forget them all.
+    #[test]
+    fn a_conditional_jump_forward_keeps_the_parameters_where_it_falls_through() {
+        let config = || of_family(Family::MacroB);
+        let forward = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\nG0 X#1\nN10 M5";
+        assert_eq!(
+            fired(config(), &program(forward), Rule::TravelExceeded),
+            [(5, 4)]
+        );
+        assert_eq!(fired(config(), &program(forward), Rule::NotEvaluated), []);
+        let back = "N10 G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\nG0 X#1";
+        assert_eq!(fired(config(), &program(back), Rule::TravelExceeded), []);
+        assert_eq!(
+            fired(config(), &program(back), Rule::NotEvaluated),
+            [(5, 4)]
+        );
+        let computed = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO#3\nG0 X#1";
+        assert_eq!(
+            fired(config(), &program(computed), Rule::TravelExceeded),
+            []
+        );
+        // a call: the subprogram may set #1
+        let call = "G0 X400. Y0\n#1=-700.\nM98 P100\nG0 X#1";
+        assert_eq!(fired(config(), &program(call), Rule::TravelExceeded), []);
+        // SINUMERIK: IF .. GOTOF keeps R1, IF .. GOTOB forgets it
+        let sinumerik = || of_family(Family::Sinumerik);
+        let gotof = "G0 X400 Y0\nR1=-700\nIF R2==1 GOTOF LBL\nG0 X=R1\nLBL:\nM5";
+        assert_eq!(
+            fired(sinumerik(), &program(gotof), Rule::TravelExceeded),
+            [(5, 4)]
+        );
+        let gotob = "LBL:\nG0 X400 Y0\nR1=-700\nIF R2==1 GOTOB LBL\nG0 X=R1";
+        assert_eq!(
+            fired(sinumerik(), &program(gotob), Rule::TravelExceeded),
+            []
+        );
+    }
+
+    /// SINUMERIK: a label keeps the values in file order aside as a Custom Macro B target
+    /// does; a `D=R1` reading one is still TG503 (review 39, finding 3), and TG502 besides
+    /// where that value is 0.
+    #[test]
+    fn a_sinumerik_label_keeps_the_value_where_no_jump_arrives() {
+        use super::super::testing::findings;
+        let config = || of_family(Family::Sinumerik);
+        let travel = "G0 X400 Y0\nR1=-700\nLBL:\nG0 X=R1";
+        let found = findings(config(), &program(travel), Rule::TravelExceeded);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(
+            found[0]
+                .message
+                .contains("X=R1 is -700 where no jump arrives at the label LBL"),
+            "{}",
+            found[0].message
+        );
+        let head = "T1 D1\nM6\nS1000 M3\nG0 X0 Y0 Z5\nG1 G41 X10 Y0 F100\n";
+        let zero = format!("{head}R1=5\nIF R2==1 GOTOF LBL\nR1=0\nLBL:\nD=R1 X20\nG40 G0 X60");
+        assert_eq!(
+            fired(config(), &program(&zero), Rule::UnknownDInCompensation),
+            [(11, 1)]
+        );
+        assert_eq!(
+            fired(config(), &program(&zero), Rule::ToolChangeInCompensation),
+            [(11, 1)]
+        );
+        let five = zero.replace("R1=0", "R1=7");
+        assert_eq!(
+            fired(config(), &program(&five), Rule::ToolChangeInCompensation),
+            []
+        );
+    }
+
+    /// Review 41, finding 3 (fix (a)): a jump back to a block number (`GOTOB N10`) makes a
+    /// `D=R1` at or after it that a known value quieted TG503 where R1 is assigned between
+    /// the block and the jump; N-numbered blocks without such a loop stay quiet.
+    #[test]
+    fn a_jump_back_to_a_block_number_comes_to_d_with_another_value() {
+        let config = || of_family(Family::Sinumerik);
+        let head = "T1 D1\nM6\nS1000 M3\nR1=5\nR2=0\nG0 X0 Y0 Z5\nG1 G41 X10 Y0 F100\n";
+        let looped = format!("{head}N10 D=R1 X20\nR1=0\nR2=R2+1\nIF R2<2 GOTOB N10\nG40 G0 X60");
+        assert_eq!(
+            fired(config(), &program(&looped), Rule::UnknownDInCompensation),
+            [(9, 5)]
+        );
+        // the loop does not assign R1: the D reads 5 on every pass
+        let kept = looped.replace("R1=0\n", "");
+        assert_eq!(
+            fired(config(), &program(&kept), Rule::UnknownDInCompensation),
+            []
+        );
+        // no jump back: quiet, numbered blocks or not
+        let plain = format!("{head}N10 D=R1 X20\nN20 R1=0\nN30 G40 G0 X60");
+        assert_eq!(
+            fired(config(), &program(&plain), Rule::UnknownDInCompensation),
+            []
+        );
+        // the jump back to a block after the D passes over none of it
+        let after = format!("{head}D=R1 X20\nN20 R1=0\nIF R2<2 GOTOB N20\nG40 G0 X60");
+        assert_eq!(
+            fired(config(), &program(&after), Rule::UnknownDInCompensation),
+            []
+        );
     }
 
     #[test]

@@ -38,6 +38,10 @@ pub(super) struct Reach {
     left: Option<(usize, Leaving)>,
     /// How deep in `WHILE`/`DO` loops the read stands.
     loops: usize,
+    /// The line of the block with a sequence number that ended an unreached part: no run
+    /// falls through to it, only a jump reaches it (a jump's arrival there keeps no values in
+    /// file order, [`Checker::jump_arrival`]).
+    pub(super) resumed: usize,
 }
 
 /// How a block leaves.
@@ -150,8 +154,10 @@ impl Checker {
                 _ => {}
             }
         }
-        if in_loop_statement || self.letters & crate::modal::bit(b'N') != 0 {
-            self.reach.left = None;
+        if (in_loop_statement || self.letters & crate::modal::bit(b'N') != 0)
+            && self.reach.left.take().is_some()
+        {
+            self.reach.resumed = b.line;
         }
         if b.skip || b.skip_within.is_some() || self.reach.loops > 0 {
             return;

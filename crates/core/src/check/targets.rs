@@ -269,7 +269,7 @@ impl Targets {
     }
 
     /// The first and last line of a SINUMERIK label or block number, by its name in capitals.
-    fn sinumerik_lines(&self, name: &[u8]) -> Option<(usize, usize)> {
+    pub(super) fn sinumerik_lines(&self, name: &[u8]) -> Option<(usize, usize)> {
         match block_number_key(name) {
             Some(key) => self.numbers.lines(key),
             None => self.labels.get(name).copied(),
@@ -287,6 +287,18 @@ impl Targets {
         }
         self.count += 1;
         self.pending.entry(target.n).or_default().push(target);
+    }
+
+    /// Custom Macro B: whether the program has shown sequence number `n` so far (a `GOTO n`
+    /// may go back to it); None where the numbers are not all kept.
+    pub(super) fn read_before(&self, n: u64) -> Option<bool> {
+        (!self.overflow).then(|| self.has(n))
+    }
+
+    /// SINUMERIK: whether the program has shown label or block number `name` (in capitals)
+    /// so far, or may have (its names not all kept).
+    pub(super) fn sinumerik_read(&self, name: &[u8]) -> bool {
+        self.overflow || self.sinumerik_lines(name).is_some()
     }
 
     fn has(&self, n: u64) -> bool {

@@ -2172,6 +2172,23 @@ impl Checker {
                 before.compensation, before.compensation
             );
             self.report(Rule::UnknownDInCompensation, message, line, facts.col(b'D'));
+            // where no jump arrives, its value in file order may be 0 (review 41, finding 0)
+            if self.arrival.is_some() {
+                if let Some(w) = facts.words.iter().find(|w| w.letter == b'D') {
+                    self.arrival_d0(w, line, before.compensation);
+                }
+            }
+        }
+        // a D its value quiets (`D=R1`, R1 known and not 0): a jump back to a block number
+        // before it may come again with another value (review 41, finding 3)
+        if d_changes && matches!(before.compensation, 41 | 42) && !facts.has(40) {
+            if let Some(w) = facts
+                .words
+                .iter()
+                .find(|w| w.letter == b'D' && !w.expression.is_empty())
+            {
+                self.quiet_d_noted(w, line, before.compensation);
+            }
         }
         if matches!(before.compensation, 41 | 42)
             && !facts.has(40)

@@ -247,6 +247,14 @@ impl Checker {
                 let known = (w.index.is_empty() && letter.is_ascii_uppercase())
                     .then(|| self.constant(w.expression))
                     .flatten();
+                // (a word reading a value a jump's arrival set aside: the value where no jump
+                // arrives, for the limits of its block; params.rs)
+                let known = match known {
+                    None if self.arrival.is_some() && w.index.is_empty() && !extended => {
+                        self.arrival_value(w, line)
+                    }
+                    known => known,
+                };
                 self.readable.push(known);
                 continue;
             }
