@@ -1276,22 +1276,18 @@ impl Checker {
     /// shift after it). Where the shift was followed that is where the tool stood before
     /// it, already in the span; where it was not (`G92 X0 Y0 Z0` at a program's start, the
     /// position before it not known) it starts the new span where the tool stands, so that
-    /// the next moves span from there (review 39, finding 1). Not under a frame, in units
-    /// not known, in a block that changes the units, or for a FANUC lathe's U and W.
+    /// the next moves span from there (review 39, finding 1). Its words are in the units
+    /// the block sets where it writes a units code (`G21 G90 G92 X0 Y0 Z0`, the commonest
+    /// header: a FANUC block's G20/G21 governs its own words, and LinuxCNC sets the length
+    /// units before G92's offsets, its order of execution; review 41, finding 1). Not under a
+    /// frame, in units not known, or for a FANUC lathe's U and W.
     #[cold]
     #[inline(never)]
     fn set_stands(&mut self, b: &BlockView<'_>, named: u32) {
-        let settings = &self.machine.settings;
-        if self.frames.on != 0
-            || self.units_unknown
-            || self
-                .values
-                .gs()
-                .iter()
-                .any(|&g| settings.units_code(g).is_some())
-        {
+        if self.frames.on != 0 || self.units_unknown {
             return;
         }
+        // (the block's own units: Checker::block_modes)
         let factor = self.to_profile_units(false);
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         for a in crate::modal::places(crate::modal::axis_places(named)) {
@@ -2579,6 +2575,35 @@ mod tests {
             assert_eq!(at(config.clone(), followed, Rule::TravelExceeded), []);
             let followed = "G90 G00 X-400.\nG92 X0\nX1100.\n";
             assert_eq!(at(config, followed, Rule::TravelExceeded), [(4, 1)]);
+        }
+    }
+
+    /// Review 41, finding 1: a G92 in a block that also writes a units code (the commonest
+    /// header, `G21 G90 G92 X0 Y0 Z0`) puts where the tool stands in the new span too, its
+    /// words in the units the block sets (a FANUC block's G20/G21 governs its own words;
+    /// LinuxCNC sets the length units before G92's offsets: `rs274 -g` of `G20 G90`, `G0 X1`,
+    /// `G21 G92 X10` gives SET_G92_OFFSET(15.4000, ...)). Travel X -500 to 500.
+    #[test]
+    fn a_g92_beside_a_units_code_reads_its_words_in_the_block_s_units() {
+        for family in [Family::MacroB, Family::LinuxCnc] {
+            let mut config = of_family(family);
+            (config.modal.inch, config.modal.metric) = (20, 21);
+            let header = "G21 G90 G92 X0 Y0 Z0\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), header, Rule::TravelExceeded), [(3, 4)]);
+            // a code that changes nothing counts the same
+            let again = "G21 G90\nG21 G92 X0 Y0 Z0\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), again, Rule::TravelExceeded), [(4, 4)]);
+            // G20 beside it under a mm start: 40 in is 1016 mm, 39 in 990.6
+            let inch = "G21 G90\nG20 G92 X0 Y0\nG0 X40.\n";
+            assert_eq!(at(config.clone(), inch, Rule::TravelExceeded), [(4, 4)]);
+            let inside = "G21 G90\nG20 G92 X0 Y0\nG0 X39.\n";
+            assert_eq!(at(config.clone(), inside, Rule::TravelExceeded), []);
+            // G21 beside it under an inch start: X400. is 400 mm, not 400 in (10160 mm), so
+            // spans 950, inside; X-650. spans 1050
+            let mm = "G20 G90\nG21 G92 X400.\nG0 X-550.\n";
+            assert_eq!(at(config.clone(), mm, Rule::TravelExceeded), []);
+            let mm = "G20 G90\nG21 G92 X400.\nG0 X-650.\n";
+            assert_eq!(at(config, mm, Rule::TravelExceeded), [(4, 4)]);
         }
     }
 
