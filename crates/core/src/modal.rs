@@ -751,6 +751,18 @@ impl ModalMachine {
         self.taken
     }
 
+    /// Whether the block last given to [`ModalMachine::apply`] moved X and Z by its U and W:
+    /// a FANUC or Haas lathe of G code system A, or an Okuma lathe, in G00-G03 outside its
+    /// cycles (U W the incremental commands of X Z, U a diameter as X is). In G code system B
+    /// or C, where no page at hand says U and W still move X and Z, where X and Z stand after
+    /// one is not followed (false).
+    pub fn uw_moved_xz(&self) -> bool {
+        (self.settings.fanuc_lathe || self.settings.lap)
+            && self.uw_moves
+            && self.state.cycle.is_none()
+            && self.settings.g_system == GCodeSystem::A
+    }
+
     /// After a jump or a call the checker cannot follow: the position, feed and speed are
     /// unknown until the program sets them again.
     pub fn forget(&mut self) {

@@ -1625,8 +1625,24 @@ impl Checker {
     /// axis, unless a machine position was already found outside). Under a SINUMERIK's
     /// kinematic transformation neither: its axes are not the machine's.
     pub(super) fn limits(&mut self, line: usize, facts: &Facts<'_>, absolute: bool) {
-        let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
-        let mut places = facts.moved_places();
+        let (mut moved, mut places) = (facts.moved(), facts.moved_places());
+        // a lathe's U and W that moved X and Z (FANUC and Haas G code system A, Okuma): the
+        // positions of X and Z go to their spans, U and W having no travel of their own
+        // (review 41, finding 2: `G0 X100. Z0`, `G0 U520.` passed a 500 mm travel); only a
+        // block that writes U or W asks the machine
+        let uw = places & UW_PLACES != 0 && self.machine.uw_moved_xz();
+        let onto_xz;
+        if uw {
+            onto_xz = uw_onto_xz(places);
+            (moved, places) = (&onto_xz.0[..onto_xz.1], onto_xz.2);
+        }
+        let col = |letter: u8| {
+            if uw {
+                uw_column(facts, letter)
+            } else {
+                facts.col(letter)
+            }
+        };
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
             // for made a program of many transformations quadratic)
@@ -1907,6 +1923,45 @@ impl Checker {
                 }
             }
         }
+    }
+}
+
+/// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
+const UW_PLACES: u32 = 1 << 3 | 1 << 5;
+
+/// The moved axes of a block whose U and W moved X and Z
+/// ([`crate::modal::ModalMachine::uw_moved_xz`]): U's place taken by X, W's by Z (once each,
+/// beside an X or Z the block writes too), the axes in the order of [`AXES`], how many, and
+/// their places.
+#[cold]
+#[inline(never)]
+fn uw_onto_xz(places: u32) -> ([u8; 9], usize, u32) {
+    let mut onto = places & !UW_PLACES;
+    if places & 1 << 3 != 0 {
+        onto |= 1 << 0;
+    }
+    if places & 1 << 5 != 0 {
+        onto |= 1 << 2;
+    }
+    let mut moved = [0u8; 9];
+    let mut n = 0;
+    for i in crate::modal::places(onto) {
+        moved[n] = AXES[i];
+        n += 1;
+    }
+    (moved, n, onto)
+}
+
+/// The column of [`Facts::col`] where U and W moved X and Z: X's, or U's where the block
+/// writes no X (Z's, or W's).
+#[cold]
+#[inline(never)]
+fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
+    let own = facts.words.iter().any(|w| w.letter == letter);
+    match letter {
+        b'X' if !own => facts.col(b'U'),
+        b'Z' if !own => facts.col(b'W'),
+        _ => facts.col(letter),
     }
 }
 
@@ -2604,6 +2659,68 @@ mod tests {
             assert_eq!(at(config.clone(), mm, Rule::TravelExceeded), []);
             let mm = "G20 G90\nG21 G92 X400.\nG0 X-650.\n";
             assert_eq!(at(config, mm, Rule::TravelExceeded), [(4, 4)]);
+        }
+    }
+
+    /// Review 41, finding 2: a lathe's U and W (FANUC and Haas G code system A, Okuma: the
+    /// incremental commands of X and Z, U a diameter as X is) move X and Z, so the positions
+    /// they reach go to X's and Z's spans; U and W have no travel. Travel X -500 to 500, Z
+    /// -300 to 100.
+    #[test]
+    fn a_lathe_s_u_and_w_go_to_the_spans_of_x_and_z() {
+        let mut haas = fanuc_lathe();
+        haas.haas = true;
+        for (name, lathe) in [
+            ("fanuc", fanuc_lathe()),
+            ("haas", haas),
+            ("okuma", super::super::testing::okuma_lathe()),
+        ] {
+            // X -100 to 950, Z 0 to -450: each wider than its travel
+            let u = "G00 X-100. Z0\nG00 U1050.\n";
+            assert_eq!(
+                at(lathe.clone(), u, Rule::TravelExceeded),
+                [(3, 5)],
+                "{name}"
+            );
+            let w = "G00 X100. Z0\nG01 W-450. F0.2\n";
+            assert_eq!(
+                at(lathe.clone(), w, Rule::TravelExceeded),
+                [(3, 5)],
+                "{name}"
+            );
+            // said at the W where the block writes X too
+            let xw = "G00 X100. Z0\nG00 X150. W-450.\n";
+            assert_eq!(
+                at(lathe.clone(), xw, Rule::TravelExceeded),
+                [(3, 11)],
+                "{name}"
+            );
+            // beside X and Z moves, inside: X -400 to 550, Z 50 to -250
+            let inside = "G00 X-400. Z50.\nG01 U300. W-300. F0.2\nG00 X450.\nU100.\n";
+            assert_eq!(
+                at(lathe.clone(), inside, Rule::TravelExceeded),
+                [],
+                "{name}"
+            );
+            // and out of it: Z 50 to -360
+            let out = format!("{inside}W-110.\n");
+            let found = findings(lathe.clone(), &program(&out), Rule::TravelExceeded);
+            let spans: Vec<_> = found.iter().map(|f| (f.line, f.column)).collect();
+            assert_eq!(spans, [(6, 1)], "{name}: {found:?}");
+            assert!(found[0].message.starts_with("Z spans 410"), "{name}");
+            // a FANUC's or Haas's dwell's U is its time, no move
+            let dwell = "G00 X100. Z0\nG04 U1500.\n";
+            if name != "okuma" {
+                assert_eq!(at(lathe, dwell, Rule::TravelExceeded), [], "{name}");
+            }
+        }
+        // G code system B and C: U and W are not read as X's and Z's increments (no page at
+        // hand says they are): X after one is not known, and no span is said
+        for system in [GCodeSystem::B, GCodeSystem::C] {
+            let mut lathe = fanuc_lathe();
+            lathe.modal.g_system = system;
+            let u = "G00 X-100. Z0\nG00 U1050.\n";
+            assert_eq!(at(lathe, u, Rule::TravelExceeded), [], "{system:?}");
         }
     }
 
