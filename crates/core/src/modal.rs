@@ -544,7 +544,9 @@ impl ModalSettings {
                 Some(Home)
             }
             (Family::Okuma, 50) if lathe => Some(Unknown),
-            (Family::Iso | Family::Okuma, 92) => Some(Set),
+            // (not where the profile's list lacks it, as the Okuma lathe's does: a code the
+            // list lacks leaves the block's axes unknown, Checker::read_block; review 41, finding 6)
+            (Family::Iso | Family::Okuma, 92) if !self.lacks(g) => Some(Set),
             _ => None,
         })
     }

@@ -2724,6 +2724,26 @@ mod tests {
         }
     }
 
+    /// Review 41, finding 6: a G92 the Okuma lathe's list lacks (its coordinate setting is
+    /// G50) is a code the profile does not know: the block's axes are not known after it, as
+    /// any lacked code's, not a setting where the tool stands. The Okuma mill's G92 (4203-E,
+    /// List of G Codes), and a lathe profile that lists it, keep it. Travel X -500 to 500.
+    #[test]
+    fn a_g92_the_okuma_lathe_lacks_sets_no_position() {
+        let mut lacked = super::super::testing::okuma_lathe();
+        lacked.modal.lacks_g = vec![false; 200];
+        lacked.modal.lacks_g[92] = true;
+        let body = "G92 X0 Z0\nG00 X1100. Z0\n";
+        assert_eq!(at(lacked, body, Rule::TravelExceeded), []);
+        let listed = super::super::testing::okuma_lathe();
+        assert_eq!(at(listed, body, Rule::TravelExceeded), [(3, 5)]);
+        let mill = of_family(Family::Okuma);
+        assert_eq!(
+            at(mill, "G92 X0 Y0 Z0\nG00 X1100.", Rule::TravelExceeded),
+            [(3, 5)]
+        );
+    }
+
     /// Review 39, finding 2 (the conservative half): a subprogram after the end (a Haas's M97
     /// sequence, an O number an M98 names) runs under the shift at its call, not the one at
     /// the end: where a call was made under a shift, the shifted axes' spans start again at
