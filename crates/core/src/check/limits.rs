@@ -1943,13 +1943,10 @@ fn uw_onto_xz(places: u32) -> ([u8; 9], usize, u32) {
     if places & 1 << 5 != 0 {
         onto |= 1 << 2;
     }
-    let mut moved = [0u8; 9];
-    let mut n = 0;
-    for i in crate::modal::places(onto) {
-        moved[n] = AXES[i];
-        n += 1;
-    }
-    (moved, n, onto)
+    // (the axes of the places looked up, as Facts::new does: a walk cost about 60
+    // instructions a block)
+    let (moved, n) = super::MOVED[onto as usize];
+    (moved, usize::from(n), onto)
 }
 
 /// The column of [`Facts::col`] where U and W moved X and Z: X's, or U's where the block
