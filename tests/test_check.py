@@ -269,6 +269,70 @@ def test_a_g92_and_a_call_under_a_shift_keep_the_span_of_where_the_tool_goes(
     assert "(M97 P100 of line 7)" in notes[0][2]
 
 
+def test_review_41_spans_of_a_g92_beside_a_units_code_and_of_a_lathe_s_u_and_w(
+        tmp_path: Path) -> None:
+    """Review 41. Finding 1: `G21 G90 G92 X0 Y0 Z0`, the commonest header, puts the tool at X0
+    of the new coordinates as a G92 on its own line does, its words in the units the block
+    sets (LinuxCNC sets the length units before G92's offsets: `rs274 -g` of `G20 G90`,
+    `G21 G92 X0 Y0`, `G0 X650` traverses 650 mm). Finding 2: a lathe's U and W (FANUC system
+    A, Haas, Okuma) move X and Z, and the positions they reach go to X's and Z's spans.
+    Finding 6: the Okuma lathe's list lacks G92 (TG307): its block's axes are not known
+    after it, as any lacked code's, and no position of its words starts a span."""
+    def found(name: str, program: str, profile: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", profile, "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())]
+
+    def fanuc(*body: str) -> str:
+        return "%\nO1\n" + "\n".join(body) + "\nM30\n%\n"
+
+    # finding 1: the header form, a code that changes nothing, and the G92 on its own line
+    for header in (["G21 G90 G92 X0 Y0 Z0"], ["G21 G90", "G21 G92 X0 Y0 Z0"],
+                   ["G21 G90", "G92 X0 Y0 Z0"]):
+        spans = found("b.nc", fanuc(*header, "G0 X1600."), "fanuc-mill")
+        assert [f[:2] for f in spans] == [(3 + len(header), "TG601")], header
+        assert "X spans 1600 (from 0 to 1600)" in spans[0][2]
+    assert found("b.nc", fanuc("G21 G90 G92 X0 Y0 Z0", "G0 X1500."), "fanuc-mill") == []
+    lc = tmp_path / "lc.toml"
+    lc.write_text('name = "lc"\nbase = "linuxcnc"\n[limits]\nX = [-300, 300]\n'
+                  'Y = [-300, 300]\nZ = [-300, 300]\n')
+    mm = found("a2.ngc", "G20 G90\nG21 G92 X0 Y0\nG0 X650\nM2\n", str(lc))
+    assert [f[:2] for f in mm] == [(3, "TG601")] and "from 0 to 650" in mm[0][2]
+    inch = found("a1.ngc", "G21 G90\nG20 G92 X0 Y0\nG0 X25\nM2\n", str(lc))
+    assert [f[:2] for f in inch] == [(3, "TG601")] and "from 0 to 635" in inch[0][2]
+    assert found("a3.ngc", "G21 G90\nG20 G92 X0 Y0\nG0 X23\nM2\n", str(lc)) == []
+
+    # finding 2: U and W beside X and Z moves, out of the travel and in it
+    # (fanuc-lathe X -10 to 500, Z -800 to 300; haas-lathe Z -22 to 12 in; okuma-lathe Z
+    # -100 to 1100)
+    for profile, body, axis in [
+            ("fanuc-lathe", ["G21", "G0 X100. Z0", "G0 U520."], "X spans 520 (from 100 to 620)"),
+            ("fanuc-lathe", ["G21", "G0 X100. Z0", "G1 W-800. F0.2", "G0 X120. W-400."],
+             "Z spans 1200 (from -1200 to 0)"),
+            ("haas-lathe", ["G20", "G0 X1. Z0", "G0 W40."], "Z spans 40 (from 0 to 40)"),
+            ("okuma-lathe", ["G0 X100. Z0", "G0 W1300."], "Z spans 1300 (from 0 to 1300)")]:
+        spans = found("l.nc", fanuc(*body), profile)
+        assert [f[:2] for f in spans] == [(2 + len(body), "TG601")], (profile, body)
+        assert axis in spans[0][2], spans
+    inside = {"fanuc-lathe": ["G21", "G0 X100. Z0", "G1 U300. W-500. F0.2", "G0 X20.",
+                              "U-20. W700."],
+              "haas-lathe": ["G20", "G0 X1. Z0", "G1 U5. W-20. F0.01", "G0 W30."],
+              "okuma-lathe": ["G0 X100. Z0", "G1 U900. W1000. F0.2", "G0 W-1100."]}
+    for profile, body in inside.items():
+        assert found("i.nc", fanuc(*body), profile) == [], profile
+    # a FANUC lathe's dwell U is its time, no move
+    dwell = fanuc("G21", "G0 X100. Z0", "G04 U1500.", "G0 X100.")
+    assert found("d.nc", dwell, "fanuc-lathe") == []
+
+    # finding 6: okuma-lathe's G92 (not in its list) sets no position; G50 is its zero offset
+    ol1 = fanuc("G92 X0 Z0", "G0 X1200. Z0")
+    assert found("ol1.nc", ol1, "okuma-lathe") == []
+    mill = found("om.nc", fanuc("G21 G90", "G92 X0 Y0 Z0", "G0 X1300."), "okuma-mill")
+    assert [f[:2] for f in mill] == [(5, "TG601")]
+
+
 def test_a_units_change_keeps_where_the_machine_is():
     """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
     at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the

@@ -544,7 +544,9 @@ impl ModalSettings {
                 Some(Home)
             }
             (Family::Okuma, 50) if lathe => Some(Unknown),
-            (Family::Iso | Family::Okuma, 92) => Some(Set),
+            // (not where the profile's list lacks it, as the Okuma lathe's does: a code the
+            // list lacks leaves the block's axes unknown, Checker::read_block; review 41, finding 6)
+            (Family::Iso | Family::Okuma, 92) if !self.lacks(g) => Some(Set),
             _ => None,
         })
     }
@@ -749,6 +751,18 @@ impl ModalMachine {
     /// codes (the checker asks it of every block two or three times).
     pub fn taken(&self) -> Option<AxesTaken> {
         self.taken
+    }
+
+    /// Whether the block last given to [`ModalMachine::apply`] moved X and Z by its U and W:
+    /// a FANUC or Haas lathe of G code system A, or an Okuma lathe, in G00-G03 outside its
+    /// cycles (U W the incremental commands of X Z, U a diameter as X is). In G code system B
+    /// or C, where no page at hand says U and W still move X and Z, where X and Z stand after
+    /// one is not followed (false).
+    pub fn uw_moved_xz(&self) -> bool {
+        (self.settings.fanuc_lathe || self.settings.lap)
+            && self.uw_moves
+            && self.state.cycle.is_none()
+            && self.settings.g_system == GCodeSystem::A
     }
 
     /// After a jump or a call the checker cannot follow: the position, feed and speed are

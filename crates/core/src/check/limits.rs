@@ -1276,22 +1276,18 @@ impl Checker {
     /// shift after it). Where the shift was followed that is where the tool stood before
     /// it, already in the span; where it was not (`G92 X0 Y0 Z0` at a program's start, the
     /// position before it not known) it starts the new span where the tool stands, so that
-    /// the next moves span from there (review 39, finding 1). Not under a frame, in units
-    /// not known, in a block that changes the units, or for a FANUC lathe's U and W.
+    /// the next moves span from there (review 39, finding 1). Its words are in the units
+    /// the block sets where it writes a units code (`G21 G90 G92 X0 Y0 Z0`, the commonest
+    /// header: a FANUC block's G20/G21 governs its own words, and LinuxCNC sets the length
+    /// units before G92's offsets, its order of execution; review 41, finding 1). Not under a
+    /// frame, in units not known, or for a FANUC lathe's U and W.
     #[cold]
     #[inline(never)]
     fn set_stands(&mut self, b: &BlockView<'_>, named: u32) {
-        let settings = &self.machine.settings;
-        if self.frames.on != 0
-            || self.units_unknown
-            || self
-                .values
-                .gs()
-                .iter()
-                .any(|&g| settings.units_code(g).is_some())
-        {
+        if self.frames.on != 0 || self.units_unknown {
             return;
         }
+        // (the block's own units: Checker::block_modes)
         let factor = self.to_profile_units(false);
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         for a in crate::modal::places(crate::modal::axis_places(named)) {
@@ -1629,8 +1625,24 @@ impl Checker {
     /// axis, unless a machine position was already found outside). Under a SINUMERIK's
     /// kinematic transformation neither: its axes are not the machine's.
     pub(super) fn limits(&mut self, line: usize, facts: &Facts<'_>, absolute: bool) {
-        let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
-        let mut places = facts.moved_places();
+        let (mut moved, mut places) = (facts.moved(), facts.moved_places());
+        // a lathe's U and W that moved X and Z (FANUC and Haas G code system A, Okuma): the
+        // positions of X and Z go to their spans, U and W having no travel of their own
+        // (review 41, finding 2: `G0 X100. Z0`, `G0 U520.` passed a 500 mm travel); only a
+        // block that writes U or W asks the machine
+        let uw = places & UW_PLACES != 0 && self.machine.uw_moved_xz();
+        let onto_xz;
+        if uw {
+            onto_xz = uw_onto_xz(places);
+            (moved, places) = (&onto_xz.0[..onto_xz.1], onto_xz.2);
+        }
+        let col = |letter: u8| {
+            if uw {
+                uw_column(facts, letter)
+            } else {
+                facts.col(letter)
+            }
+        };
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
             // for made a program of many transformations quadratic)
@@ -1911,6 +1923,42 @@ impl Checker {
                 }
             }
         }
+    }
+}
+
+/// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
+const UW_PLACES: u32 = 1 << 3 | 1 << 5;
+
+/// The moved axes of a block whose U and W moved X and Z
+/// ([`crate::modal::ModalMachine::uw_moved_xz`]): U's place taken by X, W's by Z (once each,
+/// beside an X or Z the block writes too), the axes in the order of [`AXES`], how many, and
+/// their places.
+#[cold]
+#[inline(never)]
+fn uw_onto_xz(places: u32) -> ([u8; 9], usize, u32) {
+    let mut onto = places & !UW_PLACES;
+    if places & 1 << 3 != 0 {
+        onto |= 1 << 0;
+    }
+    if places & 1 << 5 != 0 {
+        onto |= 1 << 2;
+    }
+    // (the axes of the places looked up, as Facts::new does: a walk cost about 60
+    // instructions a block)
+    let (moved, n) = super::MOVED[onto as usize];
+    (moved, usize::from(n), onto)
+}
+
+/// The column of [`Facts::col`] where U and W moved X and Z: X's, or U's where the block
+/// writes no X (Z's, or W's).
+#[cold]
+#[inline(never)]
+fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
+    let own = facts.words.iter().any(|w| w.letter == letter);
+    match letter {
+        b'X' if !own => facts.col(b'U'),
+        b'Z' if !own => facts.col(b'W'),
+        _ => facts.col(letter),
     }
 }
 
@@ -2580,6 +2628,117 @@ mod tests {
             let followed = "G90 G00 X-400.\nG92 X0\nX1100.\n";
             assert_eq!(at(config, followed, Rule::TravelExceeded), [(4, 1)]);
         }
+    }
+
+    /// Review 41, finding 1: a G92 in a block that also writes a units code (the commonest
+    /// header, `G21 G90 G92 X0 Y0 Z0`) puts where the tool stands in the new span too, its
+    /// words in the units the block sets (a FANUC block's G20/G21 governs its own words;
+    /// LinuxCNC sets the length units before G92's offsets: `rs274 -g` of `G20 G90`, `G0 X1`,
+    /// `G21 G92 X10` gives SET_G92_OFFSET(15.4000, ...)). Travel X -500 to 500.
+    #[test]
+    fn a_g92_beside_a_units_code_reads_its_words_in_the_block_s_units() {
+        for family in [Family::MacroB, Family::LinuxCnc] {
+            let mut config = of_family(family);
+            (config.modal.inch, config.modal.metric) = (20, 21);
+            let header = "G21 G90 G92 X0 Y0 Z0\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), header, Rule::TravelExceeded), [(3, 4)]);
+            // a code that changes nothing counts the same
+            let again = "G21 G90\nG21 G92 X0 Y0 Z0\nG0 X1100.\n";
+            assert_eq!(at(config.clone(), again, Rule::TravelExceeded), [(4, 4)]);
+            // G20 beside it under a mm start: 40 in is 1016 mm, 39 in 990.6
+            let inch = "G21 G90\nG20 G92 X0 Y0\nG0 X40.\n";
+            assert_eq!(at(config.clone(), inch, Rule::TravelExceeded), [(4, 4)]);
+            let inside = "G21 G90\nG20 G92 X0 Y0\nG0 X39.\n";
+            assert_eq!(at(config.clone(), inside, Rule::TravelExceeded), []);
+            // G21 beside it under an inch start: X400. is 400 mm, not 400 in (10160 mm), so
+            // spans 950, inside; X-650. spans 1050
+            let mm = "G20 G90\nG21 G92 X400.\nG0 X-550.\n";
+            assert_eq!(at(config.clone(), mm, Rule::TravelExceeded), []);
+            let mm = "G20 G90\nG21 G92 X400.\nG0 X-650.\n";
+            assert_eq!(at(config, mm, Rule::TravelExceeded), [(4, 4)]);
+        }
+    }
+
+    /// Review 41, finding 2: a lathe's U and W (FANUC and Haas G code system A, Okuma: the
+    /// incremental commands of X and Z, U a diameter as X is) move X and Z, so the positions
+    /// they reach go to X's and Z's spans; U and W have no travel. Travel X -500 to 500, Z
+    /// -300 to 100.
+    #[test]
+    fn a_lathe_s_u_and_w_go_to_the_spans_of_x_and_z() {
+        let mut haas = fanuc_lathe();
+        haas.haas = true;
+        for (name, lathe) in [
+            ("fanuc", fanuc_lathe()),
+            ("haas", haas),
+            ("okuma", super::super::testing::okuma_lathe()),
+        ] {
+            // X -100 to 950, Z 0 to -450: each wider than its travel
+            let u = "G00 X-100. Z0\nG00 U1050.\n";
+            assert_eq!(
+                at(lathe.clone(), u, Rule::TravelExceeded),
+                [(3, 5)],
+                "{name}"
+            );
+            let w = "G00 X100. Z0\nG01 W-450. F0.2\n";
+            assert_eq!(
+                at(lathe.clone(), w, Rule::TravelExceeded),
+                [(3, 5)],
+                "{name}"
+            );
+            // said at the W where the block writes X too
+            let xw = "G00 X100. Z0\nG00 X150. W-450.\n";
+            assert_eq!(
+                at(lathe.clone(), xw, Rule::TravelExceeded),
+                [(3, 11)],
+                "{name}"
+            );
+            // beside X and Z moves, inside: X -400 to 550, Z 50 to -250
+            let inside = "G00 X-400. Z50.\nG01 U300. W-300. F0.2\nG00 X450.\nU100.\n";
+            assert_eq!(
+                at(lathe.clone(), inside, Rule::TravelExceeded),
+                [],
+                "{name}"
+            );
+            // and out of it: Z 50 to -360
+            let out = format!("{inside}W-110.\n");
+            let found = findings(lathe.clone(), &program(&out), Rule::TravelExceeded);
+            let spans: Vec<_> = found.iter().map(|f| (f.line, f.column)).collect();
+            assert_eq!(spans, [(6, 1)], "{name}: {found:?}");
+            assert!(found[0].message.starts_with("Z spans 410"), "{name}");
+            // a FANUC's or Haas's dwell's U is its time, no move
+            let dwell = "G00 X100. Z0\nG04 U1500.\n";
+            if name != "okuma" {
+                assert_eq!(at(lathe, dwell, Rule::TravelExceeded), [], "{name}");
+            }
+        }
+        // G code system B and C: U and W are not read as X's and Z's increments (no page at
+        // hand says they are): X after one is not known, and no span is said
+        for system in [GCodeSystem::B, GCodeSystem::C] {
+            let mut lathe = fanuc_lathe();
+            lathe.modal.g_system = system;
+            let u = "G00 X-100. Z0\nG00 U1050.\n";
+            assert_eq!(at(lathe, u, Rule::TravelExceeded), [], "{system:?}");
+        }
+    }
+
+    /// Review 41, finding 6: a G92 the Okuma lathe's list lacks (its coordinate setting is
+    /// G50) is a code the profile does not know: the block's axes are not known after it, as
+    /// any lacked code's, not a setting where the tool stands. The Okuma mill's G92 (4203-E,
+    /// List of G Codes), and a lathe profile that lists it, keep it. Travel X -500 to 500.
+    #[test]
+    fn a_g92_the_okuma_lathe_lacks_sets_no_position() {
+        let mut lacked = super::super::testing::okuma_lathe();
+        lacked.modal.lacks_g = vec![false; 200];
+        lacked.modal.lacks_g[92] = true;
+        let body = "G92 X0 Z0\nG00 X1100. Z0\n";
+        assert_eq!(at(lacked, body, Rule::TravelExceeded), []);
+        let listed = super::super::testing::okuma_lathe();
+        assert_eq!(at(listed, body, Rule::TravelExceeded), [(3, 5)]);
+        let mill = of_family(Family::Okuma);
+        assert_eq!(
+            at(mill, "G92 X0 Y0 Z0\nG00 X1100.", Rule::TravelExceeded),
+            [(3, 5)]
+        );
     }
 
     /// Review 39, finding 2 (the conservative half): a subprogram after the end (a Haas's M97
