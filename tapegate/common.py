@@ -224,8 +224,9 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
         return size
     from pathlib import Path
 
-    from formats.files import PendingFile
+    from formats.files import PendingFile, exit_on_termination
 
+    exit_on_termination()
     target = Path(output)
 
     with PendingFile(target.parent, target.name) as pending:

@@ -35,6 +35,9 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
     entry point's plain reading (:mod:`tapegate.launch`) both call it, with the same arguments
     click would pass. Exits 1 (``sys.exit``) when a file failed."""
     from formats.convert import ConvertOptions  # (only this command needs the converter)
+    from formats.files import exit_on_termination
+
+    exit_on_termination()
 
     names: dict[str, str] = {}
     if "-" in inputs:

@@ -117,3 +117,63 @@ def test_ctrl_c_mid_batch_leaves_no_temporary_file_and_only_whole_outputs(tmp_pa
     # the signal landed mid-batch in most runs (a loaded machine may end a batch first)
     assert interrupted >= len(moments) // 2
     assert time.monotonic() - started < 60
+
+
+def _parts(folder: Path) -> list[str]:
+    return sorted(p.name for p in folder.iterdir() if p.name.endswith(".part"))
+
+
+def test_sigterm_where_a_command_writes_files_is_an_exit_that_removes_its_temporary_file(
+        tmp_path):
+    """formats.files.exit_on_termination: SIGTERM's default action runs no exit function, so
+    a temporary file made before it stayed; as an exit with 128 + 15 the core's sweep runs."""
+    script = (
+        "import os, signal\n"
+        "from formats.files import PendingFile, exit_on_termination\n"
+        "exit_on_termination()\n"
+        f"p = PendingFile({str(tmp_path)!r}, 'out.nc')\n"
+        "p.write(b'G0 X1\\n')\n"
+        "os.kill(os.getpid(), signal.SIGTERM)\n"
+        "print('not reached')\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, timeout=60,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    assert done.returncode == 128 + signal.SIGTERM
+    assert b"not reached" not in done.stdout
+    assert list(tmp_path.iterdir()) == []
+    # a handler the caller set is kept
+    script = ("import signal\n"
+              "signal.signal(signal.SIGTERM, signal.SIG_IGN)\n"
+              "from formats.files import exit_on_termination\n"
+              "exit_on_termination()\n"
+              "print(signal.getsignal(signal.SIGTERM) is signal.SIG_IGN)\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, timeout=60,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    assert done.stdout.strip() == b"True"
+
+
+@pytest.mark.skipif(not Path(_exe()).exists(), reason="needs the tapegate command")
+def test_sigterm_mid_one_file_conversion_leaves_no_temporary_file(tmp_path):
+    """Review 42, finding 4: a CI job's timeout on a large one-file `convert -o` left a
+    hidden `.out.nc.XXXXXXXX.part` of tens of MB in the output folder."""
+    source = tmp_path / "big.nc"
+    source.write_text(_program(0, 1_200_000))
+    out = tmp_path / "out"
+    out.mkdir()
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    proc = subprocess.Popen([_exe(), "convert", str(source), "-o", str(out / "out.nc"), *ARGS],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    try:
+        if not _wait_for(lambda: _parts(out), proc, 60):
+            pytest.skip("the conversion ended before its temporary file was seen")
+        proc.send_signal(signal.SIGTERM)
+        proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    if proc.returncode == 0:
+        pytest.skip("the conversion ended before the signal")
+    assert proc.returncode in (128 + signal.SIGTERM, -signal.SIGTERM)
+    assert proc.returncode == 128 + signal.SIGTERM, "ended by the signal's default action"
+    assert _parts(out) == []
+    assert list(out.iterdir()) == []
