@@ -605,6 +605,9 @@ pub struct ModalMachine {
     /// and R are modal" in the cycles until a code of group 01 other than G90, G92, G94 or a
     /// one-shot code other than G04 (FANUC 0i-TF operator's manual, "Canned cycle").
     cycle_end: [Option<Dec>; 2],
+    /// `cycle_end` is the cycle's data in force (false: cleared, none kept; a flag, so that
+    /// the G00-G03 of every lathe block clear it by one store).
+    cycle_kept: bool,
     /// The block last given to [`ModalMachine::apply`] ran a single cycle G90, G92 or G94:
     /// the tool went to `cycle_end` and back to its start point, where the position stays.
     ran_cycle: bool,
@@ -626,6 +629,7 @@ impl ModalMachine {
             state,
             uw_moves: true,
             cycle_end: [None; 2],
+            cycle_kept: false,
             ran_cycle: false,
             units_convert_position: true,
             taken: None,
@@ -783,20 +787,37 @@ impl ModalMachine {
 
     /// Where the single cycle G90, G92 or G94 of the block last given to
     /// [`ModalMachine::apply`] went, X and Z (None where not known), the position having
-    /// stayed at its start point: None where the block ran no such cycle (a Fanuc or Haas
-    /// lathe of G code system A; FANUC 0i-TF operator's manual, "Outer diameter/internal
+    /// stayed at its start point: None where the block ran no such cycle
+    /// ([`ModalMachine::ran_cycle`]) (a Fanuc or Haas
+    /// lathe, B's and C's G77-G79 read as A's numbers; FANUC 0i-TF operator's manual, "Outer diameter/internal
     /// diameter cutting cycle G90", "Thread cutting cycle G92", "End face turning cycle G94":
     /// from the start point to the end point X(U) Z(W), U and W the increments from the start
     /// point, and back to the start point).
-    #[inline]
     pub fn cycle_end(&self) -> Option<[Option<Dec>; 2]> {
         self.ran_cycle.then_some(self.cycle_end)
+    }
+
+    /// The block last given to [`ModalMachine::apply`] ran a single cycle G90, G92 or G94
+    /// ([`ModalMachine::cycle_end`]).
+    #[inline]
+    pub fn ran_cycle(&self) -> bool {
+        self.ran_cycle
+    }
+
+    /// Swap the positions of X and Z with the end point of the single cycle the last block
+    /// ran: the checker walks the spans from there, and swaps them back.
+    #[cold]
+    #[inline(never)]
+    pub fn swap_cycle_end(&mut self) {
+        let position = &mut self.state.position;
+        std::mem::swap(&mut position[0], &mut self.cycle_end[0]);
+        std::mem::swap(&mut position[2], &mut self.cycle_end[1]);
     }
 
     /// After a jump or a call the checker cannot follow: the position, feed and speed are
     /// unknown until the program sets them again.
     pub fn forget(&mut self) {
-        self.cycle_end = [None; 2];
+        self.cycle_kept = false;
         let s = &mut self.state;
         s.position = [None; 9];
         s.feed = None;
@@ -884,7 +905,7 @@ impl ModalMachine {
         }
         if self.settings.fanuc_lathe || self.settings.lap {
             self.uw_moves = true;
-            self.cycle_end = [None; 2];
+            self.cycle_kept = false;
         }
         debug_assert!(!self.settings.own_motion(g));
         self.state.motion = Some(g);
@@ -907,14 +928,14 @@ impl ModalMachine {
             match g {
                 0..=3 | 32 | 34 => {
                     self.uw_moves = true;
-                    self.cycle_end = [None; 2];
+                    self.cycle_kept = false;
                 }
                 90 | 92 | 94 => self.uw_moves = false,
                 33 | 70..=76 | 80..=89 => {
                     self.uw_moves = false;
-                    self.cycle_end = [None; 2];
+                    self.cycle_kept = false;
                 }
-                9..=11 | 27..=31 | 36 | 37 | 50 | 52 | 53 | 65 => self.cycle_end = [None; 2],
+                9..=11 | 27..=31 | 36 | 37 | 50 | 52 | 53 | 65 => self.cycle_kept = false,
                 _ => {}
             }
         } else if self.settings.lap {
@@ -922,7 +943,7 @@ impl ModalMachine {
             match g {
                 0..=3 => {
                     self.uw_moves = true;
-                    self.cycle_end = [None; 2];
+                    self.cycle_kept = false;
                 }
                 80 => self.uw_moves = true,
                 31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
@@ -1071,34 +1092,17 @@ impl ModalMachine {
                 }
             }
         }
-        // a Fanuc or Haas lathe's single cycle G90, G92, G94 (system A): to the end point and
-        // back, the position stays; a block of its mode without X U Z W runs none, nor does a
-        // dwell's (its U or X is the time)
+        // a Fanuc or Haas lathe's single cycle G90, G92, G94 (B's and C's G77-G79, read as A's
+        // numbers): to the end point and back, the position stays; a block of its mode without
+        // X U Z W runs none, nor does a dwell's (its U or X is the time)
         let mut touched = v.given | v.unknown;
         if self.settings.fanuc_lathe
-            && self.settings.g_system == GCodeSystem::A
             && matches!(s.motion, Some(90 | 92 | 94))
-            && s.cycle.is_none()
-            && taken.is_none()
-            && touched & XZUW != 0
-            && !v.has_g(4)
+            && self.single_cycle(v, touched)
         {
-            for (k, (abs, inc)) in [(b'X', b'U'), (b'Z', b'W')].into_iter().enumerate() {
-                let i = if abs == b'X' { 0 } else { 2 };
-                let given = |l: u8| (v.given | v.unknown) & bit(l) != 0;
-                if let Some(at) = v.get(abs) {
-                    self.cycle_end[k] = Some(at);
-                } else if let Some(by) = v.get(inc) {
-                    self.cycle_end[k] = s.position[i]
-                        .filter(|_| s.unknown & bit(abs) == 0)
-                        .and_then(|start| start.checked_add(by));
-                } else if given(abs) || given(inc) {
-                    self.cycle_end[k] = None;
-                }
-            }
-            self.ran_cycle = true;
             touched &= !XZUW;
         }
+        let s = &mut self.state;
         let absolute = taken == Some(AxesTaken::Set) || v.has_g(92) || !s.incremental;
         // under G16 the plane's words are a radius and an angle: where the axes end is not
         // followed (the pole, the radius or the angle in force may be another block's)
@@ -1168,6 +1172,46 @@ impl ModalMachine {
                     .or(s.position[i])
             };
         }
+    }
+
+    /// A block of a Fanuc or Haas lathe's single cycle G90, G92 or G94 (B's and C's G77-G79,
+    /// read as A's numbers) in [`ModalMachine::moved`]: its end point kept in `cycle_end`;
+    /// true where the block ran the cycle (its X U Z W then move no position: the tool is
+    /// back at the start point). A block of the mode without X U Z W runs none, nor does a
+    /// dwell's (its U or X is the time), nor a code's that takes the axis words.
+    #[cold]
+    #[inline(never)]
+    fn single_cycle(&mut self, v: &BlockValues, touched: u32) -> bool {
+        let s = &self.state;
+        if s.cycle.is_some() || self.taken.is_some() || touched & XZUW == 0 || v.has_g(4) {
+            return false;
+        }
+        if !self.cycle_kept {
+            self.cycle_end = [None; 2];
+            self.cycle_kept = true;
+        }
+        for (k, (abs, inc)) in [(b'X', b'U'), (b'Z', b'W')].into_iter().enumerate() {
+            let i = if abs == b'X' { 0 } else { 2 };
+            let given = |l: u8| touched & bit(l) != 0;
+            let start = s.position[i].filter(|_| s.unknown & bit(abs) == 0);
+            if let Some(at) = v.get(abs) {
+                // (G91 X of systems B and C: an increment from the start point)
+                self.cycle_end[k] = if s.incremental {
+                    start.and_then(|start| start.checked_add(at))
+                } else {
+                    Some(at)
+                };
+            } else if let Some(by) = v.get(inc) {
+                // (U W of systems B and C: no page at hand says they are increments)
+                self.cycle_end[k] = start
+                    .filter(|_| self.settings.g_system == GCodeSystem::A)
+                    .and_then(|start| start.checked_add(by));
+            } else if given(abs) || given(inc) {
+                self.cycle_end[k] = None;
+            }
+        }
+        self.ran_cycle = true;
+        true
     }
 }
 
@@ -1338,20 +1382,20 @@ mod tests {
                                 m.settings.lacks_g[n] = true;
                             }
                             m.g_other(before);
-                            m.cycle_end = [Some(Dec::from_int(1)), None];
+                            m.cycle_kept = fanuc_lathe || lap;
                             for g in 0..=3 {
-                                let (state, uw, end) = (m.state, m.uw_moves, m.cycle_end);
+                                let (state, uw, kept) = (m.state, m.uw_moves, m.cycle_kept);
                                 m.g(g);
-                                let inline = (m.state, m.uw_moves, m.cycle_end);
-                                (m.state, m.uw_moves, m.cycle_end) = (state, uw, end);
+                                let inline = (m.state, m.uw_moves, m.cycle_kept);
+                                (m.state, m.uw_moves, m.cycle_kept) = (state, uw, kept);
                                 m.g_other(g);
                                 assert_eq!(
                                     inline,
-                                    (m.state, m.uw_moves, m.cycle_end),
+                                    (m.state, m.uw_moves, m.cycle_kept),
                                     "{family:?} lathe {fanuc_lathe} lap {lap} {g_system:?} \
                                      lacked {lacked:?} G{before} then G{g}"
                                 );
-                                (m.state, m.uw_moves, m.cycle_end) = (state, uw, end);
+                                (m.state, m.uw_moves, m.cycle_kept) = (state, uw, kept);
                             }
                         }
                     }

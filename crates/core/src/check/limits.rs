@@ -1633,14 +1633,16 @@ impl Checker {
         // a FANUC or Haas lathe's single cycle G90, G92, G94: its end point X(U) Z(W) goes to
         // the spans, the position (the start point, where the tool returns) being kept aside
         // while they are walked
-        let cycle = self.machine.cycle_end();
-        let uw = cycle.is_some() || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
+        let cycle = self.machine.ran_cycle();
+        let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
             onto_xz = uw_onto_xz(places);
             (moved, places) = (&onto_xz.0[..onto_xz.1], onto_xz.2);
         }
-        let start = cycle.map(|end| self.cycle_at(end));
+        if cycle {
+            self.machine.swap_cycle_end();
+        }
         let col = |letter: u8| {
             if uw {
                 uw_column(facts, letter)
@@ -1820,8 +1822,8 @@ impl Checker {
                 self.mapped_spans(moved, line, facts);
             }
         }
-        if let Some(start) = start {
-            self.cycle_at(start);
+        if cycle {
+            self.machine.swap_cycle_end();
         }
         let v = &self.values;
         // (the feed, speed and tool limits below read the block's F, S and T alone: most
@@ -1971,17 +1973,6 @@ fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
 }
 
 impl Checker {
-    /// Put the machine's X and Z at `at` (a single cycle's end point, or back at its start
-    /// point), returning where they were.
-    #[cold]
-    #[inline(never)]
-    fn cycle_at(&mut self, at: [Option<Dec>; 2]) -> [Option<Dec>; 2] {
-        let position = &mut self.machine.state.position;
-        let was = [position[0], position[2]];
-        [position[0], position[2]] = at;
-        was
-    }
-
     /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
     /// span is wider than the travel. `under` ends the message: the frame the position was
     /// taken back through.
