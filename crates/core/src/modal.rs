@@ -788,9 +788,9 @@ impl ModalMachine {
     /// Where the single cycle G90, G92 or G94 of the block last given to
     /// [`ModalMachine::apply`] went, X and Z (None where not known), the position having
     /// stayed at its start point: None where the block ran no such cycle
-    /// ([`ModalMachine::ran_cycle`]) (a Fanuc or Haas
-    /// lathe, B's and C's G77-G79 read as A's numbers; FANUC 0i-TF operator's manual, "Outer diameter/internal
-    /// diameter cutting cycle G90", "Thread cutting cycle G92", "End face turning cycle G94":
+    /// ([`ModalMachine::ran_cycle`]) (a Fanuc or Haas lathe, B's and C's G77-G79 read as
+    /// A's numbers; FANUC 0i-TF operator's manual, "Outer diameter/internal diameter cutting
+    /// cycle G90", "Thread cutting cycle G92", "End face turning cycle G94":
     /// from the start point to the end point X(U) Z(W), U and W the increments from the start
     /// point, and back to the start point).
     pub fn cycle_end(&self) -> Option<[Option<Dec>; 2]> {
