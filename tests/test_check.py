@@ -333,6 +333,42 @@ def test_review_41_spans_of_a_g92_beside_a_units_code_and_of_a_lathe_s_u_and_w(
     assert [f[:2] for f in mill] == [(5, "TG601")]
 
 
+def test_issue_32_a_lathe_s_thread_and_single_cycles_reach_the_spans(tmp_path: Path) -> None:
+    """Issue 32 (thr42): a FANUC or Haas lathe's threading G32 (G34) cuts to its end point
+    and stays there, U and W its increments as in G01; the single cycles G90, G92, G94 go from
+    the start point to the end point X(U) Z(W) and back (FANUC 0i-TF operator's manual,
+    "Thread cutting G32", "Outer diameter/internal diameter cutting cycle G90", "Thread
+    cutting cycle G92", "End face turning cycle G94"): the end point goes to the spans, the
+    tool stands at the start point after the cycle. fanuc-lathe X -10 to 500, Z -800 to 300;
+    haas-lathe (inches) X -1 to 16, Z -22 to 12."""
+    def spans(profile: str, *body: str) -> list[tuple[int, int]]:
+        path = tmp_path / "t.nc"
+        path.write_text("%\nO1\n" + "\n".join(body) + "\nM30\n%\n")
+        out = run("check", str(path), "-p", profile, "--select", "TG601",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["column"]) for f in map(json.loads, out.splitlines())]
+
+    head = ("G21 G18 G99", "G0 X60. Z2.")
+    # the thread: by W, and by Z (which already fired)
+    assert spans("fanuc-lathe", *head, "G32 W-1200. F1.5") == [(5, 5)]
+    assert spans("fanuc-lathe", *head, "G32 W-10. F1.5") == []
+    assert spans("fanuc-lathe", *head, "G32 Z-1200. F1.5") == [(5, 5)]
+    assert spans("fanuc-lathe", *head, "G32 Z-10. F1.5") == []
+    assert spans("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G32 W-35. F0.0625") == [(5, 5)]
+    for cycle in ("G90", "G92", "G94"):
+        # the end point out of Z's travel, by W and by Z
+        assert spans("fanuc-lathe", *head, f"{cycle} U-10. W-1200. F0.2") == [(5, 11)], cycle
+        assert spans("fanuc-lathe", *head, f"{cycle} X50. Z-1200. F0.2") == [(5, 10)], cycle
+        # the modal repeat: a block with only X or U after the cycle's block
+        assert spans("fanuc-lathe", *head, f"{cycle} X50. Z-10. F0.2", "X-600.") == [(6, 1)]
+        assert spans("fanuc-lathe", *head, f"{cycle} U-10. W-10. F0.2", "U-600.") == [(6, 1)]
+        # inside: Z 2 to -700, each W from the start point (Z2.), where the tool returns
+        inside = (*head, f"{cycle} U-10. W-702. F0.2", "U-20.", "X30.", "G0 W-702.")
+        assert spans("fanuc-lathe", *inside) == [], cycle
+        assert spans("haas-lathe", "G20 G18", "G0 X2. Z0.1", f"{cycle} U-0.5 W-35. F0.01") \
+            == [(5, 11)], cycle
+
+
 def test_a_units_change_keeps_where_the_machine_is():
     """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
     at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the

@@ -132,6 +132,9 @@ pub const fn bit(letter: u8) -> u32 {
 }
 
 /// What a jump or a call leaves unknown: the position, the feed and the speed.
+/// X, Z and their lathe increments U, W.
+const XZUW: u32 = bit(b'X') | bit(b'Z') | bit(b'U') | bit(b'W');
+
 pub const FORGOTTEN: u32 = bit(b'X')
     | bit(b'Y')
     | bit(b'Z')
@@ -592,10 +595,22 @@ impl ModalSettings {
 pub struct ModalMachine {
     pub settings: ModalSettings,
     pub state: ModalState,
-    /// A Fanuc or Haas lathe (system A) in G00-G03, whose U W move X Z by an increment;
-    /// false in a threading or turning cycle (G32-G34, G70-G76, G80-G90, G92, G94), whose U W
-    /// are the cycle's and whose tool returns to its start point.
+    /// A Fanuc or Haas lathe (system A) in G00-G03 or threading G32/G34, whose U W move X Z
+    /// by an increment (FANUC 0i-TF operator's manual, "Thread cutting G32": the tool cuts to
+    /// the end point and stays there); false in a cycle (G70-G76, G80-G90, G92, G94), whose
+    /// U W are the cycle's and whose tool returns to its start point.
     uw_moves: bool,
+    /// The end point X, Z (absolute) of a Fanuc or Haas lathe's single cycle G90, G92 or
+    /// G94 (G code system A), kept for the cycle's modal repeats: "data items X (U), Z (W)
+    /// and R are modal" in the cycles until a code of group 01 other than G90, G92, G94 or a
+    /// one-shot code other than G04 (FANUC 0i-TF operator's manual, "Canned cycle").
+    cycle_end: [Option<Dec>; 2],
+    /// `cycle_end` is the cycle's data in force (false: cleared, none kept; a flag, so that
+    /// the G00-G03 of every lathe block clear it by one store).
+    cycle_kept: bool,
+    /// The block last given to [`ModalMachine::apply`] ran a single cycle G90, G92 or G94:
+    /// the tool went to `cycle_end` and back to its start point, where the position stays.
+    ran_cycle: bool,
     /// A units code converts the known positions into the new units (true): the checker's and
     /// the restart walk's machine. The verify reader and the converter keep the numbers as
     /// they were and follow each axis's units themselves, exactly (`ncread::Factor`).
@@ -613,6 +628,9 @@ impl ModalMachine {
             settings,
             state,
             uw_moves: true,
+            cycle_end: [None; 2],
+            cycle_kept: false,
+            ran_cycle: false,
             units_convert_position: true,
             taken: None,
         };
@@ -649,6 +667,7 @@ impl ModalMachine {
     /// of the block's codes (the checker keeps it by the block's set of codes).
     pub fn apply_taken(&mut self, v: &BlockValues, taken: Option<AxesTaken>) {
         self.taken = taken;
+        self.ran_cycle = false;
         self.codes(v.gs());
         if v.other_work_system {
             self.state.zero_shift = None;
@@ -754,8 +773,9 @@ impl ModalMachine {
     }
 
     /// Whether the block last given to [`ModalMachine::apply`] moved X and Z by its U and W:
-    /// a FANUC or Haas lathe of G code system A, or an Okuma lathe, in G00-G03 outside its
-    /// cycles (U W the incremental commands of X Z, U a diameter as X is). In G code system B
+    /// a FANUC or Haas lathe of G code system A in G00-G03 or threading G32/G34, or an Okuma
+    /// lathe in G00-G03, outside their cycles (U W the incremental commands of X Z, U a
+    /// diameter as X is). In G code system B
     /// or C, where no page at hand says U and W still move X and Z, where X and Z stand after
     /// one is not followed (false).
     pub fn uw_moved_xz(&self) -> bool {
@@ -765,9 +785,39 @@ impl ModalMachine {
             && self.settings.g_system == GCodeSystem::A
     }
 
+    /// Where the single cycle G90, G92 or G94 of the block last given to
+    /// [`ModalMachine::apply`] went, X and Z (None where not known), the position having
+    /// stayed at its start point: None where the block ran no such cycle
+    /// ([`ModalMachine::ran_cycle`]) (a Fanuc or Haas lathe, B's and C's G77-G79 read as
+    /// A's numbers; FANUC 0i-TF operator's manual, "Outer diameter/internal diameter cutting
+    /// cycle G90", "Thread cutting cycle G92", "End face turning cycle G94":
+    /// from the start point to the end point X(U) Z(W), U and W the increments from the start
+    /// point, and back to the start point).
+    pub fn cycle_end(&self) -> Option<[Option<Dec>; 2]> {
+        self.ran_cycle.then_some(self.cycle_end)
+    }
+
+    /// The block last given to [`ModalMachine::apply`] ran a single cycle G90, G92 or G94
+    /// ([`ModalMachine::cycle_end`]).
+    #[inline]
+    pub fn ran_cycle(&self) -> bool {
+        self.ran_cycle
+    }
+
+    /// Swap the positions of X and Z with the end point of the single cycle the last block
+    /// ran: the checker walks the spans from there, and swaps them back.
+    #[cold]
+    #[inline(never)]
+    pub fn swap_cycle_end(&mut self) {
+        let position = &mut self.state.position;
+        std::mem::swap(&mut position[0], &mut self.cycle_end[0]);
+        std::mem::swap(&mut position[2], &mut self.cycle_end[1]);
+    }
+
     /// After a jump or a call the checker cannot follow: the position, feed and speed are
     /// unknown until the program sets them again.
     pub fn forget(&mut self) {
+        self.cycle_kept = false;
         let s = &mut self.state;
         s.position = [None; 9];
         s.feed = None;
@@ -855,6 +905,7 @@ impl ModalMachine {
         }
         if self.settings.fanuc_lathe || self.settings.lap {
             self.uw_moves = true;
+            self.cycle_kept = false;
         }
         debug_assert!(!self.settings.own_motion(g));
         self.state.motion = Some(g);
@@ -871,15 +922,30 @@ impl ModalMachine {
             return;
         }
         if self.settings.fanuc_lathe {
+            // (threading G32/G34 cuts to its end point like G01: FANUC 0i-TF, "Thread cutting
+            // G32"; the single cycles' end point data is kept until a code of group 01 other
+            // than theirs or a one-shot code other than G04, "Canned cycle")
             match g {
-                0..=3 => self.uw_moves = true,
-                32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                0..=3 | 32 | 34 => {
+                    self.uw_moves = true;
+                    self.cycle_kept = false;
+                }
+                90 | 92 | 94 => self.uw_moves = false,
+                33 | 70..=76 | 80..=89 => {
+                    self.uw_moves = false;
+                    self.cycle_kept = false;
+                }
+                9..=11 | 27..=31 | 36 | 37 | 50 | 52 | 53 | 65 => self.cycle_kept = false,
                 _ => {}
             }
         } else if self.settings.lap {
             // an Okuma lathe's U W too, but in its thread, LAP and M-tool cycles (5238-E)
             match g {
-                0..=3 | 80 => self.uw_moves = true,
+                0..=3 => {
+                    self.uw_moves = true;
+                    self.cycle_kept = false;
+                }
+                80 => self.uw_moves = true,
                 31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
                 _ => {}
             }
@@ -1026,6 +1092,17 @@ impl ModalMachine {
                 }
             }
         }
+        // a Fanuc or Haas lathe's single cycle G90, G92, G94 (B's and C's G77-G79, read as A's
+        // numbers): to the end point and back, the position stays; a block of its mode without
+        // X U Z W runs none, nor does a dwell's (its U or X is the time)
+        let mut touched = v.given | v.unknown;
+        if self.settings.fanuc_lathe
+            && matches!(s.motion, Some(90 | 92 | 94))
+            && self.single_cycle(v, touched)
+        {
+            touched &= !XZUW;
+        }
+        let s = &mut self.state;
         let absolute = taken == Some(AxesTaken::Set) || v.has_g(92) || !s.incremental;
         // under G16 the plane's words are a radius and an angle: where the axes end is not
         // followed (the pole, the radius or the angle in force may be another block's)
@@ -1043,7 +1120,7 @@ impl ModalMachine {
         // an axis the block gives no value (known or not) and that is not of the polar pair
         // is left as it is by every branch below: only the others are looked at (most blocks
         // write two or three of the nine)
-        let touched = v.given | v.unknown | polar;
+        let touched = touched | polar;
         for i in places(axis_places(touched)) {
             let axis = AXES[i];
             if polar & bit(axis) != 0 {
@@ -1095,6 +1172,46 @@ impl ModalMachine {
                     .or(s.position[i])
             };
         }
+    }
+
+    /// A block of a Fanuc or Haas lathe's single cycle G90, G92 or G94 (B's and C's G77-G79,
+    /// read as A's numbers) in [`ModalMachine::moved`]: its end point kept in `cycle_end`;
+    /// true where the block ran the cycle (its X U Z W then move no position: the tool is
+    /// back at the start point). A block of the mode without X U Z W runs none, nor does a
+    /// dwell's (its U or X is the time), nor a code's that takes the axis words.
+    #[cold]
+    #[inline(never)]
+    fn single_cycle(&mut self, v: &BlockValues, touched: u32) -> bool {
+        let s = &self.state;
+        if s.cycle.is_some() || self.taken.is_some() || touched & XZUW == 0 || v.has_g(4) {
+            return false;
+        }
+        if !self.cycle_kept {
+            self.cycle_end = [None; 2];
+            self.cycle_kept = true;
+        }
+        for (k, (abs, inc)) in [(b'X', b'U'), (b'Z', b'W')].into_iter().enumerate() {
+            let i = if abs == b'X' { 0 } else { 2 };
+            let given = |l: u8| touched & bit(l) != 0;
+            let start = s.position[i].filter(|_| s.unknown & bit(abs) == 0);
+            if let Some(at) = v.get(abs) {
+                // (G91 X of systems B and C: an increment from the start point)
+                self.cycle_end[k] = if s.incremental {
+                    start.and_then(|start| start.checked_add(at))
+                } else {
+                    Some(at)
+                };
+            } else if let Some(by) = v.get(inc) {
+                // (U W of systems B and C: no page at hand says they are increments)
+                self.cycle_end[k] = start
+                    .filter(|_| self.settings.g_system == GCodeSystem::A)
+                    .and_then(|start| start.checked_add(by));
+            } else if given(abs) || given(inc) {
+                self.cycle_end[k] = None;
+            }
+        }
+        self.ran_cycle = true;
+        true
     }
 }
 
@@ -1265,25 +1382,96 @@ mod tests {
                                 m.settings.lacks_g[n] = true;
                             }
                             m.g_other(before);
+                            m.cycle_kept = fanuc_lathe || lap;
                             for g in 0..=3 {
-                                let (state, uw) = (m.state, m.uw_moves);
+                                let (state, uw, kept) = (m.state, m.uw_moves, m.cycle_kept);
                                 m.g(g);
-                                let inline = (m.state, m.uw_moves);
-                                (m.state, m.uw_moves) = (state, uw);
+                                let inline = (m.state, m.uw_moves, m.cycle_kept);
+                                (m.state, m.uw_moves, m.cycle_kept) = (state, uw, kept);
                                 m.g_other(g);
                                 assert_eq!(
                                     inline,
-                                    (m.state, m.uw_moves),
+                                    (m.state, m.uw_moves, m.cycle_kept),
                                     "{family:?} lathe {fanuc_lathe} lap {lap} {g_system:?} \
                                      lacked {lacked:?} G{before} then G{g}"
                                 );
-                                (m.state, m.uw_moves) = (state, uw);
+                                (m.state, m.uw_moves, m.cycle_kept) = (state, uw, kept);
                             }
                         }
                     }
                 }
             }
         }
+    }
+
+    fn fanuc_lathe() -> ModalMachine {
+        let mut m = machine();
+        m.settings.family = Family::MacroB;
+        m.settings.fanuc_lathe = true;
+        m.settings.dwell = crate::word::dwell_words(Family::MacroB, true);
+        m.settings.reset = vec![0, 18, 21, 40, 97, 99];
+        m.reset();
+        m
+    }
+
+    fn xz(m: &ModalMachine) -> (Option<Dec>, Option<Dec>) {
+        (m.state.position[0], m.state.position[2])
+    }
+
+    fn d(text: &str) -> Option<Dec> {
+        Some(Dec::parse(text).unwrap())
+    }
+
+    /// Issue 32 (thr42): a FANUC or Haas lathe's threading G32 and G34 cut to their end
+    /// point and stay there, U and W its increments as in G01 (FANUC 0i-TF operator's
+    /// manual, "Thread cutting G32"); the single cycles G90, G92, G94 go to their end point
+    /// X(U) Z(W) and back to the start point, where the position stays, the end point kept
+    /// for their modal repeats until a code of group 01 other than theirs ("Canned cycle").
+    #[test]
+    fn a_lathe_s_thread_follows_u_and_w_and_its_single_cycles_return_to_the_start() {
+        for thread in [32, 34] {
+            let mut m = fanuc_lathe();
+            m.apply(&block(&[0], &[], &[(b'X', "60."), (b'Z', "2.")]));
+            m.apply(&block(&[thread], &[], &[(b'W', "-30."), (b'F', "1.5")]));
+            assert!(m.uw_moved_xz(), "G{thread}");
+            assert_eq!(xz(&m), (d("60."), d("-28.")), "G{thread}");
+            assert_eq!(m.cycle_end(), None);
+            m.apply(&block(&[], &[], &[(b'U', "-4."), (b'W', "-2.")]));
+            assert_eq!(xz(&m), (d("56."), d("-30.")), "G{thread}");
+        }
+        for cycle in [90, 92, 94] {
+            let mut m = fanuc_lathe();
+            m.apply(&block(&[0], &[], &[(b'X', "60."), (b'Z', "2.")]));
+            m.apply(&block(&[cycle], &[], &[(b'U', "-10."), (b'W', "-30.")]));
+            assert!(!m.uw_moved_xz(), "G{cycle}");
+            assert_eq!(m.cycle_end(), Some([d("50."), d("-28.")]), "G{cycle}");
+            assert_eq!(xz(&m), (d("60."), d("2.")), "G{cycle}: the start point");
+            // the modal repeat: a new X, the Z kept
+            m.apply(&block(&[], &[], &[(b'X', "45.")]));
+            assert_eq!(m.cycle_end(), Some([d("45."), d("-28.")]), "G{cycle}");
+            m.apply(&block(&[], &[], &[(b'U', "-20.")]));
+            assert_eq!(m.cycle_end(), Some([d("40."), d("-28.")]), "G{cycle}");
+            assert_eq!(xz(&m), (d("60."), d("2.")), "G{cycle}");
+            // a block of the mode without X U Z W, and a dwell, run no cycle
+            m.apply(&block(&[], &[], &[(b'F', "0.2")]));
+            assert_eq!(m.cycle_end(), None);
+            m.apply(&block(&[4], &[], &[(b'U', "1.5")]));
+            assert_eq!((m.cycle_end(), xz(&m)), (None, (d("60."), d("2."))));
+            // another code of the cycles' group keeps the data; G00 ends it
+            let other = if cycle == 90 { 94 } else { 90 };
+            m.apply(&block(&[other], &[], &[(b'X', "30.")]));
+            assert_eq!(m.cycle_end(), Some([d("30."), d("-28.")]), "G{cycle}");
+            m.apply(&block(&[0], &[], &[(b'X', "70.")]));
+            assert_eq!((m.cycle_end(), xz(&m)), (None, (d("70."), d("2."))));
+            m.apply(&block(&[cycle], &[], &[(b'X', "30.")]));
+            assert_eq!(m.cycle_end(), Some([d("30."), None]), "G{cycle}");
+            assert_eq!(xz(&m), (d("70."), d("2.")), "G{cycle}");
+        }
+        // from an unknown start point, an increment's end is not known
+        let mut m = fanuc_lathe();
+        m.apply(&block(&[90], &[], &[(b'U', "-10."), (b'Z', "-5.")]));
+        assert_eq!(m.cycle_end(), Some([None, d("-5.")]));
+        assert_eq!(xz(&m), (None, None));
     }
 
     #[test]

@@ -1630,11 +1630,18 @@ impl Checker {
         // positions of X and Z go to their spans, U and W having no travel of their own
         // (review 41, finding 2: `G0 X100. Z0`, `G0 U520.` passed a 500 mm travel); only a
         // block that writes U or W asks the machine
-        let uw = places & UW_PLACES != 0 && self.machine.uw_moved_xz();
+        // a FANUC or Haas lathe's single cycle G90, G92, G94: its end point X(U) Z(W) goes to
+        // the spans, the position (the start point, where the tool returns) being kept aside
+        // while they are walked
+        let cycle = self.machine.ran_cycle();
+        let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
             onto_xz = uw_onto_xz(places);
             (moved, places) = (&onto_xz.0[..onto_xz.1], onto_xz.2);
+        }
+        if cycle {
+            self.machine.swap_cycle_end();
         }
         let col = |letter: u8| {
             if uw {
@@ -1814,6 +1821,9 @@ impl Checker {
             if self.frames.map.is_some() && !moved.is_empty() {
                 self.mapped_spans(moved, line, facts);
             }
+        }
+        if cycle {
+            self.machine.swap_cycle_end();
         }
         let v = &self.values;
         // (the feed, speed and tool limits below read the block's F, S and T alone: most
@@ -2718,6 +2728,51 @@ mod tests {
             lathe.modal.g_system = system;
             let u = "G00 X-100. Z0\nG00 U1050.\n";
             assert_eq!(at(lathe, u, Rule::TravelExceeded), [], "{system:?}");
+        }
+    }
+
+    /// Issue 32 (thr42): a FANUC or Haas lathe's threading G32/G34 moves X and Z by U and W
+    /// as G01 does, and the end point X(U) Z(W) of a single cycle G90, G92, G94 goes to the
+    /// spans, the tool back at the start point after it (FANUC 0i-TF operator's manual,
+    /// "Thread cutting G32", "Outer diameter/internal diameter cutting cycle G90", "Thread
+    /// cutting cycle G92", "End face turning cycle G94"). Travel X -500 to 500, Z -300 to 100.
+    #[test]
+    fn a_lathe_s_thread_and_single_cycles_reach_the_spans() {
+        let mut haas = fanuc_lathe();
+        haas.haas = true;
+        for (name, lathe) in [("fanuc", fanuc_lathe()), ("haas", haas)] {
+            let at = |body: &str| at(lathe.clone(), body, Rule::TravelExceeded);
+            for thread in ["G32", "G34"] {
+                // Z 0 to -450 by W and by Z (out), Z 50 to -250 (in)
+                assert_eq!(
+                    at(&format!("G00 X40. Z0\n{thread} W-450. F1.5\n")),
+                    [(3, 5)]
+                );
+                assert_eq!(
+                    at(&format!("G00 X40. Z0\n{thread} Z-450. F1.5\n")),
+                    [(3, 5)]
+                );
+                assert_eq!(at(&format!("G00 X40. Z50.\n{thread} W-300. F1.5\n")), []);
+                // the thread's position followed: its modal repeat from there
+                let repeat = format!("G00 X40. Z0\n{thread} W-250. F1.5\nW-250.\n");
+                assert_eq!(at(&repeat), [(4, 1)], "{name} {thread}");
+            }
+            for cycle in ["G90", "G92", "G94"] {
+                // the end point out of Z's travel: by W, by Z, and by X of a modal repeat
+                let w = format!("G00 X60. Z50.\n{cycle} U-10. W-500. F0.2\n");
+                assert_eq!(at(&w), [(3, 11)], "{name} {cycle}");
+                let z = format!("G00 X60. Z50.\n{cycle} X50. Z-400. F0.2\n");
+                assert_eq!(at(&z), [(3, 10)], "{name} {cycle}");
+                let x = format!("G00 X60. Z0\n{cycle} X50. Z-10. F0.2\nX-950.\n");
+                assert_eq!(at(&x), [(4, 1)], "{name} {cycle}");
+                let u = format!("G00 X60. Z0\n{cycle} U-10. W-10. F0.2\nU-1020.\n");
+                assert_eq!(at(&u), [(4, 1)], "{name} {cycle}");
+                // inside: Z 50 to -250, the tool back at X60. Z50. after each cycle (had it
+                // stayed at Z-250., the W-300. after them would reach Z-550.)
+                let inside =
+                    format!("G00 X60. Z50.\n{cycle} U-10. W-300. F0.2\nU-20.\nG00 W-300.\n");
+                assert_eq!(at(&inside), [], "{name} {cycle}");
+            }
         }
     }
 

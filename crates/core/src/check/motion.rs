@@ -1368,7 +1368,9 @@ mod tests {
             x_after(fanuc_lathe(), "G74 X20. Z-5. P1000 Q2000 F0.1"),
             known("3")
         );
-        assert_eq!(x_after(fanuc_lathe(), "G92 X20. Z-5. F1.5"), known("20"));
+        // (a lathe's G92 is its thread cutting cycle, no setting: back at its start point,
+        // FANUC 0i-TF, "Thread cutting cycle G92"; issue 32, thr42)
+        assert_eq!(x_after(fanuc_lathe(), "G92 X20. Z-5. F1.5"), known("3"));
     }
 
     #[test]
