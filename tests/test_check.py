@@ -236,7 +236,8 @@ def test_a_g92_and_a_call_under_a_shift_keep_the_span_of_where_the_tool_goes(
     of the new coordinates, which starts the new span (finding 1: `G0 X650` then passed a
     600 mm travel on a LinuxCNC profile of the user's; `G0 X1600.` the fanuc-mill's 1524);
     a subprogram after M30 runs under the G52 of its call, so its body is not read in the
-    work system the Haas's M30 gives back (finding 2): the span starts again, noted."""
+    work system the Haas's M30 gives back (finding 2): read under the calls' shift where they
+    agree, its span started again with a note where they do not."""
     def found(name: str, program: str, profile: str) -> list[tuple[int, str, str]]:
         path = tmp_path / name
         path.write_text(program)
@@ -264,9 +265,62 @@ def test_a_g92_and_a_call_under_a_shift_keep_the_span_of_where_the_tool_goes(
     assert found("k.nc", known, "fanuc-mill") == []
     h5 = ("%\nO1000\nG20 G90 G54\nG0 X-25. Y0\nG52 X30.\nG0 X0 Y0\nM97 P100\nM30\n"
           "N100 G0 X35.\nM99\n%\n")
-    notes = [f for f in found("h5.nc", h5, "haas-mill") if f[2].startswith("M30")]
-    assert [f[:2] for f in notes] == [(8, "TG140")]
+    h5_found = [f for f in found("h5.nc", h5, "haas-mill") if f[1] == "TG601"]
+    assert [f[:2] for f in h5_found] == [(9, "TG601")]
+    assert "X spans 90 (from -25 to 65)" in h5_found[0][2]
+    # the FANUC's: G52 X700. cancelled before M30, the sub still runs under it (X1600.)
+    f2 = ("%\nO1000\nG21 G90 G54\nG0 X-600. Y0\nG52 X700.\nG0 X0 Y0\nM98 P2000\nG52 X0\n"
+          "M30\nO2000\nG0 X900.\nM99\n%\n")
+    f2_found = [f for f in found("f2.nc", f2, "fanuc-mill") if f[1] == "TG601"]
+    assert [f[:2] for f in f2_found] == [(11, "TG601")]
+    assert "X spans 2200 (from -600 to 1600)" in f2_found[0][2]
+    # calls under two shifts: the span starts again at M30, noted with the first call
+    two = h5.replace("M97 P100\nM30", "M97 P100\nG52 X0\nM97 P100\nM30")
+    notes = [f for f in found("two.nc", two, "haas-mill") if f[2].startswith("M30")]
+    assert [f[:2] for f in notes] == [(10, "TG140")]
     assert "(M97 P100 of line 7)" in notes[0][2]
+    assert not [f for f in found("two.nc", two, "haas-mill") if f[1] == "TG601"]
+
+
+def test_a_subprogram_before_its_call_runs_in_the_call_s_units_and_shift(
+        tmp_path: Path) -> None:
+    """Review 39, finding 4: a memory backup lists O0002 before the O1000 that calls it; the
+    control runs it in the caller's units and under its shift, wherever it stands in the
+    file. Its positions were read in the reset units, and a G20 caller's TG601 was missed."""
+    def found(program: str, profile: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / "p.nc"
+        path.write_text(program)
+        out = run("check", str(path), "-p", profile, "--select", "TG6,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())
+                if not f["message"].startswith("M98 (subprogram call)")]
+
+    sf = "%\nO0002\nG0 X35.\nM99\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P2\nM30\n%\n"
+    got = found(sf, "fanuc-mill")
+    assert [f[:2] for f in got] == [(3, "TG601")]
+    assert "X spans 1778 (from -889 to 889)" in got[0][2]
+    assert "O0002 runs in inches as called by M98 P2 of line 8" in got[0][2]
+    # the same with the subprogram after M30: as before
+    after = "%\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P2\nM30\nO0002\nG0 X35.\nM99\n%\n"
+    assert [f[:2] for f in found(after, "fanuc-mill")] == [(8, "TG601")]
+    # under the call's G52 X30.: X35. is 65 in from the work zero
+    shifted = sf.replace("M98 P2\n", "G52 X30.\nM98 P2\nG52 X0\n").replace("X-35.", "X-25.")
+    got = found(shifted, "fanuc-mill")
+    assert [f[:2] for f in got] == [(3, "TG601")]
+    assert "X spans 2286 (from -635 to 1651)" in got[0][2]
+    # a G21 caller on the Haas (reset in inches): X35. and X-30. are mm, inside the travel
+    # (read in the reset inches, 65 in: a false TG601)
+    mm = "%\nO0002\nG0 X35.\nG0 X-30.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n"
+    assert found(mm, "haas-mill") == []
+    # no call names it: a program of its own, read in the reset inches as before
+    assert [f[:2] for f in found(mm.replace("M98 P2\n", ""), "haas-mill")] == [(4, "TG601")]
+    # calls in both units: not judged, one note at its O
+    both = sf.replace("M98 P2\nM30", "M98 P2\nG21\nM98 P2\nM30")
+    assert [f[:2] for f in found(both, "fanuc-mill")] == [(2, "TG140")]
+    # its own G21: read as before (900 mm each way, past the 1524 mm)
+    own = ("%\nO0002\nG21\nG0 X900.\nG0 X-900.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\n"
+           "M98 P2\nM30\n%\n")
+    assert [f[:2] for f in found(own, "fanuc-mill")] == [(5, "TG601")]
 
 
 def test_review_41_spans_of_a_g92_beside_a_units_code_and_of_a_lathe_s_u_and_w(

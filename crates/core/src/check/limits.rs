@@ -40,7 +40,7 @@ impl Travel {
 
     /// [`Travel::of`] the axis at place `i` of [`AXES`].
     #[inline(always)]
-    fn of_place(&self, i: usize) -> Option<(f64, f64)> {
+    pub(super) fn of_place(&self, i: usize) -> Option<(f64, f64)> {
         self.1[i]
     }
 
@@ -140,6 +140,22 @@ pub(super) struct Shifts {
     /// one at the end, so at the end their spans start again.
     call: u16,
     call_at: Option<(String, usize)>,
+    /// The shift in force at the calls of the program in hand ([`Checker::call_shifts`]),
+    /// which a subprogram after its end runs under: where all agree and are known, the text
+    /// after the end is read under it ([`Checker::shift_end`]; review 39, finding 2).
+    pub(super) calls: CallShifts,
+}
+
+/// The shift in force at a program's calls ([`Shifts::calls`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(super) enum CallShifts {
+    /// No call made.
+    #[default]
+    None,
+    /// Every call made under this shift (each axis's `total` and `local`).
+    Known([f64; 9], [f64; 9]),
+    /// Calls under different shifts, or one under a shift not known.
+    Mixed,
 }
 
 impl Shifts {
@@ -699,6 +715,9 @@ impl Checker {
                 // kept) has its positions under the mirror before this block mirrored
                 // otherwise than those after it: apart from them too. The other axes' spans
                 // go on as they were (review 24, finding 1).
+                if changed != 0 {
+                    self.early_merge();
+                }
                 for k in (0..AXES.len()).filter(|&k| changed & 1 << k != 0) {
                     if self.frames.saving & 1 << k == 0 {
                         self.frames.saved[k] = self.spans[k].take();
@@ -1420,6 +1439,12 @@ impl Checker {
     /// `local_lost`: the shift may have set or ended a G52's local shift of the axis. Whether
     /// a span of an axis with a travel was dropped (what the note says).
     fn restart_span(&mut self, i: usize, local_lost: bool) -> bool {
+        // (a program read apart from those before it is read as before from here)
+        self.early_merge();
+        // (a call's shift kept for the end is in the coordinates before it)
+        if self.shifts.calls != CallShifts::None {
+            self.shifts.calls = CallShifts::Mixed;
+        }
         let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
         self.spans[i] = None;
         self.shifts.total[i] = 0.0;
@@ -1442,6 +1467,21 @@ impl Checker {
         let ends = !self.values.end_unsure && self.values.ms.iter().any(|&m| m == 2 || m == 30);
         if !ends {
             return;
+        }
+        if let CallShifts::Known(total, local) = self.shifts.calls {
+            if self.shifts.call != 0 {
+                // the calls, all under one known shift, run the text after the end (a Haas's
+                // M97 N100, an O2000 after M30) under it: its positions are in the spans'
+                // coordinates plus that shift
+                self.shifts.total = total;
+                self.shifts.local = local;
+                self.shifts.local_unknown = 0;
+                self.shifts.call = 0;
+                self.shifts.call_at = None;
+                self.shifts.calls = CallShifts::None;
+                self.shifts.settle();
+                return;
+            }
         }
         let mut lost = 0u16;
         for i in 0..AXES.len() {
@@ -1475,8 +1515,8 @@ impl Checker {
             let why = match self.shifts.call_at.take() {
                 Some((call, call_line)) if lost & self.shifts.call != 0 => format!(
                     "a subprogram after the end runs under the shift in force where it is \
-                     called ({call} of line {call_line}), which the checker does not carry to \
-                     its body"
+                     called ({call} of line {call_line}), and the program's calls are made \
+                     under different shifts or one not known"
                 ),
                 _ => "the end of the program may end the shift in force or keep it, as the \
                       control's parameters say"
@@ -1486,7 +1526,41 @@ impl Checker {
         }
         self.shifts.call = 0;
         self.shifts.call_at = None;
+        self.shifts.calls = CallShifts::None;
         self.shifts.settle();
+    }
+
+    /// A call (M97, M98, G65, G66): the shift in force here kept with the others of the
+    /// program in hand ([`Shifts::calls`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_shifts(&mut self) {
+        let here = if self.shifts.local_unknown != 0 {
+            CallShifts::Mixed
+        } else {
+            CallShifts::Known(self.shifts.total, self.shifts.local)
+        };
+        self.shifts.calls = match std::mem::take(&mut self.shifts.calls) {
+            CallShifts::None => here,
+            known if known == here => known,
+            _ => CallShifts::Mixed,
+        };
+    }
+
+    /// The shift in force at a call, in the spans' coordinates: None where a local shift
+    /// is not known.
+    pub(super) fn call_shift(&self) -> Option<[f64; 9]> {
+        (self.shifts.local_unknown == 0).then_some(self.shifts.total)
+    }
+
+    /// Some axis has a shift in force, or one not known.
+    pub(super) fn shifts_on(&self) -> bool {
+        self.shifts.on
+    }
+
+    /// Some frame (rotation, scaling, mirror, polar coordinates) is in force.
+    pub(super) fn frames_on(&self) -> bool {
+        self.frames.on != 0 || self.frames.map.is_some()
     }
 
     /// A call (M97, M98, G65, G66) made under a shift: the axes shifted there, or whose local
@@ -1840,43 +1914,18 @@ impl Checker {
         let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
         let factor = self.to_profile_units(true);
         let f = f.filter(|_| !self.units_unknown);
+        if let Some(feed) = f.filter(|_| self.early_on) {
+            // (a program read apart keeps its largest feed: a few blocks of it, where it grows)
+            let value = feed.to_f64() * factor;
+            if self.early_feed_max() < value {
+                let column = col(b'F');
+                self.early_feed(feed, value, line, column);
+            }
+        }
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
-                let message = if factor == 1.0 {
-                    format!("feed {feed} above the maximum {top}")
-                } else {
-                    // written in the other unit system: said in the profile's too
-                    let (written, profile) = match self.config.limit_units {
-                        Units::Metric => ("in", "mm"),
-                        Units::Inch => ("mm", "in"),
-                    };
-                    let per = if self.machine.state.feed_mode == 95 {
-                        "rev"
-                    } else {
-                        "min"
-                    };
-                    format!(
-                        "feed {feed} {written}/{per} ({} {profile}/{per}) above the maximum \
-                         {top} {profile}/{per}",
-                        round6(feed.to_f64() * factor)
-                    )
-                };
-                let message = format!(
-                    "{message}{}",
-                    self.units_not_written(feed.to_f64() * factor / 25.4 <= top.to_f64() + 1e-9)
-                );
-                // a FANUC clamps a cutting feed above its parameter's maximum (Power Mate i-D
-                // B-63172EN 4.2.2, "Cutting feed rate clamp"; parameter 1422): no alarm, so a
-                // warning (issue 32); a Haas alarms (NGC Mill Operator's Manual, G01)
-                if self.config.family == Family::MacroB && !self.config.haas {
-                    let message = format!(
-                        "{message}: a FANUC clamps a cutting feed to its maximum (no alarm), so \
-                         the cut runs slower than programmed"
-                    );
-                    self.report_limit(Rule::FeedClamped, message, line, col(b'F'));
-                } else {
-                    self.report_limit(Rule::FeedTooHigh, message, line, col(b'F'));
-                }
+                let mode = self.machine.state.feed_mode;
+                self.feed_over(feed, factor, mode, (line, col(b'F')), "");
             }
         }
         if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
@@ -1979,7 +2028,7 @@ impl Checker {
     /// (Inlined where it is asked, for each moved axis of every block; the finding out of
     /// line.)
     #[inline]
-    fn add_to_span(
+    pub(super) fn add_to_span(
         &mut self,
         i: usize,
         at: f64,
@@ -2011,10 +2060,67 @@ impl Checker {
         span.least = span.least.min(at);
         span.most = span.most.max(at);
         span.said |= said_outside; // the machine position said more than the span can
+        if self.early_on {
+            // (a program read apart from those before it, crate::check::called)
+            let column = column();
+            if let Some(ends) = self.early_span(i, at, line, column) {
+                self.span_exceeded(axis, ends, (low, high), (line, column), under);
+            }
+            return;
+        }
         let Span { least, most, said } = *span;
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
             self.span_exceeded(axis, (least, most), (low, high), (line, column()), under);
+        }
+    }
+
+    /// TG602 (a FANUC's clamp, TG605): `feed`, read with `factor` to the profile's units
+    /// under the feed mode `mode`, above the profile's maximum; `under` follows the numbers
+    /// (a subprogram's call, crate::check::called).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn feed_over(
+        &mut self,
+        feed: Dec,
+        factor: f64,
+        mode: i64,
+        (line, column): (usize, usize),
+        under: &str,
+    ) {
+        let Some(top) = self.config.feed_max else {
+            return;
+        };
+        let message = if factor == 1.0 {
+            format!("feed {feed} above the maximum {top}")
+        } else {
+            // written in the other unit system: said in the profile's too
+            let (written, profile) = match self.config.limit_units {
+                Units::Metric => ("in", "mm"),
+                Units::Inch => ("mm", "in"),
+            };
+            let per = if mode == 95 { "rev" } else { "min" };
+            format!(
+                "feed {feed} {written}/{per} ({} {profile}/{per}) above the maximum \
+                 {top} {profile}/{per}",
+                round6(feed.to_f64() * factor)
+            )
+        };
+        let message = format!(
+            "{message}{under}{}",
+            self.units_not_written(feed.to_f64() * factor / 25.4 <= top.to_f64() + 1e-9)
+        );
+        // a FANUC clamps a cutting feed above its parameter's maximum (Power Mate i-D
+        // B-63172EN 4.2.2, "Cutting feed rate clamp"; parameter 1422): no alarm, so a
+        // warning (issue 32); a Haas alarms (NGC Mill Operator's Manual, G01)
+        if self.config.family == Family::MacroB && !self.config.haas {
+            let message = format!(
+                "{message}: a FANUC clamps a cutting feed to its maximum (no alarm), so \
+                 the cut runs slower than programmed"
+            );
+            self.report_limit(Rule::FeedClamped, message, line, column);
+        } else {
+            self.report_limit(Rule::FeedTooHigh, message, line, column);
         }
     }
 
@@ -2086,6 +2192,12 @@ impl Checker {
     /// user's machine, no hint; one it leaves to the base is the sample's (review 38, 4).
     #[cold]
     fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+        if matches!(
+            rule,
+            Rule::TravelExceeded | Rule::FeedTooHigh | Rule::FeedClamped
+        ) {
+            self.early_hold();
+        }
         let limit = match rule {
             Rule::TravelExceeded => super::SAMPLE_TRAVEL,
             Rule::FeedTooHigh | Rule::FeedClamped => super::SAMPLE_FEED,
@@ -2800,39 +2912,56 @@ mod tests {
     /// sequence, an O number an M98 names) runs under the shift at its call, not the one at
     /// the end: where a call was made under a shift, the shifted axes' spans start again at
     /// the end, with the note naming the call. Travel X -500 to 500.
+    /// Review 39, finding 2: a subprogram after the end (a Haas's M97 sequence, an O number
+    /// an M98 names) runs under the shift at its call, not the one at the end: where every
+    /// call of the program was made under one known shift, the text after the end is read
+    /// under it; where they differ, the shifted axes' spans start again at the end, with the
+    /// note naming the call. Travel X -500 to 500.
     #[test]
-    fn a_subprogram_after_the_end_is_not_read_under_the_end_s_shift() {
+    fn a_subprogram_after_the_end_is_read_under_its_calls_shift() {
         let fanuc = of_family(Family::MacroB);
         let mut haas = of_family(Family::MacroB);
         haas.haas = true;
         let m97 = "G90 G00 X-400. Y0\nG52 X300.\nX0 Y0\nM97 P100\nM30\nN100 X450.\nM99\n";
-        // the Haas took its G52 as removed at M30 and read X450. in the work system: 850
-        // from X-400., silently (the sub runs at X750.)
-        assert_eq!(at(haas.clone(), m97, Rule::TravelExceeded), []);
-        let noted = findings(haas.clone(), &program(m97), Rule::NotFollowed);
-        let end: Vec<_> = noted
-            .iter()
-            .filter(|f| f.message.starts_with("M30"))
-            .collect();
-        assert_eq!(end.len(), 1, "{noted:?}");
-        assert_eq!((end[0].line, end[0].column), (6, 1));
-        assert!(
-            end[0].message.contains("(M97 P100 of line 5)"),
-            "{}",
-            end[0].message
-        );
+        // the sub runs at X750.: 1150 from X-400. (the Haas took its G52 as removed at M30
+        // and read X450. in the work system, silently; lim40 started the span again)
+        for config in [fanuc.clone(), haas.clone()] {
+            assert_eq!(at(config.clone(), m97, Rule::TravelExceeded), [(7, 6)]);
+            let said = findings(config, &program(m97), Rule::TravelExceeded);
+            assert!(
+                said[0].message.contains("X spans 1150 (from -400 to 750)"),
+                "{}",
+                said[0].message
+            );
+        }
         // the G52 cancelled before M30: the sub still runs under it
         let m98 = "G90 G00 X-400. Y0\nG52 X300.\nX0 Y0\nM98 P2000\nG52 X0\nM30\n\
                    O2000\nX450.\nM99\n";
         for config in [fanuc.clone(), haas.clone()] {
-            let noted = findings(config, &program(m98), Rule::NotFollowed);
+            assert_eq!(at(config, m98, Rule::TravelExceeded), [(9, 1)]);
+        }
+        // calls under two shifts: the span starts again at the end, the note names the first
+        let two = "G90 G00 X-400. Y0\nG52 X300.\nX0 Y0\nM97 P100\nG52 X0\nM97 P100\nM30\n\
+                   N100 X450.\nM99\n";
+        for config in [fanuc.clone(), haas.clone()] {
+            assert_eq!(at(config.clone(), two, Rule::TravelExceeded), []);
+            let noted = findings(config, &program(two), Rule::NotFollowed);
+            let end: Vec<_> = noted
+                .iter()
+                .filter(|f| f.message.starts_with("M30"))
+                .collect();
+            assert_eq!(end.len(), 1, "{noted:?}");
+            assert_eq!((end[0].line, end[0].column), (8, 1));
             assert!(
-                noted
-                    .iter()
-                    .any(|f| f.message.contains("(M98 P2000 of line 5)")),
-                "{noted:?}"
+                end[0].message.contains("(M97 P100 of line 5)"),
+                "{}",
+                end[0].message
             );
         }
+        // a call under a shift not known (G52 under G91 over a local shift): the same
+        let unknown = "G90 G00 X-400. Y0\nG52 X300.\nG91 G52 X10.\nG90 X0 Y0\nM97 P100\n\
+                       M30\nN100 X450.\nM99\n";
+        assert_eq!(at(haas.clone(), unknown, Rule::TravelExceeded), []);
         // no shift at the call: the Haas's end removes the G52 as before (X-550. is 1050
         // from X500.)
         let before = "G90 G00 X-400.\nM98 P2000\nG52 X100.\nX400.\nM30\nX-550.\n";

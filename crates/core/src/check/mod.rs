@@ -39,6 +39,7 @@ pub use motion::in_one_quadrant;
 pub use structure::nested_comment;
 
 // the rules, by family
+mod called;
 mod codes;
 mod formats;
 mod limits;
@@ -1069,6 +1070,14 @@ pub struct Checker {
     /// disagree, or one was made in units not known): no limit that reads a length or a feed
     /// (TG601, TG602) is judged until it writes a units code of its own.
     units_unknown: bool,
+    /// A program read from the reset state, while it may be a subprogram whose calls come
+    /// later in the file (`called`; review 39, finding 4): `early_on` while there is one.
+    early: Option<Box<called::Early>>,
+    early_on: bool,
+    /// Where the findings held for it begin in `found` (none drained from there).
+    hold_from: Option<usize>,
+    /// The subprograms read before their calls, judged at the file's end.
+    pending: Vec<called::Pending>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -1235,6 +1244,10 @@ impl Checker {
             linuxcnc_called_ahead: Vec::new(),
             call_units: HashMap::new(),
             units_unknown: false,
+            early: None,
+            early_on: false,
+            hold_from: None,
+            pending: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
@@ -1281,14 +1294,29 @@ impl Checker {
 
     /// The findings made since the last call.
     pub fn take(&mut self) -> Vec<Finding> {
-        std::mem::take(&mut self.found)
+        match self.hold_from {
+            // (findings held for a program read apart stay: crate::check::called)
+            Some(from) => {
+                let held = self.found.split_off(from);
+                self.hold_from = Some(0);
+                std::mem::replace(&mut self.found, held)
+            }
+            None => std::mem::take(&mut self.found),
+        }
     }
 
     /// The findings made since the last call, handed over one by one with the list's
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
     pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
-        self.found.drain(..)
+        match self.hold_from {
+            // (findings held for a program read apart stay: crate::check::called)
+            Some(from) => {
+                self.hold_from = Some(0);
+                self.found.drain(..from)
+            }
+            None => self.found.drain(..),
+        }
     }
 
     pub fn enabled(&self, rule: Rule) -> bool {
@@ -2107,8 +2135,12 @@ impl Checker {
         self.values.end_unsure =
             self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
         self.machine.apply_taken(&self.values, taken);
-        if self.units_unknown && self.machine.state.units_given {
-            self.units_known_again();
+        if (self.units_unknown || self.early_on) && self.machine.state.units_given {
+            if self.units_unknown {
+                self.units_known_again();
+            }
+            // (a program read apart that writes its own units is read as before)
+            self.early_merge();
         }
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);
@@ -2159,6 +2191,7 @@ impl Checker {
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
             self.call_made(b);
+            self.call_shifts();
             if self.shifts.on {
                 self.shift_call(b);
             }
@@ -2381,6 +2414,7 @@ impl Checker {
             self.report(Rule::DataModeNotClosed, message, opened, 1);
         }
         self.part_ended(false);
+        self.early_finish();
         self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();

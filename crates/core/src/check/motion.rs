@@ -242,6 +242,15 @@ impl Checker {
         } else {
             self.say_feed_pending();
         }
+        // a program read from the reset state that returns is a subprogram of a call later
+        // in the file, if any (crate::check::called)
+        if self.early_on {
+            if returned {
+                self.early_pend();
+            } else {
+                self.early_merge();
+            }
+        }
         self.feed_unheld = false;
     }
 

@@ -345,6 +345,21 @@ impl Checker {
             }
             _ => number,
         };
+        if !self.pending.is_empty() {
+            let token = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'P' && w.index.is_empty())
+                .map_or_else(String::new, |w| w.token());
+            let call = if self.values.ms.contains(&98) {
+                format!("M98 {token}")
+            } else if self.values.gs().contains(&66) {
+                format!("G66 {token}")
+            } else {
+                format!("G65 {token}")
+            };
+            self.early_call(number, call, b.line);
+        }
         let s = &self.machine.state;
         let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
         self.call_units
@@ -368,12 +383,23 @@ impl Checker {
     /// control's start units the profile assumes).
     pub(super) fn called_units(&mut self, b: &BlockView<'_>) {
         self.units_unknown = false;
+        // (the program before, if read apart and not ended: read as before)
+        self.early_merge();
+        self.shifts.calls = super::limits::CallShifts::None;
         let number = b
             .words
             .first()
             .filter(|w| w.letter == b'O' && w.index.is_empty() && w.expression.is_empty())
             .and_then(|w| std::str::from_utf8(w.number).ok())
             .and_then(|n| n.parse::<i64>().ok());
+        // a program no call before it names may be the subprogram of a call after it (a
+        // memory backup lists programs by number): read apart until it shows what it is
+        // (crate::check::called; review 39, finding 4)
+        if let Some(n) = number.filter(|n| !self.call_units.contains_key(n)) {
+            if self.config.family == Family::MacroB {
+                self.early_begin(n, b.words[0].token(), (b.line, b.words[0].column));
+            }
+        }
         match number.and_then(|n| self.call_units.get(&n)) {
             Some(&Some((units, feed_units, given))) => {
                 let s = &mut self.machine.state;
@@ -384,6 +410,27 @@ impl Checker {
                 self.machine.state.units_given = false;
             }
             None => self.machine.state.units_given = false,
+        }
+    }
+
+    /// [`Checker::program_number`] of the file's first block of words: where it begins with
+    /// an O number, its program is read apart from the start (crate::check::called).
+    #[cold]
+    #[inline(never)]
+    fn first_program(&mut self, b: &BlockView<'_>) {
+        if !dialect::splits(self.config.family, self.config.program_number) {
+            return;
+        }
+        let number = b
+            .words
+            .first()
+            .filter(|w| w.letter == b'O' && w.index.is_empty() && w.expression.is_empty())
+            .and_then(|w| {
+                let n = std::str::from_utf8(w.number).ok()?.parse::<i64>().ok()?;
+                Some((n, w.token(), w.column))
+            });
+        if let Some((n, name, column)) = number {
+            self.early_begin(n, name, (b.line, column));
         }
     }
 
@@ -2108,6 +2155,11 @@ impl Checker {
     pub(super) fn program_number(&mut self, b: &BlockView<'_>) {
         let first = self.first_words;
         self.first_words = false;
+        if first && self.programs == 0 && self.config.family == Family::MacroB {
+            // the file's first program, read from the reset state: it may be the subprogram
+            // of a call later in the file (a memory backup's O0002 before its O1000)
+            self.first_program(b);
+        }
         let Some(letter) = self.config.program_number else {
             return;
         };
