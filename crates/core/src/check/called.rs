@@ -25,12 +25,20 @@ use crate::decimal::Dec;
 use crate::modal::AXES;
 use crate::rules::Rule;
 
+/// What names a subprogram read before its calls: a FANUC's or a Haas's O number, a
+/// LinuxCNC definition's label (`o<name>`, as [`crate::statement::o_label`] gives it).
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum Key {
+    Number(i64),
+    Label(Vec<u8>),
+}
+
 /// The program in hand, read from the reset state, while it may still be a subprogram of a
 /// later call.
 #[derive(Debug)]
 pub(super) struct Early {
-    /// Its O number, and its O word as written.
-    number: i64,
+    /// Its O number (or label), and its O word (`o<name> sub`) as written.
+    number: Key,
     name: String,
     /// Its O word's line and column.
     at: (usize, usize),
@@ -42,6 +50,9 @@ pub(super) struct Early {
     /// Its largest feed (in the profile's units as read from the reset state), the F word
     /// and its line and column, and the feed mode (94/95).
     feed: Option<Feed>,
+    /// LinuxCNC: whether the main program had written a units code before the definition
+    /// (given back at its end; the body is read as not having written one).
+    given_before: Option<bool>,
 }
 
 #[derive(Debug, Clone)]
@@ -66,7 +77,7 @@ struct Call {
 /// A subprogram read before any call named it, which returned without writing a units code.
 #[derive(Debug)]
 pub(super) struct Pending {
-    number: i64,
+    number: Key,
     name: String,
     at: (usize, usize),
     /// Its own spans, read in `factor`'s units from the reset state.
@@ -84,7 +95,7 @@ pub(super) struct Pending {
     /// The programs read apart in which calls of it were made, and the line of the first:
     /// where one of them turns out a subprogram, its units were its own caller's, not known
     /// at those calls.
-    called_inside: Vec<(i64, usize)>,
+    called_inside: Vec<(Key, usize)>,
 }
 
 /// A span's ends, put together with another's (`said` of either).
@@ -105,7 +116,7 @@ impl Checker {
     /// positions kept apart from the spans before it. Only with no shift, frame or
     /// transformation in force, where its positions are its own words' alone.
     #[cold]
-    pub(super) fn early_begin(&mut self, number: i64, name: String, at: (usize, usize)) {
+    pub(super) fn early_begin(&mut self, number: Key, name: String, at: (usize, usize)) {
         if self.shifts_on() || self.frames_on() || self.transformed.is_some() {
             return;
         }
@@ -118,6 +129,7 @@ impl Checker {
             least_at: [(0, 0); 9],
             most_at: [(0, 0); 9],
             feed: None,
+            given_before: None,
         }));
         self.early_on = true;
     }
@@ -132,6 +144,9 @@ impl Checker {
             return;
         };
         self.early_on = false;
+        if let Some(given) = early.given_before {
+            self.machine.state.units_given |= given;
+        }
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
             *span = joined(before, *span);
         }
@@ -153,6 +168,9 @@ impl Checker {
         }
         let early = self.early.take().expect("early_on");
         self.early_on = false;
+        if let Some(given) = early.given_before {
+            self.machine.state.units_given = given;
+        }
         let mut removed = Vec::new();
         if let Some(from) = self.hold_from.take() {
             let mut kept = Vec::with_capacity(self.found.len() - from);
@@ -184,7 +202,7 @@ impl Checker {
             called_inside: Vec::new(),
         });
         // (a call made in it, in the units it was read in, was made in units not known)
-        let number = self.pending.last().expect("pushed").number;
+        let number = self.pending.last().expect("pushed").number.clone();
         for p in &mut self.pending {
             if let Some(&(_, line)) = p.called_inside.iter().find(|(n, _)| *n == number) {
                 p.calls = Some(Err(line));
@@ -262,19 +280,20 @@ impl Checker {
     }
 
     /// A call of program `number` (`token` of line `line`): where a subprogram read before
-    /// it has that number, the units and the shift in force here are kept for it.
+    /// it has that number, the units and the shift in force here are kept for it (and
+    /// true returned).
     #[cold]
     #[inline(never)]
-    pub(super) fn early_call(&mut self, number: i64, token: String, line: usize) {
+    pub(super) fn early_call(&mut self, number: Key, token: String, line: usize) -> bool {
         let Some(k) = self.pending.iter().position(|p| p.number == number) else {
-            return;
+            return false;
         };
         let call = (!self.units_unknown).then(|| Call {
             factor: self.to_profile_units(false),
             feed_factor: self.to_profile_units(true),
             shift: self.call_shift(),
         });
-        let inside = self.early.as_ref().map(|e| e.number);
+        let inside = self.early.as_ref().map(|e| e.number.clone());
         let pending = &mut self.pending[k];
         if let Some(n) = inside {
             pending.called_inside.push((n, line));
@@ -288,6 +307,77 @@ impl Checker {
             (Some(Ok(_)), Some(_)) => Some(Err(line)),
             (Some(Err(at)), _) => Some(Err(at)),
         };
+        true
+    }
+
+    /// LinuxCNC: an `o<name> sub` opens a definition in the main program (`name` its label,
+    /// its statement at `at`). rs274 reads the body without running it, and runs it where
+    /// an `o<name> call` calls it, in the units and under the G92/G52 shift in force there
+    /// (review 41, finding 4): read apart as a FANUC's subprogram before its call is, its
+    /// units as not written.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn definition_begin(&mut self, name: &[u8], at: (usize, usize)) {
+        if self.early_on {
+            return;
+        }
+        let given = self.machine.state.units_given;
+        let written = String::from_utf8_lossy(name).into_owned();
+        self.early_begin(Key::Label(name.to_vec()), written, at);
+        if let Some(early) = self.early.as_mut() {
+            early.given_before = Some(given);
+            self.machine.state.units_given = false;
+        }
+    }
+
+    /// LinuxCNC: the `o<name> endsub` that closes the definition read apart: kept for its
+    /// calls, as a FANUC's subprogram is at its M99.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn definition_end(&mut self) {
+        if self.early_on {
+            self.early_pend();
+        }
+    }
+
+    /// A call whose program number or label is not known here (`M98 P#1`, `G65 P#1`,
+    /// `o[#1] call`; `token` of line `line`): it may run any subprogram read before it, in
+    /// units and under a shift the others' calls do not say, and any program of the file
+    /// after it (review 41, finding 5): the ones held are left unjudged at the end, the
+    /// ones after it read in units not known ([`Checker::called_units`]), with one TG140
+    /// naming the call where a program it could run has lengths or feeds to judge.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_unknown(&mut self, token: String, line: usize, column: usize) {
+        for p in &mut self.pending {
+            p.calls = Some(Err(line));
+        }
+        if self.unknown_call.is_none() {
+            self.unknown_call = Some((token, line, column, false));
+        }
+    }
+
+    /// TG140 of the call [`Checker::call_unknown`] kept, said once where a program it may
+    /// run has a length or a feed not judged for it.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn unknown_call_note(&mut self) {
+        let Some((token, line, column, said)) = self.unknown_call.as_mut() else {
+            return;
+        };
+        if *said {
+            return;
+        }
+        *said = true;
+        let (token, line, column) = (token.clone(), *line, *column);
+        let message = format!(
+            "{token} calls a program whose number is not known here: it may run any \
+             subprogram of the file, in the units and under the shift in force at the call, so \
+             the programs after it (until they write a units code) and the subprograms before \
+             it are read in units not known; their positions and feeds are not compared with \
+             the travel and the feed maximum (TG601, TG602)"
+        );
+        self.report(Rule::NotFollowed, message, line, column);
     }
 
     /// The file's end: each subprogram read before its calls is judged in their units and
@@ -306,6 +396,9 @@ impl Checker {
                 Some(_) if !judged => {}
                 None => self.early_as_read(p),
                 Some(Ok((call, token, line))) => self.early_judged(&p, &call, &token, line),
+                Some(Err(line)) if self.unknown_call.as_ref().is_some_and(|u| u.1 == line) => {
+                    self.unknown_call_note();
+                }
                 Some(Err(line)) => {
                     let message = format!(
                         "{} is a subprogram written before its calls, and runs in the units and \

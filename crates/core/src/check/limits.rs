@@ -1741,6 +1741,9 @@ impl Checker {
             if (places & self.travel.places() == 0 && self.frames.map.is_none())
                 || self.units_unknown
             {
+                if self.units_unknown && places & self.travel.places() != 0 {
+                    self.unknown_call_note();
+                }
                 break 'axes;
             }
             let factor = self.to_profile_units(false);
@@ -1891,6 +1894,9 @@ impl Checker {
         // by the same rule, ModalSettings::s_limit
         let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
         let factor = self.to_profile_units(true);
+        if self.units_unknown && f.is_some() && self.config.feed_max.is_some() {
+            self.unknown_call_note();
+        }
         let f = f.filter(|_| !self.units_unknown);
         if let Some(feed) = f.filter(|_| self.early_on) {
             // (a program read apart keeps its largest feed: a few blocks of it, where it grows)

@@ -1058,6 +1058,9 @@ pub struct Checker {
     hold_from: Option<usize>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
+    /// The first call whose program number is not known (its code, line and column), and
+    /// whether its TG140 was said ([`Checker::call_unknown`]; review 41, finding 5).
+    unknown_call: Option<(String, usize, usize, bool)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -1221,6 +1224,7 @@ impl Checker {
             early_on: false,
             hold_from: None,
             pending: Vec::new(),
+            unknown_call: None,
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
