@@ -620,6 +620,101 @@ mod tests {
         assert_eq!(limits(metric, &text.replace("G52 X30.\n", "")), []);
     }
 
+    /// A LinuxCNC profile of the user's (review 41's lc.toml): X -300..300 mm.
+    fn lcnc() -> Config {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        let mut config = of_family(Family::LinuxCnc);
+        config.facts.travel = vec![(b'X', dec("-300"), dec("300"))];
+        config.facts.limit_units = Units::Metric;
+        config
+    }
+
+    /// Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is
+    /// called, under the G92 in force there (`rs274 -g`: X-250, SET_G92_OFFSET(150), X250 at
+    /// 400): 650 > 600 of travel. Inline, the same span.
+    #[test]
+    fn a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift() {
+        let ls1 =
+            "o<s> sub\nG0 X250\no<s> endsub\nG21 G90\nG0 X-250 Y0\nG92 X-400\no<s> call\nM2\n";
+        let said = findings(lcnc(), ls1, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!((said[0].line, said[0].column), (2, 4));
+        assert!(
+            said[0].message.contains("X spans 650 (from -250 to 400)")
+                && said[0]
+                    .message
+                    .contains("o<s> runs as called by o<s> call of line 7"),
+            "{}",
+            said[0].message
+        );
+        let inline = "G21 G90\nG0 X-250 Y0\nG92 X-400\nG0 X250\nM2\n";
+        assert_eq!(fired(lcnc(), inline, Rule::TravelExceeded), [(4, 4)]);
+        // with no shift at the call: 500, inside (as before)
+        let plain = ls1.replace("G92 X-400\n", "");
+        assert_eq!(fired(lcnc(), &plain, Rule::TravelExceeded), []);
+        // never called: read where it stands, as before (250 and -250: inside)
+        let never = ls1.replace("o<s> call\n", "");
+        assert_eq!(fired(lcnc(), &never, Rule::TravelExceeded), []);
+    }
+
+    /// Two calls under different shifts (rs274: X250 at 400, then at 250): not judged, one
+    /// TG140 at the definition; a body of G91 moves from where the call leaves the tool has
+    /// no position of its own to judge.
+    #[test]
+    fn a_linuxcnc_definition_whose_calls_disagree_is_noted() {
+        let two = "o<s> sub\nG0 X250\no<s> endsub\nG21 G90\nG0 X-250 Y0\nG92 X-400\n\
+                   o<s> call\nG92 X-250\no<s> call\nM2\n";
+        assert_eq!(fired(lcnc(), two, Rule::TravelExceeded), []);
+        let notes: Vec<_> = findings(lcnc(), two, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| f.message.starts_with("o<s> is a subprogram"))
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(notes, [(1, 1)]);
+        let relative = "o<s> sub\nG91 G0 X100\nG90\no<s> endsub\nG21 G90\nG0 X-250 Y0\n\
+                        G92 X-400\no<s> call\nM2\n";
+        assert_eq!(fired(lcnc(), relative, Rule::TravelExceeded), []);
+        assert!(findings(lcnc(), relative, Rule::NotFollowed)
+            .iter()
+            .all(|f| !f.message.starts_with("o<s> is")));
+    }
+
+    /// Review 41, finding 5: `M98 P#1` may run O2000 in the caller's inches (1778 mm): its
+    /// lengths are not judged in the reset mm, one TG140 names the call. `#1=2000` before it
+    /// (the number known) is judged as `M98 P2000` is.
+    #[test]
+    fn a_call_whose_number_is_not_known_leaves_the_programs_it_may_run_unknown() {
+        let pv4 = "%\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P#1\nM30\nO2000\nG0 X35.\nM99\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), pv4), []);
+        let notes: Vec<_> = findings(metric.clone(), pv4, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| {
+                f.message
+                    .starts_with("M98 P#1 calls a program whose number")
+            })
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(notes, [(5, 5)]);
+        let g65 = pv4.replace("M98 P#1", "G65 P#1 A1.");
+        assert_eq!(limits(metric.clone(), &g65), []);
+        // the number known: judged in the caller's inches
+        let known = pv4.replace("M98 P#1", "#1=2000\nM98 P#1");
+        assert_eq!(limits(metric.clone(), &known), [(9, 4)]);
+        assert_eq!(
+            limits(metric.clone(), &pv4.replace("P#1", "P2000")),
+            [(8, 4)]
+        );
+        // a subprogram before it: not judged either (the call may run it in any units)
+        let before = "%\nO0002\nG0 X35.\nM99\nO1000\nG21 G90 G54\nG0 X-35. Y0\nM98 P2\n\
+                      G20\nM98 P#1\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), before), []);
+        // a later program that writes its own units is judged from there
+        let own = "%\nO1000\nG20 G90 G54\nG0 X0 Y0\nM98 P#1\nM30\nO2000\nG21\nG0 X900.\n\
+                   G0 X-900.\nM99\n%\n";
+        assert_eq!(limits(metric, own), [(10, 4)]);
+    }
+
     /// Findings held for a program read apart are said in the order they came, whether
     /// they are taken after each line or at the end: a main program's report is the same.
     #[test]
