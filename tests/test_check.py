@@ -323,6 +323,77 @@ def test_a_subprogram_before_its_call_runs_in_the_call_s_units_and_shift(
     assert [f[:2] for f in found(own, "fanuc-mill")] == [(5, "TG601")]
 
 
+
+def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(
+        tmp_path: Path) -> None:
+    """Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is
+    called, in the units and under the G92 in force there (`rs274 -g ls1.ngc`: X-250,
+    SET_G92_OFFSET(150), X250 at 400, 650 mm of a 600 mm travel). It was read at its place,
+    under no shift: no TG601."""
+    def found(name: str, program: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", str(lc), "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())
+                if "reads the program in file order" not in f["message"]]
+
+    lc = tmp_path / "lc.toml"
+    lc.write_text('name = "lc"\nbase = "linuxcnc"\n[limits]\nX = [-300, 300]\n'
+                  'Y = [-300, 300]\nZ = [-300, 300]\n')
+    ls1 = "o<s> sub\nG0 X250\no<s> endsub\nG21 G90\nG0 X-250 Y0\nG92 X-400\no<s> call\nM2\n"
+    got = found("ls1.ngc", ls1)
+    assert [f[:2] for f in got] == [(2, "TG601")]
+    assert "X spans 650 (from -250 to 400)" in got[0][2]
+    assert "o<s> runs as called by o<s> call of line 7" in got[0][2]
+    # inline, the same span (as before)
+    inline = found("ls2.ngc", "G21 G90\nG0 X-250 Y0\nG92 X-400\nG0 X250\nM2\n")
+    assert [f[:2] for f in inline] == [(4, "TG601")]
+    # under G20 in a file that starts G21 (rs274: USE_LENGTH_UNITS inches, X15): 381 mm
+    g20 = "o<s> sub\nG0 X15\no<s> endsub\nG21 G90\nG0 X-250 Y0\nG20\no<s> call\nM2\n"
+    got = found("g20.ngc", g20)
+    assert [f[:2] for f in got] == [(2, "TG601")]
+    assert "X spans 631 (from -250 to 381)" in got[0][2] and "in inches" in got[0][2]
+    # X10 in is 254 mm: -250 to 254, inside
+    assert found("g20b.ngc", g20.replace("X15", "X10")) == []
+    # no shift at the call, or never called: as before (500 mm, inside)
+    assert found("plain.ngc", ls1.replace("G92 X-400\n", "")) == []
+    assert found("never.ngc", ls1.replace("o<s> call\n", "")) == []
+    # calls under two shifts: not judged, one note at the definition (and the G92 after
+    # the first call, where the tool stands is not known, starts the spans again: noted)
+    two = ls1.replace("o<s> call\n", "o<s> call\nG92 X-250\no<s> call\n")
+    notes = found("two.ngc", two)
+    assert sorted(f[:2] for f in notes) == [(1, "TG140"), (8, "TG140")]
+    assert [f for f in notes if f[0] == 1][0][2].startswith("o<s> is a subprogram written")
+    # a body that sets its own G91: no absolute position of its own to judge
+    own = ls1.replace("G0 X250\n", "G91 G0 X100\nG90\n")
+    assert found("own.ngc", own) == []
+
+
+def test_a_call_whose_number_is_not_known_leaves_the_programs_it_may_run_unjudged(
+        tmp_path: Path) -> None:
+    """Review 41, finding 5: `M98 P#1` may run O2000 in the caller's inches (X -35..35 in,
+    1778 mm past the 1524 mm): it was read in the reset mm, inside. Not judged now, one TG140
+    naming the call; with #1 known (`#1=2000`) it is judged as `M98 P2000` is."""
+    def found(program: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / "p.nc"
+        path.write_text(program)
+        out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG6,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())
+                if "(subprogram call)" not in f["message"]]
+
+    pv4 = "%\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P#1\nM30\nO2000\nG0 X35.\nM99\n%\n"
+    got = found(pv4)
+    assert [f[:2] for f in got] == [(5, "TG140")]
+    assert got[0][2].startswith("M98 P#1 calls a program whose number is not known")
+    g65 = found(pv4.replace("M98 P#1", "G65 P#1 A1."))
+    assert [f[:2] for f in g65] == [(5, "TG140")]
+    known = found(pv4.replace("M98 P#1", "#1=2000\nM98 P#1"))
+    assert [f[:2] for f in known] == [(9, "TG601")]
+    assert "X spans 1778 (from -889 to 889)" in known[0][2]
+    assert [f[:2] for f in found(pv4.replace("P#1", "P2000"))] == [(8, "TG601")]
+
 def test_a_units_change_keeps_where_the_machine_is():
     """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
     at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the
