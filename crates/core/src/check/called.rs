@@ -380,6 +380,23 @@ impl Checker {
         self.report(Rule::NotFollowed, message, line, column);
     }
 
+    /// The span of `AXES[i]` starts again after the calls kept so far: their shift is in
+    /// the coordinates of the span before, not of the one the body would be judged in at
+    /// the file's end. A subprogram with positions on that axis is left with its calls'
+    /// shift not known (one TG140 at the end, its feed still judged).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_restarted(&mut self, i: usize) {
+        for p in &mut self.pending {
+            if p.spans[i].is_none() {
+                continue;
+            }
+            if let Some(Ok((call, _, _))) = p.calls.as_mut() {
+                call.shift = None;
+            }
+        }
+    }
+
     /// The file's end: each subprogram read before its calls is judged in their units and
     /// under their shift (all alike), left unjudged with a TG140 (they disagree, or are not
     /// known), or read as before where no call names it.
@@ -652,6 +669,14 @@ mod tests {
         // with no shift at the call: 500, inside (as before)
         let plain = ls1.replace("G92 X-400\n", "");
         assert_eq!(fired(lcnc(), &plain, Rule::TravelExceeded), []);
+        // a G92.1 after the call starts the span again (its amount not known here): the
+        // call's shift is in the coordinates of the span before, so the body is not judged
+        // in the new one, noted (rs274: X250 at 400, then G92.1, X0)
+        let ended = ls1.replace("o<s> call\n", "o<s> call\nG92.1\nG0 X0\n");
+        assert_eq!(fired(lcnc(), &ended, Rule::TravelExceeded), []);
+        assert!(findings(lcnc(), &ended, Rule::NotFollowed)
+            .iter()
+            .any(|f| f.line == 1 && f.message.contains("the shift at o<s> call of line 7")));
         // never called: read where it stands, as before (250 and -250: inside)
         let never = ls1.replace("o<s> call\n", "");
         assert_eq!(fired(lcnc(), &never, Rule::TravelExceeded), []);

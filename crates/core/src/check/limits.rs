@@ -1449,6 +1449,10 @@ impl Checker {
         if self.shifts.calls != CallShifts::None {
             self.shifts.calls = CallShifts::Mixed;
         }
+        // (and a subprogram's written before its calls, judged at the file's end)
+        if !self.pending.is_empty() {
+            self.early_restarted(i);
+        }
         let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
         self.spans[i] = None;
         self.shifts.total[i] = 0.0;
