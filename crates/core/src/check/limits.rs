@@ -1395,6 +1395,9 @@ impl Checker {
         let value = value.to_f64() * factor;
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let mill = self.config.family == Family::MacroB && !fanuc_lathe;
+        // (a program read apart that sets its own shift: its positions after it do not add
+        // to its call's, G52 replacing the local shift; read as before, review 42, finding 7)
+        self.early_merge();
         match code {
             52 if mill => {
                 // (under G91 the two readings, the zero at X_ or X_ from the local zero before,
@@ -1448,10 +1451,6 @@ impl Checker {
         // (a call's shift kept for the end is in the coordinates before it)
         if self.shifts.calls != CallShifts::None {
             self.shifts.calls = CallShifts::Mixed;
-        }
-        // (and a subprogram's written before its calls, judged at the file's end)
-        if !self.pending.is_empty() {
-            self.early_restarted(i);
         }
         let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
         self.spans[i] = None;
@@ -1906,8 +1905,7 @@ impl Checker {
             // (a program read apart keeps its largest feed: a few blocks of it, where it grows)
             let value = feed.to_f64() * factor;
             if self.early_feed_max() < value {
-                let column = col(b'F');
-                self.early_feed(feed, value, line, column);
+                self.early_feed(feed, value, line);
             }
         }
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {

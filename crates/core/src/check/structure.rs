@@ -360,7 +360,7 @@ impl Checker {
             }
             _ => number,
         };
-        if !self.pending.is_empty() {
+        if !self.pending.is_empty() || self.given_up.is_some() {
             let token = b
                 .words
                 .iter()
@@ -373,7 +373,12 @@ impl Checker {
             } else {
                 format!("G65 {token}")
             };
-            self.early_call(super::called::Key::Number(number), call, b.line);
+            let column = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'P' && w.index.is_empty())
+                .map_or(1, |w| w.column);
+            self.early_call(super::called::Key::Number(number), call, (b.line, column));
         }
         let s = &self.machine.state;
         let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
@@ -870,7 +875,7 @@ impl Checker {
             }
             _ => {}
         }
-        if self.pending.is_empty() {
+        if self.pending.is_empty() && self.given_up.is_none() {
             return;
         }
         for &(column, kind, text) in b.statements {
@@ -883,7 +888,7 @@ impl Checker {
             let token = format!("{} call", String::from_utf8_lossy(&label));
             if label.len() < 2 || label[1] != b'<' && !label[1..].iter().all(u8::is_ascii_digit) {
                 self.call_unknown(token, b.line, column);
-            } else if self.early_call(super::called::Key::Label(label), token, b.line) {
+            } else if self.early_call(super::called::Key::Label(label), token, (b.line, column)) {
                 // (the shift at the call kept, as a FANUC's M98's is: the end that follows
                 // does not start the spans the body is judged in again, Checker::shift_end)
                 self.call_shifts();
