@@ -6,19 +6,22 @@
 //!
 //! A program read from the reset state (the file's first with an O number, or one no call
 //! before it names, [`Checker::called_units`]) is read as before, with its own positions kept
-//! apart from the spans of the programs before it ([`Early`]); its limits' findings (TG601,
-//! TG602, TG605) are held from the first, and every finding after them with them. Where it ends as a main program does (M02/M30, the file's end, the next program),
-//! or writes a units code, or a shift or a mirror restarts a span in it, the two are put
-//! together and the held findings said, in the order they came: the same reading as before,
-//! byte for byte. Where it returns (M99) having written no units code, it is a subprogram
-//! whose lengths are its caller's: its span contributions and its largest feed are kept
-//! ([`Pending`]) and its limits' findings taken out, and the spans go back to those before
-//! it. At the file's end ([`Checker::early_finish`]), a subprogram whose calls agree on the
-//! units and the shift is judged in them (its span from its least to its most position,
-//! scaled and shifted; its largest feed); calls that disagree, or one in units or under a
-//! shift not known (a call inside another program read apart that turns out a subprogram),
-//! leave it unjudged with one TG140; a program no call names is read as before (its findings
-//! said, its span added), at the end of the file.
+//! apart from the spans of the programs before it ([`Early`]); its findings are held from its
+//! first limit finding (TG601, TG602, TG605), at most [`HOLD_MAX`] of them. Where it ends as
+//! a main program does (M02/M30, the file's end, the next program), writes a units code or a
+//! shift of its own, a shift not followed or a mirror restarts a span in it, or its hold is
+//! full, the two are put together and the held findings said, in the order they came: the
+//! same reading as before, byte for byte. Where it returns (M99) having written no units code,
+//! it is a subprogram whose lengths are its caller's: its span contributions, its largest
+//! feed and its machine positions' findings are kept ([`Pending`]) and its limits' findings
+//! taken out, and the spans go back to those before it. At each call made in known units
+//! and under a known shift ([`Checker::early_call`]) it is judged there, with the spans as
+//! they stand (its span from its least to its most position, scaled and shifted; its largest
+//! feed; its G53 positions where the units are those it was read in), said at the call's line
+//! naming the body's (review 42, findings 0-2); a call inside another program read apart adds
+//! to that one's spans, as inline (finding 8). A call in units or under a shift not known
+//! leaves it with one TG140 at the file's end; a program no call names is read as before (its
+//! findings said, its span added), at the end of the file.
 
 use super::{Checker, Finding, Span};
 use crate::decimal::Dec;
