@@ -98,6 +98,8 @@ pub(super) struct Pending {
     /// first's line); `Some(Err(line))` one of them (its line) made where the units or the
     /// shift are not known.
     calls: Option<Result<usize, usize>>,
+    /// Its largest feed said above the maximum at a call: not said again at the next.
+    feed_said: bool,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -210,6 +212,7 @@ impl Checker {
             removed,
             positions,
             calls: None,
+            feed_said: false,
         });
     }
 
@@ -512,7 +515,8 @@ impl Checker {
             // called)
             self.early_feed(feed.word, value, line);
         }
-        if value > top.to_f64() + 1e-9 {
+        if value > top.to_f64() + 1e-9 && !p.feed_said {
+            p.feed_said = true;
             let under = under(feed.line);
             self.feed_over(feed.word, call.feed_factor, feed.mode, at, &under);
         }
@@ -577,6 +581,9 @@ mod tests {
         // its feed too: F500. is 12700 mm/min under the G20 call
         let fast = "%\nO0002\nG1 X1. F500.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n";
         assert_eq!(limits(metric.clone(), fast), [(8, 5)]);
+        // called twice: said at the first call only
+        let twice = fast.replace("M98 P2\n", "M98 P2\nM98 P2\n");
+        assert_eq!(limits(metric.clone(), &twice), [(8, 5)]);
         assert_eq!(limits(metric, &fast.replace("G20", "G21")), []);
     }
 
