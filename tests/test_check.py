@@ -297,16 +297,17 @@ def test_a_subprogram_before_its_call_runs_in_the_call_s_units_and_shift(
 
     sf = "%\nO0002\nG0 X35.\nM99\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P2\nM30\n%\n"
     got = found(sf, "fanuc-mill")
-    assert [f[:2] for f in got] == [(3, "TG601")]
+    # said at the call, naming the body's line (review 42, findings 0 and 2)
+    assert [f[:2] for f in got] == [(8, "TG601")]
     assert "X spans 1778 (from -889 to 889)" in got[0][2]
-    assert "O0002 runs in inches as called by M98 P2 of line 8" in got[0][2]
+    assert "O0002 runs in inches as called by M98 P2 of line 8, its position of line 3" in got[0][2]
     # the same with the subprogram after M30: as before
     after = "%\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P2\nM30\nO0002\nG0 X35.\nM99\n%\n"
     assert [f[:2] for f in found(after, "fanuc-mill")] == [(8, "TG601")]
     # under the call's G52 X30.: X35. is 65 in from the work zero
     shifted = sf.replace("M98 P2\n", "G52 X30.\nM98 P2\nG52 X0\n").replace("X-35.", "X-25.")
     got = found(shifted, "fanuc-mill")
-    assert [f[:2] for f in got] == [(3, "TG601")]
+    assert [f[:2] for f in got] == [(9, "TG601")]
     assert "X spans 2286 (from -635 to 1651)" in got[0][2]
     # a G21 caller on the Haas (reset in inches): X35. and X-30. are mm, inside the travel
     # (read in the reset inches, 65 in: a false TG601)
@@ -314,9 +315,9 @@ def test_a_subprogram_before_its_call_runs_in_the_call_s_units_and_shift(
     assert found(mm, "haas-mill") == []
     # no call names it: a program of its own, read in the reset inches as before
     assert [f[:2] for f in found(mm.replace("M98 P2\n", ""), "haas-mill")] == [(4, "TG601")]
-    # calls in both units: not judged, one note at its O
+    # calls in both units: each judged where it is made (review 42, finding 9), the G20's
     both = sf.replace("M98 P2\nM30", "M98 P2\nG21\nM98 P2\nM30")
-    assert [f[:2] for f in found(both, "fanuc-mill")] == [(2, "TG140")]
+    assert [f[:2] for f in found(both, "fanuc-mill")] == [(8, "TG601")]
     # its own G21: read as before (900 mm each way, past the 1524 mm)
     own = ("%\nO0002\nG21\nG0 X900.\nG0 X-900.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\n"
            "M98 P2\nM30\n%\n")
@@ -421,6 +422,135 @@ def test_issue_32_a_lathe_s_thread_and_single_cycles_reach_the_spans(tmp_path: P
         assert spans("fanuc-lathe", *inside) == [], cycle
         assert spans("haas-lathe", "G20 G18", "G0 X2. Z0.1", f"{cycle} U-0.5 W-35. F0.01") \
             == [(5, 11)], cycle
+
+
+
+def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(
+        tmp_path: Path) -> None:
+    """Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is
+    called, in the units and under the G92 in force there (`rs274 -g ls1.ngc`: X-250,
+    SET_G92_OFFSET(150), X250 at 400, 650 mm of a 600 mm travel). It was read at its place,
+    under no shift: no TG601."""
+    def found(name: str, program: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", str(lc), "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())
+                if "reads the program in file order" not in f["message"]]
+
+    lc = tmp_path / "lc.toml"
+    lc.write_text('name = "lc"\nbase = "linuxcnc"\n[limits]\nX = [-300, 300]\n'
+                  'Y = [-300, 300]\nZ = [-300, 300]\n')
+    ls1 = "o<s> sub\nG0 X250\no<s> endsub\nG21 G90\nG0 X-250 Y0\nG92 X-400\no<s> call\nM2\n"
+    got = found("ls1.ngc", ls1)
+    assert [f[:2] for f in got] == [(7, "TG601")]
+    assert "X spans 650 (from -250 to 400)" in got[0][2]
+    assert "o<s> runs as called by o<s> call of line 7" in got[0][2]
+    # inline, the same span (as before)
+    inline = found("ls2.ngc", "G21 G90\nG0 X-250 Y0\nG92 X-400\nG0 X250\nM2\n")
+    assert [f[:2] for f in inline] == [(4, "TG601")]
+    # under G20 in a file that starts G21 (rs274: USE_LENGTH_UNITS inches, X15): 381 mm
+    g20 = "o<s> sub\nG0 X15\no<s> endsub\nG21 G90\nG0 X-250 Y0\nG20\no<s> call\nM2\n"
+    got = found("g20.ngc", g20)
+    assert [f[:2] for f in got] == [(7, "TG601")]
+    assert "X spans 631 (from -250 to 381)" in got[0][2] and "in inches" in got[0][2]
+    # X10 in is 254 mm: -250 to 254, inside
+    assert found("g20b.ngc", g20.replace("X15", "X10")) == []
+    # no shift at the call, or never called: as before (500 mm, inside)
+    assert found("plain.ngc", ls1.replace("G92 X-400\n", "")) == []
+    assert found("never.ngc", ls1.replace("o<s> call\n", "")) == []
+    # calls under two shifts: each judged where it is made (review 42, finding 9; rs274
+    # runs the body at 400, then at 250), and the G92 after the first call, where the tool
+    # stands is not known, starts the spans again: noted
+    two = ls1.replace("o<s> call\n", "o<s> call\nG92 X-250\no<s> call\n")
+    notes = found("two.ngc", two)
+    assert [f[:2] for f in notes] == [(7, "TG601"), (8, "TG140")]
+    # a body that sets its own G91: no absolute position of its own to judge
+    own = ls1.replace("G0 X250\n", "G91 G0 X100\nG90\n")
+    assert found("own.ngc", own) == []
+
+
+def test_a_call_whose_number_is_not_known_leaves_the_programs_it_may_run_unjudged(
+        tmp_path: Path) -> None:
+    """Review 41, finding 5: `M98 P#1` may run O2000 in the caller's inches (X -35..35 in,
+    1778 mm past the 1524 mm): it was read in the reset mm, inside. Not judged now, one TG140
+    naming the call; with #1 known (`#1=2000`) it is judged as `M98 P2000` is."""
+    def found(program: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / "p.nc"
+        path.write_text(program)
+        out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG6,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())
+                if "(subprogram call)" not in f["message"]]
+
+    pv4 = "%\nO1000\nG20 G90 G54\nG0 X-35. Y0\nM98 P#1\nM30\nO2000\nG0 X35.\nM99\n%\n"
+    got = found(pv4)
+    assert [f[:2] for f in got] == [(5, "TG140")]
+    assert got[0][2].startswith("M98 P#1 calls a program whose number is not known")
+    g65 = found(pv4.replace("M98 P#1", "G65 P#1 A1."))
+    assert [f[:2] for f in g65] == [(5, "TG140")]
+    known = found(pv4.replace("M98 P#1", "#1=2000\nM98 P#1"))
+    assert [f[:2] for f in known] == [(9, "TG601")]
+    assert "X spans 1778 (from -889 to 889)" in known[0][2]
+    assert [f[:2] for f in found(pv4.replace("P#1", "P2000"))] == [(8, "TG601")]
+
+def test_review_42_a_subprogram_before_its_call_keeps_every_tg601(tmp_path: Path) -> None:
+    """Review 42, findings 0, 1, 7, 8: a body written before its call is judged at the call,
+    with the spans as they stand there; its G53 position said where the call's units are
+    those it was read in; its own G52 replaces the call's; a nested call's extent joins its
+    caller's. Each gave a TG601 before sub41 and none with it. Finding 2: in line order."""
+    def found(program: str) -> list[tuple[int, str, str]]:
+        path = tmp_path / "p.nc"
+        path.write_text(program)
+        out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG6,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["rule"], f["message"]) for f in map(json.loads, out.splitlines())]
+
+    def tg601(program: str) -> list[tuple[int, str]]:
+        got = found(program)
+        lines = [f[0] for f in got]
+        assert lines == sorted(lines), got
+        return [(f[0], f[2].split(",")[0]) for f in got if f[1] == "TG601"]
+
+    rs1 = ("%\nO0002\nG0 X900.\nM99\nO1000\nG21 G90 G54\nG0 X-700. Y0\nM98 P2\nG92 X0\n"
+           "G0 X10.\nM30\n%\n")
+    assert tg601(rs1) == [(8, "X spans 1600 (from -700 to 900)")]
+    rs3 = ("%\nO0002\nG0 X900.\nM99\nO1000\nG21 G90 G54\nG0 X-700. Y0\nM98 P2\nM30\n"
+           "O0003\nG52 X100.\nG0 X0\nM30\n%\n")
+    assert tg601(rs3) == [(8, "X spans 1600 (from -700 to 900)")]
+    g53 = "%\nO0002\nG53 G0 X-900.\nM99\nO1000\nG21 G90 G54\nM98 P2\nM30\n%\n"
+    assert tg601(g53) == [(7, "X goes to -900 in machine coordinates (G53)")]
+    g52own = ("%\nO0002\nG52 X0\nG0 X750.\nM99\nO1000\nG21 G90 G54\nG52 X-100.\n"
+              "G0 X-700. Y0\nM98 P2\nG52 X0\nM30\n%\n")
+    assert [f[1] for f in tg601(g52own)] == ["X spans 1550 (from -800 to 750)"]
+    nest = ("%\nO0002\nG0 X900.\nM99\nO0003\nM98 P2\nM99\nO1000\nG21 G90 G54\n"
+            "G0 X-700. Y0\nM98 P3\nM30\n%\n")
+    assert tg601(nest) == [(11, "X spans 1600 (from -700 to 900)")]
+    said = [f[2] for f in found(nest) if f[1] == "TG601"]
+    assert "O0003 runs as called by M98 P3 of line 11, its position of line 6" in said[0]
+
+
+def test_review_42_the_hold_of_a_program_read_apart_is_bounded(tmp_path: Path) -> None:
+    """Review 42, finding 3: a program with no units code whose first findings are TG601
+    held every later finding to its end (3.6 GB on a 75 MB file). Past 1024 held findings it
+    is read as before, its findings streamed in line order; a later call of it is noted."""
+    lines = ["%", "O0002", "G90 G54", "G0 X-700. Y0", "G0 X900."]
+    lines += ["G1 X1. F20000.", "S99999 M3"] * 2000
+    lines += ["M99", "O1000", "G21 G90 G54", "M98 P2", "M30", "%"]
+    path = tmp_path / "big.nc"
+    path.write_text("\n".join(lines) + "\n")
+    out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG6,TG140",
+              "--format", "jsonl").stdout
+    got = [json.loads(line) for line in out.splitlines()]
+    at = [f["line"] for f in got]
+    assert at == sorted(at)
+    assert (5, "TG601") in [(f["line"], f["rule"]) for f in got]
+    assert len([f for f in got if f["rule"] == "TG605"]) == 2000
+    call = len(lines) - 2
+    assert [f["message"][:45] for f in got if f["line"] == call and f["rule"] == "TG140"
+            and f["message"].startswith("M98 P2 calls")] == [
+        "M98 P2 calls O0002, read from the reset state"]
 
 
 def test_a_units_change_keeps_where_the_machine_is():

@@ -1391,6 +1391,9 @@ impl Checker {
         let value = value.to_f64() * factor;
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let mill = self.config.family == Family::MacroB && !fanuc_lathe;
+        // (a program read apart that sets its own shift: its positions after it do not add
+        // to its call's, G52 replacing the local shift; read as before, review 42, finding 7)
+        self.early_merge();
         match code {
             52 if mill => {
                 // (under G91 the two readings, the zero at X_ or X_ from the local zero before,
@@ -1760,6 +1763,9 @@ impl Checker {
             if (places & self.travel.places() == 0 && self.frames.map.is_none())
                 || self.units_unknown
             {
+                if self.units_unknown && places & self.travel.places() != 0 {
+                    self.unknown_call_note();
+                }
                 break 'axes;
             }
             let factor = self.to_profile_units(false);
@@ -1913,13 +1919,15 @@ impl Checker {
         // by the same rule, ModalSettings::s_limit
         let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
         let factor = self.to_profile_units(true);
+        if self.units_unknown && f.is_some() && self.config.feed_max.is_some() {
+            self.unknown_call_note();
+        }
         let f = f.filter(|_| !self.units_unknown);
         if let Some(feed) = f.filter(|_| self.early_on) {
             // (a program read apart keeps its largest feed: a few blocks of it, where it grows)
             let value = feed.to_f64() * factor;
             if self.early_feed_max() < value {
-                let column = col(b'F');
-                self.early_feed(feed, value, line, column);
+                self.early_feed(feed, value, line);
             }
         }
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {

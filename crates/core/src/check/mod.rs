@@ -1076,8 +1076,14 @@ pub struct Checker {
     early_on: bool,
     /// Where the findings held for it begin in `found` (none drained from there).
     hold_from: Option<usize>,
+    /// A program read apart whose hold passed [`called::HOLD_MAX`] (read as before from
+    /// there): its number, its name and its O word's place, for a TG140 at a later call.
+    given_up: Option<(called::Key, String, (usize, usize))>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
+    /// The first call whose program number is not known (its code, line and column), and
+    /// whether its TG140 was said ([`Checker::call_unknown`]; review 41, finding 5).
+    unknown_call: Option<(String, usize, usize, bool)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -1247,7 +1253,9 @@ impl Checker {
             early: None,
             early_on: false,
             hold_from: None,
+            given_up: None,
             pending: Vec::new(),
+            unknown_call: None,
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
@@ -1294,6 +1302,12 @@ impl Checker {
 
     /// The findings made since the last call.
     pub fn take(&mut self) -> Vec<Finding> {
+        if self
+            .hold_from
+            .is_some_and(|from| self.found.len() - from > called::HOLD_MAX)
+        {
+            self.early_unhold();
+        }
         match self.hold_from {
             // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
@@ -1309,6 +1323,12 @@ impl Checker {
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
     pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
+        if self
+            .hold_from
+            .is_some_and(|from| self.found.len() - from > called::HOLD_MAX)
+        {
+            self.early_unhold();
+        }
         match self.hold_from {
             // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {

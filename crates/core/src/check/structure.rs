@@ -333,6 +333,21 @@ impl Checker {
             .filter(|v| v.is_whole())
             .map(|v| v.trunc())
         else {
+            // (a P the check cannot evaluate, `M98 P#1`: which program runs is not known)
+            if let Some(w) = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'P' && w.index.is_empty())
+            {
+                let code = if self.values.ms.contains(&98) {
+                    "M98"
+                } else if self.values.gs().contains(&66) {
+                    "G66"
+                } else {
+                    "G65"
+                };
+                self.call_unknown(format!("{code} {}", w.token()), b.line, w.column);
+            }
             return;
         };
         // a FANUC whose program numbers have four digits (no 8-digit option: the profile's O
@@ -345,7 +360,7 @@ impl Checker {
             }
             _ => number,
         };
-        if !self.pending.is_empty() {
+        if !self.pending.is_empty() || self.given_up.is_some() {
             let token = b
                 .words
                 .iter()
@@ -358,7 +373,12 @@ impl Checker {
             } else {
                 format!("G65 {token}")
             };
-            self.early_call(number, call, b.line);
+            let column = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'P' && w.index.is_empty())
+                .map_or(1, |w| w.column);
+            self.early_call(super::called::Key::Number(number), call, (b.line, column));
         }
         let s = &self.machine.state;
         let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
@@ -395,9 +415,20 @@ impl Checker {
         // a program no call before it names may be the subprogram of a call after it (a
         // memory backup lists programs by number): read apart until it shows what it is
         // (crate::check::called; review 39, finding 4)
+        // (after a call whose number is not known, any program may be the one it runs: its
+        // units and shift not known, review 41, finding 5)
+        if self.unknown_call.is_some() {
+            self.units_unknown = true;
+            self.machine.state.units_given = false;
+            return;
+        }
         if let Some(n) = number.filter(|n| !self.call_units.contains_key(n)) {
             if self.config.family == Family::MacroB {
-                self.early_begin(n, b.words[0].token(), (b.line, b.words[0].column));
+                self.early_begin(
+                    super::called::Key::Number(n),
+                    b.words[0].token(),
+                    (b.line, b.words[0].column),
+                );
             }
         }
         match number.and_then(|n| self.call_units.get(&n)) {
@@ -430,7 +461,7 @@ impl Checker {
                 Some((n, w.token(), w.column))
             });
         if let Some((n, name, column)) = number {
-            self.early_begin(n, name, (b.line, column));
+            self.early_begin(super::called::Key::Number(n), name, (b.line, column));
         }
     }
 
@@ -677,8 +708,10 @@ impl Checker {
             self.linuxcnc_body_locals(b, statement.as_ref());
             self.definition_after_call(b, statement.as_ref());
             self.definition_feed(statement.as_ref());
+            let was_open = self.open_definition.is_some();
             self.definition_open(b, statement.as_ref());
             self.linuxcnc_body(b, statement.as_ref());
+            self.linuxcnc_called(b, statement.as_ref(), was_open);
             statement
         };
         if statement.is_none()
@@ -815,6 +848,53 @@ impl Checker {
             }
             if self.sub_returns.0 != 0 {
                 self.early_endsub_in_program();
+            }
+        }
+    }
+
+    /// LinuxCNC: a definition of the main program, before its end, read apart from its
+    /// `sub` to its `endsub` and judged in the units and under the shift of its calls
+    /// (crate::check::called; review 41, finding 4); an `o<name> call` keeps them for a
+    /// definition read so, and one whose label is not known (`o[#1] call`) leaves every one
+    /// not known.
+    fn linuxcnc_called(
+        &mut self,
+        b: &BlockView<'_>,
+        statement: Option<&(bool, Vec<u8>)>,
+        was_open: bool,
+    ) {
+        match statement {
+            Some((true, name))
+                if !was_open && self.open_definition.is_some() && !self.main_ended() =>
+            {
+                let column = b.statements.first().map_or(1, |s| s.0);
+                self.definition_begin(name, (b.line, column));
+            }
+            Some((false, _)) if was_open && self.open_definition.is_none() => {
+                self.definition_end();
+            }
+            _ => {}
+        }
+        if self.pending.is_empty() && self.given_up.is_none() {
+            return;
+        }
+        for &(column, kind, text) in b.statements {
+            if kind != Kind::Call
+                || crate::statement::o_keyword(text).as_deref() != Some(b"call".as_slice())
+            {
+                continue;
+            }
+            let label = crate::statement::o_label(text);
+            let token = format!("{} call", String::from_utf8_lossy(&label));
+            if label.len() < 2 || label[1] != b'<' && !label[1..].iter().all(u8::is_ascii_digit) {
+                self.call_unknown(token, b.line, column);
+            } else if self.early_call(super::called::Key::Label(label), token, (b.line, column)) {
+                // (the shift at the call kept, as a FANUC's M98's is: the end that follows
+                // does not start the spans the body is judged in again, Checker::shift_end)
+                self.call_shifts();
+                if self.shifts_on() {
+                    self.shift_call(b);
+                }
             }
         }
     }
