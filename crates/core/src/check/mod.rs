@@ -1300,14 +1300,21 @@ impl Checker {
         self.keep_stats
     }
 
-    /// The findings made since the last call.
-    pub fn take(&mut self) -> Vec<Finding> {
+    /// The findings held for a program read apart, released once they pass
+    /// [`called::HOLD_MAX`] (memory stays flat: crate::check::called): asked by [`Checker::take`]
+    /// and [`Checker::drain`] before they hand the rest over.
+    fn bound_hold(&mut self) {
         if self
             .hold_from
             .is_some_and(|from| self.found.len() - from > called::HOLD_MAX)
         {
             self.early_unhold();
         }
+    }
+
+    /// The findings made since the last call.
+    pub fn take(&mut self) -> Vec<Finding> {
+        self.bound_hold();
         match self.hold_from {
             // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
@@ -1323,12 +1330,7 @@ impl Checker {
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
     pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
-        if self
-            .hold_from
-            .is_some_and(|from| self.found.len() - from > called::HOLD_MAX)
-        {
-            self.early_unhold();
-        }
+        self.bound_hold();
         match self.hold_from {
             // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
