@@ -1286,3 +1286,26 @@ def test_sarif_uris_are_uri_references_that_give_the_file_names_back(tmp_path, m
         else:
             assert not parts.netloc and not uri.startswith("/"), uri
             assert Path(unquote(parts.path)) == relative
+
+
+def test_review_43_a_machine_position_of_a_body_read_before_its_call_in_other_units(
+        tmp_path: Path) -> None:
+    """Review 43, finding A: `G53 G0 X-900.` in O0002, called under G20 from a later O1000,
+    runs at -900 in, beyond the travel as -900 mm already is: said, naming the call (sub43
+    had dropped it, where the check before sub41 said it). Called under G21 on an inch
+    profile, the position may be within the travel: a TG140 says it is not judged."""
+    path = tmp_path / "g53.nc"
+    path.write_text("%\nO0002\nG53 G0 X-900.\nM99\nO1000\nG20 G90 G54\nM98 P2\nM30\n%\n")
+    out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG601,TG140",
+              "--format", "jsonl").stdout
+    found = [json.loads(line) for line in out.splitlines()]
+    errors = [f for f in found if f["rule"] == "TG601"]
+    assert [(f["line"], f["column"]) for f in errors] == [(3, 8)]
+    assert "runs in inches as called by M98 P2 of line 7" in errors[0]["message"]
+    path.write_text("%\nO0002\nG53 G0 X-40.\nM99\nO1000\nG21 G90 G54\nM98 P2\nM30\n%\n")
+    out = run("check", str(path), "-p", "haas-mill", "--select", "TG601,TG140",
+              "--format", "jsonl").stdout
+    found = [json.loads(line) for line in out.splitlines()]
+    assert [f for f in found if f["rule"] == "TG601"] == []
+    assert any(f["rule"] == "TG140" and "machine positions" in f["message"]
+               and f["line"] == 7 for f in found)

@@ -505,6 +505,30 @@ impl Checker {
                 self.early_hold();
                 self.found.push(f);
             }
+        } else if r > 1.0 && !p.positions.is_empty() {
+            // (review 43, finding A: a machine position beyond the travel as read stays beyond
+            // it in the larger units of the call, the travel holding the machine zero: said as
+            // read, naming the call, as before sub41; none was said)
+            for mut f in std::mem::take(&mut p.positions) {
+                f.message = format!(
+                    "{} (the position as written, in the units {} was read in; it runs{units} as \
+                     called by {token} of line {line}, farther out there)",
+                    f.message, p.name
+                );
+                self.early_hold();
+                self.found.push(f);
+            }
+        } else if !p.positions.is_empty() {
+            // (in the smaller units of the call a position beyond the travel as read may be
+            // within it: not judged, said once)
+            p.positions.clear();
+            let message = format!(
+                "{token}: {} runs{units} here, and its machine positions (G53, a work \
+                 offset's), beyond the travel as read in the units it was read in, are not \
+                 judged in these",
+                p.name
+            );
+            self.report(Rule::NotFollowed, message, line, column);
         }
         let (Some(top), Some(feed)) = (self.config.feed_max, p.feed.as_ref()) else {
             return;
