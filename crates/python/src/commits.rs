@@ -277,6 +277,17 @@ pub(crate) fn pending_file(
     }
 }
 
+/// The temporary file's descriptor the caller hands over (one of its own, which nothing else
+/// closes: PendingFile's, or `hand_over`'s duplicate), owned by the File from here on: the
+/// one commit and the batch's commit threads take it alike.
+fn handed_over(fd: RawFd) -> PyResult<File> {
+    if fd < 0 {
+        return Err(PyValueError::new_err("a file descriptor is not negative"));
+    }
+    // SAFETY: a descriptor of the caller's own that nothing else closes (above).
+    Ok(unsafe { File::from_raw_fd(fd) })
+}
+
 /// One file's commit ([`commit`]) on the caller's thread, the GIL released: the data written
 /// to the open file `fd` (handed over: closed here, whatever happens) at `tmp` named `target`
 /// (replacing a file there when `overwrite`; else a name taken is passed over for the next
@@ -291,11 +302,7 @@ pub(crate) fn commit_file(
     overwrite: bool,
     version: bool,
 ) -> PyResult<OsString> {
-    if fd < 0 {
-        return Err(PyValueError::new_err("a file descriptor is not negative"));
-    }
-    // SAFETY: as in `Commits::submit`: a descriptor of the caller's own, closed by this File.
-    let file = unsafe { File::from_raw_fd(fd) };
+    let file = handed_over(fd)?;
     match py.allow_threads(|| commit(file, &tmp, &target, overwrite, version)) {
         Ok(named) => Ok(named.into_os_string()),
         Err(error) => Err(os_error(py, error)),
@@ -383,12 +390,7 @@ impl Commits {
         target: PathBuf,
         overwrite: bool,
     ) -> PyResult<u64> {
-        if fd < 0 {
-            return Err(PyValueError::new_err("a file descriptor is not negative"));
-        }
-        // SAFETY: the caller hands over a descriptor of its own (PendingFile.hand_over's
-        // duplicate), which nothing else closes: owned by this File from here on.
-        let file = unsafe { File::from_raw_fd(fd) };
+        let file = handed_over(fd)?;
         // The GIL released: a thread woken here (or started) may take this thread's core at
         // once, its fsync's work in the kernel, and the other workers must not wait for the
         // GIL meanwhile (held here, it made one hand-over 1.6 ms in a profile).
