@@ -791,6 +791,40 @@ mod tests {
         assert_eq!(limits(metric, own), [(10, 4)]);
     }
 
+    /// LinuxCNC reads a computed o-word label (rs274ngc `read_o`: `o#1 call`, `o[#1] call`,
+    /// `o#<s> call`): a parameter holding a known whole number calls that subroutine, judged
+    /// at the call as `o100 call` is; an expression the checker does not work out leaves the
+    /// call's target not known (one TG140, the body not judged), as `M98 P#1` does.
+    #[test]
+    fn a_linuxcnc_call_by_a_parameter_calls_the_subroutine_of_its_value() {
+        let named = "o100 sub\nG0 X900\no100 endsub\nG21 G90\nG0 X-700 Y0\n#1=100\n\
+                     o100 call\nM2\n";
+        assert_eq!(fired(lcnc(), named, Rule::TravelExceeded), [(7, 1)]);
+        for call in ["o#1 call", "o[#1] call", "O [ #1 ] call", "o#<s> call [2]"] {
+            let text = named
+                .replace("#1=100", "#1=100\n#<s>=100")
+                .replace("o100 call", call);
+            assert_eq!(
+                fired(lcnc(), &text, Rule::TravelExceeded),
+                [(8, 1)],
+                "{call}"
+            );
+        }
+        for call in ["o[#1+0] call", "o#2 call"] {
+            let text = named.replace("o100 call", call);
+            assert_eq!(fired(lcnc(), &text, Rule::TravelExceeded), [], "{call}");
+            let notes: Vec<_> = findings(lcnc(), &text, Rule::NotFollowed)
+                .into_iter()
+                .filter(|f| {
+                    f.message
+                        .contains("calls a program whose number is not known")
+                })
+                .map(|f| (f.line, f.column))
+                .collect();
+            assert_eq!(notes, [(7, 1)], "{call}");
+        }
+    }
+
     /// Findings held for a program read apart are said in the order they came, whether
     /// they are taken after each line or at the end: a main program's report is the same.
     #[test]
