@@ -8,7 +8,10 @@ folder is fsync'd so the name survives a power cut. A target that is no regular 
 regular file where the device was (as root, /dev/null itself). The temporary file is created
 with mode 0666 and the process's umask, as any file the user creates (a program is for sharing
 with the DNC service account); the umask is never changed, so threads writing at the same time
-are safe.
+are safe. One that replaces a regular file (``overwrite``, ``--force``) takes that file's
+permission bits and, where the system allows it, its owner and group, before its fsync (as
+``install -p`` does; review 42, finding 5); a symbolic link there is replaced, not followed,
+and the new file is made as a new one is.
 
 The temporary file's making, its commit (the fsync, the rename or link, the file removed if a
 step fails) and its removal are the core's (``formats._core``, crates/python/src/commits.rs),
