@@ -627,13 +627,13 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         raise state.pending
 
 
-def file_sizes(paths: Iterable[str]) -> list[int]:
-    """Each file's size in bytes (0 for one that cannot be read: it is reported at its turn),
-    the work :func:`first` weighs."""
+def file_sizes(paths: Iterable[str | OSError]) -> list[int]:
+    """Each file's size in bytes (0 for one that cannot be read, or an ``OSError`` for one
+    refused unread: it is reported at its turn), the work :func:`first` weighs."""
     sizes = []
     for path in paths:
         try:
-            sizes.append(os.stat(path).st_size)
+            sizes.append(os.stat(path).st_size if isinstance(path, str) else 0)
         except OSError:
             sizes.append(0)
     return sizes
