@@ -26,8 +26,10 @@ nothing here may wait for room, which only the main thread makes). An ``Exceptio
 function is raised at its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core
 hands a slice over or ends a file) and SIGTERM's exit leave at once, the threads stopped
 (docs/benchmarks.md, "the main thread as a worker") -- raised in the main thread only where
-it waits, does its own item or runs the caller's code, else at its next such point, never
-inside the map's lock and condition code (:func:`_signalled`; review 39, finding 7).
+it waits, does its own item, runs the caller's code or joins the stopped threads (a second
+^C there ends the command, the threads left: review 42, finding 6), else at its next such
+point, never inside the map's lock and condition code (:func:`_signalled`; review 39,
+finding 7).
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
@@ -172,11 +174,11 @@ def _signalled(state: _Map, signum: int) -> None:
     threads run: ``KeyboardInterrupt``, or an exit with 128 + the signal's number, through the
     ``finally`` clause that stops the threads -- raised at once where the main thread is at a
     point where an exception is safe (``state.safe``: waiting for a notify, doing its own
-    item, or running the caller's code), else held (``state.pending``) and raised at its next
-    such point, soon after. Raised anywhere, it could land between a lock's acquire and the
-    ``with`` that releases it, or between a waiter taken off a condition's list and its
-    release, and the threads' join then waited for ever (1 in 15 interrupted `convert -j 2`
-    batches hung so; review 39, finding 7)."""
+    item, running the caller's code, or joining the threads once they are stopped), else
+    held (``state.pending``) and raised at its next such point, soon after. Raised anywhere,
+    it could land between a lock's acquire and the ``with`` that releases it, or between a
+    waiter taken off a condition's list and its release, and the threads' join then waited
+    for ever (1 in 15 interrupted `convert -j 2` batches hung so; review 39, finding 7)."""
     error = KeyboardInterrupt() if signum == _SIGINT else SystemExit(128 + signum)
     if state.safe:
         state.safe = False  # (the code that handles it is not a safe point)
@@ -618,22 +620,35 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         # stopped or done: a thread sending stops at once, one in the core at its chunk's end
         state.safe = False
         state.stop()
-        for lock in started:
-            lock.acquire()  # the thread's join
-        state.close()
-        for signum, before in reversed(handlers):
-            _signal.signal(signum, before)
+        joined = False
+        try:
+            # The join is a safe point: a signal that lands here (the second ^C, SIGTERM) is
+            # raised at once and the threads, stopped, daemon threads, are left to the
+            # process's end. Held, it had no later point to be raised at: a thread that never
+            # came back from the core (an input that never ends) made the command deaf to
+            # every ^C (review 42, finding 6). (One held before the join is raised after it,
+            # below, as before.)
+            state.safe = True
+            for lock in started:
+                lock.acquire()  # the thread's join
+            joined = True
+        finally:
+            state.safe = False
+            if joined:  # (a thread left running may still write its spill file)
+                state.close()
+            for signum, before in reversed(handlers):
+                _signal.signal(signum, before)
     if state.pending is not None and done:  # (a signal held to the end: raised now)
         raise state.pending
 
 
-def file_sizes(paths: Iterable[str]) -> list[int]:
-    """Each file's size in bytes (0 for one that cannot be read: it is reported at its turn),
-    the work :func:`first` weighs."""
+def file_sizes(paths: Iterable[str | OSError]) -> list[int]:
+    """Each file's size in bytes (0 for one that cannot be read, or an ``OSError`` for one
+    refused unread: it is reported at its turn), the work :func:`first` weighs."""
     sizes = []
     for path in paths:
         try:
-            sizes.append(os.stat(path).st_size)
+            sizes.append(os.stat(path).st_size if isinstance(path, str) else 0)
         except OSError:
             sizes.append(0)
     return sizes

@@ -81,6 +81,62 @@ def test_the_mode_follows_the_umask_without_changing_it(tmp_path: Path) -> None:
         os.umask(old)
 
 
+def test_a_replaced_file_keeps_its_mode_owner_and_group(tmp_path: Path) -> None:
+    """--force onto a 0640 program made it 0644 and the runner's (review 42, finding 5): the
+    file that replaces a regular file takes its permission bits and, where the system allows
+    it (root here, or the group of a member), its owner and group -- one commit's and a
+    batch's alike; a new file next to it still follows the umask."""
+    from formats import _core
+
+    old = os.umask(0o022)
+    try:
+        for batch in (False, True):
+            target = tmp_path / f"O{int(batch)}.nc"
+            target.write_bytes(b"old\n")
+            target.chmod(0o640)
+            owner = (65534, 65534) if os.geteuid() == 0 else (os.getuid(), os.getgid())
+            if os.geteuid() == 0:
+                os.chown(target, *owner)
+            pending = PendingFile(tmp_path, target.name)
+            pending.write(b"N1 X1.\n")
+            if batch:
+                commits = _core.Commits(1)
+                commits.wait(commits.submit(pending.hand_over(), pending.tmp, str(target),
+                                            True))
+                commits.close()
+            else:
+                pending.commit(target, overwrite=True)
+            after = target.stat()
+            assert target.read_bytes() == b"N1 X1.\n"
+            assert oct(after.st_mode & 0o7777) == "0o640"
+            assert (after.st_uid, after.st_gid) == owner
+        new = write_atomic(tmp_path / "new.nc", b"N1\n", overwrite=True)
+        assert oct(new.stat().st_mode & 0o777) == "0o644"
+    finally:
+        os.umask(old)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["O0.nc", "O1.nc", "new.nc"]
+
+
+def test_a_symbolic_link_replaced_by_force_is_replaced_as_before(tmp_path: Path) -> None:
+    """A symbolic link where the output goes is not followed by the commit: the rename puts the
+    new file in the link's place (the file it led to untouched), made as a new file is (0666
+    and the umask), not with the mode of the file the link led to. (A FIFO or a device there
+    is written into: test_a_fifo_is_written_into_never_replaced.)"""
+    led_to = tmp_path / "kept.nc"
+    led_to.write_bytes(b"kept\n")
+    led_to.chmod(0o600)
+    link = tmp_path / "out.nc"
+    link.symlink_to(led_to.name)
+    old = os.umask(0o022)
+    try:
+        write_atomic(link, b"N1\n", overwrite=True)
+    finally:
+        os.umask(old)
+    assert not link.is_symlink() and link.read_bytes() == b"N1\n"
+    assert oct(link.stat().st_mode & 0o777) == "0o644"
+    assert led_to.read_bytes() == b"kept\n" and oct(led_to.stat().st_mode & 0o777) == "0o600"
+
+
 def test_a_missing_folder_is_an_output_error(tmp_path: Path) -> None:
     with pytest.raises(OutputError) as info:
         write_atomic(tmp_path / "nowhere" / "p.nc", b"N1\n")

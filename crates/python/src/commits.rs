@@ -14,7 +14,9 @@
 //!
 //! The steps of one commit ([`commit`]), the same for one file and for a batch:
 //!
-//! 1. the temporary file's data fsync'd (its descriptor, handed over: closed after);
+//! 1. with `--force` and a regular file there, its owner, group and permission bits given
+//!    to the temporary file ([`keep_access`]); the temporary file's data fsync'd (its
+//!    descriptor, handed over: closed after);
 //! 2. its name given: a rename over the target when it may be replaced (`--force`), else a
 //!    hard link that fails if the name is taken (a file that appeared meanwhile is never
 //!    replaced) -- or, where a new version name is wanted, the first of `NAME`, `STEM.1.EXT`,
@@ -230,7 +232,12 @@ fn commit(
     overwrite: bool,
     version: bool,
 ) -> io::Result<PathBuf> {
-    let synced = file.sync_all(); // fsync(2)
+    let synced = if overwrite {
+        keep_access(&file, target)
+    } else {
+        Ok(())
+    }
+    .and_then(|()| file.sync_all()); // fsync(2)
     drop(file);
     let named = synced.and_then(|()| {
         if overwrite {
@@ -255,6 +262,35 @@ fn commit(
     }
     forget(tmp);
     named
+}
+
+/// A replaced file's access given to the file that replaces it (`install -p`, an editor's
+/// save): where `target` is a regular file (not followed: a symbolic link there is replaced by
+/// the new file, as before, and a device or a FIFO never reaches a commit), the new file takes
+/// its owner and group where the system allows it (`fchown`: as root; else the group alone,
+/// where the user is one of its members; a refusal (EPERM) leaves the process's own) and then
+/// its permission bits (`fchmod`, after the `fchown` that may clear set-user-ID bits; only
+/// the 0777 bits: a set-user-ID or sticky bit is not carried over). Without it `--force`
+/// made a 0640 program 0644 and the runner's (review 42, finding 5). A target that is not
+/// there (gone meanwhile), or not a regular file, leaves the new file as it was made (0666
+/// and the umask). A failing `fchmod` fails the commit: the new file is never left wider
+/// than the one it replaces.
+fn keep_access(file: &File, target: &Path) -> io::Result<()> {
+    use std::os::unix::fs::{MetadataExt, PermissionsExt};
+
+    let old = match fs::symlink_metadata(target) {
+        Ok(old) if old.file_type().is_file() => old,
+        _ => return Ok(()),
+    };
+    let made = file.metadata()?;
+    if (made.uid(), made.gid()) != (old.uid(), old.gid()) {
+        let owned = std::os::unix::fs::fchown(file, Some(old.uid()), Some(old.gid()));
+        if owned.is_err() && made.gid() != old.gid() {
+            // (not root: the owner stays the user's; the group where the user is a member)
+            let _ = std::os::unix::fs::fchown(file, None, Some(old.gid()));
+        }
+    }
+    file.set_permissions(fs::Permissions::from_mode(old.mode() & 0o777))
 }
 
 /// A commit of the pool's.
