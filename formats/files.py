@@ -2,7 +2,8 @@
 
 :class:`PendingFile` is tapegate's one way to write a file: received programs, conversions, tape
 images. The data goes to a hidden temporary file in the target folder, which is fsync'd, given
-its name by a rename (or a link, which never replaces a file that appeared meanwhile), and the
+its name by a rename (or a link, which never replaces a file that appeared meanwhile; on FAT
+and exFAT, which have no links, a rename that never replaces one), and the
 folder is fsync'd so the name survives a power cut. A target that is no regular file (`-o
 /dev/null`, a FIFO, a terminal) is written into, never renamed over: a rename would put a
 regular file where the device was (as root, /dev/null itself). The temporary file is created

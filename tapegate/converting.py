@@ -58,30 +58,37 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         import tempfile
 
         output = os.path.join(tempfile.mkdtemp(prefix="tapegate-"), "out.nc")
-    if out_dir and not dry_run:  # a file where the folder (or one above it) would be
-        there = _existing(out_dir)
-        if there is not None and not os.path.isdir(there):
-            raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
-    jobs_list = batch_jobs(inputs, output, out_dir, dry_run, names)
-    options = ConvertOptions(
-        target=load_profile(to_profile),
-        source=load_profile(from_profile) if from_profile else None,
-        decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
-        rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
-        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
-        from_units=from_units)
-    from tapegate.launch import resume_collector
-    from tapegate.workers import default_jobs
-
     spill = SpillFolder()  # a long file's notes wait there
-    resume_collector()  # (the entry point's start-up without the collector ends here)
     try:
+        if out_dir and not dry_run:  # a file where the folder (or one above it) would be
+            there = _existing(out_dir)
+            if there is not None and not os.path.isdir(there):
+                raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
+        jobs_list = batch_jobs(inputs, output, out_dir, dry_run, names)
+        options = ConvertOptions(
+            target=load_profile(to_profile),
+            source=load_profile(from_profile) if from_profile else None,
+            decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
+            rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
+            from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
+            from_units=from_units)
+        from tapegate.launch import resume_collector
+        from tapegate.workers import default_jobs
+
+        resume_collector()  # (the entry point's start-up without the collector ends here)
         results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
                             verify=verify, names=names, make_folders=out_dir is not None,
                             spill=spill)
         _report(results, output, to_stdout, dry_run, fmt)
     finally:
         spill.remove()
+        if to_stdout and output is not None:
+            # (-o -: the folder the program was written in before it went to stdout, with
+            # what is left in it where ^C, SIGTERM or an error stopped the command before or
+            # while it was copied; review 44, finding 4)
+            import shutil
+
+            shutil.rmtree(os.path.dirname(output), ignore_errors=True)
 
 
 def _existing(name: str) -> str | None:

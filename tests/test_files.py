@@ -268,3 +268,62 @@ def test_a_process_that_exits_with_a_file_not_named_leaves_nothing(tmp_path: Pat
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().endswith(".part")  # (it was there)
     assert list(tmp_path.iterdir()) == []
+
+
+NO_LINKS = """
+#include <errno.h>
+int link(const char *a, const char *b) { errno = EPERM; return -1; }
+int linkat(int fa, const char *a, int fb, const char *b, int flags) { errno = EPERM; return -1; }
+"""
+
+
+def test_a_file_system_without_hard_links_still_gets_whole_files_never_replaced(
+        tmp_path: Path) -> None:
+    """Review 44, finding 6: FAT and exFAT (the USB stick a shop carries to the control) have
+    no hard links, and Linux's link(2) gives EPERM there; the commit named every new file by a
+    link alone, so each output failed. Where the link is refused so, the core renames without
+    replacing (renameat2 RENAME_NOREPLACE): the same names, versions and refusals. Shown with
+    the C library's link() and linkat() made to fail as on FAT (a preloaded library built
+    here; skipped where no C compiler is installed)."""
+    import shutil
+    import subprocess
+    import sys
+
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None or sys.platform != "linux":
+        pytest.skip("needs a C compiler on Linux to build the link-refusing library")
+    (tmp_path / "nolink.c").write_text(NO_LINKS)
+    shim = tmp_path / "nolink.so"
+    subprocess.run([cc, "-shared", "-fPIC", "-o", str(shim), str(tmp_path / "nolink.c")],
+                   check=True, timeout=60)
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "kept.nc").write_bytes(b"old\n")
+    script = (
+        "import os, sys\n"
+        "from formats.files import PendingFile, write_atomic\n"
+        "out = sys.argv[1]\n"
+        "try:\n"
+        "    os.link(os.path.join(out, 'kept.nc'), os.path.join(out, 'probe'))\n"
+        "    print('linked')\n"
+        "except PermissionError:\n"
+        "    print('no links')\n"
+        "print(write_atomic(os.path.join(out, 'new.nc'), b'new\\n', overwrite=False).name)\n"
+        "print(write_atomic(os.path.join(out, 'kept.nc'), b'v\\n', overwrite=False).name)\n"
+        "p = PendingFile(out, 'kept.nc')\n"
+        "p.write(b'x\\n')\n"
+        "try:\n"
+        "    p.name_as(os.path.join(out, 'kept.nc'), overwrite=False, version=False)\n"
+        "except FileExistsError:\n"
+        "    print('refused')\n"
+        "print(write_atomic(os.path.join(out, 'kept.nc'), b'forced\\n').name)\n")
+    root = Path(__file__).resolve().parent.parent
+    run = subprocess.run([sys.executable, "-c", script, str(out)], capture_output=True,
+                         text=True, timeout=60,
+                         env={**os.environ, "PYTHONPATH": str(root), "LD_PRELOAD": str(shim)})
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.split() == ["no", "links", "new.nc", "kept.1.nc", "refused", "kept.nc"]
+    assert (out / "new.nc").read_bytes() == b"new\n"
+    assert (out / "kept.1.nc").read_bytes() == b"v\n"
+    assert (out / "kept.nc").read_bytes() == b"forced\n"
+    assert sorted(p.name for p in out.iterdir()) == ["kept.1.nc", "kept.nc", "new.nc"]

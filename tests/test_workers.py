@@ -985,6 +985,35 @@ def test_sigterm_exits_while_the_threads_run_and_its_handler_is_put_back_after()
         signal.signal(signal.SIGTERM, before)
 
 
+def test_sighup_made_an_exit_is_held_as_sigterm_is_while_the_threads_run():
+    """Review 44, finding 8: a command that writes files makes SIGHUP an exit
+    (formats.files.exit_on_termination) raised wherever the main thread is; among the map's
+    locks that hung 2 of 140 stopped batches. While the threads run the map answers it as it
+    answers SIGTERM (an exit with 128 + 1 at a safe point), and puts the handler back."""
+    import signal
+
+    from formats import files
+
+    before = signal.signal(signal.SIGHUP, signal.SIG_DFL)
+    term = signal.getsignal(signal.SIGTERM)
+    try:
+        files.exit_on_termination()
+        made = signal.getsignal(signal.SIGHUP)
+        assert made is files._exit_signalled
+        got = []
+        with pytest.raises(SystemExit) as stopped:
+            for n in ordered_map(lambda n: n, list(range(200)), 2):
+                got.append(n)
+                if n == 0:
+                    assert signal.getsignal(signal.SIGHUP) is not made  # the map's own
+                    os.kill(os.getpid(), signal.SIGHUP)
+        assert stopped.value.code == 128 + signal.SIGHUP and got == [0]
+        assert signal.getsignal(signal.SIGHUP) is made
+    finally:
+        signal.signal(signal.SIGHUP, before)
+        signal.signal(signal.SIGTERM, term)
+
+
 def test_an_item_started_early_spills_past_early_pieces_and_leaves_the_budget_to_the_others(
         tmp_path, monkeypatch):
     """The item started first for its size (first()) waits longest for its turn: it holds
