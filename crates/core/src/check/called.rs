@@ -1203,15 +1203,24 @@ mod tests {
         assert_eq!(errors(&once), 1100);
         assert_eq!(given_up(&once), [1107]);
         // the same whatever the selection: the note with TG140 alone (nothing held)
-        let select = |rules: &[&str]| {
-            let rules: Vec<String> = rules.iter().map(|r| r.to_string()).collect();
+        let select = |rules: &[Rule]| {
+            let rules: Vec<String> = rules.iter().map(|r| r.id().to_string()).collect();
             Selection::new(&rules, &[])
         };
         for each in [true, false] {
-            let notes = taken(&bound, select(&["TG140"]), each);
+            let notes = taken(&bound, select(&[Rule::NotFollowed]), each);
             assert_eq!(errors(&notes), 0);
             assert_eq!(given_up(&notes), [1107]);
-            let limits = taken(&bound, select(&["TG6", "TG140"]), each);
+            let limits = taken(
+                &bound,
+                select(&[
+                    Rule::TravelExceeded,
+                    Rule::FeedTooHigh,
+                    Rule::FeedClamped,
+                    Rule::NotFollowed,
+                ]),
+                each,
+            );
             assert_eq!(errors(&limits), 1100);
             assert_eq!(given_up(&limits), [1107]);
         }
