@@ -619,6 +619,10 @@ pub struct ModalMachine {
     /// ([`ModalSettings::axes_taken`]), found once there for the machine and the checker's
     /// rules that ask it of the same block ([`ModalMachine::taken`]).
     taken: Option<AxesTaken>,
+    /// How many codes of absolute or incremental programming (G90/G91, G code system B's and
+    /// C's) were applied so far, the reset's included: the checker asks whether a program
+    /// wrote one of its own before its first move (crate::check::called).
+    pub distance_codes: u32,
 }
 
 impl ModalMachine {
@@ -633,6 +637,7 @@ impl ModalMachine {
             ran_cycle: false,
             units_convert_position: true,
             taken: None,
+            distance_codes: 0,
         };
         machine.reset();
         machine
@@ -1004,10 +1009,16 @@ impl ModalMachine {
                 s.cycle = Some(g);
                 s.cycle_words = [None; 5];
             }
-            90 | 91 => s.incremental = g == 91,
+            90 | 91 => {
+                s.incremental = g == 91;
+                self.distance_codes = self.distance_codes.wrapping_add(1);
+            }
             // G code system B and C: G90/G91 (FANUC 0i-TF, "Absolute and incremental
             // programming"); their G98/G99 return levels change nothing the state follows
-            ABSOLUTE | INCREMENTAL => s.incremental = g == INCREMENTAL,
+            ABSOLUTE | INCREMENTAL => {
+                s.incremental = g == INCREMENTAL;
+                self.distance_codes = self.distance_codes.wrapping_add(1);
+            }
             93..=95 => s.feed_mode = g,
             98 if self.settings.fanuc_lathe => s.feed_mode = 94,
             99 if self.settings.fanuc_lathe => s.feed_mode = 95,

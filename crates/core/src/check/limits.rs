@@ -1822,6 +1822,11 @@ impl Checker {
                     if !(low..=high).contains(&at) {
                         self.machine_outside(axis, value, at, (low, high), (line, col(axis)));
                     }
+                    if self.early_on {
+                        // (a program read apart: judged at its calls in their units too,
+                        // crate::check::called)
+                        self.early_machine(axis, value, at, line);
+                    }
                     continue;
                 }
                 let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
@@ -2170,6 +2175,19 @@ impl Checker {
         (low, high): (f64, f64),
         (line, column): (usize, usize),
     ) {
+        let message = self.machine_message(axis, value, at, (low, high));
+        self.report_limit(Rule::TravelExceeded, message, line, column);
+    }
+
+    /// The message of [`Checker::machine_outside`], `value` read in the units in force (a
+    /// subprogram's G53 position judged at its call: crate::check::called).
+    pub(super) fn machine_message(
+        &self,
+        axis: u8,
+        value: Dec,
+        at: f64,
+        (low, high): (f64, f64),
+    ) -> String {
         let axis = axis as char;
         let message = if self.to_profile_units(false) == 1.0 {
             format!(
@@ -2188,8 +2206,7 @@ impl Checker {
             )
         };
         let fits = (low..=high).contains(&(at / 25.4));
-        let message = format!("{message}{}", self.units_not_written(fits));
-        self.report_limit(Rule::TravelExceeded, message, line, column);
+        format!("{message}{}", self.units_not_written(fits))
     }
 
     /// A finding against the profile's machine (TG601, TG602, TG604, TG605): the file's first
@@ -2199,7 +2216,7 @@ impl Checker {
     /// The limit's own: a user's file on a base that sets it (the travel: every axis's) is the
     /// user's machine, no hint; one it leaves to the base is the sample's (review 38, 4).
     #[cold]
-    fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+    pub(super) fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
         if matches!(
             rule,
             Rule::TravelExceeded | Rule::FeedTooHigh | Rule::FeedClamped

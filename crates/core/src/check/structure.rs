@@ -360,7 +360,7 @@ impl Checker {
             }
             _ => number,
         };
-        if !self.pending.is_empty() || self.given_up.is_some() {
+        if !self.pending.is_empty() || !self.given_up.is_empty() {
             let token = b
                 .words
                 .iter()
@@ -875,7 +875,7 @@ impl Checker {
             }
             _ => {}
         }
-        if self.pending.is_empty() && self.given_up.is_none() {
+        if self.pending.is_empty() && self.given_up.is_empty() {
             return;
         }
         for &(column, kind, text) in b.statements {
