@@ -5,7 +5,7 @@
 use super::{round6, Before, BlockView, Checker, Config, Facts, Span};
 use crate::decimal::Dec;
 use crate::lex::Family;
-use crate::modal::{axis_index, bit, AxesTaken, Units, AXES};
+use crate::modal::{axis_index, bit, AxesTaken, Units, AXES, CYCLE_RAN, CYCLE_UNSURE};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -1710,23 +1710,20 @@ impl Checker {
         // a FANUC or Haas lathe's single cycle G90, G92, G94: its end point X(U) Z(W) goes to
         // the spans, the position (the start point, where the tool returns) being kept aside
         // while they are walked
-        let cycle = self.machine.ran_cycle();
+        // (the same of a lathe's multiple repetitive cycle G74-G76 and of an Okuma's fixed
+        // thread cutting cycle, X and Z both walked; the corner of a taper after it,
+        // Checker::cycle_walked)
+        let flags = self.machine.ran_cycle();
+        let cycle = flags & CYCLE_RAN != 0;
         let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
-            onto_xz = uw_onto_xz(places);
+            onto_xz = uw_onto_xz(if cycle { places | 1 << 0 | 1 << 2 } else { places });
             (moved, places) = (&onto_xz.0[..onto_xz.1], onto_xz.2);
         }
         if cycle {
             self.machine.swap_cycle_end();
         }
-        let col = |letter: u8| {
-            if uw {
-                uw_column(facts, letter)
-            } else {
-                facts.col(letter)
-            }
-        };
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
             // for made a program of many transformations quadratic)
@@ -1749,6 +1746,7 @@ impl Checker {
         // coordinates name, Checker::shift_spans; taken as a position of the coordinates
         // before it, `G0 X700.` / `G92 X-900.` spanned 1600)
         if self.frames.codes
+            && !cycle
             && matches!(self.machine.taken(), Some(AxesTaken::Data | AxesTaken::Set))
         {
             moved = &[];
@@ -1759,14 +1757,162 @@ impl Checker {
         // (a subprogram whose calls leave its units unknown: its lengths and feeds are not
         // judged against the machine's until it writes a units code, Checker::called_units;
         // a speed or a tool number still is)
-        'axes: {
+        self.walk_spans((moved, places), line, facts, absolute, uw);
+        if flags != 0 {
+            self.cycle_walked(flags, (moved, places), line, facts, absolute);
+        }
+        let v = &self.values;
+        // (the feed, speed and tool limits below read the block's F, S and T alone: most
+        // blocks have none)
+        if v.given() & (bit(b'F') | bit(b'S') | bit(b'T')) == 0 {
+            return;
+        }
+        // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
+        let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
+        let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
+        // a spindle speed limit's S (the clamp code's, a SINUMERIK's G25/G26 S) turns nothing:
+        // a limit above the maximum never bites (audit 37); the modal state reads a block's S
+        // by the same rule, ModalSettings::s_limit
+        let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
+        let factor = self.to_profile_units(true);
+        if self.units_unknown && f.is_some() && self.config.feed_max.is_some() {
+            self.unknown_call_note();
+        }
+        let f = f.filter(|_| !self.units_unknown);
+        if let Some(feed) = f.filter(|_| self.early_on) {
+            // (a program read apart keeps its largest feed: a few blocks of it, where it grows)
+            let value = feed.to_f64() * factor;
+            if self.early_feed_max() < value {
+                self.early_feed(feed, value, line);
+            }
+        }
+        if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
+            if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
+                let mode = self.machine.state.feed_mode;
+                self.feed_over(feed, factor, mode, (line, facts.col(b'F')), "");
+            }
+        }
+        if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
+            if self.machine.state.spindle_mode == 97 && speed > top {
+                let message = format!("spindle speed {speed} above the maximum {top}");
+                // a control family's: a SINUMERIK limits an excessive speed to its maximum
+                // (808D Function Manual, MD35100 SPIND_VELO_LIMIT; 840D Function Manual, S1,
+                // 18.8.4), and no source at hand says a FANUC, Haas, Okuma or Heidenhain
+                // alarms rather than limiting it: a warning (issue 32, item 3), where the
+                // maximum is a built-in profile's sample machine -- a user's file on a base
+                // that sets no spindle_max of its own included (review 38, finding 4); the
+                // strict ISO profiles, and a user's file that sets it, whose maximum is the
+                // user's machine (a chuck's rating), keep TG603 (review 37, finding 6)
+                let sample = self.config.sample_limits & super::SAMPLE_SPINDLE != 0;
+                if self.config.family == Family::Iso || !sample {
+                    self.report(Rule::SpeedTooHigh, message, line, facts.col(b'S'));
+                } else {
+                    let effect = if self.config.family == Family::Sinumerik {
+                        "a SINUMERIK limits it to its maximum (MD35100), no alarm"
+                    } else {
+                        "no source says the control alarms rather than limiting it"
+                    };
+                    let message = format!(
+                        "{message} of the profile's machine: {effect}; set the profile's \
+                         spindle_max to your machine's"
+                    );
+                    self.report(Rule::SpeedLimited, message, line, facts.col(b'S'));
+                }
+            }
+        }
+        if let Some(t) = t {
+            let word = t.trunc();
+            if !self.stats.tools.contains(&word) {
+                self.stats.tools.push(word);
+            }
+            if let Some(top) = self.config.tool_max {
+                // a Fanuc or Haas lathe's T word is the tool number followed by the offset
+                // number (dialect::LATHE_OFFSET_DIGITS): the limit is the tool part's
+                let (tool, offset) = if self.config.modal.fanuc_lathe {
+                    let split = 10_i64.pow(crate::dialect::LATHE_OFFSET_DIGITS);
+                    (word / split, Some(word % split))
+                } else {
+                    (word, None)
+                };
+                if tool > top {
+                    let message = match offset {
+                        Some(offset) => format!(
+                            "tool {tool} (T{word}: tool {tool}, offset {offset:02}) above the \
+                             largest tool number {top}"
+                        ),
+                        None => format!("tool {tool} above the largest tool number {top}"),
+                    };
+                    self.report_limit(Rule::ToolOutOfRange, message, line, facts.col(b'T'));
+                }
+            }
+        }
+    }
+}
+
+/// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
+const UW_PLACES: u32 = 1 << 3 | 1 << 5;
+
+/// The moved axes of a block whose U and W moved X and Z
+/// ([`crate::modal::ModalMachine::uw_moved_xz`]): U's place taken by X, W's by Z (once each,
+/// beside an X or Z the block writes too), the axes in the order of [`AXES`], how many, and
+/// their places.
+#[cold]
+#[inline(never)]
+fn uw_onto_xz(places: u32) -> ([u8; 9], usize, u32) {
+    let mut onto = places & !UW_PLACES;
+    if places & 1 << 3 != 0 {
+        onto |= 1 << 0;
+    }
+    if places & 1 << 5 != 0 {
+        onto |= 1 << 2;
+    }
+    // (the axes of the places looked up, as Facts::new does: a walk cost about 60
+    // instructions a block)
+    let (moved, n) = super::MOVED[onto as usize];
+    (moved, usize::from(n), onto)
+}
+
+/// The column of [`Facts::col`] where U and W moved X and Z: X's, or U's where the block
+/// writes no X (Z's, or W's).
+#[cold]
+#[inline(never)]
+fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
+    let own = facts.words.iter().any(|w| w.letter == letter);
+    match letter {
+        b'X' if !own => facts.col(b'U'),
+        b'Z' if !own => facts.col(b'W'),
+        _ => facts.col(letter),
+    }
+}
+
+impl Checker {
+    /// The walk of [`Checker::limits`]: the positions of the block's moved axes (`moved`, at
+    /// `places`) to their spans and, where the offsets are known, to the travel; `uw` where
+    /// the block's U and W (or a lathe cycle's words) stand for X and Z (their columns).
+    /// Inlined into `limits`; a lathe cycle's corner walks it again out of line.
+    #[inline(always)]
+    fn walk_spans(
+        &mut self,
+        (mut moved, places): (&[u8], u32),
+        line: usize,
+        facts: &Facts<'_>,
+        absolute: bool,
+        uw: bool,
+    ) {
+        let col = |letter: u8| {
+            if uw {
+                uw_column(facts, letter)
+            } else {
+                facts.col(letter)
+            }
+        };
             if (places & self.travel.places() == 0 && self.frames.map.is_none())
                 || self.units_unknown
             {
                 if self.units_unknown && places & self.travel.places() != 0 {
                     self.unknown_call_note();
                 }
-                break 'axes;
+                return;
             }
             let factor = self.to_profile_units(false);
             // (an Okuma mill's G53 cancels the tool length offset: work_offset)
@@ -1901,135 +2047,43 @@ impl Checker {
             if self.frames.map.is_some() && !moved.is_empty() {
                 self.mapped_spans(moved, line, facts);
             }
-        }
-        if cycle {
+    }
+
+    /// After [`Checker::limits`]'s walk of a block that ran a lathe's cycle
+    /// ([`ModalMachine::ran_cycle`]): the position back at the start point, the corner of
+    /// the cycle's taper walked as its end point was, and, where some of where the cycle
+    /// went is not known, TG140 once per file.
+    #[cold]
+    #[inline(never)]
+    fn cycle_walked(
+        &mut self,
+        flags: u8,
+        axes: (&[u8], u32),
+        line: usize,
+        facts: &Facts<'_>,
+        absolute: bool,
+    ) {
+        if flags & CYCLE_RAN != 0 {
             self.machine.swap_cycle_end();
-        }
-        let v = &self.values;
-        // (the feed, speed and tool limits below read the block's F, S and T alone: most
-        // blocks have none)
-        if v.given() & (bit(b'F') | bit(b'S') | bit(b'T')) == 0 {
-            return;
-        }
-        // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
-        let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
-        let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
-        // a spindle speed limit's S (the clamp code's, a SINUMERIK's G25/G26 S) turns nothing:
-        // a limit above the maximum never bites (audit 37); the modal state reads a block's S
-        // by the same rule, ModalSettings::s_limit
-        let s = s.filter(|_| !self.machine.settings.s_limit(v).1);
-        let factor = self.to_profile_units(true);
-        if self.units_unknown && f.is_some() && self.config.feed_max.is_some() {
-            self.unknown_call_note();
-        }
-        let f = f.filter(|_| !self.units_unknown);
-        if let Some(feed) = f.filter(|_| self.early_on) {
-            // (a program read apart keeps its largest feed: a few blocks of it, where it grows)
-            let value = feed.to_f64() * factor;
-            if self.early_feed_max() < value {
-                self.early_feed(feed, value, line);
+            if self.machine.cycle_corner().is_some() && !axes.0.is_empty() {
+                self.machine.swap_cycle_corner();
+                self.walk_spans(axes, line, facts, absolute, true);
+                self.machine.swap_cycle_corner();
             }
         }
-        if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
-            if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
-                let mode = self.machine.state.feed_mode;
-                self.feed_over(feed, factor, mode, (line, col(b'F')), "");
-            }
-        }
-        if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
-            if self.machine.state.spindle_mode == 97 && speed > top {
-                let message = format!("spindle speed {speed} above the maximum {top}");
-                // a control family's: a SINUMERIK limits an excessive speed to its maximum
-                // (808D Function Manual, MD35100 SPIND_VELO_LIMIT; 840D Function Manual, S1,
-                // 18.8.4), and no source at hand says a FANUC, Haas, Okuma or Heidenhain
-                // alarms rather than limiting it: a warning (issue 32, item 3), where the
-                // maximum is a built-in profile's sample machine -- a user's file on a base
-                // that sets no spindle_max of its own included (review 38, finding 4); the
-                // strict ISO profiles, and a user's file that sets it, whose maximum is the
-                // user's machine (a chuck's rating), keep TG603 (review 37, finding 6)
-                let sample = self.config.sample_limits & super::SAMPLE_SPINDLE != 0;
-                if self.config.family == Family::Iso || !sample {
-                    self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
-                } else {
-                    let effect = if self.config.family == Family::Sinumerik {
-                        "a SINUMERIK limits it to its maximum (MD35100), no alarm"
-                    } else {
-                        "no source says the control alarms rather than limiting it"
-                    };
-                    let message = format!(
-                        "{message} of the profile's machine: {effect}; set the profile's \
-                         spindle_max to your machine's"
-                    );
-                    self.report(Rule::SpeedLimited, message, line, col(b'S'));
-                }
-            }
-        }
-        if let Some(t) = t {
-            let word = t.trunc();
-            if !self.stats.tools.contains(&word) {
-                self.stats.tools.push(word);
-            }
-            if let Some(top) = self.config.tool_max {
-                // a Fanuc or Haas lathe's T word is the tool number followed by the offset
-                // number (dialect::LATHE_OFFSET_DIGITS): the limit is the tool part's
-                let (tool, offset) = if self.config.modal.fanuc_lathe {
-                    let split = 10_i64.pow(crate::dialect::LATHE_OFFSET_DIGITS);
-                    (word / split, Some(word % split))
-                } else {
-                    (word, None)
-                };
-                if tool > top {
-                    let message = match offset {
-                        Some(offset) => format!(
-                            "tool {tool} (T{word}: tool {tool}, offset {offset:02}) above the \
-                             largest tool number {top}"
-                        ),
-                        None => format!("tool {tool} above the largest tool number {top}"),
-                    };
-                    self.report_limit(Rule::ToolOutOfRange, message, line, col(b'T'));
-                }
-            }
+        if flags & CYCLE_UNSURE != 0 && !self.cycle_noted {
+            self.cycle_noted = true;
+            let message = format!(
+                "a lathe cycle's positions are not compared with the travel (TG601): {}; \
+                 the check compares the end points and taper corners it can work out (said \
+                 once: the same for any later such cycle of this file)",
+                self.machine.cycle_why()
+            );
+            let column = facts.words.first().map_or(1, |w| w.column);
+            self.report(Rule::NotFollowed, message, line, column);
         }
     }
-}
 
-/// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
-const UW_PLACES: u32 = 1 << 3 | 1 << 5;
-
-/// The moved axes of a block whose U and W moved X and Z
-/// ([`crate::modal::ModalMachine::uw_moved_xz`]): U's place taken by X, W's by Z (once each,
-/// beside an X or Z the block writes too), the axes in the order of [`AXES`], how many, and
-/// their places.
-#[cold]
-#[inline(never)]
-fn uw_onto_xz(places: u32) -> ([u8; 9], usize, u32) {
-    let mut onto = places & !UW_PLACES;
-    if places & 1 << 3 != 0 {
-        onto |= 1 << 0;
-    }
-    if places & 1 << 5 != 0 {
-        onto |= 1 << 2;
-    }
-    // (the axes of the places looked up, as Facts::new does: a walk cost about 60
-    // instructions a block)
-    let (moved, n) = super::MOVED[onto as usize];
-    (moved, usize::from(n), onto)
-}
-
-/// The column of [`Facts::col`] where U and W moved X and Z: X's, or U's where the block
-/// writes no X (Z's, or W's).
-#[cold]
-#[inline(never)]
-fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
-    let own = facts.words.iter().any(|w| w.letter == letter);
-    match letter {
-        b'X' if !own => facts.col(b'U'),
-        b'Z' if !own => facts.col(b'W'),
-        _ => facts.col(letter),
-    }
-}
-
-impl Checker {
     /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
     /// span is wider than the travel. `under` ends the message: the frame the position was
     /// taken back through.
