@@ -1353,7 +1353,12 @@ impl ModalMachine {
             [None, self.cycle_end[1].and_then(|z| z.checked_add(taper))]
         } else {
             let twice = taper.checked_add(taper);
-            [self.cycle_end[0].zip(twice).and_then(|(x, t)| x.checked_add(t)), None]
+            [
+                self.cycle_end[0]
+                    .zip(twice)
+                    .and_then(|(x, t)| x.checked_add(t)),
+                None,
+            ]
         }
     }
 
