@@ -609,7 +609,8 @@ pub struct ModalMachine {
     /// U W are the cycle's and whose tool returns to its start point.
     uw_moves: bool,
     /// The end point X, Z (absolute) of a Fanuc or Haas lathe's single cycle G90, G92 or
-    /// G94 (G code system A), kept for the cycle's modal repeats: "data items X (U), Z (W)
+    /// G94 (G code system A; and of the block's G74-G76, an Okuma's G32/G33), kept for the
+    /// cycle's modal repeats: "data items X (U), Z (W)
     /// and R are modal" in the cycles until a code of group 01 other than G90, G92, G94 or a
     /// one-shot code other than G04 (FANUC 0i-TF operator's manual, "Canned cycle").
     cycle_end: [Option<Dec>; 2],
@@ -1245,7 +1246,10 @@ impl ModalMachine {
     }
 
     /// A block of a Fanuc or Haas lathe's single cycle G90, G92 or G94 (B's and C's G77-G79,
-    /// read as A's numbers) in [`ModalMachine::moved`]: its end point kept in `cycle_end`;
+    /// read as A's numbers), or of an Okuma lathe's fixed thread cutting cycle G32 or G33
+    /// (OSP-P200L 5238-E, section 7, 2-1; back at the starting point: CIMCO Edit's OSP
+    /// threading exercise), in [`ModalMachine::moved`]: its end point kept in `cycle_end`,
+    /// its taper (modal with it) in `cycle_taper` and the corner it makes in `cycle_corner`;
     /// true where the block ran the cycle (its X U Z W then move no position: the tool is
     /// back at the start point). A block of the mode without X U Z W runs none, nor does a
     /// dwell's (its U or X is the time), nor a code's that takes the axis words.
