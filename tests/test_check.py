@@ -425,6 +425,55 @@ def test_issue_32_a_lathe_s_thread_and_single_cycles_reach_the_spans(tmp_path: P
 
 
 
+def test_review_44_a_lathe_s_repetitive_cycles_tapers_and_okuma_threads_reach_the_spans(
+    tmp_path: Path,
+) -> None:
+    """Review 44, F5, F1, F2: the end point X(U) Z(W) of a FANUC or Haas lathe's G74, G75,
+    G76 (FANUC 0i-TF operator's manual, "Multiple repetitive cycle (G70-G76)"; Haas's one
+    block), a single cycle's taper corner (FANUC R; Haas I, and K for G94) and an Okuma
+    lathe's G33 (OSP-P200L 5238-E, 2-1: back at the starting point, its taper I) reach the
+    TG601 spans; an Okuma G71 thread cycle is said not to be compared (TG140). fanuc-lathe X
+    -10 to 500, Z -800 to 300; haas-lathe (inches) X -1 to 16, Z -22 to 12; okuma-lathe X
+    -10 to 1100, Z -100 to 1100."""
+    def found(profile: str, *body: str) -> list[tuple[int, int, str]]:
+        path = tmp_path / "t.nc"
+        path.write_text("%\nO1\n" + "\n".join(body) + "\nM30\n%\n")
+        out = run("check", str(path), "-p", profile, "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["column"], f["rule"]) for f in map(json.loads, out.splitlines())]
+
+    head = ("G21 G18 G99", "G0 X60. Z5.")
+    # F5: the review's programs
+    assert found("fanuc-lathe", *head, "G76 P010060 Q100 R0.05",
+                 "G76 X50. Z-1200. P1000 Q300 F1.5") == [(6, 10, "TG601")]
+    assert found("fanuc-lathe", *head, "G75 R0.5", "G75 X-600. Z-30. P1000 Q2000 F0.1") \
+        == [(6, 5, "TG601")]
+    assert found("fanuc-lathe", *head, "G74 R0.5", "G74 Z-1200. Q5000 F0.1") \
+        == [(6, 5, "TG601")]
+    assert found("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G76 X1.8 Z-35. K0.05 D0.01 F0.0625") \
+        == [(5, 10, "TG601")]
+    # the tool back at Z5. after G76: W-800. from there stays inside (-795)
+    assert found("fanuc-lathe", *head, "G76 P010060 Q100 R0.05",
+                 "G76 X50. Z-30. P1000 Q300 F1.5", "G0 W-800.") == []
+    # F1: the review's taper programs
+    assert found("fanuc-lathe", "G21 G18 G99", "G0 X60. Z50.", "G90 X50. Z-30. R-300. F0.2",
+                 "G0 X100. Z100.") == [(5, 5, "TG601")]
+    assert found("fanuc-lathe", "G21 G18 G99", "G0 X60. Z50.", "G94 X20. Z0 R-1100. F0.2",
+                 "G0 X100. Z100.") == [(5, 10, "TG601")]
+    assert found("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G90 X1.8 Z-1. I-9. F0.01") \
+        == [(5, 5, "TG601")]
+    assert found("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G94 X1. Z0 K-35. F0.01") \
+        == [(5, 9, "TG601")]
+    # F2: Okuma G33 returns to its start point (1), (2), its taper I (3), G71 said (4)
+    okuma = ("G0 X60. Z50.", "G33 X50. Z-30. F1.5")
+    assert found("okuma-lathe", *okuma, "G0 W1130.") == [(5, 4, "TG601")]
+    assert found("okuma-lathe", *okuma, "G0 W-1130.", "G0 X100. Z100.") == []
+    assert found("okuma-lathe", "G0 X60. Z50.", "G33 X50. Z-30. I-600. F1.5") \
+        == [(4, 5, "TG601")]
+    assert found("okuma-lathe", "G0 X60. Z50.", "G71 X50. Z-1200. K2. D0.5 F1.5") \
+        == [(4, 1, "TG140")]
+
+
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(
         tmp_path: Path) -> None:
     """Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is

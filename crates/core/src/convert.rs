@@ -331,6 +331,7 @@ impl ConvertConfig {
                 arc_radius: crate::word::arc_radius(from, false),
                 lacks_g: Vec::new(),
                 g_system: Default::default(),
+                haas: false,
             },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: Vec::new(),

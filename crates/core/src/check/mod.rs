@@ -886,6 +886,9 @@ pub struct Checker {
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
+    /// Whether the note of a lathe cycle whose positions are not all known (TG140) was said
+    /// (once per file: `Checker::cycle_walked`).
+    cycle_noted: bool,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1205,6 +1208,7 @@ impl Checker {
             work: None,
             offsets_lost: false,
             frames: limits::Frames::default(),
+            cycle_noted: false,
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
