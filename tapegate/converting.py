@@ -54,12 +54,14 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         inputs = (readable("-"),)
         names[inputs[0]] = "<stdin>"
     to_stdout = output == "-"
-    if to_stdout:
-        import tempfile
-
-        output = os.path.join(tempfile.mkdtemp(prefix="tapegate-"), "out.nc")
     spill = SpillFolder()  # a long file's notes wait there
+    made: str | None = None  # (-o -: the folder the program is written in first)
     try:
+        if to_stdout:
+            import tempfile
+
+            made = tempfile.mkdtemp(prefix="tapegate-")
+            output = os.path.join(made, "out.nc")
         if out_dir and not dry_run:  # a file where the folder (or one above it) would be
             there = _existing(out_dir)
             if there is not None and not os.path.isdir(there):
@@ -82,13 +84,13 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         _report(results, output, to_stdout, dry_run, fmt)
     finally:
         spill.remove()
-        if to_stdout and output is not None:
+        if made is not None:
             # (-o -: the folder the program was written in before it went to stdout, with
             # what is left in it where ^C, SIGTERM or an error stopped the command before or
             # while it was copied; review 44, finding 4)
             import shutil
 
-            shutil.rmtree(os.path.dirname(output), ignore_errors=True)
+            shutil.rmtree(made, ignore_errors=True)
 
 
 def _existing(name: str) -> str | None:

@@ -327,3 +327,49 @@ def test_a_file_system_without_hard_links_still_gets_whole_files_never_replaced(
     assert (out / "kept.1.nc").read_bytes() == b"v\n"
     assert (out / "kept.nc").read_bytes() == b"forced\n"
     assert sorted(p.name for p in out.iterdir()) == ["kept.1.nc", "kept.nc", "new.nc"]
+
+
+def test_a_file_of_another_owner_replaced_is_made_as_a_new_one(tmp_path: Path) -> None:
+    """Review 45, finding H1: a user who may not give the file its old owner (not root)
+    replaced a 0640 program of another user with a file of their own, 0640: the old owner
+    could no longer read their program. The old bits are given only where the owner and
+    group are kept; else the file is made as a new one is (0666 and the umask). Shown with
+    fchown() refused as for a user who is not root (a preloaded library built here: skipped
+    where no C compiler is installed), the file another user's (uid and gid 1000)."""
+    import shutil
+    import subprocess
+    import sys
+
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None or sys.platform != "linux":
+        pytest.skip("needs a C compiler on Linux to build the fchown-refusing library")
+    (tmp_path / "nochown.c").write_text(
+        "#include <errno.h>\n#include <sys/types.h>\n"
+        "int fchown(int fd, uid_t u, gid_t g) { errno = EPERM; return -1; }\n")
+    shim = tmp_path / "nochown.so"
+    subprocess.run([cc, "-shared", "-fPIC", "-o", str(shim), str(tmp_path / "nochown.c")],
+                   check=True, timeout=60)
+    out = tmp_path / "out"
+    out.mkdir()
+    theirs, mine = out / "theirs.nc", out / "mine.nc"
+    for target in (theirs, mine):
+        target.write_bytes(b"old\n")
+        target.chmod(0o640)
+    if os.geteuid() == 0:
+        os.chown(theirs, 1000, 1000)
+    script = ("import os, sys\n"
+              "os.umask(0o022)\n"
+              "from formats.files import write_atomic\n"
+              "for name in sys.argv[1:]:\n"
+              "    write_atomic(name, b'new\\n')\n")
+    root = Path(__file__).resolve().parent.parent
+    run = subprocess.run([sys.executable, "-c", script, str(theirs), str(mine)],
+                         capture_output=True, text=True, timeout=60,
+                         env={**os.environ, "PYTHONPATH": str(root), "LD_PRELOAD": str(shim)})
+    assert run.returncode == 0, run.stderr
+    assert theirs.read_bytes() == mine.read_bytes() == b"new\n"
+    if os.geteuid() == 0:  # (the owner could not be kept: made as a new file)
+        assert (theirs.stat().st_uid, theirs.stat().st_gid) == (0, 0)
+        assert oct(theirs.stat().st_mode & 0o777) == "0o644"
+    # the runner's own file keeps its bits
+    assert oct(mine.stat().st_mode & 0o777) == "0o640"

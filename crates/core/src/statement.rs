@@ -801,6 +801,22 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     match text.get(1) {
         Some(b'<' | b'#' | b'[') => {
             let end = o_label_end(&text).unwrap_or(text.len());
+            // a number in brackets is that number's label (`o[100] endsub` closes `o100
+            // sub`, `o[0100.0] call` calls it: rs274 reads the bracket's value)
+            if let [b'o', b'[', inside @ .., b']'] = &text[..end] {
+                let whole = inside.split(|&c| c == b'.').next().unwrap_or(inside);
+                let fraction = &inside[whole.len()..];
+                if !whole.is_empty()
+                    && whole.iter().all(u8::is_ascii_digit)
+                    && fraction.iter().skip(1).all(|&c| c == b'0')
+                {
+                    let zeros = whole.iter().take_while(|&&c| c == b'0').count();
+                    let digits = &whole[zeros.min(whole.len() - 1)..];
+                    let mut label = vec![b'o'];
+                    label.extend_from_slice(digits);
+                    return label;
+                }
+            }
             text[..end].to_vec()
         }
         _ => {
@@ -2862,6 +2878,11 @@ mod tests {
         assert_eq!(o_label(b"o#<Sub> call"), b"o#<sub>");
         assert_eq!(o_label(b"o#12call"), b"o#12");
         assert_eq!(o_label(b"o[[#1]*2]if[1]"), b"o[[#1]*2]");
+        // a number in brackets is that number's label, as rs274 reads its value
+        assert_eq!(o_label(b"o[100] endsub"), b"o100");
+        assert_eq!(o_label(b"O [ 0100.00 ] call"), b"o100");
+        assert_eq!(o_label(b"o[100.5] call"), b"o[100.5]");
+        assert_eq!(o_label(b"o[0] call"), b"o0");
         assert_eq!(
             o_keyword(b"o[#1+1]call[5]").as_deref(),
             Some(b"call".as_slice())

@@ -1022,6 +1022,18 @@ mod tests {
                 "{call}"
             );
         }
+        // a known value with a fraction: rs274 stops, "Non integer value for integer"
+        let fraction = named
+            .replace("#1=100", "#1=100.5")
+            .replace("o100 call", "o#1 call");
+        let refused: Vec<_> = findings(lcnc(), &fraction, Rule::LinuxCncRefuses)
+            .into_iter()
+            .map(|f| (f.line, f.column, f.message.starts_with("Non integer value")))
+            .collect();
+        assert_eq!(refused, [(7, 1, true)]);
+        // a number in brackets is that number's label
+        let bracket = named.replace("o100 call", "o[100] call");
+        assert_eq!(fired(lcnc(), &bracket, Rule::TravelExceeded), [(7, 1)]);
         for call in ["o[#1+0] call", "o#2 call"] {
             let text = named.replace("o100 call", call);
             assert_eq!(fired(lcnc(), &text, Rule::TravelExceeded), [], "{call}");

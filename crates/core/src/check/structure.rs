@@ -1004,6 +1004,27 @@ impl Checker {
         label
     }
 
+    /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a parameter
+    /// the checker knows holds a number with a fraction (`#1=100.5`): rs274 stops there,
+    /// "Non integer value for integer" (`read_o` reads the label as an integer; `rs274 -g`;
+    /// review 45, finding L2).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_fractional_label(&mut self, label: &[u8], line: usize, column: usize) {
+        let Some(value) = self.constant(&label[1..]) else {
+            return;
+        };
+        if value.is_whole() {
+            return;
+        }
+        let message = format!(
+            "Non integer value for integer (rs274ngc): the label of {} call is {value}, \
+             and an o-word's number must be a whole number",
+            String::from_utf8_lossy(label)
+        );
+        self.report(Rule::LinuxCncRefuses, message, line, column);
+    }
+
     /// LinuxCNC: a definition's body reads a local named parameter (`#<zz>`, not a global
     /// `#<_zz>`) that no line of the body, nor a word before it in its line, assigns: rs274
     /// keeps local named parameters per call level (interp_namedparams.cc; LinuxCNC O-codes,
@@ -1015,11 +1036,14 @@ impl Checker {
     /// inside a condition or loop of the body is not judged (it may not run), its assignments
     /// are taken as made; the calls of the file's lines, body or not, are noted here.
     fn linuxcnc_body_locals(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
-        for &(_, kind, text) in b.statements {
+        for &(column, kind, text) in b.statements {
             if kind == Kind::Call
                 && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
             {
                 let label = self.linuxcnc_call_label(text);
+                if matches!(label.get(1), Some(b'#' | b'[')) {
+                    self.linuxcnc_fractional_label(&label, b.line, column);
+                }
                 self.linuxcnc_calls.insert(label);
             }
         }
