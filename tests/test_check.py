@@ -658,7 +658,7 @@ def test_review_43_e_each_program_given_up_is_noted_at_its_calls(tmp_path: Path)
              + ["O1000", "G20 G90 G54", "M98 P2", "M98 P3", "M30", "%"])
     cli, api = _review_43(tmp_path, "\n".join(lines) + "\n")
     assert cli == api
-    notes = [(f[0], f[3][:15]) for f in cli if "held more than 1024 findings" in f[3]]
+    notes = [(f[0], f[3][:15]) for f in cli if "held more than 1024 findings of the travel" in f[3]]
     assert notes == [(len(lines) - 3, "M98 P2 calls O0"), (len(lines) - 2, "M98 P3 calls O0")]
 
 

@@ -1305,7 +1305,9 @@ impl ModalMachine {
             self.cycle_taper = Some(taper);
             self.taper_unknown = false;
         } else if touched & bit(letter) != 0
-            || (lap && touched & (bit(b'A') | bit(b'I') | bit(b'K')) != 0)
+            || (lap && touched & (bit(b'A') | bit(b'I')) != 0)
+            // (G33's K is no taper word: 5238-E P-97 gives its taper as I or A; review 46, F2)
+            || (lap && motion == 32 && touched & bit(b'K') != 0)
         {
             self.cycle_taper = None;
             self.taper_unknown = true;

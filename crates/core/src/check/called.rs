@@ -70,6 +70,8 @@ pub(super) struct Early {
     incremental: bool,
     distance_codes: u32,
     moved_first: Option<bool>,
+    /// Such a body's positions from its own G90 on ([`Absolute`]).
+    absolute: Absolute,
     /// The least and the most value of each axis's G53 positions, in the units it is read
     /// in (review 43, A: judged at each call in that call's units).
     machine: Machine,
@@ -78,6 +80,20 @@ pub(super) struct Early {
     /// whoever takes them and whatever the selection (review 43, finding B).
     held: usize,
     reports_from: u64,
+}
+
+/// The positions of a body that moved before writing its own G90/G91, from the G90 it then
+/// writes on: each axis's from its first position in G90 after that code, which is where
+/// the axis is whatever the mode of the call (review 46, F1: `G0 X10.` / `G90` / `G0 X-900.`
+/// called under G91 goes to X-900; finding D's rule had dropped it with the rest). An axis
+/// first moved in G91 after the code stays not known.
+#[derive(Debug, Clone, Copy, Default)]
+struct Absolute {
+    spans: [Option<Span>; 9],
+    least_at: [(usize, usize); 9],
+    most_at: [(usize, usize); 9],
+    /// The axes (their places' bits) whose positions are known from here.
+    known: u16,
 }
 
 /// A G53 position of a program read apart: its value as written, the same in the profile's
@@ -141,6 +157,8 @@ pub(super) struct Pending {
     /// true); a call in the other mode runs those positions otherwise, not known there
     /// (review 43, finding D). None: it wrote its own first, or has no position.
     read_incremental: Option<bool>,
+    /// Its positions from its own G90 on, where `read_incremental` is Some.
+    absolute: Absolute,
     /// That TG140 said at a call (not again at the next).
     mode_said: bool,
     /// Its G53 positions' least and most value on each axis.
@@ -193,6 +211,7 @@ impl Checker {
             incremental: self.machine.state.incremental,
             distance_codes: self.machine.distance_codes,
             moved_first: None,
+            absolute: Absolute::default(),
             machine: [[None; 2]; 9],
             held: 0,
             reports_from: 0,
@@ -270,6 +289,7 @@ impl Checker {
             calls: None,
             feed_said: false,
             read_incremental: (early.moved_first == Some(true)).then_some(early.incremental),
+            absolute: early.absolute,
             mode_said: false,
             machine: early.machine,
         });
@@ -373,6 +393,33 @@ impl Checker {
             // (its first position: before a G90/G91 of its own where the machine has applied
             // none since it began)
             early.moved_first = Some(self.machine.distance_codes == early.distance_codes);
+        } else if early.moved_first == Some(true)
+            && self.machine.distance_codes != early.distance_codes
+        {
+            // (its own G90/G91 written after its first move: an axis's positions are known
+            // from its first in G90)
+            let a = &mut early.absolute;
+            if a.known & (1 << i) == 0 && !self.machine.state.incremental {
+                a.known |= 1 << i;
+            }
+            if a.known & (1 << i) != 0 {
+                let span = joined(
+                    a.spans[i],
+                    Some(Span {
+                        least: at,
+                        most: at,
+                        said: false,
+                    }),
+                )
+                .expect("added");
+                if span.least == at {
+                    a.least_at[i] = (line, column);
+                }
+                if span.most == at {
+                    a.most_at[i] = (line, column);
+                }
+                a.spans[i] = Some(span);
+            }
         }
         let span = self.spans[i].as_mut().expect("added");
         if span.least == at {
@@ -434,7 +481,8 @@ impl Checker {
                 let (name, line) = (name.clone(), *line);
                 let message = format!(
                     "{token} calls {name}, read from the reset state on line {line} and said \
-                     as read there (it held more than {HOLD_MAX} findings): its positions and \
+                     as read there (it held more than {HOLD_MAX} findings of the travel and \
+                     feed limits, or {HOLD_ALL} of any rule): its positions and \
                      feeds were compared in the reset units, not in this call's units and \
                      under its shift"
                 );
@@ -635,7 +683,22 @@ impl Checker {
                 self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
                 self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
             }
-        } else if !p.mode_said
+        } else {
+            // (its positions from its own G90 on are where they are whatever the call's mode)
+            for (i, shift) in shift.into_iter().enumerate() {
+                let Some(span) = p.absolute.spans[i] else {
+                    continue;
+                };
+                if self.travel.of_place(i).is_none() {
+                    continue;
+                }
+                let (l, m) = (p.absolute.least_at[i].0, p.absolute.most_at[i].0);
+                self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
+                self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
+            }
+        }
+        if !known
+            && !p.mode_said
             && (0..AXES.len()).any(|i| p.spans[i].is_some() && self.travel.of_place(i).is_some())
         {
             p.mode_said = true;
@@ -648,7 +711,8 @@ impl Checker {
                 "{token} runs {name} under the {here} in force here (G90/G91 are modal and a call \
                  changes none), and {name} moves before it writes a G90 or G91 of its own: its \
                  positions, read as {read} where it is written, are not known at this call and \
-                 are not compared with the travel (TG601; said at its first such call)",
+                 are not compared with the travel (TG601; said at its first such call), but for \
+                 those of each axis from its first move in a G90 of its own on",
                 name = p.name
             );
             self.report(Rule::NotFollowed, message, line, column);
@@ -1348,6 +1412,14 @@ mod tests {
         assert_eq!(limits(metric.clone(), &same), [(9, 5)]);
         // the call in G90: judged as before
         assert_eq!(limits(metric.clone(), &text.replace("G91\n", "")), [(8, 5)]);
+        // review 46, F1: a G90 of its own after its first move: the positions from there on
+        // are where they are in either mode (X-900 from X700: 1600 mm)
+        let after = "%\nO0002\nG0 X10.\nG90\nG0 X-900.\nM99\nO1000\nG21 G90 G54\n\
+                     G0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), after), [(11, 5)]);
+        // an axis first moved in G91 after it stays not known
+        let relative = after.replace("G0 X-900.", "G91 G0 X-900.");
+        assert_eq!(limits(metric.clone(), &relative), []);
         // its feed is judged all the same, whatever G90/G91 (F500. in/min: 12700 mm/min)
         let fast = "%\nO0002\nG1 X1. F500.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nG91\nM98 P2\n\
                     G90\nM30\n%\n";

@@ -3089,6 +3089,11 @@ mod tests {
             at("G00 X60. Z50.\nG33 X50. Z-30. F1.5\nX-1000.\n"),
             [(4, 1)]
         );
+        // review 46, F2: G33's K is no taper word (5238-E P-97: I or A): no note of a taper
+        let k = "G00 X60. Z50.\nG33 X50. Z-30. F1.5 K0.5\n";
+        assert!(findings(okuma_lathe(), &program(k), Rule::NotFollowed)
+            .iter()
+            .all(|f| !f.message.contains("taper")));
         // (4) G71: said, not silent
         let g71 = "G00 X60. Z50.\nG71 X50. Z-1200. K2. D0.5 F1.5\n";
         assert_eq!(at(g71), []);
