@@ -1119,24 +1119,9 @@ mod tests {
     fn held_findings_keep_their_order() {
         let text = "%\nO1000\nG21 G90\nG0 X-700.\nG0 X900.\nG1 X0 F20000.\nQ5\nM30\n%\n";
         let all = |take_each: bool| {
-            let mut checker = Checker::new(Arc::new(mill(Units::Metric)), Selection::all(), false);
-            let (mut tokens, mut found) = (Vec::new(), Vec::new());
-            for (i, line) in text.lines().enumerate() {
-                checker.check_line(
-                    line.as_bytes(),
-                    i + 1,
-                    &dialect(Family::MacroB),
-                    &mut tokens,
-                );
-                if take_each {
-                    found.extend(checker.drain());
-                }
-            }
-            checker.finish();
-            found.extend(checker.take());
-            found
+            taken(text, Selection::all(), take_each)
                 .into_iter()
-                .map(|f| (f.rule, f.line, f.column))
+                .map(|(rule, line, column, _)| (rule, line, column))
                 .collect::<Vec<_>>()
         };
         assert_eq!(all(true), all(false));
