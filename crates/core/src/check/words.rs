@@ -60,9 +60,14 @@ impl Checker {
             (None, Some(block)) => {
                 // the word that calls: a SINUMERIK's L (`N50 L54`), elsewhere M98/M97 or G65/G66
                 // (`dialect::calls`)
-                let caller = |w: &&Word<'_>| match self.config.family {
-                    Family::Sinumerik => w.letter == b'L' && w.index.is_empty(),
-                    _ => matches!(w.letter, b'M' | b'G'),
+                // (by its number: `G91 M98 P2` names M98, not the block's first G; review 46)
+                let caller = |w: &&Word<'_>| match (self.config.family, w.letter) {
+                    (Family::Sinumerik, letter) => letter == b'L' && w.index.is_empty(),
+                    (_, b'M') => !w.point && matches!(w.value, Some(97 | 98 | 198)),
+                    (_, b'G') => {
+                        !w.point && matches!(w.value, Some(65 | 66)) || w.token().ends_with("66.1")
+                    }
+                    _ => false,
                 };
                 let w = block.words.iter().find(caller).unwrap_or(&block.words[0]);
                 (w.column, format!("{} (subprogram call)", w.token()))
@@ -709,6 +714,17 @@ mod tests {
             "{}",
             found[0].message
         );
+        // the call's word named, not the block's first M or G (review 46, F5)
+        for (block, word) in [("G91 M98 P100", "M98"), ("M08 G65 P100 A1.", "G65")] {
+            let found = findings(macro_b(), &program(block), Rule::NotFollowed);
+            assert!(
+                found[0]
+                    .message
+                    .starts_with(&format!("{word} (subprogram call)")),
+                "{}",
+                found[0].message
+            );
+        }
         assert_eq!(
             fired(macro_b(), &program("G01 X1. F100."), Rule::NotFollowed),
             []
