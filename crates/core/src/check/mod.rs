@@ -1314,9 +1314,19 @@ impl Checker {
 
     /// The findings made since the last call.
     pub fn take(&mut self) -> Vec<Finding> {
+        if self.hold_from.is_none() {
+            return std::mem::take(&mut self.found);
+        }
+        self.take_held()
+    }
+
+    /// [`Checker::take`] while findings are held for a program read apart: they stay
+    /// (crate::check::called).
+    #[cold]
+    #[inline(never)]
+    fn take_held(&mut self) -> Vec<Finding> {
         self.bound_hold();
         match self.hold_from {
-            // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
                 let held = self.found.split_off(from);
                 self.hold_from = Some(0);
@@ -1329,10 +1339,22 @@ impl Checker {
     /// The findings made since the last call, handed over one by one with the list's
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
+    /// (Inline, with nothing held the list's drain alone: asked after every line.)
+    #[inline]
     pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
+        if self.hold_from.is_none() {
+            return self.found.drain(..);
+        }
+        self.drain_held()
+    }
+
+    /// [`Checker::drain`] while findings are held for a program read apart: they stay
+    /// (crate::check::called).
+    #[cold]
+    #[inline(never)]
+    fn drain_held(&mut self) -> std::vec::Drain<'_, Finding> {
         self.bound_hold();
         match self.hold_from {
-            // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
                 self.hold_from = Some(0);
                 self.found.drain(..from)
@@ -2157,12 +2179,9 @@ impl Checker {
         self.values.end_unsure =
             self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
         self.machine.apply_taken(&self.values, taken);
-        if (self.units_unknown || self.early_on) && self.machine.state.units_given {
-            if self.units_unknown {
-                self.units_known_again();
-            }
-            // (a program read apart that writes its own units is read as before)
-            self.early_merge();
+        // (one test of the two flags on a plain block: both are seldom set)
+        if self.units_unknown | self.early_on {
+            self.units_given_now();
         }
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);

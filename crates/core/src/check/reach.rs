@@ -154,9 +154,11 @@ impl Checker {
                 _ => {}
             }
         }
+        // (read, not taken: most blocks have a sequence number and no unreached part ended)
         if (in_loop_statement || self.letters & crate::modal::bit(b'N') != 0)
-            && self.reach.left.take().is_some()
+            && self.reach.left.is_some()
         {
+            self.reach.left = None;
             self.reach.resumed = b.line;
         }
         if b.skip || b.skip_within.is_some() || self.reach.loops > 0 {

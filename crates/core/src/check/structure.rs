@@ -465,6 +465,20 @@ impl Checker {
         }
     }
 
+    /// After a block's state is applied, where the units are not known or a program is read
+    /// apart ([`Checker::early_merge`]): a units code the block wrote makes them known, and a
+    /// program read apart that writes its own units is read as before.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn units_given_now(&mut self) {
+        if self.machine.state.units_given {
+            if self.units_unknown {
+                self.units_known_again();
+            }
+            self.early_merge();
+        }
+    }
+
     /// A subprogram whose units were not known has written a units code: its lengths are
     /// known from here. The axes the block does not write stand where lengths in unknown
     /// units put them: not known.
