@@ -2247,17 +2247,21 @@ impl Checker {
     }
 
     pub(super) fn program_number(&mut self, b: &BlockView<'_>) {
-        let first = self.first_words;
-        self.first_words = false;
-        if first && self.programs == 0 && self.config.family == Family::MacroB {
-            // the file's first program, read from the reset state: it may be the subprogram
-            // of a call later in the file (a memory backup's O0002 before its O1000)
-            self.first_program(b);
+        // (the first block of words asked once: it is in its place)
+        if self.first_words {
+            self.first_words = false;
+            if self.programs == 0 && self.config.family == Family::MacroB {
+                // the file's first program, read from the reset state: it may be the
+                // subprogram of a call later in the file (a memory backup's O0002 before its
+                // O1000)
+                self.first_program(b);
+            }
+            return;
         }
         let Some(letter) = self.config.program_number else {
             return;
         };
-        if letter == b':' || first || matches!(letter, b'P' | b'Q' | b'R') {
+        if letter == b':' || matches!(letter, b'P' | b'Q' | b'R') {
             return;
         }
         // (the letters mask: a block without the letter has no such word to look for)
