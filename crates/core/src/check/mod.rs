@@ -1336,6 +1336,14 @@ impl Checker {
         }
     }
 
+    /// Whether any finding was made since the last call ([`Checker::drain`] hands over none
+    /// where not: a report written as the lines are checked asks after every line, and most
+    /// lines find nothing).
+    #[inline]
+    pub fn found_any(&self) -> bool {
+        !self.found.is_empty()
+    }
+
     /// The findings made since the last call, handed over one by one with the list's
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
