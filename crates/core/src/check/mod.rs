@@ -741,6 +741,10 @@ pub struct Checker {
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
+    /// The bit in [`Checker::letters`] of the profile's program number letter, which TG113
+    /// looks for in a block after the first ([`Checker::program_number`]): 0 where none is
+    /// looked for (none, `:`, or P, Q, R), every bit for a letter the mask does not hold.
+    program_letter: u32,
     /// The program part a memory backup's folder marker (`&F=/USER/PATH2/`) began holds
     /// nothing else yet: an empty folder, not a program (no TG114 at its end).
     empty_folder: bool,
@@ -1115,6 +1119,11 @@ pub struct Checker {
 
 impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
+        let program_letter = match config.program_number {
+            None | Some(b':' | b'P' | b'Q' | b'R') => 0,
+            Some(letter) if letter.is_ascii_uppercase() => bit(letter),
+            Some(_) => u32::MAX,
+        };
         let mut machine = ModalMachine::new(config.modal.clone());
         // a dialect's program starts where the operator or its caller left the machine: no
         // position is known, as at the start of every later program of the file
@@ -1140,6 +1149,7 @@ impl Checker {
             found: Vec::new(),
             first: true,
             first_words: true,
+            program_letter,
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,

@@ -2258,14 +2258,15 @@ impl Checker {
             }
             return;
         }
+        // (the letters mask: a block without the letter has no such word to look for; the
+        // profile's letter read once, Checker::program_letter)
+        if self.letters & self.program_letter == 0 && self.program_letter != u32::MAX {
+            return;
+        }
         let Some(letter) = self.config.program_number else {
             return;
         };
         if letter == b':' || matches!(letter, b'P' | b'Q' | b'R') {
-            return;
-        }
-        // (the letters mask: a block without the letter has no such word to look for)
-        if letter.is_ascii_uppercase() && self.letters & crate::modal::bit(letter) == 0 {
             return;
         }
         for w in b.words {
