@@ -2,13 +2,17 @@
 
 :class:`PendingFile` is tapegate's one way to write a file: received programs, conversions, tape
 images. The data goes to a hidden temporary file in the target folder, which is fsync'd, given
-its name by a rename (or a link, which never replaces a file that appeared meanwhile), and the
+its name by a rename (or a link, which never replaces a file that appeared meanwhile; on FAT
+and exFAT, which have no links, a rename that never replaces one), and the
 folder is fsync'd so the name survives a power cut. A target that is no regular file (`-o
 /dev/null`, a FIFO, a terminal) is written into, never renamed over: a rename would put a
 regular file where the device was (as root, /dev/null itself). The temporary file is created
 with mode 0666 and the process's umask, as any file the user creates (a program is for sharing
 with the DNC service account); the umask is never changed, so threads writing at the same time
-are safe.
+are safe. One that replaces a regular file (``overwrite``, ``--force``) takes that file's
+permission bits and, where the system allows it, its owner and group, before its fsync (as
+``install -p`` does; review 42, finding 5); a symbolic link there is replaced, not followed,
+and the new file is made as a new one is.
 
 The temporary file's making, its commit (the fsync, the rename or link, the file removed if a
 step fails) and its removal are the core's (``formats._core``, crates/python/src/commits.rs),
@@ -24,6 +28,7 @@ module and leaves the signal's default action) can.
 
 from __future__ import annotations
 
+import errno
 import os
 import stat
 
@@ -193,6 +198,52 @@ def is_special(path: str | os.PathLike[str]) -> bool:
     except OSError:
         return False
     return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
+
+
+def opened_stream(path: str) -> tuple[int, bytes] | None:
+    """How an input named ``path`` (not ``-``) may be read without waiting for good: None for
+    a regular file, a folder or a name that is not there (read by its name, where any error is
+    told); for a pipe (a FIFO, a process substitution's ``/dev/fd/63``, ``/dev/stdin`` piped
+    in) that a writer holds open, ``(its descriptor, the bytes already there)``, the
+    descriptor blocking again and the caller's to close. An ``OSError`` naming ``path`` for
+    the rest, which is never read: a pipe that no writer holds (reading it would wait for one
+    for good: review 42, finding 6), a character or block device, a socket (a device is never
+    opened at all: the open of a serial port or a tape drive acts on it).
+
+    A FIFO is opened ``O_NONBLOCK``, which never waits for a writer, and read once: no byte and
+    no writer (end of file) is refused; bytes, or none yet with a writer there (``EAGAIN``: a
+    writer waiting in its own open counts), is a stream to read to its end. A writer started
+    after this (``tapegate check f.nc & cat x > f.nc``) is too late: start it first, or pipe
+    into ``-``."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return None
+    if stat.S_ISREG(mode) or stat.S_ISDIR(mode):
+        return None
+    if not stat.S_ISFIFO(mode):
+        kind = ("a character device" if stat.S_ISCHR(mode) else "a block device"
+                if stat.S_ISBLK(mode) else "a socket" if stat.S_ISSOCK(mode) else "no file")
+        raise OSError(errno.EINVAL, f"not a regular file but {kind} (- reads standard input)",
+                      path)
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+    try:
+        if not stat.S_ISFIFO(os.fstat(fd).st_mode):  # (replaced since its stat)
+            raise OSError(errno.EINVAL, "not a regular file (- reads standard input)", path)
+        try:
+            head = os.read(fd, 1 << 16)
+        except BlockingIOError:  # a writer, nothing written yet
+            head, writer = b"", True
+        else:
+            writer = bool(head)
+        if not writer:
+            raise OSError(errno.ENXIO, "a pipe (FIFO) with no writer and nothing in it "
+                          "(start its writer first, or pipe it into -)", path)
+        os.set_blocking(fd, True)
+    except BaseException:
+        os.close(fd)
+        raise
+    return fd, head
 
 
 def write_atomic(path: str | os.PathLike[str], data: bytes, *, overwrite: bool = True) -> Path:

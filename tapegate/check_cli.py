@@ -13,7 +13,7 @@ from formats.errors import OutputError
 from formats.profile import load_profile
 from postproc.rules import READING_RULES
 from tapegate.checking import run_check
-from tapegate.common import get_profile, plural, shown_output, user_errors
+from tapegate.common import get_profile, input_path, plural, shown_output, user_errors
 from tapegate.options import UsageProblem, profile_option
 
 
@@ -77,9 +77,10 @@ def plot(file: str, profile: str | None, output: str, view: str | None,
         raise UsageProblem("plot needs matplotlib, the optional 'plot' extra: "
                            "pip install 'tapegate[plot]'") from None
 
-    prof = load_profile(profile) if profile else get_profile(None, file)
+    path = input_path(file)  # (a pipe by its name read from a copy; a device refused)
+    prof = load_profile(profile) if profile else get_profile(None, path)
     view = view or default_view(prof)
-    bp = backplot_file(file, prof)
+    bp = backplot_file(path, prof)
     marked = draw(bp, output, view=view, title=f"{file} ({view})", findings=findings)
     impossible = sum(m.impossible for m in bp.moves)
     arcs = sum(m.arc for m in bp.moves) - impossible  # as --stats counts them: chords are none

@@ -67,8 +67,17 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     if not files:
         raise usage(f"no file to check in {', '.join(given)}")
     parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
-    paths = {name: readable(name) for name in files}
-    prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
+    # a file's path, or why it is not read (a FIFO with no writer, a device: never opened),
+    # told at its turn as a file that cannot be read
+    paths: dict[str, str | OSError] = {}
+    for name in files:
+        try:
+            paths[name] = readable(name)
+        except OSError as exc:
+            paths[name] = exc
+    head = paths[files[0]]
+    prof = (load_profile(profile) if profile else
+            get_profile(None, head if isinstance(head, str) else None))
     if units is not None:  # the units the machine is set to at the start (--units)
         from formats.profile import with_start_units
 
@@ -127,7 +136,7 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
 
 
-def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str],
+def _check_one(item: tuple[str | OSError, str], prof: Profile, fmt: str, select: list[str],
                ignore: list[str], send: Callable[[Any], object], show_stats: bool,
                raw: bool = False, fold: bool = False
                ) -> tuple[dict[str, int], CheckStats | None, str | None]:
@@ -144,6 +153,8 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
 
     path, name = item
     counts = dict.fromkeys(SEVERITY_RANK, 0)
+    if not isinstance(path, str):  # refused unread (run_check)
+        return counts, None, f"tapegate: cannot read {name}: {path.strerror or path}"
     try:
         if fmt == "sarif":
             checker, found = iter_check_file(path, prof, display=name, select=select,

@@ -13,6 +13,7 @@ written, 3 the link failed.
 from __future__ import annotations
 
 import os
+import stat as _stat
 import sys
 
 from formats.errors import TapegateError
@@ -184,14 +185,47 @@ _SPOOLED: list[Any] = []  # standard input's temporary copies, alive while the c
 
 def readable(name: str) -> str:
     """The path a file argument is read from: ``-`` is standard input, copied once to a
-    temporary file (a program is read more than once: detection, parameters, conversion)."""
+    temporary file (a program is read more than once: detection, parameters, conversion);
+    any other name as :func:`input_path` takes it."""
     if name != "-":
+        return input_path(name)
+    return _spooled(sys.stdin.buffer)
+
+
+def input_path(name: str) -> str:
+    """The path an input named ``name`` (not ``-``) is read from: itself, but for a pipe given
+    by its name (``<(cmd)``, ``/dev/stdin`` piped in, a FIFO) that a writer holds open, which
+    is copied to a temporary file as standard input is (read more than once, a pipe gave its
+    bytes to the first reading: a check without ``--profile``, ``parse``, ``diff`` and
+    ``convert`` of ``<(cat x.nc)`` read an empty program). An ``OSError`` naming it (told as
+    "cannot read NAME: ...", exit 2) where it would wait for good or act on a device: a FIFO
+    with no writer, a character device, a socket -- never opened to be read
+    (:func:`formats.files.opened_stream`; review 42, finding 6). A regular file costs one
+    ``stat``."""
+    try:
+        if _stat.S_ISREG(os.stat(name).st_mode):
+            return name
+    except OSError:  # told when it is read, as before
         return name
+    from formats.files import opened_stream
+
+    stream = opened_stream(name)
+    if stream is None:  # a folder
+        return name
+    fd, head = stream
+    with open(fd, "rb") as pipe:
+        return _spooled(pipe, head)
+
+
+def _spooled(stream: Any, head: bytes = b"") -> str:
+    """``head`` and the rest of ``stream`` copied to a temporary file, kept while the command
+    runs: its path."""
     import shutil
     import tempfile
 
     spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
-    shutil.copyfileobj(sys.stdin.buffer, spool)
+    spool.write(head)
+    shutil.copyfileobj(stream, spool)
     spool.flush()
     _SPOOLED.append(spool)
     return spool.name

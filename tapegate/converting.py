@@ -13,7 +13,15 @@ from formats.errors import OutputError, TapegateError
 from formats.files import is_special
 from formats.profile import load_profile
 from formats.wordformat import Rounding, Zeros
-from tapegate.common import echo, readable, table, usage, user_errors, write_stream
+from tapegate.common import (
+    echo,
+    input_path,
+    readable,
+    table,
+    usage,
+    user_errors,
+    write_stream,
+)
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -50,30 +58,37 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         import tempfile
 
         output = os.path.join(tempfile.mkdtemp(prefix="tapegate-"), "out.nc")
-    if out_dir and not dry_run:  # a file where the folder (or one above it) would be
-        there = _existing(out_dir)
-        if there is not None and not os.path.isdir(there):
-            raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
-    jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
-    options = ConvertOptions(
-        target=load_profile(to_profile),
-        source=load_profile(from_profile) if from_profile else None,
-        decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
-        rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
-        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
-        from_units=from_units)
-    from tapegate.launch import resume_collector
-    from tapegate.workers import default_jobs
-
     spill = SpillFolder()  # a long file's notes wait there
-    resume_collector()  # (the entry point's start-up without the collector ends here)
     try:
+        if out_dir and not dry_run:  # a file where the folder (or one above it) would be
+            there = _existing(out_dir)
+            if there is not None and not os.path.isdir(there):
+                raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
+        jobs_list = batch_jobs(inputs, output, out_dir, dry_run, names)
+        options = ConvertOptions(
+            target=load_profile(to_profile),
+            source=load_profile(from_profile) if from_profile else None,
+            decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
+            rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
+            from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
+            from_units=from_units)
+        from tapegate.launch import resume_collector
+        from tapegate.workers import default_jobs
+
+        resume_collector()  # (the entry point's start-up without the collector ends here)
         results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
                             verify=verify, names=names, make_folders=out_dir is not None,
                             spill=spill)
         _report(results, output, to_stdout, dry_run, fmt)
     finally:
         spill.remove()
+        if to_stdout and output is not None:
+            # (-o -: the folder the program was written in before it went to stdout, with
+            # what is left in it where ^C, SIGTERM or an error stopped the command before or
+            # while it was copied; review 44, finding 4)
+            import shutil
+
+            shutil.rmtree(os.path.dirname(output), ignore_errors=True)
 
 
 def _existing(name: str) -> str | None:
@@ -219,20 +234,30 @@ def summary_json(results: list[ConvertStats], dry_run: bool) -> str:
 
 
 def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
-               dry_run: bool) -> list[tuple[str, str | None]]:
+               dry_run: bool, names: dict[str, str] | None = None
+               ) -> list[tuple[str, str | None]]:
     """(input file, output file or None) for every file named by the inputs. The paths are
     written as ``pathlib`` writes them (:func:`formats.files.pure`), without its objects
-    (a tenth of a 200-file batch's serial start-up went to them)."""
+    (a tenth of a 200-file batch's serial start-up went to them). An input named that is a
+    pipe with a writer (``<(cmd)``) is read from a copy (:func:`tapegate.common.input_path`;
+    its name in ``names``, the copy's path its job's); a FIFO no program writes, a device or
+    a socket is refused with an ``OSError`` before anything is read (a folder's listing has
+    none of them: only files and links are listed)."""
     from formats.files import joined, pure
     from tapegate.workers import folder_files
 
     files: list[tuple[str, str]] = []  # (file, path relative to the output folder)
+    streams: dict[str, str] = {}  # a pipe named: the copy it is read from
     for name in inputs:
         if os.path.isdir(name or "."):  # ("": pathlib's ".")
             files.extend(folder_files(name))
         elif os.path.exists(name):
             path = pure(name)
             files.append((path, os.path.basename(path)))
+            if is_special(path):  # a pipe given by its name: copied, as - is; else refused
+                streams[path] = input_path(path)
+                if names is not None:
+                    names[streams[path]] = path
         else:  # a pattern (a shell that does not expand them): glob only here
             import glob
             from pathlib import Path
@@ -260,7 +285,7 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
             if target in seen:
                 raise usage(f"two inputs would both be written to {target}")
             seen.add(target)
-        jobs.append((path, target))
+        jobs.append((streams.get(path, path), target))
     return jobs
 
 

@@ -54,7 +54,7 @@ from dnc.workflow import StopSignals
 from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
-from tapegate.common import get_profile, plural, user_errors
+from tapegate.common import get_profile, input_path, plural, user_errors
 from tapegate.options import FiniteRange, Height, profile_option
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -193,7 +193,8 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None,
 
     SIGINT (Ctrl-C) or SIGTERM ends the transfer cleanly: it is journalled "interrupted" and
     the command exits 130 (SIGINT) or 143 (SIGTERM)."""
-    prof = get_profile(profile, file)
+    path = input_path(file)  # (a pipe by its name read from a copy; a device refused)
+    prof = get_profile(profile, path)
     if clearance is not None:
         if not restart_at:
             raise click.UsageError("--clearance is the approach height of --restart-at")
@@ -207,13 +208,13 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None,
         # the operator's safe height, as the profile's own [restart] clearance would be
         prof = replace(prof, restart=replace(prof.restart, clearance=clearance))
     settings = override(link_settings(prof, kw), dc3_reaction=dc3_reaction)
-    open(file, "rb").close()
+    open(path, "rb").close()
     source = get_profile(from_profile) if do_convert and from_profile else None
     record = journal_for(journal)
     show = sys.stderr.isatty() if progress is None else progress
     with StopSignals() as signals:
         try:
-            with workflow.prepare(file, prof, settings, name=file, force=force,
+            with workflow.prepare(path, prof, settings, name=file, force=force,
                                   restart_at=restart_at, convert=do_convert, source=source,
                                   on_event=_prepared) as program:
                 if program.restart and not yes:

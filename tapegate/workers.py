@@ -26,8 +26,10 @@ nothing here may wait for room, which only the main thread makes). An ``Exceptio
 function is raised at its turn, as a thread's; ^C (``KeyboardInterrupt``, when the core
 hands a slice over or ends a file) and SIGTERM's exit leave at once, the threads stopped
 (docs/benchmarks.md, "the main thread as a worker") -- raised in the main thread only where
-it waits, does its own item or runs the caller's code, else at its next such point, never
-inside the map's lock and condition code (:func:`_signalled`; review 39, finding 7).
+it waits, does its own item, runs the caller's code or joins the stopped threads (a second
+^C there ends the command, the threads left: review 42, finding 6), else at its next such
+point, never inside the map's lock and condition code (:func:`_signalled`; review 39,
+finding 7).
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
@@ -57,6 +59,7 @@ from __future__ import annotations
 
 import _thread
 import os
+import sys
 from _collections import deque
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
@@ -168,15 +171,16 @@ def send(piece: Any) -> None:
 
 
 def _signalled(state: _Map, signum: int) -> None:
-    """SIGINT (^C) or SIGTERM (a CI job's timeout, `kill`) in the main thread while a map's
+    """SIGINT (^C), SIGTERM (a CI job's timeout, `kill`) or SIGHUP (where a command makes it an
+    exit: its terminal closed) in the main thread while a map's
     threads run: ``KeyboardInterrupt``, or an exit with 128 + the signal's number, through the
     ``finally`` clause that stops the threads -- raised at once where the main thread is at a
     point where an exception is safe (``state.safe``: waiting for a notify, doing its own
-    item, or running the caller's code), else held (``state.pending``) and raised at its next
-    such point, soon after. Raised anywhere, it could land between a lock's acquire and the
-    ``with`` that releases it, or between a waiter taken off a condition's list and its
-    release, and the threads' join then waited for ever (1 in 15 interrupted `convert -j 2`
-    batches hung so; review 39, finding 7)."""
+    item, running the caller's code, or joining the threads once they are stopped), else
+    held (``state.pending``) and raised at its next such point, soon after. Raised anywhere,
+    it could land between a lock's acquire and the ``with`` that releases it, or between a
+    waiter taken off a condition's list and its release, and the threads' join then waited
+    for ever (1 in 15 interrupted `convert -j 2` batches hung so; review 39, finding 7)."""
     error = KeyboardInterrupt() if signum == _SIGINT else SystemExit(128 + signum)
     if state.safe:
         state.safe = False  # (the code that handles it is not a safe point)
@@ -580,6 +584,15 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         try:
             handlers.append((_signal.SIGTERM, _signal.signal(
                 _signal.SIGTERM, lambda signum, frame: _signalled(state, signum))))
+            # SIGHUP (the terminal closed) where a command made it an exit anywhere
+            # (formats.files.exit_on_termination): held to a safe point as SIGTERM is (review
+            # 44, finding 8: 2 of 140 batches so stopped hung in the map's locks)
+            hup = getattr(_signal, "SIGHUP", None)  # (none on Windows)
+            files = sys.modules.get("formats.files")  # (loaded where that exit was set)
+            if (hup is not None and files is not None
+                    and _signal.getsignal(hup) is files._exit_signalled):
+                handlers.append((hup, _signal.signal(
+                    hup, lambda signum, frame: _signalled(state, signum))))
             if _signal.getsignal(_signal.SIGINT) is _signal.default_int_handler:
                 # (^C's KeyboardInterrupt; a SIGINT ignored, or handled by the caller, is left
                 # so)
@@ -618,22 +631,35 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         # stopped or done: a thread sending stops at once, one in the core at its chunk's end
         state.safe = False
         state.stop()
-        for lock in started:
-            lock.acquire()  # the thread's join
-        state.close()
-        for signum, before in reversed(handlers):
-            _signal.signal(signum, before)
+        joined = False
+        try:
+            # The join is a safe point: a signal that lands here (the second ^C, SIGTERM) is
+            # raised at once and the threads, stopped, daemon threads, are left to the
+            # process's end. Held, it had no later point to be raised at: a thread that never
+            # came back from the core (an input that never ends) made the command deaf to
+            # every ^C (review 42, finding 6). (One held before the join is raised after it,
+            # below, as before.)
+            state.safe = True
+            for lock in started:
+                lock.acquire()  # the thread's join
+            joined = True
+        finally:
+            state.safe = False
+            if joined:  # (a thread left running may still write its spill file)
+                state.close()
+            for signum, before in reversed(handlers):
+                _signal.signal(signum, before)
     if state.pending is not None and done:  # (a signal held to the end: raised now)
         raise state.pending
 
 
-def file_sizes(paths: Iterable[str]) -> list[int]:
-    """Each file's size in bytes (0 for one that cannot be read: it is reported at its turn),
-    the work :func:`first` weighs."""
+def file_sizes(paths: Iterable[str | OSError]) -> list[int]:
+    """Each file's size in bytes (0 for one that cannot be read, or an ``OSError`` for one
+    refused unread: it is reported at its turn), the work :func:`first` weighs."""
     sizes = []
     for path in paths:
         try:
-            sizes.append(os.stat(path).st_size)
+            sizes.append(os.stat(path).st_size if isinstance(path, str) else 0)
         except OSError:
             sizes.append(0)
     return sizes

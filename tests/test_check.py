@@ -17,7 +17,7 @@ from formats.errors import ProfileError
 from formats.parser import parse_stream, parse_text
 from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.tape import encode, iso_byte
-from postproc.check import Checker, check_text
+from postproc.check import Checker, check_text, iter_check_file
 from postproc.rules import markdown
 from postproc.state import ModalMachine, state_at
 from tapegate.cli import main
@@ -425,6 +425,55 @@ def test_issue_32_a_lathe_s_thread_and_single_cycles_reach_the_spans(tmp_path: P
 
 
 
+def test_review_44_a_lathe_s_repetitive_cycles_tapers_and_okuma_threads_reach_the_spans(
+    tmp_path: Path,
+) -> None:
+    """Review 44, F5, F1, F2: the end point X(U) Z(W) of a FANUC or Haas lathe's G74, G75,
+    G76 (FANUC 0i-TF operator's manual, "Multiple repetitive cycle (G70-G76)"; Haas's one
+    block), a single cycle's taper corner (FANUC R; Haas I, and K for G94) and an Okuma
+    lathe's G33 (OSP-P200L 5238-E, 2-1: back at the starting point, its taper I) reach the
+    TG601 spans; an Okuma G71 thread cycle is said not to be compared (TG140). fanuc-lathe X
+    -10 to 500, Z -800 to 300; haas-lathe (inches) X -1 to 16, Z -22 to 12; okuma-lathe X
+    -10 to 1100, Z -100 to 1100."""
+    def found(profile: str, *body: str) -> list[tuple[int, int, str]]:
+        path = tmp_path / "t.nc"
+        path.write_text("%\nO1\n" + "\n".join(body) + "\nM30\n%\n")
+        out = run("check", str(path), "-p", profile, "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["column"], f["rule"]) for f in map(json.loads, out.splitlines())]
+
+    head = ("G21 G18 G99", "G0 X60. Z5.")
+    # F5: the review's programs
+    assert found("fanuc-lathe", *head, "G76 P010060 Q100 R0.05",
+                 "G76 X50. Z-1200. P1000 Q300 F1.5") == [(6, 10, "TG601")]
+    assert found("fanuc-lathe", *head, "G75 R0.5", "G75 X-600. Z-30. P1000 Q2000 F0.1") \
+        == [(6, 5, "TG601")]
+    assert found("fanuc-lathe", *head, "G74 R0.5", "G74 Z-1200. Q5000 F0.1") \
+        == [(6, 5, "TG601")]
+    assert found("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G76 X1.8 Z-35. K0.05 D0.01 F0.0625") \
+        == [(5, 10, "TG601")]
+    # the tool back at Z5. after G76: W-800. from there stays inside (-795)
+    assert found("fanuc-lathe", *head, "G76 P010060 Q100 R0.05",
+                 "G76 X50. Z-30. P1000 Q300 F1.5", "G0 W-800.") == []
+    # F1: the review's taper programs
+    assert found("fanuc-lathe", "G21 G18 G99", "G0 X60. Z50.", "G90 X50. Z-30. R-300. F0.2",
+                 "G0 X100. Z100.") == [(5, 5, "TG601")]
+    assert found("fanuc-lathe", "G21 G18 G99", "G0 X60. Z50.", "G94 X20. Z0 R-1100. F0.2",
+                 "G0 X100. Z100.") == [(5, 10, "TG601")]
+    assert found("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G90 X1.8 Z-1. I-9. F0.01") \
+        == [(5, 5, "TG601")]
+    assert found("haas-lathe", "G20 G18", "G0 X2. Z0.1", "G94 X1. Z0 K-35. F0.01") \
+        == [(5, 9, "TG601")]
+    # F2: Okuma G33 returns to its start point (1), (2), its taper I (3), G71 said (4)
+    okuma = ("G0 X60. Z50.", "G33 X50. Z-30. F1.5")
+    assert found("okuma-lathe", *okuma, "G0 W1130.") == [(5, 4, "TG601")]
+    assert found("okuma-lathe", *okuma, "G0 W-1130.", "G0 X100. Z100.") == []
+    assert found("okuma-lathe", "G0 X60. Z50.", "G33 X50. Z-30. I-600. F1.5") \
+        == [(4, 5, "TG601")]
+    assert found("okuma-lathe", "G0 X60. Z50.", "G71 X50. Z-1200. K2. D0.5 F1.5") \
+        == [(4, 1, "TG140")]
+
+
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(
         tmp_path: Path) -> None:
     """Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is
@@ -551,6 +600,101 @@ def test_review_42_the_hold_of_a_program_read_apart_is_bounded(tmp_path: Path) -
     assert [f["message"][:45] for f in got if f["line"] == call and f["rule"] == "TG140"
             and f["message"].startswith("M98 P2 calls")] == [
         "M98 P2 calls O0002, read from the reset state"]
+
+
+def _review_43(tmp_path: Path, program: str, select: str = "TG6,TG140"
+               ) -> tuple[list[tuple[int, int, str, str]], list[tuple[int, int, str, str]]]:
+    """The findings of ``program`` on fanuc-mill through the CLI (a report written as the lines
+    are checked) and through the Python API's ``check_text`` (the core's findings taken once a
+    chunk; ``iter_check_file`` alike): (line, column, rule, message) each."""
+    path = tmp_path / "p.nc"
+    path.write_text(program)
+    out = run("check", str(path), "-p", "fanuc-mill", "--select", select, "--all",
+              "--format", "jsonl").stdout
+    cli = [(f["line"], f["column"], f["rule"], f["message"])
+           for f in map(json.loads, out.splitlines())]
+    profile = load_profile("fanuc-mill")
+    api = [(f.line, f.column, f.rule, f.message)
+           for f in check_text(program, profile, select=select.split(","))]
+    _, streamed = iter_check_file(str(path), profile, select=select.split(","))
+    assert [(f.line, f.column, f.rule, f.message) for f in streamed] == api
+    return cli, api
+
+
+def _machine_body(number: str, n: int) -> list[str]:
+    return [number, "G1 X0 Y0 F100."] + ["G53 G0 X-900."] * n + ["M99"]
+
+
+def test_review_43_b_the_hold_s_bound_is_the_same_through_the_cli_and_the_api(
+        tmp_path: Path) -> None:
+    """Review 43, finding B: bound.nc, a body of 1100 ``G53 G0 X-900.`` read apart: the CLI
+    gave 1100 TG601 and the note of its call, check_text (the core taken once a chunk) none.
+    The bound is counted where a finding is held, whatever takes them or is selected."""
+    lines = ["%"] + _machine_body("O0002", 1100) + ["O1000", "G20 G90 G54", "M98 P2", "M30", "%"]
+    bound = "\n".join(lines) + "\n"
+    cli, api = _review_43(tmp_path, bound)
+    assert cli == api
+    assert len([f for f in cli if f[2] == "TG601"]) == 1100
+    call = len(lines) - 2
+    assert [f[:3] for f in cli if f[3].startswith("M98 P2 calls O0002, read from the reset")] \
+        == [(call, 5, "TG140")]
+    # the same note with TG140 alone: the bound does not count what the selection says
+    cli, api = _review_43(tmp_path, bound, "TG140")
+    assert cli == api
+    assert [f[:3] for f in cli if f[3].startswith("M98 P2 calls O0002, read from the reset")] \
+        == [(call, 5, "TG140")]
+    # 1000 of them: held, said at the call in its units, through both
+    small = bound.replace("G53 G0 X-900.\n" * 100, "", 1)
+    cli, api = _review_43(tmp_path, small)
+    assert cli == api
+    assert len([f for f in cli if f[2] == "TG601"]) == 1000
+    assert all("as called by M98 P2 of line 1007" in f[3] for f in cli if f[2] == "TG601")
+
+
+def test_review_43_e_each_program_given_up_is_noted_at_its_calls(tmp_path: Path) -> None:
+    """Review 43, finding E: two.nc, O0002 and O0003 each of 1100 G53 lines: the note of the
+    first given up was lost to the second's. Each call of each now has its own."""
+    lines = (["%"] + _machine_body("O0002", 1100) + _machine_body("O0003", 1100)
+             + ["O1000", "G20 G90 G54", "M98 P2", "M98 P3", "M30", "%"])
+    cli, api = _review_43(tmp_path, "\n".join(lines) + "\n")
+    assert cli == api
+    notes = [(f[0], f[3][:15]) for f in cli if "held more than 1024 findings" in f[3]]
+    assert notes == [(len(lines) - 3, "M98 P2 calls O0"), (len(lines) - 2, "M98 P3 calls O0")]
+
+
+def test_review_43_d_a_call_under_g91_runs_the_body_incremental(tmp_path: Path) -> None:
+    """Review 43, finding D: callg91b.nc, ``G0 X900.`` of a body read apart, called under
+    G91 after ``G0 X-700.``: the body runs incremental (G90/G91 are modal and a call changes
+    none), so "X spans 1600" was false. A TG140 at the call says its positions are not known
+    there; a body that writes its own G90 first is judged as before."""
+    callg91b = ("%\nO0002\nG0 X900.\nM99\nO1000\nG21 G90 G54\nG0 X-700. Y0\nG91\nM98 P2\n"
+                "G90\nM30\n%\n")
+    cli, api = _review_43(tmp_path, callg91b)
+    assert cli == api
+    assert not [f for f in cli if f[2] == "TG601"]
+    assert [f[:3] for f in cli if f[3].startswith("M98 P2 runs O0002 under the G91")] == [
+        (9, 5, "TG140")]
+    own = callg91b.replace("O0002\n", "O0002\nG90\n")
+    cli, api = _review_43(tmp_path, own)
+    assert cli == api
+    assert [(f[0], f[3].split(",")[0]) for f in cli if f[2] == "TG601"] == [
+        (10, "X spans 1600 (from -700 to 900)")]
+
+
+def test_review_43_a_a_machine_position_is_judged_in_the_call_s_units(tmp_path: Path) -> None:
+    """Review 43, finding A's remainder: a body's ``G53 G0 X-700.``, within the travel as read
+    in mm, runs to -700 in (-17780 mm) under a G20 call: said at the call (g53in.nc gave
+    nothing); under G21 nothing, as before."""
+    g53in = "%\nO0002\nG53 G0 X-700.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n"
+    cli, api = _review_43(tmp_path, g53in)
+    assert cli == api
+    said = [f for f in cli if f[2] == "TG601"]
+    assert [f[:2] for f in said] == [(8, 5)]
+    assert said[0][3].startswith("X goes to -700 in (-17780 mm) in machine coordinates (G53)")
+    assert "O0002 runs in inches as called by M98 P2 of line 8, its position of line 3" \
+        in said[0][3]
+    cli, _ = _review_43(tmp_path, g53in.replace("G20", "G21"))
+    assert not [f for f in cli if f[2] == "TG601"]
 
 
 def test_a_units_change_keeps_where_the_machine_is():
@@ -1293,7 +1437,8 @@ def test_review_43_a_machine_position_of_a_body_read_before_its_call_in_other_un
     """Review 43, finding A: `G53 G0 X-900.` in O0002, called under G20 from a later O1000,
     runs at -900 in, beyond the travel as -900 mm already is: said, naming the call (sub43
     had dropped it, where the check before sub41 said it). Called under G21 on an inch
-    profile, the position may be within the travel: a TG140 says it is not judged."""
+    profile, its value is judged in mm there (fix44, finding A's remainder; a TG140 said it
+    was not): X-40. is inside, X-800. beyond."""
     path = tmp_path / "g53.nc"
     path.write_text("%\nO0002\nG53 G0 X-900.\nM99\nO1000\nG20 G90 G54\nM98 P2\nM30\n%\n")
     out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG601,TG140",
@@ -1307,5 +1452,12 @@ def test_review_43_a_machine_position_of_a_body_read_before_its_call_in_other_un
               "--format", "jsonl").stdout
     found = [json.loads(line) for line in out.splitlines()]
     assert [f for f in found if f["rule"] == "TG601"] == []
-    assert any(f["rule"] == "TG140" and "machine positions" in f["message"]
-               and f["line"] == 7 for f in found)
+    assert not [f for f in found if "machine positions" in f["message"]]
+    path.write_text("%\nO0002\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nM98 P2\nM30\n%\n")
+    out = run("check", str(path), "-p", "haas-mill", "--select", "TG601,TG140",
+              "--format", "jsonl").stdout
+    errors = [json.loads(line) for line in out.splitlines() if '"TG601"' in line]
+    assert [(f["line"], f["column"]) for f in errors] == [(7, 5)]
+    assert errors[0]["message"].startswith(
+        "X goes to -800 mm (-31.496063 in) in machine coordinates (G53)")
+    assert "O0002 runs in millimetres as called by M98 P2 of line 7" in errors[0]["message"]

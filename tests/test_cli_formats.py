@@ -218,6 +218,29 @@ def test_outputs_are_written_one_way(tmp_path, sample_program):
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".part")]
 
 
+def test_convert_force_keeps_the_mode_of_the_file_it_replaces(tmp_path, sample_program):
+    """`convert --force` onto a 0640 program left it 0644 (review 42, finding 5): it stays
+    0640, and a new output follows the umask (0644 under 022)."""
+    import os
+
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    kept, new = tmp_path / "kept.nc", tmp_path / "new.nc"
+    kept.write_text("old\n")
+    kept.chmod(0o640)
+    old = os.umask(0o022)
+    try:
+        for out in (kept, new):
+            result = CliRunner().invoke(main, ["convert", str(path), "-o", str(out), "--to",
+                                               "iso-mill", "--force"])
+            assert result.exit_code == 0, result.output
+    finally:
+        os.umask(old)
+    assert kept.read_text() == new.read_text() != "old\n"
+    assert oct(kept.stat().st_mode & 0o777) == "0o640"
+    assert oct(new.stat().st_mode & 0o777) == "0o644"
+
+
 def test_the_help_lists_every_command_in_a_whole_sentence():
     """The one-line summaries were cut short ('...against a...')."""
     lines = CliRunner().invoke(main, ["--help"]).stdout.split("Commands:")[1].splitlines()

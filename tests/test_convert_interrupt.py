@@ -177,3 +177,37 @@ def test_sigterm_mid_one_file_conversion_leaves_no_temporary_file(tmp_path):
     assert proc.returncode == 128 + signal.SIGTERM, "ended by the signal's default action"
     assert _parts(out) == []
     assert list(out.iterdir()) == []
+
+
+@pytest.mark.skipif(not Path(_exe()).exists(), reason="needs the tapegate command")
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_a_conversion_to_stdout_stopped_leaves_no_temporary_folder(tmp_path, signum):
+    """Review 44, finding 4: `convert -o -` writes the program into a temporary folder, then
+    copies it to stdout; stopped while stdout is written (a reader that does not read: a
+    pager, a DNC pipe), the folder and the whole converted program were left in $TMPDIR."""
+    source = tmp_path / "big.nc"
+    source.write_text(_program(0, 300_000))
+    temp = tmp_path / "temp"
+    temp.mkdir()
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "TMPDIR": str(temp)}
+    # stdout a pipe nobody reads: the copy blocks once the pipe is full
+    proc = subprocess.Popen([_exe(), "convert", str(source), "-o", "-", *ARGS],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env,
+                            preexec_fn=_default_sigint)
+    try:
+        def copying() -> bool:
+            return any((d / "out.nc").exists() for d in temp.iterdir())
+
+        if not _wait_for(copying, proc, 60):
+            pytest.skip("the conversion ended before its temporary file was seen")
+        # (the pipe's 64 kB fill before the copy waits; the file is then whole)
+        proc.send_signal(signum)
+        proc.wait(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        assert proc.stdout is not None
+        proc.stdout.close()
+    assert proc.returncode in (1, 128 + signal.SIGTERM), proc.returncode
+    assert list(temp.iterdir()) == []

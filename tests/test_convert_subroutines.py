@@ -88,6 +88,10 @@ def test_a_body_after_its_call_is_read_in_that_call_s_units():
     # no call in the file: another file's program calls it, in units not shown here
     ("o<a> sub\nG90 G0 X1\no<a> endsub\nG20\nG0 X2\nM2\n", (2, 8),
      "o<a>: no call of the subroutine (line 1) is in this file"),
+    # the only call works out its label as it runs (`o#1 call`: rs274ngc `read_o`)
+    ("o100 sub\nG90 G0 X1\no100 endsub\nG20\n#1=100\no#1 call\nM2\n", (2, 8),
+     "o100: no call in this file names the subroutine (line 1; the call of line 6 works out "
+     "its label as it runs)"),
     # a body that selects units of its own leaves the caller in them (no M73)
     ("o<a> sub\nG21\nG90 G0 X1\no<a> endsub\nG20\no<a> call\nG0 X2\nM2\n", (6, 1),
      "o<a>: the subroutine selects metric and returns in it (no M73 before that units code), "
@@ -133,6 +137,10 @@ def test_a_call_s_arguments_convert_by_the_subroutine_s_parameters(src, out):
      "[10]: o<far> is not defined in this file, so whether its argument 1 is a length"),
     ("o<s> sub\nG90 G0 X#1\no<s> endsub\nG21 G90\no<s> call [SIN[30]*2]\nM2\n", (5, 11),
      "[SIN[30]*2]: argument 1 is a length of the subroutine and a non-linear expression"),
+    # a label worked out as the line runs (rs274ngc `read_o`): its brackets are no argument,
+    # and which subroutine it names is not shown here
+    ("G21 G90\n#2=100\no[#2] call [10]\nM2\n", (3, 12),
+     "[10]: o[#2] is not defined in this file, so whether its argument 1 is a length"),
 ])
 def test_an_argument_not_shown_a_length_or_not_is_refused(src, at, start):
     error = refusal(src, "inch")

@@ -81,6 +81,62 @@ def test_the_mode_follows_the_umask_without_changing_it(tmp_path: Path) -> None:
         os.umask(old)
 
 
+def test_a_replaced_file_keeps_its_mode_owner_and_group(tmp_path: Path) -> None:
+    """--force onto a 0640 program made it 0644 and the runner's (review 42, finding 5): the
+    file that replaces a regular file takes its permission bits and, where the system allows
+    it (root here, or the group of a member), its owner and group -- one commit's and a
+    batch's alike; a new file next to it still follows the umask."""
+    from formats import _core
+
+    old = os.umask(0o022)
+    try:
+        for batch in (False, True):
+            target = tmp_path / f"O{int(batch)}.nc"
+            target.write_bytes(b"old\n")
+            target.chmod(0o640)
+            owner = (65534, 65534) if os.geteuid() == 0 else (os.getuid(), os.getgid())
+            if os.geteuid() == 0:
+                os.chown(target, *owner)
+            pending = PendingFile(tmp_path, target.name)
+            pending.write(b"N1 X1.\n")
+            if batch:
+                commits = _core.Commits(1)
+                commits.wait(commits.submit(pending.hand_over(), pending.tmp, str(target),
+                                            True))
+                commits.close()
+            else:
+                pending.commit(target, overwrite=True)
+            after = target.stat()
+            assert target.read_bytes() == b"N1 X1.\n"
+            assert oct(after.st_mode & 0o7777) == "0o640"
+            assert (after.st_uid, after.st_gid) == owner
+        new = write_atomic(tmp_path / "new.nc", b"N1\n", overwrite=True)
+        assert oct(new.stat().st_mode & 0o777) == "0o644"
+    finally:
+        os.umask(old)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["O0.nc", "O1.nc", "new.nc"]
+
+
+def test_a_symbolic_link_replaced_by_force_is_replaced_as_before(tmp_path: Path) -> None:
+    """A symbolic link where the output goes is not followed by the commit: the rename puts the
+    new file in the link's place (the file it led to untouched), made as a new file is (0666
+    and the umask), not with the mode of the file the link led to. (A FIFO or a device there
+    is written into: test_a_fifo_is_written_into_never_replaced.)"""
+    led_to = tmp_path / "kept.nc"
+    led_to.write_bytes(b"kept\n")
+    led_to.chmod(0o600)
+    link = tmp_path / "out.nc"
+    link.symlink_to(led_to.name)
+    old = os.umask(0o022)
+    try:
+        write_atomic(link, b"N1\n", overwrite=True)
+    finally:
+        os.umask(old)
+    assert not link.is_symlink() and link.read_bytes() == b"N1\n"
+    assert oct(link.stat().st_mode & 0o777) == "0o644"
+    assert led_to.read_bytes() == b"kept\n" and oct(led_to.stat().st_mode & 0o777) == "0o600"
+
+
 def test_a_missing_folder_is_an_output_error(tmp_path: Path) -> None:
     with pytest.raises(OutputError) as info:
         write_atomic(tmp_path / "nowhere" / "p.nc", b"N1\n")
@@ -212,3 +268,62 @@ def test_a_process_that_exits_with_a_file_not_named_leaves_nothing(tmp_path: Pat
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().endswith(".part")  # (it was there)
     assert list(tmp_path.iterdir()) == []
+
+
+NO_LINKS = """
+#include <errno.h>
+int link(const char *a, const char *b) { errno = EPERM; return -1; }
+int linkat(int fa, const char *a, int fb, const char *b, int flags) { errno = EPERM; return -1; }
+"""
+
+
+def test_a_file_system_without_hard_links_still_gets_whole_files_never_replaced(
+        tmp_path: Path) -> None:
+    """Review 44, finding 6: FAT and exFAT (the USB stick a shop carries to the control) have
+    no hard links, and Linux's link(2) gives EPERM there; the commit named every new file by a
+    link alone, so each output failed. Where the link is refused so, the core renames without
+    replacing (renameat2 RENAME_NOREPLACE): the same names, versions and refusals. Shown with
+    the C library's link() and linkat() made to fail as on FAT (a preloaded library built
+    here; skipped where no C compiler is installed)."""
+    import shutil
+    import subprocess
+    import sys
+
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None or sys.platform != "linux":
+        pytest.skip("needs a C compiler on Linux to build the link-refusing library")
+    (tmp_path / "nolink.c").write_text(NO_LINKS)
+    shim = tmp_path / "nolink.so"
+    subprocess.run([cc, "-shared", "-fPIC", "-o", str(shim), str(tmp_path / "nolink.c")],
+                   check=True, timeout=60)
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "kept.nc").write_bytes(b"old\n")
+    script = (
+        "import os, sys\n"
+        "from formats.files import PendingFile, write_atomic\n"
+        "out = sys.argv[1]\n"
+        "try:\n"
+        "    os.link(os.path.join(out, 'kept.nc'), os.path.join(out, 'probe'))\n"
+        "    print('linked')\n"
+        "except PermissionError:\n"
+        "    print('no links')\n"
+        "print(write_atomic(os.path.join(out, 'new.nc'), b'new\\n', overwrite=False).name)\n"
+        "print(write_atomic(os.path.join(out, 'kept.nc'), b'v\\n', overwrite=False).name)\n"
+        "p = PendingFile(out, 'kept.nc')\n"
+        "p.write(b'x\\n')\n"
+        "try:\n"
+        "    p.name_as(os.path.join(out, 'kept.nc'), overwrite=False, version=False)\n"
+        "except FileExistsError:\n"
+        "    print('refused')\n"
+        "print(write_atomic(os.path.join(out, 'kept.nc'), b'forced\\n').name)\n")
+    root = Path(__file__).resolve().parent.parent
+    run = subprocess.run([sys.executable, "-c", script, str(out)], capture_output=True,
+                         text=True, timeout=60,
+                         env={**os.environ, "PYTHONPATH": str(root), "LD_PRELOAD": str(shim)})
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.split() == ["no", "links", "new.nc", "kept.1.nc", "refused", "kept.nc"]
+    assert (out / "new.nc").read_bytes() == b"new\n"
+    assert (out / "kept.1.nc").read_bytes() == b"v\n"
+    assert (out / "kept.nc").read_bytes() == b"forced\n"
+    assert sorted(p.name for p in out.iterdir()) == ["kept.1.nc", "kept.nc", "new.nc"]

@@ -813,3 +813,22 @@ def test_m98_first_with_its_p_and_l_is_clean(tmp_path, block):
     out = rs274_output(tmp_path, text)
     assert "STRAIGHT_TRAVERSE(0.0000, 0.0000, 1.0000" in out  # the subprogram ran
     assert "PROGRAM_END" in out
+
+
+@pytest.mark.parametrize("call", ["o#1 call [2]", "o[#1] call [2]", "O [ #1 ] call [2]",
+                                  "o#<sub> call [2]", "o[#1*1] call [2]"])
+def test_a_call_whose_label_is_worked_out_as_it_runs_is_read(tmp_path, call):
+    """rs274ngc's ``read_o`` reads an o-word's label as a parameter or a bracketed expression
+    too (``o#1 call``, ``o[#1] call``): LinuxCNC runs the subroutine of its value. The
+    reader once refused these ("address c must be followed by a number"); now read, and
+    where the parameter holds a known number the call is the numbered one's (the check's
+    tests in the core: ``a_linuxcnc_call_by_a_parameter_calls_the_subroutine_of_its_value``)."""
+    text = ("o100 sub\nG0 X#1\no100 endsub\n" + HEAD + "#1=100\n#<sub>=100\n" + call
+            + "\nM2\n")
+    found = check_text(text, load_profile("linuxcnc"))
+    assert [f for f in found if f.severity == "error"] == []
+    assert not any(f.rule.startswith("TG1") and f.rule not in ("TG133", "TG140", "TG141")
+                   for f in found), found
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(2.0000, 0.0000, 0.0000" in out  # the subroutine ran, X#1 = 2
+    assert "PROGRAM_END" in out

@@ -3,6 +3,7 @@ reports in input order, byte for byte what one thread writes (tapegate.workers).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import subprocess
@@ -984,6 +985,35 @@ def test_sigterm_exits_while_the_threads_run_and_its_handler_is_put_back_after()
         signal.signal(signal.SIGTERM, before)
 
 
+def test_sighup_made_an_exit_is_held_as_sigterm_is_while_the_threads_run():
+    """Review 44, finding 8: a command that writes files makes SIGHUP an exit
+    (formats.files.exit_on_termination) raised wherever the main thread is; among the map's
+    locks that hung 2 of 140 stopped batches. While the threads run the map answers it as it
+    answers SIGTERM (an exit with 128 + 1 at a safe point), and puts the handler back."""
+    import signal
+
+    from formats import files
+
+    before = signal.signal(signal.SIGHUP, signal.SIG_DFL)
+    term = signal.getsignal(signal.SIGTERM)
+    try:
+        files.exit_on_termination()
+        made = signal.getsignal(signal.SIGHUP)
+        assert made is files._exit_signalled
+        got = []
+        with pytest.raises(SystemExit) as stopped:
+            for n in ordered_map(lambda n: n, list(range(200)), 2):
+                got.append(n)
+                if n == 0:
+                    assert signal.getsignal(signal.SIGHUP) is not made  # the map's own
+                    os.kill(os.getpid(), signal.SIGHUP)
+        assert stopped.value.code == 128 + signal.SIGHUP and got == [0]
+        assert signal.getsignal(signal.SIGHUP) is made
+    finally:
+        signal.signal(signal.SIGHUP, before)
+        signal.signal(signal.SIGTERM, term)
+
+
 def test_an_item_started_early_spills_past_early_pieces_and_leaves_the_budget_to_the_others(
         tmp_path, monkeypatch):
     """The item started first for its size (first()) waits longest for its turn: it holds
@@ -1459,3 +1489,53 @@ def test_two_long_files_at_the_end_run_side_by_side_at_j_2():
     assert out == list(range(len(sizes)))
     (a0, a1), (b0, b1) = spans[20], spans[21]
     assert a0 < b1 and b0 < a1  # the two long ones overlapped
+
+
+_STUCK = """
+import os, sys
+from tapegate.workers import ordered_map
+
+read_end, write_end = os.pipe()  # (the write end held here: a read of it never ends)
+
+
+def work(item):
+    if item == 0:
+        print("stuck", flush=True)
+        os.read(read_end, 1)  # in the system, the GIL released: no stop reaches it
+    return item
+
+
+for result in ordered_map(work, [0, 1, 2], 2):
+    pass
+"""
+
+
+def test_a_second_ctrl_c_ends_the_join_of_a_thread_that_never_returns(tmp_path):
+    """The first ^C stops the map and the main thread joins its threads; a thread that never
+    comes back (a read that never ends) held the join for good, and every later ^C was held
+    for a safe point that never came (review 42, finding 6). The join is such a point: the
+    next ^C ends the process (KeyboardInterrupt), the stopped daemon threads left. SIGINT is
+    sent until the process ends (the first may land before the main thread waits), with a
+    time limit."""
+    import signal
+
+    proc = subprocess.Popen([sys.executable, "-c", _STUCK], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, cwd=ROOT,
+                            env={**os.environ, "PYTHONPATH": str(ROOT)},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        assert proc.stdout is not None
+        assert proc.stdout.readline() == b"stuck\n"
+        sent, started = 0, time.monotonic()
+        while proc.poll() is None and time.monotonic() - started < 30:
+            proc.send_signal(signal.SIGINT)
+            sent += 1
+            with contextlib.suppress(subprocess.TimeoutExpired):
+                proc.wait(timeout=0.2)
+        _, err = proc.communicate(timeout=10)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode in (-signal.SIGINT, 128 + signal.SIGINT, 1), err
+    assert b"KeyboardInterrupt" in err and sent >= 2, (sent, err)

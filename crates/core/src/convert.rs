@@ -331,6 +331,7 @@ impl ConvertConfig {
                 arc_radius: crate::word::arc_radius(from, false),
                 lacks_g: Vec::new(),
                 g_system: Default::default(),
+                haas: false,
             },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: Vec::new(),
@@ -5983,7 +5984,10 @@ impl Converter {
             .parameters
             .as_ref()
             .and_then(|p| p.subs.get(&label).copied());
-        let (groups, _) = expr::bracket_groups(statement);
+        // the arguments come after the label, which may be bracketed (`o[#1] call [5]`)
+        let after = crate::statement::o_label_len(statement);
+        let (mut groups, _) = expr::bracket_groups(statement);
+        groups.retain(|&(a, _)| a >= after);
         let mut new = Vec::with_capacity(statement.len() + 8);
         let mut pos = 0;
         let mut terms = std::mem::take(&mut self.terms);

@@ -608,19 +608,28 @@ impl Analysis {
         if !matches!(family, Family::MacroB | Family::LinuxCnc) {
             return;
         }
-        let (groups, rest) = expr::bracket_groups(words);
         if kind == StatementKind::Call && family == Family::LinuxCnc {
+            // a label worked out as the line runs (`o#1 call`, `o[#1] call [5]`) reads its
+            // parameters as a subroutine's number, no length; the arguments come after it
+            let after = crate::statement::o_label_len(words);
+            if words[..after].contains(&b'#') {
+                self.word(&words[1..after], false, line);
+            }
+            let full = words;
+            let words = &words[after..];
+            let (groups, _) = expr::bracket_groups(words);
             let args = groups
                 .iter()
                 .map(|&(a, b)| self.value(&words[a..b], line))
                 .collect::<Vec<_>>();
-            let label = o_label(words);
+            let label = o_label(&full[..after]);
             let shape = args.iter().map(|a| (a.names.clone(), a.linear)).collect();
             if self.called.insert((label.clone(), shape)) {
                 self.calls.push((label, args));
             }
             return;
         }
+        let (groups, rest) = expr::bracket_groups(words);
         for &(a, b) in &groups {
             self.tie(&words[a..b], line);
         }

@@ -143,6 +143,7 @@ impl Machine {
                     .collect()
             },
             g_system,
+            haas: spec.control == Control::Haas,
         };
         modal.reset = spec.reset.iter().map(|&g| modal.read_g(g)).collect();
         let check = Config {

@@ -135,6 +135,11 @@ pub const fn bit(letter: u8) -> u32 {
 /// X, Z and their lathe increments U, W.
 const XZUW: u32 = bit(b'X') | bit(b'Z') | bit(b'U') | bit(b'W');
 
+/// [`ModalMachine::ran_cycle`]: the block ran a lathe's cycle that returns to its start point.
+pub const CYCLE_RAN: u8 = 1;
+/// [`ModalMachine::ran_cycle`]: some of where the block's cycle went is not known.
+pub const CYCLE_UNSURE: u8 = 2;
+
 pub const FORGOTTEN: u32 = bit(b'X')
     | bit(b'Y')
     | bit(b'Z')
@@ -399,6 +404,9 @@ pub struct ModalSettings {
     /// A FANUC lathe's G code system: the block's G codes are read by their system A numbers
     /// ([`GCodeSystem::to_a`], [`BlockValues::in_system`]).
     pub g_system: GCodeSystem,
+    /// A Haas lathe: its single cycles write their taper as I (G90, G92) and K (G94), and its
+    /// one-block G76 as I (Haas lathe operator's manual, "G-codes"), where a FANUC's write R.
+    pub haas: bool,
 }
 
 /// What a non-modal code does with its block's axis words, which are then no move of the
@@ -601,16 +609,33 @@ pub struct ModalMachine {
     /// U W are the cycle's and whose tool returns to its start point.
     uw_moves: bool,
     /// The end point X, Z (absolute) of a Fanuc or Haas lathe's single cycle G90, G92 or
-    /// G94 (G code system A), kept for the cycle's modal repeats: "data items X (U), Z (W)
+    /// G94 (G code system A; and of the block's G74-G76, an Okuma's G32/G33), kept for the
+    /// cycle's modal repeats: "data items X (U), Z (W)
     /// and R are modal" in the cycles until a code of group 01 other than G90, G92, G94 or a
     /// one-shot code other than G04 (FANUC 0i-TF operator's manual, "Canned cycle").
     cycle_end: [Option<Dec>; 2],
     /// `cycle_end` is the cycle's data in force (false: cleared, none kept; a flag, so that
     /// the G00-G03 of every lathe block clear it by one store).
     cycle_kept: bool,
-    /// The block last given to [`ModalMachine::apply`] ran a single cycle G90, G92 or G94:
-    /// the tool went to `cycle_end` and back to its start point, where the position stays.
-    ran_cycle: bool,
+    /// The taper of the single cycle in force (FANUC R, Haas I or K, Okuma I: the radius
+    /// difference, G94's in Z), modal with `cycle_end` ("data items X (U), Z (W) and R are
+    /// modal"); None for no taper or one not known (`taper_unknown`).
+    cycle_taper: Option<Dec>,
+    /// The taper in force was written with a value not known here (a parameter), or as an
+    /// angle (an Okuma's A).
+    taper_unknown: bool,
+    /// The corner the taper of the block's cycle makes, where the tool goes before it cuts
+    /// to the end point: X (the end point's X plus twice the radius difference, at the start
+    /// point's Z: G90, G92, G76, Okuma G33) or Z (G94: the end point's Z plus R, at the start
+    /// point's X); the other None, as both are where the cycle has no taper.
+    cycle_corner: [Option<Dec>; 2],
+    /// What the block last given to [`ModalMachine::apply`] did of a lathe's cycles
+    /// ([`CYCLE_RAN`], [`CYCLE_UNSURE`]; 0 for none: one store a block clears it): the tool
+    /// went to `cycle_end` (and `cycle_corner`) and back to its start point, where the
+    /// position stays; or some of where it went is not known (`cycle_why` says why).
+    ran_cycle: u8,
+    /// Why the positions of the block's cycle are not all known ([`CYCLE_UNSURE`]).
+    cycle_why: &'static str,
     /// A units code converts the known positions into the new units (true): the checker's and
     /// the restart walk's machine. The verify reader and the converter keep the numbers as
     /// they were and follow each axis's units themselves, exactly (`ncread::Factor`).
@@ -619,6 +644,10 @@ pub struct ModalMachine {
     /// ([`ModalSettings::axes_taken`]), found once there for the machine and the checker's
     /// rules that ask it of the same block ([`ModalMachine::taken`]).
     taken: Option<AxesTaken>,
+    /// How many codes of absolute or incremental programming (G90/G91, G code system B's and
+    /// C's) were applied so far, the reset's included: the checker asks whether a program
+    /// wrote one of its own before its first move (crate::check::called).
+    pub distance_codes: u32,
 }
 
 impl ModalMachine {
@@ -630,9 +659,14 @@ impl ModalMachine {
             uw_moves: true,
             cycle_end: [None; 2],
             cycle_kept: false,
-            ran_cycle: false,
+            cycle_taper: None,
+            taper_unknown: false,
+            cycle_corner: [None; 2],
+            ran_cycle: 0,
+            cycle_why: "",
             units_convert_position: true,
             taken: None,
+            distance_codes: 0,
         };
         machine.reset();
         machine
@@ -667,7 +701,7 @@ impl ModalMachine {
     /// of the block's codes (the checker keeps it by the block's set of codes).
     pub fn apply_taken(&mut self, v: &BlockValues, taken: Option<AxesTaken>) {
         self.taken = taken;
-        self.ran_cycle = false;
+        self.ran_cycle = 0;
         self.codes(v.gs());
         if v.other_work_system {
             self.state.zero_shift = None;
@@ -794,14 +828,46 @@ impl ModalMachine {
     /// from the start point to the end point X(U) Z(W), U and W the increments from the start
     /// point, and back to the start point).
     pub fn cycle_end(&self) -> Option<[Option<Dec>; 2]> {
-        self.ran_cycle.then_some(self.cycle_end)
+        (self.ran_cycle & CYCLE_RAN != 0).then_some(self.cycle_end)
     }
 
-    /// The block last given to [`ModalMachine::apply`] ran a single cycle G90, G92 or G94
-    /// ([`ModalMachine::cycle_end`]).
+    /// The corner of the taper of the cycle the block last given to [`ModalMachine::apply`]
+    /// ran (`cycle_corner`), where it has one.
+    pub fn cycle_corner(&self) -> Option<[Option<Dec>; 2]> {
+        (self.ran_cycle & CYCLE_RAN != 0 && self.cycle_corner != [None; 2])
+            .then_some(self.cycle_corner)
+    }
+
+    /// What the block last given to [`ModalMachine::apply`] did of a lathe's cycles: 0 for
+    /// none, else [`CYCLE_RAN`] (a single cycle G90, G92, G94, a multiple repetitive cycle
+    /// G74-G76, an Okuma's fixed thread cutting cycle: [`ModalMachine::cycle_end`]) and
+    /// [`CYCLE_UNSURE`] (some of its positions not known: [`ModalMachine::cycle_why`]).
     #[inline]
-    pub fn ran_cycle(&self) -> bool {
+    pub fn ran_cycle(&self) -> u8 {
         self.ran_cycle
+    }
+
+    /// Why the positions of the block's cycle are not all known ([`CYCLE_UNSURE`]).
+    pub fn cycle_why(&self) -> &'static str {
+        self.cycle_why
+    }
+
+    /// Swap the positions of X and Z with the corner of the taper of the cycle the last
+    /// block ran ([`ModalMachine::cycle_corner`]): the checker walks the spans from there,
+    /// and swaps them back.
+    #[cold]
+    #[inline(never)]
+    pub fn swap_cycle_corner(&mut self) {
+        let position = &mut self.state.position;
+        std::mem::swap(&mut position[0], &mut self.cycle_corner[0]);
+        std::mem::swap(&mut position[2], &mut self.cycle_corner[1]);
+    }
+
+    /// Say that the block's cycle went where the check cannot work out, and why.
+    #[cold]
+    fn unsure(&mut self, why: &'static str) {
+        self.ran_cycle |= CYCLE_UNSURE;
+        self.cycle_why = why;
     }
 
     /// Swap the positions of X and Z with the end point of the single cycle the last block
@@ -946,7 +1012,13 @@ impl ModalMachine {
                     self.cycle_kept = false;
                 }
                 80 => self.uw_moves = true,
-                31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
+                // (the fixed thread cutting cycles' data kept for their repeats, as a
+                // FANUC's single cycles' is: `X25.04` runs G33 again at the new diameter)
+                32 | 33 => self.uw_moves = false,
+                31 | 34 | 35 | 71..=89 | 178..=189 => {
+                    self.uw_moves = false;
+                    self.cycle_kept = false;
+                }
                 _ => {}
             }
         }
@@ -1004,10 +1076,16 @@ impl ModalMachine {
                 s.cycle = Some(g);
                 s.cycle_words = [None; 5];
             }
-            90 | 91 => s.incremental = g == 91,
+            90 | 91 => {
+                s.incremental = g == 91;
+                self.distance_codes = self.distance_codes.wrapping_add(1);
+            }
             // G code system B and C: G90/G91 (FANUC 0i-TF, "Absolute and incremental
             // programming"); their G98/G99 return levels change nothing the state follows
-            ABSOLUTE | INCREMENTAL => s.incremental = g == INCREMENTAL,
+            ABSOLUTE | INCREMENTAL => {
+                s.incremental = g == INCREMENTAL;
+                self.distance_codes = self.distance_codes.wrapping_add(1);
+            }
             93..=95 => s.feed_mode = g,
             98 if self.settings.fanuc_lathe => s.feed_mode = 94,
             99 if self.settings.fanuc_lathe => s.feed_mode = 95,
@@ -1059,6 +1137,13 @@ impl ModalMachine {
         // G10 sets offsets (and elsewhere G52 a local coordinate system): data, not a move;
         // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.)
         if taken == Some(AxesTaken::Data) || (taken.is_none() && (v.has_g(10) || v.has_g(52))) {
+            // (a lathe's multiple repetitive cycle: the block that writes its end point)
+            if (self.settings.fanuc_lathe || self.settings.lap)
+                && taken == Some(AxesTaken::Data)
+                && (v.given | v.unknown) & XZUW != 0
+            {
+                self.repetitive_cycle(v);
+            }
             return;
         }
         if taken == Some(AxesTaken::Home) {
@@ -1096,10 +1181,7 @@ impl ModalMachine {
         // numbers): to the end point and back, the position stays; a block of its mode without
         // X U Z W runs none, nor does a dwell's (its U or X is the time)
         let mut touched = v.given | v.unknown;
-        if self.settings.fanuc_lathe
-            && matches!(s.motion, Some(90 | 92 | 94))
-            && self.single_cycle(v, touched)
-        {
+        if (self.settings.fanuc_lathe || self.settings.lap) && self.single_cycle(v, touched) {
             touched &= !XZUW;
         }
         let s = &mut self.state;
@@ -1178,7 +1260,10 @@ impl ModalMachine {
     }
 
     /// A block of a Fanuc or Haas lathe's single cycle G90, G92 or G94 (B's and C's G77-G79,
-    /// read as A's numbers) in [`ModalMachine::moved`]: its end point kept in `cycle_end`;
+    /// read as A's numbers), or of an Okuma lathe's fixed thread cutting cycle G32 or G33
+    /// (OSP-P200L 5238-E, section 7, 2-1; back at the starting point: CIMCO Edit's OSP
+    /// threading exercise), in [`ModalMachine::moved`]: its end point kept in `cycle_end`,
+    /// its taper (modal with it) in `cycle_taper` and the corner it makes in `cycle_corner`;
     /// true where the block ran the cycle (its X U Z W then move no position: the tool is
     /// back at the start point). A block of the mode without X U Z W runs none, nor does a
     /// dwell's (its U or X is the time), nor a code's that takes the axis words.
@@ -1186,35 +1271,157 @@ impl ModalMachine {
     #[inline(never)]
     fn single_cycle(&mut self, v: &BlockValues, touched: u32) -> bool {
         let s = &self.state;
+        // a FANUC's or Haas's G90, G92, G94; an Okuma's fixed thread cutting cycles G32 (end
+        // face) and G33 (longitudinal; its G31 is read as the skip: axes_taken)
+        let lap = self.settings.lap;
+        let Some(motion) = s.motion.filter(|&g| {
+            if lap {
+                matches!(g, 32 | 33)
+            } else {
+                matches!(g, 90 | 92 | 94)
+            }
+        }) else {
+            return false;
+        };
         if s.cycle.is_some() || self.taken.is_some() || touched & XZUW == 0 || v.has_g(4) {
             return false;
         }
         if !self.cycle_kept {
             self.cycle_end = [None; 2];
+            self.cycle_taper = None;
+            self.taper_unknown = false;
             self.cycle_kept = true;
         }
+        // (an Okuma's U and W: 5238-E's format of G31/G33 has none, and no page at hand says
+        // they are increments from the start point there)
+        let uw_known = self.settings.g_system == GCodeSystem::A && !lap;
+        let end = self.end_point(v, touched, uw_known, |kept| kept);
+        self.cycle_end = end;
+        // the taper: FANUC R, Haas I (G90, G92) or K (G94), Okuma I (G33; its A, an angle,
+        // and G32's taper words are not worked out here)
+        let letter = match motion {
+            94 if self.settings.haas => b'K',
+            _ if self.settings.haas || lap => b'I',
+            _ => b'R',
+        };
+        if let Some(taper) = v.get(letter).filter(|_| !(lap && motion == 32)) {
+            self.cycle_taper = Some(taper);
+            self.taper_unknown = false;
+        } else if touched & bit(letter) != 0
+            || (lap && touched & (bit(b'A') | bit(b'I') | bit(b'K')) != 0)
+        {
+            self.cycle_taper = None;
+            self.taper_unknown = true;
+        }
+        self.cycle_corner = self.corner(motion == 94);
+        self.ran_cycle |= CYCLE_RAN;
+        if self.taper_unknown {
+            self.unsure("its taper is written by a value not known here or by an angle");
+        }
+        true
+    }
+
+    /// The end point X, Z of the cycle of block `v` (absolute; None where not known): X or Z
+    /// where written (under G91 of systems B and C an increment from the start point), else
+    /// the start point plus U or W where `uw_known`, else `unwritten` of the value kept
+    /// (a single cycle's modal data, or the start point's for a repetitive cycle). Says
+    /// [`CYCLE_UNSURE`] where a written word's value is not known here.
+    fn end_point(
+        &mut self,
+        v: &BlockValues,
+        touched: u32,
+        uw_known: bool,
+        unwritten: impl Fn([Option<Dec>; 2]) -> [Option<Dec>; 2],
+    ) -> [Option<Dec>; 2] {
+        let s = &self.state;
+        let mut end = unwritten(self.cycle_end);
+        let mut unsure = false;
         for (k, (abs, inc)) in [(b'X', b'U'), (b'Z', b'W')].into_iter().enumerate() {
             let i = if abs == b'X' { 0 } else { 2 };
             let given = |l: u8| touched & bit(l) != 0;
             let start = s.position[i].filter(|_| s.unknown & bit(abs) == 0);
             if let Some(at) = v.get(abs) {
                 // (G91 X of systems B and C: an increment from the start point)
-                self.cycle_end[k] = if s.incremental {
+                end[k] = if s.incremental {
                     start.and_then(|start| start.checked_add(at))
                 } else {
                     Some(at)
                 };
-            } else if let Some(by) = v.get(inc) {
-                // (U W of systems B and C: no page at hand says they are increments)
-                self.cycle_end[k] = start
-                    .filter(|_| self.settings.g_system == GCodeSystem::A)
-                    .and_then(|start| start.checked_add(by));
+            } else if let Some(by) = v.get(inc).filter(|_| uw_known) {
+                end[k] = start.and_then(|start| start.checked_add(by));
             } else if given(abs) || given(inc) {
-                self.cycle_end[k] = None;
+                end[k] = None;
+                unsure = true;
             }
         }
-        self.ran_cycle = true;
-        true
+        if unsure {
+            self.unsure("its end point X(U) Z(W) is not known here (a parameter, or U or W where no page at hand says what they are)");
+        }
+        end
+    }
+
+    /// The corner of the taper in force (`cycle_taper`) at the end point `cycle_end`: in Z
+    /// (`in_z`: G94, the end point's Z plus R) or in X (the end point's X, a diameter, plus
+    /// twice the radius difference).
+    fn corner(&self, in_z: bool) -> [Option<Dec>; 2] {
+        let Some(taper) = self.cycle_taper.filter(|t| !t.is_zero()) else {
+            return [None; 2];
+        };
+        if in_z {
+            [None, self.cycle_end[1].and_then(|z| z.checked_add(taper))]
+        } else {
+            let twice = taper.checked_add(taper);
+            [
+                self.cycle_end[0]
+                    .zip(twice)
+                    .and_then(|(x, t)| x.checked_add(t)),
+                None,
+            ]
+        }
+    }
+
+    /// The block of a lathe's multiple repetitive cycle whose X(U) or Z(W) is its end point
+    /// (the position stays: the tool returns to its start point). A FANUC's or Haas's G74
+    /// (end face peck drilling), G75 (grooving) and G76 (threading: the final thread's root
+    /// diameter and end, its taper the corner at the start point's Z): FANUC 0i-TF
+    /// operator's manual, "Multiple repetitive cycle (G70-G76)", the second block of G74,
+    /// G75, G76 (the first, P Q R alone, writes none); Haas's one-block G74, G75, G76 (Haas
+    /// lathe operator's manual, "G-codes"). An X or Z not written is the start point's.
+    /// An Okuma lathe's compound thread cutting cycles G71 and G72: no page at hand says what
+    /// their X and Z are in full (one gives G72's X as the end and Z as the final depth):
+    /// not worked out, said ([`CYCLE_UNSURE`]).
+    #[cold]
+    #[inline(never)]
+    fn repetitive_cycle(&mut self, v: &BlockValues) {
+        let touched = v.given | v.unknown;
+        if self.settings.lap {
+            if v.has_g(71) || v.has_g(72) {
+                self.unsure("an Okuma lathe's compound thread cutting cycle G71/G72: no page at hand says where its X and Z take the tool");
+            }
+            return;
+        }
+        let Some(g) = [74, 75, 76].into_iter().find(|&g| v.has_g(g)) else {
+            return;
+        };
+        let s = &self.state;
+        let start = [
+            s.position[0].filter(|_| s.unknown & bit(b'X') == 0),
+            s.position[2].filter(|_| s.unknown & bit(b'Z') == 0),
+        ];
+        let uw_known = self.settings.g_system == GCodeSystem::A;
+        self.cycle_end = self.end_point(v, touched, uw_known, |_| start);
+        // (G76's taper: FANUC R of the second block, Haas I; G74's and G75's R is a relief)
+        self.cycle_taper = None;
+        if g == 76 {
+            let letter = if self.settings.haas { b'I' } else { b'R' };
+            if let Some(taper) = v.get(letter) {
+                self.cycle_taper = Some(taper);
+            } else if touched & bit(letter) != 0 {
+                self.unsure("its taper is written by a value not known here");
+            }
+        }
+        self.cycle_corner = self.corner(false);
+        self.ran_cycle |= CYCLE_RAN;
     }
 }
 
@@ -1308,6 +1515,7 @@ mod tests {
             arc_radius: b'R',
             lacks_g: Vec::new(),
             g_system: Default::default(),
+            haas: false,
         })
     }
 

@@ -1445,6 +1445,7 @@ mod tests {
             arc_radius: b'R',
             lacks_g: Vec::new(),
             g_system: Default::default(),
+            haas: false,
         };
         Reader::new(ReadSettings {
             formats: vec![

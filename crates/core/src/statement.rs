@@ -106,6 +106,19 @@ fn letters_end(line: &[u8], pos: usize, lowercase: bool) -> usize {
     end
 }
 
+/// The end of digits that may have blanks among them (`o 1 0 0`: rs274ngc drops the blanks
+/// before it reads a line).
+fn blank_digits_end(line: &[u8], pos: usize) -> usize {
+    let mut end = digits_end(line, pos);
+    while line
+        .get(skip_blanks(line, end))
+        .is_some_and(u8::is_ascii_digit)
+    {
+        end = digits_end(line, skip_blanks(line, end));
+    }
+    end
+}
+
 pub(crate) fn digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = pos;
     while end < line.len() && line[end].is_ascii_digit() {
@@ -772,7 +785,10 @@ pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
 /// A LinuxCNC o-word's label as the interpreter reads it (lower case, without blanks, a
 /// number without its leading zeros): `o<name>` of `O <Name> call [1]`, `o100` of `o0100 sub`.
 /// rs274ngc `read_o` reads a numbered o-word as a number (`o0100 sub` ... `o100 call` runs)
-/// and a named one after `close_and_downcase` (`o<Name>` is `o<name>`).
+/// and a named one after `close_and_downcase` (`o<Name>` is `o<name>`). A label rs274 works
+/// out when the line runs (`o#1 call`, `o#<sub> call`, `o[#1+1] call`: `read_o` reads a
+/// parameter or an expression there) is kept as written (`o[#1+1]`): no definition is named
+/// so, and the checker takes its call's target as not known.
 pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     let text: Vec<u8> = statement
         .iter()
@@ -782,11 +798,11 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     if text.is_empty() {
         return text;
     }
-    let end = match text.get(1) {
-        Some(b'<') => text
-            .iter()
-            .position(|&c| c == b'>')
-            .map_or(text.len(), |close| close + 1),
+    match text.get(1) {
+        Some(b'<' | b'#' | b'[') => {
+            let end = o_label_end(&text).unwrap_or(text.len());
+            text[..end].to_vec()
+        }
         _ => {
             let digits = text
                 .iter()
@@ -800,10 +816,58 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
                 .min(digits.saturating_sub(1));
             let mut label = vec![text[0]];
             label.extend_from_slice(&text[1 + zeros..1 + digits]);
-            return label;
+            label
         }
+    }
+}
+
+/// The length of an o-word statement's label in `statement` as written (blanks kept: `o [#1]
+/// call` gives 6), from its `o` to the end of its number, name, parameter or bracketed
+/// expression ([`o_label_end`]); the whole text where the label is not closed.
+pub(crate) fn o_label_len(statement: &[u8]) -> usize {
+    let mut seen = 0;
+    let wanted = {
+        let text: Vec<u8> = statement.iter().copied().filter(|&c| !blank(c)).collect();
+        o_label_end(&text).unwrap_or(text.len())
     };
-    text[..end.min(text.len())].to_vec()
+    for (i, &c) in statement.iter().enumerate() {
+        if seen == wanted {
+            return i;
+        }
+        if !blank(c) {
+            seen += 1;
+        }
+    }
+    statement.len()
+}
+
+/// Where the label of an o-word ends in `text` (blanks taken out, `text[0]` the `o`): after
+/// its digits (`o100`), its `<name>`, a parameter (`o#1`, `o#<sub>`) or a bracketed
+/// expression (`o[#1+1]`, brackets nested), the forms rs274ngc's `read_o` reads; None where
+/// a name or a bracket is left open.
+fn o_label_end(text: &[u8]) -> Option<usize> {
+    let close = |from: usize| -> Option<usize> {
+        let mut depth = 0usize;
+        for (i, &c) in text.iter().enumerate().skip(from) {
+            match c {
+                b'[' => depth += 1,
+                b']' if depth == 1 => return Some(i + 1),
+                b']' => depth = depth.checked_sub(1)?,
+                _ => {}
+            }
+        }
+        None
+    };
+    match text.get(1)? {
+        b'<' => Some(text.iter().position(|&c| c == b'>')? + 1),
+        b'[' => close(1),
+        b'#' => match text.get(2)? {
+            b'<' => Some(2 + text[2..].iter().position(|&c| c == b'>')? + 1),
+            b'[' => close(2),
+            _ => Some(2 + text[2..].iter().take_while(|c| c.is_ascii_digit()).count()),
+        },
+        _ => Some(1 + text[1..].iter().take_while(|c| c.is_ascii_digit()).count()),
+    }
 }
 
 /// Whether a LinuxCNC statement begins a subroutine's definition (`o<name> sub`, `o100 sub`:
@@ -821,13 +885,10 @@ pub(crate) fn linuxcnc_definition(statement: &[u8]) -> Option<bool> {
 /// case and without blanks (`o1 end sub` is endsub); None where the text is no o-word.
 pub(crate) fn o_keyword(statement: &[u8]) -> Option<Vec<u8>> {
     let statement: Vec<u8> = statement.iter().copied().filter(|&c| !blank(c)).collect();
-    let rest = statement
-        .strip_prefix(b"o")
-        .or(statement.strip_prefix(b"O"))?;
-    let rest = match rest.first() {
-        Some(b'<') => &rest[rest.iter().position(|&c| c == b'>')? + 1..],
-        _ => &rest[rest.iter().take_while(|c| c.is_ascii_digit()).count()..],
-    };
+    if !statement.first()?.eq_ignore_ascii_case(&b'o') {
+        return None;
+    }
+    let rest = &statement[o_label_end(&statement)?..];
     Some(
         rest.iter()
             .take_while(|c| c.is_ascii_alphabetic())
@@ -887,15 +948,28 @@ fn linuxcnc<'a>(
                 ))
             }
         },
-        Some(d) if d.is_ascii_digit() => {
-            let mut end = digits_end(line, open);
-            while line
-                .get(skip_blanks(line, end))
-                .is_some_and(u8::is_ascii_digit)
-            {
-                end = digits_end(line, skip_blanks(line, end));
+        Some(d) if d.is_ascii_digit() => blank_digits_end(line, open),
+        // a label worked out when the line runs (rs274ngc `read_o`): `o[#1+1] call`,
+        // `o#1 call`, `o#<sub> call`
+        Some(b'[') => expr::scan_group(line, open, syntax)?,
+        Some(b'#') => {
+            let at = skip_blanks(line, open + 1);
+            match line.get(at) {
+                Some(b'[') => expr::scan_group(line, at, syntax)?,
+                Some(b'<') => match line[at..].iter().position(|&c| c == b'>') {
+                    Some(close) if close > 1 => at + close + 1,
+                    _ => {
+                        return Err(err(
+                            ErrorKind::Value,
+                            "o-word parameter '#<' without its closing '>'".into(),
+                            at,
+                            "LinuxCNC O codes",
+                        ))
+                    }
+                },
+                Some(d) if d.is_ascii_digit() => blank_digits_end(line, at),
+                _ => return Ok(None),
             }
-            end
         }
         _ => return Ok(None),
     };
@@ -2763,6 +2837,43 @@ mod tests {
             [("WHILE[[#1GE#2]AND[#3GE#7]]DO1".to_string(), Kind::Flow)]
         );
         assert!(read("N10 XY1", m).unwrap_err().starts_with("address X"));
+    }
+
+    /// rs274ngc `read_o` reads an o-word's label as a number, a `<name>`, a parameter or a
+    /// bracketed expression (`o#1 call`, `o#<sub> call`, `o[#1+1] call [5]`: run by `rs274
+    /// -g`); the label is kept as written, blanks out, and the keyword and arguments follow it.
+    #[test]
+    fn linuxcnc_o_words_with_computed_labels() {
+        let l = Family::LinuxCnc;
+        for text in [
+            "o#1 call",
+            "o#<sub> call",
+            "o[#1+1] call [5]",
+            "O [ #1 ] call",
+            "o# 1 call",
+        ] {
+            assert_eq!(
+                statements(text, l),
+                [(text.to_string(), Kind::Call)],
+                "{text}"
+            );
+        }
+        assert_eq!(o_label(b"O [ #1 + 1 ] call [5]"), b"o[#1+1]");
+        assert_eq!(o_label(b"o#<Sub> call"), b"o#<sub>");
+        assert_eq!(o_label(b"o#12call"), b"o#12");
+        assert_eq!(o_label(b"o[[#1]*2]if[1]"), b"o[[#1]*2]");
+        assert_eq!(
+            o_keyword(b"o[#1+1]call[5]").as_deref(),
+            Some(b"call".as_slice())
+        );
+        assert_eq!(
+            o_keyword(b"o#<s>endsub").as_deref(),
+            Some(b"endsub".as_slice())
+        );
+        assert_eq!(o_label_len(b"o [#1] call [5]"), 6);
+        assert_eq!(o_label_len(b"o100 call"), 4);
+        assert!(read("o#<s call", l).unwrap_err().contains("closing '>'"));
+        assert!(read("o[#1 call", l).is_err());
     }
 
     #[test]

@@ -337,16 +337,32 @@ impl Bodies {
             .filter(|(label, body)| body.shown.is_none() && !self.calls.contains_key(*label))
             .collect();
         unshown.sort_by_key(|(_, body)| body.line);
+        // a call whose label is worked out as it runs (`o#1 call`, `o[#1] call`) may be one
+        let computed = self
+            .calls
+            .iter()
+            .filter(|(label, _)| matches!(label.get(1), Some(b'#' | b'[')))
+            .map(|(_, &(_, line))| line)
+            .min();
         for (label, body) in unshown {
             if let Some((line, column)) = body.depends {
+                let none = match computed {
+                    Some(call) => format!(
+                        "no call in this file names the subroutine (line {}; the call of line \
+                         {call} works out its label as it runs)",
+                        body.line
+                    ),
+                    None => format!(
+                        "no call of the subroutine (line {}) is in this file",
+                        body.line
+                    ),
+                };
                 return Err(refusal(
                     format!(
-                        "{}: no call of the subroutine (line {}) is in this file, so the units \
-                         it runs in, its caller's, are not shown, and this length comes before \
-                         a units code of its own; write G20 or G21 in the subroutine before \
-                         its first length",
+                        "{}: {none}, so the units it runs in, its caller's, are not shown, and \
+                         this length comes before a units code of its own; write G20 or G21 in \
+                         the subroutine before its first length",
                         shown(label),
-                        body.line
                     ),
                     line,
                     column,

@@ -282,6 +282,7 @@ fn make_check_config(variant: u8) -> Config {
             arc_radius: tapegate_core::word::arc_radius(dialect(variant << 6).family, variant == 1),
             lacks_g: Vec::new(),
             g_system: Default::default(),
+            haas: false,
         },
     }
 }

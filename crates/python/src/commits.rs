@@ -14,10 +14,13 @@
 //!
 //! The steps of one commit ([`commit`]), the same for one file and for a batch:
 //!
-//! 1. the temporary file's data fsync'd (its descriptor, handed over: closed after);
+//! 1. with `--force` and a regular file there, its owner, group and permission bits given
+//!    to the temporary file ([`keep_access`]); the temporary file's data fsync'd (its
+//!    descriptor, handed over: closed after);
 //! 2. its name given: a rename over the target when it may be replaced (`--force`), else a
 //!    hard link that fails if the name is taken (a file that appeared meanwhile is never
-//!    replaced) -- or, where a new version name is wanted, the first of `NAME`, `STEM.1.EXT`,
+//!    replaced; on a file system without hard links, FAT and exFAT, a rename that fails if the
+//!    name is taken: [`rename_no_replace`]) -- or, where a new version name is wanted, the first of `NAME`, `STEM.1.EXT`,
 //!    `STEM.2.EXT`... that is free -- then the temporary name removed;
 //! 3. on any failure, the temporary file removed: nothing is left but what was there before.
 //!
@@ -230,7 +233,12 @@ fn commit(
     overwrite: bool,
     version: bool,
 ) -> io::Result<PathBuf> {
-    let synced = file.sync_all(); // fsync(2)
+    let synced = if overwrite {
+        keep_access(&file, target)
+    } else {
+        Ok(())
+    }
+    .and_then(|()| file.sync_all()); // fsync(2)
     drop(file);
     let named = synced.and_then(|()| {
         if overwrite {
@@ -243,8 +251,13 @@ fn commit(
             } else {
                 version_name(target, n)
             };
-            match fs::hard_link(tmp, &name) {
-                Ok(()) => return fs::remove_file(tmp).map(|()| name),
+            let linked = match fs::hard_link(tmp, &name) {
+                Ok(()) => fs::remove_file(tmp),
+                Err(error) if no_links(&error) => rename_no_replace(tmp, &name),
+                Err(error) => Err(error),
+            };
+            match linked {
+                Ok(()) => return Ok(name),
                 Err(error) if version && error.kind() == io::ErrorKind::AlreadyExists => n += 1,
                 Err(error) => return Err(error),
             }
@@ -255,6 +268,105 @@ fn commit(
     }
     forget(tmp);
     named
+}
+
+/// Whether a hard link failed because the file system has none: FAT and exFAT, the USB stick
+/// a shop carries to the control (Linux's `link(2)` gives EPERM where the file system has no
+/// link operation), some network and FUSE file systems (EOPNOTSUPP, ENOSYS). Review 44,
+/// finding 6: without a way round it, every output not replacing a file failed there.
+fn no_links(error: &io::Error) -> bool {
+    const EPERM: i32 = 1;
+    const ENOSYS: i32 = 38;
+    const EOPNOTSUPP: i32 = 95;
+    matches!(error.raw_os_error(), Some(EPERM | ENOSYS | EOPNOTSUPP))
+}
+
+/// `tmp` renamed to `name` where no file has that name, else `AlreadyExists`, on a file
+/// system without hard links ([`no_links`]): `renameat2(RENAME_NOREPLACE)` (Linux 3.15; FAT
+/// and exFAT take it), the kernel's own test and rename in one step, called by its system
+/// call number, as a C library older than 2.28 has no `renameat2`; where the kernel or the
+/// file system does not offer it (EINVAL, ENOSYS), a look at the name and then a rename: a
+/// file made under that name between the two is replaced (the one window left, on such a
+/// file system only).
+fn rename_no_replace(tmp: &Path, name: &Path) -> io::Result<()> {
+    #[cfg(all(
+        target_os = "linux",
+        any(target_arch = "x86_64", target_arch = "aarch64")
+    ))]
+    {
+        use std::ffi::CString;
+        use std::os::raw::{c_int, c_long, c_uint};
+        use std::os::unix::ffi::OsStrExt;
+
+        extern "C" {
+            fn syscall(number: c_long, ...) -> c_long;
+        }
+        #[cfg(target_arch = "x86_64")]
+        const SYS_RENAMEAT2: c_long = 316;
+        #[cfg(target_arch = "aarch64")]
+        const SYS_RENAMEAT2: c_long = 276;
+        const AT_FDCWD: c_int = -100;
+        const RENAME_NOREPLACE: c_uint = 1;
+        const EINVAL: i32 = 22;
+        const ENOSYS: i32 = 38;
+        let from = CString::new(tmp.as_os_str().as_bytes())?;
+        let to = CString::new(name.as_os_str().as_bytes())?;
+        // SAFETY: two NUL-terminated paths that live across the call, and plain integers, as
+        // renameat2(2) takes them
+        let done = unsafe {
+            syscall(
+                SYS_RENAMEAT2,
+                AT_FDCWD,
+                from.as_ptr(),
+                AT_FDCWD,
+                to.as_ptr(),
+                RENAME_NOREPLACE,
+            )
+        };
+        if done == 0 {
+            return Ok(());
+        }
+        let error = io::Error::last_os_error();
+        if !matches!(error.raw_os_error(), Some(EINVAL | ENOSYS)) {
+            return Err(error);
+        }
+    }
+    if fs::symlink_metadata(name).is_ok() {
+        return Err(io::Error::new(
+            io::ErrorKind::AlreadyExists,
+            format!("{} exists", name.display()),
+        ));
+    }
+    fs::rename(tmp, name)
+}
+
+/// A replaced file's access given to the file that replaces it (`install -p`, an editor's
+/// save): where `target` is a regular file (not followed: a symbolic link there is replaced by
+/// the new file, as before, and a device or a FIFO never reaches a commit), the new file takes
+/// its owner and group where the system allows it (`fchown`: as root; else the group alone,
+/// where the user is one of its members; a refusal (EPERM) leaves the process's own) and then
+/// its permission bits (`fchmod`, after the `fchown` that may clear set-user-ID bits; only
+/// the 0777 bits: a set-user-ID or sticky bit is not carried over). Without it `--force`
+/// made a 0640 program 0644 and the runner's (review 42, finding 5). A target that is not
+/// there (gone meanwhile), or not a regular file, leaves the new file as it was made (0666
+/// and the umask). A failing `fchmod` fails the commit: the new file is never left wider
+/// than the one it replaces.
+fn keep_access(file: &File, target: &Path) -> io::Result<()> {
+    use std::os::unix::fs::{MetadataExt, PermissionsExt};
+
+    let old = match fs::symlink_metadata(target) {
+        Ok(old) if old.file_type().is_file() => old,
+        _ => return Ok(()),
+    };
+    let made = file.metadata()?;
+    if (made.uid(), made.gid()) != (old.uid(), old.gid()) {
+        let owned = std::os::unix::fs::fchown(file, Some(old.uid()), Some(old.gid()));
+        if owned.is_err() && made.gid() != old.gid() {
+            // (not root: the owner stays the user's; the group where the user is a member)
+            let _ = std::os::unix::fs::fchown(file, None, Some(old.gid()));
+        }
+    }
+    file.set_permissions(fs::Permissions::from_mode(old.mode() & 0o777))
 }
 
 /// A commit of the pool's.

@@ -1,27 +1,35 @@
 //! A FANUC's or a Haas's subprogram placed before its caller in the file (a memory backup
 //! lists programs by their numbers, so `O0002` comes before the `O1000` that calls it; review
-//! 39, finding 4). The control runs a subprogram in the units and under the shift in force
-//! at its call (G20/G21 are modal and a call changes none; docs/dialects.md, "Several
-//! programs in one file"), which the checker knows only once it reads a call.
+//! 39, finding 4). The control runs a subprogram in the units, the distance mode and under
+//! the shift in force at its call (G20/G21 and G90/G91 are modal and a call changes none;
+//! docs/dialects.md, "Several programs in one file"), which the checker knows only once it
+//! reads a call.
 //!
 //! A program read from the reset state (the file's first with an O number, or one no call
 //! before it names, [`Checker::called_units`]) is read as before, with its own positions kept
 //! apart from the spans of the programs before it ([`Early`]); its findings are held from its
-//! first limit finding (TG601, TG602, TG605), at most [`HOLD_MAX`] of them. Where it ends as
-//! a main program does (M02/M30, the file's end, the next program), writes a units code or a
-//! shift of its own, a shift not followed or a mirror restarts a span in it, or its hold is
-//! full, the two are put together and the held findings said, in the order they came: the
-//! same reading as before, byte for byte. Where it returns (M99) having written no units code,
-//! it is a subprogram whose lengths are its caller's: its span contributions, its largest
-//! feed and its machine positions' findings are kept ([`Pending`]) and its limits' findings
-//! taken out, and the spans go back to those before it. At each call made in known units
-//! and under a known shift ([`Checker::early_call`]) it is judged there, with the spans as
-//! they stand (its span from its least to its most position, scaled and shifted; its largest
-//! feed; its G53 positions where the units are those it was read in), said at the call's line
-//! naming the body's (review 42, findings 0-2); a call inside another program read apart adds
-//! to that one's spans, as inline (finding 8). A call in units or under a shift not known
-//! leaves it with one TG140 at the file's end; a program no call names is read as before (its
-//! findings said, its span added), at the end of the file.
+//! first limit finding (TG601, TG602, TG605). The hold is bounded where a finding is held,
+//! not where the findings are taken (review 43, finding B): past [`HOLD_MAX`] findings of its
+//! limits, or [`HOLD_ALL`] of any rule since the hold began, selected or not, it is given up,
+//! so the CLI, the Python API, a chunk's boundary and `--select` read a file alike. Where it
+//! ends as a main program does (M02/M30, the file's end, the next program), writes a units
+//! code or a shift of its own, a shift not followed or a mirror restarts a span in it, or its
+//! hold is given up, the two are put together and the held findings said, in the order they
+//! came: the same reading as before, byte for byte. Where it returns (M99) having written no
+//! units code, it is a subprogram whose lengths are its caller's: its span contributions, its
+//! largest feed, its G53 positions' least and most per axis and its machine positions'
+//! findings are kept ([`Pending`]) and its limits' findings taken out, and the spans go back
+//! to those before it. At each call made in known units and under a known shift
+//! ([`Checker::early_call`]) it is judged there, with the spans as they stand (its span from
+//! its least to its most position, scaled and shifted; its largest feed; its G53 positions
+//! in the call's units, review 43, finding A), said at the call's line naming the body's
+//! (review 42, findings 0-2); a call inside another program read apart adds to that one's
+//! spans, as inline (finding 8). A body whose first position comes before a G90/G91 of its
+//! own, called in the other mode, has positions not known at that call: one TG140 there
+//! (review 43, finding D). A call in units or under a shift not known leaves it with one
+//! TG140 at the file's end; a program no call names is read as before (its findings said,
+//! its span added), at the end of the file; a program given up is noted at each call of it
+//! (finding E).
 
 use super::{Checker, Finding, Span};
 use crate::decimal::Dec;
@@ -56,7 +64,34 @@ pub(super) struct Early {
     /// LinuxCNC: whether the main program had written a units code before the definition
     /// (given back at its end; the body is read as not having written one).
     given_before: Option<bool>,
+    /// The distance mode it is read in (G91: true), the machine's count of G90/G91 codes
+    /// at its start, and whether its first position came before a G90/G91 of its own (None:
+    /// no position yet). Such a body's positions are its caller's mode's (review 43, D).
+    incremental: bool,
+    distance_codes: u32,
+    moved_first: Option<bool>,
+    /// The least and the most value of each axis's G53 positions, in the units it is read
+    /// in (review 43, A: judged at each call in that call's units).
+    machine: Machine,
+    /// The findings of its limits held (TG601, TG602, TG605, selected or not) and
+    /// [`Checker::reports`] where the hold began: the bound on the hold counted as they come,
+    /// whoever takes them and whatever the selection (review 43, finding B).
+    held: usize,
+    reports_from: u64,
 }
+
+/// A G53 position of a program read apart: its value as written, the same in the profile's
+/// units as read, its line, and whether it was said beyond the travel at a call.
+#[derive(Debug, Clone, Copy)]
+struct MachineAt {
+    value: Dec,
+    at: f64,
+    line: usize,
+    said: bool,
+}
+
+/// Each axis's least and most G53 position ([`MachineAt`]).
+type Machine = [[Option<MachineAt>; 2]; 9];
 
 #[derive(Debug, Clone)]
 struct Feed {
@@ -74,6 +109,8 @@ struct Call {
     factor: f64,
     feed_factor: f64,
     shift: Option<[f64; 9]>,
+    /// G91 in force at the call (a call changes no modal state: the body runs in it).
+    incremental: bool,
 }
 
 /// A subprogram read before any call named it, which returned without writing a units code.
@@ -100,6 +137,14 @@ pub(super) struct Pending {
     calls: Option<Result<usize, usize>>,
     /// Its largest feed said above the maximum at a call: not said again at the next.
     feed_said: bool,
+    /// Some(mode): its first position came before a G90/G91 of its own, read in `mode` (G91:
+    /// true); a call in the other mode runs those positions otherwise, not known there
+    /// (review 43, finding D). None: it wrote its own first, or has no position.
+    read_incremental: Option<bool>,
+    /// That TG140 said at a call (not again at the next).
+    mode_said: bool,
+    /// Its G53 positions' least and most value on each axis.
+    machine: Machine,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -107,6 +152,11 @@ pub(super) struct Pending {
 /// (TG140). A real subprogram's findings are seldom that many; the hold stays a few hundred
 /// kB whatever the file.
 pub(super) const HOLD_MAX: usize = 1024;
+
+/// The most findings of any rule (selected or not) made while a program's findings are held:
+/// past it the program is read as before, as past [`HOLD_MAX`] of its limits' (the hold
+/// stays a few MB whatever follows its first limit finding).
+pub(super) const HOLD_ALL: u64 = 4 * HOLD_MAX as u64;
 
 /// A span's ends, put together with another's (`said` of either).
 fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
@@ -140,6 +190,12 @@ impl Checker {
             most_at: [(0, 0); 9],
             feed: None,
             given_before: None,
+            incremental: self.machine.state.incremental,
+            distance_codes: self.machine.distance_codes,
+            moved_first: None,
+            machine: [[None; 2]; 9],
+            held: 0,
+            reports_from: 0,
         }));
         self.early_on = true;
     }
@@ -213,6 +269,9 @@ impl Checker {
             positions,
             calls: None,
             feed_said: false,
+            read_incremental: (early.moved_first == Some(true)).then_some(early.incremental),
+            mode_said: false,
+            machine: early.machine,
         });
     }
 
@@ -222,17 +281,77 @@ impl Checker {
     #[inline(never)]
     pub(super) fn early_unhold(&mut self) {
         if let Some(early) = self.early.as_ref() {
-            self.given_up = Some((early.number.clone(), early.name.clone(), early.at));
+            if !self.given_up.iter().any(|(n, _, _)| *n == early.number) {
+                self.given_up
+                    .push((early.number.clone(), early.name.clone(), early.at));
+            }
         }
         self.early_merge();
     }
 
-    /// A limit's finding in a program read apart: held from the first, so that the findings
-    /// are said in the order they came.
+    /// A limit's finding in a program read apart (TG601, TG602, TG605, selected or not): held
+    /// from the first, so that the findings are said in the order they came, and counted:
+    /// past [`HOLD_MAX`] the program is read as before from here (review 43, finding B: the
+    /// bound counted where a finding is held, not where the findings are taken, so the CLI,
+    /// the Python API and any chunk boundary or selection give the same findings).
     #[inline]
     pub(super) fn early_hold(&mut self) {
-        if self.early_on && self.hold_from.is_none() {
+        if self.early_on {
+            self.early_held();
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn early_held(&mut self) {
+        let reports = self.reports;
+        let early = self.early.as_mut().expect("early_on");
+        if self.hold_from.is_none() {
             self.hold_from = Some(self.found.len());
+            early.reports_from = reports;
+        }
+        early.held += 1;
+        if early.held > HOLD_MAX {
+            self.early_unhold();
+        }
+    }
+
+    /// A finding while a program's findings are held ([`Checker::report`]): past
+    /// [`HOLD_ALL`] findings of any rule since the hold began (selected or not), the program
+    /// is read as before from here, so that memory stays flat whatever follows its first
+    /// limit finding.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_reported(&mut self) {
+        if self
+            .early
+            .as_ref()
+            .is_some_and(|e| self.reports - e.reports_from > HOLD_ALL)
+        {
+            self.early_unhold();
+        }
+    }
+
+    /// A G53 position (`value` of `axis`, `at` in the profile's units as read) of the
+    /// program read apart: kept where it is the axis's least or most, for its calls.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_machine(&mut self, axis: u8, value: Dec, at: f64, line: usize) {
+        let (Some(early), Some(i)) = (self.early.as_mut(), crate::modal::axis_index(axis)) else {
+            return;
+        };
+        let new = MachineAt {
+            value,
+            at,
+            line,
+            said: false,
+        };
+        let [least, most] = &mut early.machine[i];
+        if least.is_none_or(|m| at < m.at) {
+            *least = Some(new);
+        }
+        if most.is_none_or(|m| at > m.at) {
+            *most = Some(new);
         }
     }
 
@@ -250,6 +369,11 @@ impl Checker {
         column: usize,
     ) -> Option<(f64, f64)> {
         let early = self.early.as_mut().expect("early_on");
+        if early.moved_first.is_none() {
+            // (its first position: before a G90/G91 of its own where the machine has applied
+            // none since it began)
+            early.moved_first = Some(self.machine.distance_codes == early.distance_codes);
+        }
         let span = self.spans[i].as_mut().expect("added");
         if span.least == at {
             early.least_at[i] = (line, column);
@@ -304,8 +428,10 @@ impl Checker {
     #[inline(never)]
     pub(super) fn early_call(&mut self, number: Key, token: String, at: (usize, usize)) -> bool {
         let Some(k) = self.pending.iter().position(|p| p.number == number) else {
-            if self.given_up.as_ref().is_some_and(|(n, _, _)| *n == number) {
-                let (_, name, (line, _)) = self.given_up.take().expect("matched");
+            if let Some((_, name, (line, _))) = self.given_up.iter().find(|(n, _, _)| *n == number)
+            {
+                // (at each call of it: review 43, finding E)
+                let (name, line) = (name.clone(), *line);
                 let message = format!(
                     "{token} calls {name}, read from the reset state on line {line} and said \
                      as read there (it held more than {HOLD_MAX} findings): its positions and \
@@ -323,6 +449,7 @@ impl Checker {
                 factor: self.to_profile_units(false),
                 feed_factor: self.to_profile_units(true),
                 shift: Some(shift),
+                incremental: self.machine.state.incremental,
             });
         let Some(call) = call else {
             let pending = &mut self.pending[k];
@@ -465,13 +592,21 @@ impl Checker {
     /// A subprogram at a call made in known units and under a known shift: its span (least
     /// and most position) in them, and its largest feed, judged with the spans as they are
     /// here (said at the call, naming the body's line); its machine positions' findings said
-    /// at its first call where the units are those it was read in.
+    /// at its first call where the units are those it was read in or larger, and its G53
+    /// positions' least and most judged in the call's units ([`Checker::early_machine_judged`]).
+    /// A body whose first position comes before a G90/G91 of its own, called in the other
+    /// mode, has positions not known there: one TG140 says so, its feed and G53 positions
+    /// judged all the same (review 43, finding D).
     fn early_judged(&mut self, p: &mut Pending, call: &Call, token: &str, at: (usize, usize)) {
         let r = call.factor / p.factor;
-        let units = match (call.factor == p.factor, self.config.limit_units) {
-            (true, _) => "",
-            (false, crate::modal::Units::Metric) => " in inches",
-            (false, crate::modal::Units::Inch) => " in millimetres",
+        // (the units the call runs it in, where they are not those it was read in: the
+        // profile's where its factor is 1)
+        let units = match (call.factor == 1.0, self.config.limit_units) {
+            _ if call.factor == p.factor => "",
+            (true, crate::modal::Units::Metric) | (false, crate::modal::Units::Inch) => {
+                " in millimetres"
+            }
+            _ => " in inches",
         };
         let (line, column) = at;
         let under = |of: usize| {
@@ -482,22 +617,50 @@ impl Checker {
                 p.name
             )
         };
+        // (G90/G91 are modal and a call changes none: a body that moves before writing its
+        // own runs its positions in the call's mode)
+        let known = p
+            .read_incremental
+            .is_none_or(|read| read == call.incremental);
         let shift = call.shift.unwrap_or([0.0; 9]);
-        for (i, shift) in shift.into_iter().enumerate() {
-            let Some(span) = p.spans[i] else {
-                continue;
-            };
-            if self.travel.of_place(i).is_none() {
-                continue;
+        if known {
+            for (i, shift) in shift.into_iter().enumerate() {
+                let Some(span) = p.spans[i] else {
+                    continue;
+                };
+                if self.travel.of_place(i).is_none() {
+                    continue;
+                }
+                let (l, m) = (p.least_at[i].0, p.most_at[i].0);
+                self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
+                self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
             }
-            let (l, m) = (p.least_at[i].0, p.most_at[i].0);
-            self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
-            self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
+        } else if !p.mode_said
+            && (0..AXES.len()).any(|i| p.spans[i].is_some() && self.travel.of_place(i).is_some())
+        {
+            p.mode_said = true;
+            let (here, read) = if call.incremental {
+                ("G91 (incremental)", "absolute")
+            } else {
+                ("G90 (absolute)", "incremental")
+            };
+            let message = format!(
+                "{token} runs {name} under the {here} in force here (G90/G91 are modal and a call \
+                 changes none), and {name} moves before it writes a G90 or G91 of its own: its \
+                 positions, read as {read} where it is written, are not known at this call and \
+                 are not compared with the travel (TG601; said at its first such call)",
+                name = p.name
+            );
+            self.report(Rule::NotFollowed, message, line, column);
         }
+        self.early_machine_judged(&mut p.machine, r, at, &under);
         if r == 1.0 && !p.positions.is_empty() {
             let unshifted = shift.iter().all(|s| *s == 0.0);
             for mut f in std::mem::take(&mut p.positions) {
-                if !unshifted && !f.message.contains("(G53)") {
+                // (a position under a work offset is the body's work position plus the
+                // offset: not where it goes under a shift, or where its positions are not known)
+                let machine = f.message.contains("(G53)");
+                if !(machine || unshifted && known) {
                     continue;
                 }
                 f.message = format!("{}{}", f.message, under(f.line));
@@ -510,6 +673,9 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
+                if !known && !f.message.contains("(G53)") {
+                    continue;
+                }
                 f.message = format!(
                     "{} (the position as written, in the units {} was read in; it runs{units} as \
                      called by {token} of line {line}, farther out there)",
@@ -518,14 +684,14 @@ impl Checker {
                 self.early_hold();
                 self.found.push(f);
             }
-        } else if !p.positions.is_empty() {
-            // (in the smaller units of the call a position beyond the travel as read may be
-            // within it: not judged, said once)
-            p.positions.clear();
+        } else if p.positions.iter().any(|f| !f.message.contains("(G53)")) {
+            // (in the smaller units of the call a position under a work offset beyond the
+            // travel as read may be within it: not judged, said once; the G53 ones are judged
+            // above, and kept for a call in the units they were read in)
+            p.positions.retain(|f| f.message.contains("(G53)"));
             let message = format!(
-                "{token}: {} runs{units} here, and its machine positions (G53, a work \
-                 offset's), beyond the travel as read in the units it was read in, are not \
-                 judged in these",
+                "{token}: {} runs{units} here, and its machine positions under a work offset, \
+                 beyond the travel as read in the units it was read in, are not judged in these",
                 p.name
             );
             self.report(Rule::NotFollowed, message, line, column);
@@ -543,6 +709,52 @@ impl Checker {
             p.feed_said = true;
             let under = under(feed.line);
             self.feed_over(feed.word, call.feed_factor, feed.mode, at, &under);
+        }
+    }
+
+    /// A subprogram's G53 positions at a call whose units are `r` times those it was read in
+    /// (review 43, finding A): G53 ignores every shift (G52, G92, G54-G59), so each axis's
+    /// least and most value, times `r`, is where the machine goes; one beyond the travel
+    /// there is said at the call (once), naming the body's line, unless the body's own
+    /// finding of it says it at this call (beyond the travel as read, at a call in the units
+    /// it was read in or larger). Made inside another program read apart, they join that
+    /// one's, judged where it is called.
+    fn early_machine_judged(
+        &mut self,
+        machine: &mut Machine,
+        r: f64,
+        at: (usize, usize),
+        under: &dyn Fn(usize) -> String,
+    ) {
+        for i in 0..AXES.len() {
+            for k in 0..2 {
+                let Some(m) = machine[i][k] else {
+                    continue;
+                };
+                if k == 1 && machine[i][0].is_some_and(|least| least.at == m.at) {
+                    // (one value: its least is its most)
+                    continue;
+                }
+                if self.early_on {
+                    self.early_machine(AXES[i], m.value, m.at * r, at.0);
+                }
+                let Some((low, high)) = self.travel.of_place(i) else {
+                    continue;
+                };
+                let there = m.at * r;
+                if m.said || (low..=high).contains(&there) {
+                    continue;
+                }
+                if let Some(m) = machine[i][k].as_mut() {
+                    m.said = true;
+                }
+                if r >= 1.0 && !(low..=high).contains(&m.at) {
+                    continue;
+                }
+                let message = self.machine_message(AXES[i], m.value, there, (low, high));
+                let message = format!("{message}{}", under(m.line));
+                self.report_limit(Rule::TravelExceeded, message, at.0, at.1);
+            }
         }
     }
 }
@@ -791,6 +1003,40 @@ mod tests {
         assert_eq!(limits(metric, own), [(10, 4)]);
     }
 
+    /// LinuxCNC reads a computed o-word label (rs274ngc `read_o`: `o#1 call`, `o[#1] call`,
+    /// `o#<s> call`): a parameter holding a known whole number calls that subroutine, judged
+    /// at the call as `o100 call` is; an expression the checker does not work out leaves the
+    /// call's target not known (one TG140, the body not judged), as `M98 P#1` does.
+    #[test]
+    fn a_linuxcnc_call_by_a_parameter_calls_the_subroutine_of_its_value() {
+        let named = "o100 sub\nG0 X900\no100 endsub\nG21 G90\nG0 X-700 Y0\n#1=100\n\
+                     o100 call\nM2\n";
+        assert_eq!(fired(lcnc(), named, Rule::TravelExceeded), [(7, 1)]);
+        for call in ["o#1 call", "o[#1] call", "O [ #1 ] call", "o#<s> call [2]"] {
+            let text = named
+                .replace("#1=100", "#1=100\n#<s>=100")
+                .replace("o100 call", call);
+            assert_eq!(
+                fired(lcnc(), &text, Rule::TravelExceeded),
+                [(8, 1)],
+                "{call}"
+            );
+        }
+        for call in ["o[#1+0] call", "o#2 call"] {
+            let text = named.replace("o100 call", call);
+            assert_eq!(fired(lcnc(), &text, Rule::TravelExceeded), [], "{call}");
+            let notes: Vec<_> = findings(lcnc(), &text, Rule::NotFollowed)
+                .into_iter()
+                .filter(|f| {
+                    f.message
+                        .contains("calls a program whose number is not known")
+                })
+                .map(|f| (f.line, f.column))
+                .collect();
+            assert_eq!(notes, [(7, 1)], "{call}");
+        }
+    }
+
     /// Findings held for a program read apart are said in the order they came, whether
     /// they are taken after each line or at the end: a main program's report is the same.
     #[test]
@@ -914,7 +1160,7 @@ mod tests {
         }
         checker.finish();
         found.extend(checker.take());
-        assert!(most <= super::HOLD_MAX + 8, "{most}");
+        assert!(most <= super::HOLD_ALL as usize + 8, "{most}");
         assert!(found
             .iter()
             .any(|f| f.rule == Rule::TravelExceeded && f.line == 4));
@@ -927,5 +1173,252 @@ mod tests {
         // taken at the end alone: the same findings
         let (_, all) = run(mill(Units::Metric), &dialect(Family::MacroB), &text);
         assert_eq!(all.len(), found.len());
+    }
+
+    /// The findings of `text` on [`mill`] in metric under `selection`, taken after each line
+    /// (`each`, as the CLI's report) or once at the end (as the Python API's chunk).
+    fn taken(text: &str, selection: Selection, each: bool) -> Vec<(Rule, usize, usize, String)> {
+        let mut checker = Checker::new(Arc::new(mill(Units::Metric)), selection, false);
+        let (mut tokens, mut found) = (Vec::new(), Vec::new());
+        for (i, line) in text.lines().enumerate() {
+            checker.check_line(
+                line.as_bytes(),
+                i + 1,
+                &dialect(Family::MacroB),
+                &mut tokens,
+            );
+            if each {
+                found.extend(checker.drain());
+            }
+        }
+        checker.finish();
+        found.extend(checker.take());
+        found
+            .into_iter()
+            .map(|f| (f.rule, f.line, f.column, f.message))
+            .collect()
+    }
+
+    /// `O0002` of `n` lines `G53 G0 X-900.` and M99, then `O1000`, `G20`, `M98 P2`, `M30`
+    /// (review 43's small.nc, 1000, and bound.nc, 1100).
+    fn machine_body(n: usize) -> String {
+        let mut text = String::from("%\nO0002\nG1 X0 Y0 F100.\n");
+        for _ in 0..n {
+            text.push_str("G53 G0 X-900.\n");
+        }
+        text.push_str("M99\nO1000\nG20 G90 G54\nM98 P2\nM30\n%\n");
+        text
+    }
+
+    /// Review 43, finding B: the bound on the hold is counted where a finding is held (its
+    /// limits' findings, selected or not), so the findings are the same taken after each line
+    /// or once, and the program is given up whatever the selection.
+    #[test]
+    fn the_bound_on_the_hold_does_not_depend_on_who_takes_the_findings() {
+        let bound = machine_body(1100);
+        let each = taken(&bound, Selection::all(), true);
+        let once = taken(&bound, Selection::all(), false);
+        assert_eq!(each, once);
+        let errors = |found: &[(Rule, usize, usize, String)]| {
+            found.iter().filter(|f| f.0 == Rule::TravelExceeded).count()
+        };
+        let given_up = |found: &[(Rule, usize, usize, String)]| {
+            found
+                .iter()
+                .filter(|f| {
+                    f.0 == Rule::NotFollowed
+                        && f.3
+                            .starts_with("M98 P2 calls O0002, read from the reset state")
+                })
+                .map(|f| f.1)
+                .collect::<Vec<_>>()
+        };
+        // given up at its 1025th: said as read, and its call noted
+        assert_eq!(errors(&once), 1100);
+        assert_eq!(given_up(&once), [1107]);
+        // the same whatever the selection: the note with TG140 alone (nothing held)
+        let select = |rules: &[Rule]| {
+            let rules: Vec<String> = rules.iter().map(|r| r.id().to_string()).collect();
+            Selection::new(&rules, &[])
+        };
+        for each in [true, false] {
+            let notes = taken(&bound, select(&[Rule::NotFollowed]), each);
+            assert_eq!(errors(&notes), 0);
+            assert_eq!(given_up(&notes), [1107]);
+            let limits = taken(
+                &bound,
+                select(&[
+                    Rule::TravelExceeded,
+                    Rule::FeedTooHigh,
+                    Rule::FeedClamped,
+                    Rule::NotFollowed,
+                ]),
+                each,
+            );
+            assert_eq!(errors(&limits), 1100);
+            assert_eq!(given_up(&limits), [1107]);
+        }
+        // 1000 of them: held, and said at the call, taken either way
+        let small = machine_body(1000);
+        let each = taken(&small, Selection::all(), true);
+        assert_eq!(each, taken(&small, Selection::all(), false));
+        assert_eq!(errors(&each), 1000);
+        assert!(given_up(&each).is_empty());
+        assert!(each
+            .iter()
+            .filter(|f| f.0 == Rule::TravelExceeded)
+            .all(|f| f.3.contains("as called by M98 P2 of line 1007")));
+    }
+
+    /// Review 43, finding E: two programs given up, each call of each noted.
+    #[test]
+    fn each_program_given_up_is_noted_at_each_call() {
+        let mut text = String::from("%\n");
+        for number in ["O0002", "O0003"] {
+            text.push_str(number);
+            text.push('\n');
+            for _ in 0..1100 {
+                text.push_str("G53 G0 X-900.\n");
+            }
+            text.push_str("M99\n");
+        }
+        text.push_str("O1000\nG20 G90 G54\nM98 P2\nM98 P3\nM98 P2\nM30\n%\n");
+        let notes: Vec<_> = taken(&text, Selection::all(), false)
+            .into_iter()
+            .filter(|f| f.0 == Rule::NotFollowed && f.3.contains("held more than 1024"))
+            .map(|f| (f.1, f.3[..14].to_string()))
+            .collect();
+        assert_eq!(
+            notes,
+            [
+                (2208, "M98 P2 calls O".to_string()),
+                (2209, "M98 P3 calls O".to_string()),
+                (2210, "M98 P2 calls O".to_string())
+            ]
+        );
+    }
+
+    /// Review 43, finding D: a call made under G91 runs a body that moves before writing a
+    /// G90/G91 of its own in G91 (G90/G91 are modal; a call changes none): its X900. is an
+    /// increment, not judged as absolute (callg91b.nc: a false "X spans 1600"); one TG140 at
+    /// the call says why. A body that writes its own G90 first is judged as before.
+    #[test]
+    fn a_call_under_g91_leaves_a_body_read_in_g90_not_known() {
+        let text = "%\nO0002\nG0 X900.\nM99\nO1000\nG21 G90 G54\nG0 X-700. Y0\nG91\nM98 P2\n\
+                    G90\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), text), []);
+        let notes: Vec<_> = findings(metric.clone(), text, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| f.message.starts_with("M98 P2 runs O0002 under the G91"))
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(notes, [(9, 5)]);
+        // called twice in G91: said once
+        let twice = text.replace("M98 P2\n", "M98 P2\nM98 P2\n");
+        assert_eq!(
+            findings(metric.clone(), &twice, Rule::NotFollowed)
+                .iter()
+                .filter(|f| f.message.contains("under the G91"))
+                .count(),
+            1
+        );
+        // G65 likewise
+        assert_eq!(
+            limits(metric.clone(), &text.replace("M98 P2", "G65 P2")),
+            []
+        );
+        // a body that writes G90 before it moves: absolute, X-700 then 900 (1600 mm)
+        let own = text.replace("O0002\n", "O0002\nG90\n");
+        assert_eq!(limits(metric.clone(), &own), [(10, 5)]);
+        // in the same block as its first move, too
+        let same = text.replace("O0002\nG0", "O0002\nG90 G0");
+        assert_eq!(limits(metric.clone(), &same), [(9, 5)]);
+        // the call in G90: judged as before
+        assert_eq!(limits(metric.clone(), &text.replace("G91\n", "")), [(8, 5)]);
+        // its feed is judged all the same, whatever G90/G91 (F500. in/min: 12700 mm/min)
+        let fast = "%\nO0002\nG1 X1. F500.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nG91\nM98 P2\n\
+                    G90\nM30\n%\n";
+        assert_eq!(limits(metric, fast), [(9, 5)]);
+    }
+
+    /// Finding D on LinuxCNC: an `o<s> call` under G91 runs the definition's `G0 X250` as an
+    /// increment (rs274: a call changes no mode).
+    #[test]
+    fn a_linuxcnc_call_under_g91_leaves_a_definition_read_in_g90_not_known() {
+        let text =
+            "G21 G90\no<s> sub\nG0 X250\no<s> endsub\nG0 X-250 Y0\nG92 X-400\nG91\no<s> call\nG90\nM2\n";
+        assert_eq!(fired(lcnc(), text, Rule::TravelExceeded), []);
+        assert!(findings(lcnc(), text, Rule::NotFollowed)
+            .iter()
+            .any(|f| f.line == 8 && f.message.starts_with("o<s> call runs o<s> under the G91")));
+        // in G90: 650 of span, as before
+        assert_eq!(
+            fired(lcnc(), &text.replace("G91\n", ""), Rule::TravelExceeded),
+            [(7, 1)]
+        );
+    }
+
+    /// Review 43, finding A's remainder: a body's G53 position within the travel as read
+    /// (X-31. read in mm) is beyond it at a call in inches (-787.4 mm, past -762): said at
+    /// the call, naming the body's line; G53 ignores the call's shift. At a call in mm, or
+    /// of X-30. (-762 mm), nothing.
+    #[test]
+    fn a_machine_position_within_the_travel_as_read_is_judged_in_the_call_s_units() {
+        let text = "%\nO0002\nG53 G0 X-31.\nG53 G0 X5.\nM99\nO1000\nG20 G90 G54\nM98 P2\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        let said = findings(metric.clone(), text, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!((said[0].line, said[0].column), (8, 5));
+        assert!(
+            said[0]
+                .message
+                .starts_with("X goes to -31 in (-787.4 mm) in machine coordinates (G53)")
+                && said[0].message.contains(
+                    "O0002 runs in inches as called by M98 P2 of line 8, its position of line 3"
+                ),
+            "{}",
+            said[0].message
+        );
+        // under a G52 too (G53 ignores it), and called twice: said at the first call
+        let shifted = text.replace("M98 P2\n", "G52 X100.\nM98 P2\nG52 X0\nM98 P2\n");
+        assert_eq!(limits(metric.clone(), &shifted), [(9, 5)]);
+        assert_eq!(limits(metric.clone(), &text.replace("G20", "G21")), []);
+        assert_eq!(limits(metric.clone(), &text.replace("X-31.", "X-30.")), []);
+        // called from inside another body read apart: said at the outer call
+        let nested = "%\nO0002\nG53 G0 X-31.\nM99\nO0003\nM98 P2\nM99\nO1000\nG20 G90 G54\n\
+                      M98 P3\nM30\n%\n";
+        assert_eq!(limits(metric, nested), [(10, 5)]);
+    }
+
+    /// The same at a call in smaller units (a machine reset in inches, the call in G21):
+    /// X-40. read in inches (-1016 mm, said as read) is -40 mm there, inside; X-800. is -800
+    /// mm, beyond: judged, where one TG140 said before that none was.
+    #[test]
+    fn a_machine_position_is_judged_at_a_call_in_smaller_units() {
+        let text = "%\nO0002\nG53 G0 X-40.\nM99\nO1000\nG21 G90 G54\nM98 P2\nM30\n%\n";
+        let inch = mill(Units::Inch);
+        assert_eq!(limits(inch.clone(), text), []);
+        assert!(findings(inch.clone(), text, Rule::NotFollowed)
+            .iter()
+            .all(|f| !f.message.contains("not judged")));
+        let far = text.replace("X-40.", "X-800.");
+        let said = findings(inch.clone(), &far, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!((said[0].line, said[0].column), (7, 5));
+        assert!(
+            said[0]
+                .message
+                .starts_with("X goes to -800 in machine coordinates (G53), outside")
+                && said[0].message.contains(
+                    "O0002 runs in millimetres as called by M98 P2 of line 7, its position of \
+                     line 3"
+                ),
+            "{}",
+            said[0].message
+        );
+        // then a call in inches: the finding as read, said there
+        let both = far.replace("M98 P2\n", "M98 P2\nG20\nM98 P2\n");
+        assert_eq!(limits(inch, &both), [(7, 5), (9, 5)]);
     }
 }

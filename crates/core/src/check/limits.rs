@@ -5,7 +5,7 @@
 use super::{round6, Before, BlockView, Checker, Config, Facts, Span};
 use crate::decimal::Dec;
 use crate::lex::Family;
-use crate::modal::{axis_index, bit, AxesTaken, Units, AXES};
+use crate::modal::{axis_index, bit, AxesTaken, Units, AXES, CYCLE_RAN, CYCLE_UNSURE};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -1710,23 +1710,24 @@ impl Checker {
         // a FANUC or Haas lathe's single cycle G90, G92, G94: its end point X(U) Z(W) goes to
         // the spans, the position (the start point, where the tool returns) being kept aside
         // while they are walked
-        let cycle = self.machine.ran_cycle();
+        // (the same of a lathe's multiple repetitive cycle G74-G76 and of an Okuma's fixed
+        // thread cutting cycle, X and Z both walked; the corner of a taper after it,
+        // Checker::cycle_walked)
+        let flags = self.machine.ran_cycle();
+        let cycle = flags & CYCLE_RAN != 0;
         let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
-            onto_xz = uw_onto_xz(places);
+            onto_xz = uw_onto_xz(if cycle {
+                places | 1 << 0 | 1 << 2
+            } else {
+                places
+            });
             (moved, places) = (&onto_xz.0[..onto_xz.1], onto_xz.2);
         }
         if cycle {
             self.machine.swap_cycle_end();
         }
-        let col = |letter: u8| {
-            if uw {
-                uw_column(facts, letter)
-            } else {
-                facts.col(letter)
-            }
-        };
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
             // for made a program of many transformations quadratic)
@@ -1749,6 +1750,7 @@ impl Checker {
         // coordinates name, Checker::shift_spans; taken as a position of the coordinates
         // before it, `G0 X700.` / `G92 X-900.` spanned 1600)
         if self.frames.codes
+            && !cycle
             && matches!(self.machine.taken(), Some(AxesTaken::Data | AxesTaken::Set))
         {
             moved = &[];
@@ -1759,151 +1761,9 @@ impl Checker {
         // (a subprogram whose calls leave its units unknown: its lengths and feeds are not
         // judged against the machine's until it writes a units code, Checker::called_units;
         // a speed or a tool number still is)
-        'axes: {
-            if (places & self.travel.places() == 0 && self.frames.map.is_none())
-                || self.units_unknown
-            {
-                if self.units_unknown && places & self.travel.places() != 0 {
-                    self.unknown_call_note();
-                }
-                break 'axes;
-            }
-            let factor = self.to_profile_units(false);
-            // (an Okuma mill's G53 cancels the tool length offset: work_offset)
-            let machine = self.values.has_g(53)
-                && (self.config.family != Family::Okuma || self.config.modal.lap);
-            // the axes whose positions go to the spans below through a frame, or not at all
-            // (none where no frame is on: most programs)
-            let framed = if self.frames.on == 0 {
-                0
-            } else {
-                self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
-            };
-            // no machine coordinates, no offset compared, no frame: each axis's position only goes
-            // to its span (a CAM program's moves under a profile without work offsets), walked by
-            // the places of the axes that have a travel (none under a profile without travels),
-            // where the walk below looked each axis up by its letter and passed the offsets' tests
-            // (about 60 instructions an axis)
-            // (and no frame's map, which reads the moved axes below)
-            // (and no shift followed, which the walk below adds)
-            if !machine && !absolute && framed == 0 && self.frames.map.is_none() && !self.shifts.on
-            {
-                debug_assert_eq!(
-                    moved,
-                    crate::modal::places(places)
-                        .map(|i| AXES[i])
-                        .collect::<Vec<_>>(),
-                    "line {line}: the moved axes' places"
-                );
-                let count = !self.config.work_offsets.is_empty();
-                for i in crate::modal::places(places & self.travel.places()) {
-                    let (Some(_), Some(position)) =
-                        (self.travel.of_place(i), self.machine.state.position[i])
-                    else {
-                        continue;
-                    };
-                    let at = position.to_f64() * factor;
-                    if count {
-                        self.stats.travel_moves += 1;
-                    }
-                    self.add_to_span(i, at, false, line, || col(AXES[i]), "");
-                }
-                moved = &[];
-            }
-            for &axis in moved {
-                let Some((low, high)) = self.travel.of(axis) else {
-                    continue;
-                };
-                if machine {
-                    let Some(value) = self.values.get(axis) else {
-                        continue;
-                    };
-                    let at = value.to_f64() * factor;
-                    if !(low..=high).contains(&at) {
-                        self.machine_outside(axis, value, at, (low, high), (line, col(axis)));
-                    }
-                    continue;
-                }
-                let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
-                else {
-                    continue;
-                };
-                let at = position.to_f64() * factor;
-                if !self.config.work_offsets.is_empty() {
-                    self.stats.travel_moves += 1;
-                }
-                let offset = self.work.and_then(|work| {
-                    self.config
-                        .work_offsets
-                        .iter()
-                        .find(|&&(g, a, _)| g == work && a == axis)
-                        .map(|&(_, _, value)| value)
-                });
-                let length =
-                    axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
-                let mut said_outside = false;
-                match (absolute, self.work, offset) {
-                    (true, Some(_), Some(_)) if length => self.travel_not(
-                        "Z while a tool length offset was in force (the profile gives no tool lengths)"
-                            .into(),
-                    ),
-                    (true, Some(work), Some(offset)) => {
-                        self.stats.travel_absolute += 1;
-                        let machine_at = at + offset.to_f64();
-                        // which side of the travel the axis is outside (0 inside): a move from
-                        // one side to the other crosses the travel, another excursion
-                        let out = if machine_at < low - 1e-9 {
-                            -1
-                        } else if machine_at > high + 1e-9 {
-                            1
-                        } else {
-                            0
-                        };
-                        if out != 0 && out != self.outside[i] {
-                            let message = format!(
-                                "{} goes to {} in machine coordinates (work {} + G{work} offset \
-                                 {offset}), outside the travel {low} to {high}",
-                                axis as char,
-                                round6(machine_at),
-                                round6(at)
-                            );
-                            self.report_limit(Rule::TravelExceeded, message, line, col(axis));
-                            said_outside = true;
-                        }
-                        self.outside[i] = out;
-                    }
-                    (true, Some(work), None) => self.travel_not(format!(
-                        "{} under G{work}: the profile gives no G{work} {}",
-                        axis as char, axis as char
-                    )),
-                    (true, None, _) => self
-                        .travel_not("where the program has selected no work offset (G54-G59)".into()),
-                    _ => {}
-                }
-                // (under a frame: X Y Z taken back through it below, or left out)
-                if framed & (1 << i) != 0 {
-                    for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
-                        *moved |= hidden & (1 << i) != 0;
-                    }
-                    continue;
-                }
-                let at = self.shifted(i, at);
-                if self
-                    .shifts
-                    .end_note
-                    .as_ref()
-                    .is_some_and(|n| n.3 & 1 << i != 0)
-                {
-                    self.end_noted();
-                }
-                self.add_to_span(i, at, said_outside, line, || col(axis), "");
-            }
-            if self.frames.map.is_some() && !moved.is_empty() {
-                self.mapped_spans(moved, line, facts);
-            }
-        }
-        if cycle {
-            self.machine.swap_cycle_end();
+        self.walk_spans((moved, places), line, facts, absolute, uw);
+        if flags != 0 {
+            self.cycle_walked(flags, (moved, places), line, facts, absolute);
         }
         let v = &self.values;
         // (the feed, speed and tool limits below read the block's F, S and T alone: most
@@ -1933,7 +1793,7 @@ impl Checker {
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
                 let mode = self.machine.state.feed_mode;
-                self.feed_over(feed, factor, mode, (line, col(b'F')), "");
+                self.feed_over(feed, factor, mode, (line, facts.col(b'F')), "");
             }
         }
         if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
@@ -1949,7 +1809,7 @@ impl Checker {
                 // user's machine (a chuck's rating), keep TG603 (review 37, finding 6)
                 let sample = self.config.sample_limits & super::SAMPLE_SPINDLE != 0;
                 if self.config.family == Family::Iso || !sample {
-                    self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
+                    self.report(Rule::SpeedTooHigh, message, line, facts.col(b'S'));
                 } else {
                     let effect = if self.config.family == Family::Sinumerik {
                         "a SINUMERIK limits it to its maximum (MD35100), no alarm"
@@ -1960,7 +1820,7 @@ impl Checker {
                         "{message} of the profile's machine: {effect}; set the profile's \
                          spindle_max to your machine's"
                     );
-                    self.report(Rule::SpeedLimited, message, line, col(b'S'));
+                    self.report(Rule::SpeedLimited, message, line, facts.col(b'S'));
                 }
             }
         }
@@ -1986,7 +1846,7 @@ impl Checker {
                         ),
                         None => format!("tool {tool} above the largest tool number {top}"),
                     };
-                    self.report_limit(Rule::ToolOutOfRange, message, line, col(b'T'));
+                    self.report_limit(Rule::ToolOutOfRange, message, line, facts.col(b'T'));
                 }
             }
         }
@@ -2030,6 +1890,206 @@ fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
 }
 
 impl Checker {
+    /// The walk of [`Checker::limits`]: the positions of the block's moved axes (`moved`, at
+    /// `places`) to their spans and, where the offsets are known, to the travel; `uw` where
+    /// the block's U and W (or a lathe cycle's words) stand for X and Z (their columns).
+    /// Inlined into `limits`; a lathe cycle's corner walks it again out of line.
+    #[inline(always)]
+    fn walk_spans(
+        &mut self,
+        (mut moved, places): (&[u8], u32),
+        line: usize,
+        facts: &Facts<'_>,
+        absolute: bool,
+        uw: bool,
+    ) {
+        let col = |letter: u8| {
+            if uw {
+                uw_column(facts, letter)
+            } else {
+                facts.col(letter)
+            }
+        };
+        if (places & self.travel.places() == 0 && self.frames.map.is_none()) || self.units_unknown {
+            if self.units_unknown && places & self.travel.places() != 0 {
+                self.unknown_call_note();
+            }
+            return;
+        }
+        let factor = self.to_profile_units(false);
+        // (an Okuma mill's G53 cancels the tool length offset: work_offset)
+        let machine =
+            self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
+        // the axes whose positions go to the spans below through a frame, or not at all
+        // (none where no frame is on: most programs)
+        let framed = if self.frames.on == 0 {
+            0
+        } else {
+            self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
+        };
+        // no machine coordinates, no offset compared, no frame: each axis's position only goes
+        // to its span (a CAM program's moves under a profile without work offsets), walked by
+        // the places of the axes that have a travel (none under a profile without travels),
+        // where the walk below looked each axis up by its letter and passed the offsets' tests
+        // (about 60 instructions an axis)
+        // (and no frame's map, which reads the moved axes below)
+        // (and no shift followed, which the walk below adds)
+        if !machine && !absolute && framed == 0 && self.frames.map.is_none() && !self.shifts.on {
+            debug_assert_eq!(
+                moved,
+                crate::modal::places(places)
+                    .map(|i| AXES[i])
+                    .collect::<Vec<_>>(),
+                "line {line}: the moved axes' places"
+            );
+            let count = !self.config.work_offsets.is_empty();
+            for i in crate::modal::places(places & self.travel.places()) {
+                let (Some(_), Some(position)) =
+                    (self.travel.of_place(i), self.machine.state.position[i])
+                else {
+                    continue;
+                };
+                let at = position.to_f64() * factor;
+                if count {
+                    self.stats.travel_moves += 1;
+                }
+                self.add_to_span(i, at, false, line, || col(AXES[i]), "");
+            }
+            moved = &[];
+        }
+        for &axis in moved {
+            let Some((low, high)) = self.travel.of(axis) else {
+                continue;
+            };
+            if machine {
+                let Some(value) = self.values.get(axis) else {
+                    continue;
+                };
+                let at = value.to_f64() * factor;
+                if !(low..=high).contains(&at) {
+                    self.machine_outside(axis, value, at, (low, high), (line, col(axis)));
+                }
+                if self.early_on {
+                    // (a program read apart: judged at its calls in their units too,
+                    // crate::check::called)
+                    self.early_machine(axis, value, at, line);
+                }
+                continue;
+            }
+            let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
+            else {
+                continue;
+            };
+            let at = position.to_f64() * factor;
+            if !self.config.work_offsets.is_empty() {
+                self.stats.travel_moves += 1;
+            }
+            let offset = self.work.and_then(|work| {
+                self.config
+                    .work_offsets
+                    .iter()
+                    .find(|&&(g, a, _)| g == work && a == axis)
+                    .map(|&(_, _, value)| value)
+            });
+            let length =
+                axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
+            let mut said_outside = false;
+            match (absolute, self.work, offset) {
+                (true, Some(_), Some(_)) if length => self.travel_not(
+                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
+                        .into(),
+                ),
+                (true, Some(work), Some(offset)) => {
+                    self.stats.travel_absolute += 1;
+                    let machine_at = at + offset.to_f64();
+                    // which side of the travel the axis is outside (0 inside): a move from
+                    // one side to the other crosses the travel, another excursion
+                    let out = if machine_at < low - 1e-9 {
+                        -1
+                    } else if machine_at > high + 1e-9 {
+                        1
+                    } else {
+                        0
+                    };
+                    if out != 0 && out != self.outside[i] {
+                        let message = format!(
+                            "{} goes to {} in machine coordinates (work {} + G{work} offset \
+                                 {offset}), outside the travel {low} to {high}",
+                            axis as char,
+                            round6(machine_at),
+                            round6(at)
+                        );
+                        self.report_limit(Rule::TravelExceeded, message, line, col(axis));
+                        said_outside = true;
+                    }
+                    self.outside[i] = out;
+                }
+                (true, Some(work), None) => self.travel_not(format!(
+                    "{} under G{work}: the profile gives no G{work} {}",
+                    axis as char, axis as char
+                )),
+                (true, None, _) => self
+                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                _ => {}
+            }
+            // (under a frame: X Y Z taken back through it below, or left out)
+            if framed & (1 << i) != 0 {
+                for (moved, hidden) in self.frames.moved.iter_mut().zip(self.frames.hidden) {
+                    *moved |= hidden & (1 << i) != 0;
+                }
+                continue;
+            }
+            let at = self.shifted(i, at);
+            if self
+                .shifts
+                .end_note
+                .as_ref()
+                .is_some_and(|n| n.3 & 1 << i != 0)
+            {
+                self.end_noted();
+            }
+            self.add_to_span(i, at, said_outside, line, || col(axis), "");
+        }
+        if self.frames.map.is_some() && !moved.is_empty() {
+            self.mapped_spans(moved, line, facts);
+        }
+    }
+
+    /// After [`Checker::limits`]'s walk of a block that ran a lathe's cycle
+    /// ([`ModalMachine::ran_cycle`]): the position back at the start point, the corner of
+    /// the cycle's taper walked as its end point was, and, where some of where the cycle
+    /// went is not known, TG140 once per file.
+    #[cold]
+    #[inline(never)]
+    fn cycle_walked(
+        &mut self,
+        flags: u8,
+        axes: (&[u8], u32),
+        line: usize,
+        facts: &Facts<'_>,
+        absolute: bool,
+    ) {
+        if flags & CYCLE_RAN != 0 {
+            self.machine.swap_cycle_end();
+            if self.machine.cycle_corner().is_some() && !axes.0.is_empty() {
+                self.machine.swap_cycle_corner();
+                self.walk_spans(axes, line, facts, absolute, true);
+                self.machine.swap_cycle_corner();
+            }
+        }
+        if flags & CYCLE_UNSURE != 0 && !self.cycle_noted {
+            self.cycle_noted = true;
+            let message = format!(
+                "a lathe cycle's positions are not compared with the travel (TG601): {}; \
+                 the check compares the end points and taper corners it can work out (said \
+                 once: the same for any later such cycle of this file)",
+                self.machine.cycle_why()
+            );
+            let column = facts.words.first().map_or(1, |w| w.column);
+            self.report(Rule::NotFollowed, message, line, column);
+        }
+    }
+
     /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
     /// span is wider than the travel. `under` ends the message: the frame the position was
     /// taken back through.
@@ -2170,6 +2230,19 @@ impl Checker {
         (low, high): (f64, f64),
         (line, column): (usize, usize),
     ) {
+        let message = self.machine_message(axis, value, at, (low, high));
+        self.report_limit(Rule::TravelExceeded, message, line, column);
+    }
+
+    /// The message of [`Checker::machine_outside`], `value` read in the units in force (a
+    /// subprogram's G53 position judged at its call: crate::check::called).
+    pub(super) fn machine_message(
+        &self,
+        axis: u8,
+        value: Dec,
+        at: f64,
+        (low, high): (f64, f64),
+    ) -> String {
         let axis = axis as char;
         let message = if self.to_profile_units(false) == 1.0 {
             format!(
@@ -2188,8 +2261,7 @@ impl Checker {
             )
         };
         let fits = (low..=high).contains(&(at / 25.4));
-        let message = format!("{message}{}", self.units_not_written(fits));
-        self.report_limit(Rule::TravelExceeded, message, line, column);
+        format!("{message}{}", self.units_not_written(fits))
     }
 
     /// A finding against the profile's machine (TG601, TG602, TG604, TG605): the file's first
@@ -2199,7 +2271,7 @@ impl Checker {
     /// The limit's own: a user's file on a base that sets it (the travel: every axis's) is the
     /// user's machine, no hint; one it leaves to the base is the sample's (review 38, 4).
     #[cold]
-    fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+    pub(super) fn report_limit(&mut self, rule: Rule, message: String, line: usize, column: usize) {
         if matches!(
             rule,
             Rule::TravelExceeded | Rule::FeedTooHigh | Rule::FeedClamped
@@ -2405,7 +2477,7 @@ fn frame_variable(text: &[u8]) -> Option<&[u8]> {
 #[cfg(test)]
 mod tests {
     use super::super::testing::{
-        dialect, fanuc_lathe, findings, fired, iso_mill, of_family, program, run,
+        dialect, fanuc_lathe, findings, fired, iso_mill, of_family, okuma_lathe, program, run,
     };
     use super::super::{Config, ProfileFacts};
     use crate::decimal::Dec;
@@ -2894,6 +2966,135 @@ mod tests {
                 assert_eq!(at(&inside), [], "{name} {cycle}");
             }
         }
+    }
+
+    /// Review 44, finding F5: the block of a FANUC's or Haas's multiple repetitive cycle
+    /// G74, G75, G76 that writes X(U) Z(W) gives its end point (G76: the final thread's root
+    /// diameter and end, its taper R -- Haas I -- the corner at the start point's Z), the
+    /// tool back at the start point after it (FANUC 0i-TF operator's manual, "Multiple
+    /// repetitive cycle (G70-G76)"; Haas lathe operator's manual, G74, G75, G76); the first
+    /// block (P Q R alone) moves nothing. Travel X -500 to 500, Z -300 to 100.
+    #[test]
+    fn a_lathe_s_repetitive_cycles_reach_the_spans_with_their_end_point() {
+        let mut haas = fanuc_lathe();
+        (haas.haas, haas.modal.haas) = (true, true);
+        for (name, lathe) in [("fanuc", fanuc_lathe()), ("haas", haas)] {
+            let at = |body: &str| at(lathe.clone(), body, Rule::TravelExceeded);
+            let taper = if name == "haas" { 'I' } else { 'R' };
+            // the review's programs, to the travel here: G76's Z, G75's X, G74's Z
+            let g76 = "G00 X60. Z50.\nG76 P010060 Q100 R0.05\nG76 X50. Z-400. P1000 Q300 F1.5\n";
+            assert_eq!(at(g76), [(4, 10)], "{name}");
+            let w = "G00 X60. Z50.\nG76 P010060 Q100 R0.05\nG76 U-10. W-460. P1000 Q300 F1.5\n";
+            assert_eq!(at(w), [(4, 11)], "{name}");
+            let g75 = "G00 X60. Z5.\nG75 R0.5\nG75 X-1000. Z-30. P1000 Q2000 F0.1\n";
+            assert_eq!(at(g75), [(4, 5)], "{name}");
+            let g74 = "G00 X0 Z50.\nG74 R0.5\nG74 Z-400. Q5000 F0.1\n";
+            assert_eq!(at(g74), [(4, 5)], "{name}");
+            // the first block alone moves nothing; after the cycle the tool is back at its
+            // start point Z50. (had it stayed at Z-250., the W-320. would reach Z-570.)
+            let back = "G00 X60. Z50.\nG76 P010060 Q100 R0.05\nG76 X50. Z-250. P1000 Q300 F1.5\n\
+                        G00 W-320.\n";
+            assert_eq!(at(back), [], "{name}");
+            // G76's taper: the final pass starts at X 50 - 2 x 600 = -1150
+            let tapered = format!(
+                "G00 X60. Z50.\nG76 P010060 Q100 R0.05\nG76 X50. Z-30. {taper}-600. P1000 Q300 F1.5\n"
+            );
+            assert_eq!(at(&tapered), [(4, 5)], "{name}");
+            let inside = format!(
+                "G00 X60. Z50.\nG76 P010060 Q100 R0.05\nG76 X50. Z-30. {taper}-200. P1000 Q300 F1.5\n"
+            );
+            assert_eq!(at(&inside), [], "{name}");
+        }
+        // Haas's one block (X Z K D F)
+        let mut haas = fanuc_lathe();
+        (haas.haas, haas.modal.haas) = (true, true);
+        let one = "G00 X60. Z50.\nG76 X50. Z-400. K1. D0.3 F1.5\n";
+        assert_eq!(at(haas.clone(), one, Rule::TravelExceeded), [(3, 10)]);
+        let one = "G00 X60. Z50.\nG76 X50. Z-200. K1. D0.3 F1.5\nG00 W-320.\n";
+        assert_eq!(at(haas, one, Rule::TravelExceeded), []);
+    }
+
+    /// Review 44, finding F1: a single cycle's taper -- FANUC R, Haas I (G90, G92) and K
+    /// (G94) -- takes the tool to a corner first: G90/G92 the end point's X plus twice the
+    /// radius difference, at the start point's Z; G94 the end point's Z plus R, at the start
+    /// point's X (FANUC 0i-TF operator's manual, "Outer diameter/internal diameter cutting
+    /// cycle G90", "Thread cutting cycle G92", "End face turning cycle G94"; the taper is
+    /// modal with X(U) and Z(W), "Canned cycle"). A taper not known here is said (TG140).
+    #[test]
+    fn a_single_cycle_s_taper_corner_reaches_the_spans() {
+        let mut haas = fanuc_lathe();
+        (haas.haas, haas.modal.haas) = (true, true);
+        for (name, lathe) in [("fanuc", fanuc_lathe()), ("haas", haas)] {
+            let at = |body: &str| at(lathe.clone(), body, Rule::TravelExceeded);
+            let haas = name == "haas";
+            for cycle in ["G90", "G92"] {
+                let r = if haas { 'I' } else { 'R' };
+                // the review's program: the tool rapids to X 50 - 1200 = -1150
+                let out = format!("G00 X60. Z50.\n{cycle} X50. Z-30. {r}-600. F0.2\n");
+                assert_eq!(at(&out), [(3, 5)], "{name} {cycle}");
+                let inside = format!("G00 X60. Z50.\n{cycle} X50. Z-30. {r}-200. F0.2\n");
+                assert_eq!(at(&inside), [], "{name} {cycle}");
+                // the taper is modal: X-600.'s corner is -1000
+                let repeat = format!("G00 X60. Z50.\n{cycle} X50. Z-30. {r}-200. F0.2\nX-600.\n");
+                assert_eq!(at(&repeat), [(4, 1)], "{name} {cycle}");
+                // ... until G00 ends the cycle's data
+                let ended =
+                    format!("G00 X60. Z50.\n{cycle} X50. Z-30. {r}-200. F0.2\nG00 X60.\n{cycle} X-600. Z-30.\n");
+                assert_eq!(at(&ended), [], "{name} {cycle}");
+            }
+            let k = if haas { 'K' } else { 'R' };
+            let face = format!("G00 X60. Z50.\nG94 X20. Z0 {k}-400. F0.2\n");
+            assert_eq!(at(&face), [(3, 10)], "{name}");
+            let face = format!("G00 X60. Z50.\nG94 X20. Z0 {k}-300. F0.2\n");
+            assert_eq!(at(&face), [], "{name}");
+        }
+        // a Haas's taper letter is I: its R is no taper here (the manual's G90 has none)
+        let mut haas = fanuc_lathe();
+        (haas.haas, haas.modal.haas) = (true, true);
+        let r = "G00 X60. Z50.\nG90 X50. Z-30. R-600. F0.2\n";
+        assert_eq!(at(haas, r, Rule::TravelExceeded), []);
+        // a taper by a parameter not known here: TG140 once, no TG601
+        let unknown = "G00 X60. Z50.\nG90 X50. Z-30. R#5 F0.2\nX40.\n";
+        assert_eq!(at(fanuc_lathe(), unknown, Rule::TravelExceeded), []);
+        let notes = findings(fanuc_lathe(), &program(unknown), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(notes[0].message.contains("taper"), "{}", notes[0].message);
+        assert_eq!(notes[0].line, 3);
+    }
+
+    /// Review 44, finding F2: an Okuma lathe's fixed thread cutting cycle G33 (OSP-P200L
+    /// 5238-E, section 7, 2-1: X the thread diameter of the pass, Z the thread's end, I the
+    /// radius difference of a taper) returns to its starting point at rapid traverse (CIMCO
+    /// Edit's OSP threading exercise), and its X repeats it at a new diameter; its compound
+    /// thread cutting cycles G71/G72 are said not to be worked out (TG140).
+    #[test]
+    fn an_okuma_thread_cycle_returns_to_its_start_point() {
+        let at = |body: &str| at(okuma_lathe(), body, Rule::TravelExceeded);
+        // (1) the tool back at Z50.: W430. reaches Z480. (span -30 to 480, out of 400)
+        assert_eq!(
+            at("G00 X60. Z50.\nG33 X50. Z-30. F1.5\nG00 W430.\n"),
+            [(4, 5)]
+        );
+        // (2) no false error: from Z50., W-300. reaches Z-250. (span 300); had the tool stayed
+        // at Z-30., it would reach Z-330.
+        assert_eq!(
+            at("G00 X60. Z50.\nG33 X50. Z-30. F1.5\nG00 W-300.\nG00 X100. Z100.\n"),
+            []
+        );
+        // (3) the taper I: the tool goes to X 50 - 1200 = -1150
+        assert_eq!(at("G00 X60. Z50.\nG33 X50. Z-30. I-600. F1.5\n"), [(3, 5)]);
+        // the cycle's end point out of the travel, and its modal repeat
+        assert_eq!(at("G00 X60. Z50.\nG33 X50. Z-400. F1.5\n"), [(3, 10)]);
+        assert_eq!(
+            at("G00 X60. Z50.\nG33 X50. Z-30. F1.5\nX-1000.\n"),
+            [(4, 1)]
+        );
+        // (4) G71: said, not silent
+        let g71 = "G00 X60. Z50.\nG71 X50. Z-1200. K2. D0.5 F1.5\n";
+        assert_eq!(at(g71), []);
+        let notes = findings(okuma_lathe(), &program(g71), Rule::NotFollowed);
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(notes[0].message.contains("G71/G72"), "{}", notes[0].message);
     }
 
     /// Review 41, finding 6: a G92 the Okuma lathe's list lacks (its coordinate setting is

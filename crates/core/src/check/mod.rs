@@ -890,6 +890,9 @@ pub struct Checker {
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
+    /// Whether the note of a lathe cycle whose positions are not all known (TG140) was said
+    /// (once per file: `Checker::cycle_walked`).
+    cycle_noted: bool,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1080,9 +1083,10 @@ pub struct Checker {
     early_on: bool,
     /// Where the findings held for it begin in `found` (none drained from there).
     hold_from: Option<usize>,
-    /// A program read apart whose hold passed [`called::HOLD_MAX`] (read as before from
-    /// there): its number, its name and its O word's place, for a TG140 at a later call.
-    given_up: Option<(called::Key, String, (usize, usize))>,
+    /// The programs read apart whose hold passed [`called::HOLD_MAX`] (read as before from
+    /// there): each one's number, name and O word's place, for a TG140 at each later call
+    /// (a short list: each held more than 1024 findings; review 43, finding E).
+    given_up: Vec<(called::Key, String, (usize, usize))>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
     /// The first call whose program number is not known (its code, line and column), and
@@ -1214,6 +1218,7 @@ impl Checker {
             work: None,
             offsets_lost: false,
             frames: limits::Frames::default(),
+            cycle_noted: false,
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
@@ -1263,7 +1268,7 @@ impl Checker {
             early: None,
             early_on: false,
             hold_from: None,
-            given_up: None,
+            given_up: Vec::new(),
             pending: Vec::new(),
             unknown_call: None,
             feed_pending: Vec::new(),
@@ -1310,33 +1315,10 @@ impl Checker {
         self.keep_stats
     }
 
-    /// The findings held for a program read apart, released once they pass
-    /// [`called::HOLD_MAX`] (memory stays flat: crate::check::called): asked by [`Checker::take`]
-    /// and [`Checker::drain`] before they hand the rest over.
-    fn bound_hold(&mut self) {
-        if self
-            .hold_from
-            .is_some_and(|from| self.found.len() - from > called::HOLD_MAX)
-        {
-            self.early_unhold();
-        }
-    }
-
     /// The findings made since the last call.
     pub fn take(&mut self) -> Vec<Finding> {
-        if self.hold_from.is_none() {
-            return std::mem::take(&mut self.found);
-        }
-        self.take_held()
-    }
-
-    /// [`Checker::take`] while findings are held for a program read apart: they stay
-    /// (crate::check::called).
-    #[cold]
-    #[inline(never)]
-    fn take_held(&mut self) -> Vec<Finding> {
-        self.bound_hold();
         match self.hold_from {
+            // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
                 let held = self.found.split_off(from);
                 self.hold_from = Some(0);
@@ -1357,22 +1339,9 @@ impl Checker {
     /// The findings made since the last call, handed over one by one with the list's
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
-    /// (Inline, with nothing held the list's drain alone: asked after every line.)
-    #[inline]
     pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
-        if self.hold_from.is_none() {
-            return self.found.drain(..);
-        }
-        self.drain_held()
-    }
-
-    /// [`Checker::drain`] while findings are held for a program read apart: they stay
-    /// (crate::check::called).
-    #[cold]
-    #[inline(never)]
-    fn drain_held(&mut self) -> std::vec::Drain<'_, Finding> {
-        self.bound_hold();
         match self.hold_from {
+            // (findings held for a program read apart stay: crate::check::called)
             Some(from) => {
                 self.hold_from = Some(0);
                 self.found.drain(..from)
@@ -1404,6 +1373,10 @@ impl Checker {
 
     pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
         self.reports += 1;
+        if self.hold_from.is_some() {
+            // (a program's findings held: bounded, crate::check::called)
+            self.early_reported();
+        }
         // a limit's finding at a word read with a jump's arrival value says where it holds
         let message = match (self.arrival_letters != 0)
             .then(|| self.arrival_said(rule, line, column))

@@ -360,7 +360,7 @@ impl Checker {
             }
             _ => number,
         };
-        if !self.pending.is_empty() || self.given_up.is_some() {
+        if !self.pending.is_empty() || !self.given_up.is_empty() {
             let token = b
                 .words
                 .iter()
@@ -889,7 +889,7 @@ impl Checker {
             }
             _ => {}
         }
-        if self.pending.is_empty() && self.given_up.is_none() {
+        if self.pending.is_empty() && self.given_up.is_empty() {
             return;
         }
         for &(column, kind, text) in b.statements {
@@ -898,8 +898,11 @@ impl Checker {
             {
                 continue;
             }
-            let label = crate::statement::o_label(text);
-            let token = format!("{} call", String::from_utf8_lossy(&label));
+            let token = format!(
+                "{} call",
+                String::from_utf8_lossy(&crate::statement::o_label(text))
+            );
+            let label = self.linuxcnc_call_label(text);
             if label.len() < 2 || label[1] != b'<' && !label[1..].iter().all(u8::is_ascii_digit) {
                 self.call_unknown(token, b.line, column);
             } else if self.early_call(super::called::Key::Label(label), token, (b.line, column)) {
@@ -989,13 +992,30 @@ impl Checker {
             {
                 continue;
             }
-            let label = crate::statement::o_label(text);
+            let label = self.linuxcnc_call_label(text);
             if !self.linuxcnc_defined.contains(&label)
                 && !self.linuxcnc_called_ahead.iter().any(|(l, _)| *l == label)
             {
                 self.linuxcnc_called_ahead.push((label, b.line));
             }
         }
+    }
+
+    /// The subroutine a LinuxCNC `o… call` statement names: its o-word's label
+    /// ([`crate::statement::o_label`]), and for a label worked out as the line runs (`o#1
+    /// call`, `o[#1] call`: rs274ngc `read_o` reads a parameter or an expression there) the
+    /// numbered one of the parameter's value where the checker knows it as a whole number;
+    /// else the label as written, which names no definition (the call's target not known).
+    fn linuxcnc_call_label(&self, text: &[u8]) -> Vec<u8> {
+        let label = crate::statement::o_label(text);
+        if matches!(label.get(1), Some(b'#' | b'[')) {
+            if let Some(n) = self.constant(&label[1..]).filter(|n| n.is_whole()) {
+                if n.trunc() >= 0 {
+                    return format!("o{}", n.trunc()).into_bytes();
+                }
+            }
+        }
+        label
     }
 
     /// LinuxCNC: a definition's body reads a local named parameter (`#<zz>`, not a global
@@ -1013,7 +1033,8 @@ impl Checker {
             if kind == Kind::Call
                 && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
             {
-                self.linuxcnc_calls.insert(crate::statement::o_label(text));
+                let label = self.linuxcnc_call_label(text);
+                self.linuxcnc_calls.insert(label);
             }
         }
         if let Some((true, _)) = statement {

@@ -192,6 +192,7 @@ pub(super) fn iso_mill() -> Config {
             arc_radius: b'R',
             lacks_g: Vec::new(),
             g_system: Default::default(),
+            haas: false,
         },
     }
 }
