@@ -1196,9 +1196,6 @@ impl ModalMachine {
                 polar = bit(r) | bit(a);
             }
         }
-        // a Fanuc, Haas or Okuma lathe's U W move X Z by an increment (outside its cycles)
-        let uw =
-            (self.settings.fanuc_lathe || self.settings.lap) && self.uw_moves && s.cycle.is_none();
         // an axis the block gives no value (known or not) and that is not of the polar pair
         // is left as it is by every branch below: only the others are looked at (most blocks
         // write two or three of the nine)
@@ -1213,7 +1210,13 @@ impl ModalMachine {
             if self.settings.dwell_word(v, axis) {
                 continue; // a dwell's X (or a Fanuc lathe's U) is its time (clause 13)
             }
-            if uw && matches!(axis, b'U' | b'W') {
+            // a Fanuc, Haas or Okuma lathe's U W move X Z by an increment (outside its
+            // cycles): asked at a U or W word alone (a mill's every block paid for the test)
+            if matches!(axis, b'U' | b'W')
+                && (self.settings.fanuc_lathe || self.settings.lap)
+                && self.uw_moves
+                && s.cycle.is_none()
+            {
                 let Some(value) = v.get(axis) else { continue };
                 let on = if axis == b'U' { b'X' } else { b'Z' };
                 let Some(j) = axis_index(on) else { continue };

@@ -2093,9 +2093,11 @@ impl Checker {
     /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
     /// span is wider than the travel. `under` ends the message: the frame the position was
     /// taken back through.
-    /// (Inlined where it is asked, for each moved axis of every block; the finding out of
-    /// line.)
-    #[inline]
+    /// (Its first test inlined where it is asked, for each moved axis of every block: once
+    /// its callers grew (review 44's cycles) the whole was no longer inlined, a call at each
+    /// axis, about 40 instructions a block on slot_assembly_12; a span that grows, and the
+    /// finding, out of line.)
+    #[inline(always)]
     pub(super) fn add_to_span(
         &mut self,
         i: usize,
@@ -2105,7 +2107,6 @@ impl Checker {
         column: impl FnOnce() -> usize,
         under: &str,
     ) {
-        let axis = AXES[i];
         let Some((low, high)) = self.travel.of_place(i) else {
             return;
         };
@@ -2120,6 +2121,21 @@ impl Checker {
                 return;
             }
         }
+        self.span_grows(i, at, said_outside, (line, column), (low, high), under);
+    }
+
+    /// [`Checker::add_to_span`] where `at` is not strictly inside the span so far.
+    #[inline(never)]
+    fn span_grows(
+        &mut self,
+        i: usize,
+        at: f64,
+        said_outside: bool,
+        (line, column): (usize, impl FnOnce() -> usize),
+        (low, high): (f64, f64),
+        under: &str,
+    ) {
+        let axis = AXES[i];
         let span = self.spans[i].get_or_insert(Span {
             least: at,
             most: at,

@@ -741,6 +741,10 @@ pub struct Checker {
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
+    /// The bit in [`Checker::letters`] of the profile's program number letter, which TG113
+    /// looks for in a block after the first ([`Checker::program_number`]): 0 where none is
+    /// looked for (none, `:`, or P, Q, R), every bit for a letter the mask does not hold.
+    program_letter: u32,
     /// The program part a memory backup's folder marker (`&F=/USER/PATH2/`) began holds
     /// nothing else yet: an empty folder, not a program (no TG114 at its end).
     empty_folder: bool,
@@ -1119,6 +1123,11 @@ pub struct Checker {
 
 impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
+        let program_letter = match config.program_number {
+            None | Some(b':' | b'P' | b'Q' | b'R') => 0,
+            Some(letter) if letter.is_ascii_uppercase() => bit(letter),
+            Some(_) => u32::MAX,
+        };
         let mut machine = ModalMachine::new(config.modal.clone());
         // a dialect's program starts where the operator or its caller left the machine: no
         // position is known, as at the start of every later program of the file
@@ -1144,6 +1153,7 @@ impl Checker {
             found: Vec::new(),
             first: true,
             first_words: true,
+            program_letter,
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
@@ -1316,6 +1326,14 @@ impl Checker {
             }
             None => std::mem::take(&mut self.found),
         }
+    }
+
+    /// Whether any finding was made since the last call ([`Checker::drain`] hands over none
+    /// where not: a report written as the lines are checked asks after every line, and most
+    /// lines find nothing).
+    #[inline]
+    pub fn found_any(&self) -> bool {
+        !self.found.is_empty()
     }
 
     /// The findings made since the last call, handed over one by one with the list's
@@ -2152,12 +2170,9 @@ impl Checker {
         self.values.end_unsure =
             self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
         self.machine.apply_taken(&self.values, taken);
-        if (self.units_unknown || self.early_on) && self.machine.state.units_given {
-            if self.units_unknown {
-                self.units_known_again();
-            }
-            // (a program read apart that writes its own units is read as before)
-            self.early_merge();
+        // (one test of the two flags on a plain block: both are seldom set)
+        if self.units_unknown | self.early_on {
+            self.units_given_now();
         }
         // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
         self.cancel_frames(b, &before);

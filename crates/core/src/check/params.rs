@@ -418,7 +418,21 @@ impl Checker {
     /// (Asked only where an arrival keeps values, of a word with an expression.)
     #[cold]
     #[inline(never)]
-    pub(super) fn arrival_value(&mut self, w: &super::Word<'_>, line: usize) -> Option<Dec> {
+    pub(super) fn arrival_word(
+        &mut self,
+        w: &super::Word<'_>,
+        line: usize,
+        extended: bool,
+    ) -> Option<Dec> {
+        if !w.index.is_empty() || extended {
+            return None;
+        }
+        self.arrival_value(w, line)
+    }
+
+    /// [`Checker::arrival_word`] of a word with no index.
+    #[inline]
+    fn arrival_value(&mut self, w: &super::Word<'_>, line: usize) -> Option<Dec> {
         let letter = w.letter;
         if !(crate::modal::axis_index(letter).is_some() || matches!(letter, b'F' | b'S' | b'T')) {
             return None;

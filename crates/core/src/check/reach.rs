@@ -138,25 +138,30 @@ impl Checker {
             return;
         }
         let mut in_loop_statement = false;
-        for &(_, kind, text) in b.statements {
-            if kind != Kind::Flow {
-                continue;
-            }
-            match loop_step(text) {
-                1 => {
-                    self.reach.loops += 1;
-                    in_loop_statement = true;
+        // (the walk's set-up asked only where there are statements: most blocks have none)
+        if !b.statements.is_empty() {
+            for &(_, kind, text) in b.statements {
+                if kind != Kind::Flow {
+                    continue;
                 }
-                -1 => {
-                    self.reach.loops = self.reach.loops.saturating_sub(1);
-                    in_loop_statement = true;
+                match loop_step(text) {
+                    1 => {
+                        self.reach.loops += 1;
+                        in_loop_statement = true;
+                    }
+                    -1 => {
+                        self.reach.loops = self.reach.loops.saturating_sub(1);
+                        in_loop_statement = true;
+                    }
+                    _ => {}
                 }
-                _ => {}
             }
         }
+        // (read, not taken: most blocks have a sequence number and no unreached part ended)
         if (in_loop_statement || self.letters & crate::modal::bit(b'N') != 0)
-            && self.reach.left.take().is_some()
+            && self.reach.left.is_some()
         {
+            self.reach.left = None;
             self.reach.resumed = b.line;
         }
         if b.skip || b.skip_within.is_some() || self.reach.loops > 0 {

@@ -465,6 +465,20 @@ impl Checker {
         }
     }
 
+    /// After a block's state is applied, where the units are not known or a program is read
+    /// apart ([`Checker::early_merge`]): a units code the block wrote makes them known, and a
+    /// program read apart that writes its own units is read as before.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn units_given_now(&mut self) {
+        if self.machine.state.units_given {
+            if self.units_unknown {
+                self.units_known_again();
+            }
+            self.early_merge();
+        }
+    }
+
     /// A subprogram whose units were not known has written a units code: its lengths are
     /// known from here. The axes the block does not write stand where lengths in unknown
     /// units put them: not known.
@@ -2278,21 +2292,26 @@ impl Checker {
     }
 
     pub(super) fn program_number(&mut self, b: &BlockView<'_>) {
-        let first = self.first_words;
-        self.first_words = false;
-        if first && self.programs == 0 && self.config.family == Family::MacroB {
-            // the file's first program, read from the reset state: it may be the subprogram
-            // of a call later in the file (a memory backup's O0002 before its O1000)
-            self.first_program(b);
+        // (the first block of words asked once: it is in its place)
+        if self.first_words {
+            self.first_words = false;
+            if self.programs == 0 && self.config.family == Family::MacroB {
+                // the file's first program, read from the reset state: it may be the
+                // subprogram of a call later in the file (a memory backup's O0002 before its
+                // O1000)
+                self.first_program(b);
+            }
+            return;
+        }
+        // (the letters mask: a block without the letter has no such word to look for; the
+        // profile's letter read once, Checker::program_letter)
+        if self.letters & self.program_letter == 0 && self.program_letter != u32::MAX {
+            return;
         }
         let Some(letter) = self.config.program_number else {
             return;
         };
-        if letter == b':' || first || matches!(letter, b'P' | b'Q' | b'R') {
-            return;
-        }
-        // (the letters mask: a block without the letter has no such word to look for)
-        if letter.is_ascii_uppercase() && self.letters & crate::modal::bit(letter) == 0 {
+        if letter == b':' || matches!(letter, b'P' | b'Q' | b'R') {
             return;
         }
         for w in b.words {

@@ -249,17 +249,15 @@ impl Checker {
             let extended =
                 !w.index.is_empty() && dialect::extended_address(self.config.family, letter);
             if !w.expression.is_empty() || !letter.is_ascii_uppercase() || extended {
-                let known = (w.index.is_empty() && letter.is_ascii_uppercase())
+                let mut known = (w.index.is_empty() && letter.is_ascii_uppercase())
                     .then(|| self.constant(w.expression))
                     .flatten();
                 // (a word reading a value a jump's arrival set aside: the value where no jump
-                // arrives, for the limits of its block; params.rs)
-                let known = match known {
-                    None if self.arrival.is_some() && w.index.is_empty() && !extended => {
-                        self.arrival_value(w, line)
-                    }
-                    known => known,
-                };
+                // arrives, for the limits of its block; params.rs. Its word's tests out of
+                // line: a program scaling its axes by parameters has two such words a line)
+                if known.is_none() && self.arrival.is_some() {
+                    known = self.arrival_word(w, line, extended);
+                }
                 self.readable.push(known);
                 continue;
             }
@@ -397,36 +395,46 @@ impl Checker {
         }
     }
 
-    /// TG141, once per file: the first value the checker cannot evaluate.
+    /// TG141, once per file: the first value the checker cannot evaluate. (Inline: a
+    /// program that scales its axes by parameters asks at every block, and only the first
+    /// ask says anything; the finding out of line.)
+    #[inline(always)]
     pub(super) fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
         if !self.unknown_noted {
-            self.unknown_noted = true;
-            let extended =
-                !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
-            if extended && w.letter == b'M' {
-                let message = format!(
-                    "{}: an M function of another spindle (an extended address) given by a \
-                     value the checker cannot evaluate, or that is no whole number from 0; its \
-                     code is not checked",
-                    w.token()
-                );
-                self.report(Rule::NotEvaluated, message, line, w.column);
-                return;
-            }
-            let what = if extended {
-                "an address of another axis or spindle (an extended address), which the \
-                 profile does not describe"
-            } else {
-                "a value the checker cannot evaluate"
-            };
+            self.not_evaluated_first(line, w);
+        }
+    }
+
+    /// [`Checker::not_evaluated`]'s finding.
+    #[cold]
+    #[inline(never)]
+    fn not_evaluated_first(&mut self, line: usize, w: &Word<'_>) {
+        self.unknown_noted = true;
+        let extended =
+            !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+        if extended && w.letter == b'M' {
             let message = format!(
-                "{}: {what}; {} is taken as set but unknown from here on (no check of it \
-                 until a plain value)",
-                w.token(),
-                w.letter as char
+                "{}: an M function of another spindle (an extended address) given by a \
+                 value the checker cannot evaluate, or that is no whole number from 0; its \
+                 code is not checked",
+                w.token()
             );
             self.report(Rule::NotEvaluated, message, line, w.column);
+            return;
         }
+        let what = if extended {
+            "an address of another axis or spindle (an extended address), which the \
+             profile does not describe"
+        } else {
+            "a value the checker cannot evaluate"
+        };
+        let message = format!(
+            "{}: {what}; {} is taken as set but unknown from here on (no check of it \
+             until a plain value)",
+            w.token(),
+            w.letter as char
+        );
+        self.report(Rule::NotEvaluated, message, line, w.column);
     }
 
     /// TG133: more than one G word in a block.
