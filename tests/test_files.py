@@ -329,11 +329,12 @@ def test_a_file_system_without_hard_links_still_gets_whole_files_never_replaced(
     assert sorted(p.name for p in out.iterdir()) == ["kept.1.nc", "kept.nc", "new.nc"]
 
 
-def test_a_file_of_another_owner_replaced_is_made_as_a_new_one(tmp_path: Path) -> None:
-    """Review 45, finding H1: a user who may not give the file its old owner (not root)
-    replaced a 0640 program of another user with a file of their own, 0640: the old owner
-    could no longer read their program. The old bits are given only where the owner and
-    group are kept; else the file is made as a new one is (0666 and the umask). Shown with
+def test_a_file_of_another_owner_replaced_is_never_wider(tmp_path: Path) -> None:
+    """Review 45, finding H1, and review 47, F2: a user who may not give the file its old
+    owner and group (not root) replaces it with a file of their own; its bits are never wider
+    than the old file's (made as a new file, 0666 and the umask, a 0600 program became
+    world-readable): the new group's bits no more than the others' (0640 becomes 0600; the
+    old owner reads it only as others may). Shown with
     fchown() refused as for a user who is not root (a preloaded library built here: skipped
     where no C compiler is installed), the file another user's (uid and gid 1000)."""
     import shutil
@@ -368,8 +369,8 @@ def test_a_file_of_another_owner_replaced_is_made_as_a_new_one(tmp_path: Path) -
                          env={**os.environ, "PYTHONPATH": str(root), "LD_PRELOAD": str(shim)})
     assert run.returncode == 0, run.stderr
     assert theirs.read_bytes() == mine.read_bytes() == b"new\n"
-    if os.geteuid() == 0:  # (the owner could not be kept: made as a new file)
+    if os.geteuid() == 0:  # (the owner and group could not be kept: never wider, review 47)
         assert (theirs.stat().st_uid, theirs.stat().st_gid) == (0, 0)
-        assert oct(theirs.stat().st_mode & 0o777) == "0o644"
+        assert oct(theirs.stat().st_mode & 0o777) == "0o600"
     # the runner's own file keeps its bits
     assert oct(mine.stat().st_mode & 0o777) == "0o640"

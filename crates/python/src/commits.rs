@@ -346,9 +346,9 @@ fn rename_no_replace(tmp: &Path, name: &Path) -> io::Result<()> {
 /// its owner and group where the system allows it (`fchown`: as root; else the group alone,
 /// where the user is one of its members; a refusal (EPERM) leaves the process's own) and then
 /// its permission bits (`fchmod`, after the `fchown` that may clear set-user-ID bits; only
-/// the 0777 bits: a set-user-ID or sticky bit is not carried over), these only where the
-/// owner and group are the old file's (else the new file keeps its own mode: given to
-/// another owner, the old bits locked the old owner out; review 45, H1). Without it
+/// the 0777 bits: a set-user-ID or sticky bit is not carried over), never wider than the old
+/// file's: where the group is not kept, the new group's bits are no more than the others'
+/// (review 47, F2; the old owner, where not kept, reads the file as others may). Without it
 /// `--force` made a 0640 program 0644 and the runner's (review 42, finding 5). A target that
 /// is not there (gone meanwhile), or not a regular file, leaves the new file as it was made
 /// (0666 and the umask). A failing `fchmod` fails the commit (the new file is never left
@@ -368,16 +368,17 @@ fn keep_access(file: &File, target: &Path) -> io::Result<()> {
             // (not root: the owner stays the user's; the group where the user is a member)
             let _ = std::os::unix::fs::fchown(file, None, Some(old.gid()));
         }
-        // the old bits only where its owner and group were kept: given to a file of
-        // another owner or group, a 0640 program of user A replaced by user B became B's
-        // 0640, which A could no longer read (review 45, finding H1); else the new file
-        // keeps the mode it was made with (0666 and the umask), as a new file has
-        let now = file.metadata()?;
-        if (now.uid(), now.gid()) != (old.uid(), old.gid()) {
-            return Ok(());
-        }
     }
-    match file.set_permissions(fs::Permissions::from_mode(old.mode() & 0o777)) {
+    // the old bits, never wider: where the group could not be kept, its members (another
+    // group now) have no more than the others had (a 0640 program of group `shop` made by a
+    // user outside it is 0600; given 0666 and the umask it was world-readable: review 47,
+    // F2); the new owner, who replaced the file, has the old owner's bits
+    let now = file.metadata()?;
+    let mut mode = old.mode() & 0o777;
+    if now.gid() != old.gid() {
+        mode = (mode & !0o070) | ((mode >> 3) & mode & 0o007) << 3;
+    }
+    match file.set_permissions(fs::Permissions::from_mode(mode)) {
         // a file system that keeps no modes (a FUSE mount without them: ENOSYS, EOPNOTSUPP)
         // has none to widen; --force failed there on every file (review 45, finding L6)
         Err(error) if matches!(error.raw_os_error(), Some(38 | 95)) => Ok(()),

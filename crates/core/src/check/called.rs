@@ -375,6 +375,16 @@ impl Checker {
         }
     }
 
+    /// Whether the program read apart moved before a G90/G91 of its own and has written one
+    /// since: its positions from then on are kept apart too ([`Absolute`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_absolute(&self) -> bool {
+        self.early.as_ref().is_some_and(|e| {
+            e.moved_first == Some(true) && self.machine.distance_codes != e.distance_codes
+        })
+    }
+
     /// [`Checker::add_to_span`] in a program read apart, after `at` went to the axis's
     /// span (its own): the line and column of a new least or most position kept, and the
     /// span judged with the one before it. The ends to say TG601 of, where it is wider than
@@ -1405,6 +1415,10 @@ mod tests {
         // an axis first moved in G91 after it stays not known
         let relative = after.replace("G0 X-900.", "G91 G0 X-900.");
         assert_eq!(limits(metric.clone(), &relative), []);
+        // review 47, F0: a position after the G90 inside the body's span so far, kept too
+        // (X-950. then X10. read before it: X-900. is inside; the call runs -900 to 700)
+        let inside = after.replace("O0002\nG0 X10.", "O0002\nG0 X-950.\nG0 X10.");
+        assert_eq!(limits(metric.clone(), &inside), [(12, 5)]);
         // its feed is judged all the same, whatever G90/G91 (F500. in/min: 12700 mm/min)
         let fast = "%\nO0002\nG1 X1. F500.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nG91\nM98 P2\n\
                     G90\nM30\n%\n";

@@ -2115,8 +2115,14 @@ impl Checker {
         // when the span last grew (the travel is the profile's); most of a CAM program's
         // moves. (A position at a bound takes the walk below: 0.0 and -0.0 are equal, and
         // which of them `min` keeps is not the comparison's.)
+        // (but in a body read apart whose positions from its own G90 on are kept: each of
+        // them, inside or not, crate::check::called's `Absolute`; review 47, F0)
         if let Some(span) = &self.spans[i] {
-            if !said_outside && span.least < at && at < span.most {
+            if !said_outside
+                && span.least < at
+                && at < span.most
+                && !(self.early_on && self.early_absolute())
+            {
                 debug_assert!(span.said || span.most - span.least <= (high - low) + 1e-9);
                 return;
             }
