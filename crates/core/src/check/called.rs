@@ -1105,6 +1105,9 @@ mod tests {
             .map(|f| (f.line, f.column, f.message.starts_with("Non integer value")))
             .collect();
         assert_eq!(refused, [(7, 1, true)]);
+        // written in brackets too (review 47, F3)
+        let written = named.replace("o100 call", "o[100.5] call");
+        assert_eq!(findings(lcnc(), &written, Rule::LinuxCncRefuses).len(), 1);
         // a number in brackets is that number's label
         let bracket = named.replace("o100 call", "o[100] call");
         assert_eq!(fired(lcnc(), &bracket, Rule::TravelExceeded), [(7, 1)]);

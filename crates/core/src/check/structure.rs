@@ -1025,7 +1025,12 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn linuxcnc_fractional_label(&mut self, label: &[u8], line: usize, column: usize) {
-        let Some(value) = self.constant(&label[1..]) else {
+        // (a parameter's known value, or a number in brackets: `o[100.5] call`; review 47, F3)
+        let written = || {
+            let inside = label.strip_prefix(b"o[")?.strip_suffix(b"]")?;
+            crate::decimal::Dec::parse(std::str::from_utf8(inside).ok()?)
+        };
+        let Some(value) = self.constant(&label[1..]).or_else(written) else {
             return;
         };
         if value.is_whole() {
