@@ -106,19 +106,6 @@ fn letters_end(line: &[u8], pos: usize, lowercase: bool) -> usize {
     end
 }
 
-/// The end of digits that may have blanks among them (`o 1 0 0`: rs274ngc drops the blanks
-/// before it reads a line).
-fn blank_digits_end(line: &[u8], pos: usize) -> usize {
-    let mut end = digits_end(line, pos);
-    while line
-        .get(skip_blanks(line, end))
-        .is_some_and(u8::is_ascii_digit)
-    {
-        end = digits_end(line, skip_blanks(line, end));
-    }
-    end
-}
-
 pub(crate) fn digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = pos;
     while end < line.len() && line[end].is_ascii_digit() {
@@ -964,7 +951,7 @@ fn linuxcnc<'a>(
                 ))
             }
         },
-        Some(d) if d.is_ascii_digit() => blank_digits_end(line, open),
+        Some(d) if d.is_ascii_digit() => expr::spaced_digits_end(line, open),
         // a label worked out when the line runs (rs274ngc `read_o`): `o[#1+1] call`,
         // `o#1 call`, `o#<sub> call`
         Some(b'[') => expr::scan_group(line, open, syntax)?,
@@ -983,7 +970,7 @@ fn linuxcnc<'a>(
                         ))
                     }
                 },
-                Some(d) if d.is_ascii_digit() => blank_digits_end(line, at),
+                Some(d) if d.is_ascii_digit() => expr::spaced_digits_end(line, at),
                 _ => return Ok(None),
             }
         }

@@ -270,14 +270,17 @@ fn commit(
     named
 }
 
+// Linux's error numbers the commit tells apart (the same on x86-64 and AArch64)
+const EPERM: i32 = 1;
+const EINVAL: i32 = 22;
+const ENOSYS: i32 = 38;
+const EOPNOTSUPP: i32 = 95;
+
 /// Whether a hard link failed because the file system has none: FAT and exFAT, the USB stick
 /// a shop carries to the control (Linux's `link(2)` gives EPERM where the file system has no
 /// link operation), some network and FUSE file systems (EOPNOTSUPP, ENOSYS). Review 44,
 /// finding 6: without a way round it, every output not replacing a file failed there.
 fn no_links(error: &io::Error) -> bool {
-    const EPERM: i32 = 1;
-    const ENOSYS: i32 = 38;
-    const EOPNOTSUPP: i32 = 95;
     matches!(error.raw_os_error(), Some(EPERM | ENOSYS | EOPNOTSUPP))
 }
 
@@ -307,8 +310,6 @@ fn rename_no_replace(tmp: &Path, name: &Path) -> io::Result<()> {
         const SYS_RENAMEAT2: c_long = 276;
         const AT_FDCWD: c_int = -100;
         const RENAME_NOREPLACE: c_uint = 1;
-        const EINVAL: i32 = 22;
-        const ENOSYS: i32 = 38;
         let from = CString::new(tmp.as_os_str().as_bytes())?;
         let to = CString::new(name.as_os_str().as_bytes())?;
         // SAFETY: two NUL-terminated paths that live across the call, and plain integers, as
@@ -381,7 +382,7 @@ fn keep_access(file: &File, target: &Path) -> io::Result<()> {
     match file.set_permissions(fs::Permissions::from_mode(mode)) {
         // a file system that keeps no modes (a FUSE mount without them: ENOSYS, EOPNOTSUPP)
         // has none to widen; --force failed there on every file (review 45, finding L6)
-        Err(error) if matches!(error.raw_os_error(), Some(38 | 95)) => Ok(()),
+        Err(error) if matches!(error.raw_os_error(), Some(ENOSYS | EOPNOTSUPP)) => Ok(()),
         set => set,
     }
 }

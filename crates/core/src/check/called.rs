@@ -681,31 +681,23 @@ impl Checker {
             .read_incremental
             .is_none_or(|read| read == call.incremental);
         let shift = call.shift.unwrap_or([0.0; 9]);
-        if known {
-            for (i, shift) in shift.into_iter().enumerate() {
-                let Some(span) = p.spans[i] else {
-                    continue;
-                };
-                if self.travel.of_place(i).is_none() {
-                    continue;
-                }
-                let (l, m) = (p.least_at[i].0, p.most_at[i].0);
-                self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
-                self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
-            }
+        // (where its positions are not known at this call, those from its own G90 on are
+        // where they are whatever the call's mode)
+        let (spans, least_at, most_at) = if known {
+            (&p.spans, &p.least_at, &p.most_at)
         } else {
-            // (its positions from its own G90 on are where they are whatever the call's mode)
-            for (i, shift) in shift.into_iter().enumerate() {
-                let Some(span) = p.absolute.spans[i] else {
-                    continue;
-                };
-                if self.travel.of_place(i).is_none() {
-                    continue;
-                }
-                let (l, m) = (p.absolute.least_at[i].0, p.absolute.most_at[i].0);
-                self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
-                self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
+            (&p.absolute.spans, &p.absolute.least_at, &p.absolute.most_at)
+        };
+        for (i, shift) in shift.into_iter().enumerate() {
+            let Some(span) = spans[i] else {
+                continue;
+            };
+            if self.travel.of_place(i).is_none() {
+                continue;
             }
+            let (l, m) = (least_at[i].0, most_at[i].0);
+            self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
+            self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
         }
         if !known
             && !p.mode_said
