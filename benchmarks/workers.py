@@ -1,8 +1,9 @@
 """`check -j` and `convert -j`: a batch of real files with 1 and 2 (or more) workers.
 
     .venv/bin/python benchmarks/workers.py [--jobs 1,2] [--copies 200] [--repeat 3]
-                                           [--tapegate PATH] [--only TEXT,...] [--callgrind]
-                                           [--large NAME] [--build LABEL=CHECKOUT ...]
+                                           [--tapegate PATH] [--only TEXT,...]
+                                           [--callgrind | --phases] [--large NAME]
+                                           [--build LABEL=CHECKOUT ...]
 
 Three batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
 whole command by ``time.perf_counter``; its CPU, context switches and the peak resident set of
@@ -53,6 +54,17 @@ extension, put first on ``PYTHONPATH`` for the same ``--tapegate`` command (a co
 of the environment, which imports the checkout first): their runs interleaved with the worker
 counts' (build A -j 1, -j 2, build B -j 1, -j 2, A again...), so that the machine's load falls
 on each alike, each build's speed-up against its own 1 worker.
+
+``--phases`` splits each command's wall time instead (``--repeat`` runs, the median of each
+part): the command is run by a driver (:data:`PHASES`) that imports the command's entry
+point as its console script does and records, on the clock the benchmark shares with it
+(``time.perf_counter``, CLOCK_MONOTONIC), when the first file's work began and the last one's
+ended, and each worker's time in its files. **serial** is what no worker shares: from the
+process's start to the first file (the interpreter, the imports, the profile, the folder
+listed) and from the last file's end to the exit; **work** is the rest. With the serial part S
+and the work W1 of one worker and W2 of N, the speed-up is (S + W1) / (S + W2), and the
+serial part a speed-up of 1.8 would allow is (W1 - 1.8 W2) / 0.8 (printed as "S for 1.8"):
+the arithmetic of a target the start-up bounds, in wall time on this machine.
 
 Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
@@ -162,6 +174,64 @@ def instructions(argv: list[str], work: Path,
     return whole, before, whole - before, children + threads
 
 
+# The driver of --phases: the command's entry point (tapegate.launch.main, the console
+# script's) with each file's work timed. A file's work is the function ordered_map runs
+# (a conversion's every file; a check's with -j 2 or more) or, for a check with one worker,
+# tapegate.checking._check_one. The times go to the file named by TAPEGATE_PHASES as
+# "first last busy-of-each-thread..." at the exit (os._exit held until they are written).
+PHASES = """\
+import os, sys, time, _thread
+import tapegate.workers as workers
+import tapegate.checking as checking
+spans = []
+def timing(func):
+    def timed(*args, **kwargs):
+        start = time.perf_counter()
+        try:
+            return func(*args, **kwargs)
+        finally:
+            spans.append((_thread.get_ident(), start, time.perf_counter()))
+    return timed
+ordered_map = workers.ordered_map
+workers.ordered_map = lambda func, items, jobs, **kw: ordered_map(timing(func), items, jobs, **kw)
+if sys.argv[sys.argv.index("-j") + 1] == "1":
+    checking._check_one = timing(checking._check_one)
+exit_now = os._exit
+def written(code=0):
+    end = time.perf_counter()
+    busy = {}
+    for thread, start, stop in spans:
+        busy[thread] = busy.get(thread, 0.0) + stop - start
+    with open(os.environ["TAPEGATE_PHASES"], "w") as out:
+        out.write(" ".join(map(repr, [min(s for _, s, _ in spans), max(e for _, _, e in spans),
+                                      end, *busy.values()])))
+    exit_now(code)
+os._exit = written
+sys.argv[0] = "tapegate"
+from tapegate.launch import main
+try:
+    code = main()
+except SystemExit as stop:
+    code = stop.code if isinstance(stop.code, int) else 1
+written(code or 0)
+"""
+
+
+def phases(argv: list[str], env: dict[str, str], work: Path) -> tuple[float, ...]:
+    """(seconds from the start to the first file's work, the work, from the last file's end
+    to the driver's exit and the process's end, each worker's busy seconds...) of one command
+    (``argv`` without the ``tapegate`` command: its arguments) run by :data:`PHASES`."""
+    out = work / "phases"
+    env = {**env, "TAPEGATE_PHASES": str(out)}
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-c", PHASES, *argv], stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, check=False,
+                   cwd=ROOT, env=env)
+    end = time.perf_counter()
+    first, last, exited, *busy = (float(v) for v in out.read_text().split())
+    return (first - start, last - first, end - last, *busy)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--jobs", default="1,2", help="comma-separated worker counts")
@@ -177,6 +247,9 @@ def main() -> int:
                         help="the long program of the third batch, in the corpus")
     parser.add_argument("--callgrind", action="store_true",
                         help="count instructions (valgrind) instead of timing")
+    parser.add_argument("--phases", action="store_true",
+                        help="split each command's wall time into its serial part and its "
+                             "files' work (a driver of the entry point)")
     parser.add_argument("--build", action="append", default=[], metavar="LABEL=CHECKOUT",
                         help="a checkout put first on PYTHONPATH (repeated: interleaved)")
     args = parser.parse_args()
@@ -222,7 +295,11 @@ def main() -> int:
         }
         jobs = [int(j) for j in args.jobs.split(",")]
         width = max(len(label) for label, _ in builds)
-        if args.callgrind:
+        if args.phases:
+            print(f"{'batch':<34} {'':{width}} {'-j':>3} {'to 1st ms':>9} {'work ms':>8} "
+                  f"{'end ms':>7} {'serial':>7} {'busy %':>11} {'work x':>6} "
+                  f"{'S for 1.8':>9} {'load':>9}")
+        elif args.callgrind:
             print(f"{'batch':<34} {'':{width}} {'-j':>3} {'main G':>7} {'before':>7} "
                   f"{'after':>7} {'workers G':>18} {'ideal':>6}")
         else:
@@ -230,6 +307,34 @@ def main() -> int:
                   f"{'CPU s':>6} {'switches':>8} {'peak MB':>8} {'speed-up':>8} {'load':>9} rc")
         for name, argv in batches.items():
             if not chosen(name):
+                continue
+            if args.phases:
+                if "ceiling" in name:
+                    continue
+                load = os.getloadavg()[0]
+                for label, checkout in builds:
+                    parts: dict[int, list[tuple[float, ...]]] = {j: [] for j in jobs}
+                    for _ in range(args.repeat):  # interleaved: 1, 2, 1, 2...
+                        for j in jobs:
+                            parts[j].append(phases([*argv[len(tg):], "-j", str(j)],
+                                                   build_env(checkout), work))
+                    load_after = os.getloadavg()[0]
+                    one = statistics.median(p[1] for p in parts[jobs[0]])
+                    for j in jobs:
+                        own = parts[j]
+                        to_first, span, to_end = (statistics.median(p[k] for p in own)
+                                                  for k in range(3))
+                        busy = [statistics.median(p[3 + k] / p[1] for p in own
+                                                  if len(p) > 3 + k)
+                                for k in range(max(len(p) for p in own) - 3)]
+                        shown = "/".join(f"{100 * b:.0f}" for b in busy)
+                        needed = (one - 1.8 * span) / 0.8
+                        print(f"{name:<34} {label:{width}} {j:>3} {1000 * to_first:>9.1f} "
+                              f"{1000 * span:>8.1f} {1000 * to_end:>7.1f} "
+                              f"{1000 * (to_first + to_end):>7.1f} {shown:>11} "
+                              f"{one / span:>6.2f} "
+                              f"{1000 * needed if j > 1 else float('nan'):>9.1f} "
+                              f"{load:>4.1f}-{load_after:<4.1f}", flush=True)
                 continue
             if args.callgrind:
                 if "ceiling" in name:
