@@ -87,7 +87,12 @@ FAMILY_PROFILES = {
 # - the two Fusion 360 "Tormach PCNC440" posts, listed as fanuc: a PCNC 440 runs PathPilot,
 #   which is LinuxCNC;
 # - the two MillMaster Pro programs, listed as fanuc: their own header says the control uses
-#   G70/G71 for inch/metric and "//" comments, which no Fanuc reads (no profile here: "?").
+#   G70/G71 for inch/metric and "//" comments, which no Fanuc reads (no profile here: "?");
+# - five wolkolak/EZ_machining examples of held15-held17, listed as fanuc from the repository's
+#   earlier rows (its FANUC macros): their own words are a SINUMERIK 840D's (CYCLE800, TRAFOOF,
+#   $TC_DP6, T="name", WORKPIECE(), R parameters, labels with GOTOF/GOTOB, REPEAT, CASE .. OF,
+#   ';' comments), read by no FANUC; the ledger had them F, while their form is one of the five
+#   families' documented ones (audit 48).
 RELABELLED = {
     "GCodeProjects__GCodeWorkShop__FLANGE.nc": "okuma",
     "GCodeProjects__GCodeWorkShop__OSP5020M.nc": "okuma",
@@ -96,6 +101,9 @@ RELABELLED = {
     "LMHDPRO__MAC__Titan1M_1001_NoEdit.nc": "linuxcnc",
     "JonahTsai__F16__carriage-center-hole.nc": "?",
     "JonahTsai__F16__carriage-slot.nc": "?",
+    **{f"wolkolak__EZ_machining__examples__{name}": "sinumerik"
+       for name in ("022_FASKA_REZB_S_KOR.MPF", "REPEAT_cycle21.txt", "case.MPF",
+                    "repeat_pos1_pos2.MPF", "repeat_pos1_pos2_cycle.MPF")},
 }
 
 # Programs whose set's description calls them mill programs, while their own words are a
