@@ -48,19 +48,10 @@ pub(super) enum Key {
 /// later call.
 #[derive(Debug)]
 pub(super) struct Early {
-    /// Its O number (or label), and its O word (`o<name> sub`) as written.
-    number: Key,
-    name: String,
-    /// Its O word's line and column.
-    at: (usize, usize),
+    /// What it keeps for its calls.
+    body: Body,
     /// The spans of the programs before it ([`Checker::spans`] holds its own meanwhile).
     stash: [Option<Span>; 9],
-    /// The line and column of each axis's least and most position so far.
-    least_at: [(usize, usize); 9],
-    most_at: [(usize, usize); 9],
-    /// Its largest feed (in the profile's units as read from the reset state), the F word
-    /// and its line, and the feed mode (94/95).
-    feed: Option<Feed>,
     /// LinuxCNC: whether the main program had written a units code before the definition
     /// (given back at its end; the body is read as not having written one).
     given_before: Option<bool>,
@@ -70,7 +61,30 @@ pub(super) struct Early {
     incremental: bool,
     distance_codes: u32,
     moved_first: Option<bool>,
-    /// Such a body's positions from its own G90 on ([`Absolute`]).
+    /// The findings of its limits held (TG601, TG602, TG605, selected or not) and
+    /// [`Checker::reports`] where the hold began: the bound on the hold counted as they come,
+    /// whoever takes them and whatever the selection (review 43, finding B).
+    held: usize,
+    reports_from: u64,
+}
+
+/// What a program read apart ([`Early`]) and a subprogram kept for its calls ([`Pending`])
+/// both hold: handed from the one to the other at its M99.
+#[derive(Debug)]
+struct Body {
+    /// Its O number (or label), and its O word (`o<name> sub`) as written.
+    number: Key,
+    name: String,
+    /// Its O word's line and column.
+    at: (usize, usize),
+    /// The line and column of each axis's least and most position.
+    least_at: [(usize, usize); 9],
+    most_at: [(usize, usize); 9],
+    /// Its largest feed (in the profile's units as read from the reset state), the F word
+    /// and its line, and the feed mode (94/95).
+    feed: Option<Feed>,
+    /// Where it moved before a G90/G91 of its own, its positions from its own G90 on
+    /// ([`Absolute`]).
     absolute: Absolute,
     /// The first call in it whose program the checker does not read here (its calling words
     /// and line: a program not read before it, itself, one given up, a number not known, a
@@ -80,11 +94,6 @@ pub(super) struct Early {
     /// The least and the most value of each axis's G53 positions, in the units it is read
     /// in (review 43, A: judged at each call in that call's units).
     machine: Machine,
-    /// The findings of its limits held (TG601, TG602, TG605, selected or not) and
-    /// [`Checker::reports`] where the hold began: the bound on the hold counted as they come,
-    /// whoever takes them and whatever the selection (review 43, finding B).
-    held: usize,
-    reports_from: u64,
 }
 
 /// The positions of a body that moved before writing its own G90/G91, from the G90 it then
@@ -148,16 +157,12 @@ struct Call {
 /// A subprogram read before any call named it, which returned without writing a units code.
 #[derive(Debug)]
 pub(super) struct Pending {
-    number: Key,
-    name: String,
-    at: (usize, usize),
+    /// What it kept while read apart ([`Early`]).
+    body: Body,
     /// Its own spans, read in `factor`'s units from the reset state.
     spans: [Option<Span>; 9],
-    least_at: [(usize, usize); 9],
-    most_at: [(usize, usize); 9],
     factor: f64,
     feed_factor: f64,
-    feed: Option<Feed>,
     /// Its limits' findings as read from the reset state.
     removed: Vec<Finding>,
     /// Its machine positions' findings (G53, a work offset's) as read from the reset state:
@@ -173,17 +178,11 @@ pub(super) struct Pending {
     /// true); a call in the other mode runs those positions otherwise, not known there
     /// (review 43, finding D). None: it wrote its own first, or has no position.
     read_incremental: Option<bool>,
-    /// Its positions from its own G90 on, where `read_incremental` is Some.
-    absolute: Absolute,
     /// Some(G91): the distance mode it returns in, where it wrote a G90/G91 (of its own, or
     /// of a program it calls): its caller's from there (G90/G91 are modal; review 47, F1).
     ends: Option<bool>,
-    /// [`Early`]'s `unfollowed`: its calls whose G90/G91 are not followed.
-    unfollowed: Option<(String, usize)>,
     /// That TG140 said at a call (not again at the next).
     mode_said: bool,
-    /// Its G53 positions' least and most value on each axis.
-    machine: Machine,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -221,20 +220,22 @@ impl Checker {
         }
         let stash = std::mem::take(&mut self.spans);
         self.early = Some(Box::new(Early {
-            number,
-            name,
-            at,
+            body: Body {
+                number,
+                name,
+                at,
+                least_at: [(0, 0); 9],
+                most_at: [(0, 0); 9],
+                feed: None,
+                absolute: Absolute::default(),
+                unfollowed: None,
+                machine: [[None; 2]; 9],
+            },
             stash,
-            least_at: [(0, 0); 9],
-            most_at: [(0, 0); 9],
-            feed: None,
             given_before: None,
             incremental: self.machine.state.incremental,
             distance_codes: self.machine.distance_codes,
             moved_first: None,
-            absolute: Absolute::default(),
-            unfollowed: None,
-            machine: [[None; 2]; 9],
             held: 0,
             reports_from: 0,
         }));
@@ -297,26 +298,18 @@ impl Checker {
         }
         let spans = std::mem::replace(&mut self.spans, early.stash);
         self.pending.push(Pending {
-            number: early.number,
-            name: early.name,
-            at: early.at,
+            body: early.body,
             spans,
-            least_at: early.least_at,
-            most_at: early.most_at,
             factor: self.to_profile_units(false),
             feed_factor: self.to_profile_units(true),
-            feed: early.feed,
             removed,
             positions,
             calls: None,
             feed_said: false,
             read_incremental: (early.moved_first == Some(true)).then_some(early.incremental),
-            absolute: early.absolute,
             ends: (self.machine.distance_codes != early.distance_codes)
                 .then_some(self.machine.state.incremental),
-            unfollowed: early.unfollowed,
             mode_said: false,
-            machine: early.machine,
         });
     }
 
@@ -327,11 +320,11 @@ impl Checker {
     #[inline(never)]
     pub(super) fn early_unhold(&mut self, all: bool) {
         if let Some(early) = self.early.as_ref() {
-            if !self.given_up.iter().any(|g| g.number == early.number) {
+            if !self.given_up.iter().any(|g| g.number == early.body.number) {
                 self.given_up.push(GivenUp {
-                    number: early.number.clone(),
-                    name: early.name.clone(),
-                    at: early.at,
+                    number: early.body.number.clone(),
+                    name: early.body.name.clone(),
+                    at: early.body.at,
                     all,
                 });
             }
@@ -396,7 +389,7 @@ impl Checker {
             line,
             said: false,
         };
-        let [least, most] = &mut early.machine[i];
+        let [least, most] = &mut early.body.machine[i];
         if least.is_none_or(|m| at < m.at) {
             *least = Some(new);
         }
@@ -438,7 +431,7 @@ impl Checker {
         {
             // (its own G90/G91 written after its first move: an axis's positions are known
             // from its first in G90)
-            let a = &mut early.absolute;
+            let a = &mut early.body.absolute;
             if a.known & (1 << i) == 0 && !self.machine.state.incremental {
                 a.known |= 1 << i;
             }
@@ -463,10 +456,10 @@ impl Checker {
         }
         let span = self.spans[i].as_mut().expect("added");
         if span.least == at {
-            early.least_at[i] = (line, column);
+            early.body.least_at[i] = (line, column);
         }
         if span.most == at {
-            early.most_at[i] = (line, column);
+            early.body.most_at[i] = (line, column);
         }
         let all = joined(early.stash[i], Some(*span)).expect("added");
         let (low, high) = self.travel.of_place(i).expect("a travel");
@@ -482,7 +475,7 @@ impl Checker {
     pub(super) fn early_feed_max(&self) -> f64 {
         self.early
             .as_ref()
-            .and_then(|e| e.feed.as_ref())
+            .and_then(|e| e.body.feed.as_ref())
             .map_or(f64::NEG_INFINITY, |f| f.value)
     }
 
@@ -495,10 +488,10 @@ impl Checker {
         let Some(early) = self.early.as_mut() else {
             return;
         };
-        if mode == 93 || early.feed.as_ref().is_some_and(|f| f.value >= value) {
+        if mode == 93 || early.body.feed.as_ref().is_some_and(|f| f.value >= value) {
             return;
         }
-        early.feed = Some(Feed {
+        early.body.feed = Some(Feed {
             value,
             word,
             line,
@@ -514,7 +507,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn early_call(&mut self, number: Key, token: String, at: (usize, usize)) -> bool {
-        let Some(k) = self.pending.iter().position(|p| p.number == number) else {
+        let Some(k) = self.pending.iter().position(|p| p.body.number == number) else {
             // (inside a program read apart: a program not read before it, itself, or one given
             // up, whose G90/G91 are not followed)
             self.early_unfollowed(&token, at.0);
@@ -578,7 +571,7 @@ impl Checker {
         let Some(mode) = p.ends else {
             return;
         };
-        if matches!(p.number, Key::Number(_)) {
+        if matches!(p.body.number, Key::Number(_)) {
             self.machine.state.incremental = mode;
             self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
         } else {
@@ -615,8 +608,8 @@ impl Checker {
     /// at a call under the other mode.
     fn early_unfollowed(&mut self, token: &str, line: usize) {
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
-            if early.unfollowed.is_none() {
-                early.unfollowed = Some((token.to_string(), line));
+            if early.body.unfollowed.is_none() {
+                early.body.unfollowed = Some((token.to_string(), line));
             }
         }
     }
@@ -629,8 +622,8 @@ impl Checker {
     /// it moved before any (review 47, F1); and `p`'s calls not followed are that one's.
     fn early_nested(&mut self, p: &Pending, r: f64, shift: &[f64; 9], at: (usize, usize)) {
         let early = self.early.as_mut().expect("early_on");
-        if early.unfollowed.is_none() {
-            early.unfollowed.clone_from(&p.unfollowed);
+        if early.body.unfollowed.is_none() {
+            early.body.unfollowed.clone_from(&p.body.unfollowed);
         }
         if early.moved_first != Some(true) {
             return;
@@ -638,9 +631,9 @@ impl Checker {
         let spans = if p.read_incremental.is_none() {
             &p.spans
         } else {
-            &p.absolute.spans
+            &p.body.absolute.spans
         };
-        let a = &mut early.absolute;
+        let a = &mut early.body.absolute;
         for (i, span) in spans.iter().enumerate() {
             let Some(span) = span else {
                 continue;
@@ -746,7 +739,7 @@ impl Checker {
         for p in std::mem::take(&mut self.pending) {
             // (one with no position on an axis with a travel and no feed has nothing to judge:
             // no note of it)
-            let judged = p.feed.is_some() && self.config.feed_max.is_some()
+            let judged = p.body.feed.is_some() && self.config.feed_max.is_some()
                 || (0..AXES.len())
                     .any(|i| p.spans[i].is_some() && self.travel.of_place(i).is_some());
             match p.calls {
@@ -762,9 +755,9 @@ impl Checker {
                          under the shift of its call; the one of line {line} is made where they \
                          are not known: its positions and feeds are not compared there with the \
                          travel and the feed maximum (TG601, TG602)",
-                        p.name
+                        p.body.name
                     );
-                    self.report(Rule::NotFollowed, message, p.at.0, p.at.1);
+                    self.report(Rule::NotFollowed, message, p.body.at.0, p.body.at.1);
                 }
             }
         }
@@ -783,7 +776,7 @@ impl Checker {
                 self.spans[i] = joined(self.spans[i], Some(span));
                 continue;
             }
-            let (l, m) = (p.least_at[i], p.most_at[i]);
+            let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
             self.add_to_span(i, span.least, false, l.0, || l.1, "");
             self.add_to_span(i, span.most, false, m.0, || m.1, "");
         }
@@ -809,7 +802,7 @@ impl Checker {
             _ => " in inches",
         };
         let (line, column) = at;
-        let name = p.name.clone();
+        let name = p.body.name.clone();
         let under_at = |what: &str| {
             format!(
                 " ({name} runs{units} as called by {token} of line {line}, its {what} there: a \
@@ -825,7 +818,7 @@ impl Checker {
         if self.early_on
             && p.read_incremental.is_none()
             && p.ends.is_some()
-            && matches!(p.number, Key::Number(_))
+            && matches!(p.body.number, Key::Number(_))
         {
             self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
         }
@@ -838,9 +831,13 @@ impl Checker {
         // (where its positions are not known at this call, those from its own G90 on are
         // where they are whatever the call's mode)
         let (spans, least_at, most_at) = if known {
-            (&p.spans, &p.least_at, &p.most_at)
+            (&p.spans, &p.body.least_at, &p.body.most_at)
         } else {
-            (&p.absolute.spans, &p.absolute.least_at, &p.absolute.most_at)
+            (
+                &p.body.absolute.spans,
+                &p.body.absolute.least_at,
+                &p.body.absolute.most_at,
+            )
         };
         for (i, shift) in shift.into_iter().enumerate() {
             let Some(span) = spans[i] else {
@@ -878,6 +875,7 @@ impl Checker {
             // (a G90/G91 of a program it calls is its own from that call on, where the checker
             // follows the call: review 47, F1)
             let unfollowed = p
+                .body
                 .unfollowed
                 .as_ref()
                 .map_or_else(String::new, |(call, at)| {
@@ -894,11 +892,11 @@ impl Checker {
                  are not compared with the travel (TG601; said at its first such call), but for \
                  those of each axis from its first move in a G90 of its own (or of a program it \
                  calls) on{unfollowed}",
-                name = p.name
+                name = p.body.name
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
-        self.early_machine_judged(&mut p.machine, r, at, &under);
+        self.early_machine_judged(&mut p.body.machine, r, at, &under);
         if r == 1.0 && !p.positions.is_empty() {
             let unshifted = shift.iter().all(|s| *s == 0.0);
             // (read from the reset state with no units code written: at a call after one,
@@ -930,7 +928,7 @@ impl Checker {
                 f.message = format!(
                     "{} (the position as written, in the units {} was read in; it runs{units} as \
                      called by {token} of line {line}, farther out there)",
-                    f.message, p.name
+                    f.message, p.body.name
                 );
                 self.early_hold();
                 self.found.push(f);
@@ -943,11 +941,11 @@ impl Checker {
             let message = format!(
                 "{token}: {} runs{units} here, and its machine positions under a work offset, \
                  beyond the travel as read in the units it was read in, are not judged in these",
-                p.name
+                p.body.name
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
-        let (Some(top), Some(feed)) = (self.config.feed_max, p.feed.as_ref()) else {
+        let (Some(top), Some(feed)) = (self.config.feed_max, p.body.feed.as_ref()) else {
             return;
         };
         let value = feed.value / p.feed_factor * call.feed_factor;
