@@ -26,7 +26,10 @@
 //! (review 42, findings 0-2); a call inside another program read apart adds to that one's
 //! spans, as inline (finding 8). A body whose first position comes before a G90/G91 of its
 //! own, called in the other mode, has positions not known at that call: one TG140 there
-//! (review 43, finding D). A call in units or under a shift not known leaves it with one
+//! (review 43, finding D). A body's last G90/G91 is in force in its caller after the call
+//! ([`Checker::call_returns`]); inside another body read apart that is a G90/G91 of that
+//! body's at the call, and the called body's positions from its own G90 on are that body's
+//! too, at any depth (review 47, F1). A call in units or under a shift not known leaves it with one
 //! TG140 at the file's end; a program no call names is read as before (its findings said,
 //! its span added), at the end of the file; a program given up is noted at each call of it
 //! (finding E).
