@@ -697,6 +697,48 @@ def test_review_43_a_a_machine_position_is_judged_in_the_call_s_units(tmp_path: 
     assert not [f for f in cli if f[2] == "TG601"]
 
 
+def test_review_47_f1_a_nested_call_s_own_g90_is_seen_by_its_caller(tmp_path: Path) -> None:
+    """Review 47, F1: n2.nc, O1000 calls O0002 under G91 after X700.; O0002 calls O0003, whose
+    own G90 makes its X-900. absolute: X spans 1600 at the G91 call, where only a TG140 was
+    said. A call whose program the checker does not read there (O0003 after the caller) is
+    named in the G91 note rather than promised followed."""
+    n2 = ("%\nO0003\nG90\nG0 X-900.\nM99\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\nG21 G90 G54\n"
+          "G0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n")
+    cli, api = _review_43(tmp_path, n2)
+    assert cli == api
+    assert [(f[0], f[1], f[3].split(",")[0]) for f in cli if f[2] == "TG601"] == [
+        (14, 5, "X spans 1600 (from -900 to 700)")]
+    # three levels deep
+    deep = ("%\nO0004\nG90\nG0 X-900.\nM99\nO0003\nG0 X1.\nM98 P4\nM99\nO0002\nG0 X5.\n"
+            "M98 P3\nM99\nO1000\nG21 G90 G54\nG0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n")
+    cli, api = _review_43(tmp_path, deep)
+    assert cli == api
+    assert [f[3].split(",")[0] for f in cli if f[2] == "TG601"] == [
+        "X spans 1600 (from -900 to 700)"]
+    # O0003 after its caller: not read at O0002's call, and said so
+    later = ("%\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\nG21 G90 G54\nG0 X700. Y0\nG91\nM98 P2\n"
+             "G90\nM30\nO0003\nG90\nG0 X-900.\nM99\n%\n")
+    cli, api = _review_43(tmp_path, later)
+    assert cli == api
+    notes = [f for f in cli if f[3].startswith("M98 P2 runs O0002 under the G91")]
+    assert [f[:2] for f in notes] == [(10, 5)]
+    assert "the G90 or G91 of a program its M98 P3 of line 4 runs is not followed" in notes[0][3]
+
+
+def test_review_46_f6_a_program_given_up_names_the_bound_it_passed(tmp_path: Path) -> None:
+    """Review 46, F6: bound4k.nc, a body with one TG601 then 4200 warnings, given up past 4096
+    findings of any rule: its call's note named the 1024 of its limits'."""
+    lines = (["%", "O0002", "G53 G0 X-800."] + ["M456"] * 4200
+             + ["G0 X700.", "G0 X-700.", "M99", "O1000", "G20 G90 G54", "G0 X0 Y0", "M98 P2",
+                "M30", "%"])
+    cli, api = _review_43(tmp_path, "\n".join(lines) + "\n", "TG6,TG140,TG307")
+    assert cli == api
+    notes = [f[3] for f in cli if f[3].startswith("M98 P2 calls O0002, read from the reset")]
+    assert len(notes) == 1
+    assert "more than 4096 findings of any rule were made after its first finding" in notes[0]
+    assert "1024" not in notes[0]
+
+
 def test_a_units_change_keeps_where_the_machine_is():
     """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
     at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the

@@ -26,7 +26,10 @@
 //! (review 42, findings 0-2); a call inside another program read apart adds to that one's
 //! spans, as inline (finding 8). A body whose first position comes before a G90/G91 of its
 //! own, called in the other mode, has positions not known at that call: one TG140 there
-//! (review 43, finding D). A call in units or under a shift not known leaves it with one
+//! (review 43, finding D). A body's last G90/G91 is in force in its caller after the call
+//! ([`Checker::call_returns`]); inside another body read apart that is a G90/G91 of that
+//! body's at the call, and the called body's positions from its own G90 on are that body's
+//! too, at any depth (review 47, F1). A call in units or under a shift not known leaves it with one
 //! TG140 at the file's end; a program no call names is read as before (its findings said,
 //! its span added), at the end of the file; a program given up is noted at each call of it
 //! (finding E).
@@ -48,19 +51,10 @@ pub(super) enum Key {
 /// later call.
 #[derive(Debug)]
 pub(super) struct Early {
-    /// Its O number (or label), and its O word (`o<name> sub`) as written.
-    number: Key,
-    name: String,
-    /// Its O word's line and column.
-    at: (usize, usize),
+    /// What it keeps for its calls.
+    body: Body,
     /// The spans of the programs before it ([`Checker::spans`] holds its own meanwhile).
     stash: [Option<Span>; 9],
-    /// The line and column of each axis's least and most position so far.
-    least_at: [(usize, usize); 9],
-    most_at: [(usize, usize); 9],
-    /// Its largest feed (in the profile's units as read from the reset state), the F word
-    /// and its line, and the feed mode (94/95).
-    feed: Option<Feed>,
     /// LinuxCNC: whether the main program had written a units code before the definition
     /// (given back at its end; the body is read as not having written one).
     given_before: Option<bool>,
@@ -70,16 +64,39 @@ pub(super) struct Early {
     incremental: bool,
     distance_codes: u32,
     moved_first: Option<bool>,
-    /// Such a body's positions from its own G90 on ([`Absolute`]).
-    absolute: Absolute,
-    /// The least and the most value of each axis's G53 positions, in the units it is read
-    /// in (review 43, A: judged at each call in that call's units).
-    machine: Machine,
     /// The findings of its limits held (TG601, TG602, TG605, selected or not) and
     /// [`Checker::reports`] where the hold began: the bound on the hold counted as they come,
     /// whoever takes them and whatever the selection (review 43, finding B).
     held: usize,
     reports_from: u64,
+}
+
+/// What a program read apart ([`Early`]) and a subprogram kept for its calls ([`Pending`])
+/// both hold: handed from the one to the other at its M99.
+#[derive(Debug)]
+struct Body {
+    /// Its O number (or label), and its O word (`o<name> sub`) as written.
+    number: Key,
+    name: String,
+    /// Its O word's line and column.
+    at: (usize, usize),
+    /// The line and column of each axis's least and most position.
+    least_at: [(usize, usize); 9],
+    most_at: [(usize, usize); 9],
+    /// Its largest feed (in the profile's units as read from the reset state), the F word
+    /// and its line, and the feed mode (94/95).
+    feed: Option<Feed>,
+    /// Where it moved before a G90/G91 of its own, its positions from its own G90 on
+    /// ([`Absolute`]).
+    absolute: Absolute,
+    /// The first call in it whose program the checker does not read here (its calling words
+    /// and line: a program not read before it, itself, one given up, a number not known, a
+    /// Haas's M97), or such a call of a program it calls: a G90/G91 written there is not
+    /// followed (review 47, F1).
+    unfollowed: Option<(String, usize)>,
+    /// The least and the most value of each axis's G53 positions, in the units it is read
+    /// in (review 43, A: judged at each call in that call's units).
+    machine: Machine,
 }
 
 /// The positions of a body that moved before writing its own G90/G91, from the G90 it then
@@ -94,6 +111,17 @@ struct Absolute {
     most_at: [(usize, usize); 9],
     /// The axes (their places' bits) whose positions are known from here.
     known: u16,
+}
+
+/// A program read apart given up ([`Checker::early_unhold`]): its number, name and O word's
+/// place, and whether it passed [`HOLD_ALL`] (findings of any rule) rather than
+/// [`HOLD_MAX`] (its limits' findings).
+#[derive(Debug)]
+pub(super) struct GivenUp {
+    number: Key,
+    name: String,
+    at: (usize, usize),
+    all: bool,
 }
 
 /// A G53 position of a program read apart: its value as written, the same in the profile's
@@ -132,16 +160,12 @@ struct Call {
 /// A subprogram read before any call named it, which returned without writing a units code.
 #[derive(Debug)]
 pub(super) struct Pending {
-    number: Key,
-    name: String,
-    at: (usize, usize),
+    /// What it kept while read apart ([`Early`]).
+    body: Body,
     /// Its own spans, read in `factor`'s units from the reset state.
     spans: [Option<Span>; 9],
-    least_at: [(usize, usize); 9],
-    most_at: [(usize, usize); 9],
     factor: f64,
     feed_factor: f64,
-    feed: Option<Feed>,
     /// Its limits' findings as read from the reset state.
     removed: Vec<Finding>,
     /// Its machine positions' findings (G53, a work offset's) as read from the reset state:
@@ -157,12 +181,11 @@ pub(super) struct Pending {
     /// true); a call in the other mode runs those positions otherwise, not known there
     /// (review 43, finding D). None: it wrote its own first, or has no position.
     read_incremental: Option<bool>,
-    /// Its positions from its own G90 on, where `read_incremental` is Some.
-    absolute: Absolute,
+    /// Some(G91): the distance mode it returns in, where it wrote a G90/G91 (of its own, or
+    /// of a program it calls): its caller's from there (G90/G91 are modal; review 47, F1).
+    ends: Option<bool>,
     /// That TG140 said at a call (not again at the next).
     mode_said: bool,
-    /// Its G53 positions' least and most value on each axis.
-    machine: Machine,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -200,19 +223,22 @@ impl Checker {
         }
         let stash = std::mem::take(&mut self.spans);
         self.early = Some(Box::new(Early {
-            number,
-            name,
-            at,
+            body: Body {
+                number,
+                name,
+                at,
+                least_at: [(0, 0); 9],
+                most_at: [(0, 0); 9],
+                feed: None,
+                absolute: Absolute::default(),
+                unfollowed: None,
+                machine: [[None; 2]; 9],
+            },
             stash,
-            least_at: [(0, 0); 9],
-            most_at: [(0, 0); 9],
-            feed: None,
             given_before: None,
             incremental: self.machine.state.incremental,
             distance_codes: self.machine.distance_codes,
             moved_first: None,
-            absolute: Absolute::default(),
-            machine: [[None; 2]; 9],
             held: 0,
             reports_from: 0,
         }));
@@ -275,35 +301,35 @@ impl Checker {
         }
         let spans = std::mem::replace(&mut self.spans, early.stash);
         self.pending.push(Pending {
-            number: early.number,
-            name: early.name,
-            at: early.at,
+            body: early.body,
             spans,
-            least_at: early.least_at,
-            most_at: early.most_at,
             factor: self.to_profile_units(false),
             feed_factor: self.to_profile_units(true),
-            feed: early.feed,
             removed,
             positions,
             calls: None,
             feed_said: false,
             read_incremental: (early.moved_first == Some(true)).then_some(early.incremental),
-            absolute: early.absolute,
+            ends: (self.machine.distance_codes != early.distance_codes)
+                .then_some(self.machine.state.incremental),
             mode_said: false,
-            machine: early.machine,
         });
     }
 
-    /// The findings held for the program read apart are more than [`HOLD_MAX`]: it is read
-    /// as before from here (its findings said), and a later call of it noted.
+    /// The findings held for the program read apart are more than [`HOLD_MAX`] of its
+    /// limits' (`all` false) or [`HOLD_ALL`] of any rule (`all`): it is read as before from
+    /// here (its findings said), and a later call of it noted, naming that bound.
     #[cold]
     #[inline(never)]
-    pub(super) fn early_unhold(&mut self) {
+    pub(super) fn early_unhold(&mut self, all: bool) {
         if let Some(early) = self.early.as_ref() {
-            if !self.given_up.iter().any(|(n, _, _)| *n == early.number) {
-                self.given_up
-                    .push((early.number.clone(), early.name.clone(), early.at));
+            if !self.given_up.iter().any(|g| g.number == early.body.number) {
+                self.given_up.push(GivenUp {
+                    number: early.body.number.clone(),
+                    name: early.body.name.clone(),
+                    at: early.body.at,
+                    all,
+                });
             }
         }
         self.early_merge();
@@ -332,7 +358,7 @@ impl Checker {
         }
         early.held += 1;
         if early.held > HOLD_MAX {
-            self.early_unhold();
+            self.early_unhold(false);
         }
     }
 
@@ -348,7 +374,7 @@ impl Checker {
             .as_ref()
             .is_some_and(|e| self.reports - e.reports_from > HOLD_ALL)
         {
-            self.early_unhold();
+            self.early_unhold(true);
         }
     }
 
@@ -366,7 +392,7 @@ impl Checker {
             line,
             said: false,
         };
-        let [least, most] = &mut early.machine[i];
+        let [least, most] = &mut early.body.machine[i];
         if least.is_none_or(|m| at < m.at) {
             *least = Some(new);
         }
@@ -408,7 +434,7 @@ impl Checker {
         {
             // (its own G90/G91 written after its first move: an axis's positions are known
             // from its first in G90)
-            let a = &mut early.absolute;
+            let a = &mut early.body.absolute;
             if a.known & (1 << i) == 0 && !self.machine.state.incremental {
                 a.known |= 1 << i;
             }
@@ -433,10 +459,10 @@ impl Checker {
         }
         let span = self.spans[i].as_mut().expect("added");
         if span.least == at {
-            early.least_at[i] = (line, column);
+            early.body.least_at[i] = (line, column);
         }
         if span.most == at {
-            early.most_at[i] = (line, column);
+            early.body.most_at[i] = (line, column);
         }
         let all = joined(early.stash[i], Some(*span)).expect("added");
         let (low, high) = self.travel.of_place(i).expect("a travel");
@@ -452,7 +478,7 @@ impl Checker {
     pub(super) fn early_feed_max(&self) -> f64 {
         self.early
             .as_ref()
-            .and_then(|e| e.feed.as_ref())
+            .and_then(|e| e.body.feed.as_ref())
             .map_or(f64::NEG_INFINITY, |f| f.value)
     }
 
@@ -465,10 +491,10 @@ impl Checker {
         let Some(early) = self.early.as_mut() else {
             return;
         };
-        if mode == 93 || early.feed.as_ref().is_some_and(|f| f.value >= value) {
+        if mode == 93 || early.body.feed.as_ref().is_some_and(|f| f.value >= value) {
             return;
         }
-        early.feed = Some(Feed {
+        early.body.feed = Some(Feed {
             value,
             word,
             line,
@@ -484,17 +510,25 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn early_call(&mut self, number: Key, token: String, at: (usize, usize)) -> bool {
-        let Some(k) = self.pending.iter().position(|p| p.number == number) else {
-            if let Some((_, name, (line, _))) = self.given_up.iter().find(|(n, _, _)| *n == number)
-            {
-                // (at each call of it: review 43, finding E)
-                let (name, line) = (name.clone(), *line);
+        let Some(k) = self.pending.iter().position(|p| p.body.number == number) else {
+            // (inside a program read apart: a program not read before it, itself, or one given
+            // up, whose G90/G91 are not followed)
+            self.early_unfollowed(&token, at.0);
+            if let Some(g) = self.given_up.iter().find(|g| g.number == number) {
+                // (at each call of it: review 43, finding E; the bound it passed, review 46, F6)
+                let (name, line) = (g.name.clone(), g.at.0);
+                let bound = if g.all {
+                    format!(
+                        "more than {HOLD_ALL} findings of any rule were made after its first \
+                         finding of the travel and feed limits"
+                    )
+                } else {
+                    format!("it held more than {HOLD_MAX} findings of the travel and feed limits")
+                };
                 let message = format!(
                     "{token} calls {name}, read from the reset state on line {line} and said \
-                     as read there (it held more than {HOLD_MAX} findings of the travel and \
-                     feed limits, or {HOLD_ALL} of any rule): its positions and \
-                     feeds were compared in the reset units, not in this call's units and \
-                     under its shift"
+                     as read there ({bound}): its positions and feeds were compared in the \
+                     reset units, not in this call's units and under its shift"
                 );
                 self.report(Rule::NotFollowed, message, at.0, at.1);
             }
@@ -514,6 +548,9 @@ impl Checker {
             if !matches!(pending.calls, Some(Err(_))) {
                 pending.calls = Some(Err(at.0));
             }
+            // (inside a program read apart: its positions not added to that one's)
+            self.early_unfollowed(&token, at.0);
+            self.call_returns(k, &token, at.0);
             return true;
         };
         let mut p = self.pending.remove(k);
@@ -522,7 +559,107 @@ impl Checker {
             p.calls = Some(Ok(at.0));
         }
         self.pending.insert(k, p);
+        self.call_returns(k, &token, at.0);
         true
+    }
+
+    /// After a call of the subprogram `pending[k]` (`token` of line `line`): where it wrote a
+    /// G90/G91, its last is in force in its caller from here (G90/G91 are modal, and a
+    /// FANUC's or a Haas's M99 restores none): a distance code of the caller's at the call,
+    /// which a program read apart counts as its own (review 47, F1: O0002 calling O0003,
+    /// whose `G90` makes its `X-900.` absolute, under a G91 call of O0002). A LinuxCNC
+    /// subroutine's may be undone at its return (M73): not followed, so noted.
+    fn call_returns(&mut self, k: usize, token: &str, line: usize) {
+        let p = &self.pending[k];
+        let Some(mode) = p.ends else {
+            return;
+        };
+        if matches!(p.body.number, Key::Number(_)) {
+            self.machine.state.incremental = mode;
+            self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
+        } else {
+            self.early_unfollowed(token, line);
+        }
+    }
+
+    /// Inside a program read apart: a call by another word than a program number (a Haas's
+    /// M97 of a sequence), which the checker does not follow ([`Checker::early_unfollowed`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_call_unread(&mut self, b: &super::BlockView<'_>) {
+        let word = |letter: u8| {
+            b.words
+                .iter()
+                .find(|w| w.letter == letter && w.index.is_empty())
+        };
+        let token = match (
+            b.words
+                .iter()
+                .find(|w| w.letter == b'M' && w.number == b"97"),
+            word(b'P'),
+        ) {
+            (Some(m), Some(p)) => format!("{} {}", m.token(), p.token()),
+            (m, _) => m
+                .or(b.words.first())
+                .map_or_else(String::new, |w| w.token()),
+        };
+        self.early_unfollowed(&token, b.line);
+    }
+
+    /// Inside a program read apart: a call (`token` of line `line`) whose program's G90/G91
+    /// the checker does not follow, kept (the first) for the wording of that program's TG140
+    /// at a call under the other mode.
+    fn early_unfollowed(&mut self, token: &str, line: usize) {
+        if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
+            if early.body.unfollowed.is_none() {
+                early.body.unfollowed = Some((token.to_string(), line));
+            }
+        }
+    }
+
+    /// A call inside a program read apart of the subprogram `p` (at `at`, `r` times the units
+    /// it was read in, under `shift`), after its positions went to that one's spans: those
+    /// `p` reaches whatever the mode of its call -- each one where it wrote its G90/G91
+    /// before it moved, else those from its own G90 on ([`Absolute`]) -- are where they are
+    /// at every call of the program read apart too, kept with its own from its G90 on where
+    /// it moved before any (review 47, F1); and `p`'s calls not followed are that one's.
+    fn early_nested(&mut self, p: &Pending, r: f64, shift: &[f64; 9], at: (usize, usize)) {
+        let early = self.early.as_mut().expect("early_on");
+        if early.body.unfollowed.is_none() {
+            early.body.unfollowed.clone_from(&p.body.unfollowed);
+        }
+        if early.moved_first != Some(true) {
+            return;
+        }
+        let spans = if p.read_incremental.is_none() {
+            &p.spans
+        } else {
+            &p.body.absolute.spans
+        };
+        let a = &mut early.body.absolute;
+        for (i, span) in spans.iter().enumerate() {
+            let Some(span) = span else {
+                continue;
+            };
+            if self.travel.of_place(i).is_none() {
+                continue;
+            }
+            for at_ in [span.least * r + shift[i], span.most * r + shift[i]] {
+                let point = Span {
+                    least: at_,
+                    most: at_,
+                    said: false,
+                };
+                let all = joined(a.spans[i], Some(point)).expect("added");
+                if all.least == at_ {
+                    a.least_at[i] = at;
+                }
+                if all.most == at_ {
+                    a.most_at[i] = at;
+                }
+                a.spans[i] = Some(all);
+            }
+        }
     }
 
     /// LinuxCNC: an `o<name> sub` opens a definition in the main program (`name` its label,
@@ -564,6 +701,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn call_unknown(&mut self, token: String, line: usize, column: usize) {
+        self.early_unfollowed(&token, line);
         for p in &mut self.pending {
             p.calls = Some(Err(line));
         }
@@ -604,7 +742,7 @@ impl Checker {
         for p in std::mem::take(&mut self.pending) {
             // (one with no position on an axis with a travel and no feed has nothing to judge:
             // no note of it)
-            let judged = p.feed.is_some() && self.config.feed_max.is_some()
+            let judged = p.body.feed.is_some() && self.config.feed_max.is_some()
                 || (0..AXES.len())
                     .any(|i| p.spans[i].is_some() && self.travel.of_place(i).is_some());
             match p.calls {
@@ -620,9 +758,9 @@ impl Checker {
                          under the shift of its call; the one of line {line} is made where they \
                          are not known: its positions and feeds are not compared there with the \
                          travel and the feed maximum (TG601, TG602)",
-                        p.name
+                        p.body.name
                     );
-                    self.report(Rule::NotFollowed, message, p.at.0, p.at.1);
+                    self.report(Rule::NotFollowed, message, p.body.at.0, p.body.at.1);
                 }
             }
         }
@@ -641,7 +779,7 @@ impl Checker {
                 self.spans[i] = joined(self.spans[i], Some(span));
                 continue;
             }
-            let (l, m) = (p.least_at[i], p.most_at[i]);
+            let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
             self.add_to_span(i, span.least, false, l.0, || l.1, "");
             self.add_to_span(i, span.most, false, m.0, || m.1, "");
         }
@@ -667,14 +805,26 @@ impl Checker {
             _ => " in inches",
         };
         let (line, column) = at;
-        let under = |of: usize| {
+        let name = p.body.name.clone();
+        let under_at = |what: &str| {
             format!(
-                " ({} runs{units} as called by {token} of line {line}, its position of line \
-                 {of} there: a subprogram written before its call runs in the units and under \
-                 the shift in force there)",
-                p.name
+                " ({name} runs{units} as called by {token} of line {line}, its {what} there: a \
+                 subprogram written before its call runs in the units and under the shift in \
+                 force there)"
             )
         };
+        let under = |of: usize| under_at(&format!("position of line {of}"));
+        // (a body whose G90/G91 code comes before its first move, the code written by a
+        // program it calls too, read apart: the caller's positions from the call on follow
+        // it, Checker::call_returns; a LinuxCNC subroutine's mode may be restored at its
+        // return)
+        if self.early_on
+            && p.read_incremental.is_none()
+            && p.ends.is_some()
+            && matches!(p.body.number, Key::Number(_))
+        {
+            self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
+        }
         // (G90/G91 are modal and a call changes none: a body that moves before writing its
         // own runs its positions in the call's mode)
         let known = p
@@ -684,9 +834,13 @@ impl Checker {
         // (where its positions are not known at this call, those from its own G90 on are
         // where they are whatever the call's mode)
         let (spans, least_at, most_at) = if known {
-            (&p.spans, &p.least_at, &p.most_at)
+            (&p.spans, &p.body.least_at, &p.body.most_at)
         } else {
-            (&p.absolute.spans, &p.absolute.least_at, &p.absolute.most_at)
+            (
+                &p.body.absolute.spans,
+                &p.body.absolute.least_at,
+                &p.body.absolute.most_at,
+            )
         };
         for (i, shift) in shift.into_iter().enumerate() {
             let Some(span) = spans[i] else {
@@ -696,8 +850,20 @@ impl Checker {
                 continue;
             }
             let (l, m) = (least_at[i].0, most_at[i].0);
-            self.add_to_span(i, span.least * r + shift, false, line, || column, &under(l));
-            self.add_to_span(i, span.most * r + shift, false, line, || column, &under(m));
+            let least = span.least * r + shift;
+            self.add_to_span(i, least, false, line, || column, &under(l));
+            // (where its least is an end of the span, its most's finding names both: review
+            // 46, F5, a lathe body's X-25. of line 4 made the span wide, not its X6. of line 5)
+            let both = l != m && self.spans[i].is_some_and(|s| s.least == least);
+            let most = if both {
+                under_at(&format!("positions of lines {l} and {m}"))
+            } else {
+                under(m)
+            };
+            self.add_to_span(i, span.most * r + shift, false, line, || column, &most);
+        }
+        if self.early_on {
+            self.early_nested(p, r, &shift, at);
         }
         if !known
             && !p.mode_said
@@ -709,20 +875,40 @@ impl Checker {
             } else {
                 ("G90 (absolute)", "incremental")
             };
+            // (a G90/G91 of a program it calls is its own from that call on, where the checker
+            // follows the call: review 47, F1)
+            let unfollowed = p
+                .body
+                .unfollowed
+                .as_ref()
+                .map_or_else(String::new, |(call, at)| {
+                    format!(
+                    "; the G90 or G91 of a program its {call} of line {at} runs is not followed \
+                     (the checker does not read that program at that call), so the positions \
+                     after that call are taken in the mode before it"
+                )
+                });
             let message = format!(
                 "{token} runs {name} under the {here} in force here (G90/G91 are modal and a call \
                  changes none), and {name} moves before it writes a G90 or G91 of its own: its \
                  positions, read as {read} where it is written, are not known at this call and \
                  are not compared with the travel (TG601; said at its first such call), but for \
-                 those of each axis from its first move in a G90 of its own on",
-                name = p.name
+                 those of each axis from its first move in a G90 of its own (or of a program it \
+                 calls) on{unfollowed}",
+                name = p.body.name
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
-        self.early_machine_judged(&mut p.machine, r, at, &under);
+        self.early_machine_judged(&mut p.body.machine, r, at, &under);
         if r == 1.0 && !p.positions.is_empty() {
             let unshifted = shift.iter().all(|s| *s == 0.0);
+            // (read from the reset state with no units code written: at a call after one,
+            // its numbers are read in the call's units, not for want of a code; review 46, F5)
+            let remark = self.machine.state.units_given.then(|| self.units_remark());
             for mut f in std::mem::take(&mut p.positions) {
+                if let Some(remark) = &remark {
+                    f.message = f.message.replacen(remark.as_str(), "", 1);
+                }
                 // (a position under a work offset is the body's work position plus the
                 // offset: not where it goes under a shift, or where its positions are not known)
                 let machine = f.message.contains("(G53)");
@@ -745,7 +931,7 @@ impl Checker {
                 f.message = format!(
                     "{} (the position as written, in the units {} was read in; it runs{units} as \
                      called by {token} of line {line}, farther out there)",
-                    f.message, p.name
+                    f.message, p.body.name
                 );
                 self.early_hold();
                 self.found.push(f);
@@ -758,11 +944,11 @@ impl Checker {
             let message = format!(
                 "{token}: {} runs{units} here, and its machine positions under a work offset, \
                  beyond the travel as read in the units it was read in, are not judged in these",
-                p.name
+                p.body.name
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
-        let (Some(top), Some(feed)) = (self.config.feed_max, p.feed.as_ref()) else {
+        let (Some(top), Some(feed)) = (self.config.feed_max, p.body.feed.as_ref()) else {
             return;
         };
         let value = feed.value / p.feed_factor * call.feed_factor;
@@ -1498,5 +1684,213 @@ mod tests {
         // then a call in inches: the finding as read, said there
         let both = far.replace("M98 P2\n", "M98 P2\nG20\nM98 P2\n");
         assert_eq!(limits(inch, &both), [(7, 5), (9, 5)]);
+    }
+
+    /// The TG140s of `text` on [`mill`] in metric that begin `from`.
+    fn notes(text: &str, from: &str) -> Vec<(usize, String)> {
+        findings(mill(Units::Metric), text, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| f.message.starts_with(from))
+            .map(|f| (f.line, f.message))
+            .collect()
+    }
+
+    /// Review 47, F1: O1000 calls O0002 under G91; O0002 calls O0003, whose own G90 makes its
+    /// X-900. absolute. A called program's G90/G91 is its caller's from the call on (G90/G91
+    /// are modal and M99 restores none), so O0003's X-900 is where it is at every call of
+    /// O0002: X -900..700 (1600 mm) at the G91 call (n2.nc), and with O0003 moving first
+    /// (n1.nc), and one level deeper.
+    #[test]
+    fn a_nested_call_s_own_g90_is_seen_by_the_body_that_calls_it() {
+        let n2 = "%\nO0003\nG90\nG0 X-900.\nM99\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\n\
+                  G21 G90 G54\nG0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), n2), [(14, 5)]);
+        let said = findings(metric.clone(), n2, Rule::TravelExceeded);
+        assert!(
+            said[0].message.contains("X spans 1600 (from -900 to 700)")
+                && said[0]
+                    .message
+                    .contains("O0002 runs as called by M98 P2 of line 14, its position of line 8"),
+            "{}",
+            said[0].message
+        );
+        // O0003 moves before its G90 (n1.nc): its X-900 from there on all the same
+        let n1 = n2.replace("O0003\nG90\n", "O0003\nG0 X10.\nG90\n");
+        assert_eq!(limits(metric.clone(), &n1), [(15, 5)]);
+        // three levels: O0004's G90, called by O0003, called by O0002
+        let deep = "%\nO0004\nG90\nG0 X-900.\nM99\nO0003\nG0 X1.\nM98 P4\nM99\nO0002\nG0 X5.\n\
+                    M98 P3\nM99\nO1000\nG21 G90 G54\nG0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), deep), [(18, 5)]);
+        // O0003's X-900. inside what O0002 reached before (review 47, F0's form): kept too
+        let inside = n2.replace("O0002\nG0 X5.", "O0002\nG0 X-950.\nG0 X5.");
+        assert_eq!(limits(metric.clone(), &inside), [(15, 5)]);
+        // a caller's position after the call, in the G90 O0003 left: known (X-900 then,
+        // after O0002's call, X700: 1600 mm)
+        let after = "%\nO0003\nG90\nG0 Y1.\nM99\nO0002\nG0 X5.\nM98 P3\nG0 X-900.\nM99\nO1000\n\
+                     G21 G90 G54\nG0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), after), [(15, 5)]);
+        // O0003 leaves G91: O0002's X-900. after the call is an increment from where O0003
+        // left the tool, not known at the G91 call
+        let left91 = after.replace("G0 Y1.\n", "G0 Y1.\nG91\n");
+        assert_eq!(limits(metric.clone(), &left91), []);
+        // O0003 writes no G90/G91: O0002's positions as before, not known under G91
+        let plain = n2.replace("O0003\nG90\n", "O0003\n");
+        assert_eq!(limits(metric, &plain), []);
+    }
+
+    /// A called program's last G90/G91 is in force in its caller after the call: O0002's G91
+    /// makes O1000's X900. after `M98 P2` an increment from a place not known (main read it
+    /// as absolute: X -700..900, a TG601 of a path the machine does not take).
+    #[test]
+    fn a_subprogram_s_distance_code_is_in_force_after_its_call() {
+        let text = "%\nO0002\nG91\nG0 Z1.\nM99\nO1000\nG21 G90 G54\nG0 X-700. Y0\nM98 P2\n\
+                    G0 X900.\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), text), []);
+        // its own G90 at its end: absolute after it, as read
+        let back = text.replace("G0 Z1.\n", "G0 Z1.\nG90\n");
+        assert_eq!(limits(metric, &back), [(11, 4)]);
+    }
+
+    /// Where the nesting cannot be followed, the G91 call's TG140 says the called program's
+    /// G90/G91 is not followed: a program after it in the file, itself, a number not known,
+    /// a Haas's M97.
+    #[test]
+    fn a_nested_call_not_followed_is_named_in_the_g91_note() {
+        let later = "%\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\nG21 G90 G54\nG0 X700. Y0\nG91\n\
+                     M98 P2\nG90\nM30\nO0003\nG90\nG0 X-900.\nM99\n%\n";
+        let said = notes(later, "M98 P2 runs O0002 under the G91");
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!(said[0].0, 10);
+        assert!(
+            said[0]
+                .1
+                .contains("the G90 or G91 of a program its M98 P3 of line 4 runs is not followed"),
+            "{}",
+            said[0].1
+        );
+        for (call, token) in [
+            ("M98 P2", "M98 P2 of line 4"),
+            ("M98 P#1", "M98 P#1 of line 4"),
+            ("M97 P100", "M97 P100 of line 4"),
+        ] {
+            let text = later.replace("O0002\nG0 X5.\nM98 P3", &format!("O0002\nG0 X5.\n{call}"));
+            let said = notes(&text, "M98 P2 runs O0002 under the G91");
+            assert!(
+                said.len() == 1 && said[0].1.contains(token),
+                "{call}: {said:?}"
+            );
+        }
+        // followed: no such words
+        let before = "%\nO0003\nG0 X1.\nM99\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\nG21 G90 G54\n\
+                      G0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
+        let said = notes(before, "M98 P2 runs O0002 under the G91");
+        assert!(
+            said.len() == 1 && !said[0].1.contains("not followed"),
+            "{said:?}"
+        );
+        // a program called inside one that calls a program not followed: named there too
+        let inner = "%\nO0003\nG0 X1.\nM98 P9\nM99\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\n\
+                     G21 G90 G54\nG0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
+        let said = notes(inner, "M98 P2 runs O0002 under the G91");
+        assert!(
+            said.len() == 1
+                && said[0]
+                    .1
+                    .contains("its M98 P9 of line 4 runs is not followed"),
+            "{said:?}"
+        );
+    }
+
+    /// Review 46, F5: a body's span too wide at a call names the lines of both its ends where
+    /// both are the span's (X-35. of line 4 made it wide, not X30. of line 5).
+    #[test]
+    fn a_body_s_span_names_both_its_lines() {
+        let text = "%\nO0002\nG0 X30.\nG0 X-35.\nG0 X30.\nM99\nO1000\nG20 G90 G54\nM98 P2\n\
+                    M30\n%\n";
+        let said = findings(mill(Units::Metric), text, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].message.contains(
+                "O0002 runs in inches as called by M98 P2 of line 9, its positions of lines 4 \
+                 and 5 there"
+            ),
+            "{}",
+            said[0].message
+        );
+        // the caller's X-40. the span's least: the body's most alone
+        let caller = text.replace("G54\nM98", "G54\nG0 X-40. Y0\nM98");
+        let said = findings(mill(Units::Metric), &caller, Rule::TravelExceeded);
+        assert!(
+            said.len() == 1 && said[0].message.contains("its position of line 5 there"),
+            "{said:?}"
+        );
+    }
+
+    /// Review 46, F5: a body's G53 position read with no units code written, said at a call
+    /// made after a G20: not "the program has written no units code by here".
+    #[test]
+    fn a_machine_position_said_at_a_call_after_a_units_code_says_no_units_remark() {
+        let mut inch = mill(Units::Inch);
+        inch.facts.limit_units = Units::Inch;
+        inch.facts.travel = vec![(b'X', Dec::parse("-30").unwrap(), Dec::parse("30").unwrap())];
+        let text = "%\nO0002\nG53 G0 X-35.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n";
+        let said = findings(inch.clone(), text, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!(said[0].line, 8);
+        assert!(
+            !said[0].message.contains("no units code") && said[0].message.contains("O0002 runs"),
+            "{}",
+            said[0].message
+        );
+        // called where no units code was written: the remark stays
+        let unwritten = text.replace("G20 G90", "G90");
+        let said = findings(inch, &unwritten, Rule::TravelExceeded);
+        assert!(
+            said.len() == 1 && said[0].message.contains("no units code by here"),
+            "{said:?}"
+        );
+    }
+
+    /// Review 46, F6: a program given up past HOLD_ALL findings of any rule is noted naming
+    /// that bound, not "more than 1024 findings".
+    #[test]
+    fn a_program_given_up_is_noted_with_the_bound_it_passed() {
+        let mut text = String::from("%\nO0002\nG53 G0 X-800.\n");
+        for _ in 0..4200 {
+            text.push_str("M456\n");
+        }
+        text.push_str("G0 X700.\nM99\nO1000\nG20 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n");
+        let said: Vec<_> = taken(&text, Selection::all(), false)
+            .into_iter()
+            .filter(|f| f.0 == Rule::NotFollowed && f.3.starts_with("M98 P2 calls O0002"))
+            .collect();
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].3.contains(
+                "more than 4096 findings of any rule were made after its first finding of the \
+                 travel and feed limits"
+            ) && !said[0].3.contains("1024"),
+            "{}",
+            said[0].3
+        );
+    }
+
+    /// Review 47, F1 on LinuxCNC: `o<b>`'s own G90 makes its X-330 absolute at every call of
+    /// `o<a>`, which calls it: 610 of span from X280 at the G91 call. Whether `o<b>`'s G90 is
+    /// in force after its return is not followed (an M73 in it restores the caller's modes):
+    /// the G91 note says so.
+    #[test]
+    fn a_linuxcnc_nested_call_s_own_g90_is_seen_by_the_body_that_calls_it() {
+        let text = "G21 G90\no<b> sub\nG90\nG0 X-330\no<b> endsub\no<a> sub\nG0 X5\no<b> call\n\
+                    o<a> endsub\nG0 X280 Y0\nG91\no<a> call\nG90\nM2\n";
+        assert_eq!(fired(lcnc(), text, Rule::TravelExceeded), [(12, 1)]);
+        assert!(findings(lcnc(), text, Rule::NotFollowed)
+            .iter()
+            .any(|f| f.line == 12
+                && f.message.starts_with("o<a> call runs o<a> under the G91")
+                && f.message
+                    .contains("its o<b> call of line 8 runs is not followed")));
     }
 }

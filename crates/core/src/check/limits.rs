@@ -2341,6 +2341,12 @@ impl Checker {
         {
             return String::new();
         }
+        self.units_remark()
+    }
+
+    /// [`Checker::units_not_written`]'s words (a subprogram's machine position said at a call
+    /// made after a units code leaves them out, crate::check::called; review 46, F5).
+    pub(super) fn units_remark(&self) -> String {
         let setting = if self.config.haas {
             " (a Haas's Setting 9)"
         } else {

@@ -1083,10 +1083,11 @@ pub struct Checker {
     early_on: bool,
     /// Where the findings held for it begin in `found` (none drained from there).
     hold_from: Option<usize>,
-    /// The programs read apart whose hold passed [`called::HOLD_MAX`] (read as before from
-    /// there): each one's number, name and O word's place, for a TG140 at each later call
-    /// (a short list: each held more than 1024 findings; review 43, finding E).
-    given_up: Vec<(called::Key, String, (usize, usize))>,
+    /// The programs read apart whose hold passed [`called::HOLD_MAX`] or [`called::HOLD_ALL`]
+    /// (read as before from there): each one's number, name, O word's place and the bound it
+    /// passed, for a TG140 at each later call (a short list: each held more than 1024
+    /// findings of its limits or 4096 of any rule; review 43, finding E).
+    given_up: Vec<called::GivenUp>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
     /// The first call whose program number is not known (its code, line and column), and

@@ -322,6 +322,11 @@ impl Checker {
         let by_number =
             self.values.ms.contains(&98) || self.values.gs().iter().any(|&g| g == 65 || g == 66);
         if !by_number {
+            if self.early_on {
+                // (a Haas's M97 inside a program read apart: a G90/G91 of the sequence it
+                // runs is not followed; review 47, F1)
+                self.early_call_unread(b);
+            }
             return;
         }
         let Some(number) = b
@@ -360,7 +365,7 @@ impl Checker {
             }
             _ => number,
         };
-        if !self.pending.is_empty() || !self.given_up.is_empty() {
+        if self.early_on || !self.pending.is_empty() || !self.given_up.is_empty() {
             let token = b
                 .words
                 .iter()
@@ -889,7 +894,7 @@ impl Checker {
             }
             _ => {}
         }
-        if self.pending.is_empty() && self.given_up.is_empty() {
+        if !self.early_on && self.pending.is_empty() && self.given_up.is_empty() {
             return;
         }
         for &(column, kind, text) in b.statements {
