@@ -46,7 +46,7 @@ pub(super) enum Key {
 
 /// The program in hand, read from the reset state, while it may still be a subprogram of a
 /// later call.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct Early {
     /// Its O number (or label), and its O word (`o<name> sub`) as written.
     number: Key,
@@ -130,7 +130,7 @@ struct Call {
 }
 
 /// A subprogram read before any call named it, which returned without writing a units code.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct Pending {
     number: Key,
     name: String,

@@ -28,6 +28,7 @@ pub(super) fn written_index(index: &[u8]) -> u64 {
 /// every block asks it of its letter (the other addresses, `:` and `#`, are asked of the
 /// profile's lists). Its word format in metric and in inch, as [`Config::format_in`] finds it,
 /// and how a number of it written without a point is read ([`crate::word::Numbers::no_point`]).
+#[derive(Clone)]
 pub(super) struct FormatTable {
     formats: [[Option<WordFormat>; 26]; 2],
     no_point: [NoPoint; 26],
