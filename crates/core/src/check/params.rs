@@ -345,16 +345,7 @@ impl Checker {
             if self.jumps_pending.len() >= JUMPS_PENDING {
                 self.jumps_pending.remove(0);
             }
-            let found = std::mem::take(&mut self.found);
-            let path = std::mem::take(&mut self.path);
-            let pending = std::mem::take(&mut self.jumps_pending);
-            let mut run = Box::new(self.clone());
-            self.found = found;
-            self.path = path;
-            self.jumps_pending = pending;
-            run.record_path = false;
-            run.line_walks_of = (0, 0);
-            run.after_block = false;
+            let run = self.run_of();
             self.jumps_pending.push(Taken {
                 line,
                 key,
@@ -363,6 +354,44 @@ impl Checker {
             });
         }
         self.after_block = !self.runs.is_empty();
+    }
+
+    /// The checker as it stands, for a run where a jump is taken: without what grows with the
+    /// program and a run does not read -- the findings, the path, the runs, the sequence
+    /// numbers and jumps read (a run's own jumps forget its parameters: it ends there), the
+    /// statistics' lists -- so that a copy costs the same at any length of program.
+    fn run_of(&mut self) -> Box<Checker> {
+        let found = std::mem::take(&mut self.found);
+        let path = std::mem::take(&mut self.path);
+        let pending = std::mem::take(&mut self.jumps_pending);
+        let runs = std::mem::take(&mut self.runs);
+        let targets = std::mem::take(&mut self.targets);
+        let goto_targets = std::mem::take(&mut self.goto_targets);
+        let goto_names = std::mem::take(&mut self.goto_names);
+        let stats = &mut self.stats;
+        let lists = (
+            std::mem::take(&mut stats.travel_not),
+            std::mem::take(&mut stats.moves_not_known),
+            std::mem::take(&mut stats.dwells_not_known),
+        );
+        let mut run = Box::new(self.clone());
+        let stats = &mut self.stats;
+        (
+            stats.travel_not,
+            stats.moves_not_known,
+            stats.dwells_not_known,
+        ) = lists;
+        self.found = found;
+        self.path = path;
+        self.jumps_pending = pending;
+        self.runs = runs;
+        self.targets = targets;
+        self.goto_targets = goto_targets;
+        self.goto_names = goto_names;
+        run.record_path = false;
+        run.line_walks_of = (0, 0);
+        run.after_block = false;
+        run
     }
 
     /// The value parameter `key` holds in the file's reading: known, or the fall-through's
