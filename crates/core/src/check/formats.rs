@@ -99,6 +99,19 @@ fn named_codes(code_words: &[super::CodeWord]) -> [u128; 2] {
     codes
 }
 
+impl FormatTable {
+    /// The verdicts kept of words' formats, taken out (an empty table left: only a checker
+    /// that keeps no verdicts may read on with it, [`Checker::keep_verdicts`]).
+    pub(super) fn take_clean(&mut self) -> Box<[(u64, WordFormat, u8)]> {
+        std::mem::take(&mut self.clean)
+    }
+
+    /// [`FormatTable::take_clean`]'s table given back.
+    pub(super) fn give_clean(&mut self, clean: Box<[(u64, WordFormat, u8)]>) {
+        self.clean = clean;
+    }
+}
+
 impl Checker {
     /// Whether verdicts are kept by key (the default): false asks every rule afresh of every
     /// word's format ([`Checker::format_key`]), block's addresses

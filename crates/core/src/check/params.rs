@@ -299,9 +299,12 @@ impl Checker {
     /// A block of a forward conditional jump that keeps the parameters
     /// ([`Checker::jump_keeps_params`]): the run where it is taken is kept for its target,
     /// the checker as it stands at the block's end ([`Checker::jump_runs`]). Not in a run,
-    /// nor in a program whose findings are held (called.rs), nor for a block of two jumps.
+    /// nor in a program whose findings are held (called.rs), nor for a block of two jumps,
+    /// nor where no parameter is known.
     pub(super) fn jump_noted(&mut self, b: &BlockView<'_>) {
-        if self.run_target != 0 || self.hold_from.is_some() {
+        // (no parameter known here: the run where the jump is taken knows none at its target,
+        // and judges nothing the fall-through's reading does not)
+        if self.run_target != 0 || self.hold_from.is_some() || self.params.is_empty() {
             return;
         }
         let mut target = None;
@@ -359,7 +362,8 @@ impl Checker {
     /// The checker as it stands, for a run where a jump is taken: without what grows with the
     /// program and a run does not read -- the findings, the path, the runs, the sequence
     /// numbers and jumps read (a run's own jumps forget its parameters: it ends there), the
-    /// statistics' lists -- so that a copy costs the same at any length of program.
+    /// statistics' lists -- so that a copy costs the same at any length of program; nor the
+    /// verdicts kept of words' formats (32 KB), which a run asks afresh.
     fn run_of(&mut self) -> Box<Checker> {
         let found = std::mem::take(&mut self.found);
         let path = std::mem::take(&mut self.path);
@@ -368,6 +372,7 @@ impl Checker {
         let targets = std::mem::take(&mut self.targets);
         let goto_targets = std::mem::take(&mut self.goto_targets);
         let goto_names = std::mem::take(&mut self.goto_names);
+        let clean = self.format_table.take_clean();
         let stats = &mut self.stats;
         let lists = (
             std::mem::take(&mut stats.travel_not),
@@ -388,6 +393,10 @@ impl Checker {
         self.targets = targets;
         self.goto_targets = goto_targets;
         self.goto_names = goto_names;
+        self.format_table.give_clean(clean);
+        // (its words' formats asked afresh, without the table of those kept: the same
+        // findings, Checker::keep_verdicts)
+        run.keep_verdicts(false);
         run.record_path = false;
         run.line_walks_of = (0, 0);
         run.after_block = false;
