@@ -178,3 +178,45 @@ def test_sinumerik_a_jump_back_to_a_block_number(tmp_path: Path) -> None:
     assert cli_findings(tmp_path, "s5q.mpf", quiet, "sinumerik-840d", "TG502,TG503") == []
     numbered = body.replace("IF R2<2 GOTOB N10\n", "N40 R3=1\n")
     assert cli_findings(tmp_path, "s5n.mpf", numbered, "sinumerik-840d", "TG502,TG503") == []
+
+
+# -- review 44 F3: the value a forward jump carries (through the CLI) --------------------------
+
+# the review's programs: #1 is -900 where the jump of line 6 is taken (X700 -> X-900, 1600 mm,
+# more than fanuc-mill's 1524), 0 where it is not; and the value reaching the word through an
+# assignment at the target, either way
+F3 = "%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#1=-900.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 X#1\nM30\n%\n"
+F3_FALLS = ("%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#1=0\nIF[#2EQ1]GOTO10\n#1=-900.\nN10 #3=#1\n"
+            "G0 X#3\nM30\n%\n")
+F3_TAKEN = ("%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#1=-900.\nIF[#2EQ1]GOTO10\n#1=0\nN10 #3=#1\n"
+            "G0 X#3\nM30\n%\n")
+# SINUMERIK (X travel 1600): GOTOF to a block number, an R parameter copied there
+F3_SINUMERIK = "G0 X700 Y0\nR1=-1000\nIF R2==1 GOTOF N100\nR1=0\nN100 R3=R1\nG0 X=R3\nM30\n"
+
+
+@pytest.mark.parametrize(("name", "text", "profile", "line", "said"), [
+    ("f3.nc", F3, "fanuc-mill", 8, "X#1 is -900 where the jump of line 6 is taken"),
+    ("f3h.nc", F3, "haas-mill", 8, "X#1 is -900 where the jump of line 6 is taken"),
+    ("f3f.nc", F3_FALLS, "fanuc-mill", 9, "X#3 is -900 where the jump of line 6 is not taken"),
+    ("f3t.nc", F3_TAKEN, "fanuc-mill", 9, "X#3 is -900 where the jump of line 6 is taken"),
+    ("f3s.mpf", F3_SINUMERIK, "sinumerik-840d", 6,
+     "X=R3 is -1000 where the jump of line 3 is taken"),
+])
+def test_a_jump_target_judges_the_value_the_jump_carries(
+        tmp_path: Path, name: str, text: str, profile: str, line: int, said: str) -> None:
+    """Review 44 F3: at a jump target each run that arrives -- the fall-through and each
+    forward jump taken, with the values at its line -- is judged by the limits; the finding
+    names the jump. The word stays unknown after its block (TG141)."""
+    found = cli_findings(tmp_path, name, text, profile, "TG601,TG141")
+    assert rules_at(found) == [("TG141", line), ("TG601", line)], found
+    assert said in str(found[1]["message"]), found[1]
+
+
+def test_where_the_jump_brings_the_fall_through_s_value_nothing_changes(
+        tmp_path: Path) -> None:
+    """No assignment between the jump and N10: both runs read #1 = -900, and the finding is
+    the fall-through's alone, as before."""
+    same = F3.replace("#1=0\n", "")
+    found = cli_findings(tmp_path, "same.nc", same, "fanuc-mill", "TG601,TG141")
+    assert rules_at(found) == [("TG141", 7), ("TG601", 7)], found
+    assert "X#1 is -900 where the jump of line 6 is not taken" in str(found[1]["message"])

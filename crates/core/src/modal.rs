@@ -197,7 +197,7 @@ impl ModalState {
 /// The values of the letters A-Z are kept beside a mask of the letters given (by [`bit`]):
 /// every block is cleared and asked for its letters, and a mask is cleared in one store and
 /// asked in one test, where 26 `Option<Dec>` (1,248 bytes) were written for every block.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct BlockValues {
     /// The G codes in order ([`BlockValues::push_g`]).
     gs: Vec<i64>,
@@ -600,6 +600,7 @@ impl ModalSettings {
     }
 }
 
+#[derive(Clone)]
 pub struct ModalMachine {
     pub settings: ModalSettings,
     pub state: ModalState,

@@ -49,7 +49,7 @@ pub(super) enum Key {
 
 /// The program in hand, read from the reset state, while it may still be a subprogram of a
 /// later call.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct Early {
     /// What it keeps for its calls.
     body: Body,
@@ -158,7 +158,7 @@ struct Call {
 }
 
 /// A subprogram read before any call named it, which returned without writing a units code.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct Pending {
     /// What it kept while read apart ([`Early`]).
     body: Body,

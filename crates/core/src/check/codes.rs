@@ -463,7 +463,7 @@ pub(super) fn taken_of(flags: u16) -> Option<AxesTaken> {
 /// set is kept: silence (no finding, which no state of the program changes), the motion
 /// group's reading where it named no cycle and no code the family's list lacks (those note
 /// the line they are met on), and what the codes do with the axis words.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct CodeVerdicts {
     keys: [CodeKey; 64],
     flags: [u16; 64],

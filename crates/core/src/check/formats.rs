@@ -28,6 +28,7 @@ pub(super) fn written_index(index: &[u8]) -> u64 {
 /// every block asks it of its letter (the other addresses, `:` and `#`, are asked of the
 /// profile's lists). Its word format in metric and in inch, as [`Config::format_in`] finds it,
 /// and how a number of it written without a point is read ([`crate::word::Numbers::no_point`]).
+#[derive(Clone)]
 pub(super) struct FormatTable {
     formats: [[Option<WordFormat>; 26]; 2],
     no_point: [NoPoint; 26],
@@ -96,6 +97,19 @@ fn named_codes(code_words: &[super::CodeWord]) -> [u128; 2] {
         }
     }
     codes
+}
+
+impl FormatTable {
+    /// The verdicts kept of words' formats, taken out (an empty table left: only a checker
+    /// that keeps no verdicts may read on with it, [`Checker::keep_verdicts`]).
+    pub(super) fn take_clean(&mut self) -> Box<[(u64, WordFormat, u8)]> {
+        std::mem::take(&mut self.clean)
+    }
+
+    /// [`FormatTable::take_clean`]'s table given back.
+    pub(super) fn give_clean(&mut self, clean: Box<[(u64, WordFormat, u8)]>) {
+        self.clean = clean;
+    }
 }
 
 impl Checker {

@@ -12,6 +12,7 @@ use crate::statement::{self, Effect, Kind};
 /// The profile's travel of each axis A-Z as floating-point numbers, as [`Config::travel`]
 /// gives it (its first entry of a letter), and of each axis of [`AXES`] by its place there,
 /// found once for the checker: every move asks it of each axis it moves.
+#[derive(Clone)]
 pub(super) struct Travel([Option<(f64, f64)>; 26], [Option<(f64, f64)>; 9], u32);
 
 impl Travel {

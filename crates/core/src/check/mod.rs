@@ -578,6 +578,7 @@ impl Before {
 }
 
 /// A SINUMERIK's kinematic transformation in force, from where it was selected.
+#[derive(Clone)]
 struct Transformed {
     line: usize,
     name: String,
@@ -703,6 +704,7 @@ struct Implicit {
     increments: bool,
 }
 
+#[derive(Clone)]
 pub struct Checker {
     pub config: Arc<Config>,
     /// The rules this run reports (`select`, `ignore`), one flag per rule.
@@ -808,6 +810,17 @@ pub struct Checker {
     arrival_line: usize,
     arrival_letters: u32,
     arrival_words: Vec<(usize, String, Dec)>,
+    /// The runs where a forward conditional jump is taken ([`params::Taken`]): the checker
+    /// as it stood after each jump read whose target has not come yet (`jumps_pending`), and
+    /// those whose target has come and that read the blocks from there on beside this one
+    /// (`runs`, judged by the limits where they differ from the fall-through's values).
+    /// `after_block`: a block's end has work for them (a jump to note, runs to feed).
+    /// `run_target`: in a run, the line of its target (0 in the checker of the file).
+    jumps_pending: Vec<params::Taken>,
+    runs: Vec<params::Taken>,
+    jump_to_note: Option<(usize, Vec<u8>)>,
+    after_block: bool,
+    run_target: usize,
     /// The block count (`stats.blocks`) of the last block that leaves unconditionally (a
     /// `GOTO` outside an IF, M02/M30, M99): a block a jump may arrive at right after it is
     /// reached by no fall-through, and its values in file order are no values at all.
@@ -1182,6 +1195,11 @@ impl Checker {
             arrival_line: 0,
             arrival_letters: 0,
             arrival_words: Vec::new(),
+            jumps_pending: Vec::new(),
+            runs: Vec::new(),
+            jump_to_note: None,
+            after_block: false,
+            run_target: 0,
             cut_block: 0,
             quiet_d: Vec::new(),
             assigned_at: HashMap::new(),
@@ -1658,6 +1676,10 @@ impl Checker {
             b.line
         );
         self.drawn_block(b);
+        // (a forward jump to note, or runs where one is taken to feed: params.rs)
+        if self.after_block {
+            self.jump_runs(b);
+        }
     }
 
     /// How the program in hand has ended so far: the line of its M02/M30 (0: none yet), and
@@ -1901,6 +1923,8 @@ impl Checker {
                 // (a conditional jump forward changes no parameter where it is not taken)
                 if !self.jump_keeps_params(b) {
                     self.params_forgotten();
+                } else {
+                    self.jump_noted(b);
                 }
                 self.motion_unknown = true;
                 self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
@@ -2234,6 +2258,8 @@ impl Checker {
             // (a conditional jump forward changes no parameter where it is not taken)
             if calls || !self.jump_keeps_params(b) {
                 self.params_forgotten();
+            } else {
+                self.jump_noted(b);
             }
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;

@@ -39,6 +39,33 @@ pub(super) struct Arrival {
     then: HashMap<Vec<u8>, Dec>,
 }
 
+/// The most runs kept where a forward conditional jump is taken and its target has not come
+/// yet ([`Taken`]); past them the oldest is dropped (its target judged as before: TG141).
+const JUMPS_PENDING: usize = 4;
+
+/// The most jumps whose runs are judged at one target: where more arrive there, none is (the
+/// values they bring are TG141's, as before).
+const RUNS: usize = 3;
+
+/// The most blocks a run reads from its target on, beside the file's reading.
+const RUN_BLOCKS: usize = 64;
+
+/// A forward conditional jump taken (issue 32, review 44 F3): the checker as it stood after
+/// the jump's block -- the run where it is taken, which passes over the blocks between it and
+/// its target -- read from the target on beside the file's reading, whose values there are
+/// the fall-through's ([`Arrival`]). Where a parameter holds another value in it, a limit's
+/// finding at a word reading it is that run's (`X#1 is -900 where the jump of line 6 is
+/// taken`).
+#[derive(Clone)]
+pub(super) struct Taken {
+    /// The jump's line and its target (`N10`; a SINUMERIK label or block number), in capitals.
+    line: usize,
+    key: Vec<u8>,
+    /// The blocks it has read from its target on.
+    blocks: usize,
+    run: Box<Checker>,
+}
+
 /// SINUMERIK: a `D=R1` under G41/G42 quieted by the known value of what it reads: its line,
 /// column, word, compensation and the keys of the parameters and variables it reads.
 #[derive(Debug, Clone)]
@@ -233,8 +260,13 @@ impl Checker {
     /// The values known at block `b`, a jump's arrival (`n` its sequence number, 0 for a
     /// SINUMERIK's; `not_taken` the words that say where they hold), set aside with those of
     /// the last arrival that no block has set since.
-    fn arrive(&mut self, b: &BlockView<'_>, n: u64, not_taken: String) {
-        let known = std::mem::take(&mut self.params);
+    /// `key`: the target's name, as [`Taken`] keeps it. The runs where a jump to it is taken
+    /// start here ([`Checker::runs_started`]); the runs of an earlier target end.
+    fn arrive(&mut self, b: &BlockView<'_>, n: u64, not_taken: String, key: &[u8]) {
+        if self.run_target != 0 {
+            // a run at its own target: its values are the jump's, none set aside
+            return;
+        }
         // (a Custom Macro B block that ends an unreached part, reach.rs; elsewhere the block
         // right after one that always leaves: reached by jumps alone)
         let falls = if self.config.family == Family::MacroB {
@@ -242,6 +274,11 @@ impl Checker {
         } else {
             self.cut_block == 0 || self.stats.blocks != self.cut_block + 1
         };
+        self.runs.clear();
+        if !self.jumps_pending.is_empty() {
+            self.runs_started(b, key, falls);
+        }
+        let known = std::mem::take(&mut self.params);
         let mut then = match self.arrival.take() {
             Some(old) if falls => old.then,
             _ => HashMap::new(),
@@ -257,6 +294,211 @@ impl Checker {
             not_taken,
             then,
         });
+    }
+
+    /// A block of a forward conditional jump that keeps the parameters
+    /// ([`Checker::jump_keeps_params`]): the run where it is taken is kept for its target,
+    /// the checker as it stands at the block's end ([`Checker::jump_runs`]). Not in a run,
+    /// nor in a program whose findings are held (called.rs), nor for a block of two jumps,
+    /// nor where no parameter is known.
+    pub(super) fn jump_noted(&mut self, b: &BlockView<'_>) {
+        // (no parameter known here: the run where the jump is taken knows none at its target,
+        // and judges nothing the fall-through's reading does not)
+        if self.run_target != 0 || self.hold_from.is_some() || self.params.is_empty() {
+            return;
+        }
+        let mut target = None;
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Flow {
+                continue;
+            }
+            if self.config.family == Family::MacroB
+                && crate::statement::conditional_assignment(text).is_some()
+            {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            let key = if self.config.family == Family::MacroB {
+                super::targets::goto_words(&upper)
+                    .and_then(|(_, digits, _)| crate::text::digits_value(digits))
+                    .map(|n| format!("N{n}").into_bytes())
+            } else {
+                super::targets::sinumerik_jump(&upper).map(|(_, _, name)| name.to_vec())
+            };
+            if key.is_none() || target.is_some() {
+                return;
+            }
+            target = key;
+        }
+        if let Some(key) = target {
+            self.jump_to_note = Some((b.line, key));
+            self.after_block = true;
+        }
+    }
+
+    /// After a block (`after_block`): the runs where a jump is taken read it, and a jump read
+    /// in it keeps its run for its target.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn jump_runs(&mut self, b: &BlockView<'_>) {
+        if !self.runs.is_empty() {
+            self.runs_read(b);
+        }
+        if let Some((line, key)) = self.jump_to_note.take() {
+            if self.jumps_pending.len() >= JUMPS_PENDING {
+                self.jumps_pending.remove(0);
+            }
+            let run = self.run_of();
+            self.jumps_pending.push(Taken {
+                line,
+                key,
+                blocks: 0,
+                run,
+            });
+        }
+        self.after_block = !self.runs.is_empty();
+    }
+
+    /// The checker as it stands, for a run where a jump is taken: without what grows with the
+    /// program and a run does not read -- the findings, the path, the runs, the sequence
+    /// numbers and jumps read (a run's own jumps forget its parameters: it ends there), the
+    /// statistics' lists -- so that a copy costs the same at any length of program; nor the
+    /// verdicts kept of words' formats (32 KB), which a run asks afresh.
+    fn run_of(&mut self) -> Box<Checker> {
+        let found = std::mem::take(&mut self.found);
+        let path = std::mem::take(&mut self.path);
+        let pending = std::mem::take(&mut self.jumps_pending);
+        let runs = std::mem::take(&mut self.runs);
+        let targets = std::mem::take(&mut self.targets);
+        let goto_targets = std::mem::take(&mut self.goto_targets);
+        let goto_names = std::mem::take(&mut self.goto_names);
+        let clean = self.format_table.take_clean();
+        let stats = &mut self.stats;
+        let lists = (
+            std::mem::take(&mut stats.travel_not),
+            std::mem::take(&mut stats.moves_not_known),
+            std::mem::take(&mut stats.dwells_not_known),
+        );
+        let mut run = Box::new(self.clone());
+        let stats = &mut self.stats;
+        (
+            stats.travel_not,
+            stats.moves_not_known,
+            stats.dwells_not_known,
+        ) = lists;
+        self.found = found;
+        self.path = path;
+        self.jumps_pending = pending;
+        self.runs = runs;
+        self.targets = targets;
+        self.goto_targets = goto_targets;
+        self.goto_names = goto_names;
+        self.format_table.give_clean(clean);
+        // (its words' formats asked afresh, without the table of those kept: the same
+        // findings, Checker::keep_verdicts)
+        run.keep_verdicts(false);
+        run.record_path = false;
+        run.line_walks_of = (0, 0);
+        run.after_block = false;
+        run
+    }
+
+    /// The value parameter `key` holds in the file's reading: known, or the fall-through's
+    /// at the last arrival.
+    fn value_here(&self, key: &[u8]) -> Option<Dec> {
+        self.params
+            .get(key)
+            .or_else(|| self.arrival.as_ref()?.then.get(key))
+            .copied()
+    }
+
+    /// At block `b`, the target `key` (`falls`: a run falls through to it): the runs kept for
+    /// the jumps to it start, each whose values differ from the fall-through's (where they
+    /// agree, it is the same run); none where more than [`RUNS`] arrive.
+    fn runs_started(&mut self, b: &BlockView<'_>, key: &[u8], falls: bool) {
+        let pending = std::mem::take(&mut self.jumps_pending);
+        let (arriving, kept): (Vec<Taken>, Vec<Taken>) =
+            pending.into_iter().partition(|t| t.key == key);
+        self.jumps_pending = kept;
+        if arriving.len() > RUNS {
+            return;
+        }
+        for mut taken in arriving {
+            let differs = taken
+                .run
+                .params
+                .iter()
+                .any(|(k, &v)| !falls || self.value_here(k) != Some(v));
+            if differs {
+                taken.run.run_target = b.line;
+                self.runs.push(taken);
+            }
+        }
+        self.after_block |= !self.runs.is_empty();
+    }
+
+    /// The runs where a jump is taken read block `b`: a limit's finding of theirs at a word
+    /// read from parameters (`X#1`) is theirs to say where the file's reading has none at
+    /// it, naming the jump and the word's value. A run ends after [`RUN_BLOCKS`] blocks and
+    /// where its parameters hold the file's values.
+    fn runs_read(&mut self, b: &BlockView<'_>) {
+        let mut runs = std::mem::take(&mut self.runs);
+        runs.retain_mut(|taken| {
+            taken.run.block(b);
+            taken.blocks += 1;
+            for f in std::mem::take(&mut taken.run.found) {
+                self.run_finding(taken, b, f);
+            }
+            taken.blocks < RUN_BLOCKS
+                && taken
+                    .run
+                    .params
+                    .iter()
+                    .any(|(k, &v)| self.value_here(k) != Some(v))
+        });
+        self.runs = runs;
+    }
+
+    /// [`Checker::runs_read`]: finding `f` of the run `taken` in block `b`.
+    fn run_finding(&mut self, taken: &Taken, b: &BlockView<'_>, f: super::Finding) {
+        if !matches!(
+            f.rule,
+            Rule::TravelExceeded
+                | Rule::FeedTooHigh
+                | Rule::SpeedTooHigh
+                | Rule::ToolOutOfRange
+                | Rule::FeedClamped
+                | Rule::SpeedLimited
+        ) {
+            return;
+        }
+        let Some(i) = b
+            .words
+            .iter()
+            .position(|w| w.column == f.column && !w.expression.is_empty())
+        else {
+            return;
+        };
+        let Some(value) = taken.run.readable.get(i).copied().flatten() else {
+            return;
+        };
+        let said = self
+            .found
+            .iter()
+            .rev()
+            .take(64)
+            .any(|m| m.rule == f.rule && m.line == f.line && m.column == f.column);
+        if said {
+            return;
+        }
+        let message = format!(
+            "{}; {} is {value} where the jump of line {} is taken (read from the values \
+             the parameters hold there)",
+            f.message,
+            b.words[i].token(),
+            taken.line
+        );
+        self.report(f.rule, message, f.line, f.column);
     }
 
     /// [`Checker::jump_arrival`] on a SINUMERIK.
@@ -276,10 +518,12 @@ impl Checker {
         if let Some(&(_, _, text)) = label {
             let name = String::from_utf8_lossy(text);
             let name = name.trim().trim_end_matches(':');
-            self.arrive(b, 0, format!("where no jump arrives at the label {name}"));
+            let key = name.to_ascii_uppercase();
+            let not_taken = format!("where no jump arrives at the label {name}");
+            self.arrive(b, 0, not_taken, key.as_bytes());
         } else if let Some((name, jump)) = named {
-            let name = String::from_utf8_lossy(&name).into_owned();
-            self.arrive(b, 0, not_taken(jump, &name));
+            let text = String::from_utf8_lossy(&name).into_owned();
+            self.arrive(b, 0, not_taken(jump, &text), &name);
         }
         for &(_, kind, text) in b.statements {
             if kind != Kind::Flow {
@@ -327,7 +571,8 @@ impl Checker {
                     .goto_computed
                     .then_some((self.goto_computed_line, false)));
                 if let Some(jump) = jump {
-                    self.arrive(b, n, not_taken(jump, &format!("N{n}")));
+                    let name = format!("N{n}");
+                    self.arrive(b, n, not_taken(jump, &name), name.as_bytes());
                 }
             }
         }
@@ -550,6 +795,39 @@ impl Checker {
             .map(|&value| (value, arrival.n, arrival.line))
     }
 
+    /// The value a Custom Macro B assignment copies (`#3 = #1`, `#3 = -[#1]`): the parameter's
+    /// where it is known; where it holds the fall-through's value at the last arrival, that
+    /// value in `arrived` (the assigned parameter holds it there too: review 44 F3, the value
+    /// that reaches a word through an assignment at the target) and None.
+    fn copied(&self, expression: &[u8], arrived: &mut Option<Dec>) -> Option<Dec> {
+        let (negative, key) = self.parameter_key(expression)?;
+        let sign = |v: Dec| if negative { -v } else { v };
+        if let Some(&value) = self.params.get(&key) {
+            return Some(sign(value));
+        }
+        *arrived = self
+            .arrival
+            .as_ref()
+            .and_then(|a| a.then.get(&key))
+            .map(|&v| sign(v));
+        None
+    }
+
+    /// A SINUMERIK expression's value where what it reads is known or holds the
+    /// fall-through's value at the last arrival (one at least: else it is known, or not).
+    fn sinumerik_arrived(&self, expression: &[u8]) -> Option<Dec> {
+        let arrival = self.arrival.as_ref().filter(|a| !a.then.is_empty())?;
+        let tree = expr::sinumerik_tree(expression).ok()?;
+        let known = |p: &[u8]| {
+            let key = sinumerik_key(p);
+            self.params
+                .get(&key)
+                .or_else(|| arrival.then.get(&key))
+                .copied()
+        };
+        expr::sinumerik_value(&tree, expression, &known)
+    }
+
     /// A parameter set since the last jump arrival: its value there no longer matters.
     fn set_since_arrival(&mut self, key: &[u8]) {
         if let Some(arrival) = &mut self.arrival {
@@ -755,7 +1033,13 @@ impl Checker {
         } else {
             self.sinumerik_constant(rhs)
         };
+        let arrived = (value.is_none() && self.arrival.is_some())
+            .then(|| self.sinumerik_arrived(rhs))
+            .flatten();
         self.set_since_arrival(&key);
+        if let (Some(v), Some(arrival)) = (arrived, self.arrival.as_mut()) {
+            arrival.then.insert(key.clone(), v);
+        }
         self.assigned_at.insert(key.clone(), line);
         match value {
             Some(value) => {
@@ -775,7 +1059,14 @@ impl Checker {
             return;
         }
         for w in b.words {
+            // (a value read from the fall-through's at the last arrival: kept there)
+            let mut arrived = None;
             let (name, value) = match w.address {
+                // #3 = #1 (signed or in brackets): a copy of a known value
+                b'#' if !w.index.is_empty() && w.number.is_empty() && !w.expression.is_empty() => {
+                    let value = self.copied(w.expression, &mut arrived);
+                    (parameter_name(b'#', w.index), value)
+                }
                 b'#' if !w.index.is_empty() => {
                     let text = [w.sign, w.number].concat();
                     let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
@@ -787,7 +1078,11 @@ impl Checker {
                 // Sinumerik: R1=R2*SIN(30) is known where its operands are (r1= is R1)
                 b'R' | b'r' if !w.index.is_empty() && self.config.family == Family::Sinumerik => {
                     let value = if w.number.is_empty() {
-                        self.sinumerik_constant(w.expression)
+                        let value = self.sinumerik_constant(w.expression);
+                        if value.is_none() && self.arrival.is_some() {
+                            arrived = self.sinumerik_arrived(w.expression);
+                        }
+                        value
                     } else {
                         let text = [w.sign, w.number].concat();
                         std::str::from_utf8(&text).ok().and_then(Dec::parse)
@@ -821,6 +1116,9 @@ impl Checker {
             };
             if self.arrival.is_some() {
                 self.set_since_arrival(&name);
+                if let (Some(v), Some(arrival)) = (arrived, self.arrival.as_mut()) {
+                    arrival.then.insert(name.clone(), v);
+                }
             }
             if self.config.family == Family::Sinumerik {
                 self.assigned_at.insert(name.clone(), b.line);
@@ -1305,6 +1603,134 @@ mod tests {
             fired(config(), &program(&after), Rule::UnknownDInCompensation),
             []
         );
+    }
+
+    /// Review 44 F3: at a jump target, the run where a forward jump is taken arrives with
+    /// the values the parameters hold at the jump's line, and the limits judge it as they
+    /// judge the fall-through's (iso-mill's travel X -500..500, feed 999.9).
+    #[test]
+    fn a_forward_jump_taken_carries_the_values_of_its_line() {
+        use super::super::testing::findings;
+        let config = || of_family(Family::MacroB);
+        let travel = |body: &str| findings(config(), &program(body), Rule::TravelExceeded);
+        // the review's program: the jump of line 4 arrives at N10 with #1 = -700
+        let taken = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 X#1";
+        let found = travel(taken);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (6, 8));
+        assert!(
+            found[0].message.ends_with(
+                "; X#1 is -700 where the jump of line 4 is taken (read from the values the \
+                 parameters hold there)"
+            ),
+            "{}",
+            found[0].message
+        );
+        assert!(found[0]
+            .message
+            .starts_with("X spans 1100 (from -700 to 400)"));
+        // still TG141 at the word: in the file's reading its value is not known after it
+        assert_eq!(
+            fired(config(), &program(taken), Rule::NotEvaluated),
+            [(6, 8)]
+        );
+        // where the candidates agree, nothing changes: the fall-through's finding alone
+        let agree = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\nN10 G0 X#1";
+        let found = travel(agree);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0]
+            .message
+            .contains("where the jump of line 4 is not taken"));
+        let inside = "G0 X400. Y0\n#1=-50.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 X#1";
+        assert_eq!(travel(inside).len(), 0);
+        // the value reaching the target through an assignment there, both ways
+        let copied = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 #3=#1\nG0 X#3";
+        let found = travel(copied);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (7, 4));
+        assert!(
+            found[0]
+                .message
+                .contains("; X#3 is -700 where the jump of line 4 is taken"),
+            "{}",
+            found[0].message
+        );
+        let fallen = "G0 X400. Y0\n#1=0\nIF[#2EQ1]GOTO10\n#1=-700.\nN10 #3=-[#1]\nG0 X-#3";
+        let found = travel(fallen);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(
+            found[0]
+                .message
+                .contains("; X-#3 is -700 where the jump of line 4 is not taken"),
+            "{}",
+            found[0].message
+        );
+        // a copy of a known value is known, jump or not
+        assert_eq!(travel("G0 X400. Y0\n#1=-700.\n#3=#1\nG0 X#3").len(), 1);
+        // the run where the jump is taken passes over the blocks between: X600 is not in
+        // its span (0..600 where it falls through, -600..0 where it is taken: each fits)
+        let over = "G0 X0 Y0\n#1=-600.\nIF[#2EQ1]GOTO10\nG0 X600.\n#1=0\nN10 G0 X#1";
+        assert_eq!(travel(over).len(), 0, "{:?}", travel(over));
+        // two jumps bring it: said once; more than three: TG141 alone, as before
+        let two = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\nIF[#3EQ1]GOTO10\n#1=0\nN10 G0 X#1";
+        let found = travel(two);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0]
+            .message
+            .contains("where the jump of line 4 is taken"));
+        let four = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\nIF[#3EQ1]GOTO10\n\
+                    IF[#4EQ1]GOTO10\nIF[#5EQ1]GOTO10\n#1=0\nN10 G0 X#1";
+        assert_eq!(travel(four).len(), 0);
+        // a feed (FANUC: clamped, TG605) likewise
+        let feed = "#1=2000.\nIF[#2EQ1]GOTO10\n#1=100.\nN10 G1 X1. F#1";
+        let found = findings(config(), &program(feed), Rule::FeedClamped);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (5, 12));
+        assert!(found[0]
+            .message
+            .contains("F#1 is 2000 where the jump of line 3 is taken"));
+        // the run ends where its parameters hold the file's values: a later X#1 is the
+        // file's, known
+        let later = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 M5\n#1=0\nG0 X#1";
+        assert_eq!(travel(later).len(), 0);
+    }
+
+    /// Review 44 F3 on a SINUMERIK: `GOTOF` to a label or a block number, R parameters.
+    #[test]
+    fn a_sinumerik_jump_taken_carries_the_values_of_its_line() {
+        use super::super::testing::findings;
+        let config = || of_family(Family::Sinumerik);
+        let travel = |body: &str| findings(config(), &program(body), Rule::TravelExceeded);
+        let label = "G0 X400 Y0\nR1=-700\nIF R2==1 GOTOF LBL\nR1=0\nLBL:\nG0 X=R1";
+        let found = travel(label);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!(found[0].line, 7);
+        assert!(
+            found[0]
+                .message
+                .contains("; X=R1 is -700 where the jump of line 4 is taken"),
+            "{}",
+            found[0].message
+        );
+        let number = "G0 X400 Y0\nR1=-700\nIF R2==1 GOTOF N100\nR1=0\nN100 R3=R1*1\nG0 X=R3";
+        let found = travel(number);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(
+            found[0]
+                .message
+                .contains("; X=R3 is -700 where the jump of line 4 is taken"),
+            "{}",
+            found[0].message
+        );
+        let fallen = "G0 X400 Y0\nR1=0\nIF R2==1 GOTOF N100\nR1=-700\nN100 R3=R1\nG0 X=R3";
+        let found = travel(fallen);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0]
+            .message
+            .contains("where the jump of line 4 is not taken"));
+        // a jump back is no run of this kind: its block forgets the parameters
+        let back = "LBL:\nG0 X400 Y0\nR1=-700\nIF R2==1 GOTOB LBL\nR1=0\nG0 X=R1";
+        assert_eq!(travel(back).len(), 0);
     }
 
     #[test]

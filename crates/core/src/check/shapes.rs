@@ -105,7 +105,7 @@ impl Shape {
 /// The meanings of the shapes met, each in the place its hash gives it ([`Shape::slot`]), a
 /// later shape of the same place taking it over: a CAM program's few dozen shapes
 /// (`G1 X Y`, `G2 X Y I J`, each with and without points) mostly keep a place of their own.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct Shapes {
     kept: Box<[(Shape, Meanings); KEPT]>,
     /// The places that hold a shape (bit `slot % 64` of word `slot / 64`).

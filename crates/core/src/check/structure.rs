@@ -271,6 +271,9 @@ impl Checker {
         self.goto_computed = false;
         self.goto_names.clear();
         self.arrival = None;
+        self.jumps_pending.clear();
+        self.runs.clear();
+        self.after_block = false;
         self.motion_unknown = false;
         self.cycle_unmodelled = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);

@@ -43,7 +43,7 @@ pub(super) struct Target {
 }
 
 /// The sequence numbers of one program, and the blocks its words name.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(super) struct Targets {
     narrow: Vec<u64>,
     wide: std::collections::HashSet<u64>,
@@ -70,7 +70,7 @@ pub(super) struct Targets {
 /// again where the block before's was is found one step further on, so that nearly every block
 /// is one comparison, not a hash and a search of the table (a number out of both orders is
 /// searched in the list, then kept in the table).
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 struct BlockNumbers {
     /// Rising keys, each with its first and last line.
     rising: Vec<(u64, usize, usize)>,

@@ -455,6 +455,7 @@ impl Checker {
 /// The keys ([`Checker::addresses_key`]) of blocks whose word rules of places, letters and
 /// addresses found nothing, by a multiplicative hash (0: none): a block of a kept key is not
 /// asked them again.
+#[derive(Clone)]
 pub(super) struct CleanBlocks(Box<[u64]>);
 
 /// The places of [`CleanBlocks`].
