@@ -73,7 +73,7 @@ pub(super) struct Early {
 
 /// What a program read apart ([`Early`]) and a subprogram kept for its calls ([`Pending`])
 /// both hold: handed from the one to the other at its M99.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 struct Body {
     /// Its O number (or label), and its O word (`o<name> sub`) as written.
     number: Key,
@@ -116,7 +116,7 @@ struct Absolute {
 /// A program read apart given up ([`Checker::early_unhold`]): its number, name and O word's
 /// place, and whether it passed [`HOLD_ALL`] (findings of any rule) rather than
 /// [`HOLD_MAX`] (its limits' findings).
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct GivenUp {
     number: Key,
     name: String,
