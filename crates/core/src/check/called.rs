@@ -75,6 +75,10 @@ pub(super) struct Early {
     /// The least and the most value of each axis's G53 positions, in the units it is read
     /// in (review 43, A: judged at each call in that call's units).
     machine: Machine,
+    /// The same of those written before a G90/G91 of its own (run in the call's mode: under
+    /// a G91 call a G53 under G91, not judged; review 46, F3), and the line of the last.
+    inherited: Machine,
+    inherited_last: Option<usize>,
     /// The findings of its limits held (TG601, TG602, TG605, selected or not) and
     /// [`Checker::reports`] where the hold began: the bound on the hold counted as they come,
     /// whoever takes them and whatever the selection (review 43, finding B).
@@ -163,6 +167,9 @@ pub(super) struct Pending {
     mode_said: bool,
     /// Its G53 positions' least and most value on each axis.
     machine: Machine,
+    /// Those written before a G90/G91 of its own, and the line of the last ([`Early`]).
+    inherited: Machine,
+    inherited_last: Option<usize>,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -213,6 +220,8 @@ impl Checker {
             moved_first: None,
             absolute: Absolute::default(),
             machine: [[None; 2]; 9],
+            inherited: [[None; 2]; 9],
+            inherited_last: None,
             held: 0,
             reports_from: 0,
         }));
@@ -292,6 +301,8 @@ impl Checker {
             absolute: early.absolute,
             mode_said: false,
             machine: early.machine,
+            inherited: early.inherited,
+            inherited_last: early.inherited_last,
         });
     }
 
@@ -366,7 +377,15 @@ impl Checker {
             line,
             said: false,
         };
-        let [least, most] = &mut early.machine[i];
+        // (before a G90/G91 of its own: it runs in the mode of each call)
+        let inherited = self.machine.distance_codes == early.distance_codes;
+        let machine = if inherited {
+            early.inherited_last = Some(line);
+            &mut early.inherited
+        } else {
+            &mut early.machine
+        };
+        let [least, most] = &mut machine[i];
         if least.is_none_or(|m| at < m.at) {
             *least = Some(new);
         }
@@ -720,13 +739,23 @@ impl Checker {
             self.report(Rule::NotFollowed, message, line, column);
         }
         self.early_machine_judged(&mut p.machine, r, at, &under);
+        // (its G53 positions before a G90/G91 of its own run in the call's mode: under G91
+        // not judged, said once; review 46, F3)
+        let last = p.inherited_last.filter(|_| call.incremental);
+        let inherited =
+            |f: &Finding| f.message.contains("(G53)") && last.is_some_and(|last| f.line <= last);
+        if call.incremental && p.inherited_last.is_some() {
+            self.machine_incremental_call(p.name.clone(), token, at);
+        } else {
+            self.early_machine_judged(&mut p.inherited, r, at, &under);
+        }
         if r == 1.0 && !p.positions.is_empty() {
             let unshifted = shift.iter().all(|s| *s == 0.0);
             for mut f in std::mem::take(&mut p.positions) {
                 // (a position under a work offset is the body's work position plus the
                 // offset: not where it goes under a shift, or where its positions are not known)
                 let machine = f.message.contains("(G53)");
-                if !(machine || unshifted && known) {
+                if !(machine || unshifted && known) || inherited(&f) {
                     continue;
                 }
                 f.message = format!("{}{}", f.message, under(f.line));
@@ -739,7 +768,7 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
-                if !known && !f.message.contains("(G53)") {
+                if !known && !f.message.contains("(G53)") || inherited(&f) {
                     continue;
                 }
                 f.message = format!(
@@ -776,6 +805,32 @@ impl Checker {
             let under = under(feed.line);
             self.feed_over(feed.word, call.feed_factor, feed.mode, at, &under);
         }
+    }
+
+    /// A call made under G91 of a body that writes a G53 before a G90/G91 of its own: that
+    /// G53 runs under the G91, and is not judged ([`Checker::machine_incremental`]), said
+    /// once per file.
+    #[cold]
+    #[inline(never)]
+    fn machine_incremental_call(
+        &mut self,
+        name: String,
+        token: &str,
+        (line, column): (usize, usize),
+    ) {
+        if self.g53_incremental_noted || self.config.family == crate::lex::Family::LinuxCnc {
+            return;
+        }
+        self.g53_incremental_noted = true;
+        let message = format!(
+            "{token} runs {name} under the G91 (incremental) in force here (G90/G91 are modal \
+             and a call changes none), and {name} writes a G53 before a G90 or G91 of its own: \
+             no page at hand says whether the control moves to the machine position, by the \
+             increment or not at all under G91 (a 9/Series ignores the block, a Mitsubishi \
+             M700V moves by the increment), so those positions are not compared with the \
+             travel (TG601; said once: the same for any later G53 under G91 of this file)"
+        );
+        self.report(Rule::NotFollowed, message, line, column);
     }
 
     /// A subprogram's G53 positions at a call whose units are `r` times those it was read in
@@ -1183,6 +1238,56 @@ mod tests {
         assert_eq!(limits(metric.clone(), &shifted), [(8, 5)]);
         // never called: as read, at the end
         assert_eq!(limits(metric, &g53.replace("M98 P2\n", "")), [(3, 8)]);
+    }
+
+    /// Review 46, F3: a body's G53 written before a G90/G91 of its own runs in the call's
+    /// mode; no page at hand says what a FANUC, Haas or SINUMERIK does with G53 under G91 (a
+    /// 9/Series ignores the block, a Mitsubishi M700V moves by the increment), so at a G91
+    /// call it is not judged, one TG140 says so; at a G90 call, and where the body writes its
+    /// own G90 first, it is judged as before.
+    #[test]
+    fn a_body_s_g53_under_a_g91_call_is_not_judged() {
+        let g53 = "%\nO0002\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nG91\n\
+                   M98 P2\nG90\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), g53), []);
+        let notes: Vec<_> = findings(metric.clone(), g53, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| {
+                f.message
+                    .contains("writes a G53 before a G90 or G91 of its own")
+            })
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(notes, [(9, 5)]);
+        // a G90 call: judged, said at the call
+        let absolute = g53.replace("G91\nM98 P2", "G90\nM98 P2");
+        assert_eq!(limits(metric.clone(), &absolute), [(9, 5)]);
+        // the body's own G90 before its G53: judged whatever the call's mode
+        let own = g53.replace("G53 G0 X-800.", "G90\nG53 G0 X-800.");
+        assert_eq!(limits(metric.clone(), &own), [(10, 5)]);
+        // a later G53 after the body's own G90 is judged; the one before it is not
+        let both = g53.replace("G53 G0 X-800.", "G53 G0 X-790.\nG90\nG53 G0 X-770.");
+        let said = findings(metric.clone(), &both, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].message.contains("X goes to -770"),
+            "{}",
+            said[0].message
+        );
+        // LinuxCNC refuses the block (its own rule): no note, no position judged
+        let lc = "o<s> sub\nG53 G0 X-800.\no<s> endsub\nG21 G90\nG0 X0\nG91\no<s> call\nG90\nM2\n";
+        let mut linuxcnc = mill(Units::Metric);
+        linuxcnc.family = crate::lex::Family::LinuxCnc;
+        let dialect = dialect(crate::lex::Family::LinuxCnc);
+        let (_, found) = run(linuxcnc, &dialect, lc);
+        assert!(
+            found.iter().all(
+                |f| f.rule != Rule::TravelExceeded && f.rule != Rule::NotFollowed
+                    || !f.message.contains("G53")
+            ),
+            "{found:?}"
+        );
     }
 
     /// Review 42, finding 7: a body's own G52 replaces the call's local shift (FANUC 0i-F,

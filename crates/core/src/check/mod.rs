@@ -893,6 +893,11 @@ pub struct Checker {
     /// Whether the note of a lathe cycle whose positions are not all known (TG140) was said
     /// (once per file: `Checker::cycle_walked`).
     cycle_noted: bool,
+    /// Whether the notes (TG140) of a G53 under G91 and of a lathe block writing both X and U
+    /// (or Z and W) were said (once per file each: `Checker::machine_incremental`,
+    /// `Checker::uw_beside_xz`).
+    g53_incremental_noted: bool,
+    uw_beside_noted: bool,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1219,6 +1224,8 @@ impl Checker {
             offsets_lost: false,
             frames: limits::Frames::default(),
             cycle_noted: false,
+            g53_incremental_noted: false,
+            uw_beside_noted: false,
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
