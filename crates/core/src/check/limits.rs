@@ -1718,7 +1718,11 @@ impl Checker {
         let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
-            if !cycle && (places & 0b1001 == 0b1001 || places & 0b10_0100 == 0b10_0100) {
+            // (a block whose words are a code's data, `G65 P9732 W1. Z1.`, moves nothing)
+            if !cycle
+                && (places & 0b1001 == 0b1001 || places & 0b10_0100 == 0b10_0100)
+                && self.machine.taken().is_none()
+            {
                 self.uw_beside_xz(line, facts);
             }
             onto_xz = uw_onto_xz(if cycle {
@@ -3035,6 +3039,15 @@ mod tests {
             assert_eq!(at(lathe.clone(), zw, Rule::TravelExceeded), [], "{name}");
             let notes = findings(lathe.clone(), &program(zw), Rule::NotFollowed);
             assert_eq!(notes.len(), 1, "{name}: {notes:?}");
+            // nor a macro call's arguments (FANUC, Haas: G65 P9732 W1. Z1.)
+            if name != "okuma" {
+                let g65 = "G00 X0 Z0\nG65 P9732 W1. Z1.\n";
+                let notes = findings(lathe.clone(), &program(g65), Rule::NotFollowed);
+                assert!(
+                    notes.iter().all(|f| !f.message.contains("writes X and U")),
+                    "{name}: {notes:?}"
+                );
+            }
             // X and W (two axes) are no such block
             let xw = "G00 X0 Z0\nG00 X100. W-50.\n";
             assert_eq!(findings(lathe.clone(), &program(xw), Rule::NotFollowed), []);
