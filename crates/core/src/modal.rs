@@ -1167,10 +1167,7 @@ impl ModalMachine {
             }
             // a lathe's U and W there are X's and Z's incremental commands (`G28 U0 W0`: X
             // and Z to the reference point): X and Z are not known after it either
-            if (self.settings.fanuc_lathe || self.settings.lap)
-                && self.settings.g_system == GCodeSystem::A
-                && (v.given | v.unknown) & (bit(b'U') | bit(b'W')) != 0
-            {
+            if self.settings.fanuc_lathe || self.settings.lap {
                 self.forget_uw_axes(v);
             }
             return;
@@ -1236,15 +1233,8 @@ impl ModalMachine {
                     s.unknown |= bit(on);
                     continue;
                 }
-                if v.get(on).is_some() || v.unknown & bit(on) != 0 {
-                    // X and U (Z and W) in one block: no page at hand says which the control
-                    // takes, or whether it alarms (docs/dialects.md): where the axis stands is
-                    // not known until an absolute position gives it (review 44, F7: X was
-                    // taken and U added to it)
-                    s.position[j] = None;
-                    s.unknown |= bit(on);
-                    continue;
-                }
+                // (X and U, Z and W, in one block: X and Z not known after it,
+                // crate::check's `uw_beside_xz`; a U from where X is not known: not known)
                 if s.unknown & bit(on) == 0 {
                     s.position[j] = s.position[j]
                         .unwrap_or(Dec::ZERO)
@@ -1277,16 +1267,17 @@ impl ModalMachine {
     }
 
     /// The X and Z of a lathe's U and W written in a block that takes the tool where the
-    /// program's coordinates do not say (G28, G30, G53, a skip): not known after it.
+    /// program's coordinates do not say (G28, G30, G53, a skip): not known after it (G code
+    /// system A; `G28 U0 W0` took X and Z back to where they were).
     #[cold]
     #[inline(never)]
     fn forget_uw_axes(&mut self, v: &BlockValues) {
+        if self.settings.g_system != GCodeSystem::A {
+            return;
+        }
         for (uw, on) in [(b'U', b'X'), (b'W', b'Z')] {
             if (v.given | v.unknown) & bit(uw) != 0 {
-                if let Some(j) = axis_index(on) {
-                    self.state.position[j] = None;
-                    self.state.unknown |= bit(on);
-                }
+                self.forget_axis(on);
             }
         }
     }

@@ -818,10 +818,12 @@ impl Checker {
         token: &str,
         (line, column): (usize, usize),
     ) {
-        if self.g53_incremental_noted || self.config.family == crate::lex::Family::LinuxCnc {
+        if self.noted & super::limits::G53_INCREMENTAL_NOTED != 0
+            || self.config.family == crate::lex::Family::LinuxCnc
+        {
             return;
         }
-        self.g53_incremental_noted = true;
+        self.noted |= super::limits::G53_INCREMENTAL_NOTED;
         let message = format!(
             "{token} runs {name} under the G91 (incremental) in force here (G90/G91 are modal \
              and a call changes none), and {name} writes a G53 before a G90 or G91 of its own: \

@@ -1718,12 +1718,8 @@ impl Checker {
         let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
-            // (a block whose words are a code's data, `G65 P9732 W1. Z1.`, moves nothing)
-            if !cycle
-                && (places & 0b1001 == 0b1001 || places & 0b10_0100 == 0b10_0100)
-                && self.machine.taken().is_none()
-            {
-                self.uw_beside_xz(line, facts);
+            if !cycle {
+                self.uw_beside_xz(line, facts, places);
             }
             onto_xz = uw_onto_xz(if cycle {
                 places | 1 << 0 | 1 << 2
@@ -1860,6 +1856,12 @@ impl Checker {
     }
 }
 
+/// The bits of [`Checker`]'s once-a-file notes: a lathe cycle not all known, a G53 under G91,
+/// X and U (Z and W) in one lathe block.
+pub(super) const CYCLE_NOTED: u8 = 1;
+pub(super) const G53_INCREMENTAL_NOTED: u8 = 2;
+pub(super) const UW_BESIDE_NOTED: u8 = 4;
+
 /// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
 const UW_PLACES: u32 = 1 << 3 | 1 << 5;
 
@@ -1927,6 +1929,12 @@ impl Checker {
         // (an Okuma mill's G53 cancels the tool length offset: work_offset)
         let machine =
             self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
+        if machine && self.machine.state.incremental {
+            // G53 under G91: no position judged (docs/dialects.md, "G53 under G91"); its
+            // positions go to no span either way
+            self.machine_incremental(line, facts);
+            return;
+        }
         // the axes whose positions go to the spans below through a frame, or not at all
         // (none where no frame is on: most programs)
         let framed = if self.frames.on == 0 {
@@ -1972,11 +1980,6 @@ impl Checker {
                 let Some(value) = self.values.get(axis) else {
                     continue;
                 };
-                if self.machine.state.incremental {
-                    // G53 under G91: no position judged (docs/dialects.md, "G53 under G91")
-                    self.machine_incremental(line, facts);
-                    continue;
-                }
                 let at = value.to_f64() * factor;
                 if !(low..=high).contains(&at) {
                     self.machine_outside(axis, value, at, (low, high), (line, col(axis)));
@@ -2076,10 +2079,10 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn machine_incremental(&mut self, line: usize, facts: &Facts<'_>) {
-        if self.g53_incremental_noted || self.config.family == Family::LinuxCnc {
+        if self.noted & G53_INCREMENTAL_NOTED != 0 || self.config.family == Family::LinuxCnc {
             return;
         }
-        self.g53_incremental_noted = true;
+        self.noted |= G53_INCREMENTAL_NOTED;
         let column = facts.words.first().map_or(1, |w| w.column);
         let message = "G53 under G91 (incremental): no page at hand says whether the control \
                        moves to the machine position, by the increment or not at all (a \
@@ -2096,11 +2099,21 @@ impl Checker {
     /// (review 44, F7: `X100. U520.` was judged at X620, neither reading).
     #[cold]
     #[inline(never)]
-    fn uw_beside_xz(&mut self, line: usize, facts: &Facts<'_>) {
-        if self.uw_beside_noted {
+    fn uw_beside_xz(&mut self, line: usize, facts: &Facts<'_>, places: u32) {
+        // (a block whose words are a code's data, `G65 P9732 W1. Z1.`, moves nothing)
+        let both = |pair: u32| places & pair == pair;
+        if !(both(0b1001) || both(0b10_0100)) || self.machine.taken().is_some() {
             return;
         }
-        self.uw_beside_noted = true;
+        for (pair, axis) in [(0b1001, b'X'), (0b10_0100, b'Z')] {
+            if both(pair) {
+                self.machine.forget_axis(axis);
+            }
+        }
+        if self.noted & UW_BESIDE_NOTED != 0 {
+            return;
+        }
+        self.noted |= UW_BESIDE_NOTED;
         let column = facts.words.first().map_or(1, |w| w.column);
         let message = "a block writes X and U (or Z and W), the absolute and the incremental \
                        command of one axis: no page at hand says which the control takes, or \
@@ -2133,8 +2146,8 @@ impl Checker {
                 self.machine.swap_cycle_corner();
             }
         }
-        if flags & CYCLE_UNSURE != 0 && !self.cycle_noted {
-            self.cycle_noted = true;
+        if flags & CYCLE_UNSURE != 0 && self.noted & CYCLE_NOTED == 0 {
+            self.noted |= CYCLE_NOTED;
             let message = format!(
                 "a lathe cycle's positions are not compared with the travel (TG601): {}; \
                  the check compares the end points and taper corners it can work out (said \
