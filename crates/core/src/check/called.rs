@@ -672,8 +672,10 @@ impl Checker {
     /// at its first call where the units are those it was read in or larger, and its G53
     /// positions' least and most judged in the call's units ([`Checker::early_machine_judged`]).
     /// A body whose first position comes before a G90/G91 of its own, called in the other
-    /// mode, has positions not known there: one TG140 says so, its feed and G53 positions
-    /// judged all the same (review 43, finding D).
+    /// mode, has positions not known there: one TG140 says so, its feed judged all the same
+    /// (review 43, finding D), and its G53 positions but for those before its own G90/G91 at
+    /// a G91 call (a G53 under G91, not judged: [`Checker::machine_incremental_call`]; review
+    /// 46, F3).
     fn early_judged(&mut self, p: &mut Pending, call: &Call, token: &str, at: (usize, usize)) {
         let r = call.factor / p.factor;
         // (the units the call runs it in, where they are not those it was read in: the

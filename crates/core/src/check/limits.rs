@@ -2072,7 +2072,7 @@ impl Checker {
 
     /// A position in machine coordinates (G53) written under G91 (in force, or in its
     /// block): not compared with the travel. LinuxCNC refuses the block ("Cannot use g53
-    /// incremental", TG-LinuxCncRefuses says it); for the other families no page at hand
+    /// incremental", TG412 says it); for the other families no page at hand
     /// says what their control does (a Rockwell 9/Series ignores the block's G53 and axis
     /// words, a Mitsubishi M700V moves by the increment: docs/dialects.md), so a TG140 note
     /// says so once per file rather than a position judged as absolute (review 46, F3).
