@@ -474,6 +474,47 @@ def test_review_44_a_lathe_s_repetitive_cycles_tapers_and_okuma_threads_reach_th
         == [(4, 1, "TG140")]
 
 
+def test_g53_under_g91_and_x_with_u_in_one_block_are_not_judged(tmp_path: Path) -> None:
+    """Review 46, F3; review 44, F7 (lathe48): no page at hand says what a FANUC, Haas or
+    SINUMERIK does with G53 under G91 (a 9/Series ignores the block, a Mitsubishi M700V moves
+    by the increment), nor which of X and U (Z and W) in one lathe block the control takes:
+    neither is judged as a position, one TG140 a file says so; under G90, and with X alone, the
+    same positions are judged. fanuc-mill X -762 to 762; fanuc-lathe X -10 to 500."""
+    def found(name: str, profile: str, program: str) -> list[tuple[int, int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", profile, "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["column"], f["rule"], f["message"])
+                for f in map(json.loads, out.splitlines())
+                if "reads the program in file order" not in f["message"]]
+
+    inline = "%\nO1000\nG21 G91 G54\nG53 G0 X-800.\nM30\n%\n"
+    got = found("inl53.nc", "fanuc-mill", inline)
+    assert [f[:3] for f in got] == [(4, 1, "TG140")]
+    assert got[0][3].startswith("G53 under G91")
+    assert [f[:3] for f in found("abs53.nc", "fanuc-mill", inline.replace("G91", "G90"))] \
+        == [(4, 8, "TG601")]
+    # a body's G53 called under G91 (review 46's sub53g91.nc); under G90 judged at the call
+    body = ("%\nO0002\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nG91\nM98 P2\n"
+            "G90\nM30\n%\n")
+    got = found("sub53g91.nc", "fanuc-mill", body)
+    assert [f[:3] for f in got] == [(9, 5, "TG140")]
+    assert "writes a G53 before a G90 or G91 of its own" in got[0][3]
+    assert [f[:3] for f in found("sub53g90.nc", "fanuc-mill",
+                                 body.replace("G91\nM98", "G90\nM98"))] == [(9, 5, "TG601")]
+    # X and U in one block: not judged (it was X620); X then U alone is
+    xu = "%\nO1000\nG0 X0 Z0\nG0 X100. U520.\nM30\n%\n"
+    got = found("xu.nc", "fanuc-lathe", xu)
+    assert [f[:3] for f in got] == [(4, 1, "TG140")]
+    assert "writes X and U" in got[0][3]
+    assert [f[:3] for f in found("u.nc", "fanuc-lathe", xu.replace("X100. U520.", "U520."))] \
+        == [(4, 4, "TG601")]
+    # U from a position not known (after G28 U0 W0): not judged
+    g28 = "%\nO1000\nG0 X0 Z0\nG28 U0 W0\nG0 U520.\nM30\n%\n"
+    assert found("g28.nc", "fanuc-lathe", g28) == []
+
+
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(
         tmp_path: Path) -> None:
     """Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is

@@ -1166,6 +1166,11 @@ impl ModalMachine {
                     s.unknown |= bit(axis);
                 }
             }
+            // a lathe's U and W there are X's and Z's incremental commands (`G28 U0 W0`: X
+            // and Z to the reference point): X and Z are not known after it either
+            if self.settings.fanuc_lathe || self.settings.lap {
+                self.forget_uw_axes(v);
+            }
             return;
         }
         if s.cycle.is_some() {
@@ -1229,6 +1234,8 @@ impl ModalMachine {
                     s.unknown |= bit(on);
                     continue;
                 }
+                // (X and U, Z and W, in one block: X and Z not known after it,
+                // crate::check's `uw_beside_xz`; a U from where X is not known: not known)
                 if s.unknown & bit(on) == 0 {
                     s.position[j] = s.position[j]
                         .unwrap_or(Dec::ZERO)
@@ -1257,6 +1264,22 @@ impl ModalMachine {
                     .checked_add(value)
                     .or(s.position[i])
             };
+        }
+    }
+
+    /// The X and Z of a lathe's U and W written in a block that takes the tool where the
+    /// program's coordinates do not say (G28, G30, G53, a skip): not known after it (G code
+    /// system A; `G28 U0 W0` took X and Z back to where they were).
+    #[cold]
+    #[inline(never)]
+    fn forget_uw_axes(&mut self, v: &BlockValues) {
+        if self.settings.g_system != GCodeSystem::A {
+            return;
+        }
+        for (uw, on) in [(b'U', b'X'), (b'W', b'Z')] {
+            if (v.given | v.unknown) & bit(uw) != 0 {
+                self.forget_axis(on);
+            }
         }
     }
 

@@ -97,6 +97,10 @@ struct Body {
     /// The least and the most value of each axis's G53 positions, in the units it is read
     /// in (review 43, A: judged at each call in that call's units).
     machine: Machine,
+    /// The same of those written before a G90/G91 of its own (run in the call's mode: under
+    /// a G91 call a G53 under G91, not judged; review 46, F3), and the line of the last.
+    inherited: Machine,
+    inherited_last: Option<usize>,
 }
 
 /// The positions of a body that moved before writing its own G90/G91, from the G90 it then
@@ -233,6 +237,8 @@ impl Checker {
                 absolute: Absolute::default(),
                 unfollowed: None,
                 machine: [[None; 2]; 9],
+                inherited: [[None; 2]; 9],
+                inherited_last: None,
             },
             stash,
             given_before: None,
@@ -392,7 +398,15 @@ impl Checker {
             line,
             said: false,
         };
-        let [least, most] = &mut early.body.machine[i];
+        // (before a G90/G91 of its own: it runs in the mode of each call)
+        let inherited = self.machine.distance_codes == early.distance_codes;
+        let machine = if inherited {
+            early.body.inherited_last = Some(line);
+            &mut early.body.inherited
+        } else {
+            &mut early.body.machine
+        };
+        let [least, most] = &mut machine[i];
         if least.is_none_or(|m| at < m.at) {
             *least = Some(new);
         }
@@ -791,8 +805,10 @@ impl Checker {
     /// at its first call where the units are those it was read in or larger, and its G53
     /// positions' least and most judged in the call's units ([`Checker::early_machine_judged`]).
     /// A body whose first position comes before a G90/G91 of its own, called in the other
-    /// mode, has positions not known there: one TG140 says so, its feed and G53 positions
-    /// judged all the same (review 43, finding D).
+    /// mode, has positions not known there: one TG140 says so, its feed judged all the same
+    /// (review 43, finding D), and its G53 positions but for those before its own G90/G91 at
+    /// a G91 call (a G53 under G91, not judged: [`Checker::machine_incremental_call`]; review
+    /// 46, F3).
     fn early_judged(&mut self, p: &mut Pending, call: &Call, token: &str, at: (usize, usize)) {
         let r = call.factor / p.factor;
         // (the units the call runs it in, where they are not those it was read in: the
@@ -900,6 +916,16 @@ impl Checker {
             self.report(Rule::NotFollowed, message, line, column);
         }
         self.early_machine_judged(&mut p.body.machine, r, at, &under);
+        // (its G53 positions before a G90/G91 of its own run in the call's mode: under G91
+        // not judged, said once; review 46, F3)
+        let last = p.body.inherited_last.filter(|_| call.incremental);
+        let inherited =
+            |f: &Finding| f.message.contains("(G53)") && last.is_some_and(|last| f.line <= last);
+        if call.incremental && p.body.inherited_last.is_some() {
+            self.machine_incremental_call(p.body.name.clone(), token, at);
+        } else {
+            self.early_machine_judged(&mut p.body.inherited, r, at, &under);
+        }
         if r == 1.0 && !p.positions.is_empty() {
             let unshifted = shift.iter().all(|s| *s == 0.0);
             // (read from the reset state with no units code written: at a call after one,
@@ -912,7 +938,7 @@ impl Checker {
                 // (a position under a work offset is the body's work position plus the
                 // offset: not where it goes under a shift, or where its positions are not known)
                 let machine = f.message.contains("(G53)");
-                if !(machine || unshifted && known) {
+                if !(machine || unshifted && known) || inherited(&f) {
                     continue;
                 }
                 f.message = format!("{}{}", f.message, under(f.line));
@@ -925,7 +951,7 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
-                if !known && !f.message.contains("(G53)") {
+                if !known && !f.message.contains("(G53)") || inherited(&f) {
                     continue;
                 }
                 f.message = format!(
@@ -962,6 +988,34 @@ impl Checker {
             let under = under(feed.line);
             self.feed_over(feed.word, call.feed_factor, feed.mode, at, &under);
         }
+    }
+
+    /// A call made under G91 of a body that writes a G53 before a G90/G91 of its own: that
+    /// G53 runs under the G91, and is not judged ([`Checker::machine_incremental`]), said
+    /// once per file.
+    #[cold]
+    #[inline(never)]
+    fn machine_incremental_call(
+        &mut self,
+        name: String,
+        token: &str,
+        (line, column): (usize, usize),
+    ) {
+        if self.noted & super::limits::G53_INCREMENTAL_NOTED != 0
+            || self.config.family == crate::lex::Family::LinuxCnc
+        {
+            return;
+        }
+        self.noted |= super::limits::G53_INCREMENTAL_NOTED;
+        let message = format!(
+            "{token} runs {name} under the G91 (incremental) in force here (G90/G91 are modal \
+             and a call changes none), and {name} writes a G53 before a G90 or G91 of its own: \
+             no page at hand says whether the control moves to the machine position, by the \
+             increment or not at all under G91 (a 9/Series ignores the block, a Mitsubishi \
+             M700V moves by the increment), so those positions are not compared with the \
+             travel (TG601; said once: the same for any later G53 under G91 of this file)"
+        );
+        self.report(Rule::NotFollowed, message, line, column);
     }
 
     /// A subprogram's G53 positions at a call whose units are `r` times those it was read in
@@ -1369,6 +1423,56 @@ mod tests {
         assert_eq!(limits(metric.clone(), &shifted), [(8, 5)]);
         // never called: as read, at the end
         assert_eq!(limits(metric, &g53.replace("M98 P2\n", "")), [(3, 8)]);
+    }
+
+    /// Review 46, F3: a body's G53 written before a G90/G91 of its own runs in the call's
+    /// mode; no page at hand says what a FANUC, Haas or SINUMERIK does with G53 under G91 (a
+    /// 9/Series ignores the block, a Mitsubishi M700V moves by the increment), so at a G91
+    /// call it is not judged, one TG140 says so; at a G90 call, and where the body writes its
+    /// own G90 first, it is judged as before.
+    #[test]
+    fn a_body_s_g53_under_a_g91_call_is_not_judged() {
+        let g53 = "%\nO0002\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nG91\n\
+                   M98 P2\nG90\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), g53), []);
+        let notes: Vec<_> = findings(metric.clone(), g53, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| {
+                f.message
+                    .contains("writes a G53 before a G90 or G91 of its own")
+            })
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(notes, [(9, 5)]);
+        // a G90 call: judged, said at the call
+        let absolute = g53.replace("G91\nM98 P2", "G90\nM98 P2");
+        assert_eq!(limits(metric.clone(), &absolute), [(9, 5)]);
+        // the body's own G90 before its G53: judged whatever the call's mode
+        let own = g53.replace("G53 G0 X-800.", "G90\nG53 G0 X-800.");
+        assert_eq!(limits(metric.clone(), &own), [(10, 5)]);
+        // a later G53 after the body's own G90 is judged; the one before it is not
+        let both = g53.replace("G53 G0 X-800.", "G53 G0 X-790.\nG90\nG53 G0 X-770.");
+        let said = findings(metric.clone(), &both, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].message.contains("X goes to -770"),
+            "{}",
+            said[0].message
+        );
+        // LinuxCNC refuses the block (its own rule): no note, no position judged
+        let lc = "o<s> sub\nG53 G0 X-800.\no<s> endsub\nG21 G90\nG0 X0\nG91\no<s> call\nG90\nM2\n";
+        let mut linuxcnc = mill(Units::Metric);
+        linuxcnc.family = crate::lex::Family::LinuxCnc;
+        let dialect = dialect(crate::lex::Family::LinuxCnc);
+        let (_, found) = run(linuxcnc, &dialect, lc);
+        assert!(
+            found.iter().all(
+                |f| f.rule != Rule::TravelExceeded && f.rule != Rule::NotFollowed
+                    || !f.message.contains("G53")
+            ),
+            "{found:?}"
+        );
     }
 
     /// Review 42, finding 7: a body's own G52 replaces the call's local shift (FANUC 0i-F,

@@ -1719,6 +1719,9 @@ impl Checker {
         let uw = cycle || (places & UW_PLACES != 0 && self.machine.uw_moved_xz());
         let onto_xz;
         if uw {
+            if !cycle {
+                self.uw_beside_xz(line, facts, places);
+            }
             onto_xz = uw_onto_xz(if cycle {
                 places | 1 << 0 | 1 << 2
             } else {
@@ -1854,6 +1857,12 @@ impl Checker {
     }
 }
 
+/// The bits of [`Checker`]'s once-a-file notes: a lathe cycle not all known, a G53 under G91,
+/// X and U (Z and W) in one lathe block.
+pub(super) const CYCLE_NOTED: u8 = 1;
+pub(super) const G53_INCREMENTAL_NOTED: u8 = 2;
+pub(super) const UW_BESIDE_NOTED: u8 = 4;
+
 /// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
 const UW_PLACES: u32 = 1 << 3 | 1 << 5;
 
@@ -1921,6 +1930,12 @@ impl Checker {
         // (an Okuma mill's G53 cancels the tool length offset: work_offset)
         let machine =
             self.values.has_g(53) && (self.config.family != Family::Okuma || self.config.modal.lap);
+        if machine && self.machine.state.incremental {
+            // G53 under G91: no position judged (docs/dialects.md, "G53 under G91"); its
+            // positions go to no span either way
+            self.machine_incremental(line, facts);
+            return;
+        }
         // the axes whose positions go to the spans below through a frame, or not at all
         // (none where no frame is on: most programs)
         let framed = if self.frames.on == 0 {
@@ -2056,6 +2071,60 @@ impl Checker {
         }
     }
 
+    /// A position in machine coordinates (G53) written under G91 (in force, or in its
+    /// block): not compared with the travel. LinuxCNC refuses the block ("Cannot use g53
+    /// incremental", TG412 says it); for the other families no page at hand
+    /// says what their control does (a Rockwell 9/Series ignores the block's G53 and axis
+    /// words, a Mitsubishi M700V moves by the increment: docs/dialects.md), so a TG140 note
+    /// says so once per file rather than a position judged as absolute (review 46, F3).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn machine_incremental(&mut self, line: usize, facts: &Facts<'_>) {
+        if self.noted & G53_INCREMENTAL_NOTED != 0 || self.config.family == Family::LinuxCnc {
+            return;
+        }
+        self.noted |= G53_INCREMENTAL_NOTED;
+        let column = facts.words.first().map_or(1, |w| w.column);
+        let message = "G53 under G91 (incremental): no page at hand says whether the control \
+                       moves to the machine position, by the increment or not at all (a \
+                       9/Series ignores the block, a Mitsubishi M700V moves by the increment), \
+                       so its positions are not compared with the travel (TG601; said once: \
+                       the same for any later such block of this file)"
+            .to_string();
+        self.report(Rule::NotFollowed, message, line, column);
+    }
+
+    /// A lathe block that writes X and U (or Z and W) where U and W move X and Z: no page
+    /// at hand says which the control takes, or whether it alarms, so the axis's position is
+    /// not known until an absolute one ([`crate::modal::ModalMachine`]), said once per file
+    /// (review 44, F7: `X100. U520.` was judged at X620, neither reading).
+    #[cold]
+    #[inline(never)]
+    fn uw_beside_xz(&mut self, line: usize, facts: &Facts<'_>, places: u32) {
+        // (a block whose words are a code's data, `G65 P9732 W1. Z1.`, moves nothing)
+        let both = |pair: u32| places & pair == pair;
+        if !(both(0b1001) || both(0b10_0100)) || self.machine.taken().is_some() {
+            return;
+        }
+        for (pair, axis) in [(0b1001, b'X'), (0b10_0100, b'Z')] {
+            if both(pair) {
+                self.machine.forget_axis(axis);
+            }
+        }
+        if self.noted & UW_BESIDE_NOTED != 0 {
+            return;
+        }
+        self.noted |= UW_BESIDE_NOTED;
+        let column = facts.words.first().map_or(1, |w| w.column);
+        let message = "a block writes X and U (or Z and W), the absolute and the incremental \
+                       command of one axis: no page at hand says which the control takes, or \
+                       whether it alarms, so where the axis stands is not known until an \
+                       absolute position gives it, and is not compared with the travel (TG601; \
+                       said once: the same for any later such block of this file)"
+            .to_string();
+        self.report(Rule::NotFollowed, message, line, column);
+    }
+
     /// After [`Checker::limits`]'s walk of a block that ran a lathe's cycle
     /// ([`ModalMachine::ran_cycle`]): the position back at the start point, the corner of
     /// the cycle's taper walked as its end point was, and, where some of where the cycle
@@ -2078,8 +2147,8 @@ impl Checker {
                 self.machine.swap_cycle_corner();
             }
         }
-        if flags & CYCLE_UNSURE != 0 && !self.cycle_noted {
-            self.cycle_noted = true;
+        if flags & CYCLE_UNSURE != 0 && self.noted & CYCLE_NOTED == 0 {
+            self.noted |= CYCLE_NOTED;
             let message = format!(
                 "a lathe cycle's positions are not compared with the travel (TG601): {}; \
                  the check compares the end points and taper corners it can work out (said \
@@ -2950,6 +3019,113 @@ mod tests {
             let u = "G00 X-100. Z0\nG00 U1050.\n";
             assert_eq!(at(lathe, u, Rule::TravelExceeded), [], "{system:?}");
         }
+    }
+
+    /// Review 44, F7: X and U (Z and W) in one block. No page at hand says which the control
+    /// takes (or whether it alarms): the axis's position is not known until an absolute one,
+    /// nothing judged from it, one TG140 a file. Review 46 (lathe48, item 3): U or W from a
+    /// position not known (the file's start, after `G28 U0 W0`, `X#1`) leaves it not known.
+    #[test]
+    fn a_lathe_s_x_and_u_in_one_block_leave_x_not_known() {
+        let mut haas = fanuc_lathe();
+        haas.haas = true;
+        for (name, lathe) in [
+            ("fanuc", fanuc_lathe()),
+            ("haas", haas),
+            ("okuma", super::super::testing::okuma_lathe()),
+        ] {
+            // X100 or 0+1050, or X1150: none judged (travel X -500 to 500)
+            let xu = "G00 X0 Z0\nG00 X100. U1050.\n";
+            assert_eq!(at(lathe.clone(), xu, Rule::TravelExceeded), [], "{name}");
+            let notes = findings(lathe.clone(), &program(xu), Rule::NotFollowed);
+            assert_eq!(notes.len(), 1, "{name}: {notes:?}");
+            assert!(notes[0].message.contains("writes X and U"), "{name}");
+            assert_eq!((notes[0].line, notes[0].column), (3, 1), "{name}");
+            // X stays not known: a later U from it judges nothing, a later X does
+            let after = format!("{xu}G00 U-200.\nG00 X-450.\n");
+            assert_eq!(
+                at(lathe.clone(), &after, Rule::TravelExceeded),
+                [],
+                "{name}"
+            );
+            let known = format!("{xu}G00 X450.\nG00 X-450.\nG00 U-200.\n");
+            assert_eq!(
+                at(lathe.clone(), &known, Rule::TravelExceeded),
+                [(6, 5)],
+                "{name}"
+            );
+            // Z and W the same (Z -300 to 100), said once a file
+            let zw = "G00 X0 Z0\nG00 Z50. W-400.\nG00 X10. U20.\n";
+            assert_eq!(at(lathe.clone(), zw, Rule::TravelExceeded), [], "{name}");
+            let notes = findings(lathe.clone(), &program(zw), Rule::NotFollowed);
+            assert_eq!(notes.len(), 1, "{name}: {notes:?}");
+            // nor a macro call's arguments (FANUC, Haas: G65 P9732 W1. Z1.)
+            if name != "okuma" {
+                let g65 = "G00 X0 Z0\nG65 P9732 W1. Z1.\n";
+                let notes = findings(lathe.clone(), &program(g65), Rule::NotFollowed);
+                assert!(
+                    notes.iter().all(|f| !f.message.contains("writes X and U")),
+                    "{name}: {notes:?}"
+                );
+            }
+            // X and W (two axes) are no such block
+            let xw = "G00 X0 Z0\nG00 X100. W-50.\n";
+            assert_eq!(findings(lathe.clone(), &program(xw), Rule::NotFollowed), []);
+            // U from a position not known: the file's start, a parameter
+            for start in ["", "G00 X0 Z0\nG00 X#1\n"] {
+                let u = format!("{start}G00 U1050.\nG00 X-100.\n");
+                assert_eq!(
+                    at(lathe.clone(), &u, Rule::TravelExceeded),
+                    [],
+                    "{name}: {start}"
+                );
+            }
+        }
+        // after G28 U0 W0 (X and Z to the reference point) X and Z are not known (FANUC and
+        // Haas: Okuma's G28 is no reference return)
+        let g28 = "G00 X0 Z0\nG28 U0 W0\nG00 U600.\nG00 X-450.\n";
+        assert_eq!(at(fanuc_lathe(), g28, Rule::TravelExceeded), []);
+        // where X was known, the same U is judged
+        let known = "G00 X0 Z0\nG00 U600.\nG00 X-450.\n";
+        assert_eq!(at(fanuc_lathe(), known, Rule::TravelExceeded), [(4, 5)]);
+    }
+
+    /// Review 46, F3: G53 under G91 (in force or in its block). No page at hand says what a
+    /// FANUC, Haas or SINUMERIK does (a 9/Series ignores the block, a Mitsubishi M700V moves
+    /// by the increment): not compared with the travel, one TG140 a file; under G90 judged.
+    #[test]
+    fn a_g53_under_g91_is_not_judged() {
+        for g91 in [
+            "G91\nG53 G0 X-800.\n",
+            "G91 G53 G0 X-800.\n",
+            "G53 G91 X-800.\n",
+        ] {
+            assert_eq!(at(iso_mill(), g91, Rule::TravelExceeded), [], "{g91}");
+            let notes = findings(iso_mill(), &program(g91), Rule::NotFollowed);
+            let g53: Vec<_> = notes
+                .iter()
+                .filter(|f| f.message.starts_with("G53 under G91"))
+                .collect();
+            assert_eq!(g53.len(), 1, "{g91}: {notes:?}");
+        }
+        // G90 in the block, or in force: judged
+        for (g90, said) in [
+            ("G91\nG90 G53 G0 X-800.\n", (3, 12)),
+            ("G53 G0 X-800.\n", (2, 8)),
+        ] {
+            assert_eq!(at(iso_mill(), g90, Rule::TravelExceeded), [said], "{g90}");
+        }
+        // said once: a later one under G90 is still judged
+        let later = "G91\nG53 G0 X-800.\nG53 G0 X-900.\nG90\nG53 G0 X-800.\n";
+        assert_eq!(at(iso_mill(), later, Rule::TravelExceeded), [(6, 8)]);
+        let notes = findings(iso_mill(), &program(later), Rule::NotFollowed);
+        assert_eq!(
+            notes
+                .iter()
+                .filter(|f| f.message.starts_with("G53 under G91"))
+                .count(),
+            1
+        );
     }
 
     /// Issue 32 (thr42): a FANUC or Haas lathe's threading G32/G34 moves X and Z by U and W

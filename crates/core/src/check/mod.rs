@@ -903,9 +903,11 @@ pub struct Checker {
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
-    /// Whether the note of a lathe cycle whose positions are not all known (TG140) was said
-    /// (once per file: `Checker::cycle_walked`).
-    cycle_noted: bool,
+    /// The notes (TG140) said once per file, by their bits: a lathe cycle whose positions are
+    /// not all known ([`limits::CYCLE_NOTED`], `Checker::cycle_walked`), a G53 under G91
+    /// ([`limits::G53_INCREMENTAL_NOTED`], `Checker::machine_incremental`), a lathe block
+    /// writing both X and U or Z and W ([`limits::UW_BESIDE_NOTED`], `Checker::uw_beside_xz`).
+    noted: u8,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1237,7 +1239,7 @@ impl Checker {
             work: None,
             offsets_lost: false,
             frames: limits::Frames::default(),
-            cycle_noted: false,
+            noted: 0,
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
