@@ -903,7 +903,7 @@ impl Checker {
                 String::from_utf8_lossy(&crate::statement::o_label(text))
             );
             let label = self.linuxcnc_call_label(text);
-            if label.len() < 2 || label[1] != b'<' && !label[1..].iter().all(u8::is_ascii_digit) {
+            if label.len() < 2 || crate::statement::computed_label(&label) {
                 self.call_unknown(token, b.line, column);
             } else if self.early_call(super::called::Key::Label(label), token, (b.line, column)) {
                 // (the shift at the call kept, as a FANUC's M98's is: the end that follows
@@ -1003,37 +1003,59 @@ impl Checker {
 
     /// The subroutine a LinuxCNC `o… call` statement names: its o-word's label
     /// ([`crate::statement::o_label`]), and for a label worked out as the line runs (`o#1
-    /// call`, `o[#1] call`: rs274ngc `read_o` reads a parameter or an expression there) the
-    /// numbered one of the parameter's value where the checker knows it as a whole number;
-    /// else the label as written, which names no definition (the call's target not known).
+    /// call`, `o[#1] call`, `o##2 call`: rs274ngc `read_o` reads a parameter or an expression
+    /// there, at the line) the numbered one of its value where the checker knows it and it is
+    /// an integer as rs274 reads one; else the label as written, which names no definition
+    /// (the call's target not known).
     fn linuxcnc_call_label(&self, text: &[u8]) -> Vec<u8> {
         let label = crate::statement::o_label(text);
-        if matches!(label.get(1), Some(b'#' | b'[')) {
-            if let Some(n) = self.constant(&label[1..]).filter(|n| n.is_whole()) {
-                if n.trunc() >= 0 {
-                    return format!("o{}", n.trunc()).into_bytes();
-                }
+        if crate::statement::computed_label(&label) {
+            if let Some(n) = self
+                .linuxcnc_label_value(&label)
+                .and_then(crate::statement::rs274_integer)
+            {
+                return format!("o{n}").into_bytes();
             }
         }
         label
     }
 
-    /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a parameter
-    /// the checker knows holds a number with a fraction (`#1=100.5`): rs274 stops there,
-    /// "Non integer value for integer" (`read_o` reads the label as an integer; `rs274 -g`;
-    /// review 45, finding L2).
+    /// The value of a LinuxCNC o-word label worked out as the line runs (`o#1`, `o[#1+1]`,
+    /// `o##2`; [`crate::statement::computed_label`]) where the checker knows the parameters it reads, as
+    /// rs274ngc's `read_o` reads it (`read_integer_value`, before it is taken as an
+    /// integer). None for one it does not know (a function's value among them).
+    fn linuxcnc_label_value(&self, label: &[u8]) -> Option<f64> {
+        self.linuxcnc_value_of(label.get(1..)?)
+    }
+
+    /// [`Checker::linuxcnc_label_value`] of the label's value, `expression`.
+    fn linuxcnc_value_of(&self, expression: &[u8]) -> Option<f64> {
+        // `##2`, `#[#2]`: the parameter whose number the value after the `#` is
+        if let Some(inner @ [b'#' | b'[', ..]) = expression.strip_prefix(b"#") {
+            let n = crate::statement::rs274_integer(self.linuxcnc_value_of(inner)?)?;
+            return self
+                .constant(format!("#{n}").as_bytes())
+                .map(|d| d.to_f64());
+        }
+        if expression.len() > 200 {
+            return None; // (a chain of terms is a tree as deep, walked by recursion)
+        }
+        let tree = crate::expr::tree(expression).ok()?;
+        let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
+        super::tooling::linuxcnc_value(&tree, expression, &param).ok()?
+    }
+
+    /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a value the
+    /// checker knows holds a fraction (`#1=100.5`, `o[100.5] call`, `o100.5 call`): rs274
+    /// stops there, "Non integer value for integer" (`read_o` reads the label as an integer;
+    /// `rs274 -g`; review 45, finding L2; review 47, F3).
     #[cold]
     #[inline(never)]
     fn linuxcnc_fractional_label(&mut self, label: &[u8], line: usize, column: usize) {
-        // (a parameter's known value, or a number in brackets: `o[100.5] call`; review 47, F3)
-        let written = || {
-            let inside = label.strip_prefix(b"o[")?.strip_suffix(b"]")?;
-            crate::decimal::Dec::parse(std::str::from_utf8(inside).ok()?)
-        };
-        let Some(value) = self.constant(&label[1..]).or_else(written) else {
+        let Some(value) = self.linuxcnc_label_value(label) else {
             return;
         };
-        if value.is_whole() {
+        if crate::statement::rs274_integer(value).is_some() {
             return;
         }
         let message = format!(
@@ -1060,7 +1082,7 @@ impl Checker {
                 && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
             {
                 let label = self.linuxcnc_call_label(text);
-                if matches!(label.get(1), Some(b'#' | b'[')) {
+                if crate::statement::computed_label(&label) {
                     self.linuxcnc_fractional_label(&label, b.line, column);
                 }
                 self.linuxcnc_calls.insert(label);
