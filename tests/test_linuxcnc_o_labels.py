@@ -76,3 +76,48 @@ def test_a_label_with_a_fraction_is_refused(tmp_path, call):
     found = findings(text)
     assert [(r, line) for r, line, sev, _ in found if sev == "error"] == [(REFUSES, 8)], found
     assert "Non integer value for integer" in rs274_output(tmp_path, text)
+
+
+# A closing o-word with a computed label: rs274 works out its value where it reads the line and
+# matches it to its opening by that value (issue 32, lcnc48, 2).
+ENDSUB = "G21 G90\n{set}\no100 sub\nG0 X1\no#1 endsub\no100 call\nM2\n"
+REFUSED = "File ended with no percent sign or program end"
+
+
+@pytest.mark.parametrize("value, closes", [("#1=100", True), ("#1=200", False)])
+def test_an_endsub_s_computed_label_closes_the_sub_of_its_value(tmp_path, value, closes):
+    text = ENDSUB.format(set=value)
+    errors = [(r, line) for r, line, sev, _ in findings(text) if sev == "error"]
+    out = rs274_output(tmp_path, text)
+    if closes:
+        assert errors == []
+        assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out
+    else:
+        assert errors == [(rule_id("NoProgramEnd"), 3)]
+        assert REFUSED in out, out
+
+
+def test_an_endsub_of_a_value_not_known_is_taken_as_closing_and_said(tmp_path):
+    # #5220, the coordinate system in force, is 1 to rs274 -g; the checker does not know it
+    text = ENDSUB.format(set="#1=[#5220*100]")
+    found = findings(text)
+    assert [f for f in found if f[2] == "error"] == []
+    assert [line for r, line, _, m in found
+            if r == NOT_FOLLOWED and "value the checker does not know" in m] == [5]
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out
+
+
+@pytest.mark.parametrize("value, judged", [("#1=5", True), ("#1=6", False)])
+def test_an_endif_s_computed_label_closes_the_condition_of_its_value(tmp_path, value, judged):
+    # closed, the line after it runs wherever the program does: rs274 refuses its unset name;
+    # o6 endif closes nothing (rs274: "undefined O-word label"), the line is not judged
+    text = f"G21 G90\no5 if [1]\n{value}\no#1 endif\nG0 X#<nope>\nM2\n"
+    errors = [(r, line) for r, line, sev, _ in findings(text) if sev == "error"]
+    out = rs274_output(tmp_path, text)
+    if judged:
+        assert errors == [(REFUSES, 5)]
+        assert "Named parameter #<nope> not defined" in out, out
+    else:
+        assert errors == []
+        assert "undefined O-word label" in out, out

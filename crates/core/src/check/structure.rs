@@ -718,7 +718,8 @@ impl Checker {
             }
             None
         } else {
-            let statement = dialect::subroutine_statement(b.statements);
+            let statement = dialect::subroutine_statement(b.statements)
+                .map(|(opens, label)| self.linuxcnc_definition_label(b, opens, label));
             self.linuxcnc_body_locals(b, statement.as_ref());
             self.definition_after_call(b, statement.as_ref());
             self.definition_feed(statement.as_ref());
@@ -1001,7 +1002,8 @@ impl Checker {
         }
     }
 
-    /// The subroutine a LinuxCNC `o… call` statement names: its o-word's label
+    /// The subroutine a LinuxCNC `o… call` statement names, and the block any other o-word
+    /// statement opens or closes: its o-word's label
     /// ([`crate::statement::o_label`]), and for a label worked out as the line runs (`o#1
     /// call`, `o[#1] call`, `o##2 call`: rs274ngc `read_o` reads a parameter or an expression
     /// there, at the line) the numbered one of its value where the checker knows it and it is
@@ -1018,6 +1020,57 @@ impl Checker {
             }
         }
         label
+    }
+
+    /// The label of a LinuxCNC `sub` or `endsub` as rs274 matches it: rs274ngc's `read_o`
+    /// works out a computed label where it reads the line (`#1=100` ... `o100 sub` ... `o#1
+    /// endsub` closes o100 sub: `rs274 -g`; with #1 0 the definition is never closed, "File
+    /// ended with no percent sign or program end"), so its value where the checker knows it
+    /// ([`Checker::linuxcnc_call_label`]). An endsub whose value it does not know is taken as
+    /// closing the definition open, said (TG140): rs274 reads on to another endsub where the
+    /// value is another label.
+    fn linuxcnc_definition_label(
+        &mut self,
+        b: &BlockView<'_>,
+        opens: bool,
+        label: Vec<u8>,
+    ) -> (bool, Vec<u8>) {
+        if opens && self.open_definition.is_none() {
+            self.linuxcnc_sub_params.clone_from(&self.params);
+        }
+        if !crate::statement::computed_label(&label) {
+            return (opens, label);
+        }
+        let Some(&(column, _, text)) = b.statements.iter().find(|s| s.1 == Kind::Definition) else {
+            return (opens, label);
+        };
+        // (an endsub's value is read with the parameters the definition's first line had)
+        if !opens {
+            std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
+        }
+        let known = self.linuxcnc_call_label(text);
+        if !opens {
+            std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
+        }
+        if !crate::statement::computed_label(&known) {
+            return (opens, known);
+        }
+        match &self.open_definition {
+            Some((line, _, open)) if !opens => {
+                let open = open.clone();
+                let message = format!(
+                    "{} endsub: its label is worked out as the line runs, from a value the \
+                     checker does not know; taken as closing {} sub (line {line}), which rs274 \
+                     does only where the value is that label's (else it reads on to another \
+                     endsub)",
+                    String::from_utf8_lossy(&label),
+                    String::from_utf8_lossy(&open),
+                );
+                self.report(Rule::NotFollowed, message, b.line, column);
+                (opens, open)
+            }
+            _ => (opens, label),
+        }
     }
 
     /// The value of a LinuxCNC o-word label worked out as the line runs (`o#1`, `o[#1+1]`,
@@ -1407,7 +1460,10 @@ impl Checker {
         let keyword = crate::statement::o_keyword(text);
         let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
         let mut all_ended = None;
-        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
+        // (a computed label, `o#1 endwhile`, by its value where rs274 reads the line: matched
+        // to the `o5 while` of #1=5, `rs274 -g`)
+        let label = self.linuxcnc_call_label(text);
+        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label) {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
             if let Some(entry) = self.linuxcnc_if_ends.iter_mut().rfind(|e| e.0 == at) {
@@ -1418,7 +1474,6 @@ impl Checker {
                 self.linuxcnc_end_depth = None;
             }
         } else if keyword.as_deref() == Some(b"endif".as_slice()) {
-            let label = crate::statement::o_label(text);
             if let Some(at) = self.linuxcnc_open_flow.iter().rposition(|l| *l == label) {
                 let ended = branch_ended(at);
                 all_ended = self
@@ -1430,7 +1485,7 @@ impl Checker {
             }
         }
         let depth = self.linuxcnc_open_flow.len();
-        linuxcnc_flow(&mut self.linuxcnc_open_flow, text);
+        linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
         self.linuxcnc_if_ends.retain(|e| e.0 < open);
         if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
@@ -2395,10 +2450,15 @@ pub fn nested_comment(text: &[u8]) -> usize {
 /// `o1 while` closes the `o1 do` it ends, or opens a loop; an `endif`, `endwhile` or
 /// `endrepeat` closes its label's block (and any left open inside it: rs274 refuses those).
 fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
+    linuxcnc_flow_of(open, text, crate::statement::o_label(text));
+}
+
+/// [`linuxcnc_flow`] of a statement whose label is `label` (a computed one's value where the
+/// checker knows it: [`Checker::linuxcnc_call_label`]).
+fn linuxcnc_flow_of(open: &mut Vec<Vec<u8>>, text: &[u8], label: Vec<u8>) {
     let Some(keyword) = crate::statement::o_keyword(text) else {
         return;
     };
-    let label = crate::statement::o_label(text);
     let at = open.iter().rposition(|l| *l == label);
     match (keyword.as_slice(), at) {
         (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
@@ -2410,12 +2470,11 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 }
 
 /// An `else` or `elseif` of a condition open in `open`: the index of its `if` there.
-fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8]) -> Option<usize> {
+fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8], label: &[u8]) -> Option<usize> {
     let keyword = crate::statement::o_keyword(text)?;
     if !matches!(keyword.as_slice(), b"else" | b"elseif") {
         return None;
     }
-    let label = crate::statement::o_label(text);
     open.iter().rposition(|l| *l == label)
 }
 
@@ -2461,6 +2520,41 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
+
+    /// A closing o-word with a computed label (`o#1 endsub`, `o#1 endif`): rs274ngc's
+    /// `read_o` works out its value where it reads the line and matches the label by it
+    /// (`rs274 -g`: `#1=100` closes `o100 sub`, `#1=200` leaves it open, "File ended with no
+    /// percent sign or program end"; `#1=5` inside `o5 if` closes it).
+    #[test]
+    fn a_computed_closing_label_is_matched_by_its_value() {
+        let lcnc = || of_family(Family::LinuxCnc);
+        let errors = |text: &str| -> Vec<(Rule, usize)> {
+            check(lcnc(), text)
+                .iter()
+                .filter(|f| f.rule.severity() == crate::rules::Severity::Error)
+                .map(|f| (f.rule, f.line))
+                .collect()
+        };
+        let sub = "G21 G90\n#1=100\no100 sub\nG0 X1\no#1 endsub\no100 call\nM2\n";
+        assert_eq!(errors(sub), []);
+        assert_eq!(
+            errors(&sub.replace("#1=100", "#1=200")),
+            [(Rule::NoProgramEnd, 3)]
+        );
+        // a value the checker does not know: taken as closing, said
+        let unknown = sub.replace("#1=100", "#1=[#5220*100]");
+        assert_eq!(errors(&unknown), []);
+        let notes: Vec<_> = findings(lcnc(), &unknown, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| f.message.contains("value the checker does not know"))
+            .map(|f| f.line)
+            .collect();
+        assert_eq!(notes, [5]);
+        // a condition closed by its value: the line after it runs, judged
+        let flow = "G21 G90\no5 if [1]\n#1=5\no#1 endif\nG0 X#<nope>\nM2\n";
+        assert_eq!(errors(flow), [(Rule::LinuxCncRefuses, 5)]);
+        assert_eq!(errors(&flow.replace("#1=5", "#1=6")), []);
+    }
 
     #[test]
     fn a_call_of_a_sub_that_sets_no_feed_mode_keeps_the_mode_before_it() {
