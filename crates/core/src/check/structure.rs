@@ -1095,7 +1095,7 @@ impl Checker {
         }
         let tree = crate::expr::tree(expression).ok()?;
         let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
-        super::tooling::linuxcnc_value(&tree, expression, &param).ok()?
+        crate::expr::linuxcnc_value(&tree, expression, &param).ok()?
     }
 
     /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a value the
@@ -1250,24 +1250,16 @@ impl Checker {
 
     /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
     /// expression (interp_read.cc `read_m`, `read_integer_value`: `M#<two>` and `M[1+1]` are
-    /// M2) -- where the checker knows its value: the whole number within 0.0001 of it, rs274's
-    /// tolerance. None for a value it does not know or that is no whole number.
+    /// M2) -- where the checker knows its value, by the rule every reading's end follows
+    /// ([`dialect::linuxcnc_m_number`]). None for a value it does not know or no integer.
     pub(super) fn linuxcnc_m_number(&self, w: &Word<'_>) -> Option<i64> {
         let value = if w.expression.is_empty() {
-            std::str::from_utf8(w.number)
-                .ok()?
-                .trim()
-                .parse::<f64>()
-                .ok()?
-        } else if w.expression.len() > 200 {
-            return None; // (a chain of terms is a tree as deep, walked by recursion)
+            w.number
         } else {
-            let tree = crate::expr::tree(w.expression).ok()?;
-            let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
-            super::tooling::linuxcnc_value(&tree, w.expression, &param).ok()??
+            w.expression
         };
-        let whole = value.round();
-        ((value - whole).abs() <= 0.0001).then_some(whole as i64)
+        let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
+        dialect::linuxcnc_m_number(value, &param)
     }
 
     /// TG412: LinuxCNC's main program reads a local named parameter (`#<name>`) that no line
