@@ -854,9 +854,11 @@ impl ReadingEnd {
     }
 
     /// [`ReadingEnd::read_with_m`] where the caller knows the values of parameters (`param`:
-    /// of a parameter's text, `#<two>`, `#5`), which an M word's value may read (`M#<two>`):
-    /// the checker's. The others know none: an M word of a parameter is then an end not known
-    /// ([`ReadingEnd::unsure_note`]), and the reading goes on.
+    /// of a parameter's text, `#<two>`, `#5`), which an M word's value may read (`M#<two>`).
+    /// The readings know none: an M word of a parameter is then an end not known
+    /// ([`ReadingEnd::unsure_note`]), and the reading goes on. (The checker, which knows
+    /// some, reads its M words' values by the same [`linuxcnc_m_number`] after the block's
+    /// words and tells the end so, [`ReadingEnd::ended_at`].)
     pub fn read_with_values<'a>(
         &mut self,
         tokens: impl IntoIterator<Item = &'a [u8]>,

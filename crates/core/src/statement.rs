@@ -1095,6 +1095,7 @@ fn linuxcnc<'a>(
 /// `#<sub>`, `#[#1+1]`, `##2`), an expression in brackets or a function of one (`abs[-100]`).
 /// None where none of these stands there (`O100` is a word of another reading then, and
 /// `o` before anything else is no label).
+#[inline(never)]
 fn o_value_end(line: &[u8], at: usize, syntax: Syntax) -> Result<Option<usize>, LexError> {
     let mut at = at;
     while matches!(line.get(at), Some(b'+' | b'-')) {

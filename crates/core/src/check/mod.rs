@@ -1722,28 +1722,13 @@ impl Checker {
             "line {}",
             b.line
         );
-        if m_words && self.config.family == Family::LinuxCnc {
-            // an M word's value may read a parameter the checker knows (`M#<two>`)
-            let mut end = std::mem::take(&mut self.reading_end);
-            let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
-            end.read_with_values(
-                b.words.iter().map(|w| w.token),
-                b.statements.iter().map(|&(_, kind, text)| (kind, text)),
-                b.skip,
-                b.line,
-                m_words,
-                &param,
-            );
-            self.reading_end = end;
-        } else {
-            self.reading_end.read_with_m(
-                b.words.iter().map(|w| w.token),
-                b.statements.iter().map(|&(_, kind, text)| (kind, text)),
-                b.skip,
-                b.line,
-                m_words,
-            );
-        }
+        self.reading_end.read_with_m(
+            b.words.iter().map(|w| w.token),
+            b.statements.iter().map(|&(_, kind, text)| (kind, text)),
+            b.skip,
+            b.line,
+            m_words,
+        );
         self.reach_block(b);
         if b.percent && self.reading_end.refuses_percent(b.line, b.text) {
             self.refused_percent(b);
