@@ -472,6 +472,21 @@ SEEDED: list[tuple[str, str, int, str]] = [
      "error"),
     ("R arc after G92 ending where it starts",
      HEAD + "G0 X1 Y0\nG92 X0\nG2 X0 Y0 R5 F100\nM2\n", 5, "error"),
+    # the o-word labels read_o reads through read_integer_value (interp_read.cc; lcnc48)
+    ("o-word label with a sign", "o+100 sub\nG0 X1\no+100 endsub\n" + HEAD + "o100 call\nM2\n",
+     0, "accepted"),
+    ("o-word label with a point", "o100.0 sub\nG0 X1\no100 endsub\n" + HEAD
+     + "o100.00 call\nM2\n", 0, "accepted"),
+    ("o-word label a parameter's parameter", "o100 sub\nG0 X1\no100 endsub\n" + HEAD
+     + "#2=3\n#3=100\no##2 call\nM2\n", 0, "accepted"),
+    ("o-word label a function", "o100 sub\nG0 X1\no100 endsub\n" + HEAD
+     + "oabs[-100] call\nM2\n", 0, "accepted"),
+    ("o-word label with a fraction", "o100 sub\nG0 X1\no100 endsub\n" + HEAD
+     + "o100.5 call\nM2\n", 6, "error"),
+    ("endsub label of a parameter's value", "#1=100\no100 sub\nG0 X1\no#1 endsub\n" + HEAD
+     + "o100 call\nM2\n", 0, "accepted"),
+    ("endif label of a parameter's value", HEAD + "o5 if [1]\n#1=5\no#1 endif\n"
+     "G0 X#<nope>\nM2\n", 6, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -1474,6 +1474,36 @@ def test_linuxcnc_ends_where_rs274_ends(end, tmp_path):
     assert traverses("-b") == ([0.0, 1.0] if deleted else [0.0])
 
 
+# (issue 32, lcnc48, 3) the other readings follow the checker's end through the one rule
+# (dialect::linuxcnc_m_number in ReadingEnd): after an end of an expression, a line that is no
+# program is not read; after one of a parameter, whose value they do not know, they read on
+AFTER_END = "G21 G90\n#<two> = 2\nG0 X1\n{end}\nthis is no program\n"
+
+
+@pytest.mark.parametrize("end", ["M[1+1]", "M[30]", "M 2.00005"])
+def test_parse_diff_and_convert_read_no_line_after_an_end_of_an_expression(end, tmp_path):
+    path = tmp_path / "end.ngc"
+    path.write_text(AFTER_END.format(end=end))
+    runner = CliRunner()
+    parsed = runner.invoke(main, ["parse", str(path), "-p", "linuxcnc"])
+    assert parsed.exit_code == 0, parsed.output
+    differ = runner.invoke(main, ["diff", str(path), str(path), "-p", "linuxcnc"])
+    assert differ.exit_code == 0 and "same program" in differ.output, differ.output
+    out = tmp_path / "out.ngc"
+    converted = runner.invoke(main, ["convert", str(path), "--from", "linuxcnc", "--to",
+                                     "linuxcnc", "-o", str(out)])
+    assert converted.exit_code == 0, converted.output
+    assert out.read_text().endswith("this is no program\n")
+
+
+def test_parse_reads_on_after_an_m_word_of_a_parameter_and_says_so(tmp_path):
+    path = tmp_path / "end.ngc"
+    path.write_text(AFTER_END.format(end="M#<two>"))
+    parsed = CliRunner().invoke(main, ["parse", str(path), "-p", "linuxcnc"])
+    assert parsed.exit_code != 0
+    assert "the M word on line 4 reads a value not known here" in parsed.output, parsed.output
+
+
 # -- LinuxCNC: a subroutine's body reading a local named parameter it never assigns -----------
 
 # (review 38, finding 9) rs274 keeps local named parameters per call level; each program's

@@ -117,6 +117,9 @@ BOTH = [
     "named parameter read before it is set",
     "R arc after G43 H1 ending where it starts",
     "R arc after G92 ending where it starts",
+    # o-word labels read_o reads (lcnc48): a fraction, and an endif closed by its value
+    "o-word label with a fraction",
+    "endif label of a parameter's value",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -127,7 +130,12 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # P and H words with the codes that use them; a definition after M2 is never reached
        "P and H words their codes use", "sub defined after its call and M2",
        # G93 keeps rs274's feed rate, which a probe reads (review 15, finding 5)
-       "probe after G93 keeps the feed rate"]
+       "probe after G93 keeps the feed rate",
+       # o-word labels read_o reads through read_integer_value, and an endsub closed by its
+       # label's value (lcnc48)
+       "o-word label with a sign", "o-word label with a point",
+       "o-word label a parameter's parameter", "o-word label a function",
+       "endsub label of a parameter's value"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 

@@ -705,6 +705,10 @@ pub struct ReadingEnd {
     /// The first line not read that holds more than blanks and comments, once.
     first_unread: Option<Unread>,
     noted: bool,
+    /// The first line (outside any `o` block, before the end) with an M word whose value
+    /// the reader does not know (`M#<two>` without the parameter's value): an M2 or M30
+    /// there would end the reading, which goes on.
+    unsure: Option<usize>,
     /// LinuxCNC, where the file is opened by `%` (or its first line not yet read), closed or
     /// ended: [`ReadingEnd::skips`] looks at the line. False on any other family, and on a
     /// LinuxCNC file not opened by `%`, neither closed nor ended (every line is read, as in
@@ -797,6 +801,17 @@ impl ReadingEnd {
         }
     }
 
+    /// The first line whose M word's value the reading did not know
+    /// ([`ReadingEnd::read_with_values`]): an end there is not known, and the lines after it
+    /// are read as program. The note a reading's error after it carries, which says so.
+    pub fn unsure_note(&self) -> Option<String> {
+        let line = self.unsure?;
+        Some(format!(
+            " (read as program: the M word on line {line} reads a value not known here, and \
+             LinuxCNC reads no line after it if it is M2 or M30)"
+        ))
+    }
+
     /// Whether the line in hand stands inside an `o` block or definition (after the end: a
     /// subroutine's body, read as its definition).
     pub fn inside_block(&self) -> bool {
@@ -835,6 +850,24 @@ impl ReadingEnd {
         line: usize,
         m_words: bool,
     ) {
+        self.read_with_values(tokens, statements, skip, line, m_words, &|_| None);
+    }
+
+    /// [`ReadingEnd::read_with_m`] where the caller knows the values of parameters (`param`:
+    /// of a parameter's text, `#<two>`, `#5`), which an M word's value may read (`M#<two>`).
+    /// The readings know none: an M word of a parameter is then an end not known
+    /// ([`ReadingEnd::unsure_note`]), and the reading goes on. (The checker, which knows
+    /// some, reads its M words' values by the same [`linuxcnc_m_number`] after the block's
+    /// words and tells the end so, [`ReadingEnd::ended_at`].)
+    pub fn read_with_values<'a>(
+        &mut self,
+        tokens: impl IntoIterator<Item = &'a [u8]>,
+        statements: impl IntoIterator<Item = (Kind, &'a [u8])>,
+        skip: bool,
+        line: usize,
+        m_words: bool,
+        param: &dyn Fn(&[u8]) -> Option<f64>,
+    ) {
         if self.family != Family::LinuxCnc {
             return;
         }
@@ -863,12 +896,24 @@ impl ReadingEnd {
         }
         if self.open.is_empty() && !skip && m_words {
             // (a token's first byte `M` or `m` by its case bit; the number read only then)
+            let mut unsure = false;
             let ends = tokens.into_iter().any(|t| match t {
-                [m, digits @ ..] if m | 0x20 == b'm' => {
-                    whole_number(digits).is_some_and(|n| n == 2 || n == 30)
-                }
+                [m, digits @ ..] if m | 0x20 == b'm' => match whole_number(digits) {
+                    Some(n) => n == 2 || n == 30,
+                    // (`M#<two>`, `M[1+1]`: by its value, where known)
+                    None => match linuxcnc_m_number(digits, param) {
+                        Some(n) => n == 2 || n == 30,
+                        None => {
+                            unsure = true;
+                            false
+                        }
+                    },
+                },
                 _ => false,
             });
+            if unsure && !ends && self.unsure.is_none() {
+                self.unsure = Some(line);
+            }
             if ends {
                 self.ended = Some(line);
                 self.unsettled = self.unsettled_now();
@@ -954,6 +999,26 @@ pub fn holds_program(text: &[u8]) -> bool {
         }
     }
     false
+}
+
+/// LinuxCNC: the number of an M word whose value is `value` (the text after the `M`) as rs274
+/// reads it -- a number, a parameter or an expression (interp_read.cc `read_m`,
+/// `read_integer_value`: `M#<two>` and `M[1+1]` are M2) -- where it is known (`param`: a
+/// parameter's value by its text): the integer [`crate::statement::rs274_integer`] makes of
+/// it. None for a value not known or no integer. The one reading of an M word's number that
+/// the end of a program follows, in the checker and in every reading ([`ReadingEnd`]).
+pub fn linuxcnc_m_number(value: &[u8], param: &dyn Fn(&[u8]) -> Option<f64>) -> Option<i64> {
+    let value = value.trim_ascii();
+    let number = match std::str::from_utf8(value).ok()?.parse::<f64>() {
+        Ok(number) => number,
+        // (a chain of terms is a tree as deep, walked by recursion)
+        Err(_) if value.len() > 200 => return None,
+        Err(_) => {
+            let tree = crate::expr::tree(value).ok()?;
+            crate::expr::linuxcnc_value(&tree, value, param).ok()??
+        }
+    };
+    crate::statement::rs274_integer(number)
 }
 
 /// A code's number written whole (`30`, `02`, `+2`, `2.0`): rs274 reads an M word's value as
@@ -1544,17 +1609,34 @@ mod tests {
     fn linuxcnc_reads_no_line_after_a_top_level_end_but_the_o_word_lines() {
         let lcnc = |p: &str| passed_over(Family::LinuxCnc, p);
         assert_eq!(lcnc("G0 X1\nM30\nprint[x]\n(note)\nG0 X2\n"), [3, 4, 5]);
-        // M2, M02, m30, M2.0, +2: the values rs274 reads as an end; M[30], M20, M3 are none
-        for end in ["M2", "M02", "m30", "M2.0", "M+2"] {
+        // M2, M02, m30, M2.0, +2, an expression of the value (rs274 read_m reads it by
+        // read_integer_value: `M[30]`, `M[1+1]` end the program, rs274 -g), a value within
+        // 0.0001 of 2: the values rs274 reads as an end; M20, M3, M2.5 are none
+        for end in [
+            "M2", "M02", "m30", "M2.0", "M+2", "M[30]", "M[1+1]", "M2.00005",
+        ] {
             assert_eq!(lcnc(&format!("{end}\nX\n")), [2], "{end}");
         }
-        for other in ["M[30]", "M20", "M3", "M2.5"] {
+        for other in ["M20", "M3", "M2.5", "M[2.5]", "M#<two>"] {
             assert_eq!(
                 lcnc(&format!("{other}\nX\n")),
                 Vec::<usize>::new(),
                 "{other}"
             );
         }
+        // a parameter's value, which the reading does not know: no end, said at the first
+        let mut end = ReadingEnd::new(Family::LinuxCnc);
+        assert_eq!(end.unsure_note(), None);
+        for (line, text) in [(1, "M#<two>"), (2, "M#1"), (3, "M[#1+1]")] {
+            end.read([text.as_bytes()], None, false, line);
+        }
+        assert!(end.unsure_note().unwrap().contains("M word on line 1 "));
+        // ... which the checker's values give (read_with_values)
+        let mut end = ReadingEnd::new(Family::LinuxCnc);
+        let two = |p: &[u8]| (p == b"#<two>").then_some(2.0);
+        assert!(!end.skips(1, b"M#<two>"));
+        end.read_with_values([b"M#<two>".as_slice()], None, false, 1, true, &two);
+        assert!(end.skips(2, b"G0 X1"));
         // a subroutine's definition after the end is read to its endsub, then no more
         let sub = "M2\nX\no<s> sub\nG0 X1\no<s> endsub\nG0 X2\n";
         assert_eq!(lcnc(sub), [2, 6]);

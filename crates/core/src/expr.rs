@@ -596,6 +596,45 @@ pub fn scan_group(line: &[u8], open: usize, syntax: Syntax) -> Result<usize, Lex
     Scanner { line, syntax }.group(open, 0).map_err(|e| *e)
 }
 
+/// The value of a LinuxCNC expression's tree (from [`tree`]), computed in doubles as
+/// rs274ngc computes it, where a parameter (`#<two>`, `#5`, its text) has the value `param`
+/// gives it, if any: Err for a division by zero anywhere in it, None where a parameter not
+/// given, a function or an operator other than `+ - * /` leaves the value to the machine.
+pub(crate) fn linuxcnc_value(
+    e: &Expr,
+    text: &[u8],
+    param: &dyn Fn(&[u8]) -> Option<f64>,
+) -> Result<Option<f64>, ()> {
+    Ok(match e {
+        Expr::Number(a, b) => std::str::from_utf8(&text[*a..*b])
+            .ok()
+            .and_then(|t| t.replace([' ', '\t'], "").parse::<f64>().ok()),
+        Expr::Param(a, b) => param(&text[*a..*b]),
+        Expr::Sign(sign, inner) => {
+            linuxcnc_value(inner, text, param)?.map(|v| if *sign == b'-' { -v } else { v })
+        }
+        Expr::Binary(op, l, r) => {
+            let a = linuxcnc_value(l, text, param)?;
+            let b = linuxcnc_value(r, text, param)?;
+            if *op == b'/' && b == Some(0.0) {
+                return Err(());
+            }
+            match (op, a, b) {
+                (b'+', Some(a), Some(b)) => Some(a + b),
+                (b'-', Some(a), Some(b)) => Some(a - b),
+                (b'*', Some(a), Some(b)) => Some(a * b),
+                (b'/', Some(a), Some(b)) => Some(a / b),
+                _ => None,
+            }
+        }
+        Expr::Call(inner) => {
+            linuxcnc_value(inner, text, param)?;
+            None
+        }
+        _ => None,
+    })
+}
+
 /// Where a token stands in the expression text: `start..end` in bytes.
 pub type Span = (usize, usize);
 

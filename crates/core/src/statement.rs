@@ -785,42 +785,76 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     if text.is_empty() {
         return text;
     }
-    match text.get(1) {
-        Some(b'<' | b'#' | b'[') => {
-            let end = o_label_end(&text).unwrap_or(text.len());
-            // a number in brackets is that number's label (`o[100] endsub` closes `o100
-            // sub`, `o[0100.0] call` calls it: rs274 reads the bracket's value)
-            if let [b'o', b'[', inside @ .., b']'] = &text[..end] {
-                let whole = inside.split(|&c| c == b'.').next().unwrap_or(inside);
-                let fraction = &inside[whole.len()..];
-                if !whole.is_empty()
-                    && whole.iter().all(u8::is_ascii_digit)
-                    && fraction.iter().skip(1).all(|&c| c == b'0')
-                {
-                    let zeros = whole.iter().take_while(|&&c| c == b'0').count();
-                    let digits = &whole[zeros.min(whole.len() - 1)..];
-                    let mut label = vec![b'o'];
-                    label.extend_from_slice(digits);
-                    return label;
-                }
+    if text.get(1) == Some(&b'<') {
+        let end = o_label_end(&text).unwrap_or(text.len());
+        return text[..end].to_vec();
+    }
+    let end = o_label_end(&text).unwrap_or(text.len());
+    // a number, signed, with a point or in brackets, is that number's label (`o+100 sub`,
+    // `o100.0 call` and `o[0100] call` name `o100 sub`; `o[100] endsub` closes it): rs274
+    // reads the value as an integer (`read_integer_value`)
+    match o_number(&text[1..end]).and_then(rs274_integer) {
+        Some(n) => format!("o{n}").into_bytes(),
+        None => text[..end].to_vec(),
+    }
+}
+
+/// Whether an [`o_label`] is worked out as the line runs (`o#1`, `o[#1+1]`, `o##2`,
+/// `oabs[-100]`, a fraction `o100.5`): neither a name (`o<name>`) nor a whole number
+/// (`o100`, `o-100`), so that no definition is named so as written.
+pub(crate) fn computed_label(label: &[u8]) -> bool {
+    match label {
+        [b'o', b'<', ..] => false,
+        [b'o', b'-', digits @ ..] | [b'o', digits @ ..] => {
+            digits.is_empty() || !digits.iter().all(u8::is_ascii_digit)
+        }
+        _ => false,
+    }
+}
+
+/// The value of a label written as a number (blanks taken out): signs, brackets around it and
+/// inside (`+100`, `-[100]`, `[0100.0]`); None for anything else (a parameter, an operation,
+/// a function: worked out as the line runs) and for a number too long to be a label.
+fn o_number(text: &[u8]) -> Option<f64> {
+    let mut negative = false;
+    let mut rest = text;
+    loop {
+        match rest {
+            [b'-', inner @ ..] => {
+                negative = !negative;
+                rest = inner;
             }
-            text[..end].to_vec()
+            [b'+', inner @ ..] => rest = inner,
+            [b'[', inner @ .., b']'] if !inner.contains(&b'[') => rest = inner,
+            _ => break,
         }
-        _ => {
-            let digits = text
-                .iter()
-                .skip(1)
-                .take_while(|c| c.is_ascii_digit())
-                .count();
-            let zeros = text[1..1 + digits]
-                .iter()
-                .take_while(|&&c| c == b'0')
-                .count()
-                .min(digits.saturating_sub(1));
-            let mut label = vec![text[0]];
-            label.extend_from_slice(&text[1 + zeros..1 + digits]);
-            label
-        }
+    }
+    if rest.is_empty()
+        || rest.len() > 15
+        || !rest.iter().all(|&c| c.is_ascii_digit() || c == b'.')
+        || !rest.iter().any(u8::is_ascii_digit)
+    {
+        return None;
+    }
+    let value: f64 = std::str::from_utf8(rest).ok()?.parse().ok()?;
+    Some(if negative { -value } else { value })
+}
+
+/// A value read as an integer as rs274ngc reads one (interp_read.cc `read_integer_value`,
+/// which `read_o` and `read_m` use): the whole number below it, or the one above where the
+/// value is within 0.0001 of it; None (rs274: "Non integer value for integer") for a value
+/// further from both.
+pub(crate) fn rs274_integer(value: f64) -> Option<i64> {
+    if !value.is_finite() || value.abs() > 1e15 {
+        return None;
+    }
+    let below = value.floor();
+    if value - below > 0.9999 {
+        Some(value.ceil() as i64)
+    } else if value - below > 0.0001 {
+        None
+    } else {
+        Some(below as i64)
     }
 }
 
@@ -845,10 +879,18 @@ pub(crate) fn o_label_len(statement: &[u8]) -> usize {
 }
 
 /// Where the label of an o-word ends in `text` (blanks taken out, `text[0]` the `o`): after
-/// its digits (`o100`), its `<name>`, a parameter (`o#1`, `o#<sub>`) or a bracketed
-/// expression (`o[#1+1]`, brackets nested), the forms rs274ngc's `read_o` reads; None where
-/// a name or a bracket is left open.
+/// its `<name>`, or the value rs274ngc's `read_o` reads there ([`o_value_end`]: a number,
+/// signed or with a point, a parameter, `##2`, a bracketed expression, brackets nested, or a
+/// function of one); None where a name or a bracket is left open.
 fn o_label_end(text: &[u8]) -> Option<usize> {
+    if text.get(1)? == &b'<' {
+        return Some(text.iter().position(|&c| c == b'>')? + 1);
+    }
+    o_value_text_end(text, 1)
+}
+
+/// [`o_label_end`]'s value from `at` in a text without blanks.
+fn o_value_text_end(text: &[u8], at: usize) -> Option<usize> {
     let close = |from: usize| -> Option<usize> {
         let mut depth = 0usize;
         for (i, &c) in text.iter().enumerate().skip(from) {
@@ -861,15 +903,41 @@ fn o_label_end(text: &[u8]) -> Option<usize> {
         }
         None
     };
-    match text.get(1)? {
-        b'<' => Some(text.iter().position(|&c| c == b'>')? + 1),
-        b'[' => close(1),
-        b'#' => match text.get(2)? {
-            b'<' => Some(2 + text[2..].iter().position(|&c| c == b'>')? + 1),
-            b'[' => close(2),
-            _ => Some(2 + text[2..].iter().take_while(|c| c.is_ascii_digit()).count()),
+    let at = at
+        + text[at..]
+            .iter()
+            .take_while(|&&c| matches!(c, b'+' | b'-'))
+            .count();
+    match text.get(at) {
+        Some(b'[') => close(at),
+        Some(b'#') => match text.get(at + 1)? {
+            b'<' => Some(at + 1 + text[at + 1..].iter().position(|&c| c == b'>')? + 1),
+            b'#' | b'[' => o_value_text_end(text, at + 1),
+            _ => Some(
+                at + 1
+                    + text[at + 1..]
+                        .iter()
+                        .take_while(|c| c.is_ascii_digit())
+                        .count(),
+            ),
         },
-        _ => Some(1 + text[1..].iter().take_while(|c| c.is_ascii_digit()).count()),
+        Some(c) if c.is_ascii_alphabetic() => {
+            let letters = text[at..]
+                .iter()
+                .take_while(|c| c.is_ascii_alphabetic())
+                .count();
+            if text.get(at + letters) == Some(&b'[') {
+                close(at + letters)
+            } else {
+                Some(at)
+            }
+        }
+        _ => Some(
+            at + text[at..]
+                .iter()
+                .take_while(|&&c| c.is_ascii_digit() || c == b'.')
+                .count(),
+        ),
     }
 }
 
@@ -951,30 +1019,13 @@ fn linuxcnc<'a>(
                 ))
             }
         },
-        Some(d) if d.is_ascii_digit() => expr::spaced_digits_end(line, open),
-        // a label worked out when the line runs (rs274ngc `read_o`): `o[#1+1] call`,
-        // `o#1 call`, `o#<sub> call`
-        Some(b'[') => expr::scan_group(line, open, syntax)?,
-        Some(b'#') => {
-            let at = skip_blanks(line, open + 1);
-            match line.get(at) {
-                Some(b'[') => expr::scan_group(line, at, syntax)?,
-                Some(b'<') => match line[at..].iter().position(|&c| c == b'>') {
-                    Some(close) if close > 1 => at + close + 1,
-                    _ => {
-                        return Err(err(
-                            ErrorKind::Value,
-                            "o-word parameter '#<' without its closing '>'".into(),
-                            at,
-                            "LinuxCNC O codes",
-                        ))
-                    }
-                },
-                Some(d) if d.is_ascii_digit() => expr::spaced_digits_end(line, at),
-                _ => return Ok(None),
-            }
-        }
-        _ => return Ok(None),
+        // rs274ngc `read_o` reads any other label as `read_integer_value` reads a value: a
+        // number (`o100`, `o+100`, `o100.0`), or one worked out when the line runs
+        // (`o[#1+1] call`, `o#1 call`, `o#<sub> call`, `o##2 call`, `oabs[-100] call`)
+        _ => match o_value_end(line, open, syntax)? {
+            Some(end) => end,
+            None => return Ok(None),
+        },
     };
     // LinuxCNC reads a line without its blanks: "else if" is elseif
     let p = skip_blanks(line, label_end);
@@ -1035,6 +1086,55 @@ fn linuxcnc<'a>(
         _ => Kind::Flow,
     };
     Ok(statement(pos, end, kind))
+}
+
+/// Where the value of a LinuxCNC o-word's label that is no `<name>` ends, from `at` (its
+/// first byte after the `o` and blanks), read as rs274ngc's `read_real_value` reads one
+/// (interp_read.cc, called by `read_o` through `read_integer_value`): signs before it (`+`,
+/// `-`), then a number (`100`, `100.0`, `.5`, its digits through blanks), a parameter (`#1`,
+/// `#<sub>`, `#[#1+1]`, `##2`), an expression in brackets or a function of one (`abs[-100]`).
+/// None where none of these stands there (`O100` is a word of another reading then, and
+/// `o` before anything else is no label).
+#[inline(never)]
+fn o_value_end(line: &[u8], at: usize, syntax: Syntax) -> Result<Option<usize>, LexError> {
+    let mut at = at;
+    while matches!(line.get(at), Some(b'+' | b'-')) {
+        at = skip_blanks(line, at + 1);
+    }
+    Ok(Some(match line.get(at) {
+        Some(d) if d.is_ascii_digit() || *d == b'.' => match expr::spaced_number_end(line, at) {
+            Some(end) => end,
+            None => return Ok(None),
+        },
+        Some(b'[') => expr::scan_group(line, at, syntax)?,
+        Some(b'#') => {
+            let next = skip_blanks(line, at + 1);
+            match line.get(next) {
+                Some(b'<') => match line[next..].iter().position(|&c| c == b'>') {
+                    Some(close) if close > 1 => next + close + 1,
+                    _ => {
+                        return Err(err(
+                            ErrorKind::Value,
+                            "o-word parameter '#<' without its closing '>'".into(),
+                            next,
+                            "LinuxCNC O codes",
+                        ))
+                    }
+                },
+                Some(d) if d.is_ascii_digit() => expr::spaced_digits_end(line, next),
+                // `##2`, `#[#1+1]`: the parameter whose number is a value
+                Some(b'#' | b'[') => match o_value_end(line, next, syntax)? {
+                    Some(end) => end,
+                    None => return Ok(None),
+                },
+                _ => return Ok(None),
+            }
+        }
+        Some(c) if c.is_ascii_alphabetic() && expr::function_ahead(line, at) => {
+            expr::scan_operand(line, at, syntax)?
+        }
+        _ => return Ok(None),
+    }))
 }
 
 /// LinuxCNC's words of other characters: the polar `@` (distance) and `^` (angle), and `$`
@@ -2882,6 +2982,55 @@ mod tests {
         assert_eq!(o_label_len(b"o100 call"), 4);
         assert!(read("o#<s call", l).unwrap_err().contains("closing '>'"));
         assert!(read("o[#1 call", l).is_err());
+    }
+
+    /// The rest of what `read_o` reads as a label through `read_integer_value` (interp_read.cc
+    /// `read_real_value`): a sign, a point with no fraction, a function of a bracketed value,
+    /// a parameter whose number is a value (`o##2`, `o#[#2]`); each run by `rs274 -g`
+    /// (tests/test_linuxcnc_o_labels.py). A number is its whole number's label within 0.0001
+    /// of it (`read_integer_value`'s tolerance); a fraction is kept as written.
+    #[test]
+    fn linuxcnc_o_words_with_signs_points_and_functions() {
+        let l = Family::LinuxCnc;
+        for (text, kind) in [
+            ("o+100 sub", Kind::Definition),
+            ("o+100 call", Kind::Call),
+            ("o100.0 endsub", Kind::Definition),
+            ("o-100 call", Kind::Call),
+            ("o-[100] call", Kind::Call),
+            ("oabs[-100] call", Kind::Call),
+            ("O ABS [ -100 ] call [1]", Kind::Call),
+            ("o##2 call", Kind::Call),
+            ("o#[#2] call", Kind::Call),
+            ("o.5 call", Kind::Call),
+            ("o#1 endwhile", Kind::Flow),
+        ] {
+            assert_eq!(statements(text, l), [(text.to_string(), kind)], "{text}");
+        }
+        assert_eq!(o_label(b"o+100 sub"), b"o100");
+        assert_eq!(o_label(b"O 1 0 0 . 0 0 call"), b"o100");
+        assert_eq!(o_label(b"o-100 call"), b"o-100");
+        assert_eq!(o_label(b"o-[-100] call"), b"o100");
+        assert_eq!(o_label(b"o100.00005 call"), b"o100");
+        assert_eq!(o_label(b"o99.99995 call"), b"o100");
+        assert_eq!(o_label(b"o100.5 call"), b"o100.5");
+        assert_eq!(o_label(b"o-0 call"), b"o0");
+        assert_eq!(o_label(b"oABS[-100]call[1]"), b"oabs[-100]");
+        assert_eq!(o_label(b"o##2 call"), b"o##2");
+        assert_eq!(o_label(b"o#[#2]endsub"), b"o#[#2]");
+        assert_eq!(o_label_len(b"o abs [-100] call [5]"), 12);
+        assert_eq!(o_keyword(b"o+100sub").as_deref(), Some(b"sub".as_slice()));
+        assert_eq!(o_keyword(b"o100.0sub").as_deref(), Some(b"sub".as_slice()));
+        assert!(computed_label(b"o100.5") && computed_label(b"o##2"));
+        assert!(!computed_label(b"o-100") && !computed_label(b"o<a>") && !computed_label(b"o7"));
+        // an unknown function is refused where it is read; `o` before a word is no label
+        assert!(read("onope[1] call", l)
+            .unwrap_err()
+            .contains("unknown function"));
+        assert_eq!(rs274_integer(2.00009), Some(2));
+        assert_eq!(rs274_integer(1.99991), Some(2));
+        assert_eq!(rs274_integer(2.5), None);
+        assert_eq!(rs274_integer(-2.00009), Some(-2));
     }
 
     #[test]

@@ -341,7 +341,7 @@ impl Bodies {
         let computed = self
             .calls
             .iter()
-            .filter(|(label, _)| matches!(label.get(1), Some(b'#' | b'[')))
+            .filter(|(label, _)| crate::statement::computed_label(label))
             .map(|(_, &(_, line))| line)
             .min();
         for (label, body) in unshown {

@@ -613,7 +613,10 @@ fn parse_lines<'py>(
                 };
                 blocks.append(Py::new(py, block)?)?;
             }
-            Err(error) => {
+            Err(mut error) => {
+                if let Some(note) = end.as_ref().and_then(|e| e.inner.unsure_note()) {
+                    error.message.push_str(&note);
+                }
                 let exception = parse_error(py, &error, text, &file, number)?;
                 if !collect {
                     return Ok((blocks, Some(exception)));
@@ -725,7 +728,10 @@ fn count_lines(
                 total += words.len();
                 comments += extras.map_or(0, |e| e.comments.len());
             }
-            Err(error) => {
+            Err(mut error) => {
+                if let Some(note) = end.as_ref().and_then(|e| e.inner.unsure_note()) {
+                    error.message.push_str(&note);
+                }
                 return Err(PyErr::from_value(parse_error(
                     py, &error, text, &file, number,
                 )?));

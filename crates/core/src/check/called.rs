@@ -1343,7 +1343,42 @@ mod tests {
         // a number in brackets is that number's label
         let bracket = named.replace("o100 call", "o[100] call");
         assert_eq!(fired(lcnc(), &bracket, Rule::TravelExceeded), [(7, 1)]);
-        for call in ["o[#1+0] call", "o#2 call"] {
+        // the other labels rs274's read_o reads (interp_read.cc, read_integer_value): a sign,
+        // a point with no fraction, an operation, a parameter whose number is a parameter's,
+        // within 0.0001 of a whole number; each called o100 under rs274 -g
+        // (tests/test_linuxcnc_o_labels.py)
+        for call in [
+            "o+100 call",
+            "o100.0 call",
+            "o 1 0 0 . 0 0 call",
+            "o-[-100] call",
+            "o[#1+0] call",
+            "o[#1*2-100] call",
+            "o100.00005 call",
+            "o99.99995 call",
+            "o##2 call",
+            "o#[#2] call",
+        ] {
+            let text = named
+                .replace("#1=100", "#1=100\n#2=1")
+                .replace("o100 call", call);
+            assert_eq!(
+                fired(lcnc(), &text, Rule::TravelExceeded),
+                [(8, 1)],
+                "{call}"
+            );
+        }
+        assert_eq!(
+            findings(
+                lcnc(),
+                &named.replace("o100 call", "o100.5 call"),
+                Rule::LinuxCncRefuses
+            )
+            .len(),
+            1
+        );
+        // a function's value is not worked out here
+        for call in ["o#2 call", "oabs[-100] call"] {
             let text = named.replace("o100 call", call);
             assert_eq!(fired(lcnc(), &text, Rule::TravelExceeded), [], "{call}");
             let notes: Vec<_> = findings(lcnc(), &text, Rule::NotFollowed)

@@ -786,6 +786,10 @@ pub struct Checker {
     /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
     /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
     params: HashMap<Vec<u8>, Dec>,
+    /// LinuxCNC: the parameters known where the definition open was read (`o100 sub`): rs274
+    /// reads its body without running it, so an endsub's computed label (`o#1 endsub`) has
+    /// their values where rs274 reads it.
+    linuxcnc_sub_params: HashMap<Vec<u8>, Dec>,
     /// Custom Macro B: the sequence numbers a `GOTO` already read names (a jump forward may
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
     /// (Each with the line of the first jump naming it and whether another names it too;
@@ -1187,6 +1191,7 @@ impl Checker {
             unknown_noted: false,
             elements_noted: HashSet::new(),
             params: HashMap::new(),
+            linuxcnc_sub_params: HashMap::new(),
             goto_targets: HashMap::new(),
             goto_computed: false,
             goto_computed_line: 0,

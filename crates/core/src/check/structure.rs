@@ -726,7 +726,8 @@ impl Checker {
             }
             None
         } else {
-            let statement = dialect::subroutine_statement(b.statements);
+            let statement = dialect::subroutine_statement(b.statements)
+                .map(|(opens, label)| self.linuxcnc_definition_label(b, opens, label));
             self.linuxcnc_body_locals(b, statement.as_ref());
             self.definition_after_call(b, statement.as_ref());
             self.definition_feed(statement.as_ref());
@@ -911,7 +912,7 @@ impl Checker {
                 String::from_utf8_lossy(&crate::statement::o_label(text))
             );
             let label = self.linuxcnc_call_label(text);
-            if label.len() < 2 || label[1] != b'<' && !label[1..].iter().all(u8::is_ascii_digit) {
+            if label.len() < 2 || crate::statement::computed_label(&label) {
                 self.call_unknown(token, b.line, column);
             } else if self.early_call(super::called::Key::Label(label), token, (b.line, column)) {
                 // (the shift at the call kept, as a FANUC's M98's is: the end that follows
@@ -1009,39 +1010,113 @@ impl Checker {
         }
     }
 
-    /// The subroutine a LinuxCNC `o… call` statement names: its o-word's label
+    /// The subroutine a LinuxCNC `o… call` statement names, and the block any other o-word
+    /// statement opens or closes: its o-word's label
     /// ([`crate::statement::o_label`]), and for a label worked out as the line runs (`o#1
-    /// call`, `o[#1] call`: rs274ngc `read_o` reads a parameter or an expression there) the
-    /// numbered one of the parameter's value where the checker knows it as a whole number;
-    /// else the label as written, which names no definition (the call's target not known).
+    /// call`, `o[#1] call`, `o##2 call`: rs274ngc `read_o` reads a parameter or an expression
+    /// there, at the line) the numbered one of its value where the checker knows it and it is
+    /// an integer as rs274 reads one; else the label as written, which names no definition
+    /// (the call's target not known).
     fn linuxcnc_call_label(&self, text: &[u8]) -> Vec<u8> {
         let label = crate::statement::o_label(text);
-        if matches!(label.get(1), Some(b'#' | b'[')) {
-            if let Some(n) = self.constant(&label[1..]).filter(|n| n.is_whole()) {
-                if n.trunc() >= 0 {
-                    return format!("o{}", n.trunc()).into_bytes();
-                }
+        if crate::statement::computed_label(&label) {
+            if let Some(n) = self
+                .linuxcnc_label_value(&label)
+                .and_then(crate::statement::rs274_integer)
+            {
+                return format!("o{n}").into_bytes();
             }
         }
         label
     }
 
-    /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a parameter
-    /// the checker knows holds a number with a fraction (`#1=100.5`): rs274 stops there,
-    /// "Non integer value for integer" (`read_o` reads the label as an integer; `rs274 -g`;
-    /// review 45, finding L2).
+    /// The label of a LinuxCNC `sub` or `endsub` as rs274 matches it: rs274ngc's `read_o`
+    /// works out a computed label where it reads the line (`#1=100` ... `o100 sub` ... `o#1
+    /// endsub` closes o100 sub: `rs274 -g`; with #1 0 the definition is never closed, "File
+    /// ended with no percent sign or program end"), so its value where the checker knows it
+    /// ([`Checker::linuxcnc_call_label`]). An endsub whose value it does not know is taken as
+    /// closing the definition open, said (TG140): rs274 reads on to another endsub where the
+    /// value is another label.
+    fn linuxcnc_definition_label(
+        &mut self,
+        b: &BlockView<'_>,
+        opens: bool,
+        label: Vec<u8>,
+    ) -> (bool, Vec<u8>) {
+        if opens && self.open_definition.is_none() {
+            self.linuxcnc_sub_params.clone_from(&self.params);
+        }
+        if !crate::statement::computed_label(&label) {
+            return (opens, label);
+        }
+        let Some(&(column, _, text)) = b.statements.iter().find(|s| s.1 == Kind::Definition) else {
+            return (opens, label);
+        };
+        // (an endsub's value is read with the parameters the definition's first line had)
+        if !opens {
+            std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
+        }
+        let known = self.linuxcnc_call_label(text);
+        if !opens {
+            std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
+        }
+        if !crate::statement::computed_label(&known) {
+            return (opens, known);
+        }
+        match &self.open_definition {
+            Some((line, _, open)) if !opens => {
+                let open = open.clone();
+                let message = format!(
+                    "{} endsub: its label is worked out as the line runs, from a value the \
+                     checker does not know; taken as closing {} sub (line {line}), which rs274 \
+                     does only where the value is that label's (else it reads on to another \
+                     endsub)",
+                    String::from_utf8_lossy(&label),
+                    String::from_utf8_lossy(&open),
+                );
+                self.report(Rule::NotFollowed, message, b.line, column);
+                (opens, open)
+            }
+            _ => (opens, label),
+        }
+    }
+
+    /// The value of a LinuxCNC o-word label worked out as the line runs (`o#1`, `o[#1+1]`,
+    /// `o##2`; [`crate::statement::computed_label`]) where the checker knows the parameters it reads, as
+    /// rs274ngc's `read_o` reads it (`read_integer_value`, before it is taken as an
+    /// integer). None for one it does not know (a function's value among them).
+    fn linuxcnc_label_value(&self, label: &[u8]) -> Option<f64> {
+        self.linuxcnc_value_of(label.get(1..)?)
+    }
+
+    /// [`Checker::linuxcnc_label_value`] of the label's value, `expression`.
+    fn linuxcnc_value_of(&self, expression: &[u8]) -> Option<f64> {
+        // `##2`, `#[#2]`: the parameter whose number the value after the `#` is
+        if let Some(inner @ [b'#' | b'[', ..]) = expression.strip_prefix(b"#") {
+            let n = crate::statement::rs274_integer(self.linuxcnc_value_of(inner)?)?;
+            return self
+                .constant(format!("#{n}").as_bytes())
+                .map(|d| d.to_f64());
+        }
+        if expression.len() > 200 {
+            return None; // (a chain of terms is a tree as deep, walked by recursion)
+        }
+        let tree = crate::expr::tree(expression).ok()?;
+        let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
+        crate::expr::linuxcnc_value(&tree, expression, &param).ok()?
+    }
+
+    /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a value the
+    /// checker knows holds a fraction (`#1=100.5`, `o[100.5] call`, `o100.5 call`): rs274
+    /// stops there, "Non integer value for integer" (`read_o` reads the label as an integer;
+    /// `rs274 -g`; review 45, finding L2; review 47, F3).
     #[cold]
     #[inline(never)]
     fn linuxcnc_fractional_label(&mut self, label: &[u8], line: usize, column: usize) {
-        // (a parameter's known value, or a number in brackets: `o[100.5] call`; review 47, F3)
-        let written = || {
-            let inside = label.strip_prefix(b"o[")?.strip_suffix(b"]")?;
-            crate::decimal::Dec::parse(std::str::from_utf8(inside).ok()?)
-        };
-        let Some(value) = self.constant(&label[1..]).or_else(written) else {
+        let Some(value) = self.linuxcnc_label_value(label) else {
             return;
         };
-        if value.is_whole() {
+        if crate::statement::rs274_integer(value).is_some() {
             return;
         }
         let message = format!(
@@ -1068,7 +1143,7 @@ impl Checker {
                 && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
             {
                 let label = self.linuxcnc_call_label(text);
-                if matches!(label.get(1), Some(b'#' | b'[')) {
+                if crate::statement::computed_label(&label) {
                     self.linuxcnc_fractional_label(&label, b.line, column);
                 }
                 self.linuxcnc_calls.insert(label);
@@ -1183,24 +1258,16 @@ impl Checker {
 
     /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
     /// expression (interp_read.cc `read_m`, `read_integer_value`: `M#<two>` and `M[1+1]` are
-    /// M2) -- where the checker knows its value: the whole number within 0.0001 of it, rs274's
-    /// tolerance. None for a value it does not know or that is no whole number.
+    /// M2) -- where the checker knows its value, by the rule every reading's end follows
+    /// ([`dialect::linuxcnc_m_number`]). None for a value it does not know or no integer.
     pub(super) fn linuxcnc_m_number(&self, w: &Word<'_>) -> Option<i64> {
         let value = if w.expression.is_empty() {
-            std::str::from_utf8(w.number)
-                .ok()?
-                .trim()
-                .parse::<f64>()
-                .ok()?
-        } else if w.expression.len() > 200 {
-            return None; // (a chain of terms is a tree as deep, walked by recursion)
+            w.number
         } else {
-            let tree = crate::expr::tree(w.expression).ok()?;
-            let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
-            super::tooling::linuxcnc_value(&tree, w.expression, &param).ok()??
+            w.expression
         };
-        let whole = value.round();
-        ((value - whole).abs() <= 0.0001).then_some(whole as i64)
+        let param = |p: &[u8]| self.constant(p).map(|d| d.to_f64());
+        dialect::linuxcnc_m_number(value, &param)
     }
 
     /// TG412: LinuxCNC's main program reads a local named parameter (`#<name>`) that no line
@@ -1393,7 +1460,10 @@ impl Checker {
         let keyword = crate::statement::o_keyword(text);
         let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
         let mut all_ended = None;
-        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text) {
+        // (a computed label, `o#1 endwhile`, by its value where rs274 reads the line: matched
+        // to the `o5 while` of #1=5, `rs274 -g`)
+        let label = self.linuxcnc_call_label(text);
+        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label) {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
             if let Some(entry) = self.linuxcnc_if_ends.iter_mut().rfind(|e| e.0 == at) {
@@ -1404,7 +1474,6 @@ impl Checker {
                 self.linuxcnc_end_depth = None;
             }
         } else if keyword.as_deref() == Some(b"endif".as_slice()) {
-            let label = crate::statement::o_label(text);
             if let Some(at) = self.linuxcnc_open_flow.iter().rposition(|l| *l == label) {
                 let ended = branch_ended(at);
                 all_ended = self
@@ -1416,7 +1485,7 @@ impl Checker {
             }
         }
         let depth = self.linuxcnc_open_flow.len();
-        linuxcnc_flow(&mut self.linuxcnc_open_flow, text);
+        linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
         self.linuxcnc_if_ends.retain(|e| e.0 < open);
         if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
@@ -2381,10 +2450,15 @@ pub fn nested_comment(text: &[u8]) -> usize {
 /// `o1 while` closes the `o1 do` it ends, or opens a loop; an `endif`, `endwhile` or
 /// `endrepeat` closes its label's block (and any left open inside it: rs274 refuses those).
 fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
+    linuxcnc_flow_of(open, text, crate::statement::o_label(text));
+}
+
+/// [`linuxcnc_flow`] of a statement whose label is `label` (a computed one's value where the
+/// checker knows it: [`Checker::linuxcnc_call_label`]).
+fn linuxcnc_flow_of(open: &mut Vec<Vec<u8>>, text: &[u8], label: Vec<u8>) {
     let Some(keyword) = crate::statement::o_keyword(text) else {
         return;
     };
-    let label = crate::statement::o_label(text);
     let at = open.iter().rposition(|l| *l == label);
     match (keyword.as_slice(), at) {
         (b"while", Some(at)) | (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
@@ -2396,12 +2470,11 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 }
 
 /// An `else` or `elseif` of a condition open in `open`: the index of its `if` there.
-fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8]) -> Option<usize> {
+fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8], label: &[u8]) -> Option<usize> {
     let keyword = crate::statement::o_keyword(text)?;
     if !matches!(keyword.as_slice(), b"else" | b"elseif") {
         return None;
     }
-    let label = crate::statement::o_label(text);
     open.iter().rposition(|l| *l == label)
 }
 
@@ -2447,6 +2520,41 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
+
+    /// A closing o-word with a computed label (`o#1 endsub`, `o#1 endif`): rs274ngc's
+    /// `read_o` works out its value where it reads the line and matches the label by it
+    /// (`rs274 -g`: `#1=100` closes `o100 sub`, `#1=200` leaves it open, "File ended with no
+    /// percent sign or program end"; `#1=5` inside `o5 if` closes it).
+    #[test]
+    fn a_computed_closing_label_is_matched_by_its_value() {
+        let lcnc = || of_family(Family::LinuxCnc);
+        let errors = |text: &str| -> Vec<(Rule, usize)> {
+            check(lcnc(), text)
+                .iter()
+                .filter(|f| f.rule.severity() == crate::rules::Severity::Error)
+                .map(|f| (f.rule, f.line))
+                .collect()
+        };
+        let sub = "G21 G90\n#1=100\no100 sub\nG0 X1\no#1 endsub\no100 call\nM2\n";
+        assert_eq!(errors(sub), []);
+        assert_eq!(
+            errors(&sub.replace("#1=100", "#1=200")),
+            [(Rule::NoProgramEnd, 3)]
+        );
+        // a value the checker does not know: taken as closing, said
+        let unknown = sub.replace("#1=100", "#1=[#5220*100]");
+        assert_eq!(errors(&unknown), []);
+        let notes: Vec<_> = findings(lcnc(), &unknown, Rule::NotFollowed)
+            .into_iter()
+            .filter(|f| f.message.contains("value the checker does not know"))
+            .map(|f| f.line)
+            .collect();
+        assert_eq!(notes, [5]);
+        // a condition closed by its value: the line after it runs, judged
+        let flow = "G21 G90\no5 if [1]\n#1=5\no#1 endif\nG0 X#<nope>\nM2\n";
+        assert_eq!(errors(flow), [(Rule::LinuxCncRefuses, 5)]);
+        assert_eq!(errors(&flow.replace("#1=5", "#1=6")), []);
+    }
 
     #[test]
     fn a_call_of_a_sub_that_sets_no_feed_mode_keeps_the_mode_before_it() {

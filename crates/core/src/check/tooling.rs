@@ -140,45 +140,7 @@ impl Checker {
 /// it (the operands of a function, a power or `MOD` included), None where a parameter, a
 /// function or an operator other than `+ - * /` leaves the value to the machine.
 fn linuxcnc_constant(e: &crate::expr::Expr, text: &[u8]) -> Result<Option<f64>, ()> {
-    linuxcnc_value(e, text, &|_| None)
-}
-
-/// [`linuxcnc_constant`] where a parameter (`#<two>`, `#5`, its text) has the value `param`
-/// gives it, if any.
-pub(super) fn linuxcnc_value(
-    e: &crate::expr::Expr,
-    text: &[u8],
-    param: &dyn Fn(&[u8]) -> Option<f64>,
-) -> Result<Option<f64>, ()> {
-    use crate::expr::Expr;
-    Ok(match e {
-        Expr::Number(a, b) => std::str::from_utf8(&text[*a..*b])
-            .ok()
-            .and_then(|t| t.replace([' ', '\t'], "").parse::<f64>().ok()),
-        Expr::Param(a, b) => param(&text[*a..*b]),
-        Expr::Sign(sign, inner) => {
-            linuxcnc_value(inner, text, param)?.map(|v| if *sign == b'-' { -v } else { v })
-        }
-        Expr::Binary(op, l, r) => {
-            let a = linuxcnc_value(l, text, param)?;
-            let b = linuxcnc_value(r, text, param)?;
-            if *op == b'/' && b == Some(0.0) {
-                return Err(());
-            }
-            match (op, a, b) {
-                (b'+', Some(a), Some(b)) => Some(a + b),
-                (b'-', Some(a), Some(b)) => Some(a - b),
-                (b'*', Some(a), Some(b)) => Some(a * b),
-                (b'/', Some(a), Some(b)) => Some(a / b),
-                _ => None,
-            }
-        }
-        Expr::Call(inner) => {
-            linuxcnc_value(inner, text, param)?;
-            None
-        }
-        _ => None,
-    })
+    crate::expr::linuxcnc_value(e, text, &|_| None)
 }
 
 /// rs274ngc's refusal of an M66 (wait on an input) by its words, interp_convert.cc
