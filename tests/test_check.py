@@ -510,9 +510,43 @@ def test_g53_under_g91_and_x_with_u_in_one_block_are_not_judged(tmp_path: Path) 
     assert "writes X and U" in got[0][3]
     assert [f[:3] for f in found("u.nc", "fanuc-lathe", xu.replace("X100. U520.", "U520."))] \
         == [(4, 4, "TG601")]
-    # U from a position not known (after G28 U0 W0): not judged
+    # U from a position not known (after G28 U0 W0): no position judged, but a U longer than
+    # X's whole travel (510 mm) is out of travel wherever it starts (incr48); one that fits
+    # says nothing
     g28 = "%\nO1000\nG0 X0 Z0\nG28 U0 W0\nG0 U520.\nM30\n%\n"
-    assert found("g28.nc", "fanuc-lathe", g28) == []
+    got = found("g28.nc", "fanuc-lathe", g28)
+    assert [f[:3] for f in got] == [(5, 4, "TG601")]
+    assert got[0][3].startswith(
+        "X moves 520 (U520.) with its start not known: more than its whole travel of 510 "
+        "(-10 to 500), out of travel wherever it starts")
+    assert found("g28fits.nc", "fanuc-lathe", g28.replace("U520.", "U500.")) == []
+
+
+def test_increments_wider_than_the_travel_from_a_start_not_known(tmp_path: Path) -> None:
+    """Issue 32 (incr48): an axis whose position is not known (after G91 G28, a parameter's
+    X#1) moved by G91 increments whose running sum, 0 included, reaches further than its whole
+    travel is out of travel wherever it started (TG601 once a run); a run that fits, or that
+    an absolute position interrupts, is not. fanuc-mill X -762 to 762 (1524 mm wide)."""
+    def found(name: str, program: str) -> list[tuple[int, int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG601",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["column"], f["rule"], f["message"])
+                for f in map(json.loads, out.splitlines())]
+
+    run_ = "%\nO1000\nG21 G90 G54\nG0 X#1 Y0\nG91 G0 X800.\nY10.\nX800.\nG90\nM30\n%\n"
+    got = found("run.nc", run_)
+    assert [f[:3] for f in got] == [(7, 1, "TG601")]
+    assert got[0][3].startswith("X moves over 1600 mm in 2 increments in a row (the last X800.) "
+                                "with its start not known: more than its whole travel of 1524")
+    # back and forth within the travel: nothing; an absolute X between: nothing
+    assert found("back.nc", run_.replace("\nX800.", "\nX-800.")) == []
+    assert found("abs.nc", run_.replace("Y10.", "G90 X0\nG91")) == []
+    # in inches: 61 in is 1549.4 mm, 59 in 1498.6 mm
+    inch = "%\nO1000\nG20 G90 G54\nG0 X#1 Y0\nG91 G0 X61.\nG90\nM30\n%\n"
+    assert [f[:3] for f in found("inch.nc", inch)] == [(5, 8, "TG601")]
+    assert found("inch59.nc", inch.replace("X61.", "X59.")) == []
 
 
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(

@@ -1702,8 +1702,16 @@ def test_an_okuma_m98_is_the_machine_s_code_not_a_call():
     program = "$O1%\nG15 H1\nG90 G00 X0 Y0 Z5.\nM98\nG91 G00 X5000.\nM02\n"
     assert "TG601" in rules(program, "okuma-mill")
     assert "TG140" not in rules(program, "okuma-mill")
+    # a FANUC's M98 P100 calls a program not in the file: the position after it is not known
+    # (TG140), and X5000. is judged as an increment from a start not known, longer than X's
+    # whole travel (incr48), not as a position from X0
     fanuc = "%\nO1\nG90 G00 X0 Y0 Z5.\nM98 P100\nG91 G00 X5000.\nM30\n%\n"
-    assert "TG140" in rules(fanuc, "fanuc-mill") and "TG601" not in rules(fanuc, "fanuc-mill")
+    assert "TG140" in rules(fanuc, "fanuc-mill")
+    travel = [f.message for f in findings(fanuc, "fanuc-mill") if f.rule == "TG601"]
+    assert len(travel) == 1
+    assert travel[0].startswith("X moves 5000 (X5000.) with its start not known")
+    fits = fanuc.replace("X5000.", "X500.")
+    assert "TG601" not in rules(fits, "fanuc-mill")
 
 
 # An Okuma OSP lathe's arcs give their radius by L (OSP-P200L Programming Manual 5238-E, section

@@ -126,6 +126,14 @@ pub fn polar_axes(plane: i64) -> (u8, u8) {
     }
 }
 
+/// A length `value` in `units` as millimetres.
+fn to_mm(value: Dec, units: Units) -> f64 {
+    match units {
+        Units::Inch => value.to_f64() * 25.4,
+        Units::Metric => value.to_f64(),
+    }
+}
+
 /// The bit of `letter` in [`ModalState::unknown`] and [`BlockValues::unknown`].
 pub const fn bit(letter: u8) -> u32 {
     1 << (letter - b'A')
@@ -649,6 +657,38 @@ pub struct ModalMachine {
     /// C's) were applied so far, the reset's included: the checker asks whether a program
     /// wrote one of its own before its first move (crate::check::called).
     pub distance_codes: u32,
+    /// Each axis's increments applied while its position is not known ([`Drift`]), by its
+    /// place in [`AXES`]: started again wherever the axis is lost anew.
+    pub drift: [Drift; 9],
+}
+
+/// The increments (G91, a lathe's U and W) an axis moved by while its position stays not
+/// known, in millimetres: their running sum and the least and most of its partial sums (0,
+/// where the run began, included). The checker compares `most - least` with the axis's whole
+/// travel (crate::check's TG601): a run wider than it is out of travel wherever it started.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Drift {
+    pub sum: f64,
+    pub least: f64,
+    pub most: f64,
+    /// How many increments the run has.
+    pub moves: u32,
+    /// The run grew since the checker last looked, and it has been said (TG601, once a run).
+    pub grew: bool,
+    pub said: bool,
+}
+
+impl Drift {
+    /// Add an increment `by` (millimetres) to the run.
+    #[cold]
+    #[inline(never)]
+    fn add(&mut self, by: f64) {
+        self.sum += by;
+        self.least = self.least.min(self.sum);
+        self.most = self.most.max(self.sum);
+        self.moves += 1;
+        self.grew = true;
+    }
 }
 
 impl ModalMachine {
@@ -668,6 +708,7 @@ impl ModalMachine {
             units_convert_position: true,
             taken: None,
             distance_codes: 0,
+            drift: [Drift::default(); 9],
         };
         machine.reset();
         machine
@@ -890,6 +931,7 @@ impl ModalMachine {
         s.feed = None;
         s.speed = None;
         s.unknown |= FORGOTTEN;
+        self.drift = [Drift::default(); 9];
     }
 
     /// The position alone is no longer known (a SINUMERIK's `REPOSA` returns to where an
@@ -897,6 +939,7 @@ impl ModalMachine {
     pub fn forget_position(&mut self) {
         self.state.position = [None; 9];
         self.state.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
+        self.drift = [Drift::default(); 9];
     }
 
     /// The position of the axis `letter` alone is no longer known (a SINUMERIK's positioning
@@ -905,6 +948,7 @@ impl ModalMachine {
         if let Some(i) = axis_index(letter) {
             self.state.position[i] = None;
             self.state.unknown |= bit(letter);
+            self.drift[i] = Drift::default();
         }
     }
 
@@ -1129,6 +1173,7 @@ impl ModalMachine {
                     if transform || s.position[i].is_some() || v.get(axis).is_some() {
                         s.position[i] = None;
                         s.unknown |= bit(axis);
+                        self.drift[i] = Drift::default();
                     }
                 }
                 return;
@@ -1152,6 +1197,7 @@ impl ModalMachine {
             // positions is known in the program's coordinates after it
             s.position = [None; 9];
             s.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
+            self.drift = [Drift::default(); 9];
             return;
         }
         // (an Okuma mill's G53 cancels the tool length offset, OSP List of G Codes: a move)
@@ -1164,6 +1210,7 @@ impl ModalMachine {
                 if v.get(axis).is_some() || v.unknown & bit(axis) != 0 {
                     s.position[i] = None;
                     s.unknown |= bit(axis);
+                    self.drift[i] = Drift::default();
                 }
             }
             // a lathe's U and W there are X's and Z's incremental commands (`G28 U0 W0`: X
@@ -1211,6 +1258,7 @@ impl ModalMachine {
             if polar & bit(axis) != 0 {
                 s.position[i] = None;
                 s.unknown |= bit(axis);
+                self.drift[i] = Drift::default();
                 continue;
             }
             if self.settings.dwell_word(v, axis) {
@@ -1232,6 +1280,7 @@ impl ModalMachine {
                     // and Z stand after one is not followed
                     s.position[j] = None;
                     s.unknown |= bit(on);
+                    self.drift[j] = Drift::default();
                     continue;
                 }
                 // (X and U, Z and W, in one block: X and Z not known after it,
@@ -1241,6 +1290,10 @@ impl ModalMachine {
                         .unwrap_or(Dec::ZERO)
                         .checked_add(value)
                         .or(s.position[j]);
+                } else {
+                    // its length is known all the same (the checker's TG601 of a run wider
+                    // than the travel)
+                    self.drift[j].add(to_mm(value, s.units));
                 }
                 continue;
             }
@@ -1248,11 +1301,19 @@ impl ModalMachine {
                 if v.unknown & bit(axis) != 0 {
                     s.position[i] = None;
                     s.unknown |= bit(axis);
+                    self.drift[i] = Drift::default();
                 }
                 continue;
             };
             if !absolute && s.unknown & bit(axis) != 0 {
-                continue; // an increment from an unknown position is unknown
+                // an increment from an unknown position is unknown; its length is known (a
+                // linear axis's, outside a canned cycle, whose words are its data too)
+                if s.cycle.is_none() && taken.is_none() && !matches!(axis, b'A' | b'B' | b'C') {
+                    self.drift[i].add(to_mm(value, s.units));
+                } else {
+                    self.drift[i] = Drift::default();
+                }
+                continue;
             }
             s.unknown &= !bit(axis);
             s.position[i] = if absolute {

@@ -519,6 +519,9 @@ impl Checker {
     }
 
     fn frame_on(&mut self, on: u8, b: &BlockView<'_>, token: String, column: usize) {
+        // (the increments under a frame move the machine's axes otherwise: the runs of
+        // increments from positions not known, TG601's, start again; none is judged under it)
+        self.machine.drift = Default::default();
         let place = on.trailing_zeros() as usize;
         let okuma = self.config.family == Family::Okuma;
         self.frames.moved[place] = false;
@@ -1746,6 +1749,8 @@ impl Checker {
             }
             moved = &[];
             places = 0;
+            // (nor a run of increments, TG601's)
+            self.machine.drift = Default::default();
         }
         // a frame's block whose axis words are its data (G51.1 X0: the mirror's axis, no
         // move) adds no position: where the tool stands may be a span's that the block
@@ -1923,6 +1928,8 @@ impl Checker {
         if (places & self.travel.places() == 0 && self.frames.map.is_none()) || self.units_unknown {
             if self.units_unknown && places & self.travel.places() != 0 {
                 self.unknown_call_note();
+                // (increments in units not known: no run of them is judged)
+                self.machine.drift = Default::default();
             }
             return;
         }
@@ -1963,6 +1970,10 @@ impl Checker {
                 let (Some(_), Some(position)) =
                     (self.travel.of_place(i), self.machine.state.position[i])
                 else {
+                    // (the position not known: its increments' run, if it grew)
+                    if self.machine.drift[i].grew {
+                        self.drifted(i, line, facts, uw);
+                    }
                     continue;
                 };
                 let at = position.to_f64() * factor;
@@ -1994,6 +2005,9 @@ impl Checker {
             }
             let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
             else {
+                if let Some(i) = axis_index(axis).filter(|&i| self.machine.drift[i].grew) {
+                    self.drifted(i, line, facts, uw);
+                }
                 continue;
             };
             let at = position.to_f64() * factor;
@@ -2069,6 +2083,70 @@ impl Checker {
         if self.frames.map.is_some() && !moved.is_empty() {
             self.mapped_spans(moved, line, facts);
         }
+    }
+
+    /// An axis whose position is not known moved by increments of known lengths (G91, a
+    /// lathe's U and W: [`crate::modal::Drift`]): where the extent of their running sum (0
+    /// included) is wider than the axis's whole travel, the axis is out of travel wherever it
+    /// started, TG601 once a run (issue 32: `G28 U0 W0` then `G0 U520.` on a 510 mm X).
+    /// Never where a frame is on (its increments move the machine's axes otherwise).
+    #[cold]
+    #[inline(never)]
+    fn drifted(&mut self, i: usize, line: usize, facts: &Facts<'_>, uw: bool) {
+        let drift = &mut self.machine.drift[i];
+        drift.grew = false;
+        if self.frames.on != 0 {
+            *drift = Default::default();
+            return;
+        }
+        let Some((low, high)) = self.travel.of_place(i) else {
+            return;
+        };
+        let factor = match self.config.limit_units {
+            Units::Metric => 1.0,
+            Units::Inch => 1.0 / 25.4,
+        };
+        let extent = (drift.most - drift.least) * factor;
+        if drift.said || extent <= high - low + 1e-9 {
+            return;
+        }
+        drift.said = true;
+        let moves = drift.moves;
+        let axis = AXES[i];
+        // the word that moved it: U or W where they stand for X and Z
+        let letter = match axis {
+            b'X' if uw => b'U',
+            b'Z' if uw => b'W',
+            _ => axis,
+        };
+        let word = facts
+            .words
+            .iter()
+            .find(|w| w.letter == letter)
+            .or_else(|| facts.words.iter().find(|w| w.letter == axis));
+        let column = word.map_or(1, |w| w.column);
+        let token = word.map_or(String::new(), |w| {
+            String::from_utf8_lossy(w.token).into_owned()
+        });
+        let unit = match self.config.limit_units {
+            Units::Metric => "mm",
+            Units::Inch => "in",
+        };
+        let what = if moves == 1 {
+            format!("{} moves {} ({token})", axis as char, round6(extent))
+        } else {
+            format!(
+                "{} moves over {} {unit} in {moves} increments in a row (the last {token})",
+                axis as char,
+                round6(extent)
+            )
+        };
+        let message = format!(
+            "{what} with its start not known: more than its whole travel of {} ({low} to \
+             {high}), out of travel wherever it starts",
+            round6(high - low)
+        );
+        self.report_limit(Rule::TravelExceeded, message, line, column);
     }
 
     /// A position in machine coordinates (G53) written under G91 (in force, or in its
@@ -3071,9 +3149,10 @@ mod tests {
             // X and W (two axes) are no such block
             let xw = "G00 X0 Z0\nG00 X100. W-50.\n";
             assert_eq!(findings(lathe.clone(), &program(xw), Rule::NotFollowed), []);
-            // U from a position not known: the file's start, a parameter
+            // U from a position not known: the file's start, a parameter (a U that fits
+            // the travel: one wider than it is out of travel from anywhere, issue 32)
             for start in ["", "G00 X0 Z0\nG00 X#1\n"] {
-                let u = format!("{start}G00 U1050.\nG00 X-100.\n");
+                let u = format!("{start}G00 U950.\nG00 X-100.\n");
                 assert_eq!(
                     at(lathe.clone(), &u, Rule::TravelExceeded),
                     [],
@@ -3088,6 +3167,75 @@ mod tests {
         // where X was known, the same U is judged
         let known = "G00 X0 Z0\nG00 U600.\nG00 X-450.\n";
         assert_eq!(at(fanuc_lathe(), known, Rule::TravelExceeded), [(4, 5)]);
+    }
+
+    /// Issue 32 (lathe48's lost TG601): an axis whose position is not known, moved by
+    /// increments of known lengths, is out of travel wherever it started where the extent of
+    /// their running sum (0 included) is wider than its whole travel; never where it fits.
+    #[test]
+    fn increments_wider_than_the_travel_from_a_start_not_known() {
+        // the lathe: X -500 to 500, 1000 wide; after G28 U0 W0 X is not known
+        let lathe = "G00 X0 Z0\nG28 U0 W0\nG00 U1020.\n";
+        assert_eq!(at(fanuc_lathe(), lathe, Rule::TravelExceeded), [(4, 5)]);
+        let found = findings(fanuc_lathe(), &program(lathe), Rule::TravelExceeded);
+        assert!(
+            found[0].message.starts_with(
+                "X moves 1020 (U1020.) with its start not known: more than its whole travel \
+                 of 1000 (-500 to 500), out of travel wherever it starts"
+            ),
+            "{}",
+            found[0].message
+        );
+        // one that fits says nothing, nor does W within Z's 400
+        let fits = "G00 X0 Z0\nG28 U0 W0\nG00 U990. W-390.\n";
+        assert_eq!(at(fanuc_lathe(), fits, Rule::TravelExceeded), []);
+        // two increments in a row: 600 and 500 reach over 1100; 600 and -500 span 600
+        let two = "G00 X0 Z0\nG28 U0 W0\nG00 U600.\nG01 U500. F0.2\n";
+        assert_eq!(at(fanuc_lathe(), two, Rule::TravelExceeded), [(5, 5)]);
+        let back = "G00 X0 Z0\nG28 U0 W0\nG00 U600.\nG01 U-500. F0.2\nU-400.\n";
+        assert_eq!(at(fanuc_lathe(), back, Rule::TravelExceeded), []);
+        // started again where the axis is lost anew (a second G28): 600 + 600 is no run
+        let again = "G00 X0 Z0\nG28 U0 W0\nG00 U600.\nG28 U0\nG00 U600.\n";
+        assert_eq!(at(fanuc_lathe(), again, Rule::TravelExceeded), []);
+        // the mill under G91 from a position not known (X#1), a run said once
+        let mill = "G90 G00 X#1 Y0\nG91 X700.\nY10.\nX400.\nX100.\n";
+        assert_eq!(at(iso_mill(), mill, Rule::TravelExceeded), [(5, 1)]);
+        let found = findings(iso_mill(), &program(mill), Rule::TravelExceeded);
+        assert!(
+            found[0].message.starts_with(
+                "X moves over 1100 mm in 2 increments in a row (the last X400.) with its start \
+                 not known"
+            ),
+            "{}",
+            found[0].message
+        );
+        // an absolute position makes it known again: the increments after it are spans
+        let known = "G90 G00 X#1 Y0\nG91 X700.\nG90 X0\nG91 X400.\n";
+        assert_eq!(at(iso_mill(), known, Rule::TravelExceeded), []);
+        // G91 G28 Z0 (Z to the reference point) then Z-450. on Z's 400: out of travel
+        let home = "G91 G28 Z0\nG00 Z-450.\n";
+        assert_eq!(at(iso_mill(), home, Rule::TravelExceeded), [(3, 5)]);
+        // inch and metric: 41 in is 1041.4 mm on a metric mill (X 1000 mm), 39 in is 990.6 mm
+        for (inc, found) in [("X41.", vec![(5, 1)]), ("X39.", vec![])] {
+            let body = format!("G20\nG90 G00 X#1\nG91 {inc}\n");
+            let body = body.replace("G91 X", "G91\nX");
+            let mut metric = inch_mill();
+            metric.facts.limit_units = Units::Metric;
+            metric.facts.travel = vec![(
+                b'X',
+                Dec::parse("-500").unwrap(),
+                Dec::parse("500").unwrap(),
+            )];
+            assert_eq!(at(metric, &body, Rule::TravelExceeded), found, "{inc}");
+        }
+        // the inch mill (X -30 to 30 in) reads a G21 program's 1600 mm as 63 in
+        let metric = "G21\nG90 G00 X#1\nG91 X1600.\n";
+        assert_eq!(at(inch_mill(), metric, Rule::TravelExceeded), [(4, 5)]);
+        let metric = "G21\nG90 G00 X#1\nG91 X1500.\n";
+        assert_eq!(at(inch_mill(), metric, Rule::TravelExceeded), []);
+        // a canned cycle's words, a frame's increments: no run
+        let cycle = "G90 G00 X#1 Y0 Z50.\nG91 G81 X700. R-5. Z-10. F100.\nX700.\nG80\n";
+        assert_eq!(at(iso_mill(), cycle, Rule::TravelExceeded), []);
     }
 
     /// Review 46, F3: G53 under G91 (in force or in its block). No page at hand says what a

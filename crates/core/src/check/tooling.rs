@@ -1299,6 +1299,8 @@ impl Checker {
             for (k, &letter) in crate::modal::AXES[..3].iter().enumerate() {
                 state.position[k] = before.xyz[k];
                 state.unknown = state.unknown & !bit(letter) | before.unknown & bit(letter);
+                // (a control point moves no axis: a run of increments, TG601's, starts again)
+                self.machine.drift[k] = crate::modal::Drift::default();
             }
         } else if draws && in_nurbs && given.is_none() {
             if let Some(last) = self.linuxcnc_nurbs_last.take() {
@@ -1307,6 +1309,7 @@ impl Checker {
                     state.position[k] = last[k];
                     if last[k].is_none() {
                         state.unknown |= bit(letter);
+                        self.machine.drift[k] = crate::modal::Drift::default();
                     }
                 }
             }
