@@ -932,13 +932,19 @@ impl Checker {
             // its numbers are read in the call's units, not for want of a code; review 46, F5)
             let remark = self.machine.state.units_given.then(|| self.units_remark());
             for mut f in std::mem::take(&mut p.positions) {
+                // (a G53 before the body's own G90/G91 at a G91 call: kept for a later call
+                // under G90, which judges it; review 48, F7)
+                if inherited(&f) {
+                    p.positions.push(f);
+                    continue;
+                }
                 if let Some(remark) = &remark {
                     f.message = f.message.replacen(remark.as_str(), "", 1);
                 }
                 // (a position under a work offset is the body's work position plus the
                 // offset: not where it goes under a shift, or where its positions are not known)
                 let machine = f.message.contains("(G53)");
-                if !(machine || unshifted && known) || inherited(&f) {
+                if !(machine || unshifted && known) {
                     continue;
                 }
                 f.message = format!("{}{}", f.message, under(f.line));
@@ -951,7 +957,11 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
-                if !known && !f.message.contains("(G53)") || inherited(&f) {
+                if inherited(&f) {
+                    p.positions.push(f);
+                    continue;
+                }
+                if !known && !f.message.contains("(G53)") {
                     continue;
                 }
                 f.message = format!(
@@ -1508,6 +1518,27 @@ mod tests {
             ),
             "{found:?}"
         );
+    }
+
+    /// Review 48, F7: each call of a body judges its G53 written before a G90/G91 of its own
+    /// in the call's own mode: a G91 call first (not judged, TG140 once) leaves it to a later
+    /// G90 call, which says it; the other order says it at the G90 call as before.
+    #[test]
+    fn a_body_s_g53_is_judged_at_a_g90_call_after_a_g91_call() {
+        let g3 = "%\nO2000\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nG91\nM98 P2000\nG90\n\
+                  M98 P2000\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), g3), [(10, 5)]);
+        let said = findings(metric.clone(), g3, Rule::TravelExceeded);
+        assert!(said[0].message.contains("X goes to -800"), "{said:?}");
+        assert!(said[0].message.contains("line 10"), "{said:?}");
+        // the G90 call first: said there, once
+        let g5 = "%\nO2000\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nM98 P2000\nG91\n\
+                  M98 P2000\nG90\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), g5), [(7, 5)]);
+        // two G90 calls after the G91 one: said once
+        let twice = g3.replace("M30", "M98 P2000\nM30");
+        assert_eq!(limits(metric, &twice), [(10, 5)]);
     }
 
     /// Review 42, finding 7: a body's own G52 replaces the call's local shift (FANUC 0i-F,
