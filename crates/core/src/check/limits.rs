@@ -1862,6 +1862,9 @@ impl Checker {
 pub(super) const CYCLE_NOTED: u8 = 1;
 pub(super) const G53_INCREMENTAL_NOTED: u8 = 2;
 pub(super) const UW_BESIDE_NOTED: u8 = 4;
+/// A call of a program the checker does not read there, after which G90/G91 are not known
+/// ([`Checker::call_mode_lost`]).
+pub(super) const MODE_LOST_NOTED: u8 = 8;
 
 /// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
 const UW_PLACES: u32 = 1 << 3 | 1 << 5;

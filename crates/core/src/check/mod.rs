@@ -910,7 +910,9 @@ pub struct Checker {
     /// The notes (TG140) said once per file, by their bits: a lathe cycle whose positions are
     /// not all known ([`limits::CYCLE_NOTED`], `Checker::cycle_walked`), a G53 under G91
     /// ([`limits::G53_INCREMENTAL_NOTED`], `Checker::machine_incremental`), a lathe block
-    /// writing both X and U or Z and W ([`limits::UW_BESIDE_NOTED`], `Checker::uw_beside_xz`).
+    /// writing both X and U or Z and W ([`limits::UW_BESIDE_NOTED`], `Checker::uw_beside_xz`),
+    /// a call after which G90/G91 are not known ([`limits::MODE_LOST_NOTED`],
+    /// `Checker::call_mode_lost`).
     noted: u8,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
