@@ -515,6 +515,32 @@ def test_g53_under_g91_and_x_with_u_in_one_block_are_not_judged(tmp_path: Path) 
     assert found("g28.nc", "fanuc-lathe", g28) == []
 
 
+def test_review_48_a_body_s_g53_at_each_call_and_the_mode_after_a_later_program(
+        tmp_path: Path) -> None:
+    """Review 48, F7: a body's G53 written before its own G90/G91 is judged at a G90 call even
+    where a G91 call of it came first. F11: a program written after its call may leave G91
+    (M99 restores no mode): the caller's next position is not judged as absolute until it
+    writes its own G90/G91; one TG140 a file. fanuc-mill X -762 to 762."""
+    def found(name: str, program: str) -> list[tuple[int, int, str, str]]:
+        path = tmp_path / name
+        path.write_text(program)
+        out = run("check", str(path), "-p", "fanuc-mill", "--select", "TG601,TG140",
+                  "--format", "jsonl").stdout
+        return [(f["line"], f["column"], f["rule"], f["message"])
+                for f in map(json.loads, out.splitlines())
+                if "reads the program in file order" not in f["message"]]
+
+    g3 = ("%\nO2000\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nG91\nM98 P2000\nG90\n"
+          "M98 P2000\nM30\n%\n")
+    assert [f[:3] for f in found("g3.nc", g3)] == [(8, 5, "TG140"), (10, 5, "TG601")]
+    q1 = "%\nO1000\nG21 G90 G54 G17\nG0 X700. Y0\nM98 P3000\nG0 X-900.\nM30\nO3000\nG91\nM99\n%\n"
+    got = found("q1.nc", q1)
+    assert [f[:3] for f in got] == [(5, 5, "TG140")]
+    assert "whose G90/G91 the checker does not know" in got[0][3]
+    assert [f[:3] for f in found("q1g90.nc", q1.replace("G0 X-900.", "G90 G0 X-900."))] \
+        == [(5, 5, "TG140"), (6, 8, "TG601")]
+
+
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(
         tmp_path: Path) -> None:
     """Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is
