@@ -630,6 +630,7 @@ impl Checker {
             return;
         }
         self.machine.state.incremental = true;
+        self.mode_lost_codes = Some(self.machine.distance_codes);
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
             early.lost_codes = Some(self.machine.distance_codes);
         }
@@ -1634,7 +1635,12 @@ mod tests {
         assert_eq!(lost(q4), []);
         // a body read before its call that writes G90 last: judged as absolute after it
         let back = q4.replace("G91\nM99", "G91\nG90\nM99");
-        assert_eq!(limits(metric, &back), [(10, 4)]);
+        assert_eq!(limits(metric.clone(), &back), [(10, 4)]);
+        // a G52 after such a call read as before (not as one under G91, whose shift is not
+        // known): the later body's X900 under the call's G52 X700 still spans from X-600
+        let g52 = "%\nO1000\nG21 G90 G54\nG0 X-600. Y0\nG52 X700.\nG0 X0 Y0\nM98 P2000\n\
+                   G52 X0\nM30\nO2000\nG0 X900.\nM99\n%\n";
+        assert_eq!(limits(metric, g52), [(11, 4)]);
     }
 
     /// Review 42, finding 7: a body's own G52 replaces the call's local shift (FANUC 0i-F,

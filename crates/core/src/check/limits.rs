@@ -1399,7 +1399,10 @@ impl Checker {
             52 if mill => {
                 // (under G91 the two readings, the zero at X_ or X_ from the local zero before,
                 // agree where there is none before)
-                if self.machine.state.incremental && self.shifts.local[i] != 0.0 {
+                // (after a call that left the mode not known, read as before: the call's
+                // body may have left G90 as well as G91; review 48, F11)
+                let lost = self.mode_lost_codes == Some(self.machine.distance_codes);
+                if self.machine.state.incremental && !lost && self.shifts.local[i] != 0.0 {
                     return Err(
                         "under G91 no page at hand says whether it adds to the local \
                                 shift"

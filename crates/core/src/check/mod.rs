@@ -914,6 +914,10 @@ pub struct Checker {
     /// a call after which G90/G91 are not known ([`limits::MODE_LOST_NOTED`],
     /// `Checker::call_mode_lost`).
     noted: u8,
+    /// The machine's count of G90/G91 codes where [`Checker::call_mode_lost`] last took the
+    /// mode as not known (G91 from a position not known): a G52 while it is the count is read
+    /// as before, not as one under G91 (review 48, F11).
+    mode_lost_codes: Option<u32>,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1247,6 +1251,7 @@ impl Checker {
             offsets_lost: false,
             frames: limits::Frames::default(),
             noted: 0,
+            mode_lost_codes: None,
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,

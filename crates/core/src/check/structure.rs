@@ -307,6 +307,7 @@ impl Checker {
         self.linuxcnc_nurbs_last = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
+        self.mode_lost_codes = None;
     }
 
     /// A call by number of a program the checker does not read there
