@@ -64,6 +64,10 @@ pub(super) struct Early {
     incremental: bool,
     distance_codes: u32,
     moved_first: Option<bool>,
+    /// The machine's count of G90/G91 codes at its last call of a program the checker does
+    /// not read there ([`Checker::call_mode_lost`]): where no G90/G91 came after it, the mode
+    /// it returns in is not known (review 48, F11).
+    lost_codes: Option<u32>,
     /// The findings of its limits held (TG601, TG602, TG605, selected or not) and
     /// [`Checker::reports`] where the hold began: the bound on the hold counted as they come,
     /// whoever takes them and whatever the selection (review 43, finding B).
@@ -190,6 +194,9 @@ pub(super) struct Pending {
     ends: Option<bool>,
     /// That TG140 said at a call (not again at the next).
     mode_said: bool,
+    /// Its last G90/G91 not known: it called a program the checker did not read there, and
+    /// wrote none after (review 48, F11).
+    ends_lost: bool,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -245,6 +252,7 @@ impl Checker {
             incremental: self.machine.state.incremental,
             distance_codes: self.machine.distance_codes,
             moved_first: None,
+            lost_codes: None,
             held: 0,
             reports_from: 0,
         }));
@@ -319,6 +327,7 @@ impl Checker {
             ends: (self.machine.distance_codes != early.distance_codes)
                 .then_some(self.machine.state.incremental),
             mode_said: false,
+            ends_lost: early.lost_codes == Some(self.machine.distance_codes),
         });
     }
 
@@ -585,6 +594,10 @@ impl Checker {
     /// subroutine's may be undone at its return (M73): not followed, so noted.
     fn call_returns(&mut self, k: usize, token: &str, line: usize) {
         let p = &self.pending[k];
+        if p.ends_lost && matches!(p.body.number, Key::Number(_)) {
+            self.call_mode_lost(token, (line, 1), &p.body.name.clone());
+            return;
+        }
         let Some(mode) = p.ends else {
             return;
         };
@@ -594,6 +607,45 @@ impl Checker {
         } else {
             self.early_unfollowed(token, line);
         }
+    }
+
+    /// A FANUC's or a Haas's call (`token` at `at`) of a program the checker does not read
+    /// there (`name`: written after the call, not in the file, given up, or one that calls
+    /// such a program last): a G90/G91 it writes stays in force in the caller after its M99
+    /// (G90/G91 are modal, and M99 restores none), so the caller's mode is not known from
+    /// here until it writes its own G90/G91. Taken as G91 from a position not known (the
+    /// call forgot the position): no position is judged as absolute until then; one TG140 a
+    /// file says so (review 48, F11).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_mode_lost(
+        &mut self,
+        token: &str,
+        (line, column): (usize, usize),
+        name: &str,
+    ) {
+        // (a FANUC or Haas lathe of G code system A has no G90/G91 mode: its G90 is the
+        // turning cycle, its increments U and W)
+        if self.machine.settings.own_motion(90) {
+            return;
+        }
+        self.machine.state.incremental = true;
+        self.mode_lost_codes = Some(self.machine.distance_codes);
+        if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
+            early.lost_codes = Some(self.machine.distance_codes);
+        }
+        if self.noted & super::limits::MODE_LOST_NOTED != 0 {
+            return;
+        }
+        self.noted |= super::limits::MODE_LOST_NOTED;
+        let message = format!(
+            "{token} runs {name}, whose G90/G91 the checker does not know here (a program \
+             written after its call or not in the file, or one that calls such a program): a \
+             G90 or G91 it writes stays in force after its M99 (G90/G91 are modal and M99 \
+             restores none), so the positions after this call are not compared with the travel \
+             (TG601) until a G90 or G91 is written again (said once a file)"
+        );
+        self.report(Rule::NotFollowed, message, line, column);
     }
 
     /// Inside a program read apart: a call by another word than a program number (a Haas's
@@ -932,13 +984,19 @@ impl Checker {
             // its numbers are read in the call's units, not for want of a code; review 46, F5)
             let remark = self.machine.state.units_given.then(|| self.units_remark());
             for mut f in std::mem::take(&mut p.positions) {
+                // (a G53 before the body's own G90/G91 at a G91 call: kept for a later call
+                // under G90, which judges it; review 48, F7)
+                if inherited(&f) {
+                    p.positions.push(f);
+                    continue;
+                }
                 if let Some(remark) = &remark {
                     f.message = f.message.replacen(remark.as_str(), "", 1);
                 }
                 // (a position under a work offset is the body's work position plus the
                 // offset: not where it goes under a shift, or where its positions are not known)
                 let machine = f.message.contains("(G53)");
-                if !(machine || unshifted && known) || inherited(&f) {
+                if !(machine || unshifted && known) {
                     continue;
                 }
                 f.message = format!("{}{}", f.message, under(f.line));
@@ -951,7 +1009,11 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
-                if !known && !f.message.contains("(G53)") || inherited(&f) {
+                if inherited(&f) {
+                    p.positions.push(f);
+                    continue;
+                }
+                if !known && !f.message.contains("(G53)") {
                     continue;
                 }
                 f.message = format!(
@@ -1508,6 +1570,77 @@ mod tests {
             ),
             "{found:?}"
         );
+    }
+
+    /// Review 48, F7: each call of a body judges its G53 written before a G90/G91 of its own
+    /// in the call's own mode: a G91 call first (not judged, TG140 once) leaves it to a later
+    /// G90 call, which says it; the other order says it at the G90 call as before.
+    #[test]
+    fn a_body_s_g53_is_judged_at_a_g90_call_after_a_g91_call() {
+        let g3 = "%\nO2000\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nG91\nM98 P2000\nG90\n\
+                  M98 P2000\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), g3), [(10, 5)]);
+        let said = findings(metric.clone(), g3, Rule::TravelExceeded);
+        assert!(said[0].message.contains("X goes to -800"), "{said:?}");
+        assert!(said[0].message.contains("line 10"), "{said:?}");
+        // the G90 call first: said there, once
+        let g5 = "%\nO2000\nG53 G0 X-800.\nM99\nO1000\nG21 G90 G54\nM98 P2000\nG91\n\
+                  M98 P2000\nG90\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), g5), [(7, 5)]);
+        // two G90 calls after the G91 one: said once
+        let twice = g3.replace("M30", "M98 P2000\nM30");
+        assert_eq!(limits(metric, &twice), [(10, 5)]);
+    }
+
+    /// Review 48, F11: a subprogram written after its call (or not in the file) may leave
+    /// G91 (a tool change's `G91 G28 Z0`; M99 restores no mode): the caller's positions after
+    /// the call are not judged as absolute until it writes its own G90/G91, one TG140 a file
+    /// says so; one written before its call is followed as before (nest48).
+    #[test]
+    fn the_mode_after_a_call_of_a_program_read_later_is_not_known() {
+        let q1 = "%\nO1000\nG21 G90 G54 G17\nG0 X700. Y0\nM98 P3000\nG0 X-900.\nM30\nO3000\n\
+                  G91\nM99\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), q1), []);
+        let lost = |text: &str| -> Vec<(usize, usize)> {
+            findings(metric.clone(), text, Rule::NotFollowed)
+                .into_iter()
+                .filter(|f| {
+                    f.message
+                        .contains("whose G90/G91 the checker does not know")
+                })
+                .map(|f| (f.line, f.column))
+                .collect()
+        };
+        assert_eq!(lost(q1), [(5, 5)]);
+        // the caller's own G90 after the call: judged again
+        let own = q1.replace("G0 X-900.", "G90 G0 X-900.");
+        assert_eq!(limits(metric.clone(), &own), [(6, 8)]);
+        // a program not in the file: the same
+        let absent = q1.replace("O3000\nG91\nM99\n", "");
+        assert_eq!(limits(metric.clone(), &absent), []);
+        // one level down: a body read apart calls the later program, then moves
+        let q2 = "%\nO2000\nM98 P3000\nG0 X-900.\nM99\nO1000\nG21 G90 G54 G17\nG0 X700. Y0\n\
+                  M98 P2000\nM30\nO3000\nG91\nM99\n%\n";
+        assert_eq!(limits(metric.clone(), q2), []);
+        // and its caller after it: the body's mode at its M99 is not known either
+        let q2b = "%\nO2000\nM98 P3000\nM99\nO1000\nG21 G90 G54 G17\nG0 X700. Y0\n\
+                   M98 P2000\nG0 X-900.\nM30\nO3000\nG91\nM99\n%\n";
+        assert_eq!(limits(metric.clone(), q2b), []);
+        // written before its call: followed (G91 after it), no note
+        let q4 = "%\nO3000\nG91\nM99\nO1000\nG21 G90 G54 G17\nG0 X700. Y0\nM98 P3000\n\
+                  G0 X-900.\nM30\n%\n";
+        assert_eq!(limits(metric.clone(), q4), []);
+        assert_eq!(lost(q4), []);
+        // a body read before its call that writes G90 last: judged as absolute after it
+        let back = q4.replace("G91\nM99", "G91\nG90\nM99");
+        assert_eq!(limits(metric.clone(), &back), [(10, 4)]);
+        // a G52 after such a call read as before (not as one under G91, whose shift is not
+        // known): the later body's X900 under the call's G52 X700 still spans from X-600
+        let g52 = "%\nO1000\nG21 G90 G54\nG0 X-600. Y0\nG52 X700.\nG0 X0 Y0\nM98 P2000\n\
+                   G52 X0\nM30\nO2000\nG0 X900.\nM99\n%\n";
+        assert_eq!(limits(metric, g52), [(11, 4)]);
     }
 
     /// Review 42, finding 7: a body's own G52 replaces the call's local shift (FANUC 0i-F,

@@ -1402,7 +1402,10 @@ impl Checker {
             52 if mill => {
                 // (under G91 the two readings, the zero at X_ or X_ from the local zero before,
                 // agree where there is none before)
-                if self.machine.state.incremental && self.shifts.local[i] != 0.0 {
+                // (after a call that left the mode not known, read as before: the call's
+                // body may have left G90 as well as G91; review 48, F11)
+                let lost = self.mode_lost_codes == Some(self.machine.distance_codes);
+                if self.machine.state.incremental && !lost && self.shifts.local[i] != 0.0 {
                     return Err(
                         "under G91 no page at hand says whether it adds to the local \
                                 shift"
@@ -1867,6 +1870,9 @@ impl Checker {
 pub(super) const CYCLE_NOTED: u8 = 1;
 pub(super) const G53_INCREMENTAL_NOTED: u8 = 2;
 pub(super) const UW_BESIDE_NOTED: u8 = 4;
+/// A call of a program the checker does not read there, after which G90/G91 are not known
+/// ([`Checker::call_mode_lost`]).
+pub(super) const MODE_LOST_NOTED: u8 = 8;
 
 /// The places of U and W in [`AXES`] ([`crate::modal::axis_places`]).
 const UW_PLACES: u32 = 1 << 3 | 1 << 5;

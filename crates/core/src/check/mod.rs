@@ -910,8 +910,14 @@ pub struct Checker {
     /// The notes (TG140) said once per file, by their bits: a lathe cycle whose positions are
     /// not all known ([`limits::CYCLE_NOTED`], `Checker::cycle_walked`), a G53 under G91
     /// ([`limits::G53_INCREMENTAL_NOTED`], `Checker::machine_incremental`), a lathe block
-    /// writing both X and U or Z and W ([`limits::UW_BESIDE_NOTED`], `Checker::uw_beside_xz`).
+    /// writing both X and U or Z and W ([`limits::UW_BESIDE_NOTED`], `Checker::uw_beside_xz`),
+    /// a call after which G90/G91 are not known ([`limits::MODE_LOST_NOTED`],
+    /// `Checker::call_mode_lost`).
     noted: u8,
+    /// The machine's count of G90/G91 codes where [`Checker::call_mode_lost`] last took the
+    /// mode as not known (G91 from a position not known): a G52 while it is the count is read
+    /// as before, not as one under G91 (review 48, F11).
+    mode_lost_codes: Option<u32>,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1245,6 +1251,7 @@ impl Checker {
             offsets_lost: false,
             frames: limits::Frames::default(),
             noted: 0,
+            mode_lost_codes: None,
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,

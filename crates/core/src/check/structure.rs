@@ -307,6 +307,28 @@ impl Checker {
         self.linuxcnc_nurbs_last = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
+        self.mode_lost_codes = None;
+    }
+
+    /// A call by number of a program the checker does not read there
+    /// ([`Checker::call_mode_lost`]): its G90/G91 not known after it.
+    #[cold]
+    #[inline(never)]
+    fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
+        let p = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'P' && w.index.is_empty());
+        let token = p.map_or_else(String::new, |w| w.token());
+        let call = if self.values.ms.contains(&98) {
+            format!("M98 {token}")
+        } else if self.values.gs().contains(&66) {
+            format!("G66 {token}")
+        } else {
+            format!("G65 {token}")
+        };
+        let column = p.map_or(1, |w| w.column);
+        self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
     }
 
     /// A call (`M98 P1000`, `G65 P9010`) in a FANUC's or a Haas's file: the units in force
@@ -368,25 +390,29 @@ impl Checker {
             }
             _ => number,
         };
-        if self.early_on || !self.pending.is_empty() || !self.given_up.is_empty() {
-            let token = b
-                .words
-                .iter()
-                .find(|w| w.letter == b'P' && w.index.is_empty())
-                .map_or_else(String::new, |w| w.token());
-            let call = if self.values.ms.contains(&98) {
-                format!("M98 {token}")
-            } else if self.values.gs().contains(&66) {
-                format!("G66 {token}")
-            } else {
-                format!("G65 {token}")
+        let followed = (self.early_on || !self.pending.is_empty() || !self.given_up.is_empty())
+            && {
+                let token = b
+                    .words
+                    .iter()
+                    .find(|w| w.letter == b'P' && w.index.is_empty())
+                    .map_or_else(String::new, |w| w.token());
+                let call = if self.values.ms.contains(&98) {
+                    format!("M98 {token}")
+                } else if self.values.gs().contains(&66) {
+                    format!("G66 {token}")
+                } else {
+                    format!("G65 {token}")
+                };
+                let column = b
+                    .words
+                    .iter()
+                    .find(|w| w.letter == b'P' && w.index.is_empty())
+                    .map_or(1, |w| w.column);
+                self.early_call(super::called::Key::Number(number), call, (b.line, column))
             };
-            let column = b
-                .words
-                .iter()
-                .find(|w| w.letter == b'P' && w.index.is_empty())
-                .map_or(1, |w| w.column);
-            self.early_call(super::called::Key::Number(number), call, (b.line, column));
+        if !followed {
+            self.call_not_followed(b, number);
         }
         let s = &self.machine.state;
         let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
