@@ -50,6 +50,89 @@ const RUNS: usize = 3;
 /// The most blocks a run reads from its target on, beside the file's reading.
 const RUN_BLOCKS: usize = 64;
 
+/// A comparison of a jump's condition ([`Checker::condition_false`]).
+#[derive(Clone, Copy)]
+enum Ordering {
+    Eq,
+    Ne,
+    Gt,
+    Ge,
+    Lt,
+    Le,
+}
+
+impl Ordering {
+    /// Whether the comparison holds of two values ordered `order`.
+    fn holds(self, order: std::cmp::Ordering) -> bool {
+        use std::cmp::Ordering as O;
+        match self {
+            Ordering::Eq => order == O::Equal,
+            Ordering::Ne => order != O::Equal,
+            Ordering::Gt => order == O::Greater,
+            Ordering::Ge => order != O::Less,
+            Ordering::Lt => order == O::Less,
+            Ordering::Le => order != O::Greater,
+        }
+    }
+}
+
+/// Custom Macro B's comparisons (FANUC's Custom Macro B; Haas's Mill Operator's Manual).
+const MACRO_B_COMPARISONS: &[(&[u8], Ordering)] = &[
+    (b"EQ", Ordering::Eq),
+    (b"NE", Ordering::Ne),
+    (b"GT", Ordering::Gt),
+    (b"GE", Ordering::Ge),
+    (b"LT", Ordering::Lt),
+    (b"LE", Ordering::Le),
+];
+
+/// A SINUMERIK's comparisons, the two-character ones first.
+const SINUMERIK_COMPARISONS: &[(&[u8], Ordering)] = &[
+    (b"==", Ordering::Eq),
+    (b"<>", Ordering::Ne),
+    (b">=", Ordering::Ge),
+    (b"<=", Ordering::Le),
+    (b">", Ordering::Gt),
+    (b"<", Ordering::Lt),
+];
+
+/// A condition of one comparison outside brackets: its two sides and the comparison; None
+/// where there is none or more than one, or it holds a logic operation.
+fn comparison<'a>(
+    condition: &'a [u8],
+    ops: &[(&[u8], Ordering)],
+) -> Option<(&'a [u8], Ordering, &'a [u8])> {
+    let mut found = None;
+    let mut depth = 0usize;
+    let mut i = 0;
+    while i < condition.len() {
+        match condition[i] {
+            b'[' | b'(' => depth += 1,
+            b']' | b')' => depth = depth.checked_sub(1)?,
+            _ if depth == 0 => {
+                if let Some(&(name, op)) = ops.iter().find(|(n, _)| condition[i..].starts_with(n)) {
+                    if found.is_some() {
+                        return None;
+                    }
+                    found = Some((i, name.len(), op));
+                    i += name.len();
+                    continue;
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    let (at, len, op) = found?;
+    let (left, right) = (&condition[..at], &condition[at + len..]);
+    // (AND, OR, XOR: more than one comparison, not read)
+    let logic = |s: &[u8]| s.windows(2).any(|w| w == b"OR") || s.windows(3).any(|w| w == b"AND");
+    if logic(left) || logic(right) {
+        return None;
+    }
+    Some((left, op, right))
+}
+
 /// A forward conditional jump taken (issue 32, review 44 F3): the checker as it stood after
 /// the jump's block -- the run where it is taken, which passes over the blocks between it and
 /// its target -- read from the target on beside the file's reading, whose values there are
@@ -328,12 +411,86 @@ impl Checker {
             if key.is_none() || target.is_some() {
                 return;
             }
+            // (a condition the known values make false: the jump is never taken, and keeps
+            // no run -- review 48 F1)
+            if self.condition_false(&upper) {
+                return;
+            }
             target = key;
         }
         if let Some(key) = target {
             self.jump_to_note = Some((b.line, key));
             self.after_block = true;
         }
+    }
+
+    /// Whether the condition of a forward jump (`IF[#5EQ1]GOTO10`, a SINUMERIK's
+    /// `IF R5==1 GOTOF LBL`; `upper` in capitals) is known to be false: one comparison
+    /// (Custom Macro B's EQ NE GT GE LT LE, a SINUMERIK's `== <> > >= < <=`) of two sides
+    /// each a number or of parameters holding known constants (review 48 F1). Where a side
+    /// is not known, or the condition is of another form, it is not.
+    fn condition_false(&self, upper: &[u8]) -> bool {
+        let text = upper.trim_ascii_start();
+        let Some(rest) = text.strip_prefix(b"IF") else {
+            return false;
+        };
+        let (condition, ops): (&[u8], &[(&[u8], Ordering)]) =
+            if self.config.family == Family::MacroB {
+                // the bracketed condition after IF, to its matching `]`
+                let rest = rest.trim_ascii_start();
+                if rest.first() != Some(&b'[') {
+                    return false;
+                }
+                let mut depth = 0usize;
+                let mut close = None;
+                for (i, &c) in rest.iter().enumerate() {
+                    match c {
+                        b'[' => depth += 1,
+                        b']' => {
+                            depth -= 1;
+                            if depth == 0 {
+                                close = Some(i);
+                                break;
+                            }
+                        }
+                        _ => {}
+                    }
+                }
+                let Some(close) = close else {
+                    return false;
+                };
+                (&rest[1..close], MACRO_B_COMPARISONS)
+            } else {
+                let Some(at) = super::targets::sinumerik_jump(upper).map(|j| j.0) else {
+                    return false;
+                };
+                let start = text.as_ptr() as usize - upper.as_ptr() as usize + 2;
+                if at < start {
+                    return false;
+                }
+                (&upper[start..at], SINUMERIK_COMPARISONS)
+            };
+        let Some((left, op, right)) = comparison(condition, ops) else {
+            return false;
+        };
+        let side = |s: &[u8]| -> Option<Dec> {
+            let s = s.trim_ascii();
+            if s.is_empty() {
+                return None;
+            }
+            if self.config.family == Family::Sinumerik {
+                return self.sinumerik_constant(s);
+            }
+            std::str::from_utf8(s)
+                .ok()
+                .and_then(Dec::parse)
+                .or_else(|| self.constant(s))
+        };
+        let (Some(a), Some(b)) = (side(left), side(right)) else {
+            return false;
+        };
+        let order = a.cmp(&b);
+        !op.holds(order)
     }
 
     /// After a block (`after_block`): the runs where a jump is taken read it, and a jump read
@@ -1731,6 +1888,38 @@ mod tests {
         // a jump back is no run of this kind: its block forgets the parameters
         let back = "LBL:\nG0 X400 Y0\nR1=-700\nIF R2==1 GOTOB LBL\nR1=0\nG0 X=R1";
         assert_eq!(travel(back).len(), 0);
+    }
+
+    /// Review 48 F1: a forward jump whose condition the known values make false is never
+    /// taken, and keeps no run; made true, or not known, it does (iso-mill's X -500..500).
+    #[test]
+    fn a_jump_known_not_taken_keeps_no_run() {
+        use super::super::testing::findings;
+        let travel = |family, body: &str| {
+            findings(of_family(family), &program(body), Rule::TravelExceeded).len()
+        };
+        let macro_b = |five: &str, condition: &str| {
+            format!("G0 X400. Y0\n#1=-700.\n#5={five}\nIF[{condition}]GOTO10\n#1=0\nN10 G0 X#1")
+        };
+        // the review's program: #5 is 0, `#5EQ1` false: X400 -> X0 alone
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5EQ1")), 0);
+        assert_eq!(travel(Family::MacroB, &macro_b("1", "#5EQ1")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5 NE 0")), 0);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5LT1")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("2", "#5 GE [#5]")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("2", "1GT#5")), 0);
+        // a side not known, or more than one comparison: the run kept
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#2EQ1")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5+1EQ5")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "[#5EQ1]OR[#2EQ1]")), 1);
+        let sinumerik = |five: &str, condition: &str| {
+            format!("G0 X400 Y0\nR1=-700\nR5={five}\nIF {condition} GOTOF LBL\nR1=0\nLBL: G0 X=R1")
+        };
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R5==1")), 0);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("1", "R5==1")), 1);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R5<>0")), 0);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R5<=0")), 1);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R2==1")), 1);
     }
 
     #[test]
