@@ -1215,13 +1215,36 @@ impl Checker {
         if self.letters & (super::PARAMETER | super::INDEXED) == 0 {
             return;
         }
+        // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
+        // 3.0, 3.2.1; review 48 F15: `#1=-900 #3=#1` copies the old #1): those set by an
+        // earlier word of the line, by key, their values before it, known and at the arrival
+        let linuxcnc = self.config.family == Family::LinuxCnc;
+        let mut set_before: Vec<(Vec<u8>, Option<Dec>, Option<Dec>)> = Vec::new();
         for w in b.words {
             // (a value read from the fall-through's at the last arrival: kept there)
             let mut arrived = None;
             let (name, value) = match w.address {
                 // #3 = #1 (signed or in brackets): a copy of a known value
                 b'#' if !w.index.is_empty() && w.number.is_empty() && !w.expression.is_empty() => {
-                    let value = self.copied(w.expression, &mut arrived);
+                    let earlier = if set_before.is_empty() {
+                        None
+                    } else {
+                        self.parameter_key(w.expression)
+                            .and_then(|(negative, key)| {
+                                let s = set_before.iter().find(|s| s.0 == key)?;
+                                Some((negative, s.1, s.2))
+                            })
+                    };
+                    let value = match earlier {
+                        Some((negative, old, then)) => {
+                            let sign = |v: Dec| if negative { -v } else { v };
+                            if old.is_none() {
+                                arrived = then.map(sign);
+                            }
+                            old.map(sign)
+                        }
+                        None => self.copied(w.expression, &mut arrived),
+                    };
                     (parameter_name(b'#', w.index), value)
                 }
                 b'#' if !w.index.is_empty() => {
@@ -1271,6 +1294,14 @@ impl Checker {
                 }
                 _ => continue,
             };
+            if linuxcnc && !set_before.iter().any(|s| s.0 == name) {
+                let then = self
+                    .arrival
+                    .as_ref()
+                    .and_then(|a| a.then.get(&name))
+                    .copied();
+                set_before.push((name.clone(), self.params.get(&name).copied(), then));
+            }
             if self.arrival.is_some() {
                 self.set_since_arrival(&name);
                 if let (Some(v), Some(arrival)) = (arrived, self.arrival.as_mut()) {
@@ -1888,6 +1919,29 @@ mod tests {
         // a jump back is no run of this kind: its block forgets the parameters
         let back = "LBL:\nG0 X400 Y0\nR1=-700\nIF R2==1 GOTOB LBL\nR1=0\nG0 X=R1";
         assert_eq!(travel(back).len(), 0);
+    }
+
+    /// Review 48 F15: on LinuxCNC every setting of a line reads the values from before it
+    /// (RS274/NGC 3.0, 3.2.1): `#1=-700 #3=#1` copies the old #1 (rs274 moves to 5).
+    #[test]
+    fn a_linuxcnc_copy_reads_the_value_before_its_line() {
+        use super::super::testing::findings;
+        let travel =
+            |body: &str| findings(of_family(Family::LinuxCnc), body, Rule::TravelExceeded).len();
+        assert_eq!(travel("G0 X400 Y0\n#1=5\n#1=-700 #3=#1\nG0 X#3\nM2\n"), 0);
+        assert_eq!(travel("G0 X400 Y0\n#1=5\n#1=-700 #3=-#1\nG0 X#3\nM2\n"), 0);
+        assert_eq!(travel("G0 X400 Y0\n#1=700\n#1=5 #3=-#1\nG0 X#3\nM2\n"), 1);
+        // on lines of their own, the new value
+        assert_eq!(travel("G0 X400 Y0\n#1=5\n#1=-700\n#3=#1\nG0 X#3\nM2\n"), 1);
+        // the old one not known: not known
+        assert_eq!(
+            fired(
+                of_family(Family::LinuxCnc),
+                "G0 X400 Y0\n#1=-700 #3=#1\nG0 X#3\nM2\n",
+                Rule::NotEvaluated
+            ),
+            [(3, 4)]
+        );
     }
 
     /// Review 48 F1: a forward jump whose condition the known values make false is never
