@@ -2337,6 +2337,7 @@ impl Checker {
             self.heidenhain_call(b.line, b.ident);
         } else {
             self.percent_closed = true;
+            self.jump_runs_ended();
             if self.ended_line > 0 {
                 self.closed = true;
             }

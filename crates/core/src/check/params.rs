@@ -1921,6 +1921,59 @@ mod tests {
         assert_eq!(travel(back).len(), 0);
     }
 
+    /// Review 48 F9 and F14: where a run where a jump is taken ends -- at a program's start
+    /// (an O number or a `%` after the first block, whether the program before ended or not),
+    /// an end (M30, M99), a call, another jump, after 64 blocks -- and the four jumps kept
+    /// (iso-mill's X travel -500..500).
+    #[test]
+    fn where_a_jump_run_ends() {
+        use super::super::testing::findings;
+        // (a FANUC's O number)
+        let config = || {
+            let mut config = of_family(Family::MacroB);
+            config.facts.program_number = Some(b'O');
+            config
+        };
+        let travel = |body: &str| findings(config(), &program(body), Rule::TravelExceeded).len();
+        let head = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\n";
+        // the run judged: the control
+        assert_eq!(travel(&format!("{head}N10 G0 Y0\nG0 X#1")), 1);
+        // F9: the next program's locals are its own, whether the first ended or not
+        assert_eq!(travel(&format!("{head}N10 G0 Y0\nO2000\nG0 X#1")), 0);
+        assert_eq!(travel(&format!("{head}N10 G0 Y0\n%\n%\nO2000\nG0 X#1")), 0);
+        assert_eq!(travel(&format!("{head}N10 M30\nO2000\nG0 X#1")), 0);
+        assert_eq!(travel(&format!("{head}N10 M99\nO2000\nG0 X#1")), 0);
+        // a jump whose target is in the next program arrives nowhere
+        let across = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nO2000\n#1=0\nN10 G0 X#1";
+        assert_eq!(travel(across), 0);
+        // a call, another jump: not followed (the run's values end there)
+        assert_eq!(travel(&format!("{head}N10 M98 P2000\nG0 X#1")), 0);
+        assert_eq!(
+            travel(&format!("{head}N10 G0 Y0\nGOTO20\nN15 G0 X0\nN20 G0 X#1")),
+            0
+        );
+        // 64 blocks from the target on: the 60th judged, the 70th not
+        let long = |n: usize| format!("{head}N10 G0 Y0\n{}G0 X#1", "G0 Y1.\n".repeat(n - 2));
+        assert_eq!(travel(&long(60)), 1);
+        assert_eq!(travel(&long(64)), 1);
+        assert_eq!(travel(&long(65)), 0);
+        assert_eq!(travel(&long(70)), 0);
+        // four jumps kept: the fifth drops the oldest (its target judged as before)
+        let jumps = |targets: &[u32]| {
+            let mut body = String::from("G0 X400. Y0\n#1=-700.\n");
+            for t in targets {
+                body += &format!("IF[#2EQ{t}]GOTO{t}\n");
+            }
+            body += "#1=0\n";
+            for t in &targets[1..] {
+                body += &format!("N{t} M5\n#1=0\n");
+            }
+            body + "N10 G0 X#1"
+        };
+        assert_eq!(travel(&jumps(&[10, 20, 30, 40])), 1);
+        assert_eq!(travel(&jumps(&[10, 20, 30, 40, 50])), 0);
+    }
+
     /// Review 48 F15: on LinuxCNC every setting of a line reads the values from before it
     /// (RS274/NGC 3.0, 3.2.1): `#1=-700 #3=#1` copies the old #1 (rs274 moves to 5).
     #[test]
