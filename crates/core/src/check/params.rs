@@ -923,9 +923,15 @@ impl Checker {
         }
         let (_, token, value) = self.arrival_words.iter().find(|w| w.0 == column)?;
         let arrival = self.arrival.as_ref()?;
+        // (review 48 F13: where a run where a jump is taken reads the block, the value the
+        // jump brings is that run's to judge)
+        let there = if self.runs.is_empty() {
+            "where a jump arrives there it is not known"
+        } else {
+            "where a jump is taken it holds the value the jump brings, judged by that run"
+        };
         Some(format!(
-            "; {token} is {value} {} (the value the blocks above line {} set; where a \
-             jump arrives there it is not known)",
+            "; {token} is {value} {} (the value the blocks above line {} set; {there})",
             arrival.not_taken, arrival.line
         ))
     }
@@ -1638,8 +1644,9 @@ mod tests {
         assert_eq!((found[0].line, found[0].column), (6, 8));
         assert!(
             found[0].message.ends_with(
-                "; X#1 is -700 where the jump of line 4 is not taken (the value the \
-                            blocks above line 6 set; where a jump arrives there it is not known)"
+                "; X#1 is -700 where the jump of line 4 is not taken (the value the blocks \
+                 above line 6 set; where a jump is taken it holds the value the jump brings, \
+                 judged by that run)"
             ),
             "{}",
             found[0].message
