@@ -1216,11 +1216,18 @@ impl Checker {
 
     /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
     /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
+    #[inline]
     pub(super) fn assignments(&mut self, b: &BlockView<'_>) {
         // (only a `#` word or an indexed one sets a parameter: most blocks have neither)
         if self.letters & (super::PARAMETER | super::INDEXED) == 0 {
             return;
         }
+        self.assignments_of(b);
+    }
+
+    /// [`Checker::assignments`] of a block with a `#` word or an indexed one.
+    #[inline(never)]
+    fn assignments_of(&mut self, b: &BlockView<'_>) {
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
         // 3.0, 3.2.1; review 48 F15: `#1=-900 #3=#1` copies the old #1): those set by an
         // earlier word of the line, by key, their values before it, known and at the arrival
