@@ -2344,6 +2344,7 @@ impl Checker {
             self.heidenhain_call(b.line, b.ident);
         } else {
             self.percent_closed = true;
+            self.jump_runs_ended();
             if self.ended_line > 0 {
                 self.closed = true;
             }

@@ -50,6 +50,89 @@ const RUNS: usize = 3;
 /// The most blocks a run reads from its target on, beside the file's reading.
 const RUN_BLOCKS: usize = 64;
 
+/// A comparison of a jump's condition ([`Checker::condition_false`]).
+#[derive(Clone, Copy)]
+enum Ordering {
+    Eq,
+    Ne,
+    Gt,
+    Ge,
+    Lt,
+    Le,
+}
+
+impl Ordering {
+    /// Whether the comparison holds of two values ordered `order`.
+    fn holds(self, order: std::cmp::Ordering) -> bool {
+        use std::cmp::Ordering as O;
+        match self {
+            Ordering::Eq => order == O::Equal,
+            Ordering::Ne => order != O::Equal,
+            Ordering::Gt => order == O::Greater,
+            Ordering::Ge => order != O::Less,
+            Ordering::Lt => order == O::Less,
+            Ordering::Le => order != O::Greater,
+        }
+    }
+}
+
+/// Custom Macro B's comparisons (FANUC's Custom Macro B; Haas's Mill Operator's Manual).
+const MACRO_B_COMPARISONS: &[(&[u8], Ordering)] = &[
+    (b"EQ", Ordering::Eq),
+    (b"NE", Ordering::Ne),
+    (b"GT", Ordering::Gt),
+    (b"GE", Ordering::Ge),
+    (b"LT", Ordering::Lt),
+    (b"LE", Ordering::Le),
+];
+
+/// A SINUMERIK's comparisons, the two-character ones first.
+const SINUMERIK_COMPARISONS: &[(&[u8], Ordering)] = &[
+    (b"==", Ordering::Eq),
+    (b"<>", Ordering::Ne),
+    (b">=", Ordering::Ge),
+    (b"<=", Ordering::Le),
+    (b">", Ordering::Gt),
+    (b"<", Ordering::Lt),
+];
+
+/// A condition of one comparison outside brackets: its two sides and the comparison; None
+/// where there is none or more than one, or it holds a logic operation.
+fn comparison<'a>(
+    condition: &'a [u8],
+    ops: &[(&[u8], Ordering)],
+) -> Option<(&'a [u8], Ordering, &'a [u8])> {
+    let mut found = None;
+    let mut depth = 0usize;
+    let mut i = 0;
+    while i < condition.len() {
+        match condition[i] {
+            b'[' | b'(' => depth += 1,
+            b']' | b')' => depth = depth.checked_sub(1)?,
+            _ if depth == 0 => {
+                if let Some(&(name, op)) = ops.iter().find(|(n, _)| condition[i..].starts_with(n)) {
+                    if found.is_some() {
+                        return None;
+                    }
+                    found = Some((i, name.len(), op));
+                    i += name.len();
+                    continue;
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    let (at, len, op) = found?;
+    let (left, right) = (&condition[..at], &condition[at + len..]);
+    // (AND, OR, XOR: more than one comparison, not read)
+    let logic = |s: &[u8]| s.windows(2).any(|w| w == b"OR") || s.windows(3).any(|w| w == b"AND");
+    if logic(left) || logic(right) {
+        return None;
+    }
+    Some((left, op, right))
+}
+
 /// A forward conditional jump taken (issue 32, review 44 F3): the checker as it stood after
 /// the jump's block -- the run where it is taken, which passes over the blocks between it and
 /// its target -- read from the target on beside the file's reading, whose values there are
@@ -328,12 +411,86 @@ impl Checker {
             if key.is_none() || target.is_some() {
                 return;
             }
+            // (a condition the known values make false: the jump is never taken, and keeps
+            // no run -- review 48 F1)
+            if self.condition_false(&upper) {
+                return;
+            }
             target = key;
         }
         if let Some(key) = target {
             self.jump_to_note = Some((b.line, key));
             self.after_block = true;
         }
+    }
+
+    /// Whether the condition of a forward jump (`IF[#5EQ1]GOTO10`, a SINUMERIK's
+    /// `IF R5==1 GOTOF LBL`; `upper` in capitals) is known to be false: one comparison
+    /// (Custom Macro B's EQ NE GT GE LT LE, a SINUMERIK's `== <> > >= < <=`) of two sides
+    /// each a number or of parameters holding known constants (review 48 F1). Where a side
+    /// is not known, or the condition is of another form, it is not.
+    fn condition_false(&self, upper: &[u8]) -> bool {
+        let text = upper.trim_ascii_start();
+        let Some(rest) = text.strip_prefix(b"IF") else {
+            return false;
+        };
+        let (condition, ops): (&[u8], &[(&[u8], Ordering)]) =
+            if self.config.family == Family::MacroB {
+                // the bracketed condition after IF, to its matching `]`
+                let rest = rest.trim_ascii_start();
+                if rest.first() != Some(&b'[') {
+                    return false;
+                }
+                let mut depth = 0usize;
+                let mut close = None;
+                for (i, &c) in rest.iter().enumerate() {
+                    match c {
+                        b'[' => depth += 1,
+                        b']' => {
+                            depth -= 1;
+                            if depth == 0 {
+                                close = Some(i);
+                                break;
+                            }
+                        }
+                        _ => {}
+                    }
+                }
+                let Some(close) = close else {
+                    return false;
+                };
+                (&rest[1..close], MACRO_B_COMPARISONS)
+            } else {
+                let Some(at) = super::targets::sinumerik_jump(upper).map(|j| j.0) else {
+                    return false;
+                };
+                let start = text.as_ptr() as usize - upper.as_ptr() as usize + 2;
+                if at < start {
+                    return false;
+                }
+                (&upper[start..at], SINUMERIK_COMPARISONS)
+            };
+        let Some((left, op, right)) = comparison(condition, ops) else {
+            return false;
+        };
+        let side = |s: &[u8]| -> Option<Dec> {
+            let s = s.trim_ascii();
+            if s.is_empty() {
+                return None;
+            }
+            if self.config.family == Family::Sinumerik {
+                return self.sinumerik_constant(s);
+            }
+            std::str::from_utf8(s)
+                .ok()
+                .and_then(Dec::parse)
+                .or_else(|| self.constant(s))
+        };
+        let (Some(a), Some(b)) = (side(left), side(right)) else {
+            return false;
+        };
+        let order = a.cmp(&b);
+        !op.holds(order)
     }
 
     /// After a block (`after_block`): the runs where a jump is taken read it, and a jump read
@@ -766,9 +923,15 @@ impl Checker {
         }
         let (_, token, value) = self.arrival_words.iter().find(|w| w.0 == column)?;
         let arrival = self.arrival.as_ref()?;
+        // (review 48 F13: where a run where a jump is taken reads the block, the value the
+        // jump brings is that run's to judge)
+        let there = if self.runs.is_empty() {
+            "where a jump arrives there it is not known"
+        } else {
+            "where a jump is taken it holds the value the jump brings, judged by that run"
+        };
         Some(format!(
-            "; {token} is {value} {} (the value the blocks above line {} set; where a \
-             jump arrives there it is not known)",
+            "; {token} is {value} {} (the value the blocks above line {} set; {there})",
             arrival.not_taken, arrival.line
         ))
     }
@@ -1053,18 +1216,48 @@ impl Checker {
 
     /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
     /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
+    #[inline]
     pub(super) fn assignments(&mut self, b: &BlockView<'_>) {
         // (only a `#` word or an indexed one sets a parameter: most blocks have neither)
         if self.letters & (super::PARAMETER | super::INDEXED) == 0 {
             return;
         }
+        self.assignments_of(b);
+    }
+
+    /// [`Checker::assignments`] of a block with a `#` word or an indexed one.
+    #[inline(never)]
+    fn assignments_of(&mut self, b: &BlockView<'_>) {
+        // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
+        // 3.0, 3.2.1; review 48 F15: `#1=-900 #3=#1` copies the old #1): those set by an
+        // earlier word of the line, by key, their values before it, known and at the arrival
+        let linuxcnc = self.config.family == Family::LinuxCnc;
+        let mut set_before: Vec<(Vec<u8>, Option<Dec>, Option<Dec>)> = Vec::new();
         for w in b.words {
             // (a value read from the fall-through's at the last arrival: kept there)
             let mut arrived = None;
             let (name, value) = match w.address {
                 // #3 = #1 (signed or in brackets): a copy of a known value
                 b'#' if !w.index.is_empty() && w.number.is_empty() && !w.expression.is_empty() => {
-                    let value = self.copied(w.expression, &mut arrived);
+                    let earlier = if set_before.is_empty() {
+                        None
+                    } else {
+                        self.parameter_key(w.expression)
+                            .and_then(|(negative, key)| {
+                                let s = set_before.iter().find(|s| s.0 == key)?;
+                                Some((negative, s.1, s.2))
+                            })
+                    };
+                    let value = match earlier {
+                        Some((negative, old, then)) => {
+                            let sign = |v: Dec| if negative { -v } else { v };
+                            if old.is_none() {
+                                arrived = then.map(sign);
+                            }
+                            old.map(sign)
+                        }
+                        None => self.copied(w.expression, &mut arrived),
+                    };
                     (parameter_name(b'#', w.index), value)
                 }
                 b'#' if !w.index.is_empty() => {
@@ -1114,6 +1307,14 @@ impl Checker {
                 }
                 _ => continue,
             };
+            if linuxcnc && !set_before.iter().any(|s| s.0 == name) {
+                let then = self
+                    .arrival
+                    .as_ref()
+                    .and_then(|a| a.then.get(&name))
+                    .copied();
+                set_before.push((name.clone(), self.params.get(&name).copied(), then));
+            }
             if self.arrival.is_some() {
                 self.set_since_arrival(&name);
                 if let (Some(v), Some(arrival)) = (arrived, self.arrival.as_mut()) {
@@ -1450,8 +1651,9 @@ mod tests {
         assert_eq!((found[0].line, found[0].column), (6, 8));
         assert!(
             found[0].message.ends_with(
-                "; X#1 is -700 where the jump of line 4 is not taken (the value the \
-                            blocks above line 6 set; where a jump arrives there it is not known)"
+                "; X#1 is -700 where the jump of line 4 is not taken (the value the blocks \
+                 above line 6 set; where a jump is taken it holds the value the jump brings, \
+                 judged by that run)"
             ),
             "{}",
             found[0].message
@@ -1731,6 +1933,114 @@ mod tests {
         // a jump back is no run of this kind: its block forgets the parameters
         let back = "LBL:\nG0 X400 Y0\nR1=-700\nIF R2==1 GOTOB LBL\nR1=0\nG0 X=R1";
         assert_eq!(travel(back).len(), 0);
+    }
+
+    /// Review 48 F9 and F14: where a run where a jump is taken ends -- at a program's start
+    /// (an O number or a `%` after the first block, whether the program before ended or not),
+    /// an end (M30, M99), a call, another jump, after 64 blocks -- and the four jumps kept
+    /// (iso-mill's X travel -500..500).
+    #[test]
+    fn where_a_jump_run_ends() {
+        use super::super::testing::findings;
+        // (a FANUC's O number)
+        let config = || {
+            let mut config = of_family(Family::MacroB);
+            config.facts.program_number = Some(b'O');
+            config
+        };
+        let travel = |body: &str| findings(config(), &program(body), Rule::TravelExceeded).len();
+        let head = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\n";
+        // the run judged: the control
+        assert_eq!(travel(&format!("{head}N10 G0 Y0\nG0 X#1")), 1);
+        // F9: the next program's locals are its own, whether the first ended or not
+        assert_eq!(travel(&format!("{head}N10 G0 Y0\nO2000\nG0 X#1")), 0);
+        assert_eq!(travel(&format!("{head}N10 G0 Y0\n%\n%\nO2000\nG0 X#1")), 0);
+        assert_eq!(travel(&format!("{head}N10 M30\nO2000\nG0 X#1")), 0);
+        assert_eq!(travel(&format!("{head}N10 M99\nO2000\nG0 X#1")), 0);
+        // a jump whose target is in the next program arrives nowhere
+        let across = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nO2000\n#1=0\nN10 G0 X#1";
+        assert_eq!(travel(across), 0);
+        // a call, another jump: not followed (the run's values end there)
+        assert_eq!(travel(&format!("{head}N10 M98 P2000\nG0 X#1")), 0);
+        assert_eq!(
+            travel(&format!("{head}N10 G0 Y0\nGOTO20\nN15 G0 X0\nN20 G0 X#1")),
+            0
+        );
+        // 64 blocks from the target on: the 60th judged, the 70th not
+        let long = |n: usize| format!("{head}N10 G0 Y0\n{}G0 X#1", "G0 Y1.\n".repeat(n - 2));
+        assert_eq!(travel(&long(60)), 1);
+        assert_eq!(travel(&long(64)), 1);
+        assert_eq!(travel(&long(65)), 0);
+        assert_eq!(travel(&long(70)), 0);
+        // four jumps kept: the fifth drops the oldest (its target judged as before)
+        let jumps = |targets: &[u32]| {
+            let mut body = String::from("G0 X400. Y0\n#1=-700.\n");
+            for t in targets {
+                body += &format!("IF[#2EQ{t}]GOTO{t}\n");
+            }
+            body += "#1=0\n";
+            for t in &targets[1..] {
+                body += &format!("N{t} M5\n#1=0\n");
+            }
+            body + "N10 G0 X#1"
+        };
+        assert_eq!(travel(&jumps(&[10, 20, 30, 40])), 1);
+        assert_eq!(travel(&jumps(&[10, 20, 30, 40, 50])), 0);
+    }
+
+    /// Review 48 F15: on LinuxCNC every setting of a line reads the values from before it
+    /// (RS274/NGC 3.0, 3.2.1): `#1=-700 #3=#1` copies the old #1 (rs274 moves to 5).
+    #[test]
+    fn a_linuxcnc_copy_reads_the_value_before_its_line() {
+        use super::super::testing::findings;
+        let travel =
+            |body: &str| findings(of_family(Family::LinuxCnc), body, Rule::TravelExceeded).len();
+        assert_eq!(travel("G0 X400 Y0\n#1=5\n#1=-700 #3=#1\nG0 X#3\nM2\n"), 0);
+        assert_eq!(travel("G0 X400 Y0\n#1=5\n#1=-700 #3=-#1\nG0 X#3\nM2\n"), 0);
+        assert_eq!(travel("G0 X400 Y0\n#1=700\n#1=5 #3=-#1\nG0 X#3\nM2\n"), 1);
+        // on lines of their own, the new value
+        assert_eq!(travel("G0 X400 Y0\n#1=5\n#1=-700\n#3=#1\nG0 X#3\nM2\n"), 1);
+        // the old one not known: not known
+        assert_eq!(
+            fired(
+                of_family(Family::LinuxCnc),
+                "G0 X400 Y0\n#1=-700 #3=#1\nG0 X#3\nM2\n",
+                Rule::NotEvaluated
+            ),
+            [(3, 4)]
+        );
+    }
+
+    /// Review 48 F1: a forward jump whose condition the known values make false is never
+    /// taken, and keeps no run; made true, or not known, it does (iso-mill's X -500..500).
+    #[test]
+    fn a_jump_known_not_taken_keeps_no_run() {
+        use super::super::testing::findings;
+        let travel = |family, body: &str| {
+            findings(of_family(family), &program(body), Rule::TravelExceeded).len()
+        };
+        let macro_b = |five: &str, condition: &str| {
+            format!("G0 X400. Y0\n#1=-700.\n#5={five}\nIF[{condition}]GOTO10\n#1=0\nN10 G0 X#1")
+        };
+        // the review's program: #5 is 0, `#5EQ1` false: X400 -> X0 alone
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5EQ1")), 0);
+        assert_eq!(travel(Family::MacroB, &macro_b("1", "#5EQ1")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5 NE 0")), 0);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5LT1")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("2", "#5 GE [#5]")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("2", "1GT#5")), 0);
+        // a side not known, or more than one comparison: the run kept
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#2EQ1")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "#5+1EQ5")), 1);
+        assert_eq!(travel(Family::MacroB, &macro_b("0", "[#5EQ1]OR[#2EQ1]")), 1);
+        let sinumerik = |five: &str, condition: &str| {
+            format!("G0 X400 Y0\nR1=-700\nR5={five}\nIF {condition} GOTOF LBL\nR1=0\nLBL: G0 X=R1")
+        };
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R5==1")), 0);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("1", "R5==1")), 1);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R5<>0")), 0);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R5<=0")), 1);
+        assert_eq!(travel(Family::Sinumerik, &sinumerik("0", "R2==1")), 1);
     }
 
     #[test]

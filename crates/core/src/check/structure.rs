@@ -2429,6 +2429,7 @@ impl Checker {
                     w.token()
                 );
                 self.report(Rule::ProgramNumberNotFirst, message, b.line, w.column);
+                self.jump_runs_ended();
             }
         }
     }
@@ -2450,8 +2451,19 @@ impl Checker {
                     String::from_utf8_lossy(text)
                 );
                 self.report(Rule::ProgramNumberNotFirst, message, b.line, column);
+                self.jump_runs_ended();
             }
         }
+    }
+
+    /// A program's start, whether the one before ended or not (an O number or a name after
+    /// the first block, a `%` after the start): the runs where a forward jump is taken end
+    /// there, and the jumps whose targets have not come arrive nowhere (review 48 F9: a
+    /// GOTO searches its target in its own program, and the next program's locals are its
+    /// own).
+    pub(super) fn jump_runs_ended(&mut self) {
+        self.jumps_pending.clear();
+        self.runs.clear();
     }
 }
 

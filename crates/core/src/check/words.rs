@@ -76,11 +76,22 @@ impl Checker {
         };
         if !self.unfollowed_noted {
             self.unfollowed_noted = true;
-            let message = format!(
-                "{what}: the checker reads the program in file order and does not follow \
-                 jumps, loops or calls; from here on the position, feed and speed are taken as \
-                 unknown until the program sets them"
-            );
+            // (review 48 F3: a forward conditional jump's run is read at its target)
+            let message = if call.is_none() && self.jump_keeps_params(b) {
+                format!(
+                    "{what}: the checker reads the program in file order; where this forward \
+                     jump is taken and parameters are known here, the blocks from its target \
+                     on are read too with the values they hold here (64 blocks at most: \
+                     docs/check.md, \"At a jump target\"); the position, feed and speed are \
+                     taken as unknown after it until the program sets them"
+                )
+            } else {
+                format!(
+                    "{what}: the checker reads the program in file order and does not follow \
+                     jumps, loops or calls; from here on the position, feed and speed are \
+                     taken as unknown until the program sets them"
+                )
+            };
             self.report(Rule::NotFollowed, message, b.line, column);
         }
         true
