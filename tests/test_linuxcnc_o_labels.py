@@ -52,6 +52,14 @@ def program(call: str, define: str = "o100") -> str:
     ("o[#1*2-100] call", "o100"),
     ("o##2 call", "o100"),
     ("o#[#2] call", "o100"),
+    # a function of a constant that keeps a whole number whole (review 48, F4)
+    ("oabs[-100] call", "o100"),
+    ("o[abs[-100]] call", "o100"),
+    ("ofix[100.9] call", "o100"),
+    ("oround[99.5] call", "o100"),
+    ("o100 call", "oabs[-100]"),
+    ("o100 call", "o[abs[-100]]"),
+    ("oabs[-100] call", "ofup[99.5]"),
 ])
 def test_a_label_rs274_reads_calls_the_same_subroutine(tmp_path, call, define):
     text = program(call, define)
@@ -61,7 +69,7 @@ def test_a_label_rs274_reads_calls_the_same_subroutine(tmp_path, call, define):
     assert "STRAIGHT_TRAVERSE(900.0000" in out, out
 
 
-@pytest.mark.parametrize("call", ["oabs[-100] call", "ofix[100.9] call", "o[abs[-100]] call"])
+@pytest.mark.parametrize("call", ["osqrt[10000] call", "o[sqrt[10000]] call"])
 def test_a_label_of_a_function_calls_a_target_the_checker_does_not_know(tmp_path, call):
     text = program(call)
     found = findings(text)
@@ -121,3 +129,12 @@ def test_an_endif_s_computed_label_closes_the_condition_of_its_value(tmp_path, v
     else:
         assert errors == []
         assert "undefined O-word label" in out, out
+
+
+def test_a_definition_labelled_by_a_function_is_closed_by_its_value(tmp_path):
+    # review 48, F4: rs274 runs it; no TG114 (never closed) nor TG138 (another label)
+    text = "oabs[-100] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n"
+    found = findings(text)
+    assert [f for f in found if f[2] in ("error", "warning")] == [], found
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out
