@@ -138,3 +138,17 @@ def test_a_definition_labelled_by_a_function_is_closed_by_its_value(tmp_path):
     assert [f for f in found if f[2] in ("error", "warning")] == [], found
     out = rs274_output(tmp_path, text)
     assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out
+
+
+@pytest.mark.parametrize("text, line", [
+    ("G21 G90\no100.5 if [1]\nG0 X1\no100.5 endif\nM2\n", 2),
+    ("G21 G90\no[100.5] while [0]\no[100.5] endwhile\nM2\n", 2),
+    ("o100.5 sub\nG0 X1\no100.5 endsub\nG21 G90\no100.5 call\nM2\n", 1),
+])
+def test_a_fractional_label_is_refused_on_any_o_word_line(tmp_path, text, line):
+    # review 48, F5: rs274's read_o reads every o-word's label as an integer
+    found = findings(text)
+    assert [(r, ln) for r, ln, sev, _ in found if sev == "error"] == [(REFUSES, line)], found
+    assert not any(r == NOT_FOLLOWED and "does not know" in m for r, _, _, m in found), found
+    out = rs274_output(tmp_path, text)
+    assert "Non integer value for integer" in out, out

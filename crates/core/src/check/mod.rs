@@ -1069,6 +1069,8 @@ pub struct Checker {
     /// calls it; and the labels the file's calls name.
     linuxcnc_body_unassigned: Vec<(Vec<u8>, usize, usize, Vec<u8>)>,
     linuxcnc_calls: HashSet<Vec<u8>>,
+    /// LinuxCNC: an o-word's label of a known fraction was refused (TG412); rs274 stops there.
+    linuxcnc_fraction_said: bool,
     /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
     /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
     /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
@@ -1283,6 +1285,7 @@ impl Checker {
             linuxcnc_body_named: HashSet::new(),
             linuxcnc_body_unassigned: Vec::new(),
             linuxcnc_calls: HashSet::new(),
+            linuxcnc_fraction_said: false,
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,

@@ -1057,10 +1057,12 @@ impl Checker {
             std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
         }
         let known = self.linuxcnc_call_label(text);
+        // (a value known that is no integer, `o100.5 endsub`: refused at its line, TG412)
+        let fraction = self.linuxcnc_label_value(&known).is_some();
         if !opens {
             std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
         }
-        if !crate::statement::computed_label(&known) {
+        if !crate::statement::computed_label(&known) || fraction {
             return (opens, known);
         }
         match &self.open_definition {
@@ -1112,17 +1114,28 @@ impl Checker {
     /// `rs274 -g`; review 45, finding L2; review 47, F3).
     #[cold]
     #[inline(never)]
-    fn linuxcnc_fractional_label(&mut self, label: &[u8], line: usize, column: usize) {
+    fn linuxcnc_fractional_label(
+        &mut self,
+        label: &[u8],
+        keyword: &[u8],
+        line: usize,
+        column: usize,
+    ) {
+        if self.linuxcnc_fraction_said {
+            return; // (rs274 stops at the first)
+        }
         let Some(value) = self.linuxcnc_label_value(label) else {
             return;
         };
         if crate::statement::rs274_integer(value).is_some() {
             return;
         }
+        self.linuxcnc_fraction_said = true;
         let message = format!(
-            "Non integer value for integer (rs274ngc): the label of {} call is {value}, \
+            "Non integer value for integer (rs274ngc): the label of {} {} is {value}, \
              and an o-word's number must be a whole number",
-            String::from_utf8_lossy(label)
+            String::from_utf8_lossy(label),
+            String::from_utf8_lossy(keyword)
         );
         self.report(Rule::LinuxCncRefuses, message, line, column);
     }
@@ -1139,13 +1152,16 @@ impl Checker {
     /// are taken as made; the calls of the file's lines, body or not, are noted here.
     fn linuxcnc_body_locals(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
         for &(column, kind, text) in b.statements {
-            if kind == Kind::Call
-                && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
-            {
-                let label = self.linuxcnc_call_label(text);
-                if crate::statement::computed_label(&label) {
-                    self.linuxcnc_fractional_label(&label, b.line, column);
-                }
+            let Some(keyword) = crate::statement::o_keyword(text) else {
+                continue;
+            };
+            let label = self.linuxcnc_call_label(text);
+            // (read_o reads the label of every o-word line, whatever its keyword: `o100.5 if`
+            // and `o100.5 sub` stop rs274 at their line; review 48, F5)
+            if crate::statement::computed_label(&label) {
+                self.linuxcnc_fractional_label(&label, &keyword, b.line, column);
+            }
+            if kind == Kind::Call && keyword == b"call" {
                 self.linuxcnc_calls.insert(label);
             }
         }
@@ -3143,6 +3159,36 @@ mod tests {
             );
             assert_eq!(fired(linuxcnc(), &sub, Rule::NotRead), [(1, 1)], "{end}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_refuses_a_fractional_label_on_any_o_word_and_closes_a_function_s_label() {
+        // rs274's read_o reads every o-word's label as an integer: `o100.5 if` and `o100.5 sub`
+        // stop it at their line, "Non integer value for integer" (`rs274 -g`; review 48, F5)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| fired(linuxcnc(), text, Rule::LinuxCncRefuses);
+        assert_eq!(
+            refused("G21 G90\no100.5 if [1]\nG0 X1\no100.5 endif\nM2\n"),
+            [(2, 1)]
+        );
+        assert_eq!(
+            refused("G21 G90\n#1=3\no[#1+.5] while [0]\no[#1+.5] endwhile\nM2\n"),
+            [(3, 1)]
+        );
+        let sub = "o100.5 sub\nG0 X1\no100.5 endsub\nG21 G90\no100.5 call\nM2\n";
+        assert_eq!(refused(sub), [(1, 1)]);
+        // (the endsub's label is known, a fraction: no note that it is not known)
+        assert!(findings(linuxcnc(), sub, Rule::NotFollowed)
+            .iter()
+            .all(|f| f.line != 3));
+        assert_eq!(
+            refused("G21 G90\no100 if [1]\nG0 X1\no100.0 endif\nM2\n"),
+            []
+        );
+        // `oabs[-100] sub` is o100 sub, closed by `o100 endsub` (review 48, F4)
+        let sub = "oabs[-100] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::NoProgramEnd), []);
+        assert_eq!(fired(linuxcnc(), sub, Rule::EndsubNamedOtherwise), []);
     }
 
     #[test]
