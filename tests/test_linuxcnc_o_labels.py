@@ -152,3 +152,18 @@ def test_a_fractional_label_is_refused_on_any_o_word_line(tmp_path, text, line):
     assert not any(r == NOT_FOLLOWED and "does not know" in m for r, _, _, m in found), found
     out = rs274_output(tmp_path, text)
     assert "Non integer value for integer" in out, out
+
+
+@pytest.mark.parametrize("before, on, ends", [
+    ("#1=5", "#1=2 m#1", False),
+    ("(none)", "#1=2 m#1", False),
+    ("#1=5", "#1=7 m#1", False),
+    ("#1=2", "#1=5 m#1", True),
+])
+def test_an_m_word_reads_the_value_from_before_its_line(tmp_path, before, on, ends):
+    # review 48, F8: rs274 makes a line's assignments at its end (RS274/NGC 3.0, 3.2.1)
+    text = f"G21 G90\n{before}\nG0 X1\n{on}\nG0 X2\nM2\n"
+    unread = [ln for r, ln, _, _ in findings(text) if r == rule_id("NotRead")]
+    assert unread == ([5] if ends else [])
+    out = rs274_output(tmp_path, text)
+    assert ("STRAIGHT_TRAVERSE(2.0000" in out) is not ends, out

@@ -2246,6 +2246,11 @@ impl Checker {
             &self.values.ms,
             l_word,
         );
+        // LinuxCNC: an M word's value read before the line's own assignments, which rs274
+        // makes at the line's end (`#1=2 M#1` after `#1=5` is M5; review 48, F8)
+        let linuxcnc_m_end = self.config.family == Family::LinuxCnc
+            && self.letters & bit(b'M') != 0
+            && self.linuxcnc_m_ends(b);
         self.assignments(b);
         self.formulas(b);
         if self.config.haas {
@@ -2290,7 +2295,7 @@ impl Checker {
                 w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
             });
         if self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 {
-            ends = self.linuxcnc_end(b, ends);
+            ends = self.linuxcnc_end(b, ends || linuxcnc_m_end);
         }
         let returns = (m_read || !b.statements.is_empty())
             && dialect::returns(self.config.family, b.words, b.statements, &self.readable);

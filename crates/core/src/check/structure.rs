@@ -1255,12 +1255,6 @@ impl Checker {
     /// and it counts as the program's end for TG114 alone (review 38, finding 8).
     #[inline(never)]
     pub(super) fn linuxcnc_end(&mut self, b: &BlockView<'_>, ends: bool) -> bool {
-        let ends = ends
-            || b.words.iter().any(|w| {
-                w.letter == b'M' && !w.expression.is_empty() && {
-                    matches!(self.linuxcnc_m_number(w), Some(2 | 30))
-                }
-            });
         if !ends {
             return false;
         }
@@ -1270,6 +1264,19 @@ impl Checker {
         }
         self.reading_end.ended_at(b.line);
         true
+    }
+
+    /// LinuxCNC: whether an M word of block `b` written as a parameter or an expression is
+    /// M2 or M30 by the values the checker knows -- asked before the block's assignments are
+    /// made, as rs274 reads every word of a line with the values from before it (RS274/NGC
+    /// 3.0, 3.2.1: parameters set on a line take effect after it; `rs274 -g` reads `#1=5` ...
+    /// `#1=2 M#1` as M5 and runs on; review 48, F8).
+    pub(super) fn linuxcnc_m_ends(&self, b: &BlockView<'_>) -> bool {
+        b.words.iter().any(|w| {
+            w.letter == b'M'
+                && !w.expression.is_empty()
+                && matches!(self.linuxcnc_m_number(w), Some(2 | 30))
+        })
     }
 
     /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
@@ -3131,6 +3138,17 @@ mod tests {
                 "{end}"
             );
         }
+        // the M word's value is the one from before the line's own assignments (rs274 makes
+        // them at the line's end: `#1=5` ... `#1=2 M#1` is M5, `#1=2` ... `#1=5 M#1` M2; `rs274
+        // -g`, review 48, F8)
+        let same_line = |before: &str, on: &str| {
+            let text = format!("G21 G90\n{before}\nG0 X1\n{on}\nG0 X2\nM2\n");
+            fired(linuxcnc(), &text, Rule::NotRead)
+        };
+        assert_eq!(same_line("#1=5", "#1=2 M#1"), []);
+        assert_eq!(same_line("(none)", "#1=2 M#1"), []);
+        assert_eq!(same_line("#1=5", "#1=7 M#1"), []);
+        assert_eq!(same_line("#1=2", "#1=5 M#1"), [(5, 1)]);
         // a value not known, or no end: read on
         for end in ["M#<nope>", "M[1+2]", "M#1", "M0"] {
             let text = text(end);
