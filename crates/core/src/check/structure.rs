@@ -1046,6 +1046,27 @@ impl Checker {
         if opens && self.open_definition.is_none() {
             self.linuxcnc_sub_params.clone_from(&self.params);
         }
+        // a definition whose label the checker could not work out (`osqrt[10000] sub`): its
+        // endsub is taken as closing it, said (TG140), not a false TG114/TG138 (review 48, F4)
+        if let Some((line, _, open)) = &self.open_definition {
+            if !opens
+                && label != *open
+                && crate::statement::computed_label(open)
+                && self.linuxcnc_label_value(open).is_none()
+            {
+                let (line, open) = (*line, open.clone());
+                let message = format!(
+                    "{} endsub: taken as closing {} sub (line {line}), whose label is worked \
+                     out as the line runs, from a value the checker does not know (rs274 \
+                     closes it here only where the values are the same)",
+                    String::from_utf8_lossy(&label),
+                    String::from_utf8_lossy(&open),
+                );
+                let column = b.statements.first().map_or(1, |s| s.0);
+                self.report(Rule::NotFollowed, message, b.line, column);
+                return (opens, open);
+            }
+        }
         if !crate::statement::computed_label(&label) {
             return (opens, label);
         }
@@ -3203,6 +3224,13 @@ mod tests {
             refused("G21 G90\no100 if [1]\nG0 X1\no100.0 endif\nM2\n"),
             []
         );
+        // a label not worked out (`osqrt[10000] sub`): its endsub taken as closing it, said
+        let sub = "osqrt[10000] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::NoProgramEnd), []);
+        assert_eq!(fired(linuxcnc(), sub, Rule::EndsubNamedOtherwise), []);
+        assert!(findings(linuxcnc(), sub, Rule::NotFollowed)
+            .iter()
+            .any(|f| f.line == 3));
         // `oabs[-100] sub` is o100 sub, closed by `o100 endsub` (review 48, F4)
         let sub = "oabs[-100] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n";
         assert_eq!(fired(linuxcnc(), sub, Rule::NoProgramEnd), []);
