@@ -167,3 +167,13 @@ def test_an_m_word_reads_the_value_from_before_its_line(tmp_path, before, on, en
     assert unread == ([5] if ends else [])
     out = rs274_output(tmp_path, text)
     assert ("STRAIGHT_TRAVERSE(2.0000" in out) is not ends, out
+
+
+def test_a_definition_whose_label_is_not_worked_out_is_closed_by_its_endsub(tmp_path):
+    # review 48, F4: rs274 runs it (sqrt[10000] is 100); the checker says so, no TG114/TG138
+    text = "osqrt[10000] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n"
+    found = findings(text)
+    assert [f for f in found if f[2] in ("error", "warning")] == [], found
+    assert any(r == NOT_FOLLOWED and line == 3 for r, line, _, _ in found), found
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out
