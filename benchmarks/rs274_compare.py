@@ -487,6 +487,18 @@ SEEDED: list[tuple[str, str, int, str]] = [
      + "o100 call\nM2\n", 0, "accepted"),
     ("endif label of a parameter's value", HEAD + "o5 if [1]\n#1=5\no#1 endif\n"
      "G0 X#<nope>\nM2\n", 6, "error"),
+    # review 48 (fixl48): a function's label on a definition, a fraction on any o-word, an M
+    # word's parameter set on its own line
+    ("sub label a function", "oabs[-100] sub\nG0 X1\no100 endsub\n" + HEAD
+     + "o100 call\nM2\n", 0, "accepted"),
+    ("if label with a fraction", HEAD + "o100.5 if [1]\nG0 X1\no100.5 endif\nM2\n", 3,
+     "error"),
+    ("sub label with a fraction", "o100.5 sub\nG0 X1\no100.5 endsub\n" + HEAD
+     + "o100.5 call\nM2\n", 1, "error"),
+    ("M of a parameter set on its line (old 5)", HEAD + "#1=5\n#1=2 M#1\nG0 X#<nope>\nM2\n",
+     5, "error"),
+    ("M of a parameter set on its line (old 2)", HEAD + "#1=2\n#1=5 M#1\nG0 X1\nM2\n", 0,
+     "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -52,6 +52,14 @@ def program(call: str, define: str = "o100") -> str:
     ("o[#1*2-100] call", "o100"),
     ("o##2 call", "o100"),
     ("o#[#2] call", "o100"),
+    # a function of a constant that keeps a whole number whole (review 48, F4)
+    ("oabs[-100] call", "o100"),
+    ("o[abs[-100]] call", "o100"),
+    ("ofix[100.9] call", "o100"),
+    ("oround[99.5] call", "o100"),
+    ("o100 call", "oabs[-100]"),
+    ("o100 call", "o[abs[-100]]"),
+    ("oabs[-100] call", "ofup[99.5]"),
 ])
 def test_a_label_rs274_reads_calls_the_same_subroutine(tmp_path, call, define):
     text = program(call, define)
@@ -61,7 +69,7 @@ def test_a_label_rs274_reads_calls_the_same_subroutine(tmp_path, call, define):
     assert "STRAIGHT_TRAVERSE(900.0000" in out, out
 
 
-@pytest.mark.parametrize("call", ["oabs[-100] call", "ofix[100.9] call", "o[abs[-100]] call"])
+@pytest.mark.parametrize("call", ["osqrt[10000] call", "o[sqrt[10000]] call"])
 def test_a_label_of_a_function_calls_a_target_the_checker_does_not_know(tmp_path, call):
     text = program(call)
     found = findings(text)
@@ -121,3 +129,51 @@ def test_an_endif_s_computed_label_closes_the_condition_of_its_value(tmp_path, v
     else:
         assert errors == []
         assert "undefined O-word label" in out, out
+
+
+def test_a_definition_labelled_by_a_function_is_closed_by_its_value(tmp_path):
+    # review 48, F4: rs274 runs it; no TG114 (never closed) nor TG138 (another label)
+    text = "oabs[-100] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n"
+    found = findings(text)
+    assert [f for f in found if f[2] in ("error", "warning")] == [], found
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out
+
+
+@pytest.mark.parametrize("text, line", [
+    ("G21 G90\no100.5 if [1]\nG0 X1\no100.5 endif\nM2\n", 2),
+    ("G21 G90\no[100.5] while [0]\no[100.5] endwhile\nM2\n", 2),
+    ("o100.5 sub\nG0 X1\no100.5 endsub\nG21 G90\no100.5 call\nM2\n", 1),
+])
+def test_a_fractional_label_is_refused_on_any_o_word_line(tmp_path, text, line):
+    # review 48, F5: rs274's read_o reads every o-word's label as an integer
+    found = findings(text)
+    assert [(r, ln) for r, ln, sev, _ in found if sev == "error"] == [(REFUSES, line)], found
+    assert not any(r == NOT_FOLLOWED and "does not know" in m for r, _, _, m in found), found
+    out = rs274_output(tmp_path, text)
+    assert "Non integer value for integer" in out, out
+
+
+@pytest.mark.parametrize("before, on, ends", [
+    ("#1=5", "#1=2 m#1", False),
+    ("(none)", "#1=2 m#1", False),
+    ("#1=5", "#1=7 m#1", False),
+    ("#1=2", "#1=5 m#1", True),
+])
+def test_an_m_word_reads_the_value_from_before_its_line(tmp_path, before, on, ends):
+    # review 48, F8: rs274 makes a line's assignments at its end (RS274/NGC 3.0, 3.2.1)
+    text = f"G21 G90\n{before}\nG0 X1\n{on}\nG0 X2\nM2\n"
+    unread = [ln for r, ln, _, _ in findings(text) if r == rule_id("NotRead")]
+    assert unread == ([5] if ends else [])
+    out = rs274_output(tmp_path, text)
+    assert ("STRAIGHT_TRAVERSE(2.0000" in out) is not ends, out
+
+
+def test_a_definition_whose_label_is_not_worked_out_is_closed_by_its_endsub(tmp_path):
+    # review 48, F4: rs274 runs it (sqrt[10000] is 100); the checker says so, no TG114/TG138
+    text = "osqrt[10000] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n"
+    found = findings(text)
+    assert [f for f in found if f[2] in ("error", "warning")] == [], found
+    assert any(r == NOT_FOLLOWED and line == 3 for r, line, _, _ in found), found
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(1.0000" in out and REFUSED not in out, out

@@ -120,6 +120,9 @@ BOTH = [
     # o-word labels read_o reads (lcnc48): a fraction, and an endif closed by its value
     "o-word label with a fraction",
     "endif label of a parameter's value",
+    # review 48 (fixl48): a fraction on any o-word; an M word reads the value before its line
+    "if label with a fraction", "sub label with a fraction",
+    "M of a parameter set on its line (old 5)",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -135,7 +138,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # label's value (lcnc48)
        "o-word label with a sign", "o-word label with a point",
        "o-word label a parameter's parameter", "o-word label a function",
-       "endsub label of a parameter's value"]
+       "endsub label of a parameter's value",
+       # review 48 (fixl48): a function's label on a definition; an end by the value before
+       "sub label a function", "M of a parameter set on its line (old 2)"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 

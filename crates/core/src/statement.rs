@@ -793,7 +793,7 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     // a number, signed, with a point or in brackets, is that number's label (`o+100 sub`,
     // `o100.0 call` and `o[0100] call` name `o100 sub`; `o[100] endsub` closes it): rs274
     // reads the value as an integer (`read_integer_value`)
-    match o_number(&text[1..end]).and_then(rs274_integer) {
+    match o_constant(&text[1..end], 0).and_then(rs274_integer) {
         Some(n) => format!("o{n}").into_bytes(),
         None => text[..end].to_vec(),
     }
@@ -810,6 +810,61 @@ pub(crate) fn computed_label(label: &[u8]) -> bool {
         }
         _ => false,
     }
+}
+
+/// The value of a label written as a number ([`o_number`]) or as one of rs274ngc's unary
+/// functions that keep a whole number whole, of such a value (`abs[-100]`, `[abs[-100]]`,
+/// `fix[100.9]`, `-fup[-100.5]`): `ABS`, `FIX` (floor), `FUP` (ceil) and `ROUND` (half away
+/// from zero), as interp_execute.cc `execute_unary` computes them; `rs274 -g` runs `oabs[-100]
+/// sub` ... `o100 endsub` ... `o100 call` (review 48, F4). None for anything else (a
+/// parameter, an operation, another function: worked out as the line runs).
+fn o_constant(text: &[u8], depth: usize) -> Option<f64> {
+    if let Some(value) = o_number(text) {
+        return Some(value);
+    }
+    if depth > 8 {
+        return None;
+    }
+    match text {
+        [b'-', inner @ ..] => return o_constant(inner, depth + 1).map(|v| -v),
+        [b'+', inner @ ..] => return o_constant(inner, depth + 1),
+        [b'[', inner @ .., b']'] if one_group(text) => return o_constant(inner, depth + 1),
+        _ => {}
+    }
+    let letters = text.iter().take_while(|c| c.is_ascii_alphabetic()).count();
+    let (name, argument) = text.split_at(letters);
+    if !one_group(argument) {
+        return None;
+    }
+    let value = o_constant(&argument[1..argument.len() - 1], depth + 1)?;
+    Some(match name {
+        b"abs" => value.abs(),
+        b"fix" => value.floor(),
+        b"fup" => value.ceil(),
+        b"round" => (value + if value < 0.0 { -0.5 } else { 0.5 }).trunc(),
+        _ => return None,
+    })
+}
+
+/// Whether `text` is one bracketed group, `[` ... its matching `]`, and nothing after.
+fn one_group(text: &[u8]) -> bool {
+    if text.first() != Some(&b'[') {
+        return false;
+    }
+    let mut depth = 0usize;
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'[' => depth += 1,
+            b']' => {
+                depth -= 1;
+                if depth == 0 {
+                    return i + 1 == text.len();
+                }
+            }
+            _ => {}
+        }
+    }
+    false
 }
 
 /// The value of a label written as a number (blanks taken out): signs, brackets around it and
@@ -3015,7 +3070,18 @@ mod tests {
         assert_eq!(o_label(b"o99.99995 call"), b"o100");
         assert_eq!(o_label(b"o100.5 call"), b"o100.5");
         assert_eq!(o_label(b"o-0 call"), b"o0");
-        assert_eq!(o_label(b"oABS[-100]call[1]"), b"oabs[-100]");
+        // a function of a constant that keeps a whole number whole is its value's label
+        // (review 48, F4: `rs274 -g` runs `oabs[-100] sub` ... `o100 endsub`)
+        assert_eq!(o_label(b"oABS[-100]call[1]"), b"o100");
+        assert_eq!(o_label(b"o[abs[-100]] sub"), b"o100");
+        assert_eq!(o_label(b"ofix[100.9] call"), b"o100");
+        assert_eq!(o_label(b"o-fup[-100.5] endsub"), b"o100");
+        assert_eq!(o_label(b"oround[99.5] call"), b"o100");
+        assert_eq!(o_label(b"oround[-99.5] call"), b"o-100");
+        assert_eq!(o_label(b"oabs[[-100]] call"), b"o100");
+        assert_eq!(o_label(b"oabs[-100.5] call"), b"oabs[-100.5]");
+        assert_eq!(o_label(b"osin[90] call"), b"osin[90]");
+        assert_eq!(o_label(b"oabs[#1] call"), b"oabs[#1]");
         assert_eq!(o_label(b"o##2 call"), b"o##2");
         assert_eq!(o_label(b"o#[#2]endsub"), b"o#[#2]");
         assert_eq!(o_label_len(b"o abs [-100] call [5]"), 12);

@@ -1075,6 +1075,8 @@ pub struct Checker {
     /// calls it; and the labels the file's calls name.
     linuxcnc_body_unassigned: Vec<(Vec<u8>, usize, usize, Vec<u8>)>,
     linuxcnc_calls: HashSet<Vec<u8>>,
+    /// LinuxCNC: an o-word's label of a known fraction was refused (TG412); rs274 stops there.
+    linuxcnc_fraction_said: bool,
     /// LinuxCNC: the same of an open `o<name> sub` definition's body, which runs under its
     /// caller's feed mode, not the one the lines before the `sub` give: unsure from the `sub`
     /// until a G93/G94/G95 of the body outside its conditions and loops, again after a call
@@ -1290,6 +1292,7 @@ impl Checker {
             linuxcnc_body_named: HashSet::new(),
             linuxcnc_body_unassigned: Vec::new(),
             linuxcnc_calls: HashSet::new(),
+            linuxcnc_fraction_said: false,
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
             linuxcnc_definition_feed: None,
@@ -2250,6 +2253,11 @@ impl Checker {
             &self.values.ms,
             l_word,
         );
+        // LinuxCNC: an M word's value read before the line's own assignments, which rs274
+        // makes at the line's end (`#1=2 M#1` after `#1=5` is M5; review 48, F8)
+        let linuxcnc_m_end = self.config.family == Family::LinuxCnc
+            && self.letters & bit(b'M') != 0
+            && self.linuxcnc_m_ends(b);
         self.assignments(b);
         self.formulas(b);
         if self.config.haas {
@@ -2294,7 +2302,7 @@ impl Checker {
                 w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
             });
         if self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 {
-            ends = self.linuxcnc_end(b, ends);
+            ends = self.linuxcnc_end(b, ends || linuxcnc_m_end);
         }
         let returns = (m_read || !b.statements.is_empty())
             && dialect::returns(self.config.family, b.words, b.statements, &self.readable);

@@ -1072,6 +1072,27 @@ impl Checker {
         if opens && self.open_definition.is_none() {
             self.linuxcnc_sub_params.clone_from(&self.params);
         }
+        // a definition whose label the checker could not work out (`osqrt[10000] sub`): its
+        // endsub is taken as closing it, said (TG140), not a false TG114/TG138 (review 48, F4)
+        if let Some((line, _, open)) = &self.open_definition {
+            if !opens
+                && label != *open
+                && crate::statement::computed_label(open)
+                && self.linuxcnc_label_value(open).is_none()
+            {
+                let (line, open) = (*line, open.clone());
+                let message = format!(
+                    "{} endsub: taken as closing {} sub (line {line}), whose label is worked \
+                     out as the line runs, from a value the checker does not know (rs274 \
+                     closes it here only where the values are the same)",
+                    String::from_utf8_lossy(&label),
+                    String::from_utf8_lossy(&open),
+                );
+                let column = b.statements.first().map_or(1, |s| s.0);
+                self.report(Rule::NotFollowed, message, b.line, column);
+                return (opens, open);
+            }
+        }
         if !crate::statement::computed_label(&label) {
             return (opens, label);
         }
@@ -1083,10 +1104,12 @@ impl Checker {
             std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
         }
         let known = self.linuxcnc_call_label(text);
+        // (a value known that is no integer, `o100.5 endsub`: refused at its line, TG412)
+        let fraction = self.linuxcnc_label_value(&known).is_some();
         if !opens {
             std::mem::swap(&mut self.params, &mut self.linuxcnc_sub_params);
         }
-        if !crate::statement::computed_label(&known) {
+        if !crate::statement::computed_label(&known) || fraction {
             return (opens, known);
         }
         match &self.open_definition {
@@ -1138,17 +1161,28 @@ impl Checker {
     /// `rs274 -g`; review 45, finding L2; review 47, F3).
     #[cold]
     #[inline(never)]
-    fn linuxcnc_fractional_label(&mut self, label: &[u8], line: usize, column: usize) {
+    fn linuxcnc_fractional_label(
+        &mut self,
+        label: &[u8],
+        keyword: &[u8],
+        line: usize,
+        column: usize,
+    ) {
+        if self.linuxcnc_fraction_said {
+            return; // (rs274 stops at the first)
+        }
         let Some(value) = self.linuxcnc_label_value(label) else {
             return;
         };
         if crate::statement::rs274_integer(value).is_some() {
             return;
         }
+        self.linuxcnc_fraction_said = true;
         let message = format!(
-            "Non integer value for integer (rs274ngc): the label of {} call is {value}, \
+            "Non integer value for integer (rs274ngc): the label of {} {} is {value}, \
              and an o-word's number must be a whole number",
-            String::from_utf8_lossy(label)
+            String::from_utf8_lossy(label),
+            String::from_utf8_lossy(keyword)
         );
         self.report(Rule::LinuxCncRefuses, message, line, column);
     }
@@ -1165,13 +1199,16 @@ impl Checker {
     /// are taken as made; the calls of the file's lines, body or not, are noted here.
     fn linuxcnc_body_locals(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
         for &(column, kind, text) in b.statements {
-            if kind == Kind::Call
-                && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
-            {
-                let label = self.linuxcnc_call_label(text);
-                if crate::statement::computed_label(&label) {
-                    self.linuxcnc_fractional_label(&label, b.line, column);
-                }
+            let Some(keyword) = crate::statement::o_keyword(text) else {
+                continue;
+            };
+            let label = self.linuxcnc_call_label(text);
+            // (read_o reads the label of every o-word line, whatever its keyword: `o100.5 if`
+            // and `o100.5 sub` stop rs274 at their line; review 48, F5)
+            if crate::statement::computed_label(&label) {
+                self.linuxcnc_fractional_label(&label, &keyword, b.line, column);
+            }
+            if kind == Kind::Call && keyword == b"call" {
                 self.linuxcnc_calls.insert(label);
             }
         }
@@ -1265,12 +1302,6 @@ impl Checker {
     /// and it counts as the program's end for TG114 alone (review 38, finding 8).
     #[inline(never)]
     pub(super) fn linuxcnc_end(&mut self, b: &BlockView<'_>, ends: bool) -> bool {
-        let ends = ends
-            || b.words.iter().any(|w| {
-                w.letter == b'M' && !w.expression.is_empty() && {
-                    matches!(self.linuxcnc_m_number(w), Some(2 | 30))
-                }
-            });
         if !ends {
             return false;
         }
@@ -1280,6 +1311,19 @@ impl Checker {
         }
         self.reading_end.ended_at(b.line);
         true
+    }
+
+    /// LinuxCNC: whether an M word of block `b` written as a parameter or an expression is
+    /// M2 or M30 by the values the checker knows -- asked before the block's assignments are
+    /// made, as rs274 reads every word of a line with the values from before it (RS274/NGC
+    /// 3.0, 3.2.1: parameters set on a line take effect after it; `rs274 -g` reads `#1=5` ...
+    /// `#1=2 M#1` as M5 and runs on; review 48, F8).
+    pub(super) fn linuxcnc_m_ends(&self, b: &BlockView<'_>) -> bool {
+        b.words.iter().any(|w| {
+            w.letter == b'M'
+                && !w.expression.is_empty()
+                && matches!(self.linuxcnc_m_number(w), Some(2 | 30))
+        })
     }
 
     /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
@@ -3153,6 +3197,17 @@ mod tests {
                 "{end}"
             );
         }
+        // the M word's value is the one from before the line's own assignments (rs274 makes
+        // them at the line's end: `#1=5` ... `#1=2 M#1` is M5, `#1=2` ... `#1=5 M#1` M2; `rs274
+        // -g`, review 48, F8)
+        let same_line = |before: &str, on: &str| {
+            let text = format!("G21 G90\n{before}\nG0 X1\n{on}\nG0 X2\nM2\n");
+            fired(linuxcnc(), &text, Rule::NotRead)
+        };
+        assert_eq!(same_line("#1=5", "#1=2 M#1"), []);
+        assert_eq!(same_line("(none)", "#1=2 M#1"), []);
+        assert_eq!(same_line("#1=5", "#1=7 M#1"), []);
+        assert_eq!(same_line("#1=2", "#1=5 M#1"), [(5, 1)]);
         // a value not known, or no end: read on
         for end in ["M#<nope>", "M[1+2]", "M#1", "M0"] {
             let text = text(end);
@@ -3181,6 +3236,43 @@ mod tests {
             );
             assert_eq!(fired(linuxcnc(), &sub, Rule::NotRead), [(1, 1)], "{end}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_refuses_a_fractional_label_on_any_o_word_and_closes_a_function_s_label() {
+        // rs274's read_o reads every o-word's label as an integer: `o100.5 if` and `o100.5 sub`
+        // stop it at their line, "Non integer value for integer" (`rs274 -g`; review 48, F5)
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| fired(linuxcnc(), text, Rule::LinuxCncRefuses);
+        assert_eq!(
+            refused("G21 G90\no100.5 if [1]\nG0 X1\no100.5 endif\nM2\n"),
+            [(2, 1)]
+        );
+        assert_eq!(
+            refused("G21 G90\n#1=3\no[#1+.5] while [0]\no[#1+.5] endwhile\nM2\n"),
+            [(3, 1)]
+        );
+        let sub = "o100.5 sub\nG0 X1\no100.5 endsub\nG21 G90\no100.5 call\nM2\n";
+        assert_eq!(refused(sub), [(1, 1)]);
+        // (the endsub's label is known, a fraction: no note that it is not known)
+        assert!(findings(linuxcnc(), sub, Rule::NotFollowed)
+            .iter()
+            .all(|f| f.line != 3));
+        assert_eq!(
+            refused("G21 G90\no100 if [1]\nG0 X1\no100.0 endif\nM2\n"),
+            []
+        );
+        // a label not worked out (`osqrt[10000] sub`): its endsub taken as closing it, said
+        let sub = "osqrt[10000] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::NoProgramEnd), []);
+        assert_eq!(fired(linuxcnc(), sub, Rule::EndsubNamedOtherwise), []);
+        assert!(findings(linuxcnc(), sub, Rule::NotFollowed)
+            .iter()
+            .any(|f| f.line == 3));
+        // `oabs[-100] sub` is o100 sub, closed by `o100 endsub` (review 48, F4)
+        let sub = "oabs[-100] sub\nG0 X1\no100 endsub\nG21 G90\no100 call\nM2\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::NoProgramEnd), []);
+        assert_eq!(fired(linuxcnc(), sub, Rule::EndsubNamedOtherwise), []);
     }
 
     #[test]
