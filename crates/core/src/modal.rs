@@ -127,6 +127,16 @@ pub fn polar_axes(plane: i64) -> (u8, u8) {
 }
 
 /// A length `value` in `units` as millimetres.
+/// An axis whose position is no longer known (a lathe's X beside U in one block): off the
+/// hot path, which a mill's block never takes.
+#[cold]
+#[inline(never)]
+fn lose_axis(s: &mut ModalState, drift: &mut Drift, j: usize, axis: u8) {
+    s.position[j] = None;
+    s.unknown |= bit(axis);
+    *drift = Drift::default();
+}
+
 fn to_mm(value: Dec, units: Units) -> f64 {
     match units {
         Units::Inch => value.to_f64() * 25.4,
@@ -1283,8 +1293,14 @@ impl ModalMachine {
                     self.drift[j] = Drift::default();
                     continue;
                 }
-                // (X and U, Z and W, in one block: X and Z not known after it,
-                // crate::check's `uw_beside_xz`; a U from where X is not known: not known)
+                // X and U, Z and W, in one block: no page at hand says which the control
+                // takes, or whether it alarms (docs/dialects.md), so X and Z are not known
+                // after it (crate::check's `uw_beside_xz` says so; review 44, F7)
+                if touched & bit(on) != 0 {
+                    lose_axis(s, &mut self.drift[j], j, on);
+                    continue;
+                }
+                // (a U from where X is not known: not known)
                 if s.unknown & bit(on) == 0 {
                     s.position[j] = s.position[j]
                         .unwrap_or(Dec::ZERO)

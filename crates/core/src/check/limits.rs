@@ -2178,25 +2178,6 @@ impl Checker {
         self.report(Rule::NotFollowed, message, line, column);
     }
 
-    /// The state's part of [`Checker::uw_beside_xz`], run with the state's own steps before
-    /// the rules read it: a lathe block that writes X and U (or Z and W), U and W moving X
-    /// and Z, leaves the axis's position not known (the modal walk added the U to the X).
-    pub(super) fn uw_beside_forget(&mut self, b: &BlockView<'_>) {
-        if !self.machine.uw_moved_xz()
-            || self.machine.taken().is_some()
-            || self.machine.ran_cycle() & CYCLE_RAN != 0
-        {
-            return;
-        }
-        let places = Facts::new(b.words, &self.values, self.machine.settings.dwell).moved_places();
-        let both = |pair: u32| places & pair == pair;
-        for (pair, axis) in [(0b1001, b'X'), (0b10_0100, b'Z')] {
-            if both(pair) {
-                self.machine.forget_axis(axis);
-            }
-        }
-    }
-
     /// A lathe block that writes X and U (or Z and W) where U and W move X and Z: no page
     /// at hand says which the control takes, or whether it alarms, so the axis's position is
     /// not known until an absolute one ([`crate::modal::ModalMachine`]), said once per file
@@ -2205,7 +2186,7 @@ impl Checker {
     #[inline(never)]
     fn uw_beside_xz(&mut self, line: usize, facts: &Facts<'_>, places: u32) {
         // (a block whose words are a code's data, `G65 P9732 W1. Z1.`, moves nothing; the
-        // axis itself is forgotten before the rules, by uw_beside_forget: a rule leaves the
+        // axis itself is forgotten by the modal walk, ModalMachine::apply: a rule leaves the
         // state as it found it)
         let both = |pair: u32| places & pair == pair;
         if !(both(0b1001) || both(0b10_0100)) || self.machine.taken().is_some() {

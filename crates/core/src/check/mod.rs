@@ -2222,10 +2222,6 @@ impl Checker {
             self.linuxcnc_nurbs_position(b, &before);
         }
         self.programmed_forms(b, &before);
-        // (a lathe's X beside U, Z beside W: the axis not known; state, not a rule)
-        if self.machine.uw_moved_xz() {
-            self.uw_beside_forget(b);
-        }
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
         // the tests', holds them to leaving it as they found it)
