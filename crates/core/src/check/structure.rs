@@ -315,6 +315,13 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
+        let (call, column) = self.call_words(b);
+        self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
+    }
+
+    /// A call by number's calling words as the messages name it (`M98 P1000`, `G66 P9010`,
+    /// `G65 P9010`) and the column of its P (1 where it has none).
+    fn call_words(&self, b: &BlockView<'_>) -> (String, usize) {
         let p = b
             .words
             .iter()
@@ -327,8 +334,7 @@ impl Checker {
         } else {
             format!("G65 {token}")
         };
-        let column = p.map_or(1, |w| w.column);
-        self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
+        (call, p.map_or(1, |w| w.column))
     }
 
     /// A call (`M98 P1000`, `G65 P9010`) in a FANUC's or a Haas's file: the units in force
@@ -392,23 +398,7 @@ impl Checker {
         };
         let followed = (self.early_on || !self.pending.is_empty() || !self.given_up.is_empty())
             && {
-                let token = b
-                    .words
-                    .iter()
-                    .find(|w| w.letter == b'P' && w.index.is_empty())
-                    .map_or_else(String::new, |w| w.token());
-                let call = if self.values.ms.contains(&98) {
-                    format!("M98 {token}")
-                } else if self.values.gs().contains(&66) {
-                    format!("G66 {token}")
-                } else {
-                    format!("G65 {token}")
-                };
-                let column = b
-                    .words
-                    .iter()
-                    .find(|w| w.letter == b'P' && w.index.is_empty())
-                    .map_or(1, |w| w.column);
+                let (call, column) = self.call_words(b);
                 self.early_call(super::called::Key::Number(number), call, (b.line, column))
             };
         if !followed {
