@@ -1768,7 +1768,8 @@ fn word<'a>(
     let operand = !indexed
         && match line.get(operand_at) {
             Some(b'#') => dialect.hash && dialect.brackets,
-            Some(b'[') => dialect.brackets,
+            // a SINUMERIK's `[ ]` holds an index: an address takes an expression after `=`
+            Some(b'[') => dialect.brackets && dialect.family != Family::Sinumerik,
             Some(c) if dialect.family == Family::LinuxCnc && c.is_ascii_alphabetic() => {
                 dialect.brackets && expr::function_ahead(line, operand_at)
             }
@@ -1804,6 +1805,19 @@ fn word<'a>(
                 ),
                 pos,
                 "6.4.7",
+            ));
+        }
+        if dialect.family == Family::Sinumerik && matches!(line[pos], b'[' | b'(') {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "address {letter} takes a number, or '=' before a variable or an expression \
+                     ({letter}=R2+10): a SINUMERIK requires the '=' where the value is more than \
+                     one constant, and '[ ]' hold an index (Programming Manual Fundamentals, \
+                     'Value assignments')"
+                ),
+                pos,
+                "6.1",
             ));
         }
         let (c, _) = Char::at(line, pos);
@@ -2800,6 +2814,33 @@ mod tests {
         assert!(read("G0 X-", &linuxcnc).is_err());
         // ISO 6983-1 reads one sign and a number
         assert!(read("G0 X--1", &STRICT).is_err());
+    }
+
+    #[test]
+    fn a_sinumerik_address_takes_an_expression_after_equals_only() {
+        // Programming Manual Fundamentals, "Value assignments": the '=' is required where the
+        // value is more than one constant; '[ ]' hold an index, '( )' a call's arguments
+        let sinumerik = Dialect::permissive(Family::Sinumerik);
+        assert_eq!(
+            words("G1 X=R2+10 Z=R1*2 F100", &sinumerik),
+            ["G1", "X=R2+10", "Z=R1*2", "F100"]
+        );
+        for (text, at) in [
+            ("G1 X[R1] F100", 4),
+            ("G1 X10 Z[R1*2]", 8),
+            ("G1 X(R1+2)", 4),
+        ] {
+            let (message, offset) = read(text, &sinumerik).unwrap_err();
+            assert!(
+                message.contains("'=' before a variable or an expression"),
+                "{message}"
+            );
+            assert!(message.contains("'Value assignments'"), "{message}");
+            assert_eq!(offset, at, "{text:?}");
+        }
+        // FANUC's Custom Macro B reads the bracketed expression after the address
+        let macro_b = Dialect::permissive(Family::MacroB);
+        assert_eq!(words("G1 X[#1+10]", &macro_b), ["G1", "X[#1+10]"]);
     }
 
     #[test]
