@@ -209,7 +209,9 @@ impl Checker {
                     // J K sets (#4-#33)
                     let sets = dialect::argument_sets(self.config.family, b.words, letter, i);
                     if letter != b':' && sets.is_none_or(|n| n > 10) {
-                        let other = b.words[j].token();
+                        // (the earlier word's text only for a message: a block's second G word,
+                        // of one block in twenty of some CAM programs, says none)
+                        let other = || b.words[j].token();
                         if let Some(n) = sets {
                             let message = format!(
                                 "{}: the {n}th {} word of a macro call; argument specification \
@@ -219,10 +221,11 @@ impl Checker {
                             );
                             self.report(Rule::DimensionRepeated, message, line, w.column);
                         } else if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
-                            let message = format!("{} repeats dimension word {other}", w.token());
+                            let message =
+                                format!("{} repeats dimension word {}", w.token(), other());
                             self.report(Rule::DimensionRepeated, message, line, w.column);
                         } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
-                            let message = format!("{} repeats {other} in one block", w.token());
+                            let message = format!("{} repeats {} in one block", w.token(), other());
                             self.report(Rule::WordRepeated, message, line, w.column);
                         }
                     }
