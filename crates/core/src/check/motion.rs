@@ -12,6 +12,7 @@ use crate::lex::Family;
 use crate::modal::{bit, Units};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
+use crate::text::push_fixed;
 
 /// TG401's message.
 const NO_FEED: &str = "feed motion with no feed rate in force";
@@ -981,12 +982,20 @@ impl Checker {
         }
         let tolerance = self.arc_tolerance(r1, r2, scale);
         if (r1 - r2).abs() > tolerance {
-            let message = format!(
-                "start radius {r1:.4} and end radius {r2:.4} differ by {:.4} (tolerance \
-                 {tolerance:.4}){}",
-                (r1 - r2).abs(),
-                self.arc_cause()
-            );
+            // "start radius {r1:.4} and end radius {r2:.4} differ by {:.4} (tolerance
+            // {tolerance:.4})" and the cause, written without the formatter's exact float path
+            // (said of most arcs of some programs: BrianHooper's 1001)
+            let mut message = String::with_capacity(88);
+            message.push_str("start radius ");
+            push_fixed(&mut message, r1, 4);
+            message.push_str(" and end radius ");
+            push_fixed(&mut message, r2, 4);
+            message.push_str(" differ by ");
+            push_fixed(&mut message, (r1 - r2).abs(), 4);
+            message.push_str(" (tolerance ");
+            push_fixed(&mut message, tolerance, 4);
+            message.push(')');
+            message.push_str(&self.arc_cause());
             self.report(Rule::ArcRadiusMismatch, message, line, column);
         } else if self.config.ijk == Ijk::Quadrant
             && !in_one_quadrant(start, end, (cx, cy), clockwise)
