@@ -594,19 +594,40 @@ impl Checker {
     /// subroutine's may be undone at its return (M73): not followed, so noted.
     fn call_returns(&mut self, k: usize, token: &str, line: usize) {
         let p = &self.pending[k];
-        if p.ends_lost && matches!(p.body.number, Key::Number(_)) {
+        if let Key::Label(label) = &p.body.number {
+            // a LinuxCNC subroutine's G90/G91 stays after its return as a FANUC's does
+            // (rs274 -g: `o<s> sub` / `G90 G0 X750` / `o<s> endsub` ... `G91` / `o<s> call` /
+            // `G0 X-900` goes to X-900), unless an M73 of its restores the caller's
+            // (review 48, F16)
+            let flags = self
+                .linuxcnc_bodies
+                .iter()
+                .rfind(|e| e.0 == *label)
+                .map_or(super::structure::BODY_MODE_UNSURE, |e| e.3);
+            if p.ends.is_none() && !p.ends_lost {
+                return; // (no G90/G91 of its own: the caller's mode stays)
+            }
+            if flags & super::structure::BODY_MODE_UNSURE != 0
+                || p.ends_lost
+                || p.body.unfollowed.is_some()
+            {
+                let name = p.body.name.clone();
+                self.call_mode_lost(token, (line, 1), &name);
+                return;
+            }
+            if flags & super::structure::BODY_RESTORES != 0 {
+                return;
+            }
+        }
+        if p.ends_lost {
             self.call_mode_lost(token, (line, 1), &p.body.name.clone());
             return;
         }
         let Some(mode) = p.ends else {
             return;
         };
-        if matches!(p.body.number, Key::Number(_)) {
-            self.machine.state.incremental = mode;
-            self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
-        } else {
-            self.early_unfollowed(token, line);
-        }
+        self.machine.state.incremental = mode;
+        self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
     }
 
     /// A FANUC's or a Haas's call (`token` at `at`) of a program the checker does not read
@@ -638,13 +659,25 @@ impl Checker {
             return;
         }
         self.noted |= super::limits::MODE_LOST_NOTED;
-        let message = format!(
-            "{token} runs {name}, whose G90/G91 the checker does not know here (a program \
+        let message = if self.config.family == crate::lex::Family::LinuxCnc {
+            format!(
+                "{token} runs {name}, whose G90/G91 after its return the checker does not know \
+                 (it writes one inside a condition or loop, saves, invalidates or restores the \
+                 modal state with M70, M71, M72, or M73 after its own G90/G91 -- rs274 restores \
+                 at the return the state M73 saved, interp_o_word.cc leave_context -- or calls \
+                 a subroutine the checker does not follow there): the positions after this call \
+                 are not compared with the travel (TG601) until a G90 or G91 is written again \
+                 (said once a file)"
+            )
+        } else {
+            format!(
+                "{token} runs {name}, whose G90/G91 the checker does not know here (a program \
              written after its call or not in the file, or one that calls such a program): a \
              G90 or G91 it writes stays in force after its M99 (G90/G91 are modal and M99 \
              restores none), so the positions after this call are not compared with the travel \
              (TG601) until a G90 or G91 is written again (said once a file)"
-        );
+            )
+        };
         self.report(Rule::NotFollowed, message, line, column);
     }
 
@@ -754,7 +787,17 @@ impl Checker {
     #[inline(never)]
     pub(super) fn definition_end(&mut self) {
         if self.early_on {
+            // (rs274 reads a definition without running it: the main program's lines after
+            // its endsub run in the distance mode from before its sub, as the feed mode)
+            let before = self
+                .early
+                .as_ref()
+                .map(|e| (e.incremental, e.distance_codes));
             self.early_pend();
+            if let (Some((incremental, codes)), false) = (before, self.early_on) {
+                self.machine.state.incremental = incremental;
+                self.machine.distance_codes = codes;
+            }
         }
     }
 
