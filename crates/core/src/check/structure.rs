@@ -2930,6 +2930,137 @@ mod tests {
         assert_eq!(errors(&flow.replace("#1=5", "#1=6")), []);
     }
 
+    /// Review 48, F19: rs274 keeps a subroutine's definition and a condition's or loop's label
+    /// for the whole program (interp_o_word.cc `control_save_offset`, `offset_map`), and
+    /// refuses a second of them on another line (each compared with `rs274 -g`): a sub
+    /// defined again ("redefining sub: o|100| already defined", by a computed label of the
+    /// same value too), an `if` or `repeat` of any label recorded, a `while` of one recorded
+    /// by another keyword than `do` ("duplicate O-word label"). A `do` of a label recorded is
+    /// no refusal, nor a label in a body and in the main program (a body's labels are its
+    /// own), nor one whose first use may not have run (inside a condition).
+    #[test]
+    fn a_linuxcnc_label_kept_for_the_whole_program_is_refused_when_used_again() {
+        let lcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| -> Vec<(usize, String)> {
+            findings(lcnc(), text, Rule::LinuxCncRefuses)
+                .into_iter()
+                .map(|f| {
+                    (
+                        f.line,
+                        f.message.split(" (rs274ngc)").next().unwrap().to_string(),
+                    )
+                })
+                .collect()
+        };
+        let head = "G21 G90\n";
+        let sub = "o100 sub\nG0 X1\no100 endsub\n";
+        for second in ["o100 sub", "o[100] sub", "o+100.0 sub", "o<100> sub"] {
+            let text = format!("{sub}{second}\nG0 X2\no100 endsub\n{head}o100 call\nM2\n");
+            assert_eq!(
+                refused(&text),
+                [(4, "redefining sub: o|100| already defined".to_string())],
+                "{second}"
+            );
+        }
+        let named = "o<s> sub\nG0 X1\no<s> endsub\no<S> sub\nG0 X2\no<s> endsub\nM2\n";
+        assert_eq!(
+            refused(named),
+            [(4, "redefining sub: o|s| already defined".into())]
+        );
+        let if_ = |first: &str, second: &str| {
+            format!("{head}{first}\nG0 X1\n{}\n{second}\nG0 X2\no1 end\nM2\n", {
+                if first.contains(" do") {
+                    "o1 while [0]".to_string()
+                } else {
+                    format!("o1 end{}", first.split(' ').nth(1).unwrap())
+                }
+            })
+        };
+        let dup_if = "duplicate O-word label - already defined in line 2: 'o1 if [1]'";
+        let text = if_("o1 if [1]", "o1 if [1]").replace("o1 end\n", "o1 endif\n");
+        assert_eq!(refused(&text), [(5, dup_if.to_string())]);
+        let text = if_("o1 if [0]", "o1 while [0]").replace("o1 end\n", "o1 endwhile\n");
+        assert_eq!(
+            refused(&text),
+            [(
+                5,
+                "duplicate O-word label: 'o1 while [0]' - defined in line 2".into()
+            )]
+        );
+        let text = if_("o1 do", "o1 repeat [1]").replace("o1 end\n", "o1 endrepeat\n");
+        assert_eq!(
+            refused(&text),
+            [(
+                5,
+                "duplicate O-word label: 'o1 repeat [1]' - defined in line 2".into()
+            )]
+        );
+        // the first a parameter's value
+        let text = format!("{head}#1=1\no#1 if [1]\no#1 endif\no1 if [1]\no1 endif\nM2\n");
+        assert_eq!(refused(&text).len(), 1);
+        assert_eq!(refused(&text)[0].0, 5);
+        // no refusal: a do again, a body's label, a first use that may not have run
+        let text = if_("o1 do", "o1 do").replace("o1 end\n", "o1 while [0]\n");
+        assert_eq!(refused(&text), []);
+        let body = "o<s> sub\no1 if [1]\no1 endif\no<s> endsub\n";
+        let text = format!("{body}{head}o1 if [1]\no1 endif\no<s> call\no<s> call\nM2\n");
+        assert_eq!(refused(&text), []);
+        let text =
+            format!("{head}o2 if [0]\no1 if [1]\no1 endif\no2 endif\no1 if [1]\no1 endif\nM2\n");
+        assert_eq!(refused(&text), []);
+        // a loop's own line again is no second label
+        let text = format!(
+            "{head}#1=0\no1 while [#1 LT 3]\n#1=[#1+1]\no2 if [1]\no2 endif\no1 endwhile\nM2\n"
+        );
+        assert_eq!(refused(&text), []);
+    }
+
+    /// Review 48, F10: a closing word whose label is worked out as the line runs is read with
+    /// the values of its line (`rs274 -g`: `#1=3` / `o#1 if [1]` / `#1=4` / `o#1 endif` is
+    /// "undefined O-word label"; with `o#1 while [0]` the body never runs and the endwhile
+    /// closes it). Refused where the block surely ran; said (TG140) where the checker cannot
+    /// follow the value (`#1=[#1+1]`) or the block may not run; and a label whose parameters
+    /// did not change closes its block (the line after it judged again).
+    #[test]
+    fn a_linuxcnc_closing_label_is_read_with_the_values_its_block_set() {
+        let lcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| fired(lcnc(), text, Rule::LinuxCncRefuses);
+        let noted = |text: &str| -> Vec<usize> {
+            findings(lcnc(), text, Rule::NotFollowed)
+                .into_iter()
+                .filter(|f| f.message.contains("set what it reads"))
+                .map(|f| f.line)
+                .collect()
+        };
+        let text = "G21 G90\n#1=3\no#1 if [1]\n#1=4\no#1 endif\nM2\n";
+        assert_eq!(refused(text), [(5, 1)]);
+        assert!(findings(lcnc(), text, Rule::LinuxCncRefuses)[0]
+            .message
+            .starts_with("undefined O-word label (rs274ngc)"));
+        for (from, to) in [("if [1]", "while [1]"), ("o#1 endif", "o#1 else\no3 endif")] {
+            let text = text.replace(from, to).replace("endif\nM2", "endwhile\nM2");
+            let text = if from == "if [1]" {
+                text
+            } else {
+                text.replace("endwhile", "endif")
+            };
+            assert_eq!(refused(&text), [(5, 1)], "{text}");
+        }
+        // the body may not run, or its value is not followed: said, taken as closing
+        for (from, to) in [("if [1]", "if [#5220 GT 1]"), ("#1=4", "#1=[#1+1]")] {
+            let text = format!(
+                "{}G0 X#<nope>\nM2\n",
+                text.replace(from, to).replace("M2\n", "")
+            );
+            assert_eq!(noted(&text), [5], "{text}");
+            assert_eq!(refused(&text), [(6, 4)], "{text}");
+        }
+        // nothing it reads set since: its block's own value, closed
+        let kept = "G21 G90\n#1=5\no#1 if [1]\nG0 X1\no#1 endif\nG0 X#<nope>\nM2\n";
+        assert_eq!(refused(kept), [(6, 4)]);
+        assert_eq!(noted(kept), []);
+    }
+
     #[test]
     fn a_call_of_a_sub_that_sets_no_feed_mode_keeps_the_mode_before_it() {
         // issue 32, item 4: G93, then a call of a sub defined before it that only moves, then
