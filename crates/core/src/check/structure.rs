@@ -1645,18 +1645,22 @@ impl Checker {
             return label;
         };
         let opened = self.linuxcnc_open_at[at].1;
+        // (the two lists open and close together: linuxcnc_main_flow)
+        debug_assert_eq!(self.linuxcnc_open_at.len(), self.linuxcnc_open_flow.len());
+        let Some(open) = self.linuxcnc_open_flow.get(at).cloned() else {
+            return label;
+        };
         let reads = label_reads(&written);
         let set = self.linuxcnc_flow_assigned.iter().find(|(l, key)| {
             *l > opened && (key.is_empty() || reads.as_ref().is_none_or(|r| r.contains(key)))
         });
         let Some(&(set_line, _)) = set else {
             // (nothing it reads set since: the value of the block's own line)
-            return self.linuxcnc_open_flow[at].clone();
+            return open;
         };
         if !closing {
             return label; // (a `while` of another value opens a loop)
         }
-        let open = self.linuxcnc_open_flow[at].clone();
         let shown = |l: &[u8]| String::from_utf8_lossy(l).into_owned();
         let statement = shown(text.trim_ascii());
         let known = !crate::statement::computed_label(&label);
