@@ -163,7 +163,8 @@ def locate(program: Path, raw: str, text: str, message: str, table: str,
     for n in candidates[:25]:
         prefix.write_text("\n".join(lines[:n]) + "\n")
         _, out = _rs274_raw(prefix, table, workdir)
-        if _parse_error(out) == (message, text):
+        # (a message naming the file, "File:... redefining sub", names the prefix's)
+        if _parse_error(out.replace(str(prefix), str(program))) == (message, text):
             return n
     return candidates[0]
 
@@ -499,6 +500,36 @@ SEEDED: list[tuple[str, str, int, str]] = [
      5, "error"),
     ("M of a parameter set on its line (old 2)", HEAD + "#1=2\n#1=5 M#1\nG0 X1\nM2\n", 0,
      "accepted"),
+    # review 48 (lcnc49): a label rs274 keeps for the whole program used again (F19), a
+    # closing label read with the values its block set (F10), a subroutine's G90/G91 after
+    # its return (F16)
+    ("sub defined twice", "o100 sub\nG0 X1\no100 endsub\no100 sub\nG0 X2\no100 endsub\n"
+     + HEAD + "o100 call\nM2\n", 4, "error"),
+    ("sub defined twice by a computed label", "o100 sub\nG0 X1\no100 endsub\no[100] sub\n"
+     "G0 X2\no100 endsub\n" + HEAD + "o100 call\nM2\n", 4, "error"),
+    ("if label used twice", HEAD + "o1 if [1]\nG0 X1\no1 endif\no1 if [1]\nG0 X2\n"
+     "o1 endif\nM2\n", 6, "error"),
+    ("if label used twice, the first a parameter's value", HEAD + "#1=1\no#1 if [1]\n"
+     "G0 X1\no#1 endif\no1 if [1]\nG0 X2\no1 endif\nM2\n", 7, "error"),
+    ("while label of an if before", HEAD + "o1 if [1]\no1 endif\no1 while [0]\n"
+     "o1 endwhile\nM2\n", 5, "error"),
+    ("repeat label of a do before", HEAD + "o1 do\nG0 X1\no1 while [0]\no1 repeat [1]\n"
+     "o1 endrepeat\nM2\n", 6, "error"),
+    ("do label of a do before", HEAD + "o1 do\nG0 X1\no1 while [0]\no1 do\nG0 X2\n"
+     "o1 while [0]\nM2\n", 0, "accepted"),
+    ("if label in a body and the main program", "o<s> sub\no1 if [1]\nG0 X1\no1 endif\n"
+     "o<s> endsub\n" + HEAD + "o1 if [1]\no1 endif\no<s> call\no<s> call\nM2\n", 0,
+     "accepted"),
+    ("endif label changed inside its block", HEAD + "#1=3\no#1 if [1]\n#1=4\no#1 endif\n"
+     "M2\n", 6, "error"),
+    ("endwhile label changed in a loop not run", HEAD + "#1=3\no#1 while [0]\n#1=4\n"
+     "o#1 endwhile\nM2\n", 0, "accepted"),
+    ("endif label of a parameter kept", HEAD + "#1=5\no#1 if [1]\nG0 X1\no#1 endif\n"
+     "G0 X#<nope>\nM2\n", 7, "error"),
+    ("G53 after a sub that leaves G90", "o<s> sub\nG90 G0 X1\no<s> endsub\nG21 G17 G90 G94\n"
+     "G91\no<s> call\nG53 G0 X0\nM2\n", 0, "accepted"),
+    ("G53 after a sub whose M73 restores G91", "o<s> sub\nM73\nG90 G0 X1\no<s> endsub\n"
+     "G21 G17 G90 G94\nG91\no<s> call\nG53 G0 X0\nM2\n", 8, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

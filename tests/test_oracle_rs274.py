@@ -59,10 +59,18 @@ BOTH = [
     "G1 after a G94 restated, without F",
     # TG412 too, but rs274's message names its file and line first (test below)
     "sub defined after its call",
+    # review 48 (lcnc49), TG412 with rs274's message after its file and line, or its line
+    # number (test below): a label kept for the whole program used again (F19), a closing
+    # label read with the values its block set (F10), G91 restored by M73 at a return (F16)
+    "sub defined twice", "sub defined twice by a computed label", "if label used twice",
+    "if label used twice, the first a parameter's value", "while label of an if before",
+    "repeat label of a do before", "endif label changed inside its block",
+    "endif label of a parameter kept",
     # a cycle drills along the plane's axis (TG541, every family's rule)
     "G18 cycle without Y",
     # TG412: rs274's own refusals
     "G53 under G2",
+    "G53 after a sub whose M73 restores G91",
     "G83 without Q",
     "G73 without Q",
     "G83 with Q0",
@@ -140,7 +148,11 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "o-word label a parameter's parameter", "o-word label a function",
        "endsub label of a parameter's value",
        # review 48 (fixl48): a function's label on a definition; an end by the value before
-       "sub label a function", "M of a parameter set on its line (old 2)"]
+       "sub label a function", "M of a parameter set on its line (old 2)",
+       # review 48 (lcnc49): labels rs274 does not count as duplicates, a closing label whose
+       # block never ran, a subroutine's G90 in force after its return
+       "do label of a do before", "if label in a body and the main program",
+       "endwhile label changed in a loop not run", "G53 after a sub that leaves G90"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
@@ -196,6 +208,25 @@ def test_tg412_says_rs274s_message_after_its_file_and_line(seeds):
     assert message == "sub: o|100| found in illegal location", s.rs274.message
     first = [e for e in s.errors if e.line == s.line and e.rule == "TG412"]
     assert first and first[0].message.startswith(message + " (rs274ngc)"), s.errors
+
+
+@pytest.mark.parametrize("name", [
+    "sub defined twice", "sub defined twice by a computed label", "if label used twice",
+    "if label used twice, the first a parameter's value", "while label of an if before",
+    "repeat label of a do before", "endif label changed inside its block"])
+def test_tg412_says_rs274s_o_word_message(seeds, name):
+    """rs274 names the file and line of a definition (and the file it is in), or the line
+    number, before its o-word refusals: tapegate's message begins with the rest."""
+    s = seeds[name]
+    message = re.sub(r"^File:\S+ line:\d+ |^\d+: | in file:\S+$", "", s.rs274.message.strip())
+    message = re.sub(r" in file:\S+$", "", message)
+    first = [e for e in s.errors if e.line == s.line and e.rule == "TG412"]
+    assert first, s.errors
+    if message.startswith("undefined O-word label"):
+        # (rs274 quotes the line after its message; tapegate says why the label is another)
+        assert first[0].message.startswith("undefined O-word label (rs274ngc)"), first[0]
+    else:
+        assert first[0].message.startswith(message + " (rs274ngc)"), (first[0].message, message)
 
 
 @pytest.mark.parametrize("name", ["a repeated cycle keeps its Z, R and Q", "G76 threading"])

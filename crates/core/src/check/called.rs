@@ -594,19 +594,40 @@ impl Checker {
     /// subroutine's may be undone at its return (M73): not followed, so noted.
     fn call_returns(&mut self, k: usize, token: &str, line: usize) {
         let p = &self.pending[k];
-        if p.ends_lost && matches!(p.body.number, Key::Number(_)) {
+        if let Key::Label(label) = &p.body.number {
+            // a LinuxCNC subroutine's G90/G91 stays after its return as a FANUC's does
+            // (rs274 -g: `o<s> sub` / `G90 G0 X750` / `o<s> endsub` ... `G91` / `o<s> call` /
+            // `G0 X-900` goes to X-900), unless an M73 of its restores the caller's
+            // (review 48, F16)
+            let flags = self
+                .linuxcnc_bodies
+                .iter()
+                .rfind(|e| e.0 == *label)
+                .map_or(super::structure::BODY_MODE_UNSURE, |e| e.3);
+            if p.ends.is_none() && !p.ends_lost {
+                return; // (no G90/G91 of its own: the caller's mode stays)
+            }
+            if flags & super::structure::BODY_MODE_UNSURE != 0
+                || p.ends_lost
+                || p.body.unfollowed.is_some()
+            {
+                let name = p.body.name.clone();
+                self.call_mode_lost(token, (line, 1), &name);
+                return;
+            }
+            if flags & super::structure::BODY_RESTORES != 0 {
+                return;
+            }
+        }
+        if p.ends_lost {
             self.call_mode_lost(token, (line, 1), &p.body.name.clone());
             return;
         }
         let Some(mode) = p.ends else {
             return;
         };
-        if matches!(p.body.number, Key::Number(_)) {
-            self.machine.state.incremental = mode;
-            self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
-        } else {
-            self.early_unfollowed(token, line);
-        }
+        self.machine.state.incremental = mode;
+        self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
     }
 
     /// A FANUC's or a Haas's call (`token` at `at`) of a program the checker does not read
@@ -638,13 +659,25 @@ impl Checker {
             return;
         }
         self.noted |= super::limits::MODE_LOST_NOTED;
-        let message = format!(
-            "{token} runs {name}, whose G90/G91 the checker does not know here (a program \
+        let message = if self.config.family == crate::lex::Family::LinuxCnc {
+            format!(
+                "{token} runs {name}, whose G90/G91 after its return the checker does not know \
+                 (it writes one inside a condition or loop, saves, invalidates or restores the \
+                 modal state with M70, M71, M72, or M73 after its own G90/G91 -- rs274 restores \
+                 at the return the state M73 saved, interp_o_word.cc leave_context -- or calls \
+                 a subroutine the checker does not follow there): the positions after this call \
+                 are not compared with the travel (TG601) until a G90 or G91 is written again \
+                 (said once a file)"
+            )
+        } else {
+            format!(
+                "{token} runs {name}, whose G90/G91 the checker does not know here (a program \
              written after its call or not in the file, or one that calls such a program): a \
              G90 or G91 it writes stays in force after its M99 (G90/G91 are modal and M99 \
              restores none), so the positions after this call are not compared with the travel \
              (TG601) until a G90 or G91 is written again (said once a file)"
-        );
+            )
+        };
         self.report(Rule::NotFollowed, message, line, column);
     }
 
@@ -754,7 +787,17 @@ impl Checker {
     #[inline(never)]
     pub(super) fn definition_end(&mut self) {
         if self.early_on {
+            // (rs274 reads a definition without running it: the main program's lines after
+            // its endsub run in the distance mode from before its sub, as the feed mode)
+            let before = self
+                .early
+                .as_ref()
+                .map(|e| (e.incremental, e.distance_codes));
             self.early_pend();
+            if let (Some((incremental, codes)), false) = (before, self.early_on) {
+                self.machine.state.incremental = incremental;
+                self.machine.distance_codes = codes;
+            }
         }
     }
 
@@ -1282,6 +1325,55 @@ mod tests {
         config.facts.travel = vec![(b'X', dec("-300"), dec("300"))];
         config.facts.limit_units = Units::Metric;
         config
+    }
+
+    /// Review 48, F16: a LinuxCNC subroutine's G90/G91 stays in force after its return
+    /// (`rs274 -g` of `o<s> sub` / `G90 G0 X250` / `o<s> endsub` ... `G91` / `o<s> call` /
+    /// `G0 X-400`: X250, then X-400), unless an M73 of its, before its own G90/G91, restores
+    /// the caller's (then X-150); where the checker does not know it (M70/M72, M73 after the
+    /// G90, a G90 inside a condition) the call says so (TG140) and nothing after it is judged
+    /// as absolute; and a definition's own G91, never run where it stands, leaves the main
+    /// program's G90 at its endsub.
+    #[test]
+    fn a_linuxcnc_subroutine_s_distance_mode_after_its_return() {
+        let text = |body: &str| {
+            format!(
+                "o<s> sub\n{body}o<s> endsub\nG21 G90\nG0 X0 Y0\nG91\no<s> call\nG0 X-400\nM2\n"
+            )
+        };
+        let said = |body: &str| fired(lcnc(), &text(body), Rule::TravelExceeded);
+        let noted = |body: &str| {
+            findings(lcnc(), &text(body), Rule::NotFollowed)
+                .iter()
+                .filter(|f| {
+                    f.message
+                        .contains("after its return the checker does not know")
+                })
+                .map(|f| f.line)
+                .collect::<Vec<_>>()
+        };
+        // the G90 stays: X-400 after X250, a span of 650 (in G91, -150: inside)
+        assert_eq!(said("G90 G0 X250\n"), [(8, 4)]);
+        assert_eq!(noted("G90 G0 X250\n"), []);
+        // M73 first: the caller's G91 comes back at the return
+        assert_eq!(said("M73\nG90 G0 X250\n"), []);
+        assert_eq!(noted("M73\nG90 G0 X250\n"), []);
+        // not known: said at the call, nothing judged as absolute after it
+        for body in [
+            "G90 G0 X250\nM73\n",
+            "M70\nG90 G0 X250\nM72\n",
+            "o1 if [#5220 GT 0]\nG90\no1 endif\nG0 X250\n",
+        ] {
+            let line = text(body).lines().position(|l| l == "o<s> call").unwrap() + 1;
+            assert_eq!(said(body), [], "{body}");
+            assert_eq!(noted(body), [line], "{body}");
+        }
+        // no G90/G91 of its own: the caller's G91 stays, whatever M codes it writes
+        assert_eq!(said("M70\nG0 X250\nM72\n"), []);
+        assert_eq!(noted("M70\nG0 X250\nM72\n"), []);
+        // a definition's G91 read where it stands is not the main program's after it
+        let definition = "G21 G90\nG0 X-250 Y0\no<s> sub\nG91 G0 X1\no<s> endsub\nG0 X400\nM2\n";
+        assert_eq!(fired(lcnc(), definition, Rule::TravelExceeded), [(6, 4)]);
     }
 
     /// Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is
@@ -2152,9 +2244,8 @@ mod tests {
     }
 
     /// Review 47, F1 on LinuxCNC: `o<b>`'s own G90 makes its X-330 absolute at every call of
-    /// `o<a>`, which calls it: 610 of span from X280 at the G91 call. Whether `o<b>`'s G90 is
-    /// in force after its return is not followed (an M73 in it restores the caller's modes):
-    /// the G91 note says so.
+    /// `o<a>`, which calls it: 610 of span from X280 at the G91 call. `o<b>`'s G90 is in force
+    /// after its return, as it writes no M70-M73 (review 48, F16: it was said not followed).
     #[test]
     fn a_linuxcnc_nested_call_s_own_g90_is_seen_by_the_body_that_calls_it() {
         let text = "G21 G90\no<b> sub\nG90\nG0 X-330\no<b> endsub\no<a> sub\nG0 X5\no<b> call\n\
@@ -2164,7 +2255,10 @@ mod tests {
             .iter()
             .any(|f| f.line == 12
                 && f.message.starts_with("o<a> call runs o<a> under the G91")
-                && f.message
-                    .contains("its o<b> call of line 8 runs is not followed")));
+                && !f.message.contains("not followed")));
+        // with an M73 before its G90, the caller's G91 comes back at its return: o<a>'s
+        // positions after the call are not known at the G91 call
+        let restores = text.replace("o<b> sub\nG90\n", "o<b> sub\nM73\nG90\n");
+        assert_eq!(fired(lcnc(), &restores, Rule::TravelExceeded), [(13, 1)]);
     }
 }

@@ -704,6 +704,11 @@ struct Implicit {
     increments: bool,
 }
 
+/// A LinuxCNC definition's body as [`Checker::linuxcnc_bodies`] keeps it: its label, whether
+/// it may set the feed mode or end the program, the labels it calls, and what it does to the
+/// distance mode it returns in.
+type LinuxCncBody = (Vec<u8>, bool, Vec<Vec<u8>>, u8);
+
 #[derive(Clone)]
 pub struct Checker {
     pub config: Arc<Config>,
@@ -1055,6 +1060,25 @@ pub struct Checker {
     /// `endif`, an `if` with an `else` all of whose branches ended ends the main program
     /// there (issue 32: a definition after such an `endif` is never reached; rs274 agrees).
     linuxcnc_if_ends: Vec<(usize, bool, bool)>,
+    /// LinuxCNC: for each block of `linuxcnc_open_flow`, its label as written (`o#1`), its
+    /// line, and whether its lines run up to the next o-word line as the checker reads them
+    /// (it opened at the top of the main program, with a condition known true): a closing
+    /// label worked out as the line runs is read with the values of that first run
+    /// (`Checker::linuxcnc_closing`; review 48, F10).
+    linuxcnc_open_at: Vec<(Vec<u8>, usize, bool)>,
+    /// LinuxCNC: the parameters (by key; empty: any, a call) assigned while a block of
+    /// `linuxcnc_open_flow` is open, with their lines (review 48, F10).
+    linuxcnc_flow_assigned: Vec<(usize, Vec<u8>)>,
+    /// LinuxCNC: the labels of the main program's conditions and loops rs274 has recorded
+    /// (interp_o_word.cc `control_save_offset`: `if`, `while`, `repeat`, `do`), by their name
+    /// without `o` and `<>`, with their keyword's first letter, their line, and whether it
+    /// surely ran (opened at the top of the main program): a second of the label is refused
+    /// as rs274 refuses it ("duplicate O-word label"; review 48, F19).
+    linuxcnc_o_labels: Vec<(Vec<u8>, u8, usize, bool)>,
+    /// LinuxCNC: the subroutines the main program surely defines (at its top, before its
+    /// end), by name without `o` and `<>`, and their lines: a second definition of one is
+    /// rs274's "redefining sub" (review 48, F19).
+    linuxcnc_subs_defined: Vec<(Vec<u8>, usize)>,
     /// LinuxCNC: the feed mode in force may be another than the lines in their order give:
     /// after a call (the subroutine may set it; with M73 it restores the caller's) or a
     /// G93/G94/G95 inside a condition or loop, until a G93/G94/G95 the main program runs
@@ -1066,7 +1090,9 @@ pub struct Checker {
     /// M72, M98/M99, or a G or M code whose value is not known here) and the subroutines it
     /// calls: a call of one none of whose bodies, transitively, may leaves the feed mode as
     /// it was before the call (issue 32, item 4; `Checker::linuxcnc_call_keeps_mode`).
-    linuxcnc_bodies: Vec<(Vec<u8>, bool, Vec<Vec<u8>>)>,
+    /// The fourth: what the body does to the distance mode it returns in
+    /// ([`structure::BODY_DISTANCE`] and the others; review 48, F16).
+    linuxcnc_bodies: Vec<LinuxCncBody>,
     /// LinuxCNC: the local named parameters the open definition's body has assigned so far
     /// (`Checker::linuxcnc_body_locals`).
     linuxcnc_body_named: HashSet<Vec<u8>>,
@@ -1287,6 +1313,10 @@ impl Checker {
             plain_block: false,
             linuxcnc_open_flow: Vec::new(),
             linuxcnc_if_ends: Vec::new(),
+            linuxcnc_open_at: Vec::new(),
+            linuxcnc_flow_assigned: Vec::new(),
+            linuxcnc_o_labels: Vec::new(),
+            linuxcnc_subs_defined: Vec::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_bodies: Vec::new(),
             linuxcnc_body_named: HashSet::new(),

@@ -1315,6 +1315,15 @@ impl Checker {
                     .copied();
                 set_before.push((name.clone(), self.params.get(&name).copied(), then));
             }
+            if linuxcnc && !self.linuxcnc_open_flow.is_empty() {
+                // (review 48, F10: a closing label worked out from it reads the new value)
+                let assigned = &mut self.linuxcnc_flow_assigned;
+                if assigned.len() < 256 {
+                    assigned.push((b.line, name.clone()));
+                } else if assigned.last().is_some_and(|a| !a.1.is_empty()) {
+                    assigned.push((b.line, Vec::new()));
+                }
+            }
             if self.arrival.is_some() {
                 self.set_since_arrival(&name);
                 if let (Some(v), Some(arrival)) = (arrived, self.arrival.as_mut()) {

@@ -292,6 +292,10 @@ impl Checker {
         self.line_walks.all_hot = false;
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_if_ends.clear();
+        self.linuxcnc_open_at.clear();
+        self.linuxcnc_flow_assigned.clear();
+        self.linuxcnc_o_labels.clear();
+        self.linuxcnc_subs_defined.clear();
         self.linuxcnc_mode_unsure = false;
         self.linuxcnc_bodies.clear();
         self.linuxcnc_definition_mode_unsure = false;
@@ -775,9 +779,16 @@ impl Checker {
         }
         // (the condition's own reads run, judged above; the lines inside it may not)
         let main = self.open_definition.is_none();
-        for &(_, kind, text) in b.statements {
+        for &(column, kind, text) in b.statements {
+            if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
+                // (a call may set any parameter, or end the program: F10's first run ends)
+                for e in &mut self.linuxcnc_open_at {
+                    e.2 = false;
+                }
+                self.linuxcnc_flow_assigned.push((b.line, Vec::new()));
+            }
             match (kind, main) {
-                (Kind::Flow, true) => self.linuxcnc_main_flow(text),
+                (Kind::Flow, true) => self.linuxcnc_main_flow(text, b.line, column),
                 (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
                 // the subroutine may set another feed mode, or restore the caller's
                 (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
@@ -988,6 +999,9 @@ impl Checker {
             return;
         }
         if let Some((true, name)) = statement {
+            if self.linuxcnc_open_flow.is_empty() && !crate::statement::computed_label(name) {
+                self.linuxcnc_redefined(b, name);
+            }
             if let Some(at) = self
                 .linuxcnc_called_ahead
                 .iter()
@@ -1024,6 +1038,28 @@ impl Checker {
                 self.linuxcnc_called_ahead.push((label, b.line));
             }
         }
+    }
+
+    /// TG412: the main program defines a subroutine it has defined before (both at its top,
+    /// before its end): rs274 keeps a definition for the whole program by its name
+    /// (interp_o_word.cc `control_save_offset`) and refuses the second, "redefining sub:
+    /// o|100| already defined" (`rs274 -g`; `o[100] sub` after `o100 sub` too; review 48,
+    /// F19).
+    fn linuxcnc_redefined(&mut self, b: &BlockView<'_>, name: &[u8]) {
+        let bare = bare_label(name);
+        let Some(&(_, first)) = self.linuxcnc_subs_defined.iter().find(|e| e.0 == bare) else {
+            self.linuxcnc_subs_defined.push((bare, b.line));
+            return;
+        };
+        let bare = String::from_utf8_lossy(&bare);
+        let message = format!(
+            "redefining sub: o|{bare}| already defined (rs274ngc): the definition on line \
+             {first} has that name, and rs274 keeps a subroutine's definition for the whole \
+             program (interp_o_word.cc control_save_offset); give each definition its own \
+             label"
+        );
+        let column = b.statements.first().map_or(1, |s| s.0);
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 
     /// The subroutine a LinuxCNC `o… call` statement names, and the block any other o-word
@@ -1516,13 +1552,18 @@ impl Checker {
     /// (review 20). An `endif` whose `if` has an `else` and whose every branch ended in an
     /// M2/M30 ends the main program where the `if` stands: rs274 reads no line after it
     /// (issue 32; interp_o_word.cc runs one branch, and each ends the program).
-    fn linuxcnc_main_flow(&mut self, text: &[u8]) {
+    fn linuxcnc_main_flow(&mut self, text: &[u8], line: usize, column: usize) {
         let keyword = crate::statement::o_keyword(text);
-        let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
-        let mut all_ended = None;
+        // (whether the innermost block's lines ran up to this one: no o-word line since it)
+        let runs = self.linuxcnc_open_at.last().is_some_and(|e| e.2);
+        for e in &mut self.linuxcnc_open_at {
+            e.2 = false;
+        }
         // (a computed label, `o#1 endwhile`, by its value where rs274 reads the line: matched
         // to the `o5 while` of #1=5, `rs274 -g`)
-        let label = self.linuxcnc_call_label(text);
+        let label = self.linuxcnc_closing_label(text, keyword.as_deref(), runs, (line, column));
+        let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
+        let mut all_ended = None;
         if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label) {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
@@ -1545,8 +1586,19 @@ impl Checker {
             }
         }
         let depth = self.linuxcnc_open_flow.len();
+        self.linuxcnc_label_recorded(text, keyword.as_deref(), &label, (line, column));
         linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
+        if open > depth {
+            let runs = depth == 0 && !self.main_ended() && self.linuxcnc_body_runs(text);
+            let written = crate::statement::o_label(text);
+            self.linuxcnc_open_at.push((written, line, runs));
+        } else {
+            self.linuxcnc_open_at.truncate(open);
+        }
+        if open == 0 {
+            self.linuxcnc_flow_assigned.clear();
+        }
         self.linuxcnc_if_ends.retain(|e| e.0 < open);
         if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
             self.linuxcnc_if_ends.push((depth, true, false));
@@ -1554,6 +1606,190 @@ impl Checker {
         if let Some(at) = all_ended {
             self.linuxcnc_end_depth = Some(self.linuxcnc_end_depth.map_or(at, |d| d.min(at)));
         }
+    }
+
+    /// LinuxCNC: the label of the main program's o-word flow statement `text` (`keyword`) as
+    /// rs274 reads it where the line runs ([`Checker::linuxcnc_call_label`]). A closing word
+    /// whose label is worked out as the line runs (`o#1 endwhile`) is read with the values
+    /// in force there (interp_read.cc `read_o`), which the block's own lines may have changed
+    /// (review 48, F10: `#1=3` / `o#1 while [1]` / `#1=4` / `o#1 endwhile` is "undefined
+    /// O-word label"). Where no parameter its label reads was set since the block it closes
+    /// opened (nor a call made), its value is that block's, which it closes; where one was
+    /// and the checker knows the new value, refused where the block's lines surely ran up to
+    /// it (it opened at the top of the main program with a condition known true, `runs`, and
+    /// no o-word line came since) and no block of that label was ever recorded; else said
+    /// (TG140) and taken as closing the block of its label as written.
+    fn linuxcnc_closing_label(
+        &mut self,
+        text: &[u8],
+        keyword: Option<&[u8]>,
+        runs: bool,
+        (line, column): (usize, usize),
+    ) -> Vec<u8> {
+        let label = self.linuxcnc_call_label(text);
+        let Some(keyword) = keyword else {
+            return label;
+        };
+        let closing = matches!(
+            keyword,
+            b"endif" | b"endwhile" | b"endrepeat" | b"else" | b"elseif" | b"break" | b"continue"
+        );
+        if !closing && keyword != b"while" || self.linuxcnc_open_flow.contains(&label) {
+            return label;
+        }
+        let written = crate::statement::o_label(text);
+        if !crate::statement::computed_label(&written) {
+            return label;
+        }
+        let Some(at) = self.linuxcnc_open_at.iter().rposition(|e| e.0 == written) else {
+            return label;
+        };
+        let opened = self.linuxcnc_open_at[at].1;
+        // (the two lists open and close together: linuxcnc_main_flow)
+        debug_assert_eq!(self.linuxcnc_open_at.len(), self.linuxcnc_open_flow.len());
+        let Some(open) = self.linuxcnc_open_flow.get(at).cloned() else {
+            return label;
+        };
+        let reads = label_reads(&written);
+        let set = self.linuxcnc_flow_assigned.iter().find(|(l, key)| {
+            *l > opened && (key.is_empty() || reads.as_ref().is_none_or(|r| r.contains(key)))
+        });
+        let Some(&(set_line, _)) = set else {
+            // (nothing it reads set since: the value of the block's own line)
+            return open;
+        };
+        if !closing {
+            return label; // (a `while` of another value opens a loop)
+        }
+        let shown = |l: &[u8]| String::from_utf8_lossy(l).into_owned();
+        let statement = shown(text.trim_ascii());
+        let known = !crate::statement::computed_label(&label);
+        let bare = bare_label(&label);
+        if known
+            && runs
+            && at + 1 == self.linuxcnc_open_flow.len()
+            && at == 0
+            && !self.main_ended()
+            && !self.linuxcnc_o_labels.iter().any(|e| e.0 == bare)
+        {
+            let message = format!(
+                "undefined O-word label (rs274ngc): '{statement}' is read with the values of \
+                 its line, and line {set_line} inside the block of {} (line {opened}), which \
+                 runs, set what its label reads: it is {} there, a label no condition or loop \
+                 of the program has (interp_read.cc read_o works the label out where it reads \
+                 the line); close the block with the label it opened with",
+                shown(&open),
+                shown(&label),
+            );
+            self.report(Rule::LinuxCncRefuses, message, line, column);
+            return label;
+        }
+        let message = format!(
+            "{statement}: its label is worked out as the line runs (interp_read.cc read_o), \
+             and line {set_line} inside the block it closes set what it reads; taken as \
+             closing the block {} opened on line {opened}, which rs274 does only where the value is still that \
+             label's (else \"undefined O-word label\")",
+            shown(&open)
+        );
+        self.report(Rule::NotFollowed, message, line, column);
+        open
+    }
+
+    /// LinuxCNC: whether the lines of the block the main program's o-word `text` opens run
+    /// (as far as the checker reads them in order): a `do`, an `if` or `while` whose
+    /// condition, a `repeat` whose count (rounded to the nearest whole number, interp_o_word.cc
+    /// `round_to_int`), is a value the checker knows, true or above zero.
+    fn linuxcnc_body_runs(&self, text: &[u8]) -> bool {
+        let rest = &text[crate::statement::o_label_len(text).min(text.len())..];
+        let rest = rest.trim_ascii_start();
+        let letters = rest.iter().take_while(|c| c.is_ascii_alphabetic()).count();
+        let (keyword, condition) = rest.split_at(letters);
+        let keyword = keyword.to_ascii_lowercase();
+        if keyword == b"do" {
+            return true;
+        }
+        if !matches!(keyword.as_slice(), b"if" | b"while" | b"repeat") {
+            return false;
+        }
+        match self.linuxcnc_value_of(condition.trim_ascii()) {
+            Some(v) if keyword == b"repeat" => v.round() >= 1.0,
+            Some(v) => v != 0.0,
+            None => false,
+        }
+    }
+
+    /// LinuxCNC: the main program's `if`, `while`, `repeat` or `do` whose label rs274 records
+    /// (interp_o_word.cc `convert_control_functions`, `control_save_offset`: a label kept for
+    /// the whole program, by its name, in `offset_map`), or refuses as one recorded before on
+    /// another line: an `if` or a `repeat` of any label recorded ("duplicate O-word label -
+    /// already defined in line 2", "duplicate O-word label: '...' - defined in line 2"), a
+    /// `while` of one recorded by another keyword than `do` (the `while` that closes a `do`
+    /// too); a `do` is recorded where its label is not, and refused nowhere (review 48, F19).
+    /// Judged where both surely run: opened at the top of the main program, before its end.
+    fn linuxcnc_label_recorded(
+        &mut self,
+        text: &[u8],
+        keyword: Option<&[u8]>,
+        label: &[u8],
+        (line, column): (usize, usize),
+    ) {
+        let kind = match keyword {
+            Some(b"if") => b'i',
+            Some(b"while") => b'w',
+            Some(b"repeat") => b'r',
+            Some(b"do") => b'd',
+            _ => return,
+        };
+        if self.main_ended() || crate::statement::computed_label(label) {
+            return;
+        }
+        let at = self.linuxcnc_open_flow.iter().position(|l| l == label);
+        let closes_do = kind == b'w' && at.is_some();
+        let top = if closes_do {
+            at == Some(0) && self.linuxcnc_open_flow.len() == 1
+        } else {
+            self.linuxcnc_open_flow.is_empty()
+        };
+        let bare = bare_label(label);
+        let Some(k) = self.linuxcnc_o_labels.iter().position(|e| e.0 == bare) else {
+            if !closes_do {
+                self.linuxcnc_o_labels.push((bare, kind, line, top));
+            }
+            return;
+        };
+        let (_, was, first, surely) = self.linuxcnc_o_labels[k];
+        if !top || !surely {
+            self.linuxcnc_o_labels[k].3 = false;
+            return;
+        }
+        if first == line || kind == b'd' || kind == b'w' && was == b'd' {
+            return;
+        }
+        let statement = String::from_utf8_lossy(text.trim_ascii()).into_owned();
+        let keyword = |k: u8| match k {
+            b'i' => "if",
+            b'w' => "while",
+            b'r' => "repeat",
+            _ => "do",
+        };
+        let said = if kind == b'i' {
+            format!("duplicate O-word label - already defined in line {first}: '{statement}'")
+        } else {
+            format!("duplicate O-word label: '{statement}' - defined in line {first}")
+        };
+        let message = format!(
+            "{said} (rs274ngc): the {} on line {first} recorded the label {} for the whole \
+             program (interp_o_word.cc control_save_offset), and {} of it on another line is \
+             refused; give each condition and loop its own label",
+            keyword(was),
+            String::from_utf8_lossy(label),
+            match kind {
+                b'i' => "an if",
+                b'w' => "a while",
+                _ => "a repeat",
+            },
+        );
+        self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
     /// LinuxCNC: whether the feed mode in force where the line runs may be another than the
@@ -1572,7 +1808,8 @@ impl Checker {
     fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
         if let Some((true, name)) = statement {
             if self.open_definition.is_some() {
-                self.linuxcnc_bodies.push((name.clone(), false, Vec::new()));
+                self.linuxcnc_bodies
+                    .push((name.clone(), false, Vec::new(), 0));
             }
             return;
         }
@@ -1594,6 +1831,17 @@ impl Checker {
                 &[2.0, 30.0, 72.0, 98.0, 99.0]
             };
             body.1 |= value.is_none_or(|v| codes.contains(&v));
+            // (the distance mode it returns in: its own G90/G91, M73's restore, F16)
+            let flow = !self.linuxcnc_definition_flow.is_empty();
+            body.3 |= match (w.letter, value) {
+                (_, None) => BODY_MODE_UNSURE,
+                (b'G', Some(90.0 | 91.0)) if flow => BODY_MODE_UNSURE,
+                (b'G', Some(90.0 | 91.0)) => BODY_DISTANCE,
+                (b'M', Some(70.0 | 71.0 | 72.0)) => BODY_MODE_UNSURE,
+                (b'M', Some(73.0)) if flow || body.3 & BODY_DISTANCE != 0 => BODY_MODE_UNSURE,
+                (b'M', Some(73.0)) => BODY_RESTORES,
+                _ => 0,
+            };
         }
         for &(_, kind, text) in b.statements {
             if kind == Kind::Call {
@@ -1626,7 +1874,8 @@ impl Checker {
             if seen.contains(&label) {
                 continue;
             }
-            let Some((_, sets, calls)) = self.linuxcnc_bodies.iter().rfind(|e| e.0 == label) else {
+            let Some((_, sets, calls, _)) = self.linuxcnc_bodies.iter().rfind(|e| e.0 == label)
+            else {
                 return false;
             };
             if *sets {
@@ -2541,6 +2790,63 @@ fn linuxcnc_flow_of(open: &mut Vec<Vec<u8>>, text: &[u8], label: Vec<u8>) {
     }
 }
 
+/// A LinuxCNC definition's body writes a G90/G91 of its own, outside its conditions and
+/// loops ([`Checker::linuxcnc_body`]).
+pub(super) const BODY_DISTANCE: u8 = 1;
+/// Its M73, before any G90/G91 of its own and outside its conditions and loops: rs274
+/// restores at its return the modal state M73 saved, the caller's (interp_o_word.cc
+/// `leave_context`, `restore_settings`; LinuxCNC M-codes, "M73 Save and Autorestore Modal
+/// State").
+pub(super) const BODY_RESTORES: u8 = 2;
+/// The distance mode it returns in not known: a G90/G91 or an M73 inside a condition or loop
+/// of it, an M73 after its own G90/G91, an M70, M71 or M72 (a state saved, invalidated or
+/// restored), or a G or M code whose value is not known here.
+pub(super) const BODY_MODE_UNSURE: u8 = 4;
+
+/// An o-word label's name as rs274ngc keys it (interp_read.cc `read_o`: a `<name>`'s text,
+/// a number's `%d`): `o100` and `o<100>` are `100`.
+fn bare_label(label: &[u8]) -> Vec<u8> {
+    let rest = label.strip_prefix(b"o").unwrap_or(label);
+    match rest {
+        [b'<', name @ .., b'>'] => name.to_vec(),
+        _ => rest.to_vec(),
+    }
+}
+
+/// The parameters an o-word label worked out as the line runs reads (`o#1`, `o[#1+#<n>]`),
+/// by their keys as `Checker::params` holds them; None where it reads one whose number is
+/// itself worked out (`o##2`, `o#[#2]`).
+fn label_reads(label: &[u8]) -> Option<Vec<Vec<u8>>> {
+    let mut reads = Vec::new();
+    let mut i = 0;
+    while i < label.len() {
+        if label[i] != b'#' {
+            i += 1;
+            continue;
+        }
+        match label.get(i + 1) {
+            Some(b'<') => {
+                let close = i + 2 + label[i + 2..].iter().position(|&c| c == b'>')?;
+                reads.push(super::params::named_parameter(&label[i + 2..close]));
+                i = close + 1;
+            }
+            Some(d) if d.is_ascii_digit() => {
+                let digits = label[i + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit())
+                    .count();
+                reads.push(super::params::parameter_name(
+                    b'#',
+                    &label[i + 1..i + 1 + digits],
+                ));
+                i += 1 + digits;
+            }
+            _ => return None,
+        }
+    }
+    Some(reads)
+}
+
 /// An `else` or `elseif` of a condition open in `open`: the index of its `if` there.
 fn linuxcnc_branch_switch(open: &[Vec<u8>], text: &[u8], label: &[u8]) -> Option<usize> {
     let keyword = crate::statement::o_keyword(text)?;
@@ -2626,6 +2932,137 @@ mod tests {
         let flow = "G21 G90\no5 if [1]\n#1=5\no#1 endif\nG0 X#<nope>\nM2\n";
         assert_eq!(errors(flow), [(Rule::LinuxCncRefuses, 5)]);
         assert_eq!(errors(&flow.replace("#1=5", "#1=6")), []);
+    }
+
+    /// Review 48, F19: rs274 keeps a subroutine's definition and a condition's or loop's label
+    /// for the whole program (interp_o_word.cc `control_save_offset`, `offset_map`), and
+    /// refuses a second of them on another line (each compared with `rs274 -g`): a sub
+    /// defined again ("redefining sub: o|100| already defined", by a computed label of the
+    /// same value too), an `if` or `repeat` of any label recorded, a `while` of one recorded
+    /// by another keyword than `do` ("duplicate O-word label"). A `do` of a label recorded is
+    /// no refusal, nor a label in a body and in the main program (a body's labels are its
+    /// own), nor one whose first use may not have run (inside a condition).
+    #[test]
+    fn a_linuxcnc_label_kept_for_the_whole_program_is_refused_when_used_again() {
+        let lcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| -> Vec<(usize, String)> {
+            findings(lcnc(), text, Rule::LinuxCncRefuses)
+                .into_iter()
+                .map(|f| {
+                    (
+                        f.line,
+                        f.message.split(" (rs274ngc)").next().unwrap().to_string(),
+                    )
+                })
+                .collect()
+        };
+        let head = "G21 G90\n";
+        let sub = "o100 sub\nG0 X1\no100 endsub\n";
+        for second in ["o100 sub", "o[100] sub", "o+100.0 sub", "o<100> sub"] {
+            let text = format!("{sub}{second}\nG0 X2\no100 endsub\n{head}o100 call\nM2\n");
+            assert_eq!(
+                refused(&text),
+                [(4, "redefining sub: o|100| already defined".to_string())],
+                "{second}"
+            );
+        }
+        let named = "o<s> sub\nG0 X1\no<s> endsub\no<S> sub\nG0 X2\no<s> endsub\nM2\n";
+        assert_eq!(
+            refused(named),
+            [(4, "redefining sub: o|s| already defined".into())]
+        );
+        let if_ = |first: &str, second: &str| {
+            format!("{head}{first}\nG0 X1\n{}\n{second}\nG0 X2\no1 end\nM2\n", {
+                if first.contains(" do") {
+                    "o1 while [0]".to_string()
+                } else {
+                    format!("o1 end{}", first.split(' ').nth(1).unwrap())
+                }
+            })
+        };
+        let dup_if = "duplicate O-word label - already defined in line 2: 'o1 if [1]'";
+        let text = if_("o1 if [1]", "o1 if [1]").replace("o1 end\n", "o1 endif\n");
+        assert_eq!(refused(&text), [(5, dup_if.to_string())]);
+        let text = if_("o1 if [0]", "o1 while [0]").replace("o1 end\n", "o1 endwhile\n");
+        assert_eq!(
+            refused(&text),
+            [(
+                5,
+                "duplicate O-word label: 'o1 while [0]' - defined in line 2".into()
+            )]
+        );
+        let text = if_("o1 do", "o1 repeat [1]").replace("o1 end\n", "o1 endrepeat\n");
+        assert_eq!(
+            refused(&text),
+            [(
+                5,
+                "duplicate O-word label: 'o1 repeat [1]' - defined in line 2".into()
+            )]
+        );
+        // the first a parameter's value
+        let text = format!("{head}#1=1\no#1 if [1]\no#1 endif\no1 if [1]\no1 endif\nM2\n");
+        assert_eq!(refused(&text).len(), 1);
+        assert_eq!(refused(&text)[0].0, 5);
+        // no refusal: a do again, a body's label, a first use that may not have run
+        let text = if_("o1 do", "o1 do").replace("o1 end\n", "o1 while [0]\n");
+        assert_eq!(refused(&text), []);
+        let body = "o<s> sub\no1 if [1]\no1 endif\no<s> endsub\n";
+        let text = format!("{body}{head}o1 if [1]\no1 endif\no<s> call\no<s> call\nM2\n");
+        assert_eq!(refused(&text), []);
+        let text =
+            format!("{head}o2 if [0]\no1 if [1]\no1 endif\no2 endif\no1 if [1]\no1 endif\nM2\n");
+        assert_eq!(refused(&text), []);
+        // a loop's own line again is no second label
+        let text = format!(
+            "{head}#1=0\no1 while [#1 LT 3]\n#1=[#1+1]\no2 if [1]\no2 endif\no1 endwhile\nM2\n"
+        );
+        assert_eq!(refused(&text), []);
+    }
+
+    /// Review 48, F10: a closing word whose label is worked out as the line runs is read with
+    /// the values of its line (`rs274 -g`: `#1=3` / `o#1 if [1]` / `#1=4` / `o#1 endif` is
+    /// "undefined O-word label"; with `o#1 while [0]` the body never runs and the endwhile
+    /// closes it). Refused where the block surely ran; said (TG140) where the checker cannot
+    /// follow the value (`#1=[#1+1]`) or the block may not run; and a label whose parameters
+    /// did not change closes its block (the line after it judged again).
+    #[test]
+    fn a_linuxcnc_closing_label_is_read_with_the_values_its_block_set() {
+        let lcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| fired(lcnc(), text, Rule::LinuxCncRefuses);
+        let noted = |text: &str| -> Vec<usize> {
+            findings(lcnc(), text, Rule::NotFollowed)
+                .into_iter()
+                .filter(|f| f.message.contains("set what it reads"))
+                .map(|f| f.line)
+                .collect()
+        };
+        let text = "G21 G90\n#1=3\no#1 if [1]\n#1=4\no#1 endif\nM2\n";
+        assert_eq!(refused(text), [(5, 1)]);
+        assert!(findings(lcnc(), text, Rule::LinuxCncRefuses)[0]
+            .message
+            .starts_with("undefined O-word label (rs274ngc)"));
+        for (from, to) in [("if [1]", "while [1]"), ("o#1 endif", "o#1 else\no3 endif")] {
+            let text = text.replace(from, to).replace("endif\nM2", "endwhile\nM2");
+            let text = if from == "if [1]" {
+                text
+            } else {
+                text.replace("endwhile", "endif")
+            };
+            assert_eq!(refused(&text), [(5, 1)], "{text}");
+        }
+        // the body may not run, or its value is not followed: said, taken as closing
+        for (from, to) in [("if [1]", "if [#5220 GT 1]"), ("#1=4", "#1=[#1+1]")] {
+            let text = format!(
+                "{}G0 X#<nope>\nM2\n",
+                text.replace(from, to).replace("M2\n", "")
+            );
+            assert_eq!(noted(&text), [5], "{text}");
+            assert_eq!(refused(&text), [(6, 4)], "{text}");
+        }
+        // nothing it reads set since: its block's own value, closed
+        let kept = "G21 G90\n#1=5\no#1 if [1]\nG0 X1\no#1 endif\nG0 X#<nope>\nM2\n";
+        assert_eq!(refused(kept), [(6, 4)]);
+        assert_eq!(noted(kept), []);
     }
 
     #[test]
