@@ -532,7 +532,9 @@ impl Checker {
     /// numbers and jumps read (the file's reading says which jumps of a run go forward:
     /// [`Checker::forward_jump`]), the statistics' lists -- so that a copy costs the same at
     /// any length of program; nor the verdicts kept of words' formats (32 KB), which a run
-    /// asks afresh.
+    /// asks afresh; nor the subprograms kept for their calls and those given up (called.rs):
+    /// a run ends at a call, and what a call of one says is at its calling word (`M98`,
+    /// `G65`), which reads no parameter, so never the run's to say ([`Checker::run_finding`]).
     fn run_of(&mut self) -> Box<Checker> {
         let found = std::mem::take(&mut self.found);
         let path = std::mem::take(&mut self.path);
@@ -541,6 +543,10 @@ impl Checker {
         let targets = std::mem::take(&mut self.targets);
         let goto_targets = std::mem::take(&mut self.goto_targets);
         let goto_names = std::mem::take(&mut self.goto_names);
+        let called = (
+            std::mem::take(&mut self.pending),
+            std::mem::take(&mut self.given_up),
+        );
         let clean = self.format_table.take_clean();
         let stats = &mut self.stats;
         let lists = (
@@ -562,6 +568,7 @@ impl Checker {
         self.targets = targets;
         self.goto_targets = goto_targets;
         self.goto_names = goto_names;
+        (self.pending, self.given_up) = called;
         self.format_table.give_clean(clean);
         // (its words' formats asked afresh, without the table of those kept: the same
         // findings, Checker::keep_verdicts)
