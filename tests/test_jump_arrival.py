@@ -220,3 +220,26 @@ def test_where_the_jump_brings_the_fall_through_s_value_nothing_changes(
     found = cli_findings(tmp_path, "same.nc", same, "fanuc-mill", "TG601,TG141")
     assert rules_at(found) == [("TG141", 7), ("TG601", 7)], found
     assert "X#1 is -900 where the jump of line 6 is not taken" in str(found[1]["message"])
+
+
+# review 48 F2: a forward jump met inside a jump's run (f4.nc, j9.nc)
+F2_IF = ("%\nO1000\nG20 G90 G54 G17\nG0 X1. Y0\n#9=9999.\nIF[#2EQ1]GOTO10\n#9=500.\n"
+         "N10 G0 Y0\nIF[#3EQ1]GOTO20\n#9=400.\nN20 G1 X3. F#9\nM30\n%\n")
+F2_GOTO = ("%\nO1000\nG21 G90 G54 G17\nG0 X700. Y0\n#1=-900.\nIF[#2EQ1]GOTO10\n#1=0\n"
+           "N10 G0 Y0\nGOTO20\nN15 G0 X0\nN20 G0 X#1\nM30\n%\n")
+
+
+@pytest.mark.parametrize(("name", "text", "profile", "rule", "said"), [
+    ("f4.nc", F2_IF, "haas-mill", "TG602", "F#9 is 9999 where the jumps of lines 6 and 9 are "
+     "taken"),
+    ("j9.nc", F2_GOTO, "fanuc-mill", "TG601", "X#1 is -900 where the jumps of lines 6 and 9 "
+     "are taken"),
+])
+def test_a_jump_met_in_a_jump_s_run_is_followed(
+        tmp_path: Path, name: str, text: str, profile: str, rule: str, said: str) -> None:
+    """Review 48 F2: the run where line 6's jump is taken meets line 9's jump (an IF or a
+    GOTO with no condition): that run's values arrive at line 9's target too, and are
+    judged there (before: TG141 alone)."""
+    found = cli_findings(tmp_path, name, text, profile, f"{rule},TG141")
+    assert rules_at(found) == [("TG141", 11), (rule, 11)], found
+    assert said in str(found[1]["message"]), found[1]

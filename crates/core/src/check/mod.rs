@@ -827,9 +827,12 @@ pub struct Checker {
     /// `run_target`: in a run, the line of its target (0 in the checker of the file).
     jumps_pending: Vec<params::Taken>,
     runs: Vec<params::Taken>,
-    jump_to_note: Option<(usize, Vec<u8>)>,
+    jump_to_note: Option<(usize, Vec<u8>, bool)>,
     after_block: bool,
     run_target: usize,
+    /// In a run, the file's reading of the block in hand: Some(whether it has a condition)
+    /// where it jumps forward alone ([`Checker::forward_jump`]).
+    run_jump: Option<bool>,
     /// The block count (`stats.blocks`) of the last block that leaves unconditionally (a
     /// `GOTO` outside an IF, M02/M30, M99): a block a jump may arrive at right after it is
     /// reached by no fall-through, and its values in file order are no values at all.
@@ -1241,6 +1244,7 @@ impl Checker {
             jump_to_note: None,
             after_block: false,
             run_target: 0,
+            run_jump: None,
             cut_block: 0,
             quiet_d: Vec::new(),
             assigned_at: HashMap::new(),

@@ -50,7 +50,7 @@ const RUNS: usize = 3;
 /// The most blocks a run reads from its target on, beside the file's reading.
 const RUN_BLOCKS: usize = 64;
 
-/// A comparison of a jump's condition ([`Checker::condition_false`]).
+/// A comparison of a jump's condition ([`Checker::condition_known`]).
 #[derive(Clone, Copy)]
 enum Ordering {
     Eq,
@@ -144,6 +144,9 @@ pub(super) struct Taken {
     /// The jump's line and its target (`N10`; a SINUMERIK label or block number), in capitals.
     line: usize,
     key: Vec<u8>,
+    /// Where the jump was met in the run of another jump (review 48, F2): the lines of the
+    /// jumps taken before it, the first first.
+    via: Vec<usize>,
     /// The blocks it has read from its target on.
     blocks: usize,
     run: Box<Checker>,
@@ -381,16 +384,36 @@ impl Checker {
 
     /// A block of a forward conditional jump that keeps the parameters
     /// ([`Checker::jump_keeps_params`]): the run where it is taken is kept for its target,
-    /// the checker as it stands at the block's end ([`Checker::jump_runs`]). Not in a run,
-    /// nor in a program whose findings are held (called.rs), nor for a block of two jumps,
-    /// nor where no parameter is known.
+    /// the checker as it stands at the block's end ([`Checker::jump_runs`]). Not in a program
+    /// whose findings are held (called.rs), nor for a block of two jumps, nor where no
+    /// parameter is known.
+    ///
+    /// In a run (review 48, F2), a forward jump it meets, conditional or not (`GOTO 20`,
+    /// `GOTOF LBL`), the file's reading tells which ([`Checker::forward_jump`]): its run is
+    /// kept for its target in the same way, and the run itself ends where the jump is surely
+    /// taken (no condition, or one its values make true).
     pub(super) fn jump_noted(&mut self, b: &BlockView<'_>) {
+        self.jump_noted_of(b);
+        // (a run at a jump with no condition that keeps no run: it ends here)
+        if self.run_target != 0 && self.run_jump == Some(false) && self.jump_to_note.is_none() {
+            self.params_forgotten();
+        }
+    }
+
+    /// [`Checker::jump_noted`] but the end of a run.
+    fn jump_noted_of(&mut self, b: &BlockView<'_>) {
         // (no parameter known here: the run where the jump is taken knows none at its target,
         // and judges nothing the fall-through's reading does not)
-        if self.run_target != 0 || self.hold_from.is_some() || self.params.is_empty() {
+        if self.hold_from.is_some() || self.params.is_empty() {
+            return;
+        }
+        let in_run = self.run_target != 0;
+        // (in a run, only a jump the file's reading knows goes forward)
+        if in_run && self.run_jump.is_none() {
             return;
         }
         let mut target = None;
+        let mut leaves = false;
         for &(_, kind, text) in b.statements {
             if kind != Kind::Flow {
                 continue;
@@ -412,67 +435,53 @@ impl Checker {
                 return;
             }
             // (a condition the known values make false: the jump is never taken, and keeps
-            // no run -- review 48 F1)
-            if self.condition_false(&upper) {
-                return;
+            // no run -- review 48 F1; in a run, one they make true, or none, is always taken)
+            match self.condition_known(&upper) {
+                Some(false) => return,
+                Some(true) => leaves = in_run,
+                None => {
+                    leaves = in_run && !upper.trim_ascii_start().starts_with(b"IF");
+                }
             }
             target = key;
         }
         if let Some(key) = target {
-            self.jump_to_note = Some((b.line, key));
+            self.jump_to_note = Some((b.line, key, leaves));
             self.after_block = true;
         }
     }
 
     /// Whether the condition of a forward jump (`IF[#5EQ1]GOTO10`, a SINUMERIK's
-    /// `IF R5==1 GOTOF LBL`; `upper` in capitals) is known to be false: one comparison
-    /// (Custom Macro B's EQ NE GT GE LT LE, a SINUMERIK's `== <> > >= < <=`) of two sides
-    /// each a number or of parameters holding known constants (review 48 F1). Where a side
-    /// is not known, or the condition is of another form, it is not.
-    fn condition_false(&self, upper: &[u8]) -> bool {
+    /// `IF R5==1 GOTOF LBL`; `upper` in capitals) is known: one comparison (Custom Macro B's
+    /// EQ NE GT GE LT LE, a SINUMERIK's `== <> > >= < <=`) of two sides each a number or of
+    /// parameters holding known constants (review 48 F1). None where a side is not known, the
+    /// condition is of another form, or the jump has none (`GOTO 10`).
+    fn condition_known(&self, upper: &[u8]) -> Option<bool> {
         let text = upper.trim_ascii_start();
-        let Some(rest) = text.strip_prefix(b"IF") else {
-            return false;
-        };
+        let rest = text.strip_prefix(b"IF")?;
         let (condition, ops): (&[u8], &[(&[u8], Ordering)]) =
             if self.config.family == Family::MacroB {
-                // the bracketed condition after IF, to its matching `]`
-                let rest = rest.trim_ascii_start();
-                if rest.first() != Some(&b'[') {
-                    return false;
-                }
-                let mut depth = 0usize;
-                let mut close = None;
-                for (i, &c) in rest.iter().enumerate() {
-                    match c {
-                        b'[' => depth += 1,
-                        b']' => {
-                            depth -= 1;
-                            if depth == 0 {
-                                close = Some(i);
-                                break;
-                            }
-                        }
-                        _ => {}
-                    }
-                }
-                let Some(close) = close else {
-                    return false;
+                // the bracketed condition after IF, to its matching `]` (read as the
+                // statement's reader reads it: crate::statement's `condition`)
+                let open = rest.len() - rest.trim_ascii_start().len();
+                let syntax = crate::lex::Syntax {
+                    brackets: true,
+                    hash: true,
+                    macros: true,
+                    parameter_elements: self.config.haas,
+                    ..crate::lex::Syntax::default()
                 };
-                (&rest[1..close], MACRO_B_COMPARISONS)
+                let end = expr::scan_group(rest, open, syntax).ok()?;
+                (&rest[open + 1..end - 1], MACRO_B_COMPARISONS)
             } else {
-                let Some(at) = super::targets::sinumerik_jump(upper).map(|j| j.0) else {
-                    return false;
-                };
+                let at = super::targets::sinumerik_jump(upper)?.0;
                 let start = text.as_ptr() as usize - upper.as_ptr() as usize + 2;
                 if at < start {
-                    return false;
+                    return None;
                 }
                 (&upper[start..at], SINUMERIK_COMPARISONS)
             };
-        let Some((left, op, right)) = comparison(condition, ops) else {
-            return false;
-        };
+        let (left, op, right) = comparison(condition, ops)?;
         let side = |s: &[u8]| -> Option<Dec> {
             let s = s.trim_ascii();
             if s.is_empty() {
@@ -486,11 +495,8 @@ impl Checker {
                 .and_then(Dec::parse)
                 .or_else(|| self.constant(s))
         };
-        let (Some(a), Some(b)) = (side(left), side(right)) else {
-            return false;
-        };
-        let order = a.cmp(&b);
-        !op.holds(order)
+        let (a, b) = (side(left)?, side(right)?);
+        Some(op.holds(a.cmp(&b)))
     }
 
     /// After a block (`after_block`): the runs where a jump is taken read it, and a jump read
@@ -501,7 +507,7 @@ impl Checker {
         if !self.runs.is_empty() {
             self.runs_read(b);
         }
-        if let Some((line, key)) = self.jump_to_note.take() {
+        if let Some((line, key, leaves)) = self.jump_to_note.take() {
             if self.jumps_pending.len() >= JUMPS_PENDING {
                 self.jumps_pending.remove(0);
             }
@@ -509,18 +515,26 @@ impl Checker {
             self.jumps_pending.push(Taken {
                 line,
                 key,
+                via: Vec::new(),
                 blocks: 0,
                 run,
             });
+            // (a run where the jump is surely taken: nothing of it falls through)
+            if leaves {
+                self.params_forgotten();
+            }
         }
         self.after_block = !self.runs.is_empty();
     }
 
     /// The checker as it stands, for a run where a jump is taken: without what grows with the
     /// program and a run does not read -- the findings, the path, the runs, the sequence
-    /// numbers and jumps read (a run's own jumps forget its parameters: it ends there), the
-    /// statistics' lists -- so that a copy costs the same at any length of program; nor the
-    /// verdicts kept of words' formats (32 KB), which a run asks afresh.
+    /// numbers and jumps read (the file's reading says which jumps of a run go forward:
+    /// [`Checker::forward_jump`]), the statistics' lists -- so that a copy costs the same at
+    /// any length of program; nor the verdicts kept of words' formats (32 KB), which a run
+    /// asks afresh; nor the subprograms kept for their calls and those given up (called.rs):
+    /// a run ends at a call, and what a call of one says is at its calling word (`M98`,
+    /// `G65`), which reads no parameter, so never the run's to say ([`Checker::run_finding`]).
     fn run_of(&mut self) -> Box<Checker> {
         let found = std::mem::take(&mut self.found);
         let path = std::mem::take(&mut self.path);
@@ -529,6 +543,10 @@ impl Checker {
         let targets = std::mem::take(&mut self.targets);
         let goto_targets = std::mem::take(&mut self.goto_targets);
         let goto_names = std::mem::take(&mut self.goto_names);
+        let called = (
+            std::mem::take(&mut self.pending),
+            std::mem::take(&mut self.given_up),
+        );
         let clean = self.format_table.take_clean();
         let stats = &mut self.stats;
         let lists = (
@@ -550,6 +568,7 @@ impl Checker {
         self.targets = targets;
         self.goto_targets = goto_targets;
         self.goto_names = goto_names;
+        (self.pending, self.given_up) = called;
         self.format_table.give_clean(clean);
         // (its words' formats asked afresh, without the table of those kept: the same
         // findings, Checker::keep_verdicts)
@@ -599,12 +618,50 @@ impl Checker {
     /// it, naming the jump and the word's value. A run ends after [`RUN_BLOCKS`] blocks and
     /// where its parameters hold the file's values.
     fn runs_read(&mut self, b: &BlockView<'_>) {
+        // (a forward jump in the block, as the file's reading knows it: review 48, F2)
+        let forward = if b.statements.is_empty() {
+            None
+        } else {
+            self.forward_jump(b)
+        };
         let mut runs = std::mem::take(&mut self.runs);
         runs.retain_mut(|taken| {
+            // (at a jump, a run whose values are the file's ends there, as after any block:
+            // the jump's run it would keep is the file's own, not copied again)
+            taken.run.run_jump = forward.filter(|_| {
+                taken
+                    .run
+                    .params
+                    .iter()
+                    .any(|(k, &v)| self.value_here(k) != Some(v))
+            });
             taken.run.block(b);
             taken.blocks += 1;
             for f in std::mem::take(&mut taken.run.found) {
                 self.run_finding(taken, b, f);
+            }
+            // a jump the run met: its run kept for its target, as the file's own, the blocks
+            // read so far counted in it; not where its values are the file's here (the file's
+            // own run of that jump is the same)
+            for mut met in std::mem::take(&mut taken.run.jumps_pending) {
+                if taken.blocks >= RUN_BLOCKS {
+                    break;
+                }
+                let differs = met
+                    .run
+                    .params
+                    .iter()
+                    .any(|(k, &v)| self.value_here(k) != Some(v));
+                if !differs {
+                    continue;
+                }
+                if self.jumps_pending.len() >= JUMPS_PENDING {
+                    self.jumps_pending.remove(0);
+                }
+                met.via.clone_from(&taken.via);
+                met.via.push(taken.line);
+                met.blocks = taken.blocks;
+                self.jumps_pending.push(met);
             }
             taken.blocks < RUN_BLOCKS
                 && taken
@@ -614,6 +671,58 @@ impl Checker {
                     .any(|(k, &v)| self.value_here(k) != Some(v))
         });
         self.runs = runs;
+    }
+
+    /// Whether block `b` jumps forward and nothing else the checker does not follow: one
+    /// Custom Macro B `GOTO 10` (in an IF or not) to a sequence number the program has not
+    /// shown yet, or one SINUMERIK `GOTOF`/`GOTO` to a name not read yet; Some(whether it has
+    /// a condition). Asked of the file's reading for its runs ([`Checker::jump_noted`]), which
+    /// know not the numbers read.
+    fn forward_jump(&self, b: &BlockView<'_>) -> Option<bool> {
+        let family = self.config.family;
+        if !matches!(family, Family::MacroB | Family::Sinumerik) {
+            return None;
+        }
+        let mut found = None;
+        for &(_, kind, text) in b.statements {
+            if !kind.unfollowed() {
+                continue;
+            }
+            if kind != Kind::Flow || found.is_some() {
+                return None;
+            }
+            if family == Family::MacroB && crate::statement::conditional_assignment(text).is_some()
+            {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            if !self.forward(&upper) {
+                return None;
+            }
+            found = Some(upper.trim_ascii_start().starts_with(b"IF"));
+        }
+        found
+    }
+
+    /// Whether a jump statement (`upper`, in capitals) goes forward: to a sequence number the
+    /// program has not shown yet (`GOTO 10`, nothing after it), a SINUMERIK's `GOTOF`, or its
+    /// `GOTO` to a name not read yet.
+    fn forward(&self, upper: &[u8]) -> bool {
+        if self.config.family == Family::MacroB {
+            super::targets::goto_words(upper).is_some_and(|(_, digits, tail)| {
+                tail.iter().all(|&c| blank(c))
+                    && crate::text::digits_value(digits)
+                        .is_some_and(|n| self.targets.read_before(n) == Some(false))
+            })
+        } else {
+            super::targets::sinumerik_jump(upper).is_some_and(
+                |(_, direction, name)| match direction {
+                    super::targets::Direction::Forward => true,
+                    super::targets::Direction::Backward => false,
+                    super::targets::Direction::Both => !self.targets.sinumerik_read(name),
+                },
+            )
+        }
     }
 
     /// [`Checker::runs_read`]: finding `f` of the run `taken` in block `b`.
@@ -648,12 +757,24 @@ impl Checker {
         if said {
             return;
         }
+        let jumps = match taken.via.as_slice() {
+            [] => format!("the jump of line {}", taken.line),
+            [first] => format!("the jumps of lines {first} and {}", taken.line),
+            via => format!(
+                "the jumps of lines {} and {}",
+                via.iter()
+                    .map(usize::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                taken.line
+            ),
+        };
         let message = format!(
-            "{}; {} is {value} where the jump of line {} is taken (read from the values \
-             the parameters hold there)",
+            "{}; {} is {value} where {jumps} {} taken (read from the values the parameters \
+             hold there)",
             f.message,
             b.words[i].token(),
-            taken.line
+            if taken.via.is_empty() { "is" } else { "are" },
         );
         self.report(f.rule, message, f.line, f.column);
     }
@@ -772,6 +893,12 @@ impl Checker {
         if !matches!(family, Family::MacroB | Family::Sinumerik) {
             return false;
         }
+        // (in a run, a jump with no condition forward, which the file's reading tells it:
+        // kept for its run, review 48 F2; a run knows not the numbers read, and keeps its
+        // values where any conditional jump falls through, as jump48 had it)
+        if self.run_target != 0 && self.run_jump == Some(false) {
+            return true;
+        }
         let mut jumps = false;
         for &(_, kind, text) in b.statements {
             if !kind.unfollowed() {
@@ -785,25 +912,7 @@ impl Checker {
                 continue;
             }
             let upper = text.to_ascii_uppercase();
-            if !upper.trim_ascii_start().starts_with(b"IF") {
-                return false;
-            }
-            let forward = if family == Family::MacroB {
-                super::targets::goto_words(&upper).is_some_and(|(_, digits, tail)| {
-                    tail.iter().all(|&c| blank(c))
-                        && crate::text::digits_value(digits)
-                            .is_some_and(|n| self.targets.read_before(n) == Some(false))
-                })
-            } else {
-                super::targets::sinumerik_jump(&upper).is_some_and(|(_, direction, name)| {
-                    match direction {
-                        super::targets::Direction::Forward => true,
-                        super::targets::Direction::Backward => false,
-                        super::targets::Direction::Both => !self.targets.sinumerik_read(name),
-                    }
-                })
-            };
-            if !forward {
+            if !upper.trim_ascii_start().starts_with(b"IF") || !self.forward(&upper) {
                 return false;
             }
             jumps = true;
@@ -1969,10 +2078,21 @@ mod tests {
         // a jump whose target is in the next program arrives nowhere
         let across = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nO2000\n#1=0\nN10 G0 X#1";
         assert_eq!(travel(across), 0);
-        // a call, another jump: not followed (the run's values end there)
+        // a call: not followed (the run's values end there); another jump: its run kept for
+        // its target (review 48, F2: a_jump_met_in_a_run_is_followed)
         assert_eq!(travel(&format!("{head}N10 M98 P2000\nG0 X#1")), 0);
         assert_eq!(
             travel(&format!("{head}N10 G0 Y0\nGOTO20\nN15 G0 X0\nN20 G0 X#1")),
+            1
+        );
+        // a jump back: its fall-through keeps the run's values (as jump48), a jump back with
+        // no condition ends the run
+        assert_eq!(
+            travel(&format!("N5 M5\n{head}N10 G0 Y0\nIF[#3EQ1]GOTO5\nG0 X#1")),
+            1
+        );
+        assert_eq!(
+            travel(&format!("N5 M5\n{head}N10 G0 Y0\nGOTO5\nN15 G0 X#1")),
             0
         );
         // 64 blocks from the target on: the 60th judged, the 70th not
@@ -1995,6 +2115,84 @@ mod tests {
         };
         assert_eq!(travel(&jumps(&[10, 20, 30, 40])), 1);
         assert_eq!(travel(&jumps(&[10, 20, 30, 40, 50])), 0);
+    }
+
+    /// Review 48, F2: a forward jump met inside a jump's run (`IF..GOTO`, `GOTO`, `GOTOF`)
+    /// keeps the run's values for its target, as the file's own jump does: f4.nc's feed of
+    /// 9999 where the jumps of lines 6 and 9 are both taken, j9.nc's X#1 past a `GOTO20`.
+    /// Not where the run's values make its condition false; where they make it true, or it
+    /// has none, nothing of the run falls through.
+    #[test]
+    fn a_jump_met_in_a_run_is_followed() {
+        use super::super::testing::findings;
+        let config = || {
+            let mut config = of_family(Family::MacroB);
+            config.facts.program_number = Some(b'O');
+            config
+        };
+        let found = |body: &str, rule| findings(config(), &program(body), rule);
+        // f4.nc (the iso-mill's feeds to 999.9, which a FANUC clamps: TG605): F9999. where #2
+        // and #3 are both 1
+        let f4 = "G0 X1. Y0\n#9=9999.\nIF[#2EQ1]GOTO10\n#9=500.\nN10 G0 Y0\n\
+                  IF[#3EQ1]GOTO20\n#9=400.\nN20 G1 X3. F#9";
+        let feeds = found(f4, Rule::FeedClamped);
+        assert_eq!(feeds.len(), 1, "{feeds:?}");
+        assert_eq!((feeds[0].line, feeds[0].column), (9, 12));
+        assert!(
+            feeds[0]
+                .message
+                .contains("F#9 is 9999 where the jumps of lines 4 and 7 are taken"),
+            "{}",
+            feeds[0].message
+        );
+        // j9.nc: an unconditional GOTO in the run (X -500..500)
+        let j9 = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\nGOTO20\n\
+                  N15 G0 X0\nN20 G0 X#1";
+        let spans = found(j9, Rule::TravelExceeded);
+        assert_eq!(spans.len(), 1, "{spans:?}");
+        assert!(spans[0]
+            .message
+            .contains("where the jumps of lines 4 and 7 are taken"));
+        // three deep: each jump met in the run of the one before
+        let deep = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\n\
+                    IF[#3EQ1]GOTO20\n#1=0\nN20 G0 Y0\nIF[#4EQ1]GOTO30\n#1=0\nN30 G0 X#1";
+        let spans = found(deep, Rule::TravelExceeded);
+        assert_eq!(spans.len(), 1, "{spans:?}");
+        assert!(spans[0]
+            .message
+            .contains("where the jumps of lines 4, 7 and 10 are taken"));
+        // the condition: false by the run's values (#5 is 0), no run of it; true (#5 is 1),
+        // the run where line 4's jump is taken goes to N20 and not on to the X#1 between
+        let with = |five: &str, between: &str| {
+            format!(
+                "G0 X400. Y0\n#5={five}\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\n\
+                 IF[#5EQ1]GOTO20\n{between}\nN20 G0 X#1"
+            )
+        };
+        let lines = |body: &str| -> Vec<usize> {
+            found(body, Rule::TravelExceeded)
+                .iter()
+                .map(|f| f.line)
+                .collect()
+        };
+        // #1 set to 5 in the run's fall-through: the run arrives with 5 alone
+        assert_eq!(lines(&with("0", "#1=5.")), Vec::<usize>::new());
+        assert_eq!(lines(&with("1", "#1=5.")), [10]);
+        // the X#1 between is never run where line 4's jump is taken and #5 is 1
+        assert_eq!(lines(&with("1", "G0 X#1")), [10]);
+        assert_eq!(lines(&with("0", "G0 X#1")), [9]);
+        // SINUMERIK: a GOTOF in the run of another (X -500..500)
+        let sinumerik = "G0 X400 Y0\nR1=-700\nIF R2==1 GOTOF AA\nR1=0\nAA: G0 Y0\n\
+                         IF R3==1 GOTOF BB\nR1=0\nBB: G0 X=R1";
+        let spans = findings(
+            of_family(Family::Sinumerik),
+            &program(sinumerik),
+            Rule::TravelExceeded,
+        );
+        assert_eq!(spans.len(), 1, "{spans:?}");
+        assert!(spans[0]
+            .message
+            .contains("where the jumps of lines 4 and 7 are taken"));
     }
 
     /// Review 48 F15: on LinuxCNC every setting of a line reads the values from before it
