@@ -521,6 +521,13 @@ def test_g53_under_g91_and_x_with_u_in_one_block_are_not_judged(tmp_path: Path) 
         "X moves 520 (U520.) with its start not known: more than its whole travel of 510 "
         "(-10 to 500), out of travel wherever it starts")
     assert found("g28fits.nc", "fanuc-lathe", g28.replace("U520.", "U500.")) == []
+    # a U whose value is not known leaves X not known, as G91 X#1 does on a mill (review 48,
+    # F12: X at 0, U#1, U400., X-200. was "X spans 600"); a plain U after a known X is judged
+    u1 = "%\nO1000\nG21 G40 G99\nG0 X0. Z5.\nG0 U#1\nG0 U400.\nG0 X-200.\nM30\n%\n"
+    assert found("u1.nc", "fanuc-lathe", u1) == []
+    got = found("u400.nc", "fanuc-lathe", u1.replace("G0 U#1\n", ""))
+    assert [f[:3] for f in got] == [(6, 4, "TG601")]
+    assert got[0][3].startswith("X spans 600 (from -200 to 400)")
 
 
 def test_increments_wider_than_the_travel_from_a_start_not_known(tmp_path: Path) -> None:

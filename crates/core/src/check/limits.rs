@@ -3172,6 +3172,64 @@ mod tests {
         assert_eq!(at(fanuc_lathe(), known, Rule::TravelExceeded), [(4, 5)]);
     }
 
+    /// Review 48, F12: a lathe's U (W) whose value is not known (`U#1`) leaves X (Z) not
+    /// known, as a mill's `G91 X#1` does: X kept its old position, and a later absolute X
+    /// made a span from a place the tool never was (u1.nc: TG601 "X spans 600"). A plain U
+    /// after a known X is judged as before, and an increment run from the lost position
+    /// wider than the whole travel is still out of travel (issue 32).
+    #[test]
+    fn a_lathe_s_u_whose_value_is_not_known_leaves_x_not_known() {
+        let mut haas = fanuc_lathe();
+        haas.haas = true;
+        for (name, lathe) in [
+            ("fanuc", fanuc_lathe()),
+            ("haas", haas),
+            ("okuma", super::super::testing::okuma_lathe()),
+        ] {
+            // travel X -500 to 500: X was at 0+#1+600, not 600
+            let u = "G00 X0 Z0\nG00 U#1\nG00 U600.\nG00 X-450.\n";
+            assert_eq!(at(lathe.clone(), u, Rule::TravelExceeded), [], "{name}");
+            // the same U beside an X: X not known either
+            let xu = "G00 X0 Z0\nG00 X100. U#1\nG00 U600.\nG00 X-450.\n";
+            assert_eq!(at(lathe.clone(), xu, Rule::TravelExceeded), [], "{name}");
+            // a plain U after a known X: judged (X spans 600 to -450)
+            let plain = "G00 X0 Z0\nG00 U0\nG00 U600.\nG00 X-450.\n";
+            assert_eq!(
+                at(lathe.clone(), plain, Rule::TravelExceeded),
+                [(5, 5)],
+                "{name}"
+            );
+            // Z and W the same (Z -300 to 100)
+            let w = "G00 X0 Z0\nG00 W#1\nG00 W-300.\nG00 Z150.\n";
+            assert_eq!(at(lathe.clone(), w, Rule::TravelExceeded), [], "{name}");
+            let plain = "G00 X0 Z0\nG00 W0\nG00 W-300.\nG00 Z150.\n";
+            assert_eq!(
+                at(lathe.clone(), plain, Rule::TravelExceeded),
+                [(5, 5)],
+                "{name}"
+            );
+            // a run of U wider than X's whole travel after it: out of travel wherever it
+            // starts; one that fits says nothing
+            let run = "G00 X0 Z0\nG00 U#1\nG00 U600.\nG01 U500. F0.2\n";
+            assert_eq!(
+                at(lathe.clone(), run, Rule::TravelExceeded),
+                [(5, 5)],
+                "{name}"
+            );
+            let found = findings(lathe.clone(), &program(run), Rule::TravelExceeded);
+            assert!(
+                found[0].message.starts_with(
+                    "X moves over 1100 mm in 2 increments in a row (the last U500.) with its \
+                     start not known"
+                ),
+                "{name}: {}",
+                found[0].message
+            );
+            let fits = "G00 X0 Z0\nG00 U#1\nG00 U600.\nG01 U-500. F0.2\n";
+            assert_eq!(at(lathe.clone(), fits, Rule::TravelExceeded), [], "{name}");
+        }
+    }
+
     /// Issue 32 (lathe48's lost TG601): an axis whose position is not known, moved by
     /// increments of known lengths, is out of travel wherever it started where the extent of
     /// their running sum (0 included) is wider than its whole travel; never where it fits.
