@@ -562,7 +562,8 @@ def test_review_48_a_body_s_g53_at_each_call_and_the_mode_after_a_later_program(
     """Review 48, F7: a body's G53 written before its own G90/G91 is judged at a G90 call even
     where a G91 call of it came first. F11: a program written after its call may leave G91
     (M99 restores no mode): the caller's next position is not judged as absolute until it
-    writes its own G90/G91; one TG140 a file. fanuc-mill X -762 to 762."""
+    writes its own G90/G91; one TG140 a file. F17: the sample machine's hint on the file's
+    first TG601 said, a body's at its call. fanuc-mill X -762 to 762."""
     def found(name: str, program: str) -> list[tuple[int, int, str, str]]:
         path = tmp_path / name
         path.write_text(program)
@@ -581,6 +582,15 @@ def test_review_48_a_body_s_g53_at_each_call_and_the_mode_after_a_later_program(
     assert "whose G90/G91 the checker does not know" in got[0][3]
     assert [f[:3] for f in found("q1g90.nc", q1.replace("G0 X-900.", "G90 G0 X-900."))] \
         == [(5, 5, "TG140"), (6, 8, "TG601")]
+    # F17: a body's TG601 at its call, the file's first said, carries the sample machine's
+    # hint (the body's own finding, held and taken out at its M99, had spent it)
+    sp2 = ("%\nO2000\nG90\nG0 X700.\nG0 X-900.\nM99\nO1000\nG21 G90 G54 G17\nG0 X0. Y0\n"
+           "M98 P2000\nM30\n%\n")
+    got = found("sp2.nc", sp2)
+    assert [f[:3] for f in got] == [(10, 5, "TG601")]
+    assert got[0][3].endswith(
+        "(the built-in profile's limits are a typical machine of the family: a profile of your "
+        "machine, `base` and its [limits], checks against yours; said once)")
 
 
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(

@@ -311,6 +311,9 @@ impl Checker {
                     kept.push(f);
                 }
             }
+            // (the sample machine's hint, where one of those taken out carried it, goes to
+            // the first finding said after all: review 48, F17)
+            self.sample_hint_taken(&mut [&mut removed, &mut positions], &mut kept);
             self.found.extend(kept);
         }
         let spans = std::mem::replace(&mut self.spans, early.stash);
@@ -835,8 +838,10 @@ impl Checker {
     /// A subprogram no call names: read as before, from the reset state (its findings said,
     /// its span added to those of the file).
     fn early_as_read(&mut self, p: Pending) {
-        self.found.extend(p.removed);
-        self.found.extend(p.positions);
+        for mut f in p.removed.into_iter().chain(p.positions) {
+            self.sample_hint_shown(&mut f);
+            self.found.push(f);
+        }
         for i in 0..AXES.len() {
             let Some(span) = p.spans[i] else {
                 continue;
@@ -1002,6 +1007,7 @@ impl Checker {
                 f.message = format!("{}{}", f.message, under(f.line));
                 (f.line, f.column) = at;
                 self.early_hold();
+                self.sample_hint_shown(&mut f);
                 self.found.push(f);
             }
         } else if r > 1.0 && !p.positions.is_empty() {
@@ -1022,6 +1028,7 @@ impl Checker {
                     f.message, p.body.name
                 );
                 self.early_hold();
+                self.sample_hint_shown(&mut f);
                 self.found.push(f);
             }
         } else if p.positions.iter().any(|f| !f.message.contains("(G53)")) {
@@ -1455,6 +1462,64 @@ mod tests {
                 .collect();
             assert_eq!(notes, [(7, 1)], "{call}");
         }
+    }
+
+    /// Review 48, F17: the file's first finding of a limit said carries the sample machine's
+    /// hint ("said once"), wherever the one first made was: a body's own finding, held and
+    /// taken out at its M99, spent it, and the body's TG601 at its call went without it.
+    #[test]
+    fn the_first_limit_finding_said_carries_the_sample_machine_s_hint() {
+        let hint = " (the built-in profile's limits are a typical machine of the family: a \
+                    profile of your machine, `base` and its [limits], checks against yours; said \
+                    once)";
+        let metric = mill(Units::Metric);
+        let hints = |said: &[super::Finding]| -> Vec<bool> {
+            said.iter().map(|f| f.message.contains(hint)).collect()
+        };
+        // (review 48's sp2.nc: the body's own X700. / X-900. span 1600, said at the call)
+        let sp2 = "%\nO2000\nG90\nG0 X700.\nG0 X-900.\nM99\nO1000\nG21 G90 G54 G17\n\
+                   G0 X0. Y0\nM98 P2000\nM30\n%\n";
+        let said = findings(metric.clone(), sp2, Rule::TravelExceeded);
+        assert_eq!(
+            said.iter().map(|f| (f.line, f.column)).collect::<Vec<_>>(),
+            [(10, 5)]
+        );
+        assert!(
+            said[0].message.ends_with(&format!(
+                "(O2000 runs as called by M98 P2000 of line 10, its positions of lines 5 and 4 \
+                 there: a subprogram written before its call runs in the units and under the \
+                 shift in force there){hint}"
+            )),
+            "{}",
+            said[0].message
+        );
+        // a body no call names: its finding said at the file's end, after the main program's
+        // own, which comes first and carries the hint
+        let uncalled = sp2.replace("M98 P2000", "G0 X800.\nG0 X-800.");
+        let said = findings(metric.clone(), &uncalled, Rule::TravelExceeded);
+        assert_eq!(
+            said.iter().map(|f| f.line).collect::<Vec<_>>(),
+            [11, 5],
+            "{said:?}"
+        );
+        assert_eq!(hints(&said), [true, false]);
+        // alone, it carries it as before
+        let alone = sp2.replace("M98 P2000\n", "");
+        let said = findings(metric.clone(), &alone, Rule::TravelExceeded);
+        assert_eq!(hints(&said), [true]);
+        // a call under a shift not known judges nothing: the hint goes to the next finding
+        // said, the main program's own (it had none)
+        let unknown = sp2.replace(
+            "M98 P2000",
+            "G52 X#1\nM98 P2000\nG52 X0\nG0 X800.\nG0 X-800.",
+        );
+        let said = findings(metric, &unknown, Rule::TravelExceeded);
+        assert_eq!(
+            said.iter().map(|f| f.line).collect::<Vec<_>>(),
+            [14],
+            "{said:?}"
+        );
+        assert_eq!(hints(&said), [true], "{said:?}");
     }
 
     /// Findings held for a program read apart are said in the order they came, whether
