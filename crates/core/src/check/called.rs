@@ -96,8 +96,9 @@ struct Body {
     /// The first call in it whose program the checker does not read here (its calling words
     /// and line: a program not read before it, itself, one given up, a number not known, a
     /// Haas's M97), or such a call of a program it calls: a G90/G91 written there is not
-    /// followed (review 47, F1).
-    unfollowed: Option<(String, usize)>,
+    /// followed (review 47, F1). For a Haas's M97, the blocks it runs (`O2000's from N100 to
+    /// an M99`: review 48, F18).
+    unfollowed: Option<(String, usize, Option<String>)>,
     /// The least and the most value of each axis's G53 positions, in the units it is read
     /// in (review 43, A: judged at each call in that call's units).
     machine: Machine,
@@ -672,16 +673,37 @@ impl Checker {
                 .or(b.words.first())
                 .map_or_else(String::new, |w| w.token()),
         };
-        self.early_unfollowed(&token, b.line);
+        // (a Haas's M97 runs the blocks of the program in hand from the sequence number its
+        // P gives to an M99, a local subprogram call: no other program; review 48, F18)
+        let m97 = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'M' && w.number == b"97");
+        let local = word(b'P').filter(|_| m97).map(|p| {
+            let sequence = match p.value {
+                Some(n) if p.expression.is_empty() && p.sign.is_empty() && !p.point => {
+                    format!("N{n}")
+                }
+                _ => "the sequence number its P gives".to_string(),
+            };
+            let name = self.early.as_ref().map_or("", |e| e.body.name.as_str());
+            format!("{name}'s from {sequence} to an M99")
+        });
+        self.early_unfollowed_by(&token, b.line, local);
     }
 
     /// Inside a program read apart: a call (`token` of line `line`) whose program's G90/G91
     /// the checker does not follow, kept (the first) for the wording of that program's TG140
     /// at a call under the other mode.
     fn early_unfollowed(&mut self, token: &str, line: usize) {
+        self.early_unfollowed_by(token, line, None);
+    }
+
+    /// [`Checker::early_unfollowed`], of a Haas's M97 the blocks it runs (`local`).
+    fn early_unfollowed_by(&mut self, token: &str, line: usize, local: Option<String>) {
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
             if early.body.unfollowed.is_none() {
-                early.body.unfollowed = Some((token.to_string(), line));
+                early.body.unfollowed = Some((token.to_string(), line, local));
             }
         }
     }
@@ -950,17 +972,22 @@ impl Checker {
             };
             // (a G90/G91 of a program it calls is its own from that call on, where the checker
             // follows the call: review 47, F1)
-            let unfollowed = p
-                .body
-                .unfollowed
-                .as_ref()
-                .map_or_else(String::new, |(call, at)| {
-                    format!(
-                    "; the G90 or G91 of a program its {call} of line {at} runs is not followed \
-                     (the checker does not read that program at that call), so the positions \
-                     after that call are taken in the mode before it"
-                )
-                });
+            let unfollowed = p.body.unfollowed.as_ref().map_or_else(
+                String::new,
+                |(call, at, local)| match local {
+                    Some(local) => format!(
+                        "; the G90 or G91 of the blocks its {call} of line {at} runs ({local}: \
+                         a local subprogram call) is not followed (the checker does not \
+                         follow that call), so the positions after that call are taken in the \
+                         mode before it"
+                    ),
+                    None => format!(
+                        "; the G90 or G91 of a program its {call} of line {at} runs is not \
+                         followed (the checker does not read that program at that call), so the \
+                         positions after that call are taken in the mode before it"
+                    ),
+                },
+            );
             let message = format!(
                 "{token} runs {name} under the {here} in force here (G90/G91 are modal and a call \
                  changes none), and {name} moves before it writes a G90 or G91 of its own: its \
@@ -2121,6 +2148,35 @@ mod tests {
                 "{call}: {said:?}"
             );
         }
+        // review 48, F18: M97 runs the blocks of the same program from its N to an M99 (a Haas
+        // local subprogram call), not another program (review 48's h97.nc)
+        let h97 = "%\nO2000\nG0 X100.\nM97 P100\nG0 X200.\nM99\nN100 G90\nM99\nO1000\n\
+                   G20 G90 G54 G17\nG0 X0. Y0\nG91\nM98 P2000\nM30\n%\n";
+        let said = notes(h97, "M98 P2000 runs O2000 under the G91");
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!(said[0].0, 13);
+        assert!(
+            said[0].1.contains(
+                "the G90 or G91 of the blocks its M97 P100 of line 4 runs (O2000's from N100 to \
+                 an M99: a local subprogram call) is not followed (the checker does not follow \
+                 that call)"
+            ) && !said[0].1.contains("a program its M97"),
+            "{}",
+            said[0].1
+        );
+        // its P by a parameter: the sequence named so
+        let said = notes(
+            &h97.replace("M97 P100", "M97 P#1"),
+            "M98 P2000 runs O2000 under the G91",
+        );
+        assert!(
+            said.len() == 1
+                && said[0].1.contains(
+                    "its M97 P#1 of line 4 runs (O2000's from the sequence number its P gives \
+                     to an M99"
+                ),
+            "{said:?}"
+        );
         // followed: no such words
         let before = "%\nO0003\nG0 X1.\nM99\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\nG21 G90 G54\n\
                       G0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";
