@@ -186,6 +186,9 @@ pub(super) struct Pending {
     calls: Option<Result<usize, usize>>,
     /// Its largest feed said above the maximum at a call: not said again at the next.
     feed_said: bool,
+    /// Its runs of increments from a position not known wider than the travel (TG601, among
+    /// `removed`) said at a call: not said again at the next (issue 32, incr48's open case).
+    runs_said: bool,
     /// Some(mode): its first position came before a G90/G91 of its own, read in `mode` (G91:
     /// true); a call in the other mode runs those positions otherwise, not known there
     /// (review 43, finding D). None: it wrote its own first, or has no position.
@@ -210,6 +213,10 @@ pub(super) const HOLD_MAX: usize = 1024;
 /// past it the program is read as before, as past [`HOLD_MAX`] of its limits' (the hold
 /// stays a few MB whatever follows its first limit finding).
 pub(super) const HOLD_ALL: u64 = 4 * HOLD_MAX as u64;
+
+/// What a TG601 of a run of increments from a position not known says
+/// (crate::check::limits): such a finding of a body read apart is said at its calls.
+const RUN: &str = " with its start not known: more than its whole travel of ";
 
 /// A span's ends, put together with another's (`said` of either).
 fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
@@ -327,6 +334,7 @@ impl Checker {
             positions,
             calls: None,
             feed_said: false,
+            runs_said: false,
             read_incremental: (early.moved_first == Some(true)).then_some(early.incremental),
             ends: (self.machine.distance_codes != early.distance_codes)
                 .then_some(self.machine.state.incremental),
@@ -999,6 +1007,27 @@ impl Checker {
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
+        // (its runs of increments from a position not known, out of travel wherever they
+        // start: the same at a call in the units it was read in, and in the mode it was read
+        // in where it moved before a G90/G91 of its own; said at the first such call, naming
+        // the body's line. In other units, not judged: docs/check.md)
+        if r == 1.0 && known && !p.runs_said {
+            let runs: Vec<Finding> = p
+                .removed
+                .iter()
+                .filter(|f| f.rule == Rule::TravelExceeded && f.message.contains(RUN))
+                .cloned()
+                .collect();
+            for mut f in runs {
+                p.runs_said = true;
+                let increment = under_at(&format!("increment of line {}", f.line));
+                f.message = format!("{}{increment}", f.message);
+                (f.line, f.column) = at;
+                self.early_hold();
+                self.sample_hint_shown(&mut f);
+                self.found.push(f);
+            }
+        }
         self.early_machine_judged(&mut p.body.machine, r, at, &under);
         // (its G53 positions before a G90/G91 of its own run in the call's mode: under G91
         // not judged, said once; review 46, F3)
@@ -1489,6 +1518,45 @@ mod tests {
                 .collect();
             assert_eq!(notes, [(7, 1)], "{call}");
         }
+    }
+
+    /// Issue 32, incr48's open case: a body read before its call whose own increments, from a
+    /// position not known, run wider than the travel. Its TG601 was held and taken out at its
+    /// M99, and at the call only its span (none: no position known) was judged: lost. Said at
+    /// a call in the units it was read in, once, naming the body's line; at a call in other
+    /// units not judged (docs/check.md).
+    #[test]
+    fn a_body_s_run_of_increments_wider_than_the_travel_is_said_at_its_call() {
+        let b1 = "%\nO2000\nG91 G0 X800.\nY10.\nX800.\nG90\nM99\nO1000\nG21 G90 G54 G17\n\
+                  G0 X0. Y0\nM98 P2000\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), b1), [(11, 5)]);
+        let said = findings(metric.clone(), b1, Rule::TravelExceeded);
+        assert!(
+            said[0].message.starts_with(
+                "X moves over 1600 mm in 2 increments in a row (the last X800.) with its start \
+                 not known: more than its whole travel of 1524"
+            ) && said[0]
+                .message
+                .contains("(O2000 runs as called by M98 P2000 of line 11, its increment of line 5"),
+            "{}",
+            said[0].message
+        );
+        // once, at the first call
+        let twice = b1.replace("M98 P2000\n", "M98 P2000\nM98 P2000\n");
+        assert_eq!(limits(metric.clone(), &twice), [(11, 5)]);
+        // never called: said as read, at the file's end
+        assert_eq!(
+            limits(metric.clone(), &b1.replace("M98 P2000\n", "")),
+            [(5, 1)]
+        );
+        // a run that fits: nothing
+        assert_eq!(
+            limits(metric.clone(), &b1.replace("\nX800.", "\nX700.")),
+            []
+        );
+        // a call in inches (the body read in mm): not judged
+        assert_eq!(limits(metric, &b1.replace("G21 G90", "G20 G90")), []);
     }
 
     /// Review 48, F17: the file's first finding of a limit said carries the sample machine's
