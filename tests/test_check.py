@@ -521,6 +521,13 @@ def test_g53_under_g91_and_x_with_u_in_one_block_are_not_judged(tmp_path: Path) 
         "X moves 520 (U520.) with its start not known: more than its whole travel of 510 "
         "(-10 to 500), out of travel wherever it starts")
     assert found("g28fits.nc", "fanuc-lathe", g28.replace("U520.", "U500.")) == []
+    # a U whose value is not known leaves X not known, as G91 X#1 does on a mill (review 48,
+    # F12: X at 0, U#1, U400., X-200. was "X spans 600"); a plain U after a known X is judged
+    u1 = "%\nO1000\nG21 G40 G99\nG0 X0. Z5.\nG0 U#1\nG0 U400.\nG0 X-200.\nM30\n%\n"
+    assert found("u1.nc", "fanuc-lathe", u1) == []
+    got = found("u400.nc", "fanuc-lathe", u1.replace("G0 U#1\n", ""))
+    assert [f[:3] for f in got] == [(6, 4, "TG601")]
+    assert got[0][3].startswith("X spans 600 (from -200 to 400)")
 
 
 def test_increments_wider_than_the_travel_from_a_start_not_known(tmp_path: Path) -> None:
@@ -555,7 +562,8 @@ def test_review_48_a_body_s_g53_at_each_call_and_the_mode_after_a_later_program(
     """Review 48, F7: a body's G53 written before its own G90/G91 is judged at a G90 call even
     where a G91 call of it came first. F11: a program written after its call may leave G91
     (M99 restores no mode): the caller's next position is not judged as absolute until it
-    writes its own G90/G91; one TG140 a file. fanuc-mill X -762 to 762."""
+    writes its own G90/G91; one TG140 a file. F17: the sample machine's hint on the file's
+    first TG601 said, a body's at its call. fanuc-mill X -762 to 762."""
     def found(name: str, program: str) -> list[tuple[int, int, str, str]]:
         path = tmp_path / name
         path.write_text(program)
@@ -574,6 +582,15 @@ def test_review_48_a_body_s_g53_at_each_call_and_the_mode_after_a_later_program(
     assert "whose G90/G91 the checker does not know" in got[0][3]
     assert [f[:3] for f in found("q1g90.nc", q1.replace("G0 X-900.", "G90 G0 X-900."))] \
         == [(5, 5, "TG140"), (6, 8, "TG601")]
+    # F17: a body's TG601 at its call, the file's first said, carries the sample machine's
+    # hint (the body's own finding, held and taken out at its M99, had spent it)
+    sp2 = ("%\nO2000\nG90\nG0 X700.\nG0 X-900.\nM99\nO1000\nG21 G90 G54 G17\nG0 X0. Y0\n"
+           "M98 P2000\nM30\n%\n")
+    got = found("sp2.nc", sp2)
+    assert [f[:3] for f in got] == [(10, 5, "TG601")]
+    assert got[0][3].endswith(
+        "(the built-in profile's limits are a typical machine of the family: a profile of your "
+        "machine, `base` and its [limits], checks against yours; said once)")
 
 
 def test_a_linuxcnc_definition_before_its_call_runs_under_the_call_s_shift_and_units(

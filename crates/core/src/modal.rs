@@ -1281,7 +1281,6 @@ impl ModalMachine {
                 && self.uw_moves
                 && s.cycle.is_none()
             {
-                let Some(value) = v.get(axis) else { continue };
                 let on = if axis == b'U' { b'X' } else { b'Z' };
                 let Some(j) = axis_index(on) else { continue };
                 if self.settings.g_system != GCodeSystem::A {
@@ -1300,6 +1299,13 @@ impl ModalMachine {
                     lose_axis(s, &mut self.drift[j], j, on);
                     continue;
                 }
+                // a U whose value is not known (`U#1`) leaves X not known, as a mill's `G91
+                // X#1` does (review 48, F12: X kept its old position, and a later absolute X
+                // made a span from a place the tool never was)
+                let Some(value) = v.get(axis) else {
+                    lose_axis(s, &mut self.drift[j], j, on);
+                    continue;
+                };
                 // (a U from where X is not known: not known)
                 if s.unknown & bit(on) == 0 {
                     s.position[j] = s.position[j]

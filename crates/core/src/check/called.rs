@@ -96,8 +96,9 @@ struct Body {
     /// The first call in it whose program the checker does not read here (its calling words
     /// and line: a program not read before it, itself, one given up, a number not known, a
     /// Haas's M97), or such a call of a program it calls: a G90/G91 written there is not
-    /// followed (review 47, F1).
-    unfollowed: Option<(String, usize)>,
+    /// followed (review 47, F1). For a Haas's M97, the blocks it runs (`O2000's from N100 to
+    /// an M99`: review 48, F18).
+    unfollowed: Option<(String, usize, Option<String>)>,
     /// The least and the most value of each axis's G53 positions, in the units it is read
     /// in (review 43, A: judged at each call in that call's units).
     machine: Machine,
@@ -185,6 +186,9 @@ pub(super) struct Pending {
     calls: Option<Result<usize, usize>>,
     /// Its largest feed said above the maximum at a call: not said again at the next.
     feed_said: bool,
+    /// Its runs of increments from a position not known wider than the travel (TG601, among
+    /// `removed`) said at a call: not said again at the next (issue 32, incr48's open case).
+    runs_said: bool,
     /// Some(mode): its first position came before a G90/G91 of its own, read in `mode` (G91:
     /// true); a call in the other mode runs those positions otherwise, not known there
     /// (review 43, finding D). None: it wrote its own first, or has no position.
@@ -209,6 +213,10 @@ pub(super) const HOLD_MAX: usize = 1024;
 /// past it the program is read as before, as past [`HOLD_MAX`] of its limits' (the hold
 /// stays a few MB whatever follows its first limit finding).
 pub(super) const HOLD_ALL: u64 = 4 * HOLD_MAX as u64;
+
+/// What a TG601 of a run of increments from a position not known says
+/// (crate::check::limits): such a finding of a body read apart is said at its calls.
+const RUN: &str = " with its start not known: more than its whole travel of ";
 
 /// A span's ends, put together with another's (`said` of either).
 fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
@@ -311,6 +319,9 @@ impl Checker {
                     kept.push(f);
                 }
             }
+            // (the sample machine's hint, where one of those taken out carried it, goes to
+            // the first finding said after all: review 48, F17)
+            self.sample_hint_taken(&mut [&mut removed, &mut positions], &mut kept);
             self.found.extend(kept);
         }
         let spans = std::mem::replace(&mut self.spans, early.stash);
@@ -323,6 +334,7 @@ impl Checker {
             positions,
             calls: None,
             feed_said: false,
+            runs_said: false,
             read_incremental: (early.moved_first == Some(true)).then_some(early.incremental),
             ends: (self.machine.distance_codes != early.distance_codes)
                 .then_some(self.machine.state.incremental),
@@ -702,16 +714,37 @@ impl Checker {
                 .or(b.words.first())
                 .map_or_else(String::new, |w| w.token()),
         };
-        self.early_unfollowed(&token, b.line);
+        // (a Haas's M97 runs the blocks of the program in hand from the sequence number its
+        // P gives to an M99, a local subprogram call: no other program; review 48, F18)
+        let m97 = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'M' && w.number == b"97");
+        let local = word(b'P').filter(|_| m97).map(|p| {
+            let sequence = match p.value {
+                Some(n) if p.expression.is_empty() && p.sign.is_empty() && !p.point => {
+                    format!("N{n}")
+                }
+                _ => "the sequence number its P gives".to_string(),
+            };
+            let name = self.early.as_ref().map_or("", |e| e.body.name.as_str());
+            format!("{name}'s from {sequence} to an M99")
+        });
+        self.early_unfollowed_by(&token, b.line, local);
     }
 
     /// Inside a program read apart: a call (`token` of line `line`) whose program's G90/G91
     /// the checker does not follow, kept (the first) for the wording of that program's TG140
     /// at a call under the other mode.
     fn early_unfollowed(&mut self, token: &str, line: usize) {
+        self.early_unfollowed_by(token, line, None);
+    }
+
+    /// [`Checker::early_unfollowed`], of a Haas's M97 the blocks it runs (`local`).
+    fn early_unfollowed_by(&mut self, token: &str, line: usize, local: Option<String>) {
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
             if early.body.unfollowed.is_none() {
-                early.body.unfollowed = Some((token.to_string(), line));
+                early.body.unfollowed = Some((token.to_string(), line, local));
             }
         }
     }
@@ -878,8 +911,10 @@ impl Checker {
     /// A subprogram no call names: read as before, from the reset state (its findings said,
     /// its span added to those of the file).
     fn early_as_read(&mut self, p: Pending) {
-        self.found.extend(p.removed);
-        self.found.extend(p.positions);
+        for mut f in p.removed.into_iter().chain(p.positions) {
+            self.sample_hint_shown(&mut f);
+            self.found.push(f);
+        }
         for i in 0..AXES.len() {
             let Some(span) = p.spans[i] else {
                 continue;
@@ -988,17 +1023,22 @@ impl Checker {
             };
             // (a G90/G91 of a program it calls is its own from that call on, where the checker
             // follows the call: review 47, F1)
-            let unfollowed = p
-                .body
-                .unfollowed
-                .as_ref()
-                .map_or_else(String::new, |(call, at)| {
-                    format!(
-                    "; the G90 or G91 of a program its {call} of line {at} runs is not followed \
-                     (the checker does not read that program at that call), so the positions \
-                     after that call are taken in the mode before it"
-                )
-                });
+            let unfollowed = p.body.unfollowed.as_ref().map_or_else(
+                String::new,
+                |(call, at, local)| match local {
+                    Some(local) => format!(
+                        "; the G90 or G91 of the blocks its {call} of line {at} runs ({local}: \
+                         a local subprogram call) is not followed (the checker does not \
+                         follow that call), so the positions after that call are taken in the \
+                         mode before it"
+                    ),
+                    None => format!(
+                        "; the G90 or G91 of a program its {call} of line {at} runs is not \
+                         followed (the checker does not read that program at that call), so the \
+                         positions after that call are taken in the mode before it"
+                    ),
+                },
+            );
             let message = format!(
                 "{token} runs {name} under the {here} in force here (G90/G91 are modal and a call \
                  changes none), and {name} moves before it writes a G90 or G91 of its own: its \
@@ -1009,6 +1049,27 @@ impl Checker {
                 name = p.body.name
             );
             self.report(Rule::NotFollowed, message, line, column);
+        }
+        // (its runs of increments from a position not known, out of travel wherever they
+        // start: the same at a call in the units it was read in, and in the mode it was read
+        // in where it moved before a G90/G91 of its own; said at the first such call, naming
+        // the body's line. In other units, not judged: docs/check.md)
+        if r == 1.0 && known && !p.runs_said {
+            let runs: Vec<Finding> = p
+                .removed
+                .iter()
+                .filter(|f| f.rule == Rule::TravelExceeded && f.message.contains(RUN))
+                .cloned()
+                .collect();
+            for mut f in runs {
+                p.runs_said = true;
+                let increment = under_at(&format!("increment of line {}", f.line));
+                f.message = format!("{}{increment}", f.message);
+                (f.line, f.column) = at;
+                self.early_hold();
+                self.sample_hint_shown(&mut f);
+                self.found.push(f);
+            }
         }
         self.early_machine_judged(&mut p.body.machine, r, at, &under);
         // (its G53 positions before a G90/G91 of its own run in the call's mode: under G91
@@ -1045,6 +1106,7 @@ impl Checker {
                 f.message = format!("{}{}", f.message, under(f.line));
                 (f.line, f.column) = at;
                 self.early_hold();
+                self.sample_hint_shown(&mut f);
                 self.found.push(f);
             }
         } else if r > 1.0 && !p.positions.is_empty() {
@@ -1065,6 +1127,7 @@ impl Checker {
                     f.message, p.body.name
                 );
                 self.early_hold();
+                self.sample_hint_shown(&mut f);
                 self.found.push(f);
             }
         } else if p.positions.iter().any(|f| !f.message.contains("(G53)")) {
@@ -1547,6 +1610,103 @@ mod tests {
                 .collect();
             assert_eq!(notes, [(7, 1)], "{call}");
         }
+    }
+
+    /// Issue 32, incr48's open case: a body read before its call whose own increments, from a
+    /// position not known, run wider than the travel. Its TG601 was held and taken out at its
+    /// M99, and at the call only its span (none: no position known) was judged: lost. Said at
+    /// a call in the units it was read in, once, naming the body's line; at a call in other
+    /// units not judged (docs/check.md).
+    #[test]
+    fn a_body_s_run_of_increments_wider_than_the_travel_is_said_at_its_call() {
+        let b1 = "%\nO2000\nG91 G0 X800.\nY10.\nX800.\nG90\nM99\nO1000\nG21 G90 G54 G17\n\
+                  G0 X0. Y0\nM98 P2000\nM30\n%\n";
+        let metric = mill(Units::Metric);
+        assert_eq!(limits(metric.clone(), b1), [(11, 5)]);
+        let said = findings(metric.clone(), b1, Rule::TravelExceeded);
+        assert!(
+            said[0].message.starts_with(
+                "X moves over 1600 mm in 2 increments in a row (the last X800.) with its start \
+                 not known: more than its whole travel of 1524"
+            ) && said[0]
+                .message
+                .contains("(O2000 runs as called by M98 P2000 of line 11, its increment of line 5"),
+            "{}",
+            said[0].message
+        );
+        // once, at the first call
+        let twice = b1.replace("M98 P2000\n", "M98 P2000\nM98 P2000\n");
+        assert_eq!(limits(metric.clone(), &twice), [(11, 5)]);
+        // never called: said as read, at the file's end
+        assert_eq!(
+            limits(metric.clone(), &b1.replace("M98 P2000\n", "")),
+            [(5, 1)]
+        );
+        // a run that fits: nothing
+        assert_eq!(
+            limits(metric.clone(), &b1.replace("\nX800.", "\nX700.")),
+            []
+        );
+        // a call in inches (the body read in mm): not judged
+        assert_eq!(limits(metric, &b1.replace("G21 G90", "G20 G90")), []);
+    }
+
+    /// Review 48, F17: the file's first finding of a limit said carries the sample machine's
+    /// hint ("said once"), wherever the one first made was: a body's own finding, held and
+    /// taken out at its M99, spent it, and the body's TG601 at its call went without it.
+    #[test]
+    fn the_first_limit_finding_said_carries_the_sample_machine_s_hint() {
+        let hint = " (the built-in profile's limits are a typical machine of the family: a \
+                    profile of your machine, `base` and its [limits], checks against yours; said \
+                    once)";
+        let metric = mill(Units::Metric);
+        let hints = |said: &[super::Finding]| -> Vec<bool> {
+            said.iter().map(|f| f.message.contains(hint)).collect()
+        };
+        // (review 48's sp2.nc: the body's own X700. / X-900. span 1600, said at the call)
+        let sp2 = "%\nO2000\nG90\nG0 X700.\nG0 X-900.\nM99\nO1000\nG21 G90 G54 G17\n\
+                   G0 X0. Y0\nM98 P2000\nM30\n%\n";
+        let said = findings(metric.clone(), sp2, Rule::TravelExceeded);
+        assert_eq!(
+            said.iter().map(|f| (f.line, f.column)).collect::<Vec<_>>(),
+            [(10, 5)]
+        );
+        assert!(
+            said[0].message.ends_with(&format!(
+                "(O2000 runs as called by M98 P2000 of line 10, its positions of lines 5 and 4 \
+                 there: a subprogram written before its call runs in the units and under the \
+                 shift in force there){hint}"
+            )),
+            "{}",
+            said[0].message
+        );
+        // a body no call names: its finding said at the file's end, after the main program's
+        // own, which comes first and carries the hint
+        let uncalled = sp2.replace("M98 P2000", "G0 X800.\nG0 X-800.");
+        let said = findings(metric.clone(), &uncalled, Rule::TravelExceeded);
+        assert_eq!(
+            said.iter().map(|f| f.line).collect::<Vec<_>>(),
+            [11, 5],
+            "{said:?}"
+        );
+        assert_eq!(hints(&said), [true, false]);
+        // alone, it carries it as before
+        let alone = sp2.replace("M98 P2000\n", "");
+        let said = findings(metric.clone(), &alone, Rule::TravelExceeded);
+        assert_eq!(hints(&said), [true]);
+        // a call under a shift not known judges nothing: the hint goes to the next finding
+        // said, the main program's own (it had none)
+        let unknown = sp2.replace(
+            "M98 P2000",
+            "G52 X#1\nM98 P2000\nG52 X0\nG0 X800.\nG0 X-800.",
+        );
+        let said = findings(metric, &unknown, Rule::TravelExceeded);
+        assert_eq!(
+            said.iter().map(|f| f.line).collect::<Vec<_>>(),
+            [14],
+            "{said:?}"
+        );
+        assert_eq!(hints(&said), [true], "{said:?}");
     }
 
     /// Findings held for a program read apart are said in the order they came, whether
@@ -2148,6 +2308,35 @@ mod tests {
                 "{call}: {said:?}"
             );
         }
+        // review 48, F18: M97 runs the blocks of the same program from its N to an M99 (a Haas
+        // local subprogram call), not another program (review 48's h97.nc)
+        let h97 = "%\nO2000\nG0 X100.\nM97 P100\nG0 X200.\nM99\nN100 G90\nM99\nO1000\n\
+                   G20 G90 G54 G17\nG0 X0. Y0\nG91\nM98 P2000\nM30\n%\n";
+        let said = notes(h97, "M98 P2000 runs O2000 under the G91");
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert_eq!(said[0].0, 13);
+        assert!(
+            said[0].1.contains(
+                "the G90 or G91 of the blocks its M97 P100 of line 4 runs (O2000's from N100 to \
+                 an M99: a local subprogram call) is not followed (the checker does not follow \
+                 that call)"
+            ) && !said[0].1.contains("a program its M97"),
+            "{}",
+            said[0].1
+        );
+        // its P by a parameter: the sequence named so
+        let said = notes(
+            &h97.replace("M97 P100", "M97 P#1"),
+            "M98 P2000 runs O2000 under the G91",
+        );
+        assert!(
+            said.len() == 1
+                && said[0].1.contains(
+                    "its M97 P#1 of line 4 runs (O2000's from the sequence number its P gives \
+                     to an M99"
+                ),
+            "{said:?}"
+        );
         // followed: no such words
         let before = "%\nO0003\nG0 X1.\nM99\nO0002\nG0 X5.\nM98 P3\nM99\nO1000\nG21 G90 G54\n\
                       G0 X700. Y0\nG91\nM98 P2\nG90\nM30\n%\n";

@@ -2,7 +2,7 @@
 //! profile's work offsets and the one in force are known, and as the span of the program's
 //! positions; the feed, the spindle speed and the tool numbers.
 
-use super::{round6, Before, BlockView, Checker, Config, Facts, Span};
+use super::{round6, Before, BlockView, Checker, Config, Facts, Finding, Span};
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::modal::{axis_index, bit, AxesTaken, Units, AXES, CYCLE_RAN, CYCLE_UNSURE};
@@ -2451,31 +2451,91 @@ impl Checker {
         ) {
             self.early_hold();
         }
+        let message = match self.sample_hint(rule) {
+            Some(hint) if !self.limits_hint_said => {
+                self.limits_hint_said = true;
+                format!("{message}{hint}")
+            }
+            _ => message,
+        };
+        self.report(rule, message, line, column);
+    }
+
+    /// What the file's first finding of `rule` against the profile's machine (TG601, TG602,
+    /// TG604, TG605) adds where the limit is the built-in profile's sample machine
+    /// ([`Checker::report_limit`]); None where it is the user's own, or of another rule.
+    #[cold]
+    fn sample_hint(&self, rule: Rule) -> Option<&'static str> {
         let limit = match rule {
             Rule::TravelExceeded => super::SAMPLE_TRAVEL,
             Rule::FeedTooHigh | Rule::FeedClamped => super::SAMPLE_FEED,
             Rule::ToolOutOfRange => super::SAMPLE_TOOLS,
-            _ => super::SAMPLE_ALL,
+            _ => return None,
         };
-        let message = if self.config.sample_limits & limit != 0 && !self.limits_hint_said {
-            self.limits_hint_said = true;
-            if self.config.sample_limits == super::SAMPLE_ALL {
-                format!(
-                    "{message} (the built-in profile's limits are a typical machine of the \
-                     family: a profile of your machine, `base` and its [limits], checks \
-                     against yours; said once)"
-                )
-            } else {
-                // a user's file on a base that leaves this limit to it
-                format!(
-                    "{message} (this limit is the base profile's, a typical machine of the \
-                     family: the profile's own [limits] do not set it; said once)"
-                )
-            }
+        if self.config.sample_limits & limit == 0 {
+            None
+        } else if self.config.sample_limits == super::SAMPLE_ALL {
+            Some(
+                " (the built-in profile's limits are a typical machine of the family: a \
+                 profile of your machine, `base` and its [limits], checks against yours; said \
+                 once)",
+            )
         } else {
-            message
-        };
-        self.report(rule, message, line, column);
+            // a user's file on a base that leaves this limit to it
+            Some(
+                " (this limit is the base profile's, a typical machine of the family: the \
+                 profile's own [limits] do not set it; said once)",
+            )
+        }
+    }
+
+    /// A subprogram read apart returned (crate::check::called's `early_pend`): its limits'
+    /// findings, `taken` out of those said, are said at its calls or at the file's end, if
+    /// at all. Where one of them carried the sample machine's hint, the hint goes from it to
+    /// the first finding said after all (review 48, F17: a body's TG601 at its call lacked
+    /// it, spent on the body's own finding, never shown): the first of `kept` (said now)
+    /// that takes one, else the next made or said ([`Checker::sample_hint_shown`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn sample_hint_taken(
+        &mut self,
+        taken: &mut [&mut Vec<Finding>],
+        kept: &mut [Finding],
+    ) {
+        if !self.limits_hint_said {
+            return;
+        }
+        let mut found = false;
+        for f in taken.iter_mut().flat_map(|list| list.iter_mut()) {
+            let Some(hint) = self.sample_hint(f.rule) else {
+                continue;
+            };
+            if let Some(at) = f.message.find(hint) {
+                f.message.replace_range(at..at + hint.len(), "");
+                found = true;
+                break;
+            }
+        }
+        if !found {
+            return;
+        }
+        self.limits_hint_said = false;
+        for f in kept {
+            self.sample_hint_shown(f);
+        }
+    }
+
+    /// A finding of a limit said (again) out of the order it was made in (a subprogram's,
+    /// at its call or at the file's end): the sample machine's hint, where none was said yet.
+    #[cold]
+    pub(super) fn sample_hint_shown(&mut self, f: &mut Finding) {
+        if self.limits_hint_said {
+            return;
+        }
+        if let Some(hint) = self.sample_hint(f.rule) {
+            self.limits_hint_said = true;
+            f.message.push_str(hint);
+        }
     }
 
     /// What a limit's message adds where the program has written no units code and the
@@ -3170,6 +3230,64 @@ mod tests {
         // where X was known, the same U is judged
         let known = "G00 X0 Z0\nG00 U600.\nG00 X-450.\n";
         assert_eq!(at(fanuc_lathe(), known, Rule::TravelExceeded), [(4, 5)]);
+    }
+
+    /// Review 48, F12: a lathe's U (W) whose value is not known (`U#1`) leaves X (Z) not
+    /// known, as a mill's `G91 X#1` does: X kept its old position, and a later absolute X
+    /// made a span from a place the tool never was (u1.nc: TG601 "X spans 600"). A plain U
+    /// after a known X is judged as before, and an increment run from the lost position
+    /// wider than the whole travel is still out of travel (issue 32).
+    #[test]
+    fn a_lathe_s_u_whose_value_is_not_known_leaves_x_not_known() {
+        let mut haas = fanuc_lathe();
+        haas.haas = true;
+        for (name, lathe) in [
+            ("fanuc", fanuc_lathe()),
+            ("haas", haas),
+            ("okuma", super::super::testing::okuma_lathe()),
+        ] {
+            // travel X -500 to 500: X was at 0+#1+600, not 600
+            let u = "G00 X0 Z0\nG00 U#1\nG00 U600.\nG00 X-450.\n";
+            assert_eq!(at(lathe.clone(), u, Rule::TravelExceeded), [], "{name}");
+            // the same U beside an X: X not known either
+            let xu = "G00 X0 Z0\nG00 X100. U#1\nG00 U600.\nG00 X-450.\n";
+            assert_eq!(at(lathe.clone(), xu, Rule::TravelExceeded), [], "{name}");
+            // a plain U after a known X: judged (X spans 600 to -450)
+            let plain = "G00 X0 Z0\nG00 U0\nG00 U600.\nG00 X-450.\n";
+            assert_eq!(
+                at(lathe.clone(), plain, Rule::TravelExceeded),
+                [(5, 5)],
+                "{name}"
+            );
+            // Z and W the same (Z -300 to 100)
+            let w = "G00 X0 Z0\nG00 W#1\nG00 W-300.\nG00 Z150.\n";
+            assert_eq!(at(lathe.clone(), w, Rule::TravelExceeded), [], "{name}");
+            let plain = "G00 X0 Z0\nG00 W0\nG00 W-300.\nG00 Z150.\n";
+            assert_eq!(
+                at(lathe.clone(), plain, Rule::TravelExceeded),
+                [(5, 5)],
+                "{name}"
+            );
+            // a run of U wider than X's whole travel after it: out of travel wherever it
+            // starts; one that fits says nothing
+            let run = "G00 X0 Z0\nG00 U#1\nG00 U600.\nG01 U500. F0.2\n";
+            assert_eq!(
+                at(lathe.clone(), run, Rule::TravelExceeded),
+                [(5, 5)],
+                "{name}"
+            );
+            let found = findings(lathe.clone(), &program(run), Rule::TravelExceeded);
+            assert!(
+                found[0].message.starts_with(
+                    "X moves over 1100 mm in 2 increments in a row (the last U500.) with its \
+                     start not known"
+                ),
+                "{name}: {}",
+                found[0].message
+            );
+            let fits = "G00 X0 Z0\nG00 U#1\nG00 U600.\nG01 U-500. F0.2\n";
+            assert_eq!(at(lathe.clone(), fits, Rule::TravelExceeded), [], "{name}");
+        }
     }
 
     /// Issue 32 (lathe48's lost TG601): an axis whose position is not known, moved by
