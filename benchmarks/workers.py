@@ -182,11 +182,14 @@ def instructions(argv: list[str], work: Path,
 # The driver of --phases: the command's entry point (tapegate.launch.main, the console
 # script's) with each file's work timed. A file's work is the function ordered_map runs
 # (a conversion's every file; a check's with -j 2 or more) or, for a check with one worker,
-# tapegate.checking._check_one. The times go to the file named by TAPEGATE_PHASES as
-# "first last exit busy-of-each-thread..." and a second line of each thread's CPU time in its
-# files (time.thread_time) at the exit (os._exit held until they are written).
+# tapegate.checking._check_one. PYTHONPATH (--build's checkout) is put before the current
+# folder, which "-c" puts first, as the console script's import has it. The times go to the
+# file named by TAPEGATE_PHASES as "first last exit busy-of-each-thread..." and a second line
+# of each thread's CPU time in its files (time.thread_time) at the exit (os._exit held until
+# they are written).
 PHASES = """\
 import os, sys, time, _thread
+sys.path[0:0] = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
 import tapegate.workers as workers
 import tapegate.checking as checking
 spans = []
