@@ -64,7 +64,12 @@ process's start to the first file (the interpreter, the imports, the profile, th
 listed) and from the last file's end to the exit; **work** is the rest. With the serial part S
 and the work W1 of one worker and W2 of N, the speed-up is (S + W1) / (S + W2), and the
 serial part a speed-up of 1.8 would allow is (W1 - 1.8 W2) / 0.8 (printed as "S for 1.8"):
-the arithmetic of a target the start-up bounds, in wall time on this machine.
+the arithmetic of a target the start-up bounds, in wall time on this machine. **CPU ms** is the
+CPU time of all the workers in their files (each thread's ``time.thread_time``), **wait ms**
+their busy time not on a CPU (the busy times' sum less the CPU's): a worker waiting for the
+GIL, or for a core. Against ``-j 1``, more CPU for the same files is the two cores slowing each
+other (their shared caches, the host); more waiting is the GIL's turns (on an idle machine,
+where no other process takes a core).
 
 Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
@@ -177,20 +182,25 @@ def instructions(argv: list[str], work: Path,
 # The driver of --phases: the command's entry point (tapegate.launch.main, the console
 # script's) with each file's work timed. A file's work is the function ordered_map runs
 # (a conversion's every file; a check's with -j 2 or more) or, for a check with one worker,
-# tapegate.checking._check_one. The times go to the file named by TAPEGATE_PHASES as
-# "first last busy-of-each-thread..." at the exit (os._exit held until they are written).
+# tapegate.checking._check_one. PYTHONPATH (--build's checkout) is put before the current
+# folder, which "-c" puts first, as the console script's import has it. The times go to the
+# file named by TAPEGATE_PHASES as "first last exit busy-of-each-thread..." and a second line
+# of each thread's CPU time in its files (time.thread_time) at the exit (os._exit held until
+# they are written).
 PHASES = """\
 import os, sys, time, _thread
+sys.path[0:0] = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
 import tapegate.workers as workers
 import tapegate.checking as checking
 spans = []
 def timing(func):
     def timed(*args, **kwargs):
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.thread_time()
         try:
             return func(*args, **kwargs)
         finally:
-            spans.append((_thread.get_ident(), start, time.perf_counter()))
+            spans.append((_thread.get_ident(), start, time.perf_counter(),
+                          time.thread_time() - cpu))
     return timed
 ordered_map = workers.ordered_map
 workers.ordered_map = lambda func, items, jobs, **kw: ordered_map(timing(func), items, jobs, **kw)
@@ -199,12 +209,14 @@ if sys.argv[sys.argv.index("-j") + 1] == "1":
 exit_now = os._exit
 def written(code=0):
     end = time.perf_counter()
-    busy = {}
-    for thread, start, stop in spans:
+    busy, cpu = {}, {}
+    for thread, start, stop, used in spans:
         busy[thread] = busy.get(thread, 0.0) + stop - start
+        cpu[thread] = cpu.get(thread, 0.0) + used
     with open(os.environ["TAPEGATE_PHASES"], "w") as out:
-        out.write(" ".join(map(repr, [min(s for _, s, _ in spans), max(e for _, _, e in spans),
+        out.write(" ".join(map(repr, [min(s[1] for s in spans), max(s[2] for s in spans),
                                       end, *busy.values()])))
+        out.write("\\n" + " ".join(map(repr, cpu.values())))
     exit_now(code)
 os._exit = written
 sys.argv[0] = "tapegate"
@@ -219,8 +231,9 @@ written(code or 0)
 
 def phases(argv: list[str], env: dict[str, str], work: Path) -> tuple[float, ...]:
     """(seconds from the start to the first file's work, the work, from the last file's end
-    to the driver's exit and the process's end, each worker's busy seconds...) of one command
-    (``argv`` without the ``tapegate`` command: its arguments) run by :data:`PHASES`."""
+    to the driver's exit and the process's end, the CPU seconds of every worker in its files,
+    each worker's busy seconds...) of one command (``argv`` without the ``tapegate`` command:
+    its arguments) run by :data:`PHASES`."""
     out = work / "phases"
     env = {**env, "TAPEGATE_PHASES": str(out)}
     start = time.perf_counter()
@@ -228,8 +241,9 @@ def phases(argv: list[str], env: dict[str, str], work: Path) -> tuple[float, ...
                    stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, check=False,
                    cwd=ROOT, env=env)
     end = time.perf_counter()
-    first, last, exited, *busy = (float(v) for v in out.read_text().split())
-    return (first - start, last - first, end - last, *busy)
+    times, cpu = out.read_text().split("\n")
+    first, last, exited, *busy = (float(v) for v in times.split())
+    return (first - start, last - first, end - last, sum(float(v) for v in cpu.split()), *busy)
 
 
 def main() -> int:
@@ -297,7 +311,8 @@ def main() -> int:
         width = max(len(label) for label, _ in builds)
         if args.phases:
             print(f"{'batch':<34} {'':{width}} {'-j':>3} {'to 1st ms':>9} {'work ms':>8} "
-                  f"{'end ms':>7} {'serial':>7} {'busy %':>11} {'work x':>6} "
+                  f"{'end ms':>7} {'serial':>7} {'busy %':>11} {'CPU ms':>7} {'wait ms':>7} "
+                  f"{'work x':>6} "
                   f"{'S for 1.8':>9} {'load':>9}")
         elif args.callgrind:
             print(f"{'batch':<34} {'':{width}} {'-j':>3} {'main G':>7} {'before':>7} "
@@ -324,15 +339,19 @@ def main() -> int:
                         own = parts[j]
                         to_first, span, to_end = (statistics.median(p[k] for p in own)
                                                   for k in range(3))
-                        busy = [statistics.median(p[3 + k] / p[1] for p in own
-                                                  if len(p) > 3 + k)
-                                for k in range(max(len(p) for p in own) - 3)]
+                        busy = [statistics.median(p[4 + k] / p[1] for p in own
+                                                  if len(p) > 4 + k)
+                                for k in range(max(len(p) for p in own) - 4)]
+                        # the workers' time in their files off the CPU: waiting for the GIL,
+                        # or put off a core
+                        waiting = statistics.median(sum(p[4:]) - p[3] for p in own)
                         shown = "/".join(f"{100 * b:.0f}" for b in busy)
                         needed = (one - 1.8 * span) / 0.8
                         print(f"{name:<34} {label:{width}} {j:>3} {1000 * to_first:>9.1f} "
                               f"{1000 * span:>8.1f} {1000 * to_end:>7.1f} "
                               f"{1000 * (to_first + to_end):>7.1f} {shown:>11} "
-                              f"{one / span:>6.2f} "
+                              f"{1000 * statistics.median(p[3] for p in own):>7.1f} "
+                              f"{1000 * waiting:>7.1f} {one / span:>6.2f} "
                               f"{1000 * needed if j > 1 else float('nan'):>9.1f} "
                               f"{load:>4.1f}-{load_after:<4.1f}", flush=True)
                 continue

@@ -28,6 +28,8 @@
 //! a Python string's lone surrogates (a name that is not UTF-8, decoded with `surrogateescape`)
 //! are written as Python writes them.
 
+use std::sync::OnceLock;
+
 use crate::check::Finding;
 use crate::rules::{Rule, Severity};
 
@@ -283,39 +285,19 @@ struct Folded {
     by_code: bool,
 }
 
-/// The report of one file's findings: the file's name and every rule's ID, severity and clause
-/// written once, as the format writes them, and laid out as [`write`] lays them out around a
-/// finding's message, line and column -- a finding is then those pieces, its message and its
-/// two numbers (where `write`'s two dozen pieces a finding cost about 800 instructions, each
-/// variable one a `memcpy` call).
-pub struct Writer {
-    format: Format,
-    file: Vec<u8>,
-    /// Each rule's bytes before a finding's message and after it: JSON, the members up to the
-    /// message's value, and from the clause on; text, from the column's colon up to the
-    /// message, and the clause.
-    rules: Vec<[Vec<u8>; 2]>,
-    /// The bytes before the line number: JSON, from the message's comma through the file's
-    /// member to the line's name; text, the file's name and its colon.
-    before_line: Vec<u8>,
-    /// The bytes between the line number and the column number.
-    between: Vec<u8>,
-    /// A folded report's counts, by [`Rule::index`] ([`Writer::folded`]); empty when every
-    /// finding is written.
-    fold: Vec<Folded>,
-    /// The counts of a rule about a code ([`Rule::about_a_code`]), by rule and the code its
-    /// finding names ([`crate::rules::subject`]), in the order met: a file names a few codes,
-    /// so they are looked up one by one, with no allocation a finding (a hash map's key
-    /// cost about 1,000 instructions a finding).
-    subjects: Vec<(Rule, String, Folded)>,
-}
-
-impl Writer {
-    /// A writer for the findings of the file named `file` (UTF-16 code units, as
-    /// [`Format::field_units`] takes them).
-    pub fn new(format: Format, file: &[u16]) -> Writer {
-        let mut name = Vec::new();
-        format.field_units(&mut name, file);
+/// Each rule's bytes before a finding's message and after it in `format` ([`Writer`]'s
+/// `rules`): made once a process for each format, not once a file. They name no file, and a
+/// writer is made for every file of a batch: made a writer at a time, they were 250,000
+/// instructions a file (267 JSON strings and 180 joins), a quarter of what `check -j` did per
+/// file with the GIL held (docs/benchmarks.md, "the GIL or the caches").
+fn rule_pieces(format: Format) -> &'static [[Vec<u8>; 2]] {
+    static PIECES: [OnceLock<Vec<[Vec<u8>; 2]>>; 3] = [const { OnceLock::new() }; 3];
+    let index = match format {
+        Format::Text => 0,
+        Format::Json => 1,
+        Format::JsonLines => 2,
+    };
+    PIECES[index].get_or_init(|| {
         let field = |text: &str| {
             let mut field = Vec::new();
             format.field(&mut field, text);
@@ -325,7 +307,7 @@ impl Writer {
             Format::Json => (b",\n    {\n      ", b",\n      ", b"\n    }"),
             Format::JsonLines | Format::Text => (b"{", b", ", b"}\n"),
         };
-        let rules = Rule::ALL
+        Rule::ALL
             .iter()
             .map(|rule| {
                 let [id, severity, clause] =
@@ -351,7 +333,48 @@ impl Writer {
                     ],
                 }
             })
-            .collect();
+            .collect()
+    })
+}
+
+/// The report of one file's findings: the file's name and every rule's ID, severity and clause
+/// written once, as the format writes them, and laid out as [`write`] lays them out around a
+/// finding's message, line and column -- a finding is then those pieces, its message and its
+/// two numbers (where `write`'s two dozen pieces a finding cost about 800 instructions, each
+/// variable one a `memcpy` call).
+pub struct Writer {
+    format: Format,
+    file: Vec<u8>,
+    /// Each rule's bytes before a finding's message and after it: JSON, the members up to the
+    /// message's value, and from the clause on; text, from the column's colon up to the
+    /// message, and the clause ([`rule_pieces`]: one table a format, shared by every writer).
+    rules: &'static [[Vec<u8>; 2]],
+    /// The bytes before the line number: JSON, from the message's comma through the file's
+    /// member to the line's name; text, the file's name and its colon.
+    before_line: Vec<u8>,
+    /// The bytes between the line number and the column number.
+    between: Vec<u8>,
+    /// A folded report's counts, by [`Rule::index`] ([`Writer::folded`]); empty when every
+    /// finding is written.
+    fold: Vec<Folded>,
+    /// The counts of a rule about a code ([`Rule::about_a_code`]), by rule and the code its
+    /// finding names ([`crate::rules::subject`]), in the order met: a file names a few codes,
+    /// so they are looked up one by one, with no allocation a finding (a hash map's key
+    /// cost about 1,000 instructions a finding).
+    subjects: Vec<(Rule, String, Folded)>,
+}
+
+impl Writer {
+    /// A writer for the findings of the file named `file` (UTF-16 code units, as
+    /// [`Format::field_units`] takes them).
+    pub fn new(format: Format, file: &[u16]) -> Writer {
+        let mut name = Vec::new();
+        format.field_units(&mut name, file);
+        let rules = rule_pieces(format);
+        let next: &[u8] = match format {
+            Format::Json => b",\n      ",
+            Format::JsonLines | Format::Text => b", ",
+        };
         let (before_line, between) = match format {
             Format::Text => ([&name[..], b":"].concat(), b":".to_vec()),
             Format::Json | Format::JsonLines => (

@@ -99,7 +99,10 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
 
 #[pyclass(module = "formats._core")]
 pub struct Checker {
-    inner: check::Checker,
+    /// Boxed: the core's checker is large, and a checker is made for every file of a batch,
+    /// with the GIL held; inline, it was copied whole 6 times on its way into the Python
+    /// object (52,000 instructions a file; docs/benchmarks.md, "the GIL or the caches").
+    inner: Box<check::Checker>,
     file: PyObject,
     /// Each rule's ID, severity and clause as the Python strings a finding holds, by
     /// [`Rule::index`] ([`rule_strings`]).
@@ -298,11 +301,11 @@ impl Checker {
             None => None,
         };
         let rules = rule_strings(py);
-        let mut inner = check::Checker::new(
+        let mut inner = Box::new(check::Checker::new(
             machine.inner.check.clone(),
             Selection::new(&select, &ignore),
             record_path,
-        );
+        ));
         inner.keep_stats(stats);
         if let Ok(name) = file.to_str() {
             inner.file_name(name);
