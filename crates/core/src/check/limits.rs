@@ -2465,7 +2465,7 @@ impl Checker {
     /// TG604, TG605) adds where the limit is the built-in profile's sample machine
     /// ([`Checker::report_limit`]); None where it is the user's own, or of another rule.
     #[cold]
-    fn sample_hint(&self, rule: Rule) -> Option<&'static str> {
+    pub(super) fn sample_hint(&self, rule: Rule) -> Option<&'static str> {
         let limit = match rule {
             Rule::TravelExceeded => super::SAMPLE_TRAVEL,
             Rule::FeedTooHigh | Rule::FeedClamped => super::SAMPLE_FEED,

@@ -509,7 +509,9 @@ impl Checker {
         }
         if let Some((line, key, leaves)) = self.jump_to_note.take() {
             if self.jumps_pending.len() >= JUMPS_PENDING {
-                self.jumps_pending.remove(0);
+                // (the oldest a run met goes first: review 49, R4)
+                let oldest = self.jumps_pending.iter().position(|t| !t.via.is_empty());
+                self.jumps_pending.remove(oldest.unwrap_or(0));
             }
             let run = self.run_of();
             self.jumps_pending.push(Taken {
@@ -576,6 +578,8 @@ impl Checker {
         run.record_path = false;
         run.line_walks_of = (0, 0);
         run.after_block = false;
+        // (the sample machine's hint is the file's to add, once: Checker::run_finding)
+        run.limits_hint_said = true;
         run
     }
 
@@ -596,9 +600,15 @@ impl Checker {
         let (arriving, kept): (Vec<Taken>, Vec<Taken>) =
             pending.into_iter().partition(|t| t.key == key);
         self.jumps_pending = kept;
+        // (the file's own jumps count against the bound; the runs a run met take the places
+        // left, never one of theirs: review 49, R4)
+        let (mut arriving, met): (Vec<Taken>, Vec<Taken>) =
+            arriving.into_iter().partition(|t| t.via.is_empty());
         if arriving.len() > RUNS {
             return;
         }
+        let room = RUNS - arriving.len();
+        arriving.extend(met.into_iter().take(room));
         for mut taken in arriving {
             let differs = taken
                 .run
@@ -656,14 +666,27 @@ impl Checker {
                     continue;
                 }
                 if self.jumps_pending.len() >= JUMPS_PENDING {
-                    self.jumps_pending.remove(0);
+                    // (a met run pushes out only another met run, never the file's own
+                    // jump's: review 49, R4)
+                    match self.jumps_pending.iter().position(|t| !t.via.is_empty()) {
+                        Some(oldest) => {
+                            self.jumps_pending.remove(oldest);
+                        }
+                        None => continue,
+                    }
                 }
                 met.via.clone_from(&taken.via);
                 met.via.push(taken.line);
                 met.blocks = taken.blocks;
                 self.jumps_pending.push(met);
             }
-            taken.blocks < RUN_BLOCKS
+            // (a block that surely leaves -- M02/M30, M99, RET, a GOTO with no condition, one
+            // whose condition the run's values make true, back as forward -- ends the run:
+            // what follows it in the file is not where the run goes; review 49, R1 and R2)
+            let leaves = taken.run.cut_block == taken.run.stats.blocks
+                || (forward.is_none() && taken.run.surely_jumps(b));
+            !leaves
+                && taken.blocks < RUN_BLOCKS
                 && taken
                     .run
                     .params
@@ -725,6 +748,31 @@ impl Checker {
         }
     }
 
+    /// In a run, whether block `b` surely jumps (back, or forward where the file's reading
+    /// does not say so): a `GOTO` with no condition, or an IF whose condition the run's
+    /// values make true.
+    fn surely_jumps(&self, b: &BlockView<'_>) -> bool {
+        b.statements.iter().any(|&(_, kind, text)| {
+            if kind != Kind::Flow {
+                return false;
+            }
+            if self.config.family == Family::MacroB
+                && crate::statement::conditional_assignment(text).is_some()
+            {
+                return false;
+            }
+            let upper = text.to_ascii_uppercase();
+            let jumps = if self.config.family == Family::MacroB {
+                super::targets::goto_words(&upper).is_some()
+            } else {
+                super::targets::sinumerik_jump(&upper).is_some()
+            };
+            jumps
+                && (!upper.trim_ascii_start().starts_with(b"IF")
+                    || self.condition_known(&upper) == Some(true))
+        })
+    }
+
     /// [`Checker::runs_read`]: finding `f` of the run `taken` in block `b`.
     fn run_finding(&mut self, taken: &Taken, b: &BlockView<'_>, f: super::Finding) {
         if !matches!(
@@ -776,6 +824,15 @@ impl Checker {
             b.words[i].token(),
             if taken.via.is_empty() { "is" } else { "are" },
         );
+        // (the file's first finding against the sample machine says so, a run's too, once:
+        // review 49, R5)
+        let message = match self.sample_hint(f.rule) {
+            Some(hint) if !self.limits_hint_said => {
+                self.limits_hint_said = true;
+                format!("{message}{hint}")
+            }
+            _ => message,
+        };
         self.report(f.rule, message, f.line, f.column);
     }
 
@@ -1938,10 +1995,11 @@ mod tests {
         let found = travel(taken);
         assert_eq!(found.len(), 1, "{found:?}");
         assert_eq!((found[0].line, found[0].column), (6, 8));
+        // (the sample machine's hint after it, as at the file's own first finding)
         assert!(
-            found[0].message.ends_with(
+            found[0].message.contains(
                 "; X#1 is -700 where the jump of line 4 is taken (read from the values the \
-                 parameters hold there)"
+                 parameters hold there) (the built-in profile's limits"
             ),
             "{}",
             found[0].message
@@ -2193,6 +2251,74 @@ mod tests {
         assert!(spans[0]
             .message
             .contains("where the jumps of lines 4 and 7 are taken"));
+    }
+
+    /// Review 49: a run met by another keeps no place of the file's own jumps (R4); a run
+    /// ends at a block that surely leaves -- M30, M99, a jump back whose condition its values
+    /// make true (R1, R2); the sample machine's hint said once, a run's finding or not (R5).
+    #[test]
+    fn a_run_ends_where_the_control_leaves_and_the_file_keeps_its_own() {
+        use super::super::testing::findings;
+        let config = || {
+            let mut config = of_family(Family::MacroB);
+            config.facts.program_number = Some(b'O');
+            config
+        };
+        let spans = |body: &str| -> Vec<(usize, String)> {
+            findings(config(), &program(body), Rule::TravelExceeded)
+                .into_iter()
+                .map(|f| (f.line, f.message))
+                .collect()
+        };
+        // R4 (ev3.nc): four jumps the run of line 4's meets fill the places; line 4's own
+        // run still arrives at N100 and is judged there
+        let ev3 = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO100\n#1=0\n#7=1.\nIF[#3EQ1]GOTO10\n\
+                   #7=2.\nIF[#4EQ1]GOTO10\n#7=0\nN10 G0 Y0\n#8=1.\nIF[#6EQ1]GOTO20\n#8=2.\n\
+                   IF[#9EQ1]GOTO30\nN20 G0 Y0\nN30 G0 Y0\nN100 G0 X#1";
+        let found = spans(ev3);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0]
+            .1
+            .contains("X#1 is -700 where the jump of line 4 is taken"));
+        // R4 (ev4.nc): three met runs and the file's own arrive at N20: the file's is judged
+        let ev4 = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO20\n#1=0\n#7=1.\nIF[#3EQ1]GOTO10\n\
+                   #7=2.\nIF[#4EQ1]GOTO10\n#7=3.\nIF[#5EQ1]GOTO10\n#7=0\nN10 G0 Y0\n\
+                   IF[#6EQ1]GOTO20\nN20 G0 X#1";
+        let found = spans(ev4);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0].1.contains("where the jump of line 4 is taken"));
+        // R1 (e8.nc, e9.nc): the run of line 4's jump ends at the M99 or M30 after its target;
+        // the N20 after it is not where the control goes with #1 = -700
+        for end in ["M99", "M30"] {
+            let body = format!(
+                "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\n{end}\nN20 G0 X#1"
+            );
+            assert_eq!(spans(&body), [], "{end}");
+        }
+        // ... while a jump over the M30 is followed (e4.nc)
+        let over = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\n\
+                    IF[#3EQ1]GOTO20\nM30\nN20 G0 X#1";
+        let found = spans(over);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0]
+            .1
+            .contains("where the jumps of lines 4 and 7 are taken"));
+        // R2 (b1.nc): a jump back whose condition the run's values make true leaves; the
+        // block after it is not the run's
+        let b1 = "G0 X400. Y0\n#1=-700.\n#5=1\nIF[#2EQ1]GOTO30\n#1=0\n#5=0\nN20 #1=0\n\
+                  #5=0\nN30 IF[#5EQ1]GOTO20\nG0 X#1";
+        assert_eq!(spans(b1), []);
+        // R5 (hh1.nc): the run's TG601 carries the sample machine's hint, and no later one
+        let hh1 = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 X#1\nG0 X-700.";
+        let found = spans(hh1);
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!(found[0].1.contains("where the jump of line 4 is taken"));
+        let hinted = found
+            .iter()
+            .filter(|(_, m)| m.contains("typical machine of the family"))
+            .count();
+        assert_eq!(hinted, 1, "{found:?}");
+        assert!(found[0].1.contains("typical machine of the family"));
     }
 
     /// Review 48 F15: on LinuxCNC every setting of a line reads the values from before it
