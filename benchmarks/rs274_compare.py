@@ -530,6 +530,21 @@ SEEDED: list[tuple[str, str, int, str]] = [
      "G91\no<s> call\nG53 G0 X0\nM2\n", 0, "accepted"),
     ("G53 after a sub whose M73 restores G91", "o<s> sub\nM73\nG90 G0 X1\no<s> endsub\n"
      "G21 G17 G90 G94\nG91\no<s> call\nG53 G0 X0\nM2\n", 8, "error"),
+    # review 49a, F1 and F6: G53 where the distance mode is not known is not refused
+    ("G53 after a sub whose G91 is in a condition", "G21 G90\no<s> sub\no1 if [0]\nG91\n"
+     "o1 endif\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after a call in a condition not run", "G21 G90\no<s> sub\nG91\no<s> endsub\n#5=0\n"
+     "o1 if [#5 eq 1]\no<s> call\no1 endif\nG53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after a sub whose G91 follows a return in a condition", "G21 G90\no<s> sub\n"
+     "o1 if [#1 gt 0]\no<s> return\no1 endif\nG91\no<s> endsub\no<s> call [1]\n"
+     "G53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after a sub whose G91 follows its return", "G21 G90\no<s> sub\nG90\no<s> return\n"
+     "G91\no<s> endsub\nG91\no<s> call\nG53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after a sub whose G90 follows its return", "G21 G90\no<s> sub\nG91\no<s> return\n"
+     "G90\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", 8, "error"),
+    ("G53 after a G91 in a condition not run", "G21 G90\no1 if [0]\nG91\no1 endif\n"
+     "G53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after M72 restores G90", "G21 G90\nM70\nG91\nM72\nG53 G0 Z0\nM2\n", 0, "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -619,15 +619,27 @@ impl Checker {
             if p.ends.is_none() && !p.ends_lost {
                 return; // (no G90/G91 of its own: the caller's mode stays)
             }
+            // (a call inside a condition or loop of the main program may not run: the mode
+            // after it not known; review 49a, F1)
             if flags & super::structure::BODY_MODE_UNSURE != 0
                 || p.ends_lost
                 || p.body.unfollowed.is_some()
+                || !self.linuxcnc_open_flow.is_empty()
             {
                 let name = p.body.name.clone();
                 self.call_mode_lost(token, (line, 1), &name);
                 return;
             }
             if flags & super::structure::BODY_RESTORES != 0 {
+                return;
+            }
+            // (a return outside its conditions and loops ends the call: its last G90/G91
+            // before it is in force, or the caller's where it wrote none: review 49a, F1)
+            if flags & super::structure::BODY_RETURNED != 0 {
+                if flags & super::structure::BODY_DISTANCE != 0 {
+                    self.machine.state.incremental = flags & super::structure::BODY_G91 != 0;
+                    self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
+                }
                 return;
             }
         }
@@ -663,6 +675,7 @@ impl Checker {
             return;
         }
         self.machine.state.incremental = true;
+        self.linuxcnc_distance_unsure = true;
         self.mode_lost_codes = Some(self.machine.distance_codes);
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
             early.lost_codes = Some(self.machine.distance_codes);
@@ -674,7 +687,8 @@ impl Checker {
         let message = if self.config.family == crate::lex::Family::LinuxCnc {
             format!(
                 "{token} runs {name}, whose G90/G91 after its return the checker does not know \
-                 (it writes one inside a condition or loop, saves, invalidates or restores the \
+                 (it writes one inside a condition or loop or after a return inside one, or \
+                 the call is inside one and may not run, or it saves, invalidates or restores the \
                  modal state with M70, M71, M72, or M73 after its own G90/G91 -- rs274 restores \
                  at the return the state M73 saved, interp_o_word.cc leave_context -- or calls \
                  a subroutine the checker does not follow there): the positions after this call \
@@ -1437,6 +1451,64 @@ mod tests {
         // a definition's G91 read where it stands is not the main program's after it
         let definition = "G21 G90\nG0 X-250 Y0\no<s> sub\nG91 G0 X1\no<s> endsub\nG0 X400\nM2\n";
         assert_eq!(fired(lcnc(), definition, Rule::TravelExceeded), [(6, 4)]);
+    }
+
+    /// Review 49a, F1, F6: G53 is refused as incremental ("Cannot use g53 incremental") only
+    /// where the checker knows G91 is in force. Not after a call whose G90/G91 after its
+    /// return it does not know (it says so, TG140), a call inside a condition or loop (it may
+    /// not run), a body's G91 after a return inside a condition, a G91 inside the main
+    /// program's `o1 if [0]`, or M72 restoring M70's G90; each run to its M2 by `rs274 -g`. A
+    /// body's top-level return ends what its G90/G91 say: `G91` / `o<s> return` / `G90`
+    /// returns in G91, which rs274 refuses.
+    #[test]
+    fn linuxcnc_g53_is_not_refused_where_the_distance_mode_is_not_known() {
+        let refused = |text: &str| {
+            fired(lcnc(), text, Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| f.0)
+                .collect::<Vec<_>>()
+        };
+        let g53 = "G53 G0 Z0\nM2\n";
+        let runs = [
+            // e1: the body's G91 in a condition: not known after the call
+            "G21 G90\no<s> sub\no1 if [0]\nG91\no1 endif\no<s> endsub\no<s> call\n",
+            // e3, c15, e4, c16, e6: the call may not run
+            "G21 G90\no<s> sub\nG91\no<s> endsub\n#5=0\no1 if [#5 eq 1]\no<s> call\no1 endif\n",
+            "G21 G90\no<s> sub\nG91\no<s> endsub\no1 if [0]\no<s> call\no1 endif\n",
+            "G21 G90\no<s> sub\nG91\no<s> endsub\no1 while [0]\no<s> call\no1 endwhile\n",
+            "G21 G90\no<s> sub\nG91\no<s> endsub\no1 repeat [0]\no<s> call\no1 endrepeat\n",
+            "G21 G90\no<s> sub\nG91\no<s> endsub\no1 if [0]\no<s> call\no1 else\nG0 X1\n\
+             o1 endif\n",
+            // e5: a return inside a condition before the body's G91
+            "G21 G90\no<s> sub\no1 if [#1 gt 0]\no<s> return\no1 endif\nG91\no<s> endsub\n\
+             o<s> call [1]\n",
+            // k3: a G91 after the body's own return never runs
+            "G21 G90\no<s> sub\nG90\no<s> return\nG91\no<s> endsub\nG91\no<s> call\n",
+            // f1: the main program's G91 in a condition that does not run
+            "G21 G90\no1 if [0]\nG91\no1 endif\n",
+            // m2: M72 restores the G90 M70 saved
+            "G21 G90\nM70\nG91\nM72\n",
+        ];
+        for program in runs {
+            let text = format!("{program}{g53}");
+            assert_eq!(refused(&text), Vec::<usize>::new(), "{text}");
+        }
+        // k4: the G90 after the return never runs; the body's G91 stays
+        let k4 = format!("G21 G90\no<s> sub\nG91\no<s> return\nG90\no<s> endsub\no<s> call\n{g53}");
+        assert_eq!(refused(&k4), [8]);
+        // the mode known again at a G91 the main program surely runs, or in G53's own block
+        for (after, line) in [("G91\nG53 G0 Z0\nM2\n", 6), ("G91 G53 G0 Z0\nM2\n", 5)] {
+            let text = format!("G21 G90\no1 if [0]\nG91\no1 endif\n{after}");
+            assert_eq!(refused(&text), [line], "{text}");
+        }
+        // M72 without a state M70 saved outside a condition: not known, not refused
+        let unsure = format!("G21 G90\no1 if [0]\nM70\no1 endif\nG91\nM72\n{g53}");
+        assert_eq!(refused(&unsure), Vec::<usize>::new());
+        // M71 invalidates the saved state (not known at M72); an M70 of G91 restores G91
+        let invalid = format!("G21 G90\nM70\nM71\nG91\nM72\n{g53}");
+        assert_eq!(refused(&invalid), Vec::<usize>::new());
+        let saved_g91 = format!("G21 G91\nM70\nG90\nM72\n{g53}");
+        assert_eq!(refused(&saved_g91), [5]);
     }
 
     /// Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is

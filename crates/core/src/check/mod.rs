@@ -1088,6 +1088,17 @@ pub struct Checker {
     /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
     /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
+    /// LinuxCNC: the main program's distance mode (G90/G91) not known here: after a call
+    /// whose G90/G91 after its return the checker does not know ([`Checker::call_mode_lost`]),
+    /// a call of a subroutine that writes one made inside a condition or loop (it may not
+    /// run), a G90/G91 inside one, or an M72 whose saved state is not known; until a G90/G91
+    /// the main program surely runs. G53 is not refused as incremental meanwhile (review
+    /// 49a, F1, F6: rs274 runs it where the mode is G90).
+    linuxcnc_distance_unsure: bool,
+    /// LinuxCNC: the main program's distance mode M70 saved (`Some(incremental)`), where it
+    /// was made outside any condition or loop; M71 invalidates it, M72 restores it (LinuxCNC
+    /// M-codes, "M70 Save Modal State", "M72 Restore Modal State"; review 49a, F6).
+    linuxcnc_m70_saved: Option<bool>,
     /// LinuxCNC: the subroutines defined so far in this file (their `o_label`), each with
     /// whether its body may set the feed mode or end the program (a G93/G94/G95, an M2/M30,
     /// M72, M98/M99, or a G or M code whose value is not known here) and the subroutines it
@@ -1322,6 +1333,8 @@ impl Checker {
             linuxcnc_o_labels: Vec::new(),
             linuxcnc_subs_defined: Vec::new(),
             linuxcnc_mode_unsure: false,
+            linuxcnc_distance_unsure: false,
+            linuxcnc_m70_saved: None,
             linuxcnc_bodies: Vec::new(),
             linuxcnc_body_named: HashSet::new(),
             linuxcnc_body_unassigned: Vec::new(),

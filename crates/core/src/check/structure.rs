@@ -297,6 +297,8 @@ impl Checker {
         self.linuxcnc_o_labels.clear();
         self.linuxcnc_subs_defined.clear();
         self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_distance_unsure = false;
+        self.linuxcnc_m70_saved = None;
         self.linuxcnc_bodies.clear();
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
@@ -1831,8 +1833,19 @@ impl Checker {
                 &[2.0, 30.0, 72.0, 98.0, 99.0]
             };
             body.1 |= value.is_none_or(|v| codes.contains(&v));
-            // (the distance mode it returns in: its own G90/G91, M73's restore, F16)
-            let flow = !self.linuxcnc_definition_flow.is_empty();
+            // (the distance mode it returns in: its own G90/G91, M73's restore, F16; none
+            // after a return outside its conditions and loops, which ends the call, and not
+            // known after one inside them: review 49a, F1)
+            if body.3 & BODY_RETURNED != 0 {
+                continue;
+            }
+            let flow = !self.linuxcnc_definition_flow.is_empty() || body.3 & BODY_MAY_RETURN != 0;
+            if w.letter == b'G' && matches!(value, Some(90.0 | 91.0)) && !flow {
+                body.3 &= !BODY_G91;
+                if value == Some(91.0) {
+                    body.3 |= BODY_G91;
+                }
+            }
             body.3 |= match (w.letter, value) {
                 (_, None) => BODY_MODE_UNSURE,
                 (b'G', Some(90.0 | 91.0)) if flow => BODY_MODE_UNSURE,
@@ -1850,6 +1863,14 @@ impl Checker {
                     Some(b"return") => {}
                     _ => body.1 = true,
                 }
+            } else if kind == Kind::Flow
+                && crate::statement::o_keyword(text).as_deref() == Some(b"return".as_slice())
+            {
+                body.3 |= if self.linuxcnc_definition_flow.is_empty() {
+                    BODY_RETURNED
+                } else {
+                    BODY_MAY_RETURN
+                };
             }
         }
     }
@@ -2802,6 +2823,13 @@ pub(super) const BODY_RESTORES: u8 = 2;
 /// of it, an M73 after its own G90/G91, an M70, M71 or M72 (a state saved, invalidated or
 /// restored), or a G or M code whose value is not known here.
 pub(super) const BODY_MODE_UNSURE: u8 = 4;
+/// A `return` outside its conditions and loops: the call ends there, what follows it does
+/// not run (rs274 -g: `G91` / `o<s> return` / `G90` returns in G91; review 49a, F1).
+pub(super) const BODY_RETURNED: u8 = 8;
+/// A `return` inside a condition or loop of it: a G90/G91 after it may not run.
+pub(super) const BODY_MAY_RETURN: u8 = 16;
+/// Its last G90/G91 outside its conditions and loops (before a return ends it) is G91.
+pub(super) const BODY_G91: u8 = 32;
 
 /// An o-word label's name as rs274ngc keys it (interp_read.cc `read_o`: a `<name>`'s text,
 /// a number's `%d`): `o100` and `o<100>` are `100`.
