@@ -1076,12 +1076,14 @@ pub struct Checker {
     /// (interp_o_word.cc `control_save_offset`: `if`, `while`, `repeat`, `do`), by their name
     /// without `o` and `<>`, with their keyword's first letter, their line, and whether it
     /// surely ran (opened at the top of the main program): a second of the label is refused
-    /// as rs274 refuses it ("duplicate O-word label"; review 48, F19).
-    linuxcnc_o_labels: Vec<(Vec<u8>, u8, usize, bool)>,
+    /// as rs274 refuses it ("duplicate O-word label"; review 48, F19). Keyed by the name:
+    /// looked up at every condition and loop (a list searched in turn made a program of
+    /// 80,000 labels quadratic: review 49a, F5).
+    linuxcnc_o_labels: HashMap<Vec<u8>, (u8, usize, bool)>,
     /// LinuxCNC: the subroutines the main program surely defines (at its top, before its
     /// end), by name without `o` and `<>`, and their lines: a second definition of one is
-    /// rs274's "redefining sub" (review 48, F19).
-    linuxcnc_subs_defined: Vec<(Vec<u8>, usize)>,
+    /// rs274's "redefining sub" (review 48, F19). Keyed by the name (review 49a, F5).
+    linuxcnc_subs_defined: HashMap<Vec<u8>, usize>,
     /// LinuxCNC: the feed mode in force may be another than the lines in their order give:
     /// after a call (the subroutine may set it; with M73 it restores the caller's) or a
     /// G93/G94/G95 inside a condition or loop, until a G93/G94/G95 the main program runs
@@ -1330,8 +1332,8 @@ impl Checker {
             linuxcnc_if_ends: Vec::new(),
             linuxcnc_open_at: Vec::new(),
             linuxcnc_flow_assigned: Vec::new(),
-            linuxcnc_o_labels: Vec::new(),
-            linuxcnc_subs_defined: Vec::new(),
+            linuxcnc_o_labels: HashMap::new(),
+            linuxcnc_subs_defined: HashMap::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_distance_unsure: false,
             linuxcnc_m70_saved: None,
