@@ -710,6 +710,31 @@ mod tests {
         assert_eq!(fired(repeatable, &text, Rule::WordRepeated), []);
     }
 
+    /// TG133's message, made without the formatter (a count under ten as one digit, ten and
+    /// more by `to_string`): the text held for 2, 9 and 10 G words (review 49a, F7).
+    #[test]
+    fn several_g_words_are_counted_in_the_message() {
+        let said = |body: &str| {
+            findings(iso_mill(), &program(body), Rule::SeveralGWords)
+                .into_iter()
+                .map(|f| (f.line, f.column, f.message))
+                .collect::<Vec<_>>()
+        };
+        let text = |n: usize| format!("{n} G words in one block; Annex D recommends one");
+        assert_eq!(said("G17 G01 X1. F100."), [(2, 1, text(2))]);
+        let nine = "G17 G21 G40 G49 G80 G90 G94 G54 G01 X1. F100.";
+        assert_eq!(said(nine), [(2, 1, text(9))]);
+        assert_eq!(said(&format!("X1. {nine} G17")), [(2, 5, text(10))]);
+        assert_eq!(
+            said(&format!("{nine} G17 G17 G17")),
+            [(
+                2,
+                1,
+                "12 G words in one block; Annex D recommends one".to_string()
+            )]
+        );
+    }
+
     #[test]
     fn several_g_words_and_unclassified_addresses() {
         assert_eq!(at("G17 G01 X1. F100.", Rule::SeveralGWords), [(2, 1)]);
