@@ -2271,6 +2271,15 @@ impl Checker {
             self.linuxcnc_nurbs_position(b, &before);
         }
         self.programmed_forms(b, &before);
+        // (LinuxCNC: the main program's distance mode not known after a G90/G91 in a
+        // condition or loop, M70's restored by M72: review 49a, F1, F6; state, not a rule)
+        if self.config.family == Family::LinuxCnc
+            && !self.motion_only
+            && self.letters & (bit(b'G') | bit(b'M')) != 0
+            && self.open_definition.is_none()
+        {
+            self.linuxcnc_distance_modal(b);
+        }
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
         // the tests', holds them to leaving it as they found it)

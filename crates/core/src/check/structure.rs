@@ -1809,6 +1809,56 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC, a block `b` of the main program: its G90/G91 makes the distance mode known
+    /// (`Checker::linuxcnc_distance_unsure`) where no condition or loop is open, not known
+    /// where one is (it may not run: `o1 if [0]` / `G91` / `o1 endif` leaves G90, rs274 -g);
+    /// M70 saves the mode (outside a condition or loop), M71 invalidates the saved state, M72
+    /// restores it, or makes the mode not known where the saved one is not (LinuxCNC M-codes,
+    /// "M70 Save Modal State", "M72 Restore Modal State"; review 49a, F6: `M70` / `G91` /
+    /// `M72` / `G53 G0 Z0` runs). rs274 runs M70-M72 before the block's G90/G91: a state
+    /// saved, or restored and then set again, with one in the block is not followed; a code
+    /// written by a parameter is not known.
+    pub(super) fn linuxcnc_distance_modal(&mut self, b: &BlockView<'_>) {
+        let flow = !self.linuxcnc_open_flow.is_empty();
+        let code = |w: &Word<'_>| {
+            if !w.expression.is_empty() || !w.index.is_empty() {
+                return None;
+            }
+            std::str::from_utf8(w.number).ok()?.parse::<f64>().ok()
+        };
+        let (mut distance, mut unread) = (false, false);
+        let mut ms = [false; 3];
+        for w in b.words {
+            match (w.letter, code(w)) {
+                (b'G', Some(90.0 | 91.0)) => distance = true,
+                // (a G code not known here: perhaps G90 or G91)
+                (b'G', None) => unread = true,
+                (b'M', Some(m @ (70.0 | 71.0 | 72.0))) => ms[m as usize - 70] = true,
+                _ => {}
+            }
+        }
+        if distance || unread {
+            self.linuxcnc_distance_unsure = flow || unread;
+        }
+        if ms[0] {
+            self.linuxcnc_m70_saved = (!flow && !distance && !self.linuxcnc_distance_unsure)
+                .then_some(self.machine.state.incremental);
+        }
+        if ms[1] {
+            self.linuxcnc_m70_saved = None;
+        }
+        if ms[2] && !distance {
+            match self.linuxcnc_m70_saved.filter(|_| !flow) {
+                Some(incremental) => {
+                    self.machine.state.incremental = incremental;
+                    self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
+                    self.linuxcnc_distance_unsure = false;
+                }
+                None => self.linuxcnc_distance_unsure = true,
+            }
+        }
+    }
+
     /// LinuxCNC: what a definition's body does to the feed mode ([`Checker::linuxcnc_bodies`]):
     /// its `sub` line opens an entry, each line of its body adds to it.
     fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {

@@ -824,12 +824,6 @@ impl Checker {
                 self.linuxcnc_definition_mode_unsure = !self.linuxcnc_definition_flow.is_empty();
             }
         }
-        // the distance mode known again where the main program sets it unconditionally,
-        // not known after one set in a condition or loop (review 49a, F1), and M70's state
-        // restored by M72 (F6)
-        if self.open_definition.is_none() {
-            self.linuxcnc_distance_modal(codes, ms);
-        }
         // (LinuxCNC 2.9's M98 runs a FANUC-style subprogram, which may set another mode)
         if ms.contains(&98) {
             self.linuxcnc_mode_unsure = true;
@@ -1067,43 +1061,6 @@ impl Checker {
             }
         }
         unsettles
-    }
-
-    /// LinuxCNC, the main program's block of G codes `codes` (tenths) and M codes `ms`: its
-    /// G90/G91 makes the distance mode known (`Checker::linuxcnc_distance_unsure`) where no
-    /// condition or loop is open, not known where one is (it may not run: `o1 if [0]` /
-    /// `G91` / `o1 endif` leaves G90, rs274 -g); M70 saves the mode (outside a condition or
-    /// loop), M71 invalidates the saved state, M72 restores it, or makes the mode not known
-    /// where the saved one is not (LinuxCNC M-codes, "M70 Save Modal State", "M72 Restore
-    /// Modal State"; review 49a, F6: `M70` / `G91` / `M72` / `G53 G0 Z0` runs).
-    fn linuxcnc_distance_modal(&mut self, codes: &[i64], ms: &[i64]) {
-        let flow = !self.linuxcnc_open_flow.is_empty();
-        // (rs274 runs M70-M72 before the block's G90/G91: the state saved, or restored and
-        // then set again, with one in the block is not followed)
-        let distance = codes.iter().any(|&c| c == 900 || c == 910);
-        if distance {
-            self.linuxcnc_distance_unsure = flow;
-        }
-        for &m in ms {
-            match m {
-                70 => {
-                    self.linuxcnc_m70_saved =
-                        (!flow && !distance && !self.linuxcnc_distance_unsure)
-                            .then_some(self.machine.state.incremental);
-                }
-                71 => self.linuxcnc_m70_saved = None,
-                72 if distance => {}
-                72 => match self.linuxcnc_m70_saved.filter(|_| !flow) {
-                    Some(incremental) => {
-                        self.machine.state.incremental = incremental;
-                        self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
-                        self.linuxcnc_distance_unsure = false;
-                    }
-                    None => self.linuxcnc_distance_unsure = true,
-                },
-                _ => {}
-            }
-        }
     }
 
     /// A plain move of [`Checker::linuxcnc_refusals`] found without its word loop, from the
