@@ -71,6 +71,7 @@ BOTH = [
     # TG412: rs274's own refusals
     "G53 under G2",
     "G53 after a sub whose M73 restores G91",
+    "G53 after a sub whose G90 follows its return",
     "G83 without Q",
     "G73 without Q",
     "G83 with Q0",
@@ -152,7 +153,12 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # review 48 (lcnc49): labels rs274 does not count as duplicates, a closing label whose
        # block never ran, a subroutine's G90 in force after its return
        "do label of a do before", "if label in a body and the main program",
-       "endwhile label changed in a loop not run", "G53 after a sub that leaves G90"]
+       "endwhile label changed in a loop not run", "G53 after a sub that leaves G90",
+       # review 49a, F1 and F6: the distance mode not known, or G90 again
+       "G53 after a sub whose G91 is in a condition", "G53 after a call in a condition not run",
+       "G53 after a sub whose G91 follows a return in a condition",
+       "G53 after a sub whose G91 follows its return", "G53 after a G91 in a condition not run",
+       "G53 after M72 restores G90"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
