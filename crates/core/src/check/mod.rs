@@ -2273,9 +2273,9 @@ impl Checker {
         self.programmed_forms(b, &before);
         // (LinuxCNC: the main program's distance mode not known after a G90/G91 in a
         // condition or loop, M70's restored by M72: review 49a, F1, F6; state, not a rule)
-        if self.config.family == Family::LinuxCnc
+        if self.letters & (bit(b'G') | bit(b'M')) != 0
+            && self.config.family == Family::LinuxCnc
             && !self.motion_only
-            && self.letters & (bit(b'G') | bit(b'M')) != 0
             && self.open_definition.is_none()
         {
             self.linuxcnc_distance_modal(b);
