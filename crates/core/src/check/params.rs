@@ -418,12 +418,9 @@ impl Checker {
             if kind != Kind::Flow {
                 continue;
             }
-            if self.config.family == Family::MacroB
-                && crate::statement::conditional_assignment(text).is_some()
-            {
+            let Some(upper) = self.jump_upper(text) else {
                 continue;
-            }
-            let upper = text.to_ascii_uppercase();
+            };
             let key = if self.config.family == Family::MacroB {
                 super::targets::goto_words(&upper)
                     .and_then(|(_, digits, _)| crate::text::digits_value(digits))
@@ -714,11 +711,9 @@ impl Checker {
             if kind != Kind::Flow || found.is_some() {
                 return None;
             }
-            if family == Family::MacroB && crate::statement::conditional_assignment(text).is_some()
-            {
+            let Some(upper) = self.jump_upper(text) else {
                 continue;
-            }
-            let upper = text.to_ascii_uppercase();
+            };
             if !self.forward(&upper) {
                 return None;
             }
@@ -748,6 +743,17 @@ impl Checker {
         }
     }
 
+    /// A flow statement's text in capitals, where it may jump: None for a Custom Macro B
+    /// conditional assignment (`IF [..] THEN #1=2`), the one flow statement that never jumps.
+    fn jump_upper(&self, text: &[u8]) -> Option<Vec<u8>> {
+        if self.config.family == Family::MacroB
+            && crate::statement::conditional_assignment(text).is_some()
+        {
+            return None;
+        }
+        Some(text.to_ascii_uppercase())
+    }
+
     /// In a run, whether block `b` surely jumps (back, or forward where the file's reading
     /// does not say so): a `GOTO` with no condition, or an IF whose condition the run's
     /// values make true.
@@ -756,12 +762,9 @@ impl Checker {
             if kind != Kind::Flow {
                 return false;
             }
-            if self.config.family == Family::MacroB
-                && crate::statement::conditional_assignment(text).is_some()
-            {
+            let Some(upper) = self.jump_upper(text) else {
                 return false;
-            }
-            let upper = text.to_ascii_uppercase();
+            };
             let jumps = if self.config.family == Family::MacroB {
                 super::targets::goto_words(&upper).is_some()
             } else {
@@ -964,11 +967,9 @@ impl Checker {
             if kind != Kind::Flow {
                 return false;
             }
-            if family == Family::MacroB && crate::statement::conditional_assignment(text).is_some()
-            {
+            let Some(upper) = self.jump_upper(text) else {
                 continue;
-            }
-            let upper = text.to_ascii_uppercase();
+            };
             if !upper.trim_ascii_start().starts_with(b"IF") || !self.forward(&upper) {
                 return false;
             }
