@@ -1279,6 +1279,21 @@ def test_a_haas_local_subprogram_and_a_goto_must_find_their_block():
     assert _tg118(text, "haas-mill") == [(4, 5), (7, 14)]
 
 
+@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe", "fanuc-mill"])
+def test_a_jump_s_run_into_a_haas_local_subprogram_after_m30_is_checked(profile):
+    """Review 50, F9: a jump's run that reads a Haas local subprogram after M30 (its findings
+    held for the program read apart) panicked the core ("capacity overflow"): the run's list
+    of findings was emptied without the index of the held ones. Checked now, the jump noted."""
+    text = ("%\nO0001\nG90\nG0 X100. Y0\n#9=0\nIF[#6EQ1]GOTO100\nM30\nN100 G1 X#9 F#9\n"
+            "M99\n%\n")
+    found = check_text(text, load_profile(profile))
+    assert ("TG140", 6, 1) in [(f.rule, f.line, f.column) for f in found]
+    # the CLI the review ran: a report and exit 0, no traceback
+    result = CliRunner().invoke(main, ["check", "-p", profile, "-"], input=text)
+    assert result.exit_code == 0, result.output
+    assert "IF[#6EQ1]GOTO100" in result.output
+
+
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():
     """M99 P returns to the caller's block: a subprogram's is another program's (no TG118);
     a main program's M99 P loops in its own (FANUC PS0060 where it is missing)."""

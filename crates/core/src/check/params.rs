@@ -644,7 +644,15 @@ impl Checker {
             });
             taken.run.block(b);
             taken.blocks += 1;
-            for f in std::mem::take(&mut taken.run.found) {
+            // (all of them, those the run holds for a program read apart too: the file's
+            // reading holds what it reports as the run did, a copy of its own state; the
+            // run's index of its held ones goes back to its emptied list: review 50, F9,
+            // a panic where it was left past the end)
+            let found = std::mem::take(&mut taken.run.found);
+            if taken.run.hold_from.is_some() {
+                taken.run.hold_from = Some(0);
+            }
+            for f in found {
                 self.run_finding(taken, b, f);
             }
             // a jump the run met: its run kept for its target, as the file's own, the blocks
@@ -756,10 +764,15 @@ impl Checker {
 
     /// In a run, whether block `b` surely jumps (back, or forward where the file's reading
     /// does not say so): a `GOTO` with no condition, or an IF whose condition the run's
-    /// values make true.
+    /// values make true. Not a jump the block-skip switch can pass over (`/GOTO5`, or a `/`
+    /// before it in the block): with the switch on the control goes on to the next block, as
+    /// a run does at `/M30` (review 50, F10).
     fn surely_jumps(&self, b: &BlockView<'_>) -> bool {
-        b.statements.iter().any(|&(_, kind, text)| {
-            if kind != Kind::Flow {
+        if b.skip {
+            return false;
+        }
+        b.statements.iter().any(|&(column, kind, text)| {
+            if kind != Kind::Flow || b.skip_within.is_some_and(|at| at < column) {
                 return false;
             }
             let Some(upper) = self.jump_upper(text) else {
@@ -2309,6 +2322,42 @@ mod tests {
         let b1 = "G0 X400. Y0\n#1=-700.\n#5=1\nIF[#2EQ1]GOTO30\n#1=0\n#5=0\nN20 #1=0\n\
                   #5=0\nN30 IF[#5EQ1]GOTO20\nG0 X#1";
         assert_eq!(spans(b1), []);
+        // review 50 F10: a jump back the block-skip switch can pass over does not end the
+        // run, as `/M30` does not: with the switch on, the X#1 after it runs with -700
+        for jump in ["/IF[#5EQ1]GOTO5", "/M30", "G0 Y1."] {
+            let body = format!(
+                "N5 G0 X400. Y0\n#1=-700.\n#5=1\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\n\
+                 {jump}\nG0 X#1"
+            );
+            let found = spans(&body);
+            assert_eq!(found.len(), 1, "{jump}: {found:?}");
+            assert_eq!(found[0].0, 9, "{jump}");
+        }
+        // without the slash the jump back leaves; a `/GOTO5` with no condition is a jump
+        // the reading does not follow, after which no parameter is known, the run's as the
+        // file's (nothing judged, no false finding)
+        for jump in ["IF[#5EQ1]GOTO5", "GOTO5", "/GOTO5"] {
+            let body = format!(
+                "N5 G0 X400. Y0\n#1=-700.\n#5=1\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\n\
+                 {jump}\nG0 X#1"
+            );
+            assert_eq!(spans(&body), [], "{jump}");
+        }
+        // review 50 F9: a run's findings held for a program read apart (no units code yet: a
+        // program that may be a subprogram) reach the file's reading, held there in turn
+        let no_units = |units: &str| {
+            let body = format!(
+                "N5 {units}G0 X400. Y0\n#1=-7000.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 Y0\nG0 X#1"
+            );
+            findings(
+                of_family(Family::MacroB),
+                &program(&body),
+                Rule::TravelExceeded,
+            )
+            .len()
+        };
+        assert_eq!(no_units("G21 "), 1);
+        assert_eq!(no_units(""), 1);
         // R5 (hh1.nc): the run's TG601 carries the sample machine's hint, and no later one
         let hh1 = "G0 X400. Y0\n#1=-700.\nIF[#2EQ1]GOTO10\n#1=0\nN10 G0 X#1\nG0 X-700.";
         let found = spans(hh1);
