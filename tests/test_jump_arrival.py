@@ -243,3 +243,46 @@ def test_a_jump_met_in_a_jump_s_run_is_followed(
     found = cli_findings(tmp_path, name, text, profile, f"{rule},TG141")
     assert rules_at(found) == [("TG141", 11), (rule, 11)], found
     assert said in str(found[1]["message"]), found[1]
+
+
+# -- review 48's t1.nc and review 49b's R6 (jump50) --------------------------------------------
+
+HINT = "the built-in profile's limits are a typical machine of the family"
+
+
+def test_the_blocks_a_jump_surely_taken_passes_over_are_not_run(tmp_path: Path) -> None:
+    """Review 48's t1.nc: `#1=1` / `IF [#1 EQ 1] GOTO 10` skips the `G1 X9999.` and the `G91`
+    before N10, so neither is judged nor in force there; N10's `X#2` reads #2 as it was at
+    the jump (-900: a 1600 span from X700, at its word). A line the checker cannot read
+    between stays an error at its line and column."""
+    t1 = ("%\nO1000\nG21 G90 G54\nG0 X700. Y0\n#2=-900.\n#1=1\nIF [#1 EQ 1] GOTO 10\n"
+          "G1 X9999. F100.\nG91\n#2=0\n-------\nN10 G0 X#2\nX100.\nM30\n%\n")
+    found = cli_findings(tmp_path, "t1.nc", t1, "fanuc-mill", "TG601,TG100,TG141")
+    assert [(f["rule"], f["line"], f["column"]) for f in found] == [
+        ("TG100", 11, 1), ("TG601", 12, 8)]
+    assert "X spans 1600 (from -900 to 700)" in str(found[1]["message"])
+    # the condition not known: the blocks are judged as before (the X9999. at its line)
+    unknown = t1.replace("#1=1\n", "#1=#5\n")
+    assert ("TG601", 8) in rules_at(cli_findings(tmp_path, "t2.nc", unknown, "fanuc-mill",
+                                                 "TG601"))
+    # the target not in the program: as before (TG118 at the jump, the X9999. judged)
+    lost = t1.replace("N10 G0", "N20 G0")
+    assert rules_at(cli_findings(tmp_path, "t3.nc", lost, "fanuc-mill", "TG601,TG118")) == [
+        ("TG601", 8), ("TG118", 7)]
+
+
+def test_the_sample_machine_hint_goes_on_the_first_finding_shown(tmp_path: Path) -> None:
+    """Review 49b, R6: the sample machine's hint is said once, on the first limit finding
+    shown; with the span's TG601 left out by --select or --ignore, the feed's TG605 after it
+    carries it."""
+    path = tmp_path / "r6.nc"
+    path.write_text("%\nO1000\nG21 G90 G54\nG0 X700. Y0\nG0 X-900.\nG1 X0 F20000.\nM30\n%\n")
+    for option in (["--select", "TG605"], ["--ignore", "TG601"], []):
+        result = CliRunner().invoke(
+            main, ["check", str(path), "--profile", "fanuc-mill", *option, "--format", "json"],
+            catch_exceptions=False)
+        found = [f for f in json.loads(result.output)["findings"]
+                 if str(f["rule"]).startswith("TG60")]
+        assert [HINT in str(f["message"]) for f in found] == (
+            [True, False] if not option else [True]), option
+        assert (found[-1]["rule"], found[-1]["line"], found[-1]["column"]) == ("TG605", 6, 7)

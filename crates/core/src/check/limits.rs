@@ -2451,8 +2451,10 @@ impl Checker {
         ) {
             self.early_hold();
         }
+        // (on the first finding shown: one `--select`/`--ignore` leaves out never carries it,
+        // review 49b, R6)
         let message = match self.sample_hint(rule) {
-            Some(hint) if !self.limits_hint_said => {
+            Some(hint) if !self.limits_hint_said && self.selection.enabled(rule) => {
                 self.limits_hint_said = true;
                 format!("{message}{hint}")
             }
@@ -2532,7 +2534,10 @@ impl Checker {
         if self.limits_hint_said {
             return;
         }
-        if let Some(hint) = self.sample_hint(f.rule) {
+        if let Some(hint) = self
+            .sample_hint(f.rule)
+            .filter(|_| self.selection.enabled(f.rule))
+        {
             self.limits_hint_said = true;
             f.message.push_str(hint);
         }

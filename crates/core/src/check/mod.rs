@@ -58,6 +58,7 @@ mod words;
 // beside them
 mod drawn;
 mod params;
+mod passed;
 mod stats;
 #[cfg(test)]
 mod testing;
@@ -1189,6 +1190,8 @@ pub struct Checker {
     /// How many findings the rules have said (those the selection drops too): a rule that
     /// says nothing of a block leaves it as it was.
     reports: u64,
+    /// A passage over the blocks a jump surely taken passes over ([`passed`]).
+    passed: Option<Box<passed::Passed>>,
 }
 
 impl Checker {
@@ -1237,6 +1240,7 @@ impl Checker {
             mixed_reported: false,
             arc_cause_said: false,
             limits_hint_said: false,
+            passed: None,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),
@@ -1409,7 +1413,14 @@ impl Checker {
                 self.hold_from = Some(0);
                 std::mem::replace(&mut self.found, held)
             }
-            None => std::mem::take(&mut self.found),
+            // (nor those made while the blocks a jump passes over are read: passed.rs)
+            None => match self.passage_held() {
+                Some(from) => {
+                    let held = self.found.split_off(from);
+                    std::mem::replace(&mut self.found, held)
+                }
+                None => std::mem::take(&mut self.found),
+            },
         }
     }
 
@@ -1431,7 +1442,10 @@ impl Checker {
                 self.hold_from = Some(0);
                 self.found.drain(..from)
             }
-            None => self.found.drain(..),
+            None => match self.passage_held() {
+                Some(from) => self.found.drain(..from),
+                None => self.found.drain(..),
+            },
         }
     }
 
@@ -2545,6 +2559,7 @@ impl Checker {
 
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
+        self.passage_ended(None);
         if let Some((opened, l)) = self.data_input.open() {
             // the file ends inside the mode: its G11 is missing too
             let message = format!(

@@ -152,6 +152,23 @@ pub(super) struct Taken {
     run: Box<Checker>,
 }
 
+impl Taken {
+    /// Whether this is the run kept for the file's own jump of `line`.
+    pub(super) fn own_of(&self, line: usize) -> bool {
+        self.line == line && self.via.is_empty()
+    }
+
+    /// Whether it was kept for the file's own jump read after `line`.
+    pub(super) fn own_after(&self, line: usize) -> bool {
+        self.line > line && self.via.is_empty()
+    }
+
+    /// Whether it goes to target `key` (`N10`).
+    pub(super) fn to(&self, key: &[u8]) -> bool {
+        self.key == key
+    }
+}
+
 /// SINUMERIK: a `D=R1` under G41/G42 quieted by the known value of what it reads: its line,
 /// column, word, compensation and the keys of the parameters and variables it reads.
 #[derive(Debug, Clone)]
@@ -333,6 +350,10 @@ impl Checker {
     ///
     /// Then the block's own jump targets are noted.
     pub(super) fn jump_arrival(&mut self, b: &BlockView<'_>) {
+        // (the blocks a jump surely taken passes over end here, or at the target: passed.rs)
+        if self.passed.is_some() {
+            self.passage_block(b);
+        }
         match self.config.family {
             Family::MacroB => self.macro_b_arrival(b),
             Family::Sinumerik => self.sinumerik_arrival(b),
@@ -453,7 +474,7 @@ impl Checker {
     /// EQ NE GT GE LT LE, a SINUMERIK's `== <> > >= < <=`) of two sides each a number or of
     /// parameters holding known constants (review 48 F1). None where a side is not known, the
     /// condition is of another form, or the jump has none (`GOTO 10`).
-    fn condition_known(&self, upper: &[u8]) -> Option<bool> {
+    pub(super) fn condition_known(&self, upper: &[u8]) -> Option<bool> {
         let text = upper.trim_ascii_start();
         let rest = text.strip_prefix(b"IF")?;
         let (condition, ops): (&[u8], &[(&[u8], Ordering)]) =
@@ -523,6 +544,7 @@ impl Checker {
                 self.params_forgotten();
             }
         }
+        self.passage_started(b);
         self.after_block = !self.runs.is_empty();
     }
 
@@ -534,7 +556,7 @@ impl Checker {
     /// asks afresh; nor the subprograms kept for their calls and those given up (called.rs):
     /// a run ends at a call, and what a call of one says is at its calling word (`M98`,
     /// `G65`), which reads no parameter, so never the run's to say ([`Checker::run_finding`]).
-    fn run_of(&mut self) -> Box<Checker> {
+    pub(super) fn run_of(&mut self) -> Box<Checker> {
         let found = std::mem::take(&mut self.found);
         let path = std::mem::take(&mut self.path);
         let pending = std::mem::take(&mut self.jumps_pending);
@@ -706,7 +728,7 @@ impl Checker {
     /// shown yet, or one SINUMERIK `GOTOF`/`GOTO` to a name not read yet; Some(whether it has
     /// a condition). Asked of the file's reading for its runs ([`Checker::jump_noted`]), which
     /// know not the numbers read.
-    fn forward_jump(&self, b: &BlockView<'_>) -> Option<bool> {
+    pub(super) fn forward_jump(&self, b: &BlockView<'_>) -> Option<bool> {
         let family = self.config.family;
         if !matches!(family, Family::MacroB | Family::Sinumerik) {
             return None;
@@ -753,7 +775,7 @@ impl Checker {
 
     /// A flow statement's text in capitals, where it may jump: None for a Custom Macro B
     /// conditional assignment (`IF [..] THEN #1=2`), the one flow statement that never jumps.
-    fn jump_upper(&self, text: &[u8]) -> Option<Vec<u8>> {
+    pub(super) fn jump_upper(&self, text: &[u8]) -> Option<Vec<u8>> {
         if self.config.family == Family::MacroB
             && crate::statement::conditional_assignment(text).is_some()
         {
@@ -843,7 +865,7 @@ impl Checker {
         // (the file's first finding against the sample machine says so, a run's too, once:
         // review 49, R5)
         let message = match self.sample_hint(f.rule) {
-            Some(hint) if !self.limits_hint_said => {
+            Some(hint) if !self.limits_hint_said && self.selection.enabled(f.rule) => {
                 self.limits_hint_said = true;
                 format!("{message}{hint}")
             }

@@ -35,9 +35,9 @@ use crate::statement::Kind;
 pub(super) struct Reach {
     /// The line and kind of the block that left unconditionally, while no block with a
     /// sequence number has come since (None: the lines here may run).
-    left: Option<(usize, Leaving)>,
+    pub(super) left: Option<(usize, Leaving)>,
     /// How deep in `WHILE`/`DO` loops the read stands.
-    loops: usize,
+    pub(super) loops: usize,
     /// The line of the block with a sequence number that ended an unreached part: no run
     /// falls through to it, only a jump reaches it (a jump's arrival there keeps no values in
     /// file order, [`Checker::jump_arrival`]).
@@ -215,7 +215,14 @@ impl Checker {
             head(text).map(|c| c.to_ascii_uppercase()),
             Some(b'N' | b'O' | b'<' | b':' | b'&' | b'%')
         ) {
+            self.passage_ended(None);
             self.reach.left = None;
+            return false;
+        }
+        // (an IF GOTO whose condition the values known make true leaves too, passed.rs, but
+        // the condition is the checker's reading of the values, not the text's alone: a line
+        // after it stays the error it is)
+        if self.passage_conditional(left) {
             return false;
         }
         let message = format!(

@@ -240,6 +240,7 @@ impl Checker {
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
+        self.passage_ended(None);
         self.targets_ended();
         self.linuxcnc_locals_ended();
         self.reach_reset();

@@ -1,0 +1,381 @@
+//! The blocks a Custom Macro B jump surely taken passes over (issue 32, review 48's t1.nc).
+//!
+//! FANUC's `GOTO n` branches to the block of sequence number n: the control searches the
+//! program for it and goes on from there, and an `IF [..] GOTO n` does so where its condition
+//! holds (Custom Macro B, "Branch and repetition": Unconditional branch (GOTO statement),
+//! Conditional branch (IF statement); a Haas's the same, Mill Operator's Manual, "Macros").
+//! The blocks between the jump and its target are passed over: the control reads them for
+//! the N it looks for, and runs none of them. Where the jump is surely taken -- a `GOTO n`
+//! outside an IF, or an IF whose condition the values the checker knows make true
+//! ([`Checker::condition_known`]: `#1=1` / `IF [#1 EQ 1] GOTO 10`) -- and its target comes
+//! forward in the same program, the file's reading takes those blocks as not run: they are
+//! still read (a block the checker cannot read, a word past its format, a code the profile
+//! does not have are said, as the text is the program's), but no finding of what running
+//! them would do (TG4xx-TG6xx: moves, arcs, feeds, cycles, the travel and the machine's
+//! maxima; TG140/TG141, what is followed; TG106, words after an end) is said of them, and the
+//! target starts from the state the jump left: the positions, modes, parameters and
+//! statistics of the blocks passed over are not the machine's.
+//!
+//! Only where that is sure from the text, as [`super::reach`] reads it: the blocks passed over
+//! carry no sequence number and no loop statement (a block with an N may be named by another
+//! jump, a call's `M97 P`, a return's `M99 P` or a lathe cycle's P/Q, and so run: the first
+//! such block ends the passage, and if it is not the target the blocks after it are judged
+//! as before); no jump read before names the target, nor is a computed `GOTO #1` read (the
+//! values at the target are then the jump's alone); the jump is not under the `/` switch nor
+//! inside a `WHILE` loop, not read apart as a subprogram's body (called.rs) and no jump's run
+//! is being read beside the file's (params.rs); the blocks passed over leave the units and the
+//! feed mode as the jump found them (the target's words are read in them before the passage
+//! ends at it). Where the target does not come (the program ends first: TG118), nothing
+//! changes: the blocks are judged as before, their findings said in their order when the
+//! passage ends.
+
+use super::{BlockView, Checker};
+use crate::lex::Family;
+use crate::rules::Rule;
+use crate::statement::Kind;
+use std::collections::HashMap;
+
+/// A passage over the blocks after a jump surely taken, until its target.
+#[derive(Clone)]
+pub(super) struct Passed {
+    /// The jump's line and its target's sequence number, and whether it has a condition.
+    line: usize,
+    target: u64,
+    conditional: bool,
+    /// The checker as the jump left it (its run state is the target's).
+    run: Box<Checker>,
+    /// The length of the path at the jump, and whether the sample machine's hint was said
+    /// (a run's copy takes it as said: [`Checker::run_of`]).
+    path: usize,
+    hint_said: bool,
+    /// The jumps read before the jump, by target (the jump's own taken out: at its target
+    /// the values are its alone, no arrival of another).
+    goto_targets: HashMap<u64, (usize, bool)>,
+    /// Where the findings made since the jump start in the checker's list: held there (not
+    /// handed over: [`Checker::take`], [`Checker::drain`]) until the passage ends, and then
+    /// said, but for those of running the blocks passed over where the target comes.
+    from: usize,
+}
+
+/// Whether a finding of `rule` is of running its block (dropped for a block passed over),
+/// not of reading its text.
+fn of_running(rule: Rule) -> bool {
+    let id = rule.id();
+    matches!(id.as_bytes().get(2), Some(b'4' | b'5' | b'6'))
+        || matches!(
+            rule,
+            Rule::NotFollowed | Rule::NotEvaluated | Rule::WordsAfterEndNotRun
+        )
+}
+
+impl Checker {
+    /// At the end of block `b` (`after_block`): a passage starts where `b` surely jumps
+    /// forward ([`Passed`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn passage_started(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::MacroB
+            || self.passed.is_some()
+            || self.run_target != 0
+            || self.hold_from.is_some()
+            || self.early_on
+            || !self.runs.is_empty()
+            || self.goto_computed
+            || b.skip
+            || b.skip_within.is_some()
+            || self.reach.loops > 0
+        {
+            return;
+        }
+        // one jump forward, nothing else the checker does not follow
+        let Some(conditional) = self.forward_jump(b) else {
+            return;
+        };
+        let Some(upper) = b
+            .statements
+            .iter()
+            .filter(|s| s.1 == Kind::Flow)
+            .find_map(|s| self.jump_upper(s.2))
+        else {
+            return;
+        };
+        if conditional && self.condition_known(&upper) != Some(true) {
+            return;
+        }
+        let Some(target) = super::targets::goto_words(&upper)
+            .and_then(|(_, digits, _)| crate::text::digits_value(digits))
+        else {
+            return;
+        };
+        // (no jump read before names the target; a GOTO outside an IF left as reach.rs
+        // reads it)
+        if self.goto_targets.get(&target) != Some(&(b.line, false)) {
+            return;
+        }
+        // (nor does a run kept for a jump a run met: it arrives there too)
+        let key = format!("N{target}");
+        if self
+            .jumps_pending
+            .iter()
+            .any(|t| t.to(key.as_bytes()) && !t.own_of(b.line))
+        {
+            return;
+        }
+        if conditional {
+            self.reach.left = Some((b.line, super::reach::Leaving::Jump));
+        } else if self.reach.left.is_none_or(|(line, _)| line != b.line) {
+            return;
+        }
+        let mut goto_targets = self.goto_targets.clone();
+        goto_targets.remove(&target);
+        let run = self.run_of();
+        self.passed = Some(Box::new(Passed {
+            line: b.line,
+            target,
+            conditional,
+            run,
+            path: self.path.len(),
+            hint_said: self.limits_hint_said,
+            goto_targets,
+            from: self.found.len(),
+        }));
+    }
+
+    /// Whether the unreached part after line `left` is a passage after a jump with a
+    /// condition (the values known make it true).
+    pub(super) fn passage_conditional(&self, left: usize) -> bool {
+        self.passed
+            .as_ref()
+            .is_some_and(|p| p.conditional && p.line == left)
+    }
+
+    /// Block `b` while a passage is open (asked where a jump may arrive, before the block's
+    /// words are read: a passage keeps its target among the jumps read): it ends where `b`
+    /// ends the unreached part -- its sequence number, or a loop's statement, as
+    /// [`super::reach`] reads it; at the target only where that is its N (a loop's statement
+    /// without it ends the passage as any other block there).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn passage_block(&mut self, b: &BlockView<'_>) {
+        if self.reach.resumed == b.line {
+            self.passage_ended(Some(b));
+        }
+    }
+
+    /// The passage ends at block `b` (None: at a program's end, a `%` or the file's end):
+    /// where `b` is its target, the file's reading goes on from the state the jump left, the
+    /// findings of running the blocks between dropped; elsewhere every finding held is said.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn passage_ended(&mut self, b: Option<&BlockView<'_>>) {
+        let Some(passed) = self.passed.take() else {
+            return;
+        };
+        let Passed {
+            line,
+            target,
+            run,
+            path,
+            hint_said,
+            goto_targets,
+            from,
+            ..
+        } = *passed;
+        let arrived = b.filter(|b| {
+            b.words
+                .iter()
+                .find(|w| w.letter == b'N' && w.expression.is_empty())
+                .and_then(|w| w.value.filter(|_| !w.point))
+                == Some(target)
+        });
+        // (the target's units and feed mode are read before this, with the modes in force
+        // (`Checker::block_modes`): where the blocks passed over changed them, the target is
+        // judged as before)
+        let modes = |c: &Checker| {
+            let s = &c.machine.state;
+            (s.units, s.feed_units, s.feed_mode)
+        };
+        let Some(b) = arrived.filter(|_| modes(self) == modes(&run)) else {
+            return;
+        };
+        let mut i = 0;
+        self.found.retain(|f| {
+            i += 1;
+            // (the target's own so far: a TG106 after an M30 passed over)
+            i <= from || !(f.line > line && f.line <= b.line && of_running(f.rule))
+        });
+        self.path.truncate(path);
+        self.goto_targets = goto_targets;
+        // (the run kept for the jump is the passage's own; those kept for jumps read between
+        // are not run)
+        self.jumps_pending
+            .retain(|t| !t.own_of(line) && !t.own_after(line));
+        self.run_state_of(*run);
+        self.limits_hint_said = hint_said;
+    }
+
+    /// The state of running the program taken from `run` (the checker at a jump): the
+    /// machine, the parameters, the spans and the statistics of the moves, the frames,
+    /// shifts and modes the rules keep, and the notes said once of what running finds; what
+    /// reading the text finds (the sequence numbers, the formats, the reading errors, the
+    /// blocks counted) stays the file's.
+    fn run_state_of(&mut self, run: Checker) {
+        let blocks = self.stats.blocks;
+        let lists = (
+            std::mem::take(&mut self.stats.travel_not),
+            std::mem::take(&mut self.stats.moves_not_known),
+            std::mem::take(&mut self.stats.dwells_not_known),
+        );
+        self.stats = run.stats;
+        self.stats.blocks = blocks;
+        (
+            self.stats.travel_not,
+            self.stats.moves_not_known,
+            self.stats.dwells_not_known,
+        ) = lists;
+        self.machine = run.machine;
+        self.inside = run.inside;
+        self.spans = run.spans;
+        self.params = run.params;
+        self.arrival = run.arrival;
+        self.ended_line = run.ended_line;
+        self.skipped_end = run.skipped_end;
+        self.surely_ended = run.surely_ended;
+        self.sub_ended = run.sub_ended;
+        self.cut_block = run.cut_block;
+        self.after_end_reported = run.after_end_reported;
+        self.arc_cause_said = run.arc_cause_said;
+        self.unfollowed_noted = run.unfollowed_noted;
+        self.unknown_noted = run.unknown_noted;
+        self.quiet_d = run.quiet_d;
+        self.assigned_at = run.assigned_at;
+        self.g06_open = run.g06_open;
+        self.speed_limit_seen = run.speed_limit_seen;
+        self.travel = run.travel;
+        self.centre_kept = run.centre_kept;
+        self.centre_lost = run.centre_lost;
+        self.diameter_mode = run.diameter_mode;
+        self.polar = run.polar;
+        self.polar_arc = run.polar_arc;
+        self.opening_arc = run.opening_arc;
+        self.radius_arc = run.radius_arc;
+        self.work = run.work;
+        self.offsets_lost = run.offsets_lost;
+        self.frames = run.frames;
+        self.noted = run.noted;
+        self.mode_lost_codes = run.mode_lost_codes;
+        self.shifts = run.shifts;
+        self.transformed = run.transformed;
+        self.length_decimal = run.length_decimal;
+        self.motion_unknown = run.motion_unknown;
+        self.cycle_unmodelled = run.cycle_unmodelled;
+        self.data_input = run.data_input;
+        self.compensation_exit = run.compensation_exit;
+        self.call_units = run.call_units;
+        self.units_unknown = run.units_unknown;
+        self.unknown_call = run.unknown_call;
+        self.feed_pending = run.feed_pending;
+        self.feed_unheld = run.feed_unheld;
+        self.outside = run.outside;
+        self.meanings = run.meanings;
+        self.meanings_none = run.meanings_none;
+        self.shapes = run.shapes;
+        self.goto_computed = run.goto_computed;
+        self.goto_computed_line = run.goto_computed_line;
+    }
+
+    /// Where the findings held by an open passage start in the list, from which on none is
+    /// handed over; the next hand-over holds them from its start.
+    pub(super) fn passage_held(&mut self) -> Option<usize> {
+        let passed = self.passed.as_mut()?;
+        Some(std::mem::replace(&mut passed.from, 0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{fired, of_family, program};
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    /// A FANUC (Custom Macro B, its O numbers) on the iso-mill's machine: X -500..500.
+    fn fanuc() -> super::super::Config {
+        let mut config = of_family(Family::MacroB);
+        config.facts.program_number = Some(b'O');
+        config
+    }
+
+    fn travel(body: &str) -> Vec<(usize, usize)> {
+        fired(fanuc(), &program(body), Rule::TravelExceeded)
+    }
+
+    /// Review 48's t1.nc: the blocks a jump surely taken passes over are not run -- no
+    /// finding of their moves -- whether the jump has no condition or one the known values
+    /// make true (lines: 1 `%`, 2 `G0`, ...).
+    #[test]
+    fn the_blocks_a_jump_surely_taken_passes_over_are_not_run() {
+        for jump in [
+            "#1=1\nIF [#1 EQ 1] GOTO 10",
+            "#1=1\nGOTO 10",
+            "IF [1 EQ 1] GOTO10",
+        ] {
+            let body = format!("G0 X0 Y0\n{jump}\nG1 X9999. F100.\nN10 G0 X10. Y0");
+            assert_eq!(travel(&body), [], "{jump}");
+        }
+        // the condition not known, or false: judged, as before
+        for jump in ["#1=1\nIF [#5 EQ 1] GOTO 10", "#1=0\nIF [#1 EQ 1] GOTO 10"] {
+            let body = format!("G0 X0 Y0\n{jump}\nG1 X9999. F100.\nN10 G0 X10. Y0");
+            assert_eq!(travel(&body).len(), 1, "{jump}");
+        }
+    }
+
+    /// The target starts from the state the jump left: a G91 and an assignment passed over
+    /// are not in force there, and the values known at the jump are (no arrival forgets
+    /// them: TG141 is not said). `X#2` goes to X-700 from X400: an 1100 span, at its word.
+    #[test]
+    fn the_target_starts_where_the_jump_left() {
+        let body = "G0 X400. Y0\n#2=-700.\n#1=1\nIF[#1EQ1]GOTO10\nG91\n#2=0\nN10 G0 X#2";
+        assert_eq!(travel(body), [(8, 8)]);
+        assert_eq!(fired(fanuc(), &program(body), Rule::NotEvaluated), []);
+        // a G91 passed over: X100. twice is X100, not X200 (no TG601 from X-450)
+        let body = "G0 X-450. Y0\nGOTO10\nG91\nN10 G0 X100.\nX100.";
+        assert_eq!(travel(body), []);
+    }
+
+    /// Reading the blocks passed over: a line the checker cannot read stays an error after
+    /// an IF whose condition holds (the condition is the checker's reading of the values),
+    /// and is TG108 after a GOTO outside an IF, as before (reach.rs).
+    #[test]
+    fn the_blocks_passed_over_are_still_read() {
+        let body = "#1=1\nIF[#1EQ1]GOTO10\nG1 X9999. F100.\n---\nN10 G0 X0 Y0";
+        assert_eq!(fired(fanuc(), &program(body), Rule::Unreadable), [(5, 1)]);
+        assert_eq!(fired(fanuc(), &program(body), Rule::NeverRun), []);
+        let body = "GOTO10\nG1 X9999. F100.\n---\nN10 G0 X0 Y0";
+        assert_eq!(fired(fanuc(), &program(body), Rule::NeverRun), [(4, 1)]);
+        // a word past its format passed over is said (the text is the program's)
+        let body = "GOTO10\nG1 X1.23456789 F100.\nN10 G0 X0 Y0";
+        assert_eq!(
+            fired(fanuc(), &program(body), Rule::TooManyDigits).len(),
+            1,
+            "{body}"
+        );
+    }
+
+    /// Where the checker cannot be sure the blocks are passed over, they are judged as
+    /// before: the target not in the program (TG118), a numbered block between (a jump,
+    /// call or return may name it), another jump to the target read before, a `/` jump, a
+    /// jump inside a WHILE loop, a jump back.
+    #[test]
+    fn where_the_passage_is_not_sure_nothing_changes() {
+        for body in [
+            "G0 X0 Y0\nGOTO30\nG1 X9999. F100.\nN10 G0 X1. Y0",
+            "G0 X0 Y0\n#1=1\nIF[#1EQ1]GOTO20\nG1 X9999. F100.\nN10 G0 X1. Y0\nN20 G0 X2.",
+            "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0",
+            "G0 X0 Y0\n/GOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0",
+            "G0 X0 Y0\nWHILE[#5LT1]DO1\nGOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0\nEND1",
+            "N5 G0 X0 Y0\n#1=1\nIF[#1EQ1]GOTO5\nG1 X9999. F100.\nN10 G0 X1. Y0",
+        ] {
+            assert_eq!(travel(body).len(), 1, "{body}");
+        }
+    }
+}
