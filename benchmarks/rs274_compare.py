@@ -15,7 +15,9 @@ message and the line it stopped at) and tapegate's error findings (rule, line, m
   in tests/test_dialects.py). Only those rs274 runs are compared; the others are listed as
   another dialect.
 - **seeded**: small programs written here with one fault each, on ``linuxcnc``: does each side
-  report it, and on the line of the fault?
+  report it, and on the line of the fault? A fault of the block delete switch ("switch": a
+  setting after ``/``) is one rs274 reports on its line with the switch off (``-g``) or on
+  (``-b -g``) but not both; tapegate, which knows no machine's switch, reports no error.
 - **arcs**: the arc radius tolerance of rs274, measured by bisection in mm and inch at small,
   medium and large radii, and tapegate's answer just inside and just outside it.
 
@@ -109,13 +111,15 @@ def tool_table(text: str) -> str:
     return "".join(f"T{t} P{t} D0 Z0 ;\n" for t in sorted(tools - {0}))
 
 
-def _rs274_raw(program: Path, table: str, workdir: Path) -> tuple[int | None, str]:
+def _rs274_raw(program: Path, table: str, workdir: Path,
+               flags: tuple[str, ...] = ()) -> tuple[int | None, str]:
     (workdir / "tools.tbl").write_text(table)
     try:
         # rs274 maps its tool table to $HOME/.tool.mmap: two runs at once with one HOME share
         # it (a tool "not found", a bus error), so each runs with the work folder as its HOME
-        p = subprocess.run([rs274_exe() or "rs274", "-g", "-t", "tools.tbl", str(program),
-                            "/dev/null"], stdin=subprocess.DEVNULL, capture_output=True,
+        p = subprocess.run([rs274_exe() or "rs274", *flags, "-g", "-t", "tools.tbl",
+                            str(program), "/dev/null"], stdin=subprocess.DEVNULL,
+                           capture_output=True,
                            cwd=workdir, timeout=TIMEOUT,
                            env={**os.environ, "HOME": str(workdir)})
     except subprocess.TimeoutExpired:
@@ -134,22 +138,24 @@ def _parse_error(out: str) -> tuple[str, str]:
     return lines[-2].strip(), lines[-1]
 
 
-def run_rs274(program: Path, workdir: Path, table: str | None = None) -> Rs274:
+def run_rs274(program: Path, workdir: Path, table: str | None = None,
+              flags: tuple[str, ...] = ()) -> Rs274:
+    """rs274's verdict; ``flags`` before ``-g`` (``-b``: the block delete switch on)."""
     raw = program.read_bytes().decode("utf-8", "replace")
     table = tool_table(raw) if table is None else table
-    rc, out = _rs274_raw(program, table, workdir)
+    rc, out = _rs274_raw(program, table, workdir, flags)
     if rc is None:
         return Rs274(ok=False, message=f"timed out after {TIMEOUT:.0f} s", note="timeout")
     if rc == 0:
         return Rs274(ok=True)
     message, text = _parse_error(out)
     result = Rs274(ok=False, message=message, text=text)
-    result.line = locate(program, raw, text, message, table, workdir)
+    result.line = locate(program, raw, text, message, table, workdir, flags)
     return result
 
 
 def locate(program: Path, raw: str, text: str, message: str, table: str,
-           workdir: Path) -> int | None:
+           workdir: Path, flags: tuple[str, ...] = ()) -> int | None:
     lines = raw.splitlines()
     want = text.rstrip()
     if not want:  # rs274 printed no block (the end of the file): the last line
@@ -162,7 +168,7 @@ def locate(program: Path, raw: str, text: str, message: str, table: str,
     prefix = workdir / ("prefix" + program.suffix)
     for n in candidates[:25]:
         prefix.write_text("\n".join(lines[:n]) + "\n")
-        _, out = _rs274_raw(prefix, table, workdir)
+        _, out = _rs274_raw(prefix, table, workdir, flags)
         # (a message naming the file, "File:... redefining sub", names the prefix's)
         if _parse_error(out.replace(str(prefix), str(program))) == (message, text):
             return n
@@ -545,6 +551,52 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G53 after a G91 in a condition not run", "G21 G90\no1 if [0]\nG91\no1 endif\n"
      "G53 G0 Z0\nM2\n", 0, "accepted"),
     ("G53 after M72 restores G90", "G21 G90\nM70\nG91\nM72\nG53 G0 Z0\nM2\n", 0, "accepted"),
+    # review 49a, F2: a condition of comparisons and logical operators decides whether the
+    # block's lines run (interp_execute.cc execute_binary2), a repeat's count is rounded half
+    # to even (nearbyint: [0.5] runs no time, [1.5] twice)
+    ("endif label changed in an if of a comparison", HEAD + "#1=0\n#2=3\n"
+     "o#2 if [#1 LT 3]\n#2=4\no#2 endif\nM2\n", 7, "error"),
+    ("endwhile label changed in a loop of a comparison", HEAD + "#1=0\n#2=3\n"
+     "o#2 while [[#1 LT 3] AND [#1 GE 0]]\n#2=4\n#1=[#1+1]\no#2 endwhile\nM2\n", 8, "error"),
+    ("endif label changed in an if of a comparison false", HEAD + "#1=5\n#2=3\n"
+     "o#2 if [#1 LT 3 OR #1 EQ 4]\n#2=4\no#2 endif\nM2\n", 0, "accepted"),
+    ("endrepeat label changed in a repeat of 0.5", HEAD + "#2=3\no#2 repeat [0.5]\n#2=4\n"
+     "o#2 endrepeat\nM2\n", 0, "accepted"),
+    ("endrepeat label changed in a repeat of 1.5", HEAD + "#2=3\no#2 repeat [1.5]\n#2=4\n"
+     "o#2 endrepeat\nM2\n", 6, "error"),
+    # review 49a, F8: an o-word only at the start of its line, a closing word of a label no
+    # line named (interp_read.cc read_items, interp_o_word.cc control_find_oword)
+    ("o-word after a comment", HEAD + "(c) o5 if [1]\nG0 X1\no5 endif\nM2\n", 3, "error"),
+    ("o-word after a word", HEAD + "G0 X1 o5 if [1]\nG0 X1\no5 endif\nM2\n", 3, "error"),
+    ("words after an o-word", HEAD + "o5 if [1] G0 X1\no5 endif\nM2\n", 3, "error"),
+    ("o-word after a comment in a condition not run", HEAD + "o1 if [0]\n(c) o5 if [1]\n"
+     "o1 endif\nM2\n", 0, "accepted"),
+    ("o-word after a line number", HEAD + "N10 o5 if [1]\nG0 X1\no5 endif\nM2\n", 0,
+     "accepted"),
+    ("endif with no if", HEAD + "o2 endif\nM2\n", 3, "error"),
+    ("endif of another label in an if that runs", HEAD + "#1=5\no#1 if [1]\nG0 X1\n"
+     "o6 endif\nM2\n", 6, "error"),
+    ("endif of a label closed before", HEAD + "o2 if [1]\no2 endif\no2 endif\nM2\n", 0,
+     "accepted"),
+    # review 49a, F3: a block known not to run skips to an o-word line of its label, which
+    # the file does not have: the file ends in the skip (interp_read.cc read_items)
+    ("endif of another label in an if not run", HEAD + "#1=5\no#1 if [0]\nG0 X1\n"
+     "o6 endif\nM2\n", 7, "error"),
+    ("endrepeat of another label in a repeat of 0", HEAD + "o5 repeat [0]\nG0 X1\n"
+     "o6 endrepeat\nM2\n", 6, "error"),
+    # review 48, c19: a subroutine whose body ends the program ends it at the call
+    ("sub whose body ends with M2", "G21\no<s> sub\nG0 X1\nM2\no<s> endsub\no<s> call\n"
+     "G0 X#<nope>\nM2\n", 0, "accepted"),
+    ("sub whose body ends with M30, no M2 after its call", "G21\no<s> sub\nG0 X1\nM30\n"
+     "o<s> endsub\no<s> call\nG0 X#<nope>\n", 0, "accepted"),
+    # review 49a, F4: a setting the block skip deletes may run or not, as the machine's
+    # switch is (rs274 -g runs it, rs274 -b -g deletes it): tapegate says neither
+    ("endif label changed by a deleted setting", HEAD + "#1=3\no#1 if [1]\n/#1=4\n"
+     "o#1 endif\nM2\n", 6, "switch"),
+    ("division by a value a deleted setting gives", HEAD + "#1=1\n/#1=0\nG0 X[1/#1]\nM2\n",
+     5, "switch"),
+    ("division by a value a deleted setting changes", HEAD + "#1=0\n/#1=1\nG0 X[1/#1]\nM2\n",
+     5, "switch"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 
@@ -557,6 +609,8 @@ class Seed:
     rs274: Rs274
     errors: list[Err]
     others: list[Err] = field(default_factory=list)  # warnings and notes on the fault's line
+    # rs274 with the block delete switch on (``-b``), for an ``expected`` of "switch"
+    rs274_deleting: Rs274 | None = None
     rs274_line: bool = False  # rs274 reports it on the fault's line
     tapegate_line: bool = False  # tapegate's first error is on the fault's line
     same: bool = False  # both report it on the fault's line (or both accept the program)
@@ -580,6 +634,13 @@ def seeded(workdir: Path) -> list[Seed]:
             s.rs274_line = not rs.ok and rs.line == line
             s.tapegate_line = bool(errors) and errors[0].line == line
             s.same = s.rs274_line and s.tapegate_line
+        elif expected == "switch":
+            # (rs274 refuses the line with the switch in one place and runs on in the other:
+            # the program's fault is the machine's switch, and tapegate reports no error)
+            s.rs274_deleting = run_rs274(path, workdir, SEED_TOOLS, ("-b",))
+            one_way = [r for r in (rs, s.rs274_deleting) if not r.ok]
+            s.rs274_line = len(one_way) == 1 and one_way[0].line == line
+            s.same = s.rs274_line and not errors
         else:
             s.same = rs.ok and not errors
         seeds.append(s)

@@ -79,9 +79,10 @@ def sample_program() -> str:
     return (resources.files("tapegate") / "examples" / "bracket.nc").read_text("ascii")
 
 
-def rs274_output(tmp_path: Path, text: str) -> str:
+def rs274_output(tmp_path: Path, text: str, flags: tuple[str, ...] = ()) -> str:
     """What LinuxCNC's ``rs274 -g`` prints for ``text`` (the independent oracle), stdout then
-    stderr; the test is skipped where rs274 is not installed."""
+    stderr; ``flags`` before ``-g`` (``-b``: the block delete switch on). The test is skipped
+    where rs274 is not installed."""
     import shutil
     import subprocess
 
@@ -91,6 +92,6 @@ def rs274_output(tmp_path: Path, text: str) -> str:
     path.write_text(text)
     # (rs274 keeps its tool table in $HOME/.tool.mmap: a HOME of its own, so that two runs at
     # once do not share it)
-    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
+    run = subprocess.run(["rs274", *flags, "-g", str(path)], capture_output=True, text=True,
                          timeout=30, input="", env={**os.environ, "HOME": str(tmp_path)})
     return run.stdout + run.stderr

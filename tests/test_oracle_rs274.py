@@ -66,10 +66,20 @@ BOTH = [
     "if label used twice, the first a parameter's value", "while label of an if before",
     "repeat label of a do before", "endif label changed inside its block",
     "endif label of a parameter kept",
+    # review 49a, F2 and F8: a condition of comparisons runs its block, a repeat of 1.5 runs;
+    # a closing word of a label no line named (rs274 names the line number first)
+    "endif label changed in an if of a comparison",
+    "endwhile label changed in a loop of a comparison",
+    "endrepeat label changed in a repeat of 1.5",
+    "endif with no if", "endif of another label in an if that runs",
+    # review 49a, F3: the file ends in the skip of a block not run (TG114)
+    "endif of another label in an if not run", "endrepeat of another label in a repeat of 0",
     # a cycle drills along the plane's axis (TG541, every family's rule)
     "G18 cycle without Y",
     # TG412: rs274's own refusals
     "G53 under G2",
+    # review 49a, F8: an o-word only at the start of its line
+    "o-word after a comment", "o-word after a word", "words after an o-word",
     "G53 after a sub whose M73 restores G91",
     "G53 after a sub whose G90 follows its return",
     "G83 without Q",
@@ -158,7 +168,20 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "G53 after a sub whose G91 is in a condition", "G53 after a call in a condition not run",
        "G53 after a sub whose G91 follows a return in a condition",
        "G53 after a sub whose G91 follows its return", "G53 after a G91 in a condition not run",
-       "G53 after M72 restores G90"]
+       "G53 after M72 restores G90",
+       # review 49a, F2: a condition known false, a repeat of 0.5 (half to even) skip their
+       # block; F8: an o-word after a line number, one rs274 passes over in a condition not
+       # run, a closing word of a label recorded before; review 48, c19: a body's M2 ends
+       # the program at the call
+       "endif label changed in an if of a comparison false",
+       "endrepeat label changed in a repeat of 0.5", "o-word after a line number",
+       "o-word after a comment in a condition not run", "endif of a label closed before",
+       "sub whose body ends with M2", "sub whose body ends with M30, no M2 after its call"]
+# faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
+# off (-g) or on (-b -g), not both; tapegate reports no error
+SWITCH = ["endif label changed by a deleted setting",
+          "division by a value a deleted setting gives",
+          "division by a value a deleted setting changes"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
@@ -219,7 +242,11 @@ def test_tg412_says_rs274s_message_after_its_file_and_line(seeds):
 @pytest.mark.parametrize("name", [
     "sub defined twice", "sub defined twice by a computed label", "if label used twice",
     "if label used twice, the first a parameter's value", "while label of an if before",
-    "repeat label of a do before", "endif label changed inside its block"])
+    "repeat label of a do before", "endif label changed inside its block",
+    "endif label changed in an if of a comparison",
+    "endwhile label changed in a loop of a comparison",
+    "endrepeat label changed in a repeat of 1.5", "endif with no if",
+    "endif of another label in an if that runs"])
 def test_tg412_says_rs274s_o_word_message(seeds, name):
     """rs274 names the file and line of a definition (and the file it is in), or the line
     number, before its o-word refusals: tapegate's message begins with the rest."""
@@ -248,7 +275,17 @@ def test_every_seed_is_named_here(seeds):
     named = {"cutter compensation started on an arc", "clean program",
              "G28, G30 and G92 after an arc", "a repeated cycle keeps its Z, R and Q",
              "G76 threading"}
-    assert set(seeds) == set(BOTH) | named | set(RUN)
+    assert set(seeds) == set(BOTH) | named | set(RUN) | set(SWITCH)
+
+
+@pytest.mark.parametrize("name", SWITCH)
+def test_a_fault_of_the_block_delete_switch_is_no_error(seeds, name):
+    s = seeds[name]
+    assert s.rs274_deleting is not None
+    refused = [r for r in (s.rs274, s.rs274_deleting) if not r.ok]
+    assert [r.line for r in refused] == [s.line], (s.rs274, s.rs274_deleting)
+    assert s.errors == []
+    assert s.same
 
 
 @pytest.mark.parametrize("name", RUN)

@@ -1066,10 +1066,11 @@ pub struct Checker {
     linuxcnc_if_ends: Vec<(usize, bool, bool)>,
     /// LinuxCNC: for each block of `linuxcnc_open_flow`, its label as written (`o#1`), its
     /// line, and whether its lines run up to the next o-word line as the checker reads them
-    /// (it opened at the top of the main program, with a condition known true): a closing
-    /// label worked out as the line runs is read with the values of that first run
-    /// (`Checker::linuxcnc_closing`; review 48, F10).
-    linuxcnc_open_at: Vec<(Vec<u8>, usize, bool)>,
+    /// (it opened at the top of the main program, with a condition known true: Some(true);
+    /// known false: Some(false), none of them runs; else None): a closing label worked out
+    /// as the line runs is read with the values of that first run
+    /// (`Checker::linuxcnc_closing_label`; review 48, F10; review 49a, F2).
+    linuxcnc_open_at: Vec<(Vec<u8>, usize, Option<bool>)>,
     /// LinuxCNC: the parameters (by key; empty: any, a call) assigned while a block of
     /// `linuxcnc_open_flow` is open, with their lines (review 48, F10).
     linuxcnc_flow_assigned: Vec<(usize, Vec<u8>)>,
@@ -1081,6 +1082,18 @@ pub struct Checker {
     /// looked up at every condition and loop (a list searched in turn made a program of
     /// 80,000 labels quadratic: review 49a, F5).
     linuxcnc_o_labels: HashMap<Vec<u8>, (u8, usize, bool)>,
+    /// LinuxCNC: every label an o-word line of the file has named so far (a condition, loop,
+    /// definition or call, in the main program or a body), by its name without `o` and
+    /// `<>`, and whether one was worked out from a value not known here (any label then):
+    /// a closing word of a label none named is refused where it surely runs ("undefined
+    /// O-word label"; review 49a, F8).
+    linuxcnc_labels_named: (HashSet<Vec<u8>>, bool),
+    /// LinuxCNC: a condition or loop opened at the top of the main program whose condition
+    /// is known false (its label and line), until an o-word line of its label: rs274 skips
+    /// every line to that one, reading no other (interp_read.cc `read_items`), so a file that
+    /// has none ends in the skip, "File ended with no percent sign or program end" (review
+    /// 49a, F3).
+    linuxcnc_skipping: Option<(Vec<u8>, usize)>,
     /// LinuxCNC: the subroutines the main program surely defines (at its top, before its
     /// end), by name without `o` and `<>`, and their lines: a second definition of one is
     /// rs274's "redefining sub" (review 48, F19). Keyed by the name (review 49a, F5).
@@ -1337,6 +1350,8 @@ impl Checker {
             linuxcnc_open_at: Vec::new(),
             linuxcnc_flow_assigned: Vec::new(),
             linuxcnc_o_labels: HashMap::new(),
+            linuxcnc_labels_named: (HashSet::new(), false),
+            linuxcnc_skipping: None,
             linuxcnc_subs_defined: HashMap::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_distance_unsure: false,

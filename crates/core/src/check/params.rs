@@ -1509,6 +1509,16 @@ impl Checker {
                 }
                 _ => continue,
             };
+            // a setting the block skip deletes (`/#1=5`, or after a `/` inside the block): the
+            // block delete switch is the operator's, on or off at the machine, so the value
+            // after it is the old one or the new and known as neither (`rs274 -g` runs it
+            // with the switch off, `rs274 -b -g` deletes it; review 49a, F4)
+            let value = if b.skip || b.skip_within.is_some_and(|c| w.column > c) {
+                arrived = None;
+                None
+            } else {
+                value
+            };
             if linuxcnc && !set_before.iter().any(|s| s.0 == name) {
                 let then = self
                     .arrival

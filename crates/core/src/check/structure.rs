@@ -296,6 +296,8 @@ impl Checker {
         self.linuxcnc_open_at.clear();
         self.linuxcnc_flow_assigned.clear();
         self.linuxcnc_o_labels.clear();
+        self.linuxcnc_labels_named = (HashSet::new(), false);
+        self.linuxcnc_skipping = None;
         self.linuxcnc_subs_defined.clear();
         self.linuxcnc_mode_unsure = false;
         self.linuxcnc_distance_unsure = false;
@@ -782,16 +784,61 @@ impl Checker {
         }
         // (the condition's own reads run, judged above; the lines inside it may not)
         let main = self.open_definition.is_none();
+        let mut ends_here = false;
         for &(column, kind, text) in b.statements {
+            // (an o-word after a comment or a word is none to rs274: it opens and closes
+            // nothing, and stops the program where the line runs)
+            if self.linuxcnc_o_misplaced(b, column) && kind == Kind::Flow {
+                continue;
+            }
+            if kind == Kind::Flow && main {
+                self.linuxcnc_undefined_label(b, text, column);
+            }
+            // a call that surely runs of a subroutine defined before it whose body surely
+            // ends the program (`o<s> sub` / `M2` / `o<s> endsub` ... `o<s> call`): the main
+            // program ends there, as rs274 reads no line after it (review 48, c19)
+            ends_here |= kind == Kind::Call
+                && main
+                && !b.skip
+                && self.linuxcnc_runs_surely()
+                && !self.main_ended()
+                && self.linuxcnc_call_ends(text);
+            let label = self.linuxcnc_call_label(text);
+            // (the skip of a block known not to run ends at an o-word line of its label; one
+            // whose label is worked out as the line runs, from values a line skipped may have
+            // set here, or a definition, may end it too)
+            if self.linuxcnc_skipping.as_ref().is_some_and(|s| {
+                s.0 == label
+                    || kind != Kind::Flow
+                    || crate::statement::computed_label(&crate::statement::o_label(text))
+            }) {
+                self.linuxcnc_skipping = None;
+            }
+            let named = &mut self.linuxcnc_labels_named;
+            if crate::statement::computed_label(&label) {
+                named.1 = true;
+            } else if !named.1 {
+                named.0.insert(bare_label(&label));
+            }
             if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
                 // (a call may set any parameter, or end the program: F10's first run ends)
                 for e in &mut self.linuxcnc_open_at {
-                    e.2 = false;
+                    if e.2 == Some(true) {
+                        e.2 = None;
+                    }
                 }
                 self.linuxcnc_flow_assigned.push((b.line, Vec::new()));
             }
             match (kind, main) {
-                (Kind::Flow, true) => self.linuxcnc_main_flow(text, b.line, column),
+                (Kind::Flow, true) => {
+                    let top = self.linuxcnc_open_flow.is_empty();
+                    self.linuxcnc_main_flow(text, b.line, column);
+                    if let [(_, at, Some(false))] = self.linuxcnc_open_at.as_slice() {
+                        if top && *at == b.line && !b.skip {
+                            self.linuxcnc_skipping = Some((label, b.line));
+                        }
+                    }
+                }
                 (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
                 // the subroutine may set another feed mode, or restore the caller's
                 (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
@@ -801,6 +848,7 @@ impl Checker {
                 _ => {}
             }
         }
+        self.surely_ended |= ends_here;
         // (the block of a conditional M2/M30 closed: the lines after run where it did not)
         if self
             .linuxcnc_end_depth
@@ -1188,6 +1236,98 @@ impl Checker {
         crate::expr::linuxcnc_value(&tree, expression, &param).ok()?
     }
 
+    /// The value of a LinuxCNC condition (`[#1 LT 3]`, `[[#1 GE 2] AND [#2 EQ 0]]`) where the
+    /// checker knows the parameters it reads: [`Checker::linuxcnc_value_of`] with rs274ngc's
+    /// comparisons and logical operators (interp_execute.cc `execute_binary2`, 1.0 for true
+    /// and 0.0 for false; interp_internal.cc `precedence`: `AND OR XOR` below `EQ NE GT GE
+    /// LT LE`, below `+ - * / MOD **`, each level from the left). Split at the last operator
+    /// of the lowest level outside brackets, each side worked out alone. A comparison of two
+    /// values less than 1.1e-4 apart and not equal is not known: LinuxCNC 2.9 (`rs274 -g`)
+    /// takes values 0.0001 apart as equal and compares GE and LE exactly, later versions use
+    /// 1e-6 and compare GE and LE within it (commit 014777a, interp_internal.hh
+    /// `TOLERANCE_EQUAL`). None for anything else it cannot work out (a function, MOD, `**`,
+    /// a word it does not know).
+    #[inline(never)]
+    fn linuxcnc_condition_value(&self, expression: &[u8]) -> Option<f64> {
+        let e = expression.trim_ascii();
+        let mut depth = 0usize;
+        // (the lowest level's last operator: start, end, level, name)
+        let mut split: Option<(usize, usize, u8, [u8; 3])> = None;
+        let mut i = 0;
+        while i < e.len() {
+            match e[i] {
+                b'[' => depth += 1,
+                b']' => depth = depth.checked_sub(1)?,
+                b'<' => i += e[i..].iter().position(|&c| c == b'>')?,
+                c if c.is_ascii_alphabetic() => {
+                    let end = e[i..]
+                        .iter()
+                        .position(|c| !c.is_ascii_alphabetic())
+                        .map_or(e.len(), |p| i + p);
+                    let name = e[i..end].to_ascii_lowercase();
+                    let level = match name.as_slice() {
+                        b"and" | b"or" | b"xor" => 2,
+                        b"eq" | b"ne" | b"gt" | b"ge" | b"lt" | b"le" => 3,
+                        // (MOD, and a function before its bracket, work out to None below)
+                        _ => 9,
+                    };
+                    if depth == 0 && level < 9 && split.is_none_or(|s| level <= s.2) {
+                        let mut op = [0u8; 3];
+                        op[..name.len()].copy_from_slice(&name);
+                        split = Some((i, end, level, op));
+                    }
+                    i = end;
+                    continue;
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        let Some((start, end, _, op)) = split else {
+            if let [b'[', inner @ .., b']'] = e {
+                // (one bracket around it all, `[..]` not `[..] + [..]`: its inside, which may
+                // hold the operators)
+                let mut depth = 0usize;
+                let whole = inner.iter().all(|&c| {
+                    match c {
+                        b'[' => depth += 1,
+                        b']' if depth == 0 => return false,
+                        b']' => depth -= 1,
+                        _ => {}
+                    }
+                    true
+                });
+                if whole {
+                    return self.linuxcnc_condition_value(inner);
+                }
+            }
+            return self.linuxcnc_value_of(e);
+        };
+        let a = self.linuxcnc_condition_value(&e[..start])?;
+        let b = self.linuxcnc_condition_value(&e[end..])?;
+        let truth = |t: bool| if t { 1.0 } else { 0.0 };
+        let diff = (a - b).abs();
+        let compared = matches!(
+            &op,
+            b"eq\0" | b"ne\0" | b"gt\0" | b"ge\0" | b"lt\0" | b"le\0"
+        );
+        if compared && diff > 0.0 && diff < 1.1e-4 {
+            return None;
+        }
+        Some(match &op {
+            b"and" => truth(a != 0.0 && b != 0.0),
+            b"or\0" => truth(a != 0.0 || b != 0.0),
+            b"xor" => truth((a != 0.0) != (b != 0.0)),
+            b"eq\0" => truth(diff == 0.0),
+            b"ne\0" => truth(diff != 0.0),
+            b"gt\0" => truth(a > b),
+            b"ge\0" => truth(a >= b),
+            b"lt\0" => truth(a < b),
+            b"le\0" => truth(a <= b),
+            _ => return None,
+        })
+    }
+
     /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a value the
     /// checker knows holds a fraction (`#1=100.5`, `o[100.5] call`, `o100.5 call`): rs274
     /// stops there, "Non integer value for integer" (`read_o` reads the label as an integer;
@@ -1562,13 +1702,13 @@ impl Checker {
     fn linuxcnc_main_flow(&mut self, text: &[u8], line: usize, column: usize) {
         let keyword = crate::statement::o_keyword(text);
         // (whether the innermost block's lines ran up to this one: no o-word line since it)
-        let runs = self.linuxcnc_open_at.last().is_some_and(|e| e.2);
+        let ran = self.linuxcnc_open_at.last().and_then(|e| e.2);
         for e in &mut self.linuxcnc_open_at {
-            e.2 = false;
+            e.2 = None;
         }
         // (a computed label, `o#1 endwhile`, by its value where rs274 reads the line: matched
         // to the `o5 while` of #1=5, `rs274 -g`)
-        let label = self.linuxcnc_closing_label(text, keyword.as_deref(), runs, (line, column));
+        let label = self.linuxcnc_closing_label(text, keyword.as_deref(), ran, (line, column));
         let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
         let mut all_ended = None;
         if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label) {
@@ -1597,7 +1737,11 @@ impl Checker {
         linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
         if open > depth {
-            let runs = depth == 0 && !self.main_ended() && self.linuxcnc_body_runs(text);
+            let runs = if depth == 0 && !self.main_ended() {
+                self.linuxcnc_body_runs(text)
+            } else {
+                None
+            };
             let written = crate::statement::o_label(text);
             self.linuxcnc_open_at.push((written, line, runs));
         } else {
@@ -1615,6 +1759,115 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: whether the o-word statement at `column` of block `b` stands after a comment
+    /// or a word other than a line number (`(c) o5 if [1]`, `#1=1 o5 if [1]`), which rs274
+    /// does not read as an o-word: `read_items` (interp_read.cc) reads one only at the start
+    /// of the line, after a block delete `/` and an N word, and elsewhere refuses its `o`,
+    /// "Bad character 'o' used"; after the o-word's label, keyword and brackets only a
+    /// comment may follow, else "Unexpected character after O-word". Either refused (TG412)
+    /// where the line surely runs (the main program's, no condition or loop open, no block
+    /// delete): rs274 reads no line of a condition it skips but its o-words (`rs274 -g`;
+    /// review 49a, F8).
+    #[inline(never)]
+    fn linuxcnc_o_misplaced(&mut self, b: &BlockView<'_>, column: usize) -> bool {
+        let before = if b.comments.iter().any(|c| c.0 < column) {
+            Some("a comment")
+        } else {
+            let word = b
+                .words
+                .iter()
+                .any(|w| w.column < column && w.letter != b'N');
+            word.then_some("a word")
+        };
+        let after = b.words.iter().find(|w| w.column > column);
+        if before.is_none() && after.is_none() {
+            return false;
+        }
+        if !b.skip && self.linuxcnc_runs_surely() && !self.main_ended() {
+            let shown = |from: usize| {
+                let text = b.text.get(from.saturating_sub(1)..).unwrap_or_default();
+                String::from_utf8_lossy(text).trim_end().to_owned()
+            };
+            let (message, at) = match (before, after) {
+                (Some(what), _) => (
+                    format!(
+                        "Bad character 'o' used (rs274ngc): rs274 reads an o-word only at the \
+                         start of its line (after a block delete / and a line number), and {what} \
+                         stands before '{}' (interp_read.cc read_items); write the o-word on a \
+                         line of its own",
+                        shown(column)
+                    ),
+                    column,
+                ),
+                (None, Some(w)) => (
+                    format!(
+                        "Unexpected character after O-word (rs274ngc): after an o-word's \
+                         label, keyword and brackets rs274 reads only a comment on its line, \
+                         and '{}' follows (interp_read.cc read_items); write it on a line of \
+                         its own",
+                        shown(w.column)
+                    ),
+                    w.column,
+                ),
+                (None, None) => return false,
+            };
+            self.report(Rule::LinuxCncRefuses, message, b.line, at);
+        }
+        before.is_some()
+    }
+
+    /// LinuxCNC: a closing word of the main program (`o2 endif`, `else`, `elseif`,
+    /// `endwhile`, `endrepeat`, `break`, `continue`) whose label no o-word line before it
+    /// named, where it surely runs (no condition or loop open, or one opened at the top of the
+    /// main program whose lines ran up to it; no block delete): rs274 finds no label recorded
+    /// and stops, "undefined O-word label" (interp_o_word.cc `convert_control_functions`,
+    /// `control_find_oword`; `rs274 -g`; review 49a, F8).
+    #[inline(never)]
+    fn linuxcnc_undefined_label(&mut self, b: &BlockView<'_>, text: &[u8], column: usize) {
+        let keyword = crate::statement::o_keyword(text);
+        let closing = matches!(
+            keyword.as_deref(),
+            Some(
+                b"endif"
+                    | b"endwhile"
+                    | b"endrepeat"
+                    | b"else"
+                    | b"elseif"
+                    | b"break"
+                    | b"continue"
+            )
+        );
+        if !closing || b.skip || self.main_ended() || self.linuxcnc_labels_named.1 {
+            return;
+        }
+        let runs = match self.linuxcnc_open_at.as_slice() {
+            [] => true,
+            [only] => only.2 == Some(true),
+            _ => false,
+        };
+        // (a label worked out as the line runs, of a block open: read with the values its
+        // block set, Checker::linuxcnc_closing_label)
+        let written = crate::statement::computed_label(&crate::statement::o_label(text));
+        let label = self.linuxcnc_call_label(text);
+        if !runs
+            || written && !self.linuxcnc_open_flow.is_empty()
+            || crate::statement::computed_label(&label)
+            || self.linuxcnc_labels_named.0.contains(&bare_label(&label))
+        {
+            return;
+        }
+        let statement = String::from_utf8_lossy(text.trim_ascii()).into_owned();
+        let message = format!(
+            "undefined O-word label (rs274ngc): '{statement}' closes the label {}, which no \
+             o-word line before it names, so rs274 has no condition or loop of it to close \
+             (\"{}: undefined O-word label: '{statement}'\"; interp_o_word.cc \
+             control_find_oword); close the block with the label it opened with",
+            String::from_utf8_lossy(&label),
+            b.line,
+        );
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+    }
+
     /// LinuxCNC: the label of the main program's o-word flow statement `text` (`keyword`) as
     /// rs274 reads it where the line runs ([`Checker::linuxcnc_call_label`]). A closing word
     /// whose label is worked out as the line runs (`o#1 endwhile`) is read with the values
@@ -1623,14 +1876,16 @@ impl Checker {
     /// O-word label"). Where no parameter its label reads was set since the block it closes
     /// opened (nor a call made), its value is that block's, which it closes; where one was
     /// and the checker knows the new value, refused where the block's lines surely ran up to
-    /// it (it opened at the top of the main program with a condition known true, `runs`, and
-    /// no o-word line came since) and no block of that label was ever recorded; else said
-    /// (TG140) and taken as closing the block of its label as written.
+    /// it (it opened at the top of the main program with a condition known true, `ran` Some
+    /// true, and no o-word line came since) and no block of that label was ever recorded;
+    /// where they surely did not (a condition known false, `ran` Some false), none of them
+    /// set anything and it closes the block; else said (TG140) and taken as closing the block
+    /// of its label as written.
     fn linuxcnc_closing_label(
         &mut self,
         text: &[u8],
         keyword: Option<&[u8]>,
-        runs: bool,
+        ran: Option<bool>,
         (line, column): (usize, usize),
     ) -> Vec<u8> {
         let label = self.linuxcnc_call_label(text);
@@ -1668,13 +1923,18 @@ impl Checker {
         if !closing {
             return label; // (a `while` of another value opens a loop)
         }
+        let innermost = at + 1 == self.linuxcnc_open_flow.len();
+        if innermost && ran == Some(false) {
+            return open; // (the lines that set it never ran: review 49a, F2)
+        }
+        let runs = ran == Some(true);
         let shown = |l: &[u8]| String::from_utf8_lossy(l).into_owned();
         let statement = shown(text.trim_ascii());
         let known = !crate::statement::computed_label(&label);
         let bare = bare_label(&label);
         if known
             && runs
-            && at + 1 == self.linuxcnc_open_flow.len()
+            && innermost
             && at == 0
             && !self.main_ended()
             && !self.linuxcnc_o_labels.contains_key(&bare)
@@ -1703,26 +1963,30 @@ impl Checker {
     }
 
     /// LinuxCNC: whether the lines of the block the main program's o-word `text` opens run
-    /// (as far as the checker reads them in order): a `do`, an `if` or `while` whose
-    /// condition, a `repeat` whose count (rounded to the nearest whole number, interp_o_word.cc
-    /// `round_to_int`), is a value the checker knows, true or above zero.
-    fn linuxcnc_body_runs(&self, text: &[u8]) -> bool {
+    /// (as far as the checker reads them in order): a `do` does, an `if` or `while` whose
+    /// condition ([`Checker::linuxcnc_condition_value`]), a `repeat` whose count (rounded to
+    /// the nearest whole number, half to even: interp_o_word.cc `round_to_int`, `nearbyint`),
+    /// is a value the checker knows does where it is true or above zero and does not where
+    /// not; None for any other.
+    fn linuxcnc_body_runs(&self, text: &[u8]) -> Option<bool> {
         let rest = &text[crate::statement::o_label_len(text).min(text.len())..];
         let rest = rest.trim_ascii_start();
         let letters = rest.iter().take_while(|c| c.is_ascii_alphabetic()).count();
         let (keyword, condition) = rest.split_at(letters);
         let keyword = keyword.to_ascii_lowercase();
         if keyword == b"do" {
-            return true;
+            return Some(true);
         }
         if !matches!(keyword.as_slice(), b"if" | b"while" | b"repeat") {
-            return false;
+            return None;
         }
-        match self.linuxcnc_value_of(condition.trim_ascii()) {
-            Some(v) if keyword == b"repeat" => v.round() >= 1.0,
-            Some(v) => v != 0.0,
-            None => false,
-        }
+        let value = self.linuxcnc_condition_value(condition.trim_ascii())?;
+        // (nearbyint: half to even, `repeat [0.5]` runs no time, `rs274 -g`)
+        Some(if keyword == b"repeat" {
+            value.round_ties_even() >= 1.0
+        } else {
+            value != 0.0
+        })
     }
 
     /// LinuxCNC: the main program's `if`, `while`, `repeat` or `do` whose label rs274 records
@@ -1895,6 +2159,9 @@ impl Checker {
                 continue;
             }
             let flow = !self.linuxcnc_definition_flow.is_empty() || body.3 & BODY_MAY_RETURN != 0;
+            if w.letter == b'M' && matches!(value, Some(2.0 | 30.0)) && !flow && !b.skip {
+                body.3 |= BODY_ENDS;
+            }
             if w.letter == b'G' && matches!(value, Some(90.0 | 91.0)) && !flow {
                 body.3 &= !BODY_G91;
                 if value == Some(91.0) {
@@ -1928,6 +2195,22 @@ impl Checker {
                 };
             }
         }
+    }
+
+    /// LinuxCNC: whether the call statement `text` (`o<s> call`, its label known) calls a
+    /// subroutine defined before it whose body ends the program ([`BODY_ENDS`]).
+    #[inline(never)]
+    fn linuxcnc_call_ends(&self, text: &[u8]) -> bool {
+        if crate::statement::o_keyword(text).as_deref() != Some(b"call".as_slice()) {
+            return false;
+        }
+        let label = self.linuxcnc_call_label(text);
+        !crate::statement::computed_label(&label)
+            && self
+                .linuxcnc_bodies
+                .iter()
+                .rfind(|e| e.0 == label)
+                .is_some_and(|e| e.3 & BODY_ENDS != 0)
     }
 
     /// LinuxCNC: whether the main program's call statement `text` leaves the feed mode as it
@@ -2423,6 +2706,17 @@ impl Checker {
                 ));
             }
             self.report(Rule::NoProgramEnd, message, at, column);
+        } else if let Some((label, at)) = self.linuxcnc_skipping.take() {
+            // (the skip of a block known not to run reached the end: no M2 read in it runs)
+            let label = String::from_utf8_lossy(&label);
+            let message = format!(
+                "File ended with no percent sign or program end (rs274ngc): the {label} block \
+                 on line {at} does not run (its condition false, or its count below one), and \
+                 rs274 skips every line after it to an o-word line of {label}, which the file \
+                 does not have, so no M2/M30 of it runs (interp_read.cc read_items reads only \
+                 o-word lines while it skips)"
+            );
+            self.report(Rule::NoProgramEnd, message, line, 1);
         } else if self.ended_line == 0 && self.sub_ended || sub_return {
             // a subprogram or macro: it returns to its caller, no M02/M30 needed (a LinuxCNC
             // subroutine file returning at an endsub of another label: TG138 there)
@@ -2885,6 +3179,10 @@ pub(super) const BODY_RETURNED: u8 = 8;
 pub(super) const BODY_MAY_RETURN: u8 = 16;
 /// Its last G90/G91 outside its conditions and loops (before a return ends it) is G91.
 pub(super) const BODY_G91: u8 = 32;
+/// An M2 or M30 outside its conditions and loops, before any return and not deleted by the
+/// block skip: a call of it ends the program there (`rs274 -g` reads no line after the call;
+/// review 48, c19).
+pub(super) const BODY_ENDS: u8 = 64;
 
 /// An o-word label's name as rs274ngc keys it (interp_read.cc `read_o`: a `<name>`'s text,
 /// a number's `%d`): `o100` and `o<100>` are `100`.
