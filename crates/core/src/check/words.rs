@@ -177,6 +177,13 @@ impl Checker {
             self.seen = seen;
             self.readable.reserve(b.words.len());
             if self.plain_block {
+                if plain_keys {
+                    for w in b.words {
+                        let value = self.plain_word_or_kept(w, line, &mut context);
+                        self.readable.push(value);
+                    }
+                    return;
+                }
                 for w in b.words {
                     let value = self.format_or_kept(w, line, &mut context, plain_keys);
                     self.readable.push(value);
