@@ -138,11 +138,20 @@ impl Drawn {
 
 impl Checker {
     /// [`Checker::block`], and the backplot's facts of it where the path is recorded.
+    #[inline(always)]
     pub(super) fn drawn_block(&mut self, b: &BlockView<'_>) {
         if !self.record_path {
             self.read_block(b);
             return;
         }
+        self.recorded_block(b);
+    }
+
+    /// [`Checker::drawn_block`] where the path is recorded, out of line: inlined, its values
+    /// made [`Checker::block`] save and restore six registers at every block of a check that
+    /// records none (about 16 instructions a block).
+    #[inline(never)]
+    fn recorded_block(&mut self, b: &BlockView<'_>) {
         let named = Named::of(b.words);
         self.read_block(b);
         self.drawn.note(b.line, &named, &self.machine.state);

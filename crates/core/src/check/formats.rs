@@ -501,10 +501,16 @@ impl Checker {
     /// same key (a debug build asks `format_key` too and asserts it).
     #[inline]
     fn plain_format_key(w: &Word<'_>, context: u64) -> Option<u64> {
-        let letter = w.letter;
-        if !letter.is_ascii_uppercase() || !w.index.is_empty() {
+        if !w.letter.is_ascii_uppercase() || !w.index.is_empty() {
             return None;
         }
+        Checker::shape_format_key(w, context)
+    }
+
+    /// [`Checker::plain_format_key`] of a word whose letter is A-Z and that has no index.
+    #[inline(always)]
+    fn shape_format_key(w: &Word<'_>, context: u64) -> Option<u64> {
+        let letter = w.letter;
         let m = w.value?;
         let n = w.number.len();
         // the significant digits: the number's digits less its leading zeros
@@ -560,28 +566,52 @@ impl Checker {
         plain_keys: bool,
     ) -> Option<Dec> {
         if plain_keys && !cfg!(debug_assertions) {
-            if let Some(key) = Checker::plain_format_key(w, *context) {
-                let place = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 54) as usize % KEPT;
-                let (kept, _, scale) = &self.format_table.clean[place];
-                if *kept == key {
-                    let read = match (w.value, w.point) {
-                        (Some(m), true) => {
-                            Some(Dec::from_u64(m, (w.number.len() - w.dot - 1) as u32))
-                        }
-                        (Some(m), false) if *scale != NO_SCALE => {
-                            Some(Dec::from_u64(m, u32::from(*scale)))
-                        }
-                        _ => None,
-                    };
-                    match read {
-                        Some(value) if w.sign == b"-" => return Some(-value),
-                        Some(value) => return Some(value),
-                        None => {}
-                    }
-                }
+            if let Some(value) =
+                Checker::plain_format_key(w, *context).and_then(|key| self.kept_read(w, key))
+            {
+                return Some(value);
             }
         }
         self.format_or_kept_out(w, line, context, plain_keys)
+    }
+
+    /// [`Checker::format_or_kept`] of a word of a plain block ([`Checker::plain_block`]: a
+    /// letter A-Z without index or expression) whose words' keys are their own (`plain_keys`):
+    /// its key with no test of its letter and index, nor of `plain_keys` at each word (about
+    /// 6 instructions a word of a CAM program's kept block).
+    #[inline(always)]
+    pub(super) fn plain_word_or_kept(
+        &mut self,
+        w: &Word<'_>,
+        line: usize,
+        context: &mut u64,
+    ) -> Option<Dec> {
+        debug_assert!(w.letter.is_ascii_uppercase() && w.index.is_empty());
+        if !cfg!(debug_assertions) {
+            if let Some(value) =
+                Checker::shape_format_key(w, *context).and_then(|key| self.kept_read(w, key))
+            {
+                return Some(value);
+            }
+        }
+        self.format_or_kept_out(w, line, context, true)
+    }
+
+    /// The value of plain word `w` where a word of its `key` was kept clean and the value is
+    /// read from its scan ([`Checker::format_or_kept`]), else None.
+    #[inline(always)]
+    fn kept_read(&self, w: &Word<'_>, key: u64) -> Option<Dec> {
+        let place = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 54) as usize % KEPT;
+        let (kept, _, scale) = &self.format_table.clean[place];
+        if *kept != key {
+            return None;
+        }
+        let value = match (w.value, w.point) {
+            (Some(m), true) => Dec::from_u64(m, (w.number.len() - w.dot - 1) as u32),
+            (Some(m), false) if *scale != NO_SCALE => Dec::from_u64(m, u32::from(*scale)),
+            _ => return None,
+        };
+        Some(if w.sign == b"-" { -value } else { value })
     }
 
     /// [`Checker::format_or_kept`] in full: the key, the kept verdict or the rules.

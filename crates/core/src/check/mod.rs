@@ -1762,7 +1762,9 @@ impl Checker {
     }
 
     /// Check one block (after the tokenizer's reading), and keep the backplot's facts of it
-    /// where the path is recorded.
+    /// where the path is recorded. (Out of line: inlined into [`Checker::check_words`], it
+    /// kept that out of its callers, a call and the view's copy more at every line.)
+    #[inline(never)]
     pub fn block(&mut self, b: &BlockView<'_>) {
         debug_assert_eq!(
             b.ascii,

@@ -4,6 +4,7 @@
 //! format rules of each word in turn and keeps what each word's value is read as.
 
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
+use crate::decimal::Dec;
 use crate::dialect;
 use crate::lex::Family;
 use crate::modal::{bit, Units};
@@ -172,13 +173,32 @@ impl Checker {
         let place = key.map_or(0, CleanBlocks::place);
         let kept = key.is_some_and(|key| self.clean_blocks.0[place] == key);
         if kept && !cfg!(debug_assertions) {
-            // a kept block's words are letters A-Z without index or expression (its addresses
-            // key): each is only read (a debug build walks the loop below, which asks the
-            // rules of a kept block as well)
+            // a kept block's words are letters A-Z without index (its addresses key): each is
+            // only read, a word with an expression as the loop below reads it (a debug build
+            // walks the loop, which asks the rules of a kept block as well); a plain block's
+            // words have none, and are read with no test of each
             self.seen = seen;
             self.readable.reserve(b.words.len());
+            if self.plain_block {
+                if plain_keys {
+                    for w in b.words {
+                        let value = self.plain_word_or_kept(w, line, &mut context);
+                        self.readable.push(value);
+                    }
+                    return;
+                }
+                for w in b.words {
+                    let value = self.format_or_kept(w, line, &mut context, plain_keys);
+                    self.readable.push(value);
+                }
+                return;
+            }
             for w in b.words {
-                let value = self.format_or_kept(w, line, &mut context, plain_keys);
+                let value = if w.expression.is_empty() {
+                    self.format_or_kept(w, line, &mut context, plain_keys)
+                } else {
+                    self.expression_value(w, line, false)
+                };
                 self.readable.push(value);
             }
             return;
@@ -266,15 +286,7 @@ impl Checker {
             let extended =
                 !w.index.is_empty() && dialect::extended_address(self.config.family, letter);
             if !w.expression.is_empty() || !letter.is_ascii_uppercase() || extended {
-                let mut known = (w.index.is_empty() && letter.is_ascii_uppercase())
-                    .then(|| self.constant(w.expression))
-                    .flatten();
-                // (a word reading a value a jump's arrival set aside: the value where no jump
-                // arrives, for the limits of its block; params.rs. Its word's tests out of
-                // line: a program scaling its axes by parameters has two such words a line)
-                if known.is_none() && self.arrival.is_some() {
-                    known = self.arrival_word(w, line, extended);
-                }
+                let known = self.expression_value(w, line, extended);
                 self.readable.push(known);
                 continue;
             }
@@ -296,12 +308,30 @@ impl Checker {
         }
     }
 
+    /// The value of a word that is not read by its format: one with an expression, an
+    /// address other than a letter, or an `extended` address (S2=30000): a letter's
+    /// expression evaluated where its value is known here, else the value where no jump
+    /// arrives ([`Checker::arrival_word`]; its word's tests out of line: a program scaling
+    /// its axes by parameters has two such words a line).
+    #[inline(always)]
+    fn expression_value(&mut self, w: &Word<'_>, line: usize, extended: bool) -> Option<Dec> {
+        let mut known = (w.index.is_empty() && w.letter.is_ascii_uppercase())
+            .then(|| self.constant(w.expression))
+            .flatten();
+        if known.is_none() && self.arrival.is_some() {
+            known = self.arrival_word(w, line, extended);
+        }
+        known
+    }
+
     /// The key of the rules of a block's words that read only their places, letters and
     /// addresses as written (TG102, TG124, TG125, TG130-TG133, TG137: case, alignment, order,
     /// repeats, several G words, addresses outside the classification; TG206's index, none
     /// here): the addresses of its words as written, one byte each (the last lowest), and whether the plane is
-    /// G18 or G19 (the order of I J K). None -- its rules asked -- for a block of more than
-    /// seven words, or with a word that has an index or an expression, an address other than
+    /// G18 or G19 (the order of I J K). A word's expression (`X[#1*2]`, `Y#<yscale>`) is
+    /// no input of those rules: a block of such words has the key of its addresses. None --
+    /// its rules asked -- for a block of more than seven words, or with a word that has an
+    /// index, an address other than
     /// a letter, a letter written twice (whether that repeat is a macro call's arguments reads
     /// the G word's number) or a letter the profile's classification lacks (whether it is a
     /// macro call's argument, likewise); none at all where verdicts are not kept
@@ -324,7 +354,6 @@ impl Checker {
             let letter = w.letter;
             if !letter.is_ascii_uppercase()
                 || !w.index.is_empty()
-                || !w.expression.is_empty()
                 || letters & bit(letter) != 0
                 || (has_formats && self.format_in(letter, Units::Metric).is_none())
             {
@@ -646,11 +675,15 @@ mod tests {
             assert_ne!(key("G01 X1. Y2.", 17), key(other, 17), "{other}");
         }
         assert_ne!(key("G02 X1. I2.", 17), key("G02 X1. I2.", 18));
-        // a repeat, an index, an expression, ':' or '#', an unclassified letter, eight words
+        // a word's expression is no input of the rules of its address: the key of its
+        // addresses
+        assert_eq!(key("G01 X[1+2]", 17), key("G01 X1.", 17));
+        assert_eq!(key("G01 X#1 Y[#<y>*2]", 17), key("G01 X1. Y2.", 17));
+        // a repeat, an index, ':' or '#', an unclassified letter, eight words
         for none in [
             "G01 X1. X2.",
             "G01 X4=1.",
-            "G01 X[1+2]",
+            "G01 X[1] X[2]",
             ":10 G01",
             "#1=2",
             "G01 U1.",
@@ -658,6 +691,18 @@ mod tests {
         ] {
             assert_eq!(key(none, 17), None, "{none}");
         }
+    }
+
+    /// A block whose addresses' rules found nothing before is only read, its words with an
+    /// expression too: the value of `X#<c>`, where `X#<b>` of the same addresses was kept,
+    /// still goes to the travel (LinuxCNC, X -500 to 500: X from -400 to 700 spans 1100).
+    #[test]
+    fn a_kept_block_s_expressions_are_read() {
+        let text = program(
+            "#<a> = -400.\n#<b> = 300.\n#<c> = 700.\nG21 G90 G00 X#<a>\nX#<b>\nX#<c>\nX#<b>",
+        );
+        let linuxcnc = of_family(Family::LinuxCnc);
+        assert_eq!(fired(linuxcnc, &text, Rule::TravelExceeded), [(7, 1)]);
     }
 
     use super::super::testing::{findings, fired, iso_mill, of_family, program};
