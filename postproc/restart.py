@@ -489,8 +489,8 @@ class _Planner:
                               "highest point the tool went to) is not known")
         if walk.conflict is not None:
             at, message = walk.conflict
-            raise self.refuse(f"line {at} holds two codes of one modal group ({message}, TG304: "
-                              "see tapegate check): which of them the control takes, or "
+            raise self.refuse(f"line {at} holds two codes of one modal group ({message}, TG304 "
+                              "or TG308: see tapegate check): which of them the control takes, or "
                               "whether it alarms there, tapegate does not know, so the modal "
                               "state after that block is not known either; write one code of "
                               "the group in the block")

@@ -133,6 +133,9 @@ _example("TG128",
          "fanuc-mill")
 # a FANUC skips the text from the first % to the next LF (B-63524EN/01): a title there, or the
 # program number, is not read
+# a Haas or Okuma: ISO 6983-1 refuses the text, no source says the control alarms on it
+_example("TG137", "%PART 7\nO1\nG20 G90\nM30\n%\n", "%(PART 7)\nO1\nG20 G90\nM30\n%\n",
+         "haas-mill")
 _example("TG129",
          "% PART A REV 2\nO1\nG21 G90\nM30\n%\n",
          "%\nO1 (PART A REV 2)\nG21 G90\nM30\n%\n",
@@ -189,6 +192,9 @@ _example("TG301", P + "N2 G123\n" + E, P + "N2 G01 X1 F100\n" + E, "pm322-eia")
 _example("TG302", P + "N2 M12\n" + E, P + "N2 M09\n" + E)
 _example("TG303", P + "N2 G25\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG304", P + "N2 G00 G01 X1 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
+# a FANUC's coolant on and off in one block: no source says the control alarms
+_example("TG308", "%\nO1\nG21 G90 G00 X0 M08 M09\nM30\n%\n",
+         "%\nO1\nG21 G90 G00 X0 M08\nM09\nM30\n%\n", "fanuc-mill")
 _example("TG306",
          "G21 G90 G0 X0\nG130 X1\nM2\n",
          "G21 G90 G0 X0\nG1 X1 F100\nM2\n",
@@ -377,13 +383,35 @@ SOURCES = {
              "block only (Programming Manual Fundamentals). A Fanuc or Haas reads a '/' in the "
              "middle of a block (skipping from it to the end of the block with the switch on): "
              "TG128 there, not this error.",
+    "TG137": "ISO 6983-1 clause 4 refuses words before the first end of block and an "
+             "identification with letters outside parentheses (TG111, TG112). On a Haas no "
+             "source at hand says what the control does with the text after the first %: the "
+             "NGC mill manual says only that % begins and ends a program written in a text "
+             "editor (Mill Operator's Manual, NGC, 2017, 5.3.1); no Okuma source at hand speaks "
+             "of it either. Issue 32: what tapegate does not know is a warning, so a warning "
+             "naming the maker, where a FANUC (which skips the text: TG129) and the strict ISO "
+             "profiles (TG111/TG112, errors) differ.",
+    "TG308": "Not an error (issue 32, severity by evidence): ISO 6983-1 Annex E wants one code "
+             "of a modal group per block (TG304), but no FANUC or SINUMERIK source at hand "
+             "says the control alarms on two M codes of one group: the FANUC CNC hands the "
+             "M codes it does not decode to the builder's PMC ladder (0i-F/30i-B Operator's "
+             "Manuals, \"Auxiliary function\"), the SINUMERIK its M functions to the PLC "
+             "(Programming Manual Fundamentals, \"M functions\"), and which of the two the "
+             "machine takes is the builder's. Searched and not found: FANUC's multiple M "
+             "commands in a block (parameter 3404, M3B) and the SINUMERIK's number of M "
+             "functions a block. The modal state after the block is not known, so a restart "
+             "after it is refused all the same (restart: TG304's reason). Not on a Haas (its "
+             "NGC manual allows one M code a line: TG304) nor LinuxCNC (rs274 \"Two m codes "
+             "used from same modal group\": TG304), nor an Okuma (its List of M Codes, 4203-E, "
+             "names each code's group: TG304, though no alarm is quoted), nor for the program "
+             "stops (TG304).",
     "TG129": "FANUC Series 16i/18i/160i/180i-TB Operator's Manual (B-63524EN/01), 8, memory "
              "card file format: \"In a read operation, data between the first % and the next "
              "LF is skipped\"; FANUC Fast Ethernet / Fast Data Server Operator's Manual "
              "(B-64014EN/03), 2.5: the leader section up to the first end of block may hold a "
              "title. A warning: the control reads on, without what stood there (an O number "
-             "there is lost). Not on a Haas (no Haas source says so) nor the strict ISO "
-             "profiles: TG111/TG112 there.",
+             "there is lost). Not on a Haas (no Haas source says so; TG137 there) nor the "
+             "strict ISO profiles: TG111/TG112 there.",
     "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
              "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
              "Manuals, \"Custom macro\"): the eleventh is the error.",
@@ -487,17 +515,26 @@ SOURCES = {
              "jump markers\"); GOTOC does not alarm and is not checked.",
     "TG304": "ISO 6983-1 Annex E (one code of a modal group per block). Haas: two G codes of "
              "one group may not stand in one block (Mill Operator's Manual, NGC, 2017, "
-             "\"Programming\" and \"G-codes\"). FANUC: no page at hand says what a 0i or 30i "
-             "does with two; the standard's error stands. HEIDENHAIN ISO "
+             "\"Programming\" and \"G-codes\"; its M-code chapter allows one M code a line). "
+             "FANUC: no page at hand says what a 0i or 30i does with two G codes of a group; "
+             "the standard's error stands. Two M codes of a group on a FANUC or SINUMERIK "
+             "are TG308, a warning: no source at hand shows an alarm (searched: FANUC's "
+             "multiple M commands in a block, parameter 3404 M3B, and SINUMERIK's M functions "
+             "a block; no page found). The group of program stops (M00 M01 M02 M30, LinuxCNC's "
+             "M60) stays TG304 everywhere: which stop it makes decides whether the program "
+             "goes on. LinuxCNC: rs274 \"Two m codes used from same modal group\". HEIDENHAIN ISO "
              "applies a G90 or G91 to the coordinates after it, so both may stand in one block "
              "(TNC 426/425 ISO manual: \"G02 G91 X+5 G90 Y-5\"): no TG304 there.",
     "TG307": "Not an error: a code the profile does not list may be the machine's. Fanuc: the "
              "CNC decodes M00 M01 M02 M30 M98 M99 M198 (and M codes its parameters make calls), "
              "the rest go to the machine builder's PMC ladder (0i-F/30i-B Operator's Manuals, "
-             "\"Auxiliary function\"); SINUMERIK hands M functions it does not decode to the "
-             "PLC (Programming Manual Fundamentals, \"M functions\"); LinuxCNC runs M codes its "
-             "configuration remaps or provides (M100-M199 in USER_M_PATH), and G codes of "
-             "G0-G99.9 its tables leave blank where the configuration remaps them (Remap "
+             "\"Auxiliary function\"); a Haas is its own builder: its M codes are the NGC manual's "
+             "list, which the profile holds, and the manual does not say what the control does "
+             "with one it lacks (Mill Operator's Manual, NGC, 2017, \"M-codes\"), so the "
+             "message says that, not FANUC's; SINUMERIK hands M functions it does not decode "
+             "to the PLC (Programming Manual Fundamentals, \"M functions\"); LinuxCNC runs M "
+             "codes its configuration remaps or provides (M100-M199 in USER_M_PATH), and G "
+             "codes of G0-G99.9 its tables leave blank where the configuration remaps them (Remap "
              "manual, \"Currently unallocated G-codes\"; rs274 2.9 runs a remapped G6, G44, "
              "G60, G68.2). A G code the profile lacks takes the block's axis words as its own "
              "(a macro's arguments, a remap's words): where the axes stand after it is not "
@@ -539,14 +576,15 @@ SOURCES = {
              "hand says a Fanuc, Haas or Okuma alarms on it: the FANUC sources say the reader "
              "skips what stands between the first % and the next end of line (16i/18i-TB, "
              "B-63524EN, \"File format\"; the 30i Fast Ethernet/Data Server manual, B-64014EN, "
-             "2.5, shows `% TITLE ;`), so the words are not run (an O number there is lost); "
-             "issue 32 makes that a warning, not changed here (reported). LinuxCNC: rs274 "
+             "2.5, shows `% TITLE ;`), so the words are not run (an O number there is lost): "
+             "TG129, a warning, there. Haas, Okuma: no source says what the control does, so "
+             "TG137, a warning (issue 32, severity by evidence). LinuxCNC: rs274 "
              "refuses a % line with words (\"Bad character '%' used\"; TG412 as well). Not "
              "checked on SINUMERIK and HEIDENHAIN, whose % line names the program.",
     "TG112": "ISO 6983-1 clause 4 (a program identification with letters in parentheses). As "
              "TG111: on a Fanuc the text after % up to the end of line is skipped (B-63524EN, "
-             "\"File format\"; B-64014EN, 2.5), so no source at hand says a Fanuc, Haas or Okuma "
-             "alarms on it (reported as a warning case, not changed here); LinuxCNC's rs274 "
+             "\"File format\"; B-64014EN, 2.5): TG129 there; no source at hand says a Haas or "
+             "Okuma alarms on it: TG137, a warning, there; LinuxCNC's rs274 "
              "refuses the line (\"Bad character '%' used\"). Not checked on SINUMERIK and "
              "HEIDENHAIN.",
     "TG109": "SINUMERIK Programming Manual \"Job Planning\" (828D, 07/2010, 1.1.5 \"Definition "

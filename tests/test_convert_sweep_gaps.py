@@ -93,8 +93,12 @@ PERCENT = "%O0003(ABC)\nG0 X0 Y0\nM30\n%\n"
 @pytest.mark.parametrize("target", ["haas-mill", "iso-mill", "linuxcnc"])
 def test_words_after_the_percent_the_fanuc_skips_are_refused_for_a_target_that_reads_them(
         target):
-    assert any(e.startswith("1:TG111 ") or e.startswith("1:TG412 ")
-               for e in target_errors(PERCENT, target))
+    # (a Haas: TG137, a warning, which the conversion refuses to write all the same)
+    if target == "haas-mill":
+        assert not target_errors(PERCENT, target)
+    else:
+        assert any(e.startswith("1:TG111 ") or e.startswith("1:TG412 ")
+                   for e in target_errors(PERCENT, target))
     e = refusal(PERCENT, "fanuc-mill", target)
     assert (e.code, e.line, e.column) == ("conversion", 1, 2)
     assert e.message.startswith('"O0003(ABC)": text after the first \'%\', which the source')

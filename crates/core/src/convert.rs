@@ -473,8 +473,10 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
 /// LinuxCNC no text at all (rs274: "Bad character '%' used", TG412 of its check: `%(TITLE)`,
 /// `%;` too), a Haas, an Okuma or an ISO 6983-1 reader an identification, which may not begin
 /// like a word (TG111) nor hold letters outside parentheses (`%TITLE`: TG112;
-/// `dialect::leader_text`, the target's check's own test); `%(TITLE)` and `%:0003` are its
-/// identification. tapegate does not move the text to a line of its own (the source never
+/// `dialect::leader_text`, the target's check's own test; on a Haas or an Okuma, whose
+/// sources do not say what the control does with the text, TG137, a warning, which the
+/// conversion still refuses to write: the source never ran the text, the target may);
+/// `%(TITLE)` and `%:0003` are its identification. tapegate does not move the text to a line of its own (the source never
 /// ran it), so the line is refused at its first character after the `%`. The closing `%` is
 /// the end of the program on every target: text after it is read by none.
 fn percent_words(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
@@ -486,11 +488,23 @@ fn percent_words(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
         return Ok(());
     };
     let bytes = &rest[start..];
+    // a Haas (the only Custom Macro B target that reads the text) or an Okuma: TG137
+    let unsourced = matches!(target, Family::MacroB | Family::Okuma);
     let how = if target == Family::LinuxCnc {
         "LinuxCNC reads no text after it (rs274: \"Bad character '%' used\"; its check: TG412)"
     } else {
         match crate::dialect::leader_text(bytes) {
             None => return Ok(()),
+            Some(crate::dialect::LeaderText::Words) if unsourced => {
+                "the target's reader may take it for words before the first end of block (ISO \
+                 6983-1 clause 4; no source of the target's says what it does; its check: \
+                 TG137)"
+            }
+            Some(crate::dialect::LeaderText::Letters) if unsourced => {
+                "the target's reader may take it for the program's identification, which may \
+                 hold letters only in parentheses (ISO 6983-1 clause 4; no source of the \
+                 target's says what it does; its check: TG137)"
+            }
             Some(crate::dialect::LeaderText::Words) => {
                 "the target's reader takes it for words before the first end of block (ISO \
                  6983-1 clause 4; its check: TG111)"

@@ -363,7 +363,8 @@ impl Opening<'_> {
 /// 16i/18i/160i/180i-TB Operator's Manual, B-63524EN/01, 8, memory card file format; the
 /// leader section of B-64014EN/03, 2.5, where a title may stand). Not a Haas: its manuals at
 /// hand say only that `%` begins and ends a program written in a text editor (Mill Operator's
-/// Manual, NGC, 2017, 5.3.1), so there the words stay TG111/TG112, ISO 6983-1's reading.
+/// Manual, NGC, 2017, 5.3.1), nor that it alarms: there (and on an Okuma) the words ISO
+/// 6983-1 clause 4 refuses are TG137, a warning.
 pub fn skips_leader(family: Family, haas: bool) -> bool {
     family == Family::MacroB && !haas
 }
@@ -1313,9 +1314,17 @@ pub fn read_only_effect(family: Family, haas: bool) -> &'static str {
 }
 
 /// What a control of a dialect family does with a G (`letter` b'G') or M code its profile's
-/// table lacks, where the profile does not say it alarms: the end of a TG307 message.
-pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
+/// table lacks, where the profile does not say it alarms: the end of a TG307 message. A Haas
+/// (`haas`) is its own machine builder: its M codes are the NGC manual's list, which the
+/// profile holds, and the manual does not say what the control does with one it lacks (Mill
+/// Operator's Manual, NGC, 2017, "M-codes"); FANUC's decoding and ladder are not Haas facts.
+pub fn unknown_code_effect(family: Family, haas: bool, letter: u8) -> &'static str {
     match (family, letter) {
+        (Family::MacroB, b'M') if haas => {
+            "it is not in the Haas NGC manual's M-code list, which the profile holds, and the \
+             manual does not say what the control does with an M code it lacks; an option, or an \
+             M code alias making it a macro call, may add it on this machine"
+        }
         (Family::MacroB, b'G') => {
             "the control alarms on it unless its parameters make it a macro call (Fanuc \
              6050-6059 G codes, 6080-6089 M codes; Haas G and M code aliases)"

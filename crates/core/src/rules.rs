@@ -177,6 +177,8 @@ rules! {
         "'/' block skip in the middle of a block (Fanuc, Haas): with the block-skip switch on, the control ignores the block from the slash to its end; checked as written, the switch off; and a '/' after a macro variable outside brackets (X#146/2), read as a division, which may be the block skip: a doubtful reading";
     LeaderSkipped = "TG129", Warning, "dialect", Structure, false,
         "text after the first % on a FANUC: the control skips everything from the first % to the next LF (FANUC 16i/18i-TB B-63524EN/01, 8, memory card file format; B-64014EN/03, 2.5, a title in the leader section), so a title there is not read, and an O number or a <NAME> there is lost; elsewhere TG111/TG112";
+    LeaderUnknown = "TG137", Warning, "dialect", Structure, false,
+        "text after the first % on a Haas or Okuma that ISO 6983-1 clause 4 refuses (words before the first end of block, TG111's case; an identification with letters outside parentheses, TG112's): no Haas or Okuma source at hand says whether the control reads it, skips it or alarms, so a warning, not an error";
     ByteOrderMark = "TG135", Warning, "dialect", Structure, false,
         "a UTF-8 byte order mark (EF BB BF) at the file's start, an editor's mark and no part of the program: on LinuxCNC an error instead (TG412: rs274ngc's read_text refuses it, \"Bad character '\\357' used\"); elsewhere the controls' manuals do not list it among the characters they read, and a 7-bit tape code cannot carry it (tapegate's DNC sender leaves it out)";
     NestedCommentRead = "TG136", Warning, "dialect", Structure, false,
@@ -229,6 +231,8 @@ rules! {
         "permanently unassigned code";
     ModalGroupConflict = "TG304", Error, "Annex E", Codes, false,
         "two codes of one modal group in a block";
+    MCodesOneGroup = "TG308", Warning, "dialect", Codes, false,
+        "two M codes of one modal group in a block (M03 M05, M08 M09) on a FANUC or SINUMERIK, where no source at hand says the control alarms: its ladder (PLC) decides which it takes; a warning, not TG304 (a restart after the block is refused all the same)";
     CodeAlarms = "TG306", Error, "profile", Codes, false,
         "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
     CodeNotInProfile = "TG307", Warning, "profile", Codes, false,

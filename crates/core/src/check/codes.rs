@@ -146,7 +146,8 @@ impl Checker {
             let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
             self.report(Rule::CodeNotInTable, message, line, w.column);
         } else {
-            let effect = dialect::unknown_code_effect(self.config.family, w.letter);
+            let effect =
+                dialect::unknown_code_effect(self.config.family, self.config.haas, w.letter);
             let message = format!(
                 "{} is not in the profile's {} code list: {effect}",
                 w.token(),
@@ -304,10 +305,31 @@ impl Checker {
                 );
                 self.conflict_at
                     .get_or_insert_with(|| (line, message.clone()));
-                self.report(Rule::ModalGroupConflict, message, line, words[i].column);
+                let rule = if matches!(code, CodeRef::Whole(b'M', _)) && self.m_group_unsourced() {
+                    Rule::MCodesOneGroup
+                } else {
+                    Rule::ModalGroupConflict
+                };
+                self.report(rule, message, line, words[i].column);
             }
             Some(_) => {}
             None => groups.push((code, i)),
+        }
+    }
+
+    /// Whether two M codes of one modal group in a block are TG308, a warning, rather than
+    /// TG304 (issue 32, severity by evidence): on a FANUC and a SINUMERIK no source at hand
+    /// says the control alarms on them (the builder's ladder, PMC or PLC, takes most M codes),
+    /// while LinuxCNC's rs274 refuses them ("Two m codes used from same modal group"), the
+    /// Haas NGC manual allows one M code a line, and the Okuma's List of M Codes (4203-E)
+    /// names each code's group, the profile's only source for it. The group of program stops stays
+    /// TG304 everywhere ([`Checker::program_stops`]): which stop the program makes decides
+    /// whether it goes on.
+    fn m_group_unsourced(&self) -> bool {
+        match self.config.family {
+            Family::MacroB => !self.config.haas,
+            Family::Sinumerik => true,
+            _ => false,
         }
     }
 
@@ -541,27 +563,24 @@ mod tests {
     }
 
     /// Extended M codes of one extension are one spindle's (Fundamentals, "Extended
-    /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it are TG304, as
-    /// `M3 M4` are; codes of two extensions, or a plain code beside an extended one (whether
+    /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it are TG308 (a
+    /// warning: no SINUMERIK source shows an alarm), as `M3 M4` are; codes of two extensions, or a plain code beside an extended one (whether
     /// the plain address is spindle 1 is machine data), are not.
     #[test]
     fn one_spindles_extended_m_codes_are_one_modal_group() {
         let sinumerik = || of_family(Family::Sinumerik);
         let found = sinumerik_codes;
-        assert_eq!(found("G0 X0\nM3 M4"), [(Rule::ModalGroupConflict, 3, 4)]);
-        assert_eq!(
-            found("G0 X0\nM1=3 M1=4"),
-            [(Rule::ModalGroupConflict, 3, 6)]
-        );
+        assert_eq!(found("G0 X0\nM3 M4"), [(Rule::MCodesOneGroup, 3, 4)]);
+        assert_eq!(found("G0 X0\nM1=3 M1=4"), [(Rule::MCodesOneGroup, 3, 6)]);
         // the extension as a number: 01 is 1; a value given by a known constant
         assert_eq!(
             found("G0 X0\nR2=4\nM2=5 M1=3 M01=R2"),
-            [(Rule::ModalGroupConflict, 4, 11)]
+            [(Rule::MCodesOneGroup, 4, 11)]
         );
         let message = findings(
             sinumerik(),
             &program("G0 X0\nM1=3 M1=4"),
-            Rule::ModalGroupConflict,
+            Rule::MCodesOneGroup,
         );
         assert!(
             message[0]
@@ -946,6 +965,72 @@ mod tests {
             at(iso_mill(), "M00 M01", Rule::ModalGroupConflict),
             [(2, 5)]
         );
+    }
+
+    /// Two M codes of one group are TG308, a warning, where no source shows the control
+    /// alarms (a FANUC, a SINUMERIK), TG304 where one does or the standard or the maker's list
+    /// rules (the ISO profiles, LinuxCNC's rs274, the Haas manual's one M code a line, the
+    /// Okuma's List of M Codes' groups); two G codes
+    /// and the program stops stay TG304 on every family.
+    #[test]
+    fn two_m_codes_of_one_group_by_evidence() {
+        let fanuc = || of_family(Family::MacroB);
+        let haas = || Config {
+            haas: true,
+            ..of_family(Family::MacroB)
+        };
+        for config in [fanuc(), of_family(Family::Sinumerik)] {
+            let family = config.family;
+            let found = findings(
+                config.clone(),
+                &program("G0 X0\nM03 M05"),
+                Rule::MCodesOneGroup,
+            );
+            assert_eq!(found.len(), 1, "{family:?}");
+            assert_eq!((found[0].line, found[0].column), (3, 5), "{family:?}");
+            assert!(
+                found[0]
+                    .message
+                    .starts_with("M05 and M03 are both in modal group"),
+                "{}",
+                found[0].message
+            );
+            assert_eq!(
+                at(config.clone(), "G0 X0\nM03 M05", Rule::ModalGroupConflict),
+                []
+            );
+            assert_eq!(
+                at(
+                    config.clone(),
+                    "G00 G01 X1. F100.",
+                    Rule::ModalGroupConflict
+                ),
+                [(2, 5)]
+            );
+            assert_eq!(
+                at(config.clone(), "G00 G01 X1. F100.", Rule::MCodesOneGroup),
+                []
+            );
+            assert_eq!(
+                at(config, "M00 M01", Rule::ModalGroupConflict),
+                [(2, 5)],
+                "{family:?}"
+            );
+        }
+        for config in [
+            haas(),
+            of_family(Family::LinuxCnc),
+            of_family(Family::Okuma),
+            iso_mill(),
+        ] {
+            let family = config.family;
+            assert_eq!(
+                at(config.clone(), "G0 X0\nM03 M05", Rule::ModalGroupConflict),
+                [(3, 5)],
+                "{family:?}"
+            );
+            assert_eq!(at(config, "G0 X0\nM03 M05", Rule::MCodesOneGroup), []);
+        }
     }
 
     /// A decimal code against the other codes of its group, as whole codes are: the group

@@ -2906,22 +2906,46 @@ impl Checker {
             self.leader_skipped(b.line, stripped);
             return;
         }
-        match dialect::leader_text(b.ident) {
-            Some(dialect::LeaderText::Words) => {
+        // issue 32, severity by evidence: no Haas or Okuma source says the control alarms
+        let unsourced = match self.config.family {
+            Family::Okuma => Some("Okuma"),
+            Family::MacroB if self.config.haas => Some("Haas"),
+            _ => None,
+        };
+        match (dialect::leader_text(b.ident), unsourced) {
+            (Some(dialect::LeaderText::Words), Some(maker)) => {
+                let message = format!(
+                    "words after % ({}): ISO 6983-1 wants an end of block before the first \
+                     block, and no {maker} source at hand says whether the control reads them, \
+                     skips them or alarms: write them on a line of their own",
+                    py_repr(stripped)
+                );
+                self.report(Rule::LeaderUnknown, message, b.line, 2);
+            }
+            (Some(dialect::LeaderText::Letters), Some(maker)) => {
+                let message = format!(
+                    "identification {} has letters outside parentheses, which ISO 6983-1 \
+                     refuses, and no {maker} source at hand says what the control does with \
+                     it: enclose it in parentheses",
+                    py_repr(stripped)
+                );
+                self.report(Rule::LeaderUnknown, message, b.line, 2);
+            }
+            (Some(dialect::LeaderText::Words), None) => {
                 let message = format!(
                     "words after % ({}): the first block must follow an end of block",
                     py_repr(stripped)
                 );
                 self.report(Rule::WordsOnPercentLine, message, b.line, 2);
             }
-            Some(dialect::LeaderText::Letters) => {
+            (Some(dialect::LeaderText::Letters), None) => {
                 let message = format!(
                     "identification {} contains letters and must be enclosed in parentheses",
                     py_repr(stripped)
                 );
                 self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
             }
-            None => {}
+            (None, _) => {}
         }
     }
 
@@ -4575,20 +4599,45 @@ mod tests {
         assert!(!lost("% PART A REV 2").message.contains("program number"));
         // a bare % and a later % line: nothing
         assert_eq!(fired(fanuc(), &program("%"), Rule::LeaderSkipped), []);
-        // a Haas: no source says it skips, so ISO 6983-1's errors stay
+        // a Haas: no source says it skips, nor that it alarms: TG137, a warning
         let mut haas = fanuc();
         haas.haas = true;
         assert_eq!(
             fired(haas.clone(), &program("% PART A"), Rule::LeaderSkipped),
             []
         );
+        for (leader, case) in [
+            ("% PART A", "letters outside"),
+            ("%N1 G90", "words after %"),
+        ] {
+            let found = findings(haas.clone(), &program(leader), Rule::LeaderUnknown);
+            assert_eq!(found.len(), 1, "{leader}");
+            assert_eq!((found[0].line, found[0].column), (1, 2));
+            assert!(found[0].message.contains(case), "{}", found[0].message);
+            assert!(
+                found[0].message.contains("no Haas source"),
+                "{}",
+                found[0].message
+            );
+            for rule in [
+                Rule::WordsOnPercentLine,
+                Rule::IdentificationNotInParentheses,
+            ] {
+                assert_eq!(fired(haas.clone(), &program(leader), rule), [], "{leader}");
+            }
+        }
+        // an Okuma alike; ISO 6983-1's profiles keep the errors (above: TG111, TG112)
+        let okuma = of_family(Family::Okuma);
+        let found = findings(okuma.clone(), &program("%BRACKET"), Rule::LeaderUnknown);
+        assert_eq!((found.len(), found[0].line), (1, 1));
+        assert!(found[0].message.contains("no Okuma source"));
         assert_eq!(
             fired(
-                haas,
-                &program("% PART A"),
+                okuma,
+                &program("%BRACKET"),
                 Rule::IdentificationNotInParentheses
             ),
-            [(1, 2)]
+            []
         );
     }
 
