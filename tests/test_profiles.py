@@ -390,8 +390,9 @@ def test_fanuc_mill_powers_on_in_g00(tmp_path):
     reset (audit 50, B7): a first axis move without a motion code is a rapid, not a feed
     move without a feed rate; a G01 without F is still TG401 at its place. The units code
     follows the profile's units."""
-    from tapegate.cli import main
     from click.testing import CliRunner
+
+    from tapegate.cli import main
 
     reset = load_profile("fanuc-mill").reset_state()
     assert reset[:3] == ("G00", "G15", "G17") and {"G90", "G94", "G40", "G49", "G80"} <= set(reset)
