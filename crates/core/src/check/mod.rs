@@ -759,12 +759,11 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
-    /// The end on `ended_line` is an M02/M30 the block skip passes over (`/M30`, or an M30
-    /// after a `/` in the block's middle): with the switch on the control skips it and runs
-    /// the blocks after it, so they are no words after the end (TG106).
-    end_skippable: bool,
-    /// LinuxCNC: a block delete's `/M2` (or `/M30`) came, which ends the program only with
-    /// the switch off: no end for the lines after it, but an end for TG114.
+    /// An M02/M30 the block skip passes over came last, which ends the program only with the
+    /// switch off. LinuxCNC (`/M2`): no end for the lines after it, but an end for TG114. The
+    /// other families (`/M30`, or an M30 after a `/` in the block's middle): the end on
+    /// `ended_line`, but with the switch on the control runs the blocks after it, so they are
+    /// no words after the end (TG106).
     skipped_end: bool,
     /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
     /// condition or loop of the main program or inside a definition, which may not run
@@ -1231,7 +1230,6 @@ impl Checker {
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
-            end_skippable: false,
             skipped_end: false,
             surely_ended: false,
             linuxcnc_end_depth: None,
@@ -2398,7 +2396,7 @@ impl Checker {
             };
             let skippable = skipped_m(&[99]);
             if ends {
-                self.end_skippable = skipped_m(&[2, 30]);
+                self.skipped_end = skipped_m(&[2, 30]);
             }
             if !(returns && !ends && skippable) {
                 self.part_ended(returns);

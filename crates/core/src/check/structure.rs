@@ -247,7 +247,6 @@ impl Checker {
         self.conflict_at = None;
         self.programs += 1;
         self.ended_line = 0;
-        self.end_skippable = false;
         self.skipped_end = false;
         self.surely_ended = false;
         self.linuxcnc_end_depth = None;
@@ -2343,7 +2342,7 @@ impl Checker {
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
         // LinuxCNC subroutine's body after the end is its definition, run when called)
         if self.ended_line > 0
-            && !self.end_skippable
+            && !self.skipped_end
             && !self.after_end_reported
             && !self.unfollowed_noted
             && !self.reading_end.inside_block()
