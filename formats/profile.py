@@ -359,9 +359,17 @@ class Profile(FrozenRecord):
 
     def reset_state(self) -> tuple[str, ...]:
         """The modes at power-on and after M02/M30: clause 14 for the control type, or the
-        profile's ``reset`` list (the exceptions the detailed format classification states)."""
+        profile's ``reset`` list (the exceptions the detailed format classification states).
+        A ``reset`` list names the units code of the profile's units: a profile that changes
+        ``units`` and keeps its base's list (``base = "fanuc-mill"``, ``units = "inch"``) powers
+        on in G20, not in the base's G21."""
         if self.reset:
-            return self.reset
+            if not self.units_by_code:
+                return self.reset
+            inch = self.default_units == "inch"
+            code, other = ((self.inch_code, self.metric_code) if inch
+                           else (self.metric_code, self.inch_code))
+            return tuple(code if c == other and code else c for c in self.reset)
         codes = RESET_STATES[self.control_type]
         if not self.units_by_code:
             return tuple(c for c in codes if c != "G71")

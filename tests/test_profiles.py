@@ -383,3 +383,23 @@ def test_a_plain_code_is_read_as_keys_reads_it(monkeypatch):
     assert sum(isinstance(x, tuple) for x in short) == 12  # 6 refusals, for G01 and M07
     monkeypatch.setattr(profile, "_PLAIN_CODE_KEYS", frozenset())
     assert read() == short
+
+
+def test_fanuc_mill_powers_on_in_g00(tmp_path):
+    """FANUC parameter No. 3402 at its usual values gives G00, G17 and G90 at power-on and
+    reset (audit 50, B7): a first axis move without a motion code is a rapid, not a feed
+    move without a feed rate; a G01 without F is still TG401 at its place. The units code
+    follows the profile's units."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+
+    reset = load_profile("fanuc-mill").reset_state()
+    assert reset[:3] == ("G00", "G15", "G17") and {"G90", "G94", "G40", "G49", "G80"} <= set(reset)
+    inch = profile_from_text('name = "x"\nbase = "fanuc-mill"\nunits = "inch"\n')
+    assert "G20" in inch.reset_state() and "G21" not in inch.reset_state()
+    program = tmp_path / "z.nc"
+    program.write_text("%\nO1000\nZ10.\nG43 H1 Z20.\nG01 X5.\nM30\n%\n")
+    out = CliRunner().invoke(main, ["check", str(program), "-p", "fanuc-mill"]).output
+    assert [line for line in out.splitlines() if "TG401" in line] == [
+        f"{program}:5:5: error TG401 feed motion with no feed rate in force [7]"]

@@ -454,7 +454,10 @@ fn macro_b<'a>(
             let cond = condition(line, end, syntax, "WHILE")?;
             let p = skip_blanks(line, cond);
             let word = letters_end(line, p, low);
-            if !line[p..word].eq_ignore_ascii_case(b"DO") || digits_end(line, word) == word {
+            // DO 1 as DO1: a blank between a word and its number is skipped (ISO 6983-1 reads
+            // past SP; FANUC's WHILE sample writes `DO 1`, docs/dialects.md)
+            let number = skip_blanks(line, word);
+            if !line[p..word].eq_ignore_ascii_case(b"DO") || digits_end(line, number) == number {
                 return Err(err(
                     ErrorKind::Value,
                     "WHILE [condition] must be followed by DOm (m = 1, 2 or 3)".into(),
@@ -462,12 +465,14 @@ fn macro_b<'a>(
                     "6.4.7",
                 ));
             }
-            digits_end(line, word)
+            digits_end(line, number)
         }
         b"GOTO" => target(line, end, syntax, "GOTO")?,
         b"DO" | b"END" => {
-            let digits = digits_end(line, end);
-            if digits == end {
+            // `END 1`, `DO  2` as END1, DO2 (the blank skipped, as after WHILE's DO)
+            let number = skip_blanks(line, end);
+            let digits = digits_end(line, number);
+            if digits == number {
                 return Ok(None);
             }
             digits
@@ -2832,6 +2837,13 @@ mod tests {
             [("WHILE [#1 LT 10] DO1".into(), Kind::Flow)]
         );
         assert_eq!(statements("END1", m), [("END1".into(), Kind::Flow)]);
+        // a blank between DO or END and its number is skipped (FANUC's sample writes `DO 1`)
+        for text in ["WHILE [#1 LT 10] DO 1", "WHILE[#1LT10]DO  2"] {
+            assert_eq!(statements(text, m), [(text.into(), Kind::Flow)]);
+        }
+        for text in ["END 1", "END3", "DO 2"] {
+            assert_eq!(statements(text, m), [(text.into(), Kind::Flow)]);
+        }
         assert_eq!(statements("GOTO #10", m), [("GOTO #10".into(), Kind::Flow)]);
         assert_eq!(
             statements("O7997A(NAME)", m),

@@ -210,6 +210,12 @@ fn after(upper: &[u8], end: usize) -> Option<Vec<u8>> {
     target(&rest[..len])
 }
 
+/// Whether what follows Macro B's `DO` or `END` is its loop number: digits, after any blanks
+/// (`DO 1`, `END 1`: the blank is skipped, as the reader skips it).
+fn loop_number(rest: &[u8]) -> bool {
+    rest.trim_ascii_start().iter().all(u8::is_ascii_digit)
+}
+
 fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<Event>) {
     if kind == StatementKind::Label {
         if let Some(name) = target(statement) {
@@ -319,12 +325,10 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         let end = memchr::memmem::find(&upper, b"REPEAT").map_or(0, |a| a + 6);
         let end = end + usize::from(upper.get(end) == Some(&b'B'));
         out.push(Event::Jump(after(&upper, end)));
-    } else if starts(b"REPEAT")
-        || (trimmed.starts_with(b"DO") && trimmed[2..].iter().all(u8::is_ascii_digit))
-    {
+    } else if starts(b"REPEAT") || (trimmed.starts_with(b"DO") && loop_number(&trimmed[2..])) {
         // SINUMERIK's REPEAT ... UNTIL, Macro B's DOm ... ENDm
         out.push(Event::Open(Construct::Loop, None));
-    } else if trimmed.starts_with(b"END") && trimmed[3..].iter().all(u8::is_ascii_digit) {
+    } else if trimmed.starts_with(b"END") && loop_number(&trimmed[3..]) {
         out.push(Event::Close(None));
     }
 }

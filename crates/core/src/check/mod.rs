@@ -760,8 +760,11 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
-    /// LinuxCNC: a block delete's `/M2` (or `/M30`) came, which ends the program only with
-    /// the switch off: no end for the lines after it, but an end for TG114.
+    /// An M02/M30 the block skip passes over came last, which ends the program only with the
+    /// switch off. LinuxCNC (`/M2`): no end for the lines after it, but an end for TG114. The
+    /// other families (`/M30`, or an M30 after a `/` in the block's middle): the end on
+    /// `ended_line`, but with the switch on the control runs the blocks after it, so they are
+    /// no words after the end (TG106).
     skipped_end: bool,
     /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
     /// condition or loop of the main program or inside a definition, which may not run
@@ -2408,17 +2411,24 @@ impl Checker {
             }
         }
         if ends || returns {
-            // a return the block skip can pass over (`/M99` before an `M30`: a bar feeder's
-            // loop, or `G00 X0 /M99` with the slash in the middle) does not show the part to
-            // be a subprogram: its held findings wait
-            let skippable = b.skip
-                || b.skip_within.is_some_and(|at| {
-                    b.words.iter().enumerate().any(|(i, w)| {
-                        w.column > at
-                            && w.letter == b'M'
-                            && self.readable[i].is_some_and(|v| v.eq_int(99))
+            // a return or end the block skip can pass over (`/M99` before an `M30`: a bar
+            // feeder's loop, or `G00 X0 /M99` with the slash in the middle) does not show the
+            // part to be a subprogram: its held findings wait
+            let skipped_m = |codes: &[i64]| {
+                b.skip
+                    || b.skip_within.is_some_and(|at| {
+                        b.words.iter().enumerate().any(|(i, w)| {
+                            w.column > at
+                                && w.letter == b'M'
+                                && self.readable[i]
+                                    .is_some_and(|v| codes.iter().any(|&c| v.eq_int(c)))
+                        })
                     })
-                });
+            };
+            let skippable = skipped_m(&[99]);
+            if ends {
+                self.skipped_end = skipped_m(&[2, 30]);
+            }
             if !(returns && !ends && skippable) {
                 self.part_ended(returns);
             }

@@ -45,7 +45,6 @@ impl Checker {
         let v = &self.values;
         let has_f = v.has(b'F');
         let lead = v.has(b'I') || v.has(b'J') || v.has(b'K');
-        let has_r = v.has(self.config.modal.arc_radius);
         // G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53 machine
         // coordinates (rapid), a lathe's G50: the axis words are no feed move (G68 X Y R and
         // G51 X Y P give a centre of rotation or scaling, as the position does; a dwell's
@@ -161,7 +160,7 @@ impl Checker {
             self.parabola(line, facts.has(6), !moved.is_empty(), lead);
         }
         let arc = matches!(self.machine.state.motion, Some(2 | 3))
-            && (!moved.is_empty() || lead || has_r)
+            && (!moved.is_empty() || lead || self.radius_given())
             && self.machine.state.cycle.is_none()
             && !taken;
         if arc && self.config.family == Family::LinuxCnc && facts.has(53) {
@@ -644,6 +643,14 @@ impl Checker {
         if g06 && !lead {
             self.g06_open = Some(line);
         }
+    }
+
+    /// Whether the block gives the radius letter where it is a radius: R only where the
+    /// profile reads R as a length (a SINUMERIK's `R1=2` sets a parameter, its radius being
+    /// CR=), so that a parameter alone in a block under G2/G3 runs no arc.
+    fn radius_given(&self) -> bool {
+        let radius = self.config.modal.arc_radius;
+        self.values.has(radius) && (radius != b'R' || self.config.pqr[2] == Role::Length)
     }
 
     /// The arc checks of a block under G2/G3; `runs` that the block runs the arc (it moves
@@ -1717,6 +1724,26 @@ mod tests {
             ),
             []
         );
+    }
+
+    /// A SINUMERIK's R is a parameter (its radius is CR=): `R1=2` alone in a block under G2
+    /// moves nothing and is no arc without a centre (audit 50, B8); an arc with neither
+    /// centre nor CR= still is.
+    #[test]
+    fn a_sinumerik_r_parameter_is_no_arc_radius() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        for set in ["R1=2", "R0=1 R1=R0*2", "R1=2 R2=3"] {
+            for arc in ["G2 X20 Y0 CR=10 F100", "G2 X20 Y0 I10 J0 F100"] {
+                let text = format!("G17 G90 G0 X0 Y0\n{arc}\n{set}\nM30\n");
+                assert_eq!(
+                    fired(sinumerik(), &text, Rule::ArcCentreMissing),
+                    [],
+                    "{arc} {set}"
+                );
+            }
+        }
+        let text = "G17 G90 G0 X0 Y0\nG2 X20 Y0 CR=10 F100\nR1=2\nX0 Y0\nM30\n";
+        assert_eq!(fired(sinumerik(), text, Rule::ArcCentreMissing), [(4, 1)]);
     }
 
     #[test]

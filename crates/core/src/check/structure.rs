@@ -2626,6 +2626,7 @@ impl Checker {
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
         // LinuxCNC subroutine's body after the end is its definition, run when called)
         if self.ended_line > 0
+            && !self.skipped_end
             && !self.after_end_reported
             && !self.unfollowed_noted
             && !self.reading_end.inside_block()
@@ -4499,6 +4500,34 @@ mod tests {
         assert_eq!(run(unended), [(7, 1)]);
         let words = "%\nO0001\nM30\n&F=/USER/PATH2/\nG0 X1.\n%\n";
         assert_eq!(run(words), [(6, 1)]);
+    }
+
+    /// `DO 1` and `END 1`: the blank between the loop word and its number is skipped, as
+    /// between an address and its number (audit 50, B11); a DO with no number stays a
+    /// reading error at the word.
+    #[test]
+    fn a_loop_number_after_a_blank_is_read() {
+        let run = |text: &str| fired(of_family(Family::MacroB), text, Rule::Unreadable);
+        let text = "%\nO1\n#1=0\nWHILE [#1 LT 3] DO 1\nWHILE [#1 LT 2] DO  2\n#1=#1+1\n\
+                    END 2\nEND1\nM30\n%\n";
+        assert_eq!(run(text), []);
+        let nothing = "%\nO1\n#1=0\nWHILE [#1 LT 3] DO X\nEND 1\nM30\n%\n";
+        assert_eq!(run(nothing), [(4, 17)]);
+    }
+
+    /// An M30 the block skip passes over (`/M30`, `G0 X1. /M30`) ends the program only with
+    /// the switch off: with it on the blocks after it run, so they are no words after the end
+    /// (audit 50, B13). An M30 before the slash, or one after, still ends it.
+    #[test]
+    fn a_skipped_end_leaves_no_words_after_it() {
+        let run = |text: &str| fired(of_family(Family::MacroB), text, Rule::WordsAfterEndNotRun);
+        assert_eq!(run("%\nO1\nG0 X1.\n/M30\nG0 X2.\nM30\n%\n"), []);
+        assert_eq!(run("%\nO1\nG0 X1.\nG0 X3. /M30\nG0 X2.\nM30\n%\n"), []);
+        assert_eq!(
+            run("%\nO1\nG0 X1.\nM30 /G0 X3.\nG0 X2.\nM30\n%\n"),
+            [(5, 1)]
+        );
+        assert_eq!(run("%\nO1\n/M30\nG0 X2.\nM30\nG0 X4.\n%\n"), [(6, 1)]);
     }
 
     /// A SINUMERIK archive in punched tape format holds several files, each after its `%`
