@@ -1582,6 +1582,21 @@ mod tests {
         for (text, lines) in cases {
             assert_eq!(refused(text), *lines, "{text}");
         }
+        // f8: after the loop the G90 is known, its X-900 absolute (rs274 -g: X-900), no note
+        let f8 = "G21 G90\no<s> sub\nG90\nG0 X1\no<s> endsub\no1 repeat [3]\no<s> call\n\
+                  o1 endrepeat\nG0 X-900\nM2\n";
+        let said = findings(lcnc(), f8, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].message.contains("X spans 901 (from -900 to 1)"),
+            "{said:?}"
+        );
+        assert!(
+            findings(lcnc(), f8, Rule::NotFollowed)
+                .iter()
+                .all(|f| !f.message.contains("after its return")),
+            "{f8}"
+        );
         // the body's refusal names the call that runs it, said once a line
         let twice = "G21 G91\no<s> sub\nG53 G0 Z0\no<s> endsub\no<s> call\no<s> call\nM2\n";
         let said = findings(lcnc(), twice, Rule::LinuxCncRefuses);
