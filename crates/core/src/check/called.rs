@@ -1582,6 +1582,11 @@ mod tests {
         for (text, lines) in cases {
             assert_eq!(refused(text), *lines, "{text}");
         }
+        // a subroutine file (called from another file): its own G91's G53 refused where it
+        // stands; one before its own G90/G91 runs in its caller's mode, not judged
+        let file = "o<x> sub\nG91\nG53 G0 Z0\no<x> endsub\n";
+        assert_eq!(refused(file), [(3, 1)]);
+        assert_eq!(refused("o<x> sub\nG53 G0 Z0\no<x> endsub\n"), []);
         // f8: after the loop the G90 is known, its X-900 absolute (rs274 -g: X-900), no note
         let f8 = "G21 G90\no<s> sub\nG90\nG0 X1\no<s> endsub\no1 repeat [3]\no<s> call\n\
                   o1 endrepeat\nG0 X-900\nM2\n";

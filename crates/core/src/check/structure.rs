@@ -1895,6 +1895,28 @@ impl Checker {
         self.linuxcnc_main_write(before, mode, depth);
     }
 
+    /// LinuxCNC: a subroutine file (its one definition, called from another file): the
+    /// refusals of its body that hold at any call ([`CallRefusal`] not of the caller's mode:
+    /// a G53 under its own G91, an M72 with nothing saved in its context) are said where they
+    /// stand, as rs274 says them when the file is called.
+    #[cold]
+    fn subroutine_file_refusals(&mut self) {
+        let refusals: Vec<CallRefusal> = self
+            .linuxcnc_bodies
+            .iter()
+            .flat_map(|body| body.4.iter().copied())
+            .filter(|r| !r.caller_g91)
+            .collect();
+        for r in refusals {
+            let message = if r.m72 {
+                format!("{M72_EMPTY} (in this subroutine file, wherever it is called from)")
+            } else {
+                format!("{G53_INCREMENTAL} (its own G91, wherever it is called from)")
+            };
+            self.report(Rule::LinuxCncRefuses, message, r.line, r.column);
+        }
+    }
+
     /// LinuxCNC: the depth of the main program's conditions and loops a line stands at, for
     /// the distance mode: none inside a single `do` (or a condition or loop whose condition
     /// the checker knows true) with no o-word line since it opened, whose lines up to here
@@ -2651,6 +2673,9 @@ impl Checker {
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
         // LinuxCNC: a subroutine file with lines before its sub, which a call skips
         let sub_return = self.sub_file == SubFile::Open && self.sub_returns.2 != 0;
+        if self.sub_file == SubFile::Closed || sub_return {
+            self.subroutine_file_refusals();
+        }
         if self.sub_preamble.1 != 0 && (self.sub_file == SubFile::Closed || sub_return) {
             let (first, sub) = self.sub_preamble;
             let label = String::from_utf8_lossy(&self.sub_label);
