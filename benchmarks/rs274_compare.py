@@ -597,6 +597,38 @@ SEEDED: list[tuple[str, str, int, str]] = [
      5, "switch"),
     ("division by a value a deleted setting changes", HEAD + "#1=0\n/#1=1\nG0 X[1/#1]\nM2\n",
      5, "switch"),
+
+    # review 50: G53 and M72 where rs274 refuses them wherever the line runs, not elsewhere
+    ("G53 after a sub whose nested call leaves G90 before its return", "G21 G90\no<t> sub\n"
+     "G90\no<t> endsub\no<s> sub\nG91\no<t> call\no<s> return\no<s> endsub\no<s> call\n"
+     "G53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after a sub whose nested call leaves G91 before its return", "G21 G91\no<t> sub\n"
+     "G91\no<t> endsub\no<s> sub\nG90\no<t> call\no<s> return\no<s> endsub\no<s> call\n"
+     "G53 G0 Z0\nM2\n", 11, "error"),
+    ("G53 after M72 restores what M73 saved", "G21 G91\nM70\nG90\nM73\nG91\nM72\n"
+     "G53 G0 Z0\nM2\n", 0, "accepted"),
+    ("G53 after a G91 in its own branch", "G21 G90\n#1=1\no1 if [#1 gt 0]\nG91\nG53 G0 Z0\n"
+     "o1 endif\nM2\n", 5, "error"),
+    ("G53 after a G91 in a condition equal to the mode", "G21 G91\n#1=1\no1 if [#1 gt 0]\n"
+     "G91\no1 endif\nG53 G0 Z0\nM2\n", 6, "error"),
+    ("G53 after a G91 in a do body", "G21 G90\no1 do\nG91\no1 while [0]\nG53 G0 Z0\nM2\n",
+     5, "error"),
+    ("G53 in a body after its own G91", "G21 G90\n#1=0\no1 if [#1 gt 0]\nG91\no1 endif\n"
+     "o<s> sub\nG91\nG53 G0 Z0\no<s> endsub\no<s> call\nM2\n", 8, "error"),
+    ("G53 in a body defined in G91 called in G90", "G21 G91\no<s> sub\nG53 G0 Z0\n"
+     "o<s> endsub\nG90\no<s> call\nM2\n", 0, "accepted"),
+    ("G53 in a body defined in G90 called in G91", "G21 G90\no<s> sub\nG53 G0 Z0\n"
+     "o<s> endsub\nG91\no<s> call\nM2\n", 3, "error"),
+    ("M72 with nothing saved", "G21 G90\nM72\nG53 G0 Z0\nM2\n", 2, "error"),
+    ("M72 in a body with nothing saved there", "G21 G90\no<s> sub\nM72\no<s> endsub\nM70\n"
+     "o<s> call\nM2\n", 3, "error"),
+    ("G53 after a sub with a dead G91 after its return", "G21 G91\no<s> sub\nM70\n"
+     "o<s> return\nG91\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", 8, "error"),
+    ("G53 after a call written in a definition", "G21 G91\no<s0> sub\nM70\nG91\n"
+     "o<s0> endsub\no<s1> sub\no<s0> call\no<s1> endsub\nG53 G0 Z0\nM2\n", 9, "error"),
+    ("G53 and M72 in one block", "G21 G90\nM70\nG91\nM72 G53 G0 Z0\nM2\n", 4, "error"),
+    ("G53 and M72 restoring G91 in one block", "G21 G91\nM70\nG90\nM72 G53 G0 Z0\nM2\n", 0,
+     "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

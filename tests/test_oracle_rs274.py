@@ -142,6 +142,13 @@ BOTH = [
     # review 48 (fixl48): a fraction on any o-word; an M word reads the value before its line
     "if label with a fraction", "sub label with a fraction",
     "M of a parameter set on its line (old 5)",
+    # review 50: G53 in G91 and M72 with nothing saved, wherever the line runs
+    "G53 after a sub whose nested call leaves G91 before its return",
+    "G53 after a G91 in its own branch", "G53 after a G91 in a condition equal to the mode",
+    "G53 after a G91 in a do body", "G53 in a body after its own G91",
+    "G53 in a body defined in G90 called in G91", "M72 with nothing saved",
+    "M72 in a body with nothing saved there", "G53 after a sub with a dead G91 after its return",
+    "G53 after a call written in a definition", "G53 and M72 in one block",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -176,7 +183,12 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "endif label changed in an if of a comparison false",
        "endrepeat label changed in a repeat of 0.5", "o-word after a line number",
        "o-word after a comment in a condition not run", "endif of a label closed before",
-       "sub whose body ends with M2", "sub whose body ends with M30, no M2 after its call"]
+       "sub whose body ends with M2", "sub whose body ends with M30, no M2 after its call",
+       # review 50: the distance mode followed through nested calls, M73, a body's own mode
+       # and its calls, M72 with a G53
+       "G53 after a sub whose nested call leaves G90 before its return",
+       "G53 after M72 restores what M73 saved", "G53 in a body defined in G91 called in G90",
+       "G53 and M72 restoring G91 in one block"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

@@ -606,42 +606,8 @@ impl Checker {
     /// subroutine's may be undone at its return (M73): not followed, so noted.
     fn call_returns(&mut self, k: usize, token: &str, line: usize) {
         let p = &self.pending[k];
-        if let Key::Label(label) = &p.body.number {
-            // a LinuxCNC subroutine's G90/G91 stays after its return as a FANUC's does
-            // (rs274 -g: `o<s> sub` / `G90 G0 X750` / `o<s> endsub` ... `G91` / `o<s> call` /
-            // `G0 X-900` goes to X-900), unless an M73 of its restores the caller's
-            // (review 48, F16)
-            let flags = self
-                .linuxcnc_bodies
-                .iter()
-                .rfind(|e| e.0 == *label)
-                .map_or(super::structure::BODY_MODE_UNSURE, |e| e.3);
-            if p.ends.is_none() && !p.ends_lost {
-                return; // (no G90/G91 of its own: the caller's mode stays)
-            }
-            // (a call inside a condition or loop of the main program may not run: the mode
-            // after it not known; review 49a, F1)
-            if flags & super::structure::BODY_MODE_UNSURE != 0
-                || p.ends_lost
-                || p.body.unfollowed.is_some()
-                || !self.linuxcnc_open_flow.is_empty()
-            {
-                let name = p.body.name.clone();
-                self.call_mode_lost(token, (line, 1), &name);
-                return;
-            }
-            if flags & super::structure::BODY_RESTORES != 0 {
-                return;
-            }
-            // (a return outside its conditions and loops ends the call: its last G90/G91
-            // before it is in force, or the caller's where it wrote none: review 49a, F1)
-            if flags & super::structure::BODY_RETURNED != 0 {
-                if flags & super::structure::BODY_DISTANCE != 0 {
-                    self.machine.state.incremental = flags & super::structure::BODY_G91 != 0;
-                    self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
-                }
-                return;
-            }
+        if matches!(p.body.number, Key::Label(_)) {
+            return; // (LinuxCNC: Checker::linuxcnc_call_distance)
         }
         if p.ends_lost {
             self.call_mode_lost(token, (line, 1), &p.body.name.clone());
@@ -675,7 +641,11 @@ impl Checker {
             return;
         }
         self.machine.state.incremental = true;
-        self.linuxcnc_distance_unsure = true;
+        // (LinuxCNC: the main program's; a body's own mode is its own, review 50, F7)
+        if self.open_definition.is_none() {
+            self.linuxcnc_distance_unsure = true;
+            self.linuxcnc_distance_from = None;
+        }
         self.mode_lost_codes = Some(self.machine.distance_codes);
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
             early.lost_codes = Some(self.machine.distance_codes);
@@ -687,13 +657,14 @@ impl Checker {
         let message = if self.config.family == crate::lex::Family::LinuxCnc {
             format!(
                 "{token} runs {name}, whose G90/G91 after its return the checker does not know \
-                 (it writes one inside a condition or loop or after a return inside one, or \
-                 the call is inside one and may not run, or it saves, invalidates or restores the \
-                 modal state with M70, M71, M72, or M73 after its own G90/G91 -- rs274 restores \
-                 at the return the state M73 saved, interp_o_word.cc leave_context -- or calls \
-                 a subroutine the checker does not follow there): the positions after this call \
-                 are not compared with the travel (TG601) until a G90 or G91 is written again \
-                 (said once a file)"
+                 (it writes one inside a condition or loop of its own, returns in one mode at \
+                 one return and in another at the next, restores with M72 or at its return a \
+                 state M70 or M73 saved where that was not known, writes a G or M code by a \
+                 parameter, or calls a subroutine the checker does not follow there; or the \
+                 call is inside a condition or loop, may not run, and its body returns in \
+                 another mode than the one in force): the positions after this call are not \
+                 compared with the travel (TG601) until a G90 or G91 is written again (said \
+                 once a file)"
             )
         } else {
             format!(
@@ -845,6 +816,11 @@ impl Checker {
                 self.machine.state.incremental = incremental;
                 self.machine.distance_codes = codes;
             }
+        } else if self.config.family == crate::lex::Family::LinuxCnc {
+            // (a body not read apart: the same, from its sub)
+            let (incremental, codes) = self.linuxcnc_body_distance.before;
+            self.machine.state.incremental = incremental;
+            self.machine.distance_codes = codes;
         }
     }
 
@@ -1407,8 +1383,8 @@ mod tests {
     /// Review 48, F16: a LinuxCNC subroutine's G90/G91 stays in force after its return
     /// (`rs274 -g` of `o<s> sub` / `G90 G0 X250` / `o<s> endsub` ... `G91` / `o<s> call` /
     /// `G0 X-400`: X250, then X-400), unless an M73 of its, before its own G90/G91, restores
-    /// the caller's (then X-150); where the checker does not know it (M70/M72, M73 after the
-    /// G90, a G90 inside a condition) the call says so (TG140) and nothing after it is judged
+    /// the caller's (then X-150), or after it restores its own; where the checker does not know
+    /// it (a G90 inside a condition) the call says so (TG140) and nothing after it is judged
     /// as absolute; and a definition's own G91, never run where it stands, leaves the main
     /// program's G90 at its endsub.
     #[test]
@@ -1435,11 +1411,18 @@ mod tests {
         // M73 first: the caller's G91 comes back at the return
         assert_eq!(said("M73\nG90 G0 X250\n"), []);
         assert_eq!(noted("M73\nG90 G0 X250\n"), []);
-        // not known: said at the call, nothing judged as absolute after it
+        // M73 after the G90 saves the G90, which the return restores (rs274 -g: X-400 after
+        // X250; review 50)
+        assert_eq!(said("G90 G0 X250\nM73\n"), [(9, 4)]);
+        assert_eq!(noted("G90 G0 X250\nM73\n"), []);
+        // M72 restores the caller's G91 M70 saved: X-400 from X250 (rs274 -g: X-150)
+        assert_eq!(said("M70\nG90 G0 X250\nM72\n"), []);
+        assert_eq!(noted("M70\nG90 G0 X250\nM72\n"), []);
+        // not known: said at the call, nothing judged as absolute after it (a G90 in a
+        // condition; G90 at one return, the caller's mode at the endsub)
         for body in [
-            "G90 G0 X250\nM73\n",
-            "M70\nG90 G0 X250\nM72\n",
             "o1 if [#5220 GT 0]\nG90\no1 endif\nG0 X250\n",
+            "G0 X250\no1 if [#5220 GT 0]\nG90\no<s> return\no1 endif\n",
         ] {
             let line = text(body).lines().position(|l| l == "o<s> call").unwrap() + 1;
             assert_eq!(said(body), [], "{body}");
@@ -1504,11 +1487,134 @@ mod tests {
         // M72 without a state M70 saved outside a condition: not known, not refused
         let unsure = format!("G21 G90\no1 if [0]\nM70\no1 endif\nG91\nM72\n{g53}");
         assert_eq!(refused(&unsure), Vec::<usize>::new());
-        // M71 invalidates the saved state (not known at M72); an M70 of G91 restores G91
+        // M71 invalidates the saved state: rs274 refuses the M72 (review 50, F5); an M70 of
+        // G91 restores G91
         let invalid = format!("G21 G90\nM70\nM71\nG91\nM72\n{g53}");
-        assert_eq!(refused(&invalid), Vec::<usize>::new());
+        assert_eq!(refused(&invalid), [5]);
         let saved_g91 = format!("G21 G91\nM70\nG90\nM72\n{g53}");
         assert_eq!(refused(&saved_g91), [5]);
+    }
+
+    /// Review 50, F1-F8, F11: G53 in G91 ("Cannot use g53 incremental") and M72 with nothing
+    /// saved ("Cannot restore context from invalid stack frame - missing M70/M73?") refused
+    /// where rs274 refuses them wherever the line runs, and nowhere else: a body's nested call
+    /// before its return (f1), M73 in the main program a save (f2), a G91 in a condition or
+    /// loop known in its own block from there, one equal to the mode in force changing
+    /// nothing, a `do` body run once (f3), a body's G53 judged at each call in the call's
+    /// mode (f4), M72 in the main program and in a called body (f5), a dead G91 after a
+    /// body's return (f6), a call inside a definition not the main program's (f7), a call in
+    /// a loop of a body whose end mode is the one in force (f8), M72 in G53's own block
+    /// (f11), M72 with a G90/G91 of its block (m72), M73's restore at the return (m73). Each
+    /// program's (line, column) as `rs274 -g` stops there, or runs it to its M2 (f3g, f3h,
+    /// m72h: rs274 stops where the checker cannot tell, not refused).
+    #[test]
+    fn review50_g53_and_m72_are_refused_where_rs274_refuses_them() {
+        let refused = |text: &str| {
+            findings(lcnc(), text, Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| (f.line, f.column))
+                .collect::<Vec<_>>()
+        };
+        let cases: &[(&str, &[(usize, usize)])] = &[
+            // f1
+            ("G21 G90\no<t> sub\nG90\no<t> endsub\no<s> sub\nG91\no<t> call\no<s> return\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", &[]),
+            // f1b
+            ("G21 G91\no<t> sub\nG91\no<t> endsub\no<s> sub\nG90\no<t> call\no<s> return\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", &[(11, 1)]),
+            // f2
+            ("G21 G91\nM70\nG90\nM73\nG91\nM72\nG53 G0 Z0\nM2\n", &[]),
+            // f2b
+            ("G21 G90\nM73\nG91\nM72\nG53 G0 Z0\nM2\n", &[]),
+            // f3a
+            ("G21 G90\n#1=1\no1 if [#1 gt 0]\nG91\nG53 G0 Z0\no1 endif\nM2\n", &[(5, 1)]),
+            // f3b
+            ("G21 G90\n#1=0\no1 while [#1 lt 2]\nG91\nG53 G0 Z0\n#1=[#1+1]\no1 endwhile\nM2\n", &[(5, 1)]),
+            // f3c
+            ("G21 G91\n#1=1\no1 if [#1 gt 0]\nG91\no1 endif\nG53 G0 Z0\nM2\n", &[(6, 1)]),
+            // f3d
+            ("G21 G90\n#1=0\no1 if [#1 gt 0]\nG91\no1 endif\no<s> sub\nG91\nG53 G0 Z0\no<s> endsub\no<s> call\nM2\n", &[(8, 1)]),
+            // f3e
+            ("G21 G90\no1 do\nG91\no1 while [0]\nG53 G0 Z0\nM2\n", &[(5, 1)]),
+            // f3f
+            ("G21 G90\no<s> sub\nG91\no<s> endsub\no1 do\no<s> call\no1 while [0]\nG53 G0 Z0\nM2\n", &[(8, 1)]),
+            // f3g
+            ("G21 G90\n#1=1\no1 if [#1 gt 0]\nG91\no1 else\nG53 G0 Z0\no1 endif\nM2\n", &[]),
+            // f3h: the condition known true (review 49a F2), the G91 surely runs: rs274 -g
+            // refuses line 6 ("Cannot use g53 incremental")
+            ("G21 G90\n#1=1\no1 if [#1 gt 0]\nG91\no1 endif\nG53 G0 Z0\nM2\n", &[(6, 1)]),
+            // the same condition not known: not refused
+            ("G21 G90\no1 if [#1 gt 0]\nG91\no1 endif\nG53 G0 Z0\nM2\n", &[]),
+            // f4
+            ("G21 G91\no<s> sub\nG53 G0 Z0\no<s> endsub\nG90\no<s> call\nM2\n", &[]),
+            // f4b
+            ("G21 G90\no<s> sub\nG53 G0 Z0\no<s> endsub\nG91\no<s> call\nM2\n", &[(3, 1)]),
+            // f4c
+            ("G21 G91\no<s> sub\no<s> return\nG53 G0 Z0\no<s> endsub\no<s> call\nM2\n", &[]),
+            // f4d
+            ("G21 G90\no<t> sub\nG53 G0 Z0\no<t> endsub\no<s> sub\nG91\no<t> call\no<s> endsub\no<s> call\nM2\n", &[(3, 1)]),
+            // f4e
+            ("G21 G90\no<s> sub\nG53 G0 Z0\no<s> endsub\nM2\n", &[]),
+            // f5a
+            ("G21 G90\nM72\nG53 G0 Z0\nM2\n", &[(2, 1)]),
+            // f5b
+            ("G21 G90\nG91\nM70\nG90\nM71\nM72\nG53 G0 Z0\nM2\n", &[(6, 1)]),
+            // f5c
+            ("G21 G90\no<s> sub\nM72\no<s> endsub\nM70\no<s> call\nM2\n", &[(3, 1)]),
+            // f5d
+            ("G21 G90\no<s> sub\nM70\nG91\nM72\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", &[]),
+            // f6
+            ("G21 G91\no<s> sub\nM70\no<s> return\nG91\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", &[(8, 1)]),
+            // f7
+            ("G21 G91\no<s0> sub\nM70\nG91\no<s0> endsub\no<s1> sub\no<s0> call\no<s1> endsub\nG53 G0 Z0\nM2\n", &[(9, 1)]),
+            // f7b
+            ("G21 G91\no<s0> sub\no1 if [#1 gt 0]\nG91\no1 endif\no<s0> endsub\no<s1> sub\no<s0> call\no<s1> endsub\nG53 G0 Z0\nM2\n", &[(10, 1)]),
+            // f8
+            ("G21 G90\no<s> sub\nG90\nG0 X1\no<s> endsub\no1 repeat [3]\no<s> call\no1 endrepeat\nG53 G0 Z0\nG91\nG53 G0 Z0\nM2\n", &[(11, 1)]),
+            // f11a
+            ("G21 G90\nM70\nG91\nM72 G53 G0 Z0\nM2\n", &[(4, 5)]),
+            // f11b
+            ("G21 G91\nM70\nG90\nM72 G53 G0 Z0\nM2\n", &[]),
+            // m72g
+            ("G21 G90\nM70\nG91\nM72 G91\nG53 G0 Z0\nM2\n", &[]),
+            // m72h
+            ("G21 G90\nM70\nM72 G91\nG53 G0 Z0\nM2\n", &[]),
+            // m73r
+            ("G21 G91\no<s> sub\nM73\nG90\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", &[(7, 1)]),
+            // m73s
+            ("G21 G90\no<s> sub\nG91\nM73\nG90\no<s> endsub\no<s> call\nG53 G0 Z0\nM2\n", &[(8, 1)]),
+        ];
+        for (text, lines) in cases {
+            assert_eq!(refused(text), *lines, "{text}");
+        }
+        // a subroutine file (called from another file): its own G91's G53 refused where it
+        // stands; one before its own G90/G91 runs in its caller's mode, not judged
+        let file = "o<x> sub\nG91\nG53 G0 Z0\no<x> endsub\n";
+        assert_eq!(refused(file), [(3, 1)]);
+        assert_eq!(refused("o<x> sub\nG53 G0 Z0\no<x> endsub\n"), []);
+        // f8: after the loop the G90 is known, its X-900 absolute (rs274 -g: X-900), no note
+        let f8 = "G21 G90\no<s> sub\nG90\nG0 X1\no<s> endsub\no1 repeat [3]\no<s> call\n\
+                  o1 endrepeat\nG0 X-900\nM2\n";
+        let said = findings(lcnc(), f8, Rule::TravelExceeded);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].message.contains("X spans 901 (from -900 to 1)"),
+            "{said:?}"
+        );
+        assert!(
+            findings(lcnc(), f8, Rule::NotFollowed)
+                .iter()
+                .all(|f| !f.message.contains("after its return")),
+            "{f8}"
+        );
+        // the body's refusal names the call that runs it, said once a line
+        let twice = "G21 G91\no<s> sub\nG53 G0 Z0\no<s> endsub\no<s> call\no<s> call\nM2\n";
+        let said = findings(lcnc(), twice, Rule::LinuxCncRefuses);
+        assert_eq!(said.len(), 1, "{said:?}");
+        assert!(
+            said[0].message.starts_with("Cannot use g53 incremental")
+                && said[0].message.contains("o<s> call of line 5"),
+            "{}",
+            said[0].message
+        );
     }
 
     /// Review 41, finding 4: LinuxCNC's `o<s> sub` at the top of the file runs where it is

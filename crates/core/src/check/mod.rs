@@ -706,9 +706,17 @@ struct Implicit {
 }
 
 /// A LinuxCNC definition's body as [`Checker::linuxcnc_bodies`] keeps it: its label, whether
-/// it may set the feed mode or end the program, the labels it calls, and what it does to the
-/// distance mode it returns in.
-type LinuxCncBody = (Vec<u8>, bool, Vec<Vec<u8>>, u8);
+/// it may set the feed mode or end the program, the labels it calls, the distance mode it
+/// returns in, its refusals that wait for a call ([`structure::CallRefusal`]), and whether a
+/// call of it surely ends the program (its M2 or M30; review 48, c19).
+type LinuxCncBody = (
+    Vec<u8>,
+    bool,
+    Vec<Vec<u8>>,
+    structure::Distance,
+    Vec<structure::CallRefusal>,
+    bool,
+);
 
 #[derive(Clone)]
 pub struct Checker {
@@ -1109,22 +1117,40 @@ pub struct Checker {
     linuxcnc_mode_unsure: bool,
     /// LinuxCNC: the main program's distance mode (G90/G91) not known here: after a call
     /// whose G90/G91 after its return the checker does not know ([`Checker::call_mode_lost`]),
-    /// a call of a subroutine that writes one made inside a condition or loop (it may not
-    /// run), a G90/G91 inside one, or an M72 whose saved state is not known; until a G90/G91
-    /// the main program surely runs. G53 is not refused as incremental meanwhile (review
-    /// 49a, F1, F6: rs274 runs it where the mode is G90).
+    /// after the condition or loop a G90/G91 that changed it was written in closes, or an M72
+    /// whose saved state is not known; until a G90/G91 the main program runs. G53 is not
+    /// refused as incremental meanwhile (review 49a, F1, F6: rs274 runs it where the mode is
+    /// G90).
     linuxcnc_distance_unsure: bool,
-    /// LinuxCNC: the main program's distance mode M70 saved (`Some(incremental)`), where it
-    /// was made outside any condition or loop; M71 invalidates it, M72 restores it (LinuxCNC
-    /// M-codes, "M70 Save Modal State", "M72 Restore Modal State"; review 49a, F6).
-    linuxcnc_m70_saved: Option<bool>,
+    /// LinuxCNC: the depth of the main program's conditions and loops (`linuxcnc_open_flow`)
+    /// at which a G90/G91 that changed the mode was written: known in that block from there,
+    /// not known once it closes or another branch of its `if` begins (review 50, F3: `o1 if`
+    /// / `G91` / `G53 G0 Z0` is refused wherever the G53 runs).
+    linuxcnc_distance_from: Option<usize>,
+    /// LinuxCNC: the main program's conditions and loops open where its distance mode was
+    /// last written (a block the checker knows runs counts as none for
+    /// [`Checker::linuxcnc_distance_from`]; its other branch, after an `else`, does not run
+    /// with it: the mode is not known there).
+    linuxcnc_distance_in: usize,
+    /// LinuxCNC: what the main program's M70/M73 saved for M72 (LinuxCNC M-codes, "M70 Save
+    /// Modal State", "M72 Restore Modal State"; interp_convert.cc: M70 and M73 save into the
+    /// call level's context, M71 invalidates it; review 49a, F6; review 50, F2, F5).
+    linuxcnc_saved: structure::Saved,
+    /// LinuxCNC: a main program's block with M72 and G53: whether G91 was surely in force
+    /// before it, which rs274's G53 test reads (the M72 restores after it; review 50, F11).
+    linuxcnc_g53_before: Option<bool>,
+    /// LinuxCNC: the distance mode inside the open definition's body, which runs under its
+    /// caller's ([`structure::BodyDistance`]; review 50, F4).
+    linuxcnc_body_distance: Box<structure::BodyDistance>,
+    /// LinuxCNC: the lines of the refusals of bodies said at a call (said once).
+    linuxcnc_call_refused: Vec<usize>,
     /// LinuxCNC: the subroutines defined so far in this file (their `o_label`), each with
     /// whether its body may set the feed mode or end the program (a G93/G94/G95, an M2/M30,
     /// M72, M98/M99, or a G or M code whose value is not known here) and the subroutines it
     /// calls: a call of one none of whose bodies, transitively, may leaves the feed mode as
     /// it was before the call (issue 32, item 4; `Checker::linuxcnc_call_keeps_mode`).
     /// The fourth: what the body does to the distance mode it returns in
-    /// ([`structure::BODY_DISTANCE`] and the others; review 48, F16).
+    /// ([`structure::Distance`]; review 48, F16), and its refusals said at its calls.
     linuxcnc_bodies: Vec<LinuxCncBody>,
     /// LinuxCNC: the local named parameters the open definition's body has assigned so far
     /// (`Checker::linuxcnc_body_locals`).
@@ -1358,7 +1384,12 @@ impl Checker {
             linuxcnc_subs_defined: HashMap::new(),
             linuxcnc_mode_unsure: false,
             linuxcnc_distance_unsure: false,
-            linuxcnc_m70_saved: None,
+            linuxcnc_distance_from: None,
+            linuxcnc_distance_in: 0,
+            linuxcnc_saved: structure::Saved::Empty,
+            linuxcnc_g53_before: None,
+            linuxcnc_body_distance: Box::default(),
+            linuxcnc_call_refused: Vec::new(),
             linuxcnc_bodies: Vec::new(),
             linuxcnc_body_named: HashSet::new(),
             linuxcnc_body_unassigned: Vec::new(),
@@ -2312,7 +2343,7 @@ impl Checker {
             && !self.motion_only
             && self.open_definition.is_none()
         {
-            self.linuxcnc_distance_modal(b);
+            self.linuxcnc_distance_modal(b, before.incremental);
         }
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,

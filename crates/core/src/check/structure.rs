@@ -301,7 +301,12 @@ impl Checker {
         self.linuxcnc_subs_defined.clear();
         self.linuxcnc_mode_unsure = false;
         self.linuxcnc_distance_unsure = false;
-        self.linuxcnc_m70_saved = None;
+        self.linuxcnc_distance_from = None;
+        self.linuxcnc_distance_in = 0;
+        self.linuxcnc_saved = Saved::Empty;
+        self.linuxcnc_g53_before = None;
+        *self.linuxcnc_body_distance = BodyDistance::default();
+        self.linuxcnc_call_refused.clear();
         self.linuxcnc_bodies.clear();
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
@@ -785,6 +790,8 @@ impl Checker {
         // (the condition's own reads run, judged above; the lines inside it may not)
         let main = self.open_definition.is_none();
         let mut ends_here = false;
+        // (before a call's own line marks the block's lines as not surely run)
+        let main_depth = self.linuxcnc_distance_depth();
         for &(column, kind, text) in b.statements {
             // (an o-word after a comment or a word is none to rs274: it opens and closes
             // nothing, and stops the program where the line runs)
@@ -829,6 +836,15 @@ impl Checker {
                 }
                 self.linuxcnc_flow_assigned.push((b.line, Vec::new()));
             }
+            if kind == Kind::Call
+                && if main {
+                    !self.main_ended()
+                } else {
+                    !self.linuxcnc_body_distance.returned
+                }
+            {
+                self.linuxcnc_call_distance(text, b.line, main_depth);
+            }
             match (kind, main) {
                 (Kind::Flow, true) => {
                     let top = self.linuxcnc_open_flow.is_empty();
@@ -839,7 +855,13 @@ impl Checker {
                         }
                     }
                 }
-                (Kind::Flow, false) => linuxcnc_flow(&mut self.linuxcnc_definition_flow, text),
+                (Kind::Flow, false) => {
+                    let flow = &mut self.linuxcnc_definition_flow;
+                    let label = crate::statement::o_label(text);
+                    let switched = linuxcnc_branch_switch(flow, text, &label);
+                    linuxcnc_flow(flow, text);
+                    self.linuxcnc_body_distance.scope(flow.len(), switched);
+                }
                 // the subroutine may set another feed mode, or restore the caller's
                 (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
                     self.linuxcnc_mode_unsure = true
@@ -1711,7 +1733,8 @@ impl Checker {
         let label = self.linuxcnc_closing_label(text, keyword.as_deref(), ran, (line, column));
         let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
         let mut all_ended = None;
-        if let Some(at) = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label) {
+        let switched = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label);
+        if let Some(at) = switched {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
             if let Some(entry) = self.linuxcnc_if_ends.iter_mut().rfind(|e| e.0 == at) {
@@ -1750,6 +1773,7 @@ impl Checker {
         if open == 0 {
             self.linuxcnc_flow_assigned.clear();
         }
+        self.linuxcnc_distance_scope(open, switched);
         self.linuxcnc_if_ends.retain(|e| e.0 < open);
         if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
             self.linuxcnc_if_ends.push((depth, true, false));
@@ -2074,67 +2098,286 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC, a block `b` of the main program: its G90/G91 makes the distance mode known
-    /// (`Checker::linuxcnc_distance_unsure`) where no condition or loop is open, not known
-    /// where one is (it may not run: `o1 if [0]` / `G91` / `o1 endif` leaves G90, rs274 -g);
-    /// M70 saves the mode (outside a condition or loop), M71 invalidates the saved state, M72
-    /// restores it, or makes the mode not known where the saved one is not (LinuxCNC M-codes,
-    /// "M70 Save Modal State", "M72 Restore Modal State"; review 49a, F6: `M70` / `G91` /
-    /// `M72` / `G53 G0 Z0` runs). rs274 runs M70-M72 before the block's G90/G91: a state
-    /// saved, or restored and then set again, with one in the block is not followed; a code
-    /// written by a parameter is not known.
-    pub(super) fn linuxcnc_distance_modal(&mut self, b: &BlockView<'_>) {
-        let flow = !self.linuxcnc_open_flow.is_empty();
-        let code = |w: &Word<'_>| {
-            if !w.expression.is_empty() || !w.index.is_empty() {
-                return None;
-            }
-            std::str::from_utf8(w.number).ok()?.parse::<f64>().ok()
+    /// LinuxCNC, a block `b` of the main program (`incremental`: G91 in force before it): its
+    /// M70/M73 saves the distance mode for M72, M71 invalidates the saved state, M72 restores
+    /// it; then its G90/G91 sets the mode (rs274 runs the M codes of group 7 before the
+    /// block's G90/G91: LinuxCNC G-code overview, "G-code Order of Execution"). A G90/G91
+    /// inside a condition or loop is known in its block from there, and not after it where it
+    /// changed the mode (it may not run: `o1 if [0]` / `G91` / `o1 endif` leaves G90 in
+    /// `rs274 -g`); one equal to the mode in force changes nothing (review 50, F3). A G or M
+    /// code written by a parameter leaves the mode not known. An M72 with nothing saved
+    /// wherever it runs is refused as rs274 does (review 50, F5: [`M72_EMPTY`]); M73 saves as
+    /// M70 does (F2: the main program has no return to restore at).
+    #[inline(never)]
+    pub(super) fn linuxcnc_distance_modal(&mut self, b: &BlockView<'_>, incremental: bool) {
+        let step = distance_step(b);
+        self.linuxcnc_g53_before = None;
+        // (most blocks: a G1 or an M3, nothing of the distance mode)
+        if step.distance.is_none() && step.m7.is_none() && !step.unread_g && !step.unread_m {
+            return;
+        }
+        let depth = self.linuxcnc_distance_depth();
+        let mut mode = if self.linuxcnc_distance_unsure {
+            Distance::Unsure
+        } else {
+            Distance::Known(incremental)
         };
-        let (mut distance, mut unread) = (false, false);
-        let mut ms = [false; 3];
-        for w in b.words {
-            match (w.letter, code(w)) {
-                (b'G', Some(90.0 | 91.0)) => distance = true,
-                // (a G code not known here: perhaps G90 or G91)
-                (b'G', None) => unread = true,
-                (b'M', Some(m @ (70.0 | 71.0 | 72.0))) => ms[m as usize - 70] = true,
-                _ => {}
+        // (rs274 tests G53 before the block runs, before its M72's restore: interp_check.cc
+        // check_g_codes; review 50, F11)
+        self.linuxcnc_g53_before =
+            (step.m7 == Some(72) && step.g53).then_some(mode == Distance::Known(true));
+        let flow = depth > 0;
+        let before = mode;
+        match step.m7 {
+            Some(70 | 73) => self.linuxcnc_saved.set(Saved::Valid(mode), flow),
+            Some(71) => self.linuxcnc_saved.set(Saved::Empty, flow),
+            Some(72) => {
+                mode = match self.linuxcnc_saved {
+                    Saved::Valid(saved) => saved,
+                    Saved::Empty => {
+                        if !self.main_ended() {
+                            self.report(
+                                Rule::LinuxCncRefuses,
+                                M72_EMPTY.to_string(),
+                                b.line,
+                                step.m_column,
+                            );
+                        }
+                        Distance::Unsure
+                    }
+                    Saved::Maybe => Distance::Unsure,
+                };
+            }
+            _ => {}
+        }
+        if step.unread_m {
+            self.linuxcnc_saved = Saved::Maybe;
+        }
+        if step.unread_g || step.unread_m {
+            mode = Distance::Unsure;
+        } else if let Some(g91) = step.distance {
+            mode = step.written(mode, g91);
+        }
+        self.linuxcnc_main_write(before, mode, depth);
+    }
+
+    /// LinuxCNC: a subroutine file (its one definition, called from another file): the
+    /// refusals of its body that hold at any call ([`CallRefusal`] not of the caller's mode:
+    /// a G53 under its own G91, an M72 with nothing saved in its context) are said where they
+    /// stand, as rs274 says them when the file is called.
+    #[cold]
+    fn subroutine_file_refusals(&mut self) {
+        let refusals: Vec<CallRefusal> = self
+            .linuxcnc_bodies
+            .iter()
+            .flat_map(|body| body.4.iter().copied())
+            .filter(|r| !r.caller_g91)
+            .collect();
+        for r in refusals {
+            let message = if r.m72 {
+                format!("{M72_EMPTY} (in this subroutine file, wherever it is called from)")
+            } else {
+                format!("{G53_INCREMENTAL} (its own G91, wherever it is called from)")
+            };
+            self.report(Rule::LinuxCncRefuses, message, r.line, r.column);
+        }
+    }
+
+    /// LinuxCNC: the depth of the main program's conditions and loops a line stands at, for
+    /// the distance mode: none inside a single `do` (or a condition or loop whose condition
+    /// the checker knows true) with no o-word line since it opened, whose lines up to here
+    /// surely run (LinuxCNC O-codes, "Do-While loop": the body runs before the condition is
+    /// tested; `Checker::linuxcnc_body_runs`; review 50, F3e).
+    fn linuxcnc_distance_depth(&self) -> usize {
+        match self.linuxcnc_open_at.as_slice() {
+            [(_, _, Some(true))] => 0,
+            _ => self.linuxcnc_open_flow.len(),
+        }
+    }
+
+    /// LinuxCNC: the main program's distance mode goes from `before` to `mode` at the depth
+    /// `depth` of its conditions and loops ([`Checker::linuxcnc_distance_from`]); the
+    /// machine's G91 is set by the block's own G90/G91, here by an M72's restore.
+    fn linuxcnc_main_write(&mut self, before: Distance, mode: Distance, depth: usize) {
+        if before == mode {
+            return;
+        }
+        match mode {
+            Distance::Known(g91) => {
+                if self.machine.state.incremental != g91 {
+                    self.machine.state.incremental = g91;
+                    self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
+                }
+                self.linuxcnc_distance_unsure = false;
+                self.linuxcnc_distance_from = (depth > 0).then_some(depth);
+                self.linuxcnc_distance_in = self.linuxcnc_open_flow.len();
+            }
+            _ => {
+                self.linuxcnc_distance_unsure = true;
+                self.linuxcnc_distance_from = None;
             }
         }
-        if distance || unread {
-            self.linuxcnc_distance_unsure = flow || unread;
+    }
+
+    /// LinuxCNC: the main program's flow went to depth `open`, or switched to another branch
+    /// of the `if` at `switched`: a distance mode known only in the block it was set in is
+    /// not known now ([`Checker::linuxcnc_distance_from`]).
+    fn linuxcnc_distance_scope(&mut self, open: usize, switched: Option<usize>) {
+        // (a mode written in a branch known to run: the `else` after it is the branch that
+        // does not, and no mode is known there)
+        if switched.is_some_and(|at| at < self.linuxcnc_distance_in)
+            && !self.linuxcnc_distance_unsure
+        {
+            self.linuxcnc_distance_unsure = true;
+            self.linuxcnc_distance_from = None;
         }
-        if ms[0] {
-            self.linuxcnc_m70_saved = (!flow && !distance && !self.linuxcnc_distance_unsure)
-                .then_some(self.machine.state.incremental);
+        self.linuxcnc_distance_in = self.linuxcnc_distance_in.min(open);
+        if let Some(from) = self.linuxcnc_distance_from {
+            if open < from || switched.is_some_and(|at| at < from) {
+                self.linuxcnc_distance_unsure = true;
+                self.linuxcnc_distance_from = None;
+            }
         }
-        if ms[1] {
-            self.linuxcnc_m70_saved = None;
+    }
+
+    /// LinuxCNC: an `o<name> call` (`text` at `column` of line `line`), after the checker
+    /// judged the body read apart at it (crate::check::called): the body's G90/G91 stays in
+    /// force after its return as a FANUC's does (rs274 -g: `o<s> sub` / `G90 G0 X750` / `o<s>
+    /// endsub` ... `G91` / `o<s> call` / `G0 X-900` goes to X-900), unless its M73 restores the
+    /// caller's ([`BodyDistance`]). A call inside a condition or loop may not run: where the
+    /// body returns in a mode other than the one in force, the mode after it is not known
+    /// (review 49a, F1; one equal to it changes nothing: review 50, F8). In the main program,
+    /// the body's refusals that wait for a call are said ([`CallRefusal`]; review 50, F4, F5).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_call_distance(&mut self, text: &[u8], line: usize, main_depth: usize) {
+        if crate::statement::o_keyword(text).as_deref() != Some(b"call".as_slice()) {
+            return;
         }
-        if ms[2] && !distance {
-            match self.linuxcnc_m70_saved.filter(|_| !flow) {
-                Some(incremental) => {
-                    self.machine.state.incremental = incremental;
-                    self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
-                    self.linuxcnc_distance_unsure = false;
+        let label = crate::statement::o_label(text);
+        let main = self.open_definition.is_none();
+        let open = self.open_definition.as_ref().map(|d| d.2.clone());
+        let body = (label.len() >= 2
+            && !crate::statement::computed_label(&label)
+            && open.as_ref() != Some(&label))
+        .then(|| self.linuxcnc_bodies.iter().rfind(|e| e.0 == label))
+        .flatten()
+        .map(|e| (e.3, e.4.clone()));
+        let (depth, mode) = if main {
+            let mode = if self.linuxcnc_distance_unsure {
+                Distance::Unsure
+            } else {
+                Distance::Known(self.machine.state.incremental)
+            };
+            (main_depth, mode)
+        } else {
+            let ctx = &self.linuxcnc_body_distance;
+            (self.linuxcnc_definition_flow.len(), ctx.mode)
+        };
+        let Some((end, refusals)) = body else {
+            // (which body runs, or what it does, not known here)
+            if main {
+                self.linuxcnc_distance_unsure = true;
+                self.linuxcnc_distance_from = None;
+            } else {
+                self.linuxcnc_body_distance.write(Distance::Unsure, depth);
+            }
+            return;
+        };
+        let token = format!("{} call", String::from_utf8_lossy(&label));
+        if main {
+            for r in refusals {
+                if r.caller_g91 && mode != Distance::Known(true)
+                    || self.linuxcnc_call_refused.contains(&r.line)
+                {
+                    continue;
                 }
-                None => self.linuxcnc_distance_unsure = true,
+                self.linuxcnc_call_refused.push(r.line);
+                self.report(
+                    Rule::LinuxCncRefuses,
+                    r.message(&token, line),
+                    r.line,
+                    r.column,
+                );
+            }
+        } else {
+            let ctx = &mut self.linuxcnc_body_distance;
+            for mut r in refusals {
+                match ctx.mode {
+                    _ if !r.caller_g91 => {}
+                    Distance::Caller => {}
+                    Distance::Known(true) => r.caller_g91 = false,
+                    _ => continue,
+                }
+                ctx.refusals.push(r);
+            }
+            ctx.write(end, depth);
+        }
+        match end {
+            Distance::Caller => {}
+            Distance::Known(g91) if depth == 0 => {
+                if self.machine.state.incremental != g91 {
+                    self.machine.state.incremental = g91;
+                    self.machine.distance_codes = self.machine.distance_codes.wrapping_add(1);
+                }
+                if main {
+                    self.linuxcnc_distance_unsure = false;
+                    self.linuxcnc_distance_from = None;
+                }
+            }
+            known if known == mode && main => {}
+            Distance::Known(g91) if !main && self.machine.state.incremental == g91 => {}
+            _ => {
+                let name = String::from_utf8_lossy(&label).into_owned();
+                self.call_mode_lost(&token, (line, 1), &name);
             }
         }
     }
 
     /// LinuxCNC: what a definition's body does to the feed mode ([`Checker::linuxcnc_bodies`]):
-    /// its `sub` line opens an entry, each line of its body adds to it.
+    /// its `sub` line opens an entry, each line of its body adds to it; and to the distance
+    /// mode ([`BodyDistance`]), which its `endsub` closes.
     fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
-        if let Some((true, name)) = statement {
-            if self.open_definition.is_some() {
-                self.linuxcnc_bodies
-                    .push((name.clone(), false, Vec::new(), 0));
+        match statement {
+            Some((true, name)) => {
+                if self.open_definition.is_some() {
+                    self.linuxcnc_bodies.push((
+                        name.clone(),
+                        false,
+                        Vec::new(),
+                        Distance::Unsure,
+                        Vec::new(),
+                        false,
+                    ));
+                    *self.linuxcnc_body_distance = BodyDistance {
+                        open: true,
+                        before: (self.machine.state.incremental, self.machine.distance_codes),
+                        ..BodyDistance::default()
+                    };
+                }
+                return;
             }
-            return;
+            Some((false, _)) => {
+                let ctx = &mut self.linuxcnc_body_distance;
+                if ctx.open && !ctx.returned {
+                    // (an endsub returns; in a subroutine file one inside a condition or
+                    // loop of the body returns early)
+                    ctx.returns();
+                    ctx.returned = self.open_definition.is_none();
+                }
+                if ctx.open && self.open_definition.is_none() {
+                    ctx.open = false;
+                    if let Some(body) = self.linuxcnc_bodies.last_mut() {
+                        body.3 = ctx.end.unwrap_or(Distance::Unsure);
+                        body.4 = std::mem::take(&mut ctx.refusals);
+                        body.5 = ctx.ends;
+                    }
+                }
+                return;
+            }
+            None => {}
         }
-        if self.open_definition.is_none() || statement.is_some() {
+        if self.open_definition.is_none() {
             return;
         }
         let Some(body) = self.linuxcnc_bodies.last_mut() else {
@@ -2152,53 +2395,102 @@ impl Checker {
                 &[2.0, 30.0, 72.0, 98.0, 99.0]
             };
             body.1 |= value.is_none_or(|v| codes.contains(&v));
-            // (the distance mode it returns in: its own G90/G91, M73's restore, F16; none
-            // after a return outside its conditions and loops, which ends the call, and not
-            // known after one inside them: review 49a, F1)
-            if body.3 & BODY_RETURNED != 0 {
-                continue;
+        }
+        let depth = self.linuxcnc_definition_flow.len();
+        let ctx = &mut self.linuxcnc_body_distance;
+        if ctx.returned {
+            return; // (after a return outside its conditions and loops: never runs)
+        }
+        if !b.words.is_empty() {
+            let step = distance_step(b);
+            let flow = depth > 0;
+            // (before any return, one inside a condition or loop too, whose `end` is set)
+            if !flow && ctx.end.is_none() && !b.skip && ends_program(b) {
+                ctx.ends = true;
             }
-            let flow = !self.linuxcnc_definition_flow.is_empty() || body.3 & BODY_MAY_RETURN != 0;
-            if w.letter == b'M' && matches!(value, Some(2.0 | 30.0)) && !flow && !b.skip {
-                body.3 |= BODY_ENDS;
+            // (rs274 tests G53 before the block runs, its M72 too: interp_check.cc
+            // check_g_codes; review 50, F11)
+            let mut restored = ctx.mode;
+            let g53_mode = match step.distance {
+                Some(g91) => Distance::Known(g91),
+                None if step.unread_g => Distance::Unsure,
+                None => ctx.mode,
+            };
+            match step.m7 {
+                Some(m @ (70 | 73)) => {
+                    ctx.saved.set(Saved::Valid(ctx.mode), flow);
+                    if m == 73 && ctx.restore != Some(true) {
+                        ctx.restore = if flow { None } else { Some(true) };
+                    }
+                }
+                Some(71) => ctx.saved.set(Saved::Empty, flow),
+                Some(72) => {
+                    restored = match ctx.saved {
+                        Saved::Valid(saved) => saved,
+                        Saved::Empty => {
+                            // (refused wherever it runs: said at the body's calls)
+                            ctx.refusals.push(CallRefusal {
+                                line: b.line,
+                                column: step.m_column,
+                                caller_g91: false,
+                                m72: true,
+                            });
+                            Distance::Unsure
+                        }
+                        Saved::Maybe => Distance::Unsure,
+                    };
+                    ctx.write(restored, depth);
+                }
+                _ => {}
             }
-            if w.letter == b'G' && matches!(value, Some(90.0 | 91.0)) && !flow {
-                body.3 &= !BODY_G91;
-                if value == Some(91.0) {
-                    body.3 |= BODY_G91;
+            if step.unread_m {
+                ctx.saved = Saved::Maybe;
+                if ctx.restore == Some(false) {
+                    ctx.restore = None;
                 }
             }
-            body.3 |= match (w.letter, value) {
-                (_, None) => BODY_MODE_UNSURE,
-                (b'G', Some(90.0 | 91.0)) if flow => BODY_MODE_UNSURE,
-                (b'G', Some(90.0 | 91.0)) => BODY_DISTANCE,
-                (b'M', Some(70.0 | 71.0 | 72.0)) => BODY_MODE_UNSURE,
-                (b'M', Some(73.0)) if flow || body.3 & BODY_DISTANCE != 0 => BODY_MODE_UNSURE,
-                (b'M', Some(73.0)) => BODY_RESTORES,
-                _ => 0,
-            };
+            if step.unread_g || step.unread_m {
+                ctx.write(Distance::Unsure, depth);
+            } else if let Some(g91) = step.distance {
+                ctx.write(step.written(restored, g91), depth);
+            }
+            // G53 is refused where G91 is in force: the body's own, or its caller's where it
+            // has written none (judged at each call: review 50, F4)
+            if step.g53 {
+                let caller_g91 = match g53_mode {
+                    Distance::Known(true) => Some(false),
+                    Distance::Caller => Some(true),
+                    _ => None,
+                };
+                if let Some(caller_g91) = caller_g91 {
+                    ctx.refusals.push(CallRefusal {
+                        line: b.line,
+                        column: step.g_column,
+                        caller_g91,
+                        m72: false,
+                    });
+                }
+            }
         }
         for &(_, kind, text) in b.statements {
-            if kind == Kind::Call {
-                match crate::statement::o_keyword(text).as_deref() {
-                    Some(b"call") => body.2.push(crate::statement::o_label(text)),
-                    Some(b"return") => {}
-                    _ => body.1 = true,
+            match crate::statement::o_keyword(text).as_deref() {
+                Some(b"call") if kind == Kind::Call => {
+                    body.2.push(crate::statement::o_label(text));
                 }
-            } else if kind == Kind::Flow
-                && crate::statement::o_keyword(text).as_deref() == Some(b"return".as_slice())
-            {
-                body.3 |= if self.linuxcnc_definition_flow.is_empty() {
-                    BODY_RETURNED
-                } else {
-                    BODY_MAY_RETURN
-                };
+                Some(b"return") => {
+                    // (a return outside its conditions and loops ends the call: what
+                    // follows it never runs; review 49a, F1)
+                    ctx.returns();
+                    ctx.returned |= depth == 0;
+                }
+                _ if kind == Kind::Call => body.1 = true,
+                _ => {}
             }
         }
     }
 
     /// LinuxCNC: whether the call statement `text` (`o<s> call`, its label known) calls a
-    /// subroutine defined before it whose body ends the program ([`BODY_ENDS`]).
+    /// subroutine defined before it whose body ends the program ([`BodyDistance`]'s `ends`).
     #[inline(never)]
     fn linuxcnc_call_ends(&self, text: &[u8]) -> bool {
         if crate::statement::o_keyword(text).as_deref() != Some(b"call".as_slice()) {
@@ -2210,7 +2502,7 @@ impl Checker {
                 .linuxcnc_bodies
                 .iter()
                 .rfind(|e| e.0 == label)
-                .is_some_and(|e| e.3 & BODY_ENDS != 0)
+                .is_some_and(|e| e.5)
     }
 
     /// LinuxCNC: whether the main program's call statement `text` leaves the feed mode as it
@@ -2233,7 +2525,8 @@ impl Checker {
             if seen.contains(&label) {
                 continue;
             }
-            let Some((_, sets, calls, _)) = self.linuxcnc_bodies.iter().rfind(|e| e.0 == label)
+            let Some((_, sets, calls, _, _, _)) =
+                self.linuxcnc_bodies.iter().rfind(|e| e.0 == label)
             else {
                 return false;
             };
@@ -2680,6 +2973,9 @@ impl Checker {
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
         // LinuxCNC: a subroutine file with lines before its sub, which a call skips
         let sub_return = self.sub_file == SubFile::Open && self.sub_returns.2 != 0;
+        if self.sub_file == SubFile::Closed || sub_return {
+            self.subroutine_file_refusals();
+        }
         if self.sub_preamble.1 != 0 && (self.sub_file == SubFile::Closed || sub_return) {
             let (first, sub) = self.sub_preamble;
             let label = String::from_utf8_lossy(&self.sub_label);
@@ -3185,29 +3481,254 @@ fn linuxcnc_flow_of(open: &mut Vec<Vec<u8>>, text: &[u8], label: Vec<u8>) {
     }
 }
 
-/// A LinuxCNC definition's body writes a G90/G91 of its own, outside its conditions and
-/// loops ([`Checker::linuxcnc_body`]).
-pub(super) const BODY_DISTANCE: u8 = 1;
-/// Its M73, before any G90/G91 of its own and outside its conditions and loops: rs274
-/// restores at its return the modal state M73 saved, the caller's (interp_o_word.cc
-/// `leave_context`, `restore_settings`; LinuxCNC M-codes, "M73 Save and Autorestore Modal
-/// State").
-pub(super) const BODY_RESTORES: u8 = 2;
-/// The distance mode it returns in not known: a G90/G91 or an M73 inside a condition or loop
-/// of it, an M73 after its own G90/G91, an M70, M71 or M72 (a state saved, invalidated or
-/// restored), or a G or M code whose value is not known here.
-pub(super) const BODY_MODE_UNSURE: u8 = 4;
-/// A `return` outside its conditions and loops: the call ends there, what follows it does
-/// not run (rs274 -g: `G91` / `o<s> return` / `G90` returns in G91; review 49a, F1).
-pub(super) const BODY_RETURNED: u8 = 8;
-/// A `return` inside a condition or loop of it: a G90/G91 after it may not run.
-pub(super) const BODY_MAY_RETURN: u8 = 16;
-/// Its last G90/G91 outside its conditions and loops (before a return ends it) is G91.
-pub(super) const BODY_G91: u8 = 32;
-/// An M2 or M30 outside its conditions and loops, before any return and not deleted by the
-/// block skip: a call of it ends the program there (`rs274 -g` reads no line after the call;
-/// review 48, c19).
-pub(super) const BODY_ENDS: u8 = 64;
+/// A LinuxCNC distance mode as the checker knows it at a line: its caller's (a definition's
+/// body before it writes its own), G90 or G91 (`Known(true)`: G91), or not known.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Distance {
+    Caller,
+    Known(bool),
+    Unsure,
+}
+
+impl Distance {
+    /// The mode where either of two may be in force.
+    fn merge(self, other: Distance) -> Distance {
+        if self == other {
+            self
+        } else {
+            Distance::Unsure
+        }
+    }
+}
+
+/// What a LinuxCNC call level's context holds for M72 (interp_convert.cc: M70 and M73 save
+/// the modal state into `sub_context[call_level]` and mark it valid, M71 marks it invalid,
+/// M72 refuses an invalid one; a call starts its level empty, interp_o_word.cc
+/// `enter_context`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Saved {
+    /// Nothing valid, wherever the line runs.
+    Empty,
+    /// A valid state, with the distance mode saved.
+    Valid(Distance),
+    /// Valid or not: a save or an invalidation inside a condition or loop.
+    Maybe,
+}
+
+impl Saved {
+    /// The context becomes `new` (`flow`: inside a condition or loop, where the line may not
+    /// run: either).
+    fn set(&mut self, new: Saved, flow: bool) {
+        *self = match (flow, *self, new) {
+            (false, _, new) => new,
+            (true, Saved::Empty, Saved::Empty) => Saved::Empty,
+            (true, Saved::Valid(a), Saved::Valid(b)) => Saved::Valid(a.merge(b)),
+            _ => Saved::Maybe,
+        };
+    }
+}
+
+/// LinuxCNC: the distance mode through the open definition's body, read in its order
+/// ([`Checker::linuxcnc_body`]). It runs under its caller's mode; a G90/G91 of its own sets
+/// it (inside a condition or loop, known in that block from there: `from`, as the main
+/// program's); M70-M73 save and restore it in the body's own context; a call takes on the
+/// mode the called body returns in. Where it returns, the mode (or the one its M73 saved,
+/// which rs274 restores: interp_o_word.cc `leave_context`; LinuxCNC M-codes, "M73 Save and
+/// Autorestore Modal State") is the one its caller goes on in: `end`, the modes of all its
+/// returns merged.
+#[derive(Clone, Debug)]
+pub(super) struct BodyDistance {
+    /// A definition is open.
+    open: bool,
+    /// The machine's G91 and its count of distance codes at its `sub`: the main program's
+    /// lines after its `endsub` run in it (rs274 reads a definition without running it).
+    pub(super) before: (bool, u32),
+    mode: Distance,
+    from: Option<usize>,
+    saved: Saved,
+    /// Its M73 ran: Some(true); Some(false): none; None: one inside a condition or loop.
+    restore: Option<bool>,
+    end: Option<Distance>,
+    /// A return outside its conditions and loops was read: the lines after it never run.
+    returned: bool,
+    /// Its refusals that wait for a call ([`CallRefusal`]).
+    refusals: Vec<CallRefusal>,
+    /// An M2 or M30 outside its conditions and loops, before any return and not deleted by
+    /// the block skip: a call of it ends the program there (`rs274 -g` reads no line after
+    /// the call; review 48, c19).
+    ends: bool,
+}
+
+impl Default for BodyDistance {
+    fn default() -> Self {
+        BodyDistance {
+            open: false,
+            before: (false, 0),
+            mode: Distance::Caller,
+            from: None,
+            saved: Saved::Empty,
+            restore: Some(false),
+            end: None,
+            returned: false,
+            refusals: Vec::new(),
+            ends: false,
+        }
+    }
+}
+
+impl BodyDistance {
+    /// The mode becomes `mode` at depth `depth` of the body's conditions and loops.
+    fn write(&mut self, mode: Distance, depth: usize) {
+        if self.mode == mode {
+            return;
+        }
+        self.mode = mode;
+        self.from = (depth > 0 && mode != Distance::Unsure).then_some(depth);
+    }
+
+    /// The body's flow went to depth `open`, or switched branch at `switched`.
+    pub(super) fn scope(&mut self, open: usize, switched: Option<usize>) {
+        if let Some(from) = self.from {
+            if open < from || switched.is_some_and(|at| at < from) {
+                self.mode = Distance::Unsure;
+                self.from = None;
+            }
+        }
+    }
+
+    /// A return here: the mode its caller goes on in, merged into `end`.
+    fn returns(&mut self) {
+        let here = match (self.saved, self.restore) {
+            (Saved::Empty, _) | (_, Some(false)) => self.mode,
+            (Saved::Valid(saved), Some(true)) => saved,
+            (Saved::Valid(saved), None) => saved.merge(self.mode),
+            (Saved::Maybe, _) => Distance::Unsure,
+        };
+        self.end = Some(self.end.map_or(here, |end| end.merge(here)));
+    }
+}
+
+/// A LinuxCNC body's line that rs274 refuses where the body runs, said at its calls in the
+/// main program (a definition runs only when called): a G53 in G91 (`caller_g91`: where its
+/// caller's mode is G91, the body having written none of its own before it; review 50, F4),
+/// or an M72 with nothing saved in the body's context (F5).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct CallRefusal {
+    line: usize,
+    column: usize,
+    caller_g91: bool,
+    m72: bool,
+}
+
+impl CallRefusal {
+    fn message(&self, token: &str, line: usize) -> String {
+        if self.m72 {
+            format!("{M72_EMPTY} (in the body {token} of line {line} runs)")
+        } else if self.caller_g91 {
+            format!(
+                "{G53_INCREMENTAL} (the body runs in the G91 of {token} of line {line}, having                  written no G90/G91 of its own before this line)"
+            )
+        } else {
+            format!("{G53_INCREMENTAL} (the body's own G91; {token} of line {line} runs it)")
+        }
+    }
+}
+
+/// rs274's refusal of a G53 in G91.
+pub(super) const G53_INCREMENTAL: &str = "Cannot use g53 incremental (rs274ngc): G53's axis \
+     words are machine coordinates, absolute; G90 first";
+
+/// rs274's refusal of an M72 with nothing saved at its call level.
+const M72_EMPTY: &str = "Cannot restore context from invalid stack frame - missing M70/M73? \
+     (rs274ngc): M72 restores the modal state M70 or M73 saved at this call level (the main \
+     program's, or the running subroutine's), and none is saved here (or M71 invalidated it)";
+
+/// What a LinuxCNC block does to the distance mode ([`Checker::linuxcnc_distance_modal`],
+/// [`Checker::linuxcnc_body`]).
+struct DistanceStep {
+    /// Its last G90 (false) or G91 (true).
+    distance: Option<bool>,
+    g53: bool,
+    /// Its M70, M71, M72 or M73 (one a block: one M code of group 7).
+    m7: Option<u8>,
+    /// A G or M code written by a parameter: perhaps any.
+    unread_g: bool,
+    unread_m: bool,
+    g_column: usize,
+    m_column: usize,
+}
+
+impl DistanceStep {
+    /// The mode after the block's G90/G91 (`g91`), `restored` by its M72 where it has one:
+    /// rs274 restores by running a line of its own where the saved state differs from the
+    /// one in force (interp_convert.cc `restore_settings`), and the block's G90/G91 is not
+    /// applied after it (rs274 -g: `G90` / `M70` / `G91` / `M72 G91` ends in G90; with
+    /// nothing to restore, `M70` / `M72 G91`, in G91): either.
+    fn written(&self, restored: Distance, g91: bool) -> Distance {
+        if self.m7 == Some(72) {
+            restored.merge(Distance::Known(g91))
+        } else {
+            Distance::Known(g91)
+        }
+    }
+}
+
+/// [`DistanceStep`] of block `b`.
+fn distance_step(b: &BlockView<'_>) -> DistanceStep {
+    let mut step = DistanceStep {
+        distance: None,
+        g53: false,
+        m7: None,
+        unread_g: false,
+        unread_m: false,
+        g_column: 0,
+        m_column: 0,
+    };
+    for w in b.words {
+        let code = || {
+            if !w.expression.is_empty() || !w.index.is_empty() {
+                return None;
+            }
+            std::str::from_utf8(w.number).ok()?.parse::<f64>().ok()
+        };
+        match w.letter {
+            b'G' => {
+                if step.g_column == 0 {
+                    step.g_column = w.column;
+                }
+                match code() {
+                    Some(90.0) => step.distance = Some(false),
+                    Some(91.0) => step.distance = Some(true),
+                    Some(53.0) => step.g53 = true,
+                    Some(_) => {}
+                    None => step.unread_g = true,
+                }
+            }
+            b'M' => match code() {
+                Some(m @ (70.0 | 71.0 | 72.0 | 73.0)) => {
+                    step.m7 = Some(m as u8);
+                    step.m_column = w.column;
+                }
+                Some(_) => {}
+                None => step.unread_m = true,
+            },
+            _ => {}
+        }
+    }
+    step
+}
+
+/// A LinuxCNC block's plain M2 or M30 (the number as written; an expression is not known).
+fn ends_program(b: &BlockView<'_>) -> bool {
+    b.words.iter().any(|w| {
+        w.letter == b'M'
+            && w.expression.is_empty()
+            && std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|n| n.parse::<f64>().ok())
+                .is_some_and(|v| v == 2.0 || v == 30.0)
+    })
+}
 
 /// An o-word label's name as rs274ngc keys it (interp_read.cc `read_o`: a `<name>`'s text,
 /// a number's `%d`): `o100` and `o<100>` are `100`.

@@ -1641,16 +1641,18 @@ impl Checker {
         // block, or in force without a G90 in the block)
         // (not where the mode is not known, unless the block writes its own G91: review
         // 49a, F1, F6)
-        if codes.contains(&530)
-            && self.machine.state.incremental
-            && (!self.linuxcnc_distance_unsure || codes.contains(&910))
-        {
-            return Some((
-                "Cannot use g53 incremental (rs274ngc): G53's axis words are machine \
-                 coordinates, absolute; G90 first"
-                    .into(),
-                b'G',
-            ));
+        // (a definition's body: judged at its calls, under their mode, review 50, F4;
+        // structure::CallRefusal)
+        let g91 = || match self.linuxcnc_g53_before {
+            // (an M72 in the block: the mode before it, review 50, F11)
+            Some(before) => codes.contains(&910) || before && !codes.contains(&900),
+            None => {
+                self.machine.state.incremental
+                    && (!self.linuxcnc_distance_unsure || codes.contains(&910))
+            }
+        };
+        if codes.contains(&530) && g91() && self.open_definition.is_none() {
+            return Some((super::structure::G53_INCREMENTAL.into(), b'G'));
         }
         // then checks the block's words against its codes (check_items), before it runs
         if checked.is_some() {
