@@ -1301,6 +1301,21 @@ def test_a_jump_s_run_into_a_haas_local_subprogram_after_m30_is_checked(profile)
     assert "IF[#6EQ1]GOTO100" in result.output
 
 
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill", "iso-mill"])
+def test_an_end_block_s_own_move_is_judged_before_the_reset(profile):
+    """An M02/M30 resets the state once its block's words are done: the block's own move is
+    judged with its own motion and feed. `G01 X1. M30` with no F in force is a feed move with
+    none (FANUC PS0011), though the reset state's motion is G00 on these FANUC and Haas
+    profiles; `G00 X1. M30` after a `G01` is a rapid, though iso-mill's reset motion is G01."""
+    def tg401(body: str) -> list[tuple[int, int]]:
+        text = f"%\nO1\nG21\n{body}\n%\n"
+        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG401"]
+    assert tg401("G00 X0\nG01 X1. M30") == [(5, 5)]
+    assert tg401("G01 X0 F100.\nG00 X1. M30") == []
+    assert tg401("G01 X0 F100.\nG01 X1. M30") == []
+
+
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():
     """M99 P returns to the caller's block: a subprogram's is another program's (no TG118);
     a main program's M99 P loops in its own (FANUC PS0060 where it is missing)."""

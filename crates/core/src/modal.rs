@@ -618,6 +618,15 @@ impl ModalSettings {
     }
 }
 
+/// A block's motion, cycle and feed before its M02/M30 reset them ([`ModalMachine::ended_from`]).
+#[derive(Clone, Copy, Debug)]
+pub struct EndedFrom {
+    pub motion: Option<i64>,
+    pub cycle: Option<i64>,
+    pub feed: Option<Dec>,
+    pub feed_unknown: bool,
+}
+
 #[derive(Clone)]
 pub struct ModalMachine {
     pub settings: ModalSettings,
@@ -653,6 +662,11 @@ pub struct ModalMachine {
     /// went to `cycle_end` (and `cycle_corner`) and back to its start point, where the
     /// position stays; or some of where it went is not known (`cycle_why` says why).
     ran_cycle: u8,
+    /// The block's motion, cycle, feed and whether its F is not known, where its M02/M30
+    /// reset the state once its words were done (`m_codes`): the rules of the block's own
+    /// move read them, not the reset state's (a `G0 X1 M2` after a `G1` is a rapid, on a
+    /// profile whose reset motion is G01 too).
+    pub ended_from: Option<Box<EndedFrom>>,
     /// Why the positions of the block's cycle are not all known ([`CYCLE_UNSURE`]).
     cycle_why: &'static str,
     /// A units code converts the known positions into the new units (true): the checker's and
@@ -714,6 +728,7 @@ impl ModalMachine {
             taper_unknown: false,
             cycle_corner: [None; 2],
             ran_cycle: 0,
+            ended_from: None,
             cycle_why: "",
             units_convert_position: true,
             taken: None,
@@ -754,6 +769,9 @@ impl ModalMachine {
     pub fn apply_taken(&mut self, v: &BlockValues, taken: Option<AxesTaken>) {
         self.taken = taken;
         self.ran_cycle = 0;
+        if self.ended_from.is_some() {
+            self.ended_from = None;
+        }
         self.codes(v.gs());
         if v.other_work_system {
             self.state.zero_shift = None;
@@ -1002,6 +1020,13 @@ impl ModalMachine {
             }
         }
         if ends && ms.iter().any(|&m| m == 2 || m == 30) {
+            let s = &self.state;
+            self.ended_from = Some(Box::new(EndedFrom {
+                motion: s.motion,
+                cycle: s.cycle,
+                feed: s.feed,
+                feed_unknown: s.is_unknown(b'F'),
+            }));
             let units = (self.state.units, self.state.feed_units);
             self.reset();
             if self.settings.units_kept_at_end {

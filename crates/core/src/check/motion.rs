@@ -17,6 +17,16 @@ use crate::text::push_fixed;
 /// TG401's message.
 const NO_FEED: &str = "feed motion with no feed rate in force";
 
+/// [`Checker::feeds`] in a block whose M02/M30 reset the state: its own move is a feed move
+/// with no feed rate.
+#[cold]
+fn ended_without_feed(from: &crate::modal::EndedFrom, lathe_feed: bool) -> bool {
+    (matches!(from.motion, Some(1 | 2 | 3 | 6)) || lathe_feed)
+        && from.cycle.is_none()
+        && from.feed.is_none()
+        && !from.feed_unknown
+}
+
 /// The most TG401 findings a program part holds until its end says whether it is a
 /// subprogram (its line and column each: 1.6 MB).
 pub(super) const HELD_FEEDS: usize = 100_000;
@@ -65,8 +75,18 @@ impl Checker {
             && self.machine.state.cycle.is_none()
             && !moved.is_empty()
             && !not_a_feed_move;
-        if feed_motion && self.machine.state.feed.is_none() && !self.machine.state.is_unknown(b'F')
-        {
+        // (the block's own motion and feed where its M02/M30 reset them after its words)
+        let no_feed = match self.machine.ended_from.as_deref() {
+            None => {
+                feed_motion
+                    && self.machine.state.feed.is_none()
+                    && !self.machine.state.is_unknown(b'F')
+            }
+            Some(from) => {
+                !moved.is_empty() && !not_a_feed_move && ended_without_feed(from, lathe_feed)
+            }
+        };
+        if no_feed {
             let column = facts.col(moved[0]);
             if crate::dialect::has_returns(self.config.family)
                 && self.enabled(Rule::NoFeedRate)
@@ -1830,5 +1850,17 @@ mod tests {
         assert_eq!(at(mill.clone(), &by_l, Rule::ArcCentreMissing), [(3, 1)]);
         let by_r = from_origin("G02 X10. Y0 R5.");
         assert_eq!(at(mill, &by_r, Rule::ArcCentreMissing), []);
+    }
+
+    /// The block's own move where its M02 or M30 resets the state after its words: a
+    /// `G00 X1 M02` after a `G01` is a rapid, on a profile whose reset motion is G01 (iso-mill,
+    /// ISO 6983-1 clause 14) as on any (audit 50's afixa50: a false TG401).
+    #[test]
+    fn an_end_block_s_move_is_judged_before_its_reset() {
+        let no_feed = |body: &str| fired(iso_mill(), &format!("%\n{body}\n%\n"), Rule::NoFeedRate);
+        assert_eq!(no_feed("N1 G01 X0 F100\nN2 G00 X1 M02"), []);
+        assert_eq!(no_feed("N1 G01 X0 F100\nN2 X2 M30"), []);
+        // the block's own feed move with no feed in force is still TG401
+        assert_eq!(no_feed("N1 G00 X0\nN2 G01 X1 M02"), [(3, 8)]);
     }
 }
