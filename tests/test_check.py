@@ -1316,6 +1316,21 @@ def test_an_end_block_s_own_move_is_judged_before_the_reset(profile):
     assert tg401("G01 X0 F100.\nG01 X1. M30") == []
 
 
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_repeat_count_of_a_modal_cycle_s_block_is_a_count(profile):
+    """Audit 50, B9: K of a block of hole positions under a modal canned cycle is its number of
+    repeats (FANUC 0i-MF "Canned cycle": `G91 X10. K4` repeats the G81 four times 10 mm
+    apart), a whole number as in the cycle's own block: no TG201 "read as 0.004". A block that
+    writes a motion code leaves the cycle: its K is the profile's."""
+    def tg201(blocks: str) -> list[tuple[int, int]]:
+        text = (f"%\nO1\nG21 G90 G0 X0 Y0 Z10.\nG81 X10. Y10. Z-5. R2. F100. K3\n{blocks}\n"
+                "G80\nM30\n%\n")
+        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG201"]
+    assert tg201("G91 X10. K4\nG90 X30. Y30. K2") == []
+    assert tg201("X20. K2") == []
+
+
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():
     """M99 P returns to the caller's block: a subprogram's is another program's (no TG118);
     a main program's M99 P loops in its own (FANUC PS0060 where it is missing)."""

@@ -2496,8 +2496,8 @@ impl Checker {
     ///
     /// `motion_only`: the block's codes are G00-G03 alone ([`motion_codes_only`]), which no
     /// table gives a word a meaning by (`convert::cycle_table`, [`crate::meaning::block`]),
-    /// and a cycle in force is not read in a block that writes a G code: no meaning, no shape
-    /// worked out (a debug build works the meanings out and holds them to none).
+    /// and a cycle in force is not read in a block that writes one of them: no meaning, no
+    /// shape worked out (a debug build works the meanings out and holds them to none).
     ///
     /// None for a block no code gives a word a meaning without a look at its words (G00-G03
     /// alone, or no code and no mill's cycle in force): [`crate::meaning::Meanings::default`].
@@ -2551,8 +2551,15 @@ impl Checker {
                 m += 1;
             }
         }
+        // (the cycle in force is the block's where it writes no code of the motion group: a
+        // `G91 X10. K4` repeats a G81 at the next hole, FANUC 0i-MF "Canned cycle"; audit 50,
+        // B9)
         let cycle = self.machine.state.cycle.filter(|_| !lathe);
-        if let Some(code) = cycle.filter(|_| g == 0 && g < gs.len()) {
+        // (nor where its G codes are planes alone, G17-G19, read with G00-G03 without a
+        // meaning: `motion_codes_only`)
+        let motion = gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89))
+            || (g > 0 && gs[..g].iter().all(|&c| matches!(c, 17..=19)));
+        if let Some(code) = cycle.filter(|_| !motion && g < gs.len()) {
             gs[g] = code;
             g += 1;
         }
