@@ -2384,6 +2384,7 @@ impl Checker {
             return;
         };
         // (read before the block's words are: the number as written, an expression not known)
+        let mut ends = false;
         for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
             let value = std::str::from_utf8(w.number)
                 .ok()
@@ -2392,6 +2393,7 @@ impl Checker {
             let codes: &[f64] = if w.letter == b'G' {
                 &[93.0, 94.0, 95.0]
             } else {
+                ends |= matches!(value, Some(2.0 | 30.0));
                 &[2.0, 30.0, 72.0, 98.0, 99.0]
             };
             body.1 |= value.is_none_or(|v| codes.contains(&v));
@@ -2405,7 +2407,7 @@ impl Checker {
             let step = distance_step(b);
             let flow = depth > 0;
             // (before any return, one inside a condition or loop too, whose `end` is set)
-            if !flow && ctx.end.is_none() && !b.skip && ends_program(b) {
+            if !flow && ctx.end.is_none() && !b.skip && ends {
                 ctx.ends = true;
             }
             // (rs274 tests G53 before the block runs, its M72 too: interp_check.cc
@@ -3716,18 +3718,6 @@ fn distance_step(b: &BlockView<'_>) -> DistanceStep {
         }
     }
     step
-}
-
-/// A LinuxCNC block's plain M2 or M30 (the number as written; an expression is not known).
-fn ends_program(b: &BlockView<'_>) -> bool {
-    b.words.iter().any(|w| {
-        w.letter == b'M'
-            && w.expression.is_empty()
-            && std::str::from_utf8(w.number)
-                .ok()
-                .and_then(|n| n.parse::<f64>().ok())
-                .is_some_and(|v| v == 2.0 || v == 30.0)
-    })
 }
 
 /// An o-word label's name as rs274ngc keys it (interp_read.cc `read_o`: a `<name>`'s text,
