@@ -1193,7 +1193,7 @@ def _lathe(block: str) -> str:
 
 @pytest.mark.parametrize("profile,text", [
     ("fanuc-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. K3")),
-    ("haas-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. K3")),
+    ("haas-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. L3")),
     ("haas-mill", _mill("G84 X1. Y1. Z-1. R0.1 J2 F10.")),
     ("fanuc-lathe", _lathe("G73 U0.2 W0.1 R3")),
     ("haas-lathe", _lathe("G71 P10 Q20 U0.02 W0.005 D0.1 R1 F0.01")),
@@ -1316,8 +1316,7 @@ def test_an_end_block_s_own_move_is_judged_before_the_reset(profile):
     assert tg401("G01 X0 F100.\nG01 X1. M30") == []
 
 
-@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
-def test_a_repeat_count_of_a_modal_cycle_s_block_is_a_count(profile):
+def test_a_repeat_count_of_a_modal_cycle_s_block_is_a_count():
     """Audit 50, B9: K of a block of hole positions under a modal canned cycle is its number of
     repeats (FANUC 0i-MF "Canned cycle": `G91 X10. K4` repeats the G81 four times 10 mm
     apart), a whole number as in the cycle's own block: no TG201 "read as 0.004". A block that
@@ -1325,10 +1324,63 @@ def test_a_repeat_count_of_a_modal_cycle_s_block_is_a_count(profile):
     def tg201(blocks: str) -> list[tuple[int, int]]:
         text = (f"%\nO1\nG21 G90 G0 X0 Y0 Z10.\nG81 X10. Y10. Z-5. R2. F100. K3\n{blocks}\n"
                 "G80\nM30\n%\n")
-        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+        return [(f.line, f.column) for f in check_text(text, load_profile("fanuc-mill"))
                 if f.rule == "TG201"]
     assert tg201("G91 X10. K4\nG90 X30. Y30. K2") == []
     assert tg201("X20. K2") == []
+
+
+def test_a_haas_cycle_s_k_is_a_peck_depth_not_a_count(tmp_path):
+    """Review 51, F15: a Haas's repeat count is L (Haas mill operator's manual, G81-G89); its
+    G73/G83's K is the least peck depth, a length, in a block of hole positions too. `K4`
+    there has no point: TG201 says it is read in increments, and a change of units converts it
+    (it was kept as a FANUC repeat count)."""
+    text = ("%\nO01000\nG20 G17 G90 G54\nG0 X0 Y0 Z1.\n"
+            "G83 X0 Y0 Z-0.5 R0.1 Q0.1 I0.1 J0.02 K0.05 F10.\nG91 X1. K4\nG90 G80\nM30\n%\n")
+    assert [(f.rule, f.line) for f in check_text(text, load_profile("haas-mill"))
+            if f.rule == "TG201"] == [("TG201", 6)]
+    path = tmp_path / "hk.nc"
+    path.write_text(text)
+    out = run("convert", str(path), "--from", "haas-mill", "--to", "haas-mill", "--units",
+              "metric", "-o", "-")
+    assert "G83 X0 Y0 Z-12.7 R2.54 Q2.54 I2.54 J0.508 K1.27 F254." in out.output
+    assert "\nG91 X25.4 K0.01\n" in out.output  # 0.0004 in, at the metric format's 0.01
+
+
+@pytest.mark.parametrize(("profile", "count", "units", "start", "step"), [
+    ("fanuc-mill", "K8", "G21", "X-700.", "X200."),
+    ("fanuc-mill", "K8.", "G21", "X-700.", "X200."),
+    ("haas-mill", "L8", "G20", "X-25.", "X8."),
+])
+def test_a_repeat_count_under_g91_steps_the_holes_through_the_travel(profile, count, units,
+                                                                     start, step):
+    """Review 51, F5: under G91 a canned cycle's repeat count (FANUC K, Haas L) drills that many
+    holes, each the increment from the last (FANUC 0i-MF "Canned cycle"; Haas NGC mill
+    operator's manual, G81): eight holes 200 mm apart from X0 reach X1600, past the travel,
+    as the same moves written one a block do (TG601). Before, the position moved once. The
+    count of a FANUC K without a point is a count (eight), not 0.008 in increments."""
+    def tg601(blocks: str) -> list[int]:
+        text = (f"%\nO1\n{units} G17 G90 G54\nG0 {start} Y0 Z1.\nG81 X0 Y0 Z-0.1 R0.1 F10.\n"
+                f"{blocks}\nG90 G80\nM30\n%\n")
+        return [f.line for f in check_text(text, load_profile(profile)) if f.rule == "TG601"]
+    assert tg601(f"G91 {step} {count}") == [6]
+    assert tg601(f"G91 {step}") == []
+    # under G90 the repeats drill the same hole; a count not known leaves X not followed
+    assert tg601(f"{step} {count}") == []
+    assert tg601(f"G91 {step} {count[0]}#1") == []
+
+
+@pytest.mark.parametrize("ending", ["G1 X1 F100 M2", "G0 X1 M2", "G0 X2 M30",
+                                    "G2 X2 Y0 R1 F100 M2", "G81 X1 Y1 Z-1 R2 F100 M2"])
+def test_a_linuxcnc_end_block_s_own_motion_mode_is_in_force(ending):
+    """Review 51, F7: an M2/M30 resets the modes once its block's words are done (LinuxCNC
+    interp_convert.cc, program end), so the block's own axis words move under the motion code
+    it writes or has in force: no TG411 "no motion mode in force". rs274 -g runs each."""
+    text = f"G21 G90 G17\nG0 X0 Y0 Z0\n{ending}\n"
+    assert [f.rule for f in check_text(text, load_profile("linuxcnc"))
+            if f.severity == "error"] == []
+    assert [f.line for f in check_text("G21 G90\nX1 M2\n", load_profile("linuxcnc"))
+            if f.rule == "TG411"] == [2]
 
 
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():
@@ -1448,15 +1500,18 @@ def test_check_units_gives_the_units_the_machine_is_set_to(tmp_path):
 def test_a_word_is_read_by_the_meaning_its_own_control_gives_it():
     """A Haas G84's J is the retract multiple (Haas mill operator's manual, G84); a FANUC G84
     has no J (0i-MF: X Y Z R P Q F K), so there J2 is a length in least input increments and
-    TG201 says so. A block of words alone in a cycle's mode repeats the cycle: its K is the
-    repeat count there too, no length."""
-    text = ("%\nO1000\nG21 G90 G17 G54\nT1 M06\nG00 G43 H1 Z50.\nS1000 M03\nG00 X0. Y0.\n"
-            "G98 G81 X1. Y1. Z-1. R0.1 F10.\nX2. Y2. K3\nG80\n"
-            "G98 G84 X1. Y1. Z-1. R2. F100. J2\nX3. J2\nG80\nM30\n%\n")
-    fanuc = [(f.line, f.message.split()[0]) for f in check_text(text, load_profile("fanuc-mill"))
-             if f.rule == "TG201"]
+    TG201 says so. A block of words alone in a cycle's mode repeats the cycle: its repeat count
+    is one there too, no length (FANUC's K; a Haas's is L, review 51 F15)."""
+    def text(count: str) -> str:
+        return ("%\nO1000\nG21 G90 G17 G54\nT1 M06\nG00 G43 H1 Z50.\nS1000 M03\nG00 X0. Y0.\n"
+                f"G98 G81 X1. Y1. Z-1. R0.1 F10.\nX2. Y2. {count}3\nG80\n"
+                "G98 G84 X1. Y1. Z-1. R2. F100. J2\nX3. J2\nG80\nM30\n%\n")
+    fanuc = [(f.line, f.message.split()[0])
+             for f in check_text(text("K"), load_profile("fanuc-mill")) if f.rule == "TG201"]
     assert fanuc == [(11, "J2")]
-    assert not [f for f in check_text(text, load_profile("haas-mill")) if f.rule == "TG201"]
+    haas = load_profile("haas-mill")
+    assert not [f for f in check_text(text("L"), haas) if f.rule == "TG201"]
+    assert [f.line for f in check_text(text("K"), haas) if f.rule == "TG201"] == [9]
 
 
 # A word the control refuses (a reading error at the word, or a whole block it cannot read)

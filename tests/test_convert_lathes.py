@@ -115,8 +115,9 @@ def test_a_haas_one_block_cycle_s_depth_is_not_rounded_away(tmp_path):
     # an OSP mill's cycle E: no mill manual at hand
     ("okuma-mill", "$A.MIN%\nG21\nG00 X0 Y0\nG82 X30. Y10. Z-10. R3. E0.5 F100.\nM02\n",
      (4, 25), "E0.5: the source control's manual"),
-    # a mill's G73 K with a point is no FANUC repeat count; Haas's depth, no page at hand
-    ("haas-mill", "%\nO1\nG20\nG00 X0 Y0 Z1.\nG73 X2. Y2. Z-1. R0.1 Q0.1 K0.5 F10.\nG80\nM30\n%\n",
+    # a mill's G73 K with a point is no FANUC repeat count (on a Haas it is the least peck
+    # depth, a length, and converted: tests/test_check.py, review 51 F15)
+    ("fanuc-mill", "%\nO1\nG20\nG00 X0 Y0 Z1.\nG73 X2. Y2. Z-1. R0.1 Q0.1 K0.5 F10.\nG80\nM30\n%\n",
      (5, 28), "K0.5: the source control's manual"),
     # Haas M19 R: the orientation angle by what is known of the manual, no page at hand
     ("haas-mill", "%\nO1\nG20\nM19 R90.\nM30\n%\n", (4, 5), "R90.: the source control's"),

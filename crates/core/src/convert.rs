@@ -3024,7 +3024,9 @@ impl Converter {
         let meanings = if gs.is_empty() && ms.is_empty() && !g_word && !m_word {
             crate::meaning::Meanings::default()
         } else {
-            cycle_meanings_in(system, self.c.family, self.c.lathe, &gs, &ms, b.words)
+            // (a Haas's cycles read some words otherwise than a FANUC's: its G73/G83 K)
+            let haas = Some(self.c.src_modal.haas);
+            cycle_meanings_in(system, self.c.family, haas, self.c.lathe, &gs, &ms, b.words)
         };
         let family = self.c.family;
         let pqr_code = gs.iter().any(|&g| pqr_code(family, self.c.lathe, g));
@@ -8010,7 +8012,15 @@ pub fn cycle_meanings(
     ms: &[i64],
     words: &[WordSpan<'_>],
 ) -> crate::meaning::Meanings {
-    cycle_meanings_in(crate::meaning::GCodeSystem::A, family, lathe, gs, ms, words)
+    cycle_meanings_in(
+        crate::meaning::GCodeSystem::A,
+        family,
+        None,
+        lathe,
+        gs,
+        ms,
+        words,
+    )
 }
 
 /// Whether G code `g` (by its system A number, [`crate::modal::ModalSettings::read_g`]) ends a
@@ -8087,6 +8097,7 @@ pub fn cycle_in_force(
 pub fn cycle_meanings_in(
     system: crate::meaning::GCodeSystem,
     family: Family,
+    haas: Option<bool>,
     lathe: bool,
     gs: &[i64],
     ms: &[i64],
@@ -8096,7 +8107,7 @@ pub fn cycle_meanings_in(
         b'G' | b'g' => (w.token[0], system.token(&w.token[1..])),
         letter => (letter, &w.token[1..]),
     });
-    code_meanings(family, lathe, gs, ms, tokens)
+    code_meanings_of(family, haas, lathe, gs, ms, tokens)
 }
 
 /// [`cycle_meanings`] from a block's words as (address, number as written): the checker reads
@@ -8305,7 +8316,20 @@ fn cycle_table(
         // G73/G83's I J K are the first, reducing and least peck depths, lengths; Haas G84
         // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
         match g {
-            73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB => {
+            // a Haas's repeat count is L ("L: number of holes", Haas mill operator's manual,
+            // G81-G89), its G73/G83's K the least peck depth, a length, in a block of hole
+            // positions too (review 51, F15: `G91 X1. K4` after a G83 was read as four
+            // repeats, and kept unconverted under a change of units); no other Haas cycle
+            // reads K
+            73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB && haas == Some(true) => {
+                if matches!(g, 73 | 83) {
+                    set(b"K", length);
+                }
+                if matches!(g, 74 | 84) {
+                    set(b"J", number); // the retract multiple (G84; G74 its reverse)
+                }
+            }
+            73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB && haas != Some(true) => {
                 if matches!(g, 73 | 83) && has_point(b'K') && !(has(b'I') || has(b'J')) {
                     // a K with a point is no FANUC repeat count (a whole number): a Haas
                     // G73's depth after which the tool returns to R, by what is known of its

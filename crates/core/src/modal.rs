@@ -236,6 +236,10 @@ pub struct BlockValues {
     /// The first value of each letter, meaningful where `given` has the letter's bit.
     values: [Dec; 26],
     given: u32,
+    /// Letters whose word a code of the block makes no length, position or cycle value (`K3`
+    /// of a FANUC canned cycle, its repeat count), their value kept in `values` all the same
+    /// ([`BlockValues::other`]): the machine's positions never read them as `given`'s.
+    others: u32,
     /// Letters given a value the checker cannot evaluate (`F#101`), by [`bit`].
     pub unknown: u32,
     /// The block's M02/M30 may not run (LinuxCNC: one inside an o-word condition or loop, or
@@ -255,6 +259,7 @@ impl Default for BlockValues {
             mirror: false,
             values: [Dec::ZERO; 26],
             given: 0,
+            others: 0,
             unknown: 0,
             end_unsure: false,
         }
@@ -270,8 +275,24 @@ impl BlockValues {
         self.decimal_g = false;
         self.mirror = false;
         self.given = 0;
+        self.others = 0;
         self.unknown = 0;
         self.end_unsure = false;
+    }
+
+    /// Keep `value` for `letter`, a word the block's codes make no length, position or cycle
+    /// value ([`BlockValues::other`]), unless the block already gave that letter one.
+    pub fn set_other(&mut self, letter: u8, value: Dec) {
+        if letter.is_ascii_uppercase() && (self.given | self.others) & bit(letter) == 0 {
+            self.others |= bit(letter);
+            self.values[(letter - b'A') as usize] = value;
+        }
+    }
+
+    /// The value of a word the block's codes make no length, position or cycle value.
+    pub fn other(&self, letter: u8) -> Option<Dec> {
+        (letter.is_ascii_uppercase() && self.others & bit(letter) != 0)
+            .then(|| self.values[(letter - b'A') as usize])
     }
 
     /// Note that the block gives `letter` a value that cannot be evaluated.
@@ -1284,6 +1305,18 @@ impl ModalMachine {
                 polar = bit(r) | bit(a);
             }
         }
+        // a mill's canned cycle under incremental programming with a repeat count steps the
+        // hole position by the plane's increments that many times (None: one hole; Some(None):
+        // a count not known here, where the plane's axes end is not followed)
+        let repeats = match s.cycle {
+            Some(_) if !absolute && !self.settings.fanuc_lathe => self.cycle_repeats(v),
+            _ => None,
+        };
+        let s = &mut self.state;
+        let plane_axes = repeats.map_or(0, |_| {
+            let (a, b) = polar_axes(s.plane);
+            bit(a) | bit(b)
+        });
         // an axis the block gives no value (known or not) and that is not of the polar pair
         // is left as it is by every branch below: only the others are looked at (most blocks
         // write two or three of the nine)
@@ -1362,6 +1395,17 @@ impl ModalMachine {
                 }
                 continue;
             }
+            let value = if plane_axes & bit(axis) == 0 {
+                value
+            } else {
+                match repeats.flatten().and_then(|n| value.checked_mul(n)) {
+                    Some(steps) => steps,
+                    None => {
+                        lose_axis(s, &mut self.drift[i], i, axis);
+                        continue;
+                    }
+                }
+            };
             s.unknown &= !bit(axis);
             s.position[i] = if absolute {
                 Some(value)
@@ -1373,6 +1417,32 @@ impl ModalMachine {
                     .or(s.position[i])
             };
         }
+    }
+
+    /// The repeat count of a mill's canned cycle block, where it is more than one hole:
+    /// FANUC's K ("number of repeats", 0i-MF operator's manual, "Canned cycle"), a Haas's and
+    /// LinuxCNC's L (Haas NGC mill operator's manual, G81: "L number of holes"; LinuxCNC
+    /// G-code reference, "Canned cycles": "L repeats the cycle, each from the position the
+    /// last ended, under G91"). Some(None) for a count not known or not a whole number of one
+    /// or more (K0 stores the cycle without a hole on a FANUC: where its position goes is not
+    /// said); None for no count or 1.
+    #[cold]
+    #[inline(never)]
+    fn cycle_repeats(&self, v: &BlockValues) -> Option<Option<Dec>> {
+        let letter = match self.settings.family {
+            Family::MacroB if self.settings.haas => b'L',
+            Family::MacroB => b'K',
+            Family::LinuxCnc => b'L',
+            _ => return None,
+        };
+        if v.unknown & bit(letter) != 0 {
+            return Some(None);
+        }
+        let n = v.get(letter).or_else(|| v.other(letter))?;
+        if n.is_whole() && n.trunc() == 1 {
+            return None;
+        }
+        Some(Some(n).filter(|n| n.is_whole() && n.trunc() >= 1))
     }
 
     /// The X and Z of a lathe's U and W written in a block that takes the tool where the

@@ -490,14 +490,22 @@ impl Reader {
             .collect();
         let system = self.settings.modal.g_system;
         let (family, lathe) = (self.settings.family, self.settings.lathe);
+        let haas = Some(self.settings.modal.haas);
         self.cycle_code = crate::convert::cycle_in_force(self.cycle_code, family, lathe, &gs, &ms);
         // a block repeating the cycle in force: its words by the cycle's roles
         let repeated = self.cycle_code.filter(|c| !gs.contains(c));
         let mut with_cycle = gs.clone();
         with_cycle.extend(repeated);
-        let mut roles =
-            crate::convert::cycle_meanings_in(system, family, lathe, &with_cycle, &ms, &spans)
-                .roles;
+        let mut roles = crate::convert::cycle_meanings_in(
+            system,
+            family,
+            haas,
+            lathe,
+            &with_cycle,
+            &ms,
+            &spans,
+        )
+        .roles;
         let radius = self.settings.modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
             roles[usize::from(radius - b'A')] = Some(role);

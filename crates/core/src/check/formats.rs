@@ -828,7 +828,16 @@ impl Checker {
                 self.report(Rule::MixedDecimalStyles, message, at, column);
             }
         }
-        let value = match read_word(&fmt, w, || self.no_point(w.letter)) {
+        // (a count or a selector without a point is its whole number: `K3` of a canned cycle
+        // is three repeats, not 0.003, whatever the letter's reading as a length)
+        let no_point = || match selector {
+            true => NoPoint {
+                whole: true,
+                increments: false,
+            },
+            false => self.no_point(w.letter),
+        };
+        let value = match read_word(&fmt, w, no_point) {
             Ok(v) => v,
             Err(message) => {
                 self.refused_at.get_or_insert(line);

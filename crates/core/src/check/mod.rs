@@ -2285,7 +2285,10 @@ impl Checker {
                 letter
                     if !self.meanings_none
                         && (self.meanings.not_length(letter)
-                            || (self.meanings.data && AXES.contains(&letter))) => {}
+                            || (self.meanings.data && AXES.contains(&letter))) =>
+                {
+                    self.values.set_other(letter, v);
+                }
                 letter => self.values.set_default(letter, v),
             }
         }

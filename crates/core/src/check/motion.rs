@@ -433,8 +433,14 @@ impl Checker {
     pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, facts: &Facts<'_>, takes_axes: bool) {
         let moved = facts.moved();
         let takes_axes = takes_axes || self.machine.taken().is_some();
-        if self.machine.state.motion.is_none()
-            && self.machine.state.cycle.is_none()
+        // (the block's own motion and cycle where its M02/M30 reset them after its words: a
+        // `G1 X1 M2` moves under the G1 it writes, on LinuxCNC too, whose reset has none)
+        let (motion, cycle) = match self.machine.ended_from.as_deref() {
+            None => (self.machine.state.motion, self.machine.state.cycle),
+            Some(from) => (from.motion, from.cycle),
+        };
+        if motion.is_none()
+            && cycle.is_none()
             && !moved.is_empty()
             && !self.motion_unknown
             && !takes_axes
