@@ -1285,6 +1285,15 @@ impl ModalMachine {
                     s.cycle_words[i] = Some(value);
                 }
             }
+            // a mill's canned cycle under incremental programming with a repeat count steps
+            // the hole position by the plane's increments that many times
+            if s.incremental
+                && !self.settings.fanuc_lathe
+                && taken != Some(AxesTaken::Set)
+                && !v.has_g(92)
+            {
+                self.cycle_repeated(v);
+            }
         }
         // a Fanuc or Haas lathe's single cycle G90, G92, G94 (B's and C's G77-G79, read as A's
         // numbers): to the end point and back, the position stays; a block of its mode without
@@ -1305,18 +1314,6 @@ impl ModalMachine {
                 polar = bit(r) | bit(a);
             }
         }
-        // a mill's canned cycle under incremental programming with a repeat count steps the
-        // hole position by the plane's increments that many times (None: one hole; Some(None):
-        // a count not known here, where the plane's axes end is not followed)
-        let repeats = match s.cycle {
-            Some(_) if !absolute && !self.settings.fanuc_lathe => self.cycle_repeats(v),
-            _ => None,
-        };
-        let s = &mut self.state;
-        let plane_axes = repeats.map_or(0, |_| {
-            let (a, b) = polar_axes(s.plane);
-            bit(a) | bit(b)
-        });
         // an axis the block gives no value (known or not) and that is not of the polar pair
         // is left as it is by every branch below: only the others are looked at (most blocks
         // write two or three of the nine)
@@ -1395,17 +1392,6 @@ impl ModalMachine {
                 }
                 continue;
             }
-            let value = if plane_axes & bit(axis) == 0 {
-                value
-            } else {
-                match repeats.flatten().and_then(|n| value.checked_mul(n)) {
-                    Some(steps) => steps,
-                    None => {
-                        lose_axis(s, &mut self.drift[i], i, axis);
-                        continue;
-                    }
-                }
-            };
             s.unknown &= !bit(axis);
             s.position[i] = if absolute {
                 Some(value)
@@ -1426,8 +1412,6 @@ impl ModalMachine {
     /// last ended, under G91"). Some(None) for a count not known or not a whole number of one
     /// or more (K0 stores the cycle without a hole on a FANUC: where its position goes is not
     /// said); None for no count or 1.
-    #[cold]
-    #[inline(never)]
     fn cycle_repeats(&self, v: &BlockValues) -> Option<Option<Dec>> {
         let letter = match self.settings.family {
             Family::MacroB if self.settings.haas => b'L',
@@ -1443,6 +1427,37 @@ impl ModalMachine {
             return None;
         }
         Some(Some(n).filter(|n| n.is_whole() && n.trunc() >= 1))
+    }
+
+    /// The hole positions of a mill's canned cycle block under G91 with a repeat count
+    /// ([`ModalMachine::cycle_repeats`]), before [`ModalMachine::apply_taken`] moves the
+    /// plane's axes by one increment: the other holes' increments added (a count not known,
+    /// or a sum too large for the core's numbers: the plane's axes the block moves not
+    /// known). Off the hot path: only a block under a cycle in G91 asks.
+    #[cold]
+    #[inline(never)]
+    fn cycle_repeated(&mut self, v: &BlockValues) {
+        let Some(n) = self.cycle_repeats(v) else {
+            return;
+        };
+        let (a, b) = polar_axes(self.state.plane);
+        for axis in [a, b] {
+            let (Some(i), Some(value)) = (axis_index(axis), v.get(axis)) else {
+                continue;
+            };
+            let s = &mut self.state;
+            if s.unknown & bit(axis) != 0 {
+                continue; // (not known already)
+            }
+            let more = n
+                .and_then(|n| n.checked_add(Dec::from_int(-1)))
+                .and_then(|n| value.checked_mul(n))
+                .and_then(|steps| s.position[i]?.checked_add(steps));
+            match more {
+                Some(end) => s.position[i] = Some(end),
+                None => lose_axis(s, &mut self.drift[i], i, axis),
+            }
+        }
     }
 
     /// The X and Z of a lathe's U and W written in a block that takes the tool where the

@@ -433,17 +433,12 @@ impl Checker {
     pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, facts: &Facts<'_>, takes_axes: bool) {
         let moved = facts.moved();
         let takes_axes = takes_axes || self.machine.taken().is_some();
-        // (the block's own motion and cycle where its M02/M30 reset them after its words: a
-        // `G1 X1 M2` moves under the G1 it writes, on LinuxCNC too, whose reset has none)
-        let (motion, cycle) = match self.machine.ended_from.as_deref() {
-            None => (self.machine.state.motion, self.machine.state.cycle),
-            Some(from) => (from.motion, from.cycle),
-        };
-        if motion.is_none()
-            && cycle.is_none()
+        if self.machine.state.motion.is_none()
+            && self.machine.state.cycle.is_none()
             && !moved.is_empty()
             && !self.motion_unknown
             && !takes_axes
+            && !self.ended_in_motion()
         {
             let names: Vec<String> = moved.iter().map(|&a| (a as char).to_string()).collect();
             let message = format!(
@@ -453,6 +448,18 @@ impl Checker {
             );
             self.report(Rule::NoMotionMode, message, b.line, facts.col(moved[0]));
         }
+    }
+
+    /// The block's M02/M30 reset the modes after its words, and its own axis words moved
+    /// under a motion or cycle in force before (`G1 X1 M2` on LinuxCNC, whose reset has no
+    /// motion mode: review 51, F7). Asked only where the state has no motion mode.
+    #[cold]
+    #[inline(never)]
+    fn ended_in_motion(&self) -> bool {
+        self.machine
+            .ended_from
+            .as_deref()
+            .is_some_and(|from| from.motion.is_some() || from.cycle.is_some())
     }
 
     /// The block's motion-group codes, read with the machine's own changes of state before
