@@ -1328,6 +1328,9 @@ def test_a_repeat_count_of_a_modal_cycle_s_block_is_a_count():
                 if f.rule == "TG201"]
     assert tg201("G91 X10. K4\nG90 X30. Y30. K2") == []
     assert tg201("X20. K2") == []
+    # planes alone keep the cycle (review 51, F10); a motion code leaves it
+    assert tg201("G17 X20. K2") == []
+    assert tg201("G00 X20. K2") == [(5, 10)]
 
 
 def test_a_haas_cycle_s_k_is_a_peck_depth_not_a_count(tmp_path):

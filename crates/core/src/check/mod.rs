@@ -2510,7 +2510,9 @@ impl Checker {
         lathe: bool,
         motion_only: bool,
     ) -> Option<crate::meaning::Meanings> {
-        if motion_only {
+        // (a mill's cycle in force repeats in a block whose codes are planes alone, G17-G19:
+        // `G17 X10. K4` after a G81 is four holes, its K the count; review 51, F10)
+        if motion_only && (self.machine.state.cycle.is_none() || lathe || motion_written(b)) {
             debug_assert_eq!(
                 self.meanings_afresh(b, lathe),
                 crate::meaning::Meanings::default(),
@@ -2558,10 +2560,7 @@ impl Checker {
         // `G91 X10. K4` repeats a G81 at the next hole, FANUC 0i-MF "Canned cycle"; audit 50,
         // B9)
         let cycle = self.machine.state.cycle.filter(|_| !lathe);
-        // (nor where its G codes are planes alone, G17-G19, read with G00-G03 without a
-        // meaning: `motion_codes_only`)
-        let motion = gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89))
-            || (g > 0 && gs[..g].iter().all(|&c| matches!(c, 17..=19)));
+        let motion = gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89));
         if let Some(code) = cycle.filter(|_| !motion && g < gs.len()) {
             gs[g] = code;
             g += 1;
@@ -2730,6 +2729,17 @@ pub(crate) fn motion_codes_only(words: &[Word<'_>]) -> bool {
     words
         .iter()
         .all(|w| w.letter != b'G' || plain_motion_code(w))
+}
+
+/// Whether a block whose G codes are G00-G03 and G17-G19 written plainly
+/// ([`motion_codes_only`]) writes one of G00-G03: one that writes planes alone keeps a mill's
+/// canned cycle in force ([`Checker::code_meanings`]). Asked only under a cycle.
+#[cold]
+#[inline(never)]
+fn motion_written(b: &BlockView<'_>) -> bool {
+    b.words
+        .iter()
+        .any(|w| w.letter == b'G' && !matches!(w.number.last(), Some(b'7'..=b'9')))
 }
 
 /// Whether G word `w` is G00-G03 or G17-G19 written plainly ([`motion_codes_only`]).
