@@ -69,7 +69,8 @@ if TYPE_CHECKING:
         max_parameter: int
         # checks.read_only: (first, last, what), beside the family's own list; None: none
         read_only: list[tuple[int, int, str]] | None
-        past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
+        # "alarm", "round", "round_computed", "unknown" or "any": a value past the word format
+        past_decimals: str
         past_sequence: str
         meanings: list[tuple[str, str, str]]  # ("47", "text-engraving", "text engraving")
         code_words: list[tuple[str, str, str]]  # ("G71", "P", "N"): a word naming a block

@@ -1069,6 +1069,9 @@ def _is_number(value: object) -> bool:
 
 
 PAST_FORMAT = ("alarm", "round", "unknown", "any")
+# decimals may also be "round_computed": the manuals round a computed value (a variable's, an
+# expression's) to the increment and say nothing of a written number's extra decimals
+PAST_DECIMALS = PAST_FORMAT + ("round_computed",)
 
 
 def _checks(data: dict[str, Any]) -> CheckSettings:
@@ -1105,7 +1108,7 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         if "unknown_m" in data else None,
         comment_colon=keys.choice("comment_colon", ("stop", "text"), "text")
         if "comment_colon" in data else None,
-        past_decimals=keys.choice("past_decimals", PAST_FORMAT, "alarm"),
+        past_decimals=keys.choice("past_decimals", PAST_DECIMALS, "alarm"),
         past_sequence=keys.choice("past_sequence", PAST_FORMAT, "alarm"),
         read_only=_read_only(keys.get("read_only", dict, {}))
         if "read_only" in data else None,

@@ -417,7 +417,8 @@ SOURCES = {
              "Manuals, \"Custom macro\"): the eleventh is the error.",
     "TG203": "ISO 6983-1 Annex C, and a profile whose control alarms on decimals past its "
              "resolution (checks.past_decimals = \"alarm\", the strict ISO profiles). Where the "
-             "control rounds (SINUMERIK, MD 10200) or no source says, TG208 instead.",
+             "control rounds (SINUMERIK, MD 10200), rounds only a computed value (Fanuc, Haas) "
+             "or no source says, TG208 instead.",
     "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence number "
              "past N99999 and an Okuma sequence name past N04 are TG208 (no alarm documented), "
              "and so is a Haas program number past O99999 (the NGC manual's format is Onnnnn, "
@@ -430,8 +431,13 @@ SOURCES = {
              "codes.*.words; FANUC \"Multiple repetitive cycle\", \"Subprogram\", \"Custom "
              "macro\").",
     "TG208": "A profile's checks.past_decimals and checks.past_sequence (what its control "
-             "does with digits past the format: SINUMERIK rounds, MD 10200; a Haas sequence "
-             "number past N99999 has no alarm in its manuals). A Haas program number past "
+             "does with digits past the format: SINUMERIK rounds, MD 10200; a Fanuc and a Haas "
+             "round a variable's or expression's value in an address to its increment, "
+             "checks.past_decimals = \"round_computed\" (FANUC Custom Macro, \"ROUND\": G91 "
+             "X-#1 with #1 = 1.2345 moves 1.235 mm; Haas Mill Operator's Manual 96-8000, "
+             "\"Notes on functions\": #1 = 1.00333, G0 X[#1 + #1] moves to 2.0067), and no "
+             "manual at hand says what a number written with more decimals does; a Haas "
+             "sequence number past N99999 has no alarm in its manuals). A Haas program number past "
              "O99999: the NGC manual gives Onnnnn (Mill Operator's Manual, NGC, 2017, 4.3.3 and "
              "5.2.2) and no Haas source says what a longer one does; the number names the "
              "program and moves nothing, so the doubt is said and the program read on (issue "

@@ -407,6 +407,41 @@ def test_decimals_past_the_resolution_as_each_control_takes_them(profile, progra
         assert decimals == [(expected, "error" if expected == "TG203" else "warning")]
 
 
+COMPUTED_ROUNDED = ("the control's manuals say a variable's or expression's value in an address "
+                    "is rounded to its increment, not whether a number written with more "
+                    "decimals is rounded too, cut or alarms")
+
+
+@pytest.mark.parametrize("profile, program, line, token", [
+    # the FANUC custom macro chapter's own example (ROUND): at 0.001 mm, G91 X-#1 with
+    # #1 = 1.2345 moves 1.235 mm -- nothing said of it; the same digits written out are TG208
+    ("fanuc-mill", "%\nO1\nG21 G90 G00 X0\n#1=1.2345\nG00 G91 X-#1\nX-1.2345\nM30\n%\n",
+     6, "X-1.2345"),
+    ("fanuc-lathe", "%\nO1\nG21 G99 G00 X20. Z1.\nG01 Z-1.23456 F.1\nM30\n%\n",
+     4, "Z-1.23456"),
+    # Haas 96-8000, "Notes on functions": #1 = 1.00333, G0 X[#1 + #1] moves to 2.0067 (inch)
+    ("haas-mill", "%\nO01\nG20 G90 G00 X0\n#1=1.00333\nG0 X[#1+#1]\nG0 X1.00333\nM30\n%\n",
+     6, "X1.00333"),
+    ("haas-lathe", "%\nO01\nG20 G99 G00 X1. Z.1\nG01 X0.33858 F.01\nM30\n%\n",
+     4, "X0.33858"),
+])
+def test_decimals_past_the_increment_on_a_fanuc_or_haas_say_what_the_manuals_say(
+        profile, program, line, token):
+    """A computed value past the increment is rounded (the manuals' examples), so only a number
+    written with more decimals is said, and the warning says which half is documented."""
+    got = [f for f in check_text(program, load_profile(profile)) if f.rule == "TG208"]
+    assert [(f.line, f.severity) for f in got] == [(line, "warning")]
+    assert got[0].message.startswith(token + ":")
+    assert got[0].message.endswith(COMPUTED_ROUNDED)
+
+
+def test_an_okuma_keeps_decimals_past_the_increment_undocumented():
+    program = "$O1.MIN%\nG21 G90 G00 X0\nG01 X1.23456 F100.\nM02\n%\n"
+    got = [f.message for f in check_text(program, load_profile("okuma-mill")) if f.rule == "TG208"]
+    assert got == ["X1.23456: 5 decimals; the format X+053 holds 3: the control's manuals do not "
+                   "say whether it rounds, cuts or alarms"]
+
+
 # -- text outside ASCII (TG127) ------------------------------------------------------------------
 
 

@@ -22,8 +22,14 @@ pub enum PastFormat {
     /// The control rounds to its resolution (a SINUMERIK, machine data 10200): TG208, a
     /// warning naming what it rounds to.
     Round,
-    /// The manuals at hand do not say (Fanuc and Haas decimals past the increment, a Haas
-    /// sequence number past N99999): TG208, a warning.
+    /// The manuals say a value the control computes in an address (a variable's, an
+    /// expression's) is rounded to the address's increment, and not what a number written
+    /// with more decimals does (Fanuc and Haas decimals past the increment: FANUC Custom
+    /// Macro, "ROUND"; Haas Mill Operator's Manual 96-8000, "Notes on functions"): TG208, a
+    /// warning saying both.
+    RoundComputed,
+    /// The manuals at hand do not say (a Haas sequence number past N99999, an Okuma's decimals
+    /// past the increment): TG208, a warning.
     Unknown,
     /// The control has no least increment (LinuxCNC reads double-precision numbers): nothing
     /// to say.
@@ -35,6 +41,7 @@ impl PastFormat {
         Some(match name {
             "alarm" => PastFormat::Alarm,
             "round" => PastFormat::Round,
+            "round_computed" => PastFormat::RoundComputed,
             "unknown" => PastFormat::Unknown,
             "any" => PastFormat::Any,
             _ => return None,
@@ -45,6 +52,11 @@ impl PastFormat {
     pub fn effect(self) -> &'static str {
         match self {
             PastFormat::Round => "the control rounds it to its resolution",
+            PastFormat::RoundComputed => {
+                "the control's manuals say a variable's or expression's value in an address is \
+                 rounded to its increment, not whether a number written with more decimals is \
+                 rounded too, cut or alarms"
+            }
             _ => "the control's manuals do not say whether it rounds, cuts or alarms",
         }
     }

@@ -212,7 +212,7 @@ rules! {
     IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
         "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
     PastFormat = "TG208", Warning, "profile", Formats, false,
-        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence), a lathe thread's start angle Q written with a decimal point (the manuals give it in 0.001 deg without one: Haas lathe G32/G76, FANUC 0i-TF G32), a Haas program number past O's five digits (no Haas source says whether the NGC alarms; the number moves nothing, and the program is read as written)";
+        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\", \"round_computed\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence), a lathe thread's start angle Q written with a decimal point (the manuals give it in 0.001 deg without one: Haas lathe G32/G76, FANUC 0i-TF G32), a Haas program number past O's five digits (no Haas source says whether the NGC alarms; the number moves nothing, and the program is read as written)";
     ReadOnlyVariable = "TG209", Error, "profile", Formats, false,
         "assignment to a read-only system variable (Custom Macro B: an input, the date, modal information, a position, alarm PS0116; LinuxCNC: tool data, the position, predefined #<_names>; SINUMERIK: the actual values $AA_IM...; a profile's checks.read_only: a Haas NGC's inputs, timers...)";
     ReadOnlyVariableUndocumented = "TG211", Warning, "profile", Formats, false,

@@ -82,7 +82,8 @@ fn alarms(policy: Option<String>) -> Option<bool> {
     policy.map(|p| p == "alarm")
 }
 
-/// `checks.past_decimals` / `past_sequence`: "alarm", "round", "unknown" or "any".
+/// `checks.past_decimals` / `past_sequence`: "alarm", "round", "unknown" or "any" (decimals
+/// also "round_computed").
 fn past_format(name: &str) -> PyResult<PastFormat> {
     PastFormat::from_name(name)
         .ok_or_else(|| PyValueError::new_err(format!("unknown checks.past_* value {name:?}")))
