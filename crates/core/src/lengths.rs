@@ -48,6 +48,7 @@ use crate::expr;
 use crate::hash::{FastMap, FastSet};
 use crate::lex::{blank, Dialect, Family, LexError, Token};
 use crate::machine::Machine;
+use crate::restart::Control;
 use crate::statement::{
     is_parameter_name, linuxcnc_definition, o_label, parameter_name, parameter_number, scoped_name,
     sub_local, Kind as StatementKind,
@@ -212,6 +213,51 @@ pub struct Analysis {
     /// `##1 = 7`, `X#[#1]`), and how: which parameter it is is known only when the program
     /// runs, so no parameter's class can be proved.
     indirect: Option<(usize, &'static str)>,
+    /// The control the program is written for: which of its system variables hold no length
+    /// ([`system_not_length`]).
+    control: Control,
+}
+
+/// What a Custom Macro B system variable numbered `n` holds on `control`, where its maker's
+/// table gives it a meaning that is not a length: the program's alarm and message stop, the
+/// clocks, the parts counts, the modal G codes... Assigned (`#3000 = 1 (TOOL BROKEN)`) or read,
+/// such a variable is not a length, as the proof would otherwise have to be shown by the
+/// program's uses, which an alarm never has (audit 50, B6). The positions (#5001 on), the tool
+/// and work offsets (#2001 on, #5201 on, #7001 on, #10001 on) are lengths in the machine's
+/// units and are not here, nor are a previous block's F, E or S (#4108, #4109, #4119: a feed
+/// or a surface speed, lengths per minute). Sources: FANUC 0i-MF operator's manual, "System
+/// variables"; Haas Mill Operator's Manual, NGC, 2017, 6.14.7 (Macro Variables Table); the
+/// ranges as docs/dialects.md, "Variables", lists them.
+pub(crate) fn system_not_length(control: Control, n: u32) -> Option<&'static str> {
+    let shared = match n {
+        3000 => Some("the program's alarm"),
+        3001 | 3002 => Some("a clock"),
+        3003 | 3004 => Some("the control of single block, feed hold and override"),
+        3006 => Some("the stop with a message"),
+        3011 | 3012 => Some("the date or time"),
+        3901 | 3902 => Some("a parts count"),
+        4001..=4021 => Some("the G code of a modal group"),
+        _ => None,
+    };
+    match control {
+        Control::Fanuc => shared.or(match n {
+            1000..=1035 => Some("an interface signal"),
+            3005 => Some("the settings"),
+            3007 => Some("the mirror image state"),
+            4022..=4030 => Some("the G code of a modal group"),
+            4107 | 4111 | 4113 | 4114 | 4115 | 4120 | 4130 => {
+                Some("the previous block's D, H, M, N, O, T or P code")
+            }
+            _ => None,
+        }),
+        Control::Haas => shared.or(match n {
+            3020..=3025 => Some("a timer"),
+            3026 => Some("the tool in the spindle"),
+            3027 => Some("the spindle's speed"),
+            _ => None,
+        }),
+        _ => None,
+    }
 }
 
 /// Whether `text` names a parameter by a value: `#` then (after blanks) `[` or `#`.
@@ -389,10 +435,13 @@ fn is_local(name: &[u8]) -> bool {
 impl Analysis {
     /// The analysis of a program written for `machine`.
     pub fn new(machine: &Machine) -> Analysis {
-        Analysis::of(
-            machine.convert_roles(),
-            ProgramStarts::new(machine.family, machine.check.program_number),
-        )
+        Analysis {
+            control: machine.control,
+            ..Analysis::of(
+                machine.convert_roles(),
+                ProgramStarts::new(machine.family, machine.check.program_number),
+            )
+        }
     }
 
     /// The analysis of a program whose P, Q and R have the converter's roles `pqr`, its file
@@ -428,6 +477,7 @@ impl Analysis {
             ties: Vec::new(),
             tied: HashSet::new(),
             indirect: None,
+            control: Control::Iso,
         }
     }
 
@@ -986,6 +1036,41 @@ impl Analysis {
                 }
             }
         }
+        // A system variable whose meaning is not a length is none, whatever shows it or not.
+        for (id, name) in self.names.iter().enumerate() {
+            let Some(what) = name
+                .strip_prefix(b"#")
+                .and_then(|d| std::str::from_utf8(d).ok())
+                .and_then(|d| d.parse::<u32>().ok())
+                .and_then(|n| system_not_length(self.control, n))
+            else {
+                continue;
+            };
+            let key = Key {
+                name: id as u32,
+                program: None,
+                sub: None,
+            };
+            match classes.entry(key) {
+                Entry::Occupied(e) if *e.get() == Class::Length => {
+                    problems.entry(key).or_insert_with(|| {
+                        format!(
+                            "{} is read as a length (line {}), but on this control it is \
+                             {what}, not a length",
+                            self.shown(key),
+                            uses.iter()
+                                .find(|(k, _)| *k == key)
+                                .and_then(|(_, u)| u.length)
+                                .unwrap_or(0),
+                        )
+                    });
+                }
+                Entry::Occupied(_) => {}
+                Entry::Vacant(e) => {
+                    e.insert(Class::Other);
+                }
+            }
+        }
         for &(key, line) in nonlinear.iter() {
             problems.entry(key).or_insert_with(|| {
                 format!(
@@ -1410,6 +1495,42 @@ mod tests {
             why[0].1.starts_with("#5221 is read into the length #<a>"),
             "{why:?}"
         );
+    }
+
+    /// A FANUC or Haas system variable whose meaning is no length is none, set or read
+    /// (audit 50, B6); read as a length it is refused; on another control it proves nothing.
+    #[test]
+    fn a_system_variable_that_holds_no_length_is_none() {
+        let of = |control: Control, text: &str| {
+            let mut a = analysis(&[]);
+            a.control = control;
+            a.lines(text.as_bytes(), 0, &macro_b()).unwrap();
+            lists(&a.result())[0].2.clone()
+        };
+        for control in [Control::Fanuc, Control::Haas] {
+            for text in ["#3000=1", "#3006=1", "#3901=#3901+1", "#3000=#4003"] {
+                assert!(
+                    of(control, text).is_empty(),
+                    "{text}: {:?}",
+                    of(control, text)
+                );
+            }
+            assert_eq!(
+                of(control, "G0 X#3901"),
+                [(
+                    "#3901".to_string(),
+                    "#3901 is read as a length (line 1), but on this control it is a parts \
+                     count, not a length"
+                        .to_string()
+                )]
+            );
+            assert_eq!(of(control, "#5221=10.").len(), 1);
+        }
+        assert_eq!(of(Control::Fanuc, "#4130=1"), []);
+        assert_eq!(of(Control::Haas, "#4130=1").len(), 1);
+        assert_eq!(of(Control::Haas, "#3026=1"), []);
+        assert_eq!(of(Control::Fanuc, "#3026=1").len(), 1);
+        assert_eq!(of(Control::Iso, "#3000=1").len(), 1);
     }
 
     /// A word of a shape read before ([`Analysis::new_shape`]) adds nothing, but the same shape
