@@ -412,6 +412,16 @@ SOURCES = {
              "title. A warning: the control reads on, without what stood there (an O number "
              "there is lost). Not on a Haas (no Haas source says so; TG137 there) nor the "
              "strict ISO profiles: TG111/TG112 there.",
+    "TG130": "ISO 6983-1 clause 5.2 (the word order the standard recommends): judged on the "
+             "ISO profiles (iso-mill, iso-lathe, pm322-eia, cm332-quadrant, sinumerik-7e2) "
+             "and heidenhain-iso, whose source was not looked at for it. Not on the FANUC, "
+             "Haas, Okuma, SINUMERIK and LinuxCNC profiles (audit 50, B4): their controls "
+             "read a block's words in any order and their manuals write their own forms "
+             "against 5.2's order (FANUC and Haas: G10 L2 P1 X0 Y0 Z0, M98 P2000 L3, Haas "
+             "M97 P100, the lathe's G71 P10 Q20 U0.01 W0.005 D0.05 F0.01, G66 P9002 Z-5. R1.; "
+             "LinuxCNC G code overview, \"Order of Execution\": the order of a line's items "
+             "is not their position on it), so the note there was noise on the manual's own "
+             "forms.",
     "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
              "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
              "Manuals, \"Custom macro\"): the eleventh is the error.",
