@@ -545,8 +545,9 @@ SOURCES = {
              "profiles (Annex E), on LinuxCNC (rs274 puts M0 M1 M2 M30 M60 in one modal group "
              "and refuses two) and on a Haas (one M code a line), TG308 on a FANUC, SINUMERIK "
              "or Okuma; a restart after such a block is refused either way, as which stop it "
-             "makes is not known. LinuxCNC: rs274 \"Two m codes used from same modal group\". HEIDENHAIN ISO "
-             "applies a G90 or G91 to the coordinates after it, so both may stand in one block "
+             "makes is not known. LinuxCNC: rs274 \"Two m codes used from same modal "
+             "group\". HEIDENHAIN ISO applies a G90 or G91 to the coordinates after it, so both "
+             "may stand in one block "
              "(TNC 426/425 ISO manual: \"G02 G91 X+5 G90 Y-5\"): no TG304 there.",
     "TG307": "Not an error: a code the profile does not list may be the machine's. Fanuc: the "
              "CNC decodes M00 M01 M02 M30 M98 M99 M198 (and M codes its parameters make calls), "
