@@ -1506,7 +1506,7 @@ impl Converter {
     /// numbers are surely no lengths, so it is kept as written: each comparison of its condition
     /// (the parts between AND, OR and XOR) reads a parameter, every parameter the condition
     /// reads is a system variable that FANUC's and Haas's tables both give a meaning that is no
-    /// length (#4003, the G code of group 3: [`crate::lengths::system_not_length`]), every one
+    /// length (#4003, the G code of group 3: [`crate::dialect::system_not_length`]), every one
     /// the THEN assignment reads or sets is one the analysis proved no length (#3000, the
     /// alarm: `IF [#4003 EQ 91] THEN #3000 = 2`), and none is chosen by a value (`#[..]`,
     /// `##`). A local or common variable in a condition is not enough: its value may be a
@@ -1583,12 +1583,9 @@ impl Converter {
                 .ok()
                 .and_then(|d| d.parse().ok());
             let no_length = number.is_some_and(|n| {
-                [
-                    crate::restart::Control::Fanuc,
-                    crate::restart::Control::Haas,
-                ]
-                .iter()
-                .all(|&c| crate::lengths::system_not_length(c, n).is_some())
+                [false, true]
+                    .iter()
+                    .all(|&haas| crate::dialect::system_not_length(haas, n).is_some())
             });
             if (in_condition && !no_length) || self.class(&name).is_some() {
                 return false;

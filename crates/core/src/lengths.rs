@@ -214,50 +214,8 @@ pub struct Analysis {
     /// runs, so no parameter's class can be proved.
     indirect: Option<(usize, &'static str)>,
     /// The control the program is written for: which of its system variables hold no length
-    /// ([`system_not_length`]).
+    /// ([`crate::dialect::system_not_length`]).
     control: Control,
-}
-
-/// What a Custom Macro B system variable numbered `n` holds on `control`, where its maker's
-/// table gives it a meaning that is not a length: the program's alarm and message stop, the
-/// clocks, the parts counts, the modal G codes... Assigned (`#3000 = 1 (TOOL BROKEN)`) or read,
-/// such a variable is not a length, as the proof would otherwise have to be shown by the
-/// program's uses, which an alarm never has (audit 50, B6). The positions (#5001 on), the tool
-/// and work offsets (#2001 on, #5201 on, #7001 on, #10001 on) are lengths in the machine's
-/// units and are not here, nor are a previous block's F, E or S (#4108, #4109, #4119: a feed
-/// or a surface speed, lengths per minute). Sources: FANUC 0i-MF operator's manual, "System
-/// variables"; Haas Mill Operator's Manual, NGC, 2017, 6.14.7 (Macro Variables Table); the
-/// ranges as docs/dialects.md, "Variables", lists them.
-pub(crate) fn system_not_length(control: Control, n: u32) -> Option<&'static str> {
-    let shared = match n {
-        3000 => Some("the program's alarm"),
-        3001 | 3002 => Some("a clock"),
-        3003 | 3004 => Some("the control of single block, feed hold and override"),
-        3006 => Some("the stop with a message"),
-        3011 | 3012 => Some("the date or time"),
-        3901 | 3902 => Some("a parts count"),
-        4001..=4021 => Some("the G code of a modal group"),
-        _ => None,
-    };
-    match control {
-        Control::Fanuc => shared.or(match n {
-            1000..=1035 => Some("an interface signal"),
-            3005 => Some("the settings"),
-            3007 => Some("the mirror image state"),
-            4022..=4030 => Some("the G code of a modal group"),
-            4107 | 4111 | 4113 | 4114 | 4115 | 4120 | 4130 => {
-                Some("the previous block's D, H, M, N, O, T or P code")
-            }
-            _ => None,
-        }),
-        Control::Haas => shared.or(match n {
-            3020..=3025 => Some("a timer"),
-            3026 => Some("the tool in the spindle"),
-            3027 => Some("the spindle's speed"),
-            _ => None,
-        }),
-        _ => None,
-    }
 }
 
 /// Whether `text` names a parameter by a value: `#` then (after blanks) `[` or `#`.
@@ -1042,7 +1000,11 @@ impl Analysis {
                 .strip_prefix(b"#")
                 .and_then(|d| std::str::from_utf8(d).ok())
                 .and_then(|d| d.parse::<u32>().ok())
-                .and_then(|n| system_not_length(self.control, n))
+                .and_then(|n| match self.control {
+                    Control::Fanuc => crate::dialect::system_not_length(false, n),
+                    Control::Haas => crate::dialect::system_not_length(true, n),
+                    _ => None,
+                })
             else {
                 continue;
             };
