@@ -954,3 +954,36 @@ def test_m98_beside_other_words_is_refused_for_linuxcnc(source, block, word):
     split = text.replace(block, "G1 X10. F100.\nM98 P100 L2")
     assert convert(split, source, "linuxcnc").splitlines()[3:5] == ["G1 X10. F100.",
                                                                     "M98 P100 L2"]
+
+
+@pytest.mark.parametrize("source", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("line", [
+    "#3000=1(TOOL BROKEN)", "#3006=1(CHECK PART)", "#3901=#3901+1",
+    "IF[#4003 EQ 91]THEN #3000=2(NO TOOL)", "IF[#4003 EQ 91]GOTO10",
+])
+def test_a_system_variable_that_holds_no_length_converts(source, line):
+    """Audit 50, B6: the alarm #3000, the message stop #3006, the parts count #3901 and the
+    modal G code #4003 are no lengths (FANUC 0i-MF "System variables", Haas NGC Macro
+    Variables Table): set or compared, they are kept as written and the program converts."""
+    src = f"%\nO1001\nG21 G90\n{line}\nG0 X10.\nN10 M30\n%\n"
+    out = convert(src, source, units="inch").splitlines()
+    assert out[2:5] == ["G20 G90", line, "G0 X0.3937"]
+
+
+@pytest.mark.parametrize(("line", "at", "why"), [
+    # a position, a work offset: lengths, refused as before
+    ("#100=#5021", (4, 1), "#100 is assigned on line 4 but never read"),
+    ("#5221=10.", (4, 1), "#5221 is assigned on line 4 but never read"),
+    # a parts count read as a length
+    ("G0 X#3901", (4, 4), "#3901 is read as a length (line 4), but on this control it is a "
+                          "parts count, not a length"),
+    # a local in the condition may be a caller's length; a THEN target that is a length
+    ("IF[#1 EQ 91]THEN #3000=2", (4, 1), "it holds a number the converter cannot show"),
+    ("IF[#4003 EQ 91]THEN #1=2\nG0 X#1", (4, 1), "it holds a number the converter cannot show"),
+])
+def test_a_system_variable_that_holds_a_length_is_still_refused(line, at, why):
+    src = f"%\nO1001\nG21 G90\n{line}\nG0 X10.\nM30\n%\n"
+    with pytest.raises(ConversionError) as refused:
+        convert(src, "fanuc-mill", units="inch")
+    assert (refused.value.line, refused.value.column) == at
+    assert why in refused.value.message

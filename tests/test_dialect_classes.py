@@ -665,6 +665,32 @@ def test_a_fanuc_reads_the_blank_between_an_address_and_its_number():
     assert not errors(APART, "fanuc-mill")
 
 
+BLANK_HASH = "%\nO1\n# 1 = 5.\nG90 G0 X0 Y0\nG1 X # 1 Y-# 1 Z[# 1+1.] F100.\nM30\n%\n"
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe"])
+def test_a_fanuc_reads_a_blank_after_the_hash_of_a_word_s_value_as_of_an_assignment(profile):
+    """Audit 50, B12: `# 1 = 5.` read and `X # 1` was TG100; the blank after `#` is skipped in
+    both, as between any address and its number: the findings are those of `X#1`."""
+    text = BLANK_HASH if profile == "fanuc-mill" else BLANK_HASH.replace(
+        " Y-# 1", "").replace("G90 G0 X0 Y0", "G0 X0 Z0")
+    assert not errors(text, profile)
+    # read as the form without the blank is: the same findings (`X#1` a known value)
+    assert found(text, profile) == found(text.replace("# 1", "#1"), profile)
+    read = parse_text(text, load_profile(profile).dialect, errors="collect")
+    assert program_text(read) == text
+
+
+def test_a_haas_refuses_a_blank_after_the_hash_of_a_word_s_value_as_of_an_assignment():
+    """The NGC's alarm for an address apart from its number: `# 1 = 5.` and `X # 1` alike."""
+    read = parse_text(BLANK_HASH, load_profile("haas-mill").dialect, errors="collect")
+    bad = [(b.line, str(b.error).split(": ", 1)[0]) for b in read if isinstance(b, BadBlock)]
+    assert [line for line, _ in bad] == [3, 5], bad
+    assert all("address # written apart from its number" in str(b.error)
+               for b in read if isinstance(b, BadBlock))
+    assert ":5:7: address #" in str([b.error for b in read if isinstance(b, BadBlock)][1])
+
+
 @pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
 @pytest.mark.parametrize("block, column, says", [
     ("G0 G1 8 X1.", 7, "if it is the rest of the word before it (G1 8 for G18)"),

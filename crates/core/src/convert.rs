@@ -1502,6 +1502,99 @@ impl Converter {
         classes.class(self.program, self.parameter(raw).as_bytes())
     }
 
+    /// A Custom Macro B `IF [..] GOTO n`, `IF [..] THEN #i = ..` or `WHILE [..] DOm` whose
+    /// numbers are surely no lengths, so it is kept as written: each comparison of its condition
+    /// (the parts between AND, OR and XOR) reads a parameter, every parameter the condition
+    /// reads is a system variable that FANUC's and Haas's tables both give a meaning that is no
+    /// length (#4003, the G code of group 3: [`crate::dialect::system_not_length`]), every one
+    /// the THEN assignment reads or sets is one the analysis proved no length (#3000, the
+    /// alarm: `IF [#4003 EQ 91] THEN #3000 = 2`), and none is chosen by a value (`#[..]`,
+    /// `##`). A local or common variable in a condition is not enough: its value may be a
+    /// caller's length (a G65 argument), which the condition's number would then be compared
+    /// with in the other units; such a statement, and any other holding a number, is refused
+    /// by the caller.
+    fn macro_b_condition_kept(&self, statement: &[u8]) -> bool {
+        if self.c.family != Family::MacroB || self.c.parameters.is_none() {
+            return false;
+        }
+        let upper = statement.to_ascii_uppercase();
+        let head = upper.trim_ascii_start();
+        if !(head.starts_with(b"IF") || head.starts_with(b"WHILE")) {
+            return false;
+        }
+        let (Some(open), Some(close)) = (
+            upper.iter().position(|&c| c == b'['),
+            upper.iter().rposition(|&c| c == b']'),
+        ) else {
+            return false;
+        };
+        let (condition, rest) = (&upper[open + 1..close], upper[close + 1..].trim_ascii());
+        // after the condition: a jump, a loop's DOm, or THEN and one assignment
+        let tail_ok = if let Some(assignment) = rest.strip_prefix(b"THEN") {
+            assignment.contains(&b'=')
+        } else {
+            rest.starts_with(b"GOTO") || rest.starts_with(b"DO")
+        };
+        if !tail_ok {
+            return false;
+        }
+        let mut depth = 0usize;
+        let mut part_start = 0usize;
+        let mut parts = Vec::new();
+        for (i, &c) in condition.iter().enumerate() {
+            match c {
+                b'[' => depth += 1,
+                b']' => depth = depth.saturating_sub(1),
+                _ if depth == 0 => {
+                    let at = &condition[i..];
+                    let joined = [&b"AND"[..], b"OR", b"XOR"].iter().any(|op| {
+                        at.starts_with(op)
+                            && (i == 0 || !condition[i - 1].is_ascii_alphabetic())
+                            && at.get(op.len()).is_none_or(|c| !c.is_ascii_alphabetic())
+                    });
+                    if joined {
+                        parts.push(&condition[part_start..i]);
+                        part_start = i + 3;
+                    }
+                }
+                _ => {}
+            }
+        }
+        parts.push(&condition[part_start.min(condition.len())..]);
+        if !parts.iter().all(|part| part.contains(&b'#')) {
+            return false;
+        }
+        // every parameter read or set: proved no length, none chosen by a value
+        let mut i = 0;
+        while let Some(at) = upper[i..].iter().position(|&c| c == b'#') {
+            let mut j = i + at + 1;
+            while upper.get(j).is_some_and(|&c| c == b' ' || c == b'\t') {
+                j += 1;
+            }
+            let digits = upper[j..].iter().take_while(|c| c.is_ascii_digit()).count();
+            if digits == 0 {
+                return false; // #[..], ##, or a name this family does not have
+            }
+            let mut name = Vec::with_capacity(digits + 1);
+            name.push(b'#');
+            name.extend_from_slice(&upper[j..j + digits]);
+            let in_condition = j < close;
+            let number = std::str::from_utf8(&name[1..])
+                .ok()
+                .and_then(|d| d.parse().ok());
+            let no_length = number.is_some_and(|n| {
+                [false, true]
+                    .iter()
+                    .all(|&haas| crate::dialect::system_not_length(haas, n).is_some())
+            });
+            if (in_condition && !no_length) || self.class(&name).is_some() {
+                return false;
+            }
+            i = j + digits;
+        }
+        true
+    }
+
     /// Why the class of the parameter written `raw` cannot be proved, where it cannot.
     fn unproved(&self, raw: &[u8]) -> Option<String> {
         match self.class(raw) {
@@ -5830,6 +5923,7 @@ impl Converter {
             if why.is_none()
                 && (documented
                     || corner_number
+                    || self.macro_b_condition_kept(text_of)
                     || !(shift || corner || holds_values(text_of, sinumerik)))
             {
                 continue;

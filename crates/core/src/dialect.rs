@@ -1391,6 +1391,49 @@ pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
     )
 }
 
+/// What a Custom Macro B system variable numbered `n` holds on a FANUC (`haas` false) or a Haas, where its maker's
+/// table gives it a meaning that is not a length: the program's alarm and message stop, the
+/// clocks, the parts counts, the modal G codes... Assigned (`#3000 = 1 (TOOL BROKEN)`) or read,
+/// such a variable is not a length, as the proof would otherwise have to be shown by the
+/// program's uses, which an alarm never has (audit 50, B6). The positions (#5001 on), the tool
+/// and work offsets (#2001 on, #5201 on, #7001 on, #10001 on) are lengths in the machine's
+/// units and are not here, nor are a previous block's F, E or S (#4108, #4109, #4119: a feed
+/// or a surface speed, lengths per minute). Sources: FANUC 0i-MF operator's manual, "System
+/// variables"; Haas Mill Operator's Manual, NGC, 2017, 6.14.7 (Macro Variables Table); the
+/// ranges as docs/dialects.md, "Variables", lists them.
+pub(crate) fn system_not_length(haas: bool, n: u32) -> Option<&'static str> {
+    let shared = match n {
+        3000 => Some("the program's alarm"),
+        3001 | 3002 => Some("a clock"),
+        3003 | 3004 => Some("the control of single block, feed hold and override"),
+        3006 => Some("the stop with a message"),
+        3011 | 3012 => Some("the date or time"),
+        3901 | 3902 => Some("a parts count"),
+        4001..=4021 => Some("the G code of a modal group"),
+        _ => None,
+    };
+    let own = if haas {
+        match n {
+            3020..=3025 => Some("a timer"),
+            3026 => Some("the tool in the spindle"),
+            3027 => Some("the spindle's speed"),
+            _ => None,
+        }
+    } else {
+        match n {
+            1000..=1035 => Some("an interface signal"),
+            3005 => Some("the settings"),
+            3007 => Some("the mirror image state"),
+            4022..=4030 => Some("the G code of a modal group"),
+            4107 | 4111 | 4113 | 4114 | 4115 | 4120 | 4130 => {
+                Some("the previous block's D, H, M, N, O, T or P code")
+            }
+            _ => None,
+        }
+    };
+    shared.or(own)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

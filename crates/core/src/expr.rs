@@ -475,6 +475,18 @@ impl Scanner<'_> {
         } else {
             p + 1
         };
+        if self.syntax.macros && !self.syntax.named {
+            // Custom Macro B `X # 1`: the blank after `#` is skipped as in `# 1 = 5` (a FANUC
+            // reads a blank between an address and its number so: docs/dialects.md, "Blanks
+            // inside a word"); a Haas NGC alarms on it there, and so here (audit 50, B12)
+            let r = skip_blanks(line, q);
+            if r > q && line.get(r).is_some_and(u8::is_ascii_digit) {
+                if self.syntax.parameter_elements {
+                    return Err(Box::new(crate::lex::apart(b'#', q)));
+                }
+                return Ok(Some(digits_end(line, r)));
+            }
+        }
         match line.get(q) {
             Some(b'[') if self.syntax.macros => self.group(q, depth).map(Some),
             // `# 1`: #1
@@ -1786,6 +1798,11 @@ impl<B: Build> TreeReader<'_, B> {
                     let chosen = self.atom(depth + 1)?;
                     return Ok(self.build.call(chosen));
                 }
+                // `# 1` (a blank the scan let through: `Syntax` above)
+                Some(d) if d.is_ascii_digit() => {
+                    self.pos = digits_end(line, q);
+                    return Ok(self.build.param(p, self.pos));
+                }
                 _ => return Err(found(line, p)),
             }
         }
@@ -2615,6 +2632,35 @@ mod tests {
 
     fn group(text: &str, syntax: Syntax) -> Result<usize, String> {
         scan_group(text.as_bytes(), 0, syntax).map_err(|e| format!("{}@{}", e.message, e.offset))
+    }
+
+    /// Audit 50, B12: Custom Macro B's `# 1` in a word's value is #1, as in `# 1 = 5`; a Haas
+    /// NGC alarms on the blank (the address apart from its number); ISO reads no `#`.
+    #[test]
+    fn a_blank_after_the_hash_of_a_macro_value() {
+        for text in ["# 1", "-# 12", "[# 1+1.]", "#  007*2"] {
+            assert_eq!(
+                scan(text.as_bytes(), 0, MACRO).map_err(|e| e.message),
+                Ok(text.len()),
+                "{text}"
+            );
+            assert!(tree(text.as_bytes()).is_ok(), "{text}");
+        }
+        let ngc = Syntax {
+            parameter_elements: true,
+            ..MACRO
+        };
+        let apart = scan(b"-# 1", 0, ngc).unwrap_err();
+        assert!(
+            apart
+                .message
+                .starts_with("address # written apart from its number")
+                && apart.offset == 2,
+            "{apart:?}"
+        );
+        // `# [1]`, `# #1` (a blank before a value choosing the variable) stay unread
+        assert!(scan(b"# [1]", 0, MACRO).is_err());
+        assert!(scan(b"# #1", 0, MACRO).is_err());
     }
 
     #[test]

@@ -48,6 +48,7 @@ use crate::expr;
 use crate::hash::{FastMap, FastSet};
 use crate::lex::{blank, Dialect, Family, LexError, Token};
 use crate::machine::Machine;
+use crate::restart::Control;
 use crate::statement::{
     is_parameter_name, linuxcnc_definition, o_label, parameter_name, parameter_number, scoped_name,
     sub_local, Kind as StatementKind,
@@ -212,6 +213,9 @@ pub struct Analysis {
     /// `##1 = 7`, `X#[#1]`), and how: which parameter it is is known only when the program
     /// runs, so no parameter's class can be proved.
     indirect: Option<(usize, &'static str)>,
+    /// The control the program is written for: which of its system variables hold no length
+    /// ([`crate::dialect::system_not_length`]).
+    control: Control,
 }
 
 /// Whether `text` names a parameter by a value: `#` then (after blanks) `[` or `#`.
@@ -389,10 +393,13 @@ fn is_local(name: &[u8]) -> bool {
 impl Analysis {
     /// The analysis of a program written for `machine`.
     pub fn new(machine: &Machine) -> Analysis {
-        Analysis::of(
-            machine.convert_roles(),
-            ProgramStarts::new(machine.family, machine.check.program_number),
-        )
+        Analysis {
+            control: machine.control,
+            ..Analysis::of(
+                machine.convert_roles(),
+                ProgramStarts::new(machine.family, machine.check.program_number),
+            )
+        }
     }
 
     /// The analysis of a program whose P, Q and R have the converter's roles `pqr`, its file
@@ -428,6 +435,7 @@ impl Analysis {
             ties: Vec::new(),
             tied: HashSet::new(),
             indirect: None,
+            control: Control::Iso,
         }
     }
 
@@ -986,6 +994,45 @@ impl Analysis {
                 }
             }
         }
+        // A system variable whose meaning is not a length is none, whatever shows it or not.
+        for (id, name) in self.names.iter().enumerate() {
+            let Some(what) = name
+                .strip_prefix(b"#")
+                .and_then(|d| std::str::from_utf8(d).ok())
+                .and_then(|d| d.parse::<u32>().ok())
+                .and_then(|n| match self.control {
+                    Control::Fanuc => crate::dialect::system_not_length(false, n),
+                    Control::Haas => crate::dialect::system_not_length(true, n),
+                    _ => None,
+                })
+            else {
+                continue;
+            };
+            let key = Key {
+                name: id as u32,
+                program: None,
+                sub: None,
+            };
+            match classes.entry(key) {
+                Entry::Occupied(e) if *e.get() == Class::Length => {
+                    problems.entry(key).or_insert_with(|| {
+                        format!(
+                            "{} is read as a length (line {}), but on this control it is \
+                             {what}, not a length",
+                            self.shown(key),
+                            uses.iter()
+                                .find(|(k, _)| *k == key)
+                                .and_then(|(_, u)| u.length)
+                                .unwrap_or(0),
+                        )
+                    });
+                }
+                Entry::Occupied(_) => {}
+                Entry::Vacant(e) => {
+                    e.insert(Class::Other);
+                }
+            }
+        }
         for &(key, line) in nonlinear.iter() {
             problems.entry(key).or_insert_with(|| {
                 format!(
@@ -1410,6 +1457,42 @@ mod tests {
             why[0].1.starts_with("#5221 is read into the length #<a>"),
             "{why:?}"
         );
+    }
+
+    /// A FANUC or Haas system variable whose meaning is no length is none, set or read
+    /// (audit 50, B6); read as a length it is refused; on another control it proves nothing.
+    #[test]
+    fn a_system_variable_that_holds_no_length_is_none() {
+        let of = |control: Control, text: &str| {
+            let mut a = analysis(&[]);
+            a.control = control;
+            a.lines(text.as_bytes(), 0, &macro_b()).unwrap();
+            lists(&a.result())[0].2.clone()
+        };
+        for control in [Control::Fanuc, Control::Haas] {
+            for text in ["#3000=1", "#3006=1", "#3901=#3901+1", "#3000=#4003"] {
+                assert!(
+                    of(control, text).is_empty(),
+                    "{text}: {:?}",
+                    of(control, text)
+                );
+            }
+            assert_eq!(
+                of(control, "G0 X#3901"),
+                [(
+                    "#3901".to_string(),
+                    "#3901 is read as a length (line 1), but on this control it is a parts \
+                     count, not a length"
+                        .to_string()
+                )]
+            );
+            assert_eq!(of(control, "#5221=10.").len(), 1);
+        }
+        assert_eq!(of(Control::Fanuc, "#4130=1"), []);
+        assert_eq!(of(Control::Haas, "#4130=1").len(), 1);
+        assert_eq!(of(Control::Haas, "#3026=1"), []);
+        assert_eq!(of(Control::Fanuc, "#3026=1").len(), 1);
+        assert_eq!(of(Control::Iso, "#3000=1").len(), 1);
     }
 
     /// A word of a shape read before ([`Analysis::new_shape`]) adds nothing, but the same shape

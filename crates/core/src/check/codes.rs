@@ -318,23 +318,26 @@ impl Checker {
     }
 
     /// Whether two M codes of one modal group in a block are TG308, a warning, rather than
-    /// TG304 (issue 32, severity by evidence): on a FANUC and a SINUMERIK no source at hand
-    /// says the control alarms on them (the builder's ladder, PMC or PLC, takes most M codes),
-    /// while LinuxCNC's rs274 refuses them ("Two m codes used from same modal group"), the
-    /// Haas NGC manual allows one M code a line, and the Okuma's List of M Codes (4203-E)
-    /// names each code's group, the profile's only source for it. The group of program stops stays
-    /// TG304 everywhere ([`Checker::program_stops`]): which stop the program makes decides
-    /// whether it goes on.
+    /// TG304 (issue 32, severity by evidence): on a FANUC, a SINUMERIK and an Okuma OSP no
+    /// source at hand says the control alarms on them (the builder's ladder, PMC or PLC, takes
+    /// most M codes; the Okuma's List of M Codes, 4203-E, names each code's group, not what
+    /// the control does with two of one: audit 50, B1), while LinuxCNC's rs274 refuses them
+    /// ("Two m codes used from same modal group"), the Haas NGC manual allows one M code a
+    /// line, and the ISO profiles follow the standard's Annex E. The same evidence decides
+    /// the group of program stops ([`Checker::program_stops`]).
     fn m_group_unsourced(&self) -> bool {
         match self.config.family {
             Family::MacroB => !self.config.haas,
-            Family::Sinumerik => true,
+            Family::Sinumerik | Family::Okuma => true,
             _ => false,
         }
     }
 
-    /// TG304: M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every
-    /// control.
+    /// M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every control.
+    /// Two of them in a block are TG304 where a source refuses them (rs274, the Haas's one M
+    /// code a line, the standard on the ISO profiles) and TG308, a warning, where none at hand
+    /// does (FANUC, SINUMERIK, Okuma: searched, docs/rules.md TG304); either way which stop the
+    /// block makes is not known, so a restart after it is refused (`conflict_at`).
     pub(super) fn program_stops(&mut self, b: &BlockView<'_>) {
         // (two stops need two M codes: most blocks have none)
         if self.values.ms.len() < 2 {
@@ -360,7 +363,12 @@ impl Checker {
             );
             self.conflict_at
                 .get_or_insert_with(|| (b.line, message.clone()));
-            self.report(Rule::ModalGroupConflict, message, b.line, column);
+            let rule = if self.m_group_unsourced() {
+                Rule::MCodesOneGroup
+            } else {
+                Rule::ModalGroupConflict
+            };
+            self.report(rule, message, b.line, column);
         }
     }
 }
@@ -967,11 +975,10 @@ mod tests {
         );
     }
 
-    /// Two M codes of one group are TG308, a warning, where no source shows the control
-    /// alarms (a FANUC, a SINUMERIK), TG304 where one does or the standard or the maker's list
-    /// rules (the ISO profiles, LinuxCNC's rs274, the Haas manual's one M code a line, the
-    /// Okuma's List of M Codes' groups); two G codes
-    /// and the program stops stay TG304 on every family.
+    /// Two M codes of one group, the program stops among them, are TG308, a warning, where no
+    /// source shows the control alarms (a FANUC, a SINUMERIK, an Okuma OSP), TG304 where one
+    /// does or the standard rules (the ISO profiles, LinuxCNC's rs274, the Haas manual's one M
+    /// code a line); two G codes stay TG304 on every family.
     #[test]
     fn two_m_codes_of_one_group_by_evidence() {
         let fanuc = || of_family(Family::MacroB);
@@ -979,7 +986,11 @@ mod tests {
             haas: true,
             ..of_family(Family::MacroB)
         };
-        for config in [fanuc(), of_family(Family::Sinumerik)] {
+        for config in [
+            fanuc(),
+            of_family(Family::Sinumerik),
+            of_family(Family::Okuma),
+        ] {
             let family = config.family;
             let found = findings(
                 config.clone(),
@@ -1012,24 +1023,41 @@ mod tests {
                 []
             );
             assert_eq!(
-                at(config, "M00 M01", Rule::ModalGroupConflict),
-                [(2, 5)],
+                at(config.clone(), "M00 M01", Rule::ModalGroupConflict),
+                [],
                 "{family:?}"
             );
+            let stops = findings(config, &program("M00 M30"), Rule::MCodesOneGroup);
+            assert_eq!(
+                (stops.len(), stops[0].line, stops[0].column),
+                (1, 2, 5),
+                "{family:?}"
+            );
+            assert!(
+                stops[0]
+                    .message
+                    .starts_with("M00 and M30 are both in the group of program stops"),
+                "{}",
+                stops[0].message
+            );
         }
-        for config in [
-            haas(),
-            of_family(Family::LinuxCnc),
-            of_family(Family::Okuma),
-            iso_mill(),
-        ] {
+        for config in [haas(), of_family(Family::LinuxCnc), iso_mill()] {
             let family = config.family;
             assert_eq!(
                 at(config.clone(), "G0 X0\nM03 M05", Rule::ModalGroupConflict),
                 [(3, 5)],
                 "{family:?}"
             );
-            assert_eq!(at(config, "G0 X0\nM03 M05", Rule::MCodesOneGroup), []);
+            assert_eq!(
+                at(config.clone(), "G0 X0\nM03 M05", Rule::MCodesOneGroup),
+                []
+            );
+            assert_eq!(
+                at(config.clone(), "M00 M30", Rule::ModalGroupConflict),
+                [(2, 5)],
+                "{family:?}"
+            );
+            assert_eq!(at(config, "M00 M30", Rule::MCodesOneGroup), []);
         }
     }
 

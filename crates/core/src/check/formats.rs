@@ -255,10 +255,19 @@ impl Checker {
         let letter = w.letter;
         let (allowed, least, most) = self.index_allowed(letter, n);
         if !allowed {
-            let message = format!(
-                "index {shown} of {}: allowed {least} to {most}",
-                letter as char
-            );
+            // Custom Macro B's #0 exists: the null (vacant) variable, read only; reading it
+            // (`#1 = #0`) is how a program empties a variable (audit 50, B3)
+            let message = if letter == b'#' && n == 0 && self.config.family == Family::MacroB {
+                format!(
+                    "index {shown} of #: #0 is the null variable, always vacant and read only, \
+                     so it cannot be assigned (the variables a program sets: {least} to {most})"
+                )
+            } else {
+                format!(
+                    "index {shown} of {}: allowed {least} to {most}",
+                    letter as char
+                )
+            };
             self.report(Rule::IndexOutOfRange, message, line, column);
         } else if let Some(what) = (letter == b'#')
             .then(|| dialect::missing_variable(self.config.family, self.config.haas, n))
@@ -1576,6 +1585,24 @@ mod tests {
     fn indexes_within_the_profile_and_none_on_g() {
         let macro_b = || of_family(Family::MacroB);
         assert_eq!(at(macro_b(), "#999 = 1.", Rule::IndexOutOfRange), []);
+        // #0, the null variable: read, it is no error; assigned, the error says what it is
+        assert_eq!(at(macro_b(), "#1 = #0", Rule::IndexOutOfRange), []);
+        assert_eq!(
+            at(macro_b(), "IF [#1 EQ #0] GOTO 5", Rule::IndexOutOfRange),
+            []
+        );
+        let found = super::super::testing::check(macro_b(), &program("#0 = 1"));
+        let f = found
+            .iter()
+            .find(|f| f.rule == Rule::IndexOutOfRange)
+            .expect("#0 = 1 refused");
+        assert_eq!((f.line, f.column), (2, 2));
+        assert!(
+            f.message
+                .starts_with("index 0 of #: #0 is the null variable, always vacant and read only"),
+            "{}",
+            f.message
+        );
         // located at the index, as the reader locates an index it refuses
         assert_eq!(at(macro_b(), "#1000 = 1.", Rule::IndexOutOfRange), [(2, 2)]);
         assert_eq!(at(iso_mill(), "X9=1.", Rule::IndexOutOfRange), []);

@@ -18,6 +18,19 @@ const ONE_BLOCK_ROUGHING: &str = "; in a G71/G72 block D is the depth of cut of 
      is in no FANUC source at hand (docs/dialects.md)";
 
 impl Checker {
+    /// Whether TG130 judges this profile's word order: ISO 6983-1's clause 5.2 is the
+    /// standard's recommendation, and the profiles read to the standard keep it (ISO, and
+    /// HEIDENHAIN's ISO mode, for which no source was looked at). A FANUC, Haas, Okuma,
+    /// SINUMERIK or LinuxCNC control reads a block's words in any order and its manual writes
+    /// its own forms against 5.2's order (FANUC and Haas: `G10 L2 P1 X0 Y0 Z0`, `M98 P2000
+    /// L3`, `G71 P10 Q20 U0.01 W0.005 D0.05 F0.01`, `G66 P9002 Z-5. R1.`; LinuxCNC's G code
+    /// overview, "Order of Execution": the order of a line's items is not their position on
+    /// it): the note was noise there (audit 50, B4). Asked only of a word out of order.
+    #[cold]
+    fn word_order_applies(&self) -> bool {
+        matches!(self.config.family, Family::Iso | Family::Heidenhain)
+    }
+
     /// `%NAME *` in a HEIDENHAIN program: a call of another program, which runs with this
     /// one's Q parameters and may change them and the position: nothing known is kept.
     pub(super) fn heidenhain_call(&mut self, line: usize, name: &[u8]) {
@@ -216,12 +229,12 @@ impl Checker {
                 if matches!(letter, b'I' | b'J' | b'K') {
                     // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
                     // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
-                    if last_rank >= 20.0 {
+                    if last_rank >= 20.0 && self.word_order_applies() {
                         let message = format!("{} is out of the order of clause 5.2", w.token());
                         self.report(Rule::WordOrder, message, line, w.column);
                     }
                 } else if r >= 0.0 {
-                    if r < last_rank {
+                    if r < last_rank && self.word_order_applies() {
                         let message = format!("{} is out of the order of clause 5.2", w.token());
                         self.report(Rule::WordOrder, message, line, w.column);
                     }
@@ -712,6 +725,41 @@ mod tests {
 
     fn at(body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(iso_mill(), &program(body), rule)
+    }
+
+    /// TG130 is the standard's order, and only the ISO profiles' (and HEIDENHAIN's ISO
+    /// mode's): a FANUC, Haas, Okuma, SINUMERIK or LinuxCNC manual writes its own forms in its
+    /// own order (audit 50, B4: `G10 L2 P1 X0 Y0 Z0`, `M98 P2000 L3`, `G71 P10 Q20 U0.01 W0.005
+    /// D0.05 F0.01`, `G66 P9002 Z-5. R1.` were notes).
+    #[test]
+    fn the_word_order_is_the_iso_profiles_only() {
+        for body in [
+            "G10 L2 P1 X0 Y0 Z0",
+            "M98 P2000 L3",
+            "G66 P9002 Z-5. R1.",
+            "G01 F100. X1.",
+        ] {
+            for family in [
+                Family::MacroB,
+                Family::Okuma,
+                Family::Sinumerik,
+                Family::LinuxCnc,
+            ] {
+                assert_eq!(
+                    fired(of_family(family), &program(body), Rule::WordOrder),
+                    [],
+                    "{family:?} {body}"
+                );
+            }
+        }
+        assert_eq!(
+            fired(
+                of_family(Family::Heidenhain),
+                &program("G01 F100. X1."),
+                Rule::WordOrder
+            ),
+            [(2, 11)]
+        );
     }
 
     #[test]
