@@ -629,6 +629,41 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G53 and M72 in one block", "G21 G90\nM70\nG91\nM72 G53 G0 Z0\nM2\n", 4, "error"),
     ("G53 and M72 restoring G91 in one block", "G21 G91\nM70\nG90\nM72 G53 G0 Z0\nM2\n", 0,
      "accepted"),
+    # lcnc51: the lines of a condition known true or a loop known to run, up to the block's
+    # next o-word line, run in the state the program left; G7/G8 unsettle X alone
+    ("a P word in a known-true if", HEAD + "o1 if [1]\nX2 Y2 P1\no1 endif\nM2\n", 4, "error"),
+    ("M[3.5] after an unclosed known-true if", HEAD + "o1 if [1]\nM[3.5]\nM2\n", 4, "error"),
+    ("a probe in place in a repeat", HEAD + "F10\no1 repeat [2]\nG38.2 Z5\no1 endrepeat\nM2\n",
+     5, "error"),
+    ("a probe in place in a while's first turn", HEAD + "F10\n#1=0\no1 while [#1 lt 2]\n"
+     "G91 G0 Z1\nG90\nG38.2 Z6\n#1=[#1+1]\no1 endwhile\nM2\n", 8, "error"),
+    ("a probe in place in the else of a known-true if", HEAD + "F10\no1 if [1]\nG0 Z1\n"
+     "o1 else\nG38.2 Z5\no1 endif\nM2\n", 0, "accepted"),
+    ("a Z probe in place after G7", HEAD + "F10\nG7\nG0 X1\nG38.2 Z5\nM2\n", 6, "error"),
+    # lcnc51: a definition in a loop's body read again on the loop's second turn
+    ("a definition in a repeat [2]", HEAD + "o1 repeat [2]\no<s> sub\nG0 X1\no<s> endsub\n"
+     "o1 endrepeat\nM2\n", 4, "error"),
+    ("a definition in a repeat [2], called", HEAD + "o1 repeat [2]\no<s> sub\nG0 X1\n"
+     "o<s> endsub\no<s> call\no1 endrepeat\nM2\n", 4, "error"),
+    ("a definition in a do with a true while", HEAD + "o1 do\no<s> sub\nG0 X1\no<s> endsub\n"
+     "o1 while [1]\nM2\n", 4, "error"),
+    ("a definition in a while of one turn", HEAD + "#1=0\no1 while [#1 lt 1]\no<s> sub\n"
+     "G0 X1\no<s> endsub\n#1=1\no1 endwhile\nM2\n", 0, "accepted"),
+    ("a definition in a repeat [1]", HEAD + "o1 repeat [1]\no<s> sub\nG0 X1\no<s> endsub\n"
+     "o1 endrepeat\nM2\n", 0, "accepted"),
+    ("a definition in a repeat whose call ends the program", HEAD + "o1 repeat [2]\no<s> sub\n"
+     "M2\no<s> endsub\no<s> call\no1 endrepeat\nM2\n", 0, "accepted"),
+    # lcnc51: codes run under cutter radius compensation (interp_convert.cc)
+    ("G43 under compensation", HEAD + "G41.1 D1\nG43 H1\nM2\n", 4, "error"),
+    ("G40 G43 under compensation", HEAD + "G41.1 D1\nG40 G43 H1\nM2\n", 0, "accepted"),
+    ("G55 under compensation", HEAD + "G41.1 D1\nG55\nM2\n", 4, "error"),
+    ("G10 L2 P0 under compensation", HEAD + "G41.1 D1\nG10 L2 P0 X1\nM2\n", 4, "error"),
+    ("G10 L2 P2 under compensation in G54", HEAD + "G54\nG41.1 D1\nG10 L2 P2 X1\nM2\n", 0,
+     "accepted"),
+    ("G40 M66 under compensation", HEAD + "G41.1 D1\nG40 M66 P0 L3 Q1\nM2\n", 4, "error"),
+    ("M6 under compensation", HEAD + "T1 M6\nG41.1 D1\nT1 M6\nM2\n", 5, "error"),
+    ("G41.1 in G19", HEAD + "G19\nG41.1 D1\nM2\n", 4, "error"),
+    ("G92 under compensation", HEAD + "G41.1 D1\nG92 X0\nM2\n", 4, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

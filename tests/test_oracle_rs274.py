@@ -77,6 +77,9 @@ BOTH = [
     # a cycle drills along the plane's axis (TG541, every family's rule)
     "G18 cycle without Y",
     # TG412: rs274's own refusals
+    # lcnc51: a definition read again on a loop's second turn
+    "a definition in a repeat [2]", "a definition in a repeat [2], called",
+    "a definition in a do with a true while",
     "G53 under G2",
     # review 49a, F8: an o-word only at the start of its line
     "o-word after a comment", "o-word after a word", "words after an o-word",
@@ -149,6 +152,13 @@ BOTH = [
     "G53 in a body defined in G90 called in G91", "M72 with nothing saved",
     "M72 in a body with nothing saved there", "G53 after a sub with a dead G91 after its return",
     "G53 after a call written in a definition", "G53 and M72 in one block",
+    # lcnc51: the lines of a block known to run, judged in the state the program left; X
+    # alone unsettled by G7; codes run under cutter radius compensation
+    "a P word in a known-true if", "M[3.5] after an unclosed known-true if",
+    "a probe in place in a repeat", "a probe in place in a while's first turn",
+    "a Z probe in place after G7", "G43 under compensation", "G55 under compensation",
+    "G10 L2 P0 under compensation", "G40 M66 under compensation", "M6 under compensation",
+    "G41.1 in G19", "G92 under compensation",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -188,7 +198,12 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # and its calls, M72 with a G53
        "G53 after a sub whose nested call leaves G90 before its return",
        "G53 after M72 restores what M73 saved", "G53 in a body defined in G91 called in G90",
-       "G53 and M72 restoring G91 in one block"]
+       "G53 and M72 restoring G91 in one block",
+       # lcnc51: an else of a known-true if does not run; a loop of one turn reads its
+       # definition once; codes rs274 runs beside G40 or with the compensation off
+       "a probe in place in the else of a known-true if", "a definition in a while of one turn",
+       "a definition in a repeat [1]", "a definition in a repeat whose call ends the program",
+       "G40 G43 under compensation", "G10 L2 P2 under compensation in G54"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",
@@ -258,7 +273,8 @@ def test_tg412_says_rs274s_message_after_its_file_and_line(seeds):
     "endif label changed in an if of a comparison",
     "endwhile label changed in a loop of a comparison",
     "endrepeat label changed in a repeat of 1.5", "endif with no if",
-    "endif of another label in an if that runs"])
+    "endif of another label in an if that runs", "a definition in a repeat [2]",
+    "a definition in a repeat [2], called", "a definition in a do with a true while"])
 def test_tg412_says_rs274s_o_word_message(seeds, name):
     """rs274 names the file and line of a definition (and the file it is in), or the line
     number, before its o-word refusals: tapegate's message begins with the rest."""

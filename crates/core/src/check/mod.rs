@@ -1179,6 +1179,10 @@ pub struct Checker {
     linuxcnc_if_speed: Vec<(Vec<u8>, Option<Dec>, bool, bool)>,
     linuxcnc_speed_back: Option<(Option<Dec>, bool)>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
+    /// LinuxCNC: the main program's one loop open at its top whose body the checker knows
+    /// runs, and the definitions its body holds where its lines surely ran
+    /// ([`structure::LoopDefinitions`]; boxed: seldom set).
+    linuxcnc_loop_defs: Option<Box<structure::LoopDefinitions>>,
     /// The units in force at the calls so far of each program number (`M98 P1000`, `G65
     /// P9010`): the lengths, the feed's units and whether the caller had written a units code;
     /// None where the calls disagree or a call was made in units not known. A program after
@@ -1401,6 +1405,7 @@ impl Checker {
             linuxcnc_if_speed: Vec::new(),
             linuxcnc_speed_back: None,
             linuxcnc_called_ahead: Vec::new(),
+            linuxcnc_loop_defs: None,
             call_units: HashMap::new(),
             units_unknown: false,
             early: None,

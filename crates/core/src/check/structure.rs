@@ -314,6 +314,7 @@ impl Checker {
         self.linuxcnc_if_speed.clear();
         self.linuxcnc_speed_back = None;
         self.linuxcnc_called_ahead.clear();
+        self.linuxcnc_loop_defs = None;
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
@@ -827,6 +828,9 @@ impl Checker {
             } else if !named.1 {
                 named.0.insert(bare_label(&label));
             }
+            if kind == Kind::Call && main && self.linuxcnc_loop_defs.is_some() {
+                self.linuxcnc_loop_call(text);
+            }
             if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
                 // (a call may set any parameter, or end the program: F10's first run ends)
                 for e in &mut self.linuxcnc_open_at {
@@ -848,7 +852,13 @@ impl Checker {
             match (kind, main) {
                 (Kind::Flow, true) => {
                     let top = self.linuxcnc_open_flow.is_empty();
+                    // (whether the lines of the one block open ran up to this one)
+                    let ran =
+                        !b.skip && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]);
                     self.linuxcnc_main_flow(text, b.line, column);
+                    if top || self.linuxcnc_loop_defs.is_some() {
+                        self.linuxcnc_loop_turns(text, top, ran);
+                    }
                     if let [(_, at, Some(false))] = self.linuxcnc_open_at.as_slice() {
                         if top && *at == b.line && !b.skip {
                             self.linuxcnc_skipping = Some((label, b.line));
@@ -1096,6 +1106,17 @@ impl Checker {
                 self.report(Rule::LinuxCncRefuses, message, b.line, column);
             }
             self.linuxcnc_defined.push(name.clone());
+            // (a definition in the body of a loop at the top, reached: its turns are counted
+            // at the loop's end, Checker::linuxcnc_loop_turns)
+            if let Some(defs) = self.linuxcnc_loop_defs.as_mut() {
+                if !b.skip
+                    && self.linuxcnc_open_flow.len() == 1
+                    && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))])
+                {
+                    let column = b.statements.first().map_or(1, |s| s.0);
+                    defs.defs.push((name.clone(), b.line, column));
+                }
+            }
             return;
         }
         for &(_, kind, text) in b.statements {
@@ -1699,8 +1720,27 @@ impl Checker {
     /// condition or loop of the main program is open, nor a subroutine's definition (rs274
     /// runs its body only when called). Only there are the refusals rs274 makes while it runs
     /// a line judged ([`Checker::linuxcnc_open_flow`]).
+    /// A single condition or loop of the main program whose body the checker knows runs
+    /// (`o1 if [1]`, `o1 repeat [2]`, a `do`), with no o-word line since it opened, counts as
+    /// none: its lines up to here run whenever the program reaches them (`rs274 -g` refuses
+    /// `M[3.5]` after `o1 if [1]`: "Non integer value for integer";
+    /// [`Checker::linuxcnc_body_runs`]).
     pub(super) fn linuxcnc_runs_surely(&self) -> bool {
-        self.linuxcnc_open_flow.is_empty() && self.open_definition.is_none()
+        self.open_definition.is_none()
+            && (self.linuxcnc_open_flow.is_empty()
+                || matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]))
+    }
+
+    /// LinuxCNC: whether the block is the o-word line that opened the main program's one
+    /// condition or loop whose body the checker knows runs
+    /// ([`Checker::linuxcnc_runs_surely`]): no jump, as rs274 runs the line after it next, in
+    /// the state the program left (`o1 if [1]` / `X2 Y2 P1` under G0 is refused: "P word
+    /// with no G2 G3 G4 ... to use it"). The lines after the block's next o-word line (an
+    /// `else`, an `endwhile` going back) are read as after a jump, as before.
+    pub(super) fn linuxcnc_opened_running(&self, b: &BlockView<'_>) -> bool {
+        self.config.family == Family::LinuxCnc
+            && matches!(b.statements, [(_, Kind::Flow, _)])
+            && matches!(self.linuxcnc_open_at.as_slice(), [(_, at, Some(true))] if *at == b.line)
     }
 
     /// Whether the main program has ended where the line in hand stands, for the rules that
@@ -1986,6 +2026,94 @@ impl Checker {
         open
     }
 
+    /// TG412: a subroutine defined in the body of a loop of the main program's top that runs
+    /// its body a second time. rs274 records a definition where it first reads it and refuses
+    /// to read the same definition line again (interp_o_word.cc `control_save_offset`: "File:
+    /// ... line:5 sub: o|s| found in illegal location", `rs274 -g`; `o1 repeat [2]` / `o<s>
+    /// sub` ... `o<s> endsub` / `o1 endrepeat`). Judged at the loop's closing line where the
+    /// body's lines up to it surely ran ([`Checker::linuxcnc_runs_surely`]: no other o-word
+    /// line, no end between, no call but a `repeat`'s of [`Checker::linuxcnc_loop_call`]) and
+    /// a second turn is known: a `repeat` count that
+    /// rounds to 2 or more where it opened, a `while` condition or a `do`'s closing `while`
+    /// condition known true at the closing line. A `while` whose condition is false there
+    /// (one turn), a body that may not run, or a condition not known: nothing said.
+    #[inline(never)]
+    fn linuxcnc_loop_turns(&mut self, text: &[u8], top: bool, ran: bool) {
+        let (keyword, condition) = o_keyword_condition(text);
+        let open = self.linuxcnc_open_flow.len();
+        if top {
+            self.linuxcnc_loop_defs = None;
+            let known = matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]);
+            if open == 1 && known && matches!(keyword.as_slice(), b"repeat" | b"while" | b"do") {
+                let twice = (keyword == b"repeat").then(|| {
+                    self.linuxcnc_condition_value(condition)
+                        .is_some_and(|v| v.round_ties_even() >= 2.0)
+                });
+                self.linuxcnc_loop_defs = Some(Box::new(LoopDefinitions {
+                    opened: text.to_vec(),
+                    twice,
+                    defs: Vec::new(),
+                    sure: true,
+                    called: false,
+                }));
+            }
+            return;
+        }
+        if open != 0 {
+            // (another o-word line in the body: which lines run after it is not followed)
+            if let Some(defs) = self.linuxcnc_loop_defs.as_mut() {
+                defs.sure = false;
+            }
+            return;
+        }
+        let Some(defs) = self.linuxcnc_loop_defs.take() else {
+            return;
+        };
+        if !(ran || defs.called) || !defs.sure || self.main_ended() || defs.defs.is_empty() {
+            return;
+        }
+        let (opening, opened_condition) = o_keyword_condition(&defs.opened);
+        let true_now = |c: &[u8]| self.linuxcnc_condition_value(c).is_some_and(|v| v != 0.0);
+        let again = match opening.as_slice() {
+            b"repeat" => defs.twice == Some(true),
+            b"while" => true_now(opened_condition),
+            _ => keyword == b"while" && true_now(condition),
+        };
+        if !again {
+            return;
+        }
+        let closing = String::from_utf8_lossy(text).trim().to_owned();
+        // (rs274 stops at the first definition it reads again)
+        for (name, line, column) in defs.defs.into_iter().take(1) {
+            let bare = bare_label(&name);
+            let message = format!(
+                "sub: o|{}| found in illegal location (rs274ngc): the loop's '{closing}' runs \
+                 its body again, and rs274 reads a definition's line once; define the \
+                 subroutine before the loop or after M2",
+                String::from_utf8_lossy(&bare),
+            );
+            self.report(Rule::LinuxCncRefuses, message, line, column);
+        }
+    }
+
+    /// LinuxCNC: a call in the body of the loop [`Checker::linuxcnc_loop_turns`] follows. A
+    /// `repeat`'s turns do not depend on what the call sets: one of a subroutine defined
+    /// before it that ends nothing and sets no feed mode (its callees too,
+    /// [`Checker::linuxcnc_call_keeps_mode`]) returns to the next line (`o<s> sub` ...
+    /// `o<s> endsub` / `o<s> call` in a `repeat [2]`: rs274 refuses the definition's line on
+    /// the second turn). Any other call, or a call in a `while` or `do` (whose condition it
+    /// may change), leaves the turns not known.
+    #[inline(never)]
+    fn linuxcnc_loop_call(&mut self, text: &[u8]) {
+        let keeps = self.linuxcnc_open_flow.len() == 1 && self.linuxcnc_call_keeps_mode(text);
+        if let Some(defs) = self.linuxcnc_loop_defs.as_mut() {
+            defs.called = true;
+            if !keeps || defs.twice.is_none() {
+                defs.sure = false;
+            }
+        }
+    }
+
     /// LinuxCNC: whether the lines of the block the main program's o-word `text` opens run
     /// (as far as the checker reads them in order): a `do` does, an `if` or `while` whose
     /// condition ([`Checker::linuxcnc_condition_value`]), a `repeat` whose count (rounded to
@@ -1993,18 +2121,14 @@ impl Checker {
     /// is a value the checker knows does where it is true or above zero and does not where
     /// not; None for any other.
     fn linuxcnc_body_runs(&self, text: &[u8]) -> Option<bool> {
-        let rest = &text[crate::statement::o_label_len(text).min(text.len())..];
-        let rest = rest.trim_ascii_start();
-        let letters = rest.iter().take_while(|c| c.is_ascii_alphabetic()).count();
-        let (keyword, condition) = rest.split_at(letters);
-        let keyword = keyword.to_ascii_lowercase();
+        let (keyword, condition) = o_keyword_condition(text);
         if keyword == b"do" {
             return Some(true);
         }
         if !matches!(keyword.as_slice(), b"if" | b"while" | b"repeat") {
             return None;
         }
-        let value = self.linuxcnc_condition_value(condition.trim_ascii())?;
+        let value = self.linuxcnc_condition_value(condition)?;
         // (nearbyint: half to even, `repeat [0.5]` runs no time, `rs274 -g`)
         Some(if keyword == b"repeat" {
             value.round_ties_even() >= 1.0
@@ -3469,6 +3593,32 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 
 /// [`linuxcnc_flow`] of a statement whose label is `label` (a computed one's value where the
 /// checker knows it: [`Checker::linuxcnc_call_label`]).
+/// LinuxCNC: a loop of the main program's top whose body runs, as
+/// [`Checker::linuxcnc_loop_turns`] keeps it: its opening line, for a `repeat` whether its
+/// count (read where it opened) is 2 or more, the definitions its body holds (label, line,
+/// column), and whether its lines up to here surely ran.
+#[derive(Clone, Debug)]
+pub(super) struct LoopDefinitions {
+    opened: Vec<u8>,
+    twice: Option<bool>,
+    defs: Vec<(Vec<u8>, usize, usize)>,
+    /// no other o-word line in the body yet, and no call but those of
+    /// [`Checker::linuxcnc_loop_call`]
+    sure: bool,
+    /// a call of those made (the block's own record of its lines, `linuxcnc_open_at`, is
+    /// cleared at any call)
+    called: bool,
+}
+
+/// An o-word line's keyword (lower case) and the text after it (a condition, a count).
+fn o_keyword_condition(text: &[u8]) -> (Vec<u8>, &[u8]) {
+    let rest = &text[crate::statement::o_label_len(text).min(text.len())..];
+    let rest = rest.trim_ascii_start();
+    let letters = rest.iter().take_while(|c| c.is_ascii_alphabetic()).count();
+    let (keyword, condition) = rest.split_at(letters);
+    (keyword.to_ascii_lowercase(), condition.trim_ascii())
+}
+
 fn linuxcnc_flow_of(open: &mut Vec<Vec<u8>>, text: &[u8], label: Vec<u8>) {
     let Some(keyword) = crate::statement::o_keyword(text) else {
         return;
@@ -4753,6 +4903,75 @@ mod tests {
         // and none where it is assigned first
         let text = text.replace("#<xs> = 1\n", "#<xs> = 1\n#<late> = 0\n");
         assert!(findings(of_family(Family::LinuxCnc), &text, Rule::LinuxCncRefuses).is_empty());
+    }
+
+    #[test]
+    fn linuxcnc_refuses_a_definition_in_a_loop_body_that_runs_twice() {
+        // interp_o_word.cc control_save_offset on the second turn; each program compared
+        // with rs274 -g (its stop line, or its run to the end)
+        let refused = |text: &str| {
+            check(of_family(Family::LinuxCnc), text)
+                .into_iter()
+                .filter(|f| f.rule == Rule::LinuxCncRefuses)
+                .map(|f| (f.line, f.message))
+                .collect::<Vec<_>>()
+        };
+        let def = "o<s> sub\nG0 X1\no<s> endsub\n";
+        let lines = |text: &str| refused(text).iter().map(|f| f.0).collect::<Vec<_>>();
+        for (body, expected) in [
+            (format!("o1 repeat [2]\n{def}o1 endrepeat\n"), &[3][..]),
+            // rounded half to even: 1.5 is 2 turns, 0.5 none
+            (format!("o1 repeat [1.5]\n{def}o1 endrepeat\n"), &[3]),
+            (format!("o1 repeat [0.5]\n{def}o1 endrepeat\n"), &[]),
+            (format!("o1 repeat [1]\n{def}o1 endrepeat\n"), &[]),
+            (format!("o1 while [1]\n{def}o1 endwhile\n"), &[3]),
+            (format!("o1 do\n{def}o1 while [1]\n"), &[3]),
+            (format!("o1 do\n{def}o1 while [0]\n"), &[]),
+            // a while whose condition is false at its end: one turn
+            (
+                format!("#1=0\no1 while [#1 lt 1]\n{def}#1=1\no1 endwhile\n"),
+                &[],
+            ),
+            // the call of a body that ends nothing, in a repeat: the second turn comes
+            (
+                format!("o1 repeat [2]\n{def}o<s> call\no1 endrepeat\n"),
+                &[3],
+            ),
+            // one that ends the program, an M2 in the body, a condition not known, another
+            // o-word line in the body: no second turn known
+            (
+                "o1 repeat [2]\no<s> sub\nM2\no<s> endsub\no<s> call\no1 endrepeat\n".into(),
+                &[],
+            ),
+            (format!("o1 repeat [2]\n{def}M2\no1 endrepeat\n"), &[]),
+            (format!("o1 repeat [#<_x>]\n{def}o1 endrepeat\n"), &[]),
+            (
+                format!("o1 repeat [2]\n{def}o2 if [1]\no2 endif\no1 endrepeat\n"),
+                &[],
+            ),
+            // rs274 stops at the first definition it reads again
+            (
+                format!(
+                    "o1 repeat [2]\n{def}{}o1 endrepeat\n",
+                    def.replace("<s>", "<t>")
+                ),
+                &[3],
+            ),
+            // an if's body runs once
+            (format!("o1 if [1]\n{def}o1 endif\n"), &[]),
+        ] {
+            let text = format!("G21\n{body}M2\n");
+            assert_eq!(lines(&text), expected, "{text}");
+        }
+        let found = refused(&format!("G21\no1 repeat [2]\n{def}o1 endrepeat\nM2\n"));
+        assert!(
+            found[0]
+                .1
+                .starts_with("sub: o|s| found in illegal location (rs274ngc)"),
+            "{}",
+            found[0].1
+        );
+        assert!(found[0].1.contains("'o1 endrepeat'"), "{}", found[0].1);
     }
 
     #[test]

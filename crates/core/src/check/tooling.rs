@@ -921,6 +921,9 @@ impl Checker {
             }
         }
         debug_assert!(fast.is_none(), "line {}: no plain move", b.line);
+        // (the compensation before the block's codes: its M codes run under it)
+        let compensation_before = (start.compensation != 40 || self.linuxcnc_dynamic_compensation)
+            && !self.linuxcnc_compensation_unknown;
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
@@ -1004,6 +1007,9 @@ impl Checker {
             let in_place = matches!(runs, Some(382 | 384))
                 && self.linuxcnc_probe_in_place(&words, codes, start, unsure);
             self.linuxcnc_refusal(&words, codes, ms, before, runs, checked, in_place)
+                .or_else(|| {
+                    self.linuxcnc_compensation_refusal(&words, codes, ms, compensation_before)
+                })
         } else {
             None
         };
@@ -1208,8 +1214,8 @@ impl Checker {
 
     /// The axes (`modal::bit`) whose current point the block's codes leave not known exactly
     /// ([`linuxcnc_unsettles`]), and G92's named axes known again: every axis after most such
-    /// codes (a work offset, a home, a probe, G52, G53, G92.1-G92.3, the units, the diameter
-    /// mode, a G code set by a parameter); after a tool length offset taken or dropped (G43,
+    /// codes (a work offset, a home, a probe, G52, G53, G92.1-G92.3, the units, a G code set
+    /// by a parameter); X after the diameter mode's G7 or G8; after a tool length offset taken or dropped (G43,
     /// G43.2, G49) the axes a tool table's offsets move -- Z, and X in G18, a lathe's plane
     /// (LinuxCNC's lathe tool table holds X and Z offsets; a mill's, lengths: the X and Y of a
     /// G17 arc after `G43 H1` are where the program put them, as `rs274 -g` finds them);
@@ -1237,6 +1243,10 @@ impl Checker {
                     .filter(|&&a| named(a))
                     .fold(0, |m, &a| m | bit(a)),
                 920 if !g_unread => 0,
+                // (the diameter mode changes how an X word is read, not the point rs274
+                // holds: Y and Z stay known, `G7` / `G0 X1` / `G38.2 Z0` from Z0 is "Start
+                // point too close to probe point")
+                70 | 80 if !g_unread => bit(b'X'),
                 c if linuxcnc_unsettles(c) => all,
                 _ => 0,
             };
@@ -1520,6 +1530,131 @@ impl Checker {
                 && !after.is_unknown(a)
                 && matches!((start.axis(a), after.axis(a)), (Some(s), Some(e)) if held.equals(s, e))
         })
+    }
+
+    /// The refusals of rs274ngc of a code that runs under cutter radius compensation
+    /// (interp_convert.cc: each function's first check, `settings->cutter_comp_side !=
+    /// CUTTER_COMP::OFF`; every message compared with `rs274 -g`, LinuxCNC 2.9, lcnc51). The
+    /// block's M codes run before its G codes (interp_execute.cc `execute_block`: convert_m,
+    /// then convert_g), so under the compensation before the block: M6, M48-M53, M62-M68
+    /// (`G40 M66 P0 L3 Q1` under G41.1 is refused). convert_g then runs the plane (G19, the
+    /// plane compensation never runs in, is a change of plane), the compensation's own codes
+    /// (turned on in G19, or when on), and after them, under the compensation the block
+    /// leaves, the tool length offset (G43, G43.1, G43.2, G49), the coordinate system
+    /// (G54-G59.3), the control mode (G61, G61.1, G64), the retract mode (G98, G99), G10
+    /// L2/L20 of the active system (P0; P1-P5 where G54-G58 is known in force), G52/G92 and
+    /// G28/G30, and a G53 move. Not judged where the compensation is not known (after a call
+    /// the checker does not follow), nor an M code a remap may own. Called after the block's
+    /// other refusals: rs274 reads and checks the block's words before it runs any of it.
+    #[inline(never)]
+    fn linuxcnc_compensation_refusal(
+        &self,
+        words: &Written<'_>,
+        codes: &[i64],
+        ms: &[i64],
+        before: bool,
+    ) -> Option<(String, u8)> {
+        let after = (self.machine.state.compensation != 40 || self.linuxcnc_dynamic_compensation)
+            && !self.linuxcnc_compensation_unknown;
+        if !before && !after {
+            return None;
+        }
+        let said = |what: &str, letter: u8| {
+            Some((
+                format!("{what} (rs274ngc): the block runs it under cutter radius compensation"),
+                letter,
+            ))
+        };
+        if before && ms.iter().all(|&m| linuxcnc_builtin_m(m)) {
+            for &m in ms {
+                let what = match m {
+                    6 => "Cannot change tools with cutter radius compensation on",
+                    48 => "Cannot enable overrides with cutter radius compensation on",
+                    49 => "Cannot disable overrides with cutter radius compensation on",
+                    50..=53 if words.value(b'P').is_some_and(|p| p.is_zero()) => {
+                        "Cannot disable overrides with cutter radius compensation on"
+                    }
+                    50..=53 if words.value(b'P').is_some() || !words.has(b'P') => {
+                        "Cannot enable overrides with cutter radius compensation on"
+                    }
+                    62 | 63 => "Cannot set motion output with cutter radius compensation on",
+                    64 | 65 => {
+                        "Cannot set auxiliary digital output with cutter radius compensation on"
+                    }
+                    66 if words.has(b'P') && !words.has(b'E') => {
+                        "Cannot wait for digital input with cutter radius compensation on"
+                    }
+                    66 if words.has(b'E') && !words.has(b'P') => {
+                        "Cannot wait for analog input with cutter radius compensation on"
+                    }
+                    67 => "Cannot set motion analog output with cutter radius compensation on",
+                    68 => "Cannot set auxiliary analog output with cutter radius compensation on",
+                    _ => continue,
+                };
+                return said(what, b'M');
+            }
+        }
+        if before && codes.contains(&190) {
+            return said(
+                "Cannot change planes with cutter radius compensation on",
+                b'G',
+            );
+        }
+        if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421)) {
+            if self.machine.state.plane == 19 {
+                return Some((
+                    "Cutter radius compensation allowed only in XY, XZ planes (rs274ngc)".into(),
+                    b'G',
+                ));
+            }
+            if before && !codes.contains(&400) {
+                return said("Cannot turn cutter radius comp on when on", b'G');
+            }
+        }
+        if !after {
+            return None;
+        }
+        let what = codes.iter().find_map(|&c| match c {
+            430..=432 | 490 => Some("Cannot change tool offset with cutter radius compensation on"),
+            540..=593 => {
+                Some("Cannot change coordinate systems with cutter radius compensation on")
+            }
+            610 | 611 | 640 => {
+                Some("Cannot change control mode with cutter radius compensation on")
+            }
+            980 | 990 => Some("Cannot change retract mode with cutter radius compensation on"),
+            _ => None,
+        });
+        if let Some(what) = what {
+            return said(what, b'G');
+        }
+        if codes.contains(&100)
+            && matches!(words.value(b'L'), Some(l) if l.eq_int(2) || l.eq_int(20))
+        {
+            let active = self
+                .machine
+                .state
+                .zero_shift
+                .filter(|g| (54..=58).contains(g));
+            let p = words.value(b'P');
+            if p.is_some_and(|p| p.is_zero() || active.is_some_and(|g| p.eq_int(g - 53))) {
+                return said(
+                    "Cannot change the active coordinate system with cutter radius compensation \
+                     on",
+                    b'P',
+                );
+            }
+        }
+        if codes.iter().any(|&c| c == 520 || c == 920) {
+            return said("Cannot change axis offsets with cutter radius comp", b'G');
+        }
+        if codes.iter().any(|&c| matches!(c, 280 | 300)) {
+            return said("Cannot use g28 or g30 with cutter radius comp", b'G');
+        }
+        if codes.contains(&530) {
+            return said("Cannot use g53 with cutter radius comp", b'G');
+        }
+        None
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -3413,6 +3548,53 @@ mod tests {
             ("o1 if [0]\nM[3.5]\nG0 X[1/0]\no1 endif", &[]),
             // nor in a definition, which runs only if called (review 16c, 4)
             ("o<s> sub\nM[3.5]\no<s> endsub", &[]),
+            // in a condition known true, a loop known to run, a do, with no o-word line since
+            // it opened, the line runs and in the state the program left: judged (lcnc51,
+            // each as rs274 -g: the line, the message)
+            ("o1 if [1]\nM[3.5]", &["5: Non integer value for integer"]),
+            ("o1 if [1]\nX2 Y2 P1\no1 endif", &["5: P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 M65 M66 M98 or user M code to use it"]),
+            ("o1 repeat [2]\nX2 Y2 P1\no1 endrepeat", &["5: P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 M65 M66 M98 or user M code to use it"]),
+            ("o1 do\nM[3.5]\no1 while [0]", &["5: Non integer value for integer"]),
+            (
+                "#1=0\no1 while [#1 lt 2]\nG91 G0 Z1\nG90\nG38.2 Z6 F10\n#1=[#1+1]\no1 endwhile",
+                &["8: Start point too close to probe point"],
+            ),
+            // not where the condition is not known, nor in the else of a known-true if (which
+            // does not run: rs274 runs the program to its end)
+            ("o1 if [#<_x>]\nX2 Y2 P1\no1 endif", &[]),
+            ("o1 if [1]\nG0 Z1\no1 else\nG38.2 Z5 F10\no1 endif", &[]),
+            // codes run under cutter radius compensation (lcnc51, each as rs274 -g): the
+            // block's M codes under the compensation before it, its G codes after its own
+            // G40-G42
+            ("G41.1 D1\nG43 H1", &["5: Cannot change tool offset with cutter radius compensation on"]),
+            ("G41.1 D1\nG40 G43 H1", &[]),
+            ("G41.1 D1 G43 H1", &["4: Cannot change tool offset with cutter radius compensation on"]),
+            ("G41.1 D1\nG55", &["5: Cannot change coordinate systems with cutter radius compensation on"]),
+            ("G41.1 D1\nG10 L2 P0 X1", &["5: Cannot change the active coordinate system with cutter radius compensation on"]),
+            ("G41.1 D1\nG10 L2 P2 X1", &[]),
+            ("G54\nG41.1 D1\nG10 L20 P1 X1", &["6: Cannot change the active coordinate system with cutter radius compensation on"]),
+            ("G41.1 D1\nG40 M66 P0 L3 Q1", &["5: Cannot wait for digital input with cutter radius compensation on"]),
+            ("G41.1 D1 M64 P0", &[]),
+            ("G41.1 D1\nM66 E0 L0", &["5: Cannot wait for analog input with cutter radius compensation on"]),
+            ("T1 M6\nG41.1 D1\nT1 M6", &["6: Cannot change tools with cutter radius compensation on"]),
+            ("G41.1 D1\nM50 P0", &["5: Cannot disable overrides with cutter radius compensation on"]),
+            ("G41.1 D1\nM48", &["5: Cannot enable overrides with cutter radius compensation on"]),
+            ("G41.1 D1\nM62 P0", &["5: Cannot set motion output with cutter radius compensation on"]),
+            ("G41.1 D1\nM68 E0 Q1", &["5: Cannot set auxiliary analog output with cutter radius compensation on"]),
+            ("G41.1 D1\nG64 P0.1", &["5: Cannot change control mode with cutter radius compensation on"]),
+            ("G41.1 D1\nG98", &["5: Cannot change retract mode with cutter radius compensation on"]),
+            ("G41.1 D1\nG19", &["5: Cannot change planes with cutter radius compensation on"]),
+            ("G19\nG41.1 D1", &["5: Cutter radius compensation allowed only in XY, XZ planes"]),
+            ("G41.1 D1\nG42.1 D1", &["5: Cannot turn cutter radius comp on when on"]),
+            ("G41.1 D1\nG92 X0", &["5: Cannot change axis offsets with cutter radius comp"]),
+            ("G41.1 D1\nG28", &["5: Cannot use g28 or g30 with cutter radius comp"]),
+            ("G41.1 D1\nG53 G0 X0", &["5: Cannot use g53 with cutter radius comp"]),
+            ("G41.1 D1\nG17\nM61 Q1\nM19", &[]),
+            // after a call the checker does not follow, the compensation is not known
+            ("G41.1 D1\no<s> call\nG43 H1\nM2\no<s> sub\nG40\no<s> endsub", &[]),
+            // the diameter mode leaves X not known exactly, Y and Z as they were
+            ("G7\nG0 X1\nG38.2 Z5 F10", &["6: Start point too close to probe point"]),
+            ("G7\nG0 Z1\nG38.2 X0 F10", &[]),
             // after the block's end the lines run unconditionally again: judged (review 17;
             // an `if` in a definition opens nothing in the main program)
             (

@@ -60,6 +60,9 @@ impl Checker {
         // a Custom Macro B conditional assignment (`IF [..] THEN #106 = 1`) jumps nowhere and
         // moves nothing: only its variable's value is unknown after it (params.rs)
         let macro_b = self.config.family == Family::MacroB;
+        if call.is_none() && self.linuxcnc_opened_running(b) {
+            return false;
+        }
         let statement = b.statements.iter().find(|s| {
             s.1.unfollowed()
                 && !(macro_b
