@@ -1731,6 +1731,15 @@ mod tests {
         let file = "o<x> sub\nG91\nG53 G0 Z0\no<x> endsub\n";
         assert_eq!(refused(file), [(3, 1)]);
         assert_eq!(refused("o<x> sub\nG53 G0 Z0\no<x> endsub\n"), []);
+        // review 51, F17: a line inside a condition of the body runs for some calls only (on
+        // its arguments: `o<s> call [0]` runs such a file to its end in rs274 -g)
+        for file in [
+            "o<x> sub\no1 if [#1 GT 0]\nM72\no1 endif\no<x> endsub\n",
+            "o<x> sub\nG91\no1 if [#1 GT 0]\nG53 G0 Z0\no1 endif\nG90\no<x> endsub\n",
+        ] {
+            assert_eq!(refused(file), [], "{file}");
+        }
+        assert_eq!(refused("o<x> sub\nM72\no<x> endsub\n"), [(2, 1)]);
         // f8: after the loop the G90 is known, its X-900 absolute (rs274 -g: X-900), no note
         let f8 = "G21 G90\no<s> sub\nG90\nG0 X1\no<s> endsub\no1 repeat [3]\no<s> call\n\
                   o1 endrepeat\nG0 X-900\nM2\n";

@@ -2263,15 +2263,17 @@ impl Checker {
 
     /// LinuxCNC: a subroutine file (its one definition, called from another file): the
     /// refusals of its body that hold at any call ([`CallRefusal`] not of the caller's mode:
-    /// a G53 under its own G91, an M72 with nothing saved in its context) are said where they
-    /// stand, as rs274 says them when the file is called.
+    /// a G53 under its own G91, an M72 with nothing saved in its context, on a line outside
+    /// the body's conditions and loops) are said where they stand, as rs274 says them when the
+    /// file is called (one inside a condition on the arguments runs for some calls only:
+    /// review 51, F17).
     #[cold]
     fn subroutine_file_refusals(&mut self) {
         let refusals: Vec<CallRefusal> = self
             .linuxcnc_bodies
             .iter()
             .flat_map(|body| body.4.iter().copied())
-            .filter(|r| !r.caller_g91)
+            .filter(|r| !r.caller_g91 && !r.flow)
             .collect();
         for r in refusals {
             let message = if r.m72 {
@@ -2535,6 +2537,7 @@ impl Checker {
                                 line: b.line,
                                 column: step.m_column,
                                 caller_g91: false,
+                                flow,
                                 m72: true,
                             });
                             Distance::Unsure
@@ -2569,6 +2572,7 @@ impl Checker {
                         line: b.line,
                         column: step.g_column,
                         caller_g91,
+                        flow,
                         m72: false,
                     });
                 }
@@ -3720,6 +3724,9 @@ pub(super) struct CallRefusal {
     column: usize,
     caller_g91: bool,
     m72: bool,
+    /// The line stands inside a condition or loop of the body: it runs for some calls only,
+    /// so the refusal does not hold at any call (review 51, F17).
+    flow: bool,
 }
 
 impl CallRefusal {
