@@ -619,21 +619,37 @@ def test_review21_an_operation_outside_brackets_is_refused_where_it_may_run(
 
 
 @pytest.mark.parametrize("body", [
-    "o1 if [0]\n{}\no1 endif",
-    "o1 while [0]\n{}\no1 endwhile",
+    "o1 if [#<_x> GT 1]\n{}\no1 endif",
+    "o1 while [#<_x> GT 1]\n{}\no1 endwhile",
     "o100 sub\n{}\no100 endsub",
 ])
-def test_review21_a_line_rs274_never_runs_is_judged_as_g10_l50_is(tmp_path, body):
-    # the check does not evaluate an o-word condition, nor follow the calls: a line of a
-    # branch or a definition that rs274 never runs is judged as one that may run, the same
-    # for the operation as for the other forms rs274 refuses (G10 L50) -- an error that
-    # rs274, running the program to its end, does not make
+def test_review21_a_line_rs274_may_not_run_is_judged_as_g10_l50_is(tmp_path, body):
+    # a condition the checker does not work out (#<_x>, the current X position, is not
+    # followed), or a definition it does not follow the calls of: a line there is judged as
+    # one that may run, the same for the operation as for the other forms rs274 refuses
+    # (G10 L50) -- an error that rs274, running the program to its end, does not make
     for line, rule_message in [("#1=#2*3", "Bad character '*' used"),
                                ("G10 L50", "Line with G10 does not have L0")]:
         text = program(body.format(line))
         found = errors(text)
         assert [(r, n) for r, n, _ in found] == [("TG412", 4)], found
         assert rule_message in found[0][2]
+        out = rs274_output(tmp_path, text)
+        assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("body", [
+    "o1 if [0]\n{}\no1 endif",
+    "o1 while [0]\n{}\no1 endwhile",
+    "o1 repeat [0.5]\n{}\no1 endrepeat",
+    "o1 if [1]\nG0 X1\no1 else\n{}\no1 endif",
+])
+def test_review51_a_line_known_never_to_run_is_not_judged(tmp_path, body):
+    # review 51, F4: where the checker knows the condition (or the count, rounded half to
+    # even), the lines rs274 skips are judged by no rule, as rs274 runs none of them
+    for line in ["#1=#2*3", "G10 L50", "G91\nG53 G0 X0", "M72", "G53 G2 X1"]:
+        text = program(body.format(line))
+        assert errors(text) == [], text
         out = rs274_output(tmp_path, text)
         assert "PROGRAM_END" in out, out
 

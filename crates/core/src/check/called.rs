@@ -1485,14 +1485,155 @@ mod tests {
             assert_eq!(refused(&text), [line], "{text}");
         }
         // M72 without a state M70 saved outside a condition: not known, not refused
-        let unsure = format!("G21 G90\no1 if [0]\nM70\no1 endif\nG91\nM72\n{g53}");
+        let unsure = format!("G21 G90\no1 if [#<_x> GT 1]\nM70\no1 endif\nG91\nM72\n{g53}");
         assert_eq!(refused(&unsure), Vec::<usize>::new());
+        // an M70 in a condition known false never saves: rs274 refuses the M72 (review 51, F4)
+        let dead = format!("G21 G90\no1 if [0]\nM70\no1 endif\nG91\nM72\n{g53}");
+        assert_eq!(refused(&dead), [6]);
         // M71 invalidates the saved state: rs274 refuses the M72 (review 50, F5); an M70 of
         // G91 restores G91
         let invalid = format!("G21 G90\nM70\nM71\nG91\nM72\n{g53}");
         assert_eq!(refused(&invalid), [5]);
         let saved_g91 = format!("G21 G91\nM70\nG90\nM72\n{g53}");
         assert_eq!(refused(&saved_g91), [5]);
+    }
+
+    /// Review 51, F1, F4, F13: a line rs274 never runs is refused by no rule and changes no
+    /// state (`Checker::linuxcnc_dead`): the body of an `if [0]`, `while [0]`, `repeat [0]`
+    /// (and `repeat [0.5]`, rounded half to even), the `else`/`elseif` after a branch known to
+    /// run, a call there (its body's refusals wait for a call that runs), the lines after an
+    /// M2 that surely runs (in the main program, in a body a call runs, in a block known to
+    /// run: `if [1]`, `repeat [1]`, `do`). Each run to its end by `rs274 -g`; the same lines
+    /// where they run are refused as rs274 refuses them.
+    #[test]
+    fn linuxcnc_refuses_nothing_on_a_line_that_never_runs() {
+        let refused = |text: &str| {
+            fired(lcnc(), text, Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| f.0)
+                .collect::<Vec<_>>()
+        };
+        let head = "G21 G90\nG0 X0\n";
+        let dead = [
+            // F4 e1-e8: the distance mode and M70-M73 of a dead branch
+            "o1 if [0]\nG91\nG53 G0 Z0\no1 endif\nG90\nM2\n",
+            "G91\no1 if [0]\nG53 G0 Z0\no1 endif\nG90\nM2\n",
+            "o1 if [0]\nM72\no1 endif\nM2\n",
+            "o1 repeat [0]\nM72\no1 endrepeat\nM2\n",
+            "o1 repeat [0.5]\nM72\no1 endrepeat\nM2\n",
+            "o1 while [0]\nM72\no1 endwhile\nM2\n",
+            "o1 if [1]\nG0 X1\no1 else\nM72\no1 endif\nM2\n",
+            "o1 if [1]\nG0 X1\no1 elseif [1]\nM72\no1 endif\nM2\n",
+            "o1 if [1]\nG0 X1\no1 elseif [1]\nM72\no1 else\nM72\no1 endif\nM2\n",
+            // any other refusal of a dead line (G53 under an arc)
+            "o1 if [0]\nG53 G2 Z0\no1 endif\nM2\n",
+            // F4 d1: a condition the checker works out (2 LE 1.00005)
+            "#<a> = 1\no1 if [[#<a>+1] LE 1.00005]\n/G91\nG53 G0 Z0\no1 endif\nM2\n",
+            // F4 addendum: a call only in a dead branch
+            "o<s> sub\nG0 X#<a>\no<s> endsub\no1 if [0]\no<s> call\no1 endif\nM2\n",
+            "o<s> sub\nG91\nG53 G0 X0\no<s> endsub\no1 if [0]\no<s> call\no1 endif\nM2\n",
+            "o<s> sub\nM72\no<s> endsub\no1 repeat [0.5]\no<s> call\no1 endrepeat\nM2\n",
+            // F1: after a called body's M2, after the main program's M2
+            "o<s> sub\nM2\no<s> endsub\no<s> call\nG0 X#<nope>\nG91 G53 G0 X0\nM72\nM2\n",
+            "M2\no1 if [1]\nG91 G53 G0 X0\no1 endif\nM2\n",
+            // F13: an M2/M30 in a block known to run ends the program
+            "o1 if [1]\nM2\no1 endif\nG0 X#<nope>\nM2\n",
+            "o1 repeat [1]\nM2\no1 endrepeat\nG0 X#<nope>\nM2\n",
+            "o1 do\nM2\no1 while [0]\nG0 X#<nope>\nM2\n",
+            "o1 if [1]\nM30\no1 else\nG0 X1\no1 endif\nG0 X#<nope>\nM2\n",
+            "o1 if [1]\nM2\no1 endif\nG91 G53 G0 X0\nM2\n",
+        ];
+        for program in dead {
+            let text = format!("{head}{program}");
+            assert_eq!(refused(&text), Vec::<usize>::new(), "{text}");
+        }
+        // the same lines where they run: the else after a false if, a repeat [1.5] (2 times),
+        // a condition the checker cannot work out (#<_x>, the current X, is not followed)
+        let runs = [
+            ("o1 if [0]\nG0 X1\no1 else\nM72\no1 endif\nM2\n", 6),
+            (
+                "o<s> sub\nM72\no<s> endsub\no1 repeat [1.5]\no<s> call\no1 endrepeat\nM2\n",
+                4,
+            ),
+            ("o1 if [#<_x> GT 1]\nG53 G2 Z0\no1 endif\nM2\n", 4),
+            ("o1 if [#<_x> GT 1]\nM2\no1 endif\nG91 G53 G0 X0\nM2\n", 6),
+        ];
+        for (program, line) in runs {
+            let text = format!("{head}{program}");
+            assert_eq!(refused(&text), [line], "{text}");
+        }
+    }
+
+    /// Review 51, F2: a body's lines after its unconditional return never run, an o-word
+    /// condition's reads among them too (`rs274 -g` runs `o<s> return` / `o1 if [#<b> GT 0]`
+    /// to the end); F11: an o-word after a comment or a word in a block known to run is
+    /// refused as outside any condition ("Bad character 'o' used").
+    #[test]
+    fn linuxcnc_judges_the_lines_known_to_run_and_no_other() {
+        let refused = |text: &str| {
+            fired(lcnc(), text, Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| f.0)
+                .collect::<Vec<_>>()
+        };
+        let after_return = "G21 G90\nG0 X0\no<s> sub\no<s> return\no1 if [#<b> GT 0]\no1 endif\n\
+                            G0 X#<c>\no<s> endsub\no<s> call\nM2\n";
+        assert_eq!(refused(after_return), Vec::<usize>::new());
+        let before_return = "G21 G90\nG0 X0\no<s> sub\no1 if [#<b> GT 0]\no1 endif\n\
+                             o<s> return\no<s> endsub\no<s> call\nM2\n";
+        assert_eq!(refused(before_return), [4]);
+        for program in [
+            "G21\no5 if [1]\n(c) o6 if [1]\no5 endif\nM2\n",
+            "G21\no5 if [1]\nG0 X1 o6 call\no5 endif\nM2\n",
+        ] {
+            assert_eq!(refused(program), [3], "{program}");
+        }
+        // in a condition the checker cannot work out: not judged (it may not run)
+        let unknown = "G21\no5 if [#<_x> GT 1]\n(c) o6 if [1]\no5 endif\nM2\n";
+        assert_eq!(refused(unknown), Vec::<usize>::new());
+    }
+
+    /// Review 51, F3: `break` and `continue` leave a `do` or `while` only; of a label recorded
+    /// for an `if` or a `repeat` rs274 refuses them where it reaches them ("5: no matching
+    /// while/do label: 'o1 continue' (found 'repeat' in line 3)", `rs274 -g`), a skip of a
+    /// block known not to run ending at them too; not where the block's condition or count is
+    /// not known (it may not be reached).
+    #[test]
+    fn linuxcnc_refuses_a_break_of_an_if_or_a_repeat() {
+        let refused = |text: &str| {
+            findings(lcnc(), text, Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| {
+                    (
+                        f.line,
+                        f.column,
+                        f.message.split(" (").next().unwrap().to_owned(),
+                    )
+                })
+                .collect::<Vec<_>>()
+        };
+        let head = "G21 G90\nG0 X0\n";
+        for (open, exit, close) in [
+            ("o1 repeat [2]", "o1 continue", "o1 endrepeat"),
+            ("o1 repeat [2]", "o1 break", "o1 endrepeat"),
+            ("o1 repeat [0]", "o1 continue", "o1 endrepeat"),
+            ("o1 if [1]", "o1 break", "o1 endif"),
+            ("o1 if [0]", "o1 break", "o1 endif"),
+        ] {
+            let text = format!("{head}{open}\nG0 X1\n{exit}\n{close}\nM2\n");
+            let said = refused(&text);
+            assert_eq!(said.len(), 1, "{text}");
+            assert_eq!((said[0].0, said[0].1), (5, 1), "{text}");
+            assert_eq!(said[0].2, "no matching while/do label", "{text}");
+        }
+        for text in [
+            "o1 do\nG0 X1\no1 break\no1 while [1]\nM2\n",
+            "o1 while [#<_x> LT 1]\no2 repeat [2]\no1 break\no2 endrepeat\no1 endwhile\nM2\n",
+            "o1 repeat [#<_x>]\no1 break\no1 endrepeat\nM2\n",
+        ] {
+            let text = format!("{head}{text}");
+            assert!(refused(&text).is_empty(), "{text}");
+        }
     }
 
     /// Review 50, F1-F8, F11: G53 in G91 ("Cannot use g53 incremental") and M72 with nothing
@@ -1590,6 +1731,15 @@ mod tests {
         let file = "o<x> sub\nG91\nG53 G0 Z0\no<x> endsub\n";
         assert_eq!(refused(file), [(3, 1)]);
         assert_eq!(refused("o<x> sub\nG53 G0 Z0\no<x> endsub\n"), []);
+        // review 51, F17: a line inside a condition of the body runs for some calls only (on
+        // its arguments: `o<s> call [0]` runs such a file to its end in rs274 -g)
+        for file in [
+            "o<x> sub\no1 if [#1 GT 0]\nM72\no1 endif\no<x> endsub\n",
+            "o<x> sub\nG91\no1 if [#1 GT 0]\nG53 G0 Z0\no1 endif\nG90\no<x> endsub\n",
+        ] {
+            assert_eq!(refused(file), [], "{file}");
+        }
+        assert_eq!(refused("o<x> sub\nM72\no<x> endsub\n"), [(2, 1)]);
         // f8: after the loop the G90 is known, its X-900 absolute (rs274 -g: X-900), no note
         let f8 = "G21 G90\no<s> sub\nG90\nG0 X1\no<s> endsub\no1 repeat [3]\no<s> call\n\
                   o1 endrepeat\nG0 X-900\nM2\n";

@@ -1103,8 +1103,11 @@ pub struct Checker {
     /// is known false (its label and line), until an o-word line of its label: rs274 skips
     /// every line to that one, reading no other (interp_read.cc `read_items`), so a file that
     /// has none ends in the skip, "File ended with no percent sign or program end" (review
-    /// 49a, F3).
-    linuxcnc_skipping: Option<(Vec<u8>, usize)>,
+    /// 49a, F3). Also the `else`/`elseif` after a branch known to run (the flag: the skip
+    /// ends at the label's `endif` only, interp_o_word.cc skips the other branches of an `if`
+    /// that ran one; review 51, F4). Every line in the skip is dead
+    /// ([`Checker::linuxcnc_dead`]).
+    linuxcnc_skipping: Option<(Vec<u8>, usize, bool)>,
     /// LinuxCNC: the subroutines the main program surely defines (at its top, before its
     /// end), by name without `o` and `<>`, and their lines: a second definition of one is
     /// rs274's "redefining sub" (review 48, F19). Keyed by the name (review 49a, F5).
@@ -2005,7 +2008,11 @@ impl Checker {
         } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
             self.empty_folder = false;
         }
-        self.subroutine_file(b);
+        // (LinuxCNC: a line in the skip of a block known not to run, no o-word line: rs274
+        // reads it for its o-word only and runs nothing of it, interp_read.cc read_items)
+        if self.subroutine_file(b) {
+            return;
+        }
         self.definition_section(b);
         if dialect::defines_subprogram(self.config.family, b.statements) {
             // PROC NAME: a subprogram, under its caller's position, feed and speed
@@ -2441,7 +2448,8 @@ impl Checker {
         self.split.ended(ends || returns);
         if ends {
             self.ended_line = b.line;
-            if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {
+            // (LinuxCNC: one in a block known to run ends it too: review 51, F13)
+            if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_known() {
                 self.surely_ended = true;
             } else if self.open_definition.is_none() {
                 let depth = self.linuxcnc_open_flow.len();

@@ -571,7 +571,7 @@ impl Checker {
     /// then saying it is refused when it runs. The main program's lines after its end are
     /// never read (TG117).
     fn linuxcnc_bare_operator(&mut self, b: &BlockView<'_>, walks: &[ExpressionWalk; WALKED]) {
-        if self.open_definition.is_none() && self.main_ended() {
+        if self.open_definition.is_none() && self.linuxcnc_dead() {
             return;
         }
         for (i, w) in b.words.iter().enumerate() {
@@ -663,10 +663,14 @@ impl Checker {
     /// endsub`, optionally followed by M2 (LinuxCNC's O codes, "Calling Files": `o<name>
     /// call` runs the file of that name, which holds the definition), returns to its caller
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
+    ///
+    /// Returns whether the line is one in the skip of a block known not to run and no o-word
+    /// line ([`Checker::linuxcnc_skipping`]): rs274 reads it for its o-word only and runs
+    /// nothing of it, so no rule judges it and it changes no state (review 51, F4).
     #[inline(always)]
-    pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
+    pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) -> bool {
         if self.config.family != Family::LinuxCnc {
-            return;
+            return false;
         }
         // a block without a statement, outside any definition, in a file that is no
         // subroutine file, after no M2/M30 inside a condition and with no spindle speed
@@ -695,30 +699,32 @@ impl Checker {
             // over: the count kept is no other block's)
             if !expressions {
                 self.linuxcnc_no_slash = self.stats.blocks;
-                return;
+                return false;
             }
             if self.linuxcnc_line_walked(b) {
                 self.linuxcnc_no_slash = self.stats.blocks;
                 if self.surely_ended || self.linuxcnc_names_all_seen(b) {
-                    return;
+                    return false;
                 }
                 let walks = self.linuxcnc_walk_words(b);
                 self.linuxcnc_named_reads(b, self.linuxcnc_open_flow.is_empty(), &walks);
-                return;
+                return false;
             }
         }
         if b.words.is_empty() && b.statements.is_empty() {
-            return;
+            return false;
         }
         self.subroutine_file_read(b);
+        self.linuxcnc_skipping.is_some() && b.statements.is_empty()
     }
 
     /// The file is no subroutine file, no definition is open, and no spindle speed is
     /// followed through a condition ([`Checker::linuxcnc_if_speed`]): the short path of
     /// [`Checker::subroutine_file`] may be taken (where no M2/M30 inside a condition came
-    /// before, too).
+    /// before, too), and no skip of a block known not to run is on.
     fn linuxcnc_quiet_now(&self) -> bool {
         self.sub_file == SubFile::No
+            && self.linuxcnc_skipping.is_none()
             && self.open_definition.is_none()
             && self.linuxcnc_speed_back.is_none()
             && self.linuxcnc_if_speed.is_empty()
@@ -801,6 +807,7 @@ impl Checker {
             }
             if kind == Kind::Flow && main {
                 self.linuxcnc_undefined_label(b, text, column);
+                self.linuxcnc_loop_exit(b, text, column);
             }
             // a call that surely runs of a subroutine defined before it whose body surely
             // ends the program (`o<s> sub` / `M2` / `o<s> endsub` ... `o<s> call`): the main
@@ -815,9 +822,14 @@ impl Checker {
             // (the skip of a block known not to run ends at an o-word line of its label; one
             // whose label is worked out as the line runs, from values a line skipped may have
             // set here, or a definition, may end it too)
+            // (a call the skip passes over never runs: it does not end the skip, review 51,
+            // F4; an `else` or `elseif` after a branch that ran does not either)
             if self.linuxcnc_skipping.as_ref().is_some_and(|s| {
                 s.0 == label
-                    || kind != Kind::Flow
+                    && (!s.2
+                        || crate::statement::o_keyword(text).as_deref()
+                            == Some(b"endif".as_slice()))
+                    || kind == Kind::Definition
                     || crate::statement::computed_label(&crate::statement::o_label(text))
             }) {
                 self.linuxcnc_skipping = None;
@@ -842,7 +854,7 @@ impl Checker {
             }
             if kind == Kind::Call
                 && if main {
-                    !self.main_ended()
+                    !self.linuxcnc_dead()
                 } else {
                     !self.linuxcnc_body_distance.returned
                 }
@@ -855,14 +867,16 @@ impl Checker {
                     // (whether the lines of the one block open ran up to this one)
                     let ran =
                         !b.skip && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]);
-                    self.linuxcnc_main_flow(text, b.line, column);
+                    let other_branch = self.linuxcnc_main_flow(text, b.line, column);
                     if top || self.linuxcnc_loop_defs.is_some() {
                         self.linuxcnc_loop_turns(text, top, ran);
                     }
                     if let [(_, at, Some(false))] = self.linuxcnc_open_at.as_slice() {
                         if top && *at == b.line && !b.skip {
-                            self.linuxcnc_skipping = Some((label, b.line));
+                            self.linuxcnc_skipping = Some((label, b.line, false));
                         }
+                    } else if other_branch && !b.skip && self.linuxcnc_skipping.is_none() {
+                        self.linuxcnc_skipping = Some((label, b.line, true));
                     }
                 }
                 (Kind::Flow, false) => {
@@ -1008,7 +1022,9 @@ impl Checker {
             }
             _ => {}
         }
-        if !self.early_on && self.pending.is_empty() && self.given_up.is_empty() {
+        if !self.early_on && self.pending.is_empty() && self.given_up.is_empty()
+            || self.open_definition.is_none() && self.linuxcnc_dead()
+        {
             return;
         }
         for &(column, kind, text) in b.statements {
@@ -1424,7 +1440,11 @@ impl Checker {
             if crate::statement::computed_label(&label) {
                 self.linuxcnc_fractional_label(&label, &keyword, b.line, column);
             }
-            if kind == Kind::Call && keyword == b"call" {
+            // (a call in the main program where it never runs calls nothing: review 51, F4)
+            if kind == Kind::Call
+                && keyword == b"call"
+                && (self.open_definition.is_some() || !self.linuxcnc_dead())
+            {
                 self.linuxcnc_calls.insert(label);
             }
         }
@@ -1438,7 +1458,10 @@ impl Checker {
             return;
         };
         let label = label.clone();
-        let judge = self.linuxcnc_definition_flow.is_empty();
+        // (not after a return outside the body's conditions and loops: the lines after it
+        // never run, their conditions not either; review 51, F2)
+        let judge =
+            self.linuxcnc_definition_flow.is_empty() && !self.linuxcnc_body_distance.returned;
         let said = self.linuxcnc_body_unassigned.iter().any(|e| e.0 == label);
         let mut first: Option<(usize, Vec<u8>)> = None;
         for w in b.words {
@@ -1743,6 +1766,27 @@ impl Checker {
             && matches!(self.linuxcnc_open_at.as_slice(), [(_, at, Some(true))] if *at == b.line)
     }
 
+    /// LinuxCNC: whether the line in hand runs whenever the program runs to it, its conditions
+    /// known: [`Checker::linuxcnc_runs_surely`], or inside one `do`, or one `if`, `while` or
+    /// `repeat` at the top of the main program the checker knows runs, with no o-word line
+    /// since it opened ([`Checker::linuxcnc_body_runs`]; review 51, F11, F13).
+    pub(super) fn linuxcnc_runs_known(&self) -> bool {
+        self.linuxcnc_runs_surely()
+            || self.open_definition.is_none()
+                && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))])
+    }
+
+    /// LinuxCNC: whether the line in hand of the main program is one rs274 never runs: in
+    /// the skip of a block known not to run ([`Checker::linuxcnc_skipping`]: `o1 if [0]`,
+    /// `o1 repeat [0]`, the `else` after a branch that ran), or after the program's end
+    /// ([`Checker::main_ended`]: an M2/M30 that surely runs, a call of a body that ends the
+    /// program, the rest of a branch after its M2). No refusal rs274 makes while it runs a
+    /// line is said there, and no state it changes as it runs a line follows it: the
+    /// distance mode, M70-M73, a call's body (review 51, F1, F4).
+    pub(super) fn linuxcnc_dead(&self) -> bool {
+        self.linuxcnc_skipping.is_some() || self.main_ended()
+    }
+
     /// Whether the main program has ended where the line in hand stands, for the rules that
     /// judge its lines up to its end: an M02/M30 that surely runs before it, or on LinuxCNC
     /// one inside a condition or loop still open (the rest of its branch never runs after
@@ -1760,8 +1804,11 @@ impl Checker {
     /// not: an M2/M30 in that branch (at the label's depth or deeper) no longer ends the lines
     /// (review 20). An `endif` whose `if` has an `else` and whose every branch ended in an
     /// M2/M30 ends the main program where the `if` stands: rs274 reads no line after it
-    /// (issue 32; interp_o_word.cc runs one branch, and each ends the program).
-    fn linuxcnc_main_flow(&mut self, text: &[u8], line: usize, column: usize) {
+    /// (issue 32; interp_o_word.cc runs one branch, and each ends the program). Returns
+    /// whether the line is an `else`/`elseif` of an `if` at the top of the main program
+    /// whose branch before it surely ran (known true, no o-word line since): rs274 skips
+    /// from it to the `endif` (review 51, F4).
+    fn linuxcnc_main_flow(&mut self, text: &[u8], line: usize, column: usize) -> bool {
         let keyword = crate::statement::o_keyword(text);
         // (whether the innermost block's lines ran up to this one: no o-word line since it)
         let ran = self.linuxcnc_open_at.last().and_then(|e| e.2);
@@ -1774,6 +1821,10 @@ impl Checker {
         let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
         let mut all_ended = None;
         let switched = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label);
+        let other_branch = switched == Some(0)
+            && ran == Some(true)
+            && self.linuxcnc_open_flow.len() == 1
+            && !self.main_ended();
         if let Some(at) = switched {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
@@ -1821,6 +1872,7 @@ impl Checker {
         if let Some(at) = all_ended {
             self.linuxcnc_end_depth = Some(self.linuxcnc_end_depth.map_or(at, |d| d.min(at)));
         }
+        other_branch
     }
 
     /// LinuxCNC: whether the o-word statement at `column` of block `b` stands after a comment
@@ -1829,9 +1881,9 @@ impl Checker {
     /// of the line, after a block delete `/` and an N word, and elsewhere refuses its `o`,
     /// "Bad character 'o' used"; after the o-word's label, keyword and brackets only a
     /// comment may follow, else "Unexpected character after O-word". Either refused (TG412)
-    /// where the line surely runs (the main program's, no condition or loop open, no block
-    /// delete): rs274 reads no line of a condition it skips but its o-words (`rs274 -g`;
-    /// review 49a, F8).
+    /// where the line surely runs (the main program's, no condition or loop open or only one
+    /// known to run, [`Checker::linuxcnc_runs_known`]; no block delete): rs274 reads no line
+    /// of a condition it skips but its o-words (`rs274 -g`; review 49a, F8; review 51, F11).
     #[inline(never)]
     fn linuxcnc_o_misplaced(&mut self, b: &BlockView<'_>, column: usize) -> bool {
         let before = if b.comments.iter().any(|c| c.0 < column) {
@@ -1847,7 +1899,7 @@ impl Checker {
         if before.is_none() && after.is_none() {
             return false;
         }
-        if !b.skip && self.linuxcnc_runs_surely() && !self.main_ended() {
+        if !b.skip && self.linuxcnc_runs_known() && !self.main_ended() {
             let shown = |from: usize| {
                 let text = b.text.get(from.saturating_sub(1)..).unwrap_or_default();
                 String::from_utf8_lossy(text).trim_end().to_owned()
@@ -1878,6 +1930,51 @@ impl Checker {
             self.report(Rule::LinuxCncRefuses, message, b.line, at);
         }
         before.is_some()
+    }
+
+    /// LinuxCNC: a `break` or `continue` of the main program whose label rs274 recorded for
+    /// an `if` or a `repeat`, where the line is reached: inside the one block open, at the top
+    /// of the main program, of that label, whose condition or count the checker knows (known
+    /// to run, or known not to, when the skip ends at this line of its label). rs274 leaves
+    /// only a `do` or `while` by them: "5: no matching while/do label: 'o1 continue' (found
+    /// 'repeat' in line 3)" (interp_o_word.cc `convert_control_functions`; `rs274 -g`; review
+    /// 51, F3).
+    #[inline(never)]
+    fn linuxcnc_loop_exit(&mut self, b: &BlockView<'_>, text: &[u8], column: usize) {
+        let keyword = crate::statement::o_keyword(text);
+        if !matches!(keyword.as_deref(), Some(b"break" | b"continue"))
+            || b.skip
+            || self.main_ended()
+            || self.linuxcnc_labels_named.1
+        {
+            return;
+        }
+        let label = self.linuxcnc_call_label(text);
+        let bare = bare_label(&label);
+        let [(written, _, Some(_))] = self.linuxcnc_open_at.as_slice() else {
+            return;
+        };
+        if crate::statement::computed_label(&label) || bare_label(written) != bare {
+            return;
+        }
+        let Some(&(kind, line, _)) = self.linuxcnc_o_labels.get(&bare) else {
+            return;
+        };
+        let found = match kind {
+            b'i' => "if",
+            b'r' => "repeat",
+            _ => return,
+        };
+        let statement = String::from_utf8_lossy(text.trim_ascii()).into_owned();
+        let message = format!(
+            "no matching while/do label (rs274ngc): '{statement}' leaves a loop, and its label \
+             {} is the {found} of line {line}, no do or while (\"{}: no matching while/do \
+             label: '{statement}' (found '{found}' in line {line})\"; interp_o_word.cc \
+             convert_control_functions)",
+            String::from_utf8_lossy(&label),
+            b.line,
+        );
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 
     /// LinuxCNC: a closing word of the main program (`o2 endif`, `else`, `elseif`,
@@ -2236,6 +2333,9 @@ impl Checker {
     pub(super) fn linuxcnc_distance_modal(&mut self, b: &BlockView<'_>, incremental: bool) {
         let step = distance_step(b);
         self.linuxcnc_g53_before = None;
+        if self.linuxcnc_dead() {
+            return;
+        }
         // (most blocks: a G1 or an M3, nothing of the distance mode)
         if step.distance.is_none() && step.m7.is_none() && !step.unread_g && !step.unread_m {
             return;
@@ -2287,15 +2387,17 @@ impl Checker {
 
     /// LinuxCNC: a subroutine file (its one definition, called from another file): the
     /// refusals of its body that hold at any call ([`CallRefusal`] not of the caller's mode:
-    /// a G53 under its own G91, an M72 with nothing saved in its context) are said where they
-    /// stand, as rs274 says them when the file is called.
+    /// a G53 under its own G91, an M72 with nothing saved in its context, on a line outside
+    /// the body's conditions and loops) are said where they stand, as rs274 says them when the
+    /// file is called (one inside a condition on the arguments runs for some calls only:
+    /// review 51, F17).
     #[cold]
     fn subroutine_file_refusals(&mut self) {
         let refusals: Vec<CallRefusal> = self
             .linuxcnc_bodies
             .iter()
             .flat_map(|body| body.4.iter().copied())
-            .filter(|r| !r.caller_g91)
+            .filter(|r| !r.caller_g91 && !r.flow)
             .collect();
         for r in refusals {
             let message = if r.m72 {
@@ -2559,6 +2661,7 @@ impl Checker {
                                 line: b.line,
                                 column: step.m_column,
                                 caller_g91: false,
+                                flow,
                                 m72: true,
                             });
                             Distance::Unsure
@@ -2593,6 +2696,7 @@ impl Checker {
                         line: b.line,
                         column: step.g_column,
                         caller_g91,
+                        flow,
                         m72: false,
                     });
                 }
@@ -3129,7 +3233,7 @@ impl Checker {
                 ));
             }
             self.report(Rule::NoProgramEnd, message, at, column);
-        } else if let Some((label, at)) = self.linuxcnc_skipping.take() {
+        } else if let Some((label, at, _)) = self.linuxcnc_skipping.take() {
             // (the skip of a block known not to run reached the end: no M2 read in it runs)
             let label = String::from_utf8_lossy(&label);
             let message = format!(
@@ -3770,6 +3874,9 @@ pub(super) struct CallRefusal {
     column: usize,
     caller_g91: bool,
     m72: bool,
+    /// The line stands inside a condition or loop of the body: it runs for some calls only,
+    /// so the refusal does not hold at any call (review 51, F17).
+    flow: bool,
 }
 
 impl CallRefusal {

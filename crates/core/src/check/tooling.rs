@@ -1059,9 +1059,13 @@ impl Checker {
                 nurbs.points = nurbs.points.saturating_add(1);
             }
         }
+        // (none where the main program never runs the line: review 51, F1, F4)
+        let live = |c: &Self| c.open_definition.is_some() || !c.linuxcnc_dead();
         if let Some((message, letter)) = message {
-            self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
-        } else if ms.contains(&98) {
+            if live(self) {
+                self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
+            }
+        } else if ms.contains(&98) && live(self) {
             if let Some((message, column)) = self.linuxcnc_m98_refusal(b) {
                 self.report(Rule::LinuxCncRefuses, message, b.line, column);
             }
