@@ -50,19 +50,19 @@ def linuxcnc(body: str) -> str:
 
 
 @pytest.mark.parametrize(("block", "pair"), [
-    ("G54.1 P1 G55", "G55 and G54.1"),  # work offset (Fanuc group 14)
-    ("G55 G54.1 P1", "G54.1 and G55"),
-    ("G43.4 H1 G49", "G49 and G43.4"),  # length (group 08)
-    ("G43.4 H1 G43.5", "G43.5 and G43.4"),
-    ("G68.2 X0 Y0 Z0 I0 J45. K0 G69", "G69 and G68.2"),  # rotation (group 16)
-    ("G12.1 G13.1", "G13.1 and G12.1"),  # polar interpolation (group 21)
-    ("G41.2 D1 G40", "G40 and G41.2"),  # cutter (group 07)
-    ("G50.1 X0 G51.1 X0", "G51.1 and G50.1"),  # mirror (group 22)
+    ("G54.1 P1 G55", "G54.1 and G55"),  # work offset (Fanuc group 14)
+    ("G55 G54.1 P1", "G55 and G54.1"),
+    ("G43.4 H1 G49", "G43.4 and G49"),  # length (group 08)
+    ("G43.4 H1 G43.5", "G43.4 and G43.5"),
+    ("G68.2 X0 Y0 Z0 I0 J45. K0 G69", "G68.2 and G69"),  # rotation (group 16)
+    ("G12.1 G13.1", "G12.1 and G13.1"),  # polar interpolation (group 21)
+    ("G41.2 D1 G40", "G41.2 and G40"),  # cutter (group 07)
+    ("G50.1 X0 G51.1 X0", "G50.1 and G51.1"),  # mirror (group 22)
 ])
 def test_a_decimal_fanuc_code_and_another_of_its_group_are_tg304(block, pair):
     hits = fired(fanuc(block), "fanuc-mill", "TG304")
     assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
-    assert pair in hits[0][2]
+    assert pair in hits[0][2]  # the codes in the block's order (review 51, F19)
 
 
 @pytest.mark.parametrize("block", [
@@ -216,10 +216,10 @@ def test_an_m_code_the_list_lacks_is_a_warning_naming_it(profile, program, code,
 
 
 @pytest.mark.parametrize(("block", "pair"), [
-    ("M50 M51", "M51 and M50"),  # through-the-tool coolant, low and high pressure
-    ("M53 M54", "M54 and M53"),  # fixed cycle return level
-    ("M68 M69", "M69 and M68"),  # vertical spindle tool clamp and unclamp
-    ("M326 M327", "M327 and M326"),  # synchronized tapping torque monitoring
+    ("M50 M51", "M50 and M51"),  # through-the-tool coolant, low and high pressure
+    ("M53 M54", "M53 and M54"),  # fixed cycle return level
+    ("M68 M69", "M68 and M69"),  # vertical spindle tool clamp and unclamp
+    ("M326 M327", "M326 and M327"),  # synchronized tapping torque monitoring
 ])
 def test_two_okuma_m_codes_of_one_group_are_tg308(block, pair):
     """The OSP-U100M/U10M List of M Codes gives each M code its group, and no source at hand

@@ -154,6 +154,27 @@ def test_a_leader_the_iso_reader_takes_for_its_identification_is_carried(target,
     assert not target_errors(out, target)
 
 
+@pytest.mark.parametrize("source, target", [
+    ("haas-mill", "haas-mill"), ("haas-mill", "okuma-mill"), ("okuma-mill", "haas-mill"),
+    ("okuma-mill", "okuma-mill"), ("haas-mill", "linuxcnc")])
+def test_a_haas_or_okuma_leader_with_text_is_refused_whatever_the_source(source, target):
+    """Review 51, F16: a Haas's own `% O1000 (TEXT)` (its check: TG137, no source says what
+    the control does with the text) was written as it stands for a Haas: the target's
+    reading of it is not known, and it is refused at its first character after the `%`,
+    as a FANUC source's is; no word of the FANUC's skipping where the source is no FANUC."""
+    text = "% O1000 (TEXT)\nO01000\nG20 G90\nG0 X0 Y0\nM30\n%\n"
+    e = refusal(text, source, target)
+    assert (e.line, e.column) == (1, 3), e
+    assert e.message.startswith("\"O1000 (TEXT)\": text after the first '%', "), e.message
+    assert "source control skips" not in e.message
+    assert "write the '%' on a line of its own" in e.message
+    if target != "linuxcnc":
+        assert "no source of the target's says what it does; its check: TG137)" in e.message
+    # the way the message gives: the `%` alone, the text on the next line
+    out = convert(text.replace("% O1000 (TEXT)", "%\n(TEXT)"), source, target)
+    assert out.splitlines()[:2] == ["%", "(TEXT)"]
+
+
 @pytest.mark.parametrize("target", ["linuxcnc", "haas-mill", "iso-mill"])
 def test_text_after_the_closing_percent_is_carried(target, tmp_path):
     """Only the leader is the skipped text: the closing `%` ends the program on every target

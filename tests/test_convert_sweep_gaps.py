@@ -125,7 +125,7 @@ ONE_GROUP = "O1000\nG21 G90 G17\nG49 G40 G80\nG0 X0 Y0\nM30\n"
 
 
 def test_two_codes_the_target_puts_in_one_modal_group_are_refused_at_the_second():
-    assert any(e.startswith("3:TG304 G40 and G49") for e in target_errors(ONE_GROUP, "pm322-eia"))
+    assert any(e.startswith("3:TG304 G49 and G40") for e in target_errors(ONE_GROUP, "pm322-eia"))
     e = refusal(ONE_GROUP, "haas-mill", "pm322-eia")
     assert (e.code, e.line, e.column) == ("conversion", 3, 5)
     assert e.message.startswith("G40: the target's code table puts this code and G49 of the "

@@ -1035,13 +1035,17 @@ def test_a_fanuc_alarms_on_a_decimal_point_in_m_s_t(profile):
 
 
 def test_a_conditional_assignment_keeps_the_position_known():
-    """IF [..] THEN #106 = 1 jumps nowhere: the arc after it is still checked (TG410)."""
+    """IF [..] THEN #106 = 1 jumps nowhere: the arc after it is still checked (TG410). An IF
+    GOTO whose condition is not known is not followed (the position unknown at its target);
+    one the known values make true is, from the position it left (review 51, F14)."""
     text = ("%\nO1000\nG21 G90 G17 G94\nG00 X0 Y0 Z5.\n#106 = 0\n"
             "IF [#106 EQ 0] THEN #106 = 1\nG02 X10. Y0 R2. F100.\nM30\n%\n")
     assert ("TG410", 7) in errors(text, "fanuc-mill")
     assert [r for r in found(text, "fanuc-mill") if r[0] == "TG140"] == []
     jump = text.replace("THEN #106 = 1", "GOTO 10").replace("G02", "N10 G02")
-    assert ("TG410", 7) not in errors(jump, "fanuc-mill")
+    assert ("TG410", 7) in errors(jump, "fanuc-mill")
+    unknown = jump.replace("[#106 EQ 0]", "[#5 EQ 0]")
+    assert ("TG410", 7) not in errors(unknown, "fanuc-mill")
 
 
 def test_a_slash_after_a_macro_variable_is_said_doubtful():

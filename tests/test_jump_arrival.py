@@ -286,3 +286,36 @@ def test_the_sample_machine_hint_goes_on_the_first_finding_shown(tmp_path: Path)
         assert [HINT in str(f["message"]) for f in found] == (
             [True, False] if not option else [True]), option
         assert (found[-1]["rule"], found[-1]["line"], found[-1]["column"]) == ("TG605", 6, 7)
+
+
+# review 51, F14: the file's program; line 9 is `N10 G91 G0 X850.`
+F14 = ("%\nO1000\nG21 G17 G90 G54\nG0 X-700. Y0 Z10.\nG0 X700.\nG0 X0\n{jump}\nG0 X10.\n"
+       "N10 G91 G0 X850.\nG90\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("jump", ["GOTO10", "#1=1\nIF[#1EQ1]GOTO10"])
+def test_an_increment_at_a_jump_target_starts_where_the_jump_left(profile, jump):
+    """A jump surely taken leaves the machine where its block did (X0): the target's G91 X850.
+    goes to X850, a 1550 span from X-700 past the fanuc-mill's 1524 (X -762..762) and the
+    haas-mill's travel, at the target's line -- not a move whose start is not known."""
+    text = F14.format(jump=jump)
+    line = 9 + jump.count("\n")
+    prof = load_profile(profile)
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    travel = [f for f in found if f.rule == "TG601"]
+    assert [(f.line, f.column) for f in travel] == [(line, 12)], travel
+    assert "start not known" not in travel[0].message
+    if profile == "fanuc-mill":
+        assert travel[0].message.startswith("X spans 1550 (from -700 to 850)"), travel[0].message
+
+
+def test_a_numbered_block_before_the_target_gives_the_passage_up():
+    """`N5 G0 X10.` between may be named by another jump: the blocks are judged as before,
+    the X10. run (from -700 to 860)."""
+    text = F14.format(jump="GOTO10").replace("\nG0 X10.\n", "\nN5 G0 X10.\n")
+    prof = load_profile("fanuc-mill")
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    travel = [f for f in found if f.rule == "TG601"]
+    assert [f.line for f in travel] == [9]
+    assert travel[0].message.startswith("X spans 1560 (from -700 to 860)"), travel[0].message

@@ -2571,11 +2571,11 @@ CONFLICT = ("%\nO1000\nN1 G21 G17 G90 G54\nN2 T1 M06\nN3 S1000 M03 G00 Z150.\n"
 
 
 @pytest.mark.parametrize("block, first, second", [
-    ("G49 G43.4 H1", "G43.4", "G49"),
-    ("G43 G49 H1", "G49", "G43"),
-    ("G43.4 G43 H1", "G43", "G43.4"),
-    ("G00 G01 G43 H1", "G01", "G00"),
-    ("G43 H1 M08 M09", "M09", "M08"),
+    ("G49 G43.4 H1", "G49", "G43.4"),
+    ("G43 G49 H1", "G43", "G49"),
+    ("G43.4 G43 H1", "G43.4", "G43"),
+    ("G00 G01 G43 H1", "G00", "G01"),
+    ("G43 H1 M08 M09", "M08", "M09"),
 ])
 def test_no_restart_after_a_block_with_two_codes_of_one_modal_group(block, first, second):
     """fix28's doubt: `G49 G43.4 H1` (or `G43 G49 H1`) was planned by the restart as its first
@@ -2584,6 +2584,7 @@ def test_no_restart_after_a_block_with_two_codes_of_one_modal_group(block, first
     group on a FANUC are TG308, a warning (no source shows an alarm), and refused alike: which
     one the machine takes is still not known."""
     rule = "TG308" if first.startswith("M") else "TG304"
+    # (the two codes in the block's order: review 51, F19)
     text = CONFLICT.format(block=block)
     said = refusal(text, 9)
     assert said.startswith(

@@ -251,10 +251,13 @@ pub struct ConvertConfig {
     /// for a mill or LinuxCNC (G94), and the other way. An F word with no feed mode code both
     /// read alike written before it is refused ([`Converter::reset_feed_mode`]).
     pub reset_feed: Option<[i64; 2]>,
-    /// The source's control skips the text after the first `%` (a FANUC), the target's reader
-    /// reads it (Haas, Okuma, ISO 6983-1 as the identification, LinuxCNC not at all): a leader
-    /// line whose text the target does not take is refused ([`percent_words`]).
+    /// The target's reader reads the text after the first `%` (Haas, Okuma, ISO 6983-1 as the
+    /// identification, LinuxCNC not at all; a FANUC skips it): a leader line whose text the
+    /// target does not take, or may not, is refused ([`percent_words`]), whatever the source
+    /// did with it.
     pub percent_words_read: bool,
+    /// The source's control skips that text (a FANUC): said in the refusal.
+    pub leader_skipped: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -380,6 +383,7 @@ impl ConvertConfig {
             x_lathe_fanuc: false,
             reset_feed: None,
             percent_words_read: false,
+            leader_skipped: false,
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,
@@ -466,10 +470,11 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
     Ok(())
 }
 
-/// The leader `%` line (the file's first, before any block) of a source whose control skips
-/// the text after it (a FANUC: `dialect::skips_leader`, TG129 of its check), for a target
-/// whose reader takes that text: `%O0003(TITLE)`, whose O number the FANUC loses, would be
-/// read as words before the first end of block. What counts is what the target reads there:
+/// The leader `%` line (the file's first, before any block), for a target whose reader takes
+/// the text after it: `%O0003(TITLE)`, whose O number a FANUC source loses (it skips the
+/// text: `dialect::skips_leader`, TG129 of its check), would be read as words before the first
+/// end of block; a Haas's or an Okuma's own such leader is refused alike for those targets
+/// (review 51, F16: no source says what their control does with it). What counts is what the target reads there:
 /// LinuxCNC no text at all (rs274: "Bad character '%' used", TG412 of its check: `%(TITLE)`,
 /// `%;` too), a Haas, an Okuma or an ISO 6983-1 reader an identification, which may not begin
 /// like a word (TG111) nor hold letters outside parentheses (`%TITLE`: TG112;
@@ -479,7 +484,7 @@ fn colon_in_comment(b: &BlockIn<'_>) -> Result<(), ConvertError> {
 /// `%(TITLE)` and `%:0003` are its identification. tapegate does not move the text to a line of its own (the source never
 /// ran it), so the line is refused at its first character after the `%`. The closing `%` is
 /// the end of the program on every target: text after it is read by none.
-fn percent_words(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
+fn percent_words(b: &BlockIn<'_>, target: Family, skipped: bool) -> Result<(), ConvertError> {
     let Some(percent) = b.text.iter().position(|&c| c == b'%') else {
         return Ok(());
     };
@@ -515,11 +520,16 @@ fn percent_words(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
             }
         }
     };
+    let source = if skipped {
+        " which the source control skips (FANUC B-63524EN/01, 8, memory card file format; its \
+         check: TG129) and"
+    } else {
+        ""
+    };
     Err(ConvertError {
         message: format!(
-            "{:?}: text after the first '%', which the source control skips (FANUC B-63524EN/01, \
-             8, memory card file format; its check: TG129) and {how}: write the '%' on a line \
-             of its own, the program number (if it is to be read) on the next",
+            "{:?}: text after the first '%',{source} {how}: write the '%' on a line of its own, \
+             the program number (if it is to be read) on the next",
             String::from_utf8_lossy(bytes.trim_ascii_end())
         ),
         clause: "4",
@@ -2622,7 +2632,7 @@ impl Converter {
         if b.percent {
             // (only the leader: the closing `%` ends the program on every target)
             if self.c.percent_words_read && !self.leader_passed {
-                percent_words(b, self.c.target_family)?;
+                percent_words(b, self.c.target_family, self.c.leader_skipped)?;
             }
             self.leader_passed = true;
             return Ok(None);

@@ -717,6 +717,13 @@ pub struct ReadingEnd {
     closed: Option<usize>,
     /// The first line not read that holds more than blanks and comments, once.
     first_unread: Option<Unread>,
+    /// After the end, the first line that holds program inside an `o` block other than a
+    /// definition (`o1 if` ... `o1 endif`): read here, as the block is, though rs274 never
+    /// reads it -- the line TG117 names, where it comes before the first passed over
+    /// (review 51, F19).
+    first_in_block: Option<usize>,
+    /// The outermost `o` block open is a definition (`o<s> sub`): a call reads its body.
+    open_sub: bool,
     noted: bool,
     /// The first line (outside any `o` block, before the end) with an M word whose value
     /// the reader does not know (`M#<two>` without the parameter's value): an M2 or M30
@@ -781,7 +788,13 @@ impl ReadingEnd {
         let Some(end) = self.ended else {
             return false;
         };
-        if !self.open.is_empty() || o_word_line(text) || first_non_blank(text) == Some(b'%') {
+        if o_word_line(text) || first_non_blank(text) == Some(b'%') {
+            return false;
+        }
+        if !self.open.is_empty() {
+            if !self.open_sub && self.first_in_block.is_none() && holds_program(text) {
+                self.first_in_block = Some(line);
+            }
             return false;
         }
         self.unread(line, text, end, false);
@@ -810,6 +823,10 @@ impl ReadingEnd {
 
     fn unread(&mut self, line: usize, text: &[u8], end: usize, percent: bool) {
         if self.first_unread.is_none() && !self.noted && holds_program(text) {
+            let line = match self.first_in_block {
+                Some(first) if !percent => first,
+                _ => line,
+            };
             self.first_unread = Some(Unread { line, end, percent });
         }
     }
@@ -956,10 +973,14 @@ impl ReadingEnd {
             }
         };
         match keyword.as_slice() {
-            b"sub" | b"if" | b"do" | b"repeat" => self.open.push(label),
             // `o1 while [..]` closes the `o1 do` it ends, else opens a loop
             b"while" if self.open.contains(&label) => closes(&mut self.open),
-            b"while" => self.open.push(label),
+            b"sub" | b"if" | b"do" | b"repeat" | b"while" => {
+                if self.open.is_empty() {
+                    self.open_sub = keyword == b"sub";
+                }
+                self.open.push(label);
+            }
             b"endsub" | b"endif" | b"endwhile" | b"endrepeat" => closes(&mut self.open),
             _ => {}
         }

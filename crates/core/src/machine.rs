@@ -321,10 +321,12 @@ impl Machine {
             // too: 14.4)
             reset_feed: (reset_feed(&source.modal) != reset_feed(&out.modal))
                 .then(|| [reset_feed(&source.modal), reset_feed(&out.modal)]),
-            // (SINUMERIK and HEIDENHAIN read the % line as the program's name)
-            percent_words_read: crate::dialect::skips_leader(source.family, source.haas)
-                && !crate::dialect::skips_leader(out.family, out.haas)
+            // (SINUMERIK and HEIDENHAIN read the % line as the program's name; every other
+            // target but a FANUC reads the text, whatever the source did with it: review 51,
+            // F16, a Haas source's `% O1000 (TEXT)` for a Haas)
+            percent_words_read: !crate::dialect::skips_leader(out.family, out.haas)
                 && !matches!(out.family, Family::Sinumerik | Family::Heidenhain),
+            leader_skipped: crate::dialect::skips_leader(source.family, source.haas),
             target_arc_radius: if out.modal.arc_radius == b'R' && out.pqr[2] != Role::Length {
                 0
             } else {

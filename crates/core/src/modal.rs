@@ -991,6 +991,15 @@ impl ModalMachine {
         self.drift = [Drift::default(); 9];
     }
 
+    /// The position `left` holds, the feed, the speed and the modes staying (a jump surely
+    /// taken: its target starts where the jump's block left the axes, check/passed.rs).
+    pub fn position_of(&mut self, left: &ModalMachine) {
+        let axes = FORGOTTEN & !(bit(b'F') | bit(b'S'));
+        self.state.position = left.state.position;
+        self.state.unknown = self.state.unknown & !axes | left.state.unknown & axes;
+        self.drift = left.drift;
+    }
+
     /// The position of the axis `letter` alone is no longer known (a SINUMERIK's positioning
     /// axis, `POSA[X]=100`, moves on its own): the other axes, the feed and the speed stay.
     pub fn forget_axis(&mut self, letter: u8) {

@@ -298,10 +298,11 @@ impl Checker {
             Some((other, _)) if per_word && distance(other) && distance(code) => {}
             Some((other, j)) if other != code => {
                 let group = group_of_code(&self.config, code).to_string();
+                // (in the block's order: `M03 M05` names M03 first)
                 let message = format!(
                     "{} and {} are both in modal group {group}",
-                    words[i].token(),
                     words[j].token(),
+                    words[i].token(),
                 );
                 self.conflict_at
                     .get_or_insert_with(|| (line, message.clone()));
@@ -593,7 +594,7 @@ mod tests {
         assert!(
             message[0]
                 .message
-                .starts_with("M1=4 and M1=3 are both in modal group"),
+                .starts_with("M1=3 and M1=4 are both in modal group"),
             "{}",
             message[0].message
         );
@@ -1002,7 +1003,7 @@ mod tests {
             assert!(
                 found[0]
                     .message
-                    .starts_with("M05 and M03 are both in modal group"),
+                    .starts_with("M03 and M05 are both in modal group"),
                 "{}",
                 found[0].message
             );
@@ -1095,7 +1096,7 @@ mod tests {
         assert_eq!(conflict("G12.1 G40"), []);
         let found = findings(config, &program("G54.1 P1 G40"), Rule::ModalGroupConflict);
         assert!(
-            found[0].message.contains("G40 and G54.1") && found[0].message.contains("group d"),
+            found[0].message.contains("G54.1 and G40") && found[0].message.contains("group d"),
             "{}",
             found[0].message
         );

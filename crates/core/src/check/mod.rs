@@ -1241,6 +1241,10 @@ pub struct Checker {
     reports: u64,
     /// A passage over the blocks a jump surely taken passes over ([`passed`]).
     passed: Option<Box<passed::Passed>>,
+    /// What a Custom Macro B jump's block left before the checker forgot it (it does not
+    /// follow the jump): the state its target starts from where the jump is surely taken
+    /// ([`passed`]); taken at the block's end.
+    jump_left: Option<Box<passed::Left>>,
 }
 
 impl Checker {
@@ -1290,6 +1294,7 @@ impl Checker {
             arc_cause_said: false,
             limits_hint_said: false,
             passed: None,
+            jump_left: None,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),

@@ -760,10 +760,13 @@ impl Checker {
         if none_given && !radius_word && !kept_centre {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
-            let message = format!(
-                "arc without {} {} (or {})",
-                names[0], names[1], letter as char
-            );
+            // (a SINUMERIK's R word is a parameter, never a radius: its arc takes CR= or
+            // AR=, Programming Manual Fundamentals, "Circular interpolation")
+            let radius = match self.config.family {
+                Family::Sinumerik => "CR=/AR=".to_string(),
+                _ => char::from(letter).to_string(),
+            };
+            let message = format!("arc without {} {} (or {radius})", names[0], names[1]);
             self.report(Rule::ArcCentreMissing, message, line, words[0].column);
             return;
         }
@@ -1391,6 +1394,27 @@ mod tests {
             assert_eq!(
                 fired(of_family(family), &text, Rule::ArcCentreMissing),
                 [],
+                "{block}"
+            );
+        }
+    }
+
+    /// Review 51, F19: the radius TG404 names is the family's -- a SINUMERIK's R word is a
+    /// parameter (`R1=2`), its arc's radius CR= (or its opening angle AR=); elsewhere R.
+    #[test]
+    fn an_arc_without_its_centre_names_the_family_radius() {
+        for (family, block, radius) in [
+            (Family::Sinumerik, "G2 X10 Y0 R5", "(or CR=/AR=)"),
+            (Family::Sinumerik, "G2 X10 Y0 R1=2", "(or CR=/AR=)"),
+            (Family::MacroB, "G2 X10. Y0", "(or R)"),
+        ] {
+            let text = program(&format!("G17 G90 G0 X0 Y0\nG1 X0 Y0 F100\n{block}"));
+            let found = findings(of_family(family), &text, Rule::ArcCentreMissing);
+            assert_eq!(found.len(), 1, "{block}");
+            assert_eq!((found[0].line, found[0].column), (4, 1), "{block}");
+            assert_eq!(
+                found[0].message,
+                format!("arc without I J {radius}"),
                 "{block}"
             );
         }

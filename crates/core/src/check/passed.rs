@@ -57,6 +57,13 @@ pub(super) struct Passed {
     from: usize,
 }
 
+/// What a jump's block left before the checker forgot it, not following the jump
+/// ([`Checker::left`]).
+#[derive(Clone)]
+pub(super) struct Left {
+    machine: crate::modal::ModalMachine,
+}
+
 /// Whether a finding of `rule` is of running its block (dropped for a block passed over),
 /// not of reading its text.
 fn of_running(rule: Rule) -> bool {
@@ -74,6 +81,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn passage_started(&mut self, b: &BlockView<'_>) {
+        let left = self.jump_left.take();
         if self.config.family != Family::MacroB
             || self.passed.is_some()
             || self.run_target != 0
@@ -128,7 +136,14 @@ impl Checker {
         }
         let mut goto_targets = self.goto_targets.clone();
         goto_targets.remove(&target);
-        let run = self.run_of();
+        let mut run = self.run_of();
+        // (the position the jump's block left: the checker forgot it, as it does at a jump
+        // it does not follow, and the blocks passed over never move the machine; review 51,
+        // F14)
+        if let Some(left) = left {
+            run.machine.position_of(&left.machine);
+        }
+        self.passage_noted(b.line, target);
         self.passed = Some(Box::new(Passed {
             line: b.line,
             target,
@@ -139,6 +154,38 @@ impl Checker {
             goto_targets,
             from: self.found.len(),
         }));
+    }
+
+    /// What a jump's block leaves as it ends, before the checker forgets it (TG140):
+    /// where the jump is surely taken, the position its target starts from.
+    pub(super) fn left(&self) -> Left {
+        Left {
+            machine: self.machine.clone(),
+        }
+    }
+
+    /// The note (TG140) the jump on line `line` made, said of a jump the checker does not
+    /// follow, says what it does with one surely taken (review 51, F19): true whether the
+    /// target comes or the passage is given up.
+    fn passage_noted(&mut self, line: usize, target: u64) {
+        let Some(note) = self
+            .found
+            .iter_mut()
+            .rev()
+            .find(|f| f.line == line && f.rule == Rule::NotFollowed)
+        else {
+            return;
+        };
+        let Some(what) = note.message.split(": the checker").next() else {
+            return;
+        };
+        note.message = format!(
+            "{what}: the jump is surely taken: where its target N{target} is the next numbered \
+             block, the blocks up to it are read but not run, and the target starts from the \
+             position, modes and parameters the jump left; otherwise the checker reads on in \
+             file order, the position, feed and speed taken as unknown until the program sets \
+             them"
+        );
     }
 
     /// Whether the unreached part after line `left` is a passage after a jump with a
@@ -340,6 +387,64 @@ mod tests {
         // a G91 passed over: X100. twice is X100, not X200 (no TG601 from X-450)
         let body = "G0 X-450. Y0\nGOTO10\nG91\nN10 G0 X100.\nX100.";
         assert_eq!(travel(body), []);
+    }
+
+    /// Review 51, F14: the target starts from the position the jump's block left (the blocks
+    /// passed over never run): an increment there is followed, and a move out of the travel
+    /// found, after a GOTO or an IF whose condition holds. X0 + 850 from X-700 is a 1350 span
+    /// (travel X -500..500), at the target's X (column 12).
+    #[test]
+    fn an_increment_at_the_target_starts_where_the_jump_left() {
+        for jump in ["GOTO10", "#1=1\nIF[#1EQ1]GOTO10"] {
+            let body = format!("G0 X-700. Y0\nG0 X0\n{jump}\nG0 X10.\nN10 G91 G0 X650.\nG90");
+            let line = 5 + jump.lines().count();
+            assert_eq!(travel(&body), [(line, 12)], "{jump}");
+            let found =
+                super::super::testing::findings(fanuc(), &program(&body), Rule::TravelExceeded);
+            assert!(
+                found[0]
+                    .message
+                    .starts_with("X spans 1350 (from -700 to 650)"),
+                "{}",
+                found[0].message
+            );
+        }
+        // a numbered block between: the passage is given up, the X10. run (a 1360 span)
+        let body = "G0 X-700. Y0\nG0 X0\nGOTO10\nN5 G0 X10.\nN10 G91 G0 X650.\nG90";
+        let found = super::super::testing::findings(fanuc(), &program(body), Rule::TravelExceeded);
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0]
+                .message
+                .starts_with("X spans 1360 (from -700 to 660)"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    /// Review 51, F19: the note at a jump surely taken says what the checker does with it,
+    /// not that it follows no jump.
+    #[test]
+    fn the_note_at_a_jump_surely_taken_says_it_is_followed() {
+        let body = "G0 X0 Y0\nGOTO10\nG0 X10.\nN10 G0 X1.";
+        let found = super::super::testing::findings(fanuc(), &program(body), Rule::NotFollowed);
+        assert_eq!(found.len(), 1);
+        assert_eq!((found[0].line, found[0].column), (3, 1));
+        assert!(
+            found[0]
+                .message
+                .starts_with("GOTO10 (flow): the jump is surely taken: where its target N10"),
+            "{}",
+            found[0].message
+        );
+        // a jump not surely taken keeps the note of a jump not followed
+        let body = "G0 X0 Y0\nIF[#5EQ1]GOTO10\nG0 X10.\nN10 G0 X1.";
+        let found = super::super::testing::findings(fanuc(), &program(body), Rule::NotFollowed);
+        assert!(
+            !found[0].message.contains("surely taken"),
+            "{}",
+            found[0].message
+        );
     }
 
     /// Reading the blocks passed over: a line the checker cannot read stays an error after

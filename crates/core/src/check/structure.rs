@@ -4749,6 +4749,23 @@ mod tests {
         assert_eq!(fired(linuxcnc(), closed, Rule::Unreadable), []);
         // comments and blank lines after the end are nothing to say
         assert_eq!(fired(linuxcnc(), "M2\n\n(end)\n", Rule::NotRead), []);
+        // review 51, F19: a line inside an `o1 if` block after the end is the first never
+        // read, not the line after the block; a definition's body is read where it is called
+        for (text, line) in [
+            ("G0 X0\nM2\no1 if [1]\nG0 X1\no1 endif\nM2\n", 4),
+            ("G0 X0\nM2\no<s> sub\nG0 X1\no<s> endsub\nG0 X2\n", 6),
+        ] {
+            let found = findings(linuxcnc(), text, Rule::NotRead);
+            assert_eq!(found.len(), 1, "{text}");
+            assert_eq!((found[0].line, found[0].column), (line, 1), "{text}");
+            assert!(
+                found[0]
+                    .message
+                    .starts_with(&format!("line {line} and the lines after it")),
+                "{}",
+                found[0].message
+            );
+        }
         // an M2 in a branch may not run: what follows is read
         let branch = "o1 if [#1 GT 0]\nM2\no1 endif\nG0 X\nM2\n";
         assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 4)]);

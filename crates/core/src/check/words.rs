@@ -93,7 +93,10 @@ impl Checker {
         };
         // (a jump surely taken forward passes over the blocks to its target, asked after the
         // block: passed.rs)
-        self.after_block |= macro_b && statement.is_some();
+        if macro_b && statement.is_some() {
+            self.after_block = true;
+            self.jump_left = Some(Box::new(self.left()));
+        }
         if !self.unfollowed_noted {
             self.unfollowed_noted = true;
             // (review 48 F3: a forward conditional jump's run is read at its target)
