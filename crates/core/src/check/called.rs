@@ -1564,6 +1564,37 @@ mod tests {
         }
     }
 
+    /// rfix51's remainder: rs274 reads a definition without running it (interp_o_word.cc
+    /// skips from its sub to its endsub), so after its endsub the main program's parameters
+    /// are the ones known at its sub, the body's assignments not made: a condition on them
+    /// is worked out as before it (each run to its end by `rs274 -g`). A call runs the body,
+    /// which may set them: after it the condition is not known, and its lines are refused as
+    /// lines that may run.
+    #[test]
+    fn linuxcnc_keeps_the_parameters_across_a_definition_not_a_call() {
+        let refused = |text: &str| {
+            fired(lcnc(), text, Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| (f.0, f.1))
+                .collect::<Vec<_>>()
+        };
+        let head = "G21 G90\nG0 X0\n#<a> = 1\n#1 = 0\n#<_g> = 0\n";
+        let sub = "o<s> sub\n#<a> = 5\n#1 = 5\n#<_g> = 5\no<s> endsub\n";
+        let conditions = [
+            "o101 if [[#<a>+1] LE 1.00005]\nG91\nG53 G0 X0\no101 endif\nM2\n",
+            "o101 if [#1 GT 0]\nM72\no101 endif\nM2\n",
+            "o101 if [#<_g> GT 0]\nG91\nG53 G0 Z0\no101 endif\nM2\n",
+        ];
+        for condition in conditions {
+            let text = format!("{head}{sub}{condition}");
+            assert_eq!(refused(&text), [], "{text}");
+        }
+        // after a call of the body: the line inside the condition may run (rs274 runs it,
+        // the body set #<_g> to 5: "Cannot use g53 incremental" at line 14)
+        let called = format!("{head}{sub}o<s> call\n{}", conditions[2]);
+        assert_eq!(refused(&called), [(14, 1)]);
+    }
+
     /// Review 51, F2: a body's lines after its unconditional return never run, an o-word
     /// condition's reads among them too (`rs274 -g` runs `o<s> return` / `o1 if [#<b> GT 0]`
     /// to the end); F11: an o-word after a comment or a word in a block known to run is

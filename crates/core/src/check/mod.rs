@@ -807,6 +807,10 @@ pub struct Checker {
     /// reads its body without running it, so an endsub's computed label (`o#1 endsub`) has
     /// their values where rs274 reads it.
     linuxcnc_sub_params: HashMap<Vec<u8>, Dec>,
+    /// LinuxCNC: the block (`stats.blocks`) whose endsub closed the main program's
+    /// definition: the parameters it forgets are the ones known at its sub
+    /// ([`Checker::params_forgotten`]).
+    linuxcnc_sub_closed: Option<usize>,
     /// Custom Macro B: the sequence numbers a `GOTO` already read names (a jump forward may
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
     /// (Each with the line of the first jump naming it and whether another names it too;
@@ -1300,6 +1304,7 @@ impl Checker {
             elements_noted: HashSet::new(),
             params: HashMap::new(),
             linuxcnc_sub_params: HashMap::new(),
+            linuxcnc_sub_closed: None,
             goto_targets: HashMap::new(),
             goto_computed: false,
             goto_computed_line: 0,

@@ -1201,9 +1201,17 @@ impl Checker {
     }
 
     /// A jump or call that forgets every parameter: the values of an arrival are no longer
-    /// theirs either.
+    /// theirs either. LinuxCNC's endsub that closes a definition of the main program forgets
+    /// the body's values only: rs274 reads a definition without running it (interp_o_word.cc
+    /// skips from its sub to its endsub), so the main program's parameters after it are the
+    /// ones known at its sub (`#<a> = 1` / `o<s> sub` ... `o<s> endsub` / `o1 if [#<a> GT 2]`
+    /// is known false). A call runs the body, which may set them: forgotten there.
     pub(super) fn params_forgotten(&mut self) {
-        self.params.clear();
+        if self.linuxcnc_sub_closed == Some(self.stats.blocks) {
+            self.params = std::mem::take(&mut self.linuxcnc_sub_params);
+        } else {
+            self.params.clear();
+        }
         self.arrival = None;
     }
 

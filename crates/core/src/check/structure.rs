@@ -3050,6 +3050,7 @@ impl Checker {
             }
             (Some((false, name)), Some((_, _, open))) if self.definition_closes(name, open) => {
                 self.open_definition = None;
+                self.linuxcnc_sub_closed = Some(self.stats.blocks);
             }
             _ => {}
         }
