@@ -1386,6 +1386,29 @@ def test_a_linuxcnc_end_block_s_own_motion_mode_is_in_force(ending):
             if f.rule == "TG411"] == [2]
 
 
+@pytest.mark.parametrize(("source", "target", "block", "word"), [
+    ("fanuc-mill", "haas-mill", "G91 G83 X20. Y0 Z-15. R-8. Q3. K4 F100.", "K4"),
+    ("haas-mill", "fanuc-mill", "G83 X1. Y0 Z-0.5 R0.1 Q0.1 K0.05 F10.", "K0.05"),
+    ("haas-mill", "fanuc-mill", "G81 X1. Y0 Z-0.5 R0.1 F10. L3", "L3"),
+    ("linuxcnc", "fanuc-mill", "G91 G81 X1 Y0 Z-0.5 R0.1 F10 L3", "L3"),
+])
+def test_a_cycle_s_repeat_count_is_refused_between_controls_that_write_it_apart(
+        tmp_path, source, target, block, word):
+    """Review 52, F6: a FANUC counts a canned cycle's repeats in K, a Haas and LinuxCNC in L,
+    and a Haas's G73/G83 K is the least peck depth: carried as written, the target drills
+    another number of holes (converted "ok" before). Refused at the word; between two
+    controls of one reading the block converts."""
+    head = "G21 G90 G17\nG0 X0 Y0 Z10.\n" if source == "linuxcnc" else "%\nO1000\nG21 G90 G17\nG0 X0 Y0 Z10.\n"
+    tail = "G80\nM2\n" if source == "linuxcnc" else "G80\nM30\n%\n"
+    path = tmp_path / ("p.ngc" if source == "linuxcnc" else "p.nc")
+    path.write_text(head + block + "\n" + tail)
+    out = run("convert", str(path), "--from", source, "--to", target, "-o", "-")
+    assert out.exit_code == 1
+    assert f"{word}: " in out.output and "canned cycle's repeats" in out.output
+    same = run("convert", str(path), "--from", source, "--to", source, "-o", "-")
+    assert same.exit_code == 0, same.output
+
+
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():
     """M99 P returns to the caller's block: a subprogram's is another program's (no TG118);
     a main program's M99 P loops in its own (FANUC PS0060 where it is missing)."""

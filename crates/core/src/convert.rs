@@ -3239,6 +3239,7 @@ impl Converter {
         self.same_x_reading(b)?;
         self.reset_feed_mode(b, &gs)?;
         self.m98_long_p(b, &ms)?;
+        self.cycle_repeat_words(b, &gs)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -4626,6 +4627,56 @@ impl Converter {
             ),
             clause: "meaning",
             column: crate::text::column(b.text, p.start),
+            line: None,
+        })
+    }
+
+    /// A mill's canned cycle block with a K or an L between controls that read them apart: a
+    /// FANUC counts the cycle's repeats in K (0i-MF operator's manual, "Canned cycle"), a Haas
+    /// and LinuxCNC in L (Haas 96-8000, G81-G89; LinuxCNC G-code reference, "Canned cycles"),
+    /// and a Haas's G73/G83 K is the least peck depth, a length. Carried as written, a FANUC's
+    /// `G83 ... K4` drills one hole on a Haas, a Haas's `L3` is no FANUC cycle word and its
+    /// `K0.05` a FANUC repeat count (review 52, F6: converted "ok"). tapegate does not move the
+    /// count from one letter to the other: refused at the word, the block's cycle code or the
+    /// one in force (a FANUC's or Haas's modal cycle; LinuxCNC's in its own block only, whose
+    /// later blocks of hole positions are not followed here).
+    fn cycle_repeat_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        let Some((from, to)) = self.c.m98_repeats else {
+            return Ok(());
+        };
+        if from == to || self.c.lathe {
+            return Ok(());
+        }
+        let cycle = |g: i64| matches!(g, 73 | 74 | 76 | 81..=89);
+        if !(self.cycle_code.is_some_and(cycle) || gs.iter().copied().any(cycle)) {
+            return Ok(());
+        }
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'K' | b'L'))
+        else {
+            return Ok(());
+        };
+        let reading = |fanuc: bool| {
+            if fanuc {
+                "a FANUC counts a canned cycle's repeats in K"
+            } else {
+                "a Haas and LinuxCNC count a canned cycle's repeats in L (a Haas's G73/G83 K is \
+                 the least peck depth)"
+            }
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: {} on the source, and {} on the target: carried as written the cycle \
+                 drills another number of holes or pecks to another depth; tapegate does not \
+                 move the count between letters: write it in the target's",
+                text(w.token),
+                reading(from),
+                reading(to),
+            ),
+            clause: "cycle",
+            column: crate::text::column(b.text, w.start),
             line: None,
         })
     }
