@@ -1398,7 +1398,9 @@ def test_a_cycle_s_repeat_count_is_refused_between_controls_that_write_it_apart(
     and a Haas's G73/G83 K is the least peck depth: carried as written, the target drills
     another number of holes (converted "ok" before). Refused at the word; between two
     controls of one reading the block converts."""
-    head = "G21 G90 G17\nG0 X0 Y0 Z10.\n" if source == "linuxcnc" else "%\nO1000\nG21 G90 G17\nG0 X0 Y0 Z10.\n"
+    head = "G21 G90 G17\nG0 X0 Y0 Z10.\n"
+    if source != "linuxcnc":
+        head = "%\nO1000\n" + head
     tail = "G80\nM2\n" if source == "linuxcnc" else "G80\nM30\n%\n"
     path = tmp_path / ("p.ngc" if source == "linuxcnc" else "p.nc")
     path.write_text(head + block + "\n" + tail)
