@@ -1542,6 +1542,17 @@ mod tests {
             "o1 do\nM2\no1 while [0]\nG0 X#<nope>\nM2\n",
             "o1 if [1]\nM30\no1 else\nG0 X1\no1 endif\nG0 X#<nope>\nM2\n",
             "o1 if [1]\nM2\no1 endif\nG91 G53 G0 X0\nM2\n",
+            // review 52, F5: a dead block nested in another, whether that one runs or not
+            "o2 if [1]\no1 if [0]\nM72\no1 endif\no2 endif\nM2\n",
+            "o2 if [#<_x> GT 0]\no1 if [0]\nM72\no1 endif\no2 endif\nM2\n",
+            "o2 if [#<_x> GT 0]\no1 while [0]\nM72\no1 endwhile\no2 endif\nM2\n",
+            "o2 repeat [2]\no1 if [0]\nM72\no1 endif\no2 endrepeat\nM2\n",
+            "#<k>=0\no3 while [#<k> LT 1]\n#<k>=[#<k>+1]\no1 repeat [0.5]\nM72\no1 endrepeat\no3 endwhile\nM2\n",
+            "o3 if [1]\no2 if [1]\no1 if [0]\nG91\nG53 G0 Z0\no1 endif\no2 endif\no3 endif\nM2\n",
+            // the lines after an unconditional break or continue, to the loop's closing line
+            "o3 do\no3 break\nM72\no3 while [0]\nM2\n",
+            "#<k>=0\no3 while [#<k> LT 1]\n#<k>=[#<k>+1]\no3 continue\nM72\no3 endwhile\nM2\n",
+            "o2 if [1]\no3 do\no3 break\nG999\nG2 X1 F100\nM72\no3 while [1]\no2 endif\nM2\n",
         ];
         for program in dead {
             let text = format!("{head}{program}");
@@ -1557,10 +1568,46 @@ mod tests {
             ),
             ("o1 if [#<_x> GT 1]\nG53 G2 Z0\no1 endif\nM2\n", 4),
             ("o1 if [#<_x> GT 1]\nM2\no1 endif\nG91 G53 G0 X0\nM2\n", 6),
+            // nested: a condition on a parameter is not taken as known, nor the else of a
+            // nested dead if (it runs where the block around it does)
+            (
+                "o2 if [1]\no1 if [#<_x> GT 1]\nM72\no1 endif\no2 endif\nM2\n",
+                5,
+            ),
+            (
+                "o2 if [1]\no1 if [0]\nG0 X1\no1 else\nM72\no1 endif\no2 endif\nM2\n",
+                7,
+            ),
+            // a break inside an if of the body: the lines after that if run where it did not
+            (
+                "o3 do\no2 if [#<_x> GT 1]\no3 break\no2 endif\nM72\no3 while [0]\nM2\n",
+                7,
+            ),
         ];
         for (program, line) in runs {
             let text = format!("{head}{program}");
             assert_eq!(refused(&text), [line], "{text}");
+        }
+        // review 52, F5's addendum: no other rule judges a nested dead block's lines either
+        // (an unknown G code, an arc without its centre; rs274 runs both programs)
+        for (body, rule) in [
+            ("G999", Rule::CodeAlarms),
+            ("G2 X1 F100", Rule::ArcCentreMissing),
+        ] {
+            for outer in ["o2 if [1]", "o2 if [#<_x> GT 1]", "o2 repeat [2]"] {
+                let close = if outer.contains("repeat") {
+                    "o2 endrepeat"
+                } else {
+                    "o2 endif"
+                };
+                let text = format!("{head}{outer}\no1 if [0]\n{body}\no1 endif\n{close}\nM2\n");
+                assert_eq!(fired(lcnc(), &text, rule), [], "{text}");
+                // the arc where it may run: judged
+                let live = text.replace("o1 if [0]", "o1 if [#<_x> GT 1]");
+                if rule == Rule::ArcCentreMissing {
+                    assert_eq!(fired(lcnc(), &live, rule).len(), 1, "{live}");
+                }
+            }
         }
     }
 

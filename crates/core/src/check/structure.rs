@@ -877,6 +877,12 @@ impl Checker {
                         }
                     } else if other_branch && !b.skip && self.linuxcnc_skipping.is_none() {
                         self.linuxcnc_skipping = Some((label, b.line, true));
+                    } else if !top
+                        && !b.skip
+                        && (self.linuxcnc_nested_dead(text, b.line)
+                            || self.linuxcnc_loop_left(text, &label))
+                    {
+                        self.linuxcnc_skipping = Some((label, b.line, false));
                     }
                 }
                 (Kind::Flow, false) => {
@@ -2209,6 +2215,49 @@ impl Checker {
                 defs.sure = false;
             }
         }
+    }
+
+    /// LinuxCNC: whether the line in hand opens, inside another block of the main program,
+    /// an `if`, `while` or `repeat` whose condition or count reads no parameter and is known
+    /// not to run (`o1 if [0]`, `o1 repeat [0.5]`). Whether the blocks around it run or not,
+    /// rs274 runs none of its lines: it skips them to the next o-word line of its label
+    /// (interp_o_word.cc; `rs274 -g`; review 52, F5). A condition reading a parameter is left
+    /// out: inside a loop its value may differ turn to turn.
+    fn linuxcnc_nested_dead(&self, text: &[u8], line: usize) -> bool {
+        self.linuxcnc_skipping.is_none()
+            && !self.main_ended()
+            && self.linuxcnc_open_at.len() > 1
+            && self.linuxcnc_open_at.last().is_some_and(|e| e.1 == line)
+            && !o_keyword_condition(text).1.contains(&b'#')
+            && self.linuxcnc_body_runs(text) == Some(false)
+    }
+
+    /// LinuxCNC: whether the line in hand is a `break` or `continue` of the loop (`do` or
+    /// `while`) it stands in, that loop the innermost block open: rs274 goes from it to the
+    /// loop's closing line (or its top), and runs no line of the body after it, up to the
+    /// next o-word line of the loop's label (interp_o_word.cc `convert_control_functions`;
+    /// `rs274 -g`; review 52, F5). One inside an `if` of the body is left out: the lines
+    /// after that `if` run where it did not.
+    fn linuxcnc_loop_left(&self, text: &[u8], label: &[u8]) -> bool {
+        if self.linuxcnc_skipping.is_some()
+            || self.main_ended()
+            || !matches!(
+                crate::statement::o_keyword(text).as_deref(),
+                Some(b"break" | b"continue")
+            )
+            || crate::statement::computed_label(label)
+        {
+            return false;
+        }
+        let Some((written, opened, _)) = self.linuxcnc_open_at.last() else {
+            return false;
+        };
+        let bare = bare_label(label);
+        bare_label(written) == bare
+            && self
+                .linuxcnc_o_labels
+                .get(&bare)
+                .is_some_and(|&(kind, at, _)| at == *opened && matches!(kind, b'w' | b'd'))
     }
 
     /// LinuxCNC: whether the lines of the block the main program's o-word `text` opens run
