@@ -32,7 +32,7 @@ import errno
 import os
 import stat
 
-from formats import _core
+from formats import _core, stops
 from formats.errors import OutputError
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
@@ -75,7 +75,10 @@ def exit_on_termination() -> None:
 
 
 def _exit_signalled(signum: int, frame: object) -> None:
+    stops.TAKEN.append(signum)  # (formats.stops.heed_stops: an exit a finalizer swallowed)
     raise SystemExit(128 + signum)
+
+
 
 
 class PendingFile:

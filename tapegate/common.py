@@ -220,12 +220,19 @@ def input_path(name: str) -> str:
 def _spooled(stream: Any, head: bytes = b"") -> str:
     """``head`` and the rest of ``stream`` copied to a temporary file, kept while the command
     runs: its path."""
-    import shutil
     import tempfile
+
+    from formats.stops import heed_stops
 
     spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
     spool.write(head)
-    shutil.copyfileobj(stream, spool)
+    read = getattr(stream, "read1", stream.read)  # (what has come, not a full 64 kB)
+    while True:
+        heed_stops()  # (before the read, which may wait for ever on a writer that never ends)
+        piece = read(1 << 16)
+        if not piece:
+            break
+        spool.write(piece)
     spool.flush()
     _SPOOLED.append(spool)
     return spool.name
@@ -251,8 +258,18 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
     size = 0
     if output == "-":
         sys.stdout.flush()
+        try:
+            fd = sys.stdout.fileno()
+        except (AttributeError, OSError, ValueError):  # (a test's captured stream)
+            fd = -1
+        from formats.stops import heed_stops
+
         for piece in pieces:
-            sys.stdout.buffer.write(piece)
+            heed_stops()  # (before the write, which may wait for ever on a full pipe)
+            if fd < 0:
+                sys.stdout.buffer.write(piece)
+            else:
+                _write_all(fd, piece)
             size += len(piece)
         sys.stdout.buffer.flush()
         return size
@@ -268,6 +285,17 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
             pending.write(piece)
         pending.commit(target, overwrite=True)
         return pending.size
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """``data`` written to ``fd`` straight, past the stream's buffer: a program copied to a
+    pipe whose reader stops reading (a pager, a DNC link) blocks in the write, and a ^C or
+    SIGTERM that lands there must find nothing left in a buffer, which the exit would flush
+    into the same full pipe and wait on for ever (the CI timeout of a `convert -o -` stopped
+    so). A signal's exception leaves the rest unwritten, as the stop asks."""
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view):]
 
 
 def get_profile(name: str | None, file: str | None = None) -> Profile:

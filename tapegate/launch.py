@@ -164,6 +164,9 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
     click. A plain command ends the process once its output is flushed (:func:`leave`); with
     ``clean_exit`` it raises ``SystemExit`` as click's commands do, for a caller that goes on
     (as ``mypy.main``'s argument of that name)."""
+    from formats.stops import note_interrupts
+
+    note_interrupts()  # (a ^C a finalizer swallows is still obeyed: formats.stops)
     found = None if "_TAPEGATE_COMPLETE" in os.environ else plain(sys.argv[1:])
     if found is None:
         from tapegate.cli import main as group
@@ -194,7 +197,7 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
             sys.exit(exc.exit_code)
     except SystemExit as done:
         if not clean_exit:
-            leave(done.code)
+            leave(done.code, stopped=_stopped(done))
         thaw()
         raise
     except BaseException:
@@ -257,7 +260,15 @@ def thaw() -> None:
         _paused = _frozen = False
 
 
-def leave(code: object) -> None:
+def _stopped(done: SystemExit) -> bool:
+    """Whether the exit is a stop the user or the system asked for: ^C (the exit 1 told
+    "Aborted!", raised while the ``KeyboardInterrupt`` was handled) or a signal's exit with
+    128 + its number (SIGTERM, SIGHUP: ``formats.files.exit_on_termination``)."""
+    return (isinstance(done.__context__, KeyboardInterrupt)
+            or isinstance(done.code, int) and done.code > 128)
+
+
+def leave(code: object, stopped: bool = False) -> None:
     """The process ended at once with ``code`` once the command is done, its output flushed:
     the interpreter's finalization -- every module's objects freed one by one, the heap given
     back -- is 14.7M instructions, 3-4 ms of CPU, which a batch's threads cannot share: the
@@ -268,7 +279,9 @@ def leave(code: object) -> None:
     code that is no integer (printed by the exit), a function registered with ``atexit``
     (coverage, a test's probe), a thread not a daemon still running, standard input copied
     to a temporary file (``tapegate.common.readable``, removed by its object's finalizer), or
-    a flush that fails (a closed pipe: told as the exit tells it)."""
+    a flush that fails (a closed pipe: told as the exit tells it). ``stopped`` (^C, SIGTERM:
+    :func:`_stopped`) leaves what waits for a pipe or a socket on stdout unwritten
+    (:func:`_a_pipe`)."""
     import atexit
 
     if not (code is None or isinstance(code, int)) or atexit._ncallbacks():
@@ -282,7 +295,8 @@ def leave(code: object) -> None:
     if common is not None and common._SPOOLED:
         return
     try:
-        sys.stdout.flush()
+        if not (stopped and _a_pipe(sys.stdout)):
+            sys.stdout.flush()
         sys.stderr.flush()
     except BaseException:  # (BrokenPipeError, or another error of the streams)
         return
@@ -290,3 +304,18 @@ def leave(code: object) -> None:
     if files is not None:  # the temporary files a ^C left, which the C library's exit (not
         files.sweep()  # taken here) would remove: formats.files.sweep
     os._exit(code or 0)
+
+
+def _a_pipe(stream: object) -> bool:
+    """Whether ``stream`` writes into a pipe or a socket. A command stopped (^C, SIGTERM)
+    while its output waited on a reader that does not read (a pager, a DNC link, a job
+    runner's pipe) leaves that output unflushed: the flush would wait on the full pipe for
+    ever, the stop not obeyed (a CI job's timeout hanging in its turn). A file or a terminal
+    always takes the rest, so it is written."""
+    import stat
+
+    try:
+        mode = os.fstat(stream.fileno()).st_mode  # type: ignore[attr-defined]
+    except (AttributeError, OSError, ValueError):
+        return False
+    return stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)

@@ -182,6 +182,9 @@ def _signalled(state: _Map, signum: int) -> None:
     waiter taken off a condition's list and its release, and the threads' join then waited
     for ever (1 in 15 interrupted `convert -j 2` batches hung so; review 39, finding 7)."""
     error = KeyboardInterrupt() if signum == _SIGINT else SystemExit(128 + signum)
+    stops = sys.modules.get("formats.stops")
+    if stops is not None:  # (formats.stops.heed_stops: a stop a finalizer swallowed)
+        stops.TAKEN.append(signum)
     if state.safe:
         state.safe = False  # (the code that handles it is not a safe point)
         raise error
@@ -593,9 +596,10 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
                     and _signal.getsignal(hup) is files._exit_signalled):
                 handlers.append((hup, _signal.signal(
                     hup, lambda signum, frame: _signalled(state, signum))))
-            if _signal.getsignal(_signal.SIGINT) is _signal.default_int_handler:
-                # (^C's KeyboardInterrupt; a SIGINT ignored, or handled by the caller, is left
-                # so)
+            if _signal.getsignal(_signal.SIGINT) in (_signal.default_int_handler, getattr(
+                    sys.modules.get("formats.stops"), "interrupted", None)):
+                # (^C's KeyboardInterrupt, the interpreter's or the one that notes it,
+                # formats.stops; a SIGINT ignored, or handled by the caller, is left so)
                 handlers.append((_signal.SIGINT, _signal.signal(
                     _signal.SIGINT, lambda signum, frame: _signalled(state, signum))))
         except ValueError:  # not the main thread (of the main interpreter): no handler

@@ -4,11 +4,16 @@ files it writes), reads its options as click does, and does not import click."""
 
 from __future__ import annotations
 
+import array
+import fcntl
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
+import termios
+import time
 from pathlib import Path
 
 import click
@@ -528,3 +533,46 @@ def test_a_body_that_fails_before_its_files_leaves_the_collector_on(place: Path)
         last = done.stdout.splitlines()[-1].split()
         assert last[0] == "EXIT" and last[1] in ("1", "2"), done.stdout + done.stderr
         assert last[2:] == ["True", "0"], (argv, done.stdout)
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_a_command_stopped_while_its_reader_does_not_read_ends(place: Path, signum: int) -> None:
+    """^C or SIGTERM to a check whose report waits on a pipe nobody reads (a pager left open,
+    a job runner's pipe): the command ends with ^C's 1 or SIGTERM's 143, the rest of the
+    report unwritten (tapegate.launch.leave, ``stopped``). Before, the exit's flush waited on
+    the full pipe for ever and the stop was not obeyed (CI: a `convert -o -` stopped so hung
+    past its timeout)."""
+    (place / "big").mkdir()
+    for n in range(40):
+        (place / "big" / f"p{n}.nc").write_text(BAD * 400)
+    script = ("import sys\nfrom tapegate.launch import main\n"
+              "from formats.files import exit_on_termination\nexit_on_termination()\n"
+              "sys.argv = ['tapegate', 'check', 'big', '-p', 'iso-mill', '-j', '2']\n"
+              "main()\n")
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        # the report fills the pipe: the command then waits in its write
+        assert proc.stdout is not None
+        deadline = time.monotonic() + 60
+        while not _full(proc.stdout.fileno()):
+            assert proc.poll() is None, "the report ended before it filled the pipe"
+            assert time.monotonic() < deadline, "the command never filled the pipe"
+            time.sleep(0.01)
+        proc.send_signal(signum)
+        code = proc.wait(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        assert proc.stdout is not None
+        proc.stdout.close()
+    assert code == (1 if signum == signal.SIGINT else 128 + signal.SIGTERM)
+
+
+def _full(fd: int) -> bool:
+    """Whether the pipe read by ``fd`` holds all it can (Linux: its size, F_GETPIPE_SZ)."""
+    waiting = array.array("i", [0])
+    fcntl.ioctl(fd, termios.FIONREAD, waiting)
+    return waiting[0] >= fcntl.fcntl(fd, fcntl.F_GETPIPE_SZ)
