@@ -355,6 +355,10 @@ def test_a_numbered_block_something_comes_to_joins_the_jump_at_the_target(before
     assert travel[0].message.startswith("X spans 1550 (from -700 to 850)"), travel[0].message
     travel = travel_found(F2.format(before=before, n5="9999.", step="0"))
     assert [(f.line, f.column) for f in travel] == [(7, 7)], travel
+    # a block between the jump and N5 has no number: it never runs, not judged
+    text = F2.format(before=before, n5="0", step="0")
+    text = text.replace("GOTO10\n", "GOTO10\nG1 X9999. F100.\n")
+    assert travel_found(text) == []
 
 
 @pytest.mark.parametrize(("back", "column"), [("IF[#5EQ1]GOTO5", 10), ("M99 P5", 5)])

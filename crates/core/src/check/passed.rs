@@ -73,13 +73,15 @@ pub(super) struct Passed {
 const DEAD_MAX: usize = 64;
 
 /// A numbered block a passage took as not run: its number and line, the jump's line and its
-/// target.
+/// target, and the sequence number the blocks not judged run to (the target, or the block
+/// between that a run may come to: [`Checker::passage_entered`]).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Dead {
     n: u64,
     line: usize,
     jump: usize,
     target: u64,
+    until: u64,
 }
 
 /// What a jump's block left before the checker forgot it, not following the jump
@@ -281,14 +283,60 @@ impl Checker {
         let room = self.passed_numbers.len() + passed.dead.len() < DEAD_MAX;
         match self.passed.as_deref_mut() {
             Some(passed) if !entered && room => passed.dead.push((n, b.line)),
-            Some(passed) => {
-                passed.joining = true;
-                // (entered by a way the checker does not follow)
-                self.machine.forget();
-                self.params_forgotten();
-            }
+            Some(_) => self.passage_entered(b, n),
             None => {}
         }
+    }
+
+    /// Block `b`, numbered, between the jump and its target, is one a run may come to
+    /// ([`Checker::passage_block`]): the blocks before it since the jump are still passed
+    /// over -- no way leads into them before the jump's reaches the target -- their findings
+    /// of running dropped and the state the jump left taken up again (where they left the
+    /// units and the feed mode as the jump found them, as at the target: `b`'s words are read
+    /// in them); from `b` on the blocks run, entered with the position, feed, speed and
+    /// parameters not known (the way in is a jump or a return the checker does not follow),
+    /// and the passage waits at its target to join them with the jump.
+    fn passage_entered(&mut self, b: &BlockView<'_>, entered: u64) {
+        let modes = |c: &Checker| {
+            let s = &c.machine.state;
+            (s.units, s.feed_units, s.feed_mode)
+        };
+        let now = modes(self);
+        let Some(passed) = self.passed.as_deref_mut() else {
+            return;
+        };
+        passed.joining = true;
+        let (line, target, path, hint_said, from) = (
+            passed.line,
+            passed.target,
+            passed.path,
+            passed.hint_said,
+            passed.from,
+        );
+        let dead = std::mem::take(&mut passed.dead);
+        let run = (modes(&passed.run) == now).then(|| passed.run.clone());
+        if let Some(run) = run {
+            let mut i = 0;
+            self.found.retain(|f| {
+                i += 1;
+                i <= from || !(f.line > line && f.line < b.line && of_running(f.rule))
+            });
+            self.path.truncate(path);
+            // (the runs kept for jumps read between are not run; the jump's own stays)
+            self.jumps_pending.retain(|t| !t.own_after(line));
+            self.run_state_of(*run);
+            self.limits_hint_said = hint_said;
+            self.passed_numbers
+                .extend(dead.into_iter().map(|(n, at)| Dead {
+                    n,
+                    line: at,
+                    jump: line,
+                    target,
+                    until: entered,
+                }));
+        }
+        self.machine.forget();
+        self.params_forgotten();
     }
 
     /// The target of a passage that a numbered block between joined ([`Checker::passage_block`]):
@@ -355,6 +403,7 @@ impl Checker {
                 line: at,
                 jump: line,
                 target,
+                until: target,
             }));
         let mut i = 0;
         self.found.retain(|f| {
@@ -464,7 +513,7 @@ impl Checker {
         let message =
             format!(
             "{token} ({}): N{} (line {}) was read as passed over by the jump on line {}, which \
-             is surely taken to N{}; the blocks from N{} to N{} were not judged as run, and the \
+             is surely taken to N{}; the blocks from N{} up to N{} were not judged as run, and the \
              checker does not follow a jump back to them",
             if n.is_some() { "names it" } else { "may name any numbered block" },
             d.n,
@@ -472,7 +521,7 @@ impl Checker {
             d.jump,
             d.target,
             d.n,
-            d.target
+            d.until
         );
         self.report(Rule::NotFollowed, message, line, column);
     }
@@ -580,6 +629,7 @@ mod tests {
             "G0 X-450. Y0\nGOTO10\nN5 G0 X0\nN10 G91 G0 X600.",
             "G0 X0 Y0\nGOTO10\nN5 G1 X9999. F100.\nN10 G0 X0",
             "G0 X0 Y0\n#1=1\nIF[#1EQ1]GOTO20\nG1 X9999. F100.\nN10 G0 X1. Y0\nN11 G91\nN20 G0 X2.",
+            "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO20\nG1 X9999. F100.\nN10 G0 X1. Y0\nN20 G0 X2.",
         ] {
             assert_eq!(travel(body), [], "{body}");
         }
@@ -608,6 +658,23 @@ mod tests {
         }
         let body = "IF[#5EQ1]GOTO5\nG0 X-450. Y0\nG91\nGOTO10\nN5 G90 G0 X0\nN10 G0 X600.\nX600.";
         assert_eq!(travel(body), [(8, 1)]);
+        // the blocks before it since the jump never run: not judged
+        let body = "IF[#5EQ1]GOTO5\nG0 X0 Y0\nGOTO10\nG1 X9999. F100.\nN5 G0 X0\nN10 G0 X1.";
+        assert_eq!(travel(body), []);
+        // nor a numbered one before it that nothing names; a jump back to it is said
+        let body = "IF[#5EQ1]GOTO6\nG0 X-450. Y0\nGOTO10\nN5 G0 X9999.\nN6 G0 X100.\n\
+                    N10 G91 G0 X600.\nG90\nGOTO5";
+        assert_eq!(travel(body), []);
+        let found = super::super::testing::findings(fanuc(), &program(body), Rule::NotFollowed);
+        let back: Vec<_> = found.iter().filter(|f| f.line == 9).collect();
+        assert_eq!(back.len(), 1, "{found:?}");
+        assert!(
+            back[0]
+                .message
+                .contains("the blocks from N5 up to N6 were not judged"),
+            "{}",
+            back[0].message
+        );
     }
 
     /// A jump after the target back to a block a passage took as not run (a GOTO, an M99 P,
@@ -682,14 +749,14 @@ mod tests {
 
     /// Where the checker cannot be sure the blocks are passed over, they are judged as
     /// before: the target not in the program (TG118), a numbered block between that a jump
-    /// read before names (the blocks before it), a loop's statement between, a sequence
+    /// read before names (it and the blocks after it run), a loop's statement between, a sequence
     /// number written with a point, another jump to the target read before, a `/` jump, a
     /// jump inside a WHILE loop, a jump back.
     #[test]
     fn where_the_passage_is_not_sure_nothing_changes() {
         for body in [
             "G0 X0 Y0\nGOTO30\nG1 X9999. F100.\nN10 G0 X1. Y0",
-            "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO20\nG1 X9999. F100.\nN10 G0 X1. Y0\nN20 G0 X2.",
+            "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO20\nN10 G1 X9999. F100.\nN20 G0 X2.",
             "G0 X0 Y0\nGOTO10\nN5 G1 X9999. F100.\nWHILE[#5LT1]DO1\nEND1\nN10 G0 X1. Y0",
             "G0 X0 Y0\nGOTO10\nN5.5 G1 X9999. F100.\nN10 G0 X1. Y0",
             "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0",
