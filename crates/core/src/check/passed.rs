@@ -22,14 +22,14 @@
 //! come to it (a block with an N may be named by another jump, a call's `M97 P`, a return's
 //! `M99 P` or a lathe cycle's P/Q, and so run; review 52, F2): where something may, it and the
 //! blocks after it run, and the target starts from what they and the jump leave alike
-//! ([`Checker::passage_block`]); no jump read before names the target, nor is a computed `GOTO #1` read (the
-//! values at the target are then the jump's alone); the jump is not under the `/` switch nor
-//! inside a `WHILE` loop, not read apart as a subprogram's body (called.rs) and no jump's run
-//! is being read beside the file's (params.rs); the blocks passed over leave the units and the
-//! feed mode as the jump found them (the target's words are read in them before the passage
-//! ends at it). Where the target does not come (the program ends first: TG118), nothing
-//! changes: the blocks are judged as before, their findings said in their order when the
-//! passage ends.
+//! ([`Checker::passage_block`]); no jump read before names the target, nor is a computed
+//! `GOTO #1` read (the values at the target are then the jump's alone); the jump is not under
+//! the `/` switch nor inside a `WHILE` loop, not read apart as a subprogram's body (called.rs)
+//! and no jump's run is being read beside the file's (params.rs); the blocks passed over leave
+//! the units and the feed mode as the jump found them (the target's words are read in them
+//! before the passage ends at it). Where the target does not come (the program ends first:
+//! TG118), nothing changes: the blocks are judged as before, their findings said in their
+//! order when the passage ends.
 
 use super::{BlockView, Checker};
 use crate::lex::Family;
