@@ -4658,8 +4658,11 @@ impl Converter {
             return Ok(());
         }
         let count = if from { b'K' } else { b'L' };
-        // (a Haas's G73/G83 K is a length; its count is L)
-        let fraction = b.words.iter().find(|w| {
+        // (a Haas's G73/G83 K is a length, its count L; a FANUC's G73/G83 K with a point is
+        // the meaning table's unknown word, refused as such: `code_meanings`)
+        let code = gs.iter().copied().find(|&g| cycle(g)).or(self.cycle_code);
+        let peck_k = from && matches!(code, Some(73 | 83));
+        let fraction = b.words.iter().filter(|_| !peck_k).find(|w| {
             w.token[0].eq_ignore_ascii_case(&count)
                 && std::str::from_utf8(&w.token[1..])
                     .ok()
