@@ -664,6 +664,21 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("M6 under compensation", HEAD + "T1 M6\nG41.1 D1\nT1 M6\nM2\n", 5, "error"),
     ("G41.1 in G19", HEAD + "G19\nG41.1 D1\nM2\n", 4, "error"),
     ("G92 under compensation", HEAD + "G41.1 D1\nG92 X0\nM2\n", 4, "error"),
+    # comp52 (review 52, F3): any change of plane under compensation (convert_set_plane), the
+    # splines (convert_spline) and G28.1/G30.1 (convert_savehome)
+    ("G18 under compensation begun in G17", HEAD + "G41.1 D1\nG18\nM2\n", 4, "error"),
+    ("G18 G40 under compensation", HEAD + "G41.1 D1\nG18 G40\nM2\n", 4, "error"),
+    ("G17 under compensation begun in G18", HEAD + "G18\nG41.1 D1\nG17\nM2\n", 5, "error"),
+    ("G18 under compensation begun in G18", HEAD + "G18\nG41.1 D1\nG18\nG40\nM2\n", 0,
+     "accepted"),
+    ("G5 under compensation", HEAD + "G41.1 D1\nG1 X5 F100\nG5 X2 Y2 I1 J0 P1 Q1\nM2\n", 5,
+     "error"),
+    ("G5.1 under compensation", HEAD + "G41.1 D1\nG1 X5 F100\nG5.1 X1 I1 J1\nM2\n", 5,
+     "error"),
+    ("G5 beside G40", HEAD + "G41.1 D1\nG1 X5 F100\nG5 X2 Y2 I1 J0 P1 Q1 G40\nM2\n", 0,
+     "accepted"),
+    ("G28.1 under compensation", HEAD + "G41.1 D1\nG28.1\nM2\n", 4, "error"),
+    ("G30.1 under compensation", HEAD + "G41.1 D1\nG30.1\nM2\n", 4, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

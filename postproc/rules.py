@@ -277,6 +277,11 @@ _example("TG543",
          "%\nO1\nG20 G90 G00 X0 Y0 Z1.\nG81 X1. Y1. Z-0.5 F10.\nG80\nM30\n%\n",
          "%\nO1\nG20 G90 G00 X0 Y0 Z1.\nG81 X1. Y1. Z-0.5 R0.1 F10.\nG80\nM30\n%\n",
          "haas-mill")
+# (fanuc-mill: a repeat count that is no whole number of one or more)
+_example("TG544",
+         "%\nO1\nG21 G90 G00 X0 Y0 Z5.\nG81 X0 Y0 Z-5. R2. F100.\nG91 X10. K2.5\nG90 G80\nM30\n%\n",
+         "%\nO1\nG21 G90 G00 X0 Y0 Z5.\nG81 X0 Y0 Z-5. R2. F100.\nG91 X10. K2\nG90 G80\nM30\n%\n",
+         "fanuc-mill")
 _example("TG542",
          P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G01 X20\n" + E,
          P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G80\nN4 G01 X20\n" + E)
@@ -783,6 +788,13 @@ SOURCES = {
              "Cycles\"); no value is given for a cycle that never had them, and "
              "no alarm. So on the Haas profiles a missing R or Z is this warning, not TG541. "
              "FANUC, Okuma: no source at hand (TG541 stays an error).",
+    "TG544": "FANUC 0i-MF operator's manual, \"Canned cycle\": K the number of repeats (a "
+             "whole number; K0 stores the cycle's data and drills no hole); Haas mill "
+             "operator's manual, G81-G89: \"L number of holes\". What a FANUC does with a K "
+             "that is not whole, or a Haas with an L that is not whole or L0, no source at "
+             "hand says: a warning naming what is not known. LinuxCNC: rs274 refuses both "
+             "(\"Non integer value for integer\", \"Cannot do zero repeats of cycle\"): "
+             "TG412. SINUMERIK, Okuma, HEIDENHAIN: not fired.",
     "TG601": "The profile's machine (its [limits] travel and work offsets). A control stops at "
              "its stored stroke limits with an overtravel alarm; the alarm numbers of the "
              "families were not at hand. The family profiles' travels are a typical machine's; "

@@ -1331,6 +1331,28 @@ def test_a_repeat_count_of_a_modal_cycle_s_block_is_a_count():
     # planes alone keep the cycle (review 51, F10); a motion code leaves it
     assert tg201("G17 X20. K2") == []
     assert tg201("G00 X20. K2") == [(5, 10)]
+    # review 52, F10: an arc's K in the block that ends the cycle is a length too, whatever
+    # else the block writes (a plane, the distance mode; the code first or last)
+    assert tg201("G18 G02 X10. Z0 I5. K5") == [(5, 21)]
+    assert tg201("G02 G18 X10. Z0 I5. K5") == [(5, 21)]
+    assert tg201("G91 G18 G03 X10. Z0 I5. K5") == [(5, 25)]
+    assert tg201("X20. K2\nG18 G02 X10. Z0 I5. K5") == [(6, 21)]
+
+
+def test_the_mixed_style_warning_and_the_arc_s_hint_are_said_once_a_file():
+    """Review 52, F10, read again: in its program the second `G18 G02 ... K5` (ending a G81)
+    got TG403 without TG201 nor the hint in TG403's text, as the first arc after G80 had both:
+    TG201 is said once a file (6.1, the program mixes the two styles) and the hint with the
+    file's first arc error, wherever a cycle is; the second arc's K is read as 0.005 all the
+    same (its radius error the same)."""
+    text = ("%\nO1000\nG21 G17 G90 G54\nG0 X0 Y0 Z5.\nG81 X0 Y0 Z-5. R2. F100.\nG80\n"
+            "G18 G02 X10. Z0 I5. K5\nG17\nG81 X0 Y0 Z-5. R2. F100.\nG18 G02 X10. Z0 I5. K5\n"
+            "G80\nM30\n%\n")
+    found = [(f.rule, f.line, f.message) for f in check_text(text, load_profile("fanuc-mill"))
+             if f.rule in ("TG201", "TG403")]
+    assert [(r, n) for r, n, _ in found] == [("TG201", 7), ("TG403", 7), ("TG403", 10)]
+    assert "(TG201: K5 on line 7, read as 0.005)" in found[1][2]
+    assert found[1][2].split(";")[0] == found[2][2]
 
 
 def test_a_haas_cycle_s_k_is_a_peck_depth_not_a_count(tmp_path):
@@ -1409,6 +1431,61 @@ def test_a_cycle_s_repeat_count_is_refused_between_controls_that_write_it_apart(
     assert f"{word}: " in out.output and "canned cycle's repeats" in out.output
     same = run("convert", str(path), "--from", source, "--to", source, "-o", "-")
     assert same.exit_code == 0, same.output
+
+
+@pytest.mark.parametrize(("profile", "block", "column", "says"), [
+    ("fanuc-mill", "G91 X10. K2.5", 10, "what it does with one that is not"),
+    ("fanuc-mill", "G91 X10. K0", 10, "stores the cycle's data and drills no hole"),
+    ("fanuc-mill", "G91 G81 X10. Y0 Z-5. R2. K2.5 F100.", 26, "what it does with one"),
+    ("haas-mill", "G91 X10. L2.5", 10, "the Haas reads L as the cycle's number of holes"),
+    ("haas-mill", "G91 X10. L0", 10, "no source at hand says"),
+])
+def test_a_repeat_count_that_is_no_whole_number_is_a_warning_at_the_word(profile, block, column,
+                                                                          says):
+    """Review 52, F11: a FANUC's K (0i-MF "Canned cycle": the number of repeats; K0 stores the
+    cycle, no hole) or a Haas's L that is not a whole number of one or more passed in silence,
+    the plane's axes no longer followed. TG544 at the word says what is not known; a whole
+    count, an unknown one (`K#1`) and a Haas G83's K (a length) are not told."""
+    units = "G21" if profile == "fanuc-mill" else "G20"
+    def tg544(blocks: str) -> list[tuple[int, int, str]]:
+        text = (f"%\nO1\n{units} G17 G90 G54\nG0 X0 Y0 Z5.\nG81 X0 Y0 Z-5. R2. F100.\n"
+                f"{blocks}\nG90 G80\nM30\n%\n")
+        return [(f.line, f.column, f.message) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG544"]
+    found = tg544(block)
+    assert [(line, col) for line, col, _ in found] == [(6, column)], found
+    assert says in found[0][2] and "not followed after it" in found[0][2], found
+    letter = "K" if profile == "fanuc-mill" else "L"
+    assert tg544(f"G91 X10. {letter}2") == []
+    assert tg544(f"G91 X10. {letter}#1") == []
+    # a motion code ends the cycle: its K is no count
+    assert tg544("G91 G1 X10. K0") == []
+    if profile == "haas-mill":
+        assert tg544("G83 X0 Y0 Z-0.5 R0.1 Q0.1 K0.05 F10.") == []
+
+
+@pytest.mark.parametrize(("source", "block", "word"), [
+    ("fanuc-mill", "G91 X10. K2.5", "K2.5"),
+    ("fanuc-mill", "G91 G81 X10. Y0 Z-5. R2. K2.5 F100.", "K2.5"),
+    ("haas-mill", "G91 X10. L2.5", "L2.5"),
+])
+def test_a_repeat_count_that_is_no_whole_number_is_not_converted(tmp_path, source, block, word):
+    """Review 52, F11: `convert --units inch` kept `K2.5` as a count no one knows the reading
+    of; refused at the word, between controls of one reading too. K0, a whole count, is kept."""
+    path = tmp_path / "p.nc"
+    def convert(blocks: str):
+        path.write_text("%\nO1000\nG21 G90 G17\nG0 X0 Y0 Z10.\nG81 X0 Y0 Z-5. R2. F100.\n"
+                        f"{blocks}\nG80\nM30\n%\n")
+        return run("convert", str(path), "--from", source, "--to", source, "--units", "inch",
+                   "-o", "-")
+    out = convert(block)
+    assert out.exit_code == 1, out.output
+    assert f"{word}: a canned cycle's repeat count that is not a whole number" in out.output
+    assert ":6:" in out.output, out.output
+    letter = word[0]
+    kept = convert(f"G91 X10. {letter}0")
+    assert kept.exit_code == 0, kept.output
+    assert f"{letter}0\n" in kept.output
 
 
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():

@@ -691,6 +691,30 @@ def test_a_haas_refuses_a_blank_after_the_hash_of_a_word_s_value_as_of_an_assign
     assert ":5:7: address #" in str([b.error for b in read if isinstance(b, BadBlock)][1])
 
 
+BLANK_BRACKET = ("%\nO1\n# [2] = 10.\n#1 = 5.\nG90 G0 X0 Y0\nG1 X # [1] Y-# [1+1] "
+                 "Z[# [2]*2.] F100.\nM30\n%\n")
+
+
+def test_a_fanuc_reads_a_blank_after_the_hash_before_a_bracket_as_before_a_number():
+    """Review 52, F1: `X # 1` and `# 1 = 5` read as `X#1` and `#1 = 5` (audit 50, B12), but
+    `X # [1]` was TG100 "expected a number or parameter" and `# [2] = 10.` TG100 "'#'
+    parameter must be written #n = value": the blank before the bracket is the same blank."""
+    assert not errors(BLANK_BRACKET, "fanuc-mill")
+    assert found(BLANK_BRACKET, "fanuc-mill") == found(
+        BLANK_BRACKET.replace("# [", "#["), "fanuc-mill")
+    read = parse_text(BLANK_BRACKET, load_profile("fanuc-mill").dialect, errors="collect")
+    assert program_text(read) == BLANK_BRACKET
+
+
+def test_a_haas_refuses_a_blank_after_the_hash_before_a_bracket_as_before_a_number():
+    """The NGC's "written apart" alarm, as `X # 1` and `# 1 = 5.` get, at the blank."""
+    read = parse_text(BLANK_BRACKET, load_profile("haas-mill").dialect, errors="collect")
+    bad = [str(b.error) for b in read if isinstance(b, BadBlock)]
+    assert [b.line for b in read if isinstance(b, BadBlock)] == [3, 6], bad
+    assert all("address # written apart from its number" in e for e in bad), bad
+    assert ":3:2: address #" in bad[0] and ":6:7: address #" in bad[1], bad
+
+
 @pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
 @pytest.mark.parametrize("block, column, says", [
     ("G0 G1 8 X1.", 7, "if it is the rest of the word before it (G1 8 for G18)"),

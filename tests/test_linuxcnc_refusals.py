@@ -173,6 +173,9 @@ REFUSED = [
     ("G18\nG0 X0 Z5\nG81 X1 Z-1 R2\nG80", "TG541", 5,
      "Y value unspecified in xz plane canned cycle"),
     ("G19\nG81 Y1 Z1 R2\nG80", "TG541", 4, "X value unspecified in yz plane canned cycle"),
+    # review 52, F11: rs274 reads L as an integer (read_l), a cycle's repeat count as G10's
+    ("G91 G81 X1 Y0 Z-1 R1 L2.5\nG90 G80", "TG412", 3, "Non integer value for integer"),
+    ("G10 L2.5 P1 X0", "TG412", 3, "Non integer value for integer"),
 ]
 
 
@@ -850,3 +853,44 @@ def test_a_call_whose_label_is_worked_out_as_it_runs_is_read(tmp_path, call):
     out = rs274_output(tmp_path, text)
     assert "STRAIGHT_TRAVERSE(2.0000, 0.0000, 0.0000" in out  # the subroutine ran, X#1 = 2
     assert "PROGRAM_END" in out
+
+
+def test_a_plane_of_the_uvw_axes_under_compensation_is_refused_at_its_code(tmp_path):
+    """Review 52, F3 (comp52): rs274's convert_set_plane lets G17.1-G19.1 pass under cutter
+    radius compensation, but its compensated move and G40 then stop at the plane ("BUG: Invalid
+    plane for cutter compensation"): refused at the code, column of the G, with the reason."""
+    for code in ["G17.1", "G18.1", "G19.1"]:
+        text = program(f"G41.1 D1\nG1 X5\n{code}\nG1 X10\nG40")
+        found = [(f.rule, f.line, f.column, f.message) for f in check_text(
+            text, load_profile("linuxcnc")) if f.severity == "error"]
+        assert [(r, n, c) for r, n, c, _ in found] == [("TG412", 5, 1)], found
+        assert "G17.1, G18.1 and G19.1 have no cutter radius compensation" in found[0][3]
+        said = rs274_output(tmp_path, text)
+        if said:
+            assert "BUG:" in said and "plane" in said, said
+    # without compensation the plane runs
+    assert errors(program("G17.1\nG0 X1\nG17")) == []
+
+
+@pytest.mark.parametrize("body, line, column, message", [
+    ("G41.1 D1\nG1 X5\nX1 G18", 5, 4, "Cannot change planes with cutter radius compensation on"),
+    ("G18\nG41.1 D1\nG1 X5\nG17 G1 X4", 6, 1,
+     "Cannot change planes with cutter radius compensation on"),
+    ("G41.1 D1\nG1 X5\nG5 X2 Y2 I1 J0 P1 Q1", 5, 1,
+     "Cannot convert spline with cutter radius compensation"),
+    ("G41.1 D1\nG1 X5\nG30.1", 5, 1,
+     "Cannot set reference point with cutter compensation in effect"),
+])
+def test_codes_rs274_refuses_under_compensation_are_told_at_the_g(tmp_path, body, line, column,
+                                                                  message):
+    """Review 52, F3 (comp52): the finding's line, column (the block's G word) and rs274's
+    message (the column of the block's first G word, as every TG412 of a G code); rs274 -g,
+    where installed, stops at the same line with it."""
+    text = program(body)
+    found = [(f.rule, f.line, f.column, f.message) for f in check_text(
+        text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(r, n, c) for r, n, c, _ in found] == [("TG412", line, column)], found
+    assert found[0][3].startswith(message), found
+    said = rs274_output(tmp_path, text)
+    if said:
+        assert message in said, said

@@ -159,6 +159,10 @@ BOTH = [
     "a Z probe in place after G7", "G43 under compensation", "G55 under compensation",
     "G10 L2 P0 under compensation", "G40 M66 under compensation", "M6 under compensation",
     "G41.1 in G19", "G92 under compensation",
+    # comp52 (review 52, F3): a change of plane, the splines, G28.1/G30.1
+    "G18 under compensation begun in G17", "G18 G40 under compensation",
+    "G17 under compensation begun in G18", "G5 under compensation", "G5.1 under compensation",
+    "G28.1 under compensation", "G30.1 under compensation",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -203,7 +207,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # definition once; codes rs274 runs beside G40 or with the compensation off
        "a probe in place in the else of a known-true if", "a definition in a while of one turn",
        "a definition in a repeat [1]", "a definition in a repeat whose call ends the program",
-       "G40 G43 under compensation", "G10 L2 P2 under compensation in G54"]
+       "G40 G43 under compensation", "G10 L2 P2 under compensation in G54",
+       # comp52: G18 in G18 changes no plane; G40 beside a spline runs it uncompensated
+       "G18 under compensation begun in G18", "G5 beside G40"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

@@ -4640,15 +4640,49 @@ impl Converter {
     /// count from one letter to the other: refused at the word, the block's cycle code or the
     /// one in force (a FANUC's or Haas's modal cycle; LinuxCNC's in its own block only, whose
     /// later blocks of hole positions are not followed here).
+    ///
+    /// Between controls of one letter too, a count that is not a whole number (a FANUC's
+    /// `K2.5`, a Haas's or LinuxCNC's `L2.5`) is refused at the word: what the control does
+    /// with it no source at hand says (rs274 refuses `L2.5`), and carried as written under a
+    /// change of units it stayed a count no one knows (review 52, F11; the checker's TG544,
+    /// TG412). K0, a whole count, is kept.
     fn cycle_repeat_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
         let Some((from, to)) = self.c.m98_repeats else {
             return Ok(());
         };
-        if from == to || self.c.lathe {
+        if self.c.lathe {
             return Ok(());
         }
         let cycle = |g: i64| matches!(g, 73 | 74 | 76 | 81..=89);
         if !(self.cycle_code.is_some_and(cycle) || gs.iter().copied().any(cycle)) {
+            return Ok(());
+        }
+        let count = if from { b'K' } else { b'L' };
+        // (a Haas's G73/G83 K is a length, its count L; a FANUC's G73/G83 K with a point is
+        // the meaning table's unknown word, refused as such: `code_meanings`)
+        let code = gs.iter().copied().find(|&g| cycle(g)).or(self.cycle_code);
+        let peck_k = from && matches!(code, Some(73 | 83));
+        let fraction = b.words.iter().filter(|_| !peck_k).find(|w| {
+            w.token[0].eq_ignore_ascii_case(&count)
+                && std::str::from_utf8(&w.token[1..])
+                    .ok()
+                    .and_then(Dec::parse)
+                    .is_some_and(|n| !n.is_whole())
+        });
+        if let Some(w) = fraction {
+            return Err(ConvertError {
+                message: format!(
+                    "{}: a canned cycle's repeat count that is not a whole number; what the \
+                     control does with it (an alarm, a rounding) no source at hand says, and \
+                     tapegate does not carry a count it cannot read: write a whole number",
+                    text(w.token),
+                ),
+                clause: "cycle",
+                column: crate::text::column(b.text, w.start),
+                line: None,
+            });
+        }
+        if from == to {
             return Ok(());
         }
         let Some(w) = b

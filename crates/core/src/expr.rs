@@ -479,10 +479,15 @@ impl Scanner<'_> {
             // Custom Macro B `X # 1`: the blank after `#` is skipped as in `# 1 = 5` (a FANUC
             // reads a blank between an address and its number so: docs/dialects.md, "Blanks
             // inside a word"); a Haas NGC alarms on it there, and so here (audit 50, B12)
+            // -- and `X # [1]` as `X#[1]`, the blank before a bracketed number the same blank
+            // (review 52, F1: TG100 "expected a number or parameter")
             let r = skip_blanks(line, q);
-            if r > q && line.get(r).is_some_and(u8::is_ascii_digit) {
+            if r > q && matches!(line.get(r), Some(b'0'..=b'9' | b'[')) {
                 if self.syntax.parameter_elements {
                     return Err(Box::new(crate::lex::apart(b'#', q)));
+                }
+                if line[r] == b'[' {
+                    return self.group(r, depth).map(Some);
                 }
                 return Ok(Some(digits_end(line, r)));
             }
@@ -2658,8 +2663,24 @@ mod tests {
                 && apart.offset == 2,
             "{apart:?}"
         );
-        // `# [1]`, `# #1` (a blank before a value choosing the variable) stay unread
-        assert!(scan(b"# [1]", 0, MACRO).is_err());
+        // `# [1]` is `#[1]` (review 52, F1), the NGC's "written apart" there too; `# #1` (a
+        // blank before a parameter choosing the variable) stays unread
+        for text in ["# [1]", "-# [1+1]", "[# [2]*2.]"] {
+            assert_eq!(
+                scan(text.as_bytes(), 0, MACRO).map_err(|e| e.message),
+                Ok(text.len()),
+                "{text}"
+            );
+            assert!(tree(text.as_bytes()).is_ok(), "{text}");
+        }
+        let apart = scan(b"# [1]", 0, ngc).unwrap_err();
+        assert!(
+            apart
+                .message
+                .starts_with("address # written apart from its number")
+                && apart.offset == 1,
+            "{apart:?}"
+        );
         assert!(scan(b"# #1", 0, MACRO).is_err());
     }
 

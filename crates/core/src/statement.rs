@@ -623,7 +623,17 @@ fn parameter_word<'a>(
     let q = if syntax.named {
         skip_blanks(line, pos + 1)
     } else {
-        pos + 1
+        // Custom Macro B `# [2] = 10.`: the blank skipped as in `# 2 = 10.` on a FANUC, the
+        // NGC's "written apart" alarm on a Haas (review 52, F1; `Tokenizer::word`, audit 50 B12)
+        let r = skip_blanks(line, pos + 1);
+        if r > pos + 1 && line.get(r) == Some(&b'[') {
+            if dialect.ngc {
+                return Err(crate::lex::apart(b'#', pos + 1));
+            }
+            r
+        } else {
+            pos + 1
+        }
     };
     let reference_end = match line.get(q) {
         Some(b'[') => expr::scan_group(line, q, syntax)?,

@@ -546,6 +546,8 @@ pub(super) struct Before {
     xyz: [Option<Dec>; 3],
     unknown: u32,
     compensation: i64,
+    /// G17, G18 or G19: LinuxCNC refuses a change of plane under cutter radius compensation.
+    plane: i64,
     cycle: Option<i64>,
     /// G91 in force: a HEIDENHAIN block's coordinates before its own G90 or G91 (polar.rs).
     incremental: bool,
@@ -557,6 +559,7 @@ impl Before {
             xyz: [state.position[0], state.position[1], state.position[2]],
             unknown: state.unknown,
             compensation: state.compensation,
+            plane: state.plane,
             cycle: state.cycle,
             incremental: state.incremental,
         }

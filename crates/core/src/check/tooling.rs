@@ -1008,7 +1008,13 @@ impl Checker {
                 && self.linuxcnc_probe_in_place(&words, codes, start, unsure);
             self.linuxcnc_refusal(&words, codes, ms, before, runs, checked, in_place)
                 .or_else(|| {
-                    self.linuxcnc_compensation_refusal(&words, codes, ms, compensation_before)
+                    self.linuxcnc_compensation_refusal(
+                        &words,
+                        codes,
+                        ms,
+                        compensation_before,
+                        start.plane,
+                    )
                 })
         } else {
             None
@@ -1541,15 +1547,19 @@ impl Checker {
     /// CUTTER_COMP::OFF`; every message compared with `rs274 -g`, LinuxCNC 2.9, lcnc51). The
     /// block's M codes run before its G codes (interp_execute.cc `execute_block`: convert_m,
     /// then convert_g), so under the compensation before the block: M6, M48-M53, M62-M68
-    /// (`G40 M66 P0 L3 Q1` under G41.1 is refused). convert_g then runs the plane (G19, the
-    /// plane compensation never runs in, is a change of plane), the compensation's own codes
-    /// (turned on in G19, or when on), and after them, under the compensation the block
-    /// leaves, the tool length offset (G43, G43.1, G43.2, G49), the coordinate system
-    /// (G54-G59.3), the control mode (G61, G61.1, G64), the retract mode (G98, G99), G10
-    /// L2/L20 of the active system (P0; P1-P5 where G54-G58 is known in force), G52/G92 and
-    /// G28/G30, and a G53 move. Not judged where the compensation is not known (after a call
-    /// the checker does not follow), nor an M code a remap may own. Called after the block's
-    /// other refusals: rs274 reads and checks the block's words before it runs any of it.
+    /// (`G40 M66 P0 L3 Q1` under G41.1 is refused). convert_g then runs the plane
+    /// (convert_set_plane: G17, G18 or G19 other than the plane in force, `G18 G40` too; G19
+    /// in G19 is "only in XY, XZ planes"; G17.1-G19.1, which convert_set_plane lets pass but
+    /// whose plane the compensated move and G40 then stop at with a "BUG" message, are refused
+    /// at the code), the compensation's own codes (turned on in G19, or when on), and after
+    /// them, under the compensation the block leaves, the tool length offset (G43, G43.1,
+    /// G43.2, G49), the coordinate system (G54-G59.3), the control mode (G61, G61.1, G64), the
+    /// retract mode (G98, G99), G10 L2/L20 of the active system (P0; P1-P5 where G54-G58 is
+    /// known in force), G52/G92, G28/G30 and G28.1/G30.1 (convert_home, convert_savehome), a
+    /// G53 move, and the splines G5/G5.1 (convert_spline; `G5 ... G40` runs). Not judged where
+    /// the compensation is not known (after a call the checker does not follow), nor an M
+    /// code a remap may own. Called after the block's other refusals: rs274 reads and checks
+    /// the block's words before it runs any of it.
     #[inline(never)]
     fn linuxcnc_compensation_refusal(
         &self,
@@ -1557,6 +1567,7 @@ impl Checker {
         codes: &[i64],
         ms: &[i64],
         before: bool,
+        plane_before: i64,
     ) -> Option<(String, u8)> {
         let after = (self.machine.state.compensation != 40 || self.linuxcnc_dynamic_compensation)
             && !self.linuxcnc_compensation_unknown;
@@ -1598,11 +1609,37 @@ impl Checker {
                 return said(what, b'M');
             }
         }
-        if before && codes.contains(&190) {
-            return said(
-                "Cannot change planes with cutter radius compensation on",
-                b'G',
-            );
+        if before {
+            let plane = codes.iter().find_map(|&c| match c {
+                170 | 180 | 190 => Some(Some(c / 10)),
+                171 | 181 | 191 => Some(None),
+                _ => None,
+            });
+            match plane {
+                Some(Some(p)) if p != plane_before => {
+                    return said(
+                        "Cannot change planes with cutter radius compensation on",
+                        b'G',
+                    );
+                }
+                Some(Some(19)) => {
+                    return said(
+                        "Cutter radius compensation allowed only in XY, XZ planes",
+                        b'G',
+                    );
+                }
+                Some(None) => {
+                    return Some((
+                        "G17.1, G18.1 and G19.1 have no cutter radius compensation (rs274ngc): \
+                         the block runs it under cutter radius compensation, and rs274 then \
+                         stops at the next compensated move or the G40 (\"BUG: Invalid plane \
+                         for cutter compensation\")"
+                            .into(),
+                        b'G',
+                    ));
+                }
+                _ => {}
+            }
         }
         if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421)) {
             if self.machine.state.plane == 19 {
@@ -1627,6 +1664,8 @@ impl Checker {
                 Some("Cannot change control mode with cutter radius compensation on")
             }
             980 | 990 => Some("Cannot change retract mode with cutter radius compensation on"),
+            50 | 51 => Some("Cannot convert spline with cutter radius compensation"),
+            281 | 301 => Some("Cannot set reference point with cutter compensation in effect"),
             _ => None,
         });
         if let Some(what) = what {
@@ -1699,15 +1738,21 @@ impl Checker {
     ) -> Option<(String, u8)> {
         // rs274 reads T and H as integers (read_integer_value) while it reads the block,
         // before it runs any of it, and G41/G42 take a tool number in D
-        for letter in [b'T', b'H'] {
+        // (and L, read_l: a cycle's repeat count, G10's data type, M66's wait type; review 52,
+        // F11: `G81 ... L2.5` passed)
+        for letter in [b'T', b'H', b'L'] {
             if let Some(v) = words
                 .value(letter)
                 .filter(|&v| linuxcnc_not_integer(v, false))
             {
+                let what = if letter == b'L' {
+                    "is no whole number (a cycle's repeat count, G10's or M66's type)"
+                } else {
+                    "is a tool or offset number"
+                };
                 return Some((
                     format!(
-                        "Non integer value for integer (rs274ngc): {}{} is a tool or offset \
-                         number",
+                        "Non integer value for integer (rs274ngc): {}{} {what}",
                         letter as char,
                         v.plain()
                     ),
@@ -2362,6 +2407,10 @@ impl Checker {
     /// TG541, TG542: fixed cycles (Annex E) have their depth and retract, and are cancelled
     /// before a motion code where the control asks for it.
     pub(super) fn cycles(&mut self, line: usize, before: &Before, facts: &Facts<'_>) {
+        // (a block that leaves a FANUC's or Haas's cycle in force repeats it: its count)
+        if self.machine.state.cycle.is_some() && self.config.family == Family::MacroB {
+            self.cycle_repeat_count(line, facts);
+        }
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
         // (an Okuma lathe's G81-G87 are the LAP's contour definitions and cycle calls)
         let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain)
@@ -2469,6 +2518,70 @@ impl Checker {
                 self.report(Rule::MotionInCycle, message, line, facts.col(b'G'));
             }
         }
+    }
+
+    /// The repeat count of a block that drills under a FANUC's or Haas's canned cycle (the
+    /// cycle's own block, or one of hole positions), where it is not a whole number of one
+    /// or more: a FANUC's K (0i-MF operator's manual, "Canned cycle": K the number of
+    /// repeats; K0 stores the cycle's data and drills no hole), a Haas's L (Haas mill
+    /// operator's manual, G81-G89: "L number of holes"). What a FANUC does with `K2.5`, and a
+    /// Haas with `L2.5` or `L0`, no source at hand says (an alarm, a rounding, or no hole):
+    /// a warning at the word that names what is not known (review 52, F11: passed in
+    /// silence, the positions after it not followed). A count of unknown value (`K#1`) and a
+    /// Haas G73/G83's K (the least peck depth, a length) are left alone. Off the hot path:
+    /// only a block that leaves a cycle in force asks.
+    #[cold]
+    #[inline(never)]
+    fn cycle_repeat_count(&mut self, line: usize, facts: &Facts<'_>) {
+        let Some(cycle) = self.machine.state.cycle else {
+            return;
+        };
+        let lathe = self.machine.settings.fanuc_lathe;
+        let drills = if lathe {
+            (83..=89).contains(&cycle)
+        } else {
+            matches!(cycle, 73 | 74 | 76 | 81..=89)
+        };
+        let haas = self.config.haas;
+        if !drills || (haas && lathe) {
+            return;
+        }
+        let letter = if haas { b'L' } else { b'K' };
+        if self.meanings.role(letter) == Some(crate::word::Role::Length) {
+            return;
+        }
+        let Some(n) = self
+            .values
+            .get(letter)
+            .or_else(|| self.values.other(letter))
+        else {
+            return;
+        };
+        if n.is_whole() && n.trunc() >= 1 {
+            return;
+        }
+        let written = format!("{}{}", letter as char, n.plain());
+        let message = match (haas, n.is_zero()) {
+            (false, true) => format!(
+                "{written}: a repeat count of zero; the FANUC stores the cycle's data and \
+                 drills no hole in this block (0i-MF, \"Canned cycle\": K the number of \
+                 repeats); where the tool goes is not said, and the plane's axes are not \
+                 followed after it"
+            ),
+            (false, false) => format!(
+                "{written}: the FANUC reads K as the cycle's number of repeats (0i-MF, \"Canned \
+                 cycle\"), a whole number; what it does with one that is not (an alarm, or a \
+                 count rounded) no source at hand says: not known, and the plane's axes are \
+                 not followed after it"
+            ),
+            (true, _) => format!(
+                "{written}: the Haas reads L as the cycle's number of holes (mill operator's \
+                 manual, G81-G89), a whole number of one or more; what it does with this one \
+                 (an alarm, a rounding, or no hole) no source at hand says: not known, and the \
+                 plane's axes are not followed after it"
+            ),
+        };
+        self.report(Rule::CycleRepeatCount, message, line, facts.col(letter));
     }
 }
 
@@ -2682,6 +2795,12 @@ mod tests {
             ("G81 X1 Y1 Z-1 R1 F100\nX2\nZ-2", &[]),
             ("G43 H1.5", &["4: Non integer value for integer"]),
             ("T1.5 M6", &["4: Non integer value for integer"]),
+            // review 52, F11: read_l reads L as an integer, within 0.0001
+            (
+                "G91 G81 X1 Y0 Z-1 R1 L2.5 F100",
+                &["4: Non integer value for integer"],
+            ),
+            ("G91 G81 X1 Y0 Z-1 R1 L2.00001 F100\nG90 G80", &[]),
             (
                 "G41 D0.1 G1 X1 Y1",
                 &["4: G41 requires D word to be a whole number"],
@@ -3594,6 +3713,16 @@ mod tests {
             ("G41.1 D1\nG28", &["5: Cannot use g28 or g30 with cutter radius comp"]),
             ("G41.1 D1\nG53 G0 X0", &["5: Cannot use g53 with cutter radius comp"]),
             ("G41.1 D1\nG17\nM61 Q1\nM19", &[]),
+            // comp52 (review 52, F3): any change of plane, the splines, G28.1/G30.1
+            ("G41.1 D1\nG18", &["5: Cannot change planes with cutter radius compensation on"]),
+            ("G41.1 D1\nG18 G40", &["5: Cannot change planes with cutter radius compensation on"]),
+            ("G18\nG41.1 D1\nG17", &["6: Cannot change planes with cutter radius compensation on"]),
+            ("G18\nG41.1 D1\nG18\nG40", &[]),
+            ("G41.1 D1\nG17.1", &["5: G17.1, G18.1 and G19.1 have no cutter radius compensation"]),
+            ("G41.1 D1\nG1 X5\nG5.1 X1 I1 J1", &["6: Cannot convert spline with cutter radius compensation"]),
+            ("G41.1 D1\nG1 X5\nG5 X2 Y2 I1 J0 P1 Q1 G40", &[]),
+            ("G41.1 D1\nG28.1", &["5: Cannot set reference point with cutter compensation in effect"]),
+            ("G41.1 D1\nG40 G30.1", &[]),
             // after a call the checker does not follow, the compensation is not known
             ("G41.1 D1\no<s> call\nG43 H1\nM2\no<s> sub\nG40\no<s> endsub", &[]),
             // the diameter mode leaves X not known exactly, Y and Z as they were
