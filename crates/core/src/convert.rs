@@ -187,6 +187,9 @@ pub struct ConvertConfig {
     /// known: true the repetitions and the program number (a FANUC), false the program number
     /// alone, the repetitions by L (a Haas, LinuxCNC) ([`Converter::m98_long_p`]).
     pub m98_repeats: Option<(bool, bool)>,
+    /// The letter the source and the target count a drilling canned cycle's repeats in, where
+    /// both have one ([`crate::lex::Family::cycle_repeat_letter`]; [`Converter::cycle_repeat_words`]).
+    pub cycle_repeats: Option<(u8, u8)>,
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
@@ -365,6 +368,7 @@ impl ConvertConfig {
             target_data_input: true,
             fanuc_haas: None,
             m98_repeats: None,
+            cycle_repeats: None,
             source_detected: false,
             src_units_given: false,
             upper_case: false,
@@ -4647,9 +4651,10 @@ impl Converter {
     /// change of units it stayed a count no one knows (review 52, F11; the checker's TG544,
     /// TG412). K0, a whole count, is kept.
     fn cycle_repeat_words(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
-        let Some((from, to)) = self.c.m98_repeats else {
+        let Some((count, to)) = self.c.cycle_repeats else {
             return Ok(());
         };
+        let from = count == b'K';
         if self.c.lathe {
             return Ok(());
         }
@@ -4657,7 +4662,6 @@ impl Converter {
         if !(self.cycle_code.is_some_and(cycle) || gs.iter().copied().any(cycle)) {
             return Ok(());
         }
-        let count = if from { b'K' } else { b'L' };
         // (a Haas's G73/G83 K is a length, its count L; a FANUC's G73/G83 K with a point is
         // the meaning table's unknown word, refused as such: `code_meanings`)
         let code = gs.iter().copied().find(|&g| cycle(g)).or(self.cycle_code);
@@ -4682,7 +4686,7 @@ impl Converter {
                 line: None,
             });
         }
-        if from == to {
+        if count == to {
             return Ok(());
         }
         let Some(w) = b
@@ -4692,8 +4696,8 @@ impl Converter {
         else {
             return Ok(());
         };
-        let reading = |fanuc: bool| {
-            if fanuc {
+        let reading = |letter: u8| {
+            if letter == b'K' {
                 "a FANUC counts a canned cycle's repeats in K"
             } else {
                 "a Haas and LinuxCNC count a canned cycle's repeats in L (a Haas's G73/G83 K is \
@@ -4706,7 +4710,7 @@ impl Converter {
                  drills another number of holes or pecks to another depth; tapegate does not \
                  move the count between letters: write it in the target's",
                 text(w.token),
-                reading(from),
+                reading(count),
                 reading(to),
             ),
             clause: "cycle",

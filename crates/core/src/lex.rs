@@ -32,6 +32,21 @@ pub enum Family {
 }
 
 impl Family {
+    /// The letter a drilling canned cycle's repeat count is written in: a FANUC's K (0i-MF
+    /// operator's manual, "Canned cycle": K the number of repeats), a Haas's L (mill operator's
+    /// manual, G81-G89: "L number of holes"; its G73/G83 K is the least peck depth, a length),
+    /// LinuxCNC's L (G-code reference, G81-G89: "L- repeat"); None for a control of another
+    /// family. The one place the modal state (the hole positions a count steps under G91), the
+    /// checker (TG544) and the converter (a count moved between letters) ask.
+    pub fn cycle_repeat_letter(self, haas: bool) -> Option<u8> {
+        match self {
+            Family::MacroB if haas => Some(b'L'),
+            Family::MacroB => Some(b'K'),
+            Family::LinuxCnc => Some(b'L'),
+            _ => None,
+        }
+    }
+
     /// Every family, in declaration order: the tables built per family and the tests that
     /// walk them all take this one list, so a new family is not missed in one of them.
     pub const ALL: [Family; 6] = [

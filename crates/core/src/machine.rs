@@ -290,6 +290,10 @@ impl Machine {
                 };
                 repeats(self.control).zip(repeats(target.control))
             },
+            cycle_repeats: {
+                let letter = |c: Control| c.family().cycle_repeat_letter(c == Control::Haas);
+                letter(self.control).zip(letter(target.control))
+            },
             source_detected: options.source_detected,
             src_units_given: options.source_units_given,
             upper_case: options.upper_case,

@@ -1448,12 +1448,10 @@ impl ModalMachine {
     /// or more (K0 stores the cycle without a hole on a FANUC: where its position goes is not
     /// said); None for no count or 1.
     fn cycle_repeats(&self, v: &BlockValues) -> Option<Option<Dec>> {
-        let letter = match self.settings.family {
-            Family::MacroB if self.settings.haas => b'L',
-            Family::MacroB => b'K',
-            Family::LinuxCnc => b'L',
-            _ => return None,
-        };
+        let letter = self
+            .settings
+            .family
+            .cycle_repeat_letter(self.settings.haas)?;
         if v.unknown & bit(letter) != 0 {
             return Some(None);
         }

@@ -2546,7 +2546,9 @@ impl Checker {
         if !drills || (haas && lathe) {
             return;
         }
-        let letter = if haas { b'L' } else { b'K' };
+        let Some(letter) = self.config.family.cycle_repeat_letter(haas) else {
+            return;
+        };
         if self.meanings.role(letter) == Some(crate::word::Role::Length) {
             return;
         }
