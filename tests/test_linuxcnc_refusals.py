@@ -1024,3 +1024,26 @@ def test_review52_a_break_rs274_does_not_refuse_is_clean(tmp_path, body):
     assert errors(text) == [], text
     out = rs274_output(tmp_path, text)
     assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("body, line", [
+    # a counter worked out from the values set before (review 52, F7): the loop turns again,
+    # and rs274 reads the definition's line a second time
+    ("#<k>=0\no1 while [#<k> LT 2]\n#<k>=[#<k>+1]\no<s> sub\nG0 X1\no<s> endsub\no1 endwhile",
+     6),
+    ("#<k>=0\no1 do\n#<k>=[#<k>+1]\no<s> sub\nG0 X1\no<s> endsub\no1 while [#<k> LT 2]", 6),
+])
+def test_review52_a_sub_defined_in_a_counted_loop_turning_twice_is_refused(
+        tmp_path, body, line):
+    text = program(body)
+    found = errors(text)
+    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
+    assert found[0][2].startswith("sub: o|s| found in illegal location (rs274ngc)")
+    assert f"line:{line} sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
+
+
+def test_review52_a_sub_defined_in_a_counted_loop_of_one_turn_is_clean(tmp_path):
+    text = program("#<k>=0\no1 while [#<k> LT 1]\n#<k>=[#<k>+1]\no<s> sub\nG0 X1\n"
+                   "o<s> endsub\no1 endwhile\no<s> call")
+    assert errors(text) == [], text
+    assert "PROGRAM_END" in rs274_output(tmp_path, text)

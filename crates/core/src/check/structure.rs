@@ -1337,7 +1337,7 @@ impl Checker {
     }
 
     /// [`Checker::linuxcnc_label_value`] of the label's value, `expression`.
-    fn linuxcnc_value_of(&self, expression: &[u8]) -> Option<f64> {
+    pub(super) fn linuxcnc_value_of(&self, expression: &[u8]) -> Option<f64> {
         // `##2`, `#[#2]`: the parameter whose number the value after the `#` is
         if let Some(inner @ [b'#' | b'[', ..]) = expression.strip_prefix(b"#") {
             let n = crate::statement::rs274_integer(self.linuxcnc_value_of(inner)?)?;
@@ -4666,8 +4666,12 @@ mod tests {
             };
             assert_eq!(refused(&text), [(5, 1)], "{text}");
         }
+        // (a value worked out from one known, review 52, F7: rs274 -g, "5: undefined O-word
+        // label: 'o#1 endif'")
+        let counted = text.replace("#1=4", "#1=[#1+1]");
+        assert_eq!(refused(&counted), [(5, 1)], "{counted}");
         // the body may not run, or its value is not followed: said, taken as closing
-        for (from, to) in [("if [1]", "if [#5220 GT 1]"), ("#1=4", "#1=[#1+1]")] {
+        for (from, to) in [("if [1]", "if [#5220 GT 1]"), ("#1=4", "#1=[#1+#5220]")] {
             let text = format!(
                 "{}G0 X#<nope>\nM2\n",
                 text.replace(from, to).replace("M2\n", "")
