@@ -913,7 +913,7 @@ def test_an_extended_address_extension_has_one_or_two_digits_and_is_positive():
 def test_constant_parameters_are_known_values_in_every_family():
     """A parameter set to a constant is that value until a jump or call: Macro B #101, the R
     parameters of Sinumerik (and ISO 6.4.7's R11 = 22.2), LinuxCNC's #<name> (blanks and case
-    ignored, as rs274 reads names)."""
+    ignored, as rs274 reads names; a bracketed expression of values known too)."""
     siemens = findings("G71 G90 G17\nR1=50000 R2=5.\nG1 X=R2 F=R1\nM30\n", "sinumerik-840d")
     assert [(f.rule, f.line) for f in siemens if f.rule in ("TG602", "TG141")] == [
         ("TG602", 3)]  # F=R1 is 50000, above feed_max 30000
@@ -924,8 +924,12 @@ def test_constant_parameters_are_known_values_in_every_family():
     arc = findings("g21 g90 g17\ng0 x0 y0\n#<Rad> = 1\ng2 x10 y0 r#<rad> f100\nm2\n",
                    "linuxcnc")
     assert [(f.rule, f.line) for f in arc if f.severity == "error"] == [("TG410", 4)]
+    # a bracketed expression of values known is worked out as rs274 does (review 52, F7);
+    # one reading a value not known is not
     computed = findings("#<feed> = [1+2]\ng1 x1 f#<feed>\nm2\n", "linuxcnc")
-    assert [(f.rule, f.line) for f in computed if f.rule == "TG141"] == [("TG141", 2)]
+    assert [(f.rule, f.line) for f in computed if f.rule == "TG141"] == []
+    unknown = findings("#<feed> = [1+#5220]\ng1 x1 f#<feed>\nm2\n", "linuxcnc")
+    assert [(f.rule, f.line) for f in unknown if f.rule == "TG141"] == [("TG141", 2)]
 
 
 @pytest.mark.parametrize("units, radius, error", [

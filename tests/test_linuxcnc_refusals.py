@@ -602,7 +602,8 @@ def test_review20_a_value_rs274_reads_is_not_refused(tmp_path, body):
 RS274_REFUSES_BARE_OPERATOR_MAY_RUN = [
     ("#1=0\no1 while [#1 LT 2]\n#1=#1+1\no1 endwhile", 5, 6, "+", True),
     ("#1=2\no1 if [1]\n#2=#1*3\no1 endif", 5, 6, "*", True),
-    ("#1=2\no1 if [#1 GT 5]\nG0 X1\no1 else\n#2=#1/3\no1 endif", 7, 6, "/", False),
+    # (the else of an if known false: it runs wherever the if is reached, review 52, F4)
+    ("#1=2\no1 if [#1 GT 5]\nG0 X1\no1 else\n#2=#1/3\no1 endif", 7, 6, "/", True),
     ("o1 do\n#3=#3-1\no1 while [#3 GT 0]", 4, 6, "-", True),
     ("o1 if [ABS[-2] GT 1]\n#3=#3-1\no1 endif", 4, 6, "-", False),
     ("o100 sub\n#<n>=#1*2\nG0 X#<n>\no100 endsub\no100 call [3]", 4, 8, "*", False),
@@ -894,3 +895,198 @@ def test_codes_rs274_refuses_under_compensation_are_told_at_the_g(tmp_path, body
     said = rs274_output(tmp_path, text)
     if said:
         assert message in said, said
+
+# Review 52, F8: an M2/M30 in a block known to run ends the program there, as one at the top
+# does: no rule judges the lines after it (the rest of its branch, an else, the lines after
+# the block), nor the rest of a branch after an M2 in a block not known to run
+@pytest.mark.parametrize("body", [
+    "o1 if [1]\nM2\no1 endif\nG999",
+    "o1 if [1]\nM2\nG999\no1 endif",
+    "o1 repeat [1]\nM30\no1 endrepeat\nG2 X1 F100",
+    "o1 if [1]\nM2\no1 else\nG2 X1 F100\no1 endif",
+    "o1 if [1]\no2 if [1]\nM2\no2 endif\nG999\no1 endif\nG998",
+    "o1 do\no2 repeat [1]\nM30\no2 endrepeat\no1 while [0]\nM72",
+    "o1 if [#<_x> GT 1]\nM2\nG999\no1 endif",
+])
+def test_review52_the_lines_after_an_m2_in_a_block_known_to_run_are_not_judged(tmp_path, body):
+    text = program(body)
+    assert errors(text) == [], text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+def test_review52_the_lines_after_a_block_whose_m2_may_not_run_are_judged(tmp_path):
+    # (the condition not known: the lines after the endif run where the M2 did not)
+    text = program("o1 if [#<_x> GT 1]\nM2\no1 endif\nG999")
+    assert [(rule, line) for rule, line, _ in errors(text)] == [("TG306", 6)]
+    assert "G-code out of range" in rs274_output(tmp_path, text)
+
+
+# Review 52, F4 (and review 51, F6): the state a block known to run leaves, nested in another
+# known to run in any way, is the state after them: a G91 there refuses a G53 (the body
+# after HEAD, the G53's line)
+G53_AFTER_NESTED = [
+    ("o1 if [1]\no2 if [1]\nG91\no2 endif\no1 endif\nG53 G0 Z0", 8),
+    ("o1 if [1]\no2 if [1]\nG91\no2 endif\nG53 G0 Z0\no1 endif", 7),
+    ("o1 repeat [1]\no2 if [1]\nG91\no2 endif\no1 endrepeat\nG53 G0 Z0", 8),
+    ("o1 if [1]\no2 repeat [1]\nG91\no2 endrepeat\no1 endif\nG53 G0 Z0", 8),
+    ("o1 if [1]\no2 if [0]\nG0 X0\no2 else\nG91\no2 endif\no1 endif\nG53 G0 Z0", 10),
+    ("o1 do\no2 if [1]\nG91\no2 endif\no1 while [0]\nG53 G0 Z0", 8),
+    ("#<k>=0\no1 do\no2 while [#<k> LT 1]\n#<k>=[#<k>+1]\nG91\no2 endwhile\no1 while [0]\n"
+     "G53 G0 Z0", 10),
+    ("o2 repeat [1]\no1 if [1]\nG91\no1 endif\no2 endrepeat\nG53 G0 X0", 8),
+    # an else after a branch that ran does not run: the branch's G91 is the mode after
+    ("o1 if [1]\nG91\no1 else\nG0 X1\no1 endif\nG53 G0 Z0", 8),
+    # the lines after a block not known to run, in a block known to run, run
+    ("o1 if [1]\no2 if [#<_x> GT 1]\nG0 X1\no2 endif\nG91\no1 endif\nG53 G0 Z0", 9),
+]
+
+
+@pytest.mark.parametrize("body, line", G53_AFTER_NESTED)
+def test_review52_a_g91_in_nested_blocks_known_to_run_refuses_the_g53_after(
+        tmp_path, body, line):
+    text = program(body)
+    found = errors(text)
+    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
+    assert found[0][2].startswith("Cannot use g53 incremental (rs274ngc)")
+    assert "Cannot use g53 incremental" in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body", [
+    "G91\no1 if [1]\no2 if [1]\nG90\no2 endif\no1 endif\nG53 G0 Z0",
+    "o1 if [1]\no2 if [#<_x> GT 1]\nG91\no2 endif\no1 endif\nG53 G0 Z0",
+    # a loop whose first turn runs a G91 and whose second a G90: the mode after it is not the
+    # first turn's (its condition, or its count, runs it again)
+    "#<k>=0\no1 while [#<k> LT 2]\no2 if [#<k> EQ 0]\nG91\no2 else\nG90\no2 endif\n"
+    "#<k>=[#<k>+1]\no1 endwhile\nG53 G0 Z0",
+    "#<k>=0\no1 repeat [2]\no2 if [#<k> EQ 0]\nG91\no2 else\nG90\no2 endif\n#<k>=1\n"
+    "o1 endrepeat\nG53 G0 Z0",
+    # a break surely taken (in a block known to run), or perhaps taken: the G91 after it
+    # does not run, or may not
+    "o1 do\no2 if [1]\no1 break\no2 endif\nG91\no1 while [0]\nG53 G0 Z0",
+    "o1 do\no2 if [#<_x> LT 1]\no1 break\no2 endif\nG91\no1 while [0]\nG53 G0 Z0",
+])
+def test_review52_a_mode_nested_blocks_may_not_leave_refuses_nothing(tmp_path, body):
+    text = program(body)
+    assert errors(text) == [], text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("body, line, says", [
+    ("o1 if [1]\no2 repeat [1]\nM[3.5]\no2 endrepeat\no1 endif", 5,
+     "Non integer value for integer"),
+    ("o1 if [1]\no2 if [1]\nM72\no2 endif\no1 endif", 5,
+     "Cannot restore context from invalid stack frame"),
+    ("o1 if [0]\nG0 X1\no1 else\no2 if [1]\nG0 X2 Y2 P1\no2 endif\no1 endif", 7,
+     "P word with no"),
+])
+def test_review52_a_line_in_nested_blocks_known_to_run_is_refused_as_it_runs(
+        tmp_path, body, line, says):
+    text = program(body)
+    found = errors(text)
+    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
+    assert found[0][2].startswith(says), found
+    assert "when it runs it" not in found[0][2]
+    assert says in rs274_output(tmp_path, text)
+
+
+# Review 52, F7: a call that surely runs of a subroutine whose only definition stands in a
+# block known not to run: rs274 skipped the definition without recording it and seeks the sub
+# from the call to the end of the file
+def test_review52_a_call_of_a_sub_defined_only_in_a_block_not_run_is_refused(tmp_path):
+    text = program("o1 if [0]\no<s> sub\nG0 X1\no<s> endsub\no1 endif\no<s> call")
+    found = errors(text)
+    assert [(rule, line) for rule, line, _ in found] == [("TG412", 8)], found
+    assert found[0][2].startswith("EOF in file seeking o-word: o<s> from line: 8 (rs274ngc)")
+    out = rs274_output(tmp_path, text)
+    assert "seeking o-word: o<s> from line: 8" in out, out
+
+
+@pytest.mark.parametrize("body", [
+    # a call before the definition finds it (the search reads o-word lines alone), and
+    # rs274 skips it when it comes to the block
+    "o<s> call\no1 if [0]\no<s> sub\nG0 X1\no<s> endsub\no1 endif",
+    "o<s> call\no1 if [0]\no<s> sub\nG0 X1\no<s> endsub\no1 endif\no<s> call",
+    # another definition the call finds after it
+    "o1 if [0]\no<s> sub\nG0 X1\no<s> endsub\no1 endif\no<s> sub\nG0 X2\no<s> endsub\n"
+    "o<s> call",
+    # the skip goes on after the definition it passes over
+    "o1 if [0]\no<s> sub\nG0 X1\no<s> endsub\nM72\no1 endif",
+    # a definition in a block known to run, or in a loop of one turn
+    "o1 if [1]\no<s> sub\nG0 X1\no<s> endsub\no1 endif\no<s> call",
+    "o1 do\no<s> sub\nG0 X1\no<s> endsub\no1 while [0]\no<s> call",
+    "o1 repeat [1]\no<s> sub\nG0 X1\no<s> endsub\no1 endrepeat\no<s> call",
+])
+def test_review52_a_sub_defined_in_a_block_is_found_where_rs274_finds_it(tmp_path, body):
+    text = program(body)
+    assert errors(text) == [], text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+def test_review52_a_sub_defined_only_in_a_block_not_run_is_found_after_the_end(tmp_path):
+    text = program("o1 if [0]\no<s> sub\nG0 X1\no<s> endsub\no1 endif\no<s> call") + (
+        "o<s> sub\nG0 X2\no<s> endsub\n")
+    assert errors(text) == [], text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+# Review 52, F9: a break or continue of an if's label rs274 reads whichever way the condition
+# goes (it runs the branch to it, or skips to it), and one of a subroutine's own label
+@pytest.mark.parametrize("body, line, says", [
+    ("o1 if [#5399 GT 1]\no1 break\no1 endif", 4,
+     "no matching while/do label: 'o1 break' (found 'if' in line 3)"),
+    ("o1 if [#<_x> GT 1]\no1 continue\no1 endif", 4,
+     "no matching while/do label: 'o1 continue' (found 'if' in line 3)"),
+    ("o1 if [#5399 LT 1]\no1 endif\no1 break", 5,
+     "no matching while/do label: 'o1 break' (found 'if' in line 3)"),
+    ("o1 repeat [#5399]\no1 break\no1 endrepeat", 4,
+     "no matching while/do label: 'o1 break' (found 'repeat' in line 3)"),
+    ("o<s> sub\no<s> continue\no<s> endsub\no<s> call", 4,
+     "undefined O-word label: 'o<s> continue'"),
+    ("o<s> sub\nG0 X1\no<s> break\no<s> endsub\no<s> call", 5,
+     "undefined O-word label: 'o<s> break'"),
+])
+def test_review52_a_break_of_no_loop_s_label_is_refused(tmp_path, body, line, says):
+    text = program(body)
+    found = errors(text)
+    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
+    assert found[0][2].startswith(says.split(":")[0] + " (rs274ngc)"), found
+    assert says in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body", [
+    "o1 do\no2 if [#<_x> GT 1]\no1 break\no2 endif\nG0 X1\no1 while [0]",
+    "o2 if [0]\no1 if [1]\no1 break\no1 endif\no2 endif",
+    "o<s> sub\no1 if [#1 GT 1]\no<s> break\no1 endif\no<s> endsub\no<s> call",
+])
+def test_review52_a_break_rs274_does_not_refuse_is_clean(tmp_path, body):
+    text = program(body)
+    assert errors(text) == [], text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+@pytest.mark.parametrize("body, line", [
+    # a counter worked out from the values set before (review 52, F7): the loop turns again,
+    # and rs274 reads the definition's line a second time
+    ("#<k>=0\no1 while [#<k> LT 2]\n#<k>=[#<k>+1]\no<s> sub\nG0 X1\no<s> endsub\no1 endwhile",
+     6),
+    ("#<k>=0\no1 do\n#<k>=[#<k>+1]\no<s> sub\nG0 X1\no<s> endsub\no1 while [#<k> LT 2]", 6),
+])
+def test_review52_a_sub_defined_in_a_counted_loop_turning_twice_is_refused(
+        tmp_path, body, line):
+    text = program(body)
+    found = errors(text)
+    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
+    assert found[0][2].startswith("sub: o|s| found in illegal location (rs274ngc)")
+    assert f"line:{line} sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
+
+
+def test_review52_a_sub_defined_in_a_counted_loop_of_one_turn_is_clean(tmp_path):
+    text = program("#<k>=0\no1 while [#<k> LT 1]\n#<k>=[#<k>+1]\no<s> sub\nG0 X1\n"
+                   "o<s> endsub\no1 endwhile\no<s> call")
+    assert errors(text) == [], text
+    assert "PROGRAM_END" in rs274_output(tmp_path, text)

@@ -1674,8 +1674,10 @@ mod tests {
     /// Review 51, F3: `break` and `continue` leave a `do` or `while` only; of a label recorded
     /// for an `if` or a `repeat` rs274 refuses them where it reaches them ("5: no matching
     /// while/do label: 'o1 continue' (found 'repeat' in line 3)", `rs274 -g`), a skip of a
-    /// block known not to run ending at them too; not where the block's condition or count is
-    /// not known (it may not be reached).
+    /// block known not to run ending at them too; where the block's condition or count is not
+    /// known, in its first branch with no o-word line before them, too (rs274 runs the branch
+    /// to them or skips to them; review 52, F9); not where they may not be reached (after an
+    /// `else` of a branch that may end the program, in a block not run).
     #[test]
     fn linuxcnc_refuses_a_break_of_an_if_or_a_repeat() {
         let refused = |text: &str| {
@@ -1704,10 +1706,22 @@ mod tests {
             assert_eq!((said[0].0, said[0].1), (5, 1), "{text}");
             assert_eq!(said[0].2, "no matching while/do label", "{text}");
         }
+        // (its count not known: rs274 runs the body to the break, or skips to it; review 52,
+        // F9: "4: no matching while/do label: 'o1 break' (found 'repeat' in line 3)")
+        for text in [
+            "o1 repeat [#<_x>]\no1 break\no1 endrepeat\nM2\n",
+            "o1 if [#<_x> GT 1]\no1 break\no1 endif\nM2\n",
+        ] {
+            let said = refused(&format!("{head}{text}"));
+            assert_eq!(said.len(), 1, "{text}");
+            assert_eq!((said[0].0, said[0].1), (4, 1), "{text}");
+            assert_eq!(said[0].2, "no matching while/do label", "{text}");
+        }
         for text in [
             "o1 do\nG0 X1\no1 break\no1 while [1]\nM2\n",
             "o1 while [#<_x> LT 1]\no2 repeat [2]\no1 break\no2 endrepeat\no1 endwhile\nM2\n",
-            "o1 repeat [#<_x>]\no1 break\no1 endrepeat\nM2\n",
+            "o2 if [0]\no1 if [1]\no1 break\no1 endif\no2 endif\nM2\n",
+            "o1 if [#<_x> GT 1]\nM2\no1 else\no1 break\no1 endif\nM2\n",
         ] {
             let text = format!("{head}{text}");
             assert!(refused(&text).is_empty(), "{text}");

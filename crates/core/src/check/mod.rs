@@ -1082,13 +1082,11 @@ pub struct Checker {
     /// `endif`, an `if` with an `else` all of whose branches ended ends the main program
     /// there (issue 32: a definition after such an `endif` is never reached; rs274 agrees).
     linuxcnc_if_ends: Vec<(usize, bool, bool)>,
-    /// LinuxCNC: for each block of `linuxcnc_open_flow`, its label as written (`o#1`), its
-    /// line, and whether its lines run up to the next o-word line as the checker reads them
-    /// (it opened at the top of the main program, with a condition known true: Some(true);
-    /// known false: Some(false), none of them runs; else None): a closing label worked out
-    /// as the line runs is read with the values of that first run
-    /// (`Checker::linuxcnc_closing_label`; review 48, F10; review 49a, F2).
-    linuxcnc_open_at: Vec<(Vec<u8>, usize, Option<bool>)>,
+    /// LinuxCNC: for each block of `linuxcnc_open_flow`, what the checker knows of its lines'
+    /// run ([`structure::OpenBlock`]): whether they run, a closing label worked out as the
+    /// line runs read with the values of that first run (`Checker::linuxcnc_closing_label`;
+    /// review 48, F10; review 49a, F2).
+    linuxcnc_open_at: Vec<structure::OpenBlock>,
     /// LinuxCNC: the parameters (by key; empty: any, a call) assigned while a block of
     /// `linuxcnc_open_flow` is open, with their lines (review 48, F10).
     linuxcnc_flow_assigned: Vec<(usize, Vec<u8>)>,
@@ -1189,6 +1187,14 @@ pub struct Checker {
     linuxcnc_if_speed: Vec<(Vec<u8>, Option<Dec>, bool, bool)>,
     linuxcnc_speed_back: Option<(Option<Dec>, bool)>,
     linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
+    /// LinuxCNC: the subroutines whose only definition read so far stands in the skip of a
+    /// block known not to run, which rs274 does not record (name, the definition's line, the
+    /// skipped block's); the calls that surely run of one of them, not defined by then,
+    /// waiting for a definition after them (name, line, column); and a skip held while a
+    /// definition inside it is read (review 52, F7).
+    linuxcnc_dead_defs: Vec<(Vec<u8>, usize, usize)>,
+    linuxcnc_dead_called: Vec<(Vec<u8>, usize, usize)>,
+    linuxcnc_skip_held: Option<(Vec<u8>, usize, bool)>,
     /// LinuxCNC: the main program's one loop open at its top whose body the checker knows
     /// runs, and the definitions its body holds where its lines surely ran
     /// ([`structure::LoopDefinitions`]; boxed: seldom set).
@@ -1429,6 +1435,9 @@ impl Checker {
             linuxcnc_if_speed: Vec::new(),
             linuxcnc_speed_back: None,
             linuxcnc_called_ahead: Vec::new(),
+            linuxcnc_dead_defs: Vec::new(),
+            linuxcnc_dead_called: Vec::new(),
+            linuxcnc_skip_held: None,
             linuxcnc_loop_defs: None,
             call_units: HashMap::new(),
             units_unknown: false,
@@ -2470,8 +2479,10 @@ impl Checker {
         if ends {
             self.ended_line = b.line;
             // (LinuxCNC: one in a block known to run ends it too: review 51, F13)
-            if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_known() {
+            if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {
                 self.surely_ended = true;
+                // (LinuxCNC: the lines after it are dead, read in full: subroutine_file)
+                self.linuxcnc_quiet = false;
             } else if self.open_definition.is_none() {
                 let depth = self.linuxcnc_open_flow.len();
                 self.linuxcnc_end_depth =

@@ -1186,6 +1186,24 @@ impl Checker {
         None
     }
 
+    /// LinuxCNC: the value of an assignment's bracketed expression (`#<k> = [#<k> + 1]`)
+    /// where every parameter it reads is known, worked out as rs274 does, in doubles
+    /// (interp_execute.cc; [`Checker::linuxcnc_value_of`]): the first line of the setting
+    /// read (its first turn in a loop, the values after it forgotten at the loop's closing
+    /// line). Asked only where no earlier word of the line set a parameter (rs274 reads the
+    /// line's words with the values from before it). None for a value it cannot work out, or
+    /// one not finite (review 52, F7: a counter's loop known to turn again).
+    fn linuxcnc_evaluated(&self, expression: &[u8]) -> Option<Dec> {
+        if expression.first() != Some(&b'[') {
+            return None;
+        }
+        let value = self.linuxcnc_value_of(expression)?;
+        if !value.is_finite() {
+            return None;
+        }
+        Dec::parse(&format!("{value}"))
+    }
+
     /// A SINUMERIK expression's value where what it reads is known or holds the
     /// fall-through's value at the last arrival (one at least: else it is known, or not).
     fn sinumerik_arrived(&self, expression: &[u8]) -> Option<Dec> {
@@ -1476,6 +1494,11 @@ impl Checker {
                         }
                         None => self.copied(w.expression, &mut arrived),
                     };
+                    let value = value.or_else(|| {
+                        (linuxcnc && set_before.is_empty())
+                            .then(|| self.linuxcnc_evaluated(w.expression))
+                            .flatten()
+                    });
                     (parameter_name(b'#', w.index), value)
                 }
                 b'#' if !w.index.is_empty() => {
@@ -1521,6 +1544,11 @@ impl Checker {
                     };
                     let text: Vec<u8> = rest.iter().copied().filter(|&c| !blank(c)).collect();
                     let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    let value = value.or_else(|| {
+                        (linuxcnc && set_before.is_empty())
+                            .then(|| self.linuxcnc_evaluated(&text))
+                            .flatten()
+                    });
                     (named_parameter(&w.expression[1..close]), value)
                 }
                 _ => continue,

@@ -316,6 +316,9 @@ impl Checker {
         self.linuxcnc_if_speed.clear();
         self.linuxcnc_speed_back = None;
         self.linuxcnc_called_ahead.clear();
+        self.linuxcnc_dead_defs.clear();
+        self.linuxcnc_dead_called.clear();
+        self.linuxcnc_skip_held = None;
         self.linuxcnc_loop_defs = None;
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
@@ -668,9 +671,12 @@ impl Checker {
     /// call` runs the file of that name, which holds the definition), returns to its caller
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
     ///
-    /// Returns whether the line is one in the skip of a block known not to run and no o-word
-    /// line ([`Checker::linuxcnc_skipping`]): rs274 reads it for its o-word only and runs
-    /// nothing of it, so no rule judges it and it changes no state (review 51, F4).
+    /// Returns whether the line is one of the main program rs274 never runs, no o-word line
+    /// ([`Checker::linuxcnc_dead`]): in the skip of a block known not to run, or after the
+    /// program's end -- an M2/M30 in a block known to run, the rest of a branch after its
+    /// M2. rs274 reads it for its o-word only, or not at all, and runs nothing of it, so no
+    /// rule judges it and it changes no state, as after an M2 at the top (review 51, F4;
+    /// review 52, F8). A definition's body is read as one wherever it stands.
     #[inline(always)]
     pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) -> bool {
         if self.config.family != Family::LinuxCnc {
@@ -719,16 +725,18 @@ impl Checker {
             return false;
         }
         self.subroutine_file_read(b);
-        self.linuxcnc_skipping.is_some() && b.statements.is_empty()
+        b.statements.is_empty() && self.open_definition.is_none() && self.linuxcnc_dead()
     }
 
     /// The file is no subroutine file, no definition is open, and no spindle speed is
     /// followed through a condition ([`Checker::linuxcnc_if_speed`]): the short path of
     /// [`Checker::subroutine_file`] may be taken (where no M2/M30 inside a condition came
-    /// before, too), and no skip of a block known not to run is on.
+    /// before, too), and no skip of a block known not to run is on, nor the program ended
+    /// (its lines after the end, in a block, are dead: [`Checker::subroutine_file`]).
     fn linuxcnc_quiet_now(&self) -> bool {
         self.sub_file == SubFile::No
             && self.linuxcnc_skipping.is_none()
+            && !self.surely_ended
             && self.open_definition.is_none()
             && self.linuxcnc_speed_back.is_none()
             && self.linuxcnc_if_speed.is_empty()
@@ -828,15 +836,28 @@ impl Checker {
             // set here, or a definition, may end it too)
             // (a call the skip passes over never runs: it does not end the skip, review 51,
             // F4; an `else` or `elseif` after a branch that ran does not either)
-            if self.linuxcnc_skipping.as_ref().is_some_and(|s| {
-                s.0 == label
-                    && (!s.2
-                        || crate::statement::o_keyword(text).as_deref()
-                            == Some(b"endif".as_slice()))
+            // (the skip of a branch known not to run that its label's line ends: the branch
+            // this line begins runs where the blocks around it do, Checker::linuxcnc_branch)
+            // (a definition in the skip is read as one, the skip held to its endsub: rs274
+            // skips it, and the lines after it to the skip's end, review 52, F7)
+            let mut skip_ended = false;
+            if let Some(s) = &self.linuxcnc_skipping {
+                skip_ended = s.0 == label && !s.2;
+                if kind == Kind::Definition && self.open_definition.is_some() {
+                    self.linuxcnc_skip_held = self.linuxcnc_skipping.take();
+                    skip_ended = false;
+                } else if skip_ended
+                    || s.0 == label
+                        && crate::statement::o_keyword(text).as_deref() == Some(b"endif".as_slice())
                     || kind == Kind::Definition
                     || crate::statement::computed_label(&crate::statement::o_label(text))
-            }) {
-                self.linuxcnc_skipping = None;
+                {
+                    self.linuxcnc_skipping = None;
+                }
+            } else if kind == Kind::Definition && self.open_definition.is_none() {
+                if let Some(held) = self.linuxcnc_skip_held.take() {
+                    self.linuxcnc_skipping = Some(held);
+                }
             }
             let named = &mut self.linuxcnc_labels_named;
             if crate::statement::computed_label(&label) {
@@ -850,9 +871,10 @@ impl Checker {
             if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
                 // (a call may set any parameter, or end the program: F10's first run ends)
                 for e in &mut self.linuxcnc_open_at {
-                    if e.2 == Some(true) {
-                        e.2 = None;
+                    if e.runs == Some(true) {
+                        e.runs = None;
                     }
+                    e.straight &= e.runs == Some(false);
                 }
                 self.linuxcnc_flow_assigned.push((b.line, Vec::new()));
             }
@@ -869,24 +891,21 @@ impl Checker {
                 (Kind::Flow, true) => {
                     let top = self.linuxcnc_open_flow.is_empty();
                     // (whether the lines of the one block open ran up to this one)
-                    let ran =
-                        !b.skip && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]);
-                    let other_branch = self.linuxcnc_main_flow(text, b.line, column);
+                    let ran = !b.skip
+                        && matches!(self.linuxcnc_open_at.as_slice(), [e] if e.runs == Some(true));
+                    let step = self.linuxcnc_main_flow(text, (b.line, column), skip_ended);
                     if top || self.linuxcnc_loop_defs.is_some() {
                         self.linuxcnc_loop_turns(text, top, ran);
                     }
-                    if let [(_, at, Some(false))] = self.linuxcnc_open_at.as_slice() {
-                        if top && *at == b.line && !b.skip {
-                            self.linuxcnc_skipping = Some((label, b.line, false));
-                        }
-                    } else if other_branch && !b.skip && self.linuxcnc_skipping.is_none() {
-                        self.linuxcnc_skipping = Some((label, b.line, true));
-                    } else if !top
-                        && !b.skip
-                        && (self.linuxcnc_nested_dead(text, b.line)
-                            || self.linuxcnc_loop_left(text, &label))
-                    {
+                    if b.skip || self.linuxcnc_skipping.is_some() {
+                    } else if step.dead {
                         self.linuxcnc_skipping = Some((label, b.line, false));
+                    } else if step.other_branch {
+                        self.linuxcnc_skipping = Some((label, b.line, true));
+                    } else if !top && self.linuxcnc_nested_dead(text, b.line) {
+                        self.linuxcnc_skipping = Some((label, b.line, false));
+                    } else if !top {
+                        self.linuxcnc_loop_leave(text, &label, b.line);
                     }
                 }
                 (Kind::Flow, false) => {
@@ -1102,9 +1121,30 @@ impl Checker {
     /// program comes to that definition again after the call, rs274 refuses it ("sub: o|100|
     /// found in illegal location"; with a file of that name, "redefining sub"). Only the
     /// main program's own calls and definitions, before its M2/M30, are followed: a
-    /// definition after the end is never reached.
+    /// definition after the end is never reached. A definition in the skip of a block known
+    /// not to run is one the program never comes to: found by a call before it (the search
+    /// reads o-word lines alone, whatever block they stand in), it is recorded there and
+    /// runs; else rs274 skips it without recording it, and a call after it that surely runs
+    /// seeks the subroutine from the call to the file's end ([`LINUXCNC_EOF_SEEKING`],
+    /// said at the end where no definition of it came after the call; `rs274 -g`; review
+    /// 52, F7).
     fn definition_after_call(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        if let Some((true, name)) = statement {
+            if self.linuxcnc_skipping.is_none() {
+                self.linuxcnc_dead_called.retain(|c| c.0 != *name);
+            }
+        }
         if self.open_definition.is_some() || self.main_ended() {
+            return;
+        }
+        if let Some((true, name)) = statement.filter(|_| self.linuxcnc_skipping.is_some()) {
+            if let Some(at) = self.linuxcnc_called_ahead.iter().position(|c| c.0 == *name) {
+                self.linuxcnc_called_ahead.swap_remove(at);
+                self.linuxcnc_defined.push(name.clone());
+            } else if !self.linuxcnc_defined.contains(name) {
+                let block = self.linuxcnc_skipping.as_ref().map_or(0, |s| s.1);
+                self.linuxcnc_dead_defs.push((name.clone(), b.line, block));
+            }
             return;
         }
         if let Some((true, name)) = statement {
@@ -1137,7 +1177,7 @@ impl Checker {
             if let Some(defs) = self.linuxcnc_loop_defs.as_mut() {
                 if !b.skip
                     && self.linuxcnc_open_flow.len() == 1
-                    && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))])
+                    && matches!(self.linuxcnc_open_at.as_slice(), [e] if e.runs == Some(true))
                 {
                     let column = b.statements.first().map_or(1, |s| s.0);
                     defs.defs.push((name.clone(), b.line, column));
@@ -1152,6 +1192,18 @@ impl Checker {
                 continue;
             }
             let label = self.linuxcnc_call_label(text);
+            let dead_only = !self.linuxcnc_defined.contains(&label)
+                && self.linuxcnc_dead_defs.iter().any(|d| d.0 == label);
+            if dead_only
+                && !b.skip
+                && !self.linuxcnc_dead()
+                && self.linuxcnc_runs_surely()
+                && !self.linuxcnc_dead_called.iter().any(|c| c.0 == label)
+            {
+                let column = b.statements.first().map_or(1, |s| s.0);
+                self.linuxcnc_dead_called
+                    .push((label.clone(), b.line, column));
+            }
             if !self.linuxcnc_defined.contains(&label)
                 && !self.linuxcnc_called_ahead.iter().any(|(l, _)| *l == label)
             {
@@ -1289,7 +1341,7 @@ impl Checker {
     }
 
     /// [`Checker::linuxcnc_label_value`] of the label's value, `expression`.
-    fn linuxcnc_value_of(&self, expression: &[u8]) -> Option<f64> {
+    pub(super) fn linuxcnc_value_of(&self, expression: &[u8]) -> Option<f64> {
         // `##2`, `#[#2]`: the parameter whose number the value after the `#` is
         if let Some(inner @ [b'#' | b'[', ..]) = expression.strip_prefix(b"#") {
             let n = crate::statement::rs274_integer(self.linuxcnc_value_of(inner)?)?;
@@ -1749,41 +1801,40 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC: whether the line in hand runs whenever the program runs to it: no o-word
-    /// condition or loop of the main program is open, nor a subroutine's definition (rs274
-    /// runs its body only when called). Only there are the refusals rs274 makes while it runs
-    /// a line judged ([`Checker::linuxcnc_open_flow`]).
-    /// A single condition or loop of the main program whose body the checker knows runs
-    /// (`o1 if [1]`, `o1 repeat [2]`, a `do`), with no o-word line since it opened, counts as
-    /// none: its lines up to here run whenever the program reaches them (`rs274 -g` refuses
-    /// `M[3.5]` after `o1 if [1]`: "Non integer value for integer";
-    /// [`Checker::linuxcnc_body_runs`]).
+    /// LinuxCNC: whether the line in hand runs whenever the program runs to it: outside a
+    /// subroutine's definition (rs274 runs its body only when called), every o-word condition
+    /// or loop of the main program open is one whose lines the checker knows run
+    /// ([`OpenBlock::runs`]: `o1 if [1]`, `o1 repeat [2]`, a `do`, nested in one another in
+    /// any way; none open at the top). Only there are the refusals rs274 makes while it runs a
+    /// line judged ([`Checker::linuxcnc_open_flow`]; `rs274 -g` refuses `M[3.5]` after `o1
+    /// if [1]`: "Non integer value for integer"; review 51, F11, F13; review 52, F4).
     pub(super) fn linuxcnc_runs_surely(&self) -> bool {
-        self.open_definition.is_none()
-            && (self.linuxcnc_open_flow.is_empty()
-                || matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]))
+        self.open_definition.is_none() && self.linuxcnc_open_known()
     }
 
-    /// LinuxCNC: whether the block is the o-word line that opened the main program's one
-    /// condition or loop whose body the checker knows runs
-    /// ([`Checker::linuxcnc_runs_surely`]): no jump, as rs274 runs the line after it next, in
-    /// the state the program left (`o1 if [1]` / `X2 Y2 P1` under G0 is refused: "P word
-    /// with no G2 G3 G4 ... to use it"). The lines after the block's next o-word line (an
-    /// `else`, an `endwhile` going back) are read as after a jump, as before.
+    /// LinuxCNC: every condition or loop of the main program open is known to run
+    /// ([`OpenBlock::runs`]), none open included.
+    fn linuxcnc_open_known(&self) -> bool {
+        self.linuxcnc_open_at.iter().all(|e| e.runs == Some(true))
+    }
+
+    /// LinuxCNC: whether the block is the o-word line that opened the main program's
+    /// innermost condition or loop, or began its branch, where the checker knows whether its
+    /// lines run and every block around it runs ([`Checker::linuxcnc_runs_surely`]): no
+    /// jump, as rs274 runs the line after it next, in the state the program left (`o1 if
+    /// [1]` / `X2 Y2 P1` under G0 is refused: "P word with no G2 G3 G4 ... to use it"), or
+    /// skips to the next o-word line of its label, running nothing between (one known not
+    /// to, outside a block delete: the state stays for that line). The lines after the
+    /// block's closing line (an `endwhile` going back) are read as after a jump, as before.
     pub(super) fn linuxcnc_opened_running(&self, b: &BlockView<'_>) -> bool {
+        let Some((last, around)) = self.linuxcnc_open_at.split_last() else {
+            return false;
+        };
         self.config.family == Family::LinuxCnc
             && matches!(b.statements, [(_, Kind::Flow, _)])
-            && matches!(self.linuxcnc_open_at.as_slice(), [(_, at, Some(true))] if *at == b.line)
-    }
-
-    /// LinuxCNC: whether the line in hand runs whenever the program runs to it, its conditions
-    /// known: [`Checker::linuxcnc_runs_surely`], or inside one `do`, or one `if`, `while` or
-    /// `repeat` at the top of the main program the checker knows runs, with no o-word line
-    /// since it opened ([`Checker::linuxcnc_body_runs`]; review 51, F11, F13).
-    pub(super) fn linuxcnc_runs_known(&self) -> bool {
-        self.linuxcnc_runs_surely()
-            || self.open_definition.is_none()
-                && matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))])
+            && last.branch == b.line
+            && (last.runs == Some(true) || last.runs == Some(false) && !b.skip)
+            && around.iter().all(|e| e.runs == Some(true))
     }
 
     /// LinuxCNC: whether the line in hand of the main program is one rs274 never runs: in
@@ -1814,16 +1865,27 @@ impl Checker {
     /// not: an M2/M30 in that branch (at the label's depth or deeper) no longer ends the lines
     /// (review 20). An `endif` whose `if` has an `else` and whose every branch ended in an
     /// M2/M30 ends the main program where the `if` stands: rs274 reads no line after it
-    /// (issue 32; interp_o_word.cc runs one branch, and each ends the program). Returns
-    /// whether the line is an `else`/`elseif` of an `if` at the top of the main program
-    /// whose branch before it surely ran (known true, no o-word line since): rs274 skips
-    /// from it to the `endif` (review 51, F4).
-    fn linuxcnc_main_flow(&mut self, text: &[u8], line: usize, column: usize) -> bool {
+    /// (issue 32; interp_o_word.cc runs one branch, and each ends the program). What the
+    /// checker knows of the run of the blocks open follows ([`OpenBlock`]): a block opened,
+    /// a branch begun, blocks closed (`skip_ended`: the skip of a branch known not to run,
+    /// of this line's label, ended here). Returns whether the line is an `else`/`elseif`
+    /// whose branch before it surely ran (known true), so that rs274 skips from it to the
+    /// `endif` (review 51, F4), and whether it opens a block or begins a branch known not to
+    /// run where the program reaches it (review 52, F4).
+    fn linuxcnc_main_flow(
+        &mut self,
+        text: &[u8],
+        (line, column): (usize, usize),
+        skip_ended: bool,
+    ) -> FlowStep {
         let keyword = crate::statement::o_keyword(text);
-        // (whether the innermost block's lines ran up to this one: no o-word line since it)
-        let ran = self.linuxcnc_open_at.last().and_then(|e| e.2);
+        // (whether the innermost block's lines ran up to this one, one after the other: no
+        // o-word line since it opened; and whether its branch in hand runs)
+        let last = self.linuxcnc_open_at.last();
+        let ran = last.filter(|e| e.straight).and_then(|e| e.runs);
+        let branch_ran = last.and_then(|e| e.runs);
         for e in &mut self.linuxcnc_open_at {
-            e.2 = None;
+            e.straight = false;
         }
         // (a computed label, `o#1 endwhile`, by its value where rs274 reads the line: matched
         // to the `o5 while` of #1=5, `rs274 -g`)
@@ -1831,10 +1893,8 @@ impl Checker {
         let branch_ended = |at: usize| self.linuxcnc_end_depth.is_some_and(|d| d > at);
         let mut all_ended = None;
         let switched = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label);
-        let other_branch = switched == Some(0)
-            && ran == Some(true)
-            && self.linuxcnc_open_flow.len() == 1
-            && !self.main_ended();
+        let innermost = switched.is_some_and(|at| at + 1 == self.linuxcnc_open_flow.len());
+        let other_branch = innermost && branch_ran == Some(true) && !self.main_ended();
         if let Some(at) = switched {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
@@ -1860,21 +1920,29 @@ impl Checker {
         self.linuxcnc_label_recorded(text, keyword.as_deref(), &label, (line, column));
         linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
+        let mut dead = false;
         if open > depth {
-            let runs = if depth == 0 && !self.main_ended() {
-                self.linuxcnc_body_runs(text)
-            } else {
-                None
-            };
-            let written = crate::statement::o_label(text);
-            self.linuxcnc_open_at.push((written, line, runs));
-        } else {
-            self.linuxcnc_open_at.truncate(open);
+            let opened = self.linuxcnc_opening(text, line);
+            dead = opened.runs == Some(false);
+            self.linuxcnc_open_at.push(opened);
+        } else if open < depth {
+            self.linuxcnc_blocks_closed(text, open);
+        } else if let Some(at) = switched {
+            let before_false = skip_ended && branch_ran == Some(false);
+            dead = self.linuxcnc_branch(text, line, at, other_branch, before_false);
+        } else if !matches!(keyword.as_deref(), Some(b"break" | b"continue")) {
+            // (another o-word line: which lines run after it is not followed; a break or
+            // continue, Checker::linuxcnc_loop_leave)
+            for e in &mut self.linuxcnc_open_at {
+                e.runs = None;
+            }
         }
         if open == 0 {
             self.linuxcnc_flow_assigned.clear();
         }
-        self.linuxcnc_distance_scope(open, switched);
+        // (the `else` after a branch that surely ran never runs: the mode that branch wrote
+        // is the mode after the `endif`)
+        self.linuxcnc_distance_scope(open, switched.filter(|_| !other_branch));
         self.linuxcnc_if_ends.retain(|e| e.0 < open);
         if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
             self.linuxcnc_if_ends.push((depth, true, false));
@@ -1882,7 +1950,128 @@ impl Checker {
         if let Some(at) = all_ended {
             self.linuxcnc_end_depth = Some(self.linuxcnc_end_depth.map_or(at, |d| d.min(at)));
         }
-        other_branch
+        FlowStep { other_branch, dead }
+    }
+
+    /// LinuxCNC: the block the main program's o-word `text` on `line` opens. Where every
+    /// block around it is known to run (its opening runs surely), before the program's end
+    /// and outside a skip, whether its lines run is worked out
+    /// ([`Checker::linuxcnc_body_runs`]) from the values the program set before it, its
+    /// first run's; a condition that reads a parameter makes every loop around it one whose
+    /// turns may differ ([`OpenBlock::varies`]).
+    fn linuxcnc_opening(&mut self, text: &[u8], line: usize) -> OpenBlock {
+        let (keyword, condition) = o_keyword_condition(text);
+        let known = self.linuxcnc_skipping.is_none()
+            && !self.main_ended()
+            && self.linuxcnc_open_at.iter().all(|e| e.runs == Some(true));
+        let runs = known.then(|| self.linuxcnc_body_runs(text)).flatten();
+        if runs.is_some() && condition.contains(&b'#') {
+            self.linuxcnc_turns_vary();
+        }
+        let looped = (keyword != b"if").then(|| {
+            let again = (keyword == b"repeat")
+                .then(|| self.linuxcnc_condition_value(condition))
+                .flatten()
+                .map(|v| v.round_ties_even() >= 2.0);
+            (text.to_vec(), again)
+        });
+        OpenBlock {
+            written: crate::statement::o_label(text),
+            line,
+            runs,
+            branch: line,
+            straight: true,
+            looped,
+            varies: false,
+        }
+    }
+
+    /// LinuxCNC: an `else`/`elseif` (`text`, on `line`) of the `if` open at `at`: the branch
+    /// it begins runs where every branch before it is known not to run (`before_false`) and
+    /// the blocks around the `if` are known to run -- an `else` surely, an `elseif` as its
+    /// condition is known; it does not where the branch before surely ran (`other_branch`).
+    /// Returns whether it begins a branch known not to run (not that `else`, whose skip goes
+    /// to the `endif`). An `else` of an `if` not the innermost block open (which rs274
+    /// refuses) leaves the run of the blocks from it inwards not known.
+    fn linuxcnc_branch(
+        &mut self,
+        text: &[u8],
+        line: usize,
+        at: usize,
+        other_branch: bool,
+        before_false: bool,
+    ) -> bool {
+        if at + 1 != self.linuxcnc_open_at.len() {
+            for e in &mut self.linuxcnc_open_at[at..] {
+                e.runs = None;
+            }
+            return false;
+        }
+        let around = !self.main_ended()
+            && self.linuxcnc_open_at[..at]
+                .iter()
+                .all(|e| e.runs == Some(true));
+        let runs = if other_branch {
+            Some(false)
+        } else if before_false && around {
+            let (keyword, condition) = o_keyword_condition(text);
+            if keyword == b"else" {
+                Some(true)
+            } else {
+                let runs = self.linuxcnc_condition_value(condition).map(|v| v != 0.0);
+                if runs.is_some() && condition.contains(&b'#') {
+                    self.linuxcnc_turns_vary();
+                }
+                runs
+            }
+        } else {
+            None
+        };
+        let e = &mut self.linuxcnc_open_at[at];
+        e.runs = runs;
+        e.branch = line;
+        runs == Some(false) && !other_branch
+    }
+
+    /// LinuxCNC: the blocks open from `open` on closed by the o-word line `text` (an
+    /// `endif`, `endwhile`, `endrepeat`, a `do`'s `while`). A loop whose turns may differ
+    /// ([`OpenBlock::varies`]) and that may turn again -- a `repeat` of 2 or more, a
+    /// `while` condition not known false at its end, a `do`'s closing condition not known
+    /// false -- leaves the distance mode and what M70/M73 saved not known: the checker read
+    /// its first turn only. The blocks around it are left as they were: the lines after it
+    /// run where they are reached.
+    fn linuxcnc_blocks_closed(&mut self, text: &[u8], open: usize) {
+        let closed = self.linuxcnc_open_at.split_off(open);
+        let again = |c: &Self, e: &OpenBlock| -> Option<bool> {
+            let (opening, condition) = o_keyword_condition(&e.looped.as_ref()?.0);
+            match opening.as_slice() {
+                b"repeat" => e.looped.as_ref()?.1,
+                b"while" => c.linuxcnc_condition_value(condition).map(|v| v != 0.0),
+                _ => {
+                    let (keyword, condition) = o_keyword_condition(text);
+                    (keyword == b"while")
+                        .then(|| c.linuxcnc_condition_value(condition))
+                        .flatten()
+                        .map(|v| v != 0.0)
+                }
+            }
+        };
+        let unsure = closed
+            .iter()
+            .any(|e| e.varies && again(self, e) != Some(false));
+        if unsure {
+            self.linuxcnc_distance_unsure = true;
+            self.linuxcnc_distance_from = None;
+            self.linuxcnc_saved = Saved::Maybe;
+        }
+    }
+
+    /// LinuxCNC: a block opened or branched on a condition read from parameters, worked out
+    /// for the first run: every loop open around it may run other lines on a later turn.
+    fn linuxcnc_turns_vary(&mut self) {
+        for e in &mut self.linuxcnc_open_at {
+            e.varies |= e.looped.is_some();
+        }
     }
 
     /// LinuxCNC: whether the o-word statement at `column` of block `b` stands after a comment
@@ -1892,7 +2081,7 @@ impl Checker {
     /// "Bad character 'o' used"; after the o-word's label, keyword and brackets only a
     /// comment may follow, else "Unexpected character after O-word". Either refused (TG412)
     /// where the line surely runs (the main program's, no condition or loop open or only one
-    /// known to run, [`Checker::linuxcnc_runs_known`]; no block delete): rs274 reads no line
+    /// known to run, [`Checker::linuxcnc_runs_surely`]; no block delete): rs274 reads no line
     /// of a condition it skips but its o-words (`rs274 -g`; review 49a, F8; review 51, F11).
     #[inline(never)]
     fn linuxcnc_o_misplaced(&mut self, b: &BlockView<'_>, column: usize) -> bool {
@@ -1909,7 +2098,7 @@ impl Checker {
         if before.is_none() && after.is_none() {
             return false;
         }
-        if !b.skip && self.linuxcnc_runs_known() && !self.main_ended() {
+        if !b.skip && self.linuxcnc_runs_surely() && !self.main_ended() {
             let shown = |from: usize| {
                 let text = b.text.get(from.saturating_sub(1)..).unwrap_or_default();
                 String::from_utf8_lossy(text).trim_end().to_owned()
@@ -1943,12 +2132,15 @@ impl Checker {
     }
 
     /// LinuxCNC: a `break` or `continue` of the main program whose label rs274 recorded for
-    /// an `if` or a `repeat`, where the line is reached: inside the one block open, at the top
-    /// of the main program, of that label, whose condition or count the checker knows (known
-    /// to run, or known not to, when the skip ends at this line of its label). rs274 leaves
-    /// only a `do` or `while` by them: "5: no matching while/do label: 'o1 continue' (found
-    /// 'repeat' in line 3)" (interp_o_word.cc `convert_control_functions`; `rs274 -g`; review
-    /// 51, F3).
+    /// an `if` or a `repeat` (at the top of the main program, where it surely ran), where
+    /// rs274 reads the line: where it surely runs (inside that block or after it), or inside
+    /// the block of that label, the innermost open, whose opening surely runs and whose
+    /// branch in hand rs274 either runs to the line or skips to it -- its condition known,
+    /// or no o-word line since the block opened (`o1 if [#5399 GT 1]` / `o1 break`: run
+    /// where true, met in the skip to the `endif` where false). rs274 leaves only a `do` or
+    /// `while` by them: "5: no matching while/do label: 'o1 continue' (found 'repeat' in line
+    /// 3)" (interp_o_word.cc `convert_control_functions`; `rs274 -g`; review 51, F3; review
+    /// 52, F9).
     #[inline(never)]
     fn linuxcnc_loop_exit(&mut self, b: &BlockView<'_>, text: &[u8], column: usize) {
         let keyword = crate::statement::o_keyword(text);
@@ -1961,13 +2153,10 @@ impl Checker {
         }
         let label = self.linuxcnc_call_label(text);
         let bare = bare_label(&label);
-        let [(written, _, Some(_))] = self.linuxcnc_open_at.as_slice() else {
-            return;
-        };
-        if crate::statement::computed_label(&label) || bare_label(written) != bare {
+        if crate::statement::computed_label(&label) {
             return;
         }
-        let Some(&(kind, line, _)) = self.linuxcnc_o_labels.get(&bare) else {
+        let Some(&(kind, line, true)) = self.linuxcnc_o_labels.get(&bare) else {
             return;
         };
         let found = match kind {
@@ -1975,6 +2164,22 @@ impl Checker {
             b'r' => "repeat",
             _ => return,
         };
+        let reached = if let Some((last, around)) = self.linuxcnc_open_at.split_last() {
+            let skipped = self
+                .linuxcnc_skipping
+                .as_ref()
+                .is_some_and(|s| s.0 != label);
+            bare_label(&last.written) == bare
+                && last.line == line
+                && !skipped
+                && (last.runs.is_some() || last.straight)
+                && around.iter().all(|e| e.runs == Some(true))
+        } else {
+            false
+        };
+        if !reached && (!self.linuxcnc_runs_surely() || self.linuxcnc_dead()) {
+            return;
+        }
         let statement = String::from_utf8_lossy(text.trim_ascii()).into_owned();
         let message = format!(
             "no matching while/do label (rs274ngc): '{statement}' leaves a loop, and its label \
@@ -2011,11 +2216,7 @@ impl Checker {
         if !closing || b.skip || self.main_ended() || self.linuxcnc_labels_named.1 {
             return;
         }
-        let runs = match self.linuxcnc_open_at.as_slice() {
-            [] => true,
-            [only] => only.2 == Some(true),
-            _ => false,
-        };
+        let runs = self.linuxcnc_open_known();
         // (a label worked out as the line runs, of a block open: read with the values its
         // block set, Checker::linuxcnc_closing_label)
         let written = crate::statement::computed_label(&crate::statement::o_label(text));
@@ -2074,10 +2275,14 @@ impl Checker {
         if !crate::statement::computed_label(&written) {
             return label;
         }
-        let Some(at) = self.linuxcnc_open_at.iter().rposition(|e| e.0 == written) else {
+        let Some(at) = self
+            .linuxcnc_open_at
+            .iter()
+            .rposition(|e| e.written == written)
+        else {
             return label;
         };
-        let opened = self.linuxcnc_open_at[at].1;
+        let opened = self.linuxcnc_open_at[at].line;
         // (the two lists open and close together: linuxcnc_main_flow)
         debug_assert_eq!(self.linuxcnc_open_at.len(), self.linuxcnc_open_flow.len());
         let Some(open) = self.linuxcnc_open_flow.get(at).cloned() else {
@@ -2150,7 +2355,7 @@ impl Checker {
         let open = self.linuxcnc_open_flow.len();
         if top {
             self.linuxcnc_loop_defs = None;
-            let known = matches!(self.linuxcnc_open_at.as_slice(), [(_, _, Some(true))]);
+            let known = matches!(self.linuxcnc_open_at.as_slice(), [e] if e.runs == Some(true));
             if open == 1 && known && matches!(keyword.as_slice(), b"repeat" | b"while" | b"do") {
                 let twice = (keyword == b"repeat").then(|| {
                     self.linuxcnc_condition_value(condition)
@@ -2231,37 +2436,59 @@ impl Checker {
         self.linuxcnc_skipping.is_none()
             && !self.main_ended()
             && self.linuxcnc_open_at.len() > 1
-            && self.linuxcnc_open_at.last().is_some_and(|e| e.1 == line)
+            && self.linuxcnc_open_at.last().is_some_and(|e| e.line == line)
             && !o_keyword_condition(text).1.contains(&b'#')
             && self.linuxcnc_body_runs(text) == Some(false)
     }
 
-    /// LinuxCNC: whether the line in hand is a `break` or `continue` of the loop (`do` or
-    /// `while`) it stands in, that loop the innermost block open: rs274 goes from it to the
-    /// loop's closing line (or its top), and runs no line of the body after it, up to the
-    /// next o-word line of the loop's label (interp_o_word.cc `convert_control_functions`;
-    /// `rs274 -g`; review 52, F5). One inside an `if` of the body is left out: the lines
-    /// after that `if` run where it did not.
-    fn linuxcnc_loop_left(&self, text: &[u8], label: &[u8]) -> bool {
-        if self.linuxcnc_skipping.is_some()
-            || self.main_ended()
+    /// LinuxCNC: a `break` or `continue` (`text` on `line`, its label `label`) of a loop (`do`
+    /// or `while`) open around it: rs274 goes from it to the loop's closing line (or its top)
+    /// and runs no line after it up to there (interp_o_word.cc `convert_control_functions`;
+    /// `rs274 -g`; review 52, F5). Where every block inside the loop is known to run (the
+    /// loop the innermost block, or the `break` in an `if [1]` of its body), it is taken
+    /// wherever it is reached: the lines up to the loop's next o-word line are skipped. Inside
+    /// a block not known to run, the rest of that block's branch is skipped (up to its next
+    /// o-word line), and the loop's lines after the block, and the blocks' from the loop
+    /// inwards, are not known to run: it may have left (review 52, F4).
+    fn linuxcnc_loop_leave(&mut self, text: &[u8], label: &[u8], line: usize) {
+        if self.main_ended()
             || !matches!(
                 crate::statement::o_keyword(text).as_deref(),
                 Some(b"break" | b"continue")
             )
             || crate::statement::computed_label(label)
         {
-            return false;
+            return;
         }
-        let Some((written, opened, _)) = self.linuxcnc_open_at.last() else {
-            return false;
-        };
         let bare = bare_label(label);
-        bare_label(written) == bare
-            && self
-                .linuxcnc_o_labels
-                .get(&bare)
-                .is_some_and(|&(kind, at, _)| at == *opened && matches!(kind, b'w' | b'd'))
+        let Some(at) = self
+            .linuxcnc_open_at
+            .iter()
+            .rposition(|e| bare_label(&e.written) == bare)
+        else {
+            return;
+        };
+        let opened = self.linuxcnc_open_at[at].line;
+        let a_loop = self
+            .linuxcnc_o_labels
+            .get(&bare)
+            .is_some_and(|&(kind, first, _)| first == opened && matches!(kind, b'w' | b'd'));
+        if !a_loop {
+            return;
+        }
+        if self.linuxcnc_open_at[at + 1..]
+            .iter()
+            .all(|e| e.runs == Some(true))
+        {
+            self.linuxcnc_skipping = Some((label.to_vec(), line, false));
+            return;
+        }
+        for e in &mut self.linuxcnc_open_at[at..] {
+            e.runs = None;
+        }
+        if let Some(innermost) = self.linuxcnc_open_flow.last() {
+            self.linuxcnc_skipping = Some((innermost.clone(), line, false));
+        }
     }
 
     /// LinuxCNC: whether the lines of the block the main program's o-word `text` opens run
@@ -2440,7 +2667,8 @@ impl Checker {
 
     /// LinuxCNC: a subroutine file (its one definition, called from another file): the
     /// refusals of its body that hold at any call ([`CallRefusal`] not of the caller's mode:
-    /// a G53 under its own G91, an M72 with nothing saved in its context, on a line outside
+    /// a G53 under its own G91, an M72 with nothing saved in its context, a `break` or
+    /// `continue` of the subroutine's own label, on a line outside
     /// the body's conditions and loops) are said where they stand, as rs274 says them when the
     /// file is called (one inside a condition on the arguments runs for some calls only:
     /// review 51, F17).
@@ -2453,7 +2681,9 @@ impl Checker {
             .filter(|r| !r.caller_g91 && !r.flow)
             .collect();
         for r in refusals {
-            let message = if r.m72 {
+            let message = if r.exit {
+                format!("{SUB_LABEL_EXIT} (wherever this subroutine file is called from)")
+            } else if r.m72 {
                 format!("{M72_EMPTY} (in this subroutine file, wherever it is called from)")
             } else {
                 format!("{G53_INCREMENTAL} (its own G91, wherever it is called from)")
@@ -2463,15 +2693,16 @@ impl Checker {
     }
 
     /// LinuxCNC: the depth of the main program's conditions and loops a line stands at, for
-    /// the distance mode: none inside a single `do` (or a condition or loop whose condition
-    /// the checker knows true) with no o-word line since it opened, whose lines up to here
-    /// surely run (LinuxCNC O-codes, "Do-While loop": the body runs before the condition is
-    /// tested; `Checker::linuxcnc_body_runs`; review 50, F3e).
+    /// the distance mode: that of the innermost block open not known to run, none inside
+    /// blocks (a `do`, a condition or loop whose condition the checker knows true, nested in
+    /// one another) whose lines up to here surely run wherever the program reaches the
+    /// outermost not known (LinuxCNC O-codes, "Do-While loop": the body runs before the
+    /// condition is tested; `Checker::linuxcnc_body_runs`; review 50, F3e; review 52, F4).
     fn linuxcnc_distance_depth(&self) -> usize {
-        match self.linuxcnc_open_at.as_slice() {
-            [(_, _, Some(true))] => 0,
-            _ => self.linuxcnc_open_flow.len(),
-        }
+        self.linuxcnc_open_at
+            .iter()
+            .rposition(|e| e.runs != Some(true))
+            .map_or(0, |at| at + 1)
     }
 
     /// LinuxCNC: the main program's distance mode goes from `before` to `mode` at the depth
@@ -2716,6 +2947,7 @@ impl Checker {
                                 caller_g91: false,
                                 flow,
                                 m72: true,
+                                exit: false,
                             });
                             Distance::Unsure
                         }
@@ -2751,6 +2983,7 @@ impl Checker {
                         caller_g91,
                         flow,
                         m72: false,
+                        exit: false,
                     });
                 }
             }
@@ -2765,6 +2998,29 @@ impl Checker {
                     // follows it never runs; review 49a, F1)
                     ctx.returns();
                     ctx.returned |= depth == 0;
+                }
+                // (a break or continue naming the subroutine's own label, outside the body's
+                // conditions and loops: rs274 finds no loop of it wherever the body runs,
+                // "undefined O-word label"; review 52, F9)
+                Some(b"break" | b"continue")
+                    if kind == Kind::Flow
+                        && depth == 0
+                        && !b.skip
+                        && self.open_definition.as_ref().is_some_and(|d| {
+                            let label = crate::statement::o_label(text);
+                            !crate::statement::computed_label(&label)
+                                && bare_label(&label) == bare_label(&d.2)
+                        }) =>
+                {
+                    let column = b.statements.first().map_or(1, |s| s.0);
+                    ctx.refusals.push(CallRefusal {
+                        line: b.line,
+                        column,
+                        caller_g91: false,
+                        flow: false,
+                        m72: false,
+                        exit: true,
+                    });
                 }
                 _ if kind == Kind::Call => body.1 = true,
                 _ => {}
@@ -3228,6 +3484,27 @@ impl Checker {
         }
     }
 
+    /// TG412: a call that surely runs (on `line`, at `column`) of the subroutine `label`,
+    /// whose only definition stands in a block known not to run, and no definition of it
+    /// after the call ([`Checker::definition_after_call`]; review 52, F7).
+    #[cold]
+    fn linuxcnc_eof_seeking(&mut self, label: &[u8], line: usize, column: usize) {
+        let Some(&(_, defined, block)) = self.linuxcnc_dead_defs.iter().find(|d| d.0 == label)
+        else {
+            return;
+        };
+        let label = String::from_utf8_lossy(label);
+        let message = format!(
+            "{LINUXCNC_EOF_SEEKING} {label} from line: {line} (rs274ngc): the only definition \
+             of {label} (line {defined}) stands in the block of line {block}, which does not \
+             run, and rs274 skips it without recording the subroutine; the call seeks its sub \
+             from here to the end of the file and does not find it (interp_o_word.cc \
+             control_back_to; a file of its name on the SUBROUTINE_PATH is opened first where \
+             there is one); define the subroutine outside the block"
+        );
+        self.report(Rule::LinuxCncRefuses, message, line, column);
+    }
+
     /// TG126, once per file: the comments holding a harmless ':'.
     pub(super) fn colons_in_comments(&mut self) {
         let Colons {
@@ -3259,6 +3536,9 @@ impl Checker {
         let sub_return = self.sub_file == SubFile::Open && self.sub_returns.2 != 0;
         if self.sub_file == SubFile::Closed || sub_return {
             self.subroutine_file_refusals();
+        }
+        if let Some((label, line, column)) = self.linuxcnc_dead_called.first().cloned() {
+            self.linuxcnc_eof_seeking(&label, line, column);
         }
         if self.sub_preamble.1 != 0 && (self.sub_file == SubFile::Closed || sub_return) {
             let (first, sub) = self.sub_preamble;
@@ -3751,6 +4031,49 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 
 /// [`linuxcnc_flow`] of a statement whose label is `label` (a computed one's value where the
 /// checker knows it: [`Checker::linuxcnc_call_label`]).
+/// What [`Checker::linuxcnc_main_flow`] found of an o-word line of the main program: an
+/// `else`/`elseif` after a branch that surely ran (rs274 skips to the `endif`), or a block
+/// or branch begun that is known not to run (rs274 skips to the next o-word line of its
+/// label).
+pub(super) struct FlowStep {
+    other_branch: bool,
+    dead: bool,
+}
+
+/// LinuxCNC: a condition or loop of the main program open at the line in hand
+/// (`Checker::linuxcnc_open_at`), as the checker reads its lines in their order: the first
+/// run of them (a loop's first turn).
+#[derive(Clone, Debug)]
+pub(super) struct OpenBlock {
+    /// Its label as written (`o#1`).
+    written: Vec<u8>,
+    /// The line that opened it.
+    line: usize,
+    /// Whether its lines up to the line in hand run whenever the program runs to its
+    /// opening: known to (Some(true): a condition known true, a `do`, the `else` of an `if`
+    /// whose every branch before is known false, a loop's count known above zero), known not
+    /// to (Some(false): its lines are the skip of `Checker::linuxcnc_skipping`), or not known.
+    /// Set only where every block around it is known to run (its opening runs surely), so
+    /// that a line runs surely where every block open is Some(true)
+    /// ([`Checker::linuxcnc_runs_surely`]; review 52, F4). A block that closes inside it
+    /// leaves it as it was (its lines after that block run where they are reached); a call,
+    /// or a `break`/`continue` in a block not known to run, makes it not known.
+    runs: Option<bool>,
+    /// The line where `runs` was set: its opening, or the `else`/`elseif` of its branch.
+    branch: usize,
+    /// No o-word line since it opened: its lines up to here ran one after the other, so the
+    /// values they set are those its closing label reads.
+    straight: bool,
+    /// A loop (`while`, `do`, `repeat`), with its opening line's text (the `while`
+    /// condition, read again at its end) and, for a `repeat`, whether its count (read where
+    /// it opened) turns it again after the first turn.
+    looped: Option<(Vec<u8>, Option<bool>)>,
+    /// A loop inside whose body a block opened (or branched) on a condition that reads a
+    /// parameter, which the checker worked out for the first turn: a later turn may run
+    /// other lines, so the state the first turn leaves is not the loop's where it turns again.
+    varies: bool,
+}
+
 /// LinuxCNC: a loop of the main program's top whose body runs, as
 /// [`Checker::linuxcnc_loop_turns`] keeps it: its opening line, for a `repeat` whether its
 /// count (read where it opened) is 2 or more, the definitions its body holds (label, line,
@@ -3921,7 +4244,8 @@ impl BodyDistance {
 /// A LinuxCNC body's line that rs274 refuses where the body runs, said at its calls in the
 /// main program (a definition runs only when called): a G53 in G91 (`caller_g91`: where its
 /// caller's mode is G91, the body having written none of its own before it; review 50, F4),
-/// or an M72 with nothing saved in the body's context (F5).
+/// an M72 with nothing saved in the body's context (F5), or a `break`/`continue` of the
+/// subroutine's own label (review 52, F9).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct CallRefusal {
     line: usize,
@@ -3931,11 +4255,15 @@ pub(super) struct CallRefusal {
     /// The line stands inside a condition or loop of the body: it runs for some calls only,
     /// so the refusal does not hold at any call (review 51, F17).
     flow: bool,
+    /// A `break` or `continue` naming the subroutine's own label, no loop's (review 52, F9).
+    exit: bool,
 }
 
 impl CallRefusal {
     fn message(&self, token: &str, line: usize) -> String {
-        if self.m72 {
+        if self.exit {
+            format!("{SUB_LABEL_EXIT} ({token} of line {line} runs it)")
+        } else if self.m72 {
             format!("{M72_EMPTY} (in the body {token} of line {line} runs)")
         } else if self.caller_g91 {
             format!(
@@ -3947,6 +4275,13 @@ impl CallRefusal {
     }
 }
 
+/// rs274's refusal of a `break` or `continue` of a subroutine's own label (`o<s> continue` in
+/// `o<s> sub`, `rs274 -g`: "3: undefined O-word label: 'o<s> continue'"; interp_o_word.cc
+/// `control_find_oword` finds no `do` or `while` of the label at the call level).
+const SUB_LABEL_EXIT: &str = "undefined O-word label (rs274ngc): this break or continue names \
+     the label of the subroutine it stands in, and rs274 leaves only a do or while by them: \
+     the body has no loop of that label; name the loop's label, or return by o<name> return";
+
 /// rs274's refusal of a G53 in G91.
 pub(super) const G53_INCREMENTAL: &str = "Cannot use g53 incremental (rs274ngc): G53's axis \
      words are machine coordinates, absolute; G90 first";
@@ -3955,6 +4290,10 @@ pub(super) const G53_INCREMENTAL: &str = "Cannot use g53 incremental (rs274ngc):
 const M72_EMPTY: &str = "Cannot restore context from invalid stack frame - missing M70/M73? \
      (rs274ngc): M72 restores the modal state M70 or M73 saved at this call level (the main \
      program's, or the running subroutine's), and none is saved here (or M71 invalidated it)";
+
+/// rs274's refusal of a call whose subroutine it seeks to the end of the file (after it
+/// the label and "from line: N", the call's; interp_o_word.cc `control_back_to`).
+const LINUXCNC_EOF_SEEKING: &str = "EOF in file seeking o-word:";
 
 /// What a LinuxCNC block does to the distance mode ([`Checker::linuxcnc_distance_modal`],
 /// [`Checker::linuxcnc_body`]).
@@ -4331,8 +4670,12 @@ mod tests {
             };
             assert_eq!(refused(&text), [(5, 1)], "{text}");
         }
+        // (a value worked out from one known, review 52, F7: rs274 -g, "5: undefined O-word
+        // label: 'o#1 endif'")
+        let counted = text.replace("#1=4", "#1=[#1+1]");
+        assert_eq!(refused(&counted), [(5, 1)], "{counted}");
         // the body may not run, or its value is not followed: said, taken as closing
-        for (from, to) in [("if [1]", "if [#5220 GT 1]"), ("#1=4", "#1=[#1+1]")] {
+        for (from, to) in [("if [1]", "if [#5220 GT 1]"), ("#1=4", "#1=[#1+#5220]")] {
             let text = format!(
                 "{}G0 X#<nope>\nM2\n",
                 text.replace(from, to).replace("M2\n", "")
