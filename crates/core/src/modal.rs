@@ -1000,32 +1000,6 @@ impl ModalMachine {
         self.drift = left.drift;
     }
 
-    /// Where two ways into one block meet (a jump's target that the blocks before it also
-    /// reach, check/passed.rs), the state there is either's: an axis's position, the feed and
-    /// the speed stay known only where `other` holds the same, and no position is kept where
-    /// the two read lengths in other units or another feed mode. The modes stay this one's
-    /// (the caller settles G90/G91).
-    pub fn join(&mut self, other: &ModalMachine) {
-        let (s, o) = (&self.state, &other.state);
-        let same_modes =
-            (s.units, s.feed_units, s.feed_mode) == (o.units, o.feed_units, o.feed_mode);
-        for (j, letter) in b"XYZUVWABC".iter().enumerate() {
-            let known = |m: &ModalState| m.position[j].filter(|_| m.unknown & bit(*letter) == 0);
-            if !same_modes || known(&self.state).is_none() || known(&self.state) != known(o) {
-                lose_axis(&mut self.state, &mut self.drift[j], j, *letter);
-            }
-        }
-        let o = &other.state;
-        let known =
-            |m: &ModalState, letter: u8, v: Option<Dec>| v.filter(|_| m.unknown & bit(letter) == 0);
-        if known(&self.state, b'F', self.state.feed) != known(o, b'F', o.feed) {
-            self.forget_feed();
-        }
-        if known(&self.state, b'S', self.state.speed) != known(o, b'S', o.speed) {
-            self.forget_speed();
-        }
-    }
-
     /// The position of the axis `letter` alone is no longer known (a SINUMERIK's positioning
     /// axis, `POSA[X]=100`, moves on its own): the other axes, the feed and the speed stay.
     pub fn forget_axis(&mut self, letter: u8) {

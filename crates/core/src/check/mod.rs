@@ -1258,12 +1258,6 @@ pub struct Checker {
     /// follow the jump): the state its target starts from where the jump is surely taken
     /// ([`passed`]); taken at the block's end.
     jump_left: Option<Box<passed::Left>>,
-    /// The numbered blocks the program's passages took as not run (at most
-    /// `passed::DEAD_MAX`), for a jump after them that names one ([`passed`]).
-    passed_numbers: Vec<passed::Dead>,
-    /// Custom Macro B: the program has read a call of another program (M98, M97, G65, G66),
-    /// whose `M99 P` may return to any of its numbered blocks ([`passed`]).
-    calls_read: bool,
 }
 
 impl Checker {
@@ -1314,8 +1308,6 @@ impl Checker {
             limits_hint_said: false,
             passed: None,
             jump_left: None,
-            passed_numbers: Vec::new(),
-            calls_read: false,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),

@@ -949,12 +949,12 @@ impl Checker {
                 }
             }
         }
-        for &(column, kind, text) in b.statements {
+        for &(_, kind, text) in b.statements {
             if kind != Kind::Flow {
                 continue;
             }
             let upper = text.to_ascii_uppercase();
-            let Some((at, digits, _)) = super::targets::goto_words(&upper) else {
+            let Some((_, digits, _)) = super::targets::goto_words(&upper) else {
                 continue;
             };
             match std::str::from_utf8(digits)
@@ -962,20 +962,12 @@ impl Checker {
                 .and_then(|d| d.parse().ok())
             {
                 Some(n) => {
-                    // (a jump back to a block a passage took as not run: passed.rs)
-                    if !self.passed_numbers.is_empty() {
-                        let token = format!("GOTO{n}");
-                        self.passed_named(Some(n), b.line, column + at, &token);
-                    }
                     self.goto_targets
                         .entry(n)
                         .and_modify(|jump| jump.1 = true)
                         .or_insert((b.line, false));
                 }
                 None => {
-                    if !self.passed_numbers.is_empty() {
-                        self.passed_named(None, b.line, column + at, "GOTO");
-                    }
                     self.goto_computed = true;
                     self.goto_computed_line = b.line;
                 }

@@ -271,8 +271,6 @@ impl Checker {
         self.goto_targets.clear();
         self.goto_computed = false;
         self.goto_names.clear();
-        self.passed_numbers.clear();
-        self.calls_read = false;
         self.arrival = None;
         self.jumps_pending.clear();
         self.runs.clear();
@@ -363,8 +361,6 @@ impl Checker {
     /// are not known, leaves them unknown there. (M97 calls a sequence number of the program
     /// in hand, and a SINUMERIK's L a subprogram of another file: no program of this file.)
     pub(super) fn call_made(&mut self, b: &BlockView<'_>) {
-        // (its return may come back to any numbered block: passed.rs)
-        self.calls_read |= self.config.family == Family::MacroB;
         // (only a FANUC's or a Haas's file is split into programs by their O numbers,
         // dialect::ProgramSplit)
         if !dialect::splits(self.config.family, self.config.program_number)

@@ -295,12 +295,6 @@ impl Targets {
         (!self.overflow).then(|| self.has(n))
     }
 
-    /// Custom Macro B: whether a word read so far names sequence number `n` and no block has
-    /// shown it since, or may (the targets not all kept).
-    pub(super) fn named(&self, n: u64) -> bool {
-        self.overflow || self.pending.contains_key(&n)
-    }
-
     /// SINUMERIK: whether the program has shown label or block number `name` (in capitals)
     /// so far, or may have (its names not all kept).
     pub(super) fn sinumerik_read(&self, name: &[u8]) -> bool {
@@ -460,8 +454,6 @@ impl Checker {
         }
         // the words the block's codes make name a block (`Checker::named_words`, read with
         // the block's words: a block of statements only names none)
-        // (a word naming a block a passage took as not run: passed.rs)
-        let mut passed = Vec::new();
         for (letter, address, code) in self.named.iter().filter(|_| !b.words.is_empty()) {
             if *address != b'N' {
                 continue;
@@ -477,9 +469,6 @@ impl Checker {
                     .first()
                     .is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
                     && super::code_number(&code.as_bytes()[1..]) == b"99";
-                if !self.passed_numbers.is_empty() {
-                    passed.push((n, v.column, format!("{code} {}", v.token())));
-                }
                 self.targets.name(Target {
                     n,
                     line: b.line,
@@ -488,9 +477,6 @@ impl Checker {
                     returns,
                 });
             }
-        }
-        for (n, column, token) in passed {
-            self.passed_named(Some(n), b.line, column, &token);
         }
         for &(column, kind, text) in b.statements {
             if kind != Kind::Flow {
