@@ -25,9 +25,12 @@ def interrupted(signum: int, frame: object) -> None:
 
 def note_interrupts() -> None:
     """^C's handler, where it is still the interpreter's, made :func:`interrupted`; in the main
-    thread only. Set by the ``tapegate`` command's entry point (``tapegate.launch.main``)."""
+    thread only. Set by the ``tapegate`` command's entry point (``tapegate.launch.main``), at
+    each command's start: the stops noted before are forgotten (review 53, F10: after one ^C,
+    a caller's next command stopped at its first wait)."""
     import _signal
 
+    TAKEN.clear()  # (a caller that goes on: a stop obeyed before is not this command's)
     try:
         if _signal.getsignal(_signal.SIGINT) is _signal.default_int_handler:
             _signal.signal(_signal.SIGINT, interrupted)
@@ -41,4 +44,5 @@ def heed_stops() -> None:
     that may never come (the next bytes of a FIFO, room in a full pipe)."""
     if TAKEN:
         signum = TAKEN[-1]
+        TAKEN.clear()  # (raised once: what handles it goes on without it)
         raise KeyboardInterrupt if signum == _SIGINT else SystemExit(128 + signum)

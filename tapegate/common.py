@@ -222,8 +222,12 @@ def _spooled(stream: Any, head: bytes = b"") -> str:
     runs: its path."""
     import tempfile
 
+    from formats.files import exit_on_termination
     from formats.stops import heed_stops
 
+    # SIGTERM and SIGHUP made an exit, so that the copy is removed at the exit as at a ^C
+    # (review 53, F14: `check -` so stopped left it in the temporary folder)
+    exit_on_termination()
     spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
     spool.write(head)
     read = getattr(stream, "read1", stream.read)  # (what has come, not a full 64 kB)

@@ -167,20 +167,27 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
     from formats.stops import note_interrupts
 
     note_interrupts()  # (a ^C a finalizer swallows is still obeyed: formats.stops)
-    found = None if "_TAPEGATE_COMPLETE" in os.environ else plain(sys.argv[1:])
-    if found is None:
-        from tapegate.cli import main as group
+    try:
+        found = None if "_TAPEGATE_COMPLETE" in os.environ else plain(sys.argv[1:])
+        if found is None:
+            from tapegate.cli import main as group
+        else:
+            pause_collector()
+            from tapegate.common import prepare_streams
 
+            body, params = found
+            module, name = body.split(":")
+            # (__import__, not importlib's import_module: the importlib package is not
+            # loaded yet)
+            run = getattr(__import__(module, fromlist=[name]), name)
+            prepare_streams()
+    except KeyboardInterrupt:  # a ^C in the start-up: told as the command's own (review 53,
+        thaw()  # F11: a traceback where the imports took it)
+        sys.stderr.write("\nAborted!\n")
+        sys.exit(1)
+    if found is None:
         group(prog_name=prog_name)
         return
-    pause_collector()
-    from tapegate.common import prepare_streams
-
-    body, params = found
-    module, name = body.split(":")
-    # (__import__, not importlib's import_module: the importlib package is not loaded yet)
-    run = getattr(__import__(module, fromlist=[name]), name)
-    prepare_streams()
     try:
         try:
             run(**params)

@@ -14,6 +14,7 @@ import os
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -93,3 +94,76 @@ def test_a_stop_taken_as_usual_is_not_raised_twice() -> None:
               "except KeyboardInterrupt:\n    print('taken', file=sys.stderr)\n")
     done = _run(script)
     assert done.returncode == 0 and done.stderr == b"taken\n"
+
+
+def test_a_stop_is_raised_once_and_a_new_command_forgets_the_last_ones() -> None:
+    """Review 53, F10: after one ^C, a caller's next command (``main(clean_exit=True)``) was
+    stopped at its first wait by the first's note."""
+    from formats import stops
+
+    before = signal.getsignal(signal.SIGINT)
+    try:
+        stops.TAKEN.append(signal.SIGINT)
+        with pytest.raises(KeyboardInterrupt):
+            stops.heed_stops()
+        stops.heed_stops()  # (raised once)
+        stops.TAKEN.append(signal.SIGTERM)
+        stops.note_interrupts()  # (a new command's start)
+        stops.heed_stops()
+        assert stops.TAKEN == []
+    finally:
+        stops.TAKEN.clear()
+        signal.signal(signal.SIGINT, before)
+
+
+def test_sigterm_to_a_check_of_standard_input_leaves_no_copy(tmp_path: Path) -> None:
+    """Review 53, F14: `check -` stopped by SIGTERM left its copy of standard input in the
+    temporary folder; the copy's making makes SIGTERM an exit, which removes it."""
+    temp = tmp_path / "temp"
+    temp.mkdir()
+    exe = Path(sys.executable).with_name("tapegate")
+    if not exe.exists():
+        pytest.skip("needs the tapegate command")
+    proc = subprocess.Popen([str(exe), "check", "-p", "fanuc-mill", "-"], stdin=subprocess.PIPE,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, "PYTHONPATH": str(ROOT), "TMPDIR": str(temp)})
+    assert proc.stdin is not None and proc.stderr is not None
+    try:
+        proc.stdin.write(b"%\nO1000\nG0 X0\n")
+        proc.stdin.flush()  # (and left open: the copy waits for more)
+        deadline = time.monotonic() + 60
+        while not list(temp.iterdir()):
+            assert proc.poll() is None and time.monotonic() < deadline
+            time.sleep(0.01)
+        proc.send_signal(signal.SIGTERM)
+        code = proc.wait(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        proc.stdin.close()
+        err = proc.stderr.read()
+        proc.stderr.close()
+    assert code == 128 + signal.SIGTERM, err
+    assert b"Traceback" not in err
+    assert list(temp.iterdir()) == []
+
+
+def test_a_ctrl_c_in_the_start_up_is_told_as_the_commands_own(
+        monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    """Review 53, F11: a ^C while the command's modules were imported printed a traceback."""
+    from tapegate import launch
+
+    def interrupted(argv: list[str]) -> None:
+        raise KeyboardInterrupt
+
+    before = signal.getsignal(signal.SIGINT)
+    monkeypatch.setattr(launch, "plain", interrupted)
+    monkeypatch.setattr(sys, "argv", ["tapegate", "check", "x.nc"])
+    try:
+        with pytest.raises(SystemExit) as done:
+            launch.main(clean_exit=True)
+    finally:
+        signal.signal(signal.SIGINT, before)
+    assert done.value.code == 1
+    assert capsys.readouterr().err == "\nAborted!\n"
