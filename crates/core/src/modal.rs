@@ -1186,6 +1186,16 @@ impl ModalMachine {
                 s.cycle = Some(g);
                 s.cycle_words = [None; 5];
             }
+            // a FANUC or Haas mill's G73 (high-speed peck), G74 (left-hand or reverse tapping)
+            // and G76 (fine boring) are canned cycles as G81-G89 are, their format ending
+            // `F_ K_` (FANUC 0i-MF, "Canned cycle": K the number of repeats; Haas mill: L);
+            // a lathe's are its turning and threading cycles (review 53, F8)
+            73 | 74 | 76
+                if self.settings.family == Family::MacroB && !self.settings.fanuc_lathe =>
+            {
+                s.cycle = Some(g);
+                s.cycle_words = [None; 5];
+            }
             90 | 91 => {
                 s.incremental = g == 91;
                 self.distance_codes = self.distance_codes.wrapping_add(1);

@@ -1211,6 +1211,27 @@ impl Checker {
         expr::sinumerik_value(&tree, expression, &known)
     }
 
+    /// `[k] = value` or `#1 = value`, a `#` word's expression whose variable's number is
+    /// an expression (blanks allowed around the `=`): the number where its value is known and
+    /// whole (read as [`Checker::indirect_assignment`] reads it for the ranges of TG206 and
+    /// TG209), and the value's text; None where it is no assignment.
+    fn indirect_target<'t>(&self, expression: &'t [u8]) -> Option<(Option<u64>, &'t [u8])> {
+        let (inner, rhs) = if expression.first() == Some(&b'[') {
+            let close = crate::statement::brackets(expression, 0).ok()?;
+            let rest = expression[close..].trim_ascii_start();
+            (&expression[1..close - 1], rest.strip_prefix(b"=")?)
+        } else {
+            let eq = expression.iter().position(|&c| c == b'=')?;
+            (&expression[..eq], &expression[eq + 1..])
+        };
+        let number = crate::expr::tree(inner)
+            .ok()
+            .and_then(|tree| crate::expr::formula_value(&tree, inner, &|p| self.constant(p)))
+            .filter(|v| *v >= Dec::ZERO && v.is_whole())
+            .and_then(|v| u64::try_from(v.trunc()).ok());
+        Some((number, rhs))
+    }
+
     /// A parameter set since the last jump arrival: its value there no longer matters.
     fn set_since_arrival(&mut self, key: &[u8]) {
         if let Some(arrival) = &mut self.arrival {
@@ -1522,6 +1543,31 @@ impl Checker {
                         parameter_name(w.address, w.index),
                         value.filter(|_| !w.number.is_empty()),
                     )
+                }
+                // #[k] = value (Custom Macro B: a variable's number may be an expression in
+                // brackets, on the left of `=` too; LinuxCNC's `##1 = value` likewise): with k
+                // known and whole, the assignment to #k; else any parameter may be the one
+                // set, and none is known after it (review 53, F6)
+                b'#' if matches!(w.expression.first(), Some(b'[' | b'#')) => {
+                    let Some((number, rhs)) = self.indirect_target(w.expression) else {
+                        continue;
+                    };
+                    let Some(number) = number else {
+                        self.params.clear();
+                        self.arrival = None;
+                        continue;
+                    };
+                    let text: Vec<u8> = rhs.iter().copied().filter(|&c| !blank(c)).collect();
+                    let value = std::str::from_utf8(&text)
+                        .ok()
+                        .and_then(Dec::parse)
+                        .or_else(|| self.copied(&text, &mut arrived))
+                        .or_else(|| {
+                            (linuxcnc && set_before.is_empty())
+                                .then(|| self.linuxcnc_evaluated(&text))
+                                .flatten()
+                        });
+                    (parameter_name(b'#', number.to_string().as_bytes()), value)
                 }
                 b'#' => {
                     // #<name> = value: the name and the value are in the word's expression
@@ -2459,6 +2505,52 @@ mod tests {
                 Rule::NotEvaluated
             ),
             [(3, 4)]
+        );
+    }
+
+    /// Review 53 F6: `#[k] = value` sets #k where k is known and whole (`#[2]`, `# [2] = `,
+    /// `#[1+1]`, `#[#2]` with #2 known: its old value gone); with k unknown any parameter may
+    /// be the one set, and none is known after it (iso-mill's X -500..500).
+    #[test]
+    fn an_assignment_to_a_bracketed_number_sets_that_parameter() {
+        use super::super::testing::findings;
+        let at = |body: &str, rule| -> Vec<(usize, usize, &'static str)> {
+            findings(of_family(Family::MacroB), &program(body), rule)
+                .iter()
+                .map(|f| (f.line, f.column, f.rule.id()))
+                .collect()
+        };
+        let start = "G21 G17 G90 G54\nG0 X-400. Y0 Z1.\n";
+        // the new value known: the old one's false TG601 gone, a real one found
+        for set in ["#[2]=5.", "# [2] = 5.", "#[1+1]=5.", "#[ 2 ]=5."] {
+            let body = format!("{start}#2=900.\n{set}\nG0 X#2");
+            assert_eq!(at(&body, Rule::TravelExceeded), [], "{set}");
+            assert_eq!(at(&body, Rule::NotEvaluated), [], "{set}");
+        }
+        for set in ["#[2]=900.", "# [2] = 900.", "#[1+1]=900.", "#[#2]=900."] {
+            let body = format!("{start}#2=2\n{set}\nG0 X#2");
+            assert_eq!(at(&body, Rule::TravelExceeded), [(6, 4, "TG601")], "{set}");
+        }
+        // a copy of a known value
+        let body = format!("{start}#1=900.\n#[2]=#1\nG0 X#2");
+        assert_eq!(at(&body, Rule::TravelExceeded), [(6, 4, "TG601")]);
+        // the number not known (nor whole): no parameter known after it
+        for set in ["#[#3]=5.", "#[2.5]=5.", "#[#3+1]=5."] {
+            let body = format!("{start}#2=900.\n{set}\nG0 X#2");
+            assert_eq!(at(&body, Rule::TravelExceeded), [], "{set}");
+            assert_eq!(at(&body, Rule::NotEvaluated), [(6, 4, "TG141")], "{set}");
+        }
+        // LinuxCNC's `##1 = value` (rs274ngc read_parameter_setting reads a value after `#`)
+        let travel = |body: &str| {
+            findings(of_family(Family::LinuxCnc), body, Rule::TravelExceeded)
+                .iter()
+                .map(|f| (f.line, f.column))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(travel("G0 X-400 Y0\n#1=2\n#2=900\n##1=5\nG0 X#2\nM2\n"), []);
+        assert_eq!(
+            travel("G0 X-400 Y0\n#1=2\n#2=5\n##1=900\nG0 X#2\nM2\n"),
+            [(5, 4)]
         );
     }
 

@@ -2596,6 +2596,30 @@ mod tests {
     use crate::lex::Family;
     use crate::rules::Rule;
 
+    /// Review 53, F8: a FANUC mill's G73, G74 and G76 take K as their repeats, as G81-G89
+    /// do (0i-MF, "Canned cycle": each format ends `F_ K_`): followed under G91 (iso-mill's
+    /// X -500..500: four holes 200 apart from X-300 end at X300, five at X500, six beyond)
+    /// and TG544 at a K that is no whole count of one or more.
+    #[test]
+    fn a_fanuc_mill_s_g73_g74_and_g76_repeat_as_the_drilling_cycles_do() {
+        let macro_b = || of_family(Family::MacroB);
+        for cycle in ["G81", "G73 Q1.", "G74", "G76 Q1."] {
+            let body = |k: &str| {
+                program(&format!(
+                    "G21 G17 G90 G54\nM4 S1000\nG0 X-300. Y0 Z10.\n\
+                     G91 {cycle} X200. Y0 Z-5. R-8. {k} F100.\nG80\nG90"
+                ))
+            };
+            let travel = |k: &str| fired(macro_b(), &body(k), Rule::TravelExceeded);
+            assert_eq!(travel("K5"), [], "{cycle}");
+            assert_eq!(travel("K6"), [(5, 6 + cycle.len())], "{cycle}");
+            let tg544 = |k: &str| fired(macro_b(), &body(k), Rule::CycleRepeatCount);
+            assert_eq!(tg544("K2.5"), [(5, 25 + cycle.len())], "{cycle}");
+            assert_eq!(tg544("K0"), [(5, 25 + cycle.len())], "{cycle}");
+            assert_eq!(tg544("K4"), [], "{cycle}");
+        }
+    }
+
     thread_local! {
         /// Set by a test: `linuxcnc_refusals` reads every block word by word, its plain
         /// move's test not asked.
