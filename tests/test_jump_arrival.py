@@ -319,3 +319,58 @@ def test_a_numbered_block_before_the_target_gives_the_passage_up():
     travel = [f for f in found if f.rule == "TG601"]
     assert [f.line for f in travel] == [9]
     assert travel[0].message.startswith("X spans 1560 (from -700 to 860)"), travel[0].message
+
+
+def _found(text: str, profile: str) -> list:
+    prof = load_profile(profile)
+    return Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+
+
+# review 53, F17 (w7.nc): line 8 is the target `N26 IF [#1 EQ 0] GOTO 39`
+W7 = ("%\nO1000\nG21 G17 G90 G54\n#1=0\nG0 X0 Y0 Z10.\nGOTO 26\n{between}\n"
+      "N26 IF [#1 EQ 0] GOTO 39\nG91\nN39 G0 X900.\nN48 G0 X900.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_goto_keeps_the_parameters_for_its_target(profile):
+    """A `GOTO 26` with no condition reaches N26 with #1 = 0, as a known-true IF would: the
+    IF there is surely taken, the G91 passed over, and X900. twice is absolute (no TG601);
+    a word `X#1` at the target is evaluated (no TG141)."""
+    found = _found(W7.format(between="G0 X5."), profile)
+    assert [f for f in found if f.rule in ("TG601", "TG141")] == []
+    text = W7.format(between="G0 X5.").replace("N26 IF [#1 EQ 0] GOTO 39", "N26 G0 X#1")
+    assert [f for f in _found(text, profile) if f.rule == "TG141"] == []
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_parameter_changed_on_another_way_in_is_not_known(profile):
+    """`N20 #1=5` between may be another way into N26 (a jump may name N20): #1 is not
+    known at the target, X#1 is TG141 there (line 8, column 8), as before."""
+    text = W7.format(between="N20 #1=5").replace("N26 IF [#1 EQ 0] GOTO 39", "N26 G0 X#1")
+    found = _found(text, profile)
+    assert [(f.line, f.column) for f in found if f.rule == "TG141"] == [(8, 8)]
+    assert [f for f in found if f.severity == "error"] == []
+
+
+# review 53, F2 (g2g.nc): line 7 is the target `N10 G1 Z-1.`
+G2G = ("%\nO1000\nG21 G17 G90 G54\nM3 S1000\nG0 X0 Y0 Z10.\nGOTO 10\n{between}\n"
+       "N10 G1 Z-1.{target}\nX50.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("between", ["G0 X5.", "N5 F100.", "N5 G1 X1. F100.", "G1 X1. F100."])
+def test_a_sure_goto_from_no_feed_arrives_with_none(profile, between):
+    """No F was ever given before the sure `GOTO 10`: its target runs first with none, so
+    the feed moves there are TG401, as without the jump -- an F in a block between, passed
+    over or not run before the target's first run, does not count."""
+    found = _found(G2G.format(between=between, target=""), profile)
+    assert [(f.line, f.column) for f in found if f.rule == "TG401"] == [(8, 8), (9, 1)]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_feed_at_the_target_or_before_the_jump_is_in_force(profile):
+    """Quiet: the target gives its F, or an F came before the jump."""
+    found = _found(G2G.format(between="N5 F100.", target=" F50."), profile)
+    assert [f for f in found if f.rule == "TG401"] == []
+    text = G2G.format(between="N5 G0 X5.", target="").replace("Z10.\nGOTO", "Z10. F50.\nGOTO")
+    assert [f for f in _found(text, profile) if f.rule == "TG401"] == []

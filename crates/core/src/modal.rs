@@ -991,12 +991,14 @@ impl ModalMachine {
         self.drift = [Drift::default(); 9];
     }
 
-    /// The position `left` holds, the feed, the speed and the modes staying (a jump surely
-    /// taken: its target starts where the jump's block left the axes, check/passed.rs).
-    pub fn position_of(&mut self, left: &ModalMachine) {
-        let axes = FORGOTTEN & !(bit(b'F') | bit(b'S'));
+    /// What [`ModalMachine::forget`] forgot, as `left` holds it, the modes staying (a jump
+    /// surely taken: its target starts where the jump's block left the axes, the feed and
+    /// the speed -- none ever set stays none -- check/passed.rs).
+    pub fn kept_of(&mut self, left: &ModalMachine) {
         self.state.position = left.state.position;
-        self.state.unknown = self.state.unknown & !axes | left.state.unknown & axes;
+        self.state.feed = left.state.feed;
+        self.state.speed = left.state.speed;
+        self.state.unknown = self.state.unknown & !FORGOTTEN | left.state.unknown & FORGOTTEN;
         self.drift = left.drift;
     }
 
@@ -1015,6 +1017,13 @@ impl ModalMachine {
     pub fn forget_feed(&mut self) {
         self.state.feed = None;
         self.state.unknown |= bit(b'F');
+    }
+
+    /// No feed in force, as at the reset (a jump surely taken from where none was ever set
+    /// arrives at its target with none: check/passed.rs).
+    pub fn no_feed(&mut self) {
+        self.state.feed = None;
+        self.state.unknown &= !bit(b'F');
     }
 
     /// The speed alone is no longer known (a SINUMERIK's `SETMS(2)` makes another spindle the

@@ -1258,6 +1258,10 @@ pub struct Checker {
     /// follow the jump): the state its target starts from where the jump is surely taken
     /// ([`passed`]); taken at the block's end.
     jump_left: Option<Box<passed::Left>>,
+    /// The sequence number of a jump surely taken whose passage a numbered block between
+    /// gave up, where the jump left no feed ever set (0: none): its target, when it comes,
+    /// has none -- the jump's arrival is its first ([`passed`]; review 53, F2).
+    no_feed_target: u64,
 }
 
 impl Checker {
@@ -1308,6 +1312,7 @@ impl Checker {
             limits_hint_said: false,
             passed: None,
             jump_left: None,
+            no_feed_target: 0,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),

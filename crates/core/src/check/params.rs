@@ -354,6 +354,9 @@ impl Checker {
         if self.passed.is_some() {
             self.passage_block(b);
         }
+        if self.no_feed_target != 0 {
+            self.no_feed_arrival(b);
+        }
         match self.config.family {
             Family::MacroB => self.macro_b_arrival(b),
             Family::Sinumerik => self.sinumerik_arrival(b),
@@ -1935,8 +1938,12 @@ mod tests {
         assert_eq!(feed(Family::MacroB, unknown), (vec![], vec![2]));
         let expression = "#101 = 1500.\n#101 = [#1 + 2]\nG01 X1. F#101";
         assert_eq!(feed(Family::MacroB, expression), (vec![], vec![4]));
+        // a jump surely taken to the next numbered block brings its values (review 53, F17);
+        // a numbered block between may be another way in, setting another
         let jump = "#101 = 1500.\nGOTO 10\nN10 G01 X1. F#101";
-        assert_eq!(feed(Family::MacroB, jump), (vec![], vec![4]));
+        assert_eq!(feed(Family::MacroB, jump), (vec![4], vec![]));
+        let jump = "#101 = 1500.\nGOTO 10\nN5 #101 = 100.\nN10 G01 X1. F#101";
+        assert_eq!(feed(Family::MacroB, jump), (vec![], vec![5]));
     }
 
     /// Review 41, finding 0: at a sequence number a GOTO read before names, the values set

@@ -44,6 +44,8 @@ pub(super) struct Passed {
     conditional: bool,
     /// The checker as the jump left it (its run state is the target's).
     run: Box<Checker>,
+    /// Whether the jump left no feed ever set (the reset state's none, not one forgotten).
+    no_feed: bool,
     /// The length of the path at the jump, and whether the sample machine's hint was said
     /// (a run's copy takes it as said: [`Checker::run_of`]).
     path: usize,
@@ -58,10 +60,14 @@ pub(super) struct Passed {
 }
 
 /// What a jump's block left before the checker forgot it, not following the jump
-/// ([`Checker::left`]).
+/// ([`Checker::left`]): a `GOTO n` with no condition forgets the parameters as it is read
+/// (no run is kept for its target), but where it is surely taken its target is reached from
+/// it alone and starts with them, as a known-true IF's does (review 53, F17).
 #[derive(Clone)]
 pub(super) struct Left {
     machine: crate::modal::ModalMachine,
+    params: HashMap<Vec<u8>, crate::decimal::Dec>,
+    arrival: Option<super::params::Arrival>,
 }
 
 /// Whether a finding of `rule` is of running its block (dropped for a block passed over),
@@ -137,11 +143,22 @@ impl Checker {
         let mut goto_targets = self.goto_targets.clone();
         goto_targets.remove(&target);
         let mut run = self.run_of();
-        // (the position the jump's block left: the checker forgot it, as it does at a jump
-        // it does not follow, and the blocks passed over never move the machine; review 51,
-        // F14)
+        let mut no_feed = false;
+        // (the position, feed and speed the jump's block left: the checker forgot them, as it
+        // does at a jump it does not follow, and the blocks passed over never run -- review
+        // 51, F14; "no feed ever set" stays so, review 53, F2 -- and the parameters, which a
+        // `GOTO n` with no condition forgot as it was read: review 53, F17)
         if let Some(left) = left {
-            run.machine.position_of(&left.machine);
+            let Left {
+                machine,
+                params,
+                arrival,
+            } = *left;
+            run.machine.kept_of(&machine);
+            no_feed = machine.state.feed.is_none()
+                && machine.state.unknown & crate::modal::bit(b'F') == 0;
+            run.params = params;
+            run.arrival = arrival;
         }
         self.passage_noted(b.line, target);
         self.passed = Some(Box::new(Passed {
@@ -149,6 +166,7 @@ impl Checker {
             target,
             conditional,
             run,
+            no_feed,
             path: self.path.len(),
             hint_said: self.limits_hint_said,
             goto_targets,
@@ -161,6 +179,8 @@ impl Checker {
     pub(super) fn left(&self) -> Left {
         Left {
             machine: self.machine.clone(),
+            params: self.params.clone(),
+            arrival: self.arrival.clone(),
         }
     }
 
@@ -222,6 +242,7 @@ impl Checker {
             line,
             target,
             run,
+            no_feed,
             path,
             hint_said,
             goto_targets,
@@ -243,6 +264,15 @@ impl Checker {
             (s.units, s.feed_units, s.feed_mode)
         };
         let Some(b) = arrived.filter(|_| modes(self) == modes(&run)) else {
+            // (judged as before, but the jump's arrival at its target is its first, and has
+            // the feed the jump left: none ever set stays none, whatever a block between
+            // sets -- review 53, F2)
+            if no_feed && b.is_some() {
+                self.no_feed_target = target;
+                if let Some(b) = arrived {
+                    self.no_feed_arrival(b);
+                }
+            }
             return;
         };
         let mut i = 0;
@@ -259,6 +289,32 @@ impl Checker {
             .retain(|t| !t.own_of(line) && !t.own_after(line));
         self.run_state_of(*run);
         self.limits_hint_said = hint_said;
+    }
+
+    /// Block `b` where a jump surely taken, whose passage was given up, left no feed ever set
+    /// ([`Checker::no_feed_target`]): at its target, the feed is none. Where no jump read
+    /// before names a block between, the jump runs before any way into one can (a jump back
+    /// read after the target), so the target's first run has the jump's feed, and a feed
+    /// move there without F is TG401 on a run that surely occurs (a FANUC's or a Haas's F is
+    /// modal: "no feed" until an F is given). A block between that a jump read names gives
+    /// that up: a way into it may come first.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn no_feed_arrival(&mut self, b: &BlockView<'_>) {
+        let Some(n) = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'N' && w.expression.is_empty())
+            .and_then(|w| w.value.filter(|_| !w.point))
+        else {
+            return;
+        };
+        if n == self.no_feed_target {
+            self.no_feed_target = 0;
+            self.machine.no_feed();
+        } else if self.goto_computed || self.goto_targets.contains_key(&n) {
+            self.no_feed_target = 0;
+        }
     }
 
     /// The state of running the program taken from `run` (the checker at a jump): the
@@ -420,6 +476,42 @@ mod tests {
             "{}",
             found[0].message
         );
+    }
+
+    /// Review 53, F17: a `GOTO` with no condition keeps the parameters for its target, as a
+    /// known-true IF does: `X#1` there is X-700, a 1100 span from X400 (travel X -500..500),
+    /// at its word, and no TG141. Where a numbered block between may be another way in, the
+    /// values are not known there (TG141, no span), as before.
+    #[test]
+    fn a_goto_keeps_the_parameters_for_its_target() {
+        let body = "G0 X400. Y0\n#1=-700.\nGOTO26\nG0 X5.\nN26 G0 X#1";
+        assert_eq!(travel(body), [(6, 8)]);
+        assert_eq!(fired(fanuc(), &program(body), Rule::NotEvaluated), []);
+        let body = "G0 X400. Y0\n#1=-700.\nGOTO26\nN20 #1=0\nN26 G0 X#1";
+        assert_eq!(travel(body), []);
+        assert_eq!(fired(fanuc(), &program(body), Rule::NotEvaluated), [(6, 8)]);
+    }
+
+    /// Review 53, F2: a jump surely taken from where no F was ever given arrives with none:
+    /// a feed move at its target is TG401 (as without the jump), whether the blocks between
+    /// are passed over or a numbered one gives the passage up -- an F between is not run
+    /// before the target's first run. An F at the target, or before the jump, is in force.
+    #[test]
+    fn a_jump_surely_taken_keeps_no_feed_for_its_target() {
+        let no_feed = |body: &str| fired(fanuc(), &program(body), Rule::NoFeedRate);
+        for between in ["G0 X5.", "G1 X1. F100.", "N5 F100.", "N5 G1 X1. F100."] {
+            let body = format!("G0 X0 Y0 Z10.\nGOTO10\n{between}\nN10 G1 Z-1.\nX50.");
+            assert_eq!(no_feed(&body), [(5, 8), (6, 1)], "{between}");
+        }
+        for body in [
+            "G0 X0 Y0 Z10.\nGOTO10\nN5 F100.\nN10 G1 Z-1. F50.\nX50.",
+            "G0 X0 Y0 Z10. F50.\nGOTO10\nN5 G0 X5.\nN10 G1 Z-1.\nX50.",
+            "G0 X0 Y0 Z10.\nGOTO10\nG0 X5.\nN10 F50.\nG1 Z-1.",
+            // (a jump read before may come to N5 first, with its F)
+            "G0 X0 Y0 Z10.\nIF[#5EQ1]GOTO5\nGOTO10\nN5 F100.\nN10 G1 Z-1.\nX50.",
+        ] {
+            assert_eq!(no_feed(body), [], "{body}");
+        }
     }
 
     /// Review 51, F19: the note at a jump surely taken says what the checker does with it,

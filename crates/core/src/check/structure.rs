@@ -241,6 +241,7 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.passage_ended(None);
+        self.no_feed_target = 0;
         self.targets_ended();
         self.linuxcnc_locals_ended();
         self.reach_reset();
