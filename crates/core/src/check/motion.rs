@@ -744,8 +744,15 @@ impl Checker {
                 .and_then(|v| Dec::parse(v.trim()))
         });
         let letter = self.config.modal.arc_radius;
+        let radius_length = letter != b'R' || self.config.pqr[2] == Role::Length;
+        if radius_length && unknown(letter) {
+            // a radius of unknown value (`R#500`, #500 not known) is given all the same: the
+            // arc is not judged, as with a centre of unknown value (review 54, F6: TG404
+            // "arc without I J (or R)")
+            return;
+        }
         let radius = match v.get(letter) {
-            Some(r) if letter != b'R' || self.config.pqr[2] == Role::Length => Some(r),
+            Some(r) if radius_length => Some(r),
             _ => cr,
         };
         let radius_word = radius.is_some();

@@ -1555,6 +1555,10 @@ impl Checker {
                     let Some((number, rhs)) = self.indirect_target(w.expression) else {
                         continue;
                     };
+                    // (LinuxCNC reads the number with the values from before the line: after
+                    // an earlier setting of the line, `#1=2 ##1=900`, the number is taken as
+                    // not known; review 54, F3)
+                    let number = number.filter(|_| !linuxcnc || set_before.is_empty());
                     let Some(number) = number else {
                         self.params.clear();
                         self.arrival = None;
