@@ -27,6 +27,20 @@ def errors(text: str) -> list[tuple[str, int, str]]:
             if f.severity == "error"]
 
 
+def clean_on_both(tmp_path, text: str) -> None:
+    """No error from the checker, and rs274 runs the program to its end."""
+    assert errors(text) == [], text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+def refused_once(text: str, line: int) -> str:
+    """The checker's one error, TG412 at ``line``: its message."""
+    found = errors(text)
+    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
+    return found[0][2]
+
+
 # (the block or blocks after HEAD, the rule, its line, rs274's message)
 REFUSED = [
     ("G1 X1 Y1 I2", "TG412", 3,
@@ -909,10 +923,7 @@ def test_codes_rs274_refuses_under_compensation_are_told_at_the_g(tmp_path, body
     "o1 if [#<_x> GT 1]\nM2\nG999\no1 endif",
 ])
 def test_review52_the_lines_after_an_m2_in_a_block_known_to_run_are_not_judged(tmp_path, body):
-    text = program(body)
-    assert errors(text) == [], text
-    out = rs274_output(tmp_path, text)
-    assert "PROGRAM_END" in out, out
+    clean_on_both(tmp_path, program(body))
 
 
 def test_review52_the_lines_after_a_block_whose_m2_may_not_run_are_judged(tmp_path):
@@ -946,9 +957,8 @@ G53_AFTER_NESTED = [
 def test_review52_a_g91_in_nested_blocks_known_to_run_refuses_the_g53_after(
         tmp_path, body, line):
     text = program(body)
-    found = errors(text)
-    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
-    assert found[0][2].startswith("Cannot use g53 incremental (rs274ngc)")
+    message = refused_once(text, line)
+    assert message.startswith("Cannot use g53 incremental (rs274ngc)")
     assert "Cannot use g53 incremental" in rs274_output(tmp_path, text)
 
 
@@ -967,10 +977,7 @@ def test_review52_a_g91_in_nested_blocks_known_to_run_refuses_the_g53_after(
     "o1 do\no2 if [#<_x> LT 1]\no1 break\no2 endif\nG91\no1 while [0]\nG53 G0 Z0",
 ])
 def test_review52_a_mode_nested_blocks_may_not_leave_refuses_nothing(tmp_path, body):
-    text = program(body)
-    assert errors(text) == [], text
-    out = rs274_output(tmp_path, text)
-    assert "PROGRAM_END" in out, out
+    clean_on_both(tmp_path, program(body))
 
 
 @pytest.mark.parametrize("body, line, says", [
@@ -984,10 +991,9 @@ def test_review52_a_mode_nested_blocks_may_not_leave_refuses_nothing(tmp_path, b
 def test_review52_a_line_in_nested_blocks_known_to_run_is_refused_as_it_runs(
         tmp_path, body, line, says):
     text = program(body)
-    found = errors(text)
-    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
-    assert found[0][2].startswith(says), found
-    assert "when it runs it" not in found[0][2]
+    message = refused_once(text, line)
+    assert message.startswith(says), message
+    assert "when it runs it" not in message
     assert says in rs274_output(tmp_path, text)
 
 
@@ -1019,10 +1025,7 @@ def test_review52_a_call_of_a_sub_defined_only_in_a_block_not_run_is_refused(tmp
     "o1 repeat [1]\no<s> sub\nG0 X1\no<s> endsub\no1 endrepeat\no<s> call",
 ])
 def test_review52_a_sub_defined_in_a_block_is_found_where_rs274_finds_it(tmp_path, body):
-    text = program(body)
-    assert errors(text) == [], text
-    out = rs274_output(tmp_path, text)
-    assert "PROGRAM_END" in out, out
+    clean_on_both(tmp_path, program(body))
 
 
 def test_review52_a_sub_defined_only_in_a_block_not_run_is_found_after_the_end(tmp_path):
@@ -1051,9 +1054,8 @@ def test_review52_a_sub_defined_only_in_a_block_not_run_is_found_after_the_end(t
 ])
 def test_review52_a_break_of_no_loop_s_label_is_refused(tmp_path, body, line, says):
     text = program(body)
-    found = errors(text)
-    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
-    assert found[0][2].startswith(says.split(":")[0] + " (rs274ngc)"), found
+    message = refused_once(text, line)
+    assert message.startswith(says.split(":")[0] + " (rs274ngc)"), message
     assert says in rs274_output(tmp_path, text)
 
 
@@ -1063,10 +1065,7 @@ def test_review52_a_break_of_no_loop_s_label_is_refused(tmp_path, body, line, sa
     "o<s> sub\no1 if [#1 GT 1]\no<s> break\no1 endif\no<s> endsub\no<s> call",
 ])
 def test_review52_a_break_rs274_does_not_refuse_is_clean(tmp_path, body):
-    text = program(body)
-    assert errors(text) == [], text
-    out = rs274_output(tmp_path, text)
-    assert "PROGRAM_END" in out, out
+    clean_on_both(tmp_path, program(body))
 
 
 @pytest.mark.parametrize("body, line", [
@@ -1079,9 +1078,8 @@ def test_review52_a_break_rs274_does_not_refuse_is_clean(tmp_path, body):
 def test_review52_a_sub_defined_in_a_counted_loop_turning_twice_is_refused(
         tmp_path, body, line):
     text = program(body)
-    found = errors(text)
-    assert [(rule, n) for rule, n, _ in found] == [("TG412", line)], found
-    assert found[0][2].startswith("sub: o|s| found in illegal location (rs274ngc)")
+    message = refused_once(text, line)
+    assert message.startswith("sub: o|s| found in illegal location (rs274ngc)")
     assert f"line:{line} sub: o|s| found in illegal location" in rs274_output(tmp_path, text)
 
 
