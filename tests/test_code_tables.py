@@ -233,6 +233,28 @@ def test_two_okuma_m_codes_of_one_group_are_tg308(block, pair):
     assert fired(okuma("M60 M101"), "okuma-mill", "TG308") == []
 
 
+@pytest.mark.parametrize(("profile", "program", "line"), [
+    ("fanuc-mill", fanuc("S1000 M03 M04"), 4),
+    ("fanuc-lathe", "%\nO1000\nG21 G18 G00 X0 Z10.\nS1000 M03 M05\nM30\n%\n", 4),
+    ("sinumerik-840d", sinumerik("S1000 M3 M4"), 3),
+    ("okuma-mill", okuma("S1000 M03 M05"), 4),
+])
+def test_two_spindle_codes_in_a_block_are_refused_where_the_ladder_picks(profile, program, line):
+    """Where no source says the control alarms on two M codes of one group (TG308, a warning),
+    the spindle's group stays an error (review 51 F9): whether and which way the spindle turns
+    for the cuts after it is not known, and the project refuses what decides how the tool
+    meets the work, with the reason."""
+    hits = fired(program, profile, "TG304")
+    assert [(severity, at) for severity, at, _ in hits] == [("error", line)]
+    assert "are both in modal group spindle; the builder's ladder decides" in hits[0][2]
+    assert fired(program, profile, "TG308") == []
+    # the coolant's group stays a warning on the same controls (the Okuma's: its own test)
+    if not profile.startswith("okuma"):
+        coolant = program.replace("M03 M04", "M08 M09").replace("M03 M05", "M08 M09")
+        coolant = coolant.replace("M3 M4", "M8 M9")
+        assert [s for s, *_ in fired(coolant, profile, "TG308")] == ["warning"]
+
+
 @pytest.mark.parametrize("block", ["M138 M139", "M73 M74", "M130(A.PNG) M131"])
 def test_two_haas_m_codes_of_one_pair_are_tg304(block):
     """The on and off codes of one function of the Haas NGC mill's list (2017) share a group."""

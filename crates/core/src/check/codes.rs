@@ -298,15 +298,27 @@ impl Checker {
             Some((other, _)) if per_word && distance(other) && distance(code) => {}
             Some((other, j)) if other != code => {
                 let group = group_of_code(&self.config, code).to_string();
+                let m_code = matches!(code, CodeRef::Whole(b'M', _));
+                // Two spindle codes stay an error where the control's own choice is not
+                // sourced: which way the spindle turns, or whether it turns, decides how the
+                // tool meets the work (the project's safety rule: refuse with the reason)
+                let unsourced = m_code && self.m_group_unsourced();
+                let spindle = unsourced && group == "spindle";
                 // (in the block's order: `M03 M05` names M03 first)
-                let message = format!(
+                let mut message = format!(
                     "{} and {} are both in modal group {group}",
                     words[j].token(),
                     words[i].token(),
                 );
+                if spindle {
+                    message.push_str(
+                        "; the builder's ladder decides which the machine takes, so whether and \
+                         which way the spindle turns for the cuts after it is not known",
+                    );
+                }
                 self.conflict_at
                     .get_or_insert_with(|| (line, message.clone()));
-                let rule = if matches!(code, CodeRef::Whole(b'M', _)) && self.m_group_unsourced() {
+                let rule = if unsourced && !spindle {
                     Rule::MCodesOneGroup
                 } else {
                     Rule::ModalGroupConflict
@@ -979,7 +991,8 @@ mod tests {
     /// Two M codes of one group, the program stops among them, are TG308, a warning, where no
     /// source shows the control alarms (a FANUC, a SINUMERIK, an Okuma OSP), TG304 where one
     /// does or the standard rules (the ISO profiles, LinuxCNC's rs274, the Haas manual's one M
-    /// code a line); two G codes stay TG304 on every family.
+    /// code a line); two G codes stay TG304 on every family, and so do two of the spindle's
+    /// group, whose choice decides how the tool meets the work (review 51 F9).
     #[test]
     fn two_m_codes_of_one_group_by_evidence() {
         let fanuc = || of_family(Family::MacroB);
@@ -995,7 +1008,7 @@ mod tests {
             let family = config.family;
             let found = findings(
                 config.clone(),
-                &program("G0 X0\nM03 M05"),
+                &program("G0 X0\nM08 M09"),
                 Rule::MCodesOneGroup,
             );
             assert_eq!(found.len(), 1, "{family:?}");
@@ -1003,13 +1016,33 @@ mod tests {
             assert!(
                 found[0]
                     .message
-                    .starts_with("M03 and M05 are both in modal group"),
+                    .starts_with("M08 and M09 are both in modal group coolant"),
                 "{}",
                 found[0].message
             );
             assert_eq!(
-                at(config.clone(), "G0 X0\nM03 M05", Rule::ModalGroupConflict),
+                at(config.clone(), "G0 X0\nM08 M09", Rule::ModalGroupConflict),
                 []
+            );
+            // the spindle's group: refused, with the reason
+            let spindle = findings(
+                config.clone(),
+                &program("G0 X0\nM03 M05"),
+                Rule::ModalGroupConflict,
+            );
+            assert_eq!(spindle.len(), 1, "{family:?}");
+            assert_eq!((spindle[0].line, spindle[0].column), (3, 5), "{family:?}");
+            assert!(
+                spindle[0].message.starts_with(
+                    "M03 and M05 are both in modal group spindle; the builder's ladder decides"
+                ),
+                "{}",
+                spindle[0].message
+            );
+            assert_eq!(
+                at(config.clone(), "G0 X0\nM03 M05", Rule::MCodesOneGroup),
+                [],
+                "{family:?}"
             );
             assert_eq!(
                 at(
