@@ -146,3 +146,76 @@ def test_a_word_met_again_in_other_units_has_its_own_verdict() -> None:
         past = [f for f in findings(text, "fanuc-mill", keep) if f[0] == "TG208"]
         assert [f[1] for f in past] == [4, 8], keep
 
+
+
+def cycles_twice(first: str, second: str, *, lathe: bool = False) -> str:
+    """A program that drills with `first`, then with `second`: two canned cycle blocks whose
+    words have the same shapes, so the second's are read from the first's kept verdicts."""
+    if lathe:
+        head = "G21 G18 G40 G80 G97\nG54 G00 X0 Z5. S500 M03"
+        return f"%\nO2014\n{head}\n{first}\nG80\nG00 X0 Z5.\n{second}\nG80\nM30\n%\n"
+    head = "G21 G17 G40 G80 G90\nG54 G00 X0 Y0 S2000 M03\nG43 H01 Z5."
+    return f"%\nO2014\n{head}\n{first}\nG90 G80\n{second}\nG90 G80\nM30\n%\n"
+
+
+def by_rule(found: list[tuple[str, int, int, str]], rule: str) -> list[tuple[int, int]]:
+    return [(f[1], f[2]) for f in found if f[0] == rule]
+
+
+@pytest.mark.parametrize("k", ["K3", "K03", "K3."])
+@pytest.mark.parametrize("cycle", ["G81", "G73 Q1.", "G83 Q1."])
+def test_a_fanuc_cycle_s_repeat_count_met_again_is_a_count(cycle: str, k: str) -> None:
+    """Review 54, F1: a FANUC mill's K is the cycle's number of repeats (0i-MF, "Canned
+    cycle"), written without a point as a count. The second of two cycle blocks whose K has
+    the first's shape read it from the kept verdict in the letter's least increments
+    (K3 as 0.003): a false TG544, and the holes after it not followed, so a real TG601 was
+    lost. Three holes 10 apart, then three 500 apart: X ends at 1530, past the 1524 travel."""
+    first = f"G91 G99 {cycle} X10. Z-5. R-3. {k} F100."
+    text = cycles_twice(first, first.replace("X10.", "X500."))
+    for keep in (True, False):
+        found = findings(text, "fanuc-mill", keep)
+        assert by_rule(found, "TG544") == [], keep
+        travel = [f for f in found if f[0] == "TG601"]
+        assert [(f[1], f[2]) for f in travel] == [(8, 10 + len(cycle))], keep
+        assert "X spans 1530 (from 0 to 1530)" in travel[0][3]
+
+
+def test_identical_cycle_blocks_read_alike() -> None:
+    """The reproducer of review 54 F1 (the same row of holes drilled twice: the same block
+    twice) and a count that is none (K2 then K2.5): clean, then TG544 at the second only."""
+    block = "G91 G99 G81 X10. Z-5. R-3. K3 F100."
+    text = cycles_twice(block, "G00 X0 Y20.\n" + block)
+    assert by_rule(findings(text, "fanuc-mill", True), "TG544") == []
+    text = cycles_twice("G91 G73 X100. Z-25. R-8. Q1. K2 F120.",
+                        "G91 G73 X50. Z-20. R-5. Q1. K2.5 F60.")
+    assert by_rule(findings(text, "fanuc-mill", True), "TG544") == [(8, 29)]
+
+
+def test_a_haas_count_is_l_and_its_peck_k_a_length() -> None:
+    """A Haas mill counts holes with L (mill operator's manual, G81-G89: "L number of holes"),
+    which is met again as a count; its K under G83 is the least peck depth, a length (review
+    51 F15): K3 without a point is 0.003 in both blocks, with no TG544."""
+    first = "G91 G99 G81 X10. Z-5. R-3. L3 F100."
+    text = cycles_twice(first, first.replace("X10.", "X500."))
+    found = findings(text, "haas-mill", True)
+    assert by_rule(found, "TG544") == []
+    assert by_rule(found, "TG601") == [(8, 13)]
+    first = "G91 G99 G83 X10. Z-5. R-3. Q1. K3 F100."
+    text = cycles_twice(first, first)
+    for keep in (True, False):
+        found = findings(text, "haas-mill", keep)
+        assert by_rule(found, "TG544") == [], keep
+        mixed = [f for f in found if f[0] == "TG201"]
+        assert [(f[1], f[2]) for f in mixed] == [(6, 32)], keep
+        assert "as 0.003" in mixed[0][3]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "fanuc-lathe-c"])
+def test_a_fanuc_lathe_s_drilling_count_met_again_is_a_count(profile: str) -> None:
+    """A FANUC lathe's G83 takes K as its repeats too: met again, K3 and K03 are counts (no
+    TG544); K0 is none, in both blocks, kept or not."""
+    for k, expected in (("K3", []), ("K03", []), ("K0", [(5, 22), (8, 22)])):
+        block = f"G83 Z-10. R-3. Q2000 {k} F0.1"
+        text = cycles_twice(block, block, lathe=True)
+        for keep in (True, False):
+            assert by_rule(findings(text, profile, keep), "TG544") == expected, (k, keep)

@@ -185,6 +185,32 @@ def test_motion_says_where_the_machine_goes_once_per_difference(tmp_path):
     assert found[1].details() == ["then incremental yes -> no, position X 2 mm -> 1 mm"]
 
 
+def test_motion_follows_a_fanuc_cycle_s_repeat_count(tmp_path):
+    """Review 54, F1, in the modal state's own reading: a FANUC mill's K is the canned cycle's
+    number of repeats (0i-MF, "Canned cycle"); written without a point (`K3`) it is three
+    holes, not the 0.003 K's least increments read. Under G91 the holes step X three times:
+    the motion after the block is followed, not lost (before: no position after it)."""
+    head = "%\nO2014\nG21 G17 G40 G80 G90\nG54 G00 X0 Y0 S2000 M03\nG43 H01 Z5.\n"
+    tail = "G90 G80\nG00 Y20.\nM30\n%\n"
+    a = write(tmp_path, "a.nc", head + "G91 G99 G81 X10. Z-5. R-3. K3 F100.\n" + tail)
+    b = write(tmp_path, "b.nc", head + "G91 G99 G81 X20. Z-5. R-3. K3 F100.\n" + tail)
+    found, _ = differences(a, b, motion=True)
+    assert [(d.a.line, d.details()) for d in found] == [
+        (6, ["X10. -> X20. (+10 mm, +10000 steps)", "then position X 30 mm -> 60 mm"])]
+
+
+def test_a_cycle_s_repeat_count_is_compared_as_a_count(tmp_path):
+    """The diff's reader reads a FANUC cycle's K as the count it is (0i-MF, "Canned cycle"),
+    whole, as the checker and the converter read it: `K3` against `K4` is one repeat more,
+    1000 steps of K's format, not 0.001 (one step: a tolerance of a step accepted it)."""
+    head = "%\nO2014\nG21 G17 G90\nG54 G00 X0 Y0 S2000 M03\n"
+    a = write(tmp_path, "a.nc", head + "G91 G99 G81 X10. Z-5. R-3. K3 F100.\nG80\nM30\n%\n")
+    b = write(tmp_path, "b.nc", head + "G91 G99 G81 X10. Z-5. R-3. K4 F100.\nG80\nM30\n%\n")
+    found, _ = differences(a, b, tolerance=Decimal(1))
+    assert [(d.a.line, d.details()) for d in found] == [(5, ["K3 -> K4 (+1, +1000 steps)"])]
+    assert differences(a, a)[0] == []
+
+
 # -- errors and the command line ----------------------------------------------------------------
 
 

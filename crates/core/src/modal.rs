@@ -242,6 +242,13 @@ pub struct BlockValues {
     others: u32,
     /// Letters given a value the checker cannot evaluate (`F#101`), by [`bit`].
     pub unknown: u32,
+    /// The block's first K, written without a point where the profile reads K in least
+    /// increments, read as its whole number: a FANUC canned cycle's repeat count (0i-MF,
+    /// "Canned cycle": `K3`, three holes), which K's increments read 0.003
+    /// ([`ModalMachine::cycle_repeats`]). Set by the modal state's own reading alone
+    /// ([`crate::word::Numbers::block_values`], which resets it): the checker reads a count
+    /// by its block's codes, and leaves it None (no cost on its path).
+    pub k_whole: Option<Dec>,
     /// The block's M02/M30 may not run (LinuxCNC: one inside an o-word condition or loop, or
     /// in a subroutine's definition): the lines after it run only where it did not, so it
     /// resets nothing ([`ModalMachine::apply`]).
@@ -262,6 +269,7 @@ impl Default for BlockValues {
             others: 0,
             unknown: 0,
             end_unsure: false,
+            k_whole: None,
         }
     }
 }
@@ -1448,7 +1456,10 @@ impl ModalMachine {
         if v.unknown & bit(letter) != 0 {
             return Some(None);
         }
-        let n = v.get(letter).or_else(|| v.other(letter))?;
+        let n = match v.k_whole.filter(|_| letter == b'K') {
+            Some(n) => n,
+            None => v.get(letter).or_else(|| v.other(letter))?,
+        };
         if n.is_whole() && n.trunc() == 1 {
             return None;
         }

@@ -496,7 +496,7 @@ impl Reader {
         let repeated = self.cycle_code.filter(|c| !gs.contains(c));
         let mut with_cycle = gs.clone();
         with_cycle.extend(repeated);
-        let mut roles = crate::convert::cycle_meanings_in(
+        let meanings = crate::convert::cycle_meanings_in(
             system,
             family,
             haas,
@@ -504,8 +504,10 @@ impl Reader {
             &with_cycle,
             &ms,
             &spans,
-        )
-        .roles;
+        );
+        let table_others = meanings.table_others();
+        let mut roles = meanings.roles;
+        let cycle_roles = roles;
         let radius = self.settings.modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
             roles[usize::from(radius - b'A')] = Some(role);
@@ -560,6 +562,20 @@ impl Reader {
             returns: crate::dialect::return_code(self.settings.family)
                 .is_some_and(|code| ms.contains(&code)),
         };
+        // the words the cycle's table makes a count or an angle of its own (`G81 K3`, three
+        // repeats), which the control reads whole, as the checker (`Checker::selector`) and
+        // the converter (`table_angle`) read them, where no later rule of the block gave the
+        // letter another role (a macro call's arguments are its macro's)
+        let macro_call =
+            self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66);
+        let counts = (0..26usize)
+            .filter(|&i| {
+                !macro_call
+                    && roles[i] == Some(Role::Other)
+                    && cycle_roles[i] == roles[i]
+                    && table_others & 1 << i == 0
+            })
+            .fold(0u32, |bits, i| bits | 1 << i);
         let absolute = gs.contains(&53);
         for (w, n) in words.iter().zip(&numbers) {
             if w.letter == b'G' {
@@ -579,7 +595,7 @@ impl Reader {
                     continue;
                 }
             }
-            out.push(self.word(w, &roles, flags, absolute));
+            out.push(self.word(w, &roles, counts, flags, absolute));
         }
         let resets = flags.ended
             || flags.clamp
@@ -1099,6 +1115,7 @@ impl Reader {
         &self,
         w: &Word<'_>,
         roles: &[Option<Role>; 26],
+        counts: u32,
         flags: BlockFlags,
         absolute: bool,
     ) -> ReadWord {
@@ -1126,6 +1143,8 @@ impl Reader {
             .then(|| roles[(letter - b'A') as usize])
             .flatten();
         let units = units_of(letter, (self.units, self.feed_units));
+        // (a count of the cycle's table: read whole, as a selector is)
+        let count = letter.is_ascii_uppercase() && counts & 1 << (letter - b'A') != 0;
         let cycle_increments = role == Some(Role::Increments);
         let (fmt, increments, mut step, mut kind) = if cycle_increments {
             // a length the cycle writes as a count (G76 P1200 Q350): a count of the control's
@@ -1140,6 +1159,7 @@ impl Reader {
             // number that is no length (G68 R) counts an A word's increment (0.001 deg), where
             // the control reads increments, as the converter reads it
             let angle = role == Some(Role::Other)
+                && !count
                 && !(flags.dwell && self.settings.modal.dwell.contains(&letter))
                 && self.settings.reads_increments(letter);
             // a length of a cycle or a code whose letter's format is a whole number's (Okuma
@@ -1184,7 +1204,7 @@ impl Reader {
             }
             _ => {}
         }
-        let selector = role == Some(Role::Selector);
+        let selector = role == Some(Role::Selector) || count;
         let explicit = self.settings.explicit
             || reads_whole(self.settings.increments.as_deref(), w.letter)
             || selector;

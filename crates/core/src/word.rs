@@ -472,6 +472,7 @@ impl<'a> Numbers<'a> {
     /// is left out, as the checker reports it.
     pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
         out.clear();
+        out.k_whole = None;
         for token in tokens {
             let w = Word::new(token, 0);
             if w.number.is_empty() || !w.index.is_empty() {
@@ -489,6 +490,19 @@ impl<'a> Numbers<'a> {
                 }
                 b'G' => out.push_g(value.trunc()),
                 b'M' => out.ms.push(value.trunc()),
+                // (a count K3 is 3, where K's increments read 0.003: BlockValues::k_whole)
+                b'K' if !w.point && out.get(b'K').is_none() && self.reads_increments(b'K') => {
+                    let negative = w.sign == b"-";
+                    out.k_whole = w.value.map(|m| {
+                        let n = Dec::from_u64(m, 0);
+                        if negative {
+                            -n
+                        } else {
+                            n
+                        }
+                    });
+                    out.set_default(b'K', value);
+                }
                 letter => out.set_default(letter, value),
             }
         }
@@ -889,6 +903,38 @@ mod tests {
         assert!(numbers.format_in(b'Y', Units::Metric).is_none());
         assert_eq!(units_of(b'F', (Units::Metric, Units::Inch)), Units::Inch);
         assert_eq!(units_of(b'X', (Units::Metric, Units::Inch)), Units::Metric);
+    }
+
+    /// Review 54, F1, in the modal state's own reading: where K counts least increments (a
+    /// FANUC's `K3` is 0.003 as a length), its number written without a point is also kept
+    /// whole, a canned cycle's repeat count; K with a point, a second K, or a profile that
+    /// reads K whole keep none.
+    #[test]
+    fn block_values_keep_a_pointless_k_whole_where_k_counts_increments() {
+        let formats = vec![(b'K', fmt(5, 3))];
+        let fanuc = Numbers {
+            formats: &formats,
+            formats_inch: None,
+            explicit: true,
+            increments: Some(b"PLFG"),
+        };
+        let k = |numbers: &Numbers<'_>, tokens: &[&[u8]]| {
+            let mut out = BlockValues::default();
+            numbers.block_values(tokens, (Units::Metric, Units::Metric), &mut out);
+            let of = |d: Option<Dec>| d.map(|d| d.to_string());
+            (of(out.get(b'K')), of(out.k_whole))
+        };
+        let some = |a: &str, b: &str| (Some(a.to_string()), Some(b.to_string()));
+        assert_eq!(k(&fanuc, &[b"G81", b"K3"]), some("0.003", "3"));
+        assert_eq!(k(&fanuc, &[b"G81", b"K03"]), some("0.003", "3"));
+        assert_eq!(k(&fanuc, &[b"K-12"]), some("-0.012", "-12"));
+        assert_eq!(k(&fanuc, &[b"K3."]), (Some("3".into()), None));
+        assert_eq!(k(&fanuc, &[b"K3.", b"K4"]), (Some("3".into()), None));
+        let whole = Numbers {
+            increments: None,
+            ..fanuc
+        };
+        assert_eq!(k(&whole, &[b"K3"]), (Some("3".into()), None));
     }
 
     #[test]

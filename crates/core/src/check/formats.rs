@@ -402,6 +402,36 @@ impl Checker {
         (fmt, in_formats, "the format")
     }
 
+    /// Whether `letter` is a selector or a count in this block: a selector (G05.1 Q1) is a
+    /// whole number, whatever the control does with a length; so is a count or an angle of a
+    /// cycle's table (`G81 K3` repeats, `G73 R3` divisions, Haas `G76 A60`, `G71 R1`,
+    /// `G84 J2`), which the converter keeps as written -- unlike an angle of the meaning table
+    /// (`G68 R45`), which a FANUC reads in 0.001 deg. Decided by the role and the table bit
+    /// the block's codes give the letter, both in a word's key ([`Checker::format_key`]).
+    fn selector(&self, letter: u8) -> bool {
+        let role = self.meanings.role(letter);
+        let table =
+            letter.is_ascii_uppercase() && self.meanings.table_others() & 1 << (letter - b'A') != 0;
+        role == Some(Role::Selector) || (role == Some(Role::Other) && !table)
+    }
+
+    /// How a number of `letter` written without a point is read in this block: a count or a
+    /// selector ([`Checker::selector`]) is its whole number (`K3` of a canned cycle is three
+    /// repeats, not 0.003, whatever the letter's reading as a length), anything else as the
+    /// profile reads its letter. The one reading of [`Checker::format`] and of a kept
+    /// verdict's ([`Checker::format_or_kept`]): the scale kept with a key is this reading's,
+    /// so a word kept clean reads as the first word of its key was read (review 54 F1: the
+    /// second `G81 ... K3` of a program was read 0.003, from the letter's reading).
+    fn block_no_point(&self, letter: u8) -> NoPoint {
+        match self.selector(letter) {
+            true => NoPoint {
+                whole: true,
+                increments: false,
+            },
+            false => self.no_point(letter),
+        }
+    }
+
     /// The block's part of the keys of its words' verdicts ([`Checker::format_key`]): its
     /// units of lengths and of the feed, its feed mode and macro call, and the file's
     /// decimal styles so far and whether it has refused. Worked out once a block, and again
@@ -660,7 +690,7 @@ impl Checker {
             let value = match read {
                 Some(value) if w.sign == b"-" => Ok(-value),
                 Some(value) => Ok(value),
-                None => read_word(fmt, w, || self.no_point(w.letter)),
+                None => read_word(fmt, w, || self.block_no_point(w.letter)),
             };
             if let Ok(value) = value {
                 if cfg!(debug_assertions) {
@@ -687,7 +717,7 @@ impl Checker {
             let scale = if w.point || w.value.is_none() {
                 NO_SCALE
             } else {
-                let no_point = self.no_point(w.letter);
+                let no_point = self.block_no_point(w.letter);
                 fmt.scale_of_digits(w.number.len(), no_point.whole, no_point.increments)
                     .filter(|&s| s as usize <= MAX_DIGITS)
                     .map_or(NO_SCALE, |s| s as u8)
@@ -762,13 +792,8 @@ impl Checker {
             self.report(Rule::UnexpectedSign, message, line, w.column);
             refused = true;
         }
-        // a selector (G05.1 Q1) is a whole number, whatever the control does with a length;
-        // so is a count or an angle of a cycle's table (`G81 K3` repeats, `G73 R3` divisions,
-        // Haas `G76 A60`, `G71 R1`, `G84 J2`), which the converter keeps as written -- unlike
-        // an angle of the meaning table (`G68 R45`), which a FANUC reads in 0.001 deg
-        let table = w.letter.is_ascii_uppercase()
-            && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
-        let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
+        // (a selector or a count is a whole number, no dimension: `G81 K3`, `G05.1 Q1`)
+        let selector = self.selector(w.letter);
         // (a word whose role its code leaves unknown, Haas `M19 R90`, is read as the profile
         // reads its letter: TG201 says how it is read without a point, and claims no role)
         let dimension =
@@ -837,16 +862,7 @@ impl Checker {
                 self.report(Rule::MixedDecimalStyles, message, at, column);
             }
         }
-        // (a count or a selector without a point is its whole number: `K3` of a canned cycle
-        // is three repeats, not 0.003, whatever the letter's reading as a length)
-        let no_point = || match selector {
-            true => NoPoint {
-                whole: true,
-                increments: false,
-            },
-            false => self.no_point(w.letter),
-        };
-        let value = match read_word(&fmt, w, no_point) {
+        let value = match read_word(&fmt, w, || self.block_no_point(w.letter)) {
             Ok(v) => v,
             Err(message) => {
                 self.refused_at.get_or_insert(line);
@@ -1916,6 +1932,109 @@ mod tests {
             assert!(!kept_run.is_empty(), "{family:?}: nothing found");
             assert_eq!(kept_run, afresh_run, "{family:?}");
         }
+    }
+
+    /// Review 54, F1: a cycle's repeat count written without a point (`K3`, `K03`) is its
+    /// whole number in every block that writes it, not only in the first: a word kept clean
+    /// is read with the reading its first word was read with (the count's, not its letter's
+    /// least increments, 0.003), so the second of two identical `G91 G81 ... K3` blocks has
+    /// no TG544 and its holes are followed (TG601 past the travel). The same on a FANUC
+    /// lathe's G83 and with the verdicts kept or not; a Haas mill's L counts too, and its K
+    /// under G83 stays the least peck depth, a length (no TG544 whatever its value). A debug
+    /// build asserts each kept word's value equal to the one its rules read, a selector's
+    /// (`G05.1 Q1`) too.
+    #[test]
+    fn a_count_kept_reads_as_its_first_reading() {
+        use super::super::testing::{dialect, fanuc_lathe};
+        use super::super::Checker;
+        use crate::rules::Selection;
+        use std::sync::Arc;
+        let run = |config: &Config, text: &str, keep: bool| {
+            let family = config.family;
+            let mut checker = Checker::new(Arc::new(config.clone()), Selection::all(), false);
+            checker.keep_verdicts(keep);
+            let (d, mut tokens) = (dialect(family), Vec::new());
+            for (i, line) in text.lines().enumerate() {
+                checker.check_line(line.as_bytes(), i + 1, &d, &mut tokens);
+            }
+            checker.finish();
+            checker.take()
+        };
+        let at = |config: &Config, text: &str, rule: Rule| {
+            let kept = run(config, text, true);
+            assert_eq!(kept, run(config, text, false), "{text}");
+            kept.iter()
+                .filter(|f| f.rule == rule)
+                .map(|f| (f.line, f.column))
+                .collect::<Vec<_>>()
+        };
+        // iso-mill's X -500..500: three holes 200 apart from X-300 end at X300; three 300
+        // apart from X0 at X900, a span of 1200
+        let mill = |cycle: &str, count: &str| {
+            program(&format!(
+                "G21 G17 G90 G54\nM4 S1000\nG0 X-300. Y0 Z10.\n\
+                 G91 {cycle} X200. Y0 Z-5. R-8. {count} F100.\nG80 G90\nG0 X0 Y0\n\
+                 G91 {cycle} X300. Y0 Z-5. R-8. {count} F100.\nG80 G90"
+            ))
+        };
+        // (a FANUC's reading: a word without a point in least increments, P L F G whole;
+        // iso-mill's K+053 holds 0.003)
+        let increments = |mut config: Config| {
+            config.facts.increments = Some(b"PLFG".to_vec());
+            config
+        };
+        let fanuc = increments(of_family(Family::MacroB));
+        for cycle in ["G81", "G73 Q1.", "G83 Q1."] {
+            for k in ["K3", "K03", "K3."] {
+                let text = mill(cycle, k);
+                assert_eq!(at(&fanuc, &text, Rule::CycleRepeatCount), [], "{text}");
+                assert_eq!(
+                    at(&fanuc, &text, Rule::TravelExceeded),
+                    [(8, 6 + cycle.len())]
+                );
+            }
+            // a count that is none is still one, kept or not
+            let text = mill(cycle, "K0");
+            let col = 25 + cycle.len();
+            assert_eq!(
+                at(&fanuc, &text, Rule::CycleRepeatCount),
+                [(5, col), (8, col)]
+            );
+        }
+        let mut haas = increments(Config {
+            haas: true,
+            ..of_family(Family::MacroB)
+        });
+        haas.modal.haas = true;
+        let text = mill("G81", "L3");
+        assert_eq!(at(&haas, &text, Rule::CycleRepeatCount), []);
+        assert_eq!(at(&haas, &text, Rule::TravelExceeded), [(8, 9)]);
+        for k in ["K3", "K2.5"] {
+            let text = mill("G83 Q1.", k);
+            assert_eq!(at(&haas, &text, Rule::CycleRepeatCount), [], "{text}");
+        }
+        // a selector read without a point, met again: a FANUC's G05.1 Q1 (AI contour
+        // control), its value 1 both times (the debug build's assertion), none refused
+        let text = program("G05.1 Q1\nG01 X1. F100.\nG05.1 Q0\nG05.1 Q1\nG05.1 Q1");
+        assert_eq!(at(&fanuc, &text, Rule::MixedDecimalStyles), []);
+        let lathe = |count: &str| {
+            program(&format!(
+                "G21 G18 G97\nM3 S500\nG0 X0 Z5.\nG83 Z-10. R-3. Q2000 {count} F0.1\nG80\n\
+                 G0 X0 Z5.\nG83 Z-10. R-3. Q2000 {count} F0.1\nG80"
+            ))
+        };
+        let fanuc_lathe = increments(fanuc_lathe());
+        for k in ["K3", "K03"] {
+            assert_eq!(
+                at(&fanuc_lathe, &lathe(k), Rule::CycleRepeatCount),
+                [],
+                "{k}"
+            );
+        }
+        assert_eq!(
+            at(&fanuc_lathe, &lathe("K0"), Rule::CycleRepeatCount),
+            [(5, 22), (8, 22)]
+        );
     }
 
     #[test]
