@@ -584,24 +584,28 @@ mod tests {
     }
 
     /// Extended M codes of one extension are one spindle's (Fundamentals, "Extended
-    /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it are TG308 (a
-    /// warning: no SINUMERIK source shows an alarm), as `M3 M4` are; codes of two extensions, or a plain code beside an extended one (whether
-    /// the plain address is spindle 1 is machine data), are not.
+    /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it conflict as
+    /// `M3 M4` do (TG304: the spindle's group is refused, review 51 F9; a SINUMERIK's other
+    /// groups are TG308); codes of two extensions, or a plain code beside an extended one
+    /// (whether the plain address is spindle 1 is machine data), are not.
     #[test]
     fn one_spindles_extended_m_codes_are_one_modal_group() {
         let sinumerik = || of_family(Family::Sinumerik);
         let found = sinumerik_codes;
-        assert_eq!(found("G0 X0\nM3 M4"), [(Rule::MCodesOneGroup, 3, 4)]);
-        assert_eq!(found("G0 X0\nM1=3 M1=4"), [(Rule::MCodesOneGroup, 3, 6)]);
+        assert_eq!(found("G0 X0\nM3 M4"), [(Rule::ModalGroupConflict, 3, 4)]);
+        assert_eq!(
+            found("G0 X0\nM1=3 M1=4"),
+            [(Rule::ModalGroupConflict, 3, 6)]
+        );
         // the extension as a number: 01 is 1; a value given by a known constant
         assert_eq!(
             found("G0 X0\nR2=4\nM2=5 M1=3 M01=R2"),
-            [(Rule::MCodesOneGroup, 4, 11)]
+            [(Rule::ModalGroupConflict, 4, 11)]
         );
         let message = findings(
             sinumerik(),
             &program("G0 X0\nM1=3 M1=4"),
-            Rule::MCodesOneGroup,
+            Rule::ModalGroupConflict,
         );
         assert!(
             message[0]
