@@ -1,0 +1,100 @@
+"""The blocks a sure Custom Macro B jump passes over, and the errors the passage must keep.
+
+Review 53 found that an earlier attempt to pass over more blocks (numbered ones that nothing
+had named yet) lost real errors. These programs pin the errors the checker finds today: each
+is a run the control makes (FANUC Custom Macro B, "Branch and repetition": a `GOTO n` goes to
+the block N n; `M99 P n` returns to the caller's block N n), out of fanuc-mill's X travel of
+-762..762 (1524 mm), and none may be lost to a passage.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.parser import parse_text
+from formats.profile import load_profile
+from postproc.check import Checker
+
+
+def errors(blocks: str, profile: str = "fanuc-mill") -> list[tuple[str, int, int]]:
+    """The errors of `%` / O1000 / `blocks` / `%` (lines 1-2 are `%` and O1000)."""
+    text = "%\nO1000\n" + blocks.replace(" / ", "\n") + "\n%\n"
+    prof = load_profile(profile)
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    return [(f.rule, f.line, f.column) for f in found if f.severity == "error"]
+
+
+HEAD = "G21 G17 G90 G54 / "
+
+# review 53, F1 (g1r.nc): pass 1 takes the IF to N10 (#1=0); the jump back to N1 runs it
+# again with #1=1, the IF falls through and N5's X900. runs from X-700: a 1600 mm span.
+G1R = HEAD + ("G0 X-700. Y0 Z1. / #1=0 / N1 IF [#1 EQ 0] GOTO 10 / N5 G0 X900. / "
+              "N10 #1=#1+1 / IF [#1 LT 2] GOTO 1 / M30")
+# review 53, F4 (g5.nc): O2000's `M99 P5` returns to O1000's N5, passed over by `GOTO 10`.
+G5 = HEAD + ("G0 X-700. Y0 Z10. / GOTO 10 / N5 G0 X900. / M30 / N10 G0 X1. / M98 P2000 / "
+             "M30 / O2000 / G0 Z5. / M99 P5")
+# review 53, F19 (x1342.nc): where #5=1, N42, G91, X300., X900. and N59 X600. are 1800 mm
+# of increments in a row, more than the whole travel.
+X1342 = HEAD + ("#1=0 / G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 42 / N9 #1=0 / GOTO 59 / "
+                "G0 X850. / N29 IF [#5 EQ 1] GOTO 42 / N42 #1=1 / G91 / "
+                "IF [#1 EQ 0] GOTO 59 / G0 X300. / G0 X900. / N59 G0 X600. / G91 / M30")
+# review 53, F19 (x1202.nc): where #5 is not 1, the sure `GOTO 34` lands in G90 and N34's
+# X-700. follows X850.: a 1550 mm span (the error is said at a block the checker judges
+# in file order, line 10).
+X1202 = HEAD + ("#1=0 / G0 X0 Y0 Z10. / G0 X850. / IF [#5 EQ 1] GOTO 30 / N26 GOTO 34 / "
+                "G0 X900. / G0 X-700. / N29 G0 X-700. / N30 G91 / G0 X-700. / G91 / "
+                "N34 G0 X-700. / N37 G0 X0. / M30")
+
+
+@pytest.mark.parametrize("program, expected", [
+    (G1R, [("TG601", 7, 7)]),
+    (G5, [("TG601", 6, 7)]),
+    (X1342, [("TG601", 16, 8)]),
+    (X1202, [("TG601", 10, 4)]),
+])
+def test_a_run_out_of_travel_is_kept(program, expected):
+    """Review 53's F1, F4 and F19: a passed-over block that another way runs, or a run of
+    increments only one way in makes, is still judged: the TG601 stays."""
+    assert errors(program) == expected
+
+
+def test_a_sure_goto_after_a_joined_block_finds_no_false_span():
+    """Review 53, F18 (y3.nc): `G0 X900.` follows a sure `GOTO 53` and has no N, so no run
+    reaches it (X-700 -> N54, or X-700 -> N52 X0 -> N53 -> N54): no TG601."""
+    y3 = HEAD + ("G0 X-700. Y0 Z10. / IF [#5 EQ 1] GOTO 52 / GOTO 54 / N52 G0 X0. / "
+                 "GOTO 53 / G0 X900. / N53 G0 X0 / N54 G0 X1. / M30")
+    assert errors(y3) == []
+
+
+# review 53, F15 (u1.nc, u2.nc, z1.nc): a jump or a call read in the blocks a sure `GOTO`
+# passes over never runs, so the numbered block after it is passed over too: the run is
+# X0 -> X-400 (u1, u2) or X-700 -> X0 (z1), no span of 1600.
+@pytest.mark.parametrize("program", [
+    HEAD + ("G0 X0 Y0 Z10. / GOTO 59 / IF [#5 EQ 1] GOTO 27 / N27 G0 X-700. / G0 X900. / "
+            "N59 G0 X-400. / M30"),
+    HEAD + "G0 X0 Y0 Z10. / GOTO 59 / GOTO 27 / N27 G0 X-700. / G0 X900. / N59 G0 X-400. / M30",
+    HEAD + "G0 X-700. Y0 Z10. / GOTO 10 / M98 P2000 / N5 G0 X900. / N10 G0 X0 / M30",
+    # review 53, F16 (v1.nc): an earlier IF names the sure GOTO's target too
+    HEAD + "G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 44 / GOTO 44 / G0 X850. / N44 G0 X-700. / M30",
+    # review 53, F18 (y1.nc): its first jump a GOTO 53 too
+    HEAD + ("G0 X-700. Y0 Z10. / IF [#5 EQ 1] GOTO 52 / GOTO 53 / N52 G0 X0. / GOTO 53 / "
+            "G0 X900. / N53 G0 X0 / M30"),
+])
+def test_blocks_no_run_reaches_are_not_judged(program):
+    assert errors(program) == []
+
+
+# The same blocks with a way back into them read after the target, or a way in read before
+# the jump: the X900. runs (line 6, 7 or 8), out of travel from X-700.
+@pytest.mark.parametrize("program, expected", [
+    (HEAD + "G0 X0 Y0 Z10. / GOTO 59 / N27 G0 X-700. / G0 X900. / N59 G0 X-400. / "
+     "IF [#5 EQ 1] GOTO 27 / M30", [("TG601", 7, 4)]),
+    (HEAD + "G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 27 / GOTO 59 / N27 G0 X-700. / G0 X900. / "
+     "N59 G0 X-400. / M30", [("TG601", 8, 4)]),
+    (HEAD + "G0 X-700. Y0 Z10. / GOTO 10 / N5 G0 X900. / N10 G0 X0 / M99 P5", [("TG601", 6, 7)]),
+    # review 53, F1's older form: no N on the block an IF surely taken passes over
+    (HEAD + ("G0 X-700. Y0 Z1. / #1=0 / N1 IF [#1 EQ 0] GOTO 10 / G0 X900. / "
+             "N10 #1=#1+1 / IF [#1 LT 2] GOTO 1 / M30"), [("TG601", 7, 4)]),
+])
+def test_a_way_back_into_the_blocks_keeps_their_errors(program, expected):
+    assert errors(program) == expected
