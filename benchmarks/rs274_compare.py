@@ -679,6 +679,15 @@ SEEDED: list[tuple[str, str, int, str]] = [
      "accepted"),
     ("G28.1 under compensation", HEAD + "G41.1 D1\nG28.1\nM2\n", 4, "error"),
     ("G30.1 under compensation", HEAD + "G41.1 D1\nG30.1\nM2\n", 4, "error"),
+    # lspl53 (review 53, F12): splines in G17 only, no arc in G17.1-G19.1
+    ("G5 in G18", HEAD + "G18 F100\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 4, "error"),
+    ("G5.1 in G17.1", HEAD + "G17.1 F100\nG5.1 X3 I1 J1\nM2\n", 4, "error"),
+    ("G2 in G18.1", HEAD + "G18.1 F100\nG2 X10 Y0 R5\nM2\n", 4, "error"),
+    ("G2 in force run in G19.1", HEAD + "G2 X10 Y0 R5 F100\nG19.1\nY1 Z1\nM2\n", 5,
+     "error"),
+    ("G5.2 in G18 and G2 after G17.1 G17",
+     HEAD + "G18 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3\nG17.1\nG17\n"
+     "G2 X5 Y1 R2\nM2\n", 0, "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -163,6 +163,8 @@ BOTH = [
     "G18 under compensation begun in G17", "G18 G40 under compensation",
     "G17 under compensation begun in G18", "G5 under compensation", "G5.1 under compensation",
     "G28.1 under compensation", "G30.1 under compensation",
+    # lspl53 (review 53, F12): splines outside G17, arcs in G17.1-G19.1
+    "G5 in G18", "G5.1 in G17.1", "G2 in G18.1", "G2 in force run in G19.1",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -209,7 +211,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "a definition in a repeat [1]", "a definition in a repeat whose call ends the program",
        "G40 G43 under compensation", "G10 L2 P2 under compensation in G54",
        # comp52: G18 in G18 changes no plane; G40 beside a spline runs it uncompensated
-       "G18 under compensation begun in G18", "G5 beside G40"]
+       "G18 under compensation begun in G18", "G5 beside G40",
+       # lspl53: a NURBS outside G17, an arc after the plane is set again
+       "G5.2 in G18 and G2 after G17.1 G17"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

@@ -972,6 +972,9 @@ pub struct Checker {
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
+    /// LinuxCNC: G17.1, G18.1 or G19.1 (a plane of U V W, decimal codes the modal state
+    /// leaves out) in force, where rs274 draws no arc and no spline (TG412).
+    linuxcnc_uvw_plane: bool,
     /// LinuxCNC: after a call or jump the checker does not follow, the spindle direction and
     /// the cutter compensation the call may have set are unknown until the program sets them
     /// again (M3/M4/M5; G40/G41/G42): no refusal that depends on them (TG412).
@@ -1461,6 +1464,7 @@ impl Checker {
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
+            linuxcnc_uvw_plane: false,
             data_input,
             programs: 0,
             split: dialect::ProgramSplit::default(),

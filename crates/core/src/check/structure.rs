@@ -280,6 +280,7 @@ impl Checker {
         self.cycle_unmodelled = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
+        self.linuxcnc_uvw_plane = false;
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;

@@ -864,6 +864,8 @@ impl Checker {
             && read_refusal.is_none()
             && codes.iter().all(|&c| plain(c))
             && self.letters & dehlpqt == 0
+            // (an arc in G17.1-G19.1 is refused: linuxcnc_plane_refusal)
+            && !self.linuxcnc_uvw_plane
         {
             let given = codes.first().copied();
             let runs = given.or(match self.linuxcnc_motion {
@@ -931,6 +933,12 @@ impl Checker {
         }
         if codes.iter().any(|&c| c == 411 || c == 421) {
             self.linuxcnc_dynamic_compensation = true;
+        }
+        if let Some(&c) = codes
+            .iter()
+            .find(|&&c| matches!(c, 170 | 180 | 190 | 171 | 181 | 191))
+        {
+            self.linuxcnc_uvw_plane = c % 10 == 1;
         }
         let before = self.linuxcnc_motion;
         let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
@@ -1016,6 +1024,7 @@ impl Checker {
                         start.plane,
                     )
                 })
+                .or_else(|| self.linuxcnc_plane_refusal(runs))
         } else {
             None
         };
@@ -1104,7 +1113,11 @@ impl Checker {
             | bit(b'T')
             | super::SELECTOR;
         let letters = self.letters;
-        if letters & NOT_PLAIN != 0 || self.linuxcnc_no_slash != self.stats.blocks {
+        // (in G17.1-G19.1 an arc is refused: the full path says so)
+        if letters & NOT_PLAIN != 0
+            || self.linuxcnc_no_slash != self.stats.blocks
+            || self.linuxcnc_uvw_plane
+        {
             return None;
         }
         let given = if letters & bit(b'G') == 0 {
@@ -1698,6 +1711,30 @@ impl Checker {
             return said("Cannot use g53 with cutter radius comp", b'G');
         }
         None
+    }
+
+    /// The plane checks of rs274ngc 2.9 as it runs an arc or a spline (interp_convert.cc),
+    /// after the block's compensation refusals: convert_arc draws no arc in G17.1, G18.1 or
+    /// G19.1 (its first check after the straight move G40 requires, TG501's), convert_spline
+    /// no G5 or G5.1 outside G17 (after its compensation and feed checks). A NURBS of
+    /// G5.2/G5.3 is drawn in any plane there (convert_nurbs checks none).
+    fn linuxcnc_plane_refusal(&self, runs: Option<i64>) -> Option<(String, u8)> {
+        let uvw = self.linuxcnc_uvw_plane;
+        match runs? {
+            20 | 30 if uvw => Some((
+                "Cannot do an arc in planes G17.1, G18.1, or G19.1 (rs274ngc): LinuxCNC draws \
+                 its arcs in G17, G18 or G19"
+                    .into(),
+                b'G',
+            )),
+            50 | 51 if uvw || self.machine.state.plane != 17 => Some((
+                "Splines must be in the XY plane (rs274ngc): LinuxCNC draws G5 and G5.1 in \
+                 G17 only"
+                    .into(),
+                b'G',
+            )),
+            _ => None,
+        }
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -3811,6 +3848,84 @@ mod tests {
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_splines_in_xy_and_arcs_outside_the_uvw_planes_as_rs274() {
+        // interp_convert.cc (rs274ngc 2.9) convert_spline: G5/G5.1 in G17 only; convert_arc:
+        // no arc in G17.1-G19.1; convert_nurbs: G5.2/G5.3 in any plane. Each compared with
+        // rs274 -g (tests/test_oracle_rs274.py)
+        let spline = "Splines must be in the XY plane";
+        let arc = "Cannot do an arc in planes G17.1, G18.1, or G19.1";
+        let cases: &[(&str, &[&str])] = &[
+            (
+                "G18 F100\nG5 X3 Y2 I1 J0 P1 Q1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            (
+                "G19 F100\nG5.1 X3 I1 J1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            (
+                "G17.1 F100\nG5 X3 Y2 I1 J0 P1 Q1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            (
+                "G19.1 F100\nG5.1 X3 I1 J1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            // the plane before the spline's axes: Z is "Splines may not have motion in Z"
+            (
+                "G18 F100\nG5 X3 Z2 I1 J0 P1 Q1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            ("G18.1 F100\nG2 X10 Y0 R5", &[arc]),
+            // the plane before the arc's words: neither "Mixed radius ijk format" nor an arc
+            // without I J K (TG404)
+            ("G19.1 F100\nG3 X10 Y0 R5 I1", &[arc]),
+            ("G18.1 F100\nG2 X10", &[arc]),
+            // the arc in force, run by a move in the new plane
+            ("G2 X10 Y0 R5 F100\nG18.1\nX0 Z1", &[arc]),
+            ("G17.1 F100\nG1 X1\nG3 X2 I1", &[arc]),
+            // quiet: a spline in G17, an arc in G18, a NURBS outside G17, a plane set again
+            ("F100\nG5 X3 Y2 I1 J0 P1 Q1\nG18\nG2 X5 Z1 R5", &[]),
+            ("G17.1\nG17 F100\nG5.1 X3 I1 J1", &[]),
+            ("G18 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3", &[]),
+            ("G19.1 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3", &[]),
+            ("G18.1 F100\nG1 X1 Z1\nG18\nG3 X0 Z0 R2", &[]),
+            ("G18.1 F100\nG1 X1 Z1\nG17 G2 X3 Y0 R2", &[]),
+        ];
+        for (body, expected) in cases {
+            let lines: Vec<String> = expected
+                .iter()
+                .map(|e| match *e {
+                    e if e == arc => {
+                        let line = 3 + body.matches('\n').count() + 1;
+                        format!("{line}: {arc}")
+                    }
+                    e => e.to_string(),
+                })
+                .collect();
+            assert_eq!(refused(body), lines, "{body}");
+        }
+        // the finding's place: the block's G word, or its first word where it has none
+        let text = "G21 G90 G17\nG0 X0 Y0 Z5\nG2 X10 Y0 R5 F100\nG18.1\nX0 Z1\nG18\n  G5 X1 Y1 I1 J1 P1 Q1\n";
+        let found = findings(
+            of_family(Family::LinuxCnc),
+            &program(text),
+            Rule::LinuxCncRefuses,
+        );
+        let places: Vec<(usize, usize, &str)> = found
+            .iter()
+            .map(|f| {
+                (
+                    f.line,
+                    f.column,
+                    f.message.split(" (rs274ngc)").next().unwrap(),
+                )
+            })
+            .collect();
+        assert_eq!(places, [(6, 1, arc), (8, 3, spline)]);
     }
 
     #[test]
