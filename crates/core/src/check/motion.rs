@@ -699,6 +699,15 @@ impl Checker {
         if self.config.family == Family::LinuxCnc && self.linuxcnc_uvw_plane {
             return;
         }
+        // nor is an arc judged in a plane not known here (after a call, an `if` whose
+        // branches may leave different planes, a body before it sets one: review 54, F2),
+        // unless its block sets one
+        if self.config.family == Family::LinuxCnc
+            && self.linuxcnc_plane_unknown
+            && ![17, 18, 19].iter().any(|&g| v.has_g(g))
+        {
+            return;
+        }
         // interp_convert.cc convert_arc refuses R beside any of I J K before it looks at the
         // plane (NCE_MIXED_RADIUS_IJK_FORMAT_FOR_ARC); a FANUC reads such an arc by its R
         if self.config.family == Family::LinuxCnc && runs && v.has(b'R') {
