@@ -717,6 +717,9 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("spline after a while that sets G17, begun in G18",
      HEAD + "G18\no1 while [#5220 LT 2]\nG17\n#5220=2\no1 endwhile\n"
      "G5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("spline after a while left by a break in G17",
+     HEAD + "G18\no1 while [#5220 LT 3]\nG17\no2 if [#5220 GT 0]\no1 break\no2 endif\nG18\n"
+     "o1 endwhile\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
     ("arc after an if and else both setting G18.1",
      HEAD + "o1 if [#5220 GT 1]\nG18.1\no1 else\nG18.1\no1 endif\nG2 X10 Y0 R10 F100\nM2\n",
      8, "error"),

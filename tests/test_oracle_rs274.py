@@ -230,7 +230,8 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "arc after an if of an unknown condition setting G18.1",
        "spline after an if of an unknown condition setting G18",
        "spline after an if and else setting G17 and G18",
-       "spline after a while that sets G17, begun in G18"]
+       "spline after a while that sets G17, begun in G18",
+       "spline after a while left by a break in G17"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

@@ -930,6 +930,7 @@ impl Checker {
                         is_else: keyword.as_deref() == Some(b"else".as_slice()),
                         ran: None,
                         taken: false,
+                        leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
                     };
                     self.linuxcnc_plane_flow(&mut blocks, step);
                     self.linuxcnc_plane_body_blocks = blocks;
@@ -1971,6 +1972,7 @@ impl Checker {
             is_else,
             ran: branch_ran,
             taken: other_branch,
+            leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
         };
         self.linuxcnc_plane_flow(&mut blocks, step);
         self.linuxcnc_plane_blocks = blocks;
@@ -2831,9 +2833,18 @@ impl Checker {
     /// out), and the plane from before it where no branch may run (no `else`; a loop of no
     /// turn). Where these differ the plane is not known ([`Checker::linuxcnc_plane_unknown`];
     /// review 54, F2: `o1 if [#5220 EQ 1]` / `G17` / `o1 else` / `G18` / `o1 endif` / `G5`
-    /// runs in rs274 where #5220 is 1).
+    /// runs in rs274 where #5220 is 1). A `break` or `continue` is one more way out, in its
+    /// plane.
     fn linuxcnc_plane_flow(&mut self, blocks: &mut Vec<PlaneBlock>, step: PlaneStep) {
         let now = self.linuxcnc_plane_now();
+        if step.leaves {
+            // (a `break` or `continue` leaves its turn in this plane: one more way out of
+            // every block open, the loop's and the conditions' around it)
+            for block in blocks.iter_mut() {
+                block.ends.push(now);
+            }
+            return;
+        }
         if step.open > step.depth {
             // (blocks opened where the plane was not followed: none to merge, none lost)
             blocks.truncate(step.depth);
@@ -4216,8 +4227,8 @@ pub(super) struct FlowStep {
 /// LinuxCNC: an o-word line as the plane is followed through it
 /// ([`Checker::linuxcnc_plane_flow`]): the depth of blocks open before and after it, the
 /// block whose branch it switches to, whether that branch is an `else`, whether the branch
-/// it ends ran (`None`: not known), and whether it ends a branch that surely ran (the rest
-/// skipped).
+/// it ends ran (`None`: not known), whether it ends a branch that surely ran (the rest
+/// skipped), and whether it leaves a loop's turn (`break`, `continue`).
 pub(super) struct PlaneStep {
     depth: usize,
     open: usize,
@@ -4225,6 +4236,7 @@ pub(super) struct PlaneStep {
     is_else: bool,
     ran: Option<bool>,
     taken: bool,
+    leaves: bool,
 }
 
 /// LinuxCNC: the plane where a line stands: the modal state's G17/G18/G19, whether a

@@ -3995,6 +3995,16 @@ mod tests {
                 "G18\no100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\no100 sub\nG0 X1\no100 endsub",
                 &[],
             ),
+            // a `break` leaves the loop in its own plane: one more way out of it
+            (
+                "G18\no1 while [#5220 LT 3]\nG17\no2 if [#5220 GT 0]\no1 break\no2 endif\n\
+                 G18\no1 endwhile\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &[],
+            ),
+            (
+                "G18\no1 do\nG0 X1\no1 while [#5220 GT 5]\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &["8: Splines"],
+            ),
             // the plane set again after the call or the if: known
             (
                 "G18\no100 call\nG18\nG5 X3 Y2 I1 J0 P1 Q1 F100",
