@@ -679,6 +679,70 @@ SEEDED: list[tuple[str, str, int, str]] = [
      "accepted"),
     ("G28.1 under compensation", HEAD + "G41.1 D1\nG28.1\nM2\n", 4, "error"),
     ("G30.1 under compensation", HEAD + "G41.1 D1\nG30.1\nM2\n", 4, "error"),
+    # lspl53 (review 53, F12): splines in G17 only, no arc in G17.1-G19.1
+    ("G5 in G18", HEAD + "G18 F100\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 4, "error"),
+    ("G5.1 in G17.1", HEAD + "G17.1 F100\nG5.1 X3 I1 J1\nM2\n", 4, "error"),
+    ("G2 in G18.1", HEAD + "G18.1 F100\nG2 X10 Y0 R5\nM2\n", 4, "error"),
+    ("G2 in force run in G19.1", HEAD + "G2 X10 Y0 R5 F100\nG19.1\nY1 Z1\nM2\n", 5,
+     "error"),
+    ("G5.2 in G18 and G2 after G17.1 G17",
+     HEAD + "G18 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3\nG17.1\nG17\n"
+     "G2 X5 Y1 R2\nM2\n", 0, "accepted"),
+    # plane55 (review 54, F2): the plane the checker cannot know. A definition does not run
+    # where it stands (the main program below it keeps the plane from before its sub); a
+    # call and an `if` whose condition is not known leave a plane that may differ unknown
+    ("uncalled definition's G18.1 before an arc",
+     "o100 sub\nG18.1\nG1 X1 Z1 F100\no100 endsub\nG21 G90 G94\nG0 X0 Y0 Z5\n"
+     "G2 X10 Y0 R10 F100\nM2\n", 0, "accepted"),
+    ("uncalled definition's G18 before a spline",
+     "o100 sub\nG18\nG1 X1 Z1 F100\no100 endsub\nG21 G90 G94\nG0 X0 Y0 Z5\n"
+     "G5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("uncalled definition's G18 before an R arc of X Y",
+     "o100 sub\nG18\nG1 X1 Z1 F100\no100 endsub\nG21 G90 G94\nG0 X0 Y0 Z5\n"
+     "G2 Y10 R10 F100\nM2\n", 0, "accepted"),
+    ("arc after a call whose body sets G17",
+     "o100 sub\nG17\no100 endsub\n" + HEAD + "G18.1\nG1 X1 F100\no100 call\n"
+     "G2 X10 Y0 R10\nM2\n", 0, "accepted"),
+    ("spline after a call whose body sets G17",
+     "o100 sub\nG17\no100 endsub\n" + HEAD + "G18\nG1 X1 F100\no100 call\n"
+     "G5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
+    ("arc after an if of an unknown condition setting G18.1",
+     HEAD + "o1 if [#5220 GT 1]\nG18.1\no1 endif\nG2 X10 Y0 R10 F100\nM2\n", 0, "accepted"),
+    ("spline after an if of an unknown condition setting G18",
+     HEAD + "o1 if [#5220 GT 1]\nG18\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0,
+     "accepted"),
+    ("spline after an if and else setting G17 and G18",
+     "G21 G90 G94\nG0 X0 Y0 Z5\no1 if [#5220 EQ 1]\nG17\no1 else\nG18\no1 endif\n"
+     "G5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("spline after a while that sets G17, begun in G18",
+     HEAD + "G18\no1 while [#5220 LT 2]\nG17\n#5220=2\no1 endwhile\n"
+     "G5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("spline after a while left by a break in G17",
+     HEAD + "G18\no1 while [#5220 LT 3]\nG17\no2 if [#5220 GT 0]\no1 break\no2 endif\nG18\n"
+     "o1 endwhile\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("arc after an if and else both setting G18.1",
+     HEAD + "o1 if [#5220 GT 1]\nG18.1\no1 else\nG18.1\no1 endif\nG2 X10 Y0 R10 F100\nM2\n",
+     8, "error"),
+    ("spline after an if that sets no plane, in G18",
+     HEAD + "G18\no1 if [#5220 GT 1]\nG0 X1\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n",
+     7, "error"),
+    ("spline after a known-false if setting G17, in G18",
+     HEAD + "G18\no1 if [0]\nG17\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 7, "error"),
+    ("arc in the else of an if setting G17, begun in G18.1",
+     HEAD + "G18.1\no1 if [#5220 GT 1]\nG17\no1 else\nG2 X10 Y0 R10 F100\no1 endif\nM2\n",
+     7, "error"),
+    ("arc in G18.1 after a definition setting G17",
+     "o100 sub\nG17\no100 endsub\n" + HEAD + "G18.1\nG2 X10 Y0 R10 F100\nM2\n", 7, "error"),
+    ("spline in G18 after a call whose body sets no plane",
+     "o100 sub\nG0 X1\no100 endsub\n" + HEAD + "G18\no100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n",
+     8, "error"),
+    # review 53, F7: compensation turned on in G17.1-G19.1 (the block's own plane first)
+    ("G41.1 in G17.1", HEAD + "G17.1\nG41.1 D2\nG1 X5 F100\nG40\nM2\n", 4, "error"),
+    ("G42.1 in G18.1", HEAD + "G18.1\nG42.1 D2\nG1 X5 F100\nG40\nM2\n", 4, "error"),
+    ("G41.1 beside G17.1", HEAD + "G41.1 D2 G17.1\nG1 X5 F100\nG40\nM2\n", 3, "error"),
+    ("G41.1 in G19 after an if that sets no plane",
+     HEAD + "G19\no1 if [#5220 GT 1]\nG0 X1\no1 endif\nG41.1 D1\nG1 X1 F100\nG40\nM2\n",
+     7, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

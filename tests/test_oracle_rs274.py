@@ -163,6 +163,16 @@ BOTH = [
     "G18 under compensation begun in G17", "G18 G40 under compensation",
     "G17 under compensation begun in G18", "G5 under compensation", "G5.1 under compensation",
     "G28.1 under compensation", "G30.1 under compensation",
+    # lspl53 (review 53, F12): splines outside G17, arcs in G17.1-G19.1
+    "G5 in G18", "G5.1 in G17.1", "G2 in G18.1", "G2 in force run in G19.1",
+    # plane55 (review 54, F2): a plane known where every way through an if leaves it
+    "arc after an if and else both setting G18.1", "spline after an if that sets no plane, in G18",
+    "spline after a known-false if setting G17, in G18",
+    "arc in the else of an if setting G17, begun in G18.1",
+    "arc in G18.1 after a definition setting G17", "G41.1 in G19 after an if that sets no plane",
+    "spline in G18 after a call whose body sets no plane",
+    # review 53, F7: compensation turned on in a plane of U V W
+    "G41.1 in G17.1", "G42.1 in G18.1", "G41.1 beside G17.1",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -209,7 +219,19 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "a definition in a repeat [1]", "a definition in a repeat whose call ends the program",
        "G40 G43 under compensation", "G10 L2 P2 under compensation in G54",
        # comp52: G18 in G18 changes no plane; G40 beside a spline runs it uncompensated
-       "G18 under compensation begun in G18", "G5 beside G40"]
+       "G18 under compensation begun in G18", "G5 beside G40",
+       # lspl53: a NURBS outside G17, an arc after the plane is set again
+       "G5.2 in G18 and G2 after G17.1 G17",
+       # plane55 (review 54, F2): a definition's plane stays in it; a call or an if of an
+       # unknown condition leaves the plane unknown
+       "uncalled definition's G18.1 before an arc", "uncalled definition's G18 before a spline",
+       "uncalled definition's G18 before an R arc of X Y", "arc after a call whose body sets G17",
+       "spline after a call whose body sets G17",
+       "arc after an if of an unknown condition setting G18.1",
+       "spline after an if of an unknown condition setting G18",
+       "spline after an if and else setting G17 and G18",
+       "spline after a while that sets G17, begun in G18",
+       "spline after a while left by a break in G17"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

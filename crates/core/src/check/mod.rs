@@ -977,6 +977,25 @@ pub struct Checker {
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
+    /// LinuxCNC: G17.1, G18.1 or G19.1 (a plane of U V W, decimal codes the modal state
+    /// leaves out) in force, where rs274 draws no arc and no spline (TG412).
+    linuxcnc_uvw_plane: bool,
+    /// LinuxCNC: the plane is not known here (after a call, a condition or loop whose
+    /// branches may leave different planes, in a subroutine's body before it sets one): no
+    /// refusal that depends on the plane until a G17-G19 (or .1) sets it again.
+    linuxcnc_plane_unknown: bool,
+    /// LinuxCNC: the plane at the opening of each condition or loop open in the main
+    /// program, and the planes its branches read so far left (structure::PlaneBlock).
+    linuxcnc_plane_blocks: Vec<structure::PlaneBlock>,
+    /// LinuxCNC: the same for the conditions and loops open in a definition's body.
+    linuxcnc_plane_body_blocks: Vec<structure::PlaneBlock>,
+    /// LinuxCNC: the plane before the open definition's `sub`, in force again after its
+    /// `endsub` (rs274 reads a definition without running it).
+    linuxcnc_plane_before_sub: Option<structure::PlaneAt>,
+    /// LinuxCNC: the labels of the definitions whose body writes a G17-G19 (or .1) or calls
+    /// another subroutine: after a call of one of them the plane is not known; after a call
+    /// of another one defined before it, the plane stays.
+    linuxcnc_plane_subs: HashSet<Vec<u8>>,
     /// LinuxCNC: after a call or jump the checker does not follow, the spindle direction and
     /// the cutter compensation the call may have set are unknown until the program sets them
     /// again (M3/M4/M5; G40/G41/G42): no refusal that depends on them (TG412).
@@ -1482,6 +1501,12 @@ impl Checker {
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
+            linuxcnc_uvw_plane: false,
+            linuxcnc_plane_unknown: false,
+            linuxcnc_plane_blocks: Vec::new(),
+            linuxcnc_plane_body_blocks: Vec::new(),
+            linuxcnc_plane_before_sub: None,
+            linuxcnc_plane_subs: HashSet::new(),
             data_input,
             programs: 0,
             split: dialect::ProgramSplit::default(),
@@ -2123,6 +2148,7 @@ impl Checker {
                 self.polar = polar::Polar::default();
                 self.linuxcnc_spindle_unknown = true;
                 self.linuxcnc_compensation_unknown = true;
+                self.linuxcnc_plane_after_call(b, false);
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
@@ -2476,6 +2502,7 @@ impl Checker {
             self.polar = polar::Polar::default();
             self.linuxcnc_spindle_unknown = true;
             self.linuxcnc_compensation_unknown = true;
+            self.linuxcnc_plane_after_call(b, calls);
             self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;

@@ -694,6 +694,20 @@ impl Checker {
         let (first, second, third) = plane_axes(self.machine.state.plane);
         let centres = [centre_of(first), centre_of(second)];
         let v = &self.values;
+        // rs274 draws no arc in G17.1-G19.1: TG412 refuses it first (convert_arc; the
+        // plane's axes here are not the arc's)
+        if self.config.family == Family::LinuxCnc && self.linuxcnc_uvw_plane {
+            return;
+        }
+        // nor is an arc judged in a plane not known here (after a call, an `if` whose
+        // branches may leave different planes, a body before it sets one: review 54, F2),
+        // unless its block sets one
+        if self.config.family == Family::LinuxCnc
+            && self.linuxcnc_plane_unknown
+            && ![17, 18, 19].iter().any(|&g| v.has_g(g))
+        {
+            return;
+        }
         // interp_convert.cc convert_arc refuses R beside any of I J K before it looks at the
         // plane (NCE_MIXED_RADIUS_IJK_FORMAT_FOR_ARC); a FANUC reads such an arc by its R
         if self.config.family == Family::LinuxCnc && runs && v.has(b'R') {

@@ -283,6 +283,12 @@ impl Checker {
         self.cycle_unmodelled = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
+        self.linuxcnc_uvw_plane = false;
+        self.linuxcnc_plane_unknown = false;
+        self.linuxcnc_plane_blocks.clear();
+        self.linuxcnc_plane_body_blocks.clear();
+        self.linuxcnc_plane_before_sub = None;
+        self.linuxcnc_plane_subs.clear();
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
@@ -782,6 +788,7 @@ impl Checker {
             self.definition_feed(statement.as_ref());
             let was_open = self.open_definition.is_some();
             self.definition_open(b, statement.as_ref());
+            self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
             self.linuxcnc_called(b, statement.as_ref(), was_open);
             statement
@@ -912,8 +919,24 @@ impl Checker {
                     let flow = &mut self.linuxcnc_definition_flow;
                     let label = crate::statement::o_label(text);
                     let switched = linuxcnc_branch_switch(flow, text, &label);
+                    let depth = flow.len();
                     linuxcnc_flow(flow, text);
-                    self.linuxcnc_body_distance.scope(flow.len(), switched);
+                    let open = flow.len();
+                    self.linuxcnc_body_distance.scope(open, switched);
+                    // (a body's conditions are not evaluated: which branch runs, not known)
+                    let mut blocks = std::mem::take(&mut self.linuxcnc_plane_body_blocks);
+                    let keyword = crate::statement::o_keyword(text);
+                    let step = PlaneStep {
+                        depth,
+                        open,
+                        switched,
+                        is_else: keyword.as_deref() == Some(b"else".as_slice()),
+                        ran: None,
+                        taken: false,
+                        leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
+                    };
+                    self.linuxcnc_plane_flow(&mut blocks, step);
+                    self.linuxcnc_plane_body_blocks = blocks;
                 }
                 // the subroutine may set another feed mode, or restore the caller's
                 (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
@@ -1943,6 +1966,19 @@ impl Checker {
         // (the `else` after a branch that surely ran never runs: the mode that branch wrote
         // is the mode after the `endif`)
         self.linuxcnc_distance_scope(open, switched.filter(|_| !other_branch));
+        let mut blocks = std::mem::take(&mut self.linuxcnc_plane_blocks);
+        let is_else = keyword.as_deref() == Some(b"else".as_slice());
+        let step = PlaneStep {
+            depth,
+            open,
+            switched,
+            is_else,
+            ran: branch_ran,
+            taken: other_branch,
+            leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
+        };
+        self.linuxcnc_plane_flow(&mut blocks, step);
+        self.linuxcnc_plane_blocks = blocks;
         self.linuxcnc_if_ends.retain(|e| e.0 < open);
         if keyword.as_deref() == Some(b"if".as_slice()) && open > depth {
             self.linuxcnc_if_ends.push((depth, true, false));
@@ -2725,6 +2761,157 @@ impl Checker {
             _ => {
                 self.linuxcnc_distance_unsure = true;
                 self.linuxcnc_distance_from = None;
+            }
+        }
+    }
+
+    /// LinuxCNC: the plane where the line in hand stands ([`PlaneAt`]).
+    fn linuxcnc_plane_now(&self) -> PlaneAt {
+        PlaneAt {
+            plane: self.machine.state.plane,
+            uvw: self.linuxcnc_uvw_plane,
+            unknown: self.linuxcnc_plane_unknown,
+        }
+    }
+
+    /// LinuxCNC: a block the checker does not follow (`calls`: it has a calling word): after
+    /// a call the plane the subroutine may set is not known, unless it calls a definition
+    /// read before it whose body writes no plane and calls nothing
+    /// ([`Checker::linuxcnc_plane_subs`]); after an o-word line of a condition or loop the
+    /// plane is followed ([`Checker::linuxcnc_plane_flow`]).
+    pub(super) fn linuxcnc_plane_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
+        let mut may_set = calls;
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Call {
+                continue;
+            }
+            let label = self.linuxcnc_call_label(text);
+            may_set |= self.open_definition.is_some()
+                || crate::statement::computed_label(&label)
+                || !self.linuxcnc_defined.contains(&label)
+                || self.linuxcnc_plane_subs.contains(&label);
+        }
+        if may_set {
+            self.linuxcnc_plane_unknown = true;
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_plane_subs.insert(open.2.clone());
+            }
+        }
+    }
+
+    /// LinuxCNC: the plane `at` in force again (the modal state's, and the two flags).
+    fn linuxcnc_plane_set(&mut self, at: PlaneAt) {
+        self.machine.state.plane = at.plane;
+        self.linuxcnc_uvw_plane = at.uvw;
+        self.linuxcnc_plane_unknown = at.unknown;
+    }
+
+    /// LinuxCNC: a definition opened or closed by the line in hand (`was_open`: one was open
+    /// before it). rs274 reads a definition without running it (interp_o_word.cc
+    /// control_save_offset skips to its endsub) and runs its body where a call calls it, in
+    /// the caller's plane: the body starts in a plane not known here, and the lines after
+    /// the endsub run in the plane from before the sub (`rs274 -g`: `o100 sub` / `G18` ...
+    /// `o100 endsub` / `G2 Y10 R10` draws the arc in G17; review 54, F2).
+    fn linuxcnc_definition_plane(&mut self, was_open: bool) {
+        match (was_open, self.open_definition.is_some()) {
+            (false, true) => {
+                self.linuxcnc_plane_before_sub = Some(self.linuxcnc_plane_now());
+                self.linuxcnc_plane_unknown = true;
+                self.linuxcnc_plane_body_blocks.clear();
+            }
+            (true, false) => {
+                if let Some(before) = self.linuxcnc_plane_before_sub.take() {
+                    self.linuxcnc_plane_set(before);
+                }
+                self.linuxcnc_plane_body_blocks.clear();
+            }
+            _ => {}
+        }
+    }
+
+    /// LinuxCNC: the plane through a condition or loop (`blocks`, one for each block open,
+    /// `step` the o-word line in hand). A branch after an `else`/`elseif` starts in the plane
+    /// from before the `if` (rs274 runs one branch of it); at the block's end the plane is
+    /// the one every way through it leaves: each branch read (one known not to run left
+    /// out), and the plane from before it where no branch may run (no `else`; a loop of no
+    /// turn). Where these differ the plane is not known ([`Checker::linuxcnc_plane_unknown`];
+    /// review 54, F2: `o1 if [#5220 EQ 1]` / `G17` / `o1 else` / `G18` / `o1 endif` / `G5`
+    /// runs in rs274 where #5220 is 1). A `break` or `continue` is one more way out, in its
+    /// plane.
+    fn linuxcnc_plane_flow(&mut self, blocks: &mut Vec<PlaneBlock>, step: PlaneStep) {
+        let now = self.linuxcnc_plane_now();
+        if step.leaves {
+            // (a `break` or `continue` leaves its turn in this plane: one more way out of
+            // every block open, the loop's and the conditions' around it)
+            for block in blocks.iter_mut() {
+                block.ends.push(now);
+            }
+            return;
+        }
+        if step.open > step.depth {
+            // (blocks opened where the plane was not followed: none to merge, none lost)
+            blocks.truncate(step.depth);
+            while blocks.len() < step.depth {
+                blocks.push(PlaneBlock {
+                    entry: PlaneAt {
+                        unknown: true,
+                        ..now
+                    },
+                    ends: Vec::new(),
+                    has_else: false,
+                });
+            }
+            blocks.push(PlaneBlock {
+                entry: now,
+                ends: Vec::new(),
+                has_else: false,
+            });
+        } else if step.open < step.depth {
+            let mut ran = step.ran;
+            let mut after = now;
+            while blocks.len() > step.open {
+                let Some(block) = blocks.pop() else { break };
+                let mut ends = block.ends;
+                if ran != Some(false) {
+                    ends.push(after);
+                }
+                if !block.has_else && ran != Some(true) {
+                    ends.push(block.entry);
+                }
+                after = match ends.first() {
+                    Some(&first) if ends.iter().all(|e| *e == first) => first,
+                    _ => PlaneAt {
+                        unknown: true,
+                        ..after
+                    },
+                };
+                // (an outer block closed on the same line: whether it ran, not known)
+                ran = None;
+            }
+            if after != now {
+                self.linuxcnc_plane_set(after);
+            }
+        } else if let Some(at) = step.switched {
+            if at + 1 != blocks.len() {
+                // (a branch of a block not the innermost: the plane is not followed here)
+                blocks.truncate(at + 1);
+                self.linuxcnc_plane_unknown = true;
+                if let Some(block) = blocks.last_mut() {
+                    block.entry.unknown = true;
+                }
+                return;
+            }
+            let Some(block) = blocks.last_mut() else {
+                return;
+            };
+            if step.ran != Some(false) {
+                block.ends.push(now);
+            }
+            block.has_else |= step.is_else;
+            // (after a branch that surely ran the others are skipped: the plane stays)
+            if !step.taken {
+                let entry = block.entry;
+                self.linuxcnc_plane_set(entry);
             }
         }
     }
@@ -4038,6 +4225,42 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 pub(super) struct FlowStep {
     other_branch: bool,
     dead: bool,
+}
+
+/// LinuxCNC: an o-word line as the plane is followed through it
+/// ([`Checker::linuxcnc_plane_flow`]): the depth of blocks open before and after it, the
+/// block whose branch it switches to, whether that branch is an `else`, whether the branch
+/// it ends ran (`None`: not known), whether it ends a branch that surely ran (the rest
+/// skipped), and whether it leaves a loop's turn (`break`, `continue`).
+pub(super) struct PlaneStep {
+    depth: usize,
+    open: usize,
+    switched: Option<usize>,
+    is_else: bool,
+    ran: Option<bool>,
+    taken: bool,
+    leaves: bool,
+}
+
+/// LinuxCNC: the plane where a line stands: the modal state's G17/G18/G19, whether a
+/// G17.1-G19.1 is in force beside it (`Checker::linuxcnc_uvw_plane`), and whether the
+/// checker cannot know it (`Checker::linuxcnc_plane_unknown`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct PlaneAt {
+    plane: i64,
+    uvw: bool,
+    unknown: bool,
+}
+
+/// LinuxCNC: a condition or loop open where the plane is followed: the plane at its
+/// opening (the one the lines after it run in where none of its branches runs, and the
+/// one each branch after an `else`/`elseif` starts in), the planes the branches read so
+/// far ended in, and whether it has an `else` (some branch then surely runs).
+#[derive(Clone, Debug)]
+pub(super) struct PlaneBlock {
+    entry: PlaneAt,
+    ends: Vec<PlaneAt>,
+    has_else: bool,
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand

@@ -864,6 +864,8 @@ impl Checker {
             && read_refusal.is_none()
             && codes.iter().all(|&c| plain(c))
             && self.letters & dehlpqt == 0
+            // (an arc in G17.1-G19.1 is refused: linuxcnc_plane_refusal)
+            && !self.linuxcnc_uvw_plane
         {
             let given = codes.first().copied();
             let runs = given.or(match self.linuxcnc_motion {
@@ -931,6 +933,16 @@ impl Checker {
         }
         if codes.iter().any(|&c| c == 411 || c == 421) {
             self.linuxcnc_dynamic_compensation = true;
+        }
+        if let Some(&c) = codes
+            .iter()
+            .find(|&&c| matches!(c, 170 | 180 | 190 | 171 | 181 | 191))
+        {
+            self.linuxcnc_uvw_plane = c % 10 == 1;
+            self.linuxcnc_plane_unknown = false;
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_plane_subs.insert(open.2.clone());
+            }
         }
         let before = self.linuxcnc_motion;
         let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
@@ -1016,6 +1028,7 @@ impl Checker {
                         start.plane,
                     )
                 })
+                .or_else(|| self.linuxcnc_plane_refusal(runs))
         } else {
             None
         };
@@ -1104,7 +1117,11 @@ impl Checker {
             | bit(b'T')
             | super::SELECTOR;
         let letters = self.letters;
-        if letters & NOT_PLAIN != 0 || self.linuxcnc_no_slash != self.stats.blocks {
+        // (in G17.1-G19.1 an arc is refused: the full path says so)
+        if letters & NOT_PLAIN != 0
+            || self.linuxcnc_no_slash != self.stats.blocks
+            || self.linuxcnc_uvw_plane
+        {
             return None;
         }
         let given = if letters & bit(b'G') == 0 {
@@ -1642,7 +1659,11 @@ impl Checker {
             }
         }
         if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421)) {
-            if self.machine.state.plane == 19 {
+            // (convert_cutter_compensation_on takes CANON_PLANE_XY and XZ only: G19 and the
+            // planes of U V W, the block's own plane code set first; review 53, F7)
+            if (self.machine.state.plane == 19 || self.linuxcnc_uvw_plane)
+                && !self.linuxcnc_plane_unknown
+            {
                 return Some((
                     "Cutter radius compensation allowed only in XY, XZ planes (rs274ngc)".into(),
                     b'G',
@@ -1698,6 +1719,35 @@ impl Checker {
             return said("Cannot use g53 with cutter radius comp", b'G');
         }
         None
+    }
+
+    /// The plane checks of rs274ngc 2.9 as it runs an arc or a spline (interp_convert.cc),
+    /// after the block's compensation refusals: convert_arc draws no arc in G17.1, G18.1 or
+    /// G19.1 (its first check after the straight move G40 requires, TG501's), convert_spline
+    /// no G5 or G5.1 outside G17 (after its compensation and feed checks). A NURBS of
+    /// G5.2/G5.3 is drawn in any plane there (convert_nurbs checks none).
+    /// None where the plane is not known (after a call, an `if` whose branches may leave
+    /// different planes, in a body before it sets one: review 54, F2).
+    fn linuxcnc_plane_refusal(&self, runs: Option<i64>) -> Option<(String, u8)> {
+        if self.linuxcnc_plane_unknown {
+            return None;
+        }
+        let uvw = self.linuxcnc_uvw_plane;
+        match runs? {
+            20 | 30 if uvw => Some((
+                "Cannot do an arc in planes G17.1, G18.1, or G19.1 (rs274ngc): LinuxCNC draws \
+                 its arcs in G17, G18 or G19"
+                    .into(),
+                b'G',
+            )),
+            50 | 51 if uvw || self.machine.state.plane != 17 => Some((
+                "Splines must be in the XY plane (rs274ngc): LinuxCNC draws G5 and G5.1 in \
+                 G17 only"
+                    .into(),
+                b'G',
+            )),
+            _ => None,
+        }
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -1885,7 +1935,7 @@ impl Checker {
             if !has(b'D') {
                 return Some(format!("G{}.1 with no D word (rs274ngc)", c / 10));
             }
-            if has(b'L') && after.plane != 18 {
+            if has(b'L') && after.plane != 18 && !self.linuxcnc_plane_unknown {
                 return Some(format!(
                     "G{}.1 with L word, but plane is not G18 (rs274ngc): L is a lathe tool's \
                      orientation",
@@ -2026,7 +2076,7 @@ impl Checker {
                     "{name} cannot be used with cutter compensation enabled (rs274ngc)"
                 ));
             }
-            if after.plane != 18 {
+            if after.plane != 18 && !self.linuxcnc_plane_unknown {
                 return Some(format!(
                     "{name} can only be used in XZ plane (G18) (rs274ngc)"
                 ));
@@ -2073,7 +2123,12 @@ impl Checker {
                 self.linuxcnc_cycle_bottom
             }
         };
-        if let (Some(r), Some(bottom)) = (sticky(b'R', 0), sticky(axis, 1)) {
+        // (along an axis not known where the plane is not: review 54, F2)
+        if let (Some(r), Some(bottom), false) = (
+            sticky(b'R', 0),
+            sticky(axis, 1),
+            self.linuxcnc_plane_unknown,
+        ) {
             if !after.incremental && r < bottom {
                 return Some(format!(
                     "R less than {} in cycle in {plane} plane (rs274ngc): the retract plane \
@@ -3734,6 +3789,11 @@ mod tests {
             ("G41.1 D1\nG98", &["5: Cannot change retract mode with cutter radius compensation on"]),
             ("G41.1 D1\nG19", &["5: Cannot change planes with cutter radius compensation on"]),
             ("G19\nG41.1 D1", &["5: Cutter radius compensation allowed only in XY, XZ planes"]),
+            // review 53, F7: nor in G17.1-G19.1, the block's own plane first
+            ("G17.1\nG41.1 D1", &["5: Cutter radius compensation allowed only in XY, XZ planes"]),
+            ("G18.1\nG42 D1", &["5: Cutter radius compensation allowed only in XY, XZ planes"]),
+            ("G41.1 D1 G19.1", &["4: Cutter radius compensation allowed only in XY, XZ planes"]),
+            ("G18.1\nG18 G41.1 D1 L1", &[]),
             ("G41.1 D1\nG42.1 D1", &["5: Cannot turn cutter radius comp on when on"]),
             ("G41.1 D1\nG92 X0", &["5: Cannot change axis offsets with cutter radius comp"]),
             ("G41.1 D1\nG28", &["5: Cannot use g28 or g30 with cutter radius comp"]),
@@ -3811,6 +3871,219 @@ mod tests {
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_splines_in_xy_and_arcs_outside_the_uvw_planes_as_rs274() {
+        // interp_convert.cc (rs274ngc 2.9) convert_spline: G5/G5.1 in G17 only; convert_arc:
+        // no arc in G17.1-G19.1; convert_nurbs: G5.2/G5.3 in any plane. Each compared with
+        // rs274 -g (tests/test_oracle_rs274.py)
+        let spline = "Splines must be in the XY plane";
+        let arc = "Cannot do an arc in planes G17.1, G18.1, or G19.1";
+        let cases: &[(&str, &[&str])] = &[
+            (
+                "G18 F100\nG5 X3 Y2 I1 J0 P1 Q1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            (
+                "G19 F100\nG5.1 X3 I1 J1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            (
+                "G17.1 F100\nG5 X3 Y2 I1 J0 P1 Q1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            (
+                "G19.1 F100\nG5.1 X3 I1 J1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            // the plane before the spline's axes: Z is "Splines may not have motion in Z"
+            (
+                "G18 F100\nG5 X3 Z2 I1 J0 P1 Q1",
+                &["5: Splines must be in the XY plane"],
+            ),
+            ("G18.1 F100\nG2 X10 Y0 R5", &[arc]),
+            // the plane before the arc's words: neither "Mixed radius ijk format" nor an arc
+            // without I J K (TG404)
+            ("G19.1 F100\nG3 X10 Y0 R5 I1", &[arc]),
+            ("G18.1 F100\nG2 X10", &[arc]),
+            // the arc in force, run by a move in the new plane
+            ("G2 X10 Y0 R5 F100\nG18.1\nX0 Z1", &[arc]),
+            ("G17.1 F100\nG1 X1\nG3 X2 I1", &[arc]),
+            // quiet: a spline in G17, an arc in G18, a NURBS outside G17, a plane set again
+            ("F100\nG5 X3 Y2 I1 J0 P1 Q1\nG18\nG2 X5 Z1 R5", &[]),
+            ("G17.1\nG17 F100\nG5.1 X3 I1 J1", &[]),
+            ("G18 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3", &[]),
+            ("G19.1 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3", &[]),
+            ("G18.1 F100\nG1 X1 Z1\nG18\nG3 X0 Z0 R2", &[]),
+            ("G18.1 F100\nG1 X1 Z1\nG17 G2 X3 Y0 R2", &[]),
+        ];
+        for (body, expected) in cases {
+            let lines: Vec<String> = expected
+                .iter()
+                .map(|e| match *e {
+                    e if e == arc => {
+                        let line = 3 + body.matches('\n').count() + 1;
+                        format!("{line}: {arc}")
+                    }
+                    e => e.to_string(),
+                })
+                .collect();
+            assert_eq!(refused(body), lines, "{body}");
+        }
+        // the finding's place: the block's G word, or its first word where it has none
+        let text = "G21 G90 G17\nG0 X0 Y0 Z5\nG2 X10 Y0 R5 F100\nG18.1\nX0 Z1\nG18\n  G5 X1 Y1 I1 J1 P1 Q1\n";
+        let found = findings(
+            of_family(Family::LinuxCnc),
+            &program(text),
+            Rule::LinuxCncRefuses,
+        );
+        let places: Vec<(usize, usize, &str)> = found
+            .iter()
+            .map(|f| {
+                (
+                    f.line,
+                    f.column,
+                    f.message.split(" (rs274ngc)").next().unwrap(),
+                )
+            })
+            .collect();
+        assert_eq!(places, [(6, 1, arc), (8, 3, spline)]);
+    }
+
+    #[test]
+    fn linuxcnc_plane_refusals_only_where_the_plane_is_known() {
+        // review 54, F2, each compared with rs274 -g (tests/test_oracle_rs274.py): a
+        // definition does not run where it stands, so the lines after its endsub keep the
+        // plane from before its sub; a call, and a condition whose branches may leave
+        // different planes, leave the plane unknown (no plane refusal) until a G17-G19 sets it
+        let arc = "Cannot do an arc in planes G17.1, G18.1, or G19.1";
+        let spline = "Splines must be in the XY plane";
+        let cases: &[(&str, &[&str])] = &[
+            // quiet: a call may set the plane
+            (
+                "o100 sub\nG17\no100 endsub\nG18.1\no100 call\nG2 X10 Y0 R10 F100",
+                &[],
+            ),
+            ("G18\no<setxy> call\nG5 X3 Y2 I1 J0 P1 Q1 F100", &[]),
+            // quiet: an if of a condition not known, which may set another plane
+            (
+                "o1 if [#5220 GT 1]\nG18.1\no1 endif\nG2 X10 Y0 R10 F100",
+                &[],
+            ),
+            (
+                "o1 if [#5220 EQ 1]\nG17\no1 else\nG18\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &[],
+            ),
+            (
+                "G18\no1 while [#5220 LT 2]\nG17\no1 endwhile\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &[],
+            ),
+            // a call of a definition read before it whose body writes no plane and calls
+            // nothing leaves the plane as it was; one defined after the call, or whose body
+            // calls another, may set one
+            (
+                "o100 sub\nG0 X1\no100 endsub\nG18\no100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &["9: Splines"],
+            ),
+            (
+                "o101 sub\nG17\no101 endsub\no100 sub\no101 call\no100 endsub\nG18\n\
+                 o100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &[],
+            ),
+            (
+                "G18\no100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\no100 sub\nG0 X1\no100 endsub",
+                &[],
+            ),
+            // a `break` leaves the loop in its own plane: one more way out of it
+            (
+                "G18\no1 while [#5220 LT 3]\nG17\no2 if [#5220 GT 0]\no1 break\no2 endif\n\
+                 G18\no1 endwhile\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &[],
+            ),
+            (
+                "G18\no1 do\nG0 X1\no1 while [#5220 GT 5]\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &["8: Splines"],
+            ),
+            // the plane set again after the call or the if: known
+            (
+                "G18\no100 call\nG18\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &["7: Splines"],
+            ),
+            (
+                "o1 if [#5220 GT 1]\nG18.1\no1 endif\nG18.1 G2 X10 Y0 R10 F100",
+                &["7: Cannot"],
+            ),
+            // refused: every way through the if leaves the same plane
+            (
+                "o1 if [#5220 GT 1]\nG18.1\no1 else\nG18.1\no1 endif\nG2 X10 Y0 R10 F100",
+                &["9: Cannot"],
+            ),
+            (
+                "G18\no1 if [#5220 GT 1]\nG0 X1\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &["8: Splines"],
+            ),
+            (
+                "G18\no1 if [0]\nG17\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &["8: Splines"],
+            ),
+            (
+                "G18\no1 if [1]\nG17\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                &[],
+            ),
+            // the else starts in the plane from before the if, not the if branch's
+            (
+                "G18.1\no1 if [#5220 GT 1]\nG17\no1 else\nG2 X10 Y0 R10 F100\no1 endif",
+                &["8: Cannot"],
+            ),
+            // nested: the inner if's branches agree, the outer one's do not
+            (
+                "o1 if [#5220 GT 1]\no2 if [#5221 GT 1]\nG18\no2 else\nG18\no2 endif\n\
+                 G5 X3 Y2 I1 J0 P1 Q1 F100\no1 endif\nG5 X3 Y2 I1 J0 P1 Q1",
+                &["10: Splines"],
+            ),
+        ];
+        for (body, expected) in cases {
+            let found: Vec<String> = refused(body)
+                .iter()
+                .filter(|f| f.contains(arc) || f.contains(spline))
+                .map(|f| f.split(' ').take(2).collect::<Vec<_>>().join(" "))
+                .collect();
+            assert_eq!(found, *expected, "{body}");
+        }
+        // a definition's plane, set in its body, is not the main program's below it; nor is
+        // the plane before the sub its body's (the caller's): no arc judged there
+        let lines = |text: &str| -> Vec<(usize, String)> {
+            let mut linuxcnc = of_family(Family::LinuxCnc);
+            linuxcnc.facts.past_decimals = crate::dialect::PastFormat::Any;
+            findings(linuxcnc, &program(text), Rule::LinuxCncRefuses)
+                .iter()
+                .map(|f| {
+                    (
+                        f.line,
+                        f.message.split(" (rs274ngc)").next().unwrap().to_string(),
+                    )
+                })
+                .collect()
+        };
+        let main = "G21 G90 G94\nG0 X0 Y0 Z5\n";
+        for body in ["G18", "G18.1"] {
+            for moves in [
+                "G2 Y10 R10 F100",
+                "G2 X10 Y0 R10 F100",
+                "G5 X3 Y2 I1 J0 P1 Q1 F100",
+            ] {
+                let text =
+                    format!("o100 sub\n{body}\nG1 X1 Z1 F100\no100 endsub\n{main}{moves}\nM2\n");
+                assert_eq!(lines(&text), [], "{text}");
+            }
+        }
+        let text = format!("o100 sub\nG2 Y10 R10 F100\no100 endsub\n{main}G18\no100 call\nM2\n");
+        assert_eq!(lines(&text), [], "{text}");
+        // the plane from before the sub is in force again after the endsub (the R arc's "X
+        // and z words missing" in G18 is compared with rs274 by the oracle's seeds)
+        let text = format!("{main}G18.1\no100 sub\nG17\no100 endsub\nG2 X10 Y0 R10 F100\nM2\n");
+        assert_eq!(lines(&text), [(8, arc.to_string())]);
     }
 
     #[test]
