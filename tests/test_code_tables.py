@@ -246,13 +246,29 @@ def test_two_spindle_codes_in_a_block_are_refused_where_the_ladder_picks(profile
     meets the work, with the reason."""
     hits = fired(program, profile, "TG304")
     assert [(severity, at) for severity, at, _ in hits] == [("error", line)]
-    assert "are both in modal group spindle; the builder's ladder decides" in hits[0][2]
+    assert "are both in modal group spindle; no source says which the control takes" in hits[0][2]
     assert fired(program, profile, "TG308") == []
     # the coolant's group stays a warning on the same controls (the Okuma's: its own test)
     if not profile.startswith("okuma"):
         coolant = program.replace("M03 M04", "M08 M09").replace("M03 M05", "M08 M09")
         coolant = coolant.replace("M3 M4", "M8 M9")
         assert [s for s, *_ in fired(coolant, profile, "TG308")] == ["warning"]
+
+
+@pytest.mark.parametrize(("profile", "program", "rule"), [
+    # a stop beside an orientation turns nothing: the group's TG308 (review 55a F6)
+    ("okuma-mill", okuma("M05 M19"), "TG308"),
+    ("okuma-mill", okuma("S500 M03 M19"), "TG304"),
+    # the Okuma lathe's M-tool spindle (List of M Codes: M12 stop, M13 forward, M14 reverse)
+    # drives the milling tool as M03-M05 drive the main spindle (review 55a F1)
+    ("okuma-lathe", "$T.MIN%\nO1\nG0 X100 Z10\nM13 M14\nM02\n", "TG304"),
+    ("okuma-lathe", "$T.MIN%\nO1\nG0 X100 Z10\nM12 M13\nM02\n", "TG304"),
+])
+def test_a_spindle_pair_is_refused_only_where_one_code_turns_it(profile, program, rule):
+    other = "TG308" if rule == "TG304" else "TG304"
+    assert [s for s, *_ in fired(program, profile, rule)] == (
+        ["error"] if rule == "TG304" else ["warning"])
+    assert fired(program, profile, other) == []
 
 
 @pytest.mark.parametrize("block", ["M138 M139", "M73 M74", "M130(A.PNG) M131"])

@@ -299,11 +299,8 @@ impl Checker {
             Some((other, j)) if other != code => {
                 let group = group_of_code(&self.config, code).to_string();
                 let m_code = matches!(code, CodeRef::Whole(b'M', _));
-                // Two spindle codes stay an error where the control's own choice is not
-                // sourced: which way the spindle turns, or whether it turns, decides how the
-                // tool meets the work (the project's safety rule: refuse with the reason)
                 let unsourced = m_code && self.m_group_unsourced();
-                let spindle = unsourced && group == "spindle";
+                let spindle = unsourced && turns_a_spindle(&group, &[other, code]);
                 // (in the block's order: `M03 M05` names M03 first)
                 let mut message = format!(
                     "{} and {} are both in modal group {group}",
@@ -312,8 +309,8 @@ impl Checker {
                 );
                 if spindle {
                     message.push_str(
-                        "; the builder's ladder decides which the machine takes, so whether and \
-                         which way the spindle turns for the cuts after it is not known",
+                        "; no source says which the control takes, so whether and which way the \
+                         spindle turns for the cuts after it is not known",
                     );
                 }
                 self.conflict_at
@@ -551,6 +548,24 @@ pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
     config
         .code(letter, number)
         .map_or("", |c| c.duration.as_str())
+}
+
+/// Whether two codes of one modal group in a block leave a spindle's drive unknown: the
+/// group drives a spindle (the main spindle's `spindle` of every profile, the Okuma lathe's
+/// `M-tool spindle`, M12-M14 of its List of M Codes) and one of them turns it (M03/M04, as the
+/// modal state reads them, or the M-tool spindle's M13/M14). Such a pair stays TG304 where
+/// no source says what the control does with two M codes of a group (review 51 F9: the
+/// project refuses what decides how the tool meets the work); a stop beside an orientation
+/// (`M05 M19`) turns nothing, and stays TG308 there (review 55a F6).
+fn turns_a_spindle(group: &str, codes: &[CodeRef]) -> bool {
+    let turning: &[i64] = match group {
+        "spindle" => &[3, 4],
+        "M-tool spindle" => &[13, 14],
+        _ => return false,
+    };
+    codes
+        .iter()
+        .any(|c| matches!(c, CodeRef::Whole(b'M', n) if turning.contains(n)))
 }
 
 fn group_of_code(config: &Config, code: CodeRef) -> &str {
@@ -1038,7 +1053,7 @@ mod tests {
             assert_eq!((spindle[0].line, spindle[0].column), (3, 5), "{family:?}");
             assert!(
                 spindle[0].message.starts_with(
-                    "M03 and M05 are both in modal group spindle; the builder's ladder decides"
+                    "M03 and M05 are both in modal group spindle; no source says which"
                 ),
                 "{}",
                 spindle[0].message
