@@ -41,6 +41,10 @@ X1342 = HEAD + ("#1=0 / G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 42 / N9 #1=0 / GOTO 59
 # review 53, F19 (x1202.nc): where #5 is not 1, the sure `GOTO 34` lands in G90 and N34's
 # X-700. follows X850.: a 1550 mm span (the error is said at a block the checker judges
 # in file order, line 10).
+# the same as F4 with an external-device call: `M198 P2000` runs a subprogram that may
+# `M99 P5` back into N5 (FANUC: M198 is the CNC's own call, like M98)
+G5_M198 = HEAD + ("G0 X-700. Y0 Z10. / GOTO 10 / N5 G0 X900. / M30 / N10 G0 X1. / "
+                  "M198 P2000 / M30")
 X1202 = HEAD + ("#1=0 / G0 X0 Y0 Z10. / G0 X850. / IF [#5 EQ 1] GOTO 30 / N26 GOTO 34 / "
                 "G0 X900. / G0 X-700. / N29 G0 X-700. / N30 G91 / G0 X-700. / G91 / "
                 "N34 G0 X-700. / N37 G0 X0. / M30")
@@ -49,6 +53,7 @@ X1202 = HEAD + ("#1=0 / G0 X0 Y0 Z10. / G0 X850. / IF [#5 EQ 1] GOTO 30 / N26 GO
 @pytest.mark.parametrize("program, expected", [
     (G1R, [("TG601", 7, 7)]),
     (G5, [("TG601", 6, 7)]),
+    (G5_M198, [("TG601", 6, 7)]),
     (X1342, [("TG601", 16, 8)]),
     (X1202, [("TG601", 10, 4)]),
 ])

@@ -156,8 +156,8 @@ pub fn extended_address(family: Family, letter: u8) -> bool {
 }
 
 /// Whether a block's codes call a subprogram or a macro, after which the checker knows neither
-/// the position nor the modes: M98 (and Haas's M97, a local subprogram) and G65/G66 on a Fanuc
-/// or Haas and in the neutral ISO reading (which has no table of its own to say otherwise),
+/// the position nor the modes: M98 (and Haas's M97, a local subprogram; a FANUC's M198, from
+/// an external device) and G65/G66 on a Fanuc or Haas and in the neutral ISO reading (which has no table of its own to say otherwise),
 /// M98 on LinuxCNC (2.9's Fanuc-style M98/M99). Not on an Okuma, whose M98 is a coolant code
 /// (oil mist, the OSP M code list) and whose call is the `CALL` statement, nor on a SINUMERIK
 /// (a call by name or `L`) or a HEIDENHAIN (`L` labels): there these codes are the machine's
@@ -169,8 +169,15 @@ pub fn calls(family: Family, gs: &[i64], ms: &[i64], l_word: bool) -> bool {
         Family::Sinumerik => l_word,
         Family::Okuma | Family::Heidenhain => false,
         Family::LinuxCnc => ms.contains(&98),
-        Family::Iso | Family::MacroB => {
+        Family::Iso => {
             ms.iter().any(|&m| m == 98 || m == 97) || gs.iter().any(|&g| g == 65 || g == 66)
+        }
+        // (a FANUC's M198 calls a subprogram from an external device or the data server,
+        // which the CNC itself decodes: 0i-F/30i-B Operator's Manuals, "Auxiliary function"
+        // and "External device subprogram call"; its return may come back to any block)
+        Family::MacroB => {
+            ms.iter().any(|&m| m == 98 || m == 97 || m == 198)
+                || gs.iter().any(|&g| g == 65 || g == 66)
         }
     }
 }
