@@ -62,10 +62,6 @@ pub(super) struct Passed {
     numbers: Vec<u64>,
 }
 
-/// The most sequence numbers kept of the blocks read since a jump with a condition
-/// ([`Shadow`]): past them any jump back is taken as one to a block before it.
-const AFTER_MAX: usize = 100_000;
-
 /// The file's reading as it was without a passage, read beside it to the program's end
 /// (review 53, F15 and F1): a passage that passes over numbered blocks, or that rests on a
 /// condition the values known make true, holds only where nothing read after its target
@@ -626,10 +622,7 @@ impl Checker {
             return;
         };
         shadow.run.block(b);
-        if shadow.conditional
-            && self.letters & crate::modal::bit(b'N') != 0
-            && shadow.after.len() < AFTER_MAX
-        {
+        if shadow.conditional && self.letters & crate::modal::bit(b'N') != 0 {
             if let Some(n) = b
                 .words
                 .iter()
@@ -687,10 +680,8 @@ impl Checker {
             let n = crate::text::digits_value(digits)
                 .filter(|_| tail.iter().all(|&c| crate::lex::blank(c)));
             // (a jump back to a block before the jump reads its condition again)
-            let back = |n: u64| {
-                self.targets.read_before(n) != Some(false)
-                    && (shadow.after.len() >= AFTER_MAX || !shadow.after.contains(&n))
-            };
+            let back =
+                |n: u64| self.targets.read_before(n) != Some(false) && !shadow.after.contains(&n);
             if named(n) || shadow.conditional && n.is_some_and(back) {
                 return true;
             }
