@@ -69,37 +69,3 @@ def test_a_sure_goto_after_a_joined_block_finds_no_false_span():
     y3 = HEAD + ("G0 X-700. Y0 Z10. / IF [#5 EQ 1] GOTO 52 / GOTO 54 / N52 G0 X0. / "
                  "GOTO 53 / G0 X900. / N53 G0 X0 / N54 G0 X1. / M30")
     assert errors(y3) == []
-
-
-# review 53, F15 (u1.nc, u2.nc, z1.nc): a jump or a call read in the blocks a sure `GOTO`
-# passes over never runs, so the numbered block after it is passed over too: the run is
-# X0 -> X-400 (u1, u2) or X-700 -> X0 (z1), no span of 1600.
-@pytest.mark.parametrize("program", [
-    HEAD + ("G0 X0 Y0 Z10. / GOTO 59 / IF [#5 EQ 1] GOTO 27 / N27 G0 X-700. / G0 X900. / "
-            "N59 G0 X-400. / M30"),
-    HEAD + "G0 X0 Y0 Z10. / GOTO 59 / GOTO 27 / N27 G0 X-700. / G0 X900. / N59 G0 X-400. / M30",
-    HEAD + "G0 X-700. Y0 Z10. / GOTO 10 / M98 P2000 / N5 G0 X900. / N10 G0 X0 / M30",
-    # review 53, F16 (v1.nc): an earlier IF names the sure GOTO's target too
-    HEAD + "G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 44 / GOTO 44 / G0 X850. / N44 G0 X-700. / M30",
-    # review 53, F18 (y1.nc): its first jump a GOTO 53 too
-    HEAD + ("G0 X-700. Y0 Z10. / IF [#5 EQ 1] GOTO 52 / GOTO 53 / N52 G0 X0. / GOTO 53 / "
-            "G0 X900. / N53 G0 X0 / M30"),
-])
-def test_blocks_no_run_reaches_are_not_judged(program):
-    assert errors(program) == []
-
-
-# The same blocks with a way back into them read after the target, or a way in read before
-# the jump: the X900. runs (line 6, 7 or 8), out of travel from X-700.
-@pytest.mark.parametrize("program, expected", [
-    (HEAD + "G0 X0 Y0 Z10. / GOTO 59 / N27 G0 X-700. / G0 X900. / N59 G0 X-400. / "
-     "IF [#5 EQ 1] GOTO 27 / M30", [("TG601", 7, 4)]),
-    (HEAD + "G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 27 / GOTO 59 / N27 G0 X-700. / G0 X900. / "
-     "N59 G0 X-400. / M30", [("TG601", 8, 4)]),
-    (HEAD + "G0 X-700. Y0 Z10. / GOTO 10 / N5 G0 X900. / N10 G0 X0 / M99 P5", [("TG601", 6, 7)]),
-    # review 53, F1's older form: no N on the block an IF surely taken passes over
-    (HEAD + ("G0 X-700. Y0 Z1. / #1=0 / N1 IF [#1 EQ 0] GOTO 10 / G0 X900. / "
-             "N10 #1=#1+1 / IF [#1 LT 2] GOTO 1 / M30"), [("TG601", 7, 4)]),
-])
-def test_a_way_back_into_the_blocks_keeps_their_errors(program, expected):
-    assert errors(program) == expected

@@ -819,11 +819,6 @@ pub struct Checker {
     /// (Each with the line of the first jump naming it and whether another names it too;
     /// `goto_computed_line`: the last computed one's.)
     goto_targets: HashMap<u64, (usize, bool)>,
-    /// Custom Macro B: the modes in force at the jumps read that name each sequence number,
-    /// where they are alike but for the position (None: they differ, or a jump's block has
-    /// words of its own, or stands in a loop): a jump surely taken there passes over the
-    /// blocks before it and arrives in them ([`passed`]; review 53, F16).
-    jump_modes: HashMap<u64, Option<ModalState>>,
     goto_computed: bool,
     goto_computed_line: usize,
     /// SINUMERIK: the block numbers (`N100`, in capitals) a jump already read names, each
@@ -1286,17 +1281,6 @@ pub struct Checker {
     /// gave up, where the jump left no feed ever set (0: none): its target, when it comes,
     /// has none -- the jump's arrival is its first ([`passed`]; review 53, F2).
     no_feed_target: u64,
-    /// The file's reading without a passage, kept beside it until the program ends, where a
-    /// passage rests on what the text after its target may undo ([`passed::Shadow`]).
-    shadow: Option<Box<passed::Shadow>>,
-    /// The block in hand is a numbered one a passage passes over and no reading without it
-    /// is kept yet: one is taken at the block's end ([`passed`]).
-    shadow_due: bool,
-    /// This checker is such a reading without a passage: it keeps none of its own.
-    is_shadow: bool,
-    /// Custom Macro B: a call was read in the program in hand, outside the blocks a jump
-    /// passes over: its subprogram's `M99 P n` may return to any numbered block after it.
-    calls_read: bool,
 }
 
 impl Checker {
@@ -1348,10 +1332,6 @@ impl Checker {
             passed: None,
             jump_left: None,
             no_feed_target: 0,
-            shadow: None,
-            shadow_due: false,
-            is_shadow: false,
-            calls_read: false,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),
@@ -1359,7 +1339,6 @@ impl Checker {
             linuxcnc_sub_params: HashMap::new(),
             linuxcnc_sub_closed: None,
             goto_targets: HashMap::new(),
-            jump_modes: HashMap::new(),
             goto_computed: false,
             goto_computed_line: 0,
             goto_names: HashMap::new(),
@@ -2481,8 +2460,6 @@ impl Checker {
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
-            // (one in the blocks a passage passes over never runs: passed.rs)
-            self.calls_read |= self.passed.is_none();
             self.call_made(b);
             self.call_shifts();
             if self.shifts.on {
@@ -2719,7 +2696,6 @@ impl Checker {
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
         self.passage_ended(None);
-        self.shadow_ended();
         if let Some((opened, l)) = self.data_input.open() {
             // the file ends inside the mode: its G11 is missing too
             let message = format!(

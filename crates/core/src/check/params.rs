@@ -158,11 +158,6 @@ impl Taken {
         self.line == line && self.via.is_empty()
     }
 
-    /// Whether it was kept for the file's own jump read before `line`.
-    pub(super) fn own_before(&self, line: usize) -> bool {
-        self.line < line && self.via.is_empty()
-    }
-
     /// Whether it was kept for the file's own jump read after `line`.
     pub(super) fn own_after(&self, line: usize) -> bool {
         self.line > line && self.via.is_empty()
@@ -552,14 +547,8 @@ impl Checker {
                 self.params_forgotten();
             }
         }
-        if self.shadow.is_some() {
-            self.shadow_block(b);
-        }
-        if std::mem::take(&mut self.shadow_due) {
-            self.shadow_started(b);
-        }
         self.passage_started(b);
-        self.after_block = !self.runs.is_empty() || self.shadow.is_some();
+        self.after_block = !self.runs.is_empty();
     }
 
     /// The checker as it stands, for a run where a jump is taken: without what grows with the
@@ -980,14 +969,6 @@ impl Checker {
                         .entry(n)
                         .and_modify(|jump| jump.1 = true)
                         .or_insert((b.line, false));
-                    let here = (self.reach.loops == 0 && b.words.iter().all(|w| w.letter == b'N'))
-                        .then_some(self.machine.state);
-                    self.jump_modes
-                        .entry(n)
-                        .and_modify(|m| {
-                            *m = m.zip(here).and_then(|(a, b)| super::passed::joined(a, b))
-                        })
-                        .or_insert(here);
                 }
                 None => {
                     self.goto_computed = true;
@@ -1961,14 +1942,11 @@ mod tests {
         assert_eq!(feed(Family::MacroB, unknown), (vec![], vec![2]));
         let expression = "#101 = 1500.\n#101 = [#1 + 2]\nG01 X1. F#101";
         assert_eq!(feed(Family::MacroB, expression), (vec![], vec![4]));
-        // a jump surely taken brings its values to its target (review 53, F17), past a
-        // numbered block nothing names too (review 53, F15); where a jump read after may come
-        // back to that block, another way in sets another value
+        // a jump surely taken to the next numbered block brings its values (review 53, F17);
+        // a numbered block between may be another way in, setting another
         let jump = "#101 = 1500.\nGOTO 10\nN10 G01 X1. F#101";
         assert_eq!(feed(Family::MacroB, jump), (vec![4], vec![]));
         let jump = "#101 = 1500.\nGOTO 10\nN5 #101 = 100.\nN10 G01 X1. F#101";
-        assert_eq!(feed(Family::MacroB, jump), (vec![5], vec![]));
-        let jump = "#101 = 1500.\nGOTO 10\nN5 #101 = 100.\nN10 G01 X1. F#101\nGOTO 5";
         assert_eq!(feed(Family::MacroB, jump), (vec![], vec![5]));
     }
 

@@ -111,7 +111,7 @@ fn leaving(b: &super::BlockView<'_>) -> Option<Leaving> {
 
 /// Whether a flow statement opens (`WHILE [..] DO n`, `DO n`) or closes (`END n`) a loop:
 /// +1, -1 or 0.
-pub(super) fn loop_step(text: &[u8]) -> i32 {
+fn loop_step(text: &[u8]) -> i32 {
     let start = text.trim_ascii_start();
     let starts = |word: &[u8]| {
         start

@@ -241,8 +241,6 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.passage_ended(None);
-        self.shadow_ended();
-        self.calls_read = false;
         self.no_feed_target = 0;
         self.targets_ended();
         self.linuxcnc_locals_ended();
@@ -272,7 +270,6 @@ impl Checker {
         // a GOTO does not leave its program: the jumps read in the one before arrive nowhere
         // here (Fanuc's GOTOn searches the sequence number in the program it runs)
         self.goto_targets.clear();
-        self.jump_modes.clear();
         self.goto_computed = false;
         self.goto_names.clear();
         self.arrival = None;

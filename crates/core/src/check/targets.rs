@@ -289,16 +289,6 @@ impl Targets {
         self.pending.entry(target.n).or_default().push(target);
     }
 
-    /// Whether a word read before line `line` names sequence number `n`, which no block has
-    /// shown yet (or may: the targets not all kept).
-    pub(super) fn named_before(&self, n: u64, line: usize) -> bool {
-        self.overflow
-            || self
-                .pending
-                .get(&n)
-                .is_some_and(|named| named.iter().any(|t| t.line < line))
-    }
-
     /// Custom Macro B: whether the program has shown sequence number `n` so far (a `GOTO n`
     /// may go back to it); None where the numbers are not all kept.
     pub(super) fn read_before(&self, n: u64) -> Option<bool> {
