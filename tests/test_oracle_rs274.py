@@ -38,6 +38,8 @@ pytestmark = pytest.mark.skipif(
 BOTH = [
     "arc radius mismatch",
     "arc centre missing",
+    # review 55c, F2: whatever the plane, one the checker does not know too
+    "arc centre missing after an if of an unknown condition setting G18",
     "two G codes of the motion group",
     "two G codes of the distance group",
     "feed motion without feed",
@@ -173,6 +175,11 @@ BOTH = [
     "spline in G18 after a call whose body sets no plane",
     # review 53, F7: compensation turned on in a plane of U V W
     "G41.1 in G17.1", "G42.1 in G18.1", "G41.1 beside G17.1",
+    # review 55c, F8: a known branch before an elseif; F2: the plane-free arc checks where
+    # the plane is not known
+    "R arc after a known if before an elseif, setting G18",
+    "R arc after a plane chooser of a known parameter, G18",
+    "mixed R and I after a call whose body sets G18", "mixed R and I in a definition's body",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses

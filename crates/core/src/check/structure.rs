@@ -2859,12 +2859,14 @@ impl Checker {
                     },
                     ends: Vec::new(),
                     has_else: false,
+                    taken: false,
                 });
             }
             blocks.push(PlaneBlock {
                 entry: now,
                 ends: Vec::new(),
                 has_else: false,
+                taken: false,
             });
         } else if step.open < step.depth {
             let mut ran = step.ran;
@@ -2872,10 +2874,12 @@ impl Checker {
             while blocks.len() > step.open {
                 let Some(block) = blocks.pop() else { break };
                 let mut ends = block.ends;
-                if ran != Some(false) {
+                // (after a branch that surely ran, rs274 skips to the `endif`: the ways
+                // through are that branch's alone, its end pushed where it ended)
+                if ran != Some(false) && !block.taken {
                     ends.push(after);
                 }
-                if !block.has_else && ran != Some(true) {
+                if !block.has_else && ran != Some(true) && !block.taken {
                     ends.push(block.entry);
                 }
                 after = match ends.first() {
@@ -2904,12 +2908,13 @@ impl Checker {
             let Some(block) = blocks.last_mut() else {
                 return;
             };
-            if step.ran != Some(false) {
+            if step.ran != Some(false) && !block.taken {
                 block.ends.push(now);
             }
             block.has_else |= step.is_else;
+            block.taken |= step.taken;
             // (after a branch that surely ran the others are skipped: the plane stays)
-            if !step.taken {
+            if !block.taken {
                 let entry = block.entry;
                 self.linuxcnc_plane_set(entry);
             }
@@ -4255,12 +4260,15 @@ pub(super) struct PlaneAt {
 /// LinuxCNC: a condition or loop open where the plane is followed: the plane at its
 /// opening (the one the lines after it run in where none of its branches runs, and the
 /// one each branch after an `else`/`elseif` starts in), the planes the branches read so
-/// far ended in, and whether it has an `else` (some branch then surely runs).
+/// far ended in, whether it has an `else` (some branch then surely runs), and whether a
+/// branch read so far surely ran (rs274 runs none after it: review 55c, F8, an
+/// `if [1]` / `G18` / `elseif [0]` / `G19` / `endif` leaves G18, not the plane before it).
 #[derive(Clone, Debug)]
 pub(super) struct PlaneBlock {
     entry: PlaneAt,
     ends: Vec<PlaneAt>,
     has_else: bool,
+    taken: bool,
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand
