@@ -760,6 +760,11 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("mixed R and I in a definition's body",
      "o<arc> sub\nG2 X10 Y0 R10 I5 F100\no<arc> endsub\n" + HEAD + "o<arc> call\nM2\n", 2,
      "error"),
+    # review 55c, F6: M72 restores the plane M70 saved
+    ("R arc after M72 restores G18",
+     HEAD + "G18\nM70\nG17\nM72\nG2 Y10 R10 F100\nM2\n", 7, "error"),
+    ("spline after M72 restores G17",
+     HEAD + "F100\nM70\nG18\nG1 X1 Z1\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

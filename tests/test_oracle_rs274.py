@@ -180,6 +180,8 @@ BOTH = [
     "R arc after a known if before an elseif, setting G18",
     "R arc after a plane chooser of a known parameter, G18",
     "mixed R and I after a call whose body sets G18", "mixed R and I in a definition's body",
+    # review 55c, F6: M72 restores the plane M70 saved
+    "R arc after M72 restores G18",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -238,7 +240,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after an if of an unknown condition setting G18",
        "spline after an if and else setting G17 and G18",
        "spline after a while that sets G17, begun in G18",
-       "spline after a while left by a break in G17"]
+       "spline after a while left by a break in G17",
+       # review 55c, F6: M72 restores the plane M70 saved
+       "spline after M72 restores G17"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

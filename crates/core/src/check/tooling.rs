@@ -4130,6 +4130,23 @@ mod tests {
         for (body, expected) in cases {
             assert_eq!(centre(body), *expected, "{body}");
         }
+        // F6: M72 restores the plane M70 (or M73) saved; not known where the save may not
+        // have run in that plane, or beside a plane code of its block
+        let cases: &[(&str, &[usize])] = &[
+            ("G18\nM70\nG17\nM72", &[8]),
+            ("G18\nM73\nG19\nM72", &[8]),
+            ("M70\nG18\nM72", &[]),
+            ("M70\no1 if [#5220 GT 1]\nG18\nM70\no1 endif\nM72", &[]),
+            (
+                "G18\nM70\no1 if [#5220 GT 1]\nM70\no1 endif\nG17\nM72",
+                &[11],
+            ),
+            ("G17\nM70 G18\nM72", &[]),
+            ("G18\nM70\nM72 G17", &[]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(centre(body), *expected, "{body}");
+        }
         // F2: where the plane is not known (after a call, an if of an unknown condition, in
         // a definition's body) R beside I J K is refused, as an arc with no centre and no R
         let mixed = "Mixed radius ijk format for arc";
