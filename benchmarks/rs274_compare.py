@@ -763,6 +763,11 @@ SEEDED: list[tuple[str, str, int, str]] = [
     # review 55c, F6: M72 restores the plane M70 saved
     ("R arc after M72 restores G18",
      HEAD + "G18\nM70\nG17\nM72\nG2 Y10 R10 F100\nM2\n", 7, "error"),
+    # review 55c, F3, F4: a G code by an expression, or a parameter not known, may set G17
+    ("spline after G[17], in G18",
+     HEAD + "G18\nG[17]\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("R arc after G#<p> of #5220+16, in G18",
+     HEAD + "G18\n#<p>=[#5220+16]\nG#<p>\nG2 Y10 R10 F100\nM2\n", 0, "accepted"),
     ("spline after M72 restores G17",
      HEAD + "F100\nM70\nG18\nG1 X1 Z1\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
 ]

@@ -242,7 +242,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after a while that sets G17, begun in G18",
        "spline after a while left by a break in G17",
        # review 55c, F6: M72 restores the plane M70 saved
-       "spline after M72 restores G17"]
+       "spline after M72 restores G17",
+       # review 55c, F3, F4: a G code by an expression, or a parameter not known
+       "spline after G[17], in G18", "R arc after G#<p> of #5220+16, in G18"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

@@ -943,6 +943,15 @@ impl Checker {
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_plane_subs.insert(open.2.clone());
             }
+        } else if g_unread {
+            // a G code of a value not known here (`G#<p>`, and `G[17]`, whose bracketed
+            // value the reading leaves to rs274's read_real_value) may be G17-G19.1: the
+            // plane is not known after it (review 55c, F3, F4), and a body with one may
+            // write a plane
+            self.linuxcnc_plane_unknown = true;
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_plane_subs.insert(open.2.clone());
+            }
         }
         let before = self.linuxcnc_motion;
         let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
@@ -4146,6 +4155,31 @@ mod tests {
         ];
         for (body, expected) in cases {
             assert_eq!(centre(body), *expected, "{body}");
+        }
+        // F3, F4: a G code by a bracketed expression or a parameter not known here may be a
+        // plane code (rs274 runs each below in G17, #5220 being 1)
+        let spline = "Splines must be in the XY plane";
+        for (body, expected) in [
+            ("G18\nG[17]\nG5 X3 Y2 I1 J0 P1 Q1 F100", None),
+            (
+                "G18\n#<p>=[#5220+16]\nG#<p>\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                None,
+            ),
+            (
+                "o100 sub\nG[17]\no100 endsub\nG18\no100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                None,
+            ),
+            ("G#<p>\nG18\nG5 X3 Y2 I1 J0 P1 Q1 F100", Some(6)),
+        ] {
+            let found: Vec<String> = refused(body)
+                .into_iter()
+                .filter(|f| f.contains(spline))
+                .collect();
+            let expected: Vec<String> = expected
+                .map(|line| format!("{line}: {spline}"))
+                .into_iter()
+                .collect();
+            assert_eq!(found, expected, "{body}");
         }
         // F2: where the plane is not known (after a call, an if of an unknown condition, in
         // a definition's body) R beside I J K is refused, as an arc with no centre and no R
