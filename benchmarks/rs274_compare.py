@@ -328,6 +328,9 @@ HEAD = "G21 G17 G90 G94\nG0 X0 Y0 Z5\n"  # lines 1-2; the fault is on line 3 unl
 SEEDED: list[tuple[str, str, int, str]] = [
     ("arc radius mismatch", HEAD + "G2 X10 Y0 I5.5 J0 F100\nM2\n", 3, "error"),
     ("arc centre missing", HEAD + "G2 X10 Y0 F100\nM2\n", 3, "error"),
+    # review 55c, F2: no centre and no R is refused whatever the plane, one not known too
+    ("arc centre missing after an if of an unknown condition setting G18",
+     HEAD + "o1 if [#5220 GT 1]\nG18\no1 endif\nG2 X10 Y0 F100\nM2\n", 6, "error"),
     ("two G codes of the motion group", HEAD + "G0 G1 X10 F100\nM2\n", 3, "error"),
     ("two G codes of the distance group", HEAD + "G90 G91 X10\nM2\n", 3, "error"),
     ("feed motion without feed", HEAD + "G1 X10\nM2\n", 3, "error"),
@@ -743,6 +746,30 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G41.1 in G19 after an if that sets no plane",
      HEAD + "G19\no1 if [#5220 GT 1]\nG0 X1\no1 endif\nG41.1 D1\nG1 X1 F100\nG40\nM2\n",
      7, "error"),
+    # review 55c, F8: an if/elseif whose taken branch is known leaves that branch's plane
+    ("R arc after a known if before an elseif, setting G18",
+     HEAD + "o1 if [1]\nG18\no1 elseif [0]\nG19\no1 endif\nG2 Y10 R10 F100\nM2\n", 8,
+     "error"),
+    ("R arc after a plane chooser of a known parameter, G18",
+     HEAD + "#<plane>=2\no1 if [#<plane> EQ 1]\nG17\no1 elseif [#<plane> EQ 2]\nG18\n"
+     "o1 elseif [#<plane> EQ 3]\nG19\no1 endif\nG2 Y10 R10 F100\nM2\n", 11, "error"),
+    # review 55c, F2: where the plane is not known, the arc checks that need none
+    ("mixed R and I after a call whose body sets G18",
+     "o100 sub\nG18\no100 endsub\n" + HEAD + "o100 call\nG2 X10 Y0 R10 I5 F100\nM2\n", 7,
+     "error"),
+    ("mixed R and I in a definition's body",
+     "o<arc> sub\nG2 X10 Y0 R10 I5 F100\no<arc> endsub\n" + HEAD + "o<arc> call\nM2\n", 2,
+     "error"),
+    # review 55c, F6: M72 restores the plane M70 saved
+    ("R arc after M72 restores G18",
+     HEAD + "G18\nM70\nG17\nM72\nG2 Y10 R10 F100\nM2\n", 7, "error"),
+    # review 55c, F3, F4: a G code by an expression, or a parameter not known, may set G17
+    ("spline after G[17], in G18",
+     HEAD + "G18\nG[17]\nG5 X3 Y2 I1 J0 P1 Q1 F100\nM2\n", 0, "accepted"),
+    ("R arc after G#<p> of #5220+16, in G18",
+     HEAD + "G18\n#<p>=[#5220+16]\nG#<p>\nG2 Y10 R10 F100\nM2\n", 0, "accepted"),
+    ("spline after M72 restores G17",
+     HEAD + "F100\nM70\nG18\nG1 X1 Z1\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

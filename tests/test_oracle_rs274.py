@@ -38,6 +38,8 @@ pytestmark = pytest.mark.skipif(
 BOTH = [
     "arc radius mismatch",
     "arc centre missing",
+    # review 55c, F2: whatever the plane, one the checker does not know too
+    "arc centre missing after an if of an unknown condition setting G18",
     "two G codes of the motion group",
     "two G codes of the distance group",
     "feed motion without feed",
@@ -173,6 +175,13 @@ BOTH = [
     "spline in G18 after a call whose body sets no plane",
     # review 53, F7: compensation turned on in a plane of U V W
     "G41.1 in G17.1", "G42.1 in G18.1", "G41.1 beside G17.1",
+    # review 55c, F8: a known branch before an elseif; F2: the plane-free arc checks where
+    # the plane is not known
+    "R arc after a known if before an elseif, setting G18",
+    "R arc after a plane chooser of a known parameter, G18",
+    "mixed R and I after a call whose body sets G18", "mixed R and I in a definition's body",
+    # review 55c, F6: M72 restores the plane M70 saved
+    "R arc after M72 restores G18",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -231,7 +240,11 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after an if of an unknown condition setting G18",
        "spline after an if and else setting G17 and G18",
        "spline after a while that sets G17, begun in G18",
-       "spline after a while left by a break in G17"]
+       "spline after a while left by a break in G17",
+       # review 55c, F6: M72 restores the plane M70 saved
+       "spline after M72 restores G17",
+       # review 55c, F3, F4: a G code by an expression, or a parameter not known
+       "spline after G[17], in G18", "R arc after G#<p> of #5220+16, in G18"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
 # off (-g) or on (-b -g), not both; tapegate reports no error
 SWITCH = ["endif label changed by a deleted setting",

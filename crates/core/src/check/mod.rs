@@ -1163,6 +1163,9 @@ pub struct Checker {
     /// Modal State", "M72 Restore Modal State"; interp_convert.cc: M70 and M73 save into the
     /// call level's context, M71 invalidates it; review 49a, F6; review 50, F2, F5).
     linuxcnc_saved: structure::Saved,
+    /// LinuxCNC: the plane the main program's M70/M73 saved with it, which M72 restores
+    /// ([`structure::PlaneAt`]; review 55c, F6).
+    linuxcnc_plane_saved: structure::PlaneAt,
     /// LinuxCNC: a main program's block with M72 and G53: whether G91 was surely in force
     /// before it, which rs274's G53 test reads (the M72 restores after it; review 50, F11).
     linuxcnc_g53_before: Option<bool>,
@@ -1437,6 +1440,7 @@ impl Checker {
             linuxcnc_distance_from: None,
             linuxcnc_distance_in: 0,
             linuxcnc_saved: structure::Saved::Empty,
+            linuxcnc_plane_saved: structure::PlaneAt::UNKNOWN,
             linuxcnc_g53_before: None,
             linuxcnc_body_distance: Box::default(),
             linuxcnc_call_refused: Vec::new(),

@@ -699,15 +699,6 @@ impl Checker {
         if self.config.family == Family::LinuxCnc && self.linuxcnc_uvw_plane {
             return;
         }
-        // nor is an arc judged in a plane not known here (after a call, an `if` whose
-        // branches may leave different planes, a body before it sets one: review 54, F2),
-        // unless its block sets one
-        if self.config.family == Family::LinuxCnc
-            && self.linuxcnc_plane_unknown
-            && ![17, 18, 19].iter().any(|&g| v.has_g(g))
-        {
-            return;
-        }
         // interp_convert.cc convert_arc refuses R beside any of I J K before it looks at the
         // plane (NCE_MIXED_RADIUS_IJK_FORMAT_FOR_ARC); a FANUC reads such an arc by its R
         if self.config.family == Family::LinuxCnc && runs && v.has(b'R') {
@@ -723,6 +714,27 @@ impl Checker {
                 self.report(Rule::LinuxCncRefuses, message, line, w.column);
                 return;
             }
+        }
+        // nor is an arc judged by its plane where the plane is not known here (after a call,
+        // an `if` whose branches may leave different planes, a body before it sets one:
+        // review 54, F2), unless its block sets one; an arc with no centre word and no R is
+        // refused in every plane (convert_arc: NCE_R_I_J_K_WORDS_ALL_MISSING_FOR_ARC, review
+        // 55c, F2)
+        if self.config.family == Family::LinuxCnc
+            && self.linuxcnc_plane_unknown
+            && ![17, 18, 19].iter().any(|&g| v.has_g(g))
+        {
+            let given = |letter: u8| v.has(letter) || v.unknown & crate::modal::bit(letter) != 0;
+            if !b"IJKR".iter().any(|&a| given(a)) {
+                let message = "arc without I J K (or R): none is given, whatever the plane";
+                self.report(
+                    Rule::ArcCentreMissing,
+                    message.to_string(),
+                    line,
+                    words[0].column,
+                );
+            }
+            return;
         }
         // about a SINUMERIK's pole, by its opening angle (polar.rs), or about a centre given by
         // a value the checker does not follow: no centre or radius to check

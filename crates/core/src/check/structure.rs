@@ -311,6 +311,7 @@ impl Checker {
         self.linuxcnc_distance_from = None;
         self.linuxcnc_distance_in = 0;
         self.linuxcnc_saved = Saved::Empty;
+        self.linuxcnc_plane_saved = PlaneAt::UNKNOWN;
         self.linuxcnc_g53_before = None;
         *self.linuxcnc_body_distance = BodyDistance::default();
         self.linuxcnc_call_refused.clear();
@@ -2665,6 +2666,7 @@ impl Checker {
             (step.m7 == Some(72) && step.g53).then_some(mode == Distance::Known(true));
         let flow = depth > 0;
         let before = mode;
+        self.linuxcnc_saved_plane(&step, flow);
         match step.m7 {
             Some(70 | 73) => self.linuxcnc_saved.set(Saved::Valid(mode), flow),
             Some(71) => self.linuxcnc_saved.set(Saved::Empty, flow),
@@ -2696,6 +2698,37 @@ impl Checker {
             mode = step.written(mode, g91);
         }
         self.linuxcnc_main_write(before, mode, depth);
+    }
+
+    /// LinuxCNC, a block of the main program: its M70/M73 saves the plane with the rest of
+    /// the modal state, its M72 restores it (interp_convert.cc `save_settings`,
+    /// `restore_settings`: the plane among the modes it restores; review 55c, F6: `G17` /
+    /// `M70` / `G18` / `M72` / `G5 ...` runs in G17 in `rs274 -g`). A save inside a condition
+    /// or loop of another plane than the one saved, one beside a plane code of its block (the
+    /// M code runs first), a restore of a state not surely saved, one beside a plane code
+    /// (rs274 then runs both: which wins is the saved state's to say), and an M code
+    /// written by a parameter (perhaps M72) leave the plane not known.
+    fn linuxcnc_saved_plane(&mut self, step: &DistanceStep, flow: bool) {
+        let now = self.linuxcnc_plane_now();
+        let unknown = PlaneAt {
+            unknown: true,
+            ..now
+        };
+        match step.m7 {
+            Some(70 | 73) => {
+                let differs = flow && self.linuxcnc_plane_saved != now;
+                self.linuxcnc_plane_saved = if step.plane || differs { unknown } else { now };
+            }
+            Some(72) => {
+                let at = match self.linuxcnc_saved {
+                    Saved::Valid(_) if !step.plane => self.linuxcnc_plane_saved,
+                    _ => unknown,
+                };
+                self.linuxcnc_plane_set(at);
+            }
+            _ if step.unread_m => self.linuxcnc_plane_set(unknown),
+            _ => {}
+        }
     }
 
     /// LinuxCNC: a subroutine file (its one definition, called from another file): the
@@ -2856,12 +2889,14 @@ impl Checker {
                     },
                     ends: Vec::new(),
                     has_else: false,
+                    taken: false,
                 });
             }
             blocks.push(PlaneBlock {
                 entry: now,
                 ends: Vec::new(),
                 has_else: false,
+                taken: false,
             });
         } else if step.open < step.depth {
             let mut ran = step.ran;
@@ -2869,10 +2904,12 @@ impl Checker {
             while blocks.len() > step.open {
                 let Some(block) = blocks.pop() else { break };
                 let mut ends = block.ends;
-                if ran != Some(false) {
+                // (after a branch that surely ran, rs274 skips to the `endif`: the ways
+                // through are that branch's alone, its end pushed where it ended)
+                if ran != Some(false) && !block.taken {
                     ends.push(after);
                 }
-                if !block.has_else && ran != Some(true) {
+                if !block.has_else && ran != Some(true) && !block.taken {
                     ends.push(block.entry);
                 }
                 after = match ends.first() {
@@ -2901,12 +2938,13 @@ impl Checker {
             let Some(block) = blocks.last_mut() else {
                 return;
             };
-            if step.ran != Some(false) {
+            if step.ran != Some(false) && !block.taken {
                 block.ends.push(now);
             }
             block.has_else |= step.is_else;
+            block.taken |= step.taken;
             // (after a branch that surely ran the others are skipped: the plane stays)
-            if !step.taken {
+            if !block.taken {
                 let entry = block.entry;
                 self.linuxcnc_plane_set(entry);
             }
@@ -4249,15 +4287,27 @@ pub(super) struct PlaneAt {
     unknown: bool,
 }
 
+impl PlaneAt {
+    /// A plane the checker does not know (what no M70 has saved).
+    pub(super) const UNKNOWN: PlaneAt = PlaneAt {
+        plane: 17,
+        uvw: false,
+        unknown: true,
+    };
+}
+
 /// LinuxCNC: a condition or loop open where the plane is followed: the plane at its
 /// opening (the one the lines after it run in where none of its branches runs, and the
 /// one each branch after an `else`/`elseif` starts in), the planes the branches read so
-/// far ended in, and whether it has an `else` (some branch then surely runs).
+/// far ended in, whether it has an `else` (some branch then surely runs), and whether a
+/// branch read so far surely ran (rs274 runs none after it: review 55c, F8, an
+/// `if [1]` / `G18` / `elseif [0]` / `G19` / `endif` leaves G18, not the plane before it).
 #[derive(Clone, Debug)]
 pub(super) struct PlaneBlock {
     entry: PlaneAt,
     ends: Vec<PlaneAt>,
     has_else: bool,
+    taken: bool,
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand
@@ -4523,6 +4573,8 @@ struct DistanceStep {
     g53: bool,
     /// Its M70, M71, M72 or M73 (one a block: one M code of group 7).
     m7: Option<u8>,
+    /// A G17-G19 or G17.1-G19.1 of its own (rs274 runs it after the M code of group 7).
+    plane: bool,
     /// A G or M code written by a parameter: perhaps any.
     unread_g: bool,
     unread_m: bool,
@@ -4551,6 +4603,7 @@ fn distance_step(b: &BlockView<'_>) -> DistanceStep {
         distance: None,
         g53: false,
         m7: None,
+        plane: false,
         unread_g: false,
         unread_m: false,
         g_column: 0,
@@ -4572,6 +4625,7 @@ fn distance_step(b: &BlockView<'_>) -> DistanceStep {
                     Some(90.0) => step.distance = Some(false),
                     Some(91.0) => step.distance = Some(true),
                     Some(53.0) => step.g53 = true,
+                    Some(17.0 | 18.0 | 19.0 | 17.1 | 18.1 | 19.1) => step.plane = true,
                     Some(_) => {}
                     None => step.unread_g = true,
                 }

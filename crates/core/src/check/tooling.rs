@@ -943,6 +943,15 @@ impl Checker {
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_plane_subs.insert(open.2.clone());
             }
+        } else if g_unread {
+            // a G code of a value not known here (`G#<p>`, and `G[17]`, whose bracketed
+            // value the reading leaves to rs274's read_real_value) may be G17-G19.1: the
+            // plane is not known after it (review 55c, F3, F4), and a body with one may
+            // write a plane
+            self.linuxcnc_plane_unknown = true;
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_plane_subs.insert(open.2.clone());
+            }
         }
         let before = self.linuxcnc_motion;
         let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
@@ -4084,6 +4093,133 @@ mod tests {
         // and z words missing" in G18 is compared with rs274 by the oracle's seeds)
         let text = format!("{main}G18.1\no100 sub\nG17\no100 endsub\nG2 X10 Y0 R10 F100\nM2\n");
         assert_eq!(lines(&text), [(8, arc.to_string())]);
+    }
+
+    #[test]
+    fn linuxcnc_plane_after_a_known_branch_and_the_checks_of_no_plane() {
+        // review 55c, F8, each compared with rs274 -g (tests/test_oracle_rs274.py): after a
+        // branch known to run rs274 skips to the endif, so the plane is that branch's, not
+        // unknown (the plane before the if is no way through); the last branch known to
+        // run, and an if/elseif of unknown conditions, as before. (This family's R is no
+        // radius, so the R arc's "X and z words missing" is the oracle's; the centre word
+        // J outside G18 is TG404 here, "J word given for arc in xz plane" in rs274.)
+        let centre = |body: &str| -> Vec<usize> {
+            let text = format!("G21 G90 G17\nG0 X0 Y0 Z5\n{body}\nG2 X1 Y0 I0.5 J0 F100\n");
+            findings(
+                of_family(Family::LinuxCnc),
+                &program(&text),
+                Rule::ArcCentreMissing,
+            )
+            .iter()
+            .map(|f| f.line)
+            .collect()
+        };
+        let cases: &[(&str, &[usize])] = &[
+            ("o1 if [1]\nG18\no1 elseif [0]\nG19\no1 endif", &[9]),
+            (
+                "#<p>=2\no1 if [#<p> EQ 1]\nG17\no1 elseif [#<p> EQ 2]\nG18\n\
+                 o1 elseif [#<p> EQ 3]\nG19\no1 endif",
+                &[12],
+            ),
+            (
+                "o1 if [1]\nG18\no1 elseif [#5220 EQ 1]\nG19\no1 endif",
+                &[9],
+            ),
+            ("o1 if [0]\nG19\no1 elseif [1]\nG18\no1 endif", &[9]),
+            (
+                "o1 if [#5220 EQ 1]\nG18\no1 elseif [#5220 EQ 2]\nG18\no1 endif",
+                &[],
+            ),
+            (
+                "o1 if [#5220 EQ 1]\nG18\no1 elseif [#5220 EQ 2]\nG18\no1 else\nG18\n\
+                 o1 endif",
+                &[11],
+            ),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(centre(body), *expected, "{body}");
+        }
+        // F6: M72 restores the plane M70 (or M73) saved; not known where the save may not
+        // have run in that plane, or beside a plane code of its block
+        let cases: &[(&str, &[usize])] = &[
+            ("G18\nM70\nG17\nM72", &[8]),
+            ("G18\nM73\nG19\nM72", &[8]),
+            ("M70\nG18\nM72", &[]),
+            ("M70\no1 if [#5220 GT 1]\nG18\nM70\no1 endif\nM72", &[]),
+            (
+                "G18\nM70\no1 if [#5220 GT 1]\nM70\no1 endif\nG17\nM72",
+                &[11],
+            ),
+            ("G17\nM70 G18\nM72", &[]),
+            ("G18\nM70\nM72 G17", &[]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(centre(body), *expected, "{body}");
+        }
+        // F3, F4: a G code by a bracketed expression or a parameter not known here may be a
+        // plane code (rs274 runs each below in G17, #5220 being 1)
+        let spline = "Splines must be in the XY plane";
+        for (body, expected) in [
+            ("G18\nG[17]\nG5 X3 Y2 I1 J0 P1 Q1 F100", None),
+            (
+                "G18\n#<p>=[#5220+16]\nG#<p>\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                None,
+            ),
+            (
+                "o100 sub\nG[17]\no100 endsub\nG18\no100 call\nG5 X3 Y2 I1 J0 P1 Q1 F100",
+                None,
+            ),
+            ("G#<p>\nG18\nG5 X3 Y2 I1 J0 P1 Q1 F100", Some(6)),
+        ] {
+            let found: Vec<String> = refused(body)
+                .into_iter()
+                .filter(|f| f.contains(spline))
+                .collect();
+            let expected: Vec<String> = expected
+                .map(|line| format!("{line}: {spline}"))
+                .into_iter()
+                .collect();
+            assert_eq!(found, expected, "{body}");
+        }
+        // F2: where the plane is not known (after a call, an if of an unknown condition, in
+        // a definition's body) R beside I J K is refused, as an arc with no centre and no R
+        let mixed = "Mixed radius ijk format for arc";
+        for (body, line) in [
+            (
+                "o100 sub\nG18\no100 endsub\no100 call\nG2 X10 Y0 R10 I5 F100",
+                8,
+            ),
+            ("o1 if [#5220 GT 1]\nG18\no1 endif\nG3 X10 R10 K2 F100", 7),
+            (
+                "o<arc> sub\nG2 X10 Y0 R10 I5 F100\no<arc> endsub\no<arc> call",
+                5,
+            ),
+        ] {
+            let found = refused(body);
+            assert!(
+                found.iter().any(|f| f == &format!("{line}: {mixed}")),
+                "{body}: {found:?}"
+            );
+        }
+        let text = "G21 G90 G17\nG0 X0 Y0 Z5\no1 if [#5220 GT 1]\nG18\no1 endif\n\
+                    G2 X10 Y0 F100\nG2 X10 Y0 I5 F100\nG2 X10 Y0 R#<r> F100\n";
+        let found = findings(
+            of_family(Family::LinuxCnc),
+            &program(text),
+            Rule::ArcCentreMissing,
+        );
+        let found: Vec<(usize, usize, &str)> = found
+            .iter()
+            .map(|f| (f.line, f.column, f.message.as_str()))
+            .collect();
+        assert_eq!(
+            found,
+            [(
+                7,
+                1,
+                "arc without I J K (or R): none is given, whatever the plane"
+            )]
+        );
     }
 
     #[test]
