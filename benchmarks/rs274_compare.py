@@ -760,6 +760,10 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("mixed R and I in a definition's body",
      "o<arc> sub\nG2 X10 Y0 R10 I5 F100\no<arc> endsub\n" + HEAD + "o<arc> call\nM2\n", 2,
      "error"),
+    # review 55c, F5: a body whose every plane code writes the caller's plane leaves it
+    ("J centre after a call whose body sets the caller's G18",
+     "o100 sub\nG18\nG0 X1\no100 endsub\n" + HEAD
+     + "G18\no100 call\nG2 X10 Z0 I5 J0 F100\nM2\n", 9, "error"),
     # review 55c, F6: M72 restores the plane M70 saved
     ("R arc after M72 restores G18",
      HEAD + "G18\nM70\nG17\nM72\nG2 Y10 R10 F100\nM2\n", 7, "error"),

@@ -40,6 +40,8 @@ BOTH = [
     "arc centre missing",
     # review 55c, F2: whatever the plane, one the checker does not know too
     "arc centre missing after an if of an unknown condition setting G18",
+    # review 55c, F5: after a call of a body that writes only the caller's plane (TG404)
+    "J centre after a call whose body sets the caller's G18",
     "two G codes of the motion group",
     "two G codes of the distance group",
     "feed motion without feed",

@@ -988,9 +988,12 @@ pub struct Checker {
     /// `endsub` (rs274 reads a definition without running it).
     linuxcnc_plane_before_sub: Option<structure::PlaneAt>,
     /// LinuxCNC: the labels of the definitions whose body writes a G17-G19 (or .1) or calls
-    /// another subroutine: after a call of one of them the plane is not known; after a call
-    /// of another one defined before it, the plane stays.
-    linuxcnc_plane_subs: HashSet<Vec<u8>>,
+    /// another subroutine, with the one plane (G code and whether a .1 plane) every plane
+    /// code of the body writes, None where that is not one (two planes, a G code of a value
+    /// not known, a call): after a call of one of them the plane is not known, but where the
+    /// body's one plane is the caller's (every way through leaves it: review 55c, F5); after
+    /// a call of another one defined before it, the plane stays.
+    linuxcnc_plane_subs: HashMap<Vec<u8>, Option<(i64, bool)>>,
     /// LinuxCNC: after a call or jump the checker does not follow, the spindle direction and
     /// the cutter compensation the call may have set are unknown until the program sets them
     /// again (M3/M4/M5; G40/G41/G42): no refusal that depends on them (TG412).
@@ -1489,7 +1492,7 @@ impl Checker {
             linuxcnc_plane_blocks: Vec::new(),
             linuxcnc_plane_body_blocks: Vec::new(),
             linuxcnc_plane_before_sub: None,
-            linuxcnc_plane_subs: HashSet::new(),
+            linuxcnc_plane_subs: HashMap::new(),
             data_input,
             programs: 0,
             split: dialect::ProgramSplit::default(),

@@ -2811,20 +2811,29 @@ impl Checker {
     /// plane is followed ([`Checker::linuxcnc_plane_flow`]).
     pub(super) fn linuxcnc_plane_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
         let mut may_set = calls;
+        let now = self.linuxcnc_plane_now();
         for &(_, kind, text) in b.statements {
             if kind != Kind::Call {
                 continue;
             }
             let label = self.linuxcnc_call_label(text);
+            // (a body whose every plane code writes the caller's plane leaves it: its lines
+            // run in the caller's plane or in that one; an M72 of the body restores what the
+            // body's own M70 saved, rs274's context being the call level's)
+            let leaves_caller_plane =
+                |one: &Option<(i64, bool)>| !now.unknown && *one == Some((now.plane, now.uvw));
             may_set |= self.open_definition.is_some()
                 || crate::statement::computed_label(&label)
                 || !self.linuxcnc_defined.contains(&label)
-                || self.linuxcnc_plane_subs.contains(&label);
+                || self
+                    .linuxcnc_plane_subs
+                    .get(&label)
+                    .is_some_and(|one| !leaves_caller_plane(one));
         }
         if may_set {
             self.linuxcnc_plane_unknown = true;
             if let Some(open) = &self.open_definition {
-                self.linuxcnc_plane_subs.insert(open.2.clone());
+                self.linuxcnc_plane_subs.insert(open.2.clone(), None);
             }
         }
     }

@@ -941,7 +941,15 @@ impl Checker {
             self.linuxcnc_uvw_plane = c % 10 == 1;
             self.linuxcnc_plane_unknown = false;
             if let Some(open) = &self.open_definition {
-                self.linuxcnc_plane_subs.insert(open.2.clone());
+                let this = Some((c / 10, c % 10 == 1));
+                self.linuxcnc_plane_subs
+                    .entry(open.2.clone())
+                    .and_modify(|one| {
+                        if *one != this {
+                            *one = None;
+                        }
+                    })
+                    .or_insert(this);
             }
         } else if g_unread {
             // a G code of a value not known here (`G#<p>`, and `G[17]`, whose bracketed
@@ -950,7 +958,7 @@ impl Checker {
             // write a plane
             self.linuxcnc_plane_unknown = true;
             if let Some(open) = &self.open_definition {
-                self.linuxcnc_plane_subs.insert(open.2.clone());
+                self.linuxcnc_plane_subs.insert(open.2.clone(), None);
             }
         }
         let before = self.linuxcnc_motion;
