@@ -96,6 +96,20 @@ def test_a_haas_lathe_peck_keeps_its_decimals(tmp_path):
                                                                "inch")
 
 
+def test_a_haas_lathe_peck_s_least_depth_converts_as_a_length(tmp_path):
+    """Haas lathe G83's K is the optional minimum depth of cut, a length, with or without I
+    and J (Haas lathe operator's manual, G83 "End face peck drilling"): K0.05 inch is 1.27 mm
+    in both blocks, not a FANUC repeat count kept as written (review 55a, F8); a FANUC lathe's
+    G83 K is its number of repeats and stays as written."""
+    text = ("%\nO1\nG20 G99\nG00 X0 Z0.2\nG83 Z-1. R0.1 Q0.1 K0.05 F0.005\nG80\n"
+            "G83 Z-1. R0.1 I0.1 J0.02 K0.05 F0.005\nG80\nM30\n%\n")
+    out = convert(tmp_path, text, "haas-lathe", "metric")
+    assert "G83 Z-25.4 R2.54 Q2.54 K1.27 F0.127\n" in out
+    assert "G83 Z-25.4 R2.54 I2.54 J0.508 K1.27 F0.127\n" in out
+    fanuc = "%\nO1\nG20 G99\nG00 X0 Z0.2\nG83 Z-1. R0.1 Q1000 K3 F0.005\nG80\nM30\n%\n"
+    assert " K3 " in convert(tmp_path, fanuc, "fanuc-lathe", "metric")
+
+
 HAAS_ROUGHING = ("%\nO1\nG20 G99\nG00 X2.1 Z0.1\nG71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n"
                  "N10 G00 X1.\nG01 Z-1.5 F0.005\nN20 X2.1\nG70 P10 Q20\nM30\n%\n")
 

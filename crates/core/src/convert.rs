@@ -8538,11 +8538,20 @@ fn cycle_table(
                     set(b"J", number);
                 }
             }
+            // a Haas lathe's G83: I J K the first, reducing and least peck depths, lengths,
+            // with or without I and J (Haas lathe operator's manual, G83 "End face peck
+            // drilling": K the optional minimum depth of cut); no other of its drilling
+            // cycles reads K, and none counts repeats in it (review 55a F8: `G83 Z-1. R0.1
+            // Q0.1 K0.05` kept K unscaled under a change of units, as a FANUC count)
+            83 if lathe && family == Family::MacroB && haas == Some(true) => set(b"K", length),
             // a lathe's drilling cycles G83-G89: K the number of repeats (FANUC 0i-TF,
             // "Canned cycle for drilling": "K: number of repeats"), but where the block writes
-            // I or J (Haas lathe G83: I J K the first, reducing and least peck depths)
+            // I or J (the Haas form above)
             83..=89
-                if lathe && family == Family::MacroB && !(g == 83 && (has(b'I') || has(b'J'))) =>
+                if lathe
+                    && family == Family::MacroB
+                    && haas != Some(true)
+                    && !(g == 83 && (has(b'I') || has(b'J'))) =>
             {
                 set(b"K", number);
             }
