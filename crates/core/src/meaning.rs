@@ -124,6 +124,15 @@ impl Meanings {
         self.given != 0
     }
 
+    /// Whether `letter` is a count or an angle of a cycle's table in this block (`G81 K3`
+    /// repeats, `G73 R3` divisions, Haas `G76 A60`, `G71 R1`, `G84 J2`): a number the control
+    /// reads whole, which the converter keeps as written -- unlike an angle of the meaning
+    /// table itself (`G68 R45`, [`Meanings::table_others`]), which a FANUC reads in 0.001 deg.
+    /// The one rule the checker (`Checker::selector`) and the diff's reader (ncread.rs) ask.
+    pub fn cycle_count(&self, letter: u8) -> bool {
+        self.role(letter) == Some(Role::Other) && self.others & 1 << (letter - b'A') == 0
+    }
+
     /// The role a code of the block gives `letter` (upper case), if any.
     pub fn role(&self, letter: u8) -> Option<Role> {
         letter

@@ -505,7 +505,6 @@ impl Reader {
             &ms,
             &spans,
         );
-        let table_others = meanings.table_others();
         let mut roles = meanings.roles;
         let cycle_roles = roles;
         let radius = self.settings.modal.arc_radius;
@@ -570,10 +569,7 @@ impl Reader {
             self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66);
         let counts = (0..26usize)
             .filter(|&i| {
-                !macro_call
-                    && roles[i] == Some(Role::Other)
-                    && cycle_roles[i] == roles[i]
-                    && table_others & 1 << i == 0
+                !macro_call && cycle_roles[i] == roles[i] && meanings.cycle_count(b'A' + i as u8)
             })
             .fold(0u32, |bits, i| bits | 1 << i);
         let absolute = gs.contains(&53);

@@ -404,15 +404,11 @@ impl Checker {
 
     /// Whether `letter` is a selector or a count in this block: a selector (G05.1 Q1) is a
     /// whole number, whatever the control does with a length; so is a count or an angle of a
-    /// cycle's table (`G81 K3` repeats, `G73 R3` divisions, Haas `G76 A60`, `G71 R1`,
-    /// `G84 J2`), which the converter keeps as written -- unlike an angle of the meaning table
-    /// (`G68 R45`), which a FANUC reads in 0.001 deg. Decided by the role and the table bit
-    /// the block's codes give the letter, both in a word's key ([`Checker::format_key`]).
+    /// cycle's table ([`crate::meaning::Meanings::cycle_count`]). Decided by the role and the
+    /// table bit the block's codes give the letter, both in a word's key
+    /// ([`Checker::format_key`]).
     fn selector(&self, letter: u8) -> bool {
-        let role = self.meanings.role(letter);
-        let table =
-            letter.is_ascii_uppercase() && self.meanings.table_others() & 1 << (letter - b'A') != 0;
-        role == Some(Role::Selector) || (role == Some(Role::Other) && !table)
+        self.meanings.role(letter) == Some(Role::Selector) || self.meanings.cycle_count(letter)
     }
 
     /// How a number of `letter` written without a point is read in this block: a count or a
