@@ -718,3 +718,50 @@ def test_every_shops_program_reads_on_its_family_profile():
     assert incomplete <= expected, sorted(incomplete - expected)
     # every true error listed is still found (the list does not go stale)
     assert incomplete >= TRUE_ERRORS
+
+
+# Every error `check` finds on the shops folder, by program, as docs/check.md's two tables
+# ("Check errors on the shops' CAM-posted programs" and the one of the programs that are not
+# CAM-posted) give them, each with its reason there. A change of a rule that adds, drops or moves
+# an error here must say why in those tables: the test keeps them from going stale.
+SHOPS_ERRORS: dict[str, dict[str, int]] = {
+    "adacunha__Public__PanelFinal.nc": {"TG403": 213, "TG601": 1},
+    "BrianHooper__PostPostProcess__1001.nc": {"TG403": 96},
+    "EloiStree__2020_05_09_ShareFusion360__1001.nc": {"TG403": 36},
+    "k-ishigaki__gcode-optimizer__1001.cnc": {"TG405": 70, "TG403": 20},
+    "ronaldbroth__CNXY-M2-161609G-LCD__O1001.nc": {"TG403": 4},
+    "czongwu__NcUploader__1.NC": {"TG306": 3},
+    "DangaRPT__CNC_Prog__test.mpf": {"TG306": 2},
+    "FGodoy27__CNC-Proyect__1001.nc": {"TG100": 1},
+    "LMHDPRO__MAC__Titan1M_1001_NoEdit.nc": {"TG121": 1, "TG412": 7},
+    "M1l4nkaa__Tundecsap__1001.nc": {"TG304": 1},
+    "GCodeProjects__GCodeWorkShop__FLANGE.nc": {"TG100": 1},
+    "krockfr__gcode_edi__test.mpf": {"TG114": 1},
+    "mikemacfarland__Doosan-Lynx-300__O0024": {"TG100": 1, "TG118": 1},
+    "mikemacfarland__Doosan-Lynx-300__O2031": {"TG404": 2},
+    "mikemacfarland__Doosan-Lynx-300__O2101": {"TG404": 1},
+    "mikemacfarland__Doosan-Lynx-300__O2451": {"TG404": 2},
+    "mikemacfarland__Doosan-Lynx-300__O3001": {"TG404": 1},
+    "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP":
+        {"TG404": 3425},
+    "SafetyDav3__cnc-sprayer__CIRCLE.NC": {"TG100": 1},
+    "SafetyDav3__cnc-sprayer__WASHER.NC": {"TG100": 1},
+    "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC": {"TG118": 2},
+}
+
+
+@needs_shops
+def test_the_errors_on_the_shops_folder_are_the_ones_docs_check_gives_reasons_for():
+    shops = shops_module()
+    seen: dict[str, dict[str, int]] = {}
+    for name, family, description in shops.entries(SHOPS):
+        profile = shops.profile_for(family, description)
+        if profile is None:
+            continue
+        counts: dict[str, int] = {}
+        for finding in reading_errors(name, profile)[2]:
+            if finding.severity == "error":
+                counts[finding.rule] = counts.get(finding.rule, 0) + 1
+        if counts:
+            seen[name] = counts
+    assert seen == SHOPS_ERRORS
