@@ -246,7 +246,14 @@ def test_two_spindle_codes_in_a_block_are_refused_where_the_ladder_picks(profile
     meets the work, with the reason."""
     hits = fired(program, profile, "TG304")
     assert [(severity, at) for severity, at, _ in hits] == [("error", line)]
-    assert "are both in modal group spindle; no source says which the control takes" in hits[0][2]
+    assert "are both in modal group spindle; " in hits[0][2]
+    assert hits[0][2].endswith(
+        "so whether and which way the spindle turns for the cuts after it is not known")
+    # the reason by who decodes the codes: a SINUMERIK's NC decodes its spindle's M functions
+    # itself, no ladder or PLC does (review 55a F3)
+    assert ("ladder" in hits[0][2]) is profile.startswith("fanuc")
+    if profile == "sinumerik-840d":
+        assert "the NC decodes the spindle's M functions itself" in hits[0][2]
     assert fired(program, profile, "TG308") == []
     # the coolant's group stays a warning on the same controls (the Okuma's: its own test)
     if not profile.startswith("okuma"):
@@ -263,12 +270,69 @@ def test_two_spindle_codes_in_a_block_are_refused_where_the_ladder_picks(profile
     # drives the milling tool as M03-M05 drive the main spindle (review 55a F1)
     ("okuma-lathe", "$T.MIN%\nO1\nG0 X100 Z10\nM13 M14\nM02\n", "TG304"),
     ("okuma-lathe", "$T.MIN%\nO1\nG0 X100 Z10\nM12 M13\nM02\n", "TG304"),
+    # SINUMERIK: M3 M4 M5 M19 M70 are auxiliary function group 2 by default (808D Parameter
+    # Manual, AUXFU_PREDEF_GROUP; review 55a F2)
+    ("sinumerik-840d", sinumerik("S1000 M3 M19"), "TG304"),
+    ("sinumerik-840d", sinumerik("S1000 M3 M70"), "TG304"),
+    ("sinumerik-840d", sinumerik("M70 M4"), "TG304"),
+    ("sinumerik-840d", sinumerik("M5 M70"), "TG308"),
+    ("sinumerik-840d", sinumerik("M5 M19"), "TG308"),
+    ("sinumerik-840d", sinumerik("M1=3 M1=19"), "TG304"),
+    ("sinumerik-840d", sinumerik("M1=5 M1=70"), "TG308"),
+    # the plain address is the master spindle's, spindle 1 on a one-spindle machine (review 55a F7)
+    ("sinumerik-840d", sinumerik("S1000 M3 M1=4"), "TG304"),
+    ("sinumerik-840d", sinumerik("M1=4 M3"), "TG304"),
+    ("sinumerik-840d", sinumerik("M5 M1=19"), "TG308"),
 ])
 def test_a_spindle_pair_is_refused_only_where_one_code_turns_it(profile, program, rule):
     other = "TG308" if rule == "TG304" else "TG304"
     assert [s for s, *_ in fired(program, profile, rule)] == (
         ["error"] if rule == "TG304" else ["warning"])
     assert fired(program, profile, other) == []
+
+
+def test_the_plain_and_spindle_1s_codes_name_the_master_spindle_setting():
+    """A SINUMERIK's plain M function is the master spindle's (840D sl Function Manual Basic
+    Functions, H2, address extension 0), which machine data 20090 names, spindle 1 on a
+    one-spindle machine: the message names that setting; spindle 2's codes beside plain ones
+    are another spindle's on such a machine, and no conflict."""
+    hits = fired(sinumerik("S1000 M3 M1=4"), "sinumerik-840d", "TG304")
+    assert "20090 SPIND_DEF_MASTER_SPIND" in hits[0][2]
+    for quiet in ("S1000 M3 M2=4", "M2=5 M4", "M3 M1=3", "M1=3 M2=4 M3"):
+        assert not {r for r, *_ in found(sinumerik(quiet), "sinumerik-840d")} & {
+            "TG304", "TG308"}, quiet
+
+
+# (each built-in profile's form of a block, its start and its end)
+def lathe(body: str) -> str:
+    return f"%\nO1000\nG00 X0 Z10.\n{body}\nM30\n%\n"
+
+
+SPINDLE_PAIR_FORMS = {
+    "fanuc-mill": fanuc, "fanuc-lathe": lathe, "fanuc-lathe-b": lathe, "fanuc-lathe-c": lathe,
+    "haas-mill": fanuc, "haas-lathe": lathe, "linuxcnc": linuxcnc,
+    "sinumerik-840d": lambda body: sinumerik(body.replace("M0", "M")),
+    "okuma-mill": okuma, "okuma-lathe": lambda body: f"$T.MIN%\nO1\nG0 X100 Z10\n{body}\nM02\n",
+    "heidenhain-iso": lambda body: f"%T G71 *\nN10 G00 X+0 Y+0 *\nN20 {body} *\nN30 %T G71 *\n",
+    "iso-mill": lambda body: f"%\nN1 G00 X+0 Y+0\nN2 {body}\nN3 M02\n",
+    "iso-lathe": lambda body: f"%\nN1 G00 X+0 Z+0\nN2 {body}\nN3 M02\n",
+}
+
+
+@pytest.mark.parametrize("profile", sorted(SPINDLE_PAIR_FORMS))
+def test_m03_m04_is_refused_on_every_profile_and_coolant_pairs_warned_where_the_ladder_picks(
+        profile):
+    """The spindle's direction both ways in one block is TG304 on every profile (the
+    profile's meaning keys `spindle-cw`, `spindle-ccw` say M03 and M04 turn it); M08 M09 stay
+    TG308 where no source says the control alarms (FANUC, SINUMERIK), TG304 where one does."""
+    form = SPINDLE_PAIR_FORMS[profile]
+    pair = [(r, s) for r, s, *_ in found(form("M03 M04"), profile) if r in ("TG304", "TG308")]
+    assert pair == [("TG304", "error")], profile
+    coolant = {(r, s) for r, s, *_ in found(form("M08 M09"), profile)} & {
+        ("TG304", "error"), ("TG308", "warning")}
+    unsourced = profile.split("-")[0] in ("fanuc", "sinumerik", "okuma")
+    if profile != "okuma-mill":  # (its M09 is a group of its own: List of M Codes)
+        assert coolant == {("TG308", "warning") if unsourced else ("TG304", "error")}, profile
 
 
 @pytest.mark.parametrize("block", ["M138 M139", "M73 M74", "M130(A.PNG) M131"])

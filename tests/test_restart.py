@@ -2208,6 +2208,20 @@ def test_a_haas_lathe_live_tool_or_c_axis_in_force_refuses_the_restart():
     assert plan(ended, 18, haas).preamble
 
 
+def test_an_okuma_lathe_m_tool_spindle_in_force_refuses_the_restart():
+    """The Okuma lathe's M-tool spindle (List of M Codes: M12 stop, M13 forward, M14
+    reverse) takes the live tool's meaning keys, as haas-lathe's M133-M135: while it turns the
+    preamble cannot restore it, so a restart is refused until its M12; the lathe's C axis
+    codes stay the builder's, so the refusals after a C move stay too."""
+    okuma = load_profile("okuma-lathe")
+    text = ("$T.MIN%\nO1\nG50 S2000\nG00 X100 Z100\nG97 S800 M03\nM13 SB=1000\nG00 X50 Z5\n"
+            "G01 Z-10 F0.1\nG00 X100\n{off}G00 Z100\nM02\n")
+    assert refusal(text.format(off=""), 10, okuma) == (
+        "cannot restart here: M13 (M-tool spindle forward) from line 6 is in force and the "
+        "preamble cannot restore it; restart at or before line 6, or after the M12 that ends it")
+    assert plan(text.format(off="M12\n"), 11, okuma).preamble
+
+
 # -- review 35: the restart's safety faults ---------------------------------------------------
 
 # A fine boring bar's way out (N6-N9: oriented, shifted off the wall, out through the bore),

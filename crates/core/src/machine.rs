@@ -159,6 +159,7 @@ impl Machine {
             pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
             pointed_numbers: spec.control == Control::Haas,
             haas: spec.control == Control::Haas,
+            turning: crate::check::turning_codes(&spec.meanings),
             modal,
         };
         let listed = listed_codes(&spec.meanings, &check).into();

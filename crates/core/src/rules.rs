@@ -232,7 +232,7 @@ rules! {
     ModalGroupConflict = "TG304", Error, "Annex E", Codes, false,
         "two codes of one modal group in a block";
     MCodesOneGroup = "TG308", Warning, "dialect", Codes, false,
-        "two M codes of one modal group in a block (M08 M09, two program stops M00 M30) on a FANUC, SINUMERIK or Okuma OSP, where no source at hand says the control alarms: its ladder (PLC) decides which it takes; a warning, not TG304 (a restart after the block is refused all the same); two codes of a spindle's drive where one turns it (M03 M05) stay TG304";
+        "two M codes of one modal group in a block (M08 M09, two program stops M00 M30) on a FANUC, SINUMERIK or Okuma OSP, where no source at hand says the control alarms or which it takes; a warning, not TG304 (a restart after the block is refused all the same); two codes of a spindle's drive where one turns it (M03 M05, by the profile's meaning keys) stay TG304";
     CodeAlarms = "TG306", Error, "profile", Codes, false,
         "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
     CodeNotInProfile = "TG307", Warning, "profile", Codes, false,

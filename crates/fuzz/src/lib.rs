@@ -260,6 +260,7 @@ fn make_check_config(variant: u8) -> Config {
         },
         pointed_numbers: false,
         haas: false,
+        turning: vec![3, 4],
         modal: ModalSettings {
             reset: vec![1, 17, 40, 21, 80, 90, 94],
             inch: 20,

@@ -417,7 +417,11 @@ impl RestartWalk {
             hints.set_item(*mode, hint.as_str())?;
         }
         d.set_item("mode_hints", hints)?;
-        d.set_item("live_modes", !w.m_modes.is_empty())?;
+        // both the live tool's and the C axis's codes named (haas-lathe): a profile that names
+        // its live tool alone (okuma-lathe's M-tool spindle) keeps the refusals of a lathe
+        // whose C axis codes are the builder's
+        let named = |mode: &str| w.m_modes.iter().any(|m| m.1 == mode);
+        d.set_item("live_modes", named("live tool") && named("C axis"))?;
         d.set_item("oriented", w.oriented)?;
         d.set_item("oriented_since", w.oriented_since())?;
         d.set_item(

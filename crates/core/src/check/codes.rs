@@ -59,7 +59,12 @@ impl Checker {
                         .filter(|&&(other, _, _)| other == extension)
                         .map(|&(_, code, j)| (code, j))
                         .collect();
+                    let before = same.len();
                     self.modal_group(words, &mut same, i, code, line);
+                    // spindle 1's, none of its group before: against the plain codes
+                    if extension == 1 && same.len() > before {
+                        self.master_spindle(words, &groups, i, code, line);
+                    }
                     spindles.push((extension, code, i));
                 }
                 continue;
@@ -77,7 +82,17 @@ impl Checker {
             };
             if facts.modal {
                 let code = CodeRef::Whole(w.letter, number);
+                let before = groups.len();
                 self.modal_group(words, &mut groups, i, code, line);
+                // (a SINUMERIK's spindle 1 codes before it, `M1=4 M3`: most blocks have none)
+                if !spindles.is_empty() && groups.len() > before {
+                    let first: Vec<(CodeRef, usize)> = spindles
+                        .iter()
+                        .filter(|&&(extension, _, _)| extension == 1)
+                        .map(|&(_, code, j)| (code, j))
+                        .collect();
+                    self.master_spindle(words, &first, i, code, line);
+                }
             }
         }
         self.groups = groups;
@@ -297,34 +312,115 @@ impl Checker {
         match found {
             Some((other, _)) if per_word && distance(other) && distance(code) => {}
             Some((other, j)) if other != code => {
-                let group = group_of_code(&self.config, code).to_string();
-                let m_code = matches!(code, CodeRef::Whole(b'M', _));
-                let unsourced = m_code && self.m_group_unsourced();
-                let spindle = unsourced && turns_a_spindle(&group, &[other, code]);
-                // (in the block's order: `M03 M05` names M03 first)
-                let mut message = format!(
-                    "{} and {} are both in modal group {group}",
-                    words[j].token(),
-                    words[i].token(),
-                );
-                if spindle {
-                    message.push_str(
-                        "; no source says which the control takes, so whether and which way the \
-                         spindle turns for the cuts after it is not known",
-                    );
-                }
-                self.conflict_at
-                    .get_or_insert_with(|| (line, message.clone()));
-                let rule = if unsourced && !spindle {
-                    Rule::MCodesOneGroup
-                } else {
-                    Rule::ModalGroupConflict
-                };
-                self.report(rule, message, line, words[i].column);
+                self.group_conflict(words, (other, j), (code, i), line, false);
             }
             Some(_) => {}
             None => groups.push((code, i)),
         }
+    }
+
+    /// A SINUMERIK's M function of spindle 1 (`M1=4`) against the block's plain ones of its
+    /// group (`others`), or a plain one against spindle 1's: the plain address is the master
+    /// spindle's (Function Manual Basic Functions, H2 "Auxiliary function outputs to PLC",
+    /// address extension: none, or 0, refers to the master spindle of the channel), which
+    /// machine data 20090 SPIND_DEF_MASTER_SPIND names (840D sl W1: `MD20090 = 2` makes
+    /// spindle 2 the master). So where it is spindle 1, as on a one-spindle machine, `M3 M1=4`
+    /// turns one spindle both ways: the two conflict as `M3 M4` do,
+    /// the message naming that setting. Spindle 2's (`M3 M2=4`) is another spindle on such a
+    /// machine, and no conflict (docs/dialects.md).
+    fn master_spindle(
+        &mut self,
+        words: &[Word<'_>],
+        others: &[(CodeRef, usize)],
+        i: usize,
+        code: CodeRef,
+        line: usize,
+    ) {
+        let mine = group_of_code(&self.config, code);
+        let found = others
+            .iter()
+            .find(|&&(other, _)| {
+                matches!(other, CodeRef::Whole(b'M', _))
+                    && other != code
+                    && group_of_code(&self.config, other) == mine
+            })
+            .copied();
+        if let Some(other) = found {
+            self.group_conflict(words, other, (code, i), line, true);
+        }
+    }
+
+    /// TG304, or TG308 where [`Checker::m_group_unsourced`], for two codes of one modal group
+    /// in a block: word `j`'s code `other`, then word `i`'s `code` (`master`: a plain M
+    /// function and one of spindle 1's, [`Checker::master_spindle`]). Where one of the two
+    /// turns a spindle (the profile's meaning keys, [`turning_codes`]) it stays TG304 with the
+    /// reason: whether and which way the spindle turns for the cuts after the block is not
+    /// known, which decides how the tool meets the work (review 51 F9); a pair that turns
+    /// nothing (`M05 M19`) stays TG308 (review 55a F6).
+    fn group_conflict(
+        &mut self,
+        words: &[Word<'_>],
+        (other, j): (CodeRef, usize),
+        (code, i): (CodeRef, usize),
+        line: usize,
+        master: bool,
+    ) {
+        let group = group_of_code(&self.config, code).to_string();
+        let m_code = matches!(code, CodeRef::Whole(b'M', _));
+        let unsourced = m_code && self.m_group_unsourced();
+        let spindle = unsourced && (self.turns_a_spindle(other) || self.turns_a_spindle(code));
+        // (in the block's order: `M03 M05` names M03 first)
+        let mut message = format!(
+            "{} and {} are both in modal group {group}",
+            words[j].token(),
+            words[i].token(),
+        );
+        if master {
+            message.push_str(
+                " of one spindle where the master spindle, the plain M function's, is spindle 1 \
+                 (machine data 20090 SPIND_DEF_MASTER_SPIND; a one-spindle machine's)",
+            );
+        }
+        if spindle {
+            message.push_str("; ");
+            message.push_str(self.spindle_pair_reason());
+            message.push_str(
+                ", so whether and which way the spindle turns for the cuts after it is not known",
+            );
+        }
+        self.conflict_at
+            .get_or_insert_with(|| (line, message.clone()));
+        let rule = if unsourced && !spindle {
+            Rule::MCodesOneGroup
+        } else {
+            Rule::ModalGroupConflict
+        };
+        self.report(rule, message, line, words[i].column);
+    }
+
+    /// Why two codes of a spindle's group leave its drive unknown, by who decodes them: a
+    /// FANUC hands M03-M05 to the builder's PMC ladder (0i-F/30i-B Operator's Manuals,
+    /// "Auxiliary function"), a SINUMERIK's NC decodes its spindle's M functions itself
+    /// (Programming Manual Fundamentals, "M functions"; auxiliary function group 2), and the
+    /// Okuma's List of M Codes gives their group only; none says which of two it takes.
+    fn spindle_pair_reason(&self) -> &'static str {
+        match self.config.family {
+            Family::MacroB => {
+                "the CNC hands them to the builder's PMC ladder and no source says which of \
+                 the two it takes"
+            }
+            Family::Sinumerik => {
+                "the NC decodes the spindle's M functions itself and no source says which of \
+                 the two it takes or whether it alarms"
+            }
+            _ => "no source says which of the two the control takes",
+        }
+    }
+
+    /// Whether `code` turns a spindle: an M code whose meaning key in the profile says so
+    /// ([`Config::turning`]).
+    fn turns_a_spindle(&self, code: CodeRef) -> bool {
+        matches!(code, CodeRef::Whole(b'M', n) if self.config.turning.contains(&n))
     }
 
     /// Whether two M codes of one modal group in a block are TG308, a warning, rather than
@@ -550,22 +646,30 @@ pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
         .map_or("", |c| c.duration.as_str())
 }
 
-/// Whether two codes of one modal group in a block leave a spindle's drive unknown: the
-/// group drives a spindle (the main spindle's `spindle` of every profile, the Okuma lathe's
-/// `M-tool spindle`, M12-M14 of its List of M Codes) and one of them turns it (M03/M04, as the
-/// modal state reads them, or the M-tool spindle's M13/M14). Such a pair stays TG304 where
-/// no source says what the control does with two M codes of a group (review 51 F9: the
-/// project refuses what decides how the tool meets the work); a stop beside an orientation
-/// (`M05 M19`) turns nothing, and stays TG308 there (review 55a F6).
-fn turns_a_spindle(group: &str, codes: &[CodeRef]) -> bool {
-    let turning: &[i64] = match group {
-        "spindle" => &[3, 4],
-        "M-tool spindle" => &[13, 14],
-        _ => return false,
-    };
-    codes
+/// The meaning keys of a code that turns a spindle (docs/profiles.md, "Code meanings"): the
+/// main spindle's `spindle-cw` and `spindle-ccw` (M03, M04 of every dialect profile),
+/// HEIDENHAIN's M13 and M14 (`spindle-cw-coolant-on`, `spindle-ccw-coolant-on`), and a
+/// lathe's live tool (`live-tool-cw`, `live-tool-ccw`: the Okuma's M-tool spindle M13 M14,
+/// Haas's M133 M134). The profile says a code's meaning; a profile of your own that keys its
+/// codes so is read the same way.
+const TURNING_KEYS: [&str; 6] = [
+    "spindle-cw",
+    "spindle-ccw",
+    "spindle-cw-coolant-on",
+    "spindle-ccw-coolant-on",
+    "live-tool-cw",
+    "live-tool-ccw",
+];
+
+/// The M codes of a profile's own list (`meanings`: the code, `M03`, its meaning key and its
+/// function, [`crate::machine::MachineSpec::meanings`]) that turn a spindle ([`TURNING_KEYS`]),
+/// by number: compiled once into [`Config::turning`], asked where two codes of a group meet.
+pub fn turning_codes(meanings: &[(String, String, String)]) -> Vec<i64> {
+    meanings
         .iter()
-        .any(|c| matches!(c, CodeRef::Whole(b'M', n) if turning.contains(n)))
+        .filter(|(_, key, _)| TURNING_KEYS.contains(&key.as_str()))
+        .filter_map(|(code, ..)| code.strip_prefix('M')?.parse().ok())
+        .collect()
 }
 
 fn group_of_code(config: &Config, code: CodeRef) -> &str {
@@ -601,8 +705,10 @@ mod tests {
     /// Extended M codes of one extension are one spindle's (Fundamentals, "Extended
     /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it conflict as
     /// `M3 M4` do (TG304: the spindle's group is refused, review 51 F9; a SINUMERIK's other
-    /// groups are TG308); codes of two extensions, or a plain code beside an extended one
-    /// (whether the plain address is spindle 1 is machine data), are not.
+    /// groups are TG308); codes of two extensions are not. A plain code is the master
+    /// spindle's (machine data 20090), spindle 1 on a one-spindle machine: beside one of
+    /// spindle 1's it conflicts, naming that setting (review 55a F7); beside spindle 2's it
+    /// does not.
     #[test]
     fn one_spindles_extended_m_codes_are_one_modal_group() {
         let sinumerik = || of_family(Family::Sinumerik);
@@ -631,13 +737,140 @@ mod tests {
         );
         for quiet in [
             "M1=3 M2=4",
-            "M3 M1=4",
-            "M1=4 M4",
+            "M3 M2=4",
+            "M2=4 M3",
+            "M3 M1=3",
             "M1=3 M1=3",
             "M1=3 M2=3 M3=5",
         ] {
             assert_eq!(found(&format!("G0 X0\n{quiet}")), [], "{quiet}");
         }
+        // the plain code beside spindle 1's, in either order: one spindle on a machine whose
+        // master spindle is spindle 1, as a one-spindle machine's is
+        assert_eq!(found("G0 X0\nM3 M1=4"), [(Rule::ModalGroupConflict, 3, 4)]);
+        assert_eq!(found("G0 X0\nM1=4 M3"), [(Rule::ModalGroupConflict, 3, 6)]);
+        // each word once: M1=3 against the plain M5, M1=4 against spindle 1's M1=3
+        assert_eq!(
+            found("G0 X0\nM5 M1=3 M1=4"),
+            [
+                (Rule::ModalGroupConflict, 3, 4),
+                (Rule::ModalGroupConflict, 3, 9)
+            ]
+        );
+        let master = findings(
+            sinumerik(),
+            &program("G0 X0\nM3 M1=4"),
+            Rule::ModalGroupConflict,
+        );
+        assert_eq!(
+            master[0].message,
+            "M3 and M1=4 are both in modal group spindle of one spindle where the master \
+             spindle, the plain M function's, is spindle 1 (machine data 20090 \
+             SPIND_DEF_MASTER_SPIND; a one-spindle machine's); the NC decodes the spindle's M functions \
+             itself and no source says which of the two it takes or whether it alarms, so \
+             whether and which way the spindle turns for the cuts after it is not known"
+        );
+        // a pair that turns nothing (M5 beside spindle 1's orientation): TG308, naming it
+        let mut oriented = sinumerik();
+        oriented.facts.m_codes[19] = oriented.facts.m_codes[5].clone();
+        let stop = findings(
+            oriented.clone(),
+            &program("G0 X0\nM5 M1=19"),
+            Rule::MCodesOneGroup,
+        );
+        assert_eq!((stop.len(), stop[0].line, stop[0].column), (1, 3, 4));
+        assert!(
+            stop[0]
+                .message
+                .ends_with("(machine data 20090 SPIND_DEF_MASTER_SPIND; a one-spindle machine's)"),
+            "{}",
+            stop[0].message
+        );
+        assert_eq!(
+            at(oriented, "G0 X0\nM5 M1=19", Rule::ModalGroupConflict),
+            []
+        );
+    }
+
+    /// Which codes turn a spindle is the profile's meaning keys, compiled once
+    /// ([`super::super::turning_codes`]), not a group's name: a pair of a group where one turns
+    /// a spindle is TG304 on a FANUC, SINUMERIK or Okuma (the Okuma lathe's M-tool spindle
+    /// M12-M14 as the main spindle's M03-M05, review 55a F1); a pair that turns nothing (a
+    /// stop beside an orientation, `M05 M19`) is TG308 (review 55a F6); a profile that keys
+    /// no code so leaves every pair of its M codes TG308.
+    #[test]
+    fn the_profiles_meaning_keys_say_which_codes_turn_a_spindle() {
+        let meanings = |list: &[(&str, &str)]| -> Vec<(String, String, String)> {
+            list.iter()
+                .map(|&(code, key)| (code.to_string(), key.to_string(), String::new()))
+                .collect()
+        };
+        assert_eq!(
+            super::super::turning_codes(&meanings(&[
+                ("M03", "spindle-cw"),
+                ("M04", "spindle-ccw"),
+                ("M05", "spindle-stop"),
+                ("M19", "spindle-orient"),
+                ("M13", "live-tool-cw"),
+                ("M134", "live-tool-ccw"),
+                ("M135", "live-tool-stop"),
+                ("01", "linear-interpolation"),
+                ("M08", "coolant-on"),
+            ])),
+            [3, 4, 13, 134]
+        );
+        let okuma = || {
+            let mut config = of_family(Family::Okuma);
+            for m in [12, 13, 14] {
+                config.facts.m_codes[m] =
+                    super::super::testing::code(super::super::Status::Assigned, "M-tool spindle");
+            }
+            config.facts.m_codes[19] = config.facts.m_codes[5].clone();
+            config.turning = vec![3, 4, 13, 14];
+            config
+        };
+        for pair in ["M13 M14", "M12 M13", "M14 M12", "M03 M19", "M19 M04"] {
+            let found = findings(
+                okuma(),
+                &program(&format!("G0 X0\n{pair}")),
+                Rule::ModalGroupConflict,
+            );
+            assert_eq!(found.len(), 1, "{pair}");
+            assert_eq!((found[0].line, found[0].column), (3, 5), "{pair}");
+            assert!(
+                found[0].message.ends_with(
+                    "no source says which of the two the control takes, so whether and which \
+                     way the spindle turns for the cuts after it is not known"
+                ),
+                "{}",
+                found[0].message
+            );
+        }
+        for quiet in ["M05 M19", "M19 M05", "M12 M05"] {
+            assert_eq!(
+                at(
+                    okuma(),
+                    &format!("G0 X0\n{quiet}"),
+                    Rule::ModalGroupConflict
+                ),
+                [],
+                "{quiet}"
+            );
+        }
+        assert_eq!(
+            at(okuma(), "G0 X0\nM05 M19", Rule::MCodesOneGroup),
+            [(3, 5)]
+        );
+        // a profile that keys none of its codes: its spindle pair is a warning like any other
+        let unkeyed = Config {
+            turning: Vec::new(),
+            ..of_family(Family::MacroB)
+        };
+        assert_eq!(
+            at(unkeyed.clone(), "G0 X0\nM03 M04", Rule::MCodesOneGroup),
+            [(3, 5)]
+        );
+        assert_eq!(at(unkeyed, "G0 X0\nM03 M04", Rule::ModalGroupConflict), []);
     }
 
     /// An extended M code's value is "an arithmetic expression" (Fundamentals, "Extended
@@ -1051,10 +1284,30 @@ mod tests {
             );
             assert_eq!(spindle.len(), 1, "{family:?}");
             assert_eq!((spindle[0].line, spindle[0].column), (3, 5), "{family:?}");
+            // the reason by who decodes the spindle's codes (review 55a F3: a SINUMERIK's NC
+            // decodes them, no ladder does)
+            let reason = match family {
+                Family::MacroB => "the CNC hands them to the builder's PMC ladder",
+                Family::Sinumerik => "the NC decodes the spindle's M functions itself",
+                _ => "no source says which of the two the control takes",
+            };
             assert!(
-                spindle[0].message.starts_with(
-                    "M03 and M05 are both in modal group spindle; no source says which"
+                spindle[0].message.starts_with(&format!(
+                    "M03 and M05 are both in modal group spindle; {reason}"
+                )),
+                "{}",
+                spindle[0].message
+            );
+            assert!(
+                spindle[0].message.ends_with(
+                    "so whether and which way the spindle turns for the cuts after it is not known"
                 ),
+                "{}",
+                spindle[0].message
+            );
+            assert_eq!(
+                spindle[0].message.contains("ladder"),
+                family == Family::MacroB,
                 "{}",
                 spindle[0].message
             );

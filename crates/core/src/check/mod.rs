@@ -33,6 +33,7 @@ use crate::wordformat::WordFormat;
 use formats::FormatTable;
 
 pub use crate::word::{Role, Word};
+pub use codes::turning_codes;
 pub use drawn::Drawn;
 pub use link::tv_message;
 pub use motion::in_one_quadrant;
@@ -239,6 +240,9 @@ pub struct Config {
     pub pointed_numbers: bool,
     /// A Haas control: its own wording where it differs from FANUC's (a read-only variable).
     pub haas: bool,
+    /// The M codes that turn a spindle, by their meaning key in the profile
+    /// ([`turning_codes`]): the one place the checker learns it.
+    pub turning: Vec<i64>,
     pub modal: ModalSettings,
 }
 

@@ -22,7 +22,7 @@ fn format(address: u8, before: u32, after: u32, signed: bool, decimal: bool) -> 
     }
 }
 
-fn code(status: Status, duration: &str) -> Option<Code> {
+pub(super) fn code(status: Status, duration: &str) -> Option<Code> {
     Some(Code {
         status,
         duration: duration.into(),
@@ -174,6 +174,8 @@ pub(super) fn iso_mill() -> Config {
         pqr: [Role::Parameter; 3],
         pointed_numbers: false,
         haas: false,
+        // M03 M04 keyed `spindle-cw`, `spindle-ccw`, as every dialect profile keys them
+        turning: vec![3, 4],
         modal: ModalSettings {
             reset: vec![1, 17, 40, 71, 80, 90, 94],
             inch: 70,
