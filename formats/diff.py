@@ -43,7 +43,9 @@ A difference is accepted within ``tolerance`` resolution steps of **B's** word f
 target: the received or converted program), and reported with its size in those steps. In G91
 the axis words of both programs are compared as positions: the difference carried from the
 words before is added, so that a conversion that keeps the exact absolute path (and may change an
-increment by a step to do so) compares the same, and a step lost on the way does not.
+increment by a step to do so) compares the same, and a step lost on the way does not. A code,
+a selector and a number a cycle's table makes a count (``G81 ... K3``, three holes; ``G70 P60``)
+are compared exactly, with no steps: a length format's step is no unit of a count.
 
 Blocks are paired by sequence number or by position (:class:`DiffOptions.pair`):
 

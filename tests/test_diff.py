@@ -201,14 +201,53 @@ def test_motion_follows_a_fanuc_cycle_s_repeat_count(tmp_path):
 
 def test_a_cycle_s_repeat_count_is_compared_as_a_count(tmp_path):
     """The diff's reader reads a FANUC cycle's K as the count it is (0i-MF, "Canned cycle"),
-    whole, as the checker and the converter read it: `K3` against `K4` is one repeat more,
-    1000 steps of K's format, not 0.001 (one step: a tolerance of a step accepted it)."""
+    whole, as the checker and the converter read it: `K3` against `K4` is one repeat more, a
+    count compared exactly, as a code's argument is. No tolerance accepts it (a tolerance is in
+    steps of a length's format, which count no holes), and no steps are said (review 55a, F5:
+    "+1, +1000 steps", and "largest difference: K 1000 steps")."""
     head = "%\nO2014\nG21 G17 G90\nG54 G00 X0 Y0 S2000 M03\n"
     a = write(tmp_path, "a.nc", head + "G91 G99 G81 X10. Z-5. R-3. K3 F100.\nG80\nM30\n%\n")
     b = write(tmp_path, "b.nc", head + "G91 G99 G81 X10. Z-5. R-3. K4 F100.\nG80\nM30\n%\n")
-    found, _ = differences(a, b, tolerance=Decimal(1))
-    assert [(d.a.line, d.details()) for d in found] == [(5, ["K3 -> K4 (+1, +1000 steps)"])]
+    for tolerance in (Decimal(1), Decimal(1000)):
+        found, summary = differences(a, b, tolerance=tolerance)
+        assert [(d.a.line, d.details()) for d in found] == [(5, ["K3 -> K4"])]
+        assert [c.steps for c in found[0].words] == [None] and summary.largest == {}
     assert differences(a, a)[0] == []
+    # a hole-position block repeating the cycle counts by its K too (review 55a's k3.nc)
+    c = write(tmp_path, "c.nc", head + "G91 G99 G81 X10. Z-5. R-3. K3 F100.\nX10. K3\n"
+              "G80\nM30\n%\n")
+    d = write(tmp_path, "d.nc", head + "G91 G99 G81 X10. Z-5. R-3. K3 F100.\nX10. K4\n"
+              "G80\nM30\n%\n")
+    result = run("diff", "-p", "fanuc-mill", "--tolerance", "1", c, d)
+    assert result.exit_code == 1, result.output
+    lines = result.output.splitlines()
+    assert lines[:3] == [f"{c}:6: changed: X10. K3", f"{d}:6:     is: X10. K4", "    K3 -> K4"]
+    assert lines[3] == f"{c} and {d} differ: 1 block changed (9 blocks paired by position)"
+    result = run("diff", "-p", "fanuc-mill", "--format", "json", c, d)
+    [word] = json.loads(result.output)["differences"][0]["words"]
+    assert word == {"kind": "changed", "address": "K", "a": "K3", "a_value": "3", "b": "K4",
+                    "b_value": "4"}
+
+
+def test_a_peck_depth_k_is_one_reading_for_the_words_and_the_motion(tmp_path):
+    """Review 55a, F4: a G73/G83 that writes I or J takes K as its least peck depth (the Haas
+    form), no repeat count, by the checker's one rule (`Meanings::cycle_count`); the modal
+    state's own reading asks it too, so `diff --motion` says K is a length (one step of K's
+    format) and follows no count of holes (before: X 20 mm -> 30 mm, three holes). The
+    position after the block is then not known, as the checker leaves it."""
+    head = "%\nO2020\nG21 G17 G90 G54\nG00 X0 Y0 Z5. S1000 M03\n"
+    block = "G91 G99 G83 X10. Z-5. R-3. I1. J0.5 K{} F100.\n"
+    tail = "G90 G80\nM30\n%\n"
+    a = write(tmp_path, "a.nc", head + block.format(2) + tail)
+    b = write(tmp_path, "b.nc", head + block.format(3) + tail)
+    found, _ = differences(a, b, motion=True)
+    assert [(d.a.line, d.details()) for d in found] == [(5, ["K2 -> K3 (+0.001 mm, +1 step)"])]
+    # without I and J the same K is the FANUC's count: three holes, X 30 mm after them
+    c = write(tmp_path, "c.nc", head + block.format(2).replace(" I1. J0.5", "") + tail)
+    d = write(tmp_path, "d.nc", head + block.format(3).replace(" I1. J0.5", "") + tail)
+    found, _ = differences(c, d, motion=True)
+    assert [(d.a.line, d.details()) for d in found] == [
+        (5, ["K2 -> K3", "then position X 20 mm -> 30 mm"])]
 
 
 # -- errors and the command line ----------------------------------------------------------------
@@ -346,8 +385,8 @@ TURNING = ("%\nO3000\nN10 G21 G99\nN20 T0101\nN30 G00 X30. Z2.\nN40 G71 U2. R0.5
      "P60 is written P060 in the output"),
     ("a sequence number padded", lambda t: t.replace("N70 ", "N070 "),
      "N70 is written N070 in the output"),
-    ("a P block number changed", lambda t: t.replace("G70 P60", "G70 P61"),
-     "P60 converts to 60 but the output P61 reads 61"),
+    # (a number of the cycle's table, read whole: compared exactly, as a code's argument)
+    ("a P block number changed", lambda t: t.replace("G70 P60", "G70 P61"), "P60 -> P61"),
 ])
 def test_verify_holds_every_unchanged_word_to_its_bytes(tmp_path, units, label, alter, message):
     """A word whose role the conversion does not change (codes, counts, block numbers) keeps

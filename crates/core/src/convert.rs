@@ -8352,6 +8352,87 @@ where
     meanings_by_codes(family, haas, lathe, gs, ms, tokens, letters)
 }
 
+/// The meanings the codes of a block give its words (`words` as (letter, number as written))
+/// on a control of `family` (a Haas or not: `haas`) read by `settings` (its lathe, its G
+/// code system), the mill's canned cycle `cycle` in force before it: the
+/// block's G and M codes, and that cycle where the block writes no code of the motion group
+/// (a `G91 X10. K4` repeats a G81 at the next hole, K its repeat count; FANUC 0i-MF "Canned
+/// cycle"; audit 50, B9). The one reading of the checker ([`crate::check::Checker`]'s) and
+/// of the modal state on its own ([`block_counts`]), so that the two count a cycle's
+/// repeats alike (review 55a, F4).
+pub fn block_meanings<'a, I>(
+    settings: &ModalSettings,
+    (family, haas): (Family, bool),
+    cycle: Option<i64>,
+    words: I,
+) -> crate::meaning::Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
+    let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
+    let (mut g, mut m) = (0, 0);
+    for (letter, number) in words.clone().filter(|(l, _)| matches!(l, b'G' | b'M')) {
+        let Some((n, 0)) = crate::meaning::code(number) else {
+            continue;
+        };
+        if letter == b'G' && g < gs.len() {
+            gs[g] = n;
+            g += 1;
+        } else if letter == b'M' && m < ms.len() {
+            ms[m] = n;
+            m += 1;
+        }
+    }
+    let lathe = settings.fanuc_lathe || settings.lap;
+    let motion = gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89));
+    if let Some(code) = cycle.filter(|_| !lathe && !motion && g < gs.len()) {
+        gs[g] = code;
+        g += 1;
+    }
+    // a FANUC lathe's codes of G code system B or C by their system A numbers
+    for n in &mut gs[..g] {
+        *n = settings.read_g(*n);
+    }
+    let system = settings.g_system;
+    let words = words.map(move |(letter, number)| match letter {
+        b'G' => (letter, system.token(number)),
+        _ => (letter, number),
+    });
+    code_meanings_of(family, Some(haas), lathe, &gs[..g], &ms[..m], words)
+}
+
+/// The letters (bit `letter - b'A'`) a block's cycle makes a count ([`block_meanings`],
+/// [`crate::meaning::Meanings::cycle_count`]) among those of its word `tokens` written
+/// without a point, the modal state's own reading (restart, plot, the diff's motion:
+/// [`crate::word::Numbers::block_values`]); `cycle` the one in force before the block. The
+/// control's family and whether it is a Haas are the settings' (a machine's modal settings
+/// and its checker's are one profile's, `machine::Machine::new`).
+/// Only a block with such a word under a cycle, or with G or M codes, is read for them.
+pub fn block_counts(settings: &ModalSettings, cycle: Option<i64>, tokens: &[&[u8]]) -> u32 {
+    let (mut letters, mut pointless) = (0u32, 0u32);
+    for token in tokens {
+        let w = Word::new(token, 0);
+        if w.letter.is_ascii_uppercase() {
+            letters |= 1 << (w.letter - b'A');
+            if !w.point && !w.number.is_empty() {
+                pointless |= 1 << (w.letter - b'A');
+            }
+        }
+    }
+    let codes = 1 << (b'G' - b'A') | 1 << (b'M' - b'A');
+    if pointless & !codes == 0 || (cycle.is_none() && letters & codes == 0) {
+        return 0;
+    }
+    let words = tokens.iter().map(|token| {
+        let w = Word::new(token, 0);
+        (w.letter, w.number)
+    });
+    let meanings = block_meanings(settings, (settings.family, settings.haas), cycle, words);
+    (0..26u8)
+        .filter(|&i| pointless & 1 << i != 0 && meanings.cycle_count(b'A' + i))
+        .fold(0u32, |bits, i| bits | 1 << i)
+}
+
 /// [`code_meanings_of`] of a block with G or M codes, its addresses `letters` (bit
 /// `letter - b'A'`) in hand.
 fn meanings_by_codes<'a, I>(
@@ -10443,6 +10524,77 @@ mod tests {
         same.units = None;
         assert!(run(same, &sub).is_ok());
         assert!(run(fanuc(true), &["G21", "U1. W2.", "M99"]).is_ok());
+    }
+
+    /// A FANUC or Haas control's modal settings, as far as [`block_counts`] asks them.
+    fn macro_b(haas: bool, fanuc_lathe: bool) -> ModalSettings {
+        ModalSettings {
+            reset: vec![0, 17, 90],
+            inch: 20,
+            metric: 21,
+            default_units: Units::Metric,
+            family: Family::MacroB,
+            fanuc_lathe,
+            g80_clears_motion: false,
+            sinumerik_units: false,
+            centre_codes: true,
+            heidenhain: false,
+            lap: false,
+            g92_clamps: false,
+            units_kept_at_end: true,
+            dwell: crate::word::dwell_words(Family::MacroB, fanuc_lathe),
+            arc_radius: b'R',
+            lacks_g: Vec::new(),
+            g_system: Default::default(),
+            haas,
+        }
+    }
+
+    /// Review 55a, F4: the modal state's own reading counts a cycle's repeats by the one rule
+    /// the checker asks (`Meanings::cycle_count` of [`block_meanings`]), the cycle in force
+    /// read into a block of hole positions: a FANUC mill's K without a point is the count,
+    /// but not a G73/G83's K beside I or J (a peck depth), nor a Haas's K (its count is L,
+    /// its G73/G83 K a length), nor a K outside a cycle, nor one a lathe's cycle in force is
+    /// not read into.
+    #[test]
+    fn the_modal_reading_counts_a_cycle_s_k_as_the_checker_does() {
+        let k = 1 << (b'K' - b'A');
+        let counts = |settings: &ModalSettings, cycle: Option<i64>, line: &str| {
+            let tokens: Vec<&[u8]> = line.split(' ').map(str::as_bytes).collect();
+            block_counts(settings, cycle, &tokens) & k
+        };
+        let (fanuc, haas) = (macro_b(false, false), macro_b(true, false));
+        for (cycle, line, counted) in [
+            (None, "G91 G81 X10. Z-5. R-3. K3 F100.", true),
+            (None, "G91 G73 X10. Z-5. R-3. Q1. K3 F100.", true),
+            (None, "G91 G83 X10. Z-5. R-3. I1. J0.5 K2 F100.", false),
+            (None, "G91 G73 X10. Z-5. R-3. J0.5 K2 F100.", false),
+            (Some(81), "X10. K3", true),
+            (Some(81), "G17 X10. K4", true),
+            (Some(83), "G91 X10. K4", true),
+            (Some(81), "G01 X10. K4", false),
+            (Some(81), "X10. K3.", false),
+            (None, "X10. K3", false),
+            (None, "G18 G02 X0.02 Z0 I0.01 K3 F100.", false),
+        ] {
+            assert_eq!(
+                counts(&fanuc, cycle, line) != 0,
+                counted,
+                "{cycle:?} {line}"
+            );
+        }
+        for (cycle, line) in [
+            (None, "G91 G81 X10. Z-5. R-3. K3 L3 F100."),
+            (None, "G91 G83 X10. Z-5. R-3. Q1. K2 F100."),
+            (Some(83), "G91 X1. K4"),
+        ] {
+            assert_eq!(counts(&haas, cycle, line), 0, "haas {cycle:?} {line}");
+        }
+        // a lathe's drilling cycle counts in its own block; the one in force is not read into
+        // a block of positions (as the checker reads it)
+        let lathe = macro_b(false, true);
+        assert_eq!(counts(&lathe, None, "G83 Z-10. R-1. Q2000 K3 F0.1"), k);
+        assert_eq!(counts(&lathe, Some(83), "X10. K3"), 0);
     }
 
     #[test]

@@ -243,10 +243,12 @@ pub struct BlockValues {
     /// Letters given a value the checker cannot evaluate (`F#101`), by [`bit`].
     pub unknown: u32,
     /// The block's first K, written without a point where the profile reads K in least
-    /// increments, read as its whole number: a FANUC canned cycle's repeat count (0i-MF,
-    /// "Canned cycle": `K3`, three holes), which K's increments read 0.003
-    /// ([`ModalMachine::cycle_repeats`]). Set by the modal state's own reading alone
-    /// ([`crate::word::Numbers::block_values`], which resets it): the checker reads a count
+    /// increments and the block's cycle makes K its count, read as its whole number: a FANUC
+    /// canned cycle's repeat count (0i-MF, "Canned cycle": `K3`, three holes), which K's
+    /// increments read 0.003 ([`ModalMachine::cycle_repeats`]). Set by the modal state's own
+    /// reading alone ([`crate::word::Numbers::block_values`], which resets it), where the
+    /// rule the checker asks says K counts (`meaning::Meanings::cycle_count`: not a Haas
+    /// G73/G83's least peck depth, nor a G73/G83 K beside I or J): the checker reads a count
     /// by its block's codes, and leaves it None (no cost on its path).
     pub k_whole: Option<Dec>,
     /// The block's M02/M30 may not run (LinuxCNC: one inside an o-word condition or loop, or

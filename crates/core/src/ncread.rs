@@ -1189,8 +1189,12 @@ impl Reader {
         };
         match role {
             Some(Role::Length) => kind = Kind::Length,
-            // a selector (G05.1 Q1) is a whole number as written, a code's argument
+            // a selector (G05.1 Q1) is a whole number as written, a code's argument; so is a
+            // count of the cycle's table (`G81 K3`, three holes): compared exactly, never
+            // within a tolerance in the steps of its letter's length format, which are no
+            // unit of a count (review 55a, F5: `K3 -> K4` was "+1000 steps")
             Some(Role::Selector) => kind = Kind::Code,
+            _ if count => kind = Kind::Code,
             // so is a word the meaning table says nothing sure of (an Okuma G73's E, Haas M19
             // R), which the converter refuses or leaves as written (--allow-unconverted)
             Some(Role::Other | Role::Parameter)
@@ -1390,9 +1394,11 @@ impl Motion {
     /// A block's word tokens applied as `postproc.state.ModalMachine.apply` applies them.
     fn apply(&mut self, tokens: &[&[u8]]) {
         let units = (self.machine.state.units, self.machine.state.feed_units);
+        let settings = self.config.modal_settings();
+        let counts = crate::convert::block_counts(settings, self.machine.state.cycle, tokens);
         self.config
             .numbers()
-            .block_values(tokens, units, &mut self.values);
+            .block_values(tokens, units, counts, &mut self.values);
         self.values.in_system(&self.machine.settings);
         self.machine.apply(&self.values);
     }

@@ -469,8 +469,17 @@ impl<'a> Numbers<'a> {
     /// The values of a block's word tokens as the modal state reads them on its own (restart,
     /// plot, the diff's motion): plain numbers without an index, through the profile's formats
     /// in the units of lengths and of the feed in force (`units`); a word that cannot be read
-    /// is left out, as the checker reports it.
-    pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
+    /// is left out, as the checker reports it. `counts`: the letters (bit `letter - b'A'`)
+    /// the block's cycle makes a count, by the one rule the checker asks too
+    /// (`convert::block_counts`, which this leaf module cannot name): a K among them is kept
+    /// whole as well ([`BlockValues::k_whole`]).
+    pub fn block_values(
+        &self,
+        tokens: &[&[u8]],
+        units: (Units, Units),
+        counts: u32,
+        out: &mut BlockValues,
+    ) {
         out.clear();
         out.k_whole = None;
         for token in tokens {
@@ -491,7 +500,11 @@ impl<'a> Numbers<'a> {
                 b'G' => out.push_g(value.trunc()),
                 b'M' => out.ms.push(value.trunc()),
                 // (a count K3 is 3, where K's increments read 0.003: BlockValues::k_whole)
-                b'K' if !w.point && out.get(b'K').is_none() && self.reads_increments(b'K') => {
+                b'K' if counts & 1 << (b'K' - b'A') != 0
+                    && !w.point
+                    && out.get(b'K').is_none()
+                    && self.reads_increments(b'K') =>
+                {
                     let negative = w.sign == b"-";
                     out.k_whole = w.value.map(|m| {
                         let n = Dec::from_u64(m, 0);
@@ -906,9 +919,10 @@ mod tests {
     }
 
     /// Review 54, F1, in the modal state's own reading: where K counts least increments (a
-    /// FANUC's `K3` is 0.003 as a length), its number written without a point is also kept
-    /// whole, a canned cycle's repeat count; K with a point, a second K, or a profile that
-    /// reads K whole keep none.
+    /// FANUC's `K3` is 0.003 as a length) and the block's cycle makes K its count, its number
+    /// written without a point is also kept whole, a canned cycle's repeat count; K with a
+    /// point, a second K, a profile that reads K whole, or a K the cycle makes no count
+    /// (review 55a, F4: a G83's least peck depth beside I and J) keep none.
     #[test]
     fn block_values_keep_a_pointless_k_whole_where_k_counts_increments() {
         let formats = vec![(b'K', fmt(5, 3))];
@@ -918,23 +932,30 @@ mod tests {
             explicit: true,
             increments: Some(b"PLFG"),
         };
-        let k = |numbers: &Numbers<'_>, tokens: &[&[u8]]| {
+        let k_count = 1 << (b'K' - b'A');
+        let k = |numbers: &Numbers<'_>, counts: u32, tokens: &[&[u8]]| {
             let mut out = BlockValues::default();
-            numbers.block_values(tokens, (Units::Metric, Units::Metric), &mut out);
+            numbers.block_values(tokens, (Units::Metric, Units::Metric), counts, &mut out);
             let of = |d: Option<Dec>| d.map(|d| d.to_string());
             (of(out.get(b'K')), of(out.k_whole))
         };
         let some = |a: &str, b: &str| (Some(a.to_string()), Some(b.to_string()));
-        assert_eq!(k(&fanuc, &[b"G81", b"K3"]), some("0.003", "3"));
-        assert_eq!(k(&fanuc, &[b"G81", b"K03"]), some("0.003", "3"));
-        assert_eq!(k(&fanuc, &[b"K-12"]), some("-0.012", "-12"));
-        assert_eq!(k(&fanuc, &[b"K3."]), (Some("3".into()), None));
-        assert_eq!(k(&fanuc, &[b"K3.", b"K4"]), (Some("3".into()), None));
+        assert_eq!(k(&fanuc, k_count, &[b"G81", b"K3"]), some("0.003", "3"));
+        assert_eq!(k(&fanuc, k_count, &[b"G81", b"K03"]), some("0.003", "3"));
+        assert_eq!(k(&fanuc, k_count, &[b"K-12"]), some("-0.012", "-12"));
+        assert_eq!(k(&fanuc, k_count, &[b"K3."]), (Some("3".into()), None));
+        assert_eq!(
+            k(&fanuc, k_count, &[b"K3.", b"K4"]),
+            (Some("3".into()), None)
+        );
+        // no count: the length K's increments read, and nothing kept whole
+        let peck: &[&[u8]] = &[b"G83", b"I1.", b"K2"];
+        assert_eq!(k(&fanuc, 0, peck), (Some("0.002".into()), None));
         let whole = Numbers {
             increments: None,
             ..fanuc
         };
-        assert_eq!(k(&whole, &[b"K3"]), (Some("3".into()), None));
+        assert_eq!(k(&whole, k_count, &[b"K3"]), (Some("3".into()), None));
     }
 
     #[test]
@@ -948,7 +969,7 @@ mod tests {
         };
         let tokens: Vec<&[u8]> = vec![b"G01", b"G91.1", b"X1500", b"Y=R1", b"M03", b"X2"];
         let mut out = BlockValues::default();
-        numbers.block_values(&tokens, (Units::Metric, Units::Metric), &mut out);
+        numbers.block_values(&tokens, (Units::Metric, Units::Metric), 0, &mut out);
         assert_eq!(out.gs(), [1]);
         assert_eq!(out.ms, vec![3]);
         assert_eq!(out.get(b'X').unwrap().to_string(), "1.500");

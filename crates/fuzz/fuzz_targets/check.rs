@@ -45,6 +45,7 @@ fuzz_target!(|data: &[u8]| {
             checker.config.block_values(
                 &raw,
                 (modal.state.units, modal.state.feed_units),
+                modal.state.cycle,
                 &mut values,
             );
             modal.apply(&values);

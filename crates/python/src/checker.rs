@@ -810,7 +810,9 @@ impl ModalMachine {
         }
         let tokens: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
         let units = (self.machine.state.units, self.machine.state.feed_units);
-        self.config.block_values(&tokens, units, &mut self.values);
+        let cycle = self.machine.state.cycle;
+        self.config
+            .block_values(&tokens, units, cycle, &mut self.values);
         self.machine.apply(&self.values);
         Ok(())
     }

@@ -271,9 +271,18 @@ impl Config {
     }
 
     /// The values of a block's word tokens as the modal state reads them on its own
-    /// ([`Numbers::block_values`]).
-    pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
-        self.numbers().block_values(tokens, units, out);
+    /// ([`Numbers::block_values`]), `cycle` the mill's canned cycle in force before the block
+    /// (`ModalState::cycle`), by which a K is the cycle's count as the checker reads it
+    /// ([`crate::convert::block_counts`]).
+    pub fn block_values(
+        &self,
+        tokens: &[&[u8]],
+        units: (Units, Units),
+        cycle: Option<i64>,
+        out: &mut BlockValues,
+    ) {
+        let counts = crate::convert::block_counts(&self.modal, cycle, tokens);
+        self.numbers().block_values(tokens, units, counts, out);
         out.in_system(&self.modal);
     }
 
@@ -2594,7 +2603,7 @@ impl Checker {
         // `G17 X10. K4` after a G81 is four holes, its K the count; review 51, F10)
         if motion_only && (self.machine.state.cycle.is_none() || lathe || motion_written(b)) {
             debug_assert_eq!(
-                self.meanings_afresh(b, lathe),
+                self.meanings_afresh(b),
                 crate::meaning::Meanings::default(),
                 "line {}: G00-G03 gave a word a meaning",
                 b.line
@@ -2609,55 +2618,23 @@ impl Checker {
             return None; // no code gives a word a meaning
         }
         let Some(shape) = shapes::Shape::of(b.words, cycle) else {
-            return Some(self.meanings_afresh(b, lathe));
+            return Some(self.meanings_afresh(b));
         };
         if let Some(kept) = self.shapes.get(&shape) {
-            debug_assert_eq!(kept, self.meanings_afresh(b, lathe), "line {}", b.line);
+            debug_assert_eq!(kept, self.meanings_afresh(b), "line {}", b.line);
             return Some(kept);
         }
-        let meanings = self.meanings_afresh(b, lathe);
+        let meanings = self.meanings_afresh(b);
         self.shapes.keep(shape, meanings);
         Some(meanings)
     }
 
-    /// [`Checker::code_meanings`] worked out from the tables.
-    fn meanings_afresh(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
-        let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
-        let (mut g, mut m) = (0, 0);
-        for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
-            let Some((n, 0)) = crate::meaning::code(w.number) else {
-                continue;
-            };
-            if w.letter == b'G' && g < gs.len() {
-                gs[g] = n;
-                g += 1;
-            } else if w.letter == b'M' && m < ms.len() {
-                ms[m] = n;
-                m += 1;
-            }
-        }
-        // (the cycle in force is the block's where it writes no code of the motion group: a
-        // `G91 X10. K4` repeats a G81 at the next hole, FANUC 0i-MF "Canned cycle"; audit 50,
-        // B9)
-        let cycle = self.machine.state.cycle.filter(|_| !lathe);
-        let motion = gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89));
-        if let Some(code) = cycle.filter(|_| !motion && g < gs.len()) {
-            gs[g] = code;
-            g += 1;
-        }
-        // a FANUC lathe's codes of G code system B or C by their system A numbers
-        let modal = &self.config.modal;
-        for n in &mut gs[..g] {
-            *n = modal.read_g(*n);
-        }
-        let system = modal.g_system;
-        let words = b.words.iter().map(move |w| match w.letter {
-            b'G' => (w.letter, system.token(w.number)),
-            _ => (w.letter, w.number),
-        });
-        let family = self.config.family;
-        let haas = Some(self.config.haas);
-        crate::convert::code_meanings_of(family, haas, lathe, &gs[..g], &ms[..m], words)
+    /// [`Checker::code_meanings`] worked out from the tables, as the modal state on its own
+    /// reads them ([`crate::convert::block_meanings`]).
+    fn meanings_afresh(&self, b: &BlockView<'_>) -> crate::meaning::Meanings {
+        let control = (self.config.family, self.config.haas);
+        let words = b.words.iter().map(|w| (w.letter, w.number));
+        crate::convert::block_meanings(&self.config.modal, control, self.machine.state.cycle, words)
     }
 
     /// The units a block's lengths and its feed are in, and whether its feed is per
