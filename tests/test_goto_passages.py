@@ -69,3 +69,35 @@ def test_a_sure_goto_after_a_joined_block_finds_no_false_span():
     y3 = HEAD + ("G0 X-700. Y0 Z10. / IF [#5 EQ 1] GOTO 52 / GOTO 54 / N52 G0 X0. / "
                  "GOTO 53 / G0 X900. / N53 G0 X0 / N54 G0 X1. / M30")
     assert errors(y3) == []
+
+
+# Review 55b (F1, F2): an earlier attempt at conditional passages lost the TG401 of o6/o7/o12/
+# o14 and made a false TG601 of q5b/q5d. FANUC: no F word is ever read before the G1, so the
+# feed is zero there on every run (alarm PS0011, 0i-MF operator's manual, alarm list).
+O6_HEAD = HEAD + "#1=0 / G0 X0 Y0 Z10. / "
+
+
+@pytest.mark.parametrize("program, expected", [
+    # o6.nc: a known-true IF, a call after: the G1 X3. has no feed on any run
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 10 / G0 Y1. / N10 G0 X0 / G1 X3. / M98 P2000 / M30",
+     [("TG401", 9, 4)]),
+    # o7.nc: the block passed over is itself a feed move
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 10 / G1 X10. / N10 G0 X0 / G1 X3. / M98 P2000 / M30",
+     [("TG401", 9, 4)]),
+    # o12.nc: a macro call (G65) in place of the M98
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 10 / G0 Y1. / N10 G0 X0 / G1 X3. / G65 P9000 / M30",
+     [("TG401", 9, 4)]),
+    # o14.nc: a counted loop with its test at the top; the first pass through N45 alarms
+    (O6_HEAD + "#1=1 / N37 IF [#1 EQ 1] GOTO 45 / G0 Y1. / N45 G1 X6. / #1=#1+1 / "
+     "IF [#1 LT 3] GOTO 37 / M30", [("TG401", 9, 8)]),
+    # q5b.nc: the IF is taken, the G0 X600. and the G91 never run: X 0..600, no TG601
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 8 / G0 X600. / G91 / N8 G0 X600. / G0 X600. / "
+     "M98 P2000 / M30 / O2000 / M99", []),
+    # q5d.nc: the same with a macro call of a program not in the file
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 8 / G0 X600. / G91 / N8 G0 X600. / G0 X600. / "
+     "G65 P9100 A1. / M30", []),
+])
+def test_a_known_true_jump_keeps_its_errors_and_finds_no_false_one(program, expected):
+    """Review 55b's F1 and F2 classes: a known-true `IF [..] GOTO` followed by a call or a
+    jump back keeps the TG401 the control alarms on, and judges no block it passes over."""
+    assert errors(program) == expected
