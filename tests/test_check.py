@@ -193,10 +193,13 @@ def test_a_subprogram_after_m30_is_read_in_the_units_of_its_calls(tmp_path: Path
     both = ("%\nO1\nG21\nG0 G90 G54 X0 Y0\nM98 P1000\nG20\nM98 P1000\nM30\nO1000\n"
             "G1 X900. F3000.\nG21\nG1 X2000. F30000.\nM99\n%\n")
     assert [f[:2] for f in limits(both)] == [(12, "TG601"), (12, "TG602")]
-    # no call names it: a program of its own, from the reset state, its assumed units said
+    # no call names it: a program of its own, from the reset state, its assumed units said;
+    # its span its own, not added to the main's (review 55b, F4): X900. alone fits, X900.
+    # and X-400. (1300 in) do not
     alone = "%\nO1\nG21\nG0 G90 G54 X0 Y0\nM30\nO1000\nG1 X900. F3000.\nM99\n%\n"
-    found = limits(alone)
-    assert [f[:2] for f in found] == [(7, "TG601"), (7, "TG602")]
+    assert [f[:2] for f in limits(alone)] == [(7, "TG602")]
+    found = limits(alone.replace("F3000.\n", "F3000.\nX-400.\n"))
+    assert [f[:2] for f in found] == [(7, "TG602"), (8, "TG601")]
     assert all("no units code by here" in f[2] for f in found)
 
 

@@ -69,3 +69,82 @@ def test_a_sure_goto_after_a_joined_block_finds_no_false_span():
     y3 = HEAD + ("G0 X-700. Y0 Z10. / IF [#5 EQ 1] GOTO 52 / GOTO 54 / N52 G0 X0. / "
                  "GOTO 53 / G0 X900. / N53 G0 X0 / N54 G0 X1. / M30")
     assert errors(y3) == []
+
+
+# Review 55b (F1, F2): an earlier attempt at conditional passages lost the TG401 of o6/o7/o12/
+# o14 and made a false TG601 of q5b/q5d. FANUC: no F word is ever read before the G1, so the
+# feed is zero there on every run (alarm PS0011, 0i-MF operator's manual, alarm list).
+O6_HEAD = HEAD + "#1=0 / G0 X0 Y0 Z10. / "
+
+
+@pytest.mark.parametrize("program, expected", [
+    # o6.nc: a known-true IF, a call after: the G1 X3. has no feed on any run
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 10 / G0 Y1. / N10 G0 X0 / G1 X3. / M98 P2000 / M30",
+     [("TG401", 9, 4)]),
+    # o7.nc: the block passed over is itself a feed move
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 10 / G1 X10. / N10 G0 X0 / G1 X3. / M98 P2000 / M30",
+     [("TG401", 9, 4)]),
+    # o12.nc: a macro call (G65) in place of the M98
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 10 / G0 Y1. / N10 G0 X0 / G1 X3. / G65 P9000 / M30",
+     [("TG401", 9, 4)]),
+    # o14.nc: a counted loop with its test at the top; the first pass through N45 alarms
+    (O6_HEAD + "#1=1 / N37 IF [#1 EQ 1] GOTO 45 / G0 Y1. / N45 G1 X6. / #1=#1+1 / "
+     "IF [#1 LT 3] GOTO 37 / M30", [("TG401", 9, 8)]),
+    # q5b.nc: the IF is taken, the G0 X600. and the G91 never run: X 0..600, no TG601
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 8 / G0 X600. / G91 / N8 G0 X600. / G0 X600. / "
+     "M98 P2000 / M30 / O2000 / M99", []),
+    # q5d.nc: the same with a macro call of a program not in the file
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 8 / G0 X600. / G91 / N8 G0 X600. / G0 X600. / "
+     "G65 P9100 A1. / M30", []),
+])
+def test_a_known_true_jump_keeps_its_errors_and_finds_no_false_one(program, expected):
+    """Review 55b's F1 and F2 classes: a known-true `IF [..] GOTO` followed by a call or a
+    jump back keeps the TG401 the control alarms on, and judges no block it passes over."""
+    assert errors(program) == expected
+
+
+@pytest.mark.parametrize("program, expected", [
+    # review 55b, F4 (r3b.nc): O2000 after the main's M30, which nothing in the file calls:
+    # its X-700. is not in one span with the main's X850.
+    (O6_HEAD + "G0 X850. / M30 / O2000 / G0 X-700. / M99", []),
+    # q7.nc: the same after a sure GOTO over a numbered block
+    (O6_HEAD + "GOTO 34 / N16 G91 / N34 G0 X850. / M30 / O2000 / G0 X-700. / M99", []),
+    # its own span wider than the travel: said, where it grows past it
+    (O6_HEAD + "G0 X850. / M30 / O2000 / G0 X-700. / G0 X100. / G0 X850. / M99",
+     [("TG601", 11, 4)]),
+    # called by the main before its end: judged from its caller's spans, as before
+    (O6_HEAD + "G0 X850. / M98 P2000 / M30 / O2000 / G0 X-700. / M99", [("TG601", 10, 4)]),
+    # called by a later program of the file: judged at that call
+    (O6_HEAD + "G0 X850. / M30 / O2000 / G0 X-700. / M99 / O3000 / M98 P2000 / M30",
+     [("TG601", 12, 5)]),
+    # a run of increments wider than the travel is its own: said
+    (O6_HEAD + "G0 X850. / M30 / O2000 / G91 G0 X-800. / G0 X-800. / M99",
+     [("TG601", 10, 4)]),
+])
+def test_a_program_no_call_names_after_the_end_has_its_own_span(program, expected):
+    """Review 55b, F4: the span of a subprogram after M30 that no call of the file names is
+    its own (a FANUC's M30 ends the main program and goes back to its head; whoever calls
+    the subprogram is not known, nor the work offset it runs under); where the file calls it,
+    it is judged from its caller's state as before."""
+    assert errors(program) == expected
+
+
+@pytest.mark.parametrize("program, expected", [
+    # review 53, F5's class: #1 is 0, the IF never jumps; the sure GOTO 44 passes X850.
+    (O6_HEAD + "IF [#1 EQ 1] GOTO 44 / GOTO 44 / G0 X850. / N44 G0 X-700. / M30", []),
+    # the IF known true: both ways to N44 pass X850.
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 44 / GOTO 44 / G0 X850. / N44 G0 X-700. / M30", []),
+    # known false, no sure GOTO: X850. runs, then N44
+    (O6_HEAD + "IF [#1 EQ 1] GOTO 44 / G0 X850. / N44 G0 X-700. / M30", [("TG601", 8, 8)]),
+    # a jump back that makes it true on a second pass: the first pass still runs X850.
+    (O6_HEAD + "N1 IF [#1 EQ 1] GOTO 44 / G0 X850. / N44 G0 X-700. / #1=1 / GOTO 1 / M30",
+     [("TG601", 8, 8)]),
+    # inside a WHILE loop, the values at the IF are not known: judged as before
+    (O6_HEAD + "WHILE [#1 LT 2] DO1 / IF [#1 EQ 1] GOTO 44 / G0 X850. / N44 G0 X-700. / "
+     "#1=#1+1 / END1 / M30", [("TG601", 9, 8)]),
+])
+def test_an_if_known_false_is_no_way_into_its_target(program, expected):
+    """Review 53, F5: an `IF [..] GOTO n` whose condition the values known make false does
+    not jump (FANUC Custom Macro B: the branch is taken only where the condition holds), so
+    it does not make N n a block other ways arrive at; errors of the fall-through stay."""
+    assert errors(program) == expected

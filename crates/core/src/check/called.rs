@@ -30,10 +30,11 @@
 //! ([`Checker::call_returns`]); inside another body read apart that is a G90/G91 of that
 //! body's at the call, and the called body's positions from its own G90 on are that body's
 //! too, at any depth (review 47, F1). A call in units or under a shift not known leaves it with one
-//! TG140 at the file's end; a program no call names is read as before (its findings said,
-//! its span added), at the end of the file; a program given up is noted at each call of it
-//! (finding E).
+//! TG140 at the file's end; a program no call names is judged alone (its own findings said,
+//! its span not added to the file's: its caller is not known), at the end of the file; a
+//! program given up is noted at each call of it (finding E).
 
+use super::limits::SPAN_SAID;
 use super::{Checker, Finding, Span};
 use crate::decimal::Dec;
 use crate::modal::AXES;
@@ -898,24 +899,50 @@ impl Checker {
         }
     }
 
-    /// A subprogram no call names: read as before, from the reset state (its findings said,
-    /// its span added to those of the file).
+    /// A subprogram no call of the file names (it ends in M99: after a main program's M30, a
+    /// subprogram called from another file or by hand): its own findings said, as read from
+    /// the reset state; its span is not added to those of the file's programs. Nothing in the
+    /// file runs it, so where it stands under a work offset is its caller's, not known here:
+    /// a FANUC's M30 ends the main program and goes back to the program's
+    /// head (0i-F Operator's Manual, miscellaneous functions, M30), and its M99 returns to
+    /// whoever called it (review 55b, F4: `G0 X850.` / `M30` / `O2000` / `G0 X-700.` / `M99`
+    /// was "X spans 1550").
     fn early_as_read(&mut self, p: Pending) {
-        for mut f in p.removed.into_iter().chain(p.positions) {
-            self.sample_hint_shown(&mut f);
-            self.found.push(f);
-        }
-        for i in 0..AXES.len() {
-            let Some(span) = p.spans[i] else {
+        // (its spans' findings, made with the spans of the programs before it, are judged
+        // again with its own alone: said where the axis's travel is less than its own span)
+        let mut said: Vec<Finding> = p
+            .removed
+            .into_iter()
+            .filter(|f| !(f.rule == Rule::TravelExceeded && f.message.contains(SPAN_SAID)))
+            .collect();
+        let from = self.found.len();
+        for (i, &axis) in AXES.iter().enumerate() {
+            let (Some(span), Some((low, high))) = (p.spans[i], self.travel.of_place(i)) else {
                 continue;
             };
-            if span.said || self.travel.of_place(i).is_none() {
-                self.spans[i] = joined(self.spans[i], Some(span));
-                continue;
+            if span.most - span.least > (high - low) + 1e-9 {
+                let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
+                let at = if l.0 >= m.0 { l } else { m };
+                // (read with no units code of its own, in the units it began in: where those
+                // are the profile's inches and millimetres would fit, the remark says so)
+                let fits = (span.most - span.least) / 25.4 <= high - low + 1e-9;
+                let units = if fits
+                    && p.factor == 1.0
+                    && self.config.limit_units == crate::modal::Units::Inch
+                {
+                    self.units_remark()
+                } else {
+                    String::new()
+                };
+                let ends = (span.least, span.most);
+                self.span_said(axis, ends, (low, high), at, "", &units);
             }
-            let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
-            self.add_to_span(i, span.least, false, l.0, || l.1, "");
-            self.add_to_span(i, span.most, false, m.0, || m.1, "");
+        }
+        said.extend(self.found.drain(from..));
+        said.sort_by_key(|f| (f.line, f.column));
+        for mut f in said.into_iter().chain(p.positions) {
+            self.sample_hint_shown(&mut f);
+            self.found.push(f);
         }
     }
 

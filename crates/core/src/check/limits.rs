@@ -110,6 +110,10 @@ impl Frames {
 /// X, Y and Z (bits 0-2 of [`Frames::hidden`]).
 const XYZ: u16 = 0b111;
 
+/// What a span's TG601 says after its travel ([`Checker::span_exceeded`]): a subprogram no
+/// call names finds its own by it, to judge them again alone (crate::check::called).
+pub(super) const SPAN_SAID: &str = ": no work offset fits the program on this machine";
+
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -2378,9 +2382,30 @@ impl Checker {
         under: &str,
     ) {
         let units = self.units_not_written((most - least) / 25.4 <= high - low + 1e-9);
+        self.span_said(
+            axis,
+            (least, most),
+            (low, high),
+            (line, column),
+            under,
+            &units,
+        );
+    }
+
+    /// [`Checker::span_exceeded`] with the units' remark given (a subprogram judged after it
+    /// was read, in the units it was read in: crate::check::called).
+    pub(super) fn span_said(
+        &mut self,
+        axis: u8,
+        (least, most): (f64, f64),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+        under: &str,
+        units: &str,
+    ) {
         let message = format!(
-            "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
-             offset fits the program on this machine{under}{units}",
+            "{} spans {} (from {} to {}), more than the travel {low} to {high}{SPAN_SAID}\
+             {under}{units}",
             axis as char,
             round6(most - least),
             round6(least),
@@ -2878,13 +2903,17 @@ mod tests {
         // too far and too fast in the caller's millimetres too: still said
         assert_eq!(limits(&sub("G21", "G1 X2000. F999.")), [(8, 4), (8, 11)]);
         // the program after the end that no call names is a program of its own, read from the
-        // reset state (G20) as the file's first is
+        // reset state (G20) as the file's first is; its span is its own, not added to the
+        // main program's (its caller, and the work offset it runs under, are not known: review
+        // 55b, F4), so one position is no TG601 and two 1800 in apart are
         let alone = "%\nO1\nG21\nG0 G90 X0 Y0\nM30\nO1000\nG1 X900. F700.\nM99\n%\n";
-        assert_eq!(limits(alone), [(7, 4), (7, 10)]);
+        assert_eq!(limits(alone), [(7, 10)]);
+        let wide = alone.replace("F700.\n", "F700.\nX-900.\n");
+        assert_eq!(limits(&wide), [(8, 1), (7, 10)]);
         // a number the call does not name: the same
         assert_eq!(
             limits(&sub("G21", "G1 X900. F700.").replace("P1000", "P2000")),
-            [(8, 4), (8, 10)]
+            [(8, 10)]
         );
     }
 

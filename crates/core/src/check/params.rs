@@ -960,6 +960,12 @@ impl Checker {
             let Some((_, digits, _)) = super::targets::goto_words(&upper) else {
                 continue;
             };
+            // (an IF whose condition the values known here make false does not jump: it is no
+            // way into the block it names; review 53, F5. Those values are the first pass's,
+            // and a jump back is not followed: the target's first run is the fall-through's)
+            if self.condition_known(&upper) == Some(false) {
+                continue;
+            }
             match std::str::from_utf8(digits)
                 .ok()
                 .and_then(|d| d.parse().ok())
