@@ -688,6 +688,14 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G2 in G18.1", HEAD + "G18.1 F100\nG2 X10 Y0 R5\nM2\n", 4, "error"),
     ("G2 in force run in G19.1", HEAD + "G2 X10 Y0 R5 F100\nG19.1\nY1 Z1\nM2\n", 5,
      "error"),
+    # review 54, F4 (lcnc56): a spline's feed, checked before its plane (convert_spline)
+    ("G5 without a feed rate", HEAD + "G5 X3 Y2 I1 J0 P1 Q1\nM2\n", 3, "error"),
+    ("G5.1 at F0", HEAD + "F100\nF0\nG5.1 X3 Y2 I1 J1\nM2\n", 5, "error"),
+    ("G5.1 in G93 without F", HEAD + "G93\nG5.1 X3 Y2 I1 J1\nM2\n", 4, "error"),
+    ("G5 in G93 and G18 without F", HEAD + "G93 G18\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 4,
+     "error"),
+    ("G5 in G95 at S0 and G5 in G93 with F",
+     HEAD + "G95\nG5 X3 Y2 I1 J0 P1 Q1\nG93\nG5 X4 Y2 I1 J0 P1 Q1 F2\nM2\n", 0, "accepted"),
     ("G5.2 in G18 and G2 after G17.1 G17",
      HEAD + "G18 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3\nG17.1\nG17\n"
      "G2 X5 Y1 R2\nM2\n", 0, "accepted"),

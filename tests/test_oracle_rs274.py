@@ -169,6 +169,9 @@ BOTH = [
     "G28.1 under compensation", "G30.1 under compensation",
     # lspl53 (review 53, F12): splines outside G17, arcs in G17.1-G19.1
     "G5 in G18", "G5.1 in G17.1", "G2 in G18.1", "G2 in force run in G19.1",
+    # review 54, F4: a spline's feed, before its plane
+    "G5 without a feed rate", "G5.1 at F0", "G5.1 in G93 without F",
+    "G5 in G93 and G18 without F",
     # plane55 (review 54, F2): a plane known where every way through an if leaves it
     "arc after an if and else both setting G18.1", "spline after an if that sets no plane, in G18",
     "spline after a known-false if setting G17, in G18",
@@ -233,6 +236,8 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "G18 under compensation begun in G18", "G5 beside G40",
        # lspl53: a NURBS outside G17, an arc after the plane is set again
        "G5.2 in G18 and G2 after G17.1 G17",
+       # review 54, F4: G95 checks a spline's feed not; G93 with the block's F
+       "G5 in G95 at S0 and G5 in G93 with F",
        # plane55 (review 54, F2): a definition's plane stays in it; a call or an if of an
        # unknown condition leaves the plane unknown
        "uncalled definition's G18.1 before an arc", "uncalled definition's G18 before a spline",
