@@ -782,6 +782,13 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "G18\n#<p>=[#5220+16]\nG#<p>\nG2 Y10 R10 F100\nM2\n", 0, "accepted"),
     ("spline after M72 restores G17",
      HEAD + "F100\nM70\nG18\nG1 X1 Z1\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
+    # review 55c, F6 (lcnc56): M72 restores the feed mode and the feed M70 saved
+    ("G1 after M72 restores the F0 M70 saved", HEAD + "M70\nF100\nM72\nG1 X1\nM2\n", 6,
+     "error"),
+    ("arc without F after M72 restores G93",
+     HEAD + "G93\nM70\nG94 F100\nM72\nG1 X1 F10\nG2 X2 Y0 R1\nM2\n", 8, "error"),
+    ("G1 after M72 restores G94 and its F from G95",
+     HEAD + "F100\nM70\nG95\nM72\nG1 X1\nM2\n", 0, "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

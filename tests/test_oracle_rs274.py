@@ -47,6 +47,8 @@ BOTH = [
     "feed motion without feed",
     # F0 is no feed either (TG401): "Cannot do g1 / make arc with zero feed rate"
     "feed motion at F0",
+    # review 55c, F6: M72 restores the feed and the feed mode M70 saved (TG401, TG402)
+    "G1 after M72 restores the F0 M70 saved", "arc without F after M72 restores G93",
     "arc at F0",
     "G81 without Z",
     "G81 without R",
@@ -250,6 +252,8 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after a while left by a break in G17",
        # review 55c, F6: M72 restores the plane M70 saved
        "spline after M72 restores G17",
+       # review 55c, F6: a G94 restored from G95 at another F keeps the saved F
+       "G1 after M72 restores G94 and its F from G95",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known
        "spline after G[17], in G18", "R arc after G#<p> of #5220+16, in G18"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch
