@@ -789,6 +789,16 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "G93\nM70\nG94 F100\nM72\nG1 X1 F10\nG2 X2 Y0 R1\nM2\n", 8, "error"),
     ("G1 after M72 restores G94 and its F from G95",
      HEAD + "F100\nM70\nG95\nM72\nG1 X1\nM2\n", 0, "accepted"),
+    # review 55c, F7 (lcnc56): a call in a branch that ran leaves the elseif after it dead,
+    # but not in a loop, whose next turn takes the else
+    ("J centre in an elseif after a known-true if with a call",
+     "o<sb> sub\nG0 X1\no<sb> endsub\nG21 G18 G90 G40 G94 F100\nG0 X0 Y0 Z5\n"
+     "o150 if [1]\no<sb> call\no150 elseif [1]\nG2 X1 Y0 I0.5 J0\no150 endif\nM2\n", 0,
+     "accepted"),
+    ("J centre in the else of an if with a call, on a while's second turn",
+     "o<sb> sub\nG0 X1\no<sb> endsub\nG21 G18 G90 G40 G94 F100\nG0 X0 Y0 Z5\n"
+     "#<k>=0\no2 while [#<k> LT 2]\no1 if [#<k> EQ 0]\no<sb> call\no1 else\n"
+     "G2 X1 Y0 I0.5 J0\no1 endif\n#<k>=[#<k>+1]\no2 endwhile\nM2\n", 11, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -49,6 +49,8 @@ BOTH = [
     "feed motion at F0",
     # review 55c, F6: M72 restores the feed and the feed mode M70 saved (TG401, TG402)
     "G1 after M72 restores the F0 M70 saved", "arc without F after M72 restores G93",
+    # review 55c, F7: a loop's next turn takes the else after a branch with a call
+    "J centre in the else of an if with a call, on a while's second turn",
     "arc at F0",
     "G81 without Z",
     "G81 without R",
@@ -254,6 +256,8 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after M72 restores G17",
        # review 55c, F6: a G94 restored from G95 at another F keeps the saved F
        "G1 after M72 restores G94 and its F from G95",
+       # review 55c, F7: the elseif after a known-true branch with a call never runs
+       "J centre in an elseif after a known-true if with a call",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known
        "spline after G[17], in G18", "R arc after G#<p> of #5220+16, in G18"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch

@@ -876,9 +876,13 @@ impl Checker {
             }
             if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
                 // (a call may set any parameter, or end the program: F10's first run ends)
+                // (inside a loop a later turn may take another branch: not kept there, as
+                // before, so `o1 if [#<k> EQ 0]` / call / `o1 else` in a while is judged)
+                let looped = self.linuxcnc_open_at.iter().any(|e| e.looped.is_some());
                 for e in &mut self.linuxcnc_open_at {
                     if e.runs == Some(true) {
                         e.runs = None;
+                        e.called = !looped;
                     }
                     e.straight &= e.runs == Some(false);
                 }
@@ -1906,6 +1910,7 @@ impl Checker {
         let last = self.linuxcnc_open_at.last();
         let ran = last.filter(|e| e.straight).and_then(|e| e.runs);
         let branch_ran = last.and_then(|e| e.runs);
+        let branch_began = last.is_some_and(|e| e.runs == Some(true) || e.called);
         for e in &mut self.linuxcnc_open_at {
             e.straight = false;
         }
@@ -1916,7 +1921,7 @@ impl Checker {
         let mut all_ended = None;
         let switched = linuxcnc_branch_switch(&self.linuxcnc_open_flow, text, &label);
         let innermost = switched.is_some_and(|at| at + 1 == self.linuxcnc_open_flow.len());
-        let other_branch = innermost && branch_ran == Some(true) && !self.main_ended();
+        let other_branch = innermost && branch_began && !self.main_ended();
         if let Some(at) = switched {
             let ended = branch_ended(at);
             let is_else = keyword.as_deref() == Some(b"else".as_slice());
@@ -1957,6 +1962,7 @@ impl Checker {
             // continue, Checker::linuxcnc_loop_leave)
             for e in &mut self.linuxcnc_open_at {
                 e.runs = None;
+                e.called = false;
             }
         }
         if open == 0 {
@@ -2018,6 +2024,7 @@ impl Checker {
             straight: true,
             looped,
             varies: false,
+            called: false,
         }
     }
 
@@ -2039,6 +2046,7 @@ impl Checker {
         if at + 1 != self.linuxcnc_open_at.len() {
             for e in &mut self.linuxcnc_open_at[at..] {
                 e.runs = None;
+                e.called = false;
             }
             return false;
         }
@@ -2064,6 +2072,7 @@ impl Checker {
         };
         let e = &mut self.linuxcnc_open_at[at];
         e.runs = runs;
+        e.called = false;
         e.branch = line;
         runs == Some(false) && !other_branch
     }
@@ -2520,6 +2529,7 @@ impl Checker {
         }
         for e in &mut self.linuxcnc_open_at[at..] {
             e.runs = None;
+            e.called = false;
         }
         if let Some(innermost) = self.linuxcnc_open_flow.last() {
             self.linuxcnc_skipping = Some((innermost.clone(), line, false));
@@ -4440,6 +4450,13 @@ pub(super) struct OpenBlock {
     /// parameter, which the checker worked out for the first turn: a later turn may run
     /// other lines, so the state the first turn leaves is not the loop's where it turns again.
     varies: bool,
+    /// Its branch in hand was known to run (`runs` Some(true)) until a call made `runs` not
+    /// known: the call may set any parameter or end the program, but not undo that the
+    /// branch began, so an `else`/`elseif` after it is skipped all the same (interp_o_word.cc:
+    /// after a branch that ran rs274 goes to the `endif`; review 55c, F7: `o1 if [1]` /
+    /// `o<s> call` / `o1 elseif [1]` / `G2 Y10 R10` in G18 runs in `rs274 -g`). Not inside a
+    /// loop, whose later turn may take another branch.
+    called: bool,
 }
 
 /// LinuxCNC: a loop of the main program's top whose body runs, as
@@ -6609,6 +6626,54 @@ mod tests {
                 .map(|f| (f.line, f.rule))
                 .collect();
             assert_eq!(got.first().copied(), *expected, "{body}: {got:?}");
+        }
+    }
+
+    /// Review 55c, F7 (lcnc56): a call in a branch known to run does not make the `else` or
+    /// `elseif` after it live (rs274 goes from the branch that ran to the `endif`), but in a
+    /// loop, whose later turn may take the other branch, it does. Each as `rs274 -g`.
+    #[test]
+    fn linuxcnc_a_call_in_a_branch_that_ran_leaves_the_next_branch_dead() {
+        let subs = "o<sa> sub\no<sa> endsub\no<sb> sub\nG0 X1\no<sb> endsub\n";
+        let head = "G21 G18 G90 G40 G94 F100\nG0 X0 Y0 Z0\n";
+        let arc = "G2 X1 Y0 I0.5 J0";
+        let cases: Vec<(String, Vec<usize>)> = vec![
+            // dz1, e1: runs
+            (
+                format!(
+                    "#<k>=1\no453 if [#<k> GT 0]\no<sb> call\no453 elseif [0]\n{arc}\no453 endif"
+                ),
+                vec![],
+            ),
+            (
+                format!("o150 if [1]\no<sb> call\no150 elseif [1]\n{arc}\no150 endif"),
+                vec![],
+            ),
+            (
+                format!("o150 if [1]\no<sb> call\no<sa> call\no150 else\n{arc}\no150 endif"),
+                vec![],
+            ),
+            // "J word given for arc in xz plane": a condition not known, or a later turn
+            (
+                format!("o1 if [#5220 GT 5]\no<sb> call\no1 else\n{arc}\no1 endif"),
+                vec![11],
+            ),
+            (
+                format!(
+                    "#<k>=0\no2 while [#<k> LT 2]\no1 if [#<k> EQ 0]\no<sb> call\no1 else\n\
+                     {arc}\no1 endif\n#<k>=[#<k>+1]\no2 endwhile"
+                ),
+                vec![13],
+            ),
+        ];
+        for (body, expected) in cases {
+            let text = format!("{subs}{head}{body}\nM2\n");
+            let got: Vec<usize> = check(of_family(Family::LinuxCnc), &text)
+                .into_iter()
+                .filter(|f| f.rule == Rule::ArcCentreMissing)
+                .map(|f| f.line)
+                .collect();
+            assert_eq!(got, expected, "{body}");
         }
     }
 }
