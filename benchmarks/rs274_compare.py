@@ -688,6 +688,14 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G2 in G18.1", HEAD + "G18.1 F100\nG2 X10 Y0 R5\nM2\n", 4, "error"),
     ("G2 in force run in G19.1", HEAD + "G2 X10 Y0 R5 F100\nG19.1\nY1 Z1\nM2\n", 5,
      "error"),
+    # review 54, F4 (lcnc56): a spline's feed, checked before its plane (convert_spline)
+    ("G5 without a feed rate", HEAD + "G5 X3 Y2 I1 J0 P1 Q1\nM2\n", 3, "error"),
+    ("G5.1 at F0", HEAD + "F100\nF0\nG5.1 X3 Y2 I1 J1\nM2\n", 5, "error"),
+    ("G5.1 in G93 without F", HEAD + "G93\nG5.1 X3 Y2 I1 J1\nM2\n", 4, "error"),
+    ("G5 in G93 and G18 without F", HEAD + "G93 G18\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 4,
+     "error"),
+    ("G5 in G95 at S0 and G5 in G93 with F",
+     HEAD + "G95\nG5 X3 Y2 I1 J0 P1 Q1\nG93\nG5 X4 Y2 I1 J0 P1 Q1 F2\nM2\n", 0, "accepted"),
     ("G5.2 in G18 and G2 after G17.1 G17",
      HEAD + "G18 F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nX3 Y1 P1\nG5.3\nG17.1\nG17\n"
      "G2 X5 Y1 R2\nM2\n", 0, "accepted"),
@@ -774,6 +782,23 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "G18\n#<p>=[#5220+16]\nG#<p>\nG2 Y10 R10 F100\nM2\n", 0, "accepted"),
     ("spline after M72 restores G17",
      HEAD + "F100\nM70\nG18\nG1 X1 Z1\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
+    # review 55c, F6 (lcnc56): M72 restores the feed mode and the feed M70 saved
+    ("G1 after M72 restores the F0 M70 saved", HEAD + "M70\nF100\nM72\nG1 X1\nM2\n", 6,
+     "error"),
+    ("arc without F after M72 restores G93",
+     HEAD + "G93\nM70\nG94 F100\nM72\nG1 X1 F10\nG2 X2 Y0 R1\nM2\n", 8, "error"),
+    ("G1 after M72 restores G94 and its F from G95",
+     HEAD + "F100\nM70\nG95\nM72\nG1 X1\nM2\n", 0, "accepted"),
+    # review 55c, F7 (lcnc56): a call in a branch that ran leaves the elseif after it dead,
+    # but not in a loop, whose next turn takes the else
+    ("J centre in an elseif after a known-true if with a call",
+     "o<sb> sub\nG0 X1\no<sb> endsub\nG21 G18 G90 G40 G94 F100\nG0 X0 Y0 Z5\n"
+     "o150 if [1]\no<sb> call\no150 elseif [1]\nG2 X1 Y0 I0.5 J0\no150 endif\nM2\n", 0,
+     "accepted"),
+    ("J centre in the else of an if with a call, on a while's second turn",
+     "o<sb> sub\nG0 X1\no<sb> endsub\nG21 G18 G90 G40 G94 F100\nG0 X0 Y0 Z5\n"
+     "#<k>=0\no2 while [#<k> LT 2]\no1 if [#<k> EQ 0]\no<sb> call\no1 else\n"
+     "G2 X1 Y0 I0.5 J0\no1 endif\n#<k>=[#<k>+1]\no2 endwhile\nM2\n", 11, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -47,6 +47,10 @@ BOTH = [
     "feed motion without feed",
     # F0 is no feed either (TG401): "Cannot do g1 / make arc with zero feed rate"
     "feed motion at F0",
+    # review 55c, F6: M72 restores the feed and the feed mode M70 saved (TG401, TG402)
+    "G1 after M72 restores the F0 M70 saved", "arc without F after M72 restores G93",
+    # review 55c, F7: a loop's next turn takes the else after a branch with a call
+    "J centre in the else of an if with a call, on a while's second turn",
     "arc at F0",
     "G81 without Z",
     "G81 without R",
@@ -169,6 +173,9 @@ BOTH = [
     "G28.1 under compensation", "G30.1 under compensation",
     # lspl53 (review 53, F12): splines outside G17, arcs in G17.1-G19.1
     "G5 in G18", "G5.1 in G17.1", "G2 in G18.1", "G2 in force run in G19.1",
+    # review 54, F4: a spline's feed, before its plane
+    "G5 without a feed rate", "G5.1 at F0", "G5.1 in G93 without F",
+    "G5 in G93 and G18 without F",
     # plane55 (review 54, F2): a plane known where every way through an if leaves it
     "arc after an if and else both setting G18.1", "spline after an if that sets no plane, in G18",
     "spline after a known-false if setting G17, in G18",
@@ -233,6 +240,8 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "G18 under compensation begun in G18", "G5 beside G40",
        # lspl53: a NURBS outside G17, an arc after the plane is set again
        "G5.2 in G18 and G2 after G17.1 G17",
+       # review 54, F4: G95 checks a spline's feed not; G93 with the block's F
+       "G5 in G95 at S0 and G5 in G93 with F",
        # plane55 (review 54, F2): a definition's plane stays in it; a call or an if of an
        # unknown condition leaves the plane unknown
        "uncalled definition's G18.1 before an arc", "uncalled definition's G18 before a spline",
@@ -245,6 +254,10 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after a while left by a break in G17",
        # review 55c, F6: M72 restores the plane M70 saved
        "spline after M72 restores G17",
+       # review 55c, F6: a G94 restored from G95 at another F keeps the saved F
+       "G1 after M72 restores G94 and its F from G95",
+       # review 55c, F7: the elseif after a known-true branch with a call never runs
+       "J centre in an elseif after a known-true if with a call",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known
        "spline after G[17], in G18", "R arc after G#<p> of #5220+16, in G18"]
 # faults of the block delete switch (review 49a, F4): rs274 refuses the line with the switch

@@ -1182,6 +1182,10 @@ pub struct Checker {
     /// LinuxCNC: the plane the main program's M70/M73 saved with it, which M72 restores
     /// ([`structure::PlaneAt`]; review 55c, F6).
     linuxcnc_plane_saved: structure::PlaneAt,
+    /// LinuxCNC: the feed mode, feed and speed the main program's M70/M73 saved, which M72
+    /// restores (`Checker::linuxcnc_saved_feed`); None where the save ran in a condition or
+    /// loop, or where the feed mode was not known.
+    linuxcnc_feed_saved: Option<structure::FeedSaved>,
     /// LinuxCNC: a main program's block with M72 and G53: whether G91 was surely in force
     /// before it, which rs274's G53 test reads (the M72 restores after it; review 50, F11).
     linuxcnc_g53_before: Option<bool>,
@@ -1457,6 +1461,7 @@ impl Checker {
             linuxcnc_distance_in: 0,
             linuxcnc_saved: structure::Saved::Empty,
             linuxcnc_plane_saved: structure::PlaneAt::UNKNOWN,
+            linuxcnc_feed_saved: None,
             linuxcnc_g53_before: None,
             linuxcnc_body_distance: Box::default(),
             linuxcnc_call_refused: Vec::new(),

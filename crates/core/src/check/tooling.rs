@@ -1045,7 +1045,7 @@ impl Checker {
                         start.plane,
                     )
                 })
-                .or_else(|| self.linuxcnc_plane_refusal(runs))
+                .or_else(|| self.linuxcnc_plane_refusal(&words, runs))
         } else {
             None
         };
@@ -1738,14 +1738,48 @@ impl Checker {
         None
     }
 
-    /// The plane checks of rs274ngc 2.9 as it runs an arc or a spline (interp_convert.cc),
-    /// after the block's compensation refusals: convert_arc draws no arc in G17.1, G18.1 or
-    /// G19.1 (its first check after the straight move G40 requires, TG501's), convert_spline
-    /// no G5 or G5.1 outside G17 (after its compensation and feed checks). A NURBS of
-    /// G5.2/G5.3 is drawn in any plane there (convert_nurbs checks none).
-    /// None where the plane is not known (after a call, an `if` whose branches may leave
-    /// different planes, in a body before it sets one: review 54, F2).
-    fn linuxcnc_plane_refusal(&self, runs: Option<i64>) -> Option<(String, u8)> {
+    /// The feed and plane checks of rs274ngc 2.9 as it runs an arc or a spline
+    /// (interp_convert.cc), after the block's compensation refusals. convert_spline checks
+    /// the feed first: under G94 a feed rate of zero ("Cannot make arc with zero feed
+    /// rate": none since the start, F0, or a G94/G95 since the last F), under G93 a block
+    /// without F ("F word missing with inverse time arc move"), under G95 nothing; a G5 or
+    /// G5.1 sets no motion mode, so TG401/TG402, which judge the motion in force, never see
+    /// it (review 54, F4: `G93` / `G5 ...` without F passed). Not judged where the feed mode
+    /// is not known (after a call, a G93-G95 in a condition) or the F is a value the checker
+    /// cannot evaluate. Then the planes: convert_arc draws no arc in G17.1, G18.1 or G19.1
+    /// (its first check after the straight move G40 requires, TG501's), convert_spline no
+    /// G5 or G5.1 outside G17. A NURBS of G5.2/G5.3 is drawn in any plane there
+    /// (convert_nurbs checks none). No plane refusal where the plane is not known (after a
+    /// call, an `if` whose branches may leave different planes, in a body before it sets
+    /// one: review 54, F2).
+    fn linuxcnc_plane_refusal(
+        &self,
+        words: &Written<'_>,
+        runs: Option<i64>,
+    ) -> Option<(String, u8)> {
+        if matches!(runs, Some(50 | 51)) && !self.linuxcnc_feed_mode_unsure() {
+            let state = &self.machine.state;
+            match state.feed_mode {
+                93 if !words.has(b'F') => {
+                    return Some((
+                        "F word missing with inverse time arc move (rs274ngc): under G93 each \
+                         spline block gives its own F"
+                            .into(),
+                        b'G',
+                    ));
+                }
+                94 if state.feed.is_none_or(|f| f.is_zero()) && !state.is_unknown(b'F') => {
+                    return Some((
+                        "Cannot make arc with zero feed rate (rs274ngc): a spline feeds at the \
+                         F in force, and none is (F0, or none since the start or the last \
+                         G93-G95)"
+                            .into(),
+                        b'G',
+                    ));
+                }
+                _ => {}
+            }
+        }
         if self.linuxcnc_plane_unknown {
             return None;
         }
@@ -3823,7 +3857,7 @@ mod tests {
             ("G18\nG41.1 D1\nG18\nG40", &[]),
             ("G41.1 D1\nG17.1", &["5: G17.1, G18.1 and G19.1 have no cutter radius compensation"]),
             ("G41.1 D1\nG1 X5\nG5.1 X1 I1 J1", &["6: Cannot convert spline with cutter radius compensation"]),
-            ("G41.1 D1\nG1 X5\nG5 X2 Y2 I1 J0 P1 Q1 G40", &[]),
+            ("G41.1 D1\nG1 X5 F100\nG5 X2 Y2 I1 J0 P1 Q1 G40", &[]),
             ("G41.1 D1\nG28.1", &["5: Cannot set reference point with cutter compensation in effect"]),
             ("G41.1 D1\nG40 G30.1", &[]),
             // after a call the checker does not follow, the compensation is not known
@@ -3887,6 +3921,37 @@ mod tests {
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
+        }
+    }
+
+    /// Review 54, F4 (c101, c102): rs274 checks a spline's feed before its plane
+    /// (interp_convert.cc convert_spline), G94's zero feed rate and G93's block without F;
+    /// under G95 none. Each compared with rs274 -g (tests/test_oracle_rs274.py).
+    #[test]
+    fn linuxcnc_spline_feed_checked_before_its_plane_as_rs274() {
+        let zero = "Cannot make arc with zero feed rate";
+        let inverse = "F word missing with inverse time arc move";
+        let cases: &[(&str, Option<&str>)] = &[
+            // none since the start (rs274 starts at F0), F0, a G94 since the last F
+            ("G5 X3 Y2 I1 J0 P1 Q1", Some(zero)),
+            ("F100\nF0\nG5.1 X3 Y2 I1 J1", Some(zero)),
+            ("F100\nG94\nG5.1 X3 Y2 I1 J1", Some(zero)),
+            ("G93\nG5 X3 Y2 I1 J0 P1 Q1", Some(inverse)),
+            ("G93 F100\nG5.1 X3 Y2 I1 J1", Some(inverse)),
+            // the feed before the plane: G18 is refused for its feed
+            ("G93 G18\nG5 X3 Y2 I1 J0 P1 Q1", Some(inverse)),
+            ("G18\nG5 X3 Y2 I1 J0 P1 Q1", Some(zero)),
+            // quiet: the block's own F, under G93 too; G95 checks no feed; an F the checker
+            // cannot evaluate
+            ("G5 X3 Y2 I1 J0 P1 Q1 F100", None),
+            ("G93\nG5.1 X3 Y2 I1 J1 F2", None),
+            ("G95\nG5 X3 Y2 I1 J0 P1 Q1", None),
+            ("G5 X3 Y2 I1 J0 P1 Q1 F#<_rate>", None),
+        ];
+        for (body, expected) in cases {
+            let line = 3 + body.matches('\n').count() + 1;
+            let want: Vec<String> = expected.iter().map(|e| format!("{line}: {e}")).collect();
+            assert_eq!(refused(body), want, "{body}");
         }
     }
 
