@@ -45,7 +45,9 @@ the axis words of both programs are compared as positions: the difference carrie
 words before is added, so that a conversion that keeps the exact absolute path (and may change an
 increment by a step to do so) compares the same, and a step lost on the way does not. A code,
 a selector and a number a cycle's table makes a count (``G81 ... K3``, three holes; ``G70 P60``)
-are compared exactly, with no steps: a length format's step is no unit of a count.
+are compared exactly, with no steps: a length format's step is no unit of a count. A cycle's
+number that measures (a drilling cycle's dwell P, a time as G04's P; LinuxCNC G76's Q and R)
+is compared within the tolerance.
 
 Blocks are paired by sequence number or by position (:class:`DiffOptions.pair`):
 

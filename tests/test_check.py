@@ -1470,6 +1470,10 @@ def test_a_repeat_count_that_is_no_whole_number_is_a_warning_at_the_word(profile
 @pytest.mark.parametrize(("source", "block", "word"), [
     ("fanuc-mill", "G91 X10. K2.5", "K2.5"),
     ("fanuc-mill", "G91 G81 X10. Y0 Z-5. R2. K2.5 F100.", "K2.5"),
+    # a FANUC G73/G83's K is its count beside I or J too, with a point or without (review
+    # 56a, F3, F8)
+    ("fanuc-mill", "G91 G83 X10. Y0 Z-5. R2. I1. J0.5 K2.5 F100.", "K2.5"),
+    ("fanuc-mill", "G91 G73 X10. Y0 Z-5. R2. Q1. K0.5 F100.", "K0.5"),
     ("haas-mill", "G91 X10. L2.5", "L2.5"),
 ])
 def test_a_repeat_count_that_is_no_whole_number_is_not_converted(tmp_path, source, block, word):
@@ -1489,6 +1493,34 @@ def test_a_repeat_count_that_is_no_whole_number_is_not_converted(tmp_path, sourc
     kept = convert(f"G91 X10. {letter}0")
     assert kept.exit_code == 0, kept.output
     assert f"{letter}0\n" in kept.output
+
+
+@pytest.mark.parametrize("k", ["K3", "K3."])
+def test_a_fanuc_peck_cycle_s_k_is_its_count_beside_i_and_j(tmp_path, k):
+    """Review 56a, F3: a FANUC's G73/G83 has no I or J peck words (0i-MF, 30i-MB: G83 X Y Z R Q
+    F K); its K is the repeat count whether or not the block writes them. `convert --units
+    inch --verify` scaled `K2` beside I and J as a length, K0.0001, and verify passed it,
+    while the checker (TG544 on K0.002) and the FANUC count the holes. Now the converter
+    keeps the count as written, verify holds it to its bytes, and the checker counts the
+    holes, no TG544 (three 635 mm apart span more than the travel: TG601). A Haas's K there
+    stays the least peck depth, a length, scaled."""
+    path = tmp_path / "p.nc"
+    path.write_text("%\nO1000\nG21 G17 G90 G54\nG0 X-300. Y0 Z10. S1000 M3\n"
+                    f"G91 G83 X635. Z-5. R-3. I1. J0.5 {k} F100.\nG90 G80\nM30\n%\n")
+    out = run("convert", str(path), "--from", "fanuc-mill", "--to", "fanuc-mill", "--units",
+              "inch", "--verify", "-o", "-")
+    assert out.exit_code == 0, out.output
+    assert f"G91 G83 X25. Z-0.1968 R-0.1181 I0.0394 J0.0197 {k} F3.937\n" in out.output
+    found = [(f.rule, f.line) for f in check_text(path.read_text(), load_profile("fanuc-mill"))
+             if f.rule in ("TG544", "TG601")]
+    assert found == [("TG601", 5)]
+    haas = tmp_path / "h.nc"
+    haas.write_text("%\nO1000\nG20 G17 G90 G54\nG0 X0 Y0 Z0.4 S1000 M3\n"
+                    "G83 X1. Z-0.5 R0.1 I0.1 J0.02 K0.05 F10.\nG80\nM30\n%\n")
+    out = run("convert", str(haas), "--from", "haas-mill", "--to", "haas-mill", "--units",
+              "metric", "--verify", "-o", "-")
+    assert out.exit_code == 0, out.output
+    assert "G83 X25.4 Z-12.7 R2.54 I2.54 J0.508 K1.27 F254.\n" in out.output
 
 
 def test_a_return_to_a_block_is_searched_in_a_main_program_only():

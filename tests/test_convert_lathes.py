@@ -100,7 +100,8 @@ def test_a_haas_lathe_peck_s_least_depth_converts_as_a_length(tmp_path):
     """Haas lathe G83's K is the optional minimum depth of cut, a length, with or without I
     and J (Haas lathe operator's manual, G83 "End face peck drilling"): K0.05 inch is 1.27 mm
     in both blocks, not a FANUC repeat count kept as written (review 55a, F8); a FANUC lathe's
-    G83 K is its number of repeats and stays as written."""
+    G83 K is its number of repeats and stays as written, beside I and J too, which its G83 has
+    not (0i-TF; review 56a, F3)."""
     text = ("%\nO1\nG20 G99\nG00 X0 Z0.2\nG83 Z-1. R0.1 Q0.1 K0.05 F0.005\nG80\n"
             "G83 Z-1. R0.1 I0.1 J0.02 K0.05 F0.005\nG80\nM30\n%\n")
     out = convert(tmp_path, text, "haas-lathe", "metric")
@@ -108,6 +109,8 @@ def test_a_haas_lathe_peck_s_least_depth_converts_as_a_length(tmp_path):
     assert "G83 Z-25.4 R2.54 I2.54 J0.508 K1.27 F0.127\n" in out
     fanuc = "%\nO1\nG20 G99\nG00 X0 Z0.2\nG83 Z-1. R0.1 Q1000 K3 F0.005\nG80\nM30\n%\n"
     assert " K3 " in convert(tmp_path, fanuc, "fanuc-lathe", "metric")
+    beside = fanuc.replace("Q1000 K3", "I0.1 J0.02 K3")
+    assert " J0.508 K3 " in convert(tmp_path, beside, "fanuc-lathe", "metric")
 
 
 HAAS_ROUGHING = ("%\nO1\nG20 G99\nG00 X2.1 Z0.1\nG71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n"
@@ -129,10 +132,8 @@ def test_a_haas_one_block_cycle_s_depth_is_not_rounded_away(tmp_path):
     # an OSP mill's cycle E: no mill manual at hand
     ("okuma-mill", "$A.MIN%\nG21\nG00 X0 Y0\nG82 X30. Y10. Z-10. R3. E0.5 F100.\nM02\n",
      (4, 25), "E0.5: the source control's manual"),
-    # a mill's G73 K with a point is no FANUC repeat count (on a Haas it is the least peck
-    # depth, a length, and converted: tests/test_check.py, review 51 F15)
-    ("fanuc-mill", "%\nO1\nG20\nG00 X0 Y0 Z1.\nG73 X2. Y2. Z-1. R0.1 Q0.1 K0.5 F10.\nG80\nM30\n%\n",
-     (5, 28), "K0.5: the source control's manual"),
+    # (a FANUC mill's G73 `K0.5` is its repeat count, no whole number: refused as such,
+    # tests/test_check.py, review 56a F3; on a Haas the least peck depth, converted)
     # Haas M19 R: the orientation angle by what is known of the manual, no page at hand
     ("haas-mill", "%\nO1\nG20\nM19 R90.\nM30\n%\n", (4, 5), "R90.: the source control's"),
     # a lathe's C beside X in G01, no C axis shown: a chamfer or a move of C

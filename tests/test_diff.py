@@ -229,25 +229,61 @@ def test_a_cycle_s_repeat_count_is_compared_as_a_count(tmp_path):
                     "b_value": "4"}
 
 
-def test_a_peck_depth_k_is_one_reading_for_the_words_and_the_motion(tmp_path):
-    """Review 55a, F4: a G73/G83 that writes I or J takes K as its least peck depth (the Haas
-    form), no repeat count, by the checker's one rule (`Meanings::cycle_count`); the modal
-    state's own reading asks it too, so `diff --motion` says K is a length (one step of K's
-    format) and follows no count of holes (before: X 20 mm -> 30 mm, three holes). The
-    position after the block is then not known, as the checker leaves it."""
+def test_a_fanuc_k_is_one_count_for_the_words_and_the_motion(tmp_path):
+    """Review 56a, F3 and F8: a FANUC's G73/G83 has no I or J peck words (0i-MF, 30i-MB: X Y Z
+    R Q F K), so its K is the repeat count whether or not the block writes them, and with a
+    point too (`K3.` three holes, as the checker counts it): `diff --motion` compares it as a
+    count, exactly and without steps, and follows as many holes. On a Haas the G83's K is the
+    least peck depth, a length in steps of K's format, and counts no holes (its count is L)."""
     head = "%\nO2020\nG21 G17 G90 G54\nG00 X0 Y0 Z5. S1000 M03\n"
     block = "G91 G99 G83 X10. Z-5. R-3. I1. J0.5 K{} F100.\n"
     tail = "G90 G80\nM30\n%\n"
-    a = write(tmp_path, "a.nc", head + block.format(2) + tail)
-    b = write(tmp_path, "b.nc", head + block.format(3) + tail)
-    found, _ = differences(a, b, motion=True)
-    assert [(d.a.line, d.details()) for d in found] == [(5, ["K2 -> K3 (+0.001 mm, +1 step)"])]
-    # without I and J the same K is the FANUC's count: three holes, X 30 mm after them
-    c = write(tmp_path, "c.nc", head + block.format(2).replace(" I1. J0.5", "") + tail)
-    d = write(tmp_path, "d.nc", head + block.format(3).replace(" I1. J0.5", "") + tail)
-    found, _ = differences(c, d, motion=True)
+    for two, three in (("2", "3"), ("2.", "3.")):
+        a = write(tmp_path, "a.nc", head + block.format(two) + tail)
+        b = write(tmp_path, "b.nc", head + block.format(three) + tail)
+        for tolerance in (Decimal(0), Decimal(1000)):
+            found, _ = differences(a, b, motion=True, tolerance=tolerance)
+            assert [(d.a.line, d.details()) for d in found] == [
+                (5, [f"K{two} -> K{three}", "then position X 20 mm -> 30 mm"])]
+            assert [c.steps for c in found[0].words] == [None]
+        # without I and J alike
+        c = write(tmp_path, "c.nc", head + block.format(two).replace(" I1. J0.5", "") + tail)
+        d = write(tmp_path, "d.nc", head + block.format(three).replace(" I1. J0.5", "") + tail)
+        found, _ = differences(c, d, motion=True)
+        assert [(d.a.line, d.details()) for d in found] == [
+            (5, [f"K{two} -> K{three}", "then position X 20 mm -> 30 mm"])]
+    haas = ("%\nO2020\nG20 G17 G90 G54\nG00 X0 Y0 Z0.2 S1000 M03\n"
+            "G91 G99 G83 X1. Z-0.2 R-0.1 I0.1 J0.02 K{} F10.\nG90 G80\nM30\n%\n")
+    a = write(tmp_path, "ha.nc", haas.format("0.05"))
+    b = write(tmp_path, "hb.nc", haas.format("0.06"))
+    haas_mill = load_profile("haas-mill")
+    found, _ = differences(a, b, haas_mill, haas_mill, motion=True)
     assert [(d.a.line, d.details()) for d in found] == [
-        (5, ["K2 -> K3", "then position X 20 mm -> 30 mm"])]
+        (5, ["K0.05 -> K0.06 (+0.254 mm, +100 steps)"])]
+
+
+def test_a_drilling_cycle_s_dwell_is_compared_as_a_time(tmp_path):
+    """Review 56a, F5: a drilling cycle's dwell P (FANUC `G82 ... P500`, 500 ms) is a time,
+    compared as G04's P is, in seconds and within the tolerance; LinuxCNC G76's Q (the compound
+    slide angle) and R (the depth degression) are numbers within the tolerance too. A true
+    count stays exact: G76's H (spring passes), a repeat count (test above)."""
+    head = "%\nO2002\nG21 G90 G17\nG00 X0. Y0. Z50.\nS1200 M03\n"
+    for block in ("G99 G82 X10. Y0. Z-5. R3. P{} F100.", "G04 P{}"):
+        a = write(tmp_path, "a.nc", head + block.format(500) + "\nG80\nM30\n%\n")
+        b = write(tmp_path, "b.nc", head + block.format(501) + "\nG80\nM30\n%\n")
+        found, _ = differences(a, b)
+        assert [d.details() for d in found] == [["P500 -> P501 (+0.001, +1 step)"]], block
+        assert differences(a, b, tolerance=Decimal(1))[0] == []
+    thread = "G21 G18 G90\nG0 X10 Z5\nG76 P1.5 Z-20 I-0.5 J0.2 K1.0 R1.5 Q{} H{} E0.5 L2\nM2\n"
+    a = write(tmp_path, "a.ngc", thread.format("29.5", 2))
+    b = write(tmp_path, "b.ngc", thread.format("29.5001", 2))
+    c = write(tmp_path, "c.ngc", thread.format("29.5", 3))
+    linuxcnc = load_profile("linuxcnc")
+    found, _ = differences(a, b, linuxcnc, linuxcnc)
+    assert [d.details() for d in found] == [["Q29.5 -> Q29.5001 (+0.0001, +100 steps)"]]
+    assert differences(a, b, linuxcnc, linuxcnc, tolerance=Decimal(100))[0] == []
+    found, _ = differences(a, c, linuxcnc, linuxcnc, tolerance=Decimal(1000))
+    assert [d.details() for d in found] == [["H2 -> H3"]]
 
 
 # -- errors and the command line ----------------------------------------------------------------

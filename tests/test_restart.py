@@ -2666,16 +2666,16 @@ def test_a_spindle_speed_limit_is_restored_as_a_limit_and_a_speed_as_a_speed():
 @pytest.mark.parametrize(("profile", "block", "x"), [
     ("fanuc-mill", "G91 G99 G81 X10. Z-5. R-3. K3 F100.", Decimal(30)),
     ("fanuc-mill", "G91 G99 G73 X10. Z-5. R-3. Q1. K3 F100.", Decimal(30)),
-    ("fanuc-mill", "G91 G99 G83 X10. Z-5. R-3. I1. J0.5 K3 F100.", None),
+    ("fanuc-mill", "G91 G99 G83 X10. Z-5. R-3. I1. J0.5 K3 F100.", Decimal(30)),
+    ("fanuc-mill", "G91 G99 G83 X10. Z-5. R-3. I1. J0.5 K3. F100.", Decimal(30)),
     ("haas-mill", "G91 G99 G81 X10. Z-5. R-3. L3 F100.", Decimal(30)),
     ("haas-mill", "G91 G99 G83 X10. Z-5. R-3. Q1. K3 F100.", Decimal(10)),
 ])
 def test_the_modal_machine_counts_a_cycle_s_repeats_as_the_checker_does(profile, block, x):
     """Review 55a, F4: the modal machine on its own (the plot, `postproc.state`) counts a
-    canned cycle's holes by the rule the checker asks: a FANUC's K without a point (three
-    holes, X 30 mm), but not the K of a G73/G83 that writes I or J (a peck depth: the count
-    not known, and X with it), and on a Haas its L, never its G83's K (the least peck depth:
-    one hole)."""
+    canned cycle's holes by the rule the checker asks: a FANUC's K (three holes, X 30 mm),
+    beside a G73/G83's I and J too, which a FANUC's G73/G83 has not, and with a point (review
+    56a, F3, F8), and on a Haas its L, never its G83's K (the least peck depth: one hole)."""
     machine = run(load_profile(profile),
                   ["G21 G17 G90 G54", "G00 X0 Y0 Z5. S1000 M03", block])
     assert machine.state.position.get("X") == x

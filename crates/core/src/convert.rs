@@ -4654,7 +4654,6 @@ impl Converter {
         let Some((count, to)) = self.c.cycle_repeats else {
             return Ok(());
         };
-        let from = count == b'K';
         if self.c.lathe {
             return Ok(());
         }
@@ -4662,11 +4661,9 @@ impl Converter {
         if !(self.cycle_code.is_some_and(cycle) || gs.iter().copied().any(cycle)) {
             return Ok(());
         }
-        // (a Haas's G73/G83 K is a length, its count L; a FANUC's G73/G83 K with a point is
-        // the meaning table's unknown word, refused as such: `code_meanings`)
-        let code = gs.iter().copied().find(|&g| cycle(g)).or(self.cycle_code);
-        let peck_k = from && matches!(code, Some(73 | 83));
-        let fraction = b.words.iter().filter(|_| !peck_k).find(|w| {
+        // (a Haas's G73/G83 K is a length, its count L; a FANUC's G73/G83 K is its count,
+        // with a point or without, beside I or J too: review 56a, F3, F8)
+        let fraction = b.words.iter().find(|w| {
             w.token[0].eq_ignore_ascii_case(&count)
                 && std::str::from_utf8(&w.token[1..])
                     .ok()
@@ -8255,6 +8252,25 @@ pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
     }
 }
 
+/// The letters (bit `letter - b'A'`) of a block under cycles `gs` (its own codes and the one
+/// in force, system A numbers) that the cycle tables make a number but that measure rather
+/// than count: a drilling cycle's dwell P, a time ([`dwell_cycle`]; FANUC `G82 ... P500`,
+/// 500 ms, as G04's P), and LinuxCNC G76's Q, the compound slide angle, and R, the depth
+/// degression (LinuxCNC G-code reference, G76). The diff compares them as numbers, within
+/// its tolerance (review 56a, F5); a true count (K or L repeats, a block number, G76's H
+/// spring passes) stays exact. The cycle table still gives them their role: the converter
+/// keeps them as written and the checker reads them whole.
+pub fn cycle_measures(family: Family, lathe: bool, gs: &[i64]) -> u32 {
+    let bit = |letter: u8| 1u32 << (letter - b'A');
+    gs.iter().fold(0, |bits, &g| {
+        bits | match g {
+            76 if family == Family::LinuxCnc => bit(b'Q') | bit(b'R'),
+            _ if dwell_cycle(lathe, g) => bit(b'P'),
+            _ => 0,
+        }
+    })
+}
+
 /// The canned drilling cycle (its system A number) in force after a block whose G codes (read
 /// in system A numbers) are `gs` and M codes `ms`, `before` the one in force before it. A
 /// block under it that names no cycle repeats it at a new position, with the words it changes
@@ -8403,24 +8419,24 @@ where
 
 /// The letters (bit `letter - b'A'`) a block's cycle makes a count ([`block_meanings`],
 /// [`crate::meaning::Meanings::cycle_count`]) among those of its word `tokens` written
-/// without a point, the modal state's own reading (restart, plot, the diff's motion:
-/// [`crate::word::Numbers::block_values`]); `cycle` the one in force before the block. The
-/// control's family and whether it is a Haas are the settings' (a machine's modal settings
-/// and its checker's are one profile's, `machine::Machine::new`).
+/// without a point, and its K however written, the modal state's own reading (restart,
+/// plot, the diff's motion: [`crate::word::Numbers::block_values`]); `cycle` the one in
+/// force before the block. The control's family and whether it is a Haas are the settings'
+/// (a machine's modal settings and its checker's are one profile's, `machine::Machine::new`).
 /// Only a block with such a word under a cycle, or with G or M codes, is read for them.
 pub fn block_counts(settings: &ModalSettings, cycle: Option<i64>, tokens: &[&[u8]]) -> u32 {
-    let (mut letters, mut pointless) = (0u32, 0u32);
+    let (mut letters, mut asked) = (0u32, 0u32);
     for token in tokens {
         let w = Word::new(token, 0);
         if w.letter.is_ascii_uppercase() {
             letters |= 1 << (w.letter - b'A');
-            if !w.point && !w.number.is_empty() {
-                pointless |= 1 << (w.letter - b'A');
+            if !w.number.is_empty() && (!w.point || w.letter == b'K') {
+                asked |= 1 << (w.letter - b'A');
             }
         }
     }
     let codes = 1 << (b'G' - b'A') | 1 << (b'M' - b'A');
-    if pointless & !codes == 0 || (cycle.is_none() && letters & codes == 0) {
+    if asked & !codes == 0 || (cycle.is_none() && letters & codes == 0) {
         return 0;
     }
     let words = tokens.iter().map(|token| {
@@ -8429,7 +8445,7 @@ pub fn block_counts(settings: &ModalSettings, cycle: Option<i64>, tokens: &[&[u8
     });
     let meanings = block_meanings(settings, (settings.family, settings.haas), cycle, words);
     (0..26u8)
-        .filter(|&i| pointless & 1 << i != 0 && meanings.cycle_count(b'A' + i))
+        .filter(|&i| asked & 1 << i != 0 && meanings.cycle_count(b'A' + i))
         .fold(0u32, |bits, i| bits | 1 << i)
 }
 
@@ -8585,10 +8601,10 @@ fn cycle_table(
             74 | 82 | 84 | 86 | 88 | 89 => set(b"P", number),
             _ => {}
         }
-        // a mill's canned cycle: K the number of repeats (FANUC 0i-MF operator's manual,
-        // canned cycles, "K: number of repeats"), but where the block writes I or J: a Haas
-        // G73/G83's I J K are the first, reducing and least peck depths, lengths; Haas G84
-        // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
+        // a mill's canned cycle: K the number of repeats on a FANUC (0i-MF operator's
+        // manual, canned cycles, "K: number of repeats"); a Haas G73/G83's I J K are the
+        // first, reducing and least peck depths, lengths; Haas G84 J the retract multiple
+        // (J2: twice as fast, Haas mill operator's manual, G84)
         match g {
             // a Haas's repeat count is L ("L: number of holes", Haas mill operator's manual,
             // G81-G89), its G73/G83's K the least peck depth, a length, in a block of hole
@@ -8604,13 +8620,19 @@ fn cycle_table(
                 }
             }
             73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB && haas != Some(true) => {
-                if matches!(g, 73 | 83) && has_point(b'K') && !(has(b'I') || has(b'J')) {
-                    // a K with a point is no FANUC repeat count (a whole number): a Haas
-                    // G73's depth after which the tool returns to R, by what is known of its
-                    // manual, no page of which was at hand: unknown, refused under a change
-                    // of units
+                if matches!(g, 73 | 83) && haas.is_none() {
+                    // either control of the language: a Haas G73/G83's K is the least peck
+                    // depth, a length, a FANUC's the repeat count: not known which, refused
+                    // under a change of units rather than guessed (review 56a, F3)
                     set(b"K", Role::Parameter);
-                } else if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
+                } else {
+                    // a FANUC's K is the repeat count in every cycle, whether or not the
+                    // block writes I or J (0i-MF / 30i-MB, G73 and G83: X Y Z R Q F K, no I
+                    // or J peck words; review 56a, F3: `I1. J0.5 K2` was converted as a
+                    // length, K0.0001 in inch, where the checker and the FANUC count two
+                    // holes), and with a point too: `K3.` is three, as the checker reads it
+                    // (no source at hand says otherwise; review 56a, F8), and a K that is no
+                    // whole count is TG544 and refused by the converter
                     set(b"K", number);
                 }
                 if (g == 84 || g == 74) && haas != Some(false) {
@@ -8625,15 +8647,13 @@ fn cycle_table(
             // cycles reads K, and none counts repeats in it (review 55a F8: `G83 Z-1. R0.1
             // Q0.1 K0.05` kept K unscaled under a change of units, as a FANUC count)
             83 if lathe && family == Family::MacroB && haas == Some(true) => set(b"K", length),
-            // a lathe's drilling cycles G83-G89: K the number of repeats (FANUC 0i-TF,
-            // "Canned cycle for drilling": "K: number of repeats"), but where the block writes
-            // I or J (the Haas form above)
-            83..=89
-                if lathe
-                    && family == Family::MacroB
-                    && haas != Some(true)
-                    && !(g == 83 && (has(b'I') || has(b'J'))) =>
-            {
+            // a lathe's drilling cycles G83-G89: K the number of repeats on a FANUC (0i-TF,
+            // "Canned cycle for drilling": "K: number of repeats"), whether or not the block
+            // writes I or J, which its G83 has not (review 56a, F3); on either control of
+            // the language a G83's K (a Haas's least peck depth, above) is refused under a
+            // change of units rather than guessed
+            83 if lathe && family == Family::MacroB && haas.is_none() => set(b"K", Role::Parameter),
+            83..=89 if lathe && family == Family::MacroB && haas != Some(true) => {
                 set(b"K", number);
             }
             10 => set(b"PL", number), // G10 L2 P1: the offset's number; R the value, a length
@@ -10193,26 +10213,9 @@ mod tests {
         // a mill's G76 Q is a shift written as a length; ISO 6983-1 has no cycle table
         let mill = cycle_roles(Family::MacroB, false, &[76], &[], &spans(&["G76", "Q1."]));
         assert_eq!(mill[slot(b'Q')], Some(Role::Length));
-        // a mill's G73/G83 K: a count of repeats, but with a point (Haas) unknown
-        let count = cycle_roles(
-            Family::MacroB,
-            false,
-            &[73],
-            &[],
-            &spans(&["G73", "Q1.", "K3"]),
-        );
-        assert_eq!(count[slot(b'K')], Some(Role::Other));
-        let depth = cycle_roles(
-            Family::MacroB,
-            false,
-            &[73],
-            &[],
-            &spans(&["G73", "Q1.", "K.5"]),
-        );
-        assert_eq!(depth[slot(b'K')], Some(Role::Parameter));
-        // a lathe's drilling cycles: K a count, Q a count of increments or, with a point, a length
+        // a lathe's drilling cycles: Q a count of increments or, with a point, a length (K:
+        // the_k_of_a_drilling_cycle_is_the_fanuc_s_count_the_haas_s_depth_or_unknown)
         let lathe = roles(&[83], &["G83", "Z-20.", "Q5000", "K1"]);
-        assert_eq!(lathe[slot(b'K')], Some(Role::Other));
         assert_eq!(lathe[slot(b'Q')], Some(Role::Increments));
         assert_eq!(
             roles(&[83], &["G83", "Q2.5"])[slot(b'Q')],
@@ -10526,6 +10529,48 @@ mod tests {
         assert!(run(fanuc(true), &["G21", "U1. W2.", "M99"]).is_ok());
     }
 
+    /// Review 56a, F3 and F8: a FANUC's G73/G83 K is its repeat count whether or not the block
+    /// writes I or J (its G73/G83 have none: 0i-MF, 30i-MB) and with a point or without, on a
+    /// mill and on a lathe; a Haas's the least peck depth, a length; on either control of the
+    /// language (not known which) a G73/G83's K is refused under a change of units
+    /// (`Role::Parameter`), whatever else the block writes. A FANUC's other cycles count in K
+    /// too; a Haas's G81 reads no K.
+    #[test]
+    fn the_k_of_a_drilling_cycle_is_the_fanuc_s_count_the_haas_s_depth_or_unknown() {
+        let k = |haas: Option<bool>, lathe: bool, g: i64, words: &[&'static str]| {
+            let spans = spans(words);
+            let tokens = spans.iter().map(|w| (w.token[0], &w.token[1..]));
+            code_meanings_of(Family::MacroB, haas, lathe, &[g], &[], tokens).role(b'K')
+        };
+        let blocks: [&[&'static str]; 5] = [
+            &["G83", "Z-5.", "R-3.", "Q1.", "K3"],
+            &["G83", "Z-5.", "R-3.", "I1.", "J0.5", "K2"],
+            &["G83", "Z-5.", "R-3.", "J0.5", "K2"],
+            &["G83", "Z-5.", "R-3.", "I1.", "J0.5", "K3."],
+            &["G83", "Z-5.", "R-3.", "Q1.", "K.5"],
+        ];
+        for lathe in [false, true] {
+            for words in blocks {
+                let count = Some(Role::Other);
+                assert_eq!(k(Some(false), lathe, 83, words), count, "{lathe} {words:?}");
+                let length = Some(Role::Length);
+                assert_eq!(k(Some(true), lathe, 83, words), length, "{lathe} {words:?}");
+                let unknown = Some(Role::Parameter);
+                assert_eq!(k(None, lathe, 83, words), unknown, "{lathe} {words:?}");
+            }
+        }
+        for haas in [Some(false), None] {
+            let g73 = ["G73", "Z-5.", "R-3.", "I1.", "K2"];
+            let expected = [Some(Role::Other), Some(Role::Parameter)][usize::from(haas.is_none())];
+            assert_eq!(k(haas, false, 73, &g73), expected, "{haas:?}");
+            assert_eq!(
+                k(haas, false, 81, &["G81", "Z-5.", "K3"]),
+                Some(Role::Other)
+            );
+        }
+        assert_eq!(k(Some(true), false, 81, &["G81", "Z-5.", "K3"]), None);
+    }
+
     /// A FANUC or Haas control's modal settings, as far as [`block_counts`] asks them.
     fn macro_b(haas: bool, fanuc_lathe: bool) -> ModalSettings {
         ModalSettings {
@@ -10552,10 +10597,10 @@ mod tests {
 
     /// Review 55a, F4: the modal state's own reading counts a cycle's repeats by the one rule
     /// the checker asks (`Meanings::cycle_count` of [`block_meanings`]), the cycle in force
-    /// read into a block of hole positions: a FANUC mill's K without a point is the count,
-    /// but not a G73/G83's K beside I or J (a peck depth), nor a Haas's K (its count is L,
-    /// its G73/G83 K a length), nor a K outside a cycle, nor one a lathe's cycle in force is
-    /// not read into.
+    /// read into a block of hole positions: a FANUC mill's K is the count, beside I or J and
+    /// with a point too (review 56a, F3, F8), but not a Haas's K (its count is L, its
+    /// G73/G83 K a length), nor a K outside a cycle, nor one a lathe's cycle in force is not
+    /// read into.
     #[test]
     fn the_modal_reading_counts_a_cycle_s_k_as_the_checker_does() {
         let k = 1 << (b'K' - b'A');
@@ -10567,13 +10612,14 @@ mod tests {
         for (cycle, line, counted) in [
             (None, "G91 G81 X10. Z-5. R-3. K3 F100.", true),
             (None, "G91 G73 X10. Z-5. R-3. Q1. K3 F100.", true),
-            (None, "G91 G83 X10. Z-5. R-3. I1. J0.5 K2 F100.", false),
-            (None, "G91 G73 X10. Z-5. R-3. J0.5 K2 F100.", false),
+            (None, "G91 G83 X10. Z-5. R-3. I1. J0.5 K2 F100.", true),
+            (None, "G91 G73 X10. Z-5. R-3. J0.5 K2 F100.", true),
+            (None, "G91 G83 X10. Z-5. R-3. I1. J0.5 K3. F100.", true),
             (Some(81), "X10. K3", true),
             (Some(81), "G17 X10. K4", true),
             (Some(83), "G91 X10. K4", true),
             (Some(81), "G01 X10. K4", false),
-            (Some(81), "X10. K3.", false),
+            (Some(81), "X10. K3.", true),
             (None, "X10. K3", false),
             (None, "G18 G02 X0.02 Z0 I0.01 K3 F100.", false),
         ] {

@@ -248,9 +248,15 @@ pub struct BlockValues {
     /// increments read 0.003 ([`ModalMachine::cycle_repeats`]). Set by the modal state's own
     /// reading alone ([`crate::word::Numbers::block_values`], which resets it), where the
     /// rule the checker asks says K counts (`meaning::Meanings::cycle_count`: not a Haas
-    /// G73/G83's least peck depth, nor a G73/G83 K beside I or J): the checker reads a count
+    /// G73/G83's least peck depth, nor a K outside a cycle): the checker reads a count
     /// by its block's codes, and leaves it None (no cost on its path).
     pub k_whole: Option<Dec>,
+    /// The block's first K is no count by the rule the checker asks (a K the modal state's
+    /// own reading found in no count role, with a point or without: review 56a, F8, `K3.`
+    /// was counted where the rule made it none), so a FANUC cycle's holes are not repeated
+    /// by it ([`ModalMachine::cycle_repeats`]). Set by the modal state's own reading alone,
+    /// as [`BlockValues::k_whole`] is; the checker leaves it false.
+    pub k_no_count: bool,
     /// The block's M02/M30 may not run (LinuxCNC: one inside an o-word condition or loop, or
     /// in a subroutine's definition): the lines after it run only where it did not, so it
     /// resets nothing ([`ModalMachine::apply`]).
@@ -272,6 +278,7 @@ impl Default for BlockValues {
             unknown: 0,
             end_unsure: false,
             k_whole: None,
+            k_no_count: false,
         }
     }
 }
@@ -1457,6 +1464,9 @@ impl ModalMachine {
             .cycle_repeat_letter(self.settings.haas)?;
         if v.unknown & bit(letter) != 0 {
             return Some(None);
+        }
+        if letter == b'K' && v.k_no_count {
+            return None; // (one hole: the K is no count here)
         }
         let n = match v.k_whole.filter(|_| letter == b'K') {
             Some(n) => n,

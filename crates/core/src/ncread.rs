@@ -567,9 +567,15 @@ impl Reader {
         // letter another role (a macro call's arguments are its macro's)
         let macro_call =
             self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66);
+        // (but a time or an angle the table makes a number, a dwell's P, LinuxCNC G76's Q and
+        // R: compared within the tolerance, as G04's P is; review 56a, F5)
+        let measures = crate::convert::cycle_measures(family, lathe, &with_cycle);
         let counts = (0..26usize)
             .filter(|&i| {
-                !macro_call && cycle_roles[i] == roles[i] && meanings.cycle_count(b'A' + i as u8)
+                !macro_call
+                    && cycle_roles[i] == roles[i]
+                    && measures & 1 << i == 0
+                    && meanings.cycle_count(b'A' + i as u8)
             })
             .fold(0u32, |bits, i| bits | 1 << i);
         let absolute = gs.contains(&53);
@@ -1154,9 +1160,12 @@ impl Reader {
             // LinuxCNC's polar radius `@` is a length in the plane's units, read as X is; a
             // number that is no length (G68 R) counts an A word's increment (0.001 deg), where
             // the control reads increments, as the converter reads it
+            // (a dwell's time, G04's or a drilling cycle's, is no angle)
+            let time = flags.dwell && self.settings.modal.dwell.contains(&letter)
+                || letter == b'P' && self.dwell_cycle;
             let angle = role == Some(Role::Other)
                 && !count
-                && !(flags.dwell && self.settings.modal.dwell.contains(&letter))
+                && !time
                 && self.settings.reads_increments(letter);
             // a length of a cycle or a code whose letter's format is a whole number's (Okuma
             // `H03`, Haas `Q05`, `D09`) is read by the lengths' format, as the converter

@@ -472,7 +472,8 @@ impl<'a> Numbers<'a> {
     /// is left out, as the checker reports it. `counts`: the letters (bit `letter - b'A'`)
     /// the block's cycle makes a count, by the one rule the checker asks too
     /// (`convert::block_counts`, which this leaf module cannot name): a K among them is kept
-    /// whole as well ([`BlockValues::k_whole`]).
+    /// whole as well ([`BlockValues::k_whole`]), and a K not among them, with a point or
+    /// without, counts nothing ([`BlockValues::k_no_count`]).
     pub fn block_values(
         &self,
         tokens: &[&[u8]],
@@ -482,6 +483,7 @@ impl<'a> Numbers<'a> {
     ) {
         out.clear();
         out.k_whole = None;
+        out.k_no_count = false;
         for token in tokens {
             let w = Word::new(token, 0);
             if w.number.is_empty() || !w.index.is_empty() {
@@ -514,6 +516,12 @@ impl<'a> Numbers<'a> {
                             n
                         }
                     });
+                    out.set_default(b'K', value);
+                }
+                b'K' => {
+                    if out.get(b'K').is_none() {
+                        out.k_no_count = counts & 1 << (b'K' - b'A') == 0;
+                    }
                     out.set_default(b'K', value);
                 }
                 letter => out.set_default(letter, value),
@@ -922,7 +930,9 @@ mod tests {
     /// FANUC's `K3` is 0.003 as a length) and the block's cycle makes K its count, its number
     /// written without a point is also kept whole, a canned cycle's repeat count; K with a
     /// point, a second K, a profile that reads K whole, or a K the cycle makes no count
-    /// (review 55a, F4: a G83's least peck depth beside I and J) keep none.
+    /// (review 55a, F4: a Haas G83's least peck depth) keep none. A first K the cycle makes
+    /// no count, with a point or without, is marked so (`k_no_count`, review 56a, F8), one
+    /// it counts is not.
     #[test]
     fn block_values_keep_a_pointless_k_whole_where_k_counts_increments() {
         let formats = vec![(b'K', fmt(5, 3))];
@@ -939,6 +949,16 @@ mod tests {
             let of = |d: Option<Dec>| d.map(|d| d.to_string());
             (of(out.get(b'K')), of(out.k_whole))
         };
+        let no_count = |counts: u32, tokens: &[&[u8]]| {
+            let mut out = BlockValues::default();
+            fanuc.block_values(tokens, (Units::Metric, Units::Metric), counts, &mut out);
+            out.k_no_count
+        };
+        assert!(!no_count(k_count, &[b"G81", b"K3."]) && !no_count(k_count, &[b"K3"]));
+        assert!(no_count(0, &[b"G83", b"K3."]) && no_count(0, &[b"G83", b"K3"]));
+        assert!(!no_count(0, &[b"G83", b"X1."]));
+        // the first K decides, as its value does
+        assert!(!no_count(k_count, &[b"K3.", b"K4"]));
         let some = |a: &str, b: &str| (Some(a.to_string()), Some(b.to_string()));
         assert_eq!(k(&fanuc, k_count, &[b"G81", b"K3"]), some("0.003", "3"));
         assert_eq!(k(&fanuc, k_count, &[b"G81", b"K03"]), some("0.003", "3"));
