@@ -545,15 +545,65 @@ def _on_base(data: dict[str, Any], source: str, seen: tuple[str, ...] = ()) -> d
         if key == "base":
             continue
         if key in _MERGED_TABLES and isinstance(value, dict) and isinstance(merged.get(key), dict):
-            table = {**merged[key], **value}
-            if key == "codes":
-                for code, spec in value.items():
-                    if spec is False:
-                        del table[code]
-            merged[key] = table
+            merged[key] = (_merged_codes(merged[key], value) if key == "codes"
+                           else {**merged[key], **value})
         else:
             merged[key] = value
     return merged
+
+
+# The meaning keys that say a code turns a spindle (crates/core check::turning_codes)
+_TURNING = frozenset({"spindle-cw", "spindle-ccw", "spindle-cw-coolant-on",
+                      "spindle-ccw-coolant-on", "live-tool-cw", "live-tool-ccw"})
+
+
+def spindle_notes(profile: Profile) -> list[str]:
+    """What a profile's spindle codes leave out, for ``tapegate profiles show``: a modal M03 or
+    M04 (ISO 6983-1's and every builder's spindle start) without a meaning key that turns a
+    spindle is not one to the checker, so ``M03 M04`` is TG308, a warning, where a keyed
+    one's is TG304, and the restart does not read it (review 56a F1: a profile of one's own
+    is written without a base, whose keys it would keep)."""
+    notes: list[str] = []
+    if profile.dialect.family == "iso":
+        # (ISO 6983-1 keeps every pair of one group TG304, and its table keys no code)
+        return notes
+    for number, key in ((3, "spindle-cw"), (4, "spindle-ccw")):
+        code = profile.code("M", number)
+        if (code is not None and code.duration not in ("", "TBO")
+                and code.meaning not in _TURNING):
+            said = f"meaning {code.meaning!r}" if code.meaning else "no meaning"
+            notes.append(
+                f"M{number:02d} ({code.function}) is in modal group {code.duration} with "
+                f"{said}: the checker does not take it to turn a spindle (two codes of its "
+                f"group in a block a warning, TG308, not TG304) and a restart does not restore "
+                f"it; if it starts the spindle, give it meaning = \"{key}\" "
+                f"(docs/profiles.md, \"Code meanings\")")
+    return notes
+
+
+def _code_name(key: str) -> str:
+    """A ``[codes]`` key as the code it names: ``M3`` and ``M03`` are one code."""
+    return key[0] + str(int(key[1:])) if key[1:].isdigit() else key
+
+
+def _merged_codes(base: dict[str, Any], own: dict[str, Any]) -> dict[str, Any]:
+    """A base's ``[codes]`` with a profile's entries: each replaces the base's entry of the
+    same code (``M3`` or ``M03``), and ``false`` drops it; an entry that sets no ``meaning``
+    keeps the base's. The meaning keys are what says which codes turn a spindle (TG304 for
+    ``M03 M04``, the restart's spindle), so rewording a builder's ``function`` must not drop
+    them silently (review 56a F1); ``meaning = ""`` drops one on purpose."""
+    names = {_code_name(code): code for code in base}
+    table = dict(base)
+    for code, spec in own.items():
+        old = names.get(_code_name(code))
+        previous = table.pop(old) if old is not None else None
+        if spec is False:
+            continue
+        if (isinstance(spec, dict) and "meaning" not in spec and isinstance(previous, dict)
+                and "meaning" in previous):
+            spec = {**spec, "meaning": previous["meaning"]}
+        table[code] = spec
+    return table
 
 
 class Keys:

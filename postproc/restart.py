@@ -230,7 +230,9 @@ class _Facts:
     side_move: tuple[int, str] | None
     # a lathe's last M code the profile's list lacks since the tool change: (line, code)
     builder_m: tuple[int, int] | None
-    spin_line: int  # the last M03/M04's line (0: none)
+    spin_line: int  # the last M03/M04's line (0: none), or of a keyed start (M13)
+    # the keyed start other than M03/M04 in force (``spindle-cw-coolant-on``): (line, code)
+    turned_by: tuple[int, int] | None
     coolant_line: int  # the last M07/M08's line (0: none)
     unset: set[str]  # the axes whose number is no place to go to (a Haas lathe's Y after G113)
 
@@ -267,6 +269,7 @@ class _Facts:
             oriented=facts["oriented"], oriented_since=facts["oriented_since"],
             side_move=facts["side_move"],
             builder_m=facts["builder_m"], spin_line=facts["spin_line"],
+            turned_by=facts["turned_by"],
             coolant_line=facts["coolant_line"],
             unset=set(facts["unset"]),
         )
@@ -399,6 +402,7 @@ class _Planner:
         self.block = block
         self.file = file
         self.state = walker.state
+        stopped = False  # by a mill's M06
         if walker.family in ("fanuc", "haas") and not walker.lathe and facts.m6_line:
             # a mill's M06 stops the spindle and the coolant (Haas mill manual, NGC, "M06 Tool
             # Change"; a FANUC's is the builder's macro, which does so on the machines at
@@ -406,8 +410,14 @@ class _Planner:
             # finding 1: a probe loaded by T20 M06 was spun at the last tool's S8000)
             if facts.spin_line < facts.m6_line:
                 self.state = replace(self.state, spindle="stop")
+                stopped = True
             if facts.coolant_line < facts.m6_line:
                 self.state = replace(self.state, coolant="off")
+        # a start the profile keys (a builder's M13, spindle and coolant, `meaning =
+        # "spindle-cw-coolant-on"`): the modal state follows M03-M05 alone, the preamble
+        # starts the spindle by the program's own code (review 56a F9)
+        self.turn_code = (facts.turned_by[1] if facts.turned_by is not None and not stopped
+                          else None)
         # a lathe's cycle returns to its start point: that is where the tool is
         self.state.position.update(facts.held)
         self.units = self.state.units
@@ -512,6 +522,16 @@ class _Planner:
             first_m19 = walk.oriented_since or at
             earlier = (f" (the spindle oriented since line {first_m19})" if first_m19 != at
                        else "")
+            listed = self.profile.code("M", code)
+            if listed is not None and listed.meaning == "spindle-to-axis-mode":
+                # (840D sl Function Manual S1: M70 switches the spindle to axis mode, position
+                # control, its C moved as an axis; M3 M4 M5 back to speed control)
+                raise self.refuse(
+                    f"M{code:02d} on line {at} switched the spindle to axis mode (position "
+                    "control, moved as a rotary axis) and no M03, M04 or M05 has come since: "
+                    "the preamble would start it turning, and the program's moves of that axis "
+                    f"meet a turning spindle or alarm; restart at or before line {at}, or after "
+                    "the M03 or M04 that starts the spindle again")
             raise self.refuse(f"M{code:02d} on line {at} oriented the spindle (stopped at a fixed "
                               f"angle){earlier} and no M03, M04 or M05 has come since: the "
                               "preamble would start it with the spindle mode of before, or "
@@ -519,6 +539,7 @@ class _Planner:
                               f"static tool fed); restart at or before line {first_m19}, or after "
                               "the M03 or M04 that starts the spindle again")
         self.check_live_tool()
+        self.check_builder_start()
         if s.compensation in (41, 42):
             raise self.refuse(f"inside cutter compensation G{s.compensation} (from line "
                               f"{walk.comp_line}); restart at a block after the G40 that "
@@ -598,9 +619,9 @@ class _Planner:
                 f"the program moved {axis} on line {at} and has not started the main spindle "
                 "(M03, M04) since: the work of a live tool at an angle of C (or at a Y), whose "
                 "drive and C axis (Cs) mode this control switches by the machine builder's M "
-                "codes (TG307), which the preamble cannot restore (only haas-lathe's are "
-                "known); restart at a block before the program switches them on, or after the "
-                "M03 or M04 that starts the main spindle again")
+                "codes (TG307), which the preamble cannot restore (only haas-lathe's and "
+                "okuma-lathe's are known); restart at a block before the program switches them "
+                "on, or after the M03 or M04 that starts the main spindle again")
         carried = (s.spindle in ("cw", "ccw") and change is not None
                    and walk.spin_line < change)
         if walk.builder_m is not None and carried and not starts:
@@ -632,6 +653,26 @@ class _Planner:
                 "(Cs) mode, which this control switches by the machine builder's M codes "
                 "(TG307), the preamble cannot restore; restart at or before "
                 f"{where}, or after the M03 or M04 that starts the main spindle")
+
+    def check_builder_start(self) -> None:
+        """A FANUC or Haas mill whose spindle is stopped (by M05, or by the M06 of a tool
+        change) where an M code the profile's list lacks came after: a builder's M13 starts the
+        spindle with the coolant, a code the preamble cannot know, so the program's cut would
+        meet the work with the spindle stopped (review 56a F9). A profile that keys such a code
+        (``meaning = "spindle-cw-coolant-on"``) has it restored instead."""
+        walk = self.walk
+        if (self.walker.lathe or walk.builder_m is None or self.state.spindle != "stop"
+                or self.turn_code is not None):
+            return
+        at, code = walk.builder_m
+        if at < (walk.m6_line or 0) or self.block_starts_spindle():
+            return
+        raise self.refuse(
+            f"the spindle is stopped and M{code:02d} on line {at}, an M code the profile's list "
+            "lacks, came after: it may start the spindle (a builder's M13: spindle and coolant), "
+            "which the preamble cannot know or restore; restart at or before line "
+            f"{at}, or after the M03 or M04 that starts the spindle (or key the code in the "
+            "profile: meaning = \"spindle-cw-coolant-on\", docs/profiles.md)")
 
     def loaded_tool_length(self) -> bool:
         """LinuxCNC's G43 without H applies the length of the tool in the spindle (rs274ngc
@@ -738,7 +779,9 @@ class _Planner:
             if s.spindle_mode == 96 or self.listed(97):
                 spindle.append(f"G{s.spindle_mode}")
             spindle.append(self.word("S", s.speed))
-        if s.spindle != "stop":
+        if self.turn_code is not None:
+            spindle.append(f"M{self.turn_code:02d}")
+        elif s.spindle != "stop":
             spindle.append("M03" if s.spindle == "cw" else "M04")
         if spindle:
             out.append(" ".join(spindle))
@@ -1309,6 +1352,10 @@ class _Planner:
         fields = ["plane", "units", "feed_units", "incremental", "feed_mode", "spindle_mode",
                   "speed", "speed_limit", "spindle", "coolant", "compensation",
                   "length_offset", "cycle"]
+        if self.turn_code is not None:
+            # (the modal state follows M03-M05 alone: the keyed start the preamble writes is
+            # the program's own code, which it reads as no spindle code)
+            fields.remove("spindle")
         if not self.walker.lathe:
             fields.append("offset")  # a lathe's D is a cycle's depth of cut
         if self.walk.m6 is not None or self.walk.t_token is not None:

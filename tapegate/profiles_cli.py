@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 # lark's classification grammar is imported by `classify` alone (start-up)
-from formats.profile import builtin_names, builtin_text, load_profile
+from formats.profile import builtin_names, builtin_text, load_profile, spindle_notes
 from tapegate.common import table, user_errors
 
 
@@ -51,3 +51,5 @@ def profiles_show(name: str) -> None:
     click.echo(text, nl=False)
     if not text.strip():
         click.echo(f"{name}: an empty profile: every setting at its default", err=True)
+    for note in spindle_notes(prof):
+        click.echo(f"{name}: {note}", err=True)

@@ -283,6 +283,19 @@ def test_two_spindle_codes_in_a_block_are_refused_where_the_ladder_picks(profile
     ("sinumerik-840d", sinumerik("S1000 M3 M1=4"), "TG304"),
     ("sinumerik-840d", sinumerik("M1=4 M3"), "TG304"),
     ("sinumerik-840d", sinumerik("M5 M1=19"), "TG308"),
+    # after the program's own SETMS(2) the plain address is spindle 2's (Programming Manual
+    # Fundamentals, "Main spindle, master spindle"); SETMS alone returns to the machine data's
+    # (review 56a F2)
+    ("sinumerik-840d", sinumerik("SETMS(2)\nM3 S2000 M2=4"), "TG304"),
+    ("sinumerik-840d", sinumerik("SETMS(2)\nSETMS\nM3 S2000 M1=4"), "TG304"),
+    ("sinumerik-840d", sinumerik("SETMS(2)\nM5 M2=70"), "TG308"),
+    # a master the checker cannot read: refused, saying so
+    ("sinumerik-840d", sinumerik("SETMS(R9)\nM3 S2000 M2=4"), "TG304"),
+    ("sinumerik-840d", sinumerik("SETMS(R9)\nM3 S2000 M1=5"), "TG304"),
+    # extension 0 is the master spindle: M0=3 is the plain M3 (H2; review 56a F7)
+    ("sinumerik-840d", sinumerik("M0=3 M4 S1000"), "TG304"),
+    ("sinumerik-840d", sinumerik("M0=3 M1=4"), "TG304"),
+    ("sinumerik-840d", sinumerik("M0=5 M0=70"), "TG308"),
 ])
 def test_a_spindle_pair_is_refused_only_where_one_code_turns_it(profile, program, rule):
     other = "TG308" if rule == "TG304" else "TG304"
@@ -301,6 +314,82 @@ def test_the_plain_and_spindle_1s_codes_name_the_master_spindle_setting():
     for quiet in ("S1000 M3 M2=4", "M2=5 M4", "M3 M1=3", "M1=3 M2=4 M3"):
         assert not {r for r, *_ in found(sinumerik(quiet), "sinumerik-840d")} & {
             "TG304", "TG308"}, quiet
+
+
+def test_after_setms_the_plain_codes_are_the_named_spindles():
+    """Review 56a F2: a turn-mill program's own `SETMS(2)` makes spindle 2 the master, so
+    `M3 M1=5` (the tool spindle on, the main spindle stopped) is two spindles' and no
+    conflict, as is `M1=70 M3`; the message of a conflict says which spindle is the master
+    and why. `M0=3` is the plain M3 and no index out of range (review 56a F7)."""
+    program = sinumerik("SETMS(2)\nM3 S2000 M1=5\nG1 X10 F100\nM1=70 M3 S2000\nSETMS")
+    assert not {r for r, *_ in found(program, "sinumerik-840d")} & {"TG304", "TG308"}
+    hits = fired(sinumerik("SETMS(2)\nM3 S2000 M2=4"), "sinumerik-840d", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
+    assert ("of one spindle: the master spindle, the plain M function's, is spindle 2 since "
+            "the SETMS on line 3;") in hits[0][2]
+    hits = fired(sinumerik("SETMS(R9)\nM3 S2000 M1=5"), "sinumerik-840d", "TG304")
+    assert ("which spindle is the master, the plain M function's, is not known since the "
+            "SETMS on line 3 (an argument the checker cannot read), so it may be spindle 1"
+            ) in hits[0][2]
+    assert not {r for r, *_ in found(sinumerik("M0=3 S1000"), "sinumerik-840d")} & {
+        "TG206", "TG304", "TG307"}
+
+
+SPINDLE_BASE = 'base = "fanuc-mill"\n[codes]\n'
+
+
+def test_a_code_reworded_on_a_base_keeps_the_bases_meaning(tmp_path: Path):
+    """Review 56a F1: an entry of `[codes]` on a base replaces the base's, but keeps its
+    `meaning` unless it sets one (`meaning = ""` drops it), whichever spelling names the code
+    (`M3`, `M03`): a builder's wording of M03/M04 keeps them spindle starts, so `M03 M04` stays
+    TG304; `false` still drops the code."""
+    def pair(profile_text: str) -> list[str]:
+        path = tmp_path / "p.toml"
+        path.write_text(profile_text)
+        return [f.rule for f in check_text(fanuc("S1000 M03 M04"), load_profile(str(path)))
+                if f.rule in ("TG304", "TG308")]
+
+    for code in ("M03", "M3"):
+        reworded = (SPINDLE_BASE + f'{code} = {{ function = "spindle CW (ours)", '
+                    'duration = "spindle" }\n')
+        assert pair(reworded) == ["TG304"], code
+        assert load_profile(str(tmp_path / "p.toml")).code("M", 3).function == "spindle CW (ours)"
+    dropped = SPINDLE_BASE + ('M03 = { function = "ours", duration = "spindle", meaning = "" }\n'
+                              'M04 = { function = "ours", duration = "spindle", meaning = "" }\n')
+    assert pair(dropped) == ["TG308"]
+    assert load_profile(str(tmp_path / "p.toml")).code("M", 3).meaning == ""
+    other = SPINDLE_BASE + 'M03 = { function = "ours", duration = "spindle", meaning = "x-y" }\n'
+    assert pair(other) == ["TG304"]  # (M04 keeps the base's spindle-ccw)
+    assert load_profile(str(tmp_path / "p.toml")).code("M", 3).meaning == "x-y"
+    gone = SPINDLE_BASE + "M3 = false\n"
+    pair(gone)
+    assert load_profile(str(tmp_path / "p.toml")).code("M", 3) is None
+
+
+def test_a_profile_whose_m03_turns_nothing_is_said_by_profiles_show(tmp_path: Path):
+    """Review 56a F1: a profile of one's own (no base) whose M03/M04 have no spindle key makes
+    `M03 M04` a warning only; `tapegate profiles show` says so, naming the key to give. The
+    built-in profiles say nothing (ISO 6983-1's keep every pair TG304)."""
+    from click.testing import CliRunner
+
+    from formats.profile import builtin_names, spindle_notes
+    from tapegate.profiles_cli import profiles
+
+    own = ('name = "own"\ndialect = "fanuc"\ncode_table = "own"\n[codes]\n'
+           'G00 = { function = "rapid", duration = "motion" }\n'
+           'M03 = { function = "spindle cw", duration = "spindle" }\n'
+           'M04 = { function = "spindle ccw", duration = "spindle", meaning = "spindle-ccw" }\n'
+           'M05 = { function = "stop", duration = "spindle" }\n')
+    path = tmp_path / "own.toml"
+    path.write_text(own)
+    notes = spindle_notes(load_profile(str(path)))
+    assert len(notes) == 1
+    assert notes[0].startswith("M03 (spindle cw) is in modal group spindle with no meaning: ")
+    assert notes[0].endswith('give it meaning = "spindle-cw" (docs/profiles.md, "Code meanings")')
+    result = CliRunner().invoke(profiles, ["show", str(path)])
+    assert result.exit_code == 0
+    assert f"{path}: {notes[0]}" in result.output
+    assert [n for n in builtin_names() if spindle_notes(load_profile(n))] == []
 
 
 # (each built-in profile's form of a block, its start and its end)

@@ -2218,8 +2218,91 @@ def test_an_okuma_lathe_m_tool_spindle_in_force_refuses_the_restart():
             "G01 Z-10 F0.1\nG00 X100\n{off}G00 Z100\nM02\n")
     assert refusal(text.format(off=""), 10, okuma) == (
         "cannot restart here: M13 (M-tool spindle forward) from line 6 is in force and the "
-        "preamble cannot restore it; restart at or before line 6, or after the M12 that ends it")
+        "preamble cannot restore it; restart at or before line 6, or after the M12 and M109 that "
+        "end the modes")
     assert plan(text.format(off="M12\n"), 11, okuma).preamble
+
+
+OKUMA_C = ("$T.MIN%\nO1\nG50 S2000\nG00 X100 Z100\nG97 S800 M03\nG00 X50 Z5\nG01 Z-10 F0.1\n"
+           "G00 X100 Z100\nM05\nM110\nG00 C0\nM13 SB=1000\nG00 X52 Z-5\nG01 X40 F0.05\nG00 X52\n"
+           "G00 C90.\nG01 X40\nG00 X100\nM12\nM109\nG00 Z100\nG97 S800 M03\nG00 X50 Z5\n"
+           "G01 Z-20 F0.1\nM02\n")
+
+
+def test_an_okuma_lathe_c_axis_mode_in_force_refuses_the_restart_and_its_hint_is_accepted():
+    """Review 56a F4: the Okuma lathe's C-axis mode (List of M Codes: M110 on, M109 off) takes
+    the C axis's meaning keys, as haas-lathe's M154/M155: a restart right after M110 (`G00 C0`)
+    is refused, where it was planned with the C-axis mode off; the hint's first block (the
+    M110's own, line 10) is accepted, and the program's own spindle start after M109 too."""
+    okuma = load_profile("okuma-lathe")
+    assert okuma.code("M", 110).meaning == "c-axis-engage"
+    assert okuma.code("M", 109).meaning == "c-axis-disengage"
+    for line in range(11, 21):
+        said = refusal(OKUMA_C, line, okuma)
+        assert said == (
+            "cannot restart here: M110 (C-axis mode on) from line 10 is in force and the preamble "
+            "cannot restore it; restart at or before line 10, or after the M12 and M109 that end "
+            "the modes"), (line, said)
+    assert plan(OKUMA_C, 10, okuma).preamble
+    assert plan(OKUMA_C, 22, okuma).preamble
+
+
+SIN_AXIS = ("N10 G54 G17 G90 G71\nN20 T1 D1\nN30 M6\nN40 G0 X0 Y0 Z50 S1000 M3\nN50 G1 Z-5 F100\n"
+            "N60 G0 Z50\nN70 M70\nN80 G0 C90\nN90 G0 X10\nN100 M3 S1000\nN110 G1 X20 Z-5 F100\n"
+            "N120 G0 Z50\nN130 M30\n")
+
+
+def test_a_sinumerik_spindle_in_axis_mode_refuses_the_restart():
+    """Review 56a F6: M70 switches a SINUMERIK's spindle to axis mode (840D sl Function Manual
+    S1; the profile's `spindle-to-axis-mode`) until M3, M4 or M5: a restart there would start it
+    turning (`M03`) and run the program's C positioning against it, so it is refused as after an
+    orientation (M19), with a hint to a block that is accepted."""
+    sin = load_profile("sinumerik-840d")
+    for line in (8, 9, 10):
+        assert refusal(SIN_AXIS, line, sin) == (
+            "cannot restart here: M70 on line 7 switched the spindle to axis mode (position "
+            "control, moved as a rotary axis) and no M03, M04 or M05 has come since: the preamble "
+            "would start it turning, and the program's moves of that axis meet a turning spindle "
+            "or alarm; restart at or before line 7, or after the M03 or M04 that starts the "
+            "spindle again"), line
+    assert plan(SIN_AXIS, 7, sin).preamble
+    assert plan(SIN_AXIS, 11, sin).preamble
+
+
+M13_MILL = ("%\nO1\nG21 G17 G40 G49 G80 G90\nN50 T1 M06\nN60 G43 H1 Z50.\nN70 S1000 M13\n"
+            "N80 G00 X10. Y10.\nN90 G01 Z-5. F100.\nN100 G00 Z50.\nN110 M05\nN120 G00 X0 Y0\n"
+            "N130 M30\n%\n")
+
+
+def test_a_builders_spindle_start_is_restored_by_its_key_or_refused():
+    """Review 56a F9: a builder's M13 (spindle and coolant on) after the tool change: on a
+    profile that keys it (`spindle-cw-coolant-on`) the preamble restores the spindle by that
+    code, as the program started it; on one whose list lacks it (fanuc-mill: TG307) the restart
+    is refused, where it was planned with the spindle stopped and plunged. After the M05 that
+    stops it, nothing is restored; before the M13 the restart is planned as before."""
+    keyed = profile_from_text(
+        'base = "fanuc-mill"\n[codes]\n'
+        'M13 = { function = "spindle CW and coolant on", duration = "spindle", '
+        'meaning = "spindle-cw-coolant-on" }\n'
+        'M14 = { function = "spindle CCW and coolant on", duration = "spindle", '
+        'meaning = "spindle-ccw-coolant-on" }\n', "m13")
+    for line in (7, 8, 9):
+        restored = plan(M13_MILL, line, keyed).preamble
+        assert "G97 S1000 M13" in restored, (line, restored)
+        assert not any("M03" in b for b in restored), restored
+        assert refusal(M13_MILL, line, FANUC) == (
+            "cannot restart here: the spindle is stopped and M13 on line 6, an M code the "
+            "profile's list lacks, came after: it may start the spindle (a builder's M13: spindle "
+            "and coolant), which the preamble cannot know or restore; restart at or before line "
+            "6, or after the M03 or M04 that starts the spindle (or key the code in the profile: "
+            'meaning = "spindle-cw-coolant-on", docs/profiles.md)'), line
+    for profile in (keyed, FANUC):
+        assert not any("M13" in b or "M03" in b for b in plan(M13_MILL, 6, profile).preamble)
+        stopped = plan(M13_MILL, 11, profile).preamble
+        assert not any("M13" in b or "M03" in b for b in stopped), stopped
+    # a restart block that starts the spindle itself is not refused
+    started = M13_MILL.replace("N90 G01", "N90 M03 G01")
+    assert plan(started, 9, FANUC).preamble
 
 
 # -- review 35: the restart's safety faults ---------------------------------------------------

@@ -278,7 +278,8 @@ pub struct Walk {
     /// Per mode of [`Walk::m_modes`] switched on: where a restart can be made instead, for the
     /// refusal (the tool change before it, or the mode's own code, and the codes that end it).
     pub mode_hints: Vec<(&'static str, String)>,
-    /// The M codes of the profile's `spindle-orient` meaning (M19), set by the binding.
+    /// The M codes of the profile's `spindle-orient` meaning (M19), and of
+    /// `spindle-to-axis-mode` (a SINUMERIK's M70), set by the binding.
     pub orient_codes: Vec<i64>,
     /// The last spindle orientation in force (M19 on FANUC, Haas, OSP, SINUMERIK: "adjusts
     /// the spindle to a fixed position", Haas mill manual, "M19 Orient Spindle"): its line and
@@ -297,12 +298,20 @@ pub struct Walk {
     /// started (M03, M04): where a restart hint points after a C or Y move, whose way in is
     /// not known (review 37, finding 7).
     pub mode_since_spin: Option<usize>,
-    /// A lathe's last M code the profile's list lacks since the last tool change (line, code):
-    /// on a FANUC lathe the live tool drive and the C-axis (Cs) mode are the builder's M codes
-    /// (TG307), which the walk cannot name.
+    /// The last M code the profile's list lacks since the main spindle last started (line,
+    /// code): on a FANUC lathe the live tool drive and the C-axis (Cs) mode are the builder's
+    /// M codes (TG307), which the walk cannot name; on a mill it may be the builder's spindle
+    /// start (M13, spindle and coolant).
     pub builder_m: Option<(usize, i64)>,
-    /// The line of the last M03/M04 (0: none yet).
+    /// The line of the last M03/M04 (0: none yet), or of a code of `turn_codes`.
     pub spin_line: usize,
+    /// The M codes other than M03/M04 whose meaning key in the profile says they turn the
+    /// main spindle (`spindle-cw-coolant-on`: a builder's M13, spindle and coolant), set by
+    /// the binding.
+    pub turn_codes: Vec<i64>,
+    /// The code of `turn_codes` that last started the spindle, while no M03, M04 or M05 has
+    /// come since (line, code): the preamble restores the spindle by it (review 56a F9).
+    pub turned_by: Option<(usize, i64)>,
     /// The line of the last M07/M08 (0: none yet): a FANUC or Haas mill's M06 after it has
     /// stopped the coolant ([`RestartWalk::tool`]).
     pub coolant_line: usize,
@@ -580,6 +589,8 @@ impl Walk {
             mode_since_spin: None,
             builder_m: None,
             spin_line: 0,
+            turn_codes: Vec::new(),
+            turned_by: None,
             coolant_line: 0,
             unset: 0,
             polar_y: false,
@@ -1309,7 +1320,16 @@ impl Walk {
             } else if matches!(m, 3..=5) {
                 self.orientation_ended(line);
             }
-            if matches!(m, 3 | 4) {
+            let turns = self.turn_codes.contains(&m);
+            if matches!(m, 3..=5) || turns {
+                self.turned_by = turns.then_some((line, m));
+            }
+            if m == 5 && !self.lathe {
+                // (a mill's M05 stops what a builder's M13 started; a lathe's live tool or C
+                // axis mode stays)
+                self.builder_m = None;
+            }
+            if matches!(m, 3 | 4) || turns {
                 self.side_move = None;
                 self.mode_since_spin = None;
                 self.spin_line = line;
@@ -1385,7 +1405,9 @@ impl Walk {
             matches!(after.spindle, 3 | 4),
             after.length_offset,
         );
-        if self.lathe && self.m_modes.is_empty() {
+        // (a mill's too: a builder's M code after the tool change may start the spindle,
+        // review 56a F9)
+        if !self.lathe || self.m_modes.is_empty() {
             if let Some(lacks) = &self.lacks_m {
                 let builder = ms.iter().copied().rfind(|&m| {
                     usize::try_from(m)
@@ -2937,6 +2959,26 @@ mod tests {
         assert_eq!(walk.moves[0].motion, None);
         step_text(&mut walk, 6, b"M03", &lathe_state(40, -10, 0));
         assert_eq!((walk.side_move, walk.spin_line), (None, 6));
+    }
+
+    #[test]
+    fn a_keyed_start_is_the_spindles_until_m03_m04_or_m05_and_a_mills_builder_code_until_m05() {
+        // review 56a F9: a builder's M13 (spindle and coolant) keyed by the profile, and one
+        // the profile's list lacks
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        walk.turn_codes = vec![13];
+        step_text(&mut walk, 1, b"S1000 M13", &state());
+        assert_eq!((walk.turned_by, walk.spin_line), (Some((1, 13)), 1));
+        step_text(&mut walk, 2, b"G00 X1.", &state());
+        assert_eq!(walk.turned_by, Some((1, 13)));
+        step_text(&mut walk, 3, b"M05", &state());
+        assert_eq!(walk.turned_by, None);
+        let mut unlisted = Walk::new(Control::Fanuc, false, false);
+        unlisted.lacks_m = Some((0..100).map(|m| m == 13).collect());
+        step_text(&mut unlisted, 1, b"S1000 M13", &state());
+        assert_eq!(unlisted.builder_m, Some((1, 13)));
+        step_text(&mut unlisted, 2, b"M05", &state());
+        assert_eq!(unlisted.builder_m, None);
     }
 
     #[test]

@@ -132,8 +132,16 @@ impl RestartWalk {
                 _ => None,
             };
             let number = code.strip_prefix('M').and_then(|n| n.parse::<i64>().ok());
-            if let (Some(n), "spindle-orient") = (number, key.as_str()) {
+            // (a SINUMERIK's M70, the spindle to axis mode, holds as an orientation does: the
+            // spindle under position control until M3, M4 or M5; review 56a F6)
+            if let (Some(n), "spindle-orient" | "spindle-to-axis-mode") = (number, key.as_str()) {
                 walk.orient_codes.push(n);
+            }
+            // the main spindle's other starts (a builder's M13: spindle and coolant)
+            if let Some(n) = number.filter(|n| !matches!(n, 3 | 4) && m.check.turning.contains(n)) {
+                if key.starts_with("spindle-") && !walk.turn_codes.contains(&n) {
+                    walk.turn_codes.push(n);
+                }
             }
             if let (Some((name, on)), Some(n)) = (mode, number) {
                 walk.m_modes.push((n, name, on, function.clone()));
@@ -431,6 +439,7 @@ impl RestartWalk {
         )?;
         d.set_item("builder_m", w.builder_m)?;
         d.set_item("spin_line", w.spin_line)?;
+        d.set_item("turned_by", w.turned_by)?;
         d.set_item("coolant_line", w.coolant_line)?;
         let unset: String = AXES
             .iter()

@@ -53,6 +53,11 @@ impl Checker {
             }
             let Some(value) = self.readable[i] else {
                 if let Some((extension, code)) = self.extended_m_code(w, line) {
+                    if extension == 0 {
+                        // `M0=3`: the master spindle's, the plain `M3` (H2)
+                        self.plain_m_code(words, &mut groups, &spindles, i, code, line);
+                        continue;
+                    }
                     // one spindle's modal group: against the codes of the same extension
                     let mut same: Vec<(CodeRef, usize)> = spindles
                         .iter()
@@ -61,9 +66,9 @@ impl Checker {
                         .collect();
                     let before = same.len();
                     self.modal_group(words, &mut same, i, code, line);
-                    // spindle 1's, none of its group before: against the plain codes
-                    if extension == 1 && same.len() > before {
-                        self.master_spindle(words, &groups, i, code, line);
+                    // the master's (may be), none of its group before: against the plain codes
+                    if self.may_be_master(extension) && same.len() > before {
+                        self.master_spindle(words, &groups, extension, i, code, line);
                     }
                     spindles.push((extension, code, i));
                 }
@@ -82,17 +87,7 @@ impl Checker {
             };
             if facts.modal {
                 let code = CodeRef::Whole(w.letter, number);
-                let before = groups.len();
-                self.modal_group(words, &mut groups, i, code, line);
-                // (a SINUMERIK's spindle 1 codes before it, `M1=4 M3`: most blocks have none)
-                if !spindles.is_empty() && groups.len() > before {
-                    let first: Vec<(CodeRef, usize)> = spindles
-                        .iter()
-                        .filter(|&&(extension, _, _)| extension == 1)
-                        .map(|&(_, code, j)| (code, j))
-                        .collect();
-                    self.master_spindle(words, &first, i, code, line);
-                }
+                self.plain_m_code(words, &mut groups, &spindles, i, code, line);
             }
         }
         self.groups = groups;
@@ -106,6 +101,72 @@ impl Checker {
         }
     }
 
+    /// A plain code of word `i` (`M3`, or a SINUMERIK's `M0=3`, the same) against the block's
+    /// plain ones (`groups`), and where it is the first of its group, against the extended M
+    /// codes before it of the spindle that may be the master ([`Checker::may_be_master`]:
+    /// `M1=4 M3`).
+    fn plain_m_code(
+        &mut self,
+        words: &[Word<'_>],
+        groups: &mut Vec<(CodeRef, usize)>,
+        spindles: &[(u64, CodeRef, usize)],
+        i: usize,
+        code: CodeRef,
+        line: usize,
+    ) {
+        let before = groups.len();
+        self.modal_group(words, groups, i, code, line);
+        // (a SINUMERIK's spindle codes before it: most blocks have none)
+        if spindles.is_empty() || groups.len() == before {
+            return;
+        }
+        let found = spindles
+            .iter()
+            .find(|&&(extension, other, _)| {
+                self.may_be_master(extension)
+                    && group_of_code(&self.config, other) == group_of_code(&self.config, code)
+            })
+            .copied();
+        if let Some((extension, other, j)) = found {
+            self.master_spindle(words, &[(other, j)], extension, i, code, line);
+        }
+    }
+
+    /// Whether spindle `extension` may be the master spindle, the plain M function's
+    /// ([`Master`]): spindle 1 by the machine data, the one the program's `SETMS(n)` named, or
+    /// any where the checker cannot read which one a `SETMS` named.
+    fn may_be_master(&self, extension: u64) -> bool {
+        match self.master {
+            Master::MachineData => extension == 1,
+            Master::Set { spindle, .. } => extension == spindle,
+            Master::Unknown { .. } => true,
+        }
+    }
+
+    /// The master spindle a SINUMERIK's `SETMS` statement (`text`, on `line`) sets
+    /// (Programming Manual Fundamentals, "Main spindle, master spindle": `SETMS(<spindle
+    /// number>)` makes that spindle the master, `SETMS` alone returns to the machine data's):
+    /// an argument the checker cannot read as a spindle's number (`SETMS(R1)` with R1 not
+    /// set to a constant) leaves it unknown.
+    pub(super) fn set_master(&mut self, text: &[u8], line: usize) {
+        let end = crate::statement::ident_end(text, 0);
+        let inside = match text.get(end) {
+            Some(b'(') => text[end + 1..text.len().saturating_sub(1)].trim_ascii(),
+            _ => &[][..],
+        };
+        self.master = if inside.is_empty() {
+            Master::MachineData
+        } else {
+            match self.sinumerik_constant(inside) {
+                Some(n) if n.is_whole() && n > Dec::ZERO => Master::Set {
+                    spindle: u64::try_from(n.trunc()).unwrap_or(u64::MAX),
+                    line,
+                },
+                _ => Master::Unknown { line },
+            }
+        };
+    }
+
     /// A SINUMERIK's M function with an extended address, `M2=3` (spindle 2 turns clockwise;
     /// Programming Manual Fundamentals, "Extended addresses" and "M functions": the extension
     /// is the spindle's number, the value "an arithmetic expression"): its code, where the
@@ -114,7 +175,7 @@ impl Checker {
     /// The extension and the code, where it is modal, for the modal group of that one
     /// spindle: `M1=3 M1=4` conflict as `M3 M4` do, `M1=3 M2=4` are two spindles'. Not into
     /// the modal state: the spindle numbered is not the one the profile describes. An
-    /// extension out of range (`M0=77`) is TG206 alone, its code not checked; a code the
+    /// extension out of range (`M100=77`) is TG206 alone, its code not checked; a code the
     /// checker cannot tell is TG141's (`Checker::read_block`).
     fn extended_m_code(&mut self, w: &Word<'_>, line: usize) -> Option<(u64, CodeRef)> {
         if w.letter != b'M'
@@ -312,7 +373,7 @@ impl Checker {
         match found {
             Some((other, _)) if per_word && distance(other) && distance(code) => {}
             Some((other, j)) if other != code => {
-                self.group_conflict(words, (other, j), (code, i), line, false);
+                self.group_conflict(words, (other, j), (code, i), line, None);
             }
             Some(_) => {}
             None => groups.push((code, i)),
@@ -332,6 +393,7 @@ impl Checker {
         &mut self,
         words: &[Word<'_>],
         others: &[(CodeRef, usize)],
+        extension: u64,
         i: usize,
         code: CodeRef,
         line: usize,
@@ -346,7 +408,23 @@ impl Checker {
             })
             .copied();
         if let Some(other) = found {
-            self.group_conflict(words, other, (code, i), line, true);
+            let master = match self.master {
+                Master::MachineData => format!(
+                    " of one spindle where the master spindle, the plain M function's, is \
+                     spindle {extension} (machine data 20090 SPIND_DEF_MASTER_SPIND; a \
+                     one-spindle machine's)"
+                ),
+                Master::Set { spindle, line } => format!(
+                    " of one spindle: the master spindle, the plain M function's, is spindle \
+                     {spindle} since the SETMS on line {line}"
+                ),
+                Master::Unknown { line } => format!(
+                    " of what may be one spindle: which spindle is the master, the plain M \
+                     function's, is not known since the SETMS on line {line} (an argument the \
+                     checker cannot read), so it may be spindle {extension}"
+                ),
+            };
+            self.group_conflict(words, other, (code, i), line, Some(&master));
         }
     }
 
@@ -363,7 +441,7 @@ impl Checker {
         (other, j): (CodeRef, usize),
         (code, i): (CodeRef, usize),
         line: usize,
-        master: bool,
+        master: Option<&str>,
     ) {
         let group = group_of_code(&self.config, code).to_string();
         let m_code = matches!(code, CodeRef::Whole(b'M', _));
@@ -375,11 +453,8 @@ impl Checker {
             words[j].token(),
             words[i].token(),
         );
-        if master {
-            message.push_str(
-                " of one spindle where the master spindle, the plain M function's, is spindle 1 \
-                 (machine data 20090 SPIND_DEF_MASTER_SPIND; a one-spindle machine's)",
-            );
+        if let Some(master) = master {
+            message.push_str(master);
         }
         if spindle {
             message.push_str("; ");
@@ -477,6 +552,20 @@ impl Checker {
             self.report(rule, message, b.line, column);
         }
     }
+}
+
+/// Which spindle a SINUMERIK's plain M function addresses, the master spindle (Function
+/// Manual Basic Functions H2: an M function without an address extension, or with 0, is the
+/// master spindle's): machine data 20090 SPIND_DEF_MASTER_SPIND's until the program's
+/// `SETMS(n)` names another, and again after `SETMS` alone ([`Checker::set_master`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Master {
+    /// The machine data's, taken as spindle 1 (a one-spindle machine's).
+    MachineData,
+    /// The spindle a `SETMS(n)` on `line` named.
+    Set { spindle: u64, line: usize },
+    /// A `SETMS` on `line` whose argument the checker cannot read: any spindle may be it.
+    Unknown { line: usize },
 }
 
 /// The whole G and M codes of a block in their order ([`code_key`]), packed in a `u64`: what
@@ -792,6 +881,58 @@ mod tests {
         );
     }
 
+    /// The master spindle, the plain M function's, is the one the program's `SETMS(n)` names
+    /// (Programming Manual Fundamentals, "Main spindle, master spindle"), the machine data's
+    /// again after `SETMS` alone, and not known after a `SETMS` whose argument the checker
+    /// cannot read: then a plain code beside any spindle's of its group is refused, saying
+    /// so (issue 32, review 56a F2). `M0=3` is the plain M3 (H2, extension 0; review 56a F7).
+    #[test]
+    fn the_master_spindle_is_the_one_setms_names() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let found = sinumerik_codes;
+        let conflict = |line, column| vec![(Rule::ModalGroupConflict, line, column)];
+        let message = |body: &str| {
+            let said = findings(sinumerik(), &program(body), Rule::ModalGroupConflict);
+            assert_eq!(said.len(), 1, "{body}");
+            said[0].message.clone()
+        };
+        // spindle 2 the master: spindle 1's stop beside the master's start is two spindles'
+        for quiet in [
+            "SETMS(2)\nM3 S2000 M1=5",
+            "SETMS(2)\nM1=4 M3 S2000",
+            "R1=2\nSETMS(R1)\nM1=4 M3",
+            "SETMS(2)\nM0=3 M1=4",
+            "M0=3 M2=4",
+        ] {
+            assert_eq!(found(&format!("G0 X0\n{quiet}")), [], "{quiet}");
+        }
+        assert_eq!(found("G0 X0\nSETMS(2)\nM3 S2000 M2=4"), conflict(4, 10));
+        assert_eq!(found("G0 X0\nSETMS(2)\nM2=4 M3"), conflict(4, 6));
+        assert!(message("G0 X0\nSETMS(2)\nM3 M2=4").starts_with(
+            "M3 and M2=4 are both in modal group spindle of one spindle: the master spindle, \
+             the plain M function's, is spindle 2 since the SETMS on line 3; the NC decodes"
+        ));
+        // SETMS alone: the machine data's master again (spindle 1)
+        assert_eq!(found("G0 X0\nSETMS(2)\nSETMS\nM3 M1=4"), conflict(5, 4));
+        assert_eq!(found("G0 X0\nSETMS(2)\nSETMS()\nM3 M2=4"), []);
+        // a master the checker cannot read: any spindle may be it, refused saying so
+        for unknown in ["M3 M1=4", "M3 M2=4", "M7=4 M3"] {
+            let body = format!("G0 X0\nSETMS(R9)\n{unknown}");
+            assert_eq!(found(&body).len(), 1, "{unknown}");
+            assert_eq!(found(&body)[0].0, Rule::ModalGroupConflict, "{unknown}");
+        }
+        assert!(message("G0 X0\nSETMS(R9)\nM3 M2=4").contains(
+            "of what may be one spindle: which spindle is the master, the plain M function's, \
+             is not known since the SETMS on line 3 (an argument the checker cannot read), so \
+             it may be spindle 2;"
+        ));
+        // extension 0 is the plain address: the master spindle both ways
+        assert_eq!(found("G0 X0\nM0=3 M4 S1000"), conflict(3, 6));
+        assert_eq!(found("G0 X0\nM0=3 M0=4"), conflict(3, 6));
+        assert_eq!(found("G0 X0\nM0=3 M1=4"), conflict(3, 6));
+        assert_eq!(found("G0 X0\nM0=3 M3"), []);
+    }
+
     /// Which codes turn a spindle is the profile's meaning keys, compiled once
     /// ([`super::super::turning_codes`]), not a group's name: a pair of a group where one turns
     /// a spindle is TG304 on a FANUC, SINUMERIK or Okuma (the Okuma lathe's M-tool spindle
@@ -911,7 +1052,7 @@ mod tests {
         for code in ["R1=3\nM2=R1", "M2=+5", "M2=(4)"] {
             assert_eq!(found(&format!("G0 X0\n{code}")), [], "{code}");
         }
-        for unknown in ["M1=R9", "M1=-3", "M1=3.5", "R1=7\nM1=R1/2"] {
+        for unknown in ["M1=R9", "M0=R9", "M1=-3", "M1=3.5", "R1=7\nM1=R1/2"] {
             let line = 3 + unknown.matches('\n').count();
             assert_eq!(
                 found(&format!("G0 X0\n{unknown}")),
@@ -919,8 +1060,11 @@ mod tests {
                 "{unknown}"
             );
         }
+        // extension 0 is the master spindle's (H2): `M0=3` is the plain M3, `M0=77` the M77
+        assert_eq!(found("G0 X0\nM0=3"), []);
+        assert_eq!(found("G0 X0\nM0=77"), [(Rule::CodeNotInProfile, 3, 1)]);
         // an extension out of range: TG206 at the extension, alone (no TG307, no TG141)
-        for wrong in ["M0=77", "M0=R9", "M100=77", "M0=3"] {
+        for wrong in ["M100=77", "M100=R9", "M100=3"] {
             assert_eq!(
                 found(&format!("G0 X0\n{wrong}")),
                 [(Rule::IndexOutOfRange, 3, 2)],

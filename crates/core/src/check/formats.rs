@@ -173,8 +173,10 @@ impl Checker {
         } else {
             self.config.max_index
         };
-        // a SINUMERIK's R parameters count from R0 (machine data 28050)
-        let least = u64::from(!(letter == b'R' && self.config.family == Family::Sinumerik));
+        // a SINUMERIK's R parameters count from R0 (machine data 28050), and its M function's
+        // extension 0 is the master spindle (`M0=3`, Function Manual Basic Functions H2)
+        let least =
+            u64::from(!(matches!(letter, b'R' | b'M') && self.config.family == Family::Sinumerik));
         (n >= least && n <= most, least, most)
     }
 

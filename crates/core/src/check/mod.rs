@@ -811,6 +811,8 @@ pub struct Checker {
     arc_cause_said: bool,
     /// The first finding against a built-in profile's machine says its limits are a sample's.
     limits_hint_said: bool,
+    /// A SINUMERIK's master spindle, the plain M function's (`SETMS(2)`).
+    master: codes::Master,
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
@@ -1355,6 +1357,7 @@ impl Checker {
             passed: None,
             jump_left: None,
             no_feed_target: 0,
+            master: codes::Master::MachineData,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),
@@ -2338,7 +2341,7 @@ impl Checker {
                     && self.extended_m_number(w).is_none()
                 {
                     // M2=R1+R2: spindle 2's M function chosen by a value the checker cannot
-                    // evaluate, its code unknown (M0=R1: TG206 alone)
+                    // evaluate, its code unknown (M100=R1: TG206 alone)
                     first_unknown.get_or_insert(i);
                 }
                 continue;

@@ -314,7 +314,8 @@ impl Checker {
     /// unknown and the work offsets are no longer the profile's (TG140 names it, once per
     /// file, as for a call); after a kinematic transformation (`TRACYL(400)`) or the `TRAFOOF`
     /// that ends it the position is unknown, and between them the travel is not compared
-    /// ([`Checker::limits`]); after `SETMS` the speed is unknown; after a positioning axis's or
+    /// ([`Checker::limits`]); after `SETMS` the speed is unknown and the master spindle the
+    /// one it names ([`Checker::set_master`]); after a positioning axis's or
     /// a spindle's assignment (`POSA[X]=100`, `SPOS=90`) that axis is unknown
     /// ([`Checker::positioned`]). A variable a procedure takes
     /// as an argument may be one it writes (`READ(ERR,"F",1,1,_LINES)`, `GETSELT(_T)`): it is
@@ -336,6 +337,10 @@ impl Checker {
             let Some(group) = statement::sinumerik_instruction(&name) else {
                 continue;
             };
+            if group.effect == Effect::Spindle {
+                // (read before the arguments are forgotten: `SETMS(R1)`)
+                self.set_master(text, b.line);
+            }
             if group.arguments && text.get(end) == Some(&b'(') {
                 let inside = &text[end + 1..text.len().saturating_sub(1)];
                 for argument in super::params::split_arguments(inside) {
