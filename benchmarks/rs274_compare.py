@@ -782,13 +782,12 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "G18\n#<p>=[#5220+16]\nG#<p>\nG2 Y10 R10 F100\nM2\n", 0, "accepted"),
     ("spline after M72 restores G17",
      HEAD + "F100\nM70\nG18\nG1 X1 Z1\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
-    # review 55c, F6 (lcnc56): M72 restores the feed mode and the feed M70 saved
-    ("G1 after M72 restores the F0 M70 saved", HEAD + "M70\nF100\nM72\nG1 X1\nM2\n", 6,
-     "error"),
-    ("arc without F after M72 restores G93",
-     HEAD + "G93\nM70\nG94 F100\nM72\nG1 X1 F10\nG2 X2 Y0 R1\nM2\n", 8, "error"),
-    ("G1 after M72 restores G94 and its F from G95",
-     HEAD + "F100\nM70\nG95\nM72\nG1 X1\nM2\n", 0, "accepted"),
+    # review 56c, F2, F9: a spline after an M72, whose restored feed mode is not followed
+    ("spline under G93 after M72 restores G95",
+     HEAD + "F100\nM70\nG95 F0.1\nG93\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
+    ("spline under G93 after M72 restores the G95 of a known-true if",
+     HEAD + "o1 if [1]\nG95\no1 endif\nM70\nG93\nM72\nG5.1 X1 Y1 I1 J1\nM2\n", 0,
+     "accepted"),
     # review 55c, F7 (lcnc56): a call in a branch that ran leaves the elseif after it dead,
     # but not in a loop, whose next turn takes the else
     ("J centre in an elseif after a known-true if with a call",

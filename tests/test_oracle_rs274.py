@@ -47,8 +47,6 @@ BOTH = [
     "feed motion without feed",
     # F0 is no feed either (TG401): "Cannot do g1 / make arc with zero feed rate"
     "feed motion at F0",
-    # review 55c, F6: M72 restores the feed and the feed mode M70 saved (TG401, TG402)
-    "G1 after M72 restores the F0 M70 saved", "arc without F after M72 restores G93",
     # review 55c, F7: a loop's next turn takes the else after a branch with a call
     "J centre in the else of an if with a call, on a while's second turn",
     "arc at F0",
@@ -254,8 +252,9 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline after a while left by a break in G17",
        # review 55c, F6: M72 restores the plane M70 saved
        "spline after M72 restores G17",
-       # review 55c, F6: a G94 restored from G95 at another F keeps the saved F
-       "G1 after M72 restores G94 and its F from G95",
+       # review 56c, F2, F9: the feed mode an M72 restores is not followed
+       "spline under G93 after M72 restores G95",
+       "spline under G93 after M72 restores the G95 of a known-true if",
        # review 55c, F7: the elseif after a known-true branch with a call never runs
        "J centre in an elseif after a known-true if with a call",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known

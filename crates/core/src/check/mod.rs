@@ -1160,6 +1160,10 @@ pub struct Checker {
     /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
     /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
+    /// LinuxCNC: an M72 ran since the last G93/G94/G95: it restored the feed mode an M70 or
+    /// M73 saved, which the checker does not follow, so a spline's feed is not judged
+    /// (review 56c, F2, F9). The other feed refusals judge the mode the lines give, as before.
+    linuxcnc_mode_restored: bool,
     /// LinuxCNC: the main program's distance mode (G90/G91) not known here: after a call
     /// whose G90/G91 after its return the checker does not know ([`Checker::call_mode_lost`]),
     /// after the condition or loop a G90/G91 that changed it was written in closes, or an M72
@@ -1184,10 +1188,6 @@ pub struct Checker {
     /// LinuxCNC: the plane the main program's M70/M73 saved with it, which M72 restores
     /// ([`structure::PlaneAt`]; review 55c, F6).
     linuxcnc_plane_saved: structure::PlaneAt,
-    /// LinuxCNC: the feed mode, feed and speed the main program's M70/M73 saved, which M72
-    /// restores (`Checker::linuxcnc_saved_feed`); None where the save ran in a condition or
-    /// loop, or where the feed mode was not known.
-    linuxcnc_feed_saved: Option<structure::FeedSaved>,
     /// LinuxCNC: a main program's block with M72 and G53: whether G91 was surely in force
     /// before it, which rs274's G53 test reads (the M72 restores after it; review 50, F11).
     linuxcnc_g53_before: Option<bool>,
@@ -1459,12 +1459,12 @@ impl Checker {
             linuxcnc_skipping: None,
             linuxcnc_subs_defined: HashMap::new(),
             linuxcnc_mode_unsure: false,
+            linuxcnc_mode_restored: false,
             linuxcnc_distance_unsure: false,
             linuxcnc_distance_from: None,
             linuxcnc_distance_in: 0,
             linuxcnc_saved: structure::Saved::Empty,
             linuxcnc_plane_saved: structure::PlaneAt::UNKNOWN,
-            linuxcnc_feed_saved: None,
             linuxcnc_g53_before: None,
             linuxcnc_body_distance: Box::default(),
             linuxcnc_call_refused: Vec::new(),

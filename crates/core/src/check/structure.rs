@@ -307,12 +307,12 @@ impl Checker {
         self.linuxcnc_skipping = None;
         self.linuxcnc_subs_defined.clear();
         self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_mode_restored = false;
         self.linuxcnc_distance_unsure = false;
         self.linuxcnc_distance_from = None;
         self.linuxcnc_distance_in = 0;
         self.linuxcnc_saved = Saved::Empty;
         self.linuxcnc_plane_saved = PlaneAt::UNKNOWN;
-        self.linuxcnc_feed_saved = None;
         self.linuxcnc_g53_before = None;
         *self.linuxcnc_body_distance = BodyDistance::default();
         self.linuxcnc_call_refused.clear();
@@ -2678,7 +2678,6 @@ impl Checker {
         let flow = depth > 0;
         let before = mode;
         self.linuxcnc_saved_plane(&step, flow);
-        self.linuxcnc_saved_feed(step.m7, flow);
         match step.m7 {
             Some(70 | 73) => self.linuxcnc_saved.set(Saved::Valid(mode), flow),
             Some(71) => self.linuxcnc_saved.set(Saved::Empty, flow),
@@ -2739,93 +2738,6 @@ impl Checker {
                 self.linuxcnc_plane_set(at);
             }
             _ if step.unread_m => self.linuxcnc_plane_set(unknown),
-            _ => {}
-        }
-    }
-
-    /// LinuxCNC, a block of the main program: its M70/M73 saves the feed mode, the feed and
-    /// the speed with the rest of the modal state, its M72 restores them (interp_convert.cc
-    /// `save_settings`, `restore_settings`, `gen_settings`; review 55c, F6). rs274 restores
-    /// by running a block of the saved F and S and of each G code of the saved state that
-    /// differs from the one in force, in its order: the feed mode, then the F
-    /// (interp_execute.cc). LinuxCNC 2.9.0's `gen_settings` puts the F in that block only
-    /// where it differs from rs274's feed rate in force (a later LinuxCNC always does, issue
-    /// 1987), so a G94 or G95 restored, zeroing the feed rate, may leave it zero: `G94 F100`
-    /// / `M70` / `G93` / `M72` / `G1 X1` is "Cannot do g1 with zero feed rate" in `rs274 -g`.
-    /// Followed where both the save and the restore run surely (not in a condition or loop)
-    /// in a feed mode the checker knows: the saved mode is in force after M72 (`G93` / `M70`
-    /// / `G94 F100` / `M72` / `G2 ...` without F is "F word missing with inverse time arc
-    /// move"), and so is the saved speed. The feed: under the same mode the saved one (`G94`
-    /// / `M70` / `F100` / `M72` / `G1 X1` is "Cannot do g1 with zero feed rate"); a G93
-    /// restored keeps no F the blocks after it may use (each gives its own); a G94 or G95
-    /// restored from the other of the two the saved feed where it differs from the one in
-    /// force, zero where it is the same (`G94 F100` / `M70` / `G95` / `M72` / `G1 X1` runs at
-    /// F100); one restored from G93 zero where the saved feed was zero, and otherwise as
-    /// before the M72, the checker not holding rs274's feed rate in force to compare (its
-    /// G93 rate is the move's length times F). Elsewhere the M72 leaves them as they were.
-    fn linuxcnc_saved_feed(&mut self, m7: Option<u8>, flow: bool) {
-        let state = &self.machine.state;
-        let f_unknown = state.is_unknown(b'F');
-        let s_unknown = state.is_unknown(b'S');
-        match m7 {
-            Some(70 | 73) => {
-                self.linuxcnc_feed_saved =
-                    (!flow && !self.linuxcnc_mode_unsure).then_some(FeedSaved {
-                        mode: state.feed_mode,
-                        feed: state.feed,
-                        f_unknown,
-                        speed: state.speed,
-                        s_unknown,
-                        rate: self.linuxcnc_feed_rate,
-                    });
-            }
-            Some(72) => {
-                let Some(saved) = self.linuxcnc_feed_saved else {
-                    return;
-                };
-                if flow
-                    || self.linuxcnc_mode_unsure
-                    || !matches!(self.linuxcnc_saved, Saved::Valid(_))
-                {
-                    return;
-                }
-                let now = state.feed_mode;
-                let saved_zero = !saved.f_unknown && saved.feed.is_none_or(|f| f.is_zero());
-                let feed = if saved.mode == now {
-                    Some((saved.feed, saved.f_unknown, saved.rate))
-                } else if saved.mode == 93 {
-                    Some((None, false, self.linuxcnc_feed_rate))
-                } else if saved_zero {
-                    Some((None, false, super::tooling::LinuxCncFeed::Zero))
-                } else if now != 93 && !saved.f_unknown && !f_unknown {
-                    // (G94 and G95: rs274's feed rate is the F in force, zero where none is)
-                    let rate = |f: Option<crate::decimal::Dec>| f.filter(|f| !f.is_zero());
-                    if rate(state.feed) == rate(saved.feed) {
-                        Some((None, false, super::tooling::LinuxCncFeed::Zero))
-                    } else {
-                        Some((saved.feed, false, saved.rate))
-                    }
-                } else {
-                    None
-                };
-                let state = &mut self.machine.state;
-                state.feed_mode = saved.mode;
-                state.speed = saved.speed;
-                state.unknown = if saved.s_unknown {
-                    state.unknown | crate::modal::bit(b'S')
-                } else {
-                    state.unknown & !crate::modal::bit(b'S')
-                };
-                if let Some((feed, unknown, rate)) = feed {
-                    state.feed = feed;
-                    state.unknown = if unknown {
-                        state.unknown | crate::modal::bit(b'F')
-                    } else {
-                        state.unknown & !crate::modal::bit(b'F')
-                    };
-                    self.linuxcnc_feed_rate = rate;
-                }
-            }
             _ => {}
         }
     }
@@ -4544,18 +4456,6 @@ impl Saved {
             _ => Saved::Maybe,
         };
     }
-}
-
-/// LinuxCNC: the feed mode, feed and speed an M70 or M73 of the main program saved
-/// ([`Checker::linuxcnc_saved_feed`]); `rate` is rs274's feed rate (tooling::LinuxCncFeed).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct FeedSaved {
-    mode: i64,
-    feed: Option<crate::decimal::Dec>,
-    f_unknown: bool,
-    speed: Option<crate::decimal::Dec>,
-    s_unknown: bool,
-    rate: super::tooling::LinuxCncFeed,
 }
 
 /// LinuxCNC: the distance mode through the open definition's body, read in its order
@@ -6578,55 +6478,6 @@ mod tests {
             fired(iso_mill(), &program("G01 X"), Rule::Unreadable).len(),
             1
         );
-    }
-
-    /// Review 55c, F6 (lcnc56): M72 restores the feed mode, the feed and the speed M70 saved,
-    /// with LinuxCNC 2.9.0's F restored only where it differs (`Checker::linuxcnc_saved_feed`).
-    /// Each program's finding (line and rule) as `rs274 -g` stops (its line), or none where
-    /// it runs to its M2.
-    #[test]
-    fn linuxcnc_m72_restores_the_feed_m70_saved_as_rs274() {
-        let head = "G21 G90 G17 G94 F100\nG0 X0 Y0 Z0\n";
-        let cases: &[(&str, Option<(usize, Rule)>)] = &[
-            // the F saved: "Cannot do g1 with zero feed rate"
-            (
-                "G94\nG0 X0 Y0 Z0\nM70\nF100\nM72\nG1 X1",
-                Some((8, Rule::NoFeedRate)),
-            ),
-            ("M70\nF200\nM72\nG1 X1", None),
-            // G93 restored: "F word missing with inverse time g1 move"
-            (
-                "G93\nM70\nG94 F100\nM72\nG1 X1 F10\nG1 X2",
-                Some((8, Rule::InverseTimeWithoutFeed)),
-            ),
-            // G94 restored from G93 or G95 where the F is the same: zeroed
-            ("M70\nG93\nM72\nG1 X1", Some((6, Rule::NoFeedRate))),
-            ("M70\nG95 F100\nM72\nG1 X1", Some((6, Rule::NoFeedRate))),
-            // ... and where it differs, restored
-            ("M70\nG95\nM72\nG1 X1", None),
-            ("M70\nG93\nG1 X2 F10\nM72\nG1 X1", None),
-            // the speed saved under G95: "Cannot feed with zero spindle speed ..."
-            (
-                "M70\nS100\nM72\nG95 F0.1\nG1 X1",
-                Some((7, Rule::LinuxCncRefuses)),
-            ),
-            // a save in a condition: not followed, the feed in force is kept
-            ("o1 if [#5220 GE 1]\nM70\no1 endif\nF200\nM72\nG1 X1", None),
-        ];
-        let judged = [
-            Rule::NoFeedRate,
-            Rule::InverseTimeWithoutFeed,
-            Rule::LinuxCncRefuses,
-        ];
-        for (body, expected) in cases {
-            let text = format!("{head}{body}\nM2\n");
-            let got: Vec<(usize, Rule)> = check(of_family(Family::LinuxCnc), &text)
-                .into_iter()
-                .filter(|f| judged.contains(&f.rule))
-                .map(|f| (f.line, f.rule))
-                .collect();
-            assert_eq!(got.first().copied(), *expected, "{body}: {got:?}");
-        }
     }
 
     /// Review 55c, F7 (lcnc56): a call in a branch known to run does not make the `else` or

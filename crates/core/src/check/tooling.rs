@@ -818,6 +818,7 @@ impl Checker {
         // (in a definition's body, where its own G93/G94/G95 outside its conditions and loops
         // sets it: review 19)
         if codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
+            self.linuxcnc_mode_restored = false;
             if self.open_definition.is_none() {
                 self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
             } else {
@@ -828,6 +829,12 @@ impl Checker {
         if ms.contains(&98) {
             self.linuxcnc_mode_unsure = true;
             self.linuxcnc_definition_mode_unsure = true;
+        }
+        // (an M72 restores the feed mode M70 or M73 saved, after the block's G93-G95: the
+        // LinuxCNC G-code overview, "G-code Order of Execution"; which one the checker does
+        // not follow, so a spline's feed waits for the next G93-G95: review 56c, F2, F9)
+        if ms.contains(&72) {
+            self.linuxcnc_mode_restored = true;
         }
         let f_at = first[usize::from(b'F' - b'A')] as usize;
         self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts);
@@ -1757,7 +1764,10 @@ impl Checker {
         words: &Written<'_>,
         runs: Option<i64>,
     ) -> Option<(String, u8)> {
-        if matches!(runs, Some(50 | 51)) && !self.linuxcnc_feed_mode_unsure() {
+        if matches!(runs, Some(50 | 51))
+            && !self.linuxcnc_feed_mode_unsure()
+            && !self.linuxcnc_mode_restored
+        {
             let state = &self.machine.state;
             match state.feed_mode {
                 93 if !words.has(b'F') => {
@@ -3947,6 +3957,14 @@ mod tests {
             ("G93\nG5.1 X3 Y2 I1 J1 F2", None),
             ("G95\nG5 X3 Y2 I1 J0 P1 Q1", None),
             ("G5 X3 Y2 I1 J0 P1 Q1 F#<_rate>", None),
+            // an M72 restores the feed mode M70 saved, which is not followed: not judged
+            // until the next G93-G95 (review 56c, F2, F9; rs274 runs the first two)
+            ("F100\nM70\nG95 F0.1\nG93\nM72\nG5 X3 Y2 I1 J0 P1 Q1", None),
+            (
+                "o1 if [1]\nG95\no1 endif\nM70\nG93\nM72\nG5.1 X1 Y1 I1 J1",
+                None,
+            ),
+            ("F100\nM70\nG93\nM72\nG93\nG5.1 X3 Y2 I1 J1", Some(inverse)),
         ];
         for (body, expected) in cases {
             let line = 3 + body.matches('\n').count() + 1;
