@@ -148,3 +148,66 @@ def test_an_if_known_false_is_no_way_into_its_target(program, expected):
     not jump (FANUC Custom Macro B: the branch is taken only where the condition holds), so
     it does not make N n a block other ways arrive at; errors of the fall-through stay."""
     assert errors(program) == expected
+
+
+# review 56b's reproducers: the main's blocks before an uncalled-looking O2000
+MAIN = HEAD + "G0 X850. Y0 Z10. / "
+AT_ZERO = HEAD + "G0 X0 Y0 Z10. / "
+
+
+@pytest.mark.parametrize("program, expected", [
+    # F1 (u3.nc, u4.nc): a FANUC without the 8-digit option reads P12000 and P0012000 as
+    # O2000 once; fanuc-mill assumes the option, so the file's O2000 may still be the one run
+    (MAIN + "M98 P12000 / M30 / O2000 / G0 X-700. / M99", [("TG601", 8, 4)]),
+    (MAIN + "M98 P0012000 / M30 / O2000 / G0 X-700. / M99", [("TG601", 8, 4)]),
+    # u8.nc: M198 from an external device may run the file's O2000
+    (MAIN + "M198 P2000 / M30 / O2000 / G0 X-700. / M99", [("TG601", 8, 4)]),
+    # F2 (k2.nc, k1.nc): O9001 and O9020 are run by an M code through parameters
+    (MAIN + "M06 T1 / M30 / O9001 / G0 X-700. / M99", [("TG601", 8, 4)]),
+    (MAIN + "M50 / M30 / O9020 / G0 X-700. / M99", [("TG601", 8, 4)]),
+    # F4 (y1.nc, y3.nc, y11.nc): an uncalled O2000 that calls O3000, written after it: X goes
+    # to -700 and then, in O3000, to 850 under whatever offset runs it
+    (AT_ZERO + "M30 / O2000 / G0 X-700. / M98 P3000 / M99 / O3000 / G0 X850. / M99",
+     [("TG601", 7, 4)]),
+    (AT_ZERO + "M30 / O2000 / G0 X-700. / G65 P3000 / M99 / O3000 / G0 X850. / M99",
+     [("TG601", 7, 4)]),
+    (AT_ZERO + "M30 / O2000 / G0 X-700. / M98 P3000 L2 / M99 / O3000 / G0 X850. / M99",
+     [("TG601", 7, 4)]),
+    # y12.nc: a G66 modal call, and the same with G66.1
+    (AT_ZERO + "M30 / O2000 / G0 X-700. / G66 P3000 / G0 X-690. / G67 / M99 / O3000 / "
+     "G0 X850. / M99", [("TG601", 7, 4)]),
+    (AT_ZERO + "M30 / O2000 / G0 X-700. / G66.1 P3000 / G0 X-690. / G67 / M99 / O3000 / "
+     "G0 X850. / M99", [("TG601", 13, 4)]),
+    # y13.nc: the call first, a G90 of its own after it
+    (AT_ZERO + "M30 / O2000 / M98 P3000 / G90 G0 X-700. / M99 / O3000 / G90 G0 X850. / M99",
+     [("TG601", 8, 8)]),
+    # y10.nc: the same programs as a memory backup, `%` between them
+    (AT_ZERO + "M30 / % / % / O2000 / G0 X-700. / M98 P3000 / M99 / % / % / O3000 / "
+     "G0 X850. / M99", [("TG601", 9, 4)]),
+])
+def test_an_uncalled_program_is_joined_where_alone_could_lose_an_error(program, expected):
+    """Review 56b, F1, F2, F4: a subprogram no call of the file names is judged on its own
+    span only where that loses no overtravel: one that calls a program, one a call may name
+    under another program-number option or from an external device, and an O9000-O9999 the
+    control runs for an M, G or T code keep their span joined to the file's, as before."""
+    assert errors(program) == expected
+
+
+def test_an_uncalled_program_says_one_overtravel_once(tmp_path):
+    """Review 56b, F3 (x1.nc-x3.nc): under a known G54 offset, the machine position's TG601
+    is the one said; the span it made wider than the travel is not said again."""
+    profile = tmp_path / "wo.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
+                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n")
+    head = AT_ZERO + "M30 / O2000 / "
+    assert errors(head + "G54 G0 X-800. / G0 X750. / M99", str(profile)) == [("TG601", 7, 8)]
+    assert errors(head + "G54 G0 X750. / G0 X-800. / M99", str(profile)) == [("TG601", 8, 4)]
+    assert errors(head + "G0 X750. / G0 X-800. / M99", str(profile)) == [("TG601", 8, 4)]
+
+
+def test_an_uncalled_lathe_program_keeps_its_overtravel():
+    """Review 56b, F1 on fanuc-lathe (ul.nc): `M98 P12000` may run the file's O2000."""
+    program = ("G21 G18 G40 / G0 X100. Z800. / M98 P12000 / M30 / O2000 / G0 X50. Z-700. / "
+               "M99")
+    assert errors(program, "fanuc-lathe") == [("TG601", 8, 9)]

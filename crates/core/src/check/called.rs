@@ -107,6 +107,14 @@ struct Body {
     /// a G91 call a G53 under G91, not judged; review 46, F3), and the line of the last.
     inherited: Machine,
     inherited_last: Option<usize>,
+    /// It calls a program (any call its dialect knows: `dialect::calls`, a LinuxCNC `o..
+    /// call`): no call naming it, its span is joined to the file's all the same, with those of
+    /// the programs it runs (review 56b, F4).
+    calls: bool,
+    /// The axes (their places' bits) whose machine position (a work offset's) it said
+    /// outside the travel: that said more than its span can, which is not said again where
+    /// it is judged alone (review 56b, F3).
+    outside: u16,
 }
 
 /// The positions of a body that moved before writing its own G90/G91, from the G90 it then
@@ -255,6 +263,8 @@ impl Checker {
                 machine: [[None; 2]; 9],
                 inherited: [[None; 2]; 9],
                 inherited_last: None,
+                calls: false,
+                outside: 0,
             },
             stash,
             given_before: None,
@@ -450,7 +460,8 @@ impl Checker {
     /// [`Checker::add_to_span`] in a program read apart, after `at` went to the axis's
     /// span (its own): the line and column of a new least or most position kept, and the
     /// span judged with the one before it. The ends to say TG601 of, where it is wider than
-    /// the travel and nothing was said of it yet (then said).
+    /// the travel and nothing was said of it yet (then said). `said_outside`: its machine
+    /// position was said outside the travel (kept, [`Body::outside`]).
     #[cold]
     #[inline(never)]
     pub(super) fn early_span(
@@ -459,8 +470,12 @@ impl Checker {
         at: f64,
         line: usize,
         column: usize,
+        said_outside: bool,
     ) -> Option<(f64, f64)> {
         let early = self.early.as_mut().expect("early_on");
+        if said_outside {
+            early.body.outside |= 1 << i;
+        }
         if early.moved_first.is_none() {
             // (its first position: before a G90/G91 of its own where the machine has applied
             // none since it began)
@@ -726,6 +741,17 @@ impl Checker {
         self.early_unfollowed_by(token, line, None);
     }
 
+    /// A call (any the dialect knows) in the program read apart: kept, so that where no
+    /// call names that program its span is still joined to the file's
+    /// ([`Checker::early_as_read`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_calls(&mut self) {
+        if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
+            early.body.calls = true;
+        }
+    }
+
     /// [`Checker::early_unfollowed`], of a Haas's M97 the blocks it runs (`local`).
     fn early_unfollowed_by(&mut self, token: &str, line: usize, local: Option<String>) {
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
@@ -901,26 +927,49 @@ impl Checker {
 
     /// A subprogram no call of the file names (it ends in M99: after a main program's M30, a
     /// subprogram called from another file or by hand): its own findings said, as read from
-    /// the reset state; its span is not added to those of the file's programs. Nothing in the
-    /// file runs it, so where it stands under a work offset is its caller's, not known here:
-    /// a FANUC's M30 ends the main program and goes back to the program's
-    /// head (0i-F Operator's Manual, miscellaneous functions, M30), and its M99 returns to
-    /// whoever called it (review 55b, F4: `G0 X850.` / `M30` / `O2000` / `G0 X-700.` / `M99`
-    /// was "X spans 1550").
+    /// the reset state. Nothing in the file runs it, so where it stands under a work offset
+    /// is its caller's, not known here: a FANUC's M30 ends the main program and goes back to
+    /// the program's head (0i-F Operator's Manual, miscellaneous functions, M30), and its M99
+    /// returns to whoever called it; its span is judged alone (review 55b, F4: `G0 X850.` /
+    /// `M30` / `O2000` / `G0 X-700.` / `M99` was "X spans 1550"). Only where that is sure to
+    /// lose no error ([`Checker::judged_alone`]); elsewhere its span is joined to the file's,
+    /// as before.
     fn early_as_read(&mut self, p: Pending) {
+        if !self.judged_alone(&p) {
+            for mut f in p.removed.into_iter().chain(p.positions) {
+                self.sample_hint_shown(&mut f);
+                self.found.push(f);
+            }
+            for i in 0..AXES.len() {
+                let Some(span) = p.spans[i] else {
+                    continue;
+                };
+                if span.said || self.travel.of_place(i).is_none() {
+                    self.spans[i] = joined(self.spans[i], Some(span));
+                    continue;
+                }
+                let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
+                self.add_to_span(i, span.least, false, l.0, || l.1, "");
+                self.add_to_span(i, span.most, false, m.0, || m.1, "");
+            }
+            return;
+        }
         // (its spans' findings, made with the spans of the programs before it, are judged
-        // again with its own alone: said where the axis's travel is less than its own span)
+        // again with its own alone: said where the axis's travel is less than its own span,
+        // and not where its machine positions already said more: review 56b, F3)
         let mut said: Vec<Finding> = p
             .removed
             .into_iter()
             .filter(|f| !(f.rule == Rule::TravelExceeded && f.message.contains(SPAN_SAID)))
+            .chain(p.positions)
             .collect();
         let from = self.found.len();
         for (i, &axis) in AXES.iter().enumerate() {
             let (Some(span), Some((low, high))) = (p.spans[i], self.travel.of_place(i)) else {
                 continue;
             };
-            if span.most - span.least > (high - low) + 1e-9 {
+            let said = p.body.outside & (1 << i) != 0;
+            if !said && span.most - span.least > (high - low) + 1e-9 {
                 let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
                 let at = if l.0 >= m.0 { l } else { m };
                 // (read with no units code of its own, in the units it began in: where those
@@ -940,9 +989,34 @@ impl Checker {
         }
         said.extend(self.found.drain(from..));
         said.sort_by_key(|f| (f.line, f.column));
-        for mut f in said.into_iter().chain(p.positions) {
+        for mut f in said {
             self.sample_hint_shown(&mut f);
             self.found.push(f);
+        }
+    }
+
+    /// Whether a subprogram no call of the file names is judged on its own span
+    /// ([`Checker::early_as_read`]), where that cannot lose an overtravel its run makes: it
+    /// calls no program (the programs it runs, written after it, are judged with the file's
+    /// span, not its own: review 56b, F4); no call of the file may name it under another
+    /// program-number option (`M98 P12000` is O2000 on a FANUC without the 8-digit option,
+    /// `M198 P2000` may run the file's O2000 from a memory card: F1,
+    /// [`Checker::call_numbers_seen`]); and it is not numbered O9000-O9999, the programs a
+    /// FANUC runs for an M, G or T code its parameters name (0i-F Operator's Manual, custom
+    /// macro: "Macro call with a G/M code", "Subprogram call with an M/T code", O9001-O9029)
+    /// and a Haas for its aliased M and G codes (O9000-O9019): a call the file does not write
+    /// (F2).
+    fn judged_alone(&self, p: &Pending) -> bool {
+        if p.body.calls {
+            return false;
+        }
+        match p.body.number {
+            Key::Number(n) => {
+                !(9000..=9999).contains(&n)
+                    && !self.call_numbers_any
+                    && !self.call_numbers.contains(&n)
+            }
+            Key::Label(_) => true,
         }
     }
 

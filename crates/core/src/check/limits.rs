@@ -2308,7 +2308,7 @@ impl Checker {
         if self.early_on {
             // (a program read apart from those before it, crate::check::called)
             let column = column();
-            if let Some(ends) = self.early_span(i, at, line, column) {
+            if let Some(ends) = self.early_span(i, at, line, column, said_outside) {
                 self.span_exceeded(axis, ends, (low, high), (line, column), under);
             }
             return;

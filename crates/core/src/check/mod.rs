@@ -1266,6 +1266,10 @@ pub struct Checker {
     given_up: Vec<called::GivenUp>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
+    /// The program numbers the file's calls may name, and whether one may name any
+    /// ([`Checker::call_numbers_seen`]).
+    call_numbers: std::collections::BTreeSet<i64>,
+    call_numbers_any: bool,
     /// The first call whose program number is not known (its code, line and column), and
     /// whether its TG140 was said ([`Checker::call_unknown`]; review 41, finding 5).
     unknown_call: Option<(String, usize, usize, bool)>,
@@ -1490,6 +1494,8 @@ impl Checker {
             hold_from: None,
             given_up: Vec::new(),
             pending: Vec::new(),
+            call_numbers: std::collections::BTreeSet::new(),
+            call_numbers_any: false,
             unknown_call: None,
             feed_pending: Vec::new(),
             feed_unheld: false,
@@ -2355,6 +2361,13 @@ impl Checker {
                     self.values.mirror |= crate::modal::mirror_code(v);
                     self.values.decimal_g = true;
                     lacked_code |= self.code_lacked(v);
+                    // (G66.1, a FANUC's modal macro call at each block: a call, which
+                    // dialect::calls reads from the whole codes alone; the program its P
+                    // names is not matched, so any of the file may be it)
+                    if v.trunc() == 66 {
+                        self.early_calls();
+                        self.call_numbers_any = true;
+                    }
                 }
                 b'G' => {
                     let g = v.trunc();
@@ -2488,6 +2501,7 @@ impl Checker {
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
+            self.early_calls();
             self.call_made(b);
             self.call_shifts();
             if self.shifts.on {

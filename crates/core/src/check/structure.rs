@@ -379,6 +379,7 @@ impl Checker {
         }
         let by_number =
             self.values.ms.contains(&98) || self.values.gs().iter().any(|&g| g == 65 || g == 66);
+        self.call_numbers_seen(b, by_number);
         if !by_number {
             if self.early_on {
                 // (a Haas's M97 inside a program read apart: a G90/G91 of the sequence it
@@ -441,6 +442,34 @@ impl Checker {
                 }
             })
             .or_insert(units);
+    }
+
+    /// The program numbers a call by number (M98, G65, G66) or from an external device
+    /// (M198) may name, whatever the control's program-number option: its P, and its last
+    /// four digits (a FANUC without the 8-digit option reads `M98 P12000` as O2000 once, the
+    /// digits above four being the repeat count: 0i-F Operator's Manual, "Subprogram call
+    /// (M98)"). A program of the file among them is not judged as one no call names
+    /// ([`Checker::early_finish`]; review 56b, F1); an M198 whose P is not known may name
+    /// any.
+    fn call_numbers_seen(&mut self, b: &BlockView<'_>, by_number: bool) {
+        if !by_number && !self.values.ms.contains(&198) {
+            return;
+        }
+        let p = b
+            .words
+            .iter()
+            .enumerate()
+            .find(|(_, w)| w.letter == b'P' && w.index.is_empty())
+            .map(|(i, _)| self.readable[i]);
+        match p {
+            Some(Some(v)) if v.is_whole() => {
+                let n = v.trunc();
+                self.call_numbers.extend([n, n % 10_000]);
+            }
+            // (M98 P#1: every program after it is read in units not known, call_unknown)
+            _ if !by_number => self.call_numbers_any = true,
+            _ => {}
+        }
     }
 
     /// The next program of the file begins with `b`'s O number: where a call before it in
@@ -1088,6 +1117,7 @@ impl Checker {
             {
                 continue;
             }
+            self.early_calls();
             let token = format!(
                 "{} call",
                 String::from_utf8_lossy(&crate::statement::o_label(text))
