@@ -184,12 +184,21 @@ AT_ZERO = HEAD + "G0 X0 Y0 Z10. / "
     # y10.nc: the same programs as a memory backup, `%` between them
     (AT_ZERO + "M30 / % / % / O2000 / G0 X-700. / M98 P3000 / M99 / % / % / O3000 / "
      "G0 X850. / M99", [("TG601", 9, 4)]),
+    # review 56e, F1 (k3.nc): the uncalled O2000's M06 may run the file's O9001 (parameter
+    # 6071): X -700 in O2000, then 850 in O9001
+    (AT_ZERO + "M30 / O2000 / G0 X-700. / M06 T1 / M99 / O9001 / G0 X850. / M99",
+     [("TG601", 11, 4)]),
+    # F5 (r4.nc): G65 P5000 runs a program stored on the control, which may call O2000
+    ("G21 G17 G90 G54 / G0 X850. Y0 Z10. / G65 P5000 / M30 / O2000 / G0 X-700. / M99",
+     [("TG601", 8, 4)]),
 ])
 def test_an_uncalled_program_is_joined_where_alone_could_lose_an_error(program, expected):
     """Review 56b, F1, F2, F4: a subprogram no call of the file names is judged on its own
     span only where that loses no overtravel: one that calls a program, one a call may name
     under another program-number option or from an external device, and an O9000-O9999 the
-    control runs for an M, G or T code keep their span joined to the file's, as before."""
+    control runs for an M, G or T code keep their span joined to the file's, as before; so do
+    all of a file that holds an O9000-O9999 or calls a program it does not hold (review 56e,
+    F1, F5)."""
     assert errors(program) == expected
 
 

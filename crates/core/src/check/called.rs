@@ -1005,9 +1005,17 @@ impl Checker {
     /// FANUC runs for an M, G or T code its parameters name (0i-F Operator's Manual, custom
     /// macro: "Macro call with a G/M code", "Subprogram call with an M/T code", O9001-O9029)
     /// and a Haas for its aliased M and G codes (O9000-O9019): a call the file does not write
-    /// (F2).
+    /// (F2). Nor where the file holds such a program (an M06 of the subprogram may run it:
+    /// review 56e, F1), or a call names a program the file does not hold (stored on the
+    /// control, it may run this one: F5).
     fn judged_alone(&self, p: &Pending) -> bool {
-        if p.body.calls {
+        if p.body.calls
+            || self.file_programs.range(9000..=9999).next().is_some()
+            || self
+                .call_numbers
+                .iter()
+                .any(|n| !self.file_programs.contains(n))
+        {
             return false;
         }
         match p.body.number {

@@ -1270,6 +1270,10 @@ pub struct Checker {
     /// ([`Checker::call_numbers_seen`]).
     call_numbers: std::collections::BTreeSet<i64>,
     call_numbers_any: bool,
+    /// The O numbers of the file's programs: a call naming another (a program stored on the
+    /// control) may run any of the file's subprograms ([`Checker::judged_alone`]; review
+    /// 56e, F5); and whether one is O9000-O9999, which an M, G or T code runs (F1).
+    file_programs: std::collections::BTreeSet<i64>,
     /// The first call whose program number is not known (its code, line and column), and
     /// whether its TG140 was said ([`Checker::call_unknown`]; review 41, finding 5).
     unknown_call: Option<(String, usize, usize, bool)>,
@@ -1495,6 +1499,7 @@ impl Checker {
             given_up: Vec::new(),
             pending: Vec::new(),
             call_numbers: std::collections::BTreeSet::new(),
+            file_programs: std::collections::BTreeSet::new(),
             call_numbers_any: false,
             unknown_call: None,
             feed_pending: Vec::new(),

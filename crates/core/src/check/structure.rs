@@ -492,6 +492,7 @@ impl Checker {
             .filter(|w| w.letter == b'O' && w.index.is_empty() && w.expression.is_empty())
             .and_then(|w| std::str::from_utf8(w.number).ok())
             .and_then(|n| n.parse::<i64>().ok());
+        self.file_programs.extend(number);
         // a program no call before it names may be the subprogram of a call after it (a
         // memory backup lists programs by number): read apart until it shows what it is
         // (crate::check::called; review 39, finding 4)
@@ -541,6 +542,7 @@ impl Checker {
                 Some((n, w.token(), w.column))
             });
         if let Some((n, name, column)) = number {
+            self.file_programs.insert(n);
             self.early_begin(super::called::Key::Number(n), name, (b.line, column));
         }
     }
