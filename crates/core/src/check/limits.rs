@@ -2910,10 +2910,11 @@ mod tests {
         assert_eq!(limits(alone), [(7, 10)]);
         let wide = alone.replace("F700.\n", "F700.\nX-900.\n");
         assert_eq!(limits(&wide), [(8, 1), (7, 10)]);
-        // a number the call does not name: the same
+        // a call of a program the file does not hold (O2000, stored on the control, may call
+        // O1000): its span joined to the main's, as before (review 56e, F5)
         assert_eq!(
             limits(&sub("G21", "G1 X900. F700.").replace("P1000", "P2000")),
-            [(8, 10)]
+            [(8, 4), (8, 10)]
         );
     }
 
