@@ -2303,6 +2303,10 @@ def test_a_builders_spindle_start_is_restored_by_its_key_or_refused():
     # a restart block that starts the spindle itself is not refused
     started = M13_MILL.replace("N90 G01", "N90 M03 G01")
     assert plan(started, 9, FANUC).preamble
+    # a keyed start ends an orientation as M03 does (review 56d F2: refused after M19 ... M14)
+    oriented = M13_MILL.replace("N110 M05", "N110 M19\nN115 G00 Z60.\nN116 S1200 M14")
+    assert "G97 S1200 M14" in plan(oriented, 13, keyed).preamble
+    assert refusal(oriented, 12, keyed).startswith("cannot restart here: M19 on line 10")
 
 
 def test_a_listed_spindle_code_without_a_key_refuses_the_restart():

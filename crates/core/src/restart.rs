@@ -1407,7 +1407,8 @@ impl Walk {
                 if self.oriented_since().is_none() {
                     self.orientations.push((line, None));
                 }
-            } else if matches!(m, 3..=5) {
+            } else if matches!(m, 3..=5) || self.turn_codes.contains(&m) {
+                // (a keyed start, a builder's M13, ends it as M03 does: review 56d F2)
                 self.orientation_ended(line);
             }
             let turns = self.turn_codes.contains(&m);
