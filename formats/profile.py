@@ -586,12 +586,25 @@ def _code_name(key: str) -> str:
     return key[0] + str(int(key[1:])) if key[1:].isdigit() else key
 
 
+def _one_spelling(codes: dict[str, Any]) -> None:
+    """Refuses a ``[codes]`` table that writes one code twice (``M3`` and ``M03``): which of
+    the two the profile means cannot be told, and taking either would decide silently what
+    a code of the machine does (review 56d F4)."""
+    seen: dict[str, str] = {}
+    for code in codes:
+        first = seen.setdefault(_code_name(code), code)
+        if first != code:
+            raise ProfileError(f"codes: {first} and {code} name one code; write it once",
+                               key=f"codes.{code}", code="profile-code-twice")
+
+
 def _merged_codes(base: dict[str, Any], own: dict[str, Any]) -> dict[str, Any]:
     """A base's ``[codes]`` with a profile's entries: each replaces the base's entry of the
     same code (``M3`` or ``M03``), and ``false`` drops it; an entry that sets no ``meaning``
     keeps the base's. The meaning keys are what says which codes turn a spindle (TG304 for
     ``M03 M04``, the restart's spindle), so rewording a builder's ``function`` must not drop
     them silently (review 56a F1); ``meaning = ""`` drops one on purpose."""
+    _one_spelling(own)
     names = {_code_name(code): code for code in base}
     table = dict(base)
     for code, spec in own.items():
@@ -976,6 +989,7 @@ _PLAIN_CODE_KEYS = frozenset({"function", "duration", "meaning"})
 
 
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
+    _one_spelling(data)
     result = {}
     for key, spec in data.items():
         decimal = _decimal_code(key) if "." in key else None

@@ -233,6 +233,13 @@ class _Facts:
     spin_line: int  # the last M03/M04's line (0: none), or of a keyed start (M13)
     # the keyed start other than M03/M04 in force (``spindle-cw-coolant-on``): (line, code)
     turned_by: tuple[int, int] | None
+    # the codes of the spindle's group the walk does not read (an unkeyed M13), run while no
+    # code it reads has come since: (the first one's line, the last one's line, its code)
+    unread_spin: tuple[int, int, int] | None
+    builder_first: int  # the first line of builder_m's run (since the spindle or an M06)
+    # a SINUMERIK's spindle functions by extension or position (M1=3, SPOS=90) since the last
+    # plain M3-M5: (the first one's line, the last one's line, its text)
+    spindle_by_extension: tuple[int, int, str] | None
     coolant_line: int  # the last M07/M08's line (0: none)
     unset: set[str]  # the axes whose number is no place to go to (a Haas lathe's Y after G113)
 
@@ -270,6 +277,8 @@ class _Facts:
             side_move=facts["side_move"],
             builder_m=facts["builder_m"], spin_line=facts["spin_line"],
             turned_by=facts["turned_by"],
+            unread_spin=facts["unread_spin"], builder_first=facts["builder_first"],
+            spindle_by_extension=facts["spindle_by_extension"],
             coolant_line=facts["coolant_line"],
             unset=set(facts["unset"]),
         )
@@ -538,6 +547,18 @@ class _Planner:
                               "leave it at another angle (a bar shifted through a bore, a "
                               f"static tool fed); restart at or before line {first_m19}, or after "
                               "the M03 or M04 that starts the spindle again")
+        if walk.spindle_by_extension is not None:
+            # (review 56d F6, F11) M0=3 or M1=3 started the spindle, M1=70 switched it to
+            # axis mode, SPOS=90 positioned it: the modal state reads the plain M3-M5 alone
+            first, at, text = walk.spindle_by_extension
+            raise self.refuse(
+                f"{text} on line {at} commands a spindle by its address extension or "
+                "position (SINUMERIK M<n>=, SPOS, SPOSA; Function Manual S1), which the "
+                "restart's modal state does not follow (it reads the plain M3, M4 and M5): "
+                "the preamble would leave the spindle stopped where the program turns it, or "
+                "start it where the program holds it in position or axis mode; restart at or "
+                f"before line {first}, or after a plain M3, M4 or M5 of the master spindle")
+        self.check_unread_spindle()
         self.check_live_tool()
         self.check_builder_start()
         if s.compensation in (41, 42):
@@ -654,6 +675,40 @@ class _Planner:
                 "(TG307), the preamble cannot restore; restart at or before "
                 f"{where}, or after the M03 or M04 that starts the main spindle")
 
+    def tool_change_stops(self) -> bool:
+        """Whether an M06 stops the spindle (a FANUC or Haas mill: Haas mill manual, NGC, "M06
+        Tool Change"; a FANUC's is the builder's macro, which does so on the machines at
+        hand)."""
+        return self.walker.family in ("fanuc", "haas") and not self.walker.lathe
+
+    def block_changes_tool(self) -> bool:
+        """Whether the restart block has an M06 of its own."""
+        return any(w.letter == "M" and w.number and w.number.isdigit() and int(w.number) == 6
+                   for w in self.block.word_objects())
+
+    def check_unread_spindle(self) -> None:
+        """A code of the spindle's modal group that the walk does not read (a builder's M13
+        listed without a meaning key, LinuxCNC's M19), run after the last spindle state it
+        knows: it may have started, stopped or oriented the spindle, so the preamble's M03,
+        M04 or M05 of the modal state would restore another state (review 56d F9). A tool
+        change that stops the spindle after it, or the restart block's own M03, M04 or M06,
+        sets the state again."""
+        walk = self.walk
+        if walk.unread_spin is None or self.block_starts_spindle():
+            return
+        first, at, code = walk.unread_spin
+        if self.tool_change_stops() and (walk.m6_line > at or self.block_changes_tool()):
+            return
+        listed = self.profile.code("M", code)
+        function = f" ({listed.function})" if listed is not None else ""
+        raise self.refuse(
+            f"M{code:02d}{function} on line {at} is a code of the spindle's modal group with "
+            "no meaning the restart reads, and no M03, M04 or M05 has come since: what it did "
+            "to the spindle (a builder's M13 starts it with the coolant, an M19 orients it) "
+            f"the preamble cannot know or restore; restart at or before line {first}, or "
+            "after the M03, M04 or M05 that sets the spindle again (or key the code in the "
+            "profile: meaning = \"spindle-cw-coolant-on\", docs/profiles.md)")
+
     def check_builder_start(self) -> None:
         """A FANUC or Haas mill whose spindle is stopped (by M05, or by the M06 of a tool
         change) where an M code the profile's list lacks came after: a builder's M13 starts the
@@ -665,14 +720,18 @@ class _Planner:
                 or self.turn_code is not None):
             return
         at, code = walk.builder_m
-        if at < (walk.m6_line or 0) or self.block_starts_spindle():
+        # (review 56d F7) the restart block's own M06 stops the spindle again
+        if (at < (walk.m6_line or 0) or self.block_starts_spindle()
+                or (self.tool_change_stops() and self.block_changes_tool())):
             return
+        first = walk.builder_first or at
         raise self.refuse(
             f"the spindle is stopped and M{code:02d} on line {at}, an M code the profile's list "
             "lacks, came after: it may start the spindle (a builder's M13: spindle and coolant), "
             "which the preamble cannot know or restore; restart at or before line "
-            f"{at}, or after the M03 or M04 that starts the spindle (or key the code in the "
-            "profile: meaning = \"spindle-cw-coolant-on\", docs/profiles.md)")
+            f"{first}, at the next tool change, or after the M03 or M04 that starts the spindle "
+            "(or key the code in the profile: meaning = \"spindle-cw-coolant-on\", "
+            "docs/profiles.md)")
 
     def loaded_tool_length(self) -> bool:
         """LinuxCNC's G43 without H applies the length of the tool in the spindle (rs274ngc

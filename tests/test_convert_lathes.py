@@ -111,6 +111,18 @@ def test_a_haas_lathe_peck_s_least_depth_converts_as_a_length(tmp_path):
     assert " K3 " in convert(tmp_path, fanuc, "fanuc-lathe", "metric")
     beside = fanuc.replace("Q1000 K3", "I0.1 J0.02 K3")
     assert " J0.508 K3 " in convert(tmp_path, beside, "fanuc-lathe", "metric")
+    # a count that is no whole number is refused, as on a FANUC mill (review 56d F10: K2.5 and
+    # a Haas-style K1.27 beside I and J were carried and "verified"), in every drilling cycle
+    for cycle in ("G83 Z-1. R0.1 Q1000 K2.5", "G85 Z-1. R0.1 K2.5",
+                  "G83 Z-1. R0.1 I0.1 J0.02 K0.05"):
+        text = fanuc.replace("G83 Z-1. R0.1 Q1000 K3", cycle)
+        for profile in ("fanuc-lathe", "fanuc-lathe-b"):
+            with pytest.raises(ConversionError) as info:
+                convert(tmp_path, text, profile, "metric")
+            word = cycle.split()[-1]
+            assert (info.value.line, info.value.column) == (5, len(cycle) - len(word) + 1)
+            assert str(info.value).split(": ", 1)[1].startswith(
+                f"{word}: a canned cycle's repeat count that is not a whole number"), info.value
 
 
 HAAS_ROUGHING = ("%\nO1\nG20 G99\nG00 X2.1 Z0.1\nG71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n"

@@ -41,6 +41,11 @@ def raised(kind: type[TapegateError], call, *args, **kw) -> TapegateError:
     ("[checks]\npqr = { P = \"angle\" }\n", "profile-value", "checks.pqr.P"),
     ("general = \"PM 399\"\n", "profile-classification", "general"),
     ("reset = [\"G999\"]\n", "profile-value", "reset"),
+    # one code written twice, on a base or not (review 56d F4: a KeyError on a base)
+    ("base = \"fanuc-mill\"\n[codes]\nM3 = { function = \"a\", duration = \"spindle\" }\n"
+     "M03 = { function = \"b\", duration = \"spindle\" }\n", "profile-code-twice", "codes.M03"),
+    ("dialect = \"fanuc\"\n[codes]\nM3 = { function = \"a\", duration = \"spindle\" }\n"
+     "M03 = { function = \"b\", duration = \"spindle\" }\n", "profile-code-twice", "codes.M03"),
 ])
 def test_a_profile_error_names_its_key(text: str, code: str, key: str) -> None:
     error = raised(ProfileError, profile_from_text, text, source="m.toml")

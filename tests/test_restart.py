@@ -2294,8 +2294,8 @@ def test_a_builders_spindle_start_is_restored_by_its_key_or_refused():
             "cannot restart here: the spindle is stopped and M13 on line 6, an M code the "
             "profile's list lacks, came after: it may start the spindle (a builder's M13: spindle "
             "and coolant), which the preamble cannot know or restore; restart at or before line "
-            "6, or after the M03 or M04 that starts the spindle (or key the code in the profile: "
-            'meaning = "spindle-cw-coolant-on", docs/profiles.md)'), line
+            "6, at the next tool change, or after the M03 or M04 that starts the spindle (or key "
+            'the code in the profile: meaning = "spindle-cw-coolant-on", docs/profiles.md)'), line
     for profile in (keyed, FANUC):
         assert not any("M13" in b or "M03" in b for b in plan(M13_MILL, 6, profile).preamble)
         stopped = plan(M13_MILL, 11, profile).preamble
@@ -2303,6 +2303,88 @@ def test_a_builders_spindle_start_is_restored_by_its_key_or_refused():
     # a restart block that starts the spindle itself is not refused
     started = M13_MILL.replace("N90 G01", "N90 M03 G01")
     assert plan(started, 9, FANUC).preamble
+    # a keyed start ends an orientation as M03 does (review 56d F2: refused after M19 ... M14)
+    oriented = M13_MILL.replace("N110 M05", "N110 M19\nN115 G00 Z60.\nN116 S1200 M14")
+    assert "G97 S1200 M14" in plan(oriented, 13, keyed).preamble
+    assert refusal(oriented, 12, keyed).startswith("cannot restart here: M19 on line 10")
+
+
+def test_a_listed_spindle_code_without_a_key_refuses_the_restart():
+    """Review 56d F9: a profile that lists the builder's M13 in the spindle's modal group with
+    no meaning key (the natural way to silence TG307) has the walk read no spindle state from
+    it: a restart after it is refused (it was planned with the spindle stopped by the M06, and
+    fed into the work), until an M03, M04 or M05 sets the spindle again or an M06 stops it; the
+    hint's line is itself planned."""
+    listed = profile_from_text(
+        'base = "fanuc-mill"\n[codes]\n'
+        'M13 = { function = "spindle CW and coolant on", duration = "spindle" }\n', "m13u")
+    for line in (7, 8, 9):
+        assert refusal(M13_MILL, line, listed) == (
+            "cannot restart here: M13 (spindle CW and coolant on) on line 6 is a code of the "
+            "spindle's modal group with no meaning the restart reads, and no M03, M04 or M05 has "
+            "come since: what it did to the spindle (a builder's M13 starts it with the coolant, "
+            "an M19 orients it) the preamble cannot know or restore; restart at or before line "
+            "6, or after the M03, M04 or M05 that sets the spindle again (or key the code in the "
+            'profile: meaning = "spindle-cw-coolant-on", docs/profiles.md)'), line
+    assert plan(M13_MILL, 6, listed).preamble
+    assert plan(M13_MILL, 11, listed).preamble  # after the M05
+    assert plan(M13_MILL.replace("N90 G01", "N90 M03 G01"), 9, listed).preamble
+    # a tool change after it stops the spindle (a FANUC mill's M06), the restart block's own too
+    changed = M13_MILL.replace("N100 G00 Z50.\nN110 M05", "N100 T2 M06\nN110 G43 H2 Z50.")
+    assert plan(changed, 9, listed).preamble
+    assert not any("M13" in b or "M03" in b for b in plan(changed, 11, listed).preamble)
+    # LinuxCNC's M19 is listed without a key: what it did is not known either
+    lcnc = load_profile("linuxcnc")
+    text = "G21 G17 G90\nT1 M6\nS1000 M3\nG0 X0 Y0 Z5\nM19 R90\nG0 X1\nG1 Z-5 F100\nM3\nG1 X5\nM2\n"
+    assert refusal(text, 6, lcnc).startswith("cannot restart here: M19 (orient spindle")
+    assert plan(text, 9, lcnc).preamble
+
+
+# The Robodrill's probe on and off (M107, M117: shops/wafflesandpremix__RobodrillMacros),
+# builder's codes fanuc-mill's list lacks, between two tool changes (line 13: T1 M06).
+PROBED = ("%\nO2\nG21 G17 G90 G40 G80\nT20 M06\nG00 G54 X0 Y0\nG43 H20 Z50.\nM107\n"
+          "G01 Z5. F3000.\nG31 Z-10. F500.\nM117\nG91 G28 Z0\nG90\nT1 M06\n"
+          "G00 G54 X10. Y10. S3000 M03\nG43 H1 Z50. M08\nG01 Z-5. F300.\nG00 Z50.\nM30\n%\n")
+
+
+def test_a_builders_code_before_the_restart_blocks_own_tool_change_is_no_refusal():
+    """Review 56d F7: a FANUC mill's M06 stops the spindle, so at the restart block's own tool
+    change whatever a builder's code after the last one did to the spindle is undone: planned,
+    where it was refused. Between them the refusal's hint names the first builder's code of the
+    run (line 7), a line that is planned, not the last (line 10), which is refused too."""
+    assert plan(PROBED, 13).preamble
+    assert plan(PROBED, 7).preamble
+    for line in (8, 10, 11, 12):
+        message = refusal(PROBED, line)
+        assert "restart at or before line 7, at the next tool change" in message, (line, message)
+
+
+SIN_EXTENDED = ("N10 G17 G90 G71 G40\nN20 T1 D1\nN30 M6\nN40 G0 X0 Y0 Z50\nN50 S1000 M3\n"
+                "N60 G0 X10 Y10\nN70 G1 Z-5 F100\nN80 G1 X20\nN90 G0 Z50\nN100 {code}\n"
+                "N110 G0 C90\nN120 G1 Z-5\nN130 M3 S1000\nN140 G1 X30\nN150 M30\n")
+
+
+@pytest.mark.parametrize("code", ["M0=70", "M1=70", "M2=70", "SPOS=90", "SPOSA[1]=0",
+                                  "M0=3", "M1=3", "M1=5", "M[R1]=3", "M1=R2"])
+def test_a_sinumerik_spindle_function_by_extension_refuses_the_restart(code: str):
+    """Review 56d F6, F11: the modal state reads a SINUMERIK's plain M3, M4, M5 alone, so a
+    spindle's function by its address extension (`M1=70`, `M0=3`: Function Manual S1, H2) or
+    its positioning (`SPOS=90`) left the preamble starting a spindle in axis mode, or cutting
+    with one the program had started stopped: refused, naming it, until a plain M3, M4 or M5
+    of the master (here line 13, whose own M3 plans it again)."""
+    sin = load_profile("sinumerik-840d")
+    text = SIN_EXTENDED.format(code=code)
+    for line in (11, 12):
+        message = refusal(text, line, sin)
+        assert message.startswith(f"cannot restart here: {code} on line 10 commands a spindle "
+                                  "by its address extension or position"), message
+        assert message.endswith("restart at or before line 10, or after a plain M3, M4 or M5 "
+                                "of the master spindle"), message
+    assert plan(text, 10, sin).preamble
+    if code.startswith(("M2=", "M[", "SPOSA[")):  # another spindle's, or one not read
+        assert refusal(text, 14, sin)
+    else:
+        assert "G97 S1000 M03" in plan(text, 14, sin).preamble
 
 
 # -- review 35: the restart's safety faults ---------------------------------------------------

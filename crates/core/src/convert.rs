@@ -4654,10 +4654,17 @@ impl Converter {
         let Some((count, to)) = self.c.cycle_repeats else {
             return Ok(());
         };
-        if self.c.lathe {
-            return Ok(());
-        }
-        let cycle = |g: i64| matches!(g, 73 | 74 | 76 | 81..=89);
+        // (a lathe's drilling cycles are G83-G89, their K the count: 0i-TF "Canned cycle for
+        // drilling"; its G73-G76 are the multiple repetitive cycles, whose K is no count. A
+        // non-whole count is refused there as on a mill: review 56d F10)
+        let lathe = self.c.lathe;
+        let cycle = |g: i64| {
+            if lathe {
+                matches!(g, 83..=89)
+            } else {
+                matches!(g, 73 | 74 | 76 | 81..=89)
+            }
+        };
         if !(self.cycle_code.is_some_and(cycle) || gs.iter().copied().any(cycle)) {
             return Ok(());
         }
@@ -4683,7 +4690,7 @@ impl Converter {
                 line: None,
             });
         }
-        if count == to {
+        if count == to || lathe {
             return Ok(());
         }
         let Some(w) = b

@@ -312,6 +312,27 @@ pub struct Walk {
     /// The code of `turn_codes` that last started the spindle, while no M03, M04 or M05 has
     /// come since (line, code): the preamble restores the spindle by it (review 56a F9).
     pub turned_by: Option<(usize, i64)>,
+    /// The M codes of the spindle's modal group (M03's `duration`) that the walk does not
+    /// read: neither M03-M05 nor a code of `turn_codes` or `orient_codes` (a builder's M13
+    /// listed without a meaning key, LinuxCNC's M19), set by the binding.
+    pub unread_spindle: Vec<i64>,
+    /// The codes of `unread_spindle` run while no M03, M04, M05 or code the walk reads has
+    /// come since (the first one's line, the last one's line and code): what they did to the
+    /// spindle the preamble cannot know (review 56d F9).
+    pub unread_spin: Option<(usize, usize, i64)>,
+    /// The first M code the profile's list lacks since the spindle last stopped or started,
+    /// or since the last M06 (the line of the first code of [`Walk::builder_m`]'s run): a
+    /// restart there is not refused for it, where one at `builder_m`'s line may be.
+    pub builder_first: usize,
+    /// A SINUMERIK's spindle functions by an address extension (`M1=3`, `M0=70`,
+    /// `M[SPINU]=3`) or position (`SPOS=90`, `SPOSA[2]=0`) since the last plain M3, M4 or M5:
+    /// the first one's line, the last one's line and text, and whether a plain M3, M4 or M5
+    /// commands each one's spindle (extension 0, the master; 1 while no `SETMS` has named
+    /// another), and so ends them. The modal state follows the plain codes alone, so the
+    /// preamble would restore another spindle state (review 56d F6, F11).
+    pub spindle_by_extension: Option<(usize, usize, Vec<u8>, bool)>,
+    /// Whether a `SETMS` came before: the master spindle is no longer machine data's 1.
+    setms: bool,
     /// The line of the last M07/M08 (0: none yet): a FANUC or Haas mill's M06 after it has
     /// stopped the coolant ([`RestartWalk::tool`]).
     pub coolant_line: usize,
@@ -591,6 +612,11 @@ impl Walk {
             spin_line: 0,
             turn_codes: Vec::new(),
             turned_by: None,
+            unread_spindle: Vec::new(),
+            unread_spin: None,
+            builder_first: 0,
+            spindle_by_extension: None,
+            setms: false,
             coolant_line: 0,
             unset: 0,
             polar_y: false,
@@ -626,6 +652,37 @@ impl Walk {
             Some(&(at, None)) => Some(at),
             _ => None,
         }
+    }
+
+    /// A SINUMERIK's `M<n>=<code>` on `line` (`token`): a function of the spindle's modal
+    /// group (M3, M4, M5, M19, M70; Function Manual S1) by its address extension, or one whose
+    /// code is not a constant, is one the modal state does not follow.
+    fn spindle_extension(&mut self, line: usize, token: &[u8]) {
+        let digits = token[1..].iter().take_while(|c| c.is_ascii_digit()).count();
+        let value = &token[2 + digits..];
+        let spindle_code = if plain(&[b"M", value].concat()) {
+            let (whole, fraction, _) = code_number(value);
+            fraction.is_empty() && matches!(whole, 3 | 4 | 5 | 19 | 70)
+        } else {
+            true
+        };
+        if spindle_code {
+            let extension = token[1..1 + digits].iter().fold(0u64, |n, &c| {
+                n.saturating_mul(10).saturating_add(u64::from(c - b'0'))
+            });
+            let master = extension == 0 || (extension == 1 && !self.setms);
+            self.by_extension(line, token, master);
+        }
+    }
+
+    /// A spindle function by extension or position on `line` (`text`), see
+    /// [`Walk::spindle_by_extension`].
+    fn by_extension(&mut self, line: usize, text: &[u8], master: bool) {
+        let (first, master) = match &self.spindle_by_extension {
+            Some((first, _, _, was)) => (*first, master && *was),
+            None => (line, master),
+        };
+        self.spindle_by_extension = Some((first, line, text.to_vec(), master));
     }
 
     /// An M03, M04, M05 or a tool change on `line` ends the orientation in force.
@@ -1078,6 +1135,9 @@ impl Walk {
                 continue;
             }
             if !plain(token) {
+                if letter == b'M' && self.control == Control::Sinumerik && indexed(token) {
+                    self.spindle_extension(line, token);
+                }
                 if matches!(letter, b'G' | b'M') && matches!(token.get(1), Some(b'#' | b'[')) {
                     // G#1, G[68.2], M#500: a code set by a parameter, so which code ran is not
                     // known (review 32, finding 1: the rotation or tilt it sets was left out)
@@ -1311,13 +1371,44 @@ impl Walk {
                 }
             }
         }
+        if self.control == Control::Sinumerik {
+            for &(kind, text) in b.statements {
+                let upper = text.to_ascii_uppercase();
+                let name = &upper[..crate::statement::ident_end(&upper, 0)];
+                if name == b"SETMS" {
+                    self.setms = true;
+                }
+                // SPOS=90, SPOSA[2]=0: the spindle positioned (position control, as M19), and
+                // M[SPINU]=3, a spindle function of a spindle named by a variable
+                let positions = matches!(name, b"SPOS" | b"SPOSA");
+                if kind == Kind::Assignment && (positions || upper.starts_with(b"M[")) {
+                    let master = positions && upper.get(name.len()) == Some(&b'=');
+                    self.by_extension(line, text, master && !self.setms);
+                }
+            }
+        }
         for &m in &ms {
+            if matches!(m, 3..=5) || self.turn_codes.contains(&m) || self.orient_codes.contains(&m)
+            {
+                self.unread_spin = None;
+                if self
+                    .spindle_by_extension
+                    .as_ref()
+                    .is_some_and(|(.., master)| *master)
+                {
+                    self.spindle_by_extension = None;
+                }
+            } else if self.unread_spindle.contains(&m) {
+                let first = self.unread_spin.map_or(line, |(first, ..)| first);
+                self.unread_spin = Some((first, line, m));
+            }
             if self.orient_codes.contains(&m) {
                 self.oriented = Some((line, m));
                 if self.oriented_since().is_none() {
                     self.orientations.push((line, None));
                 }
-            } else if matches!(m, 3..=5) {
+            } else if matches!(m, 3..=5) || self.turn_codes.contains(&m) {
+                // (a keyed start, a builder's M13, ends it as M03 does: review 56d F2)
                 self.orientation_ended(line);
             }
             let turns = self.turn_codes.contains(&m);
@@ -1416,6 +1507,9 @@ impl Walk {
                         && !self.orient_codes.contains(&m)
                 });
                 if let Some(m) = builder {
+                    if self.builder_m.is_none_or(|(at, _)| at < self.m6_line) {
+                        self.builder_first = line;
+                    }
                     self.builder_m = Some((line, m));
                 }
             }

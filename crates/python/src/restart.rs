@@ -147,6 +147,28 @@ impl RestartWalk {
                 walk.m_modes.push((n, name, on, function.clone()));
             }
         }
+        // the spindle's modal group's other codes, which the walk does not read (review 56d
+        // F9: a builder's M13 listed without a meaning key planned past with the spindle off)
+        let group = |n: usize| {
+            m.check
+                .m_codes
+                .get(n)
+                .and_then(Option::as_ref)
+                .map(|c| c.duration.as_str())
+                .filter(|d| !d.is_empty() && *d != "TBO")
+        };
+        if let Some(spindle) = group(3) {
+            for n in 0..m.check.m_codes.len() {
+                let Ok(code) = i64::try_from(n) else { break };
+                if group(n) == Some(spindle)
+                    && !matches!(code, 3..=5)
+                    && !walk.turn_codes.contains(&code)
+                    && !walk.orient_codes.contains(&code)
+                {
+                    walk.unread_spindle.push(code);
+                }
+            }
+        }
         Ok(RestartWalk {
             checker,
             fresh: walk.clone(),
@@ -440,6 +462,13 @@ impl RestartWalk {
         d.set_item("builder_m", w.builder_m)?;
         d.set_item("spin_line", w.spin_line)?;
         d.set_item("turned_by", w.turned_by)?;
+        d.set_item("unread_spin", w.unread_spin)?;
+        d.set_item("builder_first", w.builder_first)?;
+        let by_extension = w
+            .spindle_by_extension
+            .as_ref()
+            .map(|(first, line, text, _)| (*first, *line, String::from_utf8_lossy(text)));
+        d.set_item("spindle_by_extension", by_extension)?;
         d.set_item("coolant_line", w.coolant_line)?;
         let unset: String = AXES
             .iter()

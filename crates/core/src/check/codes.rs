@@ -148,22 +148,40 @@ impl Checker {
     /// number>)` makes that spindle the master, `SETMS` alone returns to the machine data's):
     /// an argument the checker cannot read as a spindle's number (`SETMS(R1)` with R1 not
     /// set to a constant) leaves it unknown.
-    pub(super) fn set_master(&mut self, text: &[u8], line: usize) {
+    ///
+    /// A blank between the name and its parenthesis separates them (Programming Manual
+    /// Fundamentals, "Blank": `SETMS (2)` is `SETMS(2)`, review 56d F3). A `SETMS` that may not
+    /// run (`may_skip`: after a condition, a loop, a jump or a label, whose blocks the checker
+    /// does not follow) leaves the master unknown, neither the one it names nor the one before
+    /// (review 56d F8).
+    pub(super) fn set_master(&mut self, text: &[u8], line: usize, may_skip: bool) {
         let end = crate::statement::ident_end(text, 0);
-        let inside = match text.get(end) {
-            Some(b'(') => text[end + 1..text.len().saturating_sub(1)].trim_ascii(),
-            _ => &[][..],
+        let rest = text[end..].trim_ascii();
+        let inside = match rest.first() {
+            Some(b'(') if rest.ends_with(b")") => Some(rest[1..rest.len() - 1].trim_ascii()),
+            None => Some(&[][..]),
+            Some(_) => None, // not a SETMS the checker reads: any spindle may be the master
         };
-        self.master = if inside.is_empty() {
-            Master::MachineData
-        } else {
-            match self.sinumerik_constant(inside) {
+        self.master = match inside {
+            _ if may_skip => Master::Unknown {
+                line,
+                skipped: true,
+            },
+            Some([]) => Master::MachineData,
+            Some(inside) => match self.sinumerik_constant(inside) {
                 Some(n) if n.is_whole() && n > Dec::ZERO => Master::Set {
                     spindle: u64::try_from(n.trunc()).unwrap_or(u64::MAX),
                     line,
                 },
-                _ => Master::Unknown { line },
-            }
+                _ => Master::Unknown {
+                    line,
+                    skipped: false,
+                },
+            },
+            None => Master::Unknown {
+                line,
+                skipped: false,
+            },
         };
     }
 
@@ -418,10 +436,15 @@ impl Checker {
                     " of one spindle: the master spindle, the plain M function's, is spindle \
                      {spindle} since the SETMS on line {line}"
                 ),
-                Master::Unknown { line } => format!(
+                Master::Unknown { line, skipped } => format!(
                     " of what may be one spindle: which spindle is the master, the plain M \
-                     function's, is not known since the SETMS on line {line} (an argument the \
-                     checker cannot read), so it may be spindle {extension}"
+                     function's, is not known since the SETMS on line {line} ({}), so it may \
+                     be spindle {extension}",
+                    if skipped {
+                        "after a condition, loop, jump or label: it may not run"
+                    } else {
+                        "an argument the checker cannot read"
+                    }
                 ),
             };
             self.group_conflict(words, other, (code, i), line, Some(&master));
@@ -564,8 +587,9 @@ pub(super) enum Master {
     MachineData,
     /// The spindle a `SETMS(n)` on `line` named.
     Set { spindle: u64, line: usize },
-    /// A `SETMS` on `line` whose argument the checker cannot read: any spindle may be it.
-    Unknown { line: usize },
+    /// A `SETMS` on `line` whose argument the checker cannot read, or that may not run
+    /// (`skipped`: after a condition, a loop, a jump or a label): any spindle may be it.
+    Unknown { line: usize, skipped: bool },
 }
 
 /// The whole G and M codes of a block in their order ([`code_key`]), packed in a `u64`: what
@@ -931,6 +955,33 @@ mod tests {
         assert_eq!(found("G0 X0\nM0=3 M0=4"), conflict(3, 6));
         assert_eq!(found("G0 X0\nM0=3 M1=4"), conflict(3, 6));
         assert_eq!(found("G0 X0\nM0=3 M3"), []);
+        // a blank between SETMS and its parenthesis separates them (review 56d F3)
+        assert_eq!(found("G0 X0\nSETMS (2)\nM3 M1=5"), []);
+        assert_eq!(found("G0 X0\nSETMS (2)\nM3 M2=4"), conflict(4, 4));
+        assert_eq!(
+            found("G0 X0\nSETMS(2)\nSETMS ( 1 )\nM3 M1=4"),
+            conflict(5, 4)
+        );
+        // a SETMS that may not run (under a condition, skipped by a jump, after a label): the
+        // master is not known, neither the one it names nor spindle 1 (review 56d F8)
+        for body in [
+            "R1=0\nIF R1==1\nSETMS(2)\nENDIF\nM3 M1=4",
+            "GOTOF LBL1\nSETMS(2)\nLBL1:\nM3 M1=4",
+            "GOTOF LBL1\nSETMS(2)\nLBL1:\nM3 M2=4",
+            "LBL1:\nSETMS(2)\nM3 M1=4",
+        ] {
+            let said = findings(sinumerik(), &program(body), Rule::ModalGroupConflict);
+            assert_eq!(said.len(), 1, "{body}");
+            let setms = 2 + body.lines().position(|l| l == "SETMS(2)").unwrap_or(0);
+            assert!(
+                said[0].message.contains(&format!(
+                    "is not known since the SETMS on line {setms} (after a condition, loop, \
+                     jump or label: it may not run), so it may be spindle"
+                )),
+                "{body}: {}",
+                said[0].message
+            );
+        }
     }
 
     /// Which codes turn a spindle is the profile's meaning keys, compiled once

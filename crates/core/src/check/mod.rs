@@ -813,6 +813,9 @@ pub struct Checker {
     limits_hint_said: bool,
     /// A SINUMERIK's master spindle, the plain M function's (`SETMS(2)`).
     master: codes::Master,
+    /// A SINUMERIK's condition, loop, jump or label so far: the blocks after it may not run
+    /// ([`Checker::set_master`]).
+    flow_seen: bool,
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
@@ -1366,6 +1369,7 @@ impl Checker {
             jump_left: None,
             no_feed_target: 0,
             master: codes::Master::MachineData,
+            flow_seen: false,
             unfollowed_noted: false,
             unknown_noted: false,
             elements_noted: HashSet::new(),

@@ -324,6 +324,13 @@ impl Checker {
         if self.config.family != Family::Sinumerik {
             return;
         }
+        // (a SETMS after a condition, loop, jump or label may not run: review 56d F8)
+        let flow_here = b
+            .statements
+            .iter()
+            .any(|&(_, kind, _)| matches!(kind, Kind::Flow | Kind::Label));
+        let may_skip = self.flow_seen || flow_here;
+        self.flow_seen = may_skip;
         for &(column, kind, text) in b.statements {
             if kind == Kind::Assignment {
                 self.positioned(text);
@@ -339,7 +346,7 @@ impl Checker {
             };
             if group.effect == Effect::Spindle {
                 // (read before the arguments are forgotten: `SETMS(R1)`)
-                self.set_master(text, b.line);
+                self.set_master(text, b.line, may_skip);
             }
             if group.arguments && text.get(end) == Some(&b'(') {
                 let inside = &text[end + 1..text.len().saturating_sub(1)];
