@@ -191,14 +191,18 @@ AT_ZERO = HEAD + "G0 X0 Y0 Z10. / "
     # F5 (r4.nc): G65 P5000 runs a program stored on the control, which may call O2000
     ("G21 G17 G90 G54 / G0 X850. Y0 Z10. / G65 P5000 / M30 / O2000 / G0 X-700. / M99",
      [("TG601", 8, 4)]),
+    # F4 (m9.nc, m14.nc): the main's only end is one the block skip passes over; with the
+    # switch on it runs on into O2000
+    (MAIN + "/M30 / O2000 / G0 X-700. / M99", [("TG601", 7, 4)]),
+    (MAIN + "/M99 / O2000 / G0 X-700. / M99", [("TG601", 7, 4)]),
 ])
 def test_an_uncalled_program_is_joined_where_alone_could_lose_an_error(program, expected):
     """Review 56b, F1, F2, F4: a subprogram no call of the file names is judged on its own
     span only where that loses no overtravel: one that calls a program, one a call may name
     under another program-number option or from an external device, and an O9000-O9999 the
     control runs for an M, G or T code keep their span joined to the file's, as before; so do
-    all of a file that holds an O9000-O9999 or calls a program it does not hold (review 56e,
-    F1, F5)."""
+    all of a file that holds an O9000-O9999 or calls a program it does not hold, and one after
+    an end the block skip passes over (review 56e, F1, F4, F5)."""
     assert errors(program) == expected
 
 

@@ -111,6 +111,9 @@ struct Body {
     /// call`): no call naming it, its span is joined to the file's all the same, with those of
     /// the programs it runs (review 56b, F4).
     calls: bool,
+    /// The end or return before it is one the block skip can pass over (`/M30`): with the
+    /// switch on, the program before runs on into it (review 56e, F4).
+    after_skippable_end: bool,
     /// The axes (their places' bits) whose machine position (a work offset's) it said
     /// outside the travel: that said more than its span can, which is not said again where
     /// it is judged alone (review 56b, F3).
@@ -264,6 +267,7 @@ impl Checker {
                 inherited: [[None; 2]; 9],
                 inherited_last: None,
                 calls: false,
+                after_skippable_end: self.end_skippable,
                 outside: 0,
             },
             stash,
@@ -1007,9 +1011,11 @@ impl Checker {
     /// and a Haas for its aliased M and G codes (O9000-O9019): a call the file does not write
     /// (F2). Nor where the file holds such a program (an M06 of the subprogram may run it:
     /// review 56e, F1), or a call names a program the file does not hold (stored on the
-    /// control, it may run this one: F5).
+    /// control, it may run this one: F5), or the end before it is one the block skip passes
+    /// over (`/M30`: with the switch on, the main runs on into it; F4).
     fn judged_alone(&self, p: &Pending) -> bool {
         if p.body.calls
+            || p.body.after_skippable_end
             || self.file_programs.range(9000..=9999).next().is_some()
             || self
                 .call_numbers

@@ -790,6 +790,10 @@ pub struct Checker {
     /// `ended_line`, but with the switch on the control runs the blocks after it, so they are
     /// no words after the end (TG106).
     skipped_end: bool,
+    /// The last end or return (M02, M30, M99) the block skip can pass over: with the switch
+    /// on the control runs on into the program written after it, which is then not one no
+    /// call names ([`Checker::judged_alone`]; review 56e, F4).
+    end_skippable: bool,
     /// The program has met an M02/M30 that surely runs: on LinuxCNC not one inside an o-word
     /// condition or loop of the main program or inside a definition, which may not run
     /// (rs274 reads on where it does not: review 19). The rules that judge the main program's
@@ -1356,6 +1360,7 @@ impl Checker {
             offsets_section: false,
             ended_line: 0,
             skipped_end: false,
+            end_skippable: false,
             surely_ended: false,
             linuxcnc_end_depth: None,
             after_end_reported: false,
@@ -2583,6 +2588,7 @@ impl Checker {
             if ends {
                 self.skipped_end = skipped_m(&[2, 30]);
             }
+            self.end_skippable = skipped_m(&[2, 30, 99]);
             if !(returns && !ends && skippable) {
                 self.part_ended(returns);
             }
