@@ -559,24 +559,23 @@ _TURNING = frozenset({"spindle-cw", "spindle-ccw", "spindle-cw-coolant-on",
 
 def spindle_notes(profile: Profile) -> list[str]:
     """What a profile's spindle codes leave out, for ``tapegate profiles show``: a modal M03 or
-    M04 (ISO 6983-1's and every builder's spindle start) without a meaning key that turns a
-    spindle is not one to the checker, so ``M03 M04`` is TG308, a warning, where a keyed
-    one's is TG304, and the restart does not read it (review 56a F1: a profile of one's own
-    is written without a base, whose keys it would keep)."""
+    M04 (ISO 6983-1's and every builder's spindle start) keyed with a meaning that turns no
+    spindle is not one to the checker, so ``M03 M04`` is TG308, a warning, where an unkeyed
+    one's (ISO 6983-1's meaning) or a turning key's is TG304 (crates/core check::turning_codes;
+    reviews 56a F1, 56d F5)."""
     notes: list[str] = []
     if profile.dialect.family == "iso":
-        # (ISO 6983-1 keeps every pair of one group TG304, and its table keys no code)
+        # (ISO 6983-1 keeps every pair of one group TG304)
         return notes
     for number, key in ((3, "spindle-cw"), (4, "spindle-ccw")):
         code = profile.code("M", number)
         if (code is not None and code.duration not in ("", "TBO")
-                and code.meaning not in _TURNING):
-            said = f"meaning {code.meaning!r}" if code.meaning else "no meaning"
+                and code.meaning and code.meaning not in _TURNING):
             notes.append(
                 f"M{number:02d} ({code.function}) is in modal group {code.duration} with "
-                f"{said}: the checker does not take it to turn a spindle (two codes of its "
-                f"group in a block a warning, TG308, not TG304) and a restart does not restore "
-                f"it; if it starts the spindle, give it meaning = \"{key}\" "
+                f"meaning {code.meaning!r}: the checker does not take it to turn a spindle "
+                f"(two codes of its group in a block a warning, TG308, not TG304); if it "
+                f"starts the spindle, give it meaning = \"{key}\" "
                 f"(docs/profiles.md, \"Code meanings\")")
     return notes
 

@@ -340,9 +340,10 @@ SPINDLE_BASE = 'base = "fanuc-mill"\n[codes]\n'
 
 def test_a_code_reworded_on_a_base_keeps_the_bases_meaning(tmp_path: Path):
     """Review 56a F1: an entry of `[codes]` on a base replaces the base's, but keeps its
-    `meaning` unless it sets one (`meaning = ""` drops it), whichever spelling names the code
-    (`M3`, `M03`): a builder's wording of M03/M04 keeps them spindle starts, so `M03 M04` stays
-    TG304; `false` still drops the code."""
+    `meaning` unless it sets one (`meaning = ""` drops it, and ISO 6983-1's meaning is left),
+    whichever spelling names the code (`M3`, `M03`): a builder's wording of M03/M04 keeps them
+    spindle starts, so `M03 M04` stays TG304; a key that turns nothing makes it TG308; `false`
+    still drops the code."""
     def pair(profile_text: str) -> list[str]:
         path = tmp_path / "p.toml"
         path.write_text(profile_text)
@@ -356,8 +357,11 @@ def test_a_code_reworded_on_a_base_keeps_the_bases_meaning(tmp_path: Path):
         assert load_profile(str(tmp_path / "p.toml")).code("M", 3).function == "spindle CW (ours)"
     dropped = SPINDLE_BASE + ('M03 = { function = "ours", duration = "spindle", meaning = "" }\n'
                               'M04 = { function = "ours", duration = "spindle", meaning = "" }\n')
-    assert pair(dropped) == ["TG308"]
+    # (unkeyed, M03 and M04 keep ISO 6983-1's meaning, spindle starts: review 56d F5)
+    assert pair(dropped) == ["TG304"]
     assert load_profile(str(tmp_path / "p.toml")).code("M", 3).meaning == ""
+    stops = dropped.replace('meaning = ""', 'meaning = "spindle-stop"')
+    assert pair(stops) == ["TG308"]
     other = SPINDLE_BASE + 'M03 = { function = "ours", duration = "spindle", meaning = "x-y" }\n'
     assert pair(other) == ["TG304"]  # (M04 keeps the base's spindle-ccw)
     assert load_profile(str(tmp_path / "p.toml")).code("M", 3).meaning == "x-y"
@@ -367,9 +371,10 @@ def test_a_code_reworded_on_a_base_keeps_the_bases_meaning(tmp_path: Path):
 
 
 def test_a_profile_whose_m03_turns_nothing_is_said_by_profiles_show(tmp_path: Path):
-    """Review 56a F1: a profile of one's own (no base) whose M03/M04 have no spindle key makes
-    `M03 M04` a warning only; `tapegate profiles show` says so, naming the key to give. The
-    built-in profiles say nothing (ISO 6983-1's keep every pair TG304)."""
+    """Reviews 56a F1, 56d F5: a profile of one's own (no base) whose M03 has no key keeps
+    ISO 6983-1's meaning, a spindle start (`M03 M04` TG304, no note); one whose M03 is keyed
+    with a meaning that turns nothing makes the pair a warning, and `tapegate profiles show`
+    says so, naming the key to give. The built-in profiles say nothing."""
     from click.testing import CliRunner
 
     from formats.profile import builtin_names, spindle_notes
@@ -382,13 +387,23 @@ def test_a_profile_whose_m03_turns_nothing_is_said_by_profiles_show(tmp_path: Pa
            'M05 = { function = "stop", duration = "spindle" }\n')
     path = tmp_path / "own.toml"
     path.write_text(own)
-    notes = spindle_notes(load_profile(str(path)))
+    assert spindle_notes(load_profile(str(path))) == []
+    pair = "%\nO1000\nS1000 M03 M04\nM05 M03\nM30\n%\n"
+    assert [(f.rule, f.severity, f.line) for f in check_text(pair, load_profile(str(path)))
+            if f.rule in ("TG304", "TG308")] == [("TG304", "error", 3), ("TG304", "error", 4)]
+    stop = path.with_name("stop.toml")
+    stop.write_text(own.replace('duration = "spindle" }\nM04',
+                                'duration = "spindle", meaning = "spindle-stop" }\nM04'))
+    notes = spindle_notes(load_profile(str(stop)))
     assert len(notes) == 1
-    assert notes[0].startswith("M03 (spindle cw) is in modal group spindle with no meaning: ")
+    assert notes[0].startswith(
+        "M03 (spindle cw) is in modal group spindle with meaning 'spindle-stop': ")
     assert notes[0].endswith('give it meaning = "spindle-cw" (docs/profiles.md, "Code meanings")')
-    result = CliRunner().invoke(profiles, ["show", str(path)])
+    assert [(f.rule, f.severity) for f in check_text(pair, load_profile(str(stop)))
+            if f.rule in ("TG304", "TG308")] == [("TG304", "error"), ("TG308", "warning")]
+    result = CliRunner().invoke(profiles, ["show", str(stop)])
     assert result.exit_code == 0
-    assert f"{path}: {notes[0]}" in result.output
+    assert f"{stop}: {notes[0]}" in result.output
     assert [n for n in builtin_names() if spindle_notes(load_profile(n))] == []
 
 

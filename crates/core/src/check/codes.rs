@@ -777,12 +777,25 @@ const TURNING_KEYS: [&str; 6] = [
 /// The M codes of a profile's own list (`meanings`: the code, `M03`, its meaning key and its
 /// function, [`crate::machine::MachineSpec::meanings`]) that turn a spindle ([`TURNING_KEYS`]),
 /// by number: compiled once into [`Config::turning`], asked where two codes of a group meet.
+/// M03 and M04 turn the spindle unless the profile keys them otherwise: that is their meaning
+/// in ISO 6983-1's table (spindle clockwise, counter-clockwise), so a profile of your own that
+/// lists them without a key keeps their refusal (review 56d, F5: `M03 M04` was a warning).
 pub fn turning_codes(meanings: &[(String, String, String)]) -> Vec<i64> {
-    meanings
+    let number = |code: &str| code.strip_prefix('M')?.parse::<i64>().ok();
+    let mut turning: Vec<i64> = meanings
         .iter()
         .filter(|(_, key, _)| TURNING_KEYS.contains(&key.as_str()))
-        .filter_map(|(code, ..)| code.strip_prefix('M')?.parse().ok())
-        .collect()
+        .filter_map(|(code, ..)| number(code))
+        .collect();
+    for iso in [3, 4] {
+        let keyed_otherwise = meanings
+            .iter()
+            .any(|(code, key, _)| number(code) == Some(iso) && !key.is_empty());
+        if !keyed_otherwise && !turning.contains(&iso) {
+            turning.push(iso);
+        }
+    }
+    turning
 }
 
 fn group_of_code(config: &Config, code: CodeRef) -> &str {
