@@ -8,6 +8,8 @@ from formats.machine import MachineSpec
 from formats.model import Word
 
 MAX_BLOCK: int
+# the meaning keys of a code that turns a spindle (crates/core check::TURNING_KEYS)
+TURNING_KEYS: list[str]
 
 _Flags = tuple[bool, bool, bool, bool, bool, bool, str]
 

@@ -552,17 +552,14 @@ def _on_base(data: dict[str, Any], source: str, seen: tuple[str, ...] = ()) -> d
     return merged
 
 
-# The meaning keys that say a code turns a spindle (crates/core check::turning_codes)
-_TURNING = frozenset({"spindle-cw", "spindle-ccw", "spindle-cw-coolant-on",
-                      "spindle-ccw-coolant-on", "live-tool-cw", "live-tool-ccw"})
-
-
 def spindle_notes(profile: Profile) -> list[str]:
     """What a profile's spindle codes leave out, for ``tapegate profiles show``: a modal M03 or
     M04 (ISO 6983-1's and every builder's spindle start) keyed with a meaning that turns no
     spindle is not one to the checker, so ``M03 M04`` is TG308, a warning, where an unkeyed
     one's (ISO 6983-1's meaning) or a turning key's is TG304 (crates/core check::turning_codes;
     reviews 56a F1, 56d F5)."""
+    from formats._core import TURNING_KEYS  # (the core's one list: check::turning_codes)
+
     notes: list[str] = []
     if profile.dialect.family == "iso":
         # (ISO 6983-1 keeps every pair of one group TG304)
@@ -570,7 +567,7 @@ def spindle_notes(profile: Profile) -> list[str]:
     for number, key in ((3, "spindle-cw"), (4, "spindle-ccw")):
         code = profile.code("M", number)
         if (code is not None and code.duration not in ("", "TBO")
-                and code.meaning and code.meaning not in _TURNING):
+                and code.meaning and code.meaning not in TURNING_KEYS):
             notes.append(
                 f"M{number:02d} ({code.function}) is in modal group {code.duration} with "
                 f"meaning {code.meaning!r}: the checker does not take it to turn a spindle "

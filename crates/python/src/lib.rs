@@ -853,5 +853,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(program_name_character, m)?)?;
     m.add_function(wrap_pyfunction!(sinumerik_form, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
+    m.add("TURNING_KEYS", tapegate_core::check::TURNING_KEYS.to_vec())?;
     Ok(())
 }

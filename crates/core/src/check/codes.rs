@@ -765,7 +765,7 @@ pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
 /// lathe's live tool (`live-tool-cw`, `live-tool-ccw`: the Okuma's M-tool spindle M13 M14,
 /// Haas's M133 M134). The profile says a code's meaning; a profile of your own that keys its
 /// codes so is read the same way.
-const TURNING_KEYS: [&str; 6] = [
+pub const TURNING_KEYS: [&str; 6] = [
     "spindle-cw",
     "spindle-ccw",
     "spindle-cw-coolant-on",

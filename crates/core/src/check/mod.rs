@@ -33,7 +33,7 @@ use crate::wordformat::WordFormat;
 use formats::FormatTable;
 
 pub use crate::word::{Role, Word};
-pub use codes::turning_codes;
+pub use codes::{turning_codes, TURNING_KEYS};
 pub use drawn::Drawn;
 pub use link::tv_message;
 pub use motion::in_one_quadrant;
