@@ -109,8 +109,21 @@ def test_the_okuma_mill_g_codes_are_those_of_the_osp_list():
     assert hits[0][2].startswith("G98 ")
 
 
+def test_the_later_osp_list_adds_the_air_cut_reduction_mode():
+    """G37/G38, blank in 4203-E, are the later OSP list's air cut reduction mode (greenbau.ro's
+    transcription of the OSP machining centre's List of G Codes): read, a group of their own."""
+    program = okuma("G38\nG1 X10. F500\nG37\nG0 Z50.")
+    assert not {r for r, *_ in found(program, "okuma-mill")} & {"TG306", "TG307"}
+    # the same list's G33 (thread cutting) and G39 (corner arcs) move the machine by words the
+    # list does not give: they stay a warning naming them, the motion unknown after them
+    for code in ("G33 Z-10. F1.5", "G39 I1. J1."):
+        hits = fired(okuma(code), "okuma-mill", "TG307")
+        assert [(severity, line) for severity, line, _ in hits] == [("warning", 4)]
+        assert hits[0][2].startswith(code.split()[0] + " ")
+
+
 @pytest.mark.parametrize("block", ["G50 G51 X0 Y0 P2", "G22 G23", "G174 G175", "G186 G187",
-                                   "G188 G189", "G194 G195", "G10 G11 X0 Y0 R30."])
+                                   "G188 G189", "G194 G195", "G10 G11 X0 Y0 R30.", "G37 G38"])
 def test_two_okuma_mill_g_codes_of_one_group_are_tg304(block):
     hits = fired(okuma(block), "okuma-mill", "TG304")
     assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
