@@ -1067,6 +1067,10 @@ pub struct Checker {
     /// another label outside them with nothing but M2/M30 after it (the return that ends the
     /// file); 0: none.
     sub_returns: (usize, usize, usize),
+    /// LinuxCNC: the line and column of the first `%` line rs274 would refuse that stands
+    /// after the endsub of a subroutine file (a call returns at the endsub and never reads
+    /// it): reported only where a line after it makes the file a program.
+    sub_percent: Option<(usize, usize)>,
     /// LinuxCNC: the definition open at this point of the file (`o<name> sub` not yet closed
     /// by its endsub): its line, column and label.
     open_definition: Option<(usize, usize, Vec<u8>)>,
@@ -1453,6 +1457,7 @@ impl Checker {
             sub_label: Vec::new(),
             sub_preamble: (0, 0),
             sub_returns: (0, 0, 0),
+            sub_percent: None,
             open_definition: None,
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),

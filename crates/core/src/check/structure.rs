@@ -223,17 +223,31 @@ impl Checker {
 
     /// TG412: a `%` line LinuxCNC's reader refuses ("Bad character '%' used",
     /// [`dialect::ReadingEnd::refuses_percent`]): in a file not begun with a `%` line, or a
-    /// `%` with more than blanks after it.
+    /// `%` with more than blanks after it. One after the endsub of a subroutine file (a
+    /// `%` an editor or a post ends the file with) is never read: a call runs the file from
+    /// its sub and returns at the endsub (LinuxCNC's O codes, "Calling Files"; `rs274 -g` of
+    /// `o<tp> call` with `tp.ngc` ending in `o<tp> endsub` and `%`: no error), as the file's
+    /// missing M2 is no TG114. It is said only where a line after it makes the file a
+    /// program, which rs274 would run past the definition to the `%` ([`SubFile`]).
     pub(super) fn refused_percent(&mut self, b: &BlockView<'_>) {
+        let column = b.text.iter().position(|&c| c == b'%').map_or(1, |i| i + 1);
+        if self.sub_file == SubFile::Closed {
+            self.sub_percent.get_or_insert((b.line, column));
+            return;
+        }
+        self.percent_refusal(b.line, column);
+    }
+
+    /// The TG412 of [`Checker::refused_percent`], at `line` and `column`.
+    fn percent_refusal(&mut self, line: usize, column: usize) {
         let why = if self.reading_end.percent_file() {
             "the closing % of a file begun with % stands alone on its line"
         } else {
             "the file does not begin with a % line, so rs274 reads this one as a block, and no \
              word begins with %"
         };
-        let column = b.text.iter().position(|&c| c == b'%').map_or(1, |i| i + 1);
         let message = format!("Bad character '%' used (rs274ngc): {why}");
-        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
     /// The next program of a file of several (a memory backup, a subprogram after the main
@@ -1081,6 +1095,9 @@ impl Checker {
             }
             if self.sub_returns.0 != 0 {
                 self.early_endsub_in_program();
+            }
+            if let Some((line, column)) = self.sub_percent.take() {
+                self.percent_refusal(line, column);
             }
         }
     }
@@ -6060,6 +6077,43 @@ mod tests {
             found[0]
                 .message
                 .starts_with("o<a> sub is not closed by o<a> endsub"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    /// A `%` line after the endsub of a LinuxCNC subroutine file not begun with `%` (a
+    /// gmoccapy remap macro ending so, held23): a call returns at the endsub and never reads
+    /// it (`rs274 -g` of `o<tp> call` / `M2` beside it: no error), so no TG412 there; where
+    /// the file goes on as a program, rs274 reads it as a block ("Bad character '%' used"),
+    /// said at the `%`.
+    #[test]
+    fn a_percent_after_a_linuxcnc_subroutine_files_endsub_is_never_read() {
+        let run = |text: &str| fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses);
+        let sub = "o<tp> sub\nG0 X1\no<tp> endsub\n";
+        assert_eq!(run(&format!("{sub}%\n")), []);
+        assert_eq!(run(&format!("\n{sub}\n%\n\n")), []);
+        assert_eq!(run(&format!("{sub}M2\n%\n")), []);
+        // lines after it make the file a program: rs274 reads the `%` before them
+        assert_eq!(run(&format!("{sub}%\nG0 X2\nM2\n")), [(4, 1)]);
+        assert_eq!(run(&format!("{sub}%\no<tp> call\nM2\n")), [(4, 1)]);
+        // in the body, a call reads it: refused as before; and in a program, where it is
+        assert_eq!(run("o<tp> sub\n%\no<tp> endsub\n"), [(2, 1)]);
+        assert_eq!(run("G0 X1\n%\nM2\n"), [(2, 1)]);
+        // a file begun with `%` closes with it, as before
+        assert_eq!(run(&format!("%\n{sub}%\n")), []);
+        // the message is the refusal's own
+        let found = findings(
+            of_family(Family::LinuxCnc),
+            &format!("{sub}  %\nG0 X2\nM2\n"),
+            Rule::LinuxCncRefuses,
+        );
+        assert_eq!(found.len(), 1);
+        assert_eq!((found[0].line, found[0].column), (4, 3));
+        assert!(
+            found[0]
+                .message
+                .starts_with("Bad character '%' used (rs274ngc): the file does not begin"),
             "{}",
             found[0].message
         );
