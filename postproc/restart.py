@@ -719,11 +719,15 @@ class _Planner:
         turned off again by M09 before the restart block (review 56d F1): the preamble then
         writes M09 after it."""
         code = self.turn_code
-        if code is None:
-            return False
-        listed = self.profile.code("M", code)
-        key = listed.meaning if listed is not None else ""
-        return key.endswith("-coolant-on") and self.walk.keyed_coolant is None
+        return (code is not None and self.starts_coolant(code)
+                and self.walk.keyed_coolant is None)
+
+    def starts_coolant(self, m: int) -> bool:
+        """Whether the profile keys M code ``m`` as a spindle start with the coolant
+        (``spindle-cw-coolant-on``, ``spindle-ccw-coolant-on``)."""
+        listed = self.profile.code("M", m)
+        return listed is not None and listed.meaning.startswith("spindle-") \
+            and listed.meaning.endswith("-coolant-on")
 
     def check_keyed_coolant(self) -> None:
         """The coolant a keyed start with the coolant turned on (M13, M14) is on, but the
@@ -736,7 +740,8 @@ class _Planner:
             return
         own = {int(w.number) for w in self.block.word_objects()
                if w.letter == "M" and w.number and w.number.isdigit()}
-        if 9 in own or keyed[1] in own or (self.tool_change_stops() and 6 in own):
+        if (9 in own or any(self.starts_coolant(m) for m in own)
+                or (self.tool_change_stops() and 6 in own)):
             return
         at, code = keyed
         raise self.refuse(

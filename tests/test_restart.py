@@ -2356,8 +2356,8 @@ def test_a_keyed_starts_coolant_left_on_after_the_spindle_stopped_refuses_the_re
     """The coolant a keyed M13 turned on outlasts the M05 that stops the spindle: the preamble
     cannot turn it on alone (M13 starts the spindle too; which coolant M08 runs is the
     builder's), so a restart after that M05 and before an M09 is refused, where it was planned
-    with the coolant off; the restart block's own M09, the code itself, or a mill's tool change
-    sets the coolant itself and is planned. After an M09 it is planned with the coolant off."""
+    with the coolant off. A restart block that sets the coolant itself (its M09, a keyed start
+    with the coolant, a mill's tool change) is planned; after an M09, with the coolant off."""
     text = COOLED.format(start="M13").replace("N90 M09\n", "")
     for line in (12, 13):
         assert refusal(text, line, KEYED) == (
@@ -2367,7 +2367,7 @@ def test_a_keyed_starts_coolant_left_on_after_the_spindle_stopped_refuses_the_re
             "spindle too; restart at or before line 6, or after the M09 that ends the "
             "coolant"), line
     assert plan(text, 6, KEYED).preamble
-    for own in ("M09", "T2 M06"):
+    for own in ("M09", "T2 M06", "M14"):
         changed = text.replace("N140 G00 X0 Y0", f"N140 G00 X0 Y0 {own}")
         assert plan(changed, 12, KEYED).preamble, own
     off = text.replace("N140 G00 X0 Y0", "N135 M09\nN140 G00 X0 Y0")
