@@ -233,6 +233,9 @@ class _Facts:
     spin_line: int  # the last M03/M04's line (0: none), or of a keyed start (M13)
     # the keyed start other than M03/M04 in force (``spindle-cw-coolant-on``): (line, code)
     turned_by: tuple[int, int] | None
+    # the keyed start with the coolant (``spindle-cw-coolant-on``) whose coolant is on: no
+    # M09, mill M06 or program end since (line, code)
+    keyed_coolant: tuple[int, int] | None
     # the codes of the spindle's group the walk does not read (an unkeyed M13), run while no
     # code it reads has come since: (the first one's line, the last one's line, its code)
     unread_spin: tuple[int, int, int] | None
@@ -276,7 +279,7 @@ class _Facts:
             oriented=facts["oriented"], oriented_since=facts["oriented_since"],
             side_move=facts["side_move"],
             builder_m=facts["builder_m"], spin_line=facts["spin_line"],
-            turned_by=facts["turned_by"],
+            turned_by=facts["turned_by"], keyed_coolant=facts["keyed_coolant"],
             unread_spin=facts["unread_spin"], builder_first=facts["builder_first"],
             spindle_by_extension=facts["spindle_by_extension"],
             coolant_line=facts["coolant_line"],
@@ -561,6 +564,7 @@ class _Planner:
         self.check_unread_spindle()
         self.check_live_tool()
         self.check_builder_start()
+        self.check_keyed_coolant()
         if s.compensation in (41, 42):
             raise self.refuse(f"inside cutter compensation G{s.compensation} (from line "
                               f"{walk.comp_line}); restart at a block after the G40 that "
@@ -709,6 +713,44 @@ class _Planner:
             "after the M03, M04 or M05 that sets the spindle again (or key the code in the "
             "profile: meaning = \"spindle-cw-coolant-on\", docs/profiles.md)")
 
+    def keyed_coolant_off(self) -> bool:
+        """Whether the spindle's keyed start that the preamble writes (a builder's M13,
+        ``meaning = "spindle-cw-coolant-on"``) also turns on a coolant that the program had
+        turned off again by M09 before the restart block (review 56d F1): the preamble then
+        writes M09 after it."""
+        code = self.turn_code
+        return (code is not None and self.starts_coolant(code)
+                and self.walk.keyed_coolant is None)
+
+    def starts_coolant(self, m: int) -> bool:
+        """Whether the profile keys M code ``m`` as a spindle start with the coolant
+        (``spindle-cw-coolant-on``, ``spindle-ccw-coolant-on``)."""
+        listed = self.profile.code("M", m)
+        return listed is not None and listed.meaning.startswith("spindle-") \
+            and listed.meaning.endswith("-coolant-on")
+
+    def check_keyed_coolant(self) -> None:
+        """The coolant a keyed start with the coolant turned on (M13, M14) is on, but the
+        spindle is no longer turned by that code (an M05 or M03 came since, and no M09): no
+        code the preamble may write turns that coolant on alone (the code starts the spindle
+        too, and which coolant M08 runs is the builder's), so refuse, unless the restart
+        block sets the coolant itself (its own M09, the code again, or a mill's M06)."""
+        keyed = self.walk.keyed_coolant
+        if keyed is None or keyed[1] == self.turn_code:
+            return
+        own = {int(w.number) for w in self.block.word_objects()
+               if w.letter == "M" and w.number and w.number.isdigit()}
+        if (9 in own or any(self.starts_coolant(m) for m in own)
+                or (self.tool_change_stops() and 6 in own)):
+            return
+        at, code = keyed
+        raise self.refuse(
+            f"M{code:02d} on line {at} turned the spindle and the coolant on, and the spindle "
+            "has been stopped or started by another code since, with no M09: that coolant is "
+            f"still on, and the preamble cannot turn it on without M{code:02d} starting the "
+            f"spindle too; restart at or before line {at}, or after the M09 that ends the "
+            "coolant")
+
     def check_builder_start(self) -> None:
         """A FANUC or Haas mill whose spindle is stopped (by M05, or by the M06 of a tool
         change) where an M code the profile's list lacks came after: a builder's M13 starts the
@@ -844,6 +886,13 @@ class _Planner:
             spindle.append("M03" if s.spindle == "cw" else "M04")
         if spindle:
             out.append(" ".join(spindle))
+        if self.keyed_coolant_off():
+            # the program's own M09 turned off the coolant its M13 turned on: the preamble
+            # runs the two in the program's order, each in its own block (a FANUC hands every
+            # M code but M00-M02, M30, M98 and M99 to the builder's ladder, which decides what
+            # two in one block do), so the cut restarts with the coolant as the program had
+            # it (review 56d F1), and a coolant code in force after that M09 follows
+            out.append("M09")
         if s.coolant != "off":
             codes = [f"M{m:02d}" for m in walk.coolant]
             if len(codes) > 1 and self.mist_and_flood():

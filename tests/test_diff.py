@@ -286,6 +286,97 @@ def test_a_drilling_cycle_s_dwell_is_compared_as_a_time(tmp_path):
     assert [d.details() for d in found] == [["H2 -> H3"]]
 
 
+# (profile, the program with {} where the word goes, the word in A, the word in B, the
+# difference as the diff says it, and the tolerance within which it is the same program)
+MEASURES = [
+    # a lathe's thread start angle, 0.001 deg without a point (FANUC 0i-TF G32/G92 Q; Haas
+    # lathe G32 and G92 Q, "thread start angle"), compared in degrees
+    ("fanuc-lathe", "G21 G18 G99\nG00 X30. Z5. S500 M03\nG32 Z-20. F1.5 {}", "Q60000", "Q60001",
+     "Q60000 -> Q60001 (+0.001, +1 step)", 1),
+    ("fanuc-lathe", "G21 G18 G99\nG00 X30. Z5. S500 M03\nG92 X28. Z-20. F1.5 {}", "Q90000",
+     "Q90002", "Q90000 -> Q90002 (+0.002, +2 steps)", 2),
+    ("haas-lathe", "G20 G18 G99\nG00 X1. Z0.2 S500 M03\nG92 X0.9 Z-1. F0.0625 {}", "Q180000",
+     "Q180001", "Q180000 -> Q180001 (+0.001, +1 step)", 1),
+    # Haas lathe G76: A the tool nose angle in degrees, Q the start angle, neither with a point
+    ("haas-lathe", "G20 G18 G99\nG00 X1. Z0.2 S500 M03\nG76 X0.9 Z-1. K0.05 D0.01 F0.0625 {} P2",
+     "A60", "A59", "A60 -> A59 (-1, -1 step)", 1),
+    ("haas-lathe", "G20 G18 G99\nG00 X1. Z0.2 S500 M03\nG76 X0.9 Z-1. K0.05 D0.01 F0.0625 A60 {}",
+     "Q45000", "Q45001", "Q45000 -> Q45001 (+0.001, +1 step)", 1),
+    # a Haas lathe's G199 R: the secondary spindle's phase angle, degrees
+    ("haas-lathe", "G20 G18 G99\nG199 {}", "R30.", "R30.5", "R30. -> R30.5 (+0.5, +5000 steps)",
+     5000),
+    # a mill's and a lathe's drilling cycles' dwell P, milliseconds (FANUC, Haas)
+    ("fanuc-mill", "G21 G17 G90\nG00 X0 Y0 Z50. S1200 M03\nG99 G76 X10. Z-5. R3. Q0.5 {} F100.",
+     "P300", "P302", "P300 -> P302 (+0.002, +2 steps)", 2),
+    ("haas-mill", "G20 G17 G90\nG00 X0 Y0 Z2. S1200 M03\nG99 G89 X1. Z-0.5 R0.1 {} F10.",
+     "P300", "P301", "P300 -> P301 (+0.001, +1 step)", 1),
+    ("fanuc-lathe", "G21 G18 G99\nG00 X0 Z5. S500 M03\nG83 Z-20. R-2. Q5000 {} F0.1",
+     "P500", "P501", "P500 -> P501 (+0.001, +1 step)", 1),
+]
+
+# counts, block numbers and selectors of the same tables: exact at any tolerance
+COUNTS = [
+    ("fanuc-lathe", "G21 G18 G99\nG00 X30. Z5. S500 M03\nG71 U2. R1.\nG71 {} Q20 U0.5 W0.1 F0.2"
+     "\nN10 G00 X20.\nN20 G01 Z-20.", "P10", "P11", "P10 -> P11"),
+    ("fanuc-lathe", "G21 G18 G99\nG00 X30. Z5. S500 M03\nG76 {} Q100 R0.05", "P021060",
+     "P021055", "P021060 -> P021055"),  # m, r, a packed as digits
+    ("haas-lathe", "G20 G18 G99\nG00 X1. Z0.2 S500 M03\nG76 X0.9 Z-1. K0.05 D0.01 F0.0625 A60 {}",
+     "P2", "P3", "P2 -> P3"),  # the infeed method
+    ("fanuc-mill", "G21 G17 G90\nG00 X0 Y0 Z5. S1000 M03\nG91 G99 G81 X10. Z-5. R-3. {} F100.",
+     "K3", "K4", "K3 -> K4"),
+    ("haas-mill", "G20 G17 G90\nG00 X0 Y0 Z1. S1000 M03\nG99 G84 X1. Z-0.5 R0.1 {} F10.",
+     "J2", "J3", "J2 -> J3"),  # the retract multiple
+]
+
+
+@pytest.mark.parametrize(("profile", "body", "a", "b", "said", "within"), MEASURES)
+def test_a_cycle_word_that_measures_is_compared_within_the_tolerance(
+        tmp_path, profile, body, a, b, said, within):
+    """Issue 32 (review 56a F5 for every cycle table): a cycle's word that is an angle, a time
+    or a ratio is compared as a measure, in steps of its own unit and within --tolerance, where
+    it was compared exactly as a count: a thread's start angle Q in 0.001 deg, Haas G76's tool
+    nose angle A in degrees (read whole, as the control and the checker read it, one step of its
+    last digit, not of the axis format's 0.001), the G199 phase angle, a dwell P."""
+    program = "%\nO1\n" + body + "\nG80\nM30\n%\n"
+    one = write(tmp_path, "a.nc", program.format(a))
+    two = write(tmp_path, "b.nc", program.format(b))
+    p = load_profile(profile)
+    found, _ = differences(one, two, p, p)
+    assert [d.details() for d in found] == [[said]]
+    assert differences(one, two, p, p, tolerance=Decimal(within))[0] == []
+    assert differences(one, two, p, p, tolerance=Decimal(within) - Decimal("0.5"))[0] != []
+    result = run("diff", "-p", profile, "--format", "json", one, two)
+    [word] = json.loads(result.output)["differences"][0]["words"]
+    assert word["steps"] is not None and result.exit_code == 1
+
+
+def test_a_thread_start_angle_with_a_point_is_compared_as_written(tmp_path):
+    """A start angle with a point (`Q60.`) is no reading the manuals give (the checker's
+    TG208: 60 deg or an alarm): compared as written, never the same as `Q60000` at any
+    tolerance, and the same as its own text."""
+    program = "%\nO1\nG21 G18 G99\nG00 X30. Z5. S500 M03\nG32 Z-20. F1.5 {}\nM30\n%\n"
+    one = write(tmp_path, "a.nc", program.format("Q60000"))
+    two = write(tmp_path, "b.nc", program.format("Q60."))
+    lathe = load_profile("fanuc-lathe")
+    found, _ = differences(one, two, lathe, lathe, tolerance=Decimal(100000))
+    assert [d.details() for d in found] == [["Q60000 -> Q60."]]
+    assert differences(two, two, lathe, lathe)[0] == []
+
+
+@pytest.mark.parametrize(("profile", "body", "a", "b", "said"), COUNTS)
+def test_a_cycle_word_that_counts_stays_exact(tmp_path, profile, body, a, b, said):
+    """Issue 32: a count of the same tables (K repeats, G71's P Q block numbers, FANUC G76's
+    packed P, Haas G76's P infeed method, Haas G84's J retract multiple) has no steps and is
+    a difference at any tolerance."""
+    program = "%\nO1\n" + body + "\nG80\nM30\n%\n"
+    one = write(tmp_path, "a.nc", program.format(a))
+    two = write(tmp_path, "b.nc", program.format(b))
+    p = load_profile(profile)
+    found, _ = differences(one, two, p, p, tolerance=Decimal(100000))
+    assert [d.details() for d in found] == [[said]]
+    assert [c.steps for c in found[0].words] == [None]
+
+
 # -- errors and the command line ----------------------------------------------------------------
 
 

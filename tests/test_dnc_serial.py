@@ -1060,3 +1060,24 @@ def test_seconds_and_rates_that_are_no_number_are_usage_errors(tmp_path: Path,
     assert result.exit_code == 2, result.output
     assert f"Invalid value for '{args[-2]}': '{args[-1]}' is not a finite number" in \
         result.output, result.output
+
+
+def test_send_restart_shows_the_keyed_start_and_the_programs_m09(tmp_path: Path) -> None:
+    """Review 56d F1: the operator sees what will be sent: after a builder's keyed M13 and the
+    program's own M09, `send --restart-at` prints the preamble, the M13 and then the M09,
+    before it sends."""
+    profile = tmp_path / "m13.toml"
+    profile.write_text(
+        'base = "fanuc-mill"\nname = "m13"\n[codes]\n'
+        'M13 = { function = "spindle CW and coolant on", duration = "spindle", '
+        'meaning = "spindle-cw-coolant-on" }\n')
+    src = tmp_path / "k1.nc"
+    src.write_text("%\nO1\nN30 G21 G17 G90 G40 G80\nN40 G54 G00 X0 Y0\nN50 T1 M06\n"
+                   "N60 G43 H1 Z50.\nN70 S1000 M13\nN80 G00 X10. Y10.\nN90 M09\n"
+                   "N100 G01 Z-5. F100.\nN110 G01 X50.\nN120 M30\n%\n")
+    result = cli("send", str(src), "--port", "loop://", "-p", str(profile), "--flow", "none",
+                 "--baud", "115200", "--no-progress", "--restart-at", "N100", "-y")
+    assert result.exit_code == 0, result.output
+    assert ("restart at N100 (line 10); preamble:\n    G21 G17 G90 G94 G40 G49 G80 G54\n"
+            "    T1 M06\n    G97 S1000 M13\n    M09\n    G00 G43 Z50. H1\n    G00 X10. Y10.\n"
+            ) in result.output

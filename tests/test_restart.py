@@ -2298,8 +2298,10 @@ def test_a_builders_spindle_start_is_restored_by_its_key_or_refused():
             'the code in the profile: meaning = "spindle-cw-coolant-on", docs/profiles.md)'), line
     for profile in (keyed, FANUC):
         assert not any("M13" in b or "M03" in b for b in plan(M13_MILL, 6, profile).preamble)
-        stopped = plan(M13_MILL, 11, profile).preamble
-        assert not any("M13" in b or "M03" in b for b in stopped), stopped
+    stopped = plan(M13_MILL, 11, FANUC).preamble
+    assert not any("M13" in b or "M03" in b for b in stopped), stopped
+    # (after the keyed code's M05, its coolant is still on: test_a_keyed_start_with_the_...)
+    assert refusal(M13_MILL, 11, keyed).startswith("cannot restart here: M13 on line 6 turned")
     # a restart block that starts the spindle itself is not refused
     started = M13_MILL.replace("N90 G01", "N90 M03 G01")
     assert plan(started, 9, FANUC).preamble
@@ -2307,6 +2309,73 @@ def test_a_builders_spindle_start_is_restored_by_its_key_or_refused():
     oriented = M13_MILL.replace("N110 M05", "N110 M19\nN115 G00 Z60.\nN116 S1200 M14")
     assert "G97 S1200 M14" in plan(oriented, 13, keyed).preamble
     assert refusal(oriented, 12, keyed).startswith("cannot restart here: M19 on line 10")
+
+
+KEYED = profile_from_text(
+    'base = "fanuc-mill"\n[codes]\n'
+    'M13 = { function = "spindle CW and coolant on", duration = "spindle", '
+    'meaning = "spindle-cw-coolant-on" }\n'
+    'M14 = { function = "spindle CCW and coolant on", duration = "spindle", '
+    'meaning = "spindle-ccw-coolant-on" }\n', "m13")
+
+# a keyed start with the coolant (line 6), the program's own M09 (line 8), a cut (line 9-10)
+COOLED = ("%\nO1\nG21 G17 G40 G49 G80 G90\nN50 T1 M06\nN60 G43 H1 Z50.\nN70 S1000 {start}\n"
+          "N80 G00 X10. Y10.\nN90 M09\nN100 G01 Z-5. F100.\nN110 G01 X50.\nN120 G00 Z50.\n"
+          "N130 M05\nN140 G00 X0 Y0\nN150 M30\n%\n")
+
+
+@pytest.mark.parametrize("start", ["M13", "M14"])
+def test_a_keyed_start_with_the_coolant_leaves_the_coolant_as_the_program_had_it(
+        start: str) -> None:
+    """Review 56d F1: a restart after `S1000 M13` and the program's own M09 wrote `G97 S1000
+    M13` and no M09: the cut ran with the coolant that the program had turned off. The
+    preamble runs the program's own codes in its order, the keyed start then M09, each in a
+    block of its own (a FANUC hands both to the builder's ladder), before the approach; a
+    coolant code in force after that M09 follows. Without the M09 the coolant stays on by the
+    keyed code alone, and no M08 is added."""
+    text = COOLED.format(start=start)
+    for line in (9, 10, 11, 12):
+        preamble = plan(text, line, KEYED).preamble
+        at = preamble.index(f"G97 S1000 {start}")
+        assert preamble[at + 1] == "M09", (line, preamble)
+        assert not any("M08" in b or "M03" in b or "M04" in b for b in preamble), preamble
+    # before the M09: the keyed code alone, its coolant on as the program has it
+    for line in (7, 8):
+        preamble = plan(text, line, KEYED).preamble
+        assert f"G97 S1000 {start}" in preamble and "M09" not in preamble, (line, preamble)
+    # the program's M08 after its M09: the keyed start, its M09, then the M08 in force
+    again = text.replace("N100 G01", "N95 M08\nN100 G01")
+    preamble = plan(again, 11, KEYED).preamble
+    at = preamble.index(f"G97 S1000 {start}")
+    assert preamble[at + 1:at + 3] == ["M09", "M08"], preamble
+    # the preamble's modal state is the program's at the block (it is verified before sending)
+    assert plan(again, 11, KEYED).state.coolant == "flood"
+
+
+def test_a_keyed_starts_coolant_left_on_after_the_spindle_stopped_refuses_the_restart() -> None:
+    """The coolant a keyed M13 turned on outlasts the M05 that stops the spindle: the preamble
+    cannot turn it on alone (M13 starts the spindle too; which coolant M08 runs is the
+    builder's), so a restart after that M05 and before an M09 is refused, where it was planned
+    with the coolant off. A restart block that sets the coolant itself (its M09, a keyed start
+    with the coolant, a mill's tool change) is planned; after an M09, with the coolant off."""
+    text = COOLED.format(start="M13").replace("N90 M09\n", "")
+    for line in (12, 13):
+        assert refusal(text, line, KEYED) == (
+            "cannot restart here: M13 on line 6 turned the spindle and the coolant on, and the "
+            "spindle has been stopped or started by another code since, with no M09: that "
+            "coolant is still on, and the preamble cannot turn it on without M13 starting the "
+            "spindle too; restart at or before line 6, or after the M09 that ends the "
+            "coolant"), line
+    assert plan(text, 6, KEYED).preamble
+    for own in ("M09", "T2 M06", "M14"):
+        changed = text.replace("N140 G00 X0 Y0", f"N140 G00 X0 Y0 {own}")
+        assert plan(changed, 12, KEYED).preamble, own
+    off = text.replace("N140 G00 X0 Y0", "N135 M09\nN140 G00 X0 Y0")
+    preamble = plan(off, 13, KEYED).preamble
+    assert not any(c in b for b in preamble for c in ("M13", "M09", "M08")), preamble
+    # an M03 after the M13 (no M09): the spindle is M03's, the coolant M13's: refused too
+    turned = text.replace("N130 M05", "N130 M03")
+    assert refusal(turned, 13, KEYED).startswith("cannot restart here: M13 on line 6 turned")
 
 
 def test_a_listed_spindle_code_without_a_key_refuses_the_restart():

@@ -8259,25 +8259,6 @@ pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
     }
 }
 
-/// The letters (bit `letter - b'A'`) of a block under cycles `gs` (its own codes and the one
-/// in force, system A numbers) that the cycle tables make a number but that measure rather
-/// than count: a drilling cycle's dwell P, a time ([`dwell_cycle`]; FANUC `G82 ... P500`,
-/// 500 ms, as G04's P), and LinuxCNC G76's Q, the compound slide angle, and R, the depth
-/// degression (LinuxCNC G-code reference, G76). The diff compares them as numbers, within
-/// its tolerance (review 56a, F5); a true count (K or L repeats, a block number, G76's H
-/// spring passes) stays exact. The cycle table still gives them their role: the converter
-/// keeps them as written and the checker reads them whole.
-pub fn cycle_measures(family: Family, lathe: bool, gs: &[i64]) -> u32 {
-    let bit = |letter: u8| 1u32 << (letter - b'A');
-    gs.iter().fold(0, |bits, &g| {
-        bits | match g {
-            76 if family == Family::LinuxCnc => bit(b'Q') | bit(b'R'),
-            _ if dwell_cycle(lathe, g) => bit(b'P'),
-            _ => 0,
-        }
-    })
-}
-
 /// The canned drilling cycle (its system A number) in force after a block whose G codes (read
 /// in system A numbers) are `gs` and M codes `ms`, `before` the one in force before it. A
 /// block under it that names no cycle repeats it at a new position, with the words it changes
@@ -8483,18 +8464,33 @@ where
             }
             pointed | 1 << (address - b'A')
         });
-    let roles = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
+    let table = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
-        meanings.roles = roles;
+        meanings.roles = table.roles;
+        meanings.measures = table.measures;
         return meanings;
     }
-    for (meaning, role) in meanings.roles.iter_mut().zip(roles) {
+    for (i, (meaning, role)) in meanings.roles.iter_mut().zip(table.roles).enumerate() {
         if meaning.is_none() {
             *meaning = role;
+            meanings.measures |= table.measures & 1 << i;
         }
     }
     meanings
+}
+
+/// What the cycle tables make of a block's letters: each one's role, and which of the numbers
+/// they make `Role::Other` measure (bit `letter - b'A'`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct CycleTable {
+    roles: [Option<Role>; 26],
+    /// A time, an angle or a ratio the control reads as written, whole where it has no point
+    /// (a drilling cycle's dwell P, a thread's start angle Q, Haas G76's tool nose angle A):
+    /// the diff compares it within its tolerance, where a number the table makes that counts
+    /// or names (K and L repeats, P and Q block numbers, H passes, G76's packed P, a
+    /// selector) is compared exactly ([`crate::meaning::Meanings::cycle_measure`]).
+    measures: u32,
 }
 
 fn cycle_table(
@@ -8505,10 +8501,11 @@ fn cycle_table(
     ms: &[i64],
     letters: u32,
     pointed: u32,
-) -> [Option<Role>; 26] {
+) -> CycleTable {
     let mut roles = [None; 26];
+    let measures = std::cell::Cell::new(0u32);
     if family == Family::Iso {
-        return roles;
+        return CycleTable { roles, measures: 0 };
     }
     // the block's addresses, and those written with a point (bit `letter - b'A'`)
     let has = |letter: u8| letters & 1 << (letter - b'A') != 0;
@@ -8516,6 +8513,13 @@ fn cycle_table(
     let mut set = |letters: &[u8], role: Role| {
         for &l in letters {
             roles[slot(l)] = Some(role);
+            measures.set(measures.get() & !(1 << slot(l)));
+        }
+    };
+    // of the numbers just set, those that measure (a time, an angle, a ratio: [`CycleTable`])
+    let measure = |letters: &[u8]| {
+        for &l in letters {
+            measures.set(measures.get() | 1 << slot(l));
         }
     };
     let (length, number, increments) = (Role::Length, Role::Other, Role::Increments);
@@ -8531,11 +8535,15 @@ fn cycle_table(
             76 if linuxcnc => {
                 set(b"PIJKE", length);
                 set(b"RQHL", number);
+                measure(b"RQ");
             }
             70 if lathe => set(b"PQ", number),
             // a Haas lathe's G199 R: the secondary spindle's phase angle to the main one, in
             // degrees (Haas NGC lathe manual, G199), no length
-            199 if lathe && family == Family::MacroB && haas != Some(false) => set(b"R", number),
+            199 if lathe && family == Family::MacroB && haas != Some(false) => {
+                set(b"R", number);
+                measure(b"R");
+            }
             // a Haas lathe's G107 Q R: the Haas mill manual gives Q the cylinder's diameter and
             // R its radius, lengths; the lathe manual's page was not at hand, so on a lathe
             // they are refused under a change of units rather than guessed
@@ -8544,7 +8552,10 @@ fn cycle_table(
             }
             // a lathe's G32/G92 Q: the thread's start angle in 0.001 deg, written whole
             // (meaning::Meanings::start_angle)
-            32 | 92 if lathe && family == Family::MacroB => set(b"Q", number),
+            32 | 92 if lathe && family == Family::MacroB => {
+                set(b"Q", number);
+                measure(b"Q");
+            }
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
                     // G71 P(ns) Q(nf) U W (D F): block numbers, finishing allowances (Haas: D
@@ -8576,8 +8587,11 @@ fn cycle_table(
                     // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q;
                     // A the tool nose angle in degrees, "do not use a decimal point" (Haas
                     // lathe operator's manual, G76)
+                    // (P the infeed method, 1-4: a selector; Q the start angle, in 0.001 deg
+                    // as G32's, meaning::Meanings::start_angle)
                     set(b"KDI", length);
                     set(b"PQA", number);
+                    measure(b"QA");
                 } else if has(b'X') || has(b'Z') || has(b'U') || has(b'W') {
                     // the 0i's second block: P thread height and Q first cut in least input
                     // increments, R the taper, a length as written
@@ -8596,16 +8610,22 @@ fn cycle_table(
                 // with one the length it writes (Haas `Q0.1`)
                 set(b"Q", if has_point(b'Q') { length } else { increments });
                 set(b"P", number); // the dwell
+                measure(b"P");
             }
             73 | 83 => {
                 set(b"Q", length); // the peck
                 set(b"P", number); // the dwell
+                measure(b"P");
             }
             76 | 87 => {
                 set(b"Q", length); // the shift
-                set(b"P", number);
+                set(b"P", number); // the dwell
+                measure(b"P");
             }
-            74 | 82 | 84 | 86 | 88 | 89 => set(b"P", number),
+            74 | 82 | 84 | 86 | 88 | 89 => {
+                set(b"P", number); // the dwell
+                measure(b"P");
+            }
             _ => {}
         }
         // a mill's canned cycle: K the number of repeats on a FANUC (0i-MF operator's
@@ -8698,7 +8718,8 @@ fn cycle_table(
             *role = Some(length);
         }
     }
-    roles
+    let measures = measures.get();
+    CycleTable { roles, measures }
 }
 
 /// The P, Q and R of a block with an M code are of no known role where no code of the
@@ -10867,6 +10888,7 @@ mod tests {
                         for letters in [all, 0, 1 << (b'K' - b'A') | 1 << (b'Q' - b'A')] {
                             let unread = cycle_table(family, haas, lathe, &[g], ms, letters, 0);
                             let pointed = cycle_table(family, haas, lathe, &[g], ms, letters, all);
+                            let (unread, pointed) = (unread.roles, pointed.roles);
                             assert_eq!(unread, pointed, "{family:?} G{g} {ms:?} lathe {lathe}");
                         }
                     }
@@ -10875,10 +10897,66 @@ mod tests {
         }
         // and a cycle that asks: a lathe's G83 Q, a count of increments without its point
         let q = 1 << (b'Q' - b'A');
-        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, 0);
+        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, 0).roles;
         assert_eq!(roles[slot(b'Q')], Some(Role::Increments));
-        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, q);
+        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, q).roles;
         assert_eq!(roles[slot(b'Q')], Some(Role::Length));
+    }
+
+    #[test]
+    fn the_cycle_tables_mark_a_time_or_an_angle_as_a_measure_and_a_count_not() {
+        // issue 32: the one rule the diff compares by (`Meanings::cycle_measure`)
+        let bit = |l: u8| 1u32 << slot(l);
+        let table = |family, haas, lathe, g: i64, letters: &[u8]| {
+            let letters = letters.iter().fold(0u32, |bits, &l| bits | bit(l));
+            cycle_table(family, haas, lathe, &[g], &[], letters, 0).measures
+        };
+        let macro_b = Family::MacroB;
+        // a lathe's thread start angle Q (G32, G92), Haas G76's start angle Q and tool nose
+        // angle A (its P the infeed method, a selector), Haas G199's phase angle R
+        for haas in [None, Some(true), Some(false)] {
+            for g in [32, 92] {
+                assert_eq!(table(macro_b, haas, true, g, b"XZFQ"), bit(b'Q'), "G{g}");
+            }
+        }
+        let haas76 = table(macro_b, Some(true), true, 76, b"XZKDIAPQF");
+        assert_eq!(haas76, bit(b'A') | bit(b'Q'));
+        assert_eq!(table(macro_b, Some(true), true, 199, b"R"), bit(b'R'));
+        // a drilling cycle's dwell P, a mill's and a lathe's; K (a FANUC's repeats) and J (a
+        // Haas's retract multiple) stay counts
+        for g in [73, 74, 76, 82, 83, 84, 86, 87, 88, 89] {
+            for haas in [Some(true), Some(false)] {
+                let measures = table(macro_b, haas, false, g, b"XYZRPQFKJ");
+                assert_eq!(measures, bit(b'P'), "G{g} {haas:?}");
+            }
+        }
+        for g in [83, 84, 86, 87, 88, 89] {
+            assert_eq!(
+                table(macro_b, Some(false), true, g, b"XZRPQFK"),
+                bit(b'P'),
+                "G{g}"
+            );
+        }
+        // a lathe's multiple repetitive cycles: block numbers, selectors, the packed P of
+        // G76's first block: no measure
+        for (g, letters) in [
+            (70, &b"PQ"[..]),
+            (71, b"PQUWRF"),
+            (72, b"PQUWF"),
+            (73, b"PQUW"),
+            (73, b"UWR"),
+            (76, b"PQR"),
+            (76, b"XZPQRF"),
+        ] {
+            assert_eq!(table(macro_b, Some(false), true, g, letters), 0, "G{g}");
+        }
+        // LinuxCNC G76: Q (the compound slide angle) and R (the depth degression) measure; H
+        // (spring passes) and L (taper ends) count
+        let lcnc = table(Family::LinuxCnc, None, false, 76, b"PZIJKRQHEL");
+        assert_eq!(lcnc, bit(b'Q') | bit(b'R'));
+        // a call's numbers (G10, G65, M98) are no measure
+        assert_eq!(table(macro_b, Some(false), false, 10, b"LPR"), 0);
+        assert_eq!(table(macro_b, Some(false), false, 65, b"PLAB"), 0);
     }
 
     #[test]

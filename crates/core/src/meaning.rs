@@ -93,6 +93,9 @@ pub struct Meanings {
     /// Q is a thread's start angle in 0.001 deg, 0 to 360000: six whole digits, whatever the
     /// address's format holds (a Fanuc or Haas lathe's G32 and G92, Haas's one-block G76).
     pub start_angle: bool,
+    /// The letters (bit `letter - b'A'`) of [`Meanings::cycle_count`] that measure rather than
+    /// count: a time, an angle, a ratio (the cycle tables', `convert::CycleTable`).
+    pub measures: u32,
     /// The letters (bit `letter - b'A'`) whose role is no length: asked of every word.
     others: u32,
     /// The letters given a role at all.
@@ -131,6 +134,16 @@ impl Meanings {
     /// The one rule the checker (`Checker::selector`) and the diff's reader (ncread.rs) ask.
     pub fn cycle_count(&self, letter: u8) -> bool {
         self.role(letter) == Some(Role::Other) && self.others & 1 << (letter - b'A') == 0
+    }
+
+    /// Whether `letter`, a number of a cycle's table ([`Meanings::cycle_count`]), measures: a
+    /// time, an angle or a ratio (a drilling cycle's dwell P, a lathe's G32/G92 Q start angle,
+    /// Haas G76's A tool nose angle, LinuxCNC G76's Q and R). The control reads it as the
+    /// count is read, whole where it has no point, but the diff compares it within its
+    /// tolerance, where a count, a block number or a selector is compared exactly (review
+    /// 56a F5; issue 32). The one rule the diff's reader (ncread.rs) asks.
+    pub fn cycle_measure(&self, letter: u8) -> bool {
+        self.cycle_count(letter) && self.measures & 1 << (letter - b'A') != 0
     }
 
     /// The role a code of the block gives `letter` (upper case), if any.

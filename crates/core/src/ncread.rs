@@ -567,17 +567,26 @@ impl Reader {
         // letter another role (a macro call's arguments are its macro's)
         let macro_call =
             self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66);
-        // (but a time or an angle the table makes a number, a dwell's P, LinuxCNC G76's Q and
-        // R: compared within the tolerance, as G04's P is; review 56a, F5)
-        let measures = crate::convert::cycle_measures(family, lathe, &with_cycle);
-        let counts = (0..26usize)
+        // (but one that measures, a time, an angle or a ratio, is read so and compared within
+        // the tolerance, as G04's P is: `Meanings::cycle_measure`; review 56a F5, issue 32)
+        let read_whole = (0..26usize)
             .filter(|&i| {
-                !macro_call
-                    && cycle_roles[i] == roles[i]
-                    && measures & 1 << i == 0
-                    && meanings.cycle_count(b'A' + i as u8)
+                !macro_call && cycle_roles[i] == roles[i] && meanings.cycle_count(b'A' + i as u8)
             })
             .fold(0u32, |bits, i| bits | 1 << i);
+        let measures = (0..26usize)
+            .filter(|&i| read_whole & 1 << i != 0 && meanings.cycle_measure(b'A' + i as u8))
+            .fold(0u32, |bits, i| bits | 1 << i);
+        let counts = read_whole & !measures;
+        // a thread's start angle (`Meanings::start_angle`: a lathe's G32/G92 Q, Haas G76 Q) is
+        // in 0.001 deg without a point: compared in degrees, as a dwell's milliseconds are in
+        // seconds
+        let q = 1 << (b'Q' - b'A');
+        let thousandths = if meanings.start_angle {
+            measures & q
+        } else {
+            0
+        };
         let absolute = gs.contains(&53);
         for (w, n) in words.iter().zip(&numbers) {
             if w.letter == b'G' {
@@ -597,7 +606,7 @@ impl Reader {
                     continue;
                 }
             }
-            out.push(self.word(w, &roles, counts, flags, absolute));
+            out.push(self.word(w, &roles, (counts, measures, thousandths), flags, absolute));
         }
         let resets = flags.ended
             || flags.clamp
@@ -1117,7 +1126,7 @@ impl Reader {
         &self,
         w: &Word<'_>,
         roles: &[Option<Role>; 26],
-        counts: u32,
+        (counts, measures, thousandths): (u32, u32, u32),
         flags: BlockFlags,
         absolute: bool,
     ) -> ReadWord {
@@ -1146,7 +1155,16 @@ impl Reader {
             .flatten();
         let units = units_of(letter, (self.units, self.feed_units));
         // (a count of the cycle's table: read whole, as a selector is)
-        let count = letter.is_ascii_uppercase() && counts & 1 << (letter - b'A') != 0;
+        let bit = |mask: u32| letter.is_ascii_uppercase() && mask & 1 << (letter - b'A') != 0;
+        // (a thread's start angle written with a point is no reading its manuals give, the
+        // checker's TG208: compared as written, never "the same" as one without)
+        if w.point && bit(thousandths) {
+            return ReadWord::text(&key, w.token);
+        }
+        let count = bit(counts);
+        // (a measure of the cycle's table, a time or an angle, read whole as a count is, but
+        // compared within the tolerance: `Meanings::cycle_measure`)
+        let measure = bit(measures);
         let cycle_increments = role == Some(Role::Increments);
         let (fmt, increments, mut step, mut kind) = if cycle_increments {
             // a length the cycle writes as a count (G76 P1200 Q350): a count of the control's
@@ -1165,6 +1183,7 @@ impl Reader {
                 || letter == b'P' && self.dwell_cycle;
             let angle = role == Some(Role::Other)
                 && !count
+                && !measure
                 && !time
                 && self.settings.reads_increments(letter);
             // a length of a cycle or a code whose letter's format is a whole number's (Okuma
@@ -1193,7 +1212,15 @@ impl Reader {
                 b'S' => Kind::Speed,
                 _ => Kind::Number,
             };
-            let step = one_step(&fmt);
+            // a measure the table reads whole where the letter is read in least increments
+            // (a thread's start angle `Q60000`, in 0.001 deg; Haas G76's `A60`, degrees) steps
+            // by one of its own unit, the number's last digit: its letter's length format's
+            // step is no unit of it (review 55a F5 said the same of a count)
+            let step = if measure && !w.point && self.settings.reads_increments(letter) {
+                Dec::from_int(1)
+            } else {
+                one_step(&fmt)
+            };
             (fmt, self.settings.reads_increments(letter), step, kind)
         };
         match role {
@@ -1216,8 +1243,9 @@ impl Reader {
         let selector = role == Some(Role::Selector) || count;
         let explicit = self.settings.explicit
             || reads_whole(self.settings.increments.as_deref(), w.letter)
-            || selector;
-        let increments = increments && !selector;
+            || selector
+            || measure;
+        let increments = increments && !selector && !measure;
         let raw = match fmt.read(w.sign == b"-", w.number, explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {
@@ -1284,7 +1312,8 @@ impl Reader {
         };
         // a FANUC or Haas dwell's P without a point (G04 P1000, G82 ... P500) is milliseconds:
         // read in seconds, as a LinuxCNC P and a Haas P with a point are
-        if self.milliseconds(letter, flags, w.number) {
+        // (and a thread's start angle without a point, in 0.001 deg, is read in degrees)
+        if self.milliseconds(letter, flags, w.number) || !w.point && bit(thousandths) {
             let ms = |d: Dec| Dec {
                 mantissa: d.mantissa,
                 scale: d.scale + 3,

@@ -312,6 +312,13 @@ pub struct Walk {
     /// The code of `turn_codes` that last started the spindle, while no M03, M04 or M05 has
     /// come since (line, code): the preamble restores the spindle by it (review 56a F9).
     pub turned_by: Option<(usize, i64)>,
+    /// The codes of `turn_codes` that also turn a coolant on (`spindle-cw-coolant-on`,
+    /// `spindle-ccw-coolant-on`: a builder's M13 and M14), set by the binding.
+    pub coolant_starts: Vec<i64>,
+    /// The code of `coolant_starts` whose coolant is on (line, code): set by the code, ended
+    /// by M09, a FANUC or Haas mill's M06 and the program's end, not by M05 (review 56d F1:
+    /// the modal state reads M07-M09 alone, so the preamble restores that coolant by it).
+    pub keyed_coolant: Option<(usize, i64)>,
     /// The M codes of the spindle's modal group (M03's `duration`) that the walk does not
     /// read: neither M03-M05 nor a code of `turn_codes` or `orient_codes` (a builder's M13
     /// listed without a meaning key, LinuxCNC's M19), set by the binding.
@@ -612,6 +619,8 @@ impl Walk {
             spin_line: 0,
             turn_codes: Vec::new(),
             turned_by: None,
+            coolant_starts: Vec::new(),
+            keyed_coolant: None,
             unread_spindle: Vec::new(),
             unread_spin: None,
             builder_first: 0,
@@ -1177,7 +1186,11 @@ impl Walk {
                             self.coolant.push(whole);
                             self.coolant_line = line;
                         }
-                        9 => self.coolant.clear(),
+                        9 => {
+                            self.coolant.clear();
+                            self.keyed_coolant = None;
+                        }
+                        2 | 30 => self.keyed_coolant = None,
                         _ => {}
                     }
                 } else if fraction.is_empty() {
@@ -1414,6 +1427,9 @@ impl Walk {
             let turns = self.turn_codes.contains(&m);
             if matches!(m, 3..=5) || turns {
                 self.turned_by = turns.then_some((line, m));
+            }
+            if self.coolant_starts.contains(&m) {
+                self.keyed_coolant = Some((line, m));
             }
             if m == 5 && !self.lathe {
                 // (a mill's M05 stops what a builder's M13 started; a lathe's live tool or C
@@ -2079,6 +2095,7 @@ impl Walk {
             // either way (review 36, finding 2: an M19 before the M06 refused every restart
             // up to the new tool's M03)
             self.orientation_ended(line);
+            self.keyed_coolant = None;
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
@@ -3067,6 +3084,21 @@ mod tests {
         assert_eq!(walk.turned_by, Some((1, 13)));
         step_text(&mut walk, 3, b"M05", &state());
         assert_eq!(walk.turned_by, None);
+        // review 56d F1: its coolant outlasts the M05 and ends at M09, a mill's M06 or M30
+        let mut cooled = Walk::new(Control::Fanuc, false, false);
+        (cooled.turn_codes, cooled.coolant_starts) = (vec![13, 14], vec![13, 14]);
+        for (line, ends) in [(2, &b"M09"[..]), (4, b"T2 M06"), (6, b"M30")] {
+            step_text(&mut cooled, line - 1, b"S1000 M14", &state());
+            step_text(&mut cooled, line, b"M05", &state());
+            assert_eq!(cooled.keyed_coolant, Some((line - 1, 14)));
+            step_text(&mut cooled, line, ends, &state());
+            assert_eq!(
+                cooled.keyed_coolant,
+                None,
+                "{}",
+                String::from_utf8_lossy(ends)
+            );
+        }
         let mut unlisted = Walk::new(Control::Fanuc, false, false);
         unlisted.lacks_m = Some((0..100).map(|m| m == 13).collect());
         step_text(&mut unlisted, 1, b"S1000 M13", &state());

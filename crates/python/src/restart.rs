@@ -141,6 +141,9 @@ impl RestartWalk {
             if let Some(n) = number.filter(|n| !matches!(n, 3 | 4) && m.check.turning.contains(n)) {
                 if key.starts_with("spindle-") && !walk.turn_codes.contains(&n) {
                     walk.turn_codes.push(n);
+                    if key.ends_with("-coolant-on") {
+                        walk.coolant_starts.push(n);
+                    }
                 }
             }
             if let (Some((name, on)), Some(n)) = (mode, number) {
@@ -462,6 +465,7 @@ impl RestartWalk {
         d.set_item("builder_m", w.builder_m)?;
         d.set_item("spin_line", w.spin_line)?;
         d.set_item("turned_by", w.turned_by)?;
+        d.set_item("keyed_coolant", w.keyed_coolant)?;
         d.set_item("unread_spin", w.unread_spin)?;
         d.set_item("builder_first", w.builder_first)?;
         let by_extension = w
