@@ -1071,6 +1071,11 @@ pub struct Checker {
     /// after the endsub of a subroutine file (a call returns at the endsub and never reads
     /// it): reported only where a line after it makes the file a program.
     sub_percent: Option<(usize, usize)>,
+    /// LinuxCNC: the label a call names this file by, where its name is `<label>.ngc` (rs274
+    /// opens the lower-cased label with `.ngc` on its search path, interp_o_word.cc
+    /// `find_ngc_file`): a subroutine file named otherwise is never called, only run as a
+    /// program. `None`: another name, or none given.
+    called_as: Option<Vec<u8>>,
     /// LinuxCNC: the definition open at this point of the file (`o<name> sub` not yet closed
     /// by its endsub): its line, column and label.
     open_definition: Option<(usize, usize, Vec<u8>)>,
@@ -1458,6 +1463,7 @@ impl Checker {
             sub_preamble: (0, 0),
             sub_returns: (0, 0, 0),
             sub_percent: None,
+            called_as: None,
             open_definition: None,
             linuxcnc_defined: Vec::new(),
             linuxcnc_named: HashSet::new(),

@@ -287,6 +287,11 @@ impl Checker {
         if crate::dialect::subprogram_by_name(self.config.family, name) {
             self.machine.forget();
         }
+        let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
+        self.called_as = base
+            .strip_suffix(".ngc")
+            .filter(|label| !label.is_empty())
+            .map(|label| label.as_bytes().to_vec());
     }
 
     /// HEIDENHAIN: the circle centre CC (I J K, absolute) stays in force for the arcs after

@@ -223,15 +223,23 @@ impl Checker {
 
     /// TG412: a `%` line LinuxCNC's reader refuses ("Bad character '%' used",
     /// [`dialect::ReadingEnd::refuses_percent`]): in a file not begun with a `%` line, or a
-    /// `%` with more than blanks after it. One after the endsub of a subroutine file (a
-    /// `%` an editor or a post ends the file with) is never read: a call runs the file from
+    /// `%` with more than blanks after it. One after the endsub of a subroutine file named by
+    /// its label (a `%` an editor or a post ends the file with) is never read: a call runs the file from
     /// its sub and returns at the endsub (LinuxCNC's O codes, "Calling Files"; `rs274 -g` of
     /// `o<tp> call` with `tp.ngc` ending in `o<tp> endsub` and `%`: no error), as the file's
     /// missing M2 is no TG114. It is said only where a line after it makes the file a
     /// program, which rs274 would run past the definition to the `%` ([`SubFile`]).
     pub(super) fn refused_percent(&mut self, b: &BlockView<'_>) {
         let column = b.text.iter().position(|&c| c == b'%').map_or(1, |i| i + 1);
-        if self.sub_file == SubFile::Closed {
+        // (only a file whose name is its label's, `tp.ngc` for `o<tp> sub`, is called: rs274
+        // opens the label, lower-cased and without blanks, with `.ngc`; one named otherwise
+        // runs only as a program, where rs274 reads the `%`, review 57b F1)
+        let label = self
+            .sub_label
+            .strip_prefix(b"o<")
+            .and_then(|l| l.strip_suffix(b">"));
+        let called = label.is_some() && self.called_as.as_deref() == label;
+        if self.sub_file == SubFile::Closed && called {
             self.sub_percent.get_or_insert((b.line, column));
             return;
         }
@@ -6083,17 +6091,35 @@ mod tests {
     }
 
     /// A `%` line after the endsub of a LinuxCNC subroutine file not begun with `%` (a
-    /// gmoccapy remap macro ending so, held23): a call returns at the endsub and never reads
-    /// it (`rs274 -g` of `o<tp> call` / `M2` beside it: no error), so no TG412 there; where
-    /// the file goes on as a program, rs274 reads it as a block ("Bad character '%' used"),
-    /// said at the `%`.
+    /// remap macro ending so, held23): a call returns at the endsub and never reads it
+    /// (`rs274 -g` of `o<tp> call` / `M2` beside `tp.ngc`: no error), so no TG412 there;
+    /// where the file goes on as a program, or its name is not its label's (rs274 calls only
+    /// `tp.ngc` by `o<tp>`: a file named otherwise runs only as a program, review 57b F1),
+    /// rs274 reads it as a block ("Bad character '%' used"), said at the `%`.
     #[test]
     fn a_percent_after_a_linuxcnc_subroutine_files_endsub_is_never_read() {
-        let run = |text: &str| fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses);
+        let in_file = |name: Option<&str>, text: &str| -> Vec<(usize, usize)> {
+            let config = of_family(Family::LinuxCnc);
+            let dialect = super::super::testing::dialect(Family::LinuxCnc);
+            super::super::testing::run_file(config, &dialect, text, false, name)
+                .1
+                .iter()
+                .filter(|f| f.rule == Rule::LinuxCncRefuses)
+                .map(|f| (f.line, f.column))
+                .collect()
+        };
+        let run = |text: &str| in_file(Some("subs/tp.ngc"), text);
         let sub = "o<tp> sub\nG0 X1\no<tp> endsub\n";
         assert_eq!(run(&format!("{sub}%\n")), []);
         assert_eq!(run(&format!("\n{sub}\n%\n\n")), []);
         assert_eq!(run(&format!("{sub}M2\n%\n")), []);
+        // the label as rs274 reads it: lower case, blanks left out
+        assert_eq!(run("O< T P > sub\nG0 X1\nO<tp> endsub\n%\n"), []);
+        // a file whose name is not its label's (or no name) is not called: run as a program,
+        // rs274 reads the `%`
+        for name in [Some("other.ngc"), Some("TP.ngc"), Some("tp.nc"), None] {
+            assert_eq!(in_file(name, &format!("{sub}%\n")), [(4, 1)], "{name:?}");
+        }
         // lines after it make the file a program: rs274 reads the `%` before them
         assert_eq!(run(&format!("{sub}%\nG0 X2\nM2\n")), [(4, 1)]);
         assert_eq!(run(&format!("{sub}%\no<tp> call\nM2\n")), [(4, 1)]);

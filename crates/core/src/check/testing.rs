@@ -240,7 +240,21 @@ pub(super) fn run_recording(
     program: &str,
     record_path: bool,
 ) -> (Checker, Vec<Finding>) {
+    run_file(config, dialect, program, record_path, None)
+}
+
+/// [`run_recording`] of a file the user named `name` ([`Checker::file_name`]).
+pub(super) fn run_file(
+    config: Config,
+    dialect: &Dialect,
+    program: &str,
+    record_path: bool,
+    name: Option<&str>,
+) -> (Checker, Vec<Finding>) {
     let mut checker = Checker::new(Arc::new(config), Selection::all(), record_path);
+    if let Some(name) = name {
+        checker.file_name(name);
+    }
     let mut tokens = Vec::new();
     let mut found = Vec::new();
     // (the lines joined by LF and each checked as the binding checks a run of lines,
