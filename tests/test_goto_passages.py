@@ -324,3 +324,14 @@ def test_an_if_to_the_sure_goto_s_target_adds_no_way_between(program, expected):
     there, not in the blocks the GOTO passes over: those are not run on any path, and the
     target is reached from both (its parameters an arrival's, its position not known)."""
     assert errors(program) == expected
+
+
+def test_an_uncalled_lathe_program_s_positions_are_absolute():
+    """Review 56e (l6.nc) on fanuc-lathe, G code system A: no G90/G91 mode (G90 is a turning
+    cycle, U and W the increments), so the caller's mode leaves X and Z absolute, and an
+    uncalled program's own Z span of 1200 mm is said (review 56b, F10 is for a mill's)."""
+    program = "G21 G18 G99 / G0 X100. Z200. / M30 / O2000 / G0 Z-700. / G0 Z500. / M99"
+    assert errors(program, "fanuc-lathe") == [("TG601", 8, 4)]
+    # W is an increment from Z-700.: Z goes to 700, 1400 mm (review 56b, l2.nc)
+    program = "G21 G18 G40 / G0 X100. Z5. / M30 / O2000 / G0 X50. Z-700. / W1400. / M99"
+    assert errors(program, "fanuc-lathe") == [("TG601", 8, 1)]

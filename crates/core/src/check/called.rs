@@ -982,8 +982,13 @@ impl Checker {
         // `O2000` / `G0 X-700.` / `G90 G0 X850.` / `M99` is no "X spans 1550")). Not one that
         // calls programs: its span holds theirs read in G90, as the span of one that calls a
         // program written after it is joined to the file's in G90 (review 56b, F4: y1.nc's
-        // error kept, and the same programs in the other order, y2.nc, keep theirs)
-        let (spans, least_at, most_at) = if p.read_incremental.is_none() || p.body.calls > 0 {
+        // error kept, and the same programs in the other order, y2.nc, keep theirs). Nor on a
+        // lathe of G code system A, which has no G90/G91 mode (its G90 a turning cycle, its
+        // increments U and W): its X and Z are absolute whoever calls it
+        let positions_known = p.read_incremental.is_none()
+            || p.body.calls > 0
+            || self.machine.settings.own_motion(90);
+        let (spans, least_at, most_at) = if positions_known {
             (&p.spans, &p.body.least_at, &p.body.most_at)
         } else {
             (
