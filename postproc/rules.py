@@ -98,6 +98,9 @@ _example("TG117", "G21 G0 X1\nM2\nprint[done]\n", "G21 G0 X1\nM2\n(done)\n", "li
 # a macro branch to a sequence number the program does not hold (FANUC alarm PS0128)
 _example("TG118", "%\nO1\nG21\nGOTO 20\nN10 G0 X1.\nM30\n%\n",
          "%\nO1\nG21\nGOTO 10\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
+# the same branch under an IF the known values make false: that pass does not search for it
+_example("TG139", "%\nO1\nG21\n#1=0\nIF [#1 EQ 1] GOTO 20\nN10 G0 X1.\nM30\n%\n",
+         "%\nO1\nG21\n#1=0\nIF [#1 EQ 1] GOTO 10\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
 _example("TG119", "%\nO1\nG21\nG10 L50\nN1420 R15000\nG00 X10.\nM30\n%\n",
          "%\nO1\nG21\nG10 L50\nN1420 R15000\nG11\nG00 X10.\nM30\n%\n", "fanuc-mill")
 # -- comments, skip, alignment ------------------------------------------------------------------
@@ -558,6 +561,12 @@ SOURCES = {
              "GOTOB toward the start, GOTO both ways, and the control alarms where the label or "
              "block number is not there (Programming Manual Job Planning, \"Program jumps to "
              "jump markers\"); GOTOC does not alarm and is not checked.",
+    "TG139": "FANUC Custom Macro B, \"Branch and repetition\": IF [expression] GOTO n "
+             "branches to N n where the expression holds and runs the next block where it "
+             "does not (the 0i operator's manual's section as a translation gives it; Haas "
+             "Mill Operator's Manual, \"Macros\": \"otherwise processing continues with the "
+             "next program line in sequence\"), so a pass with the condition false searches "
+             "for no N n; one where it holds alarms (PS0128) as TG118 says (review 56b, F8).",
     "TG304": "ISO 6983-1 Annex E (one code of a modal group per block). Haas: two G codes of "
              "one group may not stand in one block (Mill Operator's Manual, NGC, 2017, "
              "\"Programming\" and \"G-codes\"; its M-code chapter allows one M code a line). "

@@ -195,12 +195,15 @@ def test_a_subprogram_after_m30_is_read_in_the_units_of_its_calls(tmp_path: Path
     assert [f[:2] for f in limits(both)] == [(12, "TG601"), (12, "TG602")]
     # no call names it: a program of its own, from the reset state, its assumed units said;
     # its span its own, not added to the main's (review 55b, F4): X900. alone fits, X900.
-    # and X-400. (1300 in) do not
-    alone = "%\nO1\nG21\nG0 G90 G54 X0 Y0\nM30\nO1000\nG1 X900. F3000.\nM99\n%\n"
+    # and X-400. (1300 in) do not, from its own G90 on (review 56b, F10: its caller's
+    # G90/G91 is not known, and under G91 they are increments)
+    alone = "%\nO1\nG21\nG0 G90 G54 X0 Y0\nM30\nO1000\nG90 G1 X900. F3000.\nM99\n%\n"
     assert [f[:2] for f in limits(alone)] == [(7, "TG602")]
     found = limits(alone.replace("F3000.\n", "F3000.\nX-400.\n"))
     assert [f[:2] for f in found] == [(7, "TG602"), (8, "TG601")]
     assert all("no units code by here" in f[2] for f in found)
+    unsure = alone.replace("G90 G1", "G1").replace("F3000.\n", "F3000.\nX-400.\n")
+    assert [f[:2] for f in limits(unsure)] == [(7, "TG602")]
 
 
 def test_a_four_digit_fanuc_reads_m98_p_as_its_repeat_count_and_number(tmp_path: Path) -> None:
@@ -317,8 +320,12 @@ def test_a_subprogram_before_its_call_runs_in_the_call_s_units_and_shift(
     # (read in the reset inches, 65 in: a false TG601)
     mm = "%\nO0002\nG0 X35.\nG0 X-30.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n"
     assert found(mm, "haas-mill") == []
-    # no call names it: a program of its own, read in the reset inches as before
-    assert [f[:2] for f in found(mm.replace("M98 P2\n", ""), "haas-mill")] == [(4, "TG601")]
+    # no call names it: a program of its own, read in the reset inches as before, from its
+    # own G90 on (review 56b, F10)
+    alone = mm.replace("M98 P2\n", "")
+    assert found(alone, "haas-mill") == []
+    absolute = alone.replace("O0002\nG0", "O0002\nG90 G0")
+    assert [f[:2] for f in found(absolute, "haas-mill")] == [(4, "TG601")]
     # calls in both units: each judged where it is made (review 42, finding 9), the G20's
     both = sf.replace("M98 P2\nM30", "M98 P2\nG21\nM98 P2\nM30")
     assert [f[:2] for f in found(both, "fanuc-mill")] == [(8, "TG601")]

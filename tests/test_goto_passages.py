@@ -109,8 +109,15 @@ def test_a_known_true_jump_keeps_its_errors_and_finds_no_false_one(program, expe
     (O6_HEAD + "G0 X850. / M30 / O2000 / G0 X-700. / M99", []),
     # q7.nc: the same after a sure GOTO over a numbered block
     (O6_HEAD + "GOTO 34 / N16 G91 / N34 G0 X850. / M30 / O2000 / G0 X-700. / M99", []),
-    # its own span wider than the travel: said, where it grows past it
-    (O6_HEAD + "G0 X850. / M30 / O2000 / G0 X-700. / G0 X100. / G0 X850. / M99",
+    # its own span wider than the travel, from its own G90 on: said, where it grows past it
+    (O6_HEAD + "G0 X850. / M30 / O2000 / G90 G0 X-700. / G0 X100. / G0 X850. / M99",
+     [("TG601", 11, 4)]),
+    # review 56b, F10: with no G90/G91 of its own it runs in its caller's mode, not known:
+    # under G91 these are increments (-700, +800, +750: 800 mm), no span to judge
+    (O6_HEAD + "G0 X850. / M30 / O2000 / G0 X-700. / G0 X100. / G0 X850. / M99", []),
+    # ab1.nc: its positions are known from its own G90 on (X850. alone)
+    (O6_HEAD + "G0 X0 / M30 / O2000 / G0 X-700. / G90 G0 X850. / M99", []),
+    (O6_HEAD + "G0 X0 / M30 / O2000 / G0 X-700. / G90 G0 X850. / G0 X-700. / M99",
      [("TG601", 11, 4)]),
     # called by the main before its end: judged from its caller's spans, as before
     (O6_HEAD + "G0 X850. / M98 P2000 / M30 / O2000 / G0 X-700. / M99", [("TG601", 10, 4)]),
@@ -206,6 +213,24 @@ def test_an_uncalled_program_is_joined_where_alone_could_lose_an_error(program, 
     assert errors(program) == expected
 
 
+@pytest.mark.parametrize("program, expected", [
+    # review 56e, F2 (e1.nc): O3000, called by nothing, runs O2000 (written before it): X goes
+    # to -700 under whatever offset runs O3000, never with the main's X850.
+    (MAIN + "M30 / O2000 / G0 X-700. / M99 / O3000 / M98 P2000 / M99", []),
+    # its own span, callee and all: X-700. at the call, then its own X850.
+    (MAIN + "M30 / O2000 / G0 X-700. / M99 / O3000 / M98 P2000 / G0 X850. / M99",
+     [("TG601", 11, 4)]),
+    # review 56b, F4 in the other order (y2.nc): O3000's X850. and O2000's X-700. in one run
+    (AT_ZERO + "M30 / O3000 / G0 X850. / M99 / O2000 / G0 X-700. / M98 P3000 / M99",
+     [("TG601", 11, 5)]),
+])
+def test_an_uncalled_caller_is_judged_with_its_callees_alone(program, expected):
+    """Review 56e, F2: a program no call names that calls programs written before it is
+    judged on its own span, which holds its callees' positions from each call, not joined to
+    the main program's; review 56b F4's run through both programs stays an error."""
+    assert errors(program) == expected
+
+
 def test_an_uncalled_program_says_one_overtravel_once(tmp_path):
     """Review 56b, F3 (x1.nc-x3.nc): under a known G54 offset, the machine position's TG601
     is the one said; the span it made wider than the travel is not said again."""
@@ -216,7 +241,27 @@ def test_an_uncalled_program_says_one_overtravel_once(tmp_path):
     head = AT_ZERO + "M30 / O2000 / "
     assert errors(head + "G54 G0 X-800. / G0 X750. / M99", str(profile)) == [("TG601", 7, 8)]
     assert errors(head + "G54 G0 X750. / G0 X-800. / M99", str(profile)) == [("TG601", 8, 4)]
-    assert errors(head + "G0 X750. / G0 X-800. / M99", str(profile)) == [("TG601", 8, 4)]
+    # review 56e, F6: with no G54-G59 of its own, the offset it runs under is its caller's,
+    # not the G54 the main left: no machine position is known, and its span (its caller's
+    # G90/G91, review 56b F10) is not judged either
+    assert errors(head + "G0 X750. / G0 X-800. / M99", str(profile)) == []
+    assert errors(head + "G90 G0 X750. / G0 X-800. / M99", str(profile)) == [("TG601", 8, 4)]
+
+
+def test_an_uncalled_program_runs_under_its_caller_s_work_offset(tmp_path):
+    """Review 56e, F6 (x7.nc): the main's G55 is not carried past its M30 into a program no
+    call names (a FANUC's M30 ends the main program; the subprogram's M99 returns to a caller
+    not in the file): X-700. is no machine position X-800 there; from its own G55 on it is."""
+    profile = tmp_path / "wo2.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
+                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\n")
+    head = "G21 G17 G90 G55 / G0 X0 Y0 Z-10. / M30 / O2000 / "
+    assert errors(head + "G0 X-700. / M99", str(profile)) == []
+    assert errors(head + "G55 G0 X-700. / M99", str(profile)) == [("TG601", 7, 8)]
+    # the main itself, under its own G55: said
+    assert errors("G21 G17 G90 G55 / G0 X-700. Y0 Z-10. / M30", str(profile)) == [("TG601", 4, 4)]
 
 
 def test_an_uncalled_lathe_program_keeps_its_overtravel():
@@ -224,3 +269,69 @@ def test_an_uncalled_lathe_program_keeps_its_overtravel():
     program = ("G21 G18 G40 / G0 X100. Z800. / M98 P12000 / M30 / O2000 / G0 X50. Z-700. / "
                "M99")
     assert errors(program, "fanuc-lathe") == [("TG601", 8, 9)]
+
+
+def findings(blocks: str) -> list[tuple[str, str, int, int]]:
+    """The errors and warnings of `%` / O1000 / `blocks` / `%` under fanuc-mill."""
+    text = "%\nO1000\n" + blocks.replace(" / ", "\n") + "\n%\n"
+    prof = load_profile("fanuc-mill")
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    return [(f.rule, f.severity, f.line, f.column) for f in found if f.severity != "info"]
+
+
+@pytest.mark.parametrize("program, expected", [
+    # review 56b, F7 (t7.nc): #1 is 0, the IF does not jump: the G1 runs with no F ever given
+    (O6_HEAD + "IF [#1 EQ 1] GOTO 44 / G1 X20. / N44 G0 X30. / M30",
+     [("TG401", "error", 7, 4)]),
+    # t5.nc: and at its target, reached by falling through
+    (O6_HEAD + "IF [#1 EQ 1] GOTO 44 / G0 X10. / N44 G1 X20. / M30",
+     [("TG401", "error", 8, 8)]),
+    # a condition not known: the jump may be taken, the feed after it is not known
+    (O6_HEAD + "IF [#5 EQ 1] GOTO 44 / G1 X20. / N44 G0 X30. / M30", []),
+    # a feed given before the IF stays in force after it: no finding
+    (O6_HEAD + "G1 X5. F100. / IF [#1 EQ 1] GOTO 44 / G1 X20. / N44 G0 X30. / M30", []),
+    # review 56b, F8 (t1.nc): the missing N99 of a known-false IF is searched on no pass
+    # with these values: a warning, TG139, not TG118's "stops here"
+    (O6_HEAD + "IF [#1 EQ 1] GOTO 99 / G0 X10. / M30", [("TG139", "warning", 6, 14)]),
+    # known true or not known: the control searches for N99 and alarms (PS0128)
+    (O6_HEAD + "IF [#1 EQ 0] GOTO 99 / G0 X10. / M30", [("TG118", "error", 6, 14)]),
+    (O6_HEAD + "IF [#5 EQ 0] GOTO 99 / G0 X10. / M30", [("TG118", "error", 6, 14)]),
+])
+def test_an_if_known_false_runs_on_with_all_it_knows(program, expected):
+    """Review 56b, F7 and F8: an `IF [..] GOTO n` whose condition the known values make false
+    runs the next block (FANUC Custom Macro B, conditional branch: where the condition is
+    not satisfied, the next block is executed), so the feed and position stay known after it
+    and no TG140 is said of it, and its missing target is no error on that pass."""
+    assert findings(program) == expected
+
+
+@pytest.mark.parametrize("program, expected", [
+    # review 56b, F6 (p1.nc) / review 53, F16 (v1.nc): either way the run goes to N44, and
+    # X850. runs on no path
+    (AT_ZERO + "IF [#5 EQ 1] GOTO 44 / GOTO 44 / G0 X850. / N44 G0 X-700. / M30", []),
+    # review 55b (e7.nc): a known parameter, and a move between the IF and the GOTO
+    (O6_HEAD + "IF [#5 EQ 1] GOTO 44 / G0 X300. / GOTO 44 / G0 X850. / N44 G0 X-700. / M30",
+     []),
+    # kept: the fall-through runs X850. before the GOTO, then N44's X-700.
+    (AT_ZERO + "IF [#5 EQ 1] GOTO 44 / G0 X850. / GOTO 44 / G0 X0 / N44 G0 X-700. / M30",
+     [("TG601", 9, 8)]),
+    # kept: X850. before the IF and N44's X-700. are on every path
+    (AT_ZERO + "G0 X850. / IF [#5 EQ 1] GOTO 44 / GOTO 44 / G0 X0 / N44 G0 X-700. / M30",
+     [("TG601", 9, 8)]),
+])
+def test_an_if_to_the_sure_goto_s_target_adds_no_way_between(program, expected):
+    """Review 56b, F6: an IF whose target is the target of the sure `GOTO` after it arrives
+    there, not in the blocks the GOTO passes over: those are not run on any path, and the
+    target is reached from both (its parameters an arrival's, its position not known)."""
+    assert errors(program) == expected
+
+
+def test_an_uncalled_lathe_program_s_positions_are_absolute():
+    """Review 56e (l6.nc) on fanuc-lathe, G code system A: no G90/G91 mode (G90 is a turning
+    cycle, U and W the increments), so the caller's mode leaves X and Z absolute, and an
+    uncalled program's own Z span of 1200 mm is said (review 56b, F10 is for a mill's)."""
+    program = "G21 G18 G99 / G0 X100. Z200. / M30 / O2000 / G0 Z-700. / G0 Z500. / M99"
+    assert errors(program, "fanuc-lathe") == [("TG601", 8, 4)]
+    # W is an increment from Z-700.: Z goes to 700, 1400 mm (review 56b, l2.nc)
+    program = "G21 G18 G40 / G0 X100. Z5. / M30 / O2000 / G0 X50. Z-700. / W1400. / M99"
+    assert errors(program, "fanuc-lathe") == [("TG601", 8, 1)]

@@ -615,6 +615,7 @@ mod tests {
                                 message: message.to_string(),
                                 line,
                                 column,
+                                span: false,
                             };
                             writer.finding(&mut written, &finding);
                             assert_eq!(
@@ -641,6 +642,7 @@ mod tests {
             message: format!("m{line}"),
             line,
             column,
+            span: false,
         };
         let mut found = Vec::new();
         for line in 1..=12 {
@@ -720,6 +722,7 @@ mod tests {
             message: message.to_string(),
             line,
             column: 1,
+            span: false,
         };
         let mut found = Vec::new();
         for line in 1..=7 {
@@ -857,6 +860,7 @@ mod tests {
             message: "X-0.108370762: 9 decimals".to_string(),
             line: 12,
             column: 3,
+            span: false,
         };
         let rule = Rule::ALL[0];
         let (id, severity, clause) = (rule.id(), rule.severity().name(), rule.clause());

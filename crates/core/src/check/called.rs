@@ -34,7 +34,6 @@
 //! its span not added to the file's: its caller is not known), at the end of the file; a
 //! program given up is noted at each call of it (finding E).
 
-use super::limits::SPAN_SAID;
 use super::{Checker, Finding, Span};
 use crate::decimal::Dec;
 use crate::modal::AXES;
@@ -107,10 +106,15 @@ struct Body {
     /// a G91 call a G53 under G91, not judged; review 46, F3), and the line of the last.
     inherited: Machine,
     inherited_last: Option<usize>,
-    /// It calls a program (any call its dialect knows: `dialect::calls`, a LinuxCNC `o..
-    /// call`): no call naming it, its span is joined to the file's all the same, with those of
-    /// the programs it runs (review 56b, F4).
-    calls: bool,
+    /// The blocks in it that call a program (any call its dialect knows: `dialect::calls`, a
+    /// LinuxCNC `o.. call`), and those of them whose program, read before it, was judged
+    /// into its own spans there ([`Checker::early_call`]). No call naming it, where every
+    /// call was so its own span holds what its callees run and is judged alone (review 56e,
+    /// F2); where one was not (a program written after it: its positions go to the file's
+    /// span), its span is joined to the file's, with those of the programs it runs (review
+    /// 56b, F4).
+    calls: u32,
+    calls_judged: u32,
     /// The end or return before it is one the block skip can pass over (`/M30`): with the
     /// switch on, the program before runs on into it (review 56e, F4).
     after_skippable_end: bool,
@@ -266,7 +270,8 @@ impl Checker {
                 machine: [[None; 2]; 9],
                 inherited: [[None; 2]; 9],
                 inherited_last: None,
-                calls: false,
+                calls: 0,
+                calls_judged: 0,
                 after_skippable_end: self.end_skippable,
                 outside: 0,
             },
@@ -610,6 +615,9 @@ impl Checker {
         };
         let mut p = self.pending.remove(k);
         self.early_judged(&mut p, &call, &token, at);
+        if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
+            early.body.calls_judged += 1;
+        }
         if p.calls.is_none() {
             p.calls = Some(Ok(at.0));
         }
@@ -752,7 +760,7 @@ impl Checker {
     #[inline(never)]
     pub(super) fn early_calls(&mut self) {
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
-            early.body.calls = true;
+            early.body.calls += 1;
         }
     }
 
@@ -964,17 +972,38 @@ impl Checker {
         let mut said: Vec<Finding> = p
             .removed
             .into_iter()
-            .filter(|f| !(f.rule == Rule::TravelExceeded && f.message.contains(SPAN_SAID)))
+            .filter(|f| !f.span)
             .chain(p.positions)
             .collect();
         let from = self.found.len();
+        // (one that moved before a G90/G91 of its own runs those moves in its caller's mode,
+        // not known: G91 makes them increments from where the caller left it. Its positions
+        // are known from its own G90 on, as at a call in the other mode (review 56b, F10:
+        // `O2000` / `G0 X-700.` / `G90 G0 X850.` / `M99` is no "X spans 1550")). Not one that
+        // calls programs: its span holds theirs read in G90, as the span of one that calls a
+        // program written after it is joined to the file's in G90 (review 56b, F4: y1.nc's
+        // error kept, and the same programs in the other order, y2.nc, keep theirs). Nor on a
+        // lathe of G code system A, which has no G90/G91 mode (its G90 a turning cycle, its
+        // increments U and W): its X and Z are absolute whoever calls it
+        let positions_known = p.read_incremental.is_none()
+            || p.body.calls > 0
+            || self.machine.settings.own_motion(90);
+        let (spans, least_at, most_at) = if positions_known {
+            (&p.spans, &p.body.least_at, &p.body.most_at)
+        } else {
+            (
+                &p.body.absolute.spans,
+                &p.body.absolute.least_at,
+                &p.body.absolute.most_at,
+            )
+        };
         for (i, &axis) in AXES.iter().enumerate() {
-            let (Some(span), Some((low, high))) = (p.spans[i], self.travel.of_place(i)) else {
+            let (Some(span), Some((low, high))) = (spans[i], self.travel.of_place(i)) else {
                 continue;
             };
             let said = p.body.outside & (1 << i) != 0;
             if !said && span.most - span.least > (high - low) + 1e-9 {
-                let (l, m) = (p.body.least_at[i], p.body.most_at[i]);
+                let (l, m) = (least_at[i], most_at[i]);
                 let at = if l.0 >= m.0 { l } else { m };
                 // (read with no units code of its own, in the units it began in: where those
                 // are the profile's inches and millimetres would fit, the remark says so)
@@ -1000,9 +1029,11 @@ impl Checker {
     }
 
     /// Whether a subprogram no call of the file names is judged on its own span
-    /// ([`Checker::early_as_read`]), where that cannot lose an overtravel its run makes: it
-    /// calls no program (the programs it runs, written after it, are judged with the file's
-    /// span, not its own: review 56b, F4); no call of the file may name it under another
+    /// ([`Checker::early_as_read`]), where that cannot lose an overtravel its run makes: each
+    /// program it calls was read before it and judged into its span at the call, so its own
+    /// span is that of its run, callees and all (review 56e, F2); a program it runs that is
+    /// written after it is judged with the file's span, not its own, so such a caller is
+    /// joined to the file's (review 56b, F4); no call of the file may name it under another
     /// program-number option (`M98 P12000` is O2000 on a FANUC without the 8-digit option,
     /// `M198 P2000` may run the file's O2000 from a memory card: F1,
     /// [`Checker::call_numbers_seen`]); and it is not numbered O9000-O9999, the programs a
@@ -1014,7 +1045,8 @@ impl Checker {
     /// control, it may run this one: F5), or the end before it is one the block skip passes
     /// over (`/M30`: with the switch on, the main runs on into it; F4).
     fn judged_alone(&self, p: &Pending) -> bool {
-        if p.body.calls
+        if p.body.calls > p.body.calls_judged
+            || p.body.unfollowed.is_some()
             || p.body.after_skippable_end
             || self.file_programs.range(9000..=9999).next().is_some()
             || self
@@ -1409,9 +1441,12 @@ mod tests {
         let text =
             "%\nO0002\nG0 X35.\nG0 X-30.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nM98 P2\nM30\n%\n";
         assert_eq!(limits(mill(Units::Inch), text), []);
-        // with no call it is a program of its own, read in the reset inches: as before
+        // with no call it is a program of its own, read in the reset inches: as before, from
+        // its own G90 on (its caller's G90/G91 is not known: review 56b, F10)
         let alone = text.replace("M98 P2\n", "");
-        assert_eq!(limits(mill(Units::Inch), &alone), [(4, 4)]);
+        assert_eq!(limits(mill(Units::Inch), &alone), []);
+        let absolute = alone.replace("O0002\nG0", "O0002\nG90 G0");
+        assert_eq!(limits(mill(Units::Inch), &absolute), [(4, 4)]);
     }
 
     /// Calls in different units (review 42, finding 9): each judged where it is made, the

@@ -112,7 +112,7 @@ const XYZ: u16 = 0b111;
 
 /// What a span's TG601 says after its travel ([`Checker::span_exceeded`]): a subprogram no
 /// call names finds its own by it, to judge them again alone (crate::check::called).
-pub(super) const SPAN_SAID: &str = ": no work offset fits the program on this machine";
+const SPAN_SAID: &str = ": no work offset fits the program on this machine";
 
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
@@ -344,6 +344,22 @@ impl Checker {
         self.work = None;
         self.stats.travel_not.push(format!(
             "from line {line} on: {why} (the offsets may have changed)"
+        ));
+    }
+
+    /// A program no call before it names begins on line `line` (called_units): the work
+    /// offset it runs under is its caller's or the reset state's, not the one the program
+    /// before it left (a FANUC's M30 ends that program; review 56e, F6: `G55` / `M30` /
+    /// `O2000` / `G0 X-700.` / `M99` was judged under G55). Its positions are compared as
+    /// machine positions again from its own G54-G59.
+    pub(super) fn work_offset_unknown(&mut self, line: usize) {
+        if self.config.work_offsets.is_empty() || self.work.is_none() {
+            return;
+        }
+        self.work = None;
+        self.travel_not(format!(
+            "from line {line} on: a program no call before it names runs under its caller's \
+             work offset, not known here, until it selects one of its own"
         ));
     }
 
@@ -2411,7 +2427,11 @@ impl Checker {
             round6(least),
             round6(most)
         );
+        let before = self.found.len();
         self.report_limit(Rule::TravelExceeded, message, line, column);
+        if self.found.len() > before {
+            self.found.last_mut().expect("said").span = true;
+        }
     }
 
     /// TG601 of a position in machine coordinates (G53): `value` as written, `at` in the
@@ -2905,11 +2925,15 @@ mod tests {
         // the program after the end that no call names is a program of its own, read from the
         // reset state (G20) as the file's first is; its span is its own, not added to the
         // main program's (its caller, and the work offset it runs under, are not known: review
-        // 55b, F4), so one position is no TG601 and two 1800 in apart are
-        let alone = "%\nO1\nG21\nG0 G90 X0 Y0\nM30\nO1000\nG1 X900. F700.\nM99\n%\n";
-        assert_eq!(limits(alone), [(7, 10)]);
+        // 55b, F4), so one position is no TG601 and two 1800 in apart are, from its own G90
+        // on (its caller's G90/G91 is not known either: review 56b, F10)
+        let alone = "%\nO1\nG21\nG0 G90 X0 Y0\nM30\nO1000\nG90\nG1 X900. F700.\nM99\n%\n";
+        assert_eq!(limits(alone), [(8, 10)]);
         let wide = alone.replace("F700.\n", "F700.\nX-900.\n");
-        assert_eq!(limits(&wide), [(8, 1), (7, 10)]);
+        assert_eq!(limits(&wide), [(9, 1), (8, 10)]);
+        // without it, the two may be increments (900 in, then back): no span judged
+        let unsure = wide.replace("G90\n", "");
+        assert_eq!(limits(&unsure), [(7, 10)]);
         // a call of a program the file does not hold (O2000, stored on the control, may call
         // O1000): its span joined to the main's, as before (review 56e, F5)
         assert_eq!(

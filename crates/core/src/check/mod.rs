@@ -340,6 +340,10 @@ pub struct Finding {
     pub message: String,
     pub line: usize,
     pub column: usize,
+    /// A TG601 of a span of positions wider than the travel (no work offset fits), not of
+    /// one position: a program read apart and then judged alone judges its spans again with
+    /// its own, and drops those said with the spans before it (called.rs).
+    pub span: bool,
 }
 
 /// One move, for the backplot. Positions as programmed (a lathe's X a diameter, its centre's
@@ -1658,6 +1662,7 @@ impl Checker {
                 message,
                 line,
                 column,
+                span: false,
             });
         }
     }

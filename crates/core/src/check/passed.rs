@@ -20,8 +20,9 @@
 //! carry no sequence number and no loop statement (a block with an N may be named by another
 //! jump, a call's `M97 P`, a return's `M99 P` or a lathe cycle's P/Q, and so run: the first
 //! such block ends the passage, and if it is not the target the blocks after it are judged
-//! as before); no jump read before names the target, nor is a computed `GOTO #1` read (the
-//! values at the target are then the jump's alone); the jump is not under the `/` switch nor
+//! as before); no computed `GOTO #1` is read (a jump read before to the same target arrives
+//! there, not between: the target then starts from what both leave, [`Passed::shared`]);
+//! the jump is not under the `/` switch nor
 //! inside a `WHILE` loop, not read apart as a subprogram's body (called.rs) and no jump's run
 //! is being read beside the file's (params.rs); the blocks passed over leave the units and the
 //! feed mode as the jump found them (the target's words are read in them before the passage
@@ -42,6 +43,11 @@ pub(super) struct Passed {
     line: usize,
     target: u64,
     conditional: bool,
+    /// Whether a jump read before it names its target too (an `IF [..] GOTO 44` before a
+    /// `GOTO 44`): the target is reached from either, and starts from what both leave --
+    /// the position, feed and speed not known (the earlier jump's are not kept), the
+    /// parameters those of an arrival ([`Checker::jump_arrival`]).
+    shared: bool,
     /// The checker as the jump left it (its run state is the target's).
     run: Box<Checker>,
     /// Whether the jump left no feed ever set (the reset state's none, not one forgotten).
@@ -121,17 +127,24 @@ impl Checker {
         else {
             return;
         };
-        // (no jump read before names the target; a GOTO outside an IF left as reach.rs
-        // reads it)
-        if self.goto_targets.get(&target) != Some(&(b.line, false)) {
-            return;
-        }
-        // (nor does a run kept for a jump a run met: it arrives there too)
+        // (no jump read before names the target, or one does: it arrives at the target, not
+        // in the blocks between, which this jump passes over all the same -- review 56b, F6:
+        // `IF [#5 EQ 1] GOTO 44` / `GOTO 44` / `G0 X850.` / `N44 ...`: X850 runs on no path --
+        // and the target is then an arrival of both, [`Passed::shared`]; a GOTO outside an IF
+        // left as reach.rs reads it)
+        let shared = match self.goto_targets.get(&target) {
+            Some(&(line, false)) if line == b.line => false,
+            Some(&(line, true)) if line < b.line => true,
+            _ => return,
+        };
+        // (nor does a run kept for a jump a run met: it arrives there too; one kept for the
+        // jump read before to the same target starts there as any arrival's)
         let key = format!("N{target}");
-        if self
-            .jumps_pending
-            .iter()
-            .any(|t| t.to(key.as_bytes()) && !t.own_of(b.line))
+        if !shared
+            && self
+                .jumps_pending
+                .iter()
+                .any(|t| t.to(key.as_bytes()) && !t.own_of(b.line))
         {
             return;
         }
@@ -141,7 +154,9 @@ impl Checker {
             return;
         }
         let mut goto_targets = self.goto_targets.clone();
-        goto_targets.remove(&target);
+        if !shared {
+            goto_targets.remove(&target);
+        }
         let mut run = self.run_of();
         let mut no_feed = false;
         // (the position, feed and speed the jump's block left: the checker forgot them, as it
@@ -165,6 +180,7 @@ impl Checker {
             line: b.line,
             target,
             conditional,
+            shared,
             run,
             no_feed,
             path: self.path.len(),
@@ -241,6 +257,7 @@ impl Checker {
         let Passed {
             line,
             target,
+            shared,
             run,
             no_feed,
             path,
@@ -289,6 +306,13 @@ impl Checker {
             .retain(|t| !t.own_of(line) && !t.own_after(line));
         self.run_state_of(*run);
         self.limits_hint_said = hint_said;
+        if shared {
+            // (the jump read before arrives with the state it left, which the checker did not
+            // keep: what the file's reading forgot at it is forgotten here too)
+            self.machine.forget();
+            self.motion_unknown = true;
+            self.polar = super::polar::Polar::default();
+        }
     }
 
     /// Block `b` where a jump surely taken, whose passage was given up, left no feed ever set
@@ -560,19 +584,22 @@ mod tests {
 
     /// Where the checker cannot be sure the blocks are passed over, they are judged as
     /// before: the target not in the program (TG118), a numbered block between (a jump,
-    /// call or return may name it), another jump to the target read before, a `/` jump, a
-    /// jump inside a WHILE loop, a jump back.
+    /// call or return may name it), a `/` jump, a jump inside a WHILE loop, a jump back.
     #[test]
     fn where_the_passage_is_not_sure_nothing_changes() {
         for body in [
             "G0 X0 Y0\nGOTO30\nG1 X9999. F100.\nN10 G0 X1. Y0",
             "G0 X0 Y0\n#1=1\nIF[#1EQ1]GOTO20\nG1 X9999. F100.\nN10 G0 X1. Y0\nN20 G0 X2.",
-            "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0",
             "G0 X0 Y0\n/GOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0",
             "G0 X0 Y0\nWHILE[#5LT1]DO1\nGOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0\nEND1",
             "N5 G0 X0 Y0\n#1=1\nIF[#1EQ1]GOTO5\nG1 X9999. F100.\nN10 G0 X1. Y0",
         ] {
             assert_eq!(travel(body).len(), 1, "{body}");
         }
+        // another jump to the target read before arrives there, not between: the blocks are
+        // passed over all the same (review 56b, F6)
+        let body =
+            "G0 X0 Y0\nIF[#5EQ1]GOTO10\n#1=1\nIF[#1EQ1]GOTO10\nG1 X9999. F100.\nN10 G0 X1. Y0";
+        assert_eq!(travel(body), []);
     }
 }

@@ -527,6 +527,9 @@ impl Checker {
         }
         if let Some(n) = number.filter(|n| !self.call_units.contains_key(n)) {
             if self.config.family == Family::MacroB {
+                // (its caller, not the program before it, selects the work offset it runs
+                // under: not known until it writes its own G54-G59; review 56e, F6)
+                self.work_offset_unknown(b.line);
                 self.early_begin(
                     super::called::Key::Number(n),
                     b.words[0].token(),

@@ -40,6 +40,10 @@ pub(super) struct Target {
     token: String,
     /// The returns of `M99 P`: checked in a main program only.
     returns: bool,
+    /// A `GOTO n` of an IF whose condition the values known where it is read make false
+    /// ([`Checker::condition_known`]): that run does not search for N n (review 56b, F8), and
+    /// a later one -- a loop or a jump back -- may, so its missing block is TG139's warning.
+    untaken: bool,
 }
 
 /// The sequence numbers of one program, and the blocks its words name.
@@ -475,6 +479,7 @@ impl Checker {
                     column: v.column,
                     token: format!("{code} {}", v.token()),
                     returns,
+                    untaken: false,
                 });
             }
         }
@@ -491,12 +496,14 @@ impl Checker {
                 continue;
             }
             if let Some(n) = crate::text::digits_value(digits) {
+                let untaken = self.condition_known(&upper) == Some(false);
                 self.targets.name(Target {
                     n,
                     line: b.line,
                     column: column + at,
                     token: format!("GOTO {n}"),
                     returns: false,
+                    untaken,
                 });
             }
         }
@@ -528,7 +535,9 @@ impl Checker {
     /// The end of a program: each block a word named that is not in it (TG118).
     pub(super) fn targets_ended(&mut self) {
         let targets = std::mem::take(&mut self.targets);
-        if targets.overflow || !self.enabled(Rule::TargetNotFound) {
+        if targets.overflow
+            || !(self.enabled(Rule::TargetNotFound) || self.enabled(Rule::TargetNotFoundIfTrue))
+        {
             return;
         }
         let main = self.ended_line > 0;
@@ -581,6 +590,17 @@ impl Checker {
             } else {
                 "FANUC: alarm PS0063"
             };
+            if t.untaken {
+                let message = format!(
+                    "{}: no block N{} in this program; the IF's condition is false with the \
+                     values known here, so this pass goes on to the next block; a pass where \
+                     it is true (a loop, a jump back, other values) stops here with an alarm \
+                     ({alarm})",
+                    t.token, t.n
+                );
+                self.report(Rule::TargetNotFoundIfTrue, message, t.line, t.column);
+                continue;
+            }
             let message = format!(
                 "{}: no block N{} in this program; the control stops here with an alarm ({alarm})",
                 t.token, t.n

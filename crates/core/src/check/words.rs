@@ -63,11 +63,16 @@ impl Checker {
         if call.is_none() && self.linuxcnc_opened_running(b) {
             return false;
         }
+        // and an IF whose condition the values known here make false does not jump: the run
+        // goes on to the next block with all it knows (FANUC Custom Macro B, "IF[<conditional
+        // expression>]GOTOn": not satisfied, the next block is executed; review 56b, F7), as
+        // its target gains no way in (params.rs)
         let statement = b.statements.iter().find(|s| {
             s.1.unfollowed()
                 && !(macro_b
                     && s.1 == crate::statement::Kind::Flow
-                    && crate::statement::conditional_assignment(s.2).is_some())
+                    && (crate::statement::conditional_assignment(s.2).is_some()
+                        || self.condition_known(&s.2.to_ascii_uppercase()) == Some(false)))
         });
         let (column, what) = match (statement, call) {
             (Some(&(column, kind, text)), _) => (
