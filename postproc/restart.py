@@ -430,6 +430,12 @@ class _Planner:
         # starts the spindle by the program's own code (review 56a F9)
         self.turn_code = (facts.turned_by[1] if facts.turned_by is not None and not stopped
                           else None)
+        keyed = facts.keyed_coolant
+        if (self.turn_code is None and keyed is not None and not stopped
+                and self.keyed_meaning(keyed[1]) == f"spindle-{self.state.spindle}-coolant-on"):
+            # its coolant still on and the spindle turning its way again by a plain M03/M04
+            # (`M13` ... `M05` ... `M03`): the program's own code restores both (review 57a F3)
+            self.turn_code = keyed[1]
         # a lathe's cycle returns to its start point: that is where the tool is
         self.state.position.update(facts.held)
         self.units = self.state.units
@@ -725,9 +731,13 @@ class _Planner:
     def starts_coolant(self, m: int) -> bool:
         """Whether the profile keys M code ``m`` as a spindle start with the coolant
         (``spindle-cw-coolant-on``, ``spindle-ccw-coolant-on``)."""
+        meaning = self.keyed_meaning(m)
+        return meaning.startswith("spindle-") and meaning.endswith("-coolant-on")
+
+    def keyed_meaning(self, m: int) -> str:
+        """The meaning key the profile gives M code ``m`` ("" where it lists none)."""
         listed = self.profile.code("M", m)
-        return listed is not None and listed.meaning.startswith("spindle-") \
-            and listed.meaning.endswith("-coolant-on")
+        return listed.meaning if listed is not None else ""
 
     def check_keyed_coolant(self) -> None:
         """The coolant a keyed start with the coolant turned on (M13, M14) is on, but the

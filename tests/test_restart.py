@@ -2373,9 +2373,32 @@ def test_a_keyed_starts_coolant_left_on_after_the_spindle_stopped_refuses_the_re
     off = text.replace("N140 G00 X0 Y0", "N135 M09\nN140 G00 X0 Y0")
     preamble = plan(off, 13, KEYED).preamble
     assert not any(c in b for b in preamble for c in ("M13", "M09", "M08")), preamble
-    # an M03 after the M13 (no M09): the spindle is M03's, the coolant M13's: refused too
+    # an M03 after the M13 (no M09), or after its M05: the spindle CW and M13's coolant on,
+    # which M13 restores exactly (review 57a F3: refused); an M04 there is not M13's: refused
     turned = text.replace("N130 M05", "N130 M03")
-    assert refusal(turned, 13, KEYED).startswith("cannot restart here: M13 on line 6 turned")
+    assert "G97 S1000 M13" in plan(turned, 13, KEYED).preamble
+    again = text.replace("N140 G00 X0 Y0", "N135 M03\nN140 G00 X0 Y0")
+    preamble = plan(again, 14, KEYED).preamble
+    assert "G97 S1000 M13" in preamble and "M09" not in preamble, preamble
+    reversed_ = text.replace("N130 M05", "N130 M04")
+    assert refusal(reversed_, 13, KEYED).startswith("cannot restart here: M13 on line 6 turned")
+
+
+def test_a_keyed_start_in_the_tool_changes_block_keeps_its_coolant_on() -> None:
+    """Review 57a F2: `T2 M06 M13` (and `S1200 M13 T3 M06`) had the walk clear the keyed
+    coolant at the block's M06 after setting it at its M13, so the preamble wrote M13 then
+    M09 and the cut ran dry, where the program never turned its coolant off. The M13 of the
+    tool change's own block runs after the change: its coolant stays on."""
+    text = (COOLED.format(start="M13").replace("N50 T1 M06\n", "N50 S1000 T1 M06 M13\n")
+            .replace("N70 S1000 M13\n", "N70 G00 X0 Y0\n").replace("N90 M09\n", ""))
+    for line in (8, 9):
+        preamble = plan(text, line, KEYED).preamble
+        assert "M09" not in preamble and any("M13" in b for b in preamble), (line, preamble)
+    # the M06 of a later block still ends it: after `T2 M06` the spindle and coolant are off
+    later = text.replace("N130 M05\n", "N130 T2 M06\n").replace("N140 G00 X0 Y0",
+                                                                  "N140 G43 H2 Z50.")
+    preamble = plan(later, 13, KEYED).preamble
+    assert not any(c in b for b in preamble for c in ("M13", "M09", "M08")), preamble
 
 
 def test_a_listed_spindle_code_without_a_key_refuses_the_restart():

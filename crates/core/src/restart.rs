@@ -316,8 +316,9 @@ pub struct Walk {
     /// `spindle-ccw-coolant-on`: a builder's M13 and M14), set by the binding.
     pub coolant_starts: Vec<i64>,
     /// The code of `coolant_starts` whose coolant is on (line, code): set by the code, ended
-    /// by M09, a FANUC or Haas mill's M06 and the program's end, not by M05 (review 56d F1:
-    /// the modal state reads M07-M09 alone, so the preamble restores that coolant by it).
+    /// by M09, a FANUC or Haas mill's M06 (not one of its own block: review 57a F2) and the
+    /// program's end, not by M05 (review 56d F1: the modal state reads M07-M09 alone, so the
+    /// preamble restores that coolant by it).
     pub keyed_coolant: Option<(usize, i64)>,
     /// The M codes of the spindle's modal group (M03's `duration`) that the walk does not
     /// read: neither M03-M05 nor a code of `turn_codes` or `orient_codes` (a builder's M13
@@ -2095,7 +2096,11 @@ impl Walk {
             // either way (review 36, finding 2: an M19 before the M06 refused every restart
             // up to the new tool's M03)
             self.orientation_ended(line);
-            self.keyed_coolant = None;
+            // (a keyed M13 of the M06's own block runs after the change, as the preamble's
+            // side reads a spindle start there: its coolant stays on, review 57a F2)
+            if self.keyed_coolant.is_some_and(|(at, _)| at != line) {
+                self.keyed_coolant = None;
+            }
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
