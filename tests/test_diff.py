@@ -326,6 +326,12 @@ COUNTS = [
      "K3", "K4", "K3 -> K4"),
     ("haas-mill", "G20 G17 G90\nG00 X0 Y0 Z1. S1000 M03\nG99 G84 X1. Z-0.5 R0.1 {} F10.",
      "J2", "J3", "J2 -> J3"),  # the retract multiple
+    # a block's own G10 or G65 under a modal dwell cycle: its P is the offset's number, the
+    # macro's program, not the cycle's dwell (review 57a F1)
+    ("fanuc-mill", "G21 G17 G90\nG00 X0 Y0 Z5. S1000 M03\nG82 X10. Y10. Z-5. R2. P500 F100."
+     "\nG10 L2 {} X0 Y0 Z0\nX20. Y10.", "P1", "P2", "P1 -> P2"),
+    ("fanuc-mill", "G21 G17 G90\nG00 X0 Y0 Z5. S1000 M03\nG82 X10. Y10. Z-5. R2. P500 F100."
+     "\nG65 {} A1.\nX20. Y10.", "P9000", "P9001", "P9000 -> P9001"),
 ]
 
 

@@ -8683,10 +8683,14 @@ fn cycle_table(
             83..=89 if lathe && family == Family::MacroB && haas != Some(true) => {
                 set(b"K", number);
             }
-            10 => set(b"PL", number), // G10 L2 P1: the offset's number; R the value, a length
-            65 | 66 => set(b"PL", number),
             _ => {}
         }
+    }
+    if gs.iter().any(|&g| matches!(g, 10 | 65 | 66)) {
+        // G10 L2 P1: the offset's number (R the value, a length); G65/G66 P the macro and L
+        // the count: the block's own code's, whatever canned cycle is in force (review 57a
+        // F1: under a modal G82, `G10 L2 P1`'s P was read as the cycle's dwell)
+        set(b"PL", number);
     }
     if ms.iter().any(|&m| matches!(m, 97..=99 | 198)) {
         // the program or block number and the count (M99 P: the sequence number returned to)

@@ -577,7 +577,15 @@ impl Reader {
         let measures = (0..26usize)
             .filter(|&i| read_whole & 1 << i != 0 && meanings.cycle_measure(b'A' + i as u8))
             .fold(0u32, |bits, i| bits | 1 << i);
-        let counts = read_whole & !measures;
+        // (a macro call's P, the program, and L, the count, are compared exactly, as M98's
+        // are, whatever cycle is in force: under a modal G82 `G65 P9000`'s P was read as its
+        // dwell, review 57a F1)
+        let called = if macro_call {
+            1 << (b'P' - b'A') | 1 << (b'L' - b'A')
+        } else {
+            0
+        };
+        let counts = read_whole & !measures | called;
         // a thread's start angle (`Meanings::start_angle`: a lathe's G32/G92 Q, Haas G76 Q) is
         // in 0.001 deg without a point: compared in degrees, as a dwell's milliseconds are in
         // seconds
