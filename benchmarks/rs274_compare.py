@@ -793,6 +793,8 @@ SEEDED: list[tuple[str, str, int, str]] = [
     # restore runs a block of its own, the M72 block's motion does not run
     ("G1 after M72 restores G94 from G93 at the same rate",
      HEAD + "F100\nM70\nG93\nF100\nM72\nG1 X2\nM2\n", 8, "error"),
+    ("G1 after M72 restores G94 from a G93 move at the same rate",
+     HEAD + "F100\nM70\nG93\nG1 X1 F100\nM72\nG1 X2\nM2\n", 8, "error"),
     ("spline after M72 restores G94 from G95 at the same rate",
      HEAD + "F100\nM70\nG95 F100\nM72\nG5 X3 Y2 I1 J0 P1 Q1\nM2\n", 7, "error"),
     ("spline without F after M72 restores G93",

@@ -85,6 +85,7 @@ BOTH = [
     # review 56c (lcnc57): the rate M72 restores zero (TG401)
     "G1 after M72 restores G94 from G93 at the same rate",
     "G1 beside an M72 with nothing to restore",
+    "G1 after M72 restores G94 from a G93 move at the same rate",
     # TG412: rs274's own refusals
     # lcnc51: a definition read again on a loop's second turn
     "a definition in a repeat [2]", "a definition in a repeat [2], called",

@@ -6781,9 +6781,14 @@ mod tests {
             // the speed saved, under G95 ("Cannot feed with zero spindle speed ...")
             ("G95 F0.1\nM70\nS1000 M3\nM72\nG1 X1", refused),
             ("S1000 M3\nG95 F0.1\nM70\nS0\nM72\nG1 X1", None),
-            // not known: a G93 move's rate (its length times F), an F the checker does not
-            // evaluate (F1, F4); rs274 stops on each, the checker leaves the F unknown
-            ("F100\nM70\nG93\nG1 X1 F100\nM72\nG1 X2", None),
+            // a G93 G1's rate, its length times F, where exact (F1): the same, zero; another,
+            // the saved F
+            ("F100\nM70\nG93\nG1 X1 F100\nM72\nG1 X2", no_feed),
+            ("F100\nM70\nG93\nG1 X2 F50\nM72\nG1 X3", no_feed),
+            ("F100\nM70\nG93\nG1 X1 F10\nM72\nG1 X2", None),
+            // not known: a G93 move of two axes, an F the checker does not evaluate (F1, F4);
+            // rs274 stops on each, the checker leaves the F unknown
+            ("F100\nM70\nG93\nG1 X3 Y4 F20\nM72\nG1 X2", None),
             ("F[50*2]\nM70\nG95 F100\nM72\nG1 X1", None),
             ("F#<_r>\nM70\nG95 F100\nM72\nG1 X1", None),
             // a save in a loop: its last turn's (F6, rs274 runs); a restore in a known-true

@@ -714,7 +714,7 @@ impl Checker {
         }
         if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
             if f_at.is_some() {
-                self.linuxcnc_feed_word(f_at, given.as_slice(), facts);
+                self.linuxcnc_feed_word(f_at, given.as_slice(), facts, start);
             }
             if let Some(code) = given {
                 self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
@@ -841,7 +841,7 @@ impl Checker {
         }
         let f_at = first[usize::from(b'F' - b'A')] as usize;
         if !restored {
-            self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts);
+            self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts, start);
         }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
@@ -1206,7 +1206,13 @@ impl Checker {
     /// rs274's feed rate after the block's first F word (`at`, its place; None for a block
     /// without one), its G codes in tenths `codes`.
     #[inline]
-    fn linuxcnc_feed_word(&mut self, at: Option<usize>, codes: &[i64], facts: &Facts<'_>) {
+    fn linuxcnc_feed_word(
+        &mut self,
+        at: Option<usize>,
+        codes: &[i64],
+        facts: &Facts<'_>,
+        start: &Before,
+    ) {
         let Some(at) = at else {
             return;
         };
@@ -1233,13 +1239,57 @@ impl Checker {
                 },
             );
             if matches!(motion, Some(10 | 20 | 30)) {
-                self.linuxcnc_rate = None;
+                self.linuxcnc_rate = (motion == Some(10) && self.linuxcnc_runs_in_order())
+                    .then(|| self.linuxcnc_g93_rate(start, self.readable[at]))
+                    .flatten();
                 self.linuxcnc_feed_rate = match self.readable[at] {
                     Some(f) if !f.is_zero() => LinuxCncFeed::Set,
                     _ => LinuxCncFeed::Unknown,
                 };
             }
         }
+    }
+
+    /// LinuxCNC: rs274's feed rate after a G93 G1 from `start` at `f`, where it is exact:
+    /// interp_inverse.cc `inverse_time_rate_straight` sets it to the move's length
+    /// (interp_find.cc `find_straight_length`: X Y Z where one of them moves) times F, at
+    /// least 0.1, from the current point (the programmed one under compensation). Worked out
+    /// only where no double rounds it: one of X Y Z moves, between whole numbers known
+    /// exactly, at a whole F, without compensation (review 56c, F1: `G93` / `G1 X1 F100`
+    /// leaves 100, which M72 compares with the saved rate). None elsewhere: not known.
+    #[cold]
+    fn linuxcnc_g93_rate(&self, start: &Before, f: Option<Dec>) -> Option<Dec> {
+        const EXACT: i64 = 1 << 26;
+        let small = |v: Dec| v.is_whole() && v.trunc().abs() < EXACT;
+        let f = f.filter(|&f| small(f) && !f.is_zero() && f.trunc() > 0)?;
+        let state = &self.machine.state;
+        if start.compensation != 40
+            || state.compensation != 40
+            || self.linuxcnc_dynamic_compensation
+            || self.linuxcnc_compensation_unknown
+        {
+            return None;
+        }
+        let mut length = None;
+        for letter in [b'X', b'Y', b'Z'] {
+            if start.is_unknown(letter)
+                || state.is_unknown(letter)
+                || self.linuxcnc_point_unsure & bit(letter) != 0
+            {
+                return None;
+            }
+            let (s, e) = (start.axis(letter)?, state.axis(letter)?);
+            if !small(s) || !small(e) {
+                return None;
+            }
+            if s != e {
+                if length.is_some() {
+                    return None;
+                }
+                length = Some(Dec::from_int(i128::from((e.trunc() - s.trunc()).abs())));
+            }
+        }
+        length?.checked_mul(f)
     }
 
     /// LinuxCNC: the line runs once, where it stands, whenever the program gets there: the
