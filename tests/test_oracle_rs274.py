@@ -82,6 +82,10 @@ BOTH = [
     "endif of another label in an if not run", "endrepeat of another label in a repeat of 0",
     # a cycle drills along the plane's axis (TG541, every family's rule)
     "G18 cycle without Y",
+    # review 56c (lcnc57): the rate M72 restores zero (TG401)
+    "G1 after M72 restores G94 from G93 at the same rate",
+    "G1 beside an M72 with nothing to restore",
+    "G1 after M72 restores G94 from a G93 move at the same rate",
     # TG412: rs274's own refusals
     # lcnc51: a definition read again on a loop's second turn
     "a definition in a repeat [2]", "a definition in a repeat [2], called",
@@ -189,6 +193,9 @@ BOTH = [
     "mixed R and I after a call whose body sets G18", "mixed R and I in a definition's body",
     # review 55c, F6: M72 restores the plane M70 saved
     "R arc after M72 restores G18",
+    # review 56c (lcnc57): M72 restores the feed mode, rate and speed M70 saved
+    "spline after M72 restores G94 from G95 at the same rate",
+    "spline without F after M72 restores G93", "G1 in G95 after M72 restores S0",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
@@ -255,6 +262,11 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # review 56c, F2, F9: the feed mode an M72 restores is not followed
        "spline under G93 after M72 restores G95",
        "spline under G93 after M72 restores the G95 of a known-true if",
+       # review 56c, F3, F5, F7 (lcnc57): the rate M72 restores, its block's motion not run
+       # where the restore runs a block, a spline's feed not the G1's in force
+       "G1 after M72 restores G94 F100 from G93", "G1 after M72 beside G93 restores G94 F100",
+       "G5.1 in G95 after a G1", "G1 beside an M72 that restores G94",
+       "spline beside an M72 that restores G94 F100",
        # review 55c, F7: the elseif after a known-true branch with a call never runs
        "J centre in an elseif after a known-true if with a call",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known

@@ -1042,6 +1042,23 @@ pub struct Checker {
     /// LinuxCNC: rs274ngc's feed rate, which its probe moves and canned cycles read
     /// ([`tooling::LinuxCncFeed`]).
     linuxcnc_feed_rate: tooling::LinuxCncFeed,
+    /// LinuxCNC: rs274ngc's feed rate where the checker knows its value: zero at the start
+    /// and after a G94 or G95, an F of a number under them, each run surely by the main
+    /// program; None after anything else (a G93 move's length times F, an F in a condition,
+    /// loop or body, a parameter, a call or jump). M72's restore compares it
+    /// ([`Checker::linuxcnc_feed_restore`]).
+    linuxcnc_rate: Option<Dec>,
+    /// LinuxCNC: the feed mode, rs274's feed rate and the speed the main program's M70 or
+    /// M73 saved, where each is known ([`structure::FeedSaved`]); None where no save is
+    /// followed.
+    linuxcnc_feed_saved: Option<structure::FeedSaved>,
+    /// LinuxCNC: the block (its count in `stats.blocks`) whose M72 restore of the feed was
+    /// followed: its mode is known, not `linuxcnc_mode_restored`.
+    linuxcnc_feed_restored_at: Option<usize>,
+    /// LinuxCNC: the block (its count) whose M72's restore surely ran a block of its own,
+    /// which rs274 2.9.0 runs in place of the M72's: its motion does not run
+    /// ([`Checker::linuxcnc_feed_restore`]).
+    linuxcnc_m72_dropped: Option<usize>,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
     linuxcnc_nurbs: tooling::Nurbs,
     /// LinuxCNC: the X and Y of the NURBS list's last control point, where a G5.2 block of
@@ -1540,6 +1557,10 @@ impl Checker {
             linuxcnc_double: Default::default(),
             linuxcnc_cycle_bottom: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
+            linuxcnc_rate: Some(Dec::ZERO),
+            linuxcnc_feed_saved: None,
+            linuxcnc_feed_restored_at: None,
+            linuxcnc_m72_dropped: None,
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
@@ -2193,6 +2214,7 @@ impl Checker {
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_plane_after_call(b, false);
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
+                self.linuxcnc_rate = None;
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
@@ -2484,6 +2506,12 @@ impl Checker {
         {
             self.linuxcnc_distance_modal(b, before.incremental);
         }
+        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare)
+        if self.config.family == Family::LinuxCnc
+            && (self.letters & bit(b'M') != 0 || self.linuxcnc_feed_saved.is_some())
+        {
+            self.linuxcnc_feed_restore(b);
+        }
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
         // the tests', holds them to leaving it as they found it)
@@ -2553,6 +2581,7 @@ impl Checker {
             self.linuxcnc_compensation_unknown = true;
             self.linuxcnc_plane_after_call(b, calls);
             self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
+            self.linuxcnc_rate = None;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");

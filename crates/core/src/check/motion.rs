@@ -74,7 +74,9 @@ impl Checker {
         let feed_motion = (matches!(self.machine.state.motion, Some(1 | 2 | 3 | 6)) || lathe_feed)
             && self.machine.state.cycle.is_none()
             && !moved.is_empty()
-            && !not_a_feed_move;
+            && !not_a_feed_move
+            && !self.linuxcnc_spline(facts)
+            && self.linuxcnc_m72_dropped != Some(self.stats.blocks);
         // (the block's own motion and feed where its M02/M30 reset them after its words)
         let no_feed = match self.machine.ended_from.as_deref() {
             None => {
@@ -194,6 +196,25 @@ impl Checker {
             let runs = !moved.is_empty() || facts.has(2) || facts.has(3);
             self.arc(b, before, runs);
         }
+    }
+
+    /// LinuxCNC: a block of G5 (5 in `facts`) or G5.1 (a decimal code). Its axis words are the spline's, not the motion in force's (convert_spline sets
+    /// no motion mode), and its feed is convert_spline's to check, which the spline's own
+    /// refusals follow (`linuxcnc_plane_refusal`: under G94 a zero feed rate, under G93 a
+    /// block without F, under G95 nothing). TG401, TG402 and the zero-speed refusal judged
+    /// the G1 in force instead (review 56c, F7: `G1 X2 F10` / `G95` / `G5.1 X1 Y1 I1 J1`
+    /// runs in `rs274 -g`; after an M72 the checker does not follow, `G93 G1 X1 F100` /
+    /// `o1 if [1]` / `M72` / `o1 endif` / `G5 ...` was refused under a G93 not in force).
+    fn linuxcnc_spline(&self, facts: &Facts<'_>) -> bool {
+        self.config.family == Family::LinuxCnc
+            && (facts.has(5) || self.values.decimal_g)
+            && facts.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'G'
+                    && self.readable.get(i).copied().flatten().is_some_and(|v| {
+                        let tenths = v.to_f64() * 10.0;
+                        (tenths - 50.0).abs() < 1e-6 || (tenths - 51.0).abs() < 1e-6
+                    })
+            })
     }
 
     /// A Fanuc or Haas decimal code of group 00 that takes the block's axis words (the

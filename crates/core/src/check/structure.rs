@@ -3,6 +3,7 @@
 //! block that cannot be read.
 
 use super::{chars, BlockView, Checker, Colons, SubFile, Unreadable, Word};
+use crate::decimal::Dec;
 use crate::dialect;
 use crate::lex::{blank, Family};
 use crate::rules::Rule;
@@ -352,6 +353,10 @@ impl Checker {
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+        self.linuxcnc_rate = Some(Dec::ZERO);
+        self.linuxcnc_feed_saved = None;
+        self.linuxcnc_feed_restored_at = None;
+        self.linuxcnc_m72_dropped = None;
         self.linuxcnc_nurbs = super::tooling::Nurbs::default();
         self.linuxcnc_nurbs_last = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
@@ -2802,6 +2807,179 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC, a block with an M word, or any while a save is followed: M70/M73 save the
+    /// feed mode, rs274's feed rate and the speed, M72 restores them (interp_convert.cc
+    /// `save_settings`, `restore_settings`, `gen_settings`; review 56c, F1-F9). rs274 2.9.0
+    /// (the Debian build, git f1270d6ed7) restores by running one block: ` F%.1f` of the saved
+    /// rate where it differs from the rate in force, ` S%.0f` of the saved speed where it
+    /// differs, and the G code of each modal group that differs, the feed mode among them;
+    /// the block runs in rs274's order, the feed mode first (a G94 or G95 zeroes the rate,
+    /// `convert_feed_mode`), then the F (under G94 or G95 only: `execute_block`). So where
+    /// the saved mode is the one in force, the rate after is the saved one; where a G94 or
+    /// G95 is restored from another mode, the saved rate where it differs from the rate in
+    /// force, zero where it is the same (`G94 F100` / `M70` / `G93` / `M72` / `G1 X1` is
+    /// "Cannot do g1 with zero feed rate"); a G93 restored leaves the rate and each block
+    /// gives its F. The speed after is the saved one. The M70's or M72's own G93-G95, F and
+    /// S run before it (LinuxCNC G-code overview, "G-code Order of Execution"). That restore
+    /// block takes the place of the M72's in rs274 2.9.0: where it surely runs (the feed
+    /// mode, the rate or the speed differ) the M72 block's motion does not
+    /// (`linuxcnc_m72_dropped`; review 56c, F5).
+    ///
+    /// Followed only where nothing is guessed: the M70 and the M72 both run by the main
+    /// program where they stand (no condition, loop or body: a loop's second turn saves
+    /// again, F6, F8), the feed mode known at both (no call, no G93-G95 in a condition
+    /// between, F9), no G20/G21 between (it converts rs274's rate), no definition read
+    /// between, no G or M code written by a parameter in either block. A rate or speed not
+    /// known (an F of a parameter, a G93 move's length times F, a call: F1-F4), or one
+    /// `%.1f`/`%.0f` would round, leaves the F or the S after the M72 unknown wherever the
+    /// restore could write it. Elsewhere an M72 leaves the feed mode and feed as the lines
+    /// give them, and a spline's feed is not judged until the next G93-G95
+    /// (`linuxcnc_mode_restored`).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_feed_restore(&mut self, b: &BlockView<'_>) {
+        if self.linuxcnc_dead() {
+            return;
+        }
+        let mut m7 = None;
+        let mut unread = false;
+        let mut units = false;
+        let mut mode_set = false;
+        let mut zeroed = false;
+        let mut f_at = None;
+        for (i, w) in b.words.iter().enumerate() {
+            let code = || {
+                if !w.expression.is_empty() || !w.index.is_empty() {
+                    return None;
+                }
+                std::str::from_utf8(w.number).ok()?.parse::<f64>().ok()
+            };
+            match (w.letter, code()) {
+                (b'M', Some(m @ (70.0 | 71.0 | 72.0 | 73.0))) => m7 = Some(m as u8),
+                (b'G', Some(20.0 | 21.0)) => units = true,
+                (b'G', Some(g @ (93.0 | 94.0 | 95.0))) => {
+                    mode_set = true;
+                    zeroed |= g != 93.0;
+                }
+                (b'G' | b'M', None) => unread = true,
+                (b'F', _) if f_at.is_none() => f_at = Some(i),
+                _ => {}
+            }
+        }
+        let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
+        if units || unread || !in_order {
+            self.linuxcnc_feed_saved = None;
+        }
+        let Some(m7) = m7.filter(|_| in_order && !unread) else {
+            return;
+        };
+        let state = &self.machine.state;
+        let mode_known = mode_set || !self.linuxcnc_mode_unsure && !self.linuxcnc_mode_restored;
+        // rs274's rate where the M code runs: the block's G94/G95 and F before it
+        let mut rate = self.linuxcnc_rate;
+        if zeroed {
+            rate = Some(Dec::ZERO);
+        }
+        if let Some(at) = f_at.filter(|_| state.feed_mode != 93) {
+            rate = self.readable.get(at).copied().flatten();
+        }
+        let speed = (!state.is_unknown(b'S')).then(|| state.speed.unwrap_or(Dec::ZERO));
+        let now = FeedSaved {
+            mode: state.feed_mode,
+            rate,
+            speed,
+        };
+        match m7 {
+            70 | 73 => self.linuxcnc_feed_saved = mode_known.then_some(now),
+            72 if mode_known && matches!(self.linuxcnc_saved, Saved::Valid(_)) => {
+                if let Some(saved) = self.linuxcnc_feed_saved {
+                    self.linuxcnc_feed_restored(saved, now);
+                    // (a G93 move of the block, where it runs: its length times F)
+                    if self.machine.state.feed_mode == 93
+                        && f_at.is_some()
+                        && self.linuxcnc_m72_dropped != Some(self.stats.blocks)
+                    {
+                        self.linuxcnc_rate = None;
+                        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Unknown;
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
+    /// state is `now`, its restore applied.
+    fn linuxcnc_feed_restored(&mut self, saved: FeedSaved, now: FeedSaved) {
+        use super::tooling::LinuxCncFeed;
+        // (the value ` F%.1f` or ` S%.0f` writes, where it writes the same number)
+        let written = |v: Dec, scale: i128| {
+            v.checked_mul(Dec::from_int(scale))
+                .is_some_and(Dec::is_whole)
+                .then_some(v)
+        };
+        let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
+        // (the restore surely runs a block of its own: the M72's motion does not run)
+        if saved.mode != now.mode
+            || differs(saved.rate, now.rate) == Some(true)
+            || differs(saved.speed, now.speed) == Some(true)
+        {
+            self.linuxcnc_m72_dropped = Some(self.stats.blocks);
+        }
+        // rs274's rate after the restore, where known: Some(Some(v)); Some(None): not known;
+        // None: a G93 restored, each block gives its F
+        let rate: Option<Option<Dec>> = if saved.mode == 93 {
+            None
+        } else if saved.mode == now.mode {
+            Some(saved.rate.and_then(|v| written(v, 10)))
+        } else {
+            Some(match (saved.rate, now.rate) {
+                (Some(s), _) if s.is_zero() => Some(Dec::ZERO),
+                (Some(s), Some(r)) if s == r => Some(Dec::ZERO),
+                (Some(s), Some(_)) => written(s, 10),
+                _ => None,
+            })
+        };
+        let state = &mut self.machine.state;
+        state.feed_mode = saved.mode;
+        match saved.speed.and_then(|v| written(v, 1)) {
+            Some(v) => {
+                state.speed = Some(v);
+                state.unknown &= !crate::modal::bit(b'S');
+            }
+            None => state.unknown |= crate::modal::bit(b'S'),
+        }
+        let after = match rate {
+            // (each G93 block gives its F; rs274's rate is as the M72's block left it)
+            None => {
+                if now.mode != 93 {
+                    state.feed = None;
+                    state.unknown &= !crate::modal::bit(b'F');
+                }
+                now.rate
+            }
+            Some(Some(v)) => {
+                state.feed = (!v.is_zero()).then_some(v);
+                state.unknown &= !crate::modal::bit(b'F');
+                Some(v)
+            }
+            Some(None) => {
+                state.unknown |= crate::modal::bit(b'F');
+                None
+            }
+        };
+        // (the block's own G94/G95 and F are in `now`: tooling reads them no more)
+        self.linuxcnc_rate = after;
+        self.linuxcnc_feed_rate = match after {
+            Some(v) if v.is_zero() => LinuxCncFeed::Zero,
+            Some(_) => LinuxCncFeed::Set,
+            None => LinuxCncFeed::Unknown,
+        };
+        self.linuxcnc_mode_restored = false;
+        self.linuxcnc_mode_unsure = false;
+        self.linuxcnc_feed_restored_at = Some(self.stats.blocks);
+    }
+
     /// LinuxCNC: a subroutine file (its one definition, called from another file): the
     /// refusals of its body that hold at any call ([`CallRefusal`] not of the caller's mode:
     /// a G53 under its own G91, an M72 with nothing saved in its context, a `break` or
@@ -4516,6 +4694,16 @@ impl Saved {
             _ => Saved::Maybe,
         };
     }
+}
+
+/// LinuxCNC: what the main program's M70 or M73 saved of the feed
+/// ([`Checker::linuxcnc_feed_restore`]), or the state an M72 restores from: the feed mode,
+/// rs274's feed rate and the speed (None: not known).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct FeedSaved {
+    mode: i64,
+    rate: Option<Dec>,
+    speed: Option<Dec>,
 }
 
 /// LinuxCNC: the distance mode through the open definition's body, read in its order
@@ -6639,6 +6827,81 @@ mod tests {
                 .filter(|f| f.rule == Rule::ArcCentreMissing)
                 .map(|f| f.line)
                 .collect();
+            assert_eq!(got, expected, "{body}");
+        }
+    }
+
+    /// Review 56c (lcnc57): M72 restores the feed mode, rs274's feed rate and the speed M70
+    /// saved as rs274 2.9.0 does (`Checker::linuxcnc_feed_restore`), where both lines run
+    /// where they stand and each value is known; else the feed is left unknown or as the
+    /// lines give it, never guessed. Each program's first feed finding (line and rule) as
+    /// `rs274 -g` stops at that line, or None: rs274 runs it to its M2, or the checker
+    /// cannot know (marked "unknown": rs274 may stop or run).
+    #[test]
+    fn linuxcnc_m72_restores_the_feed_m70_saved_as_rs274() {
+        let head = "G21 G90 G17 G94\nG0 X0 Y0 Z0\n";
+        let no_feed = Some((0, Rule::NoFeedRate));
+        let refused = Some((0, Rule::LinuxCncRefuses));
+        let cases: &[(&str, Option<(usize, Rule)>)] = &[
+            // the same mode: the saved rate ("Cannot do g1 with zero feed rate")
+            ("M70\nF100\nM72\nG1 X1", no_feed),
+            ("F100\nM70\nF200\nM72\nG1 X1", None),
+            // G94 restored from G93 or G95: zero where the rate is the same (F1), the saved
+            // rate where it differs (F3)
+            ("F100\nM70\nG93\nF100\nM72\nG1 X2", no_feed),
+            ("F100\nM70\nG95 F100\nM72\nG1 X1", no_feed),
+            ("F100\nM70\nG95 F0.1\nG93\nM72\nG1 X3", None),
+            ("F100\nM70\nG95 F0.1\nM72 G93\nG1 X1", None),
+            ("F100\nM70\nG95\nM72\nG1 X1", None),
+            // a spline after it (F2): rs274's "Cannot make arc with zero feed rate"
+            ("F100\nM70\nG95 F100\nM72\nG5 X3 Y2 I1 J0 P1 Q1", refused),
+            ("F100\nM70\nG95 F0.1\nG93\nM72\nG5 X3 Y2 I1 J0 P1 Q1", None),
+            // G93 restored: each block its F ("F word missing with inverse time g1 move")
+            (
+                "G93\nM70\nG94 F100\nM72\nG1 X1 F10\nG1 X2",
+                Some((0, Rule::InverseTimeWithoutFeed)),
+            ),
+            // the speed saved, under G95 ("Cannot feed with zero spindle speed ...")
+            ("G95 F0.1\nM70\nS1000 M3\nM72\nG1 X1", refused),
+            ("S1000 M3\nG95 F0.1\nM70\nS0\nM72\nG1 X1", None),
+            // a G93 G1's rate, its length times F, where exact (F1): the same, zero; another,
+            // the saved F
+            ("F100\nM70\nG93\nG1 X1 F100\nM72\nG1 X2", no_feed),
+            ("F100\nM70\nG93\nG1 X2 F50\nM72\nG1 X3", no_feed),
+            ("F100\nM70\nG93\nG1 X1 F10\nM72\nG1 X2", None),
+            // not known: a G93 move of two axes, an F the checker does not evaluate (F1, F4);
+            // rs274 stops on each, the checker leaves the F unknown
+            ("F100\nM70\nG93\nG1 X3 Y4 F20\nM72\nG1 X2", None),
+            ("F[50*2]\nM70\nG95 F100\nM72\nG1 X1", None),
+            ("F#<_r>\nM70\nG95 F100\nM72\nG1 X1", None),
+            // a save in a loop: its last turn's (F6, rs274 runs); a restore in a known-true
+            // if or after a G93-G95 in one (F8, F9): not followed
+            ("o1 repeat [2]\nM70\nF100\no1 endrepeat\nM72\nG1 X1", None),
+            (
+                "o1 if [1]\nG95\no1 endif\nM70\nG93\nM72\nG5.1 X1 Y1 I1 J1",
+                None,
+            ),
+            // an M72 beside a motion: the restore's block takes its place where it runs
+            // (F5), and where nothing differs the motion runs ("zero feed rate")
+            ("M70\nG1 X1 F100\nM72 G1 X1", None),
+            ("F100\nM70\nG93\nM72 G1 X1", None),
+            ("M70\nM72 G1 X1", no_feed),
+            // a G5/G5.1 under G95 is no feed move of the G1 in force (F7)
+            ("S100 M3\nG1 X2 F10\nG95\nG5.1 X1 Y1 I1 J1", None),
+        ];
+        let judged = [
+            Rule::NoFeedRate,
+            Rule::InverseTimeWithoutFeed,
+            Rule::LinuxCncRefuses,
+        ];
+        for (body, expected) in cases {
+            let text = format!("{head}{body}\nM2\n");
+            let last = 2 + body.lines().count();
+            let got = check(of_family(Family::LinuxCnc), &text)
+                .into_iter()
+                .find(|f| judged.contains(&f.rule))
+                .map(|f| (f.line, f.rule));
+            let expected = expected.map(|(_, rule)| (last, rule));
             assert_eq!(got, expected, "{body}");
         }
     }

@@ -714,7 +714,7 @@ impl Checker {
         }
         if let Some((given, f_at)) = fast.filter(|_| !cfg!(debug_assertions)) {
             if f_at.is_some() {
-                self.linuxcnc_feed_word(f_at, given.as_slice(), facts);
+                self.linuxcnc_feed_word(f_at, given.as_slice(), facts, start);
             }
             if let Some(code) = given {
                 self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
@@ -810,8 +810,11 @@ impl Checker {
         let ms = &held_m[..n_m];
         // rs274's feed rate: a G94 or G95 zeroes it, then the block's F sets it unless G93 is
         // in force after the block (interp_execute.cc's order)
-        if codes.iter().any(|&c| c == 940 || c == 950) {
+        // (a block whose M72 restore was followed: its rate is the restore's)
+        let restored = self.linuxcnc_feed_restored_at == Some(self.stats.blocks);
+        if codes.iter().any(|&c| c == 940 || c == 950) && !restored {
             self.linuxcnc_feed_rate = LinuxCncFeed::Zero;
+            self.linuxcnc_rate = self.linuxcnc_runs_in_order().then_some(Dec::ZERO);
         }
         // the feed mode known again where the main program sets it unconditionally; set in
         // a condition or loop it may or may not be in force after it (review 16c, 17)
@@ -833,11 +836,13 @@ impl Checker {
         // (an M72 restores the feed mode M70 or M73 saved, after the block's G93-G95: the
         // LinuxCNC G-code overview, "G-code Order of Execution"; which one the checker does
         // not follow, so a spline's feed waits for the next G93-G95: review 56c, F2, F9)
-        if ms.contains(&72) {
+        if ms.contains(&72) && !restored {
             self.linuxcnc_mode_restored = true;
         }
         let f_at = first[usize::from(b'F' - b'A')] as usize;
-        self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts);
+        if !restored {
+            self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts, start);
+        }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
         }
@@ -1052,7 +1057,11 @@ impl Checker {
                         start.plane,
                     )
                 })
-                .or_else(|| self.linuxcnc_plane_refusal(&words, runs))
+                // (not of an M72's motion its restore block takes the place of)
+                .or_else(|| {
+                    self.linuxcnc_plane_refusal(&words, runs)
+                        .filter(|_| self.linuxcnc_m72_dropped != Some(self.stats.blocks))
+                })
         } else {
             None
         };
@@ -1197,7 +1206,13 @@ impl Checker {
     /// rs274's feed rate after the block's first F word (`at`, its place; None for a block
     /// without one), its G codes in tenths `codes`.
     #[inline]
-    fn linuxcnc_feed_word(&mut self, at: Option<usize>, codes: &[i64], facts: &Facts<'_>) {
+    fn linuxcnc_feed_word(
+        &mut self,
+        at: Option<usize>,
+        codes: &[i64],
+        facts: &Facts<'_>,
+        start: &Before,
+    ) {
         let Some(at) = at else {
             return;
         };
@@ -1205,12 +1220,14 @@ impl Checker {
             // an F sets rs274's feed rate under G94 or G95, not under G93: which, the checker
             // does not know (review 19)
             self.linuxcnc_feed_rate = LinuxCncFeed::Unknown;
+            self.linuxcnc_rate = None;
         } else if self.machine.state.feed_mode != 93 {
             self.linuxcnc_feed_rate = match self.readable[at] {
                 Some(f) if f.is_zero() => LinuxCncFeed::Zero,
                 Some(_) => LinuxCncFeed::Set,
                 None => LinuxCncFeed::Unknown,
             };
+            self.linuxcnc_rate = self.readable[at].filter(|_| self.linuxcnc_runs_in_order());
         } else {
             // under G93 a G1, G2 or G3 move sets it to its length times F, 0.1 for a move of
             // no length (interp_inverse.cc inverse_time_rate_straight, _arc: review 17, rs274
@@ -1222,12 +1239,64 @@ impl Checker {
                 },
             );
             if matches!(motion, Some(10 | 20 | 30)) {
+                self.linuxcnc_rate = (motion == Some(10) && self.linuxcnc_runs_in_order())
+                    .then(|| self.linuxcnc_g93_rate(start, self.readable[at]))
+                    .flatten();
                 self.linuxcnc_feed_rate = match self.readable[at] {
                     Some(f) if !f.is_zero() => LinuxCncFeed::Set,
                     _ => LinuxCncFeed::Unknown,
                 };
             }
         }
+    }
+
+    /// LinuxCNC: rs274's feed rate after a G93 G1 from `start` at `f`, where it is exact:
+    /// interp_inverse.cc `inverse_time_rate_straight` sets it to the move's length
+    /// (interp_find.cc `find_straight_length`: X Y Z where one of them moves) times F, at
+    /// least 0.1, from the current point (the programmed one under compensation). Worked out
+    /// only where no double rounds it: one of X Y Z moves, between whole numbers known
+    /// exactly, at a whole F, without compensation (review 56c, F1: `G93` / `G1 X1 F100`
+    /// leaves 100, which M72 compares with the saved rate). None elsewhere: not known.
+    #[cold]
+    fn linuxcnc_g93_rate(&self, start: &Before, f: Option<Dec>) -> Option<Dec> {
+        const EXACT: i64 = 1 << 26;
+        let small = |v: Dec| v.is_whole() && v.trunc().abs() < EXACT;
+        let f = f.filter(|&f| small(f) && !f.is_zero() && f.trunc() > 0)?;
+        let state = &self.machine.state;
+        if start.compensation != 40
+            || state.compensation != 40
+            || self.linuxcnc_dynamic_compensation
+            || self.linuxcnc_compensation_unknown
+        {
+            return None;
+        }
+        let mut length = None;
+        for letter in [b'X', b'Y', b'Z'] {
+            if start.is_unknown(letter)
+                || state.is_unknown(letter)
+                || self.linuxcnc_point_unsure & bit(letter) != 0
+            {
+                return None;
+            }
+            let (s, e) = (start.axis(letter)?, state.axis(letter)?);
+            if !small(s) || !small(e) {
+                return None;
+            }
+            if s != e {
+                if length.is_some() {
+                    return None;
+                }
+                length = Some(Dec::from_int(i128::from((e.trunc() - s.trunc()).abs())));
+            }
+        }
+        length?.checked_mul(f)
+    }
+
+    /// LinuxCNC: the line runs once, where it stands, whenever the program gets there: the
+    /// main program's, outside its conditions and loops. Only there is a value it sets known
+    /// after it ([`Checker::linuxcnc_rate`]).
+    fn linuxcnc_runs_in_order(&self) -> bool {
+        self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty()
     }
 
     /// An M98 with a word before it, or a word other than P and L after it
