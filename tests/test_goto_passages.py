@@ -296,6 +296,16 @@ def findings(blocks: str) -> list[tuple[str, str, int, int]]:
     # known true or not known: the control searches for N99 and alarms (PS0128)
     (O6_HEAD + "IF [#1 EQ 0] GOTO 99 / G0 X10. / M30", [("TG118", "error", 6, 14)]),
     (O6_HEAD + "IF [#5 EQ 0] GOTO 99 / G0 X10. / M30", [("TG118", "error", 6, 14)]),
+    # review 57c, F1 (j6.nc): false on the first pass of a counting loop, true on the sixth,
+    # which alarms on every run: a jump back to the IF's block keeps TG118
+    ("#1=0 / N10 IF [#1 GE 5] GOTO 90 / G0 X[#1*10.] / #1=#1+1 / GOTO 10 / N99 G0 Z50. / M30",
+     [("TG118", "error", 4, 18)]),
+    # review 57c, F4 (p6.nc, p8q.nc): M99 P and M98 Q arrive at N10 with the values where
+    # they stand (#1=1), not those read down to it
+    ("#1=1 / M99 P10 / #1=0 / N10 IF [#1 EQ 1] GOTO 20 / M30",
+     [("TG118", "error", 6, 18)]),
+    ("#1=1 / M98 Q10 / #1=0 / M30 / N10 IF [#1 EQ 1] GOTO 20 / M99",
+     [("TG118", "error", 7, 18)]),
 ])
 def test_an_if_known_false_runs_on_with_all_it_knows(program, expected):
     """Review 56b, F7 and F8: an `IF [..] GOTO n` whose condition the known values make false

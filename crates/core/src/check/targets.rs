@@ -55,6 +55,12 @@ pub(super) struct Targets {
     /// The targets not found so far, by number: a block found later takes its own away.
     pending: std::collections::HashMap<u64, Vec<Target>>,
     count: usize,
+    /// A word of the program may bring the run back to a block with values other than those
+    /// read down to it: a GOTO to a block already read (a jump back), one whose number is
+    /// worked out, or a jump by number of a code (`M99 P`, Haas `M97 P`, `M98 Q`), which
+    /// arrives with the values where it stands (review 57c F1, F4). An IF known false on the
+    /// first pass may then be true on another: its missing target stays TG118.
+    rejoins: bool,
     /// A SINUMERIK's labels (`MARKE:`) and block numbers (`N100`, kept as written in capitals):
     /// the first and last line of each. A block number, on nearly every block of a CAM
     /// program, is kept by [`block_number_key`] in `numbers`, with no text to allocate and
@@ -466,6 +472,7 @@ impl Checker {
                 .words
                 .iter()
                 .find(|v| v.letter == *letter && v.expression.is_empty() && v.sign.is_empty());
+            self.targets.rejoins = true;
             if let Some((v, n)) = word.and_then(|v| Some((v, crate::text::digits_value(v.number)?)))
             {
                 let returns = code
@@ -492,10 +499,12 @@ impl Checker {
                 continue;
             };
             // GOTO 10 (a number, not GOTO #1 or GOTO [#1+1]), to the end of the statement
-            if tail.iter().any(|&c| !crate::lex::blank(c)) {
-                continue;
+            let n = crate::text::digits_value(digits)
+                .filter(|_| !tail.iter().any(|&c| !crate::lex::blank(c)));
+            if n.is_none_or(|n| self.targets.has(n)) {
+                self.targets.rejoins = true;
             }
-            if let Some(n) = crate::text::digits_value(digits) {
+            if let Some(n) = n {
                 let untaken = self.condition_known(&upper) == Some(false);
                 self.targets.name(Target {
                     n,
@@ -590,7 +599,7 @@ impl Checker {
             } else {
                 "FANUC: alarm PS0063"
             };
-            if t.untaken {
+            if t.untaken && !targets.rejoins {
                 let message = format!(
                     "{}: no block N{} in this program; the IF's condition is false with the \
                      values known here, so this pass goes on to the next block; a pass where \
