@@ -827,6 +827,13 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "F100\nG41.1 D2\nG18.1\nG1 X5\nM2\n", 6, "error"),
     ("G18.1 under compensation with no move before its G40",
      HEAD + "F100\nG41.1 D2\nG18.1\nG40\nG1 X5\nM2\n", 0, "accepted"),
+    # review 55c, F9 (lcnc57b): a branch that ends in `break` is no way to its `endif`
+    ("R arc after an if whose branch breaks in G19, in G18",
+     HEAD + "F100\n#<n>=0\no1 while [#<n> LT 1]\n#<n>=[#<n>+1]\nG18\no2 if [#5220 GT 5]\nG19\n"
+     "o1 break\no2 endif\nG0 X0 Y0 Z0\nG2 Y10 R10\no1 endwhile\nM2\n", 13, "error"),
+    ("R arc of X after a while left by a break in G19",
+     HEAD + "F100\n#<n>=0\no1 while [#<n> LT 1]\n#<n>=[#<n>+1]\nG18\no2 if [#5220 GT 5]\nG19\n"
+     "o1 break\no2 endif\no1 endwhile\nG0 X0 Y0 Z0\nG2 X10 R10\nM2\n", 0, "accepted"),
     # review 55c, F7 (lcnc56): a call in a branch that ran leaves the elseif after it dead,
     # but not in a loop, whose next turn takes the else
     ("J centre in an elseif after a known-true if with a call",

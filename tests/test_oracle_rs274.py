@@ -93,6 +93,8 @@ BOTH = [
     # TG412: rs274's own refusals
     # review 53, F13 (lcnc57b): the move after G18.1 under compensation
     "G1 in G18.1 under compensation with no move before",
+    # review 55c, F9 (lcnc57b): a branch left by break is no way to its endif
+    "R arc after an if whose branch breaks in G19, in G18",
     # lcnc51: a definition read again on a loop's second turn
     "a definition in a repeat [2]", "a definition in a repeat [2], called",
     "a definition in a do with a true while",
@@ -276,6 +278,7 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        # review 57d, F1; review 53, F13 (lcnc57b)
        "arc from where a dropped M72 G1 found the tool",
        "G18.1 under compensation with no move before its G40",
+       "R arc of X after a while left by a break in G19",
        # review 55c, F7: the elseif after a known-true branch with a call never runs
        "J centre in an elseif after a known-true if with a call",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known

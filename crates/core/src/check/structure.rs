@@ -985,6 +985,7 @@ impl Checker {
                     let flow = &mut self.linuxcnc_definition_flow;
                     let label = crate::statement::o_label(text);
                     let switched = linuxcnc_branch_switch(flow, text, &label);
+                    let loop_at = flow.iter().rposition(|l| *l == label);
                     let depth = flow.len();
                     linuxcnc_flow(flow, text);
                     let open = flow.len();
@@ -1000,6 +1001,7 @@ impl Checker {
                         ran: None,
                         taken: false,
                         leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
+                        loop_at,
                     };
                     self.linuxcnc_plane_flow(&mut blocks, step);
                     self.linuxcnc_plane_body_blocks = blocks;
@@ -2011,6 +2013,7 @@ impl Checker {
             }
         }
         let depth = self.linuxcnc_open_flow.len();
+        let loop_at = self.linuxcnc_open_flow.iter().rposition(|l| *l == label);
         self.linuxcnc_label_recorded(text, keyword.as_deref(), &label, (line, column));
         linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
@@ -2048,6 +2051,7 @@ impl Checker {
             ran: branch_ran,
             taken: other_branch,
             leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
+            loop_at,
         };
         self.linuxcnc_plane_flow(&mut blocks, step);
         self.linuxcnc_plane_blocks = blocks;
@@ -3171,10 +3175,18 @@ impl Checker {
     fn linuxcnc_plane_flow(&mut self, blocks: &mut Vec<PlaneBlock>, step: PlaneStep) {
         let now = self.linuxcnc_plane_now();
         if step.leaves {
-            // (a `break` or `continue` leaves its turn in this plane: one more way out of
-            // every block open, the loop's and the conditions' around it)
-            for block in blocks.iter_mut() {
-                block.ends.push(now);
+            // (a `break` or `continue` leaves its turn in this plane: one more way out of its
+            // loop and of every block around the loop; none into the conditions inside the
+            // loop around it, whose branch in hand it leaves: review 55c, F9, a branch that
+            // ends in `break` is no way to its `endif`. Its loop not found: every block)
+            let inner = step.loop_at.filter(|&at| at < blocks.len());
+            for (i, block) in blocks.iter_mut().enumerate() {
+                if inner.is_none_or(|at| i <= at) {
+                    block.ends.push(now);
+                }
+            }
+            if let (Some(_), Some(block)) = (inner, blocks.last_mut()) {
+                block.left = true;
             }
             return;
         }
@@ -3190,6 +3202,7 @@ impl Checker {
                     ends: Vec::new(),
                     has_else: false,
                     taken: false,
+                    left: false,
                 });
             }
             blocks.push(PlaneBlock {
@@ -3197,6 +3210,7 @@ impl Checker {
                 ends: Vec::new(),
                 has_else: false,
                 taken: false,
+                left: false,
             });
         } else if step.open < step.depth {
             let mut ran = step.ran;
@@ -3206,7 +3220,7 @@ impl Checker {
                 let mut ends = block.ends;
                 // (after a branch that surely ran, rs274 skips to the `endif`: the ways
                 // through are that branch's alone, its end pushed where it ended)
-                if ran != Some(false) && !block.taken {
+                if ran != Some(false) && !block.taken && !block.left {
                     ends.push(after);
                 }
                 if !block.has_else && ran != Some(true) && !block.taken {
@@ -3238,9 +3252,10 @@ impl Checker {
             let Some(block) = blocks.last_mut() else {
                 return;
             };
-            if step.ran != Some(false) && !block.taken {
+            if step.ran != Some(false) && !block.taken && !block.left {
                 block.ends.push(now);
             }
+            block.left = false;
             block.has_else |= step.is_else;
             block.taken |= step.taken;
             // (after a branch that surely ran the others are skipped: the plane stays)
@@ -4575,6 +4590,8 @@ pub(super) struct PlaneStep {
     ran: Option<bool>,
     taken: bool,
     leaves: bool,
+    /// For a `break` or `continue`: the depth of the loop it leaves (its label's), where found.
+    loop_at: Option<usize>,
 }
 
 /// LinuxCNC: the plane where a line stands: the modal state's G17/G18/G19, whether a
@@ -4608,6 +4625,9 @@ pub(super) struct PlaneBlock {
     ends: Vec<PlaneAt>,
     has_else: bool,
     taken: bool,
+    /// The branch in hand left its loop's turn (a `break` or `continue` of the loop around
+    /// it): no way through it reaches the block's next branch or its close.
+    left: bool,
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand
