@@ -6962,6 +6962,11 @@ mod tests {
             ("F0.04\nM70\nF1\nM72\nG1 X1", no_feed),
             ("F0.05\nM70\nG95 F0.1\nM72\nG1 X1", None),
             ("F0.04\nM70\nF0.04\nM72\nG1 X1", None),
+            // a G93 G1 of no length leaves rs274's rate 0.1 (review 57d, F6)
+            ("F0.1\nM70\nG93 G1 X0 F100\nM72\nG1 X3", no_feed),
+            ("F0.1\nM70\nG93 G1 F50\nM72\nG1 X3", no_feed),
+            ("F100\nM70\nG93 G1 X0 F100\nM72\nG1 X3", None),
+            ("F0.1\nM70\nG93 G1 X0 A1 F100\nM72\nG1 X3", None),
             ("F#<_r>\nM70\nG95 F100\nM72\nG1 X1", None),
             // a save in a loop: its last turn's (F6, rs274 runs); a restore in a known-true
             // if or after a G93-G95 in one (F8, F9): not followed

@@ -1287,13 +1287,13 @@ impl Checker {
     /// (interp_find.cc `find_straight_length`: X Y Z where one of them moves) times F, at
     /// least 0.1, from the current point (the programmed one under compensation). Worked out
     /// only where no double rounds it: one of X Y Z moves, between whole numbers known
-    /// exactly, at a whole F, without compensation (review 56c, F1: `G93` / `G1 X1 F100`
+    /// exactly, at a whole F, or none moves (0.1), without compensation (review 56c, F1: `G93` / `G1 X1 F100`
     /// leaves 100, which M72 compares with the saved rate). None elsewhere: not known.
     #[cold]
     fn linuxcnc_g93_rate(&self, start: &Before, f: Option<Dec>) -> Option<Dec> {
         const EXACT: i64 = 1 << 26;
         let small = |v: Dec| v.is_whole() && v.trunc().abs() < EXACT;
-        let f = f.filter(|&f| small(f) && !f.is_zero() && f.trunc() > 0)?;
+        let f = f.filter(|&f| small(f) && !f.is_zero() && f.trunc() > 0);
         let state = &self.machine.state;
         if start.compensation != 40
             || state.compensation != 40
@@ -1321,7 +1321,17 @@ impl Checker {
                 length = Some(Dec::from_int(i128::from((e.trunc() - s.trunc()).abs())));
             }
         }
-        length?.checked_mul(f)
+        match length {
+            Some(length) => length.checked_mul(f?),
+            // (no axis moves: `MAX(0.1, length * F)` is 0.1 at any F; review 57d, F6, `G93
+            // G1 X0 F100` where the tool is at X0; an axis of A B C U V W written, its length
+            // not followed)
+            None => (self.letters & b"ABCUVW".iter().fold(0, |m, &l| m | 1 << (l - b'A')) == 0)
+                .then_some(Dec {
+                    mantissa: 1,
+                    scale: 1,
+                }),
+        }
     }
 
     /// LinuxCNC: the line runs once, where it stands, whenever the program gets there: the
