@@ -813,6 +813,27 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "F100\nM70\nG93\nM72 G1 X1\nM2\n", 0, "accepted"),
     ("spline beside an M72 that restores G94 F100",
      HEAD + "F100\nM70\nG95 F100\nM72 G5 X3 Y2 I1 J0 P1 Q1\nM2\n", 0, "accepted"),
+    # review 57d, F1, F6 (lcnc57b): the motion of a dropped M72 block does not move the
+    # tool; a saved rate the restore writes is rounded as ` F%.1f` writes it
+    ("arc from where a dropped M72 G1 found the tool, radius differs",
+     HEAD + "F100\nM70\nG93\nM72 G1 X1\nG94 G2 X2 Y0 I0.5 J0 F100\nM2\n", 7, "error"),
+    ("arc from where a dropped M72 G1 found the tool",
+     HEAD + "F100\nM70\nG93\nM72 G1 X1\nG94 G2 X2 Y0 I1 J0 F100\nM2\n", 0, "accepted"),
+    ("G1 after M72 restores F0.04 written F0.0",
+     HEAD + "F0.04\nM70\nG95 F1\nM72\nG1 X1\nM2\n", 7, "error"),
+    # review 53, F13 (lcnc57b): G17.1-G19.1 under compensation with no compensated move held
+    # stops rs274 at the next move only
+    ("G1 in G18.1 under compensation with no move before",
+     HEAD + "F100\nG41.1 D2\nG18.1\nG1 X5\nM2\n", 6, "error"),
+    ("G18.1 under compensation with no move before its G40",
+     HEAD + "F100\nG41.1 D2\nG18.1\nG40\nG1 X5\nM2\n", 0, "accepted"),
+    # review 55c, F9 (lcnc57b): a branch that ends in `break` is no way to its `endif`
+    ("R arc after an if whose branch breaks in G19, in G18",
+     HEAD + "F100\n#<n>=0\no1 while [#<n> LT 1]\n#<n>=[#<n>+1]\nG18\no2 if [#5220 GT 5]\nG19\n"
+     "o1 break\no2 endif\nG0 X0 Y0 Z0\nG2 Y10 R10\no1 endwhile\nM2\n", 13, "error"),
+    ("R arc of X after a while left by a break in G19",
+     HEAD + "F100\n#<n>=0\no1 while [#<n> LT 1]\n#<n>=[#<n>+1]\nG18\no2 if [#5220 GT 5]\nG19\n"
+     "o1 break\no2 endif\no1 endwhile\nG0 X0 Y0 Z0\nG2 X10 R10\nM2\n", 0, "accepted"),
     # review 55c, F7 (lcnc56): a call in a branch that ran leaves the elseif after it dead,
     # but not in a loop, whose next turn takes the else
     ("J centre in an elseif after a known-true if with a call",

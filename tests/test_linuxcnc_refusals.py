@@ -887,6 +887,42 @@ def test_a_plane_of_the_uvw_axes_under_compensation_is_refused_at_its_code(tmp_p
     assert errors(program("G17.1\nG0 X1\nG17")) == []
 
 
+@pytest.mark.parametrize("body, line, message", [
+    ("G41.1 D1\nG18.1\nG1 X5", 5, "BUG: Invalid plane for cutter compensation"),
+    ("G42.1 D1\nG4 P1\nG19.1\nM5\nX5", 7, "BUG: Invalid plane for cutter compensation"),
+    ("G41.1 D1\nG18.1 G1 X5", 4, "BUG: Invalid plane for cutter compensation"),
+    ("G41.1 D1\nG18.1\nG17.1\nG17", 6, "Cannot change planes with cutter radius compensation on"),
+    # a flow the checker does not follow: refused there, not lost
+    ("G41.1 D1\nG18.1\no1 if [#5220 GT 0]\nG1 X5\no1 endif\nG40", 5,
+     "under cutter radius compensation (rs274ngc): the checker does not follow"),
+])
+def test_a_plane_of_the_uvw_axes_with_no_compensated_move_held_stops_at_the_next_move(
+        tmp_path, body, line, message):
+    """Review 53, F13: where no move came since the compensation turned on, rs274 holds no
+    compensated move, lets G17.1-G19.1 pass and stops only at the next move (a G0 with no
+    axis word too) or a change to G17-G19; a G40 or the program's end before it runs."""
+    text = program(body)
+    found = [(f.rule, f.line, f.column, f.message) for f in check_text(
+        text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(r, n) for r, n, _, _ in found] == [("TG412", line)], found
+    assert message in found[0][3]
+    said = rs274_output(tmp_path, text)
+    if said and "does not follow" not in message:
+        assert message.split(" (")[0] in said, said
+
+
+@pytest.mark.parametrize("body", [
+    "G41.1 D1\nG18.1",
+    "G41.1 D1\nG18.1\nG4 P1\nG40\nG1 X5",
+    "G41.1 D1\nG18.1\nG1 G40 X3",
+    "G41.1 D1\nG19.1\nG17.1\nG40\nG17",
+])
+def test_a_plane_of_the_uvw_axes_with_no_move_under_compensation_runs(tmp_path, body):
+    """Review 53, F13: no move between the compensation's start and its G40 (or the end):
+    rs274 runs the program, and the checker refuses nothing."""
+    clean_on_both(tmp_path, program(body))
+
+
 @pytest.mark.parametrize("body, line, column, message", [
     ("G41.1 D1\nG1 X5\nX1 G18", 5, 4, "Cannot change planes with cutter radius compensation on"),
     ("G18\nG41.1 D1\nG1 X5\nG17 G1 X4", 6, 1,

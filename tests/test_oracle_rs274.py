@@ -86,7 +86,15 @@ BOTH = [
     "G1 after M72 restores G94 from G93 at the same rate",
     "G1 beside an M72 with nothing to restore",
     "G1 after M72 restores G94 from a G93 move at the same rate",
+    # review 57d, F6 (lcnc57b): ` F%.1f` writes the saved F0.04 as F0.0
+    "G1 after M72 restores F0.04 written F0.0",
+    # review 57d, F1 (lcnc57b): the dropped M72 G1 leaves the tool where it was
+    "arc from where a dropped M72 G1 found the tool, radius differs",
     # TG412: rs274's own refusals
+    # review 53, F13 (lcnc57b): the move after G18.1 under compensation
+    "G1 in G18.1 under compensation with no move before",
+    # review 55c, F9 (lcnc57b): a branch left by break is no way to its endif
+    "R arc after an if whose branch breaks in G19, in G18",
     # lcnc51: a definition read again on a loop's second turn
     "a definition in a repeat [2]", "a definition in a repeat [2], called",
     "a definition in a do with a true while",
@@ -267,6 +275,10 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "G1 after M72 restores G94 F100 from G93", "G1 after M72 beside G93 restores G94 F100",
        "G5.1 in G95 after a G1", "G1 beside an M72 that restores G94",
        "spline beside an M72 that restores G94 F100",
+       # review 57d, F1; review 53, F13 (lcnc57b)
+       "arc from where a dropped M72 G1 found the tool",
+       "G18.1 under compensation with no move before its G40",
+       "R arc of X after a while left by a break in G19",
        # review 55c, F7: the elseif after a known-true branch with a call never runs
        "J centre in an elseif after a known-true if with a call",
        # review 55c, F3, F4: a G code by an expression, or a parameter not known

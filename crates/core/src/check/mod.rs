@@ -998,6 +998,16 @@ pub struct Checker {
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
+    /// LinuxCNC: the last block (its count in `stats.blocks`) of an unbroken run from the one
+    /// that turned cutter compensation on, each read in order by the main program with no
+    /// axis word and no motion code: rs274 holds no compensated move yet, so a G17.1-G19.1
+    /// there is only refused at the next move (review 53, F13).
+    linuxcnc_compensation_quiet: Option<usize>,
+    /// LinuxCNC: the line of a G17.1-G19.1 let pass under cutter compensation
+    /// (`linuxcnc_compensation_quiet`), while the compensation and that plane hold: each
+    /// move is refused, and where the checker stops following the program (a call, a flow
+    /// it does not follow) it refuses there ([`Checker::linuxcnc_uvw_unfollowed`]).
+    linuxcnc_uvw_let_pass: Option<usize>,
     /// LinuxCNC: G17.1, G18.1 or G19.1 (a plane of U V W, decimal codes the modal state
     /// leaves out) in force, where rs274 draws no arc and no spline (TG412).
     linuxcnc_uvw_plane: bool,
@@ -1564,6 +1574,8 @@ impl Checker {
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
+            linuxcnc_compensation_quiet: None,
+            linuxcnc_uvw_let_pass: None,
             linuxcnc_uvw_plane: false,
             linuxcnc_plane_unknown: false,
             linuxcnc_plane_blocks: Vec::new(),
@@ -2211,6 +2223,7 @@ impl Checker {
                 // a subprogram or the blocks jumped over may set another pole
                 self.polar = polar::Polar::default();
                 self.linuxcnc_spindle_unknown = true;
+                self.linuxcnc_uvw_unfollowed(b);
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_plane_after_call(b, false);
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
@@ -2510,7 +2523,7 @@ impl Checker {
         if self.config.family == Family::LinuxCnc
             && (self.letters & bit(b'M') != 0 || self.linuxcnc_feed_saved.is_some())
         {
-            self.linuxcnc_feed_restore(b);
+            self.linuxcnc_feed_restore(b, &before);
         }
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
@@ -2578,6 +2591,7 @@ impl Checker {
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.polar = polar::Polar::default();
             self.linuxcnc_spindle_unknown = true;
+            self.linuxcnc_uvw_unfollowed(b);
             self.linuxcnc_compensation_unknown = true;
             self.linuxcnc_plane_after_call(b, calls);
             self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;

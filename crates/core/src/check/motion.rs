@@ -205,16 +205,24 @@ impl Checker {
     /// the G1 in force instead (review 56c, F7: `G1 X2 F10` / `G95` / `G5.1 X1 Y1 I1 J1`
     /// runs in `rs274 -g`; after an M72 the checker does not follow, `G93 G1 X1 F100` /
     /// `o1 if [1]` / `M72` / `o1 endif` / `G5 ...` was refused under a G93 not in force).
+    /// And a NURBS point (a G5.2 block, or a point after it, rs274's motion G5.2): its feed
+    /// is TG412's "Cannot make a NURBS with 0 feedrate" (review 57d, F5: `G1 X2 F10` / `G95`
+    /// / `G5.2 X1 Y1 P1 L3` / `X2 Y2 P1` / ... / `G5.3` runs).
     fn linuxcnc_spline(&self, facts: &Facts<'_>) -> bool {
         self.config.family == Family::LinuxCnc
-            && (facts.has(5) || self.values.decimal_g)
-            && facts.words.iter().enumerate().any(|(i, w)| {
-                w.letter == b'G'
-                    && self.readable.get(i).copied().flatten().is_some_and(|v| {
-                        let tenths = v.to_f64() * 10.0;
-                        (tenths - 50.0).abs() < 1e-6 || (tenths - 51.0).abs() < 1e-6
-                    })
-            })
+            && (self.linuxcnc_motion == super::tooling::LinuxCncMotion::Known(Some(52))
+                || (facts.has(5) || self.values.decimal_g) && self.linuxcnc_g5_or_g51(facts))
+    }
+
+    /// [`Checker::linuxcnc_spline`]: a G5 or G5.1 among the block's G words.
+    fn linuxcnc_g5_or_g51(&self, facts: &Facts<'_>) -> bool {
+        facts.words.iter().enumerate().any(|(i, w)| {
+            w.letter == b'G'
+                && self.readable.get(i).copied().flatten().is_some_and(|v| {
+                    let tenths = v.to_f64() * 10.0;
+                    (tenths - 50.0).abs() < 1e-6 || (tenths - 51.0).abs() < 1e-6
+                })
+        })
     }
 
     /// A Fanuc or Haas decimal code of group 00 that takes the block's axis words (the

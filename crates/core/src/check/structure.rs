@@ -303,6 +303,8 @@ impl Checker {
         self.cycle_unmodelled = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
+        self.linuxcnc_compensation_quiet = None;
+        self.linuxcnc_uvw_let_pass = None;
         self.linuxcnc_uvw_plane = false;
         self.linuxcnc_plane_unknown = false;
         self.linuxcnc_plane_blocks.clear();
@@ -983,6 +985,7 @@ impl Checker {
                     let flow = &mut self.linuxcnc_definition_flow;
                     let label = crate::statement::o_label(text);
                     let switched = linuxcnc_branch_switch(flow, text, &label);
+                    let loop_at = flow.iter().rposition(|l| *l == label);
                     let depth = flow.len();
                     linuxcnc_flow(flow, text);
                     let open = flow.len();
@@ -998,6 +1001,7 @@ impl Checker {
                         ran: None,
                         taken: false,
                         leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
+                        loop_at,
                     };
                     self.linuxcnc_plane_flow(&mut blocks, step);
                     self.linuxcnc_plane_body_blocks = blocks;
@@ -2009,6 +2013,7 @@ impl Checker {
             }
         }
         let depth = self.linuxcnc_open_flow.len();
+        let loop_at = self.linuxcnc_open_flow.iter().rposition(|l| *l == label);
         self.linuxcnc_label_recorded(text, keyword.as_deref(), &label, (line, column));
         linuxcnc_flow_of(&mut self.linuxcnc_open_flow, text, label);
         let open = self.linuxcnc_open_flow.len();
@@ -2046,6 +2051,7 @@ impl Checker {
             ran: branch_ran,
             taken: other_branch,
             leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
+            loop_at,
         };
         self.linuxcnc_plane_flow(&mut blocks, step);
         self.linuxcnc_plane_blocks = blocks;
@@ -2837,7 +2843,7 @@ impl Checker {
     /// (`linuxcnc_mode_restored`).
     #[cold]
     #[inline(never)]
-    pub(super) fn linuxcnc_feed_restore(&mut self, b: &BlockView<'_>) {
+    pub(super) fn linuxcnc_feed_restore(&mut self, b: &BlockView<'_>, before: &super::Before) {
         if self.linuxcnc_dead() {
             return;
         }
@@ -2894,6 +2900,9 @@ impl Checker {
             72 if mode_known && matches!(self.linuxcnc_saved, Saved::Valid(_)) => {
                 if let Some(saved) = self.linuxcnc_feed_saved {
                     self.linuxcnc_feed_restored(saved, now);
+                    if self.linuxcnc_m72_dropped == Some(self.stats.blocks) {
+                        self.linuxcnc_m72_motion_dropped(b, before);
+                    }
                     // (a G93 move of the block, where it runs: its length times F)
                     if self.machine.state.feed_mode == 93
                         && f_at.is_some()
@@ -2908,15 +2917,42 @@ impl Checker {
         }
     }
 
+    /// [`Checker::linuxcnc_feed_restore`]: the M72 block whose motion rs274 2.9.0 does not
+    /// run (the restore's block ran in its place): the tool stays where the block found it.
+    /// X, Y and Z go back to the block's start; another axis the block writes is not known
+    /// (review 57d, F1: `M70` / `G93` / `M72 G1 X1` / `G94 G2 X2 Y0 I0.5 J0 F100` is rs274's
+    /// "Radius to end of arc differs", the arc starting at X0).
+    fn linuxcnc_m72_motion_dropped(&mut self, b: &BlockView<'_>, before: &super::Before) {
+        let state = &mut self.machine.state;
+        for (i, &axis) in crate::modal::AXES.iter().enumerate() {
+            let mask = crate::modal::bit(axis);
+            if i < 3 {
+                state.position[i] = before.xyz[i];
+                state.unknown = state.unknown & !mask | before.unknown & mask;
+            } else if b.words.iter().any(|w| w.letter == axis) {
+                state.position[i] = None;
+                state.unknown |= mask;
+            }
+        }
+    }
+
     /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
     /// state is `now`, its restore applied.
     fn linuxcnc_feed_restored(&mut self, saved: FeedSaved, now: FeedSaved) {
         use super::tooling::LinuxCncFeed;
-        // (the value ` F%.1f` or ` S%.0f` writes, where it writes the same number)
-        let written = |v: Dec, scale: i128| {
-            v.checked_mul(Dec::from_int(scale))
-                .is_some_and(Dec::is_whole)
-                .then_some(v)
+        // (the value ` F%.1f` or ` S%.0f` writes: the saved one rounded to one decimal or
+        // none; not known on a half, where the double's binary value decides the way: review
+        // 57d, F6, `F0.04` saved is written `F0.0`, a zero rate)
+        let written = |v: Dec, places: u32| {
+            if v.scale <= places {
+                return Some(v);
+            }
+            let d = crate::decimal::pow10(v.scale - places)?;
+            let (q, r) = (v.mantissa.div_euclid(d), v.mantissa.rem_euclid(d));
+            (2 * r != d).then(|| Dec {
+                mantissa: crate::decimal::round_quotient(q, r, d, false).0,
+                scale: places,
+            })
         };
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
         // (the restore surely runs a block of its own: the M72's motion does not run)
@@ -2931,18 +2967,28 @@ impl Checker {
         let rate: Option<Option<Dec>> = if saved.mode == 93 {
             None
         } else if saved.mode == now.mode {
-            Some(saved.rate.and_then(|v| written(v, 10)))
+            Some(match (saved.rate, now.rate) {
+                (Some(s), Some(r)) if s == r => Some(s),
+                (Some(s), _) => written(s, 1).filter(|&w| w == s || now.rate.is_some()),
+                _ => None,
+            })
         } else {
             Some(match (saved.rate, now.rate) {
                 (Some(s), _) if s.is_zero() => Some(Dec::ZERO),
                 (Some(s), Some(r)) if s == r => Some(Dec::ZERO),
-                (Some(s), Some(_)) => written(s, 10),
+                (Some(s), Some(_)) => written(s, 1),
                 _ => None,
             })
         };
         let state = &mut self.machine.state;
         state.feed_mode = saved.mode;
-        match saved.speed.and_then(|v| written(v, 1)) {
+        let speed = match (saved.speed, now.speed) {
+            (Some(s), Some(n)) if s == n => Some(s),
+            (Some(s), Some(_)) => written(s, 0),
+            (Some(s), None) => written(s, 0).filter(|&w| w == s),
+            _ => None,
+        };
+        match speed {
             Some(v) => {
                 state.speed = Some(v);
                 state.unknown &= !crate::modal::bit(b'S');
@@ -3129,10 +3175,18 @@ impl Checker {
     fn linuxcnc_plane_flow(&mut self, blocks: &mut Vec<PlaneBlock>, step: PlaneStep) {
         let now = self.linuxcnc_plane_now();
         if step.leaves {
-            // (a `break` or `continue` leaves its turn in this plane: one more way out of
-            // every block open, the loop's and the conditions' around it)
-            for block in blocks.iter_mut() {
-                block.ends.push(now);
+            // (a `break` or `continue` leaves its turn in this plane: one more way out of its
+            // loop and of every block around the loop; none into the conditions inside the
+            // loop around it, whose branch in hand it leaves: review 55c, F9, a branch that
+            // ends in `break` is no way to its `endif`. Its loop not found: every block)
+            let inner = step.loop_at.filter(|&at| at < blocks.len());
+            for (i, block) in blocks.iter_mut().enumerate() {
+                if inner.is_none_or(|at| i <= at) {
+                    block.ends.push(now);
+                }
+            }
+            if let (Some(_), Some(block)) = (inner, blocks.last_mut()) {
+                block.left = true;
             }
             return;
         }
@@ -3148,6 +3202,7 @@ impl Checker {
                     ends: Vec::new(),
                     has_else: false,
                     taken: false,
+                    left: false,
                 });
             }
             blocks.push(PlaneBlock {
@@ -3155,6 +3210,7 @@ impl Checker {
                 ends: Vec::new(),
                 has_else: false,
                 taken: false,
+                left: false,
             });
         } else if step.open < step.depth {
             let mut ran = step.ran;
@@ -3164,7 +3220,7 @@ impl Checker {
                 let mut ends = block.ends;
                 // (after a branch that surely ran, rs274 skips to the `endif`: the ways
                 // through are that branch's alone, its end pushed where it ended)
-                if ran != Some(false) && !block.taken {
+                if ran != Some(false) && !block.taken && !block.left {
                     ends.push(after);
                 }
                 if !block.has_else && ran != Some(true) && !block.taken {
@@ -3196,9 +3252,10 @@ impl Checker {
             let Some(block) = blocks.last_mut() else {
                 return;
             };
-            if step.ran != Some(false) && !block.taken {
+            if step.ran != Some(false) && !block.taken && !block.left {
                 block.ends.push(now);
             }
+            block.left = false;
             block.has_else |= step.is_else;
             block.taken |= step.taken;
             // (after a branch that surely ran the others are skipped: the plane stays)
@@ -4533,6 +4590,8 @@ pub(super) struct PlaneStep {
     ran: Option<bool>,
     taken: bool,
     leaves: bool,
+    /// For a `break` or `continue`: the depth of the loop it leaves (its label's), where found.
+    loop_at: Option<usize>,
 }
 
 /// LinuxCNC: the plane where a line stands: the modal state's G17/G18/G19, whether a
@@ -4566,6 +4625,9 @@ pub(super) struct PlaneBlock {
     ends: Vec<PlaneAt>,
     has_else: bool,
     taken: bool,
+    /// The branch in hand left its loop's turn (a `break` or `continue` of the loop around
+    /// it): no way through it reaches the block's next branch or its close.
+    left: bool,
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand
@@ -6831,6 +6893,27 @@ mod tests {
         }
     }
 
+    /// Review 57d, F1 (lcnc57b): where the M72's restore runs a block of its own, rs274 2.9.0
+    /// runs it in place of the M72's: the block's G1 does not move the tool, and the arc after
+    /// starts where it was (`rs274 -g`: the first is "Radius to end of arc differs", the
+    /// second runs).
+    #[test]
+    fn a_dropped_m72_motion_leaves_the_tool_where_it_was() {
+        let head = "G21 G90 G17 G94\nG0 X0 Y0 Z0\nF100\nM70\nG93\nM72 G1 X1\n";
+        let errors = |arc: &str| {
+            check(of_family(Family::LinuxCnc), &format!("{head}{arc}\nM2\n"))
+                .into_iter()
+                .filter(|f| f.rule.severity() == crate::rules::Severity::Error)
+                .map(|f| (f.line, f.rule))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(
+            errors("G94 G2 X2 Y0 I0.5 J0 F100"),
+            [(7, Rule::ArcRadiusMismatch)]
+        );
+        assert_eq!(errors("G94 G2 X2 Y0 I1 J0 F100"), []);
+    }
+
     /// Review 56c (lcnc57): M72 restores the feed mode, rs274's feed rate and the speed M70
     /// saved as rs274 2.9.0 does (`Checker::linuxcnc_feed_restore`), where both lines run
     /// where they stand and each value is known; else the feed is left unknown or as the
@@ -6873,6 +6956,17 @@ mod tests {
             // rs274 stops on each, the checker leaves the F unknown
             ("F100\nM70\nG93\nG1 X3 Y4 F20\nM72\nG1 X2", None),
             ("F[50*2]\nM70\nG95 F100\nM72\nG1 X1", None),
+            // the saved rate as ` F%.1f` writes it: F0.04 is F0.0 (review 57d, F6); on a half
+            // (F0.05) the double decides: not known, rs274 runs it at F0.1
+            ("F0.04\nM70\nG95 F1\nM72\nG1 X1", no_feed),
+            ("F0.04\nM70\nF1\nM72\nG1 X1", no_feed),
+            ("F0.05\nM70\nG95 F0.1\nM72\nG1 X1", None),
+            ("F0.04\nM70\nF0.04\nM72\nG1 X1", None),
+            // a G93 G1 of no length leaves rs274's rate 0.1 (review 57d, F6)
+            ("F0.1\nM70\nG93 G1 X0 F100\nM72\nG1 X3", no_feed),
+            ("F0.1\nM70\nG93 G1 F50\nM72\nG1 X3", no_feed),
+            ("F100\nM70\nG93 G1 X0 F100\nM72\nG1 X3", None),
+            ("F0.1\nM70\nG93 G1 X0 A1 F100\nM72\nG1 X3", None),
             ("F#<_r>\nM70\nG95 F100\nM72\nG1 X1", None),
             // a save in a loop: its last turn's (F6, rs274 runs); a restore in a known-true
             // if or after a G93-G95 in one (F8, F9): not followed
@@ -6897,7 +6991,10 @@ mod tests {
         for (body, expected) in cases {
             let text = format!("{head}{body}\nM2\n");
             let last = 2 + body.lines().count();
-            let got = check(of_family(Family::LinuxCnc), &text)
+            // (decimals past a format are no alarm on LinuxCNC, as its profile says: F0.04)
+            let mut linuxcnc = of_family(Family::LinuxCnc);
+            linuxcnc.facts.past_decimals = crate::dialect::PastFormat::Any;
+            let got = check(linuxcnc, &text)
                 .into_iter()
                 .find(|f| judged.contains(&f.rule))
                 .map(|f| (f.line, f.rule));

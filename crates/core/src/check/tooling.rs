@@ -946,6 +946,7 @@ impl Checker {
         if codes.iter().any(|&c| c == 411 || c == 421) {
             self.linuxcnc_dynamic_compensation = true;
         }
+        let uvw_before = self.linuxcnc_uvw_plane && !self.linuxcnc_plane_unknown;
         if let Some(&c) = codes
             .iter()
             .find(|&&c| matches!(c, 170 | 180 | 190 | 171 | 181 | 191))
@@ -1038,6 +1039,16 @@ impl Checker {
         // word's value is unknown
         let remapped =
             n_m < m_words.min(held_m.len()) || ms.iter().any(|&c| !linuxcnc_builtin_m(c));
+        // (cutter compensation in force before or after the block's codes: only then is
+        // `linuxcnc_compensation_quiet` walked, out of line)
+        let compensated = compensation_before
+            || (self.machine.state.compensation != 40 || self.linuxcnc_dynamic_compensation)
+                && !self.linuxcnc_compensation_unknown;
+        let (chain, quiet_before, quiet) = if compensated {
+            self.linuxcnc_compensation_quiet_of(codes, given.is_some() || g_unread || remapped)
+        } else {
+            (false, false, false)
+        };
         // a G code rs274 does not have stops it while it reads the block ("Unknown g code
         // used"), before it checks the block's words or runs any of it, or is a REMAP's
         // (G0-G99.9, TG307), which takes the block's words as its own: no word is checked
@@ -1054,8 +1065,16 @@ impl Checker {
                         codes,
                         ms,
                         compensation_before,
-                        start.plane,
+                        (start.plane, uvw_before),
+                        quiet_before,
                     )
+                })
+                .or_else(|| {
+                    if !compensated || !self.linuxcnc_uvw_plane {
+                        return None;
+                    }
+                    let held = chain || self.linuxcnc_uvw_let_pass.is_some();
+                    self.linuxcnc_uvw_compensated_move(given, before, data, held)
                 })
                 // (not of an M72's motion its restore block takes the place of)
                 .or_else(|| {
@@ -1112,6 +1131,19 @@ impl Checker {
             }
         }
         // (none where the main program never runs the line: review 51, F1, F4)
+        // (the run of blocks with no compensated move, `linuxcnc_compensation_quiet`)
+        if compensated
+            || self.linuxcnc_compensation_quiet.is_some()
+            || self.linuxcnc_uvw_let_pass.is_some()
+        {
+            self.linuxcnc_compensation_walk(
+                b.line,
+                codes,
+                compensation_before,
+                quiet_before,
+                quiet,
+            );
+        }
         let live = |c: &Self| c.open_definition.is_some() || !c.linuxcnc_dead();
         if let Some((message, letter)) = message {
             if live(self) {
@@ -1255,13 +1287,13 @@ impl Checker {
     /// (interp_find.cc `find_straight_length`: X Y Z where one of them moves) times F, at
     /// least 0.1, from the current point (the programmed one under compensation). Worked out
     /// only where no double rounds it: one of X Y Z moves, between whole numbers known
-    /// exactly, at a whole F, without compensation (review 56c, F1: `G93` / `G1 X1 F100`
+    /// exactly, at a whole F, or none moves (0.1), without compensation (review 56c, F1: `G93` / `G1 X1 F100`
     /// leaves 100, which M72 compares with the saved rate). None elsewhere: not known.
     #[cold]
     fn linuxcnc_g93_rate(&self, start: &Before, f: Option<Dec>) -> Option<Dec> {
         const EXACT: i64 = 1 << 26;
         let small = |v: Dec| v.is_whole() && v.trunc().abs() < EXACT;
-        let f = f.filter(|&f| small(f) && !f.is_zero() && f.trunc() > 0)?;
+        let f = f.filter(|&f| small(f) && !f.is_zero() && f.trunc() > 0);
         let state = &self.machine.state;
         if start.compensation != 40
             || state.compensation != 40
@@ -1289,7 +1321,17 @@ impl Checker {
                 length = Some(Dec::from_int(i128::from((e.trunc() - s.trunc()).abs())));
             }
         }
-        length?.checked_mul(f)
+        match length {
+            Some(length) => length.checked_mul(f?),
+            // (no axis moves: `MAX(0.1, length * F)` is 0.1 at any F; review 57d, F6, `G93
+            // G1 X0 F100` where the tool is at X0; an axis of A B C U V W written, its length
+            // not followed)
+            None => (self.letters & b"ABCUVW".iter().fold(0, |m, &l| m | 1 << (l - b'A')) == 0)
+                .then_some(Dec {
+                    mantissa: 1,
+                    scale: 1,
+                }),
+        }
     }
 
     /// LinuxCNC: the line runs once, where it stands, whenever the program gets there: the
@@ -1677,7 +1719,8 @@ impl Checker {
         codes: &[i64],
         ms: &[i64],
         before: bool,
-        plane_before: i64,
+        (plane_before, uvw_before): (i64, bool),
+        quiet_before: bool,
     ) -> Option<(String, u8)> {
         let after = (self.machine.state.compensation != 40 || self.linuxcnc_dynamic_compensation)
             && !self.linuxcnc_compensation_unknown;
@@ -1726,7 +1769,8 @@ impl Checker {
                 _ => None,
             });
             match plane {
-                Some(Some(p)) if p != plane_before => {
+                // (G17.1-G19.1 to any of G17-G19 too: review 53, F13)
+                Some(Some(p)) if p != plane_before || uvw_before => {
                     return said(
                         "Cannot change planes with cutter radius compensation on",
                         b'G',
@@ -1738,12 +1782,15 @@ impl Checker {
                         b'G',
                     );
                 }
-                Some(None) => {
+                // (where rs274 holds no compensated move, it stops only at the next move:
+                // `linuxcnc_uvw_compensated_move`)
+                Some(None) if !quiet_before => {
                     return Some((
                         "G17.1, G18.1 and G19.1 have no cutter radius compensation (rs274ngc): \
-                         the block runs it under cutter radius compensation, and rs274 then \
-                         stops at the next compensated move or the G40 (\"BUG: Invalid plane \
-                         for cutter compensation\")"
+                         the block runs it under cutter radius compensation where a \
+                         compensated move may be held, and rs274 then stops at the next move, \
+                         G40 or program end (\"BUG: Unsupported plane in cutter \
+                         compensation\")"
                             .into(),
                         b'G',
                     ));
@@ -1878,6 +1925,109 @@ impl Checker {
             )),
             _ => None,
         }
+    }
+
+    /// LinuxCNC, a block under cutter compensation (before or after its codes): whether the
+    /// run of blocks with no compensated move (`linuxcnc_compensation_quiet`) reaches the one
+    /// before (`chain`), that and the block read in order by the main program
+    /// (`quiet_before`), and whether this block keeps the run (`quiet`: in order, no axis
+    /// word, no motion code, no G or M code of a value not known or a remap's: `unsure`),
+    /// the run begun by a G41/G42 (or .1) of its own.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_compensation_quiet_of(&self, codes: &[i64], unsure: bool) -> (bool, bool, bool) {
+        let axes = crate::modal::AXES
+            .iter()
+            .fold(0u32, |m, &l| m | 1 << (l - b'A'));
+        let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
+        let chain = self
+            .linuxcnc_compensation_quiet
+            .is_some_and(|q| q + 1 == self.stats.blocks);
+        let quiet_before = in_order && chain;
+        let turned_on = codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421));
+        let quiet = self.letters & axes == 0 && !unsure && in_order && (quiet_before || turned_on);
+        (chain, quiet_before, quiet)
+    }
+
+    /// [`Checker::linuxcnc_compensation_quiet_of`], after the block's refusals: the run kept
+    /// where the compensation holds after it, and a G17.1-G19.1 let pass under it
+    /// (`linuxcnc_uvw_let_pass`, its moves refused while both hold) recorded or dropped.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_compensation_walk(
+        &mut self,
+        line: usize,
+        codes: &[i64],
+        before: bool,
+        quiet_before: bool,
+        quiet: bool,
+    ) {
+        let after = (self.machine.state.compensation != 40 || self.linuxcnc_dynamic_compensation)
+            && !self.linuxcnc_compensation_unknown;
+        self.linuxcnc_compensation_quiet = (quiet && after).then_some(self.stats.blocks);
+        if !after || !self.linuxcnc_uvw_plane || self.linuxcnc_plane_unknown {
+            self.linuxcnc_uvw_let_pass = None;
+        } else if before && quiet_before && codes.iter().any(|&c| matches!(c, 171 | 181 | 191)) {
+            self.linuxcnc_uvw_let_pass = Some(line);
+        }
+    }
+
+    /// LinuxCNC: a call, jump or flow the checker does not follow, where a G17.1-G19.1 let
+    /// pass under cutter compensation holds (`linuxcnc_uvw_let_pass`): a move in what runs
+    /// next is rs274's stop, and the checker can no longer see it, so it refuses here rather
+    /// than lose it (refused at the plane code before review 53's F13).
+    #[cold]
+    pub(super) fn linuxcnc_uvw_unfollowed(&mut self, b: &BlockView<'_>) {
+        let Some(line) = self.linuxcnc_uvw_let_pass.take() else {
+            return;
+        };
+        if self.config.family != Family::LinuxCnc || self.linuxcnc_dead() {
+            return;
+        }
+        self.report(
+            Rule::LinuxCncRefuses,
+            format!(
+                "G17.1, G18.1 or G19.1 (line {line}) under cutter radius compensation \
+                 (rs274ngc): the checker does not follow the program from here, and rs274 \
+                 stops at the next move (\"BUG: Invalid plane for cutter compensation\")"
+            ),
+            b.line,
+            1,
+        );
+    }
+
+    /// LinuxCNC: a G0 or G1 move (its code written, or axis words under it) in G17.1-G19.1
+    /// under cutter compensation, where no compensated move came since the compensation
+    /// turned on (`quiet_before`): rs274 let the plane code pass and stops here ("BUG:
+    /// Invalid plane for cutter compensation"; `G41.1 D2` / `G18.1` / `G0` too), while a G40
+    /// or the program's end before any move runs (review 53, F13). Where a compensated move
+    /// came before, the plane code itself is refused (`linuxcnc_compensation_refusal`).
+    fn linuxcnc_uvw_compensated_move(
+        &self,
+        given: Option<i64>,
+        before: LinuxCncMotion,
+        data: bool,
+        quiet_before: bool,
+    ) -> Option<(String, u8)> {
+        let axes = crate::modal::AXES
+            .iter()
+            .fold(0u32, |m, &l| m | 1 << (l - b'A'));
+        let moves = matches!(given, Some(0 | 10))
+            || given.is_none()
+                && !data
+                && self.letters & axes != 0
+                && matches!(before, LinuxCncMotion::Known(Some(0 | 10)));
+        let on = (self.machine.state.compensation != 40 || self.linuxcnc_dynamic_compensation)
+            && !self.linuxcnc_compensation_unknown;
+        (quiet_before && moves && on && self.linuxcnc_uvw_plane && !self.linuxcnc_plane_unknown)
+            .then(|| {
+                (
+                    "BUG: Invalid plane for cutter compensation (rs274ngc): a move under cutter \
+                     radius compensation in G17.1, G18.1 or G19.1"
+                        .into(),
+                    b'G',
+                )
+            })
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -3934,7 +4084,23 @@ mod tests {
             ("G41.1 D1\nG18 G40", &["5: Cannot change planes with cutter radius compensation on"]),
             ("G18\nG41.1 D1\nG17", &["6: Cannot change planes with cutter radius compensation on"]),
             ("G18\nG41.1 D1\nG18\nG40", &[]),
-            ("G41.1 D1\nG17.1", &["5: G17.1, G18.1 and G19.1 have no cutter radius compensation"]),
+            // a G17.1-G19.1 under compensation: refused at the code where a compensated
+            // move may be held, else at the next move; a G40 or the end before it runs
+            // (review 53, F13)
+            (
+                "G41.1 D1\nG1 X5\nG17.1",
+                &["6: G17.1, G18.1 and G19.1 have no cutter radius compensation"],
+            ),
+            ("G41.1 D1\nG17.1", &[]),
+            ("G41.1 D1\nG18.1\nG4 P1\nG40\nG1 X5", &[]),
+            (
+                "G41.1 D1\nG18.1\nG4 P1\nG0",
+                &["7: BUG: Invalid plane for cutter compensation"],
+            ),
+            (
+                "G41.1 D1\nG18.1\nG17",
+                &["6: Cannot change planes with cutter radius compensation on"],
+            ),
             ("G41.1 D1\nG1 X5\nG5.1 X1 I1 J1", &["6: Cannot convert spline with cutter radius compensation"]),
             ("G41.1 D1\nG1 X5 F100\nG5 X2 Y2 I1 J0 P1 Q1 G40", &[]),
             ("G41.1 D1\nG28.1", &["5: Cannot set reference point with cutter compensation in effect"]),
