@@ -345,3 +345,96 @@ def test_an_uncalled_lathe_program_s_positions_are_absolute():
     # W is an increment from Z-700.: Z goes to 700, 1400 mm (review 56b, l2.nc)
     program = "G21 G18 G40 / G0 X100. Z5. / M30 / O2000 / G0 X50. Z-700. / W1400. / M99"
     assert errors(program, "fanuc-lathe") == [("TG601", 8, 1)]
+
+
+def test_an_uncalled_program_after_a_skippable_end_keeps_the_main_s_offset(tmp_path):
+    """Review 57c, F2 (x3.nc): the main's only end is `/M30`; with the block skip switch on
+    it runs on into O2000 under its own G55 (X-700. is X-800 on the machine): said."""
+    profile = tmp_path / "wo2.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
+                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\n")
+    head = "G21 G17 G90 G55 / G0 X0 Y0 / "
+    assert errors(head + "/M30 / O2000 / G0 X-700. / M99", str(profile)) == [("TG601", 7, 4)]
+    # a plain M30 ends it: the offset O2000 runs under is its caller's, not known
+    assert errors(head + "M30 / O2000 / G0 X-700. / M99", str(profile)) == []
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe-b", "fanuc-lathe-c"])
+def test_an_uncalled_lathe_program_of_system_b_or_c_runs_in_its_caller_s_mode(profile):
+    """Review 57c, F3 (l8.nc): on G code system B or C, G90/G91 are absolute/incremental, so
+    an uncalled program's Z-700. before its own G90 may be an increment (review 56b, F10):
+    no 1200 mm span is judged from it."""
+    program = "G21 G18 G99 / G0 X100. Z200. / M30 / O2000 / G0 Z-700. / G90 G0 Z500. / M99"
+    assert errors(program, profile) == []
+    # from its own G90 on, both positions absolute: judged
+    program = "G21 G18 G99 / G0 X100. Z200. / M30 / O2000 / G90 G0 Z-700. / G0 Z500. / M99"
+    assert errors(program, profile) == [("TG601", 8, 4)]
+
+
+def test_a_subprogram_written_before_its_caller_runs_under_the_caller_s_offset(tmp_path):
+    """Review 57c, F6 (v1.nc, v2.nc): O2000 follows the main's M30, and O3000, written after
+    it, selects G55 and calls it: X-700. is X-800 on the machine there, past -762 (said at
+    the call). Under O3000's G54 it is X-700, inside; with no call it is not known (review
+    56e, F6); where O3000 selects none, its own offset is its caller's, not known either."""
+    profile = tmp_path / "wo2.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
+                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\n")
+    head = "G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99 / O3000 / "
+    assert errors(head + "G90 G55 / G0 X0 Y0 / M98 P2000 / M99", str(profile)) == [
+        ("TG601", 12, 5)]
+    assert errors(head + "G90 G54 / G0 X0 Y0 / M98 P2000 / M99", str(profile)) == []
+    assert errors(head + "G0 X0 Y0 / M98 P2000 / M99", str(profile)) == []
+    assert errors("G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99",
+                  str(profile)) == []
+
+
+@pytest.mark.parametrize("program, expected", [
+    # review 57c, F5 (sh3.nc): the IF jumps to N44 or falls to the sure GOTO 44; no F on either
+    (AT_ZERO + "IF [#5 EQ 1] GOTO 44 / GOTO 44 / G0 X850. / N44 G1 X-700. / M30",
+     [("TG401", 8, 8)]),
+    # review 55b, F3 (e4.nc): a move between the IF and the GOTO, the F100. passed over
+    ("G21 G17 G90 G54 / #1=0 / G0 X0 Y0 Z10. / IF [#5 EQ 1] GOTO 44 / G0 X300. / GOTO 44 / "
+     "F100. / N44 G1 X-7. / M30", [("TG401", 10, 8)]),
+    # an F between the IF and the GOTO: the GOTO's way has a feed, the IF's none; not every run
+    (AT_ZERO + "IF [#5 EQ 1] GOTO 44 / F100. / GOTO 44 / G0 X850. / N44 G1 X-700. / M30", []),
+    # a call between: the subprogram may set a feed
+    (AT_ZERO + "IF [#5 EQ 1] GOTO 44 / M98 P100 / GOTO 44 / G0 X850. / N44 G1 X-700. / M30",
+     []),
+    # a jump read before to a block after the target may come back with a feed first
+    (AT_ZERO + "IF [#5 EQ 2] GOTO 90 / IF [#5 EQ 1] GOTO 44 / GOTO 44 / G0 X850. / "
+     "N44 G1 X-700. / M30 / N90 F100. / GOTO 44", []),
+])
+def test_a_shared_target_keeps_no_feed_ever_set(program, expected):
+    """Review 57c, F5 and review 55b, F3: where the sure `GOTO n` and every jump read before it
+    name N n and no feed was ever set on the way to any of them, N n is reached with none
+    (FANUC: F is modal, none at the start), so a feed move there without F is TG401."""
+    assert [e for e in errors(program) if e[0] == "TG401"] == expected
+
+
+@pytest.mark.parametrize("program, profile, expected", [
+    # review 57c, F7 (ma1.nc): the file's only program, a looping main ending in M99, runs
+    # from the reset state (G90): X -700 then 850 is 1550 mm
+    ("G0 X-700. Y0 / G0 X850. / M99", "fanuc-mill", [("TG601", 4, 4)]),
+    ("G17 G40 G80 / G0 X-700. Y0 / G0 X850. / M99", "fanuc-mill", [("TG601", 5, 4)]),
+    # the same as a second program after a main's M30: its caller's G90/G91 not known
+    ("G21 G90 G54 / G0 X0 Y0 / M30 / O2000 / G0 X-700. Y0 / G0 X850. / M99", "fanuc-mill", []),
+])
+def test_the_file_s_first_program_ending_in_m99_runs_from_the_reset_state(
+        program, profile, expected):
+    """Review 57c, F7: the caller's-mode rule (review 56b, F10) is for a program some other
+    program calls; the file's first program is the one the control starts."""
+    assert errors(program, profile) == expected
+
+
+def test_a_subprogram_before_its_main_keeps_its_caller_s_mode():
+    """Review 57c, F7's rule is for a file with no main program ending in M30: O2000 written
+    before the O1000 that ends in M30 is no program the control starts, so its X-700. before
+    a G90 of its own may be an increment (review 56b, F10): no span judged from it."""
+    text = "%\nO2000\nG0 X-700. Y0\nG0 X850.\nM99\nO1000\nG21 G90 G54\nG0 X0 Y0\nM30\n%\n"
+    prof = load_profile("fanuc-mill")
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    assert [(f.rule, f.line) for f in found if f.severity == "error"] == []

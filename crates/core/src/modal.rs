@@ -707,6 +707,11 @@ pub struct ModalMachine {
     pub ended_from: Option<Box<EndedFrom>>,
     /// Why the positions of the block's cycle are not all known ([`CYCLE_UNSURE`]).
     cycle_why: &'static str,
+    /// The feed, forgotten at a jump the checker does not follow, is none on every way here
+    /// all the same: each jump forgotten since the last F was a `GOTO n` (one of an IF, or
+    /// the sure one) read where no feed was ever set, and nothing else forgot it since
+    /// (check/passed.rs: the target of a sure GOTO that earlier IFs name too; review 57c, F5).
+    pub feed_none_kept: bool,
     /// A units code converts the known positions into the new units (true): the checker's and
     /// the restart walk's machine. The verify reader and the converter keep the numbers as
     /// they were and follow each axis's units themselves, exactly (`ncread::Factor`).
@@ -768,6 +773,7 @@ impl ModalMachine {
             ran_cycle: 0,
             ended_from: None,
             cycle_why: "",
+            feed_none_kept: false,
             units_convert_position: true,
             taken: None,
             distance_codes: 0,
@@ -840,6 +846,7 @@ impl ModalMachine {
             } else if unknown(b'F') && !dwell(b'F') {
                 s.feed = None;
                 s.unknown |= bit(b'F');
+                self.feed_none_kept = false;
             }
             let (upper, limit) = self.settings.s_limit(v);
             if let Some(speed) = v.get(b'S').filter(|_| !dwell(b'S')) {
@@ -992,6 +999,7 @@ impl ModalMachine {
     /// unknown until the program sets them again.
     pub fn forget(&mut self) {
         self.cycle_kept = false;
+        self.feed_none_kept = false;
         let s = &mut self.state;
         s.position = [None; 9];
         s.feed = None;
@@ -1016,7 +1024,14 @@ impl ModalMachine {
         self.state.feed = left.state.feed;
         self.state.speed = left.state.speed;
         self.state.unknown = self.state.unknown & !FORGOTTEN | left.state.unknown & FORGOTTEN;
+        self.feed_none_kept = left.feed_none_kept;
         self.drift = left.drift;
+    }
+
+    /// No feed was ever set on any way here: none in force and none forgotten, or forgotten
+    /// only at jumps that kept none (`feed_none_kept`).
+    pub fn feed_never_set(&self) -> bool {
+        self.state.feed.is_none() && (self.state.unknown & bit(b'F') == 0 || self.feed_none_kept)
     }
 
     /// The position of the axis `letter` alone is no longer known (a SINUMERIK's positioning
@@ -1032,6 +1047,7 @@ impl ModalMachine {
     /// The feed alone is no longer known (a block the control refuses wrote an F): the
     /// position and the speed stay.
     pub fn forget_feed(&mut self) {
+        self.feed_none_kept = false;
         self.state.feed = None;
         self.state.unknown |= bit(b'F');
     }

@@ -616,6 +616,7 @@ mod tests {
                                 line,
                                 column,
                                 span: false,
+                                guessed: false,
                             };
                             writer.finding(&mut written, &finding);
                             assert_eq!(
@@ -643,6 +644,7 @@ mod tests {
             line,
             column,
             span: false,
+            guessed: false,
         };
         let mut found = Vec::new();
         for line in 1..=12 {
@@ -723,6 +725,7 @@ mod tests {
             line,
             column: 1,
             span: false,
+            guessed: false,
         };
         let mut found = Vec::new();
         for line in 1..=7 {
@@ -861,6 +864,7 @@ mod tests {
             line: 12,
             column: 3,
             span: false,
+            guessed: false,
         };
         let rule = Rule::ALL[0];
         let (id, severity, clause) = (rule.id(), rule.severity().name(), rule.clause());

@@ -118,6 +118,11 @@ struct Body {
     /// The end or return before it is one the block skip can pass over (`/M30`): with the
     /// switch on, the program before runs on into it (review 56e, F4).
     after_skippable_end: bool,
+    /// It is the file's first program: where no program of the file ends as a main one
+    /// (M02/M30), the control runs it from the reset state (a main program ending in M99
+    /// loops; G90 is the power-on mode), so its caller's G90/G91 is no question (review
+    /// 57c, F7). A file whose subprograms come before its main keeps the caller's reading.
+    first: bool,
     /// The axes (their places' bits) whose machine position (a work offset's) it said
     /// outside the travel: that said more than its span can, which is not said again where
     /// it is judged alone (review 56b, F3).
@@ -214,6 +219,10 @@ pub(super) struct Pending {
     ends: Option<bool>,
     /// That TG140 said at a call (not again at the next).
     mode_said: bool,
+    /// The work offset it was read under, where that was the one the program before left,
+    /// its caller's not known ([`Checker::work_offset_unknown`]): the findings among
+    /// `positions` marked `guessed` are said at a call under this one only.
+    work_guessed: Option<i64>,
     /// Its last G90/G91 not known: it called a program the checker did not read there, and
     /// wrote none after (review 48, F11).
     ends_lost: bool,
@@ -273,6 +282,7 @@ impl Checker {
                 calls: 0,
                 calls_judged: 0,
                 after_skippable_end: self.end_skippable,
+                first: self.programs == 0,
                 outside: 0,
             },
             stash,
@@ -299,6 +309,18 @@ impl Checker {
         self.early_on = false;
         if let Some(given) = early.given_before {
             self.machine.state.units_given |= given;
+        }
+        // (no subprogram after all: the offset left before is not taken for its caller's,
+        // its findings under it dropped, from here none judged until its own G54-G59)
+        if self.work_guessed.take().is_some() {
+            self.work = None;
+            if let Some(from) = self.hold_from {
+                let mut i = 0;
+                self.found.retain(|f| {
+                    i += 1;
+                    i <= from || !f.guessed
+                });
+            }
         }
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
             *span = joined(before, *span);
@@ -360,6 +382,7 @@ impl Checker {
                 .then_some(self.machine.state.incremental),
             mode_said: false,
             ends_lost: early.lost_codes == Some(self.machine.distance_codes),
+            work_guessed: self.work_guessed.take(),
         });
     }
 
@@ -481,6 +504,9 @@ impl Checker {
         column: usize,
         said_outside: bool,
     ) -> Option<(f64, f64)> {
+        // (one said under the offset the program before left is dropped where no call
+        // confirms it: its span is judged all the same)
+        let said_outside = said_outside && self.work_guessed.is_none();
         let early = self.early.as_mut().expect("early_on");
         if said_outside {
             early.body.outside |= 1 << i;
@@ -704,6 +730,12 @@ impl Checker {
             )
         };
         self.report(Rule::NotFollowed, message, line, column);
+    }
+
+    /// Whether a call here runs a body read under the offset `guessed` (the one the program
+    /// before it left) under that same offset: its machine positions are then those read.
+    fn work_confirms(&self, guessed: Option<i64>) -> bool {
+        guessed.is_some() && self.work == guessed
     }
 
     /// Inside a program read apart: a call by another word than a program number (a Haas's
@@ -969,11 +1001,13 @@ impl Checker {
         // (its spans' findings, made with the spans of the programs before it, are judged
         // again with its own alone: said where the axis's travel is less than its own span,
         // and not where its machine positions already said more: review 56b, F3)
+        // (and not its positions under the offset the program before left: its caller's is
+        // not known)
         let mut said: Vec<Finding> = p
             .removed
             .into_iter()
             .filter(|f| !f.span)
-            .chain(p.positions)
+            .chain(p.positions.into_iter().filter(|f| !f.guessed))
             .collect();
         let from = self.found.len();
         // (one that moved before a G90/G91 of its own runs those moves in its caller's mode,
@@ -984,10 +1018,13 @@ impl Checker {
         // program written after it is joined to the file's in G90 (review 56b, F4: y1.nc's
         // error kept, and the same programs in the other order, y2.nc, keep theirs). Nor on a
         // lathe of G code system A, which has no G90/G91 mode (its G90 a turning cycle, its
-        // increments U and W): its X and Z are absolute whoever calls it
+        // increments U and W): its X and Z are absolute whoever calls it (not on system B or
+        // C, whose G90/G91 are absolute/incremental: review 57c, F3)
         let positions_known = p.read_incremental.is_none()
             || p.body.calls > 0
-            || self.machine.settings.own_motion(90);
+            || p.body.first && !self.main_ended
+            || (self.machine.settings.own_motion(90)
+                && self.machine.settings.g_system == crate::lex::GCodeSystem::A);
         let (spans, least_at, most_at) = if positions_known {
             (&p.spans, &p.body.least_at, &p.body.most_at)
         } else {
@@ -1226,11 +1263,13 @@ impl Checker {
             let remark = self.machine.state.units_given.then(|| self.units_remark());
             for mut f in std::mem::take(&mut p.positions) {
                 // (a G53 before the body's own G90/G91 at a G91 call: kept for a later call
-                // under G90, which judges it; review 48, F7)
-                if inherited(&f) {
+                // under G90, which judges it; review 48, F7; a position under the offset
+                // left before it, kept for a call under that offset)
+                if inherited(&f) || f.guessed && !self.work_confirms(p.work_guessed) {
                     p.positions.push(f);
                     continue;
                 }
+                f.guessed &= self.work_guessed.is_some();
                 if let Some(remark) = &remark {
                     f.message = f.message.replacen(remark.as_str(), "", 1);
                 }
@@ -1251,10 +1290,11 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
-                if inherited(&f) {
+                if inherited(&f) || f.guessed && !self.work_confirms(p.work_guessed) {
                     p.positions.push(f);
                     continue;
                 }
+                f.guessed &= self.work_guessed.is_some();
                 if !known && !f.message.contains("(G53)") {
                     continue;
                 }

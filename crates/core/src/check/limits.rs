@@ -351,16 +351,30 @@ impl Checker {
     /// offset it runs under is its caller's or the reset state's, not the one the program
     /// before it left (a FANUC's M30 ends that program; review 56e, F6: `G55` / `M30` /
     /// `O2000` / `G0 X-700.` / `M99` was judged under G55). Its positions are compared as
-    /// machine positions again from its own G54-G59.
+    /// machine positions again from its own G54-G59. Read apart (called.rs), it is read
+    /// under the offset left before all the same, its machine positions' findings marked
+    /// `guessed`: a call in the file that runs it under that offset says them, as its caller
+    /// selected it (review 57c, F6: `O3000` / `G90 G55` / `M98 P2000` of an `O2000` written
+    /// before it, after a main under G55); no call, or one under another offset, does not.
     pub(super) fn work_offset_unknown(&mut self, line: usize) {
         if self.config.work_offsets.is_empty() || self.work.is_none() {
             return;
         }
-        self.work = None;
+        if self.early_on {
+            self.work_guessed = self.work;
+        } else {
+            self.work = None;
+        }
         self.travel_not(format!(
             "from line {line} on: a program no call before it names runs under its caller's \
              work offset, not known here, until it selects one of its own"
         ));
+    }
+
+    /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
+    fn work_selected(&mut self, g: i64) {
+        self.work = Some(g);
+        self.work_guessed = None;
     }
 
     /// Note once why a position was not compared as a machine position.
@@ -427,8 +441,8 @@ impl Checker {
                 // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
                 // List of G Codes): no machine coordinates, no work system (G15 H selects it)
                 53..=59 if self.config.family == Family::Okuma && !self.config.modal.lap => {}
-                54..=57 => self.work = Some(v.trunc()),
-                58 | 59 if !sinumerik => self.work = Some(v.trunc()),
+                54..=57 => self.work_selected(v.trunc()),
+                58 | 59 if !sinumerik => self.work_selected(v.trunc()),
                 // an Okuma mill's G11 (parallel and rotation shift), G51 (scaling), G62
                 // (mirror image), G69 (three-dimensional conversion): frame_bits
                 11 | 51 | 62 | 69 if self.config.family == Family::Okuma => self.lose_offsets(
@@ -2075,7 +2089,11 @@ impl Checker {
                             round6(machine_at),
                             round6(at)
                         );
+                        let before = self.found.len();
                         self.report_limit(Rule::TravelExceeded, message, line, col(axis));
+                        if self.work_guessed.is_some() && self.found.len() > before {
+                            self.found.last_mut().expect("said").guessed = true;
+                        }
                         said_outside = true;
                     }
                     self.outside[i] = out;

@@ -344,6 +344,10 @@ pub struct Finding {
     /// one position: a program read apart and then judged alone judges its spans again with
     /// its own, and drops those said with the spans before it (called.rs).
     pub span: bool,
+    /// A TG601 of a machine position under the work offset the program before left, in a
+    /// program read apart that no call before it names ([`Checker::work_offset_unknown`]):
+    /// said only where a call runs it under that offset (called.rs).
+    pub guessed: bool,
 }
 
 /// One move, for the backplot. Positions as programmed (a lathe's X a diameter, its centre's
@@ -788,6 +792,9 @@ pub struct Checker {
     /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
     offsets_section: bool,
     ended_line: usize,
+    /// A program of the file ended with M02/M30 (a main program): the file's first program,
+    /// where it ends in M99, is then not the one the control starts (called.rs).
+    main_ended: bool,
     /// An M02/M30 the block skip passes over came last, which ends the program only with the
     /// switch off. LinuxCNC (`/M2`): no end for the lines after it, but an end for TG114. The
     /// other families (`/M30`, or an M30 after a `/` in the block's middle): the end on
@@ -956,6 +963,10 @@ pub struct Checker {
     /// one in force: None before a selection, and for good after anything that shifts the
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
+    /// Some(G5x): `work` is the offset the program before left, taken for a program read
+    /// apart that no call before it names, whose caller's is not known
+    /// ([`Checker::work_offset_unknown`]); None once it selects its own.
+    work_guessed: Option<i64>,
     offsets_lost: bool,
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
@@ -1399,6 +1410,7 @@ impl Checker {
             empty_folder: false,
             offsets_section: false,
             ended_line: 0,
+            main_ended: false,
             skipped_end: false,
             end_skippable: false,
             surely_ended: false,
@@ -1472,6 +1484,7 @@ impl Checker {
             opening_arc: false,
             radius_arc: None,
             work: None,
+            work_guessed: None,
             offsets_lost: false,
             frames: limits::Frames::default(),
             noted: 0,
@@ -1696,6 +1709,7 @@ impl Checker {
                 line,
                 column,
                 span: false,
+                guessed: false,
             });
         }
     }
@@ -2211,7 +2225,7 @@ impl Checker {
                 self.system_variables(b);
             }
             if self.statements(b, None) {
-                self.machine.forget();
+                self.forget_at_jump(b, false);
                 // (a conditional jump forward changes no parameter where it is not taken)
                 if !self.jump_keeps_params(b) {
                     self.params_forgotten();
@@ -2580,7 +2594,7 @@ impl Checker {
             }
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
-            self.machine.forget();
+            self.forget_at_jump(b, calls);
             // (a conditional jump forward changes no parameter where it is not taken)
             if calls || !self.jump_keeps_params(b) {
                 self.params_forgotten();
@@ -2617,6 +2631,7 @@ impl Checker {
         self.split.ended(ends || returns);
         if ends {
             self.ended_line = b.line;
+            self.main_ended = true;
             // (LinuxCNC: one in a block known to run ends it too: review 51, F13)
             if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {
                 self.surely_ended = true;

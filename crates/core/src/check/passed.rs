@@ -45,8 +45,9 @@ pub(super) struct Passed {
     conditional: bool,
     /// Whether a jump read before it names its target too (an `IF [..] GOTO 44` before a
     /// `GOTO 44`): the target is reached from either, and starts from what both leave --
-    /// the position, feed and speed not known (the earlier jump's are not kept), the
-    /// parameters those of an arrival ([`Checker::jump_arrival`]).
+    /// the position, feed and speed not known (the earlier jump's are not kept) but for no
+    /// feed ever set on either way (`no_feed`), the parameters those of an arrival
+    /// ([`Checker::jump_arrival`]).
     shared: bool,
     /// The checker as the jump left it (its run state is the target's).
     run: Box<Checker>,
@@ -170,8 +171,13 @@ impl Checker {
                 arrival,
             } = *left;
             run.machine.kept_of(&machine);
-            no_feed = machine.state.feed.is_none()
-                && machine.state.unknown & crate::modal::bit(b'F') == 0;
+            // (none forgotten at jumps before it counts only where every jump read names this
+            // target: one to a block after it may come back with a feed before the first
+            // arrival; review 57c, F5)
+            let forgotten = machine.state.unknown & crate::modal::bit(b'F') != 0;
+            no_feed = machine.feed_never_set()
+                && (!forgotten
+                    || !self.goto_computed && self.goto_targets.keys().all(|&n| n == target));
             run.params = params;
             run.arrival = arrival;
         }
@@ -188,6 +194,15 @@ impl Checker {
             goto_targets,
             from: self.found.len(),
         }));
+    }
+
+    /// A jump or call the checker does not follow (block `b`; `calls`: a calling word): what
+    /// the machine knows is forgotten, but a `GOTO n` read where no feed was ever set keeps
+    /// that for the ways it makes (ModalMachine::feed_none_kept).
+    pub(super) fn forget_at_jump(&mut self, b: &BlockView<'_>, calls: bool) {
+        let kept = !calls && self.machine.feed_never_set() && self.goto_only(b);
+        self.machine.forget();
+        self.machine.feed_none_kept = kept;
     }
 
     /// What a jump's block leaves as it ends, before the checker forgets it (TG140):
@@ -310,6 +325,11 @@ impl Checker {
             // (the jump read before arrives with the state it left, which the checker did not
             // keep: what the file's reading forgot at it is forgotten here too)
             self.machine.forget();
+            // (but no feed ever set on either way stays none: review 57c F5, review 55b F3:
+            // `IF [#5 EQ 1] GOTO 44` / `GOTO 44` / `F100.` / `N44 G1 X-7.` is TG401)
+            if no_feed {
+                self.machine.no_feed();
+            }
             self.motion_unknown = true;
             self.polar = super::polar::Polar::default();
         }

@@ -535,13 +535,17 @@ impl Checker {
         if let Some(n) = number.filter(|n| !self.call_units.contains_key(n)) {
             if self.config.family == Family::MacroB {
                 // (its caller, not the program before it, selects the work offset it runs
-                // under: not known until it writes its own G54-G59; review 56e, F6)
-                self.work_offset_unknown(b.line);
+                // under: not known until it writes its own G54-G59; review 56e, F6) -- unless
+                // the end before it is under the `/` switch: with the switch on, the program
+                // before runs on into it under its own offset (review 57c, F2)
                 self.early_begin(
                     super::called::Key::Number(n),
                     b.words[0].token(),
                     (b.line, b.words[0].column),
                 );
+                if !self.end_skippable {
+                    self.work_offset_unknown(b.line);
+                }
             }
         }
         match number.and_then(|n| self.call_units.get(&n)) {

@@ -518,6 +518,18 @@ impl Checker {
         }
     }
 
+    /// Whether the block's one statement is a `GOTO n` to a number (of an IF or not), the
+    /// block calling nothing: a jump whose ways in the checker knows (passed.rs).
+    pub(super) fn goto_only(&self, b: &super::BlockView<'_>) -> bool {
+        let [(_, Kind::Flow, text)] = b.statements else {
+            return false;
+        };
+        let upper = text.to_ascii_uppercase();
+        goto_words(&upper).is_some_and(|(_, digits, tail)| {
+            !digits.is_empty() && tail.iter().all(|&c| crate::lex::blank(c))
+        })
+    }
+
     /// The sequence number a block that cannot be read begins with (`N200 G00 3.7347`): the
     /// block is there for a search (its own error is said), so a cycle naming it is no TG118.
     pub(super) fn unreadable_label(&mut self, text: &[u8]) {
