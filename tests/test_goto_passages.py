@@ -390,6 +390,14 @@ def test_a_subprogram_written_before_its_caller_runs_under_the_caller_s_offset(t
     assert errors(head + "G0 X0 Y0 / M98 P2000 / M99", str(profile)) == []
     assert errors("G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99",
                   str(profile)) == []
+    # review 57e, F0 (jx1.nc): an uncalled O2000 that calls O3000 is joined to the file's span
+    # for its call, but nothing of the file runs it: its X-700. under the main's G55 is not
+    # said (it was "X goes to -800"); numbered O9001, an M code of the main may run it: said
+    tail = "M98 P3000 / M99 / O3000 / G0 Y0 / M99"
+    assert errors(head.replace("O3000 / ", "").replace("M99 / ", "") + tail,
+                  str(profile)) == []
+    assert errors(head.replace("O3000 / ", "").replace("M99 / ", "").replace("O2000", "O9001")
+                  + tail, str(profile)) == [("TG601", 7, 4)]
 
 
 @pytest.mark.parametrize("program, expected", [

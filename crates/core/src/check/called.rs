@@ -980,7 +980,14 @@ impl Checker {
     /// as before.
     fn early_as_read(&mut self, p: Pending) {
         if !self.judged_alone(&p) {
-            for mut f in p.removed.into_iter().chain(p.positions) {
+            // (joined for its own calls only, nothing of the file runs it: its positions read
+            // under the offset the program before left are not its caller's, review 57e F0)
+            let guessed_kept = self.may_run_here(&p);
+            let positions = p
+                .positions
+                .into_iter()
+                .filter(|f| guessed_kept || !f.guessed);
+            for mut f in p.removed.into_iter().chain(positions) {
                 self.sample_hint_shown(&mut f);
                 self.found.push(f);
             }
@@ -1082,25 +1089,28 @@ impl Checker {
     /// control, it may run this one: F5), or the end before it is one the block skip passes
     /// over (`/M30`: with the switch on, the main runs on into it; F4).
     fn judged_alone(&self, p: &Pending) -> bool {
-        if p.body.calls > p.body.calls_judged
-            || p.body.unfollowed.is_some()
-            || p.body.after_skippable_end
+        p.body.calls <= p.body.calls_judged && p.body.unfollowed.is_none() && !self.may_run_here(p)
+    }
+
+    /// Whether something of the file may run the uncalled program `p` after all, under the
+    /// offset in force there ([`Checker::judged_alone`]'s reasons but its own calls): the end
+    /// before it skipped, an O9000-O9999 of the file, a call of a program the file does not
+    /// hold or with a P the checker does not match, or its own number O9000-O9999.
+    fn may_run_here(&self, p: &Pending) -> bool {
+        p.body.after_skippable_end
             || self.file_programs.range(9000..=9999).next().is_some()
             || self
                 .call_numbers
                 .iter()
                 .any(|n| !self.file_programs.contains(n))
-        {
-            return false;
-        }
-        match p.body.number {
-            Key::Number(n) => {
-                !(9000..=9999).contains(&n)
-                    && !self.call_numbers_any
-                    && !self.call_numbers.contains(&n)
+            || match p.body.number {
+                Key::Number(n) => {
+                    (9000..=9999).contains(&n)
+                        || self.call_numbers_any
+                        || self.call_numbers.contains(&n)
+                }
+                Key::Label(_) => false,
             }
-            Key::Label(_) => true,
-        }
     }
 
     /// A subprogram at a call made in known units and under a known shift: its span (least
