@@ -110,10 +110,6 @@ impl Frames {
 /// X, Y and Z (bits 0-2 of [`Frames::hidden`]).
 const XYZ: u16 = 0b111;
 
-/// What a span's TG601 says after its travel ([`Checker::span_exceeded`]): a subprogram no
-/// call names finds its own by it, to judge them again alone (crate::check::called).
-const SPAN_SAID: &str = ": no work offset fits the program on this machine";
-
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -2438,8 +2434,8 @@ impl Checker {
         units: &str,
     ) {
         let message = format!(
-            "{} spans {} (from {} to {}), more than the travel {low} to {high}{SPAN_SAID}\
-             {under}{units}",
+            "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
+             offset fits the program on this machine{under}{units}",
             axis as char,
             round6(most - least),
             round6(least),
