@@ -446,3 +446,60 @@ def test_a_subprogram_before_its_main_keeps_its_caller_s_mode():
     prof = load_profile("fanuc-mill")
     found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
     assert [(f.rule, f.line) for f in found if f.severity == "error"] == []
+
+
+def _wo2(tmp_path):
+    """A FANUC mill whose G55 is X-100 (X travel -762..762)."""
+    profile = tmp_path / "wo2.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
+                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\n")
+    return str(profile)
+
+
+def test_a_call_under_an_offset_written_by_g10_is_not_judged_with_the_profile_s_value(tmp_path):
+    """Review 57e, F1 (c3d.nc): O3000's `G10 L2 P2 X0.` sets G55's X to 0 before its G55 call
+    of O2000, so X-700. runs at X-700, inside the travel (it was "X goes to -800", the
+    finding read under the profile's G55 replayed by the offset's name). A program the
+    checker did not read may write the offsets too; a call of one it read does not."""
+    profile = _wo2(tmp_path)
+    head = "G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99 / O3000 / "
+    assert errors(head + "G10 L2 P2 X0. / G90 G55 / G0 X0 Y0 / M98 P2000 / M30", profile) == []
+    assert errors(head + "G90 G55 / M98 P4000 / M98 P2000 / M30", profile) == []
+    # (review 57e, c4.nc: the first call runs O2000, read, under G54; the second under G55)
+    assert errors(head + "G90 G54 / M98 P2000 / G55 / M98 P2000 / M30", profile) == [
+        ("TG601", 13, 5)]
+
+
+def test_a_run_on_position_is_said_where_read_not_at_a_call_under_another_offset(tmp_path):
+    """Review 57e, F2 (x4c.nc): with the block skip switch on, O1000 runs past `/M99` into
+    O2000 under its G55 (X-700. is X-800): said at O2000's line, where that run makes it,
+    not at O3000's call under G54 (X-700 there, inside) with the G55 offset as its reason."""
+    program = ("G21 G17 G90 G55 / G0 X0 Y0 / /M99 / O2000 / G0 X-700. / M99 / O3000 / "
+               "G90 G54 / M98 P2000 / M30")
+    assert errors(program, _wo2(tmp_path)) == [("TG601", 7, 4)]
+
+
+def test_a_library_of_m99_programs_keeps_the_caller_s_mode():
+    """Review 57e, F3 (m9c.nc, mb1.nc): a file of several programs each ending in M99, none a
+    main, is a library for a main elsewhere: its first program's X-700. before a G90 of its
+    own may be an increment (review 56b, F10), so no 1550 mm span is judged from it, as for
+    the others. Where its first program calls the others, it is the program the control
+    starts, from the reset state in G90 (review 57c, F7)."""
+    assert errors("G0 X-700. Y0 / G0 X850. / M99 / O2000 / G0 X0 / M99") == []
+    assert errors("G0 X-700. Y0 / G0 X850. / M99 / O2000 / G0 X-700. / G0 X850. / M99") == []
+    assert errors("G0 X-700. Y0 / G0 X850. / M98 P2000 / M99 / O2000 / G0 Y0 / M99") == [
+        ("TG601", 4, 4)]
+
+
+def test_an_o9000_program_in_the_file_runs_no_uncalled_program_under_the_main_s_offset(
+        tmp_path):
+    """Review 57e, F0's jx3.nc: O2000's M06 may run the file's O9001, which makes O2000's span
+    hold O9001's (review 56e, F1), but nothing runs O2000 under the main's G55: its X-700. is
+    not said as X-800. The O9001 itself, which an M code of the main may run, keeps it."""
+    profile = _wo2(tmp_path)
+    head = "G21 G17 G90 G55 / G0 X0 Y0 Z-10. / M30 / "
+    assert errors(head + "O2000 / G0 X-700. / M06 T1 / M99 / O9001 / G0 Y0 / M99",
+                  profile) == []
+    assert errors(head + "O9001 / G0 X-700. / M99", profile) == [("TG601", 7, 4)]

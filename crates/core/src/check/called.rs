@@ -121,7 +121,10 @@ struct Body {
     /// It is the file's first program: where no program of the file ends as a main one
     /// (M02/M30), the control runs it from the reset state (a main program ending in M99
     /// loops; G90 is the power-on mode), so its caller's G90/G91 is no question (review
-    /// 57c, F7). A file whose subprograms come before its main keeps the caller's reading.
+    /// 57c, F7). A file whose subprograms come before its main keeps the caller's reading,
+    /// and so does a file of several programs none ends as a main (a library of
+    /// subprograms loaded for a main elsewhere: review 57e F3), but where the first calls
+    /// programs (its span then holds theirs).
     first: bool,
     /// The axes (their places' bits) whose machine position (a work offset's) it said
     /// outside the travel: that said more than its span can, which is not said again where
@@ -307,6 +310,7 @@ impl Checker {
             return;
         };
         self.early_on = false;
+        self.work_run_on = false;
         if let Some(given) = early.given_before {
             self.machine.state.units_given |= given;
         }
@@ -343,14 +347,22 @@ impl Checker {
         }
         let early = self.early.take().expect("early_on");
         self.early_on = false;
+        self.work_run_on = false;
         if let Some(given) = early.given_before {
             self.machine.state.units_given = given;
         }
         let (mut removed, mut positions) = (Vec::new(), Vec::new());
         if let Some(from) = self.hold_from.take() {
             let mut kept = Vec::with_capacity(self.found.len() - from);
-            for f in self.found.drain(from..) {
-                if f.rule == Rule::TravelExceeded && f.message.contains(" in machine coordinates") {
+            for mut f in self.found.drain(from..) {
+                // (under the offset of the program that runs on into it, skip switch on:
+                // that run's, said where read whoever calls it after; review 57e F2)
+                if f.guessed && early.body.after_skippable_end {
+                    f.guessed = false;
+                    kept.push(f);
+                } else if f.rule == Rule::TravelExceeded
+                    && f.message.contains(" in machine coordinates")
+                {
                     positions.push(f);
                 } else if matches!(
                     f.rule,
@@ -738,6 +750,16 @@ impl Checker {
         guessed.is_some() && self.work == guessed
     }
 
+    /// Whether a body's machine position under a work offset (not a G53 one), read with the
+    /// profile's offsets, may stand elsewhere at a call here: a G10, or a program the
+    /// checker did not read, ran before the call and may have written the offsets, so an
+    /// offset of the same name may hold another value (review 57e F1: `G10 L2 P2 X0.` /
+    /// `G90 G55` / `M98 P2000` ran O2000's `X-700.` at X-700, not at the -800 read under
+    /// the profile's G55). Kept, not said (`offsets_written`).
+    fn offset_value_unknown(&self, f: &Finding) -> bool {
+        self.offsets_written && !f.message.contains("(G53)")
+    }
+
     /// Inside a program read apart: a call by another word than a program number (a Haas's
     /// M97 of a sequence), which the checker does not follow ([`Checker::early_unfollowed`]).
     #[cold]
@@ -1029,7 +1051,7 @@ impl Checker {
         // C, whose G90/G91 are absolute/incremental: review 57c, F3)
         let positions_known = p.read_incremental.is_none()
             || p.body.calls > 0
-            || p.body.first && !self.main_ended
+            || p.body.first && !self.main_ended && self.file_programs.len() <= 1
             || (self.machine.settings.own_motion(90)
                 && self.machine.settings.g_system == crate::lex::GCodeSystem::A);
         let (spans, least_at, most_at) = if positions_known {
@@ -1089,16 +1111,20 @@ impl Checker {
     /// control, it may run this one: F5), or the end before it is one the block skip passes
     /// over (`/M30`: with the switch on, the main runs on into it; F4).
     fn judged_alone(&self, p: &Pending) -> bool {
-        p.body.calls <= p.body.calls_judged && p.body.unfollowed.is_none() && !self.may_run_here(p)
+        p.body.calls <= p.body.calls_judged
+            && p.body.unfollowed.is_none()
+            && self.file_programs.range(9000..=9999).next().is_none()
+            && !self.may_run_here(p)
     }
 
     /// Whether something of the file may run the uncalled program `p` after all, under the
-    /// offset in force there ([`Checker::judged_alone`]'s reasons but its own calls): the end
-    /// before it skipped, an O9000-O9999 of the file, a call of a program the file does not
-    /// hold or with a P the checker does not match, or its own number O9000-O9999.
+    /// offset in force there ([`Checker::judged_alone`]'s reasons but its own calls and an
+    /// O9000-O9999 of the file, which its own M06 may run, not it: review 57e F0's jx3.nc):
+    /// the end before it skipped, a call of a program the file does not hold or with a P
+    /// the checker does not match, or its own number O9000-O9999 (an M, G or T code of the
+    /// main may run it).
     fn may_run_here(&self, p: &Pending) -> bool {
         p.body.after_skippable_end
-            || self.file_programs.range(9000..=9999).next().is_some()
             || self
                 .call_numbers
                 .iter()
@@ -1275,7 +1301,10 @@ impl Checker {
                 // (a G53 before the body's own G90/G91 at a G91 call: kept for a later call
                 // under G90, which judges it; review 48, F7; a position under the offset
                 // left before it, kept for a call under that offset)
-                if inherited(&f) || f.guessed && !self.work_confirms(p.work_guessed) {
+                if inherited(&f)
+                    || f.guessed && !self.work_confirms(p.work_guessed)
+                    || self.offset_value_unknown(&f)
+                {
                     p.positions.push(f);
                     continue;
                 }
@@ -1300,7 +1329,10 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
-                if inherited(&f) || f.guessed && !self.work_confirms(p.work_guessed) {
+                if inherited(&f)
+                    || f.guessed && !self.work_confirms(p.work_guessed)
+                    || self.offset_value_unknown(&f)
+                {
                     p.positions.push(f);
                     continue;
                 }

@@ -371,6 +371,7 @@ impl Checker {
     fn work_selected(&mut self, g: i64) {
         self.work = Some(g);
         self.work_guessed = None;
+        self.work_run_on = false;
     }
 
     /// Note once why a position was not compared as a machine position.
@@ -430,7 +431,10 @@ impl Checker {
             }
             match v.trunc() {
                 49 => self.length_decimal = false,
-                10 => self.lose_offsets(line, "G10 sets offsets"),
+                10 => {
+                    self.offsets_written = true;
+                    self.lose_offsets(line, "G10 sets offsets");
+                }
                 52 | 92 if axes => {
                     self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
                 }
@@ -2087,7 +2091,9 @@ impl Checker {
                         );
                         let before = self.found.len();
                         self.report_limit(Rule::TravelExceeded, message, line, col(axis));
-                        if self.work_guessed.is_some() && self.found.len() > before {
+                        if (self.work_guessed.is_some() || self.work_run_on)
+                            && self.found.len() > before
+                        {
                             self.found.last_mut().expect("said").guessed = true;
                         }
                         said_outside = true;

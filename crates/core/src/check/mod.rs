@@ -967,7 +967,18 @@ pub struct Checker {
     /// apart that no call before it names, whose caller's is not known
     /// ([`Checker::work_offset_unknown`]); None once it selects its own.
     work_guessed: Option<i64>,
+    /// `work` is the offset the program before left, in a program read apart that the one
+    /// before runs on into with the block skip switch on (its end `/M30` or `/M99`): its
+    /// machine positions under it are those of that run, said where read, not at a call
+    /// under another offset (review 57e F2); false once it selects its own.
+    work_run_on: bool,
     offsets_lost: bool,
+    /// A G10, or a call of a program the checker did not read before it (one written after
+    /// the call, stored on the control, or named by a parameter), may have written the work
+    /// offsets' values: a subprogram's machine position read under the profile's value of an
+    /// offset is not said at a later call under that offset's name (review 57e F1). Not
+    /// set by a call of a program read before (its own G10 lost the offsets where read).
+    offsets_written: bool,
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
@@ -1485,7 +1496,9 @@ impl Checker {
             radius_arc: None,
             work: None,
             work_guessed: None,
+            work_run_on: false,
             offsets_lost: false,
+            offsets_written: false,
             frames: limits::Frames::default(),
             noted: 0,
             mode_lost_codes: None,

@@ -439,6 +439,7 @@ impl Checker {
                 } else {
                     "G65"
                 };
+                self.offsets_written = true;
                 self.call_unknown(format!("{code} {}", w.token()), b.line, w.column);
             }
             return;
@@ -459,6 +460,7 @@ impl Checker {
                 self.early_call(super::called::Key::Number(number), call, (b.line, column))
             };
         if !followed {
+            self.offsets_written = true;
             self.call_not_followed(b, number);
         }
         let s = &self.machine.state;
@@ -545,6 +547,8 @@ impl Checker {
                 );
                 if !self.end_skippable {
                     self.work_offset_unknown(b.line);
+                } else {
+                    self.work_run_on = self.early_on && self.work.is_some();
                 }
             }
         }
