@@ -479,6 +479,12 @@ def test_a_run_on_position_is_said_where_read_not_at_a_call_under_another_offset
     program = ("G21 G17 G90 G55 / G0 X0 Y0 / /M99 / O2000 / G0 X-700. / M99 / O3000 / "
                "G90 G54 / M98 P2000 / M30")
     assert errors(program, _wo2(tmp_path)) == [("TG601", 7, 4)]
+    # O3000's call under G55 runs it at X-800 too: the one overtravel said once, where read
+    assert errors(program.replace("G90 G54", "G90 G55"), _wo2(tmp_path)) == [("TG601", 7, 4)]
+    # its own G55 after the run-on: known whoever calls it, said at the call
+    program = ("G21 G17 G90 G55 / G0 X0 Y0 / /M99 / O2000 / G0 X-600. / G55 / G0 X-700. / "
+               "M99 / O3000 / G90 G54 / M98 P2000 / M30")
+    assert errors(program, _wo2(tmp_path)) == [("TG601", 13, 5)]
 
 
 def test_a_library_of_m99_programs_keeps_the_caller_s_mode():
