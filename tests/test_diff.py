@@ -19,6 +19,7 @@ from formats.errors import ConversionError
 from formats.parser import parse_text
 from formats.profile import load_profile
 from formats.verify import verify_conversion
+from postproc.check import check_text
 from tapegate.cli import main
 
 from .conftest import corpus_files, needs_corpus
@@ -302,9 +303,17 @@ MEASURES = [
      "A60", "A59", "A60 -> A59 (-1, -1 step)", 1),
     ("haas-lathe", "G20 G18 G99\nG00 X1. Z0.2 S500 M03\nG76 X0.9 Z-1. K0.05 D0.01 F0.0625 A60 {}",
      "Q45000", "Q45001", "Q45000 -> Q45001 (+0.001, +1 step)", 1),
-    # a Haas lathe's G199 R: the secondary spindle's phase angle, degrees
-    ("haas-lathe", "G20 G18 G99\nG199 {}", "R30.", "R30.5", "R30. -> R30.5 (+0.5, +5000 steps)",
-     5000),
+    # a Haas lathe's G199 R: the secondary spindle's phase angle, degrees, stepped by the
+    # angles' 0.001 deg in G20 and G21 alike (review 57a F5: 0.0001 in G20)
+    ("haas-lathe", "G20 G18 G99\nG199 {}", "R30.", "R30.5", "R30. -> R30.5 (+0.5, +500 steps)",
+     500),
+    ("haas-lathe", "G21 G18 G99\nG199 {}", "R30.", "R30.004", "R30. -> R30.004 (+0.004, +4 steps)",
+     4),
+    # a modal G92's next pass: its Q the start angle as the G92 block's (review 57a F4)
+    ("fanuc-lathe", "G21 G18 G99\nG00 X30. Z5. S500 M03\nG92 X28. Z-20. F1.5 Q0\nX27.5 {}",
+     "Q90000", "Q90002", "Q90000 -> Q90002 (+0.002, +2 steps)", 2),
+    ("haas-lathe", "G20 G18 G99\nG00 X1. Z0.2 S500 M03\nG32 Z-1. F0.0625 Q0\nZ-1.5 {}",
+     "Q180000", "Q180001", "Q180000 -> Q180001 (+0.001, +1 step)", 1),
     # a mill's and a lathe's drilling cycles' dwell P, milliseconds (FANUC, Haas)
     ("fanuc-mill", "G21 G17 G90\nG00 X0 Y0 Z50. S1200 M03\nG99 G76 X10. Z-5. R3. Q0.5 {} F100.",
      "P300", "P302", "P300 -> P302 (+0.002, +2 steps)", 2),
@@ -367,6 +376,28 @@ def test_a_thread_start_angle_with_a_point_is_compared_as_written(tmp_path):
     found, _ = differences(one, two, lathe, lathe, tolerance=Decimal(100000))
     assert [d.details() for d in found] == [["Q60000 -> Q60."]]
     assert differences(two, two, lathe, lathe)[0] == []
+
+
+def test_a_modal_thread_s_next_pass_reads_its_start_angle_as_the_thread_s(tmp_path):
+    """Review 57a F4: under a modal G92 (or G32), a block naming no code of the motion group
+    is the cycle's next pass (FANUC 0i-TF "Threading cycle (G92)"), its Q the start angle in
+    0.001 deg as the G92 block's: `Q90.` (with a point, TG208's) is not `Q90` (0.09 deg), the
+    checker says TG208 at the pass's Q, and a change of units keeps Q180000 as written (it
+    was refused as a digit overflow of Q's length format)."""
+    from formats.convert import convert_text
+    program = ("%\nO1\nG21 G18 G99\nG00 X30. Z5. S500 M03\nG92 X24. Z-25. F1.5 Q0\n"
+               "X23.5 Q0\nX24. {}\nG00 X100. Z100.\nM30\n%\n")
+    one = write(tmp_path, "a.nc", program.format("Q90."))
+    two = write(tmp_path, "b.nc", program.format("Q90"))
+    lathe = load_profile("fanuc-lathe")
+    found, _ = differences(one, two, lathe, lathe, tolerance=Decimal(100000))
+    assert [d.details() for d in found] == [["Q90. -> Q90"]]
+    found = [(f.rule, f.line, f.column, f.severity)
+             for f in check_text(program.format("Q90."), lathe) if f.rule == "TG208"]
+    assert found == [("TG208", 7, 6, "warning")]
+    out, _ = convert_text(program.format("Q180000"),
+                          ConvertOptions(target=lathe, source=lathe, units="inch"))
+    assert out.splitlines()[6] == "X0.9449 Q180000", out
 
 
 @pytest.mark.parametrize(("profile", "body", "a", "b", "said"), COUNTS)

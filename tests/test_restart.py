@@ -1202,6 +1202,21 @@ def test_an_okuma_mill_s_frames_refuse_the_restart():
     assert plan(one_block, 8, okuma).preamble[-1] == "G01 Z-1. F100."
 
 
+def test_an_okuma_mill_s_air_cut_reduction_refuses_the_restart():
+    """Review 57b F6: the profile's G38 (air cut reduction mode ON, G37 its cancel: the later
+    OSP machining centres' List of G Codes) was planned past without a word, the mode dropped;
+    the preamble does not write it, so a restart under it is refused, with the code and its
+    line, and one after its G37 is planned (nothing of the position is lost at the cancel)."""
+    okuma = load_profile("okuma-mill")
+    text = ("%\nO1000\nN1 G15 H1\nN2 T1 M6\nN3 S1000 M3\nN4 G38\nN5 G0 X10. Y10. Z50.\n"
+            "N6 G1 Z-5. F500\nN7 G1 X20.\nN8 G37\nN9 G0 Z50.\nN10 X0 Y0\nM02\n%\n")
+    assert refusal(text, 9, okuma) == ("cannot restart here: G38 (air cut reduction) from "
+                                       "line 6 is in force and the preamble cannot restore it")
+    assert plan(text, 11, okuma).preamble[-2:] == ["G00 X20. Y10.", "G01 Z-5. F500."]
+    after = plan(text, 12, okuma).preamble
+    assert "G00 X20. Y10." in after and not any("G3" in line for line in after)
+
+
 def test_an_okuma_mill_s_one_block_work_system_loses_the_axes_it_moves():
     """Review 16b, 1: after `G16 H2 G00 X20. Y5.` (work system 2 for that block only) the
     tool stands at X20 Y5 of system 2; the restart went to X20 Y5 of system 1 (`G15 H1`) and

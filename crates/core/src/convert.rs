@@ -8265,7 +8265,9 @@ pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
 /// (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the cycle's roles. The modal
 /// cycles of group 09 on a FANUC or Haas control: a mill's G73, G74, G76 and G81-G89, a
 /// lathe's G83-G89 and a Haas lathe's G241-G249 (a lathe's G70-G76 act in their block); ended by
-/// [`ends_canned_cycle`] and by M02/M30. The converter and `--verify`'s reader ask this one
+/// [`ends_canned_cycle`] and by M02/M30. A lathe's threading G32 and threading cycle G92 are
+/// codes of the motion group that a block writing no other repeats too, with the words it
+/// changes ([`crate::modal::modal_thread`]). The converter and `--verify`'s reader ask this one
 /// function, so the two read a repeated block alike.
 pub fn cycle_in_force(
     before: Option<i64>,
@@ -8280,6 +8282,11 @@ pub fn cycle_in_force(
         241..=249 => lathe,
         _ => false,
     };
+    if family == Family::MacroB && lathe {
+        if let Some(g) = gs.iter().copied().find(|&g| crate::modal::modal_thread(g)) {
+            return Some(g);
+        }
+    }
     if family != Family::MacroB
         || gs.iter().any(|&g| ends_canned_cycle(lathe, g))
         || ms.iter().any(|&m| m == 2 || m == 30)
@@ -8358,8 +8365,9 @@ where
 
 /// The meanings the codes of a block give its words (`words` as (letter, number as written))
 /// on a control of `family` (a Haas or not: `haas`) read by `settings` (its lathe, its G
-/// code system), the mill's canned cycle `cycle` in force before it: the
-/// block's G and M codes, and that cycle where the block writes no code of the motion group
+/// code system), `cycle` the code in force before it (`ModalState::code_in_force`: a mill's canned
+/// cycle, a lathe's G32 or G92): the block's G and M codes, and that code where the block
+/// writes no other code of the motion group
 /// (a `G91 X10. K4` repeats a G81 at the next hole, K its repeat count; FANUC 0i-MF "Canned
 /// cycle"; audit 50, B9). The one reading of the checker ([`crate::check::Checker`]'s) and
 /// of the modal state on its own ([`block_counts`]), so that the two count a cycle's
@@ -8388,14 +8396,21 @@ where
         }
     }
     let lathe = settings.fanuc_lathe || settings.lap;
-    let motion = gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89));
-    if let Some(code) = cycle.filter(|_| !lathe && !motion && g < gs.len()) {
-        gs[g] = code;
-        g += 1;
-    }
     // a FANUC lathe's codes of G code system B or C by their system A numbers
     for n in &mut gs[..g] {
         *n = settings.read_g(*n);
+    }
+    // (a lathe's code in force, its G32 or G92, ends at every other code of its motion
+    // group, and at the multiple repetitive and drilling cycles G70-G89)
+    let motion = gs[..g].iter().any(|&c| match lathe {
+        false => matches!(c, 0..=3 | 73..=89),
+        true => ends_canned_cycle(true, c) || (70..=89).contains(&c),
+    });
+    // (a lathe's drilling cycle in force is not read into a block of positions: its thread)
+    let cycle = cycle.filter(|&c| !lathe || settings.fanuc_lathe && crate::modal::modal_thread(c));
+    if let Some(code) = cycle.filter(|_| !motion && g < gs.len()) {
+        gs[g] = code;
+        g += 1;
     }
     let system = settings.g_system;
     let words = words.map(move |(letter, number)| match letter {
@@ -8466,6 +8481,7 @@ where
         });
     let table = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
+    meanings.start_angle = table.start_angle;
     if !meanings.any() {
         meanings.roles = table.roles;
         meanings.measures = table.measures;
@@ -8491,6 +8507,8 @@ struct CycleTable {
     /// or names (K and L repeats, P and Q block numbers, H passes, G76's packed P, a
     /// selector) is compared exactly ([`crate::meaning::Meanings::cycle_measure`]).
     measures: u32,
+    /// Q is a thread's start angle in 0.001 deg ([`crate::meaning::Meanings::start_angle`]).
+    start_angle: bool,
 }
 
 fn cycle_table(
@@ -8505,7 +8523,11 @@ fn cycle_table(
     let mut roles = [None; 26];
     let measures = std::cell::Cell::new(0u32);
     if family == Family::Iso {
-        return CycleTable { roles, measures: 0 };
+        return CycleTable {
+            roles,
+            measures: 0,
+            start_angle: false,
+        };
     }
     // the block's addresses, and those written with a point (bit `letter - b'A'`)
     let has = |letter: u8| letters & 1 << (letter - b'A') != 0;
@@ -8524,6 +8546,7 @@ fn cycle_table(
     };
     let (length, number, increments) = (Role::Length, Role::Other, Role::Increments);
     let linuxcnc = family == Family::LinuxCnc;
+    let mut start_angle = false;
     for &g in gs {
         match g {
             // LinuxCNC's G-code reference: G64 P(blending tolerance) Q(naive CAM tolerance)
@@ -8550,11 +8573,14 @@ fn cycle_table(
             107 if lathe && family == Family::MacroB && haas != Some(false) => {
                 set(b"QR", Role::Parameter)
             }
-            // a lathe's G32/G92 Q: the thread's start angle in 0.001 deg, written whole
-            // (meaning::Meanings::start_angle)
+            // a lathe's threading G32, threading cycle G92 (and a block repeating them,
+            // `cycle_in_force`): Q the start angle shift, least increment 0.001 deg,
+            // 0-360000 (FANUC 0i-TF operator's manual, "Threading (G32)", "Threading cycle
+            // (G92)"; Haas lathe G32: "Q - Thread Start Angle (do not use a decimal point)")
             32 | 92 if lathe && family == Family::MacroB => {
                 set(b"Q", number);
                 measure(b"Q");
+                start_angle = true;
             }
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
@@ -8592,6 +8618,7 @@ fn cycle_table(
                     set(b"KDI", length);
                     set(b"PQA", number);
                     measure(b"QA");
+                    start_angle = family == Family::MacroB;
                 } else if has(b'X') || has(b'Z') || has(b'U') || has(b'W') {
                     // the 0i's second block: P thread height and Q first cut in least input
                     // increments, R the taper, a length as written
@@ -8723,7 +8750,11 @@ fn cycle_table(
         }
     }
     let measures = measures.get();
-    CycleTable { roles, measures }
+    CycleTable {
+        roles,
+        measures,
+        start_angle,
+    }
 }
 
 /// The P, Q and R of a block with an M code are of no known role where no code of the
@@ -9084,9 +9115,26 @@ mod tests {
             |before, lathe, gs: &[i64], ms: &[i64]| cycle_in_force(before, fanuc, lathe, gs, ms);
         assert_eq!(after(None, true, &[83], &[]), Some(83));
         assert_eq!(after(Some(83), true, &[], &[]), Some(83));
-        for g in [0, 1, 2, 3, 32, 33, 34, 80, 90, 92, 94] {
+        for g in [0, 1, 2, 3, 33, 34, 80, 90, 94] {
             assert_eq!(after(Some(83), true, &[g], &[]), None, "lathe G{g}");
         }
+        // a lathe's threading G32 and G92 end it and are in force themselves: a block
+        // naming no code of the motion group repeats them (review 57a, F4)
+        for g in [32, 92] {
+            assert_eq!(after(Some(83), true, &[g], &[]), Some(g), "lathe G{g}");
+            assert_eq!(after(Some(g), true, &[], &[]), Some(g), "lathe G{g}");
+            assert_eq!(after(Some(g), true, &[0], &[]), None, "lathe G{g}, G00");
+            assert_eq!(after(Some(g), true, &[], &[30]), None, "lathe G{g}, M30");
+            assert_eq!(after(None, false, &[g], &[]), None, "mill G{g}");
+        }
+        let state = |cycle, motion| crate::modal::ModalState {
+            cycle,
+            motion,
+            ..crate::modal::ModalState::new(crate::modal::Units::Metric)
+        };
+        assert_eq!(state(Some(83), Some(92)).code_in_force(true), Some(92));
+        assert_eq!(state(Some(83), Some(1)).code_in_force(true), None);
+        assert_eq!(state(Some(81), Some(92)).code_in_force(false), Some(81));
         for g in [0, 1, 2, 3, 33, 80] {
             assert_eq!(after(Some(81), false, &[g], &[]), None, "mill G{g}");
         }

@@ -91,7 +91,9 @@ pub struct Meanings {
     /// radius), not a move: `G68.2`, `G68.3`, `G68.4`, `G07.1`.
     pub data: bool,
     /// Q is a thread's start angle in 0.001 deg, 0 to 360000: six whole digits, whatever the
-    /// address's format holds (a Fanuc or Haas lathe's G32 and G92, Haas's one-block G76).
+    /// address's format holds (a Fanuc or Haas lathe's G32 and G92 and a block repeating
+    /// them, Haas's one-block G76): the cycle tables' (`convert::cycle_table`), not this
+    /// module's.
     pub start_angle: bool,
     /// The letters (bit `letter - b'A'`) of [`Meanings::cycle_count`] that measure rather than
     /// count: a time, an angle, a ratio (the cycle tables', `convert::CycleTable`).
@@ -199,13 +201,6 @@ where
             continue;
         }
         if family == Family::MacroB {
-            // a lathe's threading G32, threading cycle G92 and Haas's one-block G76 (K the
-            // thread height): Q the start angle shift, least increment 0.001 deg, 0-360000
-            // (FANUC 0i-TF operator's manual, "Threading (G32)", "Threading cycle (G92)"; Haas
-            // lathe G32, G76: "Q - Thread Start Angle (do not use a decimal point)")
-            if g && lathe && (matches!(c, (32 | 92, 0)) || (c == (76, 0) && has(b'K'))) {
-                m.start_angle = true;
-            }
             match c {
                 (5, 0) if g => m.set(b"P", selector),
                 (5, 1) if g => m.set(b"PQR", selector),

@@ -115,6 +115,32 @@ pub struct ModalState {
     pub polar: bool,
 }
 
+/// A FANUC or Haas lathe's threading G32 and threading cycle G92 (system A numbers): codes
+/// of the motion group (group 01), so a block after them that writes no other code of the
+/// group repeats them, its words meaning what theirs do -- a multi-start thread's next pass
+/// `X23.5 Q90000` under G92 cuts at the start angle Q, in 0.001 deg, as the G92 block's own Q
+/// (FANUC 0i-TF operator's manual, "Threading cycle (G92)": the cycle's data are modal;
+/// "Threading (G32)"; review 57a, F4: the angle was read as the cycle's only in the block
+/// that names it). The one list of the converter's and the diff's reading
+/// (`convert::cycle_in_force`) and of the checker's ([`ModalState::code_in_force`]).
+pub fn modal_thread(g: i64) -> bool {
+    matches!(g, 32 | 92)
+}
+
+impl ModalState {
+    /// The code a block of a FANUC or Haas control naming no code of the motion group
+    /// repeats, its words read as that code's (`convert::block_meanings`): the mill's canned
+    /// cycle in force, a lathe's (`fanuc_lathe`) threading G32 or G92 ([`modal_thread`]). A
+    /// lathe's drilling cycles are not read into such a block.
+    pub fn code_in_force(&self, fanuc_lathe: bool) -> Option<i64> {
+        if fanuc_lathe {
+            self.motion.filter(|&g| modal_thread(g))
+        } else {
+            self.cycle
+        }
+    }
+}
+
 /// Under G16, the plane's first axis is the radius and its second the angle in degrees
 /// (FANUC Series 16/18-MC operator's manual, "Polar coordinate command (G15, G16)"): G17 X Y,
 /// G18 Z X, G19 Y Z.

@@ -1201,9 +1201,15 @@ impl Reader {
                 let f = self.format(l, units);
                 !f.decimal || f.after == 0
             };
+            // (a measure of the table written with a point that is no time, an angle in
+            // degrees (Haas G199 `R30.`, G76 `A60.5`) or LinuxCNC G76's R ratio, steps by the
+            // angles' format, the rotary axes', which no units code changes: its letter's
+            // length format stepped 0.0001 in G20 and 0.001 in G21 for one angle; review 57a,
+            // F5)
+            let angle_measure = measure && w.point && !time;
             let format_letter = match letter {
                 b'@' => b'X',
-                _ if angle => b'A',
+                _ if angle || angle_measure => b'A',
                 _ if role == Some(Role::Length)
                     && (matches!(letter, b'A' | b'B' | b'C') || whole(letter)) =>
                 {
@@ -1441,7 +1447,11 @@ impl Motion {
     fn apply(&mut self, tokens: &[&[u8]]) {
         let units = (self.machine.state.units, self.machine.state.feed_units);
         let settings = self.config.modal_settings();
-        let counts = crate::convert::block_counts(settings, self.machine.state.cycle, tokens);
+        let counts = crate::convert::block_counts(
+            settings,
+            self.machine.state.code_in_force(settings.fanuc_lathe),
+            tokens,
+        );
         self.config
             .numbers()
             .block_values(tokens, units, counts, &mut self.values);

@@ -69,8 +69,12 @@ const UNRESTORED: [(i64, i64, &str); 3] = [
 const MOTION_CODES: [i64; 9] = [0, 1, 2, 3, 6, 32, 33, 34, 35];
 const LATHE_CYCLES: [i64; 10] = [70, 71, 72, 73, 74, 75, 76, 90, 92, 94];
 /// An Okuma mill's frames (OSP List of G Codes, `okuma-mill.toml`): its G68 is the 3-D
-/// conversion's cancel, its G15/G16 select a work system.
-const OKUMA_UNRESTORED: [(i64, i64, &str); 3] = [
+/// conversion's cancel, its G15/G16 select a work system. And its air cut reduction mode, G38
+/// on, G37 its cancel (the later OSP machining centres' List of G Codes, `okuma-mill.toml`):
+/// a mode of the feed in the air, no frame, which the preamble does not write: a restart
+/// under it is refused, as it was before the profile named the two (review 57b, F6: it was
+/// planned without the mode, and without a word of it).
+const OKUMA_UNRESTORED: [(i64, i64, &str); 4] = [
     (
         11,
         10,
@@ -78,6 +82,7 @@ const OKUMA_UNRESTORED: [(i64, i64, &str); 3] = [
     ),
     (51, 50, "scaling"),
     (69, 68, "3-D coordinate system conversion"),
+    (38, 37, "air cut reduction"),
 ];
 /// Decimal codes whose state the preamble does not write: G54.1 (an extra work system), G41.1 /
 /// G42.1 (normal direction control), and the length offsets it cannot restore with the tool's
@@ -1735,7 +1740,9 @@ impl Walk {
                     if code == 68 {
                         self.rotation_3d = false;
                     }
-                    if was && code != 16 {
+                    // (polar coordinates and air cut reduction move no axis off the program's
+                    // coordinates: nothing is lost at their cancel)
+                    if was && code != 16 && code != 38 {
                         self.transform_cancel(line, &format!("G{g}"), name, 0);
                     }
                 }

@@ -45,7 +45,7 @@ fuzz_target!(|data: &[u8]| {
             checker.config.block_values(
                 &raw,
                 (modal.state.units, modal.state.feed_units),
-                modal.state.cycle,
+                modal.state.code_in_force(modal.settings.fanuc_lathe),
                 &mut values,
             );
             modal.apply(&values);

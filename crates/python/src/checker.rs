@@ -810,7 +810,7 @@ impl ModalMachine {
         }
         let tokens: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
         let units = (self.machine.state.units, self.machine.state.feed_units);
-        let cycle = self.machine.state.cycle;
+        let cycle = (self.machine.state).code_in_force(self.machine.settings.fanuc_lathe);
         self.config
             .block_values(&tokens, units, cycle, &mut self.values);
         self.machine.apply(&self.values);

@@ -271,9 +271,9 @@ impl Config {
     }
 
     /// The values of a block's word tokens as the modal state reads them on its own
-    /// ([`Numbers::block_values`]), `cycle` the mill's canned cycle in force before the block
-    /// (`ModalState::cycle`), by which a K is the cycle's count as the checker reads it
-    /// ([`crate::convert::block_counts`]).
+    /// ([`Numbers::block_values`]), `cycle` the code in force before the block that a block
+    /// naming none repeats (`ModalState::code_in_force`), by which a K is the cycle's count
+    /// as the checker reads it ([`crate::convert::block_counts`]).
     pub fn block_values(
         &self,
         tokens: &[&[u8]],
@@ -1120,6 +1120,11 @@ pub struct Checker {
     /// another label outside them with nothing but M2/M30 after it (the return that ends the
     /// file); 0: none.
     sub_returns: (usize, usize, usize),
+    /// LinuxCNC: in a subroutine file, an endsub naming another label outside the body's
+    /// conditions and loops has been read while its definition is open: a call returns
+    /// there, a run as a program skips on to the definition's own endsub, so no line before
+    /// that is read as a block by either (review 57b F3).
+    sub_returned: bool,
     /// LinuxCNC: the line and column of the first `%` line rs274 would refuse that stands
     /// after the endsub of a subroutine file (a call returns at the endsub and never reads
     /// it): reported only where a line after it makes the file a program.
@@ -1519,6 +1524,7 @@ impl Checker {
             sub_label: Vec::new(),
             sub_preamble: (0, 0),
             sub_returns: (0, 0, 0),
+            sub_returned: false,
             sub_percent: None,
             called_as: None,
             open_definition: None,
@@ -2013,6 +2019,13 @@ impl Checker {
         }
         if let Some(unread) = self.reading_end.take_unread() {
             self.never_read(unread);
+            // a line of program text after the `%` that ends a subroutine file, past an
+            // M2/M30 after it, makes the file a program all the same: run as one, rs274
+            // refuses the `%` before it reaches the M2 (`rs274 -g` of `o<tp> sub` ...
+            // `o<tp> endsub` / `%` / `M2` / `G0 X2`: "Bad character '%' used"; review 57b F2)
+            if let Some((line, column)) = self.sub_percent.take() {
+                self.percent_refusal(line, column);
+            }
         }
         true
     }
@@ -2363,10 +2376,9 @@ impl Checker {
         {
             self.jump_arrival(b);
         }
-        let modal = &self.config.modal;
         // (no meaning, as most blocks': the meanings left as they are where they are none
         // already)
-        match self.code_meanings(b, modal.fanuc_lathe || modal.lap, motion_only) {
+        match self.code_meanings(b, motion_only) {
             None if self.meanings_none => {}
             None => {
                 self.meanings = crate::meaning::Meanings::default();
@@ -2716,16 +2728,20 @@ impl Checker {
     /// shape worked out (a debug build works the meanings out and holds them to none).
     ///
     /// None for a block no code gives a word a meaning without a look at its words (G00-G03
-    /// alone, or no code and no mill's cycle in force): [`crate::meaning::Meanings::default`].
+    /// alone, or no code and no code in force a block repeats, `ModalState::code_in_force`: a
+    /// mill's canned cycle, a lathe's G32 or G92): [`crate::meaning::Meanings::default`].
     fn code_meanings(
         &mut self,
         b: &BlockView<'_>,
-        lathe: bool,
         motion_only: bool,
     ) -> Option<crate::meaning::Meanings> {
         // (a mill's cycle in force repeats in a block whose codes are planes alone, G17-G19:
         // `G17 X10. K4` after a G81 is four holes, its K the count; review 51, F10)
-        if motion_only && (self.machine.state.cycle.is_none() || lathe || motion_written(b)) {
+        let in_force = self
+            .machine
+            .state
+            .code_in_force(self.config.modal.fanuc_lathe);
+        if motion_only && (in_force.is_none() || motion_written(b)) {
             debug_assert_eq!(
                 self.meanings_afresh(b),
                 crate::meaning::Meanings::default(),
@@ -2737,7 +2753,7 @@ impl Checker {
         let codes = self.letters & (bit(b'G') | bit(b'M')) != 0;
         // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
         // G81): its words mean what the cycle's do
-        let cycle = self.machine.state.cycle.filter(|_| !lathe);
+        let cycle = in_force;
         if !codes && cycle.is_none() {
             return None; // no code gives a word a meaning
         }
@@ -2758,7 +2774,9 @@ impl Checker {
     fn meanings_afresh(&self, b: &BlockView<'_>) -> crate::meaning::Meanings {
         let control = (self.config.family, self.config.haas);
         let words = b.words.iter().map(|w| (w.letter, w.number));
-        crate::convert::block_meanings(&self.config.modal, control, self.machine.state.cycle, words)
+        let modal = &self.config.modal;
+        let cycle = self.machine.state.code_in_force(modal.fanuc_lathe);
+        crate::convert::block_meanings(modal, control, cycle, words)
     }
 
     /// The units a block's lengths and its feed are in, and whether its feed is per

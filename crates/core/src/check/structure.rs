@@ -240,6 +240,14 @@ impl Checker {
             .strip_prefix(b"o<")
             .and_then(|l| l.strip_suffix(b">"));
         let called = label.is_some() && self.called_as.as_deref() == label;
+        // (one after an endsub of another label outside the body's conditions, TG138's, in the
+        // definition still open, is read by neither: called, rs274 returns at that endsub;
+        // run as a program, it skips the definition to its own endsub, the `%` a line it
+        // skips, "File ended with no percent sign or program end" where there is none;
+        // review 57b F3)
+        if self.sub_file == SubFile::Open && self.sub_returned {
+            return;
+        }
         if self.sub_file == SubFile::Closed && called {
             self.sub_percent.get_or_insert((b.line, column));
             return;
@@ -248,7 +256,7 @@ impl Checker {
     }
 
     /// The TG412 of [`Checker::refused_percent`], at `line` and `column`.
-    fn percent_refusal(&mut self, line: usize, column: usize) {
+    pub(super) fn percent_refusal(&mut self, line: usize, column: usize) {
         let why = if self.reading_end.percent_file() {
             "the closing % of a file begun with % stands alone on its line"
         } else {
@@ -1069,6 +1077,7 @@ impl Checker {
             {
                 self.endsub_named_otherwise(b, &name);
                 self.sub_returns.2 = if inside { 0 } else { b.line };
+                self.sub_returned |= !inside;
                 None
             }
             Some((false, _)) if inside => {
@@ -6384,6 +6393,21 @@ mod tests {
         // lines after it make the file a program: rs274 reads the `%` before them
         assert_eq!(run(&format!("{sub}%\nG0 X2\nM2\n")), [(4, 1)]);
         assert_eq!(run(&format!("{sub}%\no<tp> call\nM2\n")), [(4, 1)]);
+        // and past an M2 after it too, as an O-word line there does (review 57b F2: `rs274
+        // -g tp.ngc` stops at the `%`; called, it returns at the endsub)
+        assert_eq!(run(&format!("{sub}%\nM2\nG0 X2\n")), [(4, 1)]);
+        assert_eq!(run(&format!("{sub}%\nM2\n(done)\n\n")), []);
+        // an endsub of another label that ends the file is its return (TG138): a call
+        // never reads the `%` after it, run as a program rs274 seeks `o<tp> endsub` and
+        // ends at the file's end without one, or at its endsub after it (review 57b F3)
+        let other = "o<tp> sub\nG0 X1\no<tq> endsub\n";
+        assert_eq!(run(&format!("{other}%\n")), []);
+        assert_eq!(run(&format!("{other}%\nM2\n")), []);
+        assert_eq!(run(&format!("{other}%\nG0 X2\n")), []);
+        assert_eq!(run(&format!("{other}G0 X2\n%\n")), []);
+        assert_eq!(run(&format!("{other}%\no<tp> endsub\nG0 X2\nM2\n")), []);
+        // (before the return, a call reads it)
+        assert_eq!(run("o<tp> sub\n%\no<tq> endsub\n"), [(2, 1)]);
         // in the body, a call reads it: refused as before; and in a program, where it is
         assert_eq!(run("o<tp> sub\n%\no<tp> endsub\n"), [(2, 1)]);
         assert_eq!(run("G0 X1\n%\nM2\n"), [(2, 1)]);
