@@ -239,6 +239,79 @@ def test_convert_in_two_workers_equals_one(tmp_path):
     assert rows == [str(cam / "big.nc")] + [str(cam / f"p{n}.nc") for n in range(6)]
 
 
+
+@pytest.mark.skipif(not (CORPUS / "shops").is_dir(), reason="shared/corpus/shops is not present")
+def test_convert_of_the_shops_folder_in_two_workers_replacing_its_outputs_equals_one(tmp_path):
+    """Real programs (their source read from each), converted into a folder that already
+    holds their outputs (--force: each commit a rename over the old file, as a batch run again
+    does), with one worker and two: the same files byte for byte, the same report, no
+    temporary file left; and each output is what the file converted alone gives."""
+    from formats.convert import ConvertOptions, convert_file
+    from formats.profile import load_profile
+
+    shops = CORPUS / "shops"
+    args = ["convert", str(shops), "--force", "--to", "iso-mill", "--units", "inch"]
+    outputs = {}
+    for jobs in ("1", "2"):
+        out = tmp_path / f"out{jobs}"
+        for _ in range(2):  # the second run replaces every output the first one made
+            result = _run(*args, "--out-dir", str(out), "-j", jobs)
+        outputs[jobs] = (result.exit_code, result.stdout.replace(str(out), "OUT"),
+                         result.stderr.replace(str(out), "OUT"),
+                         {p.name: p.read_bytes() for p in sorted(out.iterdir())})
+        assert not [p.name for p in out.iterdir() if p.name.endswith(".part")]
+    assert outputs["1"] == outputs["2"]
+    written = outputs["2"][3]
+    assert len(written) >= 20  # (the others are refused, each with its reason, in both)
+    options = ConvertOptions(target=load_profile("iso-mill"), units="inch")
+    for name in sorted(written):
+        alone = tmp_path / "alone" / name
+        convert_file(str(shops / name), str(alone), options)
+        assert alone.read_bytes() == written[name], name
+
+
+def test_temporary_files_made_and_committed_from_many_threads_at_once(tmp_path):
+    """The core's temporary files (``pending_file``) made by several threads while the
+    commit threads name others in the same folder: every output named with its own bytes,
+    each temporary name drawn once, nothing left behind (the list of temporary files is not
+    held across the folder's ``open``, nor a commit's state lock across a thread's wake-up:
+    crates/python/src/commits.rs)."""
+    import threading
+
+    from formats import _core
+
+    out = tmp_path / "out"
+    out.mkdir()
+    for n in range(0, 240, 3):  # a third replaces an output already there
+        (out / f"p{n}.nc").write_text("old\n")
+    commits = _core.Commits(2)
+    made: list[str] = []
+    tickets: list[int] = []
+    lock = threading.Lock()
+
+    def worker(first: int) -> None:
+        for n in range(first, 240, 4):
+            fd, tmp = _core.pending_file(str(out), f"p{n}.nc")
+            os.write(fd, f"program {n}\n".encode() * 50)
+            ticket = commits.submit(fd, tmp, str(out / f"p{n}.nc"), True)
+            with lock:
+                made.append(tmp)
+                tickets.append(ticket)
+
+    threads = [threading.Thread(target=worker, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    for ticket in tickets:
+        commits.wait(ticket)
+    commits.close()
+    assert len(set(made)) == 240
+    assert sorted(p.name for p in out.iterdir()) == sorted(f"p{n}.nc" for n in range(240))
+    for n in range(240):
+        assert (out / f"p{n}.nc").read_bytes() == f"program {n}\n".encode() * 50
+    assert _core.sweep_pending() == 0  # every temporary file named, none listed
+
 @pytest.mark.skipif(not corpus_files(), reason="shared/corpus is not present")
 def test_check_of_the_corpus_in_two_workers_equals_one():
     args = ["check", str(CORPUS), "-p", "fanuc-mill", "--format", "jsonl", "--stats"]

@@ -188,7 +188,10 @@ fn make_pending(folder: &OsStr, hint: &OsStr) -> io::Result<(File, PathBuf)> {
         name.extend_from_slice(hint.as_bytes());
         name.extend_from_slice(format!(".{number:08x}.part").as_bytes());
         let tmp = joined(folder, &name);
-        let mut list = pending();
+        // The list is taken once the file is made, not across its `open`: that waits for the
+        // folder's lock while a commit thread renames in it, and the list held meanwhile
+        // stopped the other workers' files and the commits' `forget` behind it (a sweep
+        // running between the two misses the file as it would miss one made just after it)
         match OpenOptions::new()
             .write(true)
             .create_new(true)
@@ -196,7 +199,7 @@ fn make_pending(folder: &OsStr, hint: &OsStr) -> io::Result<(File, PathBuf)> {
             .open(&tmp)
         {
             Ok(file) => {
-                list.insert(tmp.clone(), std::process::id());
+                pending().insert(tmp.clone(), std::process::id());
                 return Ok((file, tmp));
             }
             Err(error) if error.kind() == io::ErrorKind::AlreadyExists => continue,
@@ -461,7 +464,9 @@ pub(crate) fn sweep_pending() -> usize {
 }
 
 /// A thread of the pool: the jobs in the order they were handed over, until it is closed and
-/// none is left.
+/// none is left. A waiter is notified once the lock is let go: notified with it held, a
+/// woken thread ran only to wait for the lock, and the notifier was put off its core to let
+/// it (`queue` likewise).
 fn serve(shared: Arc<Shared>) {
     let mut state = shared.lock();
     loop {
@@ -469,9 +474,9 @@ fn serve(shared: Arc<Shared>) {
             drop(state);
             let ticket = job.ticket;
             let outcome = commit_job(job);
-            state = shared.lock();
-            state.done.insert(ticket, outcome);
+            shared.lock().done.insert(ticket, outcome);
             shared.finished.notify_all();
+            state = shared.lock();
         } else if state.closed {
             return;
         } else {
@@ -602,6 +607,7 @@ impl Commits {
         }
         state.queue.push_back(job);
         if state.idle > 0 {
+            drop(state); // (notified once the lock is let go: `serve`)
             self.shared.work.notify_one();
         } else if state.threads < self.limit {
             let shared = Arc::clone(&self.shared);
