@@ -95,3 +95,16 @@ def rs274_output(tmp_path: Path, text: str, flags: tuple[str, ...] = ()) -> str:
     run = subprocess.run(["rs274", *flags, "-g", str(path)], capture_output=True, text=True,
                          timeout=30, input="", env={**os.environ, "HOME": str(tmp_path)})
     return run.stdout + run.stderr
+
+
+@pytest.fixture(autouse=True)
+def no_stop_left_by_a_test() -> Iterator[None]:
+    """A stop (^C, SIGTERM, SIGHUP) a test raised in this process is not the next test's: the
+    command's entry point forgets the stops noted before at each start
+    (formats.stops.note_interrupts), but a test that calls a command's click function directly
+    does not pass through it, and its first wait (formats.stops.heed_stops) exited with 128 +
+    the signal a test before had sent (test_workers' SIGHUP, then a conversion: exit 129)."""
+    from formats import stops
+
+    yield
+    stops.TAKEN.clear()
