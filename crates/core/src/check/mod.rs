@@ -2532,9 +2532,12 @@ impl Checker {
         {
             self.linuxcnc_distance_modal(b, before.incremental);
         }
-        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare)
+        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare; or
+        // what a save's later turn in a loop may take)
         if self.config.family == Family::LinuxCnc
-            && (self.letters & bit(b'M') != 0 || self.linuxcnc_feed_saved.is_some())
+            && (self.letters & bit(b'M') != 0
+                || self.linuxcnc_feed_saved.is_some()
+                || self.linuxcnc_feed_loose.is_some() && !self.linuxcnc_open_flow.is_empty())
         {
             self.linuxcnc_feed_restore(b, &before);
         }

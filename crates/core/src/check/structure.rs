@@ -1014,8 +1014,14 @@ impl Checker {
                 (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
                     self.linuxcnc_mode_unsure = true
                 }
-                (Kind::Call, false) => self.linuxcnc_definition_mode_unsure = true,
                 _ => {}
+            }
+            // (a call in a condition or loop: an M70 of a later turn may save what it set)
+            if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
+                self.linuxcnc_feed_loose = self.linuxcnc_feed_loose.map(|_| LooseSaved::UNKNOWN);
+            }
+            if kind == Kind::Call && !main {
+                self.linuxcnc_definition_mode_unsure = true;
             }
         }
         self.surely_ended |= ends_here;
@@ -2861,6 +2867,8 @@ impl Checker {
         let mut modal = false;
         // (and neither an F nor an S word)
         let mut still = true;
+        let mut speed_word = false;
+        let mut m98 = false;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -2880,6 +2888,8 @@ impl Checker {
                 _ => {}
             }
             still &= !matches!(w.letter, b'F' | b'S');
+            speed_word |= w.letter == b'S';
+            m98 |= w.letter == b'M' && code() == Some(98.0);
             modal |= match (w.letter, code()) {
                 (b'G', Some(g)) => {
                     !matches!(g, 0.0 | 1.0 | 2.0 | 3.0 | 4.0 | 5.0 | 5.1 | 5.2 | 5.3)
@@ -2895,6 +2905,18 @@ impl Checker {
         let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
         if units || unread || !in_order {
             self.linuxcnc_feed_saved = None;
+        }
+        // (a feed mode, a speed or an M98 in a condition or loop of the main program, after a
+        // save in one: an M70 of a loop's later turn may save what it set)
+        if self.open_definition.is_none() && !self.linuxcnc_open_flow.is_empty() {
+            if let Some(loose) = self.linuxcnc_feed_loose.as_mut().filter(|l| l.joined) {
+                if mode_set || m98 {
+                    loose.mode = None;
+                }
+                if speed_word || m98 {
+                    loose.speed = None;
+                }
+            }
         }
         // (an M code of a parameter may be an M70 or M73 saving values not known here)
         if unread && self.open_definition.is_none() {
@@ -2933,6 +2955,7 @@ impl Checker {
                     let this = LooseSaved {
                         mode: mode_known.then_some(now.mode),
                         speed: now.speed,
+                        joined: !in_order || unread,
                     };
                     self.linuxcnc_feed_loose = Some(match self.linuxcnc_feed_loose {
                         Some(was) if !in_order || unread => was.merge(this),
@@ -4886,12 +4909,15 @@ fn written(v: Dec, places: u32) -> Option<Dec> {
 pub(super) struct LooseSaved {
     mode: Option<i64>,
     speed: Option<Dec>,
+    /// A save in a condition or loop among them.
+    joined: bool,
 }
 
 impl LooseSaved {
     const UNKNOWN: LooseSaved = LooseSaved {
         mode: None,
         speed: None,
+        joined: true,
     };
 
     /// The values this save and `other` agree on.
@@ -4899,6 +4925,7 @@ impl LooseSaved {
         LooseSaved {
             mode: self.mode.filter(|&m| other.mode == Some(m)),
             speed: self.speed.filter(|&v| other.speed == Some(v)),
+            joined: self.joined || other.joined,
         }
     }
 }
@@ -7197,6 +7224,11 @@ mod tests {
             (
                 "G93 F100\nG20\nM70\nG21\nM72\nG94\nG1 X1 F10\nG93\nG1 X2",
                 Some((11, 4, Rule::NoFeedRate)),
+            ),
+            // a save in a loop: a later turn's may be taken under a mode set after it (G94)
+            (
+                "G95\no1 repeat [2]\nM70\nG94\no1 endrepeat\nM72\nG1 X1 F100",
+                None,
             ),
             // F3: the restore's G17, or an F0 against a rate not known, takes the motion's
             // place

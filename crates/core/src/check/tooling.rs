@@ -1393,7 +1393,7 @@ impl Checker {
     fn linuxcnc_unsure_after(&mut self, codes: &[i64], g_unread: bool, first: &[u32; 26]) -> u32 {
         let all = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
         let named = |a: u8| first[usize::from(a - b'A')] != 0;
-        // the axes known to stand at zero, which a diameter mode or a unit reads alike
+        // the axes known to stand at zero, which either unit reads alike
         let state = &self.machine.state;
         let zero = crate::modal::AXES
             .iter()
@@ -1421,9 +1421,10 @@ impl Checker {
                 // (the diameter mode changes how an X word is read, not the point rs274
                 // holds: Y and Z stay known, `G7` / `G0 X1` / `G38.2 Z0` from Z0 is "Start
                 // point too close to probe point")
-                70 | 80 if !g_unread => bit(b'X') & !zero,
+                70 | 80 if !g_unread => bit(b'X'),
                 // (a zero is the same point in either unit: `G20` / `G38.4 X0` from X0 is
-                // "Start point too close to probe point")
+                // "Start point too close to probe point"; not so after G7/G8, whose X words
+                // the checker reads as they are written: the X a G93 move travels is not known)
                 200 | 210 if !g_unread => all & !zero,
                 c if linuxcnc_unsettles(c) => all,
                 _ => 0,
@@ -4120,11 +4121,10 @@ mod tests {
             ("G41.1 D1\nG40 G30.1", &[]),
             // after a call the checker does not follow, the compensation is not known
             ("G41.1 D1\no<s> call\nG43 H1\nM2\no<s> sub\nG40\no<s> endsub", &[]),
-            // the diameter mode leaves X not known exactly, Y and Z as they were, and an X at
-            // zero where it is (`rs274 -g` refuses each; X2 and X4 in G7 is a miss, not
-            // followed); so does a G20 or G21
+            // the diameter mode leaves X not known exactly, Y and Z as they were (`rs274 -g`
+            // refuses each: the last two are misses); a G20 or G21 leaves an axis at zero
             ("G7\nG0 X1\nG38.2 Z5 F10", &["6: Start point too close to probe point"]),
-            ("G7\nG0 Z1\nG38.2 X0 F10", &["6: Start point too close to probe point"]),
+            ("G7\nG0 Z1\nG38.2 X0 F10", &[]),
             ("G0 X2\nG7\nG0 Z1\nG38.2 X4 F10", &[]),
             ("G20\nG38.4 X0 F10", &["5: Start point too close to probe point"]),
             ("G0 X1\nG20\nG38.4 X0.03937 F10", &[]),
