@@ -821,6 +821,28 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "F100\nM70\nG93\nM72 G1 X1\nG94 G2 X2 Y0 I1 J0 F100\nM2\n", 0, "accepted"),
     ("G1 after M72 restores F0.04 written F0.0",
      HEAD + "F0.04\nM70\nG95 F1\nM72\nG1 X1\nM2\n", 7, "error"),
+    # review 57d, F2-F4 (lcnc58): an M72 whose save is not followed leaves what it restores
+    # unknown, save where every save that may be in force agrees; the restore may take the
+    # place of its block's motion; it restores the spindle and the compensation too
+    ("G1 in G95 after M72 whose save an if between unfollows",
+     HEAD + "F100\nM70\no1 if [1]\nF200\no1 endif\nG95 F200\nM72\nG1 X1\nM2\n", 0,
+     "accepted"),
+    ("cycle after M72 G95 whose M70 stands in an if",
+     HEAD + "F100\no1 if [1]\nM70\no1 endif\nM72 G95\nG81 X1 Z-1 R1\nM2\n", 0, "accepted"),
+    ("G1 in G95 after M72 restores the S0 of an M70 in an if",
+     HEAD + "o1 if [1]\nM70\no1 endif\nM72\nG95 F0.1\nG1 X1\nM2\n", 8, "error"),
+    ("G1 after an M72 in an if, G93 whether it runs or not",
+     HEAD + "G93\nM70\no1 if [1]\nM72\no1 endif\nG1 X1\nM2\n", 8, "error"),
+    ("G1 beside an M72 restoring G17", HEAD + "M70\nG18\nM72 G1 X1\nM2\n", 0, "accepted"),
+    ("G1 after M72 of a save in a loop whose later turn runs under G94",
+     HEAD + "G95\no1 repeat [2]\nM70\nG94\no1 endrepeat\nM72\nG1 X1 F100\nM2\n", 0,
+     "accepted"),
+    ("G33 after M72 restores M3",
+     HEAD + "S1000 M3\nM70\nM5\nM72\nG33 Z-1 K0.1\nM2\n", 0, "accepted"),
+    ("cycle after M72 restores G40",
+     HEAD + "F100\nM70\nG41.1 D0.1\nG1 X1\nM72\nG81 X1 Z-1 R1\nM2\n", 0, "accepted"),
+    ("G33 after M72 and M5", HEAD + "S1000 M3\nM70\nM72\nM5\nG33 Z-1 K0.1\nM2\n", 7,
+     "error"),
     # review 53, F13 (lcnc57b): G17.1-G19.1 under compensation with no compensated move held
     # stops rs274 at the next move only
     ("G1 in G18.1 under compensation with no move before",

@@ -90,6 +90,10 @@ BOTH = [
     "G1 after M72 restores F0.04 written F0.0",
     # review 57d, F1 (lcnc57b): the dropped M72 G1 leaves the tool where it was
     "arc from where a dropped M72 G1 found the tool, radius differs",
+    # review 57d, F2, F4 (lcnc58): what every save agrees on after an M72 not followed; an
+    # M5 after the M72 stops the spindle it restored
+    "G1 in G95 after M72 restores the S0 of an M70 in an if",
+    "G1 after an M72 in an if, G93 whether it runs or not", "G33 after M72 and M5",
     # TG412: rs274's own refusals
     # review 53, F13 (lcnc57b): the move after G18.1 under compensation
     "G1 in G18.1 under compensation with no move before",
@@ -277,6 +281,12 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "spline beside an M72 that restores G94 F100",
        # review 57d, F1; review 53, F13 (lcnc57b)
        "arc from where a dropped M72 G1 found the tool",
+       # review 57d, F2-F4 (lcnc58): an M72 not followed, its block's motion, its spindle
+       # and compensation
+       "G1 in G95 after M72 whose save an if between unfollows",
+       "cycle after M72 G95 whose M70 stands in an if", "G1 beside an M72 restoring G17",
+       "G1 after M72 of a save in a loop whose later turn runs under G94",
+       "G33 after M72 restores M3", "cycle after M72 restores G40",
        "G18.1 under compensation with no move before its G40",
        "R arc of X after a while left by a break in G19",
        # review 55c, F7: the elseif after a known-true branch with a call never runs

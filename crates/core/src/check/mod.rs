@@ -1084,11 +1084,14 @@ pub struct Checker {
     /// M73 saved, where each is known ([`structure::FeedSaved`]); None where no save is
     /// followed.
     linuxcnc_feed_saved: Option<structure::FeedSaved>,
-    /// LinuxCNC: the block (its count in `stats.blocks`) whose M72 restore of the feed was
-    /// followed: its mode is known, not `linuxcnc_mode_restored`.
+    /// LinuxCNC: the feed mode and speed every main program's M70 or M73 that may be the
+    /// one in force agrees on ([`structure::LooseSaved`]); None before any.
+    linuxcnc_feed_loose: Option<structure::LooseSaved>,
+    /// LinuxCNC: the block (its count in `stats.blocks`) whose M72 restored the feed, the
+    /// restore followed or its values made unknown: the block's G93-G95 and F ran before it.
     linuxcnc_feed_restored_at: Option<usize>,
-    /// LinuxCNC: the block (its count) whose M72's restore surely ran a block of its own,
-    /// which rs274 2.9.0 runs in place of the M72's: its motion does not run
+    /// LinuxCNC: the block (its count) of an M72, whose restore may run a block of its own,
+    /// which rs274 2.9.0 runs in place of the M72's: its motion is not judged
     /// ([`Checker::linuxcnc_feed_restore`]).
     linuxcnc_m72_dropped: Option<usize>,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
@@ -1234,10 +1237,6 @@ pub struct Checker {
     /// unconditionally. The probe's and cycles' feed mode refusals are not judged meanwhile
     /// (review 16c, 17).
     linuxcnc_mode_unsure: bool,
-    /// LinuxCNC: an M72 ran since the last G93/G94/G95: it restored the feed mode an M70 or
-    /// M73 saved, which the checker does not follow, so a spline's feed is not judged
-    /// (review 56c, F2, F9). The other feed refusals judge the mode the lines give, as before.
-    linuxcnc_mode_restored: bool,
     /// LinuxCNC: the main program's distance mode (G90/G91) not known here: after a call
     /// whose G90/G91 after its return the checker does not know ([`Checker::call_mode_lost`]),
     /// after the condition or loop a G90/G91 that changed it was written in closes, or an M72
@@ -1550,7 +1549,6 @@ impl Checker {
             linuxcnc_skipping: None,
             linuxcnc_subs_defined: HashMap::new(),
             linuxcnc_mode_unsure: false,
-            linuxcnc_mode_restored: false,
             linuxcnc_distance_unsure: false,
             linuxcnc_distance_from: None,
             linuxcnc_distance_in: 0,
@@ -1601,6 +1599,7 @@ impl Checker {
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
             linuxcnc_feed_saved: None,
+            linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
             linuxcnc_nurbs: tooling::Nurbs::default(),
@@ -2558,9 +2557,12 @@ impl Checker {
         {
             self.linuxcnc_distance_modal(b, before.incremental);
         }
-        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare)
+        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare; or
+        // what a save's later turn in a loop may take)
         if self.config.family == Family::LinuxCnc
-            && (self.letters & bit(b'M') != 0 || self.linuxcnc_feed_saved.is_some())
+            && (self.letters & bit(b'M') != 0
+                || self.linuxcnc_feed_saved.is_some()
+                || self.linuxcnc_feed_loose.is_some() && !self.linuxcnc_open_flow.is_empty())
         {
             self.linuxcnc_feed_restore(b, &before);
         }

@@ -340,7 +340,6 @@ impl Checker {
         self.linuxcnc_skipping = None;
         self.linuxcnc_subs_defined.clear();
         self.linuxcnc_mode_unsure = false;
-        self.linuxcnc_mode_restored = false;
         self.linuxcnc_distance_unsure = false;
         self.linuxcnc_distance_from = None;
         self.linuxcnc_distance_in = 0;
@@ -365,6 +364,7 @@ impl Checker {
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
         self.linuxcnc_rate = Some(Dec::ZERO);
         self.linuxcnc_feed_saved = None;
+        self.linuxcnc_feed_loose = None;
         self.linuxcnc_feed_restored_at = None;
         self.linuxcnc_m72_dropped = None;
         self.linuxcnc_nurbs = super::tooling::Nurbs::default();
@@ -1026,8 +1026,14 @@ impl Checker {
                 (Kind::Call, true) if !self.linuxcnc_call_keeps_mode(text) => {
                     self.linuxcnc_mode_unsure = true
                 }
-                (Kind::Call, false) => self.linuxcnc_definition_mode_unsure = true,
                 _ => {}
+            }
+            // (a call in a condition or loop: an M70 of a later turn may save what it set)
+            if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
+                self.linuxcnc_feed_loose = self.linuxcnc_feed_loose.map(|_| LooseSaved::UNKNOWN);
+            }
+            if kind == Kind::Call && !main {
+                self.linuxcnc_definition_mode_unsure = true;
             }
         }
         self.surely_ended |= ends_here;
@@ -2845,8 +2851,8 @@ impl Checker {
     /// gives its F. The speed after is the saved one. The M70's or M72's own G93-G95, F and
     /// S run before it (LinuxCNC G-code overview, "G-code Order of Execution"). That restore
     /// block takes the place of the M72's in rs274 2.9.0: where it surely runs (the feed
-    /// mode, the rate or the speed differ) the M72 block's motion does not
-    /// (`linuxcnc_m72_dropped`; review 56c, F5).
+    /// mode, the rate or the speed differ) the M72 block's motion does not (review 56c, F5);
+    /// where it may, the motion may not (`linuxcnc_m72_motion_dropped`).
     ///
     /// Followed only where nothing is guessed: the M70 and the M72 both run by the main
     /// program where they stand (no condition, loop or body: a loop's second turn saves
@@ -2855,9 +2861,8 @@ impl Checker {
     /// between, no G or M code written by a parameter in either block. A rate or speed not
     /// known (an F of a parameter, a G93 move's length times F, a call: F1-F4), or one
     /// `%.1f`/`%.0f` would round, leaves the F or the S after the M72 unknown wherever the
-    /// restore could write it. Elsewhere an M72 leaves the feed mode and feed as the lines
-    /// give them, and a spline's feed is not judged until the next G93-G95
-    /// (`linuxcnc_mode_restored`).
+    /// restore could write it. Elsewhere the feed mode, the rate and the speed after an M72
+    /// are not known (`linuxcnc_feed_unfollowed`).
     #[cold]
     #[inline(never)]
     pub(super) fn linuxcnc_feed_restore(&mut self, b: &BlockView<'_>, before: &super::Before) {
@@ -2870,6 +2875,13 @@ impl Checker {
         let mut mode_set = false;
         let mut zeroed = false;
         let mut f_at = None;
+        // (a G or M code that may change a modal group the restore writes: any but a motion
+        // of G0-G3 or G5-G5.3, whose group it does not restore, a G4, and M70-M73)
+        let mut modal = false;
+        // (and neither an F nor an S word)
+        let mut still = true;
+        let mut speed_word = false;
+        let mut m98 = false;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -2888,16 +2900,47 @@ impl Checker {
                 (b'F', _) if f_at.is_none() => f_at = Some(i),
                 _ => {}
             }
+            still &= !matches!(w.letter, b'F' | b'S');
+            speed_word |= w.letter == b'S';
+            m98 |= w.letter == b'M' && code() == Some(98.0);
+            modal |= match (w.letter, code()) {
+                (b'G', Some(g)) => {
+                    !matches!(g, 0.0 | 1.0 | 2.0 | 3.0 | 4.0 | 5.0 | 5.1 | 5.2 | 5.3)
+                }
+                (b'M', Some(m)) => !matches!(m, 70.0 | 71.0 | 72.0 | 73.0),
+                _ => false,
+            };
+        }
+        if let Some(saved) = self.linuxcnc_feed_saved.as_mut() {
+            saved.quiet &= !modal;
+            saved.still &= !modal && still;
         }
         let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
         if units || unread || !in_order {
             self.linuxcnc_feed_saved = None;
         }
-        let Some(m7) = m7.filter(|_| in_order && !unread) else {
+        // (a feed mode, a speed or an M98 in a condition or loop of the main program, after a
+        // save in one: an M70 of a loop's later turn may save what it set)
+        if self.open_definition.is_none() && !self.linuxcnc_open_flow.is_empty() {
+            if let Some(loose) = self.linuxcnc_feed_loose.as_mut().filter(|l| l.joined) {
+                if mode_set || m98 {
+                    loose.mode = None;
+                }
+                if speed_word || m98 {
+                    loose.speed = None;
+                }
+            }
+        }
+        // (an M code of a parameter may be an M70 or M73 saving values not known here)
+        if unread && self.open_definition.is_none() {
+            self.linuxcnc_feed_loose = Some(LooseSaved::UNKNOWN);
+        }
+        let Some(m7) = m7 else {
             return;
         };
+        let followed = in_order && !unread;
         let state = &self.machine.state;
-        let mode_known = mode_set || !self.linuxcnc_mode_unsure && !self.linuxcnc_mode_restored;
+        let mode_known = mode_set || !self.linuxcnc_mode_unsure;
         // rs274's rate where the M code runs: the block's G94/G95 and F before it
         let mut rate = self.linuxcnc_rate;
         if zeroed {
@@ -2911,42 +2954,133 @@ impl Checker {
             mode: state.feed_mode,
             rate,
             speed,
+            quiet: !modal,
+            still: !modal && still,
         };
+        let main = self.open_definition.is_none();
         match m7 {
-            70 | 73 => self.linuxcnc_feed_saved = mode_known.then_some(now),
-            72 if mode_known && matches!(self.linuxcnc_saved, Saved::Valid(_)) => {
-                if let Some(saved) = self.linuxcnc_feed_saved {
-                    self.linuxcnc_feed_restored(saved, now);
-                    if self.linuxcnc_m72_dropped == Some(self.stats.blocks) {
-                        self.linuxcnc_m72_motion_dropped(b, before);
+            70 | 73 => {
+                if followed {
+                    self.linuxcnc_feed_saved = mode_known.then_some(now);
+                }
+                // (the values every save that may be the one in force agrees on)
+                if main {
+                    let this = LooseSaved {
+                        mode: mode_known.then_some(now.mode),
+                        speed: now.speed,
+                        joined: !in_order || unread,
+                    };
+                    self.linuxcnc_feed_loose = Some(match self.linuxcnc_feed_loose {
+                        Some(was) if !in_order || unread => was.merge(this),
+                        _ => this,
+                    });
+                }
+            }
+            72 => {
+                let saved = self
+                    .linuxcnc_feed_saved
+                    .filter(|_| followed && mode_known)
+                    .filter(|_| matches!(self.linuxcnc_saved, Saved::Valid(_)));
+                let dropped = match saved {
+                    Some(saved) => self.linuxcnc_feed_restored(saved, now),
+                    None => {
+                        self.linuxcnc_feed_unfollowed(now, followed, mode_known);
+                        None
                     }
-                    // (a G93 move of the block, where it runs: its length times F)
-                    if self.machine.state.feed_mode == 93
-                        && f_at.is_some()
-                        && self.linuxcnc_m72_dropped != Some(self.stats.blocks)
-                    {
-                        self.linuxcnc_rate = None;
-                        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Unknown;
-                    }
+                };
+                if dropped != Some(false) {
+                    self.linuxcnc_m72_dropped = Some(self.stats.blocks);
+                    self.linuxcnc_m72_motion_dropped(b, before, dropped == Some(true));
+                }
+                // (a G93 move of the block, where it may run: its length times F)
+                if saved.is_some()
+                    && self.machine.state.feed_mode == 93
+                    && f_at.is_some()
+                    && dropped != Some(true)
+                {
+                    self.linuxcnc_rate = None;
+                    self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Unknown;
                 }
             }
             _ => {}
         }
     }
 
-    /// [`Checker::linuxcnc_feed_restore`]: the M72 block whose motion rs274 2.9.0 does not
-    /// run (the restore's block ran in its place): the tool stays where the block found it.
-    /// X, Y and Z go back to the block's start; another axis the block writes is not known
-    /// (review 57d, F1: `M70` / `G93` / `M72 G1 X1` / `G94 G2 X2 Y0 I0.5 J0 F100` is rs274's
-    /// "Radius to end of arc differs", the arc starting at X0).
-    fn linuxcnc_m72_motion_dropped(&mut self, b: &BlockView<'_>, before: &super::Before) {
+    /// [`Checker::linuxcnc_feed_restore`]: an M72 whose save the checker does not follow
+    /// (its M70 or M73 in a condition or a loop, a G20/G21 or a call between, a code of a
+    /// parameter, the M72 itself in a condition or a body), where the state is `now` (its
+    /// feed mode known: `mode_known`). Its restore runs after the block's own G93-G95, F and
+    /// S (`runs`: surely, where the M72 stands in the main program's order; else it may not
+    /// run). rs274's feed rate after it is not known; the feed mode and the speed are
+    /// where every save that may be the one in force agrees on them and the M72 surely runs,
+    /// or agrees with `now` (`linuxcnc_feed_loose`); elsewhere not known until the program
+    /// sets them (review 57d, F2: `F100` / `M70` / `o1 if [1]` / `F200` / `o1 endif` / `G95
+    /// F200` / `M72` / `G1 X1` runs in `rs274 -g`, the restore's `G94 F100.0` in force, and
+    /// was refused as a G95 feed with no spindle speed).
+    fn linuxcnc_feed_unfollowed(&mut self, now: FeedSaved, runs: bool, mode_known: bool) {
+        self.linuxcnc_rate = None;
+        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Unknown;
+        // (the block's G93-G95 and F ran before the M72: tooling reads them no more)
+        self.linuxcnc_feed_restored_at = Some(self.stats.blocks);
+        let state = &mut self.machine.state;
+        state.unknown |= crate::modal::bit(b'F');
+        if self.open_definition.is_some() {
+            state.unknown |= crate::modal::bit(b'S');
+            self.linuxcnc_definition_mode_unsure = true;
+            return;
+        }
+        let loose = self.linuxcnc_feed_loose.unwrap_or(LooseSaved::UNKNOWN);
+        let mode = loose.mode.filter(|&m| runs || mode_known && m == now.mode);
+        match mode {
+            Some(m) => {
+                state.feed_mode = m;
+                self.linuxcnc_mode_unsure = false;
+            }
+            None => self.linuxcnc_mode_unsure = true,
+        }
+        let speed = match (loose.speed, now.speed) {
+            (Some(s), Some(n)) if s == n => Some(s),
+            (Some(s), Some(_)) if runs => written(s, 0),
+            (Some(s), None) if runs => written(s, 0).filter(|&w| w == s),
+            _ => None,
+        };
+        match speed {
+            Some(v) => {
+                state.speed = Some(v);
+                state.unknown &= !crate::modal::bit(b'S');
+            }
+            None => state.unknown |= crate::modal::bit(b'S'),
+        }
+    }
+
+    /// [`Checker::linuxcnc_feed_restore`]: the M72 block, whose motion rs274 2.9.0 does not
+    /// run where the restore writes a block of its own (any modal group saved that differs:
+    /// feed mode, rate, speed, spindle, plane, units, distance mode, compensation, coolant),
+    /// which runs in its place. Where that surely happens (`surely`: the feed mode, the rate
+    /// or the speed differ), the tool stays where the block found it: X, Y and Z go back to
+    /// the block's start (review 57d, F1: `M70` / `G93` / `M72 G1 X1` / `G94 G2 X2 Y0 I0.5 J0
+    /// F100` is rs274's "Radius to end of arc differs", the arc starting at X0). Elsewhere the
+    /// checker does not know whether the motion runs (review 57d, F3: `M70` / `G18` / `M72 G1
+    /// X1` runs in `rs274 -g` with no feed rate, the restore's `G17` in its place): each axis
+    /// whose end may differ from its start is not known. Either way its motion is not judged
+    /// (`linuxcnc_m72_dropped`).
+    fn linuxcnc_m72_motion_dropped(
+        &mut self,
+        b: &BlockView<'_>,
+        before: &super::Before,
+        surely: bool,
+    ) {
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
             let mask = crate::modal::bit(axis);
-            if i < 3 {
+            if i < 3 && surely {
                 state.position[i] = before.xyz[i];
                 state.unknown = state.unknown & !mask | before.unknown & mask;
-            } else if b.words.iter().any(|w| w.letter == axis) {
+            } else if i < 3
+                && (state.position[i] != before.xyz[i]
+                    || (state.unknown ^ before.unknown) & mask != 0)
+                || i >= 3 && b.words.iter().any(|w| w.letter == axis)
+            {
                 state.position[i] = None;
                 state.unknown |= mask;
             }
@@ -2954,31 +3088,22 @@ impl Checker {
     }
 
     /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
-    /// state is `now`, its restore applied.
-    fn linuxcnc_feed_restored(&mut self, saved: FeedSaved, now: FeedSaved) {
+    /// state is `now`, its restore applied; whether the restore surely runs a block of its
+    /// own (the feed mode, the rate or the speed differ: `Some(true)`) or surely none
+    /// (they are the saved ones and no other modal code ran between: `Some(false)`).
+    fn linuxcnc_feed_restored(&mut self, saved: FeedSaved, now: FeedSaved) -> Option<bool> {
         use super::tooling::LinuxCncFeed;
-        // (the value ` F%.1f` or ` S%.0f` writes: the saved one rounded to one decimal or
-        // none; not known on a half, where the double's binary value decides the way: review
-        // 57d, F6, `F0.04` saved is written `F0.0`, a zero rate)
-        let written = |v: Dec, places: u32| {
-            if v.scale <= places {
-                return Some(v);
-            }
-            let d = crate::decimal::pow10(v.scale - places)?;
-            let (q, r) = (v.mantissa.div_euclid(d), v.mantissa.rem_euclid(d));
-            (2 * r != d).then(|| Dec {
-                mantissa: crate::decimal::round_quotient(q, r, d, false).0,
-                scale: places,
-            })
-        };
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
         // (the restore surely runs a block of its own: the M72's motion does not run)
-        if saved.mode != now.mode
+        let surely = saved.mode != now.mode
             || differs(saved.rate, now.rate) == Some(true)
-            || differs(saved.speed, now.speed) == Some(true)
-        {
-            self.linuxcnc_m72_dropped = Some(self.stats.blocks);
-        }
+            || differs(saved.speed, now.speed) == Some(true);
+        let none = saved.still && now.still
+            || saved.quiet
+                && now.quiet
+                && saved.mode == now.mode
+                && differs(saved.rate, now.rate) == Some(false)
+                && differs(saved.speed, now.speed) == Some(false);
         // rs274's rate after the restore, where known: Some(Some(v)); Some(None): not known;
         // None: a G93 restored, each block gives its F
         let rate: Option<Option<Dec>> = if saved.mode == 93 {
@@ -3038,9 +3163,9 @@ impl Checker {
             Some(_) => LinuxCncFeed::Set,
             None => LinuxCncFeed::Unknown,
         };
-        self.linuxcnc_mode_restored = false;
         self.linuxcnc_mode_unsure = false;
         self.linuxcnc_feed_restored_at = Some(self.stats.blocks);
+        (surely || none).then_some(surely)
     }
 
     /// LinuxCNC: a subroutine file (its one definition, called from another file): the
@@ -4775,6 +4900,49 @@ impl Saved {
     }
 }
 
+/// LinuxCNC's M72 restore: the value rs274 2.9.0's ` F%.1f` or ` S%.0f` writes of a saved
+/// `v` (`places` decimals), rounded, or None on a half, where the double's binary value
+/// decides the way (review 57d, F6: `F0.04` saved is written `F0.0`, a zero rate).
+fn written(v: Dec, places: u32) -> Option<Dec> {
+    if v.scale <= places {
+        return Some(v);
+    }
+    let d = crate::decimal::pow10(v.scale - places)?;
+    let (q, r) = (v.mantissa.div_euclid(d), v.mantissa.rem_euclid(d));
+    (2 * r != d).then(|| Dec {
+        mantissa: crate::decimal::round_quotient(q, r, d, false).0,
+        scale: places,
+    })
+}
+
+/// LinuxCNC: what every M70 or M73 of the main program that may be the one in force saved
+/// (one in a condition or loop joins the one before it): the feed mode and the speed, each
+/// None where not known or where two such saves differ ([`Checker::linuxcnc_feed_unfollowed`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct LooseSaved {
+    mode: Option<i64>,
+    speed: Option<Dec>,
+    /// A save in a condition or loop among them.
+    joined: bool,
+}
+
+impl LooseSaved {
+    const UNKNOWN: LooseSaved = LooseSaved {
+        mode: None,
+        speed: None,
+        joined: true,
+    };
+
+    /// The values this save and `other` agree on.
+    fn merge(self, other: LooseSaved) -> LooseSaved {
+        LooseSaved {
+            mode: self.mode.filter(|&m| other.mode == Some(m)),
+            speed: self.speed.filter(|&v| other.speed == Some(v)),
+            joined: self.joined || other.joined,
+        }
+    }
+}
+
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
 /// ([`Checker::linuxcnc_feed_restore`]), or the state an M72 restores from: the feed mode,
 /// rs274's feed rate and the speed (None: not known).
@@ -4783,6 +4951,12 @@ pub(super) struct FeedSaved {
     mode: i64,
     rate: Option<Dec>,
     speed: Option<Dec>,
+    /// No G or M code since the save (or in the save's block) that may change another
+    /// modal group the restore writes: where the feed mode, rate and speed are the saved
+    /// ones, the restore writes nothing and the M72 block's motion runs.
+    quiet: bool,
+    /// `quiet`, and no F or S word either: the restore writes nothing, whatever the values.
+    still: bool,
 }
 
 /// LinuxCNC: the distance mode through the open definition's body, read in its order
@@ -7032,6 +7206,82 @@ mod tests {
                 .map(|f| (f.line, f.rule));
             let expected = expected.map(|(_, rule)| (last, rule));
             assert_eq!(got, expected, "{body}");
+        }
+    }
+
+    /// Review 57d, F2-F4: an M72 whose save is not followed leaves the feed mode, rs274's
+    /// feed rate and the speed unknown, save where every save that may be in force agrees;
+    /// its block's motion is not judged where the restore may run a block in its place; the
+    /// spindle's direction and the compensation after any M72 are not known. Each case run
+    /// in `rs274 -g` (2.9.0): None where it runs, the line and column of its error.
+    #[test]
+    fn linuxcnc_m72_not_followed_leaves_what_it_restores_unknown() {
+        let head = "G21 G90 G17 G94\nG0 X0 Y0 Z0\n";
+        let refused = Rule::LinuxCncRefuses;
+        // (the line, column and rule of the first feed refusal)
+        type At = Option<(usize, usize, Rule)>;
+        let cases: &[(&str, At)] = &[
+            // F2: a save not followed (an `if` between, the M70 in one): rs274 runs each
+            (
+                "F100\nM70\no1 if [1]\nF200\no1 endif\nG95 F200\nM72\nG1 X1",
+                None,
+            ),
+            (
+                "F100\no1 if [1]\nM70\no1 endif\nG93 G1 X2 F10\nM72\nG1 X1",
+                None,
+            ),
+            (
+                "F100\no1 if [1]\nM70\no1 endif\nM72 G95\nG81 X1 Z-1 R1",
+                None,
+            ),
+            // where every save agrees: the mode G93 ("Cannot feed with zero feed rate": the
+            // F of a G93 block is no rate of the cycle), the speed S0, an M72 in an `if` that
+            // leaves G93 whether it runs or not ("F word missing with inverse time g1 move")
+            (
+                "G93 F100\no1 if [1]\nM70\no1 endif\nM72 G94\nG81 X1 Z-1 R1 F50",
+                Some((8, 1, refused)),
+            ),
+            (
+                "o1 if [1]\nM70\no1 endif\nM72\nG95 F0.1\nG1 X1",
+                Some((8, 4, refused)),
+            ),
+            (
+                "G93\nM70\no1 if [1]\nM72\no1 endif\nG1 X1",
+                Some((8, 4, Rule::InverseTimeWithoutFeed)),
+            ),
+            (
+                "G93 F100\nG20\nM70\nG21\nM72\nG94\nG1 X1 F10\nG93\nG1 X2",
+                Some((11, 4, Rule::NoFeedRate)),
+            ),
+            // a save in a loop: a later turn's may be taken under a mode set after it (G94)
+            (
+                "G95\no1 repeat [2]\nM70\nG94\no1 endrepeat\nM72\nG1 X1 F100",
+                None,
+            ),
+            // F3: the restore's G17, or an F0 against a rate not known, takes the motion's
+            // place
+            ("M70\nG18\nM72 G1 X1", None),
+            ("F[50*2]\nM70\nF0\nM72 G1 X1", None),
+            // F4: the spindle and the compensation restored; an M5 after the M72 stops it
+            ("S1000 M3\nM70\nM5\nM72\nG33 Z-1 K0.1", None),
+            ("F100\nM70\nG41.1 D0.1\nG1 X1\nM72\nG81 X1 Z-1 R1", None),
+            (
+                "S1000 M3\nM70\nM72\nM5\nG33 Z-1 K0.1",
+                Some((7, 1, refused)),
+            ),
+        ];
+        let judged = [
+            Rule::NoFeedRate,
+            Rule::InverseTimeWithoutFeed,
+            Rule::LinuxCncRefuses,
+        ];
+        for (body, expected) in cases {
+            let text = format!("{head}{body}\nM2\n");
+            let got = check(of_family(Family::LinuxCnc), &text)
+                .into_iter()
+                .find(|f| judged.contains(&f.rule))
+                .map(|f| (f.line, f.column, f.rule));
+            assert_eq!(got, *expected, "{body}");
         }
     }
 }

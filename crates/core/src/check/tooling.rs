@@ -810,7 +810,7 @@ impl Checker {
         let ms = &held_m[..n_m];
         // rs274's feed rate: a G94 or G95 zeroes it, then the block's F sets it unless G93 is
         // in force after the block (interp_execute.cc's order)
-        // (a block whose M72 restore was followed: its rate is the restore's)
+        // (a block whose M72 restored the feed: its rate and mode are the restore's)
         let restored = self.linuxcnc_feed_restored_at == Some(self.stats.blocks);
         if codes.iter().any(|&c| c == 940 || c == 950) && !restored {
             self.linuxcnc_feed_rate = LinuxCncFeed::Zero;
@@ -820,8 +820,7 @@ impl Checker {
         // a condition or loop it may or may not be in force after it (review 16c, 17)
         // (in a definition's body, where its own G93/G94/G95 outside its conditions and loops
         // sets it: review 19)
-        if codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) {
-            self.linuxcnc_mode_restored = false;
+        if codes.iter().any(|&c| matches!(c, 930 | 940 | 950)) && !restored {
             if self.open_definition.is_none() {
                 self.linuxcnc_mode_unsure = !self.linuxcnc_open_flow.is_empty();
             } else {
@@ -832,12 +831,6 @@ impl Checker {
         if ms.contains(&98) {
             self.linuxcnc_mode_unsure = true;
             self.linuxcnc_definition_mode_unsure = true;
-        }
-        // (an M72 restores the feed mode M70 or M73 saved, after the block's G93-G95: the
-        // LinuxCNC G-code overview, "G-code Order of Execution"; which one the checker does
-        // not follow, so a spline's feed waits for the next G93-G95: review 56c, F2, F9)
-        if ms.contains(&72) && !restored {
-            self.linuxcnc_mode_restored = true;
         }
         let f_at = first[usize::from(b'F' - b'A')] as usize;
         if !restored {
@@ -1007,7 +1000,17 @@ impl Checker {
             read_refusal,
         };
         // after a call or jump the checker does not follow, the spindle direction and the
-        // compensation the call may have set are unknown until the program sets them again
+        // compensation the call may have set are unknown until the program sets them again;
+        // so after an M72, which restores the direction and the cutter compensation (its
+        // G41/G42 and D) an M70 or M73 saved, which the checker does not keep: after the
+        // block's M3-M5, before its G40-G42 (the G-code overview's "G-code Order of
+        // Execution"; review 57d, F4: `S1000 M3` / `M70` / `M5` / `M72` / `G33 Z-1 K0.1` runs
+        // in `rs274 -g`, and `G41.1 D0.1` / `M70` / `G40` / `M72` / `G81 ...` is "Cannot use
+        // canned cycles with cutter compensation on")
+        let m72 = ms.contains(&72);
+        if m72 {
+            self.linuxcnc_compensation_unknown = true;
+        }
         if codes
             .iter()
             .any(|&c| matches!(c, 400 | 410 | 411 | 420 | 421))
@@ -1017,9 +1020,10 @@ impl Checker {
         let spindle_set = ms.iter().any(|&m| matches!(m, 3..=5));
         if spindle_set {
             self.linuxcnc_spindle_unknown = false;
-        } else if n_m < m_words.min(held_m.len()) {
-            // an M code of unknown value (`M[1+2]`, `M#1`) may start, stop or change the
-            // spindle's tool: its direction is unknown until M3, M4 or M5
+        }
+        if m72 || !spindle_set && n_m < m_words.min(held_m.len()) {
+            // (or an M code of unknown value, `M[1+2]`, `M#1`: it may start, stop or change
+            // the spindle's tool; the direction is unknown until M3, M4 or M5)
             self.linuxcnc_spindle_unknown = true;
         }
         // M6 stops the spindle; an M3, M4 or M5 of its block comes after it (rs274ngc's
@@ -1389,6 +1393,15 @@ impl Checker {
     fn linuxcnc_unsure_after(&mut self, codes: &[i64], g_unread: bool, first: &[u32; 26]) -> u32 {
         let all = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
         let named = |a: u8| first[usize::from(a - b'A')] != 0;
+        // the axes known to stand at zero, which either unit reads alike
+        let state = &self.machine.state;
+        let zero = crate::modal::AXES
+            .iter()
+            .enumerate()
+            .filter(|&(i, &a)| {
+                state.position[i].is_some_and(|v| v.is_zero()) && !state.is_unknown(a)
+            })
+            .fold(0, |m, (_, &a)| m | bit(a));
         let mut unsure = 0;
         for &c in codes {
             unsure |= match c {
@@ -1409,6 +1422,10 @@ impl Checker {
                 // holds: Y and Z stay known, `G7` / `G0 X1` / `G38.2 Z0` from Z0 is "Start
                 // point too close to probe point")
                 70 | 80 if !g_unread => bit(b'X'),
+                // (a zero is the same point in either unit: `G20` / `G38.4 X0` from X0 is
+                // "Start point too close to probe point"; not so after G7/G8, whose X words
+                // the checker reads as they are written: the X a G93 move travels is not known)
+                200 | 210 if !g_unread => all & !zero,
                 c if linuxcnc_unsettles(c) => all,
                 _ => 0,
             };
@@ -1880,10 +1897,7 @@ impl Checker {
         words: &Written<'_>,
         runs: Option<i64>,
     ) -> Option<(String, u8)> {
-        if matches!(runs, Some(50 | 51))
-            && !self.linuxcnc_feed_mode_unsure()
-            && !self.linuxcnc_mode_restored
-        {
+        if matches!(runs, Some(50 | 51)) && !self.linuxcnc_feed_mode_unsure() {
             let state = &self.machine.state;
             match state.feed_mode {
                 93 if !words.has(b'F') => {
@@ -4107,9 +4121,13 @@ mod tests {
             ("G41.1 D1\nG40 G30.1", &[]),
             // after a call the checker does not follow, the compensation is not known
             ("G41.1 D1\no<s> call\nG43 H1\nM2\no<s> sub\nG40\no<s> endsub", &[]),
-            // the diameter mode leaves X not known exactly, Y and Z as they were
+            // the diameter mode leaves X not known exactly, Y and Z as they were (`rs274 -g`
+            // refuses each: the last two are misses); a G20 or G21 leaves an axis at zero
             ("G7\nG0 X1\nG38.2 Z5 F10", &["6: Start point too close to probe point"]),
             ("G7\nG0 Z1\nG38.2 X0 F10", &[]),
+            ("G0 X2\nG7\nG0 Z1\nG38.2 X4 F10", &[]),
+            ("G20\nG38.4 X0 F10", &["5: Start point too close to probe point"]),
+            ("G0 X1\nG20\nG38.4 X0.03937 F10", &[]),
             // after the block's end the lines run unconditionally again: judged (review 17;
             // an `if` in a definition opens nothing in the main program)
             (
