@@ -439,7 +439,6 @@ impl Checker {
                 } else {
                     "G65"
                 };
-                self.offsets_written = true;
                 self.call_unknown(format!("{code} {}", w.token()), b.line, w.column);
             }
             return;
@@ -460,7 +459,6 @@ impl Checker {
                 self.early_call(super::called::Key::Number(number), call, (b.line, column))
             };
         if !followed {
-            self.offsets_written = true;
             self.call_not_followed(b, number);
         }
         let s = &self.machine.state;
@@ -516,6 +514,8 @@ impl Checker {
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
         self.early_merge();
+        // (a run of its own: what the program before wrote is not this one's caller's)
+        self.offsets_written = [0; 6];
         self.shifts.calls = super::limits::CallShifts::None;
         let number = b
             .words
