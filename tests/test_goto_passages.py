@@ -562,3 +562,22 @@ def test_a_g10_holds_only_the_positions_under_the_offset_and_axis_it_writes(
     program = ("G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99 / O3000 / "
                f"{g10} / G90 G55 / G0 X0 Y0 / M98 P2000 / M30")
     assert errors(program, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("rest", [
+    # (j6: its own call of a stored O8000)
+    "O2000 / G0 X-700. / M98 P8000 / M99",
+    # (j5: through an O3000 only it calls; j7: in another uncalled O3000)
+    "O2000 / G0 X-700. / M98 P3000 / M99 / O3000 / M98 P8000 / M99",
+    "O2000 / G0 X-700. / M99 / O3000 / M98 P8000 / M99",
+])
+def test_a_stored_call_the_main_does_not_reach_runs_no_uncalled_program_under_its_offset(
+        tmp_path, rest):
+    """Review 58a, F2 (j5-j7.nc): nothing the main runs calls O2000, and the only call of a
+    program the file does not hold is made where the main's run does not reach: a stored
+    O8000 called there runs under the offset of its own caller, not the main's G55, so
+    O2000's X-700. is not said as X-800 (it was, as for a stored call of the main's)."""
+    program = "G21 G17 G90 G55 / G0 X0 Y0 / M30 / " + rest
+    assert errors(program, _wo2(tmp_path)) == []
+    # (an O9001, which an M code of the main may run under its G55, keeps it)
+    assert errors(program.replace("O2000", "O9001"), _wo2(tmp_path)) == [("TG601", 7, 4)]

@@ -1051,7 +1051,7 @@ impl Checker {
         if !self.judged_alone(&p) {
             // (joined for its own calls only, nothing of the file runs it: its positions read
             // under the offset the program before left are not its caller's, review 57e F0)
-            let guessed_kept = self.may_run_here(&p);
+            let guessed_kept = self.main_may_run(&p);
             let positions = p
                 .positions
                 .into_iter()
@@ -1184,6 +1184,49 @@ impl Checker {
                 }
                 Key::Label(_) => false,
             }
+    }
+
+    /// Whether the main's run may run the uncalled program `p` under the offset it left (its
+    /// positions read under that offset kept: [`Checker::early_as_read`]):
+    /// [`Checker::may_run_here`], but for a call of a program the file does not hold made
+    /// only where the main's run does not reach, in `p` itself, in a program only `p` calls
+    /// or in another uncalled one: a stored program called there runs under the offset of
+    /// that program's caller, not the main's (review 58a F2: an uncalled O2000's own `M98
+    /// P8000` kept its `X-700.` under the main's G55, "X goes to -800").
+    fn main_may_run(&self, p: &Pending) -> bool {
+        let stored_call_reached = || {
+            // (the programs the main's run reaches: the first and those called from them)
+            let mut reached: std::collections::BTreeSet<Option<i64>> = [self.first_number].into();
+            loop {
+                let more: Vec<Option<i64>> = self
+                    .call_sites
+                    .iter()
+                    .filter(|(caller, n)| {
+                        reached.contains(caller)
+                            && self.file_programs.contains(n)
+                            && !reached.contains(&Some(*n))
+                    })
+                    .map(|&(_, n)| Some(n))
+                    .collect();
+                if more.is_empty() {
+                    break;
+                }
+                reached.extend(more);
+            }
+            self.call_sites
+                .iter()
+                .any(|(caller, n)| reached.contains(caller) && !self.file_programs.contains(n))
+        };
+        p.body.after_skippable_end
+            || match p.body.number {
+                Key::Number(n) => {
+                    (9000..=9999).contains(&n)
+                        || self.call_numbers_any
+                        || self.call_numbers.contains(&n)
+                }
+                Key::Label(_) => false,
+            }
+            || stored_call_reached()
     }
 
     /// A subprogram at a call made in known units and under a known shift: its span (least

@@ -1350,6 +1350,14 @@ pub struct Checker {
     /// control) may run any of the file's subprograms ([`Checker::judged_alone`]; review
     /// 56e, F5); and whether one is O9000-O9999, which an M, G or T code runs (F1).
     file_programs: std::collections::BTreeSet<i64>,
+    /// Each call by number's program (its O number: [`Checker::in_hand`]) and the numbers
+    /// it may name, as [`Checker::call_numbers`] has them: which programs the main's run
+    /// reaches ([`Checker::main_may_run`]; review 58a F2).
+    call_sites: std::collections::BTreeSet<(Option<i64>, i64)>,
+    /// The O number of the file's first program, which the control starts (None: it has
+    /// none), and of the program in hand (None: one with none, taken for the first).
+    first_number: Option<i64>,
+    in_hand: Option<i64>,
     /// The first call whose program number is not known (its code, line and column), and
     /// whether its TG140 was said ([`Checker::call_unknown`]; review 41, finding 5).
     unknown_call: Option<(String, usize, usize, bool)>,
@@ -1584,6 +1592,9 @@ impl Checker {
             pending: Vec::new(),
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
+            call_sites: std::collections::BTreeSet::new(),
+            first_number: None,
+            in_hand: None,
             call_numbers_any: false,
             unknown_call: None,
             feed_pending: Vec::new(),

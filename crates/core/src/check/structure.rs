@@ -494,6 +494,8 @@ impl Checker {
             Some(Some(v)) if v.is_whole() => {
                 let n = v.trunc();
                 self.call_numbers.extend([n, n % 10_000]);
+                let caller = self.in_hand;
+                self.call_sites.extend([(caller, n), (caller, n % 10_000)]);
             }
             // (M98 P#1: every program after it is read in units not known, call_unknown)
             _ if !by_number => self.call_numbers_any = true,
@@ -524,6 +526,7 @@ impl Checker {
             .and_then(|w| std::str::from_utf8(w.number).ok())
             .and_then(|n| n.parse::<i64>().ok());
         self.file_programs.extend(number);
+        self.in_hand = number;
         // a program no call before it names may be the subprogram of a call after it (a
         // memory backup lists programs by number): read apart until it shows what it is
         // (crate::check::called; review 39, finding 4)
@@ -583,6 +586,7 @@ impl Checker {
             });
         if let Some((n, name, column)) = number {
             self.file_programs.insert(n);
+            (self.first_number, self.in_hand) = (Some(n), Some(n));
             self.early_begin(super::called::Key::Number(n), name, (b.line, column));
         }
     }
