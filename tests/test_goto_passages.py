@@ -461,12 +461,14 @@ def _wo2(tmp_path):
 def test_a_call_under_an_offset_written_by_g10_is_not_judged_with_the_profile_s_value(tmp_path):
     """Review 57e, F1 (c3d.nc): O3000's `G10 L2 P2 X0.` sets G55's X to 0 before its G55 call
     of O2000, so X-700. runs at X-700, inside the travel (it was "X goes to -800", the
-    finding read under the profile's G55 replayed by the offset's name). A program the
-    checker did not read may write the offsets too; a call of one it read does not."""
+    finding read under the profile's G55 replayed by the offset's name). What a program the
+    checker does not read may write is not followed (review 58a F1's b2.nc): said, as in a
+    caller that calls none."""
     profile = _wo2(tmp_path)
     head = "G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99 / O3000 / "
     assert errors(head + "G10 L2 P2 X0. / G90 G55 / G0 X0 Y0 / M98 P2000 / M30", profile) == []
-    assert errors(head + "G90 G55 / M98 P4000 / M98 P2000 / M30", profile) == []
+    assert errors(head + "G90 G55 / M98 P4000 / G90 G55 / M98 P2000 / M30", profile) == [
+        ("TG601", 13, 5)]
     # (review 57e, c4.nc: the first call runs O2000, read, under G54; the second under G55)
     assert errors(head + "G90 G54 / M98 P2000 / G55 / M98 P2000 / M30", profile) == [
         ("TG601", 13, 5)]
@@ -509,3 +511,73 @@ def test_an_o9000_program_in_the_file_runs_no_uncalled_program_under_the_main_s_
     assert errors(head + "O2000 / G0 X-700. / M06 T1 / M99 / O9001 / G0 Y0 / M99",
                   profile) == []
     assert errors(head + "O9001 / G0 X-700. / M99", profile) == [("TG601", 7, 4)]
+
+
+def test_a_body_s_own_overtravel_is_said_at_its_call_whatever_it_calls(tmp_path):
+    """Review 58a, F1 (u2.nc, a13.nc, b2.nc): O2000 selects its own G55 and goes to X-700.
+    (machine -800, an overtravel alarm). Its `M98 P8000` of a program the checker does not
+    read comes after the move, and runs only when O2000 runs: it holds nothing of the call
+    (it did, read apart in file order, for the whole file). Nor does the caller's call of
+    such a program before its call of O2000: what it writes is not followed."""
+    profile = _wo2(tmp_path)
+    # (u2: the body after the main, called by an O3000 under G54)
+    assert errors("G21 G17 G90 G54 / G0 X0 Y0 / M30 / O2000 / G90 G55 G0 X-700. / M98 P8000 / "
+                  "M99 / O3000 / G90 G54 / M98 P2000 / M30", profile) == [("TG601", 12, 5)]
+    # (a13: the body first, its main after it)
+    assert errors("G90 G55 G0 X-700. / M98 P8000 / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+                  "M98 P1000 / M30", profile) == [("TG601", 9, 5)]
+    # (b2: the main calls a stored O8000 first)
+    assert errors("G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P8000 / "
+                  "M98 P1000 / M30", profile) == [("TG601", 9, 5)]
+
+
+def test_a_g10_of_a_subprogram_holds_positions_only_after_its_call(tmp_path):
+    """Review 58a, F1 (a8b.nc): O2500's `G10 L2 P2 X0.` writes G55's X when the main calls
+    O2500, not where it is read: O1000's X-700. under its own G55 is machine -800 at a call
+    before that one, and not known (not said) at a call after it."""
+    profile = _wo2(tmp_path)
+    head = ("G90 G55 G0 X-700. / M99 / O2500 / G10 L2 P2 X0. / M99 / O3000 / G21 G17 G90 G54 / "
+            "G0 X0 Y0 / ")
+    assert errors(head + "M98 P1000 / M98 P2500 / M30", profile) == [("TG601", 11, 5)]
+    assert errors(head + "M98 P2500 / M98 P1000 / M30", profile) == []
+
+
+@pytest.mark.parametrize("g10, expected", [
+    # (c3d: G55's X written, the guess read under the profile's -100 not known)
+    ("G10 L2 P2 X0.", []),
+    # (a1: G54's X; a2: G55's Y; a9: a tool length offset: G55's X is still -100)
+    ("G10 L2 P1 X0.", [("TG601", 13, 5)]),
+    ("G10 L2 P2 Y0.", [("TG601", 13, 5)]),
+    ("G10 L10 P1 R0.", [("TG601", 13, 5)]),
+    # (a FANUC's L20 writes an additional offset, G54.1 P2, not G55)
+    ("G10 L20 P2 X0.", [("TG601", 13, 5)]),
+    # (P0, the external offset, shifts every offset; an L not known may write any)
+    ("G10 L2 P0 X0.", []),
+    ("G10 L#1 P2 Y0.", []),
+])
+def test_a_g10_holds_only_the_positions_under_the_offset_and_axis_it_writes(
+        tmp_path, g10, expected):
+    """Review 58a, F3: the caller O3000's G10 before its G55 call of O2000 (X-700., machine
+    -800 under the profile's G55) holds that position only where it may write G55's X."""
+    program = ("G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-700. / M99 / O3000 / "
+               f"{g10} / G90 G55 / G0 X0 Y0 / M98 P2000 / M30")
+    assert errors(program, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("rest", [
+    # (j6: its own call of a stored O8000)
+    "O2000 / G0 X-700. / M98 P8000 / M99",
+    # (j5: through an O3000 only it calls; j7: in another uncalled O3000)
+    "O2000 / G0 X-700. / M98 P3000 / M99 / O3000 / M98 P8000 / M99",
+    "O2000 / G0 X-700. / M99 / O3000 / M98 P8000 / M99",
+])
+def test_a_stored_call_the_main_does_not_reach_runs_no_uncalled_program_under_its_offset(
+        tmp_path, rest):
+    """Review 58a, F2 (j5-j7.nc): nothing the main runs calls O2000, and the only call of a
+    program the file does not hold is made where the main's run does not reach: a stored
+    O8000 called there runs under the offset of its own caller, not the main's G55, so
+    O2000's X-700. is not said as X-800 (it was, as for a stored call of the main's)."""
+    program = "G21 G17 G90 G55 / G0 X0 Y0 / M30 / " + rest
+    assert errors(program, _wo2(tmp_path)) == []
+    # (an O9001, which an M code of the main may run under its G55, keeps it)
+    assert errors(program.replace("O2000", "O9001"), _wo2(tmp_path)) == [("TG601", 7, 4)]

@@ -73,6 +73,9 @@ pub(super) struct Early {
     /// whoever takes them and whatever the selection (review 43, finding B).
     held: usize,
     reports_from: u64,
+    /// [`Checker::offsets_written`] of the program it is read inside (a LinuxCNC main's,
+    /// around a definition), given back at its end.
+    written_before: [u16; 6],
 }
 
 /// What a program read apart ([`Early`]) and a subprogram kept for its calls ([`Pending`])
@@ -115,6 +118,9 @@ struct Body {
     /// 56b, F4).
     calls: u32,
     calls_judged: u32,
+    /// The work offsets' axes it may write when it runs ([`Checker::offsets_written`] at
+    /// its end): taken into its caller's at each call.
+    writes: [u16; 6],
     /// The end or return before it is one the block skip can pass over (`/M30`): with the
     /// switch on, the program before runs on into it (review 56e, F4).
     after_skippable_end: bool,
@@ -259,6 +265,10 @@ fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
     }
 }
 
+/// [`Checker::offsets_written`] of a G10 whose L or P the checker does not place: every
+/// axis of every offset.
+pub(super) const WRITES_ALL: [u16; 6] = [u16::MAX; 6];
+
 impl Checker {
     /// A program read from the reset state begins (`number`, its O word at `at`): its own
     /// positions kept apart from the spans before it. Only with no shift, frame or
@@ -284,6 +294,7 @@ impl Checker {
                 inherited_last: None,
                 calls: 0,
                 calls_judged: 0,
+                writes: [0; 6],
                 after_skippable_end: self.end_skippable,
                 first: self.programs == 0,
                 outside: 0,
@@ -296,6 +307,7 @@ impl Checker {
             lost_codes: None,
             held: 0,
             reports_from: 0,
+            written_before: std::mem::take(&mut self.offsets_written),
         }));
         self.early_on = true;
     }
@@ -328,6 +340,9 @@ impl Checker {
         }
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
             *span = joined(before, *span);
+        }
+        for (written, before) in self.offsets_written.iter_mut().zip(early.written_before) {
+            *written |= before;
         }
         self.hold_from = None;
     }
@@ -379,8 +394,12 @@ impl Checker {
             self.found.extend(kept);
         }
         let spans = std::mem::replace(&mut self.spans, early.stash);
+        let writes = std::mem::replace(&mut self.offsets_written, early.written_before);
         self.pending.push(Pending {
-            body: early.body,
+            body: Body {
+                writes,
+                ..early.body
+            },
             spans,
             factor: self.to_profile_units(false),
             feed_factor: self.to_profile_units(true),
@@ -649,6 +668,7 @@ impl Checker {
             // (inside a program read apart: its positions not added to that one's)
             self.early_unfollowed(&token, at.0);
             self.call_returns(k, &token, at.0);
+            self.call_writes(k);
             return true;
         };
         let mut p = self.pending.remove(k);
@@ -661,7 +681,18 @@ impl Checker {
         }
         self.pending.insert(k, p);
         self.call_returns(k, &token, at.0);
+        self.call_writes(k);
         true
+    }
+
+    /// After a call of the subprogram `pending[k]`: the work offsets it may have written
+    /// are its caller's from here ([`Checker::offsets_written`]; review 58a F1: a G10 of an
+    /// O2500 the main calls after O2000 holds no position of O2000's).
+    fn call_writes(&mut self, k: usize) {
+        let writes = self.pending[k].body.writes;
+        for (written, axes) in self.offsets_written.iter_mut().zip(writes) {
+            *written |= axes;
+        }
     }
 
     /// After a call of the subprogram `pending[k]` (`token` of line `line`): where it wrote a
@@ -751,13 +782,29 @@ impl Checker {
     }
 
     /// Whether a body's machine position under a work offset (not a G53 one), read with the
-    /// profile's offsets, may stand elsewhere at a call here: a G10, or a program the
-    /// checker did not read, ran before the call and may have written the offsets, so an
-    /// offset of the same name may hold another value (review 57e F1: `G10 L2 P2 X0.` /
-    /// `G90 G55` / `M98 P2000` ran O2000's `X-700.` at X-700, not at the -800 read under
-    /// the profile's G55). Kept, not said (`offsets_written`).
+    /// profile's offsets, may stand elsewhere at a call here: a G10 ran in the caller before
+    /// the call (its own, or one of a program it called) and may have written that offset's
+    /// value on that axis (review 57e F1: `G10 L2 P2 X0.` / `G90 G55` / `M98 P2000`
+    /// ran O2000's `X-700.` at X-700, not at the -800 read under the profile's G55). Kept,
+    /// not said ([`Checker::offsets_written`]); a write of another offset or axis, or of a
+    /// tool offset, holds nothing (review 58a F3).
     fn offset_value_unknown(&self, f: &Finding) -> bool {
-        self.offsets_written && !f.message.contains("(G53)")
+        if self.offsets_written == [0; 6] || f.message.contains("(G53)") {
+            return false;
+        }
+        // (the axis and the offset it was read under, as its message names them: `X goes
+        // to -800 in machine coordinates (work -700 + G55 offset -100.0)`, limits.rs)
+        let axis = f.message.bytes().next().and_then(crate::modal::axis_index);
+        let work = f
+            .message
+            .find(" + G")
+            .and_then(|k| f.message.get(k + 4..k + 6))
+            .and_then(|g| g.parse::<usize>().ok())
+            .filter(|g| (54..=59).contains(g));
+        match (axis, work) {
+            (Some(i), Some(g)) => self.offsets_written[g - 54] & 1 << i != 0,
+            _ => true,
+        }
     }
 
     /// Inside a program read apart: a call by another word than a program number (a Haas's
@@ -1004,7 +1051,7 @@ impl Checker {
         if !self.judged_alone(&p) {
             // (joined for its own calls only, nothing of the file runs it: its positions read
             // under the offset the program before left are not its caller's, review 57e F0)
-            let guessed_kept = self.may_run_here(&p);
+            let guessed_kept = self.main_may_run(&p);
             let positions = p
                 .positions
                 .into_iter()
@@ -1137,6 +1184,49 @@ impl Checker {
                 }
                 Key::Label(_) => false,
             }
+    }
+
+    /// Whether the main's run may run the uncalled program `p` under the offset it left (its
+    /// positions read under that offset kept: [`Checker::early_as_read`]):
+    /// [`Checker::may_run_here`], but for a call of a program the file does not hold made
+    /// only where the main's run does not reach, in `p` itself, in a program only `p` calls
+    /// or in another uncalled one: a stored program called there runs under the offset of
+    /// that program's caller, not the main's (review 58a F2: an uncalled O2000's own `M98
+    /// P8000` kept its `X-700.` under the main's G55, "X goes to -800").
+    fn main_may_run(&self, p: &Pending) -> bool {
+        let stored_call_reached = || {
+            // (the programs the main's run reaches: the first and those called from them)
+            let mut reached: std::collections::BTreeSet<Option<i64>> = [self.first_number].into();
+            loop {
+                let more: Vec<Option<i64>> = self
+                    .call_sites
+                    .iter()
+                    .filter(|(caller, n)| {
+                        reached.contains(caller)
+                            && self.file_programs.contains(n)
+                            && !reached.contains(&Some(*n))
+                    })
+                    .map(|&(_, n)| Some(n))
+                    .collect();
+                if more.is_empty() {
+                    break;
+                }
+                reached.extend(more);
+            }
+            self.call_sites
+                .iter()
+                .any(|(caller, n)| reached.contains(caller) && !self.file_programs.contains(n))
+        };
+        p.body.after_skippable_end
+            || match p.body.number {
+                Key::Number(n) => {
+                    (9000..=9999).contains(&n)
+                        || self.call_numbers_any
+                        || self.call_numbers.contains(&n)
+                }
+                Key::Label(_) => false,
+            }
+            || stored_call_reached()
     }
 
     /// A subprogram at a call made in known units and under a known shift: its span (least

@@ -374,6 +374,51 @@ impl Checker {
         self.work_run_on = false;
     }
 
+    /// The axes (their places' bits) of each of G54-G59 a G10 block may write
+    /// ([`Checker::offsets_written`]). A tool offset's (FANUC L10-L13 and L1, L3 its tool
+    /// life data; Haas L1, L10-L12; LinuxCNC L1, L10, L11) writes none; L2 writes the axes
+    /// it names (all, with a LinuxCNC rotation R) of the offset its P names, P1-P6 being
+    /// G54-G59; a FANUC's or a Haas's L20 writes an additional offset (G54.1 Pn, G154 Pn),
+    /// none of G54-G59, a LinuxCNC's the one its P names as L2 does, and its P7-P9 the
+    /// G59.1-G59.3 the profile does not give. Anything else (P0, the external or the
+    /// current offset; an L or P not known; FANUC L50, parameters) may write them all.
+    /// Sources: FANUC 0i-MF Operator's Manual "Changing workpiece coordinate system" (G10
+    /// L2 Pp) and "Additional workpiece coordinate systems" (G10 L20 Pn); Haas Mill
+    /// Operator's Manual, G10 Set Offsets; LinuxCNC G-code reference, G10 L1/L2/L10/L11/L20.
+    #[cold]
+    #[inline(never)]
+    fn g10_writes(&self, b: &BlockView<'_>) -> [u16; 6] {
+        let value = |letter: u8| {
+            b.words
+                .iter()
+                .position(|w| w.letter == letter && w.index.is_empty())
+                .and_then(|i| self.readable[i])
+                .filter(|v| v.is_whole())
+                .map(|v| v.trunc())
+        };
+        let linuxcnc = self.config.family == Family::LinuxCnc;
+        let axes = if b.words.iter().any(|w| w.letter == b'R') {
+            u16::MAX
+        } else {
+            b.words
+                .iter()
+                .filter(|w| w.index.is_empty())
+                .filter_map(|w| crate::modal::axis_index(w.letter))
+                .fold(0, |bits, i| bits | 1 << i)
+        };
+        match (value(b'L'), value(b'P')) {
+            (Some(1 | 3 | 10..=13), _) => [0; 6],
+            (Some(20), _) if !linuxcnc => [0; 6],
+            (Some(2 | 20), Some(7..=9)) if linuxcnc => [0; 6],
+            (Some(2 | 20), Some(p @ 1..=6)) => {
+                let mut writes = [0; 6];
+                writes[p as usize - 1] = axes;
+                writes
+            }
+            _ => super::called::WRITES_ALL,
+        }
+    }
+
     /// Note once why a position was not compared as a machine position.
     pub(super) fn travel_not(&mut self, why: String) {
         if !self.stats.travel_not.contains(&why) {
@@ -432,7 +477,10 @@ impl Checker {
             match v.trunc() {
                 49 => self.length_decimal = false,
                 10 => {
-                    self.offsets_written = true;
+                    let writes = self.g10_writes(b);
+                    for (written, axes) in self.offsets_written.iter_mut().zip(writes) {
+                        *written |= axes;
+                    }
                     self.lose_offsets(line, "G10 sets offsets");
                 }
                 52 | 92 if axes => {

@@ -973,12 +973,19 @@ pub struct Checker {
     /// under another offset (review 57e F2); false once it selects its own.
     work_run_on: bool,
     offsets_lost: bool,
-    /// A G10, or a call of a program the checker did not read before it (one written after
-    /// the call, stored on the control, or named by a parameter), may have written the work
-    /// offsets' values: a subprogram's machine position read under the profile's value of an
-    /// offset is not said at a later call under that offset's name (review 57e F1). Not
-    /// set by a call of a program read before (its own G10 lost the offsets where read).
-    offsets_written: bool,
+    /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
+    /// program in hand has written before here: by a G10 of its own that writes it
+    /// ([`Checker::g10_writes`]), or by a subprogram read before that it called (its own,
+    /// `Body::writes`). A subprogram's machine position read under the profile's value of
+    /// such an offset's axis is not said at a call here (review 57e F1: `G10 L2 P2 X0.` /
+    /// `G90 G55` / `M98 P2000` ran O2000's `X-700.` at X-700, not at the -800 read under the
+    /// profile's G55). Each program's run its own, in run order: reset where a program
+    /// begins, a subprogram's writes taken into its caller's at the call (review 58a F1 and
+    /// F3: set where read, file-wide, by any G10 and by a call of a program not read, it
+    /// dropped real overtravels). What a program the checker does not read writes is not
+    /// followed, as a `#5241=` write is not: its caller's positions said as the profile's
+    /// offsets make them, erring on the side of the alarm.
+    offsets_written: [u16; 6],
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
@@ -1347,6 +1354,14 @@ pub struct Checker {
     /// control) may run any of the file's subprograms ([`Checker::judged_alone`]; review
     /// 56e, F5); and whether one is O9000-O9999, which an M, G or T code runs (F1).
     file_programs: std::collections::BTreeSet<i64>,
+    /// Each call by number's program (its O number: [`Checker::in_hand`]) and the numbers
+    /// it may name, as [`Checker::call_numbers`] has them: which programs the main's run
+    /// reaches ([`Checker::main_may_run`]; review 58a F2).
+    call_sites: std::collections::BTreeSet<(Option<i64>, i64)>,
+    /// The O number of the file's first program, which the control starts (None: it has
+    /// none), and of the program in hand (None: one with none, taken for the first).
+    first_number: Option<i64>,
+    in_hand: Option<i64>,
     /// The first call whose program number is not known (its code, line and column), and
     /// whether its TG140 was said ([`Checker::call_unknown`]; review 41, finding 5).
     unknown_call: Option<(String, usize, usize, bool)>,
@@ -1502,7 +1517,7 @@ impl Checker {
             work_guessed: None,
             work_run_on: false,
             offsets_lost: false,
-            offsets_written: false,
+            offsets_written: [0; 6],
             frames: limits::Frames::default(),
             noted: 0,
             mode_lost_codes: None,
@@ -1581,6 +1596,9 @@ impl Checker {
             pending: Vec::new(),
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
+            call_sites: std::collections::BTreeSet::new(),
+            first_number: None,
+            in_hand: None,
             call_numbers_any: false,
             unknown_call: None,
             feed_pending: Vec::new(),

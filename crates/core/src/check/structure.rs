@@ -447,7 +447,6 @@ impl Checker {
                 } else {
                     "G65"
                 };
-                self.offsets_written = true;
                 self.call_unknown(format!("{code} {}", w.token()), b.line, w.column);
             }
             return;
@@ -468,7 +467,6 @@ impl Checker {
                 self.early_call(super::called::Key::Number(number), call, (b.line, column))
             };
         if !followed {
-            self.offsets_written = true;
             self.call_not_followed(b, number);
         }
         let s = &self.machine.state;
@@ -504,6 +502,8 @@ impl Checker {
             Some(Some(v)) if v.is_whole() => {
                 let n = v.trunc();
                 self.call_numbers.extend([n, n % 10_000]);
+                let caller = self.in_hand;
+                self.call_sites.extend([(caller, n), (caller, n % 10_000)]);
             }
             // (M98 P#1: every program after it is read in units not known, call_unknown)
             _ if !by_number => self.call_numbers_any = true,
@@ -524,6 +524,8 @@ impl Checker {
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
         self.early_merge();
+        // (a run of its own: what the program before wrote is not this one's caller's)
+        self.offsets_written = [0; 6];
         self.shifts.calls = super::limits::CallShifts::None;
         let number = b
             .words
@@ -532,6 +534,7 @@ impl Checker {
             .and_then(|w| std::str::from_utf8(w.number).ok())
             .and_then(|n| n.parse::<i64>().ok());
         self.file_programs.extend(number);
+        self.in_hand = number;
         // a program no call before it names may be the subprogram of a call after it (a
         // memory backup lists programs by number): read apart until it shows what it is
         // (crate::check::called; review 39, finding 4)
@@ -591,6 +594,7 @@ impl Checker {
             });
         if let Some((n, name, column)) = number {
             self.file_programs.insert(n);
+            (self.first_number, self.in_hand) = (Some(n), Some(n));
             self.early_begin(super::called::Key::Number(n), name, (b.line, column));
         }
     }
