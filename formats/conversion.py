@@ -101,6 +101,18 @@ class ConvertOptions(FrozenRecord):
                 "return level in B): give --from (fanuc-lathe for system A, fanuc-lathe-b, "
                 "fanuc-lathe-c, or the source's own profile)",
                 code="conversion-option")
+        explicit = self.target.explicit if self.decimal is None else self.decimal == "explicit"
+        zeros = self.zeros or self.target.word_format("X").zeros
+        if not explicit and self.target.numbers.without_point == "increments" \
+                and zeros == Zeros.TRAILING:
+            # such a control counts least increments in a number without its point however
+            # the program is written (a FANUC: X0001 is 0.001 mm); left-aligned digits are
+            # another number to it (review 58b: --verify reads the output by its formats)
+            raise ConversionError(
+                f"--zeros trailing: {self.target.name} reads a number written without a "
+                "decimal point as a count of least increments (X0001 is 0.001, not 10.000): "
+                "trailing-zero output would be misread; leave --zeros out (or give leading)",
+                code="conversion-option")
         family = self.target.dialect.family
         if self.decimal == "implicit" and family in WHOLE_WITHOUT_POINT:
             control = _article(WHOLE_WITHOUT_POINT[family])
@@ -120,14 +132,34 @@ class ConvertOptions(FrozenRecord):
             detailed = _replace(detailed, explicit_decimal=explicit)
             if inch is not None:
                 inch = _replace(inch, explicit_decimal=explicit)
-            increments = self.from_decimal == "increments"
-            numbers = _replace(numbers,
-                               without_point="increments" if increments else "whole")
+            whole = ", ".join(numbers.whole_letters() or "")
+            # implicit, on a control that counts least increments in a number without its
+            # point (a FANUC, a Haas): its own reading, whatever decimals the program was
+            # written with -- the letters it reads whole stay whole (G21 is code 21, F100 is
+            # 100: fanuc-mill.toml's whole = "PLFG"), the others count increments, which is
+            # the implicit reading with leading zeros omitted; left-aligned digits are no
+            # number it reads (review 58b F6: G21 was read G2.1, F100 F0.1, and verified)
+            if self.from_decimal == "implicit" and numbers.without_point == "increments":
+                if self.from_zeros == Zeros.TRAILING:
+                    raise ConversionError(
+                        f"--from-zeros trailing: {source.name} reads a number written without "
+                        "a decimal point as a count of least increments (X0001 is 0.001, not "
+                        "10.000), not with its trailing zeros omitted: give the profile of the "
+                        "control the program was written for (--from)",
+                        code="conversion-option")
+            else:
+                increments = self.from_decimal == "increments"
+                numbers = _replace(numbers,
+                                   without_point="increments" if increments else "whole")
             notes.append({
                 "explicit": "source: decimal points as written, a word without one is a whole "
                             "number (--from-decimal explicit)",
-                "implicit": "source: implicit decimal, digits read by the word formats of "
-                            f"{source.name} (--from-decimal implicit)",
+                "implicit": (f"source: implicit decimal, read as {source.name}'s control "
+                             f"reads a number without its point: {whole} whole numbers, the "
+                             "others in least increments (--from-decimal implicit)"
+                             if numbers.without_point == "increments" else
+                             "source: implicit decimal, digits read by the word formats of "
+                             f"{source.name} (--from-decimal implicit)"),
                 "increments": "source: decimal points as written, a word without one counts "
                               "least increments of its format, X10000 = 10.000 at 0.001 "
                               "(--from-decimal increments)",

@@ -314,7 +314,11 @@ class Profile(FrozenRecord):
         if body[:1] in "+-":
             sign, body = body[0], body[1:]
         fmt = self.word_format(letter, units or self.default_units)
-        return fmt.read(sign, body, self.explicit, self.numbers.increments(letter))
+        # (the letters a control counting increments reads whole are whole in an
+        # implicit-decimal program too, as the core's `Numbers::no_point` reads them)
+        numbers = self.numbers
+        whole = numbers.without_point == "increments" and letter in numbers.whole
+        return fmt.read(sign, body, self.explicit or whole, numbers.increments(letter))
 
     def code(self, letter: str, number: int) -> Code | None:
         extra = self.extra_codes.get(f"{letter}{number:02d}")

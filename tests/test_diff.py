@@ -400,6 +400,59 @@ def test_a_modal_thread_s_next_pass_reads_its_start_angle_as_the_thread_s(tmp_pa
     assert out.splitlines()[6] == "X0.9449 Q180000", out
 
 
+# a block straight after a G92 (G32) pass that names a code of its own reading Q: not a pass
+# (review 58b): G74/G75/G76's Q are depths in least input increments of length, G65's Q the
+# macro's argument #17, a G83's repeat's Q its peck
+OWN_Q = [
+    ("fanuc-lathe", "G92 X24. Z-20. F1.5 Q0\nX23.5 Q90000\n",
+     "G75 R0.5\nG75 X30. Z-20. P2000 Q3000 F0.1\nG74 R0.5\nG74 Z-30. Q5000 F0.1\n"
+     "G76 P011060 Q100 R0.05\nG76 X22.2 Z-20. P900 Q300 F1.5\n",
+     ["X0.9252 Q90000", "G75 R0.0197", "G75 X1.1811 Z-0.7874 P787 Q1181 F0.0039",
+      "G74 R0.0197", "G74 Z-1.1811 Q1969 F0.0039", "G76 P011060 Q39 R0.002",
+      "G76 X0.874 Z-0.7874 P354 Q118 F0.0591"]),
+    ("fanuc-lathe", "G32 Z-20. F1.5\n",
+     "G76 P011060 Q100 R0.05\nG76 X22.2 Z-20. P900 Q0.3 F1.5\n",
+     ["G76 P011060 Q39 R0.002", "G76 X0.874 Z-0.7874 P354 Q0.0118 F0.0591"]),
+    # G code system B: G78 is A's G92
+    ("fanuc-lathe-b", "G78 X24. Z-20. F1.5 Q0\n",
+     "G76 P011060 Q100 R0.05\nG76 X22.2 Z-20. P900 Q300 F1.5\n",
+     ["G76 P011060 Q39 R0.002", "G76 X0.874 Z-0.7874 P354 Q118 F0.0591"]),
+]
+
+
+@pytest.mark.parametrize(("name", "thread", "after", "converted"), OWN_Q)
+def test_a_cycle_after_a_thread_pass_reads_its_own_q(tmp_path, name, thread, after, converted):
+    """Review 58b F2: a G74/G75/G76 block straight after a G92 (G32) pass is the cycle's own
+    (group 00, FANUC 0i-TF "Multiple repetitive cycle"), not the thread's next pass: a change
+    of units converts its Q depths, and the diff tells the unconverted Q from the source's."""
+    from formats.convert import convert_text
+    profile = load_profile(name)
+    program = ("O1014\nG21 G18 G99\nG97 S500 M03\nG00 X24. Z5.\n" + thread + after
+               + "G00 X50.\nM30\n")
+    out, _ = convert_text(program, ConvertOptions(target=profile, source=profile, units="inch"))
+    lines = out.splitlines()
+    assert lines[-2 - len(converted):-2] == converted, out
+    right = write(tmp_path, "right.nc", out)
+    source = write(tmp_path, "source.nc", program)
+    assert differences(source, right, profile, profile, tolerance=Decimal("0.5"))[0] == []
+    # the Q depths left as written (the reading this replaced) are another program
+    wrong = write(tmp_path, "wrong.nc", out.replace("Q118 ", "Q300 ").replace("Q0.0118", "Q0.3"))
+    found, _ = differences(source, wrong, profile, profile, tolerance=Decimal("0.5"))
+    assert len(found) == 1 and "Q" in found[0].details()[0], found
+
+
+def test_a_code_of_its_own_after_a_thread_pass_is_no_pass():
+    """Review 58b F1, F7: a G65's Q (macro argument #17) and a G83's repeat's Q after a G92
+    pass are no thread's start angle: no TG208 "a thread's start angle" there, while the
+    pass's own pointed Q has it."""
+    lathe = load_profile("fanuc-lathe")
+    program = ("O1\nG21 G18 G99\nG00 X30. Z5. S500 M03\nG92 X24. Z-20. F1.5 Q0\nX23.5 Q90.\n"
+               "G65 P9010 A1. Q5. X2.\nG83 X0 Z-20. R1. Q5000 F0.1\nZ-25. Q4000.\nM30\n")
+    found = [(f.rule, f.line, f.column) for f in check_text(program, lathe)
+             if f.rule == "TG208" and "start angle" in f.message]
+    assert found == [("TG208", 5, 7)]
+
+
 @pytest.mark.parametrize(("profile", "body", "a", "b", "said"), COUNTS)
 def test_a_cycle_word_that_counts_stays_exact(tmp_path, profile, body, a, b, said):
     """Issue 32: a count of the same tables (K repeats, G71's P Q block numbers, FANUC G76's

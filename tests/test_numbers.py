@@ -93,6 +93,61 @@ def test_from_decimal_and_from_zeros_override_the_source_and_say_so():
     assert any("--from-zeros trailing" in note for note in stats.notes)
 
 
+@pytest.mark.parametrize(("name", "text", "expected"), [
+    ("fanuc-mill", "G21 G17 G90 G94\nG01 X10000 Z-1000 F100\nG04 P500\nG02 X20000 Y5000 R5000\n",
+     "G21 G17 G90 G94\nG01 X10. Z-1. F100\nG04 P500\nG02 X20. Y5. R5.\n"),
+    ("fanuc-lathe", "G21 G18 G99\nG00 X30000 Z5000\nG92 X24000 Z-20000 F1.5 Q18\n",
+     "G21 G18 G99\nG00 X30. Z5.\nG92 X24. Z-20. F1.5 Q18\n"),
+    # an angle without its point counts 0.001 deg in inch too (the A format), as the control
+    # reads it: the R format's 0.0001 would be 4.5 deg
+    ("fanuc-mill", "G20\nG68 X0 Y0 R45000\n", "G20\nG68 X0 Y0 R45.\n"),
+])
+def test_an_implicit_decimal_source_is_read_as_its_control_reads_it(name, text, expected):
+    """Review 58b F6: `--from-decimal implicit` read a FANUC's G and F by their formats (G031:
+    `G21` became `G2.1`, F054: `F100` `F0.1`), verified by the same reading. A control that
+    counts least increments reads a number without its point so however the program was
+    written: G F P L (the lathe's Q) whole (`numbers.whole`), the others in increments, which
+    is the implicit reading with leading zeros omitted; left-aligned (trailing zeros omitted)
+    digits are no number it reads, refused at the option."""
+    from formats.errors import ConversionError
+    profile = load_profile(name)
+    options = ConvertOptions(profile, profile, decimal="explicit", from_decimal="implicit")
+    out, stats = convert_text(text, options)
+    assert out == expected
+    assert any(", ".join(sorted(profile.numbers.whole)) + " whole numbers" in note
+               for note in stats.notes), stats.notes
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, ConvertOptions(profile, profile, decimal="explicit",
+                                          from_decimal="implicit", from_zeros="trailing"))
+    assert err.value.code == "conversion-option"
+    assert err.value.message.startswith(f"--from-zeros trailing: {name} reads")
+    # a control reading whole numbers: the digits by the formats, zeros as said
+    iso = load_profile("iso-mill")
+    out, _ = convert_text("G71\nX1\n", ConvertOptions(iso, iso, decimal="explicit",
+                                                       from_decimal="implicit",
+                                                       from_zeros="trailing"))
+    assert out == "G71\nX10000.\n"
+    whole = profile_from_text('name = "w"\ndetailed = "%:/ G031 X+053 F054*"\n'
+                              '[numbers]\nwithout_point = "increments"\nwhole = "FG"\n')
+    assert (whole.value("G21"), whole.value("F100"), whole.value("X10000")) == \
+        (Decimal(21), Decimal(100), Decimal("10.000"))
+
+
+def test_trailing_zero_output_for_a_control_counting_increments_is_refused():
+    """A FANUC reads `X0001` as 0.001 mm (least increments) however the program was written:
+    `--decimal implicit --zeros trailing` output (10.000 left-aligned in X+053) would be
+    misread (--verify refused it, naming a step count: review 58b F6), so the option is
+    refused before anything is written, naming why; leading zeros are its own reading."""
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as err:
+        convert_text("G21\nG01 X10. F100.\n",
+                     ConvertOptions(FANUC, FANUC, decimal="implicit", zeros="trailing"))
+    assert err.value.code == "conversion-option" and "X0001 is 0.001" in err.value.message
+    out, _ = convert_text("G21\nG01 X10. F100.\n",
+                          ConvertOptions(FANUC, FANUC, decimal="implicit"))
+    assert out == "G21\nG01 X10000 F100.\n"
+
+
 # -- a word format for each unit system ----------------------------------------------------------
 
 

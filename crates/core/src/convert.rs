@@ -3120,7 +3120,12 @@ impl Converter {
         // a block under a canned cycle in force repeats it at a new position, with the words it
         // changes: they have the cycle's roles (`cycle_in_force`, which `--verify` reads by too)
         self.cycle_code = cycle_in_force(self.cycle_code, self.c.family, self.c.lathe, &gs, &ms);
-        let repeated = self.cycle_code.filter(|c| !gs.contains(c));
+        // (a lathe's thread in force only into a plain pass, `modal::thread_pass`: a G75
+        // after a G92 reads its Q as its own depth)
+        let repeated = self.cycle_code.filter(|&c| {
+            !gs.contains(&c)
+                && (!crate::modal::modal_thread(c) || crate::modal::thread_pass(&gs, g_unread))
+        });
         if let Some(c) = repeated {
             gs.push(c);
         }
@@ -8383,8 +8388,10 @@ where
 {
     let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
     let (mut g, mut m) = (0, 0);
+    let mut g_unread = false;
     for (letter, number) in words.clone().filter(|(l, _)| matches!(l, b'G' | b'M')) {
         let Some((n, 0)) = crate::meaning::code(number) else {
+            g_unread |= letter == b'G';
             continue;
         };
         if letter == b'G' && g < gs.len() {
@@ -8400,12 +8407,12 @@ where
     for n in &mut gs[..g] {
         *n = settings.read_g(*n);
     }
-    // (a lathe's code in force, its G32 or G92, ends at every other code of its motion
-    // group, and at the multiple repetitive and drilling cycles G70-G89)
-    let motion = gs[..g].iter().any(|&c| match lathe {
-        false => matches!(c, 0..=3 | 73..=89),
-        true => ends_canned_cycle(true, c) || (70..=89).contains(&c),
-    });
+    // (a lathe's code in force, its G32 or G92, is read only into a plain pass: no code of
+    // the block's own reads Q, `modal::thread_pass`)
+    let motion = match lathe {
+        false => gs[..g].iter().any(|&c| matches!(c, 0..=3 | 73..=89)),
+        true => !crate::modal::thread_pass(&gs[..g], g_unread || g == gs.len()),
+    };
     // (a lathe's drilling cycle in force is not read into a block of positions: its thread)
     let cycle = cycle.filter(|&c| !lathe || settings.fanuc_lathe && crate::modal::modal_thread(c));
     if let Some(code) = cycle.filter(|_| !motion && g < gs.len()) {
@@ -9132,7 +9139,8 @@ mod tests {
             motion,
             ..crate::modal::ModalState::new(crate::modal::Units::Metric)
         };
-        assert_eq!(state(Some(83), Some(92)).code_in_force(true), Some(92));
+        assert_eq!(state(None, Some(92)).code_in_force(true), Some(92));
+        assert_eq!(state(Some(83), Some(92)).code_in_force(true), None);
         assert_eq!(state(Some(83), Some(1)).code_in_force(true), None);
         assert_eq!(state(Some(81), Some(92)).code_in_force(false), Some(81));
         for g in [0, 1, 2, 3, 33, 80] {

@@ -127,14 +127,38 @@ pub fn modal_thread(g: i64) -> bool {
     matches!(g, 32 | 92)
 }
 
+/// Whether a block whose G codes (system A numbers; `unread`: a G word read as no whole code,
+/// a decimal `G7.1` or a macro's `G#1`) are `gs` is a plain pass of a lathe's thread in force
+/// ([`modal_thread`]), its words the thread's: codes of the modal groups that give Q no
+/// meaning alone -- the planes G17-G19, inch/metric G20/G21, the stroke check G22/G23, the
+/// nose radius compensation G40-G42, the work coordinate systems G54-G59, the spindle and feed
+/// modes G96-G99 and system B's and C's absolute and incremental G90/G91 (FANUC 0i-TF
+/// B-64604EN, "G code list": groups 16, 06, 04, 07, 14, 02, 05, 03). Any other code is the
+/// block's own, not a pass: a code of group 00 reads its Q as its own (G65's argument #17,
+/// G74/G75/G76's depths in least input increments of length, G10's data), as does a drilling
+/// cycle of group 10 (G83's peck); the motion group's others end the thread. The one test
+/// of the checker's reading (`convert::block_meanings`), the converter's and the diff's
+/// (review 58b, F1, F2, F7: a G75 straight after a G92 pass had its Q depth left unconverted).
+pub fn thread_pass(gs: &[i64], unread: bool) -> bool {
+    use crate::lex::{ABSOLUTE, INCREMENTAL};
+    !unread
+        && gs.iter().all(|&g| {
+            matches!(g, 17..=23 | 40..=42 | 54..=59 | 96..=99 | ABSOLUTE | INCREMENTAL)
+                || modal_thread(g)
+        })
+}
+
 impl ModalState {
     /// The code a block of a FANUC or Haas control naming no code of the motion group
     /// repeats, its words read as that code's (`convert::block_meanings`): the mill's canned
-    /// cycle in force, a lathe's (`fanuc_lathe`) threading G32 or G92 ([`modal_thread`]). A
-    /// lathe's drilling cycles are not read into such a block.
+    /// cycle in force, a lathe's (`fanuc_lathe`) threading G32 or G92 ([`modal_thread`]) where
+    /// no drilling cycle is in force. A lathe's drilling cycles are not read into such a block.
     pub fn code_in_force(&self, fanuc_lathe: bool) -> Option<i64> {
         if fanuc_lathe {
-            self.motion.filter(|&g| modal_thread(g))
+            // (a drilling cycle after the thread, `G92 ...` then `G83 ...`: its repeats are
+            // no thread's passes, though G83 of group 10 leaves G92 in group 01; review 58b, F7)
+            self.motion
+                .filter(|&g| modal_thread(g) && self.cycle.is_none())
         } else {
             self.cycle
         }

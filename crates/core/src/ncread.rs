@@ -492,8 +492,16 @@ impl Reader {
         let (family, lathe) = (self.settings.family, self.settings.lathe);
         let haas = Some(self.settings.modal.haas);
         self.cycle_code = crate::convert::cycle_in_force(self.cycle_code, family, lathe, &gs, &ms);
-        // a block repeating the cycle in force: its words by the cycle's roles
-        let repeated = self.cycle_code.filter(|c| !gs.contains(c));
+        // a block repeating the cycle in force: its words by the cycle's roles (a lathe's
+        // thread only in a plain pass, `modal::thread_pass`)
+        let unread = words
+            .iter()
+            .zip(&numbers)
+            .any(|(w, n)| w.letter == b'G' && n.is_none());
+        let repeated = self.cycle_code.filter(|&c| {
+            !gs.contains(&c)
+                && (!crate::modal::modal_thread(c) || crate::modal::thread_pass(&gs, unread))
+        });
         let mut with_cycle = gs.clone();
         with_cycle.extend(repeated);
         let meanings = crate::convert::cycle_meanings_in(
