@@ -849,6 +849,11 @@ SEEDED: list[tuple[str, str, int, str]] = [
      "error"),
     ("cycle after M72 restores G41.1",
      HEAD + "F10\nG41.1 D0.1\nG1 X1\nM70\nM72\nG81 X1 Z-1 R1\nM2\n", 8, "error"),
+    # F3, F5: the M72 block's plane runs after the restore, a followed M72 left nothing changed
+    ("G1 beside an M72 whose block's G18 runs after it", HEAD + "M70\nM72 G18 G1 X1\nM2\n", 4,
+     "error"),
+    ("G1 beside a second M72 after a followed one", HEAD + "M70\nM8\nM72\nM72 G1 X1\nM2\n",
+     6, "error"),
     ("probe after G20 from a cycle's retract level",
      HEAD + "G0 Z0\nG20 F4\nG81 X1 Z-1 R1\nG38.2 Z-1\nM2\n", 0, "accepted"),
     # review 53, F13 (lcnc57b): G17.1-G19.1 under compensation with no compensated move held

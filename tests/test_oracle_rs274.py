@@ -94,6 +94,9 @@ BOTH = [
     # M5 after the M72 stops the spindle it restored
     "G1 in G95 after M72 restores the S0 of an M70 in an if",
     "G1 after an M72 in an if, G93 whether it runs or not", "G33 after M72 and M5",
+    # review 58c, F3, F5 (lcnc58b): the M72 block's late codes, a followed M72
+    "G1 beside an M72 whose block's G18 runs after it",
+    "G1 beside a second M72 after a followed one",
     # TG412: rs274's own refusals
     # review 58c, F1 (lcnc58b): a followed save gives back the spindle and compensation
     "G33 after M70 and M72, the spindle never on", "cycle after M72 restores G41.1",

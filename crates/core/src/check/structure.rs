@@ -2876,8 +2876,12 @@ impl Checker {
         let mut zeroed = false;
         let mut f_at = None;
         // (a G or M code that may change a modal group the restore writes: any but a motion
-        // of G0-G3 or G5-G5.3, whose group it does not restore, a G4, and M70-M73)
-        let mut modal = false;
+        // of G0-G3 or G5-G5.3, whose group it does not restore, a G4, and M70-M73; `early`
+        // where it runs before M70-M73 in the block, `late` after: the G-code overview's
+        // "G-code Order of Execution", the feed mode, the I/O, M6 and M3-M5 before the save
+        // and restore, the rest after; review 58c F3, F5)
+        let mut early = false;
+        let mut late = false;
         // (and neither an F nor an S word)
         let mut still = true;
         let mut speed_word = false;
@@ -2909,14 +2913,25 @@ impl Checker {
             still &= !matches!(w.letter, b'F' | b'S');
             speed_word |= w.letter == b'S';
             m98 |= w.letter == b'M' && code() == Some(98.0);
-            modal |= match (w.letter, code()) {
+            match (w.letter, code()) {
+                (b'G', Some(93.0 | 94.0 | 95.0)) => early = true,
                 (b'G', Some(g)) => {
-                    !matches!(g, 0.0 | 1.0 | 2.0 | 3.0 | 4.0 | 5.0 | 5.1 | 5.2 | 5.3)
+                    late |= !matches!(g, 0.0 | 1.0 | 2.0 | 3.0 | 4.0 | 5.0 | 5.1 | 5.2 | 5.3)
                 }
-                (b'M', Some(m)) => !matches!(m, 70.0 | 71.0 | 72.0 | 73.0),
-                _ => false,
-            };
+                (b'M', Some(3.0 | 4.0 | 5.0 | 6.0 | 61.0 | 62.0..=68.0)) => early = true,
+                // (M19, whose step the overview does not list: both)
+                (b'M', Some(19.0)) => (early, late) = (true, true),
+                (b'M', Some(m)) => late |= !matches!(m, 70.0 | 71.0 | 72.0 | 73.0),
+                _ => {}
+            }
         }
+        // (an M72's block: only its codes before the restore run between it and the save;
+        // an M70's or M73's: only those after the save, F and S before it)
+        let (modal, still) = match m7 {
+            Some(72) => (early, still),
+            Some(70 | 73) => (late, true),
+            _ => (early || late, still),
+        };
         if let Some(saved) = self.linuxcnc_feed_saved.as_mut() {
             saved.quiet &= !modal;
             saved.still &= !modal && still;
@@ -3013,6 +3028,17 @@ impl Checker {
                         None
                     }
                 };
+                // (a followed restore puts every other group back as saved: the block's codes
+                // after it are all that differ; review 58c F5: `M70` / `M8` / `M72` / `M72 G1
+                // X1` is "Cannot do g1 with zero feed rate" at the second M72)
+                if let Some(s) = self
+                    .linuxcnc_feed_saved
+                    .as_mut()
+                    .filter(|_| saved.is_some())
+                {
+                    s.quiet = !late;
+                    s.still &= !late;
+                }
                 if dropped != Some(false) {
                     self.linuxcnc_m72_dropped = Some(self.stats.blocks);
                     self.linuxcnc_m72_motion_dropped(b, before, dropped == Some(true));
@@ -7368,6 +7394,13 @@ mod tests {
                 "F10\nM70\nM72 G41.1 D0.1\nG1 X1\nG81 X1 Z-1 R1",
                 Some((7, 1, refused)),
             ),
+            // review 58c F3, F5: the M72 block's codes after the restore, the M70 block's
+            // before the save, and what a followed M72 put back change nothing it compares
+            // ("Cannot do g1 with zero feed rate" each); an M8 before the M72 does
+            ("M70\nM72 G18 G1 X1", Some((4, 12, Rule::NoFeedRate))),
+            ("M70 G95\nM72 G1 X1", Some((4, 8, Rule::NoFeedRate))),
+            ("M70\nM8\nM72\nM72 G1 X1", Some((6, 8, Rule::NoFeedRate))),
+            ("M70\nM8\nM72 G1 X1", None),
             // (an M6 of the M72's block, before the restore: not followed; rs274 runs it)
             ("S1000 M3\nM70\nM5\nM72 M6 T1\nG33 Z-1 K0.1", None),
             // a G20 between leaves the feed's restore not followed, not the spindle's; a save
