@@ -3030,13 +3030,10 @@ impl Checker {
                 };
                 // (a followed restore puts every other group back as saved: the block's codes
                 // after it are all that differ; review 58c F5: `M70` / `M8` / `M72` / `M72 G1
-                // X1` is "Cannot do g1 with zero feed rate" at the second M72)
-                if let Some(s) = self
-                    .linuxcnc_feed_saved
-                    .as_mut()
-                    .filter(|_| saved.is_some())
-                {
-                    s.quiet = !late;
+                // X1` is "Cannot do g1 with zero feed rate" at the second M72; they count
+                // for a later M72 either way)
+                if let Some(s) = self.linuxcnc_feed_saved.as_mut() {
+                    s.quiet = (s.quiet || saved.is_some()) && !late;
                     s.still &= !late;
                 }
                 if dropped != Some(false) {
