@@ -843,6 +843,19 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "F100\nM70\nG41.1 D0.1\nG1 X1\nM72\nG81 X1 Z-1 R1\nM2\n", 0, "accepted"),
     ("G33 after M72 and M5", HEAD + "S1000 M3\nM70\nM72\nM5\nG33 Z-1 K0.1\nM2\n", 7,
      "error"),
+    # review 58c (lcnc58b): F1, a followed save gives back the direction and compensation it
+    # took; F4, no zero kept through G20/G21 (the Z after a cycle is its Z word here)
+    ("G33 after M70 and M72, the spindle never on", HEAD + "M70\nM72\nG33 Z-1 K0.1\nM2\n", 5,
+     "error"),
+    ("cycle after M72 restores G41.1",
+     HEAD + "F10\nG41.1 D0.1\nG1 X1\nM70\nM72\nG81 X1 Z-1 R1\nM2\n", 8, "error"),
+    # F3, F5: the M72 block's plane runs after the restore, a followed M72 left nothing changed
+    ("G1 beside an M72 whose block's G18 runs after it", HEAD + "M70\nM72 G18 G1 X1\nM2\n", 4,
+     "error"),
+    ("G1 beside a second M72 after a followed one", HEAD + "M70\nM8\nM72\nM72 G1 X1\nM2\n",
+     6, "error"),
+    ("probe after G20 from a cycle's retract level",
+     HEAD + "G0 Z0\nG20 F4\nG81 X1 Z-1 R1\nG38.2 Z-1\nM2\n", 0, "accepted"),
     # review 53, F13 (lcnc57b): G17.1-G19.1 under compensation with no compensated move held
     # stops rs274 at the next move only
     ("G1 in G18.1 under compensation with no move before",

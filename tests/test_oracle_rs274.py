@@ -94,7 +94,12 @@ BOTH = [
     # M5 after the M72 stops the spindle it restored
     "G1 in G95 after M72 restores the S0 of an M70 in an if",
     "G1 after an M72 in an if, G93 whether it runs or not", "G33 after M72 and M5",
+    # review 58c, F3, F5 (lcnc58b): the M72 block's late codes, a followed M72
+    "G1 beside an M72 whose block's G18 runs after it",
+    "G1 beside a second M72 after a followed one",
     # TG412: rs274's own refusals
+    # review 58c, F1 (lcnc58b): a followed save gives back the spindle and compensation
+    "G33 after M70 and M72, the spindle never on", "cycle after M72 restores G41.1",
     # review 53, F13 (lcnc57b): the move after G18.1 under compensation
     "G1 in G18.1 under compensation with no move before",
     # review 55c, F9 (lcnc57b): a branch left by break is no way to its endif
@@ -287,6 +292,8 @@ RUN = ["T, H and D within 0.0001 of a whole number",
        "cycle after M72 G95 whose M70 stands in an if", "G1 beside an M72 restoring G17",
        "G1 after M72 of a save in a loop whose later turn runs under G94",
        "G33 after M72 restores M3", "cycle after M72 restores G40",
+       # review 58c, F4 (lcnc58b): no zero kept through G20/G21
+       "probe after G20 from a cycle's retract level",
        "G18.1 under compensation with no move before its G40",
        "R arc of X after a while left by a break in G19",
        # review 55c, F7: the elseif after a known-true branch with a call never runs

@@ -2880,12 +2880,19 @@ impl Checker {
         let mut zeroed = false;
         let mut f_at = None;
         // (a G or M code that may change a modal group the restore writes: any but a motion
-        // of G0-G3 or G5-G5.3, whose group it does not restore, a G4, and M70-M73)
-        let mut modal = false;
+        // of G0-G3 or G5-G5.3, whose group it does not restore, a G4, and M70-M73; `early`
+        // where it runs before M70-M73 in the block, `late` after: the G-code overview's
+        // "G-code Order of Execution", the feed mode, the I/O, M6 and M3-M5 before the save
+        // and restore, the rest after; review 58c F3, F5)
+        let mut early = false;
+        let mut late = false;
         // (and neither an F nor an S word)
         let mut still = true;
         let mut speed_word = false;
         let mut m98 = false;
+        let mut comp_set = false;
+        let mut spindle_set = false;
+        let mut tool_change = false;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -2902,25 +2909,40 @@ impl Checker {
                 }
                 (b'G' | b'M', None) => unread = true,
                 (b'F', _) if f_at.is_none() => f_at = Some(i),
+                (b'G', Some(40.0 | 41.0 | 41.1 | 42.0 | 42.1)) => comp_set = true,
+                (b'M', Some(3.0 | 4.0 | 5.0)) => spindle_set = true,
+                (b'M', Some(6.0)) => tool_change = true,
                 _ => {}
             }
             still &= !matches!(w.letter, b'F' | b'S');
             speed_word |= w.letter == b'S';
             m98 |= w.letter == b'M' && code() == Some(98.0);
-            modal |= match (w.letter, code()) {
+            match (w.letter, code()) {
+                (b'G', Some(93.0 | 94.0 | 95.0)) => early = true,
                 (b'G', Some(g)) => {
-                    !matches!(g, 0.0 | 1.0 | 2.0 | 3.0 | 4.0 | 5.0 | 5.1 | 5.2 | 5.3)
+                    late |= !matches!(g, 0.0 | 1.0 | 2.0 | 3.0 | 4.0 | 5.0 | 5.1 | 5.2 | 5.3)
                 }
-                (b'M', Some(m)) => !matches!(m, 70.0 | 71.0 | 72.0 | 73.0),
-                _ => false,
-            };
+                (b'M', Some(3.0 | 4.0 | 5.0 | 6.0 | 61.0 | 62.0..=68.0)) => early = true,
+                // (M19, whose step the overview does not list: both)
+                (b'M', Some(19.0)) => (early, late) = (true, true),
+                (b'M', Some(m)) => late |= !matches!(m, 70.0 | 71.0 | 72.0 | 73.0),
+                _ => {}
+            }
         }
+        // (an M72's block: only its codes before the restore run between it and the save;
+        // an M70's or M73's: only those after the save, F and S before it)
+        let (modal, still) = match m7 {
+            Some(72) => (early, still),
+            Some(70 | 73) => (late, true),
+            _ => (early || late, still),
+        };
         if let Some(saved) = self.linuxcnc_feed_saved.as_mut() {
             saved.quiet &= !modal;
             saved.still &= !modal && still;
+            saved.units |= units;
         }
         let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
-        if units || unread || !in_order {
+        if unread || !in_order {
             self.linuxcnc_feed_saved = None;
         }
         // (a feed mode, a speed or an M98 in a condition or loop of the main program, after a
@@ -2954,10 +2976,26 @@ impl Checker {
             rate = self.readable.get(at).copied().flatten();
         }
         let speed = (!state.is_unknown(b'S')).then(|| state.speed.unwrap_or(Dec::ZERO));
+        // the spindle's direction and the compensation the save takes: the block's M3-M5 run
+        // before it (the checker's flags read them after this), its G40-G42 after it (the
+        // compensation before the block: `M70 G40` saves it on); an M6 of the block stops
+        // the spindle (`linuxcnc_tool_change_stopped`): not followed
+        let spindle = if tool_change || !spindle_set && self.linuxcnc_spindle_unknown {
+            None
+        } else if !spindle_set && self.linuxcnc_tool_change_stopped {
+            Some(5)
+        } else {
+            Some(state.spindle)
+        };
+        let compensation = (!self.linuxcnc_compensation_unknown)
+            .then_some((before.compensation, self.linuxcnc_dynamic_compensation));
         let now = FeedSaved {
             mode: state.feed_mode,
             rate,
             speed,
+            spindle,
+            compensation,
+            units: false,
             quiet: !modal,
             still: !modal && still,
         };
@@ -2981,10 +3019,12 @@ impl Checker {
                 }
             }
             72 => {
-                let saved = self
+                let kept = self
                     .linuxcnc_feed_saved
-                    .filter(|_| followed && mode_known)
+                    .filter(|_| followed)
                     .filter(|_| matches!(self.linuxcnc_saved, Saved::Valid(_)));
+                self.linuxcnc_spindle_restored(kept, comp_set, tool_change);
+                let saved = kept.filter(|s| mode_known && !s.units);
                 let dropped = match saved {
                     Some(saved) => self.linuxcnc_feed_restored(saved, now),
                     None => {
@@ -2992,6 +3032,14 @@ impl Checker {
                         None
                     }
                 };
+                // (a followed restore puts every other group back as saved: the block's codes
+                // after it are all that differ; review 58c F5: `M70` / `M8` / `M72` / `M72 G1
+                // X1` is "Cannot do g1 with zero feed rate" at the second M72; they count
+                // for a later M72 either way)
+                if let Some(s) = self.linuxcnc_feed_saved.as_mut() {
+                    s.quiet = (s.quiet || saved.is_some()) && !late;
+                    s.still &= !late;
+                }
                 if dropped != Some(false) {
                     self.linuxcnc_m72_dropped = Some(self.stats.blocks);
                     self.linuxcnc_m72_motion_dropped(b, before, dropped == Some(true));
@@ -3007,6 +3055,45 @@ impl Checker {
                 }
             }
             _ => {}
+        }
+    }
+
+    /// [`Checker::linuxcnc_feed_restore`]: the spindle's direction and the cutter
+    /// compensation (G40, G41, G42, G41.1, G42.1) after an M72, which restores them from the
+    /// save (interp_convert.cc `restore_settings` writes the M3-M5 and G40-G42 that differ).
+    /// The restore runs after the block's M3-M5 and M6, before its G40-G42 (the G-code
+    /// overview's "G-code Order of Execution"): where the save is followed (`saved`) and the
+    /// value it took is known, the value is the saved one (review 58c, F1: `M70` / `M72` /
+    /// `G33 Z-1 K0.1` is rs274's "Spindle not turning in G33"; `G41.1 D0.1` / `M70` / `M72`
+    /// / `G81 X1 Z-1 R1` is "Cannot use canned cycles with cutter compensation on");
+    /// elsewhere it is not known until the program sets it (review 57d, F4: `S1000 M3` /
+    /// `M70` / `M5` / `M72` / `G33 Z-1 K0.1` runs in `rs274 -g`). A G40-G42 of the block
+    /// (`comp_set`) sets the compensation after the restore; an M6 of it (`tool_change`)
+    /// stops the spindle before the restore, which the checker leaves not known.
+    fn linuxcnc_spindle_restored(
+        &mut self,
+        saved: Option<FeedSaved>,
+        comp_set: bool,
+        tool_change: bool,
+    ) {
+        match saved.and_then(|s| s.spindle).filter(|_| !tool_change) {
+            Some(direction) => {
+                self.machine.state.spindle = direction;
+                self.linuxcnc_spindle_unknown = false;
+                self.linuxcnc_tool_change_stopped = false;
+            }
+            None => self.linuxcnc_spindle_unknown = true,
+        }
+        if comp_set {
+            return;
+        }
+        match saved.and_then(|s| s.compensation) {
+            Some((compensation, dynamic)) => {
+                self.machine.state.compensation = compensation;
+                self.linuxcnc_dynamic_compensation = dynamic;
+                self.linuxcnc_compensation_unknown = false;
+            }
+            None => self.linuxcnc_compensation_unknown = true,
         }
     }
 
@@ -4955,6 +5042,14 @@ pub(super) struct FeedSaved {
     mode: i64,
     rate: Option<Dec>,
     speed: Option<Dec>,
+    /// The spindle's direction (M3, M4, M5) and the cutter compensation (the G40-G42 code,
+    /// G41.1/G42.1 among them) the save took, None where not known
+    /// ([`Checker::linuxcnc_spindle_restored`]).
+    spindle: Option<i64>,
+    compensation: Option<(i64, bool)>,
+    /// A G20 or G21 since the save (or in the M72's block): it converts rs274's rate, which
+    /// the feed's restore is then not followed for; the spindle's and the compensation's are.
+    units: bool,
     /// No G or M code since the save (or in the save's block) that may change another
     /// modal group the restore writes: where the feed mode, rate and speed are the saved
     /// ones, the restore writes nothing and the M72 block's motion runs.
@@ -7273,6 +7368,46 @@ mod tests {
                 "S1000 M3\nM70\nM72\nM5\nG33 Z-1 K0.1",
                 Some((7, 1, refused)),
             ),
+            // review 58c, F1: a followed save gives back the direction and the compensation
+            // it took ("Spindle not turning in G33", "Spindle turning counterclockwise in
+            // G84", "Cannot use canned cycles with cutter compensation on", "Cannot turn
+            // cutter radius comp on when on"); an M6 before the save stops the spindle, a
+            // G40 of the save's block runs after it, one of the M72's block after the restore
+            ("M70\nM72\nG33 Z-1 K0.1", Some((5, 1, refused))),
+            ("S100 M4\nM70\nM72\nG84 X1 Z-1 R1 F1", Some((6, 1, refused))),
+            (
+                "F10\nG41.1 D0.1\nG1 X1\nM70\nM72\nG81 X1 Z-1 R1",
+                Some((8, 1, refused)),
+            ),
+            (
+                "F10\nG41.1 D0.1\nG1 X1\nM70\nM72\nG41.1 D0.1",
+                Some((8, 1, refused)),
+            ),
+            (
+                "S1000 M3\nM6 T1\nM70\nM3\nM72\nG33 Z-1 K0.1",
+                Some((8, 1, refused)),
+            ),
+            (
+                "F10\nG41.1 D0.1\nG1 X1\nM70 G40\nG1 X2\nM72\nG81 X1 Z-1 R1",
+                Some((9, 1, refused)),
+            ),
+            (
+                "F10\nM70\nM72 G41.1 D0.1\nG1 X1\nG81 X1 Z-1 R1",
+                Some((7, 1, refused)),
+            ),
+            // review 58c F3, F5: the M72 block's codes after the restore, the M70 block's
+            // before the save, and what a followed M72 put back change nothing it compares
+            // ("Cannot do g1 with zero feed rate" each); an M8 before the M72 does
+            ("M70\nM72 G18 G1 X1", Some((4, 12, Rule::NoFeedRate))),
+            ("M70 G95\nM72 G1 X1", Some((4, 8, Rule::NoFeedRate))),
+            ("M70\nM8\nM72\nM72 G1 X1", Some((6, 8, Rule::NoFeedRate))),
+            ("M70\nM8\nM72 G1 X1", None),
+            // (an M6 of the M72's block, before the restore: not followed; rs274 runs it)
+            ("S1000 M3\nM70\nM5\nM72 M6 T1\nG33 Z-1 K0.1", None),
+            // a G20 between leaves the feed's restore not followed, not the spindle's; a save
+            // in a condition leaves it not known
+            ("M70\nG20\nM72\nG21\nG33 Z-1 K0.1", Some((7, 1, refused))),
+            ("o1 if [1]\nM70\no1 endif\nM72\nG33 Z-1 K0.1", None),
         ];
         let judged = [
             Rule::NoFeedRate,

@@ -1001,16 +1001,9 @@ impl Checker {
         };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again;
-        // so after an M72, which restores the direction and the cutter compensation (its
-        // G41/G42 and D) an M70 or M73 saved, which the checker does not keep: after the
-        // block's M3-M5, before its G40-G42 (the G-code overview's "G-code Order of
-        // Execution"; review 57d, F4: `S1000 M3` / `M70` / `M5` / `M72` / `G33 Z-1 K0.1` runs
-        // in `rs274 -g`, and `G41.1 D0.1` / `M70` / `G40` / `M72` / `G81 ...` is "Cannot use
-        // canned cycles with cutter compensation on")
+        // an M72 restores both after the block's M3-M5, before its G40-G42, as the state
+        // phase found them (`Checker::linuxcnc_spindle_restored`)
         let m72 = ms.contains(&72);
-        if m72 {
-            self.linuxcnc_compensation_unknown = true;
-        }
         if codes
             .iter()
             .any(|&c| matches!(c, 400 | 410 | 411 | 420 | 421))
@@ -1018,10 +1011,10 @@ impl Checker {
             self.linuxcnc_compensation_unknown = false;
         }
         let spindle_set = ms.iter().any(|&m| matches!(m, 3..=5));
-        if spindle_set {
+        if spindle_set && !m72 {
             self.linuxcnc_spindle_unknown = false;
         }
-        if m72 || !spindle_set && n_m < m_words.min(held_m.len()) {
+        if !spindle_set && n_m < m_words.min(held_m.len()) {
             // (or an M code of unknown value, `M[1+2]`, `M#1`: it may start, stop or change
             // the spindle's tool; the direction is unknown until M3, M4 or M5)
             self.linuxcnc_spindle_unknown = true;
@@ -1393,15 +1386,6 @@ impl Checker {
     fn linuxcnc_unsure_after(&mut self, codes: &[i64], g_unread: bool, first: &[u32; 26]) -> u32 {
         let all = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
         let named = |a: u8| first[usize::from(a - b'A')] != 0;
-        // the axes known to stand at zero, which either unit reads alike
-        let state = &self.machine.state;
-        let zero = crate::modal::AXES
-            .iter()
-            .enumerate()
-            .filter(|&(i, &a)| {
-                state.position[i].is_some_and(|v| v.is_zero()) && !state.is_unknown(a)
-            })
-            .fold(0, |m, (_, &a)| m | bit(a));
         let mut unsure = 0;
         for &c in codes {
             unsure |= match c {
@@ -1422,10 +1406,10 @@ impl Checker {
                 // holds: Y and Z stay known, `G7` / `G0 X1` / `G38.2 Z0` from Z0 is "Start
                 // point too close to probe point")
                 70 | 80 if !g_unread => bit(b'X'),
-                // (a zero is the same point in either unit: `G20` / `G38.4 X0` from X0 is
-                // "Start point too close to probe point"; not so after G7/G8, whose X words
-                // the checker reads as they are written: the X a G93 move travels is not known)
-                200 | 210 if !g_unread => all & !zero,
+                // (G20/G21 leave every axis unknown, a zero as well: a zero kept through them
+                // turned the wrong Z the checker holds after a canned cycle or rigid tap into
+                // false "Start point too close to probe point" refusals: `G20 F4` / `G81 X1
+                // Z-1 R1` / `G38.2 Z-1` runs in `rs274 -g`)
                 c if linuxcnc_unsettles(c) => all,
                 _ => 0,
             };
@@ -4122,11 +4106,14 @@ mod tests {
             // after a call the checker does not follow, the compensation is not known
             ("G41.1 D1\no<s> call\nG43 H1\nM2\no<s> sub\nG40\no<s> endsub", &[]),
             // the diameter mode leaves X not known exactly, Y and Z as they were (`rs274 -g`
-            // refuses each: the last two are misses); a G20 or G21 leaves an axis at zero
+            // refuses each: the last two are misses); a G20 or G21 leaves every axis unknown,
+            // a zero too (a miss: the Z the checker holds after a cycle is not the one rs274
+            // holds, and the last but one runs in `rs274 -g`; review 58c, F4)
             ("G7\nG0 X1\nG38.2 Z5 F10", &["6: Start point too close to probe point"]),
             ("G7\nG0 Z1\nG38.2 X0 F10", &[]),
             ("G0 X2\nG7\nG0 Z1\nG38.2 X4 F10", &[]),
-            ("G20\nG38.4 X0 F10", &["5: Start point too close to probe point"]),
+            ("G20\nG38.4 X0 F10", &[]),
+            ("G20 F4\nG81 X1 Z-1 R1\nG38.2 Z-1", &[]),
             ("G0 X1\nG20\nG38.4 X0.03937 F10", &[]),
             // after the block's end the lines run unconditionally again: judged (review 17;
             // an `if` in a definition opens nothing in the main program)
