@@ -1176,14 +1176,21 @@ impl Checker {
                 .call_numbers
                 .iter()
                 .any(|n| !self.file_programs.contains(n))
-            || match p.body.number {
-                Key::Number(n) => {
-                    (9000..=9999).contains(&n)
-                        || self.call_numbers_any
-                        || self.call_numbers.contains(&n)
-                }
-                Key::Label(_) => false,
+            || self.number_may_be_run(p)
+    }
+
+    /// Whether `p`'s own number may have something of the file run it: O9000-O9999 (an M, G
+    /// or T code of the main may run it), or a number a call names or a call whose P the
+    /// checker does not match may name ([`Checker::may_run_here`], [`Checker::main_may_run`]).
+    fn number_may_be_run(&self, p: &Pending) -> bool {
+        match p.body.number {
+            Key::Number(n) => {
+                (9000..=9999).contains(&n)
+                    || self.call_numbers_any
+                    || self.call_numbers.contains(&n)
             }
+            Key::Label(_) => false,
+        }
     }
 
     /// Whether the main's run may run the uncalled program `p` under the offset it left (its
@@ -1217,16 +1224,7 @@ impl Checker {
                 .iter()
                 .any(|(caller, n)| reached.contains(caller) && !self.file_programs.contains(n))
         };
-        p.body.after_skippable_end
-            || match p.body.number {
-                Key::Number(n) => {
-                    (9000..=9999).contains(&n)
-                        || self.call_numbers_any
-                        || self.call_numbers.contains(&n)
-                }
-                Key::Label(_) => false,
-            }
-            || stored_call_reached()
+        p.body.after_skippable_end || self.number_may_be_run(p) || stored_call_reached()
     }
 
     /// A subprogram at a call made in known units and under a known shift: its span (least
