@@ -99,12 +99,22 @@ def rs274_output(tmp_path: Path, text: str, flags: tuple[str, ...] = ()) -> str:
 
 @pytest.fixture(autouse=True)
 def no_stop_left_by_a_test() -> Iterator[None]:
-    """A stop (^C, SIGTERM, SIGHUP) a test raised in this process is not the next test's: the
+    """A stop (^C, SIGTERM, SIGHUP) a test raised in this process, or a handler of one a
+    command it ran installed, is not the next test's: the
     command's entry point forgets the stops noted before at each start
     (formats.stops.note_interrupts), but a test that calls a command's click function directly
     does not pass through it, and its first wait (formats.stops.heed_stops) exited with 128 +
     the signal a test before had sent (test_workers' SIGHUP, then a conversion: exit 129)."""
+    import signal
+
     from formats import stops
 
+    # (and the handlers a command installs in the test's process, formats.files'
+    # exit_on_termination for SIGTERM and SIGHUP: left, a later test's stray signal raised its
+    # exit inside hypothesis's drawing, a failure of another test)
+    handlers = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)}
     yield
     stops.TAKEN.clear()
+    for s, handler in handlers.items():
+        if signal.getsignal(s) is not handler and handler is not None:
+            signal.signal(s, handler)
