@@ -581,3 +581,151 @@ def test_a_stored_call_the_main_does_not_reach_runs_no_uncalled_program_under_it
     assert errors(program, _wo2(tmp_path)) == []
     # (an O9001, which an M code of the main may run under its G55, keeps it)
     assert errors(program.replace("O2000", "O9001"), _wo2(tmp_path)) == [("TG601", 7, 4)]
+
+
+def said(blocks: str, profile: str) -> list[tuple[str, int, int, str]]:
+    """The errors of `%` / O1000 / `blocks` / `%`, with the start of each one's message."""
+    text = "%\nO1000\n" + blocks.replace(" / ", "\n") + "\n%\n"
+    prof = load_profile(profile)
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    return [(f.rule, f.line, f.column, f.message.split(", outside")[0])
+            for f in found if f.severity == "error"]
+
+
+# O1000 (lines 2-4) is the body, under its own G55 (X-100 on the profile); O2000 the main
+BODY = "G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("g10, expected", [
+    # (e1: G55's X written -200: X-700. runs at -900, said with the value written)
+    ("G10 L2 P2 X-200.", [("TG601", 10, 5, "X goes to -900 in machine coordinates (work -700 "
+                           "+ G55 offset -200 as a G10 before this call wrote it)")]),
+    # (e2: the profile's own value written again)
+    ("G10 L2 P2 X-100.", [("TG601", 10, 5, "X goes to -800 in machine coordinates (work -700 "
+                           "+ G55 offset -100 as a G10 before this call wrote it)")]),
+    # (X0: -700 runs inside the travel)
+    ("G10 L2 P2 X0.", []),
+    # (under G91 the value is added to the offset; a #-value; L20, an additional offset's
+    # on a FANUC, writes no G55: the profile's value holds)
+    ("G91 G10 L2 P2 X-200.", []),
+    ("#24=-200. / G10 L2 P2 X#24", []),
+    ("G10 L20 P2 X-200.", [("TG601", 10, 5, "X goes to -800 in machine coordinates (work -700 "
+                            "+ G55 offset -100.0)")]),
+])
+def test_a_g10_of_numbers_under_g90_writes_a_value_known(tmp_path, g10, expected):
+    """Review 58d, F9 (e1.nc, e2.nc): a G10 L2 P2 of numbers under G90 sets G55's X to the
+    value written (FANUC 0i-MF, "Changing workpiece coordinate system"): the body's X-700.
+    is judged at the call with it (it was held, the value taken as not known, and the
+    -900 overtravel lost). Under G91, with a #-value, the value is not known: held."""
+    program = BODY + f"{g10} / G90 G55 / M98 P1000 / M30"
+    expected = [(r, line + g10.count(" / "), c, m) for r, line, c, m in expected]
+    assert said(program, _wo2(tmp_path)) == expected
+
+
+def test_a_g10_of_g54_s_value_judges_a_body_under_g54(tmp_path):
+    """Review 58d, F9 (e3.nc): `G10 L2 P1 X0.` writes G54's X as it is: O1000's `G90 G54 G0
+    X-800.` is -800, said at the call with the value written."""
+    program = ("G90 G54 G0 X-800. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+               "G10 L2 P1 X0. / M98 P1000 / M30")
+    assert said(program, _wo2(tmp_path)) == [("TG601", 9, 5, (
+        "X goes to -800 in machine coordinates (work -800 + G54 offset 0 as a G10 before "
+        "this call wrote it)"))]
+
+
+@pytest.mark.parametrize("other", [
+    # (q2e: a G10 of G54; q2g: of a tool offset; q6: a stored program's call; q7: G52)
+    "G10 L2 P1 X0.", "G10 L10 P1 R0.", "M98 P8000", "G52 X10. / G52 X0.",
+    # (q9: an additional offset selected)
+    "G54.1 P1 / G0 X0",
+])
+def test_what_an_uncalled_program_does_holds_no_later_program_s_positions(tmp_path, other):
+    """Review 58d, F4 (q2e, q2g, q6, q7, q9): O3000, written first and never called, writes
+    an offset, shifts, or calls a program the file does not hold: that loses the profile's
+    offsets in O3000's run only, not in O1000's (its X-700. under G55 is -800) nor in the
+    main's (it lost them for the whole file from there: every later overtravel silent)."""
+    program = ("M99 / O3000 / " + other + " / M99 / O4000 / G90 G55 G0 X-700. / M99 / O2000 / "
+               "G21 G17 G90 G54 / G0 X0 Y0 / M98 P4000 / M30")
+    # (the blocks from line 3: the main's call the one before the last)
+    line = program.count(" / ") + 2
+    assert errors(program, _wo2(tmp_path)) == [("TG601", line, 5)]
+    # (q2i: no call at all: O4000 judged alone says its own)
+    program = "M99 / O3000 / " + other + " / M99 / O4000 / G90 G55 G0 X-700. / M99"
+    assert errors(program, _wo2(tmp_path)) == [("TG601", program.count(" / ") + 2, 12)]
+
+
+def test_a_call_of_a_program_that_wrote_offsets_loses_them_in_its_caller(tmp_path):
+    """Review 58d, F4: the loss a body makes (its own G10 of G55's X) is its caller's from
+    the call on, not before it: the main's own X-700. under G55 is -800 before the call
+    (said), -700 after it (it was silent before the call too: the body's G10, read first,
+    lost the offsets for the whole file)."""
+    program = ("G10 L2 P2 X0. / M99 / O2000 / G21 G17 G90 G55 / G0 X-700. Y0 / M98 P1000 / "
+               "G0 X-700. / M30")
+    assert errors(program, _wo2(tmp_path)) == [("TG601", 7, 4)]
+
+
+@pytest.mark.parametrize("body, call", [
+    # (v10: P a G65 argument; v2d: a local the main sets before an M98)
+    ("G10 L2 P#4 X0.", "G65 P2500 I2."),
+    ("G10 L2 P#1 X0.", "#1=2 / M98 P2500"),
+    # (w2: a WHILE loop in the body writes G54, then G55)
+    ("#5=1 / WHILE [#5 LE 2] DO1 / G10 L2 P#5 X0. / #5=#5+1 / END1", "M98 P2500"),
+])
+def test_a_body_whose_g10_p_is_an_expression_may_write_any_offset(tmp_path, body, call):
+    """Review 58d, F5 and F6 (v10, v2d, w2): O2500's G10 writes the offset its P's value
+    names where it runs, which the checker does not know where it reads the body: a call of
+    it writes every offset, the values not known, so O4000's X-700. under G55 after it is
+    held (it was said as -800, the body "not followed" and taken as writing nothing)."""
+    program = ("M99 / O4000 / G90 G55 G0 X-700. / M99 / O2500 / " + body + " / M99 / O2000 / "
+               f"G21 G17 G90 G54 / G0 X0 Y0 / {call} / M98 P4000 / M30")
+    assert errors(program, _wo2(tmp_path)) == []
+    # (the same call after O4000's: said there)
+    program = program.replace(f"{call} / M98 P4000", f"M98 P4000 / {call}")
+    assert [e[0] for e in errors(program, _wo2(tmp_path))] == ["TG601"]
+
+
+def test_a_g10_whose_p_is_an_expression_in_a_loop_writes_every_offset(tmp_path):
+    """Review 58d, F6 (w2g.nc): the loop back writes G54-G59 (P1-P6), not only the G54 of
+    #5's first value: G55's X is 0 at the call, X-700. inside. Without the jump back the P
+    is its value (P1, G54): the G55 position said."""
+    program = ("M99 / O4000 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+               "#5=1 / N10 G10 L2 P#5 X0. / #5=#5+1 / IF [#5 LE 6] GOTO 10 / M98 P4000 / M30")
+    assert errors(program, _wo2(tmp_path)) == []
+    program = program.replace("IF [#5 LE 6] GOTO 10", "#6=1")
+    assert [e[0] for e in errors(program, _wo2(tmp_path))] == ["TG601"]
+
+
+@pytest.mark.parametrize("rest, expected", [
+    # (o3: O100, written after the main, writes G55's X before O1000's call: -700, inside)
+    ("G10 L2 P2 X0. / M99", []),
+    # (b1: O100 writes nothing: the -800 said at the call)
+    ("G0 Y0 / M99", [("TG601", 10, 5)]),
+    # (O100 writes G54's X: G55's is the profile's)
+    ("G10 L2 P1 X0. / M99", [("TG601", 10, 5)]),
+    # (n1: through an O200 that O100 calls, written after it)
+    ("M98 P200 / M99 / O200 / G10 L2 P2 X0. / M99", []),
+])
+def test_a_g10_of_a_program_written_after_its_call_holds_the_positions_after_it(
+        tmp_path, rest, expected):
+    """Review 58d, F1 (o3.nc, n1.nc): the main's `M98 P100` runs O100, written after the main,
+    before its G55 call of O1000: what O100 writes is known only at the file's end, so the
+    position said at the call waits for it there, dropped where O100 (or a program it calls)
+    writes G55's X (it was "X goes to -800", O100 taken as writing nothing, as a program the
+    file does not hold is)."""
+    program = ("G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P100 / "
+               "G90 G55 / M98 P1000 / M30 / O100 / " + rest)
+    assert errors(program, _wo2(tmp_path)) == expected
+    # (a stored program, not in the file: not followed, the alarm said)
+    assert errors(program.replace("M98 P100 /", "M98 P8000 /"), _wo2(tmp_path)) == [
+        ("TG601", 10, 5)]
+
+
+def test_a_program_run_on_into_with_the_skip_switch_keeps_the_g10_before_it(tmp_path):
+    """Review 58d (r1.nc): with the block skip switch on the main runs past `/M30` into O2000
+    under its G55, whose X its G10 wrote 0: O2000's X-700. runs at -700, no overtravel
+    there; and O3000's call of it under G54 runs it at -700 too. (With the G10 of the
+    main read apart as its own run, the program after it was read under the profile's G55.)"""
+    program = ("G21 G17 G90 G54 / G10 L2 P2 X0. / G90 G55 / G0 X0 Y0 / /M30 / O2000 / G0 X-700. "
+               "/ M99 / O3000 / G90 G54 / M98 P2000 / M30")
+    assert errors(program, _wo2(tmp_path)) == []
+    # (r1c: no G10: the run-on's -800 said on O2000's line)
+    assert errors(program.replace("G10 L2 P2 X0. / ", ""), _wo2(tmp_path)) == [("TG601", 8, 4)]

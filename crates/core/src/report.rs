@@ -617,6 +617,8 @@ mod tests {
                                 column,
                                 span: false,
                                 guessed: false,
+                                placed: crate::check::Placed::Not,
+                                pending_on: Vec::new(),
                             };
                             writer.finding(&mut written, &finding);
                             assert_eq!(
@@ -645,6 +647,8 @@ mod tests {
             column,
             span: false,
             guessed: false,
+            placed: crate::check::Placed::Not,
+            pending_on: Vec::new(),
         };
         let mut found = Vec::new();
         for line in 1..=12 {
@@ -726,6 +730,8 @@ mod tests {
             column: 1,
             span: false,
             guessed: false,
+            placed: crate::check::Placed::Not,
+            pending_on: Vec::new(),
         };
         let mut found = Vec::new();
         for line in 1..=7 {
@@ -865,6 +871,8 @@ mod tests {
             column: 3,
             span: false,
             guessed: false,
+            placed: crate::check::Placed::Not,
+            pending_on: Vec::new(),
         };
         let rule = Rule::ALL[0];
         let (id, severity, clause) = (rule.id(), rule.severity().name(), rule.clause());

@@ -34,7 +34,8 @@
 //! its span not added to the file's: its caller is not known), at the end of the file; a
 //! program given up is noted at each call of it (finding E).
 
-use super::{Checker, Finding, Span};
+use super::limits::Written;
+use super::{Checker, Finding, Placed, Span};
 use crate::decimal::Dec;
 use crate::modal::AXES;
 use crate::rules::Rule;
@@ -73,9 +74,14 @@ pub(super) struct Early {
     /// whoever takes them and whatever the selection (review 43, finding B).
     held: usize,
     reports_from: u64,
-    /// [`Checker::offsets_written`] of the program it is read inside (a LinuxCNC main's,
-    /// around a definition), given back at its end.
-    written_before: [u16; 6],
+    /// [`Checker::offsets_written`], [`Checker::g10_expression`] and whether the profile's
+    /// offsets were lost ([`Checker::lose_offsets`]) in the program it is read inside (a
+    /// LinuxCNC main's, around a definition) or the one before it: given back at its end
+    /// (review 58d F4: a G10, G52 or stored call of an earlier program, uncalled or called
+    /// after, silenced every later program's machine positions).
+    written_before: Written,
+    expression_before: u16,
+    lost_before: bool,
 }
 
 /// What a program read apart ([`Early`]) and a subprogram kept for its calls ([`Pending`])
@@ -120,7 +126,10 @@ struct Body {
     calls_judged: u32,
     /// The work offsets' axes it may write when it runs ([`Checker::offsets_written`] at
     /// its end): taken into its caller's at each call.
-    writes: [u16; 6],
+    writes: Written,
+    /// It lost the profile's offsets (a G10, G52, G54.1, a frame, a stored program's
+    /// call...): so does its caller from each call on.
+    loses: bool,
     /// The end or return before it is one the block skip can pass over (`/M30`): with the
     /// switch on, the program before runs on into it (review 56e, F4).
     after_skippable_end: bool,
@@ -250,6 +259,17 @@ pub(super) const HOLD_ALL: u64 = 4 * HOLD_MAX as u64;
 
 /// What a TG601 of a run of increments from a position not known says
 /// (crate::check::limits): such a finding of a body read apart is said at its calls.
+/// How a body's machine position stands at a call ([`Checker::offset_now`]).
+enum Now {
+    /// As read: the offset's value the profile's there.
+    AsRead,
+    /// Under a value a G10 before the call wrote, not known: kept.
+    Unknown,
+    /// Under the value (the last) a G10 before the call wrote: the axis's place, the offset
+    /// (54-59), the work position and the value.
+    Written(u8, u8, f64, f64),
+}
+
 const RUN: &str = " with its start not known: more than its whole travel of ";
 
 /// A span's ends, put together with another's (`said` of either).
@@ -265,10 +285,6 @@ fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
     }
 }
 
-/// [`Checker::offsets_written`] of a G10 whose L or P the checker does not place: every
-/// axis of every offset.
-pub(super) const WRITES_ALL: [u16; 6] = [u16::MAX; 6];
-
 impl Checker {
     /// A program read from the reset state begins (`number`, its O word at `at`): its own
     /// positions kept apart from the spans before it. Only with no shift, frame or
@@ -279,6 +295,7 @@ impl Checker {
             return;
         }
         let stash = std::mem::take(&mut self.spans);
+        let lost = self.offsets_lost;
         self.early = Some(Box::new(Early {
             body: Body {
                 number,
@@ -294,7 +311,8 @@ impl Checker {
                 inherited_last: None,
                 calls: 0,
                 calls_judged: 0,
-                writes: [0; 6],
+                writes: Written::default(),
+                loses: false,
                 after_skippable_end: self.end_skippable,
                 first: self.programs == 0,
                 outside: 0,
@@ -307,7 +325,14 @@ impl Checker {
             lost_codes: None,
             held: 0,
             reports_from: 0,
-            written_before: std::mem::take(&mut self.offsets_written),
+            written_before: if self.end_skippable {
+                self.offsets_written.clone()
+            } else {
+                std::mem::take(&mut self.offsets_written)
+            },
+            expression_before: std::mem::take(&mut self.g10_expression),
+            // (the program before runs on into it, skip switch on: that run's writes and loss)
+            lost_before: std::mem::replace(&mut self.offsets_lost, lost && self.end_skippable),
         }));
         self.early_on = true;
     }
@@ -341,9 +366,11 @@ impl Checker {
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
             *span = joined(before, *span);
         }
-        for (written, before) in self.offsets_written.iter_mut().zip(early.written_before) {
-            *written |= before;
-        }
+        let mut written = early.written_before;
+        written.then(&self.offsets_written);
+        self.offsets_written = written;
+        self.g10_expression |= early.expression_before;
+        self.offsets_lost |= early.lost_before;
         self.hold_from = None;
     }
 
@@ -375,9 +402,7 @@ impl Checker {
                 if f.guessed && early.body.after_skippable_end {
                     f.guessed = false;
                     kept.push(f);
-                } else if f.rule == Rule::TravelExceeded
-                    && f.message.contains(" in machine coordinates")
-                {
+                } else if f.rule == Rule::TravelExceeded && f.placed != Placed::Not {
                     positions.push(f);
                 } else if matches!(
                     f.rule,
@@ -394,10 +419,15 @@ impl Checker {
             self.found.extend(kept);
         }
         let spans = std::mem::replace(&mut self.spans, early.stash);
-        let writes = std::mem::replace(&mut self.offsets_written, early.written_before);
+        let mut writes = std::mem::replace(&mut self.offsets_written, early.written_before);
+        // (a G10 whose L or P is an expression: another call may give it another value)
+        let expression = std::mem::replace(&mut self.g10_expression, early.expression_before);
+        writes.then(&Written::on_every(expression));
+        let loses = std::mem::replace(&mut self.offsets_lost, early.lost_before);
         self.pending.push(Pending {
             body: Body {
                 writes,
+                loses,
                 ..early.body
             },
             spans,
@@ -668,7 +698,7 @@ impl Checker {
             // (inside a program read apart: its positions not added to that one's)
             self.early_unfollowed(&token, at.0);
             self.call_returns(k, &token, at.0);
-            self.call_writes(k);
+            self.call_writes(k, at.0);
             return true;
         };
         let mut p = self.pending.remove(k);
@@ -681,17 +711,22 @@ impl Checker {
         }
         self.pending.insert(k, p);
         self.call_returns(k, &token, at.0);
-        self.call_writes(k);
+        self.call_writes(k, at.0);
         true
     }
 
     /// After a call of the subprogram `pending[k]`: the work offsets it may have written
     /// are its caller's from here ([`Checker::offsets_written`]; review 58a F1: a G10 of an
-    /// O2500 the main calls after O2000 holds no position of O2000's).
-    fn call_writes(&mut self, k: usize) {
-        let writes = self.pending[k].body.writes;
-        for (written, axes) in self.offsets_written.iter_mut().zip(writes) {
-            *written |= axes;
+    /// O2500 the main calls after O2000 holds no position of O2000's); where it lost the
+    /// profile's offsets, its caller's positions after the call on `line` are not compared
+    /// as machine positions either.
+    fn call_writes(&mut self, k: usize, line: usize) {
+        let writes = self.pending[k].body.writes.clone();
+        self.offsets_written.then(&writes);
+        self.offset_writer(&writes, self.pending[k].body.loses);
+        if self.pending[k].body.loses {
+            let why = format!("{} changes the offsets", self.pending[k].body.name);
+            self.lose_offsets(line, &why);
         }
     }
 
@@ -781,30 +816,94 @@ impl Checker {
         guessed.is_some() && self.work == guessed
     }
 
-    /// Whether a body's machine position under a work offset (not a G53 one), read with the
-    /// profile's offsets, may stand elsewhere at a call here: a G10 ran in the caller before
-    /// the call (its own, or one of a program it called) and may have written that offset's
-    /// value on that axis (review 57e F1: `G10 L2 P2 X0.` / `G90 G55` / `M98 P2000`
-    /// ran O2000's `X-700.` at X-700, not at the -800 read under the profile's G55). Kept,
-    /// not said ([`Checker::offsets_written`]); a write of another offset or axis, or of a
-    /// tool offset, holds nothing (review 58a F3).
-    fn offset_value_unknown(&self, f: &Finding) -> bool {
-        if self.offsets_written == [0; 6] || f.message.contains("(G53)") {
-            return false;
+    /// At the file's end: a position said at a call after its caller called programs the
+    /// checker had not read there ([`Finding::pending_on`]) is dropped where one of them,
+    /// read later in the file, writes that offset's axis (its value there not known at the
+    /// call: held, as a G10 of a program read before holds it); said where none does (a
+    /// program the file does not hold writes nothing followed).
+    pub(super) fn pending_on_ended(&mut self) {
+        if self.found.iter().all(|f| f.pending_on.is_empty()) {
+            return;
         }
-        // (the axis and the offset it was read under, as its message names them: `X goes
-        // to -800 in machine coordinates (work -700 + G55 offset -100.0)`, limits.rs)
-        let axis = f.message.bytes().next().and_then(crate::modal::axis_index);
-        let work = f
-            .message
-            .find(" + G")
-            .and_then(|k| f.message.get(k + 4..k + 6))
-            .and_then(|g| g.parse::<usize>().ok())
-            .filter(|g| (54..=59).contains(g));
-        match (axis, work) {
-            (Some(i), Some(g)) => self.offsets_written[g - 54] & 1 << i != 0,
-            _ => true,
+        let writers = &self.offset_writers;
+        let writes = |n: &i64, work: usize, place: usize| {
+            writers
+                .get(n)
+                .is_some_and(|(w, _)| w.value(work, place).is_some())
+        };
+        self.found.retain_mut(|f| {
+            let numbers = std::mem::take(&mut f.pending_on);
+            let Placed::Offset { place, work, .. } = f.placed else {
+                return true;
+            };
+            let (work, place) = (usize::from(work), usize::from(place));
+            // (and what the programs they call, not read there either, write)
+            !numbers.iter().any(|n| {
+                writes(n, work, place)
+                    || writers
+                        .get(n)
+                        .is_some_and(|(w, _)| w.unread.iter().any(|m| writes(m, work, place)))
+            })
+        });
+    }
+
+    /// How a body's machine position under a work offset (not a G53 one), read with the
+    /// profile's offsets, stands at a call here, where a G10 ran in the caller before the
+    /// call (its own, or one of a program it called: [`Checker::offsets_written`]). Where
+    /// it wrote that offset's value on that axis with a value known (a G10 L2 of numbers
+    /// under G90), the position is judged again with it (review 58d F9: `G10 L2 P2 X-200.`
+    /// / `G90 G55` / `M98 P2000` runs O2000's `X-700.` at -900); where with a value not
+    /// known it may stand elsewhere: kept, not said (review 57e F1); a write of another
+    /// offset or axis, or of a tool offset, changes nothing (review 58a F3).
+    fn offset_now(&self, f: &Finding) -> Now {
+        if !self.offsets_written.any() {
+            return Now::AsRead;
         }
+        match f.placed {
+            Placed::Offset { place, work, at } => {
+                match self
+                    .offsets_written
+                    .value(usize::from(work), usize::from(place))
+                {
+                    None => Now::AsRead,
+                    Some(v) if v.is_nan() => Now::Unknown,
+                    Some(v) => Now::Written(place, work, at, v),
+                }
+            }
+            Placed::Machine => Now::AsRead,
+            Placed::Not => Now::Unknown,
+        }
+    }
+
+    /// A body's position `f` under offset G`work` (axis of place `place`, work position
+    /// `at`, the profile's units) judged at a call with the value `value` a G10 before it
+    /// wrote (`under`: the message's tail naming the call): Some(its finding there) where
+    /// out of the travel, None where within.
+    fn rejudged(
+        &self,
+        f: &Finding,
+        (place, work, at, value): (u8, u8, f64, f64),
+        under: &dyn Fn(usize) -> String,
+    ) -> Option<Finding> {
+        let i = usize::from(place);
+        let (low, high) = self.travel.of_place(i)?;
+        let machine_at = at + value;
+        if (low - 1e-9..=high + 1e-9).contains(&machine_at) {
+            return None;
+        }
+        let message = format!(
+            "{} goes to {} in machine coordinates (work {} + G{work} offset {} as a G10 before \
+             this call wrote it), outside the travel {low} to {high}{}",
+            AXES[i] as char,
+            super::round6(machine_at),
+            super::round6(at),
+            super::round6(value),
+            under(f.line)
+        );
+        Some(Finding {
+            message,
+            ..f.clone()
+        })
     }
 
     /// Inside a program read apart: a call by another word than a program number (a Haas's
@@ -1374,7 +1473,7 @@ impl Checker {
         // not judged, said once; review 46, F3)
         let last = p.body.inherited_last.filter(|_| call.incremental);
         let inherited =
-            |f: &Finding| f.message.contains("(G53)") && last.is_some_and(|last| f.line <= last);
+            |f: &Finding| f.placed == Placed::Machine && last.is_some_and(|last| f.line <= last);
         if call.incremental && p.body.inherited_last.is_some() {
             self.machine_incremental_call(p.body.name.clone(), token, at);
         } else {
@@ -1389,20 +1488,51 @@ impl Checker {
                 // (a G53 before the body's own G90/G91 at a G91 call: kept for a later call
                 // under G90, which judges it; review 48, F7; a position under the offset
                 // left before it, kept for a call under that offset)
-                if inherited(&f)
-                    || f.guessed && !self.work_confirms(p.work_guessed)
-                    || self.offset_value_unknown(&f)
-                {
+                if inherited(&f) || f.guessed && !self.work_confirms(p.work_guessed) {
                     p.positions.push(f);
                     continue;
                 }
+                match self.offset_now(&f) {
+                    Now::AsRead => {}
+                    Now::Unknown => {
+                        p.positions.push(f);
+                        continue;
+                    }
+                    // (judged with the value written: said here where out, kept for a
+                    // later call where within)
+                    Now::Written(place, work, at_work, value) => {
+                        let said = known
+                            .then(|| self.rejudged(&f, (place, work, at_work, value), &under))
+                            .flatten()
+                            .filter(|_| unshifted);
+                        match said {
+                            Some(mut said) => {
+                                said.guessed &= self.work_guessed.is_some();
+                                (said.line, said.column) = at;
+                                self.early_hold();
+                                self.sample_hint_shown(&mut said);
+                                self.found.push(said);
+                            }
+                            None => p.positions.push(f),
+                        }
+                        continue;
+                    }
+                }
                 f.guessed &= self.work_guessed.is_some();
+                // (a position said at a call inside the body keeps what it waited for there)
+                if matches!(f.placed, Placed::Offset { .. }) {
+                    for &n in &self.offsets_written.unread {
+                        if !f.pending_on.contains(&n) {
+                            f.pending_on.push(n);
+                        }
+                    }
+                }
                 if let Some(remark) = &remark {
                     f.message = f.message.replacen(remark.as_str(), "", 1);
                 }
                 // (a position under a work offset is the body's work position plus the
                 // offset: not where it goes under a shift, or where its positions are not known)
-                let machine = f.message.contains("(G53)");
+                let machine = f.placed == Placed::Machine;
                 if !(machine || unshifted && known) {
                     continue;
                 }
@@ -1417,15 +1547,16 @@ impl Checker {
             // it in the larger units of the call, the travel holding the machine zero: said as
             // read, naming the call, as before sub41; none was said)
             for mut f in std::mem::take(&mut p.positions) {
+                // (in larger units, under a value a G10 wrote: not judged, kept)
                 if inherited(&f)
                     || f.guessed && !self.work_confirms(p.work_guessed)
-                    || self.offset_value_unknown(&f)
+                    || !matches!(self.offset_now(&f), Now::AsRead)
                 {
                     p.positions.push(f);
                     continue;
                 }
                 f.guessed &= self.work_guessed.is_some();
-                if !known && !f.message.contains("(G53)") {
+                if !known && f.placed != Placed::Machine {
                     continue;
                 }
                 f.message = format!(
@@ -1437,11 +1568,11 @@ impl Checker {
                 self.sample_hint_shown(&mut f);
                 self.found.push(f);
             }
-        } else if p.positions.iter().any(|f| !f.message.contains("(G53)")) {
+        } else if p.positions.iter().any(|f| f.placed != Placed::Machine) {
             // (in the smaller units of the call a position under a work offset beyond the
             // travel as read may be within it: not judged, said once; the G53 ones are judged
             // above, and kept for a call in the units they were read in)
-            p.positions.retain(|f| f.message.contains("(G53)"));
+            p.positions.retain(|f| f.placed == Placed::Machine);
             let message = format!(
                 "{token}: {} runs{units} here, and its machine positions under a work offset, \
                  beyond the travel as read in the units it was read in, are not judged in these",
@@ -1534,7 +1665,7 @@ impl Checker {
                 }
                 let message = self.machine_message(AXES[i], m.value, there, (low, high));
                 let message = format!("{message}{}", under(m.line));
-                self.report_limit(Rule::TravelExceeded, message, at.0, at.1);
+                self.report_placed(message, at, Placed::Machine);
             }
         }
     }

@@ -268,6 +268,72 @@ fn plane_axes(plane: i64) -> (usize, usize) {
     }
 }
 
+/// The work offsets G54-G59 (0-5) a program's run has written before here, and what
+/// ([`Checker::offsets_written`]).
+#[derive(Clone, Debug, Default)]
+pub(super) struct Written {
+    /// The axes (their places' bits) of each it may have written.
+    pub(super) axes: [u16; 6],
+    /// The value last written on each of those axes (the first nine), in the profile's
+    /// units, where the checker knows it (a G10 L2 of numbers under G90: `g10_writes`); NaN
+    /// where it does not. Read only where the axis's bit is set.
+    pub(super) values: [[f64; 9]; 6],
+    /// The programs it called that the checker had not read there (by O number: written
+    /// after the call, or not in the file), whose writes are known only at the file's end
+    /// ([`Finding::pending_on`]; review 58d F1).
+    pub(super) unread: Vec<i64>,
+}
+
+impl Written {
+    /// Every axis of every offset, the values not known.
+    pub(super) const ALL: Written = Written {
+        axes: [u16::MAX; 6],
+        values: [[f64::NAN; 9]; 6],
+        unread: Vec::new(),
+    };
+
+    /// The axes `axes` (their places' bits) of every offset, the values not known.
+    pub(super) fn on_every(axes: u16) -> Written {
+        Written {
+            axes: [axes; 6],
+            values: [[f64::NAN; 9]; 6],
+            unread: Vec::new(),
+        }
+    }
+
+    /// Whether it wrote any axis of any offset.
+    pub(super) fn any(&self) -> bool {
+        self.axes != [0; 6]
+    }
+
+    /// `later`'s writes, made after these: an axis it writes holds its value from then on.
+    pub(super) fn then(&mut self, later: &Written) {
+        for &n in &later.unread {
+            if !self.unread.contains(&n) {
+                self.unread.push(n);
+            }
+        }
+        for g in 0..6 {
+            self.axes[g] |= later.axes[g];
+            for i in 0..9 {
+                if later.axes[g] & 1 << i != 0 {
+                    self.values[g][i] = later.values[g][i];
+                }
+            }
+        }
+    }
+
+    /// Offset G`work`'s (54-59) value on the axis of place `i` here: None where not written
+    /// (the profile's holds), Some(NaN) where written a value not known.
+    pub(super) fn value(&self, work: usize, i: usize) -> Option<f64> {
+        let g = work.checked_sub(54).filter(|&g| g < 6)?;
+        if self.axes[g] & 1 << i == 0 {
+            return None;
+        }
+        Some(self.values[g].get(i).copied().unwrap_or(f64::NAN))
+    }
+}
+
 impl Checker {
     /// Whether the block has a G code that may turn a frame or shift the coordinates: the
     /// mask of its codes against [`FRAME_CODES`], a decimal code (G51.1, G50.1, G92.1: not in
@@ -374,30 +440,42 @@ impl Checker {
         self.work_run_on = false;
     }
 
-    /// The axes (their places' bits) of each of G54-G59 a G10 block may write
-    /// ([`Checker::offsets_written`]). A tool offset's (FANUC L10-L13 and L1, L3 its tool
-    /// life data; Haas L1, L10-L12; LinuxCNC L1, L10, L11) writes none; L2 writes the axes
-    /// it names (all, with a LinuxCNC rotation R) of the offset its P names, P1-P6 being
-    /// G54-G59; a FANUC's or a Haas's L20 writes an additional offset (G54.1 Pn, G154 Pn),
-    /// none of G54-G59, a LinuxCNC's the one its P names as L2 does, and its P7-P9 the
-    /// G59.1-G59.3 the profile does not give. Anything else (P0, the external or the
-    /// current offset; an L or P not known; FANUC L50, parameters) may write them all.
+    /// The axes (their places' bits) of each of G54-G59 a G10 block may write, and the
+    /// values it writes where they are known ([`Checker::offsets_written`]). A tool
+    /// offset's (FANUC L10-L13 and L1, L3 its tool life data; Haas L1, L10-L12; LinuxCNC L1,
+    /// L10, L11) writes none; L2 writes the axes it names (all, with a LinuxCNC rotation R)
+    /// of the offset its P names, P1-P6 being G54-G59; a FANUC's or a Haas's L20 writes an
+    /// additional offset (G54.1 Pn, G154 Pn), none of G54-G59, a LinuxCNC's the one its P
+    /// names as L2 does, and its P7-P9 the G59.1-G59.3 the profile does not give. Anything
+    /// else (P0, the external or the current offset; an L or P not known; FANUC L50,
+    /// parameters) may write them all; so may one whose L or P is a #-expression, read once
+    /// though its program may run it with other values, where that program is called or
+    /// jumps back ([`Checker::g10_expression`]). The value an L2 writes is
+    /// known where each of its words is a number (no #-expression), under G90 (under G91 a
+    /// FANUC's, a Haas's and a LinuxCNC's L2 adds it to the offset) and on a mill (a lathe's
+    /// X a diameter); a LinuxCNC L20 sets the offset so that the position in force becomes
+    /// the value written: not known here.
     /// Sources: FANUC 0i-MF Operator's Manual "Changing workpiece coordinate system" (G10
-    /// L2 Pp) and "Additional workpiece coordinate systems" (G10 L20 Pn); Haas Mill
-    /// Operator's Manual, G10 Set Offsets; LinuxCNC G-code reference, G10 L1/L2/L10/L11/L20.
+    /// L2 Pp: absolute or incremental by G90/G91) and "Additional workpiece coordinate
+    /// systems" (G10 L20 Pn); Haas Mill Operator's Manual, G10 Set Offsets (G90/G91);
+    /// LinuxCNC G-code reference, G10 L1/L2/L10/L11/L20.
     #[cold]
     #[inline(never)]
-    fn g10_writes(&self, b: &BlockView<'_>) -> [u16; 6] {
-        let value = |letter: u8| {
+    fn g10_writes(&self, b: &BlockView<'_>) -> Written {
+        let word = |letter: u8| {
             b.words
                 .iter()
                 .position(|w| w.letter == letter && w.index.is_empty())
+        };
+        let value = |letter: u8| {
+            word(letter)
                 .and_then(|i| self.readable[i])
                 .filter(|v| v.is_whole())
                 .map(|v| v.trunc())
         };
         let linuxcnc = self.config.family == Family::LinuxCnc;
-        let axes = if b.words.iter().any(|w| w.letter == b'R') {
+        let rotation = word(b'R').is_some();
+        let axes = if rotation {
             u16::MAX
         } else {
             b.words
@@ -407,15 +485,49 @@ impl Checker {
                 .fold(0, |bits, i| bits | 1 << i)
         };
         match (value(b'L'), value(b'P')) {
-            (Some(1 | 3 | 10..=13), _) => [0; 6],
-            (Some(20), _) if !linuxcnc => [0; 6],
-            (Some(2 | 20), Some(7..=9)) if linuxcnc => [0; 6],
-            (Some(2 | 20), Some(p @ 1..=6)) => {
-                let mut writes = [0; 6];
-                writes[p as usize - 1] = axes;
+            (Some(1 | 3 | 10..=13), _) => Written::default(),
+            (Some(20), _) if !linuxcnc => Written::default(),
+            (Some(2 | 20), Some(7..=9)) if linuxcnc => Written::default(),
+            (Some(l @ (2 | 20)), Some(p @ 1..=6)) => {
+                let g = p as usize - 1;
+                let mut writes = Written::default();
+                writes.axes[g] = axes;
+                writes.values[g] = [f64::NAN; 9];
+                let known = l == 2
+                    && !rotation
+                    && !self.machine.state.incremental
+                    && !self.config.diameter
+                    && b.words.iter().all(|w| w.expression.is_empty());
+                if known {
+                    let factor = self.to_profile_units(false);
+                    for (k, w) in b.words.iter().enumerate() {
+                        let i = w
+                            .index
+                            .is_empty()
+                            .then(|| crate::modal::axis_index(w.letter))
+                            .flatten()
+                            .filter(|&i| i < 9);
+                        if let (Some(i), Some(v)) = (i, self.readable[k]) {
+                            writes.values[g][i] = v.to_f64() * factor;
+                        }
+                    }
+                }
                 writes
             }
-            _ => super::called::WRITES_ALL,
+            // (an L2 or L20 of a P not known, or P0, the external offset: the axes it
+            // names of any offset, or of every one)
+            (Some(2 | 20), _) => Written::on_every(axes),
+            _ => Written::ALL,
+        }
+    }
+
+    /// The program in hand may write work offsets G54-G59 (`writes`, after what it wrote
+    /// before), or lose the profile's (`loses`): [`Checker::offset_writers`].
+    pub(super) fn offset_writer(&mut self, writes: &Written, loses: bool) {
+        if let Some(n) = self.in_hand {
+            let entry = self.offset_writers.entry(n).or_default();
+            entry.0.then(writes);
+            entry.1 |= loses;
         }
     }
 
@@ -448,6 +560,7 @@ impl Checker {
         let sinumerik = self.config.family == Family::Sinumerik;
         let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
+        let lost = self.offsets_lost;
         // (only a G code selects, sets or suppresses an offset)
         let g_words = if self.letters & bit(b'G') != 0 {
             b.words
@@ -478,9 +591,17 @@ impl Checker {
                 49 => self.length_decimal = false,
                 10 => {
                     let writes = self.g10_writes(b);
-                    for (written, axes) in self.offsets_written.iter_mut().zip(writes) {
-                        *written |= axes;
+                    self.offsets_written.then(&writes);
+                    let expression = b.words.iter().any(|w| {
+                        matches!(w.letter, b'L' | b'P')
+                            && w.index.is_empty()
+                            && !w.expression.is_empty()
+                    });
+                    let every = Written::on_every(writes.axes.iter().fold(0, |all, a| all | a));
+                    if expression {
+                        self.g10_expression |= every.axes[0];
                     }
+                    self.offset_writer(if expression { &every } else { &writes }, false);
                     self.lose_offsets(line, "G10 sets offsets");
                 }
                 52 | 92 if axes => {
@@ -552,6 +673,10 @@ impl Checker {
             }
         }
         one_shot |= self.frames(b);
+        // (a program that shifts or sets the coordinates changes them where it is called)
+        if self.offsets_lost && !lost {
+            self.offset_writer(&Written::default(), true);
+        }
         !one_shot && !self.offsets_lost
     }
 
@@ -2137,10 +2262,13 @@ impl Checker {
                             round6(machine_at),
                             round6(at)
                         );
-                        let before = self.found.len();
-                        self.report_limit(Rule::TravelExceeded, message, line, col(axis));
-                        if (self.work_guessed.is_some() || self.work_run_on)
-                            && self.found.len() > before
+                        let placed = super::Placed::Offset {
+                            place: i as u8,
+                            work: work as u8,
+                            at,
+                        };
+                        if self.report_placed(message, (line, col(axis)), placed)
+                            && (self.work_guessed.is_some() || self.work_run_on)
                         {
                             self.found.last_mut().expect("said").guessed = true;
                         }
@@ -2517,7 +2645,24 @@ impl Checker {
         (line, column): (usize, usize),
     ) {
         let message = self.machine_message(axis, value, at, (low, high));
+        self.report_placed(message, (line, column), super::Placed::Machine);
+    }
+
+    /// TG601 of one machine position (`placed`: what it compared, kept on the finding for
+    /// the calls that judge it again, called.rs): whether it was said (selected).
+    pub(super) fn report_placed(
+        &mut self,
+        message: String,
+        (line, column): (usize, usize),
+        placed: super::Placed,
+    ) -> bool {
+        let before = self.found.len();
         self.report_limit(Rule::TravelExceeded, message, line, column);
+        let said = self.found.len() > before;
+        if said {
+            self.found.last_mut().expect("said").placed = placed;
+        }
+        said
     }
 
     /// The message of [`Checker::machine_outside`], `value` read in the units in force (a

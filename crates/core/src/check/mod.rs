@@ -348,7 +348,33 @@ pub struct Finding {
     /// program read apart that no call before it names ([`Checker::work_offset_unknown`]):
     /// said only where a call runs it under that offset (called.rs).
     pub guessed: bool,
+    /// What a TG601 of one machine position compared: set where it is made (limits.rs),
+    /// read where a subprogram's are judged at a call (called.rs).
+    pub placed: Placed,
+    /// A subprogram's machine position under a work offset said at a call after which its
+    /// caller had called programs the checker had not read there (their O numbers: written
+    /// after that call, or not in the file): held to the file's end, and dropped there
+    /// where one of them, read after all, writes that offset's axis (review 58d F1: a G10
+    /// of an O100 written after the main that calls it before the call of O2000).
+    pub pending_on: Vec<i64>,
 }
+
+/// The machine position a TG601 judged ([`Finding::placed`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Placed {
+    /// Not one position's (another rule, a span, a run of increments).
+    #[default]
+    Not,
+    /// A position written in machine coordinates (G53).
+    Machine,
+    /// The work position `at` (in the profile's units) of the axis of place `place` plus
+    /// the profile's value of work offset G`work` (54-59) on that axis: at a call after a
+    /// G10 that wrote that value it is judged again with the value written.
+    Offset { place: u8, work: u8, at: f64 },
+}
+
+// (`at` is a position read, never NaN)
+impl Eq for Placed {}
 
 /// One move, for the backplot. Positions as programmed (a lathe's X a diameter, its centre's
 /// X too).
@@ -985,7 +1011,14 @@ pub struct Checker {
     /// dropped real overtravels). What a program the checker does not read writes is not
     /// followed, as a `#5241=` write is not: its caller's positions said as the profile's
     /// offsets make them, erring on the side of the alarm.
-    offsets_written: [u16; 6],
+    offsets_written: limits::Written,
+    /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
+    /// or P by a #-expression: read once at the value it has there, though a jump back (a
+    /// loop) or another call of the program may run it with another, so the program writes
+    /// those axes of every offset where it is called or jumps back (review 58d F6: `#5=1` /
+    /// `N10 G10 L2 P#5 X0.` / `#5=#5+1` / `IF [#5 LE 6] GOTO 10` writes G54-G59's X, not
+    /// G54's only).
+    g10_expression: u16,
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
@@ -1354,6 +1387,12 @@ pub struct Checker {
     /// control) may run any of the file's subprograms ([`Checker::judged_alone`]; review
     /// 56e, F5); and whether one is O9000-O9999, which an M, G or T code runs (F1).
     file_programs: std::collections::BTreeSet<i64>,
+    /// The file's programs read so far (by O number) that write work offsets G54-G59 when
+    /// they run (a G10 of their own, every offset where its L or P is an expression, or a
+    /// call of a program that writes), and whether they lose the profile's (a G10, G52,
+    /// G92, an offset the profile does not give, a frame): what a call the checker does not
+    /// follow of one writes ([`Checker::offset_writer`]).
+    offset_writers: std::collections::BTreeMap<i64, (limits::Written, bool)>,
     /// Each call by number's program (its O number: [`Checker::in_hand`]) and the numbers
     /// it may name, as [`Checker::call_numbers`] has them: which programs the main's run
     /// reaches ([`Checker::main_may_run`]; review 58a F2).
@@ -1517,7 +1556,8 @@ impl Checker {
             work_guessed: None,
             work_run_on: false,
             offsets_lost: false,
-            offsets_written: [0; 6],
+            offsets_written: limits::Written::default(),
+            g10_expression: 0,
             frames: limits::Frames::default(),
             noted: 0,
             mode_lost_codes: None,
@@ -1596,6 +1636,7 @@ impl Checker {
             pending: Vec::new(),
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
+            offset_writers: std::collections::BTreeMap::new(),
             call_sites: std::collections::BTreeSet::new(),
             first_number: None,
             in_hand: None,
@@ -1660,22 +1701,31 @@ impl Checker {
 
     /// The findings made since the last call.
     pub fn take(&mut self) -> Vec<Finding> {
-        match self.hold_from {
-            // (findings held for a program read apart stay: crate::check::called)
-            Some(from) => {
-                let held = self.found.split_off(from);
-                self.hold_from = Some(0);
-                std::mem::replace(&mut self.found, held)
-            }
-            // (nor those made while the blocks a jump passes over are read: passed.rs)
-            None => match self.passage_held() {
-                Some(from) => {
-                    let held = self.found.split_off(from);
-                    std::mem::replace(&mut self.found, held)
-                }
-                None => std::mem::take(&mut self.found),
-            },
+        let ready = self.ready();
+        let held = self.found.split_off(ready);
+        std::mem::replace(&mut self.found, held)
+    }
+
+    /// How many of the findings made are ready to hand over, the held ones' marks moved to
+    /// the findings that stay: not those held for a program read apart
+    /// (crate::check::called), nor those made while the blocks a jump passes over are read
+    /// (passed.rs), nor a finding that waits for the programs after it
+    /// ([`Finding::pending_on`]) and those after it.
+    fn ready(&mut self) -> usize {
+        let held = match self.hold_from {
+            Some(from) => from,
+            None => self.passed.as_ref().map_or(self.found.len(), |p| p.from),
+        };
+        let ready = self.found[..held]
+            .iter()
+            .position(|f| !f.pending_on.is_empty())
+            .unwrap_or(held);
+        if let Some(from) = self.hold_from.as_mut() {
+            *from -= ready;
+        } else if let Some(passed) = self.passed.as_mut() {
+            passed.from -= ready;
         }
+        ready
     }
 
     /// Whether any finding was made since the last call ([`Checker::drain`] hands over none
@@ -1690,17 +1740,8 @@ impl Checker {
     /// allocation kept for the next: a report written as the lines are checked asks after
     /// every line, and [`Checker::take`] gave the list away each time one had a finding.
     pub fn drain(&mut self) -> std::vec::Drain<'_, Finding> {
-        match self.hold_from {
-            // (findings held for a program read apart stay: crate::check::called)
-            Some(from) => {
-                self.hold_from = Some(0);
-                self.found.drain(..from)
-            }
-            None => match self.passage_held() {
-                Some(from) => self.found.drain(..from),
-                None => self.found.drain(..),
-            },
-        }
+        let ready = self.ready();
+        self.found.drain(..ready)
     }
 
     pub fn enabled(&self, rule: Rule) -> bool {
@@ -1746,6 +1787,8 @@ impl Checker {
                 column,
                 span: false,
                 guessed: false,
+                placed: Placed::Not,
+                pending_on: Vec::new(),
             });
         }
     }
@@ -2856,6 +2899,7 @@ impl Checker {
         }
         self.part_ended(false);
         self.early_finish();
+        self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();

@@ -63,7 +63,7 @@ pub(super) struct Passed {
     /// Where the findings made since the jump start in the checker's list: held there (not
     /// handed over: [`Checker::take`], [`Checker::drain`]) until the passage ends, and then
     /// said, but for those of running the blocks passed over where the target comes.
-    from: usize,
+    pub(super) from: usize,
 }
 
 /// What a jump's block left before the checker forgot it, not following the jump
@@ -199,7 +199,13 @@ impl Checker {
     /// A jump or call the checker does not follow (block `b`; `calls`: a calling word): what
     /// the machine knows is forgotten, but a `GOTO n` read where no feed was ever set keeps
     /// that for the ways it makes (ModalMachine::feed_none_kept).
+    /// A G10 before it whose L or P is a #-expression may run again with another value
+    /// where the jump goes back: its axes of every offset written ([`Checker::g10_expression`]).
     pub(super) fn forget_at_jump(&mut self, b: &BlockView<'_>, calls: bool) {
+        if self.g10_expression != 0 && !calls && self.forward_jump(b).is_none() {
+            let every = super::limits::Written::on_every(self.g10_expression);
+            self.offsets_written.then(&every);
+        }
         let kept = !calls && self.machine.feed_never_set() && self.goto_only(b);
         self.machine.forget();
         self.machine.feed_none_kept = kept;
@@ -429,13 +435,6 @@ impl Checker {
         self.shapes = run.shapes;
         self.goto_computed = run.goto_computed;
         self.goto_computed_line = run.goto_computed_line;
-    }
-
-    /// Where the findings held by an open passage start in the list, from which on none is
-    /// handed over; the next hand-over holds them from its start.
-    pub(super) fn passage_held(&mut self) -> Option<usize> {
-        let passed = self.passed.as_mut()?;
-        Some(std::mem::replace(&mut passed.from, 0))
     }
 }
 

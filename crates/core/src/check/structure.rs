@@ -378,9 +378,30 @@ impl Checker {
     /// ([`Checker::call_mode_lost`]): its G90/G91 not known after it.
     #[cold]
     #[inline(never)]
+    /// A program of the file read before that writes work offsets or shifts the coordinates
+    /// ([`Checker::offset_writers`]; read as a program of its own, not kept for its calls:
+    /// a G10 whose P is a G65 argument) writes them here as it did there (review 58d F5),
+    /// and the profile's offsets are not in force after it where it lost them; what a
+    /// program the file does not hold writes is not followed, erring on the side of the
+    /// alarm ([`Checker::offsets_written`]).
     fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
         let (call, column) = self.call_words(b);
         self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
+        if let Some((writes, loses)) = self.offset_writers.get(&number).cloned() {
+            self.offsets_written.then(&writes);
+            self.offset_writer(&writes, loses);
+            if loses {
+                self.lose_offsets(b.line, &format!("O{number:04} changes the offsets"));
+            }
+        } else if !self.file_programs.contains(&number) {
+            // (a program not read yet: what it writes is known at the file's end)
+            let unread = super::limits::Written {
+                unread: vec![number],
+                ..Default::default()
+            };
+            self.offsets_written.then(&unread);
+            self.offset_writer(&unread, false);
+        }
     }
 
     /// A call by number's calling words as the messages name it (`M98 P1000`, `G66 P9010`,
@@ -524,8 +545,12 @@ impl Checker {
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
         self.early_merge();
-        // (a run of its own: what the program before wrote is not this one's caller's)
-        self.offsets_written = [0; 6];
+        // (a run of its own: what the program before wrote is not this one's caller's; but
+        // with the block skip switch on, the program before runs on into it: that run's)
+        if !self.end_skippable {
+            self.offsets_written = Default::default();
+            self.g10_expression = 0;
+        }
         self.shifts.calls = super::limits::CallShifts::None;
         let number = b
             .words
