@@ -289,8 +289,9 @@ pub struct Reader {
     /// A drilling or boring cycle in force (G73, G82-G89), whose P is the dwell at the bottom.
     dwell_cycle: bool,
     /// The canned drilling cycle in force, whose words a block that names no cycle repeats
-    /// with its roles (`convert::cycle_in_force`, as the converter reads them).
-    cycle_code: Option<i64>,
+    /// with its roles, or a lathe's thread in force (`convert::Repeat`, as the converter reads
+    /// them).
+    cycle_code: crate::convert::Repeat,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
@@ -332,7 +333,7 @@ impl Reader {
             polar_interpolation: false,
             uw_moves: true,
             dwell_cycle: false,
-            cycle_code: None,
+            cycle_code: Default::default(),
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             data_input: DataInput::default(),
@@ -349,7 +350,7 @@ impl Reader {
         self.incremental = false;
         self.uw_moves = true;
         self.dwell_cycle = false;
-        self.cycle_code = None;
+        self.cycle_code = Default::default();
         self.feed_mode = 94;
         self.css = false;
         self.motion_mode = None;
@@ -491,14 +492,14 @@ impl Reader {
         let system = self.settings.modal.g_system;
         let (family, lathe) = (self.settings.family, self.settings.lathe);
         let haas = Some(self.settings.modal.haas);
-        self.cycle_code = crate::convert::cycle_in_force(self.cycle_code, family, lathe, &gs, &ms);
+        self.cycle_code = self.cycle_code.after(family, lathe, &gs, &ms);
         // a block repeating the cycle in force: its words by the cycle's roles (a lathe's
         // thread only in a plain pass, `modal::thread_pass`)
         let unread = words
             .iter()
             .zip(&numbers)
             .any(|(w, n)| w.letter == b'G' && n.is_none());
-        let repeated = self.cycle_code.filter(|&c| {
+        let repeated = self.cycle_code.code().filter(|&c| {
             !gs.contains(&c)
                 && (!crate::modal::modal_thread(c) || crate::modal::thread_pass(&gs, unread))
         });
@@ -1132,10 +1133,15 @@ impl Reader {
     /// A FANUC or Haas dwell's P (G04's, a drilling cycle's) written without a point, or given
     /// by a parameter or an expression: a time in milliseconds.
     fn milliseconds(&self, letter: u8, flags: BlockFlags, number: &[u8]) -> bool {
-        letter == b'P'
-            && self.settings.family == Family::MacroB
+        self.dwell_in_milliseconds(letter)
             && !number.contains(&b'.')
             && ((flags.dwell && self.settings.modal.dwell.contains(&letter)) || self.dwell_cycle)
+    }
+
+    /// Whether a dwell's time by `letter` counts milliseconds where it is written without a
+    /// point: a FANUC or Haas P (G04's, a drilling cycle's).
+    fn dwell_in_milliseconds(&self, letter: u8) -> bool {
+        letter == b'P' && self.settings.family == Family::MacroB
     }
 
     fn word(
@@ -1238,8 +1244,18 @@ impl Reader {
             // (a thread's start angle `Q60000`, in 0.001 deg; Haas G76's `A60`, degrees) steps
             // by one of its own unit, the number's last digit: its letter's length format's
             // step is no unit of it (review 55a F5 said the same of a count)
+            // a FANUC or Haas dwell's P written with a point is seconds (the Haas NGC mill and
+            // lathe manuals, G04: "P with a decimal point is seconds"; the drilling cycles' P
+            // read alike) where its whole-number format, the milliseconds of a P without one,
+            // steps by a second: it steps by the millisecond the same P counts without its
+            // point, so `P0.5` and `P0.9` are 400 steps apart, not 0.4 (review 58b, F4)
             let step = if measure && !w.point && self.settings.reads_increments(letter) {
                 Dec::from_int(1)
+            } else if time && w.point && self.dwell_in_milliseconds(letter) {
+                Dec {
+                    mantissa: 1,
+                    scale: 3,
+                }
             } else {
                 one_step(&fmt)
             };
