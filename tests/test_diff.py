@@ -490,18 +490,22 @@ def test_a_thread_stays_in_force_through_g80(tmp_path, between, line):
 # a FANUC or Haas dwell's P with a point is seconds, without one milliseconds (the Haas NGC
 # manuals, G04): a pointed P steps by a millisecond
 POINTED_DWELLS = [
-    ("haas-mill", "G04 P{}\n", 4),
-    ("haas-mill", "G99 G82 X1. Y1. Z-0.5 R0.1 P0.5 F10.\nX2. P{}\nG80\n", 5),
-    ("haas-lathe", "G04 P{}\n", 4),
-    ("haas-lathe", "G00 X0 Z5.\nG83 Z-10. R1. Q2. P0.5 F0.1\nZ-12. P{}\nG80\n", 6),
+    ("haas-mill", "G04 P{}\n", 4, True),
+    ("haas-mill", "G99 G82 X1. Y1. Z-0.5 R0.1 P0.5 F10.\nX2. P{}\nG80\n", 5, True),
+    ("haas-lathe", "G04 P{}\n", 4, True),
+    ("haas-lathe", "G00 X0 Z5.\nG83 Z-10. R1. Q2. P0.5 F0.1\nZ-12. P{}\nG80\n", 6, True),
+    # an Okuma's P05 (a dwell word there, its unit without a point in no source at hand)
+    ("okuma-mill", "G04 P{}\n", 4, False),
+    ("okuma-lathe", "G04 P{}\n", 4, False),
 ]
 
 
-@pytest.mark.parametrize(("name", "body", "line"), POINTED_DWELLS)
-def test_a_pointed_dwell_p_steps_by_a_millisecond(tmp_path, name, body, line):
-    """Review 58b F4: `P0.5` and `P0.9` are 0.4 s apart, 400 steps of the millisecond the same
-    P counts without its point (it stepped by a second, and `--tolerance 0.5` called them the
-    same program); `P0.5` and `P500` are the same time."""
+@pytest.mark.parametrize(("name", "body", "line", "milliseconds"), POINTED_DWELLS)
+def test_a_pointed_dwell_p_steps_by_a_millisecond(tmp_path, name, body, line, milliseconds):
+    """Review 58b F4: `P0.5` and `P0.9` are 0.4 s apart, 400 steps of a millisecond, the unit
+    a FANUC or Haas P counts without its point (it stepped by a second of the whole-number
+    format, and `--tolerance 0.5` called them the same program); `P0.5` and `P500` are the
+    same time there, and not on an Okuma."""
     profile = load_profile(name)
     program = "O1\nG21 G90\nT1 M06\n" + body + "M30\n"
     one = write(tmp_path, "a.nc", program.format("0.5"))
@@ -514,7 +518,7 @@ def test_a_pointed_dwell_p_steps_by_a_millisecond(tmp_path, name, body, line):
     assert [[c.steps for c in d.words] for d in found] == [[2]]
     found, _ = differences(one, write(tmp_path, "d.nc", program.format("500")),
                            profile, profile, tolerance=HALF)
-    assert found == []
+    assert (found == []) == milliseconds
 
 
 @pytest.mark.parametrize(("profile", "body", "a", "b", "said"), COUNTS)

@@ -1133,15 +1133,10 @@ impl Reader {
     /// A FANUC or Haas dwell's P (G04's, a drilling cycle's) written without a point, or given
     /// by a parameter or an expression: a time in milliseconds.
     fn milliseconds(&self, letter: u8, flags: BlockFlags, number: &[u8]) -> bool {
-        self.dwell_in_milliseconds(letter)
+        letter == b'P'
+            && self.settings.family == Family::MacroB
             && !number.contains(&b'.')
             && ((flags.dwell && self.settings.modal.dwell.contains(&letter)) || self.dwell_cycle)
-    }
-
-    /// Whether a dwell's time by `letter` counts milliseconds where it is written without a
-    /// point: a FANUC or Haas P (G04's, a drilling cycle's).
-    fn dwell_in_milliseconds(&self, letter: u8) -> bool {
-        letter == b'P' && self.settings.family == Family::MacroB
     }
 
     fn word(
@@ -1244,14 +1239,16 @@ impl Reader {
             // (a thread's start angle `Q60000`, in 0.001 deg; Haas G76's `A60`, degrees) steps
             // by one of its own unit, the number's last digit: its letter's length format's
             // step is no unit of it (review 55a F5 said the same of a count)
-            // a FANUC or Haas dwell's P written with a point is seconds (the Haas NGC mill and
-            // lathe manuals, G04: "P with a decimal point is seconds"; the drilling cycles' P
-            // read alike) where its whole-number format, the milliseconds of a P without one,
-            // steps by a second: it steps by the millisecond the same P counts without its
-            // point, so `P0.5` and `P0.9` are 400 steps apart, not 0.4 (review 58b, F4)
+            // a dwell's time written with a point is seconds (the Haas NGC mill and lathe
+            // manuals, G04: "P with a decimal point is seconds"; the drilling cycles' P read
+            // alike) where its letter's format is a whole number's, which steps by a second: a
+            // FANUC's or Haas's P05, the milliseconds of a P without its point, an Okuma's
+            // P05. It steps by the millisecond (a FANUC's or Haas's P without its point, the
+            // X time's 0.001 s), so `P0.5` and `P0.9` are 400 steps apart, not 0.4 (review
+            // 58b, F4); a format with decimals (an ISO dwell's F022) keeps its own step
             let step = if measure && !w.point && self.settings.reads_increments(letter) {
                 Dec::from_int(1)
-            } else if time && w.point && self.dwell_in_milliseconds(letter) {
+            } else if time && w.point && (!fmt.decimal || fmt.after == 0) {
                 Dec {
                     mantissa: 1,
                     scale: 3,
