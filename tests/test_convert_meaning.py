@@ -350,6 +350,22 @@ def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, t
     assert not [n for n in stats.notes if "thread lead" in n], stats.notes
 
 
+def test_a_thread_lead_note_reads_the_end_z_as_the_source_does():
+    """Review 58b F5: under --from-decimal increments the G92's `Z-20000` is -20 mm, as the
+    start `Z5000` is 5 mm: the thread is 25 mm (the note said "the thread's 20005 mm")."""
+    profile = load_profile("fanuc-lathe")
+    text = ("O1017\nG21 G18 G99\nG97 S500 M03\nG00 X30000 Z5000\nG92 X24000 Z-20000 F1.5 Q0\n"
+            "X23500 Q18000\nG00 X30000\nM30\n")
+    out, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units="inch",
+                                                   decimal="explicit",
+                                                   from_decimal="increments"))
+    assert out.splitlines()[4] == "G92 X0.9449 Z-0.7874 F0.0591 Q0", out
+    assert [n for n in stats.notes if "thread lead" in n] == [
+        "line 5: the thread lead F1.5 converts to 0.0590551 in per revolution and is written "
+        "0.0591: 0.0000449 in long per revolution, 0.000748 in over the thread's 25 mm (16.7 "
+        "revolutions), an error that builds up at every turn of the thread"]
+
+
 LOOP = ("%\nO1\nG21 G90 G17\n#1=0\n#2=50.\n#3=5.\nG0 Z5.\nWHILE [#1 LE #2] DO1\n"
         "G81 X#1 Y0 Z-5. R2. F100.\n#1=#1+#3\nEND1\nG80\nM30\n%\n")
 

@@ -453,6 +453,74 @@ def test_a_code_of_its_own_after_a_thread_pass_is_no_pass():
     assert found == [("TG208", 5, 7)]
 
 
+# a lathe's thread is of group 01, G80 of group 10 (FANUC 0i-TF "G code list"): a plain pass
+# after G80 (or after a drilling cycle and its G80) is the thread's, its Q the start angle
+THREAD_AFTER_G80 = [
+    ("G80\n", 7),
+    ("G83 X0 Z-20. R1. Q5000 F0.1\nZ-25. Q4000\nG80\n", 9),
+]
+
+
+@pytest.mark.parametrize(("between", "line"), THREAD_AFTER_G80)
+def test_a_thread_stays_in_force_through_g80(tmp_path, between, line):
+    """Review 58b F8: G80 ends the drilling cycles (group 10), not the threading G92 (group 01):
+    the checker, the converter and the diff read `X23.5 Q180000` after it as the thread's next
+    pass (its Q kept as written under a change of units; it was refused as a digit overflow of
+    a Q of no role) and `X23.4 Q90.` as a pointed start angle (TG208)."""
+    from formats.convert import convert_text
+    lathe = load_profile("fanuc-lathe")
+    program = ("O1023\nG21 G18 G99\nG97 S500 M03\nG00 X30. Z5.\nG92 X24. Z-20. F1.5 Q0\n"
+               + between + "X23.5 Q180000\nX23.4 Q90.\nG00 X30.\nM30\n")
+    found = [(f.rule, f.line, f.column) for f in check_text(program, lathe)
+             if f.rule in ("TG205", "TG208")]
+    assert found == [("TG208", line + 1, 7)]
+    out, _ = convert_text(program, ConvertOptions(target=lathe, source=lathe, units="inch"))
+    lines = out.splitlines()
+    assert lines[line - 1:line + 1] == ["X0.9252 Q180000", "X0.9213 Q90."], out
+    source = write(tmp_path, "source.nc", program)
+    right = write(tmp_path, "right.nc", out)
+    assert differences(source, right, lathe, lathe, tolerance=HALF)[0] == []
+    # a start angle changed after G80 is a difference, not a Q of no role compared in steps
+    wrong = write(tmp_path, "wrong.nc", out.replace("Q180000", "Q180001"))
+    found, _ = differences(source, wrong, lathe, lathe, tolerance=HALF)
+    assert [(d.b.line, d.details()) for d in found] == [
+        (line, ["Q180000 -> Q180001 (+0.001, +1 step)"])]
+
+
+# a FANUC or Haas dwell's P with a point is seconds, without one milliseconds (the Haas NGC
+# manuals, G04): a pointed P steps by a millisecond
+POINTED_DWELLS = [
+    ("haas-mill", "G04 P{}\n", 4, True),
+    ("haas-mill", "G99 G82 X1. Y1. Z-0.5 R0.1 P0.5 F10.\nX2. P{}\nG80\n", 5, True),
+    ("haas-lathe", "G04 P{}\n", 4, True),
+    ("haas-lathe", "G00 X0 Z5.\nG83 Z-10. R1. Q2. P0.5 F0.1\nZ-12. P{}\nG80\n", 6, True),
+    # an Okuma's P05 (a dwell word there, its unit without a point in no source at hand)
+    ("okuma-mill", "G04 P{}\n", 4, False),
+    ("okuma-lathe", "G04 P{}\n", 4, False),
+]
+
+
+@pytest.mark.parametrize(("name", "body", "line", "milliseconds"), POINTED_DWELLS)
+def test_a_pointed_dwell_p_steps_by_a_millisecond(tmp_path, name, body, line, milliseconds):
+    """Review 58b F4: `P0.5` and `P0.9` are 0.4 s apart, 400 steps of a millisecond, the unit
+    a FANUC or Haas P counts without its point (it stepped by a second of the whole-number
+    format, and `--tolerance 0.5` called them the same program); `P0.5` and `P500` are the
+    same time there, and not on an Okuma."""
+    profile = load_profile(name)
+    program = "O1\nG21 G90\nT1 M06\n" + body + "M30\n"
+    one = write(tmp_path, "a.nc", program.format("0.5"))
+    found, _ = differences(one, write(tmp_path, "b.nc", program.format("0.9")),
+                           profile, profile, tolerance=HALF)
+    assert [(d.a.line, d.details()) for d in found] == [
+        (line, ["P0.5 -> P0.9 (+0.4, +400 steps)"])]
+    found, _ = differences(one, write(tmp_path, "c.nc", program.format("0.502")),
+                           profile, profile, tolerance=HALF)
+    assert [[c.steps for c in d.words] for d in found] == [[2]]
+    found, _ = differences(one, write(tmp_path, "d.nc", program.format("500")),
+                           profile, profile, tolerance=HALF)
+    assert (found == []) == milliseconds
+
+
 @pytest.mark.parametrize(("profile", "body", "a", "b", "said"), COUNTS)
 def test_a_cycle_word_that_counts_stays_exact(tmp_path, profile, body, a, b, said):
     """Issue 32: a count of the same tables (K repeats, G71's P Q block numbers, FANUC G76's

@@ -794,8 +794,8 @@ pub struct Converter {
     /// The canned cycle in force on a FANUC or Haas control whose words the cycle table gives
     /// roles (a mill's G73, G74, G76, G81-G89, a lathe's G83-G89 and G243), until G80, a motion
     /// code G00-G03 or the end of the program: a block under it repeats it, and its words have
-    /// the cycle's roles.
-    cycle_code: Option<i64>,
+    /// the cycle's roles; and a lathe's thread in force ([`Repeat`]).
+    cycle_code: Repeat,
     /// The line of the M02/M30 that ended the program before this one, if any.
     ended_on: Option<usize>,
     /// A guessed source after an M02/M30 where the units the program selected and those of
@@ -1379,7 +1379,7 @@ impl Converter {
             out_length_units,
             units_seen: false,
             lacked_in_force: None,
-            cycle_code: None,
+            cycle_code: Repeat::default(),
             ended_on: None,
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
@@ -2518,12 +2518,22 @@ impl Converter {
         let (src, out) = (unit(self.src_units), unit(self.out_units()));
         let error = rounded - exact;
         // the block's travel along Z in the source's units: W, an incremental Z, or an
-        // absolute Z from the position before it
+        // absolute Z from the position before it, each read as the source control reads it
+        // (`Converter::source_number`: `Z-20000` in least increments under --from-decimal
+        // increments is 20 mm, as the position before it was read; review 58b, F5: the note
+        // said "the thread's 20005 mm")
         let value = |letter: u8| {
-            b.words
+            let w = b
+                .words
                 .iter()
-                .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
-                .and_then(|w| std::str::from_utf8(&w.token[1..]).ok()?.parse::<f64>().ok())
+                .find(|w| w.token[0].eq_ignore_ascii_case(&letter))?;
+            let (negative, _, whole, dot, fraction) = plain_word(w)?;
+            let digits = w.plain.map(|_| w.digits);
+            let (m, scale) = self
+                .source_number(w.token, letter, letter, digits, (whole, dot, fraction))
+                .ok()?;
+            let magnitude = Dec { mantissa: m, scale }.to_f64();
+            Some(if negative { -magnitude } else { magnitude })
         };
         let w_travel = value(b'W').filter(|_| self.c.lathe && self.c.family == Family::MacroB);
         let travel = w_travel.or_else(|| {
@@ -3118,11 +3128,11 @@ impl Converter {
             }
         }
         // a block under a canned cycle in force repeats it at a new position, with the words it
-        // changes: they have the cycle's roles (`cycle_in_force`, which `--verify` reads by too)
-        self.cycle_code = cycle_in_force(self.cycle_code, self.c.family, self.c.lathe, &gs, &ms);
+        // changes: they have the cycle's roles (`Repeat`, which `--verify` reads by too)
+        self.cycle_code = self.cycle_code.after(self.c.family, self.c.lathe, &gs, &ms);
         // (a lathe's thread in force only into a plain pass, `modal::thread_pass`: a G75
         // after a G92 reads its Q as its own depth)
-        let repeated = self.cycle_code.filter(|&c| {
+        let repeated = self.cycle_code.code().filter(|&c| {
             !gs.contains(&c)
                 && (!crate::modal::modal_thread(c) || crate::modal::thread_pass(&gs, g_unread))
         });
@@ -4670,7 +4680,7 @@ impl Converter {
                 matches!(g, 73 | 74 | 76 | 81..=89)
             }
         };
-        if !(self.cycle_code.is_some_and(cycle) || gs.iter().copied().any(cycle)) {
+        if !(self.cycle_code.code().is_some_and(cycle) || gs.iter().copied().any(cycle)) {
             return Ok(());
         }
         // (a Haas's G73/G83 K is a length, its count L; a FANUC's G73/G83 K is its count,
@@ -7116,7 +7126,10 @@ impl Converter {
                 .state
                 .cycle
                 .is_some_and(|g| dwell_cycle(lathe, g))
-                || self.cycle_code.is_some_and(|g| dwell_cycle(lathe, g)))
+                || self
+                    .cycle_code
+                    .code()
+                    .is_some_and(|g| dwell_cycle(lathe, g)))
     }
 
     /// A dwell's time (G04's, a drilling cycle's P) written as a parameter or an expression
@@ -8225,20 +8238,26 @@ pub fn cycle_meanings(
     )
 }
 
-/// Whether G code `g` (by its system A number, [`crate::modal::ModalSettings::read_g`]) ends a
-/// canned drilling cycle in force on a FANUC or Haas control: G80, and every code of the
-/// motion group (group 01; FANUC 0i-TF B-64604EN and 0i-MF B-64694EN, "Canned cycle for
-/// drilling": the cycle is cancelled by G80 or a group 01 G code; Haas NGC lathe and mill
-/// manuals, G80 and G00-G03). On a lathe the group holds G00-G03, threading G32 and G34 (G33
-/// of B and C, read as G32) and the single cycles G90, G92, G94 (G77-G79 of B, G20/G21/G24 of
-/// C); on a mill G00-G03 and threading G33.
-pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
+/// Whether G code `g` (by its system A number, [`crate::modal::ModalSettings::read_g`]) is of
+/// the motion group (group 01) of a FANUC or Haas control: on a lathe G00-G03, threading G32
+/// and G34 (G33 of B and C, read as G32) and the single cycles G90, G92, G94 (G77-G79 of B,
+/// G20/G21/G24 of C); on a mill G00-G03 and threading G33 (FANUC 0i-TF B-64604EN and 0i-MF
+/// B-64694EN, "G code list"). A lathe's G80 is no code of it: group 10's, the drilling cycles'
+/// cancel, which leaves a threading G92 or G32 in force.
+pub fn motion_group(lathe: bool, g: i64) -> bool {
     match g {
-        0..=3 | 80 => true,
+        0..=3 | 33 => true,
         32 | 34 | 90 | 92 | 94 => lathe,
-        33 => true,
         _ => false,
     }
+}
+
+/// Whether G code `g` (by its system A number) ends a canned drilling cycle in force on a
+/// FANUC or Haas control: G80, and every code of the motion group ([`motion_group`]; FANUC
+/// 0i-TF and 0i-MF, "Canned cycle for drilling": the cycle is cancelled by G80 or a group 01 G
+/// code; Haas NGC lathe and mill manuals, G80 and G00-G03).
+pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
+    g == 80 || motion_group(lathe, g)
 }
 
 /// Whether two control families write a dwell's time differently (units, or words), so that
@@ -8264,41 +8283,55 @@ pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
     }
 }
 
-/// The canned drilling cycle (its system A number) in force after a block whose G codes (read
-/// in system A numbers) are `gs` and M codes `ms`, `before` the one in force before it. A
-/// block under it that names no cycle repeats it at a new position, with the words it changes
-/// (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the cycle's roles. The modal
-/// cycles of group 09 on a FANUC or Haas control: a mill's G73, G74, G76 and G81-G89, a
-/// lathe's G83-G89 and a Haas lathe's G241-G249 (a lathe's G70-G76 act in their block); ended by
-/// [`ends_canned_cycle`] and by M02/M30. A lathe's threading G32 and threading cycle G92 are
-/// codes of the motion group that a block writing no other repeats too, with the words it
-/// changes ([`crate::modal::modal_thread`]). The converter and `--verify`'s reader ask this one
-/// function, so the two read a repeated block alike.
-pub fn cycle_in_force(
-    before: Option<i64>,
-    family: Family,
-    lathe: bool,
-    gs: &[i64],
-    ms: &[i64],
-) -> Option<i64> {
-    let modal_cycle = |g: i64| match g {
-        81..=89 => true,
-        73 | 74 | 76 => !lathe,
-        241..=249 => lathe,
-        _ => false,
-    };
-    if family == Family::MacroB && lathe {
-        if let Some(g) = gs.iter().copied().find(|&g| crate::modal::modal_thread(g)) {
-            return Some(g);
+/// The codes a block of a FANUC or Haas control that names none of its own repeats, with the
+/// words it changes (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the code's
+/// roles. The converter and `--verify`'s reader keep one each and ask [`Repeat::after`] at
+/// every block, so the two read a repeated block alike.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Repeat {
+    /// The canned drilling cycle in force (its system A number): a mill's G73, G74, G76 and
+    /// G81-G89, a lathe's G83-G89 and a Haas lathe's G241-G249 (a lathe's G70-G76 act in their
+    /// block); ended by [`ends_canned_cycle`] and by M02/M30.
+    pub cycle: Option<i64>,
+    /// A lathe's threading G32 or threading cycle G92 in force ([`crate::modal::modal_thread`]),
+    /// codes of the motion group, which only another code of the group ends
+    /// ([`motion_group`]) or M02/M30: not G80, of group 10, nor a drilling cycle of the group,
+    /// after whose G80 the thread is in force again (FANUC 0i-TF B-64604EN, "G code list"), as
+    /// the checker's modal state has it ([`crate::modal::ModalState::code_in_force`]; review
+    /// 58b, F8: `G92 ...` / `G80` / `X23.5 Q180000` was refused as a digit overflow).
+    pub thread: Option<i64>,
+}
+
+impl Repeat {
+    /// The code a block naming none repeats: the drilling cycle in force, else the thread.
+    pub fn code(&self) -> Option<i64> {
+        self.cycle.or(self.thread)
+    }
+
+    /// What is in force after a block whose G codes (read in system A numbers) are `gs` and M
+    /// codes `ms`.
+    pub fn after(self, family: Family, lathe: bool, gs: &[i64], ms: &[i64]) -> Repeat {
+        if family != Family::MacroB || ms.iter().any(|&m| m == 2 || m == 30) {
+            return Repeat::default();
         }
+        let modal_cycle = |g: i64| match g {
+            81..=89 => true,
+            73 | 74 | 76 => !lathe,
+            241..=249 => lathe,
+            _ => false,
+        };
+        let cycle = if gs.iter().any(|&g| ends_canned_cycle(lathe, g)) {
+            None
+        } else {
+            gs.iter().copied().find(|&g| modal_cycle(g)).or(self.cycle)
+        };
+        let thread = match gs.iter().copied().find(|&g| motion_group(lathe, g)) {
+            Some(g) if lathe && crate::modal::modal_thread(g) => Some(g),
+            Some(_) => None,
+            None => self.thread.filter(|_| lathe),
+        };
+        Repeat { cycle, thread }
     }
-    if family != Family::MacroB
-        || gs.iter().any(|&g| ends_canned_cycle(lathe, g))
-        || ms.iter().any(|&m| m == 2 || m == 30)
-    {
-        return None;
-    }
-    gs.iter().copied().find(|&g| modal_cycle(g)).or(before)
 }
 
 /// [`cycle_meanings`] on a FANUC lathe of G code `system` B or C: `gs` by their system A
@@ -8581,7 +8614,7 @@ fn cycle_table(
                 set(b"QR", Role::Parameter)
             }
             // a lathe's threading G32, threading cycle G92 (and a block repeating them,
-            // `cycle_in_force`): Q the start angle shift, least increment 0.001 deg,
+            // `Repeat`): Q the start angle shift, least increment 0.001 deg,
             // 0-360000 (FANUC 0i-TF operator's manual, "Threading (G32)", "Threading cycle
             // (G92)"; Haas lathe G32: "Q - Thread Start Angle (do not use a decimal point)")
             32 | 92 if lathe && family == Family::MacroB => {
@@ -9114,12 +9147,18 @@ mod tests {
     }
 
     /// A drilling cycle in force ends at every motion-group code (a lathe's threading and
-    /// single cycles too), at G80 and M02/M30, and is kept through a block that names none.
+    /// single cycles too), at G80 and M02/M30, and is kept through a block that names none; a
+    /// lathe's thread only at another code of the motion group and M02/M30.
     #[test]
     fn the_cycle_in_force_ends_at_the_motion_group() {
         let fanuc = Family::MacroB;
-        let after =
-            |before, lathe, gs: &[i64], ms: &[i64]| cycle_in_force(before, fanuc, lathe, gs, ms);
+        let cycle = |g: Option<i64>| Repeat {
+            cycle: g,
+            thread: None,
+        };
+        let after = |before: Option<i64>, lathe, gs: &[i64], ms: &[i64]| {
+            cycle(before).after(fanuc, lathe, gs, ms).code()
+        };
         assert_eq!(after(None, true, &[83], &[]), Some(83));
         assert_eq!(after(Some(83), true, &[], &[]), Some(83));
         for g in [0, 1, 2, 3, 33, 34, 80, 90, 94] {
@@ -9128,10 +9167,28 @@ mod tests {
         // a lathe's threading G32 and G92 end it and are in force themselves: a block
         // naming no code of the motion group repeats them (review 57a, F4)
         for g in [32, 92] {
+            let thread = Repeat {
+                cycle: None,
+                thread: Some(g),
+            };
+            let then = |r: Repeat, gs: &[i64], ms: &[i64]| r.after(fanuc, true, gs, ms);
             assert_eq!(after(Some(83), true, &[g], &[]), Some(g), "lathe G{g}");
-            assert_eq!(after(Some(g), true, &[], &[]), Some(g), "lathe G{g}");
-            assert_eq!(after(Some(g), true, &[0], &[]), None, "lathe G{g}, G00");
-            assert_eq!(after(Some(g), true, &[], &[30]), None, "lathe G{g}, M30");
+            assert_eq!(then(thread, &[], &[]), thread, "lathe G{g}");
+            assert_eq!(then(thread, &[0], &[]).code(), None, "lathe G{g}, G00");
+            assert_eq!(then(thread, &[90], &[]).code(), None, "lathe G{g}, G90");
+            assert_eq!(then(thread, &[], &[30]).code(), None, "lathe G{g}, M30");
+            // G80, group 10's, leaves it in force, and a drilling cycle's repeats are the
+            // cycle's until its G80 (review 58b, F8, F7)
+            assert_eq!(then(thread, &[80], &[]), thread, "lathe G{g}, G80");
+            let drilling = then(thread, &[83], &[]);
+            assert_eq!(drilling.code(), Some(83), "lathe G{g}, G83");
+            assert_eq!(then(drilling, &[], &[]).code(), Some(83), "lathe G{g}, G83");
+            assert_eq!(then(drilling, &[80], &[]), thread, "lathe G{g}, G83, G80");
+            assert_eq!(
+                then(drilling, &[1], &[]).code(),
+                None,
+                "lathe G{g}, G83, G01"
+            );
             assert_eq!(after(None, false, &[g], &[]), None, "mill G{g}");
         }
         let state = |cycle, motion| crate::modal::ModalState {
@@ -9150,13 +9207,14 @@ mod tests {
         for g in [90, 92, 94, 17] {
             assert_eq!(after(Some(81), false, &[g], &[]), Some(81), "mill G{g}");
         }
+        assert!(!motion_group(true, 80) && ends_canned_cycle(true, 80));
         assert_eq!(after(Some(83), true, &[], &[30]), None);
         assert_eq!(after(Some(249), true, &[], &[]), Some(249));
         assert_eq!(after(Some(83), true, &[241], &[]), Some(241));
         // no other family's cycle is followed here
         assert_eq!(
-            cycle_in_force(None, Family::LinuxCnc, false, &[83], &[]),
-            None
+            Repeat::default().after(Family::LinuxCnc, false, &[83], &[]),
+            Repeat::default()
         );
         // which cycles' P is a dwell: a lathe's G73/G74/G76 are multiple repetitive cycles
         assert!(dwell_cycle(false, 76) && !dwell_cycle(true, 76) && dwell_cycle(true, 249));
@@ -11225,7 +11283,10 @@ mod tests {
                 Some(243),
             ];
             converter.modal.state.cycle = cycle[(next() % cycle.len() as u64) as usize];
-            converter.cycle_code = cycle[(next() % cycle.len() as u64) as usize];
+            converter.cycle_code = Repeat {
+                cycle: cycle[(next() % cycle.len() as u64) as usize],
+                thread: None,
+            };
             let letter = loop {
                 let l =
                     b"ABCDEFGHIJKLMNOQRSTUVWXYZabcdefghijklmnoqrstuvwxyz@#"[(next() % 52) as usize];

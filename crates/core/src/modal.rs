@@ -122,7 +122,7 @@ pub struct ModalState {
 /// (FANUC 0i-TF operator's manual, "Threading cycle (G92)": the cycle's data are modal;
 /// "Threading (G32)"; review 57a, F4: the angle was read as the cycle's only in the block
 /// that names it). The one list of the converter's and the diff's reading
-/// (`convert::cycle_in_force`) and of the checker's ([`ModalState::code_in_force`]).
+/// (`convert::Repeat`) and of the checker's ([`ModalState::code_in_force`]).
 pub fn modal_thread(g: i64) -> bool {
     matches!(g, 32 | 92)
 }

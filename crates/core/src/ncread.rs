@@ -289,8 +289,9 @@ pub struct Reader {
     /// A drilling or boring cycle in force (G73, G82-G89), whose P is the dwell at the bottom.
     dwell_cycle: bool,
     /// The canned drilling cycle in force, whose words a block that names no cycle repeats
-    /// with its roles (`convert::cycle_in_force`, as the converter reads them).
-    cycle_code: Option<i64>,
+    /// with its roles, or a lathe's thread in force (`convert::Repeat`, as the converter reads
+    /// them).
+    cycle_code: crate::convert::Repeat,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
@@ -332,7 +333,7 @@ impl Reader {
             polar_interpolation: false,
             uw_moves: true,
             dwell_cycle: false,
-            cycle_code: None,
+            cycle_code: Default::default(),
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             data_input: DataInput::default(),
@@ -349,7 +350,7 @@ impl Reader {
         self.incremental = false;
         self.uw_moves = true;
         self.dwell_cycle = false;
-        self.cycle_code = None;
+        self.cycle_code = Default::default();
         self.feed_mode = 94;
         self.css = false;
         self.motion_mode = None;
@@ -491,14 +492,14 @@ impl Reader {
         let system = self.settings.modal.g_system;
         let (family, lathe) = (self.settings.family, self.settings.lathe);
         let haas = Some(self.settings.modal.haas);
-        self.cycle_code = crate::convert::cycle_in_force(self.cycle_code, family, lathe, &gs, &ms);
+        self.cycle_code = self.cycle_code.after(family, lathe, &gs, &ms);
         // a block repeating the cycle in force: its words by the cycle's roles (a lathe's
         // thread only in a plain pass, `modal::thread_pass`)
         let unread = words
             .iter()
             .zip(&numbers)
             .any(|(w, n)| w.letter == b'G' && n.is_none());
-        let repeated = self.cycle_code.filter(|&c| {
+        let repeated = self.cycle_code.code().filter(|&c| {
             !gs.contains(&c)
                 && (!crate::modal::modal_thread(c) || crate::modal::thread_pass(&gs, unread))
         });
@@ -1238,8 +1239,20 @@ impl Reader {
             // (a thread's start angle `Q60000`, in 0.001 deg; Haas G76's `A60`, degrees) steps
             // by one of its own unit, the number's last digit: its letter's length format's
             // step is no unit of it (review 55a F5 said the same of a count)
+            // a dwell's time written with a point is seconds (the Haas NGC mill and lathe
+            // manuals, G04: "P with a decimal point is seconds"; the drilling cycles' P read
+            // alike) where its letter's format is a whole number's, which steps by a second: a
+            // FANUC's or Haas's P05, the milliseconds of a P without its point, an Okuma's
+            // P05. It steps by the millisecond (a FANUC's or Haas's P without its point, the
+            // X time's 0.001 s), so `P0.5` and `P0.9` are 400 steps apart, not 0.4 (review
+            // 58b, F4); a format with decimals (an ISO dwell's F022) keeps its own step
             let step = if measure && !w.point && self.settings.reads_increments(letter) {
                 Dec::from_int(1)
+            } else if time && w.point && (!fmt.decimal || fmt.after == 0) {
+                Dec {
+                    mantissa: 1,
+                    scale: 3,
+                }
             } else {
                 one_step(&fmt)
             };
