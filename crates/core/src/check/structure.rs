@@ -3161,6 +3161,7 @@ impl Checker {
         before: &super::Before,
         surely: bool,
     ) {
+        self.linuxcnc_m72_motion = Some((self.linuxcnc_motion, surely));
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
             let mask = crate::modal::bit(axis);
@@ -3174,6 +3175,44 @@ impl Checker {
             {
                 state.position[i] = None;
                 state.unknown |= mask;
+            }
+        }
+    }
+
+    /// The motion mode after a block whose M72 may be dropped (`motion`, the mode before it;
+    /// `surely`, the drop sure), run after the block's rules: rs274 2.9.0 runs the restore's
+    /// block in place of the M72's, so the block's own motion code never takes effect (review
+    /// 58c, F7: `M70` / `G93` / `M72 G1 X1` / `X2` traverses to X2 in `rs274 -g`, G0 still in
+    /// force). Where the drop is sure and the mode before is G0-G3 or none, that mode is back;
+    /// where the drop is only possible, or the mode before was another (a cycle's, whose
+    /// words the block's code cleared), the mode after is not known, as after a call: no
+    /// motion is judged by it (TG401, TG411) until a motion code.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_m72_motion_back(
+        &mut self,
+        motion: super::tooling::LinuxCncMotion,
+        surely: bool,
+    ) {
+        use super::tooling::LinuxCncMotion;
+        if self.linuxcnc_motion == motion {
+            return;
+        }
+        let modal = match motion {
+            LinuxCncMotion::Known(None) => Some(None),
+            LinuxCncMotion::Known(Some(m @ (0 | 10 | 20 | 30))) => Some(Some(m / 10)),
+            _ => None,
+        };
+        match modal.filter(|_| surely) {
+            Some(back) => {
+                self.linuxcnc_motion = motion;
+                self.machine.state.motion = back;
+                self.machine.state.cycle = None;
+            }
+            None => {
+                self.linuxcnc_motion = LinuxCncMotion::Unknown;
+                self.motion_unknown = true;
+                self.machine.state.motion = None;
             }
         }
     }
