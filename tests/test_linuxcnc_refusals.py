@@ -1178,6 +1178,10 @@ M72_DROPPED_MOTION_RUNS = [
     "G0 X0\nG94\nM70\nG93\nM72 G1 X1\nG94\nX2",
     # the plane alone differs: the drop may happen, the mode after is not known
     "G0 X0\nG94\nM70\nG18\nM72 G1 X1\nX2",
+    # nor do its plane and compensation codes (review 58c, F6): G17 and G40 stay
+    "G94 F10\nM70\nG93\nM72 G18\nG2 X1 Y0 I0.5 J0 F10",
+    "G94\nM70\nG18\nM72 G19\nG2 X1 Y0 I0.5 J0 F10",
+    "G94 F10\nM70\nG93\nM72 G41.1 D0.1\nG81 X1 Z-1 R1 F10",
 ]
 
 

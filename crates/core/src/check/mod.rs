@@ -1105,10 +1105,10 @@ pub struct Checker {
     /// which rs274 2.9.0 runs in place of the M72's: its motion is not judged
     /// ([`Checker::linuxcnc_feed_restore`]).
     linuxcnc_m72_dropped: Option<usize>,
-    /// LinuxCNC: the motion mode before a block whose M72 may drop it (`linuxcnc_m72_dropped`),
-    /// and whether the drop is sure: the block's own motion code does not take effect where
-    /// rs274 drops it (`Checker::linuxcnc_m72_motion_back`).
-    linuxcnc_m72_motion: Option<(tooling::LinuxCncMotion, bool)>,
+    /// LinuxCNC: a block whose M72 may be dropped (`linuxcnc_m72_dropped`), with the motion
+    /// mode before it: the block's own motion, plane and compensation codes do not take effect
+    /// where rs274 drops it (`Checker::linuxcnc_m72_motion_back`).
+    linuxcnc_m72_motion: Option<structure::M72Dropped>,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
     linuxcnc_nurbs: tooling::Nurbs,
     /// LinuxCNC: the X and Y of the NURBS list's last control point, where a G5.2 block of
@@ -2612,8 +2612,8 @@ impl Checker {
         if let Some(ran) = self.linuxcnc_cycle_ran.take() {
             self.linuxcnc_cycle_end(ran, &before);
         }
-        if let Some((motion, surely)) = self.linuxcnc_m72_motion.take() {
-            self.linuxcnc_m72_motion_back(motion, surely);
+        if let Some(dropped) = self.linuxcnc_m72_motion.take() {
+            self.linuxcnc_m72_motion_back(dropped);
         }
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);

@@ -3161,7 +3161,27 @@ impl Checker {
         before: &super::Before,
         surely: bool,
     ) {
-        self.linuxcnc_m72_motion = Some((self.linuxcnc_motion, surely));
+        // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
+        // G40-G42.1, read as written)
+        let (mut plane, mut compensation) = (false, false);
+        for w in b
+            .words
+            .iter()
+            .filter(|w| w.letter == b'G' && w.expression.is_empty())
+        {
+            let tenths = std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|t| t.parse::<f64>().ok())
+                .map(|v| (v * 10.0).round() as i64);
+            plane |= matches!(tenths, Some(170 | 171 | 180 | 181 | 190 | 191));
+            compensation |= matches!(tenths, Some(400 | 410 | 411 | 420 | 421));
+        }
+        self.linuxcnc_m72_motion = Some(M72Dropped {
+            motion: self.linuxcnc_motion,
+            surely,
+            plane,
+            compensation,
+        });
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
             let mask = crate::modal::bit(axis);
@@ -3189,12 +3209,18 @@ impl Checker {
     /// motion is judged by it (TG401, TG411) until a motion code.
     #[cold]
     #[inline(never)]
-    pub(super) fn linuxcnc_m72_motion_back(
-        &mut self,
-        motion: super::tooling::LinuxCncMotion,
-        surely: bool,
-    ) {
+    pub(super) fn linuxcnc_m72_motion_back(&mut self, dropped: M72Dropped) {
         use super::tooling::LinuxCncMotion;
+        // (the block's plane and compensation codes do not take effect where rs274 drops
+        // it, the restore's do: neither followed here, both not known after it; review 58c,
+        // F6: `F10` / `M70` / `G93` / `M72 G18` / `G2 X1 Y0 I0.5 J0` runs in G17)
+        if dropped.plane {
+            self.linuxcnc_plane_unknown = true;
+        }
+        if dropped.compensation {
+            self.linuxcnc_compensation_unknown = true;
+        }
+        let M72Dropped { motion, surely, .. } = dropped;
         if self.linuxcnc_motion == motion {
             return;
         }
@@ -5071,6 +5097,18 @@ impl LooseSaved {
             joined: self.joined || other.joined,
         }
     }
+}
+
+/// LinuxCNC: a block whose M72 rs274 may drop, the restore's block running in its place
+/// ([`Checker::linuxcnc_m72_motion_back`]): the motion mode before it, whether the drop is
+/// sure, and whether the block writes a plane (G17-G19.1) or a cutter compensation code
+/// (G40-G42.1), none of which takes effect where it is dropped.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct M72Dropped {
+    pub(super) motion: super::tooling::LinuxCncMotion,
+    pub(super) surely: bool,
+    pub(super) plane: bool,
+    pub(super) compensation: bool,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
