@@ -1196,3 +1196,22 @@ def test_the_motion_before_a_surely_dropped_m72_block_is_judged_after_it(tmp_pat
     found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
     assert [(f.rule, f.line, f.column) for f in found] == [("TG401", 9, 1)], found
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body, line, column", [
+    # a G20/G21 between the save and the restore converts rs274's rate, but a zero stays zero
+    # (review 58c, F2): the restore leaves F0
+    ("G94 F0\nM70\nG20\nM72\nG1 X1", 7, 4),
+    ("G94 F0\nM70\nG20\nM72 G1 X1\nG1 X2", 7, 4),
+])
+def test_a_zero_rate_saved_and_in_force_across_a_units_change_is_zero_after_m72(
+        tmp_path, body, line, column):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, column)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+def test_a_rate_saved_before_a_units_change_is_not_known_after_m72(tmp_path):
+    # (F100 saved, F100 converted by G20: the restore's F is not followed)
+    clean_on_both(tmp_path, program("G94 F100\nM70\nG20\nM72\nG1 X1"))

@@ -3029,6 +3029,24 @@ impl Checker {
                     Some(saved) => self.linuxcnc_feed_restored(saved, now),
                     None => {
                         self.linuxcnc_feed_unfollowed(now, followed, mode_known);
+                        // (a G20/G21 between converts rs274's rate, not a zero: where the
+                        // saved and the current rate are both zero in the same feed mode,
+                        // the rate after the M72 is zero; review 58c F2: `M70` / `G20` /
+                        // `M72` / `G1 X1` is "Cannot do g1 with zero feed rate")
+                        let zero = |r: Option<Dec>| r.is_some_and(|r| r.is_zero());
+                        if kept.is_some_and(|s| {
+                            mode_known
+                                && s.mode == now.mode
+                                && s.mode != 93
+                                && zero(s.rate)
+                                && zero(now.rate)
+                        }) {
+                            self.linuxcnc_rate = Some(Dec::ZERO);
+                            self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+                            let state = &mut self.machine.state;
+                            state.feed = None;
+                            state.unknown &= !crate::modal::bit(b'F');
+                        }
                         None
                     }
                 };
