@@ -1124,3 +1124,94 @@ def test_review52_a_sub_defined_in_a_counted_loop_of_one_turn_is_clean(tmp_path)
                    "o<s> endsub\no1 endwhile\no<s> call")
     assert errors(text) == [], text
     assert "PROGRAM_END" in rs274_output(tmp_path, text)
+
+
+# Where a canned cycle or a rigid tap leaves the tool (review 58c, F4): the cycle's clearance
+# level (G99: R; G98: the higher of R and the start), and a rigid tap its start, not the point
+# its words give. HEAD starts at Z0 with F100. (the blocks after HEAD, the probe's line)
+CYCLE_END_RUNS = [
+    # G98 from above R: back to Z2, not Z0 (the level depends on the retract mode: unsure)
+    "G0 Z2\nG81 X0 Z0 R1\nG80\nG38.2 Z0",
+    "G0 Z2\nG98 G81 X0 Z0 R1\nG80\nG38.2 Z0",
+    # from Z0, below R: both modes end at R1
+    "G81 X1 Z-1 R1\nG38.2 Z-1",
+    "G0 Z2\nG99 G81 X0 Z0 R1\nG80\nG38.2 Z0",
+    # a peck drill and a tap end at R as G81 does
+    "S100 M3\nG73 X0 Z-1 R1 Q0.3\nG80\nG38.2 Z-1",
+    "S100 M3\nG84 X0 Z-1 R1\nG80\nG38.2 Z-1",
+    # G91: R from the start, unsure (rs274's sums of doubles)
+    "G0 Z2\nG91 G81 X0 Z-1 R-0.5\nG90 G80\nG38.2 Z0",
+    # a rigid tap goes back to where it started
+    "S100 M3\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z0",
+    "S100 M3\nG0 X0 Z1\nG33.1 X1 Z0 K0.1\nG38.2 X1 Z0",
+]
+
+CYCLE_END_REFUSED = [
+    ("G81 X1 Z-1 R1\nG38.2 Z1", 4, 1),
+    ("G0 Z0.5\nG98 G81 X0 Z0 R1\nG80\nG38.2 Z1", 6, 1),
+    ("G18\nG81 X1 Y-1 R1\nG80\nG17\nG38.2 Y1", 7, 1),
+    ("S100 M3\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z1", 6, 1),
+    ("S100 M3\nG0 X0 Z1\nG33.1 X1 Z0 K0.1\nG38.2 X0 Z1", 6, 1),
+]
+
+
+@pytest.mark.parametrize("body", CYCLE_END_RUNS)
+def test_a_cycle_s_end_is_its_clearance_level_and_a_rigid_tap_s_its_start(tmp_path, body):
+    clean_on_both(tmp_path, program(body))
+
+
+@pytest.mark.parametrize("body, line, column", CYCLE_END_REFUSED)
+def test_a_probe_from_a_cycle_s_clearance_level_to_it_is_refused(tmp_path, body, line, column):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert "Start point too close to probe point" in found[0].message
+    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+
+
+# A block whose M72 rs274 2.9 drops (the restore's block runs in its place): its own motion
+# code never takes effect (review 58c, F7). HEAD has F100; these blocks start from G94 F0
+# where they need it. (the blocks after HEAD)
+M72_DROPPED_MOTION_RUNS = [
+    # the mode, not the rate, differs: the drop is sure, G0 stays in force
+    "G0 X0\nG94\nM70\nG93\nM72 G1 X1\nX2",
+    "G0 X0\nG94\nM70\nG93\nM72 G1 X1\nG94\nX2",
+    # the plane alone differs: the drop may happen, the mode after is not known
+    "G0 X0\nG94\nM70\nG18\nM72 G1 X1\nX2",
+    # nor do its plane and compensation codes (review 58c, F6): G17 and G40 stay
+    "G94 F10\nM70\nG93\nM72 G18\nG2 X1 Y0 I0.5 J0 F10",
+    "G94\nM70\nG18\nM72 G19\nG2 X1 Y0 I0.5 J0 F10",
+    "G94 F10\nM70\nG93\nM72 G41.1 D0.1\nG81 X1 Z-1 R1 F10",
+]
+
+
+@pytest.mark.parametrize("body", M72_DROPPED_MOTION_RUNS)
+def test_a_dropped_m72_block_s_motion_code_does_not_take_effect(tmp_path, body):
+    clean_on_both(tmp_path, program(body))
+
+
+def test_the_motion_before_a_surely_dropped_m72_block_is_judged_after_it(tmp_path):
+    # G1 stays in force through `M72 G0 X1`: `X2` feeds at F0
+    text = program("G94\nG1 X0.5 F10\nF0\nM70\nG93\nM72 G0 X1\nX2")
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", 9, 1)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("body, line, column", [
+    # a G20/G21 between the save and the restore converts rs274's rate, but a zero stays zero
+    # (review 58c, F2): the restore leaves F0
+    ("G94 F0\nM70\nG20\nM72\nG1 X1", 7, 4),
+    ("G94 F0\nM70\nG20\nM72 G1 X1\nG1 X2", 7, 4),
+])
+def test_a_zero_rate_saved_and_in_force_across_a_units_change_is_zero_after_m72(
+        tmp_path, body, line, column):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, column)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+def test_a_rate_saved_before_a_units_change_is_not_known_after_m72(tmp_path):
+    # (F100 saved, F100 converted by G20: the restore's F is not followed)
+    clean_on_both(tmp_path, program("G94 F100\nM70\nG20\nM72\nG1 X1"))

@@ -1111,6 +1111,10 @@ pub struct Checker {
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
+    /// LinuxCNC: the block ran a canned cycle or a rigid tap (its motion in tenths: G73, G74,
+    /// G81-G89, G33.1), or a move whose motion is not known (0), which may be one: where it
+    /// leaves the tool is set after the block's rules (`Checker::linuxcnc_cycle_end`).
+    linuxcnc_cycle_ran: Option<i64>,
     /// LinuxCNC: rs274ngc's feed rate, which its probe moves and canned cycles read
     /// ([`tooling::LinuxCncFeed`]).
     linuxcnc_feed_rate: tooling::LinuxCncFeed,
@@ -1134,6 +1138,10 @@ pub struct Checker {
     /// which rs274 2.9.0 runs in place of the M72's: its motion is not judged
     /// ([`Checker::linuxcnc_feed_restore`]).
     linuxcnc_m72_dropped: Option<usize>,
+    /// LinuxCNC: a block whose M72 may be dropped (`linuxcnc_m72_dropped`), with the motion
+    /// mode before it: the block's own motion, plane and compensation codes do not take effect
+    /// where rs274 drops it (`Checker::linuxcnc_m72_motion_back`).
+    linuxcnc_m72_motion: Option<structure::M72Dropped>,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
     linuxcnc_nurbs: tooling::Nurbs,
     /// LinuxCNC: the X and Y of the NURBS list's last control point, where a G5.2 block of
@@ -1655,12 +1663,14 @@ impl Checker {
             linuxcnc_point_unsure: 0,
             linuxcnc_double: Default::default(),
             linuxcnc_cycle_bottom: None,
+            linuxcnc_cycle_ran: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
+            linuxcnc_m72_motion: None,
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
             linuxcnc_dynamic_compensation: false,
@@ -2640,6 +2650,14 @@ impl Checker {
             "line {}: a rule changed the state",
             b.line
         );
+        // (LinuxCNC: where a cycle or a rigid tap left the tool, after the rules read its
+        // bottom; state, not a rule)
+        if let Some(ran) = self.linuxcnc_cycle_ran.take() {
+            self.linuxcnc_cycle_end(ran, &before);
+        }
+        if let Some(dropped) = self.linuxcnc_m72_motion.take() {
+            self.linuxcnc_m72_motion_back(dropped);
+        }
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }

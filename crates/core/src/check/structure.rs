@@ -3054,6 +3054,24 @@ impl Checker {
                     Some(saved) => self.linuxcnc_feed_restored(saved, now),
                     None => {
                         self.linuxcnc_feed_unfollowed(now, followed, mode_known);
+                        // (a G20/G21 between converts rs274's rate, not a zero: where the
+                        // saved and the current rate are both zero in the same feed mode,
+                        // the rate after the M72 is zero; review 58c F2: `M70` / `G20` /
+                        // `M72` / `G1 X1` is "Cannot do g1 with zero feed rate")
+                        let zero = |r: Option<Dec>| r.is_some_and(|r| r.is_zero());
+                        if kept.is_some_and(|s| {
+                            mode_known
+                                && s.mode == now.mode
+                                && s.mode != 93
+                                && zero(s.rate)
+                                && zero(now.rate)
+                        }) {
+                            self.linuxcnc_rate = Some(Dec::ZERO);
+                            self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+                            let state = &mut self.machine.state;
+                            state.feed = None;
+                            state.unknown &= !crate::modal::bit(b'F');
+                        }
                         None
                     }
                 };
@@ -3186,6 +3204,27 @@ impl Checker {
         before: &super::Before,
         surely: bool,
     ) {
+        // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
+        // G40-G42.1, read as written)
+        let (mut plane, mut compensation) = (false, false);
+        for w in b
+            .words
+            .iter()
+            .filter(|w| w.letter == b'G' && w.expression.is_empty())
+        {
+            let tenths = std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|t| t.parse::<f64>().ok())
+                .map(|v| (v * 10.0).round() as i64);
+            plane |= matches!(tenths, Some(170 | 171 | 180 | 181 | 190 | 191));
+            compensation |= matches!(tenths, Some(400 | 410 | 411 | 420 | 421));
+        }
+        self.linuxcnc_m72_motion = Some(M72Dropped {
+            motion: self.linuxcnc_motion,
+            surely,
+            plane,
+            compensation,
+        });
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
             let mask = crate::modal::bit(axis);
@@ -3199,6 +3238,50 @@ impl Checker {
             {
                 state.position[i] = None;
                 state.unknown |= mask;
+            }
+        }
+    }
+
+    /// The motion mode after a block whose M72 may be dropped (`motion`, the mode before it;
+    /// `surely`, the drop sure), run after the block's rules: rs274 2.9.0 runs the restore's
+    /// block in place of the M72's, so the block's own motion code never takes effect (review
+    /// 58c, F7: `M70` / `G93` / `M72 G1 X1` / `X2` traverses to X2 in `rs274 -g`, G0 still in
+    /// force). Where the drop is sure and the mode before is G0-G3 or none, that mode is back;
+    /// where the drop is only possible, or the mode before was another (a cycle's, whose
+    /// words the block's code cleared), the mode after is not known, as after a call: no
+    /// motion is judged by it (TG401, TG411) until a motion code.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_m72_motion_back(&mut self, dropped: M72Dropped) {
+        use super::tooling::LinuxCncMotion;
+        // (the block's plane and compensation codes do not take effect where rs274 drops
+        // it, the restore's do: neither followed here, both not known after it; review 58c,
+        // F6: `F10` / `M70` / `G93` / `M72 G18` / `G2 X1 Y0 I0.5 J0` runs in G17)
+        if dropped.plane {
+            self.linuxcnc_plane_unknown = true;
+        }
+        if dropped.compensation {
+            self.linuxcnc_compensation_unknown = true;
+        }
+        let M72Dropped { motion, surely, .. } = dropped;
+        if self.linuxcnc_motion == motion {
+            return;
+        }
+        let modal = match motion {
+            LinuxCncMotion::Known(None) => Some(None),
+            LinuxCncMotion::Known(Some(m @ (0 | 10 | 20 | 30))) => Some(Some(m / 10)),
+            _ => None,
+        };
+        match modal.filter(|_| surely) {
+            Some(back) => {
+                self.linuxcnc_motion = motion;
+                self.machine.state.motion = back;
+                self.machine.state.cycle = None;
+            }
+            None => {
+                self.linuxcnc_motion = LinuxCncMotion::Unknown;
+                self.motion_unknown = true;
+                self.machine.state.motion = None;
             }
         }
     }
@@ -5057,6 +5140,18 @@ impl LooseSaved {
             joined: self.joined || other.joined,
         }
     }
+}
+
+/// LinuxCNC: a block whose M72 rs274 may drop, the restore's block running in its place
+/// ([`Checker::linuxcnc_m72_motion_back`]): the motion mode before it, whether the drop is
+/// sure, and whether the block writes a plane (G17-G19.1) or a cutter compensation code
+/// (G40-G42.1), none of which takes effect where it is dropped.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct M72Dropped {
+    pub(super) motion: super::tooling::LinuxCncMotion,
+    pub(super) surely: bool,
+    pub(super) plane: bool,
+    pub(super) compensation: bool,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed

@@ -923,6 +923,11 @@ impl Checker {
                 );
                 if let Some(code) = given {
                     self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
+                } else if self.linuxcnc_motion == LinuxCncMotion::Unknown
+                    && !facts.moved().is_empty()
+                {
+                    // (a move in a motion a call may have set: perhaps a cycle's)
+                    self.linuxcnc_cycle_ran = Some(0);
                 }
                 return unsettles;
             }
@@ -1090,6 +1095,13 @@ impl Checker {
                 self.linuxcnc_cycle_bottom = None;
             }
         }
+        // where the block's cycle or rigid tap leaves the tool, set after the block's rules
+        // (`Checker::linuxcnc_cycle_end`); a move whose motion is not known may be one
+        self.linuxcnc_cycle_ran = match runs {
+            Some(m @ (331 | 730 | 740 | 810..=890)) => Some(m),
+            _ if motion_in_doubt && !facts.moved().is_empty() => Some(0),
+            _ => None,
+        };
 
         // the NURBS control points: a G5.3 draws and empties the list, a G5.2 block adds its
         // point (a new list where the motion before was another)
@@ -1228,8 +1240,14 @@ impl Checker {
         });
         let arcs = bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R');
         let arc_words_used = matches!(runs, Some(20 | 30)) || letters & arcs == 0;
-        (runs.is_none_or(|m| matches!(m, 0 | 10 | 20 | 30)) && arc_words_used)
-            .then_some((given, f_at))
+        // (a move in a motion a call may have set, perhaps a cycle's, takes the full path,
+        // which leaves its end unsure: `Checker::linuxcnc_cycle_end`)
+        let in_doubt =
+            || self.linuxcnc_motion == LinuxCncMotion::Unknown && !facts.moved().is_empty();
+        (runs.is_none_or(|m| matches!(m, 0 | 10 | 20 | 30))
+            && arc_words_used
+            && (runs.is_some() || !in_doubt()))
+        .then_some((given, f_at))
     }
 
     /// rs274's feed rate after the block's first F word (`at`, its place; None for a block
@@ -1428,6 +1446,74 @@ impl Checker {
             unsure &= !known;
         }
         unsure
+    }
+
+    /// LinuxCNC: where a canned cycle or a rigid tap leaves the tool, which the modal state
+    /// takes as the point its words give. A canned cycle (G73, G74, G81-G89) ends at its
+    /// clearance level on the plane's normal axis (Z in G17, Y in G18, X in G19): under G99
+    /// the R level, under G98 the higher of the R level and where the axis was before the
+    /// block (LinuxCNC G-code reference, "Canned cycles" and "G98, G99"; interp_cycles.cc:
+    /// R is an increment from that point under G91). Where that point is at or below R both
+    /// modes give R; above it, the level depends on the retract mode, which the checker does
+    /// not follow through calls and restores: the axis is then unsure, as it is under G91
+    /// (rs274's double sums) or where R or the start is not known. A rigid tap (G33.1) goes to
+    /// its end and back to where it started (G-code reference, "G33.1 Rigid Tapping"): the
+    /// axes it names are at their start. A move whose motion is not known (`ran` 0) may be
+    /// either: the axes it names are unsure. Run after the block's rules, so that its own
+    /// limits and statistics read the cycle's bottom. `rs274 -g`: `G0 Z2` / `G81 X0 Z0 R1` /
+    /// `G38.2 Z0` probes from Z1 (review 58c, F4).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_cycle_end(&mut self, ran: i64, start: &Before) {
+        let xyz = crate::modal::AXES[..3].iter().fold(0, |m, &a| m | bit(a));
+        let named = (self.values.given() | self.values.unknown) & xyz;
+        if ran == 0 {
+            self.linuxcnc_point_unsure |= named;
+            return;
+        }
+        // (the point of an axis before the block, where it was known exactly)
+        let unsure = self.linuxcnc_point_unsure;
+        let known = |a: u8| {
+            start
+                .axis(a)
+                .filter(|_| unsure & bit(a) == 0 && !start.is_unknown(a))
+        };
+        let state = &mut self.machine.state;
+        if ran == 331 {
+            for (k, &a) in crate::modal::AXES[..3].iter().enumerate() {
+                if named & bit(a) == 0 {
+                    continue;
+                }
+                match known(a) {
+                    Some(at) => {
+                        state.position[k] = Some(at);
+                        state.unknown &= !bit(a);
+                    }
+                    None => self.linuxcnc_point_unsure |= bit(a),
+                }
+            }
+            return;
+        }
+        if self.linuxcnc_plane_unknown || self.linuxcnc_uvw_plane {
+            self.linuxcnc_point_unsure |= xyz;
+            return;
+        }
+        let (axis, _) = cycle_axis(state.plane);
+        let k = match axis {
+            b'X' => 0,
+            b'Y' => 1,
+            _ => 2,
+        };
+        let r = state.cycle_words[0]
+            .filter(|_| !state.incremental && self.values.unknown & bit(b'R') == 0);
+        match (known(axis), r) {
+            (Some(old), Some(r)) if old <= r => {
+                state.position[k] = Some(r);
+                state.unknown &= !bit(axis);
+                self.linuxcnc_double[k] = Double::Nearest;
+            }
+            _ => self.linuxcnc_point_unsure |= bit(axis),
+        }
     }
 
     /// LinuxCNC: rs274 keeps its current point through the G5.2 blocks, whose X and Y (from
@@ -4114,6 +4200,28 @@ mod tests {
             ("G0 X2\nG7\nG0 Z1\nG38.2 X4 F10", &[]),
             ("G20\nG38.4 X0 F10", &[]),
             ("G20 F4\nG81 X1 Z-1 R1\nG38.2 Z-1", &[]),
+            // a cycle ends at its clearance level, a rigid tap at its start (review 58c, F4):
+            // from Z0, under R1, both retract modes give R1; from above R the level is the
+            // retract mode's, not followed
+            ("F4\nG0 Z0\nG81 X1 Z-1 R1\nG38.2 Z-1", &[]),
+            (
+                "F4\nG0 Z0\nG81 X1 Z-1 R1\nG38.2 Z1",
+                &["7: Start point too close to probe point"],
+            ),
+            ("F4\nG0 Z2\nG98 G81 X0 Z0 R1\nG80\nG38.2 Z0", &[]),
+            ("F4\nG0 Z2\nG99 G81 X0 Z0 R1\nG80\nG38.2 Z0", &[]),
+            ("F4\nG0 Z0\nG91 G81 X1 Z-1 R1\nG90 G80\nG38.2 Z1", &[]),
+            (
+                "F4\nG0 Y0\nG18\nG81 X1 Y-1 R1\nG80\nG17\nG38.2 Y1",
+                &["10: Start point too close to probe point"],
+            ),
+            (
+                "S100 M3 F4\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z1",
+                &["7: Start point too close to probe point"],
+            ),
+            ("S100 M3 F4\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z0", &[]),
+            // a move whose motion a call may have set may be a cycle: its end is unsure
+            ("o<c> call\nZ-1\nG38.2 Z-1 F4", &[]),
             ("G0 X1\nG20\nG38.4 X0.03937 F10", &[]),
             // after the block's end the lines run unconditionally again: judged (review 17;
             // an `if` in a definition opens nothing in the main program)
