@@ -81,6 +81,7 @@ pub(super) struct Early {
     /// after, silenced every later program's machine positions).
     written_before: Written,
     expression_before: u16,
+    local_before: u16,
     lost_before: bool,
 }
 
@@ -331,6 +332,7 @@ impl Checker {
                 std::mem::take(&mut self.offsets_written)
             },
             expression_before: std::mem::take(&mut self.g10_expression),
+            local_before: std::mem::take(&mut self.g10_local),
             // (the program before runs on into it, skip switch on: that run's writes and loss)
             lost_before: std::mem::replace(&mut self.offsets_lost, lost && self.end_skippable),
         }));
@@ -370,6 +372,7 @@ impl Checker {
         written.then(&self.offsets_written);
         self.offsets_written = written;
         self.g10_expression |= early.expression_before;
+        self.g10_local |= early.local_before;
         self.offsets_lost |= early.lost_before;
         self.hold_from = None;
     }
@@ -422,6 +425,7 @@ impl Checker {
         let mut writes = std::mem::replace(&mut self.offsets_written, early.written_before);
         // (a G10 whose L or P is an expression: another call may give it another value)
         let expression = std::mem::replace(&mut self.g10_expression, early.expression_before);
+        self.g10_local = early.local_before;
         writes.then(&Written::on_every(expression));
         let loses = std::mem::replace(&mut self.offsets_lost, early.lost_before);
         self.pending.push(Pending {
@@ -726,7 +730,7 @@ impl Checker {
         self.offset_writer(&writes, self.pending[k].body.loses);
         if self.pending[k].body.loses {
             let why = format!("{} changes the offsets", self.pending[k].body.name);
-            self.lose_offsets(line, &why);
+            self.offsets_rewritten(line, &why);
         }
     }
 
@@ -825,26 +829,83 @@ impl Checker {
         if self.found.iter().all(|f| f.pending_on.is_empty()) {
             return;
         }
-        let writers = &self.offset_writers;
-        let writes = |n: &i64, work: usize, place: usize| {
-            writers
-                .get(n)
-                .is_some_and(|(w, _)| w.value(work, place).is_some())
-        };
-        self.found.retain_mut(|f| {
+        let found = std::mem::take(&mut self.found);
+        for mut f in found {
             let numbers = std::mem::take(&mut f.pending_on);
-            let Placed::Offset { place, work, .. } = f.placed else {
-                return true;
+            let Placed::Offset { place, work, at } = f.placed else {
+                self.found.push(f);
+                continue;
             };
-            let (work, place) = (usize::from(work), usize::from(place));
-            // (and what the programs they call, not read there either, write)
-            !numbers.iter().any(|n| {
-                writes(n, work, place)
-                    || writers
-                        .get(n)
-                        .is_some_and(|(w, _)| w.unread.iter().any(|m| writes(m, work, place)))
-            })
-        });
+            match self.written_later(&numbers, usize::from(work), usize::from(place)) {
+                // (none of them writes that offset's axis: as said)
+                None => self.found.push(f),
+                Some(value) if value.is_nan() => {}
+                Some(value) => {
+                    // (the message's tail, naming the call, kept)
+                    let tail = self
+                        .travel
+                        .of_place(usize::from(place))
+                        .and_then(|(low, high)| {
+                            let range = format!("outside the travel {low} to {high}");
+                            let k = f.message.find(&range)? + range.len();
+                            Some(f.message[k..].to_string())
+                        });
+                    let Some(tail) = tail else {
+                        self.found.push(f);
+                        continue;
+                    };
+                    let judged = self.rejudged(&f, (place, work, at, value), &|_| tail.clone());
+                    self.found.extend(judged);
+                }
+            }
+        }
+    }
+
+    /// The value offset G`work` (54-59) has on the axis of place `place` after the programs
+    /// `numbers` ran, called in that order where the checker had not read them
+    /// ([`Finding::pending_on`]): None where none writes it (the profile's holds), NaN where
+    /// one writes it a value not known or moves the coordinates too (a G52, G92 or frame:
+    /// the position is no longer work plus offset), or calls a program that writes it (its
+    /// order not followed); else the value the last writes. A G52 or G92 left on by a
+    /// program that writes no offset is not followed, as before (review 59a F10, c11: said,
+    /// erring on the side of the alarm) (review 59a F1: a literal `G10 L2
+    /// P2 X-200.` of an O100 written after the main that calls it before the call of O2000
+    /// runs O2000's `X-700.` at -900, as the same O100 written before the main does).
+    fn written_later(&self, numbers: &[i64], work: usize, place: usize) -> Option<f64> {
+        let writers = &self.offset_writers;
+        let mut value = None;
+        for n in numbers {
+            let Some((w, _)) = writers.get(n) else {
+                continue;
+            };
+            let mut seen = vec![*n];
+            let own = w.value(work, place);
+            if own.is_some() && w.moved
+                || w.unread
+                    .iter()
+                    .any(|m| self.touches(*m, (work, place), &mut seen))
+            {
+                return Some(f64::NAN);
+            }
+            value = own.or(value);
+        }
+        value
+    }
+
+    /// Whether the program `n` of the file, or one it calls not read there (through any
+    /// depth; `seen`: those looked at), writes offset G`work`'s axis of place `place`
+    /// (review 59a F10, c12: a G10 three calls deep).
+    fn touches(&self, n: i64, (work, place): (usize, usize), seen: &mut Vec<i64>) -> bool {
+        if seen.contains(&n) {
+            return false;
+        }
+        seen.push(n);
+        self.offset_writers.get(&n).is_some_and(|(w, _)| {
+            w.value(work, place).is_some()
+                || w.unread
+                    .iter()
+                    .any(|&m| self.touches(m, (work, place), seen))
+        })
     }
 
     /// How a body's machine position under a work offset (not a G53 one), read with the
@@ -1500,6 +1561,12 @@ impl Checker {
                     }
                     // (judged with the value written: said here where out, kept for a
                     // later call where within)
+                    // (under a frame or shift, or one since the G10, the position is not
+                    // the work position plus the value: kept, review 59a F5)
+                    Now::Written(..) if self.offsets_written.moved || self.frames_on() => {
+                        p.positions.push(f);
+                        continue;
+                    }
                     Now::Written(place, work, at_work, value) => {
                         let said = known
                             .then(|| self.rejudged(&f, (place, work, at_work, value), &under))
