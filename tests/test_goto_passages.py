@@ -813,3 +813,31 @@ def test_a_value_written_is_not_judged_with_after_the_coordinates_or_the_offset_
     assert said(program, _wo2(tmp_path)) == [("TG601", 11, 5, (
         "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a G10 before "
         "this call wrote it)"))]
+
+
+@pytest.mark.parametrize("g10, expected", [
+    # (a37: G55's X 0: X-700. inside, G1 X-780. beyond)
+    ("G10 L2 P2 X0.", "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a G10 "
+                      "before this call wrote it)"),
+    # (a37b: X-50.: -750 inside, -830 beyond)
+    ("G10 L2 P2 X-50.", "X goes to -830 in machine coordinates (work -780 + G55 offset -50 as "
+                        "a G10 before this call wrote it)"),
+    # (X100.: -680 at the farthest, inside)
+    ("G10 L2 P2 X100.", None),
+])
+def test_an_excursion_is_judged_at_its_farthest_position_with_the_value_written(
+        tmp_path, g10, expected):
+    """Review 59a, F7 (a37.nc, a37b.nc): O1000's X-700. and X-780. under G55 are one excursion
+    beyond the travel as read (-800, -880), said once at its first position; with the value
+    a G10 wrote, the farthest, X-780. of line 4, decides (only the first was judged: inside,
+    and the -780 overtravel dropped with it). The call names line 4."""
+    program = ("G90 G55 G0 X-700. / G1 X-780. F100. / G0 X0 / M99 / O2000 / G21 G17 G90 G54 / "
+               f"G0 X0 Y0 / {g10} / G90 G55 / M98 P1000 / M30")
+    found = said(program, _wo2(tmp_path))
+    assert found == ([("TG601", 12, 5, expected)] if expected else [])
+    if expected:
+        text = "%\nO1000\n" + program.replace(" / ", "\n") + "\n%\n"
+        prof = load_profile(_wo2(tmp_path))
+        messages = [f.message for f in Checker(prof, "<input>").run(
+            parse_text(text, prof.dialect, errors="collect")) if f.severity == "error"]
+        assert "its position of line 4 there" in messages[0]

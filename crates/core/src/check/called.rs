@@ -286,6 +286,17 @@ fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
     }
 }
 
+/// A call's tail (`... its position of line 3 there ...`) naming the position of line `line`
+/// instead: the excursion's farthest, which the value written judges.
+fn farthest_named(tail: &str, line: usize) -> String {
+    const AT: &str = "its position of line ";
+    let Some(k) = tail.find(AT).map(|k| k + AT.len()) else {
+        return tail.to_string();
+    };
+    let digits = tail[k..].bytes().take_while(u8::is_ascii_digit).count();
+    format!("{}{line}{}", &tail[..k], &tail[k + digits..])
+}
+
 impl Checker {
     /// A program read from the reset state begins (`number`, its O word at `at`): its own
     /// positions kept apart from the spans before it. Only with no shift, frame or
@@ -832,7 +843,13 @@ impl Checker {
         let found = std::mem::take(&mut self.found);
         for mut f in found {
             let numbers = std::mem::take(&mut f.pending_on);
-            let Placed::Offset { place, work, at } = f.placed else {
+            let Placed::Offset {
+                place,
+                work,
+                at,
+                line,
+            } = f.placed
+            else {
                 self.found.push(f);
                 continue;
             };
@@ -848,7 +865,8 @@ impl Checker {
                         .and_then(|(low, high)| {
                             let range = format!("outside the travel {low} to {high}");
                             let k = f.message.find(&range)? + range.len();
-                            Some(f.message[k..].to_string())
+                            // (naming the excursion's farthest position, judged)
+                            Some(farthest_named(&f.message[k..], line))
                         });
                     let Some(tail) = tail else {
                         self.found.push(f);
@@ -921,7 +939,9 @@ impl Checker {
             return Now::AsRead;
         }
         match f.placed {
-            Placed::Offset { place, work, at } => {
+            Placed::Offset {
+                place, work, at, ..
+            } => {
                 match self
                     .offsets_written
                     .value(usize::from(work), usize::from(place))
@@ -948,6 +968,11 @@ impl Checker {
     ) -> Option<Finding> {
         let i = usize::from(place);
         let (low, high) = self.travel.of_place(i)?;
+        // (the excursion's farthest position's line: limits.rs, excursion_farther)
+        let line = match f.placed {
+            Placed::Offset { line, .. } => line,
+            _ => f.line,
+        };
         let machine_at = at + value;
         if (low - 1e-9..=high + 1e-9).contains(&machine_at) {
             return None;
@@ -959,7 +984,7 @@ impl Checker {
             super::round6(machine_at),
             super::round6(at),
             super::round6(value),
-            under(f.line)
+            under(line)
         );
         Some(Finding {
             message,

@@ -2353,6 +2353,7 @@ impl Checker {
                             place: i as u8,
                             work: work as u8,
                             at,
+                            line,
                         };
                         if self.report_placed(message, (line, col(axis)), placed)
                             && (self.work_guessed.is_some() || self.work_run_on)
@@ -2360,6 +2361,8 @@ impl Checker {
                             self.found.last_mut().expect("said").guessed = true;
                         }
                         said_outside = true;
+                    } else if out != 0 {
+                        self.excursion_farther(i, work, (at, line), out);
                     }
                     self.outside[i] = out;
                 }
@@ -2733,6 +2736,34 @@ impl Checker {
     ) {
         let message = self.machine_message(axis, value, at, (low, high));
         self.report_placed(message, (line, column), super::Placed::Machine);
+    }
+
+    /// A position of axis place `i` under G`work` (work position `at`) beyond the travel on
+    /// the side `out` of an excursion already said: the excursion's finding (the last TG601
+    /// under that offset on that axis, not yet handed over) keeps the farthest work position,
+    /// which decides where a call judges it with a value a G10 wrote (review 59a, F7: `G0
+    /// X-700.` / `G1 X-780.` under a G55 X written 0 runs at -780, beyond; only the -700,
+    /// inside, was judged, and the excursion dropped with it).
+    #[cold]
+    #[inline(never)]
+    fn excursion_farther(&mut self, i: usize, work: i64, (at, line): (f64, usize), out: i8) {
+        let excursion = self.found.iter_mut().rev().find(|f| {
+            f.rule == Rule::TravelExceeded
+                && matches!(f.placed, super::Placed::Offset { place, .. } if usize::from(place) == i)
+        });
+        if let Some(f) = excursion {
+            if let super::Placed::Offset {
+                work: w,
+                at: first,
+                line: first_line,
+                ..
+            } = &mut f.placed
+            {
+                if i64::from(*w) == work && (at - *first) * f64::from(out) > 0.0 {
+                    (*first, *first_line) = (at, line);
+                }
+            }
+        }
     }
 
     /// TG601 of one machine position (`placed`: what it compared, kept on the finding for

@@ -370,7 +370,14 @@ pub enum Placed {
     /// The work position `at` (in the profile's units) of the axis of place `place` plus
     /// the profile's value of work offset G`work` (54-59) on that axis: at a call after a
     /// G10 that wrote that value it is judged again with the value written.
-    Offset { place: u8, work: u8, at: f64 },
+    /// `line`: the line of `at`, the farthest position of its excursion
+    /// ([`Checker::excursion_farther`]).
+    Offset {
+        place: u8,
+        work: u8,
+        at: f64,
+        line: usize,
+    },
 }
 
 // (`at` is a position read, never NaN)
