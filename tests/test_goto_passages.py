@@ -729,3 +729,115 @@ def test_a_program_run_on_into_with_the_skip_switch_keeps_the_g10_before_it(tmp_
     assert errors(program, _wo2(tmp_path)) == []
     # (r1c: no G10: the run-on's -800 said on O2000's line)
     assert errors(program.replace("G10 L2 P2 X0. / ", ""), _wo2(tmp_path)) == [("TG601", 8, 4)]
+
+
+def test_a_g10_p_of_the_program_s_own_local_writes_that_offset_only(tmp_path):
+    """Review 59a, F4 (v15.nc): O2500 sets its own local #5 to 1 before `G10 L2 P#5 X0.`:
+    at every call it writes G54's X (FANUC Custom Macro B: #1-#33 local, cleared at each
+    call), not every offset: O4000's X-700. under G55 after the call is -800, said (it was
+    held, the P taken as any offset). A loop back over it writes every offset (v18): held."""
+    program = ("M99 / O4000 / G90 G55 G0 X-700. / M99 / O2500 / #5=1 / G10 L2 P#5 X0. / M99 / "
+               "O2000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2500 / M98 P4000 / M30")
+    assert said(program, _wo2(tmp_path)) == [("TG601", 15, 5, (
+        "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"))]
+    # (a common variable may differ at another call: every offset, held)
+    assert said(program.replace("#5", "#500"), _wo2(tmp_path)) == []
+    loop = ("M99 / O4000 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+            "#5=3 / N10 G10 L2 P#5 X0. / #5=#5+1 / IF [#5 LE 6] GOTO 10 / M98 P4000 / M30")
+    assert said(loop, _wo2(tmp_path)) == []
+
+
+@pytest.mark.parametrize("rest, expected", [
+    # (a4b: G55's X written -200 by O100, written after the main: -900)
+    ("G10 L2 P2 X-200. / M99", "X goes to -900 in machine coordinates (work -700 + G55 offset "
+                               "-200 as a G10 before this call wrote it)"),
+    # (a4c: the profile's value written again: -800)
+    ("G10 L2 P2 X-100. / M99", "X goes to -800 in machine coordinates (work -700 + G55 offset "
+                               "-100 as a G10 before this call wrote it)"),
+    # (a G52 left on with the G10: the position is not work + offset, held)
+    ("G10 L2 P2 X-200. / G52 X300. / M99", None),
+    # (c13: an additional offset selected and written: G55's X the profile's)
+    ("G54.1 P1 / G0 X0 / G10 L20 P1 X0. / M99", "X goes to -800 in machine coordinates "
+                                                  "(work -700 + G55 offset -100.0)"),
+    # (c12: a G10 two calls deeper, after it: held)
+    ("M98 P200 / M99 / O200 / M98 P300 / M99 / O300 / G10 L2 P2 X0. / M99", None),
+])
+def test_a_g10_of_a_program_written_after_its_call_is_judged_with_its_value(
+        tmp_path, rest, expected):
+    """Review 59a, F1 (a4b.nc, a4c.nc) and F10 (c12): the position held to the file's
+    end for O100, written after the main, is judged there with the value O100's G10 writes,
+    as it is where O100 is written before the main (it was dropped, the real overtravel
+    lost); held only where the value is not known, the coordinates moved, or the write is
+    deeper in programs O100 calls."""
+    program = ("G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P100 / "
+               "G90 G55 / M98 P1000 / M30 / O100 / " + rest)
+    assert said(program, _wo2(tmp_path)) == ([("TG601", 10, 5, expected)] if expected else [])
+
+
+@pytest.mark.parametrize("flow", [
+    # (a24c: the IF is false, X0. runs and GOTO 6 passes over N5's X-200.)
+    "#1=0 / IF [#1 EQ 1] GOTO 5 / G10 L2 P2 X0. / GOTO 6 / N5 G10 L2 P2 X-200. / N6 G0 X0",
+    # (a24d: the second G10 is passed over by the GOTO)
+    "G10 L2 P2 X0. / GOTO 6 / G10 L2 P2 X-200. / N6 G0 X0",
+])
+def test_a_g10_a_jump_may_pass_over_writes_no_value_known(tmp_path, flow):
+    """Review 59a, F2 (a24c.nc, a24d.nc): the last G10 in file order is not the one in force
+    where a jump passes over it or a condition chooses: a G10 passed over by a jump surely
+    taken writes nothing, and one after a jump or condition of its program writes a value
+    not known (held), not X-200 (it said a false -900; the control runs X-700. at -700)."""
+    program = BODY + flow + " / G90 G55 / M98 P1000 / M30"
+    assert said(program, _wo2(tmp_path)) == []
+    # (the G10 of X-200. alone before the jump: -900 said)
+    program = BODY + "G10 L2 P2 X-200. / GOTO 6 / G10 L2 P2 X0. / N6 G90 G55 / M98 P1000 / M30"
+    assert said(program, _wo2(tmp_path)) == [("TG601", 12, 5, (
+        "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a G10 before "
+        "this call wrote it)"))]
+
+
+@pytest.mark.parametrize("moved", [
+    # (a8b rotation, a8e mirror, a8d scaling, a30 G92)
+    "G68 X0 Y0 R180.", "G51.1 X0", "G51 X0 Y0 P500", "G92 X0",
+    # (F11: G55's X written again through its system variable, u2 and u2c)
+    "#5241=0.", "#5241=#5241+300.",
+])
+def test_a_value_written_is_not_judged_with_after_the_coordinates_or_the_offset_moved(
+        tmp_path, moved):
+    """Review 59a, F5 (a8b, a8e, a8d, a30) and F11 (u2, u2c): after `G10 L2 P2 X-200.` a
+    rotation, mirror, scaling or G92 in force at the call, or a write of G55's X through
+    #5241 (FANUC Custom Macro B system variables #5221-#5326), leaves the position not the
+    work position plus -200: held (each said a false -900)."""
+    program = BODY + f"G10 L2 P2 X-200. / G90 G55 / {moved} / M98 P1000 / M30"
+    assert said(program, _wo2(tmp_path)) == []
+    # (#5221, G54's X, leaves G55's written value: -900 said)
+    program = BODY + "G10 L2 P2 X-200. / #5221=0. / G90 G55 / M98 P1000 / M30"
+    assert said(program, _wo2(tmp_path)) == [("TG601", 11, 5, (
+        "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a G10 before "
+        "this call wrote it)"))]
+
+
+@pytest.mark.parametrize("g10, expected", [
+    # (a37: G55's X 0: X-700. inside, G1 X-780. beyond)
+    ("G10 L2 P2 X0.", "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a G10 "
+                      "before this call wrote it)"),
+    # (a37b: X-50.: -750 inside, -830 beyond)
+    ("G10 L2 P2 X-50.", "X goes to -830 in machine coordinates (work -780 + G55 offset -50 as "
+                        "a G10 before this call wrote it)"),
+    # (X100.: -680 at the farthest, inside)
+    ("G10 L2 P2 X100.", None),
+])
+def test_an_excursion_is_judged_at_its_farthest_position_with_the_value_written(
+        tmp_path, g10, expected):
+    """Review 59a, F7 (a37.nc, a37b.nc): O1000's X-700. and X-780. under G55 are one excursion
+    beyond the travel as read (-800, -880), said once at its first position; with the value
+    a G10 wrote, the farthest, X-780. of line 4, decides (only the first was judged: inside,
+    and the -780 overtravel dropped with it). The call names line 4."""
+    program = ("G90 G55 G0 X-700. / G1 X-780. F100. / G0 X0 / M99 / O2000 / G21 G17 G90 G54 / "
+               f"G0 X0 Y0 / {g10} / G90 G55 / M98 P1000 / M30")
+    found = said(program, _wo2(tmp_path))
+    assert found == ([("TG601", 12, 5, expected)] if expected else [])
+    if expected:
+        text = "%\nO1000\n" + program.replace(" / ", "\n") + "\n%\n"
+        prof = load_profile(_wo2(tmp_path))
+        messages = [f.message for f in Checker(prof, "<input>").run(
+            parse_text(text, prof.dialect, errors="collect")) if f.severity == "error"]
+        assert "its position of line 4 there" in messages[0]

@@ -81,6 +81,7 @@ pub(super) struct Early {
     /// after, silenced every later program's machine positions).
     written_before: Written,
     expression_before: u16,
+    local_before: u16,
     lost_before: bool,
 }
 
@@ -285,6 +286,17 @@ fn joined(a: Option<Span>, b: Option<Span>) -> Option<Span> {
     }
 }
 
+/// A call's tail (`... its position of line 3 there ...`) naming the position of line `line`
+/// instead: the excursion's farthest, which the value written judges.
+fn farthest_named(tail: &str, line: usize) -> String {
+    const AT: &str = "its position of line ";
+    let Some(k) = tail.find(AT).map(|k| k + AT.len()) else {
+        return tail.to_string();
+    };
+    let digits = tail[k..].bytes().take_while(u8::is_ascii_digit).count();
+    format!("{}{line}{}", &tail[..k], &tail[k + digits..])
+}
+
 impl Checker {
     /// A program read from the reset state begins (`number`, its O word at `at`): its own
     /// positions kept apart from the spans before it. Only with no shift, frame or
@@ -331,6 +343,7 @@ impl Checker {
                 std::mem::take(&mut self.offsets_written)
             },
             expression_before: std::mem::take(&mut self.g10_expression),
+            local_before: std::mem::take(&mut self.g10_local),
             // (the program before runs on into it, skip switch on: that run's writes and loss)
             lost_before: std::mem::replace(&mut self.offsets_lost, lost && self.end_skippable),
         }));
@@ -370,6 +383,7 @@ impl Checker {
         written.then(&self.offsets_written);
         self.offsets_written = written;
         self.g10_expression |= early.expression_before;
+        self.g10_local |= early.local_before;
         self.offsets_lost |= early.lost_before;
         self.hold_from = None;
     }
@@ -422,6 +436,7 @@ impl Checker {
         let mut writes = std::mem::replace(&mut self.offsets_written, early.written_before);
         // (a G10 whose L or P is an expression: another call may give it another value)
         let expression = std::mem::replace(&mut self.g10_expression, early.expression_before);
+        self.g10_local = early.local_before;
         writes.then(&Written::on_every(expression));
         let loses = std::mem::replace(&mut self.offsets_lost, early.lost_before);
         self.pending.push(Pending {
@@ -726,7 +741,7 @@ impl Checker {
         self.offset_writer(&writes, self.pending[k].body.loses);
         if self.pending[k].body.loses {
             let why = format!("{} changes the offsets", self.pending[k].body.name);
-            self.lose_offsets(line, &why);
+            self.offsets_rewritten(line, &why);
         }
     }
 
@@ -825,26 +840,90 @@ impl Checker {
         if self.found.iter().all(|f| f.pending_on.is_empty()) {
             return;
         }
-        let writers = &self.offset_writers;
-        let writes = |n: &i64, work: usize, place: usize| {
-            writers
-                .get(n)
-                .is_some_and(|(w, _)| w.value(work, place).is_some())
-        };
-        self.found.retain_mut(|f| {
+        let found = std::mem::take(&mut self.found);
+        for mut f in found {
             let numbers = std::mem::take(&mut f.pending_on);
-            let Placed::Offset { place, work, .. } = f.placed else {
-                return true;
+            let Placed::Offset {
+                place,
+                work,
+                at,
+                line,
+            } = f.placed
+            else {
+                self.found.push(f);
+                continue;
             };
-            let (work, place) = (usize::from(work), usize::from(place));
-            // (and what the programs they call, not read there either, write)
-            !numbers.iter().any(|n| {
-                writes(n, work, place)
-                    || writers
-                        .get(n)
-                        .is_some_and(|(w, _)| w.unread.iter().any(|m| writes(m, work, place)))
-            })
-        });
+            match self.written_later(&numbers, usize::from(work), usize::from(place)) {
+                // (none of them writes that offset's axis: as said)
+                None => self.found.push(f),
+                Some(value) if value.is_nan() => {}
+                Some(value) => {
+                    // (the message's tail, naming the call, kept)
+                    let tail = self
+                        .travel
+                        .of_place(usize::from(place))
+                        .and_then(|(low, high)| {
+                            let range = format!("outside the travel {low} to {high}");
+                            let k = f.message.find(&range)? + range.len();
+                            // (naming the excursion's farthest position, judged)
+                            Some(farthest_named(&f.message[k..], line))
+                        });
+                    let Some(tail) = tail else {
+                        self.found.push(f);
+                        continue;
+                    };
+                    let judged = self.rejudged(&f, (place, work, at, value), &|_| tail.clone());
+                    self.found.extend(judged);
+                }
+            }
+        }
+    }
+
+    /// The value offset G`work` (54-59) has on the axis of place `place` after the programs
+    /// `numbers` ran, called in that order where the checker had not read them
+    /// ([`Finding::pending_on`]): None where none writes it (the profile's holds), NaN where
+    /// one writes it a value not known or moves the coordinates too (a G52, G92 or frame:
+    /// the position is no longer work plus offset), or calls a program that writes it (its
+    /// order not followed); else the value the last writes. A G52 or G92 left on by a
+    /// program that writes no offset is not followed, as before (review 59a F10, c11: said,
+    /// erring on the side of the alarm) (review 59a F1: a literal `G10 L2
+    /// P2 X-200.` of an O100 written after the main that calls it before the call of O2000
+    /// runs O2000's `X-700.` at -900, as the same O100 written before the main does).
+    fn written_later(&self, numbers: &[i64], work: usize, place: usize) -> Option<f64> {
+        let writers = &self.offset_writers;
+        let mut value = None;
+        for n in numbers {
+            let Some((w, _)) = writers.get(n) else {
+                continue;
+            };
+            let mut seen = vec![*n];
+            let own = w.value(work, place);
+            if own.is_some() && w.moved
+                || w.unread
+                    .iter()
+                    .any(|m| self.touches(*m, (work, place), &mut seen))
+            {
+                return Some(f64::NAN);
+            }
+            value = own.or(value);
+        }
+        value
+    }
+
+    /// Whether the program `n` of the file, or one it calls not read there (through any
+    /// depth; `seen`: those looked at), writes offset G`work`'s axis of place `place`
+    /// (review 59a F10, c12: a G10 three calls deep).
+    fn touches(&self, n: i64, (work, place): (usize, usize), seen: &mut Vec<i64>) -> bool {
+        if seen.contains(&n) {
+            return false;
+        }
+        seen.push(n);
+        self.offset_writers.get(&n).is_some_and(|(w, _)| {
+            w.value(work, place).is_some()
+                || w.unread
+                    .iter()
+                    .any(|&m| self.touches(m, (work, place), seen))
+        })
     }
 
     /// How a body's machine position under a work offset (not a G53 one), read with the
@@ -860,7 +939,9 @@ impl Checker {
             return Now::AsRead;
         }
         match f.placed {
-            Placed::Offset { place, work, at } => {
+            Placed::Offset {
+                place, work, at, ..
+            } => {
                 match self
                     .offsets_written
                     .value(usize::from(work), usize::from(place))
@@ -887,6 +968,11 @@ impl Checker {
     ) -> Option<Finding> {
         let i = usize::from(place);
         let (low, high) = self.travel.of_place(i)?;
+        // (the excursion's farthest position's line: limits.rs, excursion_farther)
+        let line = match f.placed {
+            Placed::Offset { line, .. } => line,
+            _ => f.line,
+        };
         let machine_at = at + value;
         if (low - 1e-9..=high + 1e-9).contains(&machine_at) {
             return None;
@@ -898,7 +984,7 @@ impl Checker {
             super::round6(machine_at),
             super::round6(at),
             super::round6(value),
-            under(f.line)
+            under(line)
         );
         Some(Finding {
             message,
@@ -1500,6 +1586,12 @@ impl Checker {
                     }
                     // (judged with the value written: said here where out, kept for a
                     // later call where within)
+                    // (under a frame or shift, or one since the G10, the position is not
+                    // the work position plus the value: kept, review 59a F5)
+                    Now::Written(..) if self.offsets_written.moved || self.frames_on() => {
+                        p.positions.push(f);
+                        continue;
+                    }
                     Now::Written(place, work, at_work, value) => {
                         let said = known
                             .then(|| self.rejudged(&f, (place, work, at_work, value), &under))

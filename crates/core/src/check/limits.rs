@@ -268,6 +268,27 @@ fn plane_axes(plane: i64) -> (usize, usize) {
     }
 }
 
+/// Whether an expression reads no variable but the local ones #1-#33 (`#5`, `[#5+1]`): no
+/// common (#100, #500), system (#5221) or indirect (`#[#1]`) variable.
+fn locals_only(expression: &[u8]) -> bool {
+    let mut k = 0;
+    while let Some(at) = expression[k..].iter().position(|&c| c == b'#') {
+        let start = k + at + 1;
+        let end = expression[start..]
+            .iter()
+            .position(|c| !c.is_ascii_digit())
+            .map_or(expression.len(), |n| start + n);
+        let number = std::str::from_utf8(&expression[start..end])
+            .ok()
+            .and_then(|n| n.parse::<u32>().ok());
+        if !number.is_some_and(|n| (1..=33).contains(&n)) {
+            return false;
+        }
+        k = end;
+    }
+    true
+}
+
 /// The work offsets G54-G59 (0-5) a program's run has written before here, and what
 /// ([`Checker::offsets_written`]).
 #[derive(Clone, Debug, Default)]
@@ -282,6 +303,11 @@ pub(super) struct Written {
     /// after the call, or not in the file), whose writes are known only at the file's end
     /// ([`Finding::pending_on`]; review 58d F1).
     pub(super) unread: Vec<i64>,
+    /// The coordinates were moved other than by a G10 after it (a G52 or G92, a rotation,
+    /// scaling or mirror, a call the checker does not follow: [`Checker::lose_offsets`]): a
+    /// position is no longer the work position plus the value written, so none is judged
+    /// with it (review 59a F5: `G68 X0 Y0 R180.` runs `X-700.` at X700).
+    pub(super) moved: bool,
 }
 
 impl Written {
@@ -290,6 +316,7 @@ impl Written {
         axes: [u16::MAX; 6],
         values: [[f64::NAN; 9]; 6],
         unread: Vec::new(),
+        moved: false,
     };
 
     /// The axes `axes` (their places' bits) of every offset, the values not known.
@@ -298,6 +325,7 @@ impl Written {
             axes: [axes; 6],
             values: [[f64::NAN; 9]; 6],
             unread: Vec::new(),
+            moved: false,
         }
     }
 
@@ -308,6 +336,7 @@ impl Written {
 
     /// `later`'s writes, made after these: an axis it writes holds its value from then on.
     pub(super) fn then(&mut self, later: &Written) {
+        self.moved |= later.moved;
         for &n in &later.unread {
             if !self.unread.contains(&n) {
                 self.unread.push(n);
@@ -318,6 +347,20 @@ impl Written {
             for i in 0..9 {
                 if later.axes[g] & 1 << i != 0 {
                     self.values[g][i] = later.values[g][i];
+                }
+            }
+        }
+    }
+
+    /// The axes written of offset G54-G59 number `g` (0-5; every one where None) written
+    /// again with a value not known (a system variable's assignment, `#5241=0.`).
+    pub(super) fn unknown_again(&mut self, g: Option<usize>) {
+        for k in 0..6 {
+            if g.is_none_or(|g| g == k) {
+                for i in 0..9 {
+                    if self.axes[k] & 1 << i != 0 {
+                        self.values[k][i] = f64::NAN;
+                    }
                 }
             }
         }
@@ -397,8 +440,24 @@ impl Checker {
         }
     }
 
-    /// From here on the profile's work offsets are not the ones in force: said once, why.
+    /// From here on the profile's work offsets are not the ones in force, the coordinates
+    /// moved (a shift, a frame, a jump or call not followed...): said once, why; nor is a
+    /// position the work position plus a value a G10 wrote ([`Written::moved`]).
     pub(super) fn lose_offsets(&mut self, line: usize, why: &str) {
+        self.offsets_written.moved = true;
+        let moved = Written {
+            moved: true,
+            ..Default::default()
+        };
+        self.offset_writer(&moved, false);
+        self.offsets_rewritten(line, why);
+    }
+
+    /// [`Checker::lose_offsets`] where no frame or shift of the program in hand moved the
+    /// coordinates: a G10, a call (what a program of the file it runs moved comes with its
+    /// writes, [`Written::moved`]; what a program the checker does not read does is not
+    /// followed, as [`Checker::offsets_written`] says) or a jump.
+    pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
         if self.config.work_offsets.is_empty() || self.offsets_lost {
             return;
         }
@@ -493,7 +552,10 @@ impl Checker {
                 let mut writes = Written::default();
                 writes.axes[g] = axes;
                 writes.values[g] = [f64::NAN; 9];
+                // (after a jump, condition or loop of its program the G10 may not run, or
+                // another may run instead: review 59a F2)
                 let known = l == 2
+                    && !self.jumped
                     && !rotation
                     && !self.machine.state.incremental
                     && !self.config.diameter
@@ -519,6 +581,32 @@ impl Checker {
             (Some(2 | 20), _) => Written::on_every(axes),
             _ => Written::ALL,
         }
+    }
+
+    /// Whether a G10's L or P is a #-expression whose value here may not be the one another
+    /// run of it has (`.0`: another call may give it another value, [`Checker::g10_expression`]),
+    /// or one whose value the parameter reading knows from the program's own local variables
+    /// #1-#33 alone (`.1`: the same at every call, set in the program before the G10; only a
+    /// jump back may change it, [`Checker::g10_local`]). A local is a call's argument or the
+    /// program's own (FANUC Custom Macro B "Types of variables": #1-#33 local, cleared at each
+    /// call; a Haas's the same): known here only where the program set it (review 59a F4:
+    /// `#5=1` / `G10 L2 P#5 X0.` writes G54 where called, not every offset).
+    fn g10_expression_of(&self, b: &BlockView<'_>) -> (bool, bool) {
+        let (mut unknown, mut local) = (false, false);
+        for (k, w) in b.words.iter().enumerate() {
+            if !matches!(w.letter, b'L' | b'P') || !w.index.is_empty() || w.expression.is_empty() {
+                continue;
+            }
+            let known = !matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik)
+                && self.readable[k].is_some()
+                && locals_only(w.expression);
+            if known {
+                local = true;
+            } else {
+                unknown = true;
+            }
+        }
+        (unknown, local)
     }
 
     /// The program in hand may write work offsets G54-G59 (`writes`, after what it wrote
@@ -579,7 +667,8 @@ impl Checker {
                     51 if self.config.family != Family::Sinumerik => {
                         self.lose_offsets(line, &format!("{} mirrors the coordinates", w.token()))
                     }
-                    54..=59 => self.lose_offsets(
+                    // (another offset selected: no G54-G59 position moved, review 59a c13)
+                    54..=59 => self.offsets_rewritten(
                         line,
                         &format!("{} selects an offset the profile does not give", w.token()),
                     ),
@@ -592,17 +681,15 @@ impl Checker {
                 10 => {
                     let writes = self.g10_writes(b);
                     self.offsets_written.then(&writes);
-                    let expression = b.words.iter().any(|w| {
-                        matches!(w.letter, b'L' | b'P')
-                            && w.index.is_empty()
-                            && !w.expression.is_empty()
-                    });
+                    let (expression, local) = self.g10_expression_of(b);
                     let every = Written::on_every(writes.axes.iter().fold(0, |all, a| all | a));
                     if expression {
                         self.g10_expression |= every.axes[0];
+                    } else if local {
+                        self.g10_local |= every.axes[0];
                     }
                     self.offset_writer(if expression { &every } else { &writes }, false);
-                    self.lose_offsets(line, "G10 sets offsets");
+                    self.offsets_rewritten(line, "G10 sets offsets");
                 }
                 52 | 92 if axes => {
                     self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
@@ -657,7 +744,7 @@ impl Checker {
                     let why = format!("{} is an offset the profile does not give", w.token());
                     self.lose_offsets(line, &why);
                 }
-                154 => self.lose_offsets(
+                154 => self.offsets_rewritten(
                     line,
                     &format!("{} selects an offset the profile does not give", w.token()),
                 ),
@@ -2266,6 +2353,7 @@ impl Checker {
                             place: i as u8,
                             work: work as u8,
                             at,
+                            line,
                         };
                         if self.report_placed(message, (line, col(axis)), placed)
                             && (self.work_guessed.is_some() || self.work_run_on)
@@ -2273,6 +2361,8 @@ impl Checker {
                             self.found.last_mut().expect("said").guessed = true;
                         }
                         said_outside = true;
+                    } else if out != 0 {
+                        self.excursion_farther(i, work, (at, line), out);
                     }
                     self.outside[i] = out;
                 }
@@ -2646,6 +2736,34 @@ impl Checker {
     ) {
         let message = self.machine_message(axis, value, at, (low, high));
         self.report_placed(message, (line, column), super::Placed::Machine);
+    }
+
+    /// A position of axis place `i` under G`work` (work position `at`) beyond the travel on
+    /// the side `out` of an excursion already said: the excursion's finding (the last TG601
+    /// under that offset on that axis, not yet handed over) keeps the farthest work position,
+    /// which decides where a call judges it with a value a G10 wrote (review 59a, F7: `G0
+    /// X-700.` / `G1 X-780.` under a G55 X written 0 runs at -780, beyond; only the -700,
+    /// inside, was judged, and the excursion dropped with it).
+    #[cold]
+    #[inline(never)]
+    fn excursion_farther(&mut self, i: usize, work: i64, (at, line): (f64, usize), out: i8) {
+        let excursion = self.found.iter_mut().rev().find(|f| {
+            f.rule == Rule::TravelExceeded
+                && matches!(f.placed, super::Placed::Offset { place, .. } if usize::from(place) == i)
+        });
+        if let Some(f) = excursion {
+            if let super::Placed::Offset {
+                work: w,
+                at: first,
+                line: first_line,
+                ..
+            } = &mut f.placed
+            {
+                if i64::from(*w) == work && (at - *first) * f64::from(out) > 0.0 {
+                    (*first, *first_line) = (at, line);
+                }
+            }
+        }
     }
 
     /// TG601 of one machine position (`placed`: what it compared, kept on the finding for

@@ -370,7 +370,14 @@ pub enum Placed {
     /// The work position `at` (in the profile's units) of the axis of place `place` plus
     /// the profile's value of work offset G`work` (54-59) on that axis: at a call after a
     /// G10 that wrote that value it is judged again with the value written.
-    Offset { place: u8, work: u8, at: f64 },
+    /// `line`: the line of `at`, the farthest position of its excursion
+    /// ([`Checker::excursion_farther`]).
+    Offset {
+        place: u8,
+        work: u8,
+        at: f64,
+        line: usize,
+    },
 }
 
 // (`at` is a position read, never NaN)
@@ -1019,6 +1026,15 @@ pub struct Checker {
     /// `N10 G10 L2 P#5 X0.` / `#5=#5+1` / `IF [#5 LE 6] GOTO 10` writes G54-G59's X, not
     /// G54's only).
     g10_expression: u16,
+    /// The axes of the G10s of the program in hand whose L or P is a #-expression of its own
+    /// local variables, known where read (`#5=1` / `G10 L2 P#5 X0.`): the same at every call,
+    /// but a jump back may run it with another value: those axes of every offset written
+    /// there ([`Checker::forget_at_jump`]; review 59a F4).
+    g10_local: u16,
+    /// A jump, condition or loop statement (`GOTO`, `IF`, `WHILE`) was read in the program
+    /// in hand ([`Checker::forget_at_jump`]): a G10 after it may not run, or be passed over
+    /// by a jump while another runs, so the value it writes is not known (review 59a F2).
+    jumped: bool,
     /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
     /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
     frames: limits::Frames,
@@ -1566,6 +1582,8 @@ impl Checker {
             offsets_lost: false,
             offsets_written: limits::Written::default(),
             g10_expression: 0,
+            g10_local: 0,
+            jumped: false,
             frames: limits::Frames::default(),
             noted: 0,
             mode_lost_codes: None,
@@ -2341,7 +2359,7 @@ impl Checker {
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
-                self.lose_offsets(b.line, "a jump or call the checker does not follow");
+                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
             }
             return;
         }
@@ -2718,7 +2736,7 @@ impl Checker {
             self.linuxcnc_rate = None;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
-            self.lose_offsets(b.line, "a jump or call the checker does not follow");
+            self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left

@@ -1483,9 +1483,45 @@ impl Checker {
         self.assignments_of(b);
     }
 
+    /// A work offset's system variable set after a G10 wrote that offset (FANUC Custom
+    /// Macro B, "System variables": #5201-#5206 the external offset, #5221-#5326 G54-G59,
+    /// twenty a system from #5221, its axes in order; a Haas's the same numbers, Mill
+    /// Operator's Manual, Macro Variables Table; LinuxCNC's numbered parameters likewise):
+    /// the offset's value is no longer the one the G10 wrote, and not followed here
+    /// ([`Checker::offsets_written`]: review 59a F11, `G10 L2 P2 X-200.` / `#5241=0.`). The
+    /// axis a number names depends on the machine's axis order: every axis of that offset
+    /// written before is taken as not known, as is every offset for the external one or for
+    /// a variable chosen by a value (`#[#1]=`).
+    #[cold]
+    fn offset_variables(&mut self, b: &BlockView<'_>) {
+        for w in b.words {
+            if w.address != b'#' {
+                continue;
+            }
+            let number = std::str::from_utf8(w.index)
+                .ok()
+                .and_then(|n| n.parse::<u32>().ok());
+            let g = match number {
+                Some(5201..=5206) => None,
+                Some(n @ 5221..=5326) => Some((n - 5221) as usize / 20),
+                None if w.index.is_empty() => None,
+                _ => continue,
+            };
+            self.offsets_written.unknown_again(g);
+            // (and where a call the checker does not follow runs the program in hand)
+            let n = self.in_hand;
+            if let Some(entry) = n.and_then(|n| self.offset_writers.get_mut(&n)) {
+                entry.0.unknown_again(g);
+            }
+        }
+    }
+
     /// [`Checker::assignments`] of a block with a `#` word or an indexed one.
     #[inline(never)]
     fn assignments_of(&mut self, b: &BlockView<'_>) {
+        if self.offsets_written.any() {
+            self.offset_variables(b);
+        }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
         // 3.0, 3.2.1; review 48 F15: `#1=-900 #3=#1` copies the old #1): those set by an
         // earlier word of the line, by key, their values before it, known and at the arrival

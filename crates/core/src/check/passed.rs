@@ -202,8 +202,10 @@ impl Checker {
     /// A G10 before it whose L or P is a #-expression may run again with another value
     /// where the jump goes back: its axes of every offset written ([`Checker::g10_expression`]).
     pub(super) fn forget_at_jump(&mut self, b: &BlockView<'_>, calls: bool) {
-        if self.g10_expression != 0 && !calls && self.forward_jump(b).is_none() {
-            let every = super::limits::Written::on_every(self.g10_expression);
+        self.jumped |= !calls;
+        let expression = self.g10_expression | self.g10_local;
+        if expression != 0 && !calls && self.forward_jump(b).is_none() {
+            let every = super::limits::Written::on_every(expression);
             self.offsets_written.then(&every);
         }
         let kept = !calls && self.machine.feed_never_set() && self.goto_only(b);
@@ -414,6 +416,11 @@ impl Checker {
         self.radius_arc = run.radius_arc;
         self.work = run.work;
         self.offsets_lost = run.offsets_lost;
+        // (a G10 passed over writes nothing: review 59a F2)
+        self.offsets_written = run.offsets_written;
+        self.g10_expression = run.g10_expression;
+        self.g10_local = run.g10_local;
+        self.offset_writers = run.offset_writers;
         self.frames = run.frames;
         self.noted = run.noted;
         self.mode_lost_codes = run.mode_lost_codes;

@@ -302,6 +302,7 @@ impl Checker {
         // here (Fanuc's GOTOn searches the sequence number in the program it runs)
         self.goto_targets.clear();
         self.goto_computed = false;
+        self.jumped = false;
         self.goto_names.clear();
         self.arrival = None;
         self.jumps_pending.clear();
@@ -391,7 +392,7 @@ impl Checker {
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
             if loses {
-                self.lose_offsets(b.line, &format!("O{number:04} changes the offsets"));
+                self.offsets_rewritten(b.line, &format!("O{number:04} changes the offsets"));
             }
         } else if !self.file_programs.contains(&number) {
             // (a program not read yet: what it writes is known at the file's end)
@@ -550,6 +551,7 @@ impl Checker {
         if !self.end_skippable {
             self.offsets_written = Default::default();
             self.g10_expression = 0;
+            self.g10_local = 0;
         }
         self.shifts.calls = super::limits::CallShifts::None;
         let number = b

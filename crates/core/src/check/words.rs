@@ -50,7 +50,7 @@ impl Checker {
         self.machine.forget();
         self.params.clear();
         self.motion_unknown = true;
-        self.lose_offsets(line, "a jump or call the checker does not follow");
+        self.offsets_rewritten(line, "a jump or call the checker does not follow");
     }
 
     /// TG140, once per file: the first jump, loop or call the checker cannot follow (a
