@@ -1479,7 +1479,8 @@ impl Checker {
     /// axes it names are at their start. A move whose motion is not known (`ran` 0) may be
     /// either: the axes it names are unsure. Run after the block's rules, so that its own
     /// limits and statistics read the cycle's bottom. `rs274 -g`: `G0 Z2` / `G81 X0 Z0 R1` /
-    /// `G38.2 Z0` probes from Z1 (review 58c, F4).
+    /// `G38.2 Z0` probes from Z1 (review 58c, F4). A G73 or G74, whose R the modal state does
+    /// not keep on LinuxCNC, leaves the axis unsure (review 59b, F6: left open).
     #[cold]
     #[inline(never)]
     pub(super) fn linuxcnc_cycle_end(&mut self, ran: i64, start: &Before) {
