@@ -1215,3 +1215,62 @@ def test_a_zero_rate_saved_and_in_force_across_a_units_change_is_zero_after_m72(
 def test_a_rate_saved_before_a_units_change_is_not_known_after_m72(tmp_path):
     # (F100 saved, F100 converted by G20: the restore's F is not followed)
     clean_on_both(tmp_path, program("G94 F100\nM70\nG20\nM72\nG1 X1"))
+
+
+# G98's clearance is where the axis stood before the series of back-to-back cycles, a number
+# rs274 keeps: a G92 or G92.1 inside the series does not move it (review 59b, F1). (the blocks
+# after HEAD)
+CYCLE_SERIES_RUNS = [
+    # the retract goes to Z5, the series' start: the probe from Z5 to Z1 runs
+    "G0 Z5\nG98 G81 X1 Z-1 R1\nG92 Z0\nG81 X2 Z-1 R1\nG80\nG38.2 Z1",
+    # to Z0 in the coordinates before the G92: Z5 after it, the probe to Z-4 runs
+    "G0 Z0\nG98 G81 X1 Z-1 R1\nG92 Z-5\nG81 X2 Z-8 R-4\nG80\nG38.2 Z-4",
+    # G81 then G82 is one series, M8/M9 between do not end it
+    "G0 Z5\nG98 G81 X1 Z-1 R1\nM8\nG92 Z0\nM9\nG82 X2 Z-1 R1 P0.1\nG80\nG0 X3\nG38.2 Z1",
+    "G0 Z0\nG98 G81 X1 Z-1 R1\nG92.1\nG92 Z-5\nG81 X2 Z-8 R-4\nG80\nG38.2 Z-4",
+]
+
+CYCLE_SERIES_REFUSED = [
+    # the series starts at Z0, below R: both cycles end at R1
+    ("G98 G81 X1 Z-1 R1\nG82 X2 Z-1 R1 P0.1\nG80\nG38.2 Z1", 6, 1),
+    ("G98 G81 X1 Z-1 R1\nM8\nG81 X2 Z-2 R1\nG80\nG38.2 Z1", 7, 1),
+]
+
+
+@pytest.mark.parametrize("body", CYCLE_SERIES_RUNS)
+def test_g98_s_level_inside_a_series_is_the_series_start_kept_through_a_g92(tmp_path, body):
+    clean_on_both(tmp_path, program(body))
+
+
+@pytest.mark.parametrize("body, line, column", CYCLE_SERIES_REFUSED)
+def test_a_probe_to_a_series_clearance_level_is_refused(tmp_path, body, line, column):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert "Start point too close to probe point" in found[0].message
+    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+
+
+# A surely dropped M72 block (the feed mode differs: the restore's block runs in its place):
+# its plane and compensation codes never take effect, the restore's plane and compensation
+# stay known, and a canned cycle in force before it stays in force (review 59b, F3, F2).
+# (the blocks after HEAD; the rule, line, column; rs274's message)
+M72_SURE_DROP_REFUSED = [
+    ("M70\nG93\nM72 G17\nG2 X1 Y0 I0.5 K0 F10", "TG404", 6, 15,
+     "K word given for arc in xy plane"),
+    ("M70\nG93\nM72 G18\nG94 G2 X1 Y0 I0.5 K0 F10", "TG404", 6, 19,
+     "K word given for arc in xy plane"),
+    ("G41.1 D0.1\nG1 X1\nM70\nG93\nM72 G40\nG94 G81 X1 Z-1 R1 F10", "TG412", 8, 1,
+     "Cannot use canned cycles with cutter compensation on"),
+    ("G81 X1 Z-1 R1\nM70\nG93\nM72 G1 X2\nX3", "TG412", 7, 1,
+     "Cannot feed with zero feed rate"),
+]
+
+
+@pytest.mark.parametrize("body, rule, line, column, message", M72_SURE_DROP_REFUSED)
+def test_a_surely_dropped_m72_block_leaves_the_plane_compensation_and_cycle_before_it(
+        tmp_path, body, rule, line, column, message):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
+    assert message in rs274_output(tmp_path, text)

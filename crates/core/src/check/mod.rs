@@ -1127,6 +1127,14 @@ pub struct Checker {
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
+    /// LinuxCNC: where the series of back-to-back canned cycles in force started on the
+    /// cycle's axis (its index in X Y Z, and the point), where known exactly in the
+    /// coordinates in force; None where not known, or where a code changed the coordinates
+    /// since (`Checker::linuxcnc_cycle_end`: G98's clearance is that number).
+    linuxcnc_series_start: Option<(usize, Dec)>,
+    /// LinuxCNC: the cycle the block runs starts a series (the motion mode before it is no
+    /// canned cycle's and is known).
+    linuxcnc_series_first: bool,
     /// LinuxCNC: the block ran a canned cycle or a rigid tap (its motion in tenths: G73, G74,
     /// G81-G89, G33.1), or a move whose motion is not known (0), which may be one: where it
     /// leaves the tool is set after the block's rules (`Checker::linuxcnc_cycle_end`).
@@ -1158,6 +1166,9 @@ pub struct Checker {
     /// mode before it: the block's own motion, plane and compensation codes do not take effect
     /// where rs274 drops it (`Checker::linuxcnc_m72_motion_back`).
     linuxcnc_m72_motion: Option<structure::M72Dropped>,
+    /// LinuxCNC: the canned cycle in force before the block in hand, kept where a save is
+    /// followed and the block has an M word (`structure::M72Cycle`).
+    linuxcnc_m72_cycle: Option<structure::M72Cycle>,
     /// LinuxCNC: the NURBS control points rs274ngc holds ([`tooling::Nurbs`]).
     linuxcnc_nurbs: tooling::Nurbs,
     /// LinuxCNC: the X and Y of the NURBS list's last control point, where a G5.2 block of
@@ -1681,6 +1692,9 @@ impl Checker {
             linuxcnc_point_unsure: 0,
             linuxcnc_double: Default::default(),
             linuxcnc_cycle_bottom: None,
+            linuxcnc_series_start: None,
+            linuxcnc_m72_cycle: None,
+            linuxcnc_series_first: false,
             linuxcnc_cycle_ran: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
@@ -2626,6 +2640,16 @@ impl Checker {
         // (and one after a block delete `/`, which the switch may pass over)
         self.values.end_unsure =
             self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
+        // (LinuxCNC: the cycle an M72's dropped block leaves in force; rare)
+        if self.linuxcnc_feed_saved.is_some() && self.letters & bit(b'M') != 0 {
+            let state = &self.machine.state;
+            self.linuxcnc_m72_cycle = Some(structure::M72Cycle {
+                motion: state.motion,
+                cycle: state.cycle,
+                words: state.cycle_words,
+                bottom: self.linuxcnc_cycle_bottom,
+            });
+        }
         self.machine.apply_taken(&self.values, taken);
         // (one test of the two flags on a plain block: both are seldom set)
         if self.units_unknown | self.early_on {

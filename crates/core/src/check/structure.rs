@@ -3087,7 +3087,9 @@ impl Checker {
                 }
                 if dropped != Some(false) {
                     self.linuxcnc_m72_dropped = Some(self.stats.blocks);
-                    self.linuxcnc_m72_motion_dropped(b, before, dropped == Some(true));
+                    let restored = (dropped == Some(true))
+                        .then(|| (self.linuxcnc_plane_saved, kept.and_then(|s| s.compensation)));
+                    self.linuxcnc_m72_motion_dropped(b, before, restored);
                 }
                 // (a G93 move of the block, where it may run: its length times F)
                 if saved.is_some()
@@ -3204,8 +3206,9 @@ impl Checker {
         &mut self,
         b: &BlockView<'_>,
         before: &super::Before,
-        surely: bool,
+        restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     ) {
+        let surely = restored.is_some();
         // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
         // G40-G42.1, read as written)
         let (mut plane, mut compensation) = (false, false);
@@ -3223,7 +3226,8 @@ impl Checker {
         }
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
-            surely,
+            cycle: self.linuxcnc_m72_cycle.take(),
+            restored,
             plane,
             compensation,
         });
@@ -3244,28 +3248,47 @@ impl Checker {
         }
     }
 
-    /// The motion mode after a block whose M72 may be dropped (`motion`, the mode before it;
-    /// `surely`, the drop sure), run after the block's rules: rs274 2.9.0 runs the restore's
-    /// block in place of the M72's, so the block's own motion code never takes effect (review
-    /// 58c, F7: `M70` / `G93` / `M72 G1 X1` / `X2` traverses to X2 in `rs274 -g`, G0 still in
-    /// force). Where the drop is sure and the mode before is G0-G3 or none, that mode is back;
-    /// where the drop is only possible, or the mode before was another (a cycle's, whose
-    /// words the block's code cleared), the mode after is not known, as after a call: no
-    /// motion is judged by it (TG401, TG411) until a motion code.
+    /// The motion mode, plane and compensation after a block whose M72 may be dropped
+    /// ([`M72Dropped`]), run after the block's rules: rs274 2.9.0 runs the restore's block in
+    /// place of the M72's, so the block's own motion code never takes effect (review 58c, F7:
+    /// `M70` / `G93` / `M72 G1 X1` / `X2` traverses to X2 in `rs274 -g`, G0 still in force).
+    /// Where the drop is sure and the mode before is G0-G3 or none, that mode is back, and
+    /// where it was a canned cycle, the cycle with its words (review 59b, F2); where the drop
+    /// is only possible, or the mode before was another, the mode after is not known, as after
+    /// a call: no motion is judged by it (TG401, TG411) until a motion code.
     #[cold]
     #[inline(never)]
     pub(super) fn linuxcnc_m72_motion_back(&mut self, dropped: M72Dropped) {
         use super::tooling::LinuxCncMotion;
         // (the block's plane and compensation codes do not take effect where rs274 drops
-        // it, the restore's do: neither followed here, both not known after it; review 58c,
-        // F6: `F10` / `M70` / `G93` / `M72 G18` / `G2 X1 Y0 I0.5 J0` runs in G17)
+        // it, the restore's do: where the drop is sure, the plane and compensation the save
+        // took, as the restore writes them (review 59b, F3: `F10` / `M70` / `G93` / `M72 G17`
+        // / `G2 X1 Y0 I0.5 K0` is "K word given for arc in xy plane"); where it is only
+        // possible, not known after it (review 58c, F6: `F10` / `M70` / `F[#<_x>+10]` / `M72
+        // G18` / `G2 X1 Y0 I0.5 J0` may run in G17)
         if dropped.plane {
-            self.linuxcnc_plane_unknown = true;
+            match dropped.restored {
+                Some((at, _)) => self.linuxcnc_plane_set(at),
+                None => self.linuxcnc_plane_unknown = true,
+            }
         }
         if dropped.compensation {
-            self.linuxcnc_compensation_unknown = true;
+            match dropped.restored.and_then(|(_, c)| c) {
+                Some((compensation, dynamic)) => {
+                    self.machine.state.compensation = compensation;
+                    self.linuxcnc_dynamic_compensation = dynamic;
+                    self.linuxcnc_compensation_unknown = false;
+                }
+                None => self.linuxcnc_compensation_unknown = true,
+            }
         }
-        let M72Dropped { motion, surely, .. } = dropped;
+        let M72Dropped {
+            motion,
+            cycle,
+            restored,
+            ..
+        } = dropped;
+        let surely = restored.is_some();
         if self.linuxcnc_motion == motion {
             return;
         }
@@ -3274,6 +3297,23 @@ impl Checker {
             LinuxCncMotion::Known(Some(m @ (0 | 10 | 20 | 30))) => Some(Some(m / 10)),
             _ => None,
         };
+        // (a canned cycle in force before a surely dropped block stays in force with its
+        // words: review 59b, F2, `F10` / `G81 X1 Z-1 R1` / `M70` / `G93` / `M72 G1 X2` / `X3`
+        // is "Cannot feed with zero feed rate" at `X3`)
+        let cycle = cycle.filter(|c| {
+            surely
+                && matches!(motion, LinuxCncMotion::Known(Some(730 | 740 | 810..=890)))
+                && c.cycle.is_some()
+        });
+        if let Some(c) = cycle {
+            self.linuxcnc_motion = motion;
+            let state = &mut self.machine.state;
+            state.motion = c.motion;
+            state.cycle = c.cycle;
+            state.cycle_words = c.words;
+            self.linuxcnc_cycle_bottom = c.bottom;
+            return;
+        }
         match modal.filter(|_| surely) {
             Some(back) => {
                 self.linuxcnc_motion = motion;
@@ -5145,15 +5185,28 @@ impl LooseSaved {
 }
 
 /// LinuxCNC: a block whose M72 rs274 may drop, the restore's block running in its place
-/// ([`Checker::linuxcnc_m72_motion_back`]): the motion mode before it, whether the drop is
-/// sure, and whether the block writes a plane (G17-G19.1) or a cutter compensation code
-/// (G40-G42.1), none of which takes effect where it is dropped.
+/// ([`Checker::linuxcnc_m72_motion_back`]): the motion mode before it, the canned cycle
+/// before it, where the drop is sure the plane and compensation the restore writes (None:
+/// the drop only possible), and whether the block writes a plane (G17-G19.1) or a cutter
+/// compensation code (G40-G42.1), none of which takes effect where it is dropped.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct M72Dropped {
     pub(super) motion: super::tooling::LinuxCncMotion,
-    pub(super) surely: bool,
+    pub(super) cycle: Option<M72Cycle>,
+    pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
+}
+
+/// LinuxCNC: the canned cycle in force before a block with an M72 while a save is followed
+/// (the modal state's motion, cycle and cycle words, and the cycle's bottom outside the XY
+/// plane), kept before the block's codes apply: a surely dropped block leaves it in force.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct M72Cycle {
+    pub(super) motion: Option<i64>,
+    pub(super) cycle: Option<i64>,
+    pub(super) words: [Option<Dec>; 5],
+    pub(super) bottom: Option<Dec>,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed

@@ -838,6 +838,9 @@ impl Checker {
         }
         if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
+            // (G98's clearance is a number rs274 keeps from the series' start, in the
+            // coordinates then in force)
+            self.linuxcnc_series_start = None;
         }
         // a block whose axis words are data, or a home, or machine coordinates (G10, G28,
         // G30, G52, G53, G92), or a tool's offsets (G43.1), or whose codes are unknown, ends
@@ -1097,6 +1100,16 @@ impl Checker {
         }
         // where the block's cycle or rigid tap leaves the tool, set after the block's rules
         // (`Checker::linuxcnc_cycle_end`); a move whose motion is not known may be one
+        if runs.is_some_and(|m| m == 730 || m == 740 || (810..=890).contains(&m)) {
+            self.linuxcnc_series_first = match before {
+                LinuxCncMotion::Known(Some(730 | 740 | 810..=890)) => false,
+                LinuxCncMotion::Known(_) => true,
+                LinuxCncMotion::Unknown => {
+                    self.linuxcnc_series_start = None;
+                    false
+                }
+            };
+        }
         self.linuxcnc_cycle_ran = match runs {
             Some(m @ (331 | 730 | 740 | 810..=890)) => Some(m),
             _ if motion_in_doubt && !facts.moved().is_empty() => Some(0),
@@ -1452,16 +1465,22 @@ impl Checker {
     /// takes as the point its words give. A canned cycle (G73, G74, G81-G89) ends at its
     /// clearance level on the plane's normal axis (Z in G17, Y in G18, X in G19): under G99
     /// the R level, under G98 the higher of the R level and where the axis was before the
-    /// block (LinuxCNC G-code reference, "Canned cycles" and "G98, G99"; interp_cycles.cc:
-    /// R is an increment from that point under G91). Where that point is at or below R both
-    /// modes give R; above it, the level depends on the retract mode, which the checker does
+    /// series of back-to-back cycles the block is part of (LinuxCNC G-code reference, "G98,
+    /// G99": "the position before this series of one or more contiguous canned cycles";
+    /// `rs274 -g` keeps it as a number: G81 then G82 without G80 is one series, and a G92
+    /// inside it does not move that number; review 59b, F1). Where the block starts a series
+    /// that point is its start; inside one, the series' start where known exactly and no
+    /// code changed the coordinates since (`linuxcnc_series_start`), else not known
+    /// (interp_cycles.cc: R is an increment from the block's start under G91). Where that
+    /// point is at or below R both modes give R; above it, the level depends on the retract mode, which the checker does
     /// not follow through calls and restores: the axis is then unsure, as it is under G91
     /// (rs274's double sums) or where R or the start is not known. A rigid tap (G33.1) goes to
     /// its end and back to where it started (G-code reference, "G33.1 Rigid Tapping"): the
     /// axes it names are at their start. A move whose motion is not known (`ran` 0) may be
     /// either: the axes it names are unsure. Run after the block's rules, so that its own
     /// limits and statistics read the cycle's bottom. `rs274 -g`: `G0 Z2` / `G81 X0 Z0 R1` /
-    /// `G38.2 Z0` probes from Z1 (review 58c, F4).
+    /// `G38.2 Z0` probes from Z1 (review 58c, F4). A G73 or G74, whose R the modal state does
+    /// not keep on LinuxCNC, leaves the axis unsure (review 59b, F6: left open).
     #[cold]
     #[inline(never)]
     pub(super) fn linuxcnc_cycle_end(&mut self, ran: i64, start: &Before) {
@@ -1469,6 +1488,7 @@ impl Checker {
         let named = (self.values.given() | self.values.unknown) & xyz;
         if ran == 0 {
             self.linuxcnc_point_unsure |= named;
+            self.linuxcnc_series_start = None;
             return;
         }
         // (the point of an axis before the block, where it was known exactly)
@@ -1496,6 +1516,7 @@ impl Checker {
         }
         if self.linuxcnc_plane_unknown || self.linuxcnc_uvw_plane {
             self.linuxcnc_point_unsure |= xyz;
+            self.linuxcnc_series_start = None;
             return;
         }
         let (axis, _) = cycle_axis(state.plane);
@@ -1504,9 +1525,19 @@ impl Checker {
             b'Y' => 1,
             _ => 2,
         };
+        // (the series' start: this block's where it starts one, else the one kept)
+        let old = if self.linuxcnc_series_first {
+            let old = known(axis);
+            self.linuxcnc_series_start = old.map(|z| (k, z));
+            old
+        } else {
+            self.linuxcnc_series_start
+                .filter(|&(at, _)| at == k)
+                .map(|(_, z)| z)
+        };
         let r = state.cycle_words[0]
             .filter(|_| !state.incremental && self.values.unknown & bit(b'R') == 0);
-        match (known(axis), r) {
+        match (old, r) {
             (Some(old), Some(r)) if old <= r => {
                 state.position[k] = Some(r);
                 state.unknown &= !bit(axis);
