@@ -1265,27 +1265,6 @@ def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profil
     assert found == [("TG208", 5, "warning")]
 
 
-def test_a_live_tool_drilling_cycle_after_a_thread_repeats_with_its_peck():
-    """Review 59c F1: after a G92 thread, a Haas lathe's G243 (radial peck drilling, a cycle
-    the modal state does not model) leaves G92 in group 01; its repeats' Q is the peck, as
-    the converter reads it, no thread's start angle (TG208 said `Q0.15` read 0.15 deg). After
-    G80 a plain Q is the thread's pass again."""
-    from formats.convert import ConvertOptions, convert_text
-    text = ("%\nO1\nG20 G99\nG00 X1.2 Z0.2\nG92 X0.95 Z-0.8 F0.0625 Q0\n"
-            "G243 C0 X1.0 Z-0.3 R0.1 Q0.1 F0.004\nX0.8 Q0.15\nZ-0.4 Q0.05\nG80\n"
-            "X0.87 Q{}\nG00 X1.2 Z0.2\nM30\n%\n")
-    profile = load_profile("haas-lathe")
-    found = [(f.rule, f.line) for f in check_text(text.format("45000"), profile)
-             if f.rule in ("TG208", "TG205")]
-    assert found == []
-    out, _ = convert_text(text.format("45000"),
-                          ConvertOptions(target=profile, source=profile, units="metric"))
-    assert out.splitlines()[6:10] == ["X20.32 Q3.81", "Z-10.16 Q1.27", "G80", "X22.098 Q45000"]
-    found = [(f.rule, f.line) for f in check_text(text.format("45."), profile)
-             if f.rule == "TG208"]
-    assert found == [("TG208", 10)]
-
-
 def _tg118(text: str, profile: str) -> list[tuple[int, int]]:
     return [(f.line, f.column) for f in check_text(text, load_profile(profile))
             if f.rule == "TG118"]

@@ -2816,9 +2816,7 @@ impl Checker {
         let codes = self.letters & (bit(b'G') | bit(b'M')) != 0;
         // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
         // G81): its words mean what the cycle's do
-        // (not a G92 thread left in group 01 under a cycle the state does not model:
-        // `Checker::code_in_force`, off the path of a block of G00-G03)
-        let cycle = in_force.filter(|_| !(self.config.modal.fanuc_lathe && self.cycle_unmodelled));
+        let cycle = in_force;
         if !codes && cycle.is_none() {
             return None; // no code gives a word a meaning
         }
@@ -2840,22 +2838,8 @@ impl Checker {
         let control = (self.config.family, self.config.haas);
         let words = b.words.iter().map(|w| (w.letter, w.number));
         let modal = &self.config.modal;
-        crate::convert::block_meanings(modal, control, self.code_in_force(), words)
-    }
-
-    /// The code a block of words alone repeats ([`crate::modal::ModalState::code_in_force`]),
-    /// none under a canned cycle the modal state does not model (`cycle_unmodelled`: a Haas
-    /// lathe's G241-G249 after a G92 thread leaves G92 in group 01, and its repeats' Q is the
-    /// cycle's peck, no thread's start angle; review 59c F1: TG208 on `X0.8 Q0.15` after a
-    /// G243)
-    #[inline]
-    fn code_in_force(&self) -> Option<i64> {
-        let lathe = self.config.modal.fanuc_lathe;
-        let code = self.machine.state.code_in_force(lathe);
-        if lathe && self.cycle_unmodelled {
-            return None;
-        }
-        code
+        let cycle = self.machine.state.code_in_force(modal.fanuc_lathe);
+        crate::convert::block_meanings(modal, control, cycle, words)
     }
 
     /// The units a block's lengths and its feed are in, and whether its feed is per
