@@ -111,6 +111,51 @@ def test_a_lathe_conversion_with_increments_verifies(tmp_path):
     assert "verified" in result.output
 
 
+@pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
+def test_a_thread_written_with_increments_carries_its_rounding_and_verifies(tmp_path, source):
+    """Review 59c F7: a G32's U W are the end point's increments, as a G01's (FANUC 0i-TF,
+    "Thread cutting G32"): their rounding is carried on X Z (`W-0.7875` from Z0.1969 ends at
+    -15 mm within half a step, as G01's), and --verify reads them as moves; a thread
+    written with W failed it ("then position Z -15 mm -> -14.9987 mm") under any change of
+    units."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    text = ("%\nO1\nG21 G99\nG00 X30. Z5.\nG32 W-20. F1.5\nG00 X30. Z5.\nG32 U-1. W-20.\n"
+            "W-5.\nG00 X30. Z5.\nG01 W-20. F0.2\nM30\n%\n")
+    out = convert(text, source, units="inch").splitlines()
+    assert [line.split(" F")[0] for line in out[4:10]] == [
+        "G32 W-0.7875", "G00 X1.1811 Z0.1969", "G32 U-0.0394 W-0.7875", "W-0.1968",
+        "G00 X1.1811 Z0.1969", "G01 W-0.7875"]
+    for units, program in (("inch", text), ("metric", "\n".join(out) + "\n")):
+        src, dst = tmp_path / f"{units}.nc", tmp_path / f"{units}.out.nc"
+        src.write_text(program)
+        result = CliRunner().invoke(main, ["convert", str(src), "-o", str(dst), "--from",
+                                           source, "--to", source, "--units", units,
+                                           "--verify"])
+        assert result.exit_code == 0, result.output
+        assert "verified" in result.output and "FAILED" not in result.output
+
+
+def test_a_lathe_s_peck_rigid_tapping_q_converts_as_g83_s():
+    """Review 59c F3: a FANUC lathe's G84/G88 Q (peck rigid tapping, 0i-TF: the depth of
+    each peck, in least input increments without a point) was kept as written under a change
+    of units, and --verify said "verified"; converted as G83's Q now, in the repeat too. A
+    Haas lathe's G84 reads no Q: refused under a change of units, not guessed."""
+    text = ("%\nO1\nG21 G99\nG00 X0 Z5.\nM29 S500\nG84 X0 Z-10. R1. Q3000 F1.\n"
+            "Z-12. Q2000\nG80\nM29 S500\nG88 X20. C0 Z-10. R22. Q3. F1.\nG80\nM30\n%\n")
+    out = convert(text, "fanuc-lathe", units="inch").splitlines()
+    assert [out[5], out[6], out[9]] == [
+        "G84 X0 Z-0.3937 R0.0394 Q1181 F0.0394", "Z-0.4724 Q787",
+        "G88 X0.7874 C0 Z-0.3937 R0.8661 Q0.1181 F0.0394"]
+    # no change of units: as written
+    assert convert(text, "fanuc-lathe").splitlines()[5] == "G84 X0 Z-10. R1. Q3000 F1."
+    with pytest.raises(ConversionError) as err:
+        convert(text, "haas-lathe", units="inch")
+    assert (err.value.line, err.value.column) == (6, 18)
+    assert "does not say what Q is in this block" in str(err.value)
+
+
 @pytest.mark.parametrize("text, why", [
     ("O1\nG21 G90\nG0 X0 Y0 Z0\nM98 P2 L20\nM30\nO2\nG91 G1 Z-1. F100.\nM99\n",
      "line 7: the incremental move Z-1. is rounded to the target's format, and the subprogram "

@@ -521,6 +521,38 @@ def test_a_pointed_dwell_p_steps_by_a_millisecond(tmp_path, name, body, line, mi
     assert (found == []) == milliseconds
 
 
+# a dwell whose letter's format is a whole number's, read whole without a point: an Okuma's
+# P (seconds), a CM332's F, a SINUMERIK's S (revolutions)
+WHOLE_DWELLS = [
+    ("okuma-mill", "G21 G90\nG04 P{}\n", "P"),
+    ("okuma-lathe", "G21 G90\nG04 P{}\n", "P"),
+    ("cm332-quadrant", "G21 G90\nG04 F{}\n", "F"),
+    ("sinumerik-840d", "G71 G90\nG4 S{}\n", "S"),
+]
+
+
+@pytest.mark.parametrize(("name", "body", "letter"), WHOLE_DWELLS)
+def test_a_dwell_pointed_on_one_side_only_differs_in_both_orders(tmp_path, name, body, letter):
+    """Review 59c F4: a pair was stepped by its second word alone, so `P5.4` against `P5`
+    was 0.4 steps of a second (the same program at `--tolerance 0.5`) and `P5` against
+    `P5.4` 400 steps; an unpointed time of a whole-number format steps by the millisecond
+    too, so the 0.4 s (or revolutions) is 400 steps either way, and `P5` against `P6` 1000."""
+    profile = load_profile(name)
+    pointed = write(tmp_path, "a.nc", body.format("5.4"))
+    whole = write(tmp_path, "b.nc", body.format("5"))
+    for one, two, said in ((pointed, whole, "5.4 -> {0}5 (-0.4, -400 steps)"),
+                           (whole, pointed, "5 -> {0}5.4 (+0.4, +400 steps)")):
+        found, _ = differences(one, two, profile, profile, tolerance=HALF)
+        assert [(d.a.line, d.details()) for d in found] == [
+            (2, [letter + said.format(letter)])]
+    found, _ = differences(whole, write(tmp_path, "c.nc", body.format("6")), profile, profile,
+                           tolerance=HALF)
+    assert [[c.steps for c in d.words] for d in found] == [[1000]]
+    found, _ = differences(whole, write(tmp_path, "d.nc", body.format("5.")), profile, profile,
+                           tolerance=HALF)
+    assert found == []
+
+
 @pytest.mark.parametrize(("profile", "body", "a", "b", "said"), COUNTS)
 def test_a_cycle_word_that_counts_stays_exact(tmp_path, profile, body, a, b, said):
     """Issue 32: a count of the same tables (K repeats, G71's P Q block numbers, FANUC G76's

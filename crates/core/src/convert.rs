@@ -3227,12 +3227,17 @@ impl Converter {
             self.cycle[slot(radius)] = Some(role);
         }
         if self.c.lathe && self.c.family == Family::MacroB {
-            // the motion codes of a Fanuc/Haas lathe (system A): G00-G03 move by U W; G32-G34
-            // threading, G90/G92/G94 turning cycles, G70-G76 and G80-G89 cycles do not
+            // the motion codes of a Fanuc/Haas lathe (system A): G00-G03 and G32/G34
+            // threading move by U W, the end point's increment (FANUC 0i-TF, "Thread cutting
+            // G32": the tool cuts to the end point and stays there), their rounding carried as
+            // a G01's (review 59c F7: `G32 W-20.` in inch failed --verify by 0.00004 mm);
+            // G90/G92/G94 turning cycles, G70-G76 and G80-G89 cycles do not (their tool
+            // returns to the start point), as the checker reads them
+            // (`ModalMachine::g_other`)
             for &g in &gs {
                 match g {
-                    0..=3 => self.uw_moves = true,
-                    32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    0..=3 | 32 | 34 => self.uw_moves = true,
+                    33 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
                     _ => {}
                 }
             }
@@ -8676,6 +8681,25 @@ fn cycle_table(
                 // without a point a count of least input increments as in G74 (`Q5000`: 5 mm),
                 // with one the length it writes (Haas `Q0.1`)
                 set(b"Q", if has_point(b'Q') { length } else { increments });
+                set(b"P", number); // the dwell
+                measure(b"P");
+            }
+            84 | 88 if lathe && family == Family::MacroB => {
+                // a FANUC lathe's face and side tapping: with peck rigid tapping (0i-TF,
+                // "Peck rigid tapping cycle (G84 or G88)", parameter PCT No. 5200#5) Q is the
+                // depth of each peck, read as G83's (review 59c F3: kept unconverted under a
+                // change of units, "verified"); a Haas lathe's G84 reads no Q (Haas lathe
+                // operator's manual, G84), so there, or where the control is not known, Q
+                // is refused under a change of units rather than guessed
+                let peck = if has_point(b'Q') { length } else { increments };
+                set(
+                    b"Q",
+                    if haas == Some(false) {
+                        peck
+                    } else {
+                        Role::Parameter
+                    },
+                );
                 set(b"P", number); // the dwell
                 measure(b"P");
             }

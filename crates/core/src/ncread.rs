@@ -465,9 +465,11 @@ impl Reader {
                 _ => {}
             }
             if self.settings.fanuc_lathe {
+                // (G32/G34 threading moves by U W as G01 does, the checker's
+                // `ModalMachine::g_other`: review 59c F7)
                 match g {
-                    0..=3 => self.uw_moves = true,
-                    32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    0..=3 | 32 | 34 => self.uw_moves = true,
+                    33 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
                     _ => {}
                 }
             } else if self.settings.lathe && self.settings.family == Family::Okuma {
@@ -1245,10 +1247,17 @@ impl Reader {
             // FANUC's or Haas's P05, the milliseconds of a P without its point, an Okuma's
             // P05. It steps by the millisecond (a FANUC's or Haas's P without its point, the
             // X time's 0.001 s), so `P0.5` and `P0.9` are 400 steps apart, not 0.4 (review
-            // 58b, F4); a format with decimals (an ISO dwell's F022) keeps its own step
+            // 58b, F4); a format with decimals (an ISO dwell's F022) keeps its own step.
+            // An unpointed time of such a format read whole (an Okuma's `P5`, 5 s; not a
+            // FANUC's milliseconds, stepped below) steps by the millisecond too: its value is exact, and a pair is stepped by its second word,
+            // so `P5.4` against `P5` is 400 steps in either order, not 0.4 one way (review
+            // 59c, F4)
             let step = if measure && !w.point && self.settings.reads_increments(letter) {
                 Dec::from_int(1)
-            } else if time && w.point && (!fmt.decimal || fmt.after == 0) {
+            } else if time
+                && (!fmt.decimal || fmt.after == 0)
+                && (w.point || !self.milliseconds(letter, flags, w.number))
+            {
                 Dec {
                     mantissa: 1,
                     scale: 3,
