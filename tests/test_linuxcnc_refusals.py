@@ -1155,6 +1155,14 @@ CYCLE_END_REFUSED = [
 ]
 
 
+def assert_too_close_refused(tmp_path, text, line, column):
+    """The one error is rs274's "too close" probe start, where rs274 stops too."""
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
+    assert "Start point too close to probe point" in found[0].message
+    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+
+
 @pytest.mark.parametrize("body", CYCLE_END_RUNS)
 def test_a_cycle_s_end_is_its_clearance_level_and_a_rigid_tap_s_its_start(tmp_path, body):
     clean_on_both(tmp_path, program(body))
@@ -1162,11 +1170,7 @@ def test_a_cycle_s_end_is_its_clearance_level_and_a_rigid_tap_s_its_start(tmp_pa
 
 @pytest.mark.parametrize("body, line, column", CYCLE_END_REFUSED)
 def test_a_probe_from_a_cycle_s_clearance_level_to_it_is_refused(tmp_path, body, line, column):
-    text = program(body)
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
-    assert "Start point too close to probe point" in found[0].message
-    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+    assert_too_close_refused(tmp_path, program(body), line, column)
 
 
 # A block whose M72 rs274 2.9 drops (the restore's block runs in its place): its own motion
@@ -1244,11 +1248,7 @@ def test_g98_s_level_inside_a_series_is_the_series_start_kept_through_a_g92(tmp_
 
 @pytest.mark.parametrize("body, line, column", CYCLE_SERIES_REFUSED)
 def test_a_probe_to_a_series_clearance_level_is_refused(tmp_path, body, line, column):
-    text = program(body)
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
-    assert "Start point too close to probe point" in found[0].message
-    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+    assert_too_close_refused(tmp_path, program(body), line, column)
 
 
 # A surely dropped M72 block (the feed mode differs: the restore's block runs in its place):
