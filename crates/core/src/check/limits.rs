@@ -682,13 +682,16 @@ impl Checker {
                     let writes = self.g10_writes(b);
                     self.offsets_written.then(&writes);
                     let (expression, local) = self.g10_expression_of(b);
-                    let every = Written::on_every(writes.axes.iter().fold(0, |all, a| all | a));
+                    let axes = writes.axes.iter().fold(0, |all, a| all | a);
                     if expression {
-                        self.g10_expression |= every.axes[0];
-                    } else if local {
-                        self.g10_local |= every.axes[0];
+                        self.g10_expression |= axes;
+                        self.offset_writer(&Written::on_every(axes), false);
+                    } else {
+                        if local {
+                            self.g10_local |= axes;
+                        }
+                        self.offset_writer(&writes, false);
                     }
-                    self.offset_writer(if expression { &every } else { &writes }, false);
                     self.offsets_rewritten(line, "G10 sets offsets");
                 }
                 52 | 92 if axes => {
