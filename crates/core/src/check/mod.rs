@@ -2859,8 +2859,8 @@ impl Checker {
     }
 
     /// LinuxCNC: where a cycle or a rigid tap left the tool, and the motion of a block whose
-    /// M72 may be dropped, after the block's rules ([`Checker::read_block`]; out of line).
-    #[inline(never)]
+    /// M72 may be dropped, after the block's rules ([`Checker::read_block`]).
+    #[inline]
     fn linuxcnc_after_rules(&mut self, before: &Before) {
         if let Some(ran) = self.linuxcnc_cycle_ran.take() {
             self.linuxcnc_cycle_end(ran, before);
