@@ -2286,4 +2286,32 @@ mod tests {
         m.apply(&block(&[80], &[], &[]));
         assert_eq!((m.state.cycle, m.state.cycle_words[0]), (None, None));
     }
+
+    /// Review 59c F1: a lathe's cycle the state does not model (a Haas lathe's G243) over a
+    /// thread stands in the motion group in its place, so that its repeats are no thread's
+    /// (`code_in_force` none); G80 puts the thread back, unless another motion code replaced
+    /// the cycle; with no thread in force nothing changes.
+    #[test]
+    fn a_lathe_s_unmodelled_cycle_over_a_thread_stands_in_its_place_until_g80() {
+        for thread in [32, 92] {
+            let mut m = fanuc_lathe();
+            m.apply(&block(&[thread], &[], &[(b'Z', "-5."), (b'F', "1.5")]));
+            assert_eq!(m.state.code_in_force(true), Some(thread));
+            m.cycle_over_thread(243);
+            assert_eq!(m.state.motion, Some(243));
+            assert_eq!(m.state.code_in_force(true), None);
+            m.cycle_over_thread(241); // a second cycle over the same thread
+            assert_eq!(m.state.motion, Some(241));
+            m.apply(&block(&[80], &[], &[]));
+            assert_eq!(m.state.code_in_force(true), Some(thread), "G{thread}");
+        }
+        let mut m = fanuc_lathe();
+        m.apply(&block(&[92], &[], &[(b'Z', "-5."), (b'F', "1.5")]));
+        m.cycle_over_thread(243);
+        m.apply(&block(&[1], &[], &[(b'X', "10.")]));
+        m.apply(&block(&[80], &[], &[]));
+        assert_eq!(m.state.motion, Some(1));
+        m.cycle_over_thread(243);
+        assert_eq!(m.state.motion, Some(1));
+    }
 }
