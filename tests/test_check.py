@@ -1265,6 +1265,37 @@ def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profil
     assert found == [("TG208", 5, "warning")]
 
 
+_LIVE_TOOL = ("%\nO1\nG20\nT101\nG97 S500 M03\nG00 X1. Z0.1\n"
+              "G92 X0.9 Z-0.5 F0.05 Q0\n"           # 7: a thread, Q its start angle
+              "G243 X0.5 Z-0.2 R1.1 Q0.1 F5.\n"     # 8: radial peck drilling, Q the peck
+              "X0.8 Q0.15\n"                        # 9: the cycle repeated
+              "Z-0.4 Q0.05\n"                       # 10
+              "G80\n"                               # 11: the thread back in group 01
+              "X0.8 Q0.15\n"                        # 12: a pass of the thread
+              "M30\n%\n")
+
+
+@pytest.mark.parametrize("text,said", [
+    (_LIVE_TOOL, [12]),
+    # a second live tool cycle over the same thread, and a G241 (no Q of its own) first
+    (_LIVE_TOOL.replace("G243 X0.5 Z-0.2 R1.1 Q0.1", "G241 X0.5 Z-0.2 R1.1\nG243 X0.5 "
+                        "Z-0.3 R1.1 Q0.1"), [13]),
+    # a G32 thread in force: the same
+    (_LIVE_TOOL.replace("G92 X0.9 Z-0.5", "G32 Z-0.5"), [12]),
+    # a G01 after the cycle replaces it: G80 then puts back no thread
+    (_LIVE_TOOL.replace("G80\n", "G01 X0.7 F0.01\nG80\n"), []),
+])
+def test_a_haas_lathe_live_tool_cycle_s_q_after_a_thread_is_not_its_start_angle(text, said):
+    """Review 59c, F1: on a Haas lathe a block of words alone after a radial live tool cycle
+    G241-G249 (Lathe Operator's Manual, group 09, cancelled by G80; G243's Q the peck)
+    repeats the cycle, even with a thread G92 or G32 (group 01) in force before it: its Q is
+    no start angle (TG208 "a thread's start angle ... 0.15 deg" was said at each repeat).
+    After G80 the thread is in force again and its pass's pointed Q is said, as before."""
+    found = [f.line for f in check_text(text, load_profile("haas-lathe"))
+             if f.rule == "TG208" and "start angle" in f.message]
+    assert found == said
+
+
 def _tg118(text: str, profile: str) -> list[tuple[int, int]]:
     return [(f.line, f.column) for f in check_text(text, load_profile(profile))
             if f.rule == "TG118"]

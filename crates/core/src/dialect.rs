@@ -541,6 +541,18 @@ impl ProgramSplit {
             && self.begins_after(family, program_number, opening)
     }
 
+    /// [`ProgramSplit::begins`] of a block that is no `%` line, its opening built only where
+    /// it follows an end (asked of every block: most follow none).
+    #[inline]
+    pub fn begins_after_end<'a>(
+        &mut self,
+        family: Family,
+        program_number: Option<u8>,
+        opening: impl FnOnce() -> Opening<'a>,
+    ) -> bool {
+        self.after_end && self.begins_after(family, program_number, &opening())
+    }
+
     /// [`ProgramSplit::begins`] of a block after an end, or of a `%` line.
     #[inline(never)]
     fn begins_after(

@@ -777,6 +777,13 @@ pub struct ModalMachine {
     /// Each axis's increments applied while its position is not known ([`Drift`]), by its
     /// place in [`AXES`]: started again wherever the axis is lost anew.
     pub drift: [Drift; 9],
+    /// A lathe's thread G32 or G92 in force when a canned cycle the state does not model (a
+    /// Haas lathe's G241-G249 live tool cycles) was given, and that cycle's code, which
+    /// stands in the motion group in the thread's place until G80 puts the thread back
+    /// ([`ModalMachine::cycle_over_thread`]): the cycle's repeats are no thread's passes.
+    /// Both codes as bytes, `[0, 0]` for none (two bytes: the struct's padding holds them;
+    /// a wider field moved the layout and cost the mills' blocks 7 instructions each).
+    thread_under_cycle: [u8; 2],
 }
 
 /// The increments (G91, a lathe's U and W) an axis moved by while its position stays not
@@ -828,6 +835,7 @@ impl ModalMachine {
             taken: None,
             distance_codes: 0,
             drift: [Drift::default(); 9],
+            thread_under_cycle: [0; 2],
         };
         machine.reset();
         machine
@@ -1047,6 +1055,30 @@ impl ModalMachine {
 
     /// After a jump or a call the checker cannot follow: the position, feed and speed are
     /// unknown until the program sets them again.
+    /// A lathe's canned cycle the state does not model, G code `g` (a Haas lathe's radial
+    /// live tool cycles G241-G249: Lathe Operator's Manual, group 09, cancelled by G80), given
+    /// with a thread G32 or G92 in force (group 01): a block of words alone after it repeats
+    /// the cycle, not a pass of the thread, whose Q (its start angle) it does not read (review
+    /// 59c, F1). The cycle's code stands in the motion group in the thread's place, and G80
+    /// puts the thread back; any other motion code replaces it as it replaces the thread.
+    /// Asked only where such a cycle is read (rare); nothing where the motion is no thread.
+    #[cold]
+    pub fn cycle_over_thread(&mut self, g: i64) {
+        let [t, c] = self.thread_under_cycle;
+        let thread = match self.state.motion {
+            Some(m) if modal_thread(m) => m,
+            // (a second such cycle over the same thread)
+            Some(m) if t != 0 && m == i64::from(c) => i64::from(t),
+            _ => return,
+        };
+        // (a code past 255 is no Haas lathe's cycle: left as the thread's repeats)
+        let (Ok(thread), Ok(cycle)) = (u8::try_from(thread), u8::try_from(g)) else {
+            return;
+        };
+        self.thread_under_cycle = [thread, cycle];
+        self.state.motion = Some(g);
+    }
+
     pub fn forget(&mut self) {
         self.cycle_kept = false;
         self.feed_none_kept = false;
@@ -1270,6 +1302,12 @@ impl ModalMachine {
             80 => {
                 s.cycle = None;
                 s.cycle_words = [None; 5];
+                // (the thread a lathe's unmodelled cycle stood in for, where nothing else
+                // replaced it since: cycle_over_thread)
+                let [thread, cycle] = std::mem::take(&mut self.thread_under_cycle);
+                if thread != 0 && s.motion == Some(i64::from(cycle)) {
+                    s.motion = Some(i64::from(thread));
+                }
                 if self.settings.g80_clears_motion {
                     s.motion = None;
                 }
@@ -2247,5 +2285,33 @@ mod tests {
         assert!(m.state.cycle_words[0].is_some());
         m.apply(&block(&[80], &[], &[]));
         assert_eq!((m.state.cycle, m.state.cycle_words[0]), (None, None));
+    }
+
+    /// Review 59c F1: a lathe's cycle the state does not model (a Haas lathe's G243) over a
+    /// thread stands in the motion group in its place, so that its repeats are no thread's
+    /// (`code_in_force` none); G80 puts the thread back, unless another motion code replaced
+    /// the cycle; with no thread in force nothing changes.
+    #[test]
+    fn a_lathe_s_unmodelled_cycle_over_a_thread_stands_in_its_place_until_g80() {
+        for thread in [32, 92] {
+            let mut m = fanuc_lathe();
+            m.apply(&block(&[thread], &[], &[(b'Z', "-5."), (b'F', "1.5")]));
+            assert_eq!(m.state.code_in_force(true), Some(thread));
+            m.cycle_over_thread(243);
+            assert_eq!(m.state.motion, Some(243));
+            assert_eq!(m.state.code_in_force(true), None);
+            m.cycle_over_thread(241); // a second cycle over the same thread
+            assert_eq!(m.state.motion, Some(241));
+            m.apply(&block(&[80], &[], &[]));
+            assert_eq!(m.state.code_in_force(true), Some(thread), "G{thread}");
+        }
+        let mut m = fanuc_lathe();
+        m.apply(&block(&[92], &[], &[(b'Z', "-5."), (b'F', "1.5")]));
+        m.cycle_over_thread(243);
+        m.apply(&block(&[1], &[], &[(b'X', "10.")]));
+        m.apply(&block(&[80], &[], &[]));
+        assert_eq!(m.state.motion, Some(1));
+        m.cycle_over_thread(243);
+        assert_eq!(m.state.motion, Some(1));
     }
 }

@@ -1067,11 +1067,20 @@ impl Checker {
     /// The block's cancels of the frames in force, as the state after it has them
     /// ([`Checker::take_back`]); read before the rules, which [`Checker::turn_frames`] is one
     /// of.
+    /// (inlined where it is asked, twice a block's reading: the test of a frame in force and
+    /// a frame code; the walk of the codes out of line)
+    #[inline(always)]
     pub(super) fn cancel_frames(&mut self, b: &BlockView<'_>, before: &Before) {
         self.frames.codes = self.frame_codes();
         if self.frames.on == 0 || !self.frames.codes {
             return;
         }
+        self.cancel_frames_of(b, before);
+    }
+
+    /// [`Checker::cancel_frames`] of a block with a frame code and a frame in force.
+    #[inline(never)]
+    fn cancel_frames_of(&mut self, b: &BlockView<'_>, before: &Before) {
         let mut done = 0u8;
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {

@@ -2232,7 +2232,8 @@ impl Checker {
         }
         // the split every reader makes (dialect::ProgramSplit): an O number or a folder marker
         // after the end or the return of a program begins the next
-        let opening = dialect::Opening {
+        // (the block's opening built only after an end: most blocks follow none)
+        let opening = || dialect::Opening {
             word: b.words.first().map(|w| (w.column, w.letter)),
             statement: b.statements.first().copied(),
             percent: None,
@@ -2281,7 +2282,7 @@ impl Checker {
         }
         if self
             .split
-            .begins(self.config.family, self.config.program_number, &opening)
+            .begins_after_end(self.config.family, self.config.program_number, opening)
         {
             // (a main program's M30, whatever follows it: its M97 local subroutines end in
             // M99 before the saved offsets)
@@ -2635,49 +2636,21 @@ impl Checker {
             None if lacked_code => Some(crate::modal::AxesTaken::Unknown),
             taken => taken,
         };
-        // (LinuxCNC: an M2/M30 inside a condition, a loop or a definition may not run, and
-        // the lines after it run only where it did not: it resets no mode; review 19)
-        // (and one after a block delete `/`, which the switch may pass over)
-        self.values.end_unsure =
-            self.config.family == Family::LinuxCnc && (b.skip || !self.linuxcnc_runs_surely());
-        // (LinuxCNC: the cycle an M72's dropped block leaves in force; rare)
-        if self.linuxcnc_feed_saved.is_some() && self.letters & bit(b'M') != 0 {
-            let state = &self.machine.state;
-            self.linuxcnc_m72_cycle = Some(structure::M72Cycle {
-                motion: state.motion,
-                cycle: state.cycle,
-                words: state.cycle_words,
-                bottom: self.linuxcnc_cycle_bottom,
-            });
-        }
-        self.machine.apply_taken(&self.values, taken);
-        // (one test of the two flags on a plain block: both are seldom set)
-        if self.units_unknown | self.early_on {
-            self.units_given_now();
-        }
-        // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
-        self.cancel_frames(b, &before);
-        if self.config.family == Family::LinuxCnc {
-            self.linuxcnc_nurbs_position(b, &before);
-        }
-        self.programmed_forms(b, &before);
-        // (LinuxCNC: the main program's distance mode not known after a G90/G91 in a
-        // condition or loop, M70's restored by M72: review 49a, F1, F6; state, not a rule)
-        if self.letters & (bit(b'G') | bit(b'M')) != 0
-            && self.config.family == Family::LinuxCnc
-            && !self.motion_only
-            && self.open_definition.is_none()
-        {
-            self.linuxcnc_distance_modal(b, before.incremental);
-        }
-        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare; or
-        // what a save's later turn in a loop may take)
-        if self.config.family == Family::LinuxCnc
-            && (self.letters & bit(b'M') != 0
-                || self.linuxcnc_feed_saved.is_some()
-                || self.linuxcnc_feed_loose.is_some() && !self.linuxcnc_open_flow.is_empty())
-        {
-            self.linuxcnc_feed_restore(b, &before);
+        // (LinuxCNC's state steps around the modal state's, out of line: the other families'
+        // blocks test the family once here)
+        let linuxcnc = self.config.family == Family::LinuxCnc;
+        if linuxcnc {
+            self.linuxcnc_apply(b, taken, &before);
+        } else {
+            self.machine.apply_taken(&self.values, taken);
+            // (one test of the two flags on a plain block: both are seldom set)
+            if self.units_unknown | self.early_on {
+                self.units_given_now();
+            }
+            // (a frame's cancel moves the position to the coordinates after it: state, not a
+            // rule)
+            self.cancel_frames(b, &before);
+            self.programmed_forms(b, &before);
         }
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
@@ -2694,11 +2667,8 @@ impl Checker {
         );
         // (LinuxCNC: where a cycle or a rigid tap left the tool, after the rules read its
         // bottom; state, not a rule)
-        if let Some(ran) = self.linuxcnc_cycle_ran.take() {
-            self.linuxcnc_cycle_end(ran, &before);
-        }
-        if let Some(dropped) = self.linuxcnc_m72_motion.take() {
-            self.linuxcnc_m72_motion_back(dropped);
+        if linuxcnc {
+            self.linuxcnc_after_rules(&before);
         }
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
@@ -2720,9 +2690,7 @@ impl Checker {
         );
         // LinuxCNC: an M word's value read before the line's own assignments, which rs274
         // makes at the line's end (`#1=2 M#1` after `#1=5` is M5; review 48, F8)
-        let linuxcnc_m_end = self.config.family == Family::LinuxCnc
-            && self.letters & bit(b'M') != 0
-            && self.linuxcnc_m_ends(b);
+        let linuxcnc_m_end = linuxcnc && self.letters & bit(b'M') != 0 && self.linuxcnc_m_ends(b);
         self.assignments(b);
         self.formulas(b);
         if self.config.haas {
@@ -2837,6 +2805,68 @@ impl Checker {
             if self.ended_line > 0 {
                 self.closed = true;
             }
+        }
+    }
+
+    /// [`Checker::read_block`]'s application of a LinuxCNC block's values to the modal state,
+    /// with the state steps of LinuxCNC around it (out of line: no other family's block runs
+    /// them).
+    #[inline(never)]
+    fn linuxcnc_apply(
+        &mut self,
+        b: &BlockView<'_>,
+        taken: Option<crate::modal::AxesTaken>,
+        before: &Before,
+    ) {
+        // (an M2/M30 inside a condition, a loop or a definition may not run, and the lines
+        // after it run only where it did not: it resets no mode; review 19)
+        // (and one after a block delete `/`, which the switch may pass over)
+        self.values.end_unsure = b.skip || !self.linuxcnc_runs_surely();
+        // (the cycle an M72's dropped block leaves in force; rare)
+        if self.linuxcnc_feed_saved.is_some() && self.letters & bit(b'M') != 0 {
+            let state = &self.machine.state;
+            self.linuxcnc_m72_cycle = Some(structure::M72Cycle {
+                motion: state.motion,
+                cycle: state.cycle,
+                words: state.cycle_words,
+                bottom: self.linuxcnc_cycle_bottom,
+            });
+        }
+        self.machine.apply_taken(&self.values, taken);
+        if self.units_unknown | self.early_on {
+            self.units_given_now();
+        }
+        // (a frame's cancel moves the position to the coordinates after it: state, not a rule)
+        self.cancel_frames(b, before);
+        self.linuxcnc_nurbs_position(b, before);
+        self.programmed_forms(b, before);
+        // (the main program's distance mode not known after a G90/G91 in a condition or
+        // loop, M70's restored by M72: review 49a, F1, F6; state, not a rule)
+        if self.letters & (bit(b'G') | bit(b'M')) != 0
+            && !self.motion_only
+            && self.open_definition.is_none()
+        {
+            self.linuxcnc_distance_modal(b, before.incremental);
+        }
+        // (and its feed mode, feed and speed, where an M70 or M73 of it saved them: rare; or
+        // what a save's later turn in a loop may take)
+        if self.letters & bit(b'M') != 0
+            || self.linuxcnc_feed_saved.is_some()
+            || self.linuxcnc_feed_loose.is_some() && !self.linuxcnc_open_flow.is_empty()
+        {
+            self.linuxcnc_feed_restore(b, before);
+        }
+    }
+
+    /// LinuxCNC: where a cycle or a rigid tap left the tool, and the motion of a block whose
+    /// M72 may be dropped, after the block's rules ([`Checker::read_block`]).
+    #[inline]
+    fn linuxcnc_after_rules(&mut self, before: &Before) {
+        if let Some(ran) = self.linuxcnc_cycle_ran.take() {
+            self.linuxcnc_cycle_end(ran, before);
+        }
+        if let Some(dropped) = self.linuxcnc_m72_motion.take() {
+            self.linuxcnc_m72_motion_back(dropped);
         }
     }
 

@@ -39,8 +39,8 @@ struct MotionCodes {
     unmodelled: bool,
     /// A code that takes the block's axis words itself (G10, G28, G30, G52, G92).
     takes_axes: bool,
-    /// The token of such a canned cycle.
-    cycle: Option<String>,
+    /// The token of such a canned cycle, and its whole number.
+    cycle: Option<(String, i64)>,
     /// The G codes the family's list lacks, each with whether a configuration may define it
     /// (`dialect::g_code_remappable`).
     lacked: Vec<(String, bool)>,
@@ -556,8 +556,12 @@ impl Checker {
             lacked,
         } = read;
         self.motion_read(modelled, unmodelled);
-        if let Some(code) = cycle {
+        if let Some((code, g)) = cycle {
             self.cycle_unmodelled = true;
+            // (a lathe's thread in force: the cycle's repeats are not its passes)
+            if self.machine.settings.fanuc_lathe {
+                self.machine.cycle_over_thread(g);
+            }
             let said = format!(": {code} is ");
             if !self.stats.moves_not_known.iter().any(|m| m.contains(&said)) {
                 self.stats.moves_not_known.push(format!(
@@ -699,7 +703,7 @@ impl Checker {
                 && !(73..=89).contains(&n)
             {
                 unmodelled = true;
-                cycle = Some(w.token().to_string());
+                cycle = Some((w.token().to_string(), n));
             }
         }
         MotionCodes {
