@@ -111,22 +111,36 @@ def test_a_lathe_conversion_with_increments_verifies(tmp_path):
     assert "verified" in result.output
 
 
-@pytest.mark.parametrize("source", ["fanuc-lathe", "haas-lathe"])
-def test_a_thread_written_with_increments_carries_its_rounding_and_verifies(tmp_path, source):
+@pytest.mark.parametrize("source, system", [
+    ("fanuc-lathe", "A"), ("haas-lathe", "A"), ("fanuc-lathe-b", "B"), ("fanuc-lathe-c", "C")])
+def test_a_thread_written_with_increments_carries_its_rounding_and_verifies(tmp_path, source,
+                                                                           system):
     """Review 59c F7: a G32's U W are the end point's increments, as a G01's (FANUC 0i-TF,
     "Thread cutting G32"): their rounding is carried on X Z (`W-0.7875` from Z0.1969 ends at
     -15 mm within half a step, as G01's), and --verify reads them as moves; a thread
     written with W failed it ("then position Z -15 mm -> -14.9987 mm") under any change of
-    units."""
+    units.
+
+    Review 60, F2: in G code system B and C (threading G33, mm G21 and G71), where no manual
+    at hand says U and W are increments of X and Z (docs/dialects.md), the converter carried
+    them as system A's and --verify read them each on its own: `G33 W-20.` to inch (since
+    lathe59b) and `G01 W-20.` (before it) FAILED ("W-20. converts to -0.787402 but the output
+    W-0.7875 reads -0.7875"). Both read them by one rule now (`convert::UwMoves`): in B and C
+    each converted on its own (`W-0.7874`), noted once, and verified."""
     from click.testing import CliRunner
 
     from tapegate.cli import main
-    text = ("%\nO1\nG21 G99\nG00 X30. Z5.\nG32 W-20. F1.5\nG00 X30. Z5.\nG32 U-1. W-20.\n"
-            "W-5.\nG00 X30. Z5.\nG01 W-20. F0.2\nM30\n%\n")
+    thread, mm, per_rev = {"A": ("G32", "G21", "G99"), "B": ("G33", "G21", "G95"),
+                           "C": ("G33", "G71", "G95")}[system]
+    text = (f"%\nO1\n{mm} {per_rev}\nG00 X30. Z5.\n{thread} W-20. F1.5\nG00 X30. Z5.\n"
+            f"{thread} U-1. W-20.\nW-5.\nG00 X30. Z5.\nG01 W-20. F0.2\nM30\n%\n")
     out = convert(text, source, units="inch").splitlines()
+    # system A: carried on Z (from Z0.1969, the end -15 mm within half a step, and W-5.
+    # from there); B and C: each on its own
+    w, w5 = ("W-0.7875", "W-0.1968") if system == "A" else ("W-0.7874", "W-0.1969")
     assert [line.split(" F")[0] for line in out[4:10]] == [
-        "G32 W-0.7875", "G00 X1.1811 Z0.1969", "G32 U-0.0394 W-0.7875", "W-0.1968",
-        "G00 X1.1811 Z0.1969", "G01 W-0.7875"]
+        f"{thread} {w}", "G00 X1.1811 Z0.1969", f"{thread} U-0.0394 {w}", w5,
+        "G00 X1.1811 Z0.1969", f"G01 {w}"]
     for units, program in (("inch", text), ("metric", "\n".join(out) + "\n")):
         src, dst = tmp_path / f"{units}.nc", tmp_path / f"{units}.out.nc"
         src.write_text(program)
@@ -135,6 +149,23 @@ def test_a_thread_written_with_increments_carries_its_rounding_and_verifies(tmp_
                                            "--verify"])
         assert result.exit_code == 0, result.output
         assert "verified" in result.output and "FAILED" not in result.output
+        noted = "converted on its own, not carried on Z's position" in result.output
+        assert noted == (system != "A"), result.output
+    if system != "A":
+        # the output carried as system A's (W-0.7875 for W-20.) is no conversion of the B/C
+        # program by the proof's reading, the one the converter keeps: refused at its word
+        from formats.verify import verify_conversion
+        options = ConvertOptions(target=profile(source), source=profile(source), units="inch")
+        written, stats = convert_text(text, options)
+        src, bad = tmp_path / "b.nc", tmp_path / "b.out.nc"
+        src.write_text(text)
+        bad.write_text(written.replace(w, "W-0.7875", 1))
+        with pytest.raises(ConversionError) as err:
+            verify_conversion(str(src), str(bad), profile(source), options, stats,
+                              file="b.nc")
+        assert err.value.line == 5
+        assert "W-20. converts to -0.787402 but the output W-0.7875 reads -0.7875" in str(
+            err.value)
 
 
 def test_a_lathe_s_peck_rigid_tapping_q_converts_as_g83_s():

@@ -834,10 +834,13 @@ pub struct Converter {
     /// The output's position of a length, exactly in millimetres, once the source or the
     /// output has switched its units ([`Converter::tracked_across_units`]).
     out_mm: [Option<Dec>; 26],
-    /// A Fanuc or Haas lathe's U W are increments of X Z by their letter: tracked as G91
-    /// words are while the motion in force is G00-G03 (not in a turning or threading cycle,
-    /// whose U W are the cycle's and whose tool returns to its start point).
-    uw_moves: bool,
+    /// A Fanuc, Haas or Okuma lathe's U W are increments of X Z by their letter: tracked as
+    /// G91 words are while the motion in force is G00-G03 or a thread (not in a turning or
+    /// threading cycle, whose U W are the cycle's and whose tool returns to its start point);
+    /// in G code system B or C each converted on its own ([`UwMoves`]).
+    uw_moves: UwMoves,
+    /// A rounded U or W of system B or C, converted on its own, has been noted (once).
+    uw_own_noted: bool,
     /// The source program has written a feed mode code (G93-G95; a FANUC lathe's G98/G99 by
     /// system A's numbers): its F no longer reads by the reset state's feed mode.
     feed_mode_written: bool,
@@ -1343,6 +1346,7 @@ fn slot(letter: u8) -> usize {
 
 impl Converter {
     pub fn new(c: ConvertConfig) -> Converter {
+        let uw_moves = UwMoves::new(c.lathe, c.family, c.src_modal.g_system);
         let mut modal = ModalMachine::new(ModalSettings {
             // the lathe's G50 S and G98/G99 change no factor of a conversion (F per minute and
             // per revolution both scale with the length unit)
@@ -1403,7 +1407,8 @@ impl Converter {
             pos_units: [None; 26],
             out_at: [None; 26],
             out_mm: [None; 26],
-            uw_moves: true,
+            uw_moves,
+            uw_own_noted: false,
             feed_mode_written: false,
             leader_passed: false,
             polar_interpolation: false,
@@ -3226,32 +3231,11 @@ impl Converter {
         if let Some(role) = crate::word::radius_letter_role(radius, self.modal.state.motion, &gs) {
             self.cycle[slot(radius)] = Some(role);
         }
-        if self.c.lathe && self.c.family == Family::MacroB {
-            // the motion codes of a Fanuc/Haas lathe (system A): G00-G03 and G32/G34
-            // threading move by U W, the end point's increment (FANUC 0i-TF, "Thread cutting
-            // G32": the tool cuts to the end point and stays there), their rounding carried as
-            // a G01's (review 59c F7: `G32 W-20.` in inch failed --verify by 0.00004 mm);
-            // G90/G92/G94 turning cycles, G70-G76 and G80-G89 cycles do not (their tool
-            // returns to the start point), as the checker reads them
-            // (`ModalMachine::g_other`)
-            for &g in &gs {
-                match g {
-                    0..=3 | 32 | 34 => self.uw_moves = true,
-                    33 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
-                    _ => {}
-                }
-            }
-        } else if self.c.lathe && self.c.family == Family::Okuma {
-            // an OSP lathe's U W are increments of X Z by their letter too (5238-E, "Absolute
-            // and incremental commands"), but for the finishing allowances of its thread and LAP
-            // cycles and the M-tool cycles (G31-G35, G71-G89 but G80, G178-G189)
-            for &g in &gs {
-                match g {
-                    0..=3 | 80 => self.uw_moves = true,
-                    31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
-                    _ => {}
-                }
-            }
+        // a lathe's U W: the move's or a cycle's, by the codes of the block (`UwMoves`, the
+        // rule `--verify`'s reader keeps too; review 59c F7: `G32 W-20.` in inch failed
+        // --verify by 0.00004 mm, carried as a G01's)
+        for &g in &gs {
+            self.uw_moves.code(g);
         }
         // (the code first: a cycle the target writes in another form is refused as such,
         // before its words)
@@ -4190,10 +4174,7 @@ impl Converter {
         }
         // a FANUC, Haas or Okuma lathe's U moving the tool is an increment of X, a diameter
         // too (a cycle's U is its allowance or depth: `uw_moves`)
-        let u = self.c.x_radius
-            && self.c.lathe
-            && matches!(self.c.family, Family::MacroB | Family::Okuma)
-            && self.uw_moves;
+        let u = self.c.x_radius && self.uw_moves.of_move();
         // X0 (U0) is the spindle axis read as a diameter and as a radius alike (and no
         // increment under G91): the same place on both machines; a parameter's or an
         // expression's value is not known here, so refused with any other number
@@ -5275,7 +5256,7 @@ impl Converter {
         self.out_mm = [None; 26];
         self.rounded_step = None;
         self.loops = false;
-        self.uw_moves = true;
+        self.uw_moves.reset();
         self.rounded_params.clear();
         self.polar_interpolation = false;
         self.ic_rounded = Default::default();
@@ -6771,14 +6752,12 @@ impl Converter {
             Some(&p) => i128::from(p),
             None => pow10(fmt.width())?,
         };
-        let uw = self.c.lathe
-            && matches!(self.c.family, Family::MacroB | Family::Okuma)
-            && matches!(letter, b'U' | b'W')
+        let uw_word = matches!(letter, b'U' | b'W')
             && k == Kind::Axis
-            && self.uw_moves
             && self.cycle[slot(letter)].is_none()
             && !set_position
             && !dwell_word;
+        let uw = uw_word && self.uw_moves.carried();
         let u = if uw || (tracked && (self.incremental() || set_position) && !dwell_word) {
             // a lathe's U W move X Z by an increment: tracked on X Z's positions
             let on = match letter {
@@ -6799,9 +6778,27 @@ impl Converter {
             }
             u
         } else {
+            let own = uw_word && self.uw_moves.on_its_own();
+            self.rounded = false;
             let mut u = self.scale(letter, m, scale, factor, after)?;
             if negative {
                 u = -u;
+            }
+            if own && self.rounded && !self.uw_own_noted {
+                self.uw_own_noted = true;
+                // G code system B or C: converted on its own, as `--verify` reads it (no
+                // manual at hand says these U W move X Z); if they do, each rounding adds up
+                self.note(format!(
+                    "line {}: {} (G code system B/C) is rounded to the target's format and \
+                     converted on its own, not carried on {}'s position, as is every U and W \
+                     of a move in system B or C: no manual at hand says whether they are \
+                     increments of X and Z there; if they are, each rounded one adds its \
+                     rounding (up to half a step) to the position: check the path, or \
+                     program it by X Z",
+                    b.line,
+                    text(token),
+                    if letter == b'U' { "X" } else { "Z" }
+                ));
             }
             if tracked && !dwell_word {
                 self.ic_rounded[slot(letter)] = None;
@@ -8288,6 +8285,99 @@ pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
     }
 }
 
+/// Whether a lathe's U and W move X and Z by an increment, their rounding carried on X Z's
+/// positions as a G91 word's is: the one rule the converter ([`Converter::block`]) and
+/// `--verify`'s reader (`ncread::Reader`) each keep one of and ask alike, so that the proof
+/// reads a U or W as the conversion wrote it (review 60, F2: the converter carried a system B
+/// thread's `G33 W-20.` to inch as a move, `W-0.7875`, and the reader, per word, refused it).
+///
+/// A FANUC or Haas lathe of G code system A: in G00-G03 and threading G32/G34 U and W are the
+/// increments of X and Z (FANUC 0i-TF, "Absolute and incremental programming" and "Thread
+/// cutting G32": the tool cuts to the end point and stays there), not in a turning or threading
+/// cycle (G90, G92, G94, G70-G76, G80-G89; system A's G33, as the checker reads it), whose U
+/// and W are its own and whose tool returns to its start point
+/// ([`crate::modal::ModalMachine::uw_moved_xz`]). An Okuma OSP lathe's likewise, but for the
+/// finishing allowances of its thread, LAP and M-tool cycles (G31-G35, G71-G89 but G80,
+/// G178-G189; OSP-P200L, 5238-E, "Absolute and incremental commands"). In G code system B or
+/// C, which programs increments by G90/G91, no manual at hand says whether U and W still move
+/// X and Z (docs/dialects.md, "G code systems B and C"): there a U or W is converted on its
+/// own, as the value it is, and compared so ([`UwMoves::carried`] false), though it is still a
+/// word of the move, not a cycle's ([`UwMoves::of_move`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UwMoves {
+    lathe: UwLathe,
+    /// The motion in force is one whose U and W are the move's, not a cycle's: from the start
+    /// of a program until a cycle's code.
+    motion: bool,
+}
+
+/// The lathes whose U and W are increments of X and Z ([`UwMoves`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum UwLathe {
+    None,
+    /// A FANUC or Haas lathe; whether of G code system A.
+    Fanuc {
+        system_a: bool,
+    },
+    Okuma,
+}
+
+impl UwMoves {
+    /// The rule of a machine: a lathe or not, its family and (a FANUC lathe) its G code system.
+    pub fn new(lathe: bool, family: Family, system: crate::meaning::GCodeSystem) -> UwMoves {
+        let lathe = match family {
+            _ if !lathe => UwLathe::None,
+            Family::MacroB => UwLathe::Fanuc {
+                system_a: system == crate::meaning::GCodeSystem::A,
+            },
+            Family::Okuma => UwLathe::Okuma,
+            _ => UwLathe::None,
+        };
+        UwMoves {
+            lathe,
+            motion: true,
+        }
+    }
+
+    /// The start of a program (G00-G03 in force).
+    pub fn reset(&mut self) {
+        self.motion = true;
+    }
+
+    /// After a G code `g` of the block (its system A number).
+    pub fn code(&mut self, g: i64) {
+        match self.lathe {
+            UwLathe::None => {}
+            UwLathe::Fanuc { .. } => match g {
+                0..=3 | 32 | 34 => self.motion = true,
+                33 | 70..=76 | 80..=90 | 92 | 94 => self.motion = false,
+                _ => {}
+            },
+            UwLathe::Okuma => match g {
+                0..=3 | 80 => self.motion = true,
+                31..=35 | 71..=89 | 178..=189 => self.motion = false,
+                _ => {}
+            },
+        }
+    }
+
+    /// A U or W now is a word of the move (in whatever G code system), not a cycle's.
+    pub fn of_move(&self) -> bool {
+        self.lathe != UwLathe::None && self.motion
+    }
+
+    /// A U or W now moves X or Z by an increment, its rounding carried on X Z's position (not
+    /// in G code system B or C, whose U and W are converted and compared each on its own).
+    pub fn carried(&self) -> bool {
+        self.of_move() && self.lathe != UwLathe::Fanuc { system_a: false }
+    }
+
+    /// A U or W now is a move's word of G code system B or C, read on its own.
+    pub fn on_its_own(&self) -> bool {
+        self.of_move() && self.lathe == UwLathe::Fanuc { system_a: false }
+    }
+}
+
 /// The codes a block of a FANUC or Haas control that names none of its own repeats, with the
 /// words it changes (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the code's
 /// roles. The converter and `--verify`'s reader keep one each and ask [`Repeat::after`] at
@@ -9243,6 +9333,58 @@ mod tests {
         // which cycles' P is a dwell: a lathe's G73/G74/G76 are multiple repetitive cycles
         assert!(dwell_cycle(false, 76) && !dwell_cycle(true, 76) && dwell_cycle(true, 249));
         assert!(!dwell_cycle(false, 249) && dwell_cycle(true, 83) && !dwell_cycle(true, 81));
+    }
+
+    /// The one rule of a lathe's U and W (`UwMoves`), kept by the converter and `--verify`'s
+    /// reader: carried on X Z in system A's moves and threads (and an OSP's), not in a cycle,
+    /// and in G code system B or C a move's word read on its own (review 60, F2).
+    #[test]
+    fn a_lathes_u_and_w_move_x_and_z_by_one_rule() {
+        use crate::meaning::GCodeSystem;
+        let after = |lathe, family, system, gs: &[i64]| {
+            let mut uw = UwMoves::new(lathe, family, system);
+            gs.iter().for_each(|&g| uw.code(g));
+            (uw.of_move(), uw.carried(), uw.on_its_own())
+        };
+        let a = GCodeSystem::A;
+        for gs in [&[][..], &[1], &[32], &[34], &[92, 0]] {
+            assert_eq!(
+                after(true, Family::MacroB, a, gs),
+                (true, true, false),
+                "A {gs:?}"
+            );
+        }
+        // system A's cycles (and its G33, as the checker reads it): the cycle's U W
+        for g in [33, 71, 76, 83, 90, 92, 94] {
+            assert_eq!(
+                after(true, Family::MacroB, a, &[g]),
+                (false, false, false),
+                "A G{g}"
+            );
+        }
+        // B and C (their G33 read as A's G32): a move's word, converted and read on its own
+        for system in [GCodeSystem::B, GCodeSystem::C] {
+            for gs in [&[][..], &[1], &[32], &[90, 1]] {
+                assert_eq!(after(true, Family::MacroB, system, gs), (true, false, true));
+            }
+            assert_eq!(
+                after(true, Family::MacroB, system, &[90]),
+                (false, false, false)
+            );
+        }
+        // an OSP lathe: its thread cycle G33 is a cycle, G01 a move
+        assert_eq!(after(true, Family::Okuma, a, &[1]), (true, true, false));
+        assert_eq!(after(true, Family::Okuma, a, &[33]), (false, false, false));
+        // a mill, or another family's lathe: no U W of the lathe's
+        assert_eq!(after(false, Family::MacroB, a, &[1]), (false, false, false));
+        assert_eq!(
+            after(true, Family::LinuxCnc, a, &[1]),
+            (false, false, false)
+        );
+        let mut uw = UwMoves::new(true, Family::MacroB, a);
+        uw.code(71);
+        uw.reset();
+        assert!(uw.carried());
     }
 
     /// A G code's digits read a digit at a time are what the standard parser reads, and

@@ -283,9 +283,10 @@ pub struct Reader {
     /// A lathe's polar coordinate interpolation (G12.1 ... G13.1): C is a length
     /// ([`crate::meaning::polar_interpolation`]).
     polar_interpolation: bool,
-    /// A Fanuc or Haas lathe in G00-G03, whose U W move X Z by an increment (not in a
-    /// turning or threading cycle): as the converter tracks them (`convert::Converter`).
-    uw_moves: bool,
+    /// A lathe's U W moving X Z by an increment (G00-G03 or a thread of system A, not a
+    /// turning or threading cycle): by the converter's rule (`convert::UwMoves`), so the two
+    /// read a U or W alike.
+    uw_moves: crate::convert::UwMoves,
     /// A drilling or boring cycle in force (G73, G82-G89), whose P is the dwell at the bottom.
     dwell_cycle: bool,
     /// The canned drilling cycle in force, whose words a block that names no cycle repeats
@@ -318,6 +319,8 @@ impl Reader {
         };
         let formats = [table(Units::Metric), table(Units::Inch)];
         let family = settings.family;
+        let uw_moves =
+            crate::convert::UwMoves::new(settings.lathe, family, settings.modal.g_system);
         let mut reader = Reader {
             settings,
             formats,
@@ -331,7 +334,7 @@ impl Reader {
             plane: 17,
             polar: false,
             polar_interpolation: false,
-            uw_moves: true,
+            uw_moves,
             dwell_cycle: false,
             cycle_code: Default::default(),
             split: ProgramSplit::default(),
@@ -348,7 +351,7 @@ impl Reader {
     /// codes in order (the units are the caller's to keep or not).
     fn reset_modes(&mut self) {
         self.incremental = false;
-        self.uw_moves = true;
+        self.uw_moves.reset();
         self.dwell_cycle = false;
         self.cycle_code = Default::default();
         self.feed_mode = 94;
@@ -464,22 +467,9 @@ impl Reader {
                 }
                 _ => {}
             }
-            if self.settings.fanuc_lathe {
-                // (G32/G34 threading moves by U W as G01 does, the checker's
-                // `ModalMachine::g_other`: review 59c F7)
-                match g {
-                    0..=3 | 32 | 34 => self.uw_moves = true,
-                    33 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
-                    _ => {}
-                }
-            } else if self.settings.lathe && self.settings.family == Family::Okuma {
-                // an Okuma lathe's, as the converter reads them (`Converter::block`)
-                match g {
-                    0..=3 | 80 => self.uw_moves = true,
-                    31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
-                    _ => {}
-                }
-            }
+            // (G32/G34 threading moves by U W as G01 does, the checker's
+            // `ModalMachine::g_other`: review 59c F7)
+            self.uw_moves.code(g);
         }
         let spans: Vec<WordSpan<'_>> = tokens
             .iter()
@@ -1393,13 +1383,10 @@ impl Reader {
             && !dwell
             && !flags.clamp
             && !absolute;
-        // a lathe's U W: an increment of X Z by its letter, carried on X Z's position
-        let okuma_lathe = self.settings.lathe && self.settings.family == Family::Okuma;
-        // (G code system B and C program increments by G91: their U W are not read so,
-        // `ModalMachine::moved`)
-        let system_a = self.settings.modal.g_system == crate::meaning::GCodeSystem::A;
-        let moves = ((self.settings.fanuc_lathe && system_a || okuma_lathe)
-            && self.uw_moves
+        // a lathe's U W: an increment of X Z by its letter, carried on X Z's position, as the
+        // converter carries it (`convert::UwMoves::carried`: not in G code system B or C,
+        // whose U W are compared each on its own, as `ModalMachine::moved` does not follow them)
+        let moves = (self.uw_moves.carried()
             && matches!(letter, b'U' | b'W')
             && w.index.is_empty()
             && roles[usize::from(letter - b'A')].is_none()
