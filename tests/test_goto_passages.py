@@ -815,6 +815,29 @@ def test_a_value_written_is_not_judged_with_after_the_coordinates_or_the_offset_
         "this call wrote it)"))]
 
 
+@pytest.mark.parametrize("shift, expected", [
+    # (w7, w11: where the main stands at the call, X0, becomes X-300: every work system moved
+    # by +300, X-700. under G55 runs at -500; the position at the call not followed: held)
+    ("G92 X-300.", None), ("G92 X-300. Y0", None),
+    # (w2: G52 X0 Y0 is no shift; w1: G68 R0. cancelled by G69: the profile's -800 true)
+    ("G52 X0 Y0", "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+    ("G68 X0 Y0 R0. / G69", "X goes to -800 in machine coordinates (work -700 + G55 offset "
+                            "-100.0)"),
+    # (wv5: a G92 of a value not known, said as before, erring on the side of the alarm)
+    ("G92 X#500", "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+])
+def test_a_g92_of_a_program_written_before_the_main_holds_the_positions_after_its_call(
+        tmp_path, shift, expected):
+    """Review 60, F5 (w7.nc, w11.nc): O1000, written before the main, does `G92 X-300.`; its
+    call moves every work system's zero by where the main stood, so O1001's X-700. under G55
+    after it is not at -800 (it was said: the profile's offsets trusted again after the
+    call). A zero shift (`G52 X0 Y0`) or a frame cancelled keeps the profile's -800 said."""
+    program = (f"{shift} / G0 Y0 / M99 / O1001 / G90 G55 G0 X-700. / M99 / O2000 / "
+               "G21 G17 G90 G54 / G0 X0 Y0 / M98 P1000 / G90 G55 / M98 P1001 / M30")
+    line = 15 if "G69" in shift else 14
+    assert said(program, _wo2(tmp_path)) == ([("TG601", line, 5, expected)] if expected else [])
+
+
 @pytest.mark.parametrize("g10, expected", [
     # (a37: G55's X 0: X-700. inside, G1 X-780. beyond)
     ("G10 L2 P2 X0.", "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a G10 "

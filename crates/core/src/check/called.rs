@@ -935,10 +935,15 @@ impl Checker {
     /// known it may stand elsewhere: kept, not said (review 57e F1); a write of another
     /// offset or axis, or of a tool offset, changes nothing (review 58a F3).
     fn offset_now(&self, f: &Finding) -> Now {
-        if !self.offsets_written.any() {
+        if !self.offsets_written.any() && self.offsets_written.shifted == 0 {
             return Now::AsRead;
         }
         match f.placed {
+            // (a G52 or G92 of the caller's run moved that axis's zero by an amount not
+            // known to be zero: review 60 F5)
+            Placed::Offset { place, .. } if self.offsets_written.shifted & 1 << place != 0 => {
+                Now::Unknown
+            }
             Placed::Offset {
                 place, work, at, ..
             } => {

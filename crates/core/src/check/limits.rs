@@ -308,6 +308,12 @@ pub(super) struct Written {
     /// position is no longer the work position plus the value written, so none is judged
     /// with it (review 59a F5: `G68 X0 Y0 R180.` runs `X-700.` at X700).
     pub(super) moved: bool,
+    /// The axes (their places' bits) whose zero a G52 or G92 (a lathe's G50) moved by an
+    /// amount not known to be zero, not followed where the program is called (review 60 F5:
+    /// an O100 written before the main whose `G92 X-300.` shifts every work system by where
+    /// the main stood): a position under a work offset on such an axis is held, not judged
+    /// with the offset's value alone.
+    pub(super) shifted: u16,
 }
 
 impl Written {
@@ -317,6 +323,7 @@ impl Written {
         values: [[f64::NAN; 9]; 6],
         unread: Vec::new(),
         moved: false,
+        shifted: 0,
     };
 
     /// The axes `axes` (their places' bits) of every offset, the values not known.
@@ -326,6 +333,7 @@ impl Written {
             values: [[f64::NAN; 9]; 6],
             unread: Vec::new(),
             moved: false,
+            shifted: 0,
         }
     }
 
@@ -337,6 +345,7 @@ impl Written {
     /// `later`'s writes, made after these: an axis it writes holds its value from then on.
     pub(super) fn then(&mut self, later: &Written) {
         self.moved |= later.moved;
+        self.shifted |= later.shifted;
         for &n in &later.unread {
             if !self.unread.contains(&n) {
                 self.unread.push(n);
@@ -1569,8 +1578,20 @@ impl Checker {
                 // each axis the code names, by a value known or not (`G52 X#1`)
                 let named = self.values.given() | self.values.unknown;
                 let (mut lost, mut why) = (0u16, None);
+                let (mut shifted, mut own) = (0u16, 0u16);
                 for a in crate::modal::places(crate::modal::axis_places(named)) {
-                    if let Err(not_known) = self.shift_of(code, a, before) {
+                    let result = self.shift_of(code, a, before);
+                    // (a zero not known to be the work system's where the program is called,
+                    // or here, not followed: Written::shifted; not by a value not known,
+                    // `G92 X#500`, said as before, erring on the side of the alarm)
+                    let value = self.values.get(AXES[a]).is_some();
+                    if code != 10 && value && result.is_err() {
+                        own |= 1 << a;
+                    }
+                    if code != 10 && value && (result.is_err() || self.shifts.total[a] != 0.0) {
+                        shifted |= 1 << a;
+                    }
+                    if let Err(not_known) = result {
                         // (a G10 leaves the local coordinate system as it was; any other
                         // shift not followed may have ended or set it)
                         let local_lost = code == 52 || code != 10 && self.shifts.local[a] != 0.0;
@@ -1581,6 +1602,14 @@ impl Checker {
                     }
                 }
                 self.shifts.settle();
+                if shifted != 0 {
+                    self.offsets_written.shifted |= own;
+                    let writes = Written {
+                        shifted,
+                        ..Default::default()
+                    };
+                    self.offset_writer(&writes, false);
+                }
                 if let Some(why) = why {
                     self.shift_note(&w.token(), lost, (b.line, w.column), &why);
                 }
