@@ -774,6 +774,36 @@ def test_a_g10_of_a_program_written_after_its_call_is_judged_with_its_value(
     assert said(program, _wo2(tmp_path)) == ([("TG601", 10, 5, expected)] if expected else [])
 
 
+PROFILE_800 = "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"
+
+
+@pytest.mark.parametrize("rest, expected", [
+    # (h6b: G55's X -100 (the IF taken) or -200: -800 or -900, the nearer said, as read)
+    ("IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X-200. / N5 M99", PROFILE_800),
+    # (e10: P#500 may name G55 or not: -100 or -200 again)
+    ("G10 L2 P#500 X-200. / M99", PROFILE_800),
+    # (the value written puts X-700. inside on one path: held)
+    ("IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X0. / N5 M99", None),
+    ("G10 L2 P#500 X0. / M99", None),
+    # (-200 surely written, then -150 or not: -900 or -850, the nearer said with its value)
+    ("G10 L2 P2 X-200. / IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X-150. / N5 M99",
+     "X goes to -850 in machine coordinates (work -700 + G55 offset -150 as a G10 before this "
+     "call wrote it)"),
+    # (three values (-100, -200, 0): one inside, held)
+    ("IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X-200. / N5 IF [#501 EQ 1] GOTO 6 / "
+     "G10 L2 P2 X0. / N6 M99", None),
+])
+def test_a_g10_that_may_not_run_keeps_the_overtravel_of_both_values(tmp_path, rest, expected):
+    """Review 60, F1 (h6b.nc, f5/e10.nc): O100, written after the main, writes G55's X by a
+    G10 that a condition may pass over, or whose P is not known; O1000's X-700. under G55
+    runs at -800 (the value before) or -900 (the one written): an alarm on both paths, said
+    (it was dropped as "a value not known"), with the value that puts it least far out;
+    held where one of the values puts it inside the travel."""
+    program = ("G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P100 / "
+               "G90 G55 / M98 P1000 / M30 / O100 / " + rest)
+    assert said(program, _wo2(tmp_path)) == ([("TG601", 10, 5, expected)] if expected else [])
+
+
 @pytest.mark.parametrize("flow", [
     # (a24c: the IF is false, X0. runs and GOTO 6 passes over N5's X-200.)
     "#1=0 / IF [#1 EQ 1] GOTO 5 / G10 L2 P2 X0. / GOTO 6 / N5 G10 L2 P2 X-200. / N6 G0 X0",
