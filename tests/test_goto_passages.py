@@ -868,6 +868,25 @@ def test_a_g92_of_a_program_written_before_the_main_holds_the_positions_after_it
     assert said(program, _wo2(tmp_path)) == ([("TG601", line, 5, expected)] if expected else [])
 
 
+@pytest.mark.parametrize("shift, expected", [
+    # (x2: G52 X0 Y0 is no shift: -900 said with the value written)
+    ("G52 X0 Y0", (11, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                       "a G10 before this call wrote it)")),
+    # (a shift cancelled before the G10: the same)
+    ("G52 X300. / G52 X0", (12, "X goes to -900 in machine coordinates (work -700 + G55 offset "
+                                "-200 as a G10 before this call wrote it)")),
+    # (a shift of 300 in force at the call: -600, held)
+    ("G52 X300.", None),
+])
+def test_a_zero_shift_does_not_stop_a_value_written_being_judged(tmp_path, shift, expected):
+    """Review 60, F6 (x2.nc): any G52 (even `G52 X0 Y0`, a cancel) marked the coordinates
+    moved for good, and no value a G10 wrote after it was judged: O1000's X-700. under the
+    G55 X-200 written runs at -900, an alarm lost. Only a shift not known to be zero holds."""
+    program = BODY + f"{shift} / G10 L2 P2 X-200. / G90 G55 / M98 P1000 / M30"
+    found = said(program, _wo2(tmp_path))
+    assert found == ([("TG601", expected[0], 5, expected[1])] if expected else [])
+
+
 @pytest.mark.parametrize("g10, expected", [
     # (a37: G55's X 0: X-700. inside, G1 X-780. beyond)
     ("G10 L2 P2 X0.", "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a G10 "

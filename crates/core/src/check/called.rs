@@ -920,7 +920,7 @@ impl Checker {
             };
             let mut seen = vec![*n];
             let own = w.value(work, place);
-            if own.is_some() && w.moved
+            if own.is_some() && (w.moved || w.shifted & 1 << place != 0)
                 || w.unread
                     .iter()
                     .any(|m| self.touches(*m, (work, place), &mut seen))

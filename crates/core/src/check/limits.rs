@@ -811,7 +811,15 @@ impl Checker {
                     }
                     self.offsets_rewritten(line, "G10 sets offsets");
                 }
-                52 | 92 if axes => {
+                // (a G52 moves the coordinates where it is not known to be zero: the axes
+                // Written::shifted holds, not every value a G10 writes after it; review 60
+                // F6: `G52 X0 Y0` / `G10 L2 P2 X-200.` runs X-700. under G55 at -900. A
+                // G92's shift is where the tool stands, which a G54-G59 selected since its
+                // last move changes: not followed so, every value held as before)
+                52 if axes => {
+                    self.offsets_rewritten(line, &format!("{} shifts the coordinates", w.token()))
+                }
+                92 if axes => {
                     self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
                 }
                 // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
