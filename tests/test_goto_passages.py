@@ -774,6 +774,36 @@ def test_a_g10_of_a_program_written_after_its_call_is_judged_with_its_value(
     assert said(program, _wo2(tmp_path)) == ([("TG601", 10, 5, expected)] if expected else [])
 
 
+PROFILE_800 = "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"
+
+
+@pytest.mark.parametrize("rest, expected", [
+    # (h6b: G55's X -100 (the IF taken) or -200: -800 or -900, the nearer said, as read)
+    ("IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X-200. / N5 M99", PROFILE_800),
+    # (e10: P#500 may name G55 or not: -100 or -200 again)
+    ("G10 L2 P#500 X-200. / M99", PROFILE_800),
+    # (the value written puts X-700. inside on one path: held)
+    ("IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X0. / N5 M99", None),
+    ("G10 L2 P#500 X0. / M99", None),
+    # (-200 surely written, then -150 or not: -900 or -850, the nearer said with its value)
+    ("G10 L2 P2 X-200. / IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X-150. / N5 M99",
+     "X goes to -850 in machine coordinates (work -700 + G55 offset -150 as a G10 before this "
+     "call wrote it)"),
+    # (three values (-100, -200, 0): one inside, held)
+    ("IF [#500 EQ 1] GOTO 5 / G10 L2 P2 X-200. / N5 IF [#501 EQ 1] GOTO 6 / "
+     "G10 L2 P2 X0. / N6 M99", None),
+])
+def test_a_g10_that_may_not_run_keeps_the_overtravel_of_both_values(tmp_path, rest, expected):
+    """Review 60, F1 (h6b.nc, f5/e10.nc): O100, written after the main, writes G55's X by a
+    G10 that a condition may pass over, or whose P is not known; O1000's X-700. under G55
+    runs at -800 (the value before) or -900 (the one written): an alarm on both paths, said
+    (it was dropped as "a value not known"), with the value that puts it least far out;
+    held where one of the values puts it inside the travel."""
+    program = ("G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P100 / "
+               "G90 G55 / M98 P1000 / M30 / O100 / " + rest)
+    assert said(program, _wo2(tmp_path)) == ([("TG601", 10, 5, expected)] if expected else [])
+
+
 @pytest.mark.parametrize("flow", [
     # (a24c: the IF is false, X0. runs and GOTO 6 passes over N5's X-200.)
     "#1=0 / IF [#1 EQ 1] GOTO 5 / G10 L2 P2 X0. / GOTO 6 / N5 G10 L2 P2 X-200. / N6 G0 X0",
@@ -813,6 +843,48 @@ def test_a_value_written_is_not_judged_with_after_the_coordinates_or_the_offset_
     assert said(program, _wo2(tmp_path)) == [("TG601", 11, 5, (
         "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a G10 before "
         "this call wrote it)"))]
+
+
+@pytest.mark.parametrize("shift, expected", [
+    # (w7, w11: where the main stands at the call, X0, becomes X-300: every work system moved
+    # by +300, X-700. under G55 runs at -500; the position at the call not followed: held)
+    ("G92 X-300.", None), ("G92 X-300. Y0", None),
+    # (w2: G52 X0 Y0 is no shift; w1: G68 R0. cancelled by G69: the profile's -800 true)
+    ("G52 X0 Y0", "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+    ("G68 X0 Y0 R0. / G69", "X goes to -800 in machine coordinates (work -700 + G55 offset "
+                            "-100.0)"),
+    # (wv5: a G92 of a value not known, said as before, erring on the side of the alarm)
+    ("G92 X#500", "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+])
+def test_a_g92_of_a_program_written_before_the_main_holds_the_positions_after_its_call(
+        tmp_path, shift, expected):
+    """Review 60, F5 (w7.nc, w11.nc): O1000, written before the main, does `G92 X-300.`; its
+    call moves every work system's zero by where the main stood, so O1001's X-700. under G55
+    after it is not at -800 (it was said: the profile's offsets trusted again after the
+    call). A zero shift (`G52 X0 Y0`) or a frame cancelled keeps the profile's -800 said."""
+    program = (f"{shift} / G0 Y0 / M99 / O1001 / G90 G55 G0 X-700. / M99 / O2000 / "
+               "G21 G17 G90 G54 / G0 X0 Y0 / M98 P1000 / G90 G55 / M98 P1001 / M30")
+    line = 15 if "G69" in shift else 14
+    assert said(program, _wo2(tmp_path)) == ([("TG601", line, 5, expected)] if expected else [])
+
+
+@pytest.mark.parametrize("shift, expected", [
+    # (x2: G52 X0 Y0 is no shift: -900 said with the value written)
+    ("G52 X0 Y0", (11, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                       "a G10 before this call wrote it)")),
+    # (a shift cancelled before the G10: the same)
+    ("G52 X300. / G52 X0", (12, "X goes to -900 in machine coordinates (work -700 + G55 offset "
+                                "-200 as a G10 before this call wrote it)")),
+    # (a shift of 300 in force at the call: -600, held)
+    ("G52 X300.", None),
+])
+def test_a_zero_shift_does_not_stop_a_value_written_being_judged(tmp_path, shift, expected):
+    """Review 60, F6 (x2.nc): any G52 (even `G52 X0 Y0`, a cancel) marked the coordinates
+    moved for good, and no value a G10 wrote after it was judged: O1000's X-700. under the
+    G55 X-200 written runs at -900, an alarm lost. Only a shift not known to be zero holds."""
+    program = BODY + f"{shift} / G10 L2 P2 X-200. / G90 G55 / M98 P1000 / M30"
+    found = said(program, _wo2(tmp_path))
+    assert found == ([("TG601", expected[0], 5, expected[1])] if expected else [])
 
 
 @pytest.mark.parametrize("g10, expected", [

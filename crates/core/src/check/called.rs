@@ -856,8 +856,23 @@ impl Checker {
             match self.written_later(&numbers, usize::from(work), usize::from(place)) {
                 // (none of them writes that offset's axis: as said)
                 None => self.found.push(f),
-                Some(value) if value.is_nan() => {}
-                Some(value) => {
+                Some(values) if values.iter().any(|v| v.0.is_nan()) => {}
+                Some(values) => {
+                    // (the values it may have, a G10 that may not run: held where one puts the
+                    // position inside the travel, else judged with the one that puts it
+                    // least far out, as read where that is the profile's; review 60 F1)
+                    let Some((low, high)) = self.travel.of_place(usize::from(place)) else {
+                        continue;
+                    };
+                    let out = |v: f64| (low - (at + v)).max(at + v - high).max(0.0);
+                    if values.iter().any(|&(v, _)| out(v) <= 1e-9) {
+                        continue;
+                    }
+                    let least = values.iter().min_by(|a, b| out(a.0).total_cmp(&out(b.0)));
+                    let Some(&(value, true)) = least else {
+                        self.found.push(f);
+                        continue;
+                    };
                     // (the message's tail, naming the call, kept)
                     let tail = self
                         .travel
@@ -889,25 +904,50 @@ impl Checker {
     /// erring on the side of the alarm) (review 59a F1: a literal `G10 L2
     /// P2 X-200.` of an O100 written after the main that calls it before the call of O2000
     /// runs O2000's `X-700.` at -900, as the same O100 written before the main does).
-    fn written_later(&self, numbers: &[i64], work: usize, place: usize) -> Option<f64> {
+    /// Where the last write of one may not have run ([`Written::maybe`]), the values it may
+    /// have (each with whether a G10 wrote it, false for the profile's): review 60 F1.
+    fn written_later(
+        &self,
+        numbers: &[i64],
+        work: usize,
+        place: usize,
+    ) -> Option<Vec<(f64, bool)>> {
         let writers = &self.offset_writers;
-        let mut value = None;
+        let mut values: Option<Vec<(f64, bool)>> = None;
         for n in numbers {
             let Some((w, _)) = writers.get(n) else {
                 continue;
             };
             let mut seen = vec![*n];
             let own = w.value(work, place);
-            if own.is_some() && w.moved
+            if own.is_some() && (w.moved || w.shifted & 1 << place != 0)
                 || w.unread
                     .iter()
                     .any(|m| self.touches(*m, (work, place), &mut seen))
             {
-                return Some(f64::NAN);
+                return Some(vec![(f64::NAN, true)]);
             }
-            value = own.or(value);
+            if let Some((before, alt)) = w.maybe_of(work, place) {
+                let mut now = if before.is_nan() {
+                    values.take().unwrap_or_else(|| {
+                        let profile = self
+                            .config
+                            .work_offsets
+                            .iter()
+                            .find(|&&(g, a, _)| g == work as i64 && a == AXES[place])
+                            .map_or(f64::NAN, |&(_, _, v)| v.to_f64());
+                        vec![(profile, false)]
+                    })
+                } else {
+                    vec![(before, true)]
+                };
+                now.push((alt, true));
+                values = Some(now);
+            } else if let Some(value) = own {
+                values = Some(vec![(value, true)]);
+            }
         }
-        value
+        values
     }
 
     /// Whether the program `n` of the file, or one it calls not read there (through any
@@ -935,10 +975,15 @@ impl Checker {
     /// known it may stand elsewhere: kept, not said (review 57e F1); a write of another
     /// offset or axis, or of a tool offset, changes nothing (review 58a F3).
     fn offset_now(&self, f: &Finding) -> Now {
-        if !self.offsets_written.any() {
+        if !self.offsets_written.any() && self.offsets_written.shifted == 0 {
             return Now::AsRead;
         }
         match f.placed {
+            // (a G52 or G92 of the caller's run moved that axis's zero by an amount not
+            // known to be zero: review 60 F5)
+            Placed::Offset { place, .. } if self.offsets_written.shifted & 1 << place != 0 => {
+                Now::Unknown
+            }
             Placed::Offset {
                 place, work, at, ..
             } => {

@@ -308,6 +308,19 @@ pub(super) struct Written {
     /// position is no longer the work position plus the value written, so none is judged
     /// with it (review 59a F5: `G68 X0 Y0 R180.` runs `X-700.` at X700).
     pub(super) moved: bool,
+    /// The axes (their places' bits) whose zero a G52 or G92 (a lathe's G50) moved by an
+    /// amount not known to be zero, not followed where the program is called (review 60 F5:
+    /// an O100 written before the main whose `G92 X-300.` shifts every work system by where
+    /// the main stood): a position under a work offset on such an axis is held, not judged
+    /// with the offset's value alone.
+    pub(super) shifted: u16,
+    /// The axes of each offset whose last write may or may not have run: a G10 L2 of numbers
+    /// after a jump or condition of its program, or one whose P is not known (review 60 F1:
+    /// `IF [#500 EQ 1] GOTO 5` / `G10 L2 P2 X-200.` leaves G55's X at its value before or
+    /// at -200). The value is then the one before (`values`, NaN where that is the one before
+    /// the program) or the one written (`alt`); [`Written::value`] has it not known.
+    pub(super) maybe: [u16; 6],
+    pub(super) alt: [[f64; 9]; 6],
 }
 
 impl Written {
@@ -317,6 +330,9 @@ impl Written {
         values: [[f64::NAN; 9]; 6],
         unread: Vec::new(),
         moved: false,
+        shifted: 0,
+        maybe: [0; 6],
+        alt: [[0.0; 9]; 6],
     };
 
     /// The axes `axes` (their places' bits) of every offset, the values not known.
@@ -326,6 +342,9 @@ impl Written {
             values: [[f64::NAN; 9]; 6],
             unread: Vec::new(),
             moved: false,
+            shifted: 0,
+            maybe: [0; 6],
+            alt: [[0.0; 9]; 6],
         }
     }
 
@@ -337,19 +356,62 @@ impl Written {
     /// `later`'s writes, made after these: an axis it writes holds its value from then on.
     pub(super) fn then(&mut self, later: &Written) {
         self.moved |= later.moved;
+        self.shifted |= later.shifted;
         for &n in &later.unread {
             if !self.unread.contains(&n) {
                 self.unread.push(n);
             }
         }
         for g in 0..6 {
-            self.axes[g] |= later.axes[g];
             for i in 0..9 {
-                if later.axes[g] & 1 << i != 0 {
+                let bit = 1 << i;
+                if later.axes[g] & bit == 0 {
+                    continue;
+                }
+                let had = self.axes[g] & bit != 0;
+                if later.maybe[g] & bit == 0 || !later.values[g][i].is_nan() {
+                    // (written, or "this value or that one" whatever came before)
                     self.values[g][i] = later.values[g][i];
+                    self.maybe[g] = self.maybe[g] & !bit | later.maybe[g] & bit;
+                    self.alt[g][i] = later.alt[g][i];
+                } else if self.maybe[g] & bit != 0 || had && self.values[g][i].is_nan() {
+                    // (a third value, or one not known before it: not known)
+                    self.values[g][i] = f64::NAN;
+                    self.maybe[g] &= !bit;
+                } else {
+                    // (the value before, kept, or the one written)
+                    self.maybe[g] |= bit;
+                    self.alt[g][i] = later.alt[g][i];
+                    if !had {
+                        self.values[g][i] = f64::NAN;
+                    }
                 }
             }
+            self.axes[g] |= later.axes[g];
         }
+    }
+
+    /// Where offset G`work`'s (54-59) last write on the axis of place `i` may not have run
+    /// ([`Written::maybe`]): the value before it (NaN: the one before the program) and the
+    /// one it writes.
+    pub(super) fn maybe_of(&self, work: usize, i: usize) -> Option<(f64, f64)> {
+        let g = work.checked_sub(54).filter(|&g| g < 6)?;
+        (i < 9 && self.maybe[g] & 1 << i != 0).then(|| (self.values[g][i], self.alt[g][i]))
+    }
+
+    /// The axes `axes` of every offset written with the numbers `alt` by a G10 whose P is
+    /// not known here: each offset keeps its value or takes the one written
+    /// ([`Written::maybe`]), where `alt` is known.
+    pub(super) fn maybe_every(axes: u16, alt: Option<[f64; 9]>) -> Written {
+        let mut writes = Written::on_every(axes);
+        if let Some(alt) = alt {
+            let known = (0..9)
+                .filter(|&i| !alt[i].is_nan())
+                .fold(0, |m, i| m | 1 << i);
+            writes.maybe = [axes & known; 6];
+            writes.alt = [alt; 6];
+        }
+        writes
     }
 
     /// The axes written of offset G54-G59 number `g` (0-5; every one where None) written
@@ -362,6 +424,7 @@ impl Written {
                         self.values[k][i] = f64::NAN;
                     }
                 }
+                self.maybe[k] = 0;
             }
         }
     }
@@ -372,6 +435,9 @@ impl Written {
         let g = work.checked_sub(54).filter(|&g| g < 6)?;
         if self.axes[g] & 1 << i == 0 {
             return None;
+        }
+        if self.maybe[g] & 1 << i != 0 {
+            return Some(f64::NAN);
         }
         Some(self.values[g].get(i).copied().unwrap_or(f64::NAN))
     }
@@ -560,6 +626,14 @@ impl Checker {
                     && !self.machine.state.incremental
                     && !self.config.diameter
                     && b.words.iter().all(|w| w.expression.is_empty());
+                if !known && l == 2 && b.words.iter().all(|w| w.expression.is_empty()) {
+                    // (after a jump or condition: the value before or the one written)
+                    if let Some(alt) = self.g10_numbers(b) {
+                        let g10 = Written::maybe_every(axes, Some(alt));
+                        writes.maybe[g] = g10.maybe[g];
+                        writes.alt[g] = alt;
+                    }
+                }
                 if known {
                     let factor = self.to_profile_units(false);
                     for (k, w) in b.words.iter().enumerate() {
@@ -578,9 +652,44 @@ impl Checker {
             }
             // (an L2 or L20 of a P not known, or P0, the external offset: the axes it
             // names of any offset, or of every one)
+            (Some(2), None) => Written::maybe_every(axes, self.g10_numbers(b)),
             (Some(2 | 20), _) => Written::on_every(axes),
             _ => Written::ALL,
         }
+    }
+
+    /// The values (the profile's units) a G10 L2's axis words write, where each is a number
+    /// (no #-expression), under G90, on a mill, with no rotation: NaN on an axis it does not
+    /// name ([`Written::maybe`]).
+    fn g10_numbers(&self, b: &BlockView<'_>) -> Option<[f64; 9]> {
+        let literal = b.words.iter().all(|w| {
+            w.letter == b'L'
+                || w.letter == b'P'
+                || w.letter == b'G'
+                || w.letter == b'N'
+                || w.expression.is_empty()
+        });
+        let rotation = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'R' && w.index.is_empty());
+        if !literal || rotation || self.machine.state.incremental || self.config.diameter {
+            return None;
+        }
+        let factor = self.to_profile_units(false);
+        let mut values = [f64::NAN; 9];
+        for (k, w) in b.words.iter().enumerate() {
+            let i = w
+                .index
+                .is_empty()
+                .then(|| crate::modal::axis_index(w.letter))
+                .flatten()
+                .filter(|&i| i < 9);
+            if let Some(i) = i {
+                values[i] = self.readable[k]?.to_f64() * factor;
+            }
+        }
+        Some(values)
     }
 
     /// Whether a G10's L or P is a #-expression whose value here may not be the one another
@@ -685,7 +794,15 @@ impl Checker {
                     let axes = writes.axes.iter().fold(0, |all, a| all | a);
                     if expression {
                         self.g10_expression |= axes;
-                        self.offset_writer(&Written::on_every(axes), false);
+                        // (an L2 written as a number: each offset its value or the one written)
+                        let l2 = b.words.iter().enumerate().any(|(k, w)| {
+                            w.letter == b'L'
+                                && w.index.is_empty()
+                                && w.expression.is_empty()
+                                && self.readable[k] == Some(Dec::from_int(2))
+                        });
+                        let alt = self.g10_numbers(b).filter(|_| l2);
+                        self.offset_writer(&Written::maybe_every(axes, alt), false);
                     } else {
                         if local {
                             self.g10_local |= axes;
@@ -694,7 +811,15 @@ impl Checker {
                     }
                     self.offsets_rewritten(line, "G10 sets offsets");
                 }
-                52 | 92 if axes => {
+                // (a G52 moves the coordinates where it is not known to be zero: the axes
+                // Written::shifted holds, not every value a G10 writes after it; review 60
+                // F6: `G52 X0 Y0` / `G10 L2 P2 X-200.` runs X-700. under G55 at -900. A
+                // G92's shift is where the tool stands, which a G54-G59 selected since its
+                // last move changes: not followed so, every value held as before)
+                52 if axes => {
+                    self.offsets_rewritten(line, &format!("{} shifts the coordinates", w.token()))
+                }
+                92 if axes => {
                     self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
                 }
                 // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
@@ -1578,8 +1703,20 @@ impl Checker {
                 // each axis the code names, by a value known or not (`G52 X#1`)
                 let named = self.values.given() | self.values.unknown;
                 let (mut lost, mut why) = (0u16, None);
+                let (mut shifted, mut own) = (0u16, 0u16);
                 for a in crate::modal::places(crate::modal::axis_places(named)) {
-                    if let Err(not_known) = self.shift_of(code, a, before) {
+                    let result = self.shift_of(code, a, before);
+                    // (a zero not known to be the work system's where the program is called,
+                    // or here, not followed: Written::shifted; not by a value not known,
+                    // `G92 X#500`, said as before, erring on the side of the alarm)
+                    let value = self.values.get(AXES[a]).is_some();
+                    if code != 10 && value && result.is_err() {
+                        own |= 1 << a;
+                    }
+                    if code != 10 && value && (result.is_err() || self.shifts.total[a] != 0.0) {
+                        shifted |= 1 << a;
+                    }
+                    if let Err(not_known) = result {
                         // (a G10 leaves the local coordinate system as it was; any other
                         // shift not followed may have ended or set it)
                         let local_lost = code == 52 || code != 10 && self.shifts.local[a] != 0.0;
@@ -1590,6 +1727,14 @@ impl Checker {
                     }
                 }
                 self.shifts.settle();
+                if shifted != 0 {
+                    self.offsets_written.shifted |= own;
+                    let writes = Written {
+                        shifted,
+                        ..Default::default()
+                    };
+                    self.offset_writer(&writes, false);
+                }
                 if let Some(why) = why {
                     self.shift_note(&w.token(), lost, (b.line, w.column), &why);
                 }
