@@ -2345,13 +2345,16 @@ impl Checker {
                         0
                     };
                     if out != 0 && out != self.outside[i] {
-                        let message = format!(
+                        let mut message = format!(
                             "{} goes to {} in machine coordinates (work {} + G{work} offset \
                                  {offset}), outside the travel {low} to {high}",
                             axis as char,
                             round6(machine_at),
                             round6(at)
                         );
+                        if let Some(w) = &self.work_call {
+                            message.push_str(&w.named(self.in_hand, work));
+                        }
                         let placed = super::Placed::Offset {
                             place: i as u8,
                             work: work as u8,
