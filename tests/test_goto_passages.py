@@ -914,3 +914,29 @@ def test_a_program_after_a_body_read_under_its_call_is_read_as_its_own(tmp_path)
                "O5000 / G10 L2 P#4 X0. / M99")
     assert said(program, _wo2(tmp_path)) == [
         ("TG601", 15, 4, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]
+
+
+@pytest.mark.parametrize("program, expected", [
+    # (g1: the main's G52 left on at its M30; g2: an uncalled O3000's at its M99; g4: the
+    # later program merged by its own units code; g6: a first program ending in M99)
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / M30 / O2000 / G90 G55 G0 X-700. / M99",
+     [("TG601", 8, 12)]),
+    ("G21 G17 G90 G55 / G0 X0 Y0 / M30 / O3000 / G52 X10. / M99 / O2000 / G90 G55 G0 X-700. / "
+     "M99", [("TG601", 10, 12)]),
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / M30 / O4000 / G21 G90 G55 / G0 X-700. / M30",
+     [("TG601", 9, 4)]),
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / M99 / O2000 / G90 G55 G0 X-700. / M99",
+     [("TG601", 8, 12)]),
+    # (h1, h3: called by the program that has the G52 on, before or after it: as before)
+    ("G21 G17 G90 G55 / G52 X-100. / G0 X0 Y0 / M98 P2000 / M30 / O2000 / G0 X-700. / M99", []),
+    # (the skip switch on: the main runs on into O2000 under its G52: as before)
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / /M30 / O2000 / G90 G55 G0 X-700. / M99", []),
+])
+def test_a_g52_left_on_by_an_earlier_program_holds_no_later_program(tmp_path, program,
+                                                                     expected):
+    """Review 59a, F3: each program of the file is read from the control's reset state
+    (docs/dialects.md, "Several programs in one file"): a G52 an earlier program left on at
+    its end (M30 or M99) is not the later program's, whose `G90 G55 G0 X-700.` is X-800, said
+    (the offsets were taken as lost for every later program). A program called by the one
+    with the G52 on runs under it, as before."""
+    assert errors(program, _wo2(tmp_path)) == expected

@@ -1854,6 +1854,22 @@ impl Checker {
         };
     }
 
+    /// A program no call before it names begins (not run on into by the block skip switch):
+    /// it is read from the control's reset state, as a program of its own, not under a G52
+    /// (or a local shift not known) the program before left at its end (review 59a, F3:
+    /// `G52 X10.` / `M30` / `O2000` / `G90 G55 G0 X-700.` was no "X goes to -800", the
+    /// offsets taken as lost for every later program). Its own findings are read apart
+    /// (crate::check::called): a call of it under a shift judges it there.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn shifts_reset(&mut self) {
+        let noted = self.shifts.noted;
+        self.shifts = Shifts {
+            noted,
+            ..Shifts::default()
+        };
+    }
+
     /// The shift in force at a call, in the spans' coordinates: None where a local shift
     /// is not known.
     pub(super) fn call_shift(&self) -> Option<[f64; 9]> {

@@ -672,6 +672,10 @@ impl Checker {
         }
         if let Some(n) = number.filter(|n| !self.call_units.contains_key(n)) {
             if self.config.family == Family::MacroB {
+                // (from the reset state: no G52 the program before left on, review 59a F3)
+                if !self.end_skippable && self.shifts_on() {
+                    self.shifts_reset();
+                }
                 // (its caller, not the program before it, selects the work offset it runs
                 // under: not known until it writes its own G54-G59; review 56e, F6) -- unless
                 // the end before it is under the `/` switch: with the switch on, the program
