@@ -889,9 +889,9 @@ def test_a_subprogram_written_after_its_call_runs_under_the_call_s_offset(tmp_pa
 
 
 @pytest.mark.parametrize("main", [
-    # (c1: a G10 before the call; c6: a G52; c9: a call under G91, the body read in G90;
-    # a5: two calls under G55 and G54: not known which, as before)
-    "G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P2 X-200. / M98 P2000 / M30",
+    # (c1: a G10 of a value not known before the call; c6: a G52; c9: a call under G91, the
+    # body read in G90; a5: two calls under G55 and G54: not known which, as before)
+    "G21 G17 G90 G55 / G0 X0 Y0 / G91 G10 L2 P2 X-200. / G90 / M98 P2000 / M30",
     "G21 G17 G90 G55 / G0 X0 Y0 / G52 X10. / M98 P2000 / M30",
     "G21 G17 G90 G55 / G0 X0 Y0 / G91 / M98 P2000 / G90 / M30",
     "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G54 / M98 P2000 / M30",
@@ -940,3 +940,52 @@ def test_a_g52_left_on_by_an_earlier_program_holds_no_later_program(tmp_path, pr
     (the offsets were taken as lost for every later program). A program called by the one
     with the G52 on runs under it, as before."""
     assert errors(program, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (k1: G55's X written -200: X-700. at -900)
+    ("G10 L2 P2 X-200. / G0 X-700. / M30",
+     [("TG601", 6, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a "
+                      "G10 before wrote it)")]),
+    # (k2: written 0: X-700. inside, X-780. beyond)
+    ("G10 L2 P2 X0. / G0 X-700. / G0 X-780. / M30",
+     [("TG601", 7, 4, "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a "
+                      "G10 before wrote it)")]),
+    # (k3: another offset written: G55's profile value)
+    ("G10 L2 P1 X-200. / G0 X-700. / M30",
+     [("TG601", 6, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (k4: under G91 the value is added; k5: set again by its variable; not known, as before)
+    ("G91 G10 L2 P2 X-200. / G90 G0 X-700. / M30", []),
+    ("G10 L2 P2 X-200. / #5241=0. / G0 X-700. / M30", []),
+    # (a condition that may jump over the G10: its value not known, review 59a F2)
+    ("IF [#5 EQ 1] GOTO 5 / G10 L2 P2 X-200. / N5 G0 X-700. / M30", []),
+    # (c1: a body written after the call runs under the value its caller wrote, F12)
+    ("G10 L2 P2 X-200. / M98 P2000 / M30 / O2000 / G0 X-700. / M99",
+     [("TG601", 9, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a "
+                      "G10 before wrote it)")]),
+    ("G10 L2 P2 X0. / M98 P2000 / M30 / O2000 / G0 X-700. / M99", []),
+])
+def test_a_program_s_own_moves_after_its_g10_are_judged_with_the_value_written(
+        tmp_path, blocks, expected):
+    """Review 59a, F8 (k1-k5, c1): a `G10 L2 P2` of numbers under G90, surely run, sets G55's
+    X to the value written (FANUC 0i-MF Operator's Manual, "Changing workpiece coordinate
+    system"): the program's own moves after it are judged with it (they were not compared:
+    the G10 made every offset not known for the rest of the program)."""
+    assert said("G21 G17 G90 G55 / G0 X0 Y0 / " + blocks, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (r1: O2000's own, after the main's excursion at X-800: said too)
+    ("G0 X-700. / M30 / O2000 / G90 G55 / G0 X-700. / M99", [("TG601", 5, 4), ("TG601", 9, 4)]),
+    # (r2: the later program merged by its units code)
+    ("G0 X-700. / M30 / O2000 / G21 G90 G55 / G0 X-700. / M30",
+     [("TG601", 5, 4), ("TG601", 9, 4)]),
+    # (with the skip switch on the main runs on into O2000: one excursion, as before)
+    ("G0 X-700. / /M30 / O2000 / G90 G55 / G0 X-700. / M99", [("TG601", 5, 4)]),
+])
+def test_an_excursion_of_one_program_holds_no_overtravel_of_the_next(tmp_path, blocks,
+                                                                     expected):
+    """Review 59a, F9 (r1, r2): an excursion beyond the travel is one run's: a position outside
+    at the end of one program is not the start of one of the next program's, whose own
+    first position beyond the travel is said (it was taken for the same excursion)."""
+    assert errors("G21 G17 G90 G55 / G0 X0 Y0 / " + blocks, _wo2(tmp_path)) == expected

@@ -537,6 +537,7 @@ impl Checker {
             CallWork {
                 work,
                 incremental: self.machine.state.incremental,
+                written: self.offsets_written.clone(),
                 call,
                 line: b.line,
             }
@@ -545,7 +546,8 @@ impl Checker {
             .entry(number)
             .and_modify(|before| {
                 let same = matches!((&*before, &here), (Some(a), Some(b))
-                    if a.work == b.work && a.incremental == b.incremental);
+                    if a.work == b.work && a.incremental == b.incremental
+                        && a.written.same(&b.written));
                 if !same {
                     *before = None;
                 }
@@ -594,6 +596,7 @@ impl Checker {
             lost_before: self.offsets_lost,
             outside_before: self.outside,
         };
+        self.offsets_written = c.written.clone();
         self.work = Some(w.work);
         self.offsets_lost = false;
         self.outside = [0; 9];
@@ -641,6 +644,13 @@ impl Checker {
     /// control's start units the profile assumes).
     pub(super) fn called_units(&mut self, b: &BlockView<'_>) {
         self.work_call_end();
+        // (an excursion beyond the travel is one run's: the program before's last position
+        // outside holds no first one of this program's, review 59a F9: `G90 G55` / `G0 X-700.`
+        // / `M30` / `O2000` / `G90 G55` / `G0 X-700.` said only the first) -- but with the
+        // block skip switch on, the program before runs on into it
+        if !self.end_skippable {
+            self.outside = [0; 9];
+        }
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
         self.early_merge();
@@ -5171,6 +5181,9 @@ pub(super) struct OpenBlock {
 pub(super) struct CallWork {
     work: i64,
     incremental: bool,
+    /// The offsets a G10 of the caller's run wrote before the call, values known
+    /// ([`Checker::offsets_written`]; review 59a F8).
+    written: super::limits::Written,
     call: String,
     line: usize,
 }
