@@ -913,3 +913,153 @@ def test_an_excursion_is_judged_at_its_farthest_position_with_the_value_written(
         messages = [f.message for f in Checker(prof, "<input>").run(
             parse_text(text, prof.dialect, errors="collect")) if f.severity == "error"]
         assert "its position of line 4 there" in messages[0]
+
+
+# the main, O1000 (lines 2-5), calls O2000 written after it (line 6 on); G55 is X-100
+AFTER = "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / M30 / O2000 / "
+NAMED = ("O2000 runs as called by M98 P2000 of line 5: a subprogram written after its call runs "
+         "under the work offset in force there")
+
+
+@pytest.mark.parametrize("body, expected", [
+    # (a1: the usual FANUC layout; a4: with its own G90; a7: its own G55; a8: beyond either way)
+    ("G0 X-700. / M99", [("TG601", 8, 4, "X goes to -800 in machine coordinates (work -700 + "
+                          "G55 offset -100.0)")]),
+    ("G90 G0 X-700. / M99", [("TG601", 8, 8, "X goes to -800 in machine coordinates (work -700 "
+                              "+ G55 offset -100.0)")]),
+    ("G90 G55 G0 X-700. / M99", [("TG601", 8, 12, "X goes to -800 in machine coordinates (work "
+                                  "-700 + G55 offset -100.0)")]),
+    # (d1: each excursion, as inline)
+    ("G0 X-700. / G0 X100. / G0 X-720. / M99",
+     [("TG601", 8, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+      ("TG601", 10, 4, "X goes to -820 in machine coordinates (work -720 + G55 offset -100.0)")]),
+    # (c4: its own G54: X-700 inside)
+    ("G54 / G0 X-700. / M99", []),
+    # (d2, d3: its own G10 or G52 before the move: the offsets lost as inline)
+    ("G10 L2 P2 X0. / G0 X-700. / M99", []),
+    ("G52 X-100. / G0 X-700. / M99", []),
+    # (c2: a program it calls, written after it, under the same G55)
+    ("G0 X0 / M98 P3000 / M99 / O3000 / G0 X-750. / M99",
+     [("TG601", 12, 4, "X goes to -850 in machine coordinates (work -750 + G55 offset -100.0)")]),
+])
+def test_a_subprogram_written_after_its_call_runs_under_the_call_s_offset(tmp_path, body,
+                                                                         expected):
+    """Review 59a, F12 (a1, a4, a7, d1-d3, c2, c4): O1000 selects G55 and calls O2000, written
+    after its M30, the usual FANUC layout. A FANUC's M98 changes no modal state, the work
+    offset is modal (0i-MF Operator's Manual, "Subprogram call (M98)"): O2000's X-700. runs
+    at X-800, beyond the travel, said at its line naming the call (it was silent, where the
+    same body written before the main, or inline, was said)."""
+    found = said(AFTER + body, _wo2(tmp_path))
+    assert found == expected
+    text = "%\nO1000\n" + (AFTER + body).replace(" / ", "\n") + "\n%\n"
+    prof = load_profile(_wo2(tmp_path))
+    messages = [f.message for f in Checker(prof, "<input>").run(
+        parse_text(text, prof.dialect, errors="collect")) if f.severity == "error"]
+    for m in messages[:1]:
+        assert NAMED in m or NAMED.replace("O2000", "O3000").replace("P2000 of line 5",
+                                                                    "P3000 of line 9") in m
+
+
+@pytest.mark.parametrize("main", [
+    # (c1: a G10 of a value not known before the call; c6: a G52; c9: a call under G91, the
+    # body read in G90; a5: two calls under G55 and G54: not known which, as before)
+    "G21 G17 G90 G55 / G0 X0 Y0 / G91 G10 L2 P2 X-200. / G90 / M98 P2000 / M30",
+    "G21 G17 G90 G55 / G0 X0 Y0 / G52 X10. / M98 P2000 / M30",
+    "G21 G17 G90 G55 / G0 X0 Y0 / G91 / M98 P2000 / G90 / M30",
+    "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G54 / M98 P2000 / M30",
+    # (a6: under G54, X-700 inside)
+    "G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / M30",
+    # (a G66 runs O2000 at each later move, here under G54: not the G66 block's G55)
+    "G21 G17 G90 G55 / G0 X0 Y0 / G66 P2000 / G54 / G0 X10. / G67 / M30",
+])
+def test_a_subprogram_written_after_calls_not_known_is_read_as_before(tmp_path, main):
+    """Review 59a, F12: where the offset at the calls is not the profile's (a G10, a G52
+    before the call), the calls disagree, or the body would be read in another distance
+    mode than its call's, its machine positions are not judged (as before)."""
+    assert said(main + " / O2000 / G0 X-700. / M99", _wo2(tmp_path)) == []
+
+
+def test_a_program_after_a_body_read_under_its_call_is_read_as_its_own(tmp_path):
+    """Review 59a, F12 (fuzz f024): the state read before a body run under its calls' offset
+    is given back where it ends: a later main's own `G90 G55` / `G1 X-780.` is -880, said
+    (what O3000's run wrote had silenced it)."""
+    program = ("G90 G55 / G65 P3000 I2. / M99 / O3000 / G65 P5000 I2. / G90 G55 / M98 P5000 / "
+               "M99 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / G90 G55 / G1 X-780. F100. / M30 / "
+               "O5000 / G10 L2 P#4 X0. / M99")
+    assert said(program, _wo2(tmp_path)) == [
+        ("TG601", 15, 4, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]
+
+
+@pytest.mark.parametrize("program, expected", [
+    # (g1: the main's G52 left on at its M30; g2: an uncalled O3000's at its M99; g4: the
+    # later program merged by its own units code; g6: a first program ending in M99)
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / M30 / O2000 / G90 G55 G0 X-700. / M99",
+     [("TG601", 8, 12)]),
+    ("G21 G17 G90 G55 / G0 X0 Y0 / M30 / O3000 / G52 X10. / M99 / O2000 / G90 G55 G0 X-700. / "
+     "M99", [("TG601", 10, 12)]),
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / M30 / O4000 / G21 G90 G55 / G0 X-700. / M30",
+     [("TG601", 9, 4)]),
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / M99 / O2000 / G90 G55 G0 X-700. / M99",
+     [("TG601", 8, 12)]),
+    # (h1, h3: called by the program that has the G52 on, before or after it: as before)
+    ("G21 G17 G90 G55 / G52 X-100. / G0 X0 Y0 / M98 P2000 / M30 / O2000 / G0 X-700. / M99", []),
+    # (the skip switch on: the main runs on into O2000 under its G52: as before)
+    ("G21 G17 G90 G55 / G52 X10. / G0 X0 Y0 / /M30 / O2000 / G90 G55 G0 X-700. / M99", []),
+])
+def test_a_g52_left_on_by_an_earlier_program_holds_no_later_program(tmp_path, program,
+                                                                     expected):
+    """Review 59a, F3: each program of the file is read from the control's reset state
+    (docs/dialects.md, "Several programs in one file"): a G52 an earlier program left on at
+    its end (M30 or M99) is not the later program's, whose `G90 G55 G0 X-700.` is X-800, said
+    (the offsets were taken as lost for every later program). A program called by the one
+    with the G52 on runs under it, as before."""
+    assert errors(program, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (k1: G55's X written -200: X-700. at -900)
+    ("G10 L2 P2 X-200. / G0 X-700. / M30",
+     [("TG601", 6, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a "
+                      "G10 before wrote it)")]),
+    # (k2: written 0: X-700. inside, X-780. beyond)
+    ("G10 L2 P2 X0. / G0 X-700. / G0 X-780. / M30",
+     [("TG601", 7, 4, "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a "
+                      "G10 before wrote it)")]),
+    # (k3: another offset written: G55's profile value)
+    ("G10 L2 P1 X-200. / G0 X-700. / M30",
+     [("TG601", 6, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (k4: under G91 the value is added; k5: set again by its variable; not known, as before)
+    ("G91 G10 L2 P2 X-200. / G90 G0 X-700. / M30", []),
+    ("G10 L2 P2 X-200. / #5241=0. / G0 X-700. / M30", []),
+    # (a condition that may jump over the G10: its value not known, review 59a F2)
+    ("IF [#5 EQ 1] GOTO 5 / G10 L2 P2 X-200. / N5 G0 X-700. / M30", []),
+    # (c1: a body written after the call runs under the value its caller wrote, F12)
+    ("G10 L2 P2 X-200. / M98 P2000 / M30 / O2000 / G0 X-700. / M99",
+     [("TG601", 9, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as a "
+                      "G10 before wrote it)")]),
+    ("G10 L2 P2 X0. / M98 P2000 / M30 / O2000 / G0 X-700. / M99", []),
+])
+def test_a_program_s_own_moves_after_its_g10_are_judged_with_the_value_written(
+        tmp_path, blocks, expected):
+    """Review 59a, F8 (k1-k5, c1): a `G10 L2 P2` of numbers under G90, surely run, sets G55's
+    X to the value written (FANUC 0i-MF Operator's Manual, "Changing workpiece coordinate
+    system"): the program's own moves after it are judged with it (they were not compared:
+    the G10 made every offset not known for the rest of the program)."""
+    assert said("G21 G17 G90 G55 / G0 X0 Y0 / " + blocks, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (r1: O2000's own, after the main's excursion at X-800: said too)
+    ("G0 X-700. / M30 / O2000 / G90 G55 / G0 X-700. / M99", [("TG601", 5, 4), ("TG601", 9, 4)]),
+    # (r2: the later program merged by its units code)
+    ("G0 X-700. / M30 / O2000 / G21 G90 G55 / G0 X-700. / M30",
+     [("TG601", 5, 4), ("TG601", 9, 4)]),
+    # (with the skip switch on the main runs on into O2000: one excursion, as before)
+    ("G0 X-700. / /M30 / O2000 / G90 G55 / G0 X-700. / M99", [("TG601", 5, 4)]),
+])
+def test_an_excursion_of_one_program_holds_no_overtravel_of_the_next(tmp_path, blocks,
+                                                                     expected):
+    """Review 59a, F9 (r1, r2): an excursion beyond the travel is one run's: a position outside
+    at the end of one program is not the start of one of the next program's, whose own
+    first position beyond the travel is said (it was taken for the same excursion)."""
+    assert errors("G21 G17 G90 G55 / G0 X0 Y0 / " + blocks, _wo2(tmp_path)) == expected

@@ -75,7 +75,8 @@ def test_an_axis_the_offset_does_not_list_is_not_compared() -> None:
 @pytest.mark.parametrize(("shift", "why"), [
     ("G92 X0 Y0", "G92 shifts the coordinates"),
     ("G52 X10.", "G52 shifts the coordinates"),
-    ("G10 L2 P1 X-100.", "G10 sets offsets"),
+    # (a G10 whose value is not known: under G91 it adds to the offset)
+    ("G91 G10 L2 P1 X-100.", "G10 sets offsets"),
     ("G54.1 P1", "G54.1 selects an offset the profile does not give"),
     ("M98 P1000", "a jump or call the checker does not follow"),
 ])
@@ -84,6 +85,26 @@ def test_after_a_shift_the_profile_cannot_know_positions_are_not_compared(shift:
     found, checker = check(f"G54 G00 X0 Y0\n{shift}\nG54 G00 X-400. Y0", with_offsets())
     assert found == []
     assert checker.stats.travel_not == [f"from line 5 on: {why} (the offsets may have changed)"]
+
+
+@pytest.mark.parametrize(("g10", "expected"), [
+    # G54's X written -100: X-400. runs at -500, inside
+    ("G10 L2 P1 X-100.", []),
+    # written -400, the profile's: X-400. runs at -800, said with the value written
+    ("G10 L2 P1 X-400.", ["X goes to -800 in machine coordinates (work -400 + G54 offset -400 "
+                          "as a G10 before wrote it)"]),
+    # G55's X written: G54's positions as the profile's make them (X-450. at -850)
+    ("G10 L2 P2 X0.", ["X goes to -850 in machine coordinates (work -450 + G54 offset -400.0)"]),
+])
+def test_a_g10_of_a_value_known_judges_the_program_s_own_moves_after_it(
+        g10: str, expected: list[str]) -> None:
+    """Review 59a, F8: a `G10 L2 Pn` of numbers under G90 sets that offset's axis to the value
+    written (FANUC 0i-MF Operator's Manual, "Changing workpiece coordinate system"): the
+    program's own moves after it are judged with it, not left out of the comparison."""
+    x = "X-450." if "P2" in g10 else "X-400."
+    found, checker = check(f"G54 G00 X0 Y0\n{g10}\nG54 G00 {x} Y0", with_offsets())
+    assert [f.message.split(", outside")[0] for f in found] == expected
+    assert checker.stats.travel_not == []
 
 
 def test_without_a_selection_nothing_is_compared_and_g53_is_one_block() -> None:

@@ -379,12 +379,22 @@ impl Checker {
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
             *span = joined(before, *span);
         }
-        let mut written = early.written_before;
-        written.then(&self.offsets_written);
-        self.offsets_written = written;
-        self.g10_expression |= early.expression_before;
-        self.g10_local |= early.local_before;
-        self.offsets_lost |= early.lost_before;
+        // (a FANUC's or a Haas's program of the file, not run on into from the one before
+        // with the skip switch on, is a run of its own: what the program before wrote or
+        // lost is not given back to it, review 59a F3: `G52 X10.` / `M30` / `O4000` / `G21
+        // G90 G55` / `G0 X-700.`, its units code merging it, was no "X goes to -800"; a
+        // LinuxCNC definition's main program gets its own back)
+        let own_run = self.config.family == crate::lex::Family::MacroB
+            && matches!(early.body.number, Key::Number(_))
+            && !early.body.after_skippable_end;
+        if !own_run {
+            let mut written = early.written_before;
+            written.then(&self.offsets_written);
+            self.offsets_written = written;
+            self.g10_expression |= early.expression_before;
+            self.g10_local |= early.local_before;
+            self.offsets_lost |= early.lost_before;
+        }
         self.hold_from = None;
     }
 

@@ -348,6 +348,19 @@ impl Written {
         }
     }
 
+    /// The same writes, value for value (a value not known is the same as another).
+    pub(super) fn same(&self, other: &Written) -> bool {
+        self.axes == other.axes
+            && self.unread == other.unread
+            && self.moved == other.moved
+            && (0..6).all(|g| {
+                (0..9).all(|i| {
+                    let (a, b) = (self.values[g][i], other.values[g][i]);
+                    self.axes[g] & 1 << i == 0 || a.to_bits() == b.to_bits() || a == b
+                })
+            })
+    }
+
     /// Whether it wrote any axis of any offset.
     pub(super) fn any(&self) -> bool {
         self.axes != [0; 6]
@@ -692,6 +705,28 @@ impl Checker {
         Some(values)
     }
 
+    /// A G10 whose writes of G54-G59 are all of values known (`g10_writes`: an L2 P1-P6 of
+    /// numbers under G90, surely run), with the profile's offsets in force before it: the
+    /// program's own positions after it are judged with the values written (review 59a,
+    /// F8: `G90 G55` / `G10 L2 P2 X-200.` / `G0 X-700.` runs at -900, and was not compared).
+    /// Not where the offset in force is one guessed for a program read apart, or the
+    /// coordinates were moved: those lose the profile's offsets as before.
+    #[cold]
+    #[inline(never)]
+    fn g10_followed(&self, writes: &Written, expression: bool) -> bool {
+        !expression
+            && !self.offsets_lost
+            && self.work_guessed.is_none()
+            && !self.work_run_on
+            && !self.offsets_written.moved
+            && writes.any()
+            && writes.unread.is_empty()
+            && (0..6).all(|g| {
+                (0..9).all(|i| writes.axes[g] & 1 << i == 0 || !writes.values[g][i].is_nan())
+                    && writes.axes[g] >> 9 == 0
+            })
+    }
+
     /// Whether a G10's L or P is a #-expression whose value here may not be the one another
     /// run of it has (`.0`: another call may give it another value, [`Checker::g10_expression`]),
     /// or one whose value the parameter reading knows from the program's own local variables
@@ -809,7 +844,9 @@ impl Checker {
                         }
                         self.offset_writer(&writes, false);
                     }
-                    self.offsets_rewritten(line, "G10 sets offsets");
+                    if !self.g10_followed(&writes, expression || local) {
+                        self.offsets_rewritten(line, "G10 sets offsets");
+                    }
                 }
                 // (a G52 moves the coordinates where it is not known to be zero: the axes
                 // Written::shifted holds, not every value a G10 writes after it; review 60
@@ -2008,6 +2045,22 @@ impl Checker {
         };
     }
 
+    /// A program no call before it names begins (not run on into by the block skip switch):
+    /// it is read from the control's reset state, as a program of its own, not under a G52
+    /// (or a local shift not known) the program before left at its end (review 59a, F3:
+    /// `G52 X10.` / `M30` / `O2000` / `G90 G55 G0 X-700.` was no "X goes to -800", the
+    /// offsets taken as lost for every later program). Its own findings are read apart
+    /// (crate::check::called): a call of it under a shift judges it there.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn shifts_reset(&mut self) {
+        let noted = self.shifts.noted;
+        self.shifts = Shifts {
+            noted,
+            ..Shifts::default()
+        };
+    }
+
     /// The shift in force at a call, in the spans' coordinates: None where a local shift
     /// is not known.
     pub(super) fn call_shift(&self) -> Option<[f64; 9]> {
@@ -2486,7 +2539,9 @@ impl Checker {
                     "Z while a tool length offset was in force (the profile gives no tool lengths)"
                         .into(),
                 ),
-                (true, Some(work), Some(offset)) => {
+                (true, Some(work), Some(offset))
+                    if !self.offsets_written.any() && self.work_call.is_none() =>
+                {
                     self.stats.travel_absolute += 1;
                     let machine_at = at + offset.to_f64();
                     // which side of the travel the axis is outside (0 inside): a move from
@@ -2522,6 +2577,17 @@ impl Checker {
                         self.excursion_farther(i, work, (at, line), out);
                     }
                     self.outside[i] = out;
+                }
+                // (after a G10 of a value known, review 59a F8, or in a program written
+                // after its calls, F12: out of line)
+                (true, Some(work), Some(offset)) => {
+                    said_outside = self.offset_position(
+                        (axis, i),
+                        at,
+                        (work, offset),
+                        (low, high),
+                        (line, col(axis)),
+                    );
                 }
                 (true, Some(work), None) => self.travel_not(format!(
                     "{} under G{work}: the profile gives no G{work} {}",
@@ -2921,6 +2987,104 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// A position `at` of `axis` (place `i`) under work offset G`work`, whose value on that
+    /// axis is the profile's `offset` unless a G10 of the program's run wrote it: TG601 where
+    /// the machine position is beyond the travel, once an excursion. Whether it was said.
+    /// (Out of line: read only under a profile that gives work offsets.)
+    #[inline(never)]
+    fn offset_position(
+        &mut self,
+        (axis, i): (u8, usize),
+        at: f64,
+        (work, offset): (i64, Dec),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) -> bool {
+        if self.offset_unknown(work, i) {
+            self.travel_not(format!(
+                "{} under G{work} after its value was set by a variable (#5201-#5326)",
+                axis as char
+            ));
+            return false;
+        }
+        self.stats.travel_absolute += 1;
+        // (a G10 of the program's run with a value known: review 59a F8)
+        let written = self.offset_written(work, i);
+        let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
+        // which side of the travel the axis is outside (0 inside): a move from one side to
+        // the other crosses the travel, another excursion
+        let out = if machine_at < low - 1e-9 {
+            -1
+        } else if machine_at > high + 1e-9 {
+            1
+        } else {
+            0
+        };
+        let mut said_outside = false;
+        if out != 0 && out != self.outside[i] {
+            let value = written.map_or_else(
+                || offset.to_string(),
+                |v| format!("{} as a G10 before wrote it", round6(v)),
+            );
+            let mut message = format!(
+                "{} goes to {} in machine coordinates (work {} + G{work} offset {value}), \
+                 outside the travel {low} to {high}",
+                axis as char,
+                round6(machine_at),
+                round6(at)
+            );
+            if let Some(w) = &self.work_call {
+                message.push_str(&w.named(self.in_hand, work));
+            }
+            // (one judged with a value written is not judged again at a call with the
+            // caller's: its own G10 decides)
+            let placed = if written.is_some() {
+                super::Placed::Not
+            } else {
+                super::Placed::Offset {
+                    place: i as u8,
+                    work: work as u8,
+                    at,
+                    line,
+                }
+            };
+            if self.report_placed(message, (line, column), placed)
+                && (self.work_guessed.is_some() || self.work_run_on)
+            {
+                self.found.last_mut().expect("said").guessed = true;
+            }
+            said_outside = true;
+        } else if out != 0 {
+            self.excursion_farther(i, work, (at, line), out);
+        }
+        self.outside[i] = out;
+        said_outside
+    }
+
+    /// The value a G10 of the program's run wrote, known, of offset G`work` on the axis of
+    /// place `i` (review 59a F8); None where none was written (the profile's holds).
+    #[inline]
+    fn offset_written(&self, work: i64, i: usize) -> Option<f64> {
+        if !self.offsets_written.any() {
+            return None;
+        }
+        usize::try_from(work)
+            .ok()
+            .and_then(|w| self.offsets_written.value(w, i))
+            .filter(|v| !v.is_nan())
+    }
+
+    /// That offset's axis was written with a value not known while the profile's offsets
+    /// are still followed (a system variable set after a known G10, review 59a F11).
+    #[inline]
+    fn offset_unknown(&self, work: i64, i: usize) -> bool {
+        self.offsets_written.any()
+            && usize::try_from(work)
+                .ok()
+                .and_then(|w| self.offsets_written.value(w, i))
+                .is_some_and(f64::is_nan)
     }
 
     /// TG601 of one machine position (`placed`: what it compared, kept on the finding for

@@ -1397,6 +1397,16 @@ pub struct Checker {
     /// an end that a call names runs in its caller's units, not in the reset state's
     /// ([`Checker::called_units`]; review 38, finding 10).
     call_units: HashMap<i64, Option<(Units, Units, bool)>>,
+    /// The work offset in force at the calls so far of each program number, where the
+    /// profile's value of it was (no G10, shift, frame or call not followed before it in the
+    /// caller's run), with the distance mode and the first such call's words and line; None
+    /// where the calls disagree or one's offset was not known. A program written after its
+    /// calls runs under it ([`Checker::called_units`]; review 59a, F12).
+    call_works: HashMap<i64, Option<structure::CallWork>>,
+    /// The program in hand, written after its calls, runs under the work offset of
+    /// [`Checker::call_works`]: what its messages name, and the state read before it, given
+    /// back where it ends (boxed: seldom set).
+    work_call: Option<Box<structure::WorkCall>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
     /// disagree, or one was made in units not known): no limit that reads a length or a feed
     /// (TG601, TG602) is judged until it writes a units code of its own.
@@ -1665,6 +1675,8 @@ impl Checker {
             linuxcnc_skip_held: None,
             linuxcnc_loop_defs: None,
             call_units: HashMap::new(),
+            call_works: HashMap::new(),
+            work_call: None,
             units_unknown: false,
             early: None,
             early_on: false,

@@ -432,6 +432,7 @@ impl Checker {
         self.data_input = run.data_input;
         self.compensation_exit = run.compensation_exit;
         self.call_units = run.call_units;
+        self.call_works = run.call_works;
         self.units_unknown = run.units_unknown;
         self.unknown_call = run.unknown_call;
         self.feed_pending = run.feed_pending;

@@ -483,6 +483,8 @@ impl Checker {
             }
             _ => number,
         };
+        // (before the call's own reading: the state it is made in)
+        self.call_work(b, number);
         let followed = (self.early_on || !self.pending.is_empty() || !self.given_up.is_empty())
             && {
                 let (call, column) = self.call_words(b);
@@ -501,6 +503,108 @@ impl Checker {
                 }
             })
             .or_insert(units);
+    }
+
+    /// A call of program `number` (`b`): the work offset in force here kept for it where
+    /// the profile's value of it is the one in force (no G10, shift, frame, or call the
+    /// checker does not follow before it in the caller's run, none in the call's block; the
+    /// caller's own selection, not one guessed from the program before), with the distance
+    /// mode; a second call under another, or one where it is not known, leaves it unknown
+    /// ([`Checker::call_works`]). A program of that number written after the call runs under
+    /// it: a FANUC's M98 and G65 change no modal state, and the work offset (G54-G59, group
+    /// 14) is modal (0i-MF Operator's Manual, "Subprogram call (M98)", "Custom Macro B"; Haas
+    /// Mill Operator's Manual, M98; review 59a, F12).
+    #[cold]
+    #[inline(never)]
+    fn call_work(&mut self, b: &BlockView<'_>, number: i64) {
+        if self.config.work_offsets.is_empty() {
+            return;
+        }
+        // (a G66 runs the program at each later move, under the offset in force there: not
+        // this block's)
+        let other_g = b
+            .words
+            .iter()
+            .enumerate()
+            .any(|(i, w)| w.letter == b'G' && !self.readable[i].is_some_and(|v| v.eq_int(65)));
+        let known = self.work.filter(|_| {
+            !self.offsets_lost
+                && !other_g
+                && self.work_guessed.is_none()
+                && !self.work_run_on
+                && !self.shifts_on()
+                && !self.frames_on()
+                && self.transformed.is_none()
+        });
+        let here = known.map(|work| {
+            let (call, _) = self.call_words(b);
+            CallWork {
+                work,
+                incremental: self.machine.state.incremental,
+                written: self.offsets_written.clone(),
+                call,
+                line: b.line,
+            }
+        });
+        self.call_works
+            .entry(number)
+            .and_modify(|before| {
+                let same = matches!((&*before, &here), (Some(a), Some(b))
+                    if a.work == b.work && a.incremental == b.incremental
+                        && a.written.same(&b.written));
+                if !same {
+                    *before = None;
+                }
+            })
+            .or_insert(here);
+    }
+
+    /// Where a program written after its calls ends (the next program begins): the state
+    /// read before it given back ([`Checker::work_call`]).
+    #[cold]
+    #[inline(never)]
+    fn work_call_end(&mut self) {
+        if let Some(w) = self.work_call.take() {
+            self.work = w.work_before;
+            self.offsets_lost = w.lost_before;
+            self.outside = w.outside_before;
+        }
+    }
+
+    /// The program `number` begins, written after calls that name it: where each was made
+    /// under the same work offset, with the profile's value of it, in the distance mode in
+    /// force here, it runs under that offset, its machine positions judged as the caller's
+    /// would be, each finding naming the call (review 59a, F12: `O1000` / `G90 G55` / `M98
+    /// P2000` / `M30` / `O2000` / `G0 X-700.` / `M99` was no "X goes to -800", where the
+    /// same body written before the main, or inline, was). Only the offset: a G10 before
+    /// the call, in the caller's run, leaves it as before.
+    #[cold]
+    #[inline(never)]
+    fn work_of_calls(&mut self, number: i64) {
+        let Some(Some(c)) = self.call_works.get(&number) else {
+            return;
+        };
+        if c.incremental != self.machine.state.incremental
+            || self.shifts_on()
+            || self.frames_on()
+            || self.transformed.is_some()
+            || self.units_unknown
+        {
+            return;
+        }
+        let w = WorkCall {
+            work: c.work,
+            call: c.call.clone(),
+            line: c.line,
+            work_before: self.work,
+            lost_before: self.offsets_lost,
+            outside_before: self.outside,
+        };
+        self.offsets_written = c.written.clone();
+        self.work = Some(w.work);
+        self.offsets_lost = false;
+        self.outside = [0; 9];
+        self.work_call = Some(Box::new(w));
     }
 
     /// The program numbers a call by number (M98, G65, G66) or from an external device
@@ -543,6 +647,14 @@ impl Checker {
     /// file's first is (a program of its own, whose units until it writes one are the
     /// control's start units the profile assumes).
     pub(super) fn called_units(&mut self, b: &BlockView<'_>) {
+        self.work_call_end();
+        // (an excursion beyond the travel is one run's: the program before's last position
+        // outside holds no first one of this program's, review 59a F9: `G90 G55` / `G0 X-700.`
+        // / `M30` / `O2000` / `G90 G55` / `G0 X-700.` said only the first) -- but with the
+        // block skip switch on, the program before runs on into it
+        if !self.end_skippable {
+            self.outside = [0; 9];
+        }
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
         self.early_merge();
@@ -574,6 +686,10 @@ impl Checker {
         }
         if let Some(n) = number.filter(|n| !self.call_units.contains_key(n)) {
             if self.config.family == Family::MacroB {
+                // (from the reset state: no G52 the program before left on, review 59a F3)
+                if !self.end_skippable && self.shifts_on() {
+                    self.shifts_reset();
+                }
                 // (its caller, not the program before it, selects the work offset it runs
                 // under: not known until it writes its own G54-G59; review 56e, F6) -- unless
                 // the end before it is under the `/` switch: with the switch on, the program
@@ -600,6 +716,11 @@ impl Checker {
                 self.machine.state.units_given = false;
             }
             None => self.machine.state.units_given = false,
+        }
+        if let Some(n) = number.filter(|n| self.call_works.contains_key(n)) {
+            if self.config.family == Family::MacroB && !self.end_skippable {
+                self.work_of_calls(n);
+            }
         }
     }
 
@@ -5058,6 +5179,47 @@ pub(super) struct OpenBlock {
 /// [`Checker::linuxcnc_loop_turns`] keeps it: its opening line, for a `repeat` whether its
 /// count (read where it opened) is 2 or more, the definitions its body holds (label, line,
 /// column), and whether its lines up to here surely ran.
+/// The work offset in force at a call of a program by number ([`Checker::call_works`]): the
+/// offset (54-59), the distance mode (G91: true), and the first such call's words and line.
+#[derive(Clone, Debug)]
+pub(super) struct CallWork {
+    work: i64,
+    incremental: bool,
+    /// The offsets a G10 of the caller's run wrote before the call, values known
+    /// ([`Checker::offsets_written`]; review 59a F8).
+    written: super::limits::Written,
+    call: String,
+    line: usize,
+}
+
+/// A program written after its calls read under their work offset ([`Checker::work_call`]):
+/// the call it names and the state before it, given back at its end.
+#[derive(Clone, Debug)]
+pub(super) struct WorkCall {
+    pub(super) work: i64,
+    call: String,
+    line: usize,
+    work_before: Option<i64>,
+    lost_before: bool,
+    outside_before: [i8; 9],
+}
+
+impl WorkCall {
+    /// What a TG601 of its machine position under offset G`work` adds: the call that runs it
+    /// there.
+    pub(super) fn named(&self, number: Option<i64>, work: i64) -> String {
+        if work != self.work {
+            return String::new();
+        }
+        let program = number.map_or_else(|| "the program".to_string(), |n| format!("O{n:04}"));
+        format!(
+            " ({program} runs as called by {} of line {}: a subprogram written after its call \
+             runs under the work offset in force there)",
+            self.call, self.line
+        )
+    }
+}
+
 #[derive(Clone, Debug)]
 pub(super) struct LoopDefinitions {
     opened: Vec<u8>,
