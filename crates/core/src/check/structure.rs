@@ -320,6 +320,8 @@ impl Checker {
         self.linuxcnc_plane_body_blocks.clear();
         self.linuxcnc_plane_before_sub = None;
         self.linuxcnc_plane_subs.clear();
+        self.linuxcnc_motion_plain = false;
+        self.linuxcnc_motion_subs.clear();
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
@@ -362,6 +364,7 @@ impl Checker {
         self.linuxcnc_loop_defs = None;
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
+        self.linuxcnc_cycle_r = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
         self.linuxcnc_rate = Some(Dec::ZERO);
         self.linuxcnc_feed_saved = None;
@@ -3321,6 +3324,17 @@ impl Checker {
                 self.machine.state.cycle = None;
             }
             None => {
+                // (where both readings are G0-G3 or none, a move without a motion code ends
+                // at its words' point either way: review 59b, F4, `F10` / `G0 Z0` / `M70` /
+                // `G18` / `M72 G1 X1` / `G17` / `Z0.5` / `G38.2 Z0.5` is "Start point too
+                // close to probe point")
+                let plain_before = modal.is_some()
+                    || motion == LinuxCncMotion::Unknown && self.linuxcnc_motion_plain;
+                self.linuxcnc_motion_plain = plain_before
+                    && matches!(
+                        self.linuxcnc_motion,
+                        LinuxCncMotion::Known(None | Some(0 | 10 | 20 | 30))
+                    );
                 self.linuxcnc_motion = LinuxCncMotion::Unknown;
                 self.motion_unknown = true;
                 self.machine.state.motion = None;
@@ -3516,6 +3530,64 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the motion mode after a block the checker does not follow (`calls`: it has
+    /// a calling word), which is not known ([`LinuxCncMotion::Unknown`]). Where every
+    /// statement of the block is a call of a definition read before it whose body writes no
+    /// motion code but G0-G3 and calls none that may ([`Checker::linuxcnc_motion_subs`]),
+    /// and the mode before is G0-G3 or none, the mode after is one of G0-G3 or none
+    /// ([`Checker::linuxcnc_motion_plain`]): a move without a motion code after it ends at
+    /// its words' point whichever it is, so its axes are known exactly (review 59b, F5:
+    /// `o100 sub` / `G1 X1 F10` / `o100 endsub` / `G0 Z0` / `o100 call` / `Z0.5` / `G38.2
+    /// Z0.5` is rs274's "Start point too close to probe point"). A call inside a definition
+    /// of one that may leaves that body's mark too. After an `endsub` the mode is the one
+    /// before its `sub` (rs274 reads a definition without running it).
+    pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
+        use super::tooling::LinuxCncMotion;
+        let mut before_plain = self.linuxcnc_motion_is_plain();
+        self.linuxcnc_motion = LinuxCncMotion::Unknown;
+        self.linuxcnc_motion_plain = false;
+        if calls || self.config.family != Family::LinuxCnc {
+            return;
+        }
+        let (mut plain, mut called) = (true, false);
+        for &(_, kind, text) in b.statements {
+            if kind == Kind::Definition && self.open_definition.is_none() {
+                // (an endsub: rs274 reads a definition without running it, the mode before
+                // its sub is in force after it)
+                called = true;
+                before_plain = self.linuxcnc_plain_before_sub;
+                continue;
+            }
+            if kind != Kind::Call {
+                plain = false;
+                continue;
+            }
+            called = true;
+            let label = self.linuxcnc_call_label(text);
+            if crate::statement::computed_label(&label)
+                || !self.linuxcnc_defined.contains(&label)
+                || self.linuxcnc_motion_subs.contains(&label)
+            {
+                plain = false;
+                if let Some(open) = &self.open_definition {
+                    self.linuxcnc_motion_subs.insert(open.2.clone());
+                }
+            }
+        }
+        self.linuxcnc_motion_plain = called && plain && before_plain;
+    }
+
+    /// LinuxCNC: whether the motion mode in force is G0-G3 or none, known or not
+    /// ([`Checker::linuxcnc_motion_plain`]).
+    fn linuxcnc_motion_is_plain(&self) -> bool {
+        use super::tooling::LinuxCncMotion;
+        match self.linuxcnc_motion {
+            LinuxCncMotion::Known(None | Some(0 | 10 | 20 | 30)) => true,
+            LinuxCncMotion::Known(Some(_)) => false,
+            LinuxCncMotion::Unknown => self.linuxcnc_motion_plain,
+        }
+    }
+
     /// LinuxCNC: the plane `at` in force again (the modal state's, and the two flags).
     fn linuxcnc_plane_set(&mut self, at: PlaneAt) {
         self.machine.state.plane = at.plane;
@@ -3533,6 +3605,9 @@ impl Checker {
         match (was_open, self.open_definition.is_some()) {
             (false, true) => {
                 self.linuxcnc_plane_before_sub = Some(self.linuxcnc_plane_now());
+                // (and whether the motion mode before it is G0-G3 or none, which its endsub
+                // gives back: `Checker::linuxcnc_motion_after_call`)
+                self.linuxcnc_plain_before_sub = self.linuxcnc_motion_is_plain();
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
             }
