@@ -1330,3 +1330,28 @@ def test_a_move_after_a_call_that_leaves_g0_g3_ends_at_its_words(tmp_path, body,
 @pytest.mark.parametrize("body", CALL_PLAIN_RUNS)
 def test_a_move_after_a_call_that_may_leave_a_cycle_is_not_known_exactly(tmp_path, body):
     clean_on_both(tmp_path, program(body))
+
+
+# An M72 across a G20/G21 from its M70 (the same feed mode): the restore puts the saved units
+# back, then writes the saved rate as F%.1f, after the block's own F (interp_convert.cc
+# restore_settings, gen_settings): a saved rate below 0.05 is zero after it, another is not,
+# whatever the block's F. HEAD sets F100. (the blocks after HEAD; the refused line, or None)
+M72_UNITS_RATE = [
+    ("F0\nM70\nG20\nM72 F10\nG1 X1", 7),
+    ("F0.04\nM70\nG20\nM72 F10\nG1 X1", 7),
+    ("F0\nM70\nG20\nG21\nF10\nM72\nG1 X1", 9),
+    ("M70\nG20\nM72 F0\nG1 X1", None),
+    ("M70\nG20\nF0\nM72\nG1 X1", None),
+]
+
+
+@pytest.mark.parametrize("body, line", M72_UNITS_RATE)
+def test_an_m72_across_a_units_change_leaves_the_saved_rate_not_its_block_s_f(
+        tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

@@ -3059,17 +3059,20 @@ impl Checker {
                     Some(saved) => self.linuxcnc_feed_restored(saved, now),
                     None => {
                         self.linuxcnc_feed_unfollowed(now, followed, mode_known);
-                        // (a G20/G21 between converts rs274's rate, not a zero: where the
-                        // saved and the current rate are both zero in the same feed mode,
-                        // the rate after the M72 is zero; review 58c F2: `M70` / `G20` /
-                        // `M72` / `G1 X1` is "Cannot do g1 with zero feed rate")
-                        let zero = |r: Option<Dec>| r.is_some_and(|r| r.is_zero());
+                        // (a G20/G21 between converts rs274's rate: the restore puts the
+                        // saved units back first, then writes the saved rate as `F%.1f`
+                        // wherever it differs (interp_convert.cc `restore_settings`,
+                        // `gen_settings`): where the saved rate is below 0.05 in the same
+                        // feed mode, the rate after the M72 is zero, whatever the block's
+                        // own F or the rate before it (review 58c F2: `M70` / `G20` / `M72`
+                        // / `G1 X1`, and `M70` / `G20` / `M72 F10` / `G1 X1`, `F0.04` /
+                        // `M70` / `G20` / `M72 F10` / `G1 X1` are "Cannot do g1 with zero
+                        // feed rate" in `rs274 -g`)
+                        let zero = |r: Option<Dec>| {
+                            r.is_some_and(|r| r.is_zero() || r.to_f64().abs() < 0.049)
+                        };
                         if kept.is_some_and(|s| {
-                            mode_known
-                                && s.mode == now.mode
-                                && s.mode != 93
-                                && zero(s.rate)
-                                && zero(now.rate)
+                            mode_known && s.mode == now.mode && s.mode != 93 && zero(s.rate)
                         }) {
                             self.linuxcnc_rate = Some(Dec::ZERO);
                             self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
@@ -3164,7 +3167,10 @@ impl Checker {
         // (the block's G93-G95 and F ran before the M72: tooling reads them no more)
         self.linuxcnc_feed_restored_at = Some(self.stats.blocks);
         let state = &mut self.machine.state;
+        // (not the block's own F: the restore writes the saved rate after it; `F10` /
+        // `M70` / `G20` / `M72 F0` / `G1 X1` runs in `rs274 -g`)
         state.unknown |= crate::modal::bit(b'F');
+        state.feed = None;
         if self.open_definition.is_some() {
             state.unknown |= crate::modal::bit(b'S');
             self.linuxcnc_definition_mode_unsure = true;
@@ -7657,6 +7663,14 @@ mod tests {
             // a G20 between leaves the feed's restore not followed, not the spindle's; a save
             // in a condition leaves it not known
             ("M70\nG20\nM72\nG21\nG33 Z-1 K0.1", Some((7, 1, refused))),
+            // across it the restore writes the saved rate after the block's own F: zero
+            // below 0.05 (the linuxcnc profile's F0.04: tests/test_linuxcnc_refusals.py),
+            // else not zero
+            (
+                "F0\nM70\nG20\nM72 F10\nG1 X1",
+                Some((7, 4, Rule::NoFeedRate)),
+            ),
+            ("F10\nM70\nG20\nM72 F0\nG1 X1", None),
             ("o1 if [1]\nM70\no1 endif\nM72\nG33 Z-1 K0.1", None),
         ];
         let judged = [
