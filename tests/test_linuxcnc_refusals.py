@@ -1332,16 +1332,23 @@ def test_a_move_after_a_call_that_may_leave_a_cycle_is_not_known_exactly(tmp_pat
     clean_on_both(tmp_path, program(body))
 
 
-# An M72 across a G20/G21 from its M70 (the same feed mode): the restore puts the saved units
-# back, then writes the saved rate as F%.1f, after the block's own F (interp_convert.cc
-# restore_settings, gen_settings): a saved rate below 0.05 is zero after it, another is not,
-# whatever the block's F. HEAD sets F100. (the blocks after HEAD; the refused line, or None)
+# An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
+# a G20/G21 (no SET_FEED_RATE there), so the restore is as without one: the saved rate where
+# the rate in force after the block's own F equals it, else the saved rate as F%.1f
+# (interp_convert.cc restore_settings, gen_settings). HEAD sets F100. (the blocks after HEAD;
+# the refused line, or None; review 61b F1: the rows with F0.04 kept in force ran in rs274 and
+# were refused by lcnc60)
 M72_UNITS_RATE = [
     ("F0\nM70\nG20\nM72 F10\nG1 X1", 7),
     ("F0.04\nM70\nG20\nM72 F10\nG1 X1", 7),
     ("F0\nM70\nG20\nG21\nF10\nM72\nG1 X1", 9),
     ("M70\nG20\nM72 F0\nG1 X1", None),
     ("M70\nG20\nF0\nM72\nG1 X1", None),
+    ("F0.04\nM70\nG21\nM72\nG1 X1", None),
+    ("S1000 M3\nG95 F0.04\nM70\nG21 G90 G17\nG0 X1\nM72\nG1 X2", None),
+    ("F0.04\nM70\nG20\nM72\nG1 X1", None),
+    ("F0.04\nM70\nG20\nM72 F0.04\nG1 X1", None),
+    ("F0.04\nM70\nG20\nF0.001\nM72\nG1 X1", 8),
 ]
 
 

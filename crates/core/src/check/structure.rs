@@ -2891,8 +2891,8 @@ impl Checker {
     /// Followed only where nothing is guessed: the M70 and the M72 both run by the main
     /// program where they stand (no condition, loop or body: a loop's second turn saves
     /// again, F6, F8), the feed mode known at both (no call, no G93-G95 in a condition
-    /// between, F9), no G20/G21 between (it converts rs274's rate), no definition read
-    /// between, no G or M code written by a parameter in either block. A rate or speed not
+    /// between, F9), no definition read between (a G20/G21 between converts no rate in
+    /// `rs274 -g`: followed as any other, review 61b F1), no G or M code written by a parameter in either block. A rate or speed not
     /// known (an F of a parameter, a G93 move's length times F, a call: F1-F4), or one
     /// `%.1f`/`%.0f` would round, leaves the F or the S after the M72 unknown wherever the
     /// restore could write it. Elsewhere the feed mode, the rate and the speed after an M72
@@ -2905,7 +2905,6 @@ impl Checker {
         }
         let mut m7 = None;
         let mut unread = false;
-        let mut units = false;
         let mut mode_set = false;
         let mut zeroed = false;
         let mut f_at = None;
@@ -2932,7 +2931,6 @@ impl Checker {
             };
             match (w.letter, code()) {
                 (b'M', Some(m @ (70.0 | 71.0 | 72.0 | 73.0))) => m7 = Some(m as u8),
-                (b'G', Some(20.0 | 21.0)) => units = true,
                 (b'G', Some(g @ (93.0 | 94.0 | 95.0))) => {
                     mode_set = true;
                     zeroed |= g != 93.0;
@@ -2969,7 +2967,6 @@ impl Checker {
         if let Some(saved) = self.linuxcnc_feed_saved.as_mut() {
             saved.quiet &= !modal;
             saved.still &= !modal && still;
-            saved.units |= units;
         }
         let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
         if unread || !in_order {
@@ -3025,7 +3022,6 @@ impl Checker {
             speed,
             spindle,
             compensation,
-            units: false,
             quiet: !modal,
             still: !modal && still,
         };
@@ -3054,32 +3050,11 @@ impl Checker {
                     .filter(|_| followed)
                     .filter(|_| matches!(self.linuxcnc_saved, Saved::Valid(_)));
                 self.linuxcnc_spindle_restored(kept, comp_set, tool_change);
-                let saved = kept.filter(|s| mode_known && !s.units);
+                let saved = kept.filter(|_| mode_known);
                 let dropped = match saved {
                     Some(saved) => self.linuxcnc_feed_restored(saved, now),
                     None => {
                         self.linuxcnc_feed_unfollowed(now, followed, mode_known);
-                        // (a G20/G21 between converts rs274's rate: the restore puts the
-                        // saved units back first, then writes the saved rate as `F%.1f`
-                        // wherever it differs (interp_convert.cc `restore_settings`,
-                        // `gen_settings`): where the saved rate is below 0.05 in the same
-                        // feed mode, the rate after the M72 is zero, whatever the block's
-                        // own F or the rate before it (review 58c F2: `M70` / `G20` / `M72`
-                        // / `G1 X1`, and `M70` / `G20` / `M72 F10` / `G1 X1`, `F0.04` /
-                        // `M70` / `G20` / `M72 F10` / `G1 X1` are "Cannot do g1 with zero
-                        // feed rate" in `rs274 -g`)
-                        let zero = |r: Option<Dec>| {
-                            r.is_some_and(|r| r.is_zero() || r.to_f64().abs() < 0.049)
-                        };
-                        if kept.is_some_and(|s| {
-                            mode_known && s.mode == now.mode && s.mode != 93 && zero(s.rate)
-                        }) {
-                            self.linuxcnc_rate = Some(Dec::ZERO);
-                            self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
-                            let state = &mut self.machine.state;
-                            state.feed = None;
-                            state.unknown &= !crate::modal::bit(b'F');
-                        }
                         None
                     }
                 };
@@ -5303,9 +5278,6 @@ pub(super) struct FeedSaved {
     /// ([`Checker::linuxcnc_spindle_restored`]).
     spindle: Option<i64>,
     compensation: Option<(i64, bool)>,
-    /// A G20 or G21 since the save (or in the M72's block): it converts rs274's rate, which
-    /// the feed's restore is then not followed for; the spindle's and the compensation's are.
-    units: bool,
     /// No G or M code since the save (or in the save's block) that may change another
     /// modal group the restore writes: where the feed mode, rate and speed are the saved
     /// ones, the restore writes nothing and the M72 block's motion runs.
