@@ -1305,6 +1305,13 @@ CALL_PLAIN_REFUSED = [
 ]
 
 CALL_PLAIN_RUNS = [
+    # a body whose only call is an M98: O200 leaves G81 in force (review 61b F2)
+    "o100 sub\nM98 P200\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5\nM2\nO200\n"
+    "G81 X1 Z-1 R2\nM99",
+    "o100 sub\nM98 P200 L2\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5\nM2\nO200\n"
+    "G81 X1 Z-1 R2\nM99",
+    "o101 sub\nM98 P200\no101 endsub\no100 sub\no101 call\no100 endsub\no100 call\nZ0.5\n"
+    "G80\nG38.2 Z0.5\nM2\nO200\nG81 X1 Z-1 R2\nM99",
     # the body leaves G81 in force: Z0.5 is a cycle, which ends at R2
     "o100 sub\nG81 X1 Z-1 R2\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5",
     # so through a body that calls it, or in a condition of the body

@@ -3527,7 +3527,16 @@ impl Checker {
         let mut before_plain = self.linuxcnc_motion_is_plain();
         self.linuxcnc_motion = LinuxCncMotion::Unknown;
         self.linuxcnc_motion_plain = false;
-        if calls || self.config.family != Family::LinuxCnc {
+        if self.config.family != Family::LinuxCnc {
+            return;
+        }
+        if calls {
+            // (a calling word in a body, an M98 among them, may leave any mode: the body is
+            // not plain; review 61b F2: `o100 sub` / `M98 P200` / `o100 endsub` / `o100
+            // call` / `Z0.5` runs O200's G81 in `rs274 -g`)
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_motion_subs.insert(open.2.clone());
+            }
             return;
         }
         let (mut plain, mut called) = (true, false);
