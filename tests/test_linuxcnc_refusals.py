@@ -1369,3 +1369,21 @@ def test_an_m72_across_a_units_change_leaves_the_saved_rate_not_its_block_s_f(
     found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
     assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A G73/G81 repeat after a surely dropped M72 block (the speed differs: the restore's block
+# runs in its place) retracts to the R from before it: the dropped block's R never runs
+# (review 61b F5). HEAD starts at Z0. (the blocks after HEAD)
+M72_DROPPED_R = "S100 M3\n{cycle} X1 Z-1 R1{q}\nM70\nS200\nM72 {again} X2 Z-1 R3{q}\nX3\nG80\n"
+
+
+@pytest.mark.parametrize("cycle, again, q", [
+    ("G73", "G73", " Q0.5"), ("G73", "", " Q0.5"), ("G81", "G81", ""),
+])
+def test_a_cycle_repeat_after_a_surely_dropped_m72_block_keeps_the_r_before_it(
+        tmp_path, cycle, again, q):
+    body = M72_DROPPED_R.format(cycle=cycle, again=again, q=q)
+    # the repeat ends at Z1: a probe to Z3 runs, one to Z1 is "too close"
+    clean_on_both(tmp_path, program(body + "G38.2 Z3"))
+    if cycle == "G73":
+        assert_too_close_refused(tmp_path, program(body + "G38.2 Z1"), 10, 1)

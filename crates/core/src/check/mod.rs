@@ -2669,6 +2669,7 @@ impl Checker {
                 cycle: state.cycle,
                 words: state.cycle_words,
                 bottom: self.linuxcnc_cycle_bottom,
+                r: self.linuxcnc_cycle_r,
             });
         }
         self.machine.apply_taken(&self.values, taken);

@@ -3273,6 +3273,30 @@ impl Checker {
             ..
         } = dropped;
         let surely = restored.is_some();
+        // (G73 and G74's R, which the modal state does not keep: a surely dropped block's R
+        // never runs, the R before it is in force; where the drop is only possible, the R
+        // is not known unless both agree; review 61b F5: `G73 X1 Z-1 R1 Q0.5` / `M70` /
+        // `S200` / `M72 G73 X2 Z-1 R3 Q0.5` / `X3` retracts to Z1 in `rs274 -g`)
+        match cycle {
+            Some(c) if surely => self.linuxcnc_cycle_r = c.r,
+            Some(c) if c.r == self.linuxcnc_cycle_r => {}
+            _ => self.linuxcnc_cycle_r = None,
+        }
+        // (the cycle in force before a surely dropped block, its words and bottom kept, even
+        // where the block writes no motion code: `M72 X2 R3` leaves R1, review 61b F5)
+        if let Some(c) = cycle.filter(|c| {
+            surely
+                && self.linuxcnc_motion == motion
+                && matches!(motion, LinuxCncMotion::Known(Some(730 | 740 | 810..=890)))
+                && c.cycle.is_some()
+        }) {
+            let state = &mut self.machine.state;
+            state.motion = c.motion;
+            state.cycle = c.cycle;
+            state.cycle_words = c.words;
+            self.linuxcnc_cycle_bottom = c.bottom;
+            return;
+        }
         if self.linuxcnc_motion == motion {
             return;
         }
@@ -5272,6 +5296,8 @@ pub(super) struct M72Cycle {
     pub(super) cycle: Option<i64>,
     pub(super) words: [Option<Dec>; 5],
     pub(super) bottom: Option<Dec>,
+    /// G73 and G74's R (`linuxcnc_cycle_r`).
+    pub(super) r: Option<Dec>,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
