@@ -1387,3 +1387,28 @@ def test_a_cycle_repeat_after_a_surely_dropped_m72_block_keeps_the_r_before_it(
     clean_on_both(tmp_path, program(body + "G38.2 Z3"))
     if cycle == "G73":
         assert_too_close_refused(tmp_path, program(body + "G38.2 Z1"), 10, 1)
+
+
+# An M72 not followed (its M70 in a condition or loop of the main program) whose every
+# possible save holds the same rate, in the feed mode in force: rs274's rate after it is the
+# saved rate where the rate in force is it, else that rate as F%.1f (review 61b F3: the
+# block's own F0 is not the rate after it, and neither is a zero lost). HEAD sets F100.
+@pytest.mark.parametrize("body, line", [
+    ("F0\no1 repeat [2]\nM70\no1 endrepeat\nM72 F0\nG1 X1", 8),
+    ("F0\no1 if [1]\nM70\no1 endif\nM72 F0\nG1 X1", 8),
+    ("F0\no1 if [1]\nM70\no1 endif\nM72\nG1 X1", 8),
+    # the saved F100, whatever the block's F
+    ("o1 if [1]\nM70\no1 endif\nM72 F0\nG1 X1", None),
+    ("o1 repeat [2]\nM70\no1 endrepeat\nF0\nM72\nG1 X1", None),
+    # a loop's later turn saves the F set after its M70: not known
+    ("F0\no1 repeat [2]\nM70\nF10\no1 endrepeat\nM72 F0\nG1 X1", None),
+])
+def test_an_m72_of_a_loose_save_leaves_the_rate_every_save_agrees_on(tmp_path, body, line):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    if line is None:
+        assert found == [], found
+        assert "PROGRAM_END" in rs274_output(tmp_path, text)
+        return
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

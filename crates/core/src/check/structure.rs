@@ -2982,6 +2982,11 @@ impl Checker {
                 if speed_word || m98 {
                     loose.speed = None;
                 }
+                // (an F, or a G94/G95, which zeroes rs274's rate; an M70's own F runs before
+                // its save, the same on every turn)
+                if f_at.is_some() && !matches!(m7, Some(70 | 73)) || mode_set || m98 {
+                    loose.rate = None;
+                }
             }
         }
         // (an M code of a parameter may be an M70 or M73 saving values not known here)
@@ -3035,6 +3040,7 @@ impl Checker {
                 if main {
                     let this = LooseSaved {
                         mode: mode_known.then_some(now.mode),
+                        rate: now.rate,
                         speed: now.speed,
                         joined: !in_order || unread,
                     };
@@ -3159,6 +3165,26 @@ impl Checker {
                 self.linuxcnc_mode_unsure = false;
             }
             None => self.linuxcnc_mode_unsure = true,
+        }
+        // (the rate, where every save agrees on it, the M72 surely runs and the feed mode is
+        // the saved one: the saved rate where the rate in force is it, else its `F%.1f`, as
+        // a followed restore; review 61b F3: `F0` / `o1 if [#5220 GT 0]` / `M70` / `o1
+        // endif` / `M72 F0` / `G1 X1` is "Cannot do g1 with zero feed rate")
+        let rate = match (loose.rate, now.rate) {
+            _ if !runs || !mode_known || mode != Some(now.mode) || now.mode == 93 => None,
+            (Some(s), Some(r)) if s == r => Some(s),
+            (Some(s), r) => written(s, 1).filter(|&w| w == s || r.is_some()),
+            _ => None,
+        };
+        if let Some(v) = rate {
+            state.feed = (!v.is_zero()).then_some(v);
+            state.unknown &= !crate::modal::bit(b'F');
+            self.linuxcnc_rate = Some(v);
+            self.linuxcnc_feed_rate = if v.is_zero() {
+                super::tooling::LinuxCncFeed::Zero
+            } else {
+                super::tooling::LinuxCncFeed::Set
+            };
         }
         let speed = match (loose.speed, now.speed) {
             (Some(s), Some(n)) if s == n => Some(s),
@@ -5251,6 +5277,8 @@ fn written(v: Dec, places: u32) -> Option<Dec> {
 #[derive(Debug, Clone, Copy)]
 pub(super) struct LooseSaved {
     mode: Option<i64>,
+    /// rs274's feed rate (review 61b F3).
+    rate: Option<Dec>,
     speed: Option<Dec>,
     /// A save in a condition or loop among them.
     joined: bool,
@@ -5259,6 +5287,7 @@ pub(super) struct LooseSaved {
 impl LooseSaved {
     const UNKNOWN: LooseSaved = LooseSaved {
         mode: None,
+        rate: None,
         speed: None,
         joined: true,
     };
@@ -5267,6 +5296,7 @@ impl LooseSaved {
     fn merge(self, other: LooseSaved) -> LooseSaved {
         LooseSaved {
             mode: self.mode.filter(|&m| other.mode == Some(m)),
+            rate: self.rate.filter(|&v| other.rate == Some(v)),
             speed: self.speed.filter(|&v| other.speed == Some(v)),
             joined: self.joined || other.joined,
         }
