@@ -1144,6 +1144,9 @@ CYCLE_END_RUNS = [
     # a rigid tap goes back to where it started
     "S100 M3\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z0",
     "S100 M3\nG0 X0 Z1\nG33.1 X1 Z0 K0.1\nG38.2 X1 Z0",
+    # G73, then G74 with an R of its own (review 59b, F6)
+    "G73 X1 Z-1 R2 Q0.5\nS100 M4\nG74 X2 Z-1 R1\nG80\nG38.2 Z2",
+    "G73 X1 Z-1 R1 Q0.5\nG80\nG38.2 Z0.5",
 ]
 
 CYCLE_END_REFUSED = [
@@ -1152,6 +1155,11 @@ CYCLE_END_REFUSED = [
     ("G18\nG81 X1 Y-1 R1\nG80\nG17\nG38.2 Y1", 7, 1),
     ("S100 M3\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z1", 6, 1),
     ("S100 M3\nG0 X0 Z1\nG33.1 X1 Z0 K0.1\nG38.2 X0 Z1", 6, 1),
+    # G73 and G74 end at R as G81-G89 do, a repeat at the R kept (review 59b, F6)
+    ("G73 X1 Z-1 R1 Q0.5\nG80\nG38.2 Z1", 5, 1),
+    ("S100 M4\nG74 X1 Z-1 R1\nG80\nG38.2 Z1", 6, 1),
+    ("G73 X1 Z-1 R1 Q0.5\nX2\nG80\nG38.2 Z1", 6, 1),
+    ("G98 G73 X1 Z-1 R1 Q0.3\nG81 X2 Z-1 R1\nG80\nG38.2 Z1", 6, 1),
 ]
 
 
@@ -1274,3 +1282,133 @@ def test_a_surely_dropped_m72_block_leaves_the_plane_compensation_and_cycle_befo
     found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
     assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
     assert message in rs274_output(tmp_path, text)
+
+
+# After a call of a definition read before it whose body writes no motion code but G0-G3
+# (nor calls one that may), the mode before being G0-G3, the motion mode is one of G0-G3: a
+# move without a motion code ends at its words' point (review 59b, F5); so after a possible
+# M72 drop whose two modes are G0-G3 (F4). HEAD starts at Z0 with F100. (the blocks after
+# HEAD, the probe's line and column)
+CALL_PLAIN_REFUSED = [
+    ("o100 sub\no100 endsub\no100 call\nZ0.5\nG38.2 Z0.5", 7, 1),
+    ("o100 sub\nG1 X1 F10\no100 endsub\no100 call\nZ0.5\nG38.2 Z0.5", 8, 1),
+    # a body that calls one that writes no other motion code
+    ("o100 sub\nG0 X0\no100 endsub\no200 sub\no100 call\no200 endsub\no200 call\nZ0.5\n"
+     "G38.2 Z0.5", 11, 1),
+    # a cycle of the main program ended by G80 before the call
+    ("o100 sub\nG1 X1 Y0\no100 endsub\nG81 X2 Z-1 R2\nG80\nG0 Z0\no100 call\nZ0.5\n"
+     "G38.2 Z0.5", 11, 1),
+    # a possible M72 drop (the plane alone differs) between G0 and G1, G0 and G2
+    ("M70\nG18\nM72 G1 X1\nG17\nZ0.5\nG38.2 Z0.5", 8, 1),
+    ("M70\nG18\nM72 G2 X1 Z0 R2\nG17\nZ0.5\nG38.2 Z0.5", 8, 1),
+    ("G1 X0\nM70\nG18\nM72 G0 X1\nG17\nZ0.5\nG38.2 Z0.5", 9, 1),
+]
+
+CALL_PLAIN_RUNS = [
+    # a body whose only call is an M98: O200 leaves G81 in force (review 61b F2)
+    "o100 sub\nM98 P200\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5\nM2\nO200\n"
+    "G81 X1 Z-1 R2\nM99",
+    "o100 sub\nM98 P200 L2\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5\nM2\nO200\n"
+    "G81 X1 Z-1 R2\nM99",
+    "o101 sub\nM98 P200\no101 endsub\no100 sub\no101 call\no100 endsub\no100 call\nZ0.5\n"
+    "G80\nG38.2 Z0.5\nM2\nO200\nG81 X1 Z-1 R2\nM99",
+    # the body leaves G81 in force: Z0.5 is a cycle, which ends at R2
+    "o100 sub\nG81 X1 Z-1 R2\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5",
+    # so through a body that calls it, or in a condition of the body
+    "o100 sub\nG81 X1 Z-1 R2\no100 endsub\no200 sub\no100 call\no200 endsub\no200 call\n"
+    "Z0.5\nG80\nG38.2 Z0.5",
+    "o100 sub\no1 if [#1 GT 0]\nG81 X1 Z-1 R2\no1 endif\no100 endsub\no100 call [1]\nZ0.5\n"
+    "G80\nG38.2 Z0.5",
+    # a body calling one defined after it
+    "o100 sub\nG0 X0\no101 call\no100 endsub\no101 sub\nG81 X1 Z-1 R2\no101 endsub\n"
+    "o100 call\nZ0.5\nG80\nG38.2 Z0.5",
+    # G81 in force before the call of a body without a motion code: Z0.5 is a cycle
+    "G81 X1 Z-1 R2\no100 sub\nM8\no100 endsub\no100 call\nZ0.5\nG80\nG38.2 Z0.5",
+    # a possible M72 drop between a cycle and G1 (rs274 drops it here: G81 stays)
+    "G81 X1 Z-1 R2\nM70\nG18\nM72 G1 X1\nG17\nZ0.5\nG80\nG38.2 Z0.5",
+]
+
+
+@pytest.mark.parametrize("body, line, column", CALL_PLAIN_REFUSED)
+def test_a_move_after_a_call_that_leaves_g0_g3_ends_at_its_words(tmp_path, body, line, column):
+    assert_too_close_refused(tmp_path, program(body), line, column)
+
+
+@pytest.mark.parametrize("body", CALL_PLAIN_RUNS)
+def test_a_move_after_a_call_that_may_leave_a_cycle_is_not_known_exactly(tmp_path, body):
+    clean_on_both(tmp_path, program(body))
+
+
+# An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
+# a G20/G21 (no SET_FEED_RATE there), so the restore is as without one: the saved rate where
+# the rate in force after the block's own F equals it, else the saved rate as F%.1f
+# (interp_convert.cc restore_settings, gen_settings). HEAD sets F100. (the blocks after HEAD;
+# the refused line, or None; review 61b F1: the rows with F0.04 kept in force ran in rs274 and
+# were refused by lcnc60)
+M72_UNITS_RATE = [
+    ("F0\nM70\nG20\nM72 F10\nG1 X1", 7),
+    ("F0.04\nM70\nG20\nM72 F10\nG1 X1", 7),
+    ("F0\nM70\nG20\nG21\nF10\nM72\nG1 X1", 9),
+    ("M70\nG20\nM72 F0\nG1 X1", None),
+    ("M70\nG20\nF0\nM72\nG1 X1", None),
+    ("F0.04\nM70\nG21\nM72\nG1 X1", None),
+    ("S1000 M3\nG95 F0.04\nM70\nG21 G90 G17\nG0 X1\nM72\nG1 X2", None),
+    ("F0.04\nM70\nG20\nM72\nG1 X1", None),
+    ("F0.04\nM70\nG20\nM72 F0.04\nG1 X1", None),
+    ("F0.04\nM70\nG20\nF0.001\nM72\nG1 X1", 8),
+]
+
+
+@pytest.mark.parametrize("body, line", M72_UNITS_RATE)
+def test_an_m72_across_a_units_change_leaves_the_saved_rate_not_its_block_s_f(
+        tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A G73/G81 repeat after a surely dropped M72 block (the speed differs: the restore's block
+# runs in its place) retracts to the R from before it: the dropped block's R never runs
+# (review 61b F5). HEAD starts at Z0. (the blocks after HEAD)
+M72_DROPPED_R = "S100 M3\n{cycle} X1 Z-1 R1{q}\nM70\nS200\nM72 {again} X2 Z-1 R3{q}\nX3\nG80\n"
+
+
+@pytest.mark.parametrize("cycle, again, q", [
+    ("G73", "G73", " Q0.5"), ("G73", "", " Q0.5"), ("G81", "G81", ""),
+])
+def test_a_cycle_repeat_after_a_surely_dropped_m72_block_keeps_the_r_before_it(
+        tmp_path, cycle, again, q):
+    body = M72_DROPPED_R.format(cycle=cycle, again=again, q=q)
+    # the repeat ends at Z1: a probe to Z3 runs, one to Z1 is "too close"
+    clean_on_both(tmp_path, program(body + "G38.2 Z3"))
+    if cycle == "G73":
+        assert_too_close_refused(tmp_path, program(body + "G38.2 Z1"), 10, 1)
+
+
+# An M72 not followed (its M70 in a condition or loop of the main program) whose every
+# possible save holds the same rate, in the feed mode in force: rs274's rate after it is the
+# saved rate where the rate in force is it, else that rate as F%.1f (review 61b F3: the
+# block's own F0 is not the rate after it, and neither is a zero lost). HEAD sets F100.
+@pytest.mark.parametrize("body, line", [
+    ("F0\no1 repeat [2]\nM70\no1 endrepeat\nM72 F0\nG1 X1", 8),
+    ("F0\no1 if [1]\nM70\no1 endif\nM72 F0\nG1 X1", 8),
+    ("F0\no1 if [1]\nM70\no1 endif\nM72\nG1 X1", 8),
+    # the saved F100, whatever the block's F
+    ("o1 if [1]\nM70\no1 endif\nM72 F0\nG1 X1", None),
+    ("o1 repeat [2]\nM70\no1 endrepeat\nF0\nM72\nG1 X1", None),
+    # a loop's later turn saves the F set after its M70: not known
+    ("F0\no1 repeat [2]\nM70\nF10\no1 endrepeat\nM72 F0\nG1 X1", None),
+])
+def test_an_m72_of_a_loose_save_leaves_the_rate_every_save_agrees_on(tmp_path, body, line):
+    text = program(body)
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    if line is None:
+        assert found == [], found
+        assert "PROGRAM_END" in rs274_output(tmp_path, text)
+        return
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

@@ -1073,6 +1073,20 @@ pub struct Checker {
     conflict_at: Option<(usize, String)>,
     /// LinuxCNC's motion mode as rs274ngc keeps it, for its canned-cycle refusals (TG412).
     linuxcnc_motion: tooling::LinuxCncMotion,
+    /// LinuxCNC: the motion mode not known ([`tooling::LinuxCncMotion::Unknown`]) is surely
+    /// one of G0-G3 (or none): a move without a motion code then ends at its words' point,
+    /// as every reading of it does. Set after a call of a definition read before it whose
+    /// body writes no other motion code, the mode before being G0-G3 or none (review 59b,
+    /// F5), and after a possible M72 drop whose two modes are G0-G3 (F4)
+    /// ([`Checker::linuxcnc_motion_after_call`]).
+    linuxcnc_motion_plain: bool,
+    /// LinuxCNC: the labels of the definitions whose body may leave a motion mode other
+    /// than G0-G3: it writes another motion code (G5.2, G33, G38.x, G73-G89 ...), a G code
+    /// of a value not known, or calls one that may ([`Checker::linuxcnc_motion_plain`]).
+    linuxcnc_motion_subs: HashSet<Vec<u8>>,
+    /// LinuxCNC: whether the motion mode before the open definition's `sub` was G0-G3 or
+    /// none, in force again after its `endsub`.
+    linuxcnc_plain_before_sub: bool,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
@@ -1139,6 +1153,9 @@ pub struct Checker {
     /// G81-G89, G33.1), or a move whose motion is not known (0), which may be one: where it
     /// leaves the tool is set after the block's rules (`Checker::linuxcnc_cycle_end`).
     linuxcnc_cycle_ran: Option<i64>,
+    /// LinuxCNC: the R of the G73 or G74 in force, which the modal state does not keep on
+    /// this profile (rs274's `cycle_r`), for where the cycle leaves the tool.
+    linuxcnc_cycle_r: Option<Dec>,
     /// LinuxCNC: rs274ngc's feed rate, which its probe moves and canned cycles read
     /// ([`tooling::LinuxCncFeed`]).
     linuxcnc_feed_rate: tooling::LinuxCncFeed,
@@ -1698,6 +1715,9 @@ impl Checker {
             refused_at: None,
             conflict_at: None,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
+            linuxcnc_motion_plain: false,
+            linuxcnc_motion_subs: HashSet::new(),
+            linuxcnc_plain_before_sub: false,
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
@@ -1708,6 +1728,7 @@ impl Checker {
             linuxcnc_m72_cycle: None,
             linuxcnc_series_first: false,
             linuxcnc_cycle_ran: None,
+            linuxcnc_cycle_r: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
             linuxcnc_feed_saved: None,
@@ -2374,7 +2395,7 @@ impl Checker {
                     self.jump_noted(b);
                 }
                 self.motion_unknown = true;
-                self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+                self.linuxcnc_motion_after_call(b, false);
                 // a subprogram or the blocks jumped over may set another pole
                 self.polar = polar::Polar::default();
                 self.linuxcnc_spindle_unknown = true;
@@ -2730,7 +2751,7 @@ impl Checker {
                 self.jump_noted(b);
             }
             self.motion_unknown = true;
-            self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+            self.linuxcnc_motion_after_call(b, calls);
             self.polar = polar::Polar::default();
             self.linuxcnc_spindle_unknown = true;
             self.linuxcnc_uvw_unfollowed(b);
@@ -2842,6 +2863,7 @@ impl Checker {
                 cycle: state.cycle,
                 words: state.cycle_words,
                 bottom: self.linuxcnc_cycle_bottom,
+                r: self.linuxcnc_cycle_r,
             });
         }
         self.machine.apply_taken(&self.values, taken);

@@ -320,6 +320,8 @@ impl Checker {
         self.linuxcnc_plane_body_blocks.clear();
         self.linuxcnc_plane_before_sub = None;
         self.linuxcnc_plane_subs.clear();
+        self.linuxcnc_motion_plain = false;
+        self.linuxcnc_motion_subs.clear();
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
@@ -362,6 +364,7 @@ impl Checker {
         self.linuxcnc_loop_defs = None;
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
+        self.linuxcnc_cycle_r = None;
         self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
         self.linuxcnc_rate = Some(Dec::ZERO);
         self.linuxcnc_feed_saved = None;
@@ -3009,8 +3012,8 @@ impl Checker {
     /// Followed only where nothing is guessed: the M70 and the M72 both run by the main
     /// program where they stand (no condition, loop or body: a loop's second turn saves
     /// again, F6, F8), the feed mode known at both (no call, no G93-G95 in a condition
-    /// between, F9), no G20/G21 between (it converts rs274's rate), no definition read
-    /// between, no G or M code written by a parameter in either block. A rate or speed not
+    /// between, F9), no definition read between (a G20/G21 between converts no rate in
+    /// `rs274 -g`: followed as any other, review 61b F1), no G or M code written by a parameter in either block. A rate or speed not
     /// known (an F of a parameter, a G93 move's length times F, a call: F1-F4), or one
     /// `%.1f`/`%.0f` would round, leaves the F or the S after the M72 unknown wherever the
     /// restore could write it. Elsewhere the feed mode, the rate and the speed after an M72
@@ -3023,7 +3026,6 @@ impl Checker {
         }
         let mut m7 = None;
         let mut unread = false;
-        let mut units = false;
         let mut mode_set = false;
         let mut zeroed = false;
         let mut f_at = None;
@@ -3050,7 +3052,6 @@ impl Checker {
             };
             match (w.letter, code()) {
                 (b'M', Some(m @ (70.0 | 71.0 | 72.0 | 73.0))) => m7 = Some(m as u8),
-                (b'G', Some(20.0 | 21.0)) => units = true,
                 (b'G', Some(g @ (93.0 | 94.0 | 95.0))) => {
                     mode_set = true;
                     zeroed |= g != 93.0;
@@ -3087,7 +3088,6 @@ impl Checker {
         if let Some(saved) = self.linuxcnc_feed_saved.as_mut() {
             saved.quiet &= !modal;
             saved.still &= !modal && still;
-            saved.units |= units;
         }
         let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
         if unread || !in_order {
@@ -3102,6 +3102,11 @@ impl Checker {
                 }
                 if speed_word || m98 {
                     loose.speed = None;
+                }
+                // (an F, or a G94/G95, which zeroes rs274's rate; an M70's own F runs before
+                // its save, the same on every turn)
+                if f_at.is_some() && !matches!(m7, Some(70 | 73)) || mode_set || m98 {
+                    loose.rate = None;
                 }
             }
         }
@@ -3143,7 +3148,6 @@ impl Checker {
             speed,
             spindle,
             compensation,
-            units: false,
             quiet: !modal,
             still: !modal && still,
         };
@@ -3157,6 +3161,7 @@ impl Checker {
                 if main {
                     let this = LooseSaved {
                         mode: mode_known.then_some(now.mode),
+                        rate: now.rate,
                         speed: now.speed,
                         joined: !in_order || unread,
                     };
@@ -3172,29 +3177,11 @@ impl Checker {
                     .filter(|_| followed)
                     .filter(|_| matches!(self.linuxcnc_saved, Saved::Valid(_)));
                 self.linuxcnc_spindle_restored(kept, comp_set, tool_change);
-                let saved = kept.filter(|s| mode_known && !s.units);
+                let saved = kept.filter(|_| mode_known);
                 let dropped = match saved {
                     Some(saved) => self.linuxcnc_feed_restored(saved, now),
                     None => {
                         self.linuxcnc_feed_unfollowed(now, followed, mode_known);
-                        // (a G20/G21 between converts rs274's rate, not a zero: where the
-                        // saved and the current rate are both zero in the same feed mode,
-                        // the rate after the M72 is zero; review 58c F2: `M70` / `G20` /
-                        // `M72` / `G1 X1` is "Cannot do g1 with zero feed rate")
-                        let zero = |r: Option<Dec>| r.is_some_and(|r| r.is_zero());
-                        if kept.is_some_and(|s| {
-                            mode_known
-                                && s.mode == now.mode
-                                && s.mode != 93
-                                && zero(s.rate)
-                                && zero(now.rate)
-                        }) {
-                            self.linuxcnc_rate = Some(Dec::ZERO);
-                            self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
-                            let state = &mut self.machine.state;
-                            state.feed = None;
-                            state.unknown &= !crate::modal::bit(b'F');
-                        }
                         None
                     }
                 };
@@ -3282,7 +3269,10 @@ impl Checker {
         // (the block's G93-G95 and F ran before the M72: tooling reads them no more)
         self.linuxcnc_feed_restored_at = Some(self.stats.blocks);
         let state = &mut self.machine.state;
+        // (not the block's own F: the restore writes the saved rate after it; `F10` /
+        // `M70` / `G20` / `M72 F0` / `G1 X1` runs in `rs274 -g`)
         state.unknown |= crate::modal::bit(b'F');
+        state.feed = None;
         if self.open_definition.is_some() {
             state.unknown |= crate::modal::bit(b'S');
             self.linuxcnc_definition_mode_unsure = true;
@@ -3296,6 +3286,26 @@ impl Checker {
                 self.linuxcnc_mode_unsure = false;
             }
             None => self.linuxcnc_mode_unsure = true,
+        }
+        // (the rate, where every save agrees on it, the M72 surely runs and the feed mode is
+        // the saved one: the saved rate where the rate in force is it, else its `F%.1f`, as
+        // a followed restore; review 61b F3: `F0` / `o1 if [#5220 GT 0]` / `M70` / `o1
+        // endif` / `M72 F0` / `G1 X1` is "Cannot do g1 with zero feed rate")
+        let rate = match (loose.rate, now.rate) {
+            _ if !runs || !mode_known || mode != Some(now.mode) || now.mode == 93 => None,
+            (Some(s), Some(r)) if s == r => Some(s),
+            (Some(s), r) => written(s, 1).filter(|&w| w == s || r.is_some()),
+            _ => None,
+        };
+        if let Some(v) = rate {
+            state.feed = (!v.is_zero()).then_some(v);
+            state.unknown &= !crate::modal::bit(b'F');
+            self.linuxcnc_rate = Some(v);
+            self.linuxcnc_feed_rate = if v.is_zero() {
+                super::tooling::LinuxCncFeed::Zero
+            } else {
+                super::tooling::LinuxCncFeed::Set
+            };
         }
         let speed = match (loose.speed, now.speed) {
             (Some(s), Some(n)) if s == n => Some(s),
@@ -3410,6 +3420,30 @@ impl Checker {
             ..
         } = dropped;
         let surely = restored.is_some();
+        // (G73 and G74's R, which the modal state does not keep: a surely dropped block's R
+        // never runs, the R before it is in force; where the drop is only possible, the R
+        // is not known unless both agree; review 61b F5: `G73 X1 Z-1 R1 Q0.5` / `M70` /
+        // `S200` / `M72 G73 X2 Z-1 R3 Q0.5` / `X3` retracts to Z1 in `rs274 -g`)
+        match cycle {
+            Some(c) if surely => self.linuxcnc_cycle_r = c.r,
+            Some(c) if c.r == self.linuxcnc_cycle_r => {}
+            _ => self.linuxcnc_cycle_r = None,
+        }
+        // (the cycle in force before a surely dropped block, its words and bottom kept, even
+        // where the block writes no motion code: `M72 X2 R3` leaves R1, review 61b F5)
+        if let Some(c) = cycle.filter(|c| {
+            surely
+                && self.linuxcnc_motion == motion
+                && matches!(motion, LinuxCncMotion::Known(Some(730 | 740 | 810..=890)))
+                && c.cycle.is_some()
+        }) {
+            let state = &mut self.machine.state;
+            state.motion = c.motion;
+            state.cycle = c.cycle;
+            state.cycle_words = c.words;
+            self.linuxcnc_cycle_bottom = c.bottom;
+            return;
+        }
         if self.linuxcnc_motion == motion {
             return;
         }
@@ -3442,6 +3476,17 @@ impl Checker {
                 self.machine.state.cycle = None;
             }
             None => {
+                // (where both readings are G0-G3 or none, a move without a motion code ends
+                // at its words' point either way: review 59b, F4, `F10` / `G0 Z0` / `M70` /
+                // `G18` / `M72 G1 X1` / `G17` / `Z0.5` / `G38.2 Z0.5` is "Start point too
+                // close to probe point")
+                let plain_before = modal.is_some()
+                    || motion == LinuxCncMotion::Unknown && self.linuxcnc_motion_plain;
+                self.linuxcnc_motion_plain = plain_before
+                    && matches!(
+                        self.linuxcnc_motion,
+                        LinuxCncMotion::Known(None | Some(0 | 10 | 20 | 30))
+                    );
                 self.linuxcnc_motion = LinuxCncMotion::Unknown;
                 self.motion_unknown = true;
                 self.machine.state.motion = None;
@@ -3637,6 +3682,73 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the motion mode after a block the checker does not follow (`calls`: it has
+    /// a calling word), which is not known ([`LinuxCncMotion::Unknown`]). Where every
+    /// statement of the block is a call of a definition read before it whose body writes no
+    /// motion code but G0-G3 and calls none that may ([`Checker::linuxcnc_motion_subs`]),
+    /// and the mode before is G0-G3 or none, the mode after is one of G0-G3 or none
+    /// ([`Checker::linuxcnc_motion_plain`]): a move without a motion code after it ends at
+    /// its words' point whichever it is, so its axes are known exactly (review 59b, F5:
+    /// `o100 sub` / `G1 X1 F10` / `o100 endsub` / `G0 Z0` / `o100 call` / `Z0.5` / `G38.2
+    /// Z0.5` is rs274's "Start point too close to probe point"). A call inside a definition
+    /// of one that may leaves that body's mark too. After an `endsub` the mode is the one
+    /// before its `sub` (rs274 reads a definition without running it).
+    pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
+        use super::tooling::LinuxCncMotion;
+        let mut before_plain = self.linuxcnc_motion_is_plain();
+        self.linuxcnc_motion = LinuxCncMotion::Unknown;
+        self.linuxcnc_motion_plain = false;
+        if self.config.family != Family::LinuxCnc {
+            return;
+        }
+        if calls {
+            // (a calling word in a body, an M98 among them, may leave any mode: the body is
+            // not plain; review 61b F2: `o100 sub` / `M98 P200` / `o100 endsub` / `o100
+            // call` / `Z0.5` runs O200's G81 in `rs274 -g`)
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_motion_subs.insert(open.2.clone());
+            }
+            return;
+        }
+        let (mut plain, mut called) = (true, false);
+        for &(_, kind, text) in b.statements {
+            if kind == Kind::Definition && self.open_definition.is_none() {
+                // (an endsub: rs274 reads a definition without running it, the mode before
+                // its sub is in force after it)
+                called = true;
+                before_plain = self.linuxcnc_plain_before_sub;
+                continue;
+            }
+            if kind != Kind::Call {
+                plain = false;
+                continue;
+            }
+            called = true;
+            let label = self.linuxcnc_call_label(text);
+            if crate::statement::computed_label(&label)
+                || !self.linuxcnc_defined.contains(&label)
+                || self.linuxcnc_motion_subs.contains(&label)
+            {
+                plain = false;
+                if let Some(open) = &self.open_definition {
+                    self.linuxcnc_motion_subs.insert(open.2.clone());
+                }
+            }
+        }
+        self.linuxcnc_motion_plain = called && plain && before_plain;
+    }
+
+    /// LinuxCNC: whether the motion mode in force is G0-G3 or none, known or not
+    /// ([`Checker::linuxcnc_motion_plain`]).
+    fn linuxcnc_motion_is_plain(&self) -> bool {
+        use super::tooling::LinuxCncMotion;
+        match self.linuxcnc_motion {
+            LinuxCncMotion::Known(None | Some(0 | 10 | 20 | 30)) => true,
+            LinuxCncMotion::Known(Some(_)) => false,
+            LinuxCncMotion::Unknown => self.linuxcnc_motion_plain,
+        }
+    }
+
     /// LinuxCNC: the plane `at` in force again (the modal state's, and the two flags).
     fn linuxcnc_plane_set(&mut self, at: PlaneAt) {
         self.machine.state.plane = at.plane;
@@ -3654,6 +3766,9 @@ impl Checker {
         match (was_open, self.open_definition.is_some()) {
             (false, true) => {
                 self.linuxcnc_plane_before_sub = Some(self.linuxcnc_plane_now());
+                // (and whether the motion mode before it is G0-G3 or none, which its endsub
+                // gives back: `Checker::linuxcnc_motion_after_call`)
+                self.linuxcnc_plain_before_sub = self.linuxcnc_motion_is_plain();
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
             }
@@ -5324,6 +5439,8 @@ fn written(v: Dec, places: u32) -> Option<Dec> {
 #[derive(Debug, Clone, Copy)]
 pub(super) struct LooseSaved {
     mode: Option<i64>,
+    /// rs274's feed rate (review 61b F3).
+    rate: Option<Dec>,
     speed: Option<Dec>,
     /// A save in a condition or loop among them.
     joined: bool,
@@ -5332,6 +5449,7 @@ pub(super) struct LooseSaved {
 impl LooseSaved {
     const UNKNOWN: LooseSaved = LooseSaved {
         mode: None,
+        rate: None,
         speed: None,
         joined: true,
     };
@@ -5340,6 +5458,7 @@ impl LooseSaved {
     fn merge(self, other: LooseSaved) -> LooseSaved {
         LooseSaved {
             mode: self.mode.filter(|&m| other.mode == Some(m)),
+            rate: self.rate.filter(|&v| other.rate == Some(v)),
             speed: self.speed.filter(|&v| other.speed == Some(v)),
             joined: self.joined || other.joined,
         }
@@ -5369,6 +5488,8 @@ pub(super) struct M72Cycle {
     pub(super) cycle: Option<i64>,
     pub(super) words: [Option<Dec>; 5],
     pub(super) bottom: Option<Dec>,
+    /// G73 and G74's R (`linuxcnc_cycle_r`).
+    pub(super) r: Option<Dec>,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
@@ -5384,9 +5505,6 @@ pub(super) struct FeedSaved {
     /// ([`Checker::linuxcnc_spindle_restored`]).
     spindle: Option<i64>,
     compensation: Option<(i64, bool)>,
-    /// A G20 or G21 since the save (or in the M72's block): it converts rs274's rate, which
-    /// the feed's restore is then not followed for; the spindle's and the compensation's are.
-    units: bool,
     /// No G or M code since the save (or in the save's block) that may change another
     /// modal group the restore writes: where the feed mode, rate and speed are the saved
     /// ones, the restore writes nothing and the M72 block's motion runs.
@@ -7744,6 +7862,14 @@ mod tests {
             // a G20 between leaves the feed's restore not followed, not the spindle's; a save
             // in a condition leaves it not known
             ("M70\nG20\nM72\nG21\nG33 Z-1 K0.1", Some((7, 1, refused))),
+            // across it the restore writes the saved rate after the block's own F: zero
+            // below 0.05 (the linuxcnc profile's F0.04: tests/test_linuxcnc_refusals.py),
+            // else not zero
+            (
+                "F0\nM70\nG20\nM72 F10\nG1 X1",
+                Some((7, 4, Rule::NoFeedRate)),
+            ),
+            ("F10\nM70\nG20\nM72 F0\nG1 X1", None),
             ("o1 if [1]\nM70\no1 endif\nM72\nG33 Z-1 K0.1", None),
         ];
         let judged = [

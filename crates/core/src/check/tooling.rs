@@ -927,6 +927,7 @@ impl Checker {
                 if let Some(code) = given {
                     self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
                 } else if self.linuxcnc_motion == LinuxCncMotion::Unknown
+                    && !self.linuxcnc_motion_plain
                     && !facts.moved().is_empty()
                 {
                     // (a move in a motion a call may have set: perhaps a cycle's)
@@ -985,6 +986,16 @@ impl Checker {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
         } else if g_unread {
             self.linuxcnc_motion = LinuxCncMotion::Unknown;
+            self.linuxcnc_motion_plain = false;
+        }
+        // (a definition's body that may leave a mode other than G0-G3: its calls leave the
+        // mode not known, `Checker::linuxcnc_motion_after_call`)
+        if (g_unread || given.is_some_and(|c| !matches!(c, 0 | 10 | 20 | 30 | 50 | 51)))
+            && self.open_definition.is_some()
+        {
+            if let Some(open) = &self.open_definition {
+                self.linuxcnc_motion_subs.insert(open.2.clone());
+            }
         }
         // (G43.1's axis words are the tool's offsets: no motion runs them, enhance_block)
         let data = codes.iter().any(|&c| linuxcnc_takes_axes(c) || c == 431);
@@ -1098,6 +1109,17 @@ impl Checker {
                 self.linuxcnc_cycle_bottom = None;
             }
         }
+        // G73 and G74's R, which the modal state keeps for G81-G89 alone on this profile:
+        // rs274 reads a repeat's R from the one it keeps (`cycle_r`), where the motion mode
+        // is the same cycle's (interp_cycles.cc `convert_cycle`), for its end
+        // (`Checker::linuxcnc_cycle_end`)
+        if let Some(m) = runs.filter(|&m| m == 730 || m == 740) {
+            if words.has(b'R') {
+                self.linuxcnc_cycle_r = words.value(b'R');
+            } else if before != LinuxCncMotion::Known(Some(m)) {
+                self.linuxcnc_cycle_r = None;
+            }
+        }
         // where the block's cycle or rigid tap leaves the tool, set after the block's rules
         // (`Checker::linuxcnc_cycle_end`); a move whose motion is not known may be one
         if runs.is_some_and(|m| m == 730 || m == 740 || (810..=890).contains(&m)) {
@@ -1112,7 +1134,9 @@ impl Checker {
         }
         self.linuxcnc_cycle_ran = match runs {
             Some(m @ (331 | 730 | 740 | 810..=890)) => Some(m),
-            _ if motion_in_doubt && !facts.moved().is_empty() => Some(0),
+            _ if motion_in_doubt && !self.linuxcnc_motion_plain && !facts.moved().is_empty() => {
+                Some(0)
+            }
             _ => None,
         };
 
@@ -1255,8 +1279,11 @@ impl Checker {
         let arc_words_used = matches!(runs, Some(20 | 30)) || letters & arcs == 0;
         // (a move in a motion a call may have set, perhaps a cycle's, takes the full path,
         // which leaves its end unsure: `Checker::linuxcnc_cycle_end`)
-        let in_doubt =
-            || self.linuxcnc_motion == LinuxCncMotion::Unknown && !facts.moved().is_empty();
+        let in_doubt = || {
+            self.linuxcnc_motion == LinuxCncMotion::Unknown
+                && !self.linuxcnc_motion_plain
+                && !facts.moved().is_empty()
+        };
         (runs.is_none_or(|m| matches!(m, 0 | 10 | 20 | 30))
             && arc_words_used
             && (runs.is_some() || !in_doubt()))
@@ -1535,8 +1562,15 @@ impl Checker {
                 .filter(|&(at, _)| at == k)
                 .map(|(_, z)| z)
         };
-        let r = state.cycle_words[0]
-            .filter(|_| !state.incremental && self.values.unknown & bit(b'R') == 0);
+        // (G73 and G74: the R kept here, `linuxcnc_cycle_r`; rs274 sets the axis to the
+        // clearance level after them as after G81-G89: interp_cycles.cc `convert_cycle_xy`,
+        // `current_z = clear_cc`; review 59b, F6)
+        let r = if matches!(ran, 730 | 740) {
+            self.linuxcnc_cycle_r
+        } else {
+            state.cycle_words[0]
+        };
+        let r = r.filter(|_| !state.incremental && self.values.unknown & bit(b'R') == 0);
         match (old, r) {
             (Some(old), Some(r)) if old <= r => {
                 state.position[k] = Some(r);
@@ -4251,8 +4285,32 @@ mod tests {
                 &["7: Start point too close to probe point"],
             ),
             ("S100 M3 F4\nG0 Z1\nG33.1 Z0 K0.1\nG38.2 Z0", &[]),
+            // G73 and G74 too, a repeat at the R kept (review 59b, F6)
+            (
+                "F4\nG0 Z0\nG73 X1 Z-1 R1 Q0.5\nX2\nG80\nG38.2 Z1",
+                &["9: Start point too close to probe point"],
+            ),
+            (
+                "F4 S100 M4\nG0 Z0\nG74 X1 Z-1 R1\nG80\nG38.2 Z1",
+                &["8: Start point too close to probe point"],
+            ),
             // a move whose motion a call may have set may be a cycle: its end is unsure
             ("o<c> call\nZ-1\nG38.2 Z-1 F4", &[]),
+            // not after a call of a definition whose body writes no motion code but G0-G3,
+            // the mode before G0-G3 (review 59b, F5), nor after a possible M72 drop between
+            // two of G0-G3 (F4); still after one whose body writes a cycle
+            (
+                "o100 sub\nG1 X1 F10\no100 endsub\nG0 Z0\no100 call\nZ0.5\nG38.2 Z0.5 F4",
+                &["10: Start point too close to probe point"],
+            ),
+            (
+                "o100 sub\nG81 X1 Z-1 R2 F4\no100 endsub\nG0 Z0\no100 call\nZ0.5\nG80\nG38.2 Z0.5",
+                &[],
+            ),
+            (
+                "F4\nG0 Z0\nM70\nG18\nM72 G1 X1\nG17\nZ0.5\nG38.2 Z0.5",
+                &["11: Start point too close to probe point"],
+            ),
             ("G0 X1\nG20\nG38.4 X0.03937 F10", &[]),
             // after the block's end the lines run unconditionally again: judged (review 17;
             // an `if` in a definition opens nothing in the main program)
