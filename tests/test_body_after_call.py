@@ -1,0 +1,112 @@
+"""A subprogram written after its call, run under the state of the call (review 61a).
+
+Review 59a F12 made a body written after the main's M30 run under the work offset in force at
+its call (`O1000` / `G90 G55` / `M98 P2000` / `M30` / `O2000` / `G0 X-700.` / `M99`: X-800,
+said). Review 61a found what the call's state must carry besides the offset: the tool length
+offset (F1), a G66 that makes no call at its own block (F9), the caller's excursion (F3).
+The profile is a FANUC mill whose G55 is X-100 (X travel -762..762, Z -508..10).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.parser import parse_text
+from formats.profile import load_profile
+from postproc.check import Checker
+
+
+def _wo2(tmp_path):
+    """A FANUC mill whose G55 is X-100 (X travel -762..762, Z -508..10)."""
+    profile = tmp_path / "wo2.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
+                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\n")
+    return str(profile)
+
+
+def said(blocks: str, profile: str) -> list[tuple[str, int, int, str]]:
+    """The errors of `%` / O1000 / `blocks` / `%`, with the start of each one's message."""
+    text = "%\nO1000\n" + blocks.replace(" / ", "\n") + "\n%\n"
+    prof = load_profile(profile)
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    return [(f.rule, f.line, f.column, f.message.split(", outside")[0])
+            for f in found if f.severity == "error"]
+
+
+MAIN = "G21 G17 G90 G55 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (b27m: the usual FANUC layout, the tool length in the main, Z moves in the body)
+    ("G43 H1 Z0 / M98 P2000 / M30 / O2000 / G0 Z-515. / M99", []),
+    # (f1a: G44; f1d: G65; f1e: a body called from the body; f1f: a canned cycle's Z)
+    ("G44 H1 Z0 / M98 P2000 / M30 / O2000 / G0 Z-515. / M99", []),
+    ("G43 H1 Z0 / G65 P2000 / M30 / O2000 / G0 Z-515. / M99", []),
+    ("G43 H1 Z0 / M98 P2000 / M30 / O2000 / M98 P3000 / M99 / O3000 / G0 Z-515. / M99", []),
+    ("G43 H1 Z0 / G0 X0 / M98 P2000 / M30 / O2000 / G81 X-10. Z-515. R2. F100. / G80 / M99",
+     []),
+    # (b27o: the span of the Z positions, which holds whatever the tool length, as before)
+    ("G43 H1 Z50. / M98 P2000 / G49 / M30 / O2000 / G0 Z-515. / M99",
+     [("TG601", 10, 4, "Z spans 565 (from -515 to 50), more than the travel -508 to 10: no "
+                       "work offset fits the program on this machine")]),
+    # (f1c: the body's own G49: its Z judged)
+    ("G43 H1 Z0 / M98 P2000 / M30 / O2000 / G49 / G0 Z-515. / M99",
+     [("TG601", 10, 4, "Z goes to -515 in machine coordinates (work -515 + G55 offset 0.0)")]),
+    # (no tool length at the call: judged, as flow60 made it)
+    ("M98 P2000 / M30 / O2000 / G0 Z-515. / M99",
+     [("TG601", 8, 4, "Z goes to -515 in machine coordinates (work -515 + G55 offset 0.0)")]),
+    # (the body's X still judged under the call's G55 with the tool length on)
+    ("G43 H1 Z0 / M98 P2000 / M30 / O2000 / G0 X-700. Z-515. / M99",
+     [("TG601", 9, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (two calls, one under G43 and one under G49: not known which, its Z not judged)
+    ("G43 H1 Z0 / M98 P2000 / G49 / M98 P2000 / M30 / O2000 / G0 X-700. Z-515. / M99", []),
+])
+def test_a_body_written_after_its_call_runs_under_the_call_s_tool_length(tmp_path, blocks,
+                                                                           expected):
+    """Review 61a F1: G43/G44 are modal and M98/G65 change none (0i-MF Operator's Manual,
+    "Tool length offset", "Subprogram call (M98)"): a body written after its call runs under
+    the tool length offset in force there, and its Z, as the same body's inline, is not
+    compared with the travel (the profile gives no tool lengths). It was "Z goes to -515",
+    the body read in the reset state's G49."""
+    assert said(MAIN + blocks, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("blocks", [
+    # (b4d: the one move the macro runs after is under G54: X-700, inside)
+    "G66 P2000 / G54 / G0 X10. / G67 / M30 / O2000 / G0 X-700. / M99",
+    # (b4b: no move between G66 and G67: the macro never runs)
+    "G66 P2000 / G67 / M30 / O2000 / G0 X-700. / M99",
+    # (b4: run after a move under G55: -800, but not judged: the offset at the moves is not
+    # followed)
+    "G66 P2000 / G0 X0 / G67 / M30 / O2000 / G0 X-700. / M99",
+    # (an M98 of the same program under G55 as well: the G66's offset not known, not judged)
+    "M98 P2000 / G66 P2000 / G54 / G0 X10. / G67 / M30 / O2000 / G0 X-700. / M99",
+])
+def test_a_g66_is_no_call_at_its_own_block(tmp_path, blocks):
+    """Review 61a F9: a G66 registers its macro, run after each later block with a move until
+    G67 (0i-MF Operator's Manual, "Modal call: G66"), under the offset in force at that move,
+    not the G66 block's: a body written after it is not read under the G66 block's offset
+    (it was "X goes to -800" under G55 where the control runs it under G54, or not at all)."""
+    assert said(MAIN + blocks, _wo2(tmp_path)) == []
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (b40: the call at X-800, the body's first move at X-810: one excursion)
+    ("G0 X-700. / M98 P2000 / M30 / O2000 / G0 X-710. / M99",
+     [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (the body back inside, then out again: a second excursion, said)
+    ("G0 X-700. / M98 P2000 / M30 / O2000 / G0 X0 / G0 X-710. / M99",
+     [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+      ("TG601", 10, 4, "X goes to -810 in machine coordinates (work -710 + G55 offset -100.0)")]),
+    # (the call inside: the body's first position outside said, as before)
+    ("M98 P2000 / M30 / O2000 / G0 X-710. / M99",
+     [("TG601", 8, 4, "X goes to -810 in machine coordinates (work -710 + G55 offset -100.0)")]),
+])
+def test_an_excursion_runs_from_the_call_into_a_body_written_after_it(tmp_path, blocks,
+                                                                       expected):
+    """Review 61a F3: a position beyond the travel at the call, and the body's first move
+    still beyond it on the same side, are one excursion, said once, as the same program
+    inline (it was said twice: the body began inside)."""
+    assert said(MAIN + blocks, _wo2(tmp_path)) == expected
