@@ -110,3 +110,43 @@ def test_an_excursion_runs_from_the_call_into_a_body_written_after_it(tmp_path, 
     still beyond it on the same side, are one excursion, said once, as the same program
     inline (it was said twice: the body began inside)."""
     assert said(MAIN + blocks, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("program, expected", [
+    # (x687: O3000 called only by O2000, read apart, under no offset known; O1000's G55
+    # left at its M30 is not O3000's)
+    ("M98 P3000 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P1 X-200. / M30 / "
+     "O3000 / G0 X-760. / M99", []),
+    # (x687b: the same without the G10)
+    ("M98 P3000 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M30 / O3000 / G0 X-760. / M99",
+     []),
+    # (a call under G55 known, in the main: judged, as flow60 made it)
+    ("G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / M30 / O3000 / G0 X-760. / M99",
+     [("TG601", 8, 4, "X goes to -860 in machine coordinates (work -760 + G55 offset -100.0)")]),
+])
+def test_a_body_called_where_the_offset_is_not_known_runs_under_none(tmp_path, program,
+                                                                     expected):
+    """Review 61a F5: a program written after its calls, one of them made where the work
+    offset was not known (in a program read apart, which nothing in the file selects an
+    offset for), runs under no offset the checker knows: not the one the program before it
+    in the file left at its M30 (it was "X goes to -860" under O1000's G55)."""
+    assert said(program, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (j2: the G10 an `M99 P5` passes over never runs: X-600. at -700, inside)
+    ("G21 G17 G90 G55 / G0 X0 Y0 / M99 P5 / G10 L2 P2 X-200. / N5 G0 X-600. / M30", []),
+    # (b72: the G55 it passes over never runs: O2000 runs under G54, not judged)
+    ("G21 G17 G90 G54 / G0 X0 Y0 / M99 P10 / G55 / N10 M98 P2000 / M30 / O2000 / G0 X-700. / "
+     "M99", []),
+    # (the G10 before the M99 P: followed, as flow60 made it)
+    ("G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P2 X-200. / G0 X-600. / M99 P5 / N5 M30",
+     [("TG601", 6, 4, "X goes to -800 in machine coordinates (work -600 + G55 offset -200 as "
+                      "a G10 before wrote it)")]),
+])
+def test_a_main_s_m99_p_is_a_jump(tmp_path, blocks, expected):
+    """Review 61a F10: a main program's `M99 P5` goes to its block N5 (0i-MF Operator's
+    Manual, "Subprogram call (M98)": M99 in the main program), passing over what lies
+    between: a G10 there writes no value known, a call after it is not read under the offset
+    in force in file order (they were followed: "X goes to -800")."""
+    assert said(blocks, _wo2(tmp_path)) == expected

@@ -531,12 +531,18 @@ impl Checker {
                 && !self.shifts_on()
                 && !self.frames_on()
                 && self.transformed.is_none()
+                // (after a return in the caller's program: reached only by a jump, the
+                // offset read in file order is not surely the one there, review 61a F10)
+                && !self.sub_ended
         });
         // a G66 makes no call here: it registers the macro, run after each later block that
         // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
         // "Modal call: G66"), or never (review 61a F9: `G66 P2000` / `G54` / `G0 X10.` /
         // `G67`, its body after M30 was judged under G55)
         let modal = self.values.gs().contains(&66);
+        if known.is_none() && !modal {
+            self.call_works_unknown.insert(number);
+        }
         let here = known.filter(|_| !modal).map(|work| {
             let (call, _) = self.call_words(b);
             let s = &self.machine.state;
@@ -594,6 +600,13 @@ impl Checker {
     #[inline(never)]
     fn work_of_calls(&mut self, number: i64) {
         let Some(Some(c)) = self.call_works.get(&number) else {
+            // (a call of it made where the offset was not known, as in a program read
+            // apart: not the offset the program before it in the file left, review 61a F5:
+            // `O2000` / `M98 P3000` / `M99` / `O1000` / `G90 G55` ... `M30` / `O3000` / `G0
+            // X-760.` was "X goes to -860" under O1000's G55)
+            if self.call_works_unknown.contains(&number) {
+                self.work = None;
+            }
             return;
         };
         if c.incremental != self.machine.state.incremental
