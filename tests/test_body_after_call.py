@@ -150,3 +150,30 @@ def test_a_main_s_m99_p_is_a_jump(tmp_path, blocks, expected):
     between: a G10 there writes no value known, a call after it is not read under the offset
     in force in file order (they were followed: "X goes to -800")."""
     assert said(blocks, _wo2(tmp_path)) == expected
+
+
+def test_a_caller_read_apart_in_units_assumed_gives_its_body_no_offset(tmp_path):
+    """Review 61a F11 (hu1): O2000, read apart before the main, selects G54 and calls O3000,
+    written after; O1000 (G21) calls O2000, so O3000's X-600. runs in millimetres, 23.6 in,
+    inside a Haas's inch travel. O2000's units are only assumed where its call is read: O3000
+    is not judged under its offset as a machine position in inches (it was "X goes to -600 in
+    machine coordinates"); the span's finding with its units caveat, as before."""
+    profile = tmp_path / "wo2h.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\n'
+                       "X = [-30.0, 30.0]\nY = [-16.0, 16.0]\nZ = [-20.0, 0.5]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
+    found = said("G54 / M98 P3000 / M99 / O01000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / "
+                 "M30 / O03000 / G0 X-600. / M99", str(profile))
+    assert [f[:3] for f in found] == [("TG601", 12, 4)]
+    assert found[0][3].startswith("X spans 600 (from -600 to 0), more than the travel")
+
+
+def test_a_call_entering_its_body_at_a_sequence_number_gives_it_no_offset(tmp_path):
+    """Review 61a F12 (q1): `M98 P2000 Q10` enters O2000 at its N10 (0i-F Operator's Manual,
+    "Subprogram call (M98)"): its `G0 X-700.` before N10 never runs, and is not judged under
+    the call's G55 (it was "X goes to -800"); the same call without Q judges it."""
+    body = " / M30 / O2000 / G0 X-700. / N10 G0 X0 / M99"
+    assert said(MAIN + "M98 P2000 Q10" + body, _wo2(tmp_path)) == []
+    assert said(MAIN + "M98 P2000" + body, _wo2(tmp_path)) == [
+        ("TG601", 8, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]

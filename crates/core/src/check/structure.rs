@@ -534,6 +534,12 @@ impl Checker {
                 // (after a return in the caller's program: reached only by a jump, the
                 // offset read in file order is not surely the one there, review 61a F10)
                 && !self.sub_ended
+                // (a caller read apart in units only assumed: its call's units are its own
+                // caller's, review 61a F11)
+                && (self.machine.state.units_given || !self.early_on)
+                // (`M98 P2000 Q10` enters the body at its N10, not at its first block: 0i-F
+                // Operator's Manual, "Subprogram call (M98)"; review 61a F12)
+                && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
         });
         // a G66 makes no call here: it registers the macro, run after each later block that
         // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
