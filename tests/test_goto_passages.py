@@ -897,6 +897,8 @@ def test_a_subprogram_written_after_its_call_runs_under_the_call_s_offset(tmp_pa
     "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G54 / M98 P2000 / M30",
     # (a6: under G54, X-700 inside)
     "G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / M30",
+    # (a G66 runs O2000 at each later move, here under G54: not the G66 block's G55)
+    "G21 G17 G90 G55 / G0 X0 Y0 / G66 P2000 / G54 / G0 X10. / G67 / M30",
 ])
 def test_a_subprogram_written_after_calls_not_known_is_read_as_before(tmp_path, main):
     """Review 59a, F12: where the offset at the calls is not the profile's (a G10, a G52

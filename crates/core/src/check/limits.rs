@@ -2385,17 +2385,11 @@ impl Checker {
                     "Z while a tool length offset was in force (the profile gives no tool lengths)"
                         .into(),
                 ),
-                (true, Some(work), Some(_)) if self.offset_unknown(work, i) => {
-                    self.travel_not(format!(
-                        "{} under G{work} after its value was set by a variable (#5201-#5326)",
-                        axis as char
-                    ))
-                }
-                (true, Some(work), Some(offset)) => {
+                (true, Some(work), Some(offset))
+                    if !self.offsets_written.any() && self.work_call.is_none() =>
+                {
                     self.stats.travel_absolute += 1;
-                    // (a G10 of the program's run with a value known: review 59a F8)
-                    let written = self.offset_written(work, i);
-                    let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
+                    let machine_at = at + offset.to_f64();
                     // which side of the travel the axis is outside (0 inside): a move from
                     // one side to the other crosses the travel, another excursion
                     let out = if machine_at < low - 1e-9 {
@@ -2406,31 +2400,18 @@ impl Checker {
                         0
                     };
                     if out != 0 && out != self.outside[i] {
-                        let value = written.map_or_else(
-                            || offset.to_string(),
-                            |v| format!("{} as a G10 before wrote it", round6(v)),
-                        );
-                        let mut message = format!(
+                        let message = format!(
                             "{} goes to {} in machine coordinates (work {} + G{work} offset \
-                                 {value}), outside the travel {low} to {high}",
+                                 {offset}), outside the travel {low} to {high}",
                             axis as char,
                             round6(machine_at),
                             round6(at)
                         );
-                        if let Some(w) = &self.work_call {
-                            message.push_str(&w.named(self.in_hand, work));
-                        }
-                        // (one judged with a value written is not judged again at a call
-                        // with the caller's: its own G10 decides)
-                        let placed = if written.is_some() {
-                            super::Placed::Not
-                        } else {
-                            super::Placed::Offset {
-                                place: i as u8,
-                                work: work as u8,
-                                at,
-                                line,
-                            }
+                        let placed = super::Placed::Offset {
+                            place: i as u8,
+                            work: work as u8,
+                            at,
+                            line,
                         };
                         if self.report_placed(message, (line, col(axis)), placed)
                             && (self.work_guessed.is_some() || self.work_run_on)
@@ -2442,6 +2423,17 @@ impl Checker {
                         self.excursion_farther(i, work, (at, line), out);
                     }
                     self.outside[i] = out;
+                }
+                // (after a G10 of a value known, review 59a F8, or in a program written
+                // after its calls, F12: out of line)
+                (true, Some(work), Some(offset)) => {
+                    said_outside = self.offset_position(
+                        (axis, i),
+                        at,
+                        (work, offset),
+                        (low, high),
+                        (line, col(axis)),
+                    );
                 }
                 (true, Some(work), None) => self.travel_not(format!(
                     "{} under G{work}: the profile gives no G{work} {}",
@@ -2841,6 +2833,80 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// A position `at` of `axis` (place `i`) under work offset G`work`, whose value on that
+    /// axis is the profile's `offset` unless a G10 of the program's run wrote it: TG601 where
+    /// the machine position is beyond the travel, once an excursion. Whether it was said.
+    /// (Out of line: read only under a profile that gives work offsets.)
+    #[inline(never)]
+    fn offset_position(
+        &mut self,
+        (axis, i): (u8, usize),
+        at: f64,
+        (work, offset): (i64, Dec),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) -> bool {
+        if self.offset_unknown(work, i) {
+            self.travel_not(format!(
+                "{} under G{work} after its value was set by a variable (#5201-#5326)",
+                axis as char
+            ));
+            return false;
+        }
+        self.stats.travel_absolute += 1;
+        // (a G10 of the program's run with a value known: review 59a F8)
+        let written = self.offset_written(work, i);
+        let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
+        // which side of the travel the axis is outside (0 inside): a move from one side to
+        // the other crosses the travel, another excursion
+        let out = if machine_at < low - 1e-9 {
+            -1
+        } else if machine_at > high + 1e-9 {
+            1
+        } else {
+            0
+        };
+        let mut said_outside = false;
+        if out != 0 && out != self.outside[i] {
+            let value = written.map_or_else(
+                || offset.to_string(),
+                |v| format!("{} as a G10 before wrote it", round6(v)),
+            );
+            let mut message = format!(
+                "{} goes to {} in machine coordinates (work {} + G{work} offset {value}), \
+                 outside the travel {low} to {high}",
+                axis as char,
+                round6(machine_at),
+                round6(at)
+            );
+            if let Some(w) = &self.work_call {
+                message.push_str(&w.named(self.in_hand, work));
+            }
+            // (one judged with a value written is not judged again at a call with the
+            // caller's: its own G10 decides)
+            let placed = if written.is_some() {
+                super::Placed::Not
+            } else {
+                super::Placed::Offset {
+                    place: i as u8,
+                    work: work as u8,
+                    at,
+                    line,
+                }
+            };
+            if self.report_placed(message, (line, column), placed)
+                && (self.work_guessed.is_some() || self.work_run_on)
+            {
+                self.found.last_mut().expect("said").guessed = true;
+            }
+            said_outside = true;
+        } else if out != 0 {
+            self.excursion_farther(i, work, (at, line), out);
+        }
+        self.outside[i] = out;
+        said_outside
     }
 
     /// The value a G10 of the program's run wrote, known, of offset G`work` on the axis of

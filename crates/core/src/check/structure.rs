@@ -520,9 +520,13 @@ impl Checker {
         if self.config.work_offsets.is_empty() {
             return;
         }
-        let other_g = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'G' && !self.readable[i].is_some_and(|v| v.eq_int(65) || v.eq_int(66))
-        });
+        // (a G66 runs the program at each later move, under the offset in force there: not
+        // this block's)
+        let other_g = b
+            .words
+            .iter()
+            .enumerate()
+            .any(|(i, w)| w.letter == b'G' && !self.readable[i].is_some_and(|v| v.eq_int(65)));
         let known = self.work.filter(|_| {
             !self.offsets_lost
                 && !other_g
