@@ -1420,6 +1420,10 @@ pub struct Checker {
     /// where the calls disagree or one's offset was not known. A program written after its
     /// calls runs under it ([`Checker::called_units`]; review 59a, F12).
     call_works: HashMap<i64, Option<structure::CallWork>>,
+    /// The program numbers of [`Checker::call_works`] with a call made where the work offset
+    /// in force was not known (not only calls that disagree): a program of that number
+    /// written after them runs under no offset the checker knows (review 61a F5).
+    call_works_unknown: HashSet<i64>,
     /// The program in hand, written after its calls, runs under the work offset of
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
@@ -1693,6 +1697,7 @@ impl Checker {
             linuxcnc_loop_defs: None,
             call_units: HashMap::new(),
             call_works: HashMap::new(),
+            call_works_unknown: HashSet::new(),
             work_call: None,
             units_unknown: false,
             early: None,
@@ -2808,6 +2813,11 @@ impl Checker {
                     })
             };
             let skippable = skipped_m(&[99]);
+            // (what follows a return in its program runs only where a jump arrives: a main's
+            // `M99 P5` goes to its N5, a plain M99 to its start, passing over what lies
+            // between (0i-MF Operator's Manual, "Subprogram call (M98)"): a G10 after it is
+            // no value known, review 61a F10)
+            self.jumped |= returns;
             if ends {
                 self.skipped_end = skipped_m(&[2, 30]);
             }

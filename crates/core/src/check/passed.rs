@@ -433,6 +433,7 @@ impl Checker {
         self.compensation_exit = run.compensation_exit;
         self.call_units = run.call_units;
         self.call_works = run.call_works;
+        self.call_works_unknown = run.call_works_unknown;
         self.units_unknown = run.units_unknown;
         self.unknown_call = run.unknown_call;
         self.feed_pending = run.feed_pending;

@@ -538,12 +538,32 @@ impl Checker {
                 && !self.shifts_on()
                 && !self.frames_on()
                 && self.transformed.is_none()
+                // (after a return in the caller's program: reached only by a jump, the
+                // offset read in file order is not surely the one there, review 61a F10)
+                && !self.sub_ended
+                // (a caller read apart in units only assumed: its call's units are its own
+                // caller's, review 61a F11)
+                && (self.machine.state.units_given || !self.early_on)
+                // (`M98 P2000 Q10` enters the body at its N10, not at its first block: 0i-F
+                // Operator's Manual, "Subprogram call (M98)"; review 61a F12)
+                && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
         });
-        let here = known.map(|work| {
+        // a G66 makes no call here: it registers the macro, run after each later block that
+        // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
+        // "Modal call: G66"), or never (review 61a F9: `G66 P2000` / `G54` / `G0 X10.` /
+        // `G67`, its body after M30 was judged under G55)
+        let modal = self.values.gs().contains(&66);
+        if known.is_none() && !modal {
+            self.call_works_unknown.insert(number);
+        }
+        let here = known.filter(|_| !modal).map(|work| {
             let (call, _) = self.call_words(b);
+            let s = &self.machine.state;
             CallWork {
                 work,
-                incremental: self.machine.state.incremental,
+                incremental: s.incremental,
+                length: (s.length_offset, self.length_decimal),
+                outside: self.outside,
                 written: self.offsets_written.clone(),
                 call,
                 line: b.line,
@@ -554,9 +574,16 @@ impl Checker {
             .and_modify(|before| {
                 let same = matches!((&*before, &here), (Some(a), Some(b))
                     if a.work == b.work && a.incremental == b.incremental
-                        && a.written.same(&b.written));
-                if !same {
-                    *before = None;
+                        && a.length == b.length && a.written.same(&b.written));
+                match (before.as_mut(), &here) {
+                    (Some(a), Some(b)) if same => {
+                        // (calls beyond the travel on different sides: the body's first
+                        // position outside said, review 61a F3)
+                        if a.outside != b.outside {
+                            a.outside = [0; 9];
+                        }
+                    }
+                    _ => *before = None,
                 }
             })
             .or_insert(here);
@@ -571,6 +598,7 @@ impl Checker {
             self.work = w.work_before;
             self.offsets_lost = w.lost_before;
             self.outside = w.outside_before;
+            (self.machine.state.length_offset, self.length_decimal) = w.length_before;
         }
     }
 
@@ -585,6 +613,13 @@ impl Checker {
     #[inline(never)]
     fn work_of_calls(&mut self, number: i64) {
         let Some(Some(c)) = self.call_works.get(&number) else {
+            // (a call of it made where the offset was not known, as in a program read
+            // apart: not the offset the program before it in the file left, review 61a F5:
+            // `O2000` / `M98 P3000` / `M99` / `O1000` / `G90 G55` ... `M30` / `O3000` / `G0
+            // X-760.` was "X goes to -860" under O1000's G55)
+            if self.call_works_unknown.contains(&number) {
+                self.work = None;
+            }
             return;
         };
         if c.incremental != self.machine.state.incremental
@@ -602,11 +637,17 @@ impl Checker {
             work_before: self.work,
             lost_before: self.offsets_lost,
             outside_before: self.outside,
+            length_before: (self.machine.state.length_offset, self.length_decimal),
         };
         self.offsets_written = c.written.clone();
         self.work = Some(w.work);
         self.offsets_lost = false;
-        self.outside = [0; 9];
+        // (the caller's excursion runs on into it: one excursion, one finding, review 61a F3)
+        self.outside = c.outside;
+        // (and its tool length offset: G43/G44 are modal and the call changes none; a Z
+        // under it is not compared, as the same body inline, review 61a F1: `G43 H1 Z0` /
+        // `M98 P2000` / `M30` / `O2000` / `G0 Z-515.` was a "Z goes to -515")
+        (self.machine.state.length_offset, self.length_decimal) = c.length;
         self.work_call = Some(Box::new(w));
     }
 
@@ -5300,6 +5341,12 @@ pub(super) struct OpenBlock {
 pub(super) struct CallWork {
     work: i64,
     incremental: bool,
+    /// The tool length offset in force at the call (G43/G44/G49, and whether by a decimal
+    /// code): the body runs under it (review 61a F1).
+    length: (i64, bool),
+    /// Which side of the travel each axis was outside at the call ([`Checker::outside`]):
+    /// the body's first position continues that excursion (review 61a F3).
+    outside: [i8; 9],
     /// The offsets a G10 of the caller's run wrote before the call, values known
     /// ([`Checker::offsets_written`]; review 59a F8).
     written: super::limits::Written,
@@ -5317,6 +5364,7 @@ pub(super) struct WorkCall {
     work_before: Option<i64>,
     lost_before: bool,
     outside_before: [i8; 9],
+    length_before: (i64, bool),
 }
 
 impl WorkCall {
