@@ -11,29 +11,7 @@ from __future__ import annotations
 
 import pytest
 
-from formats.parser import parse_text
-from formats.profile import load_profile
-from postproc.check import Checker
-
-
-def _wo2(tmp_path):
-    """A FANUC mill whose G55 is X-100 (X travel -762..762, Z -508..10)."""
-    profile = tmp_path / "wo2.toml"
-    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n[limits]\n'
-                       "X = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
-                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
-                       "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\n")
-    return str(profile)
-
-
-def said(blocks: str, profile: str) -> list[tuple[str, int, int, str]]:
-    """The errors of `%` / O1000 / `blocks` / `%`, with the start of each one's message."""
-    text = "%\nO1000\n" + blocks.replace(" / ", "\n") + "\n%\n"
-    prof = load_profile(profile)
-    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
-    return [(f.rule, f.line, f.column, f.message.split(", outside")[0])
-            for f in found if f.severity == "error"]
-
+from tests.test_goto_passages import _wo2, said
 
 MAIN = "G21 G17 G90 G55 / G0 X0 Y0 / "
 

@@ -3470,14 +3470,16 @@ impl Checker {
             Some(c) if c.r == self.linuxcnc_cycle_r => {}
             _ => self.linuxcnc_cycle_r = None,
         }
-        // (the cycle in force before a surely dropped block, its words and bottom kept, even
-        // where the block writes no motion code: `M72 X2 R3` leaves R1, review 61b F5)
+        // (a canned cycle in force before a surely dropped block stays in force with its
+        // words and bottom, even where the block writes no motion code: review 59b, F2,
+        // `F10` / `G81 X1 Z-1 R1` / `M70` / `G93` / `M72 G1 X2` / `X3` is "Cannot feed with
+        // zero feed rate" at `X3`; `M72 X2 R3` leaves R1, review 61b F5)
         if let Some(c) = cycle.filter(|c| {
             surely
-                && self.linuxcnc_motion == motion
                 && matches!(motion, LinuxCncMotion::Known(Some(730 | 740 | 810..=890)))
                 && c.cycle.is_some()
         }) {
+            self.linuxcnc_motion = motion;
             let state = &mut self.machine.state;
             state.motion = c.motion;
             state.cycle = c.cycle;
@@ -3493,23 +3495,6 @@ impl Checker {
             LinuxCncMotion::Known(Some(m @ (0 | 10 | 20 | 30))) => Some(Some(m / 10)),
             _ => None,
         };
-        // (a canned cycle in force before a surely dropped block stays in force with its
-        // words: review 59b, F2, `F10` / `G81 X1 Z-1 R1` / `M70` / `G93` / `M72 G1 X2` / `X3`
-        // is "Cannot feed with zero feed rate" at `X3`)
-        let cycle = cycle.filter(|c| {
-            surely
-                && matches!(motion, LinuxCncMotion::Known(Some(730 | 740 | 810..=890)))
-                && c.cycle.is_some()
-        });
-        if let Some(c) = cycle {
-            self.linuxcnc_motion = motion;
-            let state = &mut self.machine.state;
-            state.motion = c.motion;
-            state.cycle = c.cycle;
-            state.cycle_words = c.words;
-            self.linuxcnc_cycle_bottom = c.bottom;
-            return;
-        }
         match modal.filter(|_| surely) {
             Some(back) => {
                 self.linuxcnc_motion = motion;
