@@ -1357,6 +1357,9 @@ BODY_MOTION = [
     # the G2 in a condition not taken: not known, no error
     ("o100 sub\no1 if [#1 GT 0]\nG2 X1 Y0 I0.5 J0\no1 endif\no100 endsub\no100 call\n"
      "Z0.5", None),
+    # the G1 in a condition taken, after the caller's G2: not known, not an arc
+    ("o100 sub\no1 if [#1 GT 0]\nG1 X2 Y0\no1 endif\no100 endsub\nG2 X1 Y0 I0.5 J0\n"
+     "o100 call [1]\nX3", None),
     # a cycle in the body: the caller's G1 after its endsub
     ("G1 X0\no100 sub\nG81 X1 Y1 Z-1 R1\no100 endsub\nX2 Y2", None),
 ]

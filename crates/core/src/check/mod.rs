@@ -1095,8 +1095,10 @@ pub struct Checker {
     /// LinuxCNC: the open definition's body has a `return` (a way out before its end).
     linuxcnc_body_returns: bool,
     /// LinuxCNC: the motion mode (G0-G3) a definition's body surely leaves, by its label:
-    /// the mode after a call of it (review 61b, F4).
-    linuxcnc_sub_motion: HashMap<Vec<u8>, i64>,
+    /// the mode after a call of it (review 61b, F4); `None` where the body's last mode is
+    /// not known and not the one before its sub (after a call: not known). A label not here
+    /// leaves the caller's mode.
+    linuxcnc_sub_motion: HashMap<Vec<u8>, Option<i64>>,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,

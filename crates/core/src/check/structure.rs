@@ -3772,9 +3772,9 @@ impl Checker {
             }
         }
         self.linuxcnc_motion_plain = called && plain && before_plain;
-        if left.is_some() {
+        if let Some(motion) = left {
             // (a G0-G3 ends a cycle in force)
-            self.machine.state.motion = left;
+            self.machine.state.motion = motion;
             self.machine.state.cycle = None;
         }
     }
@@ -3849,9 +3849,14 @@ impl Checker {
             && !self.linuxcnc_body_returns
             && state.cycle.is_none();
         let (motion, cycle, words, label) = std::mem::take(&mut self.linuxcnc_motion_before_sub);
+        // (a body whose last mode is not known but differs from the one before its sub as
+        // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
         match state.motion {
             Some(m @ 0..=3) if known => {
-                self.linuxcnc_sub_motion.insert(label, m);
+                self.linuxcnc_sub_motion.insert(label, Some(m));
+            }
+            now if now != motion || state.cycle != cycle => {
+                self.linuxcnc_sub_motion.insert(label, None);
             }
             _ => {
                 self.linuxcnc_sub_motion.remove(&label);
