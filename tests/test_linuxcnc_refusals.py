@@ -1339,6 +1339,42 @@ def test_a_move_after_a_call_that_may_leave_a_cycle_is_not_known_exactly(tmp_pat
     clean_on_both(tmp_path, program(body))
 
 
+# rs274 reads a definition without running it: after its endsub the motion mode (and cycle)
+# from before its sub is in force; after a call of it, the G0-G3 its body surely leaves (the
+# last motion code, not in a condition, loop or after a return), else not known (review 61b,
+# F4). HEAD sets G0. (the blocks after HEAD; the refused line, or None where rs274 runs)
+BODY_MOTION = [
+    ("o100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub\nZ1", None),
+    ("o100 sub\nG3 X1 Y0 R1\no100 endsub\nX2 Y0", None),
+    ("o100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub\nG17 X2", None),
+    ("o100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub\no100 call\nZ0.5", 7),
+    ("o100 sub\no1 if [#1 GT 0]\nG1 X2\no1 endif\nG2 X1 Y0 I0.5 J0\no100 endsub\n"
+     "o100 call\nZ0.5", 10),
+    # the body's G1 after the caller's G2: the call leaves G1
+    ("o100 sub\nG1 X2 Y0\no100 endsub\nG2 X1 Y0 I0.5 J0\no100 call\nZ0.5", None),
+    # a second call after a G1 of the caller
+    ("o100 sub\nG3 X1 Y0 R1\no100 endsub\nG1 X0\no100 call\nG1 X3\no100 call\nX2", 10),
+    # the G2 in a condition not taken: not known, no error
+    ("o100 sub\no1 if [#1 GT 0]\nG2 X1 Y0 I0.5 J0\no1 endif\no100 endsub\no100 call\n"
+     "Z0.5", None),
+    # the G1 in a condition taken, after the caller's G2: not known, not an arc
+    ("o100 sub\no1 if [#1 GT 0]\nG1 X2 Y0\no1 endif\no100 endsub\nG2 X1 Y0 I0.5 J0\n"
+     "o100 call [1]\nX3", None),
+    # a cycle in the body: the caller's G1 after its endsub
+    ("G1 X0\no100 sub\nG81 X1 Y1 Z-1 R1\no100 endsub\nX2 Y2", None),
+]
+
+
+@pytest.mark.parametrize("body, line", BODY_MOTION)
+def test_a_definition_s_motion_mode_is_its_calls_not_the_lines_after_it(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+
+
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
 # a G20/G21 (no SET_FEED_RATE there), so the restore is as without one: the saved rate where
 # the rate in force after the block's own F equals it, else the saved rate as F%.1f

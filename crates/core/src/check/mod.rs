@@ -1087,6 +1087,18 @@ pub struct Checker {
     /// LinuxCNC: whether the motion mode before the open definition's `sub` was G0-G3 or
     /// none, in force again after its `endsub`.
     linuxcnc_plain_before_sub: bool,
+    /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
+    /// definition's `sub`, put back at its `endsub` (rs274 reads a definition without
+    /// running it; review 61b, F4).
+    /// And the definition's label.
+    linuxcnc_motion_before_sub: (Option<i64>, Option<i64>, [Option<Dec>; 5], Vec<u8>),
+    /// LinuxCNC: the open definition's body has a `return` (a way out before its end).
+    linuxcnc_body_returns: bool,
+    /// LinuxCNC: the motion mode (G0-G3) a definition's body surely leaves, by its label:
+    /// the mode after a call of it (review 61b, F4); `None` where the body's last mode is
+    /// not known and not the one before its sub (after a call: not known). A label not here
+    /// leaves the caller's mode.
+    linuxcnc_sub_motion: HashMap<Vec<u8>, Option<i64>>,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
@@ -1723,6 +1735,9 @@ impl Checker {
             linuxcnc_motion_plain: false,
             linuxcnc_motion_subs: HashSet::new(),
             linuxcnc_plain_before_sub: false,
+            linuxcnc_motion_before_sub: (None, None, [None; 5], Vec::new()),
+            linuxcnc_body_returns: false,
+            linuxcnc_sub_motion: HashMap::new(),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,

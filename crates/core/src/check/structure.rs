@@ -322,6 +322,7 @@ impl Checker {
         self.linuxcnc_plane_subs.clear();
         self.linuxcnc_motion_plain = false;
         self.linuxcnc_motion_subs.clear();
+        self.linuxcnc_sub_motion.clear();
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
@@ -3737,6 +3738,8 @@ impl Checker {
             return;
         }
         let (mut plain, mut called) = (true, false);
+        // (the motion mode the last call's body surely leaves: review 61b, F4)
+        let mut left = None;
         for &(_, kind, text) in b.statements {
             if kind == Kind::Definition && self.open_definition.is_none() {
                 // (an endsub: rs274 reads a definition without running it, the mode before
@@ -3747,10 +3750,17 @@ impl Checker {
             }
             if kind != Kind::Call {
                 plain = false;
+                left = None;
+                if self.open_definition.is_some()
+                    && text.windows(6).any(|w| w.eq_ignore_ascii_case(b"return"))
+                {
+                    self.linuxcnc_body_returns = true;
+                }
                 continue;
             }
             called = true;
             let label = self.linuxcnc_call_label(text);
+            left = self.linuxcnc_sub_motion.get(&label).copied();
             if crate::statement::computed_label(&label)
                 || !self.linuxcnc_defined.contains(&label)
                 || self.linuxcnc_motion_subs.contains(&label)
@@ -3762,6 +3772,11 @@ impl Checker {
             }
         }
         self.linuxcnc_motion_plain = called && plain && before_plain;
+        if let Some(motion) = left {
+            // (a G0-G3 ends a cycle in force)
+            self.machine.state.motion = motion;
+            self.machine.state.cycle = None;
+        }
     }
 
     /// LinuxCNC: whether the motion mode in force is G0-G3 or none, known or not
@@ -3795,6 +3810,15 @@ impl Checker {
                 // (and whether the motion mode before it is G0-G3 or none, which its endsub
                 // gives back: `Checker::linuxcnc_motion_after_call`)
                 self.linuxcnc_plain_before_sub = self.linuxcnc_motion_is_plain();
+                let state = &self.machine.state;
+                let label = self.open_definition.as_ref().map(|o| o.2.clone());
+                self.linuxcnc_motion_before_sub = (
+                    state.motion,
+                    state.cycle,
+                    state.cycle_words,
+                    label.unwrap_or_default(),
+                );
+                self.linuxcnc_body_returns = false;
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
             }
@@ -3802,10 +3826,46 @@ impl Checker {
                 if let Some(before) = self.linuxcnc_plane_before_sub.take() {
                     self.linuxcnc_plane_set(before);
                 }
+                self.linuxcnc_definition_motion();
                 self.linuxcnc_plane_body_blocks.clear();
             }
             _ => {}
         }
+    }
+
+    /// LinuxCNC: at a definition's `endsub`, the motion mode its body surely leaves (a
+    /// G0-G3 read last, not in a condition or loop, no `return` before it, no call after
+    /// it) kept for its calls, and the motion mode, cycle and cycle words from before its
+    /// `sub` put back: rs274 reads a definition without running it (review 61b, F4: `o100
+    /// sub` / `G2 X1 Y0 I0.5 J0` / `o100 endsub` / `Z1` runs in `rs274 -g`, and `o100 call`
+    /// / `Z0.5` after it is "R i j k words all missing for arc").
+    fn linuxcnc_definition_motion(&mut self) {
+        use super::tooling::LinuxCncMotion;
+        let state = &self.machine.state;
+        let known = matches!(
+            self.linuxcnc_motion,
+            LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
+        ) && !self.motion_unknown
+            && !self.linuxcnc_body_returns
+            && state.cycle.is_none();
+        let (motion, cycle, words, label) = std::mem::take(&mut self.linuxcnc_motion_before_sub);
+        // (a body whose last mode is not known but differs from the one before its sub as
+        // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
+        match state.motion {
+            Some(m @ 0..=3) if known => {
+                self.linuxcnc_sub_motion.insert(label, Some(m));
+            }
+            now if now != motion || state.cycle != cycle => {
+                self.linuxcnc_sub_motion.insert(label, None);
+            }
+            _ => {
+                self.linuxcnc_sub_motion.remove(&label);
+            }
+        }
+        let state = &mut self.machine.state;
+        state.motion = motion;
+        state.cycle = cycle;
+        state.cycle_words = words;
     }
 
     /// LinuxCNC: the plane through a condition or loop (`blocks`, one for each block open,
