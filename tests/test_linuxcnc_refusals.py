@@ -1163,12 +1163,20 @@ CYCLE_END_REFUSED = [
 ]
 
 
+def assert_refused_as_rs274(tmp_path, text, rule, line, column, message):
+    """The one error is `rule` at line and column, and rs274 stops with `message`; the
+    error is returned."""
+    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
+    assert message in rs274_output(tmp_path, text)
+    return found[0]
+
+
 def assert_too_close_refused(tmp_path, text, line, column):
     """The one error is rs274's "too close" probe start, where rs274 stops too."""
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [("TG412", line, column)], found
-    assert "Start point too close to probe point" in found[0].message
-    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+    too_close = "Start point too close to probe point"
+    assert too_close in assert_refused_as_rs274(tmp_path, text, "TG412", line, column,
+                                                too_close).message
 
 
 @pytest.mark.parametrize("body", CYCLE_END_RUNS)
@@ -1205,27 +1213,23 @@ def test_a_dropped_m72_block_s_motion_code_does_not_take_effect(tmp_path, body):
 def test_the_motion_before_a_surely_dropped_m72_block_is_judged_after_it(tmp_path):
     # G1 stays in force through `M72 G0 X1`: `X2` feeds at F0
     text = program("G94\nG1 X0.5 F10\nF0\nM70\nG93\nM72 G0 X1\nX2")
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", 9, 1)], found
-    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+    assert_refused_as_rs274(tmp_path, text, "TG401", 9, 1, "Cannot do g1 with zero feed rate")
 
 
 @pytest.mark.parametrize("body, line, column", [
-    # a G20/G21 between the save and the restore converts rs274's rate, but a zero stays zero
-    # (review 58c, F2): the restore leaves F0
+    # a G20/G21 between the save and the restore converts no rate in rs274 (review 61b F1):
+    # a zero saved and in force stays zero (review 58c, F2), the restore leaves F0
     ("G94 F0\nM70\nG20\nM72\nG1 X1", 7, 4),
     ("G94 F0\nM70\nG20\nM72 G1 X1\nG1 X2", 7, 4),
 ])
 def test_a_zero_rate_saved_and_in_force_across_a_units_change_is_zero_after_m72(
         tmp_path, body, line, column):
-    text = program(body)
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, column)], found
-    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+    assert_refused_as_rs274(tmp_path, program(body), "TG401", line, column,
+                            "Cannot do g1 with zero feed rate")
 
 
-def test_a_rate_saved_before_a_units_change_is_not_known_after_m72(tmp_path):
-    # (F100 saved, F100 converted by G20: the restore's F is not followed)
+def test_a_rate_saved_before_a_units_change_runs_after_m72(tmp_path):
+    # (F100 saved and in force at the M72: the restore leaves F100, which G1 feeds at)
     clean_on_both(tmp_path, program("G94 F100\nM70\nG20\nM72\nG1 X1"))
 
 
@@ -1278,10 +1282,7 @@ M72_SURE_DROP_REFUSED = [
 @pytest.mark.parametrize("body, rule, line, column, message", M72_SURE_DROP_REFUSED)
 def test_a_surely_dropped_m72_block_leaves_the_plane_compensation_and_cycle_before_it(
         tmp_path, body, rule, line, column, message):
-    text = program(body)
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [(rule, line, column)], found
-    assert message in rs274_output(tmp_path, text)
+    assert_refused_as_rs274(tmp_path, program(body), rule, line, column, message)
 
 
 # After a call of a definition read before it whose body writes no motion code but G0-G3
@@ -1402,9 +1403,7 @@ def test_an_m72_across_a_units_change_leaves_the_saved_rate_not_its_block_s_f(
     if line is None:
         clean_on_both(tmp_path, text)
         return
-    found = [f for f in check_text(text, load_profile("linuxcnc")) if f.severity == "error"]
-    assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
-    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+    assert_refused_as_rs274(tmp_path, text, "TG401", line, 4, "Cannot do g1 with zero feed rate")
 
 
 # A G73/G81 repeat after a surely dropped M72 block (the speed differs: the restore's block

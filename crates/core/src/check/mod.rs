@@ -1088,10 +1088,9 @@ pub struct Checker {
     /// none, in force again after its `endsub`.
     linuxcnc_plain_before_sub: bool,
     /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
-    /// definition's `sub`, put back at its `endsub` (rs274 reads a definition without
-    /// running it; review 61b, F4).
-    /// And the definition's label.
-    linuxcnc_motion_before_sub: (Option<i64>, Option<i64>, [Option<Dec>; 5], Vec<u8>),
+    /// definition's `sub`, and its label, put back at its `endsub` (rs274 reads a definition
+    /// without running it; review 61b, F4).
+    linuxcnc_motion_before_sub: structure::MotionBeforeSub,
     /// LinuxCNC: the open definition's body has a `return` (a way out before its end).
     linuxcnc_body_returns: bool,
     /// LinuxCNC: the motion mode (G0-G3) a definition's body surely leaves, by its label:
@@ -1735,7 +1734,7 @@ impl Checker {
             linuxcnc_motion_plain: false,
             linuxcnc_motion_subs: HashSet::new(),
             linuxcnc_plain_before_sub: false,
-            linuxcnc_motion_before_sub: (None, None, [None; 5], Vec::new()),
+            linuxcnc_motion_before_sub: structure::MotionBeforeSub::default(),
             linuxcnc_body_returns: false,
             linuxcnc_sub_motion: HashMap::new(),
             linuxcnc_spindle_unknown: false,

@@ -3812,12 +3812,12 @@ impl Checker {
                 self.linuxcnc_plain_before_sub = self.linuxcnc_motion_is_plain();
                 let state = &self.machine.state;
                 let label = self.open_definition.as_ref().map(|o| o.2.clone());
-                self.linuxcnc_motion_before_sub = (
-                    state.motion,
-                    state.cycle,
-                    state.cycle_words,
-                    label.unwrap_or_default(),
-                );
+                self.linuxcnc_motion_before_sub = MotionBeforeSub {
+                    motion: state.motion,
+                    cycle: state.cycle,
+                    words: state.cycle_words,
+                    label: label.unwrap_or_default(),
+                };
                 self.linuxcnc_body_returns = false;
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
@@ -3848,7 +3848,12 @@ impl Checker {
         ) && !self.motion_unknown
             && !self.linuxcnc_body_returns
             && state.cycle.is_none();
-        let (motion, cycle, words, label) = std::mem::take(&mut self.linuxcnc_motion_before_sub);
+        let MotionBeforeSub {
+            motion,
+            cycle,
+            words,
+            label,
+        } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
         // (a body whose last mode is not known but differs from the one before its sub as
         // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
         match state.motion {
@@ -5570,6 +5575,17 @@ pub(super) struct M72Dropped {
     pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
+}
+
+/// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
+/// definition's `sub`, put back at its `endsub`, and the definition's label
+/// ([`Checker::linuxcnc_definition_motion`]).
+#[derive(Debug, Clone, Default)]
+pub(super) struct MotionBeforeSub {
+    pub(super) motion: Option<i64>,
+    pub(super) cycle: Option<i64>,
+    pub(super) words: [Option<Dec>; 5],
+    pub(super) label: Vec<u8>,
 }
 
 /// LinuxCNC: the canned cycle in force before a block with an M72 while a save is followed
