@@ -31,6 +31,12 @@ size and modification time of each module the profile and the spec are made by, 
 core (:func:`_code`), as Python keys its ``.pyc`` files. An entry
 of another key, of other code (an update of tapegate, a module edited), damaged or cut short
 is ignored and written again; written as the tables are (a temporary file renamed).
+
+For ``tapegate check`` with a built-in profile written on no ``base``, what the check takes of
+the profile -- the machine spec and the dialect's flags -- is kept once more, as
+``compiled-NAME-CRC.marshal`` (:func:`store_compiled`, :func:`load_compiled`), keyed by the
+profile file's bytes (held in the entry and compared whole) and by the same code: read back,
+the check needs neither the profile's modules nor its validation (:class:`Compiled`).
 """
 
 from __future__ import annotations
@@ -44,7 +50,8 @@ TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.m
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["directory", "load", "load_spec", "spec_key", "store", "store_spec"]
+__all__ = ["Compiled", "directory", "load", "load_compiled", "load_spec", "spec_key", "store",
+           "store_compiled", "store_spec"]
 
 # What an entry is, and for which Python it was written: another one is ignored
 KEY = ("tapegate-profile-toml", 2, sys.version_info[:2], marshal.version)
@@ -218,3 +225,160 @@ def _write(path: str, blob: bytes) -> None:
 
         with contextlib.suppress(OSError):
             os.unlink(temporary)
+
+
+# What a compiled built-in profile's entry is (load_compiled), and for which Python it was written
+COMPILED_KEY = ("tapegate-compiled-profile", 1, sys.version_info[:2], marshal.version)
+# The built-in profiles' folder, as formats.profile finds it (its _BUILTIN)
+_BUILTIN = os.path.join(os.path.dirname(os.path.realpath(__file__)), "profiles")
+
+
+def _module_files() -> tuple[tuple[str, int, int], ...] | None:
+    """:func:`_code` without importing the modules: (path, size, modification time in ns) of
+    each module of :data:`_SPEC_MODULES`, their paths this package's folder and the module's
+    name (the core's, the path it was loaded from); None where one cannot be read (a module
+    kept only as its ``.pyc``: no entry)."""
+    folder = os.path.dirname(__file__)
+    core = sys.modules.get("formats._core")
+    found: list[tuple[str, int, int]] = []
+    for name in _SPEC_MODULES:
+        if name == "formats._core":
+            path = getattr(core, "__file__", None)
+            if path is None:
+                return None
+        else:
+            path = os.path.join(folder, name.rpartition(".")[2] + ".py")
+        try:
+            info = os.stat(path)
+        except OSError:
+            return None
+        found.append((path, info.st_size, info.st_mtime_ns))
+    return tuple(found)
+
+
+def _compiled_path(name: str) -> tuple[str, bytes] | None:
+    """(the entry's path, the built-in profile's text as bytes) for the built-in profile
+    ``name``, or None: the cache off, a name that is no built-in profile's file name (a path,
+    ``neutral``), a file that cannot be read."""
+    folder = directory()
+    if folder is None or not name or name[0] == "." or "/" in name or os.sep in name or (
+            os.altsep is not None and os.altsep in name):
+        return None
+    try:
+        with open(os.path.join(_BUILTIN, f"{name}.toml"), "rb") as f:
+            text = f.read()
+    except (OSError, ValueError):  # (ValueError: a NUL in the name)
+        return None
+    from zlib import crc32
+
+    return os.path.join(folder, f"compiled-{name}-{crc32(text):08x}.marshal"), text
+
+
+class Compiled:
+    """A built-in profile as ``tapegate check`` needs it, read back from the cache
+    (:func:`load_compiled`): the core's machine spec and the dialect's flags the core's reader
+    is given, so that a check of many files does not import ``formats.profile`` and the nine
+    modules it is made by, nor validate the profile's table again -- 28M instructions, about
+    4 ms before a batch's first file, work no ``-j`` worker shares (docs/benchmarks.md,
+    jobs62). :meth:`compiled` is what :class:`postproc.check.Checker` takes from it; anything
+    else asked of it (a tape image's or a last line's dialect, ``--stats``' work offsets) is
+    the profile's own, loaded then (:meth:`full`)."""
+
+    __slots__ = ("_name", "_flags", "_spec", "_machine", "_profile", "_lock")
+
+    def __init__(self, name: str, flags: tuple[Any, ...], spec: dict[str, Any]) -> None:
+        self._name = name
+        self._flags = flags
+        self._spec: Any = spec
+        self._machine: Any = None
+        self._profile: Any = None
+        self._lock = _thread.allocate_lock()
+
+    def compiled(self) -> tuple[Any, tuple[Any, ...]]:
+        """(the core's machine, built once and shared by every file and thread, the dialect's
+        flags)."""
+        if self._machine is None:
+            with self._lock:
+                if self._machine is None:
+                    from formats import _core
+
+                    self._machine = _core.Machine(self._spec)
+        return self._machine, self._flags
+
+    def full(self) -> Any:
+        """The profile itself (``formats.profile.load_profile``), loaded once."""
+        if self._profile is None:
+            with self._lock:
+                if self._profile is None:
+                    from formats.profile import load_profile
+
+                    self._profile = load_profile(self._name)
+        return self._profile
+
+    def __getattr__(self, attr: str) -> Any:
+        if attr.startswith("__"):  # (copy's and pickle's questions: not the profile's)
+            raise AttributeError(attr)
+        return getattr(self.full(), attr)
+
+
+def load_compiled(name: str) -> Compiled | None:
+    """The built-in profile ``name`` as a check needs it (:class:`Compiled`), from the entry
+    :func:`store_compiled` wrote, or None: no entry, one written for another text of the
+    profile, by other code (:data:`_SPEC_MODULES`, the core), by another Python, damaged, or
+    cut short; the cache off; a name that is no built-in profile's."""
+    found = _compiled_path(name)
+    if found is None:
+        return None
+    path, text = found
+    code = _module_files()
+    if code is None:
+        return None
+    try:
+        with open(path, "rb") as f:
+            entry = marshal.loads(f.read())
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    if not (type(entry) is tuple and len(entry) == 7 and entry[0] == COMPILED_KEY
+            and entry[1] == code and entry[2] == name and entry[3] == text
+            and type(entry[4]) is tuple and type(entry[6]) is bytes):
+        return None
+    from zlib import crc32
+
+    if crc32(entry[6]) != entry[5]:  # damaged on disk: made again, and rewritten
+        return None
+    try:
+        spec = marshal.loads(entry[6])
+    except (EOFError, ValueError, TypeError):
+        return None
+    return Compiled(name, entry[4], spec) if type(spec) is dict else None
+
+
+def store_compiled(name: str, profile: Any) -> None:
+    """Keep what :func:`load_compiled` gives for the built-in profile ``name``, which
+    ``profile`` was loaded from (``load_profile(name)``): its dialect's flags and its machine
+    spec. Only for a profile written on no ``base`` (the entry is keyed by the profile's own
+    text); quietly nothing where the folder cannot be written."""
+    found = _compiled_path(name)
+    code = _module_files()
+    if found is None or code is None or profile.__dict__.get("_spec_key") is None:
+        return
+    from formats.profile import builtin_names, builtin_text
+
+    if name not in builtin_names():
+        return
+    path, text = found
+    table = load(name, builtin_text(name))
+    if table is None or "base" in table:
+        return
+    from formats.machine import _spec
+
+    spec: Any = _spec(profile)
+    from zlib import crc32
+
+    try:
+        blob = marshal.dumps(spec)
+        flags = tuple(profile.dialect.flags)
+        entry = marshal.dumps((COMPILED_KEY, code, name, text, flags, crc32(blob), blob))
+    except ValueError:
+        return
+    _write(path, entry)

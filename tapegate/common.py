@@ -17,12 +17,13 @@ import stat as _stat
 import sys
 
 from formats.errors import TapegateError
-from formats.profile import Profile, load_profile, neutral
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterable, Sequence
     from typing import Any, NoReturn, TypeVar
+
+    from formats.profile import Profile
 
     F = TypeVar("F", bound=Callable[..., Any])
 
@@ -304,6 +305,8 @@ def _write_all(fd: int, data: bytes) -> None:
 
 def get_profile(name: str | None, file: str | None = None) -> Profile:
     """The named profile; without a name, the neutral one, adjusted to what ``file`` shows."""
+    from formats.profile import load_profile, neutral
+
     if name is not None:
         return load_profile(name)
     notes = ["no --profile: the neutral profile (no machine limits, common characters accepted)"]
