@@ -17,7 +17,7 @@ from tapegate.common import (
     error_exit,
     get_profile,
     plural,
-    readable,
+    readable_sized,
     shown,
     usage,
     user_errors_exiting,
@@ -70,9 +70,10 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     # a file's path, or why it is not read (a FIFO with no writer, a device: never opened),
     # told at its turn as a file that cannot be read
     paths: dict[str, str | OSError] = {}
+    sizes: dict[str, int] = {}  # (-j's weights: tapegate.workers.first)
     for name in files:
         try:
-            paths[name] = readable(name)
+            paths[name], sizes[name] = readable_sized(name)
         except OSError as exc:
             paths[name] = exc
     head = paths[files[0]]
@@ -99,15 +100,15 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     fold = fmt == "text" and not show_all  # a rule repeated in a file told once past five
     resume_collector()  # (the entry point's start-up without the collector ends here)
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
-        from tapegate.workers import file_sizes, ordered_map, send
+        from tapegate.workers import ordered_map, send
 
         # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
-        sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
+        weights = None if fmt == "sarif" else [sizes.get(name, 0) for name in files]
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
             lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats, raw,
                                     fold),
             items,
-            jobs or _default_jobs(), receive=receive, sizes=sizes)
+            jobs or _default_jobs(), receive=receive, sizes=weights)
     else:
         done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats, raw, fold)
                 for item in items)
