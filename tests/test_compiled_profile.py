@@ -72,7 +72,16 @@ def test_no_entry_with_the_cache_off(monkeypatch):
     assert profile_cache.load_compiled("haas-mill") is None
 
 
-def test_another_text_of_the_profile_has_another_entry(cache, tmp_path, monkeypatch):
+def test_the_checksum_tells_any_one_byte_changed():
+    blob = marshal.dumps(machine_spec(load_profile("haas-mill")))
+    first = profile_cache._checksum(blob)
+    for at in range(0, len(blob), 7):
+        for bit in (0x01, 0x80):
+            changed = blob[:at] + bytes([blob[at] ^ bit]) + blob[at + 1:]
+            assert profile_cache._checksum(changed) != first
+
+
+def test_another_text_of_the_profile_is_not_read_back(cache, tmp_path, monkeypatch):
     folder = tmp_path / "profiles"
     folder.mkdir()
     text = (Path(profile_cache._BUILTIN) / "haas-mill.toml").read_bytes()
@@ -113,7 +122,7 @@ def test_a_damaged_entry_is_ignored_and_written_again(cache, damage):
     assert kept("haas-mill") is not None
     entry, = entries(cache)
     data = entry.read_bytes()
-    if damage == "byte":  # a byte of the spec's blob changed: its CRC differs
+    if damage == "byte":  # a byte of the spec's blob changed: its checksum differs
         data = data[:-10] + bytes([data[-10] ^ 0x20]) + data[-9:]
     elif damage == "short":
         data = data[: len(data) // 2]
@@ -145,7 +154,8 @@ def _check(folder: Path, cache_dir: str, *args: str) -> tuple[int, str, str]:
 @pytest.mark.parametrize("args", [
     ("--format", "json", "-j", "2"), ("--format", "json", "-j", "1"),
     ("--format", "text", "-j", "2"), ("--format", "jsonl", "-j", "2"),
-    ("--format", "json", "--stats", "-j", "2"), ("--format", "text", "--all", "-j", "1"),
+    ("--format", "json", "--stats", "-j", "2"), ("--format", "text", "--stats", "-j", "2"),
+    ("--format", "text", "--all", "-j", "1"),
 ])
 @pytest.mark.parametrize("profile", ["haas-mill", "fanuc-mill"])
 def test_a_check_with_the_entry_writes_what_it_writes_without_the_cache(tmp_path, args,
