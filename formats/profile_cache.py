@@ -48,6 +48,7 @@ import sys
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable
     from typing import Any
 
 __all__ = ["Compiled", "directory", "load", "load_compiled", "load_spec", "spec_key", "store",
@@ -296,10 +297,11 @@ class Compiled:
     else asked of it (a tape image's or a last line's dialect, ``--stats``' work offsets) is
     the profile's own, loaded then (:meth:`full`)."""
 
-    __slots__ = ("_name", "_flags", "_spec", "_machine", "_profile", "_lock")
+    __slots__ = ("_load", "_flags", "_spec", "_machine", "_profile", "_lock")
 
-    def __init__(self, name: str, flags: tuple[Any, ...], spec: dict[str, Any]) -> None:
-        self._name = name
+    def __init__(self, load: Callable[[], Any], flags: tuple[Any, ...],
+                 spec: dict[str, Any]) -> None:
+        self._load = load
         self._flags = flags
         self._spec: Any = spec
         self._machine: Any = None
@@ -318,13 +320,11 @@ class Compiled:
         return self._machine, self._flags
 
     def full(self) -> Any:
-        """The profile itself (``formats.profile.load_profile``), loaded once."""
+        """The profile itself, loaded once (by the ``load`` :func:`load_compiled` was given)."""
         if self._profile is None:
             with self._lock:
                 if self._profile is None:
-                    from formats.profile import load_profile
-
-                    self._profile = load_profile(self._name)
+                    self._profile = self._load()
         return self._profile
 
     def __getattr__(self, attr: str) -> Any:
@@ -333,8 +333,9 @@ class Compiled:
         return getattr(self.full(), attr)
 
 
-def load_compiled(name: str) -> Compiled | None:
-    """The built-in profile ``name`` as a check needs it (:class:`Compiled`), from the entry
+def load_compiled(name: str, load: Callable[[], Any]) -> Compiled | None:
+    """The built-in profile ``name`` as a check needs it (:class:`Compiled`; ``load``: what
+    loads the profile itself, when more of it is asked for), from the entry
     :func:`store_compiled` wrote, or None: no entry, one written for another text of the
     profile, by other code (:data:`_SPEC_MODULES`, the core), by another Python, damaged, or
     cut short; the cache off; a name that is no built-in profile's."""
@@ -360,33 +361,23 @@ def load_compiled(name: str) -> Compiled | None:
         spec = marshal.loads(entry[6])
     except (EOFError, ValueError, TypeError):
         return None
-    return Compiled(name, entry[4], spec) if type(spec) is dict else None
+    return Compiled(load, entry[4], spec) if type(spec) is dict else None
 
 
-def store_compiled(name: str, profile: Any) -> None:
-    """Keep what :func:`load_compiled` gives for the built-in profile ``name``, which
-    ``profile`` was loaded from (``load_profile(name)``): its dialect's flags and its machine
-    spec. Only for a profile written on no ``base`` (the entry is keyed by the profile's own
-    text); quietly nothing where the folder cannot be written."""
+def store_compiled(name: str, flags: tuple[Any, ...], spec: Any) -> None:
+    """Keep what :func:`load_compiled` gives for the built-in profile ``name`` (written on no
+    ``base``: the entry is keyed by the profile's own text): its dialect's ``flags`` and its
+    machine ``spec`` (:func:`formats.machine.keep_compiled` gives them); quietly nothing where
+    the folder cannot be written."""
     found = _compiled_path(name)
     code = _module_files()
-    if found is None or code is None or profile.__dict__.get("_spec_key") is None:
-        return
-    from formats.profile import builtin_names, builtin_text
-
-    if name not in builtin_names():
+    if found is None or code is None:
         return
     path, text = found
-    table = load(name, builtin_text(name))
-    if table is None or "base" in table:
-        return
-    from formats.machine import _spec
-
-    spec: Any = _spec(profile)
     try:
         blob = marshal.dumps(spec)
-        flags = tuple(profile.dialect.flags)
-        entry = marshal.dumps((COMPILED_KEY, code, name, text, flags, _checksum(blob), blob))
+        entry = marshal.dumps((COMPILED_KEY, code, name, text, tuple(flags), _checksum(blob),
+                               blob))
     except ValueError:
         return
     _write(path, entry)

@@ -143,18 +143,20 @@ def _profile(name: str | None, head: str | None, quick: bool) -> Profile | Compi
     SARIF's findings, no ``--units``): a built-in profile read back as the cache keeps it for a
     check (:func:`formats.profile_cache.load_compiled`), without ``formats.profile``'s modules
     and the profile's validation, where it keeps one; where not, the profile is loaded, and
-    kept so for the next check (:func:`formats.profile_cache.store_compiled`)."""
+    kept so for the next check (:func:`formats.machine.keep_compiled`)."""
     if not name:
         return get_profile(None, head)
     if not quick:
         return get_profile(name)
-    from formats import profile_cache
+    from formats.profile_cache import load_compiled
 
-    compiled = profile_cache.load_compiled(name)
+    compiled = load_compiled(name, lambda: get_profile(name))
     if compiled is not None:
         return compiled
+    from formats.machine import keep_compiled
+
     prof = get_profile(name)
-    profile_cache.store_compiled(name, prof)
+    keep_compiled(name, prof)
     return prof
 
 

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from formats import profile_cache
-from formats.machine import machine_spec
+from formats.machine import keep_compiled, machine_spec
 from formats.profile import builtin_names, load_profile
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -34,8 +34,12 @@ def entries(folder: Path) -> list[Path]:
 
 def kept(name: str) -> profile_cache.Compiled | None:
     """The entry of ``name`` written from its loaded profile, then read back."""
-    profile_cache.store_compiled(name, load_profile(name))
-    return profile_cache.load_compiled(name)
+    keep_compiled(name, load_profile(name))
+    return load(name)
+
+
+def load(name: str) -> profile_cache.Compiled | None:
+    return profile_cache.load_compiled(name, lambda: load_profile(name))
 
 
 @pytest.mark.parametrize("name", builtin_names())
@@ -59,17 +63,17 @@ def test_no_entry_for_what_is_no_built_in_profiles_name(cache, tmp_path):
     assert kept("haas-mill") is not None
     for name in ("", "neutral", ".hidden", "../formats/profiles/haas-mill",
                  "profiles/haas-mill", "no-such-profile", "haas\0mill"):
-        assert profile_cache.load_compiled(name) is None
+        assert load(name) is None
     mine = tmp_path / "mine.toml"
     mine.write_text('name = "mine"\n')
-    profile_cache.store_compiled(str(mine), load_profile(str(mine)))
+    keep_compiled(str(mine), load_profile(str(mine)))
     assert [p.name for p in entries(cache)] == [entries(cache)[0].name]  # haas-mill's only
 
 
 def test_no_entry_with_the_cache_off(monkeypatch):
     monkeypatch.setenv("TAPEGATE_CACHE_DIR", "")
-    profile_cache.store_compiled("haas-mill", load_profile("haas-mill"))
-    assert profile_cache.load_compiled("haas-mill") is None
+    keep_compiled("haas-mill", load_profile("haas-mill"))
+    assert load("haas-mill") is None
 
 
 def test_the_checksum_tells_any_one_byte_changed():
@@ -89,13 +93,13 @@ def test_another_text_of_the_profile_is_not_read_back(cache, tmp_path, monkeypat
     monkeypatch.setattr(profile_cache, "_BUILTIN", str(folder))
     assert kept("haas-mill") is not None
     (folder / "haas-mill.toml").write_bytes(text + b"\n# edited\n")
-    assert profile_cache.load_compiled("haas-mill") is None
+    assert load("haas-mill") is None
     # the entry of the first text under the second's name: its text is compared whole
     old, = entries(cache)
     found = profile_cache._compiled_path("haas-mill")
     assert found is not None
     Path(found[0]).write_bytes(old.read_bytes())
-    assert profile_cache.load_compiled("haas-mill") is None
+    assert load("haas-mill") is None
 
 
 def test_an_entry_of_other_code_or_another_name_is_ignored(cache, monkeypatch):
@@ -105,16 +109,16 @@ def test_an_entry_of_other_code_or_another_name_is_ignored(cache, monkeypatch):
     assert all(os.path.exists(path) for path, _, _ in code)
     changed = ((code[0][0], code[0][1] + 1, code[0][2]), *code[1:])
     monkeypatch.setattr(profile_cache, "_module_files", lambda: changed)
-    assert profile_cache.load_compiled("haas-mill") is None
+    assert load("haas-mill") is None
     monkeypatch.undo()
     monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(cache))
-    assert profile_cache.load_compiled("haas-mill") is not None
+    assert load("haas-mill") is not None
     # fanuc-mill's entry under haas-mill's name: the name kept in it is compared
     entry, = entries(cache)
     fields = list(marshal.loads(entry.read_bytes()))
     fields[2] = "fanuc-mill"
     entry.write_bytes(marshal.dumps(tuple(fields)))
-    assert profile_cache.load_compiled("haas-mill") is None
+    assert load("haas-mill") is None
 
 
 @pytest.mark.parametrize("damage", ["byte", "short", "empty", "foreign"])
@@ -131,7 +135,7 @@ def test_a_damaged_entry_is_ignored_and_written_again(cache, damage):
     else:
         data = marshal.dumps(("tapegate-compiled-profile", 0))
     entry.write_bytes(data)
-    assert profile_cache.load_compiled("haas-mill") is None
+    assert load("haas-mill") is None
     assert kept("haas-mill") is not None  # written again
 
 
