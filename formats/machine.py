@@ -244,6 +244,22 @@ def machine(profile: Profile) -> _core.Machine:
     return compiled
 
 
+def keep_compiled(name: str, profile: Profile) -> None:
+    """Keep what ``tapegate check`` takes of the built-in profile ``name``, which ``profile``
+    was loaded from, for its next run (:func:`formats.profile_cache.store_compiled`): its
+    machine spec and its dialect's flags. Only a built-in profile written on no ``base`` (the
+    entry is keyed by its own text), read from a text with the cache on."""
+    from formats import profile_cache
+    from formats.profile import builtin_names, builtin_text
+
+    if profile.__dict__.get("_spec_key") is None or name not in builtin_names():
+        return
+    table = profile_cache.load(name, builtin_text(name))
+    if table is None or "base" in table:
+        return
+    profile_cache.store_compiled(name, profile.dialect.flags, _spec(profile))
+
+
 def _spec(profile: Profile) -> MachineSpec:
     """:func:`machine_spec` of ``profile``, kept between runs in the user's cache folder for a
     profile read from a text (a built-in profile, a profile file: the key

@@ -31,6 +31,12 @@ size and modification time of each module the profile and the spec are made by, 
 core (:func:`_code`), as Python keys its ``.pyc`` files. An entry
 of another key, of other code (an update of tapegate, a module edited), damaged or cut short
 is ignored and written again; written as the tables are (a temporary file renamed).
+
+For ``tapegate check`` with a built-in profile written on no ``base``, what the check takes of
+the profile -- the machine spec and the dialect's flags -- is kept once more, as
+``compiled-NAME.marshal`` (:func:`store_compiled`, :func:`load_compiled`), keyed by the
+profile file's bytes (held in the entry and compared whole) and by the same code: read back,
+the check needs neither the profile's modules nor its validation (:class:`Compiled`).
 """
 
 from __future__ import annotations
@@ -42,9 +48,11 @@ import sys
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable
     from typing import Any
 
-__all__ = ["directory", "load", "load_spec", "spec_key", "store", "store_spec"]
+__all__ = ["Compiled", "directory", "load", "load_compiled", "load_spec", "spec_key", "store",
+           "store_compiled", "store_spec"]
 
 # What an entry is, and for which Python it was written: another one is ignored
 KEY = ("tapegate-profile-toml", 2, sys.version_info[:2], marshal.version)
@@ -218,3 +226,158 @@ def _write(path: str, blob: bytes) -> None:
 
         with contextlib.suppress(OSError):
             os.unlink(temporary)
+
+
+# What a compiled built-in profile's entry is (load_compiled), and for which Python it was written
+COMPILED_KEY = ("tapegate-compiled-profile", 1, sys.version_info[:2], marshal.version)
+# The built-in profiles' folder, as formats.profile finds it (its _BUILTIN)
+_BUILTIN = os.path.join(os.path.dirname(os.path.realpath(__file__)), "profiles")
+
+
+def _module_files() -> tuple[tuple[str, int, int], ...] | None:
+    """:func:`_code` without importing the modules: (path, size, modification time in ns) of
+    each module of :data:`_SPEC_MODULES`, their paths this package's folder and the module's
+    name (the core's, the path it was loaded from); None where one cannot be read (a module
+    kept only as its ``.pyc``: no entry)."""
+    folder = os.path.dirname(__file__)
+    core = sys.modules.get("formats._core")
+    found: list[tuple[str, int, int]] = []
+    for name in _SPEC_MODULES:
+        if name == "formats._core":
+            path = getattr(core, "__file__", None)
+            if path is None:
+                return None
+        else:
+            path = os.path.join(folder, name.rpartition(".")[2] + ".py")
+        try:
+            info = os.stat(path)
+        except OSError:
+            return None
+        found.append((path, info.st_size, info.st_mtime_ns))
+    return tuple(found)
+
+
+def _compiled_path(name: str) -> tuple[str, bytes] | None:
+    """(the entry's path, the built-in profile's text as bytes) for the built-in profile
+    ``name``, or None: the cache off, a name that is no built-in profile's file name (a path,
+    ``neutral``), a file that cannot be read."""
+    folder = directory()
+    if folder is None or not name or name[0] == "." or "/" in name or os.sep in name or (
+            os.altsep is not None and os.altsep in name):
+        return None
+    try:
+        with open(os.path.join(_BUILTIN, f"{name}.toml"), "rb") as f:
+            text = f.read()
+    except (OSError, ValueError):  # (ValueError: a NUL in the name)
+        return None
+    # (one entry a profile's name, its text compared whole: no CRC-32 in the name, and no zlib
+    # imported on a check's way, 0.2 ms)
+    return os.path.join(folder, f"compiled-{name}.marshal"), text
+
+
+# The modulus of an entry's checksum (_checksum): the largest prime below 2**61
+_PRIME = (1 << 61) - 1
+
+
+def _checksum(blob: bytes) -> int:
+    """``blob`` read as one little-endian number, modulo a prime larger than a byte: any one
+    byte changed changes it (by d * 256**k, with 0 < |d| < 256, which the prime does not
+    divide), as a CRC-32 would tell, without importing zlib (its import, 0.2 ms, was a tenth of
+    what reading the entry back costs)."""
+    return int.from_bytes(blob, "little") % _PRIME
+
+
+class Compiled:
+    """A built-in profile as ``tapegate check`` needs it, read back from the cache
+    (:func:`load_compiled`): the core's machine spec and the dialect's flags the core's reader
+    is given, so that a check of many files does not import ``formats.profile`` and the nine
+    modules it is made by, nor validate the profile's table again -- 28M instructions, about
+    4 ms before a batch's first file, work no ``-j`` worker shares (docs/benchmarks.md,
+    jobs62). :meth:`compiled` is what :class:`postproc.check.Checker` takes from it; anything
+    else asked of it (a tape image's or a last line's dialect, ``--stats``' work offsets) is
+    the profile's own, loaded then (:meth:`full`)."""
+
+    __slots__ = ("_load", "_flags", "_spec", "_machine", "_profile", "_lock")
+
+    def __init__(self, load: Callable[[], Any], flags: tuple[Any, ...],
+                 spec: dict[str, Any]) -> None:
+        self._load = load
+        self._flags = flags
+        self._spec: Any = spec
+        self._machine: Any = None
+        self._profile: Any = None
+        self._lock = _thread.allocate_lock()
+
+    def compiled(self) -> tuple[Any, tuple[Any, ...]]:
+        """(the core's machine, built once and shared by every file and thread, the dialect's
+        flags)."""
+        if self._machine is None:
+            with self._lock:
+                if self._machine is None:
+                    from formats import _core
+
+                    self._machine = _core.Machine(self._spec)
+        return self._machine, self._flags
+
+    def full(self) -> Any:
+        """The profile itself, loaded once (by the ``load`` :func:`load_compiled` was given)."""
+        if self._profile is None:
+            with self._lock:
+                if self._profile is None:
+                    self._profile = self._load()
+        return self._profile
+
+    def __getattr__(self, attr: str) -> Any:
+        if attr.startswith("__"):  # (copy's and pickle's questions: not the profile's)
+            raise AttributeError(attr)
+        return getattr(self.full(), attr)
+
+
+def load_compiled(name: str, load: Callable[[], Any]) -> Compiled | None:
+    """The built-in profile ``name`` as a check needs it (:class:`Compiled`; ``load``: what
+    loads the profile itself, when more of it is asked for), from the entry
+    :func:`store_compiled` wrote, or None: no entry, one written for another text of the
+    profile, by other code (:data:`_SPEC_MODULES`, the core), by another Python, damaged, or
+    cut short; the cache off; a name that is no built-in profile's."""
+    found = _compiled_path(name)
+    if found is None:
+        return None
+    path, text = found
+    code = _module_files()
+    if code is None:
+        return None
+    try:
+        with open(path, "rb") as f:
+            entry = marshal.loads(f.read())
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    if not (type(entry) is tuple and len(entry) == 7 and entry[0] == COMPILED_KEY
+            and entry[1] == code and entry[2] == name and entry[3] == text
+            and type(entry[4]) is tuple and type(entry[6]) is bytes):
+        return None
+    if _checksum(entry[6]) != entry[5]:  # damaged on disk: made again, and rewritten
+        return None
+    try:
+        spec = marshal.loads(entry[6])
+    except (EOFError, ValueError, TypeError):
+        return None
+    return Compiled(load, entry[4], spec) if type(spec) is dict else None
+
+
+def store_compiled(name: str, flags: tuple[Any, ...], spec: Any) -> None:
+    """Keep what :func:`load_compiled` gives for the built-in profile ``name`` (written on no
+    ``base``: the entry is keyed by the profile's own text): its dialect's ``flags`` and its
+    machine ``spec`` (:func:`formats.machine.keep_compiled` gives them); quietly nothing where
+    the folder cannot be written."""
+    found = _compiled_path(name)
+    code = _module_files()
+    if found is None or code is None:
+        return
+    path, text = found
+    try:
+        blob = marshal.dumps(spec)
+        entry = marshal.dumps((COMPILED_KEY, code, name, text, tuple(flags), _checksum(blob),
+                               blob))
+    except ValueError:
+        return
+    _write(path, entry)

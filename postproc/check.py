@@ -17,17 +17,6 @@ from __future__ import annotations
 from itertools import chain
 
 from formats import _core
-from formats.machine import machine
-from formats.model import Block
-from formats.parser import (
-    CHUNK,
-    Dialect,
-    decode_chunks,
-    parse_stream,
-    read_chunks,
-    whole_texts,
-)
-from formats.profile import Profile
 from formats.records import NEW, Record, field, new, record
 from postproc import rules
 from postproc.findings import Finding, make_finding
@@ -39,6 +28,10 @@ if TYPE_CHECKING:
     from decimal import Decimal
     from typing import Any
 
+    from formats.model import Block
+    from formats.parser import Dialect
+    from formats.profile import Profile
+    from formats.profile_cache import Compiled
     from formats.source import Source
     from formats.tape import TapeIssue
 
@@ -170,7 +163,7 @@ class Checker:
     and lines; every error is written (the core's ``report::Writer::folded``); the counts are
     of every finding."""
 
-    def __init__(self, profile: Profile, file: str = "<input>", *,
+    def __init__(self, profile: Profile | Compiled, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),
                  record_path: bool = False, report: str | None = None,
                  stats: bool = True, fold: bool = False) -> None:
@@ -180,7 +173,17 @@ class Checker:
         self.ignore = tuple(ignore)
         self.record_path = record_path
         self.report = report
-        self._core = _core.Checker(machine(profile), list(self.select), list(self.ignore),
+        # a built-in profile as the cache keeps it for a check (formats.profile_cache.Compiled:
+        # its machine and its dialect's flags, without formats.profile's modules), or a profile
+        compiled = getattr(profile, "compiled", None)
+        if compiled is not None:
+            built, self._flags = compiled()
+        else:
+            from formats.machine import machine
+
+            built = machine(profile)  # type: ignore[arg-type]  # (a Profile: no compiled)
+            self._flags = profile.dialect.flags
+        self._core = _core.Checker(built, list(self.select), list(self.ignore),
                                    record_path, file, make_finding, report, stats, fold)
 
     # -- findings ------------------------------------------------------------------------------
@@ -222,11 +225,11 @@ class Checker:
         a line past ``MAX_BLOCK``), are read here as :meth:`report_stream` reads them. With
         ``raw``, the core's slices are handed over as bytes (a report written to a binary
         buffer: :attr:`postproc.report.JsonReport.raw`); what Python writes stays ``str``."""
-        dialect = self.profile.dialect
-        done = self._core.check_file(path, dialect.flags, write, raw)
+        done = self._core.check_file(path, self._flags, write, raw)
         if done is None:  # a tape image, or a head that is not UTF-8: Source reads it
             from formats.source import Source  # (with the tape's module: only here)
 
+            dialect = self.profile.dialect
             source = Source(path)
             for _ in self._batches(source.chunks(), dialect, write):
                 pass
@@ -234,6 +237,9 @@ class Checker:
             if tape:
                 write(tape)
         elif done is not True:  # the text after the last LF: as _batches reads it
+            from formats.parser import CHUNK, decode_chunks, parse_stream, read_chunks
+
+            dialect = self.profile.dialect
             rest, at = done
             unread = iter(()) if at is None else decode_chunks(read_chunks(path, CHUNK, at))
             for _ in self._batches_of(parse_stream(
@@ -254,6 +260,8 @@ class Checker:
         """The findings a chunk at a time (passed on by ``chain``, in C: there can be
         millions); with ``write`` (a checker with a ``report``), written through it, and
         nothing yielded but a None a chunk."""
+        from formats.parser import parse_stream, whole_texts
+
         flags = dialect.flags
         line: int | None = 0  # then None: the core goes on after the last line it read
         for text, unread in whole_texts(chunks):

@@ -10,7 +10,6 @@ import os
 import sys
 
 from formats.errors import TapegateError
-from formats.profile import load_profile
 from postproc import rules
 from postproc.rules import SEVERITY_RANK
 from tapegate.common import (
@@ -18,7 +17,7 @@ from tapegate.common import (
     error_exit,
     get_profile,
     plural,
-    readable,
+    readable_sized,
     shown,
     usage,
     user_errors_exiting,
@@ -31,6 +30,7 @@ if TYPE_CHECKING:
     from typing import Any
 
     from formats.profile import Profile
+    from formats.profile_cache import Compiled
     from postproc.check import CheckStats
     from postproc.findings import Finding
     from postproc.report import SarifReport
@@ -70,18 +70,19 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     # a file's path, or why it is not read (a FIFO with no writer, a device: never opened),
     # told at its turn as a file that cannot be read
     paths: dict[str, str | OSError] = {}
+    sizes: dict[str, int] = {}  # (-j's weights: tapegate.workers.first)
     for name in files:
         try:
-            paths[name] = readable(name)
+            paths[name], sizes[name] = readable_sized(name)
         except OSError as exc:
             paths[name] = exc
     head = paths[files[0]]
-    prof = (load_profile(profile) if profile else
-            get_profile(None, head if isinstance(head, str) else None))
+    prof = _profile(profile, head if isinstance(head, str) else None,
+                    quick=units is None and fmt != "sarif")
     if units is not None:  # the units the machine is set to at the start (--units)
         from formats.profile import with_start_units
 
-        prof = with_start_units(prof, units)
+        prof = with_start_units(prof, units)  # type: ignore[arg-type]  # (not quick: a Profile)
     selected, ignored = _ids(select), _ids(ignore)
     # Every format streams: a finding is written as it is found and only counted (for the
     # summary and the exit code), so memory does not grow with the number of findings.
@@ -99,15 +100,15 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     fold = fmt == "text" and not show_all  # a rule repeated in a file told once past five
     resume_collector()  # (the entry point's start-up without the collector ends here)
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
-        from tapegate.workers import file_sizes, ordered_map, send
+        from tapegate.workers import ordered_map, send
 
         # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
-        sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
+        weights = None if fmt == "sarif" else [sizes.get(name, 0) for name in files]
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
             lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats, raw,
                                     fold),
             items,
-            jobs or _default_jobs(), receive=receive, sizes=sizes)
+            jobs or _default_jobs(), receive=receive, sizes=weights)
     else:
         done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats, raw, fold)
                 for item in items)
@@ -136,9 +137,32 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
 
 
-def _check_one(item: tuple[str | OSError, str], prof: Profile, fmt: str, select: list[str],
-               ignore: list[str], send: Callable[[Any], object], show_stats: bool,
-               raw: bool = False, fold: bool = False
+def _profile(name: str | None, head: str | None, quick: bool) -> Profile | Compiled:
+    """The profile ``--profile`` names, or without it the neutral one adjusted to the first
+    file (``head``). ``quick`` (a check that takes only the profile's machine and flags: not
+    SARIF's findings, no ``--units``): a built-in profile read back as the cache keeps it for a
+    check (:func:`formats.profile_cache.load_compiled`), without ``formats.profile``'s modules
+    and the profile's validation, where it keeps one; where not, the profile is loaded, and
+    kept so for the next check (:func:`formats.machine.keep_compiled`)."""
+    if not name:
+        return get_profile(None, head)
+    if not quick:
+        return get_profile(name)
+    from formats.profile_cache import load_compiled
+
+    compiled = load_compiled(name, lambda: get_profile(name))
+    if compiled is not None:
+        return compiled
+    from formats.machine import keep_compiled
+
+    prof = get_profile(name)
+    keep_compiled(name, prof)
+    return prof
+
+
+def _check_one(item: tuple[str | OSError, str], prof: Profile | Compiled, fmt: str,
+               select: list[str], ignore: list[str], send: Callable[[Any], object],
+               show_stats: bool, raw: bool = False, fold: bool = False
                ) -> tuple[dict[str, int], CheckStats | None, str | None]:
     """Check one file (path, name as reported), its findings handed to ``send`` as the
     report's ``write`` takes them (text, JSON, JSON Lines: the core's slices) or, for SARIF,
@@ -157,7 +181,8 @@ def _check_one(item: tuple[str | OSError, str], prof: Profile, fmt: str, select:
         return counts, None, f"tapegate: cannot read {name}: {path.strerror or path}"
     try:
         if fmt == "sarif":
-            checker, found = iter_check_file(path, prof, display=name, select=select,
+            checker, found = iter_check_file(path, prof,  # type: ignore[arg-type]  # (a Profile)
+                                             display=name, select=select,
                                              ignore=ignore, stats=show_stats)
             batch: list[Finding] = []
             try:

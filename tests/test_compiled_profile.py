@@ -1,0 +1,191 @@
+"""A built-in profile kept for ``tapegate check`` as the check needs it (formats.profile_cache's
+``compiled-*`` entries, :class:`formats.profile_cache.Compiled`): its machine spec and its
+dialect's flags, read back without the profile's modules; keyed by the profile file's bytes and
+by the code; a stale, damaged, cut-short or foreign entry ignored; a check's output the same
+with the entry as without the cache."""
+
+from __future__ import annotations
+
+import marshal
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from formats import profile_cache
+from formats.machine import keep_compiled, machine_spec
+from formats.profile import builtin_names, load_profile
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    folder = tmp_path / "cache" / "tapegate"
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(folder))
+    return folder
+
+
+def entries(folder: Path) -> list[Path]:
+    return sorted(folder.glob("compiled-*.marshal")) if folder.exists() else []
+
+
+def kept(name: str) -> profile_cache.Compiled | None:
+    """The entry of ``name`` written from its loaded profile, then read back."""
+    keep_compiled(name, load_profile(name))
+    return load(name)
+
+
+def load(name: str) -> profile_cache.Compiled | None:
+    return profile_cache.load_compiled(name, lambda: load_profile(name))
+
+
+@pytest.mark.parametrize("name", builtin_names())
+def test_an_entry_reads_back_the_profiles_flags_and_spec(cache, name):
+    profile = load_profile(name)
+    found = kept(name)
+    if name in ("fanuc-lathe-b", "fanuc-lathe-c"):  # written on a base: no entry
+        assert found is None and entries(cache) == []
+        return
+    assert found is not None and len(entries(cache)) == 1
+    built, flags = found.compiled()
+    assert flags == profile.dialect.flags
+    assert found._spec == machine_spec(profile)
+    assert found.compiled()[0] is built  # one machine, built once
+    # anything else is the profile's own, loaded when asked
+    assert found.name == profile.name and found.dialect == profile.dialect
+    assert found.full() is found.full()
+
+
+def test_no_entry_for_what_is_no_built_in_profiles_name(cache, tmp_path):
+    assert kept("haas-mill") is not None
+    for name in ("", "neutral", ".hidden", "../formats/profiles/haas-mill",
+                 "profiles/haas-mill", "no-such-profile", "haas\0mill"):
+        assert load(name) is None
+    mine = tmp_path / "mine.toml"
+    mine.write_text('name = "mine"\n')
+    keep_compiled(str(mine), load_profile(str(mine)))
+    assert [p.name for p in entries(cache)] == [entries(cache)[0].name]  # haas-mill's only
+
+
+def test_no_entry_with_the_cache_off(monkeypatch):
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", "")
+    keep_compiled("haas-mill", load_profile("haas-mill"))
+    assert load("haas-mill") is None
+
+
+def test_the_checksum_tells_any_one_byte_changed():
+    blob = marshal.dumps(machine_spec(load_profile("haas-mill")))
+    first = profile_cache._checksum(blob)
+    for at in range(0, len(blob), 7):
+        for bit in (0x01, 0x80):
+            changed = blob[:at] + bytes([blob[at] ^ bit]) + blob[at + 1:]
+            assert profile_cache._checksum(changed) != first
+
+
+def test_another_text_of_the_profile_is_not_read_back(cache, tmp_path, monkeypatch):
+    folder = tmp_path / "profiles"
+    folder.mkdir()
+    text = (Path(profile_cache._BUILTIN) / "haas-mill.toml").read_bytes()
+    (folder / "haas-mill.toml").write_bytes(text)
+    monkeypatch.setattr(profile_cache, "_BUILTIN", str(folder))
+    assert kept("haas-mill") is not None
+    (folder / "haas-mill.toml").write_bytes(text + b"\n# edited\n")
+    assert load("haas-mill") is None
+    # the entry of the first text under the second's name: its text is compared whole
+    old, = entries(cache)
+    found = profile_cache._compiled_path("haas-mill")
+    assert found is not None
+    Path(found[0]).write_bytes(old.read_bytes())
+    assert load("haas-mill") is None
+
+
+def test_an_entry_of_other_code_or_another_name_is_ignored(cache, monkeypatch):
+    assert kept("haas-mill") is not None
+    code = profile_cache._module_files()
+    assert code is not None and len(code) == len(profile_cache._SPEC_MODULES)
+    assert all(os.path.exists(path) for path, _, _ in code)
+    changed = ((code[0][0], code[0][1] + 1, code[0][2]), *code[1:])
+    monkeypatch.setattr(profile_cache, "_module_files", lambda: changed)
+    assert load("haas-mill") is None
+    monkeypatch.undo()
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(cache))
+    assert load("haas-mill") is not None
+    # fanuc-mill's entry under haas-mill's name: the name kept in it is compared
+    entry, = entries(cache)
+    fields = list(marshal.loads(entry.read_bytes()))
+    fields[2] = "fanuc-mill"
+    entry.write_bytes(marshal.dumps(tuple(fields)))
+    assert load("haas-mill") is None
+
+
+@pytest.mark.parametrize("damage", ["byte", "short", "empty", "foreign"])
+def test_a_damaged_entry_is_ignored_and_written_again(cache, damage):
+    assert kept("haas-mill") is not None
+    entry, = entries(cache)
+    data = entry.read_bytes()
+    if damage == "byte":  # a byte of the spec's blob changed: its checksum differs
+        data = data[:-10] + bytes([data[-10] ^ 0x20]) + data[-9:]
+    elif damage == "short":
+        data = data[: len(data) // 2]
+    elif damage == "empty":
+        data = b""
+    else:
+        data = marshal.dumps(("tapegate-compiled-profile", 0))
+    entry.write_bytes(data)
+    assert load("haas-mill") is None
+    assert kept("haas-mill") is not None  # written again
+
+
+# A program whose last line has no LF (the core leaves it to Python, with the full dialect),
+# one with a finding, and one in another family's words
+PROGRAMS = {
+    "a.nc": "%\nO1000\nG21 G90 G17\nG0 X10. Y10.\nG1 Z-1. F100.\nG2 X20. Y10. R5.\nM30\n%\n",
+    "b.nc": "%\nO1001\nG20 G90\nG0 X1. Y1.\nG1 X2. F10.\nM30\n%",
+    "c.nc": "%\nO1002\nG21 G90\nG0 X1. Y1. G0 G1\nT1 M6\nS1000 M3\nG1 X5. F50.\nM30\n%\n",
+}
+
+
+def _check(folder: Path, cache_dir: str, *args: str) -> tuple[int, str, str]:
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "TAPEGATE_CACHE_DIR": cache_dir}
+    done = subprocess.run([sys.executable, "-P", "-m", "tapegate", "check", str(folder),
+                           *args], env=env, capture_output=True, text=True, timeout=120)
+    return done.returncode, done.stdout, done.stderr
+
+
+@pytest.mark.parametrize("args", [
+    ("--format", "json", "-j", "2"), ("--format", "json", "-j", "1"),
+    ("--format", "text", "-j", "2"), ("--format", "jsonl", "-j", "2"),
+    ("--format", "json", "--stats", "-j", "2"), ("--format", "text", "--stats", "-j", "2"),
+    ("--format", "text", "--all", "-j", "1"),
+])
+@pytest.mark.parametrize("profile", ["haas-mill", "fanuc-mill"])
+def test_a_check_with_the_entry_writes_what_it_writes_without_the_cache(tmp_path, args,
+                                                                        profile):
+    folder = tmp_path / "programs"
+    folder.mkdir()
+    for name, text in PROGRAMS.items():
+        (folder / name).write_text(text)
+    cache_dir = tmp_path / "cache"
+    plain = _check(folder, "", "-p", profile, *args)
+    first = _check(folder, str(cache_dir), "-p", profile, *args)  # writes the entry
+    assert len(list(cache_dir.glob("compiled-*.marshal"))) == 1
+    second = _check(folder, str(cache_dir), "-p", profile, *args)  # reads it back
+    assert plain[1] and plain == first == second
+
+
+def test_units_and_sarif_load_the_profile(tmp_path):
+    """--units and SARIF take more of the profile than the entry holds: no entry used or
+    written, the same output."""
+    folder = tmp_path / "programs"
+    folder.mkdir()
+    for name, text in PROGRAMS.items():
+        (folder / name).write_text(text)
+    cache_dir = tmp_path / "cache"
+    for args in (("--units", "inch", "--format", "json"), ("--format", "sarif")):
+        plain = _check(folder, "", "-p", "haas-mill", *args)
+        cached = _check(folder, str(cache_dir), "-p", "haas-mill", *args)
+        assert plain[1] and plain == cached
+    assert list(cache_dir.glob("compiled-*.marshal")) == []
