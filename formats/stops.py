@@ -6,10 +6,12 @@ a collection), the interpreter prints it as "Exception ignored" and goes on: the
 A command that then read a FIFO whose writer never ends, or wrote into a pipe nobody reads,
 waited for ever (the ^C of `check FIFO`, the SIGTERM of `convert -o -`: 1 CI run in some
 hundreds). The handlers note each signal in :data:`TAKEN`, and :func:`heed_stops`, called
-before each such wait, raises the stop again. Nothing is imported here: the ``tapegate``
-command loads it at its start."""
+before each such wait, raises the stop again. Nothing is imported here (but ``io``, the
+interpreter's own): the ``tapegate`` command loads it at its start."""
 
 from __future__ import annotations
+
+import io  # (loaded by the interpreter's start, for its standard streams)
 
 TYPE_CHECKING = False  # typing's, without importing typing
 if TYPE_CHECKING:
@@ -226,3 +228,73 @@ def write_now(fd: int, data: bytes) -> bool:
     except OSError:
         return False
     return True
+
+
+_GUARDED: list[Any] = []  # (the wakeup of guard_stdout, kept for the process's life)
+
+
+def guard_stdout() -> None:
+    """Standard output, where it is a pipe or a socket, written by way of :func:`write_all`'s
+    waits for the rest of the process: ``sys.stdout`` made anew over a raw writer that polls
+    (the file and the signal's wakeup fd) before each write of at most :data:`PIPE_BUF`
+    bytes, so that every command's report (`check`, `parse`, `diff`, the summary of
+    `convert DIR`, click's echo) ends at a stop that lands just before a write into a pipe
+    whose reader does not read, as the copy of ``convert -o -`` does. The same encoding,
+    errors, line buffering and buffer size as the stream it replaces (flushed first). Only
+    in the main thread, for the ``tapegate`` command's own process (:mod:`tapegate.launch`:
+    not for a caller that goes on, whose streams are its own)."""
+    import sys
+
+    stream = sys.stdout
+    try:
+        fd = stream.fileno()
+    except (AttributeError, OSError, ValueError):  # (a test's captured stream)
+        return
+    import os
+    import stat
+
+    try:
+        mode = os.fstat(fd).st_mode
+    except OSError:
+        return
+    if not (stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)) or _GUARDED:
+        return
+    wakeup = _Wakeup().__enter__()
+    if wakeup.fd < 0:  # not the main thread
+        return
+    _GUARDED.append(wakeup)
+    stream.flush()
+    buffered = io.BufferedWriter(_PolledWriter(fd, wakeup))
+    sys.stdout = io.TextIOWrapper(buffered, encoding=stream.encoding, errors=stream.errors,
+                                  newline="\n",
+                                  line_buffering=bool(getattr(stream, "line_buffering", False)),
+                                  write_through=bool(getattr(stream, "write_through", False)))
+
+
+class _PolledWriter(io.RawIOBase):
+    """The raw writer under :func:`guard_stdout`'s stream: each write waits in a poll on the
+    file and on the signal's wakeup fd, then writes at most :data:`PIPE_BUF` bytes (the
+    buffered writer above writes the rest by calling again). Closing it leaves the
+    descriptor, the process's standard output, open."""
+
+    def __init__(self, fd: int, wakeup: _Wakeup) -> None:
+        super().__init__()
+        self._fd = fd
+        self._wakeup = wakeup
+
+    def writable(self) -> bool:
+        return True
+
+    def fileno(self) -> int:
+        return self._fd
+
+    def isatty(self) -> bool:
+        return False  # (a pipe or a socket)
+
+    def write(self, data: Any) -> int:
+        import os
+
+        heed_stops()
+        while not _ready(self._fd, _POLLOUT, self._wakeup):
+            heed_stops()
+        return os.write(self._fd, memoryview(data)[:PIPE_BUF])

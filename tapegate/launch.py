@@ -164,7 +164,7 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
     click. A plain command ends the process once its output is flushed (:func:`leave`); with
     ``clean_exit`` it raises ``SystemExit`` as click's commands do, for a caller that goes on
     (as ``mypy.main``'s argument of that name)."""
-    from formats.stops import note_interrupts
+    from formats.stops import guard_stdout, note_interrupts
 
     note_interrupts()  # (a ^C a finalizer swallows is still obeyed: formats.stops)
     try:
@@ -181,12 +181,19 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
             # loaded yet)
             run = getattr(__import__(module, fromlist=[name]), name)
             prepare_streams()
+            if not clean_exit:
+                guard_stdout()  # (a stop ends every write into a pipe: formats.stops)
     except KeyboardInterrupt:  # a ^C in the start-up: told as the command's own (review 53,
         thaw()  # F11: a traceback where the imports took it)
         sys.stderr.write("\nAborted!\n")
         sys.exit(1)
     if found is None:
         try:
+            if not clean_exit:
+                from tapegate.common import prepare_streams
+
+                prepare_streams()  # (before the stream is made anew: its errors kept)
+                guard_stdout()
             group(prog_name=prog_name)
         except SystemExit as done:
             if not clean_exit and _stopped(done):
