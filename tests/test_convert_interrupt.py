@@ -36,8 +36,10 @@ ARGS = ["--from", "fanuc-mill", "--to", "fanuc-mill", "--units", "inch"]
 
 
 def _default_sigint() -> None:
-    # (a test run in the background may inherit SIGINT ignored: Python then leaves it so)
+    # (a test run in the background may inherit SIGINT ignored, one run under nohup SIGHUP
+    # ignored: Python, and the command, then leave them so)
     signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.signal(signal.SIGHUP, signal.SIG_DFL)
 
 
 def _wait_for(condition, proc: subprocess.Popen[bytes], timeout: float) -> bool:
