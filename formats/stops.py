@@ -96,6 +96,9 @@ class _Wakeup:
             os.close(write)
             return self
         self.fd, self._write = read, write
+        import _thread
+
+        _MAIN[0] = _thread.get_ident()  # (set_wakeup_fd succeeds in the main thread only)
         return self
 
     def drain(self) -> None:
@@ -141,9 +144,22 @@ def _ready(fd: int, events: int, wakeup: _Wakeup) -> bool:
     ready = dict(poll.poll())
     if wakeup.fd in ready:
         wakeup.drain()
-        heed_stops()
+        if _in_main_thread():
+            heed_stops()
         return bool(ready.get(fd))
     return True
+
+
+def _in_main_thread() -> bool:
+    """Whether this is the thread the stops are raised in (where signals' handlers run): the
+    main thread. A batch's threads that wait in a guarded write leave the stop to it (a map's
+    threads are stopped by its own means: ``tapegate.workers``)."""
+    import _thread
+
+    return _thread.get_ident() == _MAIN[0]
+
+
+_MAIN = [-1]  # (the main thread's ident, noted by :class:`_Wakeup` where it is set)
 
 
 def _pollable(fd: int) -> bool:
@@ -294,7 +310,10 @@ class _PolledWriter(io.RawIOBase):
     def write(self, data: Any) -> int:
         import os
 
-        heed_stops()
+        main = _in_main_thread()
+        if main:
+            heed_stops()  # (a stop a batch's map held, or a finalizer swallowed: raised here)
         while not _ready(self._fd, _POLLOUT, self._wakeup):
-            heed_stops()
+            if main:
+                heed_stops()
         return os.write(self._fd, memoryview(data)[:PIPE_BUF])
