@@ -6,10 +6,17 @@ a collection), the interpreter prints it as "Exception ignored" and goes on: the
 A command that then read a FIFO whose writer never ends, or wrote into a pipe nobody reads,
 waited for ever (the ^C of `check FIFO`, the SIGTERM of `convert -o -`: 1 CI run in some
 hundreds). The handlers note each signal in :data:`TAKEN`, and :func:`heed_stops`, called
-before each such wait, raises the stop again. Nothing is imported here: the ``tapegate``
-command loads it at its start."""
+before each such wait, raises the stop again. Nothing is imported here (but ``io``, the
+interpreter's own): the ``tapegate`` command loads it at its start."""
 
 from __future__ import annotations
+
+import io  # (loaded by the interpreter's start, for its standard streams)
+
+TYPE_CHECKING = False  # typing's, without importing typing
+if TYPE_CHECKING:
+    from collections.abc import Iterable
+    from typing import Any
 
 # the stop signals the handlers took, in order
 TAKEN: list[int] = []
@@ -46,3 +53,267 @@ def heed_stops() -> None:
         signum = TAKEN[-1]
         TAKEN.clear()  # (raised once: what handles it goes on without it)
         raise KeyboardInterrupt if signum == _SIGINT else SystemExit(128 + signum)
+
+
+# -- waits a signal always ends ----------------------------------------------------------------
+#
+# A check of TAKEN before a blocking write or read leaves a window: a signal that lands after
+# the interpreter's last look at its pending handlers and before the system call starts runs
+# only the C part of the handler (the Python part waits for the next bytecode), and the call
+# then blocks for ever on a pipe nobody reads -- the signal already spent, no EINTR to end it
+# (the lost wake-up; made every time by stopping the process at libc's write() and sending
+# SIGTERM there). The same happens when the kernel hands the signal to another thread. So a
+# wait that may never end is a poll() on the file and on the signal module's wakeup fd
+# (``signal.set_wakeup_fd``: the C handler writes the signal's number there, before or during
+# the poll alike), and the read or write after it is one that cannot block: at most PIPE_BUF
+# bytes into a pipe that said it has room (POSIX: such a write is whole and waits only for
+# room), one read of what a readable pipe holds.
+
+PIPE_BUF = 4096  # (select.PIPE_BUF on Linux; POSIX's least)
+_POLLIN, _POLLOUT = 0x001, 0x004  # (select.POLLIN, select.POLLOUT, without importing select)
+
+
+class _Wakeup:
+    """The signal module's wakeup fd pointed at a pipe of ours while a wait runs (only the main
+    thread can: elsewhere nothing is set and :attr:`fd` is -1, the wait a plain one). What a
+    wakeup fd set before us was told is written on to it when we give it back."""
+
+    def __init__(self) -> None:
+        self.fd = -1
+        self._write = -1
+        self._before = -1
+        self._seen = b""
+
+    def __enter__(self) -> _Wakeup:
+        import _signal
+        import os
+
+        read, write = os.pipe2(os.O_NONBLOCK | os.O_CLOEXEC)
+        try:
+            self._before = _signal.set_wakeup_fd(write, warn_on_full_buffer=False)
+        except ValueError:  # not the main thread (of the main interpreter)
+            os.close(read)
+            os.close(write)
+            return self
+        self.fd, self._write = read, write
+        import _thread
+
+        _MAIN[0] = _thread.get_ident()  # (set_wakeup_fd succeeds in the main thread only)
+        return self
+
+    def drain(self) -> None:
+        import os
+
+        try:
+            while True:
+                piece = os.read(self.fd, 256)
+                if not piece:
+                    return
+                self._seen += piece
+        except BlockingIOError:
+            return
+
+    def __exit__(self, *exc: object) -> None:
+        if self.fd < 0:
+            return
+        import _signal
+        import os
+
+        _signal.set_wakeup_fd(self._before)
+        self.drain()
+        if self._before >= 0 and self._seen:
+            try:
+                os.write(self._before, self._seen)
+            except OSError:  # (its buffer full: told already)
+                self._seen = b""
+        os.close(self.fd)
+        os.close(self._write)
+        self.fd = -1
+
+
+def _ready(fd: int, events: int, wakeup: _Wakeup) -> bool:
+    """Waits until ``fd`` has ``events`` (or an error, a hang-up: what the read or the write
+    then tells) or a signal came: True for the file, False for a signal (whose handler runs
+    as the interpreter returns from the poll; a stop it took is raised by :func:`heed_stops`
+    where the exception was swallowed)."""
+    import select
+
+    poll = select.poll()
+    poll.register(fd, events)
+    poll.register(wakeup.fd, _POLLIN)
+    ready = dict(poll.poll())
+    if wakeup.fd in ready:
+        wakeup.drain()
+        if _in_main_thread():
+            heed_stops()
+        return bool(ready.get(fd))
+    return True
+
+
+def _in_main_thread() -> bool:
+    """Whether this is the thread the stops are raised in (where signals' handlers run): the
+    main thread. A batch's threads that wait in a guarded write leave the stop to it (a map's
+    threads are stopped by its own means: ``tapegate.workers``)."""
+    import _thread
+
+    return _thread.get_ident() == _MAIN[0]
+
+
+_MAIN = [-1]  # (the main thread's ident, noted by :class:`_Wakeup` where it is set)
+
+
+def _pollable(fd: int) -> bool:
+    """Whether a write to or read from ``fd`` may wait for ever: a pipe, a socket, a terminal,
+    a device -- not a regular file or a block device, whose data the kernel always takes."""
+    import os
+    import stat
+
+    try:
+        mode = os.fstat(fd).st_mode
+    except OSError:
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISBLK(mode))
+
+
+def write_all(fd: int, pieces: Iterable[bytes]) -> int:
+    """Each of ``pieces`` written to ``fd`` whole, straight (no stream's buffer), with the
+    stops (^C, SIGTERM, SIGHUP) obeyed at once wherever they land, even while the reader of a
+    pipe does not read: into a pipe, a socket or a terminal, a piece goes at most
+    :data:`PIPE_BUF` bytes at a time, each once a poll says there is room, and the poll ends
+    on the signal's wakeup as well. The bytes written; a stop raises its exception with the
+    rest unwritten (every byte before it was written, in order)."""
+    import os
+
+    size = 0
+    if not _pollable(fd):
+        for piece in pieces:
+            heed_stops()
+            view = memoryview(piece)
+            while view:
+                view = view[os.write(fd, view):]
+            size += len(piece)
+        return size
+    with _Wakeup() as wakeup:
+        for piece in pieces:
+            view = memoryview(piece)
+            while view:
+                heed_stops()
+                if wakeup.fd >= 0 and not _ready(fd, _POLLOUT, wakeup):
+                    continue
+                view = view[os.write(fd, view[:PIPE_BUF] if wakeup.fd >= 0 else view):]
+            size += len(piece)
+    return size
+
+
+def read_some(stream: Any, size: int) -> bytes:
+    """Up to ``size`` bytes of ``stream`` (what has come: a pipe's next bytes, b"" at its
+    end), the read begun only once a poll says there is something to read or a signal's
+    wakeup ended the wait, so that a stop that lands just before it still ends the command
+    (the copy of a FIFO whose writer never ends). A stream without a file descriptor is read
+    as it is."""
+    read = getattr(stream, "read1", stream.read)
+    try:
+        fd = stream.fileno()
+    except (AttributeError, OSError, ValueError):
+        fd = -1
+    if fd < 0 or not _pollable(fd):
+        heed_stops()
+        return read(size)  # type: ignore[no-any-return]
+    with _Wakeup() as wakeup:
+        while True:
+            heed_stops()
+            if wakeup.fd < 0 or _ready(fd, _POLLIN, wakeup):
+                return read(size)  # type: ignore[no-any-return]
+
+
+def write_now(fd: int, data: bytes) -> bool:
+    """``data`` (a message of a few bytes) written to ``fd`` if it takes it at once: a file, a
+    terminal, a pipe or socket that a poll says has room (at most :data:`PIPE_BUF` bytes
+    then); else dropped. Whether it was written. For what a stopped command still says."""
+    import os
+    import select
+
+    try:
+        if _pollable(fd):
+            poll = select.poll()
+            poll.register(fd, _POLLOUT)
+            if not poll.poll(0):
+                return False
+            data = data[:PIPE_BUF]
+        os.write(fd, data)
+    except OSError:
+        return False
+    return True
+
+
+_GUARDED: list[Any] = []  # (the wakeup of guard_stdout, kept for the process's life)
+
+
+def guard_stdout() -> None:
+    """Standard output, where it is a pipe or a socket, written by way of :func:`write_all`'s
+    waits for the rest of the process: ``sys.stdout`` made anew over a raw writer that polls
+    (the file and the signal's wakeup fd) before each write of at most :data:`PIPE_BUF`
+    bytes, so that every command's report (`check`, `parse`, `diff`, the summary of
+    `convert DIR`, click's echo) ends at a stop that lands just before a write into a pipe
+    whose reader does not read, as the copy of ``convert -o -`` does. The same encoding,
+    errors, line buffering and buffer size as the stream it replaces (flushed first). Only
+    in the main thread, for the ``tapegate`` command's own process (:mod:`tapegate.launch`:
+    not for a caller that goes on, whose streams are its own)."""
+    import sys
+
+    stream = sys.stdout
+    try:
+        fd = stream.fileno()
+    except (AttributeError, OSError, ValueError):  # (a test's captured stream)
+        return
+    import os
+    import stat
+
+    try:
+        mode = os.fstat(fd).st_mode
+    except OSError:
+        return
+    if not (stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)) or _GUARDED:
+        return
+    wakeup = _Wakeup().__enter__()
+    if wakeup.fd < 0:  # not the main thread
+        return
+    _GUARDED.append(wakeup)
+    stream.flush()
+    buffered = io.BufferedWriter(_PolledWriter(fd, wakeup))
+    sys.stdout = io.TextIOWrapper(buffered, encoding=stream.encoding, errors=stream.errors,
+                                  newline="\n",
+                                  line_buffering=bool(getattr(stream, "line_buffering", False)),
+                                  write_through=bool(getattr(stream, "write_through", False)))
+
+
+class _PolledWriter(io.RawIOBase):
+    """The raw writer under :func:`guard_stdout`'s stream: each write waits in a poll on the
+    file and on the signal's wakeup fd, then writes at most :data:`PIPE_BUF` bytes (the
+    buffered writer above writes the rest by calling again). Closing it leaves the
+    descriptor, the process's standard output, open."""
+
+    def __init__(self, fd: int, wakeup: _Wakeup) -> None:
+        super().__init__()
+        self._fd = fd
+        self._wakeup = wakeup
+
+    def writable(self) -> bool:
+        return True
+
+    def fileno(self) -> int:
+        return self._fd
+
+    def isatty(self) -> bool:
+        return False  # (a pipe or a socket)
+
+    def write(self, data: Any) -> int:
+        import os
+
+        main = _in_main_thread()
+        if main:
+            heed_stops()  # (a stop a batch's map held, or a finalizer swallowed: raised here)
+        while not _ready(self._fd, _POLLOUT, self._wakeup):
+            if main:
+                heed_stops()
+        return os.write(self._fd, memoryview(data)[:PIPE_BUF])

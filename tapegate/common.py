@@ -246,17 +246,17 @@ def _spooled(stream: Any, head: bytes = b"") -> str:
     import tempfile
 
     from formats.files import exit_on_termination
-    from formats.stops import heed_stops
+    from formats.stops import read_some
 
     # SIGTERM and SIGHUP made an exit, so that the copy is removed at the exit as at a ^C
     # (review 53, F14: `check -` so stopped left it in the temporary folder)
     exit_on_termination()
     spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
     spool.write(head)
-    read = getattr(stream, "read1", stream.read)  # (what has come, not a full 64 kB)
     while True:
-        heed_stops()  # (before the read, which may wait for ever on a writer that never ends)
-        piece = read(1 << 16)
+        # (what has come, not a full 64 kB; the read begun once something has come or a
+        # signal ended the wait, which may otherwise wait for ever on a writer that never ends)
+        piece = read_some(stream, 1 << 16)
         if not piece:
             break
         spool.write(piece)
@@ -282,21 +282,24 @@ def shown_output(name: str) -> str:
 def write_stream(output: str, pieces: Iterable[bytes]) -> int:
     """``-o FILE`` written atomically piece by piece, or ``-o -`` to standard output; the bytes
     written."""
-    size = 0
     if output == "-":
         sys.stdout.flush()
         try:
             fd = sys.stdout.fileno()
         except (AttributeError, OSError, ValueError):  # (a test's captured stream)
             fd = -1
-        from formats.stops import heed_stops
+        from formats.stops import heed_stops, write_all
 
+        if fd >= 0:
+            # past the stream's buffer, in writes a stop always ends (formats.stops): a
+            # program copied to a pipe whose reader stops reading (a pager, a DNC link) must
+            # end at ^C or SIGTERM, and leave nothing in a buffer that the exit would flush
+            # into the same full pipe (the CI timeout of a `convert -o -` stopped so)
+            return write_all(fd, pieces)
+        size = 0
         for piece in pieces:
-            heed_stops()  # (before the write, which may wait for ever on a full pipe)
-            if fd < 0:
-                sys.stdout.buffer.write(piece)
-            else:
-                _write_all(fd, piece)
+            heed_stops()
+            sys.stdout.buffer.write(piece)
             size += len(piece)
         sys.stdout.buffer.flush()
         return size
@@ -312,17 +315,6 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
             pending.write(piece)
         pending.commit(target, overwrite=True)
         return pending.size
-
-
-def _write_all(fd: int, data: bytes) -> None:
-    """``data`` written to ``fd`` straight, past the stream's buffer: a program copied to a
-    pipe whose reader stops reading (a pager, a DNC link) blocks in the write, and a ^C or
-    SIGTERM that lands there must find nothing left in a buffer, which the exit would flush
-    into the same full pipe and wait on for ever (the CI timeout of a `convert -o -` stopped
-    so). A signal's exception leaves the rest unwritten, as the stop asks."""
-    view = memoryview(data)
-    while view:
-        view = view[os.write(fd, view):]
 
 
 def get_profile(name: str | None, file: str | None = None) -> Profile:

@@ -164,7 +164,7 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
     click. A plain command ends the process once its output is flushed (:func:`leave`); with
     ``clean_exit`` it raises ``SystemExit`` as click's commands do, for a caller that goes on
     (as ``mypy.main``'s argument of that name)."""
-    from formats.stops import note_interrupts
+    from formats.stops import guard_stdout, note_interrupts
 
     note_interrupts()  # (a ^C a finalizer swallows is still obeyed: formats.stops)
     try:
@@ -181,18 +181,30 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
             # loaded yet)
             run = getattr(__import__(module, fromlist=[name]), name)
             prepare_streams()
+            if not clean_exit:
+                guard_stdout()  # (a stop ends every write into a pipe: formats.stops)
     except KeyboardInterrupt:  # a ^C in the start-up: told as the command's own (review 53,
         thaw()  # F11: a traceback where the imports took it)
         sys.stderr.write("\nAborted!\n")
         sys.exit(1)
     if found is None:
-        group(prog_name=prog_name)
+        try:
+            if not clean_exit:
+                from tapegate.common import prepare_streams
+
+                prepare_streams()  # (before the stream is made anew: its errors kept)
+                guard_stdout()
+            group(prog_name=prog_name)
+        except SystemExit as done:
+            if not clean_exit and _stopped(done):
+                _drop_pipes()
+            raise
         return
     try:
         try:
             run(**params)
-        except KeyboardInterrupt:  # as click's main tells it
-            sys.stderr.write("\nAborted!\n")
+        except KeyboardInterrupt:  # as click's main tells it (unless stderr cannot take it now)
+            _tell_now("\nAborted!\n")
             sys.exit(1)
         except Exception as exc:
             # a usage problem the body finds itself (a rule --select names that does not
@@ -204,7 +216,9 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
             sys.exit(exc.exit_code)
     except SystemExit as done:
         if not clean_exit:
-            leave(done.code, stopped=_stopped(done))
+            if _stopped(done):
+                _drop_pipes()
+            leave(done.code)
         thaw()
         raise
     except BaseException:
@@ -271,11 +285,19 @@ def _stopped(done: SystemExit) -> bool:
     """Whether the exit is a stop the user or the system asked for: ^C (the exit 1 told
     "Aborted!", raised while the ``KeyboardInterrupt`` was handled) or a signal's exit with
     128 + its number (SIGTERM, SIGHUP: ``formats.files.exit_on_termination``)."""
-    return (isinstance(done.__context__, KeyboardInterrupt)
-            or isinstance(done.code, int) and done.code > 128)
+    if isinstance(done.code, int) and done.code > 128:
+        return True
+    seen: BaseException | None = done.__context__  # (click's: Abort, raised from the ^C)
+    for _ in range(3):
+        if seen is None:
+            return False
+        if isinstance(seen, KeyboardInterrupt):
+            return True
+        seen = seen.__cause__ or seen.__context__
+    return False
 
 
-def leave(code: object, stopped: bool = False) -> None:
+def leave(code: object) -> None:
     """The process ended at once with ``code`` once the command is done, its output flushed:
     the interpreter's finalization -- every module's objects freed one by one, the heap given
     back -- is 14.7M instructions, 3-4 ms of CPU, which a batch's threads cannot share: the
@@ -286,9 +308,9 @@ def leave(code: object, stopped: bool = False) -> None:
     code that is no integer (printed by the exit), a function registered with ``atexit``
     (coverage, a test's probe), a thread not a daemon still running, standard input copied
     to a temporary file (``tapegate.common.readable``, removed by its object's finalizer), or
-    a flush that fails (a closed pipe: told as the exit tells it). ``stopped`` (^C, SIGTERM:
-    :func:`_stopped`) leaves what waits for a pipe or a socket on stdout unwritten
-    (:func:`_a_pipe`)."""
+    a flush that fails (a closed pipe: told as the exit tells it). A stopped command's pipes
+    were pointed at /dev/null before (:func:`_drop_pipes`): the flush here, or the
+    interpreter's, never waits on a reader."""
     import atexit
 
     if not (code is None or isinstance(code, int)) or atexit._ncallbacks():
@@ -302,8 +324,7 @@ def leave(code: object, stopped: bool = False) -> None:
     if common is not None and common._SPOOLED:
         return
     try:
-        if not (stopped and _a_pipe(sys.stdout)):
-            sys.stdout.flush()
+        sys.stdout.flush()
         sys.stderr.flush()
     except BaseException:  # (BrokenPipeError, or another error of the streams)
         return
@@ -326,3 +347,40 @@ def _a_pipe(stream: object) -> bool:
     except (AttributeError, OSError, ValueError):
         return False
     return stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)
+
+
+def _drop_pipes() -> None:
+    """A command stopped (^C, SIGTERM, SIGHUP: :func:`_stopped`): its stdout and stderr, where
+    they are a pipe or a socket, pointed at /dev/null (``tapegate.common.silence_stdout``'s
+    recipe), so that what still waits in their buffers is dropped, not flushed into a pipe
+    whose reader does not read -- which would wait for ever, the stop not obeyed, whether
+    :func:`leave` or the interpreter's own exit flushes it (a `convert -o -` or a `check`
+    piped into a pager left open, a DNC link, a CI job runner's pipe). What the reader got
+    is every byte written before the stop, in order; a file or a terminal always takes the
+    rest, so it is written."""
+    for stream in (sys.stdout, sys.stderr):
+        if _a_pipe(stream):
+            try:
+                fd = stream.fileno()
+                devnull = os.open(os.devnull, os.O_WRONLY)
+            except (AttributeError, OSError, ValueError):
+                continue
+            try:
+                os.dup2(devnull, fd)
+            finally:
+                os.close(devnull)
+
+
+def _tell_now(text: str) -> None:
+    """``text`` on stderr if it takes it now (a terminal, a file, a pipe with room: as
+    before), else dropped: a stopped command's message never waits on a pipe nobody reads
+    (``2>&1 | less`` left open)."""
+    from formats.stops import write_now
+
+    try:
+        sys.stderr.flush()
+        fd = sys.stderr.fileno()
+    except (AttributeError, OSError, ValueError):  # (a test's captured stream)
+        sys.stderr.write(text)
+        return
+    write_now(fd, text.encode())

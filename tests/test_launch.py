@@ -576,3 +576,40 @@ def _full(fd: int) -> bool:
     waiting = array.array("i", [0])
     fcntl.ioctl(fd, termios.FIONREAD, waiting)
     return waiting[0] >= fcntl.fcntl(fd, fcntl.F_GETPIPE_SZ)
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="needs Linux's /proc")
+@pytest.mark.parametrize(("argv", "signum"), [
+    (["check", "big", "-p", "iso-mill", "-j", "1"], signal.SIGINT),
+    (["check", "big", "-p", "iso-mill", "--format", "jsonl"], signal.SIGTERM),
+    (["check", "big", "-p", "iso-mill", "--format", "jsonl"], signal.SIGINT)],
+    ids=["plain-int", "click-term", "click-int"])
+def test_a_check_whose_report_waits_on_a_full_pipe_ends_at_a_signal_that_interrupts_nothing(
+        place: Path, argv: list[str], signum: int) -> None:
+    """The lost wake-up of a report written into a pipe nobody reads: a SIGTERM whose C
+    handler runs just before the write's system call (here: handed to another thread of the
+    command, tests/test_convert_interrupt.py, AIMED) left the write blocked for ever (a plain
+    check with one job leaves SIGTERM's default action, which ends it anyway). Standard
+    output, a pipe, is written by way of a poll that the signal's wakeup fd ends
+    (formats.stops.guard_stdout), by a plain check and by one click reads alike."""
+    from tests.test_convert_interrupt import AIMED
+
+    (place / "big").mkdir()
+    for n in range(40):
+        (place / "big" / f"p{n}.nc").write_text(BAD * 400)
+    script = AIMED.format(signum=int(signum), argv=argv)
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        code = proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        assert proc.stdout is not None and proc.stderr is not None
+        err = proc.stderr.read()
+        proc.stdout.close()
+        proc.stderr.close()
+    assert err.startswith(b"aimed\n"), err
+    assert code == (1 if signum == signal.SIGINT else 128 + signum), err

@@ -167,3 +167,60 @@ def test_a_ctrl_c_in_the_start_up_is_told_as_the_commands_own(
         signal.signal(signal.SIGINT, before)
     assert done.value.code == 1
     assert capsys.readouterr().err == "\nAborted!\n"
+
+
+AIMED_READ = """
+import signal, sys, threading, time
+main_thread = threading.get_native_id()
+
+def asleep() -> bool:
+    with open(f"/proc/self/task/{{main_thread}}/stat") as stat:
+        return stat.read().rsplit(")", 1)[1].split()[0] == "S"
+
+def aim() -> None:
+    while not (sys.modules.get("tempfile") and asleep()):  # (the copy of stdin begun)
+        time.sleep(0.001)
+    time.sleep(0.05)  # (the main thread's own waits before the read are short)
+    while not asleep():
+        time.sleep(0.001)
+    print("aimed", file=sys.stderr, flush=True)
+    signal.pthread_kill(threading.get_ident(), {signum})
+
+threading.Thread(target=aim, daemon=True).start()
+sys.argv = ["tapegate", "check", "-p", "fanuc-mill", "-"]
+from tapegate.launch import main
+main()
+"""
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="needs Linux's /proc")
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_that_never_interrupts_the_read_of_stdin_still_stops_it(
+        tmp_path: Path, signum: int) -> None:
+    """The lost wake-up of the copy of standard input (tests/test_convert_interrupt.py, AIMED,
+    tells it for the write): a signal whose C handler runs but that interrupts no system call
+    of the main thread (here: handed to another thread, as the kernel may) left the read of a
+    pipe whose writer never ends waiting for ever. The read now begins only once a poll on the
+    pipe and on the signal's wakeup fd says so (formats.stops.read_some)."""
+    temp = tmp_path / "temp"
+    temp.mkdir()
+    proc = subprocess.Popen([sys.executable, "-c", AIMED_READ.format(signum=int(signum))],
+                            stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE,
+                            env={**os.environ, "PYTHONPATH": str(ROOT), "TMPDIR": str(temp)},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    assert proc.stdin is not None and proc.stderr is not None
+    try:
+        proc.stdin.write(b"%\nO1000\nG0 X0\n")
+        proc.stdin.flush()  # (and left open: the copy waits for more)
+        code = proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        proc.stdin.close()
+        err = proc.stderr.read()
+        proc.stderr.close()
+    assert err.startswith(b"aimed\n"), err
+    assert code == (1 if signum == signal.SIGINT else 128 + signum), err
+    assert list(temp.iterdir()) == []
