@@ -1363,6 +1363,35 @@ BODY_MOTION = [
      "o100 call [1]\nX3", None),
     # a cycle in the body: the caller's G1 after its endsub
     ("G1 X0\no100 sub\nG81 X1 Y1 Z-1 R1\no100 endsub\nX2 Y2", None),
+    # a `do` loop runs at least once: its turn's last G2 is the body's (lcnc61's miss)
+    ("#2=0\no100 sub\no102 do\nG2 X1 Y0 I0.5 J0\n#2=[#2+1]\no102 while [#2 LT 1]\n"
+     "o100 endsub\no100 call\nZ0.5", 11),
+    # a `do` in a `do`, and a call of a G2 body in a `do`
+    ("#2=0\no100 sub\no102 do\no104 do\nG2 X1 Y0 I0.5 J0\no104 while [0]\n#2=[#2+1]\n"
+     "o102 while [#2 LT 2]\no100 endsub\no100 call\nZ0.5", 13),
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no102 do\no200 call\n"
+     "o102 while [0]\no100 endsub\no100 call\nZ0.5", 12),
+    # a body calling one that ends in G2 (lcnc61's miss), and an M73 (no motion restored)
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no100 endsub\n"
+     "o100 call\nZ0.5", 10),
+    ("o200 sub\nM73\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no100 endsub\n"
+     "o100 call\nZ0.5", 11),
+    # a `while` may not turn (here it does not): not known
+    ("#2=0\no100 sub\no102 while [#2 GT 0]\nG2 X1 Y0 I0.5 J0\n#2=[#2+1]\no102 endwhile\n"
+     "o100 endsub\no100 call\nZ0.5", None),
+    # a `break` or `continue` before the loop's G2 leaves a turn in the mode before it
+    ("o100 sub\nG1 X0\no102 do\no103 if [#1 GT 0]\no102 break\no103 endif\n"
+     "G2 X1 Y0 I0.5 J0\no102 while [#1 LT 0]\no100 endsub\no100 call [1]\nX3", None),
+    ("o100 sub\nG1 X0\no102 do\no103 if [#1 GT 0]\no102 continue\no103 endif\n"
+     "G2 X1 Y0 I0.5 J0\no102 while [0]\no100 endsub\no100 call [1]\nX3", None),
+    # a G1 in a condition after the loop's G2, or after the call of a G2 body
+    ("o100 sub\no102 do\nG2 X1 Y0 I0.5 J0\no103 if [#1 GT 0]\nG1 X0\no103 endif\n"
+     "o102 while [0]\no100 endsub\no100 call [1]\nX3", None),
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no1 if [#1 GT 0]\n"
+     "G1 X0\no1 endif\no100 endsub\no100 call [1]\nX3", None),
+    # a possible M72 drop after the call of a G2 body
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\nM70\nM72 G1 X0\n"
+     "o100 endsub\no100 call\nX3", None),
 ]
 
 

@@ -1206,6 +1206,7 @@ impl Checker {
                     // (a body's conditions are not evaluated: which branch runs, not known)
                     let mut blocks = std::mem::take(&mut self.linuxcnc_plane_body_blocks);
                     let keyword = crate::statement::o_keyword(text);
+                    self.linuxcnc_body_do(keyword.as_deref(), &label, b.line);
                     let step = PlaneStep {
                         depth,
                         open,
@@ -3723,6 +3724,12 @@ impl Checker {
     pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
+        // (a body's `do` loop closed here whose every turn ends in the G0-G3 read last)
+        let do_closed = self
+            .linuxcnc_motion_before_sub
+            .do_closed
+            .take()
+            .filter(|&(line, _)| line == b.line && self.open_definition.is_some());
         self.linuxcnc_motion = LinuxCncMotion::Unknown;
         self.linuxcnc_motion_plain = false;
         if self.config.family != Family::LinuxCnc {
@@ -3777,6 +3784,53 @@ impl Checker {
             self.machine.state.motion = motion;
             self.machine.state.cycle = None;
         }
+        // (the mode is surely known after a call of a body that surely leaves one, and
+        // after a `do` loop whose every turn ends in one: the lines after it, and the
+        // `endsub` of a body they end, judged by it; lcnc61's misses: `o200 sub` / `G2 X1
+        // Y0 I0.5 J0` / `o200 endsub` / `o100 sub` / `o200 call` / `o100 endsub` / `o100
+        // call` / `Z0.5` is "R i j k words all missing for arc" in `rs274 -g`)
+        let sure = match (left, do_closed) {
+            (Some(Some(m)), _) => Some(m),
+            (None, Some((_, m))) if !called => Some(m),
+            _ => None,
+        };
+        if let Some(m) = sure {
+            self.linuxcnc_motion = LinuxCncMotion::Known(Some(m * 10));
+            self.linuxcnc_motion_plain = false;
+            self.motion_unknown = false;
+            self.machine.state.motion = Some(m);
+            self.machine.state.cycle = None;
+        }
+    }
+
+    /// LinuxCNC: a body's `do` loops through its o-word line (`keyword`, `label`): a `do`
+    /// opens one, a `break` or `continue` marks every one open, and the `while` of the
+    /// last one open closes it; where no `break` or `continue` stood in it and the motion
+    /// mode read last is a G0-G3 known, every turn ends in it (a turn's lines run straight
+    /// where the checker reads none of its o-word lines but its own; a `return` is the
+    /// `endsub`'s matter), and so does the loop: kept for the line's
+    /// [`Checker::linuxcnc_motion_after_call`].
+    fn linuxcnc_body_do(&mut self, keyword: Option<&[u8]>, label: &[u8], line: usize) {
+        use super::tooling::LinuxCncMotion;
+        let sure = match self.linuxcnc_motion {
+            LinuxCncMotion::Known(Some(m @ (0 | 10 | 20 | 30)))
+                if !self.motion_unknown && self.machine.state.cycle.is_none() =>
+            {
+                Some(m / 10)
+            }
+            _ => None,
+        };
+        let dos = &mut self.linuxcnc_motion_before_sub.dos;
+        match keyword {
+            Some(b"do") => dos.push((label.to_vec(), false)),
+            Some(b"break" | b"continue") => dos.iter_mut().for_each(|d| d.1 = true),
+            Some(b"while") if dos.last().is_some_and(|d| d.0 == label) => {
+                let left = dos.pop().is_some_and(|d| d.1);
+                self.linuxcnc_motion_before_sub.do_closed =
+                    sure.filter(|_| !left).map(|m| (line, m));
+            }
+            _ => {}
+        }
     }
 
     /// LinuxCNC: whether the motion mode in force is G0-G3 or none, known or not
@@ -3817,6 +3871,8 @@ impl Checker {
                     cycle: state.cycle,
                     words: state.cycle_words,
                     label: label.unwrap_or_default(),
+                    dos: Vec::new(),
+                    do_closed: None,
                 };
                 self.linuxcnc_body_returns = false;
                 self.linuxcnc_plane_unknown = true;
@@ -3853,6 +3909,7 @@ impl Checker {
             cycle,
             words,
             label,
+            ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
         // (a body whose last mode is not known but differs from the one before its sub as
         // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
@@ -5586,6 +5643,12 @@ pub(super) struct MotionBeforeSub {
     pub(super) cycle: Option<i64>,
     pub(super) words: [Option<Dec>; 5],
     pub(super) label: Vec<u8>,
+    /// The body's `do` loops open, by label, and whether a `break` or `continue` stands in
+    /// one (a way out of a turn before its end).
+    pub(super) dos: Vec<(Vec<u8>, bool)>,
+    /// The line of the body's `while` that closed a `do` whose turn surely ends in the
+    /// G0-G3 in force there (no `break` or `continue` in it), the mode after that line.
+    pub(super) do_closed: Option<(usize, i64)>,
 }
 
 /// LinuxCNC: the canned cycle in force before a block with an M72 while a save is followed
