@@ -1466,6 +1466,12 @@ def test_a_cycle_repeat_after_a_surely_dropped_m72_block_keeps_the_r_before_it(
     ("o1 repeat [2]\nM70\no1 endrepeat\nF0\nM72\nG1 X1", None),
     # a loop's later turn saves the F set after its M70: not known
     ("F0\no1 repeat [2]\nM70\nF10\no1 endrepeat\nM72 F0\nG1 X1", None),
+    # an `if` of a condition not known runs nothing: its M70 saves the rate before it
+    # (review 61b v2; where the M70 does not run, rs274 refuses the M72 itself)
+    ("F0\no1 if [#5220 GT 0]\nM70\no1 endif\nM72 F0\nG1 X1", 8),
+    ("F0\no1 if [#5220 GT 0]\nM70\no1 endif\nM72\nG1 X1", 8),
+    ("F0\nM70\no1 if [#5220 GT 0]\nM70\no1 endif\nM72 F0\nG1 X1", 9),
+    ("F0\no1 if [#5220 GT 0]\nF10\nM70\no1 endif\nM72 F0\nG1 X1", None),
 ])
 def test_an_m72_of_a_loose_save_leaves_the_rate_every_save_agrees_on(tmp_path, body, line):
     text = program(body)

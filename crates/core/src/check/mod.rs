@@ -2422,7 +2422,7 @@ impl Checker {
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_plane_after_call(b, false);
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
-                self.linuxcnc_rate = None;
+                self.linuxcnc_rate = self.linuxcnc_rate_through_if(b);
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;

@@ -3833,6 +3833,26 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: rs274's feed rate ([`Checker::linuxcnc_rate`]) after an o-word line the
+    /// checker does not follow: an `if` of the main program opening its first branch runs
+    /// nothing, so the rate where its branch's first line runs is the one before it (kept
+    /// for what an M70 there saves; review 61b, v2: `F0` / `o1 if [#5220 GT 0]` / `M70` /
+    /// `o1 endif` / `M72 F0` / `G1 X1` is "Cannot do g1 with zero feed rate" in `rs274
+    /// -g`); after any other, not known.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_rate_through_if(&self, b: &BlockView<'_>) -> Option<Dec> {
+        let opens_if = |&(_, kind, text): &(usize, Kind, &[u8])| {
+            kind == Kind::Flow
+                && crate::statement::o_keyword(text).as_deref() == Some(b"if".as_slice())
+        };
+        (self.config.family == Family::LinuxCnc
+            && self.open_definition.is_none()
+            && matches!(b.statements, [one] if opens_if(one)))
+        .then_some(self.linuxcnc_rate)
+        .flatten()
+    }
+
     /// LinuxCNC: whether the motion mode in force is G0-G3 or none, known or not
     /// ([`Checker::linuxcnc_motion_plain`]).
     fn linuxcnc_motion_is_plain(&self) -> bool {
