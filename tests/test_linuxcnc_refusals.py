@@ -1389,6 +1389,18 @@ BODY_MOTION = [
      "o102 while [0]\no100 endsub\no100 call [1]\nX3", None),
     ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no1 if [#1 GT 0]\n"
      "G1 X0\no1 endif\no100 endsub\no100 call [1]\nX3", None),
+    # a body that ends the program after its G2: no line after its call runs
+    ("o100 sub\nG2 X1 Y0 I0.5 J0\nM2\no100 endsub\no1 if [#5220 GT 0]\no100 call\nZ0.5\n"
+     "o1 endif", None),
+    # a definition written after M2: rs274 finds it when the call runs, so the move after
+    # the call is judged at its endsub (the first such move; lcnc61's miss)
+    ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", 4),
+    ("o100 call\nG1 X0\no100 call\nX3\nM2\no100 sub\nG3 X1 Y0 R1\no100 endsub", 6),
+    ("o100 call\nG1 X2\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
+    ("o100 call\nX2 R1\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
+    ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\nM2\no100 endsub", None),
+    ("o100 call\nZ0.5\nM2\no100 sub\no1 if [#1 GT 0]\nG1 X0\no1 endif\no100 endsub", None),
+    ("o100 call\nM70\nM72 G1 X0\nX2\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
     # a possible M72 drop after the call of a G2 body
     ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\nM70\nM72 G1 X0\n"
      "o100 endsub\no100 call\nX3", None),

@@ -1098,6 +1098,10 @@ pub struct Checker {
     /// not known and not the one before its sub (after a call: not known). A label not here
     /// leaves the caller's mode.
     linuxcnc_sub_motion: HashMap<Vec<u8>, Option<i64>>,
+    /// LinuxCNC: the main program's calls of definitions not read yet, and the first move
+    /// without a motion code after each, judged at the definition's `endsub`
+    /// ([`structure::LaterCalls`]).
+    linuxcnc_later: Box<structure::LaterCalls>,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
@@ -1737,6 +1741,7 @@ impl Checker {
             linuxcnc_motion_before_sub: structure::MotionBeforeSub::default(),
             linuxcnc_body_returns: false,
             linuxcnc_sub_motion: HashMap::new(),
+            linuxcnc_later: Box::default(),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,

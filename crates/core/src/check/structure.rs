@@ -323,6 +323,7 @@ impl Checker {
         self.linuxcnc_motion_plain = false;
         self.linuxcnc_motion_subs.clear();
         self.linuxcnc_sub_motion.clear();
+        *self.linuxcnc_later = LaterCalls::default();
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
@@ -3518,6 +3519,7 @@ impl Checker {
                 self.linuxcnc_motion = LinuxCncMotion::Unknown;
                 self.motion_unknown = true;
                 self.machine.state.motion = None;
+                self.linuxcnc_later.pending = None;
             }
         }
     }
@@ -3724,6 +3726,7 @@ impl Checker {
     pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
+        self.linuxcnc_later.pending = None;
         // (a body's `do` loop closed here whose every turn ends in the G0-G3 read last)
         let do_closed = self
             .linuxcnc_motion_before_sub
@@ -3794,12 +3797,67 @@ impl Checker {
             (None, Some((_, m))) if !called => Some(m),
             _ => None,
         };
+        // (a call of the main program of one definition not read yet: its mode is judged
+        // at the definition's endsub)
+        if let [(_, Kind::Call, text)] = b.statements {
+            let label = self.linuxcnc_call_label(text);
+            if self.open_definition.is_none()
+                && !crate::statement::computed_label(&label)
+                && !self.linuxcnc_defined.contains(&label)
+            {
+                self.linuxcnc_later.pending = Some((label, b.line));
+            }
+        }
         if let Some(m) = sure {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(m * 10));
             self.linuxcnc_motion_plain = false;
             self.motion_unknown = false;
             self.machine.state.motion = Some(m);
             self.machine.state.cycle = None;
+        }
+    }
+
+    /// LinuxCNC: a move without a motion code or arc word (`b`) where the mode in force is
+    /// the one a call of a definition not read yet leaves ([`LaterCalls`]): kept for that
+    /// definition's `endsub`.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) {
+        let Some((label, call)) = self.linuxcnc_later.pending.take() else {
+            return;
+        };
+        let Some(column) = b
+            .words
+            .iter()
+            .find(|w| crate::modal::AXES.contains(&w.letter))
+            .map(|w| w.column)
+        else {
+            return;
+        };
+        self.linuxcnc_later
+            .moves
+            .push((label, call, b.line, column));
+    }
+
+    /// LinuxCNC: at the `endsub` of a definition (`label`) that surely leaves G2 or G3
+    /// (`m`), the first move without a motion code or arc word after each earlier call of
+    /// it ([`LaterCalls`]) is an arc with no centre or radius: rs274 finds a definition
+    /// written after M2 when the call runs, and refuses the move ("R i j k words all missing
+    /// for arc", interp_convert.cc convert_arc; lcnc61's miss: `o100 call` / `Z0.5` / `M2`
+    /// / `o100 sub` / `G2 X1 Y0 I0.5 J0` / `o100 endsub`).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_later_arcs(&mut self, label: &[u8], m: i64) {
+        let moves = std::mem::take(&mut self.linuxcnc_later.moves);
+        let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
+        self.linuxcnc_later.moves = rest;
+        for (_, call, line, column) in these {
+            let message = format!(
+                "arc without I J K (or R): none is given, whatever the plane (the call on \
+                 line {call} runs {} written after it, which leaves G{m} in force)",
+                String::from_utf8_lossy(label)
+            );
+            self.report(Rule::ArcCentreMissing, message, line, column);
         }
     }
 
@@ -3923,6 +3981,7 @@ impl Checker {
             LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
         ) && !self.motion_unknown
             && !self.linuxcnc_body_returns
+            && !self.linuxcnc_body_distance.ends
             && state.cycle.is_none();
         let MotionBeforeSub {
             motion,
@@ -3935,6 +3994,9 @@ impl Checker {
         // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
         match state.motion {
             Some(m @ 0..=3) if known => {
+                if m >= 2 && !self.linuxcnc_later.moves.is_empty() {
+                    self.linuxcnc_later_arcs(&label, m);
+                }
                 self.linuxcnc_sub_motion.insert(label, Some(m));
             }
             now if now != motion || state.cycle != cycle => {
@@ -5652,6 +5714,19 @@ pub(super) struct M72Dropped {
     pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
+}
+
+/// LinuxCNC: the main program's calls of a definition not read yet (rs274 finds one written
+/// after M2 when the call runs), whose motion mode after them is not known until the
+/// definition is read ([`Checker::linuxcnc_later_move`]).
+#[derive(Debug, Clone, Default)]
+pub(super) struct LaterCalls {
+    /// The call whose mode is still in force, by label, and its line: no o-word line, call,
+    /// motion code or possible M72 drop since.
+    pub(super) pending: Option<(Vec<u8>, usize)>,
+    /// The first move without a motion code or arc word after such a call: the label, the
+    /// call's line, the move's line and column.
+    moves: Vec<(Vec<u8>, usize, usize, usize)>,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
