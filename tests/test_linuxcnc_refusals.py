@@ -1494,3 +1494,30 @@ def test_an_m72_of_a_loose_save_leaves_the_rate_every_save_agrees_on(tmp_path, b
         return
     assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A call of a definition read before it whose body moves no axis and changes nothing the
+# position is read in (no G code, axis word, M6, M70-M73 or call; S, F, T, parameters below
+# #5000 or named, M0-M9 but M2/M6, M48-M53 and o-word lines): the axes stand where they did
+# before it, as rs274 runs the body (lcnc60's list). HEAD starts at X0 Y0 Z0. (the blocks
+# after HEAD; the refused line, or None where rs274 runs)
+STILL_CALLS = [
+    ("o100 sub\nM8\no100 endsub\nG0 Z0\no100 call\nG38.2 Z0", 8),
+    ("o100 sub\nM8\no100 endsub\nG0 X1\no100 call\nG38.2 X1", 8),
+    ("o100 sub\n#1=2\n#<a>=3\nS100 M3\nM5 T1 F20\no1 if [#1 GT 0]\nM9\no1 endif\n"
+     "o100 endsub\nG0 Z0\no100 call\nG38.2 Z0", 14),
+    # the body moves, or calls one that does: not known after it
+    ("o100 sub\nG0 Z1\no100 endsub\nG0 Z0\no100 call\nG38.2 Z0", None),
+    ("o101 sub\nG0 Z1\no101 endsub\no100 sub\no101 call\no100 endsub\nG0 Z0\no100 call\n"
+     "G38.2 Z0", None),
+    ("o100 sub\nM8\no100 endsub\nG0 Z0\no100 call\nG38.2 Z1", None),
+]
+
+
+@pytest.mark.parametrize("body, line", STILL_CALLS)
+def test_a_call_of_a_body_that_moves_no_axis_keeps_the_position(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert_too_close_refused(tmp_path, text, line, 1)

@@ -765,13 +765,15 @@ struct Implicit {
 /// A LinuxCNC definition's body as [`Checker::linuxcnc_bodies`] keeps it: its label, whether
 /// it may set the feed mode or end the program, the labels it calls, the distance mode it
 /// returns in, its refusals that wait for a call ([`structure::CallRefusal`]), and whether a
-/// call of it surely ends the program (its M2 or M30; review 48, c19).
+/// call of it surely ends the program (its M2 or M30; review 48, c19), and whether it surely
+/// moves no axis and changes nothing the position is read in ([`structure::still_line`]).
 type LinuxCncBody = (
     Vec<u8>,
     bool,
     Vec<Vec<u8>>,
     structure::Distance,
     Vec<structure::CallRefusal>,
+    bool,
     bool,
 );
 

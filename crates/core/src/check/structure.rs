@@ -1113,6 +1113,9 @@ impl Checker {
                 && self.linuxcnc_runs_surely()
                 && !self.main_ended()
                 && self.linuxcnc_call_ends(text);
+            if kind == Kind::Call && main {
+                self.linuxcnc_still_call(b, text);
+            }
             let label = self.linuxcnc_call_label(text);
             // (the skip of a block known not to run ends at an o-word line of its label; one
             // whose label is worked out as the line runs, from values a line skipped may have
@@ -3727,6 +3730,9 @@ impl Checker {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
         self.linuxcnc_later.pending = None;
+        if self.linuxcnc_later.still.is_some() {
+            self.linuxcnc_still_back(b.line);
+        }
         // (a body's `do` loop closed here whose every turn ends in the G0-G3 read last)
         let do_closed = self
             .linuxcnc_motion_before_sub
@@ -3859,6 +3865,57 @@ impl Checker {
             );
             self.report(Rule::ArcCentreMissing, message, line, column);
         }
+    }
+
+    /// LinuxCNC: a call line of the main program (`text`, one of its statements) whose
+    /// every call names a definition read before it that moves no axis and calls nothing
+    /// ([`still_line`]): the axes' positions before it kept ([`LaterCalls::still`]), put
+    /// back after the call forgets them ([`Checker::linuxcnc_still_back`]).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_still_call(&mut self, b: &BlockView<'_>, text: &[u8]) {
+        let label = self.linuxcnc_call_label(text);
+        let still = b.statements.len() == 1
+            && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+            && !crate::statement::computed_label(&label)
+            && self.linuxcnc_defined.contains(&label)
+            && self
+                .linuxcnc_bodies
+                .iter()
+                .rfind(|e| e.0 == label)
+                .is_some_and(|e| e.6 && e.2.is_empty());
+        let state = &self.machine.state;
+        self.linuxcnc_later.still = still.then(|| {
+            (
+                b.line,
+                state.position,
+                state.unknown
+                    & crate::modal::FORGOTTEN
+                    & !(crate::modal::bit(b'F') | crate::modal::bit(b'S')),
+                self.machine.drift,
+            )
+        });
+    }
+
+    /// LinuxCNC: after the call line the checker does not follow, the axes' positions from
+    /// before it where every call of the line is of a body that moves no axis
+    /// ([`Checker::linuxcnc_still_call`]): rs274 runs the body, which leaves them as they
+    /// were (lcnc60's list: `G0 Z0` / `o100 call` of a body of `M8` / `G38.2 Z0` is "Start
+    /// point too close to probe point").
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_still_back(&mut self, line: usize) {
+        let Some((at, position, unknown, drift)) = self.linuxcnc_later.still.take() else {
+            return;
+        };
+        if at != line {
+            return;
+        }
+        let axes = crate::modal::FORGOTTEN & !(crate::modal::bit(b'F') | crate::modal::bit(b'S'));
+        let state = &mut self.machine.state;
+        state.position = position;
+        state.unknown = state.unknown & !axes | unknown;
+        self.machine.drift = drift;
     }
 
     /// LinuxCNC: a body's `do` loops through its o-word line (`keyword`, `label`): a `do`
@@ -4244,6 +4301,7 @@ impl Checker {
                         Distance::Unsure,
                         Vec::new(),
                         false,
+                        true,
                     ));
                     *self.linuxcnc_body_distance = BodyDistance {
                         open: true,
@@ -4279,6 +4337,9 @@ impl Checker {
         let Some(body) = self.linuxcnc_bodies.last_mut() else {
             return;
         };
+        if body.6 && !still_line(b) {
+            body.6 = false;
+        }
         // (read before the block's words are: the number as written, an expression not known)
         let mut ends = false;
         for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
@@ -4450,7 +4511,7 @@ impl Checker {
             if seen.contains(&label) {
                 continue;
             }
-            let Some((_, sets, calls, _, _, _)) =
+            let Some((_, sets, calls, _, _, _, _)) =
                 self.linuxcnc_bodies.iter().rfind(|e| e.0 == label)
             else {
                 return false;
@@ -5716,6 +5777,51 @@ pub(super) struct M72Dropped {
     pub(super) compensation: bool,
 }
 
+/// LinuxCNC: whether a line of a definition's body surely moves no axis and changes nothing
+/// the position is read in (units, distance mode, offsets, tool length, plane): o-word
+/// lines other than calls, and words of S, F, T, a parameter below #5000 or named, and M0,
+/// M1, M3-M5, M7-M9, M48-M53 of numbers as written. Anything else (a G code, an axis word,
+/// M6, M70-M73, a call) may move an axis or change the coordinates the caller's position is
+/// read in.
+pub(super) fn still_line(b: &BlockView<'_>) -> bool {
+    if b.statements.iter().any(|&(_, kind, _)| kind == Kind::Call) {
+        return false;
+    }
+    b.words.iter().all(|w| match w.letter {
+        b'S' | b'F' | b'T' | b'N' => true,
+        // (a named parameter, or a number below the system's: none is an offset in force)
+        b'#' => match w.index.first() {
+            Some(c) if c.is_ascii_digit() => std::str::from_utf8(w.index)
+                .ok()
+                .and_then(|n| n.parse::<u32>().ok())
+                .is_some_and(|n| n < 5000),
+            Some(_) => true,
+            // (`#<name>=`, read whole as the word's expression)
+            None => w.expression.first() == Some(&b'<'),
+        },
+        b'M' => {
+            w.expression.is_empty()
+                && matches!(
+                    w.number,
+                    b"0" | b"1"
+                        | b"3"
+                        | b"4"
+                        | b"5"
+                        | b"7"
+                        | b"8"
+                        | b"9"
+                        | b"48"
+                        | b"49"
+                        | b"50"
+                        | b"51"
+                        | b"52"
+                        | b"53"
+                )
+        }
+        _ => false,
+    })
+}
+
 /// LinuxCNC: the main program's calls of a definition not read yet (rs274 finds one written
 /// after M2 when the call runs), whose motion mode after them is not known until the
 /// definition is read ([`Checker::linuxcnc_later_move`]).
@@ -5727,6 +5833,10 @@ pub(super) struct LaterCalls {
     /// The first move without a motion code or arc word after such a call: the label, the
     /// call's line, the move's line and column.
     moves: Vec<(Vec<u8>, usize, usize, usize)>,
+    /// A call line of the main program whose call is of a definition read before it whose
+    /// body moves no axis and calls nothing ([`still_line`]): its line, and
+    /// the axes' positions, their unknown marks and drifts before the call forgot them.
+    pub(super) still: Option<(usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9])>,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
