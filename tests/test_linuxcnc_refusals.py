@@ -1521,3 +1521,28 @@ def test_a_call_of_a_body_that_moves_no_axis_keeps_the_position(tmp_path, body, 
         clean_on_both(tmp_path, text)
         return
     assert_too_close_refused(tmp_path, text, line, 1)
+
+
+# An M72 of a body's own M70/M73 (no condition or loop open at either, nothing called
+# between) whose saved rate is surely zero: the restore writes that rate after the block's F,
+# so a feed move without an F after it is "Cannot do g1 with zero feed rate" (review 61b v9).
+# The body is called. (the blocks after HEAD; the refused line, or None where rs274 runs)
+BODY_M72_ZERO = [
+    ("o100 sub\nF0\nM70\nM9\nM72 F0\nG1 X1\no100 endsub\no100 call", 8),
+    ("o100 sub\nF0\nM70\nF10\nM72\nG1 X1\no100 endsub\no100 call", 8),
+    ("o100 sub\nM70 F0\nM72 F10\nG1 X1\no100 endsub\no100 call", 6),
+    ("o100 sub\nF0\nM73\nG1 X1 F10\nM72\nG1 X2\no100 endsub\no100 call", 8),
+    ("o100 sub\nF10\nM70\nF0\nM72\nG1 X1\no100 endsub\no100 call", None),
+    ("o100 sub\nF0\nM70\nM71\nM70 F10\nM72\nG1 X1\no100 endsub\no100 call", None),
+    ("o100 sub\nF0\nM70\nM72\nG1 X1 F5\nG0 X2\no100 endsub\no100 call", None),
+]
+
+
+@pytest.mark.parametrize("body, line", BODY_M72_ZERO)
+def test_an_m72_of_a_body_s_own_zero_save_leaves_a_zero_rate(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

@@ -3199,6 +3199,19 @@ impl Checker {
             still: !modal && still,
         };
         let main = self.open_definition.is_none();
+        // (a body's own save, read straight after its sub: whether rs274's rate there is
+        // surely zero -- the block's F0, G94/G95, or an F0 of the body in force)
+        if !main && m7 != 72 {
+            self.linuxcnc_later.body_zero_saved = matches!(m7, 70 | 73)
+                && self.linuxcnc_definition_flow.is_empty()
+                && !unread
+                && rate.map_or(
+                    f_at.is_none()
+                        && !state.is_unknown(b'F')
+                        && state.feed.is_none_or(|f| f.is_zero()),
+                    |r| r.is_zero(),
+                );
+        }
         match m7 {
             70 | 73 => {
                 if followed {
@@ -3323,6 +3336,18 @@ impl Checker {
         if self.open_definition.is_some() {
             state.unknown |= crate::modal::bit(b'S');
             self.linuxcnc_definition_mode_unsure = true;
+            // (an M72 of the body's own save of a zero rate, read straight through: the
+            // restore writes the saved rate after the block's F, so the rate is zero and a
+            // move without an F after it is refused in every feed mode; review 61b v9:
+            // `o100 sub` / `F0` / `M70` / `M9` / `M72 F0` / `G1 X1` is "Cannot do g1 with
+            // zero feed rate" where it is called)
+            if std::mem::take(&mut self.linuxcnc_later.body_zero_saved)
+                && self.linuxcnc_definition_flow.is_empty()
+            {
+                state.unknown &= !crate::modal::bit(b'F');
+                self.linuxcnc_rate = Some(Dec::ZERO);
+                self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+            }
             return;
         }
         let loose = self.linuxcnc_feed_loose.unwrap_or(LooseSaved::UNKNOWN);
@@ -3730,6 +3755,7 @@ impl Checker {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
         self.linuxcnc_later.pending = None;
+        self.linuxcnc_later.body_zero_saved = false;
         if self.linuxcnc_later.still.is_some() {
             self.linuxcnc_still_back(b.line);
         }
@@ -5837,6 +5863,10 @@ pub(super) struct LaterCalls {
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.
     pub(super) still: Option<(usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9])>,
+    /// The open definition's own M70/M73, read with no condition or loop open, saved a
+    /// rate that is surely zero, and no o-word line, call or other M70-M73 came since
+    /// ([`Checker::linuxcnc_feed_unfollowed`]).
+    pub(super) body_zero_saved: bool,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
