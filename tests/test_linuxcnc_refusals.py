@@ -1292,6 +1292,8 @@ def test_a_surely_dropped_m72_block_leaves_the_plane_compensation_and_cycle_befo
 # HEAD, the probe's line and column)
 CALL_PLAIN_REFUSED = [
     ("o100 sub\no100 endsub\no100 call\nZ0.5\nG38.2 Z0.5", 7, 1),
+    # a body whose G0 surely runs, called under the caller's cycle: G0 after it (lcnc62)
+    ("o100 sub\nG0 X0\no100 endsub\nG81 X1 Z-1 R2\no100 call\nZ0.5\nG38.2 Z0.5", 9, 1),
     ("o100 sub\nG1 X1 F10\no100 endsub\no100 call\nZ0.5\nG38.2 Z0.5", 8, 1),
     # a body that calls one that writes no other motion code
     ("o100 sub\nG0 X0\no100 endsub\no200 sub\no100 call\no200 endsub\no200 call\nZ0.5\n"
