@@ -5848,6 +5848,9 @@ pub(super) fn still_line(b: &BlockView<'_>) -> bool {
     })
 }
 
+/// LinuxCNC: a call line's line and the axes before it ([`LaterCalls::still`]).
+pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9]);
+
 /// LinuxCNC: the main program's calls of a definition not read yet (rs274 finds one written
 /// after M2 when the call runs), whose motion mode after them is not known until the
 /// definition is read ([`Checker::linuxcnc_later_move`]).
@@ -5862,7 +5865,7 @@ pub(super) struct LaterCalls {
     /// A call line of the main program whose call is of a definition read before it whose
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.
-    pub(super) still: Option<(usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9])>,
+    pub(super) still: Option<StillAt>,
     /// The open definition's own M70/M73, read with no condition or loop open, saved a
     /// rate that is surely zero, and no o-word line, call or other M70-M73 came since
     /// ([`Checker::linuxcnc_feed_unfollowed`]).
