@@ -1292,6 +1292,8 @@ def test_a_surely_dropped_m72_block_leaves_the_plane_compensation_and_cycle_befo
 # HEAD, the probe's line and column)
 CALL_PLAIN_REFUSED = [
     ("o100 sub\no100 endsub\no100 call\nZ0.5\nG38.2 Z0.5", 7, 1),
+    # a body whose G0 surely runs, called under the caller's cycle: G0 after it (lcnc62)
+    ("o100 sub\nG0 X0\no100 endsub\nG81 X1 Z-1 R2\no100 call\nZ0.5\nG38.2 Z0.5", 9, 1),
     ("o100 sub\nG1 X1 F10\no100 endsub\no100 call\nZ0.5\nG38.2 Z0.5", 8, 1),
     # a body that calls one that writes no other motion code
     ("o100 sub\nG0 X0\no100 endsub\no200 sub\no100 call\no200 endsub\no200 call\nZ0.5\n"
@@ -1363,6 +1365,47 @@ BODY_MOTION = [
      "o100 call [1]\nX3", None),
     # a cycle in the body: the caller's G1 after its endsub
     ("G1 X0\no100 sub\nG81 X1 Y1 Z-1 R1\no100 endsub\nX2 Y2", None),
+    # a `do` loop runs at least once: its turn's last G2 is the body's (lcnc61's miss)
+    ("#2=0\no100 sub\no102 do\nG2 X1 Y0 I0.5 J0\n#2=[#2+1]\no102 while [#2 LT 1]\n"
+     "o100 endsub\no100 call\nZ0.5", 11),
+    # a `do` in a `do`, and a call of a G2 body in a `do`
+    ("#2=0\no100 sub\no102 do\no104 do\nG2 X1 Y0 I0.5 J0\no104 while [0]\n#2=[#2+1]\n"
+     "o102 while [#2 LT 2]\no100 endsub\no100 call\nZ0.5", 13),
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no102 do\no200 call\n"
+     "o102 while [0]\no100 endsub\no100 call\nZ0.5", 12),
+    # a body calling one that ends in G2 (lcnc61's miss), and an M73 (no motion restored)
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no100 endsub\n"
+     "o100 call\nZ0.5", 10),
+    ("o200 sub\nM73\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no100 endsub\n"
+     "o100 call\nZ0.5", 11),
+    # a `while` may not turn (here it does not): not known
+    ("#2=0\no100 sub\no102 while [#2 GT 0]\nG2 X1 Y0 I0.5 J0\n#2=[#2+1]\no102 endwhile\n"
+     "o100 endsub\no100 call\nZ0.5", None),
+    # a `break` or `continue` before the loop's G2 leaves a turn in the mode before it
+    ("o100 sub\nG1 X0\no102 do\no103 if [#1 GT 0]\no102 break\no103 endif\n"
+     "G2 X1 Y0 I0.5 J0\no102 while [#1 LT 0]\no100 endsub\no100 call [1]\nX3", None),
+    ("o100 sub\nG1 X0\no102 do\no103 if [#1 GT 0]\no102 continue\no103 endif\n"
+     "G2 X1 Y0 I0.5 J0\no102 while [0]\no100 endsub\no100 call [1]\nX3", None),
+    # a G1 in a condition after the loop's G2, or after the call of a G2 body
+    ("o100 sub\no102 do\nG2 X1 Y0 I0.5 J0\no103 if [#1 GT 0]\nG1 X0\no103 endif\n"
+     "o102 while [0]\no100 endsub\no100 call [1]\nX3", None),
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\no1 if [#1 GT 0]\n"
+     "G1 X0\no1 endif\no100 endsub\no100 call [1]\nX3", None),
+    # a body that ends the program after its G2: no line after its call runs
+    ("o100 sub\nG2 X1 Y0 I0.5 J0\nM2\no100 endsub\no1 if [#5220 GT 0]\no100 call\nZ0.5\n"
+     "o1 endif", None),
+    # a definition written after M2: rs274 finds it when the call runs, so the move after
+    # the call is judged at its endsub (the first such move; lcnc61's miss)
+    ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", 4),
+    ("o100 call\nG1 X0\no100 call\nX3\nM2\no100 sub\nG3 X1 Y0 R1\no100 endsub", 6),
+    ("o100 call\nG1 X2\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
+    ("o100 call\nX2 R1\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
+    ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\nM2\no100 endsub", None),
+    ("o100 call\nZ0.5\nM2\no100 sub\no1 if [#1 GT 0]\nG1 X0\no1 endif\no100 endsub", None),
+    ("o100 call\nM70\nM72 G1 X0\nX2\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
+    # a possible M72 drop after the call of a G2 body
+    ("o200 sub\nG2 X1 Y0 I0.5 J0\no200 endsub\no100 sub\no200 call\nM70\nM72 G1 X0\n"
+     "o100 endsub\no100 call\nX3", None),
 ]
 
 
@@ -1437,6 +1480,12 @@ def test_a_cycle_repeat_after_a_surely_dropped_m72_block_keeps_the_r_before_it(
     ("o1 repeat [2]\nM70\no1 endrepeat\nF0\nM72\nG1 X1", None),
     # a loop's later turn saves the F set after its M70: not known
     ("F0\no1 repeat [2]\nM70\nF10\no1 endrepeat\nM72 F0\nG1 X1", None),
+    # an `if` of a condition not known runs nothing: its M70 saves the rate before it
+    # (review 61b v2; where the M70 does not run, rs274 refuses the M72 itself)
+    ("F0\no1 if [#5220 GT 0]\nM70\no1 endif\nM72 F0\nG1 X1", 8),
+    ("F0\no1 if [#5220 GT 0]\nM70\no1 endif\nM72\nG1 X1", 8),
+    ("F0\nM70\no1 if [#5220 GT 0]\nM70\no1 endif\nM72 F0\nG1 X1", 9),
+    ("F0\no1 if [#5220 GT 0]\nF10\nM70\no1 endif\nM72 F0\nG1 X1", None),
 ])
 def test_an_m72_of_a_loose_save_leaves_the_rate_every_save_agrees_on(tmp_path, body, line):
     text = program(body)
@@ -1446,4 +1495,56 @@ def test_an_m72_of_a_loose_save_leaves_the_rate_every_save_agrees_on(tmp_path, b
         assert "PROGRAM_END" in rs274_output(tmp_path, text)
         return
     assert [(f.rule, f.line, f.column) for f in found] == [("TG401", line, 4)], found
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A call of a definition read before it whose body moves no axis and changes nothing the
+# position is read in (no G code, axis word, M6, M70-M73 or call; S, F, T, parameters below
+# #5000 or named, M0-M9 but M2/M6, M48-M53 and o-word lines): the axes stand where they did
+# before it, as rs274 runs the body (lcnc60's list). HEAD starts at X0 Y0 Z0. (the blocks
+# after HEAD; the refused line, or None where rs274 runs)
+STILL_CALLS = [
+    ("o100 sub\nM8\no100 endsub\nG0 Z0\no100 call\nG38.2 Z0", 8),
+    ("o100 sub\nM8\no100 endsub\nG0 X1\no100 call\nG38.2 X1", 8),
+    ("o100 sub\n#1=2\n#<a>=3\nS100 M3\nM5 T1 F20\no1 if [#1 GT 0]\nM9\no1 endif\n"
+     "o100 endsub\nG0 Z0\no100 call\nG38.2 Z0", 14),
+    # the body moves, or calls one that does: not known after it
+    ("o100 sub\nG0 Z1\no100 endsub\nG0 Z0\no100 call\nG38.2 Z0", None),
+    ("o101 sub\nG0 Z1\no101 endsub\no100 sub\no101 call\no100 endsub\nG0 Z0\no100 call\n"
+     "G38.2 Z0", None),
+    ("o100 sub\nM8\no100 endsub\nG0 Z0\no100 call\nG38.2 Z1", None),
+]
+
+
+@pytest.mark.parametrize("body, line", STILL_CALLS)
+def test_a_call_of_a_body_that_moves_no_axis_keeps_the_position(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert_too_close_refused(tmp_path, text, line, 1)
+
+
+# An M72 of a body's own M70/M73 (no condition or loop open at either, nothing called
+# between) whose saved rate is surely zero: the restore writes that rate after the block's F,
+# so a feed move without an F after it is "Cannot do g1 with zero feed rate" (review 61b v9).
+# The body is called. (the blocks after HEAD; the refused line, or None where rs274 runs)
+BODY_M72_ZERO = [
+    ("o100 sub\nF0\nM70\nM9\nM72 F0\nG1 X1\no100 endsub\no100 call", 8),
+    ("o100 sub\nF0\nM70\nF10\nM72\nG1 X1\no100 endsub\no100 call", 8),
+    ("o100 sub\nM70 F0\nM72 F10\nG1 X1\no100 endsub\no100 call", 6),
+    ("o100 sub\nF0\nM73\nG1 X1 F10\nM72\nG1 X2\no100 endsub\no100 call", 8),
+    ("o100 sub\nF10\nM70\nF0\nM72\nG1 X1\no100 endsub\no100 call", None),
+    ("o100 sub\nF0\nM70\nM71\nM70 F10\nM72\nG1 X1\no100 endsub\no100 call", None),
+    ("o100 sub\nF0\nM70\nM72\nG1 X1 F5\nG0 X2\no100 endsub\no100 call", None),
+]
+
+
+@pytest.mark.parametrize("body, line", BODY_M72_ZERO)
+def test_an_m72_of_a_body_s_own_zero_save_leaves_a_zero_rate(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

@@ -765,13 +765,15 @@ struct Implicit {
 /// A LinuxCNC definition's body as [`Checker::linuxcnc_bodies`] keeps it: its label, whether
 /// it may set the feed mode or end the program, the labels it calls, the distance mode it
 /// returns in, its refusals that wait for a call ([`structure::CallRefusal`]), and whether a
-/// call of it surely ends the program (its M2 or M30; review 48, c19).
+/// call of it surely ends the program (its M2 or M30; review 48, c19), and whether it surely
+/// moves no axis and changes nothing the position is read in ([`structure::still_line`]).
 type LinuxCncBody = (
     Vec<u8>,
     bool,
     Vec<Vec<u8>>,
     structure::Distance,
     Vec<structure::CallRefusal>,
+    bool,
     bool,
 );
 
@@ -1098,6 +1100,10 @@ pub struct Checker {
     /// not known and not the one before its sub (after a call: not known). A label not here
     /// leaves the caller's mode.
     linuxcnc_sub_motion: HashMap<Vec<u8>, Option<i64>>,
+    /// LinuxCNC: the main program's calls of definitions not read yet, and the first move
+    /// without a motion code after each, judged at the definition's `endsub`
+    /// ([`structure::LaterCalls`]).
+    linuxcnc_later: Box<structure::LaterCalls>,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
@@ -1737,6 +1743,7 @@ impl Checker {
             linuxcnc_motion_before_sub: structure::MotionBeforeSub::default(),
             linuxcnc_body_returns: false,
             linuxcnc_sub_motion: HashMap::new(),
+            linuxcnc_later: Box::default(),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
@@ -2422,7 +2429,7 @@ impl Checker {
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_plane_after_call(b, false);
                 self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
-                self.linuxcnc_rate = None;
+                self.linuxcnc_rate = self.linuxcnc_rate_through_if(b);
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;

@@ -323,6 +323,7 @@ impl Checker {
         self.linuxcnc_motion_plain = false;
         self.linuxcnc_motion_subs.clear();
         self.linuxcnc_sub_motion.clear();
+        *self.linuxcnc_later = LaterCalls::default();
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
@@ -1112,6 +1113,9 @@ impl Checker {
                 && self.linuxcnc_runs_surely()
                 && !self.main_ended()
                 && self.linuxcnc_call_ends(text);
+            if kind == Kind::Call && main {
+                self.linuxcnc_still_call(b, text);
+            }
             let label = self.linuxcnc_call_label(text);
             // (the skip of a block known not to run ends at an o-word line of its label; one
             // whose label is worked out as the line runs, from values a line skipped may have
@@ -1206,6 +1210,7 @@ impl Checker {
                     // (a body's conditions are not evaluated: which branch runs, not known)
                     let mut blocks = std::mem::take(&mut self.linuxcnc_plane_body_blocks);
                     let keyword = crate::statement::o_keyword(text);
+                    self.linuxcnc_body_do(keyword.as_deref(), &label, b.line);
                     let step = PlaneStep {
                         depth,
                         open,
@@ -3194,6 +3199,19 @@ impl Checker {
             still: !modal && still,
         };
         let main = self.open_definition.is_none();
+        // (a body's own save, read straight after its sub: whether rs274's rate there is
+        // surely zero -- the block's F0, G94/G95, or an F0 of the body in force)
+        if !main && m7 != 72 {
+            self.linuxcnc_later.body_zero_saved = matches!(m7, 70 | 73)
+                && self.linuxcnc_definition_flow.is_empty()
+                && !unread
+                && rate.map_or(
+                    f_at.is_none()
+                        && !state.is_unknown(b'F')
+                        && state.feed.is_none_or(|f| f.is_zero()),
+                    |r| r.is_zero(),
+                );
+        }
         match m7 {
             70 | 73 => {
                 if followed {
@@ -3318,6 +3336,18 @@ impl Checker {
         if self.open_definition.is_some() {
             state.unknown |= crate::modal::bit(b'S');
             self.linuxcnc_definition_mode_unsure = true;
+            // (an M72 of the body's own save of a zero rate, read straight through: the
+            // restore writes the saved rate after the block's F, so the rate is zero and a
+            // move without an F after it is refused in every feed mode; review 61b v9:
+            // `o100 sub` / `F0` / `M70` / `M9` / `M72 F0` / `G1 X1` is "Cannot do g1 with
+            // zero feed rate" where it is called)
+            if std::mem::take(&mut self.linuxcnc_later.body_zero_saved)
+                && self.linuxcnc_definition_flow.is_empty()
+            {
+                state.unknown &= !crate::modal::bit(b'F');
+                self.linuxcnc_rate = Some(Dec::ZERO);
+                self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Zero;
+            }
             return;
         }
         let loose = self.linuxcnc_feed_loose.unwrap_or(LooseSaved::UNKNOWN);
@@ -3517,6 +3547,7 @@ impl Checker {
                 self.linuxcnc_motion = LinuxCncMotion::Unknown;
                 self.motion_unknown = true;
                 self.machine.state.motion = None;
+                self.linuxcnc_later.pending = None;
             }
         }
     }
@@ -3723,6 +3754,17 @@ impl Checker {
     pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
+        self.linuxcnc_later.pending = None;
+        self.linuxcnc_later.body_zero_saved = false;
+        if self.linuxcnc_later.still.is_some() {
+            self.linuxcnc_still_back(b.line);
+        }
+        // (a body's `do` loop closed here whose every turn ends in the G0-G3 read last)
+        let do_closed = self
+            .linuxcnc_motion_before_sub
+            .do_closed
+            .take()
+            .filter(|&(line, _)| line == b.line && self.open_definition.is_some());
         self.linuxcnc_motion = LinuxCncMotion::Unknown;
         self.linuxcnc_motion_plain = false;
         if self.config.family != Family::LinuxCnc {
@@ -3777,6 +3819,179 @@ impl Checker {
             self.machine.state.motion = motion;
             self.machine.state.cycle = None;
         }
+        // (the mode is surely known after a call of a body that surely leaves one, and
+        // after a `do` loop whose every turn ends in one: the lines after it, and the
+        // `endsub` of a body they end, judged by it; lcnc61's misses: `o200 sub` / `G2 X1
+        // Y0 I0.5 J0` / `o200 endsub` / `o100 sub` / `o200 call` / `o100 endsub` / `o100
+        // call` / `Z0.5` is "R i j k words all missing for arc" in `rs274 -g`)
+        let sure = match (left, do_closed) {
+            (Some(Some(m)), _) => Some(m),
+            (None, Some((_, m))) if !called => Some(m),
+            _ => None,
+        };
+        // (a call of the main program of one definition not read yet: its mode is judged
+        // at the definition's endsub)
+        if let [(_, Kind::Call, text)] = b.statements {
+            let label = self.linuxcnc_call_label(text);
+            if self.open_definition.is_none()
+                && !crate::statement::computed_label(&label)
+                && !self.linuxcnc_defined.contains(&label)
+            {
+                self.linuxcnc_later.pending = Some((label, b.line));
+            }
+        }
+        if let Some(m) = sure {
+            self.linuxcnc_motion = LinuxCncMotion::Known(Some(m * 10));
+            self.linuxcnc_motion_plain = false;
+            self.motion_unknown = false;
+            self.machine.state.motion = Some(m);
+            self.machine.state.cycle = None;
+        }
+    }
+
+    /// LinuxCNC: a move without a motion code or arc word (`b`) where the mode in force is
+    /// the one a call of a definition not read yet leaves ([`LaterCalls`]): kept for that
+    /// definition's `endsub`.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) {
+        let Some((label, call)) = self.linuxcnc_later.pending.take() else {
+            return;
+        };
+        let Some(column) = b
+            .words
+            .iter()
+            .find(|w| crate::modal::AXES.contains(&w.letter))
+            .map(|w| w.column)
+        else {
+            return;
+        };
+        self.linuxcnc_later
+            .moves
+            .push((label, call, b.line, column));
+    }
+
+    /// LinuxCNC: at the `endsub` of a definition (`label`) that surely leaves G2 or G3
+    /// (`m`), the first move without a motion code or arc word after each earlier call of
+    /// it ([`LaterCalls`]) is an arc with no centre or radius: rs274 finds a definition
+    /// written after M2 when the call runs, and refuses the move ("R i j k words all missing
+    /// for arc", interp_convert.cc convert_arc; lcnc61's miss: `o100 call` / `Z0.5` / `M2`
+    /// / `o100 sub` / `G2 X1 Y0 I0.5 J0` / `o100 endsub`).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_later_arcs(&mut self, label: &[u8], m: i64) {
+        let moves = std::mem::take(&mut self.linuxcnc_later.moves);
+        let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
+        self.linuxcnc_later.moves = rest;
+        for (_, call, line, column) in these {
+            let message = format!(
+                "arc without I J K (or R): none is given, whatever the plane (the call on \
+                 line {call} runs {} written after it, which leaves G{m} in force)",
+                String::from_utf8_lossy(label)
+            );
+            self.report(Rule::ArcCentreMissing, message, line, column);
+        }
+    }
+
+    /// LinuxCNC: a call line of the main program (`text`, one of its statements) whose
+    /// every call names a definition read before it that moves no axis and calls nothing
+    /// ([`still_line`]): the axes' positions before it kept ([`LaterCalls::still`]), put
+    /// back after the call forgets them ([`Checker::linuxcnc_still_back`]).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_still_call(&mut self, b: &BlockView<'_>, text: &[u8]) {
+        let label = self.linuxcnc_call_label(text);
+        let still = b.statements.len() == 1
+            && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+            && !crate::statement::computed_label(&label)
+            && self.linuxcnc_defined.contains(&label)
+            && self
+                .linuxcnc_bodies
+                .iter()
+                .rfind(|e| e.0 == label)
+                .is_some_and(|e| e.6 && e.2.is_empty());
+        let state = &self.machine.state;
+        self.linuxcnc_later.still = still.then(|| {
+            (
+                b.line,
+                state.position,
+                state.unknown
+                    & crate::modal::FORGOTTEN
+                    & !(crate::modal::bit(b'F') | crate::modal::bit(b'S')),
+                self.machine.drift,
+            )
+        });
+    }
+
+    /// LinuxCNC: after the call line the checker does not follow, the axes' positions from
+    /// before it where every call of the line is of a body that moves no axis
+    /// ([`Checker::linuxcnc_still_call`]): rs274 runs the body, which leaves them as they
+    /// were (lcnc60's list: `G0 Z0` / `o100 call` of a body of `M8` / `G38.2 Z0` is "Start
+    /// point too close to probe point").
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_still_back(&mut self, line: usize) {
+        let Some((at, position, unknown, drift)) = self.linuxcnc_later.still.take() else {
+            return;
+        };
+        if at != line {
+            return;
+        }
+        let axes = crate::modal::FORGOTTEN & !(crate::modal::bit(b'F') | crate::modal::bit(b'S'));
+        let state = &mut self.machine.state;
+        state.position = position;
+        state.unknown = state.unknown & !axes | unknown;
+        self.machine.drift = drift;
+    }
+
+    /// LinuxCNC: a body's `do` loops through its o-word line (`keyword`, `label`): a `do`
+    /// opens one, a `break` or `continue` marks every one open, and the `while` of the
+    /// last one open closes it; where no `break` or `continue` stood in it and the motion
+    /// mode read last is a G0-G3 known, every turn ends in it (a turn's lines run straight
+    /// where the checker reads none of its o-word lines but its own; a `return` is the
+    /// `endsub`'s matter), and so does the loop: kept for the line's
+    /// [`Checker::linuxcnc_motion_after_call`].
+    fn linuxcnc_body_do(&mut self, keyword: Option<&[u8]>, label: &[u8], line: usize) {
+        use super::tooling::LinuxCncMotion;
+        let sure = match self.linuxcnc_motion {
+            LinuxCncMotion::Known(Some(m @ (0 | 10 | 20 | 30)))
+                if !self.motion_unknown && self.machine.state.cycle.is_none() =>
+            {
+                Some(m / 10)
+            }
+            _ => None,
+        };
+        let dos = &mut self.linuxcnc_motion_before_sub.dos;
+        match keyword {
+            Some(b"do") => dos.push((label.to_vec(), false)),
+            Some(b"break" | b"continue") => dos.iter_mut().for_each(|d| d.1 = true),
+            Some(b"while") if dos.last().is_some_and(|d| d.0 == label) => {
+                let left = dos.pop().is_some_and(|d| d.1);
+                self.linuxcnc_motion_before_sub.do_closed =
+                    sure.filter(|_| !left).map(|m| (line, m));
+            }
+            _ => {}
+        }
+    }
+
+    /// LinuxCNC: rs274's feed rate ([`Checker::linuxcnc_rate`]) after an o-word line the
+    /// checker does not follow: an `if` of the main program opening its first branch runs
+    /// nothing, so the rate where its branch's first line runs is the one before it (kept
+    /// for what an M70 there saves; review 61b, v2: `F0` / `o1 if [#5220 GT 0]` / `M70` /
+    /// `o1 endif` / `M72 F0` / `G1 X1` is "Cannot do g1 with zero feed rate" in `rs274
+    /// -g`); after any other, not known.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_rate_through_if(&self, b: &BlockView<'_>) -> Option<Dec> {
+        let opens_if = |&(_, kind, text): &(usize, Kind, &[u8])| {
+            kind == Kind::Flow
+                && crate::statement::o_keyword(text).as_deref() == Some(b"if".as_slice())
+        };
+        (self.config.family == Family::LinuxCnc
+            && self.open_definition.is_none()
+            && matches!(b.statements, [one] if opens_if(one)))
+        .then_some(self.linuxcnc_rate)
+        .flatten()
     }
 
     /// LinuxCNC: whether the motion mode in force is G0-G3 or none, known or not
@@ -3817,6 +4032,8 @@ impl Checker {
                     cycle: state.cycle,
                     words: state.cycle_words,
                     label: label.unwrap_or_default(),
+                    dos: Vec::new(),
+                    do_closed: None,
                 };
                 self.linuxcnc_body_returns = false;
                 self.linuxcnc_plane_unknown = true;
@@ -3847,17 +4064,22 @@ impl Checker {
             LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
         ) && !self.motion_unknown
             && !self.linuxcnc_body_returns
+            && !self.linuxcnc_body_distance.ends
             && state.cycle.is_none();
         let MotionBeforeSub {
             motion,
             cycle,
             words,
             label,
+            ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
         // (a body whose last mode is not known but differs from the one before its sub as
         // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
         match state.motion {
             Some(m @ 0..=3) if known => {
+                if m >= 2 && !self.linuxcnc_later.moves.is_empty() {
+                    self.linuxcnc_later_arcs(&label, m);
+                }
                 self.linuxcnc_sub_motion.insert(label, Some(m));
             }
             now if now != motion || state.cycle != cycle => {
@@ -4105,6 +4327,7 @@ impl Checker {
                         Distance::Unsure,
                         Vec::new(),
                         false,
+                        true,
                     ));
                     *self.linuxcnc_body_distance = BodyDistance {
                         open: true,
@@ -4140,6 +4363,9 @@ impl Checker {
         let Some(body) = self.linuxcnc_bodies.last_mut() else {
             return;
         };
+        if body.6 && !still_line(b) {
+            body.6 = false;
+        }
         // (read before the block's words are: the number as written, an expression not known)
         let mut ends = false;
         for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
@@ -4311,7 +4537,7 @@ impl Checker {
             if seen.contains(&label) {
                 continue;
             }
-            let Some((_, sets, calls, _, _, _)) =
+            let Some((_, sets, calls, _, _, _, _)) =
                 self.linuxcnc_bodies.iter().rfind(|e| e.0 == label)
             else {
                 return false;
@@ -5577,6 +5803,75 @@ pub(super) struct M72Dropped {
     pub(super) compensation: bool,
 }
 
+/// LinuxCNC: whether a line of a definition's body surely moves no axis and changes nothing
+/// the position is read in (units, distance mode, offsets, tool length, plane): o-word
+/// lines other than calls, and words of S, F, T, a parameter below #5000 or named, and M0,
+/// M1, M3-M5, M7-M9, M48-M53 of numbers as written. Anything else (a G code, an axis word,
+/// M6, M70-M73, a call) may move an axis or change the coordinates the caller's position is
+/// read in.
+pub(super) fn still_line(b: &BlockView<'_>) -> bool {
+    if b.statements.iter().any(|&(_, kind, _)| kind == Kind::Call) {
+        return false;
+    }
+    b.words.iter().all(|w| match w.letter {
+        b'S' | b'F' | b'T' | b'N' => true,
+        // (a named parameter, or a number below the system's: none is an offset in force)
+        b'#' => match w.index.first() {
+            Some(c) if c.is_ascii_digit() => std::str::from_utf8(w.index)
+                .ok()
+                .and_then(|n| n.parse::<u32>().ok())
+                .is_some_and(|n| n < 5000),
+            Some(_) => true,
+            // (`#<name>=`, read whole as the word's expression)
+            None => w.expression.first() == Some(&b'<'),
+        },
+        b'M' => {
+            w.expression.is_empty()
+                && matches!(
+                    w.number,
+                    b"0" | b"1"
+                        | b"3"
+                        | b"4"
+                        | b"5"
+                        | b"7"
+                        | b"8"
+                        | b"9"
+                        | b"48"
+                        | b"49"
+                        | b"50"
+                        | b"51"
+                        | b"52"
+                        | b"53"
+                )
+        }
+        _ => false,
+    })
+}
+
+/// LinuxCNC: a call line's line and the axes before it ([`LaterCalls::still`]).
+pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9]);
+
+/// LinuxCNC: the main program's calls of a definition not read yet (rs274 finds one written
+/// after M2 when the call runs), whose motion mode after them is not known until the
+/// definition is read ([`Checker::linuxcnc_later_move`]).
+#[derive(Debug, Clone, Default)]
+pub(super) struct LaterCalls {
+    /// The call whose mode is still in force, by label, and its line: no o-word line, call,
+    /// motion code or possible M72 drop since.
+    pub(super) pending: Option<(Vec<u8>, usize)>,
+    /// The first move without a motion code or arc word after such a call: the label, the
+    /// call's line, the move's line and column.
+    moves: Vec<(Vec<u8>, usize, usize, usize)>,
+    /// A call line of the main program whose call is of a definition read before it whose
+    /// body moves no axis and calls nothing ([`still_line`]): its line, and
+    /// the axes' positions, their unknown marks and drifts before the call forgot them.
+    pub(super) still: Option<StillAt>,
+    /// The open definition's own M70/M73, read with no condition or loop open, saved a
+    /// rate that is surely zero, and no o-word line, call or other M70-M73 came since
+    /// ([`Checker::linuxcnc_feed_unfollowed`]).
+    pub(super) body_zero_saved: bool,
+}
+
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
 /// definition's `sub`, put back at its `endsub`, and the definition's label
 /// ([`Checker::linuxcnc_definition_motion`]).
@@ -5586,6 +5881,12 @@ pub(super) struct MotionBeforeSub {
     pub(super) cycle: Option<i64>,
     pub(super) words: [Option<Dec>; 5],
     pub(super) label: Vec<u8>,
+    /// The body's `do` loops open, by label, and whether a `break` or `continue` stands in
+    /// one (a way out of a turn before its end).
+    pub(super) dos: Vec<(Vec<u8>, bool)>,
+    /// The line of the body's `while` that closed a `do` whose turn surely ends in the
+    /// G0-G3 in force there (no `break` or `continue` in it), the mode after that line.
+    pub(super) do_closed: Option<(usize, i64)>,
 }
 
 /// LinuxCNC: the canned cycle in force before a block with an M72 while a save is followed

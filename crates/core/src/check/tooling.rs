@@ -932,6 +932,9 @@ impl Checker {
                 {
                     // (a move in a motion a call may have set: perhaps a cycle's)
                     self.linuxcnc_cycle_ran = Some(0);
+                    if self.linuxcnc_later.pending.is_some() {
+                        self.linuxcnc_later_move(b);
+                    }
                 }
                 return unsettles;
             }
@@ -987,6 +990,7 @@ impl Checker {
         } else if g_unread {
             self.linuxcnc_motion = LinuxCncMotion::Unknown;
             self.linuxcnc_motion_plain = false;
+            self.linuxcnc_later.pending = None;
         }
         // (a definition's body that may leave a mode other than G0-G3: its calls leave the
         // mode not known, `Checker::linuxcnc_motion_after_call`)
