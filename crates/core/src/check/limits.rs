@@ -110,6 +110,12 @@ impl Frames {
 /// X, Y and Z (bits 0-2 of [`Frames::hidden`]).
 const XYZ: u16 = 0b111;
 
+/// Among a finding's [`Finding::pending_on`]: a position of the program's own after calls
+/// of programs not read there ([`Checker::work_unread_reselected`]): dropped at the file's
+/// end where one of them is not in the file or lost the offsets, not only where one writes
+/// that axis.
+pub(super) const PENDING_OWN: i64 = -1;
+
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -537,6 +543,8 @@ impl Checker {
     /// writes, [`Written::moved`]; what a program the checker does not read does is not
     /// followed, as [`Checker::offsets_written`] says) or a jump.
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
+        self.work_unplaced = false;
+        self.offsets_unread_only = false;
         if self.config.work_offsets.is_empty() || self.offsets_lost {
             return;
         }
@@ -573,9 +581,40 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64) {
+        self.work_unplaced = false;
+        if self.offsets_unread_only {
+            self.work_unread_reselected();
+        }
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+    }
+
+    /// A G54-G59 of the program's own after calls of programs the checker had not read
+    /// there, and nothing else that may change the offsets ([`Checker::offsets_unread_only`]):
+    /// the offset it selects has the profile's value unless one of those programs writes
+    /// it. Its positions are judged again, each finding held to the file's end with those
+    /// programs' numbers ([`Finding::pending_on`], [`PENDING_OWN`]): dropped where one of
+    /// them writes that axis, moves the coordinates, or is not in the file; said where all
+    /// are read and none does (review 61a F13: `O2000` / `G65 P4000 I2.` / `G90 G54` / `G0
+    /// X850.` / `M99` / `O4000` / `M99` runs X850. at 850, beyond the travel, and was said
+    /// by none). A G52 it leaves is modal through G54-G59 (0i-MF Operator's Manual, "Local
+    /// coordinate system"): the axes it shifts are not judged.
+    #[cold]
+    #[inline(never)]
+    fn work_unread_reselected(&mut self) {
+        if self.offsets_lost
+            && !self.offsets_written.any()
+            && !self.offsets_written.moved
+            && self.offsets_written.shifted == 0
+            && !self.offsets_written.unread.is_empty()
+            && !self.shifts_on()
+            && !self.frames_on()
+            && self.transformed.is_none()
+            && !self.units_unknown
+        {
+            self.offsets_lost = false;
+        }
     }
 
     /// The axes (their places' bits) of each of G54-G59 a G10 block may write, and the
@@ -2593,8 +2632,14 @@ impl Checker {
                     "{} under G{work}: the profile gives no G{work} {}",
                     axis as char, axis as char
                 )),
-                (true, None, _) => self
-                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                (true, None, _) => {
+                    if self.work_unplaced {
+                        self.unplaced_at(i, at, line);
+                    }
+                    self.travel_not(
+                        "where the program has selected no work offset (G54-G59)".into(),
+                    )
+                }
                 _ => {}
             }
             // (under a frame: X Y Z taken back through it below, or left out)
@@ -3099,7 +3144,13 @@ impl Checker {
         self.report_limit(Rule::TravelExceeded, message, line, column);
         let said = self.found.len() > before;
         if said {
-            self.found.last_mut().expect("said").placed = placed;
+            let f = self.found.last_mut().expect("said");
+            f.placed = placed;
+            // (after calls of programs not read there, re-selected: review 61a F13)
+            if !self.offsets_written.unread.is_empty() {
+                f.pending_on.clone_from(&self.offsets_written.unread);
+                f.pending_on.push(PENDING_OWN);
+            }
         }
         said
     }

@@ -1005,6 +1005,17 @@ pub struct Checker {
     /// machine positions under it are those of that run, said where read, not at a call
     /// under another offset (review 57e F2); false once it selects its own.
     work_run_on: bool,
+    /// A program read apart whose start has no work offset in force (the file's first, or
+    /// one after a program that lost the offsets): its absolute positions before anything
+    /// moves its coordinates are its caller's offset's, kept for its calls
+    /// ([`Checker::unplaced_at`]); false once it selects an offset, shifts, or writes one.
+    work_unplaced: bool,
+    /// `offsets_lost` holds only for calls of programs not read there (written later in
+    /// the file, or not in it): a G54-G59 of the program's own after them re-selects an
+    /// offset whose value only those programs could have changed
+    /// ([`Checker::work_unread_reselected`]); and the block in hand made such a call.
+    offsets_unread_only: bool,
+    call_unread_here: bool,
     offsets_lost: bool,
     /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
     /// program in hand has written before here: by a G10 of its own that writes it
@@ -1435,6 +1446,11 @@ pub struct Checker {
     /// in force was not known (not only calls that disagree): a program of that number
     /// written after them runs under no offset the checker knows (review 61a F5).
     call_works_unknown: HashSet<i64>,
+    /// Calls of a program read apart in units only assumed (no G20/G21 yet), each with the
+    /// offset kept where all else is known: recorded where it ends as a main program (its
+    /// units the reset state's), as not known where it returns, a subprogram whose units
+    /// are its own caller's (review 61a F11 and F7).
+    call_works_assumed: Vec<(i64, Option<structure::CallWork>)>,
     /// The program in hand, written after its calls, runs under the work offset of
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
@@ -1632,6 +1648,9 @@ impl Checker {
             work: None,
             work_guessed: None,
             work_run_on: false,
+            work_unplaced: false,
+            offsets_unread_only: false,
+            call_unread_here: false,
             offsets_lost: false,
             offsets_written: limits::Written::default(),
             g10_expression: 0,
@@ -1709,6 +1728,7 @@ impl Checker {
             call_units: HashMap::new(),
             call_works: HashMap::new(),
             call_works_unknown: HashSet::new(),
+            call_works_assumed: Vec::new(),
             work_call: None,
             units_unknown: false,
             early: None,
@@ -2754,6 +2774,7 @@ impl Checker {
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
+            self.call_unread_here = false;
             self.early_calls();
             self.call_made(b);
             self.call_shifts();
@@ -2780,7 +2801,10 @@ impl Checker {
             self.linuxcnc_rate = None;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
+            let unread_only = std::mem::take(&mut self.call_unread_here)
+                && (!self.offsets_lost || self.offsets_unread_only);
             self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+            self.offsets_unread_only = unread_only;
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left

@@ -1507,6 +1507,9 @@ impl Checker {
                 None if w.index.is_empty() => None,
                 _ => continue,
             };
+            // (a program read apart with no offset in force: its positions after it are
+            // not its caller's offset's)
+            self.work_unplaced = false;
             self.offsets_written.unknown_again(g);
             // (and where a call the checker does not follow runs the program in hand)
             let n = self.in_hand;
@@ -1519,7 +1522,7 @@ impl Checker {
     /// [`Checker::assignments`] of a block with a `#` word or an indexed one.
     #[inline(never)]
     fn assignments_of(&mut self, b: &BlockView<'_>) {
-        if self.offsets_written.any() {
+        if self.offsets_written.any() || self.work_unplaced {
             self.offset_variables(b);
         }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
