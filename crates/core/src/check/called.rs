@@ -1923,8 +1923,7 @@ impl Checker {
             return;
         }
         let length = self.machine.state.length_offset != 49 || self.length_decimal;
-        for i in 0..AXES.len() {
-            let axis = AXES[i];
+        for (i, &axis) in AXES.iter().enumerate() {
             let Some((low, high)) = self.travel.of_place(i) else {
                 continue;
             };
