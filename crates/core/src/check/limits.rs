@@ -590,6 +590,69 @@ impl Checker {
         self.work_run_on = false;
     }
 
+    /// The program in hand ends (the next begins, or the file): where it left a shift on
+    /// (a G52 of its own, or another shift), what it left ([`Checker::shift_ends`]), for
+    /// its calls that come after it in the file.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn program_shift_end(&mut self) {
+        let g52 = std::mem::take(&mut self.g52_axes);
+        let clean = std::mem::replace(&mut self.shift_clean_start, true);
+        let unsure = std::mem::take(&mut self.shift_unsure);
+        let Some(n) = self.in_hand else {
+            return;
+        };
+        if self.config.family != Family::MacroB {
+            return;
+        }
+        let writer = self.offset_writers.get(&n);
+        let moved = writer.is_some_and(|(w, _)| w.moved || w.shifted != 0);
+        if g52 == 0 && !moved && !self.shifts.on {
+            return;
+        }
+        let s = &self.shifts;
+        let known = clean
+            && !unsure
+            && s.local_unknown == 0
+            && (0..AXES.len()).all(|i| s.total[i] == s.local[i])
+            && writer.is_none_or(|(w, _)| !w.moved && w.unread.is_empty());
+        let end = known.then_some((g52, s.local));
+        self.shift_ends.insert(n, end);
+    }
+
+    /// A call of program `number`, read before it in the file (`writes`: what it writes of
+    /// the offsets): a G52 it leaves on stays in force for its caller after the call (a
+    /// FANUC's local coordinate system is modal until cancelled, and M99 cancels none:
+    /// 0i-MF Operator's Manual, "Local coordinate system"): the caller's spans from here are
+    /// in the coordinates it sets, as after a G52 of its own. Where what it leaves is not
+    /// surely known (a G92, a jump, condition or loop, a call not followed), as before: not
+    /// followed, the caller's spans read on unshifted. A program read apart that runs such
+    /// a call is read as before from here, as one that writes its own G52 is.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn shift_carried(&mut self, number: i64) {
+        let Some(end) = self.shift_ends.get(&number).copied() else {
+            return;
+        };
+        // (where not surely known, as before: the caller's spans read on unshifted, erring
+        // on the side of the alarm)
+        let Some((axes, local)) = end else {
+            self.shift_unsure = true;
+            return;
+        };
+        self.early_merge();
+        for i in crate::modal::places(u32::from(axes)) {
+            if self.shifts.local_unknown & 1 << i != 0 {
+                self.restart_span(i, true);
+                continue;
+            }
+            self.shifts.total[i] += local[i] - self.shifts.local[i];
+            self.shifts.local[i] = local[i];
+        }
+        self.g52_axes |= axes;
+        self.shifts.settle();
+    }
+
     /// A G54-G59 of the program's own after calls of programs the checker had not read
     /// there, and nothing else that may change the offsets ([`Checker::offsets_unread_only`]):
     /// the offset it selects has the profile's value unless one of those programs writes
@@ -1947,6 +2010,9 @@ impl Checker {
                 }
                 self.shifts.total[i] += value - self.shifts.local[i];
                 self.shifts.local[i] = value;
+                self.g52_axes |= 1 << i;
+                // (after a return: reached by a jump only)
+                self.shift_unsure |= self.sub_ended;
                 Ok(())
             }
             92 | 50 if self.machine.taken() == Some(AxesTaken::Set) => {

@@ -1016,6 +1016,18 @@ pub struct Checker {
     /// ([`Checker::work_unread_reselected`]); and the block in hand made such a call.
     offsets_unread_only: bool,
     call_unread_here: bool,
+    /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
+    /// called carried into it), and whether its start had no shift in force
+    /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
+    g52_axes: u16,
+    shift_clean_start: bool,
+    /// A jump, condition or loop, a G52 after a return, or a call of a program whose shift at
+    /// its end is not known, in the program in hand: what it leaves on is not surely known.
+    shift_unsure: bool,
+    /// Each FANUC/Haas program of the file that left a G52 or another shift on at its end:
+    /// the axes its G52s wrote and the local shift it left, where surely known (no G92, no
+    /// jump, condition or loop, no call not followed, no shift at its start); None where not.
+    shift_ends: HashMap<i64, Option<(u16, [f64; 9])>>,
     offsets_lost: bool,
     /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
     /// program in hand has written before here: by a G10 of its own that writes it
@@ -1651,6 +1663,10 @@ impl Checker {
             work_unplaced: false,
             offsets_unread_only: false,
             call_unread_here: false,
+            g52_axes: 0,
+            shift_clean_start: true,
+            shift_unsure: false,
+            shift_ends: HashMap::new(),
             offsets_lost: false,
             offsets_written: limits::Written::default(),
             g10_expression: 0,
@@ -2359,6 +2375,8 @@ impl Checker {
             // (a main program's M30, whatever follows it: its M97 local subroutines end in
             // M99 before the saved offsets)
             let main_ended = self.ended_line != 0;
+            // (what the program before left, read before the reset state)
+            self.program_shift_end();
             self.next_program();
             self.called_units(b);
             self.empty_folder = folder;
@@ -3071,6 +3089,7 @@ impl Checker {
         }
         self.part_ended(false);
         self.early_finish();
+        self.program_shift_end();
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();

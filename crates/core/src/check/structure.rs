@@ -393,6 +393,7 @@ impl Checker {
         let (call, column) = self.call_words(b);
         self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
         if let Some((writes, loses)) = self.offset_writers.get(&number).cloned() {
+            self.shift_carried(number);
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
             if loses {
@@ -764,6 +765,7 @@ impl Checker {
                 }
             }
         }
+        self.shift_clean_start = !self.shifts_on();
         match number.and_then(|n| self.call_units.get(&n)) {
             Some(&Some((units, feed_units, given))) => {
                 let s = &mut self.machine.state;
