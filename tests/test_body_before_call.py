@@ -119,3 +119,36 @@ def test_a_program_s_own_offset_after_a_call_of_a_later_program(tmp_path, progra
     held to the file's end, said where that program writes none (f62c: OLD said a span only
     through a G52 leak, main nothing)."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (O2000 leaves G52 X-1000. on: the main's X800. after the call is at -200, its span
+    # from -750 to -200 fits; read unshifted it was a false "X spans 1550")
+    ("O2000 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
+     "G0 X800. / M30", []),
+    # (G52 X10.: the span is 1560, to 810)
+    ("O2000 / G52 X10. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
+     "G0 X800. / M30",
+     [("TG601", 10, 4, "X spans 1560 (from -750 to 810), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+    # (carried through a program that calls it)
+    ("O2000 / G52 X-1000. / M99 / O3000 / M98 P2000 / M99 / O1000 / G21 G90 G54 / "
+     "G0 X-750. / M98 P3000 / G90 / G0 X800. / M30", []),
+    # (a G52 a condition may pass over: not surely known, read unshifted as before)
+    ("O2000 / IF [#1 EQ 1] GOTO 5 / G52 X-1000. / N5 M99 / O1000 / G21 G90 G54 / "
+     "G0 X-750. / M98 P2000 / G90 / G0 X800. / M30",
+     [("TG601", 11, 4, "X spans 1550 (from -750 to 800), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+    # (no G52 in the body: as before)
+    ("O2000 / G0 X0 / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
+     "G0 X800. / M30",
+     [("TG601", 10, 4, "X spans 1550 (from -750 to 800), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+])
+def test_a_g52_a_called_program_leaves_on_is_its_caller_s_after_the_call(tmp_path, programs,
+                                                                          expected):
+    """Lead's root of review 61a F7/F13: a FANUC's local coordinate system (G52) stays in
+    force until cancelled, through M99 (0i-MF Operator's Manual, "Local coordinate
+    system"): a program read before its call that surely leaves one on gives it to its
+    caller, whose spans after the call are in its coordinates."""
+    assert said(programs, _wo2(tmp_path)) == expected
