@@ -433,19 +433,17 @@ impl Written {
         writes
     }
 
-    /// The axes written of offset G54-G59 number `g` (0-5; every one where None) written
-    /// again with a value not known (a system variable's assignment, `#5241=0.`).
-    pub(super) fn unknown_again(&mut self, g: Option<usize>) {
+    /// Every axis of offset G54-G59 number `g` (0-5; every one where None) written with a
+    /// value not known (a system variable's assignment, `#5241=0.`: the axis it names
+    /// depends on the machine's axis order).
+    pub(super) fn unknown_of(g: Option<usize>) -> Written {
+        let mut w = Written::on_every(0);
         for k in 0..6 {
             if g.is_none_or(|g| g == k) {
-                for i in 0..9 {
-                    if self.axes[k] & 1 << i != 0 {
-                        self.values[k][i] = f64::NAN;
-                    }
-                }
-                self.maybe[k] = 0;
+                w.axes[k] = (1 << 9) - 1;
             }
         }
+        w
     }
 
     /// Offset G`work`'s (54-59) value on the axis of place `i` here: None where not written
@@ -2072,7 +2070,11 @@ impl Checker {
             return;
         }
         if let CallShifts::Known(total, local) = self.shifts.calls {
-            if self.shifts.call != 0 {
+            // (every call made under no shift, one a called program leaves on after them
+            // or the program's own: the text after the end runs under none, review 61a's
+            // fz558: `M98 P2000` / `G65 P3000` of an O3000 leaving `G52 X100.` on)
+            let unshifted = total.iter().chain(&local).all(|&v| v == 0.0);
+            if self.shifts.call != 0 || unshifted {
                 // the calls, all under one known shift, run the text after the end (a Haas's
                 // M97 N100, an O2000 after M30) under it: its positions are in the spans'
                 // coordinates plus that shift

@@ -2794,11 +2794,13 @@ impl Checker {
         if calls {
             self.call_unread_here = false;
             self.early_calls();
-            self.call_made(b);
+            // (the shift the call is made under, before a G52 its program leaves on is
+            // carried into this one, Checker::shift_carried)
             self.call_shifts();
             if self.shifts.on {
                 self.shift_call(b);
             }
+            self.call_made(b);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.forget_at_jump(b, calls);
