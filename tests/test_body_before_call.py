@@ -152,3 +152,37 @@ def test_a_g52_a_called_program_leaves_on_is_its_caller_s_after_the_call(tmp_pat
     system"): a program read before its call that surely leaves one on gives it to its
     caller, whose spans after the call are in its coordinates."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 60 F3, v1: G55's X set by its variable with no G10 before: not known)
+    ("O1000 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / #5241=0. / "
+     "G90 G55 / M98 P1000 / M30", []),
+    ("O1000 / G21 G17 G90 G55 / #5241=0. / G0 X-700. / M30", []),
+    # (G54's X set: G55 still the profile's)
+    ("O1000 / G21 G17 G90 G55 / #5221=0. / G0 X-700. / M30",
+     [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (review 61a F5's second form, y1: an uncalled program read under the main's G55,
+    # merged after its own G54/G55: its earlier position not said under the guessed G55)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P1 X100. / M30 / O4000 / G0 X-700. / "
+     "G54 / G55 / G10 L2 P2 X-100. / M99", []),
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-780. / G54 / G52 X10. / M99",
+     []),
+    # (the main's own G52 after its call of a body written after it: the body runs at the
+    # call, under none)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G52 X100. / M30 / O2000 / G0 X-700. / "
+     "M99",
+     [("TG601", 9, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (fz558: a G52 a later call's program leaves on, not the earlier call's)
+    ("O3000 / G52 X100. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G65 P3000 / "
+     "G55 / M30 / O2000 / G0 X-700. / G90 / M99",
+     [("TG601", 13, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_path, programs,
+                                                                           expected):
+    """Review 60 F3: a work offset's system variable (FANUC Custom Macro B, #5221 + 20 a
+    system) sets an axis of that offset, whichever: not followed, the offset's axes not
+    known, G10 before or not. Review 61a F5's second form: a program read apart under the
+    offset the program before left drops those findings where it turns out no subprogram.
+    A body written after the main runs under the shift at its calls, not the main's end's."""
+    assert said(programs, _wo2(tmp_path)) == expected
