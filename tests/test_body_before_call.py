@@ -162,12 +162,6 @@ def test_a_g52_a_called_program_leaves_on_is_its_caller_s_after_the_call(tmp_pat
     # (G54's X set: G55 still the profile's)
     ("O1000 / G21 G17 G90 G55 / #5221=0. / G0 X-700. / M30",
      [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
-    # (review 61a F5's second form, y1: an uncalled program read under the main's G55,
-    # merged after its own G54/G55: its earlier position not said under the guessed G55)
-    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P1 X100. / M30 / O4000 / G0 X-700. / "
-     "G54 / G55 / G10 L2 P2 X-100. / M99", []),
-    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M30 / O2000 / G0 X-780. / G54 / G52 X10. / M99",
-     []),
     # (the main's own G52 after its call of a body written after it: the body runs at the
     # call, under none)
     ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G52 X100. / M30 / O2000 / G0 X-700. / "
@@ -182,7 +176,5 @@ def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_p
                                                                            expected):
     """Review 60 F3: a work offset's system variable (FANUC Custom Macro B, #5221 + 20 a
     system) sets an axis of that offset, whichever: not followed, the offset's axes not
-    known, G10 before or not. Review 61a F5's second form: a program read apart under the
-    offset the program before left drops those findings where it turns out no subprogram.
-    A body written after the main runs under the shift at its calls, not the main's end's."""
+    known, G10 before or not. A body written after the main runs under the shift at its calls, not the main's end's."""
     assert said(programs, _wo2(tmp_path)) == expected

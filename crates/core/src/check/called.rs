@@ -395,15 +395,8 @@ impl Checker {
         }
         // (no subprogram after all: the offset left before is not taken for its caller's,
         // its findings under it dropped, from here none judged until its own G54-G59)
-        // (and so where it selected its own since: those before are still under the
-        // guessed one, review 61a F5's second form, y1: `O4000` / `G0 X-700.` / `G54` / `G10
-        // ...` after a main under G55 was "X goes to -800"; not with the skip switch on,
-        // whose run-on findings are that run's)
-        let guessed = self.work_guessed.take().is_some();
-        if guessed {
+        if self.work_guessed.take().is_some() {
             self.work = None;
-        }
-        if guessed || !early.body.after_skippable_end {
             if let Some(from) = self.hold_from {
                 let mut i = 0;
                 self.found.retain(|f| {
