@@ -146,6 +146,18 @@ struct Body {
     /// outside the travel: that said more than its span can, which is not said again where
     /// it is judged alone (review 56b, F3).
     outside: u16,
+    /// Each axis's least and most absolute work position read with no work offset in
+    /// force ([`Checker::work_unplaced`]): its caller's offset's, judged at each call
+    /// under that offset (review 61a F7, F6, F2).
+    unplaced: [[Option<Unplaced>; 2]; 9],
+}
+
+/// A work position of a program read apart with no work offset in force
+/// ([`Body::unplaced`]): the position (the profile's units) and its line.
+#[derive(Debug, Clone, Copy)]
+struct Unplaced {
+    at: f64,
+    line: usize,
 }
 
 /// The positions of a body that moved before writing its own G90/G91, from the G90 it then
@@ -245,6 +257,8 @@ pub(super) struct Pending {
     /// Its last G90/G91 not known: it called a program the checker did not read there, and
     /// wrote none after (review 48, F11).
     ends_lost: bool,
+    /// The ends of [`Body::unplaced`] said at a call (bit `2 * place + end`): not again.
+    unplaced_said: u32,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -303,6 +317,8 @@ impl Checker {
     /// transformation in force, where its positions are its own words' alone.
     #[cold]
     pub(super) fn early_begin(&mut self, number: Key, name: String, at: (usize, usize)) {
+        self.work_unplaced = false;
+        let numbered = matches!(number, Key::Number(_));
         if self.shifts_on() || self.frames_on() || self.transformed.is_some() {
             return;
         }
@@ -328,6 +344,7 @@ impl Checker {
                 after_skippable_end: self.end_skippable,
                 first: self.programs == 0,
                 outside: 0,
+                unplaced: [[None; 2]; 9],
             },
             stash,
             given_before: None,
@@ -348,6 +365,13 @@ impl Checker {
             lost_before: std::mem::replace(&mut self.offsets_lost, lost && self.end_skippable),
         }));
         self.early_on = true;
+        // (a FANUC's or a Haas's program with no offset in force at its start: its caller's
+        // selects the one it runs under, review 61a F7)
+        self.work_unplaced = !self.config.work_offsets.is_empty()
+            && self.work.is_none()
+            && !self.end_skippable
+            && self.config.family == crate::lex::Family::MacroB
+            && numbered;
     }
 
     /// The program in hand is no subprogram read apart (it ended as a main program, wrote
@@ -361,6 +385,11 @@ impl Checker {
         };
         self.early_on = false;
         self.work_run_on = false;
+        self.work_unplaced = false;
+        // (a main program: its calls were made in the reset state's units)
+        for (number, here) in std::mem::take(&mut self.call_works_assumed) {
+            self.call_work_kept(number, here);
+        }
         if let Some(given) = early.given_before {
             self.machine.state.units_given |= given;
         }
@@ -414,6 +443,8 @@ impl Checker {
         let early = self.early.take().expect("early_on");
         self.early_on = false;
         self.work_run_on = false;
+        self.work_unplaced = false;
+        self.call_works_dropped();
         if let Some(given) = early.given_before {
             self.machine.state.units_given = given;
         }
@@ -469,6 +500,7 @@ impl Checker {
             mode_said: false,
             ends_lost: early.lost_codes == Some(self.machine.distance_codes),
             work_guessed: self.work_guessed.take(),
+            unplaced_said: 0,
         });
     }
 
@@ -478,6 +510,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn early_unhold(&mut self, all: bool) {
+        self.call_works_dropped();
         if let Some(early) = self.early.as_ref() {
             if !self.given_up.iter().any(|g| g.number == early.body.number) {
                 self.given_up.push(GivenUp {
@@ -489,6 +522,16 @@ impl Checker {
             }
         }
         self.early_merge();
+    }
+
+    /// The calls of a program read apart in units only assumed ([`Checker::call_works_assumed`])
+    /// whose units are not known: it returned (a subprogram's units are its caller's) or
+    /// was given up.
+    fn call_works_dropped(&mut self) {
+        for (number, _) in std::mem::take(&mut self.call_works_assumed) {
+            self.call_works_unknown.insert(number);
+            self.call_work_kept(number, None);
+        }
     }
 
     /// A limit's finding in a program read apart (TG601, TG602, TG605, selected or not): held
@@ -853,6 +896,16 @@ impl Checker {
         let found = std::mem::take(&mut self.found);
         for mut f in found {
             let numbers = std::mem::take(&mut f.pending_on);
+            // (a position of the program's own after calls not read there: held unless
+            // each is a program of the file, read, that lost no offsets; review 61a F13)
+            if numbers.contains(&super::limits::PENDING_OWN)
+                && !numbers
+                    .iter()
+                    .filter(|&&n| n != super::limits::PENDING_OWN)
+                    .all(|&n| self.read_keeping(n, &mut Vec::new()))
+            {
+                continue;
+            }
             let Placed::Offset {
                 place,
                 work,
@@ -958,6 +1011,23 @@ impl Checker {
             }
         }
         values
+    }
+
+    /// Whether the program `n` is one of the file, read, that lost no offsets (a G52, G92,
+    /// frame, G10 of a value not known), nor calls one that is not so (through any depth;
+    /// `seen`: those looked at).
+    fn read_keeping(&self, n: i64, seen: &mut Vec<i64>) -> bool {
+        if seen.contains(&n) {
+            return true;
+        }
+        seen.push(n);
+        self.file_programs.contains(&n)
+            && self.offset_writers.get(&n).is_none_or(|(w, loses)| {
+                !loses
+                    && !w.moved
+                    && w.shifted == 0
+                    && w.unread.iter().all(|&m| self.read_keeping(m, seen))
+            })
     }
 
     /// Whether the program `n` of the file, or one it calls not read there (through any
@@ -1727,6 +1797,9 @@ impl Checker {
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
+        if r == 1.0 && known && shift.iter().all(|s| *s == 0.0) {
+            self.unplaced_judged(p, at, &under);
+        }
         let (Some(top), Some(feed)) = (self.config.feed_max, p.body.feed.as_ref()) else {
             return;
         };
@@ -1769,6 +1842,162 @@ impl Checker {
              travel (TG601; said once: the same for any later G53 under G91 of this file)"
         );
         self.report(Rule::NotFollowed, message, line, column);
+    }
+
+    /// In a program read apart with no work offset in force ([`Checker::work_unplaced`]):
+    /// an absolute work position of the axis of place `i`, kept (each axis's least and
+    /// most) for its calls, which run it under theirs; none from the first block that
+    /// moves its coordinates or writes or may write an offset (a G10, a G52, G92, a frame,
+    /// a call the checker does not follow, a units code: the positions after are not the
+    /// caller's offset's). A Z under a tool length offset of its own is not kept.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn unplaced_at(&mut self, i: usize, at: f64, line: usize) {
+        let w = &self.offsets_written;
+        if !self.early_on
+            || self.offsets_lost
+            || w.any()
+            || !w.unread.is_empty()
+            || w.moved
+            || w.shifted != 0
+            || self.shifts_on()
+            || self.frames_on()
+            || self.transformed.is_some()
+            || self.units_unknown
+        {
+            self.work_unplaced = false;
+            return;
+        }
+        if AXES[i] == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal) {
+            return;
+        }
+        let Some(early) = self.early.as_mut() else {
+            return;
+        };
+        let ends = &mut early.body.unplaced[i];
+        let here = Some(Unplaced { at, line });
+        if ends[0].is_none_or(|u| at < u.at) {
+            ends[0] = here;
+        }
+        if ends[1].is_none_or(|u| at > u.at) {
+            ends[1] = here;
+        }
+    }
+
+    /// At a call of `p` in the units and the mode it was read in, under no shift: its
+    /// positions read with no work offset in force ([`Body::unplaced`]) judged under the
+    /// caller's (its profile value, or the one a G10 of the caller's run wrote), where the
+    /// caller's is known here (selected, not guessed, no frame, no value not known); each
+    /// end said once. A subprogram written before its call runs under the work offset in
+    /// force there: G54-G59 are modal and M98/G65 change none (0i-MF Operator's Manual,
+    /// "Subprogram call (M98)"; review 61a F7: `O1000` / `G10 L2 P2 X-200.` / `G55` / `M98
+    /// P3000` / `M30` / `O4000` / `G0 X-780.` / `M99` / `O3000` / `M98 P4000` / `M99` runs
+    /// X-780. at -980, and was said by none).
+    #[cold]
+    #[inline(never)]
+    fn unplaced_judged(
+        &mut self,
+        p: &mut Pending,
+        at: (usize, usize),
+        under: &dyn Fn(usize) -> String,
+    ) {
+        let Some(work) = self.work else {
+            return;
+        };
+        if p.body.unplaced.iter().all(|e| e[0].is_none())
+            || self.offsets_lost
+            || self.work_guessed.is_some()
+            || self.work_run_on
+            || self.shifts_on()
+            || self.frames_on()
+            || self.transformed.is_some()
+            || self.units_unknown
+            || self.offsets_written.moved
+            // (after a return in the caller's program, reached by a jump only: review 61a F10)
+            || self.sub_ended
+            // (a G66 runs it at each later move, under the offset in force there, review 61a
+            // F9; `M98 P2000 Q10` enters it at its N10, F12)
+            || self.values.gs().contains(&66)
+            || self.values.ms.contains(&98) && self.letters & crate::modal::bit(b'Q') != 0
+        {
+            return;
+        }
+        let length = self.machine.state.length_offset != 49 || self.length_decimal;
+        for (i, &axis) in AXES.iter().enumerate() {
+            let Some((low, high)) = self.travel.of_place(i) else {
+                continue;
+            };
+            if axis == b'Z' && length || self.offsets_written.shifted & 1 << i != 0 {
+                continue;
+            }
+            let written = usize::try_from(work)
+                .ok()
+                .and_then(|w| self.offsets_written.value(w, i));
+            let profile = self
+                .config
+                .work_offsets
+                .iter()
+                .find(|&&(g, a, _)| g == work && a == axis)
+                .map(|&(_, _, v)| v);
+            let (value, named) = match (written, profile) {
+                (Some(v), _) if v.is_nan() => continue,
+                (Some(v), _) => (
+                    v,
+                    format!("{} as a G10 before this call wrote it", super::round6(v)),
+                ),
+                (None, Some(v)) => (v.to_f64(), v.to_string()),
+                (None, None) => continue,
+            };
+            let [least, most] = p.body.unplaced[i];
+            let out = |u: Option<Unplaced>| {
+                u.map(|u| (u, u.at + value))
+                    .filter(|&(_, m)| m < low - 1e-9 || m > high + 1e-9)
+            };
+            for (end, found) in [(0, out(least)), (1, out(most))] {
+                let Some((u, machine_at)) = found else {
+                    continue;
+                };
+                // (both ends beyond the same side: the farther said, one excursion)
+                if end == 1 && machine_at < low && out(least).is_some() {
+                    continue;
+                }
+                if end == 0 && machine_at > high && out(most).is_some() {
+                    continue;
+                }
+                // (the caller's excursion beyond that side runs on into it: one excursion,
+                // one finding, review 61a F3)
+                let side = if machine_at < low { -1 } else { 1 };
+                let bit = 1 << (2 * i + end);
+                if p.unplaced_said & bit != 0 || self.outside[i] == side {
+                    continue;
+                }
+                p.unplaced_said |= bit;
+                let message = format!(
+                    "{} goes to {} in machine coordinates (work {} + G{work} offset {named}), \
+                     outside the travel {low} to {high}{}",
+                    axis as char,
+                    super::round6(machine_at),
+                    super::round6(u.at),
+                    under(u.line)
+                );
+                let placed = if written.is_some() {
+                    Placed::Not
+                } else {
+                    Placed::Offset {
+                        place: i as u8,
+                        work: work as u8,
+                        at: u.at,
+                        line: u.line,
+                    }
+                };
+                if self.report_placed(message, at, placed) {
+                    let unread = self.offsets_written.unread.clone();
+                    if let Some(f) = self.found.last_mut() {
+                        f.pending_on = unread;
+                    }
+                }
+            }
+        }
     }
 
     /// A subprogram's G53 positions at a call whose units are `r` times those it was read in

@@ -110,6 +110,12 @@ impl Frames {
 /// X, Y and Z (bits 0-2 of [`Frames::hidden`]).
 const XYZ: u16 = 0b111;
 
+/// Among a finding's [`Finding::pending_on`]: a position of the program's own after calls
+/// of programs not read there ([`Checker::work_unread_reselected`]): dropped at the file's
+/// end where one of them is not in the file or lost the offsets, not only where one writes
+/// that axis.
+pub(super) const PENDING_OWN: i64 = -1;
+
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -427,19 +433,17 @@ impl Written {
         writes
     }
 
-    /// The axes written of offset G54-G59 number `g` (0-5; every one where None) written
-    /// again with a value not known (a system variable's assignment, `#5241=0.`).
-    pub(super) fn unknown_again(&mut self, g: Option<usize>) {
+    /// Every axis of offset G54-G59 number `g` (0-5; every one where None) written with a
+    /// value not known (a system variable's assignment, `#5241=0.`: the axis it names
+    /// depends on the machine's axis order).
+    pub(super) fn unknown_of(g: Option<usize>) -> Written {
+        let mut w = Written::on_every(0);
         for k in 0..6 {
             if g.is_none_or(|g| g == k) {
-                for i in 0..9 {
-                    if self.axes[k] & 1 << i != 0 {
-                        self.values[k][i] = f64::NAN;
-                    }
-                }
-                self.maybe[k] = 0;
+                w.axes[k] = (1 << 9) - 1;
             }
         }
+        w
     }
 
     /// Offset G`work`'s (54-59) value on the axis of place `i` here: None where not written
@@ -537,6 +541,8 @@ impl Checker {
     /// writes, [`Written::moved`]; what a program the checker does not read does is not
     /// followed, as [`Checker::offsets_written`] says) or a jump.
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
+        self.work_unplaced = false;
+        self.offsets_unread_only = false;
         if self.config.work_offsets.is_empty() || self.offsets_lost {
             return;
         }
@@ -573,9 +579,103 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64) {
+        self.work_unplaced = false;
+        if self.offsets_unread_only {
+            self.work_unread_reselected();
+        }
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+    }
+
+    /// The program in hand ends (the next begins, or the file): where it left a shift on
+    /// (a G52 of its own, or another shift), what it left ([`Checker::shift_ends`]), for
+    /// its calls that come after it in the file.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn program_shift_end(&mut self) {
+        let g52 = std::mem::take(&mut self.g52_axes);
+        let clean = std::mem::replace(&mut self.shift_clean_start, true);
+        let unsure = std::mem::take(&mut self.shift_unsure);
+        let Some(n) = self.in_hand else {
+            return;
+        };
+        if self.config.family != Family::MacroB {
+            return;
+        }
+        let writer = self.offset_writers.get(&n);
+        let moved = writer.is_some_and(|(w, _)| w.moved || w.shifted != 0);
+        if g52 == 0 && !moved && !self.shifts.on {
+            return;
+        }
+        let s = &self.shifts;
+        let known = clean
+            && !unsure
+            && s.local_unknown == 0
+            && (0..AXES.len()).all(|i| s.total[i] == s.local[i])
+            && writer.is_none_or(|(w, _)| !w.moved && w.unread.is_empty());
+        let end = known.then_some((g52, s.local));
+        self.shift_ends.insert(n, end);
+    }
+
+    /// A call of program `number`, read before it in the file (`writes`: what it writes of
+    /// the offsets): a G52 it leaves on stays in force for its caller after the call (a
+    /// FANUC's local coordinate system is modal until cancelled, and M99 cancels none:
+    /// 0i-MF Operator's Manual, "Local coordinate system"): the caller's spans from here are
+    /// in the coordinates it sets, as after a G52 of its own. Where what it leaves is not
+    /// surely known (a G92, a jump, condition or loop, a call not followed), as before: not
+    /// followed, the caller's spans read on unshifted. A program read apart that runs such
+    /// a call is read as before from here, as one that writes its own G52 is.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn shift_carried(&mut self, number: i64) {
+        let Some(end) = self.shift_ends.get(&number).copied() else {
+            return;
+        };
+        // (where not surely known, as before: the caller's spans read on unshifted, erring
+        // on the side of the alarm)
+        let Some((axes, local)) = end else {
+            self.shift_unsure = true;
+            return;
+        };
+        self.early_merge();
+        for i in crate::modal::places(u32::from(axes)) {
+            if self.shifts.local_unknown & 1 << i != 0 {
+                self.restart_span(i, true);
+                continue;
+            }
+            self.shifts.total[i] += local[i] - self.shifts.local[i];
+            self.shifts.local[i] = local[i];
+        }
+        self.g52_axes |= axes;
+        self.shifts.settle();
+    }
+
+    /// A G54-G59 of the program's own after calls of programs the checker had not read
+    /// there, and nothing else that may change the offsets ([`Checker::offsets_unread_only`]):
+    /// the offset it selects has the profile's value unless one of those programs writes
+    /// it. Its positions are judged again, each finding held to the file's end with those
+    /// programs' numbers ([`Finding::pending_on`], [`PENDING_OWN`]): dropped where one of
+    /// them writes that axis, moves the coordinates, or is not in the file; said where all
+    /// are read and none does (review 61a F13: `O2000` / `G65 P4000 I2.` / `G90 G54` / `G0
+    /// X850.` / `M99` / `O4000` / `M99` runs X850. at 850, beyond the travel, and was said
+    /// by none). A G52 it leaves is modal through G54-G59 (0i-MF Operator's Manual, "Local
+    /// coordinate system"): the axes it shifts are not judged.
+    #[cold]
+    #[inline(never)]
+    fn work_unread_reselected(&mut self) {
+        if self.offsets_lost
+            && !self.offsets_written.any()
+            && !self.offsets_written.moved
+            && self.offsets_written.shifted == 0
+            && !self.offsets_written.unread.is_empty()
+            && !self.shifts_on()
+            && !self.frames_on()
+            && self.transformed.is_none()
+            && !self.units_unknown
+        {
+            self.offsets_lost = false;
+        }
     }
 
     /// The axes (their places' bits) of each of G54-G59 a G10 block may write, and the
@@ -1908,6 +2008,9 @@ impl Checker {
                 }
                 self.shifts.total[i] += value - self.shifts.local[i];
                 self.shifts.local[i] = value;
+                self.g52_axes |= 1 << i;
+                // (after a return: reached by a jump only)
+                self.shift_unsure |= self.sub_ended;
                 Ok(())
             }
             92 | 50 if self.machine.taken() == Some(AxesTaken::Set) => {
@@ -1967,7 +2070,11 @@ impl Checker {
             return;
         }
         if let CallShifts::Known(total, local) = self.shifts.calls {
-            if self.shifts.call != 0 {
+            // (every call made under no shift, one a called program leaves on after them
+            // or the program's own: the text after the end runs under none, review 61a's
+            // fz558: `M98 P2000` / `G65 P3000` of an O3000 leaving `G52 X100.` on)
+            let unshifted = total.iter().chain(&local).all(|&v| v == 0.0);
+            if self.shifts.call != 0 || unshifted {
                 // the calls, all under one known shift, run the text after the end (a Haas's
                 // M97 N100, an O2000 after M30) under it: its positions are in the spans'
                 // coordinates plus that shift
@@ -2593,8 +2700,14 @@ impl Checker {
                     "{} under G{work}: the profile gives no G{work} {}",
                     axis as char, axis as char
                 )),
-                (true, None, _) => self
-                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                (true, None, _) => {
+                    if self.work_unplaced {
+                        self.unplaced_at(i, at, line);
+                    }
+                    self.travel_not(
+                        "where the program has selected no work offset (G54-G59)".into(),
+                    )
+                }
                 _ => {}
             }
             // (under a frame: X Y Z taken back through it below, or left out)
@@ -3099,7 +3212,13 @@ impl Checker {
         self.report_limit(Rule::TravelExceeded, message, line, column);
         let said = self.found.len() > before;
         if said {
-            self.found.last_mut().expect("said").placed = placed;
+            let f = self.found.last_mut().expect("said");
+            f.placed = placed;
+            // (after calls of programs not read there, re-selected: review 61a F13)
+            if !self.offsets_written.unread.is_empty() {
+                f.pending_on.clone_from(&self.offsets_written.unread);
+                f.pending_on.push(PENDING_OWN);
+            }
         }
         said
     }

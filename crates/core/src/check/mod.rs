@@ -1007,6 +1007,29 @@ pub struct Checker {
     /// machine positions under it are those of that run, said where read, not at a call
     /// under another offset (review 57e F2); false once it selects its own.
     work_run_on: bool,
+    /// A program read apart whose start has no work offset in force (the file's first, or
+    /// one after a program that lost the offsets): its absolute positions before anything
+    /// moves its coordinates are its caller's offset's, kept for its calls
+    /// ([`Checker::unplaced_at`]); false once it selects an offset, shifts, or writes one.
+    work_unplaced: bool,
+    /// `offsets_lost` holds only for calls of programs not read there (written later in
+    /// the file, or not in it): a G54-G59 of the program's own after them re-selects an
+    /// offset whose value only those programs could have changed
+    /// ([`Checker::work_unread_reselected`]); and the block in hand made such a call.
+    offsets_unread_only: bool,
+    call_unread_here: bool,
+    /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
+    /// called carried into it), and whether its start had no shift in force
+    /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
+    g52_axes: u16,
+    shift_clean_start: bool,
+    /// A jump, condition or loop, a G52 after a return, or a call of a program whose shift at
+    /// its end is not known, in the program in hand: what it leaves on is not surely known.
+    shift_unsure: bool,
+    /// Each FANUC/Haas program of the file that left a G52 or another shift on at its end:
+    /// the axes its G52s wrote and the local shift it left, where surely known (no G92, no
+    /// jump, condition or loop, no call not followed, no shift at its start); None where not.
+    shift_ends: HashMap<i64, Option<(u16, [f64; 9])>>,
     offsets_lost: bool,
     /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
     /// program in hand has written before here: by a G10 of its own that writes it
@@ -1441,6 +1464,11 @@ pub struct Checker {
     /// in force was not known (not only calls that disagree): a program of that number
     /// written after them runs under no offset the checker knows (review 61a F5).
     call_works_unknown: HashSet<i64>,
+    /// Calls of a program read apart in units only assumed (no G20/G21 yet), each with the
+    /// offset kept where all else is known: recorded where it ends as a main program (its
+    /// units the reset state's), as not known where it returns, a subprogram whose units
+    /// are its own caller's (review 61a F11 and F7).
+    call_works_assumed: Vec<(i64, Option<structure::CallWork>)>,
     /// The program in hand, written after its calls, runs under the work offset of
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
@@ -1638,6 +1666,13 @@ impl Checker {
             work: None,
             work_guessed: None,
             work_run_on: false,
+            work_unplaced: false,
+            offsets_unread_only: false,
+            call_unread_here: false,
+            g52_axes: 0,
+            shift_clean_start: true,
+            shift_unsure: false,
+            shift_ends: HashMap::new(),
             offsets_lost: false,
             offsets_written: limits::Written::default(),
             g10_expression: 0,
@@ -1715,6 +1750,7 @@ impl Checker {
             call_units: HashMap::new(),
             call_works: HashMap::new(),
             call_works_unknown: HashSet::new(),
+            call_works_assumed: Vec::new(),
             work_call: None,
             units_unknown: false,
             early: None,
@@ -2346,6 +2382,8 @@ impl Checker {
             // (a main program's M30, whatever follows it: its M97 local subroutines end in
             // M99 before the saved offsets)
             let main_ended = self.ended_line != 0;
+            // (what the program before left, read before the reset state)
+            self.program_shift_end();
             self.next_program();
             self.called_units(b);
             self.empty_folder = folder;
@@ -2761,12 +2799,15 @@ impl Checker {
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
+            self.call_unread_here = false;
             self.early_calls();
-            self.call_made(b);
+            // (the shift the call is made under, before a G52 its program leaves on is
+            // carried into this one, Checker::shift_carried)
             self.call_shifts();
             if self.shifts.on {
                 self.shift_call(b);
             }
+            self.call_made(b);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.forget_at_jump(b, calls);
@@ -2787,7 +2828,10 @@ impl Checker {
             self.linuxcnc_rate = None;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
+            let unread_only = std::mem::take(&mut self.call_unread_here)
+                && (!self.offsets_lost || self.offsets_unread_only);
             self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+            self.offsets_unread_only = unread_only;
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
@@ -3054,6 +3098,7 @@ impl Checker {
         }
         self.part_ended(false);
         self.early_finish();
+        self.program_shift_end();
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();

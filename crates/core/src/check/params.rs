@@ -1483,7 +1483,7 @@ impl Checker {
         self.assignments_of(b);
     }
 
-    /// A work offset's system variable set after a G10 wrote that offset (FANUC Custom
+    /// A work offset's system variable set (FANUC Custom
     /// Macro B, "System variables": #5201-#5206 the external offset, #5221-#5326 G54-G59,
     /// twenty a system from #5221, its axes in order; a Haas's the same numbers, Mill
     /// Operator's Manual, Macro Variables Table; LinuxCNC's numbered parameters likewise):
@@ -1507,19 +1507,24 @@ impl Checker {
                 None if w.index.is_empty() => None,
                 _ => continue,
             };
-            self.offsets_written.unknown_again(g);
-            // (and where a call the checker does not follow runs the program in hand)
-            let n = self.in_hand;
-            if let Some(entry) = n.and_then(|n| self.offset_writers.get_mut(&n)) {
-                entry.0.unknown_again(g);
-            }
+            // (a program read apart with no offset in force: its positions after it are
+            // not its caller's offset's)
+            self.work_unplaced = false;
+            // (every axis of that offset, written by a G10 before or not: review 60 F3,
+            // `#5241=0.` / `G90 G55` / `M98 P1000` ran O1000's X-700. at -700, and it was
+            // judged with the profile's -100)
+            let unknown = super::limits::Written::unknown_of(g);
+            self.offsets_written.then(&unknown);
+            // (and where a call the checker does not follow runs the program in hand, or
+            // a caller calls it)
+            self.offset_writer(&unknown, false);
         }
     }
 
     /// [`Checker::assignments`] of a block with a `#` word or an indexed one.
     #[inline(never)]
     fn assignments_of(&mut self, b: &BlockView<'_>) {
-        if self.offsets_written.any() {
+        if !self.config.work_offsets.is_empty() {
             self.offset_variables(b);
         }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC

@@ -203,6 +203,7 @@ impl Checker {
     /// where the jump goes back: its axes of every offset written ([`Checker::g10_expression`]).
     pub(super) fn forget_at_jump(&mut self, b: &BlockView<'_>, calls: bool) {
         self.jumped |= !calls;
+        self.shift_unsure |= !calls;
         let expression = self.g10_expression | self.g10_local;
         if expression != 0 && !calls && self.forward_jump(b).is_none() {
             let every = super::limits::Written::on_every(expression);

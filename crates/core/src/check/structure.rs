@@ -394,6 +394,7 @@ impl Checker {
         let (call, column) = self.call_words(b);
         self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
         if let Some((writes, loses)) = self.offset_writers.get(&number).cloned() {
+            self.shift_carried(number);
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
             if loses {
@@ -405,6 +406,7 @@ impl Checker {
                 unread: vec![number],
                 ..Default::default()
             };
+            self.call_unread_here = true;
             self.offsets_written.then(&unread);
             self.offset_writer(&unread, false);
         }
@@ -543,9 +545,6 @@ impl Checker {
                 // (after a return in the caller's program: reached only by a jump, the
                 // offset read in file order is not surely the one there, review 61a F10)
                 && !self.sub_ended
-                // (a caller read apart in units only assumed: its call's units are its own
-                // caller's, review 61a F11)
-                && (self.machine.state.units_given || !self.early_on)
                 // (`M98 P2000 Q10` enters the body at its N10, not at its first block: 0i-F
                 // Operator's Manual, "Subprogram call (M98)"; review 61a F12)
                 && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
@@ -555,6 +554,10 @@ impl Checker {
         // "Modal call: G66"), or never (review 61a F9: `G66 P2000` / `G54` / `G0 X10.` /
         // `G67`, its body after M30 was judged under G55)
         let modal = self.values.gs().contains(&66);
+        // (a caller read apart in units only assumed: its call's units are its own caller's
+        // where it returns, review 61a F11; the reset state's where it ends as a main
+        // program, F7: `O1000` / `G10 L2 P2 X-200.` / `G55` / `M98 P3000` / `M30`)
+        let assumed = !self.machine.state.units_given && self.early_on;
         if known.is_none() && !modal {
             self.call_works_unknown.insert(number);
         }
@@ -571,6 +574,16 @@ impl Checker {
                 line: b.line,
             }
         });
+        if assumed && here.is_some() {
+            self.call_works_assumed.push((number, here));
+            return;
+        }
+        self.call_work_kept(number, here);
+    }
+
+    /// [`Checker::call_works`]: the offset `here` of a call of program `number`, joined
+    /// with the calls' before it (None where they disagree).
+    pub(super) fn call_work_kept(&mut self, number: i64, here: Option<CallWork>) {
         self.call_works
             .entry(number)
             .and_modify(|before| {
@@ -694,6 +707,7 @@ impl Checker {
     /// control's start units the profile assumes).
     pub(super) fn called_units(&mut self, b: &BlockView<'_>) {
         self.work_call_end();
+        self.offsets_unread_only = false;
         // (an excursion beyond the travel is one run's: the program before's last position
         // outside holds no first one of this program's, review 59a F9: `G90 G55` / `G0 X-700.`
         // / `M30` / `O2000` / `G90 G55` / `G0 X-700.` said only the first) -- but with the
@@ -752,6 +766,7 @@ impl Checker {
                 }
             }
         }
+        self.shift_clean_start = !self.shifts_on();
         match number.and_then(|n| self.call_units.get(&n)) {
             Some(&Some((units, feed_units, given))) => {
                 let s = &mut self.machine.state;

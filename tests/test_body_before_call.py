@@ -1,0 +1,180 @@
+"""A subprogram read apart judged at its calls under their work offset, and a program's own
+G54-G59 after calls of programs written later (review 61a F7, F6, F2, F13).
+
+A FANUC runs a subprogram under the work offset in force at its call: G54-G59 are modal and
+M98/G65 change none (0i-MF Operator's Manual, "Subprogram call (M98)"). A program read apart
+(written before its call, or after the main) that starts with no offset in force keeps its
+absolute positions for its calls, which judge them under theirs. The profile is a FANUC mill
+whose G55 is X-100 (X travel -762..762).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.parser import parse_text
+from formats.profile import load_profile
+from postproc.check import Checker
+from tests.test_goto_passages import _wo2
+
+
+def said(programs: str, profile: str) -> list[tuple[str, int, int, str]]:
+    """The errors of `%` / `programs` / `%` (line 1 is the `%`), each message's start."""
+    text = "%\n" + programs.replace(" / ", "\n") + "\n%\n"
+    prof = load_profile(profile)
+    found = Checker(prof, "<input>").run(parse_text(text, prof.dialect, errors="collect"))
+    return [(f.rule, f.line, f.column, f.message.split(", outside")[0])
+            for f in found if f.severity == "error"]
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (z6: O4000, read apart after O1000 lost the offsets at its call of O3000 written
+    # later, called by O3000, which runs under O1000's G55 with X written -200: -980)
+    ("O1000 / G10 L2 P2 X-200. / G55 / M98 P3000 / M30 / O4000 / G0 X-780. / M99 / "
+     "O3000 / M98 P4000 / M99",
+     [("TG601", 11, 5, "X goes to -980 in machine coordinates (work -780 + G55 offset -200 as "
+                       "a G10 before this call wrote it)")]),
+    # (z8: the G10 writes X0.: -700, inside)
+    ("O1000 / G10 L2 P2 X0. / G55 / M98 P3000 / M30 / O4000 / G0 X-700. / M99 / "
+     "O3000 / M98 P4000 / M99 / O2000 / M99", []),
+    # (z9c: no G10, O3000's own G55: -880)
+    ("O1000 / G21 G90 G55 / M98 P3000 / M30 / O4000 / G0 X-780. / M99 / O3000 / G55 / "
+     "M98 P4000 / M99",
+     [("TG601", 11, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+    # (w2c, F6: the file's first program, called by the main under G55)
+    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / M30",
+     [("TG601", 8, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (the same called under G54: inside)
+    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / M30", []),
+    # (g8, F2: after a program that left a G52 on, called by a later program under G55)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G52 X10. / M30 / O2000 / G0 X-700. / M99 / "
+     "O3000 / G21 G90 G55 / M98 P2000 / M30",
+     [("TG601", 12, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (called under a G52 of the caller's: not judged, g7)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G52 X10. / M30 / O2000 / G0 X-700. / M99 / "
+     "O3000 / G21 G90 G55 / G52 X-100. / M98 P2000 / M30", []),
+    # (the caller's excursion beyond that side runs on into it: one finding, b40e)
+    ("O2000 / G0 X-710. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G0 X-700. / "
+     "M98 P2000 / M30",
+     [("TG601", 8, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (the body's own G54 before its move: its own, judged where read as before)
+    ("O2000 / G54 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / M30",
+     []),
+    # (the body's own G52, G10 or G92 before the move: not its caller's offset's, not judged)
+    ("O2000 / G52 X50. / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / "
+     "M30", []),
+    ("O2000 / G10 L2 P2 X0. / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P2000 / M30", []),
+    ("O2000 / #5221=0. / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P2000 / M30", []),
+    # (a G66 runs it at later moves, b4e; `M98 P2000 Q10` enters it at N10, q3)
+    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G66 P2000 / G54 / "
+     "G0 X10. / G67 / M30", []),
+    ("O2000 / G0 X-700. / N10 G0 X0 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P2000 Q10 / M30", []),
+    # (a caller under G43: its Z not judged; its X is)
+    ("O2000 / G0 X-700. Z-515. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G43 H1 Z0 / "
+     "M98 P2000 / M30",
+     [("TG601", 9, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_a_body_read_with_no_offset_runs_under_its_call_s(tmp_path, programs, expected):
+    """Review 61a F7 (z6: OLD's "-880" ignored the G10, main said nothing), F6 (w2c) and F2
+    (g8): a program read apart with no work offset in force at its start was not compared
+    ("where the program has selected no work offset") and nothing was kept for its calls."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (f62c: O2000's own G54 after its G65 of O4000, written later and writing no offset)
+    ("O2000 / G65 P4000 I2. / G90 G54 / G0 X850. / M99 / O4000 / M99 / O1000 / "
+     "G90 G0 X-650. / M98 P2000 / M30",
+     [("TG601", 11, 5, "X goes to 850 in machine coordinates (work 850 + G54 offset 0.0)")]),
+    # (f62a: with a G52 at its end: said where read, as without the G65)
+    ("O2000 / G65 P4000 I2. / G90 G54 / G0 X850. / G52 X-100. / M99 / O4000 / M99 / O1000 / "
+     "G90 G0 X-650. / M98 P2000 / M30",
+     [("TG601", 5, 4, "X goes to 850 in machine coordinates (work 850 + G54 offset 0.0)")]),
+    # (O4000 writes G54's X: judged with its value, -150: inside)
+    ("O2000 / G65 P4000 I2. / G90 G54 / G0 X850. / M99 / O4000 / G10 L2 P1 X-150. / M99 / "
+     "O1000 / G90 G0 X-650. / M98 P2000 / M30", []),
+    # (O4000 leaves a G52 on, or writes a value not known: not known, held)
+    ("O2000 / G65 P4000 I2. / G90 G54 / G0 X850. / M99 / O4000 / G52 X-100. / M99 / "
+     "O1000 / G90 G0 X-650. / M98 P2000 / M30", []),
+    ("O2000 / G65 P4000 I2. / G90 G54 / G0 X850. / M99 / O4000 / G10 L2 P1 X#1 / M99 / "
+     "O1000 / G90 G0 X-650. / M98 P2000 / M30", []),
+    # (O9810 not in the file, a probing macro that may set G54: not known)
+    ("O1000 / G21 G90 G54 / G65 P9810 Z-10. / G90 G54 / G0 X850. / M30", []),
+    # (e1: the main's G55 after its call of O100, written later, which writes X-200: -900)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P100 / G90 G55 / M98 P2000 / M30 / O100 / "
+     "G10 L2 P2 X-200. / M99 / O2000 / G0 X-700. / M99",
+     [("TG601", 13, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                       "a G10 before this call wrote it)")]),
+    # (e3c: O100 writes none: -800)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P100 / G90 G55 / G0 X-700. / M30 / O100 / "
+     "M99",
+     [("TG601", 7, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_a_program_s_own_offset_after_a_call_of_a_later_program(tmp_path, programs, expected):
+    """Review 61a F13: after a G65/M98 of a program written later, the caller's own G54-G59
+    selects an offset only a G10 of that program could change: its positions are judged,
+    held to the file's end, said where that program writes none (f62c: OLD said a span only
+    through a G52 leak, main nothing)."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (O2000 leaves G52 X-1000. on: the main's X800. after the call is at -200, its span
+    # from -750 to -200 fits; read unshifted it was a false "X spans 1550")
+    ("O2000 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
+     "G0 X800. / M30", []),
+    # (G52 X10.: the span is 1560, to 810)
+    ("O2000 / G52 X10. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
+     "G0 X800. / M30",
+     [("TG601", 10, 4, "X spans 1560 (from -750 to 810), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+    # (carried through a program that calls it)
+    ("O2000 / G52 X-1000. / M99 / O3000 / M98 P2000 / M99 / O1000 / G21 G90 G54 / "
+     "G0 X-750. / M98 P3000 / G90 / G0 X800. / M30", []),
+    # (a G52 a condition may pass over: not surely known, read unshifted as before)
+    ("O2000 / IF [#1 EQ 1] GOTO 5 / G52 X-1000. / N5 M99 / O1000 / G21 G90 G54 / "
+     "G0 X-750. / M98 P2000 / G90 / G0 X800. / M30",
+     [("TG601", 11, 4, "X spans 1550 (from -750 to 800), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+    # (no G52 in the body: as before)
+    ("O2000 / G0 X0 / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
+     "G0 X800. / M30",
+     [("TG601", 10, 4, "X spans 1550 (from -750 to 800), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+])
+def test_a_g52_a_called_program_leaves_on_is_its_caller_s_after_the_call(tmp_path, programs,
+                                                                          expected):
+    """Lead's root of review 61a F7/F13: a FANUC's local coordinate system (G52) stays in
+    force until cancelled, through M99 (0i-MF Operator's Manual, "Local coordinate
+    system"): a program read before its call that surely leaves one on gives it to its
+    caller, whose spans after the call are in its coordinates."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 60 F3, v1: G55's X set by its variable with no G10 before: not known)
+    ("O1000 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / #5241=0. / "
+     "G90 G55 / M98 P1000 / M30", []),
+    ("O1000 / G21 G17 G90 G55 / #5241=0. / G0 X-700. / M30", []),
+    # (G54's X set: G55 still the profile's)
+    ("O1000 / G21 G17 G90 G55 / #5221=0. / G0 X-700. / M30",
+     [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (the main's own G52 after its call of a body written after it: the body runs at the
+    # call, under none)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G52 X100. / M30 / O2000 / G0 X-700. / "
+     "M99",
+     [("TG601", 9, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (fz558: a G52 a later call's program leaves on, not the earlier call's)
+    ("O3000 / G52 X100. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G65 P3000 / "
+     "G55 / M30 / O2000 / G0 X-700. / G90 / M99",
+     [("TG601", 13, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_path, programs,
+                                                                           expected):
+    """Review 60 F3: a work offset's system variable (FANUC Custom Macro B, #5221 + 20 a
+    system) sets an axis of that offset, whichever: not followed, the offset's axes not
+    known, G10 before or not. A body written after the main runs under the shift at its calls, not the main's end's."""
+    assert said(programs, _wo2(tmp_path)) == expected
