@@ -1525,6 +1525,10 @@ impl Checker {
         if self.offsets_written.any() || self.work_unplaced {
             self.offset_variables(b);
         }
+        // (review 62a F1)
+        if !self.offset_variable_written {
+            self.after_assignment(b);
+        }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
         // 3.0, 3.2.1; review 48 F15: `#1=-900 #3=#1` copies the old #1): those set by an
         // earlier word of the line, by key, their values before it, known and at the arrival
