@@ -1022,6 +1022,8 @@ impl Checker {
         }
         seen.push(n);
         self.file_programs.contains(&n)
+            // (review 62a F1-F4)
+            && !self.after_unsure.contains(&n)
             && self.offset_writers.get(&n).is_none_or(|(w, loses)| {
                 !loses
                     && !w.moved
@@ -1913,6 +1915,8 @@ impl Checker {
             || self.transformed.is_some()
             || self.units_unknown
             || self.offsets_written.moved
+            // (a work offset's variable written in the caller, review 62a F1)
+            || self.offset_variable_written
             // (after a return in the caller's program, reached by a jump only: review 61a F10)
             || self.sub_ended
             // (a G66 runs it at each later move, under the offset in force there, review 61a
@@ -1993,7 +1997,11 @@ impl Checker {
                 if self.report_placed(message, at, placed) {
                     let unread = self.offsets_written.unread.clone();
                     if let Some(f) = self.found.last_mut() {
-                        f.pending_on = unread;
+                        // (after a G54-G59 of the caller's own following such calls, held
+                        // as its own positions are: review 62a F5)
+                        if !f.pending_on.contains(&super::limits::PENDING_OWN) {
+                            f.pending_on = unread;
+                        }
                     }
                 }
             }

@@ -673,6 +673,8 @@ impl Checker {
             && !self.frames_on()
             && self.transformed.is_none()
             && !self.units_unknown
+            // (a work offset's variable written in the program, review 62a F1)
+            && !self.offset_variable_written
         {
             self.offsets_lost = false;
         }

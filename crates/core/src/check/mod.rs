@@ -40,6 +40,7 @@ pub use motion::in_one_quadrant;
 pub use structure::nested_comment;
 
 // the rules, by family
+mod after;
 mod called;
 mod codes;
 mod formats;
@@ -1504,6 +1505,14 @@ pub struct Checker {
     /// G92, an offset the profile does not give, a frame): what a call the checker does not
     /// follow of one writes ([`Checker::offset_writer`]).
     offset_writers: std::collections::BTreeMap<i64, (limits::Written, bool)>,
+    /// The file's programs read so far whose effects reach their caller after the return in
+    /// a way the checker does not follow for a caller's own G54-G59 after their call
+    /// ([`Checker::work_unread_reselected`], review 62a F1-F4): a work offset's system
+    /// variable written (`#5221`), a tool length offset (G43/G44) or units (G20/G21) left
+    /// in force, a return elsewhere (`M99 P`) or an end (M02/M30), or a call of one such.
+    after_unsure: std::collections::BTreeSet<i64>,
+    /// The program in hand wrote a work offset's system variable ([`Checker::after_unsure`]).
+    offset_variable_written: bool,
     /// Each call by number's program (its O number: [`Checker::in_hand`]) and the numbers
     /// it may name, as [`Checker::call_numbers`] has them: which programs the main's run
     /// reaches ([`Checker::main_may_run`]; review 58a F2).
@@ -1761,6 +1770,8 @@ impl Checker {
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
             offset_writers: std::collections::BTreeMap::new(),
+            after_unsure: std::collections::BTreeSet::new(),
+            offset_variable_written: false,
             call_sites: std::collections::BTreeSet::new(),
             first_number: None,
             in_hand: None,
@@ -2383,6 +2394,7 @@ impl Checker {
             // M99 before the saved offsets)
             let main_ended = self.ended_line != 0;
             // (what the program before left, read before the reset state)
+            self.after_end();
             self.program_shift_end();
             self.next_program();
             self.called_units(b);
@@ -2863,6 +2875,14 @@ impl Checker {
             }
         }
         if ends || returns {
+            // (an end, or a return elsewhere: review 62a F4)
+            if ends
+                || b.words
+                    .iter()
+                    .any(|w| w.letter == b'P' && w.index.is_empty())
+            {
+                self.after_mark();
+            }
             // a return or end the block skip can pass over (`/M99` before an `M30`: a bar
             // feeder's loop, or `G00 X0 /M99` with the slash in the middle) does not show the
             // part to be a subprogram: its held findings wait
@@ -3098,6 +3118,7 @@ impl Checker {
         }
         self.part_ended(false);
         self.early_finish();
+        self.after_end();
         self.program_shift_end();
         self.pending_on_ended();
         self.targets_ended();

@@ -1527,6 +1527,10 @@ impl Checker {
         if !self.config.work_offsets.is_empty() {
             self.offset_variables(b);
         }
+        // (review 62a F1)
+        if !self.offset_variable_written {
+            self.after_assignment(b);
+        }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC
         // 3.0, 3.2.1; review 48 F15: `#1=-900 #3=#1` copies the old #1): those set by an
         // earlier word of the line, by key, their values before it, known and at the arrival

@@ -490,6 +490,8 @@ impl Checker {
             }
             _ => number,
         };
+        // (a program that leaves what is not followed: its caller too, review 62a)
+        self.after_call(number);
         // (before the call's own reading: the state it is made in)
         self.call_work(b, number);
         let followed = (self.early_on || !self.pending.is_empty() || !self.given_up.is_empty())
