@@ -48,6 +48,20 @@ impl Checker {
         }
     }
 
+    /// An end (`ends`: M02, M30) or a return of block `b`: the program in hand marked where
+    /// it ends or returns elsewhere (`M99 Pn`).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn after_return(&mut self, b: &BlockView<'_>, ends: bool) {
+        if ends
+            || b.words
+                .iter()
+                .any(|w| w.letter == b'P' && w.index.is_empty())
+        {
+            self.after_mark();
+        }
+    }
+
     /// A call of program `number`: the caller marked where that one is.
     #[cold]
     #[inline(never)]

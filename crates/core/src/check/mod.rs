@@ -2876,13 +2876,7 @@ impl Checker {
         }
         if ends || returns {
             // (an end, or a return elsewhere: review 62a F4)
-            if ends
-                || b.words
-                    .iter()
-                    .any(|w| w.letter == b'P' && w.index.is_empty())
-            {
-                self.after_mark();
-            }
+            self.after_return(b, ends);
             // a return or end the block skip can pass over (`/M99` before an `M30`: a bar
             // feeder's loop, or `G00 X0 /M99` with the slash in the middle) does not show the
             // part to be a subprogram: its held findings wait
