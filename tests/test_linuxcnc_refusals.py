@@ -1465,6 +1465,13 @@ LATER_ENDS = [
     "o300 sub\nM8\nM2\no300 endsub",
     "o100 sub\nM8\no100 endsub\no300 call\nG0 Z0\no100 call\nG38.2 Z0\nM2\n"
     "o300 sub\nG3 I1 J0\nM2\no300 endsub",
+    # a body's do loop ending in G2 (review 62b LE5)
+    "o300 call\n#2=0\no300 call\no100 sub\no102 do\nG2 X1 Y0 I0.5 J0\n#2=[#2+1]\n"
+    "o102 while [#2 LT 1]\no100 endsub\nG1 X0\no100 call\nZ0.5\nM2\n"
+    "o300 sub\nG3 I1 J0\nM2\no300 endsub",
+    # the caller's G2 before the call of a G1 body, after the held call: not known, no arc
+    "o300 call\no100 sub\nG1 X2\no100 endsub\nG2 X1 Y0 I0.5 J0\no100 call\nZ0.5\nM2\n"
+    "o300 sub\nM8\no300 endsub",
 ]
 
 

@@ -3814,6 +3814,33 @@ impl Checker {
             }
         }
         self.linuxcnc_motion_plain = called && plain && before_plain;
+        // (a call of the main program of a label with no definition read yet: rs274 first
+        // looks for a file named after the label on its subroutine path, which the checker
+        // cannot see, and runs it if found (interp_o_word.cc, control_back_to; review 62b
+        // F2: `o<foo> call` / `Z0.5` / `M2` / `o<foo> sub` / `G2 I0.5 J0` / `o<foo> endsub`
+        // runs where a foo.ngc of a G1 is on the path); either body may end the program
+        // (review 62b F3). The mode it leaves is not judged, and no mode a later call
+        // surely leaves (from a plain body or a `do` loop), in the main program after
+        // it: held; review 62b LE5)
+        if self.open_definition.is_none()
+            && b.statements.iter().any(|&(_, kind, text)| {
+                kind == Kind::Call && {
+                    let label = self.linuxcnc_call_label(text);
+                    crate::statement::computed_label(&label)
+                        || !self.linuxcnc_defined.contains(&label)
+                }
+            })
+        {
+            self.linuxcnc_later.unread = true;
+        }
+        if self.linuxcnc_later.unread && self.open_definition.is_none() {
+            if left.is_some() {
+                // (a body that may leave another mode than the caller's: not known)
+                self.machine.state.motion = None;
+                self.machine.state.cycle = None;
+            }
+            return;
+        }
         if let Some(motion) = left {
             // (a G0-G3 ends a cycle in force)
             self.machine.state.motion = motion;
@@ -3829,27 +3856,6 @@ impl Checker {
             (None, Some((_, m))) if !called => Some(m),
             _ => None,
         };
-        // (a call of the main program of a label with no definition read yet: rs274 first
-        // looks for a file named after the label on its subroutine path, which the checker
-        // cannot see, and runs it if found (interp_o_word.cc, control_back_to; review 62b
-        // F2: `o<foo> call` / `Z0.5` / `M2` / `o<foo> sub` / `G2 I0.5 J0` / `o<foo> endsub`
-        // runs where a foo.ngc of a G1 is on the path); either body may end the program
-        // (review 62b F3). The mode it leaves is not judged, and no mode a later call
-        // surely leaves, in the main program after it: held)
-        if self.open_definition.is_none()
-            && b.statements.iter().any(|&(_, kind, text)| {
-                kind == Kind::Call && {
-                    let label = self.linuxcnc_call_label(text);
-                    crate::statement::computed_label(&label)
-                        || !self.linuxcnc_defined.contains(&label)
-                }
-            })
-        {
-            self.linuxcnc_later.unread = true;
-        }
-        if self.linuxcnc_later.unread && self.open_definition.is_none() {
-            return;
-        }
         if let Some(m) = sure {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(m * 10));
             self.linuxcnc_motion_plain = false;
