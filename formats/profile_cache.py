@@ -91,8 +91,8 @@ def load(name: str, text: str) -> dict[str, Any] | None:
     try:
         with open(path, "rb") as f:
             entry = marshal.loads(f.read())  # (marshal.load reads a file a few bytes at a time)
-    except (OSError, EOFError, ValueError, TypeError):
-        return None
+    except Exception:  # (a damaged entry: marshal may raise SystemError too; a cache never
+        return None    # decides a run)
     if not (type(entry) is tuple and len(entry) == 4 and entry[0] == KEY and entry[1] == text
             and type(entry[3]) is bytes):
         return None
@@ -102,7 +102,7 @@ def load(name: str, text: str) -> dict[str, Any] | None:
         return None
     try:
         data = marshal.loads(entry[3])
-    except (EOFError, ValueError, TypeError):
+    except Exception:
         return None
     return data if type(data) is dict else None
 
@@ -182,7 +182,7 @@ def load_spec(key: bytes) -> dict[str, Any] | None:
     try:
         with open(path, "rb") as f:
             entry = marshal.loads(f.read())
-    except (OSError, EOFError, ValueError, TypeError):
+    except Exception:  # (any error of a damaged entry: see load)
         return None
     if not (type(entry) is tuple and len(entry) == 5 and entry[0] == SPEC_KEY
             and entry[1] == code and entry[2] == key and type(entry[4]) is bytes):
@@ -193,7 +193,7 @@ def load_spec(key: bytes) -> dict[str, Any] | None:
         return None
     try:
         spec = marshal.loads(entry[4])
-    except (EOFError, ValueError, TypeError):
+    except Exception:
         return None
     return spec if type(spec) is dict else None
 
@@ -229,7 +229,7 @@ def _write(path: str, blob: bytes) -> None:
 
 
 # What a compiled built-in profile's entry is (load_compiled), and for which Python it was written
-COMPILED_KEY = ("tapegate-compiled-profile", 1, sys.version_info[:2], marshal.version)
+COMPILED_KEY = ("tapegate-compiled-profile", 2, sys.version_info[:2], marshal.version)
 # The built-in profiles' folder, as formats.profile finds it (its _BUILTIN)
 _BUILTIN = os.path.join(os.path.dirname(os.path.realpath(__file__)), "profiles")
 
@@ -349,19 +349,27 @@ def load_compiled(name: str, load: Callable[[], Any]) -> Compiled | None:
     try:
         with open(path, "rb") as f:
             entry = marshal.loads(f.read())
-    except (OSError, EOFError, ValueError, TypeError):
+    except Exception:  # (any error of a damaged entry: see load)
         return None
-    if not (type(entry) is tuple and len(entry) == 7 and entry[0] == COMPILED_KEY
+    if not (type(entry) is tuple and len(entry) == 6 and entry[0] == COMPILED_KEY
             and entry[1] == code and entry[2] == name and entry[3] == text
-            and type(entry[4]) is tuple and type(entry[6]) is bytes):
+            and type(entry[5]) is bytes):
         return None
-    if _checksum(entry[6]) != entry[5]:  # damaged on disk: made again, and rewritten
+    # the checksum covers all the entry is trusted for: the flags and the spec (its key is
+    # compared whole above)
+    if _checksum(entry[5]) != entry[4]:  # damaged on disk: made again, and rewritten
         return None
     try:
-        spec = marshal.loads(entry[6])
-    except (EOFError, ValueError, TypeError):
+        kept = marshal.loads(entry[5])
+    except Exception:
         return None
-    return Compiled(load, entry[4], spec) if type(spec) is dict else None
+    if not (type(kept) is tuple and len(kept) == 2 and type(kept[1]) is dict):
+        return None
+    flags, spec = kept
+    if not (type(flags) is tuple and len(flags) == 7 and type(flags[6]) is str
+            and all(type(flag) is bool for flag in flags[:6])):
+        return None  # (the shape formats.parser.Dialect.flags gives)
+    return Compiled(load, flags, spec)
 
 
 def store_compiled(name: str, flags: tuple[Any, ...], spec: Any) -> None:
@@ -375,9 +383,8 @@ def store_compiled(name: str, flags: tuple[Any, ...], spec: Any) -> None:
         return
     path, text = found
     try:
-        blob = marshal.dumps(spec)
-        entry = marshal.dumps((COMPILED_KEY, code, name, text, tuple(flags), _checksum(blob),
-                               blob))
+        blob = marshal.dumps((tuple(flags), spec))
+        entry = marshal.dumps((COMPILED_KEY, code, name, text, _checksum(blob), blob))
     except ValueError:
         return
     _write(path, entry)

@@ -194,10 +194,29 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
 
                 prepare_streams()  # (before the stream is made anew: its errors kept)
                 guard_stdout()
+            invoke = group.invoke
+
+            def told_now(ctx: object) -> object:
+                # ^C in the command: told as click's main tells it, but only if stderr takes
+                # it now, as on the plain path -- click's own blocking write of "Aborted!"
+                # into a pipe nobody reads (`2>&1 | less` left open) waited for ever
+                # (review 62c F3)
+                try:
+                    return invoke(ctx)  # type: ignore[arg-type]
+                except KeyboardInterrupt:
+                    _tell_now("\nAborted!\n")
+                    sys.exit(1)
+
+            group.invoke = told_now  # type: ignore[method-assign]
             group(prog_name=prog_name)
         except SystemExit as done:
             if not clean_exit and _stopped(done):
                 _drop_pipes()
+                from formats.stops import TAKEN
+
+                # the stop is obeyed: the exit's flush raises it no more (a ^C noted twice,
+                # by the handler and by a batch's map, failed that flush: exit 120)
+                TAKEN.clear()
             raise
         return
     try:

@@ -613,3 +613,40 @@ def test_a_check_whose_report_waits_on_a_full_pipe_ends_at_a_signal_that_interru
         proc.stderr.close()
     assert err.startswith(b"aimed\n"), err
     assert code == (1 if signum == signal.SIGINT else 128 + signum), err
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "-p", "iso-mill", "-j", "2", "--", "big"],
+    ["check", "-p", "iso-mill", "--format", "jsonl", "--", "big"]], ids=["text", "jsonl"])
+def test_a_command_click_reads_stopped_with_stderr_in_its_full_pipe_ends(
+        place: Path, argv: list[str]) -> None:
+    """^C to a command click parses (``--`` before the files) whose stdout and stderr are one
+    pipe nobody reads (``2>&1 | less`` left open): it ends with ^C's 1, "Aborted!" written
+    only if stderr takes it at once, as on the plain path. Before, click's own write of it
+    waited on the full pipe for ever (review 62c F3)."""
+    (place / "big").mkdir()
+    for n in range(40):
+        (place / "big" / f"p{n}.nc").write_text(BAD * 400)
+    script = ("import sys\nfrom tapegate.launch import main\n"
+              "from formats.files import exit_on_termination\nexit_on_termination()\n"
+              f"sys.argv = ['tapegate', *{argv!r}]\nmain()\n")
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT,
+                            env={**os.environ, "PYTHONPATH": str(ROOT)},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        assert proc.stdout is not None
+        deadline = time.monotonic() + 60
+        while not _full(proc.stdout.fileno()):
+            assert proc.poll() is None, "the report ended before it filled the pipe"
+            assert time.monotonic() < deadline, "the command never filled the pipe"
+            time.sleep(0.01)
+        proc.send_signal(signal.SIGINT)
+        code = proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        assert proc.stdout is not None
+        proc.stdout.close()
+    assert code == 1
