@@ -624,17 +624,20 @@ impl Checker {
     /// 0i-MF Operator's Manual, "Local coordinate system"): the caller's spans from here are
     /// in the coordinates it sets, as after a G52 of its own. Where what it leaves is not
     /// surely known (a G92, a jump, condition or loop, a call not followed), as before: not
-    /// followed, the caller's spans read on unshifted. A program read apart that runs such
+    /// followed, the caller's spans read on unshifted; so where the call may not run, or not
+    /// from the body's start (`surely` false). A program read apart that runs such
     /// a call is read as before from here, as one that writes its own G52 is.
     #[cold]
     #[inline(never)]
-    pub(super) fn shift_carried(&mut self, number: i64) {
+    pub(super) fn shift_carried(&mut self, number: i64, surely: bool) {
         let Some(end) = self.shift_ends.get(&number).copied() else {
             return;
         };
-        // (where not surely known, as before: the caller's spans read on unshifted, erring
-        // on the side of the alarm)
-        let Some((axes, local)) = end else {
+        // (where not surely known, or the call may not run or not from the body's start
+        // (`surely`), as before: the caller's spans read on unshifted, erring on the side
+        // of the alarm; review 62a F7: `IF [#1 EQ 1] GOTO 5` / `M98 P2000` / `N5 G90` /
+        // `G0 X800.` runs X800. at 800 where the call is passed over)
+        let Some((axes, local)) = end.filter(|_| surely) else {
             self.shift_unsure = true;
             return;
         };
