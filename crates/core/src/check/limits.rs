@@ -860,7 +860,11 @@ impl Checker {
             .filter(|&i| i < 9);
         let (Some(g), Some(i)) = (g, axis) else {
             let writes = Written::unknown_of(g);
-            self.variable_spans(w, (1 << 9) - 1, line);
+            // (an index not known may name any variable, `#[#14]=#0` of a macro's table:
+            // the spans read on, as before)
+            if number.is_some() {
+                self.variable_spans(w, (1 << 9) - 1, line);
+            }
             return writes;
         };
         self.variable_spans(w, 1 << i, line);
