@@ -208,5 +208,6 @@ def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_p
                                                                            expected):
     """Review 60 F3: a work offset's system variable (FANUC Custom Macro B, #5221 + 20 a
     system) sets an axis of that offset, whichever: not followed, the offset's axes not
-    known, G10 before or not. A body written after the main runs under the shift at its calls, not the main's end's."""
+    known, G10 before or not. A body written after the main runs under the shift at its
+    calls, not the main's end's."""
     assert said(programs, _wo2(tmp_path)) == expected
