@@ -8,6 +8,8 @@ their end).
 
 from __future__ import annotations
 
+import os
+
 import pytest
 
 from formats.profile import load_profile
@@ -1394,10 +1396,8 @@ BODY_MOTION = [
     # a body that ends the program after its G2: no line after its call runs
     ("o100 sub\nG2 X1 Y0 I0.5 J0\nM2\no100 endsub\no1 if [#5220 GT 0]\no100 call\nZ0.5\n"
      "o1 endif", None),
-    # a definition written after M2: rs274 finds it when the call runs, so the move after
-    # the call is judged at its endsub (the first such move; lcnc61's miss)
-    ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", 4),
-    ("o100 call\nG1 X0\no100 call\nX3\nM2\no100 sub\nG3 X1 Y0 R1\no100 endsub", 6),
+    # a definition written after M2: rs274 runs a file 100.ngc on its subroutine path
+    # first where there is one, so the mode after the call is held (LATER_CALLS below)
     ("o100 call\nG1 X2\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
     ("o100 call\nX2 R1\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub", None),
     ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\nM2\no100 endsub", None),
@@ -1417,6 +1417,69 @@ def test_a_definition_s_motion_mode_is_its_calls_not_the_lines_after_it(tmp_path
         return
     assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
     assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+
+
+# A call of a label with no definition read yet: rs274 first looks for a file named after the
+# label on its subroutine path (the current directory standalone) and runs it, else the
+# definition written after M2 (interp_o_word.cc). The checker cannot see that path, so the
+# mode the call leaves, and the sure modes and kept positions of later calls, are held (review
+# 62b F2; lcnc62 judged the move at the later definition's endsub). (the blocks after HEAD, and
+# the file 100.ngc beside it under which rs274 runs to its end)
+LATER_CALLS = [
+    ("o100 call\nZ0.5\nM2\no100 sub\nG2 X1 Y0 I0.5 J0\no100 endsub",
+     "o100 sub\nG1 X0\no100 endsub\nM2\n"),
+    ("o100 call\nG1 X0\no100 call\nX3\nM2\no100 sub\nG3 X1 Y0 R1\no100 endsub",
+     "o100 sub\nG1 X0\no100 endsub\nM2\n"),
+]
+
+
+def rs274_in(directory, text: str) -> str:
+    """rs274 -g of ``text`` run in ``directory`` (its subroutine path)."""
+    import shutil
+    import subprocess
+
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+    (directory / "program.ngc").write_text(text)
+    run = subprocess.run(["rs274", "-g", "program.ngc"], capture_output=True, text=True,
+                         timeout=30, input="", cwd=directory,
+                         env={**os.environ, "HOME": str(directory)})
+    return run.stdout + run.stderr
+
+
+@pytest.mark.parametrize("body, file", LATER_CALLS)
+def test_a_call_of_a_definition_written_after_it_is_held(tmp_path, body, file):
+    text = program(body)
+    assert errors(text) == [], text
+    # (no 100.ngc: the later definition's G2 is in force at the move)
+    assert "R i j k words all missing for arc" in rs274_in(tmp_path, text)
+    (tmp_path / "100.ngc").write_text(file)
+    assert "PROGRAM_END" in rs274_in(tmp_path, text)
+
+
+# After a call of a definition not read yet whose body ends the program (its M2), no line after
+# it runs: a later call's sure mode (a G1 body) or kept position (a still body) is not used
+# there (review 62b F3; lcnc62 said "Start point too close to probe point" at the G38.2).
+LATER_ENDS = [
+    "o100 sub\nG1 X1 F10\no100 endsub\no300 call\no100 call\nZ0.5\nG38.2 Z0.5\nM2\n"
+    "o300 sub\nM8\nM2\no300 endsub",
+    "o100 sub\nM8\no100 endsub\no300 call\nG0 Z0\no100 call\nG38.2 Z0\nM2\n"
+    "o300 sub\nG3 I1 J0\nM2\no300 endsub",
+    # a body's do loop ending in G2 (review 62b LE5)
+    "o300 call\n#2=0\no300 call\no100 sub\no102 do\nG2 X1 Y0 I0.5 J0\n#2=[#2+1]\n"
+    "o102 while [#2 LT 1]\no100 endsub\nG1 X0\no100 call\nZ0.5\nM2\n"
+    "o300 sub\nG3 I1 J0\nM2\no300 endsub",
+    # the caller's G2 before the call of a G1 body, after the held call: not known, no arc
+    "o300 call\no100 sub\nG1 X2\no100 endsub\nG2 X1 Y0 I0.5 J0\no100 call\nZ0.5\nM2\n"
+    "o300 sub\nM8\no300 endsub",
+]
+
+
+@pytest.mark.parametrize("body", LATER_ENDS)
+def test_lines_after_a_call_that_may_end_the_program_take_no_new_sure_state(tmp_path, body):
+    text = "G21 G17 G90 F100\nG0 X0 Y0 Z0\n" + body + "\n"
+    assert errors(text) == [], text
+    assert "PROGRAM_END" in rs274_output(tmp_path, text)
 
 
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at

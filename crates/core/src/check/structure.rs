@@ -3843,6 +3843,33 @@ impl Checker {
             }
         }
         self.linuxcnc_motion_plain = called && plain && before_plain;
+        // (a call of the main program of a label with no definition read yet: rs274 first
+        // looks for a file named after the label on its subroutine path, which the checker
+        // cannot see, and runs it if found (interp_o_word.cc, control_back_to; review 62b
+        // F2: `o<foo> call` / `Z0.5` / `M2` / `o<foo> sub` / `G2 I0.5 J0` / `o<foo> endsub`
+        // runs where a foo.ngc of a G1 is on the path); either body may end the program
+        // (review 62b F3). The mode it leaves is not judged, and no mode a later call
+        // surely leaves (from a plain body or a `do` loop), in the main program after
+        // it: held; review 62b LE5)
+        if self.open_definition.is_none()
+            && b.statements.iter().any(|&(_, kind, text)| {
+                kind == Kind::Call && {
+                    let label = self.linuxcnc_call_label(text);
+                    crate::statement::computed_label(&label)
+                        || !self.linuxcnc_defined.contains(&label)
+                }
+            })
+        {
+            self.linuxcnc_later.unread = true;
+        }
+        if self.linuxcnc_later.unread && self.open_definition.is_none() {
+            if left.is_some() {
+                // (a body that may leave another mode than the caller's: not known)
+                self.machine.state.motion = None;
+                self.machine.state.cycle = None;
+            }
+            return;
+        }
         if let Some(motion) = left {
             // (a G0-G3 ends a cycle in force)
             self.machine.state.motion = motion;
@@ -3858,17 +3885,6 @@ impl Checker {
             (None, Some((_, m))) if !called => Some(m),
             _ => None,
         };
-        // (a call of the main program of one definition not read yet: its mode is judged
-        // at the definition's endsub)
-        if let [(_, Kind::Call, text)] = b.statements {
-            let label = self.linuxcnc_call_label(text);
-            if self.open_definition.is_none()
-                && !crate::statement::computed_label(&label)
-                && !self.linuxcnc_defined.contains(&label)
-            {
-                self.linuxcnc_later.pending = Some((label, b.line));
-            }
-        }
         if let Some(m) = sure {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(m * 10));
             self.linuxcnc_motion_plain = false;
@@ -3930,7 +3946,8 @@ impl Checker {
     #[inline(never)]
     fn linuxcnc_still_call(&mut self, b: &BlockView<'_>, text: &[u8]) {
         let label = self.linuxcnc_call_label(text);
-        let still = b.statements.len() == 1
+        let still = !self.linuxcnc_later.unread
+            && b.statements.len() == 1
             && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
             && !crate::statement::computed_label(&label)
             && self.linuxcnc_defined.contains(&label)
@@ -5899,6 +5916,12 @@ pub(super) struct LaterCalls {
     /// rate that is surely zero, and no o-word line, call or other M70-M73 came since
     /// ([`Checker::linuxcnc_feed_unfollowed`]).
     pub(super) body_zero_saved: bool,
+    /// The main program called a label with no definition read before the call (or a
+    /// computed one): rs274 may run a file of that name on its subroutine path, or the
+    /// definition written after, either of which may end the program; the sure modes and
+    /// kept positions after later calls of the main program are not used (review 62b F2,
+    /// F3).
+    pub(super) unread: bool,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
