@@ -79,3 +79,37 @@ def test_a_later_program_s_effects_after_its_return(tmp_path, later, expected):
 def test_positions_after_a_later_call_held(tmp_path, programs, expected):
     """Review 62a F1, F2, F3, F5: each a false error of flow62 (OLD said nothing)."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("write, moves, expected", [
+    # (sv4: G55's X written, its Y still the profile's: Y-420. said)
+    ("#5241=0.", "G90 G55 / G0 Y-420.",
+     [("TG601", 7, 4, "Y goes to -420 in machine coordinates (work -420 + G55 offset 0.0)")]),
+    # (a value not known: X alone not known, Y still said)
+    ("#5241=#500", "G90 G55 / G0 Y-420.",
+     [("TG601", 7, 4, "Y goes to -420 in machine coordinates (work -420 + G55 offset 0.0)")]),
+    ("#5241=#500", "G90 G55 / G0 X-700.", []),
+    # (sv10: a number written is followed as G10 L2 P2 X-150. is: -870)
+    ("#5241=-150.", "G0 X-720.",
+     [("TG601", 6, 4, "X goes to -870 in machine coordinates (work -720 + G55 offset -150 as "
+                      "a G10 before wrote it)")]),
+    # (#5242 is G55's Y: X still the profile's -100)
+    ("#5242=-150.", "G0 X-720.",
+     [("TG601", 6, 4, "X goes to -820 in machine coordinates (work -720 + G55 offset -100.0)")]),
+    # (an index not known, the external offset: every axis not known, as before)
+    ("#[5241+#1]=0.", "G90 G55 / G0 Y-420.", []),
+    ("#5201=0.", "G90 G55 / G0 Y-420.", []),
+])
+def test_a_work_offset_variable_writes_its_own_axis(tmp_path, write, moves, expected):
+    """Review 62a F10 (sv4, sv10): `#5241=` made every axis of G55 not known, and a number
+    written was taken as not known. #5221 + 20 * (n - 1) + (axis - 1) is G54-G59's axis in
+    the control's order (FANUC Custom Macro B, "System variables"), a mill's X, Y, Z."""
+    program = f"O1000 / G21 G17 G90 G55 / G0 X0 Y0 / {write} / {moves} / M30"
+    assert said(program, _wo2(tmp_path)) == expected
+
+
+def test_a_work_offset_variable_write_starts_the_span_again(tmp_path):
+    """Review 62a F10 (sv13): X850. under G55 runs at 750, then `#5241=150.` moves G55 and
+    X-700. runs at -550; the span -700..850 is no span of one offset (was said: 1550)."""
+    program = "O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G0 X850. / #5241=150. / G0 X-700. / M30"
+    assert said(program, _wo2(tmp_path)) == []

@@ -154,6 +154,38 @@ def test_a_g52_a_called_program_leaves_on_is_its_caller_s_after_the_call(tmp_pat
     assert said(programs, _wo2(tmp_path)) == expected
 
 
+_SPAN_1550 = [("TG601", None, 4, "X spans 1550 (from -750 to 800), more than the travel -762 "
+                                  "to 762: no work offset fits the program on this machine")]
+
+
+@pytest.mark.parametrize("call", [
+    # (g70: a condition may pass over the call)
+    "IF [#1 EQ 1] GOTO 5 / M98 P2000 / N5 G90",
+    # (g71: a loop that may run no time)
+    "#1=0 / WHILE [#1 LT #2] DO1 / M98 P2000 / #1=#1+1 / END1 / G90",
+    # (g76: a modal call with no move under it: O2000 never runs)
+    "G66 P2000 / G67 / G90",
+    # (g77b: M98 P.. Q10 enters O2000 at its N10, after the G52)
+    "M98 P2000 Q10 / G90",
+    # (g74: a block the skip switch may pass over)
+    "/M98 P2000 / G90",
+])
+def test_a_g52_is_not_carried_from_a_call_that_may_not_run_from_its_start(tmp_path, call):
+    """Review 62a F7: the G52 a called program leaves is carried only where the call surely
+    runs and enters the body at its start; elsewhere the caller's spans read on unshifted,
+    erring on the side of the alarm, as before the carry (where the call is passed over,
+    X800. runs at 800: the span 1550 is true)."""
+    programs = ("O2000 / G52 X-1000. / N10 M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+                f"{call} / G0 X800. / M30")
+    line = 2 + programs.count(" / ") - 1
+    assert said(programs, _wo2(tmp_path)) == [
+        (rule, line, column, message) for rule, _, column, message in _SPAN_1550]
+    # (the call surely run from its start: carried, the span fits)
+    programs = ("O2000 / G52 X-1000. / N10 M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+                "M98 P2000 / G90 / G0 X800. / M30")
+    assert said(programs, _wo2(tmp_path)) == []
+
+
 @pytest.mark.parametrize("programs, expected", [
     # (review 60 F3, v1: G55's X set by its variable with no G10 before: not known)
     ("O1000 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / #5241=0. / "
@@ -176,5 +208,6 @@ def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_p
                                                                            expected):
     """Review 60 F3: a work offset's system variable (FANUC Custom Macro B, #5221 + 20 a
     system) sets an axis of that offset, whichever: not followed, the offset's axes not
-    known, G10 before or not. A body written after the main runs under the shift at its calls, not the main's end's."""
+    known, G10 before or not. A body written after the main runs under the shift at its
+    calls, not the main's end's."""
     assert said(programs, _wo2(tmp_path)) == expected

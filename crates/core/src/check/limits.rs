@@ -624,17 +624,20 @@ impl Checker {
     /// 0i-MF Operator's Manual, "Local coordinate system"): the caller's spans from here are
     /// in the coordinates it sets, as after a G52 of its own. Where what it leaves is not
     /// surely known (a G92, a jump, condition or loop, a call not followed), as before: not
-    /// followed, the caller's spans read on unshifted. A program read apart that runs such
+    /// followed, the caller's spans read on unshifted; so where the call may not run, or not
+    /// from the body's start (`surely` false). A program read apart that runs such
     /// a call is read as before from here, as one that writes its own G52 is.
     #[cold]
     #[inline(never)]
-    pub(super) fn shift_carried(&mut self, number: i64) {
+    pub(super) fn shift_carried(&mut self, number: i64, surely: bool) {
         let Some(end) = self.shift_ends.get(&number).copied() else {
             return;
         };
-        // (where not surely known, as before: the caller's spans read on unshifted, erring
-        // on the side of the alarm)
-        let Some((axes, local)) = end else {
+        // (where not surely known, or the call may not run or not from the body's start
+        // (`surely`), as before: the caller's spans read on unshifted, erring on the side
+        // of the alarm; review 62a F7: `IF [#1 EQ 1] GOTO 5` / `M98 P2000` / `N5 G90` /
+        // `G0 X800.` runs X800. at 800 where the call is passed over)
+        let Some((axes, local)) = end.filter(|_| surely) else {
             self.shift_unsure = true;
             return;
         };
@@ -805,6 +808,100 @@ impl Checker {
             }
         }
         Some(values)
+    }
+
+    /// The place in [`crate::modal::AXES`] of the axis a work offset system variable's
+    /// `j`-th (0 the first) names, where it can be named surely: FANUC Custom Macro B and
+    /// a Haas ("System variables", #5221 + 20 * (n - 1) + (axis - 1), the control's axes
+    /// in order) on a profile whose travel names X, Y and Z, a mill's first three; its 4th
+    /// and later the profile's other axes in its order; LinuxCNC's parameters X Y Z A B C
+    /// U V W (its 10th, #5230, the rotation: none). None: every axis of the offset.
+    fn variable_axis(&self, j: usize) -> Option<usize> {
+        if self.config.family == Family::LinuxCnc {
+            return b"XYZABCUVW"
+                .get(j)
+                .and_then(|&l| crate::modal::axis_index(l));
+        }
+        let named = |l: u8| self.config.travel.iter().any(|t| t.0 == l);
+        if self.config.diameter || !(named(b'X') && named(b'Y') && named(b'Z')) {
+            return None;
+        }
+        if j < 3 {
+            return crate::modal::axis_index(b"XYZ"[j]);
+        }
+        self.config
+            .travel
+            .iter()
+            .filter(|t| !matches!(t.0, b'X' | b'Y' | b'Z'))
+            .nth(j - 3)
+            .and_then(|t| crate::modal::axis_index(t.0))
+            .filter(|_| self.config.travel.len() >= 4)
+    }
+
+    /// What a work offset system variable's assignment (`w`, its number `number`, of offset
+    /// G54-G59 `g`, every one where None) writes: the axis it names with the value where
+    /// it is a number surely run (as [`Checker::g10_writes`]'s G10 L2 P2 X-150.), the
+    /// axis alone not known where its value is not; every axis of the offset not known
+    /// where the axis cannot be named. A value known that the positions cannot be judged
+    /// with loses the offsets as a G10's does. LinuxCNC applies a write of the offset in
+    /// force at its next selection only (rs274): not known there.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn variable_writes(
+        &mut self,
+        w: &crate::word::Word<'_>,
+        g: Option<usize>,
+        number: Option<u32>,
+        line: usize,
+    ) -> Written {
+        let axis = g
+            .zip(number)
+            .and_then(|(_, n)| self.variable_axis((n as usize - 5221) % 20))
+            .filter(|&i| i < 9);
+        let (Some(g), Some(i)) = (g, axis) else {
+            let writes = Written::unknown_of(g);
+            // (an index not known may name any variable, `#[#14]=#0` of a macro's table:
+            // the spans read on, as before)
+            if number.is_some() {
+                self.variable_spans(w, (1 << 9) - 1, line);
+            }
+            return writes;
+        };
+        self.variable_spans(w, 1 << i, line);
+        let mut writes = Written::default();
+        writes.axes[g] = 1 << i;
+        writes.values[g] = [f64::NAN; 9];
+        let in_force = self.work == Some(54 + g as i64);
+        let literal = w.expression.is_empty()
+            && !self.jumped
+            && !(in_force && self.config.family == Family::LinuxCnc);
+        if literal {
+            let text = [w.sign, w.number].concat();
+            if let Some(v) = std::str::from_utf8(&text).ok().and_then(Dec::parse) {
+                writes.values[g][i] = v.to_f64() * self.to_profile_units(false);
+            }
+        }
+        if !writes.values[g][i].is_nan() && !self.g10_followed(&writes, false) {
+            self.offsets_rewritten(line, "a work offset's system variable sets offsets");
+        }
+        writes
+    }
+
+    /// A work offset system variable's write (`w`) of `axes` (their places' bits) may set
+    /// the offset of the work system in force: their spans start again, as at a G10
+    /// (`G0 X850.` / `#5241=150.` / `G0 X-700.` under G55 is no span of 1550).
+    fn variable_spans(&mut self, w: &crate::word::Word<'_>, axes: u16, line: usize) {
+        let mut lost = 0u16;
+        for a in 0..9 {
+            if axes & 1 << a != 0 && self.restart_span(a, false) {
+                lost |= 1 << a;
+            }
+        }
+        self.shifts.settle();
+        if lost != 0 {
+            let why = "it may set the offset of the work system in force";
+            self.shift_note(&w.token(), lost, (line, w.column), why);
+        }
     }
 
     /// A G10 whose writes of G54-G59 are all of values known (`g10_writes`: an L2 P1-P6 of

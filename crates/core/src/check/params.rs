@@ -1510,14 +1510,15 @@ impl Checker {
             // (a program read apart with no offset in force: its positions after it are
             // not its caller's offset's)
             self.work_unplaced = false;
-            // (every axis of that offset, written by a G10 before or not: review 60 F3,
-            // `#5241=0.` / `G90 G55` / `M98 P1000` ran O1000's X-700. at -700, and it was
-            // judged with the profile's -100)
-            let unknown = super::limits::Written::unknown_of(g);
-            self.offsets_written.then(&unknown);
+            // (the axis the variable names, its value where a number surely run, as a G10
+            // L2 writes it; every axis of that offset where the axis cannot be named:
+            // review 60 F3, `#5241=0.` / `G90 G55` / `M98 P1000` ran O1000's X-700. at
+            // -700, and it was judged with the profile's -100; review 62a F10)
+            let writes = self.variable_writes(w, g, number, b.line);
+            self.offsets_written.then(&writes);
             // (and where a call the checker does not follow runs the program in hand, or
             // a caller calls it)
-            self.offset_writer(&unknown, false);
+            self.offset_writer(&writes, false);
         }
     }
 

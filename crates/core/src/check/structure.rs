@@ -394,7 +394,19 @@ impl Checker {
         let (call, column) = self.call_words(b);
         self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
         if let Some((writes, loses)) = self.offset_writers.get(&number).cloned() {
-            self.shift_carried(number);
+            // (a call that surely runs and enters the body at its start: not behind a
+            // jump, condition or loop of the caller's, not a modal call (G66, run at the
+            // moves after it, or none), not `M98 P.. Q..` entering at a sequence number,
+            // not a skippable block; review 62a F7)
+            let surely = !self.jumped
+                && !b.skip
+                && b.skip_within.is_none()
+                && !self.values.gs().contains(&66)
+                && !b
+                    .words
+                    .iter()
+                    .any(|w| w.letter == b'Q' && w.index.is_empty());
+            self.shift_carried(number, surely);
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
             if loses {
