@@ -82,17 +82,26 @@ def _path(name: str, text: str) -> str | None:
     return os.path.join(folder, f"profile-{name}-{crc32(text.encode('utf-8')):08x}.marshal")
 
 
+def _unmarshal(path: str | None = None, blob: bytes = b"") -> Any:
+    """What marshal reads from the file ``path`` (or from ``blob``), or None where it cannot:
+    the file missing or unreadable, the bytes damaged (marshal may raise SystemError too, or
+    any other error: a cache never decides a run)."""
+    try:
+        if path is not None:
+            with open(path, "rb") as f:
+                blob = f.read()  # (marshal.load reads a file a few bytes at a time)
+        return marshal.loads(blob)
+    except Exception:
+        return None
+
+
 def load(name: str, text: str) -> dict[str, Any] | None:
     """The parsed TOML kept for the profile ``name`` whose text is ``text``, or None
     (no entry, another text, an entry that cannot be read)."""
     path = _path(name, text)
     if path is None:
         return None
-    try:
-        with open(path, "rb") as f:
-            entry = marshal.loads(f.read())  # (marshal.load reads a file a few bytes at a time)
-    except Exception:  # (a damaged entry: marshal may raise SystemError too; a cache never
-        return None    # decides a run)
+    entry = _unmarshal(path)
     if not (type(entry) is tuple and len(entry) == 4 and entry[0] == KEY and entry[1] == text
             and type(entry[3]) is bytes):
         return None
@@ -100,10 +109,7 @@ def load(name: str, text: str) -> dict[str, Any] | None:
 
     if crc32(entry[3]) != entry[2]:  # the table damaged on disk: parsed again, and rewritten
         return None
-    try:
-        data = marshal.loads(entry[3])
-    except Exception:
-        return None
+    data = _unmarshal(blob=entry[3])
     return data if type(data) is dict else None
 
 
@@ -179,11 +185,7 @@ def load_spec(key: bytes) -> dict[str, Any] | None:
     code = _code()
     if path is None or code is None:
         return None
-    try:
-        with open(path, "rb") as f:
-            entry = marshal.loads(f.read())
-    except Exception:  # (any error of a damaged entry: see load)
-        return None
+    entry = _unmarshal(path)
     if not (type(entry) is tuple and len(entry) == 5 and entry[0] == SPEC_KEY
             and entry[1] == code and entry[2] == key and type(entry[4]) is bytes):
         return None
@@ -191,10 +193,7 @@ def load_spec(key: bytes) -> dict[str, Any] | None:
 
     if crc32(entry[4]) != entry[3]:  # damaged on disk: made again, and rewritten
         return None
-    try:
-        spec = marshal.loads(entry[4])
-    except Exception:
-        return None
+    spec = _unmarshal(blob=entry[4])
     return spec if type(spec) is dict else None
 
 
@@ -346,11 +345,7 @@ def load_compiled(name: str, load: Callable[[], Any]) -> Compiled | None:
     code = _module_files()
     if code is None:
         return None
-    try:
-        with open(path, "rb") as f:
-            entry = marshal.loads(f.read())
-    except Exception:  # (any error of a damaged entry: see load)
-        return None
+    entry = _unmarshal(path)
     if not (type(entry) is tuple and len(entry) == 6 and entry[0] == COMPILED_KEY
             and entry[1] == code and entry[2] == name and entry[3] == text
             and type(entry[5]) is bytes):
@@ -359,10 +354,7 @@ def load_compiled(name: str, load: Callable[[], Any]) -> Compiled | None:
     # compared whole above)
     if _checksum(entry[5]) != entry[4]:  # damaged on disk: made again, and rewritten
         return None
-    try:
-        kept = marshal.loads(entry[5])
-    except Exception:
-        return None
+    kept = _unmarshal(blob=entry[5])
     if not (type(kept) is tuple and len(kept) == 2 and type(kept[1]) is dict):
         return None
     flags, spec = kept
