@@ -216,6 +216,23 @@ def test_a_conversion_to_stdout_stopped_leaves_no_temporary_folder(tmp_path, sig
     assert list(temp.iterdir()) == []
 
 
+def ended(proc: subprocess.Popen[bytes], timeout: float) -> tuple[int, bytes]:
+    """The exit code of ``proc`` and what it wrote to its standard error (a pipe), once it has
+    ended within ``timeout`` seconds; else it is killed and the wait's TimeoutExpired raised.
+    Its pipes are closed either way."""
+    try:
+        code = proc.wait(timeout=timeout)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        err = proc.stderr.read() if proc.stderr is not None else b""
+        for pipe in (proc.stdin, proc.stdout, proc.stderr):
+            if pipe is not None:
+                pipe.close()
+    return code, err
+
+
 # The lost wake-up, made every time. A signal that lands after the interpreter's last look at
 # its pending handlers and before the write's system call starts runs only the C part of the
 # handler; the write then blocks on the full pipe for ever, the signal spent and no EINTR to
@@ -264,16 +281,7 @@ def test_a_signal_that_never_interrupts_the_write_to_stdout_still_stops_it(tmp_p
     proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, preexec_fn=_default_sigint,
                             env={**os.environ, "PYTHONPATH": str(ROOT), "TMPDIR": str(temp)})
-    try:
-        code = proc.wait(timeout=30)  # (the pipe is never read: a write waits for good)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        assert proc.stdout is not None and proc.stderr is not None
-        err = proc.stderr.read()
-        proc.stdout.close()
-        proc.stderr.close()
+    code, err = ended(proc, 30)  # (the pipe is never read: a write waits for good)
     assert err.startswith(b"aimed\n"), err
     assert code == (1 if signum == signal.SIGINT else 128 + signum), err
     if signum == signal.SIGINT:

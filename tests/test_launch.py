@@ -592,7 +592,7 @@ def test_a_check_whose_report_waits_on_a_full_pipe_ends_at_a_signal_that_interru
     check with one job leaves SIGTERM's default action, which ends it anyway). Standard
     output, a pipe, is written by way of a poll that the signal's wakeup fd ends
     (formats.stops.guard_stdout), by a plain check and by one click reads alike."""
-    from tests.test_convert_interrupt import AIMED
+    from tests.test_convert_interrupt import AIMED, ended
 
     (place / "big").mkdir()
     for n in range(40):
@@ -601,16 +601,7 @@ def test_a_check_whose_report_waits_on_a_full_pipe_ends_at_a_signal_that_interru
     proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, env={**os.environ, "PYTHONPATH": str(ROOT)},
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    try:
-        code = proc.wait(timeout=30)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        assert proc.stdout is not None and proc.stderr is not None
-        err = proc.stderr.read()
-        proc.stdout.close()
-        proc.stderr.close()
+    code, err = ended(proc, 30)
     assert err.startswith(b"aimed\n"), err
     assert code == (1 if signum == signal.SIGINT else 128 + signum), err
 
