@@ -48,7 +48,7 @@ import sys
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Iterable
     from typing import Any
 
 __all__ = ["Compiled", "directory", "load", "load_compiled", "load_spec", "spec_key", "store",
@@ -142,10 +142,14 @@ def _code() -> tuple[tuple[str, int, int], ...] | None:
     update of tapegate writes them anew (tapegate's version is read only from its installed
     metadata, ``importlib.metadata``: more than the spec costs to make); an edited module has
     another size or time."""
+    return _stats(getattr(sys.modules.get(name), "__file__", None) for name in _SPEC_MODULES)
+
+
+def _stats(paths: Iterable[str | None]) -> tuple[tuple[str, int, int], ...] | None:
+    """(path, size, modification time in ns) of each of ``paths``; None where one is None or
+    cannot be read."""
     found: list[tuple[str, int, int]] = []
-    for name in _SPEC_MODULES:
-        module = sys.modules.get(name)
-        path = getattr(module, "__file__", None)
+    for path in paths:
         if path is None:
             return None
         try:
@@ -239,21 +243,10 @@ def _module_files() -> tuple[tuple[str, int, int], ...] | None:
     name (the core's, the path it was loaded from); None where one cannot be read (a module
     kept only as its ``.pyc``: no entry)."""
     folder = os.path.dirname(__file__)
-    core = sys.modules.get("formats._core")
-    found: list[tuple[str, int, int]] = []
-    for name in _SPEC_MODULES:
-        if name == "formats._core":
-            path = getattr(core, "__file__", None)
-            if path is None:
-                return None
-        else:
-            path = os.path.join(folder, name.rpartition(".")[2] + ".py")
-        try:
-            info = os.stat(path)
-        except OSError:
-            return None
-        found.append((path, info.st_size, info.st_mtime_ns))
-    return tuple(found)
+    core = getattr(sys.modules.get("formats._core"), "__file__", None)
+    return _stats(core if name == "formats._core"
+                  else os.path.join(folder, name.rpartition(".")[2] + ".py")
+                  for name in _SPEC_MODULES)
 
 
 def _compiled_path(name: str) -> tuple[str, bytes] | None:
