@@ -42,6 +42,18 @@ def load(name: str) -> profile_cache.Compiled | None:
     return profile_cache.load_compiled(name, lambda: load_profile(name))
 
 
+def unframed(path: Path) -> bytes:
+    """The marshalled entry inside the frame of the file ``path``."""
+    blob = profile_cache._unframe(path.read_bytes())
+    assert blob is not None
+    return bytes(blob)
+
+
+def write_framed(path: Path, blob: bytes) -> None:
+    """``blob`` written as an entry file, in a frame that agrees with it."""
+    path.write_bytes(profile_cache._frame(blob))
+
+
 @pytest.mark.parametrize("name", builtin_names())
 def test_an_entry_reads_back_the_profiles_flags_and_spec(cache, name):
     profile = load_profile(name)
@@ -115,9 +127,9 @@ def test_an_entry_of_other_code_or_another_name_is_ignored(cache, monkeypatch):
     assert load("haas-mill") is not None
     # fanuc-mill's entry under haas-mill's name: the name kept in it is compared
     entry, = entries(cache)
-    fields = list(marshal.loads(entry.read_bytes()))
+    fields = list(marshal.loads(unframed(entry)))
     fields[2] = "fanuc-mill"
-    entry.write_bytes(marshal.dumps(tuple(fields)))
+    write_framed(entry, marshal.dumps(tuple(fields)))
     assert load("haas-mill") is None
 
 
@@ -133,7 +145,7 @@ def test_a_damaged_entry_is_ignored_and_written_again(cache, damage):
     elif damage == "empty":
         data = b""
     else:
-        data = marshal.dumps(("tapegate-compiled-profile", 0))
+        data = profile_cache._frame(marshal.dumps(("tapegate-compiled-profile", 0)))
     entry.write_bytes(data)
     assert load("haas-mill") is None
     assert kept("haas-mill") is not None  # written again
@@ -234,18 +246,20 @@ def test_an_entry_marshal_raises_any_error_on_is_ignored_and_written_again(cache
         again = lambda: profile_cache.store_spec(key, machine_spec(profile))  # noqa: E731
     before = value()
     assert before
-    good = path.read_bytes()
-    if where == "file":
-        path.write_bytes(bad)
-    else:  # the inner blob, with its checksum made to agree
+    good = unframed(path)
+    if where == "file":  # the whole entry, its frame made to agree
+        write_framed(path, bad)
+    elif kind == "compiled":  # the spec, the frame made to agree
         fields = list(marshal.loads(good))
-        if kind == "compiled":
-            fields[4], fields[5] = profile_cache._checksum(bad), bad
-        else:
-            import zlib
+        head = marshal.dumps(tuple(fields[:5]))  # a small tuple: its type, its count 5
+        assert head[0] & 0x7F == ord(")") and head[1] == 5
+        write_framed(path, head[:1] + bytes([6]) + head[2:] + bad)
+    else:  # the inner blob, with its CRC-32 and the frame made to agree
+        import zlib
 
-            fields[-2], fields[-1] = zlib.crc32(bad), bad
-        path.write_bytes(marshal.dumps(tuple(fields)))
+        fields = list(marshal.loads(good))
+        fields[-2], fields[-1] = zlib.crc32(bad), bad
+        write_framed(path, marshal.dumps(tuple(fields)))
     assert value() is None
     again()  # (what a run does on finding none)
     assert value() == before  # written again
@@ -254,24 +268,84 @@ def test_an_entry_marshal_raises_any_error_on_is_ignored_and_written_again(cache
 
 def test_no_one_byte_change_of_an_entry_is_trusted(cache):
     """Every byte the entry is trusted for -- the dialect's flags as much as the spec -- is
-    under its checksum or compared whole (review 62c F1: a flag flipped from True to False
-    was read back, wrong findings on every run): one byte changed anywhere gives the entry's
-    own flags and spec or no entry, never an error."""
+    under its frame's checksum (review 62c F1: a flag flipped from True to False was read
+    back, wrong findings on every run): one byte changed anywhere in the file is no entry,
+    never an error."""
     name = "haas-mill"
-    profile = load_profile(name)
     assert kept(name) is not None
     entry, = entries(cache)
     good = entry.read_bytes()
-    flags, spec = profile.dialect.flags, machine_spec(profile)
-    text = (Path(profile_cache._BUILTIN) / f"{name}.toml").read_bytes()
-    start = good.find(text) + len(text)  # (the text before is compared whole)
-    assert start > len(text)
-    trusted = 0
-    for at in range(start, len(good)):  # the checksum and its blob: the flags and the spec
+    trusted = []
+    # (each byte of the head, the key, the code and the text; every 61st after it: the
+    # checksum's own test tells each byte of a spec)
+    for at in [*range(min(len(good), 2000)), *range(2000, len(good), 61)]:
         for bit in (0x01, ord("T") ^ ord("F")):
             entry.write_bytes(good[:at] + bytes([good[at] ^ bit]) + good[at + 1:])
-            found = load(name)
-            if found is not None:
-                trusted += 1
-                assert (found._flags, found._spec) == (flags, spec), (at, bit)
-    assert trusted == 0
+            if load(name) is not None:
+                trusted.append((at, bit))
+    assert trusted == []
+    entry.write_bytes(good)
+    assert load(name) is not None
+
+
+class _Marshal:
+    """profile_cache's marshal, its loads counted."""
+
+    def __init__(self) -> None:
+        self.loads_called = 0
+
+    def loads(self, data):
+        self.loads_called += 1
+        return marshal.loads(data)
+
+    dumps = staticmethod(marshal.dumps)
+
+
+@pytest.mark.parametrize("where", ["checksum", "length", "type", "count", "payload", "last",
+                                   "cut", "longer"])
+@pytest.mark.parametrize("kind", ["compiled", "table", "spec"])
+def test_a_damaged_frame_is_no_entry_before_marshal_reads_it(cache, monkeypatch, kind, where):
+    """The frame's length and checksum are checked before marshal reads a byte: a damaged
+    outer type byte (the tuple's ``)`` made ``(``, whose 4-byte count marshal took for up to
+    2**31 items: 10-42 s of allocation before it failed) or any other byte is no entry at
+    once, for each kind of entry, and it is written again."""
+    name = "haas-mill"
+    profile = load_profile(name)
+    text = (Path(profile_cache._BUILTIN) / f"{name}.toml").read_text()
+    if kind == "compiled":
+        assert kept(name) is not None
+        path, = entries(cache)
+        value = lambda: (lambda c: c and (c._flags, c._spec))(load(name))  # noqa: E731
+        again = lambda: keep_compiled(name, load_profile(name))  # noqa: E731
+    elif kind == "table":
+        path = Path(profile_cache._path(name, text) or "")
+        table = profile_cache.load(name, text)
+        value = lambda: profile_cache.load(name, text)  # noqa: E731
+        again = lambda: profile_cache.store(name, text, table)  # noqa: E731
+    else:
+        key = profile.__dict__["_spec_key"]
+        profile_cache.store_spec(key, machine_spec(profile))
+        path = Path(profile_cache._spec_path(key) or "")
+        value = lambda: profile_cache.load_spec(key)  # noqa: E731
+        again = lambda: profile_cache.store_spec(key, machine_spec(profile))  # noqa: E731
+    before = value()
+    assert before
+    good = path.read_bytes()
+    assert good[8] & 0x7F == ord(")")  # the entry: a small tuple, its count next
+    at = {"checksum": 1, "length": 5, "type": 8, "count": 9, "payload": len(good) // 2,
+          "last": len(good) - 1}.get(where)
+    if at is not None:
+        flip = 0x01 if where != "length" else 0x40
+        bad = good[:at] + bytes([good[at] ^ flip]) + good[at + 1:]
+    else:
+        bad = good[:-1] if where == "cut" else good + b"\0"
+    if where == "type":  # ')' -> '(': a tuple whose count is 4 bytes
+        assert bad[8] & 0x7F == ord("(")
+    path.write_bytes(bad)
+    spy = _Marshal()
+    monkeypatch.setattr(profile_cache, "marshal", spy)
+    assert value() is None
+    assert spy.loads_called == 0  # dropped before marshal read anything
+    monkeypatch.setattr(profile_cache, "marshal", marshal)
+    again()  # (what a run does on finding none)
+    assert path.read_bytes() != bad and value() == before  # written again

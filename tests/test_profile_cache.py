@@ -81,7 +81,15 @@ def entry(text: str, data: dict) -> bytes:
     """An entry as formats.profile_cache writes it: the key, the text, the CRC-32 of the
     marshalled table, the table."""
     table = marshal.dumps(data)
-    return marshal.dumps((profile_cache.KEY, text, zlib.crc32(table), table))
+    return profile_cache._frame(marshal.dumps((profile_cache.KEY, text, zlib.crc32(table),
+                                               table)))
+
+
+def read_entry(path: Path) -> object:
+    """What the entry file ``path`` holds, read inside its frame."""
+    blob = profile_cache._unframe(path.read_bytes())
+    assert blob is not None
+    return marshal.loads(blob)
 
 
 def test_a_profile_files_parsed_toml_is_kept_by_its_text(cache, monkeypatch, tmp_path):
@@ -124,20 +132,21 @@ def test_an_entry_holding_another_text_under_the_same_name_is_not_used(cache):
     path.write_bytes(entry("name = \"iso-mill\"\n", tomllib.loads(builtin_text("iso-mill"))))
     profile = load_profile("fanuc-mill")
     assert profile.name == "fanuc-mill" and profile != other
-    assert marshal.loads(path.read_bytes())[1] == builtin_text("fanuc-mill")  # written again
+    assert read_entry(path)[1] == builtin_text("fanuc-mill")  # written again
 
 
 @pytest.mark.parametrize("content", [
-    b"", b"not marshal at all", None, marshal.dumps(["a", "list"]),
-    marshal.dumps((("tapegate-profile-toml", 0, (3, 0), 0), "x", {})),
-], ids=["empty", "garbage", "cut-short", "not-an-entry", "another-format"])
+    b"", b"not marshal at all", None, profile_cache._frame(marshal.dumps(["a", "list"])),
+    profile_cache._frame(marshal.dumps((("tapegate-profile-toml", 0, (3, 0), 0), "x", {}))),
+    marshal.dumps((profile_cache.KEY, "x", 0, b"")),
+], ids=["empty", "garbage", "cut-short", "not-an-entry", "another-format", "not-framed"])
 def test_a_corrupt_entry_is_ignored_and_written_again(cache, content):
     good = entry(builtin_text("fanuc-mill"), tomllib.loads(builtin_text("fanuc-mill")))
     path = entry_path("fanuc-mill")
     path.parent.mkdir(parents=True)
     path.write_bytes(good[:len(good) // 2] if content is None else content)
     assert load_profile("fanuc-mill") == uncached("fanuc-mill")
-    assert marshal.loads(path.read_bytes()) == marshal.loads(good)
+    assert path.read_bytes() == good
 
 
 def test_a_damaged_byte_of_the_kept_table_is_found_and_the_entry_written_again(cache):
