@@ -21,7 +21,8 @@ Python, nothing to import) and read back next time; a profile file's entry is na
   of allocation before it failed) is no entry at once;
 - an entry that cannot be read, is cut short, is not an entry of this format or of this Python,
   or whose frame or parsed table does not match the checksum or CRC-32 kept with it (a damaged
-  byte) is ignored, and written again;
+  byte) is ignored, and written again; anything but a regular file at an entry's path (a FIFO,
+  a device, a folder) is no entry and is left as it is (opened without blocking: no wait);
 - a folder that cannot be created or written (read-only, a file in the way) is no error: the
   profile is parsed as without a cache. The entry is written to a temporary file and renamed,
   so a reader never sees half of one.
@@ -88,7 +89,7 @@ def _path(name: str, text: str) -> str | None:
 
 def _unmarshal(path: str | None = None, blob: bytes = b"") -> Any:
     """What marshal reads from the entry file ``path`` (or from ``blob``), or None where it
-    cannot: the file missing or unreadable, its frame's
+    cannot: the file missing, unreadable or no regular file (:func:`_read`), its frame's
     length or checksum not its bytes' (:func:`_unframe`: checked before marshal reads
     anything, so that a damaged type or length byte is not taken for a count of millions of
     items), the bytes damaged (marshal may raise SystemError too, or any other error: a cache
@@ -106,10 +107,26 @@ def _unmarshal(path: str | None = None, blob: bytes = b"") -> Any:
 
 
 def _read(path: str) -> bytes | None:
-    """The bytes of the file ``path``."""
-    with open(path, "rb") as f:
-        return f.read()  # (marshal.load reads a file a few bytes at a time)
+    """The bytes of the file ``path``, or None where it is no regular file: opened without
+    blocking and asked (``fstat``) before anything is read, so that a FIFO, a device, a
+    folder or a symbolic link (not followed) at an entry's path is no entry, not a wait for
+    ever (review 62c, its note: a FIFO at ``compiled-NAME.marshal`` hung ``check -p NAME`` in
+    ``open()``)."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_NOFOLLOW | os.O_CLOEXEC)
+    try:
+        if os.fstat(fd).st_mode & _S_IFMT != _S_IFREG:
+            return None
+        pieces = []
+        while True:
+            piece = os.read(fd, 1 << 16)
+            if not piece:
+                return b"".join(pieces)
+            pieces.append(piece)
+    finally:
+        os.close(fd)
 
+
+_S_IFMT, _S_IFREG = 0o170000, 0o100000  # (stat's, without its functions)
 
 # An entry file is a frame: 4 bytes of the checksum (:func:`_checksum`) of what follows, 4
 # bytes of its length (both little-endian), then the marshalled entry
@@ -256,9 +273,16 @@ def store_spec(key: bytes, spec: dict[str, Any]) -> None:
 
 def _write(path: str, blob: bytes) -> None:
     """``blob`` (a marshalled entry) as the file ``path``, in its frame (:func:`_frame`):
-    written to a temporary file and renamed."""
+    written to a temporary file and renamed. Where something other than a regular file is at
+    ``path`` (a FIFO, a device, a folder, a symbolic link: someone put it there), it is left as
+    it is and nothing is written: the entry is made each time, as without a cache."""
     temporary = f"{path}.{os.getpid()}.{_thread.get_ident()}.tmp"
     try:
+        try:
+            if os.lstat(path).st_mode & _S_IFMT != _S_IFREG:
+                return
+        except FileNotFoundError:
+            pass
         os.makedirs(os.path.dirname(path), exist_ok=True)
         with open(temporary, "wb") as f:
             f.write(_frame(blob))

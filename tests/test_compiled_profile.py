@@ -160,10 +160,11 @@ PROGRAMS = {
 }
 
 
-def _check(folder: Path, cache_dir: str, *args: str) -> tuple[int, str, str]:
+def _check(folder: Path, cache_dir: str, *args: str,
+           timeout: float = 120) -> tuple[int, str, str]:
     env = {**os.environ, "PYTHONPATH": str(ROOT), "TAPEGATE_CACHE_DIR": cache_dir}
     done = subprocess.run([sys.executable, "-P", "-m", "tapegate", "check", str(folder),
-                           *args], env=env, capture_output=True, text=True, timeout=120)
+                           *args], env=env, capture_output=True, text=True, timeout=timeout)
     return done.returncode, done.stdout, done.stderr
 
 
@@ -349,3 +350,33 @@ def test_a_damaged_frame_is_no_entry_before_marshal_reads_it(cache, monkeypatch,
     monkeypatch.setattr(profile_cache, "marshal", marshal)
     again()  # (what a run does on finding none)
     assert path.read_bytes() != bad and value() == before  # written again
+
+
+@pytest.mark.parametrize("kind", ["fifo", "folder", "link"])
+def test_no_regular_file_at_an_entrys_path_is_no_entry_and_left_there(cache, tmp_path, kind):
+    """A FIFO (or a folder) where the entry should be: the check does not wait on it (opened
+    without blocking, fstat'd before it is read), reads it as no entry, and leaves it in place
+    rather than replacing it; the command's output is what it is without the cache."""
+    folder = tmp_path / "programs"
+    folder.mkdir()
+    for name, text in PROGRAMS.items():
+        (folder / name).write_text(text)
+    cache.mkdir(parents=True)
+    path = cache / "compiled-haas-mill.marshal"
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "folder":
+        path.mkdir()
+    else:  # a link to a FIFO: not followed
+        os.mkfifo(tmp_path / "fifo")
+        path.symlink_to(tmp_path / "fifo")
+    assert load("haas-mill") is None  # (in process: no wait either)
+    keep_compiled("haas-mill", load_profile("haas-mill"))
+    args = ("-p", "haas-mill", "--format", "json")
+    plain = _check(folder, "", *args)
+    for _ in range(2):  # (the second run would read an entry written by the first)
+        # (the old tree waited in open() for ever: TimeoutExpired)
+        assert _check(folder, str(cache), *args, timeout=60) == plain
+    assert {"fifo": path.is_fifo, "folder": path.is_dir, "link": path.is_symlink}[kind]()
+    assert sorted(p.name for p in cache.iterdir() if p.name.startswith("compiled-")) == [
+        path.name]  # nothing written beside it either
