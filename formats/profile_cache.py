@@ -116,7 +116,7 @@ def _read(path: str) -> bytes | None:
     try:
         if os.fstat(fd).st_mode & _S_IFMT != _S_IFREG:
             return None
-        pieces = []
+        pieces: list[bytes] = []
         while True:
             piece = os.read(fd, 1 << 16)
             if not piece:
