@@ -311,7 +311,11 @@ def guard_stdout() -> None:
     `parse`, `diff`, the summary of `convert DIR`, click's echo) ends at a stop that lands
     just before a write into a pipe whose reader does not read, as the copy of ``convert -o
     -`` does. The same encoding,
-    errors, line buffering and buffer size as the stream it replaces (flushed first). Only
+    errors and line buffering as the stream it replaces (flushed first), and its buffering:
+    where that stream had none (``python -u``, ``PYTHONUNBUFFERED``: its binary layer the raw
+    file, its text written through), the new one has none either, each write made at once
+    (review 62c F5: it was buffered, so output came late, and with ``2>&1`` out of order);
+    else a buffer of the file's ``st_blksize``, as Python's own ``open`` gives it. Only
     in the main thread, for the ``tapegate`` command's own process (:mod:`tapegate.launch`:
     not for a caller that goes on, whose streams are its own)."""
     import sys
@@ -335,11 +339,18 @@ def guard_stdout() -> None:
         return
     _GUARDED.append(wakeup)
     stream.flush()
-    buffered = io.BufferedWriter(_PolledWriter(fd, wakeup))
-    sys.stdout = io.TextIOWrapper(buffered, encoding=stream.encoding, errors=stream.errors,
-                                  newline="\n",
-                                  line_buffering=bool(getattr(stream, "line_buffering", False)),
-                                  write_through=bool(getattr(stream, "write_through", False)))
+    raw = _PolledWriter(fd, wakeup)
+    line_buffering = bool(getattr(stream, "line_buffering", False))
+    if isinstance(getattr(stream, "buffer", None), io.BufferedWriter):
+        size = os.fstat(fd).st_blksize
+        buffered: io.BufferedIOBase | _PolledWriter = io.BufferedWriter(
+            raw, size if size > 1 else io.DEFAULT_BUFFER_SIZE)
+        through = bool(getattr(stream, "write_through", False))
+    else:  # unbuffered (-u): the text written through to the raw writer, whose writes are whole
+        buffered, through = raw, True
+    sys.stdout = io.TextIOWrapper(buffered, encoding=stream.encoding,
+                                  errors=stream.errors, newline="\n",
+                                  line_buffering=line_buffering, write_through=through)
 
 
 class _PolledWriter(io.RawIOBase):

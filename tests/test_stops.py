@@ -349,3 +349,47 @@ def test_a_guarded_stdout_pointed_elsewhere_writes_there_and_not_into_its_pipe()
         for fd in (reader, writer, spare):
             if fd >= 0:
                 os.close(fd)
+
+
+UNBUFFERED = """
+import sys
+from formats.stops import guard_stdout
+guard_stdout()
+sys.stdout.write("line one\\n")  # (no flush)
+print("written", file=sys.stderr, flush=True)
+sys.stdin.read()  # (until the test has looked)
+"""
+
+
+@pytest.mark.parametrize("how", ["PYTHONUNBUFFERED", "-u", "buffered"])
+def test_a_guarded_stdout_is_unbuffered_where_python_made_it_so(how: str) -> None:
+    """Review 62c F5: ``PYTHONUNBUFFERED=1`` or ``python -u`` make standard output unbuffered
+    (a service's log seen at once, ``2>&1`` in order); the guarded stream kept a buffer all the
+    same. Now it writes each write at once where Python's own stream did, and buffers where
+    that one did (the line waits for the exit's flush)."""
+    import select
+
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    env.pop("PYTHONUNBUFFERED", None)
+    if how == "PYTHONUNBUFFERED":
+        env["PYTHONUNBUFFERED"] = "1"
+    args = [sys.executable, *(["-u"] if how == "-u" else []), "-c", UNBUFFERED]
+    proc = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env=env)
+    assert proc.stdin is not None and proc.stdout is not None and proc.stderr is not None
+    try:
+        assert proc.stderr.readline() == b"written\n"  # (after the write to stdout)
+        ready, _, _ = select.select([proc.stdout], [], [], 0)
+        seen = os.read(proc.stdout.fileno(), 100) if ready else b""
+        assert proc.poll() is None  # (still running: no exit's flush yet)
+        proc.stdin.close()
+        rest = proc.stdout.read()
+        assert proc.wait(timeout=60) == 0
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        proc.stdout.close()
+        proc.stderr.close()
+    assert seen + rest == b"line one\n"
+    assert seen == (b"" if how == "buffered" else b"line one\n")
