@@ -10,7 +10,9 @@ import marshal
 import os
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -218,6 +220,30 @@ def _system_error_bytes() -> bytes:
     pytest.skip("this Python's marshal raises no SystemError on these bytes")
 
 
+def _an_entry(cache: Path, kind: str) -> tuple[Path, Callable[[], Any], Callable[[], None]]:
+    """haas-mill's entry of ``kind`` (``compiled``, ``table``, ``spec``) written: its path,
+    what reading it back gives (None: no entry), and what writes it again (as a run does on
+    finding none)."""
+    name = "haas-mill"
+    profile = load_profile(name)
+    text = (Path(profile_cache._BUILTIN) / f"{name}.toml").read_text()
+    if kind == "compiled":
+        assert kept(name) is not None
+        path, = entries(cache)
+        return (path, lambda: (lambda c: c and (c._flags, c._spec))(load(name)),
+                lambda: keep_compiled(name, load_profile(name)))
+    if kind == "table":
+        table = profile_cache.load(name, text)
+        assert table is not None
+        return (Path(profile_cache._path(name, text) or ""),
+                lambda: profile_cache.load(name, text),
+                lambda: profile_cache.store(name, text, table))
+    key = profile.__dict__["_spec_key"]
+    profile_cache.store_spec(key, machine_spec(profile))
+    return (Path(profile_cache._spec_path(key) or ""), lambda: profile_cache.load_spec(key),
+            lambda: profile_cache.store_spec(key, machine_spec(profile)))
+
+
 @pytest.mark.parametrize("where", ["file", "blob"])
 @pytest.mark.parametrize("kind", ["compiled", "table", "spec"])
 def test_an_entry_marshal_raises_any_error_on_is_ignored_and_written_again(cache, kind, where):
@@ -225,26 +251,7 @@ def test_an_entry_marshal_raises_any_error_on_is_ignored_and_written_again(cache
     is an entry not there, in load_compiled, load and load_spec alike, and it is written
     again."""
     bad = _system_error_bytes()
-    name = "haas-mill"
-    profile = load_profile(name)
-    text = (Path(profile_cache._BUILTIN) / f"{name}.toml").read_text()
-    if kind == "compiled":
-        assert kept(name) is not None
-        path, = entries(cache)
-        value = lambda: (lambda c: c and (c._flags, c._spec))(load(name))  # noqa: E731
-        again = lambda: keep_compiled(name, load_profile(name))  # noqa: E731
-    elif kind == "table":
-        path = Path(profile_cache._path(name, text) or "")
-        table = profile_cache.load(name, text)
-        assert table is not None
-        value = lambda: profile_cache.load(name, text)  # noqa: E731
-        again = lambda: profile_cache.store(name, text, table)  # noqa: E731
-    else:
-        key = profile.__dict__["_spec_key"]
-        profile_cache.store_spec(key, machine_spec(profile))
-        path = Path(profile_cache._spec_path(key) or "")
-        value = lambda: profile_cache.load_spec(key)  # noqa: E731
-        again = lambda: profile_cache.store_spec(key, machine_spec(profile))  # noqa: E731
+    path, value, again = _an_entry(cache, kind)
     before = value()
     assert before
     good = unframed(path)
@@ -310,25 +317,7 @@ def test_a_damaged_frame_is_no_entry_before_marshal_reads_it(cache, monkeypatch,
     outer type byte (the tuple's ``)`` made ``(``, whose 4-byte count marshal took for up to
     2**31 items: 10-42 s of allocation before it failed) or any other byte is no entry at
     once, for each kind of entry, and it is written again."""
-    name = "haas-mill"
-    profile = load_profile(name)
-    text = (Path(profile_cache._BUILTIN) / f"{name}.toml").read_text()
-    if kind == "compiled":
-        assert kept(name) is not None
-        path, = entries(cache)
-        value = lambda: (lambda c: c and (c._flags, c._spec))(load(name))  # noqa: E731
-        again = lambda: keep_compiled(name, load_profile(name))  # noqa: E731
-    elif kind == "table":
-        path = Path(profile_cache._path(name, text) or "")
-        table = profile_cache.load(name, text)
-        value = lambda: profile_cache.load(name, text)  # noqa: E731
-        again = lambda: profile_cache.store(name, text, table)  # noqa: E731
-    else:
-        key = profile.__dict__["_spec_key"]
-        profile_cache.store_spec(key, machine_spec(profile))
-        path = Path(profile_cache._spec_path(key) or "")
-        value = lambda: profile_cache.load_spec(key)  # noqa: E731
-        again = lambda: profile_cache.store_spec(key, machine_spec(profile))  # noqa: E731
+    path, value, again = _an_entry(cache, kind)
     before = value()
     assert before
     good = path.read_bytes()

@@ -542,33 +542,47 @@ def test_a_command_stopped_while_its_reader_does_not_read_ends(place: Path, sign
     report unwritten (tapegate.launch.leave, ``stopped``). Before, the exit's flush waited on
     the full pipe for ever and the stop was not obeyed (CI: a `convert -o -` stopped so hung
     past its timeout)."""
+    code = _stopped_on_a_full_pipe(place, ["check", "big", "-p", "iso-mill", "-j", "2"], signum,
+                                   subprocess.DEVNULL, 60)
+    assert code == (1 if signum == signal.SIGINT else 128 + signal.SIGTERM)
+
+
+def _big(place: Path) -> None:
+    """``place/big``: 40 programs whose report fills a pipe many times."""
     (place / "big").mkdir()
     for n in range(40):
         (place / "big" / f"p{n}.nc").write_text(BAD * 400)
+
+
+def _stopped_on_a_full_pipe(place: Path, argv: list[str], signum: int, stderr: int,
+                            timeout: float) -> int:
+    """The exit code of ``tapegate ARGV`` (run in ``place`` on :func:`_big`'s folder, SIGTERM
+    made an exit as the command makes it) given ``signum`` once its report has filled its
+    standard output, a pipe nobody reads, so that it waits in its write; ``stderr`` its
+    standard error (``subprocess.STDOUT``: the same full pipe). Killed past ``timeout``
+    seconds (TimeoutExpired raised), its pipe closed either way."""
+    from tests.test_convert_interrupt import ended
+
+    _big(place)
     script = ("import sys\nfrom tapegate.launch import main\n"
               "from formats.files import exit_on_termination\nexit_on_termination()\n"
-              "sys.argv = ['tapegate', 'check', 'big', '-p', 'iso-mill', '-j', '2']\n"
-              "main()\n")
+              f"sys.argv = ['tapegate', *{argv!r}]\nmain()\n")
     proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
-                            stderr=subprocess.DEVNULL, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                            stderr=stderr, env={**os.environ, "PYTHONPATH": str(ROOT)},
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    assert proc.stdout is not None
     try:
-        # the report fills the pipe: the command then waits in its write
-        assert proc.stdout is not None
         deadline = time.monotonic() + 60
         while not _full(proc.stdout.fileno()):
             assert proc.poll() is None, "the report ended before it filled the pipe"
             assert time.monotonic() < deadline, "the command never filled the pipe"
             time.sleep(0.01)
         proc.send_signal(signum)
-        code = proc.wait(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        assert proc.stdout is not None
-        proc.stdout.close()
-    assert code == (1 if signum == signal.SIGINT else 128 + signal.SIGTERM)
+    except BaseException:
+        proc.kill()
+        ended(proc, 60)
+        raise
+    return ended(proc, timeout)[0]
 
 
 def _full(fd: int) -> bool:
@@ -594,9 +608,7 @@ def test_a_check_whose_report_waits_on_a_full_pipe_ends_at_a_signal_that_interru
     (formats.stops.guard_stdout), by a plain check and by one click reads alike."""
     from tests.test_convert_interrupt import AIMED, ended
 
-    (place / "big").mkdir()
-    for n in range(40):
-        (place / "big" / f"p{n}.nc").write_text(BAD * 400)
+    _big(place)
     script = AIMED.format(signum=int(signum), argv=argv)
     proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, env={**os.environ, "PYTHONPATH": str(ROOT)},
@@ -615,29 +627,5 @@ def test_a_command_click_reads_stopped_with_stderr_in_its_full_pipe_ends(
     pipe nobody reads (``2>&1 | less`` left open): it ends with ^C's 1, "Aborted!" written
     only if stderr takes it at once, as on the plain path. Before, click's own write of it
     waited on the full pipe for ever (review 62c F3)."""
-    (place / "big").mkdir()
-    for n in range(40):
-        (place / "big" / f"p{n}.nc").write_text(BAD * 400)
-    script = ("import sys\nfrom tapegate.launch import main\n"
-              "from formats.files import exit_on_termination\nexit_on_termination()\n"
-              f"sys.argv = ['tapegate', *{argv!r}]\nmain()\n")
-    proc = subprocess.Popen([sys.executable, "-c", script], cwd=place, stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT,
-                            env={**os.environ, "PYTHONPATH": str(ROOT)},
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    try:
-        assert proc.stdout is not None
-        deadline = time.monotonic() + 60
-        while not _full(proc.stdout.fileno()):
-            assert proc.poll() is None, "the report ended before it filled the pipe"
-            assert time.monotonic() < deadline, "the command never filled the pipe"
-            time.sleep(0.01)
-        proc.send_signal(signal.SIGINT)
-        code = proc.wait(timeout=30)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        assert proc.stdout is not None
-        proc.stdout.close()
+    code = _stopped_on_a_full_pipe(place, argv, signal.SIGINT, subprocess.STDOUT, 30)
     assert code == 1

@@ -15,6 +15,7 @@ import signal
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -116,6 +117,30 @@ def test_a_stop_is_raised_once_and_a_new_command_forgets_the_last_ones() -> None
         signal.signal(signal.SIGINT, before)
 
 
+def _fed(proc: subprocess.Popen[bytes], until: Callable[[], bool] | None = None,
+         timeout: float = 60) -> tuple[int, bytes]:
+    """``proc`` (a `check -`) given a program's first lines on its standard input, which is
+    then left open (the copy of it waits for more, as of a writer that never ends); once
+    ``until`` holds (looked at every 10 ms: it may send the signal), its exit code within
+    ``timeout`` seconds and its standard error. Killed past the timeout (TimeoutExpired
+    raised), its pipes closed either way (tests.test_convert_interrupt.ended)."""
+    from tests.test_convert_interrupt import ended
+
+    assert proc.stdin is not None
+    try:
+        proc.stdin.write(b"%\nO1000\nG0 X0\n")
+        proc.stdin.flush()  # (and left open)
+        deadline = time.monotonic() + 60
+        while until is not None and not until():
+            assert proc.poll() is None and time.monotonic() < deadline
+            time.sleep(0.01)
+    except BaseException:
+        proc.kill()
+        ended(proc, 60)
+        raise
+    return ended(proc, timeout)
+
+
 def test_sigterm_to_a_check_of_standard_input_leaves_no_copy(tmp_path: Path) -> None:
     """Review 53, F14: `check -` stopped by SIGTERM left its copy of standard input in the
     temporary folder; the copy's making makes SIGTERM an exit, which removes it."""
@@ -127,23 +152,14 @@ def test_sigterm_to_a_check_of_standard_input_leaves_no_copy(tmp_path: Path) -> 
     proc = subprocess.Popen([str(exe), "check", "-p", "fanuc-mill", "-"], stdin=subprocess.PIPE,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                             env={**os.environ, "PYTHONPATH": str(ROOT), "TMPDIR": str(temp)})
-    assert proc.stdin is not None and proc.stderr is not None
-    try:
-        proc.stdin.write(b"%\nO1000\nG0 X0\n")
-        proc.stdin.flush()  # (and left open: the copy waits for more)
-        deadline = time.monotonic() + 60
-        while not list(temp.iterdir()):
-            assert proc.poll() is None and time.monotonic() < deadline
-            time.sleep(0.01)
-        proc.send_signal(signal.SIGTERM)
-        code = proc.wait(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        proc.stdin.close()
-        err = proc.stderr.read()
-        proc.stderr.close()
+
+    def copying() -> bool:
+        if list(temp.iterdir()):
+            proc.send_signal(signal.SIGTERM)
+            return True
+        return False
+
+    code, err = _fed(proc, copying)
     assert code == 128 + signal.SIGTERM, err
     assert b"Traceback" not in err
     assert list(temp.iterdir()) == []
@@ -209,18 +225,7 @@ def test_a_signal_that_never_interrupts_the_read_of_stdin_still_stops_it(
                             stderr=subprocess.PIPE,
                             env={**os.environ, "PYTHONPATH": str(ROOT), "TMPDIR": str(temp)},
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    assert proc.stdin is not None and proc.stderr is not None
-    try:
-        proc.stdin.write(b"%\nO1000\nG0 X0\n")
-        proc.stdin.flush()  # (and left open: the copy waits for more)
-        code = proc.wait(timeout=30)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        proc.stdin.close()
-        err = proc.stderr.read()
-        proc.stderr.close()
+    code, err = _fed(proc, timeout=30)  # (the command's own thread sends the signal)
     assert err.startswith(b"aimed\n"), err
     assert code == (1 if signum == signal.SIGINT else 128 + signum), err
     assert list(temp.iterdir()) == []
