@@ -11,14 +11,18 @@ Python, nothing to import) and read back next time; a profile file's entry is na
 (``formats.profile.FILE_CACHE_NAME``) and its CRC, whatever file held the text:
 
 - the file is ``$TAPEGATE_CACHE_DIR`` (an empty value: no cache), else
-  ``$XDG_CACHE_HOME/tapegate``, else ``~/.cache/tapegate``, then ``profile-NAME-CRC.marshal``,
-  CRC the CRC-32 of the profile's text: a changed profile file has another name, and an entry
-  is used only when the text it holds is the text read now, character for character (a stale
-  or colliding entry is never used);
+  ``$XDG_CACHE_HOME/tapegate``, else ``~/.cache/tapegate``, then
+  ``profile-NAME-CRC.framed.marshal``, CRC the CRC-32 of the profile's text: a changed
+  profile file has another name, and an entry is used only when the text it holds is the
+  text read now, character for character (a stale or colliding entry is never used);
 - every entry file is framed: its length and a checksum of all its bytes (:func:`_frame`),
   checked before ``marshal`` reads any of it, so that a damaged byte anywhere (the outer
   tuple's type or length byte too, which marshal read as a count of up to 2**31 items: 10-42 s
-  of allocation before it failed) is no entry at once;
+  of allocation before it failed) is no entry at once; a framed entry's name ends in
+  :data:`SUFFIX`, apart from the names of the entries before the frame (``.marshal`` alone),
+  which an older tapegate sharing the folder reads whole with ``marshal``: it would take a
+  frame's first bytes for such a count (review 63 of io63, F1), and the two would rewrite
+  each other's entries;
 - an entry that cannot be read, is cut short, is not an entry of this format or of this Python,
   or whose frame or parsed table does not match the checksum or CRC-32 kept with it (a damaged
   byte) is ignored, and written again; anything but a regular file at an entry's path (a FIFO,
@@ -29,17 +33,17 @@ Python, nothing to import) and read back next time; a profile file's entry is na
 
 The validated profile is not kept: it is made from the table each time. What the core's
 machine is compiled from, its spec (:func:`formats.machine.machine_spec`: plain values), is
-kept too, as ``machine-CRC.marshal`` (:func:`load_spec`, :func:`store_spec`), keyed by all that
-made it: the profile's table after its ``base`` was merged, its source and default name (the
-profile's own inputs, :func:`spec_key`), and the code that turned them into the spec -- the
-size and modification time of each module the profile and the spec are made by, and of the
-core (:func:`_code`), as Python keys its ``.pyc`` files. An entry
-of another key, of other code (an update of tapegate, a module edited), damaged or cut short
+kept too, as ``machine-CRC.framed.marshal`` (:func:`load_spec`, :func:`store_spec`), keyed by
+all that made it: the profile's table after its ``base`` was merged, its source and default
+name (the profile's own inputs, :func:`spec_key`), and the code that turned them into the
+spec -- the size and modification time of each module the profile and the spec are made
+by, and of the core (:func:`_code`), as Python keys its ``.pyc`` files. An entry of another
+key, of other code (an update of tapegate, a module edited), damaged or cut short
 is ignored and written again; written as the tables are (a temporary file renamed).
 
 For ``tapegate check`` with a built-in profile written on no ``base``, what the check takes of
 the profile -- the machine spec and the dialect's flags -- is kept once more, as
-``compiled-NAME.marshal`` (:func:`store_compiled`, :func:`load_compiled`), keyed by the
+``compiled-NAME.framed.marshal`` (:func:`store_compiled`, :func:`load_compiled`), keyed by the
 profile file's bytes (held in the entry and compared whole) and by the same code: read back,
 the check needs neither the profile's modules nor its validation (:class:`Compiled`).
 """
@@ -58,6 +62,9 @@ if TYPE_CHECKING:
 
 __all__ = ["Compiled", "directory", "load", "load_compiled", "load_spec", "spec_key", "store",
            "store_compiled", "store_spec"]
+
+# The end of a framed entry's file name (entries before the frame end in ".marshal" alone)
+SUFFIX = ".framed.marshal"
 
 # What an entry is, and for which Python it was written: another one is ignored
 KEY = ("tapegate-profile-toml", 2, sys.version_info[:2], marshal.version)
@@ -84,7 +91,7 @@ def _path(name: str, text: str) -> str | None:
         return None
     from zlib import crc32
 
-    return os.path.join(folder, f"profile-{name}-{crc32(text.encode('utf-8')):08x}.marshal")
+    return os.path.join(folder, f"profile-{name}-{crc32(text.encode('utf-8')):08x}{SUFFIX}")
 
 
 def _unmarshal(path: str | None = None, blob: bytes = b"") -> Any:
@@ -235,7 +242,7 @@ def _spec_path(key: bytes) -> str | None:
         return None
     from zlib import crc32
 
-    return os.path.join(folder, f"machine-{crc32(key):08x}.marshal")
+    return os.path.join(folder, f"machine-{crc32(key):08x}{SUFFIX}")
 
 
 def load_spec(key: bytes) -> dict[str, Any] | None:
@@ -327,7 +334,7 @@ def _compiled_path(name: str) -> tuple[str, bytes] | None:
         return None
     # (one entry a profile's name, its text compared whole: no CRC-32 in the name, and no zlib
     # imported on a check's way, 0.2 ms)
-    return os.path.join(folder, f"compiled-{name}.marshal"), text
+    return os.path.join(folder, f"compiled-{name}{SUFFIX}"), text
 
 
 # The modulus of an entry's checksum (_checksum): the largest prime below 2**30, one digit of

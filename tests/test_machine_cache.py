@@ -24,7 +24,7 @@ def cache(tmp_path, monkeypatch):
 
 
 def spec_files(folder: Path) -> list[Path]:
-    return sorted(folder.glob("machine-*.marshal")) if folder.exists() else []
+    return sorted(folder.glob(f"machine-*{profile_cache.SUFFIX}")) if folder.exists() else []
 
 
 def no_spec_made(monkeypatch):
