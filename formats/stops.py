@@ -187,14 +187,17 @@ def _pollable(fd: int) -> bool:
 def _twin(fd: int) -> int:
     """A second open file description of the pipe ``fd`` (a FIFO or an anonymous pipe), for
     writing, non-blocking (``O_NONBLOCK`` set on it alone: ``fd``'s own, shared with other
-    processes, is untouched) and closed on exec; -1 where it cannot be had: not a pipe, no
-    ``/proc`` (not Linux), the open refused (a FIFO whose reader left: ENXIO)."""
+    processes, is untouched) and closed on exec; -1 where it cannot be had: not a pipe, ``fd``
+    not open for writing (a pipe's read end given as stdout: the twin, opened anew, would
+    write into it), no ``/proc`` (not Linux), the open refused (a FIFO whose reader left:
+    ENXIO)."""
     import os
     import stat
 
     try:
         if not stat.S_ISFIFO(os.fstat(fd).st_mode):
             return -1
+        os.write(fd, b"")  # (EBADF where ``fd`` is not open for writing: no twin to write by)
         return os.open(f"/proc/self/fd/{fd}",
                        os.O_WRONLY | os.O_NONBLOCK | os.O_CLOEXEC | os.O_NOCTTY)
     except (OSError, AttributeError):  # (AttributeError: no O_NONBLOCK, not POSIX)
@@ -230,6 +233,7 @@ def write_all(fd: int, pieces: Iterable[bytes]) -> int:
     import os
 
     size = 0
+    os.write(fd, b"")  # (EBADF at once where fd is not open for writing, as a plain write)
     if not _pollable(fd):
         for piece in pieces:
             heed_stops()
@@ -333,6 +337,10 @@ def guard_stdout() -> None:
     except OSError:
         return
     if not (stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)) or _GUARDED:
+        return
+    try:
+        os.write(fd, b"")
+    except OSError:  # not open for writing (a pipe's read end): its writes fail as before
         return
     wakeup = _Wakeup().__enter__()
     if wakeup.fd < 0:  # not the main thread

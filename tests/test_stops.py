@@ -398,3 +398,31 @@ def test_a_guarded_stdout_is_unbuffered_where_python_made_it_so(how: str) -> Non
         proc.stderr.close()
     assert seen + rest == b"line one\n"
     assert seen == (b"" if how == "buffered" else b"line one\n")
+
+
+@pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs Linux's /proc")
+def test_a_pipes_read_end_given_as_stdout_is_not_written_into() -> None:
+    """Standard output the read end of a pipe (``1<&0``): a twin opened anew through /proc
+    for writing would write the report into the pipe the command was given to read, and the
+    guarded writer's poll for room waited for ever (review 63 of io63, N1). No twin, no
+    guard: the write fails with EBADF at once, as before hang62 (exit 2, told)."""
+    from formats import stops
+
+    reader, writer = os.pipe()
+    try:
+        assert stops._twin(reader) == -1
+        with pytest.raises(OSError):
+            stops.write_all(reader, [b"x" * 100_000])
+        done = subprocess.run([sys.executable, "-c", "import sys\n"
+                               "sys.argv = ['tapegate', 'check', '-p', 'fanuc-mill', '-']\n"
+                               "from tapegate.launch import main\nmain()\n"],
+                              input=b"%\nO1000\nG0 X1\nM30\n%\n", stdout=reader,
+                              stderr=subprocess.PIPE, timeout=60,
+                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert done.returncode != 0 and b"Bad file descriptor" in done.stderr, done.stderr
+        os.set_blocking(reader, False)
+        with pytest.raises(BlockingIOError):  # nothing written into the pipe
+            os.read(reader, 100)
+    finally:
+        os.close(reader)
+        os.close(writer)
