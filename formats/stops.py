@@ -184,6 +184,17 @@ def _pollable(fd: int) -> bool:
     return not (stat.S_ISREG(mode) or stat.S_ISBLK(mode))
 
 
+def _fifo(fd: int) -> bool:
+    """Whether ``fd`` is a pipe (a FIFO or an anonymous pipe)."""
+    import os
+    import stat
+
+    try:
+        return stat.S_ISFIFO(os.fstat(fd).st_mode)
+    except OSError:
+        return False
+
+
 def _twin(fd: int) -> int:
     """A second open file description of the pipe ``fd`` (a FIFO or an anonymous pipe), for
     writing, non-blocking (``O_NONBLOCK`` set on it alone: ``fd``'s own, shared with other
@@ -197,7 +208,7 @@ def _twin(fd: int) -> int:
     try:
         if not stat.S_ISFIFO(os.fstat(fd).st_mode):
             return -1
-        os.write(fd, b"")  # (EBADF where ``fd`` is not open for writing: no twin to write by)
+        os.write(fd, b"")  # (EBADF where the pipe is not open for writing: no twin by it)
         return os.open(f"/proc/self/fd/{fd}",
                        os.O_WRONLY | os.O_NONBLOCK | os.O_CLOEXEC | os.O_NOCTTY)
     except (OSError, AttributeError):  # (AttributeError: no O_NONBLOCK, not POSIX)
@@ -233,7 +244,8 @@ def write_all(fd: int, pieces: Iterable[bytes]) -> int:
     import os
 
     size = 0
-    os.write(fd, b"")  # (EBADF at once where fd is not open for writing, as a plain write)
+    if _fifo(fd):  # (EBADF at once for a pipe's read end, as a plain write: not a poll for
+        os.write(fd, b"")  # ever; no such probe elsewhere: a packet socket sends it)
     if not _pollable(fd):
         for piece in pieces:
             heed_stops()
@@ -338,10 +350,11 @@ def guard_stdout() -> None:
         return
     if not (stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)) or _GUARDED:
         return
-    try:
-        os.write(fd, b"")
-    except OSError:  # not open for writing (a pipe's read end): its writes fail as before
-        return
+    if stat.S_ISFIFO(mode):
+        try:
+            os.write(fd, b"")  # (a pipe's zero-length write is nothing; a packet socket's is
+        except OSError:  # a packet: not there) -- not open for writing (a pipe's read end):
+            return  # its writes fail as before
     wakeup = _Wakeup().__enter__()
     if wakeup.fd < 0:  # not the main thread
         return

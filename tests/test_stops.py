@@ -426,3 +426,39 @@ def test_a_pipes_read_end_given_as_stdout_is_not_written_into() -> None:
     finally:
         os.close(reader)
         os.close(writer)
+
+
+SEQPACKET = """
+import sys
+from formats.stops import guard_stdout, write_all
+guard_stdout()
+print("report", flush=True)
+write_all(1, [b"copy"])
+"""
+
+
+@pytest.mark.parametrize("kind", ["SOCK_SEQPACKET", "SOCK_DGRAM"])
+def test_a_packet_socket_as_stdout_gets_no_empty_packet(kind: str) -> None:
+    """Stdout a packet socket: the probe for a pipe's read end (a zero-length write) is made
+    on pipes only -- on a SOCK_SEQPACKET socket it sends an empty packet, which its reader
+    takes for the end, and on a datagram socket an empty datagram (review 63 of io63, F3)."""
+    import socket
+
+    left, right = socket.socketpair(socket.AF_UNIX, getattr(socket, kind))
+    with left, right:
+        done = subprocess.run([sys.executable, "-c", SEQPACKET], stdout=left.fileno(),
+                              stderr=subprocess.PIPE, timeout=60,
+                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert done.returncode == 0, done.stderr
+        left.close()
+        right.setblocking(False)
+        got = []  # (every packet the command sent: it has ended)
+        while True:
+            try:
+                got.append(right.recv(65536))
+            except BlockingIOError:
+                break
+            if kind == "SOCK_SEQPACKET" and got[-1] == b"" and len(got) > 1 and b"copy" in got:
+                got.pop()  # (the end, once the sender's socket is closed)
+                break
+    assert b"" not in got and b"".join(got) == b"report\ncopy", got
