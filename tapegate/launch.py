@@ -166,6 +166,14 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
     (as ``mypy.main``'s argument of that name)."""
     from formats.stops import guard_stdout, note_interrupts
 
+    if sys.stdout is None:
+        # file descriptor 1 closed (`>&-`): Python gives the process no stdout, and a report,
+        # a conversion to `-` or a help text would end in a traceback with nothing said;
+        # refused before any work, as a file that cannot be written (README, exit codes)
+        if sys.stderr is not None:
+            sys.stderr.write(
+                "tapegate: error: standard output is closed: give it a file or /dev/null\n")
+        sys.exit(2)
     note_interrupts()  # (a ^C a finalizer swallows is still obeyed: formats.stops)
     try:
         found = None if "_TAPEGATE_COMPLETE" in os.environ else plain(sys.argv[1:])

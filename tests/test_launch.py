@@ -629,3 +629,22 @@ def test_a_command_click_reads_stopped_with_stderr_in_its_full_pipe_ends(
     waited on the full pipe for ever (review 62c F3)."""
     code = _stopped_on_a_full_pipe(place, argv, signal.SIGINT, subprocess.STDOUT, 30)
     assert code == 1
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "good.nc", "-p", "iso-mill"],  # the plain path
+    ["check", "good.nc", "-p", "iso-mill", "--format", "sarif"],
+    ["convert", "good.nc", "-p", "iso-mill", "-o", "out.nc"],  # writes no stdout: refused too
+    ["--version"],  # click's path
+])
+def test_a_closed_standard_output_is_refused_with_a_reason(place: Path, argv: list[str]) -> None:
+    """``>&-`` leaves Python no stdout: every command stops before any work, exit 2, with the
+    reason on stderr and no traceback (main wrote a traceback, or nothing, exit 1)."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    done = subprocess.run([sys.executable, "-m", "tapegate", *argv], cwd=place, env=env,
+                          stdin=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=60,
+                          preexec_fn=lambda: os.close(1))
+    assert done.returncode == 2
+    assert done.stderr == (b"tapegate: error: standard output is closed:"
+                           b" give it a file or /dev/null\n")
+    assert not (place / "out.nc").exists()
