@@ -211,3 +211,47 @@ def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_p
     known, G10 before or not. A body written after the main runs under the shift at its
     calls, not the main's end's."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+def _wo2h(tmp_path):
+    """A Haas mill in inches whose G55 is X-4 (X travel -30..30)."""
+    profile = tmp_path / "wo2h.toml"
+    profile.write_text('name = "wo2h"\nbase = "haas-mill"\n[limits]\n'
+                       "X = [-30.0, 30.0]\nY = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
+    return str(profile)
+
+
+_BODY = " / O2000 / G0 X-27. / M99"
+_MINUS_31 = "X goes to -31 in machine coordinates (work -27 + G55 offset -4.0)"
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (h82: O3000 read apart, merged at its own G20 after its call of O2000, returns: the
+    # call was made in its caller's millimetres, -27 mm is inside; it was kept as made in
+    # the profile's inches, "-31")
+    ("O3000 / G90 G55 / M98 P2000 / G20 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30" + _BODY, []),
+    # (h83: merged at its own G52)
+    ("O3000 / G90 G55 / M98 P2000 / G52 X0.5 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30" + _BODY, []),
+    # (h80: merged at the G52 a call of O4000 carries)
+    ("O4000 / G52 X0.5 / M99 / O3000 / G90 G55 / M98 P2000 / M98 P4000 / M99 / O1000 / "
+     "G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / M30" + _BODY, []),
+    # (merged the same way but ending as a main (M30): its call made in the reset units,
+    # inches: -31)
+    ("O3000 / G90 G55 / M98 P2000 / G20 / M30" + _BODY,
+     [("TG601", 8, 4, _MINUS_31)]),
+    # (its own G20 before the call: the call's units known)
+    ("O3000 / G90 G55 / G20 / M98 P2000 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30" + _BODY,
+     [("TG601", 13, 4, _MINUS_31)]),
+])
+def test_a_call_in_units_only_assumed_is_settled_at_its_program_s_end(tmp_path, programs,
+                                                                      expected):
+    """Review 62a F12: a program read apart before its units code keeps its calls (made in
+    units only assumed) to its end, not to a merge before it: where it returns (M99) they
+    were made in its caller's units, not known here; where it ends as a main, in the reset
+    state's."""
+    assert said(programs, _wo2h(tmp_path)) == expected

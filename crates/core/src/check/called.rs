@@ -386,10 +386,8 @@ impl Checker {
         self.early_on = false;
         self.work_run_on = false;
         self.work_unplaced = false;
-        // (a main program: its calls were made in the reset state's units)
-        for (number, here) in std::mem::take(&mut self.call_works_assumed) {
-            self.call_work_kept(number, here);
-        }
+        // (its calls made in units only assumed: kept to its end, which says whose units
+        // they were made in, `call_works_ended`)
         if let Some(given) = early.given_before {
             self.machine.state.units_given |= given;
         }
@@ -425,6 +423,25 @@ impl Checker {
             self.offsets_lost |= early.lost_before;
         }
         self.hold_from = None;
+    }
+
+    /// The program in hand ends (`returned`: M99) with calls made in units only assumed
+    /// ([`Checker::call_works_assumed`]), merged before its end (its own units code, G52
+    /// or span started again) or not: a main program's (M02/M30, the file's end, the next
+    /// program begun) were made in the reset state's units (review 61a F7: `O1000` / `G10 L2
+    /// P2 X-200.` / `G55` / `M98 P3000` / `M30`), a subprogram's in its caller's, not known
+    /// (review 62a F12: `O3000` / `G90 G55` / `M98 P2000` / `G20` / `M99`, merged at its
+    /// G20, called by a G21 main on an inch profile, kept its call as made in inches).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_works_ended(&mut self, returned: bool) {
+        if returned {
+            self.call_works_dropped();
+        } else {
+            for (number, here) in std::mem::take(&mut self.call_works_assumed) {
+                self.call_work_kept(number, here);
+            }
+        }
     }
 
     /// The program in hand returned (M99): a subprogram, whose lengths are its caller's. Its
@@ -527,7 +544,7 @@ impl Checker {
     /// The calls of a program read apart in units only assumed ([`Checker::call_works_assumed`])
     /// whose units are not known: it returned (a subprogram's units are its caller's) or
     /// was given up.
-    fn call_works_dropped(&mut self) {
+    pub(super) fn call_works_dropped(&mut self) {
         for (number, _) in std::mem::take(&mut self.call_works_assumed) {
             self.call_works_unknown.insert(number);
             self.call_work_kept(number, None);

@@ -300,6 +300,9 @@ impl Checker {
                 self.early_merge();
             }
         }
+        if !self.call_works_assumed.is_empty() {
+            self.call_works_ended(returned);
+        }
         self.feed_unheld = false;
     }
 

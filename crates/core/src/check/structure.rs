@@ -732,6 +732,10 @@ impl Checker {
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
         self.early_merge();
+        // (its calls in units only assumed: a program not ended runs on, the reset state's)
+        if !self.call_works_assumed.is_empty() {
+            self.call_works_ended(false);
+        }
         // (a run of its own: what the program before wrote is not this one's caller's; but
         // with the block skip switch on, the program before runs on into it: that run's)
         if !self.end_skippable {
