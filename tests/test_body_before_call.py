@@ -255,3 +255,25 @@ def test_a_call_in_units_only_assumed_is_settled_at_its_program_s_end(tmp_path, 
     were made in its caller's units, not known here; where it ends as a main, in the reset
     state's."""
     assert said(programs, _wo2h(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("body, expected", [
+    # (g80: O2000's G52 X-1000. runs in the caller's millimetres: X800. at -200 mm, the span
+    # from -750 mm fits; it was carried as -1000 inches, "X spans 938.976378")
+    ("G52 X-1000.", []),
+    # (G52 X10.: X800. at 810 mm, 31.889764 in)
+    ("G52 X10.", [("TG601", 10, 4, "X spans 61.417323 (from -29.527559 to 31.889764), more "
+                                   "than the travel -30 to 30: no work offset fits the "
+                                   "program on this machine")]),
+    # (the body's own G21 before it: millimetres surely, the same)
+    ("G21 / G52 X10.", [("TG601", 11, 4, "X spans 61.417323 (from -29.527559 to 31.889764), "
+                                         "more than the travel -30 to 30: no work offset fits "
+                                         "the program on this machine")]),
+])
+def test_a_carried_g52_is_in_its_caller_s_units(tmp_path, body, expected):
+    """Review 62a F9: a G52 a body read before any units code of its own leaves on runs in
+    its caller's units: carried by the caller's factor to the profile's units, not the one
+    the body was read in (an inch profile, a G21 caller)."""
+    programs = (f"O2000 / {body} / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / "
+                "G90 / G0 X800. / M30")
+    assert said(programs, _wo2h(tmp_path)) == expected

@@ -595,6 +595,7 @@ impl Checker {
     #[inline(never)]
     pub(super) fn program_shift_end(&mut self) {
         let g52 = std::mem::take(&mut self.g52_axes);
+        let read = std::mem::take(&mut self.g52_read);
         let clean = std::mem::replace(&mut self.shift_clean_start, true);
         let unsure = std::mem::take(&mut self.shift_unsure);
         let Some(n) = self.in_hand else {
@@ -614,8 +615,26 @@ impl Checker {
             && s.local_unknown == 0
             && (0..AXES.len()).all(|i| s.total[i] == s.local[i])
             && writer.is_none_or(|(w, _)| !w.moved && w.unread.is_empty());
-        let end = known.then_some((g52, s.local));
+        // (G52s read in units only assumed and others in units written: which the caller's
+        // units make them is not one factor, not followed)
+        let known = known && read.is_none_or(f64::is_finite);
+        let end = known.then_some((g52, s.local, read.unwrap_or(0.0)));
         self.shift_ends.insert(n, end);
+    }
+
+    /// A G52 (or one a call carries) read at `factor` to the profile's units: where the
+    /// program had written no units code by it, the factor (one for all of them, else not
+    /// followed: NaN), 0 where it had ([`Checker::shift_ends`]).
+    fn g52_read_at(&mut self, factor: f64) {
+        let this = if self.machine.state.units_given {
+            0.0
+        } else {
+            factor
+        };
+        self.g52_read = match self.g52_read {
+            Some(r) if r != this => Some(f64::NAN),
+            _ => Some(this),
+        };
     }
 
     /// A call of program `number`, read before it in the file (`writes`: what it writes of
@@ -637,20 +656,27 @@ impl Checker {
         // (`surely`), as before: the caller's spans read on unshifted, erring on the side
         // of the alarm; review 62a F7: `IF [#1 EQ 1] GOTO 5` / `M98 P2000` / `N5 G90` /
         // `G0 X800.` runs X800. at 800 where the call is passed over)
-        let Some((axes, local)) = end.filter(|_| surely) else {
+        let Some((axes, local, read)) = end.filter(|_| surely) else {
             self.shift_unsure = true;
             return;
         };
+        // (G52s the body read before any units code of its own run in the caller's units:
+        // taken by the caller's factor to the profile's units, not the one the body was
+        // read in; review 62a F9: an inch profile, `G21` / `M98 P2000` of `G52 X-1000.` is
+        // -1000 mm, not -1000 inches)
+        let factor = self.to_profile_units(false);
+        let r = if read == 0.0 { 1.0 } else { factor / read };
         self.early_merge();
         for i in crate::modal::places(u32::from(axes)) {
             if self.shifts.local_unknown & 1 << i != 0 {
                 self.restart_span(i, true);
                 continue;
             }
-            self.shifts.total[i] += local[i] - self.shifts.local[i];
-            self.shifts.local[i] = local[i];
+            self.shifts.total[i] += local[i] * r - self.shifts.local[i];
+            self.shifts.local[i] = local[i] * r;
         }
         self.g52_axes |= axes;
+        self.g52_read_at(factor);
         self.shifts.settle();
     }
 
@@ -2108,6 +2134,7 @@ impl Checker {
                 self.shifts.total[i] += value - self.shifts.local[i];
                 self.shifts.local[i] = value;
                 self.g52_axes |= 1 << i;
+                self.g52_read_at(factor);
                 // (after a return: reached by a jump only)
                 self.shift_unsure |= self.sub_ended;
                 Ok(())
