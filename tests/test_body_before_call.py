@@ -277,3 +277,30 @@ def test_a_carried_g52_is_in_its_caller_s_units(tmp_path, body, expected):
     programs = (f"O2000 / {body} / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / "
                 "G90 / G0 X800. / M30")
     assert said(programs, _wo2h(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (g61: O3000 read apart with no offset calls O2000, which leaves a G52 on: merged
+    # there, its X-780. before the call was no longer judged at its call under G55)
+    ("O2000 / G52 X10. / M99 / O3000 / G0 X-780. / M98 P2000 / M99 / O1000 / "
+     "G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / M30",
+     [("TG601", 12, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+    # (its own G52 after the move: the same)
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / "
+     "M30",
+     [("TG601", 9, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (called under G54: -700, inside)
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P3000 / "
+     "M30", []),
+    # (called in inches: not the units it was read in, not judged; under a G52: not judged)
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G20 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / "
+     "M30", []),
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G52 X5. / "
+     "M98 P3000 / M30", []),
+])
+def test_a_body_merged_by_a_g52_keeps_its_positions_before_it_for_its_calls(tmp_path, programs,
+                                                                            expected):
+    """Review 62a F8: a program read apart with no work offset in force, merged by a G52
+    (its own, or one a call of a program read before carries), keeps the positions it read
+    before it for its later calls, judged there under their offset as a returned body's."""
+    assert said(programs, _wo2(tmp_path)) == expected

@@ -152,6 +152,20 @@ struct Body {
     unplaced: [[Option<Unplaced>; 2]; 9],
 }
 
+/// A program read apart merged by a G52 (its own, or one a call of a program read before
+/// carries): its positions kept with no work offset in force before it, judged at its later
+/// calls as a returned body's are (review 62a F8: `O3000` / `G0 X-780.` / `M98 P2000` of a
+/// G52 program / `M99`, called under G55, runs X-780. at -880).
+#[derive(Debug, Clone)]
+pub(super) struct Merged {
+    number: i64,
+    name: String,
+    unplaced: [[Option<Unplaced>; 2]; 9],
+    factor: f64,
+    read_incremental: Option<bool>,
+    said: u32,
+}
+
 /// A work position of a program read apart with no work offset in force
 /// ([`Body::unplaced`]): the position (the profile's units) and its line.
 #[derive(Debug, Clone, Copy)]
@@ -423,6 +437,69 @@ impl Checker {
             self.offsets_lost |= early.lost_before;
         }
         self.hold_from = None;
+    }
+
+    /// The program in hand, read apart, is merged by a G52 (`at` its block): the positions
+    /// it kept with no work offset in force before it kept for its later calls
+    /// ([`Merged`]), then merged. Its positions from here are read as before.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_merge_keeping(&mut self) {
+        if let Some(early) = self.early.as_ref().filter(|_| self.early_on) {
+            if let Key::Number(number) = early.body.number {
+                if early.body.unplaced.iter().any(|e| e[0].is_some())
+                    && !early.body.after_skippable_end
+                {
+                    let merged = Merged {
+                        number,
+                        name: early.body.name.clone(),
+                        unplaced: early.body.unplaced,
+                        factor: self.to_profile_units(false),
+                        read_incremental: (early.moved_first == Some(true))
+                            .then_some(early.incremental),
+                        said: 0,
+                    };
+                    self.merged_unplaced.retain(|m| m.number != number);
+                    self.merged_unplaced.push(merged);
+                }
+            }
+        }
+        self.early_merge();
+    }
+
+    /// A call of program `number` (`token` at `at`) merged after it kept positions with no
+    /// work offset in force ([`Merged`]): judged under the call's offset, as a returned
+    /// body's are ([`Checker::unplaced_judged`]), where the call runs it under no shift, in
+    /// the units and distance mode it was read in.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn merged_unplaced_judged(&mut self, number: i64, token: &str, at: (usize, usize)) {
+        let Some(k) = self.merged_unplaced.iter().position(|m| m.number == number) else {
+            return;
+        };
+        let unshifted = !self.units_unknown
+            && self
+                .call_shift()
+                .is_some_and(|shift| shift.iter().all(|s| *s == 0.0));
+        let m = &self.merged_unplaced[k];
+        if !unshifted
+            || self.to_profile_units(false) != m.factor
+            || m.read_incremental
+                .is_some_and(|read| read != self.machine.state.incremental)
+        {
+            return;
+        }
+        let mut m = self.merged_unplaced.remove(k);
+        let (name, line) = (m.name.clone(), at.0);
+        let under = |of: usize| {
+            format!(
+                " ({name} runs as called by {token} of line {line}, its position of line {of} \
+                 there: a subprogram written before its call runs in the units and under the \
+                 shift in force there)"
+            )
+        };
+        self.unplaced_judged(&m.unplaced, &mut m.said, at, &under);
+        self.merged_unplaced.insert(k, m);
     }
 
     /// The program in hand ends (`returned`: M99) with calls made in units only assumed
@@ -1817,7 +1894,7 @@ impl Checker {
             self.report(Rule::NotFollowed, message, line, column);
         }
         if r == 1.0 && known && shift.iter().all(|s| *s == 0.0) {
-            self.unplaced_judged(p, at, &under);
+            self.unplaced_judged(&p.body.unplaced, &mut p.unplaced_said, at, &under);
         }
         let (Some(top), Some(feed)) = (self.config.feed_max, p.body.feed.as_ref()) else {
             return;
@@ -1916,14 +1993,15 @@ impl Checker {
     #[inline(never)]
     fn unplaced_judged(
         &mut self,
-        p: &mut Pending,
+        unplaced: &[[Option<Unplaced>; 2]; 9],
+        said: &mut u32,
         at: (usize, usize),
         under: &dyn Fn(usize) -> String,
     ) {
         let Some(work) = self.work else {
             return;
         };
-        if p.body.unplaced.iter().all(|e| e[0].is_none())
+        if unplaced.iter().all(|e| e[0].is_none())
             || self.offsets_lost
             || self.work_guessed.is_some()
             || self.work_run_on
@@ -1969,7 +2047,7 @@ impl Checker {
                 (None, Some(v)) => (v.to_f64(), v.to_string()),
                 (None, None) => continue,
             };
-            let [least, most] = p.body.unplaced[i];
+            let [least, most] = unplaced[i];
             let out = |u: Option<Unplaced>| {
                 u.map(|u| (u, u.at + value))
                     .filter(|&(_, m)| m < low - 1e-9 || m > high + 1e-9)
@@ -1989,10 +2067,10 @@ impl Checker {
                 // one finding, review 61a F3)
                 let side = if machine_at < low { -1 } else { 1 };
                 let bit = 1 << (2 * i + end);
-                if p.unplaced_said & bit != 0 || self.outside[i] == side {
+                if *said & bit != 0 || self.outside[i] == side {
                     continue;
                 }
-                p.unplaced_said |= bit;
+                *said |= bit;
                 let message = format!(
                     "{} goes to {} in machine coordinates (work {} + G{work} offset {named}), \
                      outside the travel {low} to {high}{}",

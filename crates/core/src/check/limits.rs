@@ -666,7 +666,8 @@ impl Checker {
         // -1000 mm, not -1000 inches)
         let factor = self.to_profile_units(false);
         let r = if read == 0.0 { 1.0 } else { factor / read };
-        self.early_merge();
+        // (its positions before the call kept for its own calls, review 62a F8)
+        self.early_merge_keeping();
         for i in crate::modal::places(u32::from(axes)) {
             if self.shifts.local_unknown & 1 << i != 0 {
                 self.restart_span(i, true);
@@ -2109,8 +2110,13 @@ impl Checker {
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let mill = self.config.family == Family::MacroB && !fanuc_lathe;
         // (a program read apart that sets its own shift: its positions after it do not add
-        // to its call's, G52 replacing the local shift; read as before, review 42, finding 7)
-        self.early_merge();
+        // to its call's, G52 replacing the local shift; read as before, review 42, finding 7;
+        // those with no offset in force before a G52 kept for its calls, review 62a F8)
+        if code == 52 {
+            self.early_merge_keeping();
+        } else {
+            self.early_merge();
+        }
         match code {
             52 if mill => {
                 // (under G91 the two readings, the zero at X_ or X_ from the local zero before,

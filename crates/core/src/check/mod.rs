@@ -1495,6 +1495,10 @@ pub struct Checker {
     given_up: Vec<called::GivenUp>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
+    /// The positions a program read apart kept with no work offset in force before it was
+    /// merged by a G52 (its own or a call's carried), judged at its later calls
+    /// ([`Checker::merged_unplaced_judged`]).
+    merged_unplaced: Vec<called::Merged>,
     /// The program numbers the file's calls may name, and whether one may name any
     /// ([`Checker::call_numbers_seen`]).
     call_numbers: std::collections::BTreeSet<i64>,
@@ -1772,6 +1776,7 @@ impl Checker {
             hold_from: None,
             given_up: Vec::new(),
             pending: Vec::new(),
+            merged_unplaced: Vec::new(),
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
             offset_writers: std::collections::BTreeMap::new(),

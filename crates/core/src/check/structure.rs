@@ -506,6 +506,10 @@ impl Checker {
         self.after_call(number);
         // (before the call's own reading: the state it is made in)
         self.call_work(b, number);
+        if !self.merged_unplaced.is_empty() {
+            let (call, column) = self.call_words(b);
+            self.merged_unplaced_judged(number, &call, (b.line, column));
+        }
         let followed = (self.early_on || !self.pending.is_empty() || !self.given_up.is_empty())
             && {
                 let (call, column) = self.call_words(b);
