@@ -304,3 +304,45 @@ def test_a_body_merged_by_a_g52_keeps_its_positions_before_it_for_its_calls(tmp_
     (its own, or one a call of a program read before carries), keeps the positions it read
     before it for its later calls, judged there under their offset as a returned body's."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (g75: `M98 P2000 L0` runs O2000 no time: its G52 not carried, X800. runs at 800)
+    ("O2000 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 L0 / G90 / "
+     "G0 X800. / M30", _SPAN_1550),
+    # (nor is a body judged at it, written after the main or before it)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / M30 / O2000 / G0 X-700. / M99", []),
+    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / M30", []),
+    # (L1 runs it once: judged at the call)
+    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L1 / M30",
+     [("TG601", 8, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_a_call_repeated_zero_times_sets_nothing(tmp_path, programs, expected):
+    """Review 62a F7's g75: `M98 P.. L0` (a repeat count of zero) runs the body no time: it
+    carries no G52 and gives the body no offset to be judged under."""
+    expected = [(rule, line or 10, column, message) for rule, line, column, message in expected]
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (y2: O4000, uncalled, read under the G55 O1000 left; its own G55, then a G10 merging
+    # it: its X-700. under the guess was said, "-800")
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M30 / O4000 / G0 X-700. / G55 / "
+     "G10 L2 P2 X-100. / M99", []),
+    # (y1: its G54 then G55)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P1 X100. / M30 / O4000 / G0 X-700. / G54 / "
+     "G55 / G10 L2 P2 X-100. / M99", []),
+    # (the fuzzer's 1986: O4000 called under that G55 by O2000 written after it: its -820
+    # is true, said)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G0 X-700. / G10 L2 P2 X0. / M30 / O4000 / "
+     "G0 X-720. / G54 / G10 L2 P1 X0. / G52 X-100. / M99 / O2000 / G0 X-700. / G55 / G90 / "
+     "M98 P4000 L2 / M99",
+     [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+      ("TG601", 9, 4, "X goes to -820 in machine coordinates (work -720 + G55 offset -100.0)")]),
+])
+def test_a_merged_program_s_guessed_positions_are_said_where_it_is_called(tmp_path, programs,
+                                                                         expected):
+    """Review 61a F5's second form: a program read under the offset the program before it
+    left (a guess), merged after its own G54-G59, keeps its findings under the guess to the
+    file's end: said where a call in the file names it, dropped where none does."""
+    assert said(programs, _wo2(tmp_path)) == expected

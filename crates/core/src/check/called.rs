@@ -394,6 +394,12 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn early_merge(&mut self) {
+        self.early_merge_as(false);
+    }
+
+    /// [`Checker::early_merge`]; `main`: where the program ends as a main program (M02/M30,
+    /// the file's end, the next program begun), not merged before its end.
+    pub(super) fn early_merge_as(&mut self, main: bool) {
         let Some(early) = self.early.take() else {
             return;
         };
@@ -415,6 +421,17 @@ impl Checker {
                     i += 1;
                     i <= from || !f.guessed
                 });
+            }
+        } else if let (Some(from), Key::Number(n), false) =
+            (self.hold_from, &early.body.number, main)
+        {
+            // (its own G54-G59 since: its findings under the guess held to the file's end,
+            // said where a call of it is in the file, review 61a F5's second form; the
+            // fuzzer's 1986, O4000 called by a later O2000 under that offset, said)
+            if *n >= 0 {
+                for f in self.found.iter_mut().skip(from).filter(|f| f.guessed) {
+                    f.pending_on.push(super::limits::PENDING_CALLED - n);
+                }
             }
         }
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
@@ -989,7 +1006,22 @@ impl Checker {
         }
         let found = std::mem::take(&mut self.found);
         for mut f in found {
-            let numbers = std::mem::take(&mut f.pending_on);
+            let mut numbers = std::mem::take(&mut f.pending_on);
+            // (a guessed position of a program no call names, review 61a F5's second form)
+            if numbers.iter().any(|&n| n <= super::limits::PENDING_CALLED) {
+                let called = |n: i64| self.call_numbers_any || self.call_numbers.contains(&n);
+                if numbers.iter().any(|&n| {
+                    n <= super::limits::PENDING_CALLED
+                        && !called(super::limits::PENDING_CALLED - n)
+                }) {
+                    continue;
+                }
+                numbers.retain(|&n| n > super::limits::PENDING_CALLED);
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
             // (a position of the program's own after calls not read there: held unless
             // each is a program of the file, read, that lost no offsets; review 61a F13)
             if numbers.contains(&super::limits::PENDING_OWN)

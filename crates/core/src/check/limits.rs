@@ -116,6 +116,13 @@ const XYZ: u16 = 0b111;
 /// that axis.
 pub(super) const PENDING_OWN: i64 = -1;
 
+/// Among a finding's [`Finding::pending_on`], `PENDING_CALLED - n`: a position of program
+/// `n` read under the offset the program before it in the file left (a guess), said after
+/// its own G54-G59 by its merge: dropped at the file's end where no call in the file names
+/// `n` (review 61a F5's second form: an uncalled O4000's `G0 X-700.` / `G55` / `G10 L2 P2
+/// X-100.` / `M99` was "X goes to -800"), as an uncalled program's guessed findings are.
+pub(super) const PENDING_CALLED: i64 = -2;
+
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's

@@ -297,7 +297,7 @@ impl Checker {
             if returned {
                 self.early_pend();
             } else {
-                self.early_merge();
+                self.early_merge_as(true);
             }
         }
         if !self.call_works_assumed.is_empty() {

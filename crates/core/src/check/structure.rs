@@ -502,6 +502,17 @@ impl Checker {
             }
             _ => number,
         };
+        // (`M98 P2000 L0`: a repeat count of zero runs the body no time, so the call sets
+        // nothing here: no offset, shift, units or mode of the body's, review 62a F7's g75)
+        if !self.values.gs().contains(&66)
+            && b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'L'
+                    && w.index.is_empty()
+                    && self.readable[i].is_some_and(|v| v.to_f64() == 0.0)
+            })
+        {
+            return;
+        }
         // (a program that leaves what is not followed: its caller too, review 62a)
         self.after_call(number);
         // (before the call's own reading: the state it is made in)
@@ -735,7 +746,7 @@ impl Checker {
         }
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
-        self.early_merge();
+        self.early_merge_as(true);
         // (its calls in units only assumed: a program not ended runs on, the reset state's)
         if !self.call_works_assumed.is_empty() {
             self.call_works_ended(false);
