@@ -346,3 +346,13 @@ def test_a_merged_program_s_guessed_positions_are_said_where_it_is_called(tmp_pa
     left (a guess), merged after its own G54-G59, keeps its findings under the guess to the
     file's end: said where a call in the file names it, dropped where none does."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+def test_a_caller_s_own_position_judged_with_a_later_program_s_g10_names_no_call(tmp_path):
+    """Review 62a F13 (o18c): the caller's own X-700. after its call of O4000, written later,
+    whose G10 writes G55's X-200: "as a G10 before it wrote it", line 7 being no call."""
+    programs = ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P4000 / G90 G55 / G0 X-700. / M30 / "
+                "O4000 / G10 L2 P2 X-200. / M99")
+    assert said(programs, _wo2(tmp_path)) == [
+        ("TG601", 7, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                        "a G10 before it wrote it)")]

@@ -1011,8 +1011,7 @@ impl Checker {
             if numbers.iter().any(|&n| n <= super::limits::PENDING_CALLED) {
                 let called = |n: i64| self.call_numbers_any || self.call_numbers.contains(&n);
                 if numbers.iter().any(|&n| {
-                    n <= super::limits::PENDING_CALLED
-                        && !called(super::limits::PENDING_CALLED - n)
+                    n <= super::limits::PENDING_CALLED && !called(super::limits::PENDING_CALLED - n)
                 }) {
                     continue;
                 }
@@ -1076,7 +1075,16 @@ impl Checker {
                         self.found.push(f);
                         continue;
                     };
-                    let judged = self.rejudged(&f, (place, work, at, value), &|_| tail.clone());
+                    // (a position of the caller's own, on a line that is no call and a
+                    // message naming none: "before it", review 62a F13; one said at a call
+                    // or naming the call it runs as called by, "before this call")
+                    let before = if tail.contains(" as called by ") {
+                        "this call"
+                    } else {
+                        "it"
+                    };
+                    let judged =
+                        self.rejudged(&f, (place, work, at, value), before, &|_| tail.clone());
                     self.found.extend(judged);
                 }
             }
@@ -1217,6 +1225,7 @@ impl Checker {
         &self,
         f: &Finding,
         (place, work, at, value): (u8, u8, f64, f64),
+        before: &str,
         under: &dyn Fn(usize) -> String,
     ) -> Option<Finding> {
         let i = usize::from(place);
@@ -1232,7 +1241,7 @@ impl Checker {
         }
         let message = format!(
             "{} goes to {} in machine coordinates (work {} + G{work} offset {} as a G10 before \
-             this call wrote it), outside the travel {low} to {high}{}",
+             {before} wrote it), outside the travel {low} to {high}{}",
             AXES[i] as char,
             super::round6(machine_at),
             super::round6(at),
@@ -1847,7 +1856,14 @@ impl Checker {
                     }
                     Now::Written(place, work, at_work, value) => {
                         let said = known
-                            .then(|| self.rejudged(&f, (place, work, at_work, value), &under))
+                            .then(|| {
+                                self.rejudged(
+                                    &f,
+                                    (place, work, at_work, value),
+                                    "this call",
+                                    &under,
+                                )
+                            })
                             .flatten()
                             .filter(|_| unshifted);
                         match said {
