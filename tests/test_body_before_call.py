@@ -356,3 +356,37 @@ def test_a_caller_s_own_position_judged_with_a_later_program_s_g10_names_no_call
     assert said(programs, _wo2(tmp_path)) == [
         ("TG601", 7, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
                         "a G10 before it wrote it)")]
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 60 F4, q6: O1000 sets its own units, so it is read as a run of its own; its
+    # only call follows a G10 that writes G55's X0.: X-700. runs at -700, inside; it was
+    # "X goes to -800" with the profile's value)
+    ("O1000 / G21 G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30", []),
+    # (q2: in inches)
+    ("O1000 / G20 G90 G55 G0 X-29.5 / M99 / O2000 / G20 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30", []),
+    # (q1: the G10 in a program written later, called before)
+    ("O1000 / G20 G90 G55 G0 X-29.5 / M99 / O2000 / G20 G17 G90 G54 / G0 X0 Y0 / M98 P100 / "
+     "G90 G55 / M98 P1000 / M30 / O100 / G10 L2 P2 X0. / M99", []),
+    # (the G10 writes X-200.: -900, said with that value where read)
+    ("O1000 / G21 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X-200. / G90 G55 / M98 P1000 / M30",
+     [("TG601", 4, 12, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                       "a G10 before its call wrote it)")]),
+    # (no G10: the profile's value, -800, as before)
+    ("O1000 / G21 G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / G90 G55 / "
+     "M98 P1000 / M30",
+     [("TG601", 3, 16, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (ending as a main, M30: as read, as before)
+    ("O1000 / G21 G90 G55 G0 X-700. / M30 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30",
+     [("TG601", 3, 16, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_a_subprogram_with_its_own_units_is_judged_with_its_calls_g10(tmp_path, programs,
+                                                                      expected):
+    """Review 60 F4: a subprogram read apart whose own units code merges it (read as a run
+    of its own), ending with M99, has its positions under its own G54-G59 judged again at
+    the file's end with the value a G10 of its callers' run wrote before every call."""
+    assert said(programs, _wo2(tmp_path)) == expected

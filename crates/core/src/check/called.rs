@@ -152,6 +152,17 @@ struct Body {
     unplaced: [[Option<Unplaced>; 2]; 9],
 }
 
+impl Early {
+    /// The program's number, where it is numbered and not run on into from the one before
+    /// (skip switch on).
+    pub(super) fn numbered(&self) -> Option<i64> {
+        match self.body.number {
+            Key::Number(n) if !self.body.after_skippable_end => Some(n),
+            _ => None,
+        }
+    }
+}
+
 /// A program read apart merged by a G52 (its own, or one a call of a program read before
 /// carries): its positions kept with no work offset in force before it, judged at its later
 /// calls as a returned body's are (review 62a F8: `O3000` / `G0 X-780.` / `M98 P2000` of a
@@ -1007,6 +1018,22 @@ impl Checker {
         let found = std::mem::take(&mut self.found);
         for mut f in found {
             let mut numbers = std::mem::take(&mut f.pending_on);
+            // (a position under a subprogram's own offset after its own units code: judged
+            // with the value its callers' G10 wrote before every call, review 60 F4)
+            if numbers
+                .iter()
+                .any(|&n| n <= super::limits::PENDING_CALLS_WRITTEN)
+            {
+                let Some(f2) = self.calls_rejudged(f, &numbers) else {
+                    continue;
+                };
+                f = f2;
+                numbers.retain(|&n| n > super::limits::PENDING_CALLS_WRITTEN);
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
             // (a guessed position of a program no call names, review 61a F5's second form)
             if numbers.iter().any(|&n| n <= super::limits::PENDING_CALLED) {
                 let called = |n: i64| self.call_numbers_any || self.call_numbers.contains(&n);
@@ -1089,6 +1116,62 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// A finding `f` marked [`super::limits::PENDING_CALLS_WRITTEN`] (`marks`): where every
+    /// call of its program was made after a G10 of the same value on its offset's axis,
+    /// judged again with it (None where within the travel, or where the value is not known);
+    /// else as said.
+    fn calls_rejudged(&self, f: Finding, marks: &[i64]) -> Option<Finding> {
+        let Placed::Offset {
+            place, work, at, ..
+        } = f.placed
+        else {
+            return Some(f);
+        };
+        let (w, i) = (usize::from(work), usize::from(place));
+        let (low, high) = self.travel.of_place(i)?;
+        let mut value = None;
+        for &m in marks
+            .iter()
+            .filter(|&&m| m <= super::limits::PENDING_CALLS_WRITTEN)
+        {
+            let n = super::limits::PENDING_CALLS_WRITTEN - m;
+            let Some((written, unread)) = self.calls_written(n, w, i) else {
+                continue;
+            };
+            // (a program written later, called before: the value it leaves, review 60 F4's
+            // q1; several values, one putting the position inside: not said)
+            let later = (!unread.is_empty())
+                .then(|| self.written_later(&unread, w, i))
+                .flatten();
+            value = match (later, written) {
+                (Some(values), _) if values.iter().any(|v| v.0.is_nan()) => Some(f64::NAN),
+                (Some(values), _) if values.len() == 1 && values[0].1 => Some(values[0].0),
+                (Some(values), _) => {
+                    let inside = |v: f64| (low - 1e-9..=high + 1e-9).contains(&(at + v));
+                    if values.iter().any(|&(v, _)| inside(v)) {
+                        Some(f64::NAN)
+                    } else {
+                        written
+                    }
+                }
+                (None, written) => written,
+            }
+            .or(value);
+        }
+        let Some(value) = value else {
+            return Some(f);
+        };
+        if value.is_nan() {
+            return None;
+        }
+        let range = format!("outside the travel {low} to {high}");
+        let tail = f
+            .message
+            .find(&range)
+            .map(|k| f.message[k + range.len()..].to_string())?;
+        self.rejudged(&f, (place, work, at, value), "its call", &|_| tail.clone())
     }
 
     /// The value offset G`work` (54-59) has on the axis of place `place` after the programs

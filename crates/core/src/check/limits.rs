@@ -123,6 +123,14 @@ pub(super) const PENDING_OWN: i64 = -1;
 /// X-100.` / `M99` was "X goes to -800"), as an uncalled program's guessed findings are.
 pub(super) const PENDING_CALLED: i64 = -2;
 
+/// Among a finding's [`Finding::pending_on`], `PENDING_CALLS_WRITTEN - n`: a position under
+/// program `n`'s own G54-G59, read after its own units code merged it with the file's
+/// reading, `n` ending with M99: judged again at the file's end with the value a G10 of its
+/// callers' run wrote before its calls, where all its calls agree on it (review 60 F4:
+/// `O1000` / `G21 G90 G55 G0 X-700.` / `M99` called after `G10 L2 P2 X0.` runs at -700).
+/// Below every [`PENDING_CALLED`] mark.
+pub(super) const PENDING_CALLS_WRITTEN: i64 = -(1 << 40);
+
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -3357,6 +3365,12 @@ impl Checker {
             if !self.offsets_written.unread.is_empty() {
                 f.pending_on.clone_from(&self.offsets_written.unread);
                 f.pending_on.push(PENDING_OWN);
+            }
+            // (a subprogram's own offset after its own units code: review 60 F4)
+            if let Some(n) = self.units_merged {
+                if matches!(placed, super::Placed::Offset { .. }) && self.work_guessed.is_none() {
+                    f.pending_on.push(PENDING_CALLS_WRITTEN - n);
+                }
             }
         }
         said

@@ -1499,6 +1499,9 @@ pub struct Checker {
     /// merged by a G52 (its own or a call's carried), judged at its later calls
     /// ([`Checker::merged_unplaced_judged`]).
     merged_unplaced: Vec<called::Merged>,
+    /// The program in hand, numbered, read apart until its own units code merged it: its
+    /// positions under its own offset held ([`limits::PENDING_CALLS_WRITTEN`]) to its end.
+    units_merged: Option<i64>,
     /// The program numbers the file's calls may name, and whether one may name any
     /// ([`Checker::call_numbers_seen`]).
     call_numbers: std::collections::BTreeSet<i64>,
@@ -1777,6 +1780,7 @@ impl Checker {
             given_up: Vec::new(),
             pending: Vec::new(),
             merged_unplaced: Vec::new(),
+            units_merged: None,
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
             offset_writers: std::collections::BTreeMap::new(),

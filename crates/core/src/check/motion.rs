@@ -303,6 +303,9 @@ impl Checker {
         if !self.call_works_assumed.is_empty() {
             self.call_works_ended(returned);
         }
+        if self.units_merged.is_some() {
+            self.units_merged_ended(returned);
+        }
         self.feed_unheld = false;
     }
 

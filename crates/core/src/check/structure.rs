@@ -610,6 +610,47 @@ impl Checker {
         self.call_work_kept(number, here);
     }
 
+    /// A program read apart, numbered, merged by its own units code: its positions under its
+    /// own offset from here held to its end ([`Checker::units_merged`]).
+    fn units_merged_from(&mut self) {
+        if !self.early_on || self.config.family != crate::lex::Family::MacroB {
+            return;
+        }
+        if let Some(n) = self.early.as_ref().and_then(|e| e.numbered()) {
+            self.units_merged = Some(n);
+        }
+    }
+
+    /// The program in hand ends (`returned`: M99): where it ends as a main, its positions
+    /// held by [`Checker::units_merged_from`] are as said (the marks taken off).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn units_merged_ended(&mut self, returned: bool) {
+        let Some(n) = self.units_merged.take() else {
+            return;
+        };
+        if !returned {
+            let mark = super::limits::PENDING_CALLS_WRITTEN - n;
+            for f in &mut self.found {
+                f.pending_on.retain(|&m| m != mark);
+            }
+        }
+    }
+
+    /// The value a G10 of its callers' run wrote before every call of program `n` on offset
+    /// G`work`'s axis of place `place` (None where none wrote it, NaN where not known), and
+    /// the programs written later called before them: None where no call, or calls that
+    /// disagree.
+    pub(super) fn calls_written(
+        &self,
+        n: i64,
+        work: usize,
+        place: usize,
+    ) -> Option<(Option<f64>, Vec<i64>)> {
+        let cw = self.call_works.get(&n)?.as_ref()?;
+        Some((cw.written.value(work, place), cw.written.unread.clone()))
+    }
+
     /// [`Checker::call_works`]: the offset `here` of a call of program `number`, joined
     /// with the calls' before it (None where they disagree).
     pub(super) fn call_work_kept(&mut self, number: i64, here: Option<CallWork>) {
@@ -751,6 +792,9 @@ impl Checker {
         if !self.call_works_assumed.is_empty() {
             self.call_works_ended(false);
         }
+        if self.units_merged.is_some() {
+            self.units_merged_ended(false);
+        }
         // (a run of its own: what the program before wrote is not this one's caller's; but
         // with the block skip switch on, the program before runs on into it: that run's)
         if !self.end_skippable {
@@ -851,6 +895,7 @@ impl Checker {
             if self.units_unknown {
                 self.units_known_again();
             }
+            self.units_merged_from();
             self.early_merge();
         }
     }
