@@ -307,20 +307,19 @@ def test_a_body_merged_by_a_g52_keeps_its_positions_before_it_for_its_calls(tmp_
 
 
 @pytest.mark.parametrize("programs, expected", [
-    # (g75: `M98 P2000 L0` runs O2000 no time: its G52 not carried, X800. runs at 800)
+    # (g75: `M98 P2000 L0` may run O2000 no time: its G52 not carried, X800. may run at 800)
     ("O2000 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 L0 / G90 / "
-     "G0 X800. / M30", _SPAN_1550),
-    # (nor is a body judged at it, written after the main or before it)
-    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / M30 / O2000 / G0 X-700. / M99", []),
-    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / M30", []),
-    # (L1 runs it once: judged at the call)
-    ("O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L1 / M30",
-     [("TG601", 8, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+     "G0 X800. / M30", [(r, 10, c, m) for r, _, c, m in _SPAN_1550]),
+    # (review 63 F3: the L0 call still a call; the later one under G54 judged: -780 is
+    # beyond the travel whichever runs, said at the first)
+    ("O2000 / G0 X-780. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / G54 / "
+     "M98 P2000 / M30",
+     [("TG601", 8, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
 ])
-def test_a_call_repeated_zero_times_sets_nothing(tmp_path, programs, expected):
-    """Review 62a F7's g75: `M98 P.. L0` (a repeat count of zero) runs the body no time: it
-    carries no G52 and gives the body no offset to be judged under."""
-    expected = [(rule, line or 10, column, message) for rule, line, column, message in expected]
+def test_a_call_repeated_zero_times_carries_no_g52(tmp_path, programs, expected):
+    """Review 62a F7's g75: `M98 P.. L0` (a repeat count of zero, which may run the body no
+    time; no page at hand says) carries no G52 into its caller; it is a call otherwise, as
+    before (review 63 F3, F6, F7: taking it as no call lost real errors)."""
     assert said(programs, _wo2(tmp_path)) == expected
 
 
@@ -389,4 +388,25 @@ def test_a_subprogram_with_its_own_units_is_judged_with_its_calls_g10(tmp_path, 
     """Review 60 F4: a subprogram read apart whose own units code merges it (read as a run
     of its own), ending with M99, has its positions under its own G54-G59 judged again at
     the file's end with the value a G10 of its callers' run wrote before every call."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 63 F1: O3000 merged at its own G21 after its call of O2000, returns; called by
+    # a G21 main on a metric profile: the call was made in the millimetres assumed, -880)
+    ("O3000 / G90 G55 / M98 P2000 / G21 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30 / O2000 / G0 X-780. / M99",
+     [("TG601", 13, 4, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+    # (review 63 F2: a second main, M30, merged by its G10 after its own G55: a main's
+    # finding under the guess, said as before)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 / M30 / O2000 / G0 X-800. / G55 / G10 L2 P2 X-100. / "
+     "M30",
+     [("TG601", 7, 4, "X goes to -900 in machine coordinates (work -800 + G55 offset -100.0)")]),
+    # (review 63 F4: its own G54 after the held position: said as read, as before)
+    ("O1000 / G21 / G90 G55 G0 X-700. / G54 / G0 X-780. / M99 / O2000 / G21 G17 G90 G54 / "
+     "G0 X0 Y0 / G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30",
+     [("TG601", 4, 12, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_review_63_s_regressions(tmp_path, programs, expected):
+    """Review 63 F1, F2, F4: real errors the first forms of these fixes lost."""
     assert said(programs, _wo2(tmp_path)) == expected

@@ -442,6 +442,7 @@ impl Checker {
             if *n >= 0 {
                 for f in self.found.iter_mut().skip(from).filter(|f| f.guessed) {
                     f.pending_on.push(super::limits::PENDING_CALLED - n);
+                    self.guess_marked = Some(*n);
                 }
             }
         }
@@ -541,7 +542,17 @@ impl Checker {
     #[inline(never)]
     pub(super) fn call_works_ended(&mut self, returned: bool) {
         if returned {
-            self.call_works_dropped();
+            // (a subprogram: its calls were made in its callers' units, known where all its
+            // calls are seen; review 63 F1: a metric caller on a metric profile, the call
+            // made in the millimetres assumed)
+            match self.in_hand {
+                Some(caller) if self.early.is_none() => {
+                    for (number, here) in std::mem::take(&mut self.call_works_assumed) {
+                        self.call_works_deferred.push((caller, number, here));
+                    }
+                }
+                _ => self.call_works_dropped(),
+            }
         } else {
             for (number, here) in std::mem::take(&mut self.call_works_assumed) {
                 self.call_work_kept(number, here);
@@ -644,6 +655,32 @@ impl Checker {
             }
         }
         self.early_merge();
+    }
+
+    /// A program begins (`starting`): the calls deferred at a merged subprogram's M99
+    /// ([`Checker::call_works_deferred`]) whose caller's calls are all seen in units known
+    /// are kept where those are the units assumed (the reset state's), not known where not;
+    /// those of the program beginning, still not resolved, not known.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_works_resolved(&mut self, starting: Option<i64>) {
+        let assumed = self.config.modal.default_units;
+        for (caller, number, here) in std::mem::take(&mut self.call_works_deferred) {
+            match self.call_units.get(&caller) {
+                Some(Some((units, _, _))) if *units == assumed => {
+                    self.call_work_kept(number, here);
+                }
+                Some(_) => {
+                    self.call_works_unknown.insert(number);
+                    self.call_work_kept(number, None);
+                }
+                None if Some(number) == starting => {
+                    self.call_works_unknown.insert(number);
+                    self.call_work_kept(number, None);
+                }
+                None => self.call_works_deferred.push((caller, number, here)),
+            }
+        }
     }
 
     /// The calls of a program read apart in units only assumed ([`Checker::call_works_assumed`])
@@ -1124,7 +1161,10 @@ impl Checker {
     /// else as said.
     fn calls_rejudged(&self, f: Finding, marks: &[i64]) -> Option<Finding> {
         let Placed::Offset {
-            place, work, at, ..
+            place,
+            work,
+            at,
+            line,
         } = f.placed
         else {
             return Some(f);
@@ -1167,10 +1207,15 @@ impl Checker {
             return None;
         }
         let range = format!("outside the travel {low} to {high}");
-        let tail = f
+        let mut tail = f
             .message
             .find(&range)
-            .map(|k| f.message[k + range.len()..].to_string())?;
+            .map(|k| farthest_named(&f.message[k + range.len()..], line))?;
+        // (the excursion's farthest position, which the value judges, on another line than
+        // its first, the finding's: named, review 63 F5)
+        if line != f.line && !tail.contains("its position of line ") {
+            tail = format!(" (its farthest position there, of line {line}){tail}");
+        }
         self.rejudged(&f, (place, work, at, value), "its call", &|_| tail.clone())
     }
 

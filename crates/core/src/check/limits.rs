@@ -896,6 +896,9 @@ impl Checker {
         number: Option<u32>,
         line: usize,
     ) -> Written {
+        if self.units_merged.is_some() {
+            self.units_merged_stopped();
+        }
         let axis = g
             .zip(number)
             .and_then(|(_, n)| self.variable_axis((n as usize - 5221) % 20))
@@ -1030,6 +1033,16 @@ impl Checker {
     #[inline(never)]
     fn work_offset_given(&mut self, b: &BlockView<'_>) -> bool {
         let line = b.line;
+        if self.units_merged.is_some() && self.letters & bit(b'G') != 0 {
+            let changes = b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'G'
+                    && self.readable[i]
+                        .is_some_and(|v| matches!(v.to_f64() as i64, 10 | 52 | 92 | 54..=59))
+            });
+            if changes {
+                self.units_merged_stopped();
+            }
+        }
         let sinumerik = self.config.family == Family::Sinumerik;
         let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;

@@ -1474,6 +1474,9 @@ pub struct Checker {
     /// units the reset state's), as not known where it returns, a subprogram whose units
     /// are its own caller's (review 61a F11 and F7).
     call_works_assumed: Vec<(i64, Option<structure::CallWork>)>,
+    /// Those of a program merged before its M99 (its caller `.0`): made in its callers'
+    /// units, resolved where those are known ([`Checker::call_works_resolved`]).
+    call_works_deferred: Vec<(i64, i64, Option<structure::CallWork>)>,
     /// The program in hand, written after its calls, runs under the work offset of
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
@@ -1502,6 +1505,9 @@ pub struct Checker {
     /// The program in hand, numbered, read apart until its own units code merged it: its
     /// positions under its own offset held ([`limits::PENDING_CALLS_WRITTEN`]) to its end.
     units_merged: Option<i64>,
+    /// The program in hand, whose findings under a guessed offset were held at its merge
+    /// ([`limits::PENDING_CALLED`]): where it ends as a main, said as a main's.
+    guess_marked: Option<i64>,
     /// The program numbers the file's calls may name, and whether one may name any
     /// ([`Checker::call_numbers_seen`]).
     call_numbers: std::collections::BTreeSet<i64>,
@@ -1772,6 +1778,7 @@ impl Checker {
             call_works: HashMap::new(),
             call_works_unknown: HashSet::new(),
             call_works_assumed: Vec::new(),
+            call_works_deferred: Vec::new(),
             work_call: None,
             units_unknown: false,
             early: None,
@@ -1781,6 +1788,7 @@ impl Checker {
             pending: Vec::new(),
             merged_unplaced: Vec::new(),
             units_merged: None,
+            guess_marked: None,
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
             offset_writers: std::collections::BTreeMap::new(),

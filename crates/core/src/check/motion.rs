@@ -303,7 +303,7 @@ impl Checker {
         if !self.call_works_assumed.is_empty() {
             self.call_works_ended(returned);
         }
-        if self.units_merged.is_some() {
+        if self.units_merged.is_some() || self.guess_marked.is_some() {
             self.units_merged_ended(returned);
         }
         self.feed_unheld = false;

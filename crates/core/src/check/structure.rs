@@ -405,7 +405,14 @@ impl Checker {
                 && !b
                     .words
                     .iter()
-                    .any(|w| w.letter == b'Q' && w.index.is_empty());
+                    .any(|w| w.letter == b'Q' && w.index.is_empty())
+                // (`M98 P2000 L0`: a repeat count of zero may run the body no time; no page
+                // at hand says: not carried, review 62a F7's g75)
+                && !b.words.iter().enumerate().any(|(i, w)| {
+                    w.letter == b'L'
+                        && w.index.is_empty()
+                        && self.readable[i].is_some_and(|v| v.to_f64() == 0.0)
+                });
             self.shift_carried(number, surely);
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
@@ -502,17 +509,6 @@ impl Checker {
             }
             _ => number,
         };
-        // (`M98 P2000 L0`: a repeat count of zero runs the body no time, so the call sets
-        // nothing here: no offset, shift, units or mode of the body's, review 62a F7's g75)
-        if !self.values.gs().contains(&66)
-            && b.words.iter().enumerate().any(|(i, w)| {
-                w.letter == b'L'
-                    && w.index.is_empty()
-                    && self.readable[i].is_some_and(|v| v.to_f64() == 0.0)
-            })
-        {
-            return;
-        }
         // (a program that leaves what is not followed: its caller too, review 62a)
         self.after_call(number);
         // (before the call's own reading: the state it is made in)
@@ -626,14 +622,45 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn units_merged_ended(&mut self, returned: bool) {
-        let Some(n) = self.units_merged.take() else {
+        // (and its guessed findings held at its merge: a main's, said; review 61a F5's
+        // second form is a program that returns)
+        let marks = [
+            self.units_merged
+                .take()
+                .map(|n| super::limits::PENDING_CALLS_WRITTEN - n),
+            self.guess_marked
+                .take()
+                .map(|n| super::limits::PENDING_CALLED - n),
+        ];
+        if !returned {
+            for mark in marks.into_iter().flatten() {
+                for f in &mut self.found {
+                    f.pending_on.retain(|&m| m != mark);
+                }
+            }
+        }
+    }
+
+    /// The program in hand, merged by its own units code ([`Checker::units_merged`]), changes
+    /// or shifts its own offsets (a G10, G52, G92, G54-G59, a work offset's variable): a
+    /// position beyond the travel held before is one excursion with those after it, which
+    /// this one may run under another value; held no longer, said as read, as before (review
+    /// 63 F4: `G90 G55 G0 X-700.` / `G54` / `G0 X-780.` said only the first, which its
+    /// callers' G10 puts inside).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn units_merged_stopped(&mut self) {
+        let Some(n) = self.units_merged else {
             return;
         };
-        if !returned {
-            let mark = super::limits::PENDING_CALLS_WRITTEN - n;
-            for f in &mut self.found {
-                f.pending_on.retain(|&m| m != mark);
-            }
+        // (none held yet: the offsets it selects or writes before its first are its own)
+        let mark = super::limits::PENDING_CALLS_WRITTEN - n;
+        if !self.found.iter().any(|f| f.pending_on.contains(&mark)) {
+            return;
+        }
+        self.units_merged = None;
+        for f in &mut self.found {
+            f.pending_on.retain(|&m| m != mark);
         }
     }
 
@@ -792,7 +819,7 @@ impl Checker {
         if !self.call_works_assumed.is_empty() {
             self.call_works_ended(false);
         }
-        if self.units_merged.is_some() {
+        if self.units_merged.is_some() || self.guess_marked.is_some() {
             self.units_merged_ended(false);
         }
         // (a run of its own: what the program before wrote is not this one's caller's; but
@@ -811,6 +838,9 @@ impl Checker {
             .and_then(|n| n.parse::<i64>().ok());
         self.file_programs.extend(number);
         self.in_hand = number;
+        if !self.call_works_deferred.is_empty() {
+            self.call_works_resolved(number);
+        }
         // a program no call before it names may be the subprogram of a call after it (a
         // memory backup lists programs by number): read apart until it shows what it is
         // (crate::check::called; review 39, finding 4)
