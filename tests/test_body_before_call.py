@@ -410,3 +410,39 @@ def test_a_subprogram_with_its_own_units_is_judged_with_its_calls_g10(tmp_path, 
 def test_review_63_s_regressions(tmp_path, programs, expected):
     """Review 63 F1, F2, F4: real errors the first forms of these fixes lost."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 63 F8: the body's last G52 of X, read after its own G21, is in millimetres
+    # whatever its G52 before the G21: X800. runs at -200, the span from -750 fits; it was
+    # "X spans 1550")
+    ("O2000 / G52 X0 / G21 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30", []),
+    ("O2000 / G52 X-1000. / G21 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30", []),
+    # (a G52 of another axis before the G21)
+    ("O2000 / G52 Y0 / G21 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30", []),
+    # (G52 X10. last: X800. at 810, the span 1560 said with its true figure)
+    ("O2000 / G52 X-1000. / G21 / G52 X10. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30",
+     [("TG601", 12, 4, "X spans 1560 (from -750 to 810), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+    # (review 63 F9: a G52 carried through two calls, the inner body in its own inches:
+    # G52 X1. is 25.4 mm once, X29. runs at 762, the span from -749.3 fits; it was scaled
+    # twice, "X spans 2131.06")
+    ("O2000 / G20 / G52 X1. / M99 / O3000 / M98 P2000 / M99 / O1000 / G20 G90 G54 / "
+     "G0 X-29.5 / M98 P3000 / G90 / G0 X29. / M30", []),
+    ("O2000 / G21 / G52 X25.4 / M99 / O3000 / M98 P2000 / M99 / O1000 / G20 G90 G54 / "
+     "G0 X-29.5 / M98 P3000 / G20 / G90 / G0 X29. / M30", []),
+    # (X30. at 787.4: the span 1536.7, said)
+    ("O2000 / G20 / G52 X1. / M99 / O3000 / M98 P2000 / M99 / O1000 / G20 G90 G54 / "
+     "G0 X-29.5 / M98 P3000 / G90 / G0 X30. / M30",
+     [("TG601", 14, 4, "X spans 1536.7 (from -749.3 to 787.4), more than the travel -762 to "
+                       "762: no work offset fits the program on this machine")]),
+])
+def test_a_carried_g52_s_units_are_its_last_g52_s_of_each_axis(tmp_path, programs, expected):
+    """Review 63 F8, F9: what a body leaves is each axis's last G52, in the units that one was
+    read in (the body's own, exact, or its caller's where only assumed); a G52 carried from a
+    body's own units stays exact through a caller with none of its own."""
+    assert said(programs, _wo2(tmp_path)) == expected

@@ -630,25 +630,20 @@ impl Checker {
             && s.local_unknown == 0
             && (0..AXES.len()).all(|i| s.total[i] == s.local[i])
             && writer.is_none_or(|(w, _)| !w.moved && w.unread.is_empty());
-        // (G52s read in units only assumed and others in units written: which the caller's
-        // units make them is not one factor, not followed)
-        let known = known && read.is_none_or(f64::is_finite);
-        let end = known.then_some((g52, s.local, read.unwrap_or(0.0)));
+        let end = known.then_some((g52, s.local, read));
         self.shift_ends.insert(n, end);
     }
 
-    /// A G52 (or one a call carries) read at `factor` to the profile's units: where the
-    /// program had written no units code by it, the factor (one for all of them, else not
-    /// followed: NaN), 0 where it had ([`Checker::shift_ends`]).
-    fn g52_read_at(&mut self, factor: f64) {
-        let this = if self.machine.state.units_given {
+    /// A G52 of axis place `i` (or one a call carries) read at `factor` to the profile's
+    /// units: where the program had written no units code by it, the factor, 0 where it
+    /// had or the value is exact (`exact`, carried from a body's own units); the last of
+    /// each axis counts, as a G52 replaces the local shift (review 63 F8, F9)
+    /// ([`Checker::shift_ends`]).
+    fn g52_read_at(&mut self, i: usize, factor: f64, exact: bool) {
+        self.g52_read[i] = if self.machine.state.units_given || exact {
             0.0
         } else {
             factor
-        };
-        self.g52_read = match self.g52_read {
-            Some(r) if r != this => Some(f64::NAN),
-            _ => Some(this),
         };
     }
 
@@ -680,7 +675,6 @@ impl Checker {
         // read in; review 62a F9: an inch profile, `G21` / `M98 P2000` of `G52 X-1000.` is
         // -1000 mm, not -1000 inches)
         let factor = self.to_profile_units(false);
-        let r = if read == 0.0 { 1.0 } else { factor / read };
         // (its positions before the call kept for its own calls, review 62a F8)
         self.early_merge_keeping();
         for i in crate::modal::places(u32::from(axes)) {
@@ -688,11 +682,16 @@ impl Checker {
                 self.restart_span(i, true);
                 continue;
             }
+            let r = if read[i] == 0.0 {
+                1.0
+            } else {
+                factor / read[i]
+            };
             self.shifts.total[i] += local[i] * r - self.shifts.local[i];
             self.shifts.local[i] = local[i] * r;
+            self.g52_read_at(i, factor, read[i] == 0.0);
         }
         self.g52_axes |= axes;
-        self.g52_read_at(factor);
         self.shifts.settle();
     }
 
@@ -2168,7 +2167,7 @@ impl Checker {
                 self.shifts.total[i] += value - self.shifts.local[i];
                 self.shifts.local[i] = value;
                 self.g52_axes |= 1 << i;
-                self.g52_read_at(factor);
+                self.g52_read_at(i, factor, false);
                 // (after a return: reached by a jump only)
                 self.shift_unsure |= self.sub_ended;
                 Ok(())

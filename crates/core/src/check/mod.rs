@@ -1023,8 +1023,9 @@ pub struct Checker {
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
     g52_axes: u16,
-    /// [`Checker::g52_read_at`]: the units the program in hand's G52s were read in.
-    g52_read: Option<f64>,
+    /// [`Checker::g52_read_at`]: the units the program in hand's last G52 of each axis was
+    /// read in (the factor where only assumed, 0 where written).
+    g52_read: [f64; 9],
     shift_clean_start: bool,
     /// A jump, condition or loop, a G52 after a return, or a call of a program whose shift at
     /// its end is not known, in the program in hand: what it leaves on is not surely known.
@@ -1032,9 +1033,10 @@ pub struct Checker {
     /// Each FANUC/Haas program of the file that left a G52 or another shift on at its end:
     /// the axes its G52s wrote and the local shift it left, where surely known (no G92, no
     /// jump, condition or loop, no call not followed, no shift at its start); None where not.
-    /// With them the factor to the profile's units its G52s were read in where the program
-    /// had written no units code by them (they run in its caller's units), 0 where it had.
-    shift_ends: HashMap<i64, Option<(u16, [f64; 9], f64)>>,
+    /// With them, each axis's, the factor to the profile's units its last G52 was read in
+    /// where the program had written no units code by it (it runs in its caller's units), 0
+    /// where it had.
+    shift_ends: HashMap<i64, Option<(u16, [f64; 9], [f64; 9])>>,
     offsets_lost: bool,
     /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
     /// program in hand has written before here: by a G10 of its own that writes it
@@ -1696,7 +1698,7 @@ impl Checker {
             offsets_unread_only: false,
             call_unread_here: false,
             g52_axes: 0,
-            g52_read: None,
+            g52_read: [0.0; 9],
             shift_clean_start: true,
             shift_unsure: false,
             shift_ends: HashMap::new(),
