@@ -763,6 +763,10 @@ struct Implicit {
     increments: bool,
 }
 
+/// [`Checker::shift_ends`]: the axes a program's G52s wrote, the local shift it left, and
+/// each axis's factor its last G52 was read at (0 where exact).
+type ShiftEnd = (u16, [f64; 9], [f64; 9]);
+
 /// A LinuxCNC definition's body as [`Checker::linuxcnc_bodies`] keeps it: its label, whether
 /// it may set the feed mode or end the program, the labels it calls, the distance mode it
 /// returns in, its refusals that wait for a call ([`structure::CallRefusal`]), and whether a
@@ -1036,7 +1040,7 @@ pub struct Checker {
     /// With them, each axis's, the factor to the profile's units its last G52 was read in
     /// where the program had written no units code by it (it runs in its caller's units), 0
     /// where it had.
-    shift_ends: HashMap<i64, Option<(u16, [f64; 9], [f64; 9])>>,
+    shift_ends: HashMap<i64, Option<ShiftEnd>>,
     offsets_lost: bool,
     /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
     /// program in hand has written before here: by a G10 of its own that writes it
