@@ -211,3 +211,238 @@ def test_offsets_set_by_variables_guessed_offsets_and_shifts_after_the_end(tmp_p
     known, G10 before or not. A body written after the main runs under the shift at its
     calls, not the main's end's."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+def _wo2h(tmp_path):
+    """A Haas mill in inches whose G55 is X-4 (X travel -30..30)."""
+    profile = tmp_path / "wo2h.toml"
+    profile.write_text('name = "wo2h"\nbase = "haas-mill"\n[limits]\n'
+                       "X = [-30.0, 30.0]\nY = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n"
+                       "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
+    return str(profile)
+
+
+_BODY = " / O2000 / G0 X-27. / M99"
+_MINUS_31 = "X goes to -31 in machine coordinates (work -27 + G55 offset -4.0)"
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (h82: O3000 read apart, merged at its own G20 after its call of O2000, returns: the
+    # call was made in its caller's millimetres, -27 mm is inside; it was kept as made in
+    # the profile's inches, "-31")
+    ("O3000 / G90 G55 / M98 P2000 / G20 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30" + _BODY, []),
+    # (h83: merged at its own G52)
+    ("O3000 / G90 G55 / M98 P2000 / G52 X0.5 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30" + _BODY, []),
+    # (h80: merged at the G52 a call of O4000 carries)
+    ("O4000 / G52 X0.5 / M99 / O3000 / G90 G55 / M98 P2000 / M98 P4000 / M99 / O1000 / "
+     "G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / M30" + _BODY, []),
+    # (merged the same way but ending as a main (M30): its call made in the reset units,
+    # inches: -31)
+    ("O3000 / G90 G55 / M98 P2000 / G20 / M30" + _BODY,
+     [("TG601", 8, 4, _MINUS_31)]),
+    # (its own G20 before the call: the call's units known)
+    ("O3000 / G90 G55 / G20 / M98 P2000 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30" + _BODY,
+     [("TG601", 13, 4, _MINUS_31)]),
+])
+def test_a_call_in_units_only_assumed_is_settled_at_its_program_s_end(tmp_path, programs,
+                                                                      expected):
+    """Review 62a F12: a program read apart before its units code keeps its calls (made in
+    units only assumed) to its end, not to a merge before it: where it returns (M99) they
+    were made in its caller's units, not known here; where it ends as a main, in the reset
+    state's."""
+    assert said(programs, _wo2h(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("body, expected", [
+    # (g80: O2000's G52 X-1000. runs in the caller's millimetres: X800. at -200 mm, the span
+    # from -750 mm fits; it was carried as -1000 inches, "X spans 938.976378")
+    ("G52 X-1000.", []),
+    # (G52 X10.: X800. at 810 mm, 31.889764 in)
+    ("G52 X10.", [("TG601", 10, 4, "X spans 61.417323 (from -29.527559 to 31.889764), more "
+                                   "than the travel -30 to 30: no work offset fits the "
+                                   "program on this machine")]),
+    # (the body's own G21 before it: millimetres surely, the same)
+    ("G21 / G52 X10.", [("TG601", 11, 4, "X spans 61.417323 (from -29.527559 to 31.889764), "
+                                         "more than the travel -30 to 30: no work offset fits "
+                                         "the program on this machine")]),
+])
+def test_a_carried_g52_is_in_its_caller_s_units(tmp_path, body, expected):
+    """Review 62a F9: a G52 a body read before any units code of its own leaves on runs in
+    its caller's units: carried by the caller's factor to the profile's units, not the one
+    the body was read in (an inch profile, a G21 caller)."""
+    programs = (f"O2000 / {body} / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / "
+                "G90 / G0 X800. / M30")
+    assert said(programs, _wo2h(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (g61: O3000 read apart with no offset calls O2000, which leaves a G52 on: merged
+    # there, its X-780. before the call was no longer judged at its call under G55)
+    ("O2000 / G52 X10. / M99 / O3000 / G0 X-780. / M98 P2000 / M99 / O1000 / "
+     "G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / M30",
+     [("TG601", 12, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+    # (its own G52 after the move: the same)
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / "
+     "M30",
+     [("TG601", 9, 5, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (called under G54: -700, inside)
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P3000 / "
+     "M30", []),
+    # (called in inches: not the units it was read in, not judged; under a G52: not judged)
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G20 G17 G90 G55 / G0 X0 Y0 / M98 P3000 / "
+     "M30", []),
+    ("O3000 / G0 X-700. / G52 X10. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G52 X5. / "
+     "M98 P3000 / M30", []),
+])
+def test_a_body_merged_by_a_g52_keeps_its_positions_before_it_for_its_calls(tmp_path, programs,
+                                                                            expected):
+    """Review 62a F8: a program read apart with no work offset in force, merged by a G52
+    (its own, or one a call of a program read before carries), keeps the positions it read
+    before it for its later calls, judged there under their offset as a returned body's."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (g75: `M98 P2000 L0` may run O2000 no time: its G52 not carried, X800. may run at 800)
+    ("O2000 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 L0 / G90 / "
+     "G0 X800. / M30", [(r, 10, c, m) for r, _, c, m in _SPAN_1550]),
+    # (review 63 F3: the L0 call still a call; the later one under G54 judged: -780 is
+    # beyond the travel whichever runs, said at the first)
+    ("O2000 / G0 X-780. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / G54 / "
+     "M98 P2000 / M30",
+     [("TG601", 8, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+])
+def test_a_call_repeated_zero_times_carries_no_g52(tmp_path, programs, expected):
+    """Review 62a F7's g75: `M98 P.. L0` (a repeat count of zero, which may run the body no
+    time; no page at hand says) carries no G52 into its caller; it is a call otherwise, as
+    before (review 63 F3, F6, F7: taking it as no call lost real errors)."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (y2: O4000, uncalled, read under the G55 O1000 left; its own G55, then a G10 merging
+    # it: its X-700. under the guess was said, "-800")
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M30 / O4000 / G0 X-700. / G55 / "
+     "G10 L2 P2 X-100. / M99", []),
+    # (y1: its G54 then G55)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P1 X100. / M30 / O4000 / G0 X-700. / G54 / "
+     "G55 / G10 L2 P2 X-100. / M99", []),
+    # (the fuzzer's 1986: O4000 called under that G55 by O2000 written after it: its -820
+    # is true, said)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / G0 X-700. / G10 L2 P2 X0. / M30 / O4000 / "
+     "G0 X-720. / G54 / G10 L2 P1 X0. / G52 X-100. / M99 / O2000 / G0 X-700. / G55 / G90 / "
+     "M98 P4000 L2 / M99",
+     [("TG601", 5, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"),
+      ("TG601", 9, 4, "X goes to -820 in machine coordinates (work -720 + G55 offset -100.0)")]),
+])
+def test_a_merged_program_s_guessed_positions_are_said_where_it_is_called(tmp_path, programs,
+                                                                         expected):
+    """Review 61a F5's second form: a program read under the offset the program before it
+    left (a guess), merged after its own G54-G59, keeps its findings under the guess to the
+    file's end: said where a call in the file names it, dropped where none does."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+def test_a_caller_s_own_position_judged_with_a_later_program_s_g10_names_no_call(tmp_path):
+    """Review 62a F13 (o18c): the caller's own X-700. after its call of O4000, written later,
+    whose G10 writes G55's X-200: "as a G10 before it wrote it", line 7 being no call."""
+    programs = ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P4000 / G90 G55 / G0 X-700. / M30 / "
+                "O4000 / G10 L2 P2 X-200. / M99")
+    assert said(programs, _wo2(tmp_path)) == [
+        ("TG601", 7, 4, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                        "a G10 before it wrote it)")]
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 60 F4, q6: O1000 sets its own units, so it is read as a run of its own; its
+    # only call follows a G10 that writes G55's X0.: X-700. runs at -700, inside; it was
+    # "X goes to -800" with the profile's value)
+    ("O1000 / G21 G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30", []),
+    # (q2: in inches)
+    ("O1000 / G20 G90 G55 G0 X-29.5 / M99 / O2000 / G20 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30", []),
+    # (q1: the G10 in a program written later, called before)
+    ("O1000 / G20 G90 G55 G0 X-29.5 / M99 / O2000 / G20 G17 G90 G54 / G0 X0 Y0 / M98 P100 / "
+     "G90 G55 / M98 P1000 / M30 / O100 / G10 L2 P2 X0. / M99", []),
+    # (the G10 writes X-200.: -900, said with that value where read)
+    ("O1000 / G21 / G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X-200. / G90 G55 / M98 P1000 / M30",
+     [("TG601", 4, 12, "X goes to -900 in machine coordinates (work -700 + G55 offset -200 as "
+                       "a G10 before its call wrote it)")]),
+    # (no G10: the profile's value, -800, as before)
+    ("O1000 / G21 G90 G55 G0 X-700. / M99 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / G90 G55 / "
+     "M98 P1000 / M30",
+     [("TG601", 3, 16, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+    # (ending as a main, M30: as read, as before)
+    ("O1000 / G21 G90 G55 G0 X-700. / M30 / O2000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+     "G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30",
+     [("TG601", 3, 16, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_a_subprogram_with_its_own_units_is_judged_with_its_calls_g10(tmp_path, programs,
+                                                                      expected):
+    """Review 60 F4: a subprogram read apart whose own units code merges it (read as a run
+    of its own), ending with M99, has its positions under its own G54-G59 judged again at
+    the file's end with the value a G10 of its callers' run wrote before every call."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 63 F1: O3000 merged at its own G21 after its call of O2000, returns; called by
+    # a G21 main on a metric profile: the call was made in the millimetres assumed, -880)
+    ("O3000 / G90 G55 / M98 P2000 / G21 / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / "
+     "M98 P3000 / M30 / O2000 / G0 X-780. / M99",
+     [("TG601", 13, 4, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+    # (review 63 F2: a second main, M30, merged by its G10 after its own G55: a main's
+    # finding under the guess, said as before)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 / M30 / O2000 / G0 X-800. / G55 / G10 L2 P2 X-100. / "
+     "M30",
+     [("TG601", 7, 4, "X goes to -900 in machine coordinates (work -800 + G55 offset -100.0)")]),
+    # (review 63 F4: its own G54 after the held position: said as read, as before)
+    ("O1000 / G21 / G90 G55 G0 X-700. / G54 / G0 X-780. / M99 / O2000 / G21 G17 G90 G54 / "
+     "G0 X0 Y0 / G10 L2 P2 X0. / G90 G55 / M98 P1000 / M30",
+     [("TG601", 4, 12, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)")]),
+])
+def test_review_63_s_regressions(tmp_path, programs, expected):
+    """Review 63 F1, F2, F4: real errors the first forms of these fixes lost."""
+    assert said(programs, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("programs, expected", [
+    # (review 63 F8: the body's last G52 of X, read after its own G21, is in millimetres
+    # whatever its G52 before the G21: X800. runs at -200, the span from -750 fits; it was
+    # "X spans 1550")
+    ("O2000 / G52 X0 / G21 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30", []),
+    ("O2000 / G52 X-1000. / G21 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30", []),
+    # (a G52 of another axis before the G21)
+    ("O2000 / G52 Y0 / G21 / G52 X-1000. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30", []),
+    # (G52 X10. last: X800. at 810, the span 1560 said with its true figure)
+    ("O2000 / G52 X-1000. / G21 / G52 X10. / M99 / O1000 / G21 G90 G54 / G0 X-750. / "
+     "M98 P2000 / G90 / G0 X800. / M30",
+     [("TG601", 12, 4, "X spans 1560 (from -750 to 810), more than the travel -762 to 762: "
+                       "no work offset fits the program on this machine")]),
+    # (review 63 F9: a G52 carried through two calls, the inner body in its own inches:
+    # G52 X1. is 25.4 mm once, X29. runs at 762, the span from -749.3 fits; it was scaled
+    # twice, "X spans 2131.06")
+    ("O2000 / G20 / G52 X1. / M99 / O3000 / M98 P2000 / M99 / O1000 / G20 G90 G54 / "
+     "G0 X-29.5 / M98 P3000 / G90 / G0 X29. / M30", []),
+    ("O2000 / G21 / G52 X25.4 / M99 / O3000 / M98 P2000 / M99 / O1000 / G20 G90 G54 / "
+     "G0 X-29.5 / M98 P3000 / G20 / G90 / G0 X29. / M30", []),
+    # (X30. at 787.4: the span 1536.7, said)
+    ("O2000 / G20 / G52 X1. / M99 / O3000 / M98 P2000 / M99 / O1000 / G20 G90 G54 / "
+     "G0 X-29.5 / M98 P3000 / G90 / G0 X30. / M30",
+     [("TG601", 14, 4, "X spans 1536.7 (from -749.3 to 787.4), more than the travel -762 to "
+                       "762: no work offset fits the program on this machine")]),
+])
+def test_a_carried_g52_s_units_are_its_last_g52_s_of_each_axis(tmp_path, programs, expected):
+    """Review 63 F8, F9: what a body leaves is each axis's last G52, in the units that one was
+    read in (the body's own, exact, or its caller's where only assumed); a G52 carried from a
+    body's own units stays exact through a caller with none of its own."""
+    assert said(programs, _wo2(tmp_path)) == expected

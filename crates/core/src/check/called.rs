@@ -152,6 +152,31 @@ struct Body {
     unplaced: [[Option<Unplaced>; 2]; 9],
 }
 
+impl Early {
+    /// The program's number, where it is numbered and not run on into from the one before
+    /// (skip switch on).
+    pub(super) fn numbered(&self) -> Option<i64> {
+        match self.body.number {
+            Key::Number(n) if !self.body.after_skippable_end => Some(n),
+            _ => None,
+        }
+    }
+}
+
+/// A program read apart merged by a G52 (its own, or one a call of a program read before
+/// carries): its positions kept with no work offset in force before it, judged at its later
+/// calls as a returned body's are (review 62a F8: `O3000` / `G0 X-780.` / `M98 P2000` of a
+/// G52 program / `M99`, called under G55, runs X-780. at -880).
+#[derive(Debug, Clone)]
+pub(super) struct Merged {
+    number: i64,
+    name: String,
+    unplaced: [[Option<Unplaced>; 2]; 9],
+    factor: f64,
+    read_incremental: Option<bool>,
+    said: u32,
+}
+
 /// A work position of a program read apart with no work offset in force
 /// ([`Body::unplaced`]): the position (the profile's units) and its line.
 #[derive(Debug, Clone, Copy)]
@@ -380,16 +405,20 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn early_merge(&mut self) {
+        self.early_merge_as(false);
+    }
+
+    /// [`Checker::early_merge`]; `main`: where the program ends as a main program (M02/M30,
+    /// the file's end, the next program begun), not merged before its end.
+    pub(super) fn early_merge_as(&mut self, main: bool) {
         let Some(early) = self.early.take() else {
             return;
         };
         self.early_on = false;
         self.work_run_on = false;
         self.work_unplaced = false;
-        // (a main program: its calls were made in the reset state's units)
-        for (number, here) in std::mem::take(&mut self.call_works_assumed) {
-            self.call_work_kept(number, here);
-        }
+        // (its calls made in units only assumed: kept to its end, which says whose units
+        // they were made in, `call_works_ended`)
         if let Some(given) = early.given_before {
             self.machine.state.units_given |= given;
         }
@@ -403,6 +432,18 @@ impl Checker {
                     i += 1;
                     i <= from || !f.guessed
                 });
+            }
+        } else if let (Some(from), Key::Number(n), false) =
+            (self.hold_from, &early.body.number, main)
+        {
+            // (its own G54-G59 since: its findings under the guess held to the file's end,
+            // said where a call of it is in the file, review 61a F5's second form; the
+            // fuzzer's 1986, O4000 called by a later O2000 under that offset, said)
+            if *n >= 0 {
+                for f in self.found.iter_mut().skip(from).filter(|f| f.guessed) {
+                    f.pending_on.push(super::limits::PENDING_CALLED - n);
+                    self.guess_marked = Some(*n);
+                }
             }
         }
         for (span, before) in self.spans.iter_mut().zip(early.stash) {
@@ -425,6 +466,98 @@ impl Checker {
             self.offsets_lost |= early.lost_before;
         }
         self.hold_from = None;
+    }
+
+    /// The program in hand, read apart, is merged by a G52 (`at` its block): the positions
+    /// it kept with no work offset in force before it kept for its later calls
+    /// ([`Merged`]), then merged. Its positions from here are read as before.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn early_merge_keeping(&mut self) {
+        if let Some(early) = self.early.as_ref().filter(|_| self.early_on) {
+            if let Key::Number(number) = early.body.number {
+                if early.body.unplaced.iter().any(|e| e[0].is_some())
+                    && !early.body.after_skippable_end
+                {
+                    let merged = Merged {
+                        number,
+                        name: early.body.name.clone(),
+                        unplaced: early.body.unplaced,
+                        factor: self.to_profile_units(false),
+                        read_incremental: (early.moved_first == Some(true))
+                            .then_some(early.incremental),
+                        said: 0,
+                    };
+                    self.merged_unplaced.retain(|m| m.number != number);
+                    self.merged_unplaced.push(merged);
+                }
+            }
+        }
+        self.early_merge();
+    }
+
+    /// A call of program `number` (`token` at `at`) merged after it kept positions with no
+    /// work offset in force ([`Merged`]): judged under the call's offset, as a returned
+    /// body's are ([`Checker::unplaced_judged`]), where the call runs it under no shift, in
+    /// the units and distance mode it was read in.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn merged_unplaced_judged(&mut self, number: i64, token: &str, at: (usize, usize)) {
+        let Some(k) = self.merged_unplaced.iter().position(|m| m.number == number) else {
+            return;
+        };
+        let unshifted = !self.units_unknown
+            && self
+                .call_shift()
+                .is_some_and(|shift| shift.iter().all(|s| *s == 0.0));
+        let m = &self.merged_unplaced[k];
+        if !unshifted
+            || self.to_profile_units(false) != m.factor
+            || m.read_incremental
+                .is_some_and(|read| read != self.machine.state.incremental)
+        {
+            return;
+        }
+        let mut m = self.merged_unplaced.remove(k);
+        let (name, line) = (m.name.clone(), at.0);
+        let under = |of: usize| {
+            format!(
+                " ({name} runs as called by {token} of line {line}, its position of line {of} \
+                 there: a subprogram written before its call runs in the units and under the \
+                 shift in force there)"
+            )
+        };
+        self.unplaced_judged(&m.unplaced, &mut m.said, at, &under);
+        self.merged_unplaced.insert(k, m);
+    }
+
+    /// The program in hand ends (`returned`: M99) with calls made in units only assumed
+    /// ([`Checker::call_works_assumed`]), merged before its end (its own units code, G52
+    /// or span started again) or not: a main program's (M02/M30, the file's end, the next
+    /// program begun) were made in the reset state's units (review 61a F7: `O1000` / `G10 L2
+    /// P2 X-200.` / `G55` / `M98 P3000` / `M30`), a subprogram's in its caller's, not known
+    /// (review 62a F12: `O3000` / `G90 G55` / `M98 P2000` / `G20` / `M99`, merged at its
+    /// G20, called by a G21 main on an inch profile, kept its call as made in inches).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_works_ended(&mut self, returned: bool) {
+        if returned {
+            // (a subprogram: its calls were made in its callers' units, known where all its
+            // calls are seen; review 63 F1: a metric caller on a metric profile, the call
+            // made in the millimetres assumed)
+            match self.in_hand {
+                Some(caller) if self.early.is_none() => {
+                    for (number, here) in std::mem::take(&mut self.call_works_assumed) {
+                        self.call_works_deferred.push((caller, number, here));
+                    }
+                }
+                _ => self.call_works_dropped(),
+            }
+        } else {
+            for (number, here) in std::mem::take(&mut self.call_works_assumed) {
+                self.call_work_kept(number, here);
+            }
+        }
     }
 
     /// The program in hand returned (M99): a subprogram, whose lengths are its caller's. Its
@@ -524,10 +657,36 @@ impl Checker {
         self.early_merge();
     }
 
+    /// A program begins (`starting`): the calls deferred at a merged subprogram's M99
+    /// ([`Checker::call_works_deferred`]) whose caller's calls are all seen in units known
+    /// are kept where those are the units assumed (the reset state's), not known where not;
+    /// those of the program beginning, still not resolved, not known.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_works_resolved(&mut self, starting: Option<i64>) {
+        let assumed = self.config.modal.default_units;
+        for (caller, number, here) in std::mem::take(&mut self.call_works_deferred) {
+            match self.call_units.get(&caller) {
+                Some(Some((units, _, _))) if *units == assumed => {
+                    self.call_work_kept(number, here);
+                }
+                Some(_) => {
+                    self.call_works_unknown.insert(number);
+                    self.call_work_kept(number, None);
+                }
+                None if Some(number) == starting => {
+                    self.call_works_unknown.insert(number);
+                    self.call_work_kept(number, None);
+                }
+                None => self.call_works_deferred.push((caller, number, here)),
+            }
+        }
+    }
+
     /// The calls of a program read apart in units only assumed ([`Checker::call_works_assumed`])
     /// whose units are not known: it returned (a subprogram's units are its caller's) or
     /// was given up.
-    fn call_works_dropped(&mut self) {
+    pub(super) fn call_works_dropped(&mut self) {
         for (number, _) in std::mem::take(&mut self.call_works_assumed) {
             self.call_works_unknown.insert(number);
             self.call_work_kept(number, None);
@@ -895,7 +1054,37 @@ impl Checker {
         }
         let found = std::mem::take(&mut self.found);
         for mut f in found {
-            let numbers = std::mem::take(&mut f.pending_on);
+            let mut numbers = std::mem::take(&mut f.pending_on);
+            // (a position under a subprogram's own offset after its own units code: judged
+            // with the value its callers' G10 wrote before every call, review 60 F4)
+            if numbers
+                .iter()
+                .any(|&n| n <= super::limits::PENDING_CALLS_WRITTEN)
+            {
+                let Some(f2) = self.calls_rejudged(f, &numbers) else {
+                    continue;
+                };
+                f = f2;
+                numbers.retain(|&n| n > super::limits::PENDING_CALLS_WRITTEN);
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
+            // (a guessed position of a program no call names, review 61a F5's second form)
+            if numbers.iter().any(|&n| n <= super::limits::PENDING_CALLED) {
+                let called = |n: i64| self.call_numbers_any || self.call_numbers.contains(&n);
+                if numbers.iter().any(|&n| {
+                    n <= super::limits::PENDING_CALLED && !called(super::limits::PENDING_CALLED - n)
+                }) {
+                    continue;
+                }
+                numbers.retain(|&n| n > super::limits::PENDING_CALLED);
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
             // (a position of the program's own after calls not read there: held unless
             // each is a program of the file, read, that lost no offsets; review 61a F13)
             if numbers.contains(&super::limits::PENDING_OWN)
@@ -950,11 +1139,84 @@ impl Checker {
                         self.found.push(f);
                         continue;
                     };
-                    let judged = self.rejudged(&f, (place, work, at, value), &|_| tail.clone());
+                    // (a position of the caller's own, on a line that is no call and a
+                    // message naming none: "before it", review 62a F13; one said at a call
+                    // or naming the call it runs as called by, "before this call")
+                    let before = if tail.contains(" as called by ") {
+                        "this call"
+                    } else {
+                        "it"
+                    };
+                    let judged =
+                        self.rejudged(&f, (place, work, at, value), before, &|_| tail.clone());
                     self.found.extend(judged);
                 }
             }
         }
+    }
+
+    /// A finding `f` marked [`super::limits::PENDING_CALLS_WRITTEN`] (`marks`): where every
+    /// call of its program was made after a G10 of the same value on its offset's axis,
+    /// judged again with it (None where within the travel, or where the value is not known);
+    /// else as said.
+    fn calls_rejudged(&self, f: Finding, marks: &[i64]) -> Option<Finding> {
+        let Placed::Offset {
+            place,
+            work,
+            at,
+            line,
+        } = f.placed
+        else {
+            return Some(f);
+        };
+        let (w, i) = (usize::from(work), usize::from(place));
+        let (low, high) = self.travel.of_place(i)?;
+        let mut value = None;
+        for &m in marks
+            .iter()
+            .filter(|&&m| m <= super::limits::PENDING_CALLS_WRITTEN)
+        {
+            let n = super::limits::PENDING_CALLS_WRITTEN - m;
+            let Some((written, unread)) = self.calls_written(n, w, i) else {
+                continue;
+            };
+            // (a program written later, called before: the value it leaves, review 60 F4's
+            // q1; several values, one putting the position inside: not said)
+            let later = (!unread.is_empty())
+                .then(|| self.written_later(&unread, w, i))
+                .flatten();
+            value = match (later, written) {
+                (Some(values), _) if values.iter().any(|v| v.0.is_nan()) => Some(f64::NAN),
+                (Some(values), _) if values.len() == 1 && values[0].1 => Some(values[0].0),
+                (Some(values), _) => {
+                    let inside = |v: f64| (low - 1e-9..=high + 1e-9).contains(&(at + v));
+                    if values.iter().any(|&(v, _)| inside(v)) {
+                        Some(f64::NAN)
+                    } else {
+                        written
+                    }
+                }
+                (None, written) => written,
+            }
+            .or(value);
+        }
+        let Some(value) = value else {
+            return Some(f);
+        };
+        if value.is_nan() {
+            return None;
+        }
+        let range = format!("outside the travel {low} to {high}");
+        let mut tail = f
+            .message
+            .find(&range)
+            .map(|k| farthest_named(&f.message[k + range.len()..], line))?;
+        // (the excursion's farthest position, which the value judges, on another line than
+        // its first, the finding's: named, review 63 F5)
+        if line != f.line && !tail.contains("its position of line ") {
+            tail = format!(" (its farthest position there, of line {line}){tail}");
+        }
+        self.rejudged(&f, (place, work, at, value), "its call", &|_| tail.clone())
     }
 
     /// The value offset G`work` (54-59) has on the axis of place `place` after the programs
@@ -1091,6 +1353,7 @@ impl Checker {
         &self,
         f: &Finding,
         (place, work, at, value): (u8, u8, f64, f64),
+        before: &str,
         under: &dyn Fn(usize) -> String,
     ) -> Option<Finding> {
         let i = usize::from(place);
@@ -1106,7 +1369,7 @@ impl Checker {
         }
         let message = format!(
             "{} goes to {} in machine coordinates (work {} + G{work} offset {} as a G10 before \
-             this call wrote it), outside the travel {low} to {high}{}",
+             {before} wrote it), outside the travel {low} to {high}{}",
             AXES[i] as char,
             super::round6(machine_at),
             super::round6(at),
@@ -1721,7 +1984,14 @@ impl Checker {
                     }
                     Now::Written(place, work, at_work, value) => {
                         let said = known
-                            .then(|| self.rejudged(&f, (place, work, at_work, value), &under))
+                            .then(|| {
+                                self.rejudged(
+                                    &f,
+                                    (place, work, at_work, value),
+                                    "this call",
+                                    &under,
+                                )
+                            })
                             .flatten()
                             .filter(|_| unshifted);
                         match said {
@@ -1800,7 +2070,7 @@ impl Checker {
             self.report(Rule::NotFollowed, message, line, column);
         }
         if r == 1.0 && known && shift.iter().all(|s| *s == 0.0) {
-            self.unplaced_judged(p, at, &under);
+            self.unplaced_judged(&p.body.unplaced, &mut p.unplaced_said, at, &under);
         }
         let (Some(top), Some(feed)) = (self.config.feed_max, p.body.feed.as_ref()) else {
             return;
@@ -1899,14 +2169,15 @@ impl Checker {
     #[inline(never)]
     fn unplaced_judged(
         &mut self,
-        p: &mut Pending,
+        unplaced: &[[Option<Unplaced>; 2]; 9],
+        said: &mut u32,
         at: (usize, usize),
         under: &dyn Fn(usize) -> String,
     ) {
         let Some(work) = self.work else {
             return;
         };
-        if p.body.unplaced.iter().all(|e| e[0].is_none())
+        if unplaced.iter().all(|e| e[0].is_none())
             || self.offsets_lost
             || self.work_guessed.is_some()
             || self.work_run_on
@@ -1952,7 +2223,7 @@ impl Checker {
                 (None, Some(v)) => (v.to_f64(), v.to_string()),
                 (None, None) => continue,
             };
-            let [least, most] = p.body.unplaced[i];
+            let [least, most] = unplaced[i];
             let out = |u: Option<Unplaced>| {
                 u.map(|u| (u, u.at + value))
                     .filter(|&(_, m)| m < low - 1e-9 || m > high + 1e-9)
@@ -1972,10 +2243,10 @@ impl Checker {
                 // one finding, review 61a F3)
                 let side = if machine_at < low { -1 } else { 1 };
                 let bit = 1 << (2 * i + end);
-                if p.unplaced_said & bit != 0 || self.outside[i] == side {
+                if *said & bit != 0 || self.outside[i] == side {
                     continue;
                 }
-                p.unplaced_said |= bit;
+                *said |= bit;
                 let message = format!(
                     "{} goes to {} in machine coordinates (work {} + G{work} offset {named}), \
                      outside the travel {low} to {high}{}",

@@ -116,6 +116,21 @@ const XYZ: u16 = 0b111;
 /// that axis.
 pub(super) const PENDING_OWN: i64 = -1;
 
+/// Among a finding's [`Finding::pending_on`], `PENDING_CALLED - n`: a position of program
+/// `n` read under the offset the program before it in the file left (a guess), said after
+/// its own G54-G59 by its merge: dropped at the file's end where no call in the file names
+/// `n` (review 61a F5's second form: an uncalled O4000's `G0 X-700.` / `G55` / `G10 L2 P2
+/// X-100.` / `M99` was "X goes to -800"), as an uncalled program's guessed findings are.
+pub(super) const PENDING_CALLED: i64 = -2;
+
+/// Among a finding's [`Finding::pending_on`], `PENDING_CALLS_WRITTEN - n`: a position under
+/// program `n`'s own G54-G59, read after its own units code merged it with the file's
+/// reading, `n` ending with M99: judged again at the file's end with the value a G10 of its
+/// callers' run wrote before its calls, where all its calls agree on it (review 60 F4:
+/// `O1000` / `G21 G90 G55 G0 X-700.` / `M99` called after `G10 L2 P2 X0.` runs at -700).
+/// Below every [`PENDING_CALLED`] mark.
+pub(super) const PENDING_CALLS_WRITTEN: i64 = -(1 << 40);
+
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -595,6 +610,7 @@ impl Checker {
     #[inline(never)]
     pub(super) fn program_shift_end(&mut self) {
         let g52 = std::mem::take(&mut self.g52_axes);
+        let read = std::mem::take(&mut self.g52_read);
         let clean = std::mem::replace(&mut self.shift_clean_start, true);
         let unsure = std::mem::take(&mut self.shift_unsure);
         let Some(n) = self.in_hand else {
@@ -614,8 +630,21 @@ impl Checker {
             && s.local_unknown == 0
             && (0..AXES.len()).all(|i| s.total[i] == s.local[i])
             && writer.is_none_or(|(w, _)| !w.moved && w.unread.is_empty());
-        let end = known.then_some((g52, s.local));
+        let end = known.then_some((g52, s.local, read));
         self.shift_ends.insert(n, end);
+    }
+
+    /// A G52 of axis place `i` (or one a call carries) read at `factor` to the profile's
+    /// units: where the program had written no units code by it, the factor, 0 where it
+    /// had or the value is exact (`exact`, carried from a body's own units); the last of
+    /// each axis counts, as a G52 replaces the local shift (review 63 F8, F9)
+    /// ([`Checker::shift_ends`]).
+    fn g52_read_at(&mut self, i: usize, factor: f64, exact: bool) {
+        self.g52_read[i] = if self.machine.state.units_given || exact {
+            0.0
+        } else {
+            factor
+        };
     }
 
     /// A call of program `number`, read before it in the file (`writes`: what it writes of
@@ -637,18 +666,30 @@ impl Checker {
         // (`surely`), as before: the caller's spans read on unshifted, erring on the side
         // of the alarm; review 62a F7: `IF [#1 EQ 1] GOTO 5` / `M98 P2000` / `N5 G90` /
         // `G0 X800.` runs X800. at 800 where the call is passed over)
-        let Some((axes, local)) = end.filter(|_| surely) else {
+        let Some((axes, local, read)) = end.filter(|_| surely) else {
             self.shift_unsure = true;
             return;
         };
-        self.early_merge();
+        // (G52s the body read before any units code of its own run in the caller's units:
+        // taken by the caller's factor to the profile's units, not the one the body was
+        // read in; review 62a F9: an inch profile, `G21` / `M98 P2000` of `G52 X-1000.` is
+        // -1000 mm, not -1000 inches)
+        let factor = self.to_profile_units(false);
+        // (its positions before the call kept for its own calls, review 62a F8)
+        self.early_merge_keeping();
         for i in crate::modal::places(u32::from(axes)) {
             if self.shifts.local_unknown & 1 << i != 0 {
                 self.restart_span(i, true);
                 continue;
             }
-            self.shifts.total[i] += local[i] - self.shifts.local[i];
-            self.shifts.local[i] = local[i];
+            let r = if read[i] == 0.0 {
+                1.0
+            } else {
+                factor / read[i]
+            };
+            self.shifts.total[i] += local[i] * r - self.shifts.local[i];
+            self.shifts.local[i] = local[i] * r;
+            self.g52_read_at(i, factor, read[i] == 0.0);
         }
         self.g52_axes |= axes;
         self.shifts.settle();
@@ -854,6 +895,9 @@ impl Checker {
         number: Option<u32>,
         line: usize,
     ) -> Written {
+        if self.units_merged.is_some() {
+            self.units_merged_stopped();
+        }
         let axis = g
             .zip(number)
             .and_then(|(_, n)| self.variable_axis((n as usize - 5221) % 20))
@@ -988,6 +1032,16 @@ impl Checker {
     #[inline(never)]
     fn work_offset_given(&mut self, b: &BlockView<'_>) -> bool {
         let line = b.line;
+        if self.units_merged.is_some() && self.letters & bit(b'G') != 0 {
+            let changes = b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'G'
+                    && self.readable[i]
+                        .is_some_and(|v| matches!(v.to_f64() as i64, 10 | 52 | 92 | 54..=59))
+            });
+            if changes {
+                self.units_merged_stopped();
+            }
+        }
         let sinumerik = self.config.family == Family::Sinumerik;
         let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
@@ -2083,8 +2137,13 @@ impl Checker {
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let mill = self.config.family == Family::MacroB && !fanuc_lathe;
         // (a program read apart that sets its own shift: its positions after it do not add
-        // to its call's, G52 replacing the local shift; read as before, review 42, finding 7)
-        self.early_merge();
+        // to its call's, G52 replacing the local shift; read as before, review 42, finding 7;
+        // those with no offset in force before a G52 kept for its calls, review 62a F8)
+        if code == 52 {
+            self.early_merge_keeping();
+        } else {
+            self.early_merge();
+        }
         match code {
             52 if mill => {
                 // (under G91 the two readings, the zero at X_ or X_ from the local zero before,
@@ -2108,6 +2167,7 @@ impl Checker {
                 self.shifts.total[i] += value - self.shifts.local[i];
                 self.shifts.local[i] = value;
                 self.g52_axes |= 1 << i;
+                self.g52_read_at(i, factor, false);
                 // (after a return: reached by a jump only)
                 self.shift_unsure |= self.sub_ended;
                 Ok(())
@@ -3317,6 +3377,12 @@ impl Checker {
             if !self.offsets_written.unread.is_empty() {
                 f.pending_on.clone_from(&self.offsets_written.unread);
                 f.pending_on.push(PENDING_OWN);
+            }
+            // (a subprogram's own offset after its own units code: review 60 F4)
+            if let Some(n) = self.units_merged {
+                if matches!(placed, super::Placed::Offset { .. }) && self.work_guessed.is_none() {
+                    f.pending_on.push(PENDING_CALLS_WRITTEN - n);
+                }
             }
         }
         said

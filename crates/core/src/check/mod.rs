@@ -763,6 +763,10 @@ struct Implicit {
     increments: bool,
 }
 
+/// [`Checker::shift_ends`]: the axes a program's G52s wrote, the local shift it left, and
+/// each axis's factor its last G52 was read at (0 where exact).
+type ShiftEnd = (u16, [f64; 9], [f64; 9]);
+
 /// A LinuxCNC definition's body as [`Checker::linuxcnc_bodies`] keeps it: its label, whether
 /// it may set the feed mode or end the program, the labels it calls, the distance mode it
 /// returns in, its refusals that wait for a call ([`structure::CallRefusal`]), and whether a
@@ -1023,6 +1027,9 @@ pub struct Checker {
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
     g52_axes: u16,
+    /// [`Checker::g52_read_at`]: the units the program in hand's last G52 of each axis was
+    /// read in (the factor where only assumed, 0 where written).
+    g52_read: [f64; 9],
     shift_clean_start: bool,
     /// A jump, condition or loop, a G52 after a return, or a call of a program whose shift at
     /// its end is not known, in the program in hand: what it leaves on is not surely known.
@@ -1030,7 +1037,10 @@ pub struct Checker {
     /// Each FANUC/Haas program of the file that left a G52 or another shift on at its end:
     /// the axes its G52s wrote and the local shift it left, where surely known (no G92, no
     /// jump, condition or loop, no call not followed, no shift at its start); None where not.
-    shift_ends: HashMap<i64, Option<(u16, [f64; 9])>>,
+    /// With them, each axis's, the factor to the profile's units its last G52 was read in
+    /// where the program had written no units code by it (it runs in its caller's units), 0
+    /// where it had.
+    shift_ends: HashMap<i64, Option<ShiftEnd>>,
     offsets_lost: bool,
     /// The axes (their places' bits) of each work offset G54-G59 (0-5) whose value the
     /// program in hand has written before here: by a G10 of its own that writes it
@@ -1470,6 +1480,9 @@ pub struct Checker {
     /// units the reset state's), as not known where it returns, a subprogram whose units
     /// are its own caller's (review 61a F11 and F7).
     call_works_assumed: Vec<(i64, Option<structure::CallWork>)>,
+    /// Those of a program merged before its M99 (its caller `.0`): made in its callers'
+    /// units, resolved where those are known ([`Checker::call_works_resolved`]).
+    call_works_deferred: Vec<(i64, i64, Option<structure::CallWork>)>,
     /// The program in hand, written after its calls, runs under the work offset of
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
@@ -1491,6 +1504,16 @@ pub struct Checker {
     given_up: Vec<called::GivenUp>,
     /// The subprograms read before their calls, judged at the file's end.
     pending: Vec<called::Pending>,
+    /// The positions a program read apart kept with no work offset in force before it was
+    /// merged by a G52 (its own or a call's carried), judged at its later calls
+    /// ([`Checker::merged_unplaced_judged`]).
+    merged_unplaced: Vec<called::Merged>,
+    /// The program in hand, numbered, read apart until its own units code merged it: its
+    /// positions under its own offset held ([`limits::PENDING_CALLS_WRITTEN`]) to its end.
+    units_merged: Option<i64>,
+    /// The program in hand, whose findings under a guessed offset were held at its merge
+    /// ([`limits::PENDING_CALLED`]): where it ends as a main, said as a main's.
+    guess_marked: Option<i64>,
     /// The program numbers the file's calls may name, and whether one may name any
     /// ([`Checker::call_numbers_seen`]).
     call_numbers: std::collections::BTreeSet<i64>,
@@ -1679,6 +1702,7 @@ impl Checker {
             offsets_unread_only: false,
             call_unread_here: false,
             g52_axes: 0,
+            g52_read: [0.0; 9],
             shift_clean_start: true,
             shift_unsure: false,
             shift_ends: HashMap::new(),
@@ -1760,6 +1784,7 @@ impl Checker {
             call_works: HashMap::new(),
             call_works_unknown: HashSet::new(),
             call_works_assumed: Vec::new(),
+            call_works_deferred: Vec::new(),
             work_call: None,
             units_unknown: false,
             early: None,
@@ -1767,6 +1792,9 @@ impl Checker {
             hold_from: None,
             given_up: Vec::new(),
             pending: Vec::new(),
+            merged_unplaced: Vec::new(),
+            units_merged: None,
+            guess_marked: None,
             call_numbers: std::collections::BTreeSet::new(),
             file_programs: std::collections::BTreeSet::new(),
             offset_writers: std::collections::BTreeMap::new(),

@@ -297,8 +297,14 @@ impl Checker {
             if returned {
                 self.early_pend();
             } else {
-                self.early_merge();
+                self.early_merge_as(true);
             }
+        }
+        if !self.call_works_assumed.is_empty() {
+            self.call_works_ended(returned);
+        }
+        if self.units_merged.is_some() || self.guess_marked.is_some() {
+            self.units_merged_ended(returned);
         }
         self.feed_unheld = false;
     }

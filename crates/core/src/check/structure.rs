@@ -405,7 +405,14 @@ impl Checker {
                 && !b
                     .words
                     .iter()
-                    .any(|w| w.letter == b'Q' && w.index.is_empty());
+                    .any(|w| w.letter == b'Q' && w.index.is_empty())
+                // (`M98 P2000 L0`: a repeat count of zero may run the body no time; no page
+                // at hand says: not carried, review 62a F7's g75)
+                && !b.words.iter().enumerate().any(|(i, w)| {
+                    w.letter == b'L'
+                        && w.index.is_empty()
+                        && self.readable[i].is_some_and(|v| v.to_f64() == 0.0)
+                });
             self.shift_carried(number, surely);
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
@@ -506,6 +513,10 @@ impl Checker {
         self.after_call(number);
         // (before the call's own reading: the state it is made in)
         self.call_work(b, number);
+        if !self.merged_unplaced.is_empty() {
+            let (call, column) = self.call_words(b);
+            self.merged_unplaced_judged(number, &call, (b.line, column));
+        }
         let followed = (self.early_on || !self.pending.is_empty() || !self.given_up.is_empty())
             && {
                 let (call, column) = self.call_words(b);
@@ -593,6 +604,78 @@ impl Checker {
             return;
         }
         self.call_work_kept(number, here);
+    }
+
+    /// A program read apart, numbered, merged by its own units code: its positions under its
+    /// own offset from here held to its end ([`Checker::units_merged`]).
+    fn units_merged_from(&mut self) {
+        if !self.early_on || self.config.family != crate::lex::Family::MacroB {
+            return;
+        }
+        if let Some(n) = self.early.as_ref().and_then(|e| e.numbered()) {
+            self.units_merged = Some(n);
+        }
+    }
+
+    /// The program in hand ends (`returned`: M99): where it ends as a main, its positions
+    /// held by [`Checker::units_merged_from`] are as said (the marks taken off).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn units_merged_ended(&mut self, returned: bool) {
+        // (and its guessed findings held at its merge: a main's, said; review 61a F5's
+        // second form is a program that returns)
+        let marks = [
+            self.units_merged
+                .take()
+                .map(|n| super::limits::PENDING_CALLS_WRITTEN - n),
+            self.guess_marked
+                .take()
+                .map(|n| super::limits::PENDING_CALLED - n),
+        ];
+        if !returned {
+            for mark in marks.into_iter().flatten() {
+                for f in &mut self.found {
+                    f.pending_on.retain(|&m| m != mark);
+                }
+            }
+        }
+    }
+
+    /// The program in hand, merged by its own units code ([`Checker::units_merged`]), changes
+    /// or shifts its own offsets (a G10, G52, G92, G54-G59, a work offset's variable): a
+    /// position beyond the travel held before is one excursion with those after it, which
+    /// this one may run under another value; held no longer, said as read, as before (review
+    /// 63 F4: `G90 G55 G0 X-700.` / `G54` / `G0 X-780.` said only the first, which its
+    /// callers' G10 puts inside).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn units_merged_stopped(&mut self) {
+        let Some(n) = self.units_merged else {
+            return;
+        };
+        // (none held yet: the offsets it selects or writes before its first are its own)
+        let mark = super::limits::PENDING_CALLS_WRITTEN - n;
+        if !self.found.iter().any(|f| f.pending_on.contains(&mark)) {
+            return;
+        }
+        self.units_merged = None;
+        for f in &mut self.found {
+            f.pending_on.retain(|&m| m != mark);
+        }
+    }
+
+    /// The value a G10 of its callers' run wrote before every call of program `n` on offset
+    /// G`work`'s axis of place `place` (None where none wrote it, NaN where not known), and
+    /// the programs written later called before them: None where no call, or calls that
+    /// disagree.
+    pub(super) fn calls_written(
+        &self,
+        n: i64,
+        work: usize,
+        place: usize,
+    ) -> Option<(Option<f64>, Vec<i64>)> {
+        let cw = self.call_works.get(&n)?.as_ref()?;
+        Some((cw.written.value(work, place), cw.written.unread.clone()))
     }
 
     /// [`Checker::call_works`]: the offset `here` of a call of program `number`, joined
@@ -731,7 +814,14 @@ impl Checker {
         }
         self.units_unknown = false;
         // (the program before, if read apart and not ended: read as before)
-        self.early_merge();
+        self.early_merge_as(true);
+        // (its calls in units only assumed: a program not ended runs on, the reset state's)
+        if !self.call_works_assumed.is_empty() {
+            self.call_works_ended(false);
+        }
+        if self.units_merged.is_some() || self.guess_marked.is_some() {
+            self.units_merged_ended(false);
+        }
         // (a run of its own: what the program before wrote is not this one's caller's; but
         // with the block skip switch on, the program before runs on into it: that run's)
         if !self.end_skippable {
@@ -748,6 +838,9 @@ impl Checker {
             .and_then(|n| n.parse::<i64>().ok());
         self.file_programs.extend(number);
         self.in_hand = number;
+        if !self.call_works_deferred.is_empty() {
+            self.call_works_resolved(number);
+        }
         // a program no call before it names may be the subprogram of a call after it (a
         // memory backup lists programs by number): read apart until it shows what it is
         // (crate::check::called; review 39, finding 4)
@@ -832,6 +925,7 @@ impl Checker {
             if self.units_unknown {
                 self.units_known_again();
             }
+            self.units_merged_from();
             self.early_merge();
         }
     }
