@@ -1611,3 +1611,26 @@ def test_an_m72_of_a_body_s_own_zero_save_leaves_a_zero_rate(tmp_path, body, lin
         return
     assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A definition read before an M70 or M72 of the main program: rs274 reads it without running
+# it, so the feed rate after its `endsub` is the one before its `sub` (review 62b F1). HEAD
+# sets F100. (the blocks after HEAD; the refused line, or None where rs274 -g runs)
+DEFINITION_KEEPS_RATE = [
+    # rs274 runs: the M70 saves F100, the M72 writes it after the block's F0
+    ("o100 sub\nM8\no100 endsub\nM70\nM72 F0\nG1 X4", None),
+    ("o100 sub\nM8\no100 endsub\nM70\nF0\nM72\nG1 X4", None),
+    ("o100 sub\nF0\no100 endsub\nM70\nF0\nM72\nG1 X4", None),
+    # "Cannot do g1 with zero feed rate": the body's F10 is not run, the F0 saved is restored
+    ("F0\no100 sub\nF10\no100 endsub\nM70\nF10\nM72\nG1 X4", 10),
+]
+
+
+@pytest.mark.parametrize("body, line", DEFINITION_KEEPS_RATE)
+def test_a_definition_read_keeps_the_rate_an_m70_saves(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

@@ -1206,6 +1206,10 @@ pub struct Checker {
     /// loop or body, a parameter, a call or jump). M72's restore compares it
     /// ([`Checker::linuxcnc_feed_restore`]).
     linuxcnc_rate: Option<Dec>,
+    /// LinuxCNC: rs274's feed rate (`linuxcnc_rate`, `linuxcnc_feed_rate`) before a
+    /// definition's `sub`, which its `endsub` gives back (rs274 reads a definition without
+    /// running it); at the `endsub`, the block (its count) it is given back at.
+    linuxcnc_rate_before_sub: Option<(Option<usize>, Option<Dec>, tooling::LinuxCncFeed)>,
     /// LinuxCNC: the feed mode, rs274's feed rate and the speed the main program's M70 or
     /// M73 saved, where each is known ([`structure::FeedSaved`]); None where no save is
     /// followed.
@@ -1804,6 +1808,7 @@ impl Checker {
             linuxcnc_cycle_r: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
+            linuxcnc_rate_before_sub: None,
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,
@@ -2478,8 +2483,7 @@ impl Checker {
                 self.linuxcnc_uvw_unfollowed(b);
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_plane_after_call(b, false);
-                self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
-                self.linuxcnc_rate = self.linuxcnc_rate_through_if(b);
+                self.linuxcnc_rate_after_statement(b);
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;

@@ -4020,15 +4020,33 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: rs274's feed rate after an o-word line the checker does not follow
+    /// ([`Checker::linuxcnc_rate_through_if`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_rate_after_statement(&mut self, b: &BlockView<'_>) {
+        // (a definition's `endsub`: the rate from before its `sub`, rs274 reading the
+        // definition without running it; review 62b, F1: `o100 sub` / `M8` / `o100 endsub`
+        // / `M70` / `M72 F0` / `G1 X4` after an F100 runs in `rs274 -g`, the M70 saving 100)
+        if let Some((Some(at), rate, feed)) = self.linuxcnc_rate_before_sub {
+            self.linuxcnc_rate_before_sub = None;
+            if at == self.stats.blocks {
+                self.linuxcnc_rate = rate;
+                self.linuxcnc_feed_rate = feed;
+                return;
+            }
+        }
+        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Unknown;
+        self.linuxcnc_rate = self.linuxcnc_rate_through_if(b);
+    }
+
     /// LinuxCNC: rs274's feed rate ([`Checker::linuxcnc_rate`]) after an o-word line the
     /// checker does not follow: an `if` of the main program opening its first branch runs
     /// nothing, so the rate where its branch's first line runs is the one before it (kept
     /// for what an M70 there saves; review 61b, v2: `F0` / `o1 if [#5220 GT 0]` / `M70` /
     /// `o1 endif` / `M72 F0` / `G1 X1` is "Cannot do g1 with zero feed rate" in `rs274
     /// -g`); after any other, not known.
-    #[cold]
-    #[inline(never)]
-    pub(super) fn linuxcnc_rate_through_if(&self, b: &BlockView<'_>) -> Option<Dec> {
+    fn linuxcnc_rate_through_if(&self, b: &BlockView<'_>) -> Option<Dec> {
         let opens_if = |&(_, kind, text): &(usize, Kind, &[u8])| {
             kind == Kind::Flow
                 && crate::statement::o_keyword(text).as_deref() == Some(b"if".as_slice())
@@ -4071,6 +4089,9 @@ impl Checker {
                 // (and whether the motion mode before it is G0-G3 or none, which its endsub
                 // gives back: `Checker::linuxcnc_motion_after_call`)
                 self.linuxcnc_plain_before_sub = self.linuxcnc_motion_is_plain();
+                // (and rs274's feed rate, which its endsub gives back)
+                self.linuxcnc_rate_before_sub =
+                    Some((None, self.linuxcnc_rate, self.linuxcnc_feed_rate));
                 let state = &self.machine.state;
                 let label = self.open_definition.as_ref().map(|o| o.2.clone());
                 self.linuxcnc_motion_before_sub = MotionBeforeSub {
@@ -4091,6 +4112,9 @@ impl Checker {
                 }
                 self.linuxcnc_definition_motion();
                 self.linuxcnc_plane_body_blocks.clear();
+                if let Some(before) = self.linuxcnc_rate_before_sub.as_mut() {
+                    before.0 = Some(self.stats.blocks);
+                }
             }
             _ => {}
         }
