@@ -1482,6 +1482,34 @@ def test_lines_after_a_call_that_may_end_the_program_take_no_new_sure_state(tmp_
     assert "PROGRAM_END" in rs274_output(tmp_path, text)
 
 
+# The caller's G2 before a call of a definition not read yet: the moves without a motion code
+# after the call run in the mode the definition leaves, judged at its endsub (review 62b F4:
+# lcnc62 and main judged them by the caller's G2, TG404 where rs274 runs the body's G0 or
+# cycle). A body that leaves the mode as it found it (M8) leaves the caller's G2: rs274's "R i j
+# k words all missing for arc" at the first move (review 62b LG4). (the blocks after HEAD; the
+# refused line, or None where rs274 -g runs)
+CALLER_ARC_LATER = [
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG0 X0\no300 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nX3\nM2\no300 sub\nG0 X0\no300 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG81 X1 Z-1 R2\no300 endsub", None),
+    ("G3 X1 Y0 I0.5 J0\no<up> call\nZ1\nM2\no<up> sub\nG1 Z0.5\no<up> endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nX3\nM2\no300 sub\nM8\no300 endsub", 5),
+    # the move's own G2 is judged where it stands
+    ("G2 X1 Y0 I0.5 J0\no300 call\nG1 X2\nG2 X3\nM2\no300 sub\nG0 X0\no300 endsub", 6),
+]
+
+
+@pytest.mark.parametrize("body, line", CALLER_ARC_LATER)
+def test_the_caller_s_arc_is_not_the_mode_after_a_call_of_a_later_definition(
+        tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+
+
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
 # a G20/G21 (no SET_FEED_RATE there), so the restore is as without one: the saved rate where
 # the rate in force after the block's own F equals it, else the saved rate as F%.1f

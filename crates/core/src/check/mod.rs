@@ -3123,6 +3123,9 @@ impl Checker {
         self.odd_blocks();
         self.colons_in_comments();
         self.linuxcnc_locals_ended();
+        if !self.linuxcnc_later.moves.is_empty() {
+            self.linuxcnc_later_unanswered();
+        }
         self.program_end();
     }
 

@@ -3851,16 +3851,24 @@ impl Checker {
         // (review 62b F3). The mode it leaves is not judged, and no mode a later call
         // surely leaves (from a plain body or a `do` loop), in the main program after
         // it: held; review 62b LE5)
-        if self.open_definition.is_none()
-            && b.statements.iter().any(|&(_, kind, text)| {
-                kind == Kind::Call && {
-                    let label = self.linuxcnc_call_label(text);
-                    crate::statement::computed_label(&label)
-                        || !self.linuxcnc_defined.contains(&label)
-                }
-            })
-        {
+        let unread = b
+            .statements
+            .iter()
+            .filter(|&&(_, kind, _)| kind == Kind::Call && self.open_definition.is_none())
+            .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+            .find(|label| {
+                crate::statement::computed_label(label) || !self.linuxcnc_defined.contains(label)
+            });
+        if let Some(label) = unread {
             self.linuxcnc_later.unread = true;
+            // (the caller's G2/G3 judges no move after it until the definition is read:
+            // review 62b F4, Checker::linuxcnc_later_move)
+            let state = &self.machine.state;
+            if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
+                if !crate::statement::computed_label(&label) {
+                    self.linuxcnc_later.pending = Some((label, b.line, m));
+                }
+            }
         }
         if self.linuxcnc_later.unread && self.open_definition.is_none() {
             if left.is_some() {
@@ -3894,47 +3902,73 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC: a move without a motion code or arc word (`b`) where the mode in force is
-    /// the one a call of a definition not read yet leaves ([`LaterCalls`]): kept for that
-    /// definition's `endsub`.
+    /// LinuxCNC: a move without a motion code or arc word (`b`) under the caller's G2/G3
+    /// after the main program's call of a definition not read yet ([`LaterCalls`]), no
+    /// motion code since: rs274 runs it in the mode the definition leaves, known at its
+    /// `endsub` ([`Checker::linuxcnc_later_arcs`]). The first such move after the call is
+    /// kept; the later ones are in the same mode, judged by the first.
     #[cold]
     #[inline(never)]
     pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) {
-        let Some((label, call)) = self.linuxcnc_later.pending.take() else {
+        use super::tooling::LinuxCncMotion;
+        if self.linuxcnc_motion != LinuxCncMotion::Unknown {
+            return;
+        }
+        let Some((label, call, m)) = self.linuxcnc_later.pending.clone() else {
             return;
         };
-        let Some(column) = b
-            .words
-            .iter()
-            .find(|w| crate::modal::AXES.contains(&w.letter))
-            .map(|w| w.column)
-        else {
+        if self.linuxcnc_later.moves.iter().any(|e| e.1 == call) {
             return;
-        };
+        }
+        let column = b.words.first().map_or(1, |w| w.column);
         self.linuxcnc_later
             .moves
-            .push((label, call, b.line, column));
+            .push((label, call, b.line, column, m));
     }
 
-    /// LinuxCNC: at the `endsub` of a definition (`label`) that surely leaves G2 or G3
-    /// (`m`), the first move without a motion code or arc word after each earlier call of
-    /// it ([`LaterCalls`]) is an arc with no centre or radius: rs274 finds a definition
-    /// written after M2 when the call runs, and refuses the move ("R i j k words all missing
-    /// for arc", interp_convert.cc convert_arc; lcnc61's miss: `o100 call` / `Z0.5` / `M2`
-    /// / `o100 sub` / `G2 X1 Y0 I0.5 J0` / `o100 endsub`).
+    /// LinuxCNC: at the `endsub` of a definition (`label`) the main program called before
+    /// reading it under its own G2/G3 ([`LaterCalls`]): where the body surely leaves the
+    /// mode as it found it (it moves no axis, writes no G code and calls nothing:
+    /// [`still_line`]), the first move without a motion code or arc word after the call is
+    /// an arc with no centre or radius ("R i j k words all missing for arc", interp_convert.cc
+    /// convert_arc; review 62b LG4: `G2 X1 Y0 I0.5 J0` / `o300 call` / `X2` / `M2` / `o300
+    /// sub` / `M8` / `o300 endsub`); elsewhere the body's mode decides, and nothing is said
+    /// (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`).
     #[cold]
     #[inline(never)]
-    fn linuxcnc_later_arcs(&mut self, label: &[u8], m: i64) {
+    fn linuxcnc_later_arcs(&mut self, label: &[u8]) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
         let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
         self.linuxcnc_later.moves = rest;
-        for (_, call, line, column) in these {
+        let keeps = self
+            .linuxcnc_bodies
+            .iter()
+            .rfind(|e| e.0 == label)
+            .is_some_and(|e| e.6 && e.2.is_empty());
+        if !keeps {
+            return;
+        }
+        for (_, call, line, column, m) in these {
             let message = format!(
                 "arc without I J K (or R): none is given, whatever the plane (the call on \
-                 line {call} runs {} written after it, which leaves G{m} in force)",
+                 line {call} runs {} written after it, which leaves the G{m} before it in \
+                 force)",
                 String::from_utf8_lossy(label)
             );
             self.report(Rule::ArcCentreMissing, message, line, column);
+        }
+    }
+
+    /// LinuxCNC: at the file's end, the moves kept after a call of a label no definition
+    /// of the file answers ([`Checker::linuxcnc_later_move`]): judged by the caller's G2/G3,
+    /// as before they were kept (rs274 refuses the call where no file of that name is on
+    /// its subroutine path).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_later_unanswered(&mut self) {
+        for (_, _, line, column, _) in std::mem::take(&mut self.linuxcnc_later.moves) {
+            let message = "arc without I J K (or R): none is given, whatever the plane";
+            self.report(Rule::ArcCentreMissing, message.to_string(), line, column);
         }
     }
 
@@ -4143,13 +4177,14 @@ impl Checker {
             label,
             ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
+        if !self.linuxcnc_later.moves.is_empty() {
+            self.linuxcnc_later_arcs(&label);
+        }
+        let state = &self.machine.state;
         // (a body whose last mode is not known but differs from the one before its sub as
         // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
         match state.motion {
             Some(m @ 0..=3) if known => {
-                if m >= 2 && !self.linuxcnc_later.moves.is_empty() {
-                    self.linuxcnc_later_arcs(&label, m);
-                }
                 self.linuxcnc_sub_motion.insert(label, Some(m));
             }
             now if now != motion || state.cycle != cycle => {
@@ -5928,10 +5963,11 @@ pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9
 pub(super) struct LaterCalls {
     /// The call whose mode is still in force, by label, and its line: no o-word line, call,
     /// motion code or possible M72 drop since.
-    pub(super) pending: Option<(Vec<u8>, usize)>,
+    /// The caller's G2 or G3 in force at it.
+    pub(super) pending: Option<(Vec<u8>, usize, i64)>,
     /// The first move without a motion code or arc word after such a call: the label, the
-    /// call's line, the move's line and column.
-    moves: Vec<(Vec<u8>, usize, usize, usize)>,
+    /// call's line, the move's line and column, the caller's G2 or G3.
+    pub(super) moves: Vec<(Vec<u8>, usize, usize, usize, i64)>,
     /// A call line of the main program whose call is of a definition read before it whose
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.

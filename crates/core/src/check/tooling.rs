@@ -932,9 +932,6 @@ impl Checker {
                 {
                     // (a move in a motion a call may have set: perhaps a cycle's)
                     self.linuxcnc_cycle_ran = Some(0);
-                    if self.linuxcnc_later.pending.is_some() {
-                        self.linuxcnc_later_move(b);
-                    }
                 }
                 return unsettles;
             }
@@ -4102,9 +4099,11 @@ mod tests {
                 "o<s> sub\nG1 X1\no<s> endsub\nG95 F0.1 S100 M3\nG38.2 Z-5",
                 &["8: Cannot probe with feed per rev mode"],
             ),
+            // (the rate is zero still after the definition, which runs nothing where it is
+            // read: rs274 -g refuses the zero rate first; lcnc63, review 62b F1)
             (
                 "o<s> sub\nG1 X1\no<s> endsub\nG93\nG81 X1 Y1 Z-1 R1 F10",
-                &["8: Cannot use inverse time feed with canned cycles"],
+                &["8: Cannot feed with zero feed rate"],
             ),
             (
                 "o<s> sub\nG1 X1\no<s> endsub\no<s> call\nG95 F0.1 S100 M3\nG38.2 Z-5",
