@@ -1472,7 +1472,18 @@ LATER_ENDS = [
     # the caller's G2 before the call of a G1 body, after the held call: not known, no arc
     "o300 call\no100 sub\nG1 X2\no100 endsub\nG2 X1 Y0 I0.5 J0\no100 call\nZ0.5\nM2\n"
     "o300 sub\nM8\no300 endsub",
+    # the lines after a call of a later definition whose M2 ends the program are not judged
+    # (review 62b LE1: TG404 at the G2 before lcnc63; X1 Y1 X2 was TG131)
+    "o300 call\nG2 Z0.5\nM2\no300 sub\nM8\nM2\no300 endsub",
+    "o300 call\nG21 G17 G90 F100\nG2 Z0.5\nX1 Y1 X2\nM2\no300 sub\nM8\nM2\no300 endsub",
 ]
+
+
+def test_lines_after_a_call_of_a_later_definition_that_returns_are_judged(tmp_path):
+    # the same o300 without its M2 returns: rs274 refuses the G2 (review 62b LE1's other half)
+    text = program("o300 call\nG2 Z0.5\nM2\no300 sub\nM8\no300 endsub")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", 4)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
 
 
 @pytest.mark.parametrize("body", LATER_ENDS)

@@ -1943,6 +1943,12 @@ impl Checker {
                 placed: Placed::Not,
                 pending_on: Vec::new(),
             });
+            if !self.linuxcnc_later.ends.is_empty() {
+                // (after a call that may end the program: held, structure::PENDING_LATER)
+                if let Some(f) = self.found.last_mut() {
+                    f.pending_on.push(structure::PENDING_LATER);
+                }
+            }
         }
     }
 
@@ -3118,14 +3124,17 @@ impl Checker {
         self.early_finish();
         self.after_end();
         self.program_shift_end();
+        if !self.linuxcnc_later.moves.is_empty() {
+            self.linuxcnc_later_unanswered();
+        }
+        if !self.linuxcnc_later.ends.is_empty() {
+            self.linuxcnc_later_released_at(true);
+        }
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();
         self.linuxcnc_locals_ended();
-        if !self.linuxcnc_later.moves.is_empty() {
-            self.linuxcnc_later_unanswered();
-        }
         self.program_end();
     }
 

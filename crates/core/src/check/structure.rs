@@ -1095,6 +1095,12 @@ impl Checker {
             self.definition_open(b, statement.as_ref());
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
+            if was_open
+                && self.open_definition.is_none()
+                && !self.linuxcnc_later.ends.is_empty()
+            {
+                self.linuxcnc_later_ends();
+            }
             self.linuxcnc_called(b, statement.as_ref(), was_open);
             statement
         };
@@ -3861,6 +3867,12 @@ impl Checker {
             });
         if let Some(label) = unread {
             self.linuxcnc_later.unread = true;
+            // (a call surely run: where the definition answering it surely ends the program,
+            // no line after it runs; review 62b F3, LE1)
+            if !b.skip && self.linuxcnc_runs_surely() && !self.main_ended() {
+                let at = (label.clone(), b.line);
+                self.linuxcnc_later.ends.push(at);
+            }
             // (the caller's G2/G3 judges no move after it until the definition is read:
             // review 62b F4, Checker::linuxcnc_later_move)
             let state = &self.machine.state;
@@ -3955,8 +3967,59 @@ impl Checker {
                  force)",
                 String::from_utf8_lossy(label)
             );
-            self.report(Rule::ArcCentreMissing, message, line, column);
+            self.linuxcnc_later_report(message, line, column);
         }
+    }
+
+    /// LinuxCNC: at the `endsub` of a definition the main program called before reading it,
+    /// the call surely run ([`LaterCalls::ends`]), whose body surely ends the program (its M2
+    /// or M30 outside its conditions): no line after the first such call runs, so the
+    /// findings of the lines from it to the main program's end are dropped, as after a call
+    /// of such a body read before it (review 62b F3, LE1: `o300 call` / `G2 Z0.5` / `M2` /
+    /// `o300 sub` / `M8` / `M2` / `o300 endsub` runs to its end in `rs274 -g`; it was TG404).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_later_ends(&mut self) {
+        let Some(body) = self.linuxcnc_bodies.last() else {
+            return;
+        };
+        let label = body.0.clone();
+        let ends = body.5;
+        let calls = std::mem::take(&mut self.linuxcnc_later.ends);
+        let (these, rest): (Vec<_>, Vec<_>) = calls.into_iter().partition(|e| e.0 == label);
+        self.linuxcnc_later.ends = rest;
+        let end = self.ended_line;
+        let Some(from) = these.iter().map(|e| e.1).min().filter(|&c| ends && c < end) else {
+            self.linuxcnc_later_released();
+            return;
+        };
+        let dead = |line: usize| line > from && line <= end;
+        if self.hold_from.is_none() && self.passed.is_none() {
+            self.found.retain(|f| !dead(f.line));
+        }
+        self.linuxcnc_later.moves.retain(|e| !dead(e.2));
+        self.linuxcnc_later.ends.retain(|e| !dead(e.1));
+        self.linuxcnc_later_released();
+    }
+
+    /// LinuxCNC: the findings held after the main program's calls of labels not read yet
+    /// ([`PENDING_LATER`]) handed over where no such call waits for its definition any more
+    /// (`all`: at the file's end, whatever waits; no call waits after it).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_later_released_at(&mut self, all: bool) {
+        if all {
+            self.linuxcnc_later.ends.clear();
+        } else if !self.linuxcnc_later.ends.is_empty() {
+            return;
+        }
+        for f in &mut self.found {
+            f.pending_on.retain(|&n| n != PENDING_LATER);
+        }
+    }
+
+    fn linuxcnc_later_released(&mut self) {
+        self.linuxcnc_later_released_at(false);
     }
 
     /// LinuxCNC: at the file's end, the moves kept after a call of a label no definition
@@ -3968,7 +4031,23 @@ impl Checker {
     pub(super) fn linuxcnc_later_unanswered(&mut self) {
         for (_, _, line, column, _) in std::mem::take(&mut self.linuxcnc_later.moves) {
             let message = "arc without I J K (or R): none is given, whatever the plane";
-            self.report(Rule::ArcCentreMissing, message.to_string(), line, column);
+            self.linuxcnc_later_report(message.to_string(), line, column);
+        }
+    }
+
+    /// LinuxCNC: a TG404 said late of a move after a call of a label not read yet, placed
+    /// among the findings still held after it ([`PENDING_LATER`]) in line order.
+    fn linuxcnc_later_report(&mut self, message: String, line: usize, column: usize) {
+        let before = self.found.len();
+        self.report(Rule::ArcCentreMissing, message, line, column);
+        // (not where findings are held by index for a program read apart or a jump's run)
+        if self.found.len() > before && self.hold_from.is_none() && self.passed.is_none() {
+            let at = self.found[..before]
+                .iter()
+                .position(|f| f.line > line)
+                .unwrap_or(before);
+            let f = self.found.remove(before);
+            self.found.insert(at, f);
         }
     }
 
@@ -5953,6 +6032,10 @@ pub(super) fn still_line(b: &BlockView<'_>) -> bool {
     })
 }
 
+/// Among a finding's [`super::Finding::pending_on`]: said after a main program's call, surely
+/// run, of a label not read yet ([`LaterCalls::ends`]), held until the definition is read.
+pub(super) const PENDING_LATER: i64 = -2;
+
 /// LinuxCNC: a call line's line and the axes before it ([`LaterCalls::still`]).
 pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9]);
 
@@ -5982,6 +6065,11 @@ pub(super) struct LaterCalls {
     /// kept positions after later calls of the main program are not used (review 62b F2,
     /// F3).
     pub(super) unread: bool,
+    /// The main program's calls surely run of a label no definition was read for, by label,
+    /// and their lines: where the definition written after answers one and surely ends the
+    /// program, the findings of the lines after it are dropped at its `endsub`
+    /// ([`Checker::linuxcnc_later_ends`]).
+    pub(super) ends: Vec<(Vec<u8>, usize)>,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
