@@ -1673,3 +1673,30 @@ def test_a_definition_read_keeps_the_rate_an_m70_saves(tmp_path, body, line):
         return
     assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A G2 in a condition or loop of the main program that may not run (its condition not known
+# here, a `while` that may turn none): the bare move after it is an arc one way and a line the
+# other, so it is not judged as an arc (lcnc63). rs274 -g reads #5220 as 1 (G54): `GT 100`
+# is false there and the program runs; `[1]` and an `if` whose branches are both arcs are
+# "R i j k words all missing for arc". (the blocks after HEAD; the refused line, or None)
+FLOW_ARC = [
+    ("o102 while [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 endwhile\nZ0.5", None),
+    ("o102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 endif\nZ0.5", None),
+    # the `else` starts in the mode from before the `if`, G1 here (it was TG404 at X1)
+    ("G1 X0\no102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 else\nX1\no102 endif\nZ0.5",
+     None),
+    ("o102 if [1]\nG2 X1 Y0 I0.5 J0\no102 endif\nZ0.5", 6),
+    ("G1 X0\no102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 else\nG3 X0 Y0 I-0.5 J0\n"
+     "o102 endif\nZ0.5", 9),
+]
+
+
+@pytest.mark.parametrize("body, line", FLOW_ARC)
+def test_an_arc_in_a_condition_that_may_not_run_leaves_the_mode_not_known(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)

@@ -4290,6 +4290,9 @@ impl Checker {
     /// plane.
     fn linuxcnc_plane_flow(&mut self, blocks: &mut Vec<PlaneBlock>, step: PlaneStep) {
         let now = self.linuxcnc_plane_now();
+        // (and the motion mode, the same way: lcnc63, a G2 in an `if` or `while` whose
+        // condition is not known, and a bare move after it)
+        let motion = (self.machine.state.motion, self.machine.state.cycle);
         if step.leaves {
             // (a `break` or `continue` leaves its turn in this plane: one more way out of its
             // loop and of every block around the loop; none into the conditions inside the
@@ -4299,6 +4302,7 @@ impl Checker {
             for (i, block) in blocks.iter_mut().enumerate() {
                 if inner.is_none_or(|at| i <= at) {
                     block.ends.push(now);
+                    block.motion_ends.push(motion);
                 }
             }
             if let (Some(_), Some(block)) = (inner, blocks.last_mut()) {
@@ -4315,6 +4319,8 @@ impl Checker {
                         unknown: true,
                         ..now
                     },
+                    motion_entry: UNKNOWN_MOTION,
+                    motion_ends: Vec::new(),
                     ends: Vec::new(),
                     has_else: false,
                     taken: false,
@@ -4323,6 +4329,8 @@ impl Checker {
             }
             blocks.push(PlaneBlock {
                 entry: now,
+                motion_entry: motion,
+                motion_ends: Vec::new(),
                 ends: Vec::new(),
                 has_else: false,
                 taken: false,
@@ -4331,17 +4339,22 @@ impl Checker {
         } else if step.open < step.depth {
             let mut ran = step.ran;
             let mut after = now;
+            let mut motion_after = motion;
             while blocks.len() > step.open {
                 let Some(block) = blocks.pop() else { break };
                 let mut ends = block.ends;
+                let mut motion_ends = block.motion_ends;
                 // (after a branch that surely ran, rs274 skips to the `endif`: the ways
                 // through are that branch's alone, its end pushed where it ended)
                 if ran != Some(false) && !block.taken && !block.left {
                     ends.push(after);
+                    motion_ends.push(motion_after);
                 }
                 if !block.has_else && ran != Some(true) && !block.taken {
                     ends.push(block.entry);
+                    motion_ends.push(block.motion_entry);
                 }
+                motion_after = flow_motion_merged(&motion_ends, motion_after);
                 after = match ends.first() {
                     Some(&first) if ends.iter().all(|e| *e == first) => first,
                     _ => PlaneAt {
@@ -4355,6 +4368,9 @@ impl Checker {
             if after != now {
                 self.linuxcnc_plane_set(after);
             }
+            if motion_after != motion {
+                self.linuxcnc_flow_motion(motion_after);
+            }
         } else if let Some(at) = step.switched {
             if at + 1 != blocks.len() {
                 // (a branch of a block not the innermost: the plane is not followed here)
@@ -4362,7 +4378,9 @@ impl Checker {
                 self.linuxcnc_plane_unknown = true;
                 if let Some(block) = blocks.last_mut() {
                     block.entry.unknown = true;
+                    block.motion_entry = UNKNOWN_MOTION;
                 }
+                self.linuxcnc_flow_motion(UNKNOWN_MOTION);
                 return;
             }
             let Some(block) = blocks.last_mut() else {
@@ -4370,6 +4388,7 @@ impl Checker {
             };
             if step.ran != Some(false) && !block.taken && !block.left {
                 block.ends.push(now);
+                block.motion_ends.push(motion);
             }
             block.left = false;
             block.has_else |= step.is_else;
@@ -4377,9 +4396,27 @@ impl Checker {
             // (after a branch that surely ran the others are skipped: the plane stays)
             if !block.taken {
                 let entry = block.entry;
+                let motion_entry = block.motion_entry;
                 self.linuxcnc_plane_set(entry);
+                if motion_entry != motion {
+                    self.linuxcnc_flow_motion(motion_entry);
+                }
             }
         }
+    }
+
+    /// LinuxCNC: the motion mode and canned cycle after a way through a condition or loop
+    /// of the main program ([`Checker::linuxcnc_plane_flow`]): the one every way through
+    /// it leaves, else not known (no mode, as after a call: none of G0-G3 judged by it). A
+    /// G2 in an `if` whose condition is not known, or a `while` that may turn none, and a
+    /// bare move after it, runs in `rs274 -g` where the branch does not run (`o102 while
+    /// [#5220 GT 100]` / `G2 X1 Y0 I0.5 J0` / `o102 endwhile` / `Z0.5`; it was TG404).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_flow_motion(&mut self, (motion, cycle): FlowMotion) {
+        let state = &mut self.machine.state;
+        state.motion = motion;
+        state.cycle = cycle;
     }
 
     /// LinuxCNC: the main program's flow went to depth `open`, or switched to another branch
@@ -5743,11 +5780,35 @@ impl PlaneAt {
 pub(super) struct PlaneBlock {
     entry: PlaneAt,
     ends: Vec<PlaneAt>,
+    /// The motion mode and canned cycle at its opening, and the ones its ways through it
+    /// read so far left, as for the plane ([`UNKNOWN_MOTION`]: not known).
+    motion_entry: FlowMotion,
+    motion_ends: Vec<FlowMotion>,
     has_else: bool,
     taken: bool,
     /// The branch in hand left its loop's turn (a `break` or `continue` of the loop around
     /// it): no way through it reaches the block's next branch or its close.
     left: bool,
+}
+
+/// LinuxCNC: the modal state's motion mode and canned cycle through the main program's
+/// conditions and loops ([`PlaneBlock`]).
+pub(super) type FlowMotion = (Option<i64>, Option<i64>);
+
+/// A motion mode not known ([`FlowMotion`]): none, as after a call.
+pub(super) const UNKNOWN_MOTION: FlowMotion = (None, None);
+
+/// LinuxCNC: the motion mode after a condition or loop whose ways through it leave `ends`
+/// (`now`: the one read last, in file order): the one they agree on; where one may leave G2
+/// or G3 and another not, not known (a bare move after it is an arc one way, a line or a
+/// cycle the other); elsewhere the one read last, as before.
+fn flow_motion_merged(ends: &[FlowMotion], now: FlowMotion) -> FlowMotion {
+    let arc = |e: &FlowMotion| matches!(e, (Some(2 | 3), None));
+    match ends.first() {
+        Some(&first) if ends.iter().all(|e| *e == first) => first,
+        Some(_) if ends.iter().any(arc) && !ends.iter().all(arc) => UNKNOWN_MOTION,
+        _ => now,
+    }
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand
