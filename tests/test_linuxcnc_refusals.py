@@ -1504,7 +1504,11 @@ CALLER_ARC_LATER = [
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nX3\nM2\no300 sub\nG0 X0\no300 endsub", None),
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG81 X1 Z-1 R2\no300 endsub", None),
     ("G3 X1 Y0 I0.5 J0\no<up> call\nZ1\nM2\no<up> sub\nG1 Z0.5\no<up> endsub", None),
-    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nX3\nM2\no300 sub\nM8\no300 endsub", 5),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nM8\no300 endsub", 5),
+    # a body of G4 (no motion code): the caller's G2 (review 63-lcnc63 F1)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG4 P0.1\no300 endsub", 5),
+    # the main program's own G2 after the call (review 63-lcnc63 F2)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nG2 X0 Y0 I-0.5 J0\nX2\nM2\no300 sub\nG0 X0\no300 endsub", 6),
     # the move's own G2 is judged where it stands
     ("G2 X1 Y0 I0.5 J0\no300 call\nG1 X2\nG2 X3\nM2\no300 sub\nG0 X0\no300 endsub", 6),
 ]
@@ -1724,3 +1728,11 @@ def test_a_dropped_m72_block_runs_none_of_its_distance_or_compensation_codes(
         return
     assert [(r, n) for r, n, _ in errors(text)] == [("TG412", line)], text
     assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+
+
+def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_path):
+    # review 63-lcnc63 F3: the body's own G1 at F0 runs and is refused (its M2 ends the program
+    # after it); only the main program's lines after the call are dropped
+    text = "G21 G17 G90 F100\nG0 X0 Y0 Z0\no300 call\nM2\no300 sub\nG1 X1 F0\nM2\no300 endsub\n"
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", 6)], text
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

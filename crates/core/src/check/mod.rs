@@ -2871,6 +2871,9 @@ impl Checker {
         self.sub_ended |= returns;
         self.split.ended(ends || returns);
         if ends {
+            if self.linuxcnc_later.main_end == 0 && self.open_definition.is_none() {
+                self.linuxcnc_later.main_end = b.line;
+            }
             self.ended_line = b.line;
             self.main_ended = true;
             // (LinuxCNC: one in a block known to run ends it too: review 51, F13)

@@ -3821,6 +3821,11 @@ impl Checker {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
         self.linuxcnc_later.pending = None;
+        if self.open_definition.is_some() && self.linuxcnc_later.sub_line != self.stats.blocks {
+            self.linuxcnc_later.body_moded |= calls
+                || self.linuxcnc_motion != LinuxCncMotion::Unknown
+                || b.statements.iter().any(|s| s.1 == Kind::Call);
+        }
         self.linuxcnc_later.body_zero_saved = false;
         if self.linuxcnc_later.still.is_some() {
             self.linuxcnc_still_back(b.line);
@@ -3952,21 +3957,21 @@ impl Checker {
     /// kept; the later ones are in the same mode, judged by the first.
     #[cold]
     #[inline(never)]
-    pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) {
+    pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) -> bool {
         use super::tooling::LinuxCncMotion;
+        // (a motion code since the call: the mode is the main program's own; review
+        // 63-lcnc63 F2)
         if self.linuxcnc_motion != LinuxCncMotion::Unknown {
-            return;
+            return false;
         }
         let Some((label, call, m)) = self.linuxcnc_later.pending.clone() else {
-            return;
+            return false;
         };
-        if self.linuxcnc_later.moves.iter().any(|e| e.1 == call) {
-            return;
-        }
         let column = b.words.first().map_or(1, |w| w.column);
         self.linuxcnc_later
             .moves
             .push((label, call, b.line, column, m));
+        true
     }
 
     /// LinuxCNC: at the `endsub` of a definition (`label`) the main program called before
@@ -3979,23 +3984,19 @@ impl Checker {
     /// (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`).
     #[cold]
     #[inline(never)]
-    fn linuxcnc_later_arcs(&mut self, label: &[u8]) {
+    fn linuxcnc_later_arcs(&mut self, label: &[u8], sure: Option<i64>, keeps: bool) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
         let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
         self.linuxcnc_later.moves = rest;
-        let keeps = self
-            .linuxcnc_bodies
-            .iter()
-            .rfind(|e| e.0 == label)
-            .is_some_and(|e| e.6 && e.2.is_empty());
-        if !keeps {
-            return;
-        }
         for (_, call, line, column, m) in these {
+            let leaves = match sure {
+                Some(m @ 2..=3) => format!("which leaves G{m} in force"),
+                None if keeps => format!("which leaves the G{m} before it in force"),
+                _ => continue,
+            };
             let message = format!(
                 "arc without I J K (or R): none is given, whatever the plane (the call on \
-                 line {call} runs {} written after it, which leaves the G{m} before it in \
-                 force)",
+                 line {call} runs {} written after it, {leaves})",
                 String::from_utf8_lossy(label)
             );
             self.linuxcnc_later_report(message, line, column);
@@ -4019,7 +4020,8 @@ impl Checker {
         let calls = std::mem::take(&mut self.linuxcnc_later.ends);
         let (these, rest): (Vec<_>, Vec<_>) = calls.into_iter().partition(|e| e.0 == label);
         self.linuxcnc_later.ends = rest;
-        let end = self.ended_line;
+        // (the main program's own end, not a definition's M2 after it: review 63-lcnc63 F3)
+        let end = self.linuxcnc_later.main_end;
         let Some(from) = these.iter().map(|e| e.1).min().filter(|&c| ends && c < end) else {
             self.linuxcnc_later_released();
             return;
@@ -4247,6 +4249,8 @@ impl Checker {
                     do_closed: None,
                 };
                 self.linuxcnc_body_returns = false;
+                self.linuxcnc_later.body_moded = false;
+                self.linuxcnc_later.sub_line = self.stats.blocks;
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
             }
@@ -4288,7 +4292,19 @@ impl Checker {
             ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
         if !self.linuxcnc_later.moves.is_empty() {
-            self.linuxcnc_later_arcs(&label);
+            // (the mode the body surely leaves, or whether it writes none: no motion code,
+            // G code of a value not known or call in it; review 63-lcnc63 F1)
+            let sure = self
+                .machine
+                .state
+                .motion
+                .filter(|m| known && (0..=3).contains(m));
+            let keeps = !self.linuxcnc_later.body_moded
+                && self.linuxcnc_motion == LinuxCncMotion::Unknown
+                && !self.linuxcnc_motion_subs.contains(&label)
+                && !self.linuxcnc_body_returns
+                && !self.linuxcnc_body_distance.ends;
+            self.linuxcnc_later_arcs(&label, sure, keeps);
         }
         let state = &self.machine.state;
         // (a body whose last mode is not known but differs from the one before its sub as
@@ -6164,6 +6180,13 @@ pub(super) struct LaterCalls {
     /// program, the findings of the lines after it are dropped at its `endsub`
     /// ([`Checker::linuxcnc_later_ends`]).
     pub(super) ends: Vec<(Vec<u8>, usize)>,
+    /// The open definition wrote a motion code (or a G code of a value not known, or a
+    /// call) before its last o-word line, and the line of its `sub`
+    /// ([`Checker::linuxcnc_later_arcs`]).
+    pub(super) body_moded: bool,
+    /// The line of the main program's first M2/M30 outside a definition (0: none yet).
+    pub(super) main_end: usize,
+    pub(super) sub_line: usize,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open
