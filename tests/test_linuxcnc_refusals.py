@@ -1693,6 +1693,16 @@ FLOW_ARC = [
     ("o102 if [1]\nG2 X1 Y0 I0.5 J0\no102 endif\nZ0.5", 6),
     ("G1 X0\no102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 else\nG3 X0 Y0 I-0.5 J0\n"
      "o102 endif\nZ0.5", 9),
+    # an `elseif` surely true closes the block as an `else` (review 63-lcnc63 F4)
+    ("o1 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no1 elseif [1]\nG2 X0 Y0 I-0.5 J0\no1 endif\n"
+     "Z0.5", 8),
+    # a definition's body keeps the mode as read: its conditions are not evaluated
+    # (review 63-lcnc63 F4; the call with #1 = 1 runs the G2, then Z0.5)
+    ("o100 sub\no1 if [#1 GT 0]\nG2 X1 Y0 I0.5 J0\no1 endif\nZ0.5\no100 endsub\n"
+     "o100 call [1]", 7),
+    ("o100 sub\no3 if [1]\nG2 X1 Y0 I0.5 J0\no3 endif\nZ0.5\no100 endsub\no100 call", 7),
+    ("o100 sub\no3 repeat [1]\nG2 X1 Y0 I0.5 J0\no3 endrepeat\nZ0.5\no100 endsub\n"
+     "o100 call", 7),
 ]
 
 

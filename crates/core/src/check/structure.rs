@@ -1248,6 +1248,7 @@ impl Checker {
                         open,
                         switched,
                         is_else: keyword.as_deref() == Some(b"else".as_slice()),
+                        main: false,
                         ran: None,
                         taken: false,
                         leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
@@ -2299,12 +2300,25 @@ impl Checker {
         // is the mode after the `endif`)
         self.linuxcnc_distance_scope(open, switched.filter(|_| !other_branch));
         let mut blocks = std::mem::take(&mut self.linuxcnc_plane_blocks);
-        let is_else = keyword.as_deref() == Some(b"else".as_slice());
+        // (an `elseif` whose condition is surely true, `elseif [1]`, closes its block as an
+        // `else` does: every way through it runs one of its branches, review 63, F4)
+        let is_else = match keyword.as_deref() {
+            Some(b"else") => true,
+            Some(b"elseif") => {
+                let (_, condition) = o_keyword_condition(text);
+                !condition.contains(&b'#')
+                    && self
+                        .linuxcnc_condition_value(condition)
+                        .is_some_and(|v| v != 0.0)
+            }
+            _ => false,
+        };
         let step = PlaneStep {
             depth,
             open,
             switched,
             is_else,
+            main: true,
             ran: branch_ran,
             taken: other_branch,
             leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
@@ -4339,7 +4353,10 @@ impl Checker {
         let now = self.linuxcnc_plane_now();
         // (and the motion mode, the same way: lcnc63, a G2 in an `if` or `while` whose
         // condition is not known, and a bare move after it)
+        // (the main program's alone: a definition's body, its conditions not evaluated, keeps
+        // the mode as read, review 63, F4: `o100 sub` / `o1 if [#1 GT 0]` / G2 ... / `Z0.5`)
         let motion = (self.machine.state.motion, self.machine.state.cycle);
+        let follow = step.main;
         if step.leaves {
             // (a `break` or `continue` leaves its turn in this plane: one more way out of its
             // loop and of every block around the loop; none into the conditions inside the
@@ -4415,7 +4432,7 @@ impl Checker {
             if after != now {
                 self.linuxcnc_plane_set(after);
             }
-            if motion_after != motion {
+            if follow && motion_after != motion {
                 self.linuxcnc_flow_motion(motion_after);
             }
         } else if let Some(at) = step.switched {
@@ -4427,7 +4444,9 @@ impl Checker {
                     block.entry.unknown = true;
                     block.motion_entry = UNKNOWN_MOTION;
                 }
-                self.linuxcnc_flow_motion(UNKNOWN_MOTION);
+                if follow {
+                    self.linuxcnc_flow_motion(UNKNOWN_MOTION);
+                }
                 return;
             }
             let Some(block) = blocks.last_mut() else {
@@ -4445,7 +4464,7 @@ impl Checker {
                 let entry = block.entry;
                 let motion_entry = block.motion_entry;
                 self.linuxcnc_plane_set(entry);
-                if motion_entry != motion {
+                if follow && motion_entry != motion {
                     self.linuxcnc_flow_motion(motion_entry);
                 }
             }
@@ -5791,6 +5810,9 @@ pub(super) struct PlaneStep {
     open: usize,
     switched: Option<usize>,
     is_else: bool,
+    /// Whether the o-word line is the main program's (the motion mode is followed there
+    /// only).
+    main: bool,
     ran: Option<bool>,
     taken: bool,
     leaves: bool,
