@@ -1511,6 +1511,12 @@ CALLER_ARC_LATER = [
     ("G2 X1 Y0 I0.5 J0\no300 call\nG2 X0 Y0 I-0.5 J0\nX2\nM2\no300 sub\nG0 X0\no300 endsub", 6),
     # the move's own G2 is judged where it stands
     ("G2 X1 Y0 I0.5 J0\no300 call\nG1 X2\nG2 X3\nM2\no300 sub\nG0 X0\no300 endsub", 6),
+    # a body that may keep the caller's G2 (a call in it, a G0 in a condition that does not
+    # run): judged as before (review 63-lcnc63 K8, K12)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\nM8\n"
+     "o301 endsub", 5),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\nG0 X0\no1 endif\n"
+     "o300 endsub", 5),
 ]
 
 

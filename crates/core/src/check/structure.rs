@@ -3994,11 +3994,13 @@ impl Checker {
     /// [`still_line`]), the first move without a motion code or arc word after the call is
     /// an arc with no centre or radius ("R i j k words all missing for arc", interp_convert.cc
     /// convert_arc; review 62b LG4: `G2 X1 Y0 I0.5 J0` / `o300 call` / `X2` / `M2` / `o300
-    /// sub` / `M8` / `o300 endsub`); elsewhere the body's mode decides, and nothing is said
-    /// (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`).
+    /// sub` / `M8` / `o300 endsub`); where it surely leaves G0, G1 or a cycle (`plain`)
+    /// nothing is said (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs
+    /// in `rs274 -g`); elsewhere (a call in it, a G0 in a condition) it may leave the
+    /// caller's G2/G3, and the move is judged as before (review 63-lcnc63, K8, K12).
     #[cold]
     #[inline(never)]
-    fn linuxcnc_later_arcs(&mut self, label: &[u8], sure: Option<i64>, keeps: bool) {
+    fn linuxcnc_later_arcs(&mut self, label: &[u8], sure: Option<i64>, keeps: bool, plain: bool) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
         let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
         self.linuxcnc_later.moves = rest;
@@ -4006,6 +4008,7 @@ impl Checker {
             let leaves = match sure {
                 Some(m @ 2..=3) => format!("which leaves G{m} in force"),
                 None if keeps => format!("which leaves the G{m} before it in force"),
+                _ if !plain => format!("which may leave the G{m} before it in force"),
                 _ => continue,
             };
             let message = format!(
@@ -4318,7 +4321,17 @@ impl Checker {
                 && !self.linuxcnc_motion_subs.contains(&label)
                 && !self.linuxcnc_body_returns
                 && !self.linuxcnc_body_distance.ends;
-            self.linuxcnc_later_arcs(&label, sure, keeps);
+            // (whether it surely leaves G0, G1 or a cycle: the move after the call runs in
+            // rs274, review 62b F4; elsewhere -- a call in it, a G0 in a condition -- it may
+            // keep the caller's G2/G3, and the move is judged as main did: review 63-lcnc63,
+            // K8, K12)
+            let plain = matches!(
+                self.linuxcnc_motion,
+                LinuxCncMotion::Known(Some(0 | 10 | 730 | 740 | 810..=890))
+            ) && !self.motion_unknown
+                && !self.linuxcnc_body_returns
+                && !self.linuxcnc_body_distance.ends;
+            self.linuxcnc_later_arcs(&label, sure, keeps, plain);
         }
         let state = &self.machine.state;
         // (a body whose last mode is not known but differs from the one before its sub as
