@@ -1472,7 +1472,18 @@ LATER_ENDS = [
     # the caller's G2 before the call of a G1 body, after the held call: not known, no arc
     "o300 call\no100 sub\nG1 X2\no100 endsub\nG2 X1 Y0 I0.5 J0\no100 call\nZ0.5\nM2\n"
     "o300 sub\nM8\no300 endsub",
+    # the lines after a call of a later definition whose M2 ends the program are not judged
+    # (review 62b LE1: TG404 at the G2 before lcnc63; X1 Y1 X2 was TG131)
+    "o300 call\nG2 Z0.5\nM2\no300 sub\nM8\nM2\no300 endsub",
+    "o300 call\nG21 G17 G90 F100\nG2 Z0.5\nX1 Y1 X2\nM2\no300 sub\nM8\nM2\no300 endsub",
 ]
+
+
+def test_lines_after_a_call_of_a_later_definition_that_returns_are_judged(tmp_path):
+    # the same o300 without its M2 returns: rs274 refuses the G2 (review 62b LE1's other half)
+    text = program("o300 call\nG2 Z0.5\nM2\no300 sub\nM8\no300 endsub")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", 4)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
 
 
 @pytest.mark.parametrize("body", LATER_ENDS)
@@ -1480,6 +1491,44 @@ def test_lines_after_a_call_that_may_end_the_program_take_no_new_sure_state(tmp_
     text = "G21 G17 G90 F100\nG0 X0 Y0 Z0\n" + body + "\n"
     assert errors(text) == [], text
     assert "PROGRAM_END" in rs274_output(tmp_path, text)
+
+
+# The caller's G2 before a call of a definition not read yet: the moves without a motion code
+# after the call run in the mode the definition leaves, judged at its endsub (review 62b F4:
+# lcnc62 and main judged them by the caller's G2, TG404 where rs274 runs the body's G0 or
+# cycle). A body that leaves the mode as it found it (M8) leaves the caller's G2: rs274's "R i j
+# k words all missing for arc" at the first move (review 62b LG4). (the blocks after HEAD; the
+# refused line, or None where rs274 -g runs)
+CALLER_ARC_LATER = [
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG0 X0\no300 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nX3\nM2\no300 sub\nG0 X0\no300 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG81 X1 Z-1 R2\no300 endsub", None),
+    ("G3 X1 Y0 I0.5 J0\no<up> call\nZ1\nM2\no<up> sub\nG1 Z0.5\no<up> endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nM8\no300 endsub", 5),
+    # a body of G4 (no motion code): the caller's G2 (review 63-lcnc63 F1)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nG4 P0.1\no300 endsub", 5),
+    # the main program's own G2 after the call (review 63-lcnc63 F2)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nG2 X0 Y0 I-0.5 J0\nX2\nM2\no300 sub\nG0 X0\no300 endsub", 6),
+    # the move's own G2 is judged where it stands
+    ("G2 X1 Y0 I0.5 J0\no300 call\nG1 X2\nG2 X3\nM2\no300 sub\nG0 X0\no300 endsub", 6),
+    # a body that may keep the caller's G2 (a call in it, a G0 in a condition that does not
+    # run): judged as before (review 63-lcnc63 K8, K12)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\nM8\n"
+     "o301 endsub", 5),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\nG0 X0\no1 endif\n"
+     "o300 endsub", 5),
+]
+
+
+@pytest.mark.parametrize("body, line", CALLER_ARC_LATER)
+def test_the_caller_s_arc_is_not_the_mode_after_a_call_of_a_later_definition(
+        tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
 
 
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
@@ -1610,4 +1659,96 @@ def test_an_m72_of_a_body_s_own_zero_save_leaves_a_zero_rate(tmp_path, body, lin
         clean_on_both(tmp_path, text)
         return
     assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A definition read before an M70 or M72 of the main program: rs274 reads it without running
+# it, so the feed rate after its `endsub` is the one before its `sub` (review 62b F1). HEAD
+# sets F100. (the blocks after HEAD; the refused line, or None where rs274 -g runs)
+DEFINITION_KEEPS_RATE = [
+    # rs274 runs: the M70 saves F100, the M72 writes it after the block's F0
+    ("o100 sub\nM8\no100 endsub\nM70\nM72 F0\nG1 X4", None),
+    ("o100 sub\nM8\no100 endsub\nM70\nF0\nM72\nG1 X4", None),
+    ("o100 sub\nF0\no100 endsub\nM70\nF0\nM72\nG1 X4", None),
+    # "Cannot do g1 with zero feed rate": the body's F10 is not run, the F0 saved is restored
+    ("F0\no100 sub\nF10\no100 endsub\nM70\nF10\nM72\nG1 X4", 10),
+]
+
+
+@pytest.mark.parametrize("body, line", DEFINITION_KEEPS_RATE)
+def test_a_definition_read_keeps_the_rate_an_m70_saves(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
+    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A G2 in a condition or loop of the main program that may not run (its condition not known
+# here, a `while` that may turn none): the bare move after it is an arc one way and a line the
+# other, so it is not judged as an arc (lcnc63). rs274 -g reads #5220 as 1 (G54): `GT 100`
+# is false there and the program runs; `[1]` and an `if` whose branches are both arcs are
+# "R i j k words all missing for arc". (the blocks after HEAD; the refused line, or None)
+FLOW_ARC = [
+    ("o102 while [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 endwhile\nZ0.5", None),
+    ("o102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 endif\nZ0.5", None),
+    # the `else` starts in the mode from before the `if`, G1 here (it was TG404 at X1)
+    ("G1 X0\no102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 else\nX1\no102 endif\nZ0.5",
+     None),
+    ("o102 if [1]\nG2 X1 Y0 I0.5 J0\no102 endif\nZ0.5", 6),
+    ("G1 X0\no102 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no102 else\nG3 X0 Y0 I-0.5 J0\n"
+     "o102 endif\nZ0.5", 9),
+    # an `elseif` surely true closes the block as an `else` (review 63-lcnc63 F4)
+    ("o1 if [#5220 GT 100]\nG2 X1 Y0 I0.5 J0\no1 elseif [1]\nG2 X0 Y0 I-0.5 J0\no1 endif\n"
+     "Z0.5", 8),
+    # a definition's body keeps the mode as read: its conditions are not evaluated
+    # (review 63-lcnc63 F4; the call with #1 = 1 runs the G2, then Z0.5)
+    ("o100 sub\no1 if [#1 GT 0]\nG2 X1 Y0 I0.5 J0\no1 endif\nZ0.5\no100 endsub\n"
+     "o100 call [1]", 7),
+    ("o100 sub\no3 if [1]\nG2 X1 Y0 I0.5 J0\no3 endif\nZ0.5\no100 endsub\no100 call", 7),
+    ("o100 sub\no3 repeat [1]\nG2 X1 Y0 I0.5 J0\no3 endrepeat\nZ0.5\no100 endsub\n"
+     "o100 call", 7),
+]
+
+
+@pytest.mark.parametrize("body, line", FLOW_ARC)
+def test_an_arc_in_a_condition_that_may_not_run_leaves_the_mode_not_known(tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+
+
+# A block whose M72 rs274 2.9.0 drops (the restore's block runs in its place): its own G90/G91
+# and G41/G42 never run (review 59b F7). HEAD is G90 at Z0. (the blocks after HEAD; the refused
+# line, or None where rs274 -g runs)
+M72_DROPPED_CODES = [
+    # the dropped G91: `Z1` is absolute, and the probe to Z2 has a way to go
+    ("M70\nS200\nM72 G91 G0 Z1\nZ1\nG90 G38.2 Z2", None),
+    # the dropped G42.1 under G41.1: not "Cannot turn cutter radius comp on when on"
+    ("G41.1 D0.1\nG1 X1\nM70\nG93\nM72 G42.1 D0.1\nG94 G1 X2 F10", None),
+    # with G91 in force after the restore's G90, X1 from X0 stays at X1: "too close"
+    ("M70\nS200\nM72 G91 G0 Z1\nG0 X1\nG38.2 X1", 7),
+]
+
+
+@pytest.mark.parametrize("body, line", M72_DROPPED_CODES)
+def test_a_dropped_m72_block_runs_none_of_its_distance_or_compensation_codes(
+        tmp_path, body, line):
+    text = program(body)
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG412", line)], text
+    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
+
+
+def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_path):
+    # review 63-lcnc63 F3: the body's own G1 at F0 runs and is refused (its M2 ends the program
+    # after it); only the main program's lines after the call are dropped
+    text = "G21 G17 G90 F100\nG0 X0 Y0 Z0\no300 call\nM2\no300 sub\nG1 X1 F0\nM2\no300 endsub\n"
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", 6)], text
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)

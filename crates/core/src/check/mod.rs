@@ -1216,6 +1216,10 @@ pub struct Checker {
     /// loop or body, a parameter, a call or jump). M72's restore compares it
     /// ([`Checker::linuxcnc_feed_restore`]).
     linuxcnc_rate: Option<Dec>,
+    /// LinuxCNC: rs274's feed rate (`linuxcnc_rate`, `linuxcnc_feed_rate`) before a
+    /// definition's `sub`, which its `endsub` gives back (rs274 reads a definition without
+    /// running it); at the `endsub`, the block (its count) it is given back at.
+    linuxcnc_rate_before_sub: Option<(Option<usize>, Option<Dec>, tooling::LinuxCncFeed)>,
     /// LinuxCNC: the feed mode, rs274's feed rate and the speed the main program's M70 or
     /// M73 saved, where each is known ([`structure::FeedSaved`]); None where no save is
     /// followed.
@@ -1832,6 +1836,7 @@ impl Checker {
             linuxcnc_cycle_r: None,
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
+            linuxcnc_rate_before_sub: None,
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,
@@ -1966,6 +1971,12 @@ impl Checker {
                 placed: Placed::Not,
                 pending_on: Vec::new(),
             });
+            if !self.linuxcnc_later.ends.is_empty() {
+                // (after a call that may end the program: held, structure::PENDING_LATER)
+                if let Some(f) = self.found.last_mut() {
+                    f.pending_on.push(structure::PENDING_LATER);
+                }
+            }
         }
     }
 
@@ -2506,8 +2517,7 @@ impl Checker {
                 self.linuxcnc_uvw_unfollowed(b);
                 self.linuxcnc_compensation_unknown = true;
                 self.linuxcnc_plane_after_call(b, false);
-                self.linuxcnc_feed_rate = tooling::LinuxCncFeed::Unknown;
-                self.linuxcnc_rate = self.linuxcnc_rate_through_if(b);
+                self.linuxcnc_rate_after_statement(b);
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
@@ -2889,6 +2899,9 @@ impl Checker {
         self.sub_ended |= returns;
         self.split.ended(ends || returns);
         if ends {
+            if self.linuxcnc_later.main_end == 0 && self.open_definition.is_none() {
+                self.linuxcnc_later.main_end = b.line;
+            }
             self.ended_line = b.line;
             self.main_ended = true;
             // (LinuxCNC: one in a block known to run ends it too: review 51, F13)
@@ -3142,6 +3155,12 @@ impl Checker {
         self.early_finish();
         self.after_end();
         self.program_shift_end();
+        if !self.linuxcnc_later.moves.is_empty() {
+            self.linuxcnc_later_unanswered();
+        }
+        if !self.linuxcnc_later.ends.is_empty() {
+            self.linuxcnc_later_released_at(true);
+        }
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();

@@ -782,6 +782,15 @@ impl Checker {
         {
             let given = |letter: u8| v.has(letter) || v.unknown & crate::modal::bit(letter) != 0;
             if !b"IJKR".iter().any(|&a| given(a)) {
+                // (a bare move after the main program's call of a definition not read yet,
+                // under the caller's G2/G3: held for that definition's endsub)
+                if self.linuxcnc_later.pending.is_some()
+                    && !v.has_g(2)
+                    && !v.has_g(3)
+                    && self.linuxcnc_later_move(b)
+                {
+                    return;
+                }
                 let message = "arc without I J K (or R): none is given, whatever the plane";
                 self.report(
                     Rule::ArcCentreMissing,

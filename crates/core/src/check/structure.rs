@@ -1189,6 +1189,9 @@ impl Checker {
             self.definition_open(b, statement.as_ref());
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
+            if was_open && self.open_definition.is_none() && !self.linuxcnc_later.ends.is_empty() {
+                self.linuxcnc_later_ends();
+            }
             self.linuxcnc_called(b, statement.as_ref(), was_open);
             statement
         };
@@ -1339,6 +1342,7 @@ impl Checker {
                         open,
                         switched,
                         is_else: keyword.as_deref() == Some(b"else".as_slice()),
+                        main: false,
                         ran: None,
                         taken: false,
                         leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
@@ -2390,12 +2394,25 @@ impl Checker {
         // is the mode after the `endif`)
         self.linuxcnc_distance_scope(open, switched.filter(|_| !other_branch));
         let mut blocks = std::mem::take(&mut self.linuxcnc_plane_blocks);
-        let is_else = keyword.as_deref() == Some(b"else".as_slice());
+        // (an `elseif` whose condition is surely true, `elseif [1]`, closes its block as an
+        // `else` does: every way through it runs one of its branches, review 63, F4)
+        let is_else = match keyword.as_deref() {
+            Some(b"else") => true,
+            Some(b"elseif") => {
+                let (_, condition) = o_keyword_condition(text);
+                !condition.contains(&b'#')
+                    && self
+                        .linuxcnc_condition_value(condition)
+                        .is_some_and(|v| v != 0.0)
+            }
+            _ => false,
+        };
         let step = PlaneStep {
             depth,
             open,
             switched,
             is_else,
+            main: true,
             ran: branch_ran,
             taken: other_branch,
             leaves: matches!(keyword.as_deref(), Some(b"break" | b"continue")),
@@ -3537,7 +3554,7 @@ impl Checker {
         let surely = restored.is_some();
         // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
         // G40-G42.1, read as written)
-        let (mut plane, mut compensation) = (false, false);
+        let (mut plane, mut compensation, mut distance) = (false, false, None);
         for w in b
             .words
             .iter()
@@ -3549,6 +3566,11 @@ impl Checker {
                 .map(|v| (v * 10.0).round() as i64);
             plane |= matches!(tenths, Some(170 | 171 | 180 | 181 | 190 | 191));
             compensation |= matches!(tenths, Some(400 | 410 | 411 | 420 | 421));
+            match tenths {
+                Some(900) => distance = Some(false),
+                Some(910) => distance = Some(true),
+                _ => {}
+            }
         }
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
@@ -3556,6 +3578,7 @@ impl Checker {
             restored,
             plane,
             compensation,
+            distance,
         });
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
@@ -3607,6 +3630,13 @@ impl Checker {
                 }
                 None => self.linuxcnc_compensation_unknown = true,
             }
+        }
+        // (nor its G90/G91: where the drop is sure, the distance mode the save took, which
+        // the restore writes; where it is only possible and the two differ, not known;
+        // review 59b F7: `M70` / `S200` / `M72 G91 G0 Z1` / `Z1` / `G90 G38.2 Z2` runs in
+        // `rs274 -g`, the Z1 in G90)
+        if let Some(g91) = dropped.distance.filter(|_| self.open_definition.is_none()) {
+            self.linuxcnc_m72_distance_back(g91, dropped.restored.is_some());
         }
         let M72Dropped {
             motion,
@@ -3673,6 +3703,27 @@ impl Checker {
                 self.linuxcnc_later.pending = None;
             }
         }
+    }
+
+    /// LinuxCNC: the distance mode after a block whose M72 may be dropped and that writes
+    /// G90 or G91 (`g91`), the drop sure or not ([`Checker::linuxcnc_m72_motion_back`]).
+    fn linuxcnc_m72_distance_back(&mut self, g91: bool, surely: bool) {
+        let now = if self.linuxcnc_distance_unsure {
+            Distance::Unsure
+        } else {
+            Distance::Known(self.machine.state.incremental)
+        };
+        let saved = match self.linuxcnc_saved {
+            Saved::Valid(saved) => saved,
+            _ => Distance::Unsure,
+        };
+        let after = match saved {
+            _ if surely => saved,
+            Distance::Known(was) if was == g91 => return,
+            _ => Distance::Unsure,
+        };
+        let depth = self.linuxcnc_distance_depth();
+        self.linuxcnc_main_write(now, after, depth);
     }
 
     /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
@@ -3878,6 +3929,11 @@ impl Checker {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
         self.linuxcnc_later.pending = None;
+        if self.open_definition.is_some() && self.linuxcnc_later.sub_line != self.stats.blocks {
+            self.linuxcnc_later.body_moded |= calls
+                || self.linuxcnc_motion != LinuxCncMotion::Unknown
+                || b.statements.iter().any(|s| s.1 == Kind::Call);
+        }
         self.linuxcnc_later.body_zero_saved = false;
         if self.linuxcnc_later.still.is_some() {
             self.linuxcnc_still_back(b.line);
@@ -3945,16 +4001,30 @@ impl Checker {
         // (review 62b F3). The mode it leaves is not judged, and no mode a later call
         // surely leaves (from a plain body or a `do` loop), in the main program after
         // it: held; review 62b LE5)
-        if self.open_definition.is_none()
-            && b.statements.iter().any(|&(_, kind, text)| {
-                kind == Kind::Call && {
-                    let label = self.linuxcnc_call_label(text);
-                    crate::statement::computed_label(&label)
-                        || !self.linuxcnc_defined.contains(&label)
-                }
-            })
-        {
+        let unread = b
+            .statements
+            .iter()
+            .filter(|&&(_, kind, _)| kind == Kind::Call && self.open_definition.is_none())
+            .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+            .find(|label| {
+                crate::statement::computed_label(label) || !self.linuxcnc_defined.contains(label)
+            });
+        if let Some(label) = unread {
             self.linuxcnc_later.unread = true;
+            // (a call surely run: where the definition answering it surely ends the program,
+            // no line after it runs; review 62b F3, LE1)
+            if !b.skip && self.linuxcnc_runs_surely() && !self.main_ended() {
+                let at = (label.clone(), b.line);
+                self.linuxcnc_later.ends.push(at);
+            }
+            // (the caller's G2/G3 judges no move after it until the definition is read:
+            // review 62b F4, Checker::linuxcnc_later_move)
+            let state = &self.machine.state;
+            if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
+                if !crate::statement::computed_label(&label) {
+                    self.linuxcnc_later.pending = Some((label, b.line, m));
+                }
+            }
         }
         if self.linuxcnc_later.unread && self.open_definition.is_none() {
             if left.is_some() {
@@ -3988,47 +4058,140 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC: a move without a motion code or arc word (`b`) where the mode in force is
-    /// the one a call of a definition not read yet leaves ([`LaterCalls`]): kept for that
-    /// definition's `endsub`.
+    /// LinuxCNC: a move without a motion code or arc word (`b`) under the caller's G2/G3
+    /// after the main program's call of a definition not read yet ([`LaterCalls`]), no
+    /// motion code since: rs274 runs it in the mode the definition leaves, known at its
+    /// `endsub` ([`Checker::linuxcnc_later_arcs`]). The first such move after the call is
+    /// kept; the later ones are in the same mode, judged by the first.
     #[cold]
     #[inline(never)]
-    pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) {
-        let Some((label, call)) = self.linuxcnc_later.pending.take() else {
-            return;
+    pub(super) fn linuxcnc_later_move(&mut self, b: &BlockView<'_>) -> bool {
+        use super::tooling::LinuxCncMotion;
+        // (a motion code since the call: the mode is the main program's own; review
+        // 63-lcnc63 F2)
+        if self.linuxcnc_motion != LinuxCncMotion::Unknown {
+            return false;
+        }
+        let Some((label, call, m)) = self.linuxcnc_later.pending.clone() else {
+            return false;
         };
-        let Some(column) = b
-            .words
-            .iter()
-            .find(|w| crate::modal::AXES.contains(&w.letter))
-            .map(|w| w.column)
-        else {
-            return;
-        };
+        let column = b.words.first().map_or(1, |w| w.column);
         self.linuxcnc_later
             .moves
-            .push((label, call, b.line, column));
+            .push((label, call, b.line, column, m));
+        true
     }
 
-    /// LinuxCNC: at the `endsub` of a definition (`label`) that surely leaves G2 or G3
-    /// (`m`), the first move without a motion code or arc word after each earlier call of
-    /// it ([`LaterCalls`]) is an arc with no centre or radius: rs274 finds a definition
-    /// written after M2 when the call runs, and refuses the move ("R i j k words all missing
-    /// for arc", interp_convert.cc convert_arc; lcnc61's miss: `o100 call` / `Z0.5` / `M2`
-    /// / `o100 sub` / `G2 X1 Y0 I0.5 J0` / `o100 endsub`).
+    /// LinuxCNC: at the `endsub` of a definition (`label`) the main program called before
+    /// reading it under its own G2/G3 ([`LaterCalls`]): where the body surely leaves the
+    /// mode as it found it (it moves no axis, writes no G code and calls nothing:
+    /// [`still_line`]), the first move without a motion code or arc word after the call is
+    /// an arc with no centre or radius ("R i j k words all missing for arc", interp_convert.cc
+    /// convert_arc; review 62b LG4: `G2 X1 Y0 I0.5 J0` / `o300 call` / `X2` / `M2` / `o300
+    /// sub` / `M8` / `o300 endsub`); where it surely leaves G0, G1 or a cycle (`plain`)
+    /// nothing is said (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs
+    /// in `rs274 -g`); elsewhere (a call in it, a G0 in a condition) it may leave the
+    /// caller's G2/G3, and the move is judged as before (review 63-lcnc63, K8, K12).
     #[cold]
     #[inline(never)]
-    fn linuxcnc_later_arcs(&mut self, label: &[u8], m: i64) {
+    fn linuxcnc_later_arcs(&mut self, label: &[u8], sure: Option<i64>, keeps: bool, plain: bool) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
         let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
         self.linuxcnc_later.moves = rest;
-        for (_, call, line, column) in these {
+        for (_, call, line, column, m) in these {
+            let leaves = match sure {
+                Some(m @ 2..=3) => format!("which leaves G{m} in force"),
+                None if keeps => format!("which leaves the G{m} before it in force"),
+                _ if !plain => format!("which may leave the G{m} before it in force"),
+                _ => continue,
+            };
             let message = format!(
                 "arc without I J K (or R): none is given, whatever the plane (the call on \
-                 line {call} runs {} written after it, which leaves G{m} in force)",
+                 line {call} runs {} written after it, {leaves})",
                 String::from_utf8_lossy(label)
             );
-            self.report(Rule::ArcCentreMissing, message, line, column);
+            self.linuxcnc_later_report(message, line, column);
+        }
+    }
+
+    /// LinuxCNC: at the `endsub` of a definition the main program called before reading it,
+    /// the call surely run ([`LaterCalls::ends`]), whose body surely ends the program (its M2
+    /// or M30 outside its conditions): no line after the first such call runs, so the
+    /// findings of the lines from it to the main program's end are dropped, as after a call
+    /// of such a body read before it (review 62b F3, LE1: `o300 call` / `G2 Z0.5` / `M2` /
+    /// `o300 sub` / `M8` / `M2` / `o300 endsub` runs to its end in `rs274 -g`; it was TG404).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_later_ends(&mut self) {
+        let Some(body) = self.linuxcnc_bodies.last() else {
+            return;
+        };
+        let label = body.0.clone();
+        let ends = body.5;
+        let calls = std::mem::take(&mut self.linuxcnc_later.ends);
+        let (these, rest): (Vec<_>, Vec<_>) = calls.into_iter().partition(|e| e.0 == label);
+        self.linuxcnc_later.ends = rest;
+        // (the main program's own end, not a definition's M2 after it: review 63-lcnc63 F3)
+        let end = self.linuxcnc_later.main_end;
+        let Some(from) = these.iter().map(|e| e.1).min().filter(|&c| ends && c < end) else {
+            self.linuxcnc_later_released();
+            return;
+        };
+        let dead = |line: usize| line > from && line <= end;
+        if self.hold_from.is_none() && self.passed.is_none() {
+            self.found.retain(|f| !dead(f.line));
+        }
+        self.linuxcnc_later.moves.retain(|e| !dead(e.2));
+        self.linuxcnc_later.ends.retain(|e| !dead(e.1));
+        self.linuxcnc_later_released();
+    }
+
+    /// LinuxCNC: the findings held after the main program's calls of labels not read yet
+    /// ([`PENDING_LATER`]) handed over where no such call waits for its definition any more
+    /// (`all`: at the file's end, whatever waits; no call waits after it).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_later_released_at(&mut self, all: bool) {
+        if all {
+            self.linuxcnc_later.ends.clear();
+        } else if !self.linuxcnc_later.ends.is_empty() {
+            return;
+        }
+        for f in &mut self.found {
+            f.pending_on.retain(|&n| n != PENDING_LATER);
+        }
+    }
+
+    fn linuxcnc_later_released(&mut self) {
+        self.linuxcnc_later_released_at(false);
+    }
+
+    /// LinuxCNC: at the file's end, the moves kept after a call of a label no definition
+    /// of the file answers ([`Checker::linuxcnc_later_move`]): judged by the caller's G2/G3,
+    /// as before they were kept (rs274 refuses the call where no file of that name is on
+    /// its subroutine path).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_later_unanswered(&mut self) {
+        for (_, _, line, column, _) in std::mem::take(&mut self.linuxcnc_later.moves) {
+            let message = "arc without I J K (or R): none is given, whatever the plane";
+            self.linuxcnc_later_report(message.to_string(), line, column);
+        }
+    }
+
+    /// LinuxCNC: a TG404 said late of a move after a call of a label not read yet, placed
+    /// among the findings still held after it ([`PENDING_LATER`]) in line order.
+    fn linuxcnc_later_report(&mut self, message: String, line: usize, column: usize) {
+        let before = self.found.len();
+        self.report(Rule::ArcCentreMissing, message, line, column);
+        // (not where findings are held by index for a program read apart or a jump's run)
+        if self.found.len() > before && self.hold_from.is_none() && self.passed.is_none() {
+            let at = self.found[..before]
+                .iter()
+                .position(|f| f.line > line)
+                .unwrap_or(before);
+            let f = self.found.remove(before);
+            self.found.insert(at, f);
         }
     }
 
@@ -4114,15 +4277,33 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: rs274's feed rate after an o-word line the checker does not follow
+    /// ([`Checker::linuxcnc_rate_through_if`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_rate_after_statement(&mut self, b: &BlockView<'_>) {
+        // (a definition's `endsub`: the rate from before its `sub`, rs274 reading the
+        // definition without running it; review 62b, F1: `o100 sub` / `M8` / `o100 endsub`
+        // / `M70` / `M72 F0` / `G1 X4` after an F100 runs in `rs274 -g`, the M70 saving 100)
+        if let Some((Some(at), rate, feed)) = self.linuxcnc_rate_before_sub {
+            self.linuxcnc_rate_before_sub = None;
+            if at == self.stats.blocks {
+                self.linuxcnc_rate = rate;
+                self.linuxcnc_feed_rate = feed;
+                return;
+            }
+        }
+        self.linuxcnc_feed_rate = super::tooling::LinuxCncFeed::Unknown;
+        self.linuxcnc_rate = self.linuxcnc_rate_through_if(b);
+    }
+
     /// LinuxCNC: rs274's feed rate ([`Checker::linuxcnc_rate`]) after an o-word line the
     /// checker does not follow: an `if` of the main program opening its first branch runs
     /// nothing, so the rate where its branch's first line runs is the one before it (kept
     /// for what an M70 there saves; review 61b, v2: `F0` / `o1 if [#5220 GT 0]` / `M70` /
     /// `o1 endif` / `M72 F0` / `G1 X1` is "Cannot do g1 with zero feed rate" in `rs274
     /// -g`); after any other, not known.
-    #[cold]
-    #[inline(never)]
-    pub(super) fn linuxcnc_rate_through_if(&self, b: &BlockView<'_>) -> Option<Dec> {
+    fn linuxcnc_rate_through_if(&self, b: &BlockView<'_>) -> Option<Dec> {
         let opens_if = |&(_, kind, text): &(usize, Kind, &[u8])| {
             kind == Kind::Flow
                 && crate::statement::o_keyword(text).as_deref() == Some(b"if".as_slice())
@@ -4165,6 +4346,9 @@ impl Checker {
                 // (and whether the motion mode before it is G0-G3 or none, which its endsub
                 // gives back: `Checker::linuxcnc_motion_after_call`)
                 self.linuxcnc_plain_before_sub = self.linuxcnc_motion_is_plain();
+                // (and rs274's feed rate, which its endsub gives back)
+                self.linuxcnc_rate_before_sub =
+                    Some((None, self.linuxcnc_rate, self.linuxcnc_feed_rate));
                 let state = &self.machine.state;
                 let label = self.open_definition.as_ref().map(|o| o.2.clone());
                 self.linuxcnc_motion_before_sub = MotionBeforeSub {
@@ -4176,6 +4360,8 @@ impl Checker {
                     do_closed: None,
                 };
                 self.linuxcnc_body_returns = false;
+                self.linuxcnc_later.body_moded = false;
+                self.linuxcnc_later.sub_line = self.stats.blocks;
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
             }
@@ -4185,6 +4371,9 @@ impl Checker {
                 }
                 self.linuxcnc_definition_motion();
                 self.linuxcnc_plane_body_blocks.clear();
+                if let Some(before) = self.linuxcnc_rate_before_sub.as_mut() {
+                    before.0 = Some(self.stats.blocks);
+                }
             }
             _ => {}
         }
@@ -4213,13 +4402,36 @@ impl Checker {
             label,
             ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
+        if !self.linuxcnc_later.moves.is_empty() {
+            // (the mode the body surely leaves, or whether it writes none: no motion code,
+            // G code of a value not known or call in it; review 63-lcnc63 F1)
+            let sure = self
+                .machine
+                .state
+                .motion
+                .filter(|m| known && (0..=3).contains(m));
+            let keeps = !self.linuxcnc_later.body_moded
+                && self.linuxcnc_motion == LinuxCncMotion::Unknown
+                && !self.linuxcnc_motion_subs.contains(&label)
+                && !self.linuxcnc_body_returns
+                && !self.linuxcnc_body_distance.ends;
+            // (whether it surely leaves G0, G1 or a cycle: the move after the call runs in
+            // rs274, review 62b F4; elsewhere -- a call in it, a G0 in a condition -- it may
+            // keep the caller's G2/G3, and the move is judged as main did: review 63-lcnc63,
+            // K8, K12)
+            let plain = matches!(
+                self.linuxcnc_motion,
+                LinuxCncMotion::Known(Some(0 | 10 | 730 | 740 | 810..=890))
+            ) && !self.motion_unknown
+                && !self.linuxcnc_body_returns
+                && !self.linuxcnc_body_distance.ends;
+            self.linuxcnc_later_arcs(&label, sure, keeps, plain);
+        }
+        let state = &self.machine.state;
         // (a body whose last mode is not known but differs from the one before its sub as
         // read: a call of it leaves the mode not known, none of G0-G3 judged by it)
         match state.motion {
             Some(m @ 0..=3) if known => {
-                if m >= 2 && !self.linuxcnc_later.moves.is_empty() {
-                    self.linuxcnc_later_arcs(&label, m);
-                }
                 self.linuxcnc_sub_motion.insert(label, Some(m));
             }
             now if now != motion || state.cycle != cycle => {
@@ -4246,6 +4458,12 @@ impl Checker {
     /// plane.
     fn linuxcnc_plane_flow(&mut self, blocks: &mut Vec<PlaneBlock>, step: PlaneStep) {
         let now = self.linuxcnc_plane_now();
+        // (and the motion mode, the same way: lcnc63, a G2 in an `if` or `while` whose
+        // condition is not known, and a bare move after it)
+        // (the main program's alone: a definition's body, its conditions not evaluated, keeps
+        // the mode as read, review 63, F4: `o100 sub` / `o1 if [#1 GT 0]` / G2 ... / `Z0.5`)
+        let motion = (self.machine.state.motion, self.machine.state.cycle);
+        let follow = step.main;
         if step.leaves {
             // (a `break` or `continue` leaves its turn in this plane: one more way out of its
             // loop and of every block around the loop; none into the conditions inside the
@@ -4255,6 +4473,7 @@ impl Checker {
             for (i, block) in blocks.iter_mut().enumerate() {
                 if inner.is_none_or(|at| i <= at) {
                     block.ends.push(now);
+                    block.motion_ends.push(motion);
                 }
             }
             if let (Some(_), Some(block)) = (inner, blocks.last_mut()) {
@@ -4271,6 +4490,8 @@ impl Checker {
                         unknown: true,
                         ..now
                     },
+                    motion_entry: UNKNOWN_MOTION,
+                    motion_ends: Vec::new(),
                     ends: Vec::new(),
                     has_else: false,
                     taken: false,
@@ -4279,6 +4500,8 @@ impl Checker {
             }
             blocks.push(PlaneBlock {
                 entry: now,
+                motion_entry: motion,
+                motion_ends: Vec::new(),
                 ends: Vec::new(),
                 has_else: false,
                 taken: false,
@@ -4287,17 +4510,22 @@ impl Checker {
         } else if step.open < step.depth {
             let mut ran = step.ran;
             let mut after = now;
+            let mut motion_after = motion;
             while blocks.len() > step.open {
                 let Some(block) = blocks.pop() else { break };
                 let mut ends = block.ends;
+                let mut motion_ends = block.motion_ends;
                 // (after a branch that surely ran, rs274 skips to the `endif`: the ways
                 // through are that branch's alone, its end pushed where it ended)
                 if ran != Some(false) && !block.taken && !block.left {
                     ends.push(after);
+                    motion_ends.push(motion_after);
                 }
                 if !block.has_else && ran != Some(true) && !block.taken {
                     ends.push(block.entry);
+                    motion_ends.push(block.motion_entry);
                 }
+                motion_after = flow_motion_merged(&motion_ends, motion_after);
                 after = match ends.first() {
                     Some(&first) if ends.iter().all(|e| *e == first) => first,
                     _ => PlaneAt {
@@ -4311,6 +4539,9 @@ impl Checker {
             if after != now {
                 self.linuxcnc_plane_set(after);
             }
+            if follow && motion_after != motion {
+                self.linuxcnc_flow_motion(motion_after);
+            }
         } else if let Some(at) = step.switched {
             if at + 1 != blocks.len() {
                 // (a branch of a block not the innermost: the plane is not followed here)
@@ -4318,6 +4549,10 @@ impl Checker {
                 self.linuxcnc_plane_unknown = true;
                 if let Some(block) = blocks.last_mut() {
                     block.entry.unknown = true;
+                    block.motion_entry = UNKNOWN_MOTION;
+                }
+                if follow {
+                    self.linuxcnc_flow_motion(UNKNOWN_MOTION);
                 }
                 return;
             }
@@ -4326,6 +4561,7 @@ impl Checker {
             };
             if step.ran != Some(false) && !block.taken && !block.left {
                 block.ends.push(now);
+                block.motion_ends.push(motion);
             }
             block.left = false;
             block.has_else |= step.is_else;
@@ -4333,9 +4569,27 @@ impl Checker {
             // (after a branch that surely ran the others are skipped: the plane stays)
             if !block.taken {
                 let entry = block.entry;
+                let motion_entry = block.motion_entry;
                 self.linuxcnc_plane_set(entry);
+                if follow && motion_entry != motion {
+                    self.linuxcnc_flow_motion(motion_entry);
+                }
             }
         }
+    }
+
+    /// LinuxCNC: the motion mode and canned cycle after a way through a condition or loop
+    /// of the main program ([`Checker::linuxcnc_plane_flow`]): the one every way through
+    /// it leaves, else not known (no mode, as after a call: none of G0-G3 judged by it). A
+    /// G2 in an `if` whose condition is not known, or a `while` that may turn none, and a
+    /// bare move after it, runs in `rs274 -g` where the branch does not run (`o102 while
+    /// [#5220 GT 100]` / `G2 X1 Y0 I0.5 J0` / `o102 endwhile` / `Z0.5`; it was TG404).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_flow_motion(&mut self, (motion, cycle): FlowMotion) {
+        let state = &mut self.machine.state;
+        state.motion = motion;
+        state.cycle = cycle;
     }
 
     /// LinuxCNC: the main program's flow went to depth `open`, or switched to another branch
@@ -5663,6 +5917,9 @@ pub(super) struct PlaneStep {
     open: usize,
     switched: Option<usize>,
     is_else: bool,
+    /// Whether the o-word line is the main program's (the motion mode is followed there
+    /// only).
+    main: bool,
     ran: Option<bool>,
     taken: bool,
     leaves: bool,
@@ -5699,11 +5956,35 @@ impl PlaneAt {
 pub(super) struct PlaneBlock {
     entry: PlaneAt,
     ends: Vec<PlaneAt>,
+    /// The motion mode and canned cycle at its opening, and the ones its ways through it
+    /// read so far left, as for the plane ([`UNKNOWN_MOTION`]: not known).
+    motion_entry: FlowMotion,
+    motion_ends: Vec<FlowMotion>,
     has_else: bool,
     taken: bool,
     /// The branch in hand left its loop's turn (a `break` or `continue` of the loop around
     /// it): no way through it reaches the block's next branch or its close.
     left: bool,
+}
+
+/// LinuxCNC: the modal state's motion mode and canned cycle through the main program's
+/// conditions and loops ([`PlaneBlock`]).
+pub(super) type FlowMotion = (Option<i64>, Option<i64>);
+
+/// A motion mode not known ([`FlowMotion`]): none, as after a call.
+pub(super) const UNKNOWN_MOTION: FlowMotion = (None, None);
+
+/// LinuxCNC: the motion mode after a condition or loop whose ways through it leave `ends`
+/// (`now`: the one read last, in file order): the one they agree on; where one may leave G2
+/// or G3 and another not, not known (a bare move after it is an arc one way, a line or a
+/// cycle the other); elsewhere the one read last, as before.
+fn flow_motion_merged(ends: &[FlowMotion], now: FlowMotion) -> FlowMotion {
+    let arc = |e: &FlowMotion| matches!(e, (Some(2 | 3), None));
+    match ends.first() {
+        Some(&first) if ends.iter().all(|e| *e == first) => first,
+        Some(_) if ends.iter().any(arc) && !ends.iter().all(arc) => UNKNOWN_MOTION,
+        _ => now,
+    }
 }
 
 /// LinuxCNC: a condition or loop of the main program open at the line in hand
@@ -5941,6 +6222,8 @@ pub(super) struct M72Dropped {
     pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
+    /// The block's G90 (false) or G91 (true), read as written.
+    pub(super) distance: Option<bool>,
 }
 
 /// LinuxCNC: whether a line of a definition's body surely moves no axis and changes nothing
@@ -5988,6 +6271,10 @@ pub(super) fn still_line(b: &BlockView<'_>) -> bool {
     })
 }
 
+/// Among a finding's [`super::Finding::pending_on`]: said after a main program's call, surely
+/// run, of a label not read yet ([`LaterCalls::ends`]), held until the definition is read.
+pub(super) const PENDING_LATER: i64 = -2;
+
 /// LinuxCNC: a call line's line and the axes before it ([`LaterCalls::still`]).
 pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9]);
 
@@ -5998,10 +6285,11 @@ pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9
 pub(super) struct LaterCalls {
     /// The call whose mode is still in force, by label, and its line: no o-word line, call,
     /// motion code or possible M72 drop since.
-    pub(super) pending: Option<(Vec<u8>, usize)>,
+    /// The caller's G2 or G3 in force at it.
+    pub(super) pending: Option<(Vec<u8>, usize, i64)>,
     /// The first move without a motion code or arc word after such a call: the label, the
-    /// call's line, the move's line and column.
-    moves: Vec<(Vec<u8>, usize, usize, usize)>,
+    /// call's line, the move's line and column, the caller's G2 or G3.
+    pub(super) moves: Vec<(Vec<u8>, usize, usize, usize, i64)>,
     /// A call line of the main program whose call is of a definition read before it whose
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.
@@ -6016,6 +6304,18 @@ pub(super) struct LaterCalls {
     /// kept positions after later calls of the main program are not used (review 62b F2,
     /// F3).
     pub(super) unread: bool,
+    /// The main program's calls surely run of a label no definition was read for, by label,
+    /// and their lines: where the definition written after answers one and surely ends the
+    /// program, the findings of the lines after it are dropped at its `endsub`
+    /// ([`Checker::linuxcnc_later_ends`]).
+    pub(super) ends: Vec<(Vec<u8>, usize)>,
+    /// The open definition wrote a motion code (or a G code of a value not known, or a
+    /// call) before its last o-word line, and the line of its `sub`
+    /// ([`Checker::linuxcnc_later_arcs`]).
+    pub(super) body_moded: bool,
+    /// The line of the main program's first M2/M30 outside a definition (0: none yet).
+    pub(super) main_end: usize,
+    pub(super) sub_line: usize,
 }
 
 /// LinuxCNC: the modal state's motion mode, cycle and cycle words before the open

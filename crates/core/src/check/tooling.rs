@@ -932,9 +932,6 @@ impl Checker {
                 {
                     // (a move in a motion a call may have set: perhaps a cycle's)
                     self.linuxcnc_cycle_ran = Some(0);
-                    if self.linuxcnc_later.pending.is_some() {
-                        self.linuxcnc_later_move(b);
-                    }
                 }
                 return unsettles;
             }
@@ -1954,7 +1951,11 @@ impl Checker {
                 _ => {}
             }
         }
-        if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421)) {
+        // (a block whose M72 rs274 2.9.0 may drop runs none of its own G41/G42: review 59b
+        // F7, `G41.1 D0.1` / `M70` / `G93` / `M72 G42.1 D0.1` runs in `rs274 -g`)
+        if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421))
+            && self.linuxcnc_m72_dropped != Some(self.stats.blocks)
+        {
             // (convert_cutter_compensation_on takes CANON_PLANE_XY and XZ only: G19 and the
             // planes of U V W, the block's own plane code set first; review 53, F7)
             if (self.machine.state.plane == 19 || self.linuxcnc_uvw_plane)
@@ -4102,9 +4103,11 @@ mod tests {
                 "o<s> sub\nG1 X1\no<s> endsub\nG95 F0.1 S100 M3\nG38.2 Z-5",
                 &["8: Cannot probe with feed per rev mode"],
             ),
+            // (the rate is zero still after the definition, which runs nothing where it is
+            // read: rs274 -g refuses the zero rate first; lcnc63, review 62b F1)
             (
                 "o<s> sub\nG1 X1\no<s> endsub\nG93\nG81 X1 Y1 Z-1 R1 F10",
-                &["8: Cannot use inverse time feed with canned cycles"],
+                &["8: Cannot feed with zero feed rate"],
             ),
             (
                 "o<s> sub\nG1 X1\no<s> endsub\no<s> call\nG95 F0.1 S100 M3\nG38.2 Z-5",
