@@ -1722,30 +1722,6 @@ def test_an_arc_in_a_condition_that_may_not_run_leaves_the_mode_not_known(tmp_pa
     assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
 
 
-# A block whose M72 rs274 2.9.0 drops (the restore's block runs in its place): its own G90/G91
-# and G41/G42 never run (review 59b F7). HEAD is G90 at Z0. (the blocks after HEAD; the refused
-# line, or None where rs274 -g runs)
-M72_DROPPED_CODES = [
-    # the dropped G91: `Z1` is absolute, and the probe to Z2 has a way to go
-    ("M70\nS200\nM72 G91 G0 Z1\nZ1\nG90 G38.2 Z2", None),
-    # the dropped G42.1 under G41.1: not "Cannot turn cutter radius comp on when on"
-    ("G41.1 D0.1\nG1 X1\nM70\nG93\nM72 G42.1 D0.1\nG94 G1 X2 F10", None),
-    # with G91 in force after the restore's G90, X1 from X0 stays at X1: "too close"
-    ("M70\nS200\nM72 G91 G0 Z1\nG0 X1\nG38.2 X1", 7),
-]
-
-
-@pytest.mark.parametrize("body, line", M72_DROPPED_CODES)
-def test_a_dropped_m72_block_runs_none_of_its_distance_or_compensation_codes(
-        tmp_path, body, line):
-    text = program(body)
-    if line is None:
-        clean_on_both(tmp_path, text)
-        return
-    assert [(r, n) for r, n, _ in errors(text)] == [("TG412", line)], text
-    assert "Start point too close to probe point" in rs274_output(tmp_path, text)
-
-
 def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_path):
     # review 63-lcnc63 F3: the body's own G1 at F0 runs and is refused (its M2 ends the program
     # after it); only the main program's lines after the call are dropped

@@ -1189,7 +1189,10 @@ impl Checker {
             self.definition_open(b, statement.as_ref());
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
-            if was_open && self.open_definition.is_none() && !self.linuxcnc_later.ends.is_empty() {
+            if was_open
+                && self.open_definition.is_none()
+                && !self.linuxcnc_later.ends.is_empty()
+            {
                 self.linuxcnc_later_ends();
             }
             self.linuxcnc_called(b, statement.as_ref(), was_open);
@@ -3554,7 +3557,7 @@ impl Checker {
         let surely = restored.is_some();
         // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
         // G40-G42.1, read as written)
-        let (mut plane, mut compensation, mut distance) = (false, false, None);
+        let (mut plane, mut compensation) = (false, false);
         for w in b
             .words
             .iter()
@@ -3566,11 +3569,6 @@ impl Checker {
                 .map(|v| (v * 10.0).round() as i64);
             plane |= matches!(tenths, Some(170 | 171 | 180 | 181 | 190 | 191));
             compensation |= matches!(tenths, Some(400 | 410 | 411 | 420 | 421));
-            match tenths {
-                Some(900) => distance = Some(false),
-                Some(910) => distance = Some(true),
-                _ => {}
-            }
         }
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
@@ -3578,7 +3576,6 @@ impl Checker {
             restored,
             plane,
             compensation,
-            distance,
         });
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
@@ -3630,13 +3627,6 @@ impl Checker {
                 }
                 None => self.linuxcnc_compensation_unknown = true,
             }
-        }
-        // (nor its G90/G91: where the drop is sure, the distance mode the save took, which
-        // the restore writes; where it is only possible and the two differ, not known;
-        // review 59b F7: `M70` / `S200` / `M72 G91 G0 Z1` / `Z1` / `G90 G38.2 Z2` runs in
-        // `rs274 -g`, the Z1 in G90)
-        if let Some(g91) = dropped.distance.filter(|_| self.open_definition.is_none()) {
-            self.linuxcnc_m72_distance_back(g91, dropped.restored.is_some());
         }
         let M72Dropped {
             motion,
@@ -3703,27 +3693,6 @@ impl Checker {
                 self.linuxcnc_later.pending = None;
             }
         }
-    }
-
-    /// LinuxCNC: the distance mode after a block whose M72 may be dropped and that writes
-    /// G90 or G91 (`g91`), the drop sure or not ([`Checker::linuxcnc_m72_motion_back`]).
-    fn linuxcnc_m72_distance_back(&mut self, g91: bool, surely: bool) {
-        let now = if self.linuxcnc_distance_unsure {
-            Distance::Unsure
-        } else {
-            Distance::Known(self.machine.state.incremental)
-        };
-        let saved = match self.linuxcnc_saved {
-            Saved::Valid(saved) => saved,
-            _ => Distance::Unsure,
-        };
-        let after = match saved {
-            _ if surely => saved,
-            Distance::Known(was) if was == g91 => return,
-            _ => Distance::Unsure,
-        };
-        let depth = self.linuxcnc_distance_depth();
-        self.linuxcnc_main_write(now, after, depth);
     }
 
     /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
@@ -6222,8 +6191,6 @@ pub(super) struct M72Dropped {
     pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
-    /// The block's G90 (false) or G91 (true), read as written.
-    pub(super) distance: Option<bool>,
 }
 
 /// LinuxCNC: whether a line of a definition's body surely moves no axis and changes nothing

@@ -1951,11 +1951,7 @@ impl Checker {
                 _ => {}
             }
         }
-        // (a block whose M72 rs274 2.9.0 may drop runs none of its own G41/G42: review 59b
-        // F7, `G41.1 D0.1` / `M70` / `G93` / `M72 G42.1 D0.1` runs in `rs274 -g`)
-        if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421))
-            && self.linuxcnc_m72_dropped != Some(self.stats.blocks)
-        {
+        if codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421)) {
             // (convert_cutter_compensation_on takes CANON_PLANE_XY and XZ only: G19 and the
             // planes of U V W, the block's own plane code set first; review 53, F7)
             if (self.machine.state.plane == 19 || self.linuxcnc_uvw_plane)
