@@ -1189,10 +1189,7 @@ impl Checker {
             self.definition_open(b, statement.as_ref());
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
-            if was_open
-                && self.open_definition.is_none()
-                && !self.linuxcnc_later.ends.is_empty()
-            {
+            if was_open && self.open_definition.is_none() && !self.linuxcnc_later.ends.is_empty() {
                 self.linuxcnc_later_ends();
             }
             self.linuxcnc_called(b, statement.as_ref(), was_open);
