@@ -73,6 +73,14 @@ def profile(name: str):  # type: ignore[no-untyped-def]
 
 
 @pytest.fixture
+def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """A profile cache folder of the test's own (not made yet), as TAPEGATE_CACHE_DIR."""
+    folder = tmp_path / "cache" / "tapegate"
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(folder))
+    return folder
+
+
+@pytest.fixture
 def sample_program() -> str:
     from importlib import resources
 

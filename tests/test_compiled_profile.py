@@ -23,13 +23,6 @@ from formats.profile import builtin_names, load_profile
 ROOT = Path(__file__).resolve().parent.parent
 
 
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    folder = tmp_path / "cache" / "tapegate"
-    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(folder))
-    return folder
-
-
 def entries(folder: Path) -> list[Path]:
     return sorted(folder.glob(f"compiled-*{profile_cache.SUFFIX}")) if folder.exists() else []
 

@@ -36,6 +36,16 @@ def clean_on_both(tmp_path, text: str) -> None:
     assert "PROGRAM_END" in out, out
 
 
+def judged_as_rs274(tmp_path, text: str, line: int | None, rule: str, message: str) -> None:
+    """With no ``line``, clean on both; else the checker's one error, ``rule`` at ``line``, and
+    rs274 -g refuses the program with ``message``."""
+    if line is None:
+        clean_on_both(tmp_path, text)
+        return
+    assert [(r, n) for r, n, _ in errors(text)] == [(rule, line)], text
+    assert message in rs274_output(tmp_path, text)
+
+
 def refused_once(text: str, line: int) -> str:
     """The checker's one error, TG412 at ``line``: its message."""
     found = errors(text)
@@ -1411,12 +1421,8 @@ BODY_MOTION = [
 
 @pytest.mark.parametrize("body, line", BODY_MOTION)
 def test_a_definition_s_motion_mode_is_its_calls_not_the_lines_after_it(tmp_path, body, line):
-    text = program(body)
-    if line is None:
-        clean_on_both(tmp_path, text)
-        return
-    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
-    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+    judged_as_rs274(tmp_path, program(body), line, "TG404",
+                    "R i j k words all missing for arc")
 
 
 # A call of a label with no definition read yet: rs274 first looks for a file named after the
@@ -1523,12 +1529,8 @@ CALLER_ARC_LATER = [
 @pytest.mark.parametrize("body, line", CALLER_ARC_LATER)
 def test_the_caller_s_arc_is_not_the_mode_after_a_call_of_a_later_definition(
         tmp_path, body, line):
-    text = program(body)
-    if line is None:
-        clean_on_both(tmp_path, text)
-        return
-    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
-    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+    judged_as_rs274(tmp_path, program(body), line, "TG404",
+                    "R i j k words all missing for arc")
 
 
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
@@ -1654,12 +1656,8 @@ BODY_M72_ZERO = [
 
 @pytest.mark.parametrize("body, line", BODY_M72_ZERO)
 def test_an_m72_of_a_body_s_own_zero_save_leaves_a_zero_rate(tmp_path, body, line):
-    text = program(body)
-    if line is None:
-        clean_on_both(tmp_path, text)
-        return
-    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
-    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+    judged_as_rs274(tmp_path, program(body), line, "TG401",
+                    "Cannot do g1 with zero feed rate")
 
 
 # A definition read before an M70 or M72 of the main program: rs274 reads it without running
@@ -1677,12 +1675,8 @@ DEFINITION_KEEPS_RATE = [
 
 @pytest.mark.parametrize("body, line", DEFINITION_KEEPS_RATE)
 def test_a_definition_read_keeps_the_rate_an_m70_saves(tmp_path, body, line):
-    text = program(body)
-    if line is None:
-        clean_on_both(tmp_path, text)
-        return
-    assert [(r, n) for r, n, _ in errors(text)] == [("TG401", line)], text
-    assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+    judged_as_rs274(tmp_path, program(body), line, "TG401",
+                    "Cannot do g1 with zero feed rate")
 
 
 # A G2 in a condition or loop of the main program that may not run (its condition not known
@@ -1714,12 +1708,8 @@ FLOW_ARC = [
 
 @pytest.mark.parametrize("body, line", FLOW_ARC)
 def test_an_arc_in_a_condition_that_may_not_run_leaves_the_mode_not_known(tmp_path, body, line):
-    text = program(body)
-    if line is None:
-        clean_on_both(tmp_path, text)
-        return
-    assert [(r, n) for r, n, _ in errors(text)] == [("TG404", line)], text
-    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+    judged_as_rs274(tmp_path, program(body), line, "TG404",
+                    "R i j k words all missing for arc")
 
 
 def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_path):

@@ -16,13 +16,6 @@ from formats.machine import machine, machine_spec
 from formats.profile import builtin_names, load_profile, with_start_units
 
 
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    folder = tmp_path / "cache" / "tapegate"
-    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(folder))
-    return folder
-
-
 def spec_files(folder: Path) -> list[Path]:
     return sorted(folder.glob(f"machine-*{profile_cache.SUFFIX}")) if folder.exists() else []
 

@@ -21,13 +21,6 @@ from formats.profile import builtin_text, load_profile, neutral, profile_from_te
 ROOT = Path(__file__).resolve().parents[1]
 
 
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    folder = tmp_path / "cache" / "tapegate"
-    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(folder))
-    return folder
-
-
 def uncached(name: str):
     return profile_from_text(builtin_text(name), source="built-in", default_name=name)
 
