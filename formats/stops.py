@@ -76,7 +76,7 @@ def heed_stops() -> None:
 # a write there takes at once as much as the pipe has room for, or fails with EAGAIN -- it
 # never waits, so no signal can be lost in it -- and only then does the poll wait, on the pipe
 # and on the wakeup fd. Where no such description can be had (not a pipe, no /proc, the open
-# refused), the 4,096 bytes a poll, as above.
+# refused) or must not be (a pipe in packet mode), the 4,096 bytes a poll, as above.
 
 PIPE_BUF = 4096  # (select.PIPE_BUF on Linux; POSIX's least)
 _POLLIN, _POLLOUT = 0x001, 0x004  # (select.POLLIN, select.POLLOUT, without importing select)
@@ -195,13 +195,31 @@ def _fifo(fd: int) -> bool:
         return False
 
 
+def _flags(fd: int) -> int:
+    """The file status flags of ``fd`` (``F_GETFL``'s), read from ``/proc/self/fdinfo`` rather
+    than by importing ``fcntl`` on every start whose stdout is a pipe; 0 where not found."""
+    import os
+
+    info = os.open(f"/proc/self/fdinfo/{fd}", os.O_RDONLY | os.O_CLOEXEC)
+    try:
+        text = os.read(info, 512)
+    finally:
+        os.close(info)
+    for line in text.splitlines():
+        if line.startswith(b"flags:"):
+            return int(line[6:], 8)
+    return 0
+
+
 def _twin(fd: int) -> int:
     """A second open file description of the pipe ``fd`` (a FIFO or an anonymous pipe), for
     writing, non-blocking (``O_NONBLOCK`` set on it alone: ``fd``'s own, shared with other
     processes, is untouched) and closed on exec; -1 where it cannot be had: not a pipe, ``fd``
     not open for writing (a pipe's read end given as stdout: the twin, opened anew, would
     write into it), no ``/proc`` (not Linux), the open refused (a FIFO whose reader left:
-    ENXIO)."""
+    ENXIO), or a pipe in packet mode (``O_DIRECT``, ``pipe2``'s: a twin opened anew would not
+    have it, and its writes would run together into one stream; the polled writes of ``fd``
+    itself keep the packets)."""
     import os
     import stat
 
@@ -209,6 +227,8 @@ def _twin(fd: int) -> int:
         if not stat.S_ISFIFO(os.fstat(fd).st_mode):
             return -1
         os.write(fd, b"")  # (EBADF where the pipe is not open for writing: no twin by it)
+        if _flags(fd) & os.O_DIRECT:
+            return -1
         return os.open(f"/proc/self/fd/{fd}",
                        os.O_WRONLY | os.O_NONBLOCK | os.O_CLOEXEC | os.O_NOCTTY)
     except (OSError, AttributeError):  # (AttributeError: no O_NONBLOCK, not POSIX)

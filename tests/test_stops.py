@@ -326,6 +326,50 @@ def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
 
 
 @pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs Linux's /proc")
+@pytest.mark.parametrize("how", ["write_all", "guarded"])
+def test_a_pipe_in_packet_mode_keeps_its_packets(how: str) -> None:
+    """A pipe made in packet mode (``pipe2(O_DIRECT)``) gets no twin: a description opened
+    anew would write without ``O_DIRECT``, its writes running together, where a reader of the
+    packets gets one packet (at most 4,096 bytes) a read. Its own descriptor's polled writes
+    keep them: every read at most 4,096 bytes, every byte in order (review 63's N2)."""
+    import threading
+
+    from formats import stops
+
+    try:
+        reader, writer = os.pipe2(os.O_DIRECT)
+    except OSError as exc:  # (a kernel without packet-mode pipes: before Linux 3.4)
+        pytest.skip(f"no packet-mode pipe: {exc}")
+    assert stops._twin(writer) == -1
+    data = bytes(range(256)) * 1024  # 256 KiB, four times a pipe's room
+    reads: list[int] = []
+    got = bytearray()
+
+    def read() -> None:
+        while piece := os.read(reader, 1 << 16):
+            reads.append(len(piece))
+            got.extend(piece)
+            time.sleep(0.0005)  # (a slow reader: the pipe fills, the writes poll)
+
+    thread = threading.Thread(target=read)
+    thread.start()
+    try:
+        if how == "write_all":
+            assert stops.write_all(writer, [data[:1000], data[1000:]]) == len(data)
+        else:
+            with stops._Wakeup() as wakeup:
+                raw = stops._PolledWriter(writer, wakeup)
+                assert raw.write(data) == len(data)
+                raw.close()
+    finally:
+        os.close(writer)
+        thread.join(timeout=60)
+        os.close(reader)
+    assert bytes(got) == data
+    assert max(reads) <= stops.PIPE_BUF
+
+
+@pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs Linux's /proc")
 def test_a_guarded_stdout_pointed_elsewhere_writes_there_and_not_into_its_pipe() -> None:
     """A stopped command's stdout is made /dev/null (tapegate.launch._drop_pipes) so that the
     exit's flush never waits on the pipe: the twin, a description of the pipe, must not go on
