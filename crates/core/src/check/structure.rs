@@ -3554,7 +3554,7 @@ impl Checker {
         let surely = restored.is_some();
         // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
         // G40-G42.1, read as written)
-        let (mut plane, mut compensation) = (false, false);
+        let (mut plane, mut compensation, mut distance) = (false, false, None);
         for w in b
             .words
             .iter()
@@ -3566,6 +3566,11 @@ impl Checker {
                 .map(|v| (v * 10.0).round() as i64);
             plane |= matches!(tenths, Some(170 | 171 | 180 | 181 | 190 | 191));
             compensation |= matches!(tenths, Some(400 | 410 | 411 | 420 | 421));
+            match tenths {
+                Some(900) => distance = Some(false),
+                Some(910) => distance = Some(true),
+                _ => {}
+            }
         }
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
@@ -3573,6 +3578,8 @@ impl Checker {
             restored,
             plane,
             compensation,
+            distance,
+            double: self.linuxcnc_double,
         });
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
@@ -3624,6 +3631,21 @@ impl Checker {
                 }
                 None => self.linuxcnc_compensation_unknown = true,
             }
+        }
+        // (nor its G90/G91, which runs after the M72 (the G-code overview's "G-code Order of
+        // Execution"): where the drop is sure, the distance mode the save took, which the
+        // restore writes; where it is only possible and the two differ, not known; review 59b
+        // F7: `M70` / `S200` / `M72 G91 G0 X1` / `G0 X1` / `G38.2 X1` is "Start point too
+        // close to probe point" in `rs274 -g`, the X1s absolute)
+        if let Some(g91) = dropped.distance.filter(|_| self.open_definition.is_none()) {
+            self.linuxcnc_m72_distance_back(g91, dropped.restored.is_some());
+        }
+        // (and the doubles rs274 holds are the ones before the block where its axis words
+        // surely do not run: the block's G91 words were added to them by the rules, review
+        // 59b F7: `M70` / `S200` / `M72 G91 G0 Z1` / `Z1` / `G90 G38.2 Z2` runs, the probe
+        // from Z1; an axis whose point may have changed is not known, its double the nearest)
+        if dropped.restored.is_some() {
+            self.linuxcnc_double = dropped.double;
         }
         let M72Dropped {
             motion,
@@ -3690,6 +3712,30 @@ impl Checker {
                 self.linuxcnc_later.pending = None;
             }
         }
+    }
+
+    /// LinuxCNC: the distance mode after a block whose M72 may be dropped and that writes
+    /// G90 or G91 (`g91`, which [`Checker::linuxcnc_distance_modal`] applied after the
+    /// restore), the drop sure or not ([`Checker::linuxcnc_m72_motion_back`]): where sure,
+    /// the mode the save took; where only possible, that mode where it is the block's, else
+    /// not known.
+    fn linuxcnc_m72_distance_back(&mut self, g91: bool, surely: bool) {
+        let now = if self.linuxcnc_distance_unsure {
+            Distance::Unsure
+        } else {
+            Distance::Known(self.machine.state.incremental)
+        };
+        let saved = match self.linuxcnc_saved {
+            Saved::Valid(saved) => saved,
+            _ => Distance::Unsure,
+        };
+        let after = match saved {
+            _ if surely => saved,
+            Distance::Known(was) if was == g91 => return,
+            _ => Distance::Unsure,
+        };
+        let depth = self.linuxcnc_distance_depth();
+        self.linuxcnc_main_write(now, after, depth);
     }
 
     /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
@@ -6188,6 +6234,10 @@ pub(super) struct M72Dropped {
     pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
+    /// The block's G90 (false) or G91 (true), read as written.
+    pub(super) distance: Option<bool>,
+    /// The doubles rs274 holds for X Y Z before the block (`Checker::linuxcnc_double`).
+    pub(super) double: [super::tooling::Double; 3],
 }
 
 /// LinuxCNC: whether a line of a definition's body surely moves no axis and changes nothing
