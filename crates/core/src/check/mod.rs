@@ -2994,6 +2994,7 @@ impl Checker {
                 words: state.cycle_words,
                 bottom: self.linuxcnc_cycle_bottom,
                 r: self.linuxcnc_cycle_r,
+                units: (state.units, state.feed_units),
             });
         }
         self.machine.apply_taken(&self.values, taken);

@@ -3230,6 +3230,7 @@ impl Checker {
         let mut comp_set = false;
         let mut spindle_set = false;
         let mut tool_change = false;
+        let mut units_set = false;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -3248,6 +3249,7 @@ impl Checker {
                 (b'G', Some(40.0 | 41.0 | 41.1 | 42.0 | 42.1)) => comp_set = true,
                 (b'M', Some(3.0 | 4.0 | 5.0)) => spindle_set = true,
                 (b'M', Some(6.0)) => tool_change = true,
+                (b'G', Some(20.0 | 21.0)) => units_set = true,
                 _ => {}
             }
             still &= !matches!(w.letter, b'F' | b'S');
@@ -3329,12 +3331,22 @@ impl Checker {
         };
         let compensation = (!self.linuxcnc_compensation_unknown)
             .then_some((before.compensation, self.linuxcnc_dynamic_compensation));
+        // the units where the M code runs: before the block's G20/G21, which runs after it
+        // (an M72's kept with the cycle before the block's codes applied)
+        let units = if self.units_unknown {
+            None
+        } else if m7 == 72 {
+            self.linuxcnc_m72_cycle.map(|c| c.units)
+        } else {
+            (!units_set).then_some((state.units, state.feed_units))
+        };
         let now = FeedSaved {
             mode: state.feed_mode,
             rate,
             speed,
             spindle,
             compensation,
+            units,
             quiet: !modal,
             still: !modal && still,
         };
@@ -3398,6 +3410,11 @@ impl Checker {
                     let restored = (dropped == Some(true))
                         .then(|| (self.linuxcnc_plane_saved, kept.and_then(|s| s.compensation)));
                     self.linuxcnc_m72_motion_dropped(b, before, restored);
+                }
+                if dropped == Some(true) {
+                    if let (Some(to), Some(from)) = (saved.and_then(|s| s.units), now.units) {
+                        self.linuxcnc_m72_units(to, from);
+                    }
                 }
                 // (a G93 move of the block, where it may run: its length times F)
                 if saved.is_some()
@@ -3714,6 +3731,35 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the units after an M72 whose restore surely runs a block of its own, from
+    /// the units `from` in force where it runs (before its block's G20/G21) to the ones the
+    /// save took (`to`): rs274 2.9.0 runs a G20/G21 block of the saved units first where
+    /// they differ (interp_convert.cc `restore_settings`), and the M72 block's own G20/G21,
+    /// which runs after the M72, is dropped with the rest of it (review 59b F7: `M70` /
+    /// `S200` / `M72 G20` / `G0 X-500` moves to X-500 mm in `rs274 -g`; `M70` / `G20` /
+    /// `M72` / `G0 X-500` too). Where the units change, the point rs274 holds is converted
+    /// (the modal state's G20/G21), not known exactly.
+    fn linuxcnc_m72_units(
+        &mut self,
+        to: (crate::modal::Units, crate::modal::Units),
+        from: (crate::modal::Units, crate::modal::Units),
+    ) {
+        // (the block's X Y Z are back at its start, in the units before it)
+        let state = &mut self.machine.state;
+        (state.units, state.feed_units) = from;
+        if to != from {
+            let code = if to.0 == crate::modal::Units::Inch {
+                20
+            } else {
+                21
+            };
+            self.machine.codes(&[code]);
+            (self.machine.state.units, self.machine.state.feed_units) = to;
+            self.linuxcnc_point_unsure |=
+                crate::modal::bit(b'X') | crate::modal::bit(b'Y') | crate::modal::bit(b'Z');
+        }
+    }
+
     /// LinuxCNC: the distance mode after a block whose M72 may be dropped and that writes
     /// G90 or G91 (`g91`, which [`Checker::linuxcnc_distance_modal`] applied after the
     /// restore), the drop sure or not ([`Checker::linuxcnc_m72_motion_back`]): where sure,
@@ -3746,7 +3792,10 @@ impl Checker {
         use super::tooling::LinuxCncFeed;
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
         // (the restore surely runs a block of its own: the M72's motion does not run)
+        // (or the units: the restore runs a G20/G21 block of its own first, interp_convert.cc
+        // `restore_settings`)
         let surely = saved.mode != now.mode
+            || matches!((saved.units, now.units), (Some(s), Some(n)) if s != n)
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
         let none = saved.still && now.still
@@ -6360,6 +6409,8 @@ pub(super) struct M72Cycle {
     pub(super) bottom: Option<Dec>,
     /// G73 and G74's R (`linuxcnc_cycle_r`).
     pub(super) r: Option<Dec>,
+    /// The units and feed units before the block's G20/G21.
+    pub(super) units: (crate::modal::Units, crate::modal::Units),
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
@@ -6375,6 +6426,9 @@ pub(super) struct FeedSaved {
     /// ([`Checker::linuxcnc_spindle_restored`]).
     spindle: Option<i64>,
     compensation: Option<(i64, bool)>,
+    /// The units and feed units (G20/G21) the save took, or where the M72 runs (before its
+    /// block's own G20/G21), None where not known.
+    units: Option<(crate::modal::Units, crate::modal::Units)>,
     /// No G or M code since the save (or in the save's block) that may change another
     /// modal group the restore writes: where the feed mode, rate and speed are the saved
     /// ones, the restore writes nothing and the M72 block's motion runs.

@@ -1897,8 +1897,8 @@ impl Checker {
             for &m in ms {
                 let what = match m {
                     6 => "Cannot change tools with cutter radius compensation on",
-                    48 => "Cannot enable overrides with cutter radius compensation on",
                     48..=53 if dropped => continue,
+                    48 => "Cannot enable overrides with cutter radius compensation on",
                     49 => "Cannot disable overrides with cutter radius compensation on",
                     50..=53 if words.value(b'P').is_some_and(|p| p.is_zero()) => {
                         "Cannot disable overrides with cutter radius compensation on"
