@@ -3793,9 +3793,12 @@ impl Checker {
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
         // (the restore surely runs a block of its own: the M72's motion does not run)
         // (or the units: the restore runs a G20/G21 block of its own first, interp_convert.cc
-        // `restore_settings`)
+        // `restore_settings`; or the spindle's direction or the cutter compensation, which
+        // `gen_m_codes` and `gen_settings` write where they differ)
         let surely = saved.mode != now.mode
             || matches!((saved.units, now.units), (Some(s), Some(n)) if s != n)
+            || matches!((saved.spindle, now.spindle), (Some(s), Some(n)) if s != n)
+            || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if s != n)
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
         let none = saved.still && now.still
