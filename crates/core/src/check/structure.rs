@@ -3744,8 +3744,17 @@ impl Checker {
         to: (crate::modal::Units, crate::modal::Units),
         from: (crate::modal::Units, crate::modal::Units),
     ) {
-        // (the block's X Y Z are back at its start, in the units before it)
+        // (the block's X Y Z are back at its start, in the units before it; U V W, which its
+        // own G20/G21 converted, are not known)
         let state = &mut self.machine.state;
+        if state.units != from.0 {
+            for &axis in b"UVW" {
+                if let Some(i) = crate::modal::axis_index(axis) {
+                    state.position[i] = None;
+                    state.unknown |= crate::modal::bit(axis);
+                }
+            }
+        }
         (state.units, state.feed_units) = from;
         if to != from {
             let code = if to.0 == crate::modal::Units::Inch {
