@@ -1761,6 +1761,17 @@ M72_DROPPED_BLOCK = [
     ("S1000 M3\nM70\nM5\nM72 G0 X1\nG38.2 X0", 7, TOO_CLOSE),
     ("S1000 M3\nM70\nM5\nM72 G91 G0 X1\nG0 X1\nG38.2 X1", 8, TOO_CLOSE),
     ("G41.1 D0.1\nG1 X1\nM70\nG40\nM72 G0 X2\nG40 G38.2 X1", 8, TOO_CLOSE),
+    # ... or the distance mode or the plane (`M70` / `G18` / `M72 G91 G0 X1`: the restore's G17)
+    ("M70\nG91\nM72 G0 X1\nG90 G38.2 X0", 6, TOO_CLOSE),
+    ("M70\nG91\nM72 G90 G0 X1\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nG18\nM72 G91 G0 X1\nG17\nG0 X1\nG38.2 X1", 8, TOO_CLOSE),
+    # its arc is never converted: not "Current point same as end point of arc", "R i j k
+    # words all missing" or "Mixed radius ijk format"; nothing differs, it runs and is
+    ("M70\nS200\nM72 G2 X1 Y0 R2", None, ""),
+    ("M70\nS200\nM72 G2 X1 Y0", None, ""),
+    ("M70\nS200\nM72 G2 X1 Y0 R1 I1", None, ""),
+    ("M70\nG18\nM72 G2 X1 Z0 R2", None, ""),
+    ("M70\nM72 G2 X0 Y0 R2", 4, "Current point same as end point of arc"),
     # a G4 beside it, dropped with the G91
     ("M70\nS200\nM72 G91 G4 P0.1\nX1\nG38.2 X1", 7, TOO_CLOSE),
     # nothing saved: the M72 itself is refused, before any of its block runs

@@ -3113,6 +3113,21 @@ impl Checker {
             (step.m7 == Some(72) && step.g53).then_some(mode == Distance::Known(true));
         let flow = depth > 0;
         let before = mode;
+        // (whether the M72's restore surely writes the distance mode or the plane, both known
+        // where it runs, before the block's own G90/G91 and plane code: a sure drop of its
+        // block, interp_convert.cc `gen_settings`)
+        if step.m7 == Some(72) {
+            let plane_now = self.linuxcnc_plane_now();
+            let plane_saved = self.linuxcnc_plane_saved;
+            self.linuxcnc_m72_differs = matches!(
+                (self.linuxcnc_saved, before),
+                (Saved::Valid(Distance::Known(s)), Distance::Known(n)) if s != n
+            ) || matches!(self.linuxcnc_saved, Saved::Valid(_))
+                && !step.plane
+                && !plane_now.unknown
+                && !plane_saved.unknown
+                && (plane_now.plane, plane_now.uvw) != (plane_saved.plane, plane_saved.uvw);
+        }
         self.linuxcnc_saved_plane(&step, flow);
         match step.m7 {
             Some(70 | 73) => self.linuxcnc_saved.set(Saved::Valid(mode), flow),
@@ -3800,14 +3815,17 @@ impl Checker {
     fn linuxcnc_feed_restored(&mut self, saved: FeedSaved, now: FeedSaved) -> Option<bool> {
         use super::tooling::LinuxCncFeed;
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
+        let differs_else = std::mem::take(&mut self.linuxcnc_m72_differs);
         // (the restore surely runs a block of its own: the M72's motion does not run)
         // (or the units: the restore runs a G20/G21 block of its own first, interp_convert.cc
         // `restore_settings`; or the spindle's direction or the cutter compensation, which
-        // `gen_m_codes` and `gen_settings` write where they differ)
+        // `gen_m_codes` and `gen_settings` write where they differ; or the distance mode or
+        // the plane, `linuxcnc_m72_differs`)
         let surely = saved.mode != now.mode
             || matches!((saved.units, now.units), (Some(s), Some(n)) if s != n)
             || matches!((saved.spindle, now.spindle), (Some(s), Some(n)) if s != n)
             || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if s != n)
+            || differs_else
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
         let none = saved.still && now.still
