@@ -1748,6 +1748,12 @@ M72_DROPPED_BLOCK = [
     ("G41.1 D0.1\nG1 X1\nM70\nS200\nM72 G54\nG1 X2", None, ""),
     ("G41.1 D0.1\nG1 X1\nM70\nS200\nM72 M48\nG1 X2", None, ""),
     ("M70\nS200\nM72 G19 G41.1 D0.1\nG1 X1", None, ""),
+    # a drop only possible (an M8 and an M9 between, the restore writing nothing): judged,
+    # as rs274 refuses them (review 75-lcnc75a F1)
+    ("G41.1 D0.1\nM70\nM8\nM9\nM72 G42.1 D0.1\nG1 X1", 7,
+     "Cannot turn cutter radius comp on when on"),
+    ("G41.1 D0.1\nM70\nM8\nM9\nM72 M48\nG1 X1", 7,
+     "Cannot enable overrides with cutter radius compensation on"),
     # nothing differs: the block's G42.1 runs under G41.1 (D10)
     ("G41.1 D0.1\nM70\nM72 G42.1 D0.1\nG1 X1", 5, "Cannot turn cutter radius comp on when on"),
     # the dropped G40: the compensation stays on, as saved
