@@ -1718,3 +1718,100 @@ def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_pa
     text = "G21 G17 G90 F100\nG0 X0 Y0 Z0\no300 call\nM2\no300 sub\nG1 X1 F0\nM2\no300 endsub\n"
     assert [(r, n) for r, n, _ in errors(text)] == [("TG401", 6)], text
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A block whose M72 rs274 2.9.0 drops: where the save differs from the state in force (the feed
+# mode, rate, speed, units, spindle or compensation: surely; another modal group: perhaps), the
+# restore runs a block of its own through `execute`, which is read into the block rs274 runs
+# (interp_convert.cc `restore_settings`), so nothing of the M72's block after the M72 in the
+# order of execution runs: its G20/G21, G40-G42, G90/G91, other G codes, M48-M53 and its motion
+# (review 59b F7). HEAD is G90 G21 at X0 Y0 Z0. (the blocks after HEAD, the refused line or
+# None where rs274 -g runs, rs274's message)
+TOO_CLOSE = "Start point too close to probe point"
+M72_DROPPED_BLOCK = [
+    # the dropped G91 G0 Z1: Z stays at 0, the Z1 after it is absolute, the probe has its way
+    # (review 63-lcnc63 D1; D13 the same with the save's G91 restored)
+    ("M70\nS200\nM72 G91 G0 Z1\nZ1\nG90 G38.2 Z2", None, TOO_CLOSE),
+    ("G91\nM70\nG90\nS200\nM72 G91 G0 X1\nX1\nG90 G38.2 X2", None, TOO_CLOSE),
+    # ... and where it has none (D19, D6, D14: G90 restored, X1 then X1 absolute)
+    ("M70\nS200\nM72 G91 G0 Z1\nG38.2 Z0", 6, TOO_CLOSE),
+    ("G91\nM70\nG90\nS200\nM72 G91 G0 X1\nX1\nG90 G38.2 X1", 9, TOO_CLOSE),
+    ("M70\nS200\nM72 G91 G0 X1\nG0 X1\nG38.2 X1", 7, TOO_CLOSE),
+    ("M70\nS200\nM72 G91 G1 X1\nG91 X0\nG90 G38.2 X0", 7, TOO_CLOSE),
+    # nothing differs: the block runs, its G91 and its move (D11's shape)
+    ("M70\nM72 G91 G0 X1\nG90 G38.2 X0", None, TOO_CLOSE),
+    ("M70\nM72 G91 G0 Z1\nZ1\nG90 G38.2 Z2", 6, TOO_CLOSE),
+    # the dropped G42.1 under G41.1 is not "Cannot turn cutter radius comp on when on" (D9,
+    # D18), nor a G54 or an M48 "with cutter radius compensation on"
+    ("G41.1 D0.1\nG1 X1\nM70\nG93\nM72 G42.1 D0.1\nG94 G1 X2 F10", None, ""),
+    ("G41.1 D0.1\nG1 X1\nM70\nG93\nM72 G42.1 D0.1\nG40\nG94 G81 X2 Z-1 R1 F10", None, ""),
+    ("G41.1 D0.1\nG1 X1\nM70\nS200\nM72 G54\nG1 X2", None, ""),
+    ("G41.1 D0.1\nG1 X1\nM70\nS200\nM72 M48\nG1 X2", None, ""),
+    ("M70\nS200\nM72 G19 G41.1 D0.1\nG1 X1", None, ""),
+    # a drop only possible (an M8 and an M9 between, the restore writing nothing): judged,
+    # as rs274 refuses them (review 75-lcnc75a F1)
+    ("G41.1 D0.1\nM70\nM8\nM9\nM72 G42.1 D0.1\nG1 X1", 7,
+     "Cannot turn cutter radius comp on when on"),
+    ("G41.1 D0.1\nM70\nM8\nM9\nM72 M48\nG1 X1", 7,
+     "Cannot enable overrides with cutter radius compensation on"),
+    # nothing differs: the block's G42.1 runs under G41.1 (D10)
+    ("G41.1 D0.1\nM70\nM72 G42.1 D0.1\nG1 X1", 5, "Cannot turn cutter radius comp on when on"),
+    # the dropped G40: the compensation stays on, as saved
+    ("G41.1 D0.1\nG1 X1\nM70\nS200\nM72 G40\nG81 X2 Z-1 R1", 8,
+     "Cannot use canned cycles with cutter compensation on"),
+    # units: the restore's G20/G21 runs first, a sure drop; the block's own is dropped
+    ("M70\nG20\nM72 G0 X1\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nG20\nM72 G21 G0 X1\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nS200\nM72 G20 G0 X1\nG38.2 X1", None, TOO_CLOSE),
+    # the spindle or the compensation the save took differs: a sure drop, X stays at 0
+    ("S1000 M3\nM70\nM5\nM72 G0 X1\nG38.2 X0", 7, TOO_CLOSE),
+    ("S1000 M3\nM70\nM5\nM72 G91 G0 X1\nG0 X1\nG38.2 X1", 8, TOO_CLOSE),
+    ("G41.1 D0.1\nG1 X1\nM70\nG40\nM72 G0 X2\nG40 G38.2 X1", 8, TOO_CLOSE),
+    # ... or the distance mode or the plane (`M70` / `G18` / `M72 G91 G0 X1`: the restore's G17)
+    ("M70\nG91\nM72 G0 X1\nG90 G38.2 X0", 6, TOO_CLOSE),
+    ("M70\nG91\nM72 G90 G0 X1\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nG18\nM72 G91 G0 X1\nG17\nG0 X1\nG38.2 X1", 8, TOO_CLOSE),
+    # its arc is never converted: not "Current point same as end point of arc", "R i j k
+    # words all missing" or "Mixed radius ijk format"; nothing differs, it runs and is
+    ("M70\nS200\nM72 G2 X1 Y0 R2", None, ""),
+    ("M70\nS200\nM72 G2 X1 Y0", None, ""),
+    ("M70\nS200\nM72 G2 X1 Y0 R1 I1", None, ""),
+    ("M70\nG18\nM72 G2 X1 Z0 R2", None, ""),
+    ("M70\nM72 G2 X0 Y0 R2", 4, "Current point same as end point of arc"),
+    # a G4 beside it, dropped with the G91
+    ("M70\nS200\nM72 G91 G4 P0.1\nX1\nG38.2 X1", 7, TOO_CLOSE),
+    # nothing saved: the M72 itself is refused, before any of its block runs
+    ("M72 G91 G0 X1\nG0 X1\nG38.2 X1", 3,
+     "Cannot restore context from invalid stack frame - missing M70/M73?"),
+    # inside a body (its M73 restored at the endsub; the body's own save is not followed,
+    # its M72 block's G91 not known after it, nothing judged by it)
+    ("o100 sub\nM73\nS200\nM72 G91 G0 X1\no100 endsub\no100 call\nG0 X1\nG38.2 X1", 10,
+     TOO_CLOSE),
+]
+
+
+@pytest.mark.parametrize("body, line, message", M72_DROPPED_BLOCK)
+def test_a_dropped_m72_block_runs_nothing_after_its_m72(tmp_path, body, line, message):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", message)
+
+
+def test_an_m72_restores_the_units_its_save_took(tmp_path):
+    # `M70` / `G20` / `M72`: the restore's G21 runs first (rs274 moves to X-500 mm); a dropped
+    # block's own G20 never runs; a save in inch restored from mm reads X-500 in inch, 12.7 m
+    # beyond the X travel
+    lc = tmp_path / "lc.toml"
+    lc.write_text('name = "lc"\nbase = "linuxcnc"\n[limits]\nX = [-762, 762]\n'
+                  'Y = [-406, 406]\nZ = [-508, 10]\n')
+    profile = load_profile(str(lc))
+
+    def found(body: str) -> list[tuple[str, int]]:
+        return [(f.rule, f.line) for f in check_text(program(body), profile)
+                if f.severity == "error"]
+
+    assert found("M70\nG20\nM72\nG0 X-500") == []
+    assert found("M70\nS200\nM72 G20\nG0 X-500") == []
+    assert found("G20\nM70\nG21\nM72\nG0 X-500") == [("TG601", 7)]
+    # without the M72, the G20 holds
+    assert found("G20\nG0 X-500") == [("TG601", 4)]
+    for body in ("M70\nG20\nM72\nG0 X-500", "M70\nS200\nM72 G20\nG0 X-500"):
+        assert "PROGRAM_END" in rs274_output(tmp_path, program(body))

@@ -1234,6 +1234,10 @@ pub struct Checker {
     /// which rs274 2.9.0 runs in place of the M72's: its motion is not judged
     /// ([`Checker::linuxcnc_feed_restore`]).
     linuxcnc_m72_dropped: Option<usize>,
+    /// LinuxCNC: the M72 of the block in hand surely finds another distance mode or plane in
+    /// force than the save took (`Checker::linuxcnc_distance_modal`): its restore surely
+    /// writes a block of its own.
+    linuxcnc_m72_differs: bool,
     /// LinuxCNC: a block whose M72 may be dropped (`linuxcnc_m72_dropped`), with the motion
     /// mode before it: the block's own motion, plane and compensation codes do not take effect
     /// where rs274 drops it (`Checker::linuxcnc_m72_motion_back`).
@@ -1841,6 +1845,7 @@ impl Checker {
             linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
+            linuxcnc_m72_differs: false,
             linuxcnc_m72_motion: None,
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
@@ -2994,6 +2999,7 @@ impl Checker {
                 words: state.cycle_words,
                 bottom: self.linuxcnc_cycle_bottom,
                 r: self.linuxcnc_cycle_r,
+                units: (state.units, state.feed_units),
             });
         }
         self.machine.apply_taken(&self.values, taken);

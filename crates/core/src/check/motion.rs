@@ -749,6 +749,16 @@ impl Checker {
         let words = b.words;
         let (first, second, third) = plane_axes(self.machine.state.plane);
         let centres = [centre_of(first), centre_of(second)];
+        // (nor the arc of a block whose M72 rs274 2.9.0 surely drops: the restore's block
+        // takes its place, convert_arc never sees it; `M70` / `S200` / `M72 G2 X1 Y0 R2` runs
+        // in `rs274 -g`; review 59b F7)
+        if self.linuxcnc_m72_dropped == Some(self.stats.blocks)
+            && self
+                .linuxcnc_m72_motion
+                .is_some_and(|d| d.restored.is_some())
+        {
+            return;
+        }
         let v = &self.values;
         // rs274 draws no arc in G17.1-G19.1: TG412 refuses it first (convert_arc; the
         // plane's axes here are not the arc's)

@@ -3113,6 +3113,21 @@ impl Checker {
             (step.m7 == Some(72) && step.g53).then_some(mode == Distance::Known(true));
         let flow = depth > 0;
         let before = mode;
+        // (whether the M72's restore surely writes the distance mode or the plane, both known
+        // where it runs, before the block's own G90/G91 and plane code: a sure drop of its
+        // block, interp_convert.cc `gen_settings`)
+        if step.m7 == Some(72) {
+            let plane_now = self.linuxcnc_plane_now();
+            let plane_saved = self.linuxcnc_plane_saved;
+            self.linuxcnc_m72_differs = matches!(
+                (self.linuxcnc_saved, before),
+                (Saved::Valid(Distance::Known(s)), Distance::Known(n)) if s != n
+            ) || matches!(self.linuxcnc_saved, Saved::Valid(_))
+                && !step.plane
+                && !plane_now.unknown
+                && !plane_saved.unknown
+                && (plane_now.plane, plane_now.uvw) != (plane_saved.plane, plane_saved.uvw);
+        }
         self.linuxcnc_saved_plane(&step, flow);
         match step.m7 {
             Some(70 | 73) => self.linuxcnc_saved.set(Saved::Valid(mode), flow),
@@ -3230,6 +3245,7 @@ impl Checker {
         let mut comp_set = false;
         let mut spindle_set = false;
         let mut tool_change = false;
+        let mut units_set = false;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -3248,6 +3264,7 @@ impl Checker {
                 (b'G', Some(40.0 | 41.0 | 41.1 | 42.0 | 42.1)) => comp_set = true,
                 (b'M', Some(3.0 | 4.0 | 5.0)) => spindle_set = true,
                 (b'M', Some(6.0)) => tool_change = true,
+                (b'G', Some(20.0 | 21.0)) => units_set = true,
                 _ => {}
             }
             still &= !matches!(w.letter, b'F' | b'S');
@@ -3329,12 +3346,22 @@ impl Checker {
         };
         let compensation = (!self.linuxcnc_compensation_unknown)
             .then_some((before.compensation, self.linuxcnc_dynamic_compensation));
+        // the units where the M code runs: before the block's G20/G21, which runs after it
+        // (an M72's kept with the cycle before the block's codes applied)
+        let units = if self.units_unknown {
+            None
+        } else if m7 == 72 {
+            self.linuxcnc_m72_cycle.map(|c| c.units)
+        } else {
+            (!units_set).then_some((state.units, state.feed_units))
+        };
         let now = FeedSaved {
             mode: state.feed_mode,
             rate,
             speed,
             spindle,
             compensation,
+            units,
             quiet: !modal,
             still: !modal && still,
         };
@@ -3398,6 +3425,11 @@ impl Checker {
                     let restored = (dropped == Some(true))
                         .then(|| (self.linuxcnc_plane_saved, kept.and_then(|s| s.compensation)));
                     self.linuxcnc_m72_motion_dropped(b, before, restored);
+                }
+                if dropped == Some(true) {
+                    if let (Some(to), Some(from)) = (saved.and_then(|s| s.units), now.units) {
+                        self.linuxcnc_m72_units(to, from);
+                    }
                 }
                 // (a G93 move of the block, where it may run: its length times F)
                 if saved.is_some()
@@ -3554,7 +3586,7 @@ impl Checker {
         let surely = restored.is_some();
         // (and whether the block writes a plane or a cutter compensation code: G17-G19.1,
         // G40-G42.1, read as written)
-        let (mut plane, mut compensation) = (false, false);
+        let (mut plane, mut compensation, mut distance) = (false, false, None);
         for w in b
             .words
             .iter()
@@ -3566,6 +3598,11 @@ impl Checker {
                 .map(|v| (v * 10.0).round() as i64);
             plane |= matches!(tenths, Some(170 | 171 | 180 | 181 | 190 | 191));
             compensation |= matches!(tenths, Some(400 | 410 | 411 | 420 | 421));
+            match tenths {
+                Some(900) => distance = Some(false),
+                Some(910) => distance = Some(true),
+                _ => {}
+            }
         }
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
@@ -3573,6 +3610,8 @@ impl Checker {
             restored,
             plane,
             compensation,
+            distance,
+            double: self.linuxcnc_double,
         });
         let state = &mut self.machine.state;
         for (i, &axis) in crate::modal::AXES.iter().enumerate() {
@@ -3624,6 +3663,21 @@ impl Checker {
                 }
                 None => self.linuxcnc_compensation_unknown = true,
             }
+        }
+        // (nor its G90/G91, which runs after the M72 (the G-code overview's "G-code Order of
+        // Execution"): where the drop is sure, the distance mode the save took, which the
+        // restore writes; where it is only possible and the two differ, not known; review 59b
+        // F7: `M70` / `S200` / `M72 G91 G0 X1` / `G0 X1` / `G38.2 X1` is "Start point too
+        // close to probe point" in `rs274 -g`, the X1s absolute)
+        if let Some(g91) = dropped.distance.filter(|_| self.open_definition.is_none()) {
+            self.linuxcnc_m72_distance_back(g91, dropped.restored.is_some());
+        }
+        // (and the doubles rs274 holds are the ones before the block where its axis words
+        // surely do not run: the block's G91 words were added to them by the rules, review
+        // 59b F7: `M70` / `S200` / `M72 G91 G0 Z1` / `Z1` / `G90 G38.2 Z2` runs, the probe
+        // from Z1; an axis whose point may have changed is not known, its double the nearest)
+        if dropped.restored.is_some() {
+            self.linuxcnc_double = dropped.double;
         }
         let M72Dropped {
             motion,
@@ -3692,6 +3746,68 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the units after an M72 whose restore surely runs a block of its own, from
+    /// the units `from` in force where it runs (before its block's G20/G21) to the ones the
+    /// save took (`to`): rs274 2.9.0 runs a G20/G21 block of the saved units first where
+    /// they differ (interp_convert.cc `restore_settings`), and the M72 block's own G20/G21,
+    /// which runs after the M72, is dropped with the rest of it (review 59b F7: `M70` /
+    /// `S200` / `M72 G20` / `G0 X-500` moves to X-500 mm in `rs274 -g`; `M70` / `G20` /
+    /// `M72` / `G0 X-500` too). Where the units change, the point rs274 holds is converted
+    /// (the modal state's G20/G21), not known exactly.
+    fn linuxcnc_m72_units(
+        &mut self,
+        to: (crate::modal::Units, crate::modal::Units),
+        from: (crate::modal::Units, crate::modal::Units),
+    ) {
+        // (the block's X Y Z are back at its start, in the units before it; U V W, which its
+        // own G20/G21 converted, are not known)
+        let state = &mut self.machine.state;
+        if state.units != from.0 {
+            for &axis in b"UVW" {
+                if let Some(i) = crate::modal::axis_index(axis) {
+                    state.position[i] = None;
+                    state.unknown |= crate::modal::bit(axis);
+                }
+            }
+        }
+        (state.units, state.feed_units) = from;
+        if to != from {
+            let code = if to.0 == crate::modal::Units::Inch {
+                20
+            } else {
+                21
+            };
+            self.machine.codes(&[code]);
+            (self.machine.state.units, self.machine.state.feed_units) = to;
+            self.linuxcnc_point_unsure |=
+                crate::modal::bit(b'X') | crate::modal::bit(b'Y') | crate::modal::bit(b'Z');
+        }
+    }
+
+    /// LinuxCNC: the distance mode after a block whose M72 may be dropped and that writes
+    /// G90 or G91 (`g91`, which [`Checker::linuxcnc_distance_modal`] applied after the
+    /// restore), the drop sure or not ([`Checker::linuxcnc_m72_motion_back`]): where sure,
+    /// the mode the save took; where only possible, that mode where it is the block's, else
+    /// not known.
+    fn linuxcnc_m72_distance_back(&mut self, g91: bool, surely: bool) {
+        let now = if self.linuxcnc_distance_unsure {
+            Distance::Unsure
+        } else {
+            Distance::Known(self.machine.state.incremental)
+        };
+        let saved = match self.linuxcnc_saved {
+            Saved::Valid(saved) => saved,
+            _ => Distance::Unsure,
+        };
+        let after = match saved {
+            _ if surely => saved,
+            Distance::Known(was) if was == g91 => return,
+            _ => Distance::Unsure,
+        };
+        let depth = self.linuxcnc_distance_depth();
+        self.linuxcnc_main_write(now, after, depth);
+    }
+
     /// [`Checker::linuxcnc_feed_restore`]: the M72 of a followed save (`saved`), where the
     /// state is `now`, its restore applied; whether the restore surely runs a block of its
     /// own (the feed mode, the rate or the speed differ: `Some(true)`) or surely none
@@ -3699,8 +3815,17 @@ impl Checker {
     fn linuxcnc_feed_restored(&mut self, saved: FeedSaved, now: FeedSaved) -> Option<bool> {
         use super::tooling::LinuxCncFeed;
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
+        let differs_else = std::mem::take(&mut self.linuxcnc_m72_differs);
         // (the restore surely runs a block of its own: the M72's motion does not run)
+        // (or the units: the restore runs a G20/G21 block of its own first, interp_convert.cc
+        // `restore_settings`; or the spindle's direction or the cutter compensation, which
+        // `gen_m_codes` and `gen_settings` write where they differ; or the distance mode or
+        // the plane, `linuxcnc_m72_differs`)
         let surely = saved.mode != now.mode
+            || matches!((saved.units, now.units), (Some(s), Some(n)) if s != n)
+            || matches!((saved.spindle, now.spindle), (Some(s), Some(n)) if s != n)
+            || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if s != n)
+            || differs_else
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
         let none = saved.still && now.still
@@ -6188,6 +6313,10 @@ pub(super) struct M72Dropped {
     pub(super) restored: Option<(PlaneAt, Option<(i64, bool)>)>,
     pub(super) plane: bool,
     pub(super) compensation: bool,
+    /// The block's G90 (false) or G91 (true), read as written.
+    pub(super) distance: Option<bool>,
+    /// The doubles rs274 holds for X Y Z before the block (`Checker::linuxcnc_double`).
+    pub(super) double: [super::tooling::Double; 3],
 }
 
 /// LinuxCNC: whether a line of a definition's body surely moves no axis and changes nothing
@@ -6310,6 +6439,8 @@ pub(super) struct M72Cycle {
     pub(super) bottom: Option<Dec>,
     /// G73 and G74's R (`linuxcnc_cycle_r`).
     pub(super) r: Option<Dec>,
+    /// The units and feed units before the block's G20/G21.
+    pub(super) units: (crate::modal::Units, crate::modal::Units),
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
@@ -6325,6 +6456,9 @@ pub(super) struct FeedSaved {
     /// ([`Checker::linuxcnc_spindle_restored`]).
     spindle: Option<i64>,
     compensation: Option<(i64, bool)>,
+    /// The units and feed units (G20/G21) the save took, or where the M72 runs (before its
+    /// block's own G20/G21), None where not known.
+    units: Option<(crate::modal::Units, crate::modal::Units)>,
     /// No G or M code since the save (or in the save's block) that may change another
     /// modal group the restore writes: where the feed mode, rate and speed are the saved
     /// ones, the restore writes nothing and the M72 block's motion runs.

@@ -1880,6 +1880,17 @@ impl Checker {
         if !before && !after {
             return None;
         }
+        // (a block whose M72 rs274 2.9.0 surely drops: its codes after the M72 in the order
+        // of execution, M48-M53 and every G code, do not run -- the restore's block is read
+        // into the block rs274 runs (interp_convert.cc `restore_settings` calls `execute`
+        // on its text), and its steps are done already; review 59b F7, `G41.1 D0.1` / `M70`
+        // / `G93` / `M72 G42.1 D0.1` runs in `rs274 -g`. Not judged; its M6 and M62-M68 run
+        // before the M72 and are. Where the drop is only possible they are judged: rs274
+        // refuses them where its restore writes nothing, review 75-lcnc75a F1)
+        let dropped = self.linuxcnc_m72_dropped == Some(self.stats.blocks)
+            && self
+                .linuxcnc_m72_motion
+                .is_some_and(|d| d.restored.is_some());
         let said = |what: &str, letter: u8| {
             Some((
                 format!("{what} (rs274ngc): the block runs it under cutter radius compensation"),
@@ -1890,6 +1901,7 @@ impl Checker {
             for &m in ms {
                 let what = match m {
                     6 => "Cannot change tools with cutter radius compensation on",
+                    48..=53 if dropped => continue,
                     48 => "Cannot enable overrides with cutter radius compensation on",
                     49 => "Cannot disable overrides with cutter radius compensation on",
                     50..=53 if words.value(b'P').is_some_and(|p| p.is_zero()) => {
@@ -1914,6 +1926,9 @@ impl Checker {
                 };
                 return said(what, b'M');
             }
+        }
+        if dropped {
+            return None;
         }
         if before {
             let plane = codes.iter().find_map(|&c| match c {
