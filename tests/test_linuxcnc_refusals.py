@@ -1718,3 +1718,49 @@ def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_pa
     text = "G21 G17 G90 F100\nG0 X0 Y0 Z0\no300 call\nM2\no300 sub\nG1 X1 F0\nM2\no300 endsub\n"
     assert [(r, n) for r, n, _ in errors(text)] == [("TG401", 6)], text
     assert "Cannot do g1 with zero feed rate" in rs274_output(tmp_path, text)
+
+
+# A work offset's parameter write on LinuxCNC (interp_convert.cc): `convert_coordinate_system`
+# loads the offset from #5221 + 20 * (n - 1)... only where the system selected is not the one
+# in force; `convert_setup` (G10 L2/L20) of the system in force loads every axis of it from
+# its parameters at once. A profile with G54 at 0 and G55's X at -100, X travel +-762: each
+# program's `G0 X-700` under G55 runs at -800 (inside) or, where the write of -200 holds, at
+# -900 (beyond). (rs274 -g has no travel; it reads the parameter in inches: the SET_G5X_OFFSET
+# before the move says whether the write holds, -5080 mm, or not, 0.)
+WO_HEAD = "G21 G17 G90 F100\n"
+WRITE_IN_FORCE = [
+    # selected again from another: rs274 SET_G5X_OFFSET(2, -5080...) then the move
+    ("G55\n#5241=-200\nG54\nG55\nG0 X-700", 6),
+    ("G55\n#5241=-200\nG56\nG55\nG0 X-700", 6),
+    # a G10 L2 of the system in force, of another axis: the write holds from there
+    ("G55\n#5241=-200\nG10 L2 P2 Y0\nG0 X-700", 5),
+    ("G55\n#5241=-200\nG10 L2 P3 Y0\nG54\nG55\nG0 X-700", 7),
+    # the system in force selected again: nothing changes, the old value holds (-800)
+    ("G55\n#5241=-200\nG55\nG0 X-700", None),
+    ("G55\n#5241=-200\nG0 X-700", None),
+    # rewritten before the selection: by a G10 L2 of that axis, by another write
+    ("G55\n#5241=-200\nG10 L2 P2 X0\nG54\nG55\nG0 X-700", None),
+    ("G55\n#5241=-200\n#5241=0\nG54\nG55\nG0 X-700", None),
+    # left for G54 (X-700 at -700), G55 again later: no move under it
+    ("G55\n#5241=-200\nG54\nG0 X-700\nG55\nM2", None),
+]
+
+
+@pytest.mark.parametrize("body, line", WRITE_IN_FORCE)
+def test_a_parameter_write_of_the_system_in_force_holds_at_its_next_selection(
+        tmp_path, body, line):
+    from formats.profile import builtin_text, profile_from_text
+
+    toml = builtin_text("linuxcnc").replace("[limits]\n",
+                                            "[limits]\nX = [-762, 762]\nY = [-406, 406]\n")
+    profile = profile_from_text(toml + "\n[work_offsets]\nG54 = { X = 0.0, Y = 0.0 }\n"
+                                "G55 = { X = -100.0, Y = 0.0 }\n")
+    text = f"{WO_HEAD}{body}\nM2\n"
+    found = [(f.rule, f.line) for f in check_text(text, profile) if f.severity == "error"]
+    assert found == ([("TG601", line)] if line else []), text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+    if "X-700" in body.split("\n")[-1]:
+        before = out.split("STRAIGHT_TRAVERSE(-700.0000")[0]
+        last = before.rsplit("SET_G5X_OFFSET(2, ", 1)[1]
+        assert last.startswith("-5080.0000" if line else "0.0000"), out

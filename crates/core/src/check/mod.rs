@@ -1055,6 +1055,13 @@ pub struct Checker {
     /// followed, as a `#5241=` write is not: its caller's positions said as the profile's
     /// offsets make them, erring on the side of the alarm.
     offsets_written: limits::Written,
+    /// LinuxCNC: the values (the profile's units; NaN not known) a parameter write
+    /// (`#5241=-200`) gave the axes (their places' bits) of the work offset G54-G59 (0-5)
+    /// in force, which rs274 applies at that system's next selection from another only
+    /// (interp_convert.cc `convert_coordinate_system` loads #5221 + 20 * (n - 1)... there,
+    /// and does nothing where the system selected is the one in force): held here until
+    /// then ([`Checker::linuxcnc_reselected`]).
+    linuxcnc_pending: Option<Box<(usize, u16, [f64; 9])>>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1712,6 +1719,7 @@ impl Checker {
             shift_ends: HashMap::new(),
             offsets_lost: false,
             offsets_written: limits::Written::default(),
+            linuxcnc_pending: None,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,

@@ -826,6 +826,7 @@ impl Checker {
         // with the block skip switch on, the program before runs on into it: that run's)
         if !self.end_skippable {
             self.offsets_written = Default::default();
+            self.linuxcnc_pending = None;
             self.g10_expression = 0;
             self.g10_local = 0;
         }
