@@ -1670,6 +1670,12 @@ DEFINITION_KEEPS_RATE = [
     ("o100 sub\nF0\no100 endsub\nM70\nF0\nM72\nG1 X4", None),
     # "Cannot do g1 with zero feed rate": the body's F10 is not run, the F0 saved is restored
     ("F0\no100 sub\nF10\no100 endsub\nM70\nF10\nM72\nG1 X4", 10),
+    # and a plain G1 after the endsub (review 63-lcnc63 N3): the F0 from before the `sub`
+    ("F0\no100 sub\nF10\no100 endsub\nG1 X1", 7),
+    ("F0\no100 sub\nG1 X1 F10\no100 endsub\nG1 X2", 7),
+    # rs274 runs: the call runs the body's F10; a body's F0 is not run
+    ("F0\no100 sub\nF10\no100 endsub\no100 call\nG1 X1", None),
+    ("o100 sub\nF0\no100 endsub\nG1 X1", None),
 ]
 
 
@@ -1677,6 +1683,13 @@ DEFINITION_KEEPS_RATE = [
 def test_a_definition_read_keeps_the_rate_an_m70_saves(tmp_path, body, line):
     judged_as_rs274(tmp_path, program(body), line, "TG401",
                     "Cannot do g1 with zero feed rate")
+
+
+def test_a_definition_read_gives_no_feed_rate_to_a_plain_g1(tmp_path):
+    # review 63-lcnc63 N3 (R1): no F before the `sub`, the body's F10 not run: rs274 "Cannot do
+    # g1 with zero feed rate" at `G1 X2` (main was clean)
+    text = "G21 G17 G90\nG0 X0 Y0 Z0\no100 sub\nG1 X1 F10\no100 endsub\nG1 X2\nM2\n"
+    judged_as_rs274(tmp_path, text, 6, "TG401", "Cannot do g1 with zero feed rate")
 
 
 # A G2 in a condition or loop of the main program that may not run (its condition not known

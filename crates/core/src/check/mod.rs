@@ -1227,6 +1227,12 @@ pub struct Checker {
     /// definition's `sub`, which its `endsub` gives back (rs274 reads a definition without
     /// running it); at the `endsub`, the block (its count) it is given back at.
     linuxcnc_rate_before_sub: Option<(Option<usize>, Option<Dec>, tooling::LinuxCncFeed)>,
+    /// LinuxCNC: the F word in force before a definition's `sub` (its value, whether it was
+    /// not known, whether none was ever set), given back at its `endsub` with
+    /// [`Checker::linuxcnc_rate_before_sub`]: rs274 reads the definition without running it
+    /// (`o100 sub` / `G1 X1 F10` / `o100 endsub` / `G1 X2` with no F before is "Cannot do g1
+    /// with zero feed rate").
+    linuxcnc_f_before_sub: (Option<Dec>, bool, bool),
     /// LinuxCNC: the feed mode, rs274's feed rate and the speed the main program's M70 or
     /// M73 saved, where each is known ([`structure::FeedSaved`]); None where no save is
     /// followed.
@@ -1845,6 +1851,7 @@ impl Checker {
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
             linuxcnc_rate_before_sub: None,
+            linuxcnc_f_before_sub: (None, false, false),
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,

@@ -4257,6 +4257,13 @@ impl Checker {
             if at == self.stats.blocks {
                 self.linuxcnc_rate = rate;
                 self.linuxcnc_feed_rate = feed;
+                // (and the F word in force: a plain G1's rate, review 63-lcnc63 N3)
+                let (f, unknown, none_kept) = self.linuxcnc_f_before_sub;
+                let m = &mut self.machine;
+                m.state.feed = f;
+                let bit = crate::modal::bit(b'F');
+                m.state.unknown = m.state.unknown & !bit | if unknown { bit } else { 0 };
+                m.feed_none_kept = none_kept;
                 return;
             }
         }
@@ -4316,6 +4323,9 @@ impl Checker {
                 // (and rs274's feed rate, which its endsub gives back)
                 self.linuxcnc_rate_before_sub =
                     Some((None, self.linuxcnc_rate, self.linuxcnc_feed_rate));
+                let m = &self.machine;
+                let unknown = m.state.unknown & crate::modal::bit(b'F') != 0;
+                self.linuxcnc_f_before_sub = (m.state.feed, unknown, m.feed_none_kept);
                 let state = &self.machine.state;
                 let label = self.open_definition.as_ref().map(|o| o.2.clone());
                 self.linuxcnc_motion_before_sub = MotionBeforeSub {
