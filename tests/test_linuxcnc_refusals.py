@@ -1523,6 +1523,32 @@ CALLER_ARC_LATER = [
      "o301 endsub", 5),
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\nG0 X0\no1 endif\n"
      "o300 endsub", 5),
+    # two calls in a row (review 63-lcnc63 N2, N11): the second body keeps the mode the first
+    # left, G0 (rs274 runs; main's TG404 at X2), or the caller's G2 through both, or its own G3
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nG0 X0\no300 endsub\n"
+     "o301 sub\nM8\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nM8\no300 endsub\n"
+     "o301 sub\nG0 X0\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nM8\no300 endsub\n"
+     "o301 sub\nM9\no301 endsub", 6),
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nG0 X0\no300 endsub\n"
+     "o301 sub\nG3 X0 Y0 I-0.5 J0\no301 endsub", 6),
+    # the second a definition read before the main program's lines (main's TG404 at X2)
+    ("o301 sub\nM8\no301 endsub\nG2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\n"
+     "o300 sub\nG0 X0\no300 endsub", None),
+    # a body whose last line calls a body that surely leaves G0 (review 63-lcnc63 K8: main's
+    # TG404 at X2), through two calls, or with a plain line after the call; a G3 body refused
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
+     "G0 X0\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
+     "o302 call\no301 endsub\no302 sub\nG0 X0\no302 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\nM8\no300 endsub\n"
+     "o301 sub\nG0 X0\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
+     "G3 X0 Y0 I-0.5 J0\no301 endsub", 5),
+    # the call in a condition of the body: may not run, judged as before
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\no301 call\n"
+     "o1 endif\no300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
 ]
 
 

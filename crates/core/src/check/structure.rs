@@ -3895,11 +3895,36 @@ impl Checker {
     pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
-        self.linuxcnc_later.pending = None;
+        let row = self.linuxcnc_later.pending.take();
+        let only_calls =
+            !calls && !b.statements.is_empty() && b.statements.iter().all(|s| s.1 == Kind::Call);
         if self.open_definition.is_some() && self.linuxcnc_later.sub_line != self.stats.blocks {
+            let clean =
+                !self.linuxcnc_later.body_moded && self.linuxcnc_motion == LinuxCncMotion::Unknown;
+            // (a body's last call, outside its conditions and loops: review 63-lcnc63 K8)
+            self.linuxcnc_later.body_via = match b.statements {
+                [(_, Kind::Call, text)] if !calls && self.linuxcnc_definition_flow.is_empty() => {
+                    Some((self.linuxcnc_call_label(text), clean))
+                }
+                _ => None,
+            };
             self.linuxcnc_later.body_moded |= calls
                 || self.linuxcnc_motion != LinuxCncMotion::Unknown
                 || b.statements.iter().any(|s| s.1 == Kind::Call);
+        }
+        // (calls in a row of the main program after a call of a label not read yet: the
+        // move after them held for all their bodies; review 63-lcnc63 N2)
+        if let Some((chain, _, m)) = row.filter(|_| only_calls && self.open_definition.is_none()) {
+            let mut labels: LaterChain = b
+                .statements
+                .iter()
+                .rev()
+                .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+                .collect();
+            if labels.iter().all(|l| !crate::statement::computed_label(l)) {
+                labels.extend(chain);
+                self.linuxcnc_later.pending = Some((labels, b.line, m));
+            }
         }
         self.linuxcnc_later.body_zero_saved = false;
         if self.linuxcnc_later.still.is_some() {
@@ -3988,8 +4013,18 @@ impl Checker {
             // review 62b F4, Checker::linuxcnc_later_move)
             let state = &self.machine.state;
             if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
-                if !crate::statement::computed_label(&label) {
-                    self.linuxcnc_later.pending = Some((label, b.line, m));
+                if !crate::statement::computed_label(&label) && only_calls {
+                    let labels: LaterChain = b
+                        .statements
+                        .iter()
+                        .rev()
+                        .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+                        .collect();
+                    if labels.iter().all(|l| !crate::statement::computed_label(l))
+                        && self.linuxcnc_later.pending.is_none()
+                    {
+                        self.linuxcnc_later.pending = Some((labels, b.line, m));
+                    }
                 }
             }
         }
@@ -4039,13 +4074,13 @@ impl Checker {
         if self.linuxcnc_motion != LinuxCncMotion::Unknown {
             return false;
         }
-        let Some((label, call, m)) = self.linuxcnc_later.pending.clone() else {
+        let Some((labels, call, m)) = self.linuxcnc_later.pending.clone() else {
             return false;
         };
         let column = b.words.first().map_or(1, |w| w.column);
         self.linuxcnc_later
             .moves
-            .push((label, call, b.line, column, m));
+            .push((labels, call, b.line, column, m));
         true
     }
 
@@ -4062,22 +4097,97 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn linuxcnc_later_arcs(&mut self, label: &[u8], sure: Option<i64>, keeps: bool, plain: bool) {
+        let via = self.linuxcnc_later.body_via.take();
+        let left = match sure {
+            Some(m @ 2..=3) => LaterLeft::Arc(m),
+            _ if plain => LaterLeft::Plain,
+            _ if keeps => LaterLeft::Keeps,
+            _ => match via {
+                Some((l, clean))
+                    if self.linuxcnc_motion == super::tooling::LinuxCncMotion::Unknown =>
+                {
+                    LaterLeft::Via(l, clean)
+                }
+                _ => LaterLeft::Unknown,
+            },
+        };
+        let all = &mut self.linuxcnc_later.left;
+        all.retain(|e| e.0 != label);
+        all.push((label.to_vec(), left));
+        if !self.linuxcnc_later.moves.is_empty() {
+            self.linuxcnc_later_settle();
+        }
+    }
+
+    /// What the body of `label` leaves of the mode its call found, as far as the
+    /// definitions read say ([`LaterLeft`]; None: not read yet), through its last call's.
+    fn linuxcnc_later_left(&self, label: &[u8], depth: usize) -> Option<LaterLeft> {
+        let left = self
+            .linuxcnc_later
+            .left
+            .iter()
+            .rev()
+            .find(|e| e.0 == label)?;
+        match &left.1 {
+            LaterLeft::Via(next, clean) if depth < 16 => {
+                match self.linuxcnc_later_left(next, depth + 1)? {
+                    LaterLeft::Keeps if !clean => Some(LaterLeft::Unknown),
+                    other => Some(other),
+                }
+            }
+            LaterLeft::Via(..) => Some(LaterLeft::Unknown),
+            other => Some(other.clone()),
+        }
+    }
+
+    /// LinuxCNC: the moves held after the main program's calls of labels not read yet
+    /// ([`LaterCalls::moves`]) whose bodies are all read now: the latest call's body decides,
+    /// or, where it leaves the mode it found, the call's before it, and so on back to the
+    /// caller's G2/G3. A body that surely leaves G2/G3, or the caller's arc kept by each, is
+    /// an arc with no centre or radius ("R i j k words all missing for arc", interp_convert.cc
+    /// convert_arc; review 62b LG4: `G2 X1 Y0 I0.5 J0` / `o300 call` / `X2` / `M2` / `o300
+    /// sub` / `M8` / `o300 endsub`); one that surely leaves G0, G1 or a cycle, nothing
+    /// (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`;
+    /// review 63-lcnc63 N2: `o300 call` / `o301 call` / `X2` with o300's `G0 X0` and o301's
+    /// `M8`; K8: o300's last line `o301 call` of a `G0 X0` body); elsewhere (a G0 in a
+    /// condition) it may leave the caller's G2/G3, and the move is judged as before (review
+    /// 63-lcnc63, K12).
+    fn linuxcnc_later_settle(&mut self) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
-        let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
-        self.linuxcnc_later.moves = rest;
-        for (_, call, line, column, m) in these {
-            let leaves = match sure {
-                Some(m @ 2..=3) => format!("which leaves G{m} in force"),
-                None if keeps => format!("which leaves the G{m} before it in force"),
-                _ if !plain => format!("which may leave the G{m} before it in force"),
-                _ => continue,
+        for e in moves {
+            let (labels, call, line, column, m) = &e;
+            let mut verdict = None;
+            let mut waits = false;
+            for label in labels {
+                match self.linuxcnc_later_left(label, 0) {
+                    None => {
+                        waits = true;
+                        break;
+                    }
+                    Some(LaterLeft::Keeps) => continue,
+                    Some(left) => {
+                        verdict = Some((label.clone(), left));
+                        break;
+                    }
+                }
+            }
+            if waits {
+                self.linuxcnc_later.moves.push(e);
+                continue;
+            }
+            let label = verdict.as_ref().map_or(&labels[0], |v| &v.0);
+            let leaves = match verdict.as_ref().map(|v| &v.1) {
+                Some(LaterLeft::Arc(m)) => format!("which leaves G{m} in force"),
+                None => format!("which leaves the G{m} before it in force"),
+                Some(LaterLeft::Plain) => continue,
+                _ => format!("which may leave the G{m} before it in force"),
             };
             let message = format!(
                 "arc without I J K (or R): none is given, whatever the plane (the call on \
                  line {call} runs {} written after it, {leaves})",
                 String::from_utf8_lossy(label)
             );
-            self.linuxcnc_later_report(message, line, column);
+            self.linuxcnc_later_report(message, *line, *column);
         }
     }
 
@@ -4379,7 +4489,7 @@ impl Checker {
             label,
             ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
-        if !self.linuxcnc_later.moves.is_empty() {
+        {
             // (the mode the body surely leaves, or whether it writes none: no motion code,
             // G code of a value not known or call in it; review 63-lcnc63 F1)
             let sure = self
@@ -4393,9 +4503,9 @@ impl Checker {
                 && !self.linuxcnc_body_returns
                 && !self.linuxcnc_body_distance.ends;
             // (whether it surely leaves G0, G1 or a cycle: the move after the call runs in
-            // rs274, review 62b F4; elsewhere -- a call in it, a G0 in a condition -- it may
-            // keep the caller's G2/G3, and the move is judged as main did: review 63-lcnc63,
-            // K8, K12)
+            // rs274, review 62b F4; a last call leaves what its body leaves, review 63-lcnc63
+            // K8; elsewhere -- a G0 in a condition -- it may keep the caller's G2/G3, and the
+            // move is judged as main did: review 63-lcnc63 K12)
             let plain = matches!(
                 self.linuxcnc_motion,
                 LinuxCncMotion::Known(Some(0 | 10 | 730 | 740 | 810..=890))
@@ -6250,6 +6360,28 @@ pub(super) fn still_line(b: &BlockView<'_>) -> bool {
 /// run, of a label not read yet ([`LaterCalls::ends`]), held until the definition is read.
 pub(super) const PENDING_LATER: i64 = -2;
 
+/// LinuxCNC: the labels of the main program's calls in a row (no move, motion code or
+/// other o-word line between), the latest first: the mode after them is the latest body's,
+/// or, where it leaves the mode it found, the one before ([`Checker::linuxcnc_later_settle`]).
+pub(super) type LaterChain = Vec<Vec<u8>>;
+
+/// LinuxCNC: what a definition's body leaves of the motion mode its call found.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum LaterLeft {
+    /// G2 or G3, surely.
+    Arc(i64),
+    /// G0, G1 or a canned cycle, surely.
+    Plain,
+    /// The mode it found: it writes no motion code and calls nothing.
+    Keeps,
+    /// What the body of its last call (the label) leaves, that call outside its conditions
+    /// and loops with no motion code after it; where that body keeps the mode, the mode
+    /// this body found where it wrote none before the call (true), else not known.
+    Via(Vec<u8>, bool),
+    /// Not known.
+    Unknown,
+}
+
 /// LinuxCNC: a call line's line and the axes before it ([`LaterCalls::still`]).
 pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9]);
 
@@ -6258,13 +6390,19 @@ pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9
 /// definition is read ([`Checker::linuxcnc_later_move`]).
 #[derive(Debug, Clone, Default)]
 pub(super) struct LaterCalls {
-    /// The call whose mode is still in force, by label, and its line: no o-word line, call,
-    /// motion code or possible M72 drop since.
-    /// The caller's G2 or G3 in force at it.
-    pub(super) pending: Option<(Vec<u8>, usize, i64)>,
-    /// The first move without a motion code or arc word after such a call: the label, the
+    /// The call whose mode is still in force, by label, and its line: no o-word line,
+    /// motion code or possible M72 drop since, and the labels of the calls in a row before
+    /// it, the latest first ([`LaterChain`]). The caller's G2 or G3 in force at it.
+    pub(super) pending: Option<(LaterChain, usize, i64)>,
+    /// The first move without a motion code or arc word after such a call: the labels, the
     /// call's line, the move's line and column, the caller's G2 or G3.
-    pub(super) moves: Vec<(Vec<u8>, usize, usize, usize, i64)>,
+    pub(super) moves: Vec<(LaterChain, usize, usize, usize, i64)>,
+    /// What each definition read leaves of the motion mode its call found, by label
+    /// ([`LaterLeft`]), for the moves held after calls in a row (review 63-lcnc63 N2, K8).
+    pub(super) left: Vec<(Vec<u8>, LaterLeft)>,
+    /// The open definition's last o-word line is a call of this label, outside its
+    /// conditions and loops, and whether the body wrote no motion code before it.
+    pub(super) body_via: Option<(Vec<u8>, bool)>,
     /// A call line of the main program whose call is of a definition read before it whose
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.
