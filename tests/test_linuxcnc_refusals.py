@@ -1546,6 +1546,13 @@ CALLER_ARC_LATER = [
      "o301 sub\nG0 X0\no301 endsub", None),
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
      "G3 X0 Y0 I-0.5 J0\no301 endsub", 5),
+    # review 75 F1: a G code of a value not known after the body's last call (a G2 here)
+    ("G2 X1 Y0 I0.5 J0\no300 call [2]\nX2\nM2\no300 sub\no301 call\nG#1 X1 Y0 I0.5 J0\n"
+     "o300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
+    # review 75 F1b: a body's own bare move, run in the mode the calls before it left (a
+    # bare X0 under the caller's G2): refused in the body by rs274, judged at the move after
+    # the call here
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nX0\nG0 X1\no300 endsub", 5),
     # the call in a condition of the body: may not run, judged as before
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\no301 call\n"
      "o1 endif\no300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
@@ -1557,6 +1564,15 @@ def test_the_caller_s_arc_is_not_the_mode_after_a_call_of_a_later_definition(
         tmp_path, body, line):
     judged_as_rs274(tmp_path, program(body), line, "TG404",
                     "R i j k words all missing for arc")
+
+
+def test_a_later_body_s_own_arc_words_under_a_line_keep_the_move_after_the_calls_judged(
+        tmp_path):
+    # review 75 F1b: o301's bare `X1 Y0 I0.5 J0` runs under o300's G0, refused in the body by
+    # rs274; the move after the calls is still judged (main's TG404 there)
+    text = program("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nG0 X0\n"
+                   "o300 endsub\no301 sub\nX1 Y0 I0.5 J0\no301 endsub")
+    judged_as_rs274(tmp_path, text, 6, "TG404", "I word with no G2, G3, G5, G5.1, G10")
 
 
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
@@ -1763,9 +1779,11 @@ def test_the_lines_of_a_later_body_that_ends_the_program_are_still_judged(tmp_pa
 # loads the offset from #5221 + 20 * (n - 1)... only where the system selected is not the one
 # in force; `convert_setup` (G10 L2/L20) of the system in force loads every axis of it from
 # its parameters at once. A profile with G54 at 0 and G55's X at -100, X travel +-762: each
-# program's `G0 X-700` under G55 runs at -800 (inside) or, where the write of -200 holds, at
-# -900 (beyond). (rs274 -g has no travel; it reads the parameter in inches: the SET_G5X_OFFSET
-# before the move says whether the write holds, -5080 mm, or not, 0.)
+# program's `G0 X-700` under G55 runs at -800 (beyond too: the rows whose write waits are
+# silent because X is not known while G55 stays in force, a miss kept, not a right silence)
+# or, where the write of -200 holds, at -900, said. (rs274 -g has no travel; it reads the
+# parameter in inches: the SET_G5X_OFFSET before the move says whether the write holds,
+# -5080 mm, or not, 0.)
 WO_HEAD = "G21 G17 G90 F100\n"
 WRITE_IN_FORCE = [
     # selected again from another: rs274 SET_G5X_OFFSET(2, -5080...) then the move

@@ -3689,6 +3689,7 @@ impl Checker {
                 self.motion_unknown = true;
                 self.machine.state.motion = None;
                 self.linuxcnc_later.pending = None;
+                self.linuxcnc_later.body_via = None;
             }
         }
     }
@@ -4101,7 +4102,7 @@ impl Checker {
         let left = match sure {
             Some(m @ 2..=3) => LaterLeft::Arc(m),
             _ if plain => LaterLeft::Plain,
-            _ if keeps => LaterLeft::Keeps,
+            _ if keeps => LaterLeft::Keeps(self.linuxcnc_bodies.last().is_some_and(|b| b.6)),
             _ => match via {
                 Some((l, clean))
                     if self.linuxcnc_motion == super::tooling::LinuxCncMotion::Unknown =>
@@ -4111,17 +4112,20 @@ impl Checker {
                 _ => LaterLeft::Unknown,
             },
         };
+        let bare = std::mem::take(&mut self.linuxcnc_later.body_bare).1;
         let all = &mut self.linuxcnc_later.left;
         all.retain(|e| e.0 != label);
-        all.push((label.to_vec(), left));
+        all.push((label.to_vec(), left, bare));
         if !self.linuxcnc_later.moves.is_empty() {
             self.linuxcnc_later_settle();
         }
     }
 
     /// What the body of `label` leaves of the mode its call found, as far as the
-    /// definitions read say ([`LaterLeft`]; None: not read yet), through its last call's.
-    fn linuxcnc_later_left(&self, label: &[u8], depth: usize) -> Option<LaterLeft> {
+    /// definitions read say ([`LaterLeft`]; None: not read yet), through its last call's,
+    /// and whether a move of its own is judged by the mode it found (a bare line before any
+    /// G word, in it or in the body its last call runs).
+    fn linuxcnc_later_left(&self, label: &[u8], depth: usize) -> Option<(LaterLeft, u8)> {
         let left = self
             .linuxcnc_later
             .left
@@ -4130,62 +4134,74 @@ impl Checker {
             .find(|e| e.0 == label)?;
         match &left.1 {
             LaterLeft::Via(next, clean) if depth < 16 => {
-                match self.linuxcnc_later_left(next, depth + 1)? {
-                    LaterLeft::Keeps if !clean => Some(LaterLeft::Unknown),
-                    other => Some(other),
+                let (then, bare) = self.linuxcnc_later_left(next, depth + 1)?;
+                match then {
+                    LaterLeft::Keeps(_) if !clean => Some((LaterLeft::Unknown, 2)),
+                    other => Some((other, bare.max(left.2))),
                 }
             }
-            LaterLeft::Via(..) => Some(LaterLeft::Unknown),
-            other => Some(other.clone()),
+            LaterLeft::Via(..) => Some((LaterLeft::Unknown, 2)),
+            other => Some((other.clone(), left.2)),
         }
     }
 
     /// LinuxCNC: the moves held after the main program's calls of labels not read yet
-    /// ([`LaterCalls::moves`]) whose bodies are all read now: the latest call's body decides,
-    /// or, where it leaves the mode it found, the call's before it, and so on back to the
-    /// caller's G2/G3. A body that surely leaves G2/G3, or the caller's arc kept by each, is
-    /// an arc with no centre or radius ("R i j k words all missing for arc", interp_convert.cc
+    /// ([`LaterCalls::moves`]) whose bodies are all read now, run in call order from the
+    /// caller's G2/G3: a body that leaves the mode it found keeps it, one that surely leaves
+    /// G0-G3 or a cycle sets it, any other leaves it not known; a body with a move of its own
+    /// before any G word, run under an arc or a mode not known, may be refused in itself.
+    /// The move after the calls in an arc (the caller's kept, or a body's G2/G3) is one with
+    /// no centre or radius ("R i j k words all missing for arc", interp_convert.cc
     /// convert_arc; review 62b LG4: `G2 X1 Y0 I0.5 J0` / `o300 call` / `X2` / `M2` / `o300
-    /// sub` / `M8` / `o300 endsub`); one that surely leaves G0, G1 or a cycle, nothing
-    /// (review 62b F4: a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`;
-    /// review 63-lcnc63 N2: `o300 call` / `o301 call` / `X2` with o300's `G0 X0` and o301's
-    /// `M8`; K8: o300's last line `o301 call` of a `G0 X0` body); elsewhere (a G0 in a
-    /// condition) it may leave the caller's G2/G3, and the move is judged as before (review
-    /// 63-lcnc63, K12).
+    /// sub` / `M8` / `o300 endsub`); after G0, G1 or a cycle nothing is said (review 62b F4:
+    /// a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`; review 63-lcnc63
+    /// N2: `o300 call` / `o301 call` / `X2` with o300's `G0 X0` and o301's `M8`; K8: o300's
+    /// last line `o301 call` of a `G0 X0` body); elsewhere (a G0 in a condition, a body's
+    /// own bare move) the move is judged as before (review 63-lcnc63 K12; review 75 F1b).
     fn linuxcnc_later_settle(&mut self) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
         for e in moves {
             let (labels, call, line, column, m) = &e;
-            let mut verdict = None;
+            // (the mode after each call: Some(arc) for an arc, Some(0) for a line or
+            // cycle, None not known; and whether a body may be refused in itself)
+            let mut mode = Some((*m, false));
+            let mut decider = &labels[0];
+            let mut refused = false;
             let mut waits = false;
-            for label in labels {
-                match self.linuxcnc_later_left(label, 0) {
-                    None => {
-                        waits = true;
-                        break;
-                    }
-                    Some(LaterLeft::Keeps) => continue,
-                    Some(left) => {
-                        verdict = Some((label.clone(), left));
-                        break;
-                    }
+            for label in labels.iter().rev() {
+                let Some((left, bare)) = self.linuxcnc_later_left(label, 0) else {
+                    waits = true;
+                    break;
+                };
+                if bare == 2 || bare == 1 && mode.is_none_or(|(a, _)| a != 0) {
+                    refused = true;
+                    decider = label;
+                }
+                match left {
+                    LaterLeft::Keeps(_) => {}
+                    LaterLeft::Plain => mode = Some((0, true)),
+                    LaterLeft::Arc(a) => mode = Some((a, true)),
+                    _ => mode = None,
+                }
+                if !matches!(left, LaterLeft::Keeps(_)) && !refused {
+                    decider = label;
                 }
             }
             if waits {
                 self.linuxcnc_later.moves.push(e);
                 continue;
             }
-            let label = verdict.as_ref().map_or(&labels[0], |v| &v.0);
-            let leaves = match verdict.as_ref().map(|v| &v.1) {
-                Some(LaterLeft::Arc(m)) => format!("which leaves G{m} in force"),
-                None => format!("which leaves the G{m} before it in force"),
-                Some(LaterLeft::Plain) => continue,
-                _ => format!("which may leave the G{m} before it in force"),
+            let leaves = match mode {
+                _ if refused => format!("which may leave the G{m} before it in force"),
+                Some((0, _)) => continue,
+                Some((a, true)) => format!("which leaves G{a} in force"),
+                Some(_) => format!("which leaves the G{m} before it in force"),
+                None => format!("which may leave the G{m} before it in force"),
             };
             let message = format!(
                 "arc without I J K (or R): none is given, whatever the plane (the call on \
                  line {call} runs {} written after it, {leaves})",
-                String::from_utf8_lossy(label)
+                String::from_utf8_lossy(decider)
             );
             self.linuxcnc_later_report(message, *line, *column);
         }
@@ -4448,6 +4464,7 @@ impl Checker {
                 };
                 self.linuxcnc_body_returns = false;
                 self.linuxcnc_later.body_moded = false;
+                self.linuxcnc_later.body_bare = (false, 0);
                 self.linuxcnc_later.sub_line = self.stats.blocks;
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
@@ -4798,6 +4815,16 @@ impl Checker {
     /// its `sub` line opens an entry, each line of its body adds to it; and to the distance
     /// mode ([`BodyDistance`]), which its `endsub` closes.
     fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        let bare = &mut self.linuxcnc_later.body_bare;
+        if statement.is_none() && !bare.0 {
+            if self.letters & crate::modal::bit(b'G') != 0 {
+                bare.0 = true;
+            } else if crate::modal::axis_places(self.letters) != 0 {
+                let bit = crate::modal::bit;
+                let arc = bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R');
+                bare.1 = bare.1.max(if self.letters & arc != 0 { 2 } else { 1 });
+            }
+        }
         match statement {
             Some((true, name)) => {
                 if self.open_definition.is_some() {
@@ -6372,8 +6399,9 @@ pub(super) enum LaterLeft {
     Arc(i64),
     /// G0, G1 or a canned cycle, surely.
     Plain,
-    /// The mode it found: it writes no motion code and calls nothing.
-    Keeps,
+    /// The mode it found: it writes no motion code and calls nothing; whether every line of
+    /// it is still ([`still_line`]: no axis word, whose move depends on the mode found).
+    Keeps(bool),
     /// What the body of its last call (the label) leaves, that call outside its conditions
     /// and loops with no motion code after it; where that body keeps the mode, the mode
     /// this body found where it wrote none before the call (true), else not known.
@@ -6399,10 +6427,14 @@ pub(super) struct LaterCalls {
     pub(super) moves: Vec<(LaterChain, usize, usize, usize, i64)>,
     /// What each definition read leaves of the motion mode its call found, by label
     /// ([`LaterLeft`]), for the moves held after calls in a row (review 63-lcnc63 N2, K8).
-    pub(super) left: Vec<(Vec<u8>, LaterLeft)>,
+    pub(super) left: Vec<(Vec<u8>, LaterLeft, u8)>,
     /// The open definition's last o-word line is a call of this label, outside its
     /// conditions and loops, and whether the body wrote no motion code before it.
     pub(super) body_via: Option<(Vec<u8>, bool)>,
+    /// The open definition has read a G word (`.0`), and a line with axis words and no G
+    /// word before any (`.1`: 1, or 2 where it has an arc's I, J, K or R, which only an arc
+    /// found takes): a move the mode its call found judges (review 75 F1b).
+    pub(super) body_bare: (bool, u8),
     /// A call line of the main program whose call is of a definition read before it whose
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.
