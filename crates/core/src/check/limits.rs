@@ -973,10 +973,10 @@ impl Checker {
         }
         let mut writes = Written::default();
         writes.values[from] = [f64::NAN; 9];
-        for i in 0..9 {
-            if axes & 1 << i != 0 && !values[i].is_nan() {
+        for (i, &v) in values.iter().enumerate() {
+            if axes & 1 << i != 0 && !v.is_nan() {
                 writes.axes[from] |= 1 << i;
-                writes.values[from][i] = values[i];
+                writes.values[from][i] = v;
             }
         }
         if self.g10_followed(&writes, false) {
