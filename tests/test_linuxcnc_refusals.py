@@ -1553,6 +1553,15 @@ CALLER_ARC_LATER = [
     # bare X0 under the caller's G2): refused in the body by rs274, judged at the move after
     # the call here
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nX0\nG0 X1\no300 endsub", 5),
+    # review 75 F2: a body that may return before its last call (#1 is 0 here)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 EQ 0]\no300 return\n"
+     "o1 endif\no301 call\no300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
+    # review 75 F3: a bare arc line under the caller's arc runs, then the body's G0; a bare
+    # line in a condition that does not run
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nX0 Y0 I-0.5 J0\nG0 X0\no300 endsub",
+     None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\nX0\no1 endif\n"
+     "G0 X0\no300 endsub", None),
     # the call in a condition of the body: may not run, judged as before
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\no301 call\n"
      "o1 endif\no300 endsub\no301 sub\nG0 X0\no301 endsub", 5),

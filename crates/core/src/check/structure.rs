@@ -4105,7 +4105,9 @@ impl Checker {
             _ if keeps => LaterLeft::Keeps(self.linuxcnc_bodies.last().is_some_and(|b| b.6)),
             _ => match via {
                 Some((l, clean))
-                    if self.linuxcnc_motion == super::tooling::LinuxCncMotion::Unknown =>
+                    if self.linuxcnc_motion == super::tooling::LinuxCncMotion::Unknown
+                        && !self.linuxcnc_body_returns
+                        && !self.linuxcnc_body_distance.ends =>
                 {
                     LaterLeft::Via(l, clean)
                 }
@@ -4136,11 +4138,11 @@ impl Checker {
             LaterLeft::Via(next, clean) if depth < 16 => {
                 let (then, bare) = self.linuxcnc_later_left(next, depth + 1)?;
                 match then {
-                    LaterLeft::Keeps(_) if !clean => Some((LaterLeft::Unknown, 2)),
+                    LaterLeft::Keeps(_) if !clean => Some((LaterLeft::Unknown, left.2)),
                     other => Some((other, bare.max(left.2))),
                 }
             }
-            LaterLeft::Via(..) => Some((LaterLeft::Unknown, 2)),
+            LaterLeft::Via(..) => Some((LaterLeft::Unknown, left.2)),
             other => Some((other.clone(), left.2)),
         }
     }
@@ -4173,7 +4175,10 @@ impl Checker {
                     waits = true;
                     break;
                 };
-                if bare == 2 || bare == 1 && mode.is_none_or(|(a, _)| a != 0) {
+                // (axis words alone under an arc or a mode not known; an arc's words under
+                // a line, a cycle or a mode not known: review 75 F3)
+                let arc = matches!(mode, Some((2 | 3, _)));
+                if bare == 2 && !arc || bare == 1 && mode.is_none_or(|(a, _)| a != 0) {
                     refused = true;
                     decider = label;
                 }
@@ -4816,7 +4821,7 @@ impl Checker {
     /// mode ([`BodyDistance`]), which its `endsub` closes.
     fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
         let bare = &mut self.linuxcnc_later.body_bare;
-        if statement.is_none() && !bare.0 {
+        if statement.is_none() && !bare.0 && self.linuxcnc_definition_flow.is_empty() {
             if self.letters & crate::modal::bit(b'G') != 0 {
                 bare.0 = true;
             } else if crate::modal::axis_places(self.letters) != 0 {
