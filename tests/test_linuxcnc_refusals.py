@@ -1523,6 +1523,48 @@ CALLER_ARC_LATER = [
      "o301 endsub", 5),
     ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\nG0 X0\no1 endif\n"
      "o300 endsub", 5),
+    # two calls in a row (review 63-lcnc63 N2, N11): the second body keeps the mode the first
+    # left, G0 (rs274 runs; main's TG404 at X2), or the caller's G2 through both, or its own G3
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nG0 X0\no300 endsub\n"
+     "o301 sub\nM8\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nM8\no300 endsub\n"
+     "o301 sub\nG0 X0\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nM8\no300 endsub\n"
+     "o301 sub\nM9\no301 endsub", 6),
+    ("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nG0 X0\no300 endsub\n"
+     "o301 sub\nG3 X0 Y0 I-0.5 J0\no301 endsub", 6),
+    # the second a definition read before the main program's lines (main's TG404 at X2)
+    ("o301 sub\nM8\no301 endsub\nG2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\n"
+     "o300 sub\nG0 X0\no300 endsub", None),
+    # a body whose last line calls a body that surely leaves G0 (review 63-lcnc63 K8: main's
+    # TG404 at X2), through two calls, or with a plain line after the call; a G3 body refused
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
+     "G0 X0\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
+     "o302 call\no301 endsub\no302 sub\nG0 X0\no302 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\nM8\no300 endsub\n"
+     "o301 sub\nG0 X0\no301 endsub", None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no301 call\no300 endsub\no301 sub\n"
+     "G3 X0 Y0 I-0.5 J0\no301 endsub", 5),
+    # review 75 F1: a G code of a value not known after the body's last call (a G2 here)
+    ("G2 X1 Y0 I0.5 J0\no300 call [2]\nX2\nM2\no300 sub\no301 call\nG#1 X1 Y0 I0.5 J0\n"
+     "o300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
+    # review 75 F1b: a body's own bare move, run in the mode the calls before it left (a
+    # bare X0 under the caller's G2): refused in the body by rs274, judged at the move after
+    # the call here
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nX0\nG0 X1\no300 endsub", 5),
+    # review 75 F2: a body that may return before its last call (#1 is 0 here)
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 EQ 0]\no300 return\n"
+     "o1 endif\no301 call\no300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
+    # review 75 F3: a bare arc line under the caller's arc runs, then the body's G0; a bare
+    # line in a condition that does not run
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\nX0 Y0 I-0.5 J0\nG0 X0\no300 endsub",
+     None),
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\nX0\no1 endif\n"
+     "G0 X0\no300 endsub", None),
+    # the call in a condition of the body: may not run, judged as before
+    ("G2 X1 Y0 I0.5 J0\no300 call\nX2\nM2\no300 sub\no1 if [#1 GT 0]\no301 call\n"
+     "o1 endif\no300 endsub\no301 sub\nG0 X0\no301 endsub", 5),
 ]
 
 
@@ -1531,6 +1573,15 @@ def test_the_caller_s_arc_is_not_the_mode_after_a_call_of_a_later_definition(
         tmp_path, body, line):
     judged_as_rs274(tmp_path, program(body), line, "TG404",
                     "R i j k words all missing for arc")
+
+
+def test_a_later_body_s_own_arc_words_under_a_line_keep_the_move_after_the_calls_judged(
+        tmp_path):
+    # review 75 F1b: o301's bare `X1 Y0 I0.5 J0` runs under o300's G0, refused in the body by
+    # rs274; the move after the calls is still judged (main's TG404 there)
+    text = program("G2 X1 Y0 I0.5 J0\no300 call\no301 call\nX2\nM2\no300 sub\nG0 X0\n"
+                   "o300 endsub\no301 sub\nX1 Y0 I0.5 J0\no301 endsub")
+    judged_as_rs274(tmp_path, text, 6, "TG404", "I word with no G2, G3, G5, G5.1, G10")
 
 
 # An M72 across a G20/G21 from its M70 (the same feed mode): rs274 -g converts no feed rate at
@@ -1670,6 +1721,12 @@ DEFINITION_KEEPS_RATE = [
     ("o100 sub\nF0\no100 endsub\nM70\nF0\nM72\nG1 X4", None),
     # "Cannot do g1 with zero feed rate": the body's F10 is not run, the F0 saved is restored
     ("F0\no100 sub\nF10\no100 endsub\nM70\nF10\nM72\nG1 X4", 10),
+    # and a plain G1 after the endsub (review 63-lcnc63 N3): the F0 from before the `sub`
+    ("F0\no100 sub\nF10\no100 endsub\nG1 X1", 7),
+    ("F0\no100 sub\nG1 X1 F10\no100 endsub\nG1 X2", 7),
+    # rs274 runs: the call runs the body's F10; a body's F0 is not run
+    ("F0\no100 sub\nF10\no100 endsub\no100 call\nG1 X1", None),
+    ("o100 sub\nF0\no100 endsub\nG1 X1", None),
 ]
 
 
@@ -1677,6 +1734,13 @@ DEFINITION_KEEPS_RATE = [
 def test_a_definition_read_keeps_the_rate_an_m70_saves(tmp_path, body, line):
     judged_as_rs274(tmp_path, program(body), line, "TG401",
                     "Cannot do g1 with zero feed rate")
+
+
+def test_a_definition_read_gives_no_feed_rate_to_a_plain_g1(tmp_path):
+    # review 63-lcnc63 N3 (R1): no F before the `sub`, the body's F10 not run: rs274 "Cannot do
+    # g1 with zero feed rate" at `G1 X2` (main was clean)
+    text = "G21 G17 G90\nG0 X0 Y0 Z0\no100 sub\nG1 X1 F10\no100 endsub\nG1 X2\nM2\n"
+    judged_as_rs274(tmp_path, text, 6, "TG401", "Cannot do g1 with zero feed rate")
 
 
 # A G2 in a condition or loop of the main program that may not run (its condition not known
@@ -1815,3 +1879,49 @@ def test_an_m72_restores_the_units_its_save_took(tmp_path):
     assert found("G20\nG0 X-500") == [("TG601", 4)]
     for body in ("M70\nG20\nM72\nG0 X-500", "M70\nS200\nM72 G20\nG0 X-500"):
         assert "PROGRAM_END" in rs274_output(tmp_path, program(body))
+# A work offset's parameter write on LinuxCNC (interp_convert.cc): `convert_coordinate_system`
+# loads the offset from #5221 + 20 * (n - 1)... only where the system selected is not the one
+# in force; `convert_setup` (G10 L2/L20) of the system in force loads every axis of it from
+# its parameters at once. A profile with G54 at 0 and G55's X at -100, X travel +-762: each
+# program's `G0 X-700` under G55 runs at -800 (beyond too: the rows whose write waits are
+# silent because X is not known while G55 stays in force, a miss kept, not a right silence)
+# or, where the write of -200 holds, at -900, said. (rs274 -g has no travel; it reads the
+# parameter in inches: the SET_G5X_OFFSET before the move says whether the write holds,
+# -5080 mm, or not, 0.)
+WO_HEAD = "G21 G17 G90 F100\n"
+WRITE_IN_FORCE = [
+    # selected again from another: rs274 SET_G5X_OFFSET(2, -5080...) then the move
+    ("G55\n#5241=-200\nG54\nG55\nG0 X-700", 6),
+    ("G55\n#5241=-200\nG56\nG55\nG0 X-700", 6),
+    # a G10 L2 of the system in force, of another axis: the write holds from there
+    ("G55\n#5241=-200\nG10 L2 P2 Y0\nG0 X-700", 5),
+    ("G55\n#5241=-200\nG10 L2 P3 Y0\nG54\nG55\nG0 X-700", 7),
+    # the system in force selected again: nothing changes, the old value holds (-800)
+    ("G55\n#5241=-200\nG55\nG0 X-700", None),
+    ("G55\n#5241=-200\nG0 X-700", None),
+    # rewritten before the selection: by a G10 L2 of that axis, by another write
+    ("G55\n#5241=-200\nG10 L2 P2 X0\nG54\nG55\nG0 X-700", None),
+    ("G55\n#5241=-200\n#5241=0\nG54\nG55\nG0 X-700", None),
+    # left for G54 (X-700 at -700), G55 again later: no move under it
+    ("G55\n#5241=-200\nG54\nG0 X-700\nG55\nM2", None),
+]
+
+
+@pytest.mark.parametrize("body, line", WRITE_IN_FORCE)
+def test_a_parameter_write_of_the_system_in_force_holds_at_its_next_selection(
+        tmp_path, body, line):
+    from formats.profile import builtin_text, profile_from_text
+
+    toml = builtin_text("linuxcnc").replace("[limits]\n",
+                                            "[limits]\nX = [-762, 762]\nY = [-406, 406]\n")
+    profile = profile_from_text(toml + "\n[work_offsets]\nG54 = { X = 0.0, Y = 0.0 }\n"
+                                "G55 = { X = -100.0, Y = 0.0 }\n")
+    text = f"{WO_HEAD}{body}\nM2\n"
+    found = [(f.rule, f.line) for f in check_text(text, profile) if f.severity == "error"]
+    assert found == ([("TG601", line)] if line else []), text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+    if "X-700" in body.split("\n")[-1]:
+        before = out.split("STRAIGHT_TRAVERSE(-700.0000")[0]
+        last = before.rsplit("SET_G5X_OFFSET(2, ", 1)[1]
+        assert last.startswith("-5080.0000" if line else "0.0000"), out

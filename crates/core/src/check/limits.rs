@@ -594,6 +594,9 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64) {
+        if self.linuxcnc_pending.is_some() {
+            self.linuxcnc_reselected(g);
+        }
         self.work_unplaced = false;
         if self.offsets_unread_only {
             self.work_unread_reselected();
@@ -885,7 +888,8 @@ impl Checker {
     /// axis alone not known where its value is not; every axis of the offset not known
     /// where the axis cannot be named. A value known that the positions cannot be judged
     /// with loses the offsets as a G10's does. LinuxCNC applies a write of the offset in
-    /// force at its next selection only (rs274): not known there.
+    /// force at its next selection only (rs274): not known there, the value held for that
+    /// selection ([`Checker::linuxcnc_pending`]).
     #[cold]
     #[inline(never)]
     pub(super) fn variable_writes(
@@ -916,19 +920,69 @@ impl Checker {
         writes.axes[g] = 1 << i;
         writes.values[g] = [f64::NAN; 9];
         let in_force = self.work == Some(54 + g as i64);
-        let literal = w.expression.is_empty()
-            && !self.jumped
-            && !(in_force && self.config.family == Family::LinuxCnc);
-        if literal {
+        if w.expression.is_empty() && !self.jumped {
             let text = [w.sign, w.number].concat();
             if let Some(v) = std::str::from_utf8(&text).ok().and_then(Dec::parse) {
                 writes.values[g][i] = v.to_f64() * self.to_profile_units(false);
             }
         }
+        if in_force && self.config.family == Family::LinuxCnc {
+            // (the system in force keeps its value until it is selected again from another:
+            // not known here, the value written held for that selection)
+            let pending = self
+                .linuxcnc_pending
+                .get_or_insert_with(|| Box::new((g, 0, [f64::NAN; 9])));
+            if pending.0 != g {
+                **pending = (g, 0, [f64::NAN; 9]);
+            }
+            pending.1 |= 1 << i;
+            pending.2[i] = writes.values[g][i];
+            writes.values[g][i] = f64::NAN;
+        }
         if !writes.values[g][i].is_nan() && !self.g10_followed(&writes, false) {
             self.offsets_rewritten(line, "a work offset's system variable sets offsets");
         }
         writes
+    }
+
+    /// LinuxCNC selects work offset G`g` (54-59) where the parameter write of the system in
+    /// force waits ([`Checker::linuxcnc_pending`]): selected from another, that system's
+    /// values written are its values from here on, for its next selection (rs274: `G55` /
+    /// `#5241=-200` / `G54` / `G55` / `G0 X-700` runs at machine -900), where they are
+    /// known and the offsets are followed; its own selection again changes nothing.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_reselected(&mut self, g: i64) {
+        if self.work != Some(g) {
+            self.linuxcnc_pending_applied();
+        }
+    }
+
+    /// The parameter writes of the system in force held for its next selection
+    /// ([`Checker::linuxcnc_pending`]) take effect: its values from here on, where the
+    /// system is still the one in force and the offsets are followed.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_pending_applied(&mut self) {
+        let Some(p) = self.linuxcnc_pending.take() else {
+            return;
+        };
+        let (from, axes, values) = *p;
+        if self.work != Some(54 + from as i64) {
+            return;
+        }
+        let mut writes = Written::default();
+        writes.values[from] = [f64::NAN; 9];
+        for (i, &v) in values.iter().enumerate() {
+            if axes & 1 << i != 0 && !v.is_nan() {
+                writes.axes[from] |= 1 << i;
+                writes.values[from][i] = v;
+            }
+        }
+        if self.g10_followed(&writes, false) {
+            self.offsets_written.then(&writes);
+            self.offset_writer(&writes, false);
+        }
     }
 
     /// A work offset system variable's write (`w`) of `axes` (their places' bits) may set
@@ -1078,6 +1132,17 @@ impl Checker {
                 10 => {
                     let writes = self.g10_writes(b);
                     self.offsets_written.then(&writes);
+                    // (LinuxCNC: a G10 L2/L20 of the system in force loads every axis of it
+                    // from its parameters at once, interp_convert.cc `convert_setup`: the
+                    // parameter writes waiting for its selection hold from here, those of
+                    // the axes it writes replaced)
+                    if let Some(p) = self.linuxcnc_pending.as_mut() {
+                        let g = p.0;
+                        p.1 &= !writes.axes[g];
+                        if writes.axes[g] != 0 {
+                            self.linuxcnc_pending_applied();
+                        }
+                    }
                     let (expression, local) = self.g10_expression_of(b);
                     let axes = writes.axes.iter().fold(0, |all, a| all | a);
                     if expression {

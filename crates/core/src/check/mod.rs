@@ -1055,6 +1055,13 @@ pub struct Checker {
     /// followed, as a `#5241=` write is not: its caller's positions said as the profile's
     /// offsets make them, erring on the side of the alarm.
     offsets_written: limits::Written,
+    /// LinuxCNC: the values (the profile's units; NaN not known) a parameter write
+    /// (`#5241=-200`) gave the axes (their places' bits) of the work offset G54-G59 (0-5)
+    /// in force, which rs274 applies at that system's next selection from another only
+    /// (interp_convert.cc `convert_coordinate_system` loads #5221 + 20 * (n - 1)... there,
+    /// and does nothing where the system selected is the one in force): held here until
+    /// then ([`Checker::linuxcnc_reselected`]).
+    linuxcnc_pending: Option<Box<(usize, u16, [f64; 9])>>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1220,6 +1227,12 @@ pub struct Checker {
     /// definition's `sub`, which its `endsub` gives back (rs274 reads a definition without
     /// running it); at the `endsub`, the block (its count) it is given back at.
     linuxcnc_rate_before_sub: Option<(Option<usize>, Option<Dec>, tooling::LinuxCncFeed)>,
+    /// LinuxCNC: the F word in force before a definition's `sub` (its value, whether it was
+    /// not known, whether none was ever set), given back at its `endsub` with
+    /// [`Checker::linuxcnc_rate_before_sub`]: rs274 reads the definition without running it
+    /// (`o100 sub` / `G1 X1 F10` / `o100 endsub` / `G1 X2` with no F before is "Cannot do g1
+    /// with zero feed rate").
+    linuxcnc_f_before_sub: (Option<Dec>, bool, bool),
     /// LinuxCNC: the feed mode, rs274's feed rate and the speed the main program's M70 or
     /// M73 saved, where each is known ([`structure::FeedSaved`]); None where no save is
     /// followed.
@@ -1716,6 +1729,7 @@ impl Checker {
             shift_ends: HashMap::new(),
             offsets_lost: false,
             offsets_written: limits::Written::default(),
+            linuxcnc_pending: None,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,
@@ -1841,6 +1855,7 @@ impl Checker {
             linuxcnc_feed_rate: tooling::LinuxCncFeed::Zero,
             linuxcnc_rate: Some(Dec::ZERO),
             linuxcnc_rate_before_sub: None,
+            linuxcnc_f_before_sub: (None, false, false),
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
             linuxcnc_feed_restored_at: None,

@@ -826,6 +826,7 @@ impl Checker {
         // with the block skip switch on, the program before runs on into it: that run's)
         if !self.end_skippable {
             self.offsets_written = Default::default();
+            self.linuxcnc_pending = None;
             self.g10_expression = 0;
             self.g10_local = 0;
         }
@@ -3742,6 +3743,7 @@ impl Checker {
                 self.motion_unknown = true;
                 self.machine.state.motion = None;
                 self.linuxcnc_later.pending = None;
+                self.linuxcnc_later.body_via = None;
             }
         }
     }
@@ -4019,11 +4021,36 @@ impl Checker {
     pub(super) fn linuxcnc_motion_after_call(&mut self, b: &BlockView<'_>, calls: bool) {
         use super::tooling::LinuxCncMotion;
         let mut before_plain = self.linuxcnc_motion_is_plain();
-        self.linuxcnc_later.pending = None;
+        let row = self.linuxcnc_later.pending.take();
+        let only_calls =
+            !calls && !b.statements.is_empty() && b.statements.iter().all(|s| s.1 == Kind::Call);
         if self.open_definition.is_some() && self.linuxcnc_later.sub_line != self.stats.blocks {
+            let clean =
+                !self.linuxcnc_later.body_moded && self.linuxcnc_motion == LinuxCncMotion::Unknown;
+            // (a body's last call, outside its conditions and loops: review 63-lcnc63 K8)
+            self.linuxcnc_later.body_via = match b.statements {
+                [(_, Kind::Call, text)] if !calls && self.linuxcnc_definition_flow.is_empty() => {
+                    Some((self.linuxcnc_call_label(text), clean))
+                }
+                _ => None,
+            };
             self.linuxcnc_later.body_moded |= calls
                 || self.linuxcnc_motion != LinuxCncMotion::Unknown
                 || b.statements.iter().any(|s| s.1 == Kind::Call);
+        }
+        // (calls in a row of the main program after a call of a label not read yet: the
+        // move after them held for all their bodies; review 63-lcnc63 N2)
+        if let Some((chain, _, m)) = row.filter(|_| only_calls && self.open_definition.is_none()) {
+            let mut labels: LaterChain = b
+                .statements
+                .iter()
+                .rev()
+                .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+                .collect();
+            if labels.iter().all(|l| !crate::statement::computed_label(l)) {
+                labels.extend(chain);
+                self.linuxcnc_later.pending = Some((labels, b.line, m));
+            }
         }
         self.linuxcnc_later.body_zero_saved = false;
         if self.linuxcnc_later.still.is_some() {
@@ -4112,8 +4139,18 @@ impl Checker {
             // review 62b F4, Checker::linuxcnc_later_move)
             let state = &self.machine.state;
             if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
-                if !crate::statement::computed_label(&label) {
-                    self.linuxcnc_later.pending = Some((label, b.line, m));
+                if !crate::statement::computed_label(&label) && only_calls {
+                    let labels: LaterChain = b
+                        .statements
+                        .iter()
+                        .rev()
+                        .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+                        .collect();
+                    if labels.iter().all(|l| !crate::statement::computed_label(l))
+                        && self.linuxcnc_later.pending.is_none()
+                    {
+                        self.linuxcnc_later.pending = Some((labels, b.line, m));
+                    }
                 }
             }
         }
@@ -4163,13 +4200,13 @@ impl Checker {
         if self.linuxcnc_motion != LinuxCncMotion::Unknown {
             return false;
         }
-        let Some((label, call, m)) = self.linuxcnc_later.pending.clone() else {
+        let Some((labels, call, m)) = self.linuxcnc_later.pending.clone() else {
             return false;
         };
         let column = b.words.first().map_or(1, |w| w.column);
         self.linuxcnc_later
             .moves
-            .push((label, call, b.line, column, m));
+            .push((labels, call, b.line, column, m));
         true
     }
 
@@ -4186,22 +4223,117 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn linuxcnc_later_arcs(&mut self, label: &[u8], sure: Option<i64>, keeps: bool, plain: bool) {
+        let via = self.linuxcnc_later.body_via.take();
+        let left = match sure {
+            Some(m @ 2..=3) => LaterLeft::Arc(m),
+            _ if plain => LaterLeft::Plain,
+            _ if keeps => LaterLeft::Keeps(self.linuxcnc_bodies.last().is_some_and(|b| b.6)),
+            _ => match via {
+                Some((l, clean))
+                    if self.linuxcnc_motion == super::tooling::LinuxCncMotion::Unknown
+                        && !self.linuxcnc_body_returns
+                        && !self.linuxcnc_body_distance.ends =>
+                {
+                    LaterLeft::Via(l, clean)
+                }
+                _ => LaterLeft::Unknown,
+            },
+        };
+        let bare = std::mem::take(&mut self.linuxcnc_later.body_bare).1;
+        let all = &mut self.linuxcnc_later.left;
+        all.retain(|e| e.0 != label);
+        all.push((label.to_vec(), left, bare));
+        if !self.linuxcnc_later.moves.is_empty() {
+            self.linuxcnc_later_settle();
+        }
+    }
+
+    /// What the body of `label` leaves of the mode its call found, as far as the
+    /// definitions read say ([`LaterLeft`]; None: not read yet), through its last call's,
+    /// and whether a move of its own is judged by the mode it found (a bare line before any
+    /// G word, in it or in the body its last call runs).
+    fn linuxcnc_later_left(&self, label: &[u8], depth: usize) -> Option<(LaterLeft, u8)> {
+        let left = self
+            .linuxcnc_later
+            .left
+            .iter()
+            .rev()
+            .find(|e| e.0 == label)?;
+        match &left.1 {
+            LaterLeft::Via(next, clean) if depth < 16 => {
+                let (then, bare) = self.linuxcnc_later_left(next, depth + 1)?;
+                match then {
+                    LaterLeft::Keeps(_) if !clean => Some((LaterLeft::Unknown, left.2)),
+                    other => Some((other, bare.max(left.2))),
+                }
+            }
+            LaterLeft::Via(..) => Some((LaterLeft::Unknown, left.2)),
+            other => Some((other.clone(), left.2)),
+        }
+    }
+
+    /// LinuxCNC: the moves held after the main program's calls of labels not read yet
+    /// ([`LaterCalls::moves`]) whose bodies are all read now, run in call order from the
+    /// caller's G2/G3: a body that leaves the mode it found keeps it, one that surely leaves
+    /// G0-G3 or a cycle sets it, any other leaves it not known; a body with a move of its own
+    /// before any G word, run under an arc or a mode not known, may be refused in itself.
+    /// The move after the calls in an arc (the caller's kept, or a body's G2/G3) is one with
+    /// no centre or radius ("R i j k words all missing for arc", interp_convert.cc
+    /// convert_arc; review 62b LG4: `G2 X1 Y0 I0.5 J0` / `o300 call` / `X2` / `M2` / `o300
+    /// sub` / `M8` / `o300 endsub`); after G0, G1 or a cycle nothing is said (review 62b F4:
+    /// a body of `G0 X0` or `G81 X1 Z-1 R2`, and `X2` runs in `rs274 -g`; review 63-lcnc63
+    /// N2: `o300 call` / `o301 call` / `X2` with o300's `G0 X0` and o301's `M8`; K8: o300's
+    /// last line `o301 call` of a `G0 X0` body); elsewhere (a G0 in a condition, a body's
+    /// own bare move) the move is judged as before (review 63-lcnc63 K12; review 75 F1b).
+    fn linuxcnc_later_settle(&mut self) {
         let moves = std::mem::take(&mut self.linuxcnc_later.moves);
-        let (these, rest): (Vec<_>, Vec<_>) = moves.into_iter().partition(|e| e.0 == label);
-        self.linuxcnc_later.moves = rest;
-        for (_, call, line, column, m) in these {
-            let leaves = match sure {
-                Some(m @ 2..=3) => format!("which leaves G{m} in force"),
-                None if keeps => format!("which leaves the G{m} before it in force"),
-                _ if !plain => format!("which may leave the G{m} before it in force"),
-                _ => continue,
+        for e in moves {
+            let (labels, call, line, column, m) = &e;
+            // (the mode after each call: Some(arc) for an arc, Some(0) for a line or
+            // cycle, None not known; and whether a body may be refused in itself)
+            let mut mode = Some((*m, false));
+            let mut decider = &labels[0];
+            let mut refused = false;
+            let mut waits = false;
+            for label in labels.iter().rev() {
+                let Some((left, bare)) = self.linuxcnc_later_left(label, 0) else {
+                    waits = true;
+                    break;
+                };
+                // (axis words alone under an arc or a mode not known; an arc's words under
+                // a line, a cycle or a mode not known: review 75 F3)
+                let arc = matches!(mode, Some((2 | 3, _)));
+                if bare == 2 && !arc || bare == 1 && mode.is_none_or(|(a, _)| a != 0) {
+                    refused = true;
+                    decider = label;
+                }
+                match left {
+                    LaterLeft::Keeps(_) => {}
+                    LaterLeft::Plain => mode = Some((0, true)),
+                    LaterLeft::Arc(a) => mode = Some((a, true)),
+                    _ => mode = None,
+                }
+                if !matches!(left, LaterLeft::Keeps(_)) && !refused {
+                    decider = label;
+                }
+            }
+            if waits {
+                self.linuxcnc_later.moves.push(e);
+                continue;
+            }
+            let leaves = match mode {
+                _ if refused => format!("which may leave the G{m} before it in force"),
+                Some((0, _)) => continue,
+                Some((a, true)) => format!("which leaves G{a} in force"),
+                Some(_) => format!("which leaves the G{m} before it in force"),
+                None => format!("which may leave the G{m} before it in force"),
             };
             let message = format!(
                 "arc without I J K (or R): none is given, whatever the plane (the call on \
                  line {call} runs {} written after it, {leaves})",
-                String::from_utf8_lossy(label)
+                String::from_utf8_lossy(decider)
             );
-            self.linuxcnc_later_report(message, line, column);
+            self.linuxcnc_later_report(message, *line, *column);
         }
     }
 
@@ -4381,6 +4513,13 @@ impl Checker {
             if at == self.stats.blocks {
                 self.linuxcnc_rate = rate;
                 self.linuxcnc_feed_rate = feed;
+                // (and the F word in force: a plain G1's rate, review 63-lcnc63 N3)
+                let (f, unknown, none_kept) = self.linuxcnc_f_before_sub;
+                let m = &mut self.machine;
+                m.state.feed = f;
+                let bit = crate::modal::bit(b'F');
+                m.state.unknown = m.state.unknown & !bit | if unknown { bit } else { 0 };
+                m.feed_none_kept = none_kept;
                 return;
             }
         }
@@ -4440,6 +4579,9 @@ impl Checker {
                 // (and rs274's feed rate, which its endsub gives back)
                 self.linuxcnc_rate_before_sub =
                     Some((None, self.linuxcnc_rate, self.linuxcnc_feed_rate));
+                let m = &self.machine;
+                let unknown = m.state.unknown & crate::modal::bit(b'F') != 0;
+                self.linuxcnc_f_before_sub = (m.state.feed, unknown, m.feed_none_kept);
                 let state = &self.machine.state;
                 let label = self.open_definition.as_ref().map(|o| o.2.clone());
                 self.linuxcnc_motion_before_sub = MotionBeforeSub {
@@ -4452,6 +4594,7 @@ impl Checker {
                 };
                 self.linuxcnc_body_returns = false;
                 self.linuxcnc_later.body_moded = false;
+                self.linuxcnc_later.body_bare = (false, 0);
                 self.linuxcnc_later.sub_line = self.stats.blocks;
                 self.linuxcnc_plane_unknown = true;
                 self.linuxcnc_plane_body_blocks.clear();
@@ -4493,7 +4636,7 @@ impl Checker {
             label,
             ..
         } = std::mem::take(&mut self.linuxcnc_motion_before_sub);
-        if !self.linuxcnc_later.moves.is_empty() {
+        {
             // (the mode the body surely leaves, or whether it writes none: no motion code,
             // G code of a value not known or call in it; review 63-lcnc63 F1)
             let sure = self
@@ -4507,9 +4650,9 @@ impl Checker {
                 && !self.linuxcnc_body_returns
                 && !self.linuxcnc_body_distance.ends;
             // (whether it surely leaves G0, G1 or a cycle: the move after the call runs in
-            // rs274, review 62b F4; elsewhere -- a call in it, a G0 in a condition -- it may
-            // keep the caller's G2/G3, and the move is judged as main did: review 63-lcnc63,
-            // K8, K12)
+            // rs274, review 62b F4; a last call leaves what its body leaves, review 63-lcnc63
+            // K8; elsewhere -- a G0 in a condition -- it may keep the caller's G2/G3, and the
+            // move is judged as main did: review 63-lcnc63 K12)
             let plain = matches!(
                 self.linuxcnc_motion,
                 LinuxCncMotion::Known(Some(0 | 10 | 730 | 740 | 810..=890))
@@ -4802,6 +4945,16 @@ impl Checker {
     /// its `sub` line opens an entry, each line of its body adds to it; and to the distance
     /// mode ([`BodyDistance`]), which its `endsub` closes.
     fn linuxcnc_body(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        let bare = &mut self.linuxcnc_later.body_bare;
+        if statement.is_none() && !bare.0 && self.linuxcnc_definition_flow.is_empty() {
+            if self.letters & crate::modal::bit(b'G') != 0 {
+                bare.0 = true;
+            } else if crate::modal::axis_places(self.letters) != 0 {
+                let bit = crate::modal::bit;
+                let arc = bit(b'I') | bit(b'J') | bit(b'K') | bit(b'R');
+                bare.1 = bare.1.max(if self.letters & arc != 0 { 2 } else { 1 });
+            }
+        }
         match statement {
             Some((true, name)) => {
                 if self.open_definition.is_some() {
@@ -6368,6 +6521,29 @@ pub(super) fn still_line(b: &BlockView<'_>) -> bool {
 /// run, of a label not read yet ([`LaterCalls::ends`]), held until the definition is read.
 pub(super) const PENDING_LATER: i64 = -2;
 
+/// LinuxCNC: the labels of the main program's calls in a row (no move, motion code or
+/// other o-word line between), the latest first: the mode after them is the latest body's,
+/// or, where it leaves the mode it found, the one before ([`Checker::linuxcnc_later_settle`]).
+pub(super) type LaterChain = Vec<Vec<u8>>;
+
+/// LinuxCNC: what a definition's body leaves of the motion mode its call found.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum LaterLeft {
+    /// G2 or G3, surely.
+    Arc(i64),
+    /// G0, G1 or a canned cycle, surely.
+    Plain,
+    /// The mode it found: it writes no motion code and calls nothing; whether every line of
+    /// it is still ([`still_line`]: no axis word, whose move depends on the mode found).
+    Keeps(bool),
+    /// What the body of its last call (the label) leaves, that call outside its conditions
+    /// and loops with no motion code after it; where that body keeps the mode, the mode
+    /// this body found where it wrote none before the call (true), else not known.
+    Via(Vec<u8>, bool),
+    /// Not known.
+    Unknown,
+}
+
 /// LinuxCNC: a call line's line and the axes before it ([`LaterCalls::still`]).
 pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9]);
 
@@ -6376,13 +6552,23 @@ pub(super) type StillAt = (usize, [Option<Dec>; 9], u32, [crate::modal::Drift; 9
 /// definition is read ([`Checker::linuxcnc_later_move`]).
 #[derive(Debug, Clone, Default)]
 pub(super) struct LaterCalls {
-    /// The call whose mode is still in force, by label, and its line: no o-word line, call,
-    /// motion code or possible M72 drop since.
-    /// The caller's G2 or G3 in force at it.
-    pub(super) pending: Option<(Vec<u8>, usize, i64)>,
-    /// The first move without a motion code or arc word after such a call: the label, the
+    /// The call whose mode is still in force, by label, and its line: no o-word line,
+    /// motion code or possible M72 drop since, and the labels of the calls in a row before
+    /// it, the latest first ([`LaterChain`]). The caller's G2 or G3 in force at it.
+    pub(super) pending: Option<(LaterChain, usize, i64)>,
+    /// The first move without a motion code or arc word after such a call: the labels, the
     /// call's line, the move's line and column, the caller's G2 or G3.
-    pub(super) moves: Vec<(Vec<u8>, usize, usize, usize, i64)>,
+    pub(super) moves: Vec<(LaterChain, usize, usize, usize, i64)>,
+    /// What each definition read leaves of the motion mode its call found, by label
+    /// ([`LaterLeft`]), for the moves held after calls in a row (review 63-lcnc63 N2, K8).
+    pub(super) left: Vec<(Vec<u8>, LaterLeft, u8)>,
+    /// The open definition's last o-word line is a call of this label, outside its
+    /// conditions and loops, and whether the body wrote no motion code before it.
+    pub(super) body_via: Option<(Vec<u8>, bool)>,
+    /// The open definition has read a G word (`.0`), and a line with axis words and no G
+    /// word before any (`.1`: 1, or 2 where it has an arc's I, J, K or R, which only an arc
+    /// found takes): a move the mode its call found judges (review 75 F1b).
+    pub(super) body_bare: (bool, u8),
     /// A call line of the main program whose call is of a definition read before it whose
     /// body moves no axis and calls nothing ([`still_line`]): its line, and
     /// the axes' positions, their unknown marks and drifts before the call forgot them.

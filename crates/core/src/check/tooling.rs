@@ -988,6 +988,9 @@ impl Checker {
             self.linuxcnc_motion = LinuxCncMotion::Unknown;
             self.linuxcnc_motion_plain = false;
             self.linuxcnc_later.pending = None;
+            // (a body's last call no longer decides its mode: review 75 F1, `o301 call` /
+            // `G#1 X1 Y0 I0.5 J0`)
+            self.linuxcnc_later.body_via = None;
         }
         // (a definition's body that may leave a mode other than G0-G3: its calls leave the
         // mode not known, `Checker::linuxcnc_motion_after_call`)
