@@ -1879,6 +1879,8 @@ def test_an_m72_restores_the_units_its_save_took(tmp_path):
     assert found("G20\nG0 X-500") == [("TG601", 4)]
     for body in ("M70\nG20\nM72\nG0 X-500", "M70\nS200\nM72 G20\nG0 X-500"):
         assert "PROGRAM_END" in rs274_output(tmp_path, program(body))
+
+
 # A work offset's parameter write on LinuxCNC (interp_convert.cc): `convert_coordinate_system`
 # loads the offset from #5221 + 20 * (n - 1)... only where the system selected is not the one
 # in force; `convert_setup` (G10 L2/L20) of the system in force loads every axis of it from
