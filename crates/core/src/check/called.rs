@@ -674,9 +674,20 @@ impl Checker {
                     self.call_works_unknown.insert(number);
                     self.call_work_kept(number, None);
                 }
+                // (its caller's calls not all seen yet, the called program beginning: run
+                // under the call's offset, its positions under it held to the file's end,
+                // said where the caller's calls all ran it in the units assumed; review 63
+                // F1's N1e: `O3000` / `G90 G55` / `M98 P2000` / `G21` / `M99` / `O2000` / `G0
+                // X-780.` / `M99` / `O1000` / `G21 G90 G55` / `M98 P3000` runs X-780. at -880)
                 None if Some(number) == starting => {
-                    self.call_works_unknown.insert(number);
-                    self.call_work_kept(number, None);
+                    let here = here.map(|mut here| {
+                        here.units_of = vec![caller];
+                        here
+                    });
+                    if here.is_none() {
+                        self.call_works_unknown.insert(number);
+                    }
+                    self.call_work_kept(number, here);
                 }
                 None => self.call_works_deferred.push((caller, number, here)),
             }
@@ -1055,6 +1066,28 @@ impl Checker {
         let found = std::mem::take(&mut self.found);
         for mut f in found {
             let mut numbers = std::mem::take(&mut f.pending_on);
+            // (under a call made by a program whose own calls were not all seen where the
+            // called one began: said where they all ran it in the units assumed)
+            if numbers
+                .iter()
+                .any(|&n| n <= super::limits::PENDING_CALLER_UNITS)
+            {
+                let assumed = self.config.modal.default_units;
+                if numbers.iter().any(|&n| {
+                    n <= super::limits::PENDING_CALLER_UNITS
+                        && !matches!(
+                            self.call_units.get(&(super::limits::PENDING_CALLER_UNITS - n)),
+                            Some(Some((units, _, _))) if *units == assumed
+                        )
+                }) {
+                    continue;
+                }
+                numbers.retain(|&n| n > super::limits::PENDING_CALLER_UNITS);
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
             // (a position under a subprogram's own offset after its own units code: judged
             // with the value its callers' G10 wrote before every call, review 60 F4)
             if numbers
@@ -2271,7 +2304,9 @@ impl Checker {
                         // (after a G54-G59 of the caller's own following such calls, held
                         // as its own positions are: review 62a F5)
                         if !f.pending_on.contains(&super::limits::PENDING_OWN) {
-                            f.pending_on = unread;
+                            f.pending_on
+                                .retain(|&m| m <= super::limits::PENDING_CALLER_UNITS);
+                            f.pending_on.extend(unread);
                         }
                     }
                 }
