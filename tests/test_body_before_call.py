@@ -476,3 +476,34 @@ def test_a_call_of_a_merged_program_whose_callers_come_later(tmp_path, units, x,
         programs = programs.replace("M98 P3000 / M30", "M30")
     prof = _wo2h(tmp_path) if profile == "wo2h" else _wo2(tmp_path)
     assert said(programs, prof) == expected
+
+
+_CALLER = "O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / G0 X800.{more} / M30 / O2000 / "
+
+
+def _spans(least, most, width):
+    return f"X spans {width} (from {least} to {most}), more than the travel -762 to 762: " \
+           "no work offset fits the program on this machine"
+
+
+@pytest.mark.parametrize("more, body, expected", [
+    # (g52l: the body, written after its call, leaves G52 X-1000.: X800. runs at -200, the
+    # span from -750 fits; it was "X spans 1550")
+    ("", "G52 X-1000. / M99", []),
+    # (g52p: it leaves G52 X10.: X800. runs at 810, the span 1560 with its true figure)
+    ("", "G52 X10. / M99", [("TG601", 7, 4, _spans(-750, 810, 1560))]),
+    # (both ends after the call: -200 and -1800, named by the later)
+    (" / G0 X-800.", "G52 X-1000. / M99", [("TG601", 8, 4, _spans(-1800, -200, 1600))]),
+    # (a body that leaves no G52: as read)
+    ("", "G0 X10. / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+    # (a G52 of a value not known, or one a program it calls later may end: as read,
+    # erring on the side of the alarm, as for a body read before its call)
+    ("", "G52 X#1 / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+    ("", "G52 X-1000. / M98 P3000 / M99 / O3000 / G52 X0 / M99",
+     [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+])
+def test_a_g52_a_body_written_after_its_call_leaves(tmp_path, more, body, expected):
+    """Review 63-unit63 F10 (g52l, g52p): the caller's spans after a call of a program not
+    read there kept apart from those before, the span across the call judged at the file's
+    end with the G52 that program leaves where it is known."""
+    assert said(_CALLER.format(more=more) + body, _wo2(tmp_path)) == expected

@@ -1088,6 +1088,22 @@ impl Checker {
                     continue;
                 }
             }
+            // (a span across a call of a program not read there: crate::check::leaves)
+            let leaves = |n: i64| n <= super::leaves::PENDING_LEAVES;
+            if numbers.iter().any(|&n| leaves(n)) {
+                if !numbers
+                    .iter()
+                    .filter(|&&n| leaves(n))
+                    .all(|&n| self.later_span_judged(n, &mut f))
+                {
+                    continue;
+                }
+                numbers.retain(|&n| !leaves(n));
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
             // (a position under a subprogram's own offset after its own units code: judged
             // with the value its callers' G10 wrote before every call, review 60 F4)
             if numbers
