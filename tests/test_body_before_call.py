@@ -507,3 +507,22 @@ def test_a_g52_a_body_written_after_its_call_leaves(tmp_path, more, body, expect
     read there kept apart from those before, the span across the call judged at the file's
     end with the G52 that program leaves where it is known."""
     assert said(_CALLER.format(more=more) + body, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("caller, expected", [
+    # (review 62a F6b, p31: O4000 runs X-780. under the G55 O1000 calls O3000 under: -880)
+    ("G21 G17 G90 G55 / G0 X0 Y0", [("TG601", 11, 5, "X goes to -880 in machine coordinates "
+                                     "(work -780 + G55 offset -100.0)")]),
+    ("G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P2 X0.",
+     [("TG601", 12, 5, "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a "
+                       "G10 before this call wrote it)")]),
+])
+def test_a_body_read_with_no_offset_called_by_another_two_deep(tmp_path, caller, expected):
+    """Review 62a F6b: a body read before its call with no work offset in force, called by
+    a program read apart with none in force either, runs under that one's caller's."""
+    programs = f"O4000 / G0 X-780. / M99 / O3000 / M98 P4000 / M99 / O1000 / {caller} / " \
+               "M98 P3000 / M30"
+    assert said(programs, _wo2(tmp_path)) == expected
+    # (a G52 of the middle program's before the call: not judged)
+    shifted = programs.replace("O3000 / M98", "O3000 / G52 X10. / M98")
+    assert said(shifted, _wo2(tmp_path)) == []
