@@ -465,6 +465,11 @@ _N1E = ("O3000 / G90 G55 / M98 P2000 / {units} / M99 / O2000 / G0 X{x} / M99 / O
     ("G20", "-27.", "G20", "", "wo2h", [("TG601", 8, 4, _MINUS_31)]),
     # (O3000 not called in the file: its units not known)
     ("G21", "-780.", "G21", "", "wo2-uncalled", []),
+    # (review 63 H230's form: on the inch profile the G21 main runs O2000's X-780. in
+    # millimetres, -30.7 inches: judged in them)
+    ("G21", "-780.", "G21", "", "wo2h",
+     [("TG601", 8, 4, "X goes to -34.708661 in machine coordinates (work -30.708661 + G55 "
+                      "offset -4.0)")]),
 ])
 def test_a_call_of_a_merged_program_whose_callers_come_later(tmp_path, units, x, main, after,
                                                              profile, expected):

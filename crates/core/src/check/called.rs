@@ -37,7 +37,7 @@
 use super::limits::Written;
 use super::{Checker, Finding, Placed, Span};
 use crate::decimal::Dec;
-use crate::modal::AXES;
+use crate::modal::{Units, AXES};
 use crate::rules::Rule;
 
 /// What names a subprogram read before its calls: a FANUC's or a Haas's O number, a
@@ -1073,14 +1073,40 @@ impl Checker {
                 .any(|&n| n <= super::limits::PENDING_CALLER_UNITS)
             {
                 let assumed = self.config.modal.default_units;
-                if numbers.iter().any(|&n| {
-                    n <= super::limits::PENDING_CALLER_UNITS
-                        && !matches!(
-                            self.call_units.get(&(super::limits::PENDING_CALLER_UNITS - n)),
-                            Some(Some((units, _, _))) if *units == assumed
-                        )
-                }) {
-                    continue;
+                let to_profile = |units: Units| {
+                    match (units, self.config.limit_units) {
+                        (Units::Inch, Units::Metric) => 25.4,
+                        (Units::Metric, Units::Inch) => 1.0 / 25.4,
+                        _ => 1.0,
+                    }
+                };
+                // (each caller's calls all in one unit system: the factor from the units
+                // assumed to theirs, 1 where the same; None where not known)
+                let mut factor = Some(1.0);
+                for &n in numbers
+                    .iter()
+                    .filter(|&&n| n <= super::limits::PENDING_CALLER_UNITS)
+                {
+                    factor = match (
+                        factor,
+                        self.call_units.get(&(super::limits::PENDING_CALLER_UNITS - n)),
+                    ) {
+                        (Some(r), Some(Some((units, _, _)))) => {
+                            let here = to_profile(*units) / to_profile(assumed);
+                            (r == 1.0 || r == here).then_some(here)
+                        }
+                        _ => None,
+                    };
+                }
+                match factor {
+                    Some(r) if r == 1.0 => {}
+                    // (run in the other units: judged again in them, review 63 F1's H230
+                    // on an inch profile, a G21 caller: X-780. at -34.7 inches)
+                    Some(r) => match self.units_rejudged(f, r) {
+                        Some(f2) => f = f2,
+                        None => continue,
+                    },
+                    None => continue,
                 }
                 numbers.retain(|&n| n > super::limits::PENDING_CALLER_UNITS);
                 if numbers.is_empty() {
@@ -1202,6 +1228,52 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// A position `f` under a work offset read in units `r` times those it runs in
+    /// ([`super::limits::PENDING_CALLER_UNITS`]): judged again in those (its work position
+    /// times `r`, the offset's value as read), None where within the travel or not known.
+    fn units_rejudged(&self, mut f: Finding, r: f64) -> Option<Finding> {
+        let Placed::Offset {
+            place, work, at, ..
+        } = f.placed
+        else {
+            return None;
+        };
+        let (low, high) = self.travel.of_place(usize::from(place))?;
+        // (the machine position said, as read: the offset's value is it less the work one)
+        let said = format!("{} goes to ", AXES[usize::from(place)] as char);
+        let rest = f.message.strip_prefix(&said)?;
+        let machine: f64 = rest.split(' ').next()?.parse().ok()?;
+        let value = machine - at;
+        let (work_at, machine_at) = (at * r, at * r + value);
+        if (low - 1e-9..=high + 1e-9).contains(&machine_at) {
+            return None;
+        }
+        let old = format!(
+            "{said}{} in machine coordinates (work {} + G{work} offset ",
+            super::round6(machine),
+            super::round6(at)
+        );
+        let new = format!(
+            "{said}{} in machine coordinates (work {} + G{work} offset ",
+            super::round6(machine_at),
+            super::round6(work_at)
+        );
+        if !f.message.starts_with(&old) {
+            return None;
+        }
+        f.message = f.message.replacen(&old, &new, 1);
+        f.placed = Placed::Offset {
+            place,
+            work,
+            at: work_at,
+            line: match f.placed {
+                Placed::Offset { line, .. } => line,
+                _ => f.line,
+            },
+        };
+        Some(f)
     }
 
     /// A finding `f` marked [`super::limits::PENDING_CALLS_WRITTEN`] (`marks`): where every
