@@ -1073,12 +1073,10 @@ impl Checker {
                 .any(|&n| n <= super::limits::PENDING_CALLER_UNITS)
             {
                 let assumed = self.config.modal.default_units;
-                let to_profile = |units: Units| {
-                    match (units, self.config.limit_units) {
-                        (Units::Inch, Units::Metric) => 25.4,
-                        (Units::Metric, Units::Inch) => 1.0 / 25.4,
-                        _ => 1.0,
-                    }
+                let to_profile = |units: Units| match (units, self.config.limit_units) {
+                    (Units::Inch, Units::Metric) => 25.4,
+                    (Units::Metric, Units::Inch) => 1.0 / 25.4,
+                    _ => 1.0,
                 };
                 // (each caller's calls all in one unit system: the factor from the units
                 // assumed to theirs, 1 where the same; None where not known)
@@ -1089,7 +1087,8 @@ impl Checker {
                 {
                     factor = match (
                         factor,
-                        self.call_units.get(&(super::limits::PENDING_CALLER_UNITS - n)),
+                        self.call_units
+                            .get(&(super::limits::PENDING_CALLER_UNITS - n)),
                     ) {
                         (Some(r), Some(Some((units, _, _)))) => {
                             let here = to_profile(*units) / to_profile(assumed);
@@ -1099,14 +1098,14 @@ impl Checker {
                     };
                 }
                 match factor {
-                    Some(r) if r == 1.0 => {}
+                    None => continue,
                     // (run in the other units: judged again in them, review 63 F1's H230
                     // on an inch profile, a G21 caller: X-780. at -34.7 inches)
-                    Some(r) => match self.units_rejudged(f, r) {
+                    Some(r) if r != 1.0 => match self.units_rejudged(f, r) {
                         Some(f2) => f = f2,
                         None => continue,
                     },
-                    None => continue,
+                    Some(_) => {}
                 }
                 numbers.retain(|&n| n > super::limits::PENDING_CALLER_UNITS);
                 if numbers.is_empty() {

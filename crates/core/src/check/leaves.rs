@@ -134,7 +134,8 @@ impl Checker {
         let found = self.found.len();
         self.span_exceeded(AXES[i], (least, most), (low, high), (line, column), under);
         if let Some(f) = self.found.get_mut(found) {
-            f.pending_on.push(PENDING_LEAVES - (k as i64 * 16 + i as i64));
+            f.pending_on
+                .push(PENDING_LEAVES - (k as i64 * 16 + i as i64));
         }
     }
 
@@ -162,8 +163,7 @@ impl Checker {
                 },
                 None => before,
             };
-            let said =
-                w.joined_said & 1 << i != 0 || span.most - span.least > high - low + 1e-9;
+            let said = w.joined_said & 1 << i != 0 || span.most - span.least > high - low + 1e-9;
             self.spans[i] = Some(Span { said, ..span });
         }
         self.later_shifts.push(*w);

@@ -3126,7 +3126,11 @@ impl Checker {
             return;
         }
         // (after a call of a program not read there: crate::check::leaves)
-        if self.later_shift.as_ref().is_some_and(|w| w.watched & 1 << i != 0) {
+        if self
+            .later_shift
+            .as_ref()
+            .is_some_and(|w| w.watched & 1 << i != 0)
+        {
             let column = column();
             self.later_span_grew(i, at, said_outside, (line, column), (low, high), under);
             return;

@@ -42,9 +42,9 @@ pub use structure::nested_comment;
 // the rules, by family
 mod after;
 mod called;
-mod leaves;
 mod codes;
 mod formats;
+mod leaves;
 mod limits;
 mod link;
 mod motion;

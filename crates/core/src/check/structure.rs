@@ -579,7 +579,7 @@ impl Checker {
                 && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
                 // (a program run under a call whose caller's units are not known yet: its
                 // offset held, not passed on to its own calls)
-                && !self.work_call.as_ref().is_some_and(|w| !w.units_of.is_empty())
+                && self.work_call.as_ref().is_none_or(|w| w.units_of.is_empty())
         });
         // a G66 makes no call here: it registers the macro, run after each later block that
         // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
