@@ -448,41 +448,6 @@ def test_a_carried_g52_s_units_are_its_last_g52_s_of_each_axis(tmp_path, program
     assert said(programs, _wo2(tmp_path)) == expected
 
 
-_N1E = ("O3000 / G90 G55 / M98 P2000 / {units} / M99 / O2000 / G0 X{x} / M99 / O1000 / "
-        "{main} G17 G90 G55 / G0 X0 Y0 / M98 P3000 / M30{after}")
-
-
-@pytest.mark.parametrize("units, x, main, after, profile, expected", [
-    # (review 63 F1's N1e: O2000 written between the merged O3000 and the main, whose G21
-    # call runs O3000, and so O2000, in the millimetres assumed: X-780. at -880)
-    ("G21", "-780.", "G21", "", "wo2",
-     [("TG601", 8, 4, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
-    # (a program in inches calls O3000 too: its units not known, nothing said)
-    ("G21", "-780.", "G21", " / O4000 / G20 / M98 P3000 / M30", "wo2", []),
-    # (review 62a F12's shape on an inch profile: a G21 main runs X-27. in millimetres, no
-    # "-31"; a G20 main in the inches assumed, "-31")
-    ("G20", "-27.", "G21", "", "wo2h", []),
-    ("G20", "-27.", "G20", "", "wo2h", [("TG601", 8, 4, _MINUS_31)]),
-    # (O3000 not called in the file: its units not known)
-    ("G21", "-780.", "G21", "", "wo2-uncalled", []),
-    # (review 63 H230's form: on the inch profile the G21 main runs O2000's X-780. in
-    # millimetres, -30.7 inches: judged in them)
-    ("G21", "-780.", "G21", "", "wo2h",
-     [("TG601", 8, 4, "X goes to -34.708661 in machine coordinates (work -30.708661 + G55 "
-                      "offset -4.0)")]),
-])
-def test_a_call_of_a_merged_program_whose_callers_come_later(tmp_path, units, x, main, after,
-                                                             profile, expected):
-    """Review 63 F1's N1e: a merged subprogram's call of a program written before the main
-    program that calls it: the callee's positions under that call's offset held to the file's
-    end, said where every call of the caller ran it in the units assumed, dropped where not."""
-    programs = _N1E.format(units=units, x=x, main=main, after=after)
-    if profile == "wo2-uncalled":
-        programs = programs.replace("M98 P3000 / M30", "M30")
-    prof = _wo2h(tmp_path) if profile == "wo2h" else _wo2(tmp_path)
-    assert said(programs, prof) == expected
-
-
 _CALLER = "O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / G0 X800.{more} / M30 / O2000 / "
 
 
@@ -506,6 +471,8 @@ def _spans(least, most, width):
     ("", "G52 X#1 / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
     ("", "G52 X-1000. / M98 P3000 / M99 / O3000 / G52 X0 / M99",
      [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+    # (review 75 F7: a body that leaves inches too: X800. is 20,320 mm, as read)
+    ("", "G20 / G52 X-40. / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
 ])
 def test_a_g52_a_body_written_after_its_call_leaves(tmp_path, more, body, expected):
     """Review 63-unit63 F10 (g52l, g52p): the caller's spans after a call of a program not

@@ -37,7 +37,7 @@
 use super::limits::Written;
 use super::{Checker, Finding, Placed, Span};
 use crate::decimal::Dec;
-use crate::modal::{Units, AXES};
+use crate::modal::AXES;
 use crate::rules::Rule;
 
 /// What names a subprogram read before its calls: a FANUC's or a Haas's O number, a
@@ -674,20 +674,9 @@ impl Checker {
                     self.call_works_unknown.insert(number);
                     self.call_work_kept(number, None);
                 }
-                // (its caller's calls not all seen yet, the called program beginning: run
-                // under the call's offset, its positions under it held to the file's end,
-                // said where the caller's calls all ran it in the units assumed; review 63
-                // F1's N1e: `O3000` / `G90 G55` / `M98 P2000` / `G21` / `M99` / `O2000` / `G0
-                // X-780.` / `M99` / `O1000` / `G21 G90 G55` / `M98 P3000` runs X-780. at -880)
                 None if Some(number) == starting => {
-                    let here = here.map(|mut here| {
-                        here.units_of = vec![caller];
-                        here
-                    });
-                    if here.is_none() {
-                        self.call_works_unknown.insert(number);
-                    }
-                    self.call_work_kept(number, here);
+                    self.call_works_unknown.insert(number);
+                    self.call_work_kept(number, None);
                 }
                 None => self.call_works_deferred.push((caller, number, here)),
             }
@@ -1066,53 +1055,6 @@ impl Checker {
         let found = std::mem::take(&mut self.found);
         for mut f in found {
             let mut numbers = std::mem::take(&mut f.pending_on);
-            // (under a call made by a program whose own calls were not all seen where the
-            // called one began: said where they all ran it in the units assumed)
-            if numbers
-                .iter()
-                .any(|&n| n <= super::limits::PENDING_CALLER_UNITS)
-            {
-                let assumed = self.config.modal.default_units;
-                let to_profile = |units: Units| match (units, self.config.limit_units) {
-                    (Units::Inch, Units::Metric) => 25.4,
-                    (Units::Metric, Units::Inch) => 1.0 / 25.4,
-                    _ => 1.0,
-                };
-                // (each caller's calls all in one unit system: the factor from the units
-                // assumed to theirs, 1 where the same; None where not known)
-                let mut factor = Some(1.0);
-                for &n in numbers
-                    .iter()
-                    .filter(|&&n| n <= super::limits::PENDING_CALLER_UNITS)
-                {
-                    factor = match (
-                        factor,
-                        self.call_units
-                            .get(&(super::limits::PENDING_CALLER_UNITS - n)),
-                    ) {
-                        (Some(r), Some(Some((units, _, _)))) => {
-                            let here = to_profile(*units) / to_profile(assumed);
-                            (r == 1.0 || r == here).then_some(here)
-                        }
-                        _ => None,
-                    };
-                }
-                match factor {
-                    None => continue,
-                    // (run in the other units: judged again in them, review 63 F1's H230
-                    // on an inch profile, a G21 caller: X-780. at -34.7 inches)
-                    Some(r) if r != 1.0 => match self.units_rejudged(f, r) {
-                        Some(f2) => f = f2,
-                        None => continue,
-                    },
-                    Some(_) => {}
-                }
-                numbers.retain(|&n| n > super::limits::PENDING_CALLER_UNITS);
-                if numbers.is_empty() {
-                    self.found.push(f);
-                    continue;
-                }
-            }
             // (a span across a call of a program not read there: crate::check::leaves)
             let leaves = |n: i64| n <= super::leaves::PENDING_LEAVES;
             if numbers.iter().any(|&n| leaves(n)) {
@@ -1227,52 +1169,6 @@ impl Checker {
                 }
             }
         }
-    }
-
-    /// A position `f` under a work offset read in units `r` times those it runs in
-    /// ([`super::limits::PENDING_CALLER_UNITS`]): judged again in those (its work position
-    /// times `r`, the offset's value as read), None where within the travel or not known.
-    fn units_rejudged(&self, mut f: Finding, r: f64) -> Option<Finding> {
-        let Placed::Offset {
-            place, work, at, ..
-        } = f.placed
-        else {
-            return None;
-        };
-        let (low, high) = self.travel.of_place(usize::from(place))?;
-        // (the machine position said, as read: the offset's value is it less the work one)
-        let said = format!("{} goes to ", AXES[usize::from(place)] as char);
-        let rest = f.message.strip_prefix(&said)?;
-        let machine: f64 = rest.split(' ').next()?.parse().ok()?;
-        let value = machine - at;
-        let (work_at, machine_at) = (at * r, at * r + value);
-        if (low - 1e-9..=high + 1e-9).contains(&machine_at) {
-            return None;
-        }
-        let old = format!(
-            "{said}{} in machine coordinates (work {} + G{work} offset ",
-            super::round6(machine),
-            super::round6(at)
-        );
-        let new = format!(
-            "{said}{} in machine coordinates (work {} + G{work} offset ",
-            super::round6(machine_at),
-            super::round6(work_at)
-        );
-        if !f.message.starts_with(&old) {
-            return None;
-        }
-        f.message = f.message.replacen(&old, &new, 1);
-        f.placed = Placed::Offset {
-            place,
-            work,
-            at: work_at,
-            line: match f.placed {
-                Placed::Offset { line, .. } => line,
-                _ => f.line,
-            },
-        };
-        Some(f)
     }
 
     /// A finding `f` marked [`super::limits::PENDING_CALLS_WRITTEN`] (`marks`): where every
@@ -2407,9 +2303,7 @@ impl Checker {
                         // (after a G54-G59 of the caller's own following such calls, held
                         // as its own positions are: review 62a F5)
                         if !f.pending_on.contains(&super::limits::PENDING_OWN) {
-                            f.pending_on
-                                .retain(|&m| m <= super::limits::PENDING_CALLER_UNITS);
-                            f.pending_on.extend(unread);
+                            f.pending_on = unread;
                         }
                     }
                 }

@@ -11,8 +11,8 @@ use super::{Checker, Finding, Span, AXES};
 
 /// Among a finding's [`Finding::pending_on`], `PENDING_LEAVES - (k * 16 + i)`: a span of
 /// axis place `i` said across a call of a program not read there, held with
-/// [`Checker::later_shifts`]`[k]`. Above every [`super::limits::PENDING_CALLER_UNITS`] mark,
-/// below every [`super::limits::PENDING_CALLS_WRITTEN`] mark; taken off before those are read.
+/// [`Checker::later_shifts`]`[k]`. Below every [`super::limits::PENDING_CALLS_WRITTEN`] mark;
+/// taken off before those are read.
 pub(super) const PENDING_LEAVES: i64 = -(1 << 45);
 
 /// The spans kept apart after a call of a program not read there ([`Checker::later_shift`]).
@@ -33,10 +33,13 @@ pub(super) struct LaterShift {
     /// The span before and after the call together, read with no shift between, said
     /// (held) or past the travel.
     joined_said: u16,
-    /// The line and column of the position that last made the span after the call reach
-    /// its least and its most.
+    /// The least and most position after the call of each axis, and the line and column of
+    /// the first position that reached it (bits `2 * i`, `2 * i + 1` of `reached`: seen).
+    least: [f64; 9],
+    most: [f64; 9],
     least_at: [(usize, usize); 9],
     most_at: [(usize, usize); 9],
+    reached: u32,
 }
 
 /// What the programs of a [`LaterShift`] leave on one axis.
@@ -111,11 +114,14 @@ impl Checker {
         let Some(before) = w.before[i] else {
             return;
         };
-        if at <= after.least {
-            w.least_at[i] = (line, column);
+        // (each end named by the first position that reached it)
+        if w.reached & 1 << (2 * i) == 0 || at < w.least[i] {
+            (w.least[i], w.least_at[i]) = (at, (line, column));
+            w.reached |= 1 << (2 * i);
         }
-        if at >= after.most {
-            w.most_at[i] = (line, column);
+        if w.reached & 1 << (2 * i + 1) == 0 || at > w.most[i] {
+            (w.most[i], w.most_at[i]) = (at, (line, column));
+            w.reached |= 1 << (2 * i + 1);
         }
         let width = high - low + 1e-9;
         if said {
@@ -181,6 +187,10 @@ impl Checker {
         let mut leaves = Leaves::Nothing;
         for n in &w.programs {
             let here = match self.shift_ends.get(n) {
+                // (it leaves units other than its calls', a tool length offset, or may not
+                // return to the call: after.rs; review 75 F7: `G20` / `G52 X-40.` / `M99`
+                // leaves the caller's X800. in inches)
+                _ if self.after_unsure.contains(n) => Leaves::Unknown,
                 // (not in the file: what it does is not followed, as before; or in it,
                 // leaving no shift)
                 None => Leaves::Nothing,

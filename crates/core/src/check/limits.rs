@@ -131,14 +131,6 @@ pub(super) const PENDING_CALLED: i64 = -2;
 /// Below every [`PENDING_CALLED`] mark.
 pub(super) const PENDING_CALLS_WRITTEN: i64 = -(1 << 40);
 
-/// Among a finding's [`Finding::pending_on`], `PENDING_CALLER_UNITS - n`: a position of a
-/// program run under the work offset of a call made by program `n`, a subprogram read in
-/// the units assumed (the reset state's) whose own calls were not all seen where the called
-/// program began: said at the file's end where every call of `n` ran it in those units,
-/// dropped where not (review 63 F1's N1e against review 62a F12's h80). Below every
-/// [`PENDING_CALLS_WRITTEN`] mark, taken off before those are read.
-pub(super) const PENDING_CALLER_UNITS: i64 = -(1 << 50);
-
 /// The shifts of the coordinates (G52, G92, a lathe's G50) followed under TG601's spans
 /// ([`Checker::shift_spans`]): each axis's span is kept in the coordinates of the file's start
 /// (the work system, with no shift of the program's own), where a position of the program's
@@ -3407,14 +3399,6 @@ impl Checker {
             if let Some(n) = self.units_merged {
                 if matches!(placed, super::Placed::Offset { .. }) && self.work_guessed.is_none() {
                     f.pending_on.push(PENDING_CALLS_WRITTEN - n);
-                }
-            }
-            // (under a call whose caller's units are not known yet: review 63 F1's N1e)
-            if let Some(w) = self.work_call.as_ref().filter(|w| !w.units_of.is_empty()) {
-                if matches!(placed, super::Placed::Offset { work, .. } if i64::from(work) == w.work)
-                {
-                    f.pending_on
-                        .extend(w.units_of.iter().map(|&c| PENDING_CALLER_UNITS - c));
                 }
             }
         }

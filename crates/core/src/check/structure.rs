@@ -577,9 +577,6 @@ impl Checker {
                 // (`M98 P2000 Q10` enters the body at its N10, not at its first block: 0i-F
                 // Operator's Manual, "Subprogram call (M98)"; review 61a F12)
                 && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
-                // (a program run under a call whose caller's units are not known yet: its
-                // offset held, not passed on to its own calls)
-                && self.work_call.as_ref().is_none_or(|w| w.units_of.is_empty())
         });
         // a G66 makes no call here: it registers the macro, run after each later block that
         // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
@@ -604,7 +601,6 @@ impl Checker {
                 written: self.offsets_written.clone(),
                 call,
                 line: b.line,
-                units_of: Vec::new(),
             }
         });
         if assumed && here.is_some() {
@@ -702,11 +698,6 @@ impl Checker {
                         if a.outside != b.outside {
                             a.outside = [0; 9];
                         }
-                        for &c in &b.units_of {
-                            if !a.units_of.contains(&c) {
-                                a.units_of.push(c);
-                            }
-                        }
                     }
                     _ => *before = None,
                 }
@@ -763,7 +754,6 @@ impl Checker {
             lost_before: self.offsets_lost,
             outside_before: self.outside,
             length_before: (self.machine.state.length_offset, self.length_decimal),
-            units_of: c.units_of.clone(),
         };
         self.offsets_written = c.written.clone();
         self.work = Some(w.work);
@@ -6032,10 +6022,6 @@ pub(super) struct CallWork {
     written: super::limits::Written,
     call: String,
     line: usize,
-    /// The callers whose own units were not known where the program began: the call was
-    /// made by a merged subprogram read in the units assumed (the reset state's), right only
-    /// where its own calls run it in those ([`super::limits::PENDING_CALLER_UNITS`]).
-    pub(super) units_of: Vec<i64>,
 }
 
 /// A program written after its calls read under their work offset ([`Checker::work_call`]):
@@ -6049,8 +6035,6 @@ pub(super) struct WorkCall {
     lost_before: bool,
     outside_before: [i8; 9],
     length_before: (i64, bool),
-    /// [`CallWork::units_of`]: its positions under the call's offset held to the file's end.
-    pub(super) units_of: Vec<i64>,
 }
 
 impl WorkCall {
