@@ -25,6 +25,10 @@ pub(super) struct LaterShift {
     factor: f64,
     /// The caller's local shift (G52) of each axis at the call: the body's G52 replaces it.
     local: [f64; 9],
+    /// The value of each axis of the work offset in force at the call, where it is the
+    /// profile's (selected, no G10, shift or loss before): a position beyond the travel under
+    /// it keeps the span as read.
+    offset: [Option<f64>; 9],
     /// The axes kept apart (bit `i`: a span before the call, not said).
     pub(super) watched: u16,
     /// Each axis's span before the call, and after it (until the watch ends).
@@ -76,6 +80,19 @@ impl Checker {
             local: self.shifts.local,
             ..LaterShift::default()
         };
+        if let Some(work) = self.work.filter(|_| {
+            !self.offsets_lost
+                && !self.offsets_written.any()
+                && !self.offsets_written.moved
+                && self.work_guessed.is_none()
+                && !self.shifts_on()
+        }) {
+            for &(g, axis, value) in &self.config.work_offsets {
+                if let Some(i) = AXES.iter().position(|&a| a == axis).filter(|_| g == work) {
+                    w.offset[i] = Some(value.to_f64());
+                }
+            }
+        }
         for i in 0..AXES.len() {
             if self.travel.of_place(i).is_none() || self.shifts.local_unknown & 1 << i != 0 {
                 continue;
@@ -220,14 +237,18 @@ impl Checker {
             return true;
         };
         let (least, most, at) = match leaves {
-            Leaves::Nothing => return true,
+            Leaves::Nothing | Leaves::By(0.0) => return true,
             Leaves::By(by) => {
                 let (least, most) = (
                     before.least.min(after.least + by),
                     before.most.max(after.most + by),
                 );
                 if most - least <= high - low + 1e-9 {
-                    return false;
+                    // (a position after the call beyond the travel under the call's offset:
+                    // the alarm kept as read; review 75 F7's L6)
+                    let out = |at: f64| at < low - 1e-9 || at > high + 1e-9;
+                    return w.offset[i]
+                        .is_some_and(|v| out(after.least + by + v) || out(after.most + by + v));
                 }
                 // (named by the position after the call that ends it, the later one where
                 // both ends are after the call)
