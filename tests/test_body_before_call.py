@@ -446,3 +446,55 @@ def test_a_carried_g52_s_units_are_its_last_g52_s_of_each_axis(tmp_path, program
     read in (the body's own, exact, or its caller's where only assumed); a G52 carried from a
     body's own units stays exact through a caller with none of its own."""
     assert said(programs, _wo2(tmp_path)) == expected
+
+
+_CALLER = "O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / G0 X800.{more} / M30 / O2000 / "
+
+
+def _spans(least, most, width):
+    return f"X spans {width} (from {least} to {most}), more than the travel -762 to 762: " \
+           "no work offset fits the program on this machine"
+
+
+@pytest.mark.parametrize("more, body, expected", [
+    # (g52l: the body, written after its call, leaves G52 X-1000.: X800. runs at -200, the
+    # span from -750 fits; it was "X spans 1550")
+    ("", "G52 X-1000. / M99", []),
+    # (g52p: it leaves G52 X10.: X800. runs at 810, the span 1560 with its true figure)
+    ("", "G52 X10. / M99", [("TG601", 7, 4, _spans(-750, 810, 1560))]),
+    # (both ends after the call: -200 and -1800, named by the later)
+    (" / G0 X-800.", "G52 X-1000. / M99", [("TG601", 8, 4, _spans(-1800, -200, 1600))]),
+    # (a body that leaves no G52: as read)
+    ("", "G0 X10. / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+    # (a G52 of a value not known, or one a program it calls later may end: as read,
+    # erring on the side of the alarm, as for a body read before its call)
+    ("", "G52 X#1 / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+    ("", "G52 X-1000. / M98 P3000 / M99 / O3000 / G52 X0 / M99",
+     [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+    # (review 75 F7: a body that leaves inches too: X800. is 20,320 mm, as read)
+    ("", "G20 / G52 X-40. / M99", [("TG601", 7, 4, _spans(-750, 800, 1550))]),
+])
+def test_a_g52_a_body_written_after_its_call_leaves(tmp_path, more, body, expected):
+    """Review 63-unit63 F10 (g52l, g52p): the caller's spans after a call of a program not
+    read there kept apart from those before, the span across the call judged at the file's
+    end with the G52 that program leaves where it is known."""
+    assert said(_CALLER.format(more=more) + body, _wo2(tmp_path)) == expected
+
+
+@pytest.mark.parametrize("caller, expected", [
+    # (review 62a F6b, p31: O4000 runs X-780. under the G55 O1000 calls O3000 under: -880)
+    ("G21 G17 G90 G55 / G0 X0 Y0", [("TG601", 11, 5, "X goes to -880 in machine coordinates "
+                                     "(work -780 + G55 offset -100.0)")]),
+    ("G21 G17 G90 G55 / G0 X0 Y0 / G10 L2 P2 X0.",
+     [("TG601", 12, 5, "X goes to -780 in machine coordinates (work -780 + G55 offset 0 as a "
+                       "G10 before this call wrote it)")]),
+])
+def test_a_body_read_with_no_offset_called_by_another_two_deep(tmp_path, caller, expected):
+    """Review 62a F6b: a body read before its call with no work offset in force, called by
+    a program read apart with none in force either, runs under that one's caller's."""
+    programs = f"O4000 / G0 X-780. / M99 / O3000 / M98 P4000 / M99 / O1000 / {caller} / " \
+               "M98 P3000 / M30"
+    assert said(programs, _wo2(tmp_path)) == expected
+    # (a G52 of the middle program's before the call: not judged)
+    shifted = programs.replace("O3000 / M98", "O3000 / G52 X10. / M98")
+    assert said(shifted, _wo2(tmp_path)) == []

@@ -1055,6 +1055,22 @@ impl Checker {
         let found = std::mem::take(&mut self.found);
         for mut f in found {
             let mut numbers = std::mem::take(&mut f.pending_on);
+            // (a span across a call of a program not read there: crate::check::leaves)
+            let leaves = |n: i64| n <= super::leaves::PENDING_LEAVES;
+            if numbers.iter().any(|&n| leaves(n)) {
+                if !numbers
+                    .iter()
+                    .filter(|&&n| leaves(n))
+                    .all(|&n| self.later_span_judged(n, &mut f))
+                {
+                    continue;
+                }
+                numbers.retain(|&n| !leaves(n));
+                if numbers.is_empty() {
+                    self.found.push(f);
+                    continue;
+                }
+            }
             // (a position under a subprogram's own offset after its own units code: judged
             // with the value its callers' G10 wrote before every call, review 60 F4)
             if numbers
@@ -1883,6 +1899,22 @@ impl Checker {
         }
         if self.early_on {
             self.early_nested(p, r, &shift, at);
+            // (its positions read with no work offset in force run, in a program read apart
+            // with none in force either, under that one's caller's: kept with its own, in
+            // the same units and mode and under no shift; review 62a F6b: `O4000` / `G0
+            // X-780.` / `M99` / `O3000` / `M98 P4000` / `M99`, O3000 called under G55, runs
+            // at -880)
+            if self.work_unplaced
+                && r == 1.0
+                && known
+                && call.shift.is_some_and(|s| s.iter().all(|v| *v == 0.0))
+            {
+                for i in 0..AXES.len() {
+                    for u in p.body.unplaced[i].into_iter().flatten() {
+                        self.unplaced_at(i, u.at, u.line);
+                    }
+                }
+            }
         }
         if !known
             && !p.mode_said

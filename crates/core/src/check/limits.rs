@@ -146,10 +146,10 @@ pub(super) struct Shifts {
     total: [f64; 9],
     /// The part of `total` that is a FANUC or Haas mill's local coordinate system (G52): its
     /// zero in the work system. A G52 replaces it; a G92 keeps the rest.
-    local: [f64; 9],
+    pub(super) local: [f64; 9],
     /// The axes (bit `i` for `AXES[i]`) whose local shift is not known: a G52 of theirs shifts
     /// by an amount not known here.
-    local_unknown: u16,
+    pub(super) local_unknown: u16,
     /// Whether the note of a shift not followed (TG140) was said (once per file).
     noted: bool,
     /// The note of an end of the program that started spans again ([`Checker::shift_end`]):
@@ -662,6 +662,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn shift_carried(&mut self, number: i64, surely: bool) {
+        self.later_shift_closed();
         let Some(end) = self.shift_ends.get(&number).copied() else {
             return;
         };
@@ -1498,6 +1499,7 @@ impl Checker {
                 // go on as they were (review 24, finding 1).
                 if changed != 0 {
                     self.early_merge();
+                    self.later_shift_closed();
                 }
                 for k in (0..AXES.len()).filter(|&k| changed & 1 << k != 0) {
                     if self.frames.saving & 1 << k == 0 {
@@ -2012,6 +2014,9 @@ impl Checker {
                     || (code == 92 && !fanuc_lathe)
                     || (code == 50 && fanuc_lathe));
             let axes = crate::modal::axis_places(self.values.given()) != 0;
+            if shift && self.later_shift.is_some() {
+                self.later_shift_closed();
+            }
             if self.record_path {
                 let (on, _) = frame_bits(
                     v,
@@ -2264,6 +2269,7 @@ impl Checker {
     /// `local_lost`: the shift may have set or ended a G52's local shift of the axis. Whether
     /// a span of an axis with a travel was dropped (what the note says).
     fn restart_span(&mut self, i: usize, local_lost: bool) -> bool {
+        self.later_shift_closed();
         // (a program read apart from those before it is read as before from here)
         self.early_merge();
         // (a call's shift kept for the end is in the coordinates before it)
@@ -2289,6 +2295,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn shift_end(&mut self, b: &BlockView<'_>) {
+        self.later_shift_closed();
         let ends = !self.values.end_unsure && self.values.ms.iter().any(|&m| m == 2 || m == 30);
         if !ends {
             return;
@@ -3175,6 +3182,16 @@ impl Checker {
             }
             return;
         }
+        // (after a call of a program not read there: crate::check::leaves)
+        if self
+            .later_shift
+            .as_ref()
+            .is_some_and(|w| w.watched & 1 << i != 0)
+        {
+            let column = column();
+            self.later_span_grew(i, at, said_outside, (line, column), (low, high), under);
+            return;
+        }
         let Span { least, most, said } = *span;
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
@@ -3235,7 +3252,7 @@ impl Checker {
     /// travel `low` to `high`.
     #[cold]
     #[inline(never)]
-    fn span_exceeded(
+    pub(super) fn span_exceeded(
         &mut self,
         axis: u8,
         (least, most): (f64, f64),

@@ -44,6 +44,7 @@ mod after;
 mod called;
 mod codes;
 mod formats;
+mod leaves;
 mod limits;
 mod link;
 mod motion;
@@ -1504,6 +1505,10 @@ pub struct Checker {
     /// Those of a program merged before its M99 (its caller `.0`): made in its callers'
     /// units, resolved where those are known ([`Checker::call_works_resolved`]).
     call_works_deferred: Vec<(i64, i64, Option<structure::CallWork>)>,
+    /// The spans kept apart after a call of a program not read there, until the caller's
+    /// end ([`leaves::LaterShift`]), and those ended, judged at the file's end.
+    later_shift: Option<Box<leaves::LaterShift>>,
+    later_shifts: Vec<leaves::LaterShift>,
     /// The program in hand, written after its calls, runs under the work offset of
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
@@ -1807,6 +1812,8 @@ impl Checker {
             call_works_unknown: HashSet::new(),
             call_works_assumed: Vec::new(),
             call_works_deferred: Vec::new(),
+            later_shift: None,
+            later_shifts: Vec::new(),
             work_call: None,
             units_unknown: false,
             early: None,

@@ -303,6 +303,9 @@ impl Checker {
         if !self.call_works_assumed.is_empty() {
             self.call_works_ended(returned);
         }
+        if self.later_shift.is_some() {
+            self.later_shift_closed();
+        }
         if self.units_merged.is_some() || self.guess_marked.is_some() {
             self.units_merged_ended(returned);
         }

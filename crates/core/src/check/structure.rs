@@ -393,26 +393,26 @@ impl Checker {
     fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
         let (call, column) = self.call_words(b);
         self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
+        // (a call that surely runs and enters the body at its start: not behind a jump,
+        // condition or loop of the caller's, not a modal call (G66, run at the moves after
+        // it, or none), not `M98 P.. Q..` entering at a sequence number, not a skippable
+        // block; review 62a F7)
+        let surely = !self.jumped
+            && !b.skip
+            && b.skip_within.is_none()
+            && !self.values.gs().contains(&66)
+            && !b
+                .words
+                .iter()
+                .any(|w| w.letter == b'Q' && w.index.is_empty())
+            // (`M98 P2000 L0`: a repeat count of zero may run the body no time; no page
+            // at hand says: not carried, review 62a F7's g75)
+            && !b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'L'
+                    && w.index.is_empty()
+                    && self.readable[i].is_some_and(|v| v.to_f64() == 0.0)
+            });
         if let Some((writes, loses)) = self.offset_writers.get(&number).cloned() {
-            // (a call that surely runs and enters the body at its start: not behind a
-            // jump, condition or loop of the caller's, not a modal call (G66, run at the
-            // moves after it, or none), not `M98 P.. Q..` entering at a sequence number,
-            // not a skippable block; review 62a F7)
-            let surely = !self.jumped
-                && !b.skip
-                && b.skip_within.is_none()
-                && !self.values.gs().contains(&66)
-                && !b
-                    .words
-                    .iter()
-                    .any(|w| w.letter == b'Q' && w.index.is_empty())
-                // (`M98 P2000 L0`: a repeat count of zero may run the body no time; no page
-                // at hand says: not carried, review 62a F7's g75)
-                && !b.words.iter().enumerate().any(|(i, w)| {
-                    w.letter == b'L'
-                        && w.index.is_empty()
-                        && self.readable[i].is_some_and(|v| v.to_f64() == 0.0)
-                });
             self.shift_carried(number, surely);
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
@@ -420,6 +420,10 @@ impl Checker {
                 self.offsets_rewritten(b.line, &format!("O{number:04} changes the offsets"));
             }
         } else if !self.file_programs.contains(&number) {
+            // (the G52 it leaves on, known at the file's end: crate::check::leaves)
+            if surely && self.config.family == Family::MacroB {
+                self.later_shift_called(number);
+            }
             // (a program not read yet: what it writes is known at the file's end)
             let unread = super::limits::Written {
                 unread: vec![number],
@@ -804,6 +808,9 @@ impl Checker {
     /// control's start units the profile assumes).
     pub(super) fn called_units(&mut self, b: &BlockView<'_>) {
         self.work_call_end();
+        if self.later_shift.is_some() {
+            self.later_shift_closed();
+        }
         self.offsets_unread_only = false;
         // (an excursion beyond the travel is one run's: the program before's last position
         // outside holds no first one of this program's, review 59a F9: `G90 G55` / `G0 X-700.`
