@@ -80,7 +80,14 @@ def why(state: str, stack: list[str]) -> str:
 
 
 def main() -> int:
-    found = switches(sys.argv[1])
+    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if sys.argv[1:] in (["-h"], ["--help"]) else 2
+    try:
+        found = switches(sys.argv[1])
+    except OSError as exc:
+        print(f"{sys.argv[1]}: {exc.strerror}", file=sys.stderr)
+        return 2
     names: dict[int, str] = {}
     for switch in found:
         names.setdefault(switch["out"], switch["name"])  # type: ignore[arg-type]
