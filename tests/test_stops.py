@@ -270,6 +270,20 @@ def test_a_pipes_twin_is_non_blocking_and_leaves_the_pipes_own_description_block
         assert stops._twin(left.fileno()) == -1
 
 
+def written(how: str, writer: int, data: bytes) -> None:
+    """``data`` written into the pipe ``writer``, whole, by ``write_all`` (a report's pieces) or
+    by a guarded stdout's raw writer (``how``: "write_all" or "guarded")."""
+    from formats import stops
+
+    if how == "write_all":
+        assert stops.write_all(writer, [data[:1000], data[1000:]]) == len(data)
+    else:
+        with stops._Wakeup() as wakeup:
+            raw = stops._PolledWriter(writer, wakeup)
+            assert raw.write(data) == len(data)  # (whole: a text layer over it loses none)
+            raw.close()
+
+
 @pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs Linux's /proc")
 @pytest.mark.parametrize("how", ["write_all", "guarded"])
 def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
@@ -307,13 +321,7 @@ def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
     try:
         monkeypatch.setattr(os, "write", write)
         monkeypatch.setattr(stops, "_ready", ready)
-        if how == "write_all":
-            assert stops.write_all(writer, [data[:1000], data[1000:]]) == len(data)
-        else:
-            with stops._Wakeup() as wakeup:
-                raw = stops._PolledWriter(writer, wakeup)
-                assert raw.write(data) == len(data)  # (whole: a text layer over it loses none)
-                raw.close()
+        written(how, writer, data)
         monkeypatch.undo()
     finally:
         os.close(writer)
@@ -354,13 +362,7 @@ def test_a_pipe_in_packet_mode_keeps_its_packets(how: str) -> None:
     thread = threading.Thread(target=read)
     thread.start()
     try:
-        if how == "write_all":
-            assert stops.write_all(writer, [data[:1000], data[1000:]]) == len(data)
-        else:
-            with stops._Wakeup() as wakeup:
-                raw = stops._PolledWriter(writer, wakeup)
-                assert raw.write(data) == len(data)
-                raw.close()
+        written(how, writer, data)
     finally:
         os.close(writer)
         thread.join(timeout=60)
