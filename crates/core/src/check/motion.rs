@@ -755,11 +755,7 @@ impl Checker {
         // (nor the arc of a block whose M72 rs274 2.9.0 surely drops: the restore's block
         // takes its place, convert_arc never sees it; `M70` / `S200` / `M72 G2 X1 Y0 R2` runs
         // in `rs274 -g`; review 59b F7)
-        if self.linuxcnc_m72_dropped == Some(self.stats.blocks)
-            && self
-                .linuxcnc_m72_motion
-                .is_some_and(|d| d.restored.is_some())
-        {
+        if self.linuxcnc_m72_surely_dropped() {
             return;
         }
         let v = &self.values;

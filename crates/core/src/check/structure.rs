@@ -3638,6 +3638,17 @@ impl Checker {
         }
     }
 
+    /// The block in hand's M72 is one rs274 2.9.0 surely drops ([`M72Dropped::restored`]):
+    /// its restore runs a block of its own in place of this one, so nothing of this block
+    /// after the M72 in the order of execution runs (review 59b F7).
+    #[inline]
+    pub(super) fn linuxcnc_m72_surely_dropped(&self) -> bool {
+        self.linuxcnc_m72_dropped == Some(self.stats.blocks)
+            && self
+                .linuxcnc_m72_motion
+                .is_some_and(|d| d.restored.is_some())
+    }
+
     /// The motion mode, plane and compensation after a block whose M72 may be dropped
     /// ([`M72Dropped`]), run after the block's rules: rs274 2.9.0 runs the restore's block in
     /// place of the M72's, so the block's own motion code never takes effect (review 58c, F7:

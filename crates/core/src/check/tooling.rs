@@ -1890,10 +1890,7 @@ impl Checker {
         // / `G93` / `M72 G42.1 D0.1` runs in `rs274 -g`. Not judged; its M6 and M62-M68 run
         // before the M72 and are. Where the drop is only possible they are judged: rs274
         // refuses them where its restore writes nothing, review 75-lcnc75a F1)
-        let dropped = self.linuxcnc_m72_dropped == Some(self.stats.blocks)
-            && self
-                .linuxcnc_m72_motion
-                .is_some_and(|d| d.restored.is_some());
+        let dropped = self.linuxcnc_m72_surely_dropped();
         let said = |what: &str, letter: u8| {
             Some((
                 format!("{what} (rs274ngc): the block runs it under cutter radius compensation"),
