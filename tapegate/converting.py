@@ -151,18 +151,21 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
         os.rmdir(os.path.dirname(output))
     rows = []
     failed = 0
+    told = False  # (a spill of notes that failed: told once, before the first notes held)
     for stats in results:
         letter, worst = stats.largest_rounding_text()
         if stats.error:
             failed += 1
             echo(stats.error, err=True)
+        if stats.notes_unspilled and not told:
+            told = True
+            echo(f"tapegate: {stats.notes_unspilled}", err=True)
         for note in stats.notes:
             echo(f"{stats.file}: {note}", err=True)
-        if stats.notes_spill:  # the notes after the first thousand, as they are printed
-            with open(stats.notes_spill, encoding="utf-8", errors="surrogateescape") as rest:
-                for piece in iter(lambda: rest.read(1 << 20), ""):
-                    echo(piece, err=True, nl=False)
-            os.unlink(stats.notes_spill)
+        # the notes after the first thousand, as they are printed: spilled, or held in memory
+        # where the spill failed
+        for piece in stats.notes_after():
+            echo(piece, err=True, nl=False)
         rows.append((stats.file, str(stats.blocks), str(stats.changed),
                      f"{letter} {worst}" if letter else "0", result_of(stats)))
     total_blocks = sum(s.blocks for s in results)

@@ -173,3 +173,96 @@ def test_the_notes_folder_is_made_only_for_a_file_that_spills_and_removed(tmp_pa
         notes = [line for line in done.stderr.splitlines() if line.startswith(str(cam))]
         assert len(notes) == 2 * 2 + 3 * 2 + (2 * NOTES_HELD if long_file else 0)
         assert os.listdir(temporary) == []
+
+
+def _no_room_for_notes(monkeypatch, after: int = 1) -> list[int]:
+    """os.write refused with ENOSPC for a spill file of notes (``notes-*``) once ``after``
+    writes to such files went through (the disk full meanwhile); the count of attempts."""
+    import errno
+
+    write = os.write
+    tried = [0]
+
+    def filling(fd: int, data: bytes) -> int:
+        try:
+            spill = os.path.basename(os.readlink(f"/proc/self/fd/{fd}")).startswith("notes-")
+        except OSError:
+            spill = False
+        if spill:
+            tried[0] += 1
+            if tried[0] > after:
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+            if tried[0] == after:  # a part written, then no room: cut back, never read
+                write(fd, data[:len(data) // 2])
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+        return write(fd, data)
+
+    monkeypatch.setattr(os, "write", filling)
+    return tried
+
+
+def test_notes_whose_spill_fails_are_kept_in_memory_in_their_order(tmp_path, monkeypatch):
+    """Review 75, N1, in convert: the spill of a file's notes failing (no room) midway lost
+    them and failed the file. The notes written whole stay in the file, the rest are held in
+    memory after them: every note comes back once, in order, and the failure is noted."""
+    source = tmp_path / "p.ngc"
+    source.write_text(_program(3 * NOTES_HELD))  # 6,000 notes: 5,000 past the first thousand
+    spill = tmp_path / "spill"
+    spill.mkdir()
+    tried = _no_room_for_notes(monkeypatch, after=3)
+    stats = convert_file(str(source), str(tmp_path / "out.ngc"), OPTIONS, notes_spill=str(spill))
+    assert tried[0] >= 3 and stats.notes_kept  # (the spill did fail, after some writes)
+    assert stats.notes == _expected(3 * NOTES_HELD)[:NOTES_HELD]
+    rest = "".join(stats.notes_after()).splitlines()
+    assert rest == [f"{tmp_path / 'p.ngc'}: {note}"
+                    for note in _expected(3 * NOTES_HELD)[NOTES_HELD:]]
+    assert stats.notes_unspilled == (f"cannot write the notes waiting for the summary to "
+                                     f"{spill}: No space left on device; they are held in "
+                                     f"memory instead")
+    assert os.listdir(spill) == []  # (the spill file read and removed)
+    assert (tmp_path / "out.ngc").exists() and not stats.error
+
+
+def test_convert_whose_notes_cannot_be_spilled_converts_and_prints_every_note(tmp_path,
+                                                                              monkeypatch):
+    """`convert` of files of thousands of notes where the notes' spill fails (its folder
+    cannot be made, or its writes find no room): each file converted, its output as without
+    the failure, every note printed in order, with one or two workers; the failure told once,
+    before the first notes held. (Before: "FILE: No space left on device", the file FAILED,
+    its output not written, its notes lost.)"""
+    import tempfile
+
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for name, lines in (("a.ngc", NOTES_HELD), ("b.ngc", 2), ("c.ngc", 2 * NOTES_HELD)):
+        (cam / name).write_text(_program(lines))
+
+    def run(out: str, jobs: str) -> tuple[int, str, dict[str, bytes]]:
+        result = CliRunner().invoke(main, [
+            "convert", str(cam), "--out-dir", str(tmp_path / out), "--from", "linuxcnc",
+            "--to", "linuxcnc", "--units", "inch", "--allow-unconverted", "-j", jobs])
+        outputs = {p.name: p.read_bytes() for p in sorted((tmp_path / out).iterdir())}
+        return result.exit_code, result.stderr, outputs
+
+    clean = run("clean", "1")
+    assert clean[0] == 0 and len(clean[2]) == 3
+    temporary = tempfile.gettempdir()
+    for failure in ("write", "folder"):
+        with monkeypatch.context() as patched:
+            if failure == "write":
+                _no_room_for_notes(patched, after=1)
+            else:
+                def no_folder(*args: object, **kwargs: object) -> str:
+                    raise OSError(28, "No space left on device",
+                                  os.path.join(temporary, "tapegate-notes-x"))
+
+                patched.setattr(tempfile, "mkdtemp", no_folder)
+            for jobs in ("1", "2"):
+                code, stderr, outputs = run(f"{failure}{jobs}", jobs)
+                told = (f"tapegate: cannot write the notes waiting for the summary to "
+                        f"{temporary}: No space left on device; they are held in memory "
+                        f"instead\n")
+                assert (code, outputs) == (clean[0], clean[2]), (failure, jobs, stderr[-500:])
+                assert stderr.count(told) == 1, (failure, jobs, stderr[:500])
+                assert stderr.replace(told, "") == clean[1], (failure, jobs)
+                assert stderr.index(told) < stderr.index(f"{cam / 'a.ngc'}: ")
