@@ -337,8 +337,21 @@ def _failed(name: str, output: str | None, exc: BaseException) -> ConvertStats:
     if isinstance(exc, TapegateError):
         return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
     if isinstance(exc, OSError):
-        return ConvertStats(file=name, output=output or "",
-                            error=f"{name}: {exc.strerror or exc}")
+        import errno
+
+        reason = exc.strerror or str(exc)
+        # (the errors of a write that finds no room: a full disk, a quota, a file size limit)
+        if exc.filename is None and exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG):
+            # (no read fails so: the output's write or its fsync, told as the output's, not
+            # as the input's "FILE: No space left on device")
+            if output:
+                reason = f"cannot write {output}: {reason}"
+            else:
+                import tempfile
+
+                reason = (f"cannot write its dry run's output to the temporary folder "
+                          f"{tempfile.gettempdir()}: {reason}")
+        return ConvertStats(file=name, output=output or "", error=f"{name}: {reason}")
     raise exc
 
 

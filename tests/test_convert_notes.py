@@ -266,3 +266,54 @@ def test_convert_whose_notes_cannot_be_spilled_converts_and_prints_every_note(tm
                 assert stderr.count(told) == 1, (failure, jobs, stderr[:500])
                 assert stderr.replace(told, "") == clean[1], (failure, jobs)
                 assert stderr.index(told) < stderr.index(f"{cam / 'a.ngc'}: ")
+
+
+def _small_files() -> None:
+    """A child's files limited to 64 KiB (a write past it fails with EFBIG, SIGXFSZ
+    ignored): an output, or a spill of notes, that finds no room."""
+    import resource
+    import signal
+
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 16, 1 << 16))
+
+
+def test_an_output_that_finds_no_room_is_told_as_the_outputs(tmp_path):
+    """An output whose write fails for want of room (here each file limited to 64 KiB) was
+    told as "FILE: File too large", naming the input; it names the output now (and for a dry
+    run the temporary folder), while a file that fits converts, its notes all printed (their
+    spill past 64 KiB cut short: held in memory)."""
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parent.parent
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    (cam / "big.ngc").write_text(_program(3000))  # 6,000 notes, an output of 200 kB
+    (cam / "small.ngc").write_text(_program(2))
+    (cam / "mid.ngc").write_text(_program(NOTES_HELD))  # fits; 1,000 notes past 64 KiB to spill
+    common = ["--from", "linuxcnc", "--to", "linuxcnc", "--units", "inch",
+              "--allow-unconverted"]
+    runs = {}
+    for name, where in (("out", ["--out-dir", str(tmp_path / "out")]), ("dry", ["--dry-run"])):
+        runs[name] = subprocess.run(
+            [sys.executable, "-m", "tapegate", "convert", str(cam), *where, *common],
+            capture_output=True, text=True, check=False, timeout=120, preexec_fn=_small_files,
+            env={**os.environ, "PYTHONPATH": str(root), "TMPDIR": str(tmp_path)})
+    done = runs["out"]
+    assert done.returncode == 1
+    assert (f"{cam / 'big.ngc'}: cannot write {tmp_path / 'out' / 'big.ngc'}: File too large"
+            in done.stderr.splitlines()), done.stderr[-800:]
+    lines = done.stderr.splitlines()
+    assert f"{cam / 'small.ngc'}: {_expected(2)[0]}" in lines
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["mid.ngc", "small.ngc"]
+    told = (f"tapegate: cannot write the notes waiting for the summary to {tmp_path}: File "
+            f"too large; they are held in memory instead")
+    assert lines.count(told) == 1
+    assert [line for line in lines if line.startswith(str(cam / "mid.ngc"))] == [
+        f"{cam / 'mid.ngc'}: {note}" for note in _expected(NOTES_HELD)]
+    dry = runs["dry"]
+    assert dry.returncode == 1
+    assert (f"{cam / 'big.ngc'}: cannot write its dry run's output to the temporary folder "
+            f"{tmp_path}: File too large" in dry.stderr.splitlines()), dry.stderr[-800:]
+    assert "Traceback" not in done.stderr + dry.stderr

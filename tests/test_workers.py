@@ -1757,3 +1757,36 @@ def test_check_whose_spill_has_no_room_reports_every_file_as_one_thread(tmp_path
     assert two.stderr.replace(told, b"", 1) == one.stderr, two.stderr[-2000:]
     assert b"cannot read" not in two.stderr and b"Traceback" not in two.stderr
     assert len(one.stdout) > 4 * 64 * 1024  # (more than the threads hold: it would spill)
+
+
+def _small_files() -> None:
+    """A child's files limited to 64 KiB (RLIMIT_FSIZE; a write past it fails with EFBIG,
+    SIGXFSZ ignored): a temporary file that finds no room, without a full disk."""
+    import resource
+    import signal
+
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 16, 1 << 16))
+
+
+@pytest.mark.skipif(not hasattr(os, "O_TMPFILE"), reason="needs Linux")
+def test_check_whose_spill_files_are_cut_short_reports_every_file_as_one_thread(tmp_path):
+    """The spill's writes failing for real (no monkeypatch): every file of the child limited
+    to 64 KiB, the spill of a long report fails midway with EFBIG. -j 2's report is -j 1's
+    (which spills nothing), byte for byte, with its exit code; nothing is told as not read."""
+    cam = _long_last(tmp_path)
+    args = [sys.executable, "-m", "tapegate", "check", str(cam), "-p", "fanuc-mill",
+            "--format", "jsonl", "--all"]
+    runs = {jobs: subprocess.run([*args, "-j", jobs], capture_output=True, cwd=ROOT,
+                                 timeout=300, check=False, preexec_fn=_small_files,
+                                 env={**os.environ, "PYTHONPATH": str(ROOT),
+                                      "TMPDIR": str(tmp_path)})
+            for jobs in ("1", "2")}
+    one, two = runs["1"], runs["2"]
+    assert one.returncode == 1, one.stderr
+    assert (two.returncode, two.stdout) == (one.returncode, one.stdout)
+    assert len(one.stdout) > 4 * (1 << 16)  # (its spill, if any, is cut short)
+    told = f"tapegate: cannot write the reports waiting for their turn to {tmp_path}: "
+    lines = [line for line in two.stderr.decode().splitlines() if not line.startswith(told)]
+    assert lines == one.stderr.decode().splitlines()
+    assert "cannot read" not in two.stderr.decode()
