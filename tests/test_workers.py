@@ -1728,7 +1728,7 @@ from tapegate.launch import main
 
 workers.WAITING = workers.EARLY = 0  # every piece of an item not due would spill
 def no_room():
-    raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), "/tmp/full")
+    raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), "/no-room")
 workers._spill_file = no_room
 sys.argv = ["tapegate", *sys.argv[1:]]
 main(clean_exit=True)
@@ -1752,7 +1752,7 @@ def test_check_whose_spill_has_no_room_reports_every_file_as_one_thread(tmp_path
     one, two = runs["1"], runs["2"]
     assert one.returncode == 1, one.stderr
     assert (two.returncode, two.stdout) == (one.returncode, one.stdout)
-    told = (b"tapegate: cannot write the reports waiting for their turn to /tmp/full: "
+    told = (b"tapegate: cannot write the reports waiting for their turn to /no-room: "
             b"No space left on device; they are held in memory instead\n")
     assert two.stderr.replace(told, b"", 1) == one.stderr, two.stderr[-2000:]
     assert b"cannot read" not in two.stderr and b"Traceback" not in two.stderr
