@@ -44,7 +44,10 @@ the items not yet due hold at most :data:`WAITING` pieces a thread in memory, to
 item started early, below, :data:`EARLY` of its own); past that, an item's further text
 pieces (a report's slices) go to a temporary file of its own, read back at its turn, so that
 a file with megabytes of findings does not hold up the threads behind it; other pieces
-(SARIF's lists of findings) make the thread wait until they are taken. (The bound is shared,
+(SARIF's lists of findings) make the thread wait until they are taken. Where that file cannot
+be written (no room, no descriptor: :attr:`_Map.unspilled`), no piece is lost and no input is
+blamed: text pieces then wait as other pieces do, and only the main thread's own item, which
+cannot wait, holds them in memory, told once on stderr. (The bound is shared,
 not one for each item: the same memory at most as ``WINDOW`` items of 2 pieces each, without
 spilling the report of every short file finished ahead of its turn.)
 
