@@ -17,9 +17,9 @@ from formats.wordformat import Rounding, Zeros
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Iterator
     from decimal import Decimal
-    from typing import IO, Any, TypeVar
+    from typing import Any, TypeVar
 
     T = TypeVar("T")
 
@@ -278,7 +278,15 @@ class ConvertStats(Record):
     # notes come through :meth:`said`: the core says each once itself.
     _noted: set[str] = field(default_factory=set, repr=False, compare=False)
     _spill_dir: str | Callable[[], str] | None = field(default=None, repr=False, compare=False)
-    _spill: IO[str] | None = field(default=None, repr=False, compare=False)
+    _spill: int | None = field(default=None, repr=False, compare=False)  # its descriptor
+    _spill_at: int = field(default=0, repr=False, compare=False)  # the bytes written there
+    # Where the spill failed (no room in the temporary folder, no descriptor left, a folder that
+    # cannot be written: an OSError), the notes after those spilled, as they are printed
+    # (``FILE: NOTE`` lines), held in memory instead, and what to tell once: the folder and the
+    # error (review 75, N1: the file was told as failed, "FILE: No space left on device", its
+    # output not written and its notes lost)
+    notes_kept: list[str] = field(default_factory=list, repr=False, compare=False)
+    notes_unspilled: str = field(default="", repr=False, compare=False)
 
     def __init__(self, file: str = "", output: str = "", blocks: int = 0, words: int = 0,
                  changed: int = 0, rounding: dict[str, tuple[int, int]] = NEW,
@@ -290,12 +298,14 @@ class ConvertStats(Record):
                  machine_units: str | None = None, proved: bool = False,
                  body_units: list[tuple[str, str]] = NEW, notes_spill: str | None = None,
                  _noted: set[str] = NEW, _spill_dir: str | Callable[[], str] | None = None,
-                 _spill: IO[str] | None = None) -> None:
+                 _spill: int | None = None, _spill_at: int = 0, notes_kept: list[str] = NEW,
+                 notes_unspilled: str = "") -> None:
         init_fields(self, file, output, blocks, words, changed, new(rounding, dict),
                     new(notes, list), error, verified, verified_assuming,
                     new(not_compared, list), left_as_written, left_at, left_statements,
                     never_read, never_read_at, machine_units, proved, new(body_units, list),
-                    notes_spill, new(_noted, set), _spill_dir, _spill)
+                    notes_spill, new(_noted, set), _spill_dir, _spill, _spill_at,
+                    new(notes_kept, list), notes_unspilled)
 
     def note(self, text: str) -> None:
         if text not in self._noted:
@@ -312,16 +322,81 @@ class ConvertStats(Record):
             if room >= len(notes):
                 return
             notes = notes[room:]
-        if self._spill is None:
-            import tempfile
+        said, kept = f"{self.file}: ", self.notes_kept
+        spilling = not kept and (self._spill is not None or self._spill_file())
+        for at in range(0, len(notes), 1024):  # (a chunk of 1 MB can make 40,000 notes)
+            text = said + f"\n{said}".join(notes[at:at + 1024]) + "\n"
+            if not spilling or not self._spill_write(text):
+                kept.append(text)
+                spilling = False
 
+    def _spill_file(self) -> bool:
+        """The spill file made (:attr:`notes_spill`); False where it cannot be."""
+        import tempfile
+
+        folder = None
+        try:
             folder = self._spill_dir() if callable(self._spill_dir) else self._spill_dir
             fd, self.notes_spill = tempfile.mkstemp(prefix="notes-", dir=folder)
-            self._spill = open(fd, "w", encoding="utf-8",  # noqa: SIM115 (closed by close_notes)
-                               errors="surrogateescape")
-        said, write = f"{self.file}: ", self._spill.write
-        for at in range(0, len(notes), 1024):  # (a chunk of 1 MB can make 40,000 notes)
-            write(said + f"\n{said}".join(notes[at:at + 1024]) + "\n")
+        except OSError as exc:
+            if folder is None:  # (the folder itself could not be made)
+                folder = os.path.dirname(exc.filename) if isinstance(exc.filename, str) else (
+                    os.environ.get("TMPDIR") or "the temporary folder")
+            self._unspilled(exc, folder)
+            return False
+        self._spill = fd
+        return True
+
+    def _spill_write(self, text: str) -> bool:
+        """``text`` written at the end of the spill file; False where it cannot be (the file
+        cut back to the notes written before it, none of it left there)."""
+        assert self._spill is not None
+        data = text.encode("utf-8", "surrogateescape")
+        done = 0
+        try:
+            while done < len(data):
+                done += os.write(self._spill, data[done:])
+        except OSError as exc:
+            try:
+                os.ftruncate(self._spill, self._spill_at)
+                os.lseek(self._spill, self._spill_at, os.SEEK_SET)
+            except OSError:  # (cut back or not, only the first ``_spill_at`` bytes are read)
+                pass
+            self._unspilled(exc, os.path.dirname(self.notes_spill or ""))
+            return False
+        self._spill_at += done
+        return True
+
+    def _unspilled(self, error: OSError, folder: str) -> None:
+        """The spill's failure noted, to be told once: ``error``, and the folder, named as the
+        temporary folder where a batch made its own in it (a function gave it)."""
+        if callable(self._spill_dir) and os.path.basename(folder).startswith("tapegate-"):
+            folder = os.path.dirname(folder)
+        if not self.notes_unspilled:
+            self.notes_unspilled = (f"cannot write the notes waiting for the summary to {folder}: "
+                                    f"{error.strerror or error}; they are held in memory instead")
+
+    def notes_after(self) -> Iterator[str]:
+        """The notes after :attr:`notes`, as they are printed (``FILE: NOTE`` lines, in pieces):
+        the spilled ones, read back from their file (removed), then those kept in memory
+        where the spill failed."""
+        if self.notes_spill:
+            # (the bytes written whole: a write that failed was cut back, or is not read)
+            with open(self.notes_spill, "rb") as rest:
+                left, carry = self._spill_at, b""
+                while left > 0:
+                    piece = rest.read(min(left, 1 << 20))
+                    if not piece:
+                        break
+                    left -= len(piece)
+                    piece = carry + piece
+                    cut = piece.rfind(b"\n") + 1 if left > 0 else len(piece)  # (whole lines)
+                    carry = piece[cut:]
+                    if cut:
+                        yield piece[:cut].decode("utf-8", "surrogateescape")
+            os.unlink(self.notes_spill)
+            self.notes_spill = None
+        yield from self.notes_kept
 
     def spill_to(self, folder: str | Callable[[], str]) -> None:
         """Notes beyond the first :data:`NOTES_HELD` go to a file in ``folder`` (or in the
@@ -331,7 +406,7 @@ class ConvertStats(Record):
     def close_notes(self) -> None:
         """The spilled notes written out (before the statistics are sent or read)."""
         if self._spill is not None:
-            self._spill.close()
+            os.close(self._spill)
             self._spill = None
 
     def drop_notes(self) -> None:
@@ -339,7 +414,7 @@ class ConvertStats(Record):
         self.close_notes()
         if self.notes_spill:
             os.unlink(self.notes_spill)
-        self.notes, self.notes_spill = [], None
+        self.notes, self.notes_spill, self.notes_kept = [], None, []
 
     def largest_rounding_pair(self) -> tuple[str, tuple[int, int]]:
         """The address of the largest rounding (the first such, in :attr:`rounding`'s order)

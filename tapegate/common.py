@@ -229,7 +229,7 @@ def _input(name: str) -> tuple[str, int]:
         return name, info.st_size
     fd, head = stream
     with open(fd, "rb") as pipe:
-        spool = _spooled(pipe, head)
+        spool = _spooled(pipe, head, name)
     return spool, _size(spool)
 
 
@@ -240,9 +240,10 @@ def _size(path: str) -> int:
         return 0
 
 
-def _spooled(stream: Any, head: bytes = b"") -> str:
+def _spooled(stream: Any, head: bytes = b"", name: str = "<stdin>") -> str:
     """``head`` and the rest of ``stream`` copied to a temporary file, kept while the command
-    runs: its path."""
+    runs: its path. A copy that cannot be written (no room in the temporary folder) is an
+    ``OSError`` naming ``name`` that says so, not the input's error."""
     import tempfile
 
     from formats.files import exit_on_termination
@@ -252,15 +253,25 @@ def _spooled(stream: Any, head: bytes = b"") -> str:
     # (review 53, F14: `check -` so stopped left it in the temporary folder)
     exit_on_termination()
     spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
-    spool.write(head)
-    while True:
-        # (what has come, not a full 64 kB; the read begun once something has come or a
-        # signal ended the wait, which may otherwise wait for ever on a writer that never ends)
-        piece = read_some(stream, 1 << 16)
-        if not piece:
-            break
-        spool.write(piece)
-    spool.flush()
+    try:
+        spool.write(head)
+        while True:
+            # (what has come, not a full 64 kB; the read begun once something has come or a
+            # signal ended the wait, which may otherwise wait for ever on a writer that never
+            # ends)
+            piece = read_some(stream, 1 << 16)
+            if not piece:
+                break
+            spool.write(piece)
+        spool.flush()
+    except OSError as exc:
+        spool.close()
+        if exc.filename is not None:  # (the input's own error)
+            raise
+        # the copy's: told so, not as the input's (no room in the temporary folder)
+        raise OSError(exc.errno, f"cannot copy it to the temporary folder "
+                                 f"{os.path.dirname(spool.name)}: {exc.strerror or exc}",
+                      name) from None
     _SPOOLED.append(spool)
     return spool.name
 

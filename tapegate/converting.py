@@ -151,18 +151,21 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
         os.rmdir(os.path.dirname(output))
     rows = []
     failed = 0
+    told = False  # (a spill of notes that failed: told once, before the first notes held)
     for stats in results:
         letter, worst = stats.largest_rounding_text()
         if stats.error:
             failed += 1
             echo(stats.error, err=True)
+        if stats.notes_unspilled and not told:
+            told = True
+            echo(f"tapegate: {stats.notes_unspilled}", err=True)
         for note in stats.notes:
             echo(f"{stats.file}: {note}", err=True)
-        if stats.notes_spill:  # the notes after the first thousand, as they are printed
-            with open(stats.notes_spill, encoding="utf-8", errors="surrogateescape") as rest:
-                for piece in iter(lambda: rest.read(1 << 20), ""):
-                    echo(piece, err=True, nl=False)
-            os.unlink(stats.notes_spill)
+        # the notes after the first thousand, as they are printed: spilled, or held in memory
+        # where the spill failed
+        for piece in stats.notes_after():
+            echo(piece, err=True, nl=False)
         rows.append((stats.file, str(stats.blocks), str(stats.changed),
                      f"{letter} {worst}" if letter else "0", result_of(stats)))
     total_blocks = sum(s.blocks for s in results)
@@ -334,8 +337,21 @@ def _failed(name: str, output: str | None, exc: BaseException) -> ConvertStats:
     if isinstance(exc, TapegateError):
         return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
     if isinstance(exc, OSError):
-        return ConvertStats(file=name, output=output or "",
-                            error=f"{name}: {exc.strerror or exc}")
+        import errno
+
+        reason = exc.strerror or str(exc)
+        # (the errors of a write that finds no room: a full disk, a quota, a file size limit)
+        if exc.filename is None and exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG):
+            # (no read fails so: the output's write or its fsync, told as the output's, not
+            # as the input's "FILE: No space left on device")
+            if output:
+                reason = f"cannot write {output}: {reason}"
+            else:
+                import tempfile
+
+                reason = (f"cannot write its dry run's output to the temporary folder "
+                          f"{tempfile.gettempdir()}: {reason}")
+        return ConvertStats(file=name, output=output or "", error=f"{name}: {reason}")
     raise exc
 
 

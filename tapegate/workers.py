@@ -44,7 +44,10 @@ the items not yet due hold at most :data:`WAITING` pieces a thread in memory, to
 item started early, below, :data:`EARLY` of its own); past that, an item's further text
 pieces (a report's slices) go to a temporary file of its own, read back at its turn, so that
 a file with megabytes of findings does not hold up the threads behind it; other pieces
-(SARIF's lists of findings) make the thread wait until they are taken. (The bound is shared,
+(SARIF's lists of findings) make the thread wait until they are taken. Where that file cannot
+be written (no room, no descriptor: :attr:`_Map.unspilled`), no piece is lost and no input is
+blamed: text pieces then wait as other pieces do, and only the main thread's own item, which
+cannot wait, holds them in memory, told once on stderr. (The bound is shared,
 not one for each item: the same memory at most as ``WINDOW`` items of 2 pieces each, without
 spilling the report of every short file finished ahead of its turn.)
 
@@ -202,10 +205,12 @@ class _Slot:
     they are, a string UTF-8 encoded) at the end of ``spill`` (a temporary file, made at the
     first), their lengths and kinds kept in ``spilled``; ``read_at`` is where the next one to
     be taken begins. Once an item spills,
-    every later piece of it does, so that they are taken in the order they were sent."""
+    every later piece of it does, so that they are taken in the order they were sent. Where
+    the spill has failed (:attr:`_Map.unspilled`), an item that has spilled queues its later
+    pieces themselves in ``spilled`` (``kept`` of them), after those in its file."""
 
     __slots__ = ("index", "early", "pieces", "done", "result", "error", "spill", "spilled",
-                 "write_at", "read_at")
+                 "write_at", "read_at", "kept")
 
     def __init__(self, index: int, early: bool = False) -> None:
         self.index = index
@@ -215,9 +220,11 @@ class _Slot:
         self.result: Any = None
         self.error: BaseException | None = None
         self.spill: int | None = None  # the temporary file's descriptor
-        self.spilled: deque[tuple[int, bool]] = deque()  # (length, a str's)
+        # (length, a str's, None) of a piece in the file; (0, False, the piece) of one kept
+        self.spilled: deque[tuple[int, bool, Any]] = deque()
         self.write_at = 0
         self.read_at = 0
+        self.kept = 0  # the pieces themselves in ``spilled`` (the spill failed)
 
     def close(self) -> None:
         if self.spill is not None:
@@ -285,6 +292,18 @@ class _Map:
         # an error a thread met outside an item's function (in the map's own work), raised
         # in the main thread where it would otherwise wait for an item that thread had taken
         self.failure: BaseException | None = None
+        # The spill's failure (no room in the temporary folder, no descriptor left, a folder
+        # that cannot be written: an OSError) and the folder it names: from then on no piece
+        # is spilled, a thread's item not yet due waits for its turn with its pieces (as
+        # other pieces than text do), and the main thread takes no item of its own before its
+        # turn unless every thread waits so (:meth:`take`); the main thread's own item keeps
+        # its pieces in memory, told once on stderr (review 75, N1: the items whose spill
+        # failed were told as files that cannot be read, their findings lost)
+        self.unspilled: OSError | None = None
+        self.spill_folder = ""
+        self.blocked = 0  # the threads waiting in put() for an item not yet due
+        self.overheld = False  # the main thread's own item held pieces past the budget
+        self.told = False  # and it was told
 
     def work(self) -> None:
         """A thread: the next item of ``order``: an early one, or one within ``window`` of
@@ -363,9 +382,14 @@ class _Map:
         """:meth:`put` for the main thread's own item: no signal's exception in its locks."""
         self.safe = False
         try:
-            self.put(slot, piece)
+            self.put(slot, piece, True)
         finally:
             self.interruptible()
+        if self.unspilled is not None and self.overheld and not self.told:
+            self.told = True
+            _tell(f"tapegate: cannot write the reports waiting for their turn to "
+                  f"{self.spill_folder}: {self.unspilled.strerror or self.unspilled}; they "
+                  f"are held in memory instead")
 
     def _ready(self) -> bool:
         """Whether the main thread is to be woken now that an item is done (the lock held):
@@ -387,41 +411,94 @@ class _Map:
                                   or self.held * 2 >= self.budget)
         return True
 
-    def put(self, slot: _Slot, piece: Any) -> None:
-        with self.cond:
-            while True:
-                if self.stopped:
-                    raise _Stopped
-                due = slot.index == self.due
-                if slot.spill is None and (len(slot.pieces) < PIECES if due
-                                           else len(slot.pieces) < EARLY if slot.early
-                                           else self.held < self.budget):
-                    slot.pieces.append(piece)
+    def put(self, slot: _Slot, piece: Any, here: bool = False) -> None:
+        """``piece`` of ``slot``'s item, sent by the thread doing it (``here``: the main
+        thread, which never waits, as only it makes room): held in memory within the bounds,
+        else spilled (text), else waited with for room. Where the spill fails (an
+        ``OSError``), nothing is lost: :attr:`unspilled` is set and the piece placed again."""
+        while True:
+            with self.cond:
+                while True:
+                    if self.stopped:
+                        raise _Stopped
+                    due = slot.index == self.due
+                    if slot.spill is None and (len(slot.pieces) < PIECES if due
+                                               else len(slot.pieces) < EARLY if slot.early
+                                               else self.held < self.budget):
+                        slot.pieces.append(piece)
+                        if due:
+                            if len(slot.pieces) >= BATCH:
+                                self.cond.notify()
+                        elif not slot.early:
+                            self.held += 1
+                        return
+                    if isinstance(piece, str | bytes) and (slot.spill is not None or not due):
+                        if self.unspilled is None:
+                            break
+                        if here or (due and slot.kept < PIECES):
+                            self._keep(slot, piece, due)
+                            self.overheld = self.overheld or here  # (past the bounds)
+                            return
+                    self.cond.notify()  # (the main thread makes the room: woken for it)
                     if due:
-                        if len(slot.pieces) >= BATCH:
-                            self.cond.notify()
-                    elif not slot.early:
-                        self.held += 1
-                    return
-                if isinstance(piece, str | bytes) and (slot.spill is not None or not due):
-                    break
-                self.cond.notify()  # (the main thread makes the room: woken for it)
-                self.space.wait()
-            if slot.spill is None:
-                slot.spill = _spill_file()
-        # written outside the lock: only this thread writes this item's file, and the main
-        # thread reads a piece only once its length is in ``spilled``; a report's bytes as
-        # they are (JSON: the core's own), a string UTF-8 encoded, read back as it came
-        text = isinstance(piece, str)
-        data = piece.encode("utf-8", "surrogatepass") if isinstance(piece, str) else piece
-        at = slot.write_at
-        while at < slot.write_at + len(data):
-            at += os.pwrite(slot.spill, data[at - slot.write_at:], at)
-        with self.cond:
-            slot.write_at = at
-            slot.spilled.append((len(data), text))
-            if slot.index == self.due:
-                self.cond.notify()
+                        self.space.wait()
+                    else:
+                        self.blocked += 1
+                        try:
+                            self.space.wait()
+                        finally:
+                            self.blocked -= 1
+                if slot.spill is None:
+                    try:
+                        slot.spill, self.spill_folder = _spill_file()
+                    except OSError as exc:
+                        self._unspillable(exc, slot)
+                        continue
+            # written outside the lock: only this thread writes this item's file, and the main
+            # thread reads a piece only once its length is in ``spilled``; a report's bytes as
+            # they are (JSON: the core's own), a string UTF-8 encoded, read back as it came
+            text = isinstance(piece, str)
+            data = piece.encode("utf-8", "surrogatepass") if isinstance(piece, str) else piece
+            at = slot.write_at
+            try:
+                while at < slot.write_at + len(data):
+                    at += os.pwrite(slot.spill, data[at - slot.write_at:], at)
+            except OSError as exc:  # (what it wrote past ``write_at`` is never read)
+                with self.cond:
+                    self._unspillable(exc, slot)
+                continue
+            with self.cond:
+                slot.write_at = at
+                slot.spilled.append((len(data), text, None))
+                if slot.index == self.due:
+                    self.cond.notify()
+            return
+
+    def _unspillable(self, error: OSError, slot: _Slot) -> None:
+        """The spill failed with ``error`` (the lock held): no piece is spilled from now on. An
+        item whose file holds none yet drops it, and keeps its pieces as one that never
+        spilled."""
+        if self.unspilled is None:
+            self.unspilled = error
+            if not self.spill_folder:
+                self.spill_folder = error.filename or _temporary_folder()
+            self.cond.notify()  # (the main thread: it may have to take an item itself)
+        if slot.spill is not None and not slot.spilled:
+            slot.close()
+            slot.write_at = 0
+
+    def _keep(self, slot: _Slot, piece: Any, due: bool) -> None:
+        """``piece`` held in memory where it would have been spilled (the lock held; the spill
+        failed): after the item's other pieces, in its order."""
+        if slot.spill is None:
+            slot.pieces.append(piece)
+            if not due and not slot.early:
+                self.held += 1
+        else:
+            slot.spilled.append((0, False, piece))
+            slot.kept += 1
+        if due:
+            self.cond.notify()
 
     def take(self, index: int, here: bool = False
              ) -> tuple[list[Any], _Slot | None, _Slot | None]:
@@ -445,7 +522,12 @@ class _Map:
                         if not slot.done or slot.spilled:
                             return pieces, None, None
                     elif slot.spilled:
-                        size, text = slot.spilled.popleft()
+                        size, text, kept = slot.spilled.popleft()
+                        if kept is not None:  # (the spill failed: held in memory)
+                            if slot.kept == PIECES:  # its thread may wait for room
+                                self.space.notify_all()
+                            slot.kept -= 1
+                            return [kept], None, None
                         assert slot.spill is not None
                         data = _read(slot.spill, size, slot.read_at)
                         slot.read_at += size
@@ -469,7 +551,11 @@ class _Map:
                 if here and not self.stopped and self.given < len(self.items) and (
                         self.threads <= self.given < self.early
                         or (self.given >= self.early
-                            and self.order[self.given] < self.due + self.window)):
+                            and self.order[self.given] < self.due + self.window)) and (
+                        # the spill failed: only the item whose turn it is, whose pieces go
+                        # out at once, unless every thread waits for an item's turn
+                        self.unspilled is None or self.order[self.given] == self.due
+                        or self.blocked >= self.threads):
                     return [], None, self._give()
                 self.cond.wait(self)
 
@@ -509,7 +595,23 @@ def _run(state: _Map, ended: Any) -> None:
         ended.release()
 
 
-def _spill_file() -> int:
+def _temporary_folder() -> str:
+    """The folder :func:`_spill_file` tries first (``$TMPDIR``, ``$TEMP``, ``$TMP``, else
+    ``/tmp``)."""
+    env = os.environ
+    return env.get("TMPDIR") or env.get("TEMP") or env.get("TMP") or "/tmp"
+
+
+def _tell(message: str) -> None:
+    """A line on stderr (a warning of the map's own; a closed stderr is let be)."""
+    try:
+        sys.stderr.write(message + "\n")
+        sys.stderr.flush()
+    except (OSError, ValueError, AttributeError):
+        pass
+
+
+def _spill_file() -> tuple[int, str]:
     """A temporary file with no name (nothing to remove, whatever ends the process), in the
     folder ``tempfile`` would take first (``$TMPDIR``, ``$TEMP``, ``$TMP``, else ``/tmp``),
     made by ``O_TMPFILE`` where the system and that folder's file system offer it. Only where
@@ -518,16 +620,21 @@ def _spill_file() -> int:
     folder, work that ``-j 1`` never does (docs/benchmarks.md, "the start-up of ``-j 2``")."""
     flag = getattr(os, "O_TMPFILE", 0)
     if flag:
-        env = os.environ
-        folder = env.get("TMPDIR") or env.get("TEMP") or env.get("TMP") or "/tmp"
+        folder = _temporary_folder()
         try:
-            return os.open(folder, flag | os.O_RDWR | os.O_EXCL | os.O_CLOEXEC, 0o600)
+            return os.open(folder, flag | os.O_RDWR | os.O_EXCL | os.O_CLOEXEC, 0o600), folder
         except OSError:  # not offered there, or no such folder: tempfile's way
             pass
     import tempfile
 
-    with tempfile.TemporaryFile(buffering=0) as handle:
-        return os.dup(handle.fileno())
+    folder = tempfile.gettempdir()  # (an OSError where no folder can be written)
+    try:
+        with tempfile.TemporaryFile(buffering=0, dir=folder) as handle:
+            return os.dup(handle.fileno()), folder
+    except OSError as exc:
+        if exc.filename is None:
+            exc.filename = folder
+        raise
 
 
 def _read(fd: int, size: int, at: int) -> bytes:

@@ -173,3 +173,147 @@ def test_the_notes_folder_is_made_only_for_a_file_that_spills_and_removed(tmp_pa
         notes = [line for line in done.stderr.splitlines() if line.startswith(str(cam))]
         assert len(notes) == 2 * 2 + 3 * 2 + (2 * NOTES_HELD if long_file else 0)
         assert os.listdir(temporary) == []
+
+
+def _no_room_for_notes(monkeypatch, after: int = 1) -> list[int]:
+    """os.write refused with ENOSPC for a spill file of notes (``notes-*``) once ``after``
+    writes to such files went through (the disk full meanwhile); the count of attempts."""
+    import errno
+
+    write = os.write
+    tried = [0]
+
+    def filling(fd: int, data: bytes) -> int:
+        try:
+            spill = os.path.basename(os.readlink(f"/proc/self/fd/{fd}")).startswith("notes-")
+        except OSError:
+            spill = False
+        if spill:
+            tried[0] += 1
+            if tried[0] > after:
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+            if tried[0] == after:  # a part written, then no room: cut back, never read
+                write(fd, data[:len(data) // 2])
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+        return write(fd, data)
+
+    monkeypatch.setattr(os, "write", filling)
+    return tried
+
+
+def test_notes_whose_spill_fails_are_kept_in_memory_in_their_order(tmp_path, monkeypatch):
+    """Review 75, N1, in convert: the spill of a file's notes failing (no room) midway lost
+    them and failed the file. The notes written whole stay in the file, the rest are held in
+    memory after them: every note comes back once, in order, and the failure is noted."""
+    source = tmp_path / "p.ngc"
+    source.write_text(_program(3 * NOTES_HELD))  # 6,000 notes: 5,000 past the first thousand
+    spill = tmp_path / "spill"
+    spill.mkdir()
+    tried = _no_room_for_notes(monkeypatch, after=3)
+    stats = convert_file(str(source), str(tmp_path / "out.ngc"), OPTIONS, notes_spill=str(spill))
+    assert tried[0] >= 3 and stats.notes_kept  # (the spill did fail, after some writes)
+    assert stats.notes == _expected(3 * NOTES_HELD)[:NOTES_HELD]
+    rest = "".join(stats.notes_after()).splitlines()
+    assert rest == [f"{tmp_path / 'p.ngc'}: {note}"
+                    for note in _expected(3 * NOTES_HELD)[NOTES_HELD:]]
+    assert stats.notes_unspilled == (f"cannot write the notes waiting for the summary to "
+                                     f"{spill}: No space left on device; they are held in "
+                                     f"memory instead")
+    assert os.listdir(spill) == []  # (the spill file read and removed)
+    assert (tmp_path / "out.ngc").exists() and not stats.error
+
+
+def test_convert_whose_notes_cannot_be_spilled_converts_and_prints_every_note(tmp_path,
+                                                                              monkeypatch):
+    """`convert` of files of thousands of notes where the notes' spill fails (its folder
+    cannot be made, or its writes find no room): each file converted, its output as without
+    the failure, every note printed in order, with one or two workers; the failure told once,
+    before the first notes held. (Before: "FILE: No space left on device", the file FAILED,
+    its output not written, its notes lost.)"""
+    import tempfile
+
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for name, lines in (("a.ngc", NOTES_HELD), ("b.ngc", 2), ("c.ngc", 2 * NOTES_HELD)):
+        (cam / name).write_text(_program(lines))
+
+    def run(out: str, jobs: str) -> tuple[int, str, dict[str, bytes]]:
+        result = CliRunner().invoke(main, [
+            "convert", str(cam), "--out-dir", str(tmp_path / out), "--from", "linuxcnc",
+            "--to", "linuxcnc", "--units", "inch", "--allow-unconverted", "-j", jobs])
+        outputs = {p.name: p.read_bytes() for p in sorted((tmp_path / out).iterdir())}
+        return result.exit_code, result.stderr, outputs
+
+    clean = run("clean", "1")
+    assert clean[0] == 0 and len(clean[2]) == 3
+    temporary = tempfile.gettempdir()
+    for failure in ("write", "folder"):
+        with monkeypatch.context() as patched:
+            if failure == "write":
+                _no_room_for_notes(patched, after=1)
+            else:
+                def no_folder(*args: object, **kwargs: object) -> str:
+                    raise OSError(28, "No space left on device",
+                                  os.path.join(temporary, "tapegate-notes-x"))
+
+                patched.setattr(tempfile, "mkdtemp", no_folder)
+            for jobs in ("1", "2"):
+                code, stderr, outputs = run(f"{failure}{jobs}", jobs)
+                told = (f"tapegate: cannot write the notes waiting for the summary to "
+                        f"{temporary}: No space left on device; they are held in memory "
+                        f"instead\n")
+                assert (code, outputs) == (clean[0], clean[2]), (failure, jobs, stderr[-500:])
+                assert stderr.count(told) == 1, (failure, jobs, stderr[:500])
+                assert stderr.replace(told, "") == clean[1], (failure, jobs)
+                assert stderr.index(told) < stderr.index(f"{cam / 'a.ngc'}: ")
+
+
+def _small_files() -> None:
+    """A child's files limited to 64 KiB (a write past it fails with EFBIG, SIGXFSZ
+    ignored): an output, or a spill of notes, that finds no room."""
+    import resource
+    import signal
+
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 16, 1 << 16))
+
+
+def test_an_output_that_finds_no_room_is_told_as_the_outputs(tmp_path):
+    """An output whose write fails for want of room (here each file limited to 64 KiB) was
+    told as "FILE: File too large", naming the input; it names the output now (and for a dry
+    run the temporary folder), while a file that fits converts, its notes all printed (their
+    spill past 64 KiB cut short: held in memory)."""
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parent.parent
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    (cam / "big.ngc").write_text(_program(3000))  # 6,000 notes, an output of 200 kB
+    (cam / "small.ngc").write_text(_program(2))
+    (cam / "mid.ngc").write_text(_program(NOTES_HELD))  # fits; 1,000 notes past 64 KiB to spill
+    common = ["--from", "linuxcnc", "--to", "linuxcnc", "--units", "inch",
+              "--allow-unconverted"]
+    runs = {}
+    for name, where in (("out", ["--out-dir", str(tmp_path / "out")]), ("dry", ["--dry-run"])):
+        runs[name] = subprocess.run(
+            [sys.executable, "-m", "tapegate", "convert", str(cam), *where, *common],
+            capture_output=True, text=True, check=False, timeout=120, preexec_fn=_small_files,
+            env={**os.environ, "PYTHONPATH": str(root), "TMPDIR": str(tmp_path)})
+    done = runs["out"]
+    assert done.returncode == 1
+    assert (f"{cam / 'big.ngc'}: cannot write {tmp_path / 'out' / 'big.ngc'}: File too large"
+            in done.stderr.splitlines()), done.stderr[-800:]
+    lines = done.stderr.splitlines()
+    assert f"{cam / 'small.ngc'}: {_expected(2)[0]}" in lines
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["mid.ngc", "small.ngc"]
+    told = (f"tapegate: cannot write the notes waiting for the summary to {tmp_path}: File "
+            f"too large; they are held in memory instead")
+    assert lines.count(told) == 1
+    assert [line for line in lines if line.startswith(str(cam / "mid.ngc"))] == [
+        f"{cam / 'mid.ngc'}: {note}" for note in _expected(NOTES_HELD)]
+    dry = runs["dry"]
+    assert dry.returncode == 1
+    assert (f"{cam / 'big.ngc'}: cannot write its dry run's output to the temporary folder "
+            f"{tmp_path}: File too large" in dry.stderr.splitlines()), dry.stderr[-800:]
+    assert "Traceback" not in done.stderr + dry.stderr

@@ -196,3 +196,42 @@ def test_a_fifo_whose_writer_never_ends_stops_at_the_first_ctrl_c(tmp_path: Path
     finally:
         os.close(writer)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.nc", "f.nc"]
+
+
+_NO_ROOM_FOR_THE_COPY = """
+import errno, os, sys, tempfile
+from tapegate.launch import main
+
+made = tempfile.NamedTemporaryFile
+class Full:
+    def __init__(self, *args, **kwargs):
+        self.file = made(*args, **kwargs)
+        self.name = self.file.name
+    def write(self, data):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+    def flush(self):
+        self.file.flush()
+    def close(self):
+        self.file.close()
+tempfile.NamedTemporaryFile = Full
+sys.argv = ["tapegate", *sys.argv[1:]]
+main(clean_exit=True)
+"""
+
+
+@pytest.mark.parametrize("args", [["check", "-", "-p", "fanuc-mill"],
+                                  ["convert", "-", "--to", "fanuc-mill", "-o", "out.nc"]])
+def test_standard_input_whose_copy_finds_no_room_says_so(tmp_path: Path,
+                                                        args: list[str]) -> None:
+    """Standard input is copied to the temporary folder first: a copy that finds no room
+    there is told as such, naming the folder, not as the input's own error ("cannot read
+    <stdin>: No space left on device" blamed the program piped in); exit 2, no copy left."""
+    done = subprocess.run([sys.executable, "-c", _NO_ROOM_FOR_THE_COPY, *args],
+                          input=PROGRAM, cwd=tmp_path, capture_output=True, text=True,
+                          timeout=60, env={**os.environ, "PYTHONPATH": str(ROOT),
+                                           "TMPDIR": str(tmp_path)})
+    assert done.returncode == 2, done.stderr
+    assert (f"tapegate: cannot read <stdin>: cannot copy it to the temporary folder "
+            f"{tmp_path}: No space left on device\n") in done.stderr, done.stderr
+    assert "Traceback" not in done.stderr
+    assert not list(tmp_path.glob("tapegate-stdin-*"))

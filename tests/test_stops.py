@@ -284,6 +284,32 @@ def written(how: str, writer: int, data: bytes) -> None:
             raw.close()
 
 
+def read_slowly(reader: int, writer: int, write: Callable[[], None]) -> tuple[bytes, list[int]]:
+    """What ``write()`` puts into the pipe ``writer`` (closed after it, and ``reader`` once
+    read to its end), read by a thread slower than it is written, so that the pipe fills:
+    (the bytes read, each read's size)."""
+    import threading
+
+    got = bytearray()
+    reads: list[int] = []
+
+    def read() -> None:
+        while piece := os.read(reader, 1 << 16):
+            reads.append(len(piece))
+            got.extend(piece)
+            time.sleep(0.0005)
+
+    thread = threading.Thread(target=read)
+    thread.start()
+    try:
+        write()
+    finally:
+        os.close(writer)
+        thread.join(timeout=60)
+        os.close(reader)
+    return bytes(got), reads
+
+
 @pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs Linux's /proc")
 @pytest.mark.parametrize("how", ["write_all", "guarded"])
 def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
@@ -291,19 +317,10 @@ def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
     """A big report into a pipe read slower than it is written: written in writes as large
     as the pipe takes (not 4,096 bytes each after a poll: 22-33 % more CPU, review 62c F4),
     a poll only where the pipe was full, every byte in order."""
-    import threading
-
     from formats import stops
 
     data = bytes(range(256)) * 16384  # 4 MiB
     reader, writer = os.pipe()
-    got = bytearray()
-
-    def read() -> None:
-        while piece := os.read(reader, 1 << 16):
-            got.extend(piece)
-            time.sleep(0.0005)  # (a slow reader: the pipe fills)
-
     sizes: list[int] = []
     polls: list[int] = []
     real_write, real_ready = os.write, stops._ready
@@ -316,18 +333,14 @@ def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
         polls.append(fd)
         return real_ready(fd, events, wakeup)  # type: ignore[arg-type]
 
-    thread = threading.Thread(target=read)
-    thread.start()
-    try:
+    def counted() -> None:
         monkeypatch.setattr(os, "write", write)
         monkeypatch.setattr(stops, "_ready", ready)
         written(how, writer, data)
         monkeypatch.undo()
-    finally:
-        os.close(writer)
-        thread.join(timeout=60)
-        os.close(reader)
-    assert bytes(got) == data
+
+    got, _ = read_slowly(reader, writer, counted)
+    assert got == data
     assert max(sizes) > stops.PIPE_BUF
     assert len(sizes) < len(data) // stops.PIPE_BUF // 4  # (was one a 4,096 bytes)
     assert len(polls) < len(sizes)  # (a poll only on a full pipe)
@@ -340,8 +353,6 @@ def test_a_pipe_in_packet_mode_keeps_its_packets(how: str) -> None:
     anew would write without ``O_DIRECT``, its writes running together, where a reader of the
     packets gets one packet (at most 4,096 bytes) a read. Its own descriptor's polled writes
     keep them: every read at most 4,096 bytes, every byte in order (review 63's N2)."""
-    import threading
-
     from formats import stops
 
     try:
@@ -350,24 +361,9 @@ def test_a_pipe_in_packet_mode_keeps_its_packets(how: str) -> None:
         pytest.skip(f"no packet-mode pipe: {exc}")
     assert stops._twin(writer) == -1
     data = bytes(range(256)) * 1024  # 256 KiB, four times a pipe's room
-    reads: list[int] = []
-    got = bytearray()
-
-    def read() -> None:
-        while piece := os.read(reader, 1 << 16):
-            reads.append(len(piece))
-            got.extend(piece)
-            time.sleep(0.0005)  # (a slow reader: the pipe fills, the writes poll)
-
-    thread = threading.Thread(target=read)
-    thread.start()
-    try:
-        written(how, writer, data)
-    finally:
-        os.close(writer)
-        thread.join(timeout=60)
-        os.close(reader)
-    assert bytes(got) == data
+    # (a slow reader: the pipe fills, the writes poll)
+    got, reads = read_slowly(reader, writer, lambda: written(how, writer, data))
+    assert got == data
     assert max(reads) <= stops.PIPE_BUF
 
 

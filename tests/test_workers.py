@@ -1015,7 +1015,8 @@ def test_a_spill_file_has_no_name_and_is_made_in_the_temporary_folder(tmp_path, 
     import tapegate.workers as workers
 
     monkeypatch.setenv("TMPDIR", str(tmp_path))
-    fd = workers._spill_file()
+    fd, folder = workers._spill_file()
+    assert folder == str(tmp_path)
     try:
         assert os.pwrite(fd, "é".encode(), 0) == 2
         assert workers._read(fd, 2, 0).decode() == "é"
@@ -1025,7 +1026,8 @@ def test_a_spill_file_has_no_name_and_is_made_in_the_temporary_folder(tmp_path, 
     finally:
         os.close(fd)
     monkeypatch.setenv("TMPDIR", str(tmp_path / "missing"))
-    fd = workers._spill_file()
+    fd, folder = workers._spill_file()
+    assert folder != str(tmp_path / "missing")  # (tempfile's choice)
     try:
         assert os.pwrite(fd, b"x", 0) == 1 and workers._read(fd, 1, 0) == b"x"
     finally:
@@ -1301,7 +1303,7 @@ def test_the_main_thread_does_items_while_the_due_one_runs_and_keeps_their_order
     spills: list[int] = []
     spill_file = workers._spill_file
 
-    def counted() -> int:
+    def counted() -> tuple[int, str]:
         spills.append(1)
         return spill_file()
 
@@ -1612,3 +1614,179 @@ def test_a_second_ctrl_c_ends_the_join_of_a_thread_that_never_returns(tmp_path):
             proc.wait()
     assert proc.returncode in (-signal.SIGINT, 128 + signal.SIGINT, 1), err
     assert b"KeyboardInterrupt" in err and sent >= 2, (sent, err)
+
+
+def _full(*args: object) -> OSError:
+    import errno
+
+    return OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), *args)
+
+
+def _mapped_within(seconds: float, *args: Any, **kwargs: Any) -> list[object]:
+    """ordered_map's pieces and results, in the order received, from a thread of its own
+    (without the signal handlers of the main thread's map), which must end in ``seconds``:
+    a map whose threads all wait would otherwise hang the test."""
+    import threading
+
+    got: list[object] = []
+    failed: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            for result in ordered_map(*args, receive=got.append, **kwargs):
+                got.append(result)
+        except BaseException as exc:
+            failed.append(exc)
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    thread.join(seconds)
+    assert not thread.is_alive(), "the map hung"
+    if failed:
+        raise failed[0]
+    return got
+
+
+def _pieces_of(item: int) -> int:
+    return 3 * PIECES if item % 3 == 0 else 2
+
+
+def _sending(item: int) -> int:
+    if item == 0:  # (the items after it done meanwhile: their pieces wait, past the budget)
+        time.sleep(0.3)
+    for n in range(_pieces_of(item)):
+        piece = f"{item}:{n}:" + "é" * (n % 7)
+        send(piece.encode() if n % 2 else piece)
+    return item
+
+
+def _expected_pieces(items: list[int]) -> list[object]:
+    expected: list[object] = []
+    for item in items:
+        expected.extend((f"{item}:{n}:" + "é" * (n % 7)).encode() if n % 2
+                        else f"{item}:{n}:" + "é" * (n % 7) for n in range(_pieces_of(item)))
+        expected.append(item)
+    return expected
+
+
+@pytest.mark.parametrize("jobs", [2, 3])
+@pytest.mark.parametrize("early", [False, True])
+def test_a_spill_that_cannot_be_made_loses_no_piece(monkeypatch, capfd, jobs, early):
+    """Review 75, N1: where no spill file can be made (a full temporary folder, no descriptor
+    left), every item's pieces still come in order, with the map's threads waiting for their
+    items' turn (items started early among them: no thread waits for ever) and the main
+    thread's own item holding its pieces; said at most once on stderr, naming the folder."""
+    import tapegate.workers as workers
+
+    def no_room() -> tuple[int, str]:
+        raise _full("/full")
+
+    monkeypatch.setattr(workers, "_spill_file", no_room)
+    monkeypatch.setattr(workers, "WAITING", 1)  # (every item past its first piece would spill)
+    items = list(range(40))
+    sizes = [1] * len(items)
+    if early:  # long ones late in the batch, started first (first())
+        for index in (30, 33, 36, 39):
+            sizes[index] = 200
+    got = _mapped_within(60, _sending, items, jobs, sizes=sizes)
+    assert got == _expected_pieces(items)
+    told = [line for line in capfd.readouterr().err.splitlines() if line]
+    assert told in ([], ["tapegate: cannot write the reports waiting for their turn to /full: "
+                         "No space left on device; they are held in memory instead"]), told
+
+
+def test_a_spill_that_fails_midway_keeps_the_pieces_after_those_spilled(monkeypatch):
+    """A spill file whose writes fail once some pieces are in it (the disk full meanwhile):
+    the pieces in the file come back first, then those held after them, in order."""
+    import tapegate.workers as workers
+
+    monkeypatch.setattr(workers, "WAITING", 1)
+    writes = [0]
+    pwrite = os.pwrite
+
+    def filling(fd: int, data: bytes, at: int) -> int:
+        writes[0] += 1
+        if writes[0] > 6:
+            raise _full()
+        if writes[0] == 6:  # a short write, then no room: its part is never read
+            return pwrite(fd, data[:1], at)
+        return pwrite(fd, data, at)
+
+    monkeypatch.setattr(os, "pwrite", filling)
+    items = list(range(24))
+    for jobs, sizes in ((2, None), (2, [1] * 24), (3, [1] * 20 + [50] * 4)):
+        writes[0] = 0
+        got = _mapped_within(60, _sending, items, jobs, sizes=sizes)
+        assert got == _expected_pieces(items), (jobs, sizes)
+        assert writes[0] > 6, (jobs, sizes)  # (the spill did fail)
+
+
+_NO_ROOM = """
+import errno, os, sys
+import tapegate.workers as workers
+from tapegate.launch import main
+
+workers.WAITING = workers.EARLY = 0  # every piece of an item not due would spill
+def no_room():
+    raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), "/no-room")
+workers._spill_file = no_room
+sys.argv = ["tapegate", *sys.argv[1:]]
+main(clean_exit=True)
+"""
+
+
+@pytest.mark.parametrize("fmt", ["text", "json"])
+def test_check_whose_spill_has_no_room_reports_every_file_as_one_thread(tmp_path, fmt):
+    """Review 75, N1: `check -j 2` whose report spill cannot be written (no room in the
+    temporary folder) told files it had read as "cannot read FILE: No space left on device"
+    (exit 2) and lost their findings. Now its output is -j 1's, byte for byte, with the same
+    exit code; stderr is -j 1's, with at most one line more that says where the spill
+    failed."""
+    cam = _long_last(tmp_path)
+    (cam / "m05.nc").write_text(ODD * 3)
+    args = ["check", str(cam), "-p", "fanuc-mill", "--format", fmt, "--all"]
+    runs = {jobs: subprocess.run([sys.executable, "-c", _NO_ROOM, *args, "-j", jobs],
+                                 capture_output=True, cwd=ROOT, timeout=300, check=False,
+                                 env={**os.environ, "PYTHONPATH": str(ROOT)})
+            for jobs in ("1", "2")}
+    one, two = runs["1"], runs["2"]
+    assert one.returncode == 1, one.stderr
+    assert (two.returncode, two.stdout) == (one.returncode, one.stdout)
+    told = (b"tapegate: cannot write the reports waiting for their turn to /no-room: "
+            b"No space left on device; they are held in memory instead\n")
+    assert two.stderr.replace(told, b"", 1) == one.stderr, two.stderr[-2000:]
+    assert b"cannot read" not in two.stderr and b"Traceback" not in two.stderr
+    assert len(one.stdout) > 4 * 64 * 1024  # (more than the threads hold: it would spill)
+
+
+def _small_files() -> None:
+    """A child's files limited to 64 KiB (RLIMIT_FSIZE; a write past it fails with EFBIG,
+    SIGXFSZ ignored): a temporary file that finds no room, without a full disk."""
+    import resource
+    import signal
+
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 16, 1 << 16))
+
+
+@pytest.mark.skipif(not hasattr(os, "O_TMPFILE"), reason="needs Linux")
+def test_check_whose_spill_files_are_cut_short_reports_every_file_as_one_thread(tmp_path):
+    """The spill's writes failing for real (no monkeypatch): every file of the child limited
+    to 64 KiB, the spill of a long report fails midway with EFBIG. -j 2's report is -j 1's
+    (which spills nothing), byte for byte, with its exit code; nothing is told as not read."""
+    cam = _long_last(tmp_path)
+    args = [sys.executable, "-m", "tapegate", "check", str(cam), "-p", "fanuc-mill",
+            "--format", "jsonl", "--all"]
+    runs = {jobs: subprocess.run([*args, "-j", jobs], capture_output=True, cwd=ROOT,
+                                 timeout=300, check=False, preexec_fn=_small_files,
+                                 env={**os.environ, "PYTHONPATH": str(ROOT),
+                                      "TMPDIR": str(tmp_path)})
+            for jobs in ("1", "2")}
+    one, two = runs["1"], runs["2"]
+    assert one.returncode == 1, one.stderr
+    assert (two.returncode, two.stdout) == (one.returncode, one.stdout)
+    assert len(one.stdout) > 4 * (1 << 16)  # (its spill, if any, is cut short)
+    told = f"tapegate: cannot write the reports waiting for their turn to {tmp_path}: "
+    lines = [line for line in two.stderr.decode().splitlines() if not line.startswith(told)]
+    assert lines == one.stderr.decode().splitlines()
+    assert "cannot read" not in two.stderr.decode()

@@ -336,6 +336,21 @@ fn farthest_named(tail: &str, line: usize) -> String {
     format!("{}{line}{}", &tail[..k], &tail[k + digits..])
 }
 
+impl Placed {
+    /// An offset's position as (`place`, `work`, `at`, `line`); None for any other.
+    fn offset(&self) -> Option<(u8, u8, f64, usize)> {
+        match *self {
+            Placed::Offset {
+                place,
+                work,
+                at,
+                line,
+            } => Some((place, work, at, line)),
+            _ => None,
+        }
+    }
+}
+
 impl Checker {
     /// A program read from the reset state begins (`number`, its O word at `at`): its own
     /// positions kept apart from the spans before it. Only with no shift, frame or
@@ -1111,13 +1126,7 @@ impl Checker {
             {
                 continue;
             }
-            let Placed::Offset {
-                place,
-                work,
-                at,
-                line,
-            } = f.placed
-            else {
+            let Some((place, work, at, line)) = f.placed.offset() else {
                 self.found.push(f);
                 continue;
             };
@@ -1176,13 +1185,7 @@ impl Checker {
     /// judged again with it (None where within the travel, or where the value is not known);
     /// else as said.
     fn calls_rejudged(&self, f: Finding, marks: &[i64]) -> Option<Finding> {
-        let Placed::Offset {
-            place,
-            work,
-            at,
-            line,
-        } = f.placed
-        else {
+        let Some((place, work, at, line)) = f.placed.offset() else {
             return Some(f);
         };
         let (w, i) = (usize::from(work), usize::from(place));

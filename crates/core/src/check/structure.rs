@@ -4025,6 +4025,22 @@ impl Checker {
         }
     }
 
+    /// The labels of a block of calls (a row of the main program's calls), the last first,
+    /// as [`LaterChain`] holds them; None where one is worked out as the line runs (`o[#1]
+    /// call`: no chain of known bodies).
+    fn linuxcnc_row_labels(&self, b: &BlockView<'_>) -> Option<LaterChain> {
+        let labels: LaterChain = b
+            .statements
+            .iter()
+            .rev()
+            .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+            .collect();
+        labels
+            .iter()
+            .all(|l| !crate::statement::computed_label(l))
+            .then_some(labels)
+    }
+
     /// LinuxCNC: the motion mode after a block the checker does not follow (`calls`: it has
     /// a calling word), which is not known ([`LinuxCncMotion::Unknown`]). Where every
     /// statement of the block is a call of a definition read before it whose body writes no
@@ -4059,13 +4075,7 @@ impl Checker {
         // (calls in a row of the main program after a call of a label not read yet: the
         // move after them held for all their bodies; review 63-lcnc63 N2)
         if let Some((chain, _, m)) = row.filter(|_| only_calls && self.open_definition.is_none()) {
-            let mut labels: LaterChain = b
-                .statements
-                .iter()
-                .rev()
-                .map(|&(_, _, text)| self.linuxcnc_call_label(text))
-                .collect();
-            if labels.iter().all(|l| !crate::statement::computed_label(l)) {
+            if let Some(mut labels) = self.linuxcnc_row_labels(b) {
                 labels.extend(chain);
                 self.linuxcnc_later.pending = Some((labels, b.line, m));
             }
@@ -4158,14 +4168,9 @@ impl Checker {
             let state = &self.machine.state;
             if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
                 if !crate::statement::computed_label(&label) && only_calls {
-                    let labels: LaterChain = b
-                        .statements
-                        .iter()
-                        .rev()
-                        .map(|&(_, _, text)| self.linuxcnc_call_label(text))
-                        .collect();
-                    if labels.iter().all(|l| !crate::statement::computed_label(l))
-                        && self.linuxcnc_later.pending.is_none()
+                    if let Some(labels) = self
+                        .linuxcnc_row_labels(b)
+                        .filter(|_| self.linuxcnc_later.pending.is_none())
                     {
                         self.linuxcnc_later.pending = Some((labels, b.line, m));
                     }
