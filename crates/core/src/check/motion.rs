@@ -835,22 +835,25 @@ impl Checker {
             }
         }
         // the radius: R where the profile reads R as a length (an Okuma lathe's L: the
-        // machine's radius letter), or Sinumerik's CR=
+        // machine's radius letter), or Sinumerik's CR=, whose value is a number or, where
+        // it is an expression (`CR=R1`, `CR=THR[1]`), given but not known here
         let cr = b.statements.iter().find_map(|&(_, _, text)| {
             let upper = text.to_ascii_uppercase();
-            upper
-                .strip_prefix(b"CR=")
-                .and_then(|v| std::str::from_utf8(v).ok())
-                .and_then(|v| Dec::parse(v.trim()))
+            upper.strip_prefix(b"CR=").map(|v| {
+                std::str::from_utf8(v)
+                    .ok()
+                    .and_then(|v| Dec::parse(v.trim()))
+            })
         });
         let letter = self.config.modal.arc_radius;
         let radius_length = letter != b'R' || self.config.pqr[2] == Role::Length;
-        if radius_length && unknown(letter) {
-            // a radius of unknown value (`R#500`, #500 not known) is given all the same: the
-            // arc is not judged, as with a centre of unknown value (review 54, F6: TG404
-            // "arc without I J (or R)")
+        if (radius_length && unknown(letter)) || cr == Some(None) {
+            // a radius of unknown value (`R#500`, #500 not known; a SINUMERIK's `CR=R1`) is
+            // given all the same: the arc is not judged, as with a centre of unknown value
+            // (review 54, F6: TG404 "arc without I J (or R)"; held26's `CR=thr1`)
             return;
         }
+        let cr = cr.flatten();
         let radius = match v.get(letter) {
             Some(r) if radius_length => Some(r),
             _ => cr,
@@ -1908,6 +1911,33 @@ mod tests {
         }
         let text = "G17 G90 G0 X0 Y0\nG2 X20 Y0 CR=10 F100\nR1=2\nX0 Y0\nM30\n";
         assert_eq!(fired(sinumerik(), text, Rule::ArcCentreMissing), [(4, 1)]);
+    }
+
+    /// A SINUMERIK arc's `CR=` of a parameter, a variable or an expression gives the radius
+    /// with a value the checker does not follow (held26: NadjImre's `G3 X=XC Z=ZC CR=thr1`,
+    /// a GUD): the arc is not judged, as a FANUC's `R#500` is not (review 54, F6); a number
+    /// still is, and an arc with neither centre nor CR= still has none.
+    #[test]
+    fn a_sinumerik_radius_of_an_expression_is_given_not_known() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        for cr in [
+            "CR=R1",
+            "CR=THR1",
+            "CR=$P_F",
+            "CR=THR[1]",
+            "CR=A+1",
+            "CR=(A+1)",
+            "CR=R1*2",
+        ] {
+            let text = format!("DEF REAL A\nR1=10\nG17 G90 G1 X0 Y0 F100\nG2 X20 Y0 {cr}\nM30\n");
+            for rule in [Rule::ArcCentreMissing, Rule::ArcRadiusTooShort] {
+                assert_eq!(fired(sinumerik(), &text, rule), [], "{cr} {rule:?}");
+            }
+        }
+        let small = "G17 G90 G1 X0 Y0 F100\nG2 X20 Y0 CR=5\nM30\n";
+        assert_eq!(fired(sinumerik(), small, Rule::ArcRadiusTooShort), [(2, 1)]);
+        let none = "G17 G90 G1 X0 Y0 F100\nG2 X20 Y0\nM30\n";
+        assert_eq!(fired(sinumerik(), none, Rule::ArcCentreMissing), [(2, 1)]);
     }
 
     #[test]
