@@ -34,6 +34,9 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn after_assignment(&mut self, b: &BlockView<'_>) {
+        if self.early_on && Self::writes_offset_variable(b) {
+            self.early_changes_offsets();
+        }
         if self.offset_variable_written || !Self::writes_offset_variable(b) {
             return;
         }

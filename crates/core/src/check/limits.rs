@@ -116,6 +116,12 @@ const XYZ: u16 = 0b111;
 /// that axis.
 pub(super) const PENDING_OWN: i64 = -1;
 
+/// Among a finding's [`Finding::pending_on`]: a position of a program written after its
+/// calls judged under a call's offset whose distance mode is the one the program leaves
+/// ([`Checker::work_call_tentative_end`]). Between [`PENDING_CALLS_WRITTEN`]'s marks and
+/// [`super::leaves::PENDING_LEAVES`]'s.
+pub(super) const PENDING_MODE_SELF: i64 = -(1 << 44);
+
 /// Among a finding's [`Finding::pending_on`], `PENDING_CALLED - n`: a position of program
 /// `n` read under the offset the program before it in the file left (a guess), said after
 /// its own G54-G59 by its merge: dropped at the file's end where no call in the file names
@@ -558,6 +564,9 @@ impl Checker {
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
         self.work_unplaced = false;
         self.offsets_unread_only = false;
+        if let Some(w) = self.work_call.as_mut() {
+            w.others.clear();
+        }
         if self.config.work_offsets.is_empty() || self.offsets_lost {
             return;
         }
@@ -598,6 +607,13 @@ impl Checker {
             self.linuxcnc_reselected(g);
         }
         self.work_unplaced = false;
+        if self.early_on {
+            self.early_changes_offsets();
+        }
+        // (a program written after its calls selects its own: the calls' no longer)
+        if let Some(w) = self.work_call.as_mut() {
+            w.others.clear();
+        }
         if self.offsets_unread_only {
             self.work_unread_reselected();
         }
@@ -3414,7 +3430,83 @@ impl Checker {
             self.excursion_farther(i, work, (at, line), out);
         }
         self.outside[i] = out;
+        if written.is_none()
+            && self
+                .work_call
+                .as_ref()
+                .is_some_and(|w| w.work == work && !w.others.is_empty())
+        {
+            self.offset_position_others((axis, i), at, (low, high), (line, column));
+        }
         said_outside
+    }
+
+    /// In a program written after its calls, run under their offset ([`Checker::work_call`]):
+    /// its position `at` on the axis `axis` (place `i`) judged under the offset of each other
+    /// call ([`WorkCall::others`](super::structure::WorkCall)), an excursion beyond the
+    /// travel said once a call, naming it (issue 32 item 4: `O1000` / `G90 G54` / `M98 P2000`
+    /// / `G55` / `M98 P2000` / `M30` / `O2000` / `G0 X-700.` / `M99` runs X-700. at -800 at
+    /// the second call; calls under different offsets left it not compared).
+    #[cold]
+    #[inline(never)]
+    fn offset_position_others(
+        &mut self,
+        (axis, i): (u8, usize),
+        at: f64,
+        (low, high): (f64, f64),
+        at_line: (usize, usize),
+    ) {
+        let w = &self.offsets_written;
+        if w.any() || w.moved || w.shifted != 0 || self.work_guessed.is_some() || self.work_run_on {
+            return;
+        }
+        let Some(mut call) = self.work_call.take() else {
+            return;
+        };
+        let mut held = false;
+        // (after a G90/G91 of its own, its positions are in its own mode at every call)
+        let own_mode = self.machine.distance_codes != call.codes_at;
+        for (work, words, line, outside, tentative) in &mut call.others {
+            let Some(offset) = self
+                .config
+                .work_offsets
+                .iter()
+                .find(|&&(g, a, _)| g == *work && a == axis)
+                .map(|&(_, _, v)| v)
+            else {
+                continue;
+            };
+            let machine_at = at + offset.to_f64();
+            let out = if machine_at < low - 1e-9 {
+                -1
+            } else if machine_at > high + 1e-9 {
+                1
+            } else {
+                0
+            };
+            if out != 0 && out != outside[i] {
+                let message = format!(
+                    "{} goes to {} in machine coordinates (work {} + G{work} offset {offset}), \
+                     outside the travel {low} to {high}{}",
+                    axis as char,
+                    round6(machine_at),
+                    round6(at),
+                    super::structure::WorkCall::named_by(self.in_hand, words, *line)
+                );
+                if self.report_placed(message, at_line, super::Placed::Not)
+                    && *tentative
+                    && !own_mode
+                {
+                    if let Some(f) = self.found.last_mut() {
+                        f.pending_on.push(PENDING_MODE_SELF);
+                        held = true;
+                    }
+                }
+            }
+            outside[i] = out;
+        }
+        call.held |= held;
+        self.work_call = Some(call);
     }
 
     /// The value a G10 of the program's run wrote, known, of offset G`work` on the axis of

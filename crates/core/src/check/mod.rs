@@ -1024,6 +1024,10 @@ pub struct Checker {
     /// ([`Checker::work_unread_reselected`]); and the block in hand made such a call.
     offsets_unread_only: bool,
     call_unread_here: bool,
+    /// The block in hand called a subprogram read before it that surely leaves the work
+    /// offsets as they were ([`Checker::keeps_offsets`]), or opened or closed a LinuxCNC
+    /// definition read apart: the offsets are not lost at it.
+    call_keeps: bool,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1093,6 +1097,10 @@ pub struct Checker {
     /// mode as not known (G91 from a position not known): a G52 while it is the count is read
     /// as before, not as one under G91 (review 48, F11).
     mode_lost_codes: Option<u32>,
+    /// The programs whose calls lost the distance mode since [`Checker::mode_lost_codes`]
+    /// was set (`i64::MIN` for a call not by number): where they are all one program, a
+    /// later call of it is made in the mode that program leaves ([`CallWork::others`]).
+    mode_lost_by: Vec<i64>,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1727,6 +1735,7 @@ impl Checker {
             work_unplaced: false,
             offsets_unread_only: false,
             call_unread_here: false,
+            call_keeps: false,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -1741,6 +1750,7 @@ impl Checker {
             frames: limits::Frames::default(),
             noted: 0,
             mode_lost_codes: None,
+            mode_lost_by: Vec::new(),
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
@@ -2548,8 +2558,11 @@ impl Checker {
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
-                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                if !std::mem::take(&mut self.call_keeps) {
+                    self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                }
             }
+            self.call_keeps = false;
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
@@ -2905,11 +2918,14 @@ impl Checker {
             self.linuxcnc_rate = None;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
-            let unread_only = std::mem::take(&mut self.call_unread_here)
-                && (!self.offsets_lost || self.offsets_unread_only);
-            self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
-            self.offsets_unread_only = unread_only;
+            if !std::mem::take(&mut self.call_keeps) {
+                let unread_only = std::mem::take(&mut self.call_unread_here)
+                    && (!self.offsets_lost || self.offsets_unread_only);
+                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                self.offsets_unread_only = unread_only;
+            }
         }
+        self.call_keeps = false;
         // every M word with a value read is in `values.ms`: a block with none (nearly every
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
         // to look at (RET, RTS)
@@ -3189,6 +3205,7 @@ impl Checker {
         if !self.linuxcnc_later.ends.is_empty() {
             self.linuxcnc_later_released_at(true);
         }
+        self.work_call_tentative_end();
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();

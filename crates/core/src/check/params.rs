@@ -1529,7 +1529,7 @@ impl Checker {
             self.offset_variables(b);
         }
         // (review 62a F1)
-        if !self.offset_variable_written {
+        if !self.offset_variable_written || self.early_on {
             self.after_assignment(b);
         }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC

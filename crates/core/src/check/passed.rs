@@ -425,6 +425,7 @@ impl Checker {
         self.frames = run.frames;
         self.noted = run.noted;
         self.mode_lost_codes = run.mode_lost_codes;
+        self.mode_lost_by = run.mode_lost_by;
         self.shifts = run.shifts;
         self.transformed = run.transformed;
         self.length_decimal = run.length_decimal;
