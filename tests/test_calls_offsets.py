@@ -160,6 +160,11 @@ DEF = "o100 sub / G0 X-700 / o100 endsub / "
     # (the body ends the program: nothing after the call runs)
     ("o100 sub / G0 X-10 / M2 / o100 endsub / G21 G90 G54 / G0 X0 Y0 / o100 call / G55 / "
      "G0 X-700 / M2", []),
+    # (a definition that reads a G49, G92 or G55 of its own where it stands: the main
+    # program's state after its endsub is read with it, so its moves lose the offsets there)
+    ("G21 G90 G54 / G43 H1 Z0 / o100 sub / G49 / o100 endsub / G0 Z-515 / M2", []),
+    ("G21 G90 G54 / G0 X0 Y0 / o100 sub / G92 X-400 / o100 endsub / G0 X-700 / M2", []),
+    ("G21 G90 G54 / G0 X0 Y0 / o100 sub / G55 / o100 endsub / G0 X-700 / M2", []),
     # (its position from a parameter, or under a rotation at the call: not known)
     ("o100 sub / G0 X#1 / o100 endsub / G21 G90 G55 / G0 X0 Y0 / o100 call [-700] / M2", []),
     (DEF + "G21 G90 G55 / G0 X0 Y0 / G68 X0 Y0 R180 / o100 call / M2", []),

@@ -1000,7 +1000,7 @@ impl Checker {
     /// judged under the offset in force as before it, its later calls included: the same
     /// subprogram called once a fixture under G54, G55, G56 is judged at each call (issue
     /// 32 item 4; review 62a F6d: only the first call was).
-    fn keeps_offsets(&self, k: usize) -> bool {
+    pub(super) fn keeps_offsets(&self, k: usize) -> bool {
         let body = &self.pending[k].body;
         let w = &body.writes;
         !body.loses

@@ -1557,8 +1557,16 @@ impl Checker {
             Some((false, _)) if was_open && self.open_definition.is_none() => {
                 let read_apart = self.early_on;
                 self.definition_end();
-                // (nor at its endsub, where it was kept for its calls)
-                self.call_keeps = read_apart && !self.early_on;
+                // (nor at its endsub, where it was kept for its calls and changed nothing
+                // of the main program's offsets where read: a G49, G92 or G55 of its own
+                // read there stays in the state the main program's lines are read in)
+                self.call_keeps = read_apart
+                    && !self.early_on
+                    && self
+                        .pending
+                        .len()
+                        .checked_sub(1)
+                        .is_some_and(|k| self.keeps_offsets(k));
             }
             _ => {}
         }
