@@ -204,6 +204,14 @@ AFTER = "O1000 / G21 G17 G90 G54 / G0 X0 Y0 / "
     ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G54 / G0 X-700. / M99", []),
     # (it writes a G10 of its own first: not judged under the others)
     ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G10 L2 P2 X0. / G0 X-700. / M99", []),
+    # (review 76 F1: the body changes the offsets after its move, so the second call runs
+    # under what it wrote: a G10, a variable, a shift, a frame left on, a call of a program
+    # not in the file -- the other call's findings dropped at its end)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G10 L2 P2 X0. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / #5241=0. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G52 X300. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G68 X0 Y0 R180. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / M98 P9000 / M99", []),
     # (a G10 between the calls: left not compared, as calls that disagree were)
     ("M98 P2000 / G10 L2 P2 X-200. / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / M99", []),
 ])
@@ -212,3 +220,30 @@ def test_a_body_after_its_calls_is_judged_under_each_call_s_offset(
     got = said(AFTER + blocks, fanuc)
     assert [(line, col, msg[:len(e)]) for (line, col, msg), (_, _, e) in zip(got, expected)] \
         == expected and len(got) == len(expected)
+
+
+def test_haas_g110_selects_an_offset_the_profile_does_not_give(tmp_path: Path) -> None:
+    """Review 76 F2: a Haas's G110-G129 select the additional work offsets #7-#26 (G154
+    P1-P20): the positions after one are not judged under the G55 before it, inline or after
+    a call of a body that writes it."""
+    profile = tmp_path / "wo2h.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
+                       "Y = [-16.0, 16.0]\nZ = [-20.0, 0.5]\n[work_offsets]\n"
+                       "G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\nG55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
+    head = "O01000 / G20 G17 G90 G55 / G0 X0 Y0 / "
+    assert said(head + "G110 / G0 X-27. / M30", str(profile)) == []
+    assert said("O02000 / G0 X-5. / G129 / M99 / " + head + "M98 P2000 / G0 X-27. / M30",
+                str(profile)) == []
+    # (without it, under G55: -31)
+    assert [g[:2] for g in said(head + "G0 X-27. / M30", str(profile))] == [(4, 4)]
+
+
+def test_linuxcnc_m72_leaves_the_work_offset_not_known(lcnc: str) -> None:
+    """Review 76 F3: M72 restores the work offset M70 saved (rs274 -g: SET_G5X_OFFSET(1) at
+    the M72): the call after it, and an inline move, are not judged under the G55 between."""
+    assert said(DEF + "G21 G17 G90 G54 / G0 X0 Y0 / o100 call / M70 / G55 / M72 / o100 call / "
+                "M2", lcnc) == []
+    assert said("G21 G17 G90 G54 / G0 X0 Y0 / M70 / G55 / M72 / G0 X-700 / M2", lcnc) == []
+    # (a G55 selected after the M72: judged again)
+    assert [g[:2] for g in said("G21 G90 G54 / G0 X0 Y0 / M70 / M72 / G55 / G0 X-700 / M2",
+                                lcnc)] == [(6, 4)]

@@ -122,6 +122,13 @@ pub(super) const PENDING_OWN: i64 = -1;
 /// [`super::leaves::PENDING_LEAVES`]'s.
 pub(super) const PENDING_MODE_SELF: i64 = -(1 << 44);
 
+/// Among a finding's [`Finding::pending_on`]: a position of a program written after its
+/// calls judged under the offset of a call after the first ([`CallWork::others`]): held to
+/// the program's end, dropped where it may have changed the offsets the later calls run
+/// under (a G10, a work offset variable, a shift or frame left on, a call not followed...;
+/// review 76-calls76 F1).
+pub(super) const PENDING_OTHER_CALL: i64 = PENDING_MODE_SELF - 1;
+
 /// Among a finding's [`Finding::pending_on`], `PENDING_CALLED - n`: a position of program
 /// `n` read under the offset the program before it in the file left (a guess), said after
 /// its own G54-G59 by its merge: dropped at the file's end where no call in the file names
@@ -566,6 +573,7 @@ impl Checker {
         self.offsets_unread_only = false;
         if let Some(w) = self.work_call.as_mut() {
             w.others.clear();
+            w.unsure = true;
         }
         if self.config.work_offsets.is_empty() || self.offsets_lost {
             return;
@@ -599,6 +607,21 @@ impl Checker {
             "from line {line} on: a program no call before it names runs under its caller's \
              work offset, not known here, until it selects one of its own"
         ));
+    }
+
+    /// LinuxCNC's M72 in the block ([`Checker::work_offset_given`]): the work offset M70
+    /// saved is in force, not known here.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_m72_work(&mut self) {
+        self.work = None;
+        self.work_unplaced = false;
+        if self.early_on {
+            self.early_changes_offsets();
+        }
+        if let Some(w) = self.work_call.as_mut() {
+            w.others.clear();
+        }
     }
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
@@ -1248,6 +1271,14 @@ impl Checker {
                     line,
                     &format!("{} selects an offset the profile does not give", w.token()),
                 ),
+                // a Haas mill's G110-G129: the additional work offsets #7-#26 (G154 P1-P20;
+                // Haas Mill Operator's Manual, "G110-G129 Coordinate System #7-26"), none
+                // of G54-G59 (review 76-calls76 F2: `G55` / `G110` / `G0 X-27.` was judged
+                // under G55)
+                110..=129 if self.config.haas => self.offsets_rewritten(
+                    line,
+                    &format!("{} selects an offset the profile does not give", w.token()),
+                ),
                 // G53: machine coordinates for the block; under ISO 6983-1 it cancels the
                 // zero shift until the next G54-G59
                 53 => {
@@ -1258,6 +1289,16 @@ impl Checker {
                 }
                 _ => {}
             }
+        }
+        // LinuxCNC's M72 restores the work offset M70 saved (rs274 -g: a SET_G5X_OFFSET at
+        // the M72), which is not followed here: none is taken as selected until the program
+        // selects one, and a definition read apart keeps no position of its own after it
+        // (review 76-calls76 F3: `G54` / `M70` / `G55` / `M72` / `G0 X-700` runs at -700)
+        if self.letters & bit(b'M') != 0
+            && self.config.family == Family::LinuxCnc
+            && self.values.ms.contains(&72)
+        {
+            self.linuxcnc_m72_work();
         }
         one_shot |= self.frames(b);
         // (a program that shifts or sets the coordinates changes them where it is called)
@@ -3493,12 +3534,12 @@ impl Checker {
                     round6(at),
                     super::structure::WorkCall::named_by(self.in_hand, words, *line)
                 );
-                if self.report_placed(message, at_line, super::Placed::Not)
-                    && *tentative
-                    && !own_mode
-                {
+                if self.report_placed(message, at_line, super::Placed::Not) {
                     if let Some(f) = self.found.last_mut() {
-                        f.pending_on.push(PENDING_MODE_SELF);
+                        f.pending_on.push(PENDING_OTHER_CALL);
+                        if *tentative && !own_mode {
+                            f.pending_on.push(PENDING_MODE_SELF);
+                        }
                         held = true;
                     }
                 }

@@ -757,13 +757,28 @@ impl Checker {
         };
         w.held = false;
         let wrote = w.codes_at != self.machine.distance_codes;
-        let mark = super::limits::PENDING_MODE_SELF;
-        if wrote {
-            self.found.retain(|f| !f.pending_on.contains(&mark));
-        } else {
-            for f in &mut self.found {
-                f.pending_on.retain(|&m| m != mark);
-            }
+        // (what its run leaves for the next call: a G10 or variable write, a shift or frame
+        // left on, an end or return elsewhere, a tool length offset or units left, a call
+        // not followed: the next call's offsets are not the profile's, review 76 F1)
+        let w = &self.offsets_written;
+        let changed = self.work_call.as_ref().is_some_and(|c| c.unsure)
+            || w.any()
+            || w.moved
+            || w.shifted != 0
+            || !w.unread.is_empty()
+            || self.shifts_on()
+            || self.frames_on()
+            || self.transformed.is_some()
+            || self.in_hand.is_none_or(|n| self.after_unsure.contains(&n));
+        let (mode, other) = (
+            super::limits::PENDING_MODE_SELF,
+            super::limits::PENDING_OTHER_CALL,
+        );
+        self.found.retain(|f| {
+            !(changed && f.pending_on.contains(&other) || wrote && f.pending_on.contains(&mode))
+        });
+        for f in &mut self.found {
+            f.pending_on.retain(|&m| m != mode && m != other);
         }
     }
 
@@ -806,6 +821,7 @@ impl Checker {
             others: c.others.clone(),
             codes_at: self.machine.distance_codes,
             held: false,
+            unsure: false,
         };
         self.offsets_written = c.written.clone();
         self.work = Some(w.work);
@@ -6412,6 +6428,9 @@ pub(super) struct WorkCall {
     /// tentative call ([`Other`]) is held.
     pub(super) codes_at: u32,
     pub(super) held: bool,
+    /// It lost the profile's offsets ([`Checker::offsets_rewritten`]) while read: the
+    /// findings held for the other calls are dropped at its end.
+    pub(super) unsure: bool,
 }
 
 impl WorkCall {
