@@ -247,3 +247,28 @@ def test_linuxcnc_m72_leaves_the_work_offset_not_known(lcnc: str) -> None:
     # (a G55 selected after the M72: judged again)
     assert [g[:2] for g in said("G21 G90 G54 / G0 X0 Y0 / M70 / M72 / G55 / G0 X-700 / M2",
                                 lcnc)] == [(6, 4)]
+
+
+def test_a_conditional_offset_variable_write_leaves_the_offsets_not_known(fanuc: str) -> None:
+    """Review 76 F4: `IF [#1 EQ 1] THEN #5241=0.` may set G55's X to 0: the positions after
+    it, inline, after a call of a body holding it, or at the body's later call, are not
+    judged under the profile's G55."""
+    assert said("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / IF [#1 EQ 1] THEN #5241=0. / "
+                "G0 X-700. / M30", fanuc) == []
+    assert said("O2000 / G0 X-10. / IF [#1 EQ 1] THEN #5241=0. / M99 / O1000 / "
+                "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G0 X-700. / M30", fanuc) == []
+    assert said("O2000 / G0 X-700. / IF [#1 EQ 1] THEN #5241=0. / M99 / " + AFTER
+                + "M98 P2000 / G55 / M98 P2000 / M30", fanuc) == []
+    # (another variable in the IF-THEN: judged as before)
+    assert [g[:2] for g in said("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / IF [#1 EQ 1] THEN "
+                                "#101=0. / G0 X-700. / M30", fanuc)] == [(5, 4)]
+
+
+def test_a_linuxcnc_definition_no_call_names_is_not_judged_under_its_own_offset(
+        lcnc: str) -> None:
+    """Review 76 F5: rs274 never runs a definition the file does not call: its positions under
+    a G55 of its own are not said (as before the definitions were read with no offset)."""
+    assert said("G21 G90 G54 / G0 X0 / o100 sub / G55 / G0 X-700 / o100 endsub / M2",
+                lcnc) == []
+    assert said("o100 sub / G55 / G0 X-700 / o100 endsub / G21 G90 G54 / G0 X0 / M2",
+                lcnc) == []

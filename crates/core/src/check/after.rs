@@ -44,6 +44,20 @@ impl Checker {
         self.after_mark();
     }
 
+    /// A conditional assignment (`IF [..] THEN #5241=0.`) of block `line` that may write a
+    /// work offset's variable: the offsets are not known from here (the write may run or
+    /// not), the program in hand marked, a program read apart changes them.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn conditional_offset_write(&mut self, line: usize) {
+        if self.early_on {
+            self.early_changes_offsets();
+        }
+        self.offset_variable_written = true;
+        self.after_mark();
+        self.offsets_rewritten(line, "a work offset's system variable may be set");
+    }
+
     /// The program in hand marked ([`Checker::after_unsure`]).
     pub(super) fn after_mark(&mut self) {
         if let Some(n) = self.in_hand {

@@ -1710,7 +1710,14 @@ impl Checker {
     /// `M30` / `O2000` / `G0 X-700.` / `M99` was "X spans 1550"). Only where that is sure to
     /// lose no error ([`Checker::judged_alone`]); elsewhere its span is joined to the file's,
     /// as before.
-    fn early_as_read(&mut self, p: Pending) {
+    fn early_as_read(&mut self, mut p: Pending) {
+        // (a LinuxCNC definition no call of the file names never runs from this file (rs274
+        // reads it without running it): its positions under a work offset it selects itself
+        // are not said, as before a definition was read with no offset; review 76-calls76 F5)
+        if matches!(p.body.number, Key::Label(_)) {
+            p.positions
+                .retain(|f| !matches!(f.placed, Placed::Offset { .. }));
+        }
         if !self.judged_alone(&p) {
             // (joined for its own calls only, nothing of the file runs it: its positions read
             // under the offset the program before left are not its caller's, review 57e F0)
