@@ -272,3 +272,15 @@ def test_a_linuxcnc_definition_no_call_names_is_not_judged_under_its_own_offset(
                 lcnc) == []
     assert said("o100 sub / G55 / G0 X-700 / o100 endsub / G21 G90 G54 / G0 X0 / M2",
                 lcnc) == []
+
+
+@pytest.mark.parametrize("blocks", [
+    # (review 76 F6: both calls under G54, the main's G55 after them: -700, not said)
+    "M98 P2000 / G54 / M98 P2000 / G55 / M30 / O2000 / G0 X-700. / M99",
+    # (z8: a call of a body read before in front)
+    "M98 P2001 / M98 P2000 / G54 / M98 P2000 / G55 / M30 / O2000 / G0 X-700. / M99",
+])
+def test_a_body_after_calls_under_one_offset_is_not_read_under_the_main_s_last(
+        fanuc: str, blocks: str) -> None:
+    text = "O2001 / G0 X-10. / M99 / " + AFTER + blocks
+    assert said(text, fanuc) == []

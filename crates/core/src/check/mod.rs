@@ -1505,6 +1505,11 @@ pub struct Checker {
     /// in force was not known (not only calls that disagree): a program of that number
     /// written after them runs under no offset the checker knows (review 61a F5).
     call_works_unknown: HashSet<i64>,
+    /// The work offsets (bit `G5x - 54`) of the calls of each program by number made where
+    /// the offset was known ([`Checker::call_work`]): where the calls disagree, a program
+    /// written after them is read under none unless all were made under the one in force
+    /// at its start (review 76-calls76 F6).
+    call_works_seen: HashMap<i64, u8>,
     /// Calls of a program read apart in units only assumed (no G20/G21 yet), each with the
     /// offset kept where all else is known: recorded where it ends as a main program (its
     /// units the reset state's), as not known where it returns, a subprogram whose units
@@ -1820,6 +1825,7 @@ impl Checker {
             call_units: HashMap::new(),
             call_works: HashMap::new(),
             call_works_unknown: HashSet::new(),
+            call_works_seen: HashMap::new(),
             call_works_assumed: Vec::new(),
             call_works_deferred: Vec::new(),
             later_shift: None,

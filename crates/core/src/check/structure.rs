@@ -599,6 +599,9 @@ impl Checker {
         let mode_by_self = self.mode_lost_codes == Some(self.machine.distance_codes)
             && !self.mode_lost_by.is_empty()
             && self.mode_lost_by.iter().all(|&n| n == number);
+        if let Some(work) = known.filter(|_| !modal) {
+            *self.call_works_seen.entry(number).or_default() |= 1u8 << (work - 54).clamp(0, 7);
+        }
         let here = known.filter(|_| !modal).map(|work| {
             let (call, _) = self.call_words(b);
             let s = &self.machine.state;
@@ -712,8 +715,13 @@ impl Checker {
                     if a.work != b.work && !a.mode_by_self
                         && (a.incremental == b.incremental || b.mode_by_self)
                         && a.length == b.length && own(&a.written) && own(&b.written));
+                // (the same offset, the mode the one this program leaves: the first call's
+                // reading holds for it, its own findings named; review 76-calls76 F6)
+                let same_by_self = matches!((&*before, &here), (Some(a), Some(b))
+                    if a.work == b.work && b.mode_by_self && a.length == b.length
+                        && own(&a.written) && own(&b.written));
                 match (before.as_mut(), &here) {
-                    (Some(a), Some(b)) if same => {
+                    (Some(a), Some(b)) if same || same_by_self => {
                         // (calls beyond the travel on different sides: the body's first
                         // position outside said, review 61a F3)
                         if a.outside != b.outside {
@@ -798,6 +806,15 @@ impl Checker {
             // `O2000` / `M98 P3000` / `M99` / `O1000` / `G90 G55` ... `M30` / `O3000` / `G0
             // X-760.` was "X goes to -860" under O1000's G55)
             if self.call_works_unknown.contains(&number) {
+                self.work = None;
+            }
+            // (calls that disagree, one of them under another offset than the one the
+            // program before left: not that one, review 76-calls76 F6: `G54` / `M98 P2000` /
+            // `G54` / `M98 P2000` / `G55` / `M30` / `O2000` / `G0 X-700.` was judged under
+            // the G55 the main selected after its calls)
+            let seen = self.call_works_seen.get(&number).copied().unwrap_or(0);
+            let left = self.work.map_or(0, |w| 1u8 << (w - 54).clamp(0, 7));
+            if seen & !left != 0 {
                 self.work = None;
             }
             return;
