@@ -284,3 +284,21 @@ def test_a_body_after_calls_under_one_offset_is_not_read_under_the_main_s_last(
         fanuc: str, blocks: str) -> None:
     text = "O2001 / G0 X-10. / M99 / " + AFTER + blocks
     assert said(text, fanuc) == []
+
+
+@pytest.mark.parametrize("text", [
+    # (review 76 F7: the body's G10 writes G54's X: the G55 call's -800 stays)
+    AFTER + "M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G10 L2 P1 X0. / M99",
+    # (F8: another program written after it, called or not)
+    AFTER + "M98 P2000 / G55 / M98 P2000 / M98 P2001 / M30 / O2000 / G0 X-700. / M99 / "
+    "O2001 / G0 X-10. / M99",
+])
+def test_a_later_call_s_finding_stays_where_its_offset_is_untouched(fanuc: str,
+                                                                   text: str) -> None:
+    assert [g[2][:14] for g in said(text, fanuc)] == ["X goes to -800"]
+
+
+def test_linuxcnc_m72_restores_the_offset_m70_saved(lcnc: str) -> None:
+    """Review 76 F9: M72 with no selection since M70 leaves G55 in force: -800 said."""
+    assert [g[:2] for g in said("G21 G17 G90 G55 / G0 X0 Y0 / M70 / G0 X-10 / M72 / G0 X-700 / "
+                                "M2", lcnc)] == [(6, 4)]

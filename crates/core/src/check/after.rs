@@ -77,6 +77,11 @@ impl Checker {
         {
             self.after_mark();
         }
+        // (a program written after its calls returns: what its run left for its later calls
+        // is known here, review 76-calls76 F8)
+        if self.work_call.as_ref().is_some_and(|w| w.held) {
+            self.work_call_tentative_end();
+        }
     }
 
     /// A call of program `number`: the caller marked where that one is.

@@ -126,7 +126,8 @@ pub(super) const PENDING_MODE_SELF: i64 = -(1 << 44);
 /// calls judged under the offset of a call after the first ([`CallWork::others`]): held to
 /// the program's end, dropped where it may have changed the offsets the later calls run
 /// under (a G10, a work offset variable, a shift or frame left on, a call not followed...;
-/// review 76-calls76 F1).
+/// review 76-calls76 F1). Less the offset's index (G5x - 54): a change of another offset
+/// holds nothing (review 76-calls76 F7: a `G10 L2 P1` of the body leaves a G55 call's).
 pub(super) const PENDING_OTHER_CALL: i64 = PENDING_MODE_SELF - 1;
 
 /// Among a finding's [`Finding::pending_on`], `PENDING_CALLED - n`: a position of program
@@ -614,7 +615,13 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn linuxcnc_m72_work(&mut self) {
-        self.work = None;
+        // (the offset M70 saved, where it was read; none where no M70 was: review
+        // 76-calls76 F9, `G55` / `M70` / `M72` / `G0 X-700` runs under G55)
+        let saved = self.linuxcnc_work_saved.flatten();
+        if saved.is_some() && saved == self.work {
+            return;
+        }
+        self.work = saved;
         self.work_unplaced = false;
         if self.early_on {
             self.early_changes_offsets();
@@ -1294,11 +1301,13 @@ impl Checker {
         // the M72), which is not followed here: none is taken as selected until the program
         // selects one, and a definition read apart keeps no position of its own after it
         // (review 76-calls76 F3: `G54` / `M70` / `G55` / `M72` / `G0 X-700` runs at -700)
-        if self.letters & bit(b'M') != 0
-            && self.config.family == Family::LinuxCnc
-            && self.values.ms.contains(&72)
-        {
-            self.linuxcnc_m72_work();
+        if self.letters & bit(b'M') != 0 && self.config.family == Family::LinuxCnc {
+            if self.values.ms.iter().any(|&m| m == 70 || m == 73) {
+                self.linuxcnc_work_saved = Some(self.work);
+            }
+            if self.values.ms.contains(&72) {
+                self.linuxcnc_m72_work();
+            }
         }
         one_shot |= self.frames(b);
         // (a program that shifts or sets the coordinates changes them where it is called)
@@ -3536,7 +3545,8 @@ impl Checker {
                 );
                 if self.report_placed(message, at_line, super::Placed::Not) {
                     if let Some(f) = self.found.last_mut() {
-                        f.pending_on.push(PENDING_OTHER_CALL);
+                        f.pending_on
+                            .push(PENDING_OTHER_CALL - (*work - 54).clamp(0, 5));
                         if *tentative && !own_mode {
                             f.pending_on.push(PENDING_MODE_SELF);
                         }

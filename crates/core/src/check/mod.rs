@@ -1028,6 +1028,9 @@ pub struct Checker {
     /// offsets as they were ([`Checker::keeps_offsets`]), or opened or closed a LinuxCNC
     /// definition read apart: the offsets are not lost at it.
     call_keeps: bool,
+    /// LinuxCNC: the work offset in force at the last M70 (or M73) read, which an M72
+    /// restores ([`Checker::linuxcnc_m72_work`]); None where none was read.
+    linuxcnc_work_saved: Option<Option<i64>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1741,6 +1744,7 @@ impl Checker {
             offsets_unread_only: false,
             call_unread_here: false,
             call_keeps: false,
+            linuxcnc_work_saved: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,

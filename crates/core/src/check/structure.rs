@@ -770,23 +770,33 @@ impl Checker {
         // not followed: the next call's offsets are not the profile's, review 76 F1)
         let w = &self.offsets_written;
         let changed = self.work_call.as_ref().is_some_and(|c| c.unsure)
-            || w.any()
             || w.moved
             || w.shifted != 0
             || !w.unread.is_empty()
             || self.shifts_on()
             || self.frames_on()
             || self.transformed.is_some()
+            || self.units_unknown
+            || self.machine.state.length_offset != 49
+            || self.length_decimal
             || self.in_hand.is_none_or(|n| self.after_unsure.contains(&n));
+        // (each offset's own writes: a G10 L2 P1 holds nothing of a G55 call, F7)
+        let (axes, maybe) = (w.axes, w.maybe);
         let (mode, other) = (
             super::limits::PENDING_MODE_SELF,
             super::limits::PENDING_OTHER_CALL,
         );
+        let others = |m: i64| (other - 5..=other).contains(&m);
         self.found.retain(|f| {
-            !(changed && f.pending_on.contains(&other) || wrote && f.pending_on.contains(&mode))
+            let held = f.pending_on.iter().find(|&&m| others(m));
+            let dropped = held.is_some_and(|&m| {
+                let g = (other - m) as usize;
+                changed || axes[g] != 0 || maybe[g] != 0
+            });
+            !(dropped || wrote && f.pending_on.contains(&mode))
         });
         for f in &mut self.found {
-            f.pending_on.retain(|&m| m != mode && m != other);
+            f.pending_on.retain(|&m| m != mode && !others(m));
         }
     }
 
