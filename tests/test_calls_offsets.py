@@ -218,8 +218,9 @@ AFTER = "O1000 / G21 G17 G90 G54 / G0 X0 Y0 / "
 def test_a_body_after_its_calls_is_judged_under_each_call_s_offset(
         fanuc: str, blocks: str, expected: list[tuple[int, int, str]]) -> None:
     got = said(AFTER + blocks, fanuc)
-    assert [(line, col, msg[:len(e)]) for (line, col, msg), (_, _, e) in zip(got, expected)] \
-        == expected and len(got) == len(expected)
+    assert len(got) == len(expected)
+    assert [(line, col, msg[:len(e)])
+            for (line, col, msg), (_, _, e) in zip(got, expected, strict=True)] == expected
 
 
 def test_haas_g110_selects_an_offset_the_profile_does_not_give(tmp_path: Path) -> None:
@@ -229,7 +230,8 @@ def test_haas_g110_selects_an_offset_the_profile_does_not_give(tmp_path: Path) -
     profile = tmp_path / "wo2h.toml"
     profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
                        "Y = [-16.0, 16.0]\nZ = [-20.0, 0.5]\n[work_offsets]\n"
-                       "G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\nG55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
+                       "G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
     head = "O01000 / G20 G17 G90 G55 / G0 X0 Y0 / "
     assert said(head + "G110 / G0 X-27. / M30", str(profile)) == []
     assert said("O02000 / G0 X-5. / G129 / M99 / " + head + "M98 P2000 / G0 X-27. / M30",
