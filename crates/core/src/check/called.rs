@@ -440,6 +440,24 @@ impl Checker {
         let Some(early) = self.early.take() else {
             return;
         };
+        // (a LinuxCNC definition merged (a G92.1, a units code...): read as before calls76,
+        // its positions under a work offset not said and the offsets lost from here, as its
+        // `sub` lost them; review 76-calls76 F5's l79c: an uncalled definition's G55 / X-780
+        // / G92.1 never runs)
+        if matches!(early.body.number, Key::Label(_)) && !self.config.work_offsets.is_empty() {
+            if let Some(from) = self.hold_from {
+                let kept: Vec<Finding> = self
+                    .found
+                    .drain(from..)
+                    .filter(|f| !matches!(f.placed, Placed::Offset { .. }))
+                    .collect();
+                self.found.extend(kept);
+            }
+            self.offsets_rewritten(
+                early.body.at.0,
+                "a jump or call the checker does not follow",
+            );
+        }
         self.early_on = false;
         self.work_run_on = false;
         self.work_unplaced = false;
