@@ -139,11 +139,11 @@ def test_a_program_s_own_offset_after_a_call_of_a_later_program(tmp_path, progra
      "G0 X-750. / M98 P2000 / G90 / G0 X800. / M30",
      [("TG601", 11, 4, "X spans 1550 (from -750 to 800), more than the travel -762 to 762: "
                        "no work offset fits the program on this machine")]),
-    # (no G52 in the body: as before)
+    # (no G52 in the body: the call keeps the offsets since calls76, so X800. is judged as
+    # a machine position under G54 (0): beyond the travel, said in place of the span)
     ("O2000 / G0 X0 / M99 / O1000 / G21 G90 G54 / G0 X-750. / M98 P2000 / G90 / "
      "G0 X800. / M30",
-     [("TG601", 10, 4, "X spans 1550 (from -750 to 800), more than the travel -762 to 762: "
-                       "no work offset fits the program on this machine")]),
+     [("TG601", 10, 4, "X goes to 800 in machine coordinates (work 800 + G54 offset 0.0)")]),
 ])
 def test_a_g52_a_called_program_leaves_on_is_its_caller_s_after_the_call(tmp_path, programs,
                                                                           expected):
@@ -314,7 +314,9 @@ def test_a_body_merged_by_a_g52_keeps_its_positions_before_it_for_its_calls(tmp_
     # beyond the travel whichever runs, said at the first)
     ("O2000 / G0 X-780. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 L0 / G54 / "
      "M98 P2000 / M30",
-     [("TG601", 8, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)")]),
+     [("TG601", 8, 5, "X goes to -880 in machine coordinates (work -780 + G55 offset -100.0)"),
+      # (the L0 call keeps the offsets since calls76: the G54 call's -780 said too)
+      ("TG601", 10, 5, "X goes to -780 in machine coordinates (work -780 + G54 offset 0.0)")]),
 ])
 def test_a_call_repeated_zero_times_carries_no_g52(tmp_path, programs, expected):
     """Review 62a F7's g75: `M98 P.. L0` (a repeat count of zero, which may run the body no

@@ -962,11 +962,11 @@ def test_a_subprogram_written_after_its_call_runs_under_the_call_s_offset(tmp_pa
 
 @pytest.mark.parametrize("main", [
     # (c1: a G10 of a value not known before the call; c6: a G52; c9: a call under G91, the
-    # body read in G90; a5: two calls under G55 and G54: not known which, as before)
+    # body read in G90; a5, two calls under G55 and G54, is judged under each since calls76:
+    # tests/test_calls_offsets.py)
     "G21 G17 G90 G55 / G0 X0 Y0 / G91 G10 L2 P2 X-200. / G90 / M98 P2000 / M30",
     "G21 G17 G90 G55 / G0 X0 Y0 / G52 X10. / M98 P2000 / M30",
     "G21 G17 G90 G55 / G0 X0 Y0 / G91 / M98 P2000 / G90 / M30",
-    "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G54 / M98 P2000 / M30",
     # (a6: under G54, X-700 inside)
     "G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / M30",
     # (a G66 runs O2000 at each later move, here under G54: not the G66 block's G55)

@@ -34,11 +34,28 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn after_assignment(&mut self, b: &BlockView<'_>) {
+        if self.early_on && Self::writes_offset_variable(b) {
+            self.early_changes_offsets();
+        }
         if self.offset_variable_written || !Self::writes_offset_variable(b) {
             return;
         }
         self.offset_variable_written = true;
         self.after_mark();
+    }
+
+    /// A conditional assignment (`IF [..] THEN #5241=0.`) of block `line` that may write a
+    /// work offset's variable: the offsets are not known from here (the write may run or
+    /// not), the program in hand marked, a program read apart changes them.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn conditional_offset_write(&mut self, line: usize) {
+        if self.early_on {
+            self.early_changes_offsets();
+        }
+        self.offset_variable_written = true;
+        self.after_mark();
+        self.offsets_rewritten(line, "a work offset's system variable may be set");
     }
 
     /// The program in hand marked ([`Checker::after_unsure`]).
@@ -59,6 +76,11 @@ impl Checker {
                 .any(|w| w.letter == b'P' && w.index.is_empty())
         {
             self.after_mark();
+        }
+        // (a program written after its calls returns: what its run left for its later calls
+        // is known here, review 76-calls76 F8)
+        if self.work_call.as_ref().is_some_and(|w| w.held) {
+            self.work_call_tentative_end();
         }
     }
 

@@ -83,6 +83,12 @@ pub(super) struct Early {
     expression_before: u16,
     local_before: u16,
     lost_before: bool,
+    /// The tool length offset in force at its start ([`Body::changes`]).
+    length_before: (i64, bool),
+    /// LinuxCNC: the work offset the main program had selected before the definition,
+    /// given back at its `endsub` (the definition is read with none: its calls select the
+    /// one it runs under).
+    work_before: Option<i64>,
 }
 
 /// What a program read apart ([`Early`]) and a subprogram kept for its calls ([`Pending`])
@@ -131,6 +137,11 @@ struct Body {
     /// It lost the profile's offsets (a G10, G52, G54.1, a frame, a stored program's
     /// call...): so does its caller from each call on.
     loses: bool,
+    /// It may change what its caller's offsets are other than by `writes` and `loses`: it
+    /// selects a work offset of its own (G54-G59 are modal: its caller's after the return),
+    /// writes a work offset's system variable, or leaves a tool length offset other than
+    /// the one it was read in ([`Checker::call_keeps`]).
+    changes: bool,
     /// The end or return before it is one the block skip can pass over (`/M30`): with the
     /// switch on, the program before runs on into it (review 56e, F4).
     after_skippable_end: bool,
@@ -174,7 +185,7 @@ pub(super) struct Merged {
     unplaced: [[Option<Unplaced>; 2]; 9],
     factor: f64,
     read_incremental: Option<bool>,
-    said: u32,
+    said: u128,
 }
 
 /// A work position of a program read apart with no work offset in force
@@ -282,8 +293,10 @@ pub(super) struct Pending {
     /// Its last G90/G91 not known: it called a program the checker did not read there, and
     /// wrote none after (review 48, F11).
     ends_lost: bool,
-    /// The ends of [`Body::unplaced`] said at a call (bit `2 * place + end`): not again.
-    unplaced_said: u32,
+    /// The ends of [`Body::unplaced`] said at a call under each work offset (bit `18 *
+    /// (G5x - 54) + 2 * place + end`): not again under that offset, said again under
+    /// another (one subprogram called once a fixture, under G55 then G56).
+    unplaced_said: u128,
 }
 
 /// The most findings held for a program read apart (review 42, finding 3): past it the
@@ -381,6 +394,7 @@ impl Checker {
                 calls_judged: 0,
                 writes: Written::default(),
                 loses: false,
+                changes: false,
                 after_skippable_end: self.end_skippable,
                 first: self.programs == 0,
                 outside: 0,
@@ -403,15 +417,27 @@ impl Checker {
             local_before: std::mem::take(&mut self.g10_local),
             // (the program before runs on into it, skip switch on: that run's writes and loss)
             lost_before: std::mem::replace(&mut self.offsets_lost, lost && self.end_skippable),
+            length_before: (self.machine.state.length_offset, self.length_decimal),
+            work_before: None,
         }));
         self.early_on = true;
+        // (a LinuxCNC definition runs under the work offset of each call, not the one the
+        // main program selected before it: rs274 reads it without running it and runs it
+        // at the call, `rs274 -g`; read with none, its positions kept for its calls)
+        let linuxcnc = self.config.family == crate::lex::Family::LinuxCnc;
+        if linuxcnc && !numbered && !self.config.work_offsets.is_empty() {
+            let before = self.work.take();
+            if let Some(early) = self.early.as_mut() {
+                early.work_before = before;
+            }
+        }
         // (a FANUC's or a Haas's program with no offset in force at its start: its caller's
-        // selects the one it runs under, review 61a F7)
+        // selects the one it runs under, review 61a F7; a LinuxCNC definition the same)
         self.work_unplaced = !self.config.work_offsets.is_empty()
             && self.work.is_none()
             && !self.end_skippable
-            && self.config.family == crate::lex::Family::MacroB
-            && numbered;
+            && (self.config.family == crate::lex::Family::MacroB && numbered
+                || linuxcnc && !numbered);
     }
 
     /// The program in hand is no subprogram read apart (it ended as a main program, wrote
@@ -429,6 +455,24 @@ impl Checker {
         let Some(early) = self.early.take() else {
             return;
         };
+        // (a LinuxCNC definition merged (a G92.1, a units code...): read as before calls76,
+        // its positions under a work offset not said and the offsets lost from here, as its
+        // `sub` lost them; review 76-calls76 F5's l79c: an uncalled definition's G55 / X-780
+        // / G92.1 never runs)
+        if matches!(early.body.number, Key::Label(_)) && !self.config.work_offsets.is_empty() {
+            if let Some(from) = self.hold_from {
+                let kept: Vec<Finding> = self
+                    .found
+                    .drain(from..)
+                    .filter(|f| !matches!(f.placed, Placed::Offset { .. }))
+                    .collect();
+                self.found.extend(kept);
+            }
+            self.offsets_rewritten(
+                early.body.at.0,
+                "a jump or call the checker does not follow",
+            );
+        }
         self.early_on = false;
         self.work_run_on = false;
         self.work_unplaced = false;
@@ -542,7 +586,7 @@ impl Checker {
                  shift in force there)"
             )
         };
-        self.unplaced_judged(&m.unplaced, &mut m.said, at, &under);
+        self.unplaced_judged(&m.unplaced, 1.0, &mut m.said, at, &under);
         self.merged_unplaced.insert(k, m);
     }
 
@@ -628,10 +672,16 @@ impl Checker {
         self.g10_local = early.local_before;
         writes.then(&Written::on_every(expression));
         let loses = std::mem::replace(&mut self.offsets_lost, early.lost_before);
+        let length = (self.machine.state.length_offset, self.length_decimal);
+        let changes = early.body.changes || length != early.length_before;
+        if matches!(early.body.number, Key::Label(_)) && !self.config.work_offsets.is_empty() {
+            self.work = early.work_before;
+        }
         self.pending.push(Pending {
             body: Body {
                 writes,
                 loses,
+                changes,
                 ..early.body
             },
             spans,
@@ -970,6 +1020,41 @@ impl Checker {
             let why = format!("{} changes the offsets", self.pending[k].body.name);
             self.offsets_rewritten(line, &why);
         }
+        self.call_keeps = self.keeps_offsets(k);
+    }
+
+    /// Whether the subprogram `pending[k]`, read before its call, surely leaves its
+    /// caller's work offsets as they were: it writes none (no G10 L2/L20, no work offset's
+    /// system variable), moves no coordinates (no G52, G92, frame left or undone), selects
+    /// no G54-G59 of its own (modal: the caller's after its return), leaves the tool length
+    /// offset it was read in, does not end the program or return elsewhere (`M99 Pn`), and
+    /// calls no program that might do any of these, or one the checker does not follow
+    /// there ([`Checker::after_unsure`]). The caller's positions after the call are then
+    /// judged under the offset in force as before it, its later calls included: the same
+    /// subprogram called once a fixture under G54, G55, G56 is judged at each call (issue
+    /// 32 item 4; review 62a F6d: only the first call was).
+    pub(super) fn keeps_offsets(&self, k: usize) -> bool {
+        let body = &self.pending[k].body;
+        let w = &body.writes;
+        !body.loses
+            && !body.changes
+            && !w.any()
+            && w.unread.is_empty()
+            && !w.moved
+            && w.shifted == 0
+            && w.maybe.iter().all(|m| *m == 0)
+            && match body.number {
+                Key::Number(n) => !self.after_unsure.contains(&n),
+                Key::Label(_) => true,
+            }
+    }
+
+    /// The program read apart selects a work offset or writes a work offset's variable
+    /// ([`Body::changes`]).
+    pub(super) fn early_changes_offsets(&mut self) {
+        if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
+            early.body.changes = true;
+        }
     }
 
     /// After a call of the subprogram `pending[k]` (`token` of line `line`): where it wrote a
@@ -984,7 +1069,7 @@ impl Checker {
             return; // (LinuxCNC: Checker::linuxcnc_call_distance)
         }
         if p.ends_lost {
-            self.call_mode_lost(token, (line, 1), &p.body.name.clone());
+            self.call_mode_lost(token, (line, 1), &p.body.name.clone(), None);
             return;
         }
         let Some(mode) = p.ends else {
@@ -1008,12 +1093,17 @@ impl Checker {
         token: &str,
         (line, column): (usize, usize),
         name: &str,
+        by: Option<i64>,
     ) {
         // (a FANUC or Haas lathe of G code system A has no G90/G91 mode: its G90 is the
         // turning cycle, its increments U and W)
         if self.machine.settings.own_motion(90) {
             return;
         }
+        if self.mode_lost_codes != Some(self.machine.distance_codes) {
+            self.mode_lost_by.clear();
+        }
+        self.mode_lost_by.push(by.unwrap_or(i64::MIN));
         self.machine.state.incremental = true;
         // (LinuxCNC: the main program's; a body's own mode is its own, review 50, F7)
         if self.open_definition.is_none() {
@@ -1641,7 +1731,14 @@ impl Checker {
     /// `M30` / `O2000` / `G0 X-700.` / `M99` was "X spans 1550"). Only where that is sure to
     /// lose no error ([`Checker::judged_alone`]); elsewhere its span is joined to the file's,
     /// as before.
-    fn early_as_read(&mut self, p: Pending) {
+    fn early_as_read(&mut self, mut p: Pending) {
+        // (a LinuxCNC definition no call of the file names never runs from this file (rs274
+        // reads it without running it): its positions under a work offset it selects itself
+        // are not said, as before a definition was read with no offset; review 76-calls76 F5)
+        if matches!(p.body.number, Key::Label(_)) {
+            p.positions
+                .retain(|f| !matches!(f.placed, Placed::Offset { .. }));
+        }
         if !self.judged_alone(&p) {
             // (joined for its own calls only, nothing of the file runs it: its positions read
             // under the offset the program before left are not its caller's, review 57e F0)
@@ -1908,13 +2005,12 @@ impl Checker {
             // X-780.` / `M99` / `O3000` / `M98 P4000` / `M99`, O3000 called under G55, runs
             // X-780. at -880)
             if self.work_unplaced
-                && r == 1.0
                 && known
                 && call.shift.is_some_and(|s| s.iter().all(|v| *v == 0.0))
             {
                 for i in 0..AXES.len() {
                     for u in p.body.unplaced[i].into_iter().flatten() {
-                        self.unplaced_at(i, u.at, u.line);
+                        self.unplaced_at(i, u.at * r, u.line);
                     }
                 }
             }
@@ -2104,8 +2200,10 @@ impl Checker {
             );
             self.report(Rule::NotFollowed, message, line, column);
         }
-        if r == 1.0 && known && shift.iter().all(|s| *s == 0.0) {
-            self.unplaced_judged(&p.body.unplaced, &mut p.unplaced_said, at, &under);
+        // (in the call's units: its numbers read in them, no units code of its own; review
+        // 62a F6c: `G0 X-28.` under a G20 call is -711.2 mm)
+        if known && shift.iter().all(|s| *s == 0.0) {
+            self.unplaced_judged(&p.body.unplaced, r, &mut p.unplaced_said, at, &under);
         }
         let (Some(top), Some(feed)) = (self.config.feed_max, p.body.feed.as_ref()) else {
             return;
@@ -2205,7 +2303,8 @@ impl Checker {
     fn unplaced_judged(
         &mut self,
         unplaced: &[[Option<Unplaced>; 2]; 9],
-        said: &mut u32,
+        r: f64,
+        said: &mut u128,
         at: (usize, usize),
         under: &dyn Fn(usize) -> String,
     ) {
@@ -2258,7 +2357,8 @@ impl Checker {
                 (None, Some(v)) => (v.to_f64(), v.to_string()),
                 (None, None) => continue,
             };
-            let [least, most] = unplaced[i];
+            let scaled = |u: Option<Unplaced>| u.map(|u| Unplaced { at: u.at * r, ..u });
+            let [least, most] = [scaled(unplaced[i][0]), scaled(unplaced[i][1])];
             let out = |u: Option<Unplaced>| {
                 u.map(|u| (u, u.at + value))
                     .filter(|&(_, m)| m < low - 1e-9 || m > high + 1e-9)
@@ -2277,7 +2377,7 @@ impl Checker {
                 // (the caller's excursion beyond that side runs on into it: one excursion,
                 // one finding, review 61a F3)
                 let side = if machine_at < low { -1 } else { 1 };
-                let bit = 1 << (2 * i + end);
+                let bit = 1u128 << (18 * (work - 54).clamp(0, 5) as usize + 2 * i + end);
                 if *said & bit != 0 || self.outside[i] == side {
                     continue;
                 }

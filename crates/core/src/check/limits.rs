@@ -116,6 +116,20 @@ const XYZ: u16 = 0b111;
 /// that axis.
 pub(super) const PENDING_OWN: i64 = -1;
 
+/// Among a finding's [`Finding::pending_on`]: a position of a program written after its
+/// calls judged under a call's offset whose distance mode is the one the program leaves
+/// ([`Checker::work_call_tentative_end`]). Between [`PENDING_CALLS_WRITTEN`]'s marks and
+/// [`super::leaves::PENDING_LEAVES`]'s.
+pub(super) const PENDING_MODE_SELF: i64 = -(1 << 44);
+
+/// Among a finding's [`Finding::pending_on`]: a position of a program written after its
+/// calls judged under the offset of a call after the first ([`CallWork::others`]): held to
+/// the program's end, dropped where it may have changed the offsets the later calls run
+/// under (a G10, a work offset variable, a shift or frame left on, a call not followed...;
+/// review 76-calls76 F1). Less the offset's index (G5x - 54): a change of another offset
+/// holds nothing (review 76-calls76 F7: a `G10 L2 P1` of the body leaves a G55 call's).
+pub(super) const PENDING_OTHER_CALL: i64 = PENDING_MODE_SELF - 1;
+
 /// Among a finding's [`Finding::pending_on`], `PENDING_CALLED - n`: a position of program
 /// `n` read under the offset the program before it in the file left (a guess), said after
 /// its own G54-G59 by its merge: dropped at the file's end where no call in the file names
@@ -558,6 +572,10 @@ impl Checker {
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
         self.work_unplaced = false;
         self.offsets_unread_only = false;
+        if let Some(w) = self.work_call.as_mut() {
+            w.others.clear();
+            w.unsure = true;
+        }
         if self.config.work_offsets.is_empty() || self.offsets_lost {
             return;
         }
@@ -592,12 +610,40 @@ impl Checker {
         ));
     }
 
+    /// LinuxCNC's M72 in the block ([`Checker::work_offset_given`]): the work offset M70
+    /// saved is in force, not known here.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_m72_work(&mut self) {
+        // (the offset M70 saved, where it was read; none where no M70 was: review
+        // 76-calls76 F9, `G55` / `M70` / `M72` / `G0 X-700` runs under G55)
+        let saved = self.linuxcnc_work_saved.flatten();
+        if saved.is_some() && saved == self.work {
+            return;
+        }
+        self.work = saved;
+        self.work_unplaced = false;
+        if self.early_on {
+            self.early_changes_offsets();
+        }
+        if let Some(w) = self.work_call.as_mut() {
+            w.others.clear();
+        }
+    }
+
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64) {
         if self.linuxcnc_pending.is_some() {
             self.linuxcnc_reselected(g);
         }
         self.work_unplaced = false;
+        if self.early_on {
+            self.early_changes_offsets();
+        }
+        // (a program written after its calls selects its own: the calls' no longer)
+        if let Some(w) = self.work_call.as_mut() {
+            w.others.clear();
+        }
         if self.offsets_unread_only {
             self.work_unread_reselected();
         }
@@ -1232,6 +1278,14 @@ impl Checker {
                     line,
                     &format!("{} selects an offset the profile does not give", w.token()),
                 ),
+                // a Haas mill's G110-G129: the additional work offsets #7-#26 (G154 P1-P20;
+                // Haas Mill Operator's Manual, "G110-G129 Coordinate System #7-26"), none
+                // of G54-G59 (review 76-calls76 F2: `G55` / `G110` / `G0 X-27.` was judged
+                // under G55)
+                110..=129 if self.config.haas => self.offsets_rewritten(
+                    line,
+                    &format!("{} selects an offset the profile does not give", w.token()),
+                ),
                 // G53: machine coordinates for the block; under ISO 6983-1 it cancels the
                 // zero shift until the next G54-G59
                 53 => {
@@ -1241,6 +1295,18 @@ impl Checker {
                     }
                 }
                 _ => {}
+            }
+        }
+        // LinuxCNC's M72 restores the work offset M70 saved (rs274 -g: a SET_G5X_OFFSET at
+        // the M72), which is not followed here: none is taken as selected until the program
+        // selects one, and a definition read apart keeps no position of its own after it
+        // (review 76-calls76 F3: `G54` / `M70` / `G55` / `M72` / `G0 X-700` runs at -700)
+        if self.letters & bit(b'M') != 0 && self.config.family == Family::LinuxCnc {
+            if self.values.ms.iter().any(|&m| m == 70 || m == 73) {
+                self.linuxcnc_work_saved = Some(self.work);
+            }
+            if self.values.ms.contains(&72) {
+                self.linuxcnc_m72_work();
             }
         }
         one_shot |= self.frames(b);
@@ -3414,7 +3480,84 @@ impl Checker {
             self.excursion_farther(i, work, (at, line), out);
         }
         self.outside[i] = out;
+        if written.is_none()
+            && self
+                .work_call
+                .as_ref()
+                .is_some_and(|w| w.work == work && !w.others.is_empty())
+        {
+            self.offset_position_others((axis, i), at, (low, high), (line, column));
+        }
         said_outside
+    }
+
+    /// In a program written after its calls, run under their offset ([`Checker::work_call`]):
+    /// its position `at` on the axis `axis` (place `i`) judged under the offset of each other
+    /// call ([`WorkCall::others`](super::structure::WorkCall)), an excursion beyond the
+    /// travel said once a call, naming it (issue 32 item 4: `O1000` / `G90 G54` / `M98 P2000`
+    /// / `G55` / `M98 P2000` / `M30` / `O2000` / `G0 X-700.` / `M99` runs X-700. at -800 at
+    /// the second call; calls under different offsets left it not compared).
+    #[cold]
+    #[inline(never)]
+    fn offset_position_others(
+        &mut self,
+        (axis, i): (u8, usize),
+        at: f64,
+        (low, high): (f64, f64),
+        at_line: (usize, usize),
+    ) {
+        let w = &self.offsets_written;
+        if w.any() || w.moved || w.shifted != 0 || self.work_guessed.is_some() || self.work_run_on {
+            return;
+        }
+        let Some(mut call) = self.work_call.take() else {
+            return;
+        };
+        let mut held = false;
+        // (after a G90/G91 of its own, its positions are in its own mode at every call)
+        let own_mode = self.machine.distance_codes != call.codes_at;
+        for (work, words, line, outside, tentative) in &mut call.others {
+            let Some(offset) = self
+                .config
+                .work_offsets
+                .iter()
+                .find(|&&(g, a, _)| g == *work && a == axis)
+                .map(|&(_, _, v)| v)
+            else {
+                continue;
+            };
+            let machine_at = at + offset.to_f64();
+            let out = if machine_at < low - 1e-9 {
+                -1
+            } else if machine_at > high + 1e-9 {
+                1
+            } else {
+                0
+            };
+            if out != 0 && out != outside[i] {
+                let message = format!(
+                    "{} goes to {} in machine coordinates (work {} + G{work} offset {offset}), \
+                     outside the travel {low} to {high}{}",
+                    axis as char,
+                    round6(machine_at),
+                    round6(at),
+                    super::structure::WorkCall::named_by(self.in_hand, words, *line)
+                );
+                if self.report_placed(message, at_line, super::Placed::Not) {
+                    if let Some(f) = self.found.last_mut() {
+                        f.pending_on
+                            .push(PENDING_OTHER_CALL - (*work - 54).clamp(0, 5));
+                        if *tentative && !own_mode {
+                            f.pending_on.push(PENDING_MODE_SELF);
+                        }
+                        held = true;
+                    }
+                }
+            }
+            outside[i] = out;
+        }
+        call.held |= held;
+        self.work_call = Some(call);
     }
 
     /// The value a G10 of the program's run wrote, known, of offset G`work` on the axis of

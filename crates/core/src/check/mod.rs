@@ -1024,6 +1024,13 @@ pub struct Checker {
     /// ([`Checker::work_unread_reselected`]); and the block in hand made such a call.
     offsets_unread_only: bool,
     call_unread_here: bool,
+    /// The block in hand called a subprogram read before it that surely leaves the work
+    /// offsets as they were ([`Checker::keeps_offsets`]), or opened or closed a LinuxCNC
+    /// definition read apart: the offsets are not lost at it.
+    call_keeps: bool,
+    /// LinuxCNC: the work offset in force at the last M70 (or M73) read, which an M72
+    /// restores ([`Checker::linuxcnc_m72_work`]); None where none was read.
+    linuxcnc_work_saved: Option<Option<i64>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1093,6 +1100,10 @@ pub struct Checker {
     /// mode as not known (G91 from a position not known): a G52 while it is the count is read
     /// as before, not as one under G91 (review 48, F11).
     mode_lost_codes: Option<u32>,
+    /// The programs whose calls lost the distance mode since [`Checker::mode_lost_codes`]
+    /// was set (`i64::MIN` for a call not by number): where they are all one program, a
+    /// later call of it is made in the mode that program leaves ([`CallWork::others`]).
+    mode_lost_by: Vec<i64>,
     /// The shifts of the coordinates (G52, G92) the spans of TG601 follow
     /// ([`Checker::shift_spans`]).
     shifts: limits::Shifts,
@@ -1497,6 +1508,11 @@ pub struct Checker {
     /// in force was not known (not only calls that disagree): a program of that number
     /// written after them runs under no offset the checker knows (review 61a F5).
     call_works_unknown: HashSet<i64>,
+    /// The work offsets (bit `G5x - 54`) of the calls of each program by number made where
+    /// the offset was known ([`Checker::call_work`]): where the calls disagree, a program
+    /// written after them is read under none unless all were made under the one in force
+    /// at its start (review 76-calls76 F6).
+    call_works_seen: HashMap<i64, u8>,
     /// Calls of a program read apart in units only assumed (no G20/G21 yet), each with the
     /// offset kept where all else is known: recorded where it ends as a main program (its
     /// units the reset state's), as not known where it returns, a subprogram whose units
@@ -1727,6 +1743,8 @@ impl Checker {
             work_unplaced: false,
             offsets_unread_only: false,
             call_unread_here: false,
+            call_keeps: false,
+            linuxcnc_work_saved: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -1741,6 +1759,7 @@ impl Checker {
             frames: limits::Frames::default(),
             noted: 0,
             mode_lost_codes: None,
+            mode_lost_by: Vec::new(),
             shifts: limits::Shifts::default(),
             transformed: None,
             length_decimal: false,
@@ -1810,6 +1829,7 @@ impl Checker {
             call_units: HashMap::new(),
             call_works: HashMap::new(),
             call_works_unknown: HashSet::new(),
+            call_works_seen: HashMap::new(),
             call_works_assumed: Vec::new(),
             call_works_deferred: Vec::new(),
             later_shift: None,
@@ -2548,8 +2568,11 @@ impl Checker {
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
-                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                if !std::mem::take(&mut self.call_keeps) {
+                    self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                }
             }
+            self.call_keeps = false;
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
@@ -2905,11 +2928,14 @@ impl Checker {
             self.linuxcnc_rate = None;
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
-            let unread_only = std::mem::take(&mut self.call_unread_here)
-                && (!self.offsets_lost || self.offsets_unread_only);
-            self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
-            self.offsets_unread_only = unread_only;
+            if !std::mem::take(&mut self.call_keeps) {
+                let unread_only = std::mem::take(&mut self.call_unread_here)
+                    && (!self.offsets_lost || self.offsets_unread_only);
+                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                self.offsets_unread_only = unread_only;
+            }
         }
+        self.call_keeps = false;
         // every M word with a value read is in `values.ms`: a block with none (nearly every
         // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
         // to look at (RET, RTS)
@@ -3189,6 +3215,7 @@ impl Checker {
         if !self.linuxcnc_later.ends.is_empty() {
             self.linuxcnc_later_released_at(true);
         }
+        self.work_call_tentative_end();
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();

@@ -1403,6 +1403,18 @@ impl Checker {
                     let key = parameter_name(b'#', &target[1..]);
                     self.set_since_arrival(&key);
                     self.params.remove(&key);
+                    // (a work offset's system variable, or one whose number is worked out:
+                    // the offset may hold its value or the new one, not known; review
+                    // 76-calls76 F4: `G55` / `IF [#1 EQ 1] THEN #5241=0.` / `G0 X-700.` was
+                    // judged under the profile's G55)
+                    let number = std::str::from_utf8(&target[1..])
+                        .ok()
+                        .and_then(|n| n.trim().parse::<u32>().ok());
+                    if number.is_none_or(
+                        |n| matches!(n, 2500..=2906 | 5201..=5399 | 7001..=7999 | 14001..=19999),
+                    ) {
+                        self.conditional_offset_write(b.line);
+                    }
                 }
             }
             return;
@@ -1529,7 +1541,7 @@ impl Checker {
             self.offset_variables(b);
         }
         // (review 62a F1)
-        if !self.offset_variable_written {
+        if !self.offset_variable_written || self.early_on {
             self.after_assignment(b);
         }
         // LinuxCNC: every setting of a line reads the values from before the line (RS274/NGC

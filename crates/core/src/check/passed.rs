@@ -425,6 +425,7 @@ impl Checker {
         self.frames = run.frames;
         self.noted = run.noted;
         self.mode_lost_codes = run.mode_lost_codes;
+        self.mode_lost_by = run.mode_lost_by;
         self.shifts = run.shifts;
         self.transformed = run.transformed;
         self.length_decimal = run.length_decimal;
@@ -435,6 +436,7 @@ impl Checker {
         self.call_units = run.call_units;
         self.call_works = run.call_works;
         self.call_works_unknown = run.call_works_unknown;
+        self.call_works_seen = run.call_works_seen;
         self.units_unknown = run.units_unknown;
         self.unknown_call = run.unknown_call;
         self.feed_pending = run.feed_pending;

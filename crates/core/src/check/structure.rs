@@ -378,6 +378,7 @@ impl Checker {
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
         self.program_section = None;
         self.mode_lost_codes = None;
+        self.mode_lost_by.clear();
     }
 
     /// A call by number of a program the checker does not read there
@@ -392,7 +393,12 @@ impl Checker {
     /// alarm ([`Checker::offsets_written`]).
     fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
         let (call, column) = self.call_words(b);
-        self.call_mode_lost(&call, (b.line, column), &format!("O{number:04}"));
+        self.call_mode_lost(
+            &call,
+            (b.line, column),
+            &format!("O{number:04}"),
+            Some(number),
+        );
         // (a call that surely runs and enters the body at its start: not behind a jump,
         // condition or loop of the caller's, not a modal call (G66, run at the moves after
         // it, or none), not `M98 P.. Q..` entering at a sequence number, not a skippable
@@ -590,6 +596,12 @@ impl Checker {
         if known.is_none() && !modal {
             self.call_works_unknown.insert(number);
         }
+        let mode_by_self = self.mode_lost_codes == Some(self.machine.distance_codes)
+            && !self.mode_lost_by.is_empty()
+            && self.mode_lost_by.iter().all(|&n| n == number);
+        if let Some(work) = known.filter(|_| !modal) {
+            *self.call_works_seen.entry(number).or_default() |= 1u8 << (work - 54).clamp(0, 7);
+        }
         let here = known.filter(|_| !modal).map(|work| {
             let (call, _) = self.call_words(b);
             let s = &self.machine.state;
@@ -601,6 +613,8 @@ impl Checker {
                 written: self.offsets_written.clone(),
                 call,
                 line: b.line,
+                mode_by_self,
+                others: Vec::new(),
             }
         });
         if assumed && here.is_some() {
@@ -691,12 +705,34 @@ impl Checker {
                 let same = matches!((&*before, &here), (Some(a), Some(b))
                     if a.work == b.work && a.incremental == b.incremental
                         && a.length == b.length && a.written.same(&b.written));
+                // (a call under another offset, no G10 value written, in the same mode or
+                // in the one this program leaves: judged under each; the calls of this
+                // program, not read there, are its own)
+                let own = |w: &super::limits::Written| {
+                    !w.any() && !w.moved && w.shifted == 0 && w.unread.iter().all(|&n| n == number)
+                };
+                let other = matches!((&*before, &here), (Some(a), Some(b))
+                    if a.work != b.work && !a.mode_by_self
+                        && (a.incremental == b.incremental || b.mode_by_self)
+                        && a.length == b.length && own(&a.written) && own(&b.written));
+                // (the same offset, the mode the one this program leaves: the first call's
+                // reading holds for it, its own findings named; review 76-calls76 F6)
+                let same_by_self = matches!((&*before, &here), (Some(a), Some(b))
+                    if a.work == b.work && b.mode_by_self && a.length == b.length
+                        && own(&a.written) && own(&b.written));
                 match (before.as_mut(), &here) {
-                    (Some(a), Some(b)) if same => {
+                    (Some(a), Some(b)) if same || same_by_self => {
                         // (calls beyond the travel on different sides: the body's first
                         // position outside said, review 61a F3)
                         if a.outside != b.outside {
                             a.outside = [0; 9];
+                        }
+                    }
+                    (Some(a), Some(b)) if other => {
+                        if !a.others.iter().any(|o| o.0 == b.work) {
+                            let tentative = b.mode_by_self && a.incremental != b.incremental;
+                            a.others
+                                .push((b.work, b.call.clone(), b.line, b.outside, tentative));
                         }
                     }
                     _ => *before = None,
@@ -710,11 +746,57 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn work_call_end(&mut self) {
+        self.work_call_tentative_end();
         if let Some(w) = self.work_call.take() {
             self.work = w.work_before;
             self.offsets_lost = w.lost_before;
             self.outside = w.outside_before;
             (self.machine.state.length_offset, self.length_decimal) = w.length_before;
+        }
+    }
+
+    /// The program read under its calls' offset ends (the next begins, or the file): the
+    /// findings held for a call whose distance mode is the one it leaves ([`Other`]) are
+    /// said where it wrote no G90/G91 (that call's mode is the first's), dropped where it
+    /// wrote one.
+    pub(super) fn work_call_tentative_end(&mut self) {
+        let Some(w) = self.work_call.as_mut().filter(|w| w.held) else {
+            return;
+        };
+        w.held = false;
+        let wrote = w.codes_at != self.machine.distance_codes;
+        // (what its run leaves for the next call: a G10 or variable write, a shift or frame
+        // left on, an end or return elsewhere, a tool length offset or units left, a call
+        // not followed: the next call's offsets are not the profile's, review 76 F1)
+        let w = &self.offsets_written;
+        let changed = self.work_call.as_ref().is_some_and(|c| c.unsure)
+            || w.moved
+            || w.shifted != 0
+            || !w.unread.is_empty()
+            || self.shifts_on()
+            || self.frames_on()
+            || self.transformed.is_some()
+            || self.units_unknown
+            || self.machine.state.length_offset != 49
+            || self.length_decimal
+            || self.in_hand.is_none_or(|n| self.after_unsure.contains(&n));
+        // (each offset's own writes: a G10 L2 P1 holds nothing of a G55 call, F7)
+        let (axes, maybe) = (w.axes, w.maybe);
+        let (mode, other) = (
+            super::limits::PENDING_MODE_SELF,
+            super::limits::PENDING_OTHER_CALL,
+        );
+        let others = |m: i64| (other - 5..=other).contains(&m);
+        self.found.retain(|f| {
+            let held = f.pending_on.iter().find(|&&m| others(m));
+            let dropped = held.is_some_and(|&m| {
+                let g = (other - m) as usize;
+                changed || axes[g] != 0 || maybe[g] != 0
+            });
+            !(dropped || wrote && f.pending_on.contains(&mode))
+        });
+        for f in &mut self.found {
+            f.pending_on.retain(|&m| m != mode && !others(m));
         }
     }
 
@@ -736,6 +818,15 @@ impl Checker {
             if self.call_works_unknown.contains(&number) {
                 self.work = None;
             }
+            // (calls that disagree, one of them under another offset than the one the
+            // program before left: not that one, review 76-calls76 F6: `G54` / `M98 P2000` /
+            // `G54` / `M98 P2000` / `G55` / `M30` / `O2000` / `G0 X-700.` was judged under
+            // the G55 the main selected after its calls)
+            let seen = self.call_works_seen.get(&number).copied().unwrap_or(0);
+            let left = self.work.map_or(0, |w| 1u8 << (w - 54).clamp(0, 7));
+            if seen & !left != 0 {
+                self.work = None;
+            }
             return;
         };
         if c.incremental != self.machine.state.incremental
@@ -754,6 +845,10 @@ impl Checker {
             lost_before: self.offsets_lost,
             outside_before: self.outside,
             length_before: (self.machine.state.length_offset, self.length_decimal),
+            others: c.others.clone(),
+            codes_at: self.machine.distance_codes,
+            held: false,
+            unsure: false,
         };
         self.offsets_written = c.written.clone();
         self.work = Some(w.work);
@@ -1499,9 +1594,22 @@ impl Checker {
             {
                 let column = b.statements.first().map_or(1, |s| s.0);
                 self.definition_begin(name, (b.line, column));
+                // (read apart, not run here: the offsets are not lost at its sub)
+                self.call_keeps = self.early_on && !self.config.work_offsets.is_empty();
             }
             Some((false, _)) if was_open && self.open_definition.is_none() => {
+                let read_apart = self.early_on;
                 self.definition_end();
+                // (nor at its endsub, where it was kept for its calls and changed nothing
+                // of the main program's offsets where read: a G49, G92 or G55 of its own
+                // read there stays in the state the main program's lines are read in)
+                self.call_keeps = read_apart
+                    && !self.early_on
+                    && self
+                        .pending
+                        .len()
+                        .checked_sub(1)
+                        .is_some_and(|k| self.keeps_offsets(k));
             }
             _ => {}
         }
@@ -4959,7 +5067,7 @@ impl Checker {
             Distance::Known(g91) if !main && self.machine.state.incremental == g91 => {}
             _ => {
                 let name = String::from_utf8_lossy(&label).into_owned();
-                self.call_mode_lost(&token, (line, 1), &name);
+                self.call_mode_lost(&token, (line, 1), &name, None);
             }
         }
     }
@@ -6316,7 +6424,22 @@ pub(super) struct CallWork {
     written: super::limits::Written,
     call: String,
     line: usize,
+    /// Its distance mode was lost by calls of this program alone (written after them, not
+    /// read there: [`Checker::mode_lost_by`]): it runs in the mode that program leaves.
+    mode_by_self: bool,
+    /// The calls made under another offset, the rest the same (no G10 value written, the
+    /// same distance mode and tool length offset): each offset, its call's words and line,
+    /// and where each axis was outside at it. The body's positions are judged under each
+    /// of these too (one subprogram called once a fixture, under G54, G55, G56...).
+    others: Vec<Other>,
 }
+
+/// A call of [`CallWork::others`]: the offset, the call's words and line, which side of
+/// the travel each axis was outside at the call, then after each position of the body, and
+/// whether the call's distance mode is the one the program leaves, not known to be the
+/// first call's: its findings held to the program's end, dropped where it writes a G90/G91
+/// ([`Checker::work_call_tentative_end`]).
+pub(super) type Other = (i64, String, usize, [i8; 9], bool);
 
 /// A program written after its calls read under their work offset ([`Checker::work_call`]):
 /// the call it names and the state before it, given back at its end.
@@ -6329,6 +6452,17 @@ pub(super) struct WorkCall {
     lost_before: bool,
     outside_before: [i8; 9],
     length_before: (i64, bool),
+    /// [`CallWork::others`]: judged under each while the program runs under the calls'
+    /// offset ([`Checker::offset_position_others`]); none once it selects, writes or loses
+    /// one of its own.
+    pub(super) others: Vec<Other>,
+    /// The machine's count of G90/G91 codes at its start, and whether a finding of a
+    /// tentative call ([`Other`]) is held.
+    pub(super) codes_at: u32,
+    pub(super) held: bool,
+    /// It lost the profile's offsets ([`Checker::offsets_rewritten`]) while read: the
+    /// findings held for the other calls are dropped at its end.
+    pub(super) unsure: bool,
 }
 
 impl WorkCall {
@@ -6338,11 +6472,15 @@ impl WorkCall {
         if work != self.work {
             return String::new();
         }
+        Self::named_by(number, &self.call, self.line)
+    }
+
+    /// What a TG601 of a position run by the call `call` of line `line` adds.
+    pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
         let program = number.map_or_else(|| "the program".to_string(), |n| format!("O{n:04}"));
         format!(
-            " ({program} runs as called by {} of line {}: a subprogram written after its call \
-             runs under the work offset in force there)",
-            self.call, self.line
+            " ({program} runs as called by {call} of line {line}: a subprogram written after \
+             its call runs under the work offset in force there)"
         )
     }
 }

@@ -1,0 +1,306 @@
+"""A subprogram's positions judged at every call, under the work offset in force there
+(issue 32 item 4; review 62a F6d).
+
+The profiles are a FANUC mill and a LinuxCNC mill whose G55 is X-100 (X travel -762..762):
+`G0 X-700.` under G55 runs at -800, beyond the travel; under G54 at -700, inside. A call
+of a subprogram read before it that surely leaves the offsets as they were (no G10, no work
+offset variable, no G52/G92/frame, no G54-G59 or tool length offset of its own, no end or
+return elsewhere, no call that may do these) no longer loses them: its next call, and the
+caller's own moves after it, are judged as before the first. Every LinuxCNC case was run on
+`rs274 -g`: the body's STRAIGHT_TRAVERSE comes at the call, under the SET_G5X_OFFSET in
+force there (the machine position is that work position plus the profile's offset).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from formats.parser import parse_text
+from formats.profile import load_profile
+from postproc.check import Checker
+
+OFFSETS = ("[limits]\nX = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+           "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+           "G55 = { X = -100.0, Y = 0.0, Z = 0.0 }\nG56 = { X = -200.0, Y = 0.0, Z = 0.0 }\n")
+
+
+@pytest.fixture
+def fanuc(tmp_path: Path) -> str:
+    profile = tmp_path / "wo.toml"
+    profile.write_text('name = "wo-mill"\nbase = "fanuc-mill"\n' + OFFSETS)
+    return str(profile)
+
+
+@pytest.fixture
+def lcnc(tmp_path: Path) -> str:
+    profile = tmp_path / "wol.toml"
+    profile.write_text('name = "wo-lcnc"\nbase = "linuxcnc"\n' + OFFSETS)
+    return str(profile)
+
+
+def said(text: str, profile: str) -> list[tuple[int, int, str]]:
+    """The TG601s of `text` (its blocks split at ` / `): line, column, message."""
+    prof = load_profile(profile)
+    program = text.replace(" / ", "\n") + "\n"
+    found = Checker(prof, "<input>").run(parse_text(program, prof.dialect, errors="collect"))
+    return [(f.line, f.column, f.message) for f in found if f.rule == "TG601"]
+
+
+BODY = "O2000 / G0 X-700. / M99 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (review 62a F6d, p36: one body, a call under G54 (-700), then one under G55 (-800))
+    ("M98 P2000 / G55 / M98 P2000 / M30", [(9, 5, "X goes to -800")]),
+    # (a call a fixture: G55 (-800) and G56 (-900), each said at its own call)
+    ("M98 P2000 / G55 / M98 P2000 / G56 / M98 P2000 / M30",
+     [(9, 5, "X goes to -800"), (11, 5, "X goes to -900")]),
+    # (the same offset again: said once)
+    ("G55 / M98 P2000 / G54 / M98 P2000 / G55 / M98 P2000 / M30", [(8, 5, "X goes to -800")]),
+    # (the caller's own move after the call, under the offset it selects then)
+    ("M98 P2000 / G55 / G0 X-700. / M30", [(9, 4, "X goes to -800")]),
+    # (G65, as M98)
+    ("G65 P2000 / G55 / G65 P2000 / M30", [(9, 5, "X goes to -800")]),
+    # (the first call under G91 runs the body's X-700. as an increment, not known there; the
+    # G90 call under G55 runs it at -800)
+    ("G91 / M98 P2000 / G90 / G55 / M98 P2000 / M30", [(11, 5, "X goes to -800")]),
+    # (p18: G10s of numbers between the calls: the second under the value written)
+    ("G10 L2 P2 X0. / G55 / M98 P2000 / G10 L2 P2 X-200. / M98 P2000 / M30",
+     [(11, 5, "X goes to -900")]),
+])
+def test_a_body_read_before_is_judged_at_every_call(fanuc: str, blocks: str,
+                                                    expected: list[tuple[int, int, str]]) -> None:
+    got = said(BODY + blocks, fanuc)
+    assert [(line, col, msg.split(" in machine")[0]) for line, col, msg in got] == expected
+
+
+def test_nested_calls_are_judged_at_every_outer_call(fanuc: str) -> None:
+    """O2000 calls O3000, both read before the main: O3000's X-700. runs at each call of
+    O2000, under G54 (-700) then G55 (-800)."""
+    text = ("O3000 / G0 X-700. / M99 / O2000 / M98 P3000 / M99 / O1000 / G21 G17 G90 G54 / "
+            "G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30")
+    got = said(text, fanuc)
+    assert [g[:2] for g in got] == [(12, 5)]
+    assert "X goes to -800" in got[0][2] and "its position of line 2" in got[0][2]
+
+
+def test_a_body_in_the_call_s_inch_units_is_judged_there(fanuc: str) -> None:
+    """Review 62a F6c: a body with no units code of its own runs in its call's: `X-28.` under
+    a G20 call is -711.2 mm, under G55 -811.2 (it was not judged in other units)."""
+    text = "O2000 / G0 X-28. / M99 / O1000 / G20 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / M30"
+    got = said(text, fanuc)
+    assert [g[:2] for g in got] == [(7, 5)]
+    assert "X goes to -811.2 in machine coordinates (work -711.2 + G55 offset" in got[0][2]
+    assert "runs in inches as called by M98 P2000 of line 7" in got[0][2]
+    # (X-26. is -660.4 mm, -760.4 under G55: inside)
+    assert said(text.replace("X-28.", "X-26."), fanuc) == []
+
+
+@pytest.mark.parametrize("body, after", [
+    # (a body that selects an offset of its own: the caller runs under it after the call)
+    ("G55 / G0 X-600.", "G0 X-700."),
+    # (its own tool length offset: the caller's Z after it is under G43)
+    ("G43 H1 Z0", "G0 Z-515."),
+    # (a work offset variable, a G10 it writes: G54's X is -150 after it, X850. runs at 700)
+    ("#5221=-150.", "G0 X850."),
+    ("G10 L2 P1 X-150.", "G0 X850."),
+    # (a G10 whose value is not known)
+    ("G10 L2 P1 X#1", "G0 X850."),
+    # (a call of a program written after it, which writes G54's X)
+    ("M98 P3000", "G0 X850."),
+    # (a rotation left on: X-700. under G68 R180 is X700)
+    ("G68 X0 Y0 R180.", "G0 X-700."),
+])
+def test_a_body_that_may_change_the_offsets_still_loses_them(fanuc: str, body: str,
+                                                            after: str) -> None:
+    """Where the body may change what the offsets are, the caller's positions after the call
+    are not compared as machine positions (as before): no false error."""
+    text = (f"O2000 / {body} / M99 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / "
+            f"{after} / M30 / O3000 / G10 L2 P1 X-150. / M99")
+    assert said(text, fanuc) == []
+
+
+def test_a_body_that_returns_elsewhere_loses_them(fanuc: str) -> None:
+    """`M99 P5` returns to the caller's N5: the G55 and X-700. between never run."""
+    text = ("O2000 / G0 X-10. / M99 P5 / O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / "
+            "G55 / G0 X-700. / N5 M30")
+    assert said(text, fanuc) == []
+
+
+DEF = "o100 sub / G0 X-700 / o100 endsub / "
+
+
+@pytest.mark.parametrize("text, expected", [
+    # (the brief's first form: rs274 -g runs X-700 at the call, under G55: -800)
+    (DEF + "G21 G17 G90 G55 / G0 X0 Y0 / o100 call / M2", [(6, 1)]),
+    # (G54 call (-700), then G55 call (-800))
+    (DEF + "G21 G17 G90 G54 / G0 X0 Y0 / o100 call / G55 / o100 call / M2", [(8, 1)]),
+    # (the main's G55 before the definition, the call under G54: -700, inside)
+    ("G21 G90 G55 / " + DEF + "G54 / G0 X0 Y0 / o100 call / M2", []),
+    # (the main's own moves after a definition: judged as machine positions again)
+    ("o100 sub / G0 X1 / o100 endsub / G21 G90 G55 / G0 X-700 / M2", [(5, 4)]),
+    ("G21 G90 G55 / o100 sub / G0 X1 / o100 endsub / G0 X-700 / M2", [(5, 4)]),
+    # (nested: o100 calls o200, both defined before the main)
+    ("o200 sub / G0 X-700 / o200 endsub / o100 sub / o200 call / o100 endsub / "
+     "G21 G90 G54 / G0 X0 Y0 / o100 call / G55 / o100 call / M2", [(11, 1)]),
+    # (a repeat of calls under G55)
+    (DEF + "G21 G90 G55 / G0 X0 Y0 / o101 repeat [2] / o100 call / o101 endrepeat / M2",
+     [(7, 1)]),
+    # (in inches: X-27 under G20 is -685.8 mm, -785.8 under G55)
+    ("o100 sub / G0 X-27 / o100 endsub / G20 G90 G55 / G0 X0 Y0 / o100 call / M2", [(6, 1)]),
+    ("o100 sub / G0 X-27 / o100 endsub / G21 G90 G55 / G0 X0 Y0 / o100 call / M2", []),
+    # (the body selects G55, or sets a tool length, or writes G54's X: lost, as before)
+    ("o100 sub / G55 / o100 endsub / G21 G90 G54 / G0 X0 Y0 / o100 call / G0 X-700 / M2", []),
+    ("o100 sub / G43 H1 / o100 endsub / G21 G90 G54 / G0 X0 Y0 / o100 call / G0 Z-515 / M2",
+     []),
+    ("o100 sub / #5221=-150 / o100 endsub / G21 G90 G54 / G0 X0 Y0 / o100 call / G0 X850 / M2",
+     []),
+    # (the body ends the program: nothing after the call runs)
+    ("o100 sub / G0 X-10 / M2 / o100 endsub / G21 G90 G54 / G0 X0 Y0 / o100 call / G55 / "
+     "G0 X-700 / M2", []),
+    # (a definition that reads a G49, G92 or G55 of its own where it stands: the main
+    # program's state after its endsub is read with it, so its moves lose the offsets there)
+    ("G21 G90 G54 / G43 H1 Z0 / o100 sub / G49 / o100 endsub / G0 Z-515 / M2", []),
+    ("G21 G90 G54 / G0 X0 Y0 / o100 sub / G92 X-400 / o100 endsub / G0 X-700 / M2", []),
+    ("G21 G90 G54 / G0 X0 Y0 / o100 sub / G55 / o100 endsub / G0 X-700 / M2", []),
+    # (its position from a parameter, or under a rotation at the call: not known)
+    ("o100 sub / G0 X#1 / o100 endsub / G21 G90 G55 / G0 X0 Y0 / o100 call [-700] / M2", []),
+    (DEF + "G21 G90 G55 / G0 X0 Y0 / G68 X0 Y0 R180 / o100 call / M2", []),
+])
+def test_a_linuxcnc_definition_is_judged_at_every_call(lcnc: str, text: str,
+                                                       expected: list[tuple[int, int]]) -> None:
+    assert [g[:2] for g in said(text, lcnc)] == expected
+
+
+AFTER = "O1000 / G21 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (the body after M30: calls under G54 and G55, -700 and -800; calls that disagree left
+    # it not compared)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / M99",
+     [(9, 4, "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0), outside "
+             "the travel -762 to 762 (O2000 runs as called by M98 P2000 of line 6: a "
+             "subprogram written after its call runs under the work offset in force there)")]),
+    # (G54, G55, G56: -800 at the G55 call's, -900 at the G56 call's, one excursion each)
+    ("M98 P2000 / G55 / M98 P2000 / G56 / M98 P2000 / M30 / O2000 / G0 X-700. / G0 X-720. / "
+     "M99",
+     [(11, 4, "X goes to -800"), (11, 4, "X goes to -900")]),
+    # (the first call under G55: said under it as before, the G54 call's inside)
+    ("G55 / M98 P2000 / G54 / M98 P2000 / M30 / O2000 / G0 X-700. / M99",
+     [(10, 4, "X goes to -800")]),
+    # (the body writes a G91 after its move: the second call, whose mode is the one the
+    # first left (G91), runs X-700. as an increment: dropped; with the caller's own G90 at
+    # the second call, said)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G91 / G0 X10. / M99", []),
+    ("M98 P2000 / G90 G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G91 / G0 X10. / M99",
+     [(9, 4, "X goes to -800")]),
+    # (the same body with G90 written first: absolute at every call)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G90 G0 X-700. / G91 / G0 X10. / M99",
+     [(9, 8, "X goes to -800")]),
+    # (the body selects its own offset: the calls' no longer judged)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G54 / G0 X-700. / M99", []),
+    # (it writes a G10 of its own first: not judged under the others)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G10 L2 P2 X0. / G0 X-700. / M99", []),
+    # (review 76 F1: the body changes the offsets after its move, so the second call runs
+    # under what it wrote: a G10, a variable, a shift, a frame left on, a call of a program
+    # not in the file -- the other call's findings dropped at its end)
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G10 L2 P2 X0. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / #5241=0. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G52 X300. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G68 X0 Y0 R180. / M99", []),
+    ("M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / M98 P9000 / M99", []),
+    # (a G10 between the calls: left not compared, as calls that disagree were)
+    ("M98 P2000 / G10 L2 P2 X-200. / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / M99", []),
+])
+def test_a_body_after_its_calls_is_judged_under_each_call_s_offset(
+        fanuc: str, blocks: str, expected: list[tuple[int, int, str]]) -> None:
+    got = said(AFTER + blocks, fanuc)
+    assert len(got) == len(expected)
+    assert [(line, col, msg[:len(e)])
+            for (line, col, msg), (_, _, e) in zip(got, expected, strict=True)] == expected
+
+
+def test_haas_g110_selects_an_offset_the_profile_does_not_give(tmp_path: Path) -> None:
+    """Review 76 F2: a Haas's G110-G129 select the additional work offsets #7-#26 (G154
+    P1-P20): the positions after one are not judged under the G55 before it, inline or after
+    a call of a body that writes it."""
+    profile = tmp_path / "wo2h.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
+                       "Y = [-16.0, 16.0]\nZ = [-20.0, 0.5]\n[work_offsets]\n"
+                       "G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+                       "G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n")
+    head = "O01000 / G20 G17 G90 G55 / G0 X0 Y0 / "
+    assert said(head + "G110 / G0 X-27. / M30", str(profile)) == []
+    assert said("O02000 / G0 X-5. / G129 / M99 / " + head + "M98 P2000 / G0 X-27. / M30",
+                str(profile)) == []
+    # (without it, under G55: -31)
+    assert [g[:2] for g in said(head + "G0 X-27. / M30", str(profile))] == [(4, 4)]
+
+
+def test_linuxcnc_m72_leaves_the_work_offset_not_known(lcnc: str) -> None:
+    """Review 76 F3: M72 restores the work offset M70 saved (rs274 -g: SET_G5X_OFFSET(1) at
+    the M72): the call after it, and an inline move, are not judged under the G55 between."""
+    assert said(DEF + "G21 G17 G90 G54 / G0 X0 Y0 / o100 call / M70 / G55 / M72 / o100 call / "
+                "M2", lcnc) == []
+    assert said("G21 G17 G90 G54 / G0 X0 Y0 / M70 / G55 / M72 / G0 X-700 / M2", lcnc) == []
+    # (a G55 selected after the M72: judged again)
+    assert [g[:2] for g in said("G21 G90 G54 / G0 X0 Y0 / M70 / M72 / G55 / G0 X-700 / M2",
+                                lcnc)] == [(6, 4)]
+
+
+def test_a_conditional_offset_variable_write_leaves_the_offsets_not_known(fanuc: str) -> None:
+    """Review 76 F4: `IF [#1 EQ 1] THEN #5241=0.` may set G55's X to 0: the positions after
+    it, inline, after a call of a body holding it, or at the body's later call, are not
+    judged under the profile's G55."""
+    assert said("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / IF [#1 EQ 1] THEN #5241=0. / "
+                "G0 X-700. / M30", fanuc) == []
+    assert said("O2000 / G0 X-10. / IF [#1 EQ 1] THEN #5241=0. / M99 / O1000 / "
+                "G21 G17 G90 G55 / G0 X0 Y0 / M98 P2000 / G0 X-700. / M30", fanuc) == []
+    assert said("O2000 / G0 X-700. / IF [#1 EQ 1] THEN #5241=0. / M99 / " + AFTER
+                + "M98 P2000 / G55 / M98 P2000 / M30", fanuc) == []
+    # (another variable in the IF-THEN: judged as before)
+    assert [g[:2] for g in said("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / IF [#1 EQ 1] THEN "
+                                "#101=0. / G0 X-700. / M30", fanuc)] == [(5, 4)]
+
+
+def test_a_linuxcnc_definition_no_call_names_is_not_judged_under_its_own_offset(
+        lcnc: str) -> None:
+    """Review 76 F5: rs274 never runs a definition the file does not call: its positions under
+    a G55 of its own are not said (as before the definitions were read with no offset)."""
+    assert said("G21 G90 G54 / G0 X0 / o100 sub / G55 / G0 X-700 / o100 endsub / M2",
+                lcnc) == []
+    assert said("o100 sub / G55 / G0 X-700 / o100 endsub / G21 G90 G54 / G0 X0 / M2",
+                lcnc) == []
+
+
+@pytest.mark.parametrize("blocks", [
+    # (review 76 F6: both calls under G54, the main's G55 after them: -700, not said)
+    "M98 P2000 / G54 / M98 P2000 / G55 / M30 / O2000 / G0 X-700. / M99",
+    # (z8: a call of a body read before in front)
+    "M98 P2001 / M98 P2000 / G54 / M98 P2000 / G55 / M30 / O2000 / G0 X-700. / M99",
+])
+def test_a_body_after_calls_under_one_offset_is_not_read_under_the_main_s_last(
+        fanuc: str, blocks: str) -> None:
+    text = "O2001 / G0 X-10. / M99 / " + AFTER + blocks
+    assert said(text, fanuc) == []
+
+
+@pytest.mark.parametrize("text", [
+    # (review 76 F7: the body's G10 writes G54's X: the G55 call's -800 stays)
+    AFTER + "M98 P2000 / G55 / M98 P2000 / M30 / O2000 / G0 X-700. / G10 L2 P1 X0. / M99",
+    # (F8: another program written after it, called or not)
+    AFTER + "M98 P2000 / G55 / M98 P2000 / M98 P2001 / M30 / O2000 / G0 X-700. / M99 / "
+    "O2001 / G0 X-10. / M99",
+])
+def test_a_later_call_s_finding_stays_where_its_offset_is_untouched(fanuc: str,
+                                                                   text: str) -> None:
+    assert [g[2][:14] for g in said(text, fanuc)] == ["X goes to -800"]
+
+
+def test_linuxcnc_m72_restores_the_offset_m70_saved(lcnc: str) -> None:
+    """Review 76 F9: M72 with no selection since M70 leaves G55 in force: -800 said."""
+    assert [g[:2] for g in said("G21 G17 G90 G55 / G0 X0 Y0 / M70 / G0 X-10 / M72 / G0 X-700 / "
+                                "M2", lcnc)] == [(6, 4)]
