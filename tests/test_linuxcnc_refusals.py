@@ -1850,7 +1850,10 @@ M72_DROPPED_BLOCK = [
     ("M70\nS200\nM72 G98 G81 X1 Z-1 R-5\nG80 G0 X1", None, ""),
     ("M70\nG19\nM72 G38.2 X5", None, ""),
     ("M70\nG21\nS200\nM72 G38.2 X5", None, ""),
-    # ... where the drop does not happen, they are (nothing differs)
+    # ... where the drop does not happen, they are (nothing differs; G42 saved and G42.1 in
+    # force are one side, which is all rs274 compares: review 76-lcnc76a F5)
+    ("G42\nG1 X1\nM70\nG40\nG42.1 D0.1\nG1 X6\nM72 G81 X1 Z-1 R1\nG40", 9,
+     "Cannot use canned cycles with cutter compensation on"),
     ("G41.1 D0.1\nM70\nM72 G38.2 X1\nG40", 5, "Cannot probe with cutter radius comp on"),
     # a G4 beside it, dropped with the G91
     ("M70\nS200\nM72 G91 G4 P0.1\nX1\nG38.2 X1", 7, TOO_CLOSE),

@@ -3929,7 +3929,7 @@ impl Checker {
         let surely = saved.mode != now.mode
             || matches!((saved.units, now.units), (Some(s), Some(n)) if s != n)
             || matches!((saved.spindle, now.spindle), (Some(s), Some(n)) if s != n)
-            || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if s != n)
+            || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if compensation_differs(s, n))
             || differs_else
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
@@ -6754,6 +6754,16 @@ pub(super) struct FeedSaved {
     quiet: bool,
     /// `quiet`, and no F or S word either: the restore writes nothing, whatever the values.
     still: bool,
+}
+
+/// LinuxCNC: whether two cutter compensations (the modal state's G40-G42 and whether it is
+/// G41.1/G42.1, whose side the state does not keep) surely differ as rs274 compares them, by
+/// the side alone (interp_write.cc `write_g_codes`: G40, G41 or G42): one off and the other
+/// on, or both G41/G42 and on other sides. `G42` saved and `G42.1 D0.1` in force are the same
+/// (review 76-lcnc76a F5: the M72's block runs, its canned cycle refused).
+fn compensation_differs((a, a_dynamic): (i64, bool), (b, b_dynamic): (i64, bool)) -> bool {
+    let on = |side: i64, dynamic: bool| side != 40 || dynamic;
+    on(a, a_dynamic) != on(b, b_dynamic) || !a_dynamic && !b_dynamic && a != b
 }
 
 /// LinuxCNC: the distance mode through the open definition's body, read in its order
