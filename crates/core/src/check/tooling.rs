@@ -630,7 +630,8 @@ pub(super) fn linuxcnc_units_double(
 /// (G54-G59.3) or set (G10), G92 and G52 shifts, a tool length offset taken or dropped (G43,
 /// G43.1, G43.2, G49: its table's values are the machine's), a return home (G28, G30: the
 /// home position is the machine's), a probe (G38.2-G38.5 stops at contact), a move in
-/// machine coordinates (G53), a change of units or of diameter mode (G20, G21, G7, G8).
+/// machine coordinates (G53), a change of units (G20, G21: the axes but X Y Z, which are
+/// converted, `Checker::linuxcnc_units_unsure`) or of diameter mode (G7, G8).
 /// rs274ngc's arc_data_r compares an R arc's end with the point it holds in the active
 /// coordinates after each of these (interp_arc.cc).
 fn linuxcnc_unsettles(tenths: i64) -> bool {
