@@ -1943,6 +1943,9 @@ M72_RESTORE_REFUSED = [
      "Cannot turn cutter radius comp on when on"),
     # the same side (G41 saved, G41.1 in force) is not written: runs
     ("G41 D0\nG1 X1\nM70\nG40\nG41.1 D0\nG1 X2\nM72\nG40", None, ""),
+    # a saved G17.1-G19.1 restored under the compensation: rs274 sets it without a word
+    # (review 76-lcnc76a F8)
+    ("G17.1\nM70\nG17\nG41 D0\nG1 X1\nM72\nG40", None, ""),
     # units restored under the compensation: runs
     ("M70\nG20\nG41.1 D0.1\nG1 X1\nM72\nG40", None, ""),
 ]

@@ -3130,16 +3130,19 @@ impl Checker {
             let plane_saved = self.linuxcnc_plane_saved;
             // (the plane in force before the block: not known here where the block writes
             // one, which the modal state has applied)
-            self.linuxcnc_m72_plane_differs = (!step.plane).then(|| {
+            let plane_differs = (!step.plane).then(|| {
                 matches!(self.linuxcnc_saved, Saved::Valid(_))
                     && !plane_now.unknown
                     && !plane_saved.unknown
                     && (plane_now.plane, plane_now.uvw) != (plane_saved.plane, plane_saved.uvw)
             });
+            // (rs274's `convert_set_plane` refuses under the compensation a G17, G18 or G19
+            // from another plane; G17.1-G19.1 pass: review 76-lcnc76a F8)
+            self.linuxcnc_m72_plane_differs = plane_differs.map(|d| d && !plane_saved.uvw);
             self.linuxcnc_m72_differs = matches!(
                 (self.linuxcnc_saved, before),
                 (Saved::Valid(Distance::Known(s)), Distance::Known(n)) if s != n
-            ) || self.linuxcnc_m72_plane_differs == Some(true);
+            ) || plane_differs == Some(true);
         }
         self.linuxcnc_saved_plane(&step, flow);
         match step.m7 {
