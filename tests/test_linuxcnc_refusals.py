@@ -1842,6 +1842,19 @@ M72_DROPPED_BLOCK = [
     ("M70\nS200\nM72 G2 X1 Y0 R1 I1", None, ""),
     ("M70\nG18\nM72 G2 X1 Z0 R2", None, ""),
     ("M70\nM72 G2 X0 Y0 R2", 4, "Current point same as end point of arc"),
+    # nor its probe, canned cycle or their refusals (review 75-lcnc75a N4, N6): a probe or
+    # cycle under the compensation, a cycle without its Q or under its R
+    ("G41.1 D0.1\nM70\nG93\nM72 G81 X1 Z-1 R1\nG94 G1 X1 F10", None, ""),
+    ("G41.1 D0.1\nM70\nG93\nM72 G38.2 X1\nG94 G1 X1 F10", None, ""),
+    ("M70\nS200\nM72 G83 X1 Z-1 R1\nG0 X1", None, ""),
+    ("M70\nS200\nM72 G98 G81 X1 Z-1 R-5\nG80 G0 X1", None, ""),
+    ("M70\nG19\nM72 G38.2 X5", None, ""),
+    ("M70\nG21\nS200\nM72 G38.2 X5", None, ""),
+    # ... where the drop does not happen, they are (nothing differs; G42 saved and G42.1 in
+    # force are one side, which is all rs274 compares: review 76-lcnc76a F5)
+    ("G42\nG1 X1\nM70\nG40\nG42.1 D0.1\nG1 X6\nM72 G81 X1 Z-1 R1\nG40", 9,
+     "Cannot use canned cycles with cutter compensation on"),
+    ("G41.1 D0.1\nM70\nM72 G38.2 X1\nG40", 5, "Cannot probe with cutter radius comp on"),
     # a G4 beside it, dropped with the G91
     ("M70\nS200\nM72 G91 G4 P0.1\nX1\nG38.2 X1", 7, TOO_CLOSE),
     # nothing saved: the M72 itself is refused, before any of its block runs
@@ -1875,10 +1888,72 @@ def test_an_m72_restores_the_units_its_save_took(tmp_path):
     assert found("M70\nG20\nM72\nG0 X-500") == []
     assert found("M70\nS200\nM72 G20\nG0 X-500") == []
     assert found("G20\nM70\nG21\nM72\nG0 X-500") == [("TG601", 7)]
+    # the save's own G20/G21 runs after it: `M70 G20` saves mm (review 75-lcnc75a N2)
+    assert found("M70 G20\nS200\nM72\nG0 X-500") == []
+    assert found("G20\nM70 G21\nS200\nM72\nG0 X-500") == [("TG601", 7)]
     # without the M72, the G20 holds
     assert found("G20\nG0 X-500") == [("TG601", 4)]
-    for body in ("M70\nG20\nM72\nG0 X-500", "M70\nS200\nM72 G20\nG0 X-500"):
+    for body in ("M70\nG20\nM72\nG0 X-500", "M70\nS200\nM72 G20\nG0 X-500",
+                 "M70 G20\nS200\nM72\nG0 X-500"):
         assert "PROGRAM_END" in rs274_output(tmp_path, program(body))
+    # rs274 moves in inch after `G20` / `M70 G21` / `M72` (X-500 in is -12700 mm): its last
+    # USE_LENGTH_UNITS before the move, the M72's
+    out = rs274_output(tmp_path, program("G20\nM70 G21\nS200\nM72\nG0 X-500"))
+    units = [line for line in out.splitlines() if "USE_LENGTH_UNITS" in line]
+    assert units and "CANON_UNITS_INCHES" in units[-1], out
+
+
+# rs274 keeps X Y Z in the units in force and converts them at a change of units, by
+# `INCH_PER_MM` (1/25.4) at G20 and by 25.4 at G21 (interp_convert.cc `convert_length_units`;
+# an M72's restore of other units the same): the doubles it compares are those products (0.3
+# comes back as 0.3, 0.1 and 1 do not). Review 75-lcnc75a F2. HEAD is G90 G21 at X0 Y0 Z0.
+UNITS_TURNED = [
+    # F2: a unit restore with G91 beside it (dropped), the probe at the unmoved point
+    ("M70\nG20\nM72 G91 G1 X1\nG40\nG38.2 X0", 7, TOO_CLOSE),
+    ("M70\nG20\nM72 G91\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nG20\nM72\nG2 X0 Y0 R1", 6, "Current point same as end point of arc"),
+    ("G20\nM70\nG21\nM72\nG38.2 X0", 7, TOO_CLOSE),
+    ("G20\nG38.2 Y0", 4, TOO_CLOSE),
+    ("G0 X0.3\nM70\nG20\nM72\nG38.2 X0.3", 7, TOO_CLOSE),
+    ("G0 X0.3\nG20\nG21\nG38.2 X0.3", 6, TOO_CLOSE),
+    ("G20\nG91 G0 X1\nG90 G38.2 X1", 5, TOO_CLOSE),
+    # the round trips that are not the decimal: rs274 runs
+    ("G0 X0.1\nM70\nG20\nM72\nG38.2 X0.1", None, ""),
+    ("G0 X1\nG20\nG21\nG38.2 X1", None, ""),
+    ("G0 X0.3\nG20 G91 G0 X1\nG90 G38.2 X1", None, ""),
+    ("G20 F4\nG81 X1 Z-1 R1\nG38.2 Z-1", None, ""),
+]
+
+
+@pytest.mark.parametrize("body, line, message", UNITS_TURNED)
+def test_a_change_of_units_converts_the_point_as_rs274(tmp_path, body, line, message):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", message)
+
+
+# rs274 refuses the M72 itself where its restore block cannot run under the compensation in
+# force (interp_convert.cc `restore_settings`: "M7x: restore_settings failed executing: ' G17
+# G40': Cannot change planes with cutter radius compensation on"): a plane that differs, or
+# the other side of a static compensation (review 75-lcnc75a N5).
+M72_RESTORE_REFUSED = [
+    ("M70\nG18\nG41.1 D0.1\nM72 G1 X1\nG40", 6,
+     "Cannot change planes with cutter radius compensation on"),
+    ("G18\nG41.1 D0.1\nG1 X1\nM70\nG40\nG17\nG41.1 D0.1\nG1 X2\nM72\nG40", 11,
+     "Cannot change planes with cutter radius compensation on"),
+    ("G41 D0\nG1 X1\nM70\nG40\nG42 D0\nG1 X2\nM72\nG40", 9,
+     "Cannot turn cutter radius comp on when on"),
+    # the same side (G41 saved, G41.1 in force) is not written: runs
+    ("G41 D0\nG1 X1\nM70\nG40\nG41.1 D0\nG1 X2\nM72\nG40", None, ""),
+    # a saved G17.1-G19.1 restored under the compensation: rs274 sets it without a word
+    # (review 76-lcnc76a F8)
+    ("G17.1\nM70\nG17\nG41 D0\nG1 X1\nM72\nG40", None, ""),
+    # units restored under the compensation: runs
+    ("M70\nG20\nG41.1 D0.1\nG1 X1\nM72\nG40", None, ""),
+]
+
+
+@pytest.mark.parametrize("body, line, message", M72_RESTORE_REFUSED)
+def test_an_m72_whose_restore_rs274_refuses_is_said_at_it(tmp_path, body, line, message):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", message)
 
 
 # A work offset's parameter write on LinuxCNC (interp_convert.cc): `convert_coordinate_system`

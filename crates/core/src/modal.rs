@@ -1800,7 +1800,7 @@ impl ModalMachine {
 /// A length in the other units: millimetres times 25.4 exactly, inches from millimetres to
 /// 10^-9 in (a ten-thousandth of the finest resolution a control offers: nothing the checker
 /// compares can tell); None (the position unknown) where the core's numbers cannot hold it.
-fn in_units(length: Dec, to: Units) -> Option<Dec> {
+pub(crate) fn in_units(length: Dec, to: Units) -> Option<Dec> {
     match to {
         Units::Metric => length.checked_mul(Dec {
             mantissa: 254,

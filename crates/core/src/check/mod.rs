@@ -1205,6 +1205,12 @@ pub struct Checker {
     /// amount the checker does not follow (`tooling::linuxcnc_unsettles`); an absolute move
     /// on the axis knows it again. An R arc is not judged against such a start (TG412).
     linuxcnc_point_unsure: u32,
+    /// LinuxCNC: the block (`stats.blocks`) whose G20 or G21 changed the units, whose X Y Z
+    /// rs274 converts ([`tooling::linuxcnc_units_double`]); 0 none.
+    linuxcnc_units_turned: usize,
+    /// LinuxCNC: the units in force before the block in hand, where it has an M word and
+    /// they are known (those an M70 or M73 beside a G20/G21 saves: review 75-lcnc75a N2).
+    linuxcnc_m_units: Option<(crate::modal::Units, crate::modal::Units)>,
     /// LinuxCNC: the doubles rs274 holds for X, Y and Z, where a G91 sum made them other
     /// than the decimals' (`tooling::Double`, `Checker::linuxcnc_doubles`).
     linuxcnc_double: [tooling::Double; 3],
@@ -1263,6 +1269,10 @@ pub struct Checker {
     /// force than the save took (`Checker::linuxcnc_distance_modal`): its restore surely
     /// writes a block of its own.
     linuxcnc_m72_differs: bool,
+    /// LinuxCNC: the M72 of the block in hand surely finds another plane in force than the
+    /// save took (None: not known, its block writing a plane code): the restore writes the
+    /// plane first, which rs274 refuses under cutter compensation (review 75-lcnc75a N5).
+    linuxcnc_m72_plane_differs: Option<bool>,
     /// LinuxCNC: a block whose M72 may be dropped (`linuxcnc_m72_dropped`), with the motion
     /// mode before it: the block's own motion, plane and compensation codes do not take effect
     /// where rs274 drops it (`Checker::linuxcnc_m72_motion_back`).
@@ -1872,6 +1882,8 @@ impl Checker {
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
             linuxcnc_point_unsure: 0,
+            linuxcnc_units_turned: 0,
+            linuxcnc_m_units: None,
             linuxcnc_double: Default::default(),
             linuxcnc_cycle_bottom: None,
             linuxcnc_series_start: None,
@@ -1888,6 +1900,7 @@ impl Checker {
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
             linuxcnc_m72_differs: false,
+            linuxcnc_m72_plane_differs: None,
             linuxcnc_m72_motion: None,
             linuxcnc_nurbs: tooling::Nurbs::default(),
             linuxcnc_nurbs_last: None,
@@ -3039,6 +3052,12 @@ impl Checker {
         // (and one after a block delete `/`, which the switch may pass over)
         self.values.end_unsure = b.skip || !self.linuxcnc_runs_surely();
         // (the cycle an M72's dropped block leaves in force; rare)
+        if self.letters & bit(b'M') != 0 {
+            let state = &self.machine.state;
+            // (the units an M70 or M73 saves: the block's G20/G21 runs after it)
+            self.linuxcnc_m_units =
+                (!self.units_unknown).then_some((state.units, state.feed_units));
+        }
         if self.linuxcnc_feed_saved.is_some() && self.letters & bit(b'M') != 0 {
             let state = &self.machine.state;
             self.linuxcnc_m72_cycle = Some(structure::M72Cycle {

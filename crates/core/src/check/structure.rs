@@ -327,6 +327,7 @@ impl Checker {
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
         self.linuxcnc_point_unsure = 0;
+        self.linuxcnc_units_turned = 0;
         self.linuxcnc_double = Default::default();
         self.linuxcnc_defined.clear();
         self.linuxcnc_named.clear();
@@ -3235,14 +3236,21 @@ impl Checker {
         if step.m7 == Some(72) {
             let plane_now = self.linuxcnc_plane_now();
             let plane_saved = self.linuxcnc_plane_saved;
+            // (the plane in force before the block: not known here where the block writes
+            // one, which the modal state has applied)
+            let plane_differs = (!step.plane).then(|| {
+                matches!(self.linuxcnc_saved, Saved::Valid(_))
+                    && !plane_now.unknown
+                    && !plane_saved.unknown
+                    && (plane_now.plane, plane_now.uvw) != (plane_saved.plane, plane_saved.uvw)
+            });
+            // (rs274's `convert_set_plane` refuses under the compensation a G17, G18 or G19
+            // from another plane; G17.1-G19.1 pass: review 76-lcnc76a F8)
+            self.linuxcnc_m72_plane_differs = plane_differs.map(|d| d && !plane_saved.uvw);
             self.linuxcnc_m72_differs = matches!(
                 (self.linuxcnc_saved, before),
                 (Saved::Valid(Distance::Known(s)), Distance::Known(n)) if s != n
-            ) || matches!(self.linuxcnc_saved, Saved::Valid(_))
-                && !step.plane
-                && !plane_now.unknown
-                && !plane_saved.unknown
-                && (plane_now.plane, plane_now.uvw) != (plane_saved.plane, plane_saved.uvw);
+            ) || plane_differs == Some(true);
         }
         self.linuxcnc_saved_plane(&step, flow);
         match step.m7 {
@@ -3343,6 +3351,7 @@ impl Checker {
             return;
         }
         let mut m7 = None;
+        let mut m_column = 0;
         let mut unread = false;
         let mut mode_set = false;
         let mut zeroed = false;
@@ -3370,7 +3379,10 @@ impl Checker {
                 std::str::from_utf8(w.number).ok()?.parse::<f64>().ok()
             };
             match (w.letter, code()) {
-                (b'M', Some(m @ (70.0 | 71.0 | 72.0 | 73.0))) => m7 = Some(m as u8),
+                (b'M', Some(m @ (70.0 | 71.0 | 72.0 | 73.0))) => {
+                    m7 = Some(m as u8);
+                    m_column = w.column;
+                }
                 (b'G', Some(g @ (93.0 | 94.0 | 95.0))) => {
                     mode_set = true;
                     zeroed |= g != 93.0;
@@ -3468,8 +3480,12 @@ impl Checker {
             None
         } else if m7 == 72 {
             self.linuxcnc_m72_cycle.map(|c| c.units)
+        } else if units_set {
+            // (an M70's or M73's own G20/G21 runs after it: the units before the block,
+            // review 75-lcnc75a N2, `M70 G20` / `S200` / `M72` / `G0 X-500` moves in mm)
+            self.linuxcnc_m_units
         } else {
-            (!units_set).then_some((state.units, state.feed_units))
+            Some((state.units, state.feed_units))
         };
         let now = FeedSaved {
             mode: state.feed_mode,
@@ -3519,6 +3535,10 @@ impl Checker {
                     .linuxcnc_feed_saved
                     .filter(|_| followed)
                     .filter(|_| matches!(self.linuxcnc_saved, Saved::Valid(_)));
+                let plane_differs = std::mem::take(&mut self.linuxcnc_m72_plane_differs);
+                if let Some(s) = kept {
+                    self.linuxcnc_m72_refused(s, now, plane_differs, (b.line, m_column));
+                }
                 self.linuxcnc_spindle_restored(kept, comp_set, tool_change);
                 let saved = kept.filter(|_| mode_known);
                 let dropped = match saved {
@@ -3544,7 +3564,7 @@ impl Checker {
                 }
                 if dropped == Some(true) {
                     if let (Some(to), Some(from)) = (saved.and_then(|s| s.units), now.units) {
-                        self.linuxcnc_m72_units(to, from);
+                        self.linuxcnc_m72_units(to, from, before);
                     }
                 }
                 // (a G93 move of the block, where it may run: its length times F)
@@ -3559,6 +3579,57 @@ impl Checker {
             }
             _ => {}
         }
+    }
+
+    /// [`Checker::linuxcnc_feed_restore`]: an M72 of a followed save (`saved`) where the
+    /// state is `now`, whose restore block rs274 2.9.0 refuses under the cutter compensation
+    /// in force (interp_convert.cc `restore_settings` runs ` G17`/` G41`... that
+    /// `gen_settings` writes, the plane first): a plane other than the one in force
+    /// ("Cannot change planes with cutter radius compensation on"), or the other side of
+    /// the compensation ("Cannot turn cutter radius comp on when on"; the same side, G41
+    /// and G41.1, is not written). rs274 says it at the M72 ("M7x: restore_settings failed
+    /// executing: ' G42': ..."; review 75-lcnc75a N5: `G42.1 D0.1` / `G1 X1` / `M70` / `G40`
+    /// / `G1 X2` / `G41.1 D0.1` / `G1 X3` / `M72 G1 X4`).
+    #[cold]
+    fn linuxcnc_m72_refused(
+        &mut self,
+        saved: FeedSaved,
+        now: FeedSaved,
+        plane_differs: Option<bool>,
+        (line, column): (usize, usize),
+    ) {
+        // (on: G41/G42, or G41.1/G42.1, whose side the modal state does not keep)
+        let on = |c: Option<(i64, bool)>| c.filter(|&(side, dynamic)| side != 40 || dynamic);
+        let Some((side, dynamic)) = on(now.compensation) else {
+            return;
+        };
+        if self.main_ended() {
+            return;
+        }
+        let written = match on(saved.compensation) {
+            Some((s, false)) if !dynamic && s != side => Some(s),
+            _ => None,
+        };
+        // (the plane before a block that writes one is not known here: neither said)
+        let Some(plane_differs) = plane_differs else {
+            return;
+        };
+        let message = if plane_differs {
+            "Cannot change planes with cutter radius compensation on (rs274ngc): the M72's \
+             restore writes the plane the M70 or M73 saved (interp_convert.cc \
+             restore_settings) under the compensation in force; turn it off (G40) before the \
+             M72"
+            .to_string()
+        } else if let Some(s) = written {
+            format!(
+                "Cannot turn cutter radius comp on when on (rs274ngc): the M72's restore writes \
+                 the G{s} the M70 or M73 saved (interp_convert.cc restore_settings) under the \
+                 G{side} in force; turn it off (G40) before the M72"
+            )
+        } else {
+            return;
+        };
+        self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
     /// [`Checker::linuxcnc_feed_restore`]: the spindle's direction and the cutter
@@ -3881,11 +3952,14 @@ impl Checker {
     /// which runs after the M72, is dropped with the rest of it (review 59b F7: `M70` /
     /// `S200` / `M72 G20` / `G0 X-500` moves to X-500 mm in `rs274 -g`; `M70` / `G20` /
     /// `M72` / `G0 X-500` too). Where the units change, the point rs274 holds is converted
-    /// (the modal state's G20/G21), not known exactly.
+    /// (the modal state's G20/G21), and the doubles of X Y Z as rs274 converts them
+    /// (`tooling::linuxcnc_units_double`; review 75-lcnc75a F2: `M70` / `G20` / `M72 G91 G1
+    /// X1` / `G38.2 X0` is "Start point too close to probe point" in `rs274 -g`).
     fn linuxcnc_m72_units(
         &mut self,
         to: (crate::modal::Units, crate::modal::Units),
         from: (crate::modal::Units, crate::modal::Units),
+        before: &super::Before,
     ) {
         // (the block's X Y Z are back at its start, in the units before it; U V W, which its
         // own G20/G21 converted, are not known)
@@ -3907,8 +3981,22 @@ impl Checker {
             };
             self.machine.codes(&[code]);
             (self.machine.state.units, self.machine.state.feed_units) = to;
-            self.linuxcnc_point_unsure |=
-                crate::modal::bit(b'X') | crate::modal::bit(b'Y') | crate::modal::bit(b'Z');
+            // (the doubles held before the block, which a sure drop gives back after its
+            // rules: `linuxcnc_m72_motion_back`)
+            let diameter = self.x_diameter();
+            if let Some(dropped) = self.linuxcnc_m72_motion.as_mut() {
+                for k in 0..3 {
+                    dropped.double[k] = super::tooling::linuxcnc_units_double(
+                        dropped.double[k],
+                        before.xyz[k],
+                        self.machine.state.position[k],
+                        to.0,
+                    );
+                }
+            }
+            if diameter {
+                self.linuxcnc_point_unsure |= crate::modal::bit(b'X');
+            }
         }
     }
 
@@ -3952,7 +4040,7 @@ impl Checker {
         let surely = saved.mode != now.mode
             || matches!((saved.units, now.units), (Some(s), Some(n)) if s != n)
             || matches!((saved.spindle, now.spindle), (Some(s), Some(n)) if s != n)
-            || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if s != n)
+            || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if compensation_differs(s, n))
             || differs_else
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
@@ -6812,6 +6900,16 @@ pub(super) struct FeedSaved {
     quiet: bool,
     /// `quiet`, and no F or S word either: the restore writes nothing, whatever the values.
     still: bool,
+}
+
+/// LinuxCNC: whether two cutter compensations (the modal state's G40-G42 and whether it is
+/// G41.1/G42.1, whose side the state does not keep) surely differ as rs274 compares them, by
+/// the side alone (interp_write.cc `write_g_codes`: G40, G41 or G42): one off and the other
+/// on, or both G41/G42 and on other sides. `G42` saved and `G42.1 D0.1` in force are the same
+/// (review 76-lcnc76a F5: the M72's block runs, its canned cycle refused).
+fn compensation_differs((a, a_dynamic): (i64, bool), (b, b_dynamic): (i64, bool)) -> bool {
+    let on = |side: i64, dynamic: bool| side != 40 || dynamic;
+    on(a, a_dynamic) != on(b, b_dynamic) || !a_dynamic && !b_dynamic && a != b
 }
 
 /// LinuxCNC: the distance mode through the open definition's body, read in its order

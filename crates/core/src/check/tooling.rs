@@ -585,6 +585,44 @@ fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(Str
     None
 }
 
+/// LinuxCNC: the double rs274 holds for an axis after a change of units to `to`, the
+/// double before being `double` at the decimal `start`, the modal state's point after it
+/// `now` (its conversion, [`crate::modal::in_units`]): rs274 multiplies the double by
+/// `INCH_PER_MM` (`1.0 / 25.4`) at G20, by `MM_PER_INCH` (25.4) at G21 (interp_convert.cc
+/// `convert_length_units`; the installed build: `G0 X0.1` / `M70` / `G20` / `M72` /
+/// `G38.2 X0.1` runs, 0.1 * (1/25.4) * 25.4 being 0.09999999999999999, and with 0.3 it is
+/// "Start point too close to probe point"). Not known where `now` is not `start`
+/// converted (the axis moved otherwise) or the double before was not.
+pub(super) fn linuxcnc_units_double(
+    double: Double,
+    start: Option<Dec>,
+    now: Option<Dec>,
+    to: crate::modal::Units,
+) -> Double {
+    let (Some(start), Some(now)) = (start, now) else {
+        return Double::Unknown;
+    };
+    if crate::modal::in_units(start, to) != Some(now) {
+        return Double::Unknown;
+    }
+    let held = match double {
+        Double::Nearest => start.to_f64(),
+        Double::Sum(held) => held,
+        Double::Unknown => return Double::Unknown,
+    };
+    const INCH_PER_MM: f64 = 1.0 / 25.4;
+    let converted = if to == crate::modal::Units::Inch {
+        held * INCH_PER_MM
+    } else {
+        held * 25.4
+    };
+    if converted == now.to_f64() {
+        Double::Nearest
+    } else {
+        Double::Sum(converted)
+    }
+}
+
 /// LinuxCNC: whether a G code (in tenths) may leave the current point, in the coordinates the
 /// program writes, unknown to the checker (the axes `Checker::linuxcnc_unsure_after` says
 /// then unsure, `Checker::linuxcnc_point_unsure`, until an absolute move names them; a probe
@@ -592,7 +630,8 @@ fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(Str
 /// (G54-G59.3) or set (G10), G92 and G52 shifts, a tool length offset taken or dropped (G43,
 /// G43.1, G43.2, G49: its table's values are the machine's), a return home (G28, G30: the
 /// home position is the machine's), a probe (G38.2-G38.5 stops at contact), a move in
-/// machine coordinates (G53), a change of units or of diameter mode (G20, G21, G7, G8).
+/// machine coordinates (G53), a change of units (G20, G21: the axes but X Y Z, which are
+/// converted, `Checker::linuxcnc_units_unsure`) or of diameter mode (G7, G8).
 /// rs274ngc's arc_data_r compares an R arc's end with the point it holds in the active
 /// coordinates after each of these (interp_arc.cc).
 fn linuxcnc_unsettles(tenths: i64) -> bool {
@@ -1468,10 +1507,9 @@ impl Checker {
                 // holds: Y and Z stay known, `G7` / `G0 X1` / `G38.2 Z0` from Z0 is "Start
                 // point too close to probe point")
                 70 | 80 if !g_unread => bit(b'X'),
-                // (G20/G21 leave every axis unknown, a zero as well: a zero kept through them
-                // turned the wrong Z the checker holds after a canned cycle or rigid tap into
-                // false "Start point too close to probe point" refusals: `G20 F4` / `G81 X1
-                // Z-1 R1` / `G38.2 Z-1` runs in `rs274 -g`)
+                // (G20/G21: rs274 converts the X Y Z it holds, `linuxcnc_units_double`; the
+                // other axes are not known exactly after them)
+                200 | 210 if !g_unread => self.linuxcnc_units_unsure(c, all, &named),
                 c if linuxcnc_unsettles(c) => all,
                 _ => 0,
             };
@@ -1490,6 +1528,50 @@ impl Checker {
             unsure &= !known;
         }
         unsure
+    }
+
+    /// [`Checker::linuxcnc_unsure_after`] of a G20 or G21 (`tenths`; `all`: every axis; `named`: the
+    /// block names the axis): rs274 keeps X Y Z in the units in force and multiplies them
+    /// by `INCH_PER_MM` (1/25.4) at a G20 from millimetres, by 25.4 at a G21 from inches
+    /// (interp_convert.cc `convert_length_units`); the checker converts the doubles it
+    /// holds the same way after the block's rules ([`linuxcnc_units_double`]), so those
+    /// axes stay known (review 75-lcnc75a F2: `M70` / `G20` / `M72 G91` / `G38.2 X0` is
+    /// "Start point too close to probe point" in `rs274 -g`; `G0 X0.3` / `M70` / `G20` /
+    /// `M72` / `G38.2 X0.3` too: 0.3 * (1/25.4) * 25.4 is 0.3, 0.1's is not 0.1). Not known
+    /// exactly: the other axes, an axis the block moves by an increment (the sum starts
+    /// from the converted double) or whose mode is not known, and X in the diameter mode.
+    #[cold]
+    fn linuxcnc_units_unsure(&mut self, tenths: i64, all: u32, named: &dyn Fn(u8) -> bool) -> u32 {
+        // (a machine whose G20/G21 are no units codes converts no point: not followed)
+        if self.machine.settings.units_code(tenths / 10).is_none() {
+            return all;
+        }
+        self.linuxcnc_units_turned = self.stats.blocks;
+        let mut unsure = all;
+        let moved = self.machine.state.incremental || self.linuxcnc_distance_unsure;
+        for a in [b'X', b'Y', b'Z'] {
+            if !(moved && named(a) || a == b'X' && self.x_diameter()) {
+                unsure &= !bit(a);
+            }
+        }
+        unsure
+    }
+
+    /// [`Checker::linuxcnc_doubles`]: the double rs274 holds for axis `k`, which the block
+    /// does not name, moved from `start` to `now` by something but a move: where the block's
+    /// G20 or G21 changed the units (`linuxcnc_units_turned`) and `now` is `start` in them,
+    /// the double held converted ([`linuxcnc_units_double`]); elsewhere not known.
+    #[cold]
+    fn linuxcnc_double_moved(&self, k: usize, start: Option<Dec>, now: Option<Dec>) -> Double {
+        if self.linuxcnc_units_turned != self.stats.blocks {
+            return Double::Unknown;
+        }
+        linuxcnc_units_double(
+            self.linuxcnc_double[k],
+            start,
+            now,
+            self.machine.state.units,
+        )
     }
 
     /// LinuxCNC: where a canned cycle or a rigid tap leaves the tool, which the modal state
@@ -1697,7 +1779,9 @@ impl Checker {
                     // (a point the block left: the same value, its mantissa and scale)
                     (Some(start), Some(now))
                         if start.scale == now.scale && { start.mantissa } == { now.mantissa } => {}
-                    (start, now) if start != now => self.linuxcnc_double[k] = Double::Unknown,
+                    (start, now) if start != now => {
+                        self.linuxcnc_double[k] = self.linuxcnc_double_moved(k, start, now)
+                    }
                     _ => {}
                 }
             }
@@ -1741,7 +1825,11 @@ impl Checker {
             let moves = matches!(taken, None | Some(crate::modal::AxesTaken::Positions));
             if !self.values.has(letter) || !moves && taken != Some(crate::modal::AxesTaken::Set) {
                 if start != Some(now) {
-                    self.linuxcnc_double[k] = Double::Unknown;
+                    self.linuxcnc_double[k] = if self.values.has(letter) {
+                        Double::Unknown
+                    } else {
+                        self.linuxcnc_double_moved(k, start, Some(now))
+                    };
                 }
                 continue;
             }
@@ -2358,6 +2446,13 @@ impl Checker {
         runs: Option<i64>,
         in_place: bool,
     ) -> Option<String> {
+        // (none of a block whose M72 rs274 surely drops: its restore's block runs in its
+        // place, and nothing of it after the M72 in the order of execution; review
+        // 75-lcnc75a N4, N6: `G41.1 D0.1` / `M70` / `G93` / `M72 G38.2 X1` and `M70` / `S200`
+        // / `M72 G83 X1 Z-1 R1` run in `rs274 -g`)
+        if self.linuxcnc_m72_surely_dropped() {
+            return None;
+        }
         let after = &self.machine.state;
         // a word set by a parameter is there, its value unknown
         let has = |l: u8| words.has(l);
@@ -4275,9 +4370,10 @@ mod tests {
             // after a call the checker does not follow, the compensation is not known
             ("G41.1 D1\no<s> call\nG43 H1\nM2\no<s> sub\nG40\no<s> endsub", &[]),
             // the diameter mode leaves X not known exactly, Y and Z as they were (`rs274 -g`
-            // refuses each: the last two are misses); a G20 or G21 leaves every axis unknown,
-            // a zero too (a miss: the Z the checker holds after a cycle is not the one rs274
-            // holds, and the last but one runs in `rs274 -g`; review 58c, F4)
+            // refuses each: the last two are misses); a G20 or G21 leaves every axis unknown
+            // here, on a machine whose units codes are G70/G71 (on LinuxCNC's, which converts
+            // X Y Z as rs274 does, tests/test_linuxcnc_refusals.py `UNITS_TURNED`; review
+            // 75-lcnc75a F2; the cycle's end is its R, review 58c, F4)
             ("G7\nG0 X1\nG38.2 Z5 F10", &["6: Start point too close to probe point"]),
             ("G7\nG0 Z1\nG38.2 X0 F10", &[]),
             ("G0 X2\nG7\nG0 Z1\nG38.2 X4 F10", &[]),
