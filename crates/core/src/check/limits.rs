@@ -593,7 +593,10 @@ impl Checker {
     }
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
-    fn work_selected(&mut self, g: i64) {
+    fn work_selected(&mut self, g: i64, line: usize) {
+        if self.work.is_some_and(|w| w != g) && self.config.family == Family::LinuxCnc {
+            self.linuxcnc_selected_at = line;
+        }
         if self.linuxcnc_pending.is_some() {
             self.linuxcnc_reselected(g);
         }
@@ -772,7 +775,12 @@ impl Checker {
                 .filter_map(|w| crate::modal::axis_index(w.letter))
                 .fold(0, |bits, i| bits | 1 << i)
         };
-        match (value(b'L'), value(b'P')) {
+        // (LinuxCNC: P0 is the system in force, interp_convert.cc `convert_setup`)
+        let p_in_force = |p: Option<i64>| match (p, self.work) {
+            (Some(0), Some(w @ 54..=59)) if linuxcnc => Some(w - 53),
+            _ => p,
+        };
+        match (value(b'L'), p_in_force(value(b'P'))) {
             (Some(1 | 3 | 10..=13), _) => Written::default(),
             (Some(20), _) if !linuxcnc => Written::default(),
             (Some(2 | 20), Some(7..=9)) if linuxcnc => Written::default(),
@@ -921,13 +929,26 @@ impl Checker {
         writes.axes[g] = 1 << i;
         writes.values[g] = [f64::NAN; 9];
         let in_force = self.work == Some(54 + g as i64);
+        let linuxcnc = self.config.family == Family::LinuxCnc;
         if w.expression.is_empty() && !self.jumped {
             let text = [w.sign, w.number].concat();
             if let Some(v) = std::str::from_utf8(&text).ok().and_then(Dec::parse) {
                 writes.values[g][i] = v.to_f64() * self.to_profile_units(false);
             }
+        } else if linuxcnc && !self.jumped && self.linuxcnc_open_flow.is_empty() {
+            // (LinuxCNC: `#5241=[-200]`, `#5241=#1` where the value is known, read with the
+            // values from before the line as rs274 reads it: review 75 N1)
+            let value = self
+                .copied(w.expression, &mut None)
+                .or_else(|| self.linuxcnc_evaluated(w.expression));
+            if let Some(v) = value {
+                writes.values[g][i] = v.to_f64() * self.to_profile_units(false);
+            }
         }
-        if in_force && self.config.family == Family::LinuxCnc {
+        // (rs274 sets a line's parameters before it runs its codes: a write of the system
+        // the same line selects from another is loaded by that selection; review 75 N1,
+        // `G54` / `G55 #5241=-200` / `G0 X-650` runs at -850)
+        if in_force && linuxcnc && self.linuxcnc_selected_at != line {
             // (the system in force keeps its value until it is selected again from another:
             // not known here, the value written held for that selection)
             let pending = self
@@ -959,6 +980,24 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC selects G59.1-G59.3 (`code`), a system the profile does not give: the
+    /// positions under it are not known until a G54-G59 is selected again; the writes held
+    /// for the system left are its values from here ([`Checker::linuxcnc_reselected`]).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_other_system(&mut self, line: usize, code: &str) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost {
+            return;
+        }
+        self.linuxcnc_pending_applied();
+        if self.work.is_some() {
+            self.work = None;
+            self.travel_not(format!(
+                "from line {line} on: {code} selects a work system the profile does not give,                  until a G54-G59 is selected again"
+            ));
+        }
+    }
+
     /// The parameter writes of the system in force held for its next selection
     /// ([`Checker::linuxcnc_pending`]) take effect: its values from here on, where the
     /// system is still the one in force and the offsets are followed.
@@ -983,6 +1022,15 @@ impl Checker {
         if self.g10_followed(&writes, false) {
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, false);
+            // (the positions since the write were of an offset not known: the span of each
+            // axis now known starts again here, as at a G10 of it; review 75 N4: `G55` /
+            // `#5241=-300` / `G0 X-650` / `G54` / `G55` / `G0 X1000` runs at -750 and 700)
+            for a in 0..9 {
+                if writes.axes[from] & 1 << a != 0 {
+                    self.restart_span(a, false);
+                }
+            }
+            self.shifts.settle();
         }
     }
 
@@ -1023,6 +1071,28 @@ impl Checker {
                 (0..9).all(|i| writes.axes[g] & 1 << i == 0 || !writes.values[g][i].is_nan())
                     && writes.axes[g] >> 9 == 0
             })
+    }
+
+    /// LinuxCNC: a G10 L2/L20 of one system (P1-P6, or P0, the system in force) whose
+    /// values are not all known (an L20's: where the tool stands) in a program whose offsets
+    /// are followed: only the axes it names are not known from here on, the other axes of
+    /// that system keep theirs (rs274 writes only the axes named, interp_convert.cc
+    /// `convert_setup`; review 75 N1: `G55` / `G10 L20 P2 Y0` / `G0 X-900` runs at -1000).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_g10_axes(&self, writes: &Written, expression: bool) -> bool {
+        self.config.family == Family::LinuxCnc
+            && !expression
+            && !self.jumped
+            && !self.offsets_lost
+            && self.work_guessed.is_none()
+            && !self.work_run_on
+            && !self.offsets_written.moved
+            && writes.any()
+            && writes.unread.is_empty()
+            && writes.shifted == 0
+            && (0..6).all(|g| writes.axes[g] >> 9 == 0 && writes.maybe[g] == 0)
+            && (0..6).filter(|&g| writes.axes[g] != 0).count() == 1
     }
 
     /// Whether a G10's L or P is a #-expression whose value here may not be the one another
@@ -1119,6 +1189,17 @@ impl Checker {
                     51 if self.config.family != Family::Sinumerik => {
                         self.lose_offsets(line, &format!("{} mirrors the coordinates", w.token()))
                     }
+                    // LinuxCNC's G59.1-G59.3 (another system, not the profile's): the
+                    // positions under it are not known, G54-G59's values stay as they are,
+                    // a write of the system left held loaded (interp_convert.cc
+                    // `convert_coordinate_system`; review 75 N1: `G55` / `#5241=-200` /
+                    // `G59.1` / `G55` / `G0 X-650` runs at -850)
+                    59 if self.config.family == Family::LinuxCnc
+                        && v.normalized().scale == 1
+                        && matches!(v.normalized().mantissa, 591..=593) =>
+                    {
+                        self.linuxcnc_other_system(line, &w.token())
+                    }
                     // (another offset selected: no G54-G59 position moved, review 59a c13)
                     54..=59 => self.offsets_rewritten(
                         line,
@@ -1163,7 +1244,9 @@ impl Checker {
                         }
                         self.offset_writer(&writes, false);
                     }
-                    if !self.g10_followed(&writes, expression || local) {
+                    if !self.g10_followed(&writes, expression || local)
+                        && !self.linuxcnc_g10_axes(&writes, expression || local)
+                    {
                         self.offsets_rewritten(line, "G10 sets offsets");
                     }
                 }
@@ -1181,8 +1264,8 @@ impl Checker {
                 // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
                 // List of G Codes): no machine coordinates, no work system (G15 H selects it)
                 53..=59 if self.config.family == Family::Okuma && !self.config.modal.lap => {}
-                54..=57 => self.work_selected(v.trunc()),
-                58 | 59 if !sinumerik => self.work_selected(v.trunc()),
+                54..=57 => self.work_selected(v.trunc(), line),
+                58 | 59 if !sinumerik => self.work_selected(v.trunc(), line),
                 // an Okuma mill's G11 (parallel and rotation shift), G51 (scaling), G62
                 // (mirror image), G69 (three-dimensional conversion): frame_bits
                 11 | 51 | 62 | 69 if self.config.family == Family::Okuma => self.lose_offsets(

@@ -1063,6 +1063,10 @@ pub struct Checker {
     /// and does nothing where the system selected is the one in force): held here until
     /// then ([`Checker::linuxcnc_reselected`]).
     linuxcnc_pending: Option<Box<(usize, u16, [f64; 9])>>,
+    /// LinuxCNC: the line of the last G54-G59 selected from another system in force: a
+    /// parameter write of that system on the same line is loaded by it (rs274 sets a line's
+    /// parameters before its codes run).
+    linuxcnc_selected_at: usize,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1735,6 +1739,7 @@ impl Checker {
             offsets_lost: false,
             offsets_written: limits::Written::default(),
             linuxcnc_pending: None,
+            linuxcnc_selected_at: 0,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,
