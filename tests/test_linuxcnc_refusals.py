@@ -1929,35 +1929,42 @@ def test_a_parameter_write_of_the_system_in_force_holds_at_its_next_selection(
         assert last.startswith("-5080.0000" if line else "0.0000"), out
 
 
-# (program after WO_HEAD, the line of the TG601 or None, what rs274 loads for G55's X before
-# the program's last move: SET_G5X_OFFSET(2, ...); rs274's own offsets are its var file's
+# (program after WO_HEAD, the line of the TG601 or None, the system rs274 loads last before
+# the program's last move and its X: SET_G5X_OFFSET(2, ...) for G55; rs274's own offsets are its var file's
 # zeros, the profile's G55 X is -100: `G0 X-650` runs at -750 (inside) under it, at -850
 # (beyond) after a write of -200 loaded)
 WRITE_LOADED = [
     # the line's parameter is set before its G55 runs (rs274 sets a line's parameters
     # before its codes): selected from G54, the write is loaded
-    ("G54\nG55 #5241=-200\nG0 X-650", 4, "-5080.0000"),
-    ("G54\nG55 #5241=[-100-100]\nG0 X-650", 4, "-5080.0000"),
+    ("G54\nG55 #5241=-200\nG0 X-650", 4, "2, -5080.0000"),
+    ("G54\nG55 #5241=[-100-100]\nG0 X-650", 4, "2, -5080.0000"),
     # ... but G55 again under G55 loads nothing: the old value (X not known: silent)
-    ("G55\nG55 #5241=-200\nG0 X-650", None, "0.0000"),
+    ("G55\nG55 #5241=-200\nG0 X-650", None, "2, 0.0000"),
     # a value known from an expression or a parameter
-    ("G55\n#5241=[-200]\nG54\nG55\nG0 X-650", 6, "-5080.0000"),
-    ("#1=-200\nG55\n#5241=#1\nG54\nG55\nG0 X-650", 7, "-5080.0000"),
+    ("G55\n#5241=[-200]\nG54\nG55\nG0 X-650", 6, "2, -5080.0000"),
+    ("#1=-200\nG55\n#5241=#1\nG54\nG55\nG0 X-650", 7, "2, -5080.0000"),
     # G10 L2 P0 (the system in force) and G10 L20 load every axis of it
-    ("G55\n#5241=-200\nG10 L2 P0 Y0\nG0 X-650", 5, "-5080.0000"),
-    ("G55\n#5241=-200\nG10 L20 P2 Y0\nG0 X-650", 5, "-5080.0000"),
-    ("G55\nG10 L2 P0 X-200\nG0 X-650", 4, "-200.0000"),
-    ("G54\nG10 L2 P0 X-200\nG55\nG0 X-650", None, "0.0000"),
+    ("G55\n#5241=-200\nG10 L2 P0 Y0\nG0 X-650", 5, "2, -5080.0000"),
+    ("G55\n#5241=-200\nG10 L20 P2 Y0\nG0 X-650", 5, "2, -5080.0000"),
+    ("G55\nG10 L2 P0 X-200\nG0 X-650", 4, "2, -200.0000"),
+    ("G54\nG10 L2 P0 X-200\nG55\nG0 X-650", None, "2, 0.0000"),
     # an L20 leaves the axes it names not known, the others as they were
-    ("G55\nG10 L20 P2 Y0\nG0 X-900", 4, "0.0000"),
-    ("G55\nG10 L20 P2 X0\nG0 X-900", None, "0.0000"),
+    ("G55\nG10 L20 P2 Y0\nG0 X-900", 4, "2, 0.0000"),
+    ("G55\nG10 L20 P2 X0\nG0 X-900", None, "2, 0.0000"),
     # G59.1-G59.3 select another system: G55 selected again loads the write
-    ("G55\n#5241=-200\nG59.1\nG55\nG0 X-650", 6, "-5080.0000"),
-    ("G59.1\nG0 X-900\nG55\nG0 X-700", 5, "0.0000"),
+    ("G55\n#5241=-200\nG59.1\nG55\nG0 X-650", 6, "2, -5080.0000"),
+    ("G59.1\nG0 X-900\nG55\nG0 X-700", 5, "2, 0.0000"),
     # a span from before the write's loading does not run across it (review 75 N4)
-    ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1000", None, "-7620.0000"),
-    ("G55\n#5241=300\nG0 X850\nG54\nG55\nG0 X-1000", None, "7620.0000"),
-    ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1100", 7, "-7620.0000"),
+    ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1000", None, "2, -7620.0000"),
+    ("G55\n#5241=300\nG0 X850\nG54\nG55\nG0 X-1000", None, "2, 7620.0000"),
+    ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1100", 7, "2, -7620.0000"),
+    # M72 restores the system M70 saved (SET_G5X_OFFSET(1) at the M72), before the block's
+    # own G54-G59, which rs274 2.9.0 drops (`M72 G55` runs under G54)
+    ("G54\nM70\nG55\nM72\nG0 X-700", None, "1, 0.0000"),
+    ("G54\nM70\nG56\nM72 G55\nG0 X-700", None, "1, 0.0000"),
+    ("G55\nM70\nG54\nM72\nG0 X-700", 6, "2, 0.0000"),
+    # ... and a selection from another: the write held for G55 is loaded at the next G55
+    ("G54\nM70\nG55\n#5241=-200\nM72\nG55\nG0 X-650", 8, "2, -5080.0000"),
 ]
 
 
@@ -1975,4 +1982,4 @@ def test_a_work_offset_written_is_judged_where_rs274_loads_it(tmp_path, body, li
     out = rs274_output(tmp_path, text)
     assert "PROGRAM_END" in out, out
     before = out.rsplit("STRAIGHT_TRAVERSE(", 1)[0]
-    assert before.rsplit("SET_G5X_OFFSET(2, ", 1)[1].startswith(loaded), out
+    assert before.rsplit("SET_G5X_OFFSET(", 1)[1].startswith(loaded), out

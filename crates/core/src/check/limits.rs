@@ -980,6 +980,75 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the block's M70 or M73 saves the work system in force (before the block's
+    /// own G54-G59 runs), its M71 makes the save not valid, its M72 restores the one saved
+    /// (rs274: `G54` / `M70` / `G55` / `M72` / `G0 X-700` runs under G54, SET_G5X_OFFSET(1)
+    /// at the M72; a write of the system restored held for it is loaded there as at a
+    /// selection, review 75 N1). A save in a condition, a loop or a definition, or one not
+    /// known, leaves the system after the M72 not known. Whether the block has an M72 with a
+    /// G54-G59 of its own: rs274 2.9.0 drops that selection (`M72 G55` runs under the system
+    /// restored), so the system after it is taken as not known.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_work_saved(&mut self, b: &BlockView<'_>) -> bool {
+        let mut selects = false;
+        let mut m7 = None;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.index.is_empty()) else {
+                if w.letter == b'M' {
+                    // (an M code of a value not known: any of them)
+                    m7 = Some(0);
+                }
+                continue;
+            };
+            match (w.letter, v.to_f64()) {
+                (b'M', m) if (70.0..=73.0).contains(&m) && v.is_whole() => m7 = Some(m as i64),
+                (b'G', g) if (54.0..60.0).contains(&g) => selects = true,
+                _ => {}
+            }
+        }
+        let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
+        match m7 {
+            Some(70 | 73) => self.linuxcnc_work_save = Some(self.work.filter(|_| in_order)),
+            Some(71) => self.linuxcnc_work_save = None,
+            Some(72) => {
+                let saved = self.linuxcnc_work_save.flatten().filter(|_| in_order);
+                match saved {
+                    Some(g) if self.work != Some(g) && !self.offsets_lost => {
+                        self.work_selected(g, b.line)
+                    }
+                    Some(_) => {}
+                    None => self.linuxcnc_restore_selected(b.line),
+                }
+                return selects;
+            }
+            Some(_) => {
+                self.linuxcnc_work_save = Some(None);
+                if in_order {
+                    self.linuxcnc_restore_selected(b.line);
+                }
+            }
+            None => {}
+        }
+        false
+    }
+
+    /// LinuxCNC: an M72 restores a work system not known here (or drops its block's own
+    /// G54-G59): the positions after it are not judged until a G54-G59 is selected again.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_restore_selected(&mut self, line: usize) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost || self.work.is_none() {
+            return;
+        }
+        self.linuxcnc_pending = None;
+        self.work = None;
+        self.travel_not(format!(
+            "from line {line} on: M72 restores a work system not known here, until a G54-G59 \
+             is selected again"
+        ));
+    }
+
     /// LinuxCNC selects G59.1-G59.3 (`code`), a system the profile does not give: the
     /// positions under it are not known until a G54-G59 is selected again; the writes held
     /// for the system left are its values from here ([`Checker::linuxcnc_reselected`]).
@@ -1171,6 +1240,11 @@ impl Checker {
         let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
         let lost = self.offsets_lost;
+        // (LinuxCNC's M70-M73 save and restore the work system, before the block's own
+        // G54-G59 in the order of execution)
+        let restored = self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 && {
+            self.linuxcnc_work_saved(b)
+        };
         // (only a G code selects, sets or suppresses an offset)
         let g_words = if self.letters & bit(b'G') != 0 {
             b.words
@@ -1325,6 +1399,9 @@ impl Checker {
                 }
                 _ => {}
             }
+        }
+        if restored && self.work.is_some() {
+            self.linuxcnc_restore_selected(line);
         }
         one_shot |= self.frames(b);
         // (a program that shifts or sets the coordinates changes them where it is called)

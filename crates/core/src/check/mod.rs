@@ -1067,6 +1067,9 @@ pub struct Checker {
     /// parameter write of that system on the same line is loaded by it (rs274 sets a line's
     /// parameters before its codes run).
     linuxcnc_selected_at: usize,
+    /// LinuxCNC: the work system (54-59) an M70 or M73 saved for an M72 (None inside: not
+    /// known; None: no save valid).
+    linuxcnc_work_save: Option<Option<i64>>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1740,6 +1743,7 @@ impl Checker {
             offsets_written: limits::Written::default(),
             linuxcnc_pending: None,
             linuxcnc_selected_at: 0,
+            linuxcnc_work_save: None,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,
