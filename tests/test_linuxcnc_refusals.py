@@ -1482,7 +1482,21 @@ LATER_ENDS = [
     # (review 62b LE1: TG404 at the G2 before lcnc63; X1 Y1 X2 was TG131)
     "o300 call\nG2 Z0.5\nM2\no300 sub\nM8\nM2\no300 endsub",
     "o300 call\nG21 G17 G90 F100\nG2 Z0.5\nX1 Y1 X2\nM2\no300 sub\nM8\nM2\no300 endsub",
+    # a line rs274 could not read after such a call, of a body written later or read before:
+    # never read (review 63-lcnc63 N1: the body read before kept its TG100)
+    "o300 call\nG1 X\nG0 Z1\nM2\no300 sub\nM8\nM2\no300 endsub",
+    "o300 sub\nM8\nM2\no300 endsub\no300 call\nG1 X\nG0 Z1\nM2",
+    "o300 sub\nM8\nM2\no300 endsub\no300 call\nG1 X1 (not closed\nM2",
 ]
+
+
+# ... but one after a call of a body that may return (its M2 in a condition) is read: rs274
+# reads it where #1 is 0 and refuses it
+def test_a_line_not_read_after_a_call_that_may_return_is_said(tmp_path):
+    text = program("o300 sub\no1 if [#1 GT 0]\nM2\no1 endif\no300 endsub\no300 call\n"
+                   "G1 X\nM2")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG100", 9)], text
+    assert "PROGRAM_END" not in rs274_output(tmp_path, text)
 
 
 def test_lines_after_a_call_of_a_later_definition_that_returns_are_judged(tmp_path):

@@ -852,6 +852,10 @@ pub struct Checker {
     /// lines up to its end (a named parameter not yet set, a definition after its call) read
     /// this, not `ended_line`.
     surely_ended: bool,
+    /// LinuxCNC: the line of the main program's first call surely run of a body read before
+    /// it that surely ends the program (0: none): the lines after it up to the main program's
+    /// own end are never read.
+    linuxcnc_call_ended_at: usize,
     /// LinuxCNC: the depth of the main program's open conditions and loops at an M02/M30
     /// inside one: the lines after it in its block run only where it did not run, and never
     /// in the rest of its branch; so they are taken as after the end until the block closes
@@ -1659,6 +1663,7 @@ impl Checker {
             skipped_end: false,
             end_skippable: false,
             surely_ended: false,
+            linuxcnc_call_ended_at: 0,
             linuxcnc_end_depth: None,
             after_end_reported: false,
             closed: false,
