@@ -1979,6 +1979,16 @@ WRITE_LOADED = [
     ("G55\nM70\nG54\nM72\nG0 X-700", 6, "2, 0.0000"),
     # ... and a selection from another: the write held for G55 is loaded at the next G55
     ("G54\nM70\nG55\n#5241=-200\nM72\nG55\nG0 X-650", 8, "2, -5080.0000"),
+    # a condition or loop of the main program: the positions inside not judged, the system
+    # back after it where nothing inside touched the offsets (before: every offset lost)
+    ("G55\no1 if [#1 GT 0]\nG0 X-900\no1 endif\nG0 X-700", 6, "2, 0.0000"),
+    ("G55\n#1=0\no1 while [#1 LT 2]\nG0 X-600\n#1=[#1+1]\no1 endwhile\nG0 X-700", 8,
+     "2, 0.0000"),
+    ("G55\n#5241=-200\no1 if [#1 GT 0]\nM0\no1 endif\nG54\nG55\nG0 X-650", 9,
+     "2, -5080.0000"),
+    # ... a selection or a write inside: lost, as before
+    ("G55\no1 if [#1 GT 0]\nG54\no1 endif\nG0 X-700", None, "2, 0.0000"),
+    ("G55\no1 if [#1 GT 0]\n#5241=0\no1 endif\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
 ]
 
 

@@ -911,6 +911,9 @@ impl Checker {
         if self.units_merged.is_some() {
             self.units_merged_stopped();
         }
+        if self.linuxcnc_flow_work.is_some() {
+            self.linuxcnc_flow_touched(line);
+        }
         let axis = g
             .zip(number)
             .and_then(|(_, n)| self.variable_axis((n as usize - 5221) % 20))
@@ -1047,6 +1050,70 @@ impl Checker {
             "from line {line} on: M72 restores a work system not known here, until a G54-G59 \
              is selected again"
         ));
+    }
+
+    /// LinuxCNC: an o-word line of the main program's conditions and loops alone (`if`,
+    /// `elseif`, `else`, `endif`, `do`, `while`, `endwhile`, `repeat`, `endrepeat`): the
+    /// offsets are not lost there as at a jump or call, the positions inside the blocks open
+    /// are not judged (the system in force may be another where a line inside runs and one
+    /// before it not), and where the last closes, the system before is back, where no line
+    /// inside touched the offsets ([`Checker::linuxcnc_flow_touched`]; review 75 N1: `G55` /
+    /// `#5241=-200` / `o1 if [#1 GT 0]` / `M0` / `o1 endif` / `G54` / `G55` / `G0 X-650` runs
+    /// at -850). Whether the line is one.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_flow_offsets(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.family != Family::LinuxCnc
+            || self.config.work_offsets.is_empty()
+            || self.offsets_lost
+            || self.open_definition.is_some()
+            || b.statements.is_empty()
+        {
+            return false;
+        }
+        let flow = b.statements.iter().all(|&(_, kind, text)| {
+            kind == crate::statement::Kind::Flow
+                && crate::statement::o_keyword(text).is_some_and(|k| {
+                    matches!(
+                        k.as_slice(),
+                        b"if"
+                            | b"elseif"
+                            | b"else"
+                            | b"endif"
+                            | b"do"
+                            | b"while"
+                            | b"endwhile"
+                            | b"repeat"
+                            | b"endrepeat"
+                    )
+                })
+        });
+        if !flow {
+            return false;
+        }
+        if self.linuxcnc_open_flow.is_empty() {
+            if let Some(work) = self.linuxcnc_flow_work.take() {
+                self.work = work;
+            }
+        } else if self.linuxcnc_flow_work.is_none() {
+            self.linuxcnc_flow_work = Some(self.work);
+            self.work = None;
+        }
+        true
+    }
+
+    /// LinuxCNC: a line inside the main program's condition or loop that may change the
+    /// offsets (a G10, G52, G92, G54-G59, M70-M73 or a work offset's parameter write, `why`):
+    /// it may run or not, so the offsets are lost from here, as at a jump
+    /// ([`Checker::linuxcnc_flow_offsets`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_flow_touched(&mut self, line: usize) {
+        self.linuxcnc_flow_work = None;
+        self.offsets_rewritten(
+            line,
+            "a work offset's code in a condition or loop the checker does not follow",
+        );
     }
 
     /// LinuxCNC selects G59.1-G59.3 (`code`), a system the profile does not give: the
@@ -1240,6 +1307,18 @@ impl Checker {
         let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
         let lost = self.offsets_lost;
+        if self.linuxcnc_flow_work.is_some() {
+            let touches = b.words.iter().enumerate().any(|(i, w)| match w.letter {
+                b'G' => self.readable[i].is_none_or(|v| {
+                    matches!(v.trunc(), 10 | 52 | 92 | 54..=59) || !v.is_whole() && v.trunc() == 92
+                }),
+                b'M' => self.readable[i].is_none_or(|v| matches!(v.trunc(), 70..=73)),
+                _ => false,
+            });
+            if touches {
+                self.linuxcnc_flow_touched(line);
+            }
+        }
         // (LinuxCNC's M70-M73 save and restore the work system, before the block's own
         // G54-G59 in the order of execution)
         let restored = self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 && {

@@ -1074,6 +1074,10 @@ pub struct Checker {
     /// LinuxCNC: the work system (54-59) an M70 or M73 saved for an M72 (None inside: not
     /// known; None: no save valid).
     linuxcnc_work_save: Option<Option<i64>>,
+    /// LinuxCNC: the work system in force where the main program's condition or loop open
+    /// began (Some while one is open and no line in it touched the offsets): the positions
+    /// inside are not judged, and the system is back where the last one closes.
+    linuxcnc_flow_work: Option<Option<i64>>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1749,6 +1753,7 @@ impl Checker {
             linuxcnc_pending: None,
             linuxcnc_selected_at: 0,
             linuxcnc_work_save: None,
+            linuxcnc_flow_work: None,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,
@@ -2562,7 +2567,9 @@ impl Checker {
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
-                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                if !self.linuxcnc_flow_offsets(b) {
+                    self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                }
             }
             return;
         }
