@@ -962,6 +962,10 @@ impl Checker {
             }
             pending.1 |= 1 << i;
             pending.2[i] = writes.values[g][i];
+            // (until then the system runs under its value before the write: nothing written
+            // now; review 76 F1, `G55` / `#5241=-150` / `G0 X-700` runs at -800 under the
+            // profile's -100)
+            writes.axes[g] &= !(1 << i);
             writes.values[g][i] = f64::NAN;
         }
         if !writes.values[g][i].is_nan() && !self.g10_followed(&writes, false) {
@@ -1129,7 +1133,8 @@ impl Checker {
         if self.work.is_some() {
             self.work = None;
             self.travel_not(format!(
-                "from line {line} on: {code} selects a work system the profile does not give,                  until a G54-G59 is selected again"
+                "from line {line} on: {code} selects a work system the profile does not give, \
+                 until a G54-G59 is selected again"
             ));
         }
     }

@@ -144,8 +144,11 @@ impl Checker {
         // sub` / `M2` / `o300 endsub` / `o300 call` / `G1 X` to its end, as the findings of
         // the other lines there are dropped, and as after a call of such a body written
         // later; review 63-lcnc63 N1)
+        // (a definition after it is read where the program calls it: its lines are said;
+        // review 76 F3)
         if self.linuxcnc_call_ended_at != 0
             && self.ended_line <= self.linuxcnc_call_ended_at
+            && self.open_definition.is_none()
             && self.config.family == Family::LinuxCnc
         {
             return;
