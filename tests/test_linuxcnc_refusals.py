@@ -1955,6 +1955,9 @@ WRITE_LOADED = [
     ("G55\n#5241=-200\nG55\nG0 X-700", 5, "2, 0.0000"),
     ("G55\n#5241=-200\nG0 X-700", 4, "2, 0.0000"),
     ("G55\n#5241=-150\nG0 X-700\nG54\nG55\nG0 X850", 4, "2, -3810.0000"),
+    # a write by an index not known may replace the one held: not known (review 76 N2)
+    ("G55\n#5241=-200\n#[5241]=0\nG54\nG55\nG0 X-650", None, "2, 0.0000"),
+    ("G55\n#5241=-200\n#[5200+41]=0\nG54\nG55\nG0 X-650", None, "2, 0.0000"),
     # a value known from an expression or a parameter
     ("G55\n#5241=[-200]\nG54\nG55\nG0 X-650", 6, "2, -5080.0000"),
     ("#1=-200\nG55\n#5241=#1\nG54\nG55\nG0 X-650", 7, "2, -5080.0000"),

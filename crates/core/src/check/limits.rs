@@ -920,6 +920,15 @@ impl Checker {
             .filter(|&i| i < 9);
         let (Some(g), Some(i)) = (g, axis) else {
             let writes = Written::unknown_of(g);
+            // (a write held for the system in force that this one may replace: not known
+            // either; review 76 N2, `#5241=-200` / `#[5241]=0` under G55 loads 0)
+            if self
+                .linuxcnc_pending
+                .as_ref()
+                .is_some_and(|p| g.is_none_or(|g| g == p.0))
+            {
+                self.linuxcnc_pending = None;
+            }
             // (an index not known may name any variable, `#[#14]=#0` of a macro's table:
             // the spans read on, as before)
             if number.is_some() {
