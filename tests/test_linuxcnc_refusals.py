@@ -1955,6 +1955,14 @@ WRITE_LOADED = [
     ("G55\n#5241=-200\nG55\nG0 X-700", 5, "2, 0.0000"),
     ("G55\n#5241=-200\nG0 X-700", 4, "2, 0.0000"),
     ("G55\n#5241=-150\nG0 X-700\nG54\nG55\nG0 X850", 4, "2, -3810.0000"),
+    # a value not known loaded at the selection: not known (review 76 F4); a selection from a
+    # system not known may load the line's write or not (review 76 F6)
+    ("G55\n#5241=#1\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
+    ("G55\n#5241=#1\nG10 L2 P2 Y0\nG0 X-700", None, "2, 0.0000"),
+    ("G55 #5241=0\nG0 X-700", None, "2, 0.0000"),
+    ("G59.1\nG55 #5241=0\nG0 X-700", None, "2, 0.0000"),
+    # G7 (X a diameter) in a condition: the offsets lost there (review 76 F5)
+    ("G55\no1 if [#1 EQ 0]\nG7\no1 endif\nG0 X-700", None, "2, 0.0000"),
     # a write by an index not known may replace the one held: not known (review 76 N2)
     ("G55\n#5241=-200\n#[5241]=0\nG54\nG55\nG0 X-650", None, "2, 0.0000"),
     ("G55\n#5241=-200\n#[5200+41]=0\nG54\nG55\nG0 X-650", None, "2, 0.0000"),

@@ -594,8 +594,12 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64, line: usize) {
-        if self.work.is_some_and(|w| w != g) && self.config.family == Family::LinuxCnc {
+        if self.work != Some(g) && self.config.family == Family::LinuxCnc {
+            // (from a system not known, not G59.1-G59.3: it may be this one, the line's
+            // write loaded or not; review 76 F6)
             self.linuxcnc_selected_at = line;
+            self.linuxcnc_selected_maybe =
+                self.work.is_none() && !std::mem::take(&mut self.linuxcnc_other_in_force);
         }
         if self.linuxcnc_pending.is_some() {
             self.linuxcnc_reselected(g);
@@ -960,7 +964,11 @@ impl Checker {
         // (rs274 sets a line's parameters before it runs its codes: a write of the system
         // the same line selects from another is loaded by that selection; review 75 N1,
         // `G54` / `G55 #5241=-200` / `G0 X-650` runs at -850)
-        if in_force && linuxcnc && self.linuxcnc_selected_at != line {
+        if in_force && linuxcnc && self.linuxcnc_selected_at == line && self.linuxcnc_selected_maybe
+        {
+            // (selected from a system not known: loaded or not, not known either way)
+            writes.values[g][i] = f64::NAN;
+        } else if in_force && linuxcnc && self.linuxcnc_selected_at != line {
             // (the system in force keeps its value until it is selected again from another:
             // not known here, the value written held for that selection)
             let pending = self
@@ -1139,6 +1147,7 @@ impl Checker {
             return;
         }
         self.linuxcnc_pending_applied();
+        self.linuxcnc_other_in_force = true;
         if self.work.is_some() {
             self.work = None;
             self.travel_not(format!(
@@ -1163,11 +1172,20 @@ impl Checker {
         }
         let mut writes = Written::default();
         writes.values[from] = [f64::NAN; 9];
+        let mut unknown = writes.clone();
         for (i, &v) in values.iter().enumerate() {
             if axes & 1 << i != 0 && !v.is_nan() {
                 writes.axes[from] |= 1 << i;
                 writes.values[from][i] = v;
+            } else if axes & 1 << i != 0 {
+                unknown.axes[from] |= 1 << i;
             }
+        }
+        // (a value not known loaded: that axis is not known from here, its span running on
+        // as before; review 76 F4, `G55` / `#5241=#1` / `G54` / `G55` / `G0 X-700` loads #1)
+        if unknown.any() {
+            self.offsets_written.then(&unknown);
+            self.offset_writer(&unknown, false);
         }
         if self.g10_followed(&writes, false) {
             self.offsets_written.then(&writes);
@@ -1324,7 +1342,9 @@ impl Checker {
         if self.linuxcnc_flow_work.is_some() {
             let touches = b.words.iter().enumerate().any(|(i, w)| match w.letter {
                 b'G' => self.readable[i].is_none_or(|v| {
-                    matches!(v.trunc(), 10 | 52 | 92 | 54..=59) || !v.is_whole() && v.trunc() == 92
+                    // (G7/G8, a diameter mode, read as the positions' scale: review 76 F5)
+                    matches!(v.trunc(), 7 | 8 | 10 | 52 | 92 | 54..=59)
+                        || !v.is_whole() && v.trunc() == 92
                 }),
                 b'M' => self.readable[i].is_none_or(|v| matches!(v.trunc(), 70..=73)),
                 _ => false,

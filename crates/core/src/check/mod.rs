@@ -1071,6 +1071,10 @@ pub struct Checker {
     /// parameter write of that system on the same line is loaded by it (rs274 sets a line's
     /// parameters before its codes run).
     linuxcnc_selected_at: usize,
+    /// LinuxCNC: that selection was from a system not known (it may have been the same).
+    linuxcnc_selected_maybe: bool,
+    /// LinuxCNC: G59.1-G59.3 in force (the work system not known, surely none of G54-G59).
+    linuxcnc_other_in_force: bool,
     /// LinuxCNC: the work system (54-59) an M70 or M73 saved for an M72 (None inside: not
     /// known; None: no save valid).
     linuxcnc_work_save: Option<Option<i64>>,
@@ -1752,6 +1756,8 @@ impl Checker {
             offsets_written: limits::Written::default(),
             linuxcnc_pending: None,
             linuxcnc_selected_at: 0,
+            linuxcnc_selected_maybe: false,
+            linuxcnc_other_in_force: false,
             linuxcnc_work_save: None,
             linuxcnc_flow_work: None,
             g10_expression: 0,
