@@ -1941,9 +1941,9 @@ def test_a_parameter_write_of_the_system_in_force_holds_at_its_next_selection(
 
 
 # (program after WO_HEAD, the line of the TG601 or None, the system rs274 loads last before
-# the program's last move and its X: SET_G5X_OFFSET(2, ...) for G55; rs274's own offsets are its var file's
-# zeros, the profile's G55 X is -100: `G0 X-650` runs at -750 (inside) under it, at -850
-# (beyond) after a write of -200 loaded)
+# the program's last move and its X: SET_G5X_OFFSET(2, ...) for G55; rs274's own offsets are
+# its var file's zeros, the profile's G55 X is -100: `G0 X-650` runs at -750 (inside) under
+# it, at -850 (beyond) after a write of -200 loaded)
 WRITE_LOADED = [
     # the line's parameter is set before its G55 runs (rs274 sets a line's parameters
     # before its codes): selected from G54, the write is loaded
