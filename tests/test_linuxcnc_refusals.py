@@ -1960,6 +1960,7 @@ WRITE_LOADED = [
     ("G55\n#5241=#1\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
     ("G55\n#5241=#1\nG10 L2 P2 Y0\nG0 X-700", None, "2, 0.0000"),
     ("G55 #5241=0\nG0 X-700", None, "2, 0.0000"),
+    ("G55 #5241=100\nG0 X500\nG54\nG55\nG0 X850", 6, "2, 2540.0000"),
     ("G59.1\nG55 #5241=0\nG0 X-700", None, "2, 0.0000"),
     # G7 (X a diameter) in a condition: the offsets lost there (review 76 F5)
     ("G55\no1 if [#1 EQ 0]\nG7\no1 endif\nG0 X-700", None, "2, 0.0000"),

@@ -966,7 +966,16 @@ impl Checker {
         // `G54` / `G55 #5241=-200` / `G0 X-650` runs at -850)
         if in_force && linuxcnc && self.linuxcnc_selected_at == line && self.linuxcnc_selected_maybe
         {
-            // (selected from a system not known: loaded or not, not known either way)
+            // (selected from a system not known: loaded or not, not known here; the value
+            // written held for the next selection from another all the same, review 76 F7)
+            let pending = self
+                .linuxcnc_pending
+                .get_or_insert_with(|| Box::new((g, 0, [f64::NAN; 9])));
+            if pending.0 != g {
+                **pending = (g, 0, [f64::NAN; 9]);
+            }
+            pending.1 |= 1 << i;
+            pending.2[i] = writes.values[g][i];
             writes.values[g][i] = f64::NAN;
         } else if in_force && linuxcnc && self.linuxcnc_selected_at != line {
             // (the system in force keeps its value until it is selected again from another:
