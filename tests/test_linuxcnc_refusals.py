@@ -1482,7 +1482,21 @@ LATER_ENDS = [
     # (review 62b LE1: TG404 at the G2 before lcnc63; X1 Y1 X2 was TG131)
     "o300 call\nG2 Z0.5\nM2\no300 sub\nM8\nM2\no300 endsub",
     "o300 call\nG21 G17 G90 F100\nG2 Z0.5\nX1 Y1 X2\nM2\no300 sub\nM8\nM2\no300 endsub",
+    # a line rs274 could not read after such a call, of a body written later or read before:
+    # never read (review 63-lcnc63 N1: the body read before kept its TG100)
+    "o300 call\nG1 X\nG0 Z1\nM2\no300 sub\nM8\nM2\no300 endsub",
+    "o300 sub\nM8\nM2\no300 endsub\no300 call\nG1 X\nG0 Z1\nM2",
+    "o300 sub\nM8\nM2\no300 endsub\no300 call\nG1 X1 (not closed\nM2",
 ]
+
+
+# ... but one after a call of a body that may return (its M2 in a condition) is read: rs274
+# reads it where #1 is 0 and refuses it
+def test_a_line_not_read_after_a_call_that_may_return_is_said(tmp_path):
+    text = program("o300 sub\no1 if [#1 GT 0]\nM2\no1 endif\no300 endsub\no300 call\n"
+                   "G1 X\nM2")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG100", 9)], text
+    assert "PROGRAM_END" not in rs274_output(tmp_path, text)
 
 
 def test_lines_after_a_call_of_a_later_definition_that_returns_are_judged(tmp_path):
@@ -1973,9 +1987,6 @@ WRITE_IN_FORCE = [
     # a G10 L2 of the system in force, of another axis: the write holds from there
     ("G55\n#5241=-200\nG10 L2 P2 Y0\nG0 X-700", 5),
     ("G55\n#5241=-200\nG10 L2 P3 Y0\nG54\nG55\nG0 X-700", 7),
-    # the system in force selected again: nothing changes, the old value holds (-800)
-    ("G55\n#5241=-200\nG55\nG0 X-700", None),
-    ("G55\n#5241=-200\nG0 X-700", None),
     # rewritten before the selection: by a G10 L2 of that axis, by another write
     ("G55\n#5241=-200\nG10 L2 P2 X0\nG54\nG55\nG0 X-700", None),
     ("G55\n#5241=-200\n#5241=0\nG54\nG55\nG0 X-700", None),
@@ -2002,3 +2013,94 @@ def test_a_parameter_write_of_the_system_in_force_holds_at_its_next_selection(
         before = out.split("STRAIGHT_TRAVERSE(-700.0000")[0]
         last = before.rsplit("SET_G5X_OFFSET(2, ", 1)[1]
         assert last.startswith("-5080.0000" if line else "0.0000"), out
+
+
+# (program after WO_HEAD, the line of the TG601 or None, the system rs274 loads last before
+# the program's last move and its X: SET_G5X_OFFSET(2, ...) for G55; rs274's own offsets are
+# its var file's zeros, the profile's G55 X is -100: `G0 X-650` runs at -750 (inside) under
+# it, at -850 (beyond) after a write of -200 loaded)
+WRITE_LOADED = [
+    # the line's parameter is set before its G55 runs (rs274 sets a line's parameters
+    # before its codes): selected from G54, the write is loaded
+    ("G54\nG55 #5241=-200\nG0 X-650", 4, "2, -5080.0000"),
+    ("G54\nG55 #5241=[-100-100]\nG0 X-650", 4, "2, -5080.0000"),
+    # ... but G55 again under G55 loads nothing: the old value holds (-750 inside, -800
+    # beyond: review 76 F1, it was taken as not known)
+    ("G55\nG55 #5241=-200\nG0 X-650", None, "2, 0.0000"),
+    ("G55\n#5241=-200\nG55\nG0 X-700", 5, "2, 0.0000"),
+    ("G55\n#5241=-200\nG0 X-700", 4, "2, 0.0000"),
+    ("G55\n#5241=-150\nG0 X-700\nG54\nG55\nG0 X850", 4, "2, -3810.0000"),
+    # a value not known loaded at the selection: not known (review 76 F4); a selection from a
+    # system not known may load the line's write or not (review 76 F6)
+    ("G55\n#5241=#1\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
+    ("G55\n#5241=#1\nG10 L2 P2 Y0\nG0 X-700", None, "2, 0.0000"),
+    ("G55 #5241=0\nG0 X-700", None, "2, 0.0000"),
+    ("G55 #5241=100\nG0 X500\nG54\nG55\nG0 X850", 6, "2, 2540.0000"),
+    ("G59.1\nG55 #5241=0\nG0 X-700", None, "2, 0.0000"),
+    # G7 (X a diameter) in a condition: the offsets lost there (review 76 F5)
+    ("G55\no1 if [#1 EQ 0]\nG7\no1 endif\nG0 X-700", None, "2, 0.0000"),
+    # a write by an index not known may replace the one held: not known (review 76 N2)
+    ("G55\n#5241=-200\n#[5241]=0\nG54\nG55\nG0 X-650", None, "2, 0.0000"),
+    ("G55\n#5241=-200\n#[5200+41]=0\nG54\nG55\nG0 X-650", None, "2, 0.0000"),
+    # a value known from an expression or a parameter
+    ("G55\n#5241=[-200]\nG54\nG55\nG0 X-650", 6, "2, -5080.0000"),
+    ("#1=-200\nG55\n#5241=#1\nG54\nG55\nG0 X-650", 7, "2, -5080.0000"),
+    # G10 L2 P0 (the system in force) and G10 L20 load every axis of it
+    ("G55\n#5241=-200\nG10 L2 P0 Y0\nG0 X-650", 5, "2, -5080.0000"),
+    ("G55\n#5241=-200\nG10 L20 P2 Y0\nG0 X-650", 5, "2, -5080.0000"),
+    ("G55\nG10 L2 P0 X-200\nG0 X-650", 4, "2, -200.0000"),
+    ("G54\nG10 L2 P0 X-200\nG55\nG0 X-650", None, "2, 0.0000"),
+    # an L20 leaves the axes it names not known, the others as they were
+    ("G55\nG10 L20 P2 Y0\nG0 X-900", 4, "2, 0.0000"),
+    ("G55\nG10 L20 P2 X0\nG0 X-900", None, "2, 0.0000"),
+    # G59.1-G59.3 select another system: G55 selected again loads the write
+    ("G55\n#5241=-200\nG59.1\nG55\nG0 X-650", 6, "2, -5080.0000"),
+    ("G59.1\nG0 X-900\nG55\nG0 X-700", 5, "2, 0.0000"),
+    # a span from before the write's loading does not run across it (review 75 N4)
+    ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1000", None, "2, -7620.0000"),
+    ("G55\n#5241=300\nG0 X850\nG54\nG55\nG0 X-1000", None, "2, 7620.0000"),
+    ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1100", 7, "2, -7620.0000"),
+    # M72 restores the system M70 saved (SET_G5X_OFFSET(1) at the M72), before the block's
+    # own G54-G59, which rs274 2.9.0 drops (`M72 G55` runs under G54)
+    ("G54\nM70\nG55\nM72\nG0 X-700", None, "1, 0.0000"),
+    ("G54\nM70\nG56\nM72 G55\nG0 X-700", None, "1, 0.0000"),
+    ("G55\nM70\nG54\nM72\nG0 X-700", 6, "2, 0.0000"),
+    # ... and a selection from another: the write held for G55 is loaded at the next G55
+    ("G54\nM70\nG55\n#5241=-200\nM72\nG55\nG0 X-650", 8, "2, -5080.0000"),
+    # a condition or loop of the main program: the positions inside not judged, the system
+    # back after it where nothing inside touched the offsets (before: every offset lost)
+    ("G55\no1 if [#1 GT 0]\nG0 X-900\no1 endif\nG0 X-700", 6, "2, 0.0000"),
+    ("G55\n#1=0\no1 while [#1 LT 2]\nG0 X-600\n#1=[#1+1]\no1 endwhile\nG0 X-700", 8,
+     "2, 0.0000"),
+    ("G55\n#5241=-200\no1 if [#1 GT 0]\nM0\no1 endif\nG54\nG55\nG0 X-650", 9,
+     "2, -5080.0000"),
+    # ... a selection or a write inside: lost, as before
+    ("G55\no1 if [#1 GT 0]\nG54\no1 endif\nG0 X-700", None, "2, 0.0000"),
+    ("G55\no1 if [#1 GT 0]\n#5241=0\no1 endif\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
+]
+
+
+@pytest.mark.parametrize("body, line, loaded", WRITE_LOADED)
+def test_a_work_offset_written_is_judged_where_rs274_loads_it(tmp_path, body, line, loaded):
+    from formats.profile import builtin_text, profile_from_text
+
+    toml = builtin_text("linuxcnc").replace("[limits]\n",
+                                            "[limits]\nX = [-762, 762]\nY = [-406, 406]\n")
+    profile = profile_from_text(toml + "\n[work_offsets]\nG54 = { X = 0.0, Y = 0.0 }\n"
+                                "G55 = { X = -100.0, Y = 0.0 }\n")
+    text = f"{WO_HEAD}{body}\nM2\n"
+    found = [(f.rule, f.line) for f in check_text(text, profile) if f.severity == "error"]
+    assert found == ([("TG601", line)] if line else []), text
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+    before = out.rsplit("STRAIGHT_TRAVERSE(", 1)[0]
+    assert before.rsplit("SET_G5X_OFFSET(", 1)[1].startswith(loaded), out
+
+
+# ... nor in a definition after the main program's end, which rs274 reads where the ending body
+# calls it: `G1 Y` refused there (review 76 F3)
+def test_a_line_not_read_in_a_later_definition_the_ending_body_calls_is_said(tmp_path):
+    text = program("o300 sub\no301 call\nM2\no300 endsub\no300 call\nG1 X\nM2\no301 sub\n"
+                   "G1 Y\no301 endsub")
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG100", 11)], text
+    assert "PROGRAM_END" not in rs274_output(tmp_path, text)

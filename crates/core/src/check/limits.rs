@@ -610,18 +610,11 @@ impl Checker {
         ));
     }
 
-    /// LinuxCNC's M72 in the block ([`Checker::work_offset_given`]): the work offset M70
-    /// saved is in force, not known here.
-    #[cold]
-    #[inline(never)]
-    fn linuxcnc_m72_work(&mut self) {
-        // (the offset M70 saved, where it was read; none where no M70 was: review
-        // 76-calls76 F9, `G55` / `M70` / `M72` / `G0 X-700` runs under G55)
-        let saved = self.linuxcnc_work_saved.flatten();
-        if saved.is_some() && saved == self.work {
-            return;
-        }
-        self.work = saved;
+    /// The program in hand selects or restores a work system of its own: no longer the one
+    /// it was placed under, one that changes its callers' where it is read apart
+    /// ([`Checker::early_changes_offsets`]), and, in a program written after its calls, no
+    /// longer the calls'.
+    fn work_changed(&mut self) {
         self.work_unplaced = false;
         if self.early_on {
             self.early_changes_offsets();
@@ -632,18 +625,18 @@ impl Checker {
     }
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
-    fn work_selected(&mut self, g: i64) {
+    fn work_selected(&mut self, g: i64, line: usize) {
+        if self.work != Some(g) && self.config.family == Family::LinuxCnc {
+            // (from a system not known, not G59.1-G59.3: it may be this one, the line's
+            // write loaded or not; review 76 F6)
+            self.linuxcnc_selected_at = line;
+            self.linuxcnc_selected_maybe =
+                self.work.is_none() && !std::mem::take(&mut self.linuxcnc_other_in_force);
+        }
         if self.linuxcnc_pending.is_some() {
             self.linuxcnc_reselected(g);
         }
-        self.work_unplaced = false;
-        if self.early_on {
-            self.early_changes_offsets();
-        }
-        // (a program written after its calls selects its own: the calls' no longer)
-        if let Some(w) = self.work_call.as_mut() {
-            w.others.clear();
-        }
+        self.work_changed();
         if self.offsets_unread_only {
             self.work_unread_reselected();
         }
@@ -818,7 +811,12 @@ impl Checker {
                 .filter_map(|w| crate::modal::axis_index(w.letter))
                 .fold(0, |bits, i| bits | 1 << i)
         };
-        match (value(b'L'), value(b'P')) {
+        // (LinuxCNC: P0 is the system in force, interp_convert.cc `convert_setup`)
+        let p_in_force = |p: Option<i64>| match (p, self.work) {
+            (Some(0), Some(w @ 54..=59)) if linuxcnc => Some(w - 53),
+            _ => p,
+        };
+        match (value(b'L'), p_in_force(value(b'P'))) {
             (Some(1 | 3 | 10..=13), _) => Written::default(),
             (Some(20), _) if !linuxcnc => Written::default(),
             (Some(2 | 20), Some(7..=9)) if linuxcnc => Written::default(),
@@ -949,12 +947,24 @@ impl Checker {
         if self.units_merged.is_some() {
             self.units_merged_stopped();
         }
+        if self.linuxcnc_flow_work.is_some() {
+            self.linuxcnc_flow_touched(line);
+        }
         let axis = g
             .zip(number)
             .and_then(|(_, n)| self.variable_axis((n as usize - 5221) % 20))
             .filter(|&i| i < 9);
         let (Some(g), Some(i)) = (g, axis) else {
             let writes = Written::unknown_of(g);
+            // (a write held for the system in force that this one may replace: not known
+            // either; review 76 N2, `#5241=-200` / `#[5241]=0` under G55 loads 0)
+            if self
+                .linuxcnc_pending
+                .as_ref()
+                .is_some_and(|p| g.is_none_or(|g| g == p.0))
+            {
+                self.linuxcnc_pending = None;
+            }
             // (an index not known may name any variable, `#[#14]=#0` of a macro's table:
             // the spans read on, as before)
             if number.is_some() {
@@ -967,13 +977,39 @@ impl Checker {
         writes.axes[g] = 1 << i;
         writes.values[g] = [f64::NAN; 9];
         let in_force = self.work == Some(54 + g as i64);
+        let linuxcnc = self.config.family == Family::LinuxCnc;
         if w.expression.is_empty() && !self.jumped {
             let text = [w.sign, w.number].concat();
             if let Some(v) = std::str::from_utf8(&text).ok().and_then(Dec::parse) {
                 writes.values[g][i] = v.to_f64() * self.to_profile_units(false);
             }
+        } else if linuxcnc && !self.jumped && self.linuxcnc_open_flow.is_empty() {
+            // (LinuxCNC: `#5241=[-200]`, `#5241=#1` where the value is known, read with the
+            // values from before the line as rs274 reads it: review 75 N1)
+            let value = self
+                .copied(w.expression, &mut None)
+                .or_else(|| self.linuxcnc_evaluated(w.expression));
+            if let Some(v) = value {
+                writes.values[g][i] = v.to_f64() * self.to_profile_units(false);
+            }
         }
-        if in_force && self.config.family == Family::LinuxCnc {
+        // (rs274 sets a line's parameters before it runs its codes: a write of the system
+        // the same line selects from another is loaded by that selection; review 75 N1,
+        // `G54` / `G55 #5241=-200` / `G0 X-650` runs at -850)
+        if in_force && linuxcnc && self.linuxcnc_selected_at == line && self.linuxcnc_selected_maybe
+        {
+            // (selected from a system not known: loaded or not, not known here; the value
+            // written held for the next selection from another all the same, review 76 F7)
+            let pending = self
+                .linuxcnc_pending
+                .get_or_insert_with(|| Box::new((g, 0, [f64::NAN; 9])));
+            if pending.0 != g {
+                **pending = (g, 0, [f64::NAN; 9]);
+            }
+            pending.1 |= 1 << i;
+            pending.2[i] = writes.values[g][i];
+            writes.values[g][i] = f64::NAN;
+        } else if in_force && linuxcnc && self.linuxcnc_selected_at != line {
             // (the system in force keeps its value until it is selected again from another:
             // not known here, the value written held for that selection)
             let pending = self
@@ -984,6 +1020,10 @@ impl Checker {
             }
             pending.1 |= 1 << i;
             pending.2[i] = writes.values[g][i];
+            // (until then the system runs under its value before the write: nothing written
+            // now; review 76 F1, `G55` / `#5241=-150` / `G0 X-700` runs at -800 under the
+            // profile's -100)
+            writes.axes[g] &= !(1 << i);
             writes.values[g][i] = f64::NAN;
         }
         if !writes.values[g][i].is_nan() && !self.g10_followed(&writes, false) {
@@ -1005,6 +1045,165 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the block's M70 or M73 saves the work system in force (before the block's
+    /// own G54-G59 runs), its M71 makes the save not valid, its M72 restores the one saved
+    /// (rs274: `G54` / `M70` / `G55` / `M72` / `G0 X-700` runs under G54, SET_G5X_OFFSET(1)
+    /// at the M72; a write of the system restored held for it is loaded there as at a
+    /// selection, review 75 N1). A save in a condition, a loop or a definition, or one not
+    /// known, leaves the system after the M72 not known. Whether the block has an M72 with a
+    /// G54-G59 of its own: rs274 2.9.0 drops that selection (`M72 G55` runs under the system
+    /// restored), so the system after it is taken as not known.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_work_saved(&mut self, b: &BlockView<'_>) -> bool {
+        let mut selects = false;
+        let mut m7 = None;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.index.is_empty()) else {
+                if w.letter == b'M' {
+                    // (an M code of a value not known: any of them)
+                    m7 = Some(0);
+                }
+                continue;
+            };
+            match (w.letter, v.to_f64()) {
+                (b'M', m) if (70.0..=73.0).contains(&m) && v.is_whole() => m7 = Some(m as i64),
+                (b'G', g) if (54.0..60.0).contains(&g) => selects = true,
+                _ => {}
+            }
+        }
+        let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
+        match m7 {
+            Some(70 | 73) => self.linuxcnc_work_save = Some(self.work.filter(|_| in_order)),
+            Some(71) => self.linuxcnc_work_save = None,
+            Some(72) => {
+                let saved = self.linuxcnc_work_save.flatten().filter(|_| in_order);
+                if saved.is_none() || saved != self.work {
+                    // (the system may change here; review 76-calls76 F3, F9)
+                    self.work_changed();
+                }
+                match saved {
+                    Some(g) if self.work != Some(g) && !self.offsets_lost => {
+                        self.work_selected(g, b.line)
+                    }
+                    Some(_) => {}
+                    None => self.linuxcnc_restore_selected(b.line),
+                }
+                return selects;
+            }
+            Some(_) => {
+                self.linuxcnc_work_save = Some(None);
+                if in_order {
+                    self.linuxcnc_restore_selected(b.line);
+                }
+            }
+            None => {}
+        }
+        false
+    }
+
+    /// LinuxCNC: an M72 restores a work system not known here (or drops its block's own
+    /// G54-G59): the positions after it are not judged until a G54-G59 is selected again.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_restore_selected(&mut self, line: usize) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost || self.work.is_none() {
+            return;
+        }
+        self.linuxcnc_pending = None;
+        self.work = None;
+        self.travel_not(format!(
+            "from line {line} on: M72 restores a work system not known here, until a G54-G59 \
+             is selected again"
+        ));
+    }
+
+    /// LinuxCNC: an o-word line of the main program's conditions and loops alone (`if`,
+    /// `elseif`, `else`, `endif`, `do`, `while`, `endwhile`, `repeat`, `endrepeat`): the
+    /// offsets are not lost there as at a jump or call, the positions inside the blocks open
+    /// are not judged (the system in force may be another where a line inside runs and one
+    /// before it not), and where the last closes, the system before is back, where no line
+    /// inside touched the offsets ([`Checker::linuxcnc_flow_touched`]; review 75 N1: `G55` /
+    /// `#5241=-200` / `o1 if [#1 GT 0]` / `M0` / `o1 endif` / `G54` / `G55` / `G0 X-650` runs
+    /// at -850). Whether the line is one.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_flow_offsets(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.family != Family::LinuxCnc
+            || self.config.work_offsets.is_empty()
+            || self.offsets_lost
+            || self.open_definition.is_some()
+            || b.statements.is_empty()
+        {
+            return false;
+        }
+        let flow = b.statements.iter().all(|&(_, kind, text)| {
+            kind == crate::statement::Kind::Flow
+                && crate::statement::o_keyword(text).is_some_and(|k| {
+                    matches!(
+                        k.as_slice(),
+                        b"if"
+                            | b"elseif"
+                            | b"else"
+                            | b"endif"
+                            | b"do"
+                            | b"while"
+                            | b"endwhile"
+                            | b"repeat"
+                            | b"endrepeat"
+                    )
+                })
+        });
+        if !flow {
+            return false;
+        }
+        if self.linuxcnc_open_flow.is_empty() {
+            if let Some(work) = self.linuxcnc_flow_work.take() {
+                self.work = work;
+            }
+        } else if self.linuxcnc_flow_work.is_none() {
+            self.linuxcnc_flow_work = Some(self.work);
+            self.work = None;
+        }
+        true
+    }
+
+    /// LinuxCNC: a line inside the main program's condition or loop that may change the
+    /// offsets (a G10, G52, G92, G54-G59, M70-M73 or a work offset's parameter write, `why`):
+    /// it may run or not, so the offsets are lost from here, as at a jump
+    /// ([`Checker::linuxcnc_flow_offsets`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_flow_touched(&mut self, line: usize) {
+        self.linuxcnc_flow_work = None;
+        self.offsets_rewritten(
+            line,
+            "a work offset's code in a condition or loop the checker does not follow",
+        );
+    }
+
+    /// LinuxCNC selects G59.1-G59.3 (`code`), a system the profile does not give: the
+    /// positions under it are not known until a G54-G59 is selected again; the writes held
+    /// for the system left are its values from here ([`Checker::linuxcnc_reselected`]).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_other_system(&mut self, line: usize, code: &str) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost {
+            return;
+        }
+        // (a definition read apart that selects one changes its callers' system)
+        self.work_changed();
+        self.linuxcnc_pending_applied();
+        self.linuxcnc_other_in_force = true;
+        if self.work.is_some() {
+            self.work = None;
+            self.travel_not(format!(
+                "from line {line} on: {code} selects a work system the profile does not give, \
+                 until a G54-G59 is selected again"
+            ));
+        }
+    }
+
     /// The parameter writes of the system in force held for its next selection
     /// ([`Checker::linuxcnc_pending`]) take effect: its values from here on, where the
     /// system is still the one in force and the offsets are followed.
@@ -1020,15 +1219,33 @@ impl Checker {
         }
         let mut writes = Written::default();
         writes.values[from] = [f64::NAN; 9];
+        let mut unknown = writes.clone();
         for (i, &v) in values.iter().enumerate() {
             if axes & 1 << i != 0 && !v.is_nan() {
                 writes.axes[from] |= 1 << i;
                 writes.values[from][i] = v;
+            } else if axes & 1 << i != 0 {
+                unknown.axes[from] |= 1 << i;
             }
+        }
+        // (a value not known loaded: that axis is not known from here, its span running on
+        // as before; review 76 F4, `G55` / `#5241=#1` / `G54` / `G55` / `G0 X-700` loads #1)
+        if unknown.any() {
+            self.offsets_written.then(&unknown);
+            self.offset_writer(&unknown, false);
         }
         if self.g10_followed(&writes, false) {
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, false);
+            // (the positions since the write were of an offset not known: the span of each
+            // axis now known starts again here, as at a G10 of it; review 75 N4: `G55` /
+            // `#5241=-300` / `G0 X-650` / `G54` / `G55` / `G0 X1000` runs at -750 and 700)
+            for a in 0..9 {
+                if writes.axes[from] & 1 << a != 0 {
+                    self.restart_span(a, false);
+                }
+            }
+            self.shifts.settle();
         }
     }
 
@@ -1069,6 +1286,28 @@ impl Checker {
                 (0..9).all(|i| writes.axes[g] & 1 << i == 0 || !writes.values[g][i].is_nan())
                     && writes.axes[g] >> 9 == 0
             })
+    }
+
+    /// LinuxCNC: a G10 L2/L20 of one system (P1-P6, or P0, the system in force) whose
+    /// values are not all known (an L20's: where the tool stands) in a program whose offsets
+    /// are followed: only the axes it names are not known from here on, the other axes of
+    /// that system keep theirs (rs274 writes only the axes named, interp_convert.cc
+    /// `convert_setup`; review 75 N1: `G55` / `G10 L20 P2 Y0` / `G0 X-900` runs at -1000).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_g10_axes(&self, writes: &Written, expression: bool) -> bool {
+        self.config.family == Family::LinuxCnc
+            && !expression
+            && !self.jumped
+            && !self.offsets_lost
+            && self.work_guessed.is_none()
+            && !self.work_run_on
+            && !self.offsets_written.moved
+            && writes.any()
+            && writes.unread.is_empty()
+            && writes.shifted == 0
+            && (0..6).all(|g| writes.axes[g] >> 9 == 0 && writes.maybe[g] == 0)
+            && (0..6).filter(|&g| writes.axes[g] != 0).count() == 1
     }
 
     /// Whether a G10's L or P is a #-expression whose value here may not be the one another
@@ -1147,6 +1386,25 @@ impl Checker {
         let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
         let lost = self.offsets_lost;
+        if self.linuxcnc_flow_work.is_some() {
+            let touches = b.words.iter().enumerate().any(|(i, w)| match w.letter {
+                b'G' => self.readable[i].is_none_or(|v| {
+                    // (G7/G8, a diameter mode, read as the positions' scale: review 76 F5)
+                    matches!(v.trunc(), 7 | 8 | 10 | 52 | 92 | 54..=59)
+                        || !v.is_whole() && v.trunc() == 92
+                }),
+                b'M' => self.readable[i].is_none_or(|v| matches!(v.trunc(), 70..=73)),
+                _ => false,
+            });
+            if touches {
+                self.linuxcnc_flow_touched(line);
+            }
+        }
+        // (LinuxCNC's M70-M73 save and restore the work system, before the block's own
+        // G54-G59 in the order of execution)
+        let restored = self.config.family == Family::LinuxCnc && self.letters & bit(b'M') != 0 && {
+            self.linuxcnc_work_saved(b)
+        };
         // (only a G code selects, sets or suppresses an offset)
         let g_words = if self.letters & bit(b'G') != 0 {
             b.words
@@ -1164,6 +1422,17 @@ impl Checker {
                     // G51.1: a programmable mirror image (Fanuc)
                     51 if self.config.family != Family::Sinumerik => {
                         self.lose_offsets(line, &format!("{} mirrors the coordinates", w.token()))
+                    }
+                    // LinuxCNC's G59.1-G59.3 (another system, not the profile's): the
+                    // positions under it are not known, G54-G59's values stay as they are,
+                    // a write of the system left held loaded (interp_convert.cc
+                    // `convert_coordinate_system`; review 75 N1: `G55` / `#5241=-200` /
+                    // `G59.1` / `G55` / `G0 X-650` runs at -850)
+                    59 if self.config.family == Family::LinuxCnc
+                        && v.normalized().scale == 1
+                        && matches!(v.normalized().mantissa, 591..=593) =>
+                    {
+                        self.linuxcnc_other_system(line, &w.token())
                     }
                     // (another offset selected: no G54-G59 position moved, review 59a c13)
                     54..=59 => self.offsets_rewritten(
@@ -1209,7 +1478,9 @@ impl Checker {
                         }
                         self.offset_writer(&writes, false);
                     }
-                    if !self.g10_followed(&writes, expression || local) {
+                    if !self.g10_followed(&writes, expression || local)
+                        && !self.linuxcnc_g10_axes(&writes, expression || local)
+                    {
                         self.offsets_rewritten(line, "G10 sets offsets");
                     }
                 }
@@ -1227,8 +1498,8 @@ impl Checker {
                 // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
                 // List of G Codes): no machine coordinates, no work system (G15 H selects it)
                 53..=59 if self.config.family == Family::Okuma && !self.config.modal.lap => {}
-                54..=57 => self.work_selected(v.trunc()),
-                58 | 59 if !sinumerik => self.work_selected(v.trunc()),
+                54..=57 => self.work_selected(v.trunc(), line),
+                58 | 59 if !sinumerik => self.work_selected(v.trunc(), line),
                 // an Okuma mill's G11 (parallel and rotation shift), G51 (scaling), G62
                 // (mirror image), G69 (three-dimensional conversion): frame_bits
                 11 | 51 | 62 | 69 if self.config.family == Family::Okuma => self.lose_offsets(
@@ -1297,17 +1568,8 @@ impl Checker {
                 _ => {}
             }
         }
-        // LinuxCNC's M72 restores the work offset M70 saved (rs274 -g: a SET_G5X_OFFSET at
-        // the M72), which is not followed here: none is taken as selected until the program
-        // selects one, and a definition read apart keeps no position of its own after it
-        // (review 76-calls76 F3: `G54` / `M70` / `G55` / `M72` / `G0 X-700` runs at -700)
-        if self.letters & bit(b'M') != 0 && self.config.family == Family::LinuxCnc {
-            if self.values.ms.iter().any(|&m| m == 70 || m == 73) {
-                self.linuxcnc_work_saved = Some(self.work);
-            }
-            if self.values.ms.contains(&72) {
-                self.linuxcnc_m72_work();
-            }
+        if restored && self.work.is_some() {
+            self.linuxcnc_restore_selected(line);
         }
         one_shot |= self.frames(b);
         // (a program that shifts or sets the coordinates changes them where it is called)

@@ -852,6 +852,10 @@ pub struct Checker {
     /// lines up to its end (a named parameter not yet set, a definition after its call) read
     /// this, not `ended_line`.
     surely_ended: bool,
+    /// LinuxCNC: the line of the main program's first call surely run of a body read before
+    /// it that surely ends the program (0: none): the lines after it up to the main program's
+    /// own end are never read.
+    linuxcnc_call_ended_at: usize,
     /// LinuxCNC: the depth of the main program's open conditions and loops at an M02/M30
     /// inside one: the lines after it in its block run only where it did not run, and never
     /// in the rest of its branch; so they are taken as after the end until the block closes
@@ -1028,9 +1032,6 @@ pub struct Checker {
     /// offsets as they were ([`Checker::keeps_offsets`]), or opened or closed a LinuxCNC
     /// definition read apart: the offsets are not lost at it.
     call_keeps: bool,
-    /// LinuxCNC: the work offset in force at the last M70 (or M73) read, which an M72
-    /// restores ([`Checker::linuxcnc_m72_work`]); None where none was read.
-    linuxcnc_work_saved: Option<Option<i64>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1070,6 +1071,21 @@ pub struct Checker {
     /// and does nothing where the system selected is the one in force): held here until
     /// then ([`Checker::linuxcnc_reselected`]).
     linuxcnc_pending: Option<Box<(usize, u16, [f64; 9])>>,
+    /// LinuxCNC: the line of the last G54-G59 selected from another system in force: a
+    /// parameter write of that system on the same line is loaded by it (rs274 sets a line's
+    /// parameters before its codes run).
+    linuxcnc_selected_at: usize,
+    /// LinuxCNC: that selection was from a system not known (it may have been the same).
+    linuxcnc_selected_maybe: bool,
+    /// LinuxCNC: G59.1-G59.3 in force (the work system not known, surely none of G54-G59).
+    linuxcnc_other_in_force: bool,
+    /// LinuxCNC: the work system (54-59) an M70 or M73 saved for an M72 (None inside: not
+    /// known; None: no save valid).
+    linuxcnc_work_save: Option<Option<i64>>,
+    /// LinuxCNC: the work system in force where the main program's condition or loop open
+    /// began (Some while one is open and no line in it touched the offsets): the positions
+    /// inside are not judged, and the system is back where the last one closes.
+    linuxcnc_flow_work: Option<Option<i64>>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1678,6 +1694,7 @@ impl Checker {
             skipped_end: false,
             end_skippable: false,
             surely_ended: false,
+            linuxcnc_call_ended_at: 0,
             linuxcnc_end_depth: None,
             after_end_reported: false,
             closed: false,
@@ -1754,7 +1771,6 @@ impl Checker {
             offsets_unread_only: false,
             call_unread_here: false,
             call_keeps: false,
-            linuxcnc_work_saved: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -1763,6 +1779,11 @@ impl Checker {
             offsets_lost: false,
             offsets_written: limits::Written::default(),
             linuxcnc_pending: None,
+            linuxcnc_selected_at: 0,
+            linuxcnc_selected_maybe: false,
+            linuxcnc_other_in_force: false,
+            linuxcnc_work_save: None,
+            linuxcnc_flow_work: None,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,
@@ -2581,7 +2602,9 @@ impl Checker {
                 self.linuxcnc_nurbs = tooling::Nurbs::unknown();
                 self.linuxcnc_nurbs_last = None;
                 self.linuxcnc_nurbs_last = None;
-                if !std::mem::take(&mut self.call_keeps) {
+                // (a call of a body that keeps them, or a condition's or loop's own line,
+                // loses no offset: the two are never one line)
+                if !std::mem::take(&mut self.call_keeps) && !self.linuxcnc_flow_offsets(b) {
                     self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
                 }
             }

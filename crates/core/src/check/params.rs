@@ -1173,7 +1173,7 @@ impl Checker {
     /// where it is known; where it holds the fall-through's value at the last arrival, that
     /// value in `arrived` (the assigned parameter holds it there too: review 44 F3, the value
     /// that reaches a word through an assignment at the target) and None.
-    fn copied(&self, expression: &[u8], arrived: &mut Option<Dec>) -> Option<Dec> {
+    pub(super) fn copied(&self, expression: &[u8], arrived: &mut Option<Dec>) -> Option<Dec> {
         let (negative, key) = self.parameter_key(expression)?;
         let sign = |v: Dec| if negative { -v } else { v };
         if let Some(&value) = self.params.get(&key) {
@@ -1194,7 +1194,7 @@ impl Checker {
     /// line). Asked only where no earlier word of the line set a parameter (rs274 reads the
     /// line's words with the values from before it). None for a value it cannot work out, or
     /// one not finite (review 52, F7: a counter's loop known to turn again).
-    fn linuxcnc_evaluated(&self, expression: &[u8]) -> Option<Dec> {
+    pub(super) fn linuxcnc_evaluated(&self, expression: &[u8]) -> Option<Dec> {
         if expression.first() != Some(&b'[') {
             return None;
         }

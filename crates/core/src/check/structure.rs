@@ -139,6 +139,20 @@ impl Checker {
         self.last_line = block.line;
         self.first = false;
         self.unreadable_label(block.text);
+        // (LinuxCNC: a line after a call surely run of a body read before it that surely ends
+        // the program, up to the main program's own end, is never read: rs274 runs `o300
+        // sub` / `M2` / `o300 endsub` / `o300 call` / `G1 X` to its end, as the findings of
+        // the other lines there are dropped, and as after a call of such a body written
+        // later; review 63-lcnc63 N1)
+        // (a definition after it is read where the program calls it: its lines are said;
+        // review 76 F3)
+        if self.linuxcnc_call_ended_at != 0
+            && self.ended_line <= self.linuxcnc_call_ended_at
+            && self.open_definition.is_none()
+            && self.config.family == Family::LinuxCnc
+        {
+            return;
+        }
         if self.unreached(block) {
             // never run: what it would set is not known all the same (a restart after it
             // is refused, as after any line the checker could not read)
@@ -282,6 +296,7 @@ impl Checker {
         self.ended_line = 0;
         self.skipped_end = false;
         self.surely_ended = false;
+        self.linuxcnc_call_ended_at = 0;
         self.linuxcnc_end_depth = None;
         self.sub_ended = false;
         self.after_end_reported = false;
@@ -1470,6 +1485,9 @@ impl Checker {
             }
         }
         self.surely_ended |= ends_here;
+        if ends_here && self.linuxcnc_call_ended_at == 0 {
+            self.linuxcnc_call_ended_at = b.line;
+        }
         // (the block of a conditional M2/M30 closed: the lines after run where it did not)
         if self
             .linuxcnc_end_depth
