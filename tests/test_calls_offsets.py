@@ -240,9 +240,13 @@ def test_haas_g110_selects_an_offset_the_profile_does_not_give(tmp_path: Path) -
     assert [g[:2] for g in said(head + "G0 X-27. / M30", str(profile))] == [(4, 4)]
 
 
-def test_linuxcnc_m72_leaves_the_work_offset_not_known(lcnc: str) -> None:
+def test_linuxcnc_m72_restores_the_work_offset_m70_saved_before_a_call(lcnc: str) -> None:
     """Review 76 F3: M72 restores the work offset M70 saved (rs274 -g: SET_G5X_OFFSET(1) at
-    the M72): the call after it, and an inline move, are not judged under the G55 between."""
+    the M72): the call after it, and an inline move, are judged under it, not under the G55
+    between (lcnc76b's restore, merged with calls76's calls)."""
+    # (G55 saved, G54 between: the M72 gives G55 back, and the call runs at -800)
+    assert [g[:2] for g in said(DEF + "G21 G17 G90 G55 / G0 X0 Y0 / M70 / G54 / M72 / "
+                                "o100 call / M2", lcnc)] == [(9, 1)]
     assert said(DEF + "G21 G17 G90 G54 / G0 X0 Y0 / o100 call / M70 / G55 / M72 / o100 call / "
                 "M2", lcnc) == []
     assert said("G21 G17 G90 G54 / G0 X0 Y0 / M70 / G55 / M72 / G0 X-700 / M2", lcnc) == []
@@ -304,3 +308,16 @@ def test_linuxcnc_m72_restores_the_offset_m70_saved(lcnc: str) -> None:
     """Review 76 F9: M72 with no selection since M70 leaves G55 in force: -800 said."""
     assert [g[:2] for g in said("G21 G17 G90 G55 / G0 X0 Y0 / M70 / G0 X-10 / M72 / G0 X-700 / "
                                 "M2", lcnc)] == [(6, 4)]
+
+
+def test_a_linuxcnc_definition_that_selects_another_system_loses_the_offsets_at_its_call(
+        lcnc: str) -> None:
+    """A definition read before its call that selects G59.1 (a system the profile does not
+    give) leaves it in force after its call (rs274 -g: SET_G5X_OFFSET(7) in the body): the
+    caller's `G0 X-700` after the call is not judged under the G55 before it (a false -800
+    of the first merge of calls76 and lcnc76b, review 76-calls76's t/l72)."""
+    assert said("o100 sub / G0 X-10 / G59.1 / o100 endsub / G21 G90 G55 / G0 X0 / o100 call / "
+                "G0 X-700 / M2", lcnc) == []
+    # (a definition that changes no system: the caller's move judged under G55 as before)
+    assert [g[:2] for g in said("o100 sub / G0 X-10 / o100 endsub / G21 G90 G55 / G0 X0 / "
+                                "o100 call / G0 X-700 / M2", lcnc)] == [(7, 4)]
