@@ -1000,26 +1000,12 @@ impl Checker {
         {
             // (selected from a system not known: loaded or not, not known here; the value
             // written held for the next selection from another all the same, review 76 F7)
-            let pending = self
-                .linuxcnc_pending
-                .get_or_insert_with(|| Box::new((g, 0, [f64::NAN; 9])));
-            if pending.0 != g {
-                **pending = (g, 0, [f64::NAN; 9]);
-            }
-            pending.1 |= 1 << i;
-            pending.2[i] = writes.values[g][i];
+            self.linuxcnc_hold(g, i, writes.values[g][i]);
             writes.values[g][i] = f64::NAN;
         } else if in_force && linuxcnc && self.linuxcnc_selected_at != line {
             // (the system in force keeps its value until it is selected again from another:
             // not known here, the value written held for that selection)
-            let pending = self
-                .linuxcnc_pending
-                .get_or_insert_with(|| Box::new((g, 0, [f64::NAN; 9])));
-            if pending.0 != g {
-                **pending = (g, 0, [f64::NAN; 9]);
-            }
-            pending.1 |= 1 << i;
-            pending.2[i] = writes.values[g][i];
+            self.linuxcnc_hold(g, i, writes.values[g][i]);
             // (until then the system runs under its value before the write: nothing written
             // now; review 76 F1, `G55` / `#5241=-150` / `G0 X-700` runs at -800 under the
             // profile's -100)
@@ -1202,6 +1188,20 @@ impl Checker {
                  until a G54-G59 is selected again"
             ));
         }
+    }
+
+    /// LinuxCNC: the value `v` written to axis `i` of work system `g` (0 = G54), the one in
+    /// force, held for its next selection from another ([`Checker::linuxcnc_pending`]; a
+    /// write of another system held before is given up).
+    fn linuxcnc_hold(&mut self, g: usize, i: usize, v: f64) {
+        let pending = self
+            .linuxcnc_pending
+            .get_or_insert_with(|| Box::new((g, 0, [f64::NAN; 9])));
+        if pending.0 != g {
+            **pending = (g, 0, [f64::NAN; 9]);
+        }
+        pending.1 |= 1 << i;
+        pending.2[i] = v;
     }
 
     /// The parameter writes of the system in force held for its next selection
