@@ -1276,16 +1276,24 @@ impl Checker {
     #[inline(never)]
     fn g10_followed(&self, writes: &Written, expression: bool) -> bool {
         !expression
-            && !self.offsets_lost
+            && self.writes_followed(writes)
+            && (0..6).all(|g| {
+                (0..9).all(|i| writes.axes[g] & 1 << i == 0 || !writes.values[g][i].is_nan())
+                    && writes.axes[g] >> 9 == 0
+            })
+    }
+
+    /// Whether the offsets' writes `writes` (some, every one read) fall where the offsets are
+    /// followed: not lost, not a program read apart's guessed offset, not one run on from
+    /// another program, the coordinates not moved ([`Checker::g10_followed`],
+    /// [`Checker::linuxcnc_g10_axes`]).
+    fn writes_followed(&self, writes: &Written) -> bool {
+        !self.offsets_lost
             && self.work_guessed.is_none()
             && !self.work_run_on
             && !self.offsets_written.moved
             && writes.any()
             && writes.unread.is_empty()
-            && (0..6).all(|g| {
-                (0..9).all(|i| writes.axes[g] & 1 << i == 0 || !writes.values[g][i].is_nan())
-                    && writes.axes[g] >> 9 == 0
-            })
     }
 
     /// LinuxCNC: a G10 L2/L20 of one system (P1-P6, or P0, the system in force) whose
@@ -1299,12 +1307,7 @@ impl Checker {
         self.config.family == Family::LinuxCnc
             && !expression
             && !self.jumped
-            && !self.offsets_lost
-            && self.work_guessed.is_none()
-            && !self.work_run_on
-            && !self.offsets_written.moved
-            && writes.any()
-            && writes.unread.is_empty()
+            && self.writes_followed(writes)
             && writes.shifted == 0
             && (0..6).all(|g| writes.axes[g] >> 9 == 0 && writes.maybe[g] == 0)
             && (0..6).filter(|&g| writes.axes[g] != 0).count() == 1
