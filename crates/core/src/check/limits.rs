@@ -3213,15 +3213,7 @@ impl Checker {
                 {
                     self.stats.travel_absolute += 1;
                     let machine_at = at + offset.to_f64();
-                    // which side of the travel the axis is outside (0 inside): a move from
-                    // one side to the other crosses the travel, another excursion
-                    let out = if machine_at < low - 1e-9 {
-                        -1
-                    } else if machine_at > high + 1e-9 {
-                        1
-                    } else {
-                        0
-                    };
+                    let out = travel_side(machine_at, (low, high));
                     if out != 0 && out != self.outside[i] {
                         let message = format!(
                             "{} goes to {} in machine coordinates (work {} + G{work} offset \
@@ -3698,15 +3690,7 @@ impl Checker {
         // (a G10 of the program's run with a value known: review 59a F8)
         let written = self.offset_written(work, i);
         let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
-        // which side of the travel the axis is outside (0 inside): a move from one side to
-        // the other crosses the travel, another excursion
-        let out = if machine_at < low - 1e-9 {
-            -1
-        } else if machine_at > high + 1e-9 {
-            1
-        } else {
-            0
-        };
+        let out = travel_side(machine_at, (low, high));
         let mut said_outside = false;
         if out != 0 && out != self.outside[i] {
             let value = written.map_or_else(
@@ -3792,13 +3776,7 @@ impl Checker {
                 continue;
             };
             let machine_at = at + offset.to_f64();
-            let out = if machine_at < low - 1e-9 {
-                -1
-            } else if machine_at > high + 1e-9 {
-                1
-            } else {
-                0
-            };
+            let out = travel_side(machine_at, (low, high));
             if out != 0 && out != outside[i] {
                 let message = format!(
                     "{} goes to {} in machine coordinates (work {} + G{work} offset {offset}), \
@@ -4187,6 +4165,20 @@ fn frame_variable(text: &[u8]) -> Option<&[u8]> {
     };
     (assigned && name.starts_with(b"$P_") && (name.ends_with(b"FRAME") || name.ends_with(b"FR")))
         .then_some(name)
+}
+
+/// Which side of the travel `(low, high)` the machine position `at` is outside: -1 below, 1
+/// above, 0 inside (within 1e-9). A move from one side to the other crosses the travel:
+/// another excursion (TG601 said once an excursion).
+#[inline]
+fn travel_side(at: f64, (low, high): (f64, f64)) -> i8 {
+    if at < low - 1e-9 {
+        -1
+    } else if at > high + 1e-9 {
+        1
+    } else {
+        0
+    }
 }
 
 #[cfg(test)]
