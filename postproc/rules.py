@@ -755,8 +755,11 @@ SOURCES = {
              "does not say). LinuxCNC: rs274 \"R i j k words all missing for arc\". Haas, "
              "SINUMERIK: no alarm number at hand.",
     "TG405": "ISO 6983-1 7.3. Okuma: alarm-B 2252 code 4 (I and K zero). LinuxCNC: rs274 "
-             "\"Zero-radius arc\". FANUC, Haas, SINUMERIK: no alarm number at hand; no arc of "
-             "radius 0 exists, and the rule decides motion, so it stays an error.",
+             "\"Zero-radius arc\", for a radius under 0.00127 mm (0.00005 in). FANUC, Haas, "
+             "SINUMERIK: no alarm number at hand; no arc of radius 0 exists, and the rule decides "
+             "motion, so it stays an error. Only LinuxCNC has a threshold: on the other families "
+             "the centre must be on the start or end point, and a radius of one least increment "
+             "(0.001 mm) is an arc (held27, cifo-cnc `216.nc`).",
     "TG408": "ISO 6983-1 7.3. ISO profiles only: a program of a family profile starts where its "
              "caller or the operator left the tool (issue 32 item 4), so the rule does not fire "
              "there.",

@@ -728,7 +728,7 @@ SHOPS_ERRORS: dict[str, dict[str, int]] = {
     "adacunha__Public__PanelFinal.nc": {"TG403": 213, "TG601": 1},
     "BrianHooper__PostPostProcess__1001.nc": {"TG403": 96},
     "EloiStree__2020_05_09_ShareFusion360__1001.nc": {"TG403": 36},
-    "k-ishigaki__gcode-optimizer__1001.cnc": {"TG405": 70, "TG403": 20},
+    "k-ishigaki__gcode-optimizer__1001.cnc": {"TG403": 80},
     "ronaldbroth__CNXY-M2-161609G-LCD__O1001.nc": {"TG403": 4},
     "czongwu__NcUploader__1.NC": {"TG306": 3},
     "DangaRPT__CNC_Prog__test.mpf": {"TG306": 2},

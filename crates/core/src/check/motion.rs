@@ -1124,7 +1124,14 @@ impl Checker {
         let r1 = (start.0 - cx).hypot(start.1 - cy);
         let r2 = (end.0 - cx).hypot(end.1 - cy);
         // LinuxCNC's threshold: a radius under 0.00127 mm (0.00005 in) is no radius
-        let zero = 0.00127 * scale;
+        // (rs274's "Zero-radius arc"). The other families name no such threshold: their
+        // alarm is for a centre on the point, so a radius of one least increment (FANUC's
+        // 0.001 mm) is an arc there; only a float's noise counts as none.
+        let zero = if self.config.family == Family::LinuxCnc {
+            0.00127 * scale
+        } else {
+            1e-9
+        };
         if r1 < zero || r2 < zero {
             let message = format!(
                 "arc of zero radius (the centre is on the start or end point){}",
@@ -1967,6 +1974,38 @@ mod tests {
         assert_eq!(at(by_radius.clone(), &long, Rule::ArcRadiusTooShort), []);
         let r0 = from_origin("G02 X10. Y0 R0");
         assert_eq!(at(by_radius, &r0, Rule::ArcZeroRadius), [(3, 1)]);
+    }
+
+    #[test]
+    fn a_radius_of_one_least_increment_is_an_arc_except_on_linuxcnc() {
+        // held27, cifo-cnc 216.nc: the centre 0.001 mm from both points, read in thousandths
+        let tiny = "G0 X0.017 Y-0.008\nG1 F100.\nG3 X0.015 I-0.001 J0\nM30";
+        for family in [
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Okuma,
+            Family::Iso,
+        ] {
+            assert_eq!(
+                fired(of_family(family), tiny, Rule::ArcZeroRadius),
+                [],
+                "{family:?}"
+            );
+        }
+        // rs274 refuses it: "Zero-radius arc" under 0.00127 mm (0.00005 in)
+        assert_eq!(
+            fired(of_family(Family::LinuxCnc), tiny, Rule::ArcZeroRadius),
+            [(3, 1)]
+        );
+        // the centre on the start point is no arc on any control
+        let on_point = "G0 X0.017 Y-0.008\nG1 F100.\nG3 X0.015 I0 J0\nM30";
+        for family in [Family::MacroB, Family::Sinumerik, Family::LinuxCnc] {
+            assert_eq!(
+                fired(of_family(family), on_point, Rule::ArcZeroRadius),
+                [(3, 1)],
+                "{family:?}"
+            );
+        }
     }
 
     #[test]
