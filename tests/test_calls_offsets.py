@@ -321,3 +321,73 @@ def test_a_linuxcnc_definition_that_selects_another_system_loses_the_offsets_at_
     # (a definition that changes no system: the caller's move judged under G55 as before)
     assert [g[:2] for g in said("o100 sub / G0 X-10 / o100 endsub / G21 G90 G55 / G0 X0 / "
                                 "o100 call / G0 X-700 / M2", lcnc)] == [(7, 4)]
+
+
+@pytest.fixture
+def haas(tmp_path: Path) -> str:
+    """A Haas mill in inches, X travel -30..30, G55 X-4 (`G0 X-29.` at -33 under it)."""
+    profile = tmp_path / "woh.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
+                       'Y = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n[work_offsets]\n'
+                       'G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\nG55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n')
+    return str(profile)
+
+
+LOCAL = "% / O1000 / G20 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (the everyday multi-fixture program: one local subprogram called under G54, then G55)
+    ("M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+     [(9, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+    # (one call, under G55)
+    ("G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+     [(8, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 6")]),
+    # (the main's G54 at its end does not place the body)
+    ("M97 P1000 / G55 / M97 P1000 / G54 / M30 / N1000 G0 X-29. / M99 / %",
+     [(10, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+    # (repeated by L: under the offset of its call)
+    ("G55 / M97 P1000 L2 / M30 / N1000 G0 X-29. / M99 / %",
+     [(8, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 6")]),
+    # (its move before a G54 or a call of its own: run at the call's offset)
+    ("M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G54 / M99 / %",
+     [(9, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+])
+def test_a_haas_local_subprogram_is_judged_under_its_calls_offsets(
+        haas: str, blocks: str, expected: list[tuple[int, int, str, str]]) -> None:
+    got = said(LOCAL + blocks, haas)
+    assert [(line, col, msg.split(" in machine")[0], msg.split("(")[-1].split(":")[0])
+            for line, col, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks", [
+    # (its G10 after the move writes G55's X before the second call: -29 there)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G10 L2 P2 X0. / M99 / %",
+    # (the main's G10 before the calls)
+    "G10 L2 P2 X0. / M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    # (a work offset's variable)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / #5241=0. / M99 / %",
+    # (its run in G91)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G91 G0 X-29. / M99 / %",
+    # (a G91 it leaves: the second call's mode)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G91 / M99 / %",
+    # (a return elsewhere, an end: the second call may not run)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 P10 / %",
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M30 / %",
+    # (a G52 at the calls, a G110 (an offset the profile does not give), a jump before)
+    "G52 X2. / M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "G110 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "M97 P1000 / G110 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "IF [#1 EQ 1] GOTO 10 / G55 / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    # (a nested local call that writes G55's X)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M97 P2000 / M99 / "
+    "N2000 G10 L2 P2 X0. / M99 / %",
+    # (calls in other units, a sequence number no call names, a P no block has)
+    "G55 / G20 / M97 P1000 / G21 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "G55 / M97 P3000 / M30 / N1000 G0 X-29. / M99 / %",
+    # (the main's own move after the call, its G90/G91 not known there)
+    "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %",
+])
+def test_a_haas_local_subprogram_stays_silent_where_its_offset_is_not_known(
+        haas: str, blocks: str) -> None:
+    assert said(LOCAL + blocks, haas) == []

@@ -1032,6 +1032,13 @@ pub struct Checker {
     /// offsets as they were ([`Checker::keeps_offsets`]), or opened or closed a LinuxCNC
     /// definition read apart: the offsets are not lost at it.
     call_keeps: bool,
+    /// A Haas's M97 of the program in hand was kept with its work offset
+    /// ([`Checker::local_call`]): a block after an end that starts with the sequence number it
+    /// names begins its local subprogram ([`Checker::local_body`]). And the number of the
+    /// program whose local subprogram is in hand (its [`Checker::in_hand`] then the body's
+    /// key), given back at the body's M99.
+    local_called: bool,
+    local_main: Option<i64>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1771,6 +1778,8 @@ impl Checker {
             offsets_unread_only: false,
             call_unread_here: false,
             call_keeps: false,
+            local_called: false,
+            local_main: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -2528,6 +2537,9 @@ impl Checker {
             return; // a saved offset's G10: what it sets is not read (TG205 said so)
         } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
             self.empty_folder = false;
+        }
+        if self.local_called {
+            self.local_body(b);
         }
         // (LinuxCNC: a line in the skip of a block known not to run, no o-word line: rs274
         // reads it for its o-word only and runs nothing of it, interp_read.cc read_items)
