@@ -391,3 +391,62 @@ def test_a_haas_local_subprogram_is_judged_under_its_calls_offsets(
 def test_a_haas_local_subprogram_stays_silent_where_its_offset_is_not_known(
         haas: str, blocks: str) -> None:
     assert said(LOCAL + blocks, haas) == []
+
+
+LATER = "G21 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (a definition after M2, called before it: rs274 -g runs its STRAIGHT_TRAVERSE(-700)
+    # at the call, after the call's SET_G5X_OFFSET(2))
+    ("G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+     [(7, 4, "X goes to -800", "o100 runs as called by o100 call of line 4")]),
+    # (one call under G54, one under G55: the second's)
+    ("o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+     [(8, 4, "X goes to -800", "o100 runs as called by o100 call of line 5")]),
+    # (a named label, a return after the move)
+    ("G55 / o<abc> call / M2 / o<abc> sub / G0 X-700 / o<abc> return / o<abc> endsub",
+     [(7, 4, "X goes to -800", "o<abc> runs as called by o<abc> call of line 4")]),
+    # (called in inches: -28 in, -711.2 mm, -811.2 under G55)
+    ("G20 / G55 / o100 call / M2 / o100 sub / G0 X-28 / o100 endsub",
+     [(8, 4, "X goes to -811.2", "o100 runs as called by o100 call of line 5")]),
+    # (the main's own move after a G55 of its own after the call: the body writes nothing)
+    ("o100 call / G55 / G90 G0 X-700 / M2 / o100 sub / G0 X0 / o100 endsub",
+     [(5, 8, "X goes to -800", "work -700 + G55 offset -100.0), outside the travel -762 to "
+       "762")]),
+])
+def test_a_linuxcnc_definition_after_the_end_is_judged_under_its_calls_offsets(
+        lcnc: str, blocks: str, expected: list[tuple[int, int, str, str]]) -> None:
+    got = said(LATER + blocks, lcnc)
+    assert [(line, col, msg.split(" in machine")[0], msg.split("(")[-1].split(":")[0])
+            for line, col, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks", [
+    # (its G10 or variable write after the move, before the second call: G55's X is 0 there)
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / G10 L2 P2 X0 / o100 endsub",
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / #5241=0 / o100 endsub",
+    # (a system the profile does not give, its run in G91, a G91 it leaves)
+    "o100 call / G55 / o100 call / M2 / o100 sub / G59.1 / G0 X-700 / o100 endsub",
+    "o100 call / G55 / o100 call / M2 / o100 sub / G91 G0 X-700 / o100 endsub",
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / G91 / o100 endsub",
+    # (its first run ends the program: the second call never runs)
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / M2 / o100 endsub",
+    # (a G92 shift at the call, a call inside a condition, an M72 restore between)
+    "G0 X-250 Y0 / G92 X-400 / o100 call / M2 / o100 sub / G0 X700 / o100 endsub",
+    "o1 if [#1 GT 0] / o100 call / o1 endif / G55 / o100 call / M2 / o100 sub / G0 X-700 / "
+    "o100 endsub",
+    "M70 / G55 / o100 call / M72 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+    # (a G10 or variable write of the main's before the call)
+    "G55 / G10 L2 P2 X0 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+    "#5241=0 / G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+    # (the main's move after the call with no G54-G59 of its own; after a G10 of the body's)
+    "G55 / o100 call / G0 X-700 / M2 / o100 sub / G0 X0 / o100 endsub",
+    "o100 call / G55 / G90 G0 X-700 / M2 / o100 sub / G0 X0 / G10 L2 P2 X0 / o100 endsub",
+    # (called only from another definition after the end)
+    "G55 / o200 call / M2 / o100 sub / G0 X-700 / o100 endsub / o200 sub / o100 call / "
+    "o200 endsub",
+])
+def test_a_linuxcnc_definition_after_the_end_stays_silent_where_not_known(
+        lcnc: str, blocks: str) -> None:
+    assert said(LATER + blocks, lcnc) == []

@@ -1039,6 +1039,9 @@ pub struct Checker {
     /// key), given back at the body's M99.
     local_called: bool,
     local_main: Option<i64>,
+    /// LinuxCNC: the labels of the main program's calls kept for a definition after its end
+    /// ([`Checker::later_call`]).
+    later_called: Option<Vec<Vec<u8>>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1780,6 +1783,7 @@ impl Checker {
             call_keeps: false,
             local_called: false,
             local_main: None,
+            later_called: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -2538,9 +2542,6 @@ impl Checker {
         } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
             self.empty_folder = false;
         }
-        if self.local_called {
-            self.local_body(b);
-        }
         // (LinuxCNC: a line in the skip of a block known not to run, no o-word line: rs274
         // reads it for its o-word only and runs nothing of it, interp_read.cc read_items)
         if self.subroutine_file(b) {
@@ -2617,10 +2618,16 @@ impl Checker {
                 // (a call of a body that keeps them, or a condition's or loop's own line,
                 // loses no offset: the two are never one line)
                 if !std::mem::take(&mut self.call_keeps) && !self.linuxcnc_flow_offsets(b) {
+                    // (a call of a LinuxCNC definition after the end, Checker::later_call:
+                    // only its writes, known there)
+                    let unread_only = std::mem::take(&mut self.call_unread_here)
+                        && (!self.offsets_lost || self.offsets_unread_only);
                     self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                    self.offsets_unread_only = unread_only;
                 }
             }
             self.call_keeps = false;
+            self.call_unread_here = false;
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
@@ -2698,7 +2705,7 @@ impl Checker {
             }
             dialect::DataBlock::Program => {}
         }
-        self.words_after_end(b.line);
+        self.words_after_end(b);
         let first_words = self.first_words;
         self.program_number(b);
         if !b.statements.is_empty() {

@@ -527,6 +527,13 @@ impl Checker {
         if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
             self.local_body_end();
         }
+        self.local_body_begin(key, main);
+    }
+
+    /// A local subprogram (Haas M97) or a LinuxCNC definition after the end, called before
+    /// it (`key`), begins: read under its calls' offset, mode and units; `main` the program
+    /// in hand again at its end.
+    fn local_body_begin(&mut self, key: i64, main: Option<i64>) {
         self.local_main = main;
         self.in_hand = Some(key);
         self.file_programs.insert(key);
@@ -576,6 +583,9 @@ impl Checker {
             format!("M98 {token}")
         } else if self.values.ms.contains(&97) {
             format!("M97 {token}")
+        } else if let Some(&(_, _, text)) = b.statements.iter().find(|s| s.1 == Kind::Call) {
+            let label = crate::statement::o_label(text);
+            return (format!("{} call", String::from_utf8_lossy(&label)), 1);
         } else if self.values.gs().contains(&66) {
             format!("G66 {token}")
         } else {
@@ -860,7 +870,11 @@ impl Checker {
                     }
                     (Some(a), Some(b)) if other => {
                         if !a.others.iter().any(|o| o.0 == b.work) {
-                            let tentative = b.mode_by_self && a.incremental != b.incremental;
+                            // (a LinuxCNC definition after the end: the G90/G91 it leaves
+                            // after the first call is not followed there, so a later call's
+                            // mode is its own only where it writes none)
+                            let tentative = b.mode_by_self && a.incremental != b.incremental
+                                || number >= LATER_DEFINITION;
                             a.others
                                 .push((b.work, b.call.clone(), b.line, b.outside, tentative));
                         }
@@ -1730,6 +1744,19 @@ impl Checker {
                 // (read apart, not run here: the offsets are not lost at its sub)
                 self.call_keeps = self.early_on && !self.config.work_offsets.is_empty();
             }
+            Some((true, name)) if !was_open && self.open_definition.is_some() => {
+                if self.later_called.is_some() {
+                    self.later_definition(name);
+                }
+            }
+            Some((false, _))
+                if was_open
+                    && self.open_definition.is_none()
+                    && self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) =>
+            {
+                self.local_body_end();
+                self.call_keeps = true;
+            }
             Some((false, _)) if was_open && self.open_definition.is_none() => {
                 let read_apart = self.early_on;
                 self.definition_end();
@@ -1745,6 +1772,13 @@ impl Checker {
                         .is_some_and(|k| self.keeps_offsets(k));
             }
             _ => {}
+        }
+        if !self.config.work_offsets.is_empty()
+            && self.open_definition.is_none()
+            && !self.early_on
+            && b.statements.iter().any(|s| s.1 == Kind::Call)
+        {
+            self.later_call(b);
         }
         if !self.early_on && self.pending.is_empty() && self.given_up.is_empty()
             || self.open_definition.is_none() && self.linuxcnc_dead()
@@ -1774,6 +1808,90 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// LinuxCNC, under a profile that gives work offsets: an `o<name> call` of the main
+    /// program, outside its conditions and loops and before its end, of a label no definition
+    /// read before it names (one after M2, which rs274 runs at the call: `rs274 -g` gives its
+    /// moves after the call's SET_G5X_OFFSET), kept as a call of a program written after it
+    /// by a key of its own ([`LATER_DEFINITION`]), in the one implementation of such calls, as
+    /// a Haas's M97 is ([`Checker::local_call`]): its work offset, distance mode and units
+    /// ([`Checker::call_work`]). The definition after the end is read under the calls'
+    /// offset ([`Checker::later_definition`]).
+    #[cold]
+    #[inline(never)]
+    fn later_call(&mut self, b: &BlockView<'_>) {
+        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+            return;
+        }
+        let calls: Vec<Vec<u8>> = b
+            .statements
+            .iter()
+            .filter(|&&(_, kind, text)| {
+                kind == Kind::Call
+                    && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+            })
+            .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+            .collect();
+        let [label] = calls.as_slice() else {
+            return;
+        };
+        let key = super::called::Key::Label(label.clone());
+        if label.len() < 2 || crate::statement::computed_label(label) || self.read_before(&key) {
+            return;
+        }
+        let labels = self.later_called.get_or_insert_with(Vec::new);
+        let index = labels.iter().position(|l| l == label).unwrap_or_else(|| {
+            labels.push(label.clone());
+            labels.len() - 1
+        });
+        let key = LATER_DEFINITION + index as i64;
+        self.after_call(key);
+        self.call_work(b, key);
+        // (what it writes is known where its lines are read: a G54-G59 of the main's own
+        // after the call judged, held to the file's end, as after a FANUC's M98 of a
+        // program written later; Checker::work_unread_reselected)
+        let unread = super::limits::Written {
+            unread: vec![key],
+            ..Default::default()
+        };
+        self.call_unread_here = true;
+        self.offsets_written.then(&unread);
+        self.offset_writer(&unread, false);
+        let s = &self.machine.state;
+        let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
+        self.call_units
+            .entry(key)
+            .and_modify(|known| {
+                if *known != units {
+                    *known = None;
+                }
+            })
+            .or_insert(units);
+    }
+
+    /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
+    /// ([`Checker::later_call`]) name: read as a program written after its calls is
+    /// ([`Checker::work_of_calls`]), under the calls' work offset where they agree (in their
+    /// distance mode and units), under none where they do not or one was made where it was
+    /// not known; its `endsub` gives the state back ([`Checker::local_body_end`]).
+    #[cold]
+    #[inline(never)]
+    fn later_definition(&mut self, name: &[u8]) {
+        let Some(index) = self
+            .later_called
+            .as_ref()
+            .and_then(|labels| labels.iter().position(|l| l.as_slice() == name))
+        else {
+            return;
+        };
+        let key = LATER_DEFINITION + index as i64;
+        if !self.main_ended() || self.early_on || !self.call_works.contains_key(&key) {
+            return;
+        }
+        self.local_body_begin(key, None);
+        // (its sub line runs nothing: the offsets are not lost at it)
+        self.call_keeps = true;
     }
 
     /// TG138: an endsub of a LinuxCNC subroutine file that names another label than its sub.
@@ -5917,11 +6035,18 @@ impl Checker {
     }
 
     /// TG116: words after the program's M02/M30, said once.
-    pub(super) fn words_after_end(&mut self, line: usize) {
+    pub(super) fn words_after_end(&mut self, b: &BlockView<'_>) {
+        if self.ended_line == 0 {
+            return;
+        }
+        // (a Haas's local subprogram after the end: Checker::local_body)
+        if self.local_called {
+            self.local_body(b);
+        }
+        let line = b.line;
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
         // LinuxCNC subroutine's body after the end is its definition, run when called)
-        if self.ended_line > 0
-            && !self.skipped_end
+        if !self.skipped_end
             && !self.after_end_reported
             && !self.unfollowed_noted
             && !self.reading_end.inside_block()
@@ -6632,6 +6757,11 @@ pub(super) struct OpenBlock {
 /// below the marks of [`Finding::pending_on`](super::Finding) built from program numbers.
 pub(super) const LOCAL_BODY: i64 = 1 << 38;
 
+/// The keys of LinuxCNC definitions after the main program's end called before it
+/// ([`Checker::later_call`]): above every [`LOCAL_BODY`] key, the place of the label in
+/// [`Checker::later_called`] added.
+pub(super) const LATER_DEFINITION: i64 = LOCAL_BODY + 20_000_000_000;
+
 /// The key of the local subprogram at sequence number `sequence` of program `main` (None:
 /// the file's first program with no O number): None where either is above 99999 (or a
 /// local subprogram's own M97).
@@ -6645,7 +6775,9 @@ fn local_key(main: Option<i64>, sequence: i64) -> Option<i64> {
 /// A program's name in the messages: `O2000`, or a local subprogram's sequence number
 /// (`N1000`).
 pub(super) fn program_name(n: i64) -> String {
-    if n >= LOCAL_BODY {
+    if n >= LATER_DEFINITION {
+        "a subroutine after the end".to_string()
+    } else if n >= LOCAL_BODY {
         format!("N{}", (n - LOCAL_BODY) % 100_000)
     } else {
         format!("O{n:04}")
@@ -6722,7 +6854,12 @@ impl WorkCall {
 
     /// What a TG601 of a position run by the call `call` of line `line` adds.
     pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
-        let program = number.map_or_else(|| "the program".to_string(), program_name);
+        // (a LinuxCNC definition after the end: its label, the call's)
+        let program = match number {
+            Some(n) if n >= LATER_DEFINITION => call.trim_end_matches(" call").to_string(),
+            Some(n) => program_name(n),
+            None => "the program".to_string(),
+        };
         format!(
             " ({program} runs as called by {call} of line {line}: a subprogram written after \
              its call runs under the work offset in force there)"
