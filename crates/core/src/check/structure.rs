@@ -1744,10 +1744,10 @@ impl Checker {
                 // (read apart, not run here: the offsets are not lost at its sub)
                 self.call_keeps = self.early_on && !self.config.work_offsets.is_empty();
             }
-            Some((true, name)) if !was_open && self.open_definition.is_some() => {
-                if self.later_called.is_some() {
-                    self.later_definition(name);
-                }
+            Some((true, name))
+                if !was_open && self.open_definition.is_some() && self.later_called.is_some() =>
+            {
+                self.later_definition(name);
             }
             Some((false, _))
                 if was_open
