@@ -352,6 +352,9 @@ LOCAL = "% / O1000 / G20 G17 G90 G54 / G0 X0 Y0 / "
     # (its move before a G54 or a call of its own: run at the call's offset)
     ("M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G54 / M99 / %",
      [(9, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+    # (a main program that ends by M99, its local subprogram after it: review 77 F0's h108)
+    ("G55 / M97 P1000 / M99 / N1000 G0 X-29. / M99 / %",
+     [(8, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 6")]),
 ])
 def test_a_haas_local_subprogram_is_judged_under_its_calls_offsets(
         haas: str, blocks: str, expected: list[tuple[int, int, str, str]]) -> None:
@@ -387,6 +390,12 @@ def test_a_haas_local_subprogram_is_judged_under_its_calls_offsets(
     "G55 / M97 P3000 / M30 / N1000 G0 X-29. / M99 / %",
     # (the main's own move after the call, its G90/G91 not known there)
     "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %",
+    # (review 77 F2: a local subprogram's own M97, not followed, of a section that writes
+    # G55's X or leaves a G52: the main's move after the call is not judged under G55's
+    # value)
+    "M97 P1000 / G90 G55 / G0 X-27. / M30 / N1000 M97 P2000 / M99 / N2000 G10 L2 P2 X0. / "
+    "M99 / %",
+    "M97 P1000 / G90 G55 / G0 X-27. / M30 / N1000 M97 P2000 / M99 / N2000 G52 X4. / M99 / %",
 ])
 def test_a_haas_local_subprogram_stays_silent_where_its_offset_is_not_known(
         haas: str, blocks: str) -> None:
@@ -446,6 +455,12 @@ def test_a_linuxcnc_definition_after_the_end_is_judged_under_its_calls_offsets(
     # (called only from another definition after the end)
     "G55 / o200 call / M2 / o100 sub / G0 X-700 / o100 endsub / o200 sub / o100 call / "
     "o200 endsub",
+    # (review 77 F1: the definition calls another after it that writes G55's X (rs274 -g:
+    # SET_G5X_OFFSET(2, 0, ...) at the call, the G55's move then at -700), or a subroutine
+    # the file does not hold: the main's move after the call is not judged under G55's value)
+    "o100 call / G55 / G0 X-700 / M2 / o100 sub / o200 call / o100 endsub / o200 sub / "
+    "G10 L2 P2 X0 / o200 endsub",
+    "o100 call / G55 / G0 X-700 / M2 / o100 sub / G0 X-10 / o<ext> call / o100 endsub",
 ])
 def test_a_linuxcnc_definition_after_the_end_stays_silent_where_not_known(
         lcnc: str, blocks: str) -> None:

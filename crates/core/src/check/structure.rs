@@ -476,6 +476,11 @@ impl Checker {
             .filter(|v| v.is_whole())
             .and_then(|v| local_key(self.in_hand, v.trunc()))
         else {
+            // (inside a local subprogram: an M97 not followed, which may change the
+            // offsets its callers run under after it; review 77-calls77 F2)
+            if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
+                self.after_mark();
+            }
             return;
         };
         self.local_called = true;
@@ -1774,11 +1779,16 @@ impl Checker {
             _ => {}
         }
         if !self.config.work_offsets.is_empty()
-            && self.open_definition.is_none()
             && !self.early_on
             && b.statements.iter().any(|s| s.1 == Kind::Call)
         {
-            self.later_call(b);
+            if self.open_definition.is_none() {
+                self.later_call(b);
+            } else if self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) {
+                // (a call inside a definition after the end, not followed: it may change
+                // the offsets its callers run under after it; review 77-calls77 F1)
+                self.after_mark();
+            }
         }
         if !self.early_on && self.pending.is_empty() && self.given_up.is_empty()
             || self.open_definition.is_none() && self.linuxcnc_dead()
@@ -6036,12 +6046,13 @@ impl Checker {
 
     /// TG116: words after the program's M02/M30, said once.
     pub(super) fn words_after_end(&mut self, b: &BlockView<'_>) {
-        if self.ended_line == 0 {
-            return;
-        }
-        // (a Haas's local subprogram after the end: Checker::local_body)
+        // (a Haas's local subprogram after the end, or after a main program's M99:
+        // Checker::local_body)
         if self.local_called {
             self.local_body(b);
+        }
+        if self.ended_line == 0 {
+            return;
         }
         let line = b.line;
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
