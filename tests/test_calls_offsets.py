@@ -329,7 +329,8 @@ def haas(tmp_path: Path) -> str:
     profile = tmp_path / "woh.toml"
     profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
                        'Y = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n[work_offsets]\n'
-                       'G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\nG55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n')
+                       'G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n'
+                       'G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n')
     return str(profile)
 
 

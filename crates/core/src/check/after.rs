@@ -82,6 +82,7 @@ impl Checker {
         if self.work_call.as_ref().is_some_and(|w| w.held) {
             self.work_call_tentative_end();
         }
+        self.after_watch |= self.local_called;
         // (a Haas's local subprogram returns: the main program in hand again)
         if !ends
             && self

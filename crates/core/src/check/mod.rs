@@ -1039,6 +1039,10 @@ pub struct Checker {
     /// key), given back at the body's M99.
     local_called: bool,
     local_main: Option<i64>,
+    /// An end (M02/M30, [`Checker::ended_line`]) was read, or a return after an M97 was kept
+    /// ([`Checker::local_called`]): the blocks after it are looked at
+    /// ([`Checker::words_after_end`]).
+    after_watch: bool,
     /// LinuxCNC: the labels of the main program's calls kept for a definition after its end
     /// ([`Checker::later_call`]).
     later_called: Option<Vec<Vec<u8>>>,
@@ -1783,6 +1787,7 @@ impl Checker {
             call_keeps: false,
             local_called: false,
             local_main: None,
+            after_watch: false,
             later_called: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
@@ -3011,6 +3016,7 @@ impl Checker {
                 self.linuxcnc_later.main_end = b.line;
             }
             self.ended_line = b.line;
+            self.after_watch = true;
             self.main_ended = true;
             // (LinuxCNC: one in a block known to run ends it too: review 51, F13)
             if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {

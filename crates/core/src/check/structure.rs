@@ -294,6 +294,7 @@ impl Checker {
         self.conflict_at = None;
         self.programs += 1;
         self.ended_line = 0;
+        self.after_watch = false;
         self.skipped_end = false;
         self.surely_ended = false;
         self.linuxcnc_call_ended_at = 0;
@@ -6046,6 +6047,10 @@ impl Checker {
 
     /// TG116: words after the program's M02/M30, said once.
     pub(super) fn words_after_end(&mut self, b: &BlockView<'_>) {
+        // (the one test of a block before any end, Checker::after_watch)
+        if !self.after_watch {
+            return;
+        }
         // (a Haas's local subprogram after the end, or after a main program's M99:
         // Checker::local_body)
         if self.local_called {
