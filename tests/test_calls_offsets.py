@@ -462,9 +462,6 @@ def test_a_linuxcnc_definition_after_the_end_is_judged_under_its_calls_offsets(
     "o100 call / G55 / G0 X-700 / M2 / o100 sub / o200 call / o100 endsub / o200 sub / "
     "G10 L2 P2 X0 / o200 endsub",
     "o100 call / G55 / G0 X-700 / M2 / o100 sub / G0 X-10 / o<ext> call / o100 endsub",
-    # (review 77 F4: its own G20 after the move leaves the second call in inches, rs274 -g
-    # USE_LENGTH_UNITS(CANON_UNITS_INCHES) there: that call's finding is not said in mm)
-    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / G20 / o100 endsub",
 ])
 def test_a_linuxcnc_definition_after_the_end_stays_silent_where_not_known(
         lcnc: str, blocks: str) -> None:

@@ -919,10 +919,7 @@ impl Checker {
         // left on, an end or return elsewhere, a tool length offset or units left, a call
         // not followed: the next call's offsets are not the profile's, review 76 F1)
         let w = &self.offsets_written;
-        let changed = self
-            .work_call
-            .as_ref()
-            .is_some_and(|c| c.unsure || c.units_at != self.machine.state.units)
+        let changed = self.work_call.as_ref().is_some_and(|c| c.unsure)
             || w.moved
             || w.shifted != 0
             || !w.unread.is_empty()
@@ -1001,7 +998,6 @@ impl Checker {
             others: c.others.clone(),
             codes_at: self.machine.distance_codes,
             held: false,
-            units_at: self.machine.state.units,
             unsure: false,
         };
         self.offsets_written = c.written.clone();
@@ -6857,9 +6853,6 @@ pub(super) struct WorkCall {
     /// tentative call ([`Other`]) is held.
     pub(super) codes_at: u32,
     pub(super) held: bool,
-    /// The units at its start: a units code of its own that changes them leaves a later
-    /// call in units not known there (review 77-calls77 F4).
-    pub(super) units_at: crate::modal::Units,
     /// It lost the profile's offsets ([`Checker::offsets_rewritten`]) while read: the
     /// findings held for the other calls are dropped at its end.
     pub(super) unsure: bool,
