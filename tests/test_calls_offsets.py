@@ -389,8 +389,6 @@ def test_a_haas_local_subprogram_is_judged_under_its_calls_offsets(
     # (calls in other units, a sequence number no call names, a P no block has)
     "G55 / G20 / M97 P1000 / G21 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
     "G55 / M97 P3000 / M30 / N1000 G0 X-29. / M99 / %",
-    # (the main's own move after the call, its G90/G91 not known there)
-    "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %",
     # (review 77 F2: a local subprogram's own M97, not followed, of a section that writes
     # G55's X or leaves a G52: the main's move after the call is not judged under G55's
     # value)
@@ -466,3 +464,10 @@ def test_a_linuxcnc_definition_after_the_end_is_judged_under_its_calls_offsets(
 def test_a_linuxcnc_definition_after_the_end_stays_silent_where_not_known(
         lcnc: str, blocks: str) -> None:
     assert said(LATER + blocks, lcnc) == []
+
+
+def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(haas: str) -> None:
+    """The caller's G90 read on across an M97 (review 77-calls77 F5), its G55 after the call
+    the profile's where the body writes no offset: -33."""
+    got = said(LOCAL + "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %", haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == [(7, "X goes to -33")]

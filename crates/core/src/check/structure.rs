@@ -409,8 +409,12 @@ impl Checker {
     /// program the file does not hold writes is not followed, erring on the side of the
     /// alarm ([`Checker::offsets_written`]).
     fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
-        let (call, column) = self.call_words(b);
-        self.call_mode_lost(&call, (b.line, column), &program_name(number), Some(number));
+        // (a Haas's local subprogram: the caller's G90/G91 read on, as before, its later
+        // calls' findings held where it writes one; review 77-calls77 F5)
+        if number < LOCAL_BODY {
+            let (call, column) = self.call_words(b);
+            self.call_mode_lost(&call, (b.line, column), &program_name(number), Some(number));
+        }
         // (a call that surely runs and enters the body at its start: not behind a jump,
         // condition or loop of the caller's, not a modal call (G66, run at the moves after
         // it, or none), not `M98 P.. Q..` entering at a sequence number, not a skippable
@@ -876,11 +880,11 @@ impl Checker {
                     }
                     (Some(a), Some(b)) if other => {
                         if !a.others.iter().any(|o| o.0 == b.work) {
-                            // (a LinuxCNC definition after the end: the G90/G91 it leaves
+                            // (a Haas local subprogram or a LinuxCNC definition after the end: the G90/G91 it leaves
                             // after the first call is not followed there, so a later call's
                             // mode is its own only where it writes none)
                             let tentative = b.mode_by_self && a.incremental != b.incremental
-                                || number >= LATER_DEFINITION;
+                                || number >= LOCAL_BODY;
                             a.others
                                 .push((b.work, b.call.clone(), b.line, b.outside, tentative));
                         }
