@@ -321,3 +321,153 @@ def test_a_linuxcnc_definition_that_selects_another_system_loses_the_offsets_at_
     # (a definition that changes no system: the caller's move judged under G55 as before)
     assert [g[:2] for g in said("o100 sub / G0 X-10 / o100 endsub / G21 G90 G55 / G0 X0 / "
                                 "o100 call / G0 X-700 / M2", lcnc)] == [(7, 4)]
+
+
+@pytest.fixture
+def haas(tmp_path: Path) -> str:
+    """A Haas mill in inches, X travel -30..30, G55 X-4 (`G0 X-29.` at -33 under it)."""
+    profile = tmp_path / "woh.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
+                       'Y = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n[work_offsets]\n'
+                       'G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n'
+                       'G55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n')
+    return str(profile)
+
+
+LOCAL = "% / O1000 / G20 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (the everyday multi-fixture program: one local subprogram called under G54, then G55)
+    ("M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+     [(9, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+    # (one call, under G55)
+    ("G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+     [(8, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 6")]),
+    # (the main's G54 at its end does not place the body)
+    ("M97 P1000 / G55 / M97 P1000 / G54 / M30 / N1000 G0 X-29. / M99 / %",
+     [(10, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+    # (repeated by L: under the offset of its call)
+    ("G55 / M97 P1000 L2 / M30 / N1000 G0 X-29. / M99 / %",
+     [(8, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 6")]),
+    # (its move before a G54 or a call of its own: run at the call's offset)
+    ("M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G54 / M99 / %",
+     [(9, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 7")]),
+    # (a main program that ends by M99, its local subprogram after it: review 77 F0's h108)
+    ("G55 / M97 P1000 / M99 / N1000 G0 X-29. / M99 / %",
+     [(8, 10, "X goes to -33", "N1000 runs as called by M97 P1000 of line 6")]),
+])
+def test_a_haas_local_subprogram_is_judged_under_its_calls_offsets(
+        haas: str, blocks: str, expected: list[tuple[int, int, str, str]]) -> None:
+    got = said(LOCAL + blocks, haas)
+    assert [(line, col, msg.split(" in machine")[0], msg.split("(")[-1].split(":")[0])
+            for line, col, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks", [
+    # (its G10 after the move writes G55's X before the second call: -29 there)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G10 L2 P2 X0. / M99 / %",
+    # (the main's G10 before the calls)
+    "G10 L2 P2 X0. / M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    # (a work offset's variable)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / #5241=0. / M99 / %",
+    # (its run in G91)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G91 G0 X-29. / M99 / %",
+    # (a G91 it leaves: the second call's mode)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / G91 / M99 / %",
+    # (a return elsewhere, an end: the second call may not run)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 P10 / %",
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M30 / %",
+    # (a G52 at the calls, a G110 (an offset the profile does not give), a jump before)
+    "G52 X2. / M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "G110 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "M97 P1000 / G110 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "IF [#1 EQ 1] GOTO 10 / G55 / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    # (a nested local call that writes G55's X)
+    "M97 P1000 / G55 / M97 P1000 / M30 / N1000 G0 X-29. / M97 P2000 / M99 / "
+    "N2000 G10 L2 P2 X0. / M99 / %",
+    # (calls in other units, a sequence number no call names, a P no block has)
+    "G55 / G20 / M97 P1000 / G21 / M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+    "G55 / M97 P3000 / M30 / N1000 G0 X-29. / M99 / %",
+    # (review 77 F2: a local subprogram's own M97, not followed, of a section that writes
+    # G55's X or leaves a G52: the main's move after the call is not judged under G55's
+    # value)
+    "M97 P1000 / G90 G55 / G0 X-27. / M30 / N1000 M97 P2000 / M99 / N2000 G10 L2 P2 X0. / "
+    "M99 / %",
+    "M97 P1000 / G90 G55 / G0 X-27. / M30 / N1000 M97 P2000 / M99 / N2000 G52 X4. / M99 / %",
+])
+def test_a_haas_local_subprogram_stays_silent_where_its_offset_is_not_known(
+        haas: str, blocks: str) -> None:
+    assert said(LOCAL + blocks, haas) == []
+
+
+LATER = "G21 G17 G90 G54 / G0 X0 Y0 / "
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (a definition after M2, called before it: rs274 -g runs its STRAIGHT_TRAVERSE(-700)
+    # at the call, after the call's SET_G5X_OFFSET(2))
+    ("G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+     [(7, 4, "X goes to -800", "o100 runs as called by o100 call of line 4")]),
+    # (one call under G54, one under G55: the second's)
+    ("o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+     [(8, 4, "X goes to -800", "o100 runs as called by o100 call of line 5")]),
+    # (a named label, a return after the move)
+    ("G55 / o<abc> call / M2 / o<abc> sub / G0 X-700 / o<abc> return / o<abc> endsub",
+     [(7, 4, "X goes to -800", "o<abc> runs as called by o<abc> call of line 4")]),
+    # (called in inches: -28 in, -711.2 mm, -811.2 under G55)
+    ("G20 / G55 / o100 call / M2 / o100 sub / G0 X-28 / o100 endsub",
+     [(8, 4, "X goes to -811.2", "o100 runs as called by o100 call of line 5")]),
+    # (the main's own move after a G55 of its own after the call: the body writes nothing)
+    ("o100 call / G55 / G90 G0 X-700 / M2 / o100 sub / G0 X0 / o100 endsub",
+     [(5, 8, "X goes to -800", "work -700 + G55 offset -100.0), outside the travel -762 to "
+       "762")]),
+])
+def test_a_linuxcnc_definition_after_the_end_is_judged_under_its_calls_offsets(
+        lcnc: str, blocks: str, expected: list[tuple[int, int, str, str]]) -> None:
+    got = said(LATER + blocks, lcnc)
+    assert [(line, col, msg.split(" in machine")[0], msg.split("(")[-1].split(":")[0])
+            for line, col, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks", [
+    # (its G10 or variable write after the move, before the second call: G55's X is 0 there)
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / G10 L2 P2 X0 / o100 endsub",
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / #5241=0 / o100 endsub",
+    # (a system the profile does not give, its run in G91, a G91 it leaves)
+    "o100 call / G55 / o100 call / M2 / o100 sub / G59.1 / G0 X-700 / o100 endsub",
+    "o100 call / G55 / o100 call / M2 / o100 sub / G91 G0 X-700 / o100 endsub",
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / G91 / o100 endsub",
+    # (its first run ends the program: the second call never runs)
+    "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-700 / M2 / o100 endsub",
+    # (a G92 shift at the call, a call inside a condition, an M72 restore between)
+    "G0 X-250 Y0 / G92 X-400 / o100 call / M2 / o100 sub / G0 X700 / o100 endsub",
+    "o1 if [#1 GT 0] / o100 call / o1 endif / G55 / o100 call / M2 / o100 sub / G0 X-700 / "
+    "o100 endsub",
+    "M70 / G55 / o100 call / M72 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+    # (a G10 or variable write of the main's before the call)
+    "G55 / G10 L2 P2 X0 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+    "#5241=0 / G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
+    # (the main's move after the call with no G54-G59 of its own; after a G10 of the body's)
+    "G55 / o100 call / G0 X-700 / M2 / o100 sub / G0 X0 / o100 endsub",
+    "o100 call / G55 / G90 G0 X-700 / M2 / o100 sub / G0 X0 / G10 L2 P2 X0 / o100 endsub",
+    # (called only from another definition after the end)
+    "G55 / o200 call / M2 / o100 sub / G0 X-700 / o100 endsub / o200 sub / o100 call / "
+    "o200 endsub",
+    # (review 77 F1: the definition calls another after it that writes G55's X (rs274 -g:
+    # SET_G5X_OFFSET(2, 0, ...) at the call, the G55's move then at -700), or a subroutine
+    # the file does not hold: the main's move after the call is not judged under G55's value)
+    "o100 call / G55 / G0 X-700 / M2 / o100 sub / o200 call / o100 endsub / o200 sub / "
+    "G10 L2 P2 X0 / o200 endsub",
+    "o100 call / G55 / G0 X-700 / M2 / o100 sub / G0 X-10 / o<ext> call / o100 endsub",
+])
+def test_a_linuxcnc_definition_after_the_end_stays_silent_where_not_known(
+        lcnc: str, blocks: str) -> None:
+    assert said(LATER + blocks, lcnc) == []
+
+
+def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(haas: str) -> None:
+    """The caller's G90 read on across an M97 (review 77-calls77 F5), its G55 after the call
+    the profile's where the body writes no offset: -33."""
+    got = said(LOCAL + "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %", haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == [(7, "X goes to -33")]

@@ -579,6 +579,11 @@ impl ProgramSplit {
         false
     }
 
+    /// Whether an end or a return came before, no program begun since.
+    pub fn follows_end(&self) -> bool {
+        self.after_end
+    }
+
     /// After a block: whether it ended the program or returned from it.
     pub fn ended(&mut self, ends_or_returns: bool) {
         self.after_end |= ends_or_returns;

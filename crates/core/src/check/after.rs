@@ -82,6 +82,15 @@ impl Checker {
         if self.work_call.as_ref().is_some_and(|w| w.held) {
             self.work_call_tentative_end();
         }
+        self.after_watch |= self.local_called;
+        // (a Haas's local subprogram returns: the main program in hand again)
+        if !ends
+            && self
+                .in_hand
+                .is_some_and(|n| n >= super::structure::LOCAL_BODY)
+        {
+            self.local_body_end();
+        }
     }
 
     /// A call of program `number`: the caller marked where that one is.

@@ -1007,6 +1007,13 @@ impl Checker {
         true
     }
 
+    /// Whether a program or definition of key `number` was read before here (held for its
+    /// calls, or given up).
+    pub(super) fn read_before(&self, number: &Key) -> bool {
+        self.pending.iter().any(|p| &p.body.number == number)
+            || self.given_up.iter().any(|g| &g.number == number)
+    }
+
     /// After a call of the subprogram `pending[k]`: the work offsets it may have written
     /// are its caller's from here ([`Checker::offsets_written`]; review 58a F1: a G10 of an
     /// O2500 the main calls after O2000 holds no position of O2000's); where it lost the

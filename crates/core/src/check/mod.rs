@@ -1032,6 +1032,20 @@ pub struct Checker {
     /// offsets as they were ([`Checker::keeps_offsets`]), or opened or closed a LinuxCNC
     /// definition read apart: the offsets are not lost at it.
     call_keeps: bool,
+    /// A Haas's M97 of the program in hand was kept with its work offset
+    /// ([`Checker::local_call`]): a block after an end that starts with the sequence number it
+    /// names begins its local subprogram ([`Checker::local_body`]). And the number of the
+    /// program whose local subprogram is in hand (its [`Checker::in_hand`] then the body's
+    /// key), given back at the body's M99.
+    local_called: bool,
+    local_main: Option<i64>,
+    /// An end (M02/M30, [`Checker::ended_line`]) was read, or a return after an M97 was kept
+    /// ([`Checker::local_called`]): the blocks after it are looked at
+    /// ([`Checker::words_after_end`]).
+    after_watch: bool,
+    /// LinuxCNC: the labels of the main program's calls kept for a definition after its end
+    /// ([`Checker::later_call`]).
+    later_called: Option<Vec<Vec<u8>>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1771,6 +1785,10 @@ impl Checker {
             offsets_unread_only: false,
             call_unread_here: false,
             call_keeps: false,
+            local_called: false,
+            local_main: None,
+            after_watch: false,
+            later_called: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -2605,10 +2623,16 @@ impl Checker {
                 // (a call of a body that keeps them, or a condition's or loop's own line,
                 // loses no offset: the two are never one line)
                 if !std::mem::take(&mut self.call_keeps) && !self.linuxcnc_flow_offsets(b) {
+                    // (a call of a LinuxCNC definition after the end, Checker::later_call:
+                    // only its writes, known there)
+                    let unread_only = std::mem::take(&mut self.call_unread_here)
+                        && (!self.offsets_lost || self.offsets_unread_only);
                     self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                    self.offsets_unread_only = unread_only;
                 }
             }
             self.call_keeps = false;
+            self.call_unread_here = false;
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
@@ -2686,7 +2710,7 @@ impl Checker {
             }
             dialect::DataBlock::Program => {}
         }
-        self.words_after_end(b.line);
+        self.words_after_end(b);
         let first_words = self.first_words;
         self.program_number(b);
         if !b.statements.is_empty() {
@@ -2992,6 +3016,7 @@ impl Checker {
                 self.linuxcnc_later.main_end = b.line;
             }
             self.ended_line = b.line;
+            self.after_watch = true;
             self.main_ended = true;
             // (LinuxCNC: one in a block known to run ends it too: review 51, F13)
             if self.config.family != Family::LinuxCnc || self.linuxcnc_runs_surely() {

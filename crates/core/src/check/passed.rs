@@ -395,6 +395,7 @@ impl Checker {
         self.params = run.params;
         self.arrival = run.arrival;
         self.ended_line = run.ended_line;
+        self.after_watch = run.after_watch;
         self.skipped_end = run.skipped_end;
         self.surely_ended = run.surely_ended;
         self.sub_ended = run.sub_ended;

@@ -294,6 +294,7 @@ impl Checker {
         self.conflict_at = None;
         self.programs += 1;
         self.ended_line = 0;
+        self.after_watch = false;
         self.skipped_end = false;
         self.surely_ended = false;
         self.linuxcnc_call_ended_at = 0;
@@ -408,13 +409,12 @@ impl Checker {
     /// program the file does not hold writes is not followed, erring on the side of the
     /// alarm ([`Checker::offsets_written`]).
     fn call_not_followed(&mut self, b: &BlockView<'_>, number: i64) {
-        let (call, column) = self.call_words(b);
-        self.call_mode_lost(
-            &call,
-            (b.line, column),
-            &format!("O{number:04}"),
-            Some(number),
-        );
+        // (a Haas's local subprogram: the caller's G90/G91 read on, as before, its later
+        // calls' findings held where it writes one; review 77-calls77 F5)
+        if number < LOCAL_BODY {
+            let (call, column) = self.call_words(b);
+            self.call_mode_lost(&call, (b.line, column), &program_name(number), Some(number));
+        }
         // (a call that surely runs and enters the body at its start: not behind a jump,
         // condition or loop of the caller's, not a modal call (G66, run at the moves after
         // it, or none), not `M98 P.. Q..` entering at a sequence number, not a skippable
@@ -439,11 +439,12 @@ impl Checker {
             self.offsets_written.then(&writes);
             self.offset_writer(&writes, loses);
             if loses {
-                self.offsets_rewritten(b.line, &format!("O{number:04} changes the offsets"));
+                let name = program_name(number);
+                self.offsets_rewritten(b.line, &format!("{name} changes the offsets"));
             }
         } else if !self.file_programs.contains(&number) {
             // (the G52 it leaves on, known at the file's end: crate::check::leaves)
-            if surely && self.config.family == Family::MacroB {
+            if surely && self.config.family == Family::MacroB && number < LOCAL_BODY {
                 self.later_shift_called(number);
             }
             // (a program not read yet: what it writes is known at the file's end)
@@ -457,6 +458,129 @@ impl Checker {
         }
     }
 
+    /// A Haas's M97 (`M97 P1000`: the blocks of the program in hand from its N1000 to an M99,
+    /// Haas Mill Operator's Manual, "M97 Local Sub-Program Call"), in a main program not read
+    /// apart, under a profile that gives work offsets: kept as a call of a program written
+    /// after it, by the key [`local_key`] gives, in the one implementation of such calls --
+    /// its work offset and distance mode ([`Checker::call_work`]), its units, its G90/G91
+    /// not known after it and its writes known only where its blocks are read
+    /// ([`Checker::call_not_followed`]). Its blocks, after the main's M30, are read under the
+    /// calls' offset ([`Checker::local_body`]), as an O2000 written after its M98 calls is
+    /// (issue 32 item 4: `M97 P1000` / `G55` / `M97 P1000` / `M30` / `N1000 G0 X-700.` /
+    /// `M99` runs X-700. at -800 at the second call). A P not known, a sequence number above
+    /// 99999, or an M97 of a local subprogram's own: as before, not followed.
+    #[cold]
+    #[inline(never)]
+    fn local_call(&mut self, b: &BlockView<'_>) {
+        let Some(key) = b
+            .words
+            .iter()
+            .enumerate()
+            .find(|(_, w)| w.letter == b'P' && w.index.is_empty())
+            .and_then(|(i, _)| self.readable[i])
+            .filter(|v| v.is_whole())
+            .and_then(|v| local_key(self.in_hand, v.trunc()))
+        else {
+            // (inside a local subprogram: an M97 not followed, which may change the
+            // offsets its callers run under after it; review 77-calls77 F2)
+            if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
+                self.after_mark();
+            }
+            return;
+        };
+        self.local_called = true;
+        self.after_call(key);
+        self.call_work(b, key);
+        self.call_not_followed(b, key);
+        let s = &self.machine.state;
+        let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
+        self.call_units
+            .entry(key)
+            .and_modify(|known| {
+                if *known != units {
+                    *known = None;
+                }
+            })
+            .or_insert(units);
+    }
+
+    /// A block after an end or a return (M30, M99) of a Haas's program whose M97 calls were
+    /// kept ([`Checker::local_call`]): where it starts with a sequence number one of them
+    /// names, the local subprogram begins, read as a program written after its calls is
+    /// ([`Checker::work_of_calls`]): under the calls' work offset where they agree (in
+    /// their distance mode and units), under none where they do not or one was made where
+    /// it was not known (a G110-G129, a G10, a call not followed before it).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn local_body(&mut self, b: &BlockView<'_>) {
+        if !self.split.follows_end() || self.early_on {
+            return;
+        }
+        let Some(p) = b
+            .words
+            .first()
+            .filter(|w| w.letter == b'N' && w.index.is_empty() && w.expression.is_empty())
+            .and_then(|w| std::str::from_utf8(w.number).ok())
+            .and_then(|n| n.parse::<i64>().ok())
+        else {
+            return;
+        };
+        let main = if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
+            self.local_main
+        } else {
+            self.in_hand
+        };
+        let Some(key) = local_key(main, p).filter(|k| self.call_works.contains_key(k)) else {
+            return;
+        };
+        // (the body before it, run on into: its end)
+        if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
+            self.local_body_end();
+        }
+        self.local_body_begin(key, main);
+    }
+
+    /// A local subprogram (Haas M97) or a LinuxCNC definition after the end, called before
+    /// it (`key`), begins: read under its calls' offset, mode and units; `main` the program
+    /// in hand again at its end.
+    fn local_body_begin(&mut self, key: i64, main: Option<i64>) {
+        self.local_main = main;
+        self.in_hand = Some(key);
+        self.file_programs.insert(key);
+        self.offsets_unread_only = false;
+        self.outside = [0; 9];
+        self.offsets_written = Default::default();
+        self.units_unknown = false;
+        match self.call_units.get(&key) {
+            Some(&Some((units, feed_units, given))) => {
+                let s = &mut self.machine.state;
+                (s.units, s.feed_units, s.units_given) = (units, feed_units, given);
+            }
+            _ => {
+                self.units_unknown = true;
+                self.machine.state.units_given = false;
+            }
+        }
+        // (its run starts in its calls' distance mode, not in the one the main left at its
+        // end; calls that disagree: under no offset)
+        self.work = None;
+        if let Some(Some(c)) = self.call_works.get(&key) {
+            self.machine.state.incremental = c.incremental;
+            self.work_of_calls(key);
+        }
+    }
+
+    /// The local subprogram in hand returns (M99) or another begins: the state read before
+    /// it given back ([`Checker::work_call`]), it marked where it leaves a tool length
+    /// offset or other units ([`Checker::after_end`]), the main program in hand again.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn local_body_end(&mut self) {
+        self.work_call_end();
+        self.after_end();
+        self.in_hand = self.local_main;
+    }
+
     /// A call by number's calling words as the messages name it (`M98 P1000`, `G66 P9010`,
     /// `G65 P9010`) and the column of its P (1 where it has none).
     fn call_words(&self, b: &BlockView<'_>) -> (String, usize) {
@@ -467,6 +591,11 @@ impl Checker {
         let token = p.map_or_else(String::new, |w| w.token());
         let call = if self.values.ms.contains(&98) {
             format!("M98 {token}")
+        } else if self.values.ms.contains(&97) {
+            format!("M97 {token}")
+        } else if let Some(&(_, _, text)) = b.statements.iter().find(|s| s.1 == Kind::Call) {
+            let label = crate::statement::o_label(text);
+            return (format!("{} call", String::from_utf8_lossy(&label)), 1);
         } else if self.values.gs().contains(&66) {
             format!("G66 {token}")
         } else {
@@ -496,6 +625,11 @@ impl Checker {
                 // (a Haas's M97 inside a program read apart: a G90/G91 of the sequence it
                 // runs is not followed; review 47, F1)
                 self.early_call_unread(b);
+            } else if self.config.haas
+                && !self.config.work_offsets.is_empty()
+                && self.values.ms.contains(&97)
+            {
+                self.local_call(b);
             }
             return;
         }
@@ -746,7 +880,11 @@ impl Checker {
                     }
                     (Some(a), Some(b)) if other => {
                         if !a.others.iter().any(|o| o.0 == b.work) {
-                            let tentative = b.mode_by_self && a.incremental != b.incremental;
+                            // (a Haas local subprogram or a LinuxCNC definition after the end: the G90/G91 it leaves
+                            // after the first call is not followed there, so a later call's
+                            // mode is its own only where it writes none)
+                            let tentative = b.mode_by_self && a.incremental != b.incremental
+                                || number >= LOCAL_BODY;
                             a.others
                                 .push((b.work, b.call.clone(), b.line, b.outside, tentative));
                         }
@@ -1616,6 +1754,19 @@ impl Checker {
                 // (read apart, not run here: the offsets are not lost at its sub)
                 self.call_keeps = self.early_on && !self.config.work_offsets.is_empty();
             }
+            Some((true, name))
+                if !was_open && self.open_definition.is_some() && self.later_called.is_some() =>
+            {
+                self.later_definition(name);
+            }
+            Some((false, _))
+                if was_open
+                    && self.open_definition.is_none()
+                    && self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) =>
+            {
+                self.local_body_end();
+                self.call_keeps = true;
+            }
             Some((false, _)) if was_open && self.open_definition.is_none() => {
                 let read_apart = self.early_on;
                 self.definition_end();
@@ -1631,6 +1782,18 @@ impl Checker {
                         .is_some_and(|k| self.keeps_offsets(k));
             }
             _ => {}
+        }
+        if !self.config.work_offsets.is_empty()
+            && !self.early_on
+            && b.statements.iter().any(|s| s.1 == Kind::Call)
+        {
+            if self.open_definition.is_none() {
+                self.later_call(b);
+            } else if self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) {
+                // (a call inside a definition after the end, not followed: it may change
+                // the offsets its callers run under after it; review 77-calls77 F1)
+                self.after_mark();
+            }
         }
         if !self.early_on && self.pending.is_empty() && self.given_up.is_empty()
             || self.open_definition.is_none() && self.linuxcnc_dead()
@@ -1660,6 +1823,90 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// LinuxCNC, under a profile that gives work offsets: an `o<name> call` of the main
+    /// program, outside its conditions and loops and before its end, of a label no definition
+    /// read before it names (one after M2, which rs274 runs at the call: `rs274 -g` gives its
+    /// moves after the call's SET_G5X_OFFSET), kept as a call of a program written after it
+    /// by a key of its own ([`LATER_DEFINITION`]), in the one implementation of such calls, as
+    /// a Haas's M97 is ([`Checker::local_call`]): its work offset, distance mode and units
+    /// ([`Checker::call_work`]). The definition after the end is read under the calls'
+    /// offset ([`Checker::later_definition`]).
+    #[cold]
+    #[inline(never)]
+    fn later_call(&mut self, b: &BlockView<'_>) {
+        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+            return;
+        }
+        let calls: Vec<Vec<u8>> = b
+            .statements
+            .iter()
+            .filter(|&&(_, kind, text)| {
+                kind == Kind::Call
+                    && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+            })
+            .map(|&(_, _, text)| self.linuxcnc_call_label(text))
+            .collect();
+        let [label] = calls.as_slice() else {
+            return;
+        };
+        let key = super::called::Key::Label(label.clone());
+        if label.len() < 2 || crate::statement::computed_label(label) || self.read_before(&key) {
+            return;
+        }
+        let labels = self.later_called.get_or_insert_with(Vec::new);
+        let index = labels.iter().position(|l| l == label).unwrap_or_else(|| {
+            labels.push(label.clone());
+            labels.len() - 1
+        });
+        let key = LATER_DEFINITION + index as i64;
+        self.after_call(key);
+        self.call_work(b, key);
+        // (what it writes is known where its lines are read: a G54-G59 of the main's own
+        // after the call judged, held to the file's end, as after a FANUC's M98 of a
+        // program written later; Checker::work_unread_reselected)
+        let unread = super::limits::Written {
+            unread: vec![key],
+            ..Default::default()
+        };
+        self.call_unread_here = true;
+        self.offsets_written.then(&unread);
+        self.offset_writer(&unread, false);
+        let s = &self.machine.state;
+        let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
+        self.call_units
+            .entry(key)
+            .and_modify(|known| {
+                if *known != units {
+                    *known = None;
+                }
+            })
+            .or_insert(units);
+    }
+
+    /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
+    /// ([`Checker::later_call`]) name: read as a program written after its calls is
+    /// ([`Checker::work_of_calls`]), under the calls' work offset where they agree (in their
+    /// distance mode and units), under none where they do not or one was made where it was
+    /// not known; its `endsub` gives the state back ([`Checker::local_body_end`]).
+    #[cold]
+    #[inline(never)]
+    fn later_definition(&mut self, name: &[u8]) {
+        let Some(index) = self
+            .later_called
+            .as_ref()
+            .and_then(|labels| labels.iter().position(|l| l.as_slice() == name))
+        else {
+            return;
+        };
+        let key = LATER_DEFINITION + index as i64;
+        if !self.main_ended() || self.early_on || !self.call_works.contains_key(&key) {
+            return;
+        }
+        self.local_body_begin(key, None);
+        // (its sub line runs nothing: the offsets are not lost at it)
+        self.call_keeps = true;
     }
 
     /// TG138: an endsub of a LinuxCNC subroutine file that names another label than its sub.
@@ -5803,11 +6050,23 @@ impl Checker {
     }
 
     /// TG116: words after the program's M02/M30, said once.
-    pub(super) fn words_after_end(&mut self, line: usize) {
+    pub(super) fn words_after_end(&mut self, b: &BlockView<'_>) {
+        // (the one test of a block before any end, Checker::after_watch)
+        if !self.after_watch {
+            return;
+        }
+        // (a Haas's local subprogram after the end, or after a main program's M99:
+        // Checker::local_body)
+        if self.local_called {
+            self.local_body(b);
+        }
+        if self.ended_line == 0 {
+            return;
+        }
+        let line = b.line;
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
         // LinuxCNC subroutine's body after the end is its definition, run when called)
-        if self.ended_line > 0
-            && !self.skipped_end
+        if !self.skipped_end
             && !self.after_end_reported
             && !self.unfollowed_noted
             && !self.reading_end.inside_block()
@@ -6513,6 +6772,38 @@ pub(super) struct OpenBlock {
 /// [`Checker::linuxcnc_loop_turns`] keeps it: its opening line, for a `repeat` whether its
 /// count (read where it opened) is 2 or more, the definitions its body holds (label, line,
 /// column), and whether its lines up to here surely ran.
+/// The keys of a Haas's local subprograms (M97) among the program numbers
+/// ([`Checker::call_works`], [`Checker::in_hand`]...): above every O number (eight digits),
+/// below the marks of [`Finding::pending_on`](super::Finding) built from program numbers.
+pub(super) const LOCAL_BODY: i64 = 1 << 38;
+
+/// The keys of LinuxCNC definitions after the main program's end called before it
+/// ([`Checker::later_call`]): above every [`LOCAL_BODY`] key, the place of the label in
+/// [`Checker::later_called`] added.
+pub(super) const LATER_DEFINITION: i64 = LOCAL_BODY + 20_000_000_000;
+
+/// The key of the local subprogram at sequence number `sequence` of program `main` (None:
+/// the file's first program with no O number): None where either is above 99999 (or a
+/// local subprogram's own M97).
+fn local_key(main: Option<i64>, sequence: i64) -> Option<i64> {
+    let main = main.unwrap_or(0);
+    let five = 0..100_000;
+    (five.contains(&main) && five.contains(&sequence))
+        .then_some(LOCAL_BODY + main * 100_000 + sequence)
+}
+
+/// A program's name in the messages: `O2000`, or a local subprogram's sequence number
+/// (`N1000`).
+pub(super) fn program_name(n: i64) -> String {
+    if n >= LATER_DEFINITION {
+        "a subroutine after the end".to_string()
+    } else if n >= LOCAL_BODY {
+        format!("N{}", (n - LOCAL_BODY) % 100_000)
+    } else {
+        format!("O{n:04}")
+    }
+}
+
 /// The work offset in force at a call of a program by number ([`Checker::call_works`]): the
 /// offset (54-59), the distance mode (G91: true), and the first such call's words and line.
 #[derive(Clone, Debug)]
@@ -6583,7 +6874,12 @@ impl WorkCall {
 
     /// What a TG601 of a position run by the call `call` of line `line` adds.
     pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
-        let program = number.map_or_else(|| "the program".to_string(), |n| format!("O{n:04}"));
+        // (a LinuxCNC definition after the end: its label, the call's)
+        let program = match number {
+            Some(n) if n >= LATER_DEFINITION => call.trim_end_matches(" call").to_string(),
+            Some(n) => program_name(n),
+            None => "the program".to_string(),
+        };
         format!(
             " ({program} runs as called by {call} of line {line}: a subprogram written after \
              its call runs under the work offset in force there)"
