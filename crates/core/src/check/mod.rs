@@ -1325,6 +1325,17 @@ pub struct Checker {
     /// another label outside them with nothing but M2/M30 after it (the return that ends the
     /// file); 0: none.
     sub_returns: (usize, usize, usize),
+    /// LinuxCNC: the block left open at that first endsub which rs274 may skip from when the
+    /// body runs (an `if`, `while` or `repeat` whose condition or count is not surely true;
+    /// a `do` never skips): its line, its statement and the endsub's line.
+    sub_left_open: Option<(usize, Vec<u8>, usize)>,
+    /// LinuxCNC: what stands after that endsub, which a run as a program reads as the main
+    /// program (rs274 skips a definition not called to the first o-word line of its label):
+    /// whether any block does, whether an M2/M30 line does, and the line of the first call of
+    /// the definition's label among them (0: none).
+    sub_after_return: (bool, bool, usize),
+    /// LinuxCNC: the values of that call's arguments, where each is a constant.
+    sub_call_args: Option<Vec<f64>>,
     /// LinuxCNC: in a subroutine file, an endsub naming another label outside the body's
     /// conditions and loops has been read while its definition is open: a call returns
     /// there, a run as a program skips on to the definition's own endsub, so no line before
@@ -1496,6 +1507,8 @@ pub struct Checker {
     linuxcnc_definition_mode_unsure: bool,
     /// LinuxCNC: the labels of the conditions and loops open in the open definition's body.
     linuxcnc_definition_flow: Vec<Vec<u8>>,
+    /// LinuxCNC: the line and statement of each of them, innermost last.
+    linuxcnc_definition_opened: Vec<(usize, Vec<u8>)>,
     /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
     /// definition where it stands, so its `endsub` gives it back (review 17).
     linuxcnc_definition_feed: Option<i64>,
@@ -1808,6 +1821,9 @@ impl Checker {
             sub_label: Vec::new(),
             sub_preamble: (0, 0),
             sub_returns: (0, 0, 0),
+            sub_left_open: None,
+            sub_after_return: (false, false, 0),
+            sub_call_args: None,
             sub_returned: false,
             sub_percent: None,
             called_as: None,
@@ -1849,6 +1865,7 @@ impl Checker {
             linuxcnc_fraction_said: false,
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
+            linuxcnc_definition_opened: Vec::new(),
             linuxcnc_definition_feed: None,
             linuxcnc_if_speed: Vec::new(),
             linuxcnc_speed_back: None,

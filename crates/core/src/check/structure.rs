@@ -372,6 +372,7 @@ impl Checker {
         self.linuxcnc_bodies.clear();
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
+        self.linuxcnc_definition_opened.clear();
         self.linuxcnc_definition_feed = None;
         self.linuxcnc_if_speed.clear();
         self.linuxcnc_speed_back = None;
@@ -1451,6 +1452,12 @@ impl Checker {
                     let depth = flow.len();
                     linuxcnc_flow(flow, text);
                     let open = flow.len();
+                    if open > depth {
+                        self.linuxcnc_definition_opened
+                            .push((b.line, text.to_vec()));
+                    } else {
+                        self.linuxcnc_definition_opened.truncate(open);
+                    }
                     self.linuxcnc_body_distance.scope(open, switched);
                     // (a body's conditions are not evaluated: which branch runs, not known)
                     let mut blocks = std::mem::take(&mut self.linuxcnc_plane_body_blocks);
@@ -1541,6 +1548,7 @@ impl Checker {
                 if self.sub_returns.0 == 0 {
                     self.sub_returns.0 = b.line;
                     self.sub_returns.1 = b.statements.first().map_or(1, |s| s.0);
+                    self.sub_left_open = self.block_left_open(b.line);
                 }
                 None
             }
@@ -1570,6 +1578,9 @@ impl Checker {
             });
             plain && ends
         };
+        if self.sub_returns.0 != 0 && b.line > self.sub_returns.0 {
+            self.after_early_return(b, program_end);
+        }
         // (the return that ends the file: nothing after it but M2/M30)
         if !program_end && self.sub_returns.2 != b.line {
             self.sub_returns.2 = 0;
@@ -1694,6 +1705,209 @@ impl Checker {
                        subroutine file, which a call runs from its sub, returns here"
             .to_string();
         self.report(Rule::LinuxCncRefuses, message, line, column);
+    }
+
+    /// LinuxCNC: of the blocks of the body open at its first endsub (a subroutine file's
+    /// early return), the innermost rs274 may skip from when a call runs the body: an `if`
+    /// or `while` whose condition, or a `repeat` whose count, is not surely true (a `do`
+    /// runs its lines before any test, so it never skips to its `while`). Its line, its
+    /// statement and the endsub's line.
+    fn block_left_open(&self, endsub: usize) -> Option<(usize, Vec<u8>, usize)> {
+        self.linuxcnc_definition_opened
+            .iter()
+            .rev()
+            .find(|(_, text)| {
+                let (keyword, condition) = o_keyword_condition(text);
+                let value = (!condition.contains(&b'#'))
+                    .then(|| self.linuxcnc_condition_value(condition))
+                    .flatten();
+                match keyword.as_slice() {
+                    b"if" | b"while" => value.is_none_or(|v| v == 0.0),
+                    b"repeat" => value.is_none_or(|v| v.round() < 1.0),
+                    _ => false,
+                }
+            })
+            .map(|(line, text)| (*line, text.clone(), endsub))
+    }
+
+    /// LinuxCNC: a block after a subroutine file's early return (an endsub inside a block of
+    /// the body), which a run of the file as a program reads as its main program: whether
+    /// one stands there, whether an M2/M30 line does, and the first call of the definition's
+    /// label that surely runs there (no o-word block opened before it, no end): a call runs
+    /// the body from its `sub`, so the block left open decides.
+    fn after_early_return(&mut self, b: &BlockView<'_>, program_end: bool) {
+        let after = &mut self.sub_after_return;
+        after.0 |= !b.words.is_empty() || !b.statements.is_empty();
+        if after.1 || after.2 != 0 {
+            after.1 |= program_end;
+            return;
+        }
+        after.1 |= program_end;
+        for &(_, kind, text) in b.statements {
+            if kind == Kind::Flow {
+                // (a block of the main program: a call in it may not run)
+                self.sub_after_return.2 = usize::MAX;
+                return;
+            }
+            if kind == Kind::Call
+                && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
+                && crate::statement::o_label(text) == self.sub_label
+                && !b.skip
+            {
+                self.sub_after_return.2 = b.line;
+                self.sub_call_args = self.call_arguments(text);
+                return;
+            }
+        }
+    }
+
+    /// The values of a LinuxCNC call's arguments (`o<min> call [0] [2.5]`), where each is a
+    /// constant the checker works out (no parameter read); None otherwise.
+    fn call_arguments(&self, text: &[u8]) -> Option<Vec<f64>> {
+        let (_, rest) = o_keyword_condition(text);
+        let mut values = Vec::new();
+        let mut depth = 0usize;
+        let mut start = 0;
+        for (i, &c) in rest.iter().enumerate() {
+            match c {
+                b'[' => {
+                    if depth == 0 {
+                        start = i;
+                    }
+                    depth += 1;
+                }
+                b']' => {
+                    depth = depth.checked_sub(1)?;
+                    if depth == 0 {
+                        let arg = &rest[start..=i];
+                        if arg.contains(&b'#') {
+                            return None;
+                        }
+                        values.push(self.linuxcnc_condition_value(arg)?);
+                    }
+                }
+                b' ' | b'\t' => {}
+                _ if depth == 0 => return None,
+                _ => {}
+            }
+        }
+        Some(values)
+    }
+
+    /// TG114, TG142: a LinuxCNC file whose definition's only endsub of its label stands
+    /// inside a block of the body left open (`o<min> sub` / `o100 if [#1]` / `G0 X1` /
+    /// `o<min> endsub` / `M2`). rs274 runs the file as a program past the definition: not
+    /// called, a definition is skipped to the first o-word line of its label
+    /// (interp_o_word.cc convert_control_functions, `skipping_o`), the endsub here, and the
+    /// lines after it are the main program's (TG114 only where no M2/M30 is among them, and
+    /// the file does not end at a closing %). A call runs the body from its sub: where the
+    /// block's condition is false (a count below one), rs274 skips to the next o-word line
+    /// of the block's label, which the file does not have, and reads to its end ("File ended
+    /// with no percent sign or program end"); where it holds, it returns at the endsub. An
+    /// error where a call of the main program that surely runs gives the condition values
+    /// that make it false; else a warning at the block (TG142).
+    fn definition_returns_open(&mut self, percent_ended: bool) {
+        let endsub = self.sub_returns.0;
+        let (after, end, call) = self.sub_after_return;
+        let name = String::from_utf8_lossy(&self.sub_label).into_owned();
+        if after && !end && !percent_ended && self.ended_line == 0 {
+            let message = format!(
+                "the program has no M02 or M30: run as a program, rs274 skips the {name} \
+                 definition, which no line before it calls, to the endsub on line {endsub} \
+                 (the first o-word line of its label: interp_o_word.cc, skipping_o) and reads \
+                 the lines after it as the main program, with no end among them"
+            );
+            let line = self.last_line.max(1);
+            self.report(Rule::NoProgramEnd, message, line, 1);
+        }
+        let Some((open, text, _)) = self.sub_left_open.take() else {
+            return;
+        };
+        let (keyword, condition) = o_keyword_condition(&text);
+        let label = String::from_utf8_lossy(&crate::statement::o_label(&text)).into_owned();
+        let keyword = String::from_utf8_lossy(&keyword).into_owned();
+        let (when_false, when_true, then_false) = if keyword == "repeat" {
+            (
+                "its count is below one",
+                "its count is one or more",
+                "it is below one",
+            )
+        } else {
+            (
+                "its condition is false",
+                "its condition holds",
+                "it is false",
+            )
+        };
+        let args = self.sub_call_args.take();
+        let value = (call != 0 && call != usize::MAX)
+            .then(|| self.condition_at_call(condition, &args))
+            .flatten()
+            .map(|v| {
+                if keyword == "repeat" {
+                    v.round() >= 1.0
+                } else {
+                    v != 0.0
+                }
+            });
+        if value == Some(false) {
+            let message = format!(
+                "File ended with no percent sign or program end (rs274ngc): the call on line \
+                 {call} runs {name}, whose {label} {keyword} (line {open}) is not closed before \
+                 its endsub (line {endsub}); with the call's values {when_false}, so rs274 \
+                 skips to the next o-word line of {label}, which the file does not have, and \
+                 reads to its end (interp_o_word.cc, skipping_o)"
+            );
+            self.report(Rule::NoProgramEnd, message, call, 1);
+            return;
+        }
+        let called = match value {
+            Some(true) => format!("the call on line {call} gives values where {when_true}; "),
+            _ => String::new(),
+        };
+        let message = format!(
+            "{label} {keyword} is not closed before the {name} endsub on line {endsub}: a call \
+             returns at that endsub where {when_true}, but where {then_false} rs274 skips to \
+             the next o-word line of {label}, which the file does not have, and reads to its \
+             end ('File ended with no percent sign or program end'); {called}a run of the file \
+             as a program skips the definition to that endsub and is not affected (close the \
+             block before the endsub)"
+        );
+        let column = 1;
+        self.report(Rule::BlockOpenAtEndsub, message, open, column);
+    }
+
+    /// The value of a condition of a definition's body at a call of the main program whose
+    /// arguments are constants (`o<min> call [0]`): its parameters #1 to #n those values
+    /// (interp_o_word.cc execute_call), any other parameter not known.
+    fn condition_at_call(&mut self, condition: &[u8], args: &Option<Vec<f64>>) -> Option<f64> {
+        let args = args.as_ref()?;
+        // (only #1 to #n read: every `#` followed by the digits of one of them)
+        let mut i = 0;
+        while let Some(p) = condition[i..].iter().position(|&c| c == b'#') {
+            let start = i + p + 1;
+            let digits = condition[start..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            let n: usize = std::str::from_utf8(&condition[start..start + digits])
+                .ok()?
+                .parse()
+                .ok()?;
+            if n == 0 || n > args.len() {
+                return None;
+            }
+            i = start + digits;
+        }
+        let mut values = std::collections::HashMap::new();
+        for (n, v) in args.iter().enumerate() {
+            let (_, key) = self.parameter_key(format!("#{}", n + 1).as_bytes())?;
+            values.insert(key, Dec::parse(&format!("{v}"))?);
+        }
+        std::mem::swap(&mut values, &mut self.params);
+        let value = self.linuxcnc_condition_value(condition);
+        std::mem::swap(&mut values, &mut self.params);
+        value
     }
 
     /// TG412: LinuxCNC's main program reaches the definition of a subroutine it has called
@@ -5437,6 +5651,7 @@ impl Checker {
                 // (its body runs under its caller's mode)
                 self.linuxcnc_definition_mode_unsure = true;
                 self.linuxcnc_definition_flow.clear();
+                self.linuxcnc_definition_opened.clear();
             }
             (Some((false, name)), Some((_, _, open))) if self.definition_closes(name, open) => {
                 if let Some(mode) = self.linuxcnc_definition_feed.take() {
@@ -5900,20 +6115,18 @@ impl Checker {
             self.report(Rule::NotRead, message, first, 1);
         }
         if let Some((at, column, name)) = self.open_definition.take().filter(|_| !sub_return) {
+            if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
+                // (its only endsub stands in a block of the body left open)
+                self.definition_returns_open(percent_ended);
+                return;
+            }
             let name = String::from_utf8_lossy(&name);
-            let mut message = format!(
+            let message = format!(
                 "{name} sub is not closed by {name} endsub: rs274 reads the rest of the file, \
                  its M2/M30 and closing % included, as the definition, so the program never \
                  ends (rs274: 'File ended with no percent sign or program end', or 'Failed to \
                  find sub ... before EOF' where a % closes the file)"
             );
-            if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
-                message.push_str(&format!(
-                    "; the endsub on line {} stands inside an o-word condition or loop still \
-                     open (an early return when called), and none closes the body after it",
-                    self.sub_returns.0
-                ));
-            }
             self.report(Rule::NoProgramEnd, message, at, column);
         } else if let Some((label, at, _)) = self.linuxcnc_skipping.take() {
             // (the skip of a block known not to run reached the end: no M2 read in it runs)
@@ -8392,12 +8605,14 @@ mod tests {
         // the endsub of a definition nested in the body is no TG138 (left as it was)
         let nested = "o<ns> sub\no1000 sub\nG0 Y2\no1000 endsub\no1000 call\no<ns> endsub\n";
         assert_eq!(rules(nested), []);
-        // an endsub inside a condition never closed: the body never ends, said at the sub
+        // an endsub inside a condition never closed: not called, rs274 skips the definition
+        // to it and ends at the M2 (`rs274 -g`); a call with the condition false reads to the
+        // file's end: the block left open said (TG142), no TG114 (lcnc77b)
         let open = "o<tc> sub\no103 if [#5399 LT 0]\nG0 X1\no<tc> endsub [1]\nM2\n";
-        assert_eq!(rules(open), [(Rule::NoProgramEnd, 1)]);
-        let message = &findings(linuxcnc(), open, Rule::NoProgramEnd)[0].message;
+        assert_eq!(rules(open), [(Rule::BlockOpenAtEndsub, 2)]);
+        let message = &findings(linuxcnc(), open, Rule::BlockOpenAtEndsub)[0].message;
         assert!(
-            message.contains("the endsub on line 4 stands inside"),
+            message.starts_with("o103 if is not closed before the o<tc> endsub on line 4"),
             "{message}"
         );
         // 3. lines before the sub: never run when called (TG117 at the first), no TG114

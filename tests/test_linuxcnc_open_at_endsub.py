@@ -1,0 +1,83 @@
+"""A LinuxCNC definition whose only endsub of its label stands inside a block of its body left
+open (issue 32, lcnc77b): `o<min> sub` / `o100 if [#1]` / `G0 X1` / `o<min> endsub` / `M2`.
+
+rs274ngc skips a definition that is not called to the first o-word line of its label
+(interp_o_word.cc ``convert_control_functions``, ``skipping_o``): the endsub inside the `if`,
+so the file runs as a program past it. A call runs the body from its sub: where the block's
+condition is false (a `repeat`'s count below one) rs274 skips to the next o-word line of the
+block's label, which the file does not have, and reads to its end ("File ended with no percent
+sign or program end"); where it holds it returns at the endsub. A `do` runs its lines before
+any test and never skips. The checker says the block left open (TG142, a warning), an error
+(TG114) where a call of the file gives values that make the condition false, and TG114 for the
+program's own missing end only where no M2/M30 follows the endsub. Each program is asserted
+against ``rs274 -g`` where it is installed.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.profile import load_profile
+from postproc.check import check_text
+
+from .conftest import rs274_output
+
+ENDED = "File ended with no percent sign or program end"
+
+
+def findings(text: str) -> list[tuple[str, int, str]]:
+    return [(f.rule, f.line, f.severity) for f in check_text(text, load_profile("linuxcnc"))
+            if f.severity != "info"]
+
+
+def body(block: str, after: str) -> str:
+    return f"o<min> sub\n{block}\nG0 X1\no<min> endsub\n{after}"
+
+
+# (the block opened in the body, the lines after the endsub, the checker's findings, whether
+# rs274 -g runs the file to its end)
+CASES = [
+    # not called: the definition skipped to its endsub, the M2 ends the program (held26's
+    # snelweg `_dust_covert_action.ngc`, a HAL pin for the condition); TG114 before
+    ("o100 if [1]", "M2\n", [], True),
+    ("o100 if [#<_x>]", "M2\n", [("TG142", 2, "warning")], True),
+    ("o100 if [#<_x>]", "G0 X5\nM2\n", [("TG142", 2, "warning")], True),
+    # not called, no end after the endsub: the program's own TG114, at the last line
+    ("o100 if [#<_x>]", "G0 X5\n", [("TG114", 5, "error"), ("TG142", 2, "warning")], False),
+    # called with the condition false: rs274 reads to the end of the file
+    ("o100 if [#1]", "o<min> call [0]\nM2\n", [("TG114", 5, "error")], False),
+    ("o101 while [#1 GT 0]", "o<min> call [0]\nM2\n", [("TG114", 5, "error")], False),
+    ("o101 repeat [#1]", "o<min> call [0]\nM2\n", [("TG114", 5, "error")], False),
+    # called with it true: a return at the endsub, the program runs
+    ("o100 if [#1]", "o<min> call [1]\nM2\n", [("TG142", 2, "warning")], True),
+    ("o101 repeat [#1]", "o<min> call [2]\nM2\n", [("TG142", 2, "warning")], True),
+    # a value the checker does not know (#5 is 0 to rs274): the warning
+    ("o100 if [#1]", "o<min> call [#5]\nM2\n", [("TG142", 2, "warning")], False),
+    # a `do` never skips: called or not, rs274 runs it
+    ("o101 do", "o<min> call [0]\nM2\n", [], True),
+]
+
+
+@pytest.mark.parametrize(("block", "after", "expected", "runs"), CASES)
+def test_block_open_at_endsub(tmp_path, block: str, after: str, expected, runs: bool) -> None:
+    text = body(block, after)
+    assert sorted(findings(text)) == sorted(expected), text
+    out = rs274_output(tmp_path, text.replace("#<_x>", "1"))
+    if runs:
+        assert "PROGRAM_END" in out and ENDED not in out, out
+    else:
+        assert ENDED in out, out
+
+
+def test_called_false_names_the_block(tmp_path) -> None:
+    text = body("o100 if [#1]", "o<min> call [0]\nM2\n")
+    (message,) = [f.message for f in check_text(text, load_profile("linuxcnc"))
+                  if f.rule == "TG114"]
+    assert "o100 if (line 2)" in message and "endsub (line 4)" in message, message
+    assert ENDED in rs274_output(tmp_path, text)
+
+
+def test_subroutine_file_alone(tmp_path) -> None:
+    # a subroutine file with nothing after the endsub: the warning, no TG114 (a call returns)
+    text = body("o100 if [#<_x>]", "")
+    assert findings(text) == [("TG142", 2, "warning")]
