@@ -53,6 +53,12 @@ CASES = [
     ("o101 repeat [#1]", "o<min> call [2]\nM2\n", [("TG142", 2, "warning")], True),
     # a value the checker does not know (#5 is 0 to rs274): the warning
     ("o100 if [#1]", "o<min> call [#5]\nM2\n", [("TG142", 2, "warning")], False),
+    # the endsub in the `else` branch: the first branch, run, skips from the `else` to an
+    # `endif` the file does not have
+    ("o100 if [#1]\nG0 X2\no100 else", "o<min> call [1]\nM2\n", [("TG114", 7, "error")], False),
+    ("o100 if [#1]\nG0 X2\no100 else", "o<min> call [0]\nM2\n", [("TG142", 2, "warning")],
+     True),
+    ("o100 if [1]\nG0 X2\no100 else", "M2\n", [("TG142", 2, "warning")], True),
     # a `do` never skips: called or not, rs274 runs it
     ("o101 do", "o<min> call [0]\nM2\n", [], True),
 ]
@@ -81,3 +87,28 @@ def test_subroutine_file_alone(tmp_path) -> None:
     # a subroutine file with nothing after the endsub: the warning, no TG114 (a call returns)
     text = body("o100 if [#<_x>]", "")
     assert findings(text) == [("TG142", 2, "warning")]
+
+
+# a bare O number inside a definition: rs274 reads it as a FANUC-style program's start and
+# refuses it while a subroutine is defined, run or skipped ("Nested subroutine definition");
+# outside a definition it runs (LCNC_BMC20's `toolchange.ngc` typed `O103` for `O103 endif`)
+BARE_O = [
+    ("o<m> sub\nO103\no<m> endsub\nM2\n", 2),
+    ("o<m> sub\nN5 O103\no<m> endsub\nM2\n", 2),
+    ("o<m> sub\no1 if [0]\n  O103 (x)\no1 endif\no<m> endsub\no<m> call\nM2\n", 3),
+    ("G0 X0\nO103\nG0 X1\nM2\n", None),
+    ("o<m> sub\nG0 X1\no<m> endsub\nO103\nM2\n", None),
+]
+
+
+@pytest.mark.parametrize(("text", "line"), BARE_O)
+def test_bare_o_in_definition(tmp_path, text: str, line: int | None) -> None:
+    errors = [(f.rule, f.line) for f in check_text(text, load_profile("linuxcnc"))
+              if f.severity == "error"]
+    out = rs274_output(tmp_path, text)
+    if line is None:
+        assert errors == [], text
+        assert "PROGRAM_END" in out, out
+    else:
+        assert errors == [("TG412", line)], text
+        assert "Nested subroutine definition" in out, out

@@ -1327,8 +1327,9 @@ pub struct Checker {
     sub_returns: (usize, usize, usize),
     /// LinuxCNC: the block left open at that first endsub which rs274 may skip from when the
     /// body runs (an `if`, `while` or `repeat` whose condition or count is not surely true;
-    /// a `do` never skips): its line, its statement and the endsub's line.
-    sub_left_open: Option<(usize, Vec<u8>, usize)>,
+    /// a `do` never skips): its line, its statement, the endsub's line and whether the endsub
+    /// stands in a later branch of it (after an `else` or `elseif`).
+    sub_left_open: Option<(usize, Vec<u8>, usize, bool)>,
     /// LinuxCNC: what stands after that endsub, which a run as a program reads as the main
     /// program (rs274 skips a definition not called to the first o-word line of its label):
     /// whether any block does, whether an M2/M30 line does, and the line of the first call of
@@ -1507,8 +1508,9 @@ pub struct Checker {
     linuxcnc_definition_mode_unsure: bool,
     /// LinuxCNC: the labels of the conditions and loops open in the open definition's body.
     linuxcnc_definition_flow: Vec<Vec<u8>>,
-    /// LinuxCNC: the line and statement of each of them, innermost last.
-    linuxcnc_definition_opened: Vec<(usize, Vec<u8>)>,
+    /// LinuxCNC: the line and statement of each of them, innermost last,
+    /// and whether an `else` or `elseif` of it has been read.
+    linuxcnc_definition_opened: Vec<(usize, Vec<u8>, bool)>,
     /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
     /// definition where it stands, so its `endsub` gives it back (review 17).
     linuxcnc_definition_feed: Option<i64>,

@@ -1296,6 +1296,7 @@ impl Checker {
         let statement = if b.statements.is_empty() {
             if self.open_definition.is_some() {
                 self.linuxcnc_body(b, None);
+                self.bare_o_in_definition(b);
                 self.linuxcnc_body_locals(b, None);
             }
             None
@@ -1452,11 +1453,15 @@ impl Checker {
                     let depth = flow.len();
                     linuxcnc_flow(flow, text);
                     let open = flow.len();
+                    let opened = &mut self.linuxcnc_definition_opened;
                     if open > depth {
-                        self.linuxcnc_definition_opened
-                            .push((b.line, text.to_vec()));
+                        opened.push((b.line, text.to_vec(), false));
                     } else {
-                        self.linuxcnc_definition_opened.truncate(open);
+                        opened.truncate(open);
+                        // (an `else` or `elseif` of the innermost: its branches switched)
+                        if let Some(last) = opened.last_mut().filter(|_| switched.is_some()) {
+                            last.2 |= crate::statement::o_label(&last.1) == label;
+                        }
                     }
                     self.linuxcnc_body_distance.scope(open, switched);
                     // (a body's conditions are not evaluated: which branch runs, not known)
@@ -1707,17 +1712,60 @@ impl Checker {
         self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
+    /// TG412: a bare O number (`O103`, after an N at most, nothing but a comment after it)
+    /// inside a LinuxCNC definition. rs274ngc reads it as the start of a FANUC-style program
+    /// (interp_read.cc read_o, `O_`) and refuses it while it defines a subroutine, running the
+    /// body or skipping it ("Nested subroutine definition"; called, "... found inside called
+    /// subroutine"): the line is read in every way through the file, an o-word line read
+    /// while a block skips too (`rs274 -g`; LCNC_BMC20's `toolchange.ngc`, an `O103` typed
+    /// for `O103 endif`).
+    fn bare_o_in_definition(&mut self, b: &BlockView<'_>) {
+        let bare = |w: &Word<'_>| {
+            w.letter == b'O'
+                && w.index.is_empty()
+                && w.sign.is_empty()
+                && !w.point
+                && w.expression.is_empty()
+                && !w.number.is_empty()
+        };
+        let o = match b.words {
+            [o] | [_, o] if bare(o) => o,
+            _ => return,
+        };
+        if b.words.len() == 2 && b.words[0].letter != b'N' {
+            return;
+        }
+        // (a definition after the main program's end is read only where a call seeks it)
+        let Some((line, _, name)) = self.open_definition.as_ref().filter(|_| !self.main_ended())
+        else {
+            return;
+        };
+        let message = format!(
+            "Nested subroutine definition (rs274ngc): a bare O number is the start of a \
+             FANUC-style program (interp_read.cc read_o), which rs274 refuses inside the {} \
+             definition (line {line}), whether it runs the body or skips it",
+            String::from_utf8_lossy(name)
+        );
+        let column = o.column;
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+    }
+
     /// LinuxCNC: of the blocks of the body open at its first endsub (a subroutine file's
     /// early return), the innermost rs274 may skip from when a call runs the body: an `if`
     /// or `while` whose condition, or a `repeat` whose count, is not surely true (a `do`
     /// runs its lines before any test, so it never skips to its `while`). Its line, its
     /// statement and the endsub's line.
-    fn block_left_open(&self, endsub: usize) -> Option<(usize, Vec<u8>, usize)> {
+    fn block_left_open(&self, endsub: usize) -> Option<(usize, Vec<u8>, usize, bool)> {
         self.linuxcnc_definition_opened
             .iter()
             .rev()
-            .find(|(_, text)| {
+            .find(|(_, text, branched)| {
                 let (keyword, condition) = o_keyword_condition(text);
+                if *branched {
+                    // (the endsub in an `else` or `elseif` branch: the branch before it, run,
+                    // skips to the `endif`)
+                    return true;
+                }
                 let value = (!condition.contains(&b'#'))
                     .then(|| self.linuxcnc_condition_value(condition))
                     .flatten();
@@ -1727,7 +1775,7 @@ impl Checker {
                     _ => false,
                 }
             })
-            .map(|(line, text)| (*line, text.clone(), endsub))
+            .map(|(line, text, branched)| (*line, text.clone(), endsub, *branched))
     }
 
     /// LinuxCNC: a block after a subroutine file's early return (an endsub inside a block of
@@ -1820,7 +1868,7 @@ impl Checker {
             let line = self.last_line.max(1);
             self.report(Rule::NoProgramEnd, message, line, 1);
         }
-        let Some((open, text, _)) = self.sub_left_open.take() else {
+        let Some((open, text, _, branched)) = self.sub_left_open.take() else {
             return;
         };
         let (keyword, condition) = o_keyword_condition(&text);
@@ -1850,10 +1898,20 @@ impl Checker {
                     v != 0.0
                 }
             });
-        if value == Some(false) {
+        // (the endsub in a later branch: where the `if` holds, its first branch runs and skips
+        // from its end)
+        if value == Some(branched) {
+            let (when_false, open) = if branched {
+                (
+                    "its condition holds and its first branch runs",
+                    format!("line {open}"),
+                )
+            } else {
+                (when_false, format!("line {open}"))
+            };
             let message = format!(
                 "File ended with no percent sign or program end (rs274ngc): the call on line \
-                 {call} runs {name}, whose {label} {keyword} (line {open}) is not closed before \
+                 {call} runs {name}, whose {label} {keyword} ({open}) is not closed before \
                  its endsub (line {endsub}); with the call's values {when_false}, so rs274 \
                  skips to the next o-word line of {label}, which the file does not have, and \
                  reads to its end (interp_o_word.cc, skipping_o)"
@@ -1862,16 +1920,28 @@ impl Checker {
             return;
         }
         let called = match value {
-            Some(true) => format!("the call on line {call} gives values where {when_true}; "),
+            Some(true) if !branched => {
+                format!("the call on line {call} gives values where {when_true}; ")
+            }
             _ => String::new(),
         };
+        let ways = if branched {
+            format!(
+                "the endsub stands in a later branch of it: a call returns there where that \
+                 branch runs, but where an earlier one does, rs274 skips from its end to the \
+                 next o-word line of {label}"
+            )
+        } else {
+            format!(
+                "a call returns at that endsub where {when_true}, but where {then_false} rs274 \
+                 skips to the next o-word line of {label}"
+            )
+        };
         let message = format!(
-            "{label} {keyword} is not closed before the {name} endsub on line {endsub}: a call \
-             returns at that endsub where {when_true}, but where {then_false} rs274 skips to \
-             the next o-word line of {label}, which the file does not have, and reads to its \
-             end ('File ended with no percent sign or program end'); {called}a run of the file \
-             as a program skips the definition to that endsub and is not affected (close the \
-             block before the endsub)"
+            "{label} {keyword} is not closed before the {name} endsub on line {endsub}: {ways}, \
+             which the file does not have, and reads to its end ('File ended with no percent \
+             sign or program end'); {called}a run of the file as a program skips the \
+             definition to that endsub and is not affected (close the block before the endsub)"
         );
         let column = 1;
         self.report(Rule::BlockOpenAtEndsub, message, open, column);
