@@ -59,6 +59,25 @@ CASES = [
     ("o100 if [#1]\nG0 X2\no100 else", "o<min> call [0]\nM2\n", [("TG142", 2, "warning")],
      True),
     ("o100 if [1]\nG0 X2\no100 else", "M2\n", [("TG142", 2, "warning")], True),
+    # an `elseif` before the endsub: where the `if` and it are false, no branch runs
+    ("o100 if [#1 GT 0]\nG0 X2\no100 elseif [#1 LT 0]", "o<min> call [0]\nM2\n",
+     [("TG114", 7, "error")], False),
+    # a call zeroes the parameters after its arguments; every call that surely runs counts
+    ("o100 if [#1 GT 0]", "o<min> call\nM2\n", [("TG114", 5, "error")], False),
+    ("o100 if [#1 GT 0]", "o<min> call [1]\no<min> call [0]\nM2\n", [("TG114", 6, "error")],
+     False),
+    # a call inside another definition never called does not run
+    ("o100 if [#1 GT 0]", "o<other> sub\no<min> call [0]\no<other> endsub\nM2\n",
+     [("TG142", 2, "warning")], True),
+    # run as a program, the lines after the endsub are the main program's: an M2 in a block
+    # that never runs ends nothing, a line closing a block of the body is refused
+    ("o100 if [#<_x>]", "o1 if [0]\nM2\no1 endif\n", [("TG114", 7, "error"),
+                                                       ("TG142", 2, "warning")], False),
+    ("o100 if [1]", "o100 endif\nM2\n", [("TG412", 5, "error")], False),
+    ("o100 if [#<_x>]", "G0 X2\no<min> endsub\nM2\n", [("TG412", 6, "error"),
+                                                         ("TG142", 2, "warning")], False),
+    # a subroutine file whose block never runs: every call reads to the end
+    ("o100 repeat [0]", "", [("TG114", 2, "error")], False),
     # a `do` never skips: called or not, rs274 runs it
     ("o101 do", "o<min> call [0]\nM2\n", [], True),
 ]
@@ -71,6 +90,9 @@ def test_block_open_at_endsub(tmp_path, block: str, after: str, expected, runs: 
     out = rs274_output(tmp_path, text.replace("#<_x>", "1"))
     if runs:
         assert "PROGRAM_END" in out and ENDED not in out, out
+    elif expected and expected[0][0] == "TG412":
+        assert "PROGRAM_END" not in out and ("undefined O-word label" in out
+                                             or "not in a subroutine definition" in out), out
     else:
         assert ENDED in out, out
 
@@ -83,7 +105,7 @@ def test_called_false_names_the_block(tmp_path) -> None:
     assert ENDED in rs274_output(tmp_path, text)
 
 
-def test_subroutine_file_alone(tmp_path) -> None:
+def test_subroutine_file_alone() -> None:
     # a subroutine file with nothing after the endsub: the warning, no TG114 (a call returns)
     text = body("o100 if [#<_x>]", "")
     assert findings(text) == [("TG142", 2, "warning")]

@@ -1455,12 +1455,14 @@ impl Checker {
                     let open = flow.len();
                     let opened = &mut self.linuxcnc_definition_opened;
                     if open > depth {
-                        opened.push((b.line, text.to_vec(), false));
+                        opened.push((b.line, text.to_vec(), None));
                     } else {
                         opened.truncate(open);
                         // (an `else` or `elseif` of the innermost: its branches switched)
                         if let Some(last) = opened.last_mut().filter(|_| switched.is_some()) {
-                            last.2 |= crate::statement::o_label(&last.1) == label;
+                            if crate::statement::o_label(&last.1) == label {
+                                last.2 = Some(text.to_vec());
+                            }
                         }
                     }
                     self.linuxcnc_body_distance.scope(open, switched);
@@ -1753,15 +1755,17 @@ impl Checker {
     /// LinuxCNC: of the blocks of the body open at its first endsub (a subroutine file's
     /// early return), the innermost rs274 may skip from when a call runs the body: an `if`
     /// or `while` whose condition, or a `repeat` whose count, is not surely true (a `do`
-    /// runs its lines before any test, so it never skips to its `while`). Its line, its
-    /// statement and the endsub's line.
-    fn block_left_open(&self, endsub: usize) -> Option<(usize, Vec<u8>, usize, bool)> {
+    /// runs its lines before any test, so it never skips to its `while`), or one whose
+    /// endsub stands in a later branch. Its line, its statement, the endsub's line and the
+    /// branch's line (`else`, `elseif`) where the endsub stands in one.
+    #[allow(clippy::type_complexity)]
+    fn block_left_open(&self, endsub: usize) -> Option<(usize, Vec<u8>, usize, Option<Vec<u8>>)> {
         self.linuxcnc_definition_opened
             .iter()
             .rev()
-            .find(|(_, text, branched)| {
+            .find(|(_, text, branch)| {
                 let (keyword, condition) = o_keyword_condition(text);
-                if *branched {
+                if branch.is_some() {
                     // (the endsub in an `else` or `elseif` branch: the branch before it, run,
                     // skips to the `endif`)
                     return true;
@@ -1775,42 +1779,123 @@ impl Checker {
                     _ => false,
                 }
             })
-            .map(|(line, text, branched)| (*line, text.clone(), endsub, *branched))
+            .map(|(line, text, branch)| (*line, text.clone(), endsub, branch.clone()))
     }
 
     /// LinuxCNC: a block after a subroutine file's early return (an endsub inside a block of
-    /// the body), which a run of the file as a program reads as its main program: whether
-    /// one stands there, whether an M2/M30 line does, and the first call of the definition's
-    /// label that surely runs there (no o-word block opened before it, no end): a call runs
-    /// the body from its `sub`, so the block left open decides.
+    /// the body, [`Checker::sub_left_open`]), which a run of the file as a program reads as
+    /// its main program ([`AfterReturn`]): rs274 skips a definition not called to the first
+    /// o-word line of its label, that endsub. Read until the first of: an M2/M30 that surely
+    /// runs there, an o-word line rs274 refuses there (one that closes or continues a block
+    /// not opened after the endsub, "undefined O-word label"; an endsub outside a
+    /// definition, "not in a subroutine definition"), a call of the definition that surely
+    /// runs with values that make the block left open skip.
     fn after_early_return(&mut self, b: &BlockView<'_>, program_end: bool) {
-        let after = &mut self.sub_after_return;
-        after.0 |= !b.words.is_empty() || !b.statements.is_empty();
-        if after.1 || after.2 != 0 {
-            after.1 |= program_end;
+        let mut after = std::mem::take(&mut self.sub_after_return);
+        after.any |= !b.words.is_empty() || !b.statements.is_empty();
+        if after.refused.is_some() || after.skips != 0 || after.end {
+            self.sub_after_return = after;
             return;
         }
-        after.1 |= program_end;
-        for &(_, kind, text) in b.statements {
-            if kind == Kind::Flow {
-                // (a block of the main program: a call in it may not run)
-                self.sub_after_return.2 = usize::MAX;
-                return;
+        let may_run = !after.in_def && after.flow.iter().all(|e| e.1 != Some(false));
+        let surely = !after.in_def && after.flow.iter().all(|e| e.1 == Some(true));
+        after.end |= program_end && may_run;
+        for &(column, kind, text) in b.statements {
+            let keyword = crate::statement::o_keyword(text).unwrap_or_default();
+            let label = crate::statement::o_label(text);
+            let undefined = |what: &str| {
+                Some((
+                    b.line,
+                    column,
+                    format!(
+                        "{what} (rs274ngc): run as a program, rs274 skips the definition to its \
+                         endsub on line {} (the first o-word line of its label: \
+                         interp_o_word.cc, skipping_o) and reads this line as the main \
+                         program's",
+                        self.sub_returns.0
+                    ),
+                ))
+            };
+            match (kind, keyword.as_slice()) {
+                (Kind::Definition, b"sub") => after.in_def = true,
+                (Kind::Definition, b"endsub") if after.in_def => after.in_def = false,
+                (Kind::Definition, _) => {
+                    after.refused = undefined("not in a subroutine definition");
+                }
+                (Kind::Flow, _) if after.in_def => {}
+                (Kind::Flow, k) => {
+                    let at = after.flow.iter().rposition(|e| e.0 == label);
+                    let (_, condition) = o_keyword_condition(text);
+                    let value = (!condition.contains(&b'#'))
+                        .then(|| self.linuxcnc_condition_value(condition))
+                        .flatten();
+                    match (k, at) {
+                        (b"while", Some(at)) => after.flow.truncate(at),
+                        (b"if" | b"while", _) => after.flow.push((label, value.map(|v| v != 0.0))),
+                        (b"repeat", _) => {
+                            after.flow.push((label, value.map(|v| v.round() >= 1.0)));
+                        }
+                        (b"do", _) => after.flow.push((label, Some(true))),
+                        (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+                            after.flow.truncate(at)
+                        }
+                        (b"else" | b"elseif", Some(at)) => after.flow[at].1 = None,
+                        (b"endif" | b"endwhile" | b"endrepeat" | b"else" | b"elseif", None) => {
+                            after.refused = undefined("undefined O-word label");
+                        }
+                        _ => {}
+                    }
+                }
+                (Kind::Call, b"call") if surely && !b.skip && label == self.sub_label => {
+                    match self.call_skips(text) {
+                        Some(true) => after.skips = b.line,
+                        Some(false) if after.holds == 0 => after.holds = b.line,
+                        _ => {}
+                    }
+                }
+                _ => {}
             }
-            if kind == Kind::Call
-                && crate::statement::o_keyword(text).as_deref() == Some(b"call".as_slice())
-                && crate::statement::o_label(text) == self.sub_label
-                && !b.skip
-            {
-                self.sub_after_return.2 = b.line;
-                self.sub_call_args = self.call_arguments(text);
-                return;
+            if after.refused.is_some() || after.skips != 0 {
+                break;
             }
         }
+        self.sub_after_return = after;
     }
 
-    /// The values of a LinuxCNC call's arguments (`o<min> call [0] [2.5]`), where each is a
-    /// constant the checker works out (no parameter read); None otherwise.
+    /// Whether the call statement `text` of the definition runs it so that the block left
+    /// open at its endsub ([`Checker::sub_left_open`]) skips (rs274 then reads to the end of
+    /// the file): the block's conditions worked out with the call's arguments as #1 to #n
+    /// and the other parameters of #1-#30 zero (interp_read.cc read_o, a call zeroes the
+    /// parameters after its arguments). None where not known.
+    fn call_skips(&mut self, text: &[u8]) -> Option<bool> {
+        let (_, block, _, branch) = self.sub_left_open.clone()?;
+        let args = self.call_arguments(text)?;
+        let (keyword, condition) = o_keyword_condition(&block);
+        let value = self.condition_at_call(condition, &args)?;
+        let holds = if keyword.as_slice() == b"repeat" {
+            value.round() >= 1.0
+        } else {
+            value != 0.0
+        };
+        let Some(branch) = branch else {
+            return Some(!holds);
+        };
+        // (the endsub in a later branch: where the `if` holds, its first branch runs and
+        // skips from its end; where an `elseif` before the endsub is false, no branch up to
+        // the endsub's runs)
+        if holds {
+            return Some(true);
+        }
+        let (keyword, condition) = o_keyword_condition(&branch);
+        if keyword.as_slice() != b"elseif" {
+            return Some(false);
+        }
+        let value = self.condition_at_call(condition, &args)?;
+        (value == 0.0).then_some(true)
+    }
+
+    /// The values of a LinuxCNC call's arguments (`o<min> call [0] [2.5]`), where the
+    /// checker works each out; None otherwise.
     fn call_arguments(&self, text: &[u8]) -> Option<Vec<f64>> {
         let (_, rest) = o_keyword_condition(text);
         let mut values = Vec::new();
@@ -1827,11 +1912,7 @@ impl Checker {
                 b']' => {
                     depth = depth.checked_sub(1)?;
                     if depth == 0 {
-                        let arg = &rest[start..=i];
-                        if arg.contains(&b'#') {
-                            return None;
-                        }
-                        values.push(self.linuxcnc_condition_value(arg)?);
+                        values.push(self.linuxcnc_condition_value(&rest[start..=i])?);
                     }
                 }
                 b' ' | b'\t' => {}
@@ -1856,80 +1937,79 @@ impl Checker {
     /// that make it false; else a warning at the block (TG142).
     fn definition_returns_open(&mut self, percent_ended: bool) {
         let endsub = self.sub_returns.0;
-        let (after, end, call) = self.sub_after_return;
+        let after = std::mem::take(&mut self.sub_after_return);
         let name = String::from_utf8_lossy(&self.sub_label).into_owned();
-        if after && !end && !percent_ended && self.ended_line == 0 {
+        let left = self.sub_left_open.take();
+        if let Some((line, column, what)) = after.refused {
+            self.report(Rule::LinuxCncRefuses, what, line, column);
+        } else if after.any && !after.end && after.skips == 0 && !percent_ended {
             let message = format!(
-                "the program has no M02 or M30: run as a program, rs274 skips the {name} \
-                 definition, which no line before it calls, to the endsub on line {endsub} \
-                 (the first o-word line of its label: interp_o_word.cc, skipping_o) and reads \
-                 the lines after it as the main program, with no end among them"
+                "the program has no M02 or M30 that surely runs: run as a program, rs274 skips \
+                 the {name} definition, which no line before it calls, to the endsub on line \
+                 {endsub} (the first o-word line of its label: interp_o_word.cc, skipping_o) \
+                 and reads the lines after it as the main program"
             );
             let line = self.last_line.max(1);
             self.report(Rule::NoProgramEnd, message, line, 1);
         }
-        let Some((open, text, _, branched)) = self.sub_left_open.take() else {
+        let Some((open, text, _, branch)) = left else {
             return;
         };
         let (keyword, condition) = o_keyword_condition(&text);
         let label = String::from_utf8_lossy(&crate::statement::o_label(&text)).into_owned();
         let keyword = String::from_utf8_lossy(&keyword).into_owned();
-        let (when_false, when_true, then_false) = if keyword == "repeat" {
-            (
-                "its count is below one",
-                "its count is one or more",
-                "it is below one",
-            )
+        let always = !condition.contains(&b'#') && branch.is_none();
+        let (when_true, then_false) = if keyword == "repeat" {
+            ("its count is one or more", "it is below one")
         } else {
-            (
-                "its condition is false",
-                "its condition holds",
-                "it is false",
-            )
+            ("its condition holds", "it is false")
         };
-        let args = self.sub_call_args.take();
-        let value = (call != 0 && call != usize::MAX)
-            .then(|| self.condition_at_call(condition, &args))
-            .flatten()
-            .map(|v| {
-                if keyword == "repeat" {
-                    v.round() >= 1.0
-                } else {
-                    v != 0.0
+        // (a subroutine file, nothing after its endsub, whose block never runs: every call
+        // reads to the end)
+        if always && !after.any {
+            let message = format!(
+                "File ended with no percent sign or program end (rs274ngc): the {label} \
+                 {keyword} of the {name} definition never runs and is not closed before its \
+                 endsub (line {endsub}), so every call skips to the next o-word line of \
+                 {label}, which the file does not have, and reads to its end \
+                 (interp_o_word.cc, skipping_o)"
+            );
+            self.report(Rule::NoProgramEnd, message, open, 1);
+            return;
+        }
+        if after.skips != 0 {
+            let call = after.skips;
+            let why = match (&branch, always) {
+                (Some(_), _) => "no branch up to the endsub's runs alone",
+                (None, true) => "the block never runs",
+                (None, false) if keyword == "repeat" => {
+                    "with the call's values its count is below one"
                 }
-            });
-        // (the endsub in a later branch: where the `if` holds, its first branch runs and skips
-        // from its end)
-        if value == Some(branched) {
-            let (when_false, open) = if branched {
-                (
-                    "its condition holds and its first branch runs",
-                    format!("line {open}"),
-                )
-            } else {
-                (when_false, format!("line {open}"))
+                (None, false) => "with the call's values its condition is false",
             };
             let message = format!(
                 "File ended with no percent sign or program end (rs274ngc): the call on line \
-                 {call} runs {name}, whose {label} {keyword} ({open}) is not closed before \
-                 its endsub (line {endsub}); with the call's values {when_false}, so rs274 \
-                 skips to the next o-word line of {label}, which the file does not have, and \
-                 reads to its end (interp_o_word.cc, skipping_o)"
+                 {call} runs {name}, whose {label} {keyword} (line {open}) is not closed before \
+                 its endsub (line {endsub}); {why}, so rs274 skips to the next o-word line of \
+                 {label}, which the file does not have, and reads to its end \
+                 (interp_o_word.cc, skipping_o)"
             );
             self.report(Rule::NoProgramEnd, message, call, 1);
             return;
         }
-        let called = match value {
-            Some(true) if !branched => {
-                format!("the call on line {call} gives values where {when_true}; ")
-            }
-            _ => String::new(),
+        let called = match after.holds {
+            0 => String::new(),
+            call => format!("the call on line {call} returns there; "),
         };
-        let ways = if branched {
+        let ways = if branch.is_some() {
             format!(
                 "the endsub stands in a later branch of it: a call returns there where that \
-                 branch runs, but where an earlier one does, rs274 skips from its end to the \
-                 next o-word line of {label}"
+                 branch runs, but where an earlier one does, or none, rs274 skips to the next \
+                 o-word line of {label}"
+            )
+        } else if always {
+            format!(
+                "every call of {name} skips the block and seeks the next o-word line of {label}"
             )
         } else {
             format!(
@@ -1941,17 +2021,15 @@ impl Checker {
             "{label} {keyword} is not closed before the {name} endsub on line {endsub}: {ways}, \
              which the file does not have, and reads to its end ('File ended with no percent \
              sign or program end'); {called}a run of the file as a program skips the \
-             definition to that endsub and is not affected (close the block before the endsub)"
+             definition to that endsub (close the block before the endsub)"
         );
-        let column = 1;
-        self.report(Rule::BlockOpenAtEndsub, message, open, column);
+        self.report(Rule::BlockOpenAtEndsub, message, open, 1);
     }
 
     /// The value of a condition of a definition's body at a call of the main program whose
     /// arguments are constants (`o<min> call [0]`): its parameters #1 to #n those values
     /// (interp_o_word.cc execute_call), any other parameter not known.
-    fn condition_at_call(&mut self, condition: &[u8], args: &Option<Vec<f64>>) -> Option<f64> {
-        let args = args.as_ref()?;
+    fn condition_at_call(&mut self, condition: &[u8], args: &[f64]) -> Option<f64> {
         // (only #1 to #n read: every `#` followed by the digits of one of them)
         let mut i = 0;
         while let Some(p) = condition[i..].iter().position(|&c| c == b'#') {
@@ -1964,13 +2042,14 @@ impl Checker {
                 .ok()?
                 .parse()
                 .ok()?;
-            if n == 0 || n > args.len() {
+            if n == 0 || n > 30 {
                 return None;
             }
             i = start + digits;
         }
         let mut values = std::collections::HashMap::new();
-        for (n, v) in args.iter().enumerate() {
+        for n in 0..30 {
+            let v = args.get(n).copied().unwrap_or(0.0);
             let (_, key) = self.parameter_key(format!("#{}", n + 1).as_bytes())?;
             values.insert(key, Dec::parse(&format!("{v}"))?);
         }
@@ -6662,6 +6741,28 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 
 /// [`linuxcnc_flow`] of a statement whose label is `label` (a computed one's value where the
 /// checker knows it: [`Checker::linuxcnc_call_label`]).
+/// LinuxCNC: the lines after a subroutine file's early return (an endsub of the definition's
+/// label inside a block of its body), as a run of the file as a program reads them
+/// ([`Checker::after_early_return`]).
+#[derive(Clone, Debug, Default)]
+pub(super) struct AfterReturn {
+    /// A block stands there.
+    any: bool,
+    /// An M2/M30 line there that may run (in no block known not to run).
+    end: bool,
+    /// The o-word blocks opened there: label, whether known to run.
+    flow: Vec<(Vec<u8>, Option<bool>)>,
+    /// Inside a definition there.
+    in_def: bool,
+    /// The first o-word line rs274 refuses there: line, column, message.
+    refused: Option<(usize, usize, String)>,
+    /// The line of the first call of the definition that surely runs with values that make
+    /// the block left open skip (0: none).
+    skips: usize,
+    /// The line of a call that surely runs with values where it returns (0: none).
+    holds: usize,
+}
+
 /// What [`Checker::linuxcnc_main_flow`] found of an o-word line of the main program: an
 /// `else`/`elseif` after a branch that surely ran (rs274 skips to the `endif`), or a block
 /// or branch begun that is known not to run (rs274 skips to the next o-word line of its
