@@ -76,6 +76,10 @@ CASES = [
     ("o100 if [1]", "o100 endif\nM2\n", [("TG412", 5, "error")], False),
     ("o100 if [#<_x>]", "G0 X2\no<min> endsub\nM2\n", [("TG412", 6, "error"),
                                                          ("TG142", 2, "warning")], False),
+    ("o100 if [#<_x>]", "o<min> return\nM2\n", [("TG412", 5, "error"),
+                                                  ("TG142", 2, "warning")], False),
+    ("o100 while [#<_x>]", "o100 break\nM2\n", [("TG412", 5, "error"),
+                                               ("TG142", 2, "warning")], False),
     # a subroutine file whose block never runs: every call reads to the end
     ("o100 repeat [0]", "", [("TG114", 2, "error")], False),
     # a `do` never skips: called or not, rs274 runs it
@@ -92,7 +96,8 @@ def test_block_open_at_endsub(tmp_path, block: str, after: str, expected, runs: 
         assert "PROGRAM_END" in out and ENDED not in out, out
     elif expected and expected[0][0] == "TG412":
         assert "PROGRAM_END" not in out and ("undefined O-word label" in out
-                                             or "not in a subroutine definition" in out), out
+                                             or "not in a subroutine definition" in out
+                                             or "redefining sub" in out), out
     else:
         assert ENDED in out, out
 
@@ -120,6 +125,8 @@ BARE_O = [
     ("o<m> sub\no1 if [0]\n  O103 (x)\no1 endif\no<m> endsub\no<m> call\nM2\n", 3),
     ("G0 X0\nO103\nG0 X1\nM2\n", None),
     ("o<m> sub\nG0 X1\no<m> endsub\nO103\nM2\n", None),
+    # after an early endsub (in a block left open) the lines are the main program's
+    ("o<m> sub\no100 if [#1 GT 0]\nG0 X1\no<m> endsub\nM98 P300\nM2\nO300\nG0 X2\nM99\n", None),
 ]
 
 

@@ -1737,8 +1737,14 @@ impl Checker {
         if b.words.len() == 2 && b.words[0].letter != b'N' {
             return;
         }
-        // (a definition after the main program's end is read only where a call seeks it)
-        let Some((line, _, name)) = self.open_definition.as_ref().filter(|_| !self.main_ended())
+        // (a definition after the main program's end is read only where a call seeks it;
+        // after a subroutine file's early return the lines are the main program's where the
+        // file runs as a program, a FANUC-style program there: review 77 N3)
+        let early = self.sub_file == SubFile::Open && self.sub_returns.0 != 0;
+        let Some((line, _, name)) = self
+            .open_definition
+            .as_ref()
+            .filter(|_| !self.main_ended() && !early)
         else {
             return;
         };
@@ -1817,7 +1823,13 @@ impl Checker {
                 ))
             };
             match (kind, keyword.as_slice()) {
+                (Kind::Definition, b"sub") if !after.in_def && label == self.sub_label => {
+                    after.refused = undefined("redefining sub");
+                }
                 (Kind::Definition, b"sub") => after.in_def = true,
+                (_, b"return") if !after.in_def => {
+                    after.refused = undefined("not in a subroutine definition");
+                }
                 (Kind::Definition, b"endsub") if after.in_def => after.in_def = false,
                 (Kind::Definition, _) => {
                     after.refused = undefined("not in a subroutine definition");
@@ -1840,7 +1852,11 @@ impl Checker {
                             after.flow.truncate(at)
                         }
                         (b"else" | b"elseif", Some(at)) => after.flow[at].1 = None,
-                        (b"endif" | b"endwhile" | b"endrepeat" | b"else" | b"elseif", None) => {
+                        (
+                            b"endif" | b"endwhile" | b"endrepeat" | b"else" | b"elseif" | b"break"
+                            | b"continue",
+                            None,
+                        ) => {
                             after.refused = undefined("undefined O-word label");
                         }
                         _ => {}
