@@ -42,6 +42,7 @@ CASES = [
     ("o100 if [1]", "M2\n", [], True),
     ("o100 if [#<_x>]", "M2\n", [("TG142", 2, "warning")], True),
     ("o100 if [#<_x>]", "G0 X5\nM2\n", [("TG142", 2, "warning")], True),
+    ("o100 if [#<_x>]", "G0 X0 M2\n", [("TG142", 2, "warning")], True),
     # not called, no end after the endsub: the program's own TG114, at the last line
     ("o100 if [#<_x>]", "G0 X5\n", [("TG114", 5, "error"), ("TG142", 2, "warning")], False),
     # called with the condition false: rs274 reads to the end of the file

@@ -1805,7 +1805,13 @@ impl Checker {
         }
         let may_run = !after.in_def && after.flow.iter().all(|e| e.1 != Some(false));
         let surely = !after.in_def && after.flow.iter().all(|e| e.1 == Some(true));
-        after.end |= program_end && may_run;
+        // (an M2/M30 beside other words ends the program too, `G0 X0 M2`: review 77 F6)
+        let ends = program_end
+            || b.statements.is_empty()
+                && b.words
+                    .iter()
+                    .any(|w| w.letter == b'M' && matches!(self.linuxcnc_m_number(w), Some(2 | 30)));
+        after.end |= ends && may_run;
         for &(column, kind, text) in b.statements {
             let keyword = crate::statement::o_keyword(text).unwrap_or_default();
             let label = crate::statement::o_label(text);
