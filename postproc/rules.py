@@ -130,6 +130,10 @@ _example("TG136",
 # a LinuxCNC subroutine file whose endsub names another label: called, rs274 returns there
 _example("TG138", "o<t-4> sub\nG0 X3\no<t_4> endsub\n", "o<t-4> sub\nG0 X3\no<t-4> endsub\n",
          "linuxcnc")
+# a LinuxCNC definition whose endsub stands in an `if` of its body left open: a call with the
+# condition false reads to the end of the file
+_example("TG142", "o<m> sub\no100 if [#<_x>]\nG0 X1\no<m> endsub\nM2\n",
+         "o<m> sub\no100 if [#<_x>]\nG0 X1\no100 endif\no<m> endsub\nM2\n", "linuxcnc")
 _example("TG128",
          "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
          "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",
@@ -385,6 +389,15 @@ SOURCES = {
              "returns too (TG138, a warning; interp_read.cc read_o compares the label only "
              "while it skips a definition), and lines before its sub are skipped by the call "
              "(TG117; interp_o_word.cc control_back_to): none of these is a TG114.",
+    "TG142": "LinuxCNC rs274ngc (interp_o_word.cc convert_control_functions): a definition "
+             "not called is skipped to the first o-word line of its label (skipping_o), so "
+             "the file runs as a program past an endsub inside a block of the body; a call "
+             "runs the body, and a block whose condition is false (a repeat's count below "
+             "one) is skipped to the next o-word line of its label, which a block left open "
+             "has none of: rs274 reads to the end of the file (rs274 2.9: \"File ended with "
+             "no percent sign or program end\"; `rs274 -g`, issue 32, lcnc77b). A warning, "
+             "the value being the call's; an error (TG114) where a call of the file that "
+             "surely runs gives constant values that make it false.",
     "TG123": "ISO 6983-1 clause 4 (the block skip character before the sequence number). "
              "LinuxCNC's rs274 refuses a '/' anywhere but at the start of the line (\"Bad "
              "character '/' used\"); SINUMERIK writes the skip levels /0-/9 in front of the "

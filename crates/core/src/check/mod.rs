@@ -1339,6 +1339,15 @@ pub struct Checker {
     /// another label outside them with nothing but M2/M30 after it (the return that ends the
     /// file); 0: none.
     sub_returns: (usize, usize, usize),
+    /// LinuxCNC: the block left open at that first endsub which rs274 may skip from when the
+    /// body runs (an `if`, `while` or `repeat` whose condition or count is not surely true;
+    /// a `do` never skips): its line, its statement, the endsub's line and whether the endsub
+    /// stands in a later branch of it (the `else` or `elseif` line).
+    #[allow(clippy::type_complexity)]
+    sub_left_open: Option<(usize, Vec<u8>, usize, Option<Vec<u8>>)>,
+    /// LinuxCNC: what stands after that endsub, which a run as a program reads as the main
+    /// program (rs274 skips a definition not called to the first o-word line of its label).
+    sub_after_return: structure::AfterReturn,
     /// LinuxCNC: in a subroutine file, an endsub naming another label outside the body's
     /// conditions and loops has been read while its definition is open: a call returns
     /// there, a run as a program skips on to the definition's own endsub, so no line before
@@ -1510,6 +1519,9 @@ pub struct Checker {
     linuxcnc_definition_mode_unsure: bool,
     /// LinuxCNC: the labels of the conditions and loops open in the open definition's body.
     linuxcnc_definition_flow: Vec<Vec<u8>>,
+    /// LinuxCNC: the line and statement of each of them, innermost last,
+    /// and its last `else` or `elseif` line read.
+    linuxcnc_definition_opened: Vec<(usize, Vec<u8>, Option<Vec<u8>>)>,
     /// LinuxCNC: the feed mode where the open `o<name> sub` began: rs274 does not run a
     /// definition where it stands, so its `endsub` gives it back (review 17).
     linuxcnc_definition_feed: Option<i64>,
@@ -1826,6 +1838,8 @@ impl Checker {
             sub_label: Vec::new(),
             sub_preamble: (0, 0),
             sub_returns: (0, 0, 0),
+            sub_left_open: None,
+            sub_after_return: Default::default(),
             sub_returned: false,
             sub_percent: None,
             called_as: None,
@@ -1867,6 +1881,7 @@ impl Checker {
             linuxcnc_fraction_said: false,
             linuxcnc_definition_mode_unsure: false,
             linuxcnc_definition_flow: Vec::new(),
+            linuxcnc_definition_opened: Vec::new(),
             linuxcnc_definition_feed: None,
             linuxcnc_if_speed: Vec::new(),
             linuxcnc_speed_back: None,

@@ -217,7 +217,7 @@ impl Checker {
     /// The parameter an expression reads alone, signed or in brackets (`#1`, `-#1`, `[R1]`,
     /// `#<name>`), by its key, and whether it is negated.
     #[inline]
-    fn parameter_key(&self, expression: &[u8]) -> Option<(bool, Vec<u8>)> {
+    pub(super) fn parameter_key(&self, expression: &[u8]) -> Option<(bool, Vec<u8>)> {
         let (negative, rest) = match expression.first() {
             Some(b'-') => (true, &expression[1..]),
             Some(b'+') => (false, &expression[1..]),

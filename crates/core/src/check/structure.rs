@@ -373,6 +373,7 @@ impl Checker {
         self.linuxcnc_bodies.clear();
         self.linuxcnc_definition_mode_unsure = false;
         self.linuxcnc_definition_flow.clear();
+        self.linuxcnc_definition_opened.clear();
         self.linuxcnc_definition_feed = None;
         self.linuxcnc_if_speed.clear();
         self.linuxcnc_speed_back = None;
@@ -1433,6 +1434,7 @@ impl Checker {
         let statement = if b.statements.is_empty() {
             if self.open_definition.is_some() {
                 self.linuxcnc_body(b, None);
+                self.bare_o_in_definition(b);
                 self.linuxcnc_body_locals(b, None);
             }
             None
@@ -1589,6 +1591,18 @@ impl Checker {
                     let depth = flow.len();
                     linuxcnc_flow(flow, text);
                     let open = flow.len();
+                    let opened = &mut self.linuxcnc_definition_opened;
+                    if open > depth {
+                        opened.push((b.line, text.to_vec(), None));
+                    } else {
+                        opened.truncate(open);
+                        // (an `else` or `elseif` of the innermost: its branches switched)
+                        if let Some(last) = opened.last_mut().filter(|_| switched.is_some()) {
+                            if crate::statement::o_label(&last.1) == label {
+                                last.2 = Some(text.to_vec());
+                            }
+                        }
+                    }
                     self.linuxcnc_body_distance.scope(open, switched);
                     // (a body's conditions are not evaluated: which branch runs, not known)
                     let mut blocks = std::mem::take(&mut self.linuxcnc_plane_body_blocks);
@@ -1679,6 +1693,7 @@ impl Checker {
                 if self.sub_returns.0 == 0 {
                     self.sub_returns.0 = b.line;
                     self.sub_returns.1 = b.statements.first().map_or(1, |s| s.0);
+                    self.sub_left_open = self.block_left_open(b.line);
                 }
                 None
             }
@@ -1708,6 +1723,9 @@ impl Checker {
             });
             plain && ends
         };
+        if self.sub_returns.0 != 0 && b.line > self.sub_returns.0 {
+            self.after_early_return(b, program_end);
+        }
         // (the return that ends the file: nothing after it but M2/M30)
         if !program_end && self.sub_returns.2 != b.line {
             self.sub_returns.2 = 0;
@@ -1941,6 +1959,373 @@ impl Checker {
                        subroutine file, which a call runs from its sub, returns here"
             .to_string();
         self.report(Rule::LinuxCncRefuses, message, line, column);
+    }
+
+    /// TG412: a bare O number (`O103`, after an N at most, nothing but a comment after it)
+    /// inside a LinuxCNC definition. rs274ngc reads it as the start of a FANUC-style program
+    /// (interp_read.cc read_o, `O_`) and refuses it while it defines a subroutine, running the
+    /// body or skipping it ("Nested subroutine definition"; called, "... found inside called
+    /// subroutine"): the line is read in every way through the file, an o-word line read
+    /// while a block skips too (`rs274 -g`; LCNC_BMC20's `toolchange.ngc`, an `O103` typed
+    /// for `O103 endif`).
+    fn bare_o_in_definition(&mut self, b: &BlockView<'_>) {
+        let bare = |w: &Word<'_>| {
+            w.letter == b'O'
+                && w.index.is_empty()
+                && w.sign.is_empty()
+                && !w.point
+                && w.expression.is_empty()
+                && !w.number.is_empty()
+        };
+        let o = match b.words {
+            [o] | [_, o] if bare(o) => o,
+            _ => return,
+        };
+        if b.words.len() == 2 && b.words[0].letter != b'N' {
+            return;
+        }
+        // (a definition after the main program's end is read only where a call seeks it;
+        // after a subroutine file's early return the lines are the main program's where the
+        // file runs as a program, a FANUC-style program there: review 77 N3)
+        let early = self.sub_file == SubFile::Open && self.sub_returns.0 != 0;
+        let Some((line, _, name)) = self
+            .open_definition
+            .as_ref()
+            .filter(|_| !self.main_ended() && !early)
+        else {
+            return;
+        };
+        let message = format!(
+            "Nested subroutine definition (rs274ngc): a bare O number is the start of a \
+             FANUC-style program (interp_read.cc read_o), which rs274 refuses inside the {} \
+             definition (line {line}), whether it runs the body or skips it",
+            String::from_utf8_lossy(name)
+        );
+        let column = o.column;
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+    }
+
+    /// LinuxCNC: of the blocks of the body open at its first endsub (a subroutine file's
+    /// early return), the innermost rs274 may skip from when a call runs the body: an `if`
+    /// or `while` whose condition, or a `repeat` whose count, is not surely true (a `do`
+    /// runs its lines before any test, so it never skips to its `while`), or one whose
+    /// endsub stands in a later branch. Its line, its statement, the endsub's line and the
+    /// branch's line (`else`, `elseif`) where the endsub stands in one.
+    #[allow(clippy::type_complexity)]
+    fn block_left_open(&self, endsub: usize) -> Option<(usize, Vec<u8>, usize, Option<Vec<u8>>)> {
+        self.linuxcnc_definition_opened
+            .iter()
+            .rev()
+            .find(|(_, text, branch)| {
+                let (keyword, condition) = o_keyword_condition(text);
+                if branch.is_some() {
+                    // (the endsub in an `else` or `elseif` branch: the branch before it, run,
+                    // skips to the `endif`)
+                    return true;
+                }
+                let value = (!condition.contains(&b'#'))
+                    .then(|| self.linuxcnc_condition_value(condition))
+                    .flatten();
+                match keyword.as_slice() {
+                    b"if" | b"while" => value.is_none_or(|v| v == 0.0),
+                    b"repeat" => value.is_none_or(|v| v.round() < 1.0),
+                    _ => false,
+                }
+            })
+            .map(|(line, text, branch)| (*line, text.clone(), endsub, branch.clone()))
+    }
+
+    /// LinuxCNC: a block after a subroutine file's early return (an endsub inside a block of
+    /// the body, [`Checker::sub_left_open`]), which a run of the file as a program reads as
+    /// its main program ([`AfterReturn`]): rs274 skips a definition not called to the first
+    /// o-word line of its label, that endsub. Read until the first of: an M2/M30 that surely
+    /// runs there, an o-word line rs274 refuses there (one that closes or continues a block
+    /// not opened after the endsub, "undefined O-word label"; an endsub outside a
+    /// definition, "not in a subroutine definition"), a call of the definition that surely
+    /// runs with values that make the block left open skip.
+    fn after_early_return(&mut self, b: &BlockView<'_>, program_end: bool) {
+        let mut after = std::mem::take(&mut self.sub_after_return);
+        after.any |= !b.words.is_empty() || !b.statements.is_empty();
+        if after.refused.is_some() || after.skips != 0 || after.end {
+            self.sub_after_return = after;
+            return;
+        }
+        let may_run = !after.in_def && after.flow.iter().all(|e| e.1 != Some(false));
+        let surely = !after.in_def && after.flow.iter().all(|e| e.1 == Some(true));
+        // (an M2/M30 beside other words ends the program too, `G0 X0 M2`: review 77 F6)
+        let ends = program_end
+            || b.statements.is_empty()
+                && b.words
+                    .iter()
+                    .any(|w| w.letter == b'M' && matches!(self.linuxcnc_m_number(w), Some(2 | 30)));
+        after.end |= ends && may_run;
+        for &(column, kind, text) in b.statements {
+            let keyword = crate::statement::o_keyword(text).unwrap_or_default();
+            let label = crate::statement::o_label(text);
+            let undefined = |what: &str| {
+                Some((
+                    b.line,
+                    column,
+                    format!(
+                        "{what} (rs274ngc): run as a program, rs274 skips the definition to its \
+                         endsub on line {} (the first o-word line of its label: \
+                         interp_o_word.cc, skipping_o) and reads this line as the main \
+                         program's",
+                        self.sub_returns.0
+                    ),
+                ))
+            };
+            match (kind, keyword.as_slice()) {
+                (Kind::Definition, b"sub") if !after.in_def && label == self.sub_label => {
+                    after.refused = undefined("redefining sub");
+                }
+                (Kind::Definition, b"sub") => after.in_def = true,
+                (_, b"return") if !after.in_def => {
+                    after.refused = undefined("not in a subroutine definition");
+                }
+                (Kind::Definition, b"endsub") if after.in_def => after.in_def = false,
+                (Kind::Definition, _) => {
+                    after.refused = undefined("not in a subroutine definition");
+                }
+                (Kind::Flow, _) if after.in_def => {}
+                (Kind::Flow, k) => {
+                    let at = after.flow.iter().rposition(|e| e.0 == label);
+                    let (_, condition) = o_keyword_condition(text);
+                    let value = (!condition.contains(&b'#'))
+                        .then(|| self.linuxcnc_condition_value(condition))
+                        .flatten();
+                    match (k, at) {
+                        (b"while", Some(at)) => after.flow.truncate(at),
+                        (b"if" | b"while", _) => after.flow.push((label, value.map(|v| v != 0.0))),
+                        (b"repeat", _) => {
+                            after.flow.push((label, value.map(|v| v.round() >= 1.0)));
+                        }
+                        (b"do", _) => after.flow.push((label, Some(true))),
+                        (b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+                            after.flow.truncate(at)
+                        }
+                        (b"else" | b"elseif", Some(at)) => after.flow[at].1 = None,
+                        (
+                            b"endif" | b"endwhile" | b"endrepeat" | b"else" | b"elseif" | b"break"
+                            | b"continue",
+                            None,
+                        ) => {
+                            after.refused = undefined("undefined O-word label");
+                        }
+                        _ => {}
+                    }
+                }
+                (Kind::Call, b"call") if surely && !b.skip && label == self.sub_label => {
+                    match self.call_skips(text) {
+                        Some(true) => after.skips = b.line,
+                        Some(false) if after.holds == 0 => after.holds = b.line,
+                        _ => {}
+                    }
+                }
+                _ => {}
+            }
+            if after.refused.is_some() || after.skips != 0 {
+                break;
+            }
+        }
+        self.sub_after_return = after;
+    }
+
+    /// Whether the call statement `text` of the definition runs it so that the block left
+    /// open at its endsub ([`Checker::sub_left_open`]) skips (rs274 then reads to the end of
+    /// the file): the block's conditions worked out with the call's arguments as #1 to #n
+    /// and the other parameters of #1-#30 zero (interp_read.cc read_o, a call zeroes the
+    /// parameters after its arguments). None where not known.
+    fn call_skips(&mut self, text: &[u8]) -> Option<bool> {
+        let (_, block, _, branch) = self.sub_left_open.clone()?;
+        let args = self.call_arguments(text)?;
+        let (keyword, condition) = o_keyword_condition(&block);
+        let value = self.condition_at_call(condition, &args)?;
+        let holds = if keyword.as_slice() == b"repeat" {
+            value.round() >= 1.0
+        } else {
+            value != 0.0
+        };
+        let Some(branch) = branch else {
+            return Some(!holds);
+        };
+        // (the endsub in a later branch: where the `if` holds, its first branch runs and
+        // skips from its end; where an `elseif` before the endsub is false, no branch up to
+        // the endsub's runs)
+        if holds {
+            return Some(true);
+        }
+        let (keyword, condition) = o_keyword_condition(&branch);
+        if keyword.as_slice() != b"elseif" {
+            return Some(false);
+        }
+        let value = self.condition_at_call(condition, &args)?;
+        (value == 0.0).then_some(true)
+    }
+
+    /// The values of a LinuxCNC call's arguments (`o<min> call [0] [2.5]`), where the
+    /// checker works each out; None otherwise.
+    fn call_arguments(&self, text: &[u8]) -> Option<Vec<f64>> {
+        let (_, rest) = o_keyword_condition(text);
+        let mut values = Vec::new();
+        let mut depth = 0usize;
+        let mut start = 0;
+        for (i, &c) in rest.iter().enumerate() {
+            match c {
+                b'[' => {
+                    if depth == 0 {
+                        start = i;
+                    }
+                    depth += 1;
+                }
+                b']' => {
+                    depth = depth.checked_sub(1)?;
+                    if depth == 0 {
+                        values.push(self.linuxcnc_condition_value(&rest[start..=i])?);
+                    }
+                }
+                b' ' | b'\t' => {}
+                _ if depth == 0 => return None,
+                _ => {}
+            }
+        }
+        Some(values)
+    }
+
+    /// TG114, TG142: a LinuxCNC file whose definition's only endsub of its label stands
+    /// inside a block of the body left open (`o<min> sub` / `o100 if [#1]` / `G0 X1` /
+    /// `o<min> endsub` / `M2`). rs274 runs the file as a program past the definition: not
+    /// called, a definition is skipped to the first o-word line of its label
+    /// (interp_o_word.cc convert_control_functions, `skipping_o`), the endsub here, and the
+    /// lines after it are the main program's (TG114 only where no M2/M30 is among them, and
+    /// the file does not end at a closing %). A call runs the body from its sub: where the
+    /// block's condition is false (a count below one), rs274 skips to the next o-word line
+    /// of the block's label, which the file does not have, and reads to its end ("File ended
+    /// with no percent sign or program end"); where it holds, it returns at the endsub. An
+    /// error where a call of the main program that surely runs gives the condition values
+    /// that make it false; else a warning at the block (TG142).
+    fn definition_returns_open(&mut self, percent_ended: bool) {
+        let endsub = self.sub_returns.0;
+        let after = std::mem::take(&mut self.sub_after_return);
+        let name = String::from_utf8_lossy(&self.sub_label).into_owned();
+        let left = self.sub_left_open.take();
+        if let Some((line, column, what)) = after.refused {
+            self.report(Rule::LinuxCncRefuses, what, line, column);
+        } else if after.any && !after.end && after.skips == 0 && !percent_ended {
+            let message = format!(
+                "the program has no M02 or M30 that surely runs: run as a program, rs274 skips \
+                 the {name} definition, which no line before it calls, to the endsub on line \
+                 {endsub} (the first o-word line of its label: interp_o_word.cc, skipping_o) \
+                 and reads the lines after it as the main program"
+            );
+            let line = self.last_line.max(1);
+            self.report(Rule::NoProgramEnd, message, line, 1);
+        }
+        let Some((open, text, _, branch)) = left else {
+            return;
+        };
+        let (keyword, condition) = o_keyword_condition(&text);
+        let label = String::from_utf8_lossy(&crate::statement::o_label(&text)).into_owned();
+        let keyword = String::from_utf8_lossy(&keyword).into_owned();
+        let always = !condition.contains(&b'#') && branch.is_none();
+        let (when_true, then_false) = if keyword == "repeat" {
+            ("its count is one or more", "it is below one")
+        } else {
+            ("its condition holds", "it is false")
+        };
+        // (a subroutine file, nothing after its endsub, whose block never runs: every call
+        // reads to the end)
+        if always && !after.any {
+            let message = format!(
+                "File ended with no percent sign or program end (rs274ngc): the {label} \
+                 {keyword} of the {name} definition never runs and is not closed before its \
+                 endsub (line {endsub}), so every call skips to the next o-word line of \
+                 {label}, which the file does not have, and reads to its end \
+                 (interp_o_word.cc, skipping_o)"
+            );
+            self.report(Rule::NoProgramEnd, message, open, 1);
+            return;
+        }
+        if after.skips != 0 {
+            let call = after.skips;
+            let why = match (&branch, always) {
+                (Some(_), _) => "no branch up to the endsub's runs alone",
+                (None, true) => "the block never runs",
+                (None, false) if keyword == "repeat" => {
+                    "with the call's values its count is below one"
+                }
+                (None, false) => "with the call's values its condition is false",
+            };
+            let message = format!(
+                "File ended with no percent sign or program end (rs274ngc): the call on line \
+                 {call} runs {name}, whose {label} {keyword} (line {open}) is not closed before \
+                 its endsub (line {endsub}); {why}, so rs274 skips to the next o-word line of \
+                 {label}, which the file does not have, and reads to its end \
+                 (interp_o_word.cc, skipping_o)"
+            );
+            self.report(Rule::NoProgramEnd, message, call, 1);
+            return;
+        }
+        let called = match after.holds {
+            0 => String::new(),
+            call => format!("the call on line {call} returns there; "),
+        };
+        let ways = if branch.is_some() {
+            format!(
+                "the endsub stands in a later branch of it: a call returns there where that \
+                 branch runs, but where an earlier one does, or none, rs274 skips to the next \
+                 o-word line of {label}"
+            )
+        } else if always {
+            format!(
+                "every call of {name} skips the block and seeks the next o-word line of {label}"
+            )
+        } else {
+            format!(
+                "a call returns at that endsub where {when_true}, but where {then_false} rs274 \
+                 skips to the next o-word line of {label}"
+            )
+        };
+        let message = format!(
+            "{label} {keyword} is not closed before the {name} endsub on line {endsub}: {ways}, \
+             which the file does not have, and reads to its end ('File ended with no percent \
+             sign or program end'); {called}a run of the file as a program skips the \
+             definition to that endsub (close the block before the endsub)"
+        );
+        self.report(Rule::BlockOpenAtEndsub, message, open, 1);
+    }
+
+    /// The value of a condition of a definition's body at a call of the main program whose
+    /// arguments are constants (`o<min> call [0]`): its parameters #1 to #n those values
+    /// (interp_o_word.cc execute_call), any other parameter not known.
+    fn condition_at_call(&mut self, condition: &[u8], args: &[f64]) -> Option<f64> {
+        // (only #1 to #n read: every `#` followed by the digits of one of them)
+        let mut i = 0;
+        while let Some(p) = condition[i..].iter().position(|&c| c == b'#') {
+            let start = i + p + 1;
+            let digits = condition[start..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            let n: usize = std::str::from_utf8(&condition[start..start + digits])
+                .ok()?
+                .parse()
+                .ok()?;
+            if n == 0 || n > 30 {
+                return None;
+            }
+            i = start + digits;
+        }
+        let mut values = std::collections::HashMap::new();
+        for n in 0..30 {
+            let v = args.get(n).copied().unwrap_or(0.0);
+            let (_, key) = self.parameter_key(format!("#{}", n + 1).as_bytes())?;
+            values.insert(key, Dec::parse(&format!("{v}"))?);
+        }
+        std::mem::swap(&mut values, &mut self.params);
+        let value = self.linuxcnc_condition_value(condition);
+        std::mem::swap(&mut values, &mut self.params);
+        value
     }
 
     /// TG412: LinuxCNC's main program reaches the definition of a subroutine it has called
@@ -5684,6 +6069,7 @@ impl Checker {
                 // (its body runs under its caller's mode)
                 self.linuxcnc_definition_mode_unsure = true;
                 self.linuxcnc_definition_flow.clear();
+                self.linuxcnc_definition_opened.clear();
             }
             (Some((false, name)), Some((_, _, open))) if self.definition_closes(name, open) => {
                 if let Some(mode) = self.linuxcnc_definition_feed.take() {
@@ -6159,20 +6545,18 @@ impl Checker {
             self.report(Rule::NotRead, message, first, 1);
         }
         if let Some((at, column, name)) = self.open_definition.take().filter(|_| !sub_return) {
+            if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
+                // (its only endsub stands in a block of the body left open)
+                self.definition_returns_open(percent_ended);
+                return;
+            }
             let name = String::from_utf8_lossy(&name);
-            let mut message = format!(
+            let message = format!(
                 "{name} sub is not closed by {name} endsub: rs274 reads the rest of the file, \
                  its M2/M30 and closing % included, as the definition, so the program never \
                  ends (rs274: 'File ended with no percent sign or program end', or 'Failed to \
                  find sub ... before EOF' where a % closes the file)"
             );
-            if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
-                message.push_str(&format!(
-                    "; the endsub on line {} stands inside an o-word condition or loop still \
-                     open (an early return when called), and none closes the body after it",
-                    self.sub_returns.0
-                ));
-            }
             self.report(Rule::NoProgramEnd, message, at, column);
         } else if let Some((label, at, _)) = self.linuxcnc_skipping.take() {
             // (the skip of a block known not to run reached the end: no M2 read in it runs)
@@ -6638,6 +7022,28 @@ fn linuxcnc_flow(open: &mut Vec<Vec<u8>>, text: &[u8]) {
 
 /// [`linuxcnc_flow`] of a statement whose label is `label` (a computed one's value where the
 /// checker knows it: [`Checker::linuxcnc_call_label`]).
+/// LinuxCNC: the lines after a subroutine file's early return (an endsub of the definition's
+/// label inside a block of its body), as a run of the file as a program reads them
+/// ([`Checker::after_early_return`]).
+#[derive(Clone, Debug, Default)]
+pub(super) struct AfterReturn {
+    /// A block stands there.
+    any: bool,
+    /// An M2/M30 line there that may run (in no block known not to run).
+    end: bool,
+    /// The o-word blocks opened there: label, whether known to run.
+    flow: Vec<(Vec<u8>, Option<bool>)>,
+    /// Inside a definition there.
+    in_def: bool,
+    /// The first o-word line rs274 refuses there: line, column, message.
+    refused: Option<(usize, usize, String)>,
+    /// The line of the first call of the definition that surely runs with values that make
+    /// the block left open skip (0: none).
+    skips: usize,
+    /// The line of a call that surely runs with values where it returns (0: none).
+    holds: usize,
+}
+
 /// What [`Checker::linuxcnc_main_flow`] found of an o-word line of the main program: an
 /// `else`/`elseif` after a branch that surely ran (rs274 skips to the `endif`), or a block
 /// or branch begun that is known not to run (rs274 skips to the next o-word line of its
@@ -8688,12 +9094,14 @@ mod tests {
         // the endsub of a definition nested in the body is no TG138 (left as it was)
         let nested = "o<ns> sub\no1000 sub\nG0 Y2\no1000 endsub\no1000 call\no<ns> endsub\n";
         assert_eq!(rules(nested), []);
-        // an endsub inside a condition never closed: the body never ends, said at the sub
+        // an endsub inside a condition never closed: not called, rs274 skips the definition
+        // to it and ends at the M2 (`rs274 -g`); a call with the condition false reads to the
+        // file's end: the block left open said (TG142), no TG114 (lcnc77b)
         let open = "o<tc> sub\no103 if [#5399 LT 0]\nG0 X1\no<tc> endsub [1]\nM2\n";
-        assert_eq!(rules(open), [(Rule::NoProgramEnd, 1)]);
-        let message = &findings(linuxcnc(), open, Rule::NoProgramEnd)[0].message;
+        assert_eq!(rules(open), [(Rule::BlockOpenAtEndsub, 2)]);
+        let message = &findings(linuxcnc(), open, Rule::BlockOpenAtEndsub)[0].message;
         assert!(
-            message.contains("the endsub on line 4 stands inside"),
+            message.starts_with("o103 if is not closed before the o<tc> endsub on line 4"),
             "{message}"
         );
         // 3. lines before the sub: never run when called (TG117 at the first), no TG114
