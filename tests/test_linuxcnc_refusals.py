@@ -1886,6 +1886,46 @@ def test_a_dropped_m72_block_runs_nothing_after_its_m72(tmp_path, body, line, me
     judged_as_rs274(tmp_path, program(body), line, "TG412", message)
 
 
+# The coolant and the feed override, which rs274 2.9.0's restore writes where they differ from
+# the save (interp_convert.cc `gen_m_codes`: slot 4 M7 under mist, M9 with both off, nothing
+# under flood alone; slot 5 M8 under flood; slot 6 M48/M49), compared by value at the M72:
+# where the restore surely writes one, its block is surely dropped (its arc or probe never
+# judged); where they are back as saved, surely not (review 76-lcnc76a F7; each verdict is
+# `rs274 -g`'s). (the blocks after HEAD, the refused line or None where rs274 runs, rs274's
+# message)
+SAME_POINT = "Current point same as end point of arc"
+M72_RESTORE_EXTRAS = [
+    # the restore writes M9 (or M48): dropped, even after a G21 that keeps the points known
+    ("M70\nG21\nM8\nM72 G2 X0 Y0 R1", None, ""),
+    ("M70\nM7\nM72 G38.2 X0", None, ""),
+    ("M70\nM49\nM72 G2 X0 Y0 R1", None, ""),
+    ("M8\nM70\nM9\nM72 G2 X0 Y0 R1", None, ""),
+    ("M49\nM70\nM48\nM72 G2 X0 Y0 R1", None, ""),
+    ("M70 M8\nM72 G2 X0 Y0 R1", None, ""),
+    # a followed M72 that writes nothing: its own M8 runs, the next M72 writes M9
+    ("M70\nM72 M8\nM72 G2 X0 Y0 R1", None, ""),
+    # the coolant after a call or in a condition is not known: not judged
+    ("o100 sub\nM8\no100 endsub\no100 call\nM70\nM9\nM72 G2 X0 Y0 R1", None, ""),
+    ("M70\no1 if [#1 EQ 0]\nM8\no1 endif\nM72 G2 X0 Y0 R1", None, ""),
+    # put back as saved, or a change the restore does not write (flood saved alone, mist
+    # now; mist saved, flood now): the block runs
+    ("M70\nM8\nM9\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M70\nM49\nM48\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M8\nM70\nM7\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M7\nM70\nM8\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M70\nM8\nM9\nM72 G38.2 X0", 6, TOO_CLOSE),
+    # a surely dropped M72's own M8 never runs: the next M72 finds the coolant as saved
+    ("M70\nS200\nM72 M8\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M70\nM8\nM72 M9\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+]
+
+
+@pytest.mark.parametrize("body, line, message", M72_RESTORE_EXTRAS)
+def test_an_m72_restore_writes_the_coolant_and_override_that_differ(tmp_path, body, line,
+                                                                     message):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", message)
+
+
 def test_an_m72_restores_the_units_its_save_took(tmp_path):
     # `M70` / `G20` / `M72`: the restore's G21 runs first (rs274 moves to X-500 mm); a dropped
     # block's own G20 never runs; a save in inch restored from mm reads X-500 in inch, 12.7 m

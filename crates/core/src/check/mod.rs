@@ -1274,6 +1274,10 @@ pub struct Checker {
     /// LinuxCNC: the feed mode and speed every main program's M70 or M73 that may be the
     /// one in force agrees on ([`structure::LooseSaved`]); None before any.
     linuxcnc_feed_loose: Option<structure::LooseSaved>,
+    /// LinuxCNC: the coolant and feed override rs274 holds where the main program runs in
+    /// order, which an M72's restore writes where they differ from the save
+    /// ([`structure::RestoreExtras`]).
+    linuxcnc_extras: structure::RestoreExtras,
     /// LinuxCNC: the block (its count in `stats.blocks`) whose M72 restored the feed, the
     /// restore followed or its values made unknown: the block's G93-G95 and F ran before it.
     linuxcnc_feed_restored_at: Option<usize>,
@@ -1918,6 +1922,7 @@ impl Checker {
             linuxcnc_f_before_sub: (None, false, false),
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
+            linuxcnc_extras: structure::RestoreExtras::START,
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
             linuxcnc_m72_differs: false,
