@@ -2117,6 +2117,15 @@ WRITE_LOADED = [
     # ... a selection or a write inside: lost, as before
     ("G55\no1 if [#1 GT 0]\nG54\no1 endif\nG0 X-700", None, "2, 0.0000"),
     ("G55\no1 if [#1 GT 0]\n#5241=0\no1 endif\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
+    # a write of G54 before the program's first selection: rs274 starts in G54 and loads it
+    # at no G54 (-500, inside), LinuxCNC in the system it persisted (#5220), from which a G54
+    # loads it: not known there; a selection of another first leaves G54 with it, loaded at
+    # its next selection (-800, beyond; review 76-lcnc76b N5); G55's write is loaded
+    ("#5221=-300\nG54\nG0 X-500", None, "1, 0.0000"),
+    ("#5221=-300\nG55\nG54\nG0 X-500", 5, "1, -7620.0000"),
+    ("#5221=-300\nG59.1\nG54\nG0 X-500", 5, "1, -7620.0000"),
+    ("#5221=-300\nG54\nG0 X-500\nG55\nG54\nG0 X-500", 7, "1, -7620.0000"),
+    ("#5241=-300\nG55\nG0 X-500", 4, "2, -7620.0000"),
 ]
 
 

@@ -626,6 +626,8 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64, line: usize) {
+        let at_start = self.linuxcnc_at_start();
+        self.linuxcnc_work_selected = true;
         if self.work != Some(g) && self.config.family == Family::LinuxCnc {
             // (from a system not known, not G59.1-G59.3: it may be this one, the line's
             // write loaded or not; review 76 F6)
@@ -634,7 +636,7 @@ impl Checker {
                 self.work.is_none() && !std::mem::take(&mut self.linuxcnc_other_in_force);
         }
         if self.linuxcnc_pending.is_some() {
-            self.linuxcnc_reselected(g);
+            self.linuxcnc_reselected(g, at_start);
         }
         self.work_changed();
         if self.offsets_unread_only {
@@ -1011,6 +1013,15 @@ impl Checker {
             // profile's -100)
             writes.axes[g] &= !(1 << i);
             writes.values[g][i] = f64::NAN;
+        } else if g == 0 && self.linuxcnc_at_start() {
+            // (before the program's first selection, a write of G54: rs274 starts in G54
+            // and loads it at no G54 after (`#5221=-300` / `G54` / `G0 X-500` runs at -500 in
+            // `rs274 -g`), but LinuxCNC starts in the system it persisted (#5220), from which
+            // a G54 would load it: held as for the system in force, not known at a first G54
+            // (`linuxcnc_reselected`); review 76-lcnc76b N5)
+            self.linuxcnc_hold(g, i, writes.values[g][i]);
+            writes.axes[g] &= !(1 << i);
+            writes.values[g][i] = f64::NAN;
         }
         if !writes.values[g][i].is_nan() && !self.g10_followed(&writes, false) {
             self.offsets_rewritten(line, "a work offset's system variable sets offsets");
@@ -1025,7 +1036,23 @@ impl Checker {
     /// known and the offsets are followed; its own selection again changes nothing.
     #[cold]
     #[inline(never)]
-    fn linuxcnc_reselected(&mut self, g: i64) {
+    fn linuxcnc_reselected(&mut self, g: i64, at_start: bool) {
+        // (the program's first selection, a write of G54 held: rs274 starts in G54, LinuxCNC
+        // in the system it persisted (#5220); a G54 may load it or not, another surely
+        // leaves G54 with it for its next selection; review 76-lcnc76b N5)
+        if at_start && self.linuxcnc_pending.as_ref().is_some_and(|p| p.0 == 0) {
+            if g == 54 {
+                let axes = self.linuxcnc_pending.as_ref().map_or(0, |p| p.1);
+                let mut unknown = Written::default();
+                unknown.values[0] = [f64::NAN; 9];
+                unknown.axes[0] = axes;
+                self.offsets_written.then(&unknown);
+                self.offset_writer(&unknown, false);
+            } else {
+                self.linuxcnc_start_left();
+            }
+            return;
+        }
         if self.work != Some(g) {
             self.linuxcnc_pending_applied();
         }
@@ -1098,6 +1125,7 @@ impl Checker {
         }
         self.linuxcnc_pending = None;
         self.work = None;
+        self.linuxcnc_work_selected = true;
         self.travel_not(format!(
             "from line {line} on: M72 restores a work system not known here, until a G54-G59 \
              is selected again"
@@ -1179,14 +1207,37 @@ impl Checker {
         }
         // (a definition read apart that selects one changes its callers' system)
         self.work_changed();
+        if self.linuxcnc_at_start() {
+            self.linuxcnc_start_left();
+        }
         self.linuxcnc_pending_applied();
         self.linuxcnc_other_in_force = true;
+        self.linuxcnc_work_selected = true;
         if self.work.is_some() {
             self.work = None;
             self.travel_not(format!(
                 "from line {line} on: {code} selects a work system the profile does not give, \
                  until a G54-G59 is selected again"
             ));
+        }
+    }
+
+    /// LinuxCNC: no work system selected or restored yet, the one in force that LinuxCNC
+    /// persisted (#5220; G54 in `rs274 -g`).
+    fn linuxcnc_at_start(&self) -> bool {
+        !self.linuxcnc_work_selected
+            && self.work.is_none()
+            && self.config.family == Family::LinuxCnc
+            && self.open_definition.is_none()
+    }
+
+    /// LinuxCNC: the program's first selection is of a system other than G54: the writes of
+    /// G54 held since the start are its values from here ([`Checker::linuxcnc_pending_applied`]).
+    fn linuxcnc_start_left(&mut self) {
+        if self.linuxcnc_pending.as_ref().is_some_and(|p| p.0 == 0) {
+            self.work = Some(54);
+            self.linuxcnc_pending_applied();
+            self.work = None;
         }
     }
 

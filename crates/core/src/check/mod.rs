@@ -1079,6 +1079,9 @@ pub struct Checker {
     linuxcnc_selected_maybe: bool,
     /// LinuxCNC: G59.1-G59.3 in force (the work system not known, surely none of G54-G59).
     linuxcnc_other_in_force: bool,
+    /// LinuxCNC: the program has selected or restored a work system (G54-G59.3, M72): before
+    /// that, the system in force is the one LinuxCNC persisted (#5220), G54 in `rs274 -g`.
+    linuxcnc_work_selected: bool,
     /// LinuxCNC: the work system (54-59) an M70 or M73 saved for an M72 (None inside: not
     /// known; None: no save valid).
     linuxcnc_work_save: Option<Option<i64>>,
@@ -1786,6 +1789,7 @@ impl Checker {
             linuxcnc_selected_at: 0,
             linuxcnc_selected_maybe: false,
             linuxcnc_other_in_force: false,
+            linuxcnc_work_selected: false,
             linuxcnc_work_save: None,
             linuxcnc_flow_work: None,
             g10_expression: 0,
