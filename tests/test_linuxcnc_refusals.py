@@ -1920,6 +1920,31 @@ M72_RESTORE_EXTRAS = [
 ]
 
 
+# A B C, which rs274's `convert_length_units` does not convert (X Y Z and U V W only): kept
+# through a G20/G21 and through a surely dropped M72 block, a probe of them judged under G90
+# where the start is known and its double is the nearest (the last word of the axis absolute;
+# review 76-lcnc76a F6). (the blocks after HEAD, the refused line or None where rs274 runs)
+ABC_PROBE = [
+    ("G0 A0\nM70 G20\nM72 G91\nG38.2 A0", 6),
+    ("G0 A0\nM70\nG20\nM72 G91\nG38.2 A0", 7),
+    ("G0 A0\nG20\nG38.2 A0", 5),
+    ("G0 A0.3\nG20\nG38.2 A0.3", 5),
+    ("G0 A0\nM70\nS200\nM72 G91\nG38.2 A0", 7),
+    ("G0 A5\nM70\nS200\nM72 G0 A7\nG38.2 A5", 7),
+    # the block runs (nothing differs): A at 7
+    ("G0 A5\nM70\nM72 G0 A7\nG38.2 A5", None),
+    ("G0 A5 B2\nG91 B1\nG90 G38.2 A5", 5),
+    # a sum of increments (0.1 + 0.1 + 0.1 is not the double of 0.3): not judged, runs
+    ("G0 A0.1\nG91 G0 A0.1\nG0 A0.1\nG90 G38.2 A0.3", None),
+    ("G0 A5\nG10 L2 P1 A1\nG38.2 A5", None),
+]
+
+
+@pytest.mark.parametrize("body, line", ABC_PROBE)
+def test_a_probe_of_a_rotary_axis_is_judged_from_its_kept_point(tmp_path, body, line):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", TOO_CLOSE)
+
+
 @pytest.mark.parametrize("body, line, message", M72_RESTORE_EXTRAS)
 def test_an_m72_restore_writes_the_coolant_and_override_that_differ(tmp_path, body, line,
                                                                      message):

@@ -1281,6 +1281,12 @@ pub struct Checker {
     /// order, which an M72's restore writes where they differ from the save
     /// ([`structure::RestoreExtras`]).
     linuxcnc_extras: structure::RestoreExtras,
+    /// LinuxCNC: A B C before the block in hand where it names one of them, and the state's
+    /// unknown axes then (`Checker::linuxcnc_abc_named`); the axes of them whose double rs274
+    /// holds is surely the nearest of the point the state keeps (bits 0-2: A B C): set at an
+    /// absolute word, cleared at an increment that may not be exact.
+    linuxcnc_abc_start: ([Option<Dec>; 3], u32, usize, u8),
+    linuxcnc_abc_exact: u8,
     /// LinuxCNC: the block (its count in `stats.blocks`) whose M72 restored the feed, the
     /// restore followed or its values made unknown: the block's G93-G95 and F ran before it.
     linuxcnc_feed_restored_at: Option<usize>,
@@ -1927,6 +1933,8 @@ impl Checker {
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
             linuxcnc_extras: structure::RestoreExtras::START,
+            linuxcnc_abc_start: ([None; 3], 0, 0, 0),
+            linuxcnc_abc_exact: 0b111,
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
             linuxcnc_m72_differs: false,
@@ -3090,6 +3098,10 @@ impl Checker {
             self.linuxcnc_m_units =
                 (!self.units_unknown).then_some((state.units, state.feed_units));
         }
+        // (A B C before a block that names one: a probe's start, rare)
+        if self.letters & (bit(b'A') | bit(b'B') | bit(b'C')) != 0 {
+            self.linuxcnc_abc_named();
+        }
         if self.linuxcnc_feed_saved.is_some() && self.letters & bit(b'M') != 0 {
             let state = &self.machine.state;
             self.linuxcnc_m72_cycle = Some(structure::M72Cycle {
@@ -3099,6 +3111,8 @@ impl Checker {
                 bottom: self.linuxcnc_cycle_bottom,
                 r: self.linuxcnc_cycle_r,
                 units: (state.units, state.feed_units),
+                abc: [state.position[6], state.position[7], state.position[8]],
+                unknown: state.unknown,
             });
         }
         self.machine.apply_taken(&self.values, taken);

@@ -3863,9 +3863,10 @@ impl Checker {
                 _ => {}
             }
         }
+        let cycle = self.linuxcnc_m72_cycle.take();
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
-            cycle: self.linuxcnc_m72_cycle.take(),
+            cycle,
             restored,
             plane,
             compensation,
@@ -3878,6 +3879,9 @@ impl Checker {
             if i < 3 && surely {
                 state.position[i] = before.xyz[i];
                 state.unknown = state.unknown & !mask | before.unknown & mask;
+            } else if let Some(c) = cycle.filter(|_| i >= 6 && surely) {
+                state.position[i] = c.abc[i - 6];
+                state.unknown = state.unknown & !mask | c.unknown & mask;
             } else if i < 3
                 && (state.position[i] != before.xyz[i]
                     || (state.unknown ^ before.unknown) & mask != 0)
@@ -6957,6 +6961,10 @@ pub(super) struct M72Cycle {
     pub(super) r: Option<Dec>,
     /// The units and feed units before the block's G20/G21.
     pub(super) units: (crate::modal::Units, crate::modal::Units),
+    /// A B C before the block, and the state's unknown axes: a surely dropped block leaves
+    /// them where they were, as X Y Z (review 76-lcnc76a F6).
+    pub(super) abc: [Option<Dec>; 3],
+    pub(super) unknown: u32,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
