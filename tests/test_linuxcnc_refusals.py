@@ -1917,6 +1917,17 @@ M72_RESTORE_EXTRAS = [
     # a surely dropped M72's own M8 never runs: the next M72 finds the coolant as saved
     ("M70\nS200\nM72 M8\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
     ("M70\nM8\nM72 M9\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    # M50 sets the feed override back on (no P, or P1), off with P0; M51 leaves it
+    # (review 77-lcnc77a F1)
+    ("M70\nG21\nM49\nM50\nM72 G2 X0 Y0 R1", 7, SAME_POINT),
+    ("M70\nM49\nM50 P1\nM51 P1\nM72 G38.2 X0", 7, TOO_CLOSE),
+    ("M70\nM50 P0\nM72 G2 X0 Y0 R1", None, ""),
+    # an M72 in a condition or loop restores the coolant there or not: not known after it, the
+    # next save's coolant neither (review 77-lcnc77a F3; rs274 runs the G91: no drop)
+    ("G0 X5\nM70\nM8\no1 if [#<_x> EQ 5]\nM72\no1 endif\nM70\nM9\nM72 G91\nG0 X1\n"
+     "G90 G38.2 X1", None, ""),
+    ("G0 X5\nM70\nM8\no1 repeat [1]\nM72\no1 endrepeat\nM70\nM9\nM72 G91\nG0 X1\n"
+     "G90 G38.2 X1", None, ""),
 ]
 
 

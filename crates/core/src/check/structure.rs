@@ -3394,6 +3394,8 @@ impl Checker {
         let mut units_set = false;
         // (the block's M7-M9, M48, M49: compared by value at an M72, `RestoreExtras`)
         let mut extra_codes = [false; 5];
+        // (an M50: the feed override on (no P, or a P other than 0), off (P0), or not known)
+        let mut m50: Option<Option<bool>> = None;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -3429,6 +3431,18 @@ impl Checker {
                 (b'M', Some(3.0 | 4.0 | 5.0 | 6.0 | 61.0 | 62.0..=68.0)) => early = true,
                 // (M19, whose step the overview does not list: both)
                 (b'M', Some(19.0)) => (early, late) = (true, true),
+                (b'M', Some(50.0)) => {
+                    let p = b.words.iter().position(|w| w.letter == b'P');
+                    m50 = Some(match p {
+                        None => Some(true),
+                        Some(k) => self
+                            .readable
+                            .get(k)
+                            .copied()
+                            .flatten()
+                            .map(|v| !v.is_zero()),
+                    });
+                }
                 (b'M', Some(m @ (7.0 | 8.0 | 9.0 | 48.0 | 49.0))) => {
                     extra_codes[match m as u8 {
                         9 => 0,
@@ -3457,7 +3471,7 @@ impl Checker {
         if unread || !in_order {
             self.linuxcnc_feed_saved = None;
         }
-        let extras_here = extra_codes.contains(&true);
+        let extras_here = extra_codes.contains(&true) || m50.is_some();
         // (the coolant and override where the block's M code runs, before its M7-M9, M48
         // and M49 (the G-code overview's "G-code Order of Execution"); then after them, in
         // the main program's order; in a condition, a loop, or after an M98 or an M code of
@@ -3469,10 +3483,14 @@ impl Checker {
                     e.apply(code);
                 }
             }
+            // (M50 after M48/M49 in rs274's order, group 9's codes one a block)
+            if let Some(on) = m50 {
+                e.feed_override = on;
+            }
             e
         };
         if self.open_definition.is_none() {
-            if unread || m98 || extras_here && !in_order {
+            if unread || m98 || (extras_here || m7 == Some(72)) && !in_order {
                 self.linuxcnc_extras = RestoreExtras::UNKNOWN;
             } else if m7 != Some(72) {
                 self.linuxcnc_extras = extras_after(extras_at);
