@@ -1042,12 +1042,23 @@ impl Checker {
         // leaves G54 with it for its next selection; review 76-lcnc76b N5)
         if at_start && self.linuxcnc_pending.as_ref().is_some_and(|p| p.0 == 0) {
             if g == 54 {
-                let axes = self.linuxcnc_pending.as_ref().map_or(0, |p| p.1);
-                let mut unknown = Written::default();
-                unknown.values[0] = [f64::NAN; 9];
-                unknown.axes[0] = axes;
-                self.offsets_written.then(&unknown);
-                self.offset_writer(&unknown, false);
+                // (the value before the write, rs274 -g's, or the one written: a position
+                // beyond under both is said, `Checker::offset_either`; review 77-lcnc77a F5)
+                let (axes, held) = self
+                    .linuxcnc_pending
+                    .as_ref()
+                    .map_or((0, [f64::NAN; 9]), |p| (p.1, p.2));
+                let mut either = Written::default();
+                either.values[0] = [f64::NAN; 9];
+                either.axes[0] = axes;
+                for (i, &v) in held.iter().enumerate() {
+                    if axes & 1 << i != 0 && !v.is_nan() {
+                        either.maybe[0] |= 1 << i;
+                        either.alt[0][i] = v;
+                    }
+                }
+                self.offsets_written.then(&either);
+                self.offset_writer(&either, false);
             } else {
                 self.linuxcnc_start_left();
             }
@@ -3731,6 +3742,11 @@ impl Checker {
         (line, column): (usize, usize),
     ) -> bool {
         if self.offset_unknown(work, i) {
+            if let Some(said) =
+                self.offset_either((axis, i), at, (work, offset), (low, high), (line, column))
+            {
+                return said;
+            }
             self.travel_not(format!(
                 "{} under G{work} after its value was set by a variable (#5201-#5326)",
                 axis as char
@@ -3865,6 +3881,54 @@ impl Checker {
             .ok()
             .and_then(|w| self.offsets_written.value(w, i))
             .filter(|v| !v.is_nan())
+    }
+
+    /// LinuxCNC: a position under a work offset whose value is one of two (the value before a
+    /// parameter write or the one written, [`Written::maybe_of`]: a write of G54 before the
+    /// program's first selection, then G54), both known: beyond the travel under both, said
+    /// (review 77-lcnc77a F5: `#5221=-300` / `G54` / `G0 X-800` runs at -800 in `rs274 -g`,
+    /// -1100 where the write is loaded). Whether it was said; None where not judged so.
+    #[cold]
+    #[inline(never)]
+    fn offset_either(
+        &mut self,
+        (axis, i): (u8, usize),
+        at: f64,
+        (work, offset): (i64, Dec),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) -> Option<bool> {
+        let (before, written) = self
+            .offsets_written
+            .maybe_of(usize::try_from(work).ok()?, i)?;
+        let before = if before.is_nan() {
+            offset.to_f64()
+        } else {
+            before
+        };
+        if written.is_nan() || self.config.family != Family::LinuxCnc {
+            return None;
+        }
+        self.stats.travel_absolute += 1;
+        let (one, two) = (at + before, at + written);
+        let out = travel_side(one, (low, high));
+        let said = out != 0 && out == travel_side(two, (low, high));
+        if said && out != self.outside[i] {
+            let message = format!(
+                "{} goes to {} in machine coordinates (work {} + G{work} offset {}), or to {} \
+                 where a parameter write before loaded {}, outside the travel {low} to {high} \
+                 either way",
+                axis as char,
+                round6(one),
+                round6(at),
+                round6(before),
+                round6(two),
+                round6(written)
+            );
+            self.report_placed(message, (line, column), super::Placed::Not);
+        }
+        self.outside[i] = if said { out } else { 0 };
+        Some(said)
     }
 
     /// That offset's axis was written with a value not known while the profile's offsets
