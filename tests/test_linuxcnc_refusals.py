@@ -1917,6 +1917,10 @@ M72_RESTORE_EXTRAS = [
     # a surely dropped M72's own M8 never runs: the next M72 finds the coolant as saved
     ("M70\nS200\nM72 M8\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
     ("M70\nM8\nM72 M9\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    # a surely dropped block's probe never runs: the point is the one before it (review
+    # 77-lcnc77a F4)
+    ("M70\nM8\nM72 G38.2 Z0\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nS200\nM72 G38.2 Z0\nG38.2 X0", 6, TOO_CLOSE),
     # M50 sets the feed override back on (no P, or P1), off with P0; M51 leaves it
     # (review 77-lcnc77a F1)
     ("M70\nG21\nM49\nM50\nM72 G2 X0 Y0 R1", 7, SAME_POINT),
