@@ -878,8 +878,8 @@ impl Checker {
         // (not a block whose M72 surely drops the rest of it: its probe or G92 never runs,
         // the point is the one before it; review 77-lcnc77a F4, `M70` / `M8` / `M72 G38.2 Z0`
         // / `G38.2 X0` is "Start point too close to probe point" at the second probe)
-        if (g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)))
-            && (g_unread || !self.linuxcnc_m72_surely_dropped())
+        if g_unread
+            || codes.iter().any(|&c| linuxcnc_unsettles(c)) && !self.linuxcnc_m72_surely_dropped()
         {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
             // (G98's clearance is a number rs274 keeps from the series' start, in the
