@@ -2170,6 +2170,9 @@ WRITE_LOADED = [
     ("#5221=-300\nG54\nG0 X-800", 4, "1, 0.0000"),
     ("#5221=0\nG54\nG0 X850", 4, "1, 0.0000"),
     ("#5221=100\nG54\nG0 X700", None, "1, 0.0000"),
+    # a G10 L2/L20 P1 before the first selection: rs274 -g (in G54) loads the write there,
+    # another start system at the first G54: loaded either way (review 77-lcnc77a F7)
+    ("#5221=-300\nG10 L2 P1 Y0\nG54\nG0 X-500", 5, "1, -7620.0000"),
     ("#5241=-300\nG55\nG0 X-500", 4, "2, -7620.0000"),
 ]
 

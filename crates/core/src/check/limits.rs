@@ -1517,10 +1517,15 @@ impl Checker {
                     // from its parameters at once, interp_convert.cc `convert_setup`: the
                     // parameter writes waiting for its selection hold from here, those of
                     // the axes it writes replaced)
+                    // (before the program's first selection, a G10 of G54 with a write of it
+                    // held: rs274 -g, in G54, loads it there, a start in another system at
+                    // the first G54: G54's values from here either way; review 77-lcnc77a F7)
                     if let Some(p) = self.linuxcnc_pending.as_mut() {
                         let g = p.0;
                         p.1 &= !writes.axes[g];
-                        if writes.axes[g] != 0 {
+                        if writes.axes[g] != 0 && g == 0 && self.linuxcnc_at_start() {
+                            self.linuxcnc_start_left();
+                        } else if writes.axes[g] != 0 {
                             self.linuxcnc_pending_applied();
                         }
                     }
