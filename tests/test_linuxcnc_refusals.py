@@ -1886,6 +1886,86 @@ def test_a_dropped_m72_block_runs_nothing_after_its_m72(tmp_path, body, line, me
     judged_as_rs274(tmp_path, program(body), line, "TG412", message)
 
 
+# The coolant and the feed override, which rs274 2.9.0's restore writes where they differ from
+# the save (interp_convert.cc `gen_m_codes`: slot 4 M7 under mist, M9 with both off, nothing
+# under flood alone; slot 5 M8 under flood; slot 6 M48/M49), compared by value at the M72:
+# where the restore surely writes one, its block is surely dropped (its arc or probe never
+# judged); where they are back as saved, surely not (review 76-lcnc76a F7; each verdict is
+# `rs274 -g`'s). (the blocks after HEAD, the refused line or None where rs274 runs, rs274's
+# message)
+SAME_POINT = "Current point same as end point of arc"
+M72_RESTORE_EXTRAS = [
+    # the restore writes M9 (or M48): dropped, even after a G21 that keeps the points known
+    ("M70\nG21\nM8\nM72 G2 X0 Y0 R1", None, ""),
+    ("M70\nM7\nM72 G38.2 X0", None, ""),
+    ("M70\nM49\nM72 G2 X0 Y0 R1", None, ""),
+    ("M8\nM70\nM9\nM72 G2 X0 Y0 R1", None, ""),
+    ("M49\nM70\nM48\nM72 G2 X0 Y0 R1", None, ""),
+    ("M70 M8\nM72 G2 X0 Y0 R1", None, ""),
+    # a followed M72 that writes nothing: its own M8 runs, the next M72 writes M9
+    ("M70\nM72 M8\nM72 G2 X0 Y0 R1", None, ""),
+    # the coolant after a call or in a condition is not known: not judged
+    ("o100 sub\nM8\no100 endsub\no100 call\nM70\nM9\nM72 G2 X0 Y0 R1", None, ""),
+    ("M70\no1 if [#1 EQ 0]\nM8\no1 endif\nM72 G2 X0 Y0 R1", None, ""),
+    # put back as saved, or a change the restore does not write (flood saved alone, mist
+    # now; mist saved, flood now): the block runs
+    ("M70\nM8\nM9\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M70\nM49\nM48\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M8\nM70\nM7\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M7\nM70\nM8\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M70\nM8\nM9\nM72 G38.2 X0", 6, TOO_CLOSE),
+    # a surely dropped M72's own M8 never runs: the next M72 finds the coolant as saved
+    ("M70\nS200\nM72 M8\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    ("M70\nM8\nM72 M9\nM72 G2 X0 Y0 R1", 6, SAME_POINT),
+    # a surely dropped block's probe never runs: the point is the one before it (review
+    # 77-lcnc77a F4)
+    ("M70\nM8\nM72 G38.2 Z0\nG38.2 X0", 6, TOO_CLOSE),
+    ("M70\nS200\nM72 G38.2 Z0\nG38.2 X0", 6, TOO_CLOSE),
+    # M50 sets the feed override back on (no P, or P1), off with P0; M51 leaves it
+    # (review 77-lcnc77a F1)
+    ("M70\nG21\nM49\nM50\nM72 G2 X0 Y0 R1", 7, SAME_POINT),
+    ("M70\nM49\nM50 P1\nM51 P1\nM72 G38.2 X0", 7, TOO_CLOSE),
+    ("M70\nM50 P0\nM72 G2 X0 Y0 R1", None, ""),
+    # an M72 in a condition or loop restores the coolant there or not: not known after it, the
+    # next save's coolant neither (review 77-lcnc77a F3; rs274 runs the G91: no drop)
+    ("G0 X5\nM70\nM8\no1 if [#<_x> EQ 5]\nM72\no1 endif\nM70\nM9\nM72 G91\nG0 X1\n"
+     "G90 G38.2 X1", None, ""),
+    ("G0 X5\nM70\nM8\no1 repeat [1]\nM72\no1 endrepeat\nM70\nM9\nM72 G91\nG0 X1\n"
+     "G90 G38.2 X1", None, ""),
+]
+
+
+# A B C, which rs274's `convert_length_units` does not convert (X Y Z and U V W only): kept
+# through a G20/G21 and through a surely dropped M72 block, a probe of them judged under G90
+# where the start is known and its double is the nearest (the last word of the axis absolute;
+# review 76-lcnc76a F6). (the blocks after HEAD, the refused line or None where rs274 runs)
+ABC_PROBE = [
+    ("G0 A0\nM70 G20\nM72 G91\nG38.2 A0", 6),
+    ("G0 A0\nM70\nG20\nM72 G91\nG38.2 A0", 7),
+    ("G0 A0\nG20\nG38.2 A0", 5),
+    ("G0 A0.3\nG20\nG38.2 A0.3", 5),
+    ("G0 A0\nM70\nS200\nM72 G91\nG38.2 A0", 7),
+    ("G0 A5\nM70\nS200\nM72 G0 A7\nG38.2 A5", 7),
+    # the block runs (nothing differs): A at 7
+    ("G0 A5\nM70\nM72 G0 A7\nG38.2 A5", None),
+    ("G0 A5 B2\nG91 B1\nG90 G38.2 A5", 5),
+    # a sum of increments (0.1 + 0.1 + 0.1 is not the double of 0.3): not judged, runs
+    ("G0 A0.1\nG91 G0 A0.1\nG0 A0.1\nG90 G38.2 A0.3", None),
+    ("G0 A5\nG10 L2 P1 A1\nG38.2 A5", None),
+]
+
+
+@pytest.mark.parametrize("body, line", ABC_PROBE)
+def test_a_probe_of_a_rotary_axis_is_judged_from_its_kept_point(tmp_path, body, line):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", TOO_CLOSE)
+
+
+@pytest.mark.parametrize("body, line, message", M72_RESTORE_EXTRAS)
+def test_an_m72_restore_writes_the_coolant_and_override_that_differ(tmp_path, body, line,
+                                                                     message):
+    judged_as_rs274(tmp_path, program(body), line, "TG412", message)
+
+
 def test_an_m72_restores_the_units_its_save_took(tmp_path):
     # `M70` / `G20` / `M72`: the restore's G21 runs first (rs274 moves to X-500 mm); a dropped
     # block's own G20 never runs; a save in inch restored from mm reads X-500 in inch, 12.7 m
@@ -2077,6 +2157,23 @@ WRITE_LOADED = [
     # ... a selection or a write inside: lost, as before
     ("G55\no1 if [#1 GT 0]\nG54\no1 endif\nG0 X-700", None, "2, 0.0000"),
     ("G55\no1 if [#1 GT 0]\n#5241=0\no1 endif\nG54\nG55\nG0 X-700", None, "2, 0.0000"),
+    # a write of G54 before the program's first selection: rs274 starts in G54 and loads it
+    # at no G54 (-500, inside), LinuxCNC in the system it persisted (#5220), from which a G54
+    # loads it: not known there; a selection of another first leaves G54 with it, loaded at
+    # its next selection (-800, beyond; review 76-lcnc76b N5); G55's write is loaded
+    ("#5221=-300\nG54\nG0 X-500", None, "1, 0.0000"),
+    ("#5221=-300\nG55\nG54\nG0 X-500", 5, "1, -7620.0000"),
+    ("#5221=-300\nG59.1\nG54\nG0 X-500", 5, "1, -7620.0000"),
+    ("#5221=-300\nG54\nG0 X-500\nG55\nG54\nG0 X-500", 7, "1, -7620.0000"),
+    # ... but beyond under both values, said (-800 in rs274 -g, -1100 where loaded; review
+    # 77-lcnc77a F5); beyond under one of them only, not
+    ("#5221=-300\nG54\nG0 X-800", 4, "1, 0.0000"),
+    ("#5221=0\nG54\nG0 X850", 4, "1, 0.0000"),
+    ("#5221=100\nG54\nG0 X700", None, "1, 0.0000"),
+    # a G10 L2/L20 P1 before the first selection: rs274 -g (in G54) loads the write there,
+    # another start system at the first G54: loaded either way (review 77-lcnc77a F7)
+    ("#5221=-300\nG10 L2 P1 Y0\nG54\nG0 X-500", 5, "1, -7620.0000"),
+    ("#5241=-300\nG55\nG0 X-500", 4, "2, -7620.0000"),
 ]
 
 

@@ -626,6 +626,8 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64, line: usize) {
+        let at_start = self.linuxcnc_at_start();
+        self.linuxcnc_work_selected = true;
         if self.work != Some(g) && self.config.family == Family::LinuxCnc {
             // (from a system not known, not G59.1-G59.3: it may be this one, the line's
             // write loaded or not; review 76 F6)
@@ -634,7 +636,7 @@ impl Checker {
                 self.work.is_none() && !std::mem::take(&mut self.linuxcnc_other_in_force);
         }
         if self.linuxcnc_pending.is_some() {
-            self.linuxcnc_reselected(g);
+            self.linuxcnc_reselected(g, at_start);
         }
         self.work_changed();
         if self.offsets_unread_only {
@@ -1011,6 +1013,15 @@ impl Checker {
             // profile's -100)
             writes.axes[g] &= !(1 << i);
             writes.values[g][i] = f64::NAN;
+        } else if g == 0 && self.linuxcnc_at_start() {
+            // (before the program's first selection, a write of G54: rs274 starts in G54
+            // and loads it at no G54 after (`#5221=-300` / `G54` / `G0 X-500` runs at -500 in
+            // `rs274 -g`), but LinuxCNC starts in the system it persisted (#5220), from which
+            // a G54 would load it: held as for the system in force, not known at a first G54
+            // (`linuxcnc_reselected`); review 76-lcnc76b N5)
+            self.linuxcnc_hold(g, i, writes.values[g][i]);
+            writes.axes[g] &= !(1 << i);
+            writes.values[g][i] = f64::NAN;
         }
         if !writes.values[g][i].is_nan() && !self.g10_followed(&writes, false) {
             self.offsets_rewritten(line, "a work offset's system variable sets offsets");
@@ -1025,7 +1036,34 @@ impl Checker {
     /// known and the offsets are followed; its own selection again changes nothing.
     #[cold]
     #[inline(never)]
-    fn linuxcnc_reselected(&mut self, g: i64) {
+    fn linuxcnc_reselected(&mut self, g: i64, at_start: bool) {
+        // (the program's first selection, a write of G54 held: rs274 starts in G54, LinuxCNC
+        // in the system it persisted (#5220); a G54 may load it or not, another surely
+        // leaves G54 with it for its next selection; review 76-lcnc76b N5)
+        if at_start && self.linuxcnc_pending.as_ref().is_some_and(|p| p.0 == 0) {
+            if g == 54 {
+                // (the value before the write, rs274 -g's, or the one written: a position
+                // beyond under both is said, `Checker::offset_either`; review 77-lcnc77a F5)
+                let (axes, held) = self
+                    .linuxcnc_pending
+                    .as_ref()
+                    .map_or((0, [f64::NAN; 9]), |p| (p.1, p.2));
+                let mut either = Written::default();
+                either.values[0] = [f64::NAN; 9];
+                either.axes[0] = axes;
+                for (i, &v) in held.iter().enumerate() {
+                    if axes & 1 << i != 0 && !v.is_nan() {
+                        either.maybe[0] |= 1 << i;
+                        either.alt[0][i] = v;
+                    }
+                }
+                self.offsets_written.then(&either);
+                self.offset_writer(&either, false);
+            } else {
+                self.linuxcnc_start_left();
+            }
+            return;
+        }
         if self.work != Some(g) {
             self.linuxcnc_pending_applied();
         }
@@ -1098,6 +1136,7 @@ impl Checker {
         }
         self.linuxcnc_pending = None;
         self.work = None;
+        self.linuxcnc_work_selected = true;
         self.travel_not(format!(
             "from line {line} on: M72 restores a work system not known here, until a G54-G59 \
              is selected again"
@@ -1179,14 +1218,37 @@ impl Checker {
         }
         // (a definition read apart that selects one changes its callers' system)
         self.work_changed();
+        if self.linuxcnc_at_start() {
+            self.linuxcnc_start_left();
+        }
         self.linuxcnc_pending_applied();
         self.linuxcnc_other_in_force = true;
+        self.linuxcnc_work_selected = true;
         if self.work.is_some() {
             self.work = None;
             self.travel_not(format!(
                 "from line {line} on: {code} selects a work system the profile does not give, \
                  until a G54-G59 is selected again"
             ));
+        }
+    }
+
+    /// LinuxCNC: no work system selected or restored yet, the one in force that LinuxCNC
+    /// persisted (#5220; G54 in `rs274 -g`).
+    fn linuxcnc_at_start(&self) -> bool {
+        !self.linuxcnc_work_selected
+            && self.work.is_none()
+            && self.config.family == Family::LinuxCnc
+            && self.open_definition.is_none()
+    }
+
+    /// LinuxCNC: the program's first selection is of a system other than G54: the writes of
+    /// G54 held since the start are its values from here ([`Checker::linuxcnc_pending_applied`]).
+    fn linuxcnc_start_left(&mut self) {
+        if self.linuxcnc_pending.as_ref().is_some_and(|p| p.0 == 0) {
+            self.work = Some(54);
+            self.linuxcnc_pending_applied();
+            self.work = None;
         }
     }
 
@@ -1455,10 +1517,15 @@ impl Checker {
                     // from its parameters at once, interp_convert.cc `convert_setup`: the
                     // parameter writes waiting for its selection hold from here, those of
                     // the axes it writes replaced)
+                    // (before the program's first selection, a G10 of G54 with a write of it
+                    // held: rs274 -g, in G54, loads it there, a start in another system at
+                    // the first G54: G54's values from here either way; review 77-lcnc77a F7)
                     if let Some(p) = self.linuxcnc_pending.as_mut() {
                         let g = p.0;
                         p.1 &= !writes.axes[g];
-                        if writes.axes[g] != 0 {
+                        if writes.axes[g] != 0 && g == 0 && self.linuxcnc_at_start() {
+                            self.linuxcnc_start_left();
+                        } else if writes.axes[g] != 0 {
                             self.linuxcnc_pending_applied();
                         }
                     }
@@ -3680,6 +3747,11 @@ impl Checker {
         (line, column): (usize, usize),
     ) -> bool {
         if self.offset_unknown(work, i) {
+            if let Some(said) =
+                self.offset_either((axis, i), at, (work, offset), (low, high), (line, column))
+            {
+                return said;
+            }
             self.travel_not(format!(
                 "{} under G{work} after its value was set by a variable (#5201-#5326)",
                 axis as char
@@ -3814,6 +3886,54 @@ impl Checker {
             .ok()
             .and_then(|w| self.offsets_written.value(w, i))
             .filter(|v| !v.is_nan())
+    }
+
+    /// LinuxCNC: a position under a work offset whose value is one of two (the value before a
+    /// parameter write or the one written, [`Written::maybe_of`]: a write of G54 before the
+    /// program's first selection, then G54), both known: beyond the travel under both, said
+    /// (review 77-lcnc77a F5: `#5221=-300` / `G54` / `G0 X-800` runs at -800 in `rs274 -g`,
+    /// -1100 where the write is loaded). Whether it was said; None where not judged so.
+    #[cold]
+    #[inline(never)]
+    fn offset_either(
+        &mut self,
+        (axis, i): (u8, usize),
+        at: f64,
+        (work, offset): (i64, Dec),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) -> Option<bool> {
+        let (before, written) = self
+            .offsets_written
+            .maybe_of(usize::try_from(work).ok()?, i)?;
+        let before = if before.is_nan() {
+            offset.to_f64()
+        } else {
+            before
+        };
+        if written.is_nan() || self.config.family != Family::LinuxCnc {
+            return None;
+        }
+        self.stats.travel_absolute += 1;
+        let (one, two) = (at + before, at + written);
+        let out = travel_side(one, (low, high));
+        let said = out != 0 && out == travel_side(two, (low, high));
+        if said && out != self.outside[i] {
+            let message = format!(
+                "{} goes to {} in machine coordinates (work {} + G{work} offset {}), or to {} \
+                 where a parameter write before loaded {}, outside the travel {low} to {high} \
+                 either way",
+                axis as char,
+                round6(one),
+                round6(at),
+                round6(before),
+                round6(two),
+                round6(written)
+            );
+            self.report_placed(message, (line, column), super::Placed::Not);
+        }
+        self.outside[i] = if said { out } else { 0 };
+        Some(said)
     }
 
     /// That offset's axis was written with a value not known while the profile's offsets

@@ -1093,6 +1093,9 @@ pub struct Checker {
     linuxcnc_selected_maybe: bool,
     /// LinuxCNC: G59.1-G59.3 in force (the work system not known, surely none of G54-G59).
     linuxcnc_other_in_force: bool,
+    /// LinuxCNC: the program has selected or restored a work system (G54-G59.3, M72): before
+    /// that, the system in force is the one LinuxCNC persisted (#5220), G54 in `rs274 -g`.
+    linuxcnc_work_selected: bool,
     /// LinuxCNC: the work system (54-59) an M70 or M73 saved for an M72 (None inside: not
     /// known; None: no save valid).
     linuxcnc_work_save: Option<Option<i64>>,
@@ -1288,6 +1291,16 @@ pub struct Checker {
     /// LinuxCNC: the feed mode and speed every main program's M70 or M73 that may be the
     /// one in force agrees on ([`structure::LooseSaved`]); None before any.
     linuxcnc_feed_loose: Option<structure::LooseSaved>,
+    /// LinuxCNC: the coolant and feed override rs274 holds where the main program runs in
+    /// order, which an M72's restore writes where they differ from the save
+    /// ([`structure::RestoreExtras`]).
+    linuxcnc_extras: structure::RestoreExtras,
+    /// LinuxCNC: A B C before the block in hand where it names one of them, and the state's
+    /// unknown axes then (`Checker::linuxcnc_abc_named`); the axes of them whose double rs274
+    /// holds is surely the nearest of the point the state keeps (bits 0-2: A B C): set at an
+    /// absolute word, cleared at an increment that may not be exact.
+    linuxcnc_abc_start: ([Option<Dec>; 3], u32, usize, u8),
+    linuxcnc_abc_exact: u8,
     /// LinuxCNC: the block (its count in `stats.blocks`) whose M72 restored the feed, the
     /// restore followed or its values made unknown: the block's G93-G95 and F ran before it.
     linuxcnc_feed_restored_at: Option<usize>,
@@ -1812,6 +1825,7 @@ impl Checker {
             linuxcnc_selected_at: 0,
             linuxcnc_selected_maybe: false,
             linuxcnc_other_in_force: false,
+            linuxcnc_work_selected: false,
             linuxcnc_work_save: None,
             linuxcnc_flow_work: None,
             g10_expression: 0,
@@ -1951,6 +1965,9 @@ impl Checker {
             linuxcnc_f_before_sub: (None, false, false),
             linuxcnc_feed_saved: None,
             linuxcnc_feed_loose: None,
+            linuxcnc_extras: structure::RestoreExtras::START,
+            linuxcnc_abc_start: ([None; 3], 0, 0, 0),
+            linuxcnc_abc_exact: 0b111,
             linuxcnc_feed_restored_at: None,
             linuxcnc_m72_dropped: None,
             linuxcnc_m72_differs: false,
@@ -3121,6 +3138,10 @@ impl Checker {
             self.linuxcnc_m_units =
                 (!self.units_unknown).then_some((state.units, state.feed_units));
         }
+        // (A B C before a block that names one: a probe's start, rare)
+        if self.letters & (bit(b'A') | bit(b'B') | bit(b'C')) != 0 {
+            self.linuxcnc_abc_named();
+        }
         if self.linuxcnc_feed_saved.is_some() && self.letters & bit(b'M') != 0 {
             let state = &self.machine.state;
             self.linuxcnc_m72_cycle = Some(structure::M72Cycle {
@@ -3130,6 +3151,8 @@ impl Checker {
                 bottom: self.linuxcnc_cycle_bottom,
                 r: self.linuxcnc_cycle_r,
                 units: (state.units, state.feed_units),
+                abc: [state.position[6], state.position[7], state.position[8]],
+                unknown: state.unknown,
             });
         }
         self.machine.apply_taken(&self.values, taken);

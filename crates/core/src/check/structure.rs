@@ -389,6 +389,7 @@ impl Checker {
         self.linuxcnc_rate = Some(Dec::ZERO);
         self.linuxcnc_feed_saved = None;
         self.linuxcnc_feed_loose = None;
+        self.linuxcnc_extras = RestoreExtras::START;
         self.linuxcnc_feed_restored_at = None;
         self.linuxcnc_m72_dropped = None;
         self.linuxcnc_nurbs = super::tooling::Nurbs::default();
@@ -1500,6 +1501,8 @@ impl Checker {
                 && self.linuxcnc_call_ends(text);
             if kind == Kind::Call && main {
                 self.linuxcnc_still_call(b, text);
+                // (the body may set the coolant or the overrides)
+                self.linuxcnc_extras = RestoreExtras::UNKNOWN;
             }
             let label = self.linuxcnc_call_label(text);
             // (the skip of a block known not to run ends at an o-word line of its label; one
@@ -4021,6 +4024,10 @@ impl Checker {
         let mut spindle_set = false;
         let mut tool_change = false;
         let mut units_set = false;
+        // (the block's M7-M9, M48, M49: compared by value at an M72, `RestoreExtras`)
+        let mut extra_codes = [false; 5];
+        // (an M50: the feed override on (no P, or a P other than 0), off (P0), or not known)
+        let mut m50: Option<Option<bool>> = None;
         for (i, w) in b.words.iter().enumerate() {
             let code = || {
                 if !w.expression.is_empty() || !w.index.is_empty() {
@@ -4056,6 +4063,27 @@ impl Checker {
                 (b'M', Some(3.0 | 4.0 | 5.0 | 6.0 | 61.0 | 62.0..=68.0)) => early = true,
                 // (M19, whose step the overview does not list: both)
                 (b'M', Some(19.0)) => (early, late) = (true, true),
+                (b'M', Some(50.0)) => {
+                    let p = b.words.iter().position(|w| w.letter == b'P');
+                    m50 = Some(match p {
+                        None => Some(true),
+                        Some(k) => self
+                            .readable
+                            .get(k)
+                            .copied()
+                            .flatten()
+                            .map(|v| !v.is_zero()),
+                    });
+                }
+                (b'M', Some(m @ (7.0 | 8.0 | 9.0 | 48.0 | 49.0))) => {
+                    extra_codes[match m as u8 {
+                        9 => 0,
+                        7 => 1,
+                        8 => 2,
+                        48 => 3,
+                        _ => 4,
+                    }] = true
+                }
                 (b'M', Some(m)) => late |= !matches!(m, 70.0 | 71.0 | 72.0 | 73.0),
                 _ => {}
             }
@@ -4074,6 +4102,34 @@ impl Checker {
         let in_order = self.open_definition.is_none() && self.linuxcnc_open_flow.is_empty();
         if unread || !in_order {
             self.linuxcnc_feed_saved = None;
+        }
+        let extras_here = extra_codes.contains(&true) || m50.is_some();
+        // (the coolant and override where the block's M code runs, before its M7-M9, M48
+        // and M49 (the G-code overview's "G-code Order of Execution"); then after them, in
+        // the main program's order; in a condition, a loop, or after an M98 or an M code of
+        // a parameter, not known; a body's codes run where it is called)
+        let extras_at = self.linuxcnc_extras;
+        let extras_after = |mut e: RestoreExtras| {
+            for (k, code) in [9, 7, 8, 48, 49].into_iter().enumerate() {
+                if extra_codes[k] {
+                    e.apply(code);
+                }
+            }
+            // (M50 after M48/M49 in rs274's order, group 9's codes one a block)
+            if let Some(on) = m50 {
+                e.feed_override = on;
+            }
+            e
+        };
+        if self.open_definition.is_none() {
+            if unread || m98 || (extras_here || m7 == Some(72)) && !in_order {
+                self.linuxcnc_extras = RestoreExtras::UNKNOWN;
+            } else if m7 != Some(72) {
+                self.linuxcnc_extras = extras_after(extras_at);
+            }
+        }
+        if let Some(saved) = self.linuxcnc_feed_saved.as_mut() {
+            saved.extras_touched |= extras_here && m7 != Some(72);
         }
         // (a feed mode, a speed or an M98 in a condition or loop of the main program, after a
         // save in one: an M70 of a loop's later turn may save what it set)
@@ -4146,6 +4202,8 @@ impl Checker {
             units,
             quiet: !modal,
             still: !modal && still,
+            extras: extras_at,
+            extras_touched: extras_here && m7 != 72,
         };
         let main = self.open_definition.is_none();
         // (a body's own save, read straight after its sub: whether rs274's rate there is
@@ -4205,6 +4263,20 @@ impl Checker {
                 if let Some(s) = self.linuxcnc_feed_saved.as_mut() {
                     s.quiet = (s.quiet || saved.is_some()) && !late;
                     s.still &= !late;
+                    s.extras_touched = s.extras_touched && saved.is_none() || extras_here;
+                }
+                // (the coolant and override after it: the restore's, then the block's own
+                // where it surely runs; not known where the restore is not followed)
+                if in_order && !unread && !m98 {
+                    let restored = match saved {
+                        Some(s) => s.extras.restored(extras_at),
+                        None => RestoreExtras::UNKNOWN,
+                    };
+                    self.linuxcnc_extras = match dropped {
+                        Some(false) => extras_after(restored),
+                        Some(true) => restored,
+                        None => restored.unsure(extras_after(restored)),
+                    };
                 }
                 if dropped != Some(false) {
                     self.linuxcnc_m72_dropped = Some(self.stats.blocks);
@@ -4441,9 +4513,10 @@ impl Checker {
                 _ => {}
             }
         }
+        let cycle = self.linuxcnc_m72_cycle.take();
         self.linuxcnc_m72_motion = Some(M72Dropped {
             motion: self.linuxcnc_motion,
-            cycle: self.linuxcnc_m72_cycle.take(),
+            cycle,
             restored,
             plane,
             compensation,
@@ -4456,6 +4529,9 @@ impl Checker {
             if i < 3 && surely {
                 state.position[i] = before.xyz[i];
                 state.unknown = state.unknown & !mask | before.unknown & mask;
+            } else if let Some(c) = cycle.filter(|_| i >= 6 && surely) {
+                state.position[i] = c.abc[i - 6];
+                state.unknown = state.unknown & !mask | c.unknown & mask;
             } else if i < 3
                 && (state.position[i] != before.xyz[i]
                     || (state.unknown ^ before.unknown) & mask != 0)
@@ -4682,6 +4758,13 @@ impl Checker {
         use super::tooling::LinuxCncFeed;
         let differs = |a: Option<Dec>, b: Option<Dec>| Some(a? != b?);
         let differs_else = std::mem::take(&mut self.linuxcnc_m72_differs);
+        // (the coolant and the feed override: where none ran since the save, the restore
+        // writes neither)
+        let extras = if saved.extras_touched {
+            saved.extras.written(now.extras)
+        } else {
+            Some(false)
+        };
         // (the restore surely runs a block of its own: the M72's motion does not run)
         // (or the units: the restore runs a G20/G21 block of its own first, interp_convert.cc
         // `restore_settings`; or the spindle's direction or the cutter compensation, which
@@ -4692,10 +4775,12 @@ impl Checker {
             || matches!((saved.spindle, now.spindle), (Some(s), Some(n)) if s != n)
             || matches!((saved.compensation, now.compensation), (Some(s), Some(n)) if compensation_differs(s, n))
             || differs_else
+            || extras == Some(true)
             || differs(saved.rate, now.rate) == Some(true)
             || differs(saved.speed, now.speed) == Some(true);
-        let none = saved.still && now.still
-            || saved.quiet
+        let none = extras == Some(false) && saved.still && now.still
+            || extras == Some(false)
+                && saved.quiet
                 && now.quiet
                 && saved.mode == now.mode
                 && differs(saved.rate, now.rate) == Some(false)
@@ -7596,6 +7681,10 @@ pub(super) struct M72Cycle {
     pub(super) r: Option<Dec>,
     /// The units and feed units before the block's G20/G21.
     pub(super) units: (crate::modal::Units, crate::modal::Units),
+    /// A B C before the block, and the state's unknown axes: a surely dropped block leaves
+    /// them where they were, as X Y Z (review 76-lcnc76a F6).
+    pub(super) abc: [Option<Dec>; 3],
+    pub(super) unknown: u32,
 }
 
 /// LinuxCNC: what the main program's M70 or M73 saved of the feed
@@ -7620,6 +7709,123 @@ pub(super) struct FeedSaved {
     quiet: bool,
     /// `quiet`, and no F or S word either: the restore writes nothing, whatever the values.
     still: bool,
+    /// The coolant and the feed override the save took ([`RestoreExtras`]), and whether an
+    /// M7-M9, M48 or M49 ran since it (`extras_touched`): they are compared at the M72 by
+    /// value, not counted in `quiet`.
+    extras: RestoreExtras,
+    extras_touched: bool,
+}
+
+/// LinuxCNC: the modal M codes besides the spindle's that rs274 2.9.0's restore writes where
+/// they differ from the save (interp_convert.cc `gen_m_codes`, from interp_write.cc
+/// `write_m_codes`' slots), each None where not known: mist (M7) and flood (M8), off at the
+/// start of a program and after M9, and the feed override (M48 on, as at the start; M49
+/// off). Slot 4 holds 7 under mist, 9 with both off, none (-1) under flood alone; slot 5 8
+/// under flood, else none; slot 6 48 or 49. A slot written where it differs from the save and
+/// the saved one is not none (`M8` / `M70` / `M7` / `M72 G2 X0 Y0 R1` is "Current point same
+/// as end point of arc" in `rs274 -g`: the restore writes nothing; `M70` / `M8` / `M72 G2 X0
+/// Y0 R1` runs, the restore's ` M9` in its place; review 76-lcnc76a F7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct RestoreExtras {
+    pub(super) mist: Option<bool>,
+    pub(super) flood: Option<bool>,
+    pub(super) feed_override: Option<bool>,
+}
+
+impl RestoreExtras {
+    /// At the start of a program: coolant off, the overrides on.
+    pub(super) const START: RestoreExtras = RestoreExtras {
+        mist: Some(false),
+        flood: Some(false),
+        feed_override: Some(true),
+    };
+    pub(super) const UNKNOWN: RestoreExtras = RestoreExtras {
+        mist: None,
+        flood: None,
+        feed_override: None,
+    };
+
+    /// After the block's M7, M8, M9, M48 or M49 (`code`).
+    fn apply(&mut self, code: u8) {
+        match code {
+            7 => self.mist = Some(true),
+            8 => self.flood = Some(true),
+            9 => (self.mist, self.flood) = (Some(false), Some(false)),
+            48 => self.feed_override = Some(true),
+            49 => self.feed_override = Some(false),
+            _ => {}
+        }
+    }
+
+    /// The values after the restore of `self` (the save) where `now` is in force: each slot
+    /// written where it differs and the saved one is not none.
+    fn restored(self, now: RestoreExtras) -> RestoreExtras {
+        match self.written(now) {
+            Some(false) => now,
+            _ if self != RestoreExtras::UNKNOWN
+                && [
+                    self.mist,
+                    self.flood,
+                    self.feed_override,
+                    now.mist,
+                    now.flood,
+                    now.feed_override,
+                ]
+                .iter()
+                .all(Option::is_some) =>
+            {
+                let mut after = now;
+                let (mist, flood) = (self.mist == Some(true), self.flood == Some(true));
+                if mist {
+                    after.mist = Some(true);
+                } else if !flood {
+                    (after.mist, after.flood) = (Some(false), Some(false));
+                }
+                if flood {
+                    after.flood = Some(true);
+                }
+                after.feed_override = self.feed_override;
+                after
+            }
+            _ => RestoreExtras::UNKNOWN,
+        }
+    }
+
+    /// The values that may be either `self` or `other`: those they agree on.
+    fn unsure(self, other: RestoreExtras) -> RestoreExtras {
+        RestoreExtras {
+            mist: self.mist.filter(|_| self.mist == other.mist),
+            flood: self.flood.filter(|_| self.flood == other.flood),
+            feed_override: self
+                .feed_override
+                .filter(|_| self.feed_override == other.feed_override),
+        }
+    }
+
+    /// Whether the restore of `self` (the save) where `now` is in force writes one of these
+    /// codes (None: not known).
+    fn written(self, now: RestoreExtras) -> Option<bool> {
+        let slot4 = |e: RestoreExtras| match (e.mist?, e.flood?) {
+            (true, _) => Some(7),
+            (false, true) => Some(-1),
+            (false, false) => Some(9),
+        };
+        let slot5 = |e: RestoreExtras| e.flood.map(|f| if f { 8 } else { -1 });
+        let slot6 = |e: RestoreExtras| e.feed_override.map(|o| if o { 48 } else { 49 });
+        let mut any_unknown = false;
+        for (s, n) in [
+            (slot4(self), slot4(now)),
+            (slot5(self), slot5(now)),
+            (slot6(self), slot6(now)),
+        ] {
+            match (s, n) {
+                (Some(s), Some(n)) if s != n && s != -1 => return Some(true),
+                (Some(-1), _) | (Some(_), Some(_)) => {}
+                _ => any_unknown = true,
+            }
+        }
+        (!any_unknown).then_some(false)
+    }
 }
 
 /// LinuxCNC: whether two cutter compensations (the modal state's G40-G42 and whether it is

@@ -875,7 +875,12 @@ impl Checker {
         if !restored {
             self.linuxcnc_feed_word(f_at.checked_sub(1), codes, facts, start);
         }
-        if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
+        // (not a block whose M72 surely drops the rest of it: its probe or G92 never runs,
+        // the point is the one before it; review 77-lcnc77a F4, `M70` / `M8` / `M72 G38.2 Z0`
+        // / `G38.2 X0` is "Start point too close to probe point" at the second probe)
+        if g_unread
+            || codes.iter().any(|&c| linuxcnc_unsettles(c)) && !self.linuxcnc_m72_surely_dropped()
+        {
             self.linuxcnc_point_unsure |= self.linuxcnc_unsure_after(codes, g_unread, &first);
             // (G98's clearance is a number rs274 keeps from the series' start, in the
             // coordinates then in force)
@@ -1547,7 +1552,8 @@ impl Checker {
             return all;
         }
         self.linuxcnc_units_turned = self.stats.blocks;
-        let mut unsure = all;
+        // (A B C, which rs274 does not convert: review 76-lcnc76a F6)
+        let mut unsure = all & !(bit(b'A') | bit(b'B') | bit(b'C'));
         let moved = self.machine.state.incremental || self.linuxcnc_distance_unsure;
         for a in [b'X', b'Y', b'Z'] {
             if !(moved && named(a) || a == b'X' && self.x_diameter()) {
@@ -1898,6 +1904,40 @@ impl Checker {
         None
     }
 
+    /// LinuxCNC, a block that names A, B or C (before its values apply): their points before
+    /// it, for a probe's start ([`Checker::linuxcnc_probe_in_place`]), and whether the double
+    /// rs274 holds after it is the nearest of the point the state keeps: an absolute word's
+    /// is, an increment's sum may not be (A B C are not converted by G20/G21, review
+    /// 76-lcnc76a F6: `M70 G20` / `M72 G91` / `G38.2 A0` is "Start point too close to probe
+    /// point" in `rs274 -g`).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn linuxcnc_abc_named(&mut self) {
+        let state = &self.machine.state;
+        self.linuxcnc_abc_start = (
+            [state.position[6], state.position[7], state.position[8]],
+            state.unknown,
+            self.stats.blocks,
+            self.linuxcnc_abc_exact,
+        );
+        let incremental = if self.values.has_g(91) {
+            true
+        } else if self.values.has_g(90) {
+            false
+        } else {
+            state.incremental || self.linuxcnc_distance_unsure
+        };
+        for (k, &a) in b"ABC".iter().enumerate() {
+            if self.values.has(a) || self.values.unknown & bit(a) != 0 {
+                if incremental {
+                    self.linuxcnc_abc_exact &= !(1 << k);
+                } else {
+                    self.linuxcnc_abc_exact |= 1 << k;
+                }
+            }
+        }
+    }
+
     /// Whether a probe move ends exactly where it starts, as rs274ngc's `convert_probe` compares
     /// the two points (every axis equal, in the active coordinates): under G91 each axis word
     /// is zero; under G90 each names the point the axis is at, known exactly (`unsure`, the
@@ -1920,22 +1960,37 @@ impl Checker {
         let after = &self.machine.state;
         // (a probe without an axis word is refused before it runs: "All axes missing")
         let axes = crate::modal::AXES;
-        axes.iter().any(|&a| words.has(a)) && axes.iter().all(|&a| {
-            if !words.has(a) {
-                return true;
-            }
-            if after.incremental {
-                return words.value(a).is_some_and(|d| d.is_zero());
-            }
-            let held = crate::modal::AXES[..3]
-                .iter()
-                .position(|&x| x == a)
-                .map_or(Double::Nearest, |k| self.linuxcnc_double[k]);
-            unsure & bit(a) == 0
-                && start.unknown & bit(a) == 0
-                && !after.is_unknown(a)
-                && matches!((start.axis(a), after.axis(a)), (Some(s), Some(e)) if held.equals(s, e))
-        })
+        axes.iter().any(|&a| words.has(a))
+            && axes.iter().all(|&a| {
+                if !words.has(a) {
+                    return true;
+                }
+                if after.incremental {
+                    return words.value(a).is_some_and(|d| d.is_zero());
+                }
+                let held = crate::modal::AXES[..3]
+                    .iter()
+                    .position(|&x| x == a)
+                    .map_or(Double::Nearest, |k| self.linuxcnc_double[k]);
+                // (A B C: their start kept where the block names one, their double the nearest
+                // where the last word of each was absolute, `linuxcnc_abc_named`)
+                let (from, unknown) = match b"ABC".iter().position(|&x| x == a) {
+                    Some(k) => {
+                        let (abc, unknown, at, exact) = self.linuxcnc_abc_start;
+                        let exact = exact & 1 << k != 0;
+                        let kept = at == self.stats.blocks && exact;
+                        (
+                            abc[k].filter(|_| kept),
+                            unknown | if kept { 0 } else { bit(a) },
+                        )
+                    }
+                    None => (start.axis(a), start.unknown),
+                };
+                unsure & bit(a) == 0
+                    && unknown & bit(a) == 0
+                    && !after.is_unknown(a)
+                    && matches!((from, after.axis(a)), (Some(s), Some(e)) if held.equals(s, e))
+            })
     }
 
     /// The refusals of rs274ngc of a code that runs under cutter radius compensation
