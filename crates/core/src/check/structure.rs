@@ -494,16 +494,7 @@ impl Checker {
         self.after_call(key);
         self.call_work(b, key);
         self.call_not_followed(b, key);
-        let s = &self.machine.state;
-        let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
-        self.call_units
-            .entry(key)
-            .and_modify(|known| {
-                if *known != units {
-                    *known = None;
-                }
-            })
-            .or_insert(units);
+        self.call_units_seen(key);
     }
 
     /// A block after an end or a return (M30, M99) of a Haas's program whose M97 calls were
@@ -687,10 +678,18 @@ impl Checker {
         if !followed {
             self.call_not_followed(b, number);
         }
+        self.call_units_seen(number);
+    }
+
+    /// The units a call of program `key` (a number, a Haas's local subprogram, a later
+    /// LinuxCNC definition) is made in, kept for it: the same at every call, or None where
+    /// two calls differ or one is made where the units are not known. Read where its blocks
+    /// are read after the calls and where it ends ([`Checker::after_end`]).
+    fn call_units_seen(&mut self, key: i64) {
         let s = &self.machine.state;
         let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
         self.call_units
-            .entry(number)
+            .entry(key)
             .and_modify(|known| {
                 if *known != units {
                     *known = None;
@@ -1894,16 +1893,7 @@ impl Checker {
         self.call_unread_here = true;
         self.offsets_written.then(&unread);
         self.offset_writer(&unread, false);
-        let s = &self.machine.state;
-        let units = (!self.units_unknown).then_some((s.units, s.feed_units, s.units_given));
-        self.call_units
-            .entry(key)
-            .and_modify(|known| {
-                if *known != units {
-                    *known = None;
-                }
-            })
-            .or_insert(units);
+        self.call_units_seen(key);
     }
 
     /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
