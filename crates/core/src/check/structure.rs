@@ -474,14 +474,9 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn local_call(&mut self, b: &BlockView<'_>) {
-        let Some(key) = b
-            .words
-            .iter()
-            .enumerate()
-            .find(|(_, w)| w.letter == b'P' && w.index.is_empty())
-            .and_then(|(i, _)| self.readable[i])
-            .filter(|v| v.is_whole())
-            .and_then(|v| local_key(self.in_hand, v.trunc()))
+        let Some(key) = self
+            .called_number(b)
+            .and_then(|n| local_key(self.in_hand, n))
         else {
             // (inside a local subprogram: an M97 not followed, which may change the
             // offsets its callers run under after it; review 77-calls77 F2)
@@ -626,15 +621,7 @@ impl Checker {
             }
             return;
         }
-        let Some(number) = b
-            .words
-            .iter()
-            .enumerate()
-            .find(|(_, w)| w.letter == b'P' && w.index.is_empty())
-            .and_then(|(i, _)| self.readable[i])
-            .filter(|v| v.is_whole())
-            .map(|v| v.trunc())
-        else {
+        let Some(number) = self.called_number(b) else {
             // (a P the check cannot evaluate, `M98 P#1`: which program runs is not known)
             if let Some(w) = b
                 .words
@@ -679,6 +666,18 @@ impl Checker {
             self.call_not_followed(b, number);
         }
         self.call_units_seen(number);
+    }
+
+    /// The whole number a call's P gives (`M98 P2000`, `M97 P1000`): None where its value is
+    /// not known or not whole.
+    fn called_number(&self, b: &BlockView<'_>) -> Option<i64> {
+        b.words
+            .iter()
+            .enumerate()
+            .find(|(_, w)| w.letter == b'P' && w.index.is_empty())
+            .and_then(|(i, _)| self.readable[i])
+            .filter(|v| v.is_whole())
+            .map(|v| v.trunc())
     }
 
     /// The units a call of program `key` (a number, a Haas's local subprogram, a later
