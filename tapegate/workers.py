@@ -350,8 +350,9 @@ class _Map:
     def here(self, slot: _Slot, receive: Callable[[Any], object] | None) -> None:
         """The main thread's own item (:meth:`take`'s third value), done here: its pieces
         handed to ``receive`` at once if its turn had come when it was given (every item
-        before it taken), else kept as a thread's are (:meth:`put`; text only: past the
-        budget they spill, and nothing here waits for room, which only this thread makes).
+        before it taken), else kept as a thread's are (:meth:`put`: past the budget, text
+        spills and other pieces are held; nothing here waits for room, which only this
+        thread makes).
         An ``Exception`` of the function is raised at the item's turn, as a thread's; a
         ``BaseException`` (^C's ``KeyboardInterrupt``, SIGTERM's ``SystemExit``) at once."""
         if slot.index == self.due:  # (``due`` moves in this thread only)
@@ -414,7 +415,8 @@ class _Map:
     def put(self, slot: _Slot, piece: Any, here: bool = False) -> None:
         """``piece`` of ``slot``'s item, sent by the thread doing it (``here``: the main
         thread, which never waits, as only it makes room): held in memory within the bounds,
-        else spilled (text), else waited with for room. Where the spill fails (an
+        else spilled (text), else waited with for room (a thread) or held past the bounds
+        (the main thread: other pieces than text). Where the spill fails (an
         ``OSError``), nothing is lost: :attr:`unspilled` is set and the piece placed again."""
         while True:
             with self.cond:
@@ -439,6 +441,10 @@ class _Map:
                             self._keep(slot, piece, due)
                             self.overheld = self.overheld or here  # (past the bounds)
                             return
+                    elif here:  # other pieces of the main thread's own item: held, as
+                        # only it makes room (waiting, it waited for ever: the CI's hang)
+                        self._keep(slot, piece, due)
+                        return
                     self.cond.notify()  # (the main thread makes the room: woken for it)
                     if due:
                         self.space.wait()
@@ -489,7 +495,8 @@ class _Map:
 
     def _keep(self, slot: _Slot, piece: Any, due: bool) -> None:
         """``piece`` held in memory where it would have been spilled (the lock held; the spill
-        failed): after the item's other pieces, in its order."""
+        failed) or waited with (the main thread's own item, other pieces than text): after
+        the item's other pieces, in its order."""
         if slot.spill is None:
             slot.pieces.append(piece)
             if not due and not slot.early:

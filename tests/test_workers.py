@@ -1790,3 +1790,34 @@ def test_check_whose_spill_files_are_cut_short_reports_every_file_as_one_thread(
     lines = [line for line in two.stderr.decode().splitlines() if not line.startswith(told)]
     assert lines == one.stderr.decode().splitlines()
     assert "cannot read" not in two.stderr.decode()
+
+
+def test_the_main_threads_own_item_never_waits_for_room_it_alone_makes(monkeypatch):
+    """Other pieces than text (tuples) of the main thread's own item, not yet due, past every
+    bound: held in memory, not waited with (only the main thread makes room, and waiting it
+    waited for ever: the CI's hang in the whole map of the test above); every piece then
+    reaches receive in the items' order."""
+    import threading
+
+    import tapegate.workers as workers
+
+    _worker_takes_item_zero(monkeypatch)
+    many = 4 * (workers.WAITING + workers.PIECES)
+    sent = threading.Event()
+
+    def func(item: int) -> int:
+        if item == 0 and not sent.wait(timeout=30):
+            raise AssertionError("item 1's pieces were not all sent while item 0 ran")
+        for n in range(many if item == 1 else 2):
+            send((item, n))
+        if item == 1:
+            sent.set()
+        return item
+
+    got: list[object] = []
+    for result in ordered_map(func, list(range(4)), 2, receive=got.append, sizes=[1] * 4):
+        got.append(result)
+    expected: list[object] = []
+    for item in range(4):
+        expected += [(item, n) for n in range(many if item == 1 else 2)] + [item]
+    assert got == expected
