@@ -45,6 +45,29 @@ def note_interrupts() -> None:
         pass
 
 
+def quiet_swallowed_stops() -> None:
+    """The interpreter's "Exception ignored in ..." report of a stop that a finalizer swallowed
+    (a ^C landing in an import's module-lock callback), not printed: the stop is noted in
+    :data:`TAKEN` and raised again by :func:`heed_stops`, so the traceback told of nothing
+    lost, and the command's stderr was "Aborted!" under a traceback (1 CI run in some
+    hundreds: `convert FIFO` stopped by ^C). Any other exception a finalizer raises is
+    reported as before, by the hook that was there. For the ``tapegate`` command's own
+    process (:mod:`tapegate.launch`), once."""
+    import sys
+
+    before = sys.unraisablehook
+    if getattr(before, "quiet_stops", False):
+        return
+
+    def hook(unraisable: Any) -> None:
+        if TAKEN and isinstance(unraisable.exc_value, KeyboardInterrupt | SystemExit):
+            return
+        before(unraisable)
+
+    hook.quiet_stops = True  # type: ignore[attr-defined]
+    sys.unraisablehook = hook
+
+
 def heed_stops() -> None:
     """The stop a signal asked for, raised again (``KeyboardInterrupt`` for ^C, else an exit
     with 128 + its number) if one was taken: called before the command waits on something

@@ -164,7 +164,7 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
     click. A plain command ends the process once its output is flushed (:func:`leave`); with
     ``clean_exit`` it raises ``SystemExit`` as click's commands do, for a caller that goes on
     (as ``mypy.main``'s argument of that name)."""
-    from formats.stops import guard_stdout, note_interrupts
+    from formats.stops import guard_stdout, note_interrupts, quiet_swallowed_stops
 
     if sys.stdout is None:
         # file descriptor 1 closed (`>&-`): Python gives the process no stdout, and a report,
@@ -175,6 +175,8 @@ def main(prog_name: str | None = None, clean_exit: bool = False) -> None:
                 "tapegate: error: standard output is closed: give it a file or /dev/null\n")
         sys.exit(2)
     note_interrupts()  # (a ^C a finalizer swallows is still obeyed: formats.stops)
+    if not clean_exit:
+        quiet_swallowed_stops()  # (and not told with a traceback)
     try:
         found = None if "_TAPEGATE_COMPLETE" in os.environ else plain(sys.argv[1:])
         if found is None:
