@@ -471,3 +471,43 @@ def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(h
     the profile's where the body writes no offset: -33."""
     got = said(LOCAL + "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %", haas)
     assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == [(7, "X goes to -33")]
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (review 77-calls77 F10, h176: N100 leaves G91, the main's `G0 X-27.` after the call is
+    # an increment: X 5 - 27 = -22, machine -26 under G55, inside; not -31)
+    ("M97 P100 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / %", []),
+    # (h170: the same body, the main's X32.5 an increment to 32.5 from -28: no span of 60.5)
+    ("G0 X-28. / M97 P100 / G0 X32.5 / M30 / N100 G91 G0 Y0 / M99 / %", []),
+    # (the body writes G91 and then G90: it leaves the call's G90, the move judged, -31)
+    ("M97 P100 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / G90 / M99 / %",
+     [(7, "X goes to -31")]),
+    # (the body writes no G90/G91: as before, -31)
+    ("M97 P100 / G55 / G0 X-27. / M30 / N100 G0 X5. / M99 / %", [(7, "X goes to -31")]),
+    # (the main's own G90 after the call: its moves from there are its own mode's, -31)
+    ("M97 P100 / G55 / G90 G0 X-27. / M30 / N100 G91 G0 X5. / M99 / %",
+     [(7, "X goes to -31")]),
+    # (no N100 in the file: the control alarms at the call (TG118), nothing judged after it,
+    # as before)
+    ("M97 P100 / G55 / G0 X-27. / M30 / %", []),
+])
+def test_the_main_s_moves_after_an_m97_wait_for_the_mode_its_body_leaves(
+        haas: str, blocks: str, expected: list[tuple[int, str]]) -> None:
+    """G90/G91 are modal and M99 restores neither: the main's moves after an M97 whose body
+    is read after M30 run in the mode the body leaves (review 77-calls77 F10)."""
+    got = said(LOCAL + blocks, haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (rs274 -g: STRAIGHT_TRAVERSE(100) in o100, then SET_G5X_OFFSET(2) and
+    # STRAIGHT_TRAVERSE(-600): the main's X-700 an increment, machine -700, inside)
+    ("o100 call / G55 / G0 X-700 / M2 / o100 sub / G91 G0 X100 / o100 endsub", []),
+    # (rs274 -g: STRAIGHT_TRAVERSE(-700) after SET_G5X_OFFSET(2): machine -800)
+    ("o100 call / G55 / G0 X-700 / M2 / o100 sub / G0 X5 / o100 endsub",
+     [(5, "X goes to -800")]),
+])
+def test_the_main_s_moves_after_a_later_definition_wait_for_the_mode_it_leaves(
+        lcnc: str, blocks: str, expected: list[tuple[int, str]]) -> None:
+    got = said(LATER + blocks, lcnc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected

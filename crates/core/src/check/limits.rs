@@ -3963,7 +3963,9 @@ impl Checker {
             f.placed = placed;
             // (after calls of programs not read there, re-selected: review 61a F13)
             if !self.offsets_written.unread.is_empty() {
-                f.pending_on.clone_from(&self.offsets_written.unread);
+                // (a mark of the caller's mode after a call kept: callmode.rs)
+                f.pending_on.retain(|&m| super::callmode::is_mark(m));
+                f.pending_on.extend_from_slice(&self.offsets_written.unread);
                 f.pending_on.push(PENDING_OWN);
             }
             // (a subprogram's own offset after its own units code: review 60 F4)

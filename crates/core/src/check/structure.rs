@@ -487,6 +487,7 @@ impl Checker {
         };
         self.local_called = true;
         self.after_call(key);
+        self.call_mode_kept(key);
         self.call_work(b, key);
         self.call_not_followed(b, key);
         self.call_units_seen(key);
@@ -534,6 +535,7 @@ impl Checker {
     fn local_body_begin(&mut self, key: i64, main: Option<i64>) {
         self.local_main = main;
         self.in_hand = Some(key);
+        self.call_mode_begun(key);
         self.file_programs.insert(key);
         self.offsets_unread_only = false;
         self.outside = [0; 9];
@@ -1783,6 +1785,7 @@ impl Checker {
                     && self.open_definition.is_none()
                     && self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) =>
             {
+                self.call_mode_returned(true);
                 self.local_body_end();
                 self.call_keeps = true;
             }
@@ -1881,6 +1884,7 @@ impl Checker {
         });
         let key = LATER_DEFINITION + index as i64;
         self.after_call(key);
+        self.call_mode_kept(key);
         self.call_work(b, key);
         // (what it writes is known where its lines are read: a G54-G59 of the main's own
         // after the call judged, held to the file's end, as after a FANUC's M98 of a
