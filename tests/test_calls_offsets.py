@@ -511,3 +511,56 @@ def test_the_main_s_moves_after_a_later_definition_wait_for_the_mode_it_leaves(
         lcnc: str, blocks: str, expected: list[tuple[int, str]]) -> None:
     got = said(LATER + blocks, lcnc)
     assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (review 77-calls77 F9, h172: N100 leaves G21, the second call (under G55) runs its
+    # `G0 X-27.` in millimetres: -1.063 in, machine -5.063: inside, no -31)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / M99 / %", []),
+    # (it leaves the call's G20: -31 at the second call, as before)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G20 / M99 / %",
+     [(9, "X goes to -31")]),
+    # (its move after its own G21 runs in millimetres at both calls: -800 mm is -31.496 in,
+    # under G54 at -31.496, under G55 at -35.496; the -27 before the G21 is -5.063 at the
+    # second call)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / G0 X-800. / M99 / %",
+     [(11, "X goes to -31.496063"), (11, "X goes to -35.496063")]),
+])
+def test_a_haas_local_subprogram_s_second_call_runs_in_the_units_it_leaves(
+        haas: str, blocks: str, expected: list[tuple[int, str]]) -> None:
+    """G20/G21 are modal and M99 restores neither: a call after the first runs the body's
+    positions before its own units code in the units the first run leaves."""
+    got = said(LOCAL + blocks, haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # (review 77-calls77 F7, f13: O2000 leaves G20: the second call's `G0 X-700.` is -700 in,
+    # -17780 mm, machine -17880 under G55)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G0 X-700. / G20 / M99", [(9, "X goes to -17880", True)]),
+    # (-300 mm inside under both offsets; -300 in, -7620 mm, is not)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G0 X-300. / G20 / M99", [(9, "X goes to -7720", True)]),
+    # (its own G21 before the move: millimetres at both calls, -800)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G21 / G0 X-700. / G20 / M99", [(10, "X goes to -800", False)]),
+    # (a G10 of G55's X after the move: not known, as before)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G0 X-700. / G20 / G10 L2 P2 X0 / M99", []),
+])
+def test_a_later_program_s_second_call_runs_in_the_units_it_leaves(
+        fanuc: str, text: str, expected: list[tuple[int, str, bool]]) -> None:
+    got = said(text, fanuc)
+    assert [(line, msg.split(" in machine")[0], ", in inches: the units" in msg)
+            for line, _, msg in got] == expected
+
+
+def test_a_later_definition_s_second_call_runs_in_the_units_it_leaves(lcnc: str) -> None:
+    """rs274 -g: `STRAIGHT_TRAVERSE(-300)` in millimetres at the first call, then
+    `USE_LENGTH_UNITS(CANON_UNITS_INCHES)`, `SET_G5X_OFFSET(2)` and `STRAIGHT_TRAVERSE(-300)`
+    in inches: -7620 mm, machine -7720 (review 77-calls77 F4)."""
+    got = said(LATER + "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-300 / G20 / "
+               "o100 endsub", lcnc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
+        [(8, "X goes to -7720")]

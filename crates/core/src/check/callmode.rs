@@ -175,3 +175,161 @@ impl Checker {
         }
     }
 }
+
+/// A body read under its calls' work offset ([`super::structure::WorkCall`]): its positions
+/// on one axis judged under another call's offset ([`super::structure::Other`] `other`)
+/// before a units code of its own -- the least and the most, and the findings said of them.
+/// The other call runs after the first, in the units the first run leaves (G20/G21 are
+/// modal and M99 restores neither: Haas Mill Operator's Manual, G20/G21 and M99; FANUC
+/// 0i-MF Operator's Manual, "Subprogram call (M98)"; LinuxCNC keeps a subroutine's G20 after
+/// its `endsub`, `rs274 -g`): where the body writes a units code that leaves other units
+/// than its start's, they are judged again in those (review 77-calls77 F9 and F7: a body
+/// called in inches that leaves G21 runs its `G0 X-27.` at the second call as -27 mm, -1.06
+/// in; one called in millimetres that leaves G20 its `G0 X-700.` as -700 in, -17780 mm).
+#[derive(Debug, Clone)]
+pub(super) struct Rescale {
+    other: usize,
+    i: usize,
+    axis: u8,
+    offset: crate::decimal::Dec,
+    travel: (f64, f64),
+    least: (f64, (usize, usize)),
+    most: (f64, (usize, usize)),
+    /// The marks its findings carry ([`super::limits::PENDING_OTHER_CALL`] less the
+    /// offset's index, [`super::limits::PENDING_MODE_SELF`] or 0).
+    marks: [i64; 2],
+    said: Vec<String>,
+}
+
+/// The most axes and calls kept so (a body with more is judged as before).
+const RESCALE_MAX: usize = 64;
+
+type Place = (u8, usize, crate::decimal::Dec, (f64, f64));
+
+impl Rescale {
+    /// A position `at` (line and column `place`) judged under other call `other`.
+    pub(super) fn judged(
+        all: &mut Vec<Rescale>,
+        other: usize,
+        (axis, i, offset, travel): Place,
+        (at, place): (f64, (usize, usize)),
+        marks: [i64; 2],
+    ) {
+        if let Some(r) = all.iter_mut().find(|r| r.other == other && r.i == i) {
+            if at < r.least.0 {
+                r.least = (at, place);
+            }
+            if at > r.most.0 {
+                r.most = (at, place);
+            }
+            if marks[1] != 0 {
+                r.marks[1] = marks[1];
+            }
+        } else if all.len() < RESCALE_MAX {
+            all.push(Rescale {
+                other,
+                i,
+                axis,
+                offset,
+                travel,
+                least: (at, place),
+                most: (at, place),
+                marks,
+                said: Vec::new(),
+            });
+        }
+    }
+
+    /// Whether a finding was said of other call `other` before the units code.
+    pub(super) fn other_said(&self, other: usize) -> bool {
+        self.other == other && !self.said.is_empty()
+    }
+
+    /// The finding `f` said of the last position judged under other call `other`.
+    pub(super) fn said(all: &mut [Rescale], other: usize, i: usize, f: &super::Finding) {
+        if let Some(r) = all.iter_mut().find(|r| r.other == other && r.i == i) {
+            r.said.push(f.message.clone());
+        }
+    }
+}
+
+impl Checker {
+    /// The body read under its calls' offset ends: where it wrote a units code of its own
+    /// and leaves other units than its start's, each other call's findings of its positions
+    /// before that code are judged again in the units left ([`Rescale`]), in their place.
+    pub(super) fn call_units_rescaled(&mut self) {
+        let Some(w) = self.work_call.as_mut() else {
+            return;
+        };
+        let rescale = std::mem::take(&mut w.rescale);
+        let units = self.machine.state.units;
+        if rescale.is_empty()
+            || self.machine.units_codes == w.units_codes_at
+            || units == w.units_at
+            || self.units_unknown
+        {
+            return;
+        }
+        use crate::modal::Units;
+        let (ratio, name) = match (w.units_at, units) {
+            (Units::Metric, Units::Inch) => (25.4, "inches"),
+            _ => (1.0 / 25.4, "millimetres"),
+        };
+        let calls: Vec<(i64, String)> = w
+            .others
+            .iter()
+            .map(|o| {
+                (
+                    o.0,
+                    super::structure::WorkCall::named_by(self.in_hand, &o.1, o.2),
+                )
+            })
+            .collect();
+        let selected = self.selection.enabled(Rule::TravelExceeded);
+        for r in rescale {
+            let mut first = None;
+            let mut kept = 0;
+            self.found.retain(|f| {
+                let gone = f.rule == Rule::TravelExceeded
+                    && f.pending_on.contains(&r.marks[0])
+                    && r.said.contains(&f.message);
+                if gone {
+                    first.get_or_insert(kept);
+                } else {
+                    kept += 1;
+                }
+                !gone
+            });
+            let Some((work, named)) = calls.get(r.other) else {
+                continue;
+            };
+            let (low, high) = r.travel;
+            let mut at = first.unwrap_or(self.found.len());
+            for (side, (value, (line, column))) in [(-1, r.least), (1, r.most)] {
+                let work_at = value * ratio;
+                let machine_at = work_at + r.offset.to_f64();
+                if super::limits::travel_side(machine_at, r.travel) != side || !selected {
+                    continue;
+                }
+                let message = format!(
+                    "{} goes to {} in machine coordinates (work {} + G{work} offset {}), \
+                     outside the travel {low} to {high}{named}, in {name}: the units the \
+                     run before this call leaves (G20/G21 are modal)",
+                    r.axis as char,
+                    super::round6(machine_at),
+                    super::round6(work_at),
+                    r.offset,
+                );
+                let before = self.found.len();
+                self.report(Rule::TravelExceeded, message, line, column);
+                if self.found.len() > before {
+                    let mut f = self.found.pop().expect("said");
+                    f.pending_on.extend(r.marks.iter().filter(|&&m| m != 0));
+                    let at_now = at.min(self.found.len());
+                    self.found.insert(at_now, f);
+                    at = at_now + 1;
+                }
+            }
+        }
+    }
+}

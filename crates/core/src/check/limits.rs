@@ -3837,7 +3837,19 @@ impl Checker {
         let mut held = false;
         // (after a G90/G91 of its own, its positions are in its own mode at every call)
         let own_mode = self.machine.distance_codes != call.codes_at;
-        for (work, words, line, outside, tentative) in &mut call.others {
+        // (before a units code of its own, in the units the run before leaves: F9)
+        let rescaled = self.machine.units_codes == call.units_codes_at;
+        if !rescaled && !call.units_cut {
+            // (an excursion said before its units code may be judged again in other units at
+            // its end, and dropped: one after the code is said on its own)
+            call.units_cut = true;
+            let said = |k: usize| call.rescale.iter().any(|r| r.other_said(k));
+            let cut: Vec<bool> = (0..call.others.len()).map(said).collect();
+            for (o, _) in call.others.iter_mut().zip(cut).filter(|(_, c)| *c) {
+                o.3 = [0; 9];
+            }
+        }
+        for (k, (work, words, line, outside, tentative)) in call.others.iter_mut().enumerate() {
             let Some(offset) = self
                 .config
                 .work_offsets
@@ -3847,6 +3859,19 @@ impl Checker {
             else {
                 continue;
             };
+            if rescaled {
+                let marks = [
+                    PENDING_OTHER_CALL - (*work - 54).clamp(0, 5),
+                    if *tentative && !own_mode {
+                        PENDING_MODE_SELF
+                    } else {
+                        0
+                    },
+                ];
+                let place = (axis, i, offset, (low, high));
+                super::callmode::Rescale::judged(&mut call.rescale, k, place, (at, at_line), marks);
+                held = true;
+            }
             let machine_at = at + offset.to_f64();
             let out = travel_side(machine_at, (low, high));
             if out != 0 && out != outside[i] {
@@ -3866,6 +3891,9 @@ impl Checker {
                             f.pending_on.push(PENDING_MODE_SELF);
                         }
                         held = true;
+                        if rescaled {
+                            super::callmode::Rescale::said(&mut call.rescale, k, i, f);
+                        }
                     }
                 }
             }
@@ -4293,7 +4321,7 @@ fn frame_variable(text: &[u8]) -> Option<&[u8]> {
 /// above, 0 inside (within 1e-9). A move from one side to the other crosses the travel:
 /// another excursion (TG601 said once an excursion).
 #[inline]
-fn travel_side(at: f64, (low, high): (f64, f64)) -> i8 {
+pub(super) fn travel_side(at: f64, (low, high): (f64, f64)) -> i8 {
     if at < low - 1e-9 {
         -1
     } else if at > high + 1e-9 {

@@ -938,6 +938,8 @@ impl Checker {
             || self.in_hand.is_none_or(|n| self.after_unsure.contains(&n));
         // (each offset's own writes: a G10 L2 P1 holds nothing of a G55 call, F7)
         let (axes, maybe) = (w.axes, w.maybe);
+        // (a units code of its own: the other calls run in the units it leaves, F9)
+        self.call_units_rescaled();
         let (mode, other) = (
             super::limits::PENDING_MODE_SELF,
             super::limits::PENDING_OTHER_CALL,
@@ -1005,6 +1007,10 @@ impl Checker {
             codes_at: self.machine.distance_codes,
             held: false,
             unsure: false,
+            units_codes_at: self.machine.units_codes,
+            units_at: self.machine.state.units,
+            rescale: Vec::new(),
+            units_cut: false,
         };
         self.offsets_written = c.written.clone();
         self.work = Some(w.work);
@@ -7344,6 +7350,14 @@ pub(super) struct WorkCall {
     /// It lost the profile's offsets ([`Checker::offsets_rewritten`]) while read: the
     /// findings held for the other calls are dropped at its end.
     pub(super) unsure: bool,
+    /// The count of units codes and the units at its start, and the positions judged under
+    /// the other calls' offsets before a units code of its own (review 77-calls77 F9:
+    /// judged again in the units it leaves, [`super::callmode::Rescale`]).
+    pub(super) units_codes_at: u32,
+    pub(super) units_at: crate::modal::Units,
+    pub(super) rescale: Vec<super::callmode::Rescale>,
+    /// A position was judged after a units code of its own.
+    pub(super) units_cut: bool,
 }
 
 impl WorkCall {
