@@ -525,6 +525,8 @@ def test_the_main_s_moves_after_a_later_definition_wait_for_the_mode_it_leaves(
     # second call)
     ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / G0 X-800. / M99 / %",
      [(11, "X goes to -31.496063"), (11, "X goes to -35.496063")]),
+    # (it leaves G21 and a G54 of its own: the main's G55 before the second call, -5.063)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / G54 / M99 / %", []),
 ])
 def test_a_haas_local_subprogram_s_second_call_runs_in_the_units_it_leaves(
         haas: str, blocks: str, expected: list[tuple[int, str]]) -> None:
@@ -545,6 +547,9 @@ def test_a_haas_local_subprogram_s_second_call_runs_in_the_units_it_leaves(
     # (its own G21 before the move: millimetres at both calls, -800)
     ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
      "G21 / G0 X-700. / G20 / M99", [(10, "X goes to -800", False)]),
+    # (the main's own G21 between the calls: the second runs in it, -800 as before)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G21 / G55 / M98 P2000 / M30 / "
+     "O2000 / G0 X-700. / G20 / M99", [(10, "X goes to -800", False)]),
     # (a G10 of G55's X after the move: not known, as before)
     ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
      "G0 X-700. / G20 / G10 L2 P2 X0 / M99", []),

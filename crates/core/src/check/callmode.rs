@@ -189,6 +189,9 @@ impl Checker {
 #[derive(Debug, Clone)]
 pub(super) struct Rescale {
     other: usize,
+    /// That call's offset (G`work`) and its naming ([`super::structure::WorkCall::named_by`]).
+    work: i64,
+    named: String,
     i: usize,
     axis: u8,
     offset: crate::decimal::Dec,
@@ -210,7 +213,7 @@ impl Rescale {
     /// A position `at` (line and column `place`) judged under other call `other`.
     pub(super) fn judged(
         all: &mut Vec<Rescale>,
-        other: usize,
+        (other, named): (usize, impl FnOnce() -> (i64, String)),
         (axis, i, offset, travel): Place,
         (at, place): (f64, (usize, usize)),
         marks: [i64; 2],
@@ -226,8 +229,11 @@ impl Rescale {
                 r.marks[1] = marks[1];
             }
         } else if all.len() < RESCALE_MAX {
+            let (work, named) = named();
             all.push(Rescale {
                 other,
+                work,
+                named,
                 i,
                 axis,
                 offset,
@@ -275,16 +281,6 @@ impl Checker {
             (Units::Metric, Units::Inch) => (25.4, "inches"),
             _ => (1.0 / 25.4, "millimetres"),
         };
-        let calls: Vec<(i64, String)> = w
-            .others
-            .iter()
-            .map(|o| {
-                (
-                    o.0,
-                    super::structure::WorkCall::named_by(self.in_hand, &o.1, o.2),
-                )
-            })
-            .collect();
         let selected = self.selection.enabled(Rule::TravelExceeded);
         for r in rescale {
             let mut first = None;
@@ -300,9 +296,7 @@ impl Checker {
                 }
                 !gone
             });
-            let Some((work, named)) = calls.get(r.other) else {
-                continue;
-            };
+            let (work, named) = (r.work, &r.named);
             let (low, high) = r.travel;
             let mut at = first.unwrap_or(self.found.len());
             for (side, (value, (line, column))) in [(-1, r.least), (1, r.most)] {

@@ -3849,7 +3849,8 @@ impl Checker {
                 o.3 = [0; 9];
             }
         }
-        for (k, (work, words, line, outside, tentative)) in call.others.iter_mut().enumerate() {
+        for (k, (work, words, line, outside, tentative, left)) in call.others.iter_mut().enumerate()
+        {
             let Some(offset) = self
                 .config
                 .work_offsets
@@ -3859,7 +3860,7 @@ impl Checker {
             else {
                 continue;
             };
-            if rescaled {
+            if rescaled && *left {
                 let marks = [
                     PENDING_OTHER_CALL - (*work - 54).clamp(0, 5),
                     if *tentative && !own_mode {
@@ -3869,7 +3870,17 @@ impl Checker {
                     },
                 ];
                 let place = (axis, i, offset, (low, high));
-                super::callmode::Rescale::judged(&mut call.rescale, k, place, (at, at_line), marks);
+                let named = || {
+                    let named = super::structure::WorkCall::named_by(self.in_hand, words, *line);
+                    (*work, named)
+                };
+                super::callmode::Rescale::judged(
+                    &mut call.rescale,
+                    (k, named),
+                    place,
+                    (at, at_line),
+                    marks,
+                );
                 held = true;
             }
             let machine_at = at + offset.to_f64();
@@ -3891,7 +3902,7 @@ impl Checker {
                             f.pending_on.push(PENDING_MODE_SELF);
                         }
                         held = true;
-                        if rescaled {
+                        if rescaled && *left {
                             super::callmode::Rescale::said(&mut call.rescale, k, i, f);
                         }
                     }

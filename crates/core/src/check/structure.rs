@@ -767,6 +767,7 @@ impl Checker {
                 line: b.line,
                 mode_by_self,
                 others: Vec::new(),
+                units_codes: self.machine.units_codes,
             }
         });
         if assumed && here.is_some() {
@@ -887,8 +888,17 @@ impl Checker {
                             // mode is its own only where it writes none)
                             let tentative = b.mode_by_self && a.incremental != b.incremental
                                 || number >= LOCAL_BODY;
-                            a.others
-                                .push((b.work, b.call.clone(), b.line, b.outside, tentative));
+                            // (no units code of the caller's since the first call: it
+                            // runs in the units the body leaves, callmode::Rescale)
+                            let left = a.units_codes == b.units_codes;
+                            a.others.push((
+                                b.work,
+                                b.call.clone(),
+                                b.line,
+                                b.outside,
+                                tentative,
+                                left,
+                            ));
                         }
                     }
                     _ => *before = None,
@@ -7319,14 +7329,17 @@ pub(super) struct CallWork {
     /// and where each axis was outside at it. The body's positions are judged under each
     /// of these too (one subprogram called once a fixture, under G54, G55, G56...).
     others: Vec<Other>,
+    /// The machine's count of units codes at the call.
+    units_codes: u32,
 }
 
 /// A call of [`CallWork::others`]: the offset, the call's words and line, which side of
 /// the travel each axis was outside at the call, then after each position of the body, and
 /// whether the call's distance mode is the one the program leaves, not known to be the
 /// first call's: its findings held to the program's end, dropped where it writes a G90/G91
-/// ([`Checker::work_call_tentative_end`]).
-pub(super) type Other = (i64, String, usize, [i8; 9], bool);
+/// ([`Checker::work_call_tentative_end`]); and whether the caller wrote no units code since
+/// the first call (it runs in the units the program leaves: [`super::callmode::Rescale`]).
+pub(super) type Other = (i64, String, usize, [i8; 9], bool, bool);
 
 /// A program written after its calls read under their work offset ([`Checker::work_call`]):
 /// the call it names and the state before it, given back at its end.
