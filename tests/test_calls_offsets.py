@@ -487,6 +487,16 @@ def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(h
     # (the main's own G90 after the call: its moves from there are its own mode's, -31)
     ("M97 P100 / G55 / G90 G0 X-27. / M30 / N100 G91 G0 X5. / M99 / %",
      [(7, "X goes to -31")]),
+    # (review 78 F1, h45: N100 leaves G91, then N200 writes G90: the main's move after both
+    # is absolute, -31; h72: N200 writes none, N100's G91 holds: -27 an increment, -26)
+    ("M97 P100 / M97 P200 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / N200 G90 G0 X0 / "
+     "M99 / %", [(8, "X goes to -31")]),
+    ("M97 P100 / M97 P200 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / N200 G0 Y1. / "
+     "M99 / %", []),
+    # (review 78 F2, h64: line 7 an increment (-26, inside), line 8 the main's own G90:
+    # -28 under G55, machine -32, said on its own)
+    ("M97 P100 / G55 / G0 X-27. / G90 G0 X-28. / M30 / N100 G91 G0 X5. / M99 / %",
+     [(8, "X goes to -32")]),
     # (no N100 in the file: the control alarms at the call (TG118), nothing judged after it,
     # as before)
     ("M97 P100 / G55 / G0 X-27. / M30 / %", []),

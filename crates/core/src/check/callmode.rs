@@ -33,24 +33,29 @@ pub(super) fn is_mark(m: i64) -> bool {
     (PENDING_CALL_MODE - SLOTS as i64..=PENDING_CALL_MODE).contains(&m)
 }
 
-/// The most bodies whose calls' modes are held: a call of one more is not held (read on in
-/// the caller's mode, as before).
-const SLOTS: usize = 64;
+/// The most calls whose modes are held: a call past them is not held (read on in the
+/// caller's mode, as before).
+const SLOTS: usize = 256;
 
-/// A body read later called from the main program ([`Checker::call_modes`]).
+/// A call of a body read later from the main program ([`Checker::call_modes`]).
 #[derive(Debug, Clone)]
 pub(super) struct CallMode {
     /// The body's key (`structure::LOCAL_BODY`, `structure::LATER_DEFINITION`).
     key: i64,
-    /// The machine's count of G90/G91 codes at its last call: the caller's findings are
-    /// held while it stands there.
+    /// The machine's count of G90/G91 codes at the call: the caller's findings are held
+    /// while it stands there and no later call was made.
     codes: u32,
-    /// The caller's modes at its calls (bit 0: G90, bit 1: G91).
+    /// The caller's modes read at its calls (bit 0: G90, bit 1: G91).
     modes: u8,
+    /// The call before it with no G90/G91 of the caller's between: the mode it is made in
+    /// is the one that call's body leaves (review 78-calls78 F1).
+    prev: Option<usize>,
     /// The count of G90/G91 codes where its body began to be read.
     begun: Option<u32>,
-    /// Resolved: its held findings dropped or said.
+    /// Resolved: its held findings dropped (`Some(true)`), said (`Some(false)`), or passed to
+    /// `prev`'s (None: its body wrote no G90/G91).
     done: bool,
+    decision: Option<bool>,
 }
 
 impl Checker {
@@ -64,18 +69,31 @@ impl Checker {
         }
         let codes = self.machine.distance_codes;
         let mode = if self.machine.state.incremental { 2 } else { 1 };
-        if let Some(c) = self.call_modes.iter_mut().find(|c| c.key == key && !c.done) {
-            c.codes = codes;
+        let prev = self.call_mode_holding();
+        if let Some(c) = prev
+            .map(|p| &mut self.call_modes[p])
+            .filter(|c| c.key == key)
+        {
+            // (the same body again, nothing between: one call)
             c.modes |= mode;
         } else if self.call_modes.len() < SLOTS {
             self.call_modes.push(CallMode {
                 key,
                 codes,
                 modes: mode,
+                prev,
                 begun: None,
                 done: false,
+                decision: None,
             });
         }
+    }
+
+    /// The last call whose findings are held here (no G90/G91 of the caller's since).
+    fn call_mode_holding(&self) -> Option<usize> {
+        let slot = self.call_modes.len().checked_sub(1)?;
+        let c = &self.call_modes[slot];
+        (!c.done && c.begun.is_none() && c.codes == self.machine.distance_codes).then_some(slot)
     }
 
     /// A finding just made (`rule`): held where it reads a position or an arc of the
@@ -96,17 +114,33 @@ impl Checker {
         {
             return;
         }
-        let codes = self.machine.distance_codes;
-        let marks: Vec<i64> = self
-            .call_modes
-            .iter()
-            .enumerate()
-            .filter(|(_, c)| !c.done && c.begun.is_none() && c.codes == codes)
-            .map(|(slot, _)| PENDING_CALL_MODE - slot as i64)
-            .collect();
-        if let Some(f) = self.found.last_mut() {
-            f.pending_on.extend(marks);
+        if let Some(slot) = self.call_mode_holding() {
+            if let Some(f) = self.found.last_mut() {
+                f.pending_on.push(PENDING_CALL_MODE - slot as i64);
+            }
         }
+    }
+
+    /// Whether the caller's position on axis place `i`, beyond the travel on the side of the
+    /// excursion before it, opens an excursion of its own: the one before was said under a
+    /// hold the caller's own G90/G91 has ended (review 78-calls78 F2: that finding may be
+    /// dropped, this one is the caller's own mode's).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_mode_reopened(&self, i: usize) -> bool {
+        let Some(f) = self.found.iter().rev().find(|f| {
+            f.rule == Rule::TravelExceeded
+                && matches!(f.placed, super::Placed::Offset { place, .. } if usize::from(place) == i)
+        }) else {
+            return false;
+        };
+        f.pending_on.iter().any(|&m| {
+            is_mark(m)
+                && self
+                    .call_modes
+                    .get((PENDING_CALL_MODE - m) as usize)
+                    .is_some_and(|c| c.codes != self.machine.distance_codes)
+        })
     }
 
     /// The body `key` begins to be read (its first block's codes not yet applied).
@@ -121,8 +155,9 @@ impl Checker {
 
     /// The body in hand returns (`returned`: an M99, an `endsub`) or the file ends inside it
     /// (an M02/M30 of its own: the caller's blocks after the call do not run): the findings
-    /// held for its calls said where it wrote no G90/G91, or leaves the calls' mode, and
-    /// dropped where not.
+    /// held for its calls said where it leaves the mode they were read in, dropped where it
+    /// leaves another (or one not known); where it wrote no G90/G91, decided as the call
+    /// before it (if any, with no G90/G91 of the caller's between) is.
     pub(super) fn call_mode_returned(&mut self, returned: bool) {
         if self.call_modes.is_empty() {
             return;
@@ -130,21 +165,39 @@ impl Checker {
         let codes = self.machine.distance_codes;
         let leaves = if self.machine.state.incremental { 2 } else { 1 };
         let lost = self.mode_lost_codes == Some(codes);
-        let mut dropped = Vec::new();
-        let mut said = Vec::new();
-        for (slot, c) in self.call_modes.iter_mut().enumerate() {
+        for slot in 0..self.call_modes.len() {
+            let c = &mut self.call_modes[slot];
             let Some(begun) = c.begun.filter(|_| !c.done) else {
                 continue;
             };
             c.done = true;
             let mark = PENDING_CALL_MODE - slot as i64;
-            if !returned || lost || begun != codes && c.modes != leaves {
-                dropped.push(mark);
+            if !returned || lost || begun != codes {
+                let drop = !returned || lost || c.modes != leaves;
+                c.decision = Some(drop);
+                self.call_mode_decided(mark, Ok(drop));
             } else {
-                said.push(mark);
+                let prev = c.prev;
+                let decided = self.call_mode_effective(prev);
+                self.call_mode_decided(mark, decided);
             }
         }
-        self.call_mode_resolved(&dropped, &said);
+    }
+
+    /// What the call at `slot` decides: drop (true) or say (false), or the call still to be
+    /// resolved that decides it.
+    fn call_mode_effective(&self, mut slot: Option<usize>) -> Result<bool, usize> {
+        while let Some(s) = slot {
+            let c = &self.call_modes[s];
+            if !c.done {
+                return Err(s);
+            }
+            if let Some(d) = c.decision {
+                return Ok(d);
+            }
+            slot = c.prev;
+        }
+        Ok(false)
     }
 
     /// At the file's end: a body never read (not in the file) leaves its calls' findings
@@ -154,24 +207,35 @@ impl Checker {
             return;
         }
         self.call_mode_returned(false);
-        let mut said = Vec::new();
-        for (slot, c) in self.call_modes.iter_mut().enumerate() {
+        for slot in 0..self.call_modes.len() {
+            let c = &mut self.call_modes[slot];
             if !c.done {
                 c.done = true;
-                said.push(PENDING_CALL_MODE - slot as i64);
+                c.decision = Some(false);
+                self.call_mode_decided(PENDING_CALL_MODE - slot as i64, Ok(false));
             }
         }
-        self.call_mode_resolved(&[], &said);
     }
 
-    fn call_mode_resolved(&mut self, dropped: &[i64], said: &[i64]) {
-        if dropped.is_empty() && said.is_empty() {
-            return;
-        }
-        self.found
-            .retain(|f| !f.pending_on.iter().any(|m| dropped.contains(m)));
-        for f in &mut self.found {
-            f.pending_on.retain(|m| !said.contains(m));
+    /// The findings held by `mark`: dropped (`Ok(true)`), said (`Ok(false)`), or held by the
+    /// mark of the call that decides them (`Err(slot)`).
+    fn call_mode_decided(&mut self, mark: i64, decided: Result<bool, usize>) {
+        match decided {
+            Ok(true) => self.found.retain(|f| !f.pending_on.contains(&mark)),
+            Ok(false) => {
+                for f in &mut self.found {
+                    f.pending_on.retain(|&m| m != mark);
+                }
+            }
+            Err(slot) => {
+                for f in &mut self.found {
+                    for m in &mut f.pending_on {
+                        if *m == mark {
+                            *m = PENDING_CALL_MODE - slot as i64;
+                        }
+                    }
+                }
+            }
         }
     }
 }

@@ -3281,7 +3281,10 @@ impl Checker {
                     self.stats.travel_absolute += 1;
                     let machine_at = at + offset.to_f64();
                     let out = travel_side(machine_at, (low, high));
-                    if out != 0 && out != self.outside[i] {
+                    if out != 0
+                        && (out != self.outside[i]
+                            || !self.call_modes.is_empty() && self.call_mode_reopened(i))
+                    {
                         let message = format!(
                             "{} goes to {} in machine coordinates (work {} + G{work} offset \
                                  {offset}), outside the travel {low} to {high}",
@@ -3764,7 +3767,9 @@ impl Checker {
         let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
         let out = travel_side(machine_at, (low, high));
         let mut said_outside = false;
-        if out != 0 && out != self.outside[i] {
+        if out != 0
+            && (out != self.outside[i] || !self.call_modes.is_empty() && self.call_mode_reopened(i))
+        {
             let value = written.map_or_else(
                 || offset.to_string(),
                 |v| format!("{} as a G10 before wrote it", round6(v)),
