@@ -3281,10 +3281,7 @@ impl Checker {
                     self.stats.travel_absolute += 1;
                     let machine_at = at + offset.to_f64();
                     let out = travel_side(machine_at, (low, high));
-                    if out != 0
-                        && (out != self.outside[i]
-                            || !self.call_modes.is_empty() && self.call_mode_reopened(i))
-                    {
+                    if out != 0 && out != self.outside[i] {
                         let message = format!(
                             "{} goes to {} in machine coordinates (work {} + G{work} offset \
                                  {offset}), outside the travel {low} to {high}",
@@ -3305,7 +3302,15 @@ impl Checker {
                         }
                         said_outside = true;
                     } else if out != 0 {
-                        self.excursion_farther(i, work, (at, line), out);
+                        // (an excursion held by a call's mode, ended by the caller's own
+                        // G90/G91: this position opens its own, review 78-calls78 F2)
+                        if !self.call_modes.is_empty() && self.call_mode_reopened(i) {
+                            let place = ((axis, i), at, (work, offset));
+                            said_outside =
+                                self.offset_said_again(place, (low, high), (line, col(axis)));
+                        } else {
+                            self.excursion_farther(i, work, (at, line), out);
+                        }
                     }
                     self.outside[i] = out;
                 }
@@ -3734,6 +3739,33 @@ impl Checker {
                 }
             }
         }
+    }
+
+    /// [`Checker::offset_position`]'s finding of a position beyond the travel said again on
+    /// the side of the excursion before it ([`Checker::call_mode_reopened`]).
+    #[cold]
+    #[inline(never)]
+    fn offset_said_again(
+        &mut self,
+        ((axis, i), at, (work, offset)): ((u8, usize), f64, (i64, Dec)),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) -> bool {
+        let machine_at = at + offset.to_f64();
+        let message = format!(
+            "{} goes to {} in machine coordinates (work {} + G{work} offset {offset}), outside \
+             the travel {low} to {high}",
+            axis as char,
+            round6(machine_at),
+            round6(at)
+        );
+        let placed = super::Placed::Offset {
+            place: i as u8,
+            work: work as u8,
+            at,
+            line,
+        };
+        self.report_placed(message, (line, column), placed)
     }
 
     /// A position `at` of `axis` (place `i`) under work offset G`work`, whose value on that
