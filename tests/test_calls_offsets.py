@@ -497,6 +497,12 @@ def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(h
     # -28 under G55, machine -32, said on its own)
     ("M97 P100 / G55 / G0 X-27. / G90 G0 X-28. / M30 / N100 G91 G0 X5. / M99 / %",
      [(8, "X goes to -32")]),
+    # (review 78 F7, h85: the main's own G91 after the held move: increments from a position
+    # read in the wrong mode, not said (real: -22, then -23, inside); h84: a body that writes
+    # no G90/G91, the excursion said once, at line 7)
+    ("M97 P100 / G55 / G0 X-27. / G91 G0 X-1. / M30 / N100 G91 G0 X5. / M99 / %", []),
+    ("M97 P100 / G55 / G0 X-27. / G90 G0 X-28. / M30 / N100 G0 Y1. / M99 / %",
+     [(7, "X goes to -31")]),
     # (no N100 in the file: the control alarms at the call (TG118), nothing judged after it,
     # as before)
     ("M97 P100 / G55 / G0 X-27. / M30 / %", []),

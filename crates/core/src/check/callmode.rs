@@ -30,7 +30,14 @@ pub(super) const PENDING_CALL_MODE: i64 = super::limits::PENDING_MODE_SELF - 64;
 /// Whether `m` is a [`PENDING_CALL_MODE`] mark (kept where a finding's other marks are set
 /// anew).
 pub(super) fn is_mark(m: i64) -> bool {
-    (PENDING_CALL_MODE - SLOTS as i64..=PENDING_CALL_MODE).contains(&m)
+    (PENDING_CALL_MODE - 2 * SLOTS as i64..=PENDING_CALL_MODE).contains(&m)
+}
+
+/// `PENDING_CALL_MODE - SLOTS - slot`: a finding of an excursion opened again after the
+/// caller's own G90 ([`Checker::call_mode_reopened`]): said where the held one of that call
+/// is dropped, dropped where it is said (one excursion, one finding).
+fn reopened_mark(slot: usize) -> i64 {
+    PENDING_CALL_MODE - (SLOTS + slot) as i64
 }
 
 /// The most calls whose modes are held: a call past them is not held (read on in the
@@ -127,19 +134,24 @@ impl Checker {
     /// dropped, this one is the caller's own mode's).
     #[cold]
     #[inline(never)]
-    pub(super) fn call_mode_reopened(&self, i: usize) -> bool {
-        let Some(f) = self.found.iter().rev().find(|f| {
+    pub(super) fn call_mode_reopened(&self, i: usize) -> Option<i64> {
+        // (after the caller's own G91 its positions are increments from the held one: not
+        // known better than it, review 78-calls78 F7)
+        if self.machine.state.incremental {
+            return None;
+        }
+        let f = self.found.iter().rev().find(|f| {
             f.rule == Rule::TravelExceeded
                 && matches!(f.placed, super::Placed::Offset { place, .. } if usize::from(place) == i)
-        }) else {
-            return false;
-        };
-        f.pending_on.iter().any(|&m| {
-            is_mark(m)
+        })?;
+        f.pending_on.iter().find_map(|&m| {
+            let slot = usize::try_from(PENDING_CALL_MODE - m).ok()?;
+            (slot < SLOTS
                 && self
                     .call_modes
-                    .get((PENDING_CALL_MODE - m) as usize)
-                    .is_some_and(|c| c.codes != self.machine.distance_codes)
+                    .get(slot)
+                    .is_some_and(|c| c.codes != self.machine.distance_codes))
+            .then(|| reopened_mark(slot))
         })
     }
 
@@ -220,11 +232,13 @@ impl Checker {
     /// The findings held by `mark`: dropped (`Ok(true)`), said (`Ok(false)`), or held by the
     /// mark of the call that decides them (`Err(slot)`).
     fn call_mode_decided(&mut self, mark: i64, decided: Result<bool, usize>) {
+        let reopened = reopened_mark((PENDING_CALL_MODE - mark) as usize);
         match decided {
-            Ok(true) => self.found.retain(|f| !f.pending_on.contains(&mark)),
-            Ok(false) => {
+            Ok(drop) => {
+                let gone = if drop { mark } else { reopened };
+                self.found.retain(|f| !f.pending_on.contains(&gone));
                 for f in &mut self.found {
-                    f.pending_on.retain(|&m| m != mark);
+                    f.pending_on.retain(|&m| m != mark && m != reopened);
                 }
             }
             Err(slot) => {
@@ -232,6 +246,8 @@ impl Checker {
                     for m in &mut f.pending_on {
                         if *m == mark {
                             *m = PENDING_CALL_MODE - slot as i64;
+                        } else if *m == reopened {
+                            *m = reopened_mark(slot);
                         }
                     }
                 }

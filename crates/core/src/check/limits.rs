@@ -3304,10 +3304,18 @@ impl Checker {
                     } else if out != 0 {
                         // (an excursion held by a call's mode, ended by the caller's own
                         // G90/G91: this position opens its own, review 78-calls78 F2)
-                        if !self.call_modes.is_empty() && self.call_mode_reopened(i) {
+                        let reopened = if self.call_modes.is_empty() {
+                            None
+                        } else {
+                            self.call_mode_reopened(i)
+                        };
+                        if let Some(mark) = reopened {
                             let place = ((axis, i), at, (work, offset));
                             said_outside =
                                 self.offset_said_again(place, (low, high), (line, col(axis)));
+                            if said_outside {
+                                self.found.last_mut().expect("said").pending_on.push(mark);
+                            }
                         } else {
                             self.excursion_farther(i, work, (at, line), out);
                         }
@@ -3799,9 +3807,12 @@ impl Checker {
         let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
         let out = travel_side(machine_at, (low, high));
         let mut said_outside = false;
-        if out != 0
-            && (out != self.outside[i] || !self.call_modes.is_empty() && self.call_mode_reopened(i))
-        {
+        let reopened = if out != 0 && out == self.outside[i] && !self.call_modes.is_empty() {
+            self.call_mode_reopened(i)
+        } else {
+            None
+        };
+        if out != 0 && (out != self.outside[i] || reopened.is_some()) {
             let value = written.map_or_else(
                 || offset.to_string(),
                 |v| format!("{} as a G10 before wrote it", round6(v)),
@@ -3828,10 +3839,12 @@ impl Checker {
                     line,
                 }
             };
-            if self.report_placed(message, (line, column), placed)
-                && (self.work_guessed.is_some() || self.work_run_on)
-            {
+            let said = self.report_placed(message, (line, column), placed);
+            if said && (self.work_guessed.is_some() || self.work_run_on) {
                 self.found.last_mut().expect("said").guessed = true;
+            }
+            if let Some(mark) = reopened.filter(|_| said) {
+                self.found.last_mut().expect("said").pending_on.push(mark);
             }
             said_outside = true;
         } else if out != 0 {
