@@ -503,6 +503,11 @@ def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(h
     ("M97 P100 / G55 / G0 X-27. / G91 G0 X-1. / M30 / N100 G91 G0 X5. / M99 / %", []),
     ("M97 P100 / G55 / G0 X-27. / G90 G0 X-28. / M30 / N100 G0 Y1. / M99 / %",
      [(7, "X goes to -31")]),
+    # (review 78 F2b, h67: line 6 an increment to 4.5, line 7 `G90 G0 X32.6`: the program
+    # spans -28 .. 32.6 = 60.6 whatever N100 leaves; said there, from the span before the call)
+    ("G0 X-28. / M97 P100 / G0 X32.5 / G90 G0 X32.6 / M30 / N100 G91 G0 Y0 / M99 / %",
+     [(8, "X spans 60.6 (from -28 to 32.6), more than the travel -30 to 30: no work offset "
+          "fits the program on this machine")]),
     # (no N100 in the file: the control alarms at the call (TG118), nothing judged after it,
     # as before)
     ("M97 P100 / G55 / G0 X-27. / M30 / %", []),

@@ -59,6 +59,10 @@ pub(super) struct CallMode {
     prev: Option<usize>,
     /// The count of G90/G91 codes where its body began to be read.
     begun: Option<u32>,
+    /// Each axis's span (least, most) at the call, before any position held, and the axes
+    /// whose span was said again from it ([`Checker::call_mode_span_again`]).
+    spans: [Option<(f64, f64)>; 9],
+    spans_said: u16,
     /// Resolved: its held findings dropped (`Some(true)`), said (`Some(false)`), or passed to
     /// `prev`'s (None: its body wrote no G90/G91).
     done: bool,
@@ -84,11 +88,14 @@ impl Checker {
             // (the same body again, nothing between: one call)
             c.modes |= mode;
         } else if self.call_modes.len() < SLOTS {
+            let spans = self.spans.map(|s| s.map(|s| (s.least, s.most)));
             self.call_modes.push(CallMode {
                 key,
                 codes,
                 modes: mode,
                 prev,
+                spans,
+                spans_said: 0,
                 begun: None,
                 done: false,
                 decision: None,
@@ -153,6 +160,67 @@ impl Checker {
                     .is_some_and(|c| c.codes != self.machine.distance_codes))
             .then(|| reopened_mark(slot))
         })
+    }
+
+    /// The span of axis place `i` grew to `at`, its finding said before: where that finding
+    /// is held by a call's mode and the caller reads `at` in its own G90 since, the span from
+    /// the extent before the call to `at` is judged (review 78-calls78 F2b: `G0 X-28.` /
+    /// `M97 P100` / `G0 X32.5` / `G90 G0 X32.6` spans 60.6 whatever the body leaves), said
+    /// only where the held finding is dropped. The extent between is not counted: the span
+    /// said is at most the real one.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_mode_span_again(
+        &mut self,
+        i: usize,
+        at: f64,
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+        under: &str,
+    ) {
+        if self.machine.state.incremental {
+            return;
+        }
+        let axis = super::AXES[i];
+        let Some(slot) = self
+            .found
+            .iter()
+            .rev()
+            .find(|f| {
+                f.span
+                    && f.rule == Rule::TravelExceeded
+                    && f.message.as_bytes().first() == Some(&axis)
+                    && f.message.get(1..7) == Some(" spans")
+            })
+            .and_then(|f| {
+                f.pending_on.iter().find_map(|&m| {
+                    let slot = usize::try_from(PENDING_CALL_MODE - m).ok()?;
+                    (slot < SLOTS).then_some(slot)
+                })
+            })
+        else {
+            return;
+        };
+        let codes = self.machine.distance_codes;
+        let Some(c) = self
+            .call_modes
+            .get_mut(slot)
+            .filter(|c| c.codes != codes && c.spans_said & 1 << i == 0)
+        else {
+            return;
+        };
+        c.spans_said |= 1 << i;
+        let (least, most) = c.spans[i].map_or((at, at), |(l, m)| (l.min(at), m.max(at)));
+        if most - least <= (high - low) + 1e-9 {
+            return;
+        }
+        let before = self.found.len();
+        self.span_exceeded(axis, (least, most), (low, high), (line, column), under);
+        if self.found.len() > before {
+            let f = self.found.last_mut().expect("said");
+            f.pending_on.retain(|&m| !is_mark(m));
+            f.pending_on.push(reopened_mark(slot));
+        }
     }
 
     /// The body `key` begins to be read (its first block's codes not yet applied).

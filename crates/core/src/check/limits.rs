@@ -3602,6 +3602,9 @@ impl Checker {
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
             self.span_exceeded(axis, (least, most), (low, high), (line, column()), under);
+        } else if said && !self.call_modes.is_empty() {
+            // (a span said under a call's mode: callmode.rs)
+            self.call_mode_span_again(i, at, (low, high), (line, column()), under);
         }
     }
 
