@@ -471,3 +471,122 @@ def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(h
     the profile's where the body writes no offset: -33."""
     got = said(LOCAL + "M97 P1000 / G55 / G0 X-29. / M30 / N1000 G0 X0. / M99 / %", haas)
     assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == [(7, "X goes to -33")]
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (review 77-calls77 F10, h176: N100 leaves G91, the main's `G0 X-27.` after the call is
+    # an increment: X 5 - 27 = -22, machine -26 under G55, inside; not -31)
+    ("M97 P100 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / %", []),
+    # (h170: the same body, the main's X32.5 an increment to 32.5 from -28: no span of 60.5)
+    ("G0 X-28. / M97 P100 / G0 X32.5 / M30 / N100 G91 G0 Y0 / M99 / %", []),
+    # (the body writes G91 and then G90: it leaves the call's G90, the move judged, -31)
+    ("M97 P100 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / G90 / M99 / %",
+     [(7, "X goes to -31")]),
+    # (the body writes no G90/G91: as before, -31)
+    ("M97 P100 / G55 / G0 X-27. / M30 / N100 G0 X5. / M99 / %", [(7, "X goes to -31")]),
+    # (the main's own G90 after the call: its moves from there are its own mode's, -31)
+    ("M97 P100 / G55 / G90 G0 X-27. / M30 / N100 G91 G0 X5. / M99 / %",
+     [(7, "X goes to -31")]),
+    # (review 78 F1, h45: N100 leaves G91, then N200 writes G90: the main's move after both
+    # is absolute, -31; h72: N200 writes none, N100's G91 holds: -27 an increment, -26)
+    ("M97 P100 / M97 P200 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / N200 G90 G0 X0 / "
+     "M99 / %", [(8, "X goes to -31")]),
+    ("M97 P100 / M97 P200 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / N200 G0 Y1. / "
+     "M99 / %", []),
+    # (review 78 F2, h64: line 7 an increment (-26, inside), line 8 the main's own G90:
+    # -28 under G55, machine -32, said on its own)
+    ("M97 P100 / G55 / G0 X-27. / G90 G0 X-28. / M30 / N100 G91 G0 X5. / M99 / %",
+     [(8, "X goes to -32")]),
+    # (review 78 F7, h85: the main's own G91 after the held move: increments from a position
+    # read in the wrong mode, not said (real: -22, then -23, inside); h84: a body that writes
+    # no G90/G91, the excursion said once, at line 7)
+    ("M97 P100 / G55 / G0 X-27. / G91 G0 X-1. / M30 / N100 G91 G0 X5. / M99 / %", []),
+    ("M97 P100 / G55 / G0 X-27. / G90 G0 X-28. / M30 / N100 G0 Y1. / M99 / %",
+     [(7, "X goes to -31")]),
+    # (review 78 F2b, h67: line 6 an increment to 4.5, line 7 `G90 G0 X32.6`: the program
+    # spans -28 .. 32.6 = 60.6 whatever N100 leaves; said there, from the span before the call)
+    ("G0 X-28. / M97 P100 / G0 X32.5 / G90 G0 X32.6 / M30 / N100 G91 G0 Y0 / M99 / %",
+     [(8, "X spans 60.6 (from -28 to 32.6), more than the travel -30 to 30: no work offset "
+          "fits the program on this machine")]),
+    # (no N100 in the file: the control alarms at the call (TG118), nothing judged after it,
+    # as before)
+    ("M97 P100 / G55 / G0 X-27. / M30 / %", []),
+])
+def test_the_main_s_moves_after_an_m97_wait_for_the_mode_its_body_leaves(
+        haas: str, blocks: str, expected: list[tuple[int, str]]) -> None:
+    """G90/G91 are modal and M99 restores neither: the main's moves after an M97 whose body
+    is read after M30 run in the mode the body leaves (review 77-calls77 F10)."""
+    got = said(LOCAL + blocks, haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (rs274 -g: STRAIGHT_TRAVERSE(100) in o100, then SET_G5X_OFFSET(2) and
+    # STRAIGHT_TRAVERSE(-600): the main's X-700 an increment, machine -700, inside)
+    ("o100 call / G55 / G0 X-700 / M2 / o100 sub / G91 G0 X100 / o100 endsub", []),
+    # (rs274 -g: STRAIGHT_TRAVERSE(-700) after SET_G5X_OFFSET(2): machine -800)
+    ("o100 call / G55 / G0 X-700 / M2 / o100 sub / G0 X5 / o100 endsub",
+     [(5, "X goes to -800")]),
+])
+def test_the_main_s_moves_after_a_later_definition_wait_for_the_mode_it_leaves(
+        lcnc: str, blocks: str, expected: list[tuple[int, str]]) -> None:
+    got = said(LATER + blocks, lcnc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (review 77-calls77 F9, h172: N100 leaves G21, the second call (under G55) runs its
+    # `G0 X-27.` in millimetres: -1.063 in, machine -5.063: inside, no -31)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / M99 / %", []),
+    # (it leaves the call's G20: -31 at the second call, as before)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G20 / M99 / %",
+     [(9, "X goes to -31")]),
+    # (its move after its own G21 runs in millimetres at both calls: -800 mm is -31.496 in,
+    # under G54 at -31.496, under G55 at -35.496; the -27 before the G21 is -5.063 at the
+    # second call)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / G0 X-800. / M99 / %",
+     [(11, "X goes to -31.496063"), (11, "X goes to -35.496063")]),
+    # (it leaves G21 and a G54 of its own: the main's G55 before the second call, -5.063)
+    ("M97 P100 / G55 / M97 P100 / M30 / N100 G0 X-27. / G21 / G54 / M99 / %", []),
+])
+def test_a_haas_local_subprogram_s_second_call_runs_in_the_units_it_leaves(
+        haas: str, blocks: str, expected: list[tuple[int, str]]) -> None:
+    """G20/G21 are modal and M99 restores neither: a call after the first runs the body's
+    positions before its own units code in the units the first run leaves."""
+    got = said(LOCAL + blocks, haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # (review 77-calls77 F7, f13: O2000 leaves G20: the second call's `G0 X-700.` is -700 in,
+    # -17780 mm, machine -17880 under G55)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G0 X-700. / G20 / M99", [(9, "X goes to -17880", True)]),
+    # (-300 mm inside under both offsets; -300 in, -7620 mm, is not)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G0 X-300. / G20 / M99", [(9, "X goes to -7720", True)]),
+    # (its own G21 before the move: millimetres at both calls, -800)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G21 / G0 X-700. / G20 / M99", [(10, "X goes to -800", False)]),
+    # (the main's own G21 between the calls: the second runs in it, -800 as before)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G21 / G55 / M98 P2000 / M30 / "
+     "O2000 / G0 X-700. / G20 / M99", [(10, "X goes to -800", False)]),
+    # (a G10 of G55's X after the move: not known, as before)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G55 / M98 P2000 / M30 / O2000 / "
+     "G0 X-700. / G20 / G10 L2 P2 X0 / M99", []),
+])
+def test_a_later_program_s_second_call_runs_in_the_units_it_leaves(
+        fanuc: str, text: str, expected: list[tuple[int, str, bool]]) -> None:
+    got = said(text, fanuc)
+    assert [(line, msg.split(" in machine")[0], ", in inches: the units" in msg)
+            for line, _, msg in got] == expected
+
+
+def test_a_later_definition_s_second_call_runs_in_the_units_it_leaves(lcnc: str) -> None:
+    """rs274 -g: `STRAIGHT_TRAVERSE(-300)` in millimetres at the first call, then
+    `USE_LENGTH_UNITS(CANON_UNITS_INCHES)`, `SET_G5X_OFFSET(2)` and `STRAIGHT_TRAVERSE(-300)`
+    in inches: -7620 mm, machine -7720 (review 77-calls77 F4)."""
+    got = said(LATER + "o100 call / G55 / o100 call / M2 / o100 sub / G0 X-300 / G20 / "
+               "o100 endsub", lcnc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
+        [(8, "X goes to -7720")]

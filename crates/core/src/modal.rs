@@ -774,6 +774,9 @@ pub struct ModalMachine {
     /// C's) were applied so far, the reset's included: the checker asks whether a program
     /// wrote one of its own before its first move (crate::check::called).
     pub distance_codes: u32,
+    /// How many units codes (G20/G21, G70/G71) were applied so far: the checker asks whether
+    /// a body read under its calls' units wrote one of its own (crate::check::callmode).
+    pub units_codes: u32,
     /// Each axis's increments applied while its position is not known ([`Drift`]), by its
     /// place in [`AXES`]: started again wherever the axis is lost anew.
     pub drift: [Drift; 9],
@@ -834,6 +837,7 @@ impl ModalMachine {
             units_convert_position: true,
             taken: None,
             distance_codes: 0,
+            units_codes: 0,
             drift: [Drift::default(); 9],
             thread_under_cycle: [0; 2],
         };
@@ -1358,6 +1362,7 @@ impl ModalMachine {
                     s.units = units;
                     s.feed_units = feed_units;
                     s.units_given = true;
+                    self.units_codes = self.units_codes.wrapping_add(1);
                 }
             }
         }

@@ -89,6 +89,7 @@ impl Checker {
                 .in_hand
                 .is_some_and(|n| n >= super::structure::LOCAL_BODY)
         {
+            self.call_mode_returned(true);
             self.local_body_end();
         }
     }

@@ -2413,7 +2413,8 @@ impl Checker {
                         // (after a G54-G59 of the caller's own following such calls, held
                         // as its own positions are: review 62a F5)
                         if !f.pending_on.contains(&super::limits::PENDING_OWN) {
-                            f.pending_on = unread;
+                            f.pending_on.retain(|&m| super::callmode::is_mark(m));
+                            f.pending_on.extend(unread);
                         }
                     }
                 }

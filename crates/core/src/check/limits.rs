@@ -3302,7 +3302,23 @@ impl Checker {
                         }
                         said_outside = true;
                     } else if out != 0 {
-                        self.excursion_farther(i, work, (at, line), out);
+                        // (an excursion held by a call's mode, ended by the caller's own
+                        // G90/G91: this position opens its own, review 78-calls78 F2)
+                        let reopened = if self.call_modes.is_empty() {
+                            None
+                        } else {
+                            self.call_mode_reopened(i)
+                        };
+                        if let Some(mark) = reopened {
+                            let place = ((axis, i), at, (work, offset));
+                            said_outside =
+                                self.offset_said_again(place, (low, high), (line, col(axis)));
+                            if said_outside {
+                                self.found.last_mut().expect("said").pending_on.push(mark);
+                            }
+                        } else {
+                            self.excursion_farther(i, work, (at, line), out);
+                        }
                     }
                     self.outside[i] = out;
                 }
@@ -3586,6 +3602,9 @@ impl Checker {
         if !said && most - least > (high - low) + 1e-9 {
             span.said = true;
             self.span_exceeded(axis, (least, most), (low, high), (line, column()), under);
+        } else if said && !self.call_modes.is_empty() {
+            // (a span said under a call's mode: callmode.rs)
+            self.call_mode_span_again(i, at, (low, high), (line, column()), under);
         }
     }
 
@@ -3733,6 +3752,33 @@ impl Checker {
         }
     }
 
+    /// [`Checker::offset_position`]'s finding of a position beyond the travel said again on
+    /// the side of the excursion before it ([`Checker::call_mode_reopened`]).
+    #[cold]
+    #[inline(never)]
+    fn offset_said_again(
+        &mut self,
+        ((axis, i), at, (work, offset)): ((u8, usize), f64, (i64, Dec)),
+        (low, high): (f64, f64),
+        (line, column): (usize, usize),
+    ) -> bool {
+        let machine_at = at + offset.to_f64();
+        let message = format!(
+            "{} goes to {} in machine coordinates (work {} + G{work} offset {offset}), outside \
+             the travel {low} to {high}",
+            axis as char,
+            round6(machine_at),
+            round6(at)
+        );
+        let placed = super::Placed::Offset {
+            place: i as u8,
+            work: work as u8,
+            at,
+            line,
+        };
+        self.report_placed(message, (line, column), placed)
+    }
+
     /// A position `at` of `axis` (place `i`) under work offset G`work`, whose value on that
     /// axis is the profile's `offset` unless a G10 of the program's run wrote it: TG601 where
     /// the machine position is beyond the travel, once an excursion. Whether it was said.
@@ -3764,7 +3810,12 @@ impl Checker {
         let machine_at = at + written.unwrap_or_else(|| offset.to_f64());
         let out = travel_side(machine_at, (low, high));
         let mut said_outside = false;
-        if out != 0 && out != self.outside[i] {
+        let reopened = if out != 0 && out == self.outside[i] && !self.call_modes.is_empty() {
+            self.call_mode_reopened(i)
+        } else {
+            None
+        };
+        if out != 0 && (out != self.outside[i] || reopened.is_some()) {
             let value = written.map_or_else(
                 || offset.to_string(),
                 |v| format!("{} as a G10 before wrote it", round6(v)),
@@ -3791,10 +3842,12 @@ impl Checker {
                     line,
                 }
             };
-            if self.report_placed(message, (line, column), placed)
-                && (self.work_guessed.is_some() || self.work_run_on)
-            {
+            let said = self.report_placed(message, (line, column), placed);
+            if said && (self.work_guessed.is_some() || self.work_run_on) {
                 self.found.last_mut().expect("said").guessed = true;
+            }
+            if let Some(mark) = reopened.filter(|_| said) {
+                self.found.last_mut().expect("said").pending_on.push(mark);
             }
             said_outside = true;
         } else if out != 0 {
@@ -3837,7 +3890,20 @@ impl Checker {
         let mut held = false;
         // (after a G90/G91 of its own, its positions are in its own mode at every call)
         let own_mode = self.machine.distance_codes != call.codes_at;
-        for (work, words, line, outside, tentative) in &mut call.others {
+        // (before a units code of its own, in the units the run before leaves: F9)
+        let rescaled = self.machine.units_codes == call.units_codes_at;
+        if !rescaled && !call.units_cut {
+            // (an excursion said before its units code may be judged again in other units at
+            // its end, and dropped: one after the code is said on its own)
+            call.units_cut = true;
+            let said = |k: usize| call.rescale.iter().any(|r| r.other_said(k));
+            let cut: Vec<bool> = (0..call.others.len()).map(said).collect();
+            for (o, _) in call.others.iter_mut().zip(cut).filter(|(_, c)| *c) {
+                o.3 = [0; 9];
+            }
+        }
+        for (k, (work, words, line, outside, tentative, left)) in call.others.iter_mut().enumerate()
+        {
             let Some(offset) = self
                 .config
                 .work_offsets
@@ -3847,6 +3913,29 @@ impl Checker {
             else {
                 continue;
             };
+            if rescaled && *left {
+                let marks = [
+                    PENDING_OTHER_CALL - (*work - 54).clamp(0, 5),
+                    if *tentative && !own_mode {
+                        PENDING_MODE_SELF
+                    } else {
+                        0
+                    },
+                ];
+                let place = (axis, i, offset, (low, high));
+                let named = || {
+                    let named = super::structure::WorkCall::named_by(self.in_hand, words, *line);
+                    (*work, named)
+                };
+                super::callmode::Rescale::judged(
+                    &mut call.rescale,
+                    (k, named),
+                    place,
+                    (at, at_line),
+                    marks,
+                );
+                held = true;
+            }
             let machine_at = at + offset.to_f64();
             let out = travel_side(machine_at, (low, high));
             if out != 0 && out != outside[i] {
@@ -3866,6 +3955,9 @@ impl Checker {
                             f.pending_on.push(PENDING_MODE_SELF);
                         }
                         held = true;
+                        if rescaled && *left {
+                            super::callmode::Rescale::said(&mut call.rescale, k, i, f);
+                        }
                     }
                 }
             }
@@ -3963,7 +4055,9 @@ impl Checker {
             f.placed = placed;
             // (after calls of programs not read there, re-selected: review 61a F13)
             if !self.offsets_written.unread.is_empty() {
-                f.pending_on.clone_from(&self.offsets_written.unread);
+                // (a mark of the caller's mode after a call kept: callmode.rs)
+                f.pending_on.retain(|&m| super::callmode::is_mark(m));
+                f.pending_on.extend_from_slice(&self.offsets_written.unread);
                 f.pending_on.push(PENDING_OWN);
             }
             // (a subprogram's own offset after its own units code: review 60 F4)
@@ -4291,7 +4385,7 @@ fn frame_variable(text: &[u8]) -> Option<&[u8]> {
 /// above, 0 inside (within 1e-9). A move from one side to the other crosses the travel:
 /// another excursion (TG601 said once an excursion).
 #[inline]
-fn travel_side(at: f64, (low, high): (f64, f64)) -> i8 {
+pub(super) fn travel_side(at: f64, (low, high): (f64, f64)) -> i8 {
     if at < low - 1e-9 {
         -1
     } else if at > high + 1e-9 {

@@ -42,6 +42,7 @@ pub use structure::nested_comment;
 // the rules, by family
 mod after;
 mod called;
+mod callmode;
 mod codes;
 mod formats;
 mod leaves;
@@ -1594,6 +1595,10 @@ pub struct Checker {
     /// [`Checker::call_works`]: what its messages name, and the state read before it, given
     /// back where it ends (boxed: seldom set).
     work_call: Option<Box<structure::WorkCall>>,
+    /// The calls of bodies read later in the file (a Haas's M97 of a sequence after the
+    /// M30, a LinuxCNC definition after M2) whose caller's findings after them are held to
+    /// the body's return ([`callmode`]).
+    call_modes: Vec<callmode::CallMode>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
     /// disagree, or one was made in units not known): no limit that reads a length or a feed
     /// (TG601, TG602) is judged until it writes a units code of its own.
@@ -1913,6 +1918,7 @@ impl Checker {
             later_shift: None,
             later_shifts: Vec::new(),
             work_call: None,
+            call_modes: Vec::new(),
             units_unknown: false,
             early: None,
             early_on: false,
@@ -2107,6 +2113,10 @@ impl Checker {
                 if let Some(f) = self.found.last_mut() {
                     f.pending_on.push(structure::PENDING_LATER);
                 }
+            }
+            if !self.call_modes.is_empty() {
+                // (after a call of a body read later: callmode.rs)
+                self.call_mode_held(rule);
             }
         }
     }
@@ -3321,6 +3331,7 @@ impl Checker {
             self.linuxcnc_later_released_at(true);
         }
         self.work_call_tentative_end();
+        self.call_modes_ended();
         self.pending_on_ended();
         self.targets_ended();
         self.odd_blocks();

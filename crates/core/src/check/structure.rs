@@ -487,6 +487,7 @@ impl Checker {
         };
         self.local_called = true;
         self.after_call(key);
+        self.call_mode_kept(key);
         self.call_work(b, key);
         self.call_not_followed(b, key);
         self.call_units_seen(key);
@@ -534,6 +535,7 @@ impl Checker {
     fn local_body_begin(&mut self, key: i64, main: Option<i64>) {
         self.local_main = main;
         self.in_hand = Some(key);
+        self.call_mode_begun(key);
         self.file_programs.insert(key);
         self.offsets_unread_only = false;
         self.outside = [0; 9];
@@ -765,6 +767,7 @@ impl Checker {
                 line: b.line,
                 mode_by_self,
                 others: Vec::new(),
+                units_codes: self.machine.units_codes,
             }
         });
         if assumed && here.is_some() {
@@ -885,8 +888,17 @@ impl Checker {
                             // mode is its own only where it writes none)
                             let tentative = b.mode_by_self && a.incremental != b.incremental
                                 || number >= LOCAL_BODY;
-                            a.others
-                                .push((b.work, b.call.clone(), b.line, b.outside, tentative));
+                            // (no units code of the caller's since the first call: it
+                            // runs in the units the body leaves, callmode::Rescale)
+                            let left = a.units_codes == b.units_codes;
+                            a.others.push((
+                                b.work,
+                                b.call.clone(),
+                                b.line,
+                                b.outside,
+                                tentative,
+                                left,
+                            ));
                         }
                     }
                     _ => *before = None,
@@ -936,6 +948,8 @@ impl Checker {
             || self.in_hand.is_none_or(|n| self.after_unsure.contains(&n));
         // (each offset's own writes: a G10 L2 P1 holds nothing of a G55 call, F7)
         let (axes, maybe) = (w.axes, w.maybe);
+        // (a units code of its own: the other calls run in the units it leaves, F9)
+        self.call_units_rescaled();
         let (mode, other) = (
             super::limits::PENDING_MODE_SELF,
             super::limits::PENDING_OTHER_CALL,
@@ -1003,6 +1017,10 @@ impl Checker {
             codes_at: self.machine.distance_codes,
             held: false,
             unsure: false,
+            units_codes_at: self.machine.units_codes,
+            units_at: self.machine.state.units,
+            rescale: Vec::new(),
+            units_cut: false,
         };
         self.offsets_written = c.written.clone();
         self.work = Some(w.work);
@@ -1783,6 +1801,7 @@ impl Checker {
                     && self.open_definition.is_none()
                     && self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) =>
             {
+                self.call_mode_returned(true);
                 self.local_body_end();
                 self.call_keeps = true;
             }
@@ -1881,6 +1900,7 @@ impl Checker {
         });
         let key = LATER_DEFINITION + index as i64;
         self.after_call(key);
+        self.call_mode_kept(key);
         self.call_work(b, key);
         // (what it writes is known where its lines are read: a G54-G59 of the main's own
         // after the call judged, held to the file's end, as after a FANUC's M98 of a
@@ -7309,14 +7329,17 @@ pub(super) struct CallWork {
     /// and where each axis was outside at it. The body's positions are judged under each
     /// of these too (one subprogram called once a fixture, under G54, G55, G56...).
     others: Vec<Other>,
+    /// The machine's count of units codes at the call.
+    units_codes: u32,
 }
 
 /// A call of [`CallWork::others`]: the offset, the call's words and line, which side of
 /// the travel each axis was outside at the call, then after each position of the body, and
 /// whether the call's distance mode is the one the program leaves, not known to be the
 /// first call's: its findings held to the program's end, dropped where it writes a G90/G91
-/// ([`Checker::work_call_tentative_end`]).
-pub(super) type Other = (i64, String, usize, [i8; 9], bool);
+/// ([`Checker::work_call_tentative_end`]); and whether the caller wrote no units code since
+/// the first call (it runs in the units the program leaves: [`super::callmode::Rescale`]).
+pub(super) type Other = (i64, String, usize, [i8; 9], bool, bool);
 
 /// A program written after its calls read under their work offset ([`Checker::work_call`]):
 /// the call it names and the state before it, given back at its end.
@@ -7340,6 +7363,14 @@ pub(super) struct WorkCall {
     /// It lost the profile's offsets ([`Checker::offsets_rewritten`]) while read: the
     /// findings held for the other calls are dropped at its end.
     pub(super) unsure: bool,
+    /// The count of units codes and the units at its start, and the positions judged under
+    /// the other calls' offsets before a units code of its own (review 77-calls77 F9:
+    /// judged again in the units it leaves, [`super::callmode::Rescale`]).
+    pub(super) units_codes_at: u32,
+    pub(super) units_at: crate::modal::Units,
+    pub(super) rescale: Vec<super::callmode::Rescale>,
+    /// A position was judged after a units code of its own.
+    pub(super) units_cut: bool,
 }
 
 impl WorkCall {
