@@ -836,6 +836,15 @@ pub struct Checker {
     /// A program of the file ended with M02/M30 (a main program): the file's first program,
     /// where it ends in M99, is then not the one the control starts (called.rs).
     main_ended: bool,
+    /// LinuxCNC: the definition open is a FANUC-style O number program after the main
+    /// program's end, closed by its M99 ([`Checker::linuxcnc_fanuc_program`]).
+    linuxcnc_fanuc_open: bool,
+    /// LinuxCNC: the main program's `M98 P..` calls surely run of a program not read yet:
+    /// its label (`o300`) and line ([`Checker::linuxcnc_call_forms`]).
+    linuxcnc_m98_calls: Vec<(Vec<u8>, usize)>,
+    /// LinuxCNC: the line of the main program's M99 that ended it (0: none;
+    /// [`Checker::linuxcnc_main_m99`]).
+    linuxcnc_m99_end: usize,
     /// An M02/M30 the block skip passes over came last, which ends the program only with the
     /// switch off. LinuxCNC (`/M2`): no end for the lines after it, but an end for TG114. The
     /// other families (`/M30`, or an M30 after a `/` in the block's middle): the end on
@@ -1730,6 +1739,9 @@ impl Checker {
             offsets_section: false,
             ended_line: 0,
             main_ended: false,
+            linuxcnc_m99_end: 0,
+            linuxcnc_fanuc_open: false,
+            linuxcnc_m98_calls: Vec::new(),
             skipped_end: false,
             end_skippable: false,
             surely_ended: false,
@@ -2584,6 +2596,14 @@ impl Checker {
         if self.subroutine_file(b) {
             return;
         }
+        self.read_block_rest(b, motion_words);
+    }
+
+    /// [`Checker::read_block`] after the LinuxCNC reading of its o-word structure
+    /// ([`Checker::subroutine_file`]), which also hands here a FANUC-style O number program's
+    /// lines read as a definition's ([`Checker::linuxcnc_fanuc_program`]).
+    #[inline(always)]
+    pub(super) fn read_block_rest(&mut self, b: &BlockView<'_>, motion_words: bool) {
         self.definition_section(b);
         if dialect::defines_subprogram(self.config.family, b.statements) {
             // PROC NAME: a subprogram, under its caller's position, feed and speed
@@ -2979,7 +2999,9 @@ impl Checker {
         );
         // LinuxCNC: an M word's value read before the line's own assignments, which rs274
         // makes at the line's end (`#1=2 M#1` after `#1=5` is M5; review 48, F8)
-        let linuxcnc_m_end = linuxcnc && self.letters & bit(b'M') != 0 && self.linuxcnc_m_ends(b);
+        let linuxcnc_m_end = linuxcnc
+            && self.letters & bit(b'M') != 0
+            && (self.linuxcnc_m_ends(b) || self.linuxcnc_main_m99(b));
         self.assignments(b);
         self.formulas(b);
         if self.config.haas {

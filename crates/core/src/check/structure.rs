@@ -1383,11 +1383,126 @@ impl Checker {
                 return false;
             }
         }
+        if self.surely_ended && b.statements.is_empty() && !b.words.is_empty() {
+            if let Some(text) = self.linuxcnc_fanuc_line(b) {
+                self.linuxcnc_fanuc_program(b, &text);
+                return true;
+            }
+        }
         if b.words.is_empty() && b.statements.is_empty() {
             return false;
         }
         self.subroutine_file_read(b);
         b.statements.is_empty() && self.open_definition.is_none() && self.linuxcnc_dead()
+    }
+
+    /// LinuxCNC 2.9: after the main program's end, a FANUC-style program, a bare O number
+    /// (`O300`, alone on its line but for a comment) up to an `M99` alone on its line, is
+    /// the body an `M98 P300` runs: rs274 seeks its O number as it seeks an `o300 sub` and
+    /// returns at its M99 (interp_read.cc `read_o`, bare O-word and "m99"; interp_o_word.cc
+    /// `convert_control_functions`, `O_` and `M_99`). The line's statement as the o-word
+    /// form's (`o300 sub`, `o300 endsub`), where it is one ([`Checker::linuxcnc_fanuc_program`]).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_fanuc_line(&mut self, b: &BlockView<'_>) -> Option<Vec<u8>> {
+        let mut words = b.words.iter().filter(|w| w.letter != b'N');
+        let (Some(w), None) = (words.next(), words.next()) else {
+            return None;
+        };
+        if b.skip || !w.index.is_empty() || !w.expression.is_empty() {
+            return None;
+        }
+        let number = std::str::from_utf8(w.number).ok()?;
+        if w.letter == b'O' && self.open_definition.is_none() && !number.contains('.') {
+            let n: i64 = number.parse().ok()?;
+            self.linuxcnc_fanuc_open = true;
+            return Some(format!("o{n} sub").into_bytes());
+        }
+        if w.letter == b'M' && self.linuxcnc_fanuc_open && number.parse::<i64>().ok()? == 99 {
+            let open = &self.open_definition.as_ref()?.2;
+            let mut text = open.clone();
+            text.extend_from_slice(b" endsub");
+            self.linuxcnc_fanuc_open = false;
+            return Some(text);
+        }
+        None
+    }
+
+    /// LinuxCNC 2.9 refuses a call of one form that reaches a definition of the other, where
+    /// the main program's call surely runs (interp_o_word.cc `convert_control_functions`):
+    /// `M98 P300` reaching `o300 sub` ("'O.... sub' subroutine must be called with 'O....
+    /// call'"), `o300 call` reaching `O300` ("Fanuc 'O....' subroutine must be called with
+    /// 'M98'"), and an `O300` program closed by `o300 endsub` ("Fanuc 'O....' subroutine
+    /// definition must end with 'M99'"), each at the definition's line (`rs274 -g`). Asked
+    /// where a definition after the main program's end opens or closes (`was_open`).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_call_forms(&mut self, b: &BlockView<'_>, was_open: bool) {
+        let label = match (&self.open_definition, was_open) {
+            (Some(open), false) => open.2.clone(),
+            (None, true) => match dialect::subroutine_statement(b.statements) {
+                Some((false, label)) => label,
+                _ => return,
+            },
+            _ => return,
+        };
+        let m98s = &self.linuxcnc_m98_calls;
+        let m98 = m98s.iter().find(|c| c.0 == label).map(|c| c.1);
+        let called = self
+            .linuxcnc_later
+            .ends
+            .iter()
+            .find(|c| c.0 == label && !m98s.contains(c))
+            .map(|c| c.1);
+        let fanuc = self.linuxcnc_fanuc_open;
+        let shown = String::from_utf8_lossy(&label[1..]).into_owned();
+        let message = match (was_open, fanuc, m98, called) {
+            (false, false, Some(line), _) => format!(
+                "'O.... sub' subroutine must be called with 'O.... call' (rs274ngc): the M98 \
+                 P{shown} on line {line} reaches o{shown} sub, a definition of the o-word form, \
+                 which rs274 2.9 runs only for an o{shown} call"
+            ),
+            (false, true, _, Some(line)) => format!(
+                "Fanuc 'O....' subroutine must be called with 'M98' (rs274ngc): the o{shown} \
+                 call on line {line} reaches the FANUC-style program O{shown}, which rs274 2.9 \
+                 runs only for an M98 P{shown}"
+            ),
+            (true, true, Some(line), _) => {
+                self.linuxcnc_fanuc_open = false;
+                format!(
+                    "Fanuc 'O....' subroutine definition must end with 'M99' (rs274ngc): the \
+                     FANUC-style program O{shown} that the M98 P{shown} on line {line} runs is \
+                     closed by an o-word endsub, which rs274 2.9 refuses"
+                )
+            }
+            _ => {
+                self.linuxcnc_fanuc_open &= !was_open;
+                return;
+            }
+        };
+        let column = b.statements.first().map_or(1, |s| s.0);
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+    }
+
+    /// LinuxCNC: a FANUC-style program's O number or M99 line after the main program's end
+    /// ([`Checker::linuxcnc_fanuc_line`]) read as the o-word form's `sub` or `endsub` line
+    /// (`text`): the same reading of its body, of the main program's calls of it made before
+    /// (its `M98`, [`Checker::linuxcnc_m98_later`]) and of the moves held after them.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_fanuc_program(&mut self, b: &BlockView<'_>, text: &[u8]) {
+        let column = b.words.first().map_or(1, |w| w.column);
+        let statements = [(column, Kind::Definition, text)];
+        let view = BlockView {
+            words: &[],
+            statements: &statements,
+            ..*b
+        };
+        self.letters = 0;
+        self.plain_block = false;
+        if !self.subroutine_file(&view) {
+            self.read_block_rest(&view, false);
+        }
     }
 
     /// The file is no subroutine file, no definition is open, and no spindle speed is
@@ -1445,6 +1560,9 @@ impl Checker {
             self.definition_feed(statement.as_ref());
             let was_open = self.open_definition.is_some();
             self.definition_open(b, statement.as_ref());
+            if was_open != self.open_definition.is_some() && self.surely_ended {
+                self.linuxcnc_call_forms(b, was_open);
+            }
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
             if was_open && self.open_definition.is_none() && !self.linuxcnc_later.ends.is_empty() {
@@ -2831,6 +2949,27 @@ impl Checker {
                 && !w.expression.is_empty()
                 && matches!(self.linuxcnc_m_number(w), Some(2 | 30))
         })
+    }
+
+    /// LinuxCNC: an M99 of the main program, outside any definition and before its end: rs274
+    /// 2.9 reads it as the end of an endless main program (interp_convert.cc `convert_stop`:
+    /// with no subprogram to return to, "M99 main program endless loop", which loops back to
+    /// the file's start under task's `loop_on_main_m99` and ends the program as M2 does
+    /// elsewhere, `rs274 -g` among them): no line after it runs. A FANUC-style `O300` ...
+    /// `M99` written before the main program runs inline, and its M99 ends the program
+    /// (`rs274 -g` of `O300` / `G0 X10` / `M99` / `G21 G90` / `G0 X0 Y0` / `M98 P300` / `M2`
+    /// runs the X10 alone).
+    /// The line is kept for TG117's message ([`Checker::never_read`]).
+    pub(super) fn linuxcnc_main_m99(&mut self, b: &BlockView<'_>) -> bool {
+        let ends = self.open_definition.is_none()
+            && !self.main_ended
+            && b.words
+                .iter()
+                .any(|w| w.letter == b'M' && self.linuxcnc_m_number(w) == Some(99));
+        if ends {
+            self.linuxcnc_m99_end = b.line;
+        }
+        ends
     }
 
     /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
@@ -5021,6 +5160,8 @@ impl Checker {
             // call` / `Z0.5` runs O200's G81 in `rs274 -g`)
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_motion_subs.insert(open.2.clone());
+            } else if self.letters & crate::modal::bit(b'P') != 0 {
+                self.linuxcnc_m98_later(b);
             }
             return;
         }
@@ -5127,6 +5268,48 @@ impl Checker {
             self.machine.state.motion = Some(m);
             self.machine.state.cycle = None;
         }
+    }
+
+    /// LinuxCNC: the main program's `M98 P300` (a P of a whole number, no L) calls the
+    /// FANUC-style program `O300`, which rs274 2.9 seeks after it as it seeks an `o300 sub`
+    /// ([`Checker::linuxcnc_fanuc_line`]): taken as the o-word form's call of a definition
+    /// not read yet, `o300 call` -- the move after it under the caller's G2/G3 held for the
+    /// body's M99, a body that surely ends the program ending it (the one reading of
+    /// [`Checker::linuxcnc_motion_after_call`]; `rs274 -g` of `G2 X1 Y0 I0.5 J0` / `M98 P300`
+    /// / `X2` / `M2` / `O300` / `G0 X0` / `M99` runs the X2 in the body's G0).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_m98_later(&mut self, b: &BlockView<'_>) {
+        use super::tooling::LinuxCncMotion;
+        let m98 = |w: &Word<'_>| w.letter == b'M' && w.number == b"98" && w.expression.is_empty();
+        if b.skip
+            || !b.statements.is_empty()
+            || !b
+                .words
+                .iter()
+                .all(|w| matches!(w.letter, b'N' | b'P') || m98(w))
+        {
+            return;
+        }
+        let Some(n) = self.called_number(b) else {
+            return;
+        };
+        let label = format!("o{n}").into_bytes();
+        if self.linuxcnc_defined.contains(&label) {
+            return;
+        }
+        self.linuxcnc_later.unread = true;
+        if self.linuxcnc_runs_surely() && !self.main_ended() {
+            self.linuxcnc_later.ends.push((label.clone(), b.line));
+            self.linuxcnc_m98_calls.push((label.clone(), b.line));
+        }
+        let state = &self.machine.state;
+        if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
+            if self.linuxcnc_later.pending.is_none() {
+                self.linuxcnc_later.pending = Some((vec![label], b.line, m));
+            }
+        }
+        debug_assert_eq!(self.linuxcnc_motion, LinuxCncMotion::Unknown);
     }
 
     /// LinuxCNC: a move without a motion code or arc word (`b`) under the caller's G2/G3
@@ -6497,6 +6680,15 @@ impl Checker {
                  over, kept as written",
                 unread.line, unread.end
             )
+        } else if unread.end == self.linuxcnc_m99_end {
+            format!(
+                "line {} and the lines after it that are not O-word lines are never read: \
+                 LinuxCNC stops at the M99 of the main program on line {} (rs274 2.9 ends the \
+                 program there, or loops back to its start: interp_convert.cc convert_stop; \
+                 an M98 call finds an O number program after it, reading O-word lines alone); \
+                 passed over, kept as written",
+                unread.line, unread.end
+            )
         } else {
             format!(
                 "line {} and the lines after it that are not O-word lines are never read: \
@@ -6617,6 +6809,11 @@ impl Checker {
                  skips), so what they set is not set"
             );
             self.report(Rule::NotRead, message, first, 1);
+        }
+        // (a FANUC-style O number program after the end with no M99: rs274 reads it only
+        // where an M98 calls it, and then to the file's end; not judged, as before)
+        if std::mem::take(&mut self.linuxcnc_fanuc_open) {
+            self.open_definition = None;
         }
         if let Some((at, column, name)) = self.open_definition.take().filter(|_| !sub_return) {
             if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
