@@ -2189,7 +2189,11 @@ impl Checker {
                 (Kind::Definition, b"sub") if !after.in_def && label == self.sub_label => {
                     after.refused = undefined("redefining sub");
                 }
-                (Kind::Definition, b"sub") => after.in_def = true,
+                (Kind::Definition, b"sub") => {
+                    after.in_def = true;
+                    after.def_label = label;
+                    after.def_flow.clear();
+                }
                 (_, b"return") if !after.in_def => {
                     after.refused = undefined("not in a subroutine definition");
                 }
@@ -2197,7 +2201,18 @@ impl Checker {
                 (Kind::Definition, _) => {
                     after.refused = undefined("not in a subroutine definition");
                 }
-                (Kind::Flow, _) if after.in_def => {}
+                (Kind::Flow, k) if after.in_def => {
+                    // (the blocks of the definition's body: a call inside one may not run)
+                    let flow = &mut after.def_flow;
+                    let at = flow.iter().rposition(|l| *l == label);
+                    match (k, at) {
+                        (b"while" | b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+                            flow.truncate(at)
+                        }
+                        (b"if" | b"while" | b"repeat" | b"do", _) => flow.push(label),
+                        _ => {}
+                    }
+                }
                 (Kind::Flow, k) => {
                     let at = after.flow.iter().rposition(|e| e.0 == label);
                     let (_, condition) = o_keyword_condition(text);
@@ -2230,6 +2245,41 @@ impl Checker {
                         Some(true) => after.skips = b.line,
                         Some(false) if after.holds == 0 => after.holds = b.line,
                         _ => {}
+                    }
+                }
+                // (a call of the definition in another definition's body, outside its blocks,
+                // with values that make the block skip: a call of that other definition that
+                // surely runs reads to the end of the file as well; review 77-lcnc77b F7:
+                // `o300 sub` / `o200 call [0]` / `o300 endsub` / `o300 call` is "File ended
+                // with no percent sign or program end" in `rs274 -g`)
+                (Kind::Call, b"call")
+                    if after.in_def
+                        && after.def_flow.is_empty()
+                        && !b.skip
+                        && label == self.sub_label =>
+                {
+                    if self.call_skips(text) == Some(true) {
+                        let sub = String::from_utf8_lossy(&self.sub_label);
+                        let via = format!(", whose call on line {} runs {sub}", b.line);
+                        after.inner.push((after.def_label.clone(), via));
+                    }
+                }
+                // (and one of such a definition, at any depth)
+                (Kind::Call, b"call") if after.in_def && after.def_flow.is_empty() && !b.skip => {
+                    if let Some(e) = after.inner.iter().find(|e| e.0 == label) {
+                        let via = format!(
+                            ", whose call on line {} runs {}{}",
+                            b.line,
+                            String::from_utf8_lossy(&label),
+                            e.1
+                        );
+                        after.inner.push((after.def_label.clone(), via));
+                    }
+                }
+                (Kind::Call, b"call") if surely && !b.skip => {
+                    if let Some(e) = after.inner.iter().find(|e| e.0 == label) {
+                        after.skips = b.line;
+                        after.via = Some(format!("{}{}", String::from_utf8_lossy(&label), e.1));
                     }
                 }
                 _ => {}
@@ -2366,6 +2416,7 @@ impl Checker {
                 }
                 (None, false) => "with the call's values its condition is false",
             };
+            let name = after.via.clone().unwrap_or(name);
             let message = format!(
                 "File ended with no percent sign or program end (rs274ngc): the call on line \
                  {call} runs {name}, whose {label} {keyword} (line {open}) is not closed before \
@@ -7313,6 +7364,16 @@ pub(super) struct AfterReturn {
     skips: usize,
     /// The line of a call that surely runs with values where it returns (0: none).
     holds: usize,
+    /// The label of the definition open there ([`AfterReturn::in_def`]), and the o-word
+    /// blocks open in its body.
+    def_label: Vec<u8>,
+    def_flow: Vec<Vec<u8>>,
+    /// The definitions there whose body calls the definition, outside its blocks, with
+    /// values that make the block left open skip, or calls such a definition: label, the
+    /// calls' words for the message (review 77-lcnc77b F7).
+    inner: Vec<(Vec<u8>, String)>,
+    /// Those words, where [`AfterReturn::skips`] is the line of a call of such a definition.
+    via: Option<String>,
 }
 
 /// What [`Checker::linuxcnc_main_flow`] found of an o-word line of the main program: an
