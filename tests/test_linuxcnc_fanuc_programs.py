@@ -137,3 +137,30 @@ def test_a_call_inside_a_called_definition(tmp_path, after: str, expected) -> No
     assert expected or "TG142" in rules
     out = rs274_output(tmp_path, text)
     assert refused(out) == bool(expected), out
+
+
+# review 78-lcnc78: programs rs274 never reads, or reads only in part, stay unjudged (rs274 runs
+# each): one no call names (F1), a second one of a number (the call runs the first), an o-word
+# definition of the number after the program the call runs (F3), the lines after an M30 of the
+# body (F4), an O number of ten digits or more (F5)
+NOT_READ = [
+    "G21 G17 G90 F100\nG0 X0 Y0\nM2\nO301\nG2 X1 Y0\nM99\n",
+    f"{HEAD}M98 P300\nX2\nM2\nO300\nG0 X0\nM99\nO300\nG2 X1 Y0\nM99\n",
+    "G21 G17 G90\nG0 X0 Y0\nM98 P300\nM2\nO300\nG0 X1\nM99\no300 sub\nG0 X2\no300 endsub\n",
+    "G21 G17 G90\nG0 X0 Y0\nM98 P300\nM2\nO300\nG0 X1\nM30\nG2 X5\nM99\n",
+    "G21 G17 G90\nO1234567890\nG0 X0 Y0\nM2\n",
+]
+
+
+@pytest.mark.parametrize("text", NOT_READ)
+def test_what_rs274_never_reads_is_not_judged(tmp_path, text: str) -> None:
+    assert errors(text) == [], text
+    assert not refused(rs274_output(tmp_path, text))
+
+
+def test_a_nested_m98_program_is_judged(tmp_path) -> None:
+    # rs274: R i j k words all missing for arc (O3000, run by O2000's M98, at its G2)
+    text = ("G21 G17 G90 F100\nG0 X0 Y0\nM98 P2000\nM2\nO2000\nM98 P3000\nM99\n"
+            "O3000\nG2 X1 Y0\nM99\n")
+    assert errors(text) == [("TG404", 9)]
+    assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)

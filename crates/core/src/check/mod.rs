@@ -842,6 +842,16 @@ pub struct Checker {
     /// LinuxCNC: the main program's `M98 P..` calls surely run of a program not read yet:
     /// its label (`o300`) and line ([`Checker::linuxcnc_call_forms`]).
     linuxcnc_m98_calls: Vec<(Vec<u8>, usize)>,
+    /// LinuxCNC: the program numbers an `M98 P..` names before the line in hand
+    /// ([`Checker::linuxcnc_fanuc_line`]).
+    linuxcnc_m98_numbers: Vec<i64>,
+    /// LinuxCNC: the labels of the definitions opened after the main program's end, and
+    /// whether the one open is the first of its label ([`Checker::linuxcnc_call_forms`]).
+    linuxcnc_defs_after: Vec<Vec<u8>>,
+    linuxcnc_def_first: bool,
+    /// LinuxCNC: the line of an M2/M30 that ends the FANUC-style program open, which the next
+    /// line closes ([`Checker::subroutine_file`]).
+    linuxcnc_fanuc_close: Option<usize>,
     /// LinuxCNC: the line of the main program's M99 that ended it (0: none;
     /// [`Checker::linuxcnc_main_m99`]).
     linuxcnc_m99_end: usize,
@@ -1742,6 +1752,10 @@ impl Checker {
             linuxcnc_m99_end: 0,
             linuxcnc_fanuc_open: false,
             linuxcnc_m98_calls: Vec::new(),
+            linuxcnc_m98_numbers: Vec::new(),
+            linuxcnc_defs_after: Vec::new(),
+            linuxcnc_def_first: false,
+            linuxcnc_fanuc_close: None,
             skipped_end: false,
             end_skippable: false,
             surely_ended: false,
@@ -2596,95 +2610,13 @@ impl Checker {
         if self.subroutine_file(b) {
             return;
         }
-        self.read_block_rest(b, motion_words);
-    }
-
-    /// [`Checker::read_block`] after the LinuxCNC reading of its o-word structure
-    /// ([`Checker::subroutine_file`]), which also hands here a FANUC-style O number program's
-    /// lines read as a definition's ([`Checker::linuxcnc_fanuc_program`]).
-    #[inline(always)]
-    pub(super) fn read_block_rest(&mut self, b: &BlockView<'_>, motion_words: bool) {
         self.definition_section(b);
         if dialect::defines_subprogram(self.config.family, b.statements) {
             // PROC NAME: a subprogram, under its caller's position, feed and speed
             self.machine.forget();
         }
         if b.words.is_empty() {
-            let returns = dialect::returns(self.config.family, b.words, b.statements, &[]);
-            self.split.ended(returns);
-            if returns {
-                // RET, RTS: as after M99, what follows starts where a caller left the machine
-                // (and no run falls through to it: Checker::jump_arrival)
-                self.sub_ended = true;
-                if !b.skip {
-                    self.cut_block = self.stats.blocks;
-                }
-                self.part_ended(true);
-                self.machine.forget();
-            }
-            if b.statements
-                .iter()
-                .any(|&(_, kind, text)| kind == Kind::Name && text.first() == Some(&b'<'))
-            {
-                // a FANUC `<NAME>` alone in its block: where it stands, as an O number's
-                let first = std::mem::replace(&mut self.first_words, false);
-                self.program_name(b, first);
-            }
-            self.tv(b);
-            self.jump_arrival(b);
-            self.targets(b);
-            for &(column, comment) in b.comments {
-                self.comment(comment, b.line, column);
-            }
-            self.frames(b);
-            self.named_motions(b);
-            // a block of statements alone (`AP=90`, `DIAMON`): no words, its forms still move
-            // or set (polar.rs)
-            self.values.clear();
-            let before = Before::of(&self.machine.state);
-            self.programmed_forms(b, &before);
-            self.speed_limit_statement(b);
-            self.formulas(b);
-            self.variables(b);
-            if self.config.haas {
-                self.parameter_elements(b);
-            }
-            if !b.statements.is_empty() {
-                self.system_variables(b);
-            }
-            if self.statements(b, None) {
-                self.forget_at_jump(b, false);
-                // (a conditional jump forward changes no parameter where it is not taken)
-                if !self.jump_keeps_params(b) {
-                    self.params_forgotten();
-                } else {
-                    self.jump_noted(b);
-                }
-                self.motion_unknown = true;
-                self.linuxcnc_motion_after_call(b, false);
-                // a subprogram or the blocks jumped over may set another pole
-                self.polar = polar::Polar::default();
-                self.linuxcnc_spindle_unknown = true;
-                self.linuxcnc_uvw_unfollowed(b);
-                self.linuxcnc_compensation_unknown = true;
-                self.linuxcnc_plane_after_call(b, false);
-                self.linuxcnc_rate_after_statement(b);
-                self.linuxcnc_nurbs = tooling::Nurbs::unknown();
-                self.linuxcnc_nurbs_last = None;
-                self.linuxcnc_nurbs_last = None;
-                // (a call of a body that keeps them, or a condition's or loop's own line,
-                // loses no offset: the two are never one line)
-                if !std::mem::take(&mut self.call_keeps) && !self.linuxcnc_flow_offsets(b) {
-                    // (a call of a LinuxCNC definition after the end, Checker::later_call:
-                    // only its writes, known there)
-                    let unread_only = std::mem::take(&mut self.call_unread_here)
-                        && (!self.offsets_lost || self.offsets_unread_only);
-                    self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
-                    self.offsets_unread_only = unread_only;
-                }
-            }
-            self.call_keeps = false;
-            self.call_unread_here = false;
+            self.statements_only_block(b);
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
@@ -3123,6 +3055,88 @@ impl Checker {
             // its caller left the machine: no position, feed or speed is known there
             self.machine.forget();
         }
+    }
+
+    /// [`Checker::read_block`] of a block without words: statements alone (`AP=90`,
+    /// `DIAMON`, an o-word line), a comment alone, or a LinuxCNC FANUC-style program's O number
+    /// or M99 line read as the o-word form's ([`Checker::linuxcnc_fanuc_program`]).
+    #[inline(always)]
+    pub(super) fn statements_only_block(&mut self, b: &BlockView<'_>) {
+        let returns = dialect::returns(self.config.family, b.words, b.statements, &[]);
+        self.split.ended(returns);
+        if returns {
+            // RET, RTS: as after M99, what follows starts where a caller left the machine
+            // (and no run falls through to it: Checker::jump_arrival)
+            self.sub_ended = true;
+            if !b.skip {
+                self.cut_block = self.stats.blocks;
+            }
+            self.part_ended(true);
+            self.machine.forget();
+        }
+        if b.statements
+            .iter()
+            .any(|&(_, kind, text)| kind == Kind::Name && text.first() == Some(&b'<'))
+        {
+            // a FANUC `<NAME>` alone in its block: where it stands, as an O number's
+            let first = std::mem::replace(&mut self.first_words, false);
+            self.program_name(b, first);
+        }
+        self.tv(b);
+        self.jump_arrival(b);
+        self.targets(b);
+        for &(column, comment) in b.comments {
+            self.comment(comment, b.line, column);
+        }
+        self.frames(b);
+        self.named_motions(b);
+        // a block of statements alone (`AP=90`, `DIAMON`): no words, its forms still move
+        // or set (polar.rs)
+        self.values.clear();
+        let before = Before::of(&self.machine.state);
+        self.programmed_forms(b, &before);
+        self.speed_limit_statement(b);
+        self.formulas(b);
+        self.variables(b);
+        if self.config.haas {
+            self.parameter_elements(b);
+        }
+        if !b.statements.is_empty() {
+            self.system_variables(b);
+        }
+        if self.statements(b, None) {
+            self.forget_at_jump(b, false);
+            // (a conditional jump forward changes no parameter where it is not taken)
+            if !self.jump_keeps_params(b) {
+                self.params_forgotten();
+            } else {
+                self.jump_noted(b);
+            }
+            self.motion_unknown = true;
+            self.linuxcnc_motion_after_call(b, false);
+            // a subprogram or the blocks jumped over may set another pole
+            self.polar = polar::Polar::default();
+            self.linuxcnc_spindle_unknown = true;
+            self.linuxcnc_uvw_unfollowed(b);
+            self.linuxcnc_compensation_unknown = true;
+            self.linuxcnc_plane_after_call(b, false);
+            self.linuxcnc_rate_after_statement(b);
+            self.linuxcnc_nurbs = tooling::Nurbs::unknown();
+            self.linuxcnc_nurbs_last = None;
+            self.linuxcnc_nurbs_last = None;
+            // (a call of a body that keeps them, or a condition's or loop's own line,
+            // loses no offset: the two are never one line)
+            if !std::mem::take(&mut self.call_keeps) && !self.linuxcnc_flow_offsets(b) {
+                // (a call of a LinuxCNC definition after the end, Checker::later_call:
+                // only its writes, known there)
+                let unread_only = std::mem::take(&mut self.call_unread_here)
+                    && (!self.offsets_lost || self.offsets_unread_only);
+                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                self.offsets_unread_only = unread_only;
+            }
+        }
+        self.call_keeps = false;
+        self.call_unread_here = false;
     }
 
     /// A `%` line after the program's first block: a HEIDENHAIN program call (`%NAME *`

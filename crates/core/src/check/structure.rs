@@ -1383,10 +1383,26 @@ impl Checker {
                 return false;
             }
         }
-        if self.surely_ended && b.statements.is_empty() && !b.words.is_empty() {
-            if let Some(text) = self.linuxcnc_fanuc_line(b) {
-                self.linuxcnc_fanuc_program(b, &text);
-                return true;
+        if self.surely_ended {
+            // (an M2/M30 of a FANUC-style program's body outside its blocks on the line
+            // before: the program ends there, no line after it runs; closed before this line)
+            if let Some(line) = self.linuxcnc_fanuc_close.take() {
+                if let Some(open) = &self.open_definition {
+                    let mut text = open.2.clone();
+                    text.extend_from_slice(b" endsub");
+                    self.linuxcnc_fanuc_open = false;
+                    let view = BlockView { line, ..*b };
+                    self.linuxcnc_fanuc_program(&view, &text);
+                }
+            }
+            if b.statements.is_empty() && !b.words.is_empty() {
+                if let Some(text) = self.linuxcnc_fanuc_line(b) {
+                    self.linuxcnc_fanuc_program(b, &text);
+                    return true;
+                }
+                if self.linuxcnc_fanuc_open && self.linuxcnc_fanuc_ends(b) {
+                    self.linuxcnc_fanuc_close = Some(b.line);
+                }
             }
         }
         if b.words.is_empty() && b.statements.is_empty() {
@@ -1414,7 +1430,18 @@ impl Checker {
         }
         let number = std::str::from_utf8(w.number).ok()?;
         if w.letter == b'O' && self.open_definition.is_none() && !number.contains('.') {
+            // (one no M98 before it names is never read: rs274 stops at the main program's
+            // end, and only a call seeks a program after it)
             let n: i64 = number.parse().ok()?;
+            // (nor a second program of a number after the end: the call runs the first)
+            let label = format!("o{n}").into_bytes();
+            // (an `o300 call` of the main program reaches it too, and is refused there:
+            // Checker::linuxcnc_call_forms)
+            let called = self.linuxcnc_m98_numbers.contains(&n)
+                || self.linuxcnc_later.ends.iter().any(|c| c.0 == label);
+            if !called || self.linuxcnc_defs_after.contains(&label) {
+                return None;
+            }
             self.linuxcnc_fanuc_open = true;
             return Some(format!("o{n} sub").into_bytes());
         }
@@ -1446,6 +1473,16 @@ impl Checker {
             },
             _ => return,
         };
+        // (a call reaches the first line of its label after it: a later definition of the
+        // same label is not the one it runs; review 78-lcnc78 F3)
+        if !was_open {
+            self.linuxcnc_def_first = !self.linuxcnc_defs_after.contains(&label);
+            self.linuxcnc_defs_after.push(label.clone());
+        }
+        if !self.linuxcnc_def_first {
+            self.linuxcnc_fanuc_open &= !was_open;
+            return;
+        }
         let m98s = &self.linuxcnc_m98_calls;
         let m98 = m98s.iter().find(|c| c.0 == label).map(|c| c.1);
         let called = self
@@ -1484,6 +1521,22 @@ impl Checker {
         self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 
+    /// LinuxCNC: an M2 or M30 of a FANUC-style program's body after the main program's end,
+    /// outside the body's blocks: a call ends the program there, and no line after it up to
+    /// the M99 runs.
+    fn linuxcnc_fanuc_ends(&self, b: &BlockView<'_>) -> bool {
+        !b.skip
+            && self.linuxcnc_definition_flow.is_empty()
+            && b.words.iter().any(|w| {
+                w.letter == b'M'
+                    && w.expression.is_empty()
+                    && matches!(
+                        std::str::from_utf8(w.number).map(str::parse::<i64>),
+                        Ok(Ok(2 | 30))
+                    )
+            })
+    }
+
     /// LinuxCNC: a FANUC-style program's O number or M99 line after the main program's end
     /// ([`Checker::linuxcnc_fanuc_line`]) read as the o-word form's `sub` or `endsub` line
     /// (`text`): the same reading of its body, of the main program's calls of it made before
@@ -1501,7 +1554,8 @@ impl Checker {
         self.letters = 0;
         self.plain_block = false;
         if !self.subroutine_file(&view) {
-            self.read_block_rest(&view, false);
+            self.definition_section(&view);
+            self.statements_only_block(&view);
         }
     }
 
@@ -2169,6 +2223,22 @@ impl Checker {
                     .iter()
                     .any(|w| w.letter == b'M' && matches!(self.linuxcnc_m_number(w), Some(2 | 30)));
         after.end |= ends && may_run;
+        // (a body's M2, M30, M98 or M99 before a call in it: the call may not run; one of the
+        // main program's calls)
+        let m_stop = || {
+            b.words.iter().any(|w| {
+                w.letter == b'M' && matches!(self.linuxcnc_m_number(w), Some(2 | 30 | 98 | 99))
+            })
+        };
+        if after.in_def {
+            after.def_left |= ends || m_stop();
+        } else if b
+            .words
+            .iter()
+            .any(|w| w.letter == b'M' && self.linuxcnc_m_number(w) == Some(98))
+        {
+            after.other_call = true;
+        }
         for &(column, kind, text) in b.statements {
             let keyword = crate::statement::o_keyword(text).unwrap_or_default();
             let label = crate::statement::o_label(text);
@@ -2193,6 +2263,7 @@ impl Checker {
                     after.in_def = true;
                     after.def_label = label;
                     after.def_flow.clear();
+                    after.def_left = false;
                 }
                 (_, b"return") if !after.in_def => {
                     after.refused = undefined("not in a subroutine definition");
@@ -2210,6 +2281,7 @@ impl Checker {
                             flow.truncate(at)
                         }
                         (b"if" | b"while" | b"repeat" | b"do", _) => flow.push(label),
+                        (b"return", _) => after.def_left = true,
                         _ => {}
                     }
                 }
@@ -2255,6 +2327,7 @@ impl Checker {
                 (Kind::Call, b"call")
                     if after.in_def
                         && after.def_flow.is_empty()
+                        && !after.def_left
                         && !b.skip
                         && label == self.sub_label =>
                 {
@@ -2265,7 +2338,10 @@ impl Checker {
                     }
                 }
                 // (and one of such a definition, at any depth)
-                (Kind::Call, b"call") if after.in_def && after.def_flow.is_empty() && !b.skip => {
+                (Kind::Call, b"call")
+                    if after.in_def && after.def_flow.is_empty() && !after.def_left && !b.skip =>
+                {
+                    after.def_left = true;
                     if let Some(e) = after.inner.iter().find(|e| e.0 == label) {
                         let via = format!(
                             ", whose call on line {} runs {}{}",
@@ -2276,12 +2352,15 @@ impl Checker {
                         after.inner.push((after.def_label.clone(), via));
                     }
                 }
-                (Kind::Call, b"call") if surely && !b.skip => {
+                (Kind::Call, b"call") if surely && !b.skip && !after.other_call => {
                     if let Some(e) = after.inner.iter().find(|e| e.0 == label) {
                         after.skips = b.line;
                         after.via = Some(format!("{}{}", String::from_utf8_lossy(&label), e.1));
                     }
+                    after.other_call = true;
                 }
+                (Kind::Call, _) if after.in_def => after.def_left = true,
+                (Kind::Call, _) => after.other_call = true,
                 _ => {}
             }
             if after.refused.is_some() || after.skips != 0 {
@@ -5211,7 +5290,8 @@ impl Checker {
             // call` / `Z0.5` runs O200's G81 in `rs274 -g`)
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_motion_subs.insert(open.2.clone());
-            } else if self.letters & crate::modal::bit(b'P') != 0 {
+            }
+            if self.letters & crate::modal::bit(b'P') != 0 {
                 self.linuxcnc_m98_later(b);
             }
             return;
@@ -5345,6 +5425,13 @@ impl Checker {
         let Some(n) = self.called_number(b) else {
             return;
         };
+        if !self.linuxcnc_m98_numbers.contains(&n) {
+            self.linuxcnc_m98_numbers.push(n);
+        }
+        // (one in a body: the program it names read as a definition, no more)
+        if self.open_definition.is_some() {
+            return;
+        }
         let label = format!("o{n}").into_bytes();
         if self.linuxcnc_defined.contains(&label) {
             return;
@@ -7374,6 +7461,11 @@ pub(super) struct AfterReturn {
     inner: Vec<(Vec<u8>, String)>,
     /// Those words, where [`AfterReturn::skips`] is the line of a call of such a definition.
     via: Option<String>,
+    /// The body of the definition open there may have returned, ended the program or run
+    /// another call before the line in hand; the main program there has run a call of
+    /// another kind: a call after it is not taken as surely reaching the definition.
+    def_left: bool,
+    other_call: bool,
 }
 
 /// What [`Checker::linuxcnc_main_flow`] found of an o-word line of the main program: an
