@@ -3060,7 +3060,7 @@ impl Checker {
     /// [`Checker::read_block`] of a block without words: statements alone (`AP=90`,
     /// `DIAMON`, an o-word line), a comment alone, or a LinuxCNC FANUC-style program's O number
     /// or M99 line read as the o-word form's ([`Checker::linuxcnc_fanuc_program`]).
-    #[inline(always)]
+    #[inline(never)]
     pub(super) fn statements_only_block(&mut self, b: &BlockView<'_>) {
         let returns = dialect::returns(self.config.family, b.words, b.statements, &[]);
         self.split.ended(returns);
