@@ -2329,13 +2329,12 @@ impl Checker {
                         && after.def_flow.is_empty()
                         && !after.def_left
                         && !b.skip
-                        && label == self.sub_label =>
+                        && label == self.sub_label
+                        && self.call_skips(text) == Some(true) =>
                 {
-                    if self.call_skips(text) == Some(true) {
-                        let sub = String::from_utf8_lossy(&self.sub_label);
-                        let via = format!(", whose call on line {} runs {sub}", b.line);
-                        after.inner.push((after.def_label.clone(), via));
-                    }
+                    let sub = String::from_utf8_lossy(&self.sub_label);
+                    let via = format!(", whose call on line {} runs {sub}", b.line);
+                    after.inner.push((after.def_label.clone(), via));
                 }
                 // (and one of such a definition, at any depth)
                 (Kind::Call, b"call")
