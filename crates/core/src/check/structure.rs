@@ -1553,8 +1553,9 @@ impl Checker {
         };
         self.letters = 0;
         self.plain_block = false;
+        // (no SINUMERIK definition section here: `definition_section` keeps its one call,
+        // inlined in `read_block`)
         if !self.subroutine_file(&view) {
-            self.definition_section(&view);
             self.statements_only_block(&view);
         }
     }
