@@ -475,7 +475,8 @@ def test_the_main_s_move_after_an_m97_is_judged_where_the_body_changes_nothing(h
 
 @pytest.mark.parametrize("blocks, expected", [
     # (review 77-calls77 F10, h176: N100 leaves G91, the main's `G0 X-27.` after the call is
-    # an increment: X 5 - 27 = -22, machine -26 under G55, inside; not -31)
+    # an increment: N100 leaves X at machine 5, G55 work 9, 9 - 27 = -18, machine -22, inside;
+    # not -31)
     ("M97 P100 / G55 / G0 X-27. / M30 / N100 G91 G0 X5. / M99 / %", []),
     # (h170: the same body, the main's X32.5 an increment to 32.5 from -28: no span of 60.5)
     ("G0 X-28. / M97 P100 / G0 X32.5 / M30 / N100 G91 G0 Y0 / M99 / %", []),
@@ -522,7 +523,8 @@ def test_the_main_s_moves_after_an_m97_wait_for_the_mode_its_body_leaves(
 
 @pytest.mark.parametrize("blocks, expected", [
     # (rs274 -g: STRAIGHT_TRAVERSE(100) in o100, then SET_G5X_OFFSET(2) and
-    # STRAIGHT_TRAVERSE(-600): the main's X-700 an increment, machine -700, inside)
+    # STRAIGHT_TRAVERSE(-600) with every offset 0; under G55 X-100 the body leaves machine 100,
+    # G55 work 200, the main's X-700 an increment to work -500, machine -600, inside)
     ("o100 call / G55 / G0 X-700 / M2 / o100 sub / G91 G0 X100 / o100 endsub", []),
     # (rs274 -g: STRAIGHT_TRAVERSE(-700) after SET_G5X_OFFSET(2): machine -800)
     ("o100 call / G55 / G0 X-700 / M2 / o100 sub / G0 X5 / o100 endsub",

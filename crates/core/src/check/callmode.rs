@@ -15,7 +15,8 @@
 //!
 //! `O1000` / `G20 G17 G90 G54` / `G0 X0 Y0` / `M97 P100` / `G55` / `G0 X-27.` / `M30` /
 //! `N100 G91 G0 X5.` / `M99` on a Haas in inches (X -30..30, G55 X -4): N100 leaves G91, the
-//! main's `G0 X-27.` is an increment from 5 to -22 (machine -26), not -27 (machine -31).
+//! main's `G0 X-27.` is an increment: N100 left X at machine 5, G55 work 9, so work -18
+//! (machine -22), not -27 (machine -31).
 
 use super::Checker;
 use crate::rules::Rule;

@@ -431,6 +431,91 @@ pub struct Stats {
     pub dwells_not_known: Vec<String>,
 }
 
+/// [`Checker::read_block`] of a block without words: statements alone (`AP=90`, `DIAMON`, an
+/// o-word line), a comment alone, or a LinuxCNC FANUC-style program's O number or M99 line read
+/// as the o-word form's (`Checker::linuxcnc_fanuc_program`): one text for both, expanded in
+/// the hot `read_block` and in the cold reading of those lines.
+macro_rules! statements_only_block {
+    ($s:ident, $b:ident) => {{
+        let returns = dialect::returns($s.config.family, $b.words, $b.statements, &[]);
+        $s.split.ended(returns);
+        if returns {
+            // RET, RTS: as after M99, what follows starts where a caller left the machine
+            // (and no run falls through to it: Checker::jump_arrival)
+            $s.sub_ended = true;
+            if !$b.skip {
+                $s.cut_block = $s.stats.blocks;
+            }
+            $s.part_ended(true);
+            $s.machine.forget();
+        }
+        if $b
+            .statements
+            .iter()
+            .any(|&(_, kind, text)| kind == Kind::Name && text.first() == Some(&b'<'))
+        {
+            // a FANUC `<NAME>` alone in its block: where it stands, as an O number's
+            let first = std::mem::replace(&mut $s.first_words, false);
+            $s.program_name($b, first);
+        }
+        $s.tv($b);
+        $s.jump_arrival($b);
+        $s.targets($b);
+        for &(column, comment) in $b.comments {
+            $s.comment(comment, $b.line, column);
+        }
+        $s.frames($b);
+        $s.named_motions($b);
+        // a block of statements alone (`AP=90`, `DIAMON`): no words, its forms still move
+        // or set (polar.rs)
+        $s.values.clear();
+        let before = Before::of(&$s.machine.state);
+        $s.programmed_forms($b, &before);
+        $s.speed_limit_statement($b);
+        $s.formulas($b);
+        $s.variables($b);
+        if $s.config.haas {
+            $s.parameter_elements($b);
+        }
+        if !$b.statements.is_empty() {
+            $s.system_variables($b);
+        }
+        if $s.statements($b, None) {
+            $s.forget_at_jump($b, false);
+            // (a conditional jump forward changes no parameter where it is not taken)
+            if !$s.jump_keeps_params($b) {
+                $s.params_forgotten();
+            } else {
+                $s.jump_noted($b);
+            }
+            $s.motion_unknown = true;
+            $s.linuxcnc_motion_after_call($b, false);
+            // a subprogram or the blocks jumped over may set another pole
+            $s.polar = polar::Polar::default();
+            $s.linuxcnc_spindle_unknown = true;
+            $s.linuxcnc_uvw_unfollowed($b);
+            $s.linuxcnc_compensation_unknown = true;
+            $s.linuxcnc_plane_after_call($b, false);
+            $s.linuxcnc_rate_after_statement($b);
+            $s.linuxcnc_nurbs = tooling::Nurbs::unknown();
+            $s.linuxcnc_nurbs_last = None;
+            $s.linuxcnc_nurbs_last = None;
+            // (a call of a body that keeps them, or a condition's or loop's own line,
+            // loses no offset: the two are never one line)
+            if !std::mem::take(&mut $s.call_keeps) && !$s.linuxcnc_flow_offsets($b) {
+                // (a call of a LinuxCNC definition after the end, Checker::later_call:
+                // only its writes, known there)
+                let unread_only = std::mem::take(&mut $s.call_unread_here)
+                    && (!$s.offsets_lost || $s.offsets_unread_only);
+                $s.offsets_rewritten($b.line, "a jump or call the checker does not follow");
+                $s.offsets_unread_only = unread_only;
+            }
+        }
+        $s.call_keeps = false;
+        $s.call_unread_here = false;
+    }};
+}
+
 /// A block as the checker sees it.
 pub struct BlockView<'a> {
     pub line: usize,
@@ -837,6 +922,25 @@ pub struct Checker {
     /// A program of the file ended with M02/M30 (a main program): the file's first program,
     /// where it ends in M99, is then not the one the control starts (called.rs).
     main_ended: bool,
+    /// LinuxCNC: the definition open is a FANUC-style O number program after the main
+    /// program's end, closed by its M99 ([`Checker::linuxcnc_fanuc_program`]).
+    linuxcnc_fanuc_open: bool,
+    /// LinuxCNC: the main program's `M98 P..` calls surely run of a program not read yet:
+    /// its label (`o300`) and line ([`Checker::linuxcnc_call_forms`]).
+    linuxcnc_m98_calls: Vec<(Vec<u8>, usize)>,
+    /// LinuxCNC: the program numbers an `M98 P..` names before the line in hand
+    /// ([`Checker::linuxcnc_fanuc_line`]).
+    linuxcnc_m98_numbers: Vec<i64>,
+    /// LinuxCNC: the labels of the definitions opened after the main program's end, and
+    /// whether the one open is the first of its label ([`Checker::linuxcnc_call_forms`]).
+    linuxcnc_defs_after: Vec<Vec<u8>>,
+    linuxcnc_def_first: bool,
+    /// LinuxCNC: the line of an M2/M30 that ends the FANUC-style program open, which the next
+    /// line closes ([`Checker::subroutine_file`]).
+    linuxcnc_fanuc_close: Option<usize>,
+    /// LinuxCNC: the line of the main program's M99 that ended it (0: none;
+    /// [`Checker::linuxcnc_main_m99`]).
+    linuxcnc_m99_end: usize,
     /// An M02/M30 the block skip passes over came last, which ends the program only with the
     /// switch off. LinuxCNC (`/M2`): no end for the lines after it, but an end for TG114. The
     /// other families (`/M30`, or an M30 after a `/` in the block's middle): the end on
@@ -1735,6 +1839,13 @@ impl Checker {
             offsets_section: false,
             ended_line: 0,
             main_ended: false,
+            linuxcnc_m99_end: 0,
+            linuxcnc_fanuc_open: false,
+            linuxcnc_m98_calls: Vec::new(),
+            linuxcnc_m98_numbers: Vec::new(),
+            linuxcnc_defs_after: Vec::new(),
+            linuxcnc_def_first: false,
+            linuxcnc_fanuc_close: None,
             skipped_end: false,
             end_skippable: false,
             surely_ended: false,
@@ -2600,81 +2711,7 @@ impl Checker {
             self.machine.forget();
         }
         if b.words.is_empty() {
-            let returns = dialect::returns(self.config.family, b.words, b.statements, &[]);
-            self.split.ended(returns);
-            if returns {
-                // RET, RTS: as after M99, what follows starts where a caller left the machine
-                // (and no run falls through to it: Checker::jump_arrival)
-                self.sub_ended = true;
-                if !b.skip {
-                    self.cut_block = self.stats.blocks;
-                }
-                self.part_ended(true);
-                self.machine.forget();
-            }
-            if b.statements
-                .iter()
-                .any(|&(_, kind, text)| kind == Kind::Name && text.first() == Some(&b'<'))
-            {
-                // a FANUC `<NAME>` alone in its block: where it stands, as an O number's
-                let first = std::mem::replace(&mut self.first_words, false);
-                self.program_name(b, first);
-            }
-            self.tv(b);
-            self.jump_arrival(b);
-            self.targets(b);
-            for &(column, comment) in b.comments {
-                self.comment(comment, b.line, column);
-            }
-            self.frames(b);
-            self.named_motions(b);
-            // a block of statements alone (`AP=90`, `DIAMON`): no words, its forms still move
-            // or set (polar.rs)
-            self.values.clear();
-            let before = Before::of(&self.machine.state);
-            self.programmed_forms(b, &before);
-            self.speed_limit_statement(b);
-            self.formulas(b);
-            self.variables(b);
-            if self.config.haas {
-                self.parameter_elements(b);
-            }
-            if !b.statements.is_empty() {
-                self.system_variables(b);
-            }
-            if self.statements(b, None) {
-                self.forget_at_jump(b, false);
-                // (a conditional jump forward changes no parameter where it is not taken)
-                if !self.jump_keeps_params(b) {
-                    self.params_forgotten();
-                } else {
-                    self.jump_noted(b);
-                }
-                self.motion_unknown = true;
-                self.linuxcnc_motion_after_call(b, false);
-                // a subprogram or the blocks jumped over may set another pole
-                self.polar = polar::Polar::default();
-                self.linuxcnc_spindle_unknown = true;
-                self.linuxcnc_uvw_unfollowed(b);
-                self.linuxcnc_compensation_unknown = true;
-                self.linuxcnc_plane_after_call(b, false);
-                self.linuxcnc_rate_after_statement(b);
-                self.linuxcnc_nurbs = tooling::Nurbs::unknown();
-                self.linuxcnc_nurbs_last = None;
-                self.linuxcnc_nurbs_last = None;
-                // (a call of a body that keeps them, or a condition's or loop's own line,
-                // loses no offset: the two are never one line)
-                if !std::mem::take(&mut self.call_keeps) && !self.linuxcnc_flow_offsets(b) {
-                    // (a call of a LinuxCNC definition after the end, Checker::later_call:
-                    // only its writes, known there)
-                    let unread_only = std::mem::take(&mut self.call_unread_here)
-                        && (!self.offsets_lost || self.offsets_unread_only);
-                    self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
-                    self.offsets_unread_only = unread_only;
-                }
-            }
-            self.call_keeps = false;
-            self.call_unread_here = false;
+            statements_only_block!(self, b);
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
@@ -2989,7 +3026,9 @@ impl Checker {
         );
         // LinuxCNC: an M word's value read before the line's own assignments, which rs274
         // makes at the line's end (`#1=2 M#1` after `#1=5` is M5; review 48, F8)
-        let linuxcnc_m_end = linuxcnc && self.letters & bit(b'M') != 0 && self.linuxcnc_m_ends(b);
+        let linuxcnc_m_end = linuxcnc
+            && self.letters & bit(b'M') != 0
+            && (self.linuxcnc_m_ends(b) || self.linuxcnc_main_m99(b));
         self.assignments(b);
         self.formulas(b);
         if self.config.haas {
@@ -3111,6 +3150,14 @@ impl Checker {
             // its caller left the machine: no position, feed or speed is known there
             self.machine.forget();
         }
+    }
+
+    /// The reading of a block without words (`statements_only_block!`) out of line, for the
+    /// LinuxCNC lines that read as o-word lines.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn statements_only_block(&mut self, b: &BlockView<'_>) {
+        statements_only_block!(self, b);
     }
 
     /// A `%` line after the program's first block: a HEIDENHAIN program call (`%NAME *`

@@ -1401,11 +1401,181 @@ impl Checker {
                 return false;
             }
         }
+        if self.surely_ended {
+            // (an M2/M30 of a FANUC-style program's body outside its blocks on the line
+            // before: the program ends there, no line after it runs; closed before this line)
+            if let Some(line) = self.linuxcnc_fanuc_close.take() {
+                if let Some(open) = &self.open_definition {
+                    let mut text = open.2.clone();
+                    text.extend_from_slice(b" endsub");
+                    self.linuxcnc_fanuc_open = false;
+                    let view = BlockView { line, ..*b };
+                    self.linuxcnc_fanuc_program(&view, &text);
+                }
+            }
+            if b.statements.is_empty() && !b.words.is_empty() {
+                if let Some(text) = self.linuxcnc_fanuc_line(b) {
+                    self.linuxcnc_fanuc_program(b, &text);
+                    return true;
+                }
+                if self.linuxcnc_fanuc_open && self.linuxcnc_fanuc_ends(b) {
+                    self.linuxcnc_fanuc_close = Some(b.line);
+                }
+            }
+        }
         if b.words.is_empty() && b.statements.is_empty() {
             return false;
         }
         self.subroutine_file_read(b);
         b.statements.is_empty() && self.open_definition.is_none() && self.linuxcnc_dead()
+    }
+
+    /// LinuxCNC 2.9: after the main program's end, a FANUC-style program, a bare O number
+    /// (`O300`, alone on its line but for a comment) up to an `M99` alone on its line, is
+    /// the body an `M98 P300` runs: rs274 seeks its O number as it seeks an `o300 sub` and
+    /// returns at its M99 (interp_read.cc `read_o`, bare O-word and "m99"; interp_o_word.cc
+    /// `convert_control_functions`, `O_` and `M_99`). The line's statement as the o-word
+    /// form's (`o300 sub`, `o300 endsub`), where it is one ([`Checker::linuxcnc_fanuc_program`]).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_fanuc_line(&mut self, b: &BlockView<'_>) -> Option<Vec<u8>> {
+        let mut words = b.words.iter().filter(|w| w.letter != b'N');
+        let (Some(w), None) = (words.next(), words.next()) else {
+            return None;
+        };
+        if b.skip || !w.index.is_empty() || !w.expression.is_empty() {
+            return None;
+        }
+        let number = std::str::from_utf8(w.number).ok()?;
+        if w.letter == b'O' && self.open_definition.is_none() && !number.contains('.') {
+            // (one no M98 before it names is never read: rs274 stops at the main program's
+            // end, and only a call seeks a program after it)
+            let n: i64 = number.parse().ok()?;
+            // (nor a second program of a number after the end: the call runs the first)
+            let label = format!("o{n}").into_bytes();
+            // (an `o300 call` of the main program reaches it too, and is refused there:
+            // Checker::linuxcnc_call_forms)
+            let called = self.linuxcnc_m98_numbers.contains(&n)
+                || self.linuxcnc_later.ends.iter().any(|c| c.0 == label);
+            if !called || self.linuxcnc_defs_after.contains(&label) {
+                return None;
+            }
+            self.linuxcnc_fanuc_open = true;
+            return Some(format!("o{n} sub").into_bytes());
+        }
+        if w.letter == b'M' && self.linuxcnc_fanuc_open && number.parse::<i64>().ok()? == 99 {
+            let open = &self.open_definition.as_ref()?.2;
+            let mut text = open.clone();
+            text.extend_from_slice(b" endsub");
+            self.linuxcnc_fanuc_open = false;
+            return Some(text);
+        }
+        None
+    }
+
+    /// LinuxCNC 2.9 refuses a call of one form that reaches a definition of the other, where
+    /// the main program's call surely runs (interp_o_word.cc `convert_control_functions`):
+    /// `M98 P300` reaching `o300 sub` ("'O.... sub' subroutine must be called with 'O....
+    /// call'"), `o300 call` reaching `O300` ("Fanuc 'O....' subroutine must be called with
+    /// 'M98'"), and an `O300` program closed by `o300 endsub` ("Fanuc 'O....' subroutine
+    /// definition must end with 'M99'"), each at the definition's line (`rs274 -g`). Asked
+    /// where a definition after the main program's end opens or closes (`was_open`).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_call_forms(&mut self, b: &BlockView<'_>, was_open: bool) {
+        let label = match (&self.open_definition, was_open) {
+            (Some(open), false) => open.2.clone(),
+            (None, true) => match dialect::subroutine_statement(b.statements) {
+                Some((false, label)) => label,
+                _ => return,
+            },
+            _ => return,
+        };
+        // (a call reaches the first line of its label after it: a later definition of the
+        // same label is not the one it runs; review 78-lcnc78 F3)
+        if !was_open {
+            self.linuxcnc_def_first = !self.linuxcnc_defs_after.contains(&label);
+            self.linuxcnc_defs_after.push(label.clone());
+        }
+        if !self.linuxcnc_def_first {
+            self.linuxcnc_fanuc_open &= !was_open;
+            return;
+        }
+        let m98s = &self.linuxcnc_m98_calls;
+        let m98 = m98s.iter().find(|c| c.0 == label).map(|c| c.1);
+        let called = self
+            .linuxcnc_later
+            .ends
+            .iter()
+            .find(|c| c.0 == label && !m98s.contains(c))
+            .map(|c| c.1);
+        let fanuc = self.linuxcnc_fanuc_open;
+        let shown = String::from_utf8_lossy(&label[1..]).into_owned();
+        let message = match (was_open, fanuc, m98, called) {
+            (false, false, Some(line), _) => format!(
+                "'O.... sub' subroutine must be called with 'O.... call' (rs274ngc): the M98 \
+                 P{shown} on line {line} reaches o{shown} sub, a definition of the o-word form, \
+                 which rs274 2.9 runs only for an o{shown} call"
+            ),
+            (false, true, _, Some(line)) => format!(
+                "Fanuc 'O....' subroutine must be called with 'M98' (rs274ngc): the o{shown} \
+                 call on line {line} reaches the FANUC-style program O{shown}, which rs274 2.9 \
+                 runs only for an M98 P{shown}"
+            ),
+            (true, true, Some(line), _) => {
+                self.linuxcnc_fanuc_open = false;
+                format!(
+                    "Fanuc 'O....' subroutine definition must end with 'M99' (rs274ngc): the \
+                     FANUC-style program O{shown} that the M98 P{shown} on line {line} runs is \
+                     closed by an o-word endsub, which rs274 2.9 refuses"
+                )
+            }
+            _ => {
+                self.linuxcnc_fanuc_open &= !was_open;
+                return;
+            }
+        };
+        let column = b.statements.first().map_or(1, |s| s.0);
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+    }
+
+    /// LinuxCNC: an M2 or M30 of a FANUC-style program's body after the main program's end,
+    /// outside the body's blocks: a call ends the program there, and no line after it up to
+    /// the M99 runs.
+    fn linuxcnc_fanuc_ends(&self, b: &BlockView<'_>) -> bool {
+        !b.skip
+            && self.linuxcnc_definition_flow.is_empty()
+            && b.words.iter().any(|w| {
+                w.letter == b'M'
+                    && w.expression.is_empty()
+                    && matches!(
+                        std::str::from_utf8(w.number).map(str::parse::<i64>),
+                        Ok(Ok(2 | 30))
+                    )
+            })
+    }
+
+    /// LinuxCNC: a FANUC-style program's O number or M99 line after the main program's end
+    /// ([`Checker::linuxcnc_fanuc_line`]) read as the o-word form's `sub` or `endsub` line
+    /// (`text`): the same reading of its body, of the main program's calls of it made before
+    /// (its `M98`, [`Checker::linuxcnc_m98_later`]) and of the moves held after them.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_fanuc_program(&mut self, b: &BlockView<'_>, text: &[u8]) {
+        let column = b.words.first().map_or(1, |w| w.column);
+        let statements = [(column, Kind::Definition, text)];
+        let view = BlockView {
+            words: &[],
+            statements: &statements,
+            ..*b
+        };
+        self.letters = 0;
+        self.plain_block = false;
+        // (no SINUMERIK definition section here: `definition_section` keeps its one call,
+        // inlined in `read_block`)
+        if !self.subroutine_file(&view) {
+            self.statements_only_block(&view);
+        }
     }
 
     /// The file is no subroutine file, no definition is open, and no spindle speed is
@@ -1463,6 +1633,9 @@ impl Checker {
             self.definition_feed(statement.as_ref());
             let was_open = self.open_definition.is_some();
             self.definition_open(b, statement.as_ref());
+            if was_open != self.open_definition.is_some() && self.surely_ended {
+                self.linuxcnc_call_forms(b, was_open);
+            }
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
             if was_open && self.open_definition.is_none() && !self.linuxcnc_later.ends.is_empty() {
@@ -2071,6 +2244,22 @@ impl Checker {
                     .iter()
                     .any(|w| w.letter == b'M' && matches!(self.linuxcnc_m_number(w), Some(2 | 30)));
         after.end |= ends && may_run;
+        // (a body's M2, M30, M98 or M99 before a call in it: the call may not run; one of the
+        // main program's calls)
+        let m_stop = || {
+            b.words.iter().any(|w| {
+                w.letter == b'M' && matches!(self.linuxcnc_m_number(w), Some(2 | 30 | 98 | 99))
+            })
+        };
+        if after.in_def {
+            after.def_left |= ends || m_stop();
+        } else if b
+            .words
+            .iter()
+            .any(|w| w.letter == b'M' && self.linuxcnc_m_number(w) == Some(98))
+        {
+            after.other_call = true;
+        }
         for &(column, kind, text) in b.statements {
             let keyword = crate::statement::o_keyword(text).unwrap_or_default();
             let label = crate::statement::o_label(text);
@@ -2091,7 +2280,12 @@ impl Checker {
                 (Kind::Definition, b"sub") if !after.in_def && label == self.sub_label => {
                     after.refused = undefined("redefining sub");
                 }
-                (Kind::Definition, b"sub") => after.in_def = true,
+                (Kind::Definition, b"sub") => {
+                    after.in_def = true;
+                    after.def_label = label;
+                    after.def_flow.clear();
+                    after.def_left = false;
+                }
                 (_, b"return") if !after.in_def => {
                     after.refused = undefined("not in a subroutine definition");
                 }
@@ -2099,7 +2293,19 @@ impl Checker {
                 (Kind::Definition, _) => {
                     after.refused = undefined("not in a subroutine definition");
                 }
-                (Kind::Flow, _) if after.in_def => {}
+                (Kind::Flow, k) if after.in_def => {
+                    // (the blocks of the definition's body: a call inside one may not run)
+                    let flow = &mut after.def_flow;
+                    let at = flow.iter().rposition(|l| *l == label);
+                    match (k, at) {
+                        (b"while" | b"endif" | b"endwhile" | b"endrepeat", Some(at)) => {
+                            flow.truncate(at)
+                        }
+                        (b"if" | b"while" | b"repeat" | b"do", _) => flow.push(label),
+                        (b"return", _) => after.def_left = true,
+                        _ => {}
+                    }
+                }
                 (Kind::Flow, k) => {
                     let at = after.flow.iter().rposition(|e| e.0 == label);
                     let (_, condition) = o_keyword_condition(text);
@@ -2134,6 +2340,47 @@ impl Checker {
                         _ => {}
                     }
                 }
+                // (a call of the definition in another definition's body, outside its blocks,
+                // with values that make the block skip: a call of that other definition that
+                // surely runs reads to the end of the file as well; review 77-lcnc77b F7:
+                // `o300 sub` / `o200 call [0]` / `o300 endsub` / `o300 call` is "File ended
+                // with no percent sign or program end" in `rs274 -g`)
+                (Kind::Call, b"call")
+                    if after.in_def
+                        && after.def_flow.is_empty()
+                        && !after.def_left
+                        && !b.skip
+                        && label == self.sub_label
+                        && self.call_skips(text) == Some(true) =>
+                {
+                    let sub = String::from_utf8_lossy(&self.sub_label);
+                    let via = format!(", whose call on line {} runs {sub}", b.line);
+                    after.inner.push((after.def_label.clone(), via));
+                }
+                // (and one of such a definition, at any depth)
+                (Kind::Call, b"call")
+                    if after.in_def && after.def_flow.is_empty() && !after.def_left && !b.skip =>
+                {
+                    after.def_left = true;
+                    if let Some(e) = after.inner.iter().find(|e| e.0 == label) {
+                        let via = format!(
+                            ", whose call on line {} runs {}{}",
+                            b.line,
+                            String::from_utf8_lossy(&label),
+                            e.1
+                        );
+                        after.inner.push((after.def_label.clone(), via));
+                    }
+                }
+                (Kind::Call, b"call") if surely && !b.skip && !after.other_call => {
+                    if let Some(e) = after.inner.iter().find(|e| e.0 == label) {
+                        after.skips = b.line;
+                        after.via = Some(format!("{}{}", String::from_utf8_lossy(&label), e.1));
+                    }
+                    after.other_call = true;
+                }
+                (Kind::Call, _) if after.in_def => after.def_left = true,
+                (Kind::Call, _) => after.other_call = true,
                 _ => {}
             }
             if after.refused.is_some() || after.skips != 0 {
@@ -2268,6 +2515,7 @@ impl Checker {
                 }
                 (None, false) => "with the call's values its condition is false",
             };
+            let name = after.via.clone().unwrap_or(name);
             let message = format!(
                 "File ended with no percent sign or program end (rs274ngc): the call on line \
                  {call} runs {name}, whose {label} {keyword} (line {open}) is not closed before \
@@ -2851,6 +3099,27 @@ impl Checker {
                 && !w.expression.is_empty()
                 && matches!(self.linuxcnc_m_number(w), Some(2 | 30))
         })
+    }
+
+    /// LinuxCNC: an M99 of the main program, outside any definition and before its end: rs274
+    /// 2.9 reads it as the end of an endless main program (interp_convert.cc `convert_stop`:
+    /// with no subprogram to return to, "M99 main program endless loop", which loops back to
+    /// the file's start under task's `loop_on_main_m99` and ends the program as M2 does
+    /// elsewhere, `rs274 -g` among them): no line after it runs. A FANUC-style `O300` ...
+    /// `M99` written before the main program runs inline, and its M99 ends the program
+    /// (`rs274 -g` of `O300` / `G0 X10` / `M99` / `G21 G90` / `G0 X0 Y0` / `M98 P300` / `M2`
+    /// runs the X10 alone).
+    /// The line is kept for TG117's message ([`Checker::never_read`]).
+    pub(super) fn linuxcnc_main_m99(&mut self, b: &BlockView<'_>) -> bool {
+        let ends = self.open_definition.is_none()
+            && !self.main_ended
+            && b.words
+                .iter()
+                .any(|w| w.letter == b'M' && self.linuxcnc_m_number(w) == Some(99));
+        if ends {
+            self.linuxcnc_m99_end = b.line;
+        }
+        ends
     }
 
     /// LinuxCNC: the number of M word `w` as rs274 reads it -- a number, a parameter or an
@@ -5042,6 +5311,9 @@ impl Checker {
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_motion_subs.insert(open.2.clone());
             }
+            if self.letters & crate::modal::bit(b'P') != 0 {
+                self.linuxcnc_m98_later(b);
+            }
             return;
         }
         let (mut plain, mut called) = (true, false);
@@ -5147,6 +5419,55 @@ impl Checker {
             self.machine.state.motion = Some(m);
             self.machine.state.cycle = None;
         }
+    }
+
+    /// LinuxCNC: the main program's `M98 P300` (a P of a whole number, no L) calls the
+    /// FANUC-style program `O300`, which rs274 2.9 seeks after it as it seeks an `o300 sub`
+    /// ([`Checker::linuxcnc_fanuc_line`]): taken as the o-word form's call of a definition
+    /// not read yet, `o300 call` -- the move after it under the caller's G2/G3 held for the
+    /// body's M99, a body that surely ends the program ending it (the one reading of
+    /// [`Checker::linuxcnc_motion_after_call`]; `rs274 -g` of `G2 X1 Y0 I0.5 J0` / `M98 P300`
+    /// / `X2` / `M2` / `O300` / `G0 X0` / `M99` runs the X2 in the body's G0).
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_m98_later(&mut self, b: &BlockView<'_>) {
+        use super::tooling::LinuxCncMotion;
+        let m98 = |w: &Word<'_>| w.letter == b'M' && w.number == b"98" && w.expression.is_empty();
+        if b.skip
+            || !b.statements.is_empty()
+            || !b
+                .words
+                .iter()
+                .all(|w| matches!(w.letter, b'N' | b'P') || m98(w))
+        {
+            return;
+        }
+        let Some(n) = self.called_number(b) else {
+            return;
+        };
+        if !self.linuxcnc_m98_numbers.contains(&n) {
+            self.linuxcnc_m98_numbers.push(n);
+        }
+        // (one in a body: the program it names read as a definition, no more)
+        if self.open_definition.is_some() {
+            return;
+        }
+        let label = format!("o{n}").into_bytes();
+        if self.linuxcnc_defined.contains(&label) {
+            return;
+        }
+        self.linuxcnc_later.unread = true;
+        if self.linuxcnc_runs_surely() && !self.main_ended() {
+            self.linuxcnc_later.ends.push((label.clone(), b.line));
+            self.linuxcnc_m98_calls.push((label.clone(), b.line));
+        }
+        let state = &self.machine.state;
+        if let (Some(m @ 2..=3), None) = (state.motion, state.cycle) {
+            if self.linuxcnc_later.pending.is_none() {
+                self.linuxcnc_later.pending = Some((vec![label], b.line, m));
+            }
+        }
+        debug_assert_eq!(self.linuxcnc_motion, LinuxCncMotion::Unknown);
     }
 
     /// LinuxCNC: a move without a motion code or arc word (`b`) under the caller's G2/G3
@@ -6517,6 +6838,15 @@ impl Checker {
                  over, kept as written",
                 unread.line, unread.end
             )
+        } else if unread.end == self.linuxcnc_m99_end {
+            format!(
+                "line {} and the lines after it that are not O-word lines are never read: \
+                 LinuxCNC stops at the M99 of the main program on line {} (rs274 2.9 ends the \
+                 program there, or loops back to its start: interp_convert.cc convert_stop; \
+                 an M98 call finds an O number program after it, reading O-word lines alone); \
+                 passed over, kept as written",
+                unread.line, unread.end
+            )
         } else {
             format!(
                 "line {} and the lines after it that are not O-word lines are never read: \
@@ -6637,6 +6967,11 @@ impl Checker {
                  skips), so what they set is not set"
             );
             self.report(Rule::NotRead, message, first, 1);
+        }
+        // (a FANUC-style O number program after the end with no M99: rs274 reads it only
+        // where an M98 calls it, and then to the file's end; not judged, as before)
+        if std::mem::take(&mut self.linuxcnc_fanuc_open) {
+            self.open_definition = None;
         }
         if let Some((at, column, name)) = self.open_definition.take().filter(|_| !sub_return) {
             if self.sub_file == SubFile::Open && self.sub_returns.0 != 0 {
@@ -7136,6 +7471,21 @@ pub(super) struct AfterReturn {
     skips: usize,
     /// The line of a call that surely runs with values where it returns (0: none).
     holds: usize,
+    /// The label of the definition open there ([`AfterReturn::in_def`]), and the o-word
+    /// blocks open in its body.
+    def_label: Vec<u8>,
+    def_flow: Vec<Vec<u8>>,
+    /// The definitions there whose body calls the definition, outside its blocks, with
+    /// values that make the block left open skip, or calls such a definition: label, the
+    /// calls' words for the message (review 77-lcnc77b F7).
+    inner: Vec<(Vec<u8>, String)>,
+    /// Those words, where [`AfterReturn::skips`] is the line of a call of such a definition.
+    via: Option<String>,
+    /// The body of the definition open there may have returned, ended the program or run
+    /// another call before the line in hand; the main program there has run a call of
+    /// another kind: a call after it is not taken as surely reaching the definition.
+    def_left: bool,
+    other_call: bool,
 }
 
 /// What [`Checker::linuxcnc_main_flow`] found of an o-word line of the main program: an

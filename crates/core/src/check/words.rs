@@ -288,6 +288,7 @@ impl Checker {
                     && letter.is_ascii_uppercase()
                     && self.format_in(letter, Units::Metric).is_none()
                     && !dialect::macro_argument(self.config.family, b.words, letter)
+                    && !linuxcnc_program_number(self.config.family, w)
                 {
                     let mut message = format!(
                         "address {} is not in the profile's classification {}",
@@ -1442,4 +1443,15 @@ mod kept_tests {
             }
         }
     }
+}
+
+/// LinuxCNC 2.9: a bare O word is a FANUC-style program's number, which `M98 P..` calls and
+/// `M99` closes (interp_read.cc `read_o`, bare O-word: the label is `read_integer_value`'s, a
+/// whole number of any size, signed or not, or a parameter or expression of one), no address
+/// of the classification's; one with a point (`O300.5`) is no whole number ("Non integer value
+/// for integer"), said as an address not classified as before.
+fn linuxcnc_program_number(family: crate::lex::Family, w: &Word<'_>) -> bool {
+    family == crate::lex::Family::LinuxCnc
+        && w.letter == b'O'
+        && (!w.expression.is_empty() || !w.number.contains(&b'.'))
 }
