@@ -6047,6 +6047,21 @@ mod tests {
                 [(3, 5)],
                 "{family:?}"
             );
+            // G91 after the selection runs from where the tool stands, which the selection
+            // moved in work coordinates: the span joins again (review 78-lcnc78b F1)
+            let g91 = "G90 G54 G00 X-450.\nG55\nG91 X1010.";
+            assert_eq!(
+                at(config.clone(), g91, Rule::TravelExceeded),
+                [(4, 5)],
+                "{family:?}"
+            );
+            // a position before the first selection, not judged: the span is kept (F3)
+            let start = "G90 G00 X-450.\nG54 X0\nG55 X560.";
+            assert_eq!(
+                at(config.clone(), start, Rule::TravelExceeded),
+                [(4, 5)],
+                "{family:?}"
+            );
             // a span already said is kept (said once)
             let said = "G90 G54 G00 X-450.\nG56 X560.\nG54 X-450.\nG55 X550.\nG54 X-450.";
             assert_eq!(
