@@ -2157,6 +2157,8 @@ WRITE_LOADED = [
     ("G55\n#5241=#1\nG0 X-650\nG54\nG55\nG0 X1000", 7, "2, 0.0000"),
     ("G54\nG0 X-650\nG55\nG91\nG0 X1650", 6, "2, 0.0000"),
     ("G54\nG0 X-650\nG91\nG55\nG0 X1650", 6, "2, 0.0000"),
+    # ... G91 restored by an M72 too (review 78-lcnc78b F4: rs274 runs X800 at machine 800)
+    ("G55\nG91\nM70\nG90\nG54\nG0 X-760\nG0 X0\nG55\nM72\nG0 X800", 11, "2, 0.0000"),
     # M72 restores the system M70 saved (SET_G5X_OFFSET(1) at the M72), before the block's
     # own G54-G59, which rs274 2.9.0 drops (`M72 G55` runs under G54)
     ("G54\nM70\nG55\nM72\nG0 X-700", None, "1, 0.0000"),

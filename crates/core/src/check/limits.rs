@@ -3399,6 +3399,11 @@ impl Checker {
             }
             moved = &[];
         }
+        // (a span set aside at a selection joins again under G91, however it came in force:
+        // an M72's restore, a call's; review 78-lcnc78b F4)
+        if self.spans_parked.is_some() && self.machine.state.incremental {
+            self.spans_unparked(ALL_PLACES);
+        }
         for &axis in moved {
             let Some((low, high)) = self.travel.of(axis) else {
                 continue;
