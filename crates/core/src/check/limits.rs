@@ -3399,11 +3399,6 @@ impl Checker {
             }
             moved = &[];
         }
-        // (a span set aside at a selection joins again under G91, however it came in force:
-        // an M72's restore, a call's; review 78-lcnc78b F4)
-        if self.spans_parked.is_some() && self.machine.state.incremental {
-            self.spans_unparked(ALL_PLACES);
-        }
         for &axis in moved {
             let Some((low, high)) = self.travel.of(axis) else {
                 continue;
@@ -3433,6 +3428,11 @@ impl Checker {
             let at = position.to_f64() * factor;
             if !self.config.work_offsets.is_empty() {
                 self.stats.travel_moves += 1;
+                // (a span set aside at a selection joins again under G91, however it came in
+                // force: an M72's restore, a call's; review 78-lcnc78b F4)
+                if self.spans_parked.is_some() && self.machine.state.incremental {
+                    self.spans_unparked(ALL_PLACES);
+                }
             }
             let offset = self.work.and_then(|work| {
                 self.config
