@@ -2140,6 +2140,25 @@ WRITE_LOADED = [
     ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1000", None, "2, -7620.0000"),
     ("G55\n#5241=300\nG0 X850\nG54\nG55\nG0 X-1000", None, "2, 7620.0000"),
     ("G55\n#5241=-300\nG0 X-650\nG54\nG55\nG0 X1100", 7, "2, -7620.0000"),
+    # ... nor across a plain selection of another system whose values are known: each
+    # position judged as a machine position (review 76-lcnc76b N3: -700 and 760, inside,
+    # was "X spans 1560"; a write of G55 under G54 loaded at its selection, -650 and 700);
+    # across G59.1, not known, it runs on
+    ("G54\nG0 X-700\nG55\nG0 X860", None, "2, 0.0000"),
+    ("G54\n#5241=-300\nG0 X-650\nG55\nG0 X1000", None, "2, -7620.0000"),
+    ("G54\nG0 X-700\nG55\nG0 X870", 5, "2, 0.0000"),
+    ("G54\nG0 X-700\nG59.1\nG0 X900", 5, "7, 0.0000"),
+    # ... nor where the span holds a position not judged as a machine position (in a
+    # condition, before the first selection), or a later one is not (a value not known
+    # loaded), or G91 runs on from the tool's place, which the selection changes in work
+    # coordinates (review 78-lcnc78b F1-F3: rs274 goes beyond in each)
+    ("G54\no1 if [#1 EQ 0]\nG0 X-1100\no1 endif\nG55\nG0 X700", 7, "2, 0.0000"),
+    ("G0 X-1100\nG54\nG0 X0\nG55\nG0 X700", 6, "2, 0.0000"),
+    ("G55\n#5241=#1\nG0 X-650\nG54\nG55\nG0 X1000", 7, "2, 0.0000"),
+    ("G54\nG0 X-650\nG55\nG91\nG0 X1650", 6, "2, 0.0000"),
+    ("G54\nG0 X-650\nG91\nG55\nG0 X1650", 6, "2, 0.0000"),
+    # ... G91 restored by an M72 too (review 78-lcnc78b F4: rs274 runs X800 at machine 800)
+    ("G55\nG91\nM70\nG90\nG54\nG0 X-760\nG0 X0\nG55\nM72\nG0 X800", 11, "2, 0.0000"),
     # M72 restores the system M70 saved (SET_G5X_OFFSET(1) at the M72), before the block's
     # own G54-G59, which rs274 2.9.0 drops (`M72 G55` runs under G54)
     ("G54\nM70\nG55\nM72\nG0 X-700", None, "1, 0.0000"),

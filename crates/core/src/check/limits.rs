@@ -570,6 +570,10 @@ impl Checker {
     /// writes, [`Written::moved`]; what a program the checker does not read does is not
     /// followed, as [`Checker::offsets_written`] says) or a jump.
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
+        self.span_unjudged = ALL_PLACES;
+        if self.spans_parked.is_some() {
+            self.spans_unparked(ALL_PLACES);
+        }
         self.work_unplaced = false;
         self.offsets_unread_only = false;
         if let Some(w) = self.work_call.as_mut() {
@@ -626,6 +630,11 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64, line: usize) {
+        // (the axes whose values are known under the system left: review 76-lcnc76b N3)
+        let left = match self.work {
+            Some(from) if from != g => self.selection_known(from),
+            _ => 0,
+        };
         let at_start = self.linuxcnc_at_start();
         self.linuxcnc_work_selected = true;
         if self.work != Some(g) && self.config.family == Family::LinuxCnc {
@@ -645,6 +654,142 @@ impl Checker {
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+        if left != 0 {
+            self.selection_spans(left);
+        }
+    }
+
+    /// The axes (their places' bits) of work system G`work` (54-59) whose positions are
+    /// judged as machine positions with a value known: the profile gives it and no write
+    /// made it not known, the offsets followed, no frame, program read apart or call's
+    /// offset between, Z under no tool length offset.
+    #[cold]
+    #[inline(never)]
+    fn selection_known(&self, work: i64) -> u16 {
+        if self.offsets_lost
+            || self.work_guessed.is_some()
+            || self.work_run_on
+            || self.work_call.is_some()
+            || self.early_on
+            || self.later_shift.is_some()
+            || self.open_definition.is_some()
+            || self.frames.on != 0
+            || self.frames.map.is_some()
+            || self.transformed.is_some()
+            || self.units_unknown
+            || self.offsets_written.moved
+            || !self.offsets_written.unread.is_empty()
+            // (under G91 the next increment runs from where the tool stands, which the
+            // selection changes in work coordinates; a lathe's U and W too: review
+            // 78-lcnc78b F1)
+            || self.machine.state.incremental
+            || self.config.modal.fanuc_lathe
+            || self.config.diameter
+        {
+            return 0;
+        }
+        let length = self.machine.state.length_offset != 49 || self.length_decimal;
+        let mut known = 0u16;
+        for i in crate::modal::places(self.travel.places()) {
+            let axis = AXES[i];
+            // (a span holding a position not judged as a machine position is kept: review
+            // 78-lcnc78b F2, F3, an `if`'s or the start's X-1100 then G54 / G57)
+            if axis == b'Z' && length
+                || self.offset_unknown(work, i)
+                || self.span_unjudged & 1 << i != 0
+            {
+                continue;
+            }
+            if self
+                .config
+                .work_offsets
+                .iter()
+                .any(|&(g, a, _)| g == work && a == axis)
+            {
+                known |= 1 << i;
+            }
+        }
+        known
+    }
+
+    /// A G54-G59 selected from another system, the values of both known on the axes
+    /// `axes` (their places' bits; [`Checker::selection_known`]): each position on them
+    /// under either is judged as a machine position, so the span of those axes (one not yet
+    /// said) is set aside and starts again: a span across the two, in work coordinates,
+    /// mixes positions of two offsets (review 76-lcnc76b N3: `G54` / `G0 X-650` / `G57` /
+    /// `G0 X1000` with G57 X -300 runs at -650 and 700, inside, and was "X spans 1650"; the
+    /// FANUC's and the LinuxCNC's alike). Within one system a span wider than the travel
+    /// still has a position beyond it, said as one. Where a later position is not judged so
+    /// (a system not known, offsets lost), the span set aside joins the one in hand again
+    /// ([`Checker::spans_unparked`]). Then the selection of a system not known.
+    #[cold]
+    #[inline(never)]
+    fn selection_spans(&mut self, axes: u16) {
+        let known = axes & self.work.map_or(0, |g| self.selection_known(g));
+        for i in crate::modal::places(u32::from(known)) {
+            let Some(span) = self.spans[i].filter(|s| !s.said) else {
+                continue;
+            };
+            // (set aside before and now together where they fit the travel, else the
+            // latest: positions of two systems known that together do not fit were each
+            // judged as machine positions)
+            let fits = self.span_fits(i, joined(parked_at(&self.spans_parked, i), span));
+            let parked = self.spans_parked.get_or_insert_with(Default::default);
+            parked[i] = Some(if fits { joined(parked[i], span) } else { span });
+            self.spans[i] = None;
+        }
+        if self.spans_parked.is_some() {
+            let unknown = !self.work.map_or(0, |g| self.selection_known(g));
+            self.spans_unparked(unknown);
+        }
+    }
+
+    /// A position of axis place `i` not judged as a machine position: the span set aside for
+    /// it joins the one in hand ([`Checker::spans_unparked`]).
+    #[inline]
+    fn position_not_judged(&mut self, i: usize) {
+        self.span_unjudged |= 1 << i;
+        if self.spans_parked.is_some() {
+            self.spans_unparked(1 << i);
+        }
+    }
+
+    /// Whether `span` of axis place `i` fits its travel.
+    fn span_fits(&self, i: usize, span: Span) -> bool {
+        self.travel
+            .of_place(i)
+            .is_some_and(|(low, high)| span.most - span.least <= (high - low) + 1e-9)
+    }
+
+    /// The spans set aside at selections ([`Checker::selection_spans`]) of the axes `axes`
+    /// join the ones in hand again, from here where positions are not judged as machine
+    /// positions (the chain of positions main held in one span, erring on the side of the
+    /// alarm: `G55` / `#5241=#1` / `G0 X-650` / `G54` / `G55` / `G0 X1000` loads a value not
+    /// known, and X1000 is judged in the span from -650, as before) -- where the two fit the
+    /// travel together: where they do not, every position of them was judged as a machine
+    /// position, and only the span in hand is kept.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn spans_unparked(&mut self, axes: u16) {
+        if self.early_on || self.later_shift.is_some() || self.frames.on != 0 {
+            return;
+        }
+        let Some(mut parked) = self.spans_parked.take() else {
+            return;
+        };
+        for i in crate::modal::places(u32::from(axes & ALL_PLACES)) {
+            let Some(aside) = parked[i].take() else {
+                continue;
+            };
+            let both = joined(self.spans[i], aside);
+            let said = self.spans[i].is_some_and(|s| s.said);
+            if said || self.span_fits(i, both) {
+                self.spans[i] = Some(Span { said, ..both });
+            }
+        }
+        if parked.iter().any(Option::is_some) {
+            self.spans_parked = Some(parked);
+        }
     }
 
     /// The program in hand ends (the next begins, or the file): where it left a shift on
@@ -1510,6 +1655,9 @@ impl Checker {
             }
             match v.trunc() {
                 49 => self.length_decimal = false,
+                // (G91: the spans set aside at a selection join again, the increments from
+                // a work position the selection changed; review 78-lcnc78b F1)
+                91 if self.spans_parked.is_some() => self.spans_unparked(ALL_PLACES),
                 10 => {
                     let writes = self.g10_writes(b);
                     self.offsets_written.then(&writes);
@@ -2676,6 +2824,10 @@ impl Checker {
         }
         let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
         self.spans[i] = None;
+        self.span_unjudged &= !(1 << i);
+        if let Some(parked) = self.spans_parked.as_mut() {
+            parked[i] = None;
+        }
         self.shifts.total[i] = 0.0;
         if local_lost {
             self.shifts.local[i] = 0.0;
@@ -3150,6 +3302,23 @@ fn uw_column(facts: &Facts<'_>, letter: u8) -> usize {
     }
 }
 
+/// Every axis place's bit (the spans' nine).
+const ALL_PLACES: u16 = (1 << 9) - 1;
+
+/// The span of the positions of `a` (where there are some) and `b`.
+fn joined(a: Option<Span>, b: Span) -> Span {
+    a.map_or(b, |a| Span {
+        least: a.least.min(b.least),
+        most: a.most.max(b.most),
+        said: a.said || b.said,
+    })
+}
+
+/// The span of axis place `i` set aside ([`Checker::selection_spans`]).
+fn parked_at(parked: &Option<Box<[Option<Span>; 9]>>, i: usize) -> Option<Span> {
+    parked.as_ref().and_then(|p| p[i])
+}
+
 impl Checker {
     /// The walk of [`Checker::limits`]: the positions of the block's moved axes (`moved`, at
     /// `places`) to their spans and, where the offsets are known, to the travel; `uw` where
@@ -3259,6 +3428,11 @@ impl Checker {
             let at = position.to_f64() * factor;
             if !self.config.work_offsets.is_empty() {
                 self.stats.travel_moves += 1;
+                // (a span set aside at a selection joins again under G91, however it came in
+                // force: an M72's restore, a call's; review 78-lcnc78b F4)
+                if self.spans_parked.is_some() && self.machine.state.incremental {
+                    self.spans_unparked(ALL_PLACES);
+                }
             }
             let offset = self.work.and_then(|work| {
                 self.config
@@ -3271,10 +3445,14 @@ impl Checker {
                 axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
             let mut said_outside = false;
             match (absolute, self.work, offset) {
-                (true, Some(_), Some(_)) if length => self.travel_not(
-                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
-                        .into(),
-                ),
+                (true, Some(_), Some(_)) if length => {
+                    self.position_not_judged(i);
+                    self.travel_not(
+                        "Z while a tool length offset was in force (the profile gives no tool \
+                         lengths)"
+                            .into(),
+                    )
+                }
                 (true, Some(work), Some(offset))
                     if !self.offsets_written.any() && self.work_call.is_none() =>
                 {
@@ -3333,11 +3511,15 @@ impl Checker {
                         (line, col(axis)),
                     );
                 }
-                (true, Some(work), None) => self.travel_not(format!(
-                    "{} under G{work}: the profile gives no G{work} {}",
-                    axis as char, axis as char
-                )),
+                (true, Some(work), None) => {
+                    self.position_not_judged(i);
+                    self.travel_not(format!(
+                        "{} under G{work}: the profile gives no G{work} {}",
+                        axis as char, axis as char
+                    ))
+                }
                 (true, None, _) => {
+                    self.position_not_judged(i);
                     if self.work_unplaced {
                         self.unplaced_at(i, at, line);
                     }
@@ -3793,6 +3975,7 @@ impl Checker {
         (line, column): (usize, usize),
     ) -> bool {
         if self.offset_unknown(work, i) {
+            self.position_not_judged(i);
             if let Some(said) =
                 self.offset_either((axis, i), at, (work, offset), (low, high), (line, column))
             {
@@ -5933,6 +6116,59 @@ mod tests {
         // after G10 the profile's offsets are not known to be in force
         let lost = "G10 L2 P1 X0\nG54 G00 X-400.";
         assert_eq!(at(with_offsets(), lost, Rule::TravelExceeded), []);
+    }
+
+    /// A span does not run across a selection of another work system where both systems'
+    /// values are known: each position is judged as a machine position there (review
+    /// 76-lcnc76b N3: `G54` / `G0 X-650` / `G57` / `G0 X1000` with G57 X -300 runs at -650
+    /// and 700, inside, and was "X spans 1650"); it does across one not known.
+    #[test]
+    fn a_span_starts_again_at_a_selection_of_another_known_system() {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        for family in [Family::MacroB, Family::LinuxCnc] {
+            let mut config = of_family(family);
+            config.facts.work_offsets = vec![
+                (54, b'X', dec("0")),
+                (55, b'X', dec("-300")),
+                (55, b'Y', dec("0")),
+            ];
+            // travel X -500..500: -450 under G54 and 550 under G55 (250 on the machine)
+            let across = "G90 G54 G00 X-450.\nG55 X550.";
+            assert_eq!(
+                at(config.clone(), across, Rule::TravelExceeded),
+                [],
+                "{family:?}"
+            );
+            // G56, which the profile does not give: the span runs on across it
+            let unknown = "G90 G54 G00 X-450.\nG56 X560.";
+            assert_eq!(
+                at(config.clone(), unknown, Rule::TravelExceeded),
+                [(3, 5)],
+                "{family:?}"
+            );
+            // G91 after the selection runs from where the tool stands, which the selection
+            // moved in work coordinates: the span joins again (review 78-lcnc78b F1)
+            let g91 = "G90 G54 G00 X-450.\nG55\nG91 X1010.";
+            assert_eq!(
+                at(config.clone(), g91, Rule::TravelExceeded),
+                [(4, 5)],
+                "{family:?}"
+            );
+            // a position before the first selection, not judged: the span is kept (F3)
+            let start = "G90 G00 X-450.\nG54 X0\nG55 X560.";
+            assert_eq!(
+                at(config.clone(), start, Rule::TravelExceeded),
+                [(4, 5)],
+                "{family:?}"
+            );
+            // a span already said is kept (said once)
+            let said = "G90 G54 G00 X-450.\nG56 X560.\nG54 X-450.\nG55 X550.\nG54 X-450.";
+            assert_eq!(
+                at(config, said, Rule::TravelExceeded),
+                [(3, 5)],
+                "{family:?}"
+            );
+        }
     }
 
     #[test]

@@ -1053,6 +1053,13 @@ pub struct Checker {
     percent_closed: bool,
     /// The span of the program's positions per axis (TG601).
     spans: [Option<Span>; 9],
+    /// The spans set aside at a selection of another work system whose values are known
+    /// (limits.rs, `selection_spans`), joined again where a later position is not judged
+    /// as a machine position.
+    spans_parked: Option<Box<[Option<Span>; 9]>>,
+    /// The axes (their places' bits) whose span holds a position not judged as a machine
+    /// position since it last started (limits.rs, `position_not_judged`).
+    span_unjudged: u16,
     /// The first word without a point that looked wrong (TG201).
     first_implicit: Option<Implicit>,
     g06_open: Option<usize>,
@@ -1892,6 +1899,8 @@ impl Checker {
             colons: Colons::default(),
             percent_closed: false,
             spans: [None; 9],
+            spans_parked: None,
+            span_unjudged: 0,
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
