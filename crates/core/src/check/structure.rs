@@ -449,15 +449,21 @@ impl Checker {
             if surely && self.config.family == Family::MacroB && number < LOCAL_BODY {
                 self.later_shift_called(number);
             }
-            // (a program not read yet: what it writes is known at the file's end)
-            let unread = super::limits::Written {
-                unread: vec![number],
-                ..Default::default()
-            };
-            self.call_unread_here = true;
-            self.offsets_written.then(&unread);
-            self.offset_writer(&unread, false);
+            self.call_of_unread(number);
         }
+    }
+
+    /// A call of the program `key`, not read yet: what it writes is known where its lines
+    /// are read, at the file's end (a G54-G59 of the main's own after the call judged, held
+    /// to then: [`Checker::work_unread_reselected`]).
+    fn call_of_unread(&mut self, key: i64) {
+        let unread = super::limits::Written {
+            unread: vec![key],
+            ..Default::default()
+        };
+        self.call_unread_here = true;
+        self.offsets_written.then(&unread);
+        self.offset_writer(&unread, false);
     }
 
     /// A Haas's M97 (`M97 P1000`: the blocks of the program in hand from its N1000 to an M99,
@@ -2075,16 +2081,7 @@ impl Checker {
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
-        // (what it writes is known where its lines are read: a G54-G59 of the main's own
-        // after the call judged, held to the file's end, as after a FANUC's M98 of a
-        // program written later; Checker::work_unread_reselected)
-        let unread = super::limits::Written {
-            unread: vec![key],
-            ..Default::default()
-        };
-        self.call_unread_here = true;
-        self.offsets_written.then(&unread);
-        self.offset_writer(&unread, false);
+        self.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
         self.call_units_seen(key);
     }
 
