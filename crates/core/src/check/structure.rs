@@ -285,6 +285,7 @@ impl Checker {
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
+        self.flow_ended(true);
         self.passage_ended(None);
         self.no_feed_target = 0;
         self.targets_ended();
@@ -462,6 +463,7 @@ impl Checker {
             ..Default::default()
         };
         self.call_unread_here = true;
+        self.flow_unread(key);
         self.offsets_written.then(&unread);
         self.offset_writer(&unread, false);
     }
@@ -492,6 +494,7 @@ impl Checker {
             return;
         };
         self.local_called = true;
+        self.flow_unread(key);
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
@@ -727,6 +730,7 @@ impl Checker {
             .iter()
             .enumerate()
             .any(|(i, w)| w.letter == b'G' && !self.readable[i].is_some_and(|v| v.eq_int(65)));
+        let q_entry = self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q');
         let known = self.work.filter(|_| {
             !self.offsets_lost
                 && !other_g
@@ -740,13 +744,25 @@ impl Checker {
                 && !self.sub_ended
                 // (`M98 P2000 Q10` enters the body at its N10, not at its first block: 0i-F
                 // Operator's Manual, "Subprogram call (M98)"; review 61a F12)
-                && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
+                && !q_entry
         });
         // a G66 makes no call here: it registers the macro, run after each later block that
         // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
         // "Modal call: G66"), or never (review 61a F9: `G66 P2000` / `G54` / `G0 X10.` /
         // `G67`, its body after M30 was judged under G55)
         let modal = self.values.gs().contains(&66);
+        // (after the main program's first jump or inside a loop: callflow.rs)
+        let known = match known {
+            None if self.flow_calls.is_some()
+                && !other_g
+                && !modal
+                && !q_entry
+                && !self.sub_ended =>
+            {
+                self.flow_call_work(number)
+            }
+            known => known,
+        };
         // (a caller read apart in units only assumed: its call's units are its own caller's
         // where it returns, review 61a F11; the reset state's where it ends as a main
         // program, F7: `O1000` / `G10 L2 P2 X-200.` / `G55` / `M98 P3000` / `M30`)
