@@ -633,6 +633,20 @@ LATER_BODY = " / O2000 / G0 X-700. / M99"
     # next pass: nothing)
     (MAIN + LOOP + "M98 P3000 / #1=#1+1 / END1 / M30" + LATER_BODY + " / O3000 / "
      "G10 L2 P2 X0. / M99", []),
+    # (the call reached only by a jump back from after the M30, past a G54 there: it runs
+    # once, under G54, -700, inside; review 79-calls79 F1)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / GOTO 20 / N10 M98 P2000 / M30 / N20 G54 / "
+     "GOTO 10 / M30" + LATER_BODY, []),
+    # (`G#2`, #2 = 54, in the loop: a G code not known after the jump; review 79-calls79 F2)
+    (MAIN + "#2=54 / WHILE [#1 LT 2] DO1 / G#2 / M98 P2000 / #1=#1+1 / END1 / M30"
+     + LATER_BODY, []),
+    # (a loop the known values never enter, and an `IF .. THEN` that may select: nothing;
+    # review 79-calls79 F3)
+    (MAIN.replace("#1=0", "#1=5") + LOOP + "#1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + "IF [#3 EQ 1] THEN G54 / M98 P2000 / M30" + LATER_BODY, []),
+    # (a local variable's assignment by THEN changes no offset: said)
+    (MAIN + LOOP + "IF [#1 EQ 0] THEN #2=1 / #1=#1+1 / END1 / M30" + LATER_BODY,
+     [(13, "X goes to -800")]),
     # (a jump back to a call before the selection: the first pass under G54, -700, inside;
     # the jump's passes under G55 are not judged, nothing said)
     ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / #1=0 / N10 M98 P2000 / G55 / #1=#1+1 / "
@@ -671,3 +685,14 @@ def test_a_haas_local_call_after_a_jump_or_in_a_loop(haas: str, blocks: str,
                                                     expected: list[tuple[int, str]]) -> None:
     got = said(LOCAL + blocks, haas)
     assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+def test_a_g53_position_of_a_body_in_a_loop_is_said_whatever_the_offset(fanuc: str) -> None:
+    """Review 79-calls79 F4: `G53 G0 X-800.` runs at machine -800 at every pass whatever the
+    loop's G54 after the call does: said at the call as before, only the positions judged
+    through the offset are held."""
+    text = ("O2000 / G53 G0 X-800. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / #1=0 / "
+            "WHILE [#1 LT 2] DO1 / M98 P2000 / G54 / #1=#1+1 / END1 / M30")
+    got = said(text, fanuc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
+        [(9, "X goes to -800")]

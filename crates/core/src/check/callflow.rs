@@ -30,8 +30,9 @@
 //! "WHILE [conditional expression] DO m ... END m": the blocks between run while the
 //! condition holds; the offsets modal), said at line 6.
 
-use super::Checker;
+use super::{BlockView, Checker};
 use crate::lex::Family;
+use crate::statement::Kind;
 
 /// Among a finding's [`super::Finding::pending_on`]: a finding of a body read before the main
 /// program, judged at a call after a jump or inside a loop under the offset in force at the
@@ -68,7 +69,7 @@ impl Checker {
     /// kept for the calls after it.
     #[cold]
     #[inline(never)]
-    pub(super) fn flow_rewritten(&mut self, line: usize, calls: bool, unread: bool) {
+    pub(super) fn flow_rewritten(&mut self, line: usize, calls: bool, unread: bool, never: bool) {
         let why = "a jump or call the checker does not follow";
         let unread = unread
             || self
@@ -81,18 +82,55 @@ impl Checker {
         }
         let kept = self.flow_calls.take();
         let (codes, units) = (self.machine.distance_codes, self.machine.units_codes);
+        // (a jump surely taken or a loop never entered: the blocks after it, its calls
+        // among them, may never run)
         let kept = match kept {
             // (a G90/G91 or units code since the first jump: a jump back or a loop's end
             // brings it to the calls before it)
             Some(mut k) => {
-                k.spoiled |= k.codes != codes || k.units != units;
+                k.spoiled |= k.codes != codes || k.units != units || never;
                 Some(k)
             }
-            None if !calls => self.flow_begun().map(Box::new),
+            None if !calls && !never => self.flow_begun().map(Box::new),
             None => None,
         };
         self.offsets_rewritten(line, why);
         self.flow_calls = kept;
+    }
+
+    /// A jump whose condition is known true or that has none (`GOTO 10`, `IF [#1 EQ 1]
+    /// GOTO 10` after `#1=1`), or a `WHILE` whose condition is known false: the blocks after
+    /// it are not surely run (a call among them may never be made). Or an `IF [..] THEN`
+    /// of anything but a local or common variable's assignment.
+    pub(super) fn flow_never(&self, b: &BlockView<'_>) -> bool {
+        if self.config.family != Family::MacroB || self.config.work_offsets.is_empty() {
+            return false;
+        }
+        b.statements.iter().any(|&(_, kind, text)| {
+            if kind != Kind::Flow {
+                return false;
+            }
+            let upper = text.to_ascii_uppercase();
+            let t = upper.trim_ascii_start();
+            // (`IF [..] THEN` and what follows: where that is not an assignment of a local or
+            // common variable, `THEN G54`, it may select or set anything)
+            if let Some(at) = t.windows(4).position(|w| w == b"THEN") {
+                let then = t[at + 4..].trim_ascii_start();
+                let Some(rest) = then.strip_prefix(b"#") else {
+                    return true;
+                };
+                let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+                let number = crate::text::digits_value(&rest[..digits]);
+                return !(number.is_some_and(|n| n < 1000)
+                    && rest[digits..].trim_ascii_start().starts_with(b"="));
+            }
+            if let Some(rest) = t.strip_prefix(b"WHILE") {
+                let condition = [b"IF".as_slice(), rest].concat();
+                return self.condition_known(&condition) == Some(false);
+            }
+            super::targets::goto_words(&upper).is_some()
+                && (!t.starts_with(b"IF") || self.condition_known(&upper) == Some(true))
+        })
     }
 
     /// The state kept at the first jump, where it is known.
@@ -139,6 +177,13 @@ impl Checker {
         }
     }
 
+    /// A G code whose value is not known after the jump: it may select or set anything.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn flow_g_unknown(&mut self) {
+        self.flow_spoiled();
+    }
+
     /// A call after the jump left the caller's G90/G91 not known.
     pub(super) fn flow_modes_lost(&mut self) {
         if let Some(f) = self.flow_calls.as_mut() {
@@ -152,6 +197,7 @@ impl Checker {
         let f = self.flow_calls.as_ref()?;
         (self.offsets_lost
             && !f.spoiled
+            && self.passed.is_none()
             && !self.early_on
             && f.codes == self.machine.distance_codes
             && f.units == self.machine.units_codes
@@ -185,9 +231,13 @@ impl Checker {
         self.work = work;
         let mut any = false;
         let from = from.min(self.found.len());
+        // (only the positions judged through the offset: a G53 position, a span, are where
+        // they are whatever the offset, and said as before; review 79-calls79 F4)
         for f in &mut self.found[from..] {
-            f.pending_on.push(PENDING_FLOW);
-            any = true;
+            if matches!(f.placed, super::Placed::Offset { .. }) {
+                f.pending_on.push(PENDING_FLOW);
+                any = true;
+            }
         }
         if let Some(f) = self.flow_calls.as_mut() {
             f.held |= any;
@@ -218,13 +268,13 @@ impl Checker {
     /// said or dropped.
     #[cold]
     #[inline(never)]
-    pub(super) fn flow_ended(&mut self, returned: bool) {
+    pub(super) fn flow_ended(&mut self) {
         let Some(f) = self.flow_calls.take() else {
             return;
         };
         // (a code after the last jump or loop reaches no call: the counts were compared at
         // each jump and call; the end's reset codes come before this)
-        let clean = !f.spoiled && !returned;
+        let clean = !f.spoiled;
         let early = clean && !f.modes_lost && f.unread.is_empty();
         if f.held {
             if early {

@@ -1637,7 +1637,13 @@ impl Checker {
         };
         for (i, w) in g_words.iter().enumerate() {
             // (the letter before the value: a 32-byte `Option<Dec>` read for a G word only)
-            let Some(v) = (w.letter == b'G').then(|| self.readable[i]).flatten() else {
+            if w.letter != b'G' {
+                continue;
+            }
+            let Some(v) = self.readable[i] else {
+                // (a G code not known here, `G#2`, `G[54]` after the parameters were
+                // forgotten: it may select or set anything; callflow.rs)
+                self.flow_g_unknown();
                 continue;
             };
             if !v.is_whole() {

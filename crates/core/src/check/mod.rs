@@ -482,6 +482,8 @@ macro_rules! statements_only_block {
             $s.system_variables($b);
         }
         if $s.statements($b, None) {
+            // (before the parameters are forgotten: callflow.rs)
+            let never = $s.flow_never($b);
             $s.forget_at_jump($b, false);
             // (a conditional jump forward changes no parameter where it is not taken)
             if !$s.jump_keeps_params($b) {
@@ -508,7 +510,7 @@ macro_rules! statements_only_block {
                 // only its writes, known there)
                 let unread_here = std::mem::take(&mut $s.call_unread_here);
                 let unread_only = unread_here && (!$s.offsets_lost || $s.offsets_unread_only);
-                $s.flow_rewritten($b.line, false, unread_here);
+                $s.flow_rewritten($b.line, false, unread_here, never);
                 $s.offsets_unread_only = unread_only;
             }
         }
@@ -3064,6 +3066,7 @@ impl Checker {
             self.call_made(b);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
+            let never = !calls && self.flow_never(b);
             self.forget_at_jump(b, calls);
             // (a conditional jump forward changes no parameter where it is not taken)
             if calls || !self.jump_keeps_params(b) {
@@ -3085,7 +3088,7 @@ impl Checker {
             if !std::mem::take(&mut self.call_keeps) {
                 let unread_here = std::mem::take(&mut self.call_unread_here);
                 let unread_only = unread_here && (!self.offsets_lost || self.offsets_unread_only);
-                self.flow_rewritten(b.line, calls, unread_here);
+                self.flow_rewritten(b.line, calls, unread_here, never);
                 self.offsets_unread_only = unread_only;
             }
         }
@@ -3380,6 +3383,7 @@ impl Checker {
             );
             self.report(Rule::DataModeNotClosed, message, opened, 1);
         }
+        self.flow_ended();
         self.part_ended(false);
         self.early_finish();
         self.after_end();

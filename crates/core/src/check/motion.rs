@@ -286,8 +286,9 @@ impl Checker {
     /// findings are dropped, else (M02/M30, the end of the file: a main program, which the
     /// control alarms on) they are said.
     pub(super) fn part_ended(&mut self, returned: bool) {
-        if self.flow_calls.is_some() && !self.early_on {
-            self.flow_ended(returned);
+        // (a main program that returns runs again from its start: callflow.rs)
+        if returned && !self.early_on {
+            self.flow_spoiled();
         }
         if returned {
             self.feed_pending.clear();

@@ -285,7 +285,7 @@ impl Checker {
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
-        self.flow_ended(true);
+        self.flow_ended();
         self.passage_ended(None);
         self.no_feed_target = 0;
         self.targets_ended();
@@ -514,6 +514,8 @@ impl Checker {
         if !self.split.follows_end() || self.early_on {
             return;
         }
+        // (the main program's blocks are all read: callflow.rs)
+        self.flow_ended();
         let Some(p) = b
             .words
             .first()
