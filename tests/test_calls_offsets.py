@@ -696,3 +696,25 @@ def test_a_g53_position_of_a_body_in_a_loop_is_said_whatever_the_offset(fanuc: s
     got = said(text, fanuc)
     assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
         [(9, "X goes to -800")]
+
+
+def test_a_third_call_runs_in_the_units_the_second_leaves(fanuc: str, tmp_path: Path) -> None:
+    """Review 78-calls78 F6: the caller's units code before the second call makes that call's
+    units its own, not the third's: O2000 leaves G20 after the second call, and with no units
+    code of the caller's before the third (G56) it runs `X-29.` in inches, -736.6 mm, machine
+    -736.6 - 200 = -936.6 (the G55 call in the caller's G21: -129, inside)."""
+    got = said("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G21 G55 / M98 P2000 / G56 / "
+               "M98 P2000 / M30 / O2000 / G0 X-29. / G20 / M99", fanuc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
+        [(11, "X goes to -936.6")]
+    # (the Haas mirror, inches, G55 and G56 X-4: N100 leaves G21; the G56 call runs X-27. in
+    # millimetres, -1.06 in, machine -5.06, inside; the G55 call, after the main's G20, -31)
+    profile = tmp_path / "woh3.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
+                       'Y = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n[work_offsets]\n'
+                       'G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\nG55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n'
+                       'G56 = { X = -4.0, Y = 0.0, Z = 0.0 }\n')
+    got = said("O1000 / G20 G17 G90 G54 / G0 X0 Y0 / M97 P100 / G20 G55 / M97 P100 / G56 / "
+               "M97 P100 / M30 / N100 G0 X-27. / G21 / M99", str(profile))
+    assert [(line, msg.split("(work ")[1].split(")")[0]) for line, _, msg in got] == \
+        [(10, "-27 + G55 offset -4.0")]

@@ -897,6 +897,13 @@ impl Checker {
                 let same_by_self = matches!((&*before, &here), (Some(a), Some(b))
                     if a.work == b.work && b.mode_by_self && a.length == b.length
                         && own(&a.written) && own(&b.written));
+                // (the units codes counted at the call before this one: a units code of the
+                // caller's since then, not since the first, makes this call's its own;
+                // review 78-calls78 F6)
+                let previous = before.as_ref().map(|a| a.units_codes);
+                if let (Some(a), Some(b)) = (before.as_mut(), &here) {
+                    a.units_codes = b.units_codes;
+                }
                 match (before.as_mut(), &here) {
                     (Some(a), Some(b)) if same || same_by_self => {
                         // (calls beyond the travel on different sides: the body's first
@@ -914,7 +921,7 @@ impl Checker {
                                 || number >= LOCAL_BODY;
                             // (no units code of the caller's since the first call: it
                             // runs in the units the body leaves, callmode::Rescale)
-                            let left = a.units_codes == b.units_codes;
+                            let left = previous == Some(b.units_codes);
                             a.others.push((
                                 b.work,
                                 b.call.clone(),
@@ -7694,7 +7701,8 @@ pub(super) struct CallWork {
     /// and where each axis was outside at it. The body's positions are judged under each
     /// of these too (one subprogram called once a fixture, under G54, G55, G56...).
     others: Vec<Other>,
-    /// The machine's count of units codes at the call.
+    /// The machine's count of units codes at the call (kept for the first: at the last
+    /// call made, [`Checker::call_work_kept`]).
     units_codes: u32,
 }
 
