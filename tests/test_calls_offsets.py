@@ -680,6 +680,12 @@ def test_a_body_read_before_called_in_a_loop_that_changes_the_offset_is_not_judg
      "M99 / %", []),
     # (the jump passes over a G54: not known at the call)
     ("G55 / IF [#1 EQ 1] GOTO 10 / G54 / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / %", []),
+    # (a G54 after M30 that a jump reaches before the call: -29 there, -33 on the other path;
+    # review 79-calls79 F5)
+    ("G55 / IF [#500 EQ 1] GOTO 20 / N10 M97 P1000 / M30 / N20 G54 / GOTO 10 / "
+     "N1000 G0 X-29. / M99 / %", []),
+    ("G55 / IF [#500 EQ 1] GOTO 20 / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / "
+     "N20 G54 / GOTO 10 / %", []),
 ])
 def test_a_haas_local_call_after_a_jump_or_in_a_loop(haas: str, blocks: str,
                                                     expected: list[tuple[int, str]]) -> None:

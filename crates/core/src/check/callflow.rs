@@ -128,8 +128,12 @@ impl Checker {
                 let condition = [b"IF".as_slice(), rest].concat();
                 return self.condition_known(&condition) == Some(false);
             }
-            super::targets::goto_words(&upper).is_some()
-                && (!t.starts_with(b"IF") || self.condition_known(&upper) == Some(true))
+            // (`GOTO #1`: a target not known, any block)
+            super::targets::goto_words(&upper).is_some_and(|(_, digits, _)| {
+                digits.is_empty()
+                    || !t.starts_with(b"IF")
+                    || self.condition_known(&upper) == Some(true)
+            })
         })
     }
 

@@ -514,8 +514,6 @@ impl Checker {
         if !self.split.follows_end() || self.early_on {
             return;
         }
-        // (the main program's blocks are all read: callflow.rs)
-        self.flow_ended();
         let Some(p) = b
             .words
             .first()
@@ -533,6 +531,9 @@ impl Checker {
         let Some(key) = local_key(main, p).filter(|k| self.call_works.contains_key(k)) else {
             return;
         };
+        // (the main program's blocks are all read, those after its M30 a jump may reach
+        // among them: callflow.rs; review 79-calls79 F5)
+        self.flow_ended();
         // (the body before it, run on into: its end)
         if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
             self.local_body_end();
