@@ -592,3 +592,135 @@ def test_a_later_definition_s_second_call_runs_in_the_units_it_leaves(lcnc: str)
                "o100 endsub", lcnc)
     assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
         [(8, "X goes to -7720")]
+
+
+# Issue 32 item 4, calls after a jump or inside a loop (callflow.rs): FANUC Custom Macro B,
+# "WHILE [conditional expression] DO m ... END m" runs the blocks between while the
+# condition holds, "IF [conditional expression] GOTO n" jumps where it holds; the offsets and
+# G90/G91, G20/G21 are modal, so where nothing after the first jump changes them, every pass
+# and every path reaches the call under the offset in force at the jump.
+MAIN = "O1000 / G21 G17 G90 G54 / G0 X0 Y0 / G55 / #1=0 / "
+LOOP = "WHILE [#1 LT 3] DO1 / M98 P2000 / "
+LATER_BODY = " / O2000 / G0 X-700. / M99"
+
+
+@pytest.mark.parametrize("text, expected", [
+    # (a body read after the main, called in a loop: each pass runs X-700. under G55, machine
+    # -700 - 100 = -800; said at the body's line, naming the call of line 7)
+    (MAIN + LOOP + "#1=#1+1 / END1 / M30" + LATER_BODY, [(12, "X goes to -800")]),
+    # (read before the main: said at the call, line 10)
+    (BODY.replace("G0 X0 Y0 / ", "G0 X0 Y0 / G55 / #1=0 / ") + LOOP + "#1=#1+1 / END1 / M30",
+     [(10, "X goes to -800")]),
+    # (after a conditional jump forward over a block that changes nothing: both paths reach
+    # the call under G55)
+    (MAIN + "IF [#1 EQ 1] GOTO 10 / G0 Y1. / N10 M98 P2000 / M30" + LATER_BODY,
+     [(11, "X goes to -800")]),
+    # (under G54 the same body runs at -700, inside: nothing)
+    (MAIN.replace("G55", "G54") + LOOP + "#1=#1+1 / END1 / M30" + LATER_BODY, []),
+    # (the jump passes over a G54: one path reaches the call under G54 (-700), the other
+    # under G55 (-800); not known there, nothing said)
+    (MAIN + "IF [#1 EQ 1] GOTO 10 / G54 / N10 M98 P2000 / M30" + LATER_BODY, []),
+    # (a selection, a G10, a work offset variable, a G91, a G20, a G52, a G43 after the call
+    # inside the loop: the next pass runs under another offset or mode; nothing said)
+    (MAIN + LOOP + "G56 / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + LOOP + "G10 L2 P2 X0. / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + LOOP + "#5241=0 / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + LOOP + "G91 G0 X1. / G90 / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + LOOP + "G20 / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + LOOP + "G52 X50. / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + LOOP + "G43 H1 Z0. / #1=#1+1 / END1 / M30" + LATER_BODY, []),
+    # (a second body read later in the loop may change what the first runs under at its
+    # next pass: nothing)
+    (MAIN + LOOP + "M98 P3000 / #1=#1+1 / END1 / M30" + LATER_BODY + " / O3000 / "
+     "G10 L2 P2 X0. / M99", []),
+    # (the call reached only by a jump back from after the M30, past a G54 there: it runs
+    # once, under G54, -700, inside; review 79-calls79 F1)
+    ("O1000 / G21 G17 G90 G55 / G0 X0 Y0 / GOTO 20 / N10 M98 P2000 / M30 / N20 G54 / "
+     "GOTO 10 / M30" + LATER_BODY, []),
+    # (`G#2`, #2 = 54, in the loop: a G code not known after the jump; review 79-calls79 F2)
+    (MAIN + "#2=54 / WHILE [#1 LT 2] DO1 / G#2 / M98 P2000 / #1=#1+1 / END1 / M30"
+     + LATER_BODY, []),
+    # (a loop the known values never enter, and an `IF .. THEN` that may select: nothing;
+    # review 79-calls79 F3)
+    (MAIN.replace("#1=0", "#1=5") + LOOP + "#1=#1+1 / END1 / M30" + LATER_BODY, []),
+    (MAIN + "IF [#3 EQ 1] THEN G54 / M98 P2000 / M30" + LATER_BODY, []),
+    # (a local variable's assignment by THEN changes no offset: said)
+    (MAIN + LOOP + "IF [#1 EQ 0] THEN #2=1 / #1=#1+1 / END1 / M30" + LATER_BODY,
+     [(13, "X goes to -800")]),
+    # (a jump back to a call before the selection: the first pass under G54, -700, inside;
+    # the jump's passes under G55 are not judged, nothing said)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / #1=0 / N10 M98 P2000 / G55 / #1=#1+1 / "
+     "IF [#1 LT 3] GOTO 10 / M30" + LATER_BODY, []),
+])
+def test_a_call_after_a_jump_or_in_a_loop_is_judged_where_every_path_agrees(
+        fanuc: str, text: str, expected: list[tuple[int, str]]) -> None:
+    got = said(text, fanuc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+def test_a_body_read_before_called_in_a_loop_that_changes_the_offset_is_not_judged(
+        fanuc: str) -> None:
+    """A body read before, held at its call in the loop, is dropped at the main's end where
+    the loop's G10 after the call changes what its next pass runs under."""
+    text = (BODY.replace("G0 X0 Y0 / ", "G0 X0 Y0 / G55 / #1=0 / ") + LOOP
+            + "G10 L2 P2 X0. / #1=#1+1 / END1 / M30")
+    assert said(text, fanuc) == []
+
+
+@pytest.mark.parametrize("blocks, expected", [
+    # (Haas Mill Operator's Manual, M97 and the macros' WHILE/DO/END, IF/GOTO: each pass of the
+    # loop runs N1000's X-29. under G55, machine -29 - 4 = -33)
+    ("G55 / #1=0 / WHILE [#1 LT 3] DO1 / M97 P1000 / #1=#1+1 / END1 / M30 / N1000 G0 X-29. / "
+     "M99 / %", [(12, "X goes to -33")]),
+    ("G55 / IF [#1 EQ 1] GOTO 10 / G0 Y1. / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / %",
+     [(10, "X goes to -33")]),
+    # (a G55 after the call in the loop: the first pass under G54 (-29, inside), the next
+    # under G55; nothing said)
+    ("#1=0 / WHILE [#1 LT 3] DO1 / M97 P1000 / G55 / #1=#1+1 / END1 / M30 / N1000 G0 X-29. / "
+     "M99 / %", []),
+    # (the jump passes over a G54: not known at the call)
+    ("G55 / IF [#1 EQ 1] GOTO 10 / G54 / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / %", []),
+    # (a G54 after M30 that a jump reaches before the call: -29 there, -33 on the other path;
+    # review 79-calls79 F5)
+    ("G55 / IF [#500 EQ 1] GOTO 20 / N10 M97 P1000 / M30 / N20 G54 / GOTO 10 / "
+     "N1000 G0 X-29. / M99 / %", []),
+    ("G55 / IF [#500 EQ 1] GOTO 20 / N10 M97 P1000 / M30 / N1000 G0 X-29. / M99 / "
+     "N20 G54 / GOTO 10 / %", []),
+])
+def test_a_haas_local_call_after_a_jump_or_in_a_loop(haas: str, blocks: str,
+                                                    expected: list[tuple[int, str]]) -> None:
+    got = said(LOCAL + blocks, haas)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == expected
+
+
+def test_a_g53_position_of_a_body_in_a_loop_is_said_whatever_the_offset(fanuc: str) -> None:
+    """Review 79-calls79 F4: `G53 G0 X-800.` runs at machine -800 at every pass whatever the
+    loop's G54 after the call does: said at the call as before, only the positions judged
+    through the offset are held."""
+    text = ("O2000 / G53 G0 X-800. / M99 / O1000 / G21 G17 G90 G55 / G0 X0 Y0 / #1=0 / "
+            "WHILE [#1 LT 2] DO1 / M98 P2000 / G54 / #1=#1+1 / END1 / M30")
+    got = said(text, fanuc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
+        [(9, "X goes to -800")]
+
+
+def test_a_third_call_runs_in_the_units_the_second_leaves(fanuc: str, tmp_path: Path) -> None:
+    """Review 78-calls78 F6: the caller's units code before the second call makes that call's
+    units its own, not the third's: O2000 leaves G20 after the second call, and with no units
+    code of the caller's before the third (G56) it runs `X-29.` in inches, -736.6 mm, machine
+    -736.6 - 200 = -936.6 (the G55 call in the caller's G21: -129, inside)."""
+    got = said("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G21 G55 / M98 P2000 / G56 / "
+               "M98 P2000 / M30 / O2000 / G0 X-29. / G20 / M99", fanuc)
+    assert [(line, msg.split(" in machine")[0]) for line, _, msg in got] == \
+        [(11, "X goes to -936.6")]
+    # (the Haas mirror, inches, G55 and G56 X-4: N100 leaves G21; the G56 call runs X-27. in
+    # millimetres, -1.06 in, machine -5.06, inside; the G55 call, after the main's G20, -31)
+    profile = tmp_path / "woh3.toml"
+    profile.write_text('name = "wo-haas"\nbase = "haas-mill"\n[limits]\nX = [-30.0, 30.0]\n'
+                       'Y = [-16.0, 16.0]\nZ = [-20.0, 0.4]\n[work_offsets]\n'
+                       'G54 = { X = 0.0, Y = 0.0, Z = 0.0 }\nG55 = { X = -4.0, Y = 0.0, Z = 0.0 }\n'
+                       'G56 = { X = -4.0, Y = 0.0, Z = 0.0 }\n')
+    got = said("O1000 / G20 G17 G90 G54 / G0 X0 Y0 / M97 P100 / G20 G55 / M97 P100 / G56 / "
+               "M97 P100 / M30 / N100 G0 X-27. / G21 / M99", str(profile))
+    assert [(line, msg.split("(work ")[1].split(")")[0]) for line, _, msg in got] == \
+        [(10, "-27 + G55 offset -4.0")]

@@ -994,7 +994,16 @@ impl Checker {
             return true;
         };
         let mut p = self.pending.remove(k);
+        // (after the main program's first jump or inside a loop: callflow.rs)
+        let flow = if self.flow_calls.is_some() {
+            self.flow_judging()
+        } else {
+            None
+        };
         self.early_judged(&mut p, &call, &token, at);
+        if let Some(before) = flow {
+            self.flow_judged(before);
+        }
         if let Some(early) = self.early.as_mut().filter(|_| self.early_on) {
             early.body.calls_judged += 1;
         }
@@ -1112,6 +1121,7 @@ impl Checker {
         }
         self.mode_lost_by.push(by.unwrap_or(i64::MIN));
         self.machine.state.incremental = true;
+        self.flow_modes_lost();
         // (LinuxCNC: the main program's; a body's own mode is its own, review 50, F7)
         if self.open_definition.is_none() {
             self.linuxcnc_distance_unsure = true;

@@ -570,6 +570,8 @@ impl Checker {
     /// writes, [`Written::moved`]; what a program the checker does not read does is not
     /// followed, as [`Checker::offsets_written`] says) or a jump.
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
+        // (after the main program's first jump: callflow.rs)
+        self.flow_spoiled();
         self.span_unjudged = ALL_PLACES;
         if self.spans_parked.is_some() {
             self.spans_unparked(ALL_PLACES);
@@ -630,6 +632,7 @@ impl Checker {
 
     /// The program selects work offset `g` (G54-G59): its own, no longer one guessed.
     fn work_selected(&mut self, g: i64, line: usize) {
+        self.flow_spoiled();
         // (the axes whose values are known under the system left: review 76-lcnc76b N3)
         let left = match self.work {
             Some(from) if from != g => self.selection_known(from),
@@ -1549,6 +1552,17 @@ impl Checker {
     /// The program in hand may write work offsets G54-G59 (`writes`, after what it wrote
     /// before), or lose the profile's (`loses`): [`Checker::offset_writers`].
     pub(super) fn offset_writer(&mut self, writes: &Written, loses: bool) {
+        // (after the main program's first jump: callflow.rs; a call of a program not read
+        // there, `unread` alone, is followed there)
+        if self.flow_calls.is_some()
+            && (loses
+                || writes.any()
+                || writes.moved
+                || writes.shifted != 0
+                || writes.maybe.iter().any(|m| *m != 0))
+        {
+            self.flow_spoiled();
+        }
         if let Some(n) = self.in_hand {
             let entry = self.offset_writers.entry(n).or_default();
             entry.0.then(writes);
@@ -1623,7 +1637,13 @@ impl Checker {
         };
         for (i, w) in g_words.iter().enumerate() {
             // (the letter before the value: a 32-byte `Option<Dec>` read for a G word only)
-            let Some(v) = (w.letter == b'G').then(|| self.readable[i]).flatten() else {
+            if w.letter != b'G' {
+                continue;
+            }
+            let Some(v) = self.readable[i] else {
+                // (a G code not known here, `G#2`, `G[54]` after the parameters were
+                // forgotten: it may select or set anything; callflow.rs)
+                self.flow_g_unknown();
                 continue;
             };
             if !v.is_whole() {
@@ -1654,7 +1674,12 @@ impl Checker {
                 continue;
             }
             match v.trunc() {
-                49 => self.length_decimal = false,
+                49 => {
+                    self.length_decimal = false;
+                    self.flow_spoiled();
+                }
+                // (after the main program's first jump: callflow.rs)
+                43 | 44 if self.flow_calls.is_some() => self.flow_spoiled(),
                 // (G91: the spans set aside at a selection join again, the increments from
                 // a work position the selection changed; review 78-lcnc78b F1)
                 91 if self.spans_parked.is_some() => self.spans_unparked(ALL_PLACES),

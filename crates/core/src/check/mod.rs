@@ -42,6 +42,7 @@ pub use structure::nested_comment;
 // the rules, by family
 mod after;
 mod called;
+mod callflow;
 mod callmode;
 mod codes;
 mod formats;
@@ -481,6 +482,8 @@ macro_rules! statements_only_block {
             $s.system_variables($b);
         }
         if $s.statements($b, None) {
+            // (before the parameters are forgotten: callflow.rs)
+            let never = $s.flow_never($b);
             $s.forget_at_jump($b, false);
             // (a conditional jump forward changes no parameter where it is not taken)
             if !$s.jump_keeps_params($b) {
@@ -505,9 +508,9 @@ macro_rules! statements_only_block {
             if !std::mem::take(&mut $s.call_keeps) && !$s.linuxcnc_flow_offsets($b) {
                 // (a call of a LinuxCNC definition after the end, Checker::later_call:
                 // only its writes, known there)
-                let unread_only = std::mem::take(&mut $s.call_unread_here)
-                    && (!$s.offsets_lost || $s.offsets_unread_only);
-                $s.offsets_rewritten($b.line, "a jump or call the checker does not follow");
+                let unread_here = std::mem::take(&mut $s.call_unread_here);
+                let unread_only = unread_here && (!$s.offsets_lost || $s.offsets_unread_only);
+                $s.flow_rewritten($b.line, false, unread_here, never);
                 $s.offsets_unread_only = unread_only;
             }
         }
@@ -1710,6 +1713,8 @@ pub struct Checker {
     /// M30, a LinuxCNC definition after M2) whose caller's findings after them are held to
     /// the body's return ([`callmode`]).
     call_modes: Vec<callmode::CallMode>,
+    /// The main program's first jump or loop and what came after it (callflow.rs).
+    flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
     /// disagree, or one was made in units not known): no limit that reads a length or a feed
     /// (TG601, TG602) is judged until it writes a units code of its own.
@@ -2039,6 +2044,7 @@ impl Checker {
             later_shifts: Vec::new(),
             work_call: None,
             call_modes: Vec::new(),
+            flow_calls: None,
             units_unknown: false,
             early: None,
             early_on: false,
@@ -3060,6 +3066,7 @@ impl Checker {
             self.call_made(b);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
+            let never = !calls && self.flow_never(b);
             self.forget_at_jump(b, calls);
             // (a conditional jump forward changes no parameter where it is not taken)
             if calls || !self.jump_keeps_params(b) {
@@ -3079,9 +3086,9 @@ impl Checker {
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
             if !std::mem::take(&mut self.call_keeps) {
-                let unread_only = std::mem::take(&mut self.call_unread_here)
-                    && (!self.offsets_lost || self.offsets_unread_only);
-                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
+                let unread_here = std::mem::take(&mut self.call_unread_here);
+                let unread_only = unread_here && (!self.offsets_lost || self.offsets_unread_only);
+                self.flow_rewritten(b.line, calls, unread_here, never);
                 self.offsets_unread_only = unread_only;
             }
         }
@@ -3376,6 +3383,7 @@ impl Checker {
             );
             self.report(Rule::DataModeNotClosed, message, opened, 1);
         }
+        self.flow_ended();
         self.part_ended(false);
         self.early_finish();
         self.after_end();

@@ -286,6 +286,13 @@ impl Checker {
     /// findings are dropped, else (M02/M30, the end of the file: a main program, which the
     /// control alarms on) they are said.
     pub(super) fn part_ended(&mut self, returned: bool) {
+        // (a main program that returns runs again from its start; one whose jump names a
+        // block after its end reaches blocks read after this one, a Haas's local
+        // subprograms among them: callflow.rs, review 79-calls79 F5)
+        if self.flow_calls.is_some() && !self.early_on && (returned || self.targets.goto_pending())
+        {
+            self.flow_spoiled();
+        }
         if returned {
             self.feed_pending.clear();
         } else {

@@ -285,6 +285,7 @@ impl Checker {
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
+        self.flow_ended();
         self.passage_ended(None);
         self.no_feed_target = 0;
         self.targets_ended();
@@ -462,6 +463,7 @@ impl Checker {
             ..Default::default()
         };
         self.call_unread_here = true;
+        self.flow_unread(key);
         self.offsets_written.then(&unread);
         self.offset_writer(&unread, false);
     }
@@ -492,6 +494,7 @@ impl Checker {
             return;
         };
         self.local_called = true;
+        self.flow_unread(key);
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
@@ -528,6 +531,9 @@ impl Checker {
         let Some(key) = local_key(main, p).filter(|k| self.call_works.contains_key(k)) else {
             return;
         };
+        // (the main program's blocks are all read, those after its M30 a jump may reach
+        // among them: callflow.rs; review 79-calls79 F5)
+        self.flow_ended();
         // (the body before it, run on into: its end)
         if self.in_hand.is_some_and(|n| n >= LOCAL_BODY) {
             self.local_body_end();
@@ -727,6 +733,7 @@ impl Checker {
             .iter()
             .enumerate()
             .any(|(i, w)| w.letter == b'G' && !self.readable[i].is_some_and(|v| v.eq_int(65)));
+        let q_entry = self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q');
         let known = self.work.filter(|_| {
             !self.offsets_lost
                 && !other_g
@@ -740,13 +747,25 @@ impl Checker {
                 && !self.sub_ended
                 // (`M98 P2000 Q10` enters the body at its N10, not at its first block: 0i-F
                 // Operator's Manual, "Subprogram call (M98)"; review 61a F12)
-                && !(self.values.ms.contains(&98) && b.words.iter().any(|w| w.letter == b'Q'))
+                && !q_entry
         });
         // a G66 makes no call here: it registers the macro, run after each later block that
         // moves until G67, under the offset in force at that move (0i-MF Operator's Manual,
         // "Modal call: G66"), or never (review 61a F9: `G66 P2000` / `G54` / `G0 X10.` /
         // `G67`, its body after M30 was judged under G55)
         let modal = self.values.gs().contains(&66);
+        // (after the main program's first jump or inside a loop: callflow.rs)
+        let known = match known {
+            None if self.flow_calls.is_some()
+                && !other_g
+                && !modal
+                && !q_entry
+                && !self.sub_ended =>
+            {
+                self.flow_call_work(number)
+            }
+            known => known,
+        };
         // (a caller read apart in units only assumed: its call's units are its own caller's
         // where it returns, review 61a F11; the reset state's where it ends as a main
         // program, F7: `O1000` / `G10 L2 P2 X-200.` / `G55` / `M98 P3000` / `M30`)
@@ -879,6 +898,13 @@ impl Checker {
                 let same_by_self = matches!((&*before, &here), (Some(a), Some(b))
                     if a.work == b.work && b.mode_by_self && a.length == b.length
                         && own(&a.written) && own(&b.written));
+                // (the units codes counted at the call before this one: a units code of the
+                // caller's since then, not since the first, makes this call's its own;
+                // review 78-calls78 F6)
+                let previous = before.as_ref().map(|a| a.units_codes);
+                if let (Some(a), Some(b)) = (before.as_mut(), &here) {
+                    a.units_codes = b.units_codes;
+                }
                 match (before.as_mut(), &here) {
                     (Some(a), Some(b)) if same || same_by_self => {
                         // (calls beyond the travel on different sides: the body's first
@@ -896,7 +922,7 @@ impl Checker {
                                 || number >= LOCAL_BODY;
                             // (no units code of the caller's since the first call: it
                             // runs in the units the body leaves, callmode::Rescale)
-                            let left = a.units_codes == b.units_codes;
+                            let left = previous == Some(b.units_codes);
                             a.others.push((
                                 b.work,
                                 b.call.clone(),
@@ -7676,7 +7702,8 @@ pub(super) struct CallWork {
     /// and where each axis was outside at it. The body's positions are judged under each
     /// of these too (one subprogram called once a fixture, under G54, G55, G56...).
     others: Vec<Other>,
-    /// The machine's count of units codes at the call.
+    /// The machine's count of units codes at the call (kept for the first: at the last
+    /// call made, [`Checker::call_work_kept`]).
     units_codes: u32,
 }
 

@@ -311,6 +311,17 @@ impl Targets {
         self.overflow || self.sinumerik_lines(name).is_some()
     }
 
+    /// A `GOTO n` of the program names a block not shown so far (or the numbers are not
+    /// all kept): at its end, a block after it that a jump reaches (callflow.rs).
+    pub(super) fn goto_pending(&self) -> bool {
+        self.overflow
+            || self
+                .pending
+                .values()
+                .flatten()
+                .any(|t| t.token.starts_with("GOTO"))
+    }
+
     fn has(&self, n: u64) -> bool {
         if (n as usize) < NARROW {
             self.narrow
