@@ -737,6 +737,7 @@ impl Checker {
             let parked = self.spans_parked.get_or_insert_with(Default::default);
             parked[i] = Some(if fits { joined(parked[i], span) } else { span });
             self.spans[i] = None;
+            self.span_unjudged_own &= !(1 << i);
         }
         if self.spans_parked.is_some() {
             let unknown = !self.work.map_or(0, |g| self.selection_known(g));
@@ -749,6 +750,7 @@ impl Checker {
     #[inline]
     fn position_not_judged(&mut self, i: usize) {
         self.span_unjudged |= 1 << i;
+        self.span_unjudged_own |= 1 << i;
         if self.spans_parked.is_some() {
             self.spans_unparked(1 << i);
         }
@@ -2825,6 +2827,7 @@ impl Checker {
         let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
         self.spans[i] = None;
         self.span_unjudged &= !(1 << i);
+        self.span_unjudged_own &= !(1 << i);
         if let Some(parked) = self.spans_parked.as_mut() {
             parked[i] = None;
         }

@@ -1060,6 +1060,10 @@ pub struct Checker {
     /// The axes (their places' bits) whose span holds a position not judged as a machine
     /// position since it last started (limits.rs, `position_not_judged`).
     span_unjudged: u16,
+    /// The axes whose span in hand holds a position itself not judged as a machine position
+    /// (not only one across a call or jump not followed): a body read after the end is
+    /// judged in its call's spans only on the others (structure.rs, `later_spans_begin`).
+    span_unjudged_own: u16,
     /// The first word without a point that looked wrong (TG201).
     first_implicit: Option<Implicit>,
     g06_open: Option<usize>,
@@ -1158,6 +1162,9 @@ pub struct Checker {
     /// LinuxCNC: the labels of the main program's calls kept for a definition after its end
     /// ([`Checker::later_call`]).
     later_called: Option<Vec<Vec<u8>>>,
+    /// The spans at the main program's calls of a body read after its end, and the main's
+    /// own while such a body is read ([`Checker::later_spans_at_call`]).
+    later_spans: Option<Box<structure::LaterSpans>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1901,6 +1908,7 @@ impl Checker {
             spans: [None; 9],
             spans_parked: None,
             span_unjudged: 0,
+            span_unjudged_own: 0,
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
@@ -1939,6 +1947,7 @@ impl Checker {
             local_main: None,
             after_watch: false,
             later_called: None,
+            later_spans: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,

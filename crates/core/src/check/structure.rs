@@ -495,6 +495,7 @@ impl Checker {
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
+        self.later_spans_at_call(key);
         self.call_not_followed(b, key);
         self.call_units_seen(key);
     }
@@ -564,6 +565,112 @@ impl Checker {
             self.machine.state.incremental = c.incremental;
             self.work_of_calls(key);
         }
+        if self.work_call.is_some() && self.later_spans.is_some() {
+            self.later_spans_begin(key);
+        }
+    }
+
+    /// A call of the body `key` read after the main program's end (a LinuxCNC definition or
+    /// FANUC-style `O` program, a Haas's local subprogram): the spans in force here kept
+    /// for it -- the one in hand, of the positions since the last selection of another
+    /// known system, and those set aside there ([`Checker::selection_spans`]) -- where the
+    /// spans are the main program's own (no program read apart, no shift watched, no frame);
+    /// a second call of it keeps none.
+    #[cold]
+    #[inline(never)]
+    fn later_spans_at_call(&mut self, key: i64) {
+        let own = !self.early_on && self.later_shift.is_none() && !self.frames_on();
+        let here = own.then(|| SpanSet {
+            spans: self.spans,
+            parked: self.spans_parked.clone(),
+            unjudged: self.span_unjudged,
+            own: self.span_unjudged_own,
+        });
+        let kept = self.later_spans.get_or_insert_with(Default::default);
+        match kept.at_calls.iter_mut().find(|c| c.0 == key) {
+            Some(c) => c.1 = None,
+            None => kept.at_calls.push((key, here)),
+        }
+    }
+
+    /// The body `key` read after the end begins under its call's work offset
+    /// ([`Checker::work_of_calls`]): its positions are judged in the spans in force at its
+    /// one call ([`Checker::later_spans_at_call`]), as the main program's own moves after
+    /// the call are -- a span across a selection of another known system set aside there
+    /// stays so (review 78-lcnc78b F7: `G54` / `G0 X-650.` / `G57` / `M98 P2000` / `M30` /
+    /// `O2000` / `G0 X1000.` / `M99` on G57 X -300 runs at machine -650, then 700, inside;
+    /// it was "X spans 1650"). The main's spans are given back at its end
+    /// ([`Checker::later_spans_end`]).
+    #[cold]
+    #[inline(never)]
+    fn later_spans_begin(&mut self, key: i64) {
+        if self.later_shift.is_some() || self.frames_on() || self.early_on {
+            return;
+        }
+        let Some(kept) = self.later_spans.as_mut() else {
+            return;
+        };
+        let Some(Some(at_call)) = kept
+            .at_calls
+            .iter()
+            .find(|c| c.0 == key)
+            .map(|c| c.1.clone())
+        else {
+            return;
+        };
+        if kept.main.is_some() {
+            return;
+        }
+        // (an axis whose span in hand holds a position the main program ran where its
+        // offset was not known: the body's positions judged with it, as before, erring on
+        // the side of the alarm -- 78-lcnc78b H15 on a profile without G57)
+        let own = self.span_unjudged_own;
+        kept.main = Some(SpanSet {
+            spans: self.spans,
+            parked: self.spans_parked.take(),
+            unjudged: self.span_unjudged,
+            own,
+        });
+        for i in 0..self.spans.len() {
+            if own & 1 << i == 0 {
+                self.spans[i] = at_call.spans[i];
+            }
+        }
+        self.spans_parked = at_call.parked;
+        self.span_unjudged = at_call.unjudged & !own | self.span_unjudged & own;
+        self.span_unjudged_own = at_call.own & !own | own;
+    }
+
+    /// The body begun by [`Checker::later_spans_begin`] ends: the main program's spans are
+    /// in force again, a span of the body's that holds a position not judged as a machine
+    /// position joined to the main's (where the two fit the travel; erring on the side of
+    /// the alarm as before: the positions after it compared with it).
+    #[cold]
+    #[inline(never)]
+    fn later_spans_end(&mut self) {
+        let Some(main) = self.later_spans.as_mut().and_then(|k| k.main.take()) else {
+            return;
+        };
+        let body = std::mem::replace(&mut self.spans, main.spans);
+        // (the axes on which the body's positions were judged in the main's span: its span
+        // is the main's from here; elsewhere joined where it holds a position not judged)
+        let kept = main.own;
+        for i in crate::modal::places(u32::from(kept)) {
+            self.spans[i] = body[i];
+        }
+        let unjudged = self.span_unjudged_own & !kept;
+        self.spans_parked = main.parked;
+        self.span_unjudged = main.unjudged | self.span_unjudged & kept | unjudged;
+        self.span_unjudged_own = main.own | self.span_unjudged_own & kept | unjudged;
+        for i in crate::modal::places(u32::from(unjudged)) {
+            if let Some(b) = body.get(i).copied().flatten() {
+                self.spans[i] = Some(self.spans[i].map_or(b, |a| super::Span {
+                    least: a.least.min(b.least),
+                    most: a.most.max(b.most),
+                    said: a.said || b.said,
+                }));
+            }
+        }
     }
 
     /// The local subprogram in hand returns (M99) or another begins: the state read before
@@ -572,6 +679,9 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn local_body_end(&mut self) {
+        if self.later_spans.is_some() {
+            self.later_spans_end();
+        }
         self.work_call_end();
         self.after_end();
         self.in_hand = self.local_main;
@@ -2068,19 +2178,30 @@ impl Checker {
         let [label] = calls.as_slice() else {
             return;
         };
-        let key = super::called::Key::Label(label.clone());
+        self.later_call_of(b, label);
+    }
+
+    /// [`Checker::later_call`] of `label` (`o300` for a main program's `M98 P300`: the one
+    /// implementation of both forms' calls of a definition written after the end,
+    /// [`Checker::linuxcnc_m98_later`]).
+    fn later_call_of(&mut self, b: &BlockView<'_>, label: &[u8]) {
+        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+            return;
+        }
+        let key = super::called::Key::Label(label.to_vec());
         if label.len() < 2 || crate::statement::computed_label(label) || self.read_before(&key) {
             return;
         }
         let labels = self.later_called.get_or_insert_with(Vec::new);
         let index = labels.iter().position(|l| l == label).unwrap_or_else(|| {
-            labels.push(label.clone());
+            labels.push(label.to_vec());
             labels.len() - 1
         });
         let key = LATER_DEFINITION + index as i64;
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
+        self.later_spans_at_call(key);
         self.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
         self.call_units_seen(key);
     }
@@ -5453,6 +5574,11 @@ impl Checker {
         if self.linuxcnc_defined.contains(&label) {
             return;
         }
+        // (its work offset, distance mode and units kept for the body read after the end,
+        // as an `o300 call`'s are: review 78-lcnc78 N1)
+        if !self.config.work_offsets.is_empty() && !self.early_on {
+            self.later_call_of(b, &label);
+        }
         self.linuxcnc_later.unread = true;
         if self.linuxcnc_runs_surely() && !self.main_ended() {
             self.linuxcnc_later.ends.push((label.clone(), b.line));
@@ -7734,7 +7860,11 @@ impl WorkCall {
     pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
         // (a LinuxCNC definition after the end: its label, the call's)
         let program = match number {
-            Some(n) if n >= LATER_DEFINITION => call.trim_end_matches(" call").to_string(),
+            // (an `M98 P300` of LinuxCNC's FANUC-style `O300`: its O number)
+            Some(n) if n >= LATER_DEFINITION => match call.strip_prefix("M98 P") {
+                Some(p) => format!("O{p}"),
+                None => call.trim_end_matches(" call").to_string(),
+            },
             Some(n) => program_name(n),
             None => "the program".to_string(),
         };
@@ -7743,6 +7873,25 @@ impl WorkCall {
              its call runs under the work offset in force there)"
         )
     }
+}
+
+/// [`Checker::later_spans`]: the spans at each call of a body read after the end, by key
+/// (None where it is called twice or where they were not the main program's own), and the
+/// main program's while such a body is read.
+#[derive(Clone, Default, Debug)]
+pub(super) struct LaterSpans {
+    at_calls: Vec<(i64, Option<SpanSet>)>,
+    main: Option<SpanSet>,
+}
+
+/// The spans of the axes in hand, those set aside, and the axes whose span holds a position
+/// not judged as a machine position.
+#[derive(Clone, Debug)]
+pub(super) struct SpanSet {
+    spans: [Option<super::Span>; 9],
+    parked: Option<Box<[Option<super::Span>; 9]>>,
+    unjudged: u16,
+    own: u16,
 }
 
 #[derive(Clone, Debug)]
