@@ -164,3 +164,16 @@ def test_a_nested_m98_program_is_judged(tmp_path) -> None:
             "O3000\nG2 X1 Y0\nM99\n")
     assert errors(text) == [("TG404", 9)]
     assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+
+
+# a main-level M99 or M2 in a condition on a parameter the program never sets counts as an end
+# (docs/rules.md, TG114): `rs274 -g` reads #5 as 0 from its empty var file and refuses ("File
+# ended with no percent sign or program end"), a machine's interpreter may hold any value from
+# the programs run before it; an `if [0]` or a #5 set to 0 first is surely false: TG114
+@pytest.mark.parametrize("end", ["M99", "M2"])
+def test_an_end_in_a_condition_on_a_parameter_never_set_counts_as_an_end(tmp_path, end) -> None:
+    for first, cond, expected in (("", "#5 NE 0", []), ("", "0", [("TG114", 6)]),
+                                  ("#5=0\n", "#5 NE 0", [("TG114", 7)])):
+        text = f"G21 G17 G90\nG0 X0 Y0\n{first}o1 if [{cond}]\n{end}\no1 endif\nG0 X5\n"
+        assert errors(text) == expected, text
+        assert refused(rs274_output(tmp_path, text)), text
