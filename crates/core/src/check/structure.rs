@@ -2272,19 +2272,40 @@ impl Checker {
     /// while a block skips too (`rs274 -g`; LCNC_BMC20's `toolchange.ngc`, an `O103` typed
     /// for `O103 endif`).
     fn bare_o_in_definition(&mut self, b: &BlockView<'_>) {
+        // (signed, `O103.0`, or a parameter or expression, `O[103]`, `O#1`: rs274 reads the
+        // label as a whole number, read_integer_value, and refuses each alike; review 78-lcnc78
+        // N2. A value known not whole, `O103.5`, is refused otherwise: "Non integer value for
+        // integer")
         let bare = |w: &Word<'_>| {
             w.letter == b'O'
                 && w.index.is_empty()
-                && w.sign.is_empty()
-                && !w.point
-                && w.expression.is_empty()
-                && !w.number.is_empty()
+                && (!w.expression.is_empty() || !w.number.is_empty())
         };
-        let o = match b.words {
-            [o] | [_, o] if bare(o) => o,
+        let k = match b.words {
+            [o] if bare(o) => 0,
+            [_, o] if bare(o) => 1,
             _ => return,
         };
+        let o = &b.words[k];
         if b.words.len() == 2 && b.words[0].letter != b'N' {
+            return;
+        }
+        let whole = if o.expression.is_empty() {
+            std::str::from_utf8(o.number)
+                .ok()
+                .and_then(|n| n.parse::<f64>().ok())
+                .is_some_and(|v| v.fract() == 0.0)
+        } else {
+            // (a decimal in it, `O[103.5]`: not surely whole)
+            !o.expression.contains(&b'.')
+                && self
+                    .readable
+                    .get(k)
+                    .copied()
+                    .flatten()
+                    .is_none_or(|v| v.is_whole())
+        };
+        if !whole {
             return;
         }
         // (a definition after the main program's end is read only where a call seeks it;
@@ -5572,6 +5593,10 @@ impl Checker {
         }
         let label = format!("o{n}").into_bytes();
         if self.linuxcnc_defined.contains(&label) {
+            // (a definition read before the main program's call is of the o-word form)
+            if !self.main_ended() && self.linuxcnc_runs_surely() && !self.linuxcnc_dead() {
+                self.linuxcnc_m98_of_sub(b, n);
+            }
             return;
         }
         // (its work offset, distance mode and units kept for the body read after the end,
@@ -5591,6 +5616,26 @@ impl Checker {
             }
         }
         debug_assert_eq!(self.linuxcnc_motion, LinuxCncMotion::Unknown);
+    }
+
+    /// TG412: the main program's `M98 P300` (surely run) of an `o300 sub` defined before it:
+    /// rs274 2.9 refuses it where it returns to the definition ("'O.... sub' subroutine must
+    /// be called with 'O.... call'", interp_o_word.cc convert_control_functions; `rs274 -g`,
+    /// review 78-lcnc78 M1, M2), said at the call.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_m98_of_sub(&mut self, b: &BlockView<'_>, n: i64) {
+        let message = format!(
+            "'O.... sub' subroutine must be called with 'O.... call' (rs274ngc): M98 P{n} \
+             reaches o{n} sub, a definition of the o-word form written before it, which \
+             rs274 2.9 runs only for an o{n} call"
+        );
+        let column = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'M')
+            .map_or(1, |w| w.column);
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 
     /// LinuxCNC: a move without a motion code or arc word (`b`) under the caller's G2/G3
