@@ -65,9 +65,6 @@ LATER = [
     ("G54\nG0 X-700\nG55\nCALL", "G0 X860", None, "2, "),
     # ... H17's: the body's X beyond under G55 alone is said as a machine position
     ("G54\nG0 X-700\nG55\nCALL", "G0 X870", "X goes to 770 in machine coordinates", "2, "),
-    # ... H15's: called under G54, the main's own later G55 then X860: the body's -740 under
-    # G54, inside
-    ("G54\nCALL\nG55\nG0 X860", "G0 X-740", None, "1, "),
     # ... H14's: the body's X-800 under G54 is beyond itself (a true error kept)
     ("G54\nCALL\nG55\nG0 X860", "G0 X-800", "X goes to -800 in machine coordinates", "1, "),
     # ... H27's: a position of the main under G55 before the call, the body's in the same
@@ -99,6 +96,11 @@ def test_a_later_body_is_judged_under_its_calls_system_and_span(tmp_path, main, 
 KEPT = [
     ("G54\nG0 X-700\nG91\nG55\nCALL", "G0 X1650"),
     ("G54\nCALL\nG56\nG0 X800", "G0 X-740"),
+    # ... and a position of the main program after the call not judged as a machine position
+    # (in a condition: #1 reads 0 in rs274, X-1100 runs; review 79-lcnc79 F1's S50), or a G91
+    # run on from where the body left the tool (S54: work 1000 + 700, machine 1400)
+    ("G54\nG0 X0\nCALL\no1 if [#1 EQ 0]\nG0 X-1100\no1 endif", "G0 X600"),
+    ("G54\nG0 X-700\nG55\nCALL\nG91\nG0 X700\nG90", "G0 X860"),
 ]
 
 

@@ -737,7 +737,6 @@ impl Checker {
             let parked = self.spans_parked.get_or_insert_with(Default::default);
             parked[i] = Some(if fits { joined(parked[i], span) } else { span });
             self.spans[i] = None;
-            self.span_unjudged_own &= !(1 << i);
         }
         if self.spans_parked.is_some() {
             let unknown = !self.work.map_or(0, |g| self.selection_known(g));
@@ -750,7 +749,6 @@ impl Checker {
     #[inline]
     fn position_not_judged(&mut self, i: usize) {
         self.span_unjudged |= 1 << i;
-        self.span_unjudged_own |= 1 << i;
         if self.spans_parked.is_some() {
             self.spans_unparked(1 << i);
         }
@@ -785,12 +783,17 @@ impl Checker {
             };
             let both = joined(self.spans[i], aside);
             let said = self.spans[i].is_some_and(|s| s.said);
-            if said || self.span_fits(i, both) {
+            // (kept across a call of a body read later: joined as the call joined them)
+            if self.spans_parked_call {
+                self.spans[i] = Some(both);
+            } else if said || self.span_fits(i, both) {
                 self.spans[i] = Some(Span { said, ..both });
             }
         }
         if parked.iter().any(Option::is_some) {
             self.spans_parked = Some(parked);
+        } else {
+            self.spans_parked_call = false;
         }
     }
 
@@ -2827,7 +2830,6 @@ impl Checker {
         let lost = self.spans[i].is_some() && self.travel.of_place(i).is_some();
         self.spans[i] = None;
         self.span_unjudged &= !(1 << i);
-        self.span_unjudged_own &= !(1 << i);
         if let Some(parked) = self.spans_parked.as_mut() {
             parked[i] = None;
         }
@@ -3433,7 +3435,12 @@ impl Checker {
                 self.stats.travel_moves += 1;
                 // (a span set aside at a selection joins again under G91, however it came in
                 // force: an M72's restore, a call's; review 78-lcnc78b F4)
-                if self.spans_parked.is_some() && self.machine.state.incremental {
+                // (and at a position outside a body read under its call's offset after they
+                // were kept across that call: structure.rs, `call_offsets_rewritten`)
+                if self.spans_parked.is_some()
+                    && (self.machine.state.incremental
+                        || self.spans_parked_call && self.work_call.is_none())
+                {
                     self.spans_unparked(ALL_PLACES);
                 }
             }

@@ -503,12 +503,7 @@ macro_rules! statements_only_block {
             // (a call of a body that keeps them, or a condition's or loop's own line,
             // loses no offset: the two are never one line)
             if !std::mem::take(&mut $s.call_keeps) && !$s.linuxcnc_flow_offsets($b) {
-                // (a call of a LinuxCNC definition after the end, Checker::later_call:
-                // only its writes, known there)
-                let unread_only = std::mem::take(&mut $s.call_unread_here)
-                    && (!$s.offsets_lost || $s.offsets_unread_only);
-                $s.offsets_rewritten($b.line, "a jump or call the checker does not follow");
-                $s.offsets_unread_only = unread_only;
+                $s.call_offsets_rewritten($b.line);
             }
         }
         $s.call_keeps = false;
@@ -1060,10 +1055,10 @@ pub struct Checker {
     /// The axes (their places' bits) whose span holds a position not judged as a machine
     /// position since it last started (limits.rs, `position_not_judged`).
     span_unjudged: u16,
-    /// The axes whose span in hand holds a position itself not judged as a machine position
-    /// (not only one across a call or jump not followed): a body read after the end is
-    /// judged in its call's spans only on the others (structure.rs, `later_spans_begin`).
-    span_unjudged_own: u16,
+    /// The spans set aside were kept across a call of a program read after the end
+    /// (structure.rs, `call_offsets_rewritten`): a later position not judged as a machine
+    /// position joins them whether they fit or not, as the call itself joined them before.
+    spans_parked_call: bool,
     /// The first word without a point that looked wrong (TG201).
     first_implicit: Option<Implicit>,
     g06_open: Option<usize>,
@@ -1162,9 +1157,6 @@ pub struct Checker {
     /// LinuxCNC: the labels of the main program's calls kept for a definition after its end
     /// ([`Checker::later_call`]).
     later_called: Option<Vec<Vec<u8>>>,
-    /// The spans at the main program's calls of a body read after its end, and the main's
-    /// own while such a body is read ([`Checker::later_spans_at_call`]).
-    later_spans: Option<Box<structure::LaterSpans>>,
     /// The axes (their places' bits) a G52 of the program in hand wrote (or a program's it
     /// called carried into it), and whether its start had no shift in force
     /// ([`Checker::program_shift_end`], [`Checker::shift_carried`]).
@@ -1908,7 +1900,7 @@ impl Checker {
             spans: [None; 9],
             spans_parked: None,
             span_unjudged: 0,
-            span_unjudged_own: 0,
+            spans_parked_call: false,
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
@@ -1947,7 +1939,6 @@ impl Checker {
             local_main: None,
             after_watch: false,
             later_called: None,
-            later_spans: None,
             g52_axes: 0,
             g52_read: [0.0; 9],
             shift_clean_start: true,
@@ -3088,10 +3079,7 @@ impl Checker {
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
             if !std::mem::take(&mut self.call_keeps) {
-                let unread_only = std::mem::take(&mut self.call_unread_here)
-                    && (!self.offsets_lost || self.offsets_unread_only);
-                self.offsets_rewritten(b.line, "a jump or call the checker does not follow");
-                self.offsets_unread_only = unread_only;
+                self.call_offsets_rewritten(b.line);
             }
         }
         self.call_keeps = false;

@@ -453,6 +453,39 @@ impl Checker {
         }
     }
 
+    /// A jump or call on `line` the checker does not follow: the offsets may be rewritten
+    /// there ([`Checker::offsets_rewritten`]), unless it is a call of a program read after
+    /// the end only ([`Checker::call_of_unread`]: a LinuxCNC definition or FANUC-style `O`
+    /// program, a Haas's local subprogram), whose writes are known where its lines are read
+    /// ([`Checker::offsets_unread_only`]). Such a call keeps the spans set aside at a
+    /// selection of another known system ([`Checker::selection_spans`]) for the body, which
+    /// runs under the call's system and is judged so; any position outside such a body (the
+    /// main program's after the call, a body read under no call's offset), one not judged as
+    /// a machine position in it, or a G91 joins them again, whether they fit or not, as the
+    /// call joined them before (review 78-lcnc78b F7:
+    /// `G54` / `G0 X-650.` / `G57` / `M98 P2000` /
+    /// `M30` / `O2000` / `G0 X1000.` / `M99` on G57 X -300 runs at machine -650, then 700,
+    /// and was "X spans 1650"; review 79-lcnc79 F1: its twins with such a position, kept).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_offsets_rewritten(&mut self, line: usize) {
+        // (a call of a LinuxCNC definition after the end, Checker::later_call: only its
+        // writes, known there)
+        let unread_only = std::mem::take(&mut self.call_unread_here)
+            && (!self.offsets_lost || self.offsets_unread_only);
+        let parked = if unread_only {
+            self.spans_parked.take()
+        } else {
+            None
+        };
+        self.offsets_rewritten(line, "a jump or call the checker does not follow");
+        if parked.is_some() {
+            self.spans_parked = parked;
+            self.spans_parked_call = true;
+        }
+        self.offsets_unread_only = unread_only;
+    }
+
     /// A call of the program `key`, not read yet: what it writes is known where its lines
     /// are read, at the file's end (a G54-G59 of the main's own after the call judged, held
     /// to then: [`Checker::work_unread_reselected`]).
@@ -495,7 +528,6 @@ impl Checker {
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
-        self.later_spans_at_call(key);
         self.call_not_followed(b, key);
         self.call_units_seen(key);
     }
@@ -565,112 +597,6 @@ impl Checker {
             self.machine.state.incremental = c.incremental;
             self.work_of_calls(key);
         }
-        if self.work_call.is_some() && self.later_spans.is_some() {
-            self.later_spans_begin(key);
-        }
-    }
-
-    /// A call of the body `key` read after the main program's end (a LinuxCNC definition or
-    /// FANUC-style `O` program, a Haas's local subprogram): the spans in force here kept
-    /// for it -- the one in hand, of the positions since the last selection of another
-    /// known system, and those set aside there ([`Checker::selection_spans`]) -- where the
-    /// spans are the main program's own (no program read apart, no shift watched, no frame);
-    /// a second call of it keeps none.
-    #[cold]
-    #[inline(never)]
-    fn later_spans_at_call(&mut self, key: i64) {
-        let own = !self.early_on && self.later_shift.is_none() && !self.frames_on();
-        let here = own.then(|| SpanSet {
-            spans: self.spans,
-            parked: self.spans_parked.clone(),
-            unjudged: self.span_unjudged,
-            own: self.span_unjudged_own,
-        });
-        let kept = self.later_spans.get_or_insert_with(Default::default);
-        match kept.at_calls.iter_mut().find(|c| c.0 == key) {
-            Some(c) => c.1 = None,
-            None => kept.at_calls.push((key, here)),
-        }
-    }
-
-    /// The body `key` read after the end begins under its call's work offset
-    /// ([`Checker::work_of_calls`]): its positions are judged in the spans in force at its
-    /// one call ([`Checker::later_spans_at_call`]), as the main program's own moves after
-    /// the call are -- a span across a selection of another known system set aside there
-    /// stays so (review 78-lcnc78b F7: `G54` / `G0 X-650.` / `G57` / `M98 P2000` / `M30` /
-    /// `O2000` / `G0 X1000.` / `M99` on G57 X -300 runs at machine -650, then 700, inside;
-    /// it was "X spans 1650"). The main's spans are given back at its end
-    /// ([`Checker::later_spans_end`]).
-    #[cold]
-    #[inline(never)]
-    fn later_spans_begin(&mut self, key: i64) {
-        if self.later_shift.is_some() || self.frames_on() || self.early_on {
-            return;
-        }
-        let Some(kept) = self.later_spans.as_mut() else {
-            return;
-        };
-        let Some(Some(at_call)) = kept
-            .at_calls
-            .iter()
-            .find(|c| c.0 == key)
-            .map(|c| c.1.clone())
-        else {
-            return;
-        };
-        if kept.main.is_some() {
-            return;
-        }
-        // (an axis whose span in hand holds a position the main program ran where its
-        // offset was not known: the body's positions judged with it, as before, erring on
-        // the side of the alarm -- 78-lcnc78b H15 on a profile without G57)
-        let own = self.span_unjudged_own;
-        kept.main = Some(SpanSet {
-            spans: self.spans,
-            parked: self.spans_parked.take(),
-            unjudged: self.span_unjudged,
-            own,
-        });
-        for i in 0..self.spans.len() {
-            if own & 1 << i == 0 {
-                self.spans[i] = at_call.spans[i];
-            }
-        }
-        self.spans_parked = at_call.parked;
-        self.span_unjudged = at_call.unjudged & !own | self.span_unjudged & own;
-        self.span_unjudged_own = at_call.own & !own | own;
-    }
-
-    /// The body begun by [`Checker::later_spans_begin`] ends: the main program's spans are
-    /// in force again, a span of the body's that holds a position not judged as a machine
-    /// position joined to the main's (where the two fit the travel; erring on the side of
-    /// the alarm as before: the positions after it compared with it).
-    #[cold]
-    #[inline(never)]
-    fn later_spans_end(&mut self) {
-        let Some(main) = self.later_spans.as_mut().and_then(|k| k.main.take()) else {
-            return;
-        };
-        let body = std::mem::replace(&mut self.spans, main.spans);
-        // (the axes on which the body's positions were judged in the main's span: its span
-        // is the main's from here; elsewhere joined where it holds a position not judged)
-        let kept = main.own;
-        for i in crate::modal::places(u32::from(kept)) {
-            self.spans[i] = body[i];
-        }
-        let unjudged = self.span_unjudged_own & !kept;
-        self.spans_parked = main.parked;
-        self.span_unjudged = main.unjudged | self.span_unjudged & kept | unjudged;
-        self.span_unjudged_own = main.own | self.span_unjudged_own & kept | unjudged;
-        for i in crate::modal::places(u32::from(unjudged)) {
-            if let Some(b) = body.get(i).copied().flatten() {
-                self.spans[i] = Some(self.spans[i].map_or(b, |a| super::Span {
-                    least: a.least.min(b.least),
-                    most: a.most.max(b.most),
-                    said: a.said || b.said,
-                }));
-            }
-        }
     }
 
     /// The local subprogram in hand returns (M99) or another begins: the state read before
@@ -679,9 +605,6 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn local_body_end(&mut self) {
-        if self.later_spans.is_some() {
-            self.later_spans_end();
-        }
         self.work_call_end();
         self.after_end();
         self.in_hand = self.local_main;
@@ -2201,7 +2124,6 @@ impl Checker {
         self.after_call(key);
         self.call_mode_kept(key);
         self.call_work(b, key);
-        self.later_spans_at_call(key);
         self.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
         self.call_units_seen(key);
     }
@@ -7918,25 +7840,6 @@ impl WorkCall {
              its call runs under the work offset in force there)"
         )
     }
-}
-
-/// [`Checker::later_spans`]: the spans at each call of a body read after the end, by key
-/// (None where it is called twice or where they were not the main program's own), and the
-/// main program's while such a body is read.
-#[derive(Clone, Default, Debug)]
-pub(super) struct LaterSpans {
-    at_calls: Vec<(i64, Option<SpanSet>)>,
-    main: Option<SpanSet>,
-}
-
-/// The spans of the axes in hand, those set aside, and the axes whose span holds a position
-/// not judged as a machine position.
-#[derive(Clone, Debug)]
-pub(super) struct SpanSet {
-    spans: [Option<super::Span>; 9],
-    parked: Option<Box<[Option<super::Span>; 9]>>,
-    unjudged: u16,
-    own: u16,
 }
 
 #[derive(Clone, Debug)]
