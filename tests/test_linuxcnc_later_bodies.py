@@ -115,3 +115,12 @@ def test_the_m98_forms_body_is_named_by_its_o_number() -> None:
     text = forms("G55\nG0 X0 Y0\nCALL", "G0 X-700")[0]
     [(_, _, message)] = errors(text)
     assert "(O300 runs as called by M98 P300 of line 4:" in message
+
+
+def test_the_mains_own_position_after_the_call_joins_the_span_set_aside(tmp_path) -> None:
+    # X-700 under G54, then G55 and the call; the main's X900 after it runs under the offset
+    # the body may have changed (not judged): the span from -700, as the call joined it before
+    # (review 79-lcnc79; rs274 with the profile's G55 runs it at 800, beyond)
+    for text in forms("G54\nG0 X-700\nG55\nCALL\nG0 X900", "G0 X0"):
+        assert [(r, n) for r, n, _ in errors(text)] == [("TG601", 6)], text
+        assert "PROGRAM_END" in rs274_output(tmp_path, text)
