@@ -164,3 +164,34 @@ def test_a_nested_m98_program_is_judged(tmp_path) -> None:
             "O3000\nG2 X1 Y0\nM99\n")
     assert errors(text) == [("TG404", 9)]
     assert "R i j k words all missing for arc" in rs274_output(tmp_path, text)
+
+
+# a main-level M99 or M2 in a condition on a parameter the program never sets counts as an end
+# (docs/rules.md, TG114): `rs274 -g` reads #5 as 0 from its empty var file and refuses ("File
+# ended with no percent sign or program end"), a machine's interpreter may hold any value from
+# the programs run before it; an `if [0]` or a #5 set to 0 first is surely false: TG114
+@pytest.mark.parametrize("end", ["M99", "M2"])
+def test_an_end_in_a_condition_on_a_parameter_never_set_counts_as_an_end(tmp_path, end) -> None:
+    for first, cond, expected in (("", "#5 NE 0", []), ("", "0", [("TG114", 6)]),
+                                  ("#5=0\n", "#5 NE 0", [("TG114", 7)])):
+        text = f"G21 G17 G90\nG0 X0 Y0\n{first}o1 if [{cond}]\n{end}\no1 endif\nG0 X5\n"
+        assert errors(text) == expected, text
+        assert refused(rs274_output(tmp_path, text)), text
+
+
+# an M98 of an `o300 sub` defined before the main program: rs274 2.9 refuses it ("'O.... sub'
+# subroutine must be called with 'O.... call'"; review 78-lcnc78 M1, M2); said at the M98 that
+# surely runs, not at one in a condition not known or after the end
+@pytest.mark.parametrize(("text", "expected"), [
+    ("o300 sub\nG0 X1\no300 endsub\nG21 G17 G90\nG0 X0 Y0\nM98 P300\nM2\n", [("TG412", 6)]),
+    ("o300 sub\nG0 X1\no300 endsub\nG21 G90\nM98 P300\nM2\nO300\nG0 X2\nM99\n",
+     [("TG412", 5)]),
+    ("o300 sub\nG0 X1\no300 endsub\nG21 G90\no1 if [#1 GT 0]\nM98 P300\no1 endif\nM2\n", []),
+    ("o300 sub\nG0 X1\no300 endsub\nG21 G90\no300 call\nM2\n", []),
+])
+def test_an_m98_of_an_o_word_definition_before_it_is_refused(tmp_path, text, expected) -> None:
+    assert errors(text) == expected, text
+    out = rs274_output(tmp_path, text)
+    assert refused(out) == bool(expected), out
+    if expected:
+        assert "'O.... sub' subroutine must be called with 'O.... call'" in out, out

@@ -124,6 +124,13 @@ BARE_O = [
     ("o<m> sub\nO103\no<m> endsub\nM2\n", 2),
     ("o<m> sub\nN5 O103\no<m> endsub\nM2\n", 2),
     ("o<m> sub\no1 if [0]\n  O103 (x)\no1 endif\no<m> endsub\no<m> call\nM2\n", 3),
+    # ... signed, with a point, a parameter or an expression alike (read_integer_value; review
+    # 78-lcnc78 N2: `O[103]` was only a TG134 warning)
+    ("o<m> sub\nO[103]\nG0 X1\no<m> endsub\nM2\n", 2),
+    ("o<m> sub\nN5 O[1+2] (c)\no<m> endsub\nM2\n", 2),
+    ("o<m> sub\nO#1\no<m> endsub\nM2\n", 2),
+    ("o<m> sub\nO-103\no<m> endsub\nM2\n", 2),
+    ("o<m> sub\nO103.0\no<m> endsub\nM2\n", 2),
     ("G0 X0\nO103\nG0 X1\nM2\n", None),
     ("o<m> sub\nG0 X1\no<m> endsub\nO103\nM2\n", None),
     # after an early endsub (in a block left open) the lines are the main program's

@@ -757,6 +757,19 @@ impl Checker {
         }
     }
 
+    /// A position outside a body read under its call's offset (the main program's after the
+    /// call, a body read under no call's offset), the spans set aside having been kept across
+    /// a call of a program read after the end (structure.rs, `call_offsets_rewritten`): they
+    /// join the ones in hand, as that call joined them before (review 79-lcnc79: `G54` / `G0
+    /// X-650` / `G57` / `M98 P2000` / `G0 X1100` runs at machine 800, said by the span).
+    #[cold]
+    #[inline(never)]
+    fn spans_rejoined(&mut self) {
+        if self.work_call.is_none() && self.spans_parked.is_some() {
+            self.spans_unparked(ALL_PLACES);
+        }
+    }
+
     /// Whether `span` of axis place `i` fits its travel.
     fn span_fits(&self, i: usize, span: Span) -> bool {
         self.travel
@@ -786,12 +799,17 @@ impl Checker {
             };
             let both = joined(self.spans[i], aside);
             let said = self.spans[i].is_some_and(|s| s.said);
-            if said || self.span_fits(i, both) {
+            // (kept across a call of a body read later: joined as the call joined them)
+            if self.spans_parked_call {
+                self.spans[i] = Some(both);
+            } else if said || self.span_fits(i, both) {
                 self.spans[i] = Some(Span { said, ..both });
             }
         }
         if parked.iter().any(Option::is_some) {
             self.spans_parked = Some(parked);
+        } else {
+            self.spans_parked_call = false;
         }
     }
 
@@ -3406,6 +3424,9 @@ impl Checker {
                 "line {line}: the moved axes' places"
             );
             let count = !self.config.work_offsets.is_empty();
+            if count && self.spans_parked_call {
+                self.spans_rejoined();
+            }
             for i in crate::modal::places(places & self.travel.places()) {
                 let (Some(_), Some(position)) =
                     (self.travel.of_place(i), self.machine.state.position[i])
@@ -3455,8 +3476,12 @@ impl Checker {
                 self.stats.travel_moves += 1;
                 // (a span set aside at a selection joins again under G91, however it came in
                 // force: an M72's restore, a call's; review 78-lcnc78b F4)
+                // (and at a position outside a body read under its call's offset after they
+                // were kept across that call: structure.rs, `call_offsets_rewritten`)
                 if self.spans_parked.is_some() && self.machine.state.incremental {
                     self.spans_unparked(ALL_PLACES);
+                } else if self.spans_parked_call {
+                    self.spans_rejoined();
                 }
             }
             let offset = self.work.and_then(|work| {

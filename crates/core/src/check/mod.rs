@@ -506,12 +506,7 @@ macro_rules! statements_only_block {
             // (a call of a body that keeps them, or a condition's or loop's own line,
             // loses no offset: the two are never one line)
             if !std::mem::take(&mut $s.call_keeps) && !$s.linuxcnc_flow_offsets($b) {
-                // (a call of a LinuxCNC definition after the end, Checker::later_call:
-                // only its writes, known there)
-                let unread_here = std::mem::take(&mut $s.call_unread_here);
-                let unread_only = unread_here && (!$s.offsets_lost || $s.offsets_unread_only);
-                $s.flow_rewritten($b.line, false, unread_here, never);
-                $s.offsets_unread_only = unread_only;
+                $s.call_offsets_rewritten($b.line, false, never);
             }
         }
         $s.call_keeps = false;
@@ -1063,6 +1058,10 @@ pub struct Checker {
     /// The axes (their places' bits) whose span holds a position not judged as a machine
     /// position since it last started (limits.rs, `position_not_judged`).
     span_unjudged: u16,
+    /// The spans set aside were kept across a call of a program read after the end
+    /// (structure.rs, `call_offsets_rewritten`): a later position not judged as a machine
+    /// position joins them whether they fit or not, as the call itself joined them before.
+    spans_parked_call: bool,
     /// The first word without a point that looked wrong (TG201).
     first_implicit: Option<Implicit>,
     g06_open: Option<usize>,
@@ -1906,6 +1905,7 @@ impl Checker {
             spans: [None; 9],
             spans_parked: None,
             span_unjudged: 0,
+            spans_parked_call: false,
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
@@ -3086,10 +3086,7 @@ impl Checker {
             self.linuxcnc_nurbs = tooling::Nurbs::unknown();
             self.linuxcnc_nurbs_last = None;
             if !std::mem::take(&mut self.call_keeps) {
-                let unread_here = std::mem::take(&mut self.call_unread_here);
-                let unread_only = unread_here && (!self.offsets_lost || self.offsets_unread_only);
-                self.flow_rewritten(b.line, calls, unread_here, never);
-                self.offsets_unread_only = unread_only;
+                self.call_offsets_rewritten(b.line, calls, never);
             }
         }
         self.call_keeps = false;

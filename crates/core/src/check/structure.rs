@@ -454,6 +454,41 @@ impl Checker {
         }
     }
 
+    /// A jump or call on `line` the checker does not follow: the offsets may be rewritten
+    /// there ([`Checker::offsets_rewritten`]), unless it is a call of a program read after
+    /// the end only ([`Checker::call_of_unread`]: a LinuxCNC definition or FANUC-style `O`
+    /// program, a Haas's local subprogram), whose writes are known where its lines are read
+    /// ([`Checker::offsets_unread_only`]). Such a call keeps the spans set aside at a
+    /// selection of another known system ([`Checker::selection_spans`]) for the body, which
+    /// runs under the call's system and is judged so; any position outside such a body (the
+    /// main program's after the call, a body read under no call's offset), one not judged as
+    /// a machine position in it, or a G91 joins them again, whether they fit or not, as the
+    /// call joined them before (review 78-lcnc78b F7:
+    /// `G54` / `G0 X-650.` / `G57` / `M98 P2000` /
+    /// `M30` / `O2000` / `G0 X1000.` / `M99` on G57 X -300 runs at machine -650, then 700,
+    /// and was "X spans 1650"; review 79-lcnc79 F1: its twins with such a position, kept).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn call_offsets_rewritten(&mut self, line: usize, calls: bool, never: bool) {
+        // (a call of a LinuxCNC definition after the end, Checker::later_call: only its
+        // writes, known there)
+        let unread_here = std::mem::take(&mut self.call_unread_here);
+        let unread_only = unread_here && (!self.offsets_lost || self.offsets_unread_only);
+        let parked = if unread_only {
+            self.spans_parked.take()
+        } else {
+            None
+        };
+        // (a FANUC's or Haas's first jump keeps what is in force for the calls after it:
+        // callflow.rs)
+        self.flow_rewritten(line, calls, unread_here, never);
+        if parked.is_some() {
+            self.spans_parked = parked;
+            self.spans_parked_call = true;
+        }
+        self.offsets_unread_only = unread_only;
+    }
+
     /// A call of the program `key`, not read yet: what it writes is known where its lines
     /// are read, at the file's end (a G54-G59 of the main's own after the call judged, held
     /// to then: [`Checker::work_unread_reselected`]).
@@ -2094,13 +2129,23 @@ impl Checker {
         let [label] = calls.as_slice() else {
             return;
         };
-        let key = super::called::Key::Label(label.clone());
+        self.later_call_of(b, label);
+    }
+
+    /// [`Checker::later_call`] of `label` (`o300` for a main program's `M98 P300`: the one
+    /// implementation of both forms' calls of a definition written after the end,
+    /// [`Checker::linuxcnc_m98_later`]).
+    fn later_call_of(&mut self, b: &BlockView<'_>, label: &[u8]) {
+        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+            return;
+        }
+        let key = super::called::Key::Label(label.to_vec());
         if label.len() < 2 || crate::statement::computed_label(label) || self.read_before(&key) {
             return;
         }
         let labels = self.later_called.get_or_insert_with(Vec::new);
         let index = labels.iter().position(|l| l == label).unwrap_or_else(|| {
-            labels.push(label.clone());
+            labels.push(label.to_vec());
             labels.len() - 1
         });
         let key = LATER_DEFINITION + index as i64;
@@ -2177,19 +2222,40 @@ impl Checker {
     /// while a block skips too (`rs274 -g`; LCNC_BMC20's `toolchange.ngc`, an `O103` typed
     /// for `O103 endif`).
     fn bare_o_in_definition(&mut self, b: &BlockView<'_>) {
+        // (signed, `O103.0`, or a parameter or expression, `O[103]`, `O#1`: rs274 reads the
+        // label as a whole number, read_integer_value, and refuses each alike; review 78-lcnc78
+        // N2. A value known not whole, `O103.5`, is refused otherwise: "Non integer value for
+        // integer")
         let bare = |w: &Word<'_>| {
             w.letter == b'O'
                 && w.index.is_empty()
-                && w.sign.is_empty()
-                && !w.point
-                && w.expression.is_empty()
-                && !w.number.is_empty()
+                && (!w.expression.is_empty() || !w.number.is_empty())
         };
-        let o = match b.words {
-            [o] | [_, o] if bare(o) => o,
+        let k = match b.words {
+            [o] if bare(o) => 0,
+            [_, o] if bare(o) => 1,
             _ => return,
         };
+        let o = &b.words[k];
         if b.words.len() == 2 && b.words[0].letter != b'N' {
+            return;
+        }
+        let whole = if o.expression.is_empty() {
+            std::str::from_utf8(o.number)
+                .ok()
+                .and_then(|n| n.parse::<f64>().ok())
+                .is_some_and(|v| v.fract() == 0.0)
+        } else {
+            // (a decimal in it, `O[103.5]`: not surely whole)
+            !o.expression.contains(&b'.')
+                && self
+                    .readable
+                    .get(k)
+                    .copied()
+                    .flatten()
+                    .is_none_or(|v| v.is_whole())
+        };
+        if !whole {
             return;
         }
         // (a definition after the main program's end is read only where a call seeks it;
@@ -5477,7 +5543,16 @@ impl Checker {
         }
         let label = format!("o{n}").into_bytes();
         if self.linuxcnc_defined.contains(&label) {
+            // (a definition read before the main program's call is of the o-word form)
+            if !self.main_ended() && self.linuxcnc_runs_surely() && !self.linuxcnc_dead() {
+                self.linuxcnc_m98_of_sub(b, n);
+            }
             return;
+        }
+        // (its work offset, distance mode and units kept for the body read after the end,
+        // as an `o300 call`'s are: review 78-lcnc78 N1)
+        if !self.config.work_offsets.is_empty() && !self.early_on {
+            self.later_call_of(b, &label);
         }
         self.linuxcnc_later.unread = true;
         if self.linuxcnc_runs_surely() && !self.main_ended() {
@@ -5491,6 +5566,26 @@ impl Checker {
             }
         }
         debug_assert_eq!(self.linuxcnc_motion, LinuxCncMotion::Unknown);
+    }
+
+    /// TG412: the main program's `M98 P300` (surely run) of an `o300 sub` defined before it:
+    /// rs274 2.9 refuses it where it returns to the definition ("'O.... sub' subroutine must
+    /// be called with 'O.... call'", interp_o_word.cc convert_control_functions; `rs274 -g`,
+    /// review 78-lcnc78 M1, M2), said at the call.
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_m98_of_sub(&mut self, b: &BlockView<'_>, n: i64) {
+        let message = format!(
+            "'O.... sub' subroutine must be called with 'O.... call' (rs274ngc): M98 P{n} \
+             reaches o{n} sub, a definition of the o-word form written before it, which \
+             rs274 2.9 runs only for an o{n} call"
+        );
+        let column = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'M')
+            .map_or(1, |w| w.column);
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 
     /// LinuxCNC: a move without a motion code or arc word (`b`) under the caller's G2/G3
@@ -7761,7 +7856,11 @@ impl WorkCall {
     pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
         // (a LinuxCNC definition after the end: its label, the call's)
         let program = match number {
-            Some(n) if n >= LATER_DEFINITION => call.trim_end_matches(" call").to_string(),
+            // (an `M98 P300` of LinuxCNC's FANUC-style `O300`: its O number)
+            Some(n) if n >= LATER_DEFINITION => match call.strip_prefix("M98 P") {
+                Some(p) => format!("O{p}"),
+                None => call.trim_end_matches(" call").to_string(),
+            },
             Some(n) => program_name(n),
             None => "the program".to_string(),
         };
