@@ -747,6 +747,111 @@ impl Checker {
         }
     }
 
+    /// Where a body read after the main program's end begins (structure.rs,
+    /// `local_body_begin`), the main program in hand until then: the work system it ended in
+    /// and the axes whose values are known under it ([`Checker::selection_known`]), where
+    /// every position it made was placed (no call lost its G90/G91), no span is set aside
+    /// already and the only program it called whose writes are not known yet is this body
+    /// (`key`: what it writes is known at its end, [`Checker::body_spans_end`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_spans_known(&mut self, key: i64) -> Option<(i64, u16)> {
+        if self
+            .in_hand
+            .is_some_and(|n| n >= super::structure::LOCAL_BODY)
+            || self.mode_lost_codes.is_some()
+            || self.spans_parked.is_some()
+            || self.offsets_written.unread.iter().any(|&k| k != key)
+        {
+            return None;
+        }
+        let from = self.work?;
+        let unread = std::mem::take(&mut self.offsets_written.unread);
+        let open = self.open_definition.take();
+        let known = self.selection_known(from);
+        self.offsets_written.unread = unread;
+        self.open_definition = open;
+        (known != 0).then_some((from, known))
+    }
+
+    /// The body begun ([`Checker::body_spans_known`]: `ended`, the main program's system at
+    /// its end and the axes known there) runs under its calls' system, another: the main
+    /// program's positions and the body's are each judged as machine positions, so the span
+    /// in hand (the main program's, in its system's work coordinates) is set aside, as at a
+    /// selection ([`Checker::selection_spans`]): the real run keeps the machine position
+    /// across a G54-G59 (LinuxCNC interp_convert.cc `convert_coordinate_system`; FANUC and
+    /// Haas: selecting a work system moves no axis). `G54` / `o2000 call` / `G57` / `G0
+    /// X800.` / `M2` / `o2000 sub` / `G0 X-740.` / `o2000 endsub` on G57 X -300 runs X-740 at
+    /// machine -740 and X800 at 500, inside -762..762, and was "X spans 1540". A body
+    /// position not judged so joins them again ([`Checker::position_not_judged`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_spans_parked(&mut self, ended: Option<(i64, u16)>) {
+        let Some((from, known_from)) = ended else {
+            return;
+        };
+        let Some((work, codes)) = self
+            .work_call
+            .as_ref()
+            .filter(|w| w.work != from && w.others.is_empty())
+            .map(|w| (w.work, w.codes_at))
+        else {
+            return;
+        };
+        let call = self.work_call.take();
+        let unread = std::mem::take(&mut self.offsets_written.unread);
+        let open = self.open_definition.take();
+        let known = known_from & self.selection_known(work);
+        self.offsets_written.unread = unread;
+        self.open_definition = open;
+        self.work_call = call;
+        let mut parked = [None; 9];
+        for i in crate::modal::places(u32::from(known)) {
+            if let Some(span) = self.spans[i].filter(|s| !s.said) {
+                parked[i] = Some(span);
+                self.spans[i] = None;
+            }
+        }
+        if parked.iter().any(Option::is_some) {
+            self.spans_parked = Some(Box::new(parked));
+            self.spans_parked_body = Some(Box::new((self.offsets_written.clone(), codes)));
+        }
+    }
+
+    /// The body of [`Checker::body_spans_parked`] ends: where it wrote an offset or a
+    /// G90/G91 (the main program's positions were then not all where they were judged: a
+    /// write changes the value they ran under, a G90/G91 it leaves the mode of those after
+    /// its call), the spans set aside join the one in hand again, a span wider than the
+    /// travel said as before at its end.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_spans_end(&mut self) {
+        let Some(at_start) = self.spans_parked_body.take() else {
+            return;
+        };
+        let (written, codes) = *at_start;
+        let w = &self.offsets_written;
+        let same = w.axes == written.axes
+            && w.unread == written.unread
+            && w.moved == written.moved
+            && w.shifted == written.shifted
+            && w.maybe == written.maybe
+            && codes == self.machine.distance_codes;
+        if same {
+            return;
+        }
+        let Some(parked) = self.spans_parked.take() else {
+            return;
+        };
+        let line = self.last_line;
+        for (i, span) in parked.iter().enumerate() {
+            if let Some(span) = span {
+                self.add_to_span(i, span.least, false, line, || 1, "");
+                self.add_to_span(i, span.most, false, line, || 1, "");
+            }
+        }
+    }
+
     /// A position of axis place `i` not judged as a machine position: the span set aside for
     /// it joins the one in hand ([`Checker::spans_unparked`]).
     #[inline]
