@@ -70,19 +70,23 @@ def errors(tmp_path: Path, form: str, main: str, body: str) -> list[tuple[int, s
 
 
 def machine_moves(tmp_path: Path, text: str) -> list[float]:
-    """rs274's X of each STRAIGHT_TRAVERSE in machine coordinates (work + the G5X offset)."""
+    """rs274's X of each STRAIGHT_TRAVERSE in machine coordinates (work + the G5X offset + the
+    G92/G52 offset)."""
     var = tmp_path / "sel.var"
     lines = ["5220\t1.000000"] + [f"{n}\t{-300 / 25.4 if n == 5281 else 0.0:.9f}"
                                   for n in range(5221, 5390)]
     var.write_text("\n".join(lines) + "\n")
     out = rs274_output(tmp_path, text, ("-v", str(var)))
     assert "PROGRAM_END" in out, out
-    offset, moves = 0.0, []
+    offset, shift, moves = 0.0, 0.0, []
     for line in out.splitlines():
         if "SET_G5X_OFFSET(" in line:
             offset = float(line.split("SET_G5X_OFFSET(")[1].split(",")[1])
+        elif "SET_G92_OFFSET(" in line:
+            shift = float(line.split("SET_G92_OFFSET(")[1].split(",")[0])
         elif "STRAIGHT_TRAVERSE(" in line:
-            moves.append(float(line.split("STRAIGHT_TRAVERSE(")[1].split(",")[0]) + offset)
+            work = float(line.split("STRAIGHT_TRAVERSE(")[1].split(",")[0])
+            moves.append(work + offset + shift)
     return moves
 
 
@@ -130,9 +134,9 @@ BEYOND = [
       "haas97": (10, "X spans 1650"), "lcnc98": (10, "X spans 1650"),
       "lcnc": (10, "X spans 1650")}),
     # the body writes G57's X (G10 L2 P4 X0: G57 X 0), so the main's G57 X800 runs at machine
-    # 800: its span is not set aside (joined again at the body's end, M99 / endsub)
+    # 800: the span set aside joins the one in hand again at the G10, and X-740 makes it 1540
     ("G54 / CALL / G57 / G0 X800.", "G10 L2 P4 X0. / G0 X-740.", [-740.0, 800.0],
-     {"fanuc": (None, ""), "haas": (None, ""), "haas97": (10, "X spans 1540"),
+     {"fanuc": (None, ""), "haas": (None, ""), "haas97": (9, "X spans 1540"),
       "lcnc98": (9, "X spans 1540"), "lcnc": (9, "X spans 1540")}),
     # the body's own X-800 under G54: machine -800
     ("G54 / CALL / G57 / G0 X800.", "G0 X-800.", [-800.0, 500.0],
@@ -167,3 +171,52 @@ def test_a_real_overtravel_across_a_selection_stays_refused(
         assert [(n, m[:len(start)]) for n, m in found] == [(line, start)], found
     if form.startswith("lcnc"):
         assert machine_moves(tmp_path, program(form, main, body)) == machine
+
+
+# (body, rs274's machine X of the main program's G57 X800 after the call, or None where rs274
+# does not run it): a body that does more than move (G0-G3 by numbers) may change where the
+# main program's positions after the call run, so the span set aside at its start joins the
+# one in hand again at that block, fit or not, and is said there (review 80-sel80 R5-R12)
+CHANGED = [
+    # G57's X written after the move (G10 L2 P4 X0: machine 800 + 0)
+    ("G0 X-740. / G10 L2 P4 X0.", 800.0),
+    # ... by its parameter (#5281 = G57's X: 0)
+    ("G0 X-740. / #5281=0.", 800.0),
+    # ... by a G10 whose P is a parameter
+    ("G0 X-740. / #1=4 / G10 L2 P#1 X0.", 800.0),
+    # G10 L20 P4 X-1100. at machine -740: G57's X becomes -740 + 1100 = 360, so 800 + 360
+    ("G0 X-740. / G10 L20 P4 X-1100.", 1160.0),
+    # a G52 local shift of 400 left on: 800 - 300 + 400
+    ("G0 X-740. / G52 X400.", 900.0),
+    # G92 X-1100. at machine -740 (work -740): a shift of 360: 800 - 300 + 360
+    ("G0 X-740. / G92 X-1100.", 860.0),
+    # G20 left in force: the main's X800 is 800 in (rs274 prints inches), far beyond
+    ("G0 X-740. / G20", None),
+]
+
+
+@pytest.mark.parametrize("body, machine", CHANGED)
+@pytest.mark.parametrize("form", ["haas97", "lcnc98", "lcnc"])
+def test_a_body_that_may_change_the_mains_positions_joins_the_span(
+        tmp_path: Path, form: str, body: str, machine: float | None) -> None:
+    main = "G54 / CALL / G57 / G0 X800."
+    found = errors(tmp_path, form, main, body)
+    # (said at the body's second block, line 9: the span of -740 and 800, as main said it)
+    assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], found
+    if form.startswith("lcnc") and machine is not None:
+        assert machine_moves(tmp_path, program(form, main, body))[-1] == pytest.approx(machine)
+
+
+def test_a_body_calling_a_program_not_in_the_file_joins_the_span(tmp_path: Path) -> None:
+    # (O9999 is not in the file: it may write any offset or shift; kept as main, the span of
+    # -740 and 800 said at the call's line 9)
+    for form in ("haas97", "lcnc98"):
+        found = errors(tmp_path, form, "G54 / CALL / G57 / G0 X800.", "G0 X-740. / M98 P9999")
+        assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], (form, found)
+
+
+def test_a_haas_return_to_a_sequence_number_joins_the_span(tmp_path: Path) -> None:
+    # `M99 P20` returns to the caller's N20 (Haas Mill Operator's Manual, M99): past the main
+    # program's G57, so its X800 runs under G54 at machine 800, beyond; said at line 9
+    found = errors(tmp_path, "haas97", "G54 / CALL / G57 / N20 G0 X800.", "G0 X-740. / M99 P20")
+    assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], found

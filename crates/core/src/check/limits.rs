@@ -818,18 +818,51 @@ impl Checker {
         }
     }
 
+    /// A block of the body of [`Checker::body_spans_parked`]: anything but a move of G0-G3
+    /// by numbers, a sequence number, the body's own end (M99 without P, `endsub`) or a
+    /// comment -- an offset, shift, frame, units or mode code, a G10, a parameter or
+    /// variable, a call, a jump, a condition, an M or T code -- may change where the main
+    /// program's positions after the call really run (review 80-sel80 R5-R12: `G52 X400.`,
+    /// `G92 X-1100.`, `G10 L20 P4 X-1100.`, `G10 L2 P4 R180.`, `G20`, `#5281=0.`, `M98
+    /// P9999`, `M99 P20`): the spans set aside join the one in hand there
+    /// ([`Checker::body_spans_rejoined`]), as main joined them.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_block(&mut self, b: &BlockView<'_>) {
+        let plain = b.statements.iter().all(|s| s.1 == Kind::Definition)
+            && b.words.iter().all(|w| {
+                w.index.is_empty()
+                    && w.expression.is_empty()
+                    && match w.letter {
+                        b'N' | b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W'
+                        | b'I' | b'J' | b'K' | b'R' | b'F' => true,
+                        b'G' => matches!(
+                            w.number,
+                            b"0" | b"00" | b"1" | b"01" | b"2" | b"02" | b"3" | b"03"
+                        ),
+                        b'M' => {
+                            matches!(w.number, b"99") && !b.words.iter().any(|w| w.letter == b'P')
+                        }
+                        _ => false,
+                    }
+            });
+        if !plain {
+            self.body_spans_rejoined();
+        }
+    }
+
     /// The body of [`Checker::body_spans_parked`] ends: where it wrote an offset or a
     /// G90/G91 (the main program's positions were then not all where they were judged: a
     /// write changes the value they ran under, a G90/G91 it leaves the mode of those after
-    /// its call), the spans set aside join the one in hand again, a span wider than the
-    /// travel said as before at its end.
+    /// its call), the spans set aside join the one in hand again
+    /// ([`Checker::body_spans_rejoined`]).
     #[cold]
     #[inline(never)]
     pub(super) fn body_spans_end(&mut self) {
-        let Some(at_start) = self.spans_parked_body.take() else {
+        let Some(at_start) = self.spans_parked_body.as_ref() else {
             return;
         };
-        let (written, codes) = *at_start;
+        let (written, codes) = (&at_start.0, at_start.1);
         let w = &self.offsets_written;
         let same = w.axes == written.axes
             && w.unread == written.unread
@@ -838,11 +871,25 @@ impl Checker {
             && w.maybe == written.maybe
             && codes == self.machine.distance_codes;
         if same {
+            self.spans_parked_body = None;
+        } else {
+            self.body_spans_rejoined();
+        }
+    }
+
+    /// The spans set aside where a body began ([`Checker::body_spans_parked`]) join the one
+    /// in hand, fit or not, a span wider than the travel said here (the line in hand), as
+    /// main said it where the body's position joined it.
+    #[cold]
+    #[inline(never)]
+    fn body_spans_rejoined(&mut self) {
+        if self.spans_parked_body.take().is_none() {
             return;
         }
         let Some(parked) = self.spans_parked.take() else {
             return;
         };
+        self.spans_parked_call = false;
         let line = self.last_line;
         for (i, span) in parked.iter().enumerate() {
             if let Some(span) = span {
@@ -892,6 +939,11 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn spans_unparked(&mut self, axes: u16) {
+        // (set aside where a body began: fit or not, review 80-sel80 R12)
+        if self.spans_parked_body.is_some() {
+            self.body_spans_rejoined();
+            return;
+        }
         if self.early_on || self.later_shift.is_some() || self.frames.on != 0 {
             return;
         }

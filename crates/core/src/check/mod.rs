@@ -2618,6 +2618,10 @@ impl Checker {
             self.outside_ascii(b.line, b.text, b.text.len() - text.len());
         }
         self.last_line = b.line;
+        // (a body whose start set the main program's spans aside: limits.rs)
+        if self.spans_parked_body.is_some() {
+            self.body_block(b);
+        }
         let first = self.first;
         self.first = false;
         if b.percent {

@@ -580,6 +580,10 @@ impl Checker {
             self.local_body_end();
         }
         self.local_body_begin(key, main);
+        // (its first block is this one: limits.rs, `body_block`)
+        if self.spans_parked_body.is_some() {
+            self.body_block(b);
+        }
     }
 
     /// A local subprogram (Haas M97) or a LinuxCNC definition after the end, called before
