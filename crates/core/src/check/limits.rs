@@ -747,6 +747,158 @@ impl Checker {
         }
     }
 
+    /// Where a body read after the main program's end begins (structure.rs,
+    /// `local_body_begin`), the main program in hand until then: the work system it ended in
+    /// and the axes whose values are known under it ([`Checker::selection_known`]), where
+    /// every position it made was placed (no call lost its G90/G91), no span is set aside
+    /// already and the only program it called whose writes are not known yet is this body
+    /// (`key`: what it writes is known at its end, [`Checker::body_spans_end`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_spans_known(&mut self, key: i64) -> Option<(i64, u16)> {
+        if self
+            .in_hand
+            .is_some_and(|n| n >= super::structure::LOCAL_BODY)
+            || self.mode_lost_codes.is_some()
+            || self.spans_parked.is_some()
+            || self.offsets_written.unread.iter().any(|&k| k != key)
+        {
+            return None;
+        }
+        let from = self.work?;
+        let unread = std::mem::take(&mut self.offsets_written.unread);
+        let open = self.open_definition.take();
+        let known = self.selection_known(from);
+        self.offsets_written.unread = unread;
+        self.open_definition = open;
+        (known != 0).then_some((from, known))
+    }
+
+    /// The body begun ([`Checker::body_spans_known`]: `ended`, the main program's system at
+    /// its end and the axes known there) runs under its calls' system, another: the main
+    /// program's positions and the body's are each judged as machine positions, so the span
+    /// in hand (the main program's, in its system's work coordinates) is set aside, as at a
+    /// selection ([`Checker::selection_spans`]): the real run keeps the machine position
+    /// across a G54-G59 (LinuxCNC interp_convert.cc `convert_coordinate_system`; FANUC and
+    /// Haas: selecting a work system moves no axis). `G54` / `o2000 call` / `G57` / `G0
+    /// X800.` / `M2` / `o2000 sub` / `G0 X-740.` / `o2000 endsub` on G57 X -300 runs X-740 at
+    /// machine -740 and X800 at 500, inside -762..762, and was "X spans 1540". A body
+    /// position not judged so joins them again ([`Checker::position_not_judged`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_spans_parked(&mut self, ended: Option<(i64, u16)>) {
+        let Some((from, known_from)) = ended else {
+            return;
+        };
+        let Some((work, codes)) = self
+            .work_call
+            .as_ref()
+            .filter(|w| w.work != from && w.others.is_empty())
+            .map(|w| (w.work, w.codes_at))
+        else {
+            return;
+        };
+        let call = self.work_call.take();
+        let unread = std::mem::take(&mut self.offsets_written.unread);
+        let open = self.open_definition.take();
+        let known = known_from & self.selection_known(work);
+        self.offsets_written.unread = unread;
+        self.open_definition = open;
+        self.work_call = call;
+        let mut parked = [None; 9];
+        for i in crate::modal::places(u32::from(known)) {
+            if let Some(span) = self.spans[i].filter(|s| !s.said) {
+                parked[i] = Some(span);
+                self.spans[i] = None;
+            }
+        }
+        if parked.iter().any(Option::is_some) {
+            self.spans_parked = Some(Box::new(parked));
+            self.spans_parked_body = Some(Box::new((self.offsets_written.clone(), codes)));
+        }
+    }
+
+    /// A block of the body of [`Checker::body_spans_parked`]: anything but a move of G0-G3
+    /// by numbers, a sequence number, the body's own end (M99 without P, `endsub`) or a
+    /// comment -- an offset, shift, frame, units or mode code, a G10, a parameter or
+    /// variable, a call, a jump, a condition, an M or T code -- may change where the main
+    /// program's positions after the call really run (review 80-sel80 R5-R12: `G52 X400.`,
+    /// `G92 X-1100.`, `G10 L20 P4 X-1100.`, `G10 L2 P4 R180.`, `G20`, `#5281=0.`, `M98
+    /// P9999`, `M99 P20`): the spans set aside join the one in hand there
+    /// ([`Checker::body_spans_rejoined`]), as main joined them.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_block(&mut self, b: &BlockView<'_>) {
+        let plain = b.statements.iter().all(|s| s.1 == Kind::Definition)
+            && b.words.iter().all(|w| {
+                w.index.is_empty()
+                    && w.expression.is_empty()
+                    && match w.letter {
+                        b'N' | b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W'
+                        | b'I' | b'J' | b'K' | b'R' | b'F' => true,
+                        b'G' => matches!(
+                            w.number,
+                            b"0" | b"00" | b"1" | b"01" | b"2" | b"02" | b"3" | b"03"
+                        ),
+                        b'M' => {
+                            matches!(w.number, b"99") && !b.words.iter().any(|w| w.letter == b'P')
+                        }
+                        _ => false,
+                    }
+            });
+        if !plain {
+            self.body_spans_rejoined();
+        }
+    }
+
+    /// The body of [`Checker::body_spans_parked`] ends: where it wrote an offset or a
+    /// G90/G91 (the main program's positions were then not all where they were judged: a
+    /// write changes the value they ran under, a G90/G91 it leaves the mode of those after
+    /// its call), the spans set aside join the one in hand again
+    /// ([`Checker::body_spans_rejoined`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn body_spans_end(&mut self) {
+        let Some(at_start) = self.spans_parked_body.as_ref() else {
+            return;
+        };
+        let (written, codes) = (&at_start.0, at_start.1);
+        let w = &self.offsets_written;
+        let same = w.axes == written.axes
+            && w.unread == written.unread
+            && w.moved == written.moved
+            && w.shifted == written.shifted
+            && w.maybe == written.maybe
+            && codes == self.machine.distance_codes;
+        if same {
+            self.spans_parked_body = None;
+        } else {
+            self.body_spans_rejoined();
+        }
+    }
+
+    /// The spans set aside where a body began ([`Checker::body_spans_parked`]) join the one
+    /// in hand, fit or not, a span wider than the travel said here (the line in hand), as
+    /// main said it where the body's position joined it.
+    #[cold]
+    #[inline(never)]
+    fn body_spans_rejoined(&mut self) {
+        if self.spans_parked_body.take().is_none() {
+            return;
+        }
+        let Some(parked) = self.spans_parked.take() else {
+            return;
+        };
+        self.spans_parked_call = false;
+        let line = self.last_line;
+        for (i, span) in parked.iter().enumerate() {
+            if let Some(span) = span {
+                self.add_to_span(i, span.least, false, line, || 1, "");
+                self.add_to_span(i, span.most, false, line, || 1, "");
+            }
+        }
+    }
+
     /// A position of axis place `i` not judged as a machine position: the span set aside for
     /// it joins the one in hand ([`Checker::spans_unparked`]).
     #[inline]
@@ -787,6 +939,11 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn spans_unparked(&mut self, axes: u16) {
+        // (set aside where a body began: fit or not, review 80-sel80 R12)
+        if self.spans_parked_body.is_some() {
+            self.body_spans_rejoined();
+            return;
+        }
         if self.early_on || self.later_shift.is_some() || self.frames.on != 0 {
             return;
         }

@@ -1062,6 +1062,11 @@ pub struct Checker {
     /// (structure.rs, `call_offsets_rewritten`): a later position not judged as a machine
     /// position joins them whether they fit or not, as the call itself joined them before.
     spans_parked_call: bool,
+    /// The spans set aside where a body read after the main program's end began under its
+    /// calls' system, another than the one the main program ended in (limits.rs,
+    /// `body_spans_parked`): the offsets written as it began, to tell at its end whether it
+    /// wrote one (or a G90/G91: the count of those codes then).
+    spans_parked_body: Option<Box<(limits::Written, u32)>>,
     /// The first word without a point that looked wrong (TG201).
     first_implicit: Option<Implicit>,
     g06_open: Option<usize>,
@@ -1906,6 +1911,7 @@ impl Checker {
             spans_parked: None,
             span_unjudged: 0,
             spans_parked_call: false,
+            spans_parked_body: None,
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
@@ -2612,6 +2618,10 @@ impl Checker {
             self.outside_ascii(b.line, b.text, b.text.len() - text.len());
         }
         self.last_line = b.line;
+        // (a body whose start set the main program's spans aside: limits.rs)
+        if self.spans_parked_body.is_some() {
+            self.body_block(b);
+        }
         let first = self.first;
         self.first = false;
         if b.percent {

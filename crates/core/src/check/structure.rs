@@ -481,7 +481,13 @@ impl Checker {
         };
         // (a FANUC's or Haas's first jump keeps what is in force for the calls after it:
         // callflow.rs)
+        let unjudged = self.span_unjudged;
         self.flow_rewritten(line, calls, unread_here, never);
+        // (the positions after it are judged as before, their findings held to where its
+        // writes are known: a span holds no position not judged for it)
+        if unread_only {
+            self.span_unjudged = unjudged;
+        }
         if parked.is_some() {
             self.spans_parked = parked;
             self.spans_parked_call = true;
@@ -574,12 +580,21 @@ impl Checker {
             self.local_body_end();
         }
         self.local_body_begin(key, main);
+        // (its first block is this one: limits.rs, `body_block`)
+        if self.spans_parked_body.is_some() {
+            self.body_block(b);
+        }
     }
 
     /// A local subprogram (Haas M97) or a LinuxCNC definition after the end, called before
     /// it (`key`), begins: read under its calls' offset, mode and units; `main` the program
     /// in hand again at its end.
     fn local_body_begin(&mut self, key: i64, main: Option<i64>) {
+        let ended = if self.config.work_offsets.is_empty() {
+            None
+        } else {
+            self.body_spans_known(key)
+        };
         self.local_main = main;
         self.in_hand = Some(key);
         self.call_mode_begun(key);
@@ -604,6 +619,7 @@ impl Checker {
         if let Some(Some(c)) = self.call_works.get(&key) {
             self.machine.state.incremental = c.incremental;
             self.work_of_calls(key);
+            self.body_spans_parked(ended);
         }
     }
 
@@ -979,6 +995,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn work_call_end(&mut self) {
+        self.body_spans_end();
         self.work_call_tentative_end();
         if let Some(w) = self.work_call.take() {
             self.work = w.work_before;

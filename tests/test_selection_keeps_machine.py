@@ -1,0 +1,222 @@
+"""A G54-G59 selection keeps the machine position, across a call of a body written after the
+main program's end (issue 32 item 4; review 78-lcnc78b H15).
+
+Selecting another work system moves no axis: the tool's position in the new system is its
+machine position minus the new offset (LinuxCNC interp_convert.cc
+``convert_coordinate_system``; FANUC 0i-F/30i-B and Haas: G54-G59 select the work coordinate
+system, no motion). A body written after the main program's end (a FANUC's or Haas's ``O2000``
+after M30, a Haas's ``N100`` of an ``M97 P100``, LinuxCNC's ``o2000 sub`` or ``O2000`` after M2)
+runs at its call, under the system in force there, before the main program's blocks after the
+call -- which the checker reads first. Where both systems' values are known (the profile's
+[work_offsets], nothing writes them) each position is judged as a machine position, and a
+span across the two, in work coordinates, mixes positions of two offsets: the main program's
+span is set aside where the body begins under the call's other system, as at a selection.
+
+The profiles give G54 X 0 and G57 X -300 on a travel of -762 to 762 (the Haas's in mm). The
+LinuxCNC forms are run on ``rs274 -g`` (where installed) with a var file holding G57's X
+(parameter 5281 = 5221 + 20 * 3, in inches: -300 / 25.4): its STRAIGHT_TRAVERSE prints the work
+position, the machine position is that plus the SET_G5X_OFFSET in force.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from formats.profile import load_profile
+from postproc.check import check_text
+
+from .conftest import rs274_output
+
+LIMITS = ("[limits]\nX = [-762.0, 762.0]\nY = [-406.0, 406.0]\nZ = [-508.0, 10.0]\n"
+          "[work_offsets]\nG54 = { X = 0.0, Y = 0.0, Z = 0.0 }\n"
+          "G57 = { X = -300.0, Y = 0.0, Z = 0.0 }\n")
+
+BASES = {"fanuc": "fanuc-mill", "haas": "haas-mill", "haas97": "haas-mill",
+         "lcnc98": "linuxcnc", "lcnc": "linuxcnc"}
+
+
+def profile(tmp_path: Path, form: str):
+    path = tmp_path / f"{form}.toml"
+    units = 'units = "metric"\n' if BASES[form] == "haas-mill" else ""
+    path.write_text(f'name = "sel-{form}"\nbase = "{BASES[form]}"\n{units}{LIMITS}')
+    return load_profile(str(path))
+
+
+def program(form: str, main: str, body: str) -> str:
+    """`main` (blocks split at ` / `, `CALL` the call, `WHILE` / `ENDW` a one-pass loop), M30,
+    then `body` in the form's subprogram after the end."""
+    call = {"lcnc": "o2000 call", "haas97": "M97 P100"}.get(form, "M98 P2000")
+    lcnc = form.startswith("lcnc")
+    loop = ("o100 while [#1 LT 1]", "o100 endwhile") if lcnc else ("WHILE [#1 LT 1] DO1", "END1")
+    blocks = [{"CALL": call, "WHILE": loop[0], "ENDW": loop[1]}.get(b, b)
+              for b in main.split(" / ")]
+    head = ["G21 G17 G90"] if lcnc else ["O1000", "G21 G17 G90"]
+    lines = body.split(" / ")
+    if form == "lcnc":
+        tail = ["o2000 sub", *lines, "o2000 endsub"]
+    elif form == "haas97":
+        tail = [f"N100 {lines[0]}", *lines[1:], "M99"]
+    else:
+        tail = ["O2000", *lines, "M99"]
+    return "\n".join([*head, *blocks, "M30", *tail]) + "\n"
+
+
+def errors(tmp_path: Path, form: str, main: str, body: str) -> list[tuple[int, str]]:
+    text = program(form, main, body)
+    return [(f.line, f.message) for f in check_text(text, profile(tmp_path, form))
+            if f.severity == "error"]
+
+
+def machine_moves(tmp_path: Path, text: str) -> list[float]:
+    """rs274's X of each STRAIGHT_TRAVERSE in machine coordinates (work + the G5X offset + the
+    G92/G52 offset)."""
+    var = tmp_path / "sel.var"
+    lines = ["5220\t1.000000"] + [f"{n}\t{-300 / 25.4 if n == 5281 else 0.0:.9f}"
+                                  for n in range(5221, 5390)]
+    var.write_text("\n".join(lines) + "\n")
+    out = rs274_output(tmp_path, text, ("-v", str(var)))
+    assert "PROGRAM_END" in out, out
+    offset, shift, moves = 0.0, 0.0, []
+    for line in out.splitlines():
+        if "SET_G5X_OFFSET(" in line:
+            offset = float(line.split("SET_G5X_OFFSET(")[1].split(",")[1])
+        elif "SET_G92_OFFSET(" in line:
+            shift = float(line.split("SET_G92_OFFSET(")[1].split(",")[0])
+        elif "STRAIGHT_TRAVERSE(" in line:
+            work = float(line.split("STRAIGHT_TRAVERSE(")[1].split(",")[0])
+            moves.append(work + offset + shift)
+    return moves
+
+
+FORMS = ["fanuc", "haas", "haas97", "lcnc98", "lcnc"]
+
+# (main, body, the machine X of each move as rs274 runs it: all inside -762..762)
+INSIDE = [
+    # review 78-lcnc78b H15: the body's X-740 under the call's G54 (machine -740), then the
+    # main's G57 X800 (800 - 300 = 500): was "X spans 1540" (LinuxCNC, Haas M97)
+    ("G54 / CALL / G57 / G0 X800.", "G0 X-740.", [-740.0, 500.0]),
+    # ... two moves each, and Y: -740, -700 under G54; 800 - 300 = 500, 700 - 300 = 400
+    ("G54 / CALL / G57 / G0 X800. Y10. / G0 X700.", "G0 X-740. Y-5. / G0 X-700.",
+     [-740.0, -700.0, 500.0, 400.0]),
+    # review 78-lcnc78b F7: -650 under G54, then the body under the call's G57 (1000 - 300 =
+    # 700)
+    ("G54 / G0 X-650. / G57 / CALL", "G0 X1000.", [-650.0, 700.0]),
+]
+
+
+@pytest.mark.parametrize("main, body, machine", INSIDE)
+@pytest.mark.parametrize("form", FORMS)
+def test_positions_across_a_selection_are_judged_in_machine_coordinates(
+        tmp_path: Path, form: str, main: str, body: str, machine: list[float]) -> None:
+    assert errors(tmp_path, form, main, body) == []
+    if form.startswith("lcnc"):
+        assert machine_moves(tmp_path, program(form, main, body)) == machine
+
+
+# (main, body, rs274's machine X of each move, {form: (line, start of the message), or None:
+# not said}): real overtravels, each refused where main refuses it
+BEYOND = [
+    # the brief's loop: G54 X-650 (machine -650), the body under G57 (1000 - 300 = 700), then
+    # the loop's X-1100 under G54: machine -1100, beyond -762. FANUC/Haas (M98 of a later O
+    # program: the caller's G90/G91 is not known after it, TG140) by the span of -650 and
+    # 1000 at the body's line, as before.
+    ("G54 / G0 X-650. / G57 / CALL / G54 / #1=0 / WHILE / G0 X-1100. / #1=1 / ENDW",
+     "G0 X1000.", [-650.0, 700.0, -1100.0],
+     {"fanuc": (15, "X spans 1650"), "haas": (15, "X spans 1650"),
+      "haas97": (14, "X spans 2100"), "lcnc98": (9, "X goes to -1100"),
+      "lcnc": (9, "X goes to -1100")}),
+    # the brief's increment: the body leaves the tool at G57 work 1000 (machine 700), the G91
+    # X700 takes it to work 1700, machine 1400: by the span, as before
+    ("G54 / G0 X-650. / G57 / CALL / G91 / G0 X700.", "G0 X1000.", [-650.0, 700.0, 1400.0],
+     {"fanuc": (11, "X spans 1650"), "haas": (11, "X spans 1650"),
+      "haas97": (10, "X spans 1650"), "lcnc98": (10, "X spans 1650"),
+      "lcnc": (10, "X spans 1650")}),
+    # the body writes G57's X (G10 L2 P4 X0: G57 X 0), so the main's G57 X800 runs at machine
+    # 800: the span set aside joins the one in hand again at the G10, and X-740 makes it 1540
+    ("G54 / CALL / G57 / G0 X800.", "G10 L2 P4 X0. / G0 X-740.", [-740.0, 800.0],
+     {"fanuc": (None, ""), "haas": (None, ""), "haas97": (9, "X spans 1540"),
+      "lcnc98": (9, "X spans 1540"), "lcnc": (9, "X spans 1540")}),
+    # the body's own X-800 under G54: machine -800
+    ("G54 / CALL / G57 / G0 X800.", "G0 X-800.", [-800.0, 500.0],
+     {"fanuc": (9, "X goes to -800"), "haas": (9, "X goes to -800"),
+      "haas97": (8, "X goes to -800"),
+      "lcnc98": (8, "X goes to -800"), "lcnc": (8, "X goes to -800")}),
+    # the main's X1100 under G57: machine 800
+    ("G54 / CALL / G57 / G0 X1100.", "G0 X-740.", [-740.0, 800.0],
+     {"fanuc": (None, ""), "haas": (None, ""), "haas97": (6, "X goes to 800"),
+      "lcnc98": (5, "X goes to 800"), "lcnc": (5, "X goes to 800")}),
+    # the main's X-740 under G57: machine -1040
+    ("G54 / CALL / G57 / G0 X-740. / G0 X800.", "G0 X0.", [0.0, -1040.0, 500.0],
+     {"fanuc": (None, ""), "haas": (None, ""), "haas97": (6, "X goes to -1040"),
+      "lcnc98": (5, "X goes to -1040"), "lcnc": (5, "X goes to -1040")}),
+]
+
+
+@pytest.mark.parametrize("main, body, machine, said", BEYOND)
+@pytest.mark.parametrize("form", FORMS)
+def test_a_real_overtravel_across_a_selection_stays_refused(
+        tmp_path: Path, form: str, main: str, body: str, machine: list[float],
+        said: dict[str, tuple[int | None, str]]) -> None:
+    line, start = said[form]
+    found = errors(tmp_path, form, main, body)
+    if line is None:
+        # (a FANUC's or Haas's M98 of an O program written later: the caller's moves after it
+        # are not compared with the travel until its own G90/G91 (TG140), so this real
+        # overtravel is not said -- as on main; the known gap of the caller's mode after such
+        # a call)
+        assert found == [], found
+    else:
+        assert [(n, m[:len(start)]) for n, m in found] == [(line, start)], found
+    if form.startswith("lcnc"):
+        assert machine_moves(tmp_path, program(form, main, body)) == machine
+
+
+# (body, rs274's machine X of the main program's G57 X800 after the call, or None where rs274
+# does not run it): a body that does more than move (G0-G3 by numbers) may change where the
+# main program's positions after the call run, so the span set aside at its start joins the
+# one in hand again at that block, fit or not, and is said there (review 80-sel80 R5-R12)
+CHANGED = [
+    # G57's X written after the move (G10 L2 P4 X0: machine 800 + 0)
+    ("G0 X-740. / G10 L2 P4 X0.", 800.0),
+    # ... by its parameter (#5281 = G57's X: 0)
+    ("G0 X-740. / #5281=0.", 800.0),
+    # ... by a G10 whose P is a parameter
+    ("G0 X-740. / #1=4 / G10 L2 P#1 X0.", 800.0),
+    # G10 L20 P4 X-1100. at machine -740: G57's X becomes -740 + 1100 = 360, so 800 + 360
+    ("G0 X-740. / G10 L20 P4 X-1100.", 1160.0),
+    # a G52 local shift of 400 left on: 800 - 300 + 400
+    ("G0 X-740. / G52 X400.", 900.0),
+    # G92 X-1100. at machine -740 (work -740): a shift of 360: 800 - 300 + 360
+    ("G0 X-740. / G92 X-1100.", 860.0),
+    # G20 left in force: the main's X800 is 800 in (rs274 prints inches), far beyond
+    ("G0 X-740. / G20", None),
+]
+
+
+@pytest.mark.parametrize("body, machine", CHANGED)
+@pytest.mark.parametrize("form", ["haas97", "lcnc98", "lcnc"])
+def test_a_body_that_may_change_the_mains_positions_joins_the_span(
+        tmp_path: Path, form: str, body: str, machine: float | None) -> None:
+    main = "G54 / CALL / G57 / G0 X800."
+    found = errors(tmp_path, form, main, body)
+    # (said at the body's second block, line 9: the span of -740 and 800, as main said it)
+    assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], found
+    if form.startswith("lcnc") and machine is not None:
+        assert machine_moves(tmp_path, program(form, main, body))[-1] == pytest.approx(machine)
+
+
+def test_a_body_calling_a_program_not_in_the_file_joins_the_span(tmp_path: Path) -> None:
+    # (O9999 is not in the file: it may write any offset or shift; kept as main, the span of
+    # -740 and 800 said at the call's line 9)
+    for form in ("haas97", "lcnc98"):
+        found = errors(tmp_path, form, "G54 / CALL / G57 / G0 X800.", "G0 X-740. / M98 P9999")
+        assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], (form, found)
+
+
+def test_a_haas_return_to_a_sequence_number_joins_the_span(tmp_path: Path) -> None:
+    # `M99 P20` returns to the caller's N20 (Haas Mill Operator's Manual, M99): past the main
+    # program's G57, so its X800 runs under G54 at machine 800, beyond; said at line 9
+    found = errors(tmp_path, "haas97", "G54 / CALL / G57 / N20 G0 X800.", "G0 X-740. / M99 P20")
+    assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], found
