@@ -117,6 +117,13 @@ def test_fanuc_offsets_units_and_repeats(profiles, text, expected):
     # (F3's Haas form: #1 set 0 in the body, THEN G91 does not run: X31. absolute)
     ("O01000 / G20 G17 G90 G54 / G0 X0 Y0 / M97 P100 / G0 X31. / M30 / "
      "N100 #1=0 / IF [#1 EQ 1] THEN G91 / M99", [(5, 4, "X goes to 31")]),
+    # (review 80-calls80 R1: main's held "X spans" at line 6 is dropped at the return (N100
+    # leaves G91); the real position, -28 + 61 = 33 > 30, is said in its place)
+    ("O01000 / G20 G17 G90 G54 / G0 X-28. / M97 P100 / G0 X61. / M30 / N100 G91 / M99",
+     [(5, 4, "X goes to 33")]),
+    # (main's said case kept: the caller selects G54 again, N100 leaves G90: X31. absolute)
+    ("O01000 / G20 G17 G90 G54 / G0 X0 / M97 P100 / G54 / G0 X31. / M30 / "
+     "N100 G91 G0 X1. / G90 / M99", [(6, 4, "X goes to 31")]),
     # (integers are increments of 0.0001 in on a Haas: X20 is 0.002 in; nothing)
     ("O01000 / G20 G17 G90 G54 / G0 X0 Y0 / M97 P100 / G0 X20 / G0 X20 / M30 / "
      "N100 G91 / M99", []),
@@ -142,6 +149,10 @@ def test_haas_calls_of_later_bodies(profiles, text, expected):
     # (the same with no G55: X800. absolute under G54, rs274 -g 800)
     ("G21 G17 G90 G54 / G0 X0 Y0 / o2000 call / G0 X800. / M2 / o2000 sub / "
      "o1 if [0] / G91 / o1 endif / o2000 endsub", [(4, 4, "X goes to 800")]),
+    # (review 80-calls80 R1: rs274 -g -700, then 800; main's held span at line 4 dropped at
+    # the endsub, the position said)
+    ("G21 G17 G90 G54 / G0 X-700 Y0 Z0 / o2000 call / G0 X1500 / M2 / o2000 sub / G91 / "
+     "o2000 endsub", [(4, 4, "X goes to 800")]),
     # (a condition not known: silent, as main)
     ("G21 G17 G90 G54 / G0 X0 Y0 / o2000 call / G0 X500. / G0 X500. / M2 / o2000 sub / "
      "o1 if [#1 GT 0] / G91 / o1 endif / o2000 endsub", []),

@@ -698,9 +698,9 @@ impl Checker {
                          program writes no work offset"
                     ),
                     (None, Some(_)) => format!(
-                        "read in G{g}: the program {name} of line {line} runs leaves G{g} \
-                         and writes no work offset; G90/G91 are modal and its return \
-                         restores neither"
+                        "read in G{g}: the program that {name} of line {line} runs \
+                         leaves G{g} and writes no work offset; G90/G91 are modal and its \
+                         return restores neither"
                     ),
                     (None, None) => format!(
                         "read in G{g}, in force at {name} of line {line}, whose program \
