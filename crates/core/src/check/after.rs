@@ -70,6 +70,10 @@ impl Checker {
     #[cold]
     #[inline(never)]
     pub(super) fn after_return(&mut self, b: &BlockView<'_>, ends: bool) {
+        if !ends && self.resumed.is_some() {
+            // (the caller's moves after its calls judged: resumed.rs)
+            self.resumed_returned(b);
+        }
         if ends
             || b.words
                 .iter()

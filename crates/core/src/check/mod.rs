@@ -53,6 +53,7 @@ mod motion;
 mod polar;
 mod reach;
 mod reference;
+mod resumed;
 mod shapes;
 mod structure;
 #[cfg(test)]
@@ -1717,6 +1718,11 @@ pub struct Checker {
     /// M30, a LinuxCNC definition after M2) whose caller's findings after them are held to
     /// the body's return ([`callmode`]).
     call_modes: Vec<callmode::CallMode>,
+    /// The caller's moves after a call of a body read later, judged at its return
+    /// ([`resumed`]).
+    resumed: Option<Box<resumed::Resumed>>,
+    /// The line of the last block that calls, and its X and Y before it ([`resumed`]).
+    call_from: (usize, [Option<Dec>; 2]),
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
@@ -2050,6 +2056,8 @@ impl Checker {
             later_shifts: Vec::new(),
             work_call: None,
             call_modes: Vec::new(),
+            resumed: None,
+            call_from: (0, [None; 2]),
             flow_calls: None,
             units_unknown: false,
             early: None,
@@ -2517,6 +2525,10 @@ impl Checker {
             b.line
         );
         self.drawn_block(b);
+        // (after a call of a body read later: resumed.rs)
+        if self.resumed.is_some() {
+            self.resumed_block(b);
+        }
         // (a forward jump to note, or runs where one is taken to feed: params.rs)
         if self.after_block {
             self.jump_runs(b);
@@ -3074,6 +3086,10 @@ impl Checker {
                 self.shift_call(b);
             }
             self.call_made(b);
+        }
+        if calls {
+            // (where a call of a body read later is made from: resumed.rs)
+            self.call_from = (b.line, [before.xyz[0], before.xyz[1]]);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             let never = !calls && self.flow_never(b);

@@ -504,6 +504,7 @@ impl Checker {
             ..Default::default()
         };
         self.call_unread_here = true;
+        self.resumed_called(key);
         self.flow_unread(key);
         self.offsets_written.then(&unread);
         self.offset_writer(&unread, false);
@@ -2058,6 +2059,7 @@ impl Checker {
                     && self.open_definition.is_none()
                     && self.in_hand.is_some_and(|n| n >= LATER_DEFINITION) =>
             {
+                self.resumed_returned(b);
                 self.call_mode_returned(true);
                 self.local_body_end();
                 self.call_keeps = true;

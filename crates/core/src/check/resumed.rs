@@ -1,0 +1,732 @@
+//! The caller's moves after a call of a body read later in the file, judged where the body
+//! leaves the tool and in the mode it leaves (issue 32 item 4, calls80): a FANUC's or Haas's
+//! `M98 P2000` of an `O2000` after the main's M30, a Haas's `M97 P100`, a LinuxCNC
+//! `o2000 call` (or `M98 P2000`) of a definition after M2.
+//!
+//! G90/G91 are modal and a return restores neither (FANUC 0i-F / 30i-B Operator's Manual,
+//! "Subprogram call (M98)" and M99; Haas Mill Operator's Manual, M97, M98, M99; LinuxCNC
+//! keeps a subroutine's G91 after its `endsub`, `rs274 -g`). The checker reads the file in
+//! order: at the caller's moves after such a call the body is not read yet, so main took
+//! the caller's mode as not known (FANUC, Haas M98) or read it on and dropped what it held
+//! where the body wrote another (Haas M97, LinuxCNC), and the offsets as not known: a real
+//! overtravel passed. Here the caller's plain moves after the call are kept (their words,
+//! not judged), and judged at the body's return, where its end is known: from the position
+//! the body leaves, in the mode it leaves, under the call's work offset, which a body that
+//! writes none keeps.
+//!
+//! Only where all of it is surely known: a call of the first program of the file, not
+//! behind a jump or condition, under a work offset known (no G10, shift, frame, polar mode),
+//! one run (no L, Q), in a block that moves nothing; the caller's blocks from the call to
+//! the first that is not a plain G00/G01 move (a statement, a parameter, another call, any
+//! other G or M code ends them); a body of plain moves and arcs, G90/G91, feed and speed
+//! only, whose every statement is known not to change its run -- a LinuxCNC `o1 if [0]`
+//! block (its lines never run: rs274 skips them), a FANUC `IF [..] THEN` whose condition
+//! the values known make false, a `GOTO n` or `IF [..] GOTO n` whose block `Nn` is the next
+//! one (either way the run goes on there) -- and returns with a plain M99 or `endsub`.
+//! Anything else leaves main's reading as it was (unknown: silent).
+//!
+//! `G54` / `G90 G0 X0` / `M98 P2000` / `G0 X500.` / `G0 X500.` / `M30` / `O2000` / `G91` /
+//! `M99` (fanuc-mill, X -762..762, G54 X 0): O2000 leaves G91 and the tool at X0, so the
+//! caller's two blocks are increments to X500 and X1000: "X goes to 1000" at the second.
+
+use super::{BlockView, Checker, Finding, Placed};
+use crate::lex::Family;
+use crate::rules::Rule;
+use crate::statement::Kind;
+
+/// The axes judged (X, Y: the places in [`super::AXES`]); Z carries the tool length offset.
+const JUDGED: [usize; 2] = [0, 1];
+
+/// The most caller's moves kept after one call.
+const MOVES: usize = 256;
+
+/// What the calls and the body read so far keep ([`Checker::resumed`]).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Resumed {
+    calls: Vec<Call>,
+    /// The body being read (its key), or read.
+    body: Option<Body>,
+    /// The program in hand at the first call (the caller).
+    caller: Option<i64>,
+    /// The body returned in the block in hand: its calls judged at the block's end.
+    due: bool,
+}
+
+/// A call kept, and the caller's moves after it.
+#[derive(Debug, Clone)]
+struct Call {
+    key: i64,
+    line: usize,
+    /// The caller's distance mode at the call, and its work position there (its units).
+    incremental: bool,
+    start: [Option<f64>; 2],
+    /// The work offset (G`work`) in force, each judged axis's value (the profile's units).
+    work: i64,
+    offset: [Option<crate::decimal::Dec>; 2],
+    /// The caller's units to the profile's.
+    factor: f64,
+    /// The motion code in force at the call.
+    motion: Option<i64>,
+    /// The call as written (`M98 P2000`, `o2000 call`).
+    named: String,
+    moves: Vec<Move>,
+    /// The caller's blocks are still kept (none ended them yet).
+    recording: bool,
+    /// The call's own block was seen and is a plain call.
+    checked: bool,
+}
+
+/// One of the caller's blocks after the call.
+#[derive(Debug, Clone)]
+struct Move {
+    line: usize,
+    /// The caller's own G90 (false) or G91 (true) in force from this block, where it wrote
+    /// one since the call.
+    own: Option<bool>,
+    /// It writes G00 or G01.
+    linear: bool,
+    axes: Vec<(usize, f64, usize)>,
+}
+
+/// Where the body leaves an axis.
+#[derive(Debug, Clone, Copy)]
+enum End {
+    /// At this work position (written in G90 and moved from there).
+    At(f64),
+    /// This far from where it was called (in G91 only, or not moved: 0).
+    By(f64),
+    Unknown,
+}
+
+/// The body read.
+#[derive(Debug, Clone)]
+struct Body {
+    key: i64,
+    /// Every block was read and is known (see the module's list).
+    sure: bool,
+    /// Its G90/G91 in force (None: the call's, not written yet), the last it wrote.
+    mode: Option<bool>,
+    wrote: Option<bool>,
+    /// The motion code it leaves (None: the call's).
+    motion: Option<i64>,
+    ends: [End; 2],
+    /// A LinuxCNC `oN if [0]` open (its label): its lines never run.
+    dead: Option<Vec<u8>>,
+    /// A `GOTO n` read: the next block must be `Nn`.
+    goto: Option<Vec<u8>>,
+    /// It returned (M99, `endsub`).
+    returned: bool,
+    /// Its blocks read so far.
+    blocks: usize,
+    /// The variables it set to a number, still holding it, and their values.
+    set: Vec<(u64, crate::decimal::Dec)>,
+}
+
+/// A Custom Macro B assignment statement of a local or common variable (`#1=0`, `#100 =
+/// #100 + 1`; no system variable, nothing indirect): its number, and its value where it is
+/// a number written there.
+fn local_assignment(text: &[u8]) -> Option<(u64, Option<crate::decimal::Dec>)> {
+    let rest = text.trim_ascii_start().strip_prefix(b"#")?;
+    let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+    let n = crate::text::digits_value(&rest[..digits]).filter(|n| (1..1000).contains(n))?;
+    let value = rest[digits..].trim_ascii_start().strip_prefix(b"=")?;
+    let value = std::str::from_utf8(value.trim_ascii()).ok()?;
+    Some((n, crate::decimal::Dec::parse(value)))
+}
+
+/// A condition's text (in capitals) with each variable it reads (`#1`, `#100`) replaced by
+/// the number the body set it to: None where one was not set so, or is indirect (`#[..]`).
+fn with_values(text: &[u8], set: &[(u64, crate::decimal::Dec)]) -> Option<Vec<u8>> {
+    let mut out = Vec::with_capacity(text.len());
+    let mut k = 0;
+    while k < text.len() {
+        if text[k] != b'#' {
+            out.push(text[k]);
+            k += 1;
+            continue;
+        }
+        let rest = &text[k + 1..];
+        let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+        let n = crate::text::digits_value(&rest[..digits])?;
+        let &(_, v) = set.iter().find(|&&(m, _)| m == n)?;
+        out.extend_from_slice(v.to_string().as_bytes());
+        k += 1 + digits;
+    }
+    Some(out)
+}
+
+impl Checker {
+    /// A call of the body `key`, not read yet, in the block in hand: kept where the caller
+    /// and the offsets are known ([`Resumed`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn resumed_called(&mut self, key: i64) {
+        let in_hand = self.in_hand;
+        if let Some(c) = self
+            .resumed
+            .as_mut()
+            .and_then(|r| r.calls.last_mut())
+            .filter(|c| c.line == self.last_line && !c.checked)
+        {
+            // (LinuxCNC's `M98 P2000` of an `O2000` after M2: kept by its number, then by
+            // the definition's key, which its body is read under)
+            c.key = key;
+            return;
+        }
+        if let Some(r) = self.resumed.as_mut() {
+            // (a second call: the moves after the first end here, and its own start is
+            // where the first run left the tool, which the caller's reading does not know:
+            // review 80-calls80 W1)
+            for c in &mut r.calls {
+                c.recording = false;
+            }
+            return;
+        }
+        let family = self.config.family;
+        let work = self.work.filter(|_| {
+            !self.offsets_lost
+                && !self.offsets_written.any()
+                && !self.offsets_written.moved
+                && self.work_guessed.is_none()
+                && !self.shifts_on()
+        });
+        let s = &self.machine.state;
+        if !matches!(family, Family::MacroB | Family::LinuxCnc)
+            || self.machine.settings.fanuc_lathe
+            || self.ended_line != 0
+            || self.sub_ended
+            || self.programs > 1
+            || self.jumped
+            || self.early_on
+            || self.open_definition.is_some()
+            || !self.linuxcnc_open_flow.is_empty()
+            || self.frames_on()
+            || self.transformed.is_some()
+            || s.polar
+            || s.cycle.is_some()
+            || self.units_unknown
+            || !matches!(s.motion, None | Some(0) | Some(1))
+        {
+            return;
+        }
+        let Some(work) = work else {
+            return;
+        };
+        let mut offset = [None; 2];
+        for &(g, axis, value) in &self.config.work_offsets {
+            if g != work {
+                continue;
+            }
+            if let Some(k) = JUDGED.iter().position(|&i| super::AXES[i] == axis) {
+                offset[k] = Some(value);
+            }
+        }
+        // (LinuxCNC's M98 forgets the position before its later call is kept: the one
+        // before the block, which moves nothing)
+        let from = self.call_from;
+        let start = JUDGED.map(|i| {
+            s.position[i]
+                .or(from.1[i].filter(|_| from.0 == self.last_line))
+                .map(|v| v.to_f64())
+        });
+        let call = Call {
+            key,
+            line: self.last_line,
+            incremental: s.incremental,
+            start,
+            work,
+            offset,
+            factor: self.to_profile_units(false),
+            motion: s.motion,
+            named: String::new(),
+            moves: Vec::new(),
+            recording: true,
+            checked: false,
+        };
+        let r = self.resumed.get_or_insert_with(Box::default);
+        r.caller = in_hand;
+        r.calls.push(call);
+    }
+
+    /// After block `b` is read: the caller's moves after a call kept, the body's blocks
+    /// followed ([`Resumed`]).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn resumed_block(&mut self, b: &BlockView<'_>) {
+        let Some(mut r) = self.resumed.take() else {
+            return;
+        };
+        if std::mem::take(&mut r.due) {
+            self.resumed_finished(&r);
+        } else if let Some(body) = r.body.as_mut() {
+            if !body.returned && self.in_hand == Some(body.key) {
+                self.resumed_body(body, b);
+                if body.returned {
+                    self.resumed_finished(&r);
+                }
+            } else if !body.returned {
+                // (another program begins before its return)
+                body.sure = false;
+            }
+        } else if let Some(&key) = r
+            .calls
+            .iter()
+            .map(|c| &c.key)
+            .find(|&&k| self.in_hand == Some(k) && r.caller != Some(k))
+        {
+            // (the body begins: its first block, `O2000`, `N100 ...`, `o100 sub`)
+            let mut body = Body {
+                key,
+                sure: r.calls.iter().all(|c| c.key != key || c.checked),
+                mode: None,
+                wrote: None,
+                motion: None,
+                ends: [End::By(0.0); 2],
+                dead: None,
+                goto: None,
+                returned: false,
+                blocks: 0,
+                set: Vec::new(),
+            };
+            for c in &mut r.calls {
+                c.recording = false;
+            }
+            self.resumed_body(&mut body, b);
+            let returned = body.returned;
+            r.body = Some(body);
+            if returned {
+                self.resumed_finished(&r);
+            }
+        } else {
+            self.resumed_caller(&mut r, b);
+        }
+        self.resumed = Some(r);
+    }
+
+    /// A block of the caller's after the call (or the call's own): kept where it is a plain
+    /// move, the keeping ended at any other.
+    fn resumed_caller(&self, r: &mut Resumed, b: &BlockView<'_>) {
+        let Some(c) = r.calls.last_mut().filter(|c| c.recording) else {
+            return;
+        };
+        if self.in_hand != r.caller {
+            c.recording = false;
+            return;
+        }
+        if b.line == c.line && !c.checked {
+            // (the call's own block: no move, no repeat or entry at a sequence number, no
+            // skip; the call's statement or M98/M97 P, its N)
+            // (a FANUC's `M98 P22000` runs O2000 twice: the digits above the last four are
+            // the repeat count, 0i-F "Subprogram call (M98)"; review 80-calls80 W2)
+            let names = |k: usize| {
+                c.key >= super::structure::LOCAL_BODY
+                    || self.readable.get(k).copied().flatten().is_some_and(|v| {
+                        v.is_whole() && v.trunc() == c.key && (self.config.haas || c.key <= 9999)
+                    })
+            };
+            let plain = !b.skip
+                && b.skip_within.is_none()
+                && b.statements.iter().all(|s| s.1 == Kind::Call)
+                && b.words.iter().enumerate().all(|(k, w)| {
+                    (w.letter != b'P' || names(k))
+                        && w.index.is_empty()
+                        && w.expression.is_empty()
+                        && matches!(w.letter, b'N' | b'M' | b'P')
+                });
+            c.checked = plain;
+            c.recording = plain;
+            c.named = match b.statements.iter().find(|s| s.1 == Kind::Call) {
+                Some(&(_, _, text)) => String::from_utf8_lossy(text.trim_ascii()).into_owned(),
+                None => b
+                    .words
+                    .iter()
+                    .filter(|w| matches!(w.letter, b'M' | b'P'))
+                    .map(|w| w.token())
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            };
+            return;
+        }
+        if !c.checked {
+            c.recording = false;
+            return;
+        }
+        let mut m = Move {
+            line: b.line,
+            own: c.moves.last().and_then(|m| m.own),
+            linear: false,
+            axes: Vec::new(),
+        };
+        let plain = !b.skip
+            && b.skip_within.is_none()
+            && b.statements.is_empty()
+            && b.words.iter().enumerate().all(|(k, w)| {
+                let Some(v) = self.readable.get(k).copied().flatten() else {
+                    return false;
+                };
+                if !w.index.is_empty() || !w.expression.is_empty() {
+                    return false;
+                }
+                let code = || v.is_whole().then(|| v.trunc());
+                match w.letter {
+                    b'N' | b'F' | b'S' | b'T' | b'Z' => true,
+                    b'X' | b'Y' => {
+                        let i = usize::from(w.letter == b'Y');
+                        m.axes.push((i, v.to_f64(), w.column));
+                        true
+                    }
+                    b'G' => match code() {
+                        Some(0 | 1) => {
+                            m.linear = true;
+                            true
+                        }
+                        Some(90) => {
+                            m.own = Some(false);
+                            true
+                        }
+                        Some(91) => {
+                            m.own = Some(true);
+                            true
+                        }
+                        Some(17 | 40 | 80 | 94) => true,
+                        _ => false,
+                    },
+                    b'M' => matches!(code(), Some(0 | 1 | 3 | 4 | 5 | 7 | 8 | 9)),
+                    _ => false,
+                }
+            });
+        if !plain || c.moves.len() >= MOVES {
+            c.recording = false;
+            return;
+        }
+        c.moves.push(m);
+    }
+
+    /// A block of the body (its start to its return): followed, or the body not known.
+    fn resumed_body(&self, body: &mut Body, b: &BlockView<'_>) {
+        if !body.sure {
+            return;
+        }
+        let first = body.blocks == 0;
+        body.blocks += 1;
+        let linuxcnc = self.config.family == Family::LinuxCnc;
+        if let Some(target) = body.goto.take() {
+            // (a jump to the next block: the run goes on there, taken or not)
+            let here = b
+                .words
+                .first()
+                .filter(|w| w.letter == b'N' && w.index.is_empty() && w.expression.is_empty());
+            let number = |d: &[u8]| crate::text::digits_value(d.trim_ascii());
+            if here
+                .is_none_or(|w| number(w.number).is_none() || number(w.number) != number(&target))
+            {
+                body.sure = false;
+                return;
+            }
+        }
+        let mut returns = false;
+        for &(_, kind, text) in b.statements {
+            let keyword = if linuxcnc {
+                crate::statement::o_keyword(text)
+            } else {
+                None
+            };
+            if let Some(dead) = &body.dead {
+                // (the lines of a block known not to run, to its endif)
+                if crate::statement::o_label(text) == *dead {
+                    if keyword.as_deref() == Some(b"endif".as_slice()) {
+                        body.dead = None;
+                    } else {
+                        body.sure = false;
+                    }
+                }
+                continue;
+            }
+            match (kind, keyword.as_deref()) {
+                (Kind::Definition, Some(b"sub")) => {}
+                (Kind::Definition, Some(b"endsub")) => returns = true,
+                (Kind::Flow, Some(b"if")) => {
+                    let lower = text.to_ascii_lowercase();
+                    let at = lower
+                        .windows(2)
+                        .position(|w| w == b"if")
+                        .map_or(lower.len(), |k| k + 2);
+                    let condition: Vec<u8> = lower[at..]
+                        .iter()
+                        .copied()
+                        .filter(|c| !crate::lex::blank(*c))
+                        .collect();
+                    if matches!(condition.as_slice(), b"[0]" | b"[0.0]" | b"[0.]") {
+                        body.dead = Some(crate::statement::o_label(text));
+                    } else {
+                        body.sure = false;
+                    }
+                }
+                (Kind::Flow, None) if !linuxcnc && !b.skip && b.skip_within.is_none() => {
+                    let upper = text.to_ascii_uppercase();
+                    let t = upper.trim_ascii_start();
+                    let is_if = t.starts_with(b"IF");
+                    if t.windows(4).any(|w| w == b"THEN") {
+                        // (`IF [..] THEN ..` whose condition is known false: nothing runs;
+                        // known from numbers and the body's own constants only, not from
+                        // values the caller may have changed after the call, review
+                        // 80-calls80 W3)
+                        if !(is_if
+                            && with_values(t, &body.set)
+                                .is_some_and(|t| self.condition_known(&t) == Some(false)))
+                        {
+                            body.sure = false;
+                        }
+                    } else if let Some((_, digits, _)) = super::targets::goto_words(&upper)
+                        .filter(|(_, d, r)| !d.is_empty() && r.trim_ascii().is_empty())
+                    {
+                        body.goto = Some(digits.to_vec());
+                    } else {
+                        body.sure = false;
+                    }
+                }
+                // (its `O2000` line; a LinuxCNC `O2000` of the M98 form)
+                (Kind::Name, _) if !linuxcnc => {}
+                (Kind::Definition | Kind::Name, Some(b"")) if first => {}
+                // (a local or common variable's value: no mode, offset or position)
+                (Kind::Assignment, _) if !linuxcnc => match local_assignment(text) {
+                    Some((n, value)) => {
+                        body.set.retain(|&(m, _)| m != n);
+                        body.set.extend(value.map(|v| (n, v)));
+                    }
+                    None => body.sure = false,
+                },
+                _ => body.sure = false,
+            }
+        }
+        if body.dead.is_some() {
+            // (a line inside it: not run)
+            return;
+        }
+        if body.returned {
+            body.sure = false;
+            return;
+        }
+        if b.skip || b.skip_within.is_some() {
+            body.sure = false;
+            return;
+        }
+        let mut codes = (None, None);
+        let mut axes: Vec<(usize, f64)> = Vec::new();
+        for (k, w) in b.words.iter().enumerate() {
+            if w.letter == b'#' && !linuxcnc {
+                // (`#1=0`: a local or common variable's value, no mode, offset or position)
+                let n = crate::text::digits_value(w.index).filter(|n| (1..1000).contains(n));
+                let Some(n) = n else {
+                    body.sure = false;
+                    return;
+                };
+                body.set.retain(|&(m, _)| m != n);
+                let written = [w.sign, w.number].concat();
+                let value = std::str::from_utf8(&written)
+                    .ok()
+                    .and_then(crate::decimal::Dec::parse);
+                if let Some(v) = value.filter(|_| w.expression.is_empty()) {
+                    body.set.push((n, v));
+                }
+                continue;
+            }
+            if !w.index.is_empty() || !w.expression.is_empty() {
+                body.sure = false;
+                return;
+            }
+            let Some(v) = self.readable.get(k).copied().flatten() else {
+                // (an O word's number is no value here)
+                if w.letter == b'O' && (!linuxcnc || first) {
+                    continue;
+                }
+                body.sure = false;
+                return;
+            };
+            let code = v.is_whole().then(|| v.trunc());
+            let known = match w.letter {
+                b'N' | b'F' | b'S' | b'Z' | b'I' | b'J' | b'K' | b'R' => true,
+                b'O' => !linuxcnc || first,
+                b'X' | b'Y' => {
+                    axes.push((usize::from(w.letter == b'Y'), v.to_f64()));
+                    true
+                }
+                b'G' => match code {
+                    Some(c @ 0..=3) => {
+                        codes.0 = Some(c);
+                        true
+                    }
+                    Some(c @ (90 | 91)) => {
+                        codes.1 = Some(c == 91);
+                        true
+                    }
+                    Some(17 | 40 | 80 | 94) => true,
+                    _ => false,
+                },
+                b'M' => match code {
+                    Some(0 | 1 | 3 | 4 | 5 | 7 | 8 | 9) => true,
+                    Some(99) => {
+                        returns = true;
+                        true
+                    }
+                    _ => false,
+                },
+                _ => false,
+            };
+            if !known {
+                body.sure = false;
+                return;
+            }
+        }
+        if returns && !axes.is_empty() {
+            body.sure = false;
+            return;
+        }
+        if let Some(mode) = codes.1 {
+            body.mode = Some(mode);
+            body.wrote = Some(mode);
+        }
+        if let Some(motion) = codes.0 {
+            body.motion = Some(motion);
+        }
+        for (i, v) in axes {
+            body.ends[i] = match (body.mode, body.ends[i]) {
+                (Some(false), _) => End::At(v),
+                (Some(true), End::At(a)) => End::At(a + v),
+                (Some(true), End::By(d)) => End::By(d + v),
+                // (before its own G90/G91: the call's mode, [`Checker::resumed_returned`])
+                (None, _) | (_, End::Unknown) => End::Unknown,
+            };
+        }
+        body.returned = returns;
+    }
+
+    /// The body in hand returns (block `b`, its M99 or `endsub`, not read yet here): where
+    /// it is known, what it leaves -- its G90/G91 (`Some(Some(g91))`, `Some(None)`: it wrote
+    /// none) -- and the caller's moves after its calls judged.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn resumed_returned(&mut self, b: &BlockView<'_>) {
+        let Some(mut r) = self.resumed.take() else {
+            return;
+        };
+        if let Some(body) = r
+            .body
+            .as_mut()
+            .filter(|body| !body.returned && body.sure && self.in_hand == Some(body.key))
+        {
+            self.resumed_body(body, b);
+            if !body.returned {
+                body.sure = false;
+            }
+            // (its block read after: nothing more of it followed; judged there, after the
+            // findings held for its return are decided, callmode.rs: review 80-calls80 R1)
+            body.returned = true;
+            r.due = true;
+        }
+        self.resumed = Some(r);
+    }
+
+    /// Where the body just returned known: the caller's moves after its calls judged.
+    fn resumed_finished(&mut self, r: &Resumed) {
+        let Some(body) = r.body.as_ref().filter(|body| {
+            body.returned && body.sure && body.dead.is_none() && body.goto.is_none()
+        }) else {
+            return;
+        };
+        for c in r.calls.iter().filter(|c| c.key == body.key && c.checked) {
+            self.resumed_judged(c, body);
+        }
+    }
+
+    /// Whether the body `key` returned known: the G90/G91 it leaves written (None: none).
+    pub(super) fn resumed_leaves(&self, key: i64) -> Option<Option<bool>> {
+        let body = self.resumed.as_ref()?.body.as_ref()?;
+        (body.key == key && body.returned && body.sure).then_some(body.wrote)
+    }
+
+    /// The caller's moves after call `c` judged from where `body` leaves the tool, in the
+    /// mode it leaves: a TG601 at each position beyond the travel that begins an excursion.
+    fn resumed_judged(&mut self, c: &Call, body: &Body) {
+        if c.moves.is_empty() || !self.selection.enabled(Rule::TravelExceeded) {
+            return;
+        }
+        let leaves = body.wrote.unwrap_or(c.incremental);
+        let motion = body.motion.or(c.motion);
+        // (an axis the body moved before its own G90/G91 is not known: End::Unknown)
+        let mut at: [Option<f64>; 2] = std::array::from_fn(|k| match body.ends[k] {
+            End::At(v) => Some(v),
+            End::By(d) => c.start[k].map(|s| s + d),
+            End::Unknown => None,
+        });
+        let name = &c.named;
+        let line = c.line;
+        let mut outside = [0i8; 2];
+        let mut said = Vec::new();
+        for m in &c.moves {
+            if !m.linear && !matches!(motion, Some(0 | 1)) {
+                return;
+            }
+            let incremental = m.own.unwrap_or(leaves);
+            for &(k, v, column) in &m.axes {
+                at[k] = if incremental {
+                    at[k].map(|a| a + v)
+                } else {
+                    Some(v)
+                };
+                let (Some(work), Some(offset), Some((low, high))) =
+                    (at[k], c.offset[k], self.travel.of_place(JUDGED[k]))
+                else {
+                    continue;
+                };
+                let machine = work * c.factor + offset.to_f64();
+                let side = super::limits::travel_side(machine, (low, high));
+                if side == 0 || side == outside[k] {
+                    outside[k] = side;
+                    continue;
+                }
+                outside[k] = side;
+                if self.found.iter().any(|f| {
+                    f.rule == Rule::TravelExceeded && f.line == m.line && f.column == column
+                }) {
+                    continue;
+                }
+                let g = if incremental { 91 } else { 90 };
+                let why = match (m.own, body.wrote) {
+                    (Some(_), _) => format!(
+                        "read in the caller's own G{g} after {name} of line {line}, whose \
+                         program writes no work offset"
+                    ),
+                    (None, Some(_)) => format!(
+                        "read in G{g}: the program that {name} of line {line} runs \
+                         leaves G{g} and writes no work offset; G90/G91 are modal and its \
+                         return restores neither"
+                    ),
+                    (None, None) => format!(
+                        "read in G{g}, in force at {name} of line {line}, whose program \
+                         writes no G90/G91 and no work offset"
+                    ),
+                };
+                said.push(Finding {
+                    rule: Rule::TravelExceeded,
+                    message: format!(
+                        "{} goes to {} in machine coordinates (work {} + G{} offset {}), \
+                         outside the travel {low} to {high} ({why})",
+                        super::AXES[JUDGED[k]] as char,
+                        super::round6(machine),
+                        super::round6(work * c.factor),
+                        c.work,
+                        offset,
+                    ),
+                    line: m.line,
+                    column,
+                    span: false,
+                    guessed: false,
+                    placed: Placed::Not,
+                    pending_on: Vec::new(),
+                });
+            }
+        }
+        self.found.extend(said);
+    }
+}
