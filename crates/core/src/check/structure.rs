@@ -2269,10 +2269,21 @@ impl Checker {
         else {
             return;
         };
+        // (the word as it is: `O103` a bare O number, `O[103]` an O word of an expression;
+        // review 79-lcnc79 N4)
+        let what = if o.expression.is_empty() && o.sign.is_empty() && !o.point {
+            "a bare O number".to_string()
+        } else {
+            format!(
+                "an O word alone on its line ({}, whose whole value rs274 takes for a program \
+                 number: read_integer_value)",
+                String::from_utf8_lossy(o.token)
+            )
+        };
         let message = format!(
-            "Nested subroutine definition (rs274ngc): a bare O number is the start of a \
-             FANUC-style program (interp_read.cc read_o), which rs274 refuses inside the {} \
-             definition (line {line}), whether it runs the body or skips it",
+            "Nested subroutine definition (rs274ngc): {what} is the start of a FANUC-style \
+             program (interp_read.cc read_o), which rs274 refuses inside the {} definition \
+             (line {line}), whether it runs the body or skips it",
             String::from_utf8_lossy(name)
         );
         let column = o.column;
