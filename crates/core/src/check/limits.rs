@@ -2721,11 +2721,7 @@ impl Checker {
                 continue;
             };
             let at = value.to_f64() * factor + self.shifts.total[a];
-            let column = b
-                .words
-                .iter()
-                .find(|w| w.letter == AXES[a])
-                .map_or(1, |w| w.column);
+            let column = super::column_of(b.words, AXES[a]);
             self.add_to_span(a, at, false, b.line, || column, "");
         }
     }

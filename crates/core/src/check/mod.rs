@@ -635,6 +635,15 @@ fn at_column(text: &[u8], ascii: bool) -> impl Fn(usize) -> usize + '_ {
 
 /// Whether two lists of words have the same parts (a debug build's test of
 /// [`plain_line_words`]).
+/// The column of the first word of `letter` in `words`, or 1 where there is none (a finding
+/// about that word's block placed at the word it names).
+fn column_of(words: &[Word<'_>], letter: u8) -> usize {
+    words
+        .iter()
+        .find(|w| w.letter == letter)
+        .map_or(1, |w| w.column)
+}
+
 fn same_words(a: &[Word<'_>], b: &[Word<'_>]) -> bool {
     a.len() == b.len()
         && a.iter().zip(b).all(|(a, b)| {
@@ -2795,11 +2804,7 @@ impl Checker {
                      after it as program",
                     if l == 50 { "parameter input" } else { "tool life data input" }
                 );
-                let column = b
-                    .words
-                    .iter()
-                    .find(|w| w.letter == b'L')
-                    .map_or(1, |w| w.column);
+                let column = column_of(b.words, b'L');
                 self.report(Rule::DataModeNotClosed, message, b.line, column);
             }
             dialect::DataBlock::Program => {}

@@ -5591,11 +5591,7 @@ impl Checker {
              reaches o{n} sub, a definition of the o-word form written before it, which \
              rs274 2.9 runs only for an o{n} call"
         );
-        let column = b
-            .words
-            .iter()
-            .find(|w| w.letter == b'M')
-            .map_or(1, |w| w.column);
+        let column = super::column_of(b.words, b'M');
         self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 
