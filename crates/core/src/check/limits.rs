@@ -1355,6 +1355,7 @@ impl Checker {
         } else if self.linuxcnc_flow_work.is_none() {
             self.linuxcnc_flow_work = Some(self.work);
             self.work = None;
+            self.may_opened();
         }
         true
     }
@@ -1367,6 +1368,7 @@ impl Checker {
     #[inline(never)]
     pub(super) fn linuxcnc_flow_touched(&mut self, line: usize) {
         self.linuxcnc_flow_work = None;
+        self.may_touched();
         self.offsets_rewritten(
             line,
             "a work offset's code in a condition or loop the checker does not follow",

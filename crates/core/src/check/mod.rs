@@ -50,6 +50,7 @@ mod leaves;
 mod limits;
 mod link;
 mod motion;
+mod oflow;
 mod polar;
 mod reach;
 mod reference;
@@ -1226,6 +1227,9 @@ pub struct Checker {
     /// began (Some while one is open and no line in it touched the offsets): the positions
     /// inside are not judged, and the system is back where the last one closes.
     linuxcnc_flow_work: Option<Option<i64>>,
+    /// LinuxCNC: while such a condition or loop is open, what was in force where it opened
+    /// and the calls of later definitions kept under it (oflow.rs).
+    linuxcnc_may: Option<oflow::MayCalls>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1967,6 +1971,7 @@ impl Checker {
             linuxcnc_work_selected: false,
             linuxcnc_work_save: None,
             linuxcnc_flow_work: None,
+            linuxcnc_may: None,
             g10_expression: 0,
             g10_local: 0,
             jumped: false,

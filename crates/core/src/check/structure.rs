@@ -355,6 +355,7 @@ impl Checker {
         self.line_walks.hot = [HotName::NONE; HOT];
         self.line_walks.all_hot = false;
         self.linuxcnc_open_flow.clear();
+        self.linuxcnc_may = None;
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_open_at.clear();
         self.linuxcnc_flow_assigned.clear();
@@ -1799,6 +1800,7 @@ impl Checker {
                 self.linuxcnc_loop_call(text);
             }
             if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
+                self.may_call_seen();
                 // (a call may set any parameter, or end the program: F10's first run ends)
                 // (inside a loop a later turn may take another branch: not kept there, as
                 // before, so `o1 if [#<k> EQ 0]` / call / `o1 else` in a while is judged)
@@ -1828,6 +1830,9 @@ impl Checker {
                     let ran = !b.skip
                         && matches!(self.linuxcnc_open_at.as_slice(), [e] if e.runs == Some(true));
                     let step = self.linuxcnc_main_flow(text, (b.line, column), skip_ended);
+                    if self.linuxcnc_open_flow.is_empty() && self.linuxcnc_may.is_some() {
+                        self.may_closed();
+                    }
                     if top || self.linuxcnc_loop_defs.is_some() {
                         self.linuxcnc_loop_turns(text, top, ran);
                     }
@@ -2114,7 +2119,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn later_call(&mut self, b: &BlockView<'_>) {
-        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+        if self.open_definition.is_some() || self.main_ended() || self.linuxcnc_dead() {
             return;
         }
         let calls: Vec<Vec<u8>> = b
@@ -2136,7 +2141,7 @@ impl Checker {
     /// implementation of both forms' calls of a definition written after the end,
     /// [`Checker::linuxcnc_m98_later`]).
     fn later_call_of(&mut self, b: &BlockView<'_>, label: &[u8]) {
-        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+        if self.open_definition.is_some() || self.main_ended() || self.linuxcnc_dead() {
             return;
         }
         let key = super::called::Key::Label(label.to_vec());
@@ -2149,11 +2154,20 @@ impl Checker {
             labels.len() - 1
         });
         let key = LATER_DEFINITION + index as i64;
-        self.after_call(key);
-        self.call_mode_kept(key);
-        self.call_work(b, key);
-        self.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
-        self.call_units_seen(key);
+        let keep = |c: &mut Checker| {
+            c.after_call(key);
+            c.call_mode_kept(key);
+            c.call_work(b, key);
+            c.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
+            c.call_units_seen(key);
+        };
+        // (inside the main program's conditions and loops: where its lines surely run, as
+        // outside; where they may not, under the offset where they opened, oflow.rs)
+        if self.linuxcnc_runs_surely() {
+            keep(self);
+        } else {
+            self.may_call(key, keep);
+        }
     }
 
     /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
@@ -5410,6 +5424,9 @@ impl Checker {
             // call` / `Z0.5` runs O200's G81 in `rs274 -g`)
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_motion_subs.insert(open.2.clone());
+            }
+            if self.open_definition.is_none() && !self.linuxcnc_open_flow.is_empty() {
+                self.may_call_seen();
             }
             if self.letters & crate::modal::bit(b'P') != 0 {
                 self.linuxcnc_m98_later(b);
