@@ -634,8 +634,6 @@ fn at_column(text: &[u8], ascii: bool) -> impl Fn(usize) -> usize + '_ {
     }
 }
 
-/// Whether two lists of words have the same parts (a debug build's test of
-/// [`plain_line_words`]).
 /// The column of the first word of `letter` in `words`, or 1 where there is none (a finding
 /// about that word's block placed at the word it names).
 fn column_of(words: &[Word<'_>], letter: u8) -> usize {
@@ -645,6 +643,8 @@ fn column_of(words: &[Word<'_>], letter: u8) -> usize {
         .map_or(1, |w| w.column)
 }
 
+/// Whether two lists of words have the same parts (a debug build's test of
+/// [`plain_line_words`]).
 fn same_words(a: &[Word<'_>], b: &[Word<'_>]) -> bool {
     a.len() == b.len()
         && a.iter().zip(b).all(|(a, b)| {
