@@ -143,3 +143,15 @@ def test_a_known_loop_is_judged_once() -> None:
     # three passes of the same body under the same G55: one TG601
     text = program("o1 repeat [3]\nCALL\no1 endrepeat")
     assert [(r, n) for r, n, _ in errors(text)] == [("TG601", 9)]
+
+
+@pytest.mark.parametrize("block", ["o1 if [1]\nCALL\no1 endif",
+                                   "o1 if [#5399 EQ 1]\nCALL\no1 endif"])
+def test_an_earlier_call_of_the_label_keeps_its_judgment(tmp_path, block) -> None:
+    # the call before the block is judged under G55 (-800); the block's call of the same
+    # label after a G54 / G55 is not kept, so the two do not make each other's offset not
+    # known (review 80-lcnc80: the first call's TG601 was lost)
+    main = f"CALL\nG54\nG55\n{block}"
+    text = program(main)
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG601", body_line(main))], text
+    assert runs_beyond(rs274(tmp_path, text)), text

@@ -2162,7 +2162,13 @@ impl Checker {
             c.call_units_seen(key);
         };
         // (inside the main program's conditions and loops: where its lines surely run, as
-        // outside; where they may not, under the offset where they opened, oflow.rs)
+        // outside; where they may not, under the offset where they opened, oflow.rs. Not
+        // where a call of the label before it was kept: the two would be judged under none
+        // where they differ, and the first's judgment is kept as it was, review 80-lcnc80:
+        // `G55` / `o300 call` / `G54` / `G55` / `o1 if [1]` / `o300 call` / `o1 endif`)
+        if !self.linuxcnc_open_flow.is_empty() && self.call_works.contains_key(&key) {
+            return;
+        }
         if self.linuxcnc_runs_surely() {
             keep(self);
         } else {
