@@ -82,11 +82,9 @@ SAID = "X goes to -800 in machine coordinates (work -700 + G55 offset -100.0)"
 # (the main program between HEAD and M2): the body judged at the call inside a block, its
 # TG601 said at the body's line; main was silent on each
 JUDGED = [
-    # lines that surely run: `if [1]`, a `repeat` of 3 (three passes, each at -800), a `while`
-    # entered (#1 is 0 there), a `do`
+    # lines that surely run: `if [1]`, a `repeat` of 3 (three passes, each at -800), a `do`
     "o1 if [1]\nCALL\no1 endif",
     "o1 repeat [3]\nCALL\no1 endrepeat",
-    "#1=0\no1 while [#1 LT 3]\nCALL\n#1=[#1+1]\no1 endwhile",
     "#1=0\no1 do\nCALL\n#1=[#1+1]\no1 while [#1 LT 2]",
     # ... a G54 after the call in the same branch: the call ran under G55 before it
     "o1 if [1]\nCALL\nG54\no1 endif",
@@ -97,7 +95,6 @@ JUDGED = [
     "o1 if [#5399 EQ 1]\nCALL\no1 endif",
     "o1 if [#5399 EQ 1]\no2 if [#5399 GT 0]\nCALL\no2 endif\no1 endif",
     "o1 if [#5399 EQ 0]\nM0\no1 else\nCALL\no1 endif",
-    "#1=0\no1 while [#1 LT #5399]\nCALL\n#1=[#1+1]\no1 endwhile",
     # ... a write of G55's offset after the block: the call ran before it
     "o1 if [#5399 EQ 1]\nCALL\no1 endif\n#5241=0",
 ]
@@ -124,6 +121,14 @@ SILENT = [
     ("o1 if [#5399 EQ 0]\nG10 L2 P2 X0\no1 else\nCALL\no1 endif", True),
     ("#1=0\no1 while [#1 LT #5399]\nCALL\n#5241=0\n#1=[#1+1]\no1 endwhile", True),
     ("o1 if [#5399 EQ 1]\nCALL\nCALL\no1 endif", True),
+    # a condition reading a numbered parameter below #5000, which the program may write: the
+    # checker's value may be stale or lost (one set in a block that closed, by a called body;
+    # review 80-lcnc80 R5: `#1=5` / `o1 if [1]` / `#1=0` / `o1 endif` / `o2 if [#1 GT 2]` was
+    # judged, rs274 skips it), so no call under it is judged
+    ("#1=0\no1 while [#1 LT 3]\nCALL\n#1=[#1+1]\no1 endwhile", True),
+    ("#1=0\no1 while [#1 LT #5399]\nCALL\n#1=[#1+1]\no1 endwhile", True),
+    ("#1=5\no1 if [1]\n#1=0\no1 endif\no2 if [#1 GT 2]\nCALL\no2 endif", False),
+    ("#1=5\no1 repeat [2]\n#1=0\no1 endrepeat\no2 if [#1 GT 2]\nCALL\no2 endif", False),
     ("o1 if [0]\nCALL\no1 endif", False),
     ("o1 while [0]\nCALL\no1 endwhile", False),
 ]
@@ -146,7 +151,9 @@ def test_a_known_loop_is_judged_once() -> None:
 
 
 @pytest.mark.parametrize("block", ["o1 if [1]\nCALL\no1 endif",
-                                   "o1 if [#5399 EQ 1]\nCALL\no1 endif"])
+                                   "o1 if [#5399 EQ 1]\nCALL\no1 endif",
+                                   "o1 repeat [2]\nCALL\no1 endrepeat",
+                                   "#1=0\no1 while [#1 LT 2]\nCALL\n#1=[#1+1]\no1 endwhile"])
 def test_an_earlier_call_of_the_label_keeps_its_judgment(tmp_path, block) -> None:
     # the call before the block is judged under G55 (-800); the block's call of the same
     # label after a G54 / G55 is not kept, so the two do not make each other's offset not

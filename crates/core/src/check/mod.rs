@@ -1230,6 +1230,9 @@ pub struct Checker {
     /// LinuxCNC: while such a condition or loop is open, what was in force where it opened
     /// and the calls of later definitions kept under it (oflow.rs).
     linuxcnc_may: Option<oflow::MayCalls>,
+    /// LinuxCNC: for each block of `linuxcnc_open_flow`, whether its condition (or a branch's
+    /// since) reads a parameter (oflow.rs: a value the checker may hold stale).
+    linuxcnc_flow_reads: Vec<bool>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1972,6 +1975,7 @@ impl Checker {
             linuxcnc_work_save: None,
             linuxcnc_flow_work: None,
             linuxcnc_may: None,
+            linuxcnc_flow_reads: Vec::new(),
             g10_expression: 0,
             g10_local: 0,
             jumped: false,

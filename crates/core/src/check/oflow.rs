@@ -93,7 +93,8 @@ impl Checker {
         let first = self
             .linuxcnc_may
             .as_ref()
-            .is_some_and(|m| m.keys.is_empty());
+            .is_some_and(|m| m.keys.is_empty())
+            && !self.flow_reads_any();
         let Some(work) = self.may_work().filter(|_| first && !self.offsets_lost) else {
             return;
         };
@@ -103,6 +104,52 @@ impl Checker {
         if let Some(m) = self.linuxcnc_may.as_mut() {
             m.keys.push(key);
         }
+    }
+
+    /// After an o-word line of the main program (`text`): whether each open block's condition
+    /// reads a numbered parameter the program itself may write (#1-#4999: the locals and the
+    /// volatile ones; an indirect `#[..]` or `##1` too). The checker's value of one set in a
+    /// block that closed, or by a called body, may be stale or lost, so that a call the program
+    /// never makes would be judged (review 80-lcnc80 R5, R6: `#1=5` / `o1 if [1]` / `#1=0` /
+    /// `o1 endif` / `o2 if [#1 GT 2]`; rs274 skips it): a block reading one is not judged
+    /// through. Named parameters and #5000 up (the var file's, the machine's position, M66's
+    /// input) are read as the checker reads them.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn flow_reads(&mut self, text: &[u8]) {
+        let depth = self.linuxcnc_open_flow.len();
+        let reads = text.iter().enumerate().any(|(i, &c)| {
+            if c != b'#' {
+                return false;
+            }
+            let rest = &text[i + 1..];
+            let digits = rest.iter().take_while(|d| d.is_ascii_digit()).count();
+            match rest.first() {
+                Some(b'<') => false,
+                Some(d) if d.is_ascii_digit() => {
+                    crate::text::digits_value(&rest[..digits]).is_none_or(|n| n < 5000)
+                }
+                _ => true,
+            }
+        });
+        let r = &mut self.linuxcnc_flow_reads;
+        if r.len() > depth {
+            r.truncate(depth);
+        } else if r.len() == depth {
+            // (an `elseif` or `else` of the innermost: its condition too)
+            if let Some(last) = r.last_mut() {
+                *last |= reads;
+            }
+        }
+        while r.len() < depth {
+            r.push(reads);
+        }
+    }
+
+    /// Whether a block open reads a parameter in its condition ([`Checker::flow_reads`]).
+    pub(super) fn flow_reads_any(&self) -> bool {
+        let open = self.linuxcnc_open_flow.len();
+        self.linuxcnc_flow_reads.iter().take(open).any(|&r| r)
     }
 
     /// The outermost block of the region closed: the calls kept under its opening's offset

@@ -356,6 +356,7 @@ impl Checker {
         self.line_walks.all_hot = false;
         self.linuxcnc_open_flow.clear();
         self.linuxcnc_may = None;
+        self.linuxcnc_flow_reads.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_open_at.clear();
         self.linuxcnc_flow_assigned.clear();
@@ -1833,6 +1834,7 @@ impl Checker {
                     if self.linuxcnc_open_flow.is_empty() && self.linuxcnc_may.is_some() {
                         self.may_closed();
                     }
+                    self.flow_reads(text);
                     if top || self.linuxcnc_loop_defs.is_some() {
                         self.linuxcnc_loop_turns(text, top, ran);
                     }
@@ -2169,7 +2171,7 @@ impl Checker {
         if !self.linuxcnc_open_flow.is_empty() && self.call_works.contains_key(&key) {
             return;
         }
-        if self.linuxcnc_runs_surely() {
+        if self.linuxcnc_runs_surely() && !self.flow_reads_any() {
             keep(self);
         } else {
             self.may_call(key, keep);
