@@ -942,6 +942,12 @@ impl ReadingEnd {
                 returns |= c.eq_ignore_ascii_case(&b'M') && n == Some(99);
             }
             if program && self.open.is_empty() {
+                // (a definition as an `o<name> sub` is: its lines run when called, so none
+                // is TG117's; after its M99 the reader is back at the top level, where the
+                // lines a call never reaches are: `rs274 -g` of `M98 P2000` / `M2` /
+                // `O2000` / `G0 X1.` / `M99` / `G0 X2.` runs X1 and never X2; review
+                // 79-lcnc79 N2)
+                self.open_sub = true;
                 self.open.push(FANUC_SUBPROGRAM.to_vec());
             } else if returns && self.open.last().is_some_and(|l| l == FANUC_SUBPROGRAM) {
                 self.open.pop();

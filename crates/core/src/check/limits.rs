@@ -1512,6 +1512,7 @@ impl Checker {
         } else if self.linuxcnc_flow_work.is_none() {
             self.linuxcnc_flow_work = Some(self.work);
             self.work = None;
+            self.may_opened();
         }
         true
     }
@@ -1524,6 +1525,7 @@ impl Checker {
     #[inline(never)]
     pub(super) fn linuxcnc_flow_touched(&mut self, line: usize) {
         self.linuxcnc_flow_work = None;
+        self.may_touched();
         self.offsets_rewritten(
             line,
             "a work offset's code in a condition or loop the checker does not follow",
@@ -2878,11 +2880,7 @@ impl Checker {
                 continue;
             };
             let at = value.to_f64() * factor + self.shifts.total[a];
-            let column = b
-                .words
-                .iter()
-                .find(|w| w.letter == AXES[a])
-                .map_or(1, |w| w.column);
+            let column = super::column_of(b.words, AXES[a]);
             self.add_to_span(a, at, false, b.line, || column, "");
         }
     }

@@ -50,6 +50,7 @@ mod leaves;
 mod limits;
 mod link;
 mod motion;
+mod oflow;
 mod polar;
 mod reach;
 mod reference;
@@ -632,6 +633,15 @@ fn at_column(text: &[u8], ascii: bool) -> impl Fn(usize) -> usize + '_ {
             column(text, offset)
         }
     }
+}
+
+/// The column of the first word of `letter` in `words`, or 1 where there is none (a finding
+/// about that word's block placed at the word it names).
+fn column_of(words: &[Word<'_>], letter: u8) -> usize {
+    words
+        .iter()
+        .find(|w| w.letter == letter)
+        .map_or(1, |w| w.column)
 }
 
 /// Whether two lists of words have the same parts (a debug build's test of
@@ -1223,6 +1233,12 @@ pub struct Checker {
     /// began (Some while one is open and no line in it touched the offsets): the positions
     /// inside are not judged, and the system is back where the last one closes.
     linuxcnc_flow_work: Option<Option<i64>>,
+    /// LinuxCNC: while such a condition or loop is open, what was in force where it opened
+    /// and the calls of later definitions kept under it (oflow.rs).
+    linuxcnc_may: Option<oflow::MayCalls>,
+    /// LinuxCNC: for each block of `linuxcnc_open_flow`, whether its condition (or a branch's
+    /// since) reads a parameter (oflow.rs: a value the checker may hold stale).
+    linuxcnc_flow_reads: Vec<bool>,
     /// The axes (their places' bits) of the G10s of the program in hand that wrote their L
     /// or P by a #-expression: read once at the value it has there, though a jump back (a
     /// loop) or another call of the program may run it with another, so the program writes
@@ -1970,6 +1986,8 @@ impl Checker {
             linuxcnc_work_selected: false,
             linuxcnc_work_save: None,
             linuxcnc_flow_work: None,
+            linuxcnc_may: None,
+            linuxcnc_flow_reads: Vec::new(),
             g10_expression: 0,
             g10_local: 0,
             jumped: false,
@@ -2817,11 +2835,7 @@ impl Checker {
                      after it as program",
                     if l == 50 { "parameter input" } else { "tool life data input" }
                 );
-                let column = b
-                    .words
-                    .iter()
-                    .find(|w| w.letter == b'L')
-                    .map_or(1, |w| w.column);
+                let column = column_of(b.words, b'L');
                 self.report(Rule::DataModeNotClosed, message, b.line, column);
             }
             dialect::DataBlock::Program => {}

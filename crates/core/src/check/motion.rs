@@ -832,7 +832,7 @@ impl Checker {
         let none_given = given.clone().next().is_none();
         for a in given {
             if !centres.contains(&a) {
-                let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
+                let column = super::column_of(words, a);
                 let message = format!(
                     "{} is not a centre word of the G{} plane",
                     a as char, self.machine.state.plane

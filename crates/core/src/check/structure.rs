@@ -355,6 +355,8 @@ impl Checker {
         self.line_walks.hot = [HotName::NONE; HOT];
         self.line_walks.all_hot = false;
         self.linuxcnc_open_flow.clear();
+        self.linuxcnc_may = None;
+        self.linuxcnc_flow_reads.clear();
         self.linuxcnc_if_ends.clear();
         self.linuxcnc_open_at.clear();
         self.linuxcnc_flow_assigned.clear();
@@ -1817,6 +1819,7 @@ impl Checker {
                 self.linuxcnc_loop_call(text);
             }
             if kind == Kind::Call && main && !self.linuxcnc_open_flow.is_empty() {
+                self.may_call_seen();
                 // (a call may set any parameter, or end the program: F10's first run ends)
                 // (inside a loop a later turn may take another branch: not kept there, as
                 // before, so `o1 if [#<k> EQ 0]` / call / `o1 else` in a while is judged)
@@ -1846,6 +1849,10 @@ impl Checker {
                     let ran = !b.skip
                         && matches!(self.linuxcnc_open_at.as_slice(), [e] if e.runs == Some(true));
                     let step = self.linuxcnc_main_flow(text, (b.line, column), skip_ended);
+                    if self.linuxcnc_open_flow.is_empty() && self.linuxcnc_may.is_some() {
+                        self.may_closed();
+                    }
+                    self.flow_reads(text);
                     if top || self.linuxcnc_loop_defs.is_some() {
                         self.linuxcnc_loop_turns(text, top, ran);
                     }
@@ -2133,7 +2140,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn later_call(&mut self, b: &BlockView<'_>) {
-        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+        if self.open_definition.is_some() || self.main_ended() || self.linuxcnc_dead() {
             return;
         }
         let calls: Vec<Vec<u8>> = b
@@ -2155,7 +2162,7 @@ impl Checker {
     /// implementation of both forms' calls of a definition written after the end,
     /// [`Checker::linuxcnc_m98_later`]).
     fn later_call_of(&mut self, b: &BlockView<'_>, label: &[u8]) {
-        if !self.linuxcnc_open_flow.is_empty() || self.main_ended() || self.linuxcnc_dead() {
+        if self.open_definition.is_some() || self.main_ended() || self.linuxcnc_dead() {
             return;
         }
         let key = super::called::Key::Label(label.to_vec());
@@ -2168,11 +2175,26 @@ impl Checker {
             labels.len() - 1
         });
         let key = LATER_DEFINITION + index as i64;
-        self.after_call(key);
-        self.call_mode_kept(key);
-        self.call_work(b, key);
-        self.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
-        self.call_units_seen(key);
+        let keep = |c: &mut Checker| {
+            c.after_call(key);
+            c.call_mode_kept(key);
+            c.call_work(b, key);
+            c.call_of_unread(key); // (as after a FANUC's M98 of a program written later)
+            c.call_units_seen(key);
+        };
+        // (inside the main program's conditions and loops: where its lines surely run, as
+        // outside; where they may not, under the offset where they opened, oflow.rs. Not
+        // where a call of the label before it was kept: the two would be judged under none
+        // where they differ, and the first's judgment is kept as it was, review 80-lcnc80:
+        // `G55` / `o300 call` / `G54` / `G55` / `o1 if [1]` / `o300 call` / `o1 endif`)
+        if !self.linuxcnc_open_flow.is_empty() && self.call_works.contains_key(&key) {
+            return;
+        }
+        if self.linuxcnc_runs_surely() && !self.flow_reads_any() {
+            keep(self);
+        } else {
+            self.may_call(key, keep);
+        }
     }
 
     /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
@@ -2288,10 +2310,21 @@ impl Checker {
         else {
             return;
         };
+        // (the word as it is: `O103` a bare O number, `O[103]` an O word of an expression;
+        // review 79-lcnc79 N4)
+        let what = if o.expression.is_empty() && o.sign.is_empty() && !o.point {
+            "a bare O number".to_string()
+        } else {
+            format!(
+                "an O word alone on its line ({}, whose whole value rs274 takes for a program \
+                 number: read_integer_value)",
+                String::from_utf8_lossy(o.token)
+            )
+        };
         let message = format!(
-            "Nested subroutine definition (rs274ngc): a bare O number is the start of a \
-             FANUC-style program (interp_read.cc read_o), which rs274 refuses inside the {} \
-             definition (line {line}), whether it runs the body or skips it",
+            "Nested subroutine definition (rs274ngc): {what} is the start of a FANUC-style \
+             program (interp_read.cc read_o), which rs274 refuses inside the {} definition \
+             (line {line}), whether it runs the body or skips it",
             String::from_utf8_lossy(name)
         );
         let column = o.column;
@@ -5419,6 +5452,9 @@ impl Checker {
             if let Some(open) = &self.open_definition {
                 self.linuxcnc_motion_subs.insert(open.2.clone());
             }
+            if self.open_definition.is_none() && !self.linuxcnc_open_flow.is_empty() {
+                self.may_call_seen();
+            }
             if self.letters & crate::modal::bit(b'P') != 0 {
                 self.linuxcnc_m98_later(b);
             }
@@ -5599,11 +5635,7 @@ impl Checker {
              reaches o{n} sub, a definition of the o-word form written before it, which \
              rs274 2.9 runs only for an o{n} call"
         );
-        let column = b
-            .words
-            .iter()
-            .find(|w| w.letter == b'M')
-            .map_or(1, |w| w.column);
+        let column = super::column_of(b.words, b'M');
         self.report(Rule::LinuxCncRefuses, message, b.line, column);
     }
 

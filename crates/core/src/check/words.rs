@@ -521,11 +521,7 @@ impl Checker {
     #[inline(never)]
     fn several_g_found(&mut self, b: &BlockView<'_>, g_count: usize) {
         let line = b.line;
-        let first_g = b
-            .words
-            .iter()
-            .find(|w| w.letter == b'G')
-            .map_or(1, |w| w.column);
+        let first_g = super::column_of(b.words, b'G');
         // "{g_count} G words in one block; Annex D recommends one", without the formatter
         // (said of one block in twenty of some CAM programs: slot_assembly_12)
         let mut message = String::with_capacity(48);
