@@ -448,8 +448,8 @@ def test_a_linuxcnc_definition_after_the_end_is_judged_under_its_calls_offsets(
     # (a G10 or variable write of the main's before the call)
     "G55 / G10 L2 P2 X0 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
     "#5241=0 / G55 / o100 call / M2 / o100 sub / G0 X-700 / o100 endsub",
-    # (the main's move after the call with no G54-G59 of its own; after a G10 of the body's)
-    "G55 / o100 call / G0 X-700 / M2 / o100 sub / G0 X0 / o100 endsub",
+    # (the main's move after a G10 of the body's; the move after the call with no G54-G59 of
+    # its own, where the body writes no offset: judged since calls80, test_calls_resumed.py)
     "o100 call / G55 / G90 G0 X-700 / M2 / o100 sub / G0 X0 / G10 L2 P2 X0 / o100 endsub",
     # (called only from another definition after the end)
     "G55 / o200 call / M2 / o100 sub / G0 X-700 / o100 endsub / o200 sub / o100 call / "

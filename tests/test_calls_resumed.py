@@ -153,6 +153,11 @@ def test_haas_calls_of_later_bodies(profiles, text, expected):
     # the endsub, the position said)
     ("G21 G17 G90 G54 / G0 X-700 Y0 Z0 / o2000 call / G0 X1500 / M2 / o2000 sub / G91 / "
      "o2000 endsub", [(4, 4, "X goes to 800")]),
+    # (the caller's move after the call with no G54-G59 of its own, under the call's G55
+    # the body writes no offset and no G90/G91, so X-700 runs absolute at machine
+    # -800; main left it not judged, test_calls_offsets.py's silent list until calls80)
+    ("G21 G17 G90 G54 / G0 X0 Y0 / G55 / o100 call / G0 X-700 / M2 / o100 sub / G0 X0 / "
+     "o100 endsub", [(5, 4, "X goes to -800")]),
     # (a condition not known: silent, as main)
     ("G21 G17 G90 G54 / G0 X0 Y0 / o2000 call / G0 X500. / G0 X500. / M2 / o2000 sub / "
      "o1 if [#1 GT 0] / G91 / o1 endif / o2000 endsub", []),
