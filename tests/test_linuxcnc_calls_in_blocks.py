@@ -14,8 +14,9 @@ overtravel is a real one whenever the call runs. Anything else stays silent, as 
 The profile gives G54 X 0 and G55 X -100 on a travel of -762 to 762. rs274 is given a var
 file with the same G55 (#5241 = -100 mm, written in inches: rs274's var file is in its
 default inch units); a condition reads the current X, #5420 (read only: the checker does not
-know it; 0 in rs274 after `G0 X0`), so that every condition on it holds: each program is asserted to run the body's X-700 after
-``SET_G5X_OFFSET(2, -100...)`` -- machine -800, beyond -762.
+know it; 0 in rs274 after `G0 X0`), so that every condition on it holds: each program is
+asserted to run the body's X-700 after ``SET_G5X_OFFSET(2, -100...)`` -- machine -800, beyond
+-762.
 """
 
 from __future__ import annotations
