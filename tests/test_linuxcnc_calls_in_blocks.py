@@ -13,9 +13,10 @@ overtravel is a real one whenever the call runs. Anything else stays silent, as 
 
 The profile gives G54 X 0 and G55 X -100 on a travel of -762 to 762. rs274 is given a var
 file with the same G55 (#5241 = -100 mm, written in inches: rs274's var file is in its
-default inch units) and #5399 (a parameter the checker does not know) = 1, so that every
-condition on it holds: each program is asserted to run the body's X-700 after
-``SET_G5X_OFFSET(2, -100...)`` -- machine -800, beyond -762.
+default inch units); a condition reads the current X, #5420 (read only: the checker does not
+know it; 0 in rs274 after `G0 X0`), so that every condition on it holds: each program is
+asserted to run the body's X-700 after ``SET_G5X_OFFSET(2, -100...)`` -- machine -800, beyond
+-762.
 """
 
 from __future__ import annotations
@@ -89,14 +90,14 @@ JUDGED = [
     # ... a G54 after the call in the same branch: the call ran under G55 before it
     "o1 if [1]\nCALL\nG54\no1 endif",
     # ... an unknown condition inside a block that surely runs
-    "o1 if [1]\no2 if [#5399 EQ 1]\nCALL\no2 endif\no1 endif",
-    # a condition not known (#5399): nothing in the block changes the offset or the modes, so
+    "o1 if [1]\no2 if [#5420 LT 1]\nCALL\no2 endif\no1 endif",
+    # a condition not known (#5420): nothing in the block changes the offset or the modes, so
     # the call runs, where it runs, under G55
-    "o1 if [#5399 EQ 1]\nCALL\no1 endif",
-    "o1 if [#5399 EQ 1]\no2 if [#5399 GT 0]\nCALL\no2 endif\no1 endif",
-    "o1 if [#5399 EQ 0]\nM0\no1 else\nCALL\no1 endif",
+    "o1 if [#5420 LT 1]\nCALL\no1 endif",
+    "o1 if [#5420 LT 1]\no2 if [#5420 LT 2]\nCALL\no2 endif\no1 endif",
+    "o1 if [#5420 GT 1]\nM0\no1 else\nCALL\no1 endif",
     # ... a write of G55's offset after the block: the call ran before it
-    "o1 if [#5399 EQ 1]\nCALL\no1 endif\n#5241=0",
+    "o1 if [#5420 LT 1]\nCALL\no1 endif\n#5241=0",
 ]
 
 
@@ -115,18 +116,21 @@ def test_a_call_in_a_block_is_judged_under_the_offset_in_force(tmp_path, main, m
 # offset in the loop that runs the call again, a second call whose body may change them), or
 # the block never runs (`if [0]`, `while` false: rs274 runs no X-700)
 SILENT = [
-    ("o1 if [#5399 EQ 1]\nCALL\no1 else\nG54\no1 endif", True),
-    ("o1 if [#5399 EQ 0]\nG54\no1 else\nCALL\no1 endif", True),
-    ("o1 if [#5399 EQ 0]\nG91\no1 else\nCALL\no1 endif", True),
-    ("o1 if [#5399 EQ 0]\nG10 L2 P2 X0\no1 else\nCALL\no1 endif", True),
+    ("o1 if [#5420 LT 1]\nCALL\no1 else\nG54\no1 endif", True),
+    ("o1 if [#5420 GT 1]\nG54\no1 else\nCALL\no1 endif", True),
+    ("o1 if [#5420 GT 1]\nG91\no1 else\nCALL\no1 endif", True),
+    ("o1 if [#5420 GT 1]\nG10 L2 P2 X0\no1 else\nCALL\no1 endif", True),
     ("#1=0\no1 while [#1 LT #5399]\nCALL\n#5241=0\n#1=[#1+1]\no1 endwhile", True),
-    ("o1 if [#5399 EQ 1]\nCALL\nCALL\no1 endif", True),
-    # a condition reading a numbered parameter below #5000, which the program may write: the
+    ("o1 if [#5420 LT 1]\nCALL\nCALL\no1 endif", True),
+    # a condition reading a numbered parameter the program may write (any but the position): the
     # checker's value may be stale or lost (one set in a block that closed, by a called body;
     # review 80-lcnc80 R5: `#1=5` / `o1 if [1]` / `#1=0` / `o1 endif` / `o2 if [#1 GT 2]` was
     # judged, rs274 skips it), so no call under it is judged
     ("#1=0\no1 while [#1 LT 3]\nCALL\n#1=[#1+1]\no1 endwhile", True),
     ("#1=0\no1 while [#1 LT #5399]\nCALL\n#1=[#1+1]\no1 endwhile", True),
+    # ... #5399 (M66 writes it; review 80-lcnc80 R7), #5100 (writable, R10)
+    ("o1 if [#5399 EQ 1]\nCALL\no1 endif", True),
+    ("#5100=5\no1 if [1]\n#5100=0\no1 endif\no2 if [#5100 GT 2]\nCALL\no2 endif", False),
     ("#1=5\no1 if [1]\n#1=0\no1 endif\no2 if [#1 GT 2]\nCALL\no2 endif", False),
     ("#1=5\no1 repeat [2]\n#1=0\no1 endrepeat\no2 if [#1 GT 2]\nCALL\no2 endif", False),
     ("o1 if [0]\nCALL\no1 endif", False),
@@ -151,7 +155,7 @@ def test_a_known_loop_is_judged_once() -> None:
 
 
 @pytest.mark.parametrize("block", ["o1 if [1]\nCALL\no1 endif",
-                                   "o1 if [#5399 EQ 1]\nCALL\no1 endif",
+                                   "o1 if [#5420 LT 1]\nCALL\no1 endif",
                                    "o1 repeat [2]\nCALL\no1 endrepeat",
                                    "#1=0\no1 while [#1 LT 2]\nCALL\n#1=[#1+1]\no1 endwhile"])
 def test_an_earlier_call_of_the_label_keeps_its_judgment(tmp_path, block) -> None:

@@ -107,13 +107,13 @@ impl Checker {
     }
 
     /// After an o-word line of the main program (`text`): whether each open block's condition
-    /// reads a numbered parameter the program itself may write (#1-#4999: the locals and the
-    /// volatile ones; an indirect `#[..]` or `##1` too). The checker's value of one set in a
+    /// reads a numbered parameter the program itself may write (any but the read-only current
+    /// position, #5420-#5428; an indirect `#[..]` or `##1` too). The checker's value of one set in a
     /// block that closed, or by a called body, may be stale or lost, so that a call the program
     /// never makes would be judged (review 80-lcnc80 R5, R6: `#1=5` / `o1 if [1]` / `#1=0` /
     /// `o1 endif` / `o2 if [#1 GT 2]`; rs274 skips it): a block reading one is not judged
-    /// through. Named parameters and #5000 up (the var file's, the machine's position, M66's
-    /// input) are read as the checker reads them.
+    /// through (R10: `#5100`; R7: `#5399`, which M66 writes). Named parameters and the position
+    /// are read as the checker reads them.
     #[cold]
     #[inline(never)]
     pub(super) fn flow_reads(&mut self, text: &[u8]) {
@@ -126,9 +126,8 @@ impl Checker {
             let digits = rest.iter().take_while(|d| d.is_ascii_digit()).count();
             match rest.first() {
                 Some(b'<') => false,
-                Some(d) if d.is_ascii_digit() => {
-                    crate::text::digits_value(&rest[..digits]).is_none_or(|n| n < 5000)
-                }
+                Some(d) if d.is_ascii_digit() => !crate::text::digits_value(&rest[..digits])
+                    .is_some_and(|n| (5420..=5428).contains(&n)),
                 _ => true,
             }
         });
