@@ -157,16 +157,19 @@ BEYOND = [
 @pytest.mark.parametrize("main, body, machine, said", BEYOND)
 @pytest.mark.parametrize("form", FORMS)
 def test_a_real_overtravel_across_a_selection_stays_refused(
-        tmp_path: Path, form: str, main: str, body: str, machine: list[float],
-        said: dict[str, tuple[int | None, str]]) -> None:
+        request: pytest.FixtureRequest, tmp_path: Path, form: str, main: str, body: str,
+        machine: list[float], said: dict[str, tuple[int | None, str]]) -> None:
     line, start = said[form]
     found = errors(tmp_path, form, main, body)
     if line is None:
-        # (a FANUC's or Haas's M98 of an O program written later: the caller's moves after it
-        # are not compared with the travel until its own G90/G91 (TG140), so this real
-        # overtravel is not said -- as on main; the known gap of the caller's mode after such
-        # a call)
-        assert found == [], found
+        # A known gap, held as one (strict: a fix of it fails here until the case is given its
+        # line): after a FANUC's or Haas's M98 of an O program written later, the caller's
+        # moves after a selection are not compared with the travel until its own G90/G91
+        # (TG140), so this real overtravel is not said, as on main.
+        request.applymarker(pytest.mark.xfail(
+            strict=True, reason="the caller's moves after an M98 of a later O program and a "
+                                "selection are not judged (TG140)"))
+        assert found, "a real overtravel is not said"
     else:
         assert [(n, m[:len(start)]) for n, m in found] == [(line, start)], found
     if form.startswith("lcnc"):
