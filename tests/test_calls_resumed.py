@@ -164,3 +164,23 @@ def test_haas_calls_of_later_bodies(profiles, text, expected):
 ])
 def test_linuxcnc_calls_of_later_definitions(profiles, text, expected):
     assert said(text, profiles["lcnc"]) == expected
+
+
+# A selection between the last position and the call: the real run keeps the machine
+# position (X-650 under G54 is G55 work -550), while the position the checker holds is the
+# old system's work value, so the caller's increments after a body that leaves G91 are not
+# placed from it. rs274 -g (G55 X -100 in its var file): -650, then the body's -540, then
+# the caller's X-100 at -640, machine -740, inside; placed from -650 it was "X goes to -840",
+# a false error (the lead's review of the stop's merge). An absolute move is still judged.
+@pytest.mark.parametrize("form, text, expected", [
+    ("lcnc", "G21 G17 G90 G54 / G0 X-650 Y0 / G55 / o2000 call / G0 X-100 / M2 / o2000 sub / "
+     "G91 G0 X10. / o2000 endsub", []),
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X-650. Y0 / G55 / M98 P2000 / G0 X-100. / M30 / "
+     "O2000 / G91 G0 X10. / M99", []),
+    # (the body leaves G90: X-700. absolute under G55, machine -800)
+    ("lcnc", "G21 G17 G90 G54 / G0 X-650 Y0 / G55 / o2000 call / G0 X-700 / M2 / o2000 sub / "
+     "G0 X10. / o2000 endsub", [(5, 4, "X goes to -800")]),
+])
+def test_a_selection_before_the_call_leaves_the_start_not_known(
+        profiles, form, text, expected):
+    assert said(text, profiles[form]) == expected

@@ -638,6 +638,11 @@ impl Checker {
             Some(from) if from != g => self.selection_known(from),
             _ => 0,
         };
+        if self.work != Some(g) && self.machine.state.position.iter().any(Option::is_some) {
+            // (the real run keeps the machine position: the work position held is the old
+            // system's, not the new one's; review of the stop's merge, resumed.rs)
+            self.selected_from_position = true;
+        }
         let at_start = self.linuxcnc_at_start();
         self.linuxcnc_work_selected = true;
         if self.work != Some(g) && self.config.family == Family::LinuxCnc {

@@ -1739,6 +1739,10 @@ pub struct Checker {
     resumed: Option<Box<resumed::Resumed>>,
     /// The line of the last block that calls, and its X and Y before it ([`resumed`]).
     call_from: (usize, [Option<Dec>; 2]),
+    /// A G54-G59 selection changed the work system after a position was known: the work
+    /// position the checker holds is the old system's, so a call's start is not taken from
+    /// it ([`resumed`]).
+    selected_from_position: bool,
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
@@ -2076,6 +2080,7 @@ impl Checker {
             call_modes: Vec::new(),
             resumed: None,
             call_from: (0, [None; 2]),
+            selected_from_position: false,
             flow_calls: None,
             units_unknown: false,
             early: None,

@@ -224,9 +224,16 @@ impl Checker {
         // (LinuxCNC's M98 forgets the position before its later call is kept: the one
         // before the block, which moves nothing)
         let from = self.call_from;
+        // (after a G54-G59 selection from another system the position held is the old
+        // system's work position, while the real run keeps the machine position: `G54` /
+        // `G0 X-650.` / `G57` / a call of a body that leaves G91 after `G91 G0 X10.` / `G0
+        // X-100.` on G57 X -300 runs at machine -740 (rs274), not -1040, so no increment
+        // after the call is placed from it)
+        let selected = self.selected_from_position;
         let start = JUDGED.map(|i| {
             s.position[i]
                 .or(from.1[i].filter(|_| from.0 == self.last_line))
+                .filter(|_| !selected)
                 .map(|v| v.to_f64())
         });
         let call = Call {
