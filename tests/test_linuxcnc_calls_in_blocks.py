@@ -28,24 +28,12 @@ from pathlib import Path
 
 import pytest
 
-from postproc.check import check_text
+from .test_linuxcnc_later_bodies import errors
 
 HEAD = "G21 G17 G90 F100\nG55\nG0 X0 Y0\n"
 VAR = "5221 0\n5222 0\n5241 -3.937007874\n5242 0\n5399 1\n"
 
 
-def profile():
-    from formats.profile import builtin_text, profile_from_text
-
-    toml = builtin_text("linuxcnc").replace("[limits]\n",
-                                            "[limits]\nX = [-762, 762]\nY = [-406, 406]\n")
-    return profile_from_text(toml + "\n[work_offsets]\nG54 = { X = 0.0, Y = 0.0 }\n"
-                             "G55 = { X = -100.0, Y = 0.0 }\n")
-
-
-def errors(text: str) -> list[tuple[str, int, str]]:
-    return [(f.rule, f.line, f.message) for f in check_text(text, profile())
-            if f.severity == "error"]
 
 
 def rs274(tmp_path: Path, text: str) -> str:
