@@ -255,29 +255,20 @@ impl Checker {
             let mark = PENDING_CALL_MODE - slot as i64;
             // (a body read known to its return: the G90/G91 it leaves written, not one in a
             // block known not to run or a jump to the next block; resumed.rs, review
-            // 78-calls78 F3)
-            let key = c.key;
-            if let Some(wrote) = self.resumed_leaves(key).filter(|_| returned) {
-                let c = &mut self.call_modes[slot];
-                if let Some(g91) = wrote {
-                    let drop = c.modes != if g91 { 2 } else { 1 };
-                    c.decision = Some(drop);
-                    self.call_mode_decided(mark, Ok(drop));
-                } else {
-                    let prev = c.prev;
-                    let decided = self.call_mode_effective(prev);
-                    self.call_mode_decided(mark, decided);
+            // 78-calls78 F3. None: it wrote none, decided as the call before it)
+            let (key, modes) = (c.key, c.modes);
+            let drop = match self.resumed_leaves(key).filter(|_| returned) {
+                Some(wrote) => wrote.map(|g91| modes != if g91 { 2 } else { 1 }),
+                None if !returned || lost || begun != codes => {
+                    Some(!returned || lost || modes != leaves)
                 }
-                continue;
-            }
-            let c = &mut self.call_modes[slot];
-            if !returned || lost || begun != codes {
-                let drop = !returned || lost || c.modes != leaves;
-                c.decision = Some(drop);
+                None => None,
+            };
+            if let Some(drop) = drop {
+                self.call_modes[slot].decision = Some(drop);
                 self.call_mode_decided(mark, Ok(drop));
             } else {
-                let prev = c.prev;
-                let decided = self.call_mode_effective(prev);
+                let decided = self.call_mode_effective(self.call_modes[slot].prev);
                 self.call_mode_decided(mark, decided);
             }
         }
