@@ -26,7 +26,7 @@ from dnc.framing import Framer, split_lines
 from dnc.journal import read_journal
 from dnc.link import Port, chars_per_second, open_port
 from dnc.sender import FlowSettings, Resume, Sender
-from dnc.session import bytes_waiting, open_pty, punch, send_frames
+from dnc.session import SendProgress, bytes_waiting, open_pty, punch, send_frames
 from formats.profile import load_profile
 from formats.tape import EIA_TABLE, decode, iso_byte
 from tapegate.cli import main
@@ -507,33 +507,47 @@ def test_emulator_punches_to_a_receiving_host(tmp_path: Path) -> None:
 
 
 def test_send_frames_reports_progress_and_pauses() -> None:
-    """The progress seen paused at the control's DC3, and the pauses counted.
+    """The progress seen paused at the control's DC3 and resumed at its DC1, the pause
+    counted.
 
-    The control's buffer holds 12 characters, 10 of them its overrun allowance: it sends DC3
-    as soon as 2 characters wait (``high`` = 12 - 10), whatever the pace of either side. At
-    38400 baud the sender writes 1 or 2 bytes at a time (``ahead`` 2): a late sender (a busy
-    host) writes 2 at once, and one on time (1 byte a 0.26 ms) outpaces the 1,500 chars/s
-    drain, so the level reaches 2 within the first few bytes either way. (A buffer of 48 used
-    to need the sender faster than the drain for 38 bytes, which a loaded host was not: 6 of
-    20 runs paused never.)"""
+    The hold is the control's keypad's, written on its port by the progress callback itself
+    once 50 bytes have gone: DC3, then DC1 when the progress shows the sender paused. So the
+    pause comes whatever the pace of either side: at 38400 baud (3,840 chars/s) the 1,017
+    bytes take 0.26 s at least, and the DC3 is read before the sender's next write. (A
+    control that throttles on its buffer pauses a sender only where the sender outpaces its
+    drain, which a loaded host did not: 6 of 20 runs paused never, with a buffer of 48 and
+    1,500 chars/s, and 1 in a whole suite with a buffer of 12.) The control reads as fast as
+    the bytes come: its only other DC3 is its end of reading, which ends the pass."""
     s = replace(FANUC.serial, baud=38400)
-    control = control_for("fanuc-mill", baud=38400, buffer=12, rate=1500.0)
+    control = control_for("fanuc-mill", baud=38400)
     emu = Emulator(control)
     seen: list[bool] = []
+    held: list[str] = []
+
+    def progress(p: SendProgress) -> None:
+        seen.append(p.paused)
+        if not held and p.sent >= 50:
+            os.write(emu.pty.master, b"\x93")  # DC3 (ISO, even parity)
+            held.append("DC3")
+        elif held == ["DC3"] and p.paused:
+            os.write(emu.pty.master, b"\x11")  # DC1
+            held.append("DC1")
+
     try:
         port = open_port(emu.path, s)
         framer = Framer(s)
-        result = send_frames(port, framer.frames(split_lines([program(20)])),
+        result = send_frames(port, framer.frames(split_lines([program(60)])),
                              FlowSettings(cps=chars_per_second(s), xon_timeout=5),
-                             leader=framer.leader(), progress=lambda p: seen.append(p.paused),
-                             every=0.01)
+                             leader=framer.leader(), progress=progress, every=0.01)
         port.close()
         emu.wait(5)
     finally:
         emu.stop()
-    assert result.pauses >= 1 and any(seen)
-    assert control.stats.dc3 >= result.pauses  # every pause the sender made, a DC3 sent
-    assert result.sent == len(framer.leader()) + len(expected_bytes("fanuc-mill", program(20)))
+    assert held == ["DC3", "DC1"]
+    assert result.pauses == 1  # (DC1 may come in the same read as DC3: a pause of 0 s)
+    assert True in seen and seen[-1] is False  # paused, then resumed
+    assert result.sent == len(framer.leader()) + len(expected_bytes("fanuc-mill", program(60)))
+    assert control.sink.getvalue() == expected_bytes("fanuc-mill", program(60))  # type: ignore[union-attr]
 
 
 # -- other transports and the command-line emulator ---------------------------------------------
