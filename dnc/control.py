@@ -140,6 +140,11 @@ class Control:
         self.started = False  # first data byte seen since the last DC1 request
         self.last_dc1 = now
         self.rewound = False  # reset and rewound: what is still on the line is thrown away
+        # the operator resets and rewinds at the end of this block of the first program
+        # (:class:`dnc.emulator.RewindButton`'s ``after``): done by the control at that block,
+        # however many blocks after it the same read brought
+        self.rewind_after: int | None = None
+        self._rewind_due = False
         self.sink_start: int | None = None  # where the program being read began in the sink
         self.out: list[bytes] = [DC1]
 
@@ -179,6 +184,9 @@ class Control:
             elif self.stopped and arrival > self.dc3_at:
                 self._count_after_dc3()
             self._byte(byte)
+            if self._rewind_due:  # the rest of this read came after the reset: thrown away
+                self._rewind_due = False
+                self._reset(now)
         if self.rate is not None and self.phase in ("label", "program"):
             self.level += len(data)
             if not self.stopped and self.level >= self.high:
@@ -234,6 +242,11 @@ class Control:
         reset; whatever is still on the line is thrown away. The DC1 asking for the program
         again from ``%`` follows ``dc1_every`` seconds later (at once when nothing was being
         read), and is repeated until data comes, as at the first start."""
+        self._reset(now)
+        return self._flush() + self.time_passed(now)
+
+    def _reset(self, now: float) -> None:
+        """:meth:`rewind`'s change of state; what it sends is in :attr:`out`."""
         reading = self.phase in ("label", "program")
         if self.phase == "finished" and self.wanted is not None:
             self.wanted += 1  # rewound after the end: the operator wants it read again
@@ -253,7 +266,6 @@ class Control:
             self.out += [DC3, SYN]
         else:
             self.last_dc1 = now - self.dc1_every
-        return self._flush() + self.time_passed(now)
 
     # -- inside --------------------------------------------------------------------------------
 
@@ -367,6 +379,10 @@ class Control:
                 self._error("TV", f"{self.block_length} characters in the block")
             self._stats.blocks += 1
             self._newline()
+            after = self.rewind_after
+            if after is not None and self._stats.programs == 0 and self._stats.blocks >= after:
+                self.rewind_after = None
+                self._rewind_due = True
             return
         if char == "(" and not self.in_name:
             self.in_comment = True

@@ -20,21 +20,20 @@ from dnc.session import open_pty, punch, run_control
 class RewindButton:
     """The emulated operator's RESET and rewind button: :meth:`press` from any thread, or once by
     itself after ``after`` blocks of the first program; the loop serving the control asks
-    :meth:`pressed`."""
+    :meth:`pressed`. The press after ``after`` blocks is the control's own
+    (:attr:`Control.rewind_after`), made at that block within the read that brought it: asked
+    between reads, it came late where one read brought several blocks, and never where that
+    read brought the program's end too (an emulator that read late on a busy host)."""
 
     def __init__(self, control: Control, after: int | None = None):
         self.control = control
-        self.after = after
+        control.rewind_after = after
         self._pressed = threading.Event()
 
     def press(self) -> None:
         self._pressed.set()
 
     def pressed(self) -> bool:
-        stats = self.control.stats
-        if self.after is not None and stats.programs == 0 and stats.blocks >= self.after:
-            self.after = None
-            return True
         if self._pressed.is_set():
             self._pressed.clear()
             return True

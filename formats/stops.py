@@ -98,8 +98,15 @@ def heed_stops() -> None:
 # pipe, so the process's own, shared with the shell and the reader's side, keeps its flags):
 # a write there takes at once as much as the pipe has room for, or fails with EAGAIN -- it
 # never waits, so no signal can be lost in it -- and only then does the poll wait, on the pipe
-# and on the wakeup fd. Where no such description can be had (not a pipe, no /proc, the open
-# refused) or must not be (a pipe in packet mode), the 4,096 bytes a poll, as above.
+# and on the wakeup fd. Where no such description can be had (no /proc, the open refused:
+# another user's pipe, ``sudo -u USER tapegate ... | cat`` from root's shell, whose inode is
+# its maker's, mode 0600: EACCES) or must not be (a pipe in packet mode), the pipe's own
+# description is written by ``pwritev2`` with ``RWF_NOWAIT`` (:func:`_nowait`): a flag of the
+# one call, not of the description, so nothing shared changes, and the write takes what the
+# pipe has room for or fails with EAGAIN, as the twin's does (a kernel whose pipes take the
+# flag, as Linux 6.18 here; one whose pipes do not refuses it with EOPNOTSUPP before writing
+# a byte, and the writes go on as below). Not a pipe (a socket, a terminal), or neither: the 4,096
+# bytes a poll, as above.
 
 PIPE_BUF = 4096  # (select.PIPE_BUF on Linux; POSIX's least)
 _POLLIN, _POLLOUT = 0x001, 0x004  # (select.POLLIN, select.POLLOUT, without importing select)
@@ -241,8 +248,8 @@ def _twin(fd: int) -> int:
     not open for writing (a pipe's read end given as stdout: the twin, opened anew, would
     write into it), no ``/proc`` (not Linux), the open refused (a FIFO whose reader left:
     ENXIO), or a pipe in packet mode (``O_DIRECT``, ``pipe2``'s: a twin opened anew would not
-    have it, and its writes would run together into one stream; the polled writes of ``fd``
-    itself keep the packets)."""
+    have it, and its writes would run together into one stream; the writes of ``fd`` itself,
+    :func:`_nowait`'s or polled, keep the packets)."""
     import os
     import stat
 
@@ -258,18 +265,53 @@ def _twin(fd: int) -> int:
         return -1
 
 
-def _write_ready(twin: int, data: memoryview, wakeup: _Wakeup, main: bool) -> int:
+def _nowait(fd: int) -> bool:
+    """Whether the pipe ``fd``, open for writing, may be written by ``pwritev2`` with
+    ``RWF_NOWAIT`` where it has no twin (:func:`_twin`: another user's pipe, packet mode, no
+    /proc): a write that never waits, made on ``fd``'s own description without changing its
+    flags (a packet-mode pipe keeps its packets). Whether the kernel's pipes take the flag is
+    known at the first write only (:class:`_NoWait`)."""
+    import os
+    import stat
+
+    if not getattr(os, "RWF_NOWAIT", 0) or not hasattr(os, "pwritev"):
+        return False
+    try:
+        if not stat.S_ISFIFO(os.fstat(fd).st_mode):
+            return False
+        os.write(fd, b"")  # (EBADF where not open for writing)
+    except OSError:
+        return False
+    return True
+
+
+class _NoWait(Exception):
+    """The kernel refused ``RWF_NOWAIT`` on a pipe (EOPNOTSUPP where its pipes do not take
+    the flag), before writing a byte: the writes go on polled."""
+
+
+def _write_ready(twin: int, data: memoryview, wakeup: _Wakeup, main: bool,
+                 nowait: bool = False) -> int:
     """Bytes of ``data`` written into the non-blocking description ``twin`` of a pipe (at
-    least one): as many as the pipe has room for, at once, and only where it has none a wait
-    in the poll on it and on the signal's ``wakeup`` (a stop taken ends it: in the main
-    thread, raised)."""
+    least one), or with ``nowait`` into the pipe's own description ``twin`` by a write that
+    cannot wait (:func:`_nowait`; :class:`_NoWait` raised where the kernel refuses it): as
+    many as the pipe has room for, at once, and only where it has none a wait in the poll on
+    it and on the signal's ``wakeup`` (a stop taken ends it: in the main thread, raised)."""
     import os
 
     while True:
         try:
+            if nowait:
+                return os.pwritev(twin, [data], -1, os.RWF_NOWAIT)
             return os.write(twin, data)
         except BlockingIOError:  # (the pipe full: EAGAIN)
             pass
+        except OSError as exc:
+            import errno
+
+            if nowait and exc.errno in (errno.EOPNOTSUPP, errno.EINVAL):
+                raise _NoWait from None
+            raise
         while not _ready(twin, _POLLOUT, wakeup):
             if main:
                 heed_stops()
@@ -282,8 +324,9 @@ def write_all(fd: int, pieces: Iterable[bytes]) -> int:
     :data:`PIPE_BUF` bytes at a time, each once a poll says there is room, and the poll ends
     on the signal's wakeup as well. The bytes written; a stop raises its exception with the
     rest unwritten (every byte before it was written, in order). Into a pipe (on Linux),
-    through its non-blocking twin (:func:`_twin`): each write as large as the pipe takes at
-    once, a poll only where it is full."""
+    through its non-blocking twin (:func:`_twin`), else by writes that cannot wait
+    (:func:`_nowait`): each write as large as the pipe takes at once, a poll only where it is
+    full."""
     import os
 
     size = 0
@@ -299,6 +342,7 @@ def write_all(fd: int, pieces: Iterable[bytes]) -> int:
         return size
     with _Wakeup() as wakeup:
         twin = _twin(fd) if wakeup.fd >= 0 else -1
+        nowait = twin < 0 and wakeup.fd >= 0 and _nowait(fd)
         try:
             for piece in pieces:
                 view = memoryview(piece)
@@ -306,6 +350,12 @@ def write_all(fd: int, pieces: Iterable[bytes]) -> int:
                     heed_stops()
                     if twin >= 0:
                         view = view[_write_ready(twin, view, wakeup, True):]
+                        continue
+                    if nowait:
+                        try:
+                            view = view[_write_ready(fd, view, wakeup, True, True):]
+                        except _NoWait:
+                            nowait = False
                         continue
                     if wakeup.fd >= 0 and not _ready(fd, _POLLOUT, wakeup):
                         continue
@@ -420,19 +470,22 @@ def guard_stdout() -> None:
 class _PolledWriter(io.RawIOBase):
     """The raw writer under :func:`guard_stdout`'s stream: each write, whole, into the pipe's
     non-blocking twin (:func:`_twin`: as much at once as the pipe takes, a poll on the file and
-    on the signal's wakeup fd only where it is full), or where there is none (a socket, no
-    /proc) at most :data:`PIPE_BUF` bytes each once the poll says there is room. Closing it
-    leaves the descriptor, the process's standard output, open. Where the descriptor was
-    pointed elsewhere since (a stopped command's stdout made /dev/null,
+    on the signal's wakeup fd only where it is full), where there is none into the pipe by
+    writes that cannot wait (:func:`_nowait`: another user's pipe, packet mode), or else (a
+    socket, an old kernel) at most :data:`PIPE_BUF` bytes each once the poll says there is
+    room. Closing it leaves the descriptor, the process's standard output, open. Where the
+    descriptor was pointed elsewhere since (a stopped command's stdout made /dev/null,
     ``tapegate.launch._drop_pipes``, ``tapegate.common.silence_stdout``), the twin is closed
-    and the descriptor written: what it holds is what is written to."""
+    (the writes that cannot wait stop) and the descriptor written: what it holds is what is
+    written to."""
 
     def __init__(self, fd: int, wakeup: _Wakeup) -> None:
         super().__init__()
         self._fd = fd
         self._wakeup = wakeup
         self._twin = _twin(fd)
-        self._pipe = _identity(fd) if self._twin >= 0 else None
+        self._nowait = self._twin < 0 and _nowait(fd)
+        self._pipe = _identity(fd) if self._twin >= 0 or self._nowait else None
 
     def writable(self) -> bool:
         return True
@@ -455,6 +508,12 @@ class _PolledWriter(io.RawIOBase):
             if self._twin >= 0 and self._still_the_pipe():
                 view = view[_write_ready(self._twin, view, self._wakeup, main):]
                 continue
+            if self._nowait and self._still_the_pipe():
+                try:
+                    view = view[_write_ready(self._fd, view, self._wakeup, main, True):]
+                except _NoWait:
+                    self._nowait = False
+                continue
             while not _ready(self._fd, _POLLOUT, self._wakeup):
                 if main:
                     heed_stops()
@@ -470,14 +529,17 @@ class _PolledWriter(io.RawIOBase):
         super().close()
 
     def _still_the_pipe(self) -> bool:
-        """Whether the descriptor is still the pipe the twin was opened on (one ``fstat``);
-        else the twin closed, for good."""
+        """Whether the descriptor is still the pipe the twin was opened on, or the writes that
+        cannot wait began on (one ``fstat``); else the twin closed, or those writes ended, for
+        good."""
         import os
 
         if _identity(self._fd) == self._pipe:
             return True
-        os.close(self._twin)
-        self._twin = -1
+        if self._twin >= 0:
+            os.close(self._twin)
+            self._twin = -1
+        self._nowait = False
         return False
 
 

@@ -46,8 +46,11 @@ pieces (a report's slices) go to a temporary file of its own, read back at its t
 a file with megabytes of findings does not hold up the threads behind it; other pieces
 (SARIF's lists of findings) make the thread wait until they are taken. Where that file cannot
 be written (no room, no descriptor: :attr:`_Map.unspilled`), no piece is lost and no input is
-blamed: text pieces then wait as other pieces do, and only the main thread's own item, which
-cannot wait, holds them in memory, told once on stderr. (The bound is shared,
+blamed: text pieces then wait as other pieces do, told once on stderr, and the main thread's
+own item begun before its turn, which cannot wait, is abandoned where its pieces would pass
+the bound and done again at its turn, its pieces then handed on at once: memory stays flat
+(its function is one whose work may be done twice: a check reads and checks a file, and a
+conversion, which sends nothing, never comes here). (The bound is shared,
 not one for each item: the same memory at most as ``WINDOW`` items of 2 pieces each, without
 spilling the report of every short file finished ahead of its turn.)
 
@@ -108,6 +111,12 @@ class _Stopped(BaseException):
     """Raised in a thread by :func:`send` once the map is stopped (an error, SIGTERM, a closed
     pipe in the main thread): its item is abandoned (a BaseException, so that the function's
     own ``except Exception`` lets it through)."""
+
+
+class _Again(BaseException):
+    """Raised in the main thread by :func:`send` where its own item, begun before its turn,
+    has a piece that can be neither held within the bound nor spilled (the spill failed): the
+    item is abandoned, its pieces dropped, and done again at its turn (:meth:`_Map.take`)."""
 
 
 _local = _thread._local()
@@ -207,10 +216,12 @@ class _Slot:
     be taken begins. Once an item spills,
     every later piece of it does, so that they are taken in the order they were sent. Where
     the spill has failed (:attr:`_Map.unspilled`), an item that has spilled queues its later
-    pieces themselves in ``spilled`` (``kept`` of them), after those in its file."""
+    pieces themselves in ``spilled`` (``kept`` of them), after those in its file. ``again``:
+    the main thread's item abandoned before its turn, to be done again at it (:class:`_Again`).
+    """
 
     __slots__ = ("index", "early", "pieces", "done", "result", "error", "spill", "spilled",
-                 "write_at", "read_at", "kept")
+                 "write_at", "read_at", "kept", "again")
 
     def __init__(self, index: int, early: bool = False) -> None:
         self.index = index
@@ -225,6 +236,7 @@ class _Slot:
         self.write_at = 0
         self.read_at = 0
         self.kept = 0  # the pieces themselves in ``spilled`` (the spill failed)
+        self.again = False
 
     def close(self) -> None:
         if self.spill is not None:
@@ -296,14 +308,14 @@ class _Map:
         # that cannot be written: an OSError) and the folder it names: from then on no piece
         # is spilled, a thread's item not yet due waits for its turn with its pieces (as
         # other pieces than text do), and the main thread takes no item of its own before its
-        # turn unless every thread waits so (:meth:`take`); the main thread's own item keeps
-        # its pieces in memory, told once on stderr (review 75, N1: the items whose spill
-        # failed were told as files that cannot be read, their findings lost)
+        # turn unless every thread waits so (:meth:`take`); the main thread's own item begun
+        # before its turn is done again at its turn (:class:`_Again`), told once on stderr
+        # (review 75, N1: the items whose spill failed were told as files that cannot be
+        # read, their findings lost; then the main thread's item held its whole report)
         self.unspilled: OSError | None = None
         self.spill_folder = ""
         self.blocked = 0  # the threads waiting in put() for an item not yet due
-        self.overheld = False  # the main thread's own item held pieces past the budget
-        self.told = False  # and it was told
+        self.told = False  # the spill's failure told
 
     def work(self) -> None:
         """A thread: the next item of ``order``: an early one, or one within ``window`` of
@@ -364,6 +376,11 @@ class _Map:
             slot.result = self.func(self.items[slot.index])
         except _Stopped:  # the map stopped by a thread's failure: raised by take
             return
+        except _Again:  # done again at its turn: its pieces dropped (memory stays flat)
+            self.safe = False
+            with self.cond:
+                self._drop(slot)
+            return
         except Exception as exc:
             slot.error = exc
         finally:
@@ -384,13 +401,29 @@ class _Map:
         self.safe = False
         try:
             self.put(slot, piece, True)
+        except _Again:
+            if not self.told:
+                self.told = True
+                assert self.unspilled is not None
+                _tell(f"tapegate: cannot write the reports waiting for their turn to "
+                      f"{self.spill_folder}: {self.unspilled.strerror or self.unspilled}; "
+                      f"the files wait for their turn instead")
+            raise
         finally:
             self.interruptible()
-        if self.unspilled is not None and self.overheld and not self.told:
-            self.told = True
-            _tell(f"tapegate: cannot write the reports waiting for their turn to "
-                  f"{self.spill_folder}: {self.unspilled.strerror or self.unspilled}; they "
-                  f"are held in memory instead")
+
+    def _drop(self, slot: _Slot) -> None:
+        """The main thread's own item abandoned before its turn (the lock held): its pieces
+        dropped, to be done again at its turn (:meth:`take`)."""
+        if not slot.early:
+            self.held -= len(slot.pieces)
+        slot.pieces.clear()
+        slot.spilled.clear()
+        slot.kept = 0
+        slot.close()
+        slot.write_at = slot.read_at = 0
+        slot.again = True
+        self.space.notify_all()  # (room in the budget)
 
     def _ready(self) -> bool:
         """Whether the main thread is to be woken now that an item is done (the lock held):
@@ -437,9 +470,10 @@ class _Map:
                     if isinstance(piece, str | bytes) and (slot.spill is not None or not due):
                         if self.unspilled is None:
                             break
-                        if here or (due and slot.kept < PIECES):
+                        if here:  # (never due: given before its turn, and the turn moves
+                            raise _Again  # only in this thread) -- it cannot wait for room
+                        if due and slot.kept < PIECES:
                             self._keep(slot, piece, due)
-                            self.overheld = self.overheld or here  # (past the bounds)
                             return
                     elif here:  # other pieces of the main thread's own item: held, as
                         # only it makes room (waiting, it waited for ever: the CI's hang)
@@ -517,6 +551,9 @@ class _Map:
         with self.cond:
             while True:
                 slot = self.slots.get(index)
+                if slot is not None and slot.again:  # (its turn: done again, sent at once)
+                    slot.again = False
+                    return [], None, slot
                 if slot is not None:
                     pieces: list[Any] = []
                     if slot.pieces and (slot.done or slot.spilled

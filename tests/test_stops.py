@@ -380,8 +380,9 @@ def test_a_big_write_into_a_pipe_goes_in_large_writes_and_whole(
 def test_a_pipe_in_packet_mode_keeps_its_packets(how: str) -> None:
     """A pipe made in packet mode (``pipe2(O_DIRECT)``) gets no twin: a description opened
     anew would write without ``O_DIRECT``, its writes running together, where a reader of the
-    packets gets one packet (at most 4,096 bytes) a read. Its own descriptor's polled writes
-    keep them: every read at most 4,096 bytes, every byte in order (review 63's N2)."""
+    packets gets one packet (at most 4,096 bytes) a read. Its own descriptor's writes keep
+    them (``pwritev2(RWF_NOWAIT)`` where the kernel's pipes take it, else polled): every read
+    at most 4,096 bytes, every byte in order (review 63's N2)."""
     from formats import stops
 
     try:
@@ -394,6 +395,106 @@ def test_a_pipe_in_packet_mode_keeps_its_packets(how: str) -> None:
     got, reads = read_slowly(reader, writer, lambda: written(how, writer, data))
     assert got == data
     assert max(reads) <= stops.PIPE_BUF
+
+
+def _nowait_on_pipes() -> bool:
+    """Whether this kernel's pipes take ``pwritev2``'s RWF_NOWAIT (EOPNOTSUPP where not)."""
+    if not hasattr(os, "RWF_NOWAIT"):
+        return False
+    reader, writer = os.pipe()
+    try:
+        return os.pwritev(writer, [b"x"], -1, os.RWF_NOWAIT) == 1
+    except OSError:
+        return False
+    finally:
+        os.close(reader)
+        os.close(writer)
+
+
+@pytest.mark.skipif(os.name != "posix" or not hasattr(os, "geteuid") or os.geteuid() != 0
+                    or not _nowait_on_pipes(),
+                    reason="needs root (to make another user's pipe) and RWF_NOWAIT on pipes")
+@pytest.mark.parametrize("how", ["write_all", "guarded"])
+def test_another_users_pipe_is_written_in_large_writes_without_a_twin(how: str) -> None:
+    """Review 63's N4: ``sudo -u USER tapegate ... | cat`` from root's shell gives the command
+    a pipe root made: its inode root's, mode 0600, so the twin's open of /proc/self/fd/1 is
+    refused (EACCES) and every write went 4,096 bytes after a poll. Now such a pipe is written
+    on its own description by ``pwritev2(RWF_NOWAIT)``: as much as the pipe takes at once,
+    never waiting, its flags (shared with the shell) untouched. A forked child that became
+    ``nobody`` writes 4 MiB into a pipe this process (root) made."""
+    import fcntl
+    import json
+
+    from formats import stops
+
+    data = bytes(range(256)) * 16384  # 4 MiB
+    reader, writer = os.pipe()
+    told_r, told_w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: nobody, writing; its result on told_w
+        code = 1
+        try:
+            os.close(reader)
+            os.close(told_r)
+            os.setgid(65534)
+            os.setuid(65534)
+            sizes: list[int] = []
+            pwritev = os.pwritev
+
+            def counted(fd: int, buffers: list[bytes], at: int, flags: int = 0) -> int:
+                n = pwritev(fd, buffers, at, flags)
+                sizes.append(n)
+                return n
+
+            os.pwritev = counted  # type: ignore[assignment]
+            twin = stops._twin(writer)
+            written(how, writer, data)
+            blocking = not fcntl.fcntl(writer, fcntl.F_GETFL) & os.O_NONBLOCK
+            os.write(told_w, json.dumps([twin, len(sizes), max(sizes, default=0),
+                                         blocking]).encode())
+            code = 0
+        except BaseException as exc:
+            os.write(told_w, repr(exc).encode())
+        finally:
+            os._exit(code)
+    os.close(writer)
+    os.close(told_w)
+    got = bytearray()
+    while piece := os.read(reader, 1 << 16):
+        got.extend(piece)
+    os.close(reader)
+    _, status = os.waitpid(pid, 0)
+    with os.fdopen(told_r, "rb") as told:
+        result = told.read().decode()
+    assert os.waitstatus_to_exitcode(status) == 0, result
+    twin, writes, largest, blocking = json.loads(result)
+    assert twin == -1  # (refused: another user's pipe)
+    assert bytes(got) == data
+    assert largest > stops.PIPE_BUF and writes < len(data) // stops.PIPE_BUF // 4
+    assert blocking  # (the description the shell shares keeps its flags)
+
+
+@pytest.mark.parametrize("how", ["write_all", "guarded"])
+def test_a_kernel_that_refuses_rwf_nowait_on_a_pipe_leaves_the_polled_writes(
+        monkeypatch: pytest.MonkeyPatch, how: str) -> None:
+    """Where the pipe has no twin and the kernel refuses RWF_NOWAIT on pipes (EOPNOTSUPP,
+    before writing a byte), the writes go 4,096 bytes after a poll, as before: whole, in
+    order."""
+    import errno
+
+    from formats import stops
+
+    def refused(fd: int, buffers: object, at: int, flags: int = 0) -> int:
+        raise OSError(errno.EOPNOTSUPP, os.strerror(errno.EOPNOTSUPP))
+
+    monkeypatch.setattr(stops, "_twin", lambda fd: -1)
+    monkeypatch.setattr(os, "RWF_NOWAIT", 8, raising=False)
+    monkeypatch.setattr(os, "pwritev", refused)
+    data = bytes(range(256)) * 1024  # 256 KiB, four times a pipe's room
+    reader, writer = os.pipe()
+    assert stops._nowait(writer)
+    got, _ = read_slowly(reader, writer, lambda: written(how, writer, data))
+    assert got == data
 
 
 @pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs Linux's /proc")

@@ -1692,7 +1692,68 @@ def test_a_spill_that_cannot_be_made_loses_no_piece(monkeypatch, capfd, jobs, ea
     assert got == _expected_pieces(items)
     told = [line for line in capfd.readouterr().err.splitlines() if line]
     assert told in ([], ["tapegate: cannot write the reports waiting for their turn to /full: "
-                         "No space left on device; they are held in memory instead"]), told
+                         "No space left on device; the files wait for their turn instead"]), told
+
+
+def test_the_main_threads_item_whose_spill_fails_is_done_again_at_its_turn(monkeypatch, capfd):
+    """Issue 35's leftover of review 75, N1: the main thread's own item, begun before its turn,
+    cannot wait for room (only that thread makes it), so when the spill failed it held its
+    whole report in memory (a 38 MB report, 38 MB). Now it is abandoned there, its pieces
+    dropped, and done again at its turn, its pieces then handed on at once: memory flat, every
+    piece once and in order, told once.
+
+    Two long items last (10: 300, 11: 100; first() starts them early, 10 the larger): the
+    thread takes 10, and works on it until 11 is begun, which the main thread does, before
+    its turn (it takes an early item once every thread has one). Item 11 sends 80 pieces; no
+    spill file can be made; WAITING 1: a budget of 2 pieces for the items not due. Before,
+    the pieces held by the items not due peaked at 79-80 (item 11's); now at most the
+    budget, 2, plus an early item's EARLY (2) each: 6."""
+    import threading
+
+    import tapegate.workers as workers
+
+    def no_room() -> tuple[int, str]:
+        raise _full("/full")
+
+    monkeypatch.setattr(workers, "_spill_file", no_room)
+    monkeypatch.setattr(workers, "WAITING", 1)
+    calls: list[int] = []
+    peak = [0]
+    put = workers._Map.put
+
+    def watched(self: Any, slot: Any, piece: Any, here: bool = False) -> None:
+        put(self, slot, piece, here)
+        with self.cond:
+            held = sum(len(s.pieces) + s.kept for i, s in self.slots.items() if i != self.due)
+        peak[0] = max(peak[0], held)
+
+    monkeypatch.setattr(workers._Map, "put", watched)
+    lock = threading.Lock()
+    started = threading.Event()
+
+    def sending(item: int) -> int:
+        with lock:
+            calls.append(item)
+        if item == 11:
+            started.set()
+        elif item == 10:  # (its thread busy until 11 is begun: by the main thread)
+            assert started.wait(30)
+        for n in range(80 if item == 11 else 2):
+            send(f"{item}:{n}")
+        return item
+
+    items = list(range(12))
+    got = _mapped_within(60, sending, items, 2, sizes=[1] * 10 + [300, 100])
+    expected: list[object] = []
+    for item in items:
+        expected.extend(f"{item}:{n}" for n in range(80 if item == 11 else 2))
+        expected.append(item)
+    assert got == expected
+    assert peak[0] <= 6, peak
+    assert calls.count(11) == 2 and calls.count(10) == 1  # (11 abandoned once, then again)
+    told = [line for line in capfd.readouterr().err.splitlines() if line]
+    assert told == ["tapegate: cannot write the reports waiting for their turn to /full: "
+                    "No space left on device; the files wait for their turn instead"], told
 
 
 def test_a_spill_that_fails_midway_keeps_the_pieces_after_those_spilled(monkeypatch):
@@ -1753,7 +1814,7 @@ def test_check_whose_spill_has_no_room_reports_every_file_as_one_thread(tmp_path
     assert one.returncode == 1, one.stderr
     assert (two.returncode, two.stdout) == (one.returncode, one.stdout)
     told = (b"tapegate: cannot write the reports waiting for their turn to /no-room: "
-            b"No space left on device; they are held in memory instead\n")
+            b"No space left on device; the files wait for their turn instead\n")
     assert two.stderr.replace(told, b"", 1) == one.stderr, two.stderr[-2000:]
     assert b"cannot read" not in two.stderr and b"Traceback" not in two.stderr
     assert len(one.stdout) > 4 * 64 * 1024  # (more than the threads hold: it would spill)
