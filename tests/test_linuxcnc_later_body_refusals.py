@@ -1,0 +1,125 @@
+"""LinuxCNC: what rs274ngc refuses in a body written after the main program's end where a call
+of the main program surely runs it (issue 32 item 4, lcnc81; review 78-lcnc78b M4, M15, M18,
+A29, A83, A36).
+
+rs274 runs the body's lines one after the other where the main program's ``M98 P300`` (or
+``o300 call``) seeks it after the M2 (interp_o_word.cc ``control_back_to``,
+``convert_control_functions``), and stops at the first it refuses. Each refusal is TG412 at the
+line rs274 names, only where the line surely runs (the main program's first call, no end
+before it; every block of the body open known to run from numbers alone, no line before it
+that may leave the body). Each program is run in ``rs274 -g`` (where installed) and its message
+asserted, so that the checker and the oracle are seen to agree on the same text.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from .conftest import rs274_output
+from .test_linuxcnc_later_bodies import errors
+
+HEAD = "G21 G17 G90\nG0 X0 Y0\nM98 P300\nG0 X5\nM2\nO300\nG0 X1\n"
+
+
+def refusals(text: str) -> list[tuple[int, str]]:
+    return [(line, message) for rule, line, message in errors(text) if rule == "TG412"]
+
+
+# (the body after HEAD's `G0 X1`, the TG412 said: its line and the start of its message, and
+# rs274 -g's own message, None where it runs to its end)
+REFUSED = [
+    # M4: rs274 "Fanuc 'O....' subroutine definition must end with 'M99'" at the return
+    ("o300 return\nM99\n", (8, "Fanuc 'O....' subroutine definition must end with 'M99'"),
+     "Fanuc 'O....' subroutine definition must end with 'M99'"),
+    # ... any label's return, and one in an `if` known true
+    ("o5 return\nM99\n", (8, "Fanuc 'O....' subroutine definition must end with 'M99'"),
+     "Fanuc 'O....' subroutine definition must end with 'M99'"),
+    ("o1 if [2 GT 1]\no300 return\no1 endif\nM99\n",
+     (9, "Fanuc 'O....' subroutine definition must end with 'M99'"),
+     "Fanuc 'O....' subroutine definition must end with 'M99'"),
+    # ... not in an `if` known false (rs274 skips it: X1, X5, the end)
+    ("o1 if [0]\no300 return\no1 endif\nM99\n", None, None),
+    # M18: a stray `o2 endif`, "8: undefined O-word label: 'o2 endif'"
+    ("o2 endif\nM99\n", (8, "undefined O-word label"), "8: undefined O-word label: 'o2 endif'"),
+    ("o2 else\nM99\n", (8, "undefined O-word label"), "8: undefined O-word label: 'o2 else'"),
+    # A29: an o-word definition inside the FANUC-style program, "'O.... sub' subroutine must
+    # be called with 'O.... call'" at it
+    ("o400 sub\nG0 X2\no400 endsub\nM99\n",
+     (8, "'O.... sub' subroutine must be called with 'O.... call'"),
+     "'O.... sub' subroutine must be called with 'O.... call'"),
+    # M15: the only M99 in `o1 if [0]`: rs274 runs on to the file's end (X1, then the end)
+    ("o1 if [0]\nM99\no1 endif\n", (10, "File ended with no percent sign or program end"),
+     "File ended with no percent sign or program end"),
+    # ... where the M99 runs (`if [1]`), it returns: X1, X5, the end
+    ("o1 if [1]\nM99\no1 endif\n", None, None),
+]
+
+
+@pytest.mark.parametrize("body, said, oracle", REFUSED)
+def test_a_refusal_in_a_body_the_call_surely_runs(tmp_path, body: str, said, oracle) -> None:
+    text = HEAD + body
+    found = refusals(text)
+    if said is None:
+        assert found == []
+    else:
+        line, start = said
+        assert [(n, m[:len(start)]) for n, m in found] == [(line, start)]
+    out = rs274_output(tmp_path, text)
+    if oracle is None:
+        assert "PROGRAM_END" in out
+    else:
+        assert oracle in out and "PROGRAM_END" not in out
+
+
+# (a program whose body rs274 would refuse, where the refusal is not sure: silent)
+NOT_SURE = [
+    # an M2 of the main program in a condition not known before the call (rs274 -g: #5420 is
+    # 0, the M2 runs, O300 never does)
+    "G21 G17 G90\nG0 X0 Y0\no1 if [#5420 LT 1000]\nM2\no1 endif\nM98 P300\nM2\nO300\n"
+    "o300 return\nM99\n",
+    # a call before it of a body that may end the program (rs274 -g: it does)
+    "o100 sub\no1 if [#5420 LT 1000]\nM2\no1 endif\no100 endsub\nG21 G17 G90\nG0 X0 Y0\n"
+    "o100 call\nM98 P300\nM2\nO300\no300 return\nM99\n",
+    # the return in an `if` on the position: rs274 -g skips it (#5420 is 0, not above 1)
+    f"{HEAD}o1 if [#5420 GT 1]\no300 return\no1 endif\nM99\n",
+    # the only M99 in such an `if`: rs274 -g refuses at the end, a machine where X is above 1
+    # returns there
+    f"{HEAD}o1 if [#5420 GT 1]\nM99\no1 endif\n",
+    # the file closed by `%`: rs274 stops there (no refusal)
+    f"%\n{HEAD}o1 if [0]\nM99\no1 endif\n%\n",
+]
+
+
+@pytest.mark.parametrize("text", NOT_SURE)
+def test_a_refusal_not_sure_is_not_said(text: str) -> None:
+    assert refusals(text) == []
+
+
+def test_an_m98_in_a_later_body_of_a_program_passed_over_is_refused(tmp_path) -> None:
+    # review 78-lcnc78b A83: the main program's `o100 call` seeks o100 past O300 without
+    # recording it; o100's `M98 P300` seeks from its own line to the file's end: rs274 -g
+    # "EOF in file ... seeking o-word: o<300> from line: 9"
+    text = ("G21 G17 G90\no100 call\nG0 X5\nM2\nO300\nG0 X1\nM99\no100 sub\nM98 P300\n"
+            "o100 endsub\n")
+    found = refusals(text)
+    assert [(n, m[:26]) for n, m in found] == [(9, "EOF in file seeking o-word")]
+    assert "seeking o-word: o<300> from line: 9" in rs274_output(tmp_path, text)
+    # the main program's M98 P300 before it finds O300 first, and rs274 keeps its place: the
+    # body's call runs it (X1 twice)
+    text = text.replace("o100 call\n", "M98 P300\no100 call\n")
+    assert refusals(text) == []
+    assert "PROGRAM_END" in rs274_output(tmp_path, text)
+    # an O300 after the body is found by the body's search
+    text = ("G21 G17 G90\no100 call\nG0 X5\nM2\nO300\nG0 X1\nM99\no100 sub\nM98 P300\n"
+            "o100 endsub\nO300\nG0 X3\nM99\n")
+    assert refusals(text) == []
+    assert "PROGRAM_END" in rs274_output(tmp_path, text)
+
+
+def test_a_call_of_a_label_the_file_never_defines_is_no_refusal(tmp_path) -> None:
+    # review 78-lcnc78b A36: rs274 -g "EOF in file ... seeking o-word: o<100>", but a machine
+    # runs 100.ngc from its SUBROUTINE_PATH (rs274 -i with such a path runs it): what the path
+    # is for (LinuxCNC O codes, "Calling Files")
+    text = "G21 G17 G90\no100 call\nG0 X5\nM2\n"
+    assert refusals(text) == []
+    assert "seeking o-word: o<100>" in rs274_output(tmp_path, text)
