@@ -123,3 +123,29 @@ def test_a_call_of_a_label_the_file_never_defines_is_no_refusal(tmp_path) -> Non
     text = "G21 G17 G90\no100 call\nG0 X5\nM2\n"
     assert refusals(text) == []
     assert "seeking o-word: o<100>" in rs274_output(tmp_path, text)
+
+
+def test_a_later_program_called_by_a_parameter_is_named_by_its_number(tmp_path) -> None:
+    # review 80-lcnc80 R9: `M98 P#1` with #1 = 300 runs O300 under the call's G55 (X -100):
+    # rs274 -g with G55 X -100 runs X-700 at machine -800; TG601 named the body "O#1"
+    text = "G21 G17 G90 G55\nG0 X0 Y0\n#1=300\nM98 P#1\nM2\nO300\nG0 X-700\nM99\n"
+    found = [(line, message) for rule, line, message in errors(text) if rule == "TG601"]
+    assert len(found) == 1 and found[0][0] == 7
+    assert "(O300 runs as called by M98 P#1 of line 4" in found[0][1]
+
+
+def test_the_lines_after_an_o_programs_m99_leave_a_later_program_out(tmp_path) -> None:
+    # review 80-lcnc80 R4: TG117 at the stray line after O2000's M99 no longer says that
+    # O3000's body, which M98 P3000 runs (rs274 -g: X1, then X-700), is never read
+    text = ("G21 G17 G90\nG0 X0 Y0\nM98 P2000\nM98 P3000\nM2\nO2000\nG0 X1.\nM99\nG0 X2.\n"
+            "O3000\nG0 X-7.\nM99\n")
+    from postproc.check import check_text
+
+    from .test_linuxcnc_later_bodies import profile
+
+    said = [f for f in check_text(text, profile()) if f.rule == "TG117"]
+    assert [f.line for f in said] == [9]
+    assert "but for the body of an o<name> sub definition or an O number program" in \
+        said[0].message
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(-7.0000" in out and "STRAIGHT_TRAVERSE(2.0000" not in out

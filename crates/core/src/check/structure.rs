@@ -2220,6 +2220,14 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC: the label of the definition after the main program's end being read, the
+    /// key in hand ([`LATER_DEFINITION`] + its index among the labels its calls were kept for).
+    pub(super) fn later_label(&self) -> Option<&[u8]> {
+        let index = self.in_hand?.checked_sub(LATER_DEFINITION)?;
+        let labels = self.later_called.as_ref()?;
+        labels.get(usize::try_from(index).ok()?).map(Vec::as_slice)
+    }
+
     /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
     /// ([`Checker::later_call`]) name: read as a program written after its calls is
     /// ([`Checker::work_of_calls`]), under the calls' work offset where they agree (in their
@@ -6947,19 +6955,21 @@ impl Checker {
             )
         } else if unread.end == self.linuxcnc_m99_end {
             format!(
-                "line {} and the lines after it that are not O-word lines are never read: \
-                 LinuxCNC stops at the M99 of the main program on line {} (rs274 2.9 ends the \
-                 program there, or loops back to its start: interp_convert.cc convert_stop; \
-                 an M98 call finds an O number program after it, reading O-word lines alone); \
-                 passed over, kept as written",
+                "line {} and the lines after it that are not O-word lines are never read, but \
+                 for the body of an O number program that a call finds there: LinuxCNC stops \
+                 at the M99 of the main program on line {} (rs274 2.9 ends the program there, \
+                 or loops back to its start: interp_convert.cc convert_stop; an M98 call finds \
+                 an O number program after it, reading O-word lines alone, and runs its body \
+                 to its M99); passed over, kept as written",
                 unread.line, unread.end
             )
         } else {
             format!(
-                "line {} and the lines after it that are not O-word lines are never read: \
-                 LinuxCNC stops at the M2/M30 on line {} (rs274's driver stops there; a call \
-                 finds an o<name> sub definition after it, reading O-word lines alone); \
-                 passed over, kept as written",
+                "line {} and the lines after it that are not O-word lines are never read, but \
+                 for the body of an o<name> sub definition or an O number program that a call \
+                 finds there: LinuxCNC stops at the M2/M30 on line {} (rs274's driver stops \
+                 there; a call finds such a definition after it, reading O-word lines alone, \
+                 and runs its body to its endsub or M99); passed over, kept as written",
                 unread.line, unread.end
             )
         };
@@ -7833,22 +7843,32 @@ pub(super) struct WorkCall {
 
 impl WorkCall {
     /// What a TG601 of its machine position under offset G`work` adds: the call that runs it
-    /// there.
-    pub(super) fn named(&self, number: Option<i64>, work: i64) -> String {
+    /// there (`label`: [`Checker::later_label`]).
+    pub(super) fn named(&self, number: Option<i64>, label: Option<&[u8]>, work: i64) -> String {
         if work != self.work {
             return String::new();
         }
-        Self::named_by(number, &self.call, self.line)
+        Self::named_by(number, label, &self.call, self.line)
     }
 
-    /// What a TG601 of a position run by the call `call` of line `line` adds.
-    pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
+    /// What a TG601 of a position run by the call `call` of line `line` adds; `label` that
+    /// of a LinuxCNC definition after the end, which its call was kept for.
+    pub(super) fn named_by(
+        number: Option<i64>,
+        label: Option<&[u8]>,
+        call: &str,
+        line: usize,
+    ) -> String {
         // (a LinuxCNC definition after the end: its label, the call's)
         let program = match number {
-            // (an `M98 P300` of LinuxCNC's FANUC-style `O300`: its O number)
-            Some(n) if n >= LATER_DEFINITION => match call.strip_prefix("M98 P") {
-                Some(p) => format!("O{p}"),
-                None => call.trim_end_matches(" call").to_string(),
+            // (an `M98 P300` of LinuxCNC's FANUC-style `O300`: its O number, the label's
+            // where the P is a parameter, `M98 P#1`: review 80-lcnc80 R9)
+            Some(n) if n >= LATER_DEFINITION => match (call.strip_prefix("M98 P"), label) {
+                (Some(_), Some([b'o', number @ ..])) => {
+                    format!("O{}", String::from_utf8_lossy(number))
+                }
+                (Some(p), _) => format!("O{p}"),
+                (None, _) => call.trim_end_matches(" call").to_string(),
             },
             Some(n) => program_name(n),
             None => "the program".to_string(),
