@@ -149,3 +149,55 @@ def test_the_lines_after_an_o_programs_m99_leave_a_later_program_out(tmp_path) -
         said[0].message
     out = rs274_output(tmp_path, text)
     assert "STRAIGHT_TRAVERSE(-7.0000" in out and "STRAIGHT_TRAVERSE(2.0000" not in out
+
+
+def g57_profile():
+    from formats.profile import builtin_text, profile_from_text
+
+    toml = builtin_text("linuxcnc").replace("[limits]\n",
+                                            "[limits]\nX = [-762, 762]\nY = [-406, 406]\n")
+    return profile_from_text(toml + "\n[work_offsets]\nG54 = { X = 0.0, Y = 0.0 }\n"
+                             "G57 = { X = -300.0, Y = 0.0 }\n")
+
+
+@pytest.mark.parametrize("opened, body, after, said", [
+    # review 80-lcnc80 R8: the call inside `o1 if [1]` or an `if` not known, as outside a
+    # block (review 78-lcnc78b F7): machine -650 under G54, then 1000 - 300 = 700 under G57,
+    # each inside; was "X spans 1650"
+    ("o1 if [1]", "G0 X1000.", "", []),
+    ("o1 if [#5420 LT 1]", "G0 X1000.", "", []),
+    # ... a body beyond under G57 is said as a machine position (1100 - 300 = 800)
+    ("o1 if [1]", "G0 X1100.", "", [(9, "X goes to 800 in machine coordinates")]),
+    # ... a move of the main program after the block, whose offsets the call lost, joins
+    # the span as after a call outside a block (review 79-lcnc79 F2: X1100 with -650, "X
+    # spans 1750", kept)
+    ("o1 if [1]", "G0 X0", "G0 X1100.\n", [(7, "X spans 1750")]),
+])
+def test_a_call_in_a_block_keeps_the_spans_set_aside_at_a_selection(opened, body, after,
+                                                                     said) -> None:
+    text = (f"G21 G17 G90 G54\nG0 X-650.\nG57\n{opened}\nM98 P2000\no1 endif\n{after}M2\n"
+            f"O2000\n{body}\nM99\n")
+    from postproc.check import check_text
+
+    found = [(f.line, f.message) for f in check_text(text, g57_profile())
+             if f.rule == "TG601"]
+    assert len(found) == len(said)
+    assert [(line, message[:len(start)]) for (line, message), (_, start)
+            in zip(found, said, strict=True)] == said
+
+
+def test_a_named_label_of_digits_is_the_numbered_one(tmp_path) -> None:
+    # rs274 names a numbered label by its value (`%d`): `o<300> sub` answers `o300 call`
+    # (rs274 -g with G55 X -100: X-700 at machine -800) and refuses `M98 P300` ("'O.... sub'
+    # subroutine must be called with 'O.... call'"); `o<0300>` is another name
+    body = "M2\no<300> sub\nG0 X-700.\no<300> endsub\n"
+    text = f"G21 G17 G90 G55\nG0 X0 Y0\no300 call\n{body}"
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG601", 6)]
+    assert "STRAIGHT_TRAVERSE(-700.0000" in rs274_output(tmp_path, text)
+    text = f"G21 G17 G90 G55\nG0 X0 Y0\nM98 P300\n{body}"
+    assert refusals(text)[0][0] == 5
+    assert "'O.... sub' subroutine must be called with 'O.... call'" in rs274_output(tmp_path,
+                                                                                   text)
+    text = f"G21 G17 G90 G55\nG0 X0 Y0\no300 call\n{body.replace('<300>', '<0300>')}"
+    assert errors(text) == []
+    assert "seeking o-word: o<300>" in rs274_output(tmp_path, text)

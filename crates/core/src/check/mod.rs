@@ -508,7 +508,10 @@ macro_rules! statements_only_block {
             $s.linuxcnc_nurbs_last = None;
             // (a call of a body that keeps them, or a condition's or loop's own line,
             // loses no offset: the two are never one line)
-            if !std::mem::take(&mut $s.call_keeps) && !$s.linuxcnc_flow_offsets($b) {
+            if !std::mem::take(&mut $s.call_keeps)
+                && !$s.linuxcnc_flow_offsets($b)
+                && !$s.later_call_if_line($b)
+            {
                 $s.call_offsets_rewritten($b.line, false, never);
             }
         }
