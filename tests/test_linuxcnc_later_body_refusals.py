@@ -201,3 +201,17 @@ def test_a_named_label_of_digits_is_the_numbered_one(tmp_path) -> None:
     text = f"G21 G17 G90 G55\nG0 X0 Y0\no300 call\n{body.replace('<300>', '<0300>')}"
     assert errors(text) == []
     assert "seeking o-word: o<300>" in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("o300", [
+    "o1 if [1]\nM99\no1 endif\n",
+    "o1 if [#5420 GT 0]\nG0 X1.\nM99\no1 else\nG0 X2.\nM99\no1 endif\n",
+])
+def test_an_o_program_after_one_whose_m99s_are_in_blocks_is_its_own(tmp_path, o300) -> None:
+    # review 81-lcnc81 R2: O300's M99s are all in its blocks, and the O400 line after it
+    # starts the program that M98 P400 runs first (rs274 -g with G55 X -100: X-700 at
+    # machine -800); the O400 line was read inside O300 and its body never judged
+    text = (f"G21 G17 G90 G55\nG0 X0 Y0\nM98 P400\nM98 P300\nM2\nO300\n{o300}O400\n"
+            "G0 X-700.\nM99\n")
+    line = text.count("\n") - 1
+    assert [(r, n) for r, n, _ in errors(text)] == [("TG601", line)]
