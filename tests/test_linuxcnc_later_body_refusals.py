@@ -52,6 +52,9 @@ REFUSED = [
      "File ended with no percent sign or program end"),
     # ... where the M99 runs (`if [1]`), it returns: X1, X5, the end
     ("o1 if [1]\nM99\no1 endif\n", None, None),
+    # ... no M99 at all (review 81-lcnc81 R3: said so, not "each is in a block")
+    ("G0 X2\n", (8, "File ended with no percent sign or program end"),
+     "File ended with no percent sign or program end"),
 ]
 
 

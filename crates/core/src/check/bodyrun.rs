@@ -58,6 +58,8 @@ pub(super) struct SureBody {
     open: Vec<Open>,
     /// A line read before may have left the body or ended the run: nothing after it is said.
     left: bool,
+    /// An M99 read in a block known not to run.
+    skipped_m99: bool,
 }
 
 /// What the reading after the main program's end keeps for these refusals.
@@ -124,6 +126,7 @@ impl Checker {
             opened: line,
             open: Vec::new(),
             left: false,
+            skipped_m99: false,
         });
     }
 
@@ -185,6 +188,7 @@ impl Checker {
             body.left = true;
             return;
         }
+        body.skipped_m99 |= skipped && m(99);
         if !skipped && (m(2) || m(30) || m(99)) {
             // (the run ends or returns here, or may: nothing after it is sure; an M99 of
             // a FANUC-style program outside its blocks closes it, read as its endsub)
@@ -389,10 +393,15 @@ impl Checker {
         if self.open_definition.is_none() || self.percent_closed {
             return;
         }
+        let m99 = if body.skipped_m99 {
+            "has no M99 that runs (each is in a block that does not)"
+        } else {
+            "has no M99"
+        };
         let message = format!(
             "File ended with no percent sign or program end (rs274ngc): the FANUC-style \
-             program {} that the call on line {} runs has no M99 that runs (each is in a block \
-             that does not), so rs274 2.9 runs on to the file's end",
+             program {} that the call on line {} runs {m99}, so rs274 2.9 runs on to the \
+             file's end",
             fanuc_name(&body.label),
             body.call,
         );
