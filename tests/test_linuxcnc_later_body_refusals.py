@@ -47,9 +47,11 @@ REFUSED = [
     ("o400 sub\nG0 X2\no400 endsub\nM99\n",
      (8, "'O.... sub' subroutine must be called with 'O.... call'"),
      "'O.... sub' subroutine must be called with 'O.... call'"),
-    # M15: the only M99 in `o1 if [0]`: rs274 runs on to the file's end (X1, then the end)
-    ("o1 if [0]\nM99\no1 endif\n", (10, "File ended with no percent sign or program end"),
-     "File ended with no percent sign or program end"),
+    # M15: the only M99 in `o1 if [0]`: rs274 runs on to the file's end (X1, then the end),
+    # "File ended with no percent sign or program end"; not said: an M99 alone on its line
+    # closes the program for the checker's reading, in a block or not (the next program or
+    # definition after it is read as its own: review 81-lcnc81 R2, R4, R6)
+    ("o1 if [0]\nM99\no1 endif\n", None, "File ended with no percent sign or program end"),
     # ... where the M99 runs (`if [1]`), it returns: X1, X5, the end
     ("o1 if [1]\nM99\no1 endif\n", None, None),
     # ... no M99 at all (review 81-lcnc81 R3: said so, not "each is in a block")

@@ -1501,9 +1501,6 @@ impl Checker {
                 }
             }
             if b.statements.is_empty() && !b.words.is_empty() {
-                if self.linuxcnc_fanuc_open && self.linuxcnc_next_program(b) {
-                    self.linuxcnc_fanuc_closed_at(b);
-                }
                 if let Some(text) = self.linuxcnc_fanuc_line(b) {
                     self.linuxcnc_fanuc_program(b, &text);
                     return true;
@@ -1554,13 +1551,7 @@ impl Checker {
             self.linuxcnc_fanuc_open = true;
             return Some(format!("o{n} sub").into_bytes());
         }
-        // (an M99 inside the body's conditions and loops returns where it runs, and does not
-        // end the program's text: rs274 runs on past one that does not; review 78-lcnc78b M15)
-        if w.letter == b'M'
-            && self.linuxcnc_fanuc_open
-            && self.linuxcnc_definition_flow.is_empty()
-            && number.parse::<i64>().ok()? == 99
-        {
+        if w.letter == b'M' && self.linuxcnc_fanuc_open && number.parse::<i64>().ok()? == 99 {
             let open = &self.open_definition.as_ref()?.2;
             let mut text = open.clone();
             text.extend_from_slice(b" endsub");
@@ -1568,41 +1559,6 @@ impl Checker {
             return Some(text);
         }
         None
-    }
-
-    /// LinuxCNC: an `O` number line (`O400`) read while a FANUC-style program after the main
-    /// program's end is open, outside its blocks: that program's M99s are all inside its
-    /// blocks ([`Checker::linuxcnc_fanuc_line`]), and the line starts the next program, which
-    /// a call seeks as its own (rs274 runs on through the line where the program before
-    /// reaches it, and an `M98 P400` finds O400 there: review 81-lcnc81 R2, `M98 P400` /
-    /// `M98 P300` / `M2` / `O300` / `o1 if [1]` / `M99` / `o1 endif` / `O400` / `G0 X-700.` /
-    /// `M99` runs X-700 under the call's G55).
-    fn linuxcnc_next_program(&self, b: &BlockView<'_>) -> bool {
-        let mut words = b.words.iter().filter(|w| w.letter != b'N');
-        let (Some(w), None) = (words.next(), words.next()) else {
-            return false;
-        };
-        w.letter == b'O'
-            && !b.skip
-            && w.index.is_empty()
-            && w.expression.is_empty()
-            && !w.number.contains(&b'.')
-            && self.open_definition.is_some()
-            && self.linuxcnc_definition_flow.is_empty()
-    }
-
-    /// [`Checker::linuxcnc_next_program`]: the open FANUC-style program closed before the line,
-    /// as at its M99.
-    #[cold]
-    #[inline(never)]
-    fn linuxcnc_fanuc_closed_at(&mut self, b: &BlockView<'_>) {
-        let Some(open) = &self.open_definition else {
-            return;
-        };
-        let mut text = open.2.clone();
-        text.extend_from_slice(b" endsub");
-        self.linuxcnc_fanuc_open = false;
-        self.linuxcnc_fanuc_program(b, &text);
     }
 
     /// LinuxCNC 2.9 refuses a call of one form that reaches a definition of the other, where
