@@ -158,6 +158,11 @@ def test_haas_calls_of_later_bodies(profiles, text, expected):
     # -800; main left it not judged, test_calls_offsets.py's silent list until calls80)
     ("G21 G17 G90 G54 / G0 X0 Y0 / G55 / o100 call / G0 X-700 / M2 / o100 sub / G0 X0 / "
      "o100 endsub", [(5, 4, "X goes to -800")]),
+    # (lcnc81: a condition false from numbers alone is read as `[0]` is, by the checker's one
+    # reading of conditions; rs274 -g: the G91 never runs, -700 under SET_G5X_OFFSET(2),
+    # machine -800; main kept the held finding dropped)
+    ("G21 G17 G90 G54 / G0 X0 Y0 / o2000 call / G55 / G0 X-700. / M2 / o2000 sub / "
+     "o1 if [1 GT 2] / G91 / o1 endif / o2000 endsub", [(5, 4, "X goes to -800")]),
     # (a condition not known: silent, as main)
     ("G21 G17 G90 G54 / G0 X0 Y0 / o2000 call / G0 X500. / G0 X500. / M2 / o2000 sub / "
      "o1 if [#1 GT 0] / G91 / o1 endif / o2000 endsub", []),

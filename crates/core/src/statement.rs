@@ -802,6 +802,20 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     }
     if text.get(1) == Some(&b'<') {
         let end = o_label_end(&text).unwrap_or(text.len());
+        // (a name that is a number as rs274 prints one, `o<300>`, is the label `o300`:
+        // read_o names a numbered label by its value's `%d`, so `o<300> sub` answers `o300
+        // call` and `M98 P300`; `o<0300>` is no `o300`; lcnc81, `rs274 -g`)
+        if let Some(name) = text[..end]
+            .strip_prefix(b"o<")
+            .and_then(|t| t.strip_suffix(b">"))
+        {
+            let shown = std::str::from_utf8(name).ok();
+            if let Some(n) = shown.and_then(|t| t.parse::<i64>().ok()) {
+                if shown == Some(n.to_string().as_str()) {
+                    return format!("o{n}").into_bytes();
+                }
+            }
+        }
         return text[..end].to_vec();
     }
     let end = o_label_end(&text).unwrap_or(text.len());

@@ -4221,7 +4221,7 @@ impl Checker {
                 round6(at)
             );
             if let Some(w) = &self.work_call {
-                message.push_str(&w.named(self.in_hand, work));
+                message.push_str(&w.named(self.in_hand, self.later_label(), work));
             }
             // (one judged with a value written is not judged again at a call with the
             // caller's: its own G10 decides)
@@ -4317,7 +4317,12 @@ impl Checker {
                 ];
                 let place = (axis, i, offset, (low, high));
                 let named = || {
-                    let named = super::structure::WorkCall::named_by(self.in_hand, words, *line);
+                    let named = super::structure::WorkCall::named_by(
+                        self.in_hand,
+                        self.later_label(),
+                        words,
+                        *line,
+                    );
                     (*work, named)
                 };
                 super::callmode::Rescale::judged(
@@ -4338,7 +4343,12 @@ impl Checker {
                     axis as char,
                     round6(machine_at),
                     round6(at),
-                    super::structure::WorkCall::named_by(self.in_hand, words, *line)
+                    super::structure::WorkCall::named_by(
+                        self.in_hand,
+                        self.later_label(),
+                        words,
+                        *line
+                    )
                 );
                 if self.report_placed(message, at_line, super::Placed::Not) {
                     if let Some(f) = self.found.last_mut() {

@@ -41,6 +41,7 @@ pub use structure::nested_comment;
 
 // the rules, by family
 mod after;
+mod bodyrun;
 mod called;
 mod callflow;
 mod callmode;
@@ -507,7 +508,10 @@ macro_rules! statements_only_block {
             $s.linuxcnc_nurbs_last = None;
             // (a call of a body that keeps them, or a condition's or loop's own line,
             // loses no offset: the two are never one line)
-            if !std::mem::take(&mut $s.call_keeps) && !$s.linuxcnc_flow_offsets($b) {
+            if !std::mem::take(&mut $s.call_keeps)
+                && !$s.linuxcnc_flow_offsets($b)
+                && !$s.later_call_if_line($b)
+            {
                 $s.call_offsets_rewritten($b.line, false, never);
             }
         }
@@ -1326,6 +1330,9 @@ pub struct Checker {
     /// without a motion code after each, judged at the definition's `endsub`
     /// ([`structure::LaterCalls`]).
     linuxcnc_later: Box<structure::LaterCalls>,
+    /// LinuxCNC: the bodies read after the main program's end that its calls surely run, for
+    /// rs274's refusals there (bodyrun.rs).
+    linuxcnc_later_bodies: Box<bodyrun::LaterBodies>,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
@@ -2115,6 +2122,7 @@ impl Checker {
             linuxcnc_body_returns: false,
             linuxcnc_sub_motion: HashMap::new(),
             linuxcnc_later: Box::default(),
+            linuxcnc_later_bodies: Box::default(),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
@@ -3432,6 +3440,9 @@ impl Checker {
         self.program_shift_end();
         if !self.linuxcnc_later.moves.is_empty() {
             self.linuxcnc_later_unanswered();
+        }
+        if self.config.family == Family::LinuxCnc {
+            self.later_bodies_ended(self.last_line);
         }
         if !self.linuxcnc_later.ends.is_empty() {
             self.linuxcnc_later_released_at(true);

@@ -172,4 +172,28 @@ impl Checker {
             }
         }
     }
+
+    /// LinuxCNC: an `if`, `elseif`, `else` or `endif` line of the main program after a call
+    /// of a body read later inside the block (the offsets lost by that call alone,
+    /// `Checker::call_offsets_rewritten`): the line changes no offset and jumps back to
+    /// nothing, so the spans set aside at a selection before the call stay so, as after the
+    /// same call outside a block (review 80-lcnc80 R8: `G54` / `G0 X-650.` / `G57` / `o1 if
+    /// [1]` / `M98 P2000` / `o1 endif` / `M2` / `O2000` / `G0 X1000.` / `M99`, G57 X -300,
+    /// runs at machine -650 then 700, and was "X spans 1650"). A loop's closing line, which
+    /// runs the lines before it again, loses them as before.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn later_call_if_line(&self, b: &super::BlockView<'_>) -> bool {
+        self.config.family == crate::lex::Family::LinuxCnc
+            && self.offsets_lost
+            && self.offsets_unread_only
+            && self.open_definition.is_none()
+            && !b.statements.is_empty()
+            && b.statements.iter().all(|&(_, kind, text)| {
+                kind == crate::statement::Kind::Flow
+                    && crate::statement::o_keyword(text).is_some_and(|k| {
+                        matches!(k.as_slice(), b"if" | b"elseif" | b"else" | b"endif")
+                    })
+            })
+    }
 }

@@ -20,7 +20,8 @@
 //! the first that is not a plain G00/G01 move (a statement, a parameter, another call, any
 //! other G or M code ends them); a body of plain moves and arcs, G90/G91, feed and speed
 //! only, whose every statement is known not to change its run -- a LinuxCNC `o1 if [0]`
-//! block (its lines never run: rs274 skips them), a FANUC `IF [..] THEN` whose condition
+//! block, or any `if` whose condition is false from numbers alone (`[1 GT 2]`; its lines never
+//! run: rs274 skips them), a FANUC `IF [..] THEN` whose condition
 //! the values known make false, a `GOTO n` or `IF [..] GOTO n` whose block `Nn` is the next
 //! one (either way the run goes on there) -- and returns with a plain M99 or `endsub`.
 //! Anything else leaves main's reading as it was (unknown: silent).
@@ -453,17 +454,9 @@ impl Checker {
                 (Kind::Definition, Some(b"sub")) => {}
                 (Kind::Definition, Some(b"endsub")) => returns = true,
                 (Kind::Flow, Some(b"if")) => {
-                    let lower = text.to_ascii_lowercase();
-                    let at = lower
-                        .windows(2)
-                        .position(|w| w == b"if")
-                        .map_or(lower.len(), |k| k + 2);
-                    let condition: Vec<u8> = lower[at..]
-                        .iter()
-                        .copied()
-                        .filter(|c| !crate::lex::blank(*c))
-                        .collect();
-                    if matches!(condition.as_slice(), b"[0]" | b"[0.0]" | b"[0.]") {
+                    // (false from numbers alone, `[0]`, `[2 LT 1]`: not from a parameter,
+                    // which the caller may have changed after the call)
+                    if super::structure::linuxcnc_constant_runs(text) == Some(false) {
                         body.dead = Some(crate::statement::o_label(text));
                     } else {
                         body.sure = false;

@@ -1545,6 +1545,7 @@ impl Checker {
             let called = self.linuxcnc_m98_numbers.contains(&n)
                 || self.linuxcnc_later.ends.iter().any(|c| c.0 == label);
             if !called || self.linuxcnc_defs_after.contains(&label) {
+                self.later_program_passed(n, b.line);
                 return None;
             }
             self.linuxcnc_fanuc_open = true;
@@ -1707,6 +1708,9 @@ impl Checker {
         // definition: only a definition's body has its words to mark)
         let statement = if b.statements.is_empty() {
             if self.open_definition.is_some() {
+                if self.linuxcnc_later_bodies.sure.is_some() {
+                    self.later_body_line(b);
+                }
                 self.linuxcnc_body(b, None);
                 self.bare_o_in_definition(b);
                 self.linuxcnc_body_locals(b, None);
@@ -1719,14 +1723,27 @@ impl Checker {
             self.definition_after_call(b, statement.as_ref());
             self.definition_feed(statement.as_ref());
             let was_open = self.open_definition.is_some();
+            if was_open && self.linuxcnc_later_bodies.sure.is_some() {
+                self.later_body_line(b);
+            }
             self.definition_open(b, statement.as_ref());
             if was_open != self.open_definition.is_some() && self.surely_ended {
                 self.linuxcnc_call_forms(b, was_open);
+                match &self.open_definition {
+                    Some(open) if !was_open => {
+                        let label = open.2.clone();
+                        self.later_body_opened(&label, self.linuxcnc_fanuc_open, b.line);
+                    }
+                    _ => self.linuxcnc_later_bodies.sure = None,
+                }
             }
             self.linuxcnc_definition_plane(was_open);
             self.linuxcnc_body(b, statement.as_ref());
             if was_open && self.open_definition.is_none() && !self.linuxcnc_later.ends.is_empty() {
                 self.linuxcnc_later_ends();
+            }
+            if self.open_definition.is_none() && b.statements.iter().any(|s| s.1 == Kind::Call) {
+                self.later_main_call(b.line);
             }
             self.linuxcnc_called(b, statement.as_ref(), was_open);
             statement
@@ -2195,6 +2212,14 @@ impl Checker {
         } else {
             self.may_call(key, keep);
         }
+    }
+
+    /// LinuxCNC: the label of the definition after the main program's end being read, the
+    /// key in hand ([`LATER_DEFINITION`] + its index among the labels its calls were kept for).
+    pub(super) fn later_label(&self) -> Option<&[u8]> {
+        let index = self.in_hand?.checked_sub(LATER_DEFINITION)?;
+        let labels = self.later_called.as_ref()?;
+        labels.get(usize::try_from(index).ok()?).map(Vec::as_slice)
     }
 
     /// LinuxCNC: an `o<name> sub` after the main program's end whose label calls kept
@@ -2985,83 +3010,7 @@ impl Checker {
     /// a word it does not know).
     #[inline(never)]
     fn linuxcnc_condition_value(&self, expression: &[u8]) -> Option<f64> {
-        let e = expression.trim_ascii();
-        let mut depth = 0usize;
-        // (the lowest level's last operator: start, end, level, name)
-        let mut split: Option<(usize, usize, u8, [u8; 3])> = None;
-        let mut i = 0;
-        while i < e.len() {
-            match e[i] {
-                b'[' => depth += 1,
-                b']' => depth = depth.checked_sub(1)?,
-                b'<' => i += e[i..].iter().position(|&c| c == b'>')?,
-                c if c.is_ascii_alphabetic() => {
-                    let end = e[i..]
-                        .iter()
-                        .position(|c| !c.is_ascii_alphabetic())
-                        .map_or(e.len(), |p| i + p);
-                    let name = e[i..end].to_ascii_lowercase();
-                    let level = match name.as_slice() {
-                        b"and" | b"or" | b"xor" => 2,
-                        b"eq" | b"ne" | b"gt" | b"ge" | b"lt" | b"le" => 3,
-                        // (MOD, and a function before its bracket, work out to None below)
-                        _ => 9,
-                    };
-                    if depth == 0 && level < 9 && split.is_none_or(|s| level <= s.2) {
-                        let mut op = [0u8; 3];
-                        op[..name.len()].copy_from_slice(&name);
-                        split = Some((i, end, level, op));
-                    }
-                    i = end;
-                    continue;
-                }
-                _ => {}
-            }
-            i += 1;
-        }
-        let Some((start, end, _, op)) = split else {
-            if let [b'[', inner @ .., b']'] = e {
-                // (one bracket around it all, `[..]` not `[..] + [..]`: its inside, which may
-                // hold the operators)
-                let mut depth = 0usize;
-                let whole = inner.iter().all(|&c| {
-                    match c {
-                        b'[' => depth += 1,
-                        b']' if depth == 0 => return false,
-                        b']' => depth -= 1,
-                        _ => {}
-                    }
-                    true
-                });
-                if whole {
-                    return self.linuxcnc_condition_value(inner);
-                }
-            }
-            return self.linuxcnc_value_of(e);
-        };
-        let a = self.linuxcnc_condition_value(&e[..start])?;
-        let b = self.linuxcnc_condition_value(&e[end..])?;
-        let truth = |t: bool| if t { 1.0 } else { 0.0 };
-        let diff = (a - b).abs();
-        let compared = matches!(
-            &op,
-            b"eq\0" | b"ne\0" | b"gt\0" | b"ge\0" | b"lt\0" | b"le\0"
-        );
-        if compared && diff > 0.0 && diff < 1.1e-4 {
-            return None;
-        }
-        Some(match &op {
-            b"and" => truth(a != 0.0 && b != 0.0),
-            b"or\0" => truth(a != 0.0 || b != 0.0),
-            b"xor" => truth((a != 0.0) != (b != 0.0)),
-            b"eq\0" => truth(diff == 0.0),
-            b"ne\0" => truth(diff != 0.0),
-            b"gt\0" => truth(a > b),
-            b"ge\0" => truth(a >= b),
-            b"lt\0" => truth(a < b),
-            b"le\0" => truth(a <= b),
-            _ => return None,
-        })
+        linuxcnc_condition_of(expression, &|e| self.linuxcnc_value_of(e))
     }
 
     /// A LinuxCNC call whose label is worked out as it runs (`o#1 call`) from a value the
@@ -4169,19 +4118,7 @@ impl Checker {
     /// not; None for any other.
     fn linuxcnc_body_runs(&self, text: &[u8]) -> Option<bool> {
         let (keyword, condition) = o_keyword_condition(text);
-        if keyword == b"do" {
-            return Some(true);
-        }
-        if !matches!(keyword.as_slice(), b"if" | b"while" | b"repeat") {
-            return None;
-        }
-        let value = self.linuxcnc_condition_value(condition)?;
-        // (nearbyint: half to even, `repeat [0.5]` runs no time, `rs274 -g`)
-        Some(if keyword == b"repeat" {
-            value.round_ties_even() >= 1.0
-        } else {
-            value != 0.0
-        })
+        block_runs(&keyword, || self.linuxcnc_condition_value(condition))
     }
 
     /// LinuxCNC: the main program's `if`, `while`, `repeat` or `do` whose label rs274 records
@@ -5454,6 +5391,9 @@ impl Checker {
             }
             if self.open_definition.is_none() && !self.linuxcnc_open_flow.is_empty() {
                 self.may_call_seen();
+            }
+            if self.open_definition.is_none() {
+                self.later_main_call(b.line);
             }
             if self.letters & crate::modal::bit(b'P') != 0 {
                 self.linuxcnc_m98_later(b);
@@ -7009,19 +6949,21 @@ impl Checker {
             )
         } else if unread.end == self.linuxcnc_m99_end {
             format!(
-                "line {} and the lines after it that are not O-word lines are never read: \
-                 LinuxCNC stops at the M99 of the main program on line {} (rs274 2.9 ends the \
-                 program there, or loops back to its start: interp_convert.cc convert_stop; \
-                 an M98 call finds an O number program after it, reading O-word lines alone); \
-                 passed over, kept as written",
+                "line {} and the lines after it that are not O-word lines are never read, but \
+                 for the body of an O number program that a call finds there: LinuxCNC stops \
+                 at the M99 of the main program on line {} (rs274 2.9 ends the program there, \
+                 or loops back to its start: interp_convert.cc convert_stop; an M98 call finds \
+                 an O number program after it, reading O-word lines alone, and runs its body \
+                 to its M99); passed over, kept as written",
                 unread.line, unread.end
             )
         } else {
             format!(
-                "line {} and the lines after it that are not O-word lines are never read: \
-                 LinuxCNC stops at the M2/M30 on line {} (rs274's driver stops there; a call \
-                 finds an o<name> sub definition after it, reading O-word lines alone); \
-                 passed over, kept as written",
+                "line {} and the lines after it that are not O-word lines are never read, but \
+                 for the body of an o<name> sub definition or an O number program that a call \
+                 finds there: LinuxCNC stops at the M2/M30 on line {} (rs274's driver stops \
+                 there; a call finds such a definition after it, reading O-word lines alone, \
+                 and runs its body to its endsub or M99); passed over, kept as written",
                 unread.line, unread.end
             )
         };
@@ -7895,22 +7837,32 @@ pub(super) struct WorkCall {
 
 impl WorkCall {
     /// What a TG601 of its machine position under offset G`work` adds: the call that runs it
-    /// there.
-    pub(super) fn named(&self, number: Option<i64>, work: i64) -> String {
+    /// there (`label`: [`Checker::later_label`]).
+    pub(super) fn named(&self, number: Option<i64>, label: Option<&[u8]>, work: i64) -> String {
         if work != self.work {
             return String::new();
         }
-        Self::named_by(number, &self.call, self.line)
+        Self::named_by(number, label, &self.call, self.line)
     }
 
-    /// What a TG601 of a position run by the call `call` of line `line` adds.
-    pub(super) fn named_by(number: Option<i64>, call: &str, line: usize) -> String {
+    /// What a TG601 of a position run by the call `call` of line `line` adds; `label` that
+    /// of a LinuxCNC definition after the end, which its call was kept for.
+    pub(super) fn named_by(
+        number: Option<i64>,
+        label: Option<&[u8]>,
+        call: &str,
+        line: usize,
+    ) -> String {
         // (a LinuxCNC definition after the end: its label, the call's)
         let program = match number {
-            // (an `M98 P300` of LinuxCNC's FANUC-style `O300`: its O number)
-            Some(n) if n >= LATER_DEFINITION => match call.strip_prefix("M98 P") {
-                Some(p) => format!("O{p}"),
-                None => call.trim_end_matches(" call").to_string(),
+            // (an `M98 P300` of LinuxCNC's FANUC-style `O300`: its O number, the label's
+            // where the P is a parameter, `M98 P#1`: review 80-lcnc80 R9)
+            Some(n) if n >= LATER_DEFINITION => match (call.strip_prefix("M98 P"), label) {
+                (Some(_), Some([b'o', number @ ..])) => {
+                    format!("O{}", String::from_utf8_lossy(number))
+                }
+                (Some(p), _) => format!("O{p}"),
+                (None, _) => call.trim_end_matches(" call").to_string(),
             },
             Some(n) => program_name(n),
             None => "the program".to_string(),
@@ -7933,6 +7885,126 @@ pub(super) struct LoopDefinitions {
     /// a call of those made (the block's own record of its lines, `linuxcnc_open_at`, is
     /// cleared at any call)
     called: bool,
+}
+
+/// [`Checker::linuxcnc_condition_value`] with `leaf` the value of a term without an operator
+/// outside brackets (a number, a parameter, a function): the one reading of a condition,
+/// with the checker's values ([`Checker::linuxcnc_value_of`]) or from numbers alone
+/// ([`linuxcnc_constant_runs`]).
+fn linuxcnc_condition_of(expression: &[u8], leaf: &dyn Fn(&[u8]) -> Option<f64>) -> Option<f64> {
+    let e = expression.trim_ascii();
+    let mut depth = 0usize;
+    // (the lowest level's last operator: start, end, level, name)
+    let mut split: Option<(usize, usize, u8, [u8; 3])> = None;
+    let mut i = 0;
+    while i < e.len() {
+        match e[i] {
+            b'[' => depth += 1,
+            b']' => depth = depth.checked_sub(1)?,
+            b'<' => i += e[i..].iter().position(|&c| c == b'>')?,
+            c if c.is_ascii_alphabetic() => {
+                let end = e[i..]
+                    .iter()
+                    .position(|c| !c.is_ascii_alphabetic())
+                    .map_or(e.len(), |p| i + p);
+                let name = e[i..end].to_ascii_lowercase();
+                let level = match name.as_slice() {
+                    b"and" | b"or" | b"xor" => 2,
+                    b"eq" | b"ne" | b"gt" | b"ge" | b"lt" | b"le" => 3,
+                    // (MOD, and a function before its bracket, work out to None below)
+                    _ => 9,
+                };
+                if depth == 0 && level < 9 && split.is_none_or(|s| level <= s.2) {
+                    let mut op = [0u8; 3];
+                    op[..name.len()].copy_from_slice(&name);
+                    split = Some((i, end, level, op));
+                }
+                i = end;
+                continue;
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    let Some((start, end, _, op)) = split else {
+        if let [b'[', inner @ .., b']'] = e {
+            // (one bracket around it all, `[..]` not `[..] + [..]`: its inside, which may
+            // hold the operators)
+            let mut depth = 0usize;
+            let whole = inner.iter().all(|&c| {
+                match c {
+                    b'[' => depth += 1,
+                    b']' if depth == 0 => return false,
+                    b']' => depth -= 1,
+                    _ => {}
+                }
+                true
+            });
+            if whole {
+                return linuxcnc_condition_of(inner, leaf);
+            }
+        }
+        return leaf(e);
+    };
+    let a = linuxcnc_condition_of(&e[..start], leaf)?;
+    let b = linuxcnc_condition_of(&e[end..], leaf)?;
+    let truth = |t: bool| if t { 1.0 } else { 0.0 };
+    let diff = (a - b).abs();
+    let compared = matches!(
+        &op,
+        b"eq\0" | b"ne\0" | b"gt\0" | b"ge\0" | b"lt\0" | b"le\0"
+    );
+    if compared && diff > 0.0 && diff < 1.1e-4 {
+        return None;
+    }
+    Some(match &op {
+        b"and" => truth(a != 0.0 && b != 0.0),
+        b"or\0" => truth(a != 0.0 || b != 0.0),
+        b"xor" => truth((a != 0.0) != (b != 0.0)),
+        b"eq\0" => truth(diff == 0.0),
+        b"ne\0" => truth(diff != 0.0),
+        b"gt\0" => truth(a > b),
+        b"ge\0" => truth(a >= b),
+        b"lt\0" => truth(a < b),
+        b"le\0" => truth(a <= b),
+        _ => return None,
+    })
+}
+
+/// Whether the lines of a LinuxCNC `if`, `while`, `repeat` or `do` (`text`) run, worked out
+/// from numbers alone (`o1 if [1]`, `o1 if [2 LT 1]`, `o1 repeat [3]`): None where its
+/// condition reads a parameter or a function, whose value at the line the checker may not
+/// know (one a caller or an earlier pass changed). The reading of
+/// [`Checker::linuxcnc_body_runs`] without the values the checker follows.
+pub(super) fn linuxcnc_constant_runs(text: &[u8]) -> Option<bool> {
+    let (keyword, condition) = o_keyword_condition(text);
+    block_runs(&keyword, || {
+        linuxcnc_condition_of(condition, &|e| {
+            if e.contains(&b'#') || e.len() > 200 {
+                return None;
+            }
+            let tree = crate::expr::tree(e).ok()?;
+            crate::expr::linuxcnc_value(&tree, e, &|_| None).ok()?
+        })
+    })
+}
+
+/// Whether a block of `keyword` runs, its condition's value `value`: a `do` does, an `if`
+/// or `while` where the value is not zero, a `repeat` where its count (rounded half to
+/// even: `nearbyint`, `repeat [0.5]` runs no time in `rs274 -g`) is one or more.
+fn block_runs(keyword: &[u8], value: impl FnOnce() -> Option<f64>) -> Option<bool> {
+    if keyword == b"do" {
+        return Some(true);
+    }
+    if !matches!(keyword, b"if" | b"while" | b"repeat") {
+        return None;
+    }
+    let value = value()?;
+    Some(if keyword == b"repeat" {
+        value.round_ties_even() >= 1.0
+    } else {
+        value != 0.0
+    })
 }
 
 /// An o-word line's keyword (lower case) and the text after it (a condition, a count).
