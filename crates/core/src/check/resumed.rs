@@ -14,11 +14,19 @@
 //! the body leaves, in the mode it leaves, under the call's work offset, which a body that
 //! writes none keeps.
 //!
-//! Only where all of it is surely known: a call of the first program of the file, not
-//! behind a jump or condition, under a work offset known (no G10, shift, frame, polar mode),
-//! one run (no L, Q), in a block that moves nothing; the caller's blocks from the call to
-//! the first that is not a plain G00/G01 move (a statement, a parameter, another call, any
-//! other G or M code ends them); a body of plain moves and arcs, G90/G91, feed and speed
+//! Each run of a body from where the one before left the tool, in the mode it left (a repeat
+//! count: `M98 P2000 L3`, a four-digit FANUC's `M98 P32000`), and a later call (of the same
+//! body or another) from where the caller's moves after the call before end (calls81): the
+//! calls judged in turn as their bodies return, whatever the bodies' order in the file.
+//!
+//! Only where all of it is surely known: calls of the first program of the file, not behind
+//! a jump or condition, under a work offset known (no G10, shift, frame, polar mode), in
+//! blocks that move nothing and enter no sequence number (no Q), a repeat count of 1 to
+//! 9999; the caller's blocks from a call to the first that is not a plain G00/G01 move (a
+//! statement, a parameter, any other G or M code ends them; a call there is kept as the
+//! next one, any block else ends all later calls); X, Y and Z (Z where no tool length offset
+//! is in force); a caller that writes no G20/G21 (read apart) only where it ends with M02
+//! or M30, in the profile's units; a body of plain moves and arcs, G90/G91, feed and speed
 //! only, whose every statement is known not to change its run -- a LinuxCNC `o1 if [0]`
 //! block (its lines never run: rs274 skips them), a FANUC `IF [..] THEN` whose condition
 //! the values known make false, a `GOTO n` or `IF [..] GOTO n` whose block `Nn` is the next
