@@ -93,14 +93,21 @@ def test_fanuc_m98_of_a_later_program(profiles, after, body, expected):
     # (the call made under G91, O2000 writes G90: X800. absolute)
     ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / G91 / M98 P2000 / G0 X800. / M30 / "
      "O2000 / G90 / M99", [(6, 4, "X goes to 800")]),
-    # (L2 runs it twice, a repeat in P too (P22000: O2000 twice): not judged, as main)
+    # (L2 runs it twice (0i-F "Subprogram call (M98)": L the repeat count): 10, 20, then
+    # the caller's increments 520 and 1020 > 762)
     ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 L2 / G0 X500. / G0 X500. / M30 / "
-     "O2000 / G91 G0 X10. / M99", []),
+     "O2000 / G91 G0 X10. / M99", [(6, 4, "X goes to 1020")]),
+    # (fanuc-mill's O format has eight digits (the 8-digit option): P22000 names O22000, not
+    # in the file, no repeat of O2000; silent, as main)
     ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P22000 / G0 X500. / G0 X500. / M30 / "
      "O2000 / G91 G0 X10. / M99", []),
-    # (a second call: the moves after the first judged (X500.: 500), the second's start is
-    # where the first run left the tool, not judged)
-    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G0 X500. / M98 P2000 / G0 X500. / "
+    # (a second call starts where the caller's moves after the first end: -200, 300, 100,
+    # then 800 > 762; review 80-calls80 W1's start, the state's 500, would say 1000)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G0 X500. / M98 P2000 / G0 X700. / "
+     "M30 / O2000 / G91 G0 X-200. / M99", [(7, 4, "X goes to 800")]),
+    # (the same with the caller's X400.: -200, 200, 0, 400 inside; from the state's 400 the
+    # second run would be placed at 200 and the last at 600, inside as well)
+    ("O1000 / G21 G17 G90 G54 / G0 X0 Y0 / M98 P2000 / G0 X400. / M98 P2000 / G0 X400. / "
      "M30 / O2000 / G91 G0 X-200. / M99", []),
 ])
 def test_fanuc_offsets_units_and_repeats(profiles, text, expected):
@@ -189,3 +196,130 @@ def test_linuxcnc_calls_of_later_definitions(profiles, text, expected):
 def test_a_selection_before_the_call_leaves_the_start_not_known(
         profiles, form, text, expected):
     assert said(text, profiles[form]) == expected
+
+
+# Issue 32 item 4, calls81: more calls, repeat counts, Z, the profile's units. A body's runs
+# follow one another, each from where the one before left the tool, in the mode it left (a
+# body that leaves G91 moves again at each pass, one that leaves G90 ends where it ends); a
+# later call starts where the caller's moves after the one before end, only where every block
+# between was a plain move kept. FANUC 0i-F / 30i-B and Haas: "Subprogram call (M98)" (P, L
+# the repeat count; on a FANUC with four-digit program numbers, P's digits above the last
+# four); LinuxCNC: `rs274 -g` of the LinuxCNC twins.
+_O04 = ('detailed = "%:/DS O04 N05 G031 X+053 Y+053 Z+053 P08 Q+053 R+053 A+053 B+053 I+053 '
+        'J+053 K+053 F052 S05 T08 D03 M03 H03 L04*"\n')
+
+
+@pytest.fixture
+def more(tmp_path: Path, profiles: dict[str, str]) -> dict[str, str]:
+    out = dict(profiles)
+    path = tmp_path / "o04.toml"
+    path.write_text('name = "r-o04"\nbase = "fanuc-mill"\n' + _O04 + _MM)
+    out["o04"] = str(path)
+    # (G54's Z at -100: machine Z = work Z - 100)
+    path = tmp_path / "z.toml"
+    path.write_text('name = "r-z"\nbase = "fanuc-mill"\n' + _MM.replace(
+        "G54 = { X = 0.0, Y = 0.0, Z = 0.0 }", "G54 = { X = 0.0, Y = 0.0, Z = -100.0 }"))
+    out["z"] = str(path)
+    return out
+
+
+@pytest.mark.parametrize("form, text, expected", [
+    # (L3 of a body that leaves G91 after X100.: 100, 200, 300; the caller's X500. an
+    # increment: 800 > 762)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 L3 / G0 X500. / M30 / "
+     "O2000 / G91 G0 X100. / M99", [(5, 4, "X goes to 800")]),
+    # (a body that writes G90 X100. then G91 X50.: every pass ends at 150, not 450; the
+    # caller's X600. an increment: 750, inside)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 L3 / G0 X600. / M30 / "
+     "O2000 / G90 G0 X100. / G91 G0 X50. / M99", []),
+    # (its X100. before its own G91: the first pass in the caller's G90 (100, 150), the next
+    # in the G91 it left (250, 300; 400, 450); 450 + 320 = 770)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 L3 / G0 X320. / M30 / "
+     "O2000 / G0 X100. / G91 G0 X50. / M99", [(5, 4, "X goes to 770")]),
+    # (the first pass in the caller's G91 (100), the next in the G90 it left (100, 100); the
+    # caller's G91 X650.: 750, inside)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G91 / M98 P2000 L3 / G91 G0 X650. / M30 / "
+     "O2000 / G0 X100. / G90 / M99", []),
+    # (L0: the manual gives no such count: not followed, silent as main)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 L0 / G0 X800. / M30 / "
+     "O2000 / G91 / M99", []),
+    # (four-digit program numbers: P32000 is O2000 three times, 300 + 500 = 800; P2000 L3
+    # the same)
+    ("o04", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P32000 / G0 X500. / M30 / "
+     "O2000 / G91 G0 X100. / M99", [(5, 4, "X goes to 800")]),
+    ("o04", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 L3 / G0 X500. / M30 / "
+     "O2000 / G91 G0 X100. / M99", [(5, 4, "X goes to 800")]),
+    # (eight-digit numbers: P32000 is O32000, once: 100 + 500 = 600, inside; three runs of
+    # O2000 would say 800)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P32000 / G0 X500. / M30 / "
+     "O2000 / G91 G0 X100. / M99 / O32000 / G91 G0 X100. / M99", []),
+    # (Haas M98 P2000 L3 and M97 P100 L3 in inches: 15 + 20 = 35 > 30)
+    ("haas", "O01000 / G20 G17 G90 G54 / G0 X0 / M98 P2000 L3 / G0 X20. / M30 / "
+     "O02000 / G91 G0 X5. / M99", [(5, 4, "X goes to 35")]),
+    ("haas", "O01000 / G20 G17 G90 G54 / G0 X0 / M97 P100 L3 / G0 X20. / M30 / "
+     "N100 G91 G0 X5. / M99", [(5, 4, "X goes to 35")]),
+    # (two bodies: O2000 leaves X at 300 (G90), the caller's X500. is absolute; O3000 adds
+    # 100 in G91: 600, then X200. an increment: 800)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 / G0 X500. / M98 P3000 / "
+     "G0 X200. / M30 / O2000 / G90 G0 X300. / M99 / O3000 / G91 G0 X100. / M99",
+     [(7, 4, "X goes to 800")]),
+    # (the bodies in the other order in the file: the same)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 / G0 X500. / M98 P3000 / "
+     "G0 X200. / M30 / O3000 / G91 G0 X100. / M99 / O2000 / G90 G0 X300. / M99",
+     [(7, 4, "X goes to 800")]),
+    # (Haas M97 twice, N100 G91 X5.: 5, then the caller's 10, 15, then X16. 31 > 30)
+    ("haas", "O01000 / G20 G17 G90 G54 / G0 X0 / M97 P100 / G0 X5. / M97 P100 / G0 X16. / "
+     "M30 / N100 G91 G0 X5. / M99", [(7, 4, "X goes to 31")]),
+    # (LinuxCNC, two calls: rs274 -g 100, 300, 400, then 800)
+    ("lcnc", "G21 G17 G90 G54 / G0 X0 Y0 / o2000 call / G0 X200 / o2000 call / G0 X400 / M2 / "
+     "o2000 sub / G91 G0 X100 / o2000 endsub", [(6, 4, "X goes to 800")]),
+    # (a G10 between the calls: the offset after it not the profile's; silent after it)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 / G10 L2 P1 X-100. / M98 P2000 / "
+     "G0 X650. / M30 / O2000 / G91 G0 X100. / M99", []),
+    # (a call of a program not in the file between: nothing after it known)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / M98 P2000 / M98 P9000 / G0 X700. / M30 / "
+     "O2000 / G91 G0 X100. / M99", []),
+])
+def test_more_calls_and_repeats(more, form, text, expected):
+    assert said(text, more[form]) == expected
+
+
+@pytest.mark.parametrize("form, text, expected", [
+    # (Z: G54 Z -100; the body leaves G91 after Z-100.: -100, then the caller's Z-350. an
+    # increment: work -450, machine -550 < -508)
+    ("z", "O1000 / G21 G17 G90 G54 / G0 X0 Y0 Z0 / M98 P2000 / G0 Z-350. / M30 / "
+     "O2000 / G91 G0 Z-100. / M99", [(5, 4, "Z goes to -550")]),
+    # (a tool length offset in force at the call: the profile gives no tool lengths, Z not
+    # judged, as limits.rs)
+    ("z", "O1000 / G21 G17 G90 G54 / G0 X0 Y0 Z0 / G43 H1 / M98 P2000 / G0 Z-350. / M30 / "
+     "O2000 / G91 G0 Z-100. / M99", []),
+    # (the body writes G43: not followed)
+    ("z", "O1000 / G21 G17 G90 G54 / G0 X0 Y0 Z0 / M98 P2000 / G0 Z-350. / M30 / "
+     "O2000 / G43 H1 / G91 G0 Z-100. / M99", []),
+    # (Z 0 + 50 in G91, the caller's Z-30. an increment: 20 > 10)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 Y0 Z0 / M98 P2000 / G0 Z-30. / M30 / "
+     "O2000 / G91 G0 Z50. / M99", [(5, 4, "Z goes to 20")]),
+    # (LinuxCNC, rs274 -g: Z -100, then the caller's Z-450 an increment: -550 < -508)
+    ("lcnc", "G21 G17 G90 G54 / G0 X0 Y0 Z0 / o2000 call / G0 Z-450 / M2 / o2000 sub / "
+     "G91 G0 Z-100 / o2000 endsub", [(4, 4, "Z goes to -550")]),
+])
+def test_z_after_a_later_body(more, form, text, expected):
+    assert said(text, more[form]) == expected
+
+
+@pytest.mark.parametrize("form, text, expected", [
+    # (no G20/G21 and an M30: the main program runs in the reset state's units, the
+    # profile's (fanuc-mill.toml: units = "metric"); 500 + 500 = 1000 mm, as main judges its
+    # own positions there)
+    ("fanuc", "O1000 / G17 G90 G54 / G0 X0 / M98 P2000 / G0 X500. / G0 X500. / M30 / "
+     "O2000 / G91 / M99", [(6, 4, "X goes to 1000")]),
+    # (haas-mill.toml: units = "inch"; 20 + 20 = 40 in)
+    ("haas", "O01000 / G17 G90 G54 / G0 X0 / M98 P2000 / G0 X20. / G0 X20. / M30 / "
+     "O02000 / G91 / M99", [(6, 4, "X goes to 40")]),
+    # (it ends with M99: a subprogram of a call not in the file, whose units are its
+    # caller's: not judged)
+    ("fanuc", "O1000 / G17 G90 G54 / G0 X0 / M98 P2000 / G0 X500. / G0 X500. / M99 / "
+     "O2000 / G91 / M99", []),
+])
+def test_the_profiles_units_where_the_caller_writes_none(more, form, text, expected):
+    assert said(text, more[form]) == expected

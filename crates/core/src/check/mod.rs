@@ -1744,8 +1744,8 @@ pub struct Checker {
     /// The caller's moves after a call of a body read later, judged at its return
     /// ([`resumed`]).
     resumed: Option<Box<resumed::Resumed>>,
-    /// The line of the last block that calls, and its X and Y before it ([`resumed`]).
-    call_from: (usize, [Option<Dec>; 2]),
+    /// The line of the last block that calls, and its X, Y and Z before it ([`resumed`]).
+    call_from: (usize, [Option<Dec>; 3]),
     /// A G54-G59 selection changed the work system after a position was known: the work
     /// position the checker holds is the old system's, so a call's start is not taken from
     /// it ([`resumed`]).
@@ -2086,7 +2086,7 @@ impl Checker {
             work_call: None,
             call_modes: Vec::new(),
             resumed: None,
-            call_from: (0, [None; 2]),
+            call_from: (0, [None; 3]),
             selected_from_position: false,
             flow_calls: None,
             units_unknown: false,
@@ -3116,7 +3116,7 @@ impl Checker {
         }
         if calls {
             // (where a call of a body read later is made from: resumed.rs)
-            self.call_from = (b.line, [before.xyz[0], before.xyz[1]]);
+            self.call_from = (b.line, before.xyz);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             let never = !calls && self.flow_never(b);

@@ -14,11 +14,19 @@
 //! the body leaves, in the mode it leaves, under the call's work offset, which a body that
 //! writes none keeps.
 //!
-//! Only where all of it is surely known: a call of the first program of the file, not
-//! behind a jump or condition, under a work offset known (no G10, shift, frame, polar mode),
-//! one run (no L, Q), in a block that moves nothing; the caller's blocks from the call to
-//! the first that is not a plain G00/G01 move (a statement, a parameter, another call, any
-//! other G or M code ends them); a body of plain moves and arcs, G90/G91, feed and speed
+//! Each run of a body from where the one before left the tool, in the mode it left (a repeat
+//! count: `M98 P2000 L3`, a four-digit FANUC's `M98 P32000`), and a later call (of the same
+//! body or another) from where the caller's moves after the call before end (calls81): the
+//! calls judged in turn as their bodies return, whatever the bodies' order in the file.
+//!
+//! Only where all of it is surely known: calls of the first program of the file, not behind
+//! a jump or condition, under a work offset known (no G10, shift, frame, polar mode), in
+//! blocks that move nothing and enter no sequence number (no Q), a repeat count of 1 to
+//! 9999; the caller's blocks from a call to the first that is not a plain G00/G01 move (a
+//! statement, a parameter, any other G or M code ends them; a call there is kept as the
+//! next one, any block else ends all later calls); X, Y and Z (Z where no tool length offset
+//! is in force); a caller that writes no G20/G21 (read apart) only where it ends with M02
+//! or M30, in the profile's units; a body of plain moves and arcs, G90/G91, feed and speed
 //! only, whose every statement is known not to change its run -- a LinuxCNC `o1 if [0]`
 //! block, or any `if` whose condition is false from numbers alone (`[1 GT 2]`; its lines never
 //! run: rs274 skips them), a FANUC `IF [..] THEN` whose condition
@@ -35,22 +43,56 @@ use crate::lex::Family;
 use crate::rules::Rule;
 use crate::statement::Kind;
 
-/// The axes judged (X, Y: the places in [`super::AXES`]); Z carries the tool length offset.
-const JUDGED: [usize; 2] = [0, 1];
+/// The axes judged (X, Y, Z: the places in [`super::AXES`]), Z where no tool length offset
+/// is in force at the call (the profile gives no tool lengths: limits.rs judges Z so). The
+/// angles A, B, C are no lengths (no inch/mm factor) and a mill's U, V, W seldom an axis of
+/// the profile: not kept, as before.
+const JUDGED: [usize; 3] = [0, 1, 2];
 
-/// The most caller's moves kept after one call.
+/// The judged axes' count.
+const AXES: usize = JUDGED.len();
+
+/// The most caller's moves kept after one call, the most calls kept.
 const MOVES: usize = 256;
+const CALLS: usize = 64;
+
+/// The most positions of a body's runs followed for one call (its blocks' axes times its
+/// repeat count): past them, not judged.
+const STEPS: usize = 1 << 20;
+
+/// Where the caller's moves after a call end: each axis's work position, the G91 in force,
+/// the motion code in force.
+#[derive(Debug, Clone, Copy)]
+struct Carry {
+    at: [Option<f64>; AXES],
+    incremental: bool,
+    motion: Option<i64>,
+}
 
 /// What the calls and the body read so far keep ([`Checker::resumed`]).
 #[derive(Debug, Clone, Default)]
 pub(super) struct Resumed {
     calls: Vec<Call>,
-    /// The body being read (its key), or read.
-    body: Option<Body>,
+    /// The bodies read, or being read (the last), in the file's order.
+    bodies: Vec<Body>,
     /// The program in hand at the first call (the caller).
     caller: Option<i64>,
-    /// The body returned in the block in hand: its calls judged at the block's end.
+    /// A body returned in the block in hand: its calls judged at the block's end.
     due: bool,
+    /// No later call is kept (one was made where the moves before it were not all kept).
+    closed: bool,
+    /// The calls judged so far (each in turn, from the first), and where the caller's moves
+    /// after the last of them end (None: not known, no later call judged).
+    judged: usize,
+    carry: Option<Carry>,
+    /// A call not judged for good: none after it is.
+    broken: bool,
+    /// The caller was read apart at its first call (it wrote no G20/G21 yet: it may be a
+    /// subprogram of a later call, `called.rs`), in the reset state's units, the profile's:
+    /// judged only where it ends as a main program, with M02 or M30 (`main_end`), as main
+    /// judges its own positions then.
+    assumed: bool,
+    main_end: bool,
 }
 
 /// A call kept, and the caller's moves after it.
@@ -58,12 +100,17 @@ pub(super) struct Resumed {
 struct Call {
     key: i64,
     line: usize,
+    /// How many times the body runs (`L3`, a FANUC's `P32000`).
+    runs: u32,
+    /// Made right after the moves kept after the call before it: it starts where they end,
+    /// in the mode and motion in force there, not at [`Call::start`].
+    chained: bool,
     /// The caller's distance mode at the call, and its work position there (its units).
     incremental: bool,
-    start: [Option<f64>; 2],
+    start: [Option<f64>; AXES],
     /// The work offset (G`work`) in force, each judged axis's value (the profile's units).
     work: i64,
-    offset: [Option<crate::decimal::Dec>; 2],
+    offset: [Option<crate::decimal::Dec>; AXES],
     /// The caller's units to the profile's.
     factor: f64,
     /// The motion code in force at the call.
@@ -84,19 +131,21 @@ struct Move {
     /// The caller's own G90 (false) or G91 (true) in force from this block, where it wrote
     /// one since the call.
     own: Option<bool>,
-    /// It writes G00 or G01.
-    linear: bool,
+    /// The G00 or G01 it writes.
+    motion: Option<i64>,
     axes: Vec<(usize, f64, usize)>,
+    /// The columns of the TG601s main said on its line as it was read (handed over before
+    /// the return: not in [`Checker::found`] there), none held.
+    said: Vec<usize>,
 }
 
-/// Where the body leaves an axis.
+/// A body's G90/G91 or position, in its order.
 #[derive(Debug, Clone, Copy)]
-enum End {
-    /// At this work position (written in G90 and moved from there).
-    At(f64),
-    /// This far from where it was called (in G91 only, or not moved: 0).
-    By(f64),
-    Unknown,
+enum Step {
+    /// G91 (true) or G90.
+    Mode(bool),
+    /// An axis (its place in [`JUDGED`]) and the value written.
+    Axis(usize, f64),
 }
 
 /// The body read.
@@ -105,12 +154,12 @@ struct Body {
     key: i64,
     /// Every block was read and is known (see the module's list).
     sure: bool,
-    /// Its G90/G91 in force (None: the call's, not written yet), the last it wrote.
-    mode: Option<bool>,
+    /// The last G90/G91 it wrote.
     wrote: Option<bool>,
     /// The motion code it leaves (None: the call's).
     motion: Option<i64>,
-    ends: [End; 2],
+    /// Its G90/G91 codes and positions, run from the call's mode and position.
+    steps: Vec<Step>,
     /// A LinuxCNC `oN if [0]` open (its label): its lines never run.
     dead: Option<Vec<u8>>,
     /// A `GOTO n` read: the next block must be `Nn`.
@@ -175,11 +224,41 @@ impl Checker {
             return;
         }
         if let Some(r) = self.resumed.as_mut() {
-            // (a second call: the moves after the first end here, and its own start is
-            // where the first run left the tool, which the caller's reading does not know:
-            // review 80-calls80 W1)
+            // (a later call: kept where every block of the caller's since the call before
+            // it was a plain move kept, so it starts where they end, which is known at the
+            // returns; otherwise its start is where the runs before left the tool, which the
+            // caller's reading does not know: review 80-calls80 W1)
+            let chained = r.calls.last().filter(|p| {
+                !r.closed
+                    && p.recording
+                    && p.checked
+                    && p.line != self.last_line
+                    && in_hand == r.caller
+                    && r.bodies.is_empty()
+                    && r.calls.len() < CALLS
+            });
+            let call = chained.map(|p| Call {
+                key,
+                line: self.last_line,
+                runs: 1,
+                chained: true,
+                incremental: p.incremental,
+                start: [None; AXES],
+                work: p.work,
+                offset: p.offset,
+                factor: p.factor,
+                motion: None,
+                named: String::new(),
+                moves: Vec::new(),
+                recording: true,
+                checked: false,
+            });
             for c in &mut r.calls {
                 c.recording = false;
+            }
+            match call {
+                Some(call) => r.calls.push(call),
+                None => r.closed = true,
             }
             return;
         }
@@ -198,7 +277,7 @@ impl Checker {
             || self.sub_ended
             || self.programs > 1
             || self.jumped
-            || self.early_on
+            || self.early_on && self.machine.state.units_given
             || self.open_definition.is_some()
             || !self.linuxcnc_open_flow.is_empty()
             || self.frames_on()
@@ -213,13 +292,15 @@ impl Checker {
         let Some(work) = work else {
             return;
         };
-        let mut offset = [None; 2];
+        // (Z not under a tool length offset: the profile gives no tool lengths)
+        let length = s.length_offset != 49 || self.length_decimal;
+        let mut offset = [None; AXES];
         for &(g, axis, value) in &self.config.work_offsets {
             if g != work {
                 continue;
             }
             if let Some(k) = JUDGED.iter().position(|&i| super::AXES[i] == axis) {
-                offset[k] = Some(value);
+                offset[k] = Some(value).filter(|_| !(length && axis == b'Z'));
             }
         }
         // (LinuxCNC's M98 forgets the position before its later call is kept: the one
@@ -240,6 +321,8 @@ impl Checker {
         let call = Call {
             key,
             line: self.last_line,
+            runs: 1,
+            chained: false,
             incremental: s.incremental,
             start,
             work,
@@ -251,12 +334,14 @@ impl Checker {
             recording: true,
             checked: false,
         };
+        let assumed = self.early_on;
         let r = self.resumed.get_or_insert_with(Box::default);
         r.caller = in_hand;
+        r.assumed = assumed;
         r.calls.push(call);
     }
 
-    /// After block `b` is read: the caller's moves after a call kept, the body's blocks
+    /// After block `b` is read: the caller's moves after a call kept, the bodies' blocks
     /// followed ([`Resumed`]).
     #[cold]
     #[inline(never)]
@@ -265,31 +350,32 @@ impl Checker {
             return;
         };
         if std::mem::take(&mut r.due) {
-            self.resumed_finished(&r);
-        } else if let Some(body) = r.body.as_mut() {
-            if !body.returned && self.in_hand == Some(body.key) {
+            self.resumed_finished(&mut r);
+        } else if let Some(body) = r.bodies.last_mut().filter(|body| !body.returned) {
+            if self.in_hand == Some(body.key) {
                 self.resumed_body(body, b);
                 if body.returned {
-                    self.resumed_finished(&r);
+                    self.resumed_finished(&mut r);
                 }
-            } else if !body.returned {
-                // (another program begins before its return)
+            } else {
+                // (another program begins before its return: not known, and the next
+                // body's first block, if this is one, is not followed either)
                 body.sure = false;
+                body.returned = true;
+                self.resumed_finished(&mut r);
             }
-        } else if let Some(&key) = r
-            .calls
-            .iter()
-            .map(|c| &c.key)
-            .find(|&&k| self.in_hand == Some(k) && r.caller != Some(k))
-        {
-            // (the body begins: its first block, `O2000`, `N100 ...`, `o100 sub`)
+        } else if let Some(&key) = r.calls.iter().map(|c| &c.key).find(|&&k| {
+            self.in_hand == Some(k)
+                && r.caller != Some(k)
+                && r.bodies.iter().all(|body| body.key != k)
+        }) {
+            // (a body begins: its first block, `O2000`, `N100 ...`, `o100 sub`)
             let mut body = Body {
                 key,
                 sure: r.calls.iter().all(|c| c.key != key || c.checked),
-                mode: None,
                 wrote: None,
                 motion: None,
-                ends: [End::By(0.0); 2],
+                steps: Vec::new(),
                 dead: None,
                 goto: None,
                 returned: false,
@@ -301,14 +387,68 @@ impl Checker {
             }
             self.resumed_body(&mut body, b);
             let returned = body.returned;
-            r.body = Some(body);
+            r.bodies.push(body);
             if returned {
-                self.resumed_finished(&r);
+                self.resumed_finished(&mut r);
             }
-        } else {
+        } else if r.bodies.is_empty() {
+            if self.in_hand == r.caller {
+                // (the caller's end as a main program: M02, M30)
+                r.main_end |= b.words.iter().enumerate().any(|(k, w)| {
+                    w.letter == b'M'
+                        && w.index.is_empty()
+                        && self
+                            .readable
+                            .get(k)
+                            .copied()
+                            .flatten()
+                            .is_some_and(|v| v.is_whole() && matches!(v.trunc(), 2 | 30))
+                });
+            }
             self.resumed_caller(&mut r, b);
         }
         self.resumed = Some(r);
+    }
+
+    /// How many times the body of `c` runs by the word `w` (P, L) of its call's block, whose
+    /// value is `v`: `Some(1)` for a P that names it, `Some(n)` for a repeat count, None
+    /// where the word is neither (not a plain call).
+    fn resumed_runs(&self, c: &Call, letter: u8, v: crate::decimal::Dec) -> Option<u32> {
+        if !v.is_whole() {
+            return None;
+        }
+        let n = v.trunc();
+        let digits = self
+            .config
+            .formats
+            .iter()
+            .find(|(l, _)| *l == b'O')
+            .map_or(0, |(_, f)| f.before);
+        match letter {
+            // (`M98 P2000 L3`, `M97 P100 L3`: L is the repeat count, 1 to 9999: FANUC 0i-F /
+            // 30i-B "Subprogram call (M98)", Haas Mill Operator's Manual M97/M98; L0 may run
+            // it no time: not followed. LinuxCNC's `M98 P2000 L3` runs it three times too,
+            // rs274 -g, but structure.rs keeps no call of that form with an L)
+            b'L' => u32::try_from(n).ok().filter(|n| (1..=9999).contains(n)),
+            b'P' if c.key >= super::structure::LOCAL_BODY => Some(1),
+            // (a number of more than four digits names the program where the profile's O
+            // format has more (a Haas's O05, a FANUC's with the 8-digit option: O08))
+            b'P' if n == c.key && (self.config.haas || c.key <= 9999 || digits > 4) => Some(1),
+            // (a FANUC whose program numbers have four digits (the profile's O format: no
+            // 8-digit option) reads `M98 P32000` as O2000 three times, the digits above the
+            // last four being the repeat count: 0i-F Operator's Manual, "Subprogram call
+            // (M98)", P____ ____, as structure.rs reads its number; review 80-calls80 W2)
+            b'P' if !self.config.haas
+                && self.config.family == Family::MacroB
+                && digits == 4
+                && n % 10_000 == c.key =>
+            {
+                u32::try_from(n / 10_000)
+                    .ok()
+                    .filter(|n| (1..=9999).contains(n))
+            }
+            _ => None,
+        }
     }
 
     /// A block of the caller's after the call (or the call's own): kept where it is a plain
@@ -322,33 +462,38 @@ impl Checker {
             return;
         }
         if b.line == c.line && !c.checked {
-            // (the call's own block: no move, no repeat or entry at a sequence number, no
-            // skip; the call's statement or M98/M97 P, its N)
-            // (a FANUC's `M98 P22000` runs O2000 twice: the digits above the last four are
-            // the repeat count, 0i-F "Subprogram call (M98)"; review 80-calls80 W2)
-            let names = |k: usize| {
-                c.key >= super::structure::LOCAL_BODY
-                    || self.readable.get(k).copied().flatten().is_some_and(|v| {
-                        v.is_whole() && v.trunc() == c.key && (self.config.haas || c.key <= 9999)
-                    })
-            };
-            let plain = !b.skip
+            // (the call's own block: no move, no entry at a sequence number, no skip; the
+            // call's statement or M98/M97 P, its N, a repeat count)
+            let mut runs: Option<u32> = None;
+            let mut plain = !b.skip
                 && b.skip_within.is_none()
-                && b.statements.iter().all(|s| s.1 == Kind::Call)
-                && b.words.iter().enumerate().all(|(k, w)| {
-                    (w.letter != b'P' || names(k))
-                        && w.index.is_empty()
-                        && w.expression.is_empty()
-                        && matches!(w.letter, b'N' | b'M' | b'P')
-                });
+                && b.statements.iter().all(|s| s.1 == Kind::Call);
+            for (k, w) in b.words.iter().enumerate() {
+                let value = self.readable.get(k).copied().flatten();
+                plain &= w.index.is_empty() && w.expression.is_empty();
+                plain &= match (w.letter, value) {
+                    (b'N' | b'M', _) => true,
+                    (b'P' | b'L', Some(v)) => match self.resumed_runs(c, w.letter, v) {
+                        // (one count only: L, or P's digits above four)
+                        Some(n) if n > 1 && runs.is_some_and(|r| r > 1) => false,
+                        Some(n) => {
+                            runs = Some(runs.map_or(n, |r| r.max(n)));
+                            true
+                        }
+                        None => false,
+                    },
+                    _ => false,
+                };
+            }
             c.checked = plain;
             c.recording = plain;
+            c.runs = runs.unwrap_or(1);
             c.named = match b.statements.iter().find(|s| s.1 == Kind::Call) {
                 Some(&(_, _, text)) => String::from_utf8_lossy(text.trim_ascii()).into_owned(),
                 None => b
                     .words
                     .iter()
-                    .filter(|w| matches!(w.letter, b'M' | b'P'))
+                    .filter(|w| matches!(w.letter, b'M' | b'P' | b'L'))
                     .map(|w| w.token())
                     .collect::<Vec<_>>()
                     .join(" "),
@@ -362,8 +507,9 @@ impl Checker {
         let mut m = Move {
             line: b.line,
             own: c.moves.last().and_then(|m| m.own),
-            linear: false,
+            motion: None,
             axes: Vec::new(),
+            said: Vec::new(),
         };
         let plain = !b.skip
             && b.skip_within.is_none()
@@ -377,15 +523,15 @@ impl Checker {
                 }
                 let code = || v.is_whole().then(|| v.trunc());
                 match w.letter {
-                    b'N' | b'F' | b'S' | b'T' | b'Z' => true,
-                    b'X' | b'Y' => {
-                        let i = usize::from(w.letter == b'Y');
+                    b'N' | b'F' | b'S' | b'T' => true,
+                    b'X' | b'Y' | b'Z' => {
+                        let i = usize::from(w.letter - b'X');
                         m.axes.push((i, v.to_f64(), w.column));
                         true
                     }
                     b'G' => match code() {
-                        Some(0 | 1) => {
-                            m.linear = true;
+                        Some(c @ (0 | 1)) => {
+                            m.motion = Some(c);
                             true
                         }
                         Some(90) => {
@@ -407,9 +553,15 @@ impl Checker {
             c.recording = false;
             return;
         }
+        m.said = self
+            .found
+            .iter()
+            .filter(|f| f.rule == Rule::TravelExceeded && f.line == b.line)
+            .filter(|f| f.pending_on.is_empty())
+            .map(|f| f.column)
+            .collect();
         c.moves.push(m);
     }
-
     /// A block of the body (its start to its return): followed, or the body not known.
     fn resumed_body(&self, body: &mut Body, b: &BlockView<'_>) {
         if !body.sure {
@@ -545,10 +697,10 @@ impl Checker {
             };
             let code = v.is_whole().then(|| v.trunc());
             let known = match w.letter {
-                b'N' | b'F' | b'S' | b'Z' | b'I' | b'J' | b'K' | b'R' => true,
+                b'N' | b'F' | b'S' | b'I' | b'J' | b'K' | b'R' => true,
                 b'O' => !linuxcnc || first,
-                b'X' | b'Y' => {
-                    axes.push((usize::from(w.letter == b'Y'), v.to_f64()));
+                b'X' | b'Y' | b'Z' => {
+                    axes.push((usize::from(w.letter - b'X'), v.to_f64()));
                     true
                 }
                 b'G' => match code {
@@ -583,20 +735,16 @@ impl Checker {
             return;
         }
         if let Some(mode) = codes.1 {
-            body.mode = Some(mode);
             body.wrote = Some(mode);
+            body.steps.push(Step::Mode(mode));
         }
         if let Some(motion) = codes.0 {
             body.motion = Some(motion);
         }
-        for (i, v) in axes {
-            body.ends[i] = match (body.mode, body.ends[i]) {
-                (Some(false), _) => End::At(v),
-                (Some(true), End::At(a)) => End::At(a + v),
-                (Some(true), End::By(d)) => End::By(d + v),
-                // (before its own G90/G91: the call's mode, [`Checker::resumed_returned`])
-                (None, _) | (_, End::Unknown) => End::Unknown,
-            };
+        body.steps
+            .extend(axes.into_iter().map(|(i, v)| Step::Axis(i, v)));
+        if body.steps.len() > STEPS {
+            body.sure = false;
         }
         body.returned = returns;
     }
@@ -611,8 +759,8 @@ impl Checker {
             return;
         };
         if let Some(body) = r
-            .body
-            .as_mut()
+            .bodies
+            .last_mut()
             .filter(|body| !body.returned && body.sure && self.in_hand == Some(body.key))
         {
             self.resumed_body(body, b);
@@ -627,78 +775,125 @@ impl Checker {
         self.resumed = Some(r);
     }
 
-    /// Where the body just returned known: the caller's moves after its calls judged.
-    fn resumed_finished(&mut self, r: &Resumed) {
-        let Some(body) = r.body.as_ref().filter(|body| {
-            body.returned && body.sure && body.dead.is_none() && body.goto.is_none()
-        }) else {
+    /// A body just returned: the calls whose bodies are all known judged in turn, from
+    /// the first not judged yet, each later call from where the moves before it end.
+    fn resumed_finished(&mut self, r: &mut Resumed) {
+        if r.assumed && !r.main_end {
             return;
-        };
-        for c in r.calls.iter().filter(|c| c.key == body.key && c.checked) {
-            self.resumed_judged(c, body);
+        }
+        while !r.broken && r.judged < r.calls.len() {
+            let c = &r.calls[r.judged];
+            let Some(body) = r.bodies.iter().find(|body| body.key == c.key) else {
+                // (its body not read yet: judged at its return)
+                return;
+            };
+            if !body.returned {
+                return;
+            }
+            let entry = if c.chained {
+                r.carry
+            } else {
+                Some(Carry {
+                    at: c.start,
+                    incremental: c.incremental,
+                    motion: c.motion,
+                })
+            };
+            let known = c.checked
+                && body.sure
+                && body.dead.is_none()
+                && body.goto.is_none()
+                && body.steps.len().saturating_mul(c.runs as usize) <= STEPS;
+            let Some(mut at) = entry.filter(|_| known) else {
+                r.broken = true;
+                return;
+            };
+            // (each run from where the one before left the tool, in the mode it left: a
+            // body that leaves G91 moves again at each pass, one that leaves G90 ends where
+            // it ends)
+            for _ in 0..c.runs {
+                for step in &body.steps {
+                    match *step {
+                        Step::Mode(g91) => at.incremental = g91,
+                        Step::Axis(k, v) if at.incremental => at.at[k] = at.at[k].map(|a| a + v),
+                        Step::Axis(k, v) => at.at[k] = Some(v),
+                    }
+                }
+            }
+            at.motion = body.motion.or(at.motion);
+            let carry = self.resumed_judged(c, body, at);
+            r.carry = carry;
+            r.judged += 1;
         }
     }
 
     /// Whether the body `key` returned known: the G90/G91 it leaves written (None: none).
     pub(super) fn resumed_leaves(&self, key: i64) -> Option<Option<bool>> {
-        let body = self.resumed.as_ref()?.body.as_ref()?;
-        (body.key == key && body.returned && body.sure).then_some(body.wrote)
+        let r = self.resumed.as_ref()?;
+        let body = r.bodies.iter().find(|body| body.key == key)?;
+        (body.returned && body.sure).then_some(body.wrote)
     }
 
-    /// The caller's moves after call `c` judged from where `body` leaves the tool, in the
-    /// mode it leaves: a TG601 at each position beyond the travel that begins an excursion.
-    fn resumed_judged(&mut self, c: &Call, body: &Body) {
-        if c.moves.is_empty() || !self.selection.enabled(Rule::TravelExceeded) {
-            return;
-        }
-        let leaves = body.wrote.unwrap_or(c.incremental);
-        let motion = body.motion.or(c.motion);
-        // (an axis the body moved before its own G90/G91 is not known: End::Unknown)
-        let mut at: [Option<f64>; 2] = std::array::from_fn(|k| match body.ends[k] {
-            End::At(v) => Some(v),
-            End::By(d) => c.start[k].map(|s| s + d),
-            End::Unknown => None,
-        });
+    /// The caller's moves after call `c` judged from `at`, where the runs of `body` leave the
+    /// tool, in the mode they leave: a TG601 at each position beyond the travel that begins
+    /// an excursion. Where they end (None: not known).
+    fn resumed_judged(&mut self, c: &Call, body: &Body, at: Carry) -> Option<Carry> {
+        let enabled = self.selection.enabled(Rule::TravelExceeded);
+        let Carry {
+            mut at,
+            incremental: leaves,
+            motion,
+        } = at;
         let name = &c.named;
         let line = c.line;
-        let mut outside = [0i8; 2];
+        let mut outside = [0i8; AXES];
         let mut said = Vec::new();
+        let mut incremental = leaves;
         for m in &c.moves {
-            if !m.linear && !matches!(motion, Some(0 | 1)) {
-                return;
+            if m.motion.is_none() && !matches!(motion, Some(0 | 1)) {
+                self.found.extend(said);
+                return None;
             }
-            let incremental = m.own.unwrap_or(leaves);
+            incremental = m.own.unwrap_or(leaves);
             for &(k, v, column) in &m.axes {
                 at[k] = if incremental {
                     at[k].map(|a| a + v)
                 } else {
                     Some(v)
                 };
-                let (Some(work), Some(offset), Some((low, high))) =
-                    (at[k], c.offset[k], self.travel.of_place(JUDGED[k]))
+                let (Some(work), Some(offset), Some((low, high)), true) =
+                    (at[k], c.offset[k], self.travel.of_place(JUDGED[k]), enabled)
                 else {
                     continue;
                 };
-                let machine = work * c.factor + offset.to_f64();
+                let work = work * c.factor;
+                let machine = work + offset.to_f64();
                 let side = super::limits::travel_side(machine, (low, high));
                 if side == 0 || side == outside[k] {
                     outside[k] = side;
                     continue;
                 }
                 outside[k] = side;
-                if self.found.iter().any(|f| {
-                    f.rule == Rule::TravelExceeded && f.line == m.line && f.column == column
-                }) {
+                if m.said.contains(&column)
+                    || self.found.iter().any(|f| {
+                        f.rule == Rule::TravelExceeded && f.line == m.line && f.column == column
+                    })
+                {
                     continue;
                 }
                 let g = if incremental { 91 } else { 90 };
+                let runs = if c.runs > 1 {
+                    format!(" {} times", c.runs)
+                } else {
+                    String::new()
+                };
                 let why = match (m.own, body.wrote) {
                     (Some(_), _) => format!(
                         "read in the caller's own G{g} after {name} of line {line}, whose \
                          program writes no work offset"
                     ),
                     (None, Some(_)) => format!(
-                        "read in G{g}: the program that {name} of line {line} runs \
+                        "read in G{g}: the program that {name} of line {line} runs{runs} \
                          leaves G{g} and writes no work offset; G90/G91 are modal and its \
                          return restores neither"
                     ),
@@ -714,7 +909,7 @@ impl Checker {
                          outside the travel {low} to {high} ({why})",
                         super::AXES[JUDGED[k]] as char,
                         super::round6(machine),
-                        super::round6(work * c.factor),
+                        super::round6(work),
                         c.work,
                         offset,
                     ),
@@ -728,5 +923,10 @@ impl Checker {
             }
         }
         self.found.extend(said);
+        Some(Carry {
+            at,
+            incremental,
+            motion: c.moves.iter().rev().find_map(|m| m.motion).or(motion),
+        })
     }
 }
