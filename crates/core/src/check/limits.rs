@@ -634,9 +634,11 @@ impl Checker {
     fn work_selected(&mut self, g: i64, line: usize) {
         self.flow_spoiled();
         // (the axes whose values are known under the system left: review 76-lcnc76b N3)
-        let left = match self.work {
-            Some(from) if from != g => self.selection_known(from),
-            _ => 0,
+        let same = self.work == Some(g);
+        let from = self.work.filter(|_| !same);
+        let (mut left, positions) = match from {
+            Some(from) => (self.selection_known(from), self.known_axes(from)),
+            None => (0, 0),
         };
         if self.work != Some(g) && self.machine.state.position.iter().any(Option::is_some) {
             // (the real run keeps the machine position: the work position held is the old
@@ -662,9 +664,75 @@ impl Checker {
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+        let moved = match from {
+            Some(from) if positions != 0 => self.selection_reexpressed(from, g, positions),
+            _ => 0,
+        };
+        // (the same system selected again keeps what was re-expressed into it)
+        if !same {
+            self.reexpressed = (moved != 0).then_some((g, moved));
+        }
+        left |= moved;
         if left != 0 {
             self.selection_spans(left);
         }
+    }
+
+    /// A G54-G59 selected from G`from`, the values of both known on the axes `axes`
+    /// ([`Checker::known_axes`], under the new system too): the real run keeps the machine
+    /// position (LinuxCNC interp_convert.cc `convert_coordinate_system`; FANUC 0i-F and 30i-B
+    /// and Haas NGC: selecting a work system moves no axis), so the work position held is
+    /// re-expressed in the new system, axis by axis: new work = old work + old offset - new
+    /// offset (in the block's units). An increment after it runs from there (review
+    /// 80-sel80 R2: `G54` / `G0 X-700.` / `G57` / `G91 G0 X100.` on G54 X0, G57 X-300 runs at
+    /// machine -600, inside, and was "X goes to -900"; its twin from `X700.` runs at 800,
+    /// beyond, and was not said). An axis the block itself places (an absolute position, a
+    /// G53, a G92, a code's data) is left as the block left it. The axes re-expressed.
+    #[cold]
+    #[inline(never)]
+    fn selection_reexpressed(&mut self, from: i64, to: i64, axes: u16) -> u16 {
+        let known = axes & self.known_axes(to);
+        let factor = self.to_profile_units(false);
+        let given = self.values.given();
+        let placed = self.values.has_g(53)
+            || self.machine.taken().is_some()
+            || !self.machine.state.incremental;
+        let mut moved = 0;
+        for i in crate::modal::places(u32::from(known)) {
+            if given & bit(AXES[i]) != 0 && placed {
+                continue;
+            }
+            let (Some(old), Some(new), Some(at)) = (
+                self.offset_value(from, i),
+                self.offset_value(to, i),
+                self.machine.state.position[i],
+            ) else {
+                continue;
+            };
+            let Some(now) = Dec::parse(&format!("{:.6}", (old - new) / factor))
+                .and_then(|delta| at.checked_add(delta))
+            else {
+                continue;
+            };
+            self.machine.state.position[i] = Some(now);
+            moved |= 1 << i;
+        }
+        moved
+    }
+
+    /// The value of work offset G`work` on the axis of place `i`: a G10's of the run where
+    /// one wrote it, else the profile's; None where not known.
+    fn offset_value(&self, work: i64, i: usize) -> Option<f64> {
+        if self.offset_unknown(work, i) {
+            return None;
+        }
+        self.offset_written(work, i).or_else(|| {
+            self.config
+                .work_offsets
+                .iter()
+                .find(|&&(g, a, _)| g == work && a == AXES[i])
+                .map(|&(_, _, value)| value.to_f64())
+        })
     }
 
     /// The axes (their places' bits) of work system G`work` (54-59) whose positions are
@@ -674,6 +742,19 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn selection_known(&self, work: i64) -> u16 {
+        // (under G91 the next increment runs from where the tool stands, which the
+        // selection changes in work coordinates; a lathe's U and W too: review 78-lcnc78b
+        // F1; a selection re-expresses it where it can, Checker::selection_reexpressed)
+        if self.machine.state.incremental {
+            return 0;
+        }
+        self.known_axes(work)
+    }
+
+    /// [`Checker::selection_known`] whatever G90/G91 is in force.
+    #[cold]
+    #[inline(never)]
+    fn known_axes(&self, work: i64) -> u16 {
         if self.offsets_lost
             || self.work_guessed.is_some()
             || self.work_run_on
@@ -687,10 +768,6 @@ impl Checker {
             || self.units_unknown
             || self.offsets_written.moved
             || !self.offsets_written.unread.is_empty()
-            // (under G91 the next increment runs from where the tool stands, which the
-            // selection changes in work coordinates; a lathe's U and W too: review
-            // 78-lcnc78b F1)
-            || self.machine.state.incremental
             || self.config.modal.fanuc_lathe
             || self.config.diameter
         {
@@ -733,7 +810,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn selection_spans(&mut self, axes: u16) {
-        let known = axes & self.work.map_or(0, |g| self.selection_known(g));
+        let known = axes & self.work.map_or(0, |g| self.selection_known(g)) | self.moved_axes();
         for i in crate::modal::places(u32::from(known)) {
             let Some(span) = self.spans[i].filter(|s| !s.said) else {
                 continue;
@@ -747,8 +824,17 @@ impl Checker {
             self.spans[i] = None;
         }
         if self.spans_parked.is_some() {
-            let unknown = !self.work.map_or(0, |g| self.selection_known(g));
+            let unknown = !(self.work.map_or(0, |g| self.selection_known(g)) | self.moved_axes());
             self.spans_unparked(unknown);
+        }
+    }
+
+    /// The axes the last selection re-expressed the position of, where its system is still
+    /// in force ([`Checker::selection_reexpressed`]).
+    fn moved_axes(&self) -> u16 {
+        match self.reexpressed {
+            Some((g, axes)) if self.work == Some(g) => axes,
+            _ => 0,
         }
     }
 
@@ -1863,8 +1949,11 @@ impl Checker {
                 // (after the main program's first jump: callflow.rs)
                 43 | 44 if self.flow_calls.is_some() => self.flow_spoiled(),
                 // (G91: the spans set aside at a selection join again, the increments from
-                // a work position the selection changed; review 78-lcnc78b F1)
-                91 if self.spans_parked.is_some() => self.spans_unparked(ALL_PLACES),
+                // a work position the selection changed; review 78-lcnc78b F1; not those
+                // of the axes it re-expressed, Checker::selection_reexpressed)
+                91 if self.spans_parked.is_some() => {
+                    self.spans_unparked(ALL_PLACES & !self.moved_axes())
+                }
                 10 => {
                     let writes = self.g10_writes(b);
                     self.offsets_written.then(&writes);
@@ -3639,7 +3728,14 @@ impl Checker {
                 // (and at a position outside a body read under its call's offset after they
                 // were kept across that call: structure.rs, `call_offsets_rewritten`)
                 if self.spans_parked.is_some() && self.machine.state.incremental {
-                    self.spans_unparked(ALL_PLACES);
+                    // (not those a selection re-expressed: their increments run from the
+                    // new system's position, judged as machine positions)
+                    let axes = if self.reexpressed.is_some() {
+                        ALL_PLACES & !self.moved_axes()
+                    } else {
+                        ALL_PLACES
+                    };
+                    self.spans_unparked(axes);
                 } else if self.spans_parked_call {
                     self.spans_rejoined();
                 }

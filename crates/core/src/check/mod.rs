@@ -1743,6 +1743,11 @@ pub struct Checker {
     /// position the checker holds is the old system's, so a call's start is not taken from
     /// it ([`resumed`]).
     selected_from_position: bool,
+    /// The system a G54-G59 selection re-expressed the held position into and those axes
+    /// ([`Checker::selection_reexpressed`]): under it, a position after the selection is the
+    /// new system's, judged as a machine position, and an increment does not join the span
+    /// set aside at the selection again.
+    reexpressed: Option<(i64, u16)>,
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
@@ -2081,6 +2086,7 @@ impl Checker {
             resumed: None,
             call_from: (0, [None; 2]),
             selected_from_position: false,
+            reexpressed: None,
             flow_calls: None,
             units_unknown: false,
             early: None,
