@@ -285,3 +285,39 @@ def test_a_selection_re_expresses_the_position_held(
         assert [(n, m[:len(said[1])]) for n, m in found] == [(line, said[1])], found
     if form == "lcnc":
         assert machine_moves(tmp_path, text) == pytest.approx(machine)
+
+
+# (a loop of two passes of `G57` / `G91 G0 X-50.` / `G90` / `G54` from machine -700: rs274
+# runs -750 on the first pass, -800, beyond, on the second, which the checker does not read;
+# the selection inside a loop, or after a sequence number a later jump may go back to, is not
+# re-expressed, and the first pass's increment is judged from the work value held, as main
+# judged it (work -750 + G57 offset -300), which refuses the program; review 81-sel81 R1)
+LOOPS = {
+    "lcnc": ("G21 G17 G90\nG54\nG0 X-700.\n#1=0\no100 while [#1 LT 2]\nG57\nG91 G0 X-50.\n"
+             "G90\nG54\n#1=[#1+1]\no100 endwhile\nM2\n", 7),
+    "fanuc": ("O1000\nG21 G17 G90\nG54\nG0 X-700.\n#1=0\nN10 G57\nG91 G0 X-50.\nG90\nG54\n"
+              "#1=#1+1\nIF [#1 LT 2] GOTO10\nM30\n", 7),
+}
+
+
+@pytest.mark.parametrize("form", ["lcnc", "fanuc"])
+def test_a_selection_a_loop_may_run_again_keeps_the_work_value(
+        tmp_path: Path, form: str) -> None:
+    text, line = LOOPS[form]
+    found = [(f.line, f.message) for f in check_text(text, profile(tmp_path, form))
+             if f.severity == "error"]
+    assert [(n, m[:20]) for n, m in found] == [(line, "X goes to -1050 in m")], found
+    if form == "lcnc":
+        assert machine_moves(tmp_path, text) == pytest.approx([-700.0, -750.0, -800.0])
+
+
+@pytest.mark.parametrize("form", ["haas97", "lcnc98", "lcnc"])
+def test_a_body_that_turns_the_spindle_on_keeps_the_span_set_aside(
+        tmp_path: Path, form: str) -> None:
+    # (S and the spindle's and coolant's M3-M5, M7-M9 move no axis and write no offset: the
+    # body's X-740 under the call's G54 (machine -740) and the main's G57 X800 (500) are
+    # each judged as machine positions, inside; was "X spans 1540"; review 80-sel80 R16)
+    main, body = "G54 / CALL / G57 / G0 X800.", "S1000 M3 M8 / G0 X-740. / M5 M9"
+    assert errors(tmp_path, form, main, body) == []
+    if form.startswith("lcnc"):
+        assert machine_moves(tmp_path, program(form, main, body)) == [-740.0, 500.0]

@@ -691,6 +691,22 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn selection_reexpressed(&mut self, from: i64, to: i64, axes: u16) -> u16 {
+        // (not where the run may come back over the selection, a second pass beginning from
+        // the machine position the first left, which the checker does not read: inside a
+        // LinuxCNC loop or condition; in a FANUC's or Haas's program after a jump or loop
+        // statement or a sequence number, at or before the selection, that a `GOTO` or `M99
+        // P` after it may jump back to. There the work value held is kept, as main kept it:
+        // its judgement of the first pass refused `G54` / `G0 X-700.` / a loop of two
+        // passes of `G57` / `G91 G0 X-50.` / `G90` / `G54`, which runs at -800 on the
+        // second; review 81-sel81 R1)
+        let back = if self.config.family == Family::LinuxCnc {
+            !self.linuxcnc_open_flow.is_empty()
+        } else {
+            self.jumped || self.numbered
+        };
+        if back {
+            return 0;
+        }
         let known = axes & self.known_axes(to);
         let factor = self.to_profile_units(false);
         let given = self.values.given();
@@ -709,7 +725,7 @@ impl Checker {
             ) else {
                 continue;
             };
-            let Some(now) = Dec::parse(&format!("{:.6}", (old - new) / factor))
+            let Some(now) = Dec::parse(&format!("{:.9}", (old - new) / factor))
                 .and_then(|delta| at.checked_add(delta))
             else {
                 continue;
@@ -926,14 +942,18 @@ impl Checker {
                     && w.expression.is_empty()
                     && match w.letter {
                         b'N' | b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W'
-                        | b'I' | b'J' | b'K' | b'R' | b'F' => true,
+                        | b'I' | b'J' | b'K' | b'R' | b'F' | b'S' => true,
                         b'G' => matches!(
                             w.number,
                             b"0" | b"00" | b"1" | b"01" | b"2" | b"02" | b"3" | b"03"
                         ),
-                        b'M' => {
-                            matches!(w.number, b"99") && !b.words.iter().any(|w| w.letter == b'P')
-                        }
+                        // (the spindle's M3-M5 and the coolant's M7-M9 move no axis and
+                        // write no offset: review 80-sel80 R16)
+                        b'M' => match w.number {
+                            [d] | [b'0', d] => b"345789".contains(d),
+                            b"99" => !b.words.iter().any(|w| w.letter == b'P'),
+                            _ => false,
+                        },
                         _ => false,
                     }
             });
@@ -1864,6 +1884,8 @@ impl Checker {
     #[inline(never)]
     fn work_offset_given(&mut self, b: &BlockView<'_>) -> bool {
         let line = b.line;
+        // (a block a jump back may arrive at: Checker::selection_reexpressed)
+        self.numbered |= self.letters & bit(b'N') != 0;
         if self.units_merged.is_some() && self.letters & bit(b'G') != 0 {
             let changes = b.words.iter().enumerate().any(|(i, w)| {
                 w.letter == b'G'

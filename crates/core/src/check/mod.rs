@@ -1748,6 +1748,10 @@ pub struct Checker {
     /// new system's, judged as a machine position, and an increment does not join the span
     /// set aside at the selection again.
     reexpressed: Option<(i64, u16)>,
+    /// The program in hand has read a sequence number (a block a `GOTO` or `M99 P` after it
+    /// may jump back to; read where the profile gives work offsets:
+    /// [`Checker::selection_reexpressed`]).
+    numbered: bool,
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
@@ -2087,6 +2091,7 @@ impl Checker {
             call_from: (0, [None; 2]),
             selected_from_position: false,
             reexpressed: None,
+            numbered: false,
             flow_calls: None,
             units_unknown: false,
             early: None,

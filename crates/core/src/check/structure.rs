@@ -320,6 +320,7 @@ impl Checker {
         self.goto_targets.clear();
         self.goto_computed = false;
         self.jumped = false;
+        self.numbered = false;
         self.goto_names.clear();
         self.arrival = None;
         self.jumps_pending.clear();
