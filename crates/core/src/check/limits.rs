@@ -732,8 +732,65 @@ impl Checker {
             };
             self.machine.state.position[i] = Some(now);
             moved |= 1 << i;
+            let held = self
+                .reexpressed_held
+                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9])));
+            held.0 |= 1 << i;
+            if let Some(sum) = now.checked_add(-at).and_then(|d| held.1[i].checked_add(d)) {
+                held.1[i] = sum;
+            }
         }
         moved
+    }
+
+    /// A block after a re-expression ([`Checker::selection_reexpressed`]) while an axis's
+    /// position is still the one it re-expressed (no position of the block's own on it
+    /// since): where a loop opens or a block a jump back may arrive at is read (a LinuxCNC
+    /// loop or condition; a FANUC's or Haas's jump or loop statement or a sequence number),
+    /// the run may come back there with the machine position the first pass left, which the
+    /// checker does not read: the re-expression is taken back (position - the delta added,
+    /// main's work value) and the increments judged from it as main judged them (review
+    /// 81-sel81 R5: `G54` / `G0 X-700.` / `G57` / a loop of two `G91 G0 X-50.` runs at -800
+    /// on the second pass, refused by main's -1050 of the first). A call may place the
+    /// position anew: no longer held.
+    #[cold]
+    #[inline(never)]
+    fn reexpression_held(&mut self, b: &BlockView<'_>) {
+        let Some(mut held) = self.reexpressed_held.take() else {
+            return;
+        };
+        let calls = b.statements.iter().any(|s| s.1 == Kind::Call)
+            || b.words.iter().any(|w| {
+                w.letter == b'M' && matches!(w.number, b"98" | b"97")
+                    || w.letter == b'G' && matches!(w.number, b"65" | b"66")
+            });
+        if calls {
+            return;
+        }
+        let placed = self.values.has_g(53)
+            || self.machine.taken().is_some()
+            || !self.machine.state.incremental;
+        for i in crate::modal::places(u32::from(held.0)) {
+            if self.values.given() & bit(AXES[i]) != 0 && placed
+                || self.machine.state.position[i].is_none()
+            {
+                held.0 &= !(1 << i);
+            }
+        }
+        let back = if self.config.family == Family::LinuxCnc {
+            !self.linuxcnc_open_flow.is_empty()
+        } else {
+            self.jumped || self.numbered
+        };
+        if back {
+            for i in crate::modal::places(u32::from(held.0)) {
+                let s = &mut self.machine.state;
+                s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
+            }
+            self.reexpressed = None;
+        } else if held.0 != 0 {
+            self.reexpressed_held = Some(held);
+        }
     }
 
     /// The value of work offset G`work` on the axis of place `i`: a G10's of the run where
@@ -1886,6 +1943,9 @@ impl Checker {
         let line = b.line;
         // (a block a jump back may arrive at: Checker::selection_reexpressed)
         self.numbered |= self.letters & bit(b'N') != 0;
+        if self.reexpressed_held.is_some() {
+            self.reexpression_held(b);
+        }
         if self.units_merged.is_some() && self.letters & bit(b'G') != 0 {
             let changes = b.words.iter().enumerate().any(|(i, w)| {
                 w.letter == b'G'

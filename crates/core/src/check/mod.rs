@@ -1752,6 +1752,9 @@ pub struct Checker {
     /// may jump back to; read where the profile gives work offsets:
     /// [`Checker::selection_reexpressed`]).
     numbered: bool,
+    /// The axes whose positions are still the ones a selection re-expressed, and the delta
+    /// it added to each ([`Checker::reexpression_held`]).
+    reexpressed_held: Option<Box<(u16, [Dec; 9])>>,
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
@@ -2092,6 +2095,7 @@ impl Checker {
             selected_from_position: false,
             reexpressed: None,
             numbered: false,
+            reexpressed_held: None,
             flow_calls: None,
             units_unknown: false,
             early: None,

@@ -321,6 +321,7 @@ impl Checker {
         self.goto_computed = false;
         self.jumped = false;
         self.numbered = false;
+        self.reexpressed_held = None;
         self.goto_names.clear();
         self.arrival = None;
         self.jumps_pending.clear();
