@@ -735,10 +735,17 @@ impl Checker {
             let held = self
                 .reexpressed_held
                 .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9])));
+            // (added to the delta held on the axis, or from none where it holds none)
+            let before = if held.0 & 1 << i != 0 {
+                held.1[i]
+            } else {
+                Dec::ZERO
+            };
             held.0 |= 1 << i;
-            if let Some(sum) = now.checked_add(-at).and_then(|d| held.1[i].checked_add(d)) {
-                held.1[i] = sum;
-            }
+            held.1[i] = now
+                .checked_add(-at)
+                .and_then(|d| before.checked_add(d))
+                .unwrap_or(before);
         }
         moved
     }
@@ -775,6 +782,7 @@ impl Checker {
                 || self.machine.state.position[i].is_none()
             {
                 held.0 &= !(1 << i);
+                held.1[i] = Dec::ZERO;
             }
         }
         let back = if self.config.family == Family::LinuxCnc {
