@@ -731,6 +731,7 @@ impl Checker {
                 continue;
             };
             self.machine.state.position[i] = Some(now);
+            self.position_reexpressed = true;
             moved |= 1 << i;
             let held = self
                 .reexpressed_held
@@ -791,6 +792,7 @@ impl Checker {
             self.jumped || self.numbered
         };
         if back {
+            self.position_reexpressed = true;
             for i in crate::modal::places(u32::from(held.0)) {
                 let s = &mut self.machine.state;
                 s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));

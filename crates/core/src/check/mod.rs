@@ -1752,6 +1752,9 @@ pub struct Checker {
     /// may jump back to; read where the profile gives work offsets:
     /// [`Checker::selection_reexpressed`]).
     numbered: bool,
+    /// The block's selection re-expressed the position, or a loop took it back (the one
+    /// change of the state a rule makes: [`Checker::selection_reexpressed`]).
+    position_reexpressed: bool,
     /// The axes whose positions are still the ones a selection re-expressed, and the delta
     /// it added to each ([`Checker::reexpression_held`]).
     reexpressed_held: Option<Box<(u16, [Dec; 9])>>,
@@ -2095,6 +2098,7 @@ impl Checker {
             selected_from_position: false,
             reexpressed: None,
             numbered: false,
+            position_reexpressed: false,
             reexpressed_held: None,
             flow_calls: None,
             units_unknown: false,
@@ -3064,8 +3068,15 @@ impl Checker {
         // the tests', holds them to leaving it as they found it)
         let takes_axes = self.motion_codes(b);
         #[cfg(debug_assertions)]
-        let applied = self.machine.state;
+        let mut applied = self.machine.state;
+        self.position_reexpressed = false;
         self.codes(b, &before, takes_axes);
+        // (but for the position a G54-G59 re-expresses in the new system, or a loop takes
+        // back: limits.rs, `selection_reexpressed`, `reexpression_held`)
+        #[cfg(debug_assertions)]
+        if self.position_reexpressed {
+            applied.position = self.machine.state.position;
+        }
         #[cfg(debug_assertions)]
         assert_eq!(
             self.machine.state, applied,
