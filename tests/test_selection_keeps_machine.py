@@ -223,3 +223,114 @@ def test_a_haas_return_to_a_sequence_number_joins_the_span(tmp_path: Path) -> No
     # program's G57, so its X800 runs under G54 at machine 800, beyond; said at line 9
     found = errors(tmp_path, "haas97", "G54 / CALL / G57 / N20 G0 X800.", "G0 X-740. / M99 P20")
     assert [(n, m[:12]) for n, m in found] == [(9, "X spans 1540")], found
+
+
+def inline(form: str, main: str) -> str:
+    """`main` (blocks split at ` / `) as a program of its own, ended by M30 (M2 for LinuxCNC)."""
+    head = ["G21 G17 G90"] if form == "lcnc" else ["O1000", "G21 G17 G90"]
+    end = "M2" if form == "lcnc" else "M30"
+    return "\n".join([*head, *main.split(" / "), end]) + "\n"
+
+
+# (the program's blocks, rs274's machine X of each move, the error said: (line in the LinuxCNC
+# form, start of the message), a line one more in the FANUC's and Haas's for their O1000; or
+# None): a selection re-expresses the position held in the new system, new work = old work +
+# old offset - new offset, so an increment after it runs from the machine position the tool
+# kept (review 80-sel80 R2)
+INLINE = [
+    # machine -700 kept across G57 (work -400), +100: machine -600, inside; was "X goes to
+    # -900" (work -600 + G57 offset -300)
+    ("G54 / G0 X-700. / G57 / G91 G0 X100. / G90", [-700.0, -600.0], None),
+    # its twin: machine 700 kept (G57 work 1000), +100: machine 800, beyond; was not said
+    # (work 800 + -300 = 500)
+    ("G54 / G0 X700. / G57 / G91 G0 X100. / G90", [700.0, 800.0], (5, "X goes to 800")),
+    # the selection and the increment in one block: the selection first, then the move
+    ("G54 / G0 X700. / G57 G91 G0 X100. / G90", [700.0, 800.0], (4, "X goes to 800")),
+    # under G91 at the selection
+    ("G54 / G0 X700. / G91 / G57 / G0 X100. / G90", [700.0, 800.0], (6, "X goes to 800")),
+    # from G57 to G54: machine -700 (G57 work -400) kept, G54 work -700, -100: machine -800
+    ("G57 / G0 X-400. / G54 / G91 G0 X-100. / G90", [-700.0, -800.0], (5, "X goes to -800")),
+    # ... machine 700 kept, -100: 600, inside; was "X goes to 900" (work 900 + G54's 0)
+    ("G57 / G0 X1000. / G54 / G91 G0 X-100. / G90", [700.0, 600.0], None),
+    # then an absolute move under G57 (1000 - 300 = 700): -700, -600, 700 all inside, no span
+    # of the two systems' work positions (-700 to 1000 would be 1700)
+    ("G54 / G0 X-700. / G57 / G91 G0 X100. / G90 G0 X1000.", [-700.0, -600.0, 700.0], None),
+    # a G10 of G57's X with a value known (-500): the value written, not the profile's:
+    # machine -700 is G57 work -200, +100: machine -600, inside; was "X goes to -1100"
+    ("G54 / G0 X-700. / G10 L2 P4 X-500. / G57 / G91 G0 X100. / G90", [-700.0, -600.0],
+     None),
+    # ... from machine 700: G57 work 1200, +100: machine 800, beyond; was not said
+    ("G54 / G0 X700. / G10 L2 P4 X-500. / G57 / G91 G0 X100. / G90", [700.0, 800.0],
+     (6, "X goes to 800")),
+    # G58, not in the profile (rs274's var file: 0), then G57: the machine position is not
+    # re-expressed from a value not known; the span of -700, 800 and the increment's 30 (the
+    # machine's span whatever G58's offset) is said, as main said it
+    ("G58 / G0 X-700. / G0 X800. / G57 / G91 G0 X30. / G90", [-700.0, 800.0, 830.0],
+     (6, "X spans 1530")),
+]
+
+
+@pytest.mark.parametrize("main, machine, said", INLINE)
+@pytest.mark.parametrize("form", ["fanuc", "haas", "lcnc"])
+def test_a_selection_re_expresses_the_position_held(
+        tmp_path: Path, form: str, main: str, machine: list[float],
+        said: tuple[int, str] | None) -> None:
+    text = inline(form, main)
+    found = [(f.line, f.message) for f in check_text(text, profile(tmp_path, form))
+             if f.severity == "error"]
+    if said is None:
+        assert found == []
+    else:
+        line = said[0] + (form != "lcnc")
+        assert [(n, m[:len(said[1])]) for n, m in found] == [(line, said[1])], found
+    if form == "lcnc":
+        assert machine_moves(tmp_path, text) == pytest.approx(machine)
+
+
+# (a loop of two passes of `G57` / `G91 G0 X-50.` / `G90` / `G54` from machine -700: rs274
+# runs -750 on the first pass, -800, beyond, on the second, which the checker does not read;
+# the selection inside a loop, or after a sequence number a later jump may go back to, is not
+# re-expressed, and the first pass's increment is judged from the work value held, as main
+# judged it (work -750 + G57 offset -300), which refuses the program; review 81-sel81 R1)
+LOOPS = {
+    "lcnc": ("G21 G17 G90\nG54\nG0 X-700.\n#1=0\no100 while [#1 LT 2]\nG57\nG91 G0 X-50.\n"
+             "G90\nG54\n#1=[#1+1]\no100 endwhile\nM2\n", 7),
+    "fanuc": ("O1000\nG21 G17 G90\nG54\nG0 X-700.\n#1=0\nN10 G57\nG91 G0 X-50.\nG90\nG54\n"
+              "#1=#1+1\nIF [#1 LT 2] GOTO10\nM30\n", 7),
+    # the loop, or the sequence number a jump goes back to, after the selection: there the
+    # re-expression is taken back (review 81-sel81 R5)
+    "lcnc-after": ("G21 G17 G90\nG54\nG0 X-700.\n#1=0\nG57\no100 while [#1 LT 2]\n"
+                   "G91 G0 X-50.\nG90\n#1=[#1+1]\no100 endwhile\nM2\n", 7),
+    # a round trip G57 / G54 / G57 whose X was placed between (G0 X-700.) while Y stayed
+    # held: the undo takes back the last re-expression only (review 81-sel81 R7)
+    "lcnc-stale": ("G21 G17 G90\nG57\nG0 X-400. Y0\nG54\nG0 X-700.\nG57\n"
+                   "o100 repeat [2]\nG91 G0 X-50.\nG90\no100 endrepeat\nM2\n", 8),
+    "fanuc-after": ("O1000\nG21 G17 G90\nG54\nG0 X-700.\n#1=0\nG57\nN20 G91 G0 X-50.\nG90\n"
+                    "#1=#1+1\nIF [#1 LT 2] GOTO20\nM30\n", 7),
+}
+
+
+@pytest.mark.parametrize("form", list(LOOPS))
+def test_a_selection_a_loop_may_run_again_keeps_the_work_value(
+        tmp_path: Path, form: str) -> None:
+    text, line = LOOPS[form]
+    base = form.split("-")[0]
+    found = [(f.line, f.message) for f in check_text(text, profile(tmp_path, base))
+             if f.severity == "error"]
+    assert [(n, m[:20]) for n, m in found] == [(line, "X goes to -1050 in m")], found
+    if base == "lcnc":
+        moves = [-700.0, -750.0, -800.0]
+        assert machine_moves(tmp_path, text) == pytest.approx(moves[:1] * (form == "lcnc-stale")
+                                                              + moves)
+
+
+@pytest.mark.parametrize("form", ["haas97", "lcnc98", "lcnc"])
+def test_a_body_that_turns_the_spindle_on_keeps_the_span_set_aside(
+        tmp_path: Path, form: str) -> None:
+    # (S and the spindle's and coolant's M3-M5, M7-M9 move no axis and write no offset: the
+    # body's X-740 under the call's G54 (machine -740) and the main's G57 X800 (500) are
+    # each judged as machine positions, inside; was "X spans 1540"; review 80-sel80 R16)
+    main, body = "G54 / CALL / G57 / G0 X800.", "S1000 M3 M8 / G0 X-740. / M5 M9"
+    assert errors(tmp_path, form, main, body) == []
+    if form.startswith("lcnc"):
+        assert machine_moves(tmp_path, program(form, main, body)) == [-740.0, 500.0]

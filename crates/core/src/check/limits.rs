@@ -634,9 +634,11 @@ impl Checker {
     fn work_selected(&mut self, g: i64, line: usize) {
         self.flow_spoiled();
         // (the axes whose values are known under the system left: review 76-lcnc76b N3)
-        let left = match self.work {
-            Some(from) if from != g => self.selection_known(from),
-            _ => 0,
+        let same = self.work == Some(g);
+        let from = self.work.filter(|_| !same);
+        let (mut left, positions) = match from {
+            Some(from) => (self.selection_known(from), self.known_axes(from)),
+            None => (0, 0),
         };
         if self.work != Some(g) && self.machine.state.position.iter().any(Option::is_some) {
             // (the real run keeps the machine position: the work position held is the old
@@ -662,9 +664,158 @@ impl Checker {
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+        let moved = match from {
+            Some(from) if positions != 0 => self.selection_reexpressed(from, g, positions),
+            _ => 0,
+        };
+        // (the same system selected again keeps what was re-expressed into it)
+        if !same {
+            self.reexpressed = (moved != 0).then_some((g, moved));
+        }
+        left |= moved;
         if left != 0 {
             self.selection_spans(left);
         }
+    }
+
+    /// A G54-G59 selected from G`from`, the values of both known on the axes `axes`
+    /// ([`Checker::known_axes`], under the new system too): the real run keeps the machine
+    /// position (LinuxCNC interp_convert.cc `convert_coordinate_system`; FANUC 0i-F and 30i-B
+    /// and Haas NGC: selecting a work system moves no axis), so the work position held is
+    /// re-expressed in the new system, axis by axis: new work = old work + old offset - new
+    /// offset (in the block's units). An increment after it runs from there (review
+    /// 80-sel80 R2: `G54` / `G0 X-700.` / `G57` / `G91 G0 X100.` on G54 X0, G57 X-300 runs at
+    /// machine -600, inside, and was "X goes to -900"; its twin from `X700.` runs at 800,
+    /// beyond, and was not said). An axis the block itself places (an absolute position, a
+    /// G53, a G92, a code's data) is left as the block left it. The axes re-expressed.
+    #[cold]
+    #[inline(never)]
+    fn selection_reexpressed(&mut self, from: i64, to: i64, axes: u16) -> u16 {
+        // (not where the run may come back over the selection, a second pass beginning from
+        // the machine position the first left, which the checker does not read: inside a
+        // LinuxCNC loop or condition; in a FANUC's or Haas's program after a jump or loop
+        // statement or a sequence number, at or before the selection, that a `GOTO` or `M99
+        // P` after it may jump back to. There the work value held is kept, as main kept it:
+        // its judgement of the first pass refused `G54` / `G0 X-700.` / a loop of two
+        // passes of `G57` / `G91 G0 X-50.` / `G90` / `G54`, which runs at -800 on the
+        // second; review 81-sel81 R1)
+        let back = if self.config.family == Family::LinuxCnc {
+            !self.linuxcnc_open_flow.is_empty()
+        } else {
+            self.jumped || self.numbered
+        };
+        if back {
+            return 0;
+        }
+        let known = axes & self.known_axes(to);
+        let factor = self.to_profile_units(false);
+        let given = self.values.given();
+        let placed = self.values.has_g(53)
+            || self.machine.taken().is_some()
+            || !self.machine.state.incremental;
+        let mut moved = 0;
+        for i in crate::modal::places(u32::from(known)) {
+            if given & bit(AXES[i]) != 0 && placed {
+                continue;
+            }
+            let (Some(old), Some(new), Some(at)) = (
+                self.offset_value(from, i),
+                self.offset_value(to, i),
+                self.machine.state.position[i],
+            ) else {
+                continue;
+            };
+            let Some(now) = Dec::parse(&format!("{:.9}", (old - new) / factor))
+                .and_then(|delta| at.checked_add(delta))
+            else {
+                continue;
+            };
+            self.machine.state.position[i] = Some(now);
+            self.position_reexpressed = true;
+            moved |= 1 << i;
+            let held = self
+                .reexpressed_held
+                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9])));
+            // (added to the delta held on the axis, or from none where it holds none)
+            let before = if held.0 & 1 << i != 0 {
+                held.1[i]
+            } else {
+                Dec::ZERO
+            };
+            held.0 |= 1 << i;
+            held.1[i] = now
+                .checked_add(-at)
+                .and_then(|d| before.checked_add(d))
+                .unwrap_or(before);
+        }
+        moved
+    }
+
+    /// A block after a re-expression ([`Checker::selection_reexpressed`]) while an axis's
+    /// position is still the one it re-expressed (no position of the block's own on it
+    /// since): where a loop opens or a block a jump back may arrive at is read (a LinuxCNC
+    /// loop or condition; a FANUC's or Haas's jump or loop statement or a sequence number),
+    /// the run may come back there with the machine position the first pass left, which the
+    /// checker does not read: the re-expression is taken back (position - the delta added,
+    /// main's work value) and the increments judged from it as main judged them (review
+    /// 81-sel81 R5: `G54` / `G0 X-700.` / `G57` / a loop of two `G91 G0 X-50.` runs at -800
+    /// on the second pass, refused by main's -1050 of the first). A call may place the
+    /// position anew: no longer held.
+    #[cold]
+    #[inline(never)]
+    fn reexpression_held(&mut self, b: &BlockView<'_>) {
+        let Some(mut held) = self.reexpressed_held.take() else {
+            return;
+        };
+        let calls = b.statements.iter().any(|s| s.1 == Kind::Call)
+            || b.words.iter().any(|w| {
+                w.letter == b'M' && matches!(w.number, b"98" | b"97")
+                    || w.letter == b'G' && matches!(w.number, b"65" | b"66")
+            });
+        if calls {
+            return;
+        }
+        let placed = self.values.has_g(53)
+            || self.machine.taken().is_some()
+            || !self.machine.state.incremental;
+        for i in crate::modal::places(u32::from(held.0)) {
+            if self.values.given() & bit(AXES[i]) != 0 && placed
+                || self.machine.state.position[i].is_none()
+            {
+                held.0 &= !(1 << i);
+                held.1[i] = Dec::ZERO;
+            }
+        }
+        let back = if self.config.family == Family::LinuxCnc {
+            !self.linuxcnc_open_flow.is_empty()
+        } else {
+            self.jumped || self.numbered
+        };
+        if back {
+            self.position_reexpressed = true;
+            for i in crate::modal::places(u32::from(held.0)) {
+                let s = &mut self.machine.state;
+                s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
+            }
+            self.reexpressed = None;
+        } else if held.0 != 0 {
+            self.reexpressed_held = Some(held);
+        }
+    }
+
+    /// The value of work offset G`work` on the axis of place `i`: a G10's of the run where
+    /// one wrote it, else the profile's; None where not known.
+    fn offset_value(&self, work: i64, i: usize) -> Option<f64> {
+        if self.offset_unknown(work, i) {
+            return None;
+        }
+        self.offset_written(work, i).or_else(|| {
+            self.config
+                .work_offsets
+                .iter()
+                .find(|&&(g, a, _)| g == work && a == AXES[i])
+                .map(|&(_, _, value)| value.to_f64())
+        })
     }
 
     /// The axes (their places' bits) of work system G`work` (54-59) whose positions are
@@ -674,6 +825,19 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn selection_known(&self, work: i64) -> u16 {
+        // (under G91 the next increment runs from where the tool stands, which the
+        // selection changes in work coordinates; a lathe's U and W too: review 78-lcnc78b
+        // F1; a selection re-expresses it where it can, Checker::selection_reexpressed)
+        if self.machine.state.incremental {
+            return 0;
+        }
+        self.known_axes(work)
+    }
+
+    /// [`Checker::selection_known`] whatever G90/G91 is in force.
+    #[cold]
+    #[inline(never)]
+    fn known_axes(&self, work: i64) -> u16 {
         if self.offsets_lost
             || self.work_guessed.is_some()
             || self.work_run_on
@@ -687,10 +851,6 @@ impl Checker {
             || self.units_unknown
             || self.offsets_written.moved
             || !self.offsets_written.unread.is_empty()
-            // (under G91 the next increment runs from where the tool stands, which the
-            // selection changes in work coordinates; a lathe's U and W too: review
-            // 78-lcnc78b F1)
-            || self.machine.state.incremental
             || self.config.modal.fanuc_lathe
             || self.config.diameter
         {
@@ -733,7 +893,7 @@ impl Checker {
     #[cold]
     #[inline(never)]
     fn selection_spans(&mut self, axes: u16) {
-        let known = axes & self.work.map_or(0, |g| self.selection_known(g));
+        let known = axes & self.work.map_or(0, |g| self.selection_known(g)) | self.moved_axes();
         for i in crate::modal::places(u32::from(known)) {
             let Some(span) = self.spans[i].filter(|s| !s.said) else {
                 continue;
@@ -747,8 +907,17 @@ impl Checker {
             self.spans[i] = None;
         }
         if self.spans_parked.is_some() {
-            let unknown = !self.work.map_or(0, |g| self.selection_known(g));
+            let unknown = !(self.work.map_or(0, |g| self.selection_known(g)) | self.moved_axes());
             self.spans_unparked(unknown);
+        }
+    }
+
+    /// The axes the last selection re-expressed the position of, where its system is still
+    /// in force ([`Checker::selection_reexpressed`]).
+    fn moved_axes(&self) -> u16 {
+        match self.reexpressed {
+            Some((g, axes)) if self.work == Some(g) => axes,
+            _ => 0,
         }
     }
 
@@ -840,14 +1009,18 @@ impl Checker {
                     && w.expression.is_empty()
                     && match w.letter {
                         b'N' | b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W'
-                        | b'I' | b'J' | b'K' | b'R' | b'F' => true,
+                        | b'I' | b'J' | b'K' | b'R' | b'F' | b'S' => true,
                         b'G' => matches!(
                             w.number,
                             b"0" | b"00" | b"1" | b"01" | b"2" | b"02" | b"3" | b"03"
                         ),
-                        b'M' => {
-                            matches!(w.number, b"99") && !b.words.iter().any(|w| w.letter == b'P')
-                        }
+                        // (the spindle's M3-M5 and the coolant's M7-M9 move no axis and
+                        // write no offset: review 80-sel80 R16)
+                        b'M' => match w.number {
+                            [d] | [b'0', d] => b"345789".contains(d),
+                            b"99" => !b.words.iter().any(|w| w.letter == b'P'),
+                            _ => false,
+                        },
                         _ => false,
                     }
             });
@@ -1778,6 +1951,11 @@ impl Checker {
     #[inline(never)]
     fn work_offset_given(&mut self, b: &BlockView<'_>) -> bool {
         let line = b.line;
+        // (a block a jump back may arrive at: Checker::selection_reexpressed)
+        self.numbered |= self.letters & bit(b'N') != 0;
+        if self.reexpressed_held.is_some() {
+            self.reexpression_held(b);
+        }
         if self.units_merged.is_some() && self.letters & bit(b'G') != 0 {
             let changes = b.words.iter().enumerate().any(|(i, w)| {
                 w.letter == b'G'
@@ -1863,8 +2041,11 @@ impl Checker {
                 // (after the main program's first jump: callflow.rs)
                 43 | 44 if self.flow_calls.is_some() => self.flow_spoiled(),
                 // (G91: the spans set aside at a selection join again, the increments from
-                // a work position the selection changed; review 78-lcnc78b F1)
-                91 if self.spans_parked.is_some() => self.spans_unparked(ALL_PLACES),
+                // a work position the selection changed; review 78-lcnc78b F1; not those
+                // of the axes it re-expressed, Checker::selection_reexpressed)
+                91 if self.spans_parked.is_some() => {
+                    self.spans_unparked(ALL_PLACES & !self.moved_axes())
+                }
                 10 => {
                     let writes = self.g10_writes(b);
                     self.offsets_written.then(&writes);
@@ -3639,7 +3820,14 @@ impl Checker {
                 // (and at a position outside a body read under its call's offset after they
                 // were kept across that call: structure.rs, `call_offsets_rewritten`)
                 if self.spans_parked.is_some() && self.machine.state.incremental {
-                    self.spans_unparked(ALL_PLACES);
+                    // (not those a selection re-expressed: their increments run from the
+                    // new system's position, judged as machine positions)
+                    let axes = if self.reexpressed.is_some() {
+                        ALL_PLACES & !self.moved_axes()
+                    } else {
+                        ALL_PLACES
+                    };
+                    self.spans_unparked(axes);
                 } else if self.spans_parked_call {
                     self.spans_rejoined();
                 }

@@ -1750,6 +1750,21 @@ pub struct Checker {
     /// position the checker holds is the old system's, so a call's start is not taken from
     /// it ([`resumed`]).
     selected_from_position: bool,
+    /// The system a G54-G59 selection re-expressed the held position into and those axes
+    /// ([`Checker::selection_reexpressed`]): under it, a position after the selection is the
+    /// new system's, judged as a machine position, and an increment does not join the span
+    /// set aside at the selection again.
+    reexpressed: Option<(i64, u16)>,
+    /// The program in hand has read a sequence number (a block a `GOTO` or `M99 P` after it
+    /// may jump back to; read where the profile gives work offsets:
+    /// [`Checker::selection_reexpressed`]).
+    numbered: bool,
+    /// The block's selection re-expressed the position, or a loop took it back (the one
+    /// change of the state a rule makes: [`Checker::selection_reexpressed`]).
+    position_reexpressed: bool,
+    /// The axes whose positions are still the ones a selection re-expressed, and the delta
+    /// it added to each ([`Checker::reexpression_held`]).
+    reexpressed_held: Option<Box<(u16, [Dec; 9])>>,
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they
@@ -2088,6 +2103,10 @@ impl Checker {
             resumed: None,
             call_from: (0, [None; 3]),
             selected_from_position: false,
+            reexpressed: None,
+            numbered: false,
+            position_reexpressed: false,
+            reexpressed_held: None,
             flow_calls: None,
             units_unknown: false,
             early: None,
@@ -3057,8 +3076,15 @@ impl Checker {
         // the tests', holds them to leaving it as they found it)
         let takes_axes = self.motion_codes(b);
         #[cfg(debug_assertions)]
-        let applied = self.machine.state;
+        let mut applied = self.machine.state;
+        self.position_reexpressed = false;
         self.codes(b, &before, takes_axes);
+        // (but for the position a G54-G59 re-expresses in the new system, or a loop takes
+        // back: limits.rs, `selection_reexpressed`, `reexpression_held`)
+        #[cfg(debug_assertions)]
+        if self.position_reexpressed {
+            applied.position = self.machine.state.position;
+        }
         #[cfg(debug_assertions)]
         assert_eq!(
             self.machine.state, applied,

@@ -320,6 +320,8 @@ impl Checker {
         self.goto_targets.clear();
         self.goto_computed = false;
         self.jumped = false;
+        self.numbered = false;
+        self.reexpressed_held = None;
         self.goto_names.clear();
         self.arrival = None;
         self.jumps_pending.clear();
