@@ -207,17 +207,14 @@ impl Checker {
             }
             if kind == Kind::Definition {
                 if keyword == b"sub" && body.fanuc && runs {
-                    let message = format!(
-                        "'O.... sub' subroutine must be called with 'O.... call' (rs274ngc): \
-                         the FANUC-style program {} that the call on line {} runs reaches {}, \
-                         which rs274 2.9 runs as a definition of the o-word form, refused \
-                         inside a program an M98 runs",
-                        fanuc_name(&body.label),
-                        body.call,
-                        String::from_utf8_lossy(text),
+                    self.fanuc_body_refused(
+                        body,
+                        "'O.... sub' subroutine must be called with 'O.... call'",
+                        "runs as a definition of the o-word form, refused inside a program an \
+                         M98 runs",
+                        b,
+                        (column, text),
                     );
-                    self.report(Rule::LinuxCncRefuses, message, b.line, column);
-                    body.left = true;
                     return;
                 }
                 continue;
@@ -285,16 +282,13 @@ impl Checker {
                 },
                 _ if skipped => {}
                 b"return" if runs && body.fanuc => {
-                    let message = format!(
-                        "Fanuc 'O....' subroutine definition must end with 'M99' (rs274ngc): \
-                         the FANUC-style program {} that the call on line {} runs reaches {}, \
-                         which rs274 2.9 refuses in a program an M98 runs",
-                        fanuc_name(&body.label),
-                        body.call,
-                        String::from_utf8_lossy(text),
+                    self.fanuc_body_refused(
+                        body,
+                        "Fanuc 'O....' subroutine definition must end with 'M99'",
+                        "refuses in a program an M98 runs",
+                        b,
+                        (column, text),
                     );
-                    self.report(Rule::LinuxCncRefuses, message, b.line, column);
-                    body.left = true;
                     return;
                 }
                 // (a `do`'s closing `while`, a return, break, continue, anything else: the
@@ -306,6 +300,27 @@ impl Checker {
 
     /// An o-word line of the sure body (`text` at `column`) closing or continuing a block it
     /// never opened: refused where the line runs (`runs`).
+    /// rs274's refusal (`reason`) of an o-word statement a FANUC-style program an M98 runs
+    /// reaches; `what` says what rs274 2.9 does with it. The body is left there.
+    fn fanuc_body_refused(
+        &mut self,
+        body: &mut SureBody,
+        reason: &str,
+        what: &str,
+        b: &BlockView<'_>,
+        (column, text): (usize, &[u8]),
+    ) {
+        let message = format!(
+            "{reason} (rs274ngc): the FANUC-style program {} that the call on line {} runs \
+             reaches {}, which rs274 2.9 {what}",
+            fanuc_name(&body.label),
+            body.call,
+            String::from_utf8_lossy(text),
+        );
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        body.left = true;
+    }
+
     fn sure_body_undefined(
         &mut self,
         body: &mut SureBody,
