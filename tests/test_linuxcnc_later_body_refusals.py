@@ -191,6 +191,27 @@ def test_a_call_in_a_block_keeps_the_spans_set_aside_at_a_selection(opened, body
             in zip(found, said, strict=True)] == said
 
 
+@pytest.mark.parametrize("block", [
+    # the selection inside an `if` known false (#1 is 1): rs274 runs X800 under G54, machine
+    # 800, beyond 762; was silent where the `if` line after the call kept the spans set aside
+    # (the lead's merge of stop 81)
+    "o10 if [#1 NE 1]\nG57\no10 endif\n",
+    # ... and inside the `else` of an `if` known true: the same machine 800
+    "o10 if [#1 EQ 1]\nG0 Y1.\no10 else\nG57\no10 endif\n",
+])
+def test_a_selection_in_a_block_after_a_later_call_that_does_not_run(tmp_path, block) -> None:
+    text = (f"G21 G17 G90\nG54\n#1=1\nM98 P2000\n{block}G0 X800.\nM30\nO2000\nG0 X-740.\n"
+            "M99\n")
+    from postproc.check import check_text
+
+    found = [(f.line, f.message) for f in check_text(text, g57_profile())
+             if f.rule == "TG601"]
+    assert [message[:len("X spans 1540")] for _, message in found] == ["X spans 1540"], found
+    out = rs274_output(tmp_path, text)
+    assert "STRAIGHT_TRAVERSE(800.0000" in out and "PROGRAM_END" in out, out
+    assert "SET_G5X_OFFSET(4" not in out, out
+
+
 def test_a_named_label_of_digits_is_the_numbered_one(tmp_path) -> None:
     # rs274 names a numbered label by its value (`%d`): `o<300> sub` answers `o300 call`
     # (rs274 -g with G55 X -100: X-700 at machine -800) and refuses `M98 P300` ("'O.... sub'

@@ -173,14 +173,18 @@ impl Checker {
         }
     }
 
-    /// LinuxCNC: an `if`, `elseif`, `else` or `endif` line of the main program after a call
-    /// of a body read later inside the block (the offsets lost by that call alone,
+    /// LinuxCNC: an `endif` line of the main program after a call of a body read later
+    /// inside the block (the offsets lost by that call alone,
     /// `Checker::call_offsets_rewritten`): the line changes no offset and jumps back to
     /// nothing, so the spans set aside at a selection before the call stay so, as after the
     /// same call outside a block (review 80-lcnc80 R8: `G54` / `G0 X-650.` / `G57` / `o1 if
     /// [1]` / `M98 P2000` / `o1 endif` / `M2` / `O2000` / `G0 X1000.` / `M99`, G57 X -300,
-    /// runs at machine -650 then 700, and was "X spans 1650"). A loop's closing line, which
-    /// runs the lines before it again, loses them as before.
+    /// runs at machine -650 then 700, and was "X spans 1650"). An `if`, `elseif` or `else`
+    /// line opens lines that may not run: a selection among them would set the spans aside
+    /// where rs274 never selects (the lead's merge of stop 81: `G54` / `#1=1` / `M98 P2000` /
+    /// `o10 if [#1 NE 1]` / `G57` / `o10 endif` / `G0 X800.`, body `G0 X-740.`, runs X800
+    /// under G54, machine 800), so they lose the offsets as before, as a loop's closing line,
+    /// which runs the lines before it again, does.
     #[cold]
     #[inline(never)]
     pub(super) fn later_call_if_line(&self, b: &super::BlockView<'_>) -> bool {
@@ -191,9 +195,7 @@ impl Checker {
             && !b.statements.is_empty()
             && b.statements.iter().all(|&(_, kind, text)| {
                 kind == crate::statement::Kind::Flow
-                    && crate::statement::o_keyword(text).is_some_and(|k| {
-                        matches!(k.as_slice(), b"if" | b"elseif" | b"else" | b"endif")
-                    })
+                    && crate::statement::o_keyword(text).is_some_and(|k| k == b"endif")
             })
     }
 }
