@@ -688,6 +688,17 @@ impl Checker {
     /// machine -600, inside, and was "X goes to -900"; its twin from `X700.` runs at 800,
     /// beyond, and was not said). An axis the block itself places (an absolute position, a
     /// G53, a G92, a code's data) is left as the block left it. The axes re-expressed.
+    /// Whether the run may come back over the block in hand, a second pass the checker does
+    /// not read: inside a LinuxCNC loop or condition; in a FANUC's or Haas's program after a
+    /// jump or loop statement or a sequence number a `GOTO` or `M99 P` may jump back to.
+    fn run_may_come_back(&self) -> bool {
+        if self.config.family == Family::LinuxCnc {
+            !self.linuxcnc_open_flow.is_empty()
+        } else {
+            self.jumped || self.numbered
+        }
+    }
+
     #[cold]
     #[inline(never)]
     fn selection_reexpressed(&mut self, from: i64, to: i64, axes: u16) -> u16 {
@@ -699,11 +710,7 @@ impl Checker {
         // its judgement of the first pass refused `G54` / `G0 X-700.` / a loop of two
         // passes of `G57` / `G91 G0 X-50.` / `G90` / `G54`, which runs at -800 on the
         // second; review 81-sel81 R1)
-        let back = if self.config.family == Family::LinuxCnc {
-            !self.linuxcnc_open_flow.is_empty()
-        } else {
-            self.jumped || self.numbered
-        };
+        let back = self.run_may_come_back();
         if back {
             return 0;
         }
@@ -731,7 +738,10 @@ impl Checker {
                 continue;
             };
             self.machine.state.position[i] = Some(now);
-            self.position_reexpressed = true;
+            #[cfg(debug_assertions)]
+            {
+                self.position_reexpressed = true;
+            }
             moved |= 1 << i;
             let held = self
                 .reexpressed_held
@@ -786,13 +796,12 @@ impl Checker {
                 held.1[i] = Dec::ZERO;
             }
         }
-        let back = if self.config.family == Family::LinuxCnc {
-            !self.linuxcnc_open_flow.is_empty()
-        } else {
-            self.jumped || self.numbered
-        };
+        let back = self.run_may_come_back();
         if back {
-            self.position_reexpressed = true;
+            #[cfg(debug_assertions)]
+            {
+                self.position_reexpressed = true;
+            }
             for i in crate::modal::places(u32::from(held.0)) {
                 let s = &mut self.machine.state;
                 s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));

@@ -1760,7 +1760,9 @@ pub struct Checker {
     /// [`Checker::selection_reexpressed`]).
     numbered: bool,
     /// The block's selection re-expressed the position, or a loop took it back (the one
-    /// change of the state a rule makes: [`Checker::selection_reexpressed`]).
+    /// change of the state a rule makes: [`Checker::selection_reexpressed`]; read by the
+    /// debug build's check that no other rule changes it).
+    #[cfg(debug_assertions)]
     position_reexpressed: bool,
     /// The axes whose positions are still the ones a selection re-expressed, and the delta
     /// it added to each ([`Checker::reexpression_held`]).
@@ -2105,6 +2107,7 @@ impl Checker {
             selected_from_position: false,
             reexpressed: None,
             numbered: false,
+            #[cfg(debug_assertions)]
             position_reexpressed: false,
             reexpressed_held: None,
             flow_calls: None,
@@ -3077,7 +3080,10 @@ impl Checker {
         let takes_axes = self.motion_codes(b);
         #[cfg(debug_assertions)]
         let mut applied = self.machine.state;
-        self.position_reexpressed = false;
+        #[cfg(debug_assertions)]
+        {
+            self.position_reexpressed = false;
+        }
         self.codes(b, &before, takes_axes);
         // (but for the position a G54-G59 re-expresses in the new system, or a loop takes
         // back: limits.rs, `selection_reexpressed`, `reexpression_held`)
