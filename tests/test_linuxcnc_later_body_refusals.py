@@ -47,11 +47,25 @@ REFUSED = [
     ("o400 sub\nG0 X2\no400 endsub\nM99\n",
      (8, "'O.... sub' subroutine must be called with 'O.... call'"),
      "'O.... sub' subroutine must be called with 'O.... call'"),
+    # ... and one of the body's own label (review 81-lcnc81 A29): said once, at the `o300
+    # sub` where rs274 stops, not again at the `o300 endsub` that closes the program
+    ("o300 sub\nG0 X2\no300 endsub\nM99\n",
+     (8, "'O.... sub' subroutine must be called with 'O.... call'"),
+     "'O.... sub' subroutine must be called with 'O.... call'"),
     # M15: the only M99 in `o1 if [0]`: rs274 runs on to the file's end (X1, then the end),
-    # "File ended with no percent sign or program end"; not said: an M99 alone on its line
-    # closes the program for the checker's reading, in a block or not (the next program or
-    # definition after it is read as its own: review 81-lcnc81 R2, R4, R6)
-    ("o1 if [0]\nM99\no1 endif\n", None, "File ended with no percent sign or program end"),
+    # "File ended with no percent sign or program end", said at the last line where nothing
+    # but the ends of the body's blocks follows the M99 (an M99 alone on its line still
+    # closes the program for the checker's reading: review 81-lcnc81 R2, R4, R6)
+    ("o1 if [0]\nM99\no1 endif\n", (10, "File ended with no percent sign or program end"),
+     "File ended with no percent sign or program end"),
+    # ... nested in a block known to run, blank lines and a comment after: the same
+    ("o2 repeat [2]\no1 if [1 EQ 2]\nM99\no1 endif\n\n(end)\no2 endrepeat\n",
+     (14, "File ended with no percent sign or program end"),
+     "File ended with no percent sign or program end"),
+    # ... an `else` whose M99 runs returns (X1, X5, the end), and an M2 after the block ends
+    # the run: neither is said
+    ("o1 if [0]\nM99\no1 else\nM99\no1 endif\n", None, None),
+    ("o1 if [0]\nM99\no1 endif\nM2\n", None, None),
     # ... where the M99 runs (`if [1]`), it returns: X1, X5, the end
     ("o1 if [1]\nM99\no1 endif\n", None, None),
     # ... no M99 at all (review 81-lcnc81 R3: said so, not "each is in a block")
@@ -92,6 +106,12 @@ NOT_SURE = [
     f"{HEAD}o1 if [#5420 GT 1]\nM99\no1 endif\n",
     # the file closed by `%`: rs274 stops there (no refusal)
     f"%\n{HEAD}o1 if [0]\nM99\no1 endif\n%\n",
+    # the call under a block delete: rs274 -g (the switch off) refuses at the return, rs274
+    # -b -g (on) skips the call and runs to the end; the switch is the operator's, and the
+    # call is taken as not run (docs/dialects.md)
+    HEAD.replace("M98", "/M98") + "o300 return\nM99\n",
+    # a program after the dead M99: rs274 runs on into it and returns at its M99
+    f"{HEAD}o1 if [0]\nM99\no1 endif\nO400\nG0 X2\nM99\n",
 ]
 
 
@@ -121,6 +141,36 @@ def test_an_m98_in_a_later_body_of_a_program_passed_over_is_refused(tmp_path) ->
     assert "PROGRAM_END" in rs274_output(tmp_path, text)
 
 
+@pytest.mark.parametrize("before, call", [
+    # the o-word form (review 81-lcnc81, A83's o-call form): the main program's `o300 call`
+    # seeks o300 past `o400 sub` without recording it, and o300's `o400 call` seeks from its
+    # own line to the file's end: rs274 -g "EOF in file ... seeking o-word: o<400> from line:
+    # 11"
+    ("o400 sub\nG0 X3\no400 endsub\n", "o400 call"),
+    # ... an `o400 call` of an `O400` passed over, and an `M98 P400` of an `o400 sub`: the
+    # same search, the same refusal
+    ("O400\nG0 X3\nM99\n", "o400 call"),
+    ("o400 sub\nG0 X3\no400 endsub\n", "M98 P400"),
+])
+def test_a_call_in_a_later_body_of_a_definition_passed_over_is_refused(tmp_path, before,
+                                                                        call) -> None:
+    text = (f"G21 G17 G90\nG0 X0 Y0\no300 call\nG0 X5\nM2\n{before}o300 sub\nG0 X1\n"
+            f"{call}\nG0 X2\no300 endsub\n")
+    found = refusals(text)
+    assert [(n, m[:26]) for n, m in found] == [(11, "EOF in file seeking o-word")]
+    assert f"this {call} runs in a body" in found[0][1]
+    assert "seeking o-word: o<400> from line: 11" in rs274_output(tmp_path, text)
+    # a definition of the call's form after the body is found by the body's search (X1, X3,
+    # X2, X5: the end); a call in a block known not to run is skipped
+    form = "O400\nG0 X3\nM99\n" if call.startswith("M98") else "o400 sub\nG0 X3\no400 endsub\n"
+    later = f"{text}{form}"
+    assert refusals(later) == []
+    assert "PROGRAM_END" in rs274_output(tmp_path, later)
+    skipped = text.replace(f"{call}\n", f"o1 if [0]\n{call}\no1 endif\n")
+    assert refusals(skipped) == []
+    assert "PROGRAM_END" in rs274_output(tmp_path, skipped)
+
+
 def test_a_call_of_a_label_the_file_never_defines_is_no_refusal(tmp_path) -> None:
     # review 78-lcnc78b A36: rs274 -g "EOF in file ... seeking o-word: o<100>", but a machine
     # runs 100.ngc from its SUBROUTINE_PATH (rs274 -i with such a path runs it): what the path
@@ -128,6 +178,23 @@ def test_a_call_of_a_label_the_file_never_defines_is_no_refusal(tmp_path) -> Non
     text = "G21 G17 G90\no100 call\nG0 X5\nM2\n"
     assert refusals(text) == []
     assert "seeking o-word: o<100>" in rs274_output(tmp_path, text)
+
+
+def test_the_lines_after_the_end_name_no_body_where_no_call_seeks_one(tmp_path) -> None:
+    # review 81-lcnc81 (R4-80's text): where the main program makes no call, no body after its
+    # end runs, and TG117 says the lines after it are never read without naming one
+    from postproc.check import check_text
+
+    from .test_linuxcnc_later_bodies import profile
+
+    text = "G21 G17 G90\nG0 X1.\nM30\nG0 X2.\n%\n"
+    said = [f for f in check_text(text, profile()) if f.rule == "TG117"]
+    assert [f.line for f in said] == [4]
+    assert said[0].message.startswith(
+        "line 4 and the lines after it that are not O-word lines are never read: LinuxCNC "
+        "stops at the M2/M30 on line 3")
+    assert "but for the body" not in said[0].message
+    assert "STRAIGHT_TRAVERSE(2.0000" not in rs274_output(tmp_path, text)
 
 
 def test_a_later_program_called_by_a_parameter_is_named_by_its_number(tmp_path) -> None:
@@ -224,6 +291,13 @@ def test_a_named_label_of_digits_is_the_numbered_one(tmp_path) -> None:
     assert refusals(text)[0][0] == 5
     assert "'O.... sub' subroutine must be called with 'O.... call'" in rs274_output(tmp_path,
                                                                                    text)
+    # the body and its call named as written in the text (review 81-lcnc81 R5), after and
+    # before the call
+    text = f"G21 G17 G90 G55\nG0 X0 Y0\no<300> call\n{body}"
+    assert "(o<300> runs as called by o<300> call of line 3" in errors(text)[0][2]
+    text = f"o<300> sub\nG0 X-700.\no<300> endsub\nG21 G17 G90 G55\nG0 X0 Y0\no<300> call\nM2\n"
+    assert "(o<300> runs as called by o<300> call of line 6" in errors(text)[0][2]
+    assert "STRAIGHT_TRAVERSE(-700.0000" in rs274_output(tmp_path, text)
     text = f"G21 G17 G90 G55\nG0 X0 Y0\no300 call\n{body.replace('<300>', '<0300>')}"
     assert errors(text) == []
     assert "seeking o-word: o<300>" in rs274_output(tmp_path, text)

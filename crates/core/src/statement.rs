@@ -784,6 +784,22 @@ pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
     (token.get(end) == Some(&b'=')).then_some(end)
 }
 
+/// A LinuxCNC o-word's label as the messages show it: as written, in lower case and without
+/// blanks (`o<300>` of `o<300> call`, which [`o_label`] reads as `o300`; review 81-lcnc81
+/// R5), where it is a name or a plain number; [`o_label`]'s reading otherwise.
+pub(crate) fn o_label_shown(statement: &[u8]) -> Vec<u8> {
+    let text: Vec<u8> = statement
+        .iter()
+        .filter(|&&c| !blank(c))
+        .map(u8::to_ascii_lowercase)
+        .collect();
+    if text.get(1) == Some(&b'<') {
+        let end = o_label_end(&text).unwrap_or(text.len());
+        return text[..end].to_vec();
+    }
+    o_label(statement)
+}
+
 /// A LinuxCNC o-word's label as the interpreter reads it (lower case, without blanks, a
 /// number without its leading zeros): `o<name>` of `O <Name> call [1]`, `o100` of `o0100 sub`.
 /// rs274ngc `read_o` reads a numbered o-word as a number (`o0100 sub` ... `o100 call` runs)

@@ -46,6 +46,16 @@ struct Open {
     keyword: Vec<u8>,
 }
 
+/// A call of a sure body seeking a label (`LaterBodies::seeking`).
+#[derive(Debug, Clone)]
+struct Seek {
+    label: Vec<u8>,
+    line: usize,
+    column: usize,
+    call: String,
+    target: String,
+}
+
 /// The body a call of the main program surely runs, being read.
 #[derive(Debug, Clone, Default)]
 pub(super) struct SureBody {
@@ -66,19 +76,27 @@ pub(super) struct SureBody {
 #[derive(Debug, Clone, Default)]
 pub(super) struct LaterBodies {
     pub(super) sure: Option<SureBody>,
+    /// The sure FANUC-style body closed for the checker's reading at an M99 in a block that
+    /// does not run: rs274 runs on past it, and the lines after it are followed to the
+    /// file's end ([`Checker::later_tail_line`]).
+    pub(super) ran_on: Option<SureBody>,
+    /// The label of the sure body refused at an o-word line before its end: rs274 stops
+    /// there, and the refusal of its close is not said again.
+    pub(super) refused: Option<Vec<u8>>,
     /// FANUC-style programs and o-word definitions read after the main program's end: the
-    /// label and the line.
-    defined: Vec<(Vec<u8>, usize)>,
+    /// label, the line and whether it is FANUC-style (`O300`).
+    defined: Vec<(Vec<u8>, usize, bool)>,
     /// The line of the main program's first calling line (an o-word `call`, an M98), 0 before
     /// one: a body it runs may end the program.
     first_call: usize,
     /// `O` number lines after the main program's end that no call before them names, passed
     /// over unread: the label and the line.
     passed: Vec<(Vec<u8>, usize)>,
-    /// An `M98 P300` that surely runs in a sure body, of an `O300` read after the end before
-    /// the body only: the label, the line and column; said at the file's end where no
-    /// program of the label comes after it.
-    seeking: Vec<(Vec<u8>, usize, usize)>,
+    /// A call that surely runs in a sure body (`M98 P300`, `o300 call`) of a label whose
+    /// program or definition is written after the end before the body only: the label, the
+    /// line and column, and the call and what it seeks as the message names them; said at
+    /// the file's end where no program or definition of the label comes after it.
+    seeking: Vec<Seek>,
 }
 
 impl Checker {
@@ -88,12 +106,9 @@ impl Checker {
     #[inline(never)]
     pub(super) fn later_body_opened(&mut self, label: &[u8], fanuc: bool, line: usize) {
         let later = &mut self.linuxcnc_later_bodies;
-        let first = !later
-            .defined
-            .iter()
-            .chain(&later.passed)
-            .any(|d| d.0 == label);
-        later.defined.push((label.to_vec(), line));
+        let first = !later.defined.iter().any(|d| d.0 == label)
+            && !later.passed.iter().any(|d| d.0 == label);
+        later.defined.push((label.to_vec(), line, fanuc));
         later.sure = None;
         let Some(call) = self
             .linuxcnc_later
@@ -140,6 +155,16 @@ impl Checker {
         }
     }
 
+}
+
+impl LaterBodies {
+    /// Whether the main program has a calling line ([`Checker::later_main_call`]).
+    pub(super) fn main_called(&self) -> bool {
+        self.first_call != 0
+    }
+}
+
+impl Checker {
     /// An `O` number line after the main program's end not read as a program (no call
     /// before it names it): kept for an `M98` of a body after it, which rs274 refuses.
     #[cold]
@@ -165,6 +190,54 @@ impl Checker {
         }
     }
 
+    /// The definition after the main program's end closed (for the checker's reading): the
+    /// sure FANUC-style body, where the M99 that closed it is in a block known not to run
+    /// (`o1 if [0]` / `M99`), kept as run on past it ([`LaterBodies::ran_on`]): rs274 skips
+    /// that M99 and reads the lines after it as the body's (review 78-lcnc78b M15).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn later_body_closed(&mut self) {
+        let later = &mut self.linuxcnc_later_bodies;
+        let Some(mut body) = later.sure.take() else {
+            return;
+        };
+        let dead = body.open.iter().any(|o| o.runs == Some(false));
+        if body.fanuc && !body.left && dead && !body.open.iter().any(turns) {
+            body.skipped_m99 = true;
+            later.ran_on = Some(body);
+        }
+    }
+
+    /// A line after a FANUC-style body closed at an M99 that does not run
+    /// ([`LaterBodies::ran_on`]): the run goes on through it. Only the ends of the body's
+    /// blocks (`o1 endif`, a loop's that does not turn for ever) keep it followed; any other
+    /// line (words, a definition or program, a block delete, another o-word line) may stop,
+    /// return or refuse otherwise, and it is left.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn later_tail_line(&mut self, b: &BlockView<'_>) {
+        let Some(mut body) = self.linuxcnc_later_bodies.ran_on.take() else {
+            return;
+        };
+        if b.skip || !b.words.is_empty() {
+            return;
+        }
+        for &(_, kind, text) in b.statements {
+            let keyword = crate::statement::o_keyword(text).unwrap_or_default();
+            let label = crate::statement::o_label(text);
+            let at = body.open.iter().rposition(|o| o.label == label);
+            let closes = matches!(keyword.as_slice(), b"endif" | b"endwhile" | b"endrepeat");
+            let Some(at) = at.filter(|_| kind == Kind::Flow && closes) else {
+                return;
+            };
+            if turns(&body.open[at]) {
+                return;
+            }
+            body.open.truncate(at);
+        }
+        self.linuxcnc_later_bodies.ran_on = Some(body);
+    }
+
     fn sure_body_read(&mut self, body: &mut SureBody, b: &BlockView<'_>) {
         if b.skip {
             // (a block delete: it may not run, nothing after it is sure)
@@ -183,7 +256,7 @@ impl Checker {
         };
         if !skipped && m(98) {
             if runs {
-                self.sure_body_m98(b);
+                self.sure_body_m98(body, b);
             }
             body.left = true;
             return;
@@ -200,6 +273,12 @@ impl Checker {
             let label = crate::statement::o_label(text);
             if kind == Kind::Call {
                 if !skipped {
+                    if runs && keyword == b"call" {
+                        let shown = crate::statement::o_label_shown(text);
+                        let call = format!("{} call", String::from_utf8_lossy(&shown));
+                        let target = format!("{} sub", String::from_utf8_lossy(&shown));
+                        self.sure_body_seek(body, label, (b.line, column), call, target);
+                    }
                     body.left = true;
                     return;
                 }
@@ -318,6 +397,7 @@ impl Checker {
             String::from_utf8_lossy(text),
         );
         self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        self.linuxcnc_later_bodies.refused = Some(body.label.clone());
         body.left = true;
     }
 
@@ -344,10 +424,8 @@ impl Checker {
         body.left = true;
     }
 
-    /// An `M98 P300` that surely runs in the sure body: where an `O300` was passed over after
-    /// the main program's end before the body ([`LaterBodies::passed`]), held for the file's
-    /// end.
-    fn sure_body_m98(&mut self, b: &BlockView<'_>) {
+    /// An `M98 P300` that surely runs in the sure body: [`Checker::sure_body_seek`].
+    fn sure_body_m98(&mut self, body: &SureBody, b: &BlockView<'_>) {
         // (a P of a whole number written plainly: one of a parameter is not followed)
         let mut p = b.words.iter().filter(|w| w.letter == b'P');
         let (Some(p), None) = (p.next(), p.next()) else {
@@ -364,19 +442,52 @@ impl Checker {
             return;
         }
         let label = format!("o{n}").into_bytes();
-        let later = &self.linuxcnc_later_bodies;
-        // (a definition of the main program, read before its lines, is recorded and found)
-        if self.linuxcnc_defined.contains(&label) || !later.passed.iter().any(|d| d.0 == label) {
-            return;
-        }
         let column = b
             .words
             .iter()
             .find(|w| w.letter == b'M')
             .map_or(1, |w| w.column);
-        self.linuxcnc_later_bodies
-            .seeking
-            .push((label, b.line, column));
+        let (call, target) = (format!("M98 P{n}"), format!("O{n}"));
+        self.sure_body_seek(body, label, (b.line, column), call, target);
+    }
+
+    /// A call of `label` that surely runs in the sure body (`call`, at `at`): where a
+    /// program or definition of the label was written after the main program's end before
+    /// the body only ([`LaterBodies::passed`], [`LaterBodies::defined`]), held for the file's
+    /// end. rs274 seeks the label forward from the call and records no definition it passed
+    /// over while seeking the body (`rs274 -g`: `o300 call` / `M2` / `o400 sub` ... / `o300
+    /// sub` / `o400 call` is "EOF in file ... seeking o-word: o<400> from line: 11", as the
+    /// `M98 P400` form of it is).
+    fn sure_body_seek(
+        &mut self,
+        body: &SureBody,
+        label: Vec<u8>,
+        (line, column): (usize, usize),
+        call: String,
+        target: String,
+    ) {
+        let later = &self.linuxcnc_later_bodies;
+        // (a definition of the main program, read before its lines, is recorded and found; a
+        // call of the body itself finds it; a label worked out as the line runs is not known)
+        let before = later.passed.iter().any(|d| d.0 == label)
+            || later
+                .defined
+                .iter()
+                .any(|d| d.0 == label && !d.2 && d.1 < body.opened);
+        if !before
+            || label == body.label
+            || self.linuxcnc_defined.contains(&label)
+            || crate::statement::computed_label(&label)
+        {
+            return;
+        }
+        self.linuxcnc_later_bodies.seeking.push(Seek {
+            label,
+            line,
+            column,
+            call,
+            target,
+        });
     }
 
     /// At the file's end: the sure FANUC-style body never closed by an M99 that runs, and the
@@ -385,21 +496,41 @@ impl Checker {
     #[inline(never)]
     pub(super) fn later_bodies_ended(&mut self, last: usize) {
         let later = std::mem::take(&mut self.linuxcnc_later_bodies);
-        for (label, line, column) in later.seeking {
-            // (a program of the label read as one, before the body -- an earlier call found
-            // it, rs274 keeps its place -- or after it, found by this call's search)
-            if later.defined.iter().any(|d| d.0 == label) {
+        for seek in later.seeking {
+            // (a FANUC-style program of the label read as one, before the body -- an earlier
+            // call found it, rs274 keeps its place -- or a program or definition after the
+            // call, found by its search)
+            let label = &seek.label;
+            let found = later
+                .defined
+                .iter()
+                .any(|d| d.0 == *label && (d.2 || d.1 > seek.line))
+                || later.passed.iter().any(|d| d.0 == *label && d.1 > seek.line);
+            if found {
                 continue;
             }
-            let shown = String::from_utf8_lossy(&label[1..]).into_owned();
+            // (rs274 names a label `o<400>`, a named one as written)
+            let name = match label.strip_prefix(b"o") {
+                Some([b'<', name @ .., b'>']) => String::from_utf8_lossy(name).into_owned(),
+                Some(name) => String::from_utf8_lossy(name).into_owned(),
+                None => String::from_utf8_lossy(label).into_owned(),
+            };
+            let (call, target) = (&seek.call, &seek.target);
             let message = format!(
-                "EOF in file seeking o-word (rs274ngc): this M98 P{shown} runs in a body read \
-                 after the main program's end, and rs274 2.9 seeks O{shown} from here to the \
-                 file's end, where none is written; the one before was passed over unread \
-                 (\"EOF in file ... seeking o-word: o<{shown}>\"), unless a file {shown}.ngc \
-                 is on the subroutine path"
+                "EOF in file seeking o-word (rs274ngc): this {call} runs in a body read after \
+                 the main program's end, and rs274 2.9 seeks {target} from here to the file's \
+                 end, where none is written; the one before was passed over unread (\"EOF in \
+                 file ... seeking o-word: o<{name}>\"), unless a file {name}.ngc is on the \
+                 subroutine path"
             );
-            self.report(Rule::LinuxCncRefuses, message, line, column);
+            self.report(Rule::LinuxCncRefuses, message, seek.line, seek.column);
+        }
+        // (a FANUC-style body closed at an M99 that does not run, and no line after it but
+        // the ends of its blocks: Checker::later_tail_line)
+        if let Some(body) = later.ran_on.filter(|_| !self.percent_closed) {
+            if self.open_definition.is_none() {
+                self.file_ended(&body, last);
+            }
         }
         let Some(body) = later.sure.filter(|s| s.fanuc && !s.left) else {
             return;
@@ -408,6 +539,12 @@ impl Checker {
         if self.open_definition.is_none() || self.percent_closed {
             return;
         }
+        self.file_ended(&body, last);
+    }
+
+    /// "File ended with no percent sign or program end" at the file's `last` line: the sure
+    /// FANUC-style body runs on to it.
+    fn file_ended(&mut self, body: &SureBody, last: usize) {
         let m99 = if body.skipped_m99 {
             "has no M99 that runs (each is in a block that does not)"
         } else {
@@ -422,6 +559,11 @@ impl Checker {
         );
         self.report(Rule::LinuxCncRefuses, message, last, 1);
     }
+}
+
+/// A loop of the body whose lines may run (a `while`, a `do`): it may turn for ever.
+fn turns(o: &Open) -> bool {
+    matches!(o.keyword.as_slice(), b"while" | b"do") && o.runs != Some(false)
 }
 
 /// `O300` for the label `o300`.

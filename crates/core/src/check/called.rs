@@ -1621,18 +1621,18 @@ impl Checker {
     }
 
     /// LinuxCNC: an `o<name> sub` opens a definition in the main program (`name` its label,
-    /// its statement at `at`). rs274 reads the body without running it, and runs it where
+    /// `shown` as written, its statement at `at`). rs274 reads the body without running it, and runs it where
     /// an `o<name> call` calls it, in the units and under the G92/G52 shift in force there
     /// (review 41, finding 4): read apart as a FANUC's subprogram before its call is, its
     /// units as not written.
     #[cold]
     #[inline(never)]
-    pub(super) fn definition_begin(&mut self, name: &[u8], at: (usize, usize)) {
+    pub(super) fn definition_begin(&mut self, name: &[u8], shown: &[u8], at: (usize, usize)) {
         if self.early_on {
             return;
         }
         let given = self.machine.state.units_given;
-        let written = String::from_utf8_lossy(name).into_owned();
+        let written = String::from_utf8_lossy(shown).into_owned();
         self.early_begin(Key::Label(name.to_vec()), written, at);
         if let Some(early) = self.early.as_mut() {
             early.given_before = Some(given);

@@ -652,7 +652,7 @@ impl Checker {
         } else if self.values.ms.contains(&97) {
             format!("M97 {token}")
         } else if let Some(&(_, _, text)) = b.statements.iter().find(|s| s.1 == Kind::Call) {
-            let label = crate::statement::o_label(text);
+            let label = crate::statement::o_label_shown(text);
             return (format!("{} call", String::from_utf8_lossy(&label)), 1);
         } else if self.values.gs().contains(&66) {
             format!("G66 {token}")
@@ -1491,6 +1491,10 @@ impl Checker {
             }
         }
         if self.surely_ended {
+            // (the lines after a FANUC-style body closed at an M99 that does not run)
+            if self.linuxcnc_later_bodies.ran_on.is_some() {
+                self.later_tail_line(b);
+            }
             // (an M2/M30 of a FANUC-style program's body outside its blocks on the line
             // before: the program ends there, no line after it runs; closed before this line)
             if let Some(line) = self.linuxcnc_fanuc_close.take() {
@@ -1612,6 +1616,14 @@ impl Checker {
                  call on line {line} reaches the FANUC-style program O{shown}, which rs274 2.9 \
                  runs only for an M98 P{shown}"
             ),
+            // (rs274 stopped at a refusal inside the body before its close: said once,
+            // there; Checker::fanuc_body_refused)
+            (true, true, Some(_), _)
+                if self.linuxcnc_later_bodies.refused.as_ref() == Some(&label) =>
+            {
+                self.linuxcnc_fanuc_open = false;
+                return;
+            }
             (true, true, Some(line), _) => {
                 self.linuxcnc_fanuc_open = false;
                 format!(
@@ -1736,7 +1748,7 @@ impl Checker {
                         let label = open.2.clone();
                         self.later_body_opened(&label, self.linuxcnc_fanuc_open, b.line);
                     }
-                    _ => self.linuxcnc_later_bodies.sure = None,
+                    _ => self.later_body_closed(),
                 }
             }
             self.linuxcnc_definition_plane(was_open);
@@ -2071,7 +2083,12 @@ impl Checker {
                 if !was_open && self.open_definition.is_some() && !self.main_ended() =>
             {
                 let column = b.statements.first().map_or(1, |s| s.0);
-                self.definition_begin(name, (b.line, column));
+                // (named as written, `o<300>`: review 81-lcnc81 R5)
+                let shown = b.statements.first().map_or_else(
+                    || name.clone(),
+                    |s| crate::statement::o_label_shown(s.2),
+                );
+                self.definition_begin(name, &shown, (b.line, column));
                 // (read apart, not run here: the offsets are not lost at its sub)
                 self.call_keeps = self.early_on && !self.config.work_offsets.is_empty();
             }
@@ -2132,7 +2149,7 @@ impl Checker {
             self.early_calls();
             let token = format!(
                 "{} call",
-                String::from_utf8_lossy(&crate::statement::o_label(text))
+                String::from_utf8_lossy(&crate::statement::o_label_shown(text))
             );
             let label = self.linuxcnc_call_label(text);
             if label.len() < 2 || crate::statement::computed_label(&label) {
@@ -6286,7 +6303,10 @@ impl Checker {
             }
             return;
         };
-        let token = format!("{} call", String::from_utf8_lossy(&label));
+        let token = format!(
+            "{} call",
+            String::from_utf8_lossy(&crate::statement::o_label_shown(text))
+        );
         if main {
             for r in refusals {
                 if r.caller_g91 && mode != Distance::Known(true)
@@ -6949,6 +6969,28 @@ impl Checker {
                  over, kept as written",
                 unread.line, unread.end
             )
+        } else if !self.linuxcnc_later_waits() {
+            // (no call of the main program may seek a body after the end: the text of before
+            // review 80-lcnc80 R4, which names no body run there; review 81-lcnc81)
+            let stop = if unread.end == self.linuxcnc_m99_end {
+                format!(
+                    "the M99 of the main program on line {} (rs274 2.9 ends the program there, \
+                     or loops back to its start: interp_convert.cc convert_stop; an M98 call \
+                     finds an O number program after it, reading O-word lines alone)",
+                    unread.end
+                )
+            } else {
+                format!(
+                    "the M2/M30 on line {} (rs274's driver stops there; a call finds an \
+                     o<name> sub definition after it, reading O-word lines alone)",
+                    unread.end
+                )
+            };
+            format!(
+                "line {} and the lines after it that are not O-word lines are never read: \
+                 LinuxCNC stops at {stop}; passed over, kept as written",
+                unread.line
+            )
         } else if unread.end == self.linuxcnc_m99_end {
             format!(
                 "line {} and the lines after it that are not O-word lines are never read, but \
@@ -6970,6 +7012,12 @@ impl Checker {
             )
         };
         self.report(Rule::NotRead, message, unread.line, 1);
+    }
+
+    /// LinuxCNC: whether a call of the main program may seek a body after its end: the main
+    /// program has a calling line (an o-word `call`, an `M98`, its target known or not).
+    fn linuxcnc_later_waits(&self) -> bool {
+        !self.linuxcnc_later.ends.is_empty() || self.linuxcnc_later_bodies.main_called()
     }
 
     /// TG116: words after the program's M02/M30, said once.
