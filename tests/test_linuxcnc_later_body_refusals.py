@@ -295,7 +295,8 @@ def test_a_named_label_of_digits_is_the_numbered_one(tmp_path) -> None:
     # before the call
     text = f"G21 G17 G90 G55\nG0 X0 Y0\no<300> call\n{body}"
     assert "(o<300> runs as called by o<300> call of line 3" in errors(text)[0][2]
-    text = f"o<300> sub\nG0 X-700.\no<300> endsub\nG21 G17 G90 G55\nG0 X0 Y0\no<300> call\nM2\n"
+    text = ("o<300> sub\nG0 X-700.\no<300> endsub\nG21 G17 G90 G55\nG0 X0 Y0\no<300> call\n"
+            "M2\n")
     assert "(o<300> runs as called by o<300> call of line 6" in errors(text)[0][2]
     assert "STRAIGHT_TRAVERSE(-700.0000" in rs274_output(tmp_path, text)
     text = f"G21 G17 G90 G55\nG0 X0 Y0\no300 call\n{body.replace('<300>', '<0300>')}"

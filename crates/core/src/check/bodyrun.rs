@@ -154,7 +154,6 @@ impl Checker {
             later.first_call = line;
         }
     }
-
 }
 
 impl LaterBodies {
@@ -505,7 +504,10 @@ impl Checker {
                 .defined
                 .iter()
                 .any(|d| d.0 == *label && (d.2 || d.1 > seek.line))
-                || later.passed.iter().any(|d| d.0 == *label && d.1 > seek.line);
+                || later
+                    .passed
+                    .iter()
+                    .any(|d| d.0 == *label && d.1 > seek.line);
             if found {
                 continue;
             }

@@ -2084,10 +2084,10 @@ impl Checker {
             {
                 let column = b.statements.first().map_or(1, |s| s.0);
                 // (named as written, `o<300>`: review 81-lcnc81 R5)
-                let shown = b.statements.first().map_or_else(
-                    || name.clone(),
-                    |s| crate::statement::o_label_shown(s.2),
-                );
+                let shown = b
+                    .statements
+                    .first()
+                    .map_or_else(|| name.clone(), |s| crate::statement::o_label_shown(s.2));
                 self.definition_begin(name, &shown, (b.line, column));
                 // (read apart, not run here: the offsets are not lost at its sub)
                 self.call_keeps = self.early_on && !self.config.work_offsets.is_empty();
