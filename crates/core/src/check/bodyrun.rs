@@ -13,10 +13,13 @@
 //! - an o-word line closing or continuing a block the body never opened, `o2 endif` (`N:
 //!   undefined O-word label: 'o2 endif'`, whatever the main program has open; M18),
 //! - a FANUC-style program whose every M99 is in a block that does not run: it runs on to
-//!   the file's end ("File ended with no percent sign or program end"; M15),
-//! - an `M98 P300` of an `O300` written after the main program's end but before the body:
-//!   rs274 seeks a program forward from the call, and records none it passed over while
-//!   seeking another ("EOF in file ... seeking o-word: o<300>"; A83).
+//!   the file's end ("File ended with no percent sign or program end"; M15), where no line
+//!   but the ends of its blocks follows the M99 that closes it for the checker's reading
+//!   ([`Checker::later_tail_line`]),
+//! - an `M98 P300` (or an `o300 call`) of an `O300` (or an `o300 sub`) written after the
+//!   main program's end but before the body: rs274 seeks the label forward from the call,
+//!   and records none it passed over while seeking another ("EOF in file ... seeking
+//!   o-word: o<300>"; A83).
 //!
 //! Said only where the line surely runs: the body is the first of its label after the end,
 //! the main program's call surely runs and is its first calling line (a body called before
