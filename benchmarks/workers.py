@@ -5,7 +5,7 @@
                                            [--callgrind | --phases] [--large NAME]
                                            [--real DIR [--real-count 200]
                                             [--real-profile NAME | --families TSV]]
-                                           [--build LABEL=CHECKOUT ...]
+                                           [--build LABEL=CHECKOUT ...] [--fifo]
 
 Three batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
 whole command by ``time.perf_counter``; its CPU, context switches and the peak resident set of
@@ -88,6 +88,13 @@ GIL, or for a core. Against ``-j 1``, more CPU for the same files is the two cor
 other (their shared caches, the host); more waiting is the GIL's turns (on an idle machine,
 where no other process takes a core).
 
+``--fifo`` runs each command timed (and the ceiling's loops) under ``chrt -f 10``, the
+real-time FIFO class: on a machine other users load, the command's threads then take a core
+whenever they can run, as on an idle machine, so a check's spread can be read there (each
+command ends within a second; the kernel keeps 5 % of each second for other tasks). Not for a
+conversion's figures: its outputs' fsyncs wait for the kernel's I/O threads, which stay in
+the normal class and so behind the other users' load (docs/benchmarks.md, par82).
+
 Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
 
@@ -111,6 +118,9 @@ sys.path.insert(0, str(HERE))
 from core import IMPLICIT_INCH, ROOT  # noqa: E402
 from real_program import SOURCE, corpus_dir  # noqa: E402
 
+# what --fifo puts before each command timed: the real-time FIFO class (chrt(1))
+PREFIX: list[str] = []
+
 
 def timed(argv: list[str], env: dict[str, str]) -> tuple[float, float, int, float, int]:
     """(wall seconds, peak MB, exit code, CPU seconds: user + system, context switches) of a
@@ -121,7 +131,7 @@ def timed(argv: list[str], env: dict[str, str]) -> tuple[float, float, int, floa
     one's pages before its ``exec`` in its ``ru_maxrss``.) ``time``'s own start, about 1 ms,
     is in every run alike."""
     start = time.perf_counter()
-    proc = subprocess.run(["/usr/bin/time", "-v", *argv], stdout=subprocess.DEVNULL,
+    proc = subprocess.run([*PREFIX, "/usr/bin/time", "-v", *argv], stdout=subprocess.DEVNULL,
                           stderr=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL,
                           check=False, cwd=ROOT, env=env)
     wall = time.perf_counter() - start
@@ -254,7 +264,7 @@ def phases(argv: list[str], env: dict[str, str], work: Path) -> tuple[float, ...
     out = work / "phases"
     env = {**env, "TAPEGATE_PHASES": str(out)}
     start = time.perf_counter()
-    subprocess.run([sys.executable, "-c", PHASES, *argv], stdout=subprocess.DEVNULL,
+    subprocess.run([*PREFIX, sys.executable, "-c", PHASES, *argv], stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, check=False,
                    cwd=ROOT, env=env)
     end = time.perf_counter()
@@ -337,7 +347,12 @@ def main() -> int:
                              "file checked and converted from its family's profile")
     parser.add_argument("--build", action="append", default=[], metavar="LABEL=CHECKOUT",
                         help="a checkout put first on PYTHONPATH (repeated: interleaved)")
+    parser.add_argument("--fifo", action="store_true",
+                        help="time each command in the real-time FIFO class (chrt -f 10): a "
+                             "check's spread on a machine others load (not a conversion's)")
     args = parser.parse_args()
+    if args.fifo:
+        PREFIX[:] = ["chrt", "-f", "10"]
     only = args.only.split(",")
     builds: list[tuple[str, str | None]] = [
         (b.split("=", 1)[0], str(Path(b.split("=", 1)[1]).resolve())) for b in args.build
