@@ -206,19 +206,24 @@ def instructions(argv: list[str], work: Path,
     return whole, before, whole - before, children + threads
 
 
-# The driver of --phases: the command's entry point (tapegate.launch.main, the console
-# script's) with each file's work timed. A file's work is the function ordered_map runs
-# (a conversion's every file; a check's with -j 2 or more) or, for a check with one worker,
-# tapegate.checking._check_one. PYTHONPATH (--build's checkout) is put before the current
-# folder, which "-c" puts first, as the console script's import has it. The times go to the
-# file named by TAPEGATE_PHASES as "first last exit busy-of-each-thread..." and a second line
-# of each thread's CPU time in its files (time.thread_time) at the exit (os._exit held until
-# they are written).
+# The driver of --phases: the command's entry point (tapegate.launch.main, the console script's)
+# with each file's work timed. A file's work is tapegate.checking._check_one (a check's) or
+# tapegate.converting._convert_one (a conversion's), whichever the command runs, with any number
+# of workers and files (ordered_map's function calls it; one file, or one worker, calls it
+# directly: a batch of several profiles has commands of one file). PYTHONPATH (--build's checkout)
+# is put before the current folder, which "-c" puts first, as the console script's import has it.
+# The times go to the file named by TAPEGATE_PHASES as "first last exit busy-of-each-thread..."
+# and a second line of each thread's CPU time in its files (time.thread_time) at the exit
+# (os._exit held until they are written).
 PHASES = """\
 import os, sys, time, _thread
 sys.path[0:0] = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
-import tapegate.workers as workers
-import tapegate.checking as checking
+if "convert" in sys.argv:
+    import tapegate.converting as command
+    name = "_convert_one"
+else:
+    import tapegate.checking as command
+    name = "_check_one"
 spans = []
 def timing(func):
     def timed(*args, **kwargs):
@@ -229,10 +234,7 @@ def timing(func):
             spans.append((_thread.get_ident(), start, time.perf_counter(),
                           time.thread_time() - cpu))
     return timed
-ordered_map = workers.ordered_map
-workers.ordered_map = lambda func, items, jobs, **kw: ordered_map(timing(func), items, jobs, **kw)
-if sys.argv[sys.argv.index("-j") + 1] == "1":
-    checking._check_one = timing(checking._check_one)
+setattr(command, name, timing(getattr(command, name)))
 exit_now = os._exit
 def written(code=0):
     end = time.perf_counter()
@@ -240,8 +242,9 @@ def written(code=0):
     for thread, start, stop, used in spans:
         busy[thread] = busy.get(thread, 0.0) + stop - start
         cpu[thread] = cpu.get(thread, 0.0) + used
-    with open(os.environ["TAPEGATE_PHASES"], "w") as out:
-        out.write(" ".join(map(repr, [min(s[1] for s in spans), max(s[2] for s in spans),
+    with open(os.environ["TAPEGATE_PHASES"], "w") as out:  # (no file done: no work)
+        out.write(" ".join(map(repr, [min((s[1] for s in spans), default=end),
+                                      max((s[2] for s in spans), default=end),
                                       end, *busy.values()])))
         out.write("\\n" + " ".join(map(repr, cpu.values())))
     exit_now(code)
