@@ -17,7 +17,8 @@ CORPUS = Path(os.environ.get("TAPEGATE_CORPUS", ROOT.parent / "shared" / "corpus
 
 
 def workers_module():
-    sys.path.insert(0, str(ROOT / "benchmarks"))
+    """benchmarks/workers.py as a module (it puts its folder on ``sys.path`` for its own
+    imports: core, real_program, shops)."""
     spec = importlib.util.spec_from_file_location("workers_bench",
                                                   ROOT / "benchmarks" / "workers.py")
     assert spec and spec.loader
