@@ -154,8 +154,14 @@ class Result:
 def entries(shops: Path) -> list[tuple[str, str, str]]:
     """(file, family, description) of families.tsv, the family corrected by RELABELLED and
     the description by TURNED."""
+    return map_entries(shops / "families.tsv")
+
+
+def map_entries(path: Path) -> list[tuple[str, str, str]]:
+    """:func:`entries` of a map written as families.tsv is (family, file, description a
+    line, tab-separated), wherever it is."""
     out = []
-    for line in (shops / "families.tsv").read_text(encoding="utf-8").splitlines():
+    for line in path.read_text(encoding="utf-8").splitlines():
         if not line.strip():
             continue
         family, name, description = (line.split("\t") + ["", ""])[:3]

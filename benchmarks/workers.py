@@ -3,7 +3,9 @@
     .venv/bin/python benchmarks/workers.py [--jobs 1,2] [--copies 200] [--repeat 3]
                                            [--tapegate PATH] [--only TEXT,...]
                                            [--callgrind | --phases] [--large NAME]
-                                           [--build LABEL=CHECKOUT ...]
+                                           [--real DIR [--real-count 200]
+                                            [--real-profile NAME | --families TSV]]
+                                           [--build LABEL=CHECKOUT ...] [--fifo]
 
 Three batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
 whole command by ``time.perf_counter``; its CPU, context switches and the peak resident set of
@@ -16,7 +18,22 @@ the largest process, the main one or a worker, by ``time``; see :func:`timed`):
   implicit inch (``benchmarks/core.py``'s target) into another folder;
 - **large copies**: 200 copies of a long real program (``--large``, by default
   ``shops/Mheaton92__PMC__1001.nc``: a Fusion 360 adaptive clearing, 22,167 lines, 590 kB),
-  ``check -p haas-mill --format json``: the same start-up against 7 times the work.
+  ``check -p haas-mill --format json``: the same start-up against 7 times the work;
+- **real files** (``--real DIR``, only when named): the first ``--real-count`` (200) files
+  below a folder of real programs the user names (hidden ones left out, sorted by their paths
+  below it, as ``tapegate check DIR`` lists them), copied into a temporary folder, checked
+  (``check --format json``) and converted (to implicit inch, as the copies) on
+  ``--real-profile`` (``fanuc-mill``) or, with ``--families TSV`` (a map written as the
+  shops' ``families.tsv``: family, file name, description a line), each on its family's
+  profile (``benchmarks/shops.py``'s ``profile_for``: the lathe one where the description
+  says turning), the files of no known family on ``--real-profile``. Files of several
+  profiles are one command a profile, one after the other, each on its own folder: the
+  batch's wall time, CPU and switches are their sum (and each command's start-up counts),
+  its peak and exit code the largest. Copies of one program are one file's cost 200 times
+  over (its length, its words and their kept verdicts, its report); 200 distinct programs
+  differ in length (a long one late in the order may end the batch alone, as in the shops
+  folder), in what a block costs and in what they report -- the issue's measure says "200
+  real files".
 
 Beside them, **the machine's ceiling**: N processes that only compute (a Python loop of fixed
 length, as long as a short batch), started at once, the same ``-j`` column: what the machine
@@ -71,6 +88,13 @@ GIL, or for a core. Against ``-j 1``, more CPU for the same files is the two cor
 other (their shared caches, the host); more waiting is the GIL's turns (on an idle machine,
 where no other process takes a core).
 
+``--fifo`` runs each command timed (and the ceiling's loops) under ``chrt -f 10``, the
+real-time FIFO class: on a machine other users load, the command's threads then take a core
+whenever they can run, as on an idle machine, so a check's spread can be read there (each
+command ends within a second; the kernel keeps 5 % of each second for other tasks). Not for a
+conversion's figures: its outputs' fsyncs wait for the kernel's I/O threads, which stay in
+the normal class and so behind the other users' load (docs/benchmarks.md, par82).
+
 Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
 
@@ -94,6 +118,9 @@ sys.path.insert(0, str(HERE))
 from core import IMPLICIT_INCH, ROOT  # noqa: E402
 from real_program import SOURCE, corpus_dir  # noqa: E402
 
+# what --fifo puts before each command timed: the real-time FIFO class (chrt(1))
+PREFIX: list[str] = []
+
 
 def timed(argv: list[str], env: dict[str, str]) -> tuple[float, float, int, float, int]:
     """(wall seconds, peak MB, exit code, CPU seconds: user + system, context switches) of a
@@ -104,7 +131,7 @@ def timed(argv: list[str], env: dict[str, str]) -> tuple[float, float, int, floa
     one's pages before its ``exec`` in its ``ru_maxrss``.) ``time``'s own start, about 1 ms,
     is in every run alike."""
     start = time.perf_counter()
-    proc = subprocess.run(["/usr/bin/time", "-v", *argv], stdout=subprocess.DEVNULL,
+    proc = subprocess.run([*PREFIX, "/usr/bin/time", "-v", *argv], stdout=subprocess.DEVNULL,
                           stderr=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL,
                           check=False, cwd=ROOT, env=env)
     wall = time.perf_counter() - start
@@ -179,19 +206,24 @@ def instructions(argv: list[str], work: Path,
     return whole, before, whole - before, children + threads
 
 
-# The driver of --phases: the command's entry point (tapegate.launch.main, the console
-# script's) with each file's work timed. A file's work is the function ordered_map runs
-# (a conversion's every file; a check's with -j 2 or more) or, for a check with one worker,
-# tapegate.checking._check_one. PYTHONPATH (--build's checkout) is put before the current
-# folder, which "-c" puts first, as the console script's import has it. The times go to the
-# file named by TAPEGATE_PHASES as "first last exit busy-of-each-thread..." and a second line
-# of each thread's CPU time in its files (time.thread_time) at the exit (os._exit held until
-# they are written).
+# The driver of --phases: the command's entry point (tapegate.launch.main, the console script's)
+# with each file's work timed. A file's work is tapegate.checking._check_one (a check's) or
+# tapegate.converting._convert_one (a conversion's), whichever the command runs, with any number
+# of workers and files (ordered_map's function calls it; one file, or one worker, calls it
+# directly: a batch of several profiles has commands of one file). PYTHONPATH (--build's checkout)
+# is put before the current folder, which "-c" puts first, as the console script's import has it.
+# The times go to the file named by TAPEGATE_PHASES as "first last exit busy-of-each-thread..."
+# and a second line of each thread's CPU time in its files (time.thread_time) at the exit
+# (os._exit held until they are written).
 PHASES = """\
 import os, sys, time, _thread
 sys.path[0:0] = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
-import tapegate.workers as workers
-import tapegate.checking as checking
+if "convert" in sys.argv:
+    import tapegate.converting as command
+    name = "_convert_one"
+else:
+    import tapegate.checking as command
+    name = "_check_one"
 spans = []
 def timing(func):
     def timed(*args, **kwargs):
@@ -202,10 +234,7 @@ def timing(func):
             spans.append((_thread.get_ident(), start, time.perf_counter(),
                           time.thread_time() - cpu))
     return timed
-ordered_map = workers.ordered_map
-workers.ordered_map = lambda func, items, jobs, **kw: ordered_map(timing(func), items, jobs, **kw)
-if sys.argv[sys.argv.index("-j") + 1] == "1":
-    checking._check_one = timing(checking._check_one)
+setattr(command, name, timing(getattr(command, name)))
 exit_now = os._exit
 def written(code=0):
     end = time.perf_counter()
@@ -213,8 +242,9 @@ def written(code=0):
     for thread, start, stop, used in spans:
         busy[thread] = busy.get(thread, 0.0) + stop - start
         cpu[thread] = cpu.get(thread, 0.0) + used
-    with open(os.environ["TAPEGATE_PHASES"], "w") as out:
-        out.write(" ".join(map(repr, [min(s[1] for s in spans), max(s[2] for s in spans),
+    with open(os.environ["TAPEGATE_PHASES"], "w") as out:  # (no file done: no work)
+        out.write(" ".join(map(repr, [min((s[1] for s in spans), default=end),
+                                      max((s[2] for s in spans), default=end),
                                       end, *busy.values()])))
         out.write("\\n" + " ".join(map(repr, cpu.values())))
     exit_now(code)
@@ -237,13 +267,57 @@ def phases(argv: list[str], env: dict[str, str], work: Path) -> tuple[float, ...
     out = work / "phases"
     env = {**env, "TAPEGATE_PHASES": str(out)}
     start = time.perf_counter()
-    subprocess.run([sys.executable, "-c", PHASES, *argv], stdout=subprocess.DEVNULL,
+    subprocess.run([*PREFIX, sys.executable, "-c", PHASES, *argv], stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, check=False,
                    cwd=ROOT, env=env)
     end = time.perf_counter()
     times, cpu = out.read_text().split("\n")
     first, last, exited, *busy = (float(v) for v in times.split())
     return (first - start, last - first, end - last, sum(float(v) for v in cpu.split()), *busy)
+
+
+def summed(runs: list[tuple[float | int, ...]]) -> tuple[float | int, ...]:
+    """The measures of several commands run one after the other (a batch of several
+    profiles) as one: each figure summed, a list of each worker's figures summed worker by
+    worker (a command with fewer workers counting 0 for the others)."""
+    width = max(len(r) for r in runs)
+    return tuple(sum(r[k] for r in runs if len(r) > k) for k in range(width))
+
+
+def real_files(folder: Path, count: int, leave: Path | None = None) -> list[Path]:
+    """The first ``count`` files below ``folder`` (hidden ones and ``leave`` left out, folders
+    linked to not entered), sorted by their paths below it as ``tapegate check DIR`` lists
+    them (``tapegate.workers.folder_files``)."""
+    left = leave.resolve() if leave is not None else None
+    found: list[tuple[str, Path]] = []
+    for top, folders, names in os.walk(folder):  # (a folder linked to is not entered)
+        folders[:] = [name for name in folders if not name.startswith(".")]
+        for name in names:
+            path = Path(top, name)
+            if name.startswith(".") or not path.is_file() or path.resolve() == left:
+                continue
+            found.append(("/".join(path.relative_to(folder).parts), path))
+    return [path for _, path in sorted(found)[:count]]
+
+
+def real_groups(files: list[Path], folder: Path, profile: str,
+                families: Path | None) -> dict[str, list[Path]]:
+    """``files`` by the profile each is checked on: ``profile``, or with ``families`` (a map
+    written as the shops' families.tsv) its family's (``shops.profile_for``, the corrections
+    of ``shops.map_entries``), ``profile`` for a file of no known family."""
+    known: dict[str, str] = {}
+    if families is not None:
+        from shops import map_entries, profile_for
+
+        for name, family, description in map_entries(families):
+            found = profile_for(family, description)
+            if found is not None:
+                known[name] = found
+    groups: dict[str, list[Path]] = {}
+    for path in files:
+        below = "/".join(path.relative_to(folder).parts)
+        groups.setdefault(known.get(below, known.get(path.name, profile)), []).append(path)
+    return groups
 
 
 def main() -> int:
@@ -264,9 +338,24 @@ def main() -> int:
     parser.add_argument("--phases", action="store_true",
                         help="split each command's wall time into its serial part and its "
                              "files' work (a driver of the entry point)")
+    parser.add_argument("--real", metavar="DIR",
+                        help="a folder of real programs: its first --real-count files checked "
+                             "and converted (the 'real files' batches)")
+    parser.add_argument("--real-count", type=int, default=200)
+    parser.add_argument("--real-profile", default="fanuc-mill",
+                        help="the profile of the real files (of those of no known family, "
+                             "with --families)")
+    parser.add_argument("--families", metavar="TSV",
+                        help="the real files' families, written as shops/families.tsv: each "
+                             "file checked and converted from its family's profile")
     parser.add_argument("--build", action="append", default=[], metavar="LABEL=CHECKOUT",
                         help="a checkout put first on PYTHONPATH (repeated: interleaved)")
+    parser.add_argument("--fifo", action="store_true",
+                        help="time each command in the real-time FIFO class (chrt -f 10): a "
+                             "check's spread on a machine others load (not a conversion's)")
     args = parser.parse_args()
+    if args.fifo:
+        PREFIX[:] = ["chrt", "-f", "10"]
     only = args.only.split(",")
     builds: list[tuple[str, str | None]] = [
         (b.split("=", 1)[0], str(Path(b.split("=", 1)[1]).resolve())) for b in args.build
@@ -294,19 +383,40 @@ def main() -> int:
         target.write_text(IMPLICIT_INCH)
         shops = [p for p in (corpus / "shops").iterdir() if p.is_file()]
         tg = shlex.split(args.tapegate)
-        batches = {
+        # each batch: its commands, run one after the other (several for real files of
+        # several profiles)
+        batches: dict[str, list[list[str]]] = {
             f"check shops ({len(shops)} files)":
-                [*tg, "check", str(corpus / "shops"), "-p", "fanuc-mill", "--format", "json"],
-            f"check {args.copies} copies": [*tg, "check", str(copies), "-p", "haas-mill",
-                                            "--format", "json"],
-            f"convert {args.copies} copies": [*tg, "convert", str(copies), "--out-dir",
-                                              str(work / "out"), "--force", "--from",
-                                              "haas-mill", "--to", str(target), "--units",
-                                              "inch"],
-            f"check {args.copies} large copies": [*tg, "check", str(large), "-p", "haas-mill",
-                                                  "--format", "json"],
-            "the machine's ceiling": [sys.executable, "-c", SPIN],
+                [[*tg, "check", str(corpus / "shops"), "-p", "fanuc-mill", "--format", "json"]],
+            f"check {args.copies} copies": [[*tg, "check", str(copies), "-p", "haas-mill",
+                                             "--format", "json"]],
+            f"convert {args.copies} copies": [[*tg, "convert", str(copies), "--out-dir",
+                                               str(work / "out"), "--force", "--from",
+                                               "haas-mill", "--to", str(target), "--units",
+                                               "inch"]],
+            f"check {args.copies} large copies": [[*tg, "check", str(large), "-p", "haas-mill",
+                                                   "--format", "json"]],
         }
+        if args.real:
+            folder = Path(args.real)
+            families = Path(args.families) if args.families else None
+            picked = real_files(folder, args.real_count, families)
+            groups = real_groups(picked, folder, args.real_profile, families)
+            checks, converts = [], []
+            for n, (profile, paths) in enumerate(sorted(groups.items())):
+                group = work / "real" / f"{n}-{profile}"
+                group.mkdir(parents=True)
+                for path in paths:  # (flat: a name of a file below a subfolder joined by __)
+                    shutil.copy(path, group / "__".join(path.relative_to(folder).parts))
+                checks.append([*tg, "check", str(group), "-p", profile, "--format", "json"])
+                converts.append([*tg, "convert", str(group), "--out-dir",
+                                 str(work / "out-real" / group.name), "--force", "--from",
+                                 profile, "--to", str(target), "--units", "inch"])
+            shown_groups = ", ".join(f"{p} {len(g)}" for p, g in sorted(groups.items()))
+            print(f"real files: {len(picked)} of {folder} ({shown_groups})", flush=True)
+            batches[f"check {len(picked)} real files"] = checks
+            batches[f"convert {len(picked)} real files"] = converts
+        batches["the machine's ceiling"] = [[sys.executable, "-c", SPIN]]
         jobs = [int(j) for j in args.jobs.split(",")]
         width = max(len(label) for label, _ in builds)
         if args.phases:
@@ -320,7 +430,7 @@ def main() -> int:
         else:
             print(f"{'batch':<34} {'':{width}} {'-j':>3} {'median s':>8} {'min s':>6} "
                   f"{'CPU s':>6} {'switches':>8} {'peak MB':>8} {'speed-up':>8} {'load':>9} rc")
-        for name, argv in batches.items():
+        for name, commands in batches.items():
             if not chosen(name):
                 continue
             if args.phases:
@@ -331,8 +441,9 @@ def main() -> int:
                     parts: dict[int, list[tuple[float, ...]]] = {j: [] for j in jobs}
                     for _ in range(args.repeat):  # interleaved: 1, 2, 1, 2...
                         for j in jobs:
-                            parts[j].append(phases([*argv[len(tg):], "-j", str(j)],
-                                                   build_env(checkout), work))
+                            parts[j].append(summed([
+                                phases([*argv[len(tg):], "-j", str(j)],
+                                       build_env(checkout), work) for argv in commands]))
                     load_after = os.getloadavg()[0]
                     one = statistics.median(p[1] for p in parts[jobs[0]])
                     for j in jobs:
@@ -361,8 +472,10 @@ def main() -> int:
                 for label, checkout in builds:
                     first = 0
                     for j in jobs:
-                        whole, before, after, workers = instructions(
-                            [*argv, "-j", str(j)], work, build_env(checkout))
+                        counts = [instructions([*argv, "-j", str(j)], work,
+                                               build_env(checkout)) for argv in commands]
+                        whole, before, after = (sum(c[k] for c in counts) for k in range(3))
+                        workers = list(summed([tuple(c[3]) for c in counts]))
                         first = first or whole
                         ideal = first / (before + (after + sum(workers)) / j) if workers else 1.0
                         shown = " + ".join(f"{w / 1e9:.3f}" for w in workers) or "-"
@@ -378,8 +491,13 @@ def main() -> int:
                     if "ceiling" in name and label != builds[0][0]:
                         continue
                     for j in jobs:
-                        runs[label, j].append(timed([*argv, "-j", str(j)],
-                                                    env=build_env(checkout)))
+                        each = [timed([*argv, "-j", str(j)], env=build_env(checkout))
+                                for argv in commands]
+                        runs[label, j].append((sum(e[0] for e in each),
+                                               max(e[1] for e in each),
+                                               max(e[2] for e in each),
+                                               sum(e[3] for e in each),
+                                               sum(e[4] for e in each)))
             load_after = os.getloadavg()[0]
             for label, _ in builds:
                 if "ceiling" in name and label != builds[0][0]:
