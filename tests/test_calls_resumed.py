@@ -179,11 +179,13 @@ def test_linuxcnc_calls_of_later_definitions(profiles, text, expected):
 
 
 # A selection between the last position and the call: the real run keeps the machine
-# position (X-650 under G54 is G55 work -550), while the position the checker holds is the
-# old system's work value, so the caller's increments after a body that leaves G91 are not
-# placed from it. rs274 -g (G55 X -100 in its var file): -650, then the body's -540, then
-# the caller's X-100 at -640, machine -740, inside; placed from -650 it was "X goes to -840",
-# a false error (the lead's review of the stop's merge). An absolute move is still judged.
+# position, and the checker re-expresses the work position it holds in the new system (new
+# work = old work + old offset - new offset, limits.rs) where both offsets are known: the
+# body runs from there, under the selected system (issue 32 item 4, calls82; FANUC 0i-F /
+# 30i-B and Haas NGC: selecting a work system moves no axis; LinuxCNC `rs274 -g`). X-650
+# under G54 is G55 work -550; the body's -540, the caller's X-100 at -640, machine -740:
+# inside (rs274 -g, G55 X -100 in its var file; read from the old system's -650 it was "X
+# goes to -840", a false error, the lead's review of stop 80's merge).
 @pytest.mark.parametrize("form, text, expected", [
     ("lcnc", "G21 G17 G90 G54 / G0 X-650 Y0 / G55 / o2000 call / G0 X-100 / M2 / o2000 sub / "
      "G91 G0 X10. / o2000 endsub", []),
@@ -192,9 +194,69 @@ def test_linuxcnc_calls_of_later_definitions(profiles, text, expected):
     # (the body leaves G90: X-700. absolute under G55, machine -800)
     ("lcnc", "G21 G17 G90 G54 / G0 X-650 Y0 / G55 / o2000 call / G0 X-700 / M2 / o2000 sub / "
      "G0 X10. / o2000 endsub", [(5, 4, "X goes to -800")]),
+    # (review 81-calls81 f_sel1: machine 0 is G55 work 100; the body's G91 X100. to 200,
+    # machine 100; the caller's increments 600 and 100 to machine 700 and 800 > 762)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G55 / M98 P2000 / G0 X600. / G0 X100. / "
+     "M30 / O2000 / G91 G0 X100. / M99", [(7, 4, "X goes to 800")]),
+    # (the LinuxCNC twin: rs274 -g with G55 X +100 prints work -100 after the selection
+    # (machine 0), then 0, 600, 700: machine 800; on this profile's G55 X -100 the same
+    # arithmetic gives 100, 200, 800, 900: machine 800)
+    ("lcnc", "G21 G17 G90 G54 / G0 X0 Y0 / G55 / o2000 call / G0 X600 / G0 X100 / M2 / "
+     "o2000 sub / G91 G0 X100 / o2000 endsub", [(6, 4, "X goes to 800")]),
+    # (one increment only: machine 700, inside)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G55 / M98 P2000 / G0 X600. / M30 / "
+     "O2000 / G91 G0 X100. / M99", []),
+    # (Haas, G55 X -4 in: machine 0 is work 4; the body's G91 X5. to 9 (machine 5), the
+    # caller's 24 and 2 to machine 29 and 31 > 30)
+    ("haas", "O1000 / G20 G17 G90 G54 / G0 X0 / G55 / M97 P100 / G0 X24. / G0 X2. / M30 / "
+     "N100 G91 G0 X5. / M99", [(7, 4, "X goes to 31")]),
+    # (G56, not in the profile: its offset not known, the position not re-expressed: silent)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G56 / M98 P2000 / G0 X600. / G0 X100. / "
+     "M30 / O2000 / G91 G0 X100. / M99", []),
 ])
-def test_a_selection_before_the_call_leaves_the_start_not_known(
-        profiles, form, text, expected):
+def test_a_selection_before_the_call(profiles, form, text, expected):
+    assert said(text, profiles[form]) == expected
+
+
+# A G52 or G92 of the caller's, followed (its amount known), in force at the call: the body
+# runs under it, and the caller's moves after it (issue 32 item 4, calls82; FANUC 0i-F /
+# 30i-B Operator's Manual, "Local coordinate system" G52 and "Setting a workpiece
+# coordinate system" G92: the shift holds until another or a reset, and M98/M99 end
+# neither; Haas NGC Mill Operator's Manual, G52; LinuxCNC G92, `rs274 -g`). Main took the
+# offsets as lost at the shift: each "said" case was silent on main.
+@pytest.mark.parametrize("form, text, expected", [
+    # (G92 X100. at machine 0: work 100, shift -100; the body's G91 X-100. to work 0
+    # (machine -100); the caller's -600 and -100 to machine -700 and -800 < -762)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G92 X100. / M98 P2000 / G0 X-600. / "
+     "G0 X-100. / M30 / O2000 / G91 G0 X-100. / M99", [(7, 4, "X goes to -800")]),
+    # (rs274 -g: SET_G92_OFFSET(-100), then work 0, -600, -700: machine -800)
+    ("lcnc", "G21 G17 G90 G54 / G0 X0 Y0 / G92 X100 / o2000 call / G0 X-600 / G0 X-100 / M2 "
+     "/ o2000 sub / G91 G0 X-100 / o2000 endsub", [(6, 4, "X goes to -800")]),
+    # (rs274 -g: work -550, machine -650: inside)
+    ("lcnc", "G21 G17 G90 G54 / G0 X0 Y0 / G92 X100 / o2000 call / G0 X-550 / M2 / "
+     "o2000 sub / G91 G0 X-100 / o2000 endsub", []),
+    # (G52 X-100.: the body's G90 X-10. at machine -110, then G91; the caller's -680 to
+    # -790 < -762)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G52 X-100. / M98 P2000 / G0 X-680. / M30 "
+     "/ O2000 / G90 G0 X-10. / G91 / M99", [(6, 4, "X goes to -790")]),
+    # (G52 X100.: 90 - 680 = -590, inside)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X0 / G52 X100. / M98 P2000 / G0 X-680. / M30 "
+     "/ O2000 / G90 G0 X-10. / G91 / M99", []),
+    # (Haas G52 X-4. (as FANUC's): the body's X-10. at -14, the caller's -15 and -2 to -29
+    # and -31 < -30)
+    ("haas", "O1000 / G20 G17 G90 G54 / G0 X0 / G52 X-4. / M97 P100 / G0 X-15. / G0 X-2. / "
+     "M30 / N100 G90 G0 X-10. / G91 / M99", [(7, 4, "X goes to -31")]),
+    # (not known, silent as main: a G92 where the position before it is not known; a
+    # LinuxCNC G52 (it sets the offset G92 shares, kept from an earlier run); a Haas G92,
+    # whose working Setting 33 decides)
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G92 X100. / M98 P2000 / G0 X-600. / G0 X-100. / "
+     "M30 / O2000 / G91 G0 X-100. / M99", []),
+    ("lcnc", "G21 G17 G90 G54 / G0 X0 Y0 / G52 X-100 / o2000 call / G0 X-600 / G0 X-100 / "
+     "M2 / o2000 sub / G91 G0 X-100 / o2000 endsub", []),
+    ("haas", "O1000 / G20 G17 G90 G54 / G0 X0 / G92 X4. / M97 P100 / G0 X-24. / G0 X-4. / "
+     "M30 / N100 G91 G0 X-4. / M99", []),
+])
+def test_a_shift_in_force_at_the_call(profiles, form, text, expected):
     assert said(text, profiles[form]) == expected
 
 

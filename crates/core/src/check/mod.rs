@@ -1746,10 +1746,14 @@ pub struct Checker {
     resumed: Option<Box<resumed::Resumed>>,
     /// The line of the last block that calls, and its X, Y and Z before it ([`resumed`]).
     call_from: (usize, [Option<Dec>; 3]),
-    /// A G54-G59 selection changed the work system after a position was known: the work
-    /// position the checker holds is the old system's, so a call's start is not taken from
-    /// it ([`resumed`]).
-    selected_from_position: bool,
+    /// The axes (their places' bits) whose work position a G54-G59 selection left as the old
+    /// system's (not re-expressed into the new one, or taken back by a loop): a call's start
+    /// is not taken from them ([`resumed`]).
+    selected_stale: u16,
+    /// The work system in force where the offsets were taken as lost by a G52 or G92 alone
+    /// (limits.rs): with the shift followed, a call's body and the caller's moves after it
+    /// are judged under both ([`resumed`]). Any other loss, or a selection, ends it.
+    shift_work: Option<i64>,
     /// The system a G54-G59 selection re-expressed the held position into and those axes
     /// ([`Checker::selection_reexpressed`]): under it, a position after the selection is the
     /// new system's, judged as a machine position, and an increment does not join the span
@@ -2104,7 +2108,8 @@ impl Checker {
             call_modes: Vec::new(),
             resumed: None,
             call_from: (0, [None; 3]),
-            selected_from_position: false,
+            selected_stale: 0,
+            shift_work: None,
             reexpressed: None,
             numbered: false,
             #[cfg(debug_assertions)]

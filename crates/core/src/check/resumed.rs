@@ -111,6 +111,9 @@ struct Call {
     /// The work offset (G`work`) in force, each judged axis's value (the profile's units).
     work: i64,
     offset: [Option<crate::decimal::Dec>; AXES],
+    /// The G52 or G92 shift in force at the call, each judged axis's (the profile's units):
+    /// the body runs under it, and the caller's moves after it until it writes another.
+    shift: [f64; AXES],
     /// The caller's units to the profile's.
     factor: f64,
     /// The motion code in force at the call.
@@ -246,6 +249,7 @@ impl Checker {
                 start: [None; AXES],
                 work: p.work,
                 offset: p.offset,
+                shift: p.shift,
                 factor: p.factor,
                 motion: None,
                 named: String::new(),
@@ -263,13 +267,29 @@ impl Checker {
             return;
         }
         let family = self.config.family;
-        let work = self.work.filter(|_| {
-            !self.offsets_lost
-                && !self.offsets_written.any()
-                && !self.offsets_written.moved
-                && self.work_guessed.is_none()
-                && !self.shifts_on()
-        });
+        let work = self
+            .work
+            .filter(|_| !self.offsets_lost && !self.offsets_written.moved)
+            // (the offsets taken as lost by a G52 or G92 of the caller's alone, its shift
+            // followed: below)
+            .or(self.shift_work.filter(|_| self.offsets_lost))
+            .filter(|_| !self.offsets_written.any() && self.work_guessed.is_none());
+        // (a G52 or G92 of the caller's own followed (limits.rs, `shift_of`: a FANUC's or
+        // Haas mill's G52 under G90, a G92 where the position before it is known) is in
+        // force at the call: the body runs under it, as the caller's moves after it do
+        // (FANUC 0i-F / 30i-B Operator's Manual, "Local coordinate system" (G52) and
+        // "Setting a workpiece coordinate system" (G92): the shift holds until another
+        // G52 or G92 or a reset, a call and M99 end neither; Haas NGC Mill Operator's
+        // Manual, G52 and G92; LinuxCNC G92 offsets, rs274 -g). A shift not followed (its
+        // amount not known: `offsets_written.shifted`, a local shift not known, one a
+        // program read before may have left) leaves main's reading; a G52 the body writes
+        // makes it not known, below)
+        let shift = self
+            .call_shift()
+            .filter(|_| self.offsets_written.shifted == 0 && !self.shift_unsure);
+        let Some(shift) = shift else {
+            return;
+        };
         let s = &self.machine.state;
         if !matches!(family, Family::MacroB | Family::LinuxCnc)
             || self.machine.settings.fanuc_lathe
@@ -295,6 +315,7 @@ impl Checker {
         // (Z not under a tool length offset: the profile gives no tool lengths)
         let length = s.length_offset != 49 || self.length_decimal;
         let mut offset = [None; AXES];
+        let shift = JUDGED.map(|i| shift[i]);
         for &(g, axis, value) in &self.config.work_offsets {
             if g != work {
                 continue;
@@ -306,16 +327,20 @@ impl Checker {
         // (LinuxCNC's M98 forgets the position before its later call is kept: the one
         // before the block, which moves nothing)
         let from = self.call_from;
-        // (after a G54-G59 selection from another system the position held is the old
-        // system's work position, while the real run keeps the machine position: `G54` /
-        // `G0 X-650.` / `G57` / a call of a body that leaves G91 after `G91 G0 X10.` / `G0
-        // X-100.` on G57 X -300 runs at machine -740 (rs274), not -1040, so no increment
-        // after the call is placed from it)
-        let selected = self.selected_from_position;
+        // (after a G54-G59 selection from another system the real run keeps the machine
+        // position: where the selection re-expressed the work position held in the new
+        // system (limits.rs, `selection_reexpressed`: new work = old work + old offset - new
+        // offset) the body runs from there, under the selected system (review 81-calls81
+        // f_sel1: `G54` / `G0 X0` / `G55` (X -100) / `M98 P2000` of `G91 G0 X100.` / `G0
+        // X600.` / `G0 X100.` runs at machine 100, 700, 800); an axis it left the old
+        // system's (a loop that may come back, an offset not known) is not placed from it:
+        // `G54` / `G0 X-650.` / `G57` / a call of a body that leaves G91 after `G91 G0 X10.`
+        // / `G0 X-100.` on G57 X -300 runs at machine -740 (rs274), not -1040)
+        let stale = self.selected_stale;
         let start = JUDGED.map(|i| {
             s.position[i]
                 .or(from.1[i].filter(|_| from.0 == self.last_line))
-                .filter(|_| !selected)
+                .filter(|_| stale & 1 << i == 0)
                 .map(|v| v.to_f64())
         });
         let call = Call {
@@ -327,6 +352,7 @@ impl Checker {
             start,
             work,
             offset,
+            shift,
             factor: self.to_profile_units(false),
             motion: s.motion,
             named: String::new(),
@@ -867,7 +893,7 @@ impl Checker {
                     continue;
                 };
                 let work = work * c.factor;
-                let machine = work + offset.to_f64();
+                let machine = work + c.shift[k] + offset.to_f64();
                 let side = super::limits::travel_side(machine, (low, high));
                 if side == 0 || side == outside[k] {
                     outside[k] = side;
@@ -902,11 +928,16 @@ impl Checker {
                          writes no G90/G91 and no work offset"
                     ),
                 };
+                let shifted = if c.shift[k] == 0.0 {
+                    String::new()
+                } else {
+                    format!(" + shift {}", super::round6(c.shift[k]))
+                };
                 said.push(Finding {
                     rule: Rule::TravelExceeded,
                     message: format!(
-                        "{} goes to {} in machine coordinates (work {} + G{} offset {}), \
-                         outside the travel {low} to {high} ({why})",
+                        "{} goes to {} in machine coordinates (work {}{shifted} + G{} offset \
+                         {}), outside the travel {low} to {high} ({why})",
                         super::AXES[JUDGED[k]] as char,
                         super::round6(machine),
                         super::round6(work),
