@@ -178,6 +178,26 @@ def test_linuxcnc_calls_of_later_definitions(profiles, text, expected):
     assert said(text, profiles["lcnc"]) == expected
 
 
+# A FANUC's or Haas's call takes the caller's mode as G91 (called.rs, the mode not known
+# after it); the body's moves before its own G90/G91 run in the caller's G90 all the same:
+# `G0 X50.` / `M98 P2000` of `G0 X100.` / `G91` / `G0 X620.` runs at 100, then 720, inside
+# (`rs274 -g` of the LinuxCNC twin: 50, 100, 720); read as an increment from 50 it was a
+# false "X goes to 770". With X700. the truth is 800: said, as 800.
+@pytest.mark.parametrize("form, text, expected", [
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X50. / M98 P2000 / G0 X620. / M30 / O2000 / "
+     "G0 X100. / G91 / M99", []),
+    ("fanuc", "O1000 / G21 G17 G90 G54 / G0 X50. / M98 P2000 / G0 X700. / M30 / O2000 / "
+     "G0 X100. / G91 / M99", [(5, 4, "X goes to 800")]),
+    # (Haas: 10 + 19 = 29 in, inside; read from 2 as an increment it was 31)
+    ("haas", "O1000 / G20 G17 G90 G54 / G0 X2. / M97 P100 / G0 X19. / M30 / "
+     "N100 G0 X10. / G91 / M99", []),
+    ("lcnc", "G21 G17 G90 G54 / G0 X50 Y0 / o2000 call / G0 X620 / M2 / o2000 sub / G0 X100 / "
+     "G91 / o2000 endsub", []),
+])
+def test_a_body_move_before_its_own_mode_in_the_callers_mode(profiles, form, text, expected):
+    assert said(text, profiles[form]) == expected
+
+
 # A selection between the last position and the call: the real run keeps the machine
 # position, and the checker re-expresses the work position it holds in the new system (new
 # work = old work + old offset - new offset, limits.rs) where both offsets are known: the

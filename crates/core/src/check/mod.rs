@@ -1744,8 +1744,9 @@ pub struct Checker {
     /// The caller's moves after a call of a body read later, judged at its return
     /// ([`resumed`]).
     resumed: Option<Box<resumed::Resumed>>,
-    /// The line of the last block that calls, and its X, Y and Z before it ([`resumed`]).
-    call_from: (usize, [Option<Dec>; 3]),
+    /// The line of the last block that calls, and its X, Y and Z and G91 before it
+    /// ([`resumed`]).
+    call_from: (usize, [Option<Dec>; 3], bool),
     /// The axes (their places' bits) whose work position a G54-G59 selection left as the old
     /// system's (not re-expressed into the new one, or taken back by a loop): a call's start
     /// is not taken from them ([`resumed`]).
@@ -2107,7 +2108,7 @@ impl Checker {
             work_call: None,
             call_modes: Vec::new(),
             resumed: None,
-            call_from: (0, [None; 3]),
+            call_from: (0, [None; 3], false),
             selected_stale: 0,
             shift_work: None,
             reexpressed: None,
@@ -3141,6 +3142,9 @@ impl Checker {
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
+            // (where a call of a body read later is made from, and in which G90/G91, before
+            // the call forgets them: resumed.rs)
+            self.call_from = (b.line, before.xyz, before.incremental);
             self.call_unread_here = false;
             self.early_calls();
             // (the shift the call is made under, before a G52 its program leaves on is
@@ -3150,10 +3154,6 @@ impl Checker {
                 self.shift_call(b);
             }
             self.call_made(b);
-        }
-        if calls {
-            // (where a call of a body read later is made from: resumed.rs)
-            self.call_from = (b.line, before.xyz);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             let never = !calls && self.flow_never(b);

@@ -325,8 +325,13 @@ impl Checker {
             }
         }
         // (LinuxCNC's M98 forgets the position before its later call is kept: the one
-        // before the block, which moves nothing)
+        // before the block, which moves nothing; a FANUC's or Haas's call takes the mode as
+        // G91 before it is kept, called.rs `call_mode_lost`: the mode before the block, which
+        // writes none. Taken as G91, a body's move before its own G90/G91 ran from the
+        // start as an increment: `G0 X50.` / `M98 P2000` of `G0 X100.` / `G91` / `G0 X620.`
+        // runs at 720, inside, and was "X goes to 770")
         let from = self.call_from;
+        let here = from.0 == self.last_line;
         // (after a G54-G59 selection from another system the real run keeps the machine
         // position: where the selection re-expressed the work position held in the new
         // system (limits.rs, `selection_reexpressed`: new work = old work + old offset - new
@@ -339,7 +344,7 @@ impl Checker {
         let stale = self.selected_stale;
         let start = JUDGED.map(|i| {
             s.position[i]
-                .or(from.1[i].filter(|_| from.0 == self.last_line))
+                .or(from.1[i].filter(|_| here))
                 .filter(|_| stale & 1 << i == 0)
                 .map(|v| v.to_f64())
         });
@@ -348,7 +353,7 @@ impl Checker {
             line: self.last_line,
             runs: 1,
             chained: false,
-            incremental: s.incremental,
+            incremental: if here { from.2 } else { s.incremental },
             start,
             work,
             offset,
