@@ -405,3 +405,25 @@ def test_z_after_a_later_body(more, form, text, expected):
 ])
 def test_the_profiles_units_where_the_caller_writes_none(more, form, text, expected):
     assert said(text, more[form]) == expected
+
+
+# A Haas's local subprogram (M97) runs from its sequence number to its M99, on through the
+# blocks of the next one a call names (Haas Mill Operator's Manual, M97: the N words between
+# are no end; issue 32 item 4, calls82). X -30..30 in.
+@pytest.mark.parametrize("text, expected", [
+    # (M97 P100: N100's G91 X5. and N200's X-5. to 0 (read alone, N100 left 5); the caller's
+    # X5. to 5; M97 P200: its X-5. to 0 in G91; X32. to 32 > 30)
+    ("O1000 / G20 G17 G90 G54 / G0 X0 / M97 P100 / G0 X5. / M97 P200 / G0 X32. / M30 / "
+     "N100 G91 G0 X5. / N200 G0 X-5. / M99", [(7, 4, "X goes to 32")]),
+    # (the same with X27.: 27, inside; read from N100 alone, 5 + 5 - 5 + 27 = 32, false)
+    ("O1000 / G20 G17 G90 G54 / G0 X0 / M97 P100 / G0 X5. / M97 P200 / G0 X27. / M30 / "
+     "N100 G91 G0 X5. / N200 G0 X-5. / M99", []),
+    # (M97 P200 first: X5. in the caller's G90 to 5; M97 P100: 10, 15; X16. to 31 > 30)
+    ("O1000 / G20 G17 G90 G54 / G0 X0 / M97 P200 / M97 P100 / G0 X16. / M30 / "
+     "N100 G91 G0 X5. / N200 G0 X5. / M99", [(6, 4, "X goes to 31")]),
+    # (N200 writes G90 on the way: P100 ends at 5 absolute; the caller's X29. absolute: 29)
+    ("O1000 / G20 G17 G90 G54 / G0 X0 / M97 P100 / G0 X29. / M97 P200 / M30 / "
+     "N100 G91 G0 X5. / N200 G90 G0 X5. / M99", []),
+])
+def test_haas_m97_runs_on_through_the_next_label(profiles, text, expected):
+    assert said(text, profiles["haas"]) == expected

@@ -19,6 +19,10 @@
 //! body or another) from where the caller's moves after the call before end (calls81): the
 //! calls judged in turn as their bodies return, whatever the bodies' order in the file.
 //!
+//! From the position a G54-G59 selection before the call re-expressed in the selected
+//! system, under a G52 or G92 of the caller's whose shift is followed, and through a Haas
+//! M97 body that runs on into the next one a call names (calls82).
+//!
 //! Only where all of it is surely known: calls of the first program of the file, not behind
 //! a jump or condition, under a work offset known (no G10, shift, frame, polar mode), in
 //! blocks that move nothing and enter no sequence number (no Q), a repeat count of 1 to
@@ -173,6 +177,11 @@ struct Body {
     blocks: usize,
     /// The variables it set to a number, still holding it, and their values.
     set: Vec<(u64, crate::decimal::Dec)>,
+    /// A Haas's local subprogram (M97) that runs on, with no M99 before it, into the one at
+    /// the next sequence number a call names (its key): its run goes on through that
+    /// body's blocks to its M99 (Haas Mill Operator's Manual, M97: the subprogram runs from
+    /// its sequence number to its M99; the N words between are no end).
+    then: Option<i64>,
 }
 
 /// A Custom Macro B assignment statement of a local or common variable (`#1=0`, `#100 =
@@ -382,12 +391,30 @@ impl Checker {
         };
         if std::mem::take(&mut r.due) {
             self.resumed_finished(&mut r);
-        } else if let Some(body) = r.bodies.last_mut().filter(|body| !body.returned) {
+        } else if let Some(last) = r.bodies.last().filter(|body| !body.returned) {
+            let local = |k: i64| {
+                (super::structure::LOCAL_BODY..super::structure::LATER_DEFINITION).contains(&k)
+            };
+            let next = self.in_hand.filter(|&k| {
+                self.config.haas
+                    && local(last.key)
+                    && local(k)
+                    && r.calls.iter().any(|c| c.key == k)
+                    && r.bodies.iter().all(|body| body.key != k)
+            });
+            let n = r.bodies.len() - 1;
+            let body = &mut r.bodies[n];
             if self.in_hand == Some(body.key) {
                 self.resumed_body(body, b);
                 if body.returned {
                     self.resumed_finished(&mut r);
                 }
+            } else if let Some(k) = next.filter(|_| body.sure && body.dead.is_none()) {
+                // (a local subprogram runs on into the next one a call names: followed
+                // there, its return the end of both)
+                body.then = Some(k);
+                body.returned = true;
+                self.resumed_begun(&mut r, k, b);
             } else {
                 // (another program begins before its return: not known, and the next
                 // body's first block, if this is one, is not followed either)
@@ -400,28 +427,7 @@ impl Checker {
                 && r.caller != Some(k)
                 && r.bodies.iter().all(|body| body.key != k)
         }) {
-            // (a body begins: its first block, `O2000`, `N100 ...`, `o100 sub`)
-            let mut body = Body {
-                key,
-                sure: r.calls.iter().all(|c| c.key != key || c.checked),
-                wrote: None,
-                motion: None,
-                steps: Vec::new(),
-                dead: None,
-                goto: None,
-                returned: false,
-                blocks: 0,
-                set: Vec::new(),
-            };
-            for c in &mut r.calls {
-                c.recording = false;
-            }
-            self.resumed_body(&mut body, b);
-            let returned = body.returned;
-            r.bodies.push(body);
-            if returned {
-                self.resumed_finished(&mut r);
-            }
+            self.resumed_begun(&mut r, key, b);
         } else if r.bodies.is_empty() {
             if self.in_hand == r.caller {
                 // (the caller's end as a main program: M02, M30)
@@ -439,6 +445,32 @@ impl Checker {
             self.resumed_caller(&mut r, b);
         }
         self.resumed = Some(r);
+    }
+
+    /// A body begins (`key`): its first block, `O2000`, `N100 ...`, `o100 sub`.
+    fn resumed_begun(&mut self, r: &mut Resumed, key: i64, b: &BlockView<'_>) {
+        let mut body = Body {
+            key,
+            sure: r.calls.iter().all(|c| c.key != key || c.checked),
+            wrote: None,
+            motion: None,
+            steps: Vec::new(),
+            dead: None,
+            goto: None,
+            returned: false,
+            blocks: 0,
+            set: Vec::new(),
+            then: None,
+        };
+        for c in &mut r.calls {
+            c.recording = false;
+        }
+        self.resumed_body(&mut body, b);
+        let returned = body.returned;
+        r.bodies.push(body);
+        if returned {
+            self.resumed_finished(r);
+        }
     }
 
     /// How many times the body of `c` runs by the word `w` (P, L) of its call's block, whose
@@ -814,12 +846,20 @@ impl Checker {
         }
         while !r.broken && r.judged < r.calls.len() {
             let c = &r.calls[r.judged];
-            let Some(body) = r.bodies.iter().find(|body| body.key == c.key) else {
-                // (its body not read yet: judged at its return)
-                return;
-            };
-            if !body.returned {
-                return;
+            // (its body, and those it runs on into, in turn: each returned, or judged at
+            // its return)
+            let mut chain: Vec<&Body> = Vec::new();
+            let mut key = Some(c.key);
+            while let Some(k) = key.filter(|_| chain.len() < r.bodies.len()) {
+                let Some(body) = r.bodies.iter().find(|body| body.key == k) else {
+                    // (its body not read yet: judged at its return)
+                    return;
+                };
+                if !body.returned {
+                    return;
+                }
+                chain.push(body);
+                key = body.then;
             }
             let entry = if c.chained {
                 r.carry
@@ -830,11 +870,13 @@ impl Checker {
                     motion: c.motion,
                 })
             };
+            let steps = chain.iter().map(|body| body.steps.len()).sum::<usize>();
             let known = c.checked
-                && body.sure
-                && body.dead.is_none()
-                && body.goto.is_none()
-                && body.steps.len().saturating_mul(c.runs as usize) <= STEPS;
+                && key.is_none()
+                && chain
+                    .iter()
+                    .all(|body| body.sure && body.dead.is_none() && body.goto.is_none())
+                && steps.saturating_mul(c.runs as usize) <= STEPS;
             let Some(mut at) = entry.filter(|_| known) else {
                 r.broken = true;
                 return;
@@ -843,7 +885,7 @@ impl Checker {
             // body that leaves G91 moves again at each pass, one that leaves G90 ends where
             // it ends)
             for _ in 0..c.runs {
-                for step in &body.steps {
+                for step in chain.iter().flat_map(|body| &body.steps) {
                     match *step {
                         Step::Mode(g91) => at.incremental = g91,
                         Step::Axis(k, v) if at.incremental => at.at[k] = at.at[k].map(|a| a + v),
@@ -851,8 +893,13 @@ impl Checker {
                     }
                 }
             }
-            at.motion = body.motion.or(at.motion);
-            let carry = self.resumed_judged(c, body, at);
+            at.motion = chain
+                .iter()
+                .rev()
+                .find_map(|body| body.motion)
+                .or(at.motion);
+            let wrote = chain.iter().rev().find_map(|body| body.wrote);
+            let carry = self.resumed_judged(c, wrote, at);
             r.carry = carry;
             r.judged += 1;
         }
@@ -862,13 +909,13 @@ impl Checker {
     pub(super) fn resumed_leaves(&self, key: i64) -> Option<Option<bool>> {
         let r = self.resumed.as_ref()?;
         let body = r.bodies.iter().find(|body| body.key == key)?;
-        (body.returned && body.sure).then_some(body.wrote)
+        (body.returned && body.sure && body.then.is_none()).then_some(body.wrote)
     }
 
     /// The caller's moves after call `c` judged from `at`, where the runs of `body` leave the
     /// tool, in the mode they leave: a TG601 at each position beyond the travel that begins
     /// an excursion. Where they end (None: not known).
-    fn resumed_judged(&mut self, c: &Call, body: &Body, at: Carry) -> Option<Carry> {
+    fn resumed_judged(&mut self, c: &Call, wrote: Option<bool>, at: Carry) -> Option<Carry> {
         let enabled = self.selection.enabled(Rule::TravelExceeded);
         let Carry {
             mut at,
@@ -918,7 +965,7 @@ impl Checker {
                 } else {
                     String::new()
                 };
-                let why = match (m.own, body.wrote) {
+                let why = match (m.own, wrote) {
                     (Some(_), _) => format!(
                         "read in the caller's own G{g} after {name} of line {line}, whose \
                          program writes no work offset"
