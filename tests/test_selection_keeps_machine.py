@@ -129,10 +129,12 @@ BEYOND = [
       "lcnc": (9, "X goes to -1100")}),
     # the brief's increment: the body leaves the tool at G57 work 1000 (machine 700), the G91
     # X700 takes it to work 1700, machine 1400: by the span, as before, and where the caller's
-    # moves after the body are judged (calls81: not after a FANUC's or Haas's M98 of a later O
-    # program, TG140), at the caller's X700 too
+    # moves after the body are judged, at the caller's X700 too (after a FANUC's or Haas's M98
+    # of a later O program since calls82, the call's start the position the selection
+    # re-expressed: 1000 + 700 = 1700 under G57 X -300)
     ("G54 / G0 X-650. / G57 / CALL / G91 / G0 X700.", "G0 X1000.", [-650.0, 700.0, 1400.0],
-     {"fanuc": (11, "X spans 1650"), "haas": (11, "X spans 1650"),
+     {"fanuc": [(11, "X spans 1650"), (8, "X goes to 1400")],
+      "haas": [(11, "X spans 1650"), (8, "X goes to 1400")],
       "haas97": [(10, "X spans 1650"), (8, "X goes to 1400")],
       "lcnc98": [(10, "X spans 1650"), (7, "X goes to 1400")],
       "lcnc": [(10, "X spans 1650"), (7, "X goes to 1400")]}),

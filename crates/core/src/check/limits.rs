@@ -572,6 +572,7 @@ impl Checker {
     pub(super) fn offsets_rewritten(&mut self, line: usize, why: &str) {
         // (after the main program's first jump: callflow.rs)
         self.flow_spoiled();
+        self.shift_work = None;
         self.span_unjudged = ALL_PLACES;
         if self.spans_parked.is_some() {
             self.spans_unparked(ALL_PLACES);
@@ -640,11 +641,16 @@ impl Checker {
             Some(from) => (self.selection_known(from), self.known_axes(from)),
             None => (0, 0),
         };
-        if self.work != Some(g) && self.machine.state.position.iter().any(Option::is_some) {
-            // (the real run keeps the machine position: the work position held is the old
-            // system's, not the new one's; review of the stop's merge, resumed.rs)
-            self.selected_from_position = true;
-        }
+        // (the real run keeps the machine position: the work position held is the old
+        // system's, not the new one's, where the selection does not re-express it; review of
+        // the stop's merge, resumed.rs)
+        let held = if same {
+            0
+        } else {
+            (0..AXES.len())
+                .filter(|&i| self.machine.state.position[i].is_some())
+                .fold(0u16, |m, i| m | 1 << i)
+        };
         let at_start = self.linuxcnc_at_start();
         self.linuxcnc_work_selected = true;
         if self.work != Some(g) && self.config.family == Family::LinuxCnc {
@@ -671,6 +677,10 @@ impl Checker {
         // (the same system selected again keeps what was re-expressed into it)
         if !same {
             self.reexpressed = (moved != 0).then_some((g, moved));
+        }
+        self.selected_stale |= held & !moved;
+        if !same {
+            self.shift_work = None;
         }
         left |= moved;
         if left != 0 {
@@ -806,9 +816,20 @@ impl Checker {
                 let s = &mut self.machine.state;
                 s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
             }
+            self.selected_stale |= held.0;
             self.reexpressed = None;
         } else if held.0 != 0 {
             self.reexpressed_held = Some(held);
+        }
+    }
+
+    /// The work system a G52 or G92 leaves in force under its shift ([`Checker::shift_work`]):
+    /// the one in force, where no other loss of the offsets came before it.
+    fn shift_kept(&self) -> Option<i64> {
+        if self.offsets_lost {
+            self.shift_work
+        } else {
+            self.work
         }
     }
 
@@ -2105,10 +2126,15 @@ impl Checker {
                 // G92's shift is where the tool stands, which a G54-G59 selected since its
                 // last move changes: not followed so, every value held as before)
                 52 if axes => {
-                    self.offsets_rewritten(line, &format!("{} shifts the coordinates", w.token()))
+                    let kept = self.shift_kept();
+                    self.offsets_rewritten(line, &format!("{} shifts the coordinates", w.token()));
+                    self.shift_work = kept;
                 }
                 92 if axes => {
-                    self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
+                    // (a Haas's G92 works as Setting 33 says: not kept, resumed.rs)
+                    let kept = self.shift_kept().filter(|_| !self.config.haas);
+                    self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()));
+                    self.shift_work = kept;
                 }
                 // an Okuma mill's G53-G59 are its tool length offsets' cancel and axes (OSP
                 // List of G Codes): no machine coordinates, no work system (G15 H selects it)

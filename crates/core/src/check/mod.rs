@@ -1744,12 +1744,17 @@ pub struct Checker {
     /// The caller's moves after a call of a body read later, judged at its return
     /// ([`resumed`]).
     resumed: Option<Box<resumed::Resumed>>,
-    /// The line of the last block that calls, and its X, Y and Z before it ([`resumed`]).
-    call_from: (usize, [Option<Dec>; 3]),
-    /// A G54-G59 selection changed the work system after a position was known: the work
-    /// position the checker holds is the old system's, so a call's start is not taken from
-    /// it ([`resumed`]).
-    selected_from_position: bool,
+    /// The line of the last block that calls, and its X, Y and Z and G91 before it
+    /// ([`resumed`]).
+    call_from: (usize, [Option<Dec>; 3], bool),
+    /// The axes (their places' bits) whose work position a G54-G59 selection left as the old
+    /// system's (not re-expressed into the new one, or taken back by a loop): a call's start
+    /// is not taken from them ([`resumed`]).
+    selected_stale: u16,
+    /// The work system in force where the offsets were taken as lost by a G52 or G92 alone
+    /// (limits.rs): with the shift followed, a call's body and the caller's moves after it
+    /// are judged under both ([`resumed`]). Any other loss, or a selection, ends it.
+    shift_work: Option<i64>,
     /// The system a G54-G59 selection re-expressed the held position into and those axes
     /// ([`Checker::selection_reexpressed`]): under it, a position after the selection is the
     /// new system's, judged as a machine position, and an increment does not join the span
@@ -2103,8 +2108,9 @@ impl Checker {
             work_call: None,
             call_modes: Vec::new(),
             resumed: None,
-            call_from: (0, [None; 3]),
-            selected_from_position: false,
+            call_from: (0, [None; 3], false),
+            selected_stale: 0,
+            shift_work: None,
             reexpressed: None,
             numbered: false,
             #[cfg(debug_assertions)]
@@ -3136,6 +3142,9 @@ impl Checker {
         }
         // a jump or a call the checker does not follow: a statement, or a calling word
         if calls {
+            // (where a call of a body read later is made from, and in which G90/G91, before
+            // the call forgets them: resumed.rs)
+            self.call_from = (b.line, before.xyz, before.incremental);
             self.call_unread_here = false;
             self.early_calls();
             // (the shift the call is made under, before a G52 its program leaves on is
@@ -3145,10 +3154,6 @@ impl Checker {
                 self.shift_call(b);
             }
             self.call_made(b);
-        }
-        if calls {
-            // (where a call of a body read later is made from: resumed.rs)
-            self.call_from = (b.line, before.xyz);
         }
         if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             let never = !calls && self.flow_never(b);

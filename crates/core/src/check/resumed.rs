@@ -19,6 +19,10 @@
 //! body or another) from where the caller's moves after the call before end (calls81): the
 //! calls judged in turn as their bodies return, whatever the bodies' order in the file.
 //!
+//! From the position a G54-G59 selection before the call re-expressed in the selected
+//! system, under a G52 or G92 of the caller's whose shift is followed, and through a Haas
+//! M97 body that runs on into the next one a call names (calls82).
+//!
 //! Only where all of it is surely known: calls of the first program of the file, not behind
 //! a jump or condition, under a work offset known (no G10, shift, frame, polar mode), in
 //! blocks that move nothing and enter no sequence number (no Q), a repeat count of 1 to
@@ -111,6 +115,9 @@ struct Call {
     /// The work offset (G`work`) in force, each judged axis's value (the profile's units).
     work: i64,
     offset: [Option<crate::decimal::Dec>; AXES],
+    /// The G52 or G92 shift in force at the call, each judged axis's (the profile's units):
+    /// the body runs under it, and the caller's moves after it until it writes another.
+    shift: [f64; AXES],
     /// The caller's units to the profile's.
     factor: f64,
     /// The motion code in force at the call.
@@ -170,6 +177,11 @@ struct Body {
     blocks: usize,
     /// The variables it set to a number, still holding it, and their values.
     set: Vec<(u64, crate::decimal::Dec)>,
+    /// A Haas's local subprogram (M97) that runs on, with no M99 before it, into the one at
+    /// the next sequence number a call names (its key): its run goes on through that
+    /// body's blocks to its M99 (Haas Mill Operator's Manual, M97: the subprogram runs from
+    /// its sequence number to its M99; the N words between are no end).
+    then: Option<i64>,
 }
 
 /// A Custom Macro B assignment statement of a local or common variable (`#1=0`, `#100 =
@@ -246,6 +258,7 @@ impl Checker {
                 start: [None; AXES],
                 work: p.work,
                 offset: p.offset,
+                shift: p.shift,
                 factor: p.factor,
                 motion: None,
                 named: String::new(),
@@ -263,13 +276,29 @@ impl Checker {
             return;
         }
         let family = self.config.family;
-        let work = self.work.filter(|_| {
-            !self.offsets_lost
-                && !self.offsets_written.any()
-                && !self.offsets_written.moved
-                && self.work_guessed.is_none()
-                && !self.shifts_on()
-        });
+        let work = self
+            .work
+            .filter(|_| !self.offsets_lost && !self.offsets_written.moved)
+            // (the offsets taken as lost by a G52 or G92 of the caller's alone, its shift
+            // followed: below)
+            .or(self.shift_work.filter(|_| self.offsets_lost))
+            .filter(|_| !self.offsets_written.any() && self.work_guessed.is_none());
+        // (a G52 or G92 of the caller's own followed (limits.rs, `shift_of`: a FANUC's or
+        // Haas mill's G52 under G90, a G92 where the position before it is known) is in
+        // force at the call: the body runs under it, as the caller's moves after it do
+        // (FANUC 0i-F / 30i-B Operator's Manual, "Local coordinate system" (G52) and
+        // "Setting a workpiece coordinate system" (G92): the shift holds until another
+        // G52 or G92 or a reset, a call and M99 end neither; Haas NGC Mill Operator's
+        // Manual, G52 and G92; LinuxCNC G92 offsets, rs274 -g). A shift not followed (its
+        // amount not known: `offsets_written.shifted`, a local shift not known, one a
+        // program read before may have left) leaves main's reading; a G52 the body writes
+        // makes it not known, below)
+        let shift = self
+            .call_shift()
+            .filter(|_| self.offsets_written.shifted == 0 && !self.shift_unsure);
+        let Some(shift) = shift else {
+            return;
+        };
         let s = &self.machine.state;
         if !matches!(family, Family::MacroB | Family::LinuxCnc)
             || self.machine.settings.fanuc_lathe
@@ -295,6 +324,7 @@ impl Checker {
         // (Z not under a tool length offset: the profile gives no tool lengths)
         let length = s.length_offset != 49 || self.length_decimal;
         let mut offset = [None; AXES];
+        let shift = JUDGED.map(|i| shift[i]);
         for &(g, axis, value) in &self.config.work_offsets {
             if g != work {
                 continue;
@@ -304,18 +334,27 @@ impl Checker {
             }
         }
         // (LinuxCNC's M98 forgets the position before its later call is kept: the one
-        // before the block, which moves nothing)
+        // before the block, which moves nothing; a FANUC's or Haas's call takes the mode as
+        // G91 before it is kept, called.rs `call_mode_lost`: the mode before the block, which
+        // writes none. Taken as G91, a body's move before its own G90/G91 ran from the
+        // start as an increment: `G0 X50.` / `M98 P2000` of `G0 X100.` / `G91` / `G0 X620.`
+        // runs at 720, inside, and was "X goes to 770")
         let from = self.call_from;
-        // (after a G54-G59 selection from another system the position held is the old
-        // system's work position, while the real run keeps the machine position: `G54` /
-        // `G0 X-650.` / `G57` / a call of a body that leaves G91 after `G91 G0 X10.` / `G0
-        // X-100.` on G57 X -300 runs at machine -740 (rs274), not -1040, so no increment
-        // after the call is placed from it)
-        let selected = self.selected_from_position;
+        let here = from.0 == self.last_line;
+        // (after a G54-G59 selection from another system the real run keeps the machine
+        // position: where the selection re-expressed the work position held in the new
+        // system (limits.rs, `selection_reexpressed`: new work = old work + old offset - new
+        // offset) the body runs from there, under the selected system (review 81-calls81
+        // f_sel1: `G54` / `G0 X0` / `G55` (X -100) / `M98 P2000` of `G91 G0 X100.` / `G0
+        // X600.` / `G0 X100.` runs at machine 100, 700, 800); an axis it left the old
+        // system's (a loop that may come back, an offset not known) is not placed from it:
+        // `G54` / `G0 X-650.` / `G57` / a call of a body that leaves G91 after `G91 G0 X10.`
+        // / `G0 X-100.` on G57 X -300 runs at machine -740 (rs274), not -1040)
+        let stale = self.selected_stale;
         let start = JUDGED.map(|i| {
             s.position[i]
-                .or(from.1[i].filter(|_| from.0 == self.last_line))
-                .filter(|_| !selected)
+                .or(from.1[i].filter(|_| here))
+                .filter(|_| stale & 1 << i == 0)
                 .map(|v| v.to_f64())
         });
         let call = Call {
@@ -323,10 +362,11 @@ impl Checker {
             line: self.last_line,
             runs: 1,
             chained: false,
-            incremental: s.incremental,
+            incremental: if here { from.2 } else { s.incremental },
             start,
             work,
             offset,
+            shift,
             factor: self.to_profile_units(false),
             motion: s.motion,
             named: String::new(),
@@ -351,12 +391,30 @@ impl Checker {
         };
         if std::mem::take(&mut r.due) {
             self.resumed_finished(&mut r);
-        } else if let Some(body) = r.bodies.last_mut().filter(|body| !body.returned) {
+        } else if let Some(last) = r.bodies.last().filter(|body| !body.returned) {
+            let local = |k: i64| {
+                (super::structure::LOCAL_BODY..super::structure::LATER_DEFINITION).contains(&k)
+            };
+            let next = self.in_hand.filter(|&k| {
+                self.config.haas
+                    && local(last.key)
+                    && local(k)
+                    && r.calls.iter().any(|c| c.key == k)
+                    && r.bodies.iter().all(|body| body.key != k)
+            });
+            let n = r.bodies.len() - 1;
+            let body = &mut r.bodies[n];
             if self.in_hand == Some(body.key) {
                 self.resumed_body(body, b);
                 if body.returned {
                     self.resumed_finished(&mut r);
                 }
+            } else if let Some(k) = next.filter(|_| body.sure && body.dead.is_none()) {
+                // (a local subprogram runs on into the next one a call names: followed
+                // there, its return the end of both)
+                body.then = Some(k);
+                body.returned = true;
+                self.resumed_begun(&mut r, k, b);
             } else {
                 // (another program begins before its return: not known, and the next
                 // body's first block, if this is one, is not followed either)
@@ -369,28 +427,7 @@ impl Checker {
                 && r.caller != Some(k)
                 && r.bodies.iter().all(|body| body.key != k)
         }) {
-            // (a body begins: its first block, `O2000`, `N100 ...`, `o100 sub`)
-            let mut body = Body {
-                key,
-                sure: r.calls.iter().all(|c| c.key != key || c.checked),
-                wrote: None,
-                motion: None,
-                steps: Vec::new(),
-                dead: None,
-                goto: None,
-                returned: false,
-                blocks: 0,
-                set: Vec::new(),
-            };
-            for c in &mut r.calls {
-                c.recording = false;
-            }
-            self.resumed_body(&mut body, b);
-            let returned = body.returned;
-            r.bodies.push(body);
-            if returned {
-                self.resumed_finished(&mut r);
-            }
+            self.resumed_begun(&mut r, key, b);
         } else if r.bodies.is_empty() {
             if self.in_hand == r.caller {
                 // (the caller's end as a main program: M02, M30)
@@ -408,6 +445,32 @@ impl Checker {
             self.resumed_caller(&mut r, b);
         }
         self.resumed = Some(r);
+    }
+
+    /// A body begins (`key`): its first block, `O2000`, `N100 ...`, `o100 sub`.
+    fn resumed_begun(&mut self, r: &mut Resumed, key: i64, b: &BlockView<'_>) {
+        let mut body = Body {
+            key,
+            sure: r.calls.iter().all(|c| c.key != key || c.checked),
+            wrote: None,
+            motion: None,
+            steps: Vec::new(),
+            dead: None,
+            goto: None,
+            returned: false,
+            blocks: 0,
+            set: Vec::new(),
+            then: None,
+        };
+        for c in &mut r.calls {
+            c.recording = false;
+        }
+        self.resumed_body(&mut body, b);
+        let returned = body.returned;
+        r.bodies.push(body);
+        if returned {
+            self.resumed_finished(r);
+        }
     }
 
     /// How many times the body of `c` runs by the word `w` (P, L) of its call's block, whose
@@ -783,12 +846,20 @@ impl Checker {
         }
         while !r.broken && r.judged < r.calls.len() {
             let c = &r.calls[r.judged];
-            let Some(body) = r.bodies.iter().find(|body| body.key == c.key) else {
-                // (its body not read yet: judged at its return)
-                return;
-            };
-            if !body.returned {
-                return;
+            // (its body, and those it runs on into, in turn: each returned, or judged at
+            // its return)
+            let mut chain: Vec<&Body> = Vec::new();
+            let mut key = Some(c.key);
+            while let Some(k) = key.filter(|_| chain.len() < r.bodies.len()) {
+                let Some(body) = r.bodies.iter().find(|body| body.key == k) else {
+                    // (its body not read yet: judged at its return)
+                    return;
+                };
+                if !body.returned {
+                    return;
+                }
+                chain.push(body);
+                key = body.then;
             }
             let entry = if c.chained {
                 r.carry
@@ -799,11 +870,13 @@ impl Checker {
                     motion: c.motion,
                 })
             };
+            let steps = chain.iter().map(|body| body.steps.len()).sum::<usize>();
             let known = c.checked
-                && body.sure
-                && body.dead.is_none()
-                && body.goto.is_none()
-                && body.steps.len().saturating_mul(c.runs as usize) <= STEPS;
+                && key.is_none()
+                && chain
+                    .iter()
+                    .all(|body| body.sure && body.dead.is_none() && body.goto.is_none())
+                && steps.saturating_mul(c.runs as usize) <= STEPS;
             let Some(mut at) = entry.filter(|_| known) else {
                 r.broken = true;
                 return;
@@ -812,7 +885,7 @@ impl Checker {
             // body that leaves G91 moves again at each pass, one that leaves G90 ends where
             // it ends)
             for _ in 0..c.runs {
-                for step in &body.steps {
+                for step in chain.iter().flat_map(|body| &body.steps) {
                     match *step {
                         Step::Mode(g91) => at.incremental = g91,
                         Step::Axis(k, v) if at.incremental => at.at[k] = at.at[k].map(|a| a + v),
@@ -820,8 +893,13 @@ impl Checker {
                     }
                 }
             }
-            at.motion = body.motion.or(at.motion);
-            let carry = self.resumed_judged(c, body, at);
+            at.motion = chain
+                .iter()
+                .rev()
+                .find_map(|body| body.motion)
+                .or(at.motion);
+            let wrote = chain.iter().rev().find_map(|body| body.wrote);
+            let carry = self.resumed_judged(c, wrote, at);
             r.carry = carry;
             r.judged += 1;
         }
@@ -831,13 +909,13 @@ impl Checker {
     pub(super) fn resumed_leaves(&self, key: i64) -> Option<Option<bool>> {
         let r = self.resumed.as_ref()?;
         let body = r.bodies.iter().find(|body| body.key == key)?;
-        (body.returned && body.sure).then_some(body.wrote)
+        (body.returned && body.sure && body.then.is_none()).then_some(body.wrote)
     }
 
     /// The caller's moves after call `c` judged from `at`, where the runs of `body` leave the
     /// tool, in the mode they leave: a TG601 at each position beyond the travel that begins
     /// an excursion. Where they end (None: not known).
-    fn resumed_judged(&mut self, c: &Call, body: &Body, at: Carry) -> Option<Carry> {
+    fn resumed_judged(&mut self, c: &Call, wrote: Option<bool>, at: Carry) -> Option<Carry> {
         let enabled = self.selection.enabled(Rule::TravelExceeded);
         let Carry {
             mut at,
@@ -867,7 +945,7 @@ impl Checker {
                     continue;
                 };
                 let work = work * c.factor;
-                let machine = work + offset.to_f64();
+                let machine = work + c.shift[k] + offset.to_f64();
                 let side = super::limits::travel_side(machine, (low, high));
                 if side == 0 || side == outside[k] {
                     outside[k] = side;
@@ -887,7 +965,7 @@ impl Checker {
                 } else {
                     String::new()
                 };
-                let why = match (m.own, body.wrote) {
+                let why = match (m.own, wrote) {
                     (Some(_), _) => format!(
                         "read in the caller's own G{g} after {name} of line {line}, whose \
                          program writes no work offset"
@@ -902,11 +980,16 @@ impl Checker {
                          writes no G90/G91 and no work offset"
                     ),
                 };
+                let shifted = if c.shift[k] == 0.0 {
+                    String::new()
+                } else {
+                    format!(" + shift {}", super::round6(c.shift[k]))
+                };
                 said.push(Finding {
                     rule: Rule::TravelExceeded,
                     message: format!(
-                        "{} goes to {} in machine coordinates (work {} + G{} offset {}), \
-                         outside the travel {low} to {high} ({why})",
+                        "{} goes to {} in machine coordinates (work {}{shifted} + G{} offset \
+                         {}), outside the travel {low} to {high} ({why})",
                         super::AXES[JUDGED[k]] as char,
                         super::round6(machine),
                         super::round6(work),
