@@ -29,6 +29,19 @@ def rs274_env() -> dict[str, str]:
 # same interval (dnc.gateway.Gateway.start).
 sys.setswitchinterval(0.0005)
 
+# A test's timeout guards against a hang, never its speed (speed is measured by benchmarks). A
+# test whose work takes many seconds has a timeout proportional to that work: the CPU seconds it
+# takes alone, times the most wall time a CPU second was seen to take in a suite on a loaded
+# 2-core machine (19 s, with three busy loops beside it on a machine already at load 20),
+# with room over it.
+WALL_PER_CPU_SECOND = 30
+
+
+def timeout_for_work(cpu_seconds: float) -> pytest.MarkDecorator:
+    """The timeout of a test that takes ``cpu_seconds`` of CPU alone (at least the suite's
+    default of 60 s)."""
+    return pytest.mark.timeout(max(60, round(cpu_seconds * WALL_PER_CPU_SECOND)))
+
 
 
 @pytest.fixture(autouse=True, scope="session")
