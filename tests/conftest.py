@@ -8,6 +8,15 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
+
+# Hypothesis's own clocks are timed assertions (an example's 200 ms deadline; the health check
+# that fails a test whose examples take long to generate): under load they fail a test whose
+# behaviour is right (test_classification.py's 3,000 strings failed "too_slow" beside the
+# suite). Speed is measured by benchmarks; a hang is caught by the test's timeout.
+settings.register_profile("suite", deadline=None,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile("suite")
 
 _RS274_HOME: list[str] = []
 
@@ -28,6 +37,19 @@ def rs274_env() -> dict[str, str]:
 # UART interrupt would, not after another thread's 5 ms time slice. The gateway itself sets the
 # same interval (dnc.gateway.Gateway.start).
 sys.setswitchinterval(0.0005)
+
+# A test's timeout guards against a hang, never its speed (speed is measured by benchmarks). A
+# test whose work takes many seconds has a timeout proportional to that work: the CPU seconds it
+# takes alone, times the most wall time a CPU second was seen to take in a suite on a loaded
+# 2-core machine (19 s, with three busy loops beside it on a machine already at load 20),
+# with room over it.
+WALL_PER_CPU_SECOND = 30
+
+
+def timeout_for_work(cpu_seconds: float) -> pytest.MarkDecorator:
+    """The timeout of a test that takes ``cpu_seconds`` of CPU alone (at least the suite's
+    default of 60 s)."""
+    return pytest.mark.timeout(max(60, round(cpu_seconds * WALL_PER_CPU_SECOND)))
 
 
 

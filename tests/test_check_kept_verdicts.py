@@ -10,12 +10,15 @@ diameter mode, a skipped block, a statement, a subprogram's end."""
 
 from __future__ import annotations
 
+import functools
+
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from formats.profile import load_profile
+from formats.profile import Profile, load_profile
 from postproc.check import Checker
+from tests.conftest import timeout_for_work
 
 # per profile: groups of blocks that change what a word means or how it is read (each group
 # the alternatives of one mode, a program toggling between them), and its language's
@@ -119,17 +122,21 @@ def program(draw: st.DrawFn) -> tuple[str, str]:
     return profile, "\n".join(x for x in (head, body, end) if x) + "\n"
 
 
+@functools.cache
+def built_in(name: str) -> Profile:
+    """A built-in profile, loaded once (each run has a fresh checker of its own)."""
+    return load_profile(name)
+
+
 def findings(text: str, profile_name: str, keep: bool) -> list[tuple[str, int, int, str]]:
-    profile = load_profile(profile_name)
+    profile = built_in(profile_name)
     checker = Checker(profile, "<generated>")
     checker._core.keep_verdicts(keep)
     return [(f.rule, f.line, f.column, f.message)
             for f in checker.run_stream([text], profile.dialect)]
 
 
-# 1,500 programs take 20-25 s of CPU; on a loaded 2-core machine their wall time passes the
-# suite's 60 s default, so this test alone has a longer bound
-@pytest.mark.timeout(300)
+@timeout_for_work(17)  # measured: the 1,500 examples take 17 s of CPU alone
 @settings(max_examples=1500, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(program())
 def test_kept_verdicts_find_what_the_rules_asked_afresh_find(case: tuple[str, str]) -> None:

@@ -19,6 +19,7 @@ from formats.parser import parse_stream
 from formats.profile import load_profile, profile_from_text
 from postproc.check import Checker
 from tests import words as shared
+from tests.conftest import timeout_for_work
 
 ABSOLUTE = profile_from_text(
     'name = "absolute-ijk"\n'
@@ -106,6 +107,7 @@ def both(text: str, profile_index: int, chunk: int) -> tuple[Checker, list, Chec
     return reference, expected, fast, found
 
 
+@timeout_for_work(3.6)  # measured: the 400 examples take 3.6 s of CPU alone
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(program(), st.integers(0, len(PROFILES) - 1), st.sampled_from([5, 64, 1 << 20]))
 def test_text_and_blocks_give_the_same_findings(text: str, which: int, chunk: int) -> None:

@@ -32,10 +32,18 @@ from dnc.gateway import Gateway, State
 from dnc.link import chars_per_second, open_port
 from dnc.sender import FlowSettings
 from formats.profile import load_profile
-from tests.test_dnc_serial import cli, control_for, expected_bytes, program
+from tests.test_dnc_serial import (
+    Sightings,
+    assert_obeyed,
+    cli,
+    control_for,
+    expected_bytes,
+    program,
+    sightings,
+)
 from tests.test_gateway import entries, free_port, running, until
 
-__all__ = ["running"]  # the gateway fixture, used below
+__all__ = ["running", "sightings"]  # the gateway and sender fixtures, used below
 
 SER2NET = shutil.which("ser2net", path=os.pathsep.join(
     [os.environ.get("PATH", ""), "/usr/sbin", "/usr/local/sbin"]))
@@ -116,35 +124,46 @@ def emulator(**kw: object) -> Emulator:
 
 
 def test_a_throttling_control_behind_a_device_server_is_never_overrun(
-        tmp_path: Path, device_server: Callable[..., Ser2net]) -> None:
-    """DC3 reaches the sender through the device server and pyserial's reader thread: no more
-    than the allowance after any DC3 (it was 10,733 when the port select()ed on the socket the
-    thread was draining, since the DC3 never reached the sender), and the program arrives
+        tmp_path: Path, device_server: Callable[..., Ser2net],
+        sightings: Callable[[], Sightings]) -> None:
+    """DC3 reaches the sender through the device server and pyserial's reader thread, and is
+    obeyed (it was not when the port select()ed on the socket the thread was draining: the DC3
+    never reached the sender, 10,733 characters after it), and the program arrives
     byte-exact. At 4800 baud, the setting of the shop that found it.
 
     The DC3 passes through ser2net, a process of its own, on its way: on a busy machine it can
     take tens of milliseconds (20 ms was seen at 9600 baud beside the whole suite, 90 ms on a
     machine running five times more than its cores), longer than the allowance lasts. So the
-    sender is told so (``--dc3-reaction``, see docs/dnc.md), as a shop sets it for a device
-    server on a busy network: it then never sends faster than the allowance covers."""
+    sender is told so (``--dc3-reaction 0.03``, see docs/dnc.md), as a shop sets it for a
+    device server on a busy network: it then sends at most (10 - 2 ahead) / 30 ms = 267
+    characters a second. Each DC3 is held to what the sender could send before it read it
+    (:func:`assert_obeyed`: what it had ahead, the pace over the DC3's delay, 2), and one seen
+    within the allowance's time, (10 - 2 - 2) / 267 = 22.5 ms, to the allowance. Sent again
+    (a fresh control and server) until a DC3 was seen in time: on a loaded machine a send may
+    see every DC3 late, or the sender, waiting for a core, may never fill the buffer."""
     baud, reaction = 4800, 0.03
     cps = chars_per_second(replace(FANUC, baud=baud))
     src = tmp_path / "p.nc"
     src.write_text(program(15))
-    emu = emulator(baud=baud, buffer=48, rate=cps / 3)
-    server = device_server(emu.path)
-    try:
-        result = cli("send", str(src), "--port", server.url, "-p", "fanuc-mill", "--baud",
-                     str(baud), "--xon-timeout", "10", "--dc3-reaction", str(reaction))
-        assert result.exit_code == 0, result.output
-        assert emu.wait(10)
-    finally:
-        emu.stop()
-    stats = emu.control.stats
-    assert stats.dc3 >= 1  # it did throttle
-    assert stats.alarms_087 == 0 and stats.most_after_dc3 <= FANUC.overrun_allowance, stats
-    assert emu.control.sink.getvalue() == expected_bytes(  # type: ignore[union-attr]
-        "fanuc-mill", src.read_text())
+    for _ in range(8):
+        seen = sightings()
+        emu = emulator(baud=baud, buffer=48, rate=cps / 3)
+        server = device_server(emu.path)
+        try:
+            result = cli("send", str(src), "--port", server.url, "-p", "fanuc-mill", "--baud",
+                         str(baud), "--xon-timeout", "10", "--dc3-reaction", str(reaction))
+            assert result.exit_code == 0, result.output
+            assert emu.wait(10)
+        finally:
+            emu.stop()
+            server.stop()
+        assert seen.cps == (FANUC.overrun_allowance - 2) / reaction
+        assert emu.control.sink.getvalue() == expected_bytes(  # type: ignore[union-attr]
+            "fanuc-mill", src.read_text())
+        if assert_obeyed(emu.control.stats, seen, FANUC.overrun_allowance, cps):
+            break
+    else:
+        pytest.fail("no DC3 seen in time in 8 sends")  # the claim put to the test
 
 
 def test_the_settings_travel_and_an_unanswered_modem_control_request_does_not_hang(
