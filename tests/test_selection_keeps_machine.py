@@ -275,6 +275,22 @@ INLINE = [
     # machine's span whatever G58's offset) is said, as main said it
     ("G58 / G0 X-700. / G0 X800. / G57 / G91 G0 X30. / G90", [-700.0, 800.0, 830.0],
      (6, "X spans 1530")),
+    # re-expressed into G57 (work -400), then G58, not in the profile: the re-expression is
+    # taken back (main's work value -700), as the machine position is G54's -700 again where
+    # G54 comes back: -100 from machine -700 is -800, beyond; was silent (the re-expressed
+    # -400 carried through G58 into G54 as its work value: -500)
+    ("G54 / G0 X-700. / G57 / G58 / G54 / G91 G0 X-100. / G90", [-700.0, -800.0],
+     (7, "X goes to -800")),
+    # its twin from 700: +100 is 800, beyond; was "X goes to 1100" (1000 + 100 under G54)
+    ("G54 / G0 X700. / G57 / G58 / G54 / G91 G0 X100. / G90", [700.0, 800.0],
+     (7, "X goes to 800")),
+    # ... from -600: -700, inside
+    ("G54 / G0 X-600. / G57 / G58 / G54 / G91 G0 X-100. / G90", [-600.0, -700.0], None),
+    # re-expressed into G57, then G58 and a move of 1700 under it: a span of 1700 whatever
+    # G58's offset (rs274's var file: 0, machine -650 then 1050); was "X spans 2000 (from
+    # -650 to 1350)", G54's -650 against G57's re-expressed -350 + 1700 (review 81-sel81 s3)
+    ("G54 / G0 X-650. / G57 / G58 / G91 G0 X1700. / G90", [-650.0, 1050.0],
+     (6, "X spans 1700 (from -650 to 1050)")),
 ]
 
 

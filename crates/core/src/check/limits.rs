@@ -671,6 +671,9 @@ impl Checker {
         // (the same system selected again keeps what was re-expressed into it)
         if !same {
             self.reexpressed = (moved != 0).then_some((g, moved));
+            if self.reexpressed_held.is_some() {
+                self.reexpression_taken_back(moved);
+            }
         }
         left |= moved;
         if left != 0 {
@@ -808,6 +811,43 @@ impl Checker {
             }
             self.reexpressed = None;
         } else if held.0 != 0 {
+            self.reexpressed_held = Some(held);
+        }
+    }
+
+    /// A selection of another system that re-expressed only the axes `moved` (those of a
+    /// system not known, or a value not known, are not): on every other axis still held from
+    /// an earlier re-expression ([`Checker::reexpression_held`]), the re-expression is taken
+    /// back, the position main holds (the work value of the system it was placed under, the
+    /// increments since added to it), which the run's machine position is again where that
+    /// system comes back. Kept, a value re-expressed into one system was carried into the
+    /// next as its work value: `G54` / `G0 X-700.` / `G57` (re-expressed -400) / `G58` (not
+    /// given) / `G54` / `G91 G0 X-100.` on G54 X0, G57 X-300 held -400 under G54 again and
+    /// said nothing, where the real run keeps machine -700 through the three selections and
+    /// goes to -800, beyond the travel's -762 (rs274, LinuxCNC interp_convert.cc
+    /// `convert_coordinate_system`; the FANUC's and Haas's selection likewise moves no axis);
+    /// a span across the unknown system's move took the re-expressed value for main's
+    /// (review 81-sel81 s3: "X spans 2000 (from -650 to 1350)" for a move of 1700).
+    #[cold]
+    #[inline(never)]
+    fn reexpression_taken_back(&mut self, moved: u16) {
+        let Some(mut held) = self.reexpressed_held.take() else {
+            return;
+        };
+        let back = held.0 & !moved;
+        if back != 0 {
+            #[cfg(debug_assertions)]
+            {
+                self.position_reexpressed = true;
+            }
+        }
+        for i in crate::modal::places(u32::from(back)) {
+            let s = &mut self.machine.state;
+            s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
+            held.0 &= !(1 << i);
+            held.1[i] = Dec::ZERO;
+        }
+        if held.0 != 0 {
             self.reexpressed_held = Some(held);
         }
     }
