@@ -210,6 +210,13 @@ impl Shifts {
 /// Why a shift of an axis is not followed ([`Checker::shift_of`]).
 type NotKnown = String;
 
+/// A re-expression held ([`Checker::reexpression_held`]): the axes (their places' bits) whose
+/// position is still the one a selection re-expressed, the delta added to each, and main's
+/// finding of a position after a sequence number while it was held, with its line
+/// ([`Checker::reexpression_shadow`]), and the system each axis's position was re-expressed
+/// into.
+pub(super) type Held = (u16, [Dec; 9], Option<Box<(usize, String)>>, [i64; 9]);
+
 /// An exact rotation or scaling: a position's X Y Z before the frame is
 /// `centre + m (p - centre)`, in the profile's units.
 #[derive(Debug, Clone)]
@@ -664,16 +671,19 @@ impl Checker {
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+        // (and the axes a re-expression holds, in the coordinates of the system it
+        // re-expressed them into, however many selections of systems not known since)
+        let held = self.reexpressed_held.as_ref().map_or(0, |h| h.0);
         let moved = match from {
-            Some(from) if positions != 0 => self.selection_reexpressed(from, g, positions),
+            Some(from) if positions | held != 0 => {
+                self.selection_reexpressed(from, g, positions | held)
+            }
+            None if held != 0 && !same => self.selection_reexpressed(g, g, held),
             _ => 0,
         };
         // (the same system selected again keeps what was re-expressed into it)
         if !same {
             self.reexpressed = (moved != 0).then_some((g, moved));
-            if self.reexpressed_held.is_some() {
-                self.reexpression_taken_back(moved);
-            }
         }
         left |= moved;
         if left != 0 {
@@ -693,12 +703,14 @@ impl Checker {
     /// G53, a G92, a code's data) is left as the block left it. The axes re-expressed.
     /// Whether the run may come back over the block in hand, a second pass the checker does
     /// not read: inside a LinuxCNC loop or condition; in a FANUC's or Haas's program after a
-    /// jump or loop statement or a sequence number a `GOTO` or `M99 P` may jump back to.
+    /// jump or loop statement. (A FANUC's or Haas's sequence number a later `GOTO` or `M99 P`
+    /// may jump back to is a label only until that jump is read: [`Checker::reexpression_held`]
+    /// keeps main's judgement of the positions after it, said where the run comes back.)
     fn run_may_come_back(&self) -> bool {
         if self.config.family == Family::LinuxCnc {
             !self.linuxcnc_open_flow.is_empty()
         } else {
-            self.jumped || self.numbered
+            self.jumped
         }
     }
 
@@ -708,16 +720,17 @@ impl Checker {
         // (not where the run may come back over the selection, a second pass beginning from
         // the machine position the first left, which the checker does not read: inside a
         // LinuxCNC loop or condition; in a FANUC's or Haas's program after a jump or loop
-        // statement or a sequence number, at or before the selection, that a `GOTO` or `M99
-        // P` after it may jump back to. There the work value held is kept, as main kept it:
-        // its judgement of the first pass refused `G54` / `G0 X-700.` / a loop of two
-        // passes of `G57` / `G91 G0 X-50.` / `G90` / `G54`, which runs at -800 on the
-        // second; review 81-sel81 R1)
+        // statement. There the work value held is kept, as main kept it: its judgement of
+        // the first pass refused `G54` / `G0 X-700.` / a loop of two passes of `G57` / `G91
+        // G0 X-50.` / `G90` / `G54`, which runs at -800 on the second; review 81-sel81 R1.
+        // After a FANUC's or Haas's sequence number, which a jump read later may go back
+        // to, main's judgement is kept beside it: Checker::reexpression_shadow)
         let back = self.run_may_come_back();
         if back {
             return 0;
         }
         let known = axes & self.known_axes(to);
+        let carried = self.reexpressed_held.as_ref().map_or(0, |h| h.0);
         let factor = self.to_profile_units(false);
         let given = self.values.given();
         let placed = self.values.has_g(53)
@@ -726,6 +739,17 @@ impl Checker {
         let mut moved = 0;
         for i in crate::modal::places(u32::from(known)) {
             if given & bit(AXES[i]) != 0 && placed {
+                continue;
+            }
+            // (an axis held: from the system its position was re-expressed into, where a
+            // selection of a system not known came between, `G54` / `G0 X700.` / `G57` /
+            // `G58` / `G57` / `G91 G0 X100.` at machine 800, review 82-sel82 R1; where that
+            // is the new one, its position is already the new system's)
+            let from = match &self.reexpressed_held {
+                Some(h) if carried & 1 << i != 0 => h.3[i],
+                _ => from,
+            };
+            if from == to || self.known_axes(from) & 1 << i == 0 {
                 continue;
             }
             let (Some(old), Some(new), Some(at)) = (
@@ -748,7 +772,7 @@ impl Checker {
             moved |= 1 << i;
             let held = self
                 .reexpressed_held
-                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9])));
+                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9], None, [0; 9])));
             // (added to the delta held on the axis, or from none where it holds none)
             let before = if held.0 & 1 << i != 0 {
                 held.1[i]
@@ -756,6 +780,7 @@ impl Checker {
                 Dec::ZERO
             };
             held.0 |= 1 << i;
+            held.3[i] = to;
             held.1[i] = now
                 .checked_add(-at)
                 .and_then(|d| before.checked_add(d))
@@ -774,6 +799,14 @@ impl Checker {
     /// 81-sel81 R5: `G54` / `G0 X-700.` / `G57` / a loop of two `G91 G0 X-50.` runs at -800
     /// on the second pass, refused by main's -1050 of the first). A call may place the
     /// position anew: no longer held.
+    ///
+    /// A FANUC's or Haas's block that may take the run back to a sequence number before it
+    /// (a jump, condition or loop statement; an `M99`, whose `P` names one, or without it
+    /// the program's start; an `M97`; a call, whose body's `M99 P` returns to the caller's
+    /// sequence number, FANUC 0i-F Operator's Manual, "Subprogram call (M98)"), where a
+    /// position after a sequence number went beyond the travel as main judged it
+    /// ([`Checker::reexpression_shadow`]): main's finding is said here, at the block the
+    /// second pass, which the checker does not read, begins from.
     #[cold]
     #[inline(never)]
     fn reexpression_held(&mut self, b: &BlockView<'_>) {
@@ -782,10 +815,26 @@ impl Checker {
         };
         let calls = b.statements.iter().any(|s| s.1 == Kind::Call)
             || b.words.iter().any(|w| {
-                w.letter == b'M' && matches!(w.number, b"98" | b"97")
+                w.letter == b'M' && matches!(w.number, b"98" | b"97" | b"198")
                     || w.letter == b'G' && matches!(w.number, b"65" | b"66")
             });
+        if held.2.is_some()
+            && (calls
+                || self.run_may_come_back()
+                || b.statements.iter().any(|s| s.1 == Kind::Flow)
+                || b.words
+                    .iter()
+                    .any(|w| w.letter == b'M' && matches!(w.number, b"99" | b"099")))
+        {
+            self.reexpressed_held = Some(held);
+            self.reexpression_comes_back(b.line);
+            let Some(back) = self.reexpressed_held.take() else {
+                return;
+            };
+            held = back;
+        }
         if calls {
+            self.reexpressed_held = Some(held);
             return;
         }
         let placed = self.values.has_g(53)
@@ -810,45 +859,79 @@ impl Checker {
                 s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
             }
             self.reexpressed = None;
-        } else if held.0 != 0 {
+        } else if held.0 != 0 || held.2.is_some() {
             self.reexpressed_held = Some(held);
         }
     }
 
-    /// A selection of another system that re-expressed only the axes `moved` (those of a
-    /// system not known, or a value not known, are not): on every other axis still held from
-    /// an earlier re-expression ([`Checker::reexpression_held`]), the re-expression is taken
-    /// back, the position main holds (the work value of the system it was placed under, the
-    /// increments since added to it), which the run's machine position is again where that
-    /// system comes back. Kept, a value re-expressed into one system was carried into the
-    /// next as its work value: `G54` / `G0 X-700.` / `G57` (re-expressed -400) / `G58` (not
-    /// given) / `G54` / `G91 G0 X-100.` on G54 X0, G57 X-300 held -400 under G54 again and
-    /// said nothing, where the real run keeps machine -700 through the three selections and
-    /// goes to -800, beyond the travel's -762 (rs274, LinuxCNC interp_convert.cc
-    /// `convert_coordinate_system`; the FANUC's and Haas's selection likewise moves no axis);
-    /// a span across the unknown system's move took the re-expressed value for main's
-    /// (review 81-sel81 s3: "X spans 2000 (from -650 to 1350)" for a move of 1700).
+    /// A block that may take the run back to a sequence number (line `at`: a jump, loop or
+    /// call statement, [`Checker::forget_at_jump`], or [`Checker::reexpression_held`]'s):
+    /// main's finding kept ([`Checker::reexpression_shadow`]) is said here.
     #[cold]
     #[inline(never)]
-    fn reexpression_taken_back(&mut self, moved: u16) {
-        let Some(mut held) = self.reexpressed_held.take() else {
+    pub(super) fn reexpression_comes_back(&mut self, at: usize) {
+        let Some((line, what)) = self
+            .reexpressed_held
+            .as_mut()
+            .and_then(|h| h.2.take())
+            .map(|f| *f)
+        else {
             return;
         };
-        let back = held.0 & !moved;
-        if back != 0 {
-            #[cfg(debug_assertions)]
-            {
-                self.position_reexpressed = true;
-            }
+        self.report(
+            Rule::TravelExceeded,
+            format!(
+                "{what}, as main judges the position held across a selection (line {line}): the \
+                 run may go back from here to a sequence number before it, a pass beginning \
+                 from the machine position the first left, which the checker does not read"
+            ),
+            at,
+            1,
+        );
+    }
+
+    /// A position of axis place `i` (`position`, in the program's units; `factor` to the
+    /// profile's) judged under the system in force while a re-expression is held on it, in
+    /// a FANUC's or Haas's program after a sequence number: main, which kept the work value
+    /// there, judged the position less the delta the re-expression added
+    /// ([`Checker::selection_reexpressed`]); where that is beyond the travel, main's finding
+    /// is kept (the first) and said where a block may take the run back
+    /// ([`Checker::reexpression_held`]): `N10 G57` / `G91 G0 X-50.` / `G90` / `G54` / `IF
+    /// [#1 LT 2] GOTO10` from G54's machine -700 runs -750 on the first pass (said so, the
+    /// re-expressed work -450 + G57 offset -300) and -800 on the second, refused by main's
+    /// "X goes to -1050" (review 81-sel81 R1, R6).
+    #[cold]
+    #[inline(never)]
+    fn reexpression_shadow(&mut self, i: usize, position: Dec, factor: f64, line: usize) {
+        let Some(held) = self.reexpressed_held.as_ref() else {
+            return;
+        };
+        if held.0 & 1 << i == 0 || held.2.is_some() {
+            return;
         }
-        for i in crate::modal::places(u32::from(back)) {
-            let s = &mut self.machine.state;
-            s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
-            held.0 &= !(1 << i);
-            held.1[i] = Dec::ZERO;
+        let (Some(work), Some((low, high))) = (self.work, self.travel.of(AXES[i])) else {
+            return;
+        };
+        let (Some(offset), Some(main)) =
+            (self.offset_value(work, i), position.checked_add(-held.1[i]))
+        else {
+            return;
+        };
+        let at = main.to_f64() * factor;
+        let machine_at = at + offset;
+        if travel_side(machine_at, (low, high)) == 0 {
+            return;
         }
-        if held.0 != 0 {
-            self.reexpressed_held = Some(held);
+        let what = format!(
+            "{} goes to {} in machine coordinates at line {line} (work {} + G{work} offset {}), \
+             outside the travel {low} to {high}",
+            AXES[i] as char,
+            round6(machine_at),
+            round6(at),
+            round6(offset)
+        );
+        if let Some(held) = self.reexpressed_held.as_mut() {
+            held.2 = Some(Box::new((line, what)));
         }
     }
 
@@ -3864,6 +3947,9 @@ impl Checker {
             let at = position.to_f64() * factor;
             if !self.config.work_offsets.is_empty() {
                 self.stats.travel_moves += 1;
+                if self.reexpressed_held.is_some() && self.numbered {
+                    self.reexpression_shadow(i, position, factor, line);
+                }
                 // (a span set aside at a selection joins again under G91, however it came in
                 // force: an M72's restore, a call's; review 78-lcnc78b F4)
                 // (and at a position outside a body read under its call's offset after they
