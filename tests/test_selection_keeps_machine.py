@@ -400,6 +400,15 @@ NUMBERED = [
     ("G54 / G0 X-700. / #100=0 / N10 G57 / G91 G0 X-50. / G90 / G54 / M98 P2000 / M30 / "
      "O2000 / N1 #100=#100+1 / N2 IF [#100 GE 2] GOTO 4 / N3 M99 P10 / N4 M99",
      (10, "X goes to -1050 in machine coordinates at line 7")),
+    # main's "-900" kept after N205 (-600 inside in truth) is dropped at the main program's
+    # end: no jump of it runs after M30, and the Haas body after it, which nothing calls, ends
+    # with an M99 that takes no run back here (review 82-sel82 R5)
+    ("G54 / G0 X-700. / G57 / G91 G0 X100. / G90 / M30 / N100 G0 X0. / M99", None),
+    # an M30 the block skip may pass over (`/M30`) is no end: main's "-1050" of line 7 is said
+    # at the GOTO after it (review 82-sel82 n29blockdel)
+    ("G54 / G0 X-700. / #1=0 / N10 G57 / G91 G0 X-50. / G90 / G54 / #1=#1+1 / /M30 / "
+     "IF [#1 LT 2] GOTO10 / M30",
+     (12, "X goes to -1050 in machine coordinates at line 7")),
 ]
 
 
@@ -414,3 +423,16 @@ def test_a_numbered_program_re_expresses_until_a_jump_may_come_back(
         assert found == []
     else:
         assert [(n, m[:len(said[1])]) for n, m in found] == [said], found
+
+
+def test_a_linuxcnc_n_word_is_no_label(tmp_path: Path) -> None:
+    """rs274 jumps to no N word (o-words only): a numbered LinuxCNC program keeps no judgement
+    of main's beside the re-expression (review 82-sel82 R6). Machine -700 kept across G57
+    (work -400), +100: machine -600, inside; main's work value would say "-900" (work -600 +
+    G57 offset -300), and was said at the `o100 if` line."""
+    text = ("N1 G21 G17 G90\nN2 G54\nN3 G0 X-700.\nN4 G57\nN5 G91 G0 X100.\nN6 G90\n"
+            "o100 if [1 EQ 1]\nN7 G0 Z0\no100 endif\nN8 M2\n")
+    found = [(f.line, f.message) for f in check_text(text, profile(tmp_path, "lcnc"))
+             if f.severity == "error"]
+    assert found == []
+    assert machine_moves(tmp_path, text)[:2] == pytest.approx([-700.0, -600.0])

@@ -833,6 +833,18 @@ impl Checker {
             };
             held = back;
         }
+        // (the main program's end: no jump of it runs after it, and a body after it runs
+        // only where a call read before it called it, where main's finding was said; not an
+        // end the block skip may pass over, `/M30`: review 82-sel82 n29blockdel)
+        if held.2.is_some()
+            && !b.skip
+            && b.skip_within.is_none()
+            && b.words
+                .iter()
+                .any(|w| w.letter == b'M' && matches!(w.number, b"2" | b"02" | b"30"))
+        {
+            held.2 = None;
+        }
         if calls {
             self.reexpressed_held = Some(held);
             return;
@@ -892,14 +904,15 @@ impl Checker {
 
     /// A position of axis place `i` (`position`, in the program's units; `factor` to the
     /// profile's) judged under the system in force while a re-expression is held on it, in
-    /// a FANUC's or Haas's program after a sequence number: main, which kept the work value
-    /// there, judged the position less the delta the re-expression added
+    /// a FANUC's or Haas's program after a sequence number (a LinuxCNC N word is no label:
+    /// rs274 jumps to none; review 82-sel82 R6): main, which kept the work value there,
+    /// judged the position less the delta the re-expression added
     /// ([`Checker::selection_reexpressed`]); where that is beyond the travel, main's finding
     /// is kept (the first) and said where a block may take the run back
-    /// ([`Checker::reexpression_held`]): `N10 G57` / `G91 G0 X-50.` / `G90` / `G54` / `IF
-    /// [#1 LT 2] GOTO10` from G54's machine -700 runs -750 on the first pass (said so, the
-    /// re-expressed work -450 + G57 offset -300) and -800 on the second, refused by main's
-    /// "X goes to -1050" (review 81-sel81 R1, R6).
+    /// ([`Checker::reexpression_held`]), unless the main program ends first: `N10 G57` /
+    /// `G91 G0 X-50.` / `G90` / `G54` / `IF [#1 LT 2] GOTO10` from G54's machine -700 runs
+    /// -750 on the first pass (said so, the re-expressed work -450 + G57 offset -300) and
+    /// -800 on the second, refused by main's "X goes to -1050" (review 81-sel81 R1, R6).
     #[cold]
     #[inline(never)]
     fn reexpression_shadow(&mut self, i: usize, position: Dec, factor: f64, line: usize) {
@@ -3947,7 +3960,10 @@ impl Checker {
             let at = position.to_f64() * factor;
             if !self.config.work_offsets.is_empty() {
                 self.stats.travel_moves += 1;
-                if self.reexpressed_held.is_some() && self.numbered {
+                if self.reexpressed_held.is_some()
+                    && self.numbered
+                    && self.config.family != Family::LinuxCnc
+                {
                     self.reexpression_shadow(i, position, factor, line);
                 }
                 // (a span set aside at a selection joins again under G91, however it came in
