@@ -277,6 +277,26 @@ INLINE = [
     # machine's span whatever G58's offset) is said, as main said it
     ("G58 / G0 X-700. / G0 X800. / G57 / G91 G0 X30. / G90", [-700.0, 800.0, 830.0],
      (6, "X spans 1530")),
+    # re-expressed into G57 (work -400), then G58, not in the profile, then G54: the position
+    # held is G57's through G58 (a selection moves no axis: machine -700 throughout), so G54
+    # re-expresses it from G57, -400 + -300 - 0 = -700; -100 from there is -800, beyond; was
+    # silent (G57's -400 taken for G54's work value from G58, which re-expresses nothing: -500)
+    ("G54 / G0 X-700. / G57 / G58 / G54 / G91 G0 X-100. / G90", [-700.0, -800.0],
+     (7, "X goes to -800")),
+    # its twin from 700 (G57 work 1000): +100 is 800, beyond; was "X goes to 1100"
+    ("G54 / G0 X700. / G57 / G58 / G54 / G91 G0 X100. / G90", [700.0, 800.0],
+     (7, "X goes to 800")),
+    # ... from -600: -700, inside
+    ("G54 / G0 X-600. / G57 / G58 / G54 / G91 G0 X-100. / G90", [-600.0, -700.0], None),
+    # back to G57 itself: its work value 1000 kept (machine 700), +100 is 800, beyond (review
+    # 82-sel82 R1: taking the re-expression back at G58 made it G54's 700, machine 400)
+    ("G54 / G0 X700. / G57 / G58 / G57 / G91 G0 X100. / G90", [700.0, 800.0],
+     (7, "X goes to 800")),
+    # ... from -700 (G57 work -400): -100 is -800, beyond
+    ("G54 / G0 X-700. / G57 / G58 / G57 / G91 G0 X-100. / G90", [-700.0, -800.0],
+     (7, "X goes to -800")),
+    # ... +100 from -700: -600, inside
+    ("G54 / G0 X-700. / G57 / G58 / G57 / G91 G0 X100. / G90", [-700.0, -600.0], None),
 ]
 
 
@@ -301,12 +321,15 @@ def test_a_selection_re_expresses_the_position_held(
 # runs -750 on the first pass, -800, beyond, on the second, which the checker does not read;
 # the selection inside a loop, or after a sequence number a later jump may go back to, is not
 # re-expressed, and the first pass's increment is judged from the work value held, as main
-# judged it (work -750 + G57 offset -300), which refuses the program; review 81-sel81 R1)
+# judged it (work -750 + G57 offset -300), which refuses the program; review 81-sel81 R1.
+# A FANUC's or Haas's selection after a sequence number is re-expressed (the first pass runs
+# at -750), main's judgement of the position kept beside it and said at the block that may
+# take the run back to the sequence number, the GOTO: review 81-sel81 R6, review 82-sel82)
 LOOPS = {
     "lcnc": ("G21 G17 G90\nG54\nG0 X-700.\n#1=0\no100 while [#1 LT 2]\nG57\nG91 G0 X-50.\n"
              "G90\nG54\n#1=[#1+1]\no100 endwhile\nM2\n", 7),
     "fanuc": ("O1000\nG21 G17 G90\nG54\nG0 X-700.\n#1=0\nN10 G57\nG91 G0 X-50.\nG90\nG54\n"
-              "#1=#1+1\nIF [#1 LT 2] GOTO10\nM30\n", 7),
+              "#1=#1+1\nIF [#1 LT 2] GOTO10\nM30\n", 11),
     # the loop, or the sequence number a jump goes back to, after the selection: there the
     # re-expression is taken back (review 81-sel81 R5)
     "lcnc-after": ("G21 G17 G90\nG54\nG0 X-700.\n#1=0\nG57\no100 while [#1 LT 2]\n"
@@ -316,7 +339,7 @@ LOOPS = {
     "lcnc-stale": ("G21 G17 G90\nG57\nG0 X-400. Y0\nG54\nG0 X-700.\nG57\n"
                    "o100 repeat [2]\nG91 G0 X-50.\nG90\no100 endrepeat\nM2\n", 8),
     "fanuc-after": ("O1000\nG21 G17 G90\nG54\nG0 X-700.\n#1=0\nG57\nN20 G91 G0 X-50.\nG90\n"
-                    "#1=#1+1\nIF [#1 LT 2] GOTO20\nM30\n", 7),
+                    "#1=#1+1\nIF [#1 LT 2] GOTO20\nM30\n", 10),
 }
 
 
@@ -344,3 +367,74 @@ def test_a_body_that_turns_the_spindle_on_keeps_the_span_set_aside(
     assert errors(tmp_path, form, main, body) == []
     if form.startswith("lcnc"):
         assert machine_moves(tmp_path, program(form, main, body)) == [-740.0, 500.0]
+
+
+def numbered(main: str) -> str:
+    """`main` (blocks split at ` / `) as an O1000 every block of which is numbered, N201 on,
+    but those that carry their own N (and a later program's O)."""
+    blocks = [b if b[0] in "NO" else f"N{201 + i} {b}"
+              for i, b in enumerate(["G21 G17 G90", *main.split(" / ")])]
+    return "\n".join(["O1000", *blocks]) + "\n"
+
+
+# (a FANUC's or Haas's program numbered in every block, as CAM output is: the blocks, the
+# error said (its line, counting O1000 as line 1, and the start of its message) or None.
+# A sequence number is only a label until a jump to it is read: the selection is
+# re-expressed, and main's judgement of a position after a sequence number (the work value
+# kept) is said where a block may take the run back to one; review 81-sel81 R6, review
+# 82-sel82)
+NUMBERED = [
+    # machine 700 kept across G57 (work 1000), +100: machine 800, beyond; was not said (main
+    # kept the work value 700: 800 + -300 = 500)
+    ("G54 / G0 X700. / G57 / G91 G0 X100. / G90 / M30", (6, "X goes to 800 in machine")),
+    # from -700: -600, inside; was "X goes to -900" (work -600 + G57 offset -300)
+    ("G54 / G0 X-700. / G57 / G91 G0 X100. / G90 / M30", None),
+    # a jump back to N10, the selection's block, by M99 P10 in the main program (0i-F: a
+    # main's M99 P n goes to its sequence number n): pass 1 machine -700 -> -750 (inside),
+    # pass 2 -750 -> -800, beyond, not read; main's "-1050" (work -750 + G57 offset -300) of
+    # line 7 is said at the first block that may take the run back, the forward GOTO of line
+    # 11 (the M99 P10 after it is not reached when the GOTO is taken)
+    ("G54 / G0 X-700. / #100=0 / N10 G57 / G91 G0 X-50. / G90 / G54 / #100=#100+1 / "
+     "IF [#100 GE 2] GOTO 99 / M99 P10 / N99 M30",
+     (11, "X goes to -1050 in machine coordinates at line 7")),
+    # the same return made by a subprogram's M99 P10 (it returns to the caller's N10): said
+    # at the call, line 10
+    ("G54 / G0 X-700. / #100=0 / N10 G57 / G91 G0 X-50. / G90 / G54 / M98 P2000 / M30 / "
+     "O2000 / N1 #100=#100+1 / N2 IF [#100 GE 2] GOTO 4 / N3 M99 P10 / N4 M99",
+     (10, "X goes to -1050 in machine coordinates at line 7")),
+    # main's "-900" kept after N205 (-600 inside in truth) is dropped at the main program's
+    # end: no jump of it runs after M30, and the Haas body after it, which nothing calls, ends
+    # with an M99 that takes no run back here (review 82-sel82 R5)
+    ("G54 / G0 X-700. / G57 / G91 G0 X100. / G90 / M30 / N100 G0 X0. / M99", None),
+    # an M30 the block skip may pass over (`/M30`) is no end: main's "-1050" of line 7 is said
+    # at the GOTO after it (review 82-sel82 n29blockdel)
+    ("G54 / G0 X-700. / #1=0 / N10 G57 / G91 G0 X-50. / G90 / G54 / #1=#1+1 / /M30 / "
+     "IF [#1 LT 2] GOTO10 / M30",
+     (12, "X goes to -1050 in machine coordinates at line 7")),
+]
+
+
+@pytest.mark.parametrize("main, said", NUMBERED)
+@pytest.mark.parametrize("form", ["fanuc", "haas"])
+def test_a_numbered_program_re_expresses_until_a_jump_may_come_back(
+        tmp_path: Path, form: str, main: str, said: tuple[int, str] | None) -> None:
+    text = numbered(main)
+    found = [(f.line, f.message) for f in check_text(text, profile(tmp_path, form))
+             if f.severity == "error"]
+    if said is None:
+        assert found == []
+    else:
+        assert [(n, m[:len(said[1])]) for n, m in found] == [said], found
+
+
+def test_a_linuxcnc_n_word_is_no_label(tmp_path: Path) -> None:
+    """rs274 jumps to no N word (o-words only): a numbered LinuxCNC program keeps no judgement
+    of main's beside the re-expression (review 82-sel82 R6). Machine -700 kept across G57
+    (work -400), +100: machine -600, inside; main's work value would say "-900" (work -600 +
+    G57 offset -300), and was said at the `o100 if` line."""
+    text = ("N1 G21 G17 G90\nN2 G54\nN3 G0 X-700.\nN4 G57\nN5 G91 G0 X100.\nN6 G90\n"
+            "o100 if [1 EQ 1]\nN7 G0 Z0\no100 endif\nN8 M2\n")
+    found = [(f.line, f.message) for f in check_text(text, profile(tmp_path, "lcnc"))
+             if f.severity == "error"]
+    assert found == []
+    assert machine_moves(tmp_path, text)[:2] == pytest.approx([-700.0, -600.0])

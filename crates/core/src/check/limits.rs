@@ -210,6 +210,13 @@ impl Shifts {
 /// Why a shift of an axis is not followed ([`Checker::shift_of`]).
 type NotKnown = String;
 
+/// A re-expression held ([`Checker::reexpression_held`]): the axes (their places' bits) whose
+/// position is still the one a selection re-expressed, the delta added to each, and main's
+/// finding of a position after a sequence number while it was held, with its line
+/// ([`Checker::reexpression_shadow`]), and the system each axis's position was re-expressed
+/// into.
+pub(super) type Held = (u16, [Dec; 9], Option<Box<(usize, String)>>, [i64; 9]);
+
 /// An exact rotation or scaling: a position's X Y Z before the frame is
 /// `centre + m (p - centre)`, in the profile's units.
 #[derive(Debug, Clone)]
@@ -644,7 +651,7 @@ impl Checker {
         // (the real run keeps the machine position: the work position held is the old
         // system's, not the new one's, where the selection does not re-express it; review of
         // the stop's merge, resumed.rs)
-        let held = if same {
+        let positioned = if same {
             0
         } else {
             (0..AXES.len())
@@ -670,15 +677,21 @@ impl Checker {
         self.work = Some(g);
         self.work_guessed = None;
         self.work_run_on = false;
+        // (and the axes a re-expression holds, in the coordinates of the system it
+        // re-expressed them into, however many selections of systems not known since)
+        let held = self.reexpressed_held.as_ref().map_or(0, |h| h.0);
         let moved = match from {
-            Some(from) if positions != 0 => self.selection_reexpressed(from, g, positions),
+            Some(from) if positions | held != 0 => {
+                self.selection_reexpressed(from, g, positions | held)
+            }
+            None if held != 0 && !same => self.selection_reexpressed(g, g, held),
             _ => 0,
         };
         // (the same system selected again keeps what was re-expressed into it)
         if !same {
             self.reexpressed = (moved != 0).then_some((g, moved));
         }
-        self.selected_stale |= held & !moved;
+        self.selected_stale |= positioned & !moved;
         if !same {
             self.shift_work = None;
         }
@@ -700,12 +713,14 @@ impl Checker {
     /// G53, a G92, a code's data) is left as the block left it. The axes re-expressed.
     /// Whether the run may come back over the block in hand, a second pass the checker does
     /// not read: inside a LinuxCNC loop or condition; in a FANUC's or Haas's program after a
-    /// jump or loop statement or a sequence number a `GOTO` or `M99 P` may jump back to.
+    /// jump or loop statement. (A FANUC's or Haas's sequence number a later `GOTO` or `M99 P`
+    /// may jump back to is a label only until that jump is read: [`Checker::reexpression_held`]
+    /// keeps main's judgement of the positions after it, said where the run comes back.)
     fn run_may_come_back(&self) -> bool {
         if self.config.family == Family::LinuxCnc {
             !self.linuxcnc_open_flow.is_empty()
         } else {
-            self.jumped || self.numbered
+            self.jumped
         }
     }
 
@@ -715,16 +730,17 @@ impl Checker {
         // (not where the run may come back over the selection, a second pass beginning from
         // the machine position the first left, which the checker does not read: inside a
         // LinuxCNC loop or condition; in a FANUC's or Haas's program after a jump or loop
-        // statement or a sequence number, at or before the selection, that a `GOTO` or `M99
-        // P` after it may jump back to. There the work value held is kept, as main kept it:
-        // its judgement of the first pass refused `G54` / `G0 X-700.` / a loop of two
-        // passes of `G57` / `G91 G0 X-50.` / `G90` / `G54`, which runs at -800 on the
-        // second; review 81-sel81 R1)
+        // statement. There the work value held is kept, as main kept it: its judgement of
+        // the first pass refused `G54` / `G0 X-700.` / a loop of two passes of `G57` / `G91
+        // G0 X-50.` / `G90` / `G54`, which runs at -800 on the second; review 81-sel81 R1.
+        // After a FANUC's or Haas's sequence number, which a jump read later may go back
+        // to, main's judgement is kept beside it: Checker::reexpression_shadow)
         let back = self.run_may_come_back();
         if back {
             return 0;
         }
         let known = axes & self.known_axes(to);
+        let carried = self.reexpressed_held.as_ref().map_or(0, |h| h.0);
         let factor = self.to_profile_units(false);
         let given = self.values.given();
         let placed = self.values.has_g(53)
@@ -733,6 +749,17 @@ impl Checker {
         let mut moved = 0;
         for i in crate::modal::places(u32::from(known)) {
             if given & bit(AXES[i]) != 0 && placed {
+                continue;
+            }
+            // (an axis held: from the system its position was re-expressed into, where a
+            // selection of a system not known came between, `G54` / `G0 X700.` / `G57` /
+            // `G58` / `G57` / `G91 G0 X100.` at machine 800, review 82-sel82 R1; where that
+            // is the new one, its position is already the new system's)
+            let from = match &self.reexpressed_held {
+                Some(h) if carried & 1 << i != 0 => h.3[i],
+                _ => from,
+            };
+            if from == to || self.known_axes(from) & 1 << i == 0 {
                 continue;
             }
             let (Some(old), Some(new), Some(at)) = (
@@ -755,7 +782,7 @@ impl Checker {
             moved |= 1 << i;
             let held = self
                 .reexpressed_held
-                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9])));
+                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9], None, [0; 9])));
             // (added to the delta held on the axis, or from none where it holds none)
             let before = if held.0 & 1 << i != 0 {
                 held.1[i]
@@ -763,6 +790,7 @@ impl Checker {
                 Dec::ZERO
             };
             held.0 |= 1 << i;
+            held.3[i] = to;
             held.1[i] = now
                 .checked_add(-at)
                 .and_then(|d| before.checked_add(d))
@@ -781,6 +809,14 @@ impl Checker {
     /// 81-sel81 R5: `G54` / `G0 X-700.` / `G57` / a loop of two `G91 G0 X-50.` runs at -800
     /// on the second pass, refused by main's -1050 of the first). A call may place the
     /// position anew: no longer held.
+    ///
+    /// A FANUC's or Haas's block that may take the run back to a sequence number before it
+    /// (a jump, condition or loop statement; an `M99`, whose `P` names one, or without it
+    /// the program's start; an `M97`; a call, whose body's `M99 P` returns to the caller's
+    /// sequence number, FANUC 0i-F Operator's Manual, "Subprogram call (M98)"), where a
+    /// position after a sequence number went beyond the travel as main judged it
+    /// ([`Checker::reexpression_shadow`]): main's finding is said here, at the block the
+    /// second pass, which the checker does not read, begins from.
     #[cold]
     #[inline(never)]
     fn reexpression_held(&mut self, b: &BlockView<'_>) {
@@ -789,10 +825,38 @@ impl Checker {
         };
         let calls = b.statements.iter().any(|s| s.1 == Kind::Call)
             || b.words.iter().any(|w| {
-                w.letter == b'M' && matches!(w.number, b"98" | b"97")
+                w.letter == b'M' && matches!(w.number, b"98" | b"97" | b"198")
                     || w.letter == b'G' && matches!(w.number, b"65" | b"66")
             });
+        if held.2.is_some()
+            && (calls
+                || self.run_may_come_back()
+                || b.statements.iter().any(|s| s.1 == Kind::Flow)
+                || b.words
+                    .iter()
+                    .any(|w| w.letter == b'M' && matches!(w.number, b"99" | b"099")))
+        {
+            self.reexpressed_held = Some(held);
+            self.reexpression_comes_back(b.line);
+            let Some(back) = self.reexpressed_held.take() else {
+                return;
+            };
+            held = back;
+        }
+        // (the main program's end: no jump of it runs after it, and a body after it runs
+        // only where a call read before it called it, where main's finding was said; not an
+        // end the block skip may pass over, `/M30`: review 82-sel82 n29blockdel)
+        if held.2.is_some()
+            && !b.skip
+            && b.skip_within.is_none()
+            && b.words
+                .iter()
+                .any(|w| w.letter == b'M' && matches!(w.number, b"2" | b"02" | b"30"))
+        {
+            held.2 = None;
+        }
         if calls {
+            self.reexpressed_held = Some(held);
             return;
         }
         let placed = self.values.has_g(53)
@@ -818,7 +882,7 @@ impl Checker {
             }
             self.selected_stale |= held.0;
             self.reexpressed = None;
-        } else if held.0 != 0 {
+        } else if held.0 != 0 || held.2.is_some() {
             self.reexpressed_held = Some(held);
         }
     }
@@ -830,6 +894,78 @@ impl Checker {
             self.shift_work
         } else {
             self.work
+        }
+    }
+
+    /// A block that may take the run back to a sequence number (line `at`: a jump, loop or
+    /// call statement, [`Checker::forget_at_jump`], or [`Checker::reexpression_held`]'s):
+    /// main's finding kept ([`Checker::reexpression_shadow`]) is said here.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn reexpression_comes_back(&mut self, at: usize) {
+        let Some((line, what)) = self
+            .reexpressed_held
+            .as_mut()
+            .and_then(|h| h.2.take())
+            .map(|f| *f)
+        else {
+            return;
+        };
+        self.report(
+            Rule::TravelExceeded,
+            format!(
+                "{what}, as main judges the position held across a selection (line {line}): the \
+                 run may go back from here to a sequence number before it, a pass beginning \
+                 from the machine position the first left, which the checker does not read"
+            ),
+            at,
+            1,
+        );
+    }
+
+    /// A position of axis place `i` (`position`, in the program's units; `factor` to the
+    /// profile's) judged under the system in force while a re-expression is held on it, in
+    /// a FANUC's or Haas's program after a sequence number (a LinuxCNC N word is no label:
+    /// rs274 jumps to none; review 82-sel82 R6): main, which kept the work value there,
+    /// judged the position less the delta the re-expression added
+    /// ([`Checker::selection_reexpressed`]); where that is beyond the travel, main's finding
+    /// is kept (the first) and said where a block may take the run back
+    /// ([`Checker::reexpression_held`]), unless the main program ends first: `N10 G57` /
+    /// `G91 G0 X-50.` / `G90` / `G54` / `IF [#1 LT 2] GOTO10` from G54's machine -700 runs
+    /// -750 on the first pass (said so, the re-expressed work -450 + G57 offset -300) and
+    /// -800 on the second, refused by main's "X goes to -1050" (review 81-sel81 R1, R6).
+    #[cold]
+    #[inline(never)]
+    fn reexpression_shadow(&mut self, i: usize, position: Dec, factor: f64, line: usize) {
+        let Some(held) = self.reexpressed_held.as_ref() else {
+            return;
+        };
+        if held.0 & 1 << i == 0 || held.2.is_some() {
+            return;
+        }
+        let (Some(work), Some((low, high))) = (self.work, self.travel.of(AXES[i])) else {
+            return;
+        };
+        let (Some(offset), Some(main)) =
+            (self.offset_value(work, i), position.checked_add(-held.1[i]))
+        else {
+            return;
+        };
+        let at = main.to_f64() * factor;
+        let machine_at = at + offset;
+        if travel_side(machine_at, (low, high)) == 0 {
+            return;
+        }
+        let what = format!(
+            "{} goes to {} in machine coordinates at line {line} (work {} + G{work} offset {}), \
+             outside the travel {low} to {high}",
+            AXES[i] as char,
+            round6(machine_at),
+            round6(at),
+            round6(offset)
+        );
+        if let Some(held) = self.reexpressed_held.as_mut() {
+            held.2 = Some(Box::new((line, what)));
         }
     }
 
@@ -3850,6 +3986,12 @@ impl Checker {
             let at = position.to_f64() * factor;
             if !self.config.work_offsets.is_empty() {
                 self.stats.travel_moves += 1;
+                if self.reexpressed_held.is_some()
+                    && self.numbered
+                    && self.config.family != Family::LinuxCnc
+                {
+                    self.reexpression_shadow(i, position, factor, line);
+                }
                 // (a span set aside at a selection joins again under G91, however it came in
                 // force: an M72's restore, a call's; review 78-lcnc78b F4)
                 // (and at a position outside a body read under its call's offset after they

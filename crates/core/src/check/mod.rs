@@ -1771,7 +1771,7 @@ pub struct Checker {
     position_reexpressed: bool,
     /// The axes whose positions are still the ones a selection re-expressed, and the delta
     /// it added to each ([`Checker::reexpression_held`]).
-    reexpressed_held: Option<Box<(u16, [Dec; 9])>>,
+    reexpressed_held: Option<Box<limits::Held>>,
     /// The main program's first jump or loop and what came after it (callflow.rs).
     flow_calls: Option<Box<callflow::FlowCalls>>,
     /// The program in hand is a subprogram whose calls leave its units unknown (they

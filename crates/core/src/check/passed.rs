@@ -202,6 +202,9 @@ impl Checker {
     /// A G10 before it whose L or P is a #-expression may run again with another value
     /// where the jump goes back: its axes of every offset written ([`Checker::g10_expression`]).
     pub(super) fn forget_at_jump(&mut self, b: &BlockView<'_>, calls: bool) {
+        if self.reexpressed_held.is_some() {
+            self.reexpression_comes_back(b.line);
+        }
         self.jumped |= !calls;
         self.shift_unsure |= !calls;
         let expression = self.g10_expression | self.g10_local;
