@@ -784,15 +784,21 @@ pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
     (token.get(end) == Some(&b'=')).then_some(end)
 }
 
+/// An o-word statement as rs274 reads it: in lower case, without blanks (`read_o` after
+/// `close_and_downcase`).
+fn o_text(statement: &[u8]) -> Vec<u8> {
+    statement
+        .iter()
+        .filter(|&&c| !blank(c))
+        .map(u8::to_ascii_lowercase)
+        .collect()
+}
+
 /// A LinuxCNC o-word's label as the messages show it: as written, in lower case and without
 /// blanks (`o<300>` of `o<300> call`, which [`o_label`] reads as `o300`; review 81-lcnc81
 /// R5), where it is a name or a plain number; [`o_label`]'s reading otherwise.
 pub(crate) fn o_label_shown(statement: &[u8]) -> Vec<u8> {
-    let text: Vec<u8> = statement
-        .iter()
-        .filter(|&&c| !blank(c))
-        .map(u8::to_ascii_lowercase)
-        .collect();
+    let text = o_text(statement);
     if text.get(1) == Some(&b'<') {
         let end = o_label_end(&text).unwrap_or(text.len());
         return text[..end].to_vec();
@@ -808,11 +814,7 @@ pub(crate) fn o_label_shown(statement: &[u8]) -> Vec<u8> {
 /// parameter or an expression there) is kept as written (`o[#1+1]`): no definition is named
 /// so, and the checker takes its call's target as not known.
 pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
-    let text: Vec<u8> = statement
-        .iter()
-        .filter(|&&c| !blank(c))
-        .map(u8::to_ascii_lowercase)
-        .collect();
+    let text = o_text(statement);
     if text.is_empty() {
         return text;
     }
