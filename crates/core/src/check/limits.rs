@@ -210,12 +210,20 @@ impl Shifts {
 /// Why a shift of an axis is not followed ([`Checker::shift_of`]).
 type NotKnown = String;
 
-/// A re-expression held ([`Checker::reexpression_held`]): the axes (their places' bits) whose
-/// position is still the one a selection re-expressed, the delta added to each, and main's
-/// finding of a position after a sequence number while it was held, with its line
-/// ([`Checker::reexpression_shadow`]), and the system each axis's position was re-expressed
-/// into.
-pub(super) type Held = (u16, [Dec; 9], Option<Box<(usize, String)>>, [i64; 9]);
+/// A re-expression held ([`Checker::reexpression_held`]).
+#[derive(Debug, Clone)]
+pub(super) struct Held {
+    /// The axes (their places' bits) whose position is still the one a selection
+    /// re-expressed.
+    pub(super) axes: u16,
+    /// The delta the re-expressions added to each axis's work position.
+    pub(super) delta: [Dec; 9],
+    /// Main's finding of a position after a sequence number while it was held, with its
+    /// line ([`Checker::reexpression_shadow`]).
+    pub(super) shadow: Option<Box<(usize, String)>>,
+    /// The system each axis's position was re-expressed into.
+    pub(super) system: [i64; 9],
+}
 
 /// An exact rotation or scaling: a position's X Y Z before the frame is
 /// `centre + m (p - centre)`, in the profile's units.
@@ -679,7 +687,7 @@ impl Checker {
         self.work_run_on = false;
         // (and the axes a re-expression holds, in the coordinates of the system it
         // re-expressed them into, however many selections of systems not known since)
-        let held = self.reexpressed_held.as_ref().map_or(0, |h| h.0);
+        let held = self.reexpressed_held.as_ref().map_or(0, |h| h.axes);
         let moved = match from {
             Some(from) if positions | held != 0 => {
                 self.selection_reexpressed(from, g, positions | held)
@@ -740,7 +748,7 @@ impl Checker {
             return 0;
         }
         let known = axes & self.known_axes(to);
-        let carried = self.reexpressed_held.as_ref().map_or(0, |h| h.0);
+        let carried = self.reexpressed_held.as_ref().map_or(0, |h| h.axes);
         let factor = self.to_profile_units(false);
         let given = self.values.given();
         let placed = self.values.has_g(53)
@@ -756,7 +764,7 @@ impl Checker {
             // `G58` / `G57` / `G91 G0 X100.` at machine 800, review 82-sel82 R1; where that
             // is the new one, its position is already the new system's)
             let from = match &self.reexpressed_held {
-                Some(h) if carried & 1 << i != 0 => h.3[i],
+                Some(h) if carried & 1 << i != 0 => h.system[i],
                 _ => from,
             };
             if from == to || self.known_axes(from) & 1 << i == 0 {
@@ -780,18 +788,23 @@ impl Checker {
                 self.position_reexpressed = true;
             }
             moved |= 1 << i;
-            let held = self
-                .reexpressed_held
-                .get_or_insert_with(|| Box::new((0, [Dec::ZERO; 9], None, [0; 9])));
+            let held = self.reexpressed_held.get_or_insert_with(|| {
+                Box::new(Held {
+                    axes: 0,
+                    delta: [Dec::ZERO; 9],
+                    shadow: None,
+                    system: [0; 9],
+                })
+            });
             // (added to the delta held on the axis, or from none where it holds none)
-            let before = if held.0 & 1 << i != 0 {
-                held.1[i]
+            let before = if held.axes & 1 << i != 0 {
+                held.delta[i]
             } else {
                 Dec::ZERO
             };
-            held.0 |= 1 << i;
-            held.3[i] = to;
-            held.1[i] = now
+            held.axes |= 1 << i;
+            held.system[i] = to;
+            held.delta[i] = now
                 .checked_add(-at)
                 .and_then(|d| before.checked_add(d))
                 .unwrap_or(before);
@@ -823,18 +836,19 @@ impl Checker {
         let Some(mut held) = self.reexpressed_held.take() else {
             return;
         };
+        // (the block's M and G codes by value, as the control reads them: `M098`, `M030`)
+        let ms = &self.values.ms;
         let calls = b.statements.iter().any(|s| s.1 == Kind::Call)
-            || b.words.iter().any(|w| {
-                w.letter == b'M' && matches!(w.number, b"98" | b"97" | b"198")
-                    || w.letter == b'G' && matches!(w.number, b"65" | b"66")
-            });
-        if held.2.is_some()
+            || ms.iter().any(|&m| matches!(m, 97 | 98 | 198))
+            || self.values.has_g(65)
+            || self.values.has_g(66);
+        let returns = ms.contains(&99);
+        let ends = ms.iter().any(|&m| m == 2 || m == 30);
+        if held.shadow.is_some()
             && (calls
                 || self.run_may_come_back()
                 || b.statements.iter().any(|s| s.1 == Kind::Flow)
-                || b.words
-                    .iter()
-                    .any(|w| w.letter == b'M' && matches!(w.number, b"99" | b"099")))
+                || returns)
         {
             self.reexpressed_held = Some(held);
             self.reexpression_comes_back(b.line);
@@ -846,14 +860,8 @@ impl Checker {
         // (the main program's end: no jump of it runs after it, and a body after it runs
         // only where a call read before it called it, where main's finding was said; not an
         // end the block skip may pass over, `/M30`: review 82-sel82 n29blockdel)
-        if held.2.is_some()
-            && !b.skip
-            && b.skip_within.is_none()
-            && b.words
-                .iter()
-                .any(|w| w.letter == b'M' && matches!(w.number, b"2" | b"02" | b"30"))
-        {
-            held.2 = None;
+        if held.shadow.is_some() && !b.skip && b.skip_within.is_none() && ends {
+            held.shadow = None;
         }
         if calls {
             self.reexpressed_held = Some(held);
@@ -862,12 +870,12 @@ impl Checker {
         let placed = self.values.has_g(53)
             || self.machine.taken().is_some()
             || !self.machine.state.incremental;
-        for i in crate::modal::places(u32::from(held.0)) {
+        for i in crate::modal::places(u32::from(held.axes)) {
             if self.values.given() & bit(AXES[i]) != 0 && placed
                 || self.machine.state.position[i].is_none()
             {
-                held.0 &= !(1 << i);
-                held.1[i] = Dec::ZERO;
+                held.axes &= !(1 << i);
+                held.delta[i] = Dec::ZERO;
             }
         }
         let back = self.run_may_come_back();
@@ -876,13 +884,13 @@ impl Checker {
             {
                 self.position_reexpressed = true;
             }
-            for i in crate::modal::places(u32::from(held.0)) {
+            for i in crate::modal::places(u32::from(held.axes)) {
                 let s = &mut self.machine.state;
-                s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.1[i]));
+                s.position[i] = s.position[i].and_then(|p| p.checked_add(-held.delta[i]));
             }
-            self.selected_stale |= held.0;
+            self.selected_stale |= held.axes;
             self.reexpressed = None;
-        } else if held.0 != 0 || held.2.is_some() {
+        } else if held.axes != 0 || held.shadow.is_some() {
             self.reexpressed_held = Some(held);
         }
     }
@@ -906,7 +914,7 @@ impl Checker {
         let Some((line, what)) = self
             .reexpressed_held
             .as_mut()
-            .and_then(|h| h.2.take())
+            .and_then(|h| h.shadow.take())
             .map(|f| *f)
         else {
             return;
@@ -940,15 +948,16 @@ impl Checker {
         let Some(held) = self.reexpressed_held.as_ref() else {
             return;
         };
-        if held.0 & 1 << i == 0 || held.2.is_some() {
+        if held.axes & 1 << i == 0 || held.shadow.is_some() {
             return;
         }
         let (Some(work), Some((low, high))) = (self.work, self.travel.of(AXES[i])) else {
             return;
         };
-        let (Some(offset), Some(main)) =
-            (self.offset_value(work, i), position.checked_add(-held.1[i]))
-        else {
+        let (Some(offset), Some(main)) = (
+            self.offset_value(work, i),
+            position.checked_add(-held.delta[i]),
+        ) else {
             return;
         };
         let at = main.to_f64() * factor;
@@ -965,7 +974,7 @@ impl Checker {
             round6(offset)
         );
         if let Some(held) = self.reexpressed_held.as_mut() {
-            held.2 = Some(Box::new((line, what)));
+            held.shadow = Some(Box::new((line, what)));
         }
     }
 
