@@ -232,6 +232,13 @@ def g57_profile():
                              "G57 = { X = -300.0, Y = 0.0 }\n")
 
 
+def g57_overtravels(text: str) -> list[tuple[int, str]]:
+    """The TG601 findings (line, message) of `text` on :func:`g57_profile`."""
+    from postproc.check import check_text
+
+    return [(f.line, f.message) for f in check_text(text, g57_profile()) if f.rule == "TG601"]
+
+
 @pytest.mark.parametrize("opened, body, after, said", [
     # review 80-lcnc80 R8: the call inside `o1 if [1]` or an `if` not known, as outside a
     # block (review 78-lcnc78b F7): machine -650 under G54, then 1000 - 300 = 700 under G57,
@@ -249,10 +256,7 @@ def test_a_call_in_a_block_keeps_the_spans_set_aside_at_a_selection(opened, body
                                                                      said) -> None:
     text = (f"G21 G17 G90 G54\nG0 X-650.\nG57\n{opened}\nM98 P2000\no1 endif\n{after}M2\n"
             f"O2000\n{body}\nM99\n")
-    from postproc.check import check_text
-
-    found = [(f.line, f.message) for f in check_text(text, g57_profile())
-             if f.rule == "TG601"]
+    found = g57_overtravels(text)
     assert len(found) == len(said)
     assert [(line, message[:len(start)]) for (line, message), (_, start)
             in zip(found, said, strict=True)] == said
@@ -269,10 +273,7 @@ def test_a_call_in_a_block_keeps_the_spans_set_aside_at_a_selection(opened, body
 def test_a_selection_in_a_block_after_a_later_call_that_does_not_run(tmp_path, block) -> None:
     text = (f"G21 G17 G90\nG54\n#1=1\nM98 P2000\n{block}G0 X800.\nM30\nO2000\nG0 X-740.\n"
             "M99\n")
-    from postproc.check import check_text
-
-    found = [(f.line, f.message) for f in check_text(text, g57_profile())
-             if f.rule == "TG601"]
+    found = g57_overtravels(text)
     assert [message[:len("X spans 1540")] for _, message in found] == ["X spans 1540"], found
     out = rs274_output(tmp_path, text)
     assert "STRAIGHT_TRAVERSE(800.0000" in out and "PROGRAM_END" in out, out
