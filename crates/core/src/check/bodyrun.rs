@@ -515,11 +515,7 @@ impl Checker {
                 continue;
             }
             // (rs274 names a label `o<400>`, a named one as written)
-            let name = match label.strip_prefix(b"o") {
-                Some([b'<', name @ .., b'>']) => String::from_utf8_lossy(name).into_owned(),
-                Some(name) => String::from_utf8_lossy(name).into_owned(),
-                None => String::from_utf8_lossy(label).into_owned(),
-            };
+            let name = String::from_utf8_lossy(&super::structure::bare_label(label)).into_owned();
             let (call, target) = (&seek.call, &seek.target);
             let message = format!(
                 "EOF in file seeking o-word (rs274ngc): this {call} runs in a body read after \

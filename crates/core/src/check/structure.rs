@@ -8719,7 +8719,7 @@ fn distance_step(b: &BlockView<'_>) -> DistanceStep {
 
 /// An o-word label's name as rs274ngc keys it (interp_read.cc `read_o`: a `<name>`'s text,
 /// a number's `%d`): `o100` and `o<100>` are `100`.
-fn bare_label(label: &[u8]) -> Vec<u8> {
+pub(super) fn bare_label(label: &[u8]) -> Vec<u8> {
     let rest = label.strip_prefix(b"o").unwrap_or(label);
     match rest {
         [b'<', name @ .., b'>'] => name.to_vec(),
